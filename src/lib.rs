@@ -1,0 +1,18 @@
+//! mbd-tutor derives, solves and explains the equations of motion of systems of rigid
+//! bodies joined by joints, the way a dynamics course teaches it.
+//!
+//! # Steps
+//!
+//! 1. [`problem`]: read the JSON problem and validate it into a typed model.
+//! 2. [`mechanics`]: frames, unit vectors and coordinates (step 1); the kinematics of every
+//!    body (step 4).
+//! 3. [`plan`]: the free bodies (step 2) and the planner's table of equations (step 3).
+//! 4. [`equations`]: Newton-Euler, the Motion Law and Kane's method, each giving a linear
+//!    system in the q'' and the reactions (step 5).
+//! 5. [`numeric`]: evaluation, the linear solve, integration and its checks (steps 5, 6).
+//! 6. [`render`]: the worked solution as Markdown, LaTeX or HTML.
+//!
+//! [`symbolic`] is the computer-algebra core under all of them.
+
+pub mod numeric;
+pub mod symbolic;

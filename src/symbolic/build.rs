@@ -1,0 +1,309 @@
+//! The smart constructors that keep every expression canonical, and the operators.
+
+use super::expr::{Expr, Func, Node};
+use super::number::Number;
+use std::collections::BTreeMap;
+use std::ops;
+
+/// The largest integer power of a sum that is expanded.
+const MAX_EXPANDED_POWER: i64 = 8;
+
+/// The canonical sum of `terms`.
+pub fn add(terms: impl IntoIterator<Item = Expr>) -> Expr {
+    let mut constant = Number::ZERO;
+    let mut collected: BTreeMap<Expr, Number> = BTreeMap::new();
+    let mut push = |term: &Expr, constant: &mut Number| {
+        let (coefficient, rest) = term.split_coefficient();
+        if rest.is_one() {
+            *constant = constant.add(coefficient);
+        } else {
+            let entry = collected.entry(rest).or_insert(Number::ZERO);
+            *entry = entry.add(coefficient);
+        }
+    };
+    for term in terms {
+        match term.node() {
+            Node::Add(inner) => inner.iter().for_each(|t| push(t, &mut constant)),
+            _ => push(&term, &mut constant),
+        }
+    }
+    let mut out: Vec<Expr> = Vec::with_capacity(collected.len() + 1);
+    if !constant.is_zero() {
+        out.push(Expr::num(constant));
+    }
+    for (rest, coefficient) in collected {
+        if !coefficient.is_zero() {
+            out.push(scale_monomial(coefficient, rest));
+        }
+    }
+    match out.len() {
+        0 => Expr::zero(),
+        1 => out.pop().unwrap_or_else(Expr::zero),
+        _ => Expr::from_node(Node::Add(out)),
+    }
+}
+
+/// `coefficient * rest` where `rest` is a monomial without a numeric coefficient.
+fn scale_monomial(coefficient: Number, rest: Expr) -> Expr {
+    if coefficient.is_one() {
+        return rest;
+    }
+    let mut factors = vec![Expr::num(coefficient)];
+    factors.extend(rest.factors().iter().cloned());
+    Expr::from_node(Node::Mul(factors))
+}
+
+/// The canonical, expanded product of `factors`.
+pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
+    let mut coefficient = Number::ONE;
+    let mut powers: BTreeMap<Expr, Vec<Expr>> = BTreeMap::new();
+    let mut sums: Vec<Expr> = Vec::new();
+    let mut visit = |factor: &Expr, coefficient: &mut Number| match factor.node() {
+        Node::Num(n) => *coefficient = coefficient.mul(*n),
+        Node::Add(_) => sums.push(factor.clone()),
+        Node::Pow(base, exponent) => powers.entry(base.clone()).or_default().push(exponent.clone()),
+        _ => powers.entry(factor.clone()).or_default().push(Expr::one()),
+    };
+    for factor in factors {
+        match factor.node() {
+            Node::Mul(inner) => inner.iter().for_each(|f| visit(f, &mut coefficient)),
+            _ => visit(&factor, &mut coefficient),
+        }
+    }
+    if coefficient.is_zero() {
+        return Expr::zero();
+    }
+    let mut rebuilt: Vec<Expr> = Vec::with_capacity(powers.len());
+    let mut needs_another_pass = false;
+    for (base, exponents) in powers {
+        let exponent = add(exponents);
+        if exponent.is_zero() {
+            continue;
+        }
+        let factor = if exponent.is_one() { base } else { pow(base, exponent) };
+        match factor.node() {
+            Node::Num(n) => coefficient = coefficient.mul(*n),
+            Node::Sym(_) | Node::Func(..) | Node::Pow(..) => rebuilt.push(factor),
+            _ => {
+                needs_another_pass = true;
+                rebuilt.push(factor)
+            }
+        }
+    }
+    if needs_another_pass {
+        rebuilt.push(Expr::num(coefficient));
+        rebuilt.extend(sums);
+        return mul(rebuilt);
+    }
+    if let Some(sum) = sums.pop() {
+        // Distribute over the first sum; the recursion expands the others.
+        let mut rest = rebuilt;
+        rest.push(Expr::num(coefficient));
+        rest.extend(sums);
+        let rest = mul(rest);
+        return add(sum.terms().iter().map(|t| mul([t.clone(), rest.clone()])));
+    }
+    if coefficient.is_zero() {
+        return Expr::zero();
+    }
+    match (rebuilt.len(), coefficient.is_one()) {
+        (0, _) => Expr::num(coefficient),
+        (1, true) => rebuilt.pop().unwrap_or_else(Expr::one),
+        (_, true) => Expr::from_node(Node::Mul(rebuilt)),
+        (_, false) => {
+            let mut all = vec![Expr::num(coefficient)];
+            all.extend(rebuilt);
+            Expr::from_node(Node::Mul(all))
+        }
+    }
+}
+
+/// The canonical power `base^exponent`.
+pub fn pow(base: Expr, exponent: Expr) -> Expr {
+    if exponent.is_zero() {
+        return Expr::one();
+    }
+    if exponent.is_one() {
+        return base;
+    }
+    let integer = exponent.as_number().and_then(Number::as_integer);
+    match (base.node(), exponent.as_number()) {
+        (Node::Num(b), Some(e)) => {
+            if let Some(k) = e.as_integer() {
+                if let Some(value) = b.powi(k) {
+                    return Expr::num(value);
+                }
+            } else if e == Number::Ratio(1, 2) {
+                if let Some(root) = b.exact_sqrt() {
+                    return Expr::num(root);
+                }
+            } else if e == Number::Ratio(-1, 2) {
+                if let Some(root) = b.exact_sqrt().and_then(Number::recip) {
+                    return Expr::num(root);
+                }
+            }
+        }
+        (Node::Mul(factors), _) if integer.is_some() => {
+            return mul(factors.iter().map(|f| pow(f.clone(), exponent.clone())));
+        }
+        (Node::Pow(inner_base, inner_exp), _) if integer.is_some() => {
+            return pow(inner_base.clone(), mul([inner_exp.clone(), exponent]));
+        }
+        (Node::Add(_), _) => {
+            if let Some(k) = integer.filter(|k| (2..=MAX_EXPANDED_POWER).contains(k)) {
+                return mul(std::iter::repeat_n(base, k as usize));
+            }
+        }
+        _ => {}
+    }
+    Expr::from_node(Node::Pow(base, exponent))
+}
+
+/// Whether `e` is written with a leading minus sign, so that odd functions can pull it out.
+pub fn has_negative_sign(e: &Expr) -> bool {
+    match e.node() {
+        Node::Num(n) => n.is_negative(),
+        Node::Mul(_) => e.split_coefficient().0.is_negative(),
+        Node::Add(terms) => terms
+            .iter()
+            .find(|t| t.as_number().is_none())
+            .is_some_and(|t| t.split_coefficient().0.is_negative()),
+        _ => false,
+    }
+}
+
+/// The canonical function application.
+pub fn func(f: Func, args: Vec<Expr>) -> Expr {
+    let single = args.len() == 1;
+    if single {
+        let arg = &args[0];
+        if arg.is_zero() {
+            match f {
+                Func::Sin | Func::Tan | Func::Asin | Func::Atan | Func::Sqrt | Func::Abs | Func::Sign => {
+                    return Expr::zero()
+                }
+                Func::Cos | Func::Exp => return Expr::one(),
+                _ => {}
+            }
+        }
+        if f == Func::Sqrt {
+            return pow(arg.clone(), Expr::ratio(1, 2));
+        }
+        let odd = matches!(f, Func::Sin | Func::Tan | Func::Asin | Func::Atan | Func::Sign);
+        if (odd || f == Func::Cos || f == Func::Abs) && has_negative_sign(arg) {
+            let flipped = func(f, vec![-arg.clone()]);
+            return if odd { -flipped } else { flipped };
+        }
+    }
+    Expr::from_node(Node::Func(f, args))
+}
+
+/// `sin(x)`.
+pub fn sin(x: Expr) -> Expr {
+    func(Func::Sin, vec![x])
+}
+
+/// `cos(x)`.
+pub fn cos(x: Expr) -> Expr {
+    func(Func::Cos, vec![x])
+}
+
+/// `sqrt(x)`.
+pub fn sqrt(x: Expr) -> Expr {
+    pow(x, Expr::ratio(1, 2))
+}
+
+impl ops::Add for Expr {
+    type Output = Expr;
+    fn add(self, rhs: Expr) -> Expr {
+        add([self, rhs])
+    }
+}
+impl ops::Add for &Expr {
+    type Output = Expr;
+    fn add(self, rhs: &Expr) -> Expr {
+        add([self.clone(), rhs.clone()])
+    }
+}
+impl ops::Sub for Expr {
+    type Output = Expr;
+    fn sub(self, rhs: Expr) -> Expr {
+        add([self, -rhs])
+    }
+}
+impl ops::Sub for &Expr {
+    type Output = Expr;
+    fn sub(self, rhs: &Expr) -> Expr {
+        add([self.clone(), -rhs.clone()])
+    }
+}
+impl ops::Mul for Expr {
+    type Output = Expr;
+    fn mul(self, rhs: Expr) -> Expr {
+        mul([self, rhs])
+    }
+}
+impl ops::Mul for &Expr {
+    type Output = Expr;
+    fn mul(self, rhs: &Expr) -> Expr {
+        mul([self.clone(), rhs.clone()])
+    }
+}
+impl ops::Div for Expr {
+    type Output = Expr;
+    fn div(self, rhs: Expr) -> Expr {
+        mul([self, pow(rhs, Expr::int(-1))])
+    }
+}
+impl ops::Div for &Expr {
+    type Output = Expr;
+    fn div(self, rhs: &Expr) -> Expr {
+        mul([self.clone(), pow(rhs.clone(), Expr::int(-1))])
+    }
+}
+impl ops::Neg for Expr {
+    type Output = Expr;
+    fn neg(self) -> Expr {
+        mul([Expr::int(-1), self])
+    }
+}
+impl ops::Neg for &Expr {
+    type Output = Expr;
+    fn neg(self) -> Expr {
+        mul([Expr::int(-1), self.clone()])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn x() -> Expr {
+        Expr::constant("x")
+    }
+    fn y() -> Expr {
+        Expr::constant("y")
+    }
+
+    #[test]
+    fn like_terms_collect() {
+        assert_eq!(x() + x(), Expr::int(2) * x());
+        assert!((x() - x()).is_zero());
+        assert_eq!(x() + y(), y() + x());
+    }
+
+    #[test]
+    fn products_expand_and_combine_powers() {
+        let lhs = (x() + y()) * (x() - y());
+        let rhs = x() * x() - y() * y();
+        assert_eq!(lhs, rhs);
+        assert_eq!(x() / x(), Expr::one());
+        assert_eq!(pow(x() + y(), Expr::int(2)), x() * x() + Expr::int(2) * x() * y() + y() * y());
+    }
+
+    #[test]
+    fn odd_and_even_functions_take_the_sign_out() {
+        assert_eq!(sin(-x()), -sin(x()));
+        assert_eq!(cos(y() - x()), cos(x() - y()));
+    }
+}

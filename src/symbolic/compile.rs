@@ -1,0 +1,217 @@
+//! Compiling expressions once into a flat program: every shared subexpression is
+//! computed once, and one evaluation costs about the arithmetic it contains.
+
+use super::eval::{apply, power};
+use super::expr::{Expr, Func, Node, Symbol};
+use std::collections::HashMap;
+
+#[derive(Clone, Copy, Debug)]
+enum Instr {
+    Const(f64),
+    Add(usize, usize),
+    Mul(usize, usize),
+    Neg(usize),
+    Recip(usize),
+    Square(usize),
+    Pow(usize, usize),
+    Func(Func, usize, usize),
+}
+
+/// A straight-line program that evaluates a list of expressions.
+#[derive(Clone, Debug)]
+pub struct Program {
+    inputs: Vec<Symbol>,
+    instructions: Vec<Instr>,
+    outputs: Vec<usize>,
+}
+
+struct Compiler {
+    program: Program,
+    by_pointer: HashMap<*const Node, usize>,
+    by_value: HashMap<Expr, usize>,
+    constant_slots: HashMap<u64, usize>,
+    // Keeps every compiled node alive so that pointers stay unique.
+    alive: Vec<Expr>,
+}
+
+impl Program {
+    /// Compiles `outputs`, reading the symbols in `inputs` (in that order) when run.
+    ///
+    /// Symbols not among the inputs evaluate to NaN, except `pi`.
+    pub fn compile(inputs: &[Symbol], outputs: &[Expr]) -> Program {
+        let mut c = Compiler {
+            program: Program { inputs: inputs.to_vec(), instructions: Vec::new(), outputs: Vec::new() },
+            by_pointer: HashMap::new(),
+            by_value: HashMap::new(),
+            constant_slots: HashMap::new(),
+            alive: Vec::new(),
+        };
+        let slots: Vec<usize> = outputs.iter().map(|e| c.slot(e)).collect();
+        c.program.outputs = slots;
+        c.program
+    }
+
+    /// The number of arithmetic operations and function calls in one run.
+    pub fn operation_count(&self) -> usize {
+        self.instructions.iter().filter(|i| !matches!(i, Instr::Const(_))).count()
+    }
+
+    /// The input symbols, in the order `run` reads them.
+    pub fn inputs(&self) -> &[Symbol] {
+        &self.inputs
+    }
+
+    /// Evaluates every output; `scratch` is reused between calls to avoid allocation.
+    pub fn run(&self, inputs: &[f64], scratch: &mut Vec<f64>, outputs: &mut [f64]) {
+        scratch.clear();
+        scratch.extend_from_slice(&inputs[..self.inputs.len()]);
+        for instr in &self.instructions {
+            let value = match *instr {
+                Instr::Const(x) => x,
+                Instr::Add(a, b) => scratch[a] + scratch[b],
+                Instr::Mul(a, b) => scratch[a] * scratch[b],
+                Instr::Neg(a) => -scratch[a],
+                Instr::Recip(a) => 1.0 / scratch[a],
+                Instr::Square(a) => scratch[a] * scratch[a],
+                Instr::Pow(a, b) => power(scratch[a], scratch[b]),
+                Instr::Func(f, a, b) => apply(f, scratch[a], scratch[b]),
+            };
+            scratch.push(value);
+        }
+        for (out, slot) in outputs.iter_mut().zip(&self.outputs) {
+            *out = scratch[*slot];
+        }
+    }
+
+    /// Evaluates every output into a new vector.
+    pub fn eval(&self, inputs: &[f64]) -> Vec<f64> {
+        let mut scratch = Vec::new();
+        let mut outputs = vec![0.0; self.outputs.len()];
+        self.run(inputs, &mut scratch, &mut outputs);
+        outputs
+    }
+}
+
+impl Compiler {
+    fn constant_slot(&mut self, value: f64) -> usize {
+        if let Some(slot) = self.constant_slots.get(&value.to_bits()) {
+            return *slot;
+        }
+        let slot = self.emit(Instr::Const(value));
+        self.constant_slots.insert(value.to_bits(), slot);
+        slot
+    }
+
+    fn emit(&mut self, instr: Instr) -> usize {
+        self.program.instructions.push(instr);
+        self.program.inputs.len() + self.program.instructions.len() - 1
+    }
+
+    fn slot(&mut self, e: &Expr) -> usize {
+        let pointer = std::rc::Rc::as_ptr(&e.0);
+        if let Some(slot) = self.by_pointer.get(&pointer) {
+            return *slot;
+        }
+        let slot = match self.by_value.get(e) {
+            Some(slot) => *slot,
+            None => {
+                let slot = self.build(e);
+                self.by_value.insert(e.clone(), slot);
+                slot
+            }
+        };
+        self.by_pointer.insert(pointer, slot);
+        self.alive.push(e.clone());
+        slot
+    }
+
+    fn build(&mut self, e: &Expr) -> usize {
+        match e.node() {
+            Node::Num(n) => self.constant_slot(n.to_f64()),
+            Node::Sym(s) => match self.program.inputs.iter().position(|i| i == s) {
+                Some(index) => index,
+                None if matches!(s, Symbol::Const(n) if &**n == "pi") => self.constant_slot(std::f64::consts::PI),
+                None => self.constant_slot(f64::NAN),
+            },
+            Node::Add(terms) => {
+                let mut slots: Vec<(bool, usize)> = terms.iter().map(|t| self.signed(t)).collect();
+                slots.sort_by_key(|(negative, _)| *negative);
+                let (first_negative, first) = slots[0];
+                let mut acc = if first_negative { self.emit(Instr::Neg(first)) } else { first };
+                for &(negative, slot) in &slots[1..] {
+                    let operand = if negative { self.emit(Instr::Neg(slot)) } else { slot };
+                    acc = self.emit(Instr::Add(acc, operand));
+                }
+                acc
+            }
+            Node::Mul(factors) => {
+                let slots: Vec<usize> = factors.iter().map(|f| self.slot(f)).collect();
+                let mut acc = slots[0];
+                for &slot in &slots[1..] {
+                    acc = self.emit(Instr::Mul(acc, slot));
+                }
+                acc
+            }
+            Node::Pow(base, exponent) => {
+                let b = self.slot(base);
+                match exponent.as_number().and_then(|n| n.as_integer()) {
+                    Some(-1) => self.emit(Instr::Recip(b)),
+                    Some(2) => self.emit(Instr::Square(b)),
+                    _ => {
+                        let x = self.slot(exponent);
+                        self.emit(Instr::Pow(b, x))
+                    }
+                }
+            }
+            Node::Func(f, args) => {
+                let a = self.slot(&args[0]);
+                let b = match args.get(1) {
+                    Some(arg) => self.slot(arg),
+                    None => a,
+                };
+                self.emit(Instr::Func(*f, a, b))
+            }
+        }
+    }
+
+    /// A term as (negated, slot of its magnitude), so that `a - b` costs one subtraction.
+    fn signed(&mut self, term: &Expr) -> (bool, usize) {
+        let (coefficient, rest) = term.split_coefficient();
+        if coefficient.is_negative() && !rest.is_one() {
+            let magnitude = super::build::mul([Expr::num(coefficient.neg()), rest]);
+            (true, self.slot(&magnitude))
+        } else {
+            (false, self.slot(term))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::{cos, sin};
+    use crate::symbolic::eval::{eval, Values};
+
+    #[test]
+    fn matches_the_tree_walk_and_shares_subexpressions() {
+        let q = Expr::coord("q", 0);
+        let l = Expr::constant("L");
+        let shared = sin(q.clone()) * l.clone();
+        let outputs = [shared.clone() + cos(q.clone()), shared.clone() * Expr::int(3) - Expr::ratio(1, 2), pow_test(&q)];
+        let inputs = [Symbol::Coord("q".into(), 0), Symbol::Const("L".into())];
+        let program = Program::compile(&inputs, &outputs);
+        let mut values = Values::new();
+        values.set(inputs[0].clone(), 0.3);
+        values.set(inputs[1].clone(), 2.0);
+        let got = program.eval(&[0.3, 2.0]);
+        for (e, g) in outputs.iter().zip(&got) {
+            assert!((eval(e, &values) - g).abs() < 1e-14);
+        }
+        let sins = program.instructions.iter().filter(|i| matches!(i, Instr::Func(Func::Sin, ..))).count();
+        assert_eq!(sins, 1);
+    }
+
+    fn pow_test(q: &Expr) -> Expr {
+        crate::symbolic::build::pow(q.clone() + Expr::int(2), Expr::ratio(-1, 2))
+    }
+}

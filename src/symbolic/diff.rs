@@ -1,0 +1,142 @@
+//! Derivatives: the time derivative by the chain rule, and partial derivatives.
+//!
+//! Plain recursion with one derivative rule per function, since rewrite tables
+//! cannot express the chain rule.
+
+use super::build::{add, cos, func, mul, pow, sin};
+use super::expr::{Expr, Func, Node, Symbol};
+use std::fmt;
+
+/// A derivative that cannot be taken.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DiffError {
+    /// The expression whose derivative was asked for.
+    pub expression: String,
+    /// Why it cannot be differentiated.
+    pub reason: String,
+}
+
+impl fmt::Display for DiffError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "cannot differentiate `{}`: {}", self.expression, self.reason)
+    }
+}
+
+/// The total time derivative: `d/dt q = q'`, `d/dt q' = q''`, `d/dt t = 1`.
+///
+/// # Errors
+/// When the expression holds a function without a derivative (`sign`, `min`, `max`) of
+/// something that changes, or a second rate.
+pub fn time_derivative(e: &Expr) -> Result<Expr, DiffError> {
+    derivative(e, &|s| match s {
+        Symbol::Coord(name, order) if *order < 2 => Ok(Expr::sym(Symbol::Coord(name.clone(), order + 1))),
+        Symbol::Coord(name, _) => Err(format!("`{name}''` has no derivative here")),
+        Symbol::Time => Ok(Expr::one()),
+        _ => Ok(Expr::zero()),
+    })
+}
+
+/// The partial derivative with respect to `symbol`.
+///
+/// # Errors
+/// As for [`time_derivative`].
+pub fn partial(e: &Expr, symbol: &Symbol) -> Result<Expr, DiffError> {
+    derivative(e, &|s| Ok(if s == symbol { Expr::one() } else { Expr::zero() }))
+}
+
+fn derivative(e: &Expr, of_symbol: &dyn Fn(&Symbol) -> Result<Expr, String>) -> Result<Expr, DiffError> {
+    let fail = |reason: String| DiffError { expression: e.to_string(), reason };
+    Ok(match e.node() {
+        Node::Num(_) => Expr::zero(),
+        Node::Sym(s) => of_symbol(s).map_err(fail)?,
+        Node::Add(terms) => add(terms.iter().map(|t| derivative(t, of_symbol)).collect::<Result<Vec<_>, _>>()?),
+        Node::Mul(factors) => {
+            let mut terms = Vec::with_capacity(factors.len());
+            for (i, factor) in factors.iter().enumerate() {
+                let d = derivative(factor, of_symbol)?;
+                if d.is_zero() {
+                    continue;
+                }
+                let mut product: Vec<Expr> = factors.to_vec();
+                product[i] = d;
+                terms.push(mul(product));
+            }
+            add(terms)
+        }
+        Node::Pow(base, exponent) => {
+            let db = derivative(base, of_symbol)?;
+            let de = derivative(exponent, of_symbol)?;
+            let power_rule = mul([exponent.clone(), pow(base.clone(), exponent - &Expr::one()), db]);
+            if de.is_zero() {
+                power_rule
+            } else {
+                let log_rule = mul([e.clone(), func(Func::Ln, vec![base.clone()]), de]);
+                power_rule + log_rule
+            }
+        }
+        Node::Func(f, args) => {
+            let x = &args[0];
+            let dx = derivative(x, of_symbol)?;
+            let outer = match f {
+                _ if dx.is_zero() && args.len() == 1 => return Ok(Expr::zero()),
+                Func::Sin => cos(x.clone()),
+                Func::Cos => -sin(x.clone()),
+                Func::Tan => Expr::one() + pow(func(Func::Tan, vec![x.clone()]), Expr::int(2)),
+                Func::Asin => pow(Expr::one() - x * x, Expr::ratio(-1, 2)),
+                Func::Acos => -pow(Expr::one() - x * x, Expr::ratio(-1, 2)),
+                Func::Atan => pow(Expr::one() + x * x, Expr::int(-1)),
+                Func::Exp => e.clone(),
+                Func::Ln => pow(x.clone(), Expr::int(-1)),
+                Func::Abs => func(Func::Sign, vec![x.clone()]),
+                Func::Sqrt => Expr::ratio(1, 2) * pow(x.clone(), Expr::ratio(-1, 2)),
+                Func::Atan2 => {
+                    // d atan2(y, x) = (x dy - y dx) / (x^2 + y^2)
+                    let (y, xx) = (&args[0], &args[1]);
+                    let dxx = derivative(xx, of_symbol)?;
+                    return Ok((xx * &dx - y * &dxx) / (xx * xx + y * y));
+                }
+                Func::Sign => return Ok(Expr::zero()),
+                Func::Min | Func::Max => {
+                    return Err(fail(format!("`{}` has no derivative where its arguments cross", f.name())))
+                }
+            };
+            outer * dx
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::parse::{parse, ParseError, Resolve};
+
+    struct Names;
+    impl Resolve for Names {
+        fn name(&self, name: &str, primes: u8, _: usize) -> Result<Expr, ParseError> {
+            Ok(if name.starts_with('q') { Expr::coord(name, primes) } else { Expr::constant(name) })
+        }
+        fn unit_vector(&self, _: &str, _: &str, c: usize) -> Result<Expr, ParseError> {
+            Err(ParseError::new(c, "no vectors"))
+        }
+    }
+
+    fn check(expression: &str, expected: &str) {
+        let e = parse(expression, &Names).unwrap();
+        assert_eq!(time_derivative(&e).unwrap(), parse(expected, &Names).unwrap(), "d/dt {expression}");
+    }
+
+    #[test]
+    fn chain_rule() {
+        check("sin(q1)", "cos(q1)*q1'");
+        check("cos(q1)", "-sin(q1)*q1'");
+        check("q1'", "q1''");
+        check("L*q1^2", "2*L*q1*q1'");
+        check("sin(q1+q2)", "cos(q1+q2)*(q1'+q2')");
+        check("q1*q1'", "q1'^2 + q1*q1''");
+        check("sqrt(q1)", "q1'/(2*sqrt(q1))");
+        check("m*g", "0");
+        check("exp(q1)", "exp(q1)*q1'");
+        check("ln(q1)", "q1'/q1");
+        check("atan2(q1, q2)", "(q2*q1' - q1*q2')/(q1^2+q2^2)");
+    }
+}

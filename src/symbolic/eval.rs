@@ -1,0 +1,87 @@
+//! Direct evaluation by walking the tree: for planning and tests, not for the hot path
+//! (see `compile` for that).
+
+use super::expr::{Expr, Func, Node, Symbol};
+use std::collections::HashMap;
+
+/// Values of the symbols an expression may hold.
+#[derive(Clone, Debug, Default)]
+pub struct Values {
+    values: HashMap<Symbol, f64>,
+}
+
+impl Values {
+    /// No values yet.
+    pub fn new() -> Values {
+        Values::default()
+    }
+
+    /// Sets the value of `symbol`.
+    pub fn set(&mut self, symbol: Symbol, value: f64) {
+        self.values.insert(symbol, value);
+    }
+
+    /// The value of `symbol`; `pi` is built in, an unset symbol is NaN.
+    pub fn get(&self, symbol: &Symbol) -> f64 {
+        match self.values.get(symbol) {
+            Some(v) => *v,
+            None if matches!(symbol, Symbol::Const(n) if &**n == "pi") => std::f64::consts::PI,
+            None => f64::NAN,
+        }
+    }
+}
+
+/// Applies a function of the problem format to numbers.
+pub fn apply(f: Func, a: f64, b: f64) -> f64 {
+    match f {
+        Func::Sin => a.sin(),
+        Func::Cos => a.cos(),
+        Func::Tan => a.tan(),
+        Func::Asin => a.asin(),
+        Func::Acos => a.acos(),
+        Func::Atan => a.atan(),
+        Func::Atan2 => a.atan2(b),
+        Func::Sqrt => a.sqrt(),
+        Func::Exp => a.exp(),
+        Func::Ln => a.ln(),
+        Func::Abs => a.abs(),
+        Func::Sign => {
+            if a > 0.0 {
+                1.0
+            } else if a < 0.0 {
+                -1.0
+            } else {
+                0.0
+            }
+        }
+        Func::Min => a.min(b),
+        Func::Max => a.max(b),
+    }
+}
+
+/// `base^exponent`, with integer exponents multiplied out for accuracy.
+pub fn power(base: f64, exponent: f64) -> f64 {
+    if exponent == exponent.trunc() && exponent.abs() <= 16.0 {
+        base.powi(exponent as i32)
+    } else if exponent == 0.5 {
+        base.sqrt()
+    } else {
+        base.powf(exponent)
+    }
+}
+
+/// The value of `e` with `values`.
+pub fn eval(e: &Expr, values: &Values) -> f64 {
+    match e.node() {
+        Node::Num(n) => n.to_f64(),
+        Node::Sym(s) => values.get(s),
+        Node::Add(terms) => terms.iter().map(|t| eval(t, values)).sum(),
+        Node::Mul(factors) => factors.iter().map(|f| eval(f, values)).product(),
+        Node::Pow(b, x) => power(eval(b, values), eval(x, values)),
+        Node::Func(f, args) => {
+            let a = eval(&args[0], values);
+            let b = args.get(1).map_or(0.0, |x| eval(x, values));
+            apply(*f, a, b)
+        }
+    }
+}

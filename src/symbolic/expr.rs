@@ -1,0 +1,345 @@
+//! The expression type: an owned tree kept in one canonical form.
+//!
+//! Sums and products are n-ary and sorted, like terms are collected, and products
+//! are expanded over sums, so every expression is a sum of monomials over atoms
+//! (symbols, functions, non-integer powers). Two equal expressions therefore
+//! compare equal and print the same every time.
+
+use super::number::Number;
+use std::cmp::Ordering;
+use std::fmt;
+use std::rc::Rc;
+
+/// A name shared cheaply between expressions.
+pub type Name = Rc<str>;
+
+/// A symbol: what an expression can refer to.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Symbol {
+    /// A named constant (`m`, `L`, `g`).
+    Const(Name),
+    /// A generalized coordinate or one of its time derivatives (`order` 0, 1 or 2).
+    Coord(Name, u8),
+    /// Time `t`.
+    Time,
+    /// An unknown of the linear system other than a `q''`: a reaction component.
+    Unknown(Name),
+    /// A unit vector `frame.axis` (axis 0, 1, 2 for x, y, z); only inside vector expressions.
+    UnitVector(Name, u8),
+}
+
+/// The functions of the problem format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Exp,
+    Ln,
+    Abs,
+    Sign,
+    Min,
+    Max,
+}
+
+impl Func {
+    /// Every function with its name as written in a problem.
+    pub const ALL: [(Func, &'static str); 14] = [
+        (Func::Sin, "sin"),
+        (Func::Cos, "cos"),
+        (Func::Tan, "tan"),
+        (Func::Asin, "asin"),
+        (Func::Acos, "acos"),
+        (Func::Atan, "atan"),
+        (Func::Atan2, "atan2"),
+        (Func::Sqrt, "sqrt"),
+        (Func::Exp, "exp"),
+        (Func::Ln, "ln"),
+        (Func::Abs, "abs"),
+        (Func::Sign, "sign"),
+        (Func::Min, "min"),
+        (Func::Max, "max"),
+    ];
+
+    /// The name as written in a problem.
+    pub fn name(self) -> &'static str {
+        Func::ALL.iter().find(|(f, _)| *f == self).map(|(_, n)| *n).unwrap_or("?")
+    }
+
+    /// Looks a function up by name.
+    pub fn from_name(name: &str) -> Option<Func> {
+        Func::ALL.iter().find(|(_, n)| *n == name).map(|(f, _)| *f)
+    }
+
+    /// How many arguments the function takes.
+    pub fn arity(self) -> usize {
+        match self {
+            Func::Atan2 | Func::Min | Func::Max => 2,
+            _ => 1,
+        }
+    }
+}
+
+/// One node of an expression.
+#[derive(Debug, PartialEq)]
+pub enum Node {
+    Num(Number),
+    Sym(Symbol),
+    /// Two or more terms, sorted, like terms collected, a number term first if any.
+    Add(Vec<Expr>),
+    /// Two or more factors, sorted, a numeric coefficient first if not one.
+    Mul(Vec<Expr>),
+    /// A power that could not be folded: base and exponent.
+    Pow(Expr, Expr),
+    Func(Func, Vec<Expr>),
+}
+
+/// A symbolic expression, cheap to clone.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr(pub(crate) Rc<Node>);
+
+impl Eq for Expr {}
+
+impl Expr {
+    /// The node behind the expression.
+    pub fn node(&self) -> &Node {
+        &self.0
+    }
+
+    pub(crate) fn from_node(node: Node) -> Expr {
+        Expr(Rc::new(node))
+    }
+
+    /// A number.
+    pub fn num(n: Number) -> Expr {
+        Expr::from_node(Node::Num(n))
+    }
+
+    /// An integer.
+    pub fn int(n: i64) -> Expr {
+        Expr::num(Number::int(n))
+    }
+
+    /// The fraction `n/d`.
+    pub fn ratio(n: i64, d: i64) -> Expr {
+        Expr::num(Number::ratio(n as i128, d as i128))
+    }
+
+    /// Zero.
+    pub fn zero() -> Expr {
+        Expr::int(0)
+    }
+
+    /// One.
+    pub fn one() -> Expr {
+        Expr::int(1)
+    }
+
+    /// A real number.
+    pub fn real(x: f64) -> Expr {
+        Expr::num(Number::Real(x))
+    }
+
+    /// A symbol.
+    pub fn sym(s: Symbol) -> Expr {
+        Expr::from_node(Node::Sym(s))
+    }
+
+    /// The constant named `name`.
+    pub fn constant(name: &str) -> Expr {
+        Expr::sym(Symbol::Const(name.into()))
+    }
+
+    /// The coordinate `name` differentiated `order` times.
+    pub fn coord(name: &str, order: u8) -> Expr {
+        Expr::sym(Symbol::Coord(name.into(), order))
+    }
+
+    /// Time.
+    pub fn time() -> Expr {
+        Expr::sym(Symbol::Time)
+    }
+
+    /// The number, if this is one.
+    pub fn as_number(&self) -> Option<Number> {
+        match self.node() {
+            Node::Num(n) => Some(*n),
+            _ => None,
+        }
+    }
+
+    /// The symbol, if this is one.
+    pub fn as_symbol(&self) -> Option<&Symbol> {
+        match self.node() {
+            Node::Sym(s) => Some(s),
+            _ => None,
+        }
+    }
+
+    /// Whether this is exactly zero.
+    pub fn is_zero(&self) -> bool {
+        self.as_number().is_some_and(Number::is_zero)
+    }
+
+    /// Whether this is exactly one.
+    pub fn is_one(&self) -> bool {
+        self.as_number().is_some_and(Number::is_one)
+    }
+
+    /// The terms of a sum (a single term otherwise).
+    pub fn terms(&self) -> &[Expr] {
+        match self.node() {
+            Node::Add(terms) => terms,
+            _ => std::slice::from_ref(self),
+        }
+    }
+
+    /// The factors of a product (a single factor otherwise).
+    pub fn factors(&self) -> &[Expr] {
+        match self.node() {
+            Node::Mul(factors) => factors,
+            _ => std::slice::from_ref(self),
+        }
+    }
+
+    /// Splits a term into its numeric coefficient and the rest.
+    pub fn split_coefficient(&self) -> (Number, Expr) {
+        match self.node() {
+            Node::Num(n) => (*n, Expr::one()),
+            Node::Mul(factors) => match factors[0].as_number() {
+                Some(c) => {
+                    let rest = &factors[1..];
+                    let rest = if rest.len() == 1 {
+                        rest[0].clone()
+                    } else {
+                        Expr::from_node(Node::Mul(rest.to_vec()))
+                    };
+                    (c, rest)
+                }
+                None => (Number::ONE, self.clone()),
+            },
+            _ => (Number::ONE, self.clone()),
+        }
+    }
+
+    /// Calls `visit` on every symbol in the expression.
+    pub fn for_each_symbol(&self, visit: &mut impl FnMut(&Symbol)) {
+        match self.node() {
+            Node::Num(_) => {}
+            Node::Sym(s) => visit(s),
+            Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
+                items.iter().for_each(|e| e.for_each_symbol(visit))
+            }
+            Node::Pow(b, e) => {
+                b.for_each_symbol(visit);
+                e.for_each_symbol(visit);
+            }
+        }
+    }
+
+    /// Whether any symbol satisfies `pred`.
+    pub fn any_symbol(&self, pred: &impl Fn(&Symbol) -> bool) -> bool {
+        match self.node() {
+            Node::Num(_) => false,
+            Node::Sym(s) => pred(s),
+            Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
+                items.iter().any(|e| e.any_symbol(pred))
+            }
+            Node::Pow(b, e) => b.any_symbol(pred) || e.any_symbol(pred),
+        }
+    }
+
+    /// Whether the expression contains `symbol`.
+    pub fn contains(&self, symbol: &Symbol) -> bool {
+        self.any_symbol(&|s| s == symbol)
+    }
+
+    /// Whether the expression depends only on constants and numbers.
+    pub fn is_constant(&self) -> bool {
+        !self.any_symbol(&|s| !matches!(s, Symbol::Const(_)))
+    }
+
+    /// The number of arithmetic operations a direct evaluation would take.
+    pub fn operation_count(&self) -> usize {
+        match self.node() {
+            Node::Num(_) | Node::Sym(_) => 0,
+            Node::Add(items) | Node::Mul(items) => {
+                items.len() - 1 + items.iter().map(Expr::operation_count).sum::<usize>()
+            }
+            Node::Pow(b, e) => 1 + b.operation_count() + e.operation_count(),
+            Node::Func(_, args) => 1 + args.iter().map(Expr::operation_count).sum::<usize>(),
+        }
+    }
+
+    fn rank(&self) -> u8 {
+        match self.node() {
+            Node::Num(_) => 0,
+            Node::Sym(_) => 1,
+            Node::Func(..) => 2,
+            Node::Pow(..) => 3,
+            Node::Mul(_) => 4,
+            Node::Add(_) => 5,
+        }
+    }
+}
+
+impl Ord for Expr {
+    fn cmp(&self, other: &Self) -> Ordering {
+        if Rc::ptr_eq(&self.0, &other.0) {
+            return Ordering::Equal;
+        }
+        match (self.node(), other.node()) {
+            (Node::Num(a), Node::Num(b)) => a.total_cmp(b),
+            (Node::Sym(a), Node::Sym(b)) => a.cmp(b),
+            (Node::Add(a), Node::Add(b)) | (Node::Mul(a), Node::Mul(b)) => {
+                a.len().cmp(&b.len()).then_with(|| a.cmp(b))
+            }
+            (Node::Pow(a, b), Node::Pow(c, d)) => a.cmp(c).then_with(|| b.cmp(d)),
+            (Node::Func(f, a), Node::Func(g, b)) => f.cmp(g).then_with(|| a.cmp(b)),
+            _ => self.rank().cmp(&other.rank()),
+        }
+    }
+}
+
+impl PartialOrd for Expr {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl std::hash::Hash for Expr {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        match self.node() {
+            Node::Num(n) => n.to_f64().to_bits().hash(state),
+            Node::Sym(s) => s.hash(state),
+            Node::Add(items) => {
+                1u8.hash(state);
+                items.hash(state)
+            }
+            Node::Mul(items) => {
+                2u8.hash(state);
+                items.hash(state)
+            }
+            Node::Pow(b, e) => {
+                3u8.hash(state);
+                b.hash(state);
+                e.hash(state)
+            }
+            Node::Func(f, args) => {
+                f.hash(state);
+                args.hash(state)
+            }
+        }
+    }
+}
+
+impl fmt::Display for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&super::print::plain(self))
+    }
+}

@@ -1,0 +1,73 @@
+//! Coefficients of symbols that appear linearly: the q'' and the reactions.
+
+use super::build::{add, mul};
+use super::expr::{Expr, Node, Symbol};
+use std::fmt;
+
+/// A symbol that should appear linearly but does not.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NotLinear {
+    /// The symbol, printed.
+    pub symbol: String,
+    /// The offending term, printed.
+    pub term: String,
+}
+
+impl fmt::Display for NotLinear {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "`{}` does not appear linearly in the term `{}`", self.symbol, self.term)
+    }
+}
+
+/// Splits `e` into `Σ coefficients[i] * unknowns[i] + rest`.
+///
+/// # Errors
+/// When an unknown appears squared, inside a function, or multiplied by another unknown.
+pub fn linear_split(e: &Expr, unknowns: &[Symbol]) -> Result<(Vec<Expr>, Expr), NotLinear> {
+    let mut coefficients: Vec<Vec<Expr>> = vec![Vec::new(); unknowns.len()];
+    let mut rest = Vec::new();
+    for term in e.terms() {
+        let mut found: Option<(usize, usize)> = None;
+        for (position, factor) in term.factors().iter().enumerate() {
+            let Some(index) = unknowns.iter().position(|u| factor.contains(u)) else { continue };
+            let is_plain = matches!(factor.node(), Node::Sym(s) if *s == unknowns[index]);
+            if !is_plain || found.is_some() {
+                return Err(NotLinear { symbol: unknowns[index].clone().to_string(), term: term.to_string() });
+            }
+            found = Some((index, position));
+        }
+        match found {
+            Some((index, position)) => {
+                let others = term.factors().iter().enumerate().filter(|(i, _)| *i != position).map(|(_, f)| f.clone());
+                coefficients[index].push(mul(others));
+            }
+            None => rest.push(term.clone()),
+        }
+    }
+    Ok((coefficients.into_iter().map(add).collect(), add(rest)))
+}
+
+impl fmt::Display for Symbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&super::print::plain(&Expr::sym(self.clone())))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::cos;
+
+    #[test]
+    fn splits_mass_matrix_rows() {
+        let (a, b) = (Expr::coord("q1", 2), Expr::coord("q2", 2));
+        let m = Expr::constant("m");
+        let e = &(&m * &a) + &(cos(Expr::coord("q2", 0)) * b.clone()) + Expr::constant("g");
+        let unknowns = [Symbol::Coord("q1".into(), 2), Symbol::Coord("q2".into(), 2)];
+        let (coefficients, rest) = linear_split(&e, &unknowns).unwrap();
+        assert_eq!(coefficients[0], m);
+        assert_eq!(coefficients[1], cos(Expr::coord("q2", 0)));
+        assert_eq!(rest, Expr::constant("g"));
+        assert!(linear_split(&(&a * &a), &unknowns).is_err());
+    }
+}

@@ -1,0 +1,18 @@
+//! The computer-algebra core: expressions, parsing, d/dt, simplification, LaTeX,
+//! and compilation to a flat numeric program.
+
+pub mod build;
+pub mod compile;
+pub mod diff;
+pub mod eval;
+pub mod expr;
+pub mod hint;
+pub mod linear;
+pub mod number;
+pub mod parse;
+pub mod print;
+pub mod subst;
+
+pub use build::{add, cos, func, mul, pow, sin, sqrt};
+pub use expr::{Expr, Func, Name, Node, Symbol};
+pub use number::Number;

@@ -1,0 +1,283 @@
+//! Printing expressions as plain text (the input grammar) and as textbook LaTeX.
+
+use super::expr::{Expr, Func, Node, Symbol};
+use super::number::Number;
+
+/// Plain text in the grammar of the problem format, e.g. `-m*L^2*sin(q1)/12`.
+pub fn plain(e: &Expr) -> String {
+    Printer { latex: false }.sum(e)
+}
+
+/// LaTeX as a textbook writes it: `\ddot{q}_{1}`, `\frac{m L^{2}}{12}`, no `*` signs.
+pub fn latex(e: &Expr) -> String {
+    Printer { latex: true }.sum(e)
+}
+
+const GREEK: [&str; 24] = [
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
+    "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega", "Omega",
+];
+const GREEK_UPPER: [&str; 10] =
+    ["Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi"];
+
+/// A name in LaTeX: Greek letters spelled out become symbols, trailing digits and
+/// `_suffix` become subscripts, longer words are set upright.
+pub fn latex_name(name: &str) -> String {
+    let (stem, subscript) = match name.split_once('_') {
+        Some((stem, sub)) if !stem.is_empty() && !sub.is_empty() => (stem.to_string(), Some(sub.to_string())),
+        _ => {
+            let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
+            if stem.is_empty() || stem.len() == name.len() {
+                (name.to_string(), None)
+            } else {
+                (stem.to_string(), Some(name[stem.len()..].to_string()))
+            }
+        }
+    };
+    let body = if GREEK.contains(&stem.as_str()) || GREEK_UPPER.contains(&stem.as_str()) {
+        format!("\\{stem}")
+    } else if stem.chars().count() == 1 {
+        stem.clone()
+    } else {
+        format!("\\mathrm{{{}}}", stem.replace('_', "\\_"))
+    };
+    match subscript {
+        Some(sub) => format!("{body}_{{{}}}", latex_name_plain(&sub)),
+        None => body,
+    }
+}
+
+fn latex_name_plain(sub: &str) -> String {
+    if sub.chars().all(|c| c.is_ascii_alphanumeric()) && sub.chars().count() > 1 && !sub.chars().all(|c| c.is_ascii_digit()) {
+        format!("\\mathrm{{{sub}}}")
+    } else {
+        sub.replace('_', ",")
+    }
+}
+
+/// A unit vector as a bold hat: `\hat{\mathbf{a}}_{x}`.
+pub fn latex_unit_vector(frame: &str, axis: u8) -> String {
+    let axis = ["x", "y", "z"].get(axis as usize).copied().unwrap_or("?");
+    let frame = latex_name(&frame.to_lowercase());
+    format!("\\hat{{\\mathbf{{{frame}}}}}_{{{axis}}}")
+}
+
+fn latex_symbol(s: &Symbol) -> String {
+    match s {
+        Symbol::Const(name) => latex_name(name),
+        Symbol::Coord(name, order) => {
+            let base = latex_name(name);
+            let (stem, sub) = match base.split_once('_') {
+                Some((stem, sub)) => (stem.to_string(), format!("_{sub}")),
+                None => (base.clone(), String::new()),
+            };
+            match order {
+                0 => base,
+                1 => format!("\\dot{{{stem}}}{sub}"),
+                _ => format!("\\ddot{{{stem}}}{sub}"),
+            }
+        }
+        Symbol::Time => "t".into(),
+        Symbol::Unknown(name) => match name.split_once('.') {
+            // Reaction components are named `joint.Fx`, `joint.M2`: F^{O}_{x}.
+            Some((joint, component)) if component.len() >= 2 => {
+                let (letter, axis) = component.split_at(1);
+                format!("{letter}^{{{}}}_{{{axis}}}", latex_name(joint))
+            }
+            _ => latex_name(name),
+        },
+        Symbol::UnitVector(frame, axis) => latex_unit_vector(frame, *axis),
+    }
+}
+
+fn plain_symbol(s: &Symbol) -> String {
+    match s {
+        Symbol::Const(name) | Symbol::Unknown(name) => name.to_string(),
+        Symbol::Coord(name, order) => format!("{name}{}", "'".repeat(*order as usize)),
+        Symbol::Time => "t".into(),
+        Symbol::UnitVector(frame, axis) => format!("{frame}.{}", ["x", "y", "z"][(*axis as usize).min(2)]),
+    }
+}
+
+struct Printer {
+    latex: bool,
+}
+
+impl Printer {
+    fn sum(&self, e: &Expr) -> String {
+        let mut out = String::new();
+        for (i, term) in e.terms().iter().enumerate() {
+            let (coefficient, rest) = term.split_coefficient();
+            let negative = coefficient.is_negative();
+            let magnitude = if negative { coefficient.neg() } else { coefficient };
+            let body = self.product(magnitude, &rest);
+            match (i, negative, self.latex) {
+                (0, true, _) => out.push('-'),
+                (0, false, _) => {}
+                (_, true, _) => out.push_str(" - "),
+                (_, false, _) => out.push_str(" + "),
+            }
+            out.push_str(&body);
+        }
+        out
+    }
+
+    /// A product with a non-negative coefficient.
+    fn product(&self, coefficient: Number, rest: &Expr) -> String {
+        let mut numerator: Vec<String> = Vec::new();
+        let mut denominator: Vec<String> = Vec::new();
+        let (mut coefficient_num, mut coefficient_den) = (String::new(), String::new());
+        match coefficient {
+            Number::Ratio(n, d) => {
+                if n != 1 || rest.is_one() {
+                    coefficient_num = n.to_string();
+                }
+                if d != 1 {
+                    coefficient_den = d.to_string();
+                }
+            }
+            Number::Real(x) => {
+                if x != 1.0 || rest.is_one() {
+                    coefficient_num = Number::Real(x).to_string();
+                }
+            }
+        }
+        if !rest.is_one() {
+            for factor in rest.factors() {
+                match factor.node() {
+                    Node::Pow(base, exponent) if exponent.as_number().is_some_and(Number::is_negative) => {
+                        let positive = exponent.as_number().map(Number::neg).unwrap_or(Number::ONE);
+                        denominator.push(self.power(base, &Expr::num(positive)));
+                    }
+                    _ => numerator.push(self.factor(factor)),
+                }
+            }
+        }
+        if !coefficient_num.is_empty() {
+            numerator.insert(0, coefficient_num);
+        }
+        if !coefficient_den.is_empty() {
+            denominator.insert(0, coefficient_den);
+        }
+        let join = if self.latex { " " } else { "*" };
+        let top = if numerator.is_empty() { "1".to_string() } else { numerator.join(join) };
+        if denominator.is_empty() {
+            return top;
+        }
+        if self.latex {
+            format!("\\frac{{{top}}}{{{}}}", denominator.join(" "))
+        } else {
+            let bottom = if denominator.len() > 1 { format!("({})", denominator.join("*")) } else { denominator.join("") };
+            format!("{top}/{bottom}")
+        }
+    }
+
+    fn factor(&self, e: &Expr) -> String {
+        match e.node() {
+            Node::Pow(base, exponent) => self.power(base, exponent),
+            Node::Add(_) => self.parens(&self.sum(e)),
+            _ => self.atom(e),
+        }
+    }
+
+    fn power(&self, base: &Expr, exponent: &Expr) -> String {
+        let half = exponent.as_number() == Some(Number::Ratio(1, 2));
+        if half {
+            return if self.latex { format!("\\sqrt{{{}}}", self.sum(base)) } else { format!("sqrt({})", self.sum(base)) };
+        }
+        if exponent.is_one() {
+            return self.factor(base);
+        }
+        let base_text = match base.node() {
+            Node::Sym(_) => self.atom(base),
+            Node::Num(n) if !n.is_negative() && matches!(n, Number::Ratio(_, 1)) => self.atom(base),
+            Node::Func(..) if self.latex => self.atom(base),
+            _ => self.parens(&self.sum(base)),
+        };
+        let exponent_text = self.sum(exponent);
+        if self.latex {
+            if let Node::Func(f, args) = base.node() {
+                if matches!(f, Func::Sin | Func::Cos | Func::Tan) {
+                    return format!("\\{}^{{{exponent_text}}}{}", f.name(), self.argument(&args[0]));
+                }
+            }
+            format!("{base_text}^{{{exponent_text}}}")
+        } else if exponent.as_number().is_some_and(|n| !n.is_negative() && matches!(n, Number::Ratio(_, 1))) {
+            format!("{base_text}^{exponent_text}")
+        } else {
+            format!("{base_text}^({exponent_text})")
+        }
+    }
+
+    fn parens(&self, inner: &str) -> String {
+        if self.latex {
+            format!("\\left({inner}\\right)")
+        } else {
+            format!("({inner})")
+        }
+    }
+
+    fn argument(&self, arg: &Expr) -> String {
+        if self.latex && matches!(arg.node(), Node::Sym(_)) {
+            format!("({})", self.atom(arg))
+        } else {
+            self.parens(&self.sum(arg))
+        }
+    }
+
+    fn atom(&self, e: &Expr) -> String {
+        match e.node() {
+            Node::Num(n) => n.to_string(),
+            Node::Sym(s) if self.latex => latex_symbol(s),
+            Node::Sym(s) => plain_symbol(s),
+            Node::Func(f, args) => self.call(*f, args),
+            _ => self.parens(&self.sum(e)),
+        }
+    }
+
+    fn call(&self, f: Func, args: &[Expr]) -> String {
+        if !self.latex {
+            let inner: Vec<String> = args.iter().map(|a| self.sum(a)).collect();
+            return format!("{}({})", f.name(), inner.join(", "));
+        }
+        let inner: Vec<String> = args.iter().map(|a| self.sum(a)).collect();
+        match f {
+            Func::Sin | Func::Cos | Func::Tan | Func::Exp | Func::Ln => format!("\\{}{}", f.name(), self.argument(&args[0])),
+            Func::Asin => format!("\\arcsin{}", self.argument(&args[0])),
+            Func::Acos => format!("\\arccos{}", self.argument(&args[0])),
+            Func::Atan => format!("\\arctan{}", self.argument(&args[0])),
+            Func::Sqrt => format!("\\sqrt{{{}}}", inner[0]),
+            Func::Abs => format!("\\left|{}\\right|", inner[0]),
+            Func::Min | Func::Max => format!("\\{}\\left({}\\right)", f.name(), inner.join(", ")),
+            Func::Atan2 | Func::Sign => format!("\\operatorname{{{}}}\\left({}\\right)", f.name(), inner.join(", ")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::{cos, sin};
+
+    #[test]
+    fn latex_of_rates_and_names() {
+        assert_eq!(latex(&Expr::coord("q1", 1)), "\\dot{q}_{1}");
+        assert_eq!(latex(&Expr::coord("q1", 2)), "\\ddot{q}_{1}");
+        assert_eq!(latex(&Expr::coord("theta", 2)), "\\ddot{\\theta}");
+        assert_eq!(latex_name("theta2"), "\\theta_{2}");
+        assert_eq!(latex_name("m_A"), "m_{A}");
+        assert_eq!(latex_unit_vector("A", 0), "\\hat{\\mathbf{a}}_{x}");
+    }
+
+    #[test]
+    fn latex_of_products_and_fractions() {
+        let m = Expr::constant("m");
+        let l = Expr::constant("L");
+        let e = &(&(&m * &l) * &l) / &Expr::int(12);
+        assert_eq!(latex(&e), "\\frac{L^{2} m}{12}");
+        assert_eq!(plain(&e), "L^2*m/12");
+        let q = Expr::coord("q1", 0);
+        assert_eq!(latex(&(-(sin(q.clone()) * Expr::coord("q1", 1)))), "-\\dot{q}_{1} \\sin(q_{1})");
+        assert_eq!(plain(&(cos(q.clone()) - Expr::one())), "-1 + cos(q1)");
+    }
+}
