@@ -14,5 +14,16 @@
 //!
 //! [`symbolic`] is the computer-algebra core under all of them.
 
+pub mod cli;
+pub mod cmd;
+pub mod equations;
+mod error;
+pub mod mechanics;
 pub mod numeric;
+pub mod output;
+pub mod plan;
+pub mod problem;
+pub mod render;
 pub mod symbolic;
+
+pub use error::Error;

@@ -1,0 +1,76 @@
+//! The command line: clap types, converted into a plain [`Config`] before any work.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// Derive, solve and explain the equations of motion of rigid multibody systems.
+#[derive(Parser, Debug)]
+#[command(name = "mbd-tutor", version, about)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The equation-forming method.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MethodArg {
+    /// Contact + distance + inertia forces = 0, about any point (the default).
+    #[default]
+    MotionLaw,
+    /// Every body free, all reactions unknown.
+    NewtonEuler,
+    /// Generalized active plus inertia forces.
+    Kane,
+}
+
+/// Options shared by the commands that read a problem.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Common {
+    /// The problem file (JSON).
+    pub problem: PathBuf,
+    /// Which method forms the equations.
+    #[arg(long, value_enum, default_value_t)]
+    pub method: MethodArg,
+    /// Override constants: NAME=VALUE,...
+    #[arg(long, value_name = "NAME=VALUE,...")]
+    pub set: Vec<String>,
+    /// Write there instead of standard output; a failed run leaves an existing file untouched.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
+/// The commands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// The worked solution: the six steps, the tables, the equations and the simulation.
+    Explain(crate::cmd::explain::Args),
+    /// The second derivatives of the coordinates and the requested reactions at one state.
+    Solve(crate::cmd::solve::Args),
+    /// Integrate the equations of motion over time.
+    Simulate(crate::cmd::simulate::Args),
+    /// Validate a problem and report every error in it at once.
+    Check(crate::cmd::check::Args),
+    /// Print the JSON Schema of the problem format.
+    Schema(crate::cmd::schema::Args),
+}
+
+/// Parses `NAME=VALUE,...` lists (repeatable flags are joined).
+///
+/// # Errors
+/// A usage error naming the malformed item.
+pub fn parse_assignments(items: &[String]) -> Result<Vec<(String, f64)>, crate::Error> {
+    let mut out = Vec::new();
+    for item in items.iter().flat_map(|s| s.split(',')).map(str::trim).filter(|s| !s.is_empty()) {
+        let Some((name, value)) = item.split_once('=') else {
+            return Err(crate::Error::Usage(format!("`{item}` is not NAME=VALUE")));
+        };
+        let value: f64 = value.trim().parse().map_err(|_| {
+            crate::Error::Usage(format!("`{}` in `{item}` is not a number", value.trim()))
+        })?;
+        if !value.is_finite() {
+            return Err(crate::Error::Usage(format!("`{item}`: the value must be finite")));
+        }
+        out.push((name.trim().to_string(), value));
+    }
+    Ok(out)
+}

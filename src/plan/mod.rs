@@ -1,0 +1,1 @@
+//! Steps 2 and 3: the free bodies and the planner's table of equations.

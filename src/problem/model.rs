@@ -1,0 +1,275 @@
+//! The validated problem: names resolved to typed ids, expressions parsed.
+//!
+//! Everything here has passed validation, so later stages can index without checks.
+//! Each item keeps the JSON path it came from, so later stages can still point at it.
+
+use crate::symbolic::{Expr, Symbol};
+
+/// A body, as an index: `BodyId::GROUND` is `N`, the declared bodies follow in file order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct BodyId(pub usize);
+
+impl BodyId {
+    /// The Newtonian body and frame `N`.
+    pub const GROUND: BodyId = BodyId(0);
+}
+
+/// Planar (`2`) or spatial (`3`) motion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dimension {
+    /// Motion in the plane of `N.x` and `N.y`.
+    Two,
+    /// Spatial motion.
+    Three,
+}
+
+/// A vector written as a sum of scalar expressions times unit vectors of body frames.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct VectorExpr {
+    /// `(frame, axis 0..3 for x y z, coefficient)`, in the order written, like frames merged.
+    pub terms: Vec<(BodyId, u8, Expr)>,
+}
+
+/// A named constant with its value (before any `--set`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Constant {
+    pub name: String,
+    pub value: f64,
+    pub unit: Option<String>,
+    pub description: Option<String>,
+}
+
+/// What a coordinate measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CoordinateKind {
+    /// An angle in radians.
+    Angle,
+    /// A distance.
+    Distance,
+}
+
+/// A generalized coordinate, in the order the joints first name them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Coordinate {
+    pub name: String,
+    /// Initial value (default 0).
+    pub initial: f64,
+    /// Initial rate (default 0).
+    pub rate: f64,
+    pub unit: Option<String>,
+    pub description: Option<String>,
+    /// The joint that owns it, as an index into [`Problem::joints`].
+    pub joint: usize,
+    /// Its position among that joint's coordinates.
+    pub index_in_joint: usize,
+    pub kind: CoordinateKind,
+}
+
+/// The central inertia of a body.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Inertia {
+    /// 2D: the moment of inertia about the axis through the mass center parallel to `N.z`.
+    Planar(Expr),
+    /// 3D: the symmetric matrix of the inertia dyadic in the body's unit vectors,
+    /// `[[xx, xy, zx], [xy, yy, yz], [zx, yz, zz]]`.
+    Spatial([[Expr; 3]; 3]),
+}
+
+/// A rigid body.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Body {
+    pub name: String,
+    pub mass: Expr,
+    /// The mass center from the body's origin, in the body's unit vectors.
+    pub center: VectorExpr,
+    pub inertia: Inertia,
+    pub description: Option<String>,
+    /// The JSON path, e.g. `bodies.A`.
+    pub path: String,
+}
+
+/// The joint types of the format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointKind {
+    Revolute,
+    Prismatic,
+    Cylindrical,
+    Planar,
+    Universal,
+    Spherical,
+    Free,
+    Weld,
+}
+
+impl JointKind {
+    /// How many coordinates the joint has.
+    pub fn dof(self) -> usize {
+        match self {
+            JointKind::Revolute | JointKind::Prismatic => 1,
+            JointKind::Cylindrical | JointKind::Universal => 2,
+            JointKind::Planar | JointKind::Spherical => 3,
+            JointKind::Free => 6,
+            JointKind::Weld => 0,
+        }
+    }
+
+    /// The name as written in a problem.
+    pub fn name(self) -> &'static str {
+        match self {
+            JointKind::Revolute => "revolute",
+            JointKind::Prismatic => "prismatic",
+            JointKind::Cylindrical => "cylindrical",
+            JointKind::Planar => "planar",
+            JointKind::Universal => "universal",
+            JointKind::Spherical => "spherical",
+            JointKind::Free => "free",
+            JointKind::Weld => "weld",
+        }
+    }
+}
+
+/// A joint between a parent and its outboard child.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    pub name: String,
+    pub kind: JointKind,
+    pub parent: BodyId,
+    pub child: BodyId,
+    /// Indices into [`Problem::coordinates`], in the joint's order.
+    pub coordinates: Vec<usize>,
+    /// Revolute, prismatic, cylindrical: the axis as written (not yet normalized), in any frame.
+    pub axis: Option<VectorExpr>,
+    /// Universal, spherical, free: the body-fixed rotation axes, 0 1 2 for x y z.
+    pub sequence: Vec<u8>,
+    /// The joint's point on the parent, from the parent's origin in its unit vectors.
+    pub at: VectorExpr,
+    /// The joint's point on the child, from the child's origin in its unit vectors.
+    pub child_at: VectorExpr,
+    /// The JSON path, e.g. `joints[1]`.
+    pub path: String,
+}
+
+/// A point that a load or a point definition can name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointRef {
+    /// A declared point, as an index into [`Problem::points`].
+    Named(usize),
+    /// `A*`, the mass center of a body.
+    MassCenter(BodyId),
+    /// `A.o`, the origin of a body (`N.o` the fixed origin).
+    Origin(BodyId),
+    /// A joint's name: its point on the child.
+    Joint(usize),
+}
+
+/// A point fixed on a body.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointDef {
+    pub name: String,
+    pub on: BodyId,
+    /// From the body's origin, in its unit vectors.
+    pub at: VectorExpr,
+}
+
+/// Where a force acts on its body.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ForcePoint {
+    /// A named point (declared, `A*`, `A.o` or a joint).
+    Point(PointRef),
+    /// A point given from the body's origin in its unit vectors.
+    Offset(VectorExpr),
+}
+
+/// What a load does.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LoadKind {
+    Force { on: BodyId, at: ForcePoint, vector: VectorExpr },
+    Torque { on: BodyId, vector: VectorExpr, reaction_on: Option<BodyId> },
+    Spring { between: [PointRef; 2], stiffness: Expr, free_length: Expr },
+    Damper { between: [PointRef; 2], coefficient: Expr },
+    /// `coordinate` indexes [`Problem::coordinates`].
+    JointSpring { joint: usize, coordinate: usize, stiffness: Expr, rest: Expr },
+    JointDamper { joint: usize, coordinate: usize, coefficient: Expr },
+    JointActuator { joint: usize, coordinate: usize, value: Expr },
+}
+
+/// A load with its optional name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Load {
+    pub name: Option<String>,
+    pub kind: LoadKind,
+    /// The JSON path, e.g. `loads[2]`.
+    pub path: String,
+}
+
+/// The `simulate` settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SimulateSettings {
+    /// Seconds; default 5.
+    pub duration: f64,
+    /// Seconds between output rows; default 0.01.
+    pub output_step: f64,
+    /// The integrator's tolerance; default 1e-9.
+    pub tolerance: f64,
+}
+
+impl Default for SimulateSettings {
+    fn default() -> Self {
+        SimulateSettings { duration: 5.0, output_step: 0.01, tolerance: 1e-9 }
+    }
+}
+
+/// A validated problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Problem {
+    pub title: String,
+    pub statement: Option<String>,
+    pub dimension: Dimension,
+    pub constants: Vec<Constant>,
+    pub coordinates: Vec<Coordinate>,
+    pub gravity: Option<VectorExpr>,
+    /// The declared bodies; `BodyId(i + 1)` is `bodies[i]`.
+    pub bodies: Vec<Body>,
+    pub joints: Vec<Joint>,
+    pub points: Vec<PointDef>,
+    pub loads: Vec<Load>,
+    /// Joints whose reactions are requested, as indices into [`Problem::joints`].
+    pub find_reactions: Vec<usize>,
+    pub simulate: SimulateSettings,
+}
+
+impl Problem {
+    /// The name of a body, `N` for the ground.
+    pub fn body_name(&self, id: BodyId) -> &str {
+        if id == BodyId::GROUND {
+            "N"
+        } else {
+            &self.bodies[id.0 - 1].name
+        }
+    }
+
+    /// The body ids of the declared bodies, in file order.
+    pub fn body_ids(&self) -> impl Iterator<Item = BodyId> {
+        (1..=self.bodies.len()).map(BodyId)
+    }
+
+    /// The declared body behind `id` (not `N`).
+    pub fn body(&self, id: BodyId) -> &Body {
+        &self.bodies[id.0 - 1]
+    }
+
+    /// The joint whose child is `body`, if any (every declared body has exactly one).
+    pub fn joint_of(&self, body: BodyId) -> Option<usize> {
+        self.joints.iter().position(|j| j.child == body)
+    }
+
+    /// The symbol of coordinate `index` differentiated `order` times.
+    pub fn coordinate_symbol(&self, index: usize, order: u8) -> Symbol {
+        Symbol::Coord(self.coordinates[index].name.as_str().into(), order)
+    }
+
+    /// The expression of coordinate `index` differentiated `order` times.
+    pub fn coordinate_expr(&self, index: usize, order: u8) -> Expr {
+        Expr::sym(self.coordinate_symbol(index, order))
+    }
+}
