@@ -24,3 +24,11 @@ impl fmt::Display for MechanicsError {
 }
 
 impl std::error::Error for MechanicsError {}
+
+pub mod frames;
+pub mod joints;
+pub mod model;
+pub mod vector;
+
+pub use model::{BodyState, JointModel, Model, PointMotion};
+pub use vector::Vector;

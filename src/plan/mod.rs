@@ -1,1 +1,4 @@
 //! Steps 2 and 3: the free bodies and the planner's table of equations.
+
+pub mod forces;
+pub mod planner;

@@ -1,0 +1,59 @@
+//! Kinetic and potential energy, for the simulation's confirmation.
+
+use crate::mechanics::frames::apply;
+use crate::mechanics::vector::dot3;
+use crate::mechanics::Model;
+use crate::problem::{BodyId, LoadKind};
+use crate::symbolic::{add, pow, Expr};
+
+/// The kinetic energy: every body's translation and rotation.
+pub fn kinetic(model: &Model) -> Expr {
+    let half = Expr::ratio(1, 2);
+    let mut terms = Vec::new();
+    for &body in &model.order {
+        let state = &model.bodies[body.0];
+        let v = &state.center.velocity;
+        terms.push(&half * &(&state.mass * &v.dot(v, &model.frames)));
+        let w = state.omega.components_in(body, &model.frames);
+        terms.push(&half * &dot3(&w, &apply(&state.inertia, &w)));
+    }
+    add(terms)
+}
+
+/// The potential energy of gravity, springs and joint springs (zero at the origin's level).
+pub fn potential(model: &Model) -> Expr {
+    let problem = model.problem;
+    let half = Expr::ratio(1, 2);
+    let mut terms = Vec::new();
+    if let Some(g) = &problem.gravity {
+        let g = crate::mechanics::model::vector_of(g);
+        for &body in &model.order {
+            let state = &model.bodies[body.0];
+            terms.push(-(&state.mass * &g.dot(&state.center.position, &model.frames)));
+        }
+    }
+    for load in &problem.loads {
+        match &load.kind {
+            LoadKind::Spring { between, stiffness, free_length } => {
+                let p1 = model.point(between[0]).position;
+                let p2 = model.point(between[1]).position;
+                let d = p2.minus(&p1);
+                let length2 = d.dot(&d, &model.frames);
+                let stretch2 = if free_length.is_zero() {
+                    length2
+                } else {
+                    // (l - l0)^2 = l^2 - 2 l0 l + l0^2
+                    add([length2.clone(), -(Expr::int(2) * free_length.clone() * pow(length2, Expr::ratio(1, 2))), free_length * free_length])
+                };
+                terms.push(&half * &(stiffness * &stretch2));
+            }
+            LoadKind::JointSpring { coordinate, stiffness, rest, .. } => {
+                let stretch = &problem.coordinate_expr(*coordinate, 0) - rest;
+                terms.push(&half * &(stiffness * &(&stretch * &stretch)));
+            }
+            _ => {}
+        }
+    }
+    let _ = BodyId::GROUND;
+    add(terms)
+}

@@ -1,0 +1,149 @@
+//! Kane's method: one row per generalized speed, F_r + F_r* = 0, from the partial
+//! velocities and partial angular velocities; requested reactions through auxiliary speeds.
+
+use super::rows::{is_external, Equation, Groups, Inertia, Sum};
+use crate::mechanics::vector::Components;
+use crate::mechanics::{Model, Vector};
+use crate::plan::forces::{is_joint_load, joint_load_generalized_forces, Action, ActionKind, Category, Source};
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::{add, Expr, Symbol};
+
+/// The partial velocities of a vector linear in the rates: one vector per rate.
+pub fn partials(v: &Vector, rates: &[Symbol]) -> Vec<Vector> {
+    let mut out = vec![Vector::zero(); rates.len()];
+    for (frame, components) in v.parts() {
+        let split: Vec<Vec<Expr>> = components
+            .iter()
+            .map(|c| linear_split(c, rates).map(|(coefficients, _)| coefficients).unwrap_or_else(|_| vec![Expr::zero(); rates.len()]))
+            .collect();
+        for (r, slot) in out.iter_mut().enumerate() {
+            let c: Components = std::array::from_fn(|i| split[i][r].clone());
+            *slot = slot.plus(&Vector::new(*frame, c));
+        }
+    }
+    out
+}
+
+/// Partial velocities of the bodies' origins and partial angular velocities, per speed.
+struct Partials {
+    origin: Vec<Vec<Vector>>,
+    omega: Vec<Vec<Vector>>,
+}
+
+/// Kane's rows, one per coordinate, and one per requested reaction component.
+pub fn equations(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    unknowns: &[Symbol],
+    reaction_joints: &[usize],
+) -> Vec<Equation> {
+    let problem = model.problem;
+    let frames = &model.frames;
+    let rates: Vec<Symbol> = (0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    let partial = Partials {
+        origin: model.bodies.iter().map(|b| partials(&b.origin.velocity, &rates)).collect(),
+        omega: model.bodies.iter().map(|b| partials(&b.omega, &rates)).collect(),
+    };
+    let generalized_joint_loads = joint_load_generalized_forces(model);
+    let all_bodies: Vec<_> = model.order.clone();
+    let mut rows = Vec::new();
+    for (r, rate) in rates.iter().enumerate() {
+        let velocity_of = |body: crate::problem::BodyId, offset: &Components| -> Vector {
+            let w = &partial.omega[body.0][r];
+            partial.origin[body.0][r].plus(&w.cross(&Vector::new(body, offset.clone()), frames))
+        };
+        let (mut contact, mut distance) = (vec![generalized_joint_loads[r].clone()], Vec::new());
+        for action in actions {
+            if matches!(action.source, Source::Reaction(_)) || is_joint_load(model, action) {
+                continue; // workless, or taken above as a generalized force
+            }
+            let term = match &action.kind {
+                ActionKind::Force { offset, force } => force.dot(&velocity_of(action.body, offset), frames),
+                ActionKind::Couple { torque } => torque.dot(&partial.omega[action.body.0][r], frames),
+            };
+            match action.category {
+                Category::Contact => contact.push(term),
+                Category::Distance => distance.push(term),
+            }
+        }
+        let (mut inertia_force, mut inertia_torque) = (Vec::new(), Vec::new());
+        for &body in &all_bodies {
+            let center = &model.bodies[body.0].center_offset;
+            inertia_force.push(inertia.force[body.0].dot(&velocity_of(body, center), frames));
+            inertia_torque.push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));
+        }
+        let groups = Groups {
+            contact: add(contact),
+            distance: add(distance),
+            inertia_force: add(inertia_force),
+            inertia_torque: add(inertia_torque),
+        };
+        let expression = groups.total();
+        rows.push(Equation {
+            free_body: all_bodies.clone(),
+            sum: Sum::Generalized { speed: rate.to_string() },
+            direction: None,
+            unknowns: super::rows::unknowns_in(&expression, unknowns),
+            groups,
+            expression,
+        });
+    }
+    for &j in reaction_joints {
+        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, j));
+    }
+    rows
+}
+
+/// Rows for an auxiliary speed along each reaction component of joint `j`: the subtree
+/// outboard of the joint moves rigidly along (or about) the component's direction.
+fn auxiliary_rows(model: &Model, actions: &[Action], inertia: &Inertia, unknowns: &[Symbol], j: usize) -> Vec<Equation> {
+    let frames = &model.frames;
+    let joint = &model.problem.joints[j];
+    let subtree = model.subtree(j);
+    let pivot = model.joints[j].point.position.clone();
+    let mut rows = Vec::new();
+    for component in &model.joints[j].reactions {
+        let is_force = component.label.starts_with('F');
+        let d = &component.direction;
+        let velocity_at = |position: &Vector| -> Vector {
+            if is_force { d.clone() } else { d.cross(&position.minus(&pivot), frames) }
+        };
+        let omega = if is_force { Vector::zero() } else { d.clone() };
+        let (mut contact, mut distance) = (Vec::new(), Vec::new());
+        for action in actions.iter().filter(|a| is_external(a, &subtree)) {
+            let term = match &action.kind {
+                ActionKind::Force { offset, force } => {
+                    force.dot(&velocity_at(&model.point_on(action.body, offset).position), frames)
+                }
+                ActionKind::Couple { torque } => torque.dot(&omega, frames),
+            };
+            match action.category {
+                Category::Contact => contact.push(term),
+                Category::Distance => distance.push(term),
+            }
+        }
+        let (mut inertia_force, mut inertia_torque) = (Vec::new(), Vec::new());
+        for &body in &subtree {
+            let center = &model.bodies[body.0].center.position;
+            inertia_force.push(inertia.force[body.0].dot(&velocity_at(center), frames));
+            inertia_torque.push(inertia.torque[body.0].dot(&omega, frames));
+        }
+        let groups = Groups {
+            contact: add(contact),
+            distance: add(distance),
+            inertia_force: add(inertia_force),
+            inertia_torque: add(inertia_torque),
+        };
+        let expression = groups.total();
+        rows.push(Equation {
+            free_body: subtree.clone(),
+            sum: Sum::Generalized { speed: format!("u({}.{})", joint.name, component.label) },
+            direction: None,
+            unknowns: super::rows::unknowns_in(&expression, unknowns),
+            groups,
+            expression,
+        });
+    }
+    rows
+}

@@ -1,0 +1,166 @@
+//! One scalar equation of motion: a free body, a sum of forces or of moments about a point,
+//! dotted with a direction, its terms grouped as the Motion Law groups them.
+
+use crate::mechanics::frames::apply;
+use crate::mechanics::vector::Components;
+use crate::mechanics::{Model, Vector};
+use crate::plan::forces::{Action, ActionKind, Category};
+use crate::problem::BodyId;
+use crate::symbolic::{add, Expr, Symbol};
+
+/// The inertia force `-m a*` and inertia torque `-α·I - ω×I·ω` of every body.
+#[derive(Clone, Debug)]
+pub struct Inertia {
+    /// Indexed by body id (`N` first, zero).
+    pub force: Vec<Vector>,
+    /// Indexed by body id, in the body's own unit vectors.
+    pub torque: Vec<Vector>,
+}
+
+impl Inertia {
+    /// The inertia forces and torques of every body of `model`.
+    pub fn of(model: &Model) -> Inertia {
+        let mut force = Vec::with_capacity(model.bodies.len());
+        let mut torque = Vec::with_capacity(model.bodies.len());
+        for (index, state) in model.bodies.iter().enumerate() {
+            let body = BodyId(index);
+            force.push(state.center.acceleration.scaled(&-state.mass.clone()));
+            let w = state.omega.components_in(body, &model.frames);
+            let a = state.alpha.components_in(body, &model.frames);
+            let iw = apply(&state.inertia, &w);
+            let ia = apply(&state.inertia, &a);
+            let gyro = crate::mechanics::vector::cross3(&w, &iw);
+            let t: Components = std::array::from_fn(|i| -(&ia[i] + &gyro[i]));
+            torque.push(Vector::new(body, t));
+        }
+        Inertia { force, torque }
+    }
+}
+
+/// The Motion Law's groups of one scalar equation; their sum is zero.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Groups {
+    /// Contact forces (and couples): reactions, springs, dampers, applied loads.
+    pub contact: Expr,
+    /// Distance forces: gravity.
+    pub distance: Expr,
+    /// Inertia forces `-m a*` (their moments, in a moment equation).
+    pub inertia_force: Expr,
+    /// Inertia torques.
+    pub inertia_torque: Expr,
+}
+
+impl Groups {
+    /// The whole left-hand side.
+    pub fn total(&self) -> Expr {
+        add([self.contact.clone(), self.distance.clone(), self.inertia_force.clone(), self.inertia_torque.clone()])
+    }
+}
+
+/// What an equation sums.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Sum {
+    /// Forces.
+    Force,
+    /// Moments about a point.
+    Moment {
+        /// The point's name as a student writes it (`O`, `A*`).
+        point: String,
+        /// Its position from `N.o`.
+        position: Vector,
+    },
+    /// Kane's generalized forces for a generalized speed (or an auxiliary one).
+    Generalized {
+        /// The speed, e.g. `q1'` or `u(O.Fx)`.
+        speed: String,
+    },
+}
+
+/// A direction for the dot product, with its name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Direction {
+    /// Plain name, e.g. `N.x`, `axis of O`.
+    pub name: String,
+    /// LaTeX, e.g. `\hat{\mathbf{n}}_{x}`.
+    pub latex: String,
+    /// The unit vector.
+    pub vector: Vector,
+}
+
+/// One scalar equation of motion.
+#[derive(Clone, Debug)]
+pub struct Equation {
+    /// The bodies of the free body.
+    pub free_body: Vec<BodyId>,
+    /// Forces or moments.
+    pub sum: Sum,
+    /// The direction of the dot product (none for Kane's rows).
+    pub direction: Option<Direction>,
+    /// The terms grouped as the Motion Law groups them, before simplification.
+    pub groups: Groups,
+    /// The whole equation, `expression = 0`.
+    pub expression: Expr,
+    /// The unknowns it contains (q'' and reaction components), in system order.
+    pub unknowns: Vec<Symbol>,
+}
+
+/// Whether an action acts on the free body from outside it.
+pub fn is_external(action: &Action, free_body: &[BodyId]) -> bool {
+    free_body.contains(&action.body) && !action.partner.is_some_and(|p| free_body.contains(&p))
+}
+
+/// The groups of `(Σ forces) · u` or `(Σ moments about P) · u` for a free body.
+pub fn resultant(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    free_body: &[BodyId],
+    about: Option<&Vector>,
+    direction: &Vector,
+) -> Groups {
+    let frames = &model.frames;
+    let (mut contact, mut distance) = (Vec::new(), Vec::new());
+    for action in actions.iter().filter(|a| is_external(a, free_body)) {
+        let term = match (&action.kind, about) {
+            (ActionKind::Force { force, .. }, None) => force.dot(direction, frames),
+            (ActionKind::Couple { .. }, None) => continue,
+            (ActionKind::Force { offset, force }, Some(point)) => {
+                let at = model.point_on(action.body, offset).position.minus(point);
+                at.cross(force, frames).dot(direction, frames)
+            }
+            (ActionKind::Couple { torque }, Some(_)) => torque.dot(direction, frames),
+        };
+        match action.category {
+            Category::Contact => contact.push(term),
+            Category::Distance => distance.push(term),
+        }
+    }
+    let (mut inertia_force, mut inertia_torque) = (Vec::new(), Vec::new());
+    for &body in free_body {
+        let f = &inertia.force[body.0];
+        match about {
+            None => inertia_force.push(f.dot(direction, frames)),
+            Some(point) => {
+                let at = model.bodies[body.0].center.position.minus(point);
+                inertia_force.push(at.cross(f, frames).dot(direction, frames));
+                inertia_torque.push(inertia.torque[body.0].dot(direction, frames));
+            }
+        }
+    }
+    Groups { contact: add(contact), distance: add(distance), inertia_force: add(inertia_force), inertia_torque: add(inertia_torque) }
+}
+
+/// The unknowns among `all` that appear in `e`, in the order of `all`.
+pub fn unknowns_in(e: &Expr, all: &[Symbol]) -> Vec<Symbol> {
+    all.iter().filter(|s| e.contains(s)).cloned().collect()
+}
+
+/// The LaTeX of a unit vector direction `frame.axis`.
+pub fn unit_direction(model: &Model, frame: BodyId, axis: usize) -> Direction {
+    let name = model.frames.name(frame);
+    Direction {
+        name: format!("{name}.{}", ["x", "y", "z"][axis]),
+        latex: crate::symbolic::print::latex_unit_vector(name, axis as u8),
+        vector: Vector::unit(frame, axis),
+    }
+}

@@ -1,0 +1,144 @@
+//! Assembling the chosen rows into the symbolic linear system `A x = b`.
+
+use super::rows::{Equation, Inertia};
+use crate::mechanics::{MechanicsError, Model};
+use crate::plan::forces::{actions, reaction_symbol, Action};
+use crate::plan::planner::{self, Rejected};
+use crate::problem::Problem;
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::{Expr, Symbol};
+
+/// The equation-forming method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Contact + distance + inertia forces = 0, about any point.
+    MotionLaw,
+    /// Every body a free body; all reactions unknown.
+    NewtonEuler,
+    /// Generalized active plus inertia forces.
+    Kane,
+}
+
+impl Method {
+    /// Every method.
+    pub const ALL: [Method; 3] = [Method::MotionLaw, Method::NewtonEuler, Method::Kane];
+
+    /// The name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::MotionLaw => "motion-law",
+            Method::NewtonEuler => "newton-euler",
+            Method::Kane => "kane",
+        }
+    }
+
+    /// The name as a course writes it.
+    pub fn title(self) -> &'static str {
+        match self {
+            Method::MotionLaw => "the Motion Law",
+            Method::NewtonEuler => "Newton–Euler",
+            Method::Kane => "Kane's method",
+        }
+    }
+}
+
+/// The symbolic linear system `A x = b`.
+#[derive(Clone, Debug)]
+pub struct LinearSystem {
+    /// The unknowns `x`: every q'', then reaction components.
+    pub unknowns: Vec<Symbol>,
+    /// Row-major coefficients.
+    pub a: Vec<Vec<Expr>>,
+    /// Right-hand sides.
+    pub b: Vec<Expr>,
+}
+
+/// Everything one method derives for one problem.
+#[derive(Debug)]
+pub struct Derivation<'p> {
+    /// The kinematics.
+    pub model: Model<'p>,
+    /// The method.
+    pub method: Method,
+    /// Every force and couple, reactions included.
+    pub actions: Vec<Action>,
+    /// The inertia forces and torques.
+    pub inertia: Inertia,
+    /// The chosen rows.
+    pub rows: Vec<Equation>,
+    /// The candidates rejected, with reasons (the Motion Law only).
+    pub rejected: Vec<Rejected>,
+    /// The assembled system.
+    pub system: LinearSystem,
+    /// Joints whose reactions are unknowns of the system.
+    pub reaction_joints: Vec<usize>,
+}
+
+/// The reaction unknowns of the given joints, in joint order.
+pub fn reaction_unknowns(model: &Model, joints: &[usize]) -> Vec<Symbol> {
+    joints
+        .iter()
+        .flat_map(|&j| {
+            let name = &model.problem.joints[j].name;
+            model.joints[j].reactions.iter().map(move |c| reaction_symbol(name, &c.label))
+        })
+        .collect()
+}
+
+/// Derives the equations of motion of `problem` by `method`.
+///
+/// # Errors
+/// When the model cannot be built, the planner finds no complete set of rows, or an
+/// unknown appears nonlinearly.
+pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
+    let model = Model::build(problem)?;
+    let actions = actions(&model)?;
+    let inertia = Inertia::of(&model);
+    let accelerations: Vec<Symbol> = (0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, 2)).collect();
+    let all_joints: Vec<usize> = (0..problem.joints.len()).collect();
+    let every_unknown: Vec<Symbol> =
+        accelerations.iter().cloned().chain(reaction_unknowns(&model, &all_joints)).collect();
+    let reaction_joints: Vec<usize> = match method {
+        Method::NewtonEuler => all_joints.iter().copied().filter(|&j| !model.joints[j].reactions.is_empty()).collect(),
+        _ => problem.find_reactions.clone(),
+    };
+    let unknowns: Vec<Symbol> = accelerations.iter().cloned().chain(reaction_unknowns(&model, &reaction_joints)).collect();
+    let (rows, rejected) = match method {
+        Method::NewtonEuler => (super::newton_euler::equations(&model, &actions, &inertia, &every_unknown), vec![]),
+        Method::Kane => (super::kane::equations(&model, &actions, &inertia, &every_unknown, &reaction_joints), vec![]),
+        Method::MotionLaw => {
+            let candidates = planner::candidates(&model, &actions, &inertia, &every_unknown);
+            let choice = planner::choose(&model, candidates, &unknowns);
+            (choice.rows, choice.rejected)
+        }
+    };
+    if rows.len() != unknowns.len() {
+        return Err(MechanicsError {
+            path: "joints".into(),
+            message: format!(
+                "{} found {} independent equations for {} unknowns",
+                method.title(),
+                rows.len(),
+                unknowns.len()
+            ),
+            hint: Some("a coordinate may move nothing with mass, or a reaction may be undetermined".into()),
+        });
+    }
+    let system = assemble(&rows, &unknowns)?;
+    Ok(Derivation { model, method, actions, inertia, rows, rejected, system, reaction_joints })
+}
+
+fn assemble(rows: &[Equation], unknowns: &[Symbol]) -> Result<LinearSystem, MechanicsError> {
+    let mut a = Vec::with_capacity(rows.len());
+    let mut b = Vec::with_capacity(rows.len());
+    for row in rows {
+        let (coefficients, rest) = linear_split(&row.expression, unknowns).map_err(|e| MechanicsError {
+            path: "loads".into(),
+            message: e.to_string(),
+            hint: Some("loads may not depend on second rates".into()),
+        })?;
+        a.push(coefficients);
+        b.push(-rest);
+    }
+    Ok(LinearSystem { unknowns: unknowns.to_vec(), a, b })
+}

@@ -1,0 +1,318 @@
+//! Building the kinematic model of a problem: frames from the joints (step 1), then the
+//! angular velocity and acceleration of every body and the motion of every point (step 4).
+
+use super::frames::{FrameInfo, Frames, Matrix};
+use super::joints::{joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent};
+use super::vector::{zero3, Components, Vector};
+use super::MechanicsError;
+use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
+use crate::symbolic::diff::time_derivative;
+use crate::symbolic::eval::Values;
+use crate::symbolic::{Expr, Symbol};
+
+/// Position, velocity and acceleration of a point in `N`.
+#[derive(Clone, Debug, Default)]
+pub struct PointMotion {
+    /// From `N.o`.
+    pub position: Vector,
+    /// The velocity in `N`.
+    pub velocity: Vector,
+    /// The acceleration in `N`.
+    pub acceleration: Vector,
+}
+
+/// The kinematics of one body.
+#[derive(Clone, Debug)]
+pub struct BodyState {
+    /// Angular velocity in `N`, in the body's own unit vectors.
+    pub omega: Vector,
+    /// Angular acceleration in `N`, in the body's own unit vectors.
+    pub alpha: Vector,
+    /// The body's origin.
+    pub origin: PointMotion,
+    /// The mass center `B*`.
+    pub center: PointMotion,
+    /// The mass center from the origin, in the body's unit vectors.
+    pub center_offset: Components,
+    /// The mass (zero for `N`).
+    pub mass: Expr,
+    /// The central inertia matrix in the body's unit vectors (2D: only `zz` is set).
+    pub inertia: Matrix,
+}
+
+/// A joint with what it allows and what it transmits.
+#[derive(Clone, Debug)]
+pub struct JointModel {
+    /// Its rotations and translation.
+    pub motion: JointMotion,
+    /// The joint point on the parent, from the parent's origin, parent's unit vectors.
+    pub at: Components,
+    /// The joint point on the child, from the child's origin, child's unit vectors.
+    pub child_at: Components,
+    /// The reaction components, each an unknown `joint.label`.
+    pub reactions: Vec<ReactionComponent>,
+    /// Where a joint load on each coordinate acts.
+    pub load_axes: Vec<LoadAxis>,
+    /// The motion of the joint's point on the child.
+    pub point: PointMotion,
+}
+
+/// The kinematic model of a problem.
+#[derive(Debug)]
+pub struct Model<'p> {
+    /// The problem it was built from.
+    pub problem: &'p Problem,
+    /// Every body's frame, `N` first.
+    pub frames: Frames,
+    /// The constants' values, for decisions that need numbers (never baked into equations).
+    pub values: Values,
+    /// Indexed by body id, `N` first.
+    pub bodies: Vec<BodyState>,
+    /// Indexed like [`Problem::joints`].
+    pub joints: Vec<JointModel>,
+    /// Bodies with parents before children (`N` excluded).
+    pub order: Vec<BodyId>,
+}
+
+/// The vector a [`VectorExpr`] describes.
+pub fn vector_of(written: &VectorExpr) -> Vector {
+    Vector::sum(written.terms.iter().map(|(frame, axis, coefficient)| Vector::unit(*frame, *axis as usize).scaled(coefficient)))
+}
+
+/// Components of a vector written in the body's own unit vectors (as `at`, `center` are).
+fn own_components(written: &VectorExpr, frame: BodyId) -> Components {
+    let mut c = zero3();
+    for (f, axis, coefficient) in &written.terms {
+        if *f == frame {
+            c[*axis as usize] = &c[*axis as usize] + coefficient;
+        }
+    }
+    c
+}
+
+fn constant_values(problem: &Problem) -> Values {
+    let mut values = Values::new();
+    for c in &problem.constants {
+        values.set(Symbol::Const(c.name.as_str().into()), c.value);
+    }
+    values
+}
+
+fn dt_components(c: &Components, path: &str) -> Result<Components, MechanicsError> {
+    let d = |e: &Expr| {
+        time_derivative(e).map_err(|e| MechanicsError { path: path.to_string(), message: e.to_string(), hint: None })
+    };
+    Ok([d(&c[0])?, d(&c[1])?, d(&c[2])?])
+}
+
+impl<'p> Model<'p> {
+    /// Builds the frames and the kinematics of every body of `problem`.
+    ///
+    /// # Errors
+    /// When a joint axis is zero or not fixed in its parent, or a point is given in the
+    /// unit vectors of a frame it is not fixed in.
+    pub fn build(problem: &'p Problem) -> Result<Model<'p>, MechanicsError> {
+        let values = constant_values(problem);
+        let count = problem.bodies.len() + 1;
+        let names = std::iter::once("N".to_string()).chain(problem.bodies.iter().map(|b| b.name.clone())).collect();
+        let mut frame_infos = vec![FrameInfo { parent: None, rotations: vec![] }; count];
+        let order = tree_order(problem);
+        let mut motions: Vec<Option<JointMotion>> = vec![None; problem.joints.len()];
+        // Frames first, parents before children: an axis is read in its parent's frame.
+        for &body in &order {
+            let Some(j) = problem.joint_of(body) else { continue };
+            let joint = &problem.joints[j];
+            let partial = Frames::new(frame_infos.clone(), Vec::new());
+            let motion = joint_motion(problem, joint, &partial, &values)?;
+            frame_infos[body.0] = FrameInfo { parent: Some(joint.parent), rotations: motion.rotations.clone() };
+            motions[j] = Some(motion);
+        }
+        let frames = Frames::new(frame_infos, names);
+        let ground = BodyState {
+            omega: Vector::zero(),
+            alpha: Vector::zero(),
+            origin: PointMotion::default(),
+            center: PointMotion::default(),
+            center_offset: zero3(),
+            mass: Expr::zero(),
+            inertia: std::array::from_fn(|_| zero3()),
+        };
+        let mut bodies = vec![ground; count];
+        let mut joints: Vec<Option<JointModel>> = vec![None; problem.joints.len()];
+        for &body in &order {
+            let Some(j) = problem.joint_of(body) else { continue };
+            let joint = &problem.joints[j];
+            let Some(motion) = motions[j].take() else { continue };
+            let (state, joint_model) = body_kinematics(problem, &frames, &values, &bodies[joint.parent.0], body, j, motion)?;
+            bodies[body.0] = state;
+            joints[j] = Some(joint_model);
+        }
+        let joints = joints.into_iter().flatten().collect();
+        Ok(Model { problem, frames, values, bodies, joints, order })
+    }
+
+    /// The motion of a point fixed on `body` at `offset` (body's unit vectors) from its origin.
+    pub fn point_on(&self, body: BodyId, offset: &Components) -> PointMotion {
+        rigid_point(&self.frames, &self.bodies[body.0], body, offset)
+    }
+
+    /// The body a point belongs to and its offset from that body's origin.
+    pub fn locate(&self, point: PointRef) -> (BodyId, Components) {
+        match point {
+            PointRef::Named(i) => {
+                let p = &self.problem.points[i];
+                (p.on, own_components(&p.at, p.on))
+            }
+            PointRef::MassCenter(b) => (b, self.bodies[b.0].center_offset.clone()),
+            PointRef::Origin(b) => (b, zero3()),
+            PointRef::Joint(j) => (self.problem.joints[j].child, self.joints[j].child_at.clone()),
+        }
+    }
+
+    /// The motion of a named point.
+    pub fn point(&self, point: PointRef) -> PointMotion {
+        let (body, offset) = self.locate(point);
+        self.point_on(body, &offset)
+    }
+
+    /// The ancestors of `body` up to `N` excluded, `body` included.
+    pub fn is_in_subtree(&self, body: BodyId, root: BodyId) -> bool {
+        let mut current = Some(body);
+        while let Some(b) = current {
+            if b == root {
+                return true;
+            }
+            current = self.frames.info(b).parent;
+        }
+        false
+    }
+
+    /// The bodies outboard of joint `j`: its child and everything carried by it.
+    pub fn subtree(&self, j: usize) -> Vec<BodyId> {
+        let root = self.problem.joints[j].child;
+        self.order.iter().copied().filter(|&b| self.is_in_subtree(b, root)).collect()
+    }
+
+    /// Components in own frame made a vector of that frame.
+    pub fn own(frame: BodyId, c: &Components) -> Vector {
+        Vector::new(frame, c.clone())
+    }
+
+    /// Whether the problem is planar.
+    pub fn is_planar(&self) -> bool {
+        self.problem.dimension == Dimension::Two
+    }
+}
+
+/// The declared bodies, parents before children, siblings in file order.
+pub fn tree_order(problem: &Problem) -> Vec<BodyId> {
+    let mut order = Vec::new();
+    let mut frontier = vec![BodyId::GROUND];
+    while let Some(parent) = frontier.pop() {
+        let children: Vec<BodyId> = problem.joints.iter().filter(|j| j.parent == parent).map(|j| j.child).collect();
+        for child in children.iter().rev() {
+            frontier.push(*child);
+        }
+        if parent != BodyId::GROUND {
+            order.push(parent);
+        }
+        if order.len() > problem.bodies.len() {
+            break;
+        }
+    }
+    order
+}
+
+fn rigid_point(frames: &Frames, state: &BodyState, body: BodyId, offset: &Components) -> PointMotion {
+    let r = Vector::new(body, offset.clone());
+    let w_x_r = state.omega.cross(&r, frames);
+    PointMotion {
+        position: state.origin.position.plus(&r),
+        velocity: state.origin.velocity.plus(&w_x_r),
+        acceleration: Vector::sum([
+            state.origin.acceleration.clone(),
+            state.alpha.cross(&r, frames),
+            state.omega.cross(&w_x_r, frames),
+        ]),
+    }
+}
+
+fn body_kinematics(
+    problem: &Problem,
+    frames: &Frames,
+    values: &Values,
+    parent_state: &BodyState,
+    body: BodyId,
+    j: usize,
+    motion: JointMotion,
+) -> Result<(BodyState, JointModel), MechanicsError> {
+    let joint = &problem.joints[j];
+    let parent = joint.parent;
+    let path = &joint.path;
+    // Angular velocity: the parent's, carried into this frame, plus the joint's own.
+    let relative = frames.relative_angular_velocity(body).map_err(|e| MechanicsError {
+        path: path.clone(),
+        message: e.to_string(),
+        hint: None,
+    })?;
+    let omega = parent_state.omega.expressed_in(body, frames).plus(&Vector::new(body, relative));
+    let omega_components = omega.components_in(body, frames);
+    // Expressed in the body's own frame, d/dt in N equals d/dt of the components.
+    let alpha = Vector::new(body, dt_components(&omega_components, path)?);
+
+    // The joint point on the parent, then the sliding along the joint, then back to the origin.
+    let at = own_components(&joint.at, parent);
+    let child_at = own_components(&joint.child_at, body);
+    let d = motion.translation.clone();
+    let d_rate = dt_components(&d, path)?;
+    let d_accel = dt_components(&d_rate, path)?;
+    let carried: Components = std::array::from_fn(|i| &at[i] + &d[i]);
+    let carried_point = rigid_point(frames, parent_state, parent, &carried);
+    let slide_rate = Vector::new(parent, d_rate);
+    let joint_point = PointMotion {
+        position: carried_point.position,
+        velocity: carried_point.velocity.plus(&slide_rate),
+        acceleration: Vector::sum([
+            carried_point.acceleration,
+            Vector::new(parent, d_accel),
+            parent_state.omega.cross(&slide_rate, frames).scaled(&Expr::int(2)),
+        ]),
+    };
+    let back: Components = std::array::from_fn(|i| -child_at[i].clone());
+    let partial_state = BodyState {
+        omega: omega.clone(),
+        alpha: alpha.clone(),
+        origin: joint_point.clone(),
+        center: PointMotion::default(),
+        center_offset: zero3(),
+        mass: Expr::zero(),
+        inertia: std::array::from_fn(|_| zero3()),
+    };
+    // The joint point moves with the child, so the origin follows by the rigid-body formulas.
+    let origin = rigid_point(frames, &partial_state, body, &back);
+
+    let declared = problem.body(body);
+    let center_offset = own_components(&declared.center, body);
+    let inertia = match &declared.inertia {
+        Inertia::Planar(izz) => {
+            let mut m: Matrix = std::array::from_fn(|_| zero3());
+            m[2][2] = izz.clone();
+            m
+        }
+        Inertia::Spatial(m) => m.clone(),
+    };
+    let mut state = BodyState {
+        omega,
+        alpha,
+        origin,
+        center: PointMotion::default(),
+        center_offset: center_offset.clone(),
+        mass: declared.mass.clone(),
+        inertia,
+    };
+    state.center = rigid_point(frames, &state, body, &center_offset);
+    let reactions = reaction_components(problem, joint, &motion, values);
+    let axes = load_axes(joint, &motion, frames);
+    let joint_model = JointModel { motion, at, child_at, reactions, load_axes: axes, point: joint_point };
+    Ok((state, joint_model))
+}

@@ -1,0 +1,303 @@
+//! Every force and couple in the system, each acting on one body, sorted as the Motion Law
+//! names them: contact forces and distance forces. (Inertia forces come from kinematics.)
+
+use crate::mechanics::vector::{zero3, Components};
+use crate::mechanics::{MechanicsError, Model, Vector};
+use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
+use crate::symbolic::{pow, Expr, Symbol};
+
+/// Contact (touching) or distance (gravity) force, as the Motion Law sorts them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Category {
+    /// Reactions, springs, dampers, applied forces and torques, joint loads.
+    Contact,
+    /// Gravity.
+    Distance,
+}
+
+/// Where an action comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    /// Gravity on a body.
+    Gravity,
+    /// A load of the problem, by index.
+    Load(usize),
+    /// The reaction at a joint, by index.
+    Reaction(usize),
+}
+
+/// A force at a point of a body, or a couple on it.
+#[derive(Clone, Debug)]
+pub enum ActionKind {
+    /// A force applied at `offset` from the body's origin (body's unit vectors).
+    Force { offset: Components, force: Vector },
+    /// A couple.
+    Couple { torque: Vector },
+}
+
+/// One force or couple acting on one body.
+#[derive(Clone, Debug)]
+pub struct Action {
+    /// The body acted on.
+    pub body: BodyId,
+    /// The other body of an action–reaction pair, if any: when both are inside a free body
+    /// the pair is internal and drops out.
+    pub partner: Option<BodyId>,
+    /// Contact or distance.
+    pub category: Category,
+    /// Where it comes from.
+    pub source: Source,
+    /// A short name for tables, e.g. `spring k1 on B`, `reaction at O`.
+    pub label: String,
+    /// The force or couple.
+    pub kind: ActionKind,
+}
+
+/// The name of the unknown for reaction component `label` at joint `joint`.
+pub fn reaction_symbol(joint: &str, label: &str) -> Symbol {
+    Symbol::Unknown(format!("{joint}.{label}").into())
+}
+
+/// Every action in the system. Reactions come with their unknown components as symbols.
+///
+/// # Errors
+/// When a spring or damper joins two points of the same body, or a force acts at a point
+/// that is not on its body.
+pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
+    let problem = model.problem;
+    let mut out = Vec::new();
+    if let Some(g) = &problem.gravity {
+        let g = crate::mechanics::model::vector_of(g);
+        for body in problem.body_ids() {
+            let state = &model.bodies[body.0];
+            out.push(Action {
+                body,
+                partner: None,
+                category: Category::Distance,
+                source: Source::Gravity,
+                label: format!("gravity on {}", problem.body_name(body)),
+                kind: ActionKind::Force { offset: state.center_offset.clone(), force: g.scaled(&state.mass) },
+            });
+        }
+    }
+    for (j, joint) in problem.joints.iter().enumerate() {
+        let jm = &model.joints[j];
+        if jm.reactions.is_empty() {
+            continue;
+        }
+        let mut force = Vector::zero();
+        let mut moment = Vector::zero();
+        for component in &jm.reactions {
+            let unknown = Expr::sym(reaction_symbol(&joint.name, &component.label));
+            let part = component.direction.scaled(&unknown);
+            if component.label.starts_with('F') {
+                force = force.plus(&part);
+            } else {
+                moment = moment.plus(&part);
+            }
+        }
+        let label = format!("reaction at {}", joint.name);
+        push_pair(&mut out, model, j, Category::Contact, Source::Reaction(j), &label, &force, &moment);
+    }
+    for (index, load) in problem.loads.iter().enumerate() {
+        load_actions(model, index, &load.kind, &load.path, load.name.as_deref(), &mut out)?;
+    }
+    Ok(out)
+}
+
+/// A force through joint `j`'s point and a couple on the child, and their opposites on the parent.
+#[allow(clippy::too_many_arguments)]
+fn push_pair(
+    out: &mut Vec<Action>,
+    model: &Model,
+    j: usize,
+    category: Category,
+    source: Source,
+    label: &str,
+    force: &Vector,
+    couple: &Vector,
+) {
+    let joint = &model.problem.joints[j];
+    let jm = &model.joints[j];
+    let on_parent: Components = std::array::from_fn(|i| &jm.at[i] + &jm.motion.translation[i]);
+    let minus = Expr::int(-1);
+    let sides = [
+        (joint.child, joint.parent, jm.child_at.clone(), force.clone(), couple.clone()),
+        (joint.parent, joint.child, on_parent, force.scaled(&minus), couple.scaled(&minus)),
+    ];
+    for (body, partner, offset, f, c) in sides {
+        if body == BodyId::GROUND {
+            continue;
+        }
+        if !f.is_zero() {
+            let kind = ActionKind::Force { offset, force: f };
+            out.push(Action { body, partner: Some(partner), category, source, label: label.to_string(), kind });
+        }
+        if !c.is_zero() {
+            let kind = ActionKind::Couple { torque: c };
+            out.push(Action { body, partner: Some(partner), category, source, label: label.to_string(), kind });
+        }
+    }
+}
+
+fn load_actions(
+    model: &Model,
+    index: usize,
+    kind: &LoadKind,
+    path: &str,
+    name: Option<&str>,
+    out: &mut Vec<Action>,
+) -> Result<(), MechanicsError> {
+    let problem = model.problem;
+    let source = Source::Load(index);
+    let named = |default: String| name.map(str::to_string).unwrap_or(default);
+    let error = |message: String, hint: &str| MechanicsError { path: path.to_string(), message, hint: Some(hint.into()) };
+    let contact = |body: BodyId, partner: Option<BodyId>, label: String, kind: ActionKind| Action {
+        body,
+        partner,
+        category: Category::Contact,
+        source,
+        label,
+        kind,
+    };
+    match kind {
+        LoadKind::Force { on, at, vector } => {
+            let offset = match at {
+                ForcePoint::Point(point) => {
+                    let (body, offset) = model.locate(*point);
+                    if body != *on {
+                        return Err(error(
+                            format!("the point is on `{}`, not on `{}`", problem.body_name(body), problem.body_name(*on)),
+                            "a force acts at a point of the body it is applied to",
+                        ));
+                    }
+                    offset
+                }
+                ForcePoint::Offset(v) => crate::mechanics::model::vector_of(v).components_in(*on, &model.frames),
+            };
+            let force = crate::mechanics::model::vector_of(vector);
+            if *on != BodyId::GROUND {
+                out.push(contact(*on, None, named(format!("force on {}", problem.body_name(*on))), ActionKind::Force { offset, force }));
+            }
+        }
+        LoadKind::Torque { on, vector, reaction_on } => {
+            let torque = crate::mechanics::model::vector_of(vector);
+            let label = named(format!("torque on {}", problem.body_name(*on)));
+            if *on != BodyId::GROUND {
+                out.push(contact(*on, *reaction_on, label.clone(), ActionKind::Couple { torque: torque.clone() }));
+            }
+            if let Some(other) = reaction_on.filter(|b| *b != BodyId::GROUND) {
+                let opposite = torque.scaled(&Expr::int(-1));
+                out.push(contact(other, Some(*on), label, ActionKind::Couple { torque: opposite }));
+            }
+        }
+        LoadKind::Spring { between, stiffness, free_length } => {
+            let (delta, _, ends) = separation(model, between, path)?;
+            let length2 = delta.dot(&delta, &model.frames);
+            // Tension k (l - l0) along the unit vector delta / l; with l0 = 0 no square root.
+            let factor = if free_length.is_zero() {
+                stiffness.clone()
+            } else {
+                stiffness * &(Expr::one() - free_length * &pow(length2, Expr::ratio(-1, 2)))
+            };
+            push_two_point(out, model, ends, &delta.scaled(&factor), contact, &named("spring".into()));
+        }
+        LoadKind::Damper { between, coefficient } => {
+            let (delta, delta_rate, ends) = separation(model, between, path)?;
+            let length2 = delta.dot(&delta, &model.frames);
+            let rate = delta.dot(&delta_rate, &model.frames);
+            let factor = coefficient * &(&rate * &pow(length2, Expr::int(-1)));
+            push_two_point(out, model, ends, &delta.scaled(&factor), contact, &named("damper".into()));
+        }
+        LoadKind::JointSpring { joint, coordinate, stiffness, rest } => {
+            let q = problem.coordinate_expr(*coordinate, 0);
+            let value = -(stiffness * &(&q - rest));
+            joint_load(out, model, *joint, *coordinate, &value, source, &named("joint spring".into()));
+        }
+        LoadKind::JointDamper { joint, coordinate, coefficient } => {
+            let value = -(coefficient * &problem.coordinate_expr(*coordinate, 1));
+            joint_load(out, model, *joint, *coordinate, &value, source, &named("joint damper".into()));
+        }
+        LoadKind::JointActuator { joint, coordinate, value } => {
+            joint_load(out, model, *joint, *coordinate, value, source, &named("actuator".into()));
+        }
+    }
+    Ok(())
+}
+
+type Ends = [(BodyId, Components); 2];
+
+/// The vector from the first point to the second, its rate, and where the points are.
+fn separation(model: &Model, between: &[PointRef; 2], path: &str) -> Result<(Vector, Vector, Ends), MechanicsError> {
+    let ends = [model.locate(between[0]), model.locate(between[1])];
+    if ends[0].0 == ends[1].0 {
+        return Err(MechanicsError {
+            path: format!("{path}.between"),
+            message: format!("both points are on `{}`, so the element can never stretch", model.problem.body_name(ends[0].0)),
+            hint: Some("connect points of two different bodies".into()),
+        });
+    }
+    let first = model.point_on(ends[0].0, &ends[0].1);
+    let second = model.point_on(ends[1].0, &ends[1].1);
+    Ok((second.position.minus(&first.position), second.velocity.minus(&first.velocity), ends))
+}
+
+/// `force_on_first` on the first point, its opposite on the second.
+fn push_two_point(
+    out: &mut Vec<Action>,
+    _model: &Model,
+    ends: Ends,
+    force_on_first: &Vector,
+    contact: impl Fn(BodyId, Option<BodyId>, String, ActionKind) -> Action,
+    label: &str,
+) {
+    let [(b1, o1), (b2, o2)] = ends;
+    if b1 != BodyId::GROUND {
+        out.push(contact(b1, Some(b2), label.to_string(), ActionKind::Force { offset: o1, force: force_on_first.clone() }));
+    }
+    if b2 != BodyId::GROUND {
+        let opposite = force_on_first.scaled(&Expr::int(-1));
+        out.push(contact(b2, Some(b1), label.to_string(), ActionKind::Force { offset: o2, force: opposite }));
+    }
+}
+
+fn joint_load(out: &mut Vec<Action>, model: &Model, j: usize, coordinate: usize, value: &Expr, source: Source, label: &str) {
+    let index = model.problem.coordinates[coordinate].index_in_joint;
+    let Some(axis) = model.joints[j].load_axes.get(index) else { return };
+    let force = axis.force.scaled(value);
+    let couple = axis.torque.scaled(value);
+    push_pair(out, model, j, Category::Contact, source, label, &force, &couple);
+}
+
+/// The generalized force that joint loads put directly on each coordinate (for Kane's method).
+pub fn joint_load_generalized_forces(model: &Model) -> Vec<Expr> {
+    let problem = model.problem;
+    let mut q = vec![Expr::zero(); problem.coordinates.len()];
+    for load in &problem.loads {
+        let (c, value) = match &load.kind {
+            LoadKind::JointSpring { coordinate, stiffness, rest, .. } => {
+                (*coordinate, -(stiffness * &(&problem.coordinate_expr(*coordinate, 0) - rest)))
+            }
+            LoadKind::JointDamper { coordinate, coefficient, .. } => {
+                (*coordinate, -(coefficient * &problem.coordinate_expr(*coordinate, 1)))
+            }
+            LoadKind::JointActuator { coordinate, value, .. } => (*coordinate, value.clone()),
+            _ => continue,
+        };
+        q[c] = &q[c] + &value;
+    }
+    q
+}
+
+/// Whether an action is a joint load (so that Kane's method can take it as a generalized force).
+pub fn is_joint_load(model: &Model, action: &Action) -> bool {
+    matches!(action.source, Source::Load(i) if matches!(
+        model.problem.loads[i].kind,
+        LoadKind::JointSpring { .. } | LoadKind::JointDamper { .. } | LoadKind::JointActuator { .. }
+    ))
+}
+
+/// The offset of nothing: a force at the origin.
+pub fn origin() -> Components {
+    zero3()
+}

@@ -1,0 +1,273 @@
+//! The Motion Law planner (step 3): enumerate candidate rows (free body, sum of forces or of
+//! moments about a point, direction), find each one's unknowns, and choose a square,
+//! nonsingular set with no unwanted reaction and the fewest terms. Every rejected candidate
+//! keeps its reason, so that the worked solution can show why a choice was made.
+
+use crate::equations::rows::{resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum};
+use crate::mechanics::{Model, Vector};
+use crate::plan::forces::Action;
+use crate::problem::{BodyId, JointKind};
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::Symbol;
+
+/// Above this many bodies, connected groups other than subtrees are not tried.
+const MAX_BODIES_FOR_GROUPS: usize = 4;
+
+/// A candidate the planner did not use, and why.
+#[derive(Clone, Debug)]
+pub struct Rejected {
+    /// The candidate row.
+    pub equation: Equation,
+    /// Why it was not chosen.
+    pub reason: String,
+}
+
+/// The chosen rows and the rejected candidates.
+#[derive(Clone, Debug)]
+pub struct Choice {
+    /// Chosen rows, in the order of the candidates.
+    pub rows: Vec<Equation>,
+    /// Rejected candidates with their reasons.
+    pub rejected: Vec<Rejected>,
+}
+
+/// The free bodies worth trying: every outboard subtree, every single body, and (while the
+/// system is small) every connected group of bodies.
+pub fn free_bodies(model: &Model) -> Vec<Vec<BodyId>> {
+    let mut out: Vec<Vec<BodyId>> = Vec::new();
+    let mut push = |mut set: Vec<BodyId>| {
+        set.sort();
+        if !set.is_empty() && !out.contains(&set) {
+            out.push(set);
+        }
+    };
+    for &body in &model.order {
+        if let Some(j) = model.problem.joint_of(body) {
+            push(model.subtree(j));
+        }
+    }
+    for &body in &model.order {
+        push(vec![body]);
+    }
+    let n = model.order.len();
+    if n <= MAX_BODIES_FOR_GROUPS {
+        for mask in 1u32..(1 << n) {
+            let set: Vec<BodyId> = (0..n).filter(|i| mask & (1 << i) != 0).map(|i| model.order[i]).collect();
+            if is_connected(model, &set) {
+                push(set);
+            }
+        }
+    }
+    out
+}
+
+fn is_connected(model: &Model, set: &[BodyId]) -> bool {
+    let mut reached = vec![set[0]];
+    let mut grew = true;
+    while grew {
+        grew = false;
+        for joint in &model.problem.joints {
+            let (p, c) = (joint.parent, joint.child);
+            for (a, b) in [(p, c), (c, p)] {
+                if reached.contains(&a) && set.contains(&b) && !reached.contains(&b) {
+                    reached.push(b);
+                    grew = true;
+                }
+            }
+        }
+    }
+    reached.len() == set.len()
+}
+
+/// The joints with exactly one side inside the free body.
+pub fn boundary_joints(model: &Model, free_body: &[BodyId]) -> Vec<usize> {
+    let problem = model.problem;
+    (0..problem.joints.len())
+        .filter(|&j| free_body.contains(&problem.joints[j].parent) != free_body.contains(&problem.joints[j].child))
+        .collect()
+}
+
+fn push_direction(out: &mut Vec<Direction>, d: Direction) {
+    if !out.iter().any(|e| e.vector == d.vector) {
+        out.push(d);
+    }
+}
+
+/// Directions for force rows and for moment rows: the joint axes in play and the unit
+/// vectors of the frames involved.
+fn directions(model: &Model, free_body: &[BodyId], boundary: &[usize]) -> (Vec<Direction>, Vec<Direction>) {
+    let problem = model.problem;
+    let planar = model.is_planar();
+    let (mut forces, mut moments) = (Vec::new(), Vec::new());
+    for &j in boundary {
+        let joint = &problem.joints[j];
+        let motion = &model.joints[j].motion;
+        if let Some(axis) = &motion.written_axis {
+            let d = Direction {
+                name: format!("axis of {}", joint.name),
+                latex: format!("\\hat{{\\mathbf{{e}}}}_{{{}}}", crate::symbolic::print::latex_name(&joint.name)),
+                vector: Vector::new(joint.parent, axis.clone()),
+            };
+            if matches!(joint.kind, JointKind::Prismatic | JointKind::Cylindrical) {
+                push_direction(&mut forces, d.clone());
+            }
+            if matches!(joint.kind, JointKind::Revolute | JointKind::Cylindrical) && !planar {
+                push_direction(&mut moments, d);
+            }
+        }
+        if joint.kind == JointKind::Universal {
+            push_direction(&mut moments, unit_direction(model, joint.parent, joint.sequence[0] as usize));
+            push_direction(&mut moments, unit_direction(model, joint.child, joint.sequence[1] as usize));
+        }
+    }
+    let mut frames = vec![BodyId::GROUND];
+    for &j in boundary {
+        frames.push(problem.joints[j].parent);
+        frames.push(problem.joints[j].child);
+    }
+    frames.sort();
+    frames.dedup();
+    let _ = free_body;
+    for frame in frames {
+        let axes: &[usize] = if planar { &[0, 1] } else { &[0, 1, 2] };
+        for &axis in axes {
+            push_direction(&mut forces, unit_direction(model, frame, axis));
+        }
+        if !planar {
+            for axis in 0..3 {
+                push_direction(&mut moments, unit_direction(model, frame, axis));
+            }
+        }
+    }
+    if planar {
+        push_direction(&mut moments, unit_direction(model, BodyId::GROUND, 2));
+    }
+    (forces, moments)
+}
+
+/// Every candidate row of the Motion Law, in a fixed order.
+pub fn candidates(model: &Model, actions: &[Action], inertia: &Inertia, unknowns: &[Symbol]) -> Vec<Equation> {
+    let problem = model.problem;
+    let mut out = Vec::new();
+    for free_body in free_bodies(model) {
+        let boundary = boundary_joints(model, &free_body);
+        let (force_directions, moment_directions) = directions(model, &free_body, &boundary);
+        for direction in force_directions {
+            let groups = resultant(model, actions, inertia, &free_body, None, &direction.vector);
+            out.push(finish(free_body.clone(), Sum::Force, direction, groups, unknowns));
+        }
+        let mut points: Vec<(String, Vector)> = boundary
+            .iter()
+            .map(|&j| (problem.joints[j].name.clone(), model.joints[j].point.position.clone()))
+            .collect();
+        for &body in &free_body {
+            points.push((format!("{}*", problem.body_name(body)), model.bodies[body.0].center.position.clone()));
+        }
+        for (point, position) in points {
+            for direction in &moment_directions {
+                let groups = resultant(model, actions, inertia, &free_body, Some(&position), &direction.vector);
+                let sum = Sum::Moment { point: point.clone(), position: position.clone() };
+                out.push(finish(free_body.clone(), sum, direction.clone(), groups, unknowns));
+            }
+        }
+    }
+    out
+}
+
+fn finish(free_body: Vec<BodyId>, sum: Sum, direction: Direction, groups: crate::equations::rows::Groups, unknowns: &[Symbol]) -> Equation {
+    let expression = groups.total();
+    Equation { free_body, sum, direction: Some(direction), unknowns: unknowns_in(&expression, unknowns), groups, expression }
+}
+
+/// A generic state (seeded, so the choice is the same every run) for numeric rank tests.
+pub fn generic_values(model: &Model) -> Values {
+    let mut values = model.values.clone();
+    let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut next = || {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 1.4 - 0.7
+    };
+    for i in 0..model.problem.coordinates.len() {
+        for order in 0..2 {
+            values.set(model.problem.coordinate_symbol(i, order), 0.3 + next());
+        }
+    }
+    values.set(Symbol::Time, 0.37);
+    values
+}
+
+/// The coefficients of the unknowns in a row, at a generic state.
+pub fn coefficient_row(equation: &Equation, unknowns: &[Symbol], values: &Values) -> Vec<f64> {
+    match linear_split(&equation.expression, unknowns) {
+        Ok((coefficients, _)) => coefficients.iter().map(|c| eval(c, values)).collect(),
+        Err(_) => vec![f64::NAN; unknowns.len()],
+    }
+}
+
+/// Incremental Gram–Schmidt: whether `row` adds a new direction to `basis` (and adds it).
+pub fn adds_rank(basis: &mut Vec<Vec<f64>>, row: &[f64]) -> bool {
+    let norm = row.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if !(norm > 0.0) || !norm.is_finite() {
+        return false;
+    }
+    let mut residual: Vec<f64> = row.iter().map(|x| x / norm).collect();
+    for _ in 0..2 {
+        for b in basis.iter() {
+            let projection: f64 = residual.iter().zip(b).map(|(r, b)| r * b).sum();
+            residual.iter_mut().zip(b).for_each(|(r, b)| *r -= projection * b);
+        }
+    }
+    let left = residual.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if left < 1e-8 {
+        return false;
+    }
+    basis.push(residual.iter().map(|x| x / left).collect());
+    true
+}
+
+/// Chooses the rows: wanted unknowns only, fewest terms first, each adding rank.
+pub fn choose(model: &Model, candidates: Vec<Equation>, wanted: &[Symbol]) -> Choice {
+    let values = generic_values(model);
+    let mut indexed: Vec<(usize, Equation)> = candidates.into_iter().enumerate().collect();
+    indexed.sort_by_key(|(i, e)| (e.expression.operation_count(), *i));
+    let mut basis: Vec<Vec<f64>> = Vec::new();
+    let mut chosen: Vec<(usize, Equation)> = Vec::new();
+    let mut rejected: Vec<(usize, Rejected)> = Vec::new();
+    for (index, equation) in indexed {
+        let unwanted: Vec<&Symbol> = equation.unknowns.iter().filter(|u| !wanted.contains(u)).collect();
+        let reason = if !unwanted.is_empty() {
+            Some(unwanted_reason(&unwanted))
+        } else if equation.unknowns.is_empty() {
+            Some("contains no unknown".to_string())
+        } else if basis.len() == wanted.len() {
+            Some("not needed: the rows chosen already determine every unknown".to_string())
+        } else if !adds_rank(&mut basis, &coefficient_row(&equation, wanted, &values)) {
+            Some("adds nothing new: it follows from the rows already chosen".to_string())
+        } else {
+            None
+        };
+        match reason {
+            Some(reason) => rejected.push((index, Rejected { equation, reason })),
+            None => chosen.push((index, equation)),
+        }
+    }
+    chosen.sort_by_key(|(i, _)| *i);
+    rejected.sort_by_key(|(i, _)| *i);
+    Choice { rows: chosen.into_iter().map(|(_, e)| e).collect(), rejected: rejected.into_iter().map(|(_, r)| r).collect() }
+}
+
+fn unwanted_reason(unwanted: &[&Symbol]) -> String {
+    let mut joints: Vec<String> = Vec::new();
+    for u in unwanted {
+        if let Symbol::Unknown(name) = u {
+            let joint = name.split('.').next().unwrap_or(name).to_string();
+            if !joints.contains(&joint) {
+                joints.push(joint);
+            }
+        }
+    }
+    let list: Vec<String> = unwanted.iter().map(|u| u.to_string()).collect();
+    let place = if joints.len() == 1 { format!("the reaction at {}", joints[0]) } else { format!("the reactions at {}", joints.join(", ")) };
+    format!("brings in {place} ({})", list.join(", "))
+}
