@@ -273,10 +273,12 @@ class State:
         return self.qdd
 
     def subtree(self, root):
-        bodies = {root}
+        """The bodies outboard of and including `root`, in tree order (a list, so sums
+        are taken in the same order on every run)."""
+        bodies = [root]
         for j in self.prob.order:
             if j.parent in bodies:
-                bodies.add(j.child)
+                bodies.append(j.child)
         return bodies
 
     def reactions(self, joint):
