@@ -1,18 +1,130 @@
-//! `mbd-tutor solve`.
+//! `mbd-tutor solve`: the q'' and the requested reactions at one state.
 
+use crate::cli::{parse_assignments, Common};
+use crate::numeric::evaluate::{Compiled, StateSolution};
+use crate::numeric::format::fixed;
 use crate::Error;
+use clap::ValueEnum;
+use serde_json::{json, Map, Value};
+
+/// How `solve` prints its result.
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Format {
+    /// A readable table.
+    #[default]
+    Text,
+    /// The JSON object of the command-line contract.
+    Json,
+}
 
 /// Arguments of `mbd-tutor solve`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]
-    pub common: crate::cli::Common,
+    pub common: Common,
+    /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
+    #[arg(long, value_name = "NAME=VALUE,...")]
+    pub state: Vec<String>,
+    /// The time t.
+    #[arg(long, default_value_t = 0.0)]
+    pub time: f64,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: Format,
+}
+
+/// A problem's state at the start, with `--state` overrides applied.
+///
+/// # Errors
+/// A usage error for a name that is not a coordinate or a rate.
+pub fn initial_state(problem: &crate::problem::Problem, assignments: &[String]) -> Result<(Vec<f64>, Vec<f64>), Error> {
+    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    for (name, value) in parse_assignments(assignments)? {
+        let (base, is_rate) = match name.strip_suffix('\'') {
+            Some(base) => (base, true),
+            None => (name.as_str(), false),
+        };
+        let Some(index) = problem.coordinates.iter().position(|c| c.name == base) else {
+            let names: Vec<&str> = problem.coordinates.iter().map(|c| c.name.as_str()).collect();
+            let hint = crate::symbolic::hint::closest(base, names.iter().copied())
+                .map(|c| format!(" (did you mean `{c}`?)"))
+                .unwrap_or_else(|| format!(" (the coordinates are {})", names.join(", ")));
+            return Err(Error::Usage(format!("--state: `{name}` is not a coordinate or a rate{hint}")));
+        };
+        if is_rate {
+            rates[index] = value;
+        } else {
+            q[index] = value;
+        }
+    }
+    Ok((q, rates))
 }
 
 /// Runs `mbd-tutor solve`.
 ///
 /// # Errors
-/// Not written yet.
-pub fn run(_args: Args) -> Result<(), Error> {
-    Err(Error::Usage("`solve` is not available yet".into()))
+/// An invalid problem, an unknown name in `--set` or `--state`, or a singular system.
+pub fn run(args: Args) -> Result<(), Error> {
+    if !args.time.is_finite() {
+        return Err(Error::Usage("--time must be finite".into()));
+    }
+    let problem = super::load_with_overrides(&args.common)?;
+    let (q, rates) = initial_state(&problem, &args.state)?;
+    let method = super::method(args.common.method);
+    let derivation = crate::equations::derive(&problem, method)?;
+    let compiled = Compiled::new(&derivation);
+    let solution = compiled.solve(args.time, &q, &rates)?;
+    let text = match args.format {
+        Format::Json => {
+            let value = to_json(method.name(), args.time, &compiled.coordinates, &q, &rates, &solution);
+            let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
+            text.push('\n');
+            text
+        }
+        Format::Text => to_text(&problem.title, method.title(), args.time, &compiled.coordinates, &q, &rates, &solution),
+    };
+    crate::output::write_output(args.common.output.as_deref(), text.as_bytes())
+}
+
+/// The JSON object of the command-line contract.
+pub fn to_json(method: &str, time: f64, names: &[String], q: &[f64], rates: &[f64], solution: &StateSolution) -> Value {
+    let mut state = Map::new();
+    for (name, value) in names.iter().zip(q) {
+        state.insert(name.clone(), json!(value));
+    }
+    for (name, value) in names.iter().zip(rates) {
+        state.insert(format!("{name}'"), json!(value));
+    }
+    let mut accelerations = Map::new();
+    for (name, value) in names.iter().zip(&solution.accelerations) {
+        accelerations.insert(name.clone(), json!(value));
+    }
+    let mut reactions = Map::new();
+    for (joint, force, moment) in &solution.reactions {
+        reactions.insert(joint.clone(), json!({ "force": force, "moment": moment }));
+    }
+    json!({
+        "method": method,
+        "time": time,
+        "state": state,
+        "accelerations": accelerations,
+        "reactions": reactions,
+    })
+}
+
+fn to_text(title: &str, method: &str, time: f64, names: &[String], q: &[f64], rates: &[f64], s: &StateSolution) -> String {
+    let mut out = format!("{title}\nby {method}, at t = {}\n\n", fixed(time));
+    out.push_str("coordinate        value         rate  second derivative\n");
+    for (i, name) in names.iter().enumerate() {
+        out.push_str(&format!("{name:<10} {:>12} {:>12} {:>18}\n", fixed(q[i]), fixed(rates[i]), fixed(s.accelerations[i])));
+    }
+    if !s.reactions.is_empty() {
+        out.push_str("\nreaction (parent on child, parent's unit vectors; moment about the joint point)\n");
+        for (joint, f, m) in &s.reactions {
+            let v = |x: &[f64; 3]| format!("[{}, {}, {}]", fixed(x[0]), fixed(x[1]), fixed(x[2]));
+            out.push_str(&format!("{joint}: force {}  moment {}\n", v(f), v(m)));
+        }
+    }
+    out
 }

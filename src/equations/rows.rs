@@ -118,6 +118,19 @@ pub fn resultant(
     about: Option<&Vector>,
     direction: &Vector,
 ) -> Groups {
+    let (contact, distance) = action_terms(model, actions, free_body, about, direction);
+    let (inertia_force, inertia_torque) = inertia_terms(model, inertia, free_body, about, direction);
+    Groups { contact, distance, inertia_force, inertia_torque }
+}
+
+/// The contact and distance terms: the external actions on the free body.
+pub fn action_terms(
+    model: &Model,
+    actions: &[Action],
+    free_body: &[BodyId],
+    about: Option<&Vector>,
+    direction: &Vector,
+) -> (Expr, Expr) {
     let frames = &model.frames;
     let (mut contact, mut distance) = (Vec::new(), Vec::new());
     for action in actions.iter().filter(|a| is_external(a, free_body)) {
@@ -135,6 +148,18 @@ pub fn resultant(
             Category::Distance => distance.push(term),
         }
     }
+    (add(contact), add(distance))
+}
+
+/// The inertia-force and inertia-torque terms of the bodies of the free body.
+pub fn inertia_terms(
+    model: &Model,
+    inertia: &Inertia,
+    free_body: &[BodyId],
+    about: Option<&Vector>,
+    direction: &Vector,
+) -> (Expr, Expr) {
+    let frames = &model.frames;
     let (mut inertia_force, mut inertia_torque) = (Vec::new(), Vec::new());
     for &body in free_body {
         let f = &inertia.force[body.0];
@@ -147,7 +172,7 @@ pub fn resultant(
             }
         }
     }
-    Groups { contact: add(contact), distance: add(distance), inertia_force: add(inertia_force), inertia_torque: add(inertia_torque) }
+    (add(inertia_force), add(inertia_torque))
 }
 
 /// The unknowns among `all` that appear in `e`, in the order of `all`.

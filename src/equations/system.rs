@@ -107,8 +107,9 @@ pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Mecha
         Method::NewtonEuler => (super::newton_euler::equations(&model, &actions, &inertia, &every_unknown), vec![]),
         Method::Kane => (super::kane::equations(&model, &actions, &inertia, &every_unknown, &reaction_joints), vec![]),
         Method::MotionLaw => {
-            let candidates = planner::candidates(&model, &actions, &inertia, &every_unknown);
-            let choice = planner::choose(&model, candidates, &unknowns);
+            let reactions = reaction_unknowns(&model, &all_joints);
+            let candidates = planner::candidates(&model, &actions, &reactions);
+            let choice = planner::choose(&model, &actions, &inertia, candidates, &unknowns);
             (choice.rows, choice.rejected)
         }
     };

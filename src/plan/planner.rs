@@ -3,9 +3,9 @@
 //! nonsingular set with no unwanted reaction and the fewest terms. Every rejected candidate
 //! keeps its reason, so that the worked solution can show why a choice was made.
 
-use crate::equations::rows::{resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum};
+use crate::equations::rows::{action_terms, resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum};
 use crate::mechanics::{Model, Vector};
-use crate::plan::forces::Action;
+use crate::plan::forces::{Action, Source};
 use crate::problem::{BodyId, JointKind};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
@@ -14,11 +14,24 @@ use crate::symbolic::Symbol;
 /// Above this many bodies, connected groups other than subtrees are not tried.
 const MAX_BODIES_FOR_GROUPS: usize = 4;
 
+/// A candidate row: free body, sum and direction, before its terms are written out.
+#[derive(Clone, Debug)]
+pub struct Candidate {
+    /// The bodies of the free body.
+    pub free_body: Vec<BodyId>,
+    /// Forces, or moments about a point.
+    pub sum: Sum,
+    /// The direction of the dot product.
+    pub direction: Direction,
+    /// The reaction components it brings in.
+    pub reactions: Vec<Symbol>,
+}
+
 /// A candidate the planner did not use, and why.
 #[derive(Clone, Debug)]
 pub struct Rejected {
     /// The candidate row.
-    pub equation: Equation,
+    pub candidate: Candidate,
     /// Why it was not chosen.
     pub reason: String,
 }
@@ -146,17 +159,17 @@ fn directions(model: &Model, free_body: &[BodyId], boundary: &[usize]) -> (Vec<D
     (forces, moments)
 }
 
-/// Every candidate row of the Motion Law, in a fixed order.
-pub fn candidates(model: &Model, actions: &[Action], inertia: &Inertia, unknowns: &[Symbol]) -> Vec<Equation> {
+/// Every candidate row of the Motion Law, in a fixed order, with the reactions each brings
+/// in. Only the reaction terms are written out here, which is cheap; the full row is written
+/// only for candidates that survive.
+pub fn candidates(model: &Model, actions: &[Action], reactions: &[Symbol]) -> Vec<Candidate> {
     let problem = model.problem;
+    let reaction_actions: Vec<Action> =
+        actions.iter().filter(|a| matches!(a.source, Source::Reaction(_))).cloned().collect();
     let mut out = Vec::new();
     for free_body in free_bodies(model) {
         let boundary = boundary_joints(model, &free_body);
         let (force_directions, moment_directions) = directions(model, &free_body, &boundary);
-        for direction in force_directions {
-            let groups = resultant(model, actions, inertia, &free_body, None, &direction.vector);
-            out.push(finish(free_body.clone(), Sum::Force, direction, groups, unknowns));
-        }
         let mut points: Vec<(String, Vector)> = boundary
             .iter()
             .map(|&j| (problem.joints[j].name.clone(), model.joints[j].point.position.clone()))
@@ -164,20 +177,41 @@ pub fn candidates(model: &Model, actions: &[Action], inertia: &Inertia, unknowns
         for &body in &free_body {
             points.push((format!("{}*", problem.body_name(body)), model.bodies[body.0].center.position.clone()));
         }
+        let mut rows: Vec<(Sum, Direction)> = force_directions.into_iter().map(|d| (Sum::Force, d)).collect();
         for (point, position) in points {
             for direction in &moment_directions {
-                let groups = resultant(model, actions, inertia, &free_body, Some(&position), &direction.vector);
-                let sum = Sum::Moment { point: point.clone(), position: position.clone() };
-                out.push(finish(free_body.clone(), sum, direction.clone(), groups, unknowns));
+                rows.push((Sum::Moment { point: point.clone(), position: position.clone() }, direction.clone()));
             }
+        }
+        for (sum, direction) in rows {
+            let about = match &sum {
+                Sum::Moment { position, .. } => Some(position),
+                _ => None,
+            };
+            let (terms, _) = action_terms(model, &reaction_actions, &free_body, about, &direction.vector);
+            let reactions = unknowns_in(&terms, reactions);
+            out.push(Candidate { free_body: free_body.clone(), sum, direction, reactions });
         }
     }
     out
 }
 
-fn finish(free_body: Vec<BodyId>, sum: Sum, direction: Direction, groups: crate::equations::rows::Groups, unknowns: &[Symbol]) -> Equation {
+/// Writes out the whole row of a candidate.
+pub fn write_out(model: &Model, actions: &[Action], inertia: &Inertia, candidate: &Candidate, unknowns: &[Symbol]) -> Equation {
+    let about = match &candidate.sum {
+        Sum::Moment { position, .. } => Some(position),
+        _ => None,
+    };
+    let groups = resultant(model, actions, inertia, &candidate.free_body, about, &candidate.direction.vector);
     let expression = groups.total();
-    Equation { free_body, sum, direction: Some(direction), unknowns: unknowns_in(&expression, unknowns), groups, expression }
+    Equation {
+        free_body: candidate.free_body.clone(),
+        sum: candidate.sum.clone(),
+        direction: Some(candidate.direction.clone()),
+        unknowns: unknowns_in(&expression, unknowns),
+        groups,
+        expression,
+    }
 }
 
 /// A generic state (seeded, so the choice is the same every run) for numeric rank tests.
@@ -227,18 +261,30 @@ pub fn adds_rank(basis: &mut Vec<Vec<f64>>, row: &[f64]) -> bool {
 }
 
 /// Chooses the rows: wanted unknowns only, fewest terms first, each adding rank.
-pub fn choose(model: &Model, candidates: Vec<Equation>, wanted: &[Symbol]) -> Choice {
+pub fn choose(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    candidates: Vec<Candidate>,
+    wanted: &[Symbol],
+) -> Choice {
     let values = generic_values(model);
-    let mut indexed: Vec<(usize, Equation)> = candidates.into_iter().enumerate().collect();
-    indexed.sort_by_key(|(i, e)| (e.expression.operation_count(), *i));
+    let mut written: Vec<(usize, Equation)> = Vec::new();
+    let mut rejected: Vec<(usize, Rejected)> = Vec::new();
+    for (index, candidate) in candidates.into_iter().enumerate() {
+        let unwanted: Vec<&Symbol> = candidate.reactions.iter().filter(|u| !wanted.contains(u)).collect();
+        if unwanted.is_empty() {
+            written.push((index, write_out(model, actions, inertia, &candidate, wanted)));
+        } else {
+            let reason = unwanted_reason(&unwanted);
+            rejected.push((index, Rejected { candidate, reason }));
+        }
+    }
+    written.sort_by_key(|(i, e)| (e.expression.operation_count(), *i));
     let mut basis: Vec<Vec<f64>> = Vec::new();
     let mut chosen: Vec<(usize, Equation)> = Vec::new();
-    let mut rejected: Vec<(usize, Rejected)> = Vec::new();
-    for (index, equation) in indexed {
-        let unwanted: Vec<&Symbol> = equation.unknowns.iter().filter(|u| !wanted.contains(u)).collect();
-        let reason = if !unwanted.is_empty() {
-            Some(unwanted_reason(&unwanted))
-        } else if equation.unknowns.is_empty() {
+    for (index, equation) in written {
+        let reason = if equation.unknowns.is_empty() {
             Some("contains no unknown".to_string())
         } else if basis.len() == wanted.len() {
             Some("not needed: the rows chosen already determine every unknown".to_string())
@@ -248,7 +294,15 @@ pub fn choose(model: &Model, candidates: Vec<Equation>, wanted: &[Symbol]) -> Ch
             None
         };
         match reason {
-            Some(reason) => rejected.push((index, Rejected { equation, reason })),
+            Some(reason) => {
+                let candidate = Candidate {
+                    free_body: equation.free_body.clone(),
+                    sum: equation.sum.clone(),
+                    direction: equation.direction.clone().unwrap_or_else(|| unit_direction(model, BodyId::GROUND, 0)),
+                    reactions: Vec::new(),
+                };
+                rejected.push((index, Rejected { candidate, reason }));
+            }
             None => chosen.push((index, equation)),
         }
     }

@@ -1,0 +1,98 @@
+//! The speed benchmark: planar chains of n = 1 … 20 rods joined by revolute joints, with
+//! joint (relative) angles as coordinates. For each n: the time to derive and plan, the
+//! operation count of A and b, and the time of one evaluate-and-solve.
+//!
+//! Run: `cargo bench --bench chain` (add `-- 10` for one size).
+
+use mbd_tutor::equations::{derive, Method};
+use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::problem::{
+    Body, BodyId, Constant, Coordinate, CoordinateKind, Dimension, Inertia, Joint, JointKind, Problem,
+    SimulateSettings, VectorExpr,
+};
+use mbd_tutor::symbolic::Expr;
+use std::time::Instant;
+
+/// A planar chain of `n` uniform rods hanging from N, each joined to the previous by a pin.
+pub fn planar_chain(n: usize) -> Problem {
+    let constant = |name: &str, value: f64| Constant { name: name.into(), value, unit: None, description: None };
+    let down = |scale: Expr, frame: usize| VectorExpr { terms: vec![(BodyId(frame), 1, -scale)] };
+    let (m, l) = (Expr::constant("m"), Expr::constant("L"));
+    let bodies = (1..=n)
+        .map(|i| Body {
+            name: format!("B{i}"),
+            mass: m.clone(),
+            center: down(&l / &Expr::int(2), i),
+            inertia: Inertia::Planar(&(&m * &(&l * &l)) / &Expr::int(12)),
+            description: None,
+            path: format!("bodies.B{i}"),
+        })
+        .collect();
+    let joints = (1..=n)
+        .map(|i| Joint {
+            name: format!("J{i}"),
+            kind: JointKind::Revolute,
+            parent: BodyId(i - 1),
+            child: BodyId(i),
+            coordinates: vec![i - 1],
+            axis: Some(VectorExpr { terms: vec![(BodyId(i - 1), 2, Expr::one())] }),
+            sequence: vec![],
+            at: if i == 1 { VectorExpr::default() } else { down(l.clone(), i - 1) },
+            child_at: VectorExpr::default(),
+            path: format!("joints[{}]", i - 1),
+        })
+        .collect();
+    let coordinates = (1..=n)
+        .map(|i| Coordinate {
+            name: format!("q{i}"),
+            initial: 0.1 * i as f64,
+            rate: 0.0,
+            unit: None,
+            description: None,
+            joint: i - 1,
+            index_in_joint: 0,
+            kind: CoordinateKind::Angle,
+        })
+        .collect();
+    Problem {
+        title: format!("{n}-link chain"),
+        statement: None,
+        dimension: Dimension::Two,
+        constants: vec![constant("m", 1.0), constant("L", 0.5), constant("g", 9.81)],
+        coordinates,
+        gravity: Some(VectorExpr { terms: vec![(BodyId::GROUND, 1, -Expr::constant("g"))] }),
+        bodies,
+        joints,
+        points: vec![],
+        loads: vec![],
+        find_reactions: vec![],
+        simulate: SimulateSettings::default(),
+    }
+}
+
+fn main() {
+    let sizes: Vec<usize> = match std::env::args().nth(1).and_then(|a| a.parse().ok()) {
+        Some(n) => vec![n],
+        None => (1..=20).collect(),
+    };
+    println!("| n | method | derive and plan (ms) | operations in A and b | evaluate and solve (µs) |");
+    println!("|---|---|---|---|---|");
+    for n in sizes {
+        let problem = planar_chain(n);
+        for method in [Method::Kane, Method::MotionLaw] {
+            let start = Instant::now();
+            let derivation = derive(&problem, method).expect("the chain derives");
+            let compiled = Compiled::new(&derivation);
+            let derive_ms = start.elapsed().as_secs_f64() * 1e3;
+            let q: Vec<f64> = (0..n).map(|i| 0.1 * i as f64).collect();
+            let rates = vec![0.3; n];
+            let repeats = 2000;
+            let start = Instant::now();
+            for _ in 0..repeats {
+                std::hint::black_box(compiled.solve(0.0, &q, &rates).expect("solves"));
+            }
+            let solve_us = start.elapsed().as_secs_f64() * 1e6 / repeats as f64;
+            println!("| {n} | {} | {derive_ms:.1} | {} | {solve_us:.2} |", method.name(), compiled.operation_count());
+        }
+    }
+}

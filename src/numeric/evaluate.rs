@@ -1,0 +1,230 @@
+//! Evaluating a derivation at a state: the compiled program for `A`, `b`, the reaction
+//! directions and the energies, then the linear solve (LU with partial pivoting).
+
+use super::system::{describe_state, Evaluation, System};
+use super::SolveError;
+use crate::equations::{energy, Derivation, Method};
+use crate::plan::forces::reaction_symbol;
+use crate::problem::{LoadKind, Problem};
+use crate::symbolic::compile::Program;
+use crate::symbolic::{Expr, Symbol};
+use nalgebra::{DMatrix, DVector};
+
+/// Where one reaction component sits: its unknown's index and its direction's outputs.
+#[derive(Clone, Debug)]
+struct ReactionComponentSlot {
+    is_force: bool,
+    unknown: Option<usize>,
+    direction_output: usize,
+}
+
+/// The reaction of one requested joint.
+#[derive(Clone, Debug)]
+struct ReactionSlot {
+    joint: String,
+    components: Vec<ReactionComponentSlot>,
+}
+
+/// A derivation compiled for fast, repeated evaluation.
+#[derive(Clone, Debug)]
+pub struct Compiled {
+    /// The method the equations came from.
+    pub method: Method,
+    /// Coordinate names in contract order.
+    pub coordinates: Vec<String>,
+    constants: Vec<f64>,
+    unknowns: usize,
+    program: Program,
+    reactions: Vec<ReactionSlot>,
+    energy_output: usize,
+    conservative: bool,
+    dissipative_only: bool,
+}
+
+/// The solution at one state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StateSolution {
+    /// The q'', in coordinate order.
+    pub accelerations: Vec<f64>,
+    /// Each requested joint: name, force and moment in the parent's unit vectors.
+    pub reactions: Vec<(String, [f64; 3], [f64; 3])>,
+    /// Kinetic energy.
+    pub kinetic: f64,
+    /// Potential energy (gravity, springs, joint springs).
+    pub potential: f64,
+}
+
+/// The input symbols of the compiled program: constants, coordinates, rates, time.
+pub fn input_symbols(problem: &Problem) -> Vec<Symbol> {
+    let mut inputs: Vec<Symbol> = problem.constants.iter().map(|c| Symbol::Const(c.name.as_str().into())).collect();
+    for order in 0..2 {
+        inputs.extend((0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, order)));
+    }
+    inputs.push(Symbol::Time);
+    inputs
+}
+
+impl Compiled {
+    /// Compiles the system, the requested reactions and the energies of a derivation.
+    pub fn new(derivation: &Derivation) -> Compiled {
+        let model = &derivation.model;
+        let problem = model.problem;
+        let system = &derivation.system;
+        let n = system.unknowns.len();
+        let mut outputs: Vec<Expr> = Vec::with_capacity(n * n + n + 8);
+        for row in &system.a {
+            outputs.extend(row.iter().cloned());
+        }
+        outputs.extend(system.b.iter().cloned());
+        let mut reactions = Vec::new();
+        for &j in &problem.find_reactions {
+            let joint = &problem.joints[j];
+            let mut components = Vec::new();
+            for component in &model.joints[j].reactions {
+                let symbol = reaction_symbol(&joint.name, &component.label);
+                let direction = component.direction.components_in(joint.parent, &model.frames);
+                components.push(ReactionComponentSlot {
+                    is_force: component.label.starts_with('F'),
+                    unknown: system.unknowns.iter().position(|u| *u == symbol),
+                    direction_output: outputs.len(),
+                });
+                outputs.extend(direction);
+            }
+            reactions.push(ReactionSlot { joint: joint.name.clone(), components });
+        }
+        let energy_output = outputs.len();
+        outputs.push(energy::kinetic(model));
+        outputs.push(energy::potential(model));
+        let program = Program::compile(&input_symbols(problem), &outputs);
+        Compiled {
+            method: derivation.method,
+            coordinates: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
+            constants: problem.constants.iter().map(|c| c.value).collect(),
+            unknowns: n,
+            program,
+            reactions,
+            energy_output,
+            conservative: problem.loads.iter().all(|l| is_conservative(&l.kind)),
+            dissipative_only: problem.loads.iter().all(|l| is_conservative(&l.kind) || is_dissipative(&l.kind)),
+        }
+    }
+
+    /// The number of operations to evaluate `A` and `b` (and the extras) once.
+    pub fn operation_count(&self) -> usize {
+        self.program.operation_count()
+    }
+
+    /// Solves for the q'' and the requested reactions at time `t`, coordinates `q`, rates `rates`.
+    ///
+    /// # Errors
+    /// A singular system, naming the state (and the coordinate that moves no mass, when one
+    /// does not), or a value that is not finite.
+    pub fn solve(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<StateSolution, SolveError> {
+        let mut inputs = self.constants.clone();
+        inputs.extend_from_slice(q);
+        inputs.extend_from_slice(rates);
+        inputs.push(t);
+        let values = self.program.eval(&inputs);
+        let n = self.unknowns;
+        let a = DMatrix::from_row_slice(n, n, &values[..n * n]);
+        let b = DVector::from_column_slice(&values[n * n..n * n + n]);
+        let state = || describe_state(t, &self.coordinates, q, rates);
+        if a.iter().chain(b.iter()).any(|x| !x.is_finite()) {
+            return Err(SolveError::NotFinite { state: state(), what: "a coefficient of the equations".into() });
+        }
+        let x = solve_linear(&a, &b).ok_or_else(|| SolveError::SingularSystem {
+            state: state(),
+            detail: self.singularity_detail(&a),
+        })?;
+        let accelerations: Vec<f64> = x.iter().take(self.coordinates.len()).copied().collect();
+        let mut reactions = Vec::new();
+        for slot in &self.reactions {
+            let (mut force, mut moment) = ([0.0; 3], [0.0; 3]);
+            for c in &slot.components {
+                let magnitude = c.unknown.map_or(0.0, |i| x[i]);
+                let target = if c.is_force { &mut force } else { &mut moment };
+                for (k, value) in target.iter_mut().enumerate() {
+                    *value += magnitude * values[c.direction_output + k];
+                }
+            }
+            reactions.push((slot.joint.clone(), force, moment));
+        }
+        let solution = StateSolution {
+            accelerations,
+            reactions,
+            kinetic: values[self.energy_output],
+            potential: values[self.energy_output + 1],
+        };
+        let finite = solution.accelerations.iter().all(|x| x.is_finite())
+            && solution.reactions.iter().all(|(_, f, m)| f.iter().chain(m).all(|x| x.is_finite()));
+        if !finite {
+            return Err(SolveError::NotFinite { state: state(), what: "the solution".into() });
+        }
+        Ok(solution)
+    }
+
+    fn singularity_detail(&self, a: &DMatrix<f64>) -> String {
+        let scale = a.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
+        for (i, name) in self.coordinates.iter().enumerate() {
+            if a.column(i).iter().all(|x| x.abs() <= 1e-12 * scale) {
+                return format!("the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined");
+            }
+        }
+        "the equations do not determine the unknowns here (a singular configuration, such as gimbal lock)".into()
+    }
+}
+
+/// Solves `a x = b` by LU with partial pivoting; `None` when `a` is singular to working precision.
+pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+    let lu = a.clone().lu();
+    let u = lu.u();
+    let diagonal: Vec<f64> = u.diagonal().iter().map(|x| x.abs()).collect();
+    let largest = diagonal.iter().fold(0.0f64, |m, x| m.max(*x));
+    let smallest = diagonal.iter().fold(f64::INFINITY, |m, x| m.min(*x));
+    if !(largest > 0.0) || smallest <= 1e-13 * largest * (a.nrows() as f64) {
+        return None;
+    }
+    lu.solve(b)
+}
+
+/// Whether a load keeps the total (kinetic + potential) energy constant: springs do, since
+/// their energy is in the potential; applied forces, torques and actuators do work.
+fn is_conservative(kind: &LoadKind) -> bool {
+    matches!(kind, LoadKind::Spring { .. } | LoadKind::JointSpring { .. })
+}
+
+fn is_dissipative(kind: &LoadKind) -> bool {
+    matches!(kind, LoadKind::Damper { .. } | LoadKind::JointDamper { .. })
+}
+
+impl System for Compiled {
+    fn coordinate_names(&self) -> Vec<String> {
+        self.coordinates.clone()
+    }
+
+    fn reaction_columns(&self) -> Vec<String> {
+        let mut columns = Vec::new();
+        for slot in &self.reactions {
+            for kind in ["force", "moment"] {
+                for axis in ["x", "y", "z"] {
+                    columns.push(format!("{}.{kind}.{axis}", slot.joint));
+                }
+            }
+        }
+        columns
+    }
+
+    fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
+        let s = self.solve(t, q, rates)?;
+        let reactions = s.reactions.iter().flat_map(|(_, f, m)| f.iter().chain(m.iter()).copied()).collect();
+        Ok(Evaluation { accelerations: s.accelerations, reactions, kinetic: s.kinetic, potential: s.potential })
+    }
+
+    fn is_conservative(&self) -> bool {
+        self.conservative
+    }
+
+    fn has_dissipation_only(&self) -> bool {
+        self.dissipative_only
+    }
+}
