@@ -1,18 +1,47 @@
-//! `mbd-tutor check`.
+//! `mbd-tutor check`: validate a problem and report every error in it at once.
 
+use crate::problem::{self, Dimension, Problem};
 use crate::Error;
+use std::path::PathBuf;
 
 /// Arguments of `mbd-tutor check`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    #[command(flatten)]
-    pub common: crate::cli::Common,
+    /// The problem file (JSON).
+    pub problem: PathBuf,
+    /// Override constants: NAME=VALUE,... (the checks that depend on values run again).
+    #[arg(long, value_name = "NAME=VALUE,...")]
+    pub set: Vec<String>,
 }
 
-/// Runs `mbd-tutor check`.
+/// Runs `mbd-tutor check`: prints a one-line summary when the problem is valid.
 ///
 /// # Errors
-/// Not written yet.
-pub fn run(_args: Args) -> Result<(), Error> {
-    Err(Error::Usage("`check` is not available yet".into()))
+/// [`Error::Problem`] with every error found; [`Error::Io`] when the file cannot be read;
+/// [`Error::Usage`] for a malformed `--set`.
+pub fn run(args: Args) -> Result<(), Error> {
+    let overrides = crate::cli::parse_assignments(&args.set)?;
+    let mut problem = problem::load_file(&args.problem)?;
+    problem::apply_overrides(&mut problem, &overrides)?;
+    println!("{}", summary(&problem));
+    Ok(())
+}
+
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// `ok: <title>: 2 bodies, 2 joints, 2 coordinates (2D)`.
+pub fn summary(problem: &Problem) -> String {
+    let dimension = match problem.dimension {
+        Dimension::Two => "2D",
+        Dimension::Three => "3D",
+    };
+    format!(
+        "ok: {}: {}, {}, {} ({dimension})",
+        problem.title,
+        count(problem.bodies.len(), "body", "bodies"),
+        count(problem.joints.len(), "joint", "joints"),
+        count(problem.coordinates.len(), "coordinate", "coordinates"),
+    )
 }

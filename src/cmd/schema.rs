@@ -1,4 +1,4 @@
-//! `mbd-tutor schema`.
+//! `mbd-tutor schema`: the JSON Schema of the problem format.
 
 use crate::Error;
 
@@ -10,10 +10,10 @@ pub struct Args {
     pub output: Option<std::path::PathBuf>,
 }
 
-/// Runs `mbd-tutor schema`.
+/// Runs `mbd-tutor schema`: prints the schema (draft 2020-12).
 ///
 /// # Errors
-/// Not written yet.
-pub fn run(_args: Args) -> Result<(), Error> {
-    Err(Error::Usage("`schema` is not available yet".into()))
+/// [`Error::Io`] when the output cannot be written.
+pub fn run(args: Args) -> Result<(), Error> {
+    crate::output::write_output(args.output.as_deref(), crate::problem::schema::SCHEMA.as_bytes())
 }

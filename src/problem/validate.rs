@@ -1,0 +1,220 @@
+//! The checks that depend on the constants' values: masses positive, inertias physical,
+//! axes not zero, nothing infinite. They run while reading and again after `--set`.
+
+use super::expressions::ConstantValues;
+use super::json::{key_path, Diagnostics};
+use super::model::{Inertia, LoadKind, Problem, VectorExpr};
+use super::ProblemError;
+use crate::numeric::format::fixed;
+use crate::symbolic::Expr;
+use nalgebra::{Matrix3, SymmetricEigen};
+
+/// The value of `e` if finite; records an error when it is not (`None` also when it
+/// cannot be judged because a constant it names had its own error).
+pub fn finite(e: &Expr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) -> Option<f64> {
+    let value = values.eval(e)?;
+    if value.is_finite() {
+        return Some(value);
+    }
+    diag.hint(
+        path,
+        format!("`{e}` evaluates to {} with the constants' values", fixed(value)),
+        "look for a division by zero, or a square root or logarithm of a negative number",
+    );
+    None
+}
+
+/// The mass: finite and positive.
+pub fn mass(e: &Expr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) {
+    if let Some(m) = finite(e, values, path, diag) {
+        if m <= 0.0 {
+            diag.hint(path, format!("the mass must be positive; `{e}` is {}", fixed(m)), "a particle still has a positive mass");
+        }
+    }
+}
+
+/// Every coefficient of `v` finite.
+pub fn vector(v: &VectorExpr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) {
+    for (_, _, c) in &v.terms {
+        finite(c, values, path, diag);
+    }
+}
+
+/// An axis: finite and not zero. The frames of its terms are already known to be
+/// aligned with one another, so components add by axis letter.
+pub fn axis(v: &VectorExpr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) {
+    let mut sum = [0.0f64; 3];
+    for (_, axis, c) in &v.terms {
+        match finite(c, values, path, diag) {
+            Some(value) => sum[usize::from(*axis).min(2)] += value,
+            None => return,
+        }
+    }
+    let length = sum.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if length == 0.0 || !length.is_normal() {
+        diag.hint(path, "the axis is the zero vector", "give a direction such as N.z");
+    }
+}
+
+const SPATIAL_KEYS: [[&str; 3]; 3] = [["xx", "xy", "zx"], ["xy", "yy", "yz"], ["zx", "yz", "zz"]];
+
+/// The central inertia: finite, and physical (2D: not negative; 3D: principal moments
+/// not negative and each at most the sum of the other two).
+pub fn inertia(inertia: &Inertia, values: &ConstantValues, path: &str, diag: &mut Diagnostics) {
+    match inertia {
+        Inertia::Planar(e) => {
+            if let Some(i) = finite(e, values, path, diag) {
+                if i < 0.0 {
+                    diag.hint(path, format!("the moment of inertia must not be negative; `{e}` is {}", fixed(i)), "use 0 for a particle");
+                }
+            }
+        }
+        Inertia::Spatial(m) => {
+            let mut numbers = Matrix3::zeros();
+            let mut complete = true;
+            for (r, row) in m.iter().enumerate() {
+                for (c, e) in row.iter().enumerate() {
+                    // Each product of inertia appears twice; judge it once.
+                    let value = if c < r { Some(numbers[(c, r)]) } else {
+                        finite(e, values, &key_path(path, SPATIAL_KEYS[r][c]), diag)
+                    };
+                    match value {
+                        Some(v) => numbers[(r, c)] = v,
+                        None => complete = false,
+                    }
+                }
+            }
+            if complete {
+                principal_moments(&numbers, path, diag);
+            }
+        }
+    }
+}
+
+fn principal_moments(matrix: &Matrix3<f64>, path: &str, diag: &mut Diagnostics) {
+    let mut moments: Vec<f64> = SymmetricEigen::new(*matrix).eigenvalues.iter().copied().collect();
+    moments.sort_by(f64::total_cmp);
+    let scale = moments.iter().fold(0.0f64, |a, m| a.max(m.abs()));
+    // Round-off in the eigenvalues is relative to the largest moment.
+    let tolerance = 1e-9 * scale;
+    let shown: Vec<String> = moments.iter().map(|m| fixed(*m)).collect();
+    if moments[0] < -tolerance {
+        diag.hint(
+            path,
+            format!("the inertia is not physical: its principal moments are {}, and one is negative", shown.join(", ")),
+            "check the signs; `xy`, `yz`, `zx` are tensor elements (minus the products of inertia)",
+        );
+    } else if moments[2] > moments[0] + moments[1] + tolerance {
+        diag.hint(
+            path,
+            format!(
+                "the inertia is not physical: its principal moments {} break the triangle inequality ({} > {} + {})",
+                shown.join(", "),
+                shown[2],
+                shown[0],
+                shown[1]
+            ),
+            "no rigid body has one principal moment larger than the sum of the other two",
+        );
+    }
+}
+
+/// Every value-dependent check over a whole problem, with `values` for the constants.
+pub fn values(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
+    let mut diag = Diagnostics::default();
+    for constant in &problem.constants {
+        if !constant.value.is_finite() {
+            diag.error(&key_path("constants", &constant.name), "the value is not a finite number");
+        }
+    }
+    if let Some(gravity) = &problem.gravity {
+        vector(gravity, values, "gravity", &mut diag);
+    }
+    for body in &problem.bodies {
+        mass(&body.mass, values, &key_path(&body.path, "mass"), &mut diag);
+        vector(&body.center, values, &key_path(&body.path, "center"), &mut diag);
+        inertia(&body.inertia, values, &key_path(&body.path, "inertia"), &mut diag);
+    }
+    for joint in &problem.joints {
+        if let Some(a) = &joint.axis {
+            axis(a, values, &key_path(&joint.path, "axis"), &mut diag);
+        }
+        vector(&joint.at, values, &key_path(&joint.path, "at"), &mut diag);
+        vector(&joint.child_at, values, &key_path(&joint.path, "child_at"), &mut diag);
+    }
+    for point in &problem.points {
+        vector(&point.at, values, &key_path(&key_path("points", &point.name), "at"), &mut diag);
+    }
+    for load in &problem.loads {
+        for (key, e) in load_scalars(&load.kind) {
+            // Only loads that hold constants alone can be judged before the motion.
+            if e.is_constant() {
+                finite(e, values, &key_path(&load.path, key), &mut diag);
+            }
+        }
+    }
+    diag.errors
+}
+
+/// The scalar expressions of a load with their keys.
+pub fn load_scalars(kind: &LoadKind) -> Vec<(&'static str, &Expr)> {
+    match kind {
+        LoadKind::Force { vector, .. } | LoadKind::Torque { vector, .. } => {
+            vector.terms.iter().map(|(_, _, c)| ("vector", c)).collect()
+        }
+        LoadKind::Spring { stiffness, free_length, .. } => vec![("stiffness", stiffness), ("free_length", free_length)],
+        LoadKind::Damper { coefficient, .. } | LoadKind::JointDamper { coefficient, .. } => {
+            vec![("coefficient", coefficient)]
+        }
+        LoadKind::JointSpring { stiffness, rest, .. } => vec![("stiffness", stiffness), ("rest", rest)],
+        LoadKind::JointActuator { value, .. } => vec![("value", value)],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spatial(xx: f64, yy: f64, zz: f64, xy: f64) -> Inertia {
+        let n = Expr::real;
+        let zero = Expr::zero;
+        Inertia::Spatial([[n(xx), n(xy), zero()], [n(xy), n(yy), zero()], [zero(), zero(), n(zz)]])
+    }
+
+    fn errors(inertia_value: &Inertia) -> Vec<String> {
+        let mut diag = Diagnostics::default();
+        inertia(inertia_value, &ConstantValues::default(), "bodies.A.inertia", &mut diag);
+        diag.errors.into_iter().map(|e| e.message).collect()
+    }
+
+    #[test]
+    fn physical_inertias_pass() {
+        // A thin rod along x: moments 0, I, I; the triangle holds with equality.
+        assert!(errors(&spatial(0.0, 1.0, 1.0, 0.0)).is_empty());
+        // A thin plate in the xy plane: Izz = Ixx + Iyy, again equality.
+        assert!(errors(&spatial(1.0, 2.0, 3.0, 0.0)).is_empty());
+        assert!(errors(&Inertia::Planar(Expr::zero())).is_empty());
+    }
+
+    #[test]
+    fn unphysical_inertias_fail() {
+        assert!(errors(&spatial(1.0, 1.0, 3.0, 0.0))[0].contains("triangle"));
+        assert!(errors(&spatial(-1.0, 1.0, 1.0, 0.0))[0].contains("negative"));
+        // Diagonal fine, but the product makes a principal moment 1 - 2 = -1.
+        assert!(errors(&spatial(1.0, 1.0, 1.5, 2.0))[0].contains("negative"));
+        assert!(errors(&Inertia::Planar(Expr::int(-1)))[0].contains("negative"));
+    }
+
+    #[test]
+    fn masses_and_axes() {
+        let values = ConstantValues::default();
+        let mut diag = Diagnostics::default();
+        mass(&Expr::int(0), &values, "m", &mut diag);
+        mass(&Expr::int(2), &values, "m", &mut diag);
+        let zero_axis = VectorExpr::default();
+        axis(&zero_axis, &values, "a", &mut diag);
+        let messages: Vec<&str> = diag.errors.iter().map(|e| e.message.as_str()).collect();
+        assert_eq!(messages.len(), 2, "{messages:?}");
+        assert!(messages[0].contains("positive") && messages[1].contains("zero"));
+    }
+}
