@@ -11,8 +11,10 @@ pub mod linear;
 pub mod number;
 pub mod parse;
 pub mod print;
+pub mod simplify;
 pub mod subst;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
 pub use expr::{Expr, Func, Name, Node, Symbol};
 pub use number::Number;
+pub use simplify::simplify;
