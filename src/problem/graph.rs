@@ -51,6 +51,10 @@ pub fn check_tree(links: &[Link], names: &Names, diag: &mut Diagnostics) {
     let mut state = vec![0u8; bodies + 1];
     state[0] = 2;
     for start in 1..=bodies {
+        if names.bodies[start - 1] == "N" {
+            // Declaring `N` is already an error of its own.
+            continue;
+        }
         let mut walk = Vec::new();
         let mut body = start;
         let mut loop_at = None;

@@ -253,6 +253,10 @@ impl Reader {
             if two_d && kind == JointKind::Revolute {
                 return Some(VectorExpr { terms: vec![(BodyId::GROUND, 2, crate::symbolic::Expr::one())] });
             }
+            if self.dimension.is_none() && kind == JointKind::Revolute {
+                // Maybe a 2D problem with a mistyped dimension: that error is enough.
+                return None;
+            }
             self.diag.hint(
                 path,
                 format!("a {} joint needs an `axis`", kind.name()),
@@ -264,11 +268,11 @@ impl Reader {
         let before = self.diag.errors.len();
         self.fixed_in(&axis, parent, path, "the axis");
         if two_d && kind == JointKind::Revolute {
-            if let Some((frame, _, _)) = axis.terms.iter().find(|(_, a, _)| *a != 2) {
-                let f = self.names.body_name(*frame).to_string();
+            if let Some((frame, a, _)) = axis.terms.iter().find(|(_, a, _)| *a != 2) {
+                let f = format!("{}.{}", self.names.body_name(*frame), ["x", "y", "z"][usize::from(*a).min(2)]);
                 self.diag.hint(
                     path,
-                    format!("in a 2D problem a revolute axis is along z, but this one has a `{f}` x or y component"),
+                    format!("in a 2D problem a revolute axis is along z, but this one has a `{f}` component"),
                     "write \"N.z\" (or leave the axis out, which means N.z)",
                 );
             }

@@ -149,11 +149,11 @@ impl Reader {
         let v = self.vector(value, &vector_path, Context::load(what))?;
         if what == "a torque" {
             if self.dimension == Some(Dimension::Two) {
-                if let Some((frame, _, _)) = v.terms.iter().find(|(_, axis, _)| *axis != 2) {
-                    let f = self.names.body_name(*frame).to_string();
+                if let Some((frame, axis, _)) = v.terms.iter().find(|(_, axis, _)| *axis != 2) {
+                    let f = format!("{}.{}", self.names.body_name(*frame), ["x", "y", "z"][usize::from(*axis).min(2)]);
                     self.diag.hint(
                         &vector_path,
-                        format!("in a 2D problem a torque is about N.z, but this one has a `{f}` x or y component"),
+                        format!("in a 2D problem a torque is about N.z, but this one has a `{f}` component"),
                         "write it as a scalar times N.z",
                     );
                 }

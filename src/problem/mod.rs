@@ -187,3 +187,6 @@ impl ProblemError {
         self
     }
 }
+
+#[cfg(test)]
+mod tests;
