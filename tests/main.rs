@@ -1,1 +1,3 @@
 //! The integration tests, as one binary so that the suite links once.
+
+mod invalid;
