@@ -1,7 +1,12 @@
 //! Numbers: evaluation, the linear solve, integration and the confirmation checks
 //! (steps 5 and 6).
 
+pub mod checks;
+pub mod evaluate;
 pub mod format;
+pub mod integrate;
+pub mod simulate;
+pub mod system;
 
 use std::fmt;
 
@@ -22,6 +27,33 @@ pub enum SolveError {
         /// What was not finite.
         what: String,
     },
+    /// The integrator's step shrank below what floating point can resolve: the motion
+    /// changes too fast to follow there (often a singularity of the equations).
+    StepSizeUnderflow {
+        /// The state where the step collapsed.
+        state: String,
+        /// The last step size tried, in seconds.
+        step: f64,
+    },
+    /// The integrator reached its limit on the number of steps.
+    TooManySteps {
+        /// The state reached.
+        state: String,
+        /// The limit.
+        steps: usize,
+    },
+    /// The run would write more rows than the limit allows.
+    TooManyRows {
+        /// duration / output_step, rounded up, plus one.
+        rows: f64,
+        /// The limit.
+        limit: usize,
+    },
+    /// The simulation settings or the initial state cannot be used.
+    BadSimulation {
+        /// What is wrong.
+        what: String,
+    },
 }
 
 impl fmt::Display for SolveError {
@@ -31,6 +63,22 @@ impl fmt::Display for SolveError {
                 write!(f, "the equations are singular at {state}: {detail}")
             }
             SolveError::NotFinite { state, what } => write!(f, "{what} is not finite at {state}"),
+            SolveError::StepSizeUnderflow { state, step } => write!(
+                f,
+                "the integration step fell to {step:e} s at {state}: the motion changes too fast \
+                 to follow there (a singular configuration, or a tolerance too tight)"
+            ),
+            SolveError::TooManySteps { state, steps } => write!(
+                f,
+                "the integration stopped after {steps} steps at {state}: shorten `duration` or \
+                 loosen `tolerance`"
+            ),
+            SolveError::TooManyRows { rows, limit } => write!(
+                f,
+                "the simulation would write {rows} rows, more than the limit of {limit}: \
+                 shorten `duration` or lengthen `output_step`"
+            ),
+            SolveError::BadSimulation { what } => write!(f, "cannot simulate: {what}"),
         }
     }
 }

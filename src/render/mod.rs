@@ -1,5 +1,7 @@
 //! The worked solution: a Tera context and templates -> Markdown, LaTeX, HTML, plots.
 
+pub mod plot;
+
 use std::fmt;
 
 /// A template failed to load or render.

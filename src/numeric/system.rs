@@ -1,0 +1,77 @@
+//! The interface between the equations of motion and the numerics of step 6.
+//!
+//! Whatever forms the equations (Newton-Euler, the Motion Law, Kane's method) implements
+//! [`System`]; the integrator, the simulation and the confirmation checks see only this.
+
+use super::format::fixed;
+use super::SolveError;
+
+/// One evaluation of the equations of motion at a state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Evaluation {
+    /// The second derivatives q'', one per coordinate, in [`System::coordinate_names`] order
+    /// (m/s² or rad/s²).
+    pub accelerations: Vec<f64>,
+    /// The reaction components, one per [`System::reaction_columns`] entry, in that order
+    /// (N or N·m).
+    pub reactions: Vec<f64>,
+    /// The kinetic energy of all bodies (J).
+    pub kinetic: f64,
+    /// The potential energy (J), with any reference: the simulation reports it relative to
+    /// the initial configuration.
+    pub potential: f64,
+}
+
+/// A system of equations of motion that can be evaluated at any state.
+pub trait System {
+    /// The coordinate names, in the order the contract uses: as first named by the joints.
+    fn coordinate_names(&self) -> Vec<String>;
+
+    /// The names of the reaction components reported by [`System::evaluate`], e.g.
+    /// `O.force.x`, `O.force.y`, `O.force.z`, `O.moment.x`, `O.moment.y`, `O.moment.z`.
+    fn reaction_columns(&self) -> Vec<String>;
+
+    /// The accelerations, reactions and energies at time `t` (s), coordinates `q` and
+    /// rates `rates` (both in [`System::coordinate_names`] order).
+    ///
+    /// # Errors
+    /// [`SolveError::SingularSystem`] when the equations cannot be solved there, or
+    /// [`SolveError::NotFinite`]; the error's `state` should come from [`describe_state`].
+    fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError>;
+
+    /// True when total energy is conserved: no dampers, no actuators, no loads that depend
+    /// on time.
+    fn is_conservative(&self) -> bool;
+
+    /// True when the only non-conservative elements are dampers, so energy can only fall.
+    fn has_dissipation_only(&self) -> bool;
+}
+
+/// A state in words for error messages: `t = 0.5, q1 = 0.3, q1' = -1.2`.
+///
+/// Numbers use [`fixed`], so messages are the same run to run. Names and values are paired
+/// up to the shorter of the lists.
+pub fn describe_state(t: f64, names: &[String], q: &[f64], rates: &[f64]) -> String {
+    let mut text = format!("t = {}", fixed(t));
+    for (name, value) in names.iter().zip(q) {
+        text.push_str(&format!(", {name} = {}", fixed(*value)));
+    }
+    for (name, value) in names.iter().zip(rates) {
+        text.push_str(&format!(", {name}' = {}", fixed(*value)));
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::describe_state;
+
+    #[test]
+    fn state_in_words() {
+        let names = vec!["q1".to_string(), "x".to_string()];
+        assert_eq!(
+            describe_state(0.5, &names, &[0.3, 2.0], &[-1.2, 0.0]),
+            "t = 0.5, q1 = 0.3, x = 2, q1' = -1.2, x' = 0"
+        );
+    }
+}
