@@ -142,7 +142,7 @@ impl Names {
 }
 
 /// "did you mean `x`?" when a candidate is close, else a list of what exists (or `none`).
-pub fn suggest<'a>(name: &str, candidates: &[&'a str], what: &str) -> String {
+pub fn suggest(name: &str, candidates: &[&str], what: &str) -> String {
     match closest(name, candidates.iter().copied()) {
         Some(close) => format!("did you mean `{close}`?"),
         None if candidates.is_empty() => format!("there are no {what}"),

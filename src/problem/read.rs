@@ -118,7 +118,7 @@ impl Reader {
         let Some(orientation) = &self.orientation else { return };
         let two_d = self.dimension == Some(Dimension::Two);
         // In 2D every frame shares its z with N.z.
-        let turning = v.terms.iter().find(|(f, axis, _)| !orientation.aligned(*f, body) && !(two_d && *axis == 2));
+        let turning = v.terms.iter().find(|(f, axis, _)| !(orientation.aligned(*f, body) || (two_d && *axis == 2)));
         if let Some((frame, axis, _)) = turning {
             let (b, f) = (self.names.body_name(body).to_string(), self.names.body_name(*frame).to_string());
             let letter = ["x", "y", "z"][usize::from(*axis).min(2)];
