@@ -125,7 +125,7 @@ pub fn method_agreement(systems: &[(&str, &dyn System)], trajectory: &Trajectory
             };
             for ((name, a), b) in names.iter().zip(&expected).zip(&got) {
                 let difference = (a - b).abs() / a.abs().max(1.0);
-                if !(difference <= worst.0) {
+                if difference > worst.0 || difference.is_nan() {
                     let where_ = format!(
                         "{name}'' from {other_name} ({}) and {reference_name} ({}) at t = {} s",
                         fixed(*b),

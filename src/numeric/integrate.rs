@@ -225,7 +225,7 @@ where
             h = t_end - t;
         }
         let resolution = options.min_step.max(16.0 * f64::EPSILON * t.abs().max(t_end.abs()));
-        if !(h > resolution) {
+        if h <= resolution || h.is_nan() {
             solution.stop = Some(match failure {
                 Some(e) => Stop::Derivative(e),
                 None => Stop::StepUnderflow { t, y, step: h },
@@ -325,10 +325,12 @@ fn check_arguments(t0: f64, y0: &[f64], outputs: &[f64], options: &Options) -> O
         return Some("the output times must be finite, ascending and not before the start");
     }
     let positive = |x: f64| x > 0.0 && x.is_finite();
-    if !positive(options.rtol) || !(options.atol >= 0.0 && options.atol.is_finite()) {
+    let not_negative = |x: f64| x >= 0.0 && x.is_finite();
+    if !positive(options.rtol) || !not_negative(options.atol) {
         return Some("the tolerances must be positive and finite");
     }
-    if !(options.max_step > 0.0) || !(options.min_step >= 0.0) {
+    // An infinite max_step means "no limit"; NaN fails both tests.
+    if options.max_step.is_nan() || options.max_step <= 0.0 || !not_negative(options.min_step) {
         return Some("the step bounds must be positive");
     }
     if options.initial_step.is_some_and(|h| !positive(h)) {
@@ -381,7 +383,7 @@ fn second_guess(y: &[f64], f0: &[f64], f1: &[f64], h0: f64, max_step: f64, optio
     let second = (0..y.len()).map(|i| ((f1[i] - f0[i]) / h0, y[i]));
     let d2 = scaled_rms(second, y.len(), options);
     let largest = d1.max(d2);
-    let h1 = if !(largest > 1e-15) { (h0 * 1e-3).max(1e-6) } else { (0.01 / largest).powf(0.2) };
+    let h1 = if largest <= 1e-15 || largest.is_nan() { (h0 * 1e-3).max(1e-6) } else { (0.01 / largest).powf(0.2) };
     (100.0 * h0).min(h1).min(max_step)
 }
 
