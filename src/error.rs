@@ -18,6 +18,8 @@ pub enum Error {
     Solve(crate::numeric::SolveError),
     /// A template failed to render.
     Render(crate::render::RenderError),
+    /// Some problems of a directory failed (`explain DIR`); the others were written.
+    Batch(crate::cmd::explain::BatchError),
 }
 
 impl Error {
@@ -39,6 +41,7 @@ impl fmt::Display for Error {
             Error::Mechanics(e) => write!(f, "{e}"),
             Error::Solve(e) => write!(f, "{e}"),
             Error::Render(e) => write!(f, "{e}"),
+            Error::Batch(e) => write!(f, "{e}"),
         }
     }
 }

@@ -1,3 +1,4 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod invalid;
+mod render;

@@ -1,18 +1,192 @@
-//! `mbd-tutor explain`.
+//! `mbd-tutor explain`: the worked solution of one problem, or of every problem in a
+//! directory.
 
+use crate::cli::Common;
+use crate::output::write_output;
+use crate::render::{self, Format, Solution};
 use crate::Error;
+use clap::ValueEnum;
+use std::fmt;
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+
+/// The output format of `explain`.
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FormatArg {
+    /// Markdown with `$…$` math (GitHub, pandoc).
+    #[default]
+    Markdown,
+    /// A standalone LaTeX article for pdflatex.
+    Latex,
+    /// One self-contained HTML page with MathML.
+    Html,
+}
+
+impl From<FormatArg> for Format {
+    fn from(arg: FormatArg) -> Format {
+        match arg {
+            FormatArg::Markdown => Format::Markdown,
+            FormatArg::Latex => Format::Latex,
+            FormatArg::Html => Format::Html,
+        }
+    }
+}
 
 /// Arguments of `mbd-tutor explain`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
+    /// A problem file, or a directory of them (then `-o` names the output directory).
     #[command(flatten)]
-    pub common: crate::cli::Common,
+    pub common: Common,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: FormatArg,
+    /// A directory of templates (`solution.md.tera`, `solution.tex.tera`,
+    /// `solution.html.tera`) that replace the built-in ones, to restyle a handout.
+    #[arg(long, value_name = "DIR")]
+    pub templates: Option<PathBuf>,
+    /// Write the student's handout: the statement and the set-up, with blank tables.
+    #[arg(long)]
+    pub student: bool,
 }
+
+/// Some problems of a directory failed; the others were written.
+#[derive(Debug)]
+pub struct BatchError {
+    /// The problem files that failed, with their errors.
+    pub failures: Vec<(PathBuf, String)>,
+    /// How many problems there were.
+    pub total: usize,
+}
+
+impl fmt::Display for BatchError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} of {} problems failed:", self.failures.len(), self.total)?;
+        for (path, error) in &self.failures {
+            write!(f, "\n  {}: {}", path.display(), error.replace('\n', "\n    "))?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for BatchError {}
 
 /// Runs `mbd-tutor explain`.
 ///
 /// # Errors
-/// Not written yet.
-pub fn run(_args: Args) -> Result<(), Error> {
-    Err(Error::Usage("`explain` is not available yet".into()))
+/// For one file, whatever stops it (an invalid problem, equations that cannot be solved, a
+/// template that fails, an unwritable output). For a directory, a [`BatchError`] listing
+/// every problem that failed, after all the others were written.
+pub fn run(args: Args) -> Result<(), Error> {
+    if args.common.problem.is_dir() {
+        return run_directory(&args);
+    }
+    let output = args.common.output.as_deref();
+    let stem = match output {
+        Some(path) => file_stem(path),
+        None => file_stem(&args.common.problem),
+    };
+    explain_file(&args, &args.common.problem, output, &stem)
+}
+
+/// Explains one problem into `output` (standard output when `None`); plots go beside it
+/// as `STEM-KIND.svg`.
+fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>, stem: &str) -> Result<(), Error> {
+    let common = Common { problem: problem_path.to_path_buf(), ..args.common.clone() };
+    let problem = super::load_with_overrides(&common)?;
+    let mut solution: Solution = render::build::solution(&problem, super::method(args.common.method));
+    for plot in &mut solution.simulation.plots {
+        plot.svg_file = format!("{stem}-{}.svg", plot.kind);
+    }
+    let text = render::render(&solution, args.format.into(), args.templates.as_deref(), args.student)?;
+    if let Some(path) = output {
+        // The plots first, so that a document never refers to a plot that is not there.
+        let directory = path.parent().unwrap_or(Path::new(""));
+        for plot in solution.simulation.plots.iter().filter(|p| !p.image_svg.is_empty()) {
+            write_output(Some(&directory.join(&plot.svg_file)), plot.image_svg.as_bytes())?;
+        }
+    }
+    write_output(output, text.as_bytes())
+}
+
+/// Explains every `*.json` directly in the directory, in name order, into `-o DIR`,
+/// going on past failures.
+fn run_directory(args: &Args) -> Result<(), Error> {
+    let directory = &args.common.problem;
+    let Some(out) = args.common.output.as_deref() else {
+        return Err(Error::Usage(format!(
+            "{} is a directory: name the output directory with -o DIR",
+            directory.display()
+        )));
+    };
+    let io = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| Error::Io { path, source }
+    };
+    let mut problems: Vec<PathBuf> = std::fs::read_dir(directory)
+        .map_err(io(directory))?
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|path| path.is_file() && path.extension().is_some_and(|e| e == "json"))
+        .collect();
+    problems.sort();
+    std::fs::create_dir_all(out).map_err(io(out))?;
+    let format: Format = args.format.into();
+    let mut progress = Progress::new(problems.len());
+    let mut failures = Vec::new();
+    for (index, path) in problems.iter().enumerate() {
+        let stem = file_stem(path);
+        progress.show(index, &stem);
+        let target = out.join(format!("{stem}.{}", format.extension()));
+        if let Err(error) = explain_file(args, path, Some(&target), &stem) {
+            failures.push((path.clone(), with_causes(&error)));
+        }
+    }
+    progress.finish();
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::Batch(BatchError { failures, total: problems.len() }))
+    }
+}
+
+fn file_stem(path: &Path) -> String {
+    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "solution".into())
+}
+
+/// An error's message followed by its causes, on one line.
+fn with_causes(error: &Error) -> String {
+    let mut message = error.to_string().trim_end().to_string();
+    let mut source = std::error::Error::source(error);
+    while let Some(cause) = source {
+        message.push_str(": ");
+        message.push_str(cause.to_string().trim_end());
+        source = cause.source();
+    }
+    message
+}
+
+/// A one-line counter on standard error, shown only when it is a terminal.
+struct Progress {
+    total: usize,
+    terminal: bool,
+}
+
+impl Progress {
+    fn new(total: usize) -> Progress {
+        Progress { total, terminal: std::io::stderr().is_terminal() }
+    }
+
+    fn show(&mut self, index: usize, name: &str) {
+        if self.terminal {
+            let mut stderr = std::io::stderr().lock();
+            let _ = write!(stderr, "\r\x1b[2K[{}/{}] {name}", index + 1, self.total);
+            let _ = stderr.flush();
+        }
+    }
+
+    fn finish(&mut self) {
+        if self.terminal {
+            let _ = write!(std::io::stderr().lock(), "\r\x1b[2K");
+        }
+    }
 }

@@ -1,8 +1,22 @@
 //! The worked solution: a Tera context and templates -> Markdown, LaTeX, HTML, plots.
+//!
+//! [`build::solution`] turns a problem (and, as the pipeline grows, its equations and
+//! simulation) into a [`Solution`]: plain strings and tables. [`render`] puts it through
+//! one of the templates in `templates/`, which are embedded in the binary; an instructor
+//! can restyle a handout by passing a directory of replacements.
 
+pub mod build;
+pub mod context;
+pub mod escape;
+pub mod mathml;
 pub mod plot;
+mod prepare;
+pub mod sample;
+
+pub use context::Solution;
 
 use std::fmt;
+use std::path::Path;
 
 /// A template failed to load or render.
 #[derive(Debug)]
@@ -20,3 +34,87 @@ impl fmt::Display for RenderError {
 }
 
 impl std::error::Error for RenderError {}
+
+/// The output formats of `mbd-tutor explain`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// Markdown with `$…$` and `$$…$$` math (GitHub, pandoc).
+    Markdown,
+    /// A standalone LaTeX article for pdflatex.
+    Latex,
+    /// One self-contained HTML page with MathML.
+    Html,
+}
+
+impl Format {
+    /// The file extension, without the dot.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Markdown => "md",
+            Format::Latex => "tex",
+            Format::Html => "html",
+        }
+    }
+
+    /// The template's file name in `templates/` (and in a `--templates` directory).
+    pub fn template_name(self) -> &'static str {
+        match self {
+            Format::Markdown => "solution.md.tera",
+            Format::Latex => "solution.tex.tera",
+            Format::Html => "solution.html.tera",
+        }
+    }
+
+    /// The template embedded in the binary.
+    fn embedded(self) -> &'static str {
+        match self {
+            Format::Markdown => include_str!("../../templates/solution.md.tera"),
+            Format::Latex => include_str!("../../templates/solution.tex.tera"),
+            Format::Html => include_str!("../../templates/solution.html.tera"),
+        }
+    }
+}
+
+/// Renders the worked solution, or with `student` the handout (the statement and the
+/// set-up, with blank tables to fill in).
+///
+/// `templates` is a directory whose `solution.md.tera`, `solution.tex.tera` or
+/// `solution.html.tera`, when present, replaces the embedded one. Templates see the
+/// [`Solution`] with its text already escaped for the format; see [`context`].
+///
+/// # Errors
+/// When the replacement template cannot be read, does not parse, or fails to render; the
+/// error names the template and gives Tera's whole chain of causes.
+pub fn render(solution: &Solution, format: Format, templates: Option<&Path>, student: bool) -> Result<String, RenderError> {
+    let name = format.template_name();
+    let error = |message: String| RenderError { template: name.to_string(), message };
+    let override_path = templates.map(|dir| dir.join(name)).filter(|path| path.is_file());
+    let (source, shown_name) = match &override_path {
+        Some(path) => {
+            let source = std::fs::read_to_string(path).map_err(|e| error(format!("cannot read {}: {e}", path.display())))?;
+            (source, path.display().to_string())
+        }
+        None => (format.embedded().to_string(), name.to_string()),
+    };
+    let error = |message: String| RenderError { template: shown_name.clone(), message };
+    let mut tera = tera::Tera::default();
+    // The HTML template's name ends in `.tera`, so Tera's default (`.html` only) would not
+    // escape it.
+    tera.autoescape_on(vec![".html.tera"]);
+    prepare::register_filters(&mut tera);
+    tera.add_raw_template(name, &source).map_err(|e| error(chain(&e)))?;
+    let context = prepare::context(solution, format, student).map_err(|e| error(e.to_string()))?;
+    tera.render(name, &context).map_err(|e| error(chain(&e)))
+}
+
+/// An error and all its causes, since Tera's own message is only "Failed to render".
+fn chain(error: &dyn std::error::Error) -> String {
+    let mut message = error.to_string();
+    let mut source = error.source();
+    while let Some(cause) = source {
+        message.push_str(": ");
+        message.push_str(&cause.to_string());
+        source = cause.source();
+    }
+    message
+}

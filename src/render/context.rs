@@ -1,0 +1,299 @@
+//! The worked solution as plain data: the Tera context of the templates.
+//!
+//! Everything is already a string, so the templates hold layout only. The renderer treats a
+//! string by the name of its field, and every template relies on it:
+//!
+//! | field name | holds | Markdown | LaTeX | HTML |
+//! |---|---|---|---|---|
+//! | ends in `_tex` | LaTeX math, without `$` | verbatim, inside `$…$` | verbatim | converted to MathML (use `\| safe`) |
+//! | ends in `_latex` | LaTeX code (a pgfplots picture) | removed | verbatim | removed |
+//! | ends in `_svg` | an SVG document | removed | removed | a `data:` URI for `<img src>` (use `\| safe`) |
+//! | anything else | plain text: user text, names, numbers | escaped | escaped | escaped by Tera |
+//!
+//! So user text (titles, descriptions, the statement) is only ever a value in the context,
+//! never part of a template's source, and can never be evaluated by Tera or by TeX.
+//! Numbers are formatted before they get here, with [`crate::numeric::format::fixed`].
+
+use serde::Serialize;
+
+pub use super::sample::sample;
+
+/// The worked solution of one problem by one method: the six steps.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Solution {
+    /// The problem's title (user text, one line).
+    pub title: String,
+    /// The problem as given to the student (user text; blank lines separate paragraphs, line
+    /// breaks are kept).
+    pub statement: Option<String>,
+    /// `planar` or `spatial`.
+    pub dimension: String,
+    /// The method's name as a sentence uses it, e.g. `the Motion Law`.
+    pub method: String,
+    /// True for the student handout (statement and blank tables); set by
+    /// [`render`](super::render), not by the pipeline.
+    pub student: bool,
+    /// Step 1: one frame per body, `N` first.
+    pub frames: Vec<Frame>,
+    /// Step 1: the generalized coordinates, in the order the joints name them.
+    pub coordinates: Vec<Coordinate>,
+    /// Step 1: the constants, in file order.
+    pub constants: Vec<Constant>,
+    /// Step 2: the free bodies the planner uses.
+    pub free_bodies: Vec<FreeBody>,
+    /// Step 3: the planner's table.
+    pub plan: Plan,
+    /// Step 4: angular velocity and acceleration of each body, velocity and acceleration of
+    /// its mass center, all in N.
+    pub kinematics: Vec<Kinematics>,
+    /// Step 5: each equation, as formed and as simplified.
+    pub equations: Vec<Equation>,
+    /// Step 5: the system in matrix form.
+    pub matrix: MatrixForm,
+    /// Step 5: the second derivatives at the initial state.
+    pub initial_values: Vec<InitialValue>,
+    /// Step 5: the requested reactions at the initial state.
+    pub reactions: Vec<Reaction>,
+    /// Step 6: the simulation and its checks.
+    pub simulation: Simulation,
+}
+
+/// A reference frame and its unit vectors.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Frame {
+    /// The frame's name, e.g. `A`.
+    pub name: String,
+    /// Its unit vectors, e.g. `\hat{\mathbf{a}}_{x}, \hat{\mathbf{a}}_{y}, \hat{\mathbf{a}}_{z}`.
+    pub frame_tex: String,
+    /// The body it is fixed in, e.g. `A` (`N` for the ground).
+    pub fixed_in: String,
+    /// The frame it is oriented relative to (empty for `N`).
+    pub parent: String,
+    /// Its orientation relative to `parent`, e.g. `\text{rotated by } q_{1} \text{ about } \hat{\mathbf{n}}_{z}`.
+    pub orientation_tex: String,
+}
+
+/// A generalized coordinate.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Coordinate {
+    /// The coordinate as a symbol, e.g. `q_{1}`.
+    pub name_tex: String,
+    /// Its rate, e.g. `\dot{q}_{1}`.
+    pub rate_tex: String,
+    /// What it measures (user text; may be empty).
+    pub description: String,
+    /// The joint that owns it and the joint's type, e.g. `O (revolute)`.
+    pub joint: String,
+    /// Its unit, e.g. `rad` (user text).
+    pub unit: String,
+    /// Its initial value, formatted.
+    pub initial: String,
+    /// Its initial rate, formatted.
+    pub initial_rate: String,
+}
+
+/// A constant of the problem.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Constant {
+    /// The constant as a symbol, e.g. `L`.
+    pub name_tex: String,
+    /// Its value (after `--set`), formatted.
+    pub value: String,
+    /// Its unit (user text; may be empty).
+    pub unit: String,
+    /// What it is (user text; may be empty).
+    pub description: String,
+}
+
+/// One free body with its forces, sorted the way the Motion Law sorts them.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct FreeBody {
+    /// Its name, e.g. `A` or `A+B`.
+    pub name: String,
+    /// The bodies it contains, e.g. `A, B`.
+    pub bodies: String,
+    /// Contact forces: reactions, springs, applied loads, joint loads.
+    pub contact: Vec<Force>,
+    /// Distance forces: gravity.
+    pub distance: Vec<Force>,
+    /// Inertia forces and couples: `-m a` and `-(I·α + ω×I·ω)`.
+    pub inertia: Vec<Force>,
+}
+
+/// One force or couple on a free body.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Force {
+    /// What it is, e.g. `pin O` or the load's name (user text).
+    pub label: String,
+    /// The vector, e.g. `F^{O}_{x} \hat{\mathbf{n}}_{x} + F^{O}_{y} \hat{\mathbf{n}}_{y}`.
+    pub vector_tex: String,
+    /// Where it acts, or for a couple empty, e.g. `A^{*}`.
+    pub point_tex: String,
+}
+
+/// Step 3: which equation each free body gives, and what it leaves unknown.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Plan {
+    /// The equations used, in order.
+    pub rows: Vec<PlanRow>,
+    /// Candidate equations considered and not used.
+    pub rejected: Vec<Rejected>,
+    /// How many equations the rows give.
+    pub equations_count: usize,
+    /// How many unknowns they contain.
+    pub unknowns_count: usize,
+    /// A sentence about the count (plain text; may be empty).
+    pub note: String,
+}
+
+/// One equation of the plan.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct PlanRow {
+    /// The free body, e.g. `A+B`.
+    pub free_body: String,
+    /// The equation, e.g. `moments about O`.
+    pub equation: String,
+    /// Its direction, e.g. `\hat{\mathbf{n}}_{z}`.
+    pub direction_tex: String,
+    /// The unknowns it contains, e.g. `\ddot{q}_{1}, \ddot{q}_{2}`.
+    pub unknowns_tex: String,
+}
+
+/// A candidate equation the planner rejected.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Rejected {
+    /// The free body.
+    pub free_body: String,
+    /// The equation.
+    pub equation: String,
+    /// Its direction.
+    pub direction_tex: String,
+    /// Why it was not used, e.g. `brings in F^O_x, not otherwise needed`.
+    pub reason: String,
+}
+
+/// Step 4 for one body.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Kinematics {
+    /// The body's name.
+    pub body: String,
+    /// Its angular velocity in N, e.g. `{}^{N}\boldsymbol{\omega}^{A} = \dot{q}_{1} \hat{\mathbf{n}}_{z}`.
+    pub omega_tex: String,
+    /// Its angular acceleration in N.
+    pub alpha_tex: String,
+    /// The velocity of its mass center in N.
+    pub velocity_tex: String,
+    /// The acceleration of its mass center in N.
+    pub acceleration_tex: String,
+}
+
+/// One scalar equation of motion (or of a reaction).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Equation {
+    /// Where it comes from, e.g. `A+B, moments about O, along n_z` (plain text).
+    pub label: String,
+    /// The equation as formed, forces grouped, e.g. `\hat{\mathbf{n}}_{z} \cdot (…) = 0`.
+    pub grouped_tex: String,
+    /// The same equation simplified, `… = 0`.
+    pub simplified_tex: String,
+}
+
+/// The equations as `A x = b`.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct MatrixForm {
+    /// The whole matrices, when there are at most four unknowns.
+    pub whole: Option<WholeMatrix>,
+    /// The nonzero entries one by one, when there are more.
+    pub entries: Vec<MatrixEntry>,
+}
+
+/// `A`, `x` and `b` as `bmatrix` environments.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct WholeMatrix {
+    /// The coefficient matrix.
+    pub a_tex: String,
+    /// The unknowns, a column.
+    pub x_tex: String,
+    /// The right-hand side, a column.
+    pub b_tex: String,
+}
+
+/// One entry of `A` or `b`.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct MatrixEntry {
+    /// The row, 1-based.
+    pub row: usize,
+    /// The column, 1-based; `b` for the right-hand side.
+    pub column: String,
+    /// The entry, e.g. `A_{12} = \frac{m L^{2}}{2} \cos(q_{2})`.
+    pub value_tex: String,
+}
+
+/// A number at the initial state.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct InitialValue {
+    /// What it is, e.g. `\ddot{q}_{1}`.
+    pub name_tex: String,
+    /// Its value, formatted.
+    pub value: String,
+    /// Its unit (may be empty), e.g. `rad/s^2`.
+    pub unit: String,
+}
+
+/// The reaction at one joint, at the initial state.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Reaction {
+    /// The joint's name.
+    pub joint: String,
+    /// The force on the child, in the parent's unit vectors, formatted, e.g. `(1.2, 19.6, 0) N`;
+    /// shown when `force_tex` is empty.
+    pub force: String,
+    /// The moment about the joint point, likewise.
+    pub moment: String,
+    /// The force as a vector with its unit, e.g.
+    /// `\left(1.2 \hat{\mathbf{n}}_{x} + 19.6 \hat{\mathbf{n}}_{y}\right) \mathrm{N}`.
+    pub force_tex: String,
+    /// The moment as a vector with its unit.
+    pub moment_tex: String,
+}
+
+/// Step 6: the simulation that confirms the equations.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Simulation {
+    /// How it was run, e.g. `5 s, output every 0.01 s, tolerance 1e-9` (plain text).
+    pub settings: String,
+    /// The checks.
+    pub checks: Vec<Check>,
+    /// The plots.
+    pub plots: Vec<Plot>,
+    /// A sentence about the outcome (plain text; may be empty).
+    pub note: String,
+}
+
+/// One confirmation check.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Check {
+    /// What is checked, e.g. `energy drift`.
+    pub name: String,
+    /// The measured value, formatted.
+    pub value: String,
+    /// The tolerance it is held to, formatted, e.g. `< 1e-6`.
+    pub tolerance: String,
+    /// Whether it passed.
+    pub passed: bool,
+}
+
+/// One plot, as an SVG file (Markdown, HTML) and as a pgfplots picture (LaTeX).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Plot {
+    /// Which plot, used in file names: `coordinates` or `energy`.
+    pub kind: String,
+    /// The caption (plain text).
+    pub title: String,
+    /// The SVG file name the Markdown refers to, relative to the output, e.g. `pendulum-energy.svg`.
+    pub svg_file: String,
+    /// The SVG document, inlined into HTML.
+    pub image_svg: String,
+    /// A `tikzpicture` with a pgfplots `axis`, for LaTeX.
+    pub pgfplots_latex: String,
+}

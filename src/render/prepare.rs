@@ -1,0 +1,288 @@
+//! The [`Solution`] as a Tera context for one format, and the filters the templates use.
+//!
+//! Strings are treated by their field's name (see [`super::context`]): user text is escaped
+//! here for LaTeX and Markdown (Tera escapes HTML itself), math is left for the template,
+//! and what a format cannot show is removed.
+
+use super::escape::{self, Lines};
+use super::mathml::{self, Display};
+use super::{Format, Solution};
+use serde_json::Value;
+use std::collections::HashMap;
+
+/// The context for `format`.
+///
+/// # Errors
+/// Only if the solution cannot be serialized, which plain strings and numbers always can.
+pub fn context(solution: &Solution, format: Format, student: bool) -> Result<tera::Context, tera::Error> {
+    let mut value = serde_json::to_value(solution).map_err(tera::Error::json)?;
+    walk(&mut value, "", format);
+    if let Value::Object(map) = &mut value {
+        // The statement as paragraphs of lines, for formats that mark paragraphs up.
+        let paragraphs = solution.statement.as_deref().map(escape::paragraphs).unwrap_or_default();
+        let line = |text: &String| Value::String(string(text, "statement_line", format));
+        let paragraphs = paragraphs.iter().map(|lines| Value::Array(lines.iter().map(line).collect())).collect();
+        map.insert("statement_paragraphs".into(), Value::Array(paragraphs));
+        map.insert("student".into(), Value::Bool(student));
+        map.insert("format".into(), Value::String(format.extension().into()));
+    }
+    tera::Context::from_value(value)
+}
+
+fn walk(value: &mut Value, key: &str, format: Format) {
+    match value {
+        Value::Object(map) => {
+            for (key, item) in map.iter_mut() {
+                walk(item, key, format);
+            }
+        }
+        Value::Array(items) => items.iter_mut().for_each(|item| walk(item, key, format)),
+        Value::String(text) => *text = string(text, key, format),
+        _ => {}
+    }
+}
+
+/// One string of the context, by its field's name.
+fn string(text: &str, key: &str, format: Format) -> String {
+    if key.ends_with("_tex") {
+        let math = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        return match format {
+            // `|` would end a Markdown table cell, even inside `$…$` on GitHub.
+            Format::Markdown => math.replace("\\|", "\\Vert ").replace('|', "\\vert "),
+            Format::Latex | Format::Html => math,
+        };
+    }
+    if key.ends_with("_latex") {
+        return if format == Format::Latex { text.to_string() } else { String::new() };
+    }
+    if key.ends_with("_svg") {
+        return if format == Format::Html && !text.is_empty() {
+            format!("data:image/svg+xml;base64,{}", base64(text.as_bytes()))
+        } else {
+            String::new()
+        };
+    }
+    let lines = if key == "statement" { Lines::Paragraphs } else { Lines::One };
+    match format {
+        Format::Latex if is_number(text) => latex_number(text),
+        Format::Latex => escape::latex(text, lines),
+        Format::Markdown if key == "svg_file" => percent_encode(text),
+        Format::Markdown => escape::markdown(text, lines),
+        // Tera escapes the HTML template's output.
+        Format::Html => text.to_string(),
+    }
+}
+
+/// Whether `text` is a number as [`crate::numeric::format::fixed`] writes it.
+fn is_number(text: &str) -> bool {
+    matches!(text, "NaN" | "inf" | "-inf")
+        || (text.parse::<f64>().is_ok() && text.chars().all(|c| c.is_ascii_digit() || "+-.e".contains(c)))
+}
+
+/// A number in math mode, so that `-` is a minus sign and `1e-9` is `1 \times 10^{-9}`.
+fn latex_number(text: &str) -> String {
+    match text {
+        "NaN" => "NaN".into(),
+        "inf" => "$\\infty$".into(),
+        "-inf" => "$-\\infty$".into(),
+        _ => match text.split_once('e') {
+            Some((mantissa, exponent)) => {
+                let exponent = exponent.trim_start_matches('+');
+                if mantissa == "1" {
+                    format!("$10^{{{exponent}}}$")
+                } else {
+                    format!("${mantissa} \\times 10^{{{exponent}}}$")
+                }
+            }
+            None => format!("${text}$"),
+        },
+    }
+}
+
+/// A file name as a URL path segment, for Markdown links.
+fn percent_encode(text: &str) -> String {
+    let mut out = String::new();
+    for byte in text.bytes() {
+        if byte.is_ascii_alphanumeric() || b"-._~".contains(&byte) {
+            out.push(byte as char);
+        } else {
+            out.push_str(&format!("%{byte:02X}"));
+        }
+    }
+    out
+}
+
+/// Standard base64 with padding, for `data:` URIs (a dozen lines, not worth a crate).
+fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [chunk[0], chunk.get(1).copied().unwrap_or(0), chunk.get(2).copied().unwrap_or(0)];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for i in 0..4 {
+            if i <= chunk.len() {
+                out.push(ALPHABET[((n >> (18 - 6 * i)) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+/// Registers `mathml` (LaTeX math -> a sanitized `<math>` element; `display=true` for a
+/// block) and `tex_display` (LaTeX math -> a displayed equation: `\\[…\\]`, or `multline*`
+/// broken into lines when it is long).
+pub fn register_filters(tera: &mut tera::Tera) {
+    tera.register_filter("mathml", |value: &Value, args: &HashMap<String, Value>| {
+        let latex = tera::try_get_value!("mathml", "value", String, value);
+        let block = args.get("display").and_then(Value::as_bool).unwrap_or(false);
+        let display = if block { Display::Block } else { Display::Inline };
+        Ok(Value::String(mathml::to_mathml_or_source(&latex, display)))
+    });
+    tera.register_filter("tex_display", |value: &Value, args: &HashMap<String, Value>| {
+        let latex = tera::try_get_value!("tex_display", "value", String, value);
+        let width = args.get("width").and_then(Value::as_u64).unwrap_or(70) as usize;
+        let lines = break_lines(&latex, width);
+        // One line goes in `\[…\]`: `multline*` would stretch its spaces to the full width.
+        Ok(Value::String(if lines.contains(" \\\\ ") {
+            format!("\\begin{{multline*}}\n{lines}\n\\end{{multline*}}")
+        } else {
+            format!("\\[\n{lines}\n\\]")
+        }))
+    });
+}
+
+/// Breaks LaTeX math before top-level `+`, `-` and `=` (outside braces, `\\left…\\right` and
+/// environments, where a `\\\\` would not compile) so that no line is much wider than
+/// `width` symbols as printed. Lines are joined by `\\\\`, for `multline*`.
+pub fn break_lines(latex: &str, width: usize) -> String {
+    let mut pieces: Vec<&str> = Vec::new();
+    let mut depth: i32 = 0;
+    let mut start = 0;
+    let bytes = latex.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        let rest = &latex[i..];
+        if let Some(length) = ["\\left", "\\begin"].iter().find_map(|c| command_at(rest, c)) {
+            depth += 1;
+            i += length;
+            continue;
+        }
+        if let Some(length) = ["\\right", "\\end"].iter().find_map(|c| command_at(rest, c)) {
+            depth -= 1;
+            i += length;
+            continue;
+        }
+        match bytes[i] {
+            b'\\' => i += 1, // `\{`, `\}`, `\\` are not groups
+            b'{' => depth += 1,
+            b'}' => depth -= 1,
+            b'+' | b'-' | b'=' if depth == 0 && i > 0 && bytes[i - 1] == b' ' => {
+                pieces.push(&latex[start..i]);
+                start = i;
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    pieces.push(&latex[start..]);
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    let mut line_width = 0;
+    for piece in pieces {
+        let piece_width = printed_width(piece);
+        // A short piece (`= 0`) stays on its line rather than standing alone.
+        if line_width > 0 && line_width + piece_width > width && piece_width > 6 {
+            lines.push(line.trim().to_string());
+            line.clear();
+            line_width = 0;
+        }
+        line.push_str(piece);
+        line_width += piece_width;
+    }
+    lines.push(line.trim().to_string());
+    lines.join(" \\\\ ")
+}
+
+/// Roughly how many symbols `latex` prints: command names that only shape or place
+/// (`\\frac`, `\\mathbf`, `\\left`) and grouping count nothing, other commands one.
+fn printed_width(latex: &str) -> usize {
+    const SILENT: [&str; 15] = [
+        "left", "right", "frac", "mathbf", "boldsymbol", "mathrm", "hat", "dot", "ddot", "text", "begin",
+        "end", "operatorname", "quad", "displaystyle",
+    ];
+    let mut width = 0;
+    let mut chars = latex.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' => {
+                let mut name = String::new();
+                while let Some(&next) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
+                    name.push(next);
+                    chars.next();
+                }
+                if name.is_empty() {
+                    chars.next();
+                    width += 1;
+                } else if !SILENT.contains(&name.as_str()) {
+                    width += 1;
+                }
+            }
+            '{' | '}' | '_' | '^' | ' ' => {}
+            _ => width += 1,
+        }
+    }
+    width
+}
+
+/// The length of `command` if `text` starts with it as a whole word (`\\left`, not `\\leftarrow`).
+fn command_at(text: &str, command: &str) -> Option<usize> {
+    let after = text.strip_prefix(command)?;
+    (!after.starts_with(|c: char| c.is_ascii_alphabetic())).then_some(command.len())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_matches_the_rfc_4648_vectors() {
+        let cases = [("", ""), ("f", "Zg=="), ("fo", "Zm8="), ("foo", "Zm9v"), ("foob", "Zm9vYg=="), ("fooba", "Zm9vYmE="), ("foobar", "Zm9vYmFy")];
+        for (input, expected) in cases {
+            assert_eq!(base64(input.as_bytes()), expected);
+        }
+    }
+
+    #[test]
+    fn numbers_become_math_in_latex() {
+        assert_eq!(string("-12.5", "value", Format::Latex), "$-12.5$");
+        assert_eq!(string("1e-9", "value", Format::Latex), "$10^{-9}$");
+        assert_eq!(string("-2.5e7", "value", Format::Latex), "$-2.5 \\times 10^{7}$");
+        assert_eq!(string("1-2", "value", Format::Latex), "1-{}2");
+    }
+
+    #[test]
+    fn fields_are_treated_by_name() {
+        assert_eq!(string("a_b", "description", Format::Latex), "a\\_b");
+        assert_eq!(string("\\left|x\\right|", "value_tex", Format::Markdown), "\\left\\vert x\\right\\vert ");
+        assert_eq!(string("\\frac{a}{b}", "value_tex", Format::Latex), "\\frac{a}{b}");
+        assert_eq!(string("\\draw", "pgfplots_latex", Format::Html), "");
+        assert_eq!(string("<svg/>", "image_svg", Format::Html), "data:image/svg+xml;base64,PHN2Zy8+");
+        assert_eq!(string("a b.svg", "svg_file", Format::Markdown), "a%20b.svg");
+        assert_eq!(string("<b>", "title", Format::Html), "<b>");
+    }
+
+    #[test]
+    fn long_math_breaks_only_at_top_level() {
+        let latex = "aaaaaaa + bbbbbbb + ccccccc = 0";
+        assert_eq!(break_lines(latex, 1000), latex);
+        assert_eq!(break_lines(latex, 10), "aaaaaaa \\\\ + bbbbbbb \\\\ + ccccccc = 0");
+        let grouped = "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) + {ddddddd - eeeeeee} = 0";
+        assert_eq!(break_lines(grouped, 10), "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) \\\\ + {ddddddd - eeeeeee} = 0");
+        let matrix = "\\begin{bmatrix} aaaaaaa - bbbbbbb \\end{bmatrix}";
+        assert_eq!(break_lines(matrix, 3), matrix);
+        assert_eq!(break_lines("a \\rightarrow b + cccccccc", 1), "a \\rightarrow b \\\\ + cccccccc");
+        assert_eq!(printed_width("\\frac{m L^{2}}{12} \\hat{\\mathbf{n}}_{z}"), 7);
+    }
+}

@@ -1,0 +1,303 @@
+//! A worked solution written by hand, for testing the templates without the pipeline.
+//!
+//! It is the double pendulum of the problem-format example (two uniform rods of mass `m`,
+//! length `L`, `q1` from the downward vertical, `q2` of rod B relative to rod A), solved with
+//! the Motion Law and derived on paper: mass matrix
+//! `m L^2 [[5/3 + cos q2, 1/3 + cos q2 / 2], [1/3 + cos q2 / 2, 1/3]]`, gravity terms
+//! `m g L / 2 (3 sin q1 + sin(q1 + q2), sin(q1 + q2))`. The numbers are for `m = 1 kg`,
+//! `L = 0.5 m`, `g = 9.81 m/s^2`, released from rest at `q1 = 0.5`, `q2 = 0`.
+
+use super::context::*;
+
+fn s(text: &str) -> String {
+    text.to_string()
+}
+
+const N: &str = "\\hat{\\mathbf{n}}";
+const A: &str = "\\hat{\\mathbf{a}}";
+const B: &str = "\\hat{\\mathbf{b}}";
+
+/// The hand-written double pendulum; see the module documentation.
+pub fn sample() -> Solution {
+    Solution {
+        title: s("Double pendulum of two uniform rods"),
+        statement: Some(s("Two uniform rods A and B, each of mass m and length L, are pinned together at P; \
+            rod A hangs from a fixed pin at O. The system is released from rest with q1 = 0.5 rad and q2 = 0.\n\n\
+            Find the angular accelerations of the rods and the reaction at O at the instant of release.")),
+        dimension: s("planar"),
+        method: s("the Motion Law"),
+        student: false,
+        frames: frames(),
+        coordinates: vec![
+            coordinate("q_{1}", "\\dot{q}_{1}", "angle of rod A from the downward vertical", "O (revolute)", "0.5"),
+            coordinate("q_{2}", "\\dot{q}_{2}", "angle of rod B relative to rod A", "P (revolute)", "0"),
+        ],
+        constants: vec![
+            constant("m", "1", "kg", "mass of each rod"),
+            constant("L", "0.5", "m", "length of each rod"),
+            constant("g", "9.81", "m/s^2", "gravitational acceleration"),
+        ],
+        free_bodies: free_bodies(),
+        plan: plan(),
+        kinematics: kinematics(),
+        equations: equations(),
+        matrix: matrix(),
+        initial_values: vec![
+            value("\\ddot{q}_{1}", "-12.0939", "rad/s^2"),
+            value("\\ddot{q}_{2}", "16.1251", "rad/s^2"),
+            value("F^{O}_{x}", "-7.07557", "N"),
+            value("F^{O}_{y}", "15.7546", "N"),
+        ],
+        reactions: vec![Reaction {
+            joint: s("O"),
+            force: s("(-7.07557, 15.7546, 0) N"),
+            moment: s("(0, 0, 0) N m"),
+            force_tex: format!("\\left(-7.07557 {N}_{{x}} + 15.7546 {N}_{{y}}\\right) \\mathrm{{N}}"),
+            moment_tex: s("\\mathbf{0} \\; \\mathrm{N\\,m}"),
+        }],
+        simulation: simulation(),
+    }
+}
+
+fn frames() -> Vec<Frame> {
+    let triad = |u: &str| format!("{u}_{{x}}, {u}_{{y}}, {u}_{{z}}");
+    vec![
+        Frame { name: s("N"), frame_tex: triad(N), fixed_in: s("N"), parent: s(""), orientation_tex: s("") },
+        Frame {
+            name: s("A"),
+            frame_tex: triad(A),
+            fixed_in: s("A"),
+            parent: s("N"),
+            orientation_tex: format!("\\text{{rotated by }} q_{{1}} \\text{{ about }} {N}_{{z}}"),
+        },
+        Frame {
+            name: s("B"),
+            frame_tex: triad(B),
+            fixed_in: s("B"),
+            parent: s("A"),
+            orientation_tex: format!("\\text{{rotated by }} q_{{2}} \\text{{ about }} {A}_{{z}}"),
+        },
+    ]
+}
+
+fn coordinate(name: &str, rate: &str, description: &str, joint: &str, initial: &str) -> Coordinate {
+    Coordinate {
+        name_tex: s(name),
+        rate_tex: s(rate),
+        description: s(description),
+        joint: s(joint),
+        unit: s("rad"),
+        initial: s(initial),
+        initial_rate: s("0"),
+    }
+}
+
+fn constant(name: &str, value: &str, unit: &str, description: &str) -> Constant {
+    Constant { name_tex: s(name), value: s(value), unit: s(unit), description: s(description) }
+}
+
+fn value(name: &str, value: &str, unit: &str) -> InitialValue {
+    InitialValue { name_tex: s(name), value: s(value), unit: s(unit) }
+}
+
+fn force(label: &str, vector: String, point: &str) -> Force {
+    Force { label: s(label), vector_tex: vector, point_tex: s(point) }
+}
+
+fn free_bodies() -> Vec<FreeBody> {
+    let gravity = |body: &str| force(&format!("gravity on {body}"), format!("-m g {N}_{{y}}"), &format!("{body}^{{*}}"));
+    let inertia = |body: &str, alpha: &str| {
+        vec![
+            force(
+                &format!("inertia force of {body}"),
+                format!("-m\\,{{}}^{{N}}\\mathbf{{a}}^{{{body}^{{*}}}}"),
+                &format!("{body}^{{*}}"),
+            ),
+            force(&format!("inertia couple of {body}"), format!("-\\frac{{m L^{{2}}}}{{12}} {alpha} {N}_{{z}}"), ""),
+        ]
+    };
+    vec![
+        FreeBody {
+            name: s("A+B"),
+            bodies: s("A, B"),
+            contact: vec![force("pin O", format!("F^{{O}}_{{x}} {N}_{{x}} + F^{{O}}_{{y}} {N}_{{y}}"), "O")],
+            distance: vec![gravity("A"), gravity("B")],
+            inertia: [inertia("A", "\\ddot{q}_{1}"), inertia("B", "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)")].concat(),
+        },
+        FreeBody {
+            name: s("B"),
+            bodies: s("B"),
+            contact: vec![force("pin P", format!("F^{{P}}_{{x}} {A}_{{x}} + F^{{P}}_{{y}} {A}_{{y}}"), "P")],
+            distance: vec![gravity("B")],
+            inertia: inertia("B", "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)"),
+        },
+    ]
+}
+
+fn plan() -> Plan {
+    let row = |free_body: &str, equation: &str, direction: String, unknowns: &str| PlanRow {
+        free_body: s(free_body),
+        equation: s(equation),
+        direction_tex: direction,
+        unknowns_tex: s(unknowns),
+    };
+    let accelerations = "\\ddot{q}_{1}, \\ddot{q}_{2}";
+    Plan {
+        rows: vec![
+            row("A+B", "moments about O", format!("{N}_{{z}}"), accelerations),
+            row("B", "moments about P", format!("{A}_{{z}}"), accelerations),
+            row("A+B", "forces", format!("{N}_{{x}}"), "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}"),
+            row("A+B", "forces", format!("{N}_{{y}}"), "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}"),
+        ],
+        rejected: vec![Rejected {
+            free_body: s("A"),
+            equation: s("moments about O"),
+            direction_tex: format!("{N}_{{z}}"),
+            reason: s("brings in the pin force at P, which is not asked for"),
+        }],
+        equations_count: 4,
+        unknowns_count: 4,
+        note: s("The system is square: one equation for each unknown."),
+    }
+}
+
+fn kinematics() -> Vec<Kinematics> {
+    let rates = "\\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)";
+    let accelerations = "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)";
+    vec![
+        Kinematics {
+            body: s("A"),
+            omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{A}} = \\dot{{q}}_{{1}} {N}_{{z}}"),
+            alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{A}} = \\ddot{{q}}_{{1}} {N}_{{z}}"),
+            velocity_tex: format!("{{}}^{{N}}\\mathbf{{v}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\dot{{q}}_{{1}} {A}_{{x}}"),
+            acceleration_tex: format!(
+                "{{}}^{{N}}\\mathbf{{a}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\ddot{{q}}_{{1}} {A}_{{x}} + \\frac{{L}}{{2}} \\dot{{q}}_{{1}}^{{2}} {A}_{{y}}"
+            ),
+        },
+        Kinematics {
+            body: s("B"),
+            omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}} = {rates} {N}_{{z}}"),
+            alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{B}} = {accelerations} {N}_{{z}}"),
+            velocity_tex: format!(
+                "{{}}^{{N}}\\mathbf{{v}}^{{B^{{*}}}} = L \\dot{{q}}_{{1}} {A}_{{x}} + \\frac{{L}}{{2}} {rates} {B}_{{x}}"
+            ),
+            acceleration_tex: format!(
+                "{{}}^{{N}}\\mathbf{{a}}^{{B^{{*}}}} = L \\ddot{{q}}_{{1}} {A}_{{x}} + L \\dot{{q}}_{{1}}^{{2}} {A}_{{y}} \
+                 + \\frac{{L}}{{2}} {accelerations} {B}_{{x}} + \\frac{{L}}{{2}} {rates}^{{2}} {B}_{{y}}"
+            ),
+        },
+    ]
+}
+
+fn equations() -> Vec<Equation> {
+    let loads = |body: &str| format!("\\left(-m g {N}_{{y}} - m\\,{{}}^{{N}}\\mathbf{{a}}^{{{body}^{{*}}}}\\right)");
+    let sum_forces = format!("F^{{O}}_{{x}} {N}_{{x}} + F^{{O}}_{{y}} {N}_{{y}} + {} + {}", loads("A"), loads("B"));
+    let c1 = "\\cos(q_{1})";
+    let s1 = "\\sin(q_{1})";
+    let c12 = "\\cos\\left(q_{1} + q_{2}\\right)";
+    let s12 = "\\sin\\left(q_{1} + q_{2}\\right)";
+    let rates = "\\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)";
+    let accelerations = "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)";
+    vec![
+        Equation {
+            label: s("A+B: moments about O"),
+            grouped_tex: format!(
+                "{N}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{A^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} \\ddot{{q}}_{{1}} {N}_{{z}} \
+                 + \\mathbf{{r}}^{{B^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
+                loads("A"),
+                loads("B")
+            ),
+            simplified_tex: format!(
+                "m L^{{2}} \\left(\\frac{{5}}{{3}} + \\cos(q_{{2}})\\right) \\ddot{{q}}_{{1}} + m L^{{2}} \\left(\\frac{{1}}{{3}} + \\frac{{\\cos(q_{{2}})}}{{2}}\\right) \\ddot{{q}}_{{2}} \
+                 - \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\left(2 \\dot{{q}}_{{1}} \\dot{{q}}_{{2}} + \\dot{{q}}_{{2}}^{{2}}\\right) \
+                 + \\frac{{m g L}}{{2}} \\left(3 {s1} + {s12}\\right) = 0"
+            ),
+        },
+        Equation {
+            label: s("B: moments about P"),
+            grouped_tex: format!(
+                "{A}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{B^{{*}}/P}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
+                loads("B")
+            ),
+            simplified_tex: format!(
+                "m L^{{2}} \\left(\\frac{{1}}{{3}} + \\frac{{\\cos(q_{{2}})}}{{2}}\\right) \\ddot{{q}}_{{1}} + \\frac{{m L^{{2}}}}{{3}} \\ddot{{q}}_{{2}} \
+                 + \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\dot{{q}}_{{1}}^{{2}} + \\frac{{m g L}}{{2}} {s12} = 0"
+            ),
+        },
+        Equation {
+            label: s("A+B: forces along x"),
+            grouped_tex: format!("{N}_{{x}} \\cdot \\left({sum_forces}\\right) = 0"),
+            simplified_tex: format!(
+                "F^{{O}}_{{x}} - m L \\left(\\frac{{3}}{{2}} \\left({c1} \\ddot{{q}}_{{1}} - {s1} \\dot{{q}}_{{1}}^{{2}}\\right) \
+                 + \\frac{{1}}{{2}} \\left({c12} {accelerations} - {s12} {rates}^{{2}}\\right)\\right) = 0"
+            ),
+        },
+        Equation {
+            label: s("A+B: forces along y"),
+            grouped_tex: format!("{N}_{{y}} \\cdot \\left({sum_forces}\\right) = 0"),
+            simplified_tex: format!(
+                "F^{{O}}_{{y}} - 2 m g - m L \\left(\\frac{{3}}{{2}} \\left({s1} \\ddot{{q}}_{{1}} + {c1} \\dot{{q}}_{{1}}^{{2}}\\right) \
+                 + \\frac{{1}}{{2}} \\left({s12} {accelerations} + {c12} {rates}^{{2}}\\right)\\right) = 0"
+            ),
+        },
+    ]
+}
+
+fn matrix() -> MatrixForm {
+    let a = [
+        ["m L^{2} \\left(\\frac{5}{3} + \\cos(q_{2})\\right)", "m L^{2} \\left(\\frac{1}{3} + \\frac{\\cos(q_{2})}{2}\\right)", "0", "0"],
+        ["m L^{2} \\left(\\frac{1}{3} + \\frac{\\cos(q_{2})}{2}\\right)", "\\frac{m L^{2}}{3}", "0", "0"],
+        ["-\\frac{m L}{2} \\left(3 \\cos(q_{1}) + \\cos\\left(q_{1} + q_{2}\\right)\\right)", "-\\frac{m L}{2} \\cos\\left(q_{1} + q_{2}\\right)", "1", "0"],
+        ["-\\frac{m L}{2} \\left(3 \\sin(q_{1}) + \\sin\\left(q_{1} + q_{2}\\right)\\right)", "-\\frac{m L}{2} \\sin\\left(q_{1} + q_{2}\\right)", "0", "1"],
+    ];
+    let b = [
+        "\\frac{m L^{2}}{2} \\sin(q_{2}) \\left(2 \\dot{q}_{1} \\dot{q}_{2} + \\dot{q}_{2}^{2}\\right) - \\frac{m g L}{2} \\left(3 \\sin(q_{1}) + \\sin\\left(q_{1} + q_{2}\\right)\\right)",
+        "-\\frac{m L^{2}}{2} \\sin(q_{2}) \\dot{q}_{1}^{2} - \\frac{m g L}{2} \\sin\\left(q_{1} + q_{2}\\right)",
+        "-\\frac{m L}{2} \\left(3 \\sin(q_{1}) \\dot{q}_{1}^{2} + \\sin\\left(q_{1} + q_{2}\\right) \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2}\\right)",
+        "2 m g + \\frac{m L}{2} \\left(3 \\cos(q_{1}) \\dot{q}_{1}^{2} + \\cos\\left(q_{1} + q_{2}\\right) \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2}\\right)",
+    ];
+    let rows: Vec<String> = a.iter().map(|row| row.join(" & ")).collect();
+    MatrixForm {
+        whole: Some(WholeMatrix {
+            a_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ ")),
+            x_tex: s("\\begin{bmatrix} \\ddot{q}_{1} \\\\ \\ddot{q}_{2} \\\\ F^{O}_{x} \\\\ F^{O}_{y} \\end{bmatrix}"),
+            b_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ ")),
+        }),
+        entries: Vec::new(),
+    }
+}
+
+fn simulation() -> Simulation {
+    Simulation {
+        settings: s("5 s, output every 0.01 s, tolerance 1e-9"),
+        checks: vec![
+            Check { name: s("energy drift (relative)"), value: s("3.1e-10"), tolerance: s("1e-6"), passed: true },
+            Check { name: s("agreement with Kane's method"), value: s("4.4e-15"), tolerance: s("1e-9"), passed: true },
+            Check {
+                name: s("small-oscillation period, slow mode (s)"),
+                value: s("1.65772"),
+                tolerance: s("1.65772 ± 0.1%"),
+                passed: true,
+            },
+        ],
+        plots: vec![
+            plot("coordinates", "The coordinates against time", "q_{1}", "q_{2}", "rad"),
+            plot("energy", "Kinetic, potential and total energy against time", "T", "V", "J"),
+        ],
+        note: s("Every check passed: the equations conserve energy and agree with the second method."),
+    }
+}
+
+fn plot(kind: &str, title: &str, first: &str, second: &str, unit: &str) -> Plot {
+    let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"320\" height=\"120\" viewBox=\"0 0 320 120\">\
+        <polyline fill=\"none\" stroke=\"#1f77b4\" points=\"0,40 40,80 80,100 120,70 160,30 200,20 240,50 280,90 320,100\"/>\
+        <polyline fill=\"none\" stroke=\"#d62728\" points=\"0,60 40,30 80,50 120,90 160,80 200,40 240,30 280,60 320,70\"/>\
+        </svg>";
+    let pgfplots = format!(
+        "\\begin{{tikzpicture}}\n\\begin{{axis}}[width=0.9\\linewidth, height=5cm, xlabel={{$t$ (s)}}, ylabel={{{unit}}}]\n\
+         \\addplot[blue, no marks] coordinates {{(0,0.5) (0.5,-0.1) (1,-0.4) (1.5,0.2) (2,0.5)}};\n\\addlegendentry{{${first}$}}\n\
+         \\addplot[red, no marks] coordinates {{(0,0) (0.5,0.3) (1,-0.2) (1.5,-0.3) (2,0.1)}};\n\\addlegendentry{{${second}$}}\n\
+         \\end{{axis}}\n\\end{{tikzpicture}}"
+    );
+    Plot { kind: s(kind), title: s(title), svg_file: format!("{kind}.svg"), image_svg: s(svg), pgfplots_latex: pgfplots }
+}
