@@ -12,12 +12,35 @@ fn rendered(solution: &Solution, format: Format, student: bool) -> String {
     render(solution, format, None, student).unwrap_or_else(|e| panic!("{format:?}: {e}"))
 }
 
-/// A fresh scratch directory for this test.
-fn scratch(name: &str) -> PathBuf {
+/// A fresh scratch directory, removed when the test passes and kept for a look when it fails.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn join(&self, path: impl AsRef<Path>) -> PathBuf {
+        self.0.join(path)
+    }
+}
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+}
+
+fn scratch(name: &str) -> Scratch {
     let dir = std::env::temp_dir().join(format!("mbd-tutor-render-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("the temporary directory is writable");
-    dir
+    Scratch(dir)
 }
 
 /// Whether LaTeX can be checked here. Without pdflatex the check is skipped with a notice,
@@ -185,4 +208,94 @@ fn template_errors_name_the_template_and_the_cause() {
     std::fs::write(dir.join("solution.tex.tera"), "{% if %}\n").expect("writable");
     let error = render(&sample(), Format::Latex, Some(&dir), false).expect_err("a syntax error fails");
     assert!(error.to_string().contains("solution.tex.tera"), "{error}");
+}
+
+fn problem_files() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("problems");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("problems/ is readable")
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|path| path.extension().is_some_and(|e| e == "json"))
+        .collect();
+    files.sort();
+    files
+}
+
+fn file_stem(path: &Path) -> String {
+    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+}
+
+/// Every problem of `problems/`, as the pipeline builds it, in every format; every `.tex`
+/// (solution and handout) compiles.
+#[test]
+fn every_problem_renders_and_its_latex_compiles() {
+    let mut documents = Vec::new();
+    for path in problem_files() {
+        let problem = mbd_tutor::problem::load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let solution = mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw);
+        for student in [false, true] {
+            let html = rendered(&solution, Format::Html, student);
+            assert!(html.contains("<math") && !html.to_lowercase().contains("<script"), "{}", path.display());
+            assert!(!html.contains("code class=\"tex\""), "{}: some LaTeX did not convert", path.display());
+            rendered(&solution, Format::Markdown, student);
+            let name = format!("{}{}", file_stem(&path), if student { "-student" } else { "" });
+            documents.push((name, rendered(&solution, Format::Latex, student)));
+        }
+    }
+    assert!(!documents.is_empty(), "no problems found");
+    if !pdflatex_present() {
+        return;
+    }
+    let dir = scratch("problems");
+    // Two at a time: pdflatex is single-threaded and most of the time of this test.
+    let (first, second) = documents.split_at(documents.len() / 2);
+    std::thread::scope(|scope| {
+        for half in [first, second] {
+            let dir: &Path = &dir;
+            scope.spawn(move || half.iter().for_each(|(name, source)| drop(compile(dir, name, source))));
+        }
+    });
+}
+
+fn binary() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
+}
+
+#[test]
+fn explain_writes_one_problem_to_a_file() {
+    let dir = scratch("explain-file");
+    let target = dir.join("pendulum.html");
+    let problem = problem_files().into_iter().next().expect("a problem");
+    let output = binary().args(["explain", "--format", "html", "-o"]).arg(&target).arg(&problem).output().expect("runs");
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(output.stdout.is_empty());
+    let html = std::fs::read_to_string(&target).expect("written");
+    assert!(html.starts_with("<!DOCTYPE html>") && html.contains("<math"));
+}
+
+#[test]
+fn explain_directory_goes_on_past_failures_and_lists_them() {
+    let input = scratch("batch-in");
+    let out_parent = scratch("batch-out");
+    let out = out_parent.join("nested");
+    let problems = problem_files();
+    for path in problems.iter().take(2) {
+        std::fs::copy(path, input.join(path.file_name().expect("a file name"))).expect("copied");
+    }
+    std::fs::write(input.join("a-broken.json"), "{ \"title\": \"broken\" ").expect("writable");
+    std::fs::write(input.join("notes.txt"), "not a problem").expect("writable");
+    std::fs::create_dir_all(input.join("sub")).expect("writable");
+    std::fs::write(input.join("sub").join("skipped.json"), "{}").expect("writable");
+    let output = binary().args(["explain", "--format", "latex"]).arg(&*input).arg("-o").arg(&out).output().expect("runs");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("1 of 3 problems failed") && stderr.contains("a-broken.json"), "{stderr}");
+    assert!(!stderr.contains("skipped.json"), "{stderr}");
+    for path in problems.iter().take(2) {
+        assert!(out.join(format!("{}.tex", file_stem(path))).is_file(), "{} not written", path.display());
+    }
+    assert!(!out.join("a-broken.tex").exists());
+    // A directory needs -o.
+    let output = binary().args(["explain"]).arg(&*input).output().expect("runs");
+    assert_eq!(output.status.code(), Some(2));
 }

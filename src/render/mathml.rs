@@ -50,11 +50,11 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
         // The first line of the parser's message; the rest is a drawing of the input.
         return Err(error(e.to_string().lines().next().unwrap_or_default().to_string()));
     }
-    let mut config = RenderConfig::default();
-    config.display_mode = match display {
+    let display_mode = match display {
         Display::Inline => DisplayMode::Inline,
         Display::Block => DisplayMode::Block,
     };
+    let config = RenderConfig { display_mode, ..RenderConfig::default() };
     let mut out = String::new();
     push_mathml(&mut out, events.into_iter(), config).map_err(|e| error(e.to_string()))?;
     // Our `mover`s are accents (`\hat`, `\dot`, `\ddot`): marked so, they sit close to the letter.
