@@ -81,28 +81,24 @@ pub fn run(args: Args) -> Result<(), Error> {
     if args.common.problem.is_dir() {
         return run_directory(&args);
     }
-    let output = args.common.output.as_deref();
-    let stem = match output {
-        Some(path) => file_stem(path),
-        None => file_stem(&args.common.problem),
-    };
-    explain_file(&args, &args.common.problem, output, &stem)
+    explain_file(&args, &args.common.problem, args.common.output.as_deref())
 }
 
 /// Explains one problem into `output` (standard output when `None`); plots go beside it
-/// as `STEM-KIND.svg`.
-fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>, stem: &str) -> Result<(), Error> {
+/// as `STEM-KIND.svg`, `STEM` being the output's file name without extension.
+fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
     let common = Common { problem: problem_path.to_path_buf(), ..args.common.clone() };
     let problem = super::load_with_overrides(&common)?;
     let mut solution: Solution = render::build::solution(&problem, super::method(args.common.method));
     for plot in &mut solution.simulation.plots {
-        plot.svg_file = format!("{stem}-{}.svg", plot.kind);
+        // On standard output there is nowhere to put plot files, so nothing refers to one.
+        plot.svg_file = output.map(|path| format!("{}-{}.svg", file_stem(path), plot.kind)).unwrap_or_default();
     }
     let text = render::render(&solution, args.format.into(), args.templates.as_deref(), args.student)?;
     if let Some(path) = output {
         // The plots first, so that a document never refers to a plot that is not there.
         let directory = path.parent().unwrap_or(Path::new(""));
-        for plot in solution.simulation.plots.iter().filter(|p| !p.image_svg.is_empty()) {
+        for plot in solution.simulation.plots.iter().filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty()) {
             write_output(Some(&directory.join(&plot.svg_file)), plot.image_svg.as_bytes())?;
         }
     }
@@ -137,7 +133,7 @@ fn run_directory(args: &Args) -> Result<(), Error> {
         let stem = file_stem(path);
         progress.show(index, &stem);
         let target = out.join(format!("{stem}.{}", format.extension()));
-        if let Err(error) = explain_file(args, path, Some(&target), &stem) {
+        if let Err(error) = explain_file(args, path, Some(&target)) {
             failures.push((path.clone(), with_causes(&error)));
         }
     }

@@ -290,7 +290,8 @@ pub struct Plot {
     pub kind: String,
     /// The caption (plain text).
     pub title: String,
-    /// The SVG file name the Markdown refers to, relative to the output, e.g. `pendulum-energy.svg`.
+    /// The SVG file name the Markdown refers to, relative to the output, e.g.
+    /// `pendulum-energy.svg`; empty when no file is written (output to standard output).
     pub svg_file: String,
     /// The SVG document, inlined into HTML.
     pub image_svg: String,
