@@ -214,21 +214,28 @@ pub fn write_out(model: &Model, actions: &[Action], inertia: &Inertia, candidate
     }
 }
 
-/// A generic state (seeded, so the choice is the same every run) for numeric rank tests.
-pub fn generic_values(model: &Model) -> Values {
-    let mut values = model.values.clone();
+/// States at which a choice of rows must be nonsingular: the initial state and a few generic
+/// ones (seeded, so the choice is the same every run). Requiring rank at all of them keeps the
+/// planner away from rows that only look independent at one state.
+pub fn sample_states(model: &Model) -> Vec<Values> {
+    let problem = model.problem;
     let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut next = || {
         seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
-        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 1.4 - 0.7
+        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     };
-    for i in 0..model.problem.coordinates.len() {
-        for order in 0..2 {
-            values.set(model.problem.coordinate_symbol(i, order), 0.3 + next());
+    let mut states = Vec::new();
+    for sample in 0..4 {
+        let mut values = model.values.clone();
+        for (i, c) in problem.coordinates.iter().enumerate() {
+            let (q, u) = if sample == 0 { (c.initial, c.rate) } else { (c.initial + next(), c.rate + next()) };
+            values.set(problem.coordinate_symbol(i, 0), q);
+            values.set(problem.coordinate_symbol(i, 1), u);
         }
+        values.set(Symbol::Time, 0.37 * sample as f64);
+        states.push(values);
     }
-    values.set(Symbol::Time, 0.37);
-    values
+    states
 }
 
 /// The coefficients of the unknowns in a row, at a generic state.
@@ -268,7 +275,23 @@ pub fn choose(
     candidates: Vec<Candidate>,
     wanted: &[Symbol],
 ) -> Choice {
-    let values = generic_values(model);
+    let states = sample_states(model);
+    let choice = choose_at(model, actions, inertia, candidates.clone(), wanted, &states);
+    if choice.rows.len() == wanted.len() {
+        return choice;
+    }
+    // The initial state itself may be singular (gimbal lock, say): plan on generic states.
+    choose_at(model, actions, inertia, candidates, wanted, &states[1..])
+}
+
+fn choose_at(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    candidates: Vec<Candidate>,
+    wanted: &[Symbol],
+    states: &[Values],
+) -> Choice {
     let mut written: Vec<(usize, Equation)> = Vec::new();
     let mut rejected: Vec<(usize, Rejected)> = Vec::new();
     for (index, candidate) in candidates.into_iter().enumerate() {
@@ -280,15 +303,16 @@ pub fn choose(
             rejected.push((index, Rejected { candidate, reason }));
         }
     }
-    written.sort_by_key(|(i, e)| (e.expression.operation_count(), *i));
-    let mut basis: Vec<Vec<f64>> = Vec::new();
+    // Sparse rows first (fewest unknowns), then the fewest terms.
+    written.sort_by_key(|(i, e)| (e.unknowns.len(), e.expression.operation_count(), *i));
+    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
     let mut chosen: Vec<(usize, Equation)> = Vec::new();
     for (index, equation) in written {
         let reason = if equation.unknowns.is_empty() {
             Some("contains no unknown".to_string())
-        } else if basis.len() == wanted.len() {
+        } else if bases[0].len() == wanted.len() {
             Some("not needed: the rows chosen already determine every unknown".to_string())
-        } else if !adds_rank(&mut basis, &coefficient_row(&equation, wanted, &values)) {
+        } else if !adds_rank_everywhere(&mut bases, &equation, wanted, states) {
             Some("adds nothing new: it follows from the rows already chosen".to_string())
         } else {
             None
@@ -309,6 +333,18 @@ pub fn choose(
     chosen.sort_by_key(|(i, _)| *i);
     rejected.sort_by_key(|(i, _)| *i);
     Choice { rows: chosen.into_iter().map(|(_, e)| e).collect(), rejected: rejected.into_iter().map(|(_, r)| r).collect() }
+}
+
+/// Whether a row adds rank at every sample state; the bases grow only when it does.
+fn adds_rank_everywhere(bases: &mut [Vec<Vec<f64>>], equation: &Equation, wanted: &[Symbol], states: &[Values]) -> bool {
+    let mut trial: Vec<Vec<Vec<f64>>> = bases.to_vec();
+    for (basis, values) in trial.iter_mut().zip(states) {
+        if !adds_rank(basis, &coefficient_row(equation, wanted, values)) {
+            return false;
+        }
+    }
+    bases.clone_from_slice(&trial);
+    true
 }
 
 fn unwanted_reason(unwanted: &[&Symbol]) -> String {
