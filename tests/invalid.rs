@@ -43,7 +43,7 @@ fn every_invalid_problem_is_rejected_with_its_paths() {
 
 #[test]
 fn a_valid_problem_is_summarized() {
-    let problem = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/all-joints-3d.json");
+    let problem = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/validation/all-joints-3d.json");
     let output = Command::new(env!("CARGO_BIN_EXE_mbd-tutor")).args(["check", problem]).output().unwrap();
     assert_eq!(output.status.code(), Some(0));
     assert_eq!(
@@ -54,7 +54,7 @@ fn a_valid_problem_is_summarized() {
 
 #[test]
 fn set_overrides_are_checked() {
-    let problem = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/all-joints-3d.json");
+    let problem = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/validation/all-joints-3d.json");
     let run = |set: &str| Command::new(env!("CARGO_BIN_EXE_mbd-tutor")).args(["check", problem, "--set", set]).output().unwrap();
     assert_eq!(run("m=2,L=0.4").status.code(), Some(0));
     let negative = run("M=-1");

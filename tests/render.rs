@@ -232,7 +232,8 @@ fn every_problem_renders_and_its_latex_compiles() {
     let mut documents = Vec::new();
     for path in problem_files() {
         let problem = mbd_tutor::problem::load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let solution = mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw);
+        let solution = mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         for student in [false, true] {
             let html = rendered(&solution, Format::Html, student);
             assert!(html.contains("<math") && !html.to_lowercase().contains("<script"), "{}", path.display());

@@ -89,7 +89,9 @@ pub fn run(args: Args) -> Result<(), Error> {
 fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
     let common = Common { problem: problem_path.to_path_buf(), ..args.common.clone() };
     let problem = super::load_with_overrides(&common)?;
-    let mut solution: Solution = render::build::solution(&problem, super::method(args.common.method));
+    let method = super::method(args.common.method);
+    let mut solution: Solution =
+        if args.student { render::build::setup(&problem, method) } else { render::build::solution(&problem, method)? };
     for plot in &mut solution.simulation.plots {
         // On standard output there is nowhere to put plot files, so nothing refers to one.
         plot.svg_file = output.map(|path| format!("{}-{}.svg", file_stem(path), plot.kind)).unwrap_or_default();

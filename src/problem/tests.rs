@@ -66,7 +66,7 @@ fn the_format_page_example_loads() {
 
 #[test]
 fn a_3d_problem_with_every_joint_type_loads() {
-    let p = load(include_str!("../../problems/all-joints-3d.json")).unwrap();
+    let p = load(include_str!("../../problems/validation/all-joints-3d.json")).unwrap();
     assert_eq!(p.dimension, Dimension::Three);
     let kinds: Vec<JointKind> = p.joints.iter().map(|j| j.kind).collect();
     use JointKind::*;

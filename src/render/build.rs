@@ -10,8 +10,19 @@ use crate::numeric::format::fixed;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 
-/// The worked solution of `problem` by `method`, as far as it is known.
-pub fn solution(problem: &Problem, method: Method) -> Solution {
+/// The whole worked solution of `problem` by `method`: step 1 from the problem, steps 2
+/// to 6 from the derivation and the simulation.
+///
+/// # Errors
+/// When the equations cannot be derived or solved at the initial state.
+pub fn solution(problem: &Problem, method: Method) -> Result<Solution, crate::Error> {
+    let mut solution = setup(problem, method);
+    super::derived::fill(&mut solution, problem, method)?;
+    Ok(solution)
+}
+
+/// What the problem alone gives: title, statement and step 1 (also the student's handout).
+pub fn setup(problem: &Problem, method: Method) -> Solution {
     Solution {
         title: problem.title.clone(),
         statement: problem.statement.clone(),

@@ -6,6 +6,7 @@
 //! can restyle a handout by passing a directory of replacements.
 
 pub mod build;
+pub mod derived;
 pub mod context;
 pub mod escape;
 pub mod mathml;

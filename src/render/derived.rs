@@ -1,0 +1,362 @@
+//! Steps 2 to 6 of the worked solution: what the derivation and the simulation give,
+//! turned into the strings and tables of [`Solution`].
+
+use super::context::{
+    Check, Equation as EquationView, Force, FreeBody, InitialValue, Kinematics, MatrixEntry, MatrixForm, Plan, PlanRow,
+    Plot, Reaction, Rejected as RejectedView, Solution, WholeMatrix,
+};
+use crate::equations::rows::{is_external, Equation, Sum};
+use crate::equations::{derive, Derivation, Method};
+use crate::mechanics::{Model, Vector};
+use crate::numeric::checks::{energy_check, method_agreement, small_oscillation};
+use crate::numeric::evaluate::Compiled;
+use crate::numeric::format::fixed;
+use crate::numeric::simulate::simulate;
+use crate::numeric::system::System;
+use crate::plan::forces::{ActionKind, Category};
+use crate::problem::{BodyId, Problem};
+use crate::symbolic::print::{latex, latex_unit_vector};
+use crate::symbolic::simplify::simplify;
+use crate::symbolic::{Expr, Node, Symbol};
+use crate::Error;
+
+/// Fills steps 2 to 6 of `solution` from the derivation of `problem` by `method`.
+///
+/// # Errors
+/// When the equations cannot be derived or solved at the initial state.
+pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Result<(), Error> {
+    let derivation = derive(problem, method)?;
+    let model = &derivation.model;
+    solution.free_bodies = free_bodies(&derivation);
+    solution.plan = plan(&derivation);
+    solution.kinematics = kinematics(model);
+    solution.equations = derivation.rows.iter().map(|row| equation_view(&derivation, row)).collect();
+    solution.matrix = matrix(&derivation);
+    let compiled = Compiled::new(&derivation);
+    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let initial = compiled.solve(0.0, &q0, &rates0)?;
+    solution.initial_values = problem
+        .coordinates
+        .iter()
+        .enumerate()
+        .map(|(i, c)| InitialValue {
+            name_tex: latex(&problem.coordinate_expr(i, 2)),
+            value: fixed(initial.accelerations[i]),
+            unit: match c.kind {
+                crate::problem::CoordinateKind::Angle => "rad/s^2".into(),
+                crate::problem::CoordinateKind::Distance => "m/s^2".into(),
+            },
+        })
+        .collect();
+    solution.reactions = initial
+        .reactions
+        .iter()
+        .map(|(joint, f, m)| {
+            let parent = problem.joints.iter().find(|j| &j.name == joint).map(|j| j.parent).unwrap_or(BodyId::GROUND);
+            let frame = problem.body_name(parent);
+            Reaction {
+                joint: joint.clone(),
+                force: triple(f),
+                moment: triple(m),
+                force_tex: numeric_vector_tex(frame, f, "N"),
+                moment_tex: numeric_vector_tex(frame, m, "N\\,m"),
+            }
+        })
+        .collect();
+    simulation(solution, problem, &compiled, &q0, &rates0);
+    Ok(())
+}
+
+fn triple(v: &[f64; 3]) -> String {
+    format!("({}, {}, {})", fixed(v[0]), fixed(v[1]), fixed(v[2]))
+}
+
+fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
+    let terms: Vec<String> = (0..3)
+        .filter(|&k| fixed(v[k]) != "0")
+        .map(|k| format!("{} {}", fixed(v[k]), latex_unit_vector(frame, k as u8)))
+        .collect();
+    if terms.is_empty() {
+        return "\\mathbf{0}".into();
+    }
+    format!("\\left({}\\right)\\,\\mathrm{{{unit}}}", terms.join(" + ").replace("+ -", "- "))
+}
+
+/// A vector as a sum of components times unit vectors, each component simplified.
+pub fn vector_tex(model: &Model, v: &Vector) -> String {
+    let mut terms: Vec<String> = Vec::new();
+    for (frame, components) in v.parts() {
+        for (axis, c) in components.iter().enumerate() {
+            let c = simplify(c);
+            if c.is_zero() {
+                continue;
+            }
+            let unit = latex_unit_vector(model.frames.name(*frame), axis as u8);
+            let text = match c.node() {
+                Node::Add(_) => format!("\\left({}\\right) {unit}", latex(&c)),
+                _ if c.is_one() => unit,
+                _ => format!("{} {unit}", latex(&c)),
+            };
+            terms.push(text);
+        }
+    }
+    if terms.is_empty() {
+        return "\\mathbf{0}".into();
+    }
+    let mut out = terms[0].clone();
+    for t in &terms[1..] {
+        match t.strip_prefix('-') {
+            Some(rest) => out.push_str(&format!(" - {rest}")),
+            None => out.push_str(&format!(" + {t}")),
+        }
+    }
+    out
+}
+
+/// The shortest way to write a vector among the frames `N`, the body's and its parent's.
+fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
+    let mut frames = vec![body, BodyId::GROUND];
+    if let Some(parent) = model.frames.info(body).parent {
+        frames.push(parent);
+    }
+    let mut best: Option<(usize, Vector)> = None;
+    for frame in frames {
+        let written = v.expressed_in(frame, &model.frames).map(simplify);
+        let length = written.operation_count();
+        if best.as_ref().is_none_or(|(l, _)| length < *l) {
+            best = Some((length, written));
+        }
+    }
+    best.map(|(_, w)| vector_tex(model, &w)).unwrap_or_default()
+}
+
+fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
+    bodies.iter().map(|b| problem.body_name(*b).to_string()).collect::<Vec<_>>().join(" + ")
+}
+
+fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let mut sets: Vec<Vec<BodyId>> = Vec::new();
+    for row in &derivation.rows {
+        if !sets.contains(&row.free_body) {
+            sets.push(row.free_body.clone());
+        }
+    }
+    sets.iter()
+        .map(|set| {
+            let mut view = FreeBody { name: bodies_name(problem, set), bodies: bodies_name(problem, set), ..FreeBody::default() };
+            for action in derivation.actions.iter().filter(|a| is_external(a, set)) {
+                let (vector_tex, point_tex) = match &action.kind {
+                    ActionKind::Force { offset, force } => {
+                        let at = Vector::new(action.body, offset.clone());
+                        (vector_tex(model, force), format!("\\text{{at }} {}", vector_tex(model, &at)))
+                    }
+                    ActionKind::Couple { torque } => (vector_tex(model, torque), "\\text{couple}".into()),
+                };
+                let force = Force { label: action.label.clone(), vector_tex, point_tex };
+                match action.category {
+                    Category::Contact => view.contact.push(force),
+                    Category::Distance => view.distance.push(force),
+                }
+            }
+            for &body in set {
+                let name = problem.body_name(body);
+                let mass = latex(&model.bodies[body.0].mass);
+                view.inertia.push(Force {
+                    label: format!("inertia force of {name}"),
+                    vector_tex: format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{name}^*}}"),
+                    point_tex: format!("\\text{{at }} {name}^*"),
+                });
+                view.inertia.push(Force {
+                    label: format!("inertia torque of {name}"),
+                    vector_tex: format!(
+                        "-\\boldsymbol{{\\alpha}}^{{{name}}} \\cdot \\mathbf{{I}}^{{{name}}} - \\boldsymbol{{\\omega}}^{{{name}}} \\times \\mathbf{{I}}^{{{name}}} \\cdot \\boldsymbol{{\\omega}}^{{{name}}}"
+                    ),
+                    point_tex: "\\text{couple}".into(),
+                });
+            }
+            view
+        })
+        .collect()
+}
+
+fn sum_text(sum: &Sum) -> String {
+    match sum {
+        Sum::Force => "F".into(),
+        Sum::Moment { point, .. } => format!("M about {point}"),
+        Sum::Generalized { speed } => format!("F_r + F_r* for {speed}"),
+    }
+}
+
+fn unknowns_tex(unknowns: &[Symbol]) -> String {
+    unknowns.iter().map(|u| latex(&Expr::sym(u.clone()))).collect::<Vec<_>>().join(", ")
+}
+
+fn plan(derivation: &Derivation) -> Plan {
+    let problem = derivation.model.problem;
+    let rows = derivation
+        .rows
+        .iter()
+        .map(|row| PlanRow {
+            free_body: bodies_name(problem, &row.free_body),
+            equation: sum_text(&row.sum),
+            direction_tex: row.direction.as_ref().map(|d| d.latex.clone()).unwrap_or_else(|| "\\text{partial velocities}".into()),
+            unknowns_tex: unknowns_tex(&row.unknowns),
+        })
+        .collect();
+    let rejected = derivation
+        .rejected
+        .iter()
+        .map(|r| RejectedView {
+            free_body: bodies_name(problem, &r.candidate.free_body),
+            equation: sum_text(&r.candidate.sum),
+            direction_tex: r.candidate.direction.latex.clone(),
+            reason: r.reason.clone(),
+        })
+        .collect();
+    let note = match derivation.method {
+        Method::NewtonEuler => format!(
+            "Every body is a free body: {} equations per body; the unknowns are every second derivative and every reaction component.",
+            if problem.dimension == crate::problem::Dimension::Two { 3 } else { 6 }
+        ),
+        Method::MotionLaw => "Rows are chosen so that no unwanted reaction appears: sparse rows first, then the fewest terms, each adding a new equation.".into(),
+        Method::Kane => "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".into(),
+    };
+    Plan {
+        rows,
+        rejected,
+        equations_count: derivation.rows.len(),
+        unknowns_count: derivation.system.unknowns.len(),
+        note,
+    }
+}
+
+fn kinematics(model: &Model) -> Vec<Kinematics> {
+    model
+        .order
+        .iter()
+        .map(|&body| {
+            let state = &model.bodies[body.0];
+            let name = model.problem.body_name(body);
+            Kinematics {
+                body: name.to_string(),
+                omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} = {}", shortest_tex(model, &state.omega, body)),
+                alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{name}}} = {}", shortest_tex(model, &state.alpha, body)),
+                velocity_tex: format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {}", shortest_tex(model, &state.center.velocity, body)),
+                acceleration_tex: format!(
+                    "{{}}^{{N}}\\mathbf{{a}}^{{{name}^*}} = {}",
+                    shortest_tex(model, &state.center.acceleration, body)
+                ),
+            }
+        })
+        .collect()
+}
+
+fn group_tex(e: &Expr) -> String {
+    if e.is_zero() {
+        return "0".into();
+    }
+    let text = latex(e);
+    if e.terms().len() > 1 {
+        format!("\\left[{text}\\right]")
+    } else {
+        text
+    }
+}
+
+fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
+    let problem = derivation.model.problem;
+    let g = &row.groups;
+    let grouped = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque]
+        .iter()
+        .map(|e| group_tex(e))
+        .collect::<Vec<_>>()
+        .join(" + ");
+    let direction = row.direction.as_ref().map(|d| format!(" along {}", d.name)).unwrap_or_default();
+    EquationView {
+        label: format!("{}: {}{direction}", bodies_name(problem, &row.free_body), sum_text(&row.sum)),
+        grouped_tex: format!("{grouped} = 0"),
+        simplified_tex: format!("{} = 0", latex(&simplify(&row.expression))),
+    }
+}
+
+fn matrix(derivation: &Derivation) -> MatrixForm {
+    let system = &derivation.system;
+    let n = system.unknowns.len();
+    let simplified_a: Vec<Vec<Expr>> = system.a.iter().map(|row| row.iter().map(simplify).collect()).collect();
+    let simplified_b: Vec<Expr> = system.b.iter().map(simplify).collect();
+    if n <= 4 {
+        let rows: Vec<String> =
+            simplified_a.iter().map(|row| row.iter().map(latex).collect::<Vec<_>>().join(" & ")).collect();
+        let x: Vec<String> = system.unknowns.iter().map(|u| latex(&Expr::sym(u.clone()))).collect();
+        let b: Vec<String> = simplified_b.iter().map(latex).collect();
+        return MatrixForm {
+            whole: Some(WholeMatrix {
+                a_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ ")),
+                x_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", x.join(" \\\\ ")),
+                b_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ ")),
+            }),
+            entries: Vec::new(),
+        };
+    }
+    let mut entries = Vec::new();
+    for (i, row) in simplified_a.iter().enumerate() {
+        for (j, e) in row.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
+            entries.push(MatrixEntry { row: i + 1, column: (j + 1).to_string(), value_tex: format!("A_{{{},{}}} = {}", i + 1, j + 1, latex(e)) });
+        }
+        entries.push(MatrixEntry { row: i + 1, column: "b".into(), value_tex: format!("b_{{{}}} = {}", i + 1, latex(&simplified_b[i])) });
+    }
+    MatrixForm { whole: None, entries }
+}
+
+fn simulation(solution: &mut Solution, problem: &Problem, compiled: &Compiled, q0: &[f64], rates0: &[f64]) {
+    let trajectory = match simulate(compiled, q0, rates0, &problem.simulate) {
+        Ok(t) => t,
+        Err(e) => {
+            solution.simulation.note = format!("The simulation could not run: {e}");
+            return;
+        }
+    };
+    if let Some(reason) = &trajectory.stopped {
+        solution.simulation.note = format!("The simulation stopped early: {reason}");
+    }
+    let others: Vec<(Method, Compiled)> = Method::ALL
+        .iter()
+        .filter(|m| **m != compiled.method)
+        .filter_map(|&m| derive(problem, m).ok().map(|d| (m, Compiled::new(&d))))
+        .collect();
+    let mut systems: Vec<(&str, &dyn System)> = vec![(compiled.method.name(), compiled as &dyn System)];
+    systems.extend(others.iter().map(|(m, c)| (m.name(), c as &dyn System)));
+    let checks = [
+        energy_check(compiled, &trajectory),
+        method_agreement(&systems, &trajectory, 10),
+        small_oscillation(compiled, q0),
+    ];
+    solution.simulation.checks = checks
+        .into_iter()
+        .flatten()
+        .map(|c| Check { name: c.name, value: fixed(c.value), tolerance: fixed(c.tolerance), passed: c.passed })
+        .collect();
+    let names = compiled.coordinate_names();
+    let coordinate_series: Vec<(String, Vec<(f64, f64)>)> =
+        names.iter().filter_map(|n| trajectory.series(n).map(|s| (n.clone(), s))).collect();
+    let energy_series: Vec<(String, Vec<(f64, f64)>)> = ["kinetic", "potential", "total"]
+        .iter()
+        .filter_map(|n| trajectory.series(n).map(|s| (n.to_string(), s)))
+        .collect();
+    for (kind, title, y_label, series) in [
+        ("coordinates", "Coordinates against time", "coordinate", coordinate_series),
+        ("energy", "Energy against time", "energy (J)", energy_series),
+    ] {
+        let svg = crate::render::plot::line_plot(title, "t (s)", y_label, &series).unwrap_or_default();
+        solution.simulation.plots.push(Plot {
+            kind: kind.into(),
+            title: title.into(),
+            svg_file: String::new(),
+            image_svg: svg,
+            pgfplots_latex: crate::render::plot::pgfplots(title, "t (s)", y_label, &series),
+        });
+    }
+}
