@@ -7,16 +7,23 @@
 use mbd_tutor::equations::{derive, Method};
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::problem::{
-    Body, BodyId, Constant, Coordinate, CoordinateKind, Dimension, Inertia, Joint, JointKind, Problem,
-    SimulateSettings, VectorExpr,
+    Body, BodyId, Constant, Coordinate, CoordinateKind, Dimension, Inertia, Joint, JointKind,
+    Problem, SimulateSettings, VectorExpr,
 };
 use mbd_tutor::symbolic::Expr;
 use std::time::Instant;
 
 /// A planar chain of `n` uniform rods hanging from N, each joined to the previous by a pin.
 pub fn planar_chain(n: usize) -> Problem {
-    let constant = |name: &str, value: f64| Constant { name: name.into(), value, unit: None, description: None };
-    let down = |scale: Expr, frame: usize| VectorExpr { terms: vec![(BodyId(frame), 1, -scale)] };
+    let constant = |name: &str, value: f64| Constant {
+        name: name.into(),
+        value,
+        unit: None,
+        description: None,
+    };
+    let down = |scale: Expr, frame: usize| VectorExpr {
+        terms: vec![(BodyId(frame), 1, -scale)],
+    };
     let (m, l) = (Expr::constant("m"), Expr::constant("L"));
     let bodies = (1..=n)
         .map(|i| Body {
@@ -35,9 +42,15 @@ pub fn planar_chain(n: usize) -> Problem {
             parent: BodyId(i - 1),
             child: BodyId(i),
             coordinates: vec![i - 1],
-            axis: Some(VectorExpr { terms: vec![(BodyId(i - 1), 2, Expr::one())] }),
+            axis: Some(VectorExpr {
+                terms: vec![(BodyId(i - 1), 2, Expr::one())],
+            }),
             sequence: vec![],
-            at: if i == 1 { VectorExpr::default() } else { down(l.clone(), i - 1) },
+            at: if i == 1 {
+                VectorExpr::default()
+            } else {
+                down(l.clone(), i - 1)
+            },
             child_at: VectorExpr::default(),
             path: format!("joints[{}]", i - 1),
         })
@@ -60,7 +73,9 @@ pub fn planar_chain(n: usize) -> Problem {
         dimension: Dimension::Two,
         constants: vec![constant("m", 1.0), constant("L", 0.5), constant("g", 9.81)],
         coordinates,
-        gravity: Some(VectorExpr { terms: vec![(BodyId::GROUND, 1, -Expr::constant("g"))] }),
+        gravity: Some(VectorExpr {
+            terms: vec![(BodyId::GROUND, 1, -Expr::constant("g"))],
+        }),
         bodies,
         joints,
         points: vec![],
@@ -75,7 +90,9 @@ fn main() {
         Some(n) => vec![n],
         None => (1..=20).collect(),
     };
-    println!("| n | method | derive and plan (ms) | operations in A and b | evaluate and solve (µs) |");
+    println!(
+        "| n | method | derive and plan (ms) | operations in A and b | evaluate and solve (µs) |"
+    );
     println!("|---|---|---|---|---|");
     for n in sizes {
         let problem = planar_chain(n);
@@ -92,7 +109,11 @@ fn main() {
                 std::hint::black_box(compiled.solve(0.0, &q, &rates).expect("solves"));
             }
             let solve_us = start.elapsed().as_secs_f64() * 1e6 / repeats as f64;
-            println!("| {n} | {} | {derive_ms:.1} | {} | {solve_us:.2} |", method.name(), compiled.operation_count());
+            println!(
+                "| {n} | {} | {derive_ms:.1} | {} | {solve_us:.2} |",
+                method.name(),
+                compiled.operation_count()
+            );
         }
     }
 }

@@ -60,7 +60,12 @@ pub enum Command {
 /// A usage error naming the malformed item.
 pub fn parse_assignments(items: &[String]) -> Result<Vec<(String, f64)>, crate::Error> {
     let mut out = Vec::new();
-    for item in items.iter().flat_map(|s| s.split(',')).map(str::trim).filter(|s| !s.is_empty()) {
+    for item in items
+        .iter()
+        .flat_map(|s| s.split(','))
+        .map(str::trim)
+        .filter(|s| !s.is_empty())
+    {
         let Some((name, value)) = item.split_once('=') else {
             return Err(crate::Error::Usage(format!("`{item}` is not NAME=VALUE")));
         };
@@ -68,7 +73,9 @@ pub fn parse_assignments(items: &[String]) -> Result<Vec<(String, f64)>, crate::
             crate::Error::Usage(format!("`{}` in `{item}` is not a number", value.trim()))
         })?;
         if !value.is_finite() {
-            return Err(crate::Error::Usage(format!("`{item}`: the value must be finite")));
+            return Err(crate::Error::Usage(format!(
+                "`{item}`: the value must be finite"
+            )));
         }
         out.push((name.trim().to_string(), value));
     }

@@ -9,7 +9,10 @@ pub enum Error {
     /// The command line is wrong (exit status 2).
     Usage(String),
     /// A file could not be read or written.
-    Io { path: PathBuf, source: std::io::Error },
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
     /// The problem is invalid: every error found, each with its JSON path.
     Problem(crate::problem::ProblemErrors),
     /// The problem is valid JSON but describes a system that cannot be built or solved.

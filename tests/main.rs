@@ -1,4 +1,8 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod invalid;
+mod kinematics;
+mod library;
+mod methods;
 mod render;
+mod support;

@@ -9,8 +9,11 @@ fn solve_all(text: &str, q: &[f64], rates: &[f64]) -> Vec<(Method, StateSolution
     Method::ALL
         .iter()
         .map(|&method| {
-            let derivation = derive(&problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
-            let solution = Compiled::new(&derivation).solve(0.0, q, rates).unwrap_or_else(|e| panic!("{e}"));
+            let derivation =
+                derive(&problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
+            let solution = Compiled::new(&derivation)
+                .solve(0.0, q, rates)
+                .unwrap_or_else(|e| panic!("{e}"));
             (method, solution)
         })
         .collect()
@@ -18,7 +21,10 @@ fn solve_all(text: &str, q: &[f64], rates: &[f64]) -> Vec<(Method, StateSolution
 
 fn assert_near(got: f64, expected: f64, what: &str) {
     let tolerance = 1e-9 * expected.abs().max(1.0);
-    assert!((got - expected).abs() <= tolerance, "{what}: got {got}, expected {expected}");
+    assert!(
+        (got - expected).abs() <= tolerance,
+        "{what}: got {got}, expected {expected}"
+    );
 }
 
 const PENDULUM: &str = r#"{
@@ -71,8 +77,11 @@ fn double_pendulum_of_point_masses_matches_the_textbook() {
         - m2 * g * (t1 - 2.0 * t2).sin()
         - 2.0 * (t1 - t2).sin() * m2 * (w2 * w2 * l2 + w1 * w1 * l1 * (t1 - t2).cos()))
         / (l1 * den);
-    let a2 = 2.0 * (t1 - t2).sin()
-        * (w1 * w1 * l1 * (m1 + m2) + g * (m1 + m2) * t1.cos() + w2 * w2 * l2 * m2 * (t1 - t2).cos())
+    let a2 = 2.0
+        * (t1 - t2).sin()
+        * (w1 * w1 * l1 * (m1 + m2)
+            + g * (m1 + m2) * t1.cos()
+            + w2 * w2 * l2 * m2 * (t1 - t2).cos())
         / (l2 * den);
     for (method, s) in solve_all(text, &[q1, q2], &[u1, u2]) {
         assert_near(s.accelerations[0], a1, method.name());
@@ -133,8 +142,16 @@ fn cart_pole_matches_lagrange() {
     let (b1, b2) = (m * l / 2.0 * th.sin() * w * w, -m * g * l / 2.0 * th.sin());
     let det = a11 * a22 - a12 * a12;
     for (method, s) in solve_all(text, &[0.2, th], &[v, w]) {
-        assert_near(s.accelerations[0], (b1 * a22 - a12 * b2) / det, method.name());
-        assert_near(s.accelerations[1], (a11 * b2 - a12 * b1) / det, method.name());
+        assert_near(
+            s.accelerations[0],
+            (b1 * a22 - a12 * b2) / det,
+            method.name(),
+        );
+        assert_near(
+            s.accelerations[1],
+            (a11 * b2 - a12 * b1) / det,
+            method.name(),
+        );
     }
 }
 
@@ -153,7 +170,11 @@ fn bead_on_a_free_rotating_rod() {
     let (r, w, rd) = (0.7, 2.0, 0.5);
     // (J + m r²) θ'' + 2 m r r' θ' = 0 ;  r'' = r θ'²
     for (method, s) in solve_all(text, &[0.1, r], &[w, rd]) {
-        assert_near(s.accelerations[0], -2.0 * m * r * rd * w / (jj + m * r * r), method.name());
+        assert_near(
+            s.accelerations[0],
+            -2.0 * m * r * rd * w / (jj + m * r * r),
+            method.name(),
+        );
         assert_near(s.accelerations[1], r * w * w, method.name());
     }
 }
@@ -179,7 +200,11 @@ fn two_mass_spring_damper() {
     let spring2 = k2 * (x2 - x1 - l2);
     let damper = c * (v2 - v1);
     for (method, s) in solve_all(text, &[x1, x2], &[v1, v2]) {
-        assert_near(s.accelerations[0], (-k1 * (x1 - l1) + spring2 + damper) / m1, method.name());
+        assert_near(
+            s.accelerations[0],
+            (-k1 * (x1 - l1) + spring2 + damper) / m1,
+            method.name(),
+        );
         assert_near(s.accelerations[1], (-spring2 - damper) / m2, method.name());
     }
 }
@@ -208,7 +233,11 @@ fn torque_free_body_with_products_of_inertia_obeys_euler() {
         for k in 0..3 {
             assert_near(s.accelerations[k], 0.0, "translation");
         }
-        let (ang, rate, acc) = ([q[3], q[4], q[5]], [u[3], u[4], u[5]], [s.accelerations[3], s.accelerations[4], s.accelerations[5]]);
+        let (ang, rate, acc) = (
+            [q[3], q[4], q[5]],
+            [u[3], u[4], u[5]],
+            [s.accelerations[3], s.accelerations[4], s.accelerations[5]],
+        );
         // alpha = d/dt omega along q + h (q', q''), by a central difference in h.
         let h = 1e-6;
         let step = |sign: f64| {
@@ -221,10 +250,18 @@ fn torque_free_body_with_products_of_inertia_obeys_euler() {
         let w = omega(ang, rate);
         let iw: [f64; 3] = std::array::from_fn(|i| (0..3).map(|j| inertia[i][j] * w[j]).sum());
         let ia: [f64; 3] = std::array::from_fn(|i| (0..3).map(|j| inertia[i][j] * alpha[j]).sum());
-        let gyro = [w[1] * iw[2] - w[2] * iw[1], w[2] * iw[0] - w[0] * iw[2], w[0] * iw[1] - w[1] * iw[0]];
+        let gyro = [
+            w[1] * iw[2] - w[2] * iw[1],
+            w[2] * iw[0] - w[0] * iw[2],
+            w[0] * iw[1] - w[1] * iw[0],
+        ];
         for i in 0..3 {
             let residual = ia[i] + gyro[i];
-            assert!(residual.abs() < 1e-6, "{}: Euler's equation {i} residual {residual}", method.name());
+            assert!(
+                residual.abs() < 1e-6,
+                "{}: Euler's equation {i} residual {residual}",
+                method.name()
+            );
         }
     }
 }

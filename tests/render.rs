@@ -46,9 +46,17 @@ fn scratch(name: &str) -> Scratch {
 /// Whether LaTeX can be checked here. Without pdflatex the check is skipped with a notice,
 /// except in CI (`CI` set), where skipping would hide a failure.
 fn pdflatex_present() -> bool {
-    let present = Command::new("pdflatex").arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
+    let present = Command::new("pdflatex")
+        .arg("--version")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok();
     if !present {
-        assert!(std::env::var_os("CI").is_none(), "pdflatex is missing, and CI must compile the LaTeX");
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "pdflatex is missing, and CI must compile the LaTeX"
+        );
         eprintln!("notice: pdflatex not found; LaTeX compilation not checked");
     }
     present
@@ -60,7 +68,11 @@ fn compile(dir: &Path, name: &str, source: &str) -> String {
     let tex = dir.join(format!("{name}.tex"));
     std::fs::write(&tex, source).expect("the .tex is writable");
     let output = Command::new("pdflatex")
-        .args(["-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape"])
+        .args([
+            "-interaction=nonstopmode",
+            "-halt-on-error",
+            "-no-shell-escape",
+        ])
         .arg(format!("{name}.tex"))
         .current_dir(dir)
         .stdin(Stdio::null())
@@ -94,7 +106,10 @@ fn large_system_latex_compiles() {
         return;
     }
     let mut solution = sample();
-    let long = (1..=60).map(|i| format!("m L^{{2}} \\cos(q_{{{i}}}) \\ddot{{q}}_{{{i}}}")).collect::<Vec<_>>().join(" + ");
+    let long = (1..=60)
+        .map(|i| format!("m L^{{2}} \\cos(q_{{{i}}}) \\ddot{{q}}_{{{i}}}"))
+        .collect::<Vec<_>>()
+        .join(" + ");
     solution.equations[0].simplified_tex = format!("{long} = 0");
     solution.equations[1].grouped_tex = format!("\\left({long}\\right) = 0");
     solution.matrix.whole = None;
@@ -115,13 +130,21 @@ fn html_is_self_contained_mathml_without_script() {
     let html = rendered(&sample(), Format::Html, false);
     assert!(html.contains("<math"), "no MathML");
     assert!(!html.to_lowercase().contains("<script"), "a script");
-    assert!(!html.contains("http://") || !html.contains("src=\"http"), "a network resource");
-    assert!(!html.contains("code class=\"tex\""), "some LaTeX did not convert to MathML");
+    assert!(
+        !html.contains("http://") || !html.contains("src=\"http"),
+        "a network resource"
+    );
+    assert!(
+        !html.contains("code class=\"tex\""),
+        "some LaTeX did not convert to MathML"
+    );
     // The 4x4 matrix is a MathML table, and q-double-dot is an accent under its subscript.
     assert!(html.contains("<mtable"));
     assert!(html.contains("<msub><mover accent=\"true\"><mrow><mi>q</mi></mrow><mi>¨</mi></mover><mrow><mn>1</mn></mrow></msub>"));
     // Plots are inlined as data URIs.
-    assert!(html.contains("<img alt=\"The coordinates against time\" src=\"data:image/svg+xml;base64,"));
+    assert!(
+        html.contains("<img alt=\"The coordinates against time\" src=\"data:image/svg+xml;base64,")
+    );
     let student = rendered(&sample(), Format::Html, true);
     assert!(student.contains("class=\"blank\"") && !student.contains("Step 5"));
 }
@@ -129,17 +152,24 @@ fn html_is_self_contained_mathml_without_script() {
 #[test]
 fn markdown_math_is_dollar_delimited_and_matches_snapshot() {
     let markdown = rendered(&sample(), Format::Markdown, false);
-    assert!(markdown.contains("| $q_{1}$ | angle of rod A from the downward vertical | O (revolute) | rad | 0.5 | 0 |"));
+    assert!(markdown.contains(
+        "| $q_{1}$ | angle of rod A from the downward vertical | O (revolute) | rad | 0.5 | 0 |"
+    ));
     assert!(markdown.contains("$$\n\\begin{bmatrix}"));
     insta::assert_snapshot!("render_sample_markdown", markdown);
-    insta::assert_snapshot!("render_sample_markdown_student", rendered(&sample(), Format::Markdown, true));
+    insta::assert_snapshot!(
+        "render_sample_markdown_student",
+        rendered(&sample(), Format::Markdown, true)
+    );
 }
 
 /// Every user-text field of the sample replaced by hostile text.
 fn hostile_sample() -> Solution {
     let mut s = sample();
     s.title = HOSTILE.into();
-    s.statement = Some(format!("{HOSTILE}\n\n{{% include \"/etc/passwd\" %}} second paragraph"));
+    s.statement = Some(format!(
+        "{HOSTILE}\n\n{{% include \"/etc/passwd\" %}} second paragraph"
+    ));
     s.constants[0].description = HOSTILE.into();
     s.constants[0].unit = HOSTILE.into();
     s.coordinates[0].description = HOSTILE.into();
@@ -172,7 +202,10 @@ fn hostile_text_is_escaped_in_html_and_never_evaluated() {
     let html = rendered(&hostile_sample(), Format::Html, false);
     assert!(!html.to_lowercase().contains("<script"), "a script");
     assert!(html.contains("&lt;script&gt;alert(1)&lt;&#x2F;script&gt;"));
-    assert!(html.contains("{{ x }}"), "the Tera syntax was not kept as text");
+    assert!(
+        html.contains("{{ x }}"),
+        "the Tera syntax was not kept as text"
+    );
     assert!(html.contains("{% include &quot;&#x2F;etc&#x2F;passwd&quot; %}"));
     assert!(html.contains("100% &amp; $ # _ ~ ^"));
     let student = rendered(&hostile_sample(), Format::Html, true);
@@ -189,9 +222,17 @@ fn hostile_text_is_escaped_in_markdown() {
 #[test]
 fn templates_directory_overrides_only_the_files_it_has() {
     let dir = scratch("templates");
-    std::fs::write(dir.join("solution.md.tera"), "Custom: {{ title }} ({{ coordinates | length }} coordinates)\n").expect("writable");
-    let custom = render(&sample(), Format::Markdown, Some(&dir), false).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(custom, "Custom: Double pendulum of two uniform rods (2 coordinates)\n");
+    std::fs::write(
+        dir.join("solution.md.tera"),
+        "Custom: {{ title }} ({{ coordinates | length }} coordinates)\n",
+    )
+    .expect("writable");
+    let custom =
+        render(&sample(), Format::Markdown, Some(&dir), false).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        custom,
+        "Custom: Double pendulum of two uniform rods (2 coordinates)\n"
+    );
     // No solution.html.tera there: the built-in one is used.
     let html = render(&sample(), Format::Html, Some(&dir), false).unwrap_or_else(|e| panic!("{e}"));
     assert!(html.starts_with("<!DOCTYPE html>"));
@@ -201,12 +242,17 @@ fn templates_directory_overrides_only_the_files_it_has() {
 fn template_errors_name_the_template_and_the_cause() {
     let dir = scratch("broken");
     std::fs::write(dir.join("solution.tex.tera"), "{{ missing_variable }}\n").expect("writable");
-    let error = render(&sample(), Format::Latex, Some(&dir), false).expect_err("an unknown variable fails");
+    let error =
+        render(&sample(), Format::Latex, Some(&dir), false).expect_err("an unknown variable fails");
     let message = error.to_string();
     assert!(message.contains("solution.tex.tera"), "{message}");
-    assert!(message.contains("missing_variable"), "the cause is missing: {message}");
+    assert!(
+        message.contains("missing_variable"),
+        "the cause is missing: {message}"
+    );
     std::fs::write(dir.join("solution.tex.tera"), "{% if %}\n").expect("writable");
-    let error = render(&sample(), Format::Latex, Some(&dir), false).expect_err("a syntax error fails");
+    let error =
+        render(&sample(), Format::Latex, Some(&dir), false).expect_err("a syntax error fails");
     assert!(error.to_string().contains("solution.tex.tera"), "{error}");
 }
 
@@ -222,7 +268,9 @@ fn problem_files() -> Vec<PathBuf> {
 }
 
 fn file_stem(path: &Path) -> String {
-    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+    path.file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
 }
 
 /// Every problem of `problems/`, as the pipeline builds it, in every format; every `.tex`
@@ -231,15 +279,29 @@ fn file_stem(path: &Path) -> String {
 fn every_problem_renders_and_its_latex_compiles() {
     let mut documents = Vec::new();
     for path in problem_files() {
-        let problem = mbd_tutor::problem::load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let solution = mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw)
+        let problem = mbd_tutor::problem::load_file(&path)
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let solution =
+            mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         for student in [false, true] {
             let html = rendered(&solution, Format::Html, student);
-            assert!(html.contains("<math") && !html.to_lowercase().contains("<script"), "{}", path.display());
-            assert!(!html.contains("code class=\"tex\""), "{}: some LaTeX did not convert", path.display());
+            assert!(
+                html.contains("<math") && !html.to_lowercase().contains("<script"),
+                "{}",
+                path.display()
+            );
+            assert!(
+                !html.contains("code class=\"tex\""),
+                "{}: some LaTeX did not convert",
+                path.display()
+            );
             rendered(&solution, Format::Markdown, student);
-            let name = format!("{}{}", file_stem(&path), if student { "-student" } else { "" });
+            let name = format!(
+                "{}{}",
+                file_stem(&path),
+                if student { "-student" } else { "" }
+            );
             documents.push((name, rendered(&solution, Format::Latex, student)));
         }
     }
@@ -253,7 +315,10 @@ fn every_problem_renders_and_its_latex_compiles() {
     std::thread::scope(|scope| {
         for half in [first, second] {
             let dir: &Path = &dir;
-            scope.spawn(move || half.iter().for_each(|(name, source)| drop(compile(dir, name, source))));
+            scope.spawn(move || {
+                half.iter()
+                    .for_each(|(name, source)| drop(compile(dir, name, source)))
+            });
         }
     });
 }
@@ -267,8 +332,17 @@ fn explain_writes_one_problem_to_a_file() {
     let dir = scratch("explain-file");
     let target = dir.join("pendulum.html");
     let problem = problem_files().into_iter().next().expect("a problem");
-    let output = binary().args(["explain", "--format", "html", "-o"]).arg(&target).arg(&problem).output().expect("runs");
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let output = binary()
+        .args(["explain", "--format", "html", "-o"])
+        .arg(&target)
+        .arg(&problem)
+        .output()
+        .expect("runs");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     assert!(output.stdout.is_empty());
     let html = std::fs::read_to_string(&target).expect("written");
     assert!(html.starts_with("<!DOCTYPE html>") && html.contains("<math"));
@@ -287,16 +361,33 @@ fn explain_directory_goes_on_past_failures_and_lists_them() {
     std::fs::write(input.join("notes.txt"), "not a problem").expect("writable");
     std::fs::create_dir_all(input.join("sub")).expect("writable");
     std::fs::write(input.join("sub").join("skipped.json"), "{}").expect("writable");
-    let output = binary().args(["explain", "--format", "latex"]).arg(&*input).arg("-o").arg(&out).output().expect("runs");
+    let output = binary()
+        .args(["explain", "--format", "latex"])
+        .arg(&*input)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .expect("runs");
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(1), "{stderr}");
-    assert!(stderr.contains("1 of 3 problems failed") && stderr.contains("a-broken.json"), "{stderr}");
+    assert!(
+        stderr.contains("1 of 3 problems failed") && stderr.contains("a-broken.json"),
+        "{stderr}"
+    );
     assert!(!stderr.contains("skipped.json"), "{stderr}");
     for path in problems.iter().take(2) {
-        assert!(out.join(format!("{}.tex", file_stem(path))).is_file(), "{} not written", path.display());
+        assert!(
+            out.join(format!("{}.tex", file_stem(path))).is_file(),
+            "{} not written",
+            path.display()
+        );
     }
     assert!(!out.join("a-broken.tex").exists());
     // A directory needs -o.
-    let output = binary().args(["explain"]).arg(&*input).output().expect("runs");
+    let output = binary()
+        .args(["explain"])
+        .arg(&*input)
+        .output()
+        .expect("runs");
     assert_eq!(output.status.code(), Some(2));
 }

@@ -61,9 +61,19 @@ pub struct BatchError {
 
 impl fmt::Display for BatchError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} of {} problems failed:", self.failures.len(), self.total)?;
+        write!(
+            f,
+            "{} of {} problems failed:",
+            self.failures.len(),
+            self.total
+        )?;
         for (path, error) in &self.failures {
-            write!(f, "\n  {}: {}", path.display(), error.replace('\n', "\n    "))?;
+            write!(
+                f,
+                "\n  {}: {}",
+                path.display(),
+                error.replace('\n', "\n    ")
+            )?;
         }
         Ok(())
     }
@@ -87,21 +97,42 @@ pub fn run(args: Args) -> Result<(), Error> {
 /// Explains one problem into `output` (standard output when `None`); plots go beside it
 /// as `STEM-KIND.svg`, `STEM` being the output's file name without extension.
 fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
-    let common = Common { problem: problem_path.to_path_buf(), ..args.common.clone() };
+    let common = Common {
+        problem: problem_path.to_path_buf(),
+        ..args.common.clone()
+    };
     let problem = super::load_with_overrides(&common)?;
     let method = super::method(args.common.method);
-    let mut solution: Solution =
-        if args.student { render::build::setup(&problem, method) } else { render::build::solution(&problem, method)? };
+    let mut solution: Solution = if args.student {
+        render::build::setup(&problem, method)
+    } else {
+        render::build::solution(&problem, method)?
+    };
     for plot in &mut solution.simulation.plots {
         // On standard output there is nowhere to put plot files, so nothing refers to one.
-        plot.svg_file = output.map(|path| format!("{}-{}.svg", file_stem(path), plot.kind)).unwrap_or_default();
+        plot.svg_file = output
+            .map(|path| format!("{}-{}.svg", file_stem(path), plot.kind))
+            .unwrap_or_default();
     }
-    let text = render::render(&solution, args.format.into(), args.templates.as_deref(), args.student)?;
+    let text = render::render(
+        &solution,
+        args.format.into(),
+        args.templates.as_deref(),
+        args.student,
+    )?;
     if let Some(path) = output {
         // The plots first, so that a document never refers to a plot that is not there.
         let directory = path.parent().unwrap_or(Path::new(""));
-        for plot in solution.simulation.plots.iter().filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty()) {
-            write_output(Some(&directory.join(&plot.svg_file)), plot.image_svg.as_bytes())?;
+        for plot in solution
+            .simulation
+            .plots
+            .iter()
+            .filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty())
+        {
+            write_output(
+                Some(&directory.join(&plot.svg_file)),
+                plot.image_svg.as_bytes(),
+            )?;
         }
     }
     write_output(output, text.as_bytes())
@@ -143,12 +174,17 @@ fn run_directory(args: &Args) -> Result<(), Error> {
     if failures.is_empty() {
         Ok(())
     } else {
-        Err(Error::Batch(BatchError { failures, total: problems.len() }))
+        Err(Error::Batch(BatchError {
+            failures,
+            total: problems.len(),
+        }))
     }
 }
 
 fn file_stem(path: &Path) -> String {
-    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "solution".into())
+    path.file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "solution".into())
 }
 
 /// An error's message followed by its causes, on one line.
@@ -171,7 +207,10 @@ struct Progress {
 
 impl Progress {
     fn new(total: usize) -> Progress {
-        Progress { total, terminal: std::io::stderr().is_terminal() }
+        Progress {
+            total,
+            terminal: std::io::stderr().is_terminal(),
+        }
     }
 
     fn show(&mut self, index: usize, name: &str) {

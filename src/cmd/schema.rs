@@ -15,5 +15,8 @@ pub struct Args {
 /// # Errors
 /// [`Error::Io`] when the output cannot be written.
 pub fn run(args: Args) -> Result<(), Error> {
-    crate::output::write_output(args.output.as_deref(), crate::problem::schema::SCHEMA.as_bytes())
+    crate::output::write_output(
+        args.output.as_deref(),
+        crate::problem::schema::SCHEMA.as_bytes(),
+    )
 }

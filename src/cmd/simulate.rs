@@ -42,7 +42,9 @@ pub fn run(args: Args) -> Result<(), Error> {
     let mut problem = super::load_with_overrides(&args.common)?;
     if let Some(duration) = args.duration {
         if !(duration.is_finite() && duration > 0.0) {
-            return Err(Error::Usage("--duration must be a positive number of seconds".into()));
+            return Err(Error::Usage(
+                "--duration must be a positive number of seconds".into(),
+            ));
         }
         problem.simulate.duration = duration;
     }
@@ -50,7 +52,10 @@ pub fn run(args: Args) -> Result<(), Error> {
     let compiled = Compiled::new(&derivation);
     let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let limits = Limits { max_rows: args.max_rows, ..Limits::default() };
+    let limits = Limits {
+        max_rows: args.max_rows,
+        ..Limits::default()
+    };
     let trajectory = simulate_with_limits(&compiled, &q0, &rates0, &problem.simulate, &limits)?;
     let text = match args.format {
         Format::Csv => trajectory.to_csv(),

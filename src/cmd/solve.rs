@@ -37,7 +37,10 @@ pub struct Args {
 ///
 /// # Errors
 /// A usage error for a name that is not a coordinate or a rate.
-pub fn initial_state(problem: &crate::problem::Problem, assignments: &[String]) -> Result<(Vec<f64>, Vec<f64>), Error> {
+pub fn initial_state(
+    problem: &crate::problem::Problem,
+    assignments: &[String],
+) -> Result<(Vec<f64>, Vec<f64>), Error> {
     let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     for (name, value) in parse_assignments(assignments)? {
@@ -46,11 +49,17 @@ pub fn initial_state(problem: &crate::problem::Problem, assignments: &[String]) 
             None => (name.as_str(), false),
         };
         let Some(index) = problem.coordinates.iter().position(|c| c.name == base) else {
-            let names: Vec<&str> = problem.coordinates.iter().map(|c| c.name.as_str()).collect();
+            let names: Vec<&str> = problem
+                .coordinates
+                .iter()
+                .map(|c| c.name.as_str())
+                .collect();
             let hint = crate::symbolic::hint::closest(base, names.iter().copied())
                 .map(|c| format!(" (did you mean `{c}`?)"))
                 .unwrap_or_else(|| format!(" (the coordinates are {})", names.join(", ")));
-            return Err(Error::Usage(format!("--state: `{name}` is not a coordinate or a rate{hint}")));
+            return Err(Error::Usage(format!(
+                "--state: `{name}` is not a coordinate or a rate{hint}"
+            )));
         };
         if is_rate {
             rates[index] = value;
@@ -77,18 +86,40 @@ pub fn run(args: Args) -> Result<(), Error> {
     let solution = compiled.solve(args.time, &q, &rates)?;
     let text = match args.format {
         Format::Json => {
-            let value = to_json(method.name(), args.time, &compiled.coordinates, &q, &rates, &solution);
+            let value = to_json(
+                method.name(),
+                args.time,
+                &compiled.coordinates,
+                &q,
+                &rates,
+                &solution,
+            );
             let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
             text.push('\n');
             text
         }
-        Format::Text => to_text(&problem.title, method.title(), args.time, &compiled.coordinates, &q, &rates, &solution),
+        Format::Text => to_text(
+            &problem.title,
+            method.title(),
+            args.time,
+            &compiled.coordinates,
+            &q,
+            &rates,
+            &solution,
+        ),
     };
     crate::output::write_output(args.common.output.as_deref(), text.as_bytes())
 }
 
 /// The JSON object of the command-line contract.
-pub fn to_json(method: &str, time: f64, names: &[String], q: &[f64], rates: &[f64], solution: &StateSolution) -> Value {
+pub fn to_json(
+    method: &str,
+    time: f64,
+    names: &[String],
+    q: &[f64],
+    rates: &[f64],
+    solution: &StateSolution,
+) -> Value {
     let mut state = Map::new();
     for (name, value) in names.iter().zip(q) {
         state.insert(name.clone(), json!(value));
@@ -113,14 +144,29 @@ pub fn to_json(method: &str, time: f64, names: &[String], q: &[f64], rates: &[f6
     })
 }
 
-fn to_text(title: &str, method: &str, time: f64, names: &[String], q: &[f64], rates: &[f64], s: &StateSolution) -> String {
+fn to_text(
+    title: &str,
+    method: &str,
+    time: f64,
+    names: &[String],
+    q: &[f64],
+    rates: &[f64],
+    s: &StateSolution,
+) -> String {
     let mut out = format!("{title}\nby {method}, at t = {}\n\n", fixed(time));
     out.push_str("coordinate        value         rate  second derivative\n");
     for (i, name) in names.iter().enumerate() {
-        out.push_str(&format!("{name:<10} {:>12} {:>12} {:>18}\n", fixed(q[i]), fixed(rates[i]), fixed(s.accelerations[i])));
+        out.push_str(&format!(
+            "{name:<10} {:>12} {:>12} {:>18}\n",
+            fixed(q[i]),
+            fixed(rates[i]),
+            fixed(s.accelerations[i])
+        ));
     }
     if !s.reactions.is_empty() {
-        out.push_str("\nreaction (parent on child, parent's unit vectors; moment about the joint point)\n");
+        out.push_str(
+            "\nreaction (parent on child, parent's unit vectors; moment about the joint point)\n",
+        );
         for (joint, f, m) in &s.reactions {
             let v = |x: &[f64; 3]| format!("[{}, {}, {}]", fixed(x[0]), fixed(x[1]), fixed(x[2]));
             out.push_str(&format!("{joint}: force {}  moment {}\n", v(f), v(m)));

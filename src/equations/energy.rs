@@ -34,7 +34,11 @@ pub fn potential(model: &Model) -> Expr {
     }
     for load in &problem.loads {
         match &load.kind {
-            LoadKind::Spring { between, stiffness, free_length } => {
+            LoadKind::Spring {
+                between,
+                stiffness,
+                free_length,
+            } => {
                 let p1 = model.point(between[0]).position;
                 let p2 = model.point(between[1]).position;
                 let d = p2.minus(&p1);
@@ -43,11 +47,20 @@ pub fn potential(model: &Model) -> Expr {
                     length2
                 } else {
                     // (l - l0)^2 = l^2 - 2 l0 l + l0^2
-                    add([length2.clone(), -(Expr::int(2) * free_length.clone() * pow(length2, Expr::ratio(1, 2))), free_length * free_length])
+                    add([
+                        length2.clone(),
+                        -(Expr::int(2) * free_length.clone() * pow(length2, Expr::ratio(1, 2))),
+                        free_length * free_length,
+                    ])
                 };
                 terms.push(&half * &(stiffness * &stretch2));
             }
-            LoadKind::JointSpring { coordinate, stiffness, rest, .. } => {
+            LoadKind::JointSpring {
+                coordinate,
+                stiffness,
+                rest,
+                ..
+            } => {
                 let stretch = &problem.coordinate_expr(*coordinate, 0) - rest;
                 terms.push(&half * &(stiffness * &(&stretch * &stretch)));
             }

@@ -4,7 +4,9 @@
 use super::rows::{is_external, Equation, Groups, Inertia, Sum};
 use crate::mechanics::vector::Components;
 use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{is_joint_load, joint_load_generalized_forces, Action, ActionKind, Category, Source};
+use crate::plan::forces::{
+    is_joint_load, joint_load_generalized_forces, Action, ActionKind, Category, Source,
+};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{add, Expr, Symbol};
 
@@ -14,7 +16,11 @@ pub fn partials(v: &Vector, rates: &[Symbol]) -> Vec<Vector> {
     for (frame, components) in v.parts() {
         let split: Vec<Vec<Expr>> = components
             .iter()
-            .map(|c| linear_split(c, rates).map(|(coefficients, _)| coefficients).unwrap_or_else(|_| vec![Expr::zero(); rates.len()]))
+            .map(|c| {
+                linear_split(c, rates)
+                    .map(|(coefficients, _)| coefficients)
+                    .unwrap_or_else(|_| vec![Expr::zero(); rates.len()])
+            })
             .collect();
         for (r, slot) in out.iter_mut().enumerate() {
             let c: Components = std::array::from_fn(|i| split[i][r].clone());
@@ -40,10 +46,20 @@ pub fn equations(
 ) -> Vec<Equation> {
     let problem = model.problem;
     let frames = &model.frames;
-    let rates: Vec<Symbol> = (0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    let rates: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 1))
+        .collect();
     let partial = Partials {
-        origin: model.bodies.iter().map(|b| partials(&b.origin.velocity, &rates)).collect(),
-        omega: model.bodies.iter().map(|b| partials(&b.omega, &rates)).collect(),
+        origin: model
+            .bodies
+            .iter()
+            .map(|b| partials(&b.origin.velocity, &rates))
+            .collect(),
+        omega: model
+            .bodies
+            .iter()
+            .map(|b| partials(&b.omega, &rates))
+            .collect(),
     };
     let generalized_joint_loads = joint_load_generalized_forces(model);
     let all_bodies: Vec<_> = model.order.clone();
@@ -59,8 +75,12 @@ pub fn equations(
                 continue; // workless, or taken above as a generalized force
             }
             let term = match &action.kind {
-                ActionKind::Force { offset, force } => force.dot(&velocity_of(action.body, offset), frames),
-                ActionKind::Couple { torque } => torque.dot(&partial.omega[action.body.0][r], frames),
+                ActionKind::Force { offset, force } => {
+                    force.dot(&velocity_of(action.body, offset), frames)
+                }
+                ActionKind::Couple { torque } => {
+                    torque.dot(&partial.omega[action.body.0][r], frames)
+                }
             };
             match action.category {
                 Category::Contact => contact.push(term),
@@ -82,7 +102,9 @@ pub fn equations(
         let expression = groups.total();
         rows.push(Equation {
             free_body: all_bodies.clone(),
-            sum: Sum::Generalized { speed: rate.to_string() },
+            sum: Sum::Generalized {
+                speed: rate.to_string(),
+            },
             direction: None,
             unknowns: super::rows::unknowns_in(&expression, unknowns),
             groups,
@@ -97,7 +119,13 @@ pub fn equations(
 
 /// Rows for an auxiliary speed along each reaction component of joint `j`: the subtree
 /// outboard of the joint moves rigidly along (or about) the component's direction.
-fn auxiliary_rows(model: &Model, actions: &[Action], inertia: &Inertia, unknowns: &[Symbol], j: usize) -> Vec<Equation> {
+fn auxiliary_rows(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    unknowns: &[Symbol],
+    j: usize,
+) -> Vec<Equation> {
     let frames = &model.frames;
     let joint = &model.problem.joints[j];
     let subtree = model.subtree(j);
@@ -107,15 +135,20 @@ fn auxiliary_rows(model: &Model, actions: &[Action], inertia: &Inertia, unknowns
         let is_force = component.label.starts_with('F');
         let d = &component.direction;
         let velocity_at = |position: &Vector| -> Vector {
-            if is_force { d.clone() } else { d.cross(&position.minus(&pivot), frames) }
+            if is_force {
+                d.clone()
+            } else {
+                d.cross(&position.minus(&pivot), frames)
+            }
         };
         let omega = if is_force { Vector::zero() } else { d.clone() };
         let (mut contact, mut distance) = (Vec::new(), Vec::new());
         for action in actions.iter().filter(|a| is_external(a, &subtree)) {
             let term = match &action.kind {
-                ActionKind::Force { offset, force } => {
-                    force.dot(&velocity_at(&model.point_on(action.body, offset).position), frames)
-                }
+                ActionKind::Force { offset, force } => force.dot(
+                    &velocity_at(&model.point_on(action.body, offset).position),
+                    frames,
+                ),
                 ActionKind::Couple { torque } => torque.dot(&omega, frames),
             };
             match action.category {
@@ -138,7 +171,9 @@ fn auxiliary_rows(model: &Model, actions: &[Action], inertia: &Inertia, unknowns
         let expression = groups.total();
         rows.push(Equation {
             free_body: subtree.clone(),
-            sum: Sum::Generalized { speed: format!("u({}.{})", joint.name, component.label) },
+            sum: Sum::Generalized {
+                speed: format!("u({}.{})", joint.name, component.label),
+            },
             direction: None,
             unknowns: super::rows::unknowns_in(&expression, unknowns),
             groups,

@@ -8,7 +8,12 @@ use crate::problem::BodyId;
 use crate::symbolic::Symbol;
 
 /// The rows of Newton–Euler: 3 per body in 2D, 6 in 3D.
-pub fn equations(model: &Model, actions: &[Action], inertia: &Inertia, unknowns: &[Symbol]) -> Vec<Equation> {
+pub fn equations(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    unknowns: &[Symbol],
+) -> Vec<Equation> {
     let planar = model.is_planar();
     let mut rows = Vec::new();
     for &body in &model.order {
@@ -20,7 +25,8 @@ pub fn equations(model: &Model, actions: &[Action], inertia: &Inertia, unknowns:
                 .iter()
                 .map(|&axis| {
                     let direction = unit_direction(model, frame, axis);
-                    let groups = resultant(model, actions, inertia, &free_body, None, &direction.vector);
+                    let groups =
+                        resultant(model, actions, inertia, &free_body, None, &direction.vector);
                     (direction, groups)
                 })
                 .collect::<Vec<_>>()
@@ -29,7 +35,11 @@ pub fn equations(model: &Model, actions: &[Action], inertia: &Inertia, unknowns:
             rows.iter().map(|(_, g)| g.total().operation_count()).sum()
         };
         let [in_ground, in_body] = candidates;
-        let chosen = if length(&in_body) < length(&in_ground) { in_body } else { in_ground };
+        let chosen = if length(&in_body) < length(&in_ground) {
+            in_body
+        } else {
+            in_ground
+        };
         for (direction, groups) in chosen {
             let expression = groups.total();
             rows.push(Equation {
@@ -46,11 +56,21 @@ pub fn equations(model: &Model, actions: &[Action], inertia: &Inertia, unknowns:
         let moment_axes: &[usize] = if planar { &[2] } else { &[0, 1, 2] };
         for &axis in moment_axes {
             let direction = unit_direction(model, if planar { BodyId::GROUND } else { body }, axis);
-            let groups = resultant(model, actions, inertia, &free_body, Some(&center), &direction.vector);
+            let groups = resultant(
+                model,
+                actions,
+                inertia,
+                &free_body,
+                Some(&center),
+                &direction.vector,
+            );
             let expression = groups.total();
             rows.push(Equation {
                 free_body: free_body.clone(),
-                sum: Sum::Moment { point: point.clone(), position: center.clone() },
+                sum: Sum::Moment {
+                    point: point.clone(),
+                    position: center.clone(),
+                },
                 direction: Some(direction),
                 unknowns: unknowns_in(&expression, unknowns),
                 groups,

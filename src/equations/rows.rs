@@ -53,7 +53,12 @@ pub struct Groups {
 impl Groups {
     /// The whole left-hand side.
     pub fn total(&self) -> Expr {
-        add([self.contact.clone(), self.distance.clone(), self.inertia_force.clone(), self.inertia_torque.clone()])
+        add([
+            self.contact.clone(),
+            self.distance.clone(),
+            self.inertia_force.clone(),
+            self.inertia_torque.clone(),
+        ])
     }
 }
 
@@ -119,8 +124,14 @@ pub fn resultant(
     direction: &Vector,
 ) -> Groups {
     let (contact, distance) = action_terms(model, actions, free_body, about, direction);
-    let (inertia_force, inertia_torque) = inertia_terms(model, inertia, free_body, about, direction);
-    Groups { contact, distance, inertia_force, inertia_torque }
+    let (inertia_force, inertia_torque) =
+        inertia_terms(model, inertia, free_body, about, direction);
+    Groups {
+        contact,
+        distance,
+        inertia_force,
+        inertia_torque,
+    }
 }
 
 /// The contact and distance terms: the external actions on the free body.

@@ -80,7 +80,10 @@ pub fn reaction_unknowns(model: &Model, joints: &[usize]) -> Vec<Symbol> {
         .iter()
         .flat_map(|&j| {
             let name = &model.problem.joints[j].name;
-            model.joints[j].reactions.iter().map(move |c| reaction_symbol(name, &c.label))
+            model.joints[j]
+                .reactions
+                .iter()
+                .map(move |c| reaction_symbol(name, &c.label))
         })
         .collect()
 }
@@ -94,18 +97,37 @@ pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Mecha
     let model = Model::build(problem)?;
     let actions = actions(&model)?;
     let inertia = Inertia::of(&model);
-    let accelerations: Vec<Symbol> = (0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, 2)).collect();
+    let accelerations: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 2))
+        .collect();
     let all_joints: Vec<usize> = (0..problem.joints.len()).collect();
-    let every_unknown: Vec<Symbol> =
-        accelerations.iter().cloned().chain(reaction_unknowns(&model, &all_joints)).collect();
+    let every_unknown: Vec<Symbol> = accelerations
+        .iter()
+        .cloned()
+        .chain(reaction_unknowns(&model, &all_joints))
+        .collect();
     let reaction_joints: Vec<usize> = match method {
-        Method::NewtonEuler => all_joints.iter().copied().filter(|&j| !model.joints[j].reactions.is_empty()).collect(),
+        Method::NewtonEuler => all_joints
+            .iter()
+            .copied()
+            .filter(|&j| !model.joints[j].reactions.is_empty())
+            .collect(),
         _ => problem.find_reactions.clone(),
     };
-    let unknowns: Vec<Symbol> = accelerations.iter().cloned().chain(reaction_unknowns(&model, &reaction_joints)).collect();
+    let unknowns: Vec<Symbol> = accelerations
+        .iter()
+        .cloned()
+        .chain(reaction_unknowns(&model, &reaction_joints))
+        .collect();
     let (rows, rejected) = match method {
-        Method::NewtonEuler => (super::newton_euler::equations(&model, &actions, &inertia, &every_unknown), vec![]),
-        Method::Kane => (super::kane::equations(&model, &actions, &inertia, &every_unknown, &reaction_joints), vec![]),
+        Method::NewtonEuler => (
+            super::newton_euler::equations(&model, &actions, &inertia, &every_unknown),
+            vec![],
+        ),
+        Method::Kane => (
+            super::kane::equations(&model, &actions, &inertia, &every_unknown, &reaction_joints),
+            vec![],
+        ),
         Method::MotionLaw => {
             let reactions = reaction_unknowns(&model, &all_joints);
             let candidates = planner::candidates(&model, &actions, &reactions);
@@ -122,24 +144,40 @@ pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Mecha
                 rows.len(),
                 unknowns.len()
             ),
-            hint: Some("a coordinate may move nothing with mass, or a reaction may be undetermined".into()),
+            hint: Some(
+                "a coordinate may move nothing with mass, or a reaction may be undetermined".into(),
+            ),
         });
     }
     let system = assemble(&rows, &unknowns)?;
-    Ok(Derivation { model, method, actions, inertia, rows, rejected, system, reaction_joints })
+    Ok(Derivation {
+        model,
+        method,
+        actions,
+        inertia,
+        rows,
+        rejected,
+        system,
+        reaction_joints,
+    })
 }
 
 fn assemble(rows: &[Equation], unknowns: &[Symbol]) -> Result<LinearSystem, MechanicsError> {
     let mut a = Vec::with_capacity(rows.len());
     let mut b = Vec::with_capacity(rows.len());
     for row in rows {
-        let (coefficients, rest) = linear_split(&row.expression, unknowns).map_err(|e| MechanicsError {
-            path: "loads".into(),
-            message: e.to_string(),
-            hint: Some("loads may not depend on second rates".into()),
-        })?;
+        let (coefficients, rest) =
+            linear_split(&row.expression, unknowns).map_err(|e| MechanicsError {
+                path: "loads".into(),
+                message: e.to_string(),
+                hint: Some("loads may not depend on second rates".into()),
+            })?;
         a.push(coefficients);
         b.push(-rest);
     }
-    Ok(LinearSystem { unknowns: unknowns.to_vec(), a, b })
+    Ok(LinearSystem {
+        unknowns: unknowns.to_vec(),
+        a,
+        b,
+    })
 }

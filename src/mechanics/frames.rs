@@ -80,13 +80,19 @@ pub fn transpose(m: &Matrix) -> Matrix {
 
 /// The identity matrix.
 pub fn identity() -> Matrix {
-    std::array::from_fn(|i| std::array::from_fn(|j| if i == j { Expr::one() } else { Expr::zero() }))
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| if i == j { Expr::one() } else { Expr::zero() })
+    })
 }
 
 impl Frames {
     /// Frames from their descriptions, `frames[0]` being `N`; `names` for display.
     pub fn new(frames: Vec<FrameInfo>, names: Vec<String>) -> Frames {
-        Frames { frames, names, cache: RefCell::new(HashMap::new()) }
+        Frames {
+            frames,
+            names,
+            cache: RefCell::new(HashMap::new()),
+        }
     }
 
     /// The number of frames, `N` included.
@@ -126,12 +132,19 @@ impl Frames {
     pub fn rotations_between(&self, to: BodyId, from: BodyId) -> Vec<Rotation> {
         let to_path = self.path_from_ground(to);
         let from_path = self.path_from_ground(from);
-        let common = to_path.iter().zip(&from_path).take_while(|(a, b)| a == b).count();
+        let common = to_path
+            .iter()
+            .zip(&from_path)
+            .take_while(|(a, b)| a == b)
+            .count();
         let mut chain: Vec<Rotation> = Vec::new();
         // Up from `to` to the common ancestor: each rotation reversed, in reverse order.
         for frame in to_path[common..].iter().rev() {
             for r in self.frames[frame.0].rotations.iter().rev() {
-                chain.push(Rotation { axis: r.axis.clone(), angle: -r.angle.clone() });
+                chain.push(Rotation {
+                    axis: r.axis.clone(),
+                    angle: -r.angle.clone(),
+                });
             }
         }
         // Down from the common ancestor to `from`.
@@ -157,7 +170,9 @@ impl Frames {
             return m.clone();
         }
         let rotations = self.rotations_between(to, from);
-        let matrix = rotations.iter().fold(identity(), |acc, r| matmul(&acc, &r.matrix()));
+        let matrix = rotations
+            .iter()
+            .fold(identity(), |acc, r| matmul(&acc, &r.matrix()));
         let matrix = Rc::new(matrix);
         self.cache.borrow_mut().insert((to, from), matrix.clone());
         matrix
@@ -176,7 +191,10 @@ impl Frames {
     ///
     /// # Errors
     /// When an angle cannot be differentiated.
-    pub fn relative_angular_velocity(&self, frame: BodyId) -> Result<Components, crate::symbolic::diff::DiffError> {
+    pub fn relative_angular_velocity(
+        &self,
+        frame: BodyId,
+    ) -> Result<Components, crate::symbolic::diff::DiffError> {
         let rotations = &self.frames[frame.0].rotations;
         let mut omega: Components = std::array::from_fn(|_| Expr::zero());
         // Walk backwards: the last rotation's axis is already in this frame's components.

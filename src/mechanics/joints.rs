@@ -66,7 +66,10 @@ pub fn joint_axis(
         if problem.dimension == Dimension::Two {
             return Ok((unit(2), false));
         }
-        return Err(error("this joint type needs an axis".into(), "for example \"axis\": \"N.z\""));
+        return Err(error(
+            "this joint type needs an axis".into(),
+            "for example \"axis\": \"N.z\"",
+        ));
     };
     let vector = super::model::vector_of(written);
     let components = vector.components_in(joint.parent, frames);
@@ -79,9 +82,15 @@ pub fn joint_axis(
     let numbers: Vec<f64> = components.iter().map(|c| eval(c, values)).collect();
     let length = numbers.iter().map(|x| x * x).sum::<f64>().sqrt();
     if !(length > 1e-12) {
-        return Err(error("the axis is zero".into(), "give a nonzero direction such as N.z"));
+        return Err(error(
+            "the axis is zero".into(),
+            "give a nonzero direction such as N.z",
+        ));
     }
-    let flip = numbers.iter().find(|x| x.abs() > 1e-12 * length).is_some_and(|x| *x < 0.0);
+    let flip = numbers
+        .iter()
+        .find(|x| x.abs() > 1e-12 * length)
+        .is_some_and(|x| *x < 0.0);
     let sign = if flip { Expr::int(-1) } else { Expr::one() };
     let norm2 = crate::symbolic::add(components.iter().map(|c| c * c));
     let scale = &sign * &pow(norm2, Expr::ratio(-1, 2));
@@ -98,39 +107,81 @@ pub fn joint_motion(
     frames: &Frames,
     values: &Values,
 ) -> Result<JointMotion, MechanicsError> {
-    let q: Vec<Expr> = joint.coordinates.iter().map(|&c| problem.coordinate_expr(c, 0)).collect();
+    let q: Vec<Expr> = joint
+        .coordinates
+        .iter()
+        .map(|&c| problem.coordinate_expr(c, 0))
+        .collect();
     let sequence_rotations = |angles: &[Expr]| -> Vec<Rotation> {
-        joint.sequence.iter().zip(angles).map(|(&a, angle)| Rotation { axis: unit(a as usize), angle: angle.clone() }).collect()
+        joint
+            .sequence
+            .iter()
+            .zip(angles)
+            .map(|(&a, angle)| Rotation {
+                axis: unit(a as usize),
+                angle: angle.clone(),
+            })
+            .collect()
     };
-    let along = |axis: &Components, distance: &Expr| -> Components { std::array::from_fn(|i| &axis[i] * distance) };
+    let along = |axis: &Components, distance: &Expr| -> Components {
+        std::array::from_fn(|i| &axis[i] * distance)
+    };
     let motion = match joint.kind {
         JointKind::Revolute | JointKind::Prismatic | JointKind::Cylindrical => {
             let (axis, flipped) = joint_axis(problem, joint, frames, values)?;
             let signed = |e: &Expr| if flipped { -e.clone() } else { e.clone() };
             let (rotations, translation) = match joint.kind {
-                JointKind::Revolute => (vec![Rotation { axis: axis.clone(), angle: signed(&q[0]) }], zero3()),
+                JointKind::Revolute => (
+                    vec![Rotation {
+                        axis: axis.clone(),
+                        angle: signed(&q[0]),
+                    }],
+                    zero3(),
+                ),
                 JointKind::Prismatic => (vec![], along(&axis, &signed(&q[0]))),
-                _ => (vec![Rotation { axis: axis.clone(), angle: signed(&q[1]) }], along(&axis, &signed(&q[0]))),
+                _ => (
+                    vec![Rotation {
+                        axis: axis.clone(),
+                        angle: signed(&q[1]),
+                    }],
+                    along(&axis, &signed(&q[0])),
+                ),
             };
             let written: Components = std::array::from_fn(|i| signed(&axis[i]));
-            JointMotion { rotations, translation, axis: Some(axis), written_axis: Some(written) }
+            JointMotion {
+                rotations,
+                translation,
+                axis: Some(axis),
+                written_axis: Some(written),
+            }
         }
         JointKind::Planar => JointMotion {
-            rotations: vec![Rotation { axis: unit(2), angle: q[2].clone() }],
+            rotations: vec![Rotation {
+                axis: unit(2),
+                angle: q[2].clone(),
+            }],
             translation: [q[0].clone(), q[1].clone(), Expr::zero()],
             axis: None,
             written_axis: None,
         },
-        JointKind::Universal | JointKind::Spherical => {
-            JointMotion { rotations: sequence_rotations(&q), translation: zero3(), axis: None, written_axis: None }
-        }
+        JointKind::Universal | JointKind::Spherical => JointMotion {
+            rotations: sequence_rotations(&q),
+            translation: zero3(),
+            axis: None,
+            written_axis: None,
+        },
         JointKind::Free => JointMotion {
             rotations: sequence_rotations(&q[3..]),
             translation: [q[0].clone(), q[1].clone(), q[2].clone()],
             axis: None,
             written_axis: None,
         },
-        JointKind::Weld => JointMotion { rotations: vec![], translation: zero3(), axis: None, written_axis: None },
+        JointKind::Weld => JointMotion {
+            rotations: vec![],
+            translation: zero3(),
+            axis: None,
+            written_axis: None,
+        },
     };
     Ok(motion)
 }
@@ -138,8 +189,14 @@ pub fn joint_motion(
 /// For each of the joint's coordinates, where a joint load on it acts.
 pub fn load_axes(joint: &Joint, motion: &JointMotion, frames: &Frames) -> Vec<LoadAxis> {
     let (parent, child) = (joint.parent, joint.child);
-    let force = |c: Components| LoadAxis { force: Vector::new(parent, c), torque: Vector::zero() };
-    let torque = |frame: BodyId, c: Components| LoadAxis { force: Vector::zero(), torque: Vector::new(frame, c) };
+    let force = |c: Components| LoadAxis {
+        force: Vector::new(parent, c),
+        torque: Vector::zero(),
+    };
+    let torque = |frame: BodyId, c: Components| LoadAxis {
+        force: Vector::zero(),
+        torque: Vector::new(frame, c),
+    };
     // A coordinate increases along the axis as written, so its load acts along that.
     let signed_axis = || motion.written_axis.clone().unwrap_or_else(|| unit(2));
     match joint.kind {
@@ -150,15 +207,21 @@ pub fn load_axes(joint: &Joint, motion: &JointMotion, frames: &Frames) -> Vec<Lo
             vec![force(axis.clone()), torque(parent, axis)]
         }
         JointKind::Planar => vec![force(unit(0)), force(unit(1)), torque(parent, unit(2))],
-        JointKind::Universal => {
-            frames.rotation_axes_in_frame(child).into_iter().map(|a| torque(child, a)).collect()
-        }
+        JointKind::Universal => frames
+            .rotation_axes_in_frame(child)
+            .into_iter()
+            .map(|a| torque(child, a))
+            .collect(),
         JointKind::Spherical | JointKind::Free => {
             let axes = frames.rotation_axes_in_frame(child);
             let axes: [Components; 3] = std::array::from_fn(|i| axes[i].clone());
             let duals = dual_basis(&axes).into_iter().map(|b| torque(child, b));
             let translations = (0..3).map(|i| force(unit(i)));
-            if joint.kind == JointKind::Free { translations.chain(duals).collect() } else { duals.collect() }
+            if joint.kind == JointKind::Free {
+                translations.chain(duals).collect()
+            } else {
+                duals.collect()
+            }
         }
         JointKind::Weld => vec![],
     }
@@ -178,16 +241,25 @@ pub fn reaction_components(
             Some(axis) => format!("{kind}{}", ["x", "y", "z"][axis]),
             None => format!("{kind}{index}"),
         };
-        ReactionComponent { label, direction: Vector::new(parent, c) }
+        ReactionComponent {
+            label,
+            direction: Vector::new(parent, c),
+        }
     };
     let all = |kind: &str, axes: &[usize]| -> Vec<ReactionComponent> {
-        axes.iter().map(|&a| component(kind, unit(a), a + 1)).collect()
+        axes.iter()
+            .map(|&a| component(kind, unit(a), a + 1))
+            .collect()
     };
     let in_plane: &[usize] = &[0, 1];
     let out_of_plane: &[usize] = &[2];
     let every: &[usize] = &[0, 1, 2];
     let perpendicular = |kind: &str, axis: &Components| -> Vec<ReactionComponent> {
-        perpendicular_pair(axis, values).into_iter().enumerate().map(|(i, c)| component(kind, c, i + 1)).collect()
+        perpendicular_pair(axis, values)
+            .into_iter()
+            .enumerate()
+            .map(|(i, c)| component(kind, c, i + 1))
+            .collect()
     };
     let axis = motion.axis.clone().unwrap_or_else(|| unit(2));
     match (joint.kind, planar) {
@@ -197,11 +269,26 @@ pub fn reaction_components(
             .chain(all("M", out_of_plane))
             .collect(),
         (JointKind::Planar, true) => vec![],
-        (JointKind::Weld, true) => all("F", in_plane).into_iter().chain(all("M", out_of_plane)).collect(),
-        (JointKind::Revolute, false) => all("F", every).into_iter().chain(perpendicular("M", &axis)).collect(),
-        (JointKind::Prismatic, false) => perpendicular("F", &axis).into_iter().chain(all("M", every)).collect(),
-        (JointKind::Cylindrical, _) => perpendicular("F", &axis).into_iter().chain(perpendicular("M", &axis)).collect(),
-        (JointKind::Planar, false) => all("F", out_of_plane).into_iter().chain(all("M", in_plane)).collect(),
+        (JointKind::Weld, true) => all("F", in_plane)
+            .into_iter()
+            .chain(all("M", out_of_plane))
+            .collect(),
+        (JointKind::Revolute, false) => all("F", every)
+            .into_iter()
+            .chain(perpendicular("M", &axis))
+            .collect(),
+        (JointKind::Prismatic, false) => perpendicular("F", &axis)
+            .into_iter()
+            .chain(all("M", every))
+            .collect(),
+        (JointKind::Cylindrical, _) => perpendicular("F", &axis)
+            .into_iter()
+            .chain(perpendicular("M", &axis))
+            .collect(),
+        (JointKind::Planar, false) => all("F", out_of_plane)
+            .into_iter()
+            .chain(all("M", in_plane))
+            .collect(),
         (JointKind::Universal, _) => {
             // The constraint couple is along (first axis) × (second axis), turned with the first angle.
             let first = &motion.rotations[0];
@@ -209,7 +296,10 @@ pub fn reaction_components(
             let normal = cross3(&first.axis, &second.axis);
             let turned = super::frames::apply(&first.matrix(), &normal);
             let mut out = all("F", every);
-            out.push(ReactionComponent { label: "M1".into(), direction: Vector::new(parent, turned) });
+            out.push(ReactionComponent {
+                label: "M1".into(),
+                direction: Vector::new(parent, turned),
+            });
             out
         }
         (JointKind::Spherical, _) => all("F", every),
@@ -232,7 +322,9 @@ fn perpendicular_pair(axis: &Components, values: &Values) -> [Components; 2] {
         return [unit((a + 1) % 3), unit((a + 2) % 3)];
     }
     let magnitudes: Vec<f64> = axis.iter().map(|c| eval(c, values).abs()).collect();
-    let least = (0..3).min_by(|&i, &j| magnitudes[i].total_cmp(&magnitudes[j])).unwrap_or(0);
+    let least = (0..3)
+        .min_by(|&i, &j| magnitudes[i].total_cmp(&magnitudes[j]))
+        .unwrap_or(0);
     let raw = cross3(axis, &unit(least));
     let norm2 = crate::symbolic::add(raw.iter().map(|c| c * c));
     let scale = pow(norm2, Expr::ratio(-1, 2));

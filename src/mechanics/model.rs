@@ -2,7 +2,9 @@
 //! angular velocity and acceleration of every body and the motion of every point (step 4).
 
 use super::frames::{FrameInfo, Frames, Matrix};
-use super::joints::{joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent};
+use super::joints::{
+    joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent,
+};
 use super::vector::{zero3, Components, Vector};
 use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
@@ -76,7 +78,11 @@ pub struct Model<'p> {
 
 /// The vector a [`VectorExpr`] describes.
 pub fn vector_of(written: &VectorExpr) -> Vector {
-    Vector::sum(written.terms.iter().map(|(frame, axis, coefficient)| Vector::unit(*frame, *axis as usize).scaled(coefficient)))
+    Vector::sum(
+        written.terms.iter().map(|(frame, axis, coefficient)| {
+            Vector::unit(*frame, *axis as usize).scaled(coefficient)
+        }),
+    )
 }
 
 /// Components of a vector written in the body's own unit vectors (as `at`, `center` are).
@@ -100,7 +106,11 @@ fn constant_values(problem: &Problem) -> Values {
 
 fn dt_components(c: &Components, path: &str) -> Result<Components, MechanicsError> {
     let d = |e: &Expr| {
-        time_derivative(e).map_err(|e| MechanicsError { path: path.to_string(), message: e.to_string(), hint: None })
+        time_derivative(e).map_err(|e| MechanicsError {
+            path: path.to_string(),
+            message: e.to_string(),
+            hint: None,
+        })
     };
     Ok([d(&c[0])?, d(&c[1])?, d(&c[2])?])
 }
@@ -114,17 +124,30 @@ impl<'p> Model<'p> {
     pub fn build(problem: &'p Problem) -> Result<Model<'p>, MechanicsError> {
         let values = constant_values(problem);
         let count = problem.bodies.len() + 1;
-        let names = std::iter::once("N".to_string()).chain(problem.bodies.iter().map(|b| b.name.clone())).collect();
-        let mut frame_infos = vec![FrameInfo { parent: None, rotations: vec![] }; count];
+        let names = std::iter::once("N".to_string())
+            .chain(problem.bodies.iter().map(|b| b.name.clone()))
+            .collect();
+        let mut frame_infos = vec![
+            FrameInfo {
+                parent: None,
+                rotations: vec![]
+            };
+            count
+        ];
         let order = tree_order(problem);
         let mut motions: Vec<Option<JointMotion>> = vec![None; problem.joints.len()];
         // Frames first, parents before children: an axis is read in its parent's frame.
         for &body in &order {
-            let Some(j) = problem.joint_of(body) else { continue };
+            let Some(j) = problem.joint_of(body) else {
+                continue;
+            };
             let joint = &problem.joints[j];
             let partial = Frames::new(frame_infos.clone(), Vec::new());
             let motion = joint_motion(problem, joint, &partial, &values)?;
-            frame_infos[body.0] = FrameInfo { parent: Some(joint.parent), rotations: motion.rotations.clone() };
+            frame_infos[body.0] = FrameInfo {
+                parent: Some(joint.parent),
+                rotations: motion.rotations.clone(),
+            };
             motions[j] = Some(motion);
         }
         let frames = Frames::new(frame_infos, names);
@@ -140,15 +163,34 @@ impl<'p> Model<'p> {
         let mut bodies = vec![ground; count];
         let mut joints: Vec<Option<JointModel>> = vec![None; problem.joints.len()];
         for &body in &order {
-            let Some(j) = problem.joint_of(body) else { continue };
+            let Some(j) = problem.joint_of(body) else {
+                continue;
+            };
             let joint = &problem.joints[j];
-            let Some(motion) = motions[j].take() else { continue };
-            let (state, joint_model) = body_kinematics(problem, &frames, &values, &bodies[joint.parent.0], body, j, motion)?;
+            let Some(motion) = motions[j].take() else {
+                continue;
+            };
+            let (state, joint_model) = body_kinematics(
+                problem,
+                &frames,
+                &values,
+                &bodies[joint.parent.0],
+                body,
+                j,
+                motion,
+            )?;
             bodies[body.0] = state;
             joints[j] = Some(joint_model);
         }
         let joints = joints.into_iter().flatten().collect();
-        Ok(Model { problem, frames, values, bodies, joints, order })
+        Ok(Model {
+            problem,
+            frames,
+            values,
+            bodies,
+            joints,
+            order,
+        })
     }
 
     /// The motion of a point fixed on `body` at `offset` (body's unit vectors) from its origin.
@@ -165,7 +207,10 @@ impl<'p> Model<'p> {
             }
             PointRef::MassCenter(b) => (b, self.bodies[b.0].center_offset.clone()),
             PointRef::Origin(b) => (b, zero3()),
-            PointRef::Joint(j) => (self.problem.joints[j].child, self.joints[j].child_at.clone()),
+            PointRef::Joint(j) => (
+                self.problem.joints[j].child,
+                self.joints[j].child_at.clone(),
+            ),
         }
     }
 
@@ -190,7 +235,11 @@ impl<'p> Model<'p> {
     /// The bodies outboard of joint `j`: its child and everything carried by it.
     pub fn subtree(&self, j: usize) -> Vec<BodyId> {
         let root = self.problem.joints[j].child;
-        self.order.iter().copied().filter(|&b| self.is_in_subtree(b, root)).collect()
+        self.order
+            .iter()
+            .copied()
+            .filter(|&b| self.is_in_subtree(b, root))
+            .collect()
     }
 
     /// Components in own frame made a vector of that frame.
@@ -209,7 +258,12 @@ pub fn tree_order(problem: &Problem) -> Vec<BodyId> {
     let mut order = Vec::new();
     let mut frontier = vec![BodyId::GROUND];
     while let Some(parent) = frontier.pop() {
-        let children: Vec<BodyId> = problem.joints.iter().filter(|j| j.parent == parent).map(|j| j.child).collect();
+        let children: Vec<BodyId> = problem
+            .joints
+            .iter()
+            .filter(|j| j.parent == parent)
+            .map(|j| j.child)
+            .collect();
         for child in children.iter().rev() {
             frontier.push(*child);
         }
@@ -223,7 +277,12 @@ pub fn tree_order(problem: &Problem) -> Vec<BodyId> {
     order
 }
 
-fn rigid_point(frames: &Frames, state: &BodyState, body: BodyId, offset: &Components) -> PointMotion {
+fn rigid_point(
+    frames: &Frames,
+    state: &BodyState,
+    body: BodyId,
+    offset: &Components,
+) -> PointMotion {
     let r = Vector::new(body, offset.clone());
     let w_x_r = state.omega.cross(&r, frames);
     PointMotion {
@@ -250,12 +309,17 @@ fn body_kinematics(
     let parent = joint.parent;
     let path = &joint.path;
     // Angular velocity: the parent's, carried into this frame, plus the joint's own.
-    let relative = frames.relative_angular_velocity(body).map_err(|e| MechanicsError {
-        path: path.clone(),
-        message: e.to_string(),
-        hint: None,
-    })?;
-    let omega = parent_state.omega.expressed_in(body, frames).plus(&Vector::new(body, relative));
+    let relative = frames
+        .relative_angular_velocity(body)
+        .map_err(|e| MechanicsError {
+            path: path.clone(),
+            message: e.to_string(),
+            hint: None,
+        })?;
+    let omega = parent_state
+        .omega
+        .expressed_in(body, frames)
+        .plus(&Vector::new(body, relative));
     let omega_components = omega.components_in(body, frames);
     // Expressed in the body's own frame, d/dt in N equals d/dt of the components.
     let alpha = Vector::new(body, dt_components(&omega_components, path)?);
@@ -275,7 +339,10 @@ fn body_kinematics(
         acceleration: Vector::sum([
             carried_point.acceleration,
             Vector::new(parent, d_accel),
-            parent_state.omega.cross(&slide_rate, frames).scaled(&Expr::int(2)),
+            parent_state
+                .omega
+                .cross(&slide_rate, frames)
+                .scaled(&Expr::int(2)),
         ]),
     };
     let back: Components = std::array::from_fn(|i| -child_at[i].clone());
@@ -313,6 +380,13 @@ fn body_kinematics(
     state.center = rigid_point(frames, &state, body, &center_offset);
     let reactions = reaction_components(problem, joint, &motion, values);
     let axes = load_axes(joint, &motion, frames);
-    let joint_model = JointModel { motion, at, child_at, reactions, load_axes: axes, point: joint_point };
+    let joint_model = JointModel {
+        motion,
+        at,
+        child_at,
+        reactions,
+        load_axes: axes,
+        point: joint_point,
+    };
     Ok((state, joint_model))
 }

@@ -43,7 +43,10 @@ impl Vector {
 
     /// A vector given by its components in `frame`.
     pub fn new(frame: BodyId, components: Components) -> Vector {
-        Vector { parts: vec![(frame, components)] }.normalized()
+        Vector {
+            parts: vec![(frame, components)],
+        }
+        .normalized()
     }
 
     /// The unit vector `frame.axis` (axis 0, 1, 2 for x, y, z).
@@ -103,7 +106,11 @@ impl Vector {
 
     /// The vector with `f` applied to every component.
     pub fn map(&self, f: impl Fn(&Expr) -> Expr) -> Vector {
-        let parts = self.parts.iter().map(|(frame, c)| (*frame, [f(&c[0]), f(&c[1]), f(&c[2])])).collect();
+        let parts = self
+            .parts
+            .iter()
+            .map(|(frame, c)| (*frame, [f(&c[0]), f(&c[1]), f(&c[2])]))
+            .collect();
         Vector { parts }.normalized()
     }
 
@@ -124,7 +131,11 @@ impl Vector {
         let mut total = zero3();
         for (from, c) in &self.parts {
             let expressed = frames.express(c, *from, frame);
-            total = [&total[0] + &expressed[0], &total[1] + &expressed[1], &total[2] + &expressed[2]];
+            total = [
+                &total[0] + &expressed[0],
+                &total[1] + &expressed[1],
+                &total[2] + &expressed[2],
+            ];
         }
         total
     }
@@ -158,6 +169,10 @@ impl Vector {
 
     /// The number of operations to evaluate every component: a measure of length.
     pub fn operation_count(&self) -> usize {
-        self.parts.iter().flat_map(|(_, c)| c.iter()).map(|e| e.operation_count() + 1).sum()
+        self.parts
+            .iter()
+            .flat_map(|(_, c)| c.iter())
+            .map(|e| e.operation_count() + 1)
+            .sum()
     }
 }

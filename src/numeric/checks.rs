@@ -32,7 +32,13 @@ pub struct Check {
 
 impl Check {
     fn new(name: &str, value: f64, tolerance: f64, detail: String) -> Self {
-        Check { name: name.into(), value, tolerance, passed: value < tolerance, detail }
+        Check {
+            name: name.into(),
+            value,
+            tolerance,
+            passed: value < tolerance,
+            detail,
+        }
     }
 }
 
@@ -53,9 +59,11 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
     let rows = &trajectory.rows;
     let first = rows.first()?;
     let largest_kinetic = rows.iter().map(|r| r[kinetic].abs()).fold(0.0, f64::max);
-    let (low, high) = rows.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| {
-        (lo.min(r[potential]), hi.max(r[potential]))
-    });
+    let (low, high) = rows
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| {
+            (lo.min(r[potential]), hi.max(r[potential]))
+        });
     let scale = largest_kinetic.max(high - low).max(f64::MIN_POSITIVE);
     if conservative {
         let (worst, at) = rows
@@ -69,7 +77,12 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
             fixed(at),
             fixed(scale)
         );
-        Some(Check::new("energy conservation", value, ENERGY_TOLERANCE, detail))
+        Some(Check::new(
+            "energy conservation",
+            value,
+            ENERGY_TOLERANCE,
+            detail,
+        ))
     } else {
         let mut lowest = first[total];
         let (mut worst, mut at) = (0.0, 0.0);
@@ -86,7 +99,12 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
             fixed(at),
             fixed(scale)
         );
-        Some(Check::new("energy never rises", worst / scale, ENERGY_TOLERANCE, detail))
+        Some(Check::new(
+            "energy never rises",
+            worst / scale,
+            ENERGY_TOLERANCE,
+            detail,
+        ))
     }
 }
 
@@ -94,7 +112,11 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
 /// |a − b| / max(1, |a|) between the first system and each of the others.
 ///
 /// `None` with fewer than two systems or no rows.
-pub fn method_agreement(systems: &[(&str, &dyn System)], trajectory: &Trajectory, samples: usize) -> Option<Check> {
+pub fn method_agreement(
+    systems: &[(&str, &dyn System)],
+    trajectory: &Trajectory,
+    samples: usize,
+) -> Option<Check> {
     const NAME: &str = "agreement between methods";
     let ((reference_name, reference), others) = systems.split_first()?;
     let rows = &trajectory.rows;
@@ -105,10 +127,14 @@ pub fn method_agreement(systems: &[(&str, &dyn System)], trajectory: &Trajectory
     let n = names.len();
     let fail = |detail: String| Some(Check::new(NAME, f64::INFINITY, AGREEMENT_TOLERANCE, detail));
     if let Some((other, _)) = others.iter().find(|(_, s)| s.coordinate_names() != names) {
-        return fail(format!("the {other} equations use other coordinates than the {reference_name} ones"));
+        return fail(format!(
+            "the {other} equations use other coordinates than the {reference_name} ones"
+        ));
     }
     let count = samples.clamp(1, rows.len());
-    let mut indices: Vec<usize> = (0..count).map(|i| i * (rows.len() - 1) / (count - 1).max(1)).collect();
+    let mut indices: Vec<usize> = (0..count)
+        .map(|i| i * (rows.len() - 1) / (count - 1).max(1))
+        .collect();
     indices.dedup();
     let mut worst = (0.0, String::new());
     for &index in &indices {
@@ -138,8 +164,15 @@ pub fn method_agreement(systems: &[(&str, &dyn System)], trajectory: &Trajectory
         }
     }
     let detail = match worst.1.is_empty() {
-        true => format!("the q'' of every method are identical at {} states along the run", indices.len()),
-        false => format!("at {} states along the run; the largest difference is in {}", indices.len(), worst.1),
+        true => format!(
+            "the q'' of every method are identical at {} states along the run",
+            indices.len()
+        ),
+        false => format!(
+            "at {} states along the run; the largest difference is in {}",
+            indices.len(),
+            worst.1
+        ),
     };
     Some(Check::new(NAME, worst.0, AGREEMENT_TOLERANCE, detail))
 }
@@ -160,7 +193,12 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
     if !system.is_conservative() && !system.has_dissipation_only() {
         return None;
     }
-    let Linearization { equilibrium, damping, omega, .. } = linearize(system, q0)?;
+    let Linearization {
+        equilibrium,
+        damping,
+        omega,
+        ..
+    } = linearize(system, q0)?;
     let expected = 2.0 * PI / omega;
 
     let periods = 6;
@@ -173,9 +211,18 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
         dy[1] = e.accelerations.first().copied().unwrap_or(f64::NAN);
         Ok(())
     };
-    let solution = integrate(rhs, 0.0, &[equilibrium + amplitude, 0.0], &times, &Options::with_tolerance(1e-12));
+    let solution = integrate(
+        rhs,
+        0.0,
+        &[equilibrium + amplitude, 0.0],
+        &times,
+        &Options::with_tolerance(1e-12),
+    );
     if let Some(stop) = solution.stop {
-        let detail = format!("the small oscillation about {name} = {} could not be integrated: {stop}", fixed(equilibrium));
+        let detail = format!(
+            "the small oscillation about {name} = {} could not be integrated: {stop}",
+            fixed(equilibrium)
+        );
         return Some(Check::new(NAME, f64::INFINITY, PERIOD_TOLERANCE, detail));
     }
     let displacement: Vec<f64> = solution.states.iter().map(|y| y[0] - equilibrium).collect();
@@ -198,7 +245,12 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
         crossings.len().saturating_sub(1),
         fixed(measured)
     );
-    Some(Check::new(NAME, if error.is_nan() { f64::INFINITY } else { error }, PERIOD_TOLERANCE, detail))
+    Some(Check::new(
+        NAME,
+        if error.is_nan() { f64::INFINITY } else { error },
+        PERIOD_TOLERANCE,
+        detail,
+    ))
 }
 
 /// A one-coordinate system linearized about a stable equilibrium at rest:
@@ -253,10 +305,18 @@ pub fn linearize(system: &dyn System, q0: &[f64]) -> Option<Linearization> {
     let damping = -slope(equilibrium, 0.0, true)?;
     let residual = acceleration(equilibrium, 0.0)?.abs();
     let omega_squared = stiffness - damping * damping / 4.0;
-    if !(stiffness > 0.0 && omega_squared > 0.0 && residual <= 1e-9 * stiffness * equilibrium.abs().max(1.0)) {
+    if !(stiffness > 0.0
+        && omega_squared > 0.0
+        && residual <= 1e-9 * stiffness * equilibrium.abs().max(1.0))
+    {
         return None;
     }
-    Some(Linearization { equilibrium, stiffness, damping, omega: omega_squared.sqrt() })
+    Some(Linearization {
+        equilibrium,
+        stiffness,
+        damping,
+        omega: omega_squared.sqrt(),
+    })
 }
 
 /// The times where `x` crosses zero going down, found on the cubic Hermite interpolant of
@@ -272,7 +332,10 @@ pub fn downward_crossings(times: &[f64], x: &[f64], v: &[f64]) -> Vec<f64> {
         let (p0, p1, m0, m1) = (x[i - 1], x[i], v[i - 1] * dt, v[i] * dt);
         let hermite = |s: f64| {
             let (s2, s3) = (s * s, s * s * s);
-            (2.0 * s3 - 3.0 * s2 + 1.0) * p0 + (s3 - 2.0 * s2 + s) * m0 + (-2.0 * s3 + 3.0 * s2) * p1 + (s3 - s2) * m1
+            (2.0 * s3 - 3.0 * s2 + 1.0) * p0
+                + (s3 - 2.0 * s2 + s) * m0
+                + (-2.0 * s3 + 3.0 * s2) * p1
+                + (s3 - s2) * m1
         };
         let (mut low, mut high) = (0.0, 1.0);
         for _ in 0..60 {
@@ -296,7 +359,11 @@ mod tests {
     use crate::problem::SimulateSettings;
 
     fn run(system: &dyn System, q0: f64, rate0: f64) -> Trajectory {
-        let settings = SimulateSettings { duration: 5.0, output_step: 0.01, tolerance: 1e-9 };
+        let settings = SimulateSettings {
+            duration: 5.0,
+            output_step: 0.01,
+            tolerance: 1e-9,
+        };
         let trajectory = simulate(system, &[q0], &[rate0], &settings).unwrap();
         assert!(trajectory.stopped.is_none());
         trajectory
@@ -328,7 +395,10 @@ mod tests {
     /// Kinetic energy m l² θ'² instead of half that: the check must notice.
     #[test]
     fn energy_check_catches_a_wrong_kinetic_energy() {
-        let wrong = Pendulum { kinetic_factor: 1.0, ..Pendulum::new(0.5, 9.81) };
+        let wrong = Pendulum {
+            kinetic_factor: 1.0,
+            ..Pendulum::new(0.5, 9.81)
+        };
         let check = energy_check(&wrong, &run(&wrong, 1.2, 0.0)).unwrap();
         assert!(!check.passed, "{check:?}");
         assert!(check.value > 0.1, "{check:?}");
@@ -336,7 +406,11 @@ mod tests {
 
     #[test]
     fn damped_energy_never_rises() {
-        let damped = MassSpringDamper { m: 1.0, c: 0.3, k: 20.0 };
+        let damped = MassSpringDamper {
+            m: 1.0,
+            c: 0.3,
+            k: 20.0,
+        };
         let trajectory = run(&damped, 0.2, 0.0);
         let check = energy_check(&damped, &trajectory).unwrap();
         assert_eq!(check.name, "energy never rises");
@@ -349,7 +423,11 @@ mod tests {
         }
         assert!(!energy_check(&damped, &pumped).unwrap().passed);
         // Gaining energy is allowed for neither kind of check to apply.
-        let pumping = MassSpringDamper { m: 1.0, c: -0.3, k: 20.0 };
+        let pumping = MassSpringDamper {
+            m: 1.0,
+            c: -0.3,
+            k: 20.0,
+        };
         assert!(energy_check(&pumping, &trajectory).is_none());
     }
 
@@ -361,12 +439,21 @@ mod tests {
         let trajectory = run(&a, 1.0, 0.5);
         let same = method_agreement(&[("motion-law", &a), ("kane", &b)], &trajectory, 10).unwrap();
         assert!(same.passed && same.value == 0.0, "{same:?}");
-        let different = method_agreement(&[("motion-law", &a), ("kane", &off)], &trajectory, 10).unwrap();
+        let different =
+            method_agreement(&[("motion-law", &a), ("kane", &off)], &trajectory, 10).unwrap();
         assert!(!different.passed, "{different:?}");
         // |Δθ''| = 0.01/0.5 |sin θ| at most 0.02 |sin θ| over max(1, |θ''|).
-        assert!(different.value > 1e-3 && different.value < 0.02, "{different:?}");
+        assert!(
+            different.value > 1e-3 && different.value < 0.02,
+            "{different:?}"
+        );
         assert!(different.detail.contains("theta''"), "{}", different.detail);
-        let other = method_agreement(&[("motion-law", &a), ("kane", &TwoOscillators)], &trajectory, 10).unwrap();
+        let other = method_agreement(
+            &[("motion-law", &a), ("kane", &TwoOscillators)],
+            &trajectory,
+            10,
+        )
+        .unwrap();
         assert!(!other.passed);
         assert!(method_agreement(&[("motion-law", &a)], &trajectory, 10).is_none());
     }
@@ -376,7 +463,10 @@ mod tests {
         let (l, g) = (0.5, 9.81);
         let pendulum = linearize(&Pendulum::new(l, g), &[0.4]).unwrap();
         assert!(pendulum.equilibrium.abs() < 1e-12);
-        assert!((pendulum.omega - (g / l).sqrt()).abs() < 1e-7, "{pendulum:?}");
+        assert!(
+            (pendulum.omega - (g / l).sqrt()).abs() < 1e-7,
+            "{pendulum:?}"
+        );
         let (m, c, k) = (2.0, 0.6, 50.0);
         let spring = linearize(&MassSpringDamper { m, c, k }, &[0.1]).unwrap();
         let damped = (k / m - (c / (2.0 * m)).powi(2)).sqrt();
@@ -385,7 +475,15 @@ mod tests {
         // Gravity upward: the bottom is unstable, so there is nothing to linearize.
         assert!(linearize(&Pendulum::new(l, -g), &[0.3]).is_none());
         // Overdamped: no oscillation.
-        assert!(linearize(&MassSpringDamper { m: 1.0, c: 30.0, k: 1.0 }, &[0.1]).is_none());
+        assert!(linearize(
+            &MassSpringDamper {
+                m: 1.0,
+                c: 30.0,
+                k: 1.0
+            },
+            &[0.1]
+        )
+        .is_none());
     }
 
     #[test]
@@ -393,10 +491,32 @@ mod tests {
         let pendulum = small_oscillation(&Pendulum::new(0.5, 9.81), &[0.4]).unwrap();
         assert!(pendulum.passed, "{pendulum:?}");
         let expected = 2.0 * PI * (0.5f64 / 9.81).sqrt();
-        assert!(pendulum.detail.contains(&format!("T = 2π/ω = {} s", fixed(expected))), "{}", pendulum.detail);
-        let spring = small_oscillation(&MassSpringDamper { m: 2.0, c: 0.6, k: 50.0 }, &[0.1]).unwrap();
+        assert!(
+            pendulum
+                .detail
+                .contains(&format!("T = 2π/ω = {} s", fixed(expected))),
+            "{}",
+            pendulum.detail
+        );
+        let spring = small_oscillation(
+            &MassSpringDamper {
+                m: 2.0,
+                c: 0.6,
+                k: 50.0,
+            },
+            &[0.1],
+        )
+        .unwrap();
         assert!(spring.passed, "{spring:?}");
         assert!(small_oscillation(&TwoOscillators, &[0.1, 0.2]).is_none());
-        assert!(small_oscillation(&MassSpringDamper { m: 1.0, c: -0.1, k: 1.0 }, &[0.1]).is_none());
+        assert!(small_oscillation(
+            &MassSpringDamper {
+                m: 1.0,
+                c: -0.1,
+                k: 1.0
+            },
+            &[0.1]
+        )
+        .is_none());
     }
 }

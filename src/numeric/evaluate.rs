@@ -56,7 +56,11 @@ pub struct StateSolution {
 
 /// The input symbols of the compiled program: constants, coordinates, rates, time.
 pub fn input_symbols(problem: &Problem) -> Vec<Symbol> {
-    let mut inputs: Vec<Symbol> = problem.constants.iter().map(|c| Symbol::Const(c.name.as_str().into())).collect();
+    let mut inputs: Vec<Symbol> = problem
+        .constants
+        .iter()
+        .map(|c| Symbol::Const(c.name.as_str().into()))
+        .collect();
     for order in 0..2 {
         inputs.extend((0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, order)));
     }
@@ -82,7 +86,9 @@ impl Compiled {
             let mut components = Vec::new();
             for component in &model.joints[j].reactions {
                 let symbol = reaction_symbol(&joint.name, &component.label);
-                let direction = component.direction.components_in(joint.parent, &model.frames);
+                let direction = component
+                    .direction
+                    .components_in(joint.parent, &model.frames);
                 components.push(ReactionComponentSlot {
                     is_force: component.label.starts_with('F'),
                     unknown: system.unknowns.iter().position(|u| *u == symbol),
@@ -90,7 +96,10 @@ impl Compiled {
                 });
                 outputs.extend(direction);
             }
-            reactions.push(ReactionSlot { joint: joint.name.clone(), components });
+            reactions.push(ReactionSlot {
+                joint: joint.name.clone(),
+                components,
+            });
         }
         let energy_output = outputs.len();
         outputs.push(energy::kinetic(model));
@@ -105,7 +114,10 @@ impl Compiled {
             reactions,
             energy_output,
             conservative: problem.loads.iter().all(|l| is_conservative(&l.kind)),
-            dissipative_only: problem.loads.iter().all(|l| is_conservative(&l.kind) || is_dissipative(&l.kind)),
+            dissipative_only: problem
+                .loads
+                .iter()
+                .all(|l| is_conservative(&l.kind) || is_dissipative(&l.kind)),
         }
     }
 
@@ -130,7 +142,10 @@ impl Compiled {
         let b = DVector::from_column_slice(&values[n * n..n * n + n]);
         let state = || describe_state(t, &self.coordinates, q, rates);
         if a.iter().chain(b.iter()).any(|x| !x.is_finite()) {
-            return Err(SolveError::NotFinite { state: state(), what: "a coefficient of the equations".into() });
+            return Err(SolveError::NotFinite {
+                state: state(),
+                what: "a coefficient of the equations".into(),
+            });
         }
         let x = solve_linear(&a, &b).ok_or_else(|| SolveError::SingularSystem {
             state: state(),
@@ -156,15 +171,24 @@ impl Compiled {
             potential: values[self.energy_output + 1],
         };
         let finite = solution.accelerations.iter().all(|x| x.is_finite())
-            && solution.reactions.iter().all(|(_, f, m)| f.iter().chain(m).all(|x| x.is_finite()));
+            && solution
+                .reactions
+                .iter()
+                .all(|(_, f, m)| f.iter().chain(m).all(|x| x.is_finite()));
         if !finite {
-            return Err(SolveError::NotFinite { state: state(), what: "the solution".into() });
+            return Err(SolveError::NotFinite {
+                state: state(),
+                what: "the solution".into(),
+            });
         }
         Ok(solution)
     }
 
     fn singularity_detail(&self, a: &DMatrix<f64>) -> String {
-        let scale = a.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
+        let scale = a
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()))
+            .max(f64::MIN_POSITIVE);
         for (i, name) in self.coordinates.iter().enumerate() {
             if a.column(i).iter().all(|x| x.abs() <= 1e-12 * scale) {
                 return format!("the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined");
@@ -216,8 +240,17 @@ impl System for Compiled {
 
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
         let s = self.solve(t, q, rates)?;
-        let reactions = s.reactions.iter().flat_map(|(_, f, m)| f.iter().chain(m.iter()).copied()).collect();
-        Ok(Evaluation { accelerations: s.accelerations, reactions, kinetic: s.kinetic, potential: s.potential })
+        let reactions = s
+            .reactions
+            .iter()
+            .flat_map(|(_, f, m)| f.iter().chain(m.iter()).copied())
+            .collect();
+        Ok(Evaluation {
+            accelerations: s.accelerations,
+            reactions,
+            kinetic: s.kinetic,
+            potential: s.potential,
+        })
     }
 
     fn is_conservative(&self) -> bool {

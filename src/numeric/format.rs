@@ -7,10 +7,18 @@ pub const SIGNIFICANT_DIGITS: usize = 6;
 /// scientific notation outside 1e-4 ..= 1e6, and no negative zero.
 pub fn fixed(x: f64) -> String {
     if !x.is_finite() {
-        return if x.is_nan() { "NaN".into() } else if x > 0.0 { "inf".into() } else { "-inf".into() };
+        return if x.is_nan() {
+            "NaN".into()
+        } else if x > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        };
     }
     let magnitude = x.abs();
-    let rounded: f64 = format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x).parse().unwrap_or(x);
+    let rounded: f64 = format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x)
+        .parse()
+        .unwrap_or(x);
     if rounded == 0.0 {
         return "0".into();
     }
@@ -19,7 +27,8 @@ pub fn fixed(x: f64) -> String {
         let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
         return format!("{}e{}", trim_zeros(mantissa), exponent);
     }
-    let decimals = (SIGNIFICANT_DIGITS as i32 - 1 - rounded.abs().log10().floor() as i32).max(0) as usize;
+    let decimals =
+        (SIGNIFICANT_DIGITS as i32 - 1 - rounded.abs().log10().floor() as i32).max(0) as usize;
     trim_zeros(&format!("{rounded:.decimals$}"))
 }
 

@@ -75,7 +75,9 @@ impl<E: fmt::Display> fmt::Display for Stop<E> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Stop::Derivative(e) => write!(f, "{e}"),
-            Stop::StepUnderflow { t, step, .. } => write!(f, "the step fell to {step:e} at t = {t}"),
+            Stop::StepUnderflow { t, step, .. } => {
+                write!(f, "the step fell to {step:e} at t = {t}")
+            }
             Stop::TooManySteps { t, steps, .. } => write!(f, "{steps} steps taken by t = {t}"),
             Stop::NotFinite { t, .. } => write!(f, "the derivative is not finite at t = {t}"),
             Stop::BadArguments(what) => write!(f, "{what}"),
@@ -161,11 +163,22 @@ const GROW_MOST: f64 = 10.0;
 /// # Errors
 /// Never panics and never loops without bound: when `f` fails, the step collapses or the
 /// step limit is hit, the result holds the outputs reached so far and a [`Stop`].
-pub fn integrate<E, F>(mut f: F, t0: f64, y0: &[f64], outputs: &[f64], options: &Options) -> Solution<E>
+pub fn integrate<E, F>(
+    mut f: F,
+    t0: f64,
+    y0: &[f64],
+    outputs: &[f64],
+    options: &Options,
+) -> Solution<E>
 where
     F: FnMut(f64, &[f64], &mut [f64]) -> Result<(), E>,
 {
-    let mut solution = Solution { times: Vec::new(), states: Vec::new(), stop: None, stats: Stats::default() };
+    let mut solution = Solution {
+        times: Vec::new(),
+        states: Vec::new(),
+        stop: None,
+        stats: Stats::default(),
+    };
     if let Some(problem) = check_arguments(t0, y0, outputs, options) {
         solution.stop = Some(Stop::BadArguments(problem));
         return solution;
@@ -216,7 +229,11 @@ where
 
     loop {
         if solution.stats.accepted + solution.stats.rejected >= options.max_steps {
-            solution.stop = Some(Stop::TooManySteps { t, y, steps: options.max_steps });
+            solution.stop = Some(Stop::TooManySteps {
+                t,
+                y,
+                steps: options.max_steps,
+            });
             return solution;
         }
         // Stretch a step that would stop just short of the end, so no sliver step remains.
@@ -224,7 +241,9 @@ where
         if last {
             h = t_end - t;
         }
-        let resolution = options.min_step.max(16.0 * f64::EPSILON * t.abs().max(t_end.abs()));
+        let resolution = options
+            .min_step
+            .max(16.0 * f64::EPSILON * t.abs().max(t_end.abs()));
         if h <= resolution || h.is_nan() {
             solution.stop = Some(match failure {
                 Some(e) => Stop::Derivative(e),
@@ -233,7 +252,16 @@ where
             return solution;
         }
 
-        let attempt = try_step(&mut f, t, h, &y, &mut k, &mut stage, &mut y_new, &mut solution.stats.evaluations);
+        let attempt = try_step(
+            &mut f,
+            t,
+            h,
+            &y,
+            &mut k,
+            &mut stage,
+            &mut y_new,
+            &mut solution.stats.evaluations,
+        );
         let error = match attempt {
             Ok(()) => error_norm(&k, &y, &y_new, h, options),
             // A failure inside the step (a singular state, say) is treated like a large
@@ -253,7 +281,11 @@ where
             while next_output < outputs.len() && outputs[next_output] <= t_new {
                 let at = outputs[next_output];
                 solution.times.push(at);
-                solution.states.push(if at == t_new { y_new.clone() } else { dense.at((at - t) / h) });
+                solution.states.push(if at == t_new {
+                    y_new.clone()
+                } else {
+                    dense.at((at - t) / h)
+                });
                 next_output += 1;
             }
             if next_output == outputs.len() {
@@ -274,7 +306,11 @@ where
             solution.stats.rejected += 1;
             // A NaN or infinite error (the derivative failed or blew up inside the step)
             // shrinks as much as allowed.
-            let factor = if error.is_finite() { (SAFETY * error.powf(-0.2)).max(SHRINK_MOST) } else { SHRINK_MOST };
+            let factor = if error.is_finite() {
+                (SAFETY * error.powf(-0.2)).max(SHRINK_MOST)
+            } else {
+                SHRINK_MOST
+            };
             h *= factor;
             just_rejected = true;
         }
@@ -306,22 +342,65 @@ where
     f(t + C2 * h, stage, k2)?;
     combine(stage, y, h, &[(A31, &k1[..]), (A32, &k2[..])]);
     f(t + C3 * h, stage, k3)?;
-    combine(stage, y, h, &[(A41, &k1[..]), (A42, &k2[..]), (A43, &k3[..])]);
+    combine(
+        stage,
+        y,
+        h,
+        &[(A41, &k1[..]), (A42, &k2[..]), (A43, &k3[..])],
+    );
     f(t + C4 * h, stage, k4)?;
-    combine(stage, y, h, &[(A51, &k1[..]), (A52, &k2[..]), (A53, &k3[..]), (A54, &k4[..])]);
+    combine(
+        stage,
+        y,
+        h,
+        &[
+            (A51, &k1[..]),
+            (A52, &k2[..]),
+            (A53, &k3[..]),
+            (A54, &k4[..]),
+        ],
+    );
     f(t + C5 * h, stage, k5)?;
-    combine(stage, y, h, &[(A61, &k1[..]), (A62, &k2[..]), (A63, &k3[..]), (A64, &k4[..]), (A65, &k5[..])]);
+    combine(
+        stage,
+        y,
+        h,
+        &[
+            (A61, &k1[..]),
+            (A62, &k2[..]),
+            (A63, &k3[..]),
+            (A64, &k4[..]),
+            (A65, &k5[..]),
+        ],
+    );
     f(t + h, stage, k6)?;
-    combine(y_new, y, h, &[(B1, &k1[..]), (B3, &k3[..]), (B4, &k4[..]), (B5, &k5[..]), (B6, &k6[..])]);
+    combine(
+        y_new,
+        y,
+        h,
+        &[
+            (B1, &k1[..]),
+            (B3, &k3[..]),
+            (B4, &k4[..]),
+            (B5, &k5[..]),
+            (B6, &k6[..]),
+        ],
+    );
     f(t + h, y_new, k7)
 }
 
 /// The reason the arguments cannot be used, if any.
-fn check_arguments(t0: f64, y0: &[f64], outputs: &[f64], options: &Options) -> Option<&'static str> {
+fn check_arguments(
+    t0: f64,
+    y0: &[f64],
+    outputs: &[f64],
+    options: &Options,
+) -> Option<&'static str> {
     if !t0.is_finite() || y0.iter().any(|v| !v.is_finite()) {
         return Some("the initial time and state must be finite");
     }
-    if outputs.iter().any(|v| !v.is_finite() || *v < t0) || outputs.windows(2).any(|w| w[1] < w[0]) {
+    if outputs.iter().any(|v| !v.is_finite() || *v < t0) || outputs.windows(2).any(|w| w[1] < w[0])
+    {
         return Some("the output times must be finite, ascending and not before the start");
     }
     let positive = |x: f64| x > 0.0 && x.is_finite();
@@ -373,17 +452,32 @@ fn error_norm(k: &[Vec<f64>; 7], y: &[f64], y_new: &[f64], h: f64, options: &Opt
 fn first_guess(y: &[f64], f0: &[f64], max_step: f64, options: &Options) -> f64 {
     let d0 = scaled_rms(y.iter().map(|v| (*v, *v)), y.len(), options);
     let d1 = scaled_rms(f0.iter().zip(y).map(|(d, v)| (*d, *v)), y.len(), options);
-    let h0 = if d0 < 1e-10 || d1 < 1e-10 { 1e-6 } else { 0.01 * d0 / d1 };
+    let h0 = if d0 < 1e-10 || d1 < 1e-10 {
+        1e-6
+    } else {
+        0.01 * d0 / d1
+    };
     h0.min(max_step)
 }
 
 /// The first step from the estimated second derivative (Hairer's HINIT, second half).
-fn second_guess(y: &[f64], f0: &[f64], f1: &[f64], h0: f64, max_step: f64, options: &Options) -> f64 {
+fn second_guess(
+    y: &[f64],
+    f0: &[f64],
+    f1: &[f64],
+    h0: f64,
+    max_step: f64,
+    options: &Options,
+) -> f64 {
     let d1 = scaled_rms(f0.iter().zip(y).map(|(d, v)| (*d, *v)), y.len(), options);
     let second = (0..y.len()).map(|i| ((f1[i] - f0[i]) / h0, y[i]));
     let d2 = scaled_rms(second, y.len(), options);
     let largest = d1.max(d2);
-    let h1 = if largest <= 1e-15 || largest.is_nan() { (h0 * 1e-3).max(1e-6) } else { (0.01 / largest).powf(0.2) };
+    let h1 = if largest <= 1e-15 || largest.is_nan() {
+        (h0 * 1e-3).max(1e-6)
+    } else {
+        (0.01 / largest).powf(0.2)
+    };
     (100.0 * h0).min(h1).min(max_step)
 }
 
@@ -404,7 +498,8 @@ impl Dense {
             c[1][i] = difference;
             c[2][i] = bspl;
             c[3][i] = difference - h * k7[i] - bspl;
-            c[4][i] = h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
+            c[4][i] =
+                h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
         }
         Dense { coefficients: c }
     }
@@ -438,7 +533,10 @@ mod tests {
         };
         let solution = integrate(decay, 0.0, &[3.0], &times, &Options::with_tolerance(1e-10));
         assert!(solution.stop.is_none());
-        assert_eq!(solution.times, times, "outputs fall exactly on the grid, end inclusive");
+        assert_eq!(
+            solution.times, times,
+            "outputs fall exactly on the grid, end inclusive"
+        );
         for (t, y) in solution.times.iter().zip(&solution.states) {
             let exact = 3.0 * (-2.0 * t).exp();
             assert!((y[0] - exact).abs() < 1e-9, "t = {t}: {} vs {exact}", y[0]);
@@ -457,14 +555,24 @@ mod tests {
             dy[1] = -w * w * y[0];
             Ok(())
         };
-        let solution = integrate(oscillator, 0.0, &[1.0, 0.0], &times, &Options::with_tolerance(1e-10));
+        let solution = integrate(
+            oscillator,
+            0.0,
+            &[1.0, 0.0],
+            &times,
+            &Options::with_tolerance(1e-10),
+        );
         assert!(solution.stop.is_none());
         assert_eq!(solution.times.len(), 2001);
         let worst = solution
             .times
             .iter()
             .zip(&solution.states)
-            .map(|(t, y)| (y[0] - (w * t).cos()).abs().max((y[1] + w * (w * t).sin()).abs() / w))
+            .map(|(t, y)| {
+                (y[0] - (w * t).cos())
+                    .abs()
+                    .max((y[1] + w * (w * t).sin()).abs() / w)
+            })
             .fold(0.0, f64::max);
         assert!(worst < 1e-7, "worst error {worst}");
     }
@@ -479,7 +587,13 @@ mod tests {
             dy[1] = -y[0];
             Ok(())
         };
-        let solution = integrate(rhs, 0.0, &[1.0, 0.0], &times, &Options::with_tolerance(1e-6));
+        let solution = integrate(
+            rhs,
+            0.0,
+            &[1.0, 0.0],
+            &times,
+            &Options::with_tolerance(1e-6),
+        );
         assert!(solution.stats.accepted < 100, "{:?}", solution.stats);
         for (t, y) in solution.times.iter().zip(&solution.states) {
             assert!((y[0] - t.cos()).abs() < 1e-5, "t = {t}");
@@ -496,7 +610,13 @@ mod tests {
                 dy[1] = -y[0];
                 Ok(())
             };
-            let solution = integrate(rhs, 0.0, &[0.0, 1.0], &[10.0], &Options::with_tolerance(tolerance));
+            let solution = integrate(
+                rhs,
+                0.0,
+                &[0.0, 1.0],
+                &[10.0],
+                &Options::with_tolerance(tolerance),
+            );
             let error = (solution.states[0][0] - 10f64.sin()).abs();
             (solution.stats.accepted as f64, error)
         };
@@ -504,7 +624,10 @@ mod tests {
         let (tight_steps, tight_error) = run(1e-10);
         let ratio = tight_steps / loose_steps;
         assert!((6.0..16.0).contains(&ratio), "step ratio {ratio}");
-        assert!(loose_error < 1e-4 && tight_error < 1e-9, "{loose_error} {tight_error}");
+        assert!(
+            loose_error < 1e-4 && tight_error < 1e-9,
+            "{loose_error} {tight_error}"
+        );
         assert!(tight_error < loose_error / 1e3);
     }
 
@@ -514,7 +637,10 @@ mod tests {
             dy[0] = 1.0;
             Ok(())
         };
-        let options = Options { max_step: 0.1, ..Options::with_tolerance(1e-6) };
+        let options = Options {
+            max_step: 0.1,
+            ..Options::with_tolerance(1e-6)
+        };
         let solution = integrate(rhs, 0.0, &[0.0], &[1.0], &options);
         assert!(solution.stats.accepted >= 10, "{:?}", solution.stats);
         assert!((solution.states[0][0] - 1.0).abs() < 1e-12);
@@ -528,7 +654,13 @@ mod tests {
             dy[0] = y[0] * y[0];
             Ok(())
         };
-        let solution = integrate(rhs, 0.0, &[1.0], &grid(0.25, 8), &Options::with_tolerance(1e-9));
+        let solution = integrate(
+            rhs,
+            0.0,
+            &[1.0],
+            &grid(0.25, 8),
+            &Options::with_tolerance(1e-9),
+        );
         assert_eq!(solution.times, vec![0.0, 0.25, 0.5, 0.75]);
         assert!((solution.states[3][0] - 4.0).abs() < 1e-7);
         match solution.stop {
@@ -545,9 +677,16 @@ mod tests {
             dy[1] = -1e4 * y[0];
             Ok(())
         };
-        let options = Options { max_steps: 50, ..Options::with_tolerance(1e-9) };
+        let options = Options {
+            max_steps: 50,
+            ..Options::with_tolerance(1e-9)
+        };
         let solution = integrate(rhs, 0.0, &[1.0, 0.0], &grid(1.0, 100), &options);
-        assert!(matches!(solution.stop, Some(Stop::TooManySteps { steps: 50, .. })), "{:?}", solution.stop);
+        assert!(
+            matches!(solution.stop, Some(Stop::TooManySteps { steps: 50, .. })),
+            "{:?}",
+            solution.stop
+        );
         assert_eq!(solution.times, vec![0.0]);
     }
 
@@ -560,7 +699,13 @@ mod tests {
             dy[0] = -y[0];
             Ok(())
         };
-        let solution = integrate(rhs, 0.0, &[1.0], &grid(0.1, 10), &Options::with_tolerance(1e-9));
+        let solution = integrate(
+            rhs,
+            0.0,
+            &[1.0],
+            &grid(0.1, 10),
+            &Options::with_tolerance(1e-9),
+        );
         assert!(matches!(solution.stop, Some(Stop::Derivative(_))));
         // The steps close in on t = 0.55, so every output before it is there.
         assert_eq!(solution.times, grid(0.1, 5));

@@ -27,7 +27,10 @@ pub struct Limits {
 
 impl Default for Limits {
     fn default() -> Self {
-        Limits { max_rows: MAX_ROWS, max_steps: MAX_STEPS }
+        Limits {
+            max_rows: MAX_ROWS,
+            max_steps: MAX_STEPS,
+        }
     }
 }
 
@@ -83,11 +86,17 @@ pub fn simulate_with_limits(
     let n = names.len();
     if q0.len() != n || rates0.len() != n {
         return Err(SolveError::BadSimulation {
-            what: format!("{n} coordinates but {} initial values and {} initial rates", q0.len(), rates0.len()),
+            what: format!(
+                "{n} coordinates but {} initial values and {} initial rates",
+                q0.len(),
+                rates0.len()
+            ),
         });
     }
     if q0.iter().chain(rates0).any(|v| !v.is_finite()) {
-        return Err(SolveError::BadSimulation { what: "the initial state is not finite".into() });
+        return Err(SolveError::BadSimulation {
+            what: "the initial state is not finite".into(),
+        });
     }
     let tolerance = settings.tolerance;
     if !(tolerance > 0.0 && tolerance < 1.0) {
@@ -119,20 +128,28 @@ pub fn simulate_with_limits(
         }
         if evaluation.accelerations.iter().any(|a| !a.is_finite()) {
             let state = describe_state(t, &names, q, rates);
-            return Err(SolveError::NotFinite { state, what: "an acceleration".into() });
+            return Err(SolveError::NotFinite {
+                state,
+                what: "an acceleration".into(),
+            });
         }
         dy[..n].copy_from_slice(rates);
         dy[n..].copy_from_slice(&evaluation.accelerations);
         Ok(())
     };
     let y0: Vec<f64> = q0.iter().chain(rates0).copied().collect();
-    let options = Options { max_steps: limits.max_steps, ..Options::with_tolerance(tolerance) };
+    let options = Options {
+        max_steps: limits.max_steps,
+        ..Options::with_tolerance(tolerance)
+    };
     let solution = integrate(derivative, 0.0, &y0, &times, &options);
 
     for (&t, y) in solution.times.iter().zip(&solution.states) {
         let (q, rates) = y.split_at(n);
         let evaluation = match system.evaluate(t, q, rates) {
-            Ok(e) if e.accelerations.len() != n => Err(mismatch("accelerations", n, e.accelerations.len())),
+            Ok(e) if e.accelerations.len() != n => {
+                Err(mismatch("accelerations", n, e.accelerations.len()))
+            }
             Ok(e) if e.reactions.len() != reactions.len() => {
                 Err(mismatch("reactions", reactions.len(), e.reactions.len()))
             }
@@ -150,18 +167,24 @@ pub fn simulate_with_limits(
         row.push(t);
         row.extend_from_slice(y);
         row.extend_from_slice(&evaluation.accelerations);
-        row.extend([evaluation.kinetic, potential, evaluation.kinetic + potential]);
+        row.extend([
+            evaluation.kinetic,
+            potential,
+            evaluation.kinetic + potential,
+        ]);
         row.extend_from_slice(&evaluation.reactions);
         trajectory.rows.push(row);
     }
     trajectory.stopped = solution.stop.map(|stop| match stop {
         Stop::Derivative(e) => e,
-        Stop::StepUnderflow { t, y, step } => {
-            SolveError::StepSizeUnderflow { state: describe_state(t, &names, &y[..n], &y[n..]), step }
-        }
-        Stop::TooManySteps { t, y, steps } => {
-            SolveError::TooManySteps { state: describe_state(t, &names, &y[..n], &y[n..]), steps }
-        }
+        Stop::StepUnderflow { t, y, step } => SolveError::StepSizeUnderflow {
+            state: describe_state(t, &names, &y[..n], &y[n..]),
+            step,
+        },
+        Stop::TooManySteps { t, y, steps } => SolveError::TooManySteps {
+            state: describe_state(t, &names, &y[..n], &y[n..]),
+            steps,
+        },
         Stop::NotFinite { t, y } => SolveError::NotFinite {
             state: describe_state(t, &names, &y[..n], &y[n..]),
             what: "an acceleration".into(),
@@ -172,7 +195,9 @@ pub fn simulate_with_limits(
 }
 
 fn mismatch(what: &str, expected: usize, got: usize) -> SolveError {
-    SolveError::BadSimulation { what: format!("the equations gave {got} {what} where {expected} were expected") }
+    SolveError::BadSimulation {
+        what: format!("the equations gave {got} {what} where {expected} were expected"),
+    }
 }
 
 /// The column names in the order of the command-line contract.
@@ -196,15 +221,22 @@ pub fn column_names(coordinates: &[String], reactions: &[String]) -> Vec<String>
 /// not positive; [`SolveError::TooManyRows`] past `max_rows`.
 pub fn output_times(duration: f64, step: f64, max_rows: usize) -> Result<Vec<f64>, SolveError> {
     if !(duration >= 0.0 && duration.is_finite()) {
-        return Err(SolveError::BadSimulation { what: format!("`duration` must be 0 or more, not {duration}") });
+        return Err(SolveError::BadSimulation {
+            what: format!("`duration` must be 0 or more, not {duration}"),
+        });
     }
     if !(step > 0.0 && step.is_finite()) {
-        return Err(SolveError::BadSimulation { what: format!("`output_step` must be positive, not {step}") });
+        return Err(SolveError::BadSimulation {
+            what: format!("`output_step` must be positive, not {step}"),
+        });
     }
     let intervals = duration / step;
     let rows = intervals.ceil() + 1.0;
     if rows > max_rows as f64 {
-        return Err(SolveError::TooManyRows { rows, limit: max_rows });
+        return Err(SolveError::TooManyRows {
+            rows,
+            limit: max_rows,
+        });
     }
     let whole = (intervals + 1e-9).floor() as usize;
     let mut times: Vec<f64> = (0..=whole).map(|i| i as f64 * step).collect();
@@ -242,21 +274,34 @@ impl Trajectory {
     /// The table as JSON: `{ "columns": [...], "rows": [[...], ...] }`, numbers in full
     /// precision (a non-finite number, which a finished row never holds, becomes `null`).
     pub fn to_json(&self) -> String {
-        let columns: Vec<String> =
-            self.columns.iter().map(|c| serde_json::Value::String(c.clone()).to_string()).collect();
+        let columns: Vec<String> = self
+            .columns
+            .iter()
+            .map(|c| serde_json::Value::String(c.clone()).to_string())
+            .collect();
         let rows: Vec<String> = self
             .rows
             .iter()
             .map(|row| {
                 let cells: Vec<String> = row
                     .iter()
-                    .map(|x| if x.is_finite() { full_precision(*x) } else { "null".into() })
+                    .map(|x| {
+                        if x.is_finite() {
+                            full_precision(*x)
+                        } else {
+                            "null".into()
+                        }
+                    })
                     .collect();
                 format!("    [{}]", cells.join(", "))
             })
             .collect();
-        format!("{{\n  \"columns\": [{}],\n  \"rows\": [\n{}\n  ]\n}}\n", columns.join(", "), rows.join(",\n"))
-            .replace("[\n\n  ]", "[]")
+        format!(
+            "{{\n  \"columns\": [{}],\n  \"rows\": [\n{}\n  ]\n}}\n",
+            columns.join(", "),
+            rows.join(",\n")
+        )
+        .replace("[\n\n  ]", "[]")
     }
 }
 
@@ -318,7 +363,12 @@ pub(crate) mod test_systems {
 
     impl Pendulum {
         pub fn new(l: f64, g: f64) -> Self {
-            Pendulum { m: 2.0, l, g, kinetic_factor: 0.5 }
+            Pendulum {
+                m: 2.0,
+                l,
+                g,
+                kinetic_factor: 0.5,
+            }
         }
     }
 
@@ -392,9 +442,17 @@ pub(crate) mod test_systems {
         fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
             if q[0] > self.wall {
                 let state = describe_state(t, &self.coordinate_names(), q, rates);
-                return Err(SolveError::SingularSystem { state, detail: "x'' is undetermined".into() });
+                return Err(SolveError::SingularSystem {
+                    state,
+                    detail: "x'' is undetermined".into(),
+                });
             }
-            Ok(Evaluation { accelerations: vec![0.0], reactions: Vec::new(), kinetic: 0.0, potential: 0.0 })
+            Ok(Evaluation {
+                accelerations: vec![0.0],
+                reactions: Vec::new(),
+                kinetic: 0.0,
+                potential: 0.0,
+            })
         }
         fn is_conservative(&self) -> bool {
             true
@@ -411,7 +469,11 @@ mod tests {
     use super::*;
 
     fn settings(duration: f64, output_step: f64, tolerance: f64) -> SimulateSettings {
-        SimulateSettings { duration, output_step, tolerance }
+        SimulateSettings {
+            duration,
+            output_step,
+            tolerance,
+        }
     }
 
     /// The complete elliptic integral of the first kind K(k), by the arithmetic-geometric
@@ -426,11 +488,25 @@ mod tests {
 
     #[test]
     fn columns_and_rows_follow_the_contract() {
-        let system = MassSpringDamper { m: 1.0, c: 0.0, k: 1.0 };
+        let system = MassSpringDamper {
+            m: 1.0,
+            c: 0.0,
+            k: 1.0,
+        };
         let run = simulate(&system, &[1.0], &[0.0], &SimulateSettings::default()).unwrap();
         assert_eq!(
             run.columns,
-            ["t", "x", "x'", "x''", "kinetic", "potential", "total", "W.force.x"].map(String::from)
+            [
+                "t",
+                "x",
+                "x'",
+                "x''",
+                "kinetic",
+                "potential",
+                "total",
+                "W.force.x"
+            ]
+            .map(String::from)
         );
         assert_eq!(run.rows.len(), 501);
         assert!(run.stopped.is_none());
@@ -462,9 +538,16 @@ mod tests {
             let v = e * ((b * w - s * a) * cos - (a * w + s * b) * sin);
             let acceleration = -(c * v + k * x) / m;
             assert!((row[1] - x).abs() < 1e-8, "x at t = {t}: {} vs {x}", row[1]);
-            assert!((row[2] - v).abs() < 1e-7, "x' at t = {t}: {} vs {v}", row[2]);
+            assert!(
+                (row[2] - v).abs() < 1e-7,
+                "x' at t = {t}: {} vs {v}",
+                row[2]
+            );
             assert!((row[3] - acceleration).abs() < 1e-6, "x'' at t = {t}");
-            assert!((row[7] - m * acceleration).abs() < 1e-5, "wall force at t = {t}");
+            assert!(
+                (row[7] - m * acceleration).abs() < 1e-5,
+                "wall force at t = {t}"
+            );
         }
     }
 
@@ -473,22 +556,39 @@ mod tests {
     fn large_swing_pendulum_period_matches_elliptic_integral() {
         let (l, g, theta0): (f64, f64, f64) = (0.75, 9.81, 2.5);
         let exact = 4.0 * (l / g).sqrt() * elliptic_k((theta0 / 2.0).sin());
-        let run = simulate(&Pendulum::new(l, g), &[theta0], &[0.0], &settings(3.0 * exact, 0.005, 1e-11)).unwrap();
+        let run = simulate(
+            &Pendulum::new(l, g),
+            &[theta0],
+            &[0.0],
+            &settings(3.0 * exact, 0.005, 1e-11),
+        )
+        .unwrap();
         let times: Vec<f64> = run.rows.iter().map(|r| r[0]).collect();
         let theta: Vec<f64> = run.rows.iter().map(|r| r[1]).collect();
         let rate: Vec<f64> = run.rows.iter().map(|r| r[2]).collect();
         let crossings = crate::numeric::checks::downward_crossings(&times, &theta, &rate);
         assert_eq!(crossings.len(), 3);
         let measured = (crossings[2] - crossings[0]) / 2.0;
-        assert!((measured - exact).abs() / exact < 1e-7, "{measured} vs {exact}");
+        assert!(
+            (measured - exact).abs() / exact < 1e-7,
+            "{measured} vs {exact}"
+        );
         // The rod's pull along it, from the radial equation with w^2 from energy:
         // T = m g cos(theta) + m l w^2, so O.force = T (-sin(theta), cos(theta)).
         for row in &run.rows {
             let theta = row[1];
             let w2 = 2.0 * g / l * (theta.cos() - theta0.cos());
             let pull = 2.0 * (g * theta.cos() + l * w2);
-            assert!((row[7] + pull * theta.sin()).abs() < 1e-6, "O.force.x at t = {}", row[0]);
-            assert!((row[8] - pull * theta.cos()).abs() < 1e-6, "O.force.y at t = {}", row[0]);
+            assert!(
+                (row[7] + pull * theta.sin()).abs() < 1e-6,
+                "O.force.x at t = {}",
+                row[0]
+            );
+            assert!(
+                (row[8] - pull * theta.cos()).abs() < 1e-6,
+                "O.force.y at t = {}",
+                row[0]
+            );
         }
     }
 
@@ -500,24 +600,52 @@ mod tests {
         assert_eq!(run.rows.len(), 5, "t = 0 ..= 0.4");
         assert!((run.rows[4][1] - 0.4).abs() < 1e-12);
         match &run.stopped {
-            Some(SolveError::SingularSystem { state, .. }) => assert!(state.starts_with("t = 0.5"), "{state}"),
+            Some(SolveError::SingularSystem { state, .. }) => {
+                assert!(state.starts_with("t = 0.5"), "{state}")
+            }
             other => panic!("expected a singular system, got {other:?}"),
         }
         // Singular at the start: no rows, and the reason.
         let run = simulate(&system, &[1.0], &[0.0], &SimulateSettings::default()).unwrap();
         assert!(run.rows.is_empty());
-        assert!(matches!(run.stopped, Some(SolveError::SingularSystem { .. })));
+        assert!(matches!(
+            run.stopped,
+            Some(SolveError::SingularSystem { .. })
+        ));
     }
 
     #[test]
     fn refuses_runs_that_are_too_long_or_malformed() {
-        let system = MassSpringDamper { m: 1.0, c: 0.0, k: 1.0 };
+        let system = MassSpringDamper {
+            m: 1.0,
+            c: 0.0,
+            k: 1.0,
+        };
         let too_long = simulate(&system, &[1.0], &[0.0], &settings(1e4, 1e-3, 1e-9));
-        assert!(matches!(too_long, Err(SolveError::TooManyRows { limit: MAX_ROWS, .. })), "{too_long:?}");
-        let raised = Limits { max_rows: 20_000_000, ..Limits::default() };
+        assert!(
+            matches!(
+                too_long,
+                Err(SolveError::TooManyRows {
+                    limit: MAX_ROWS,
+                    ..
+                })
+            ),
+            "{too_long:?}"
+        );
+        let raised = Limits {
+            max_rows: 20_000_000,
+            ..Limits::default()
+        };
         assert!(output_times(1e4, 1e-3, raised.max_rows).is_ok());
-        for bad in [settings(-1.0, 0.01, 1e-9), settings(1.0, 0.0, 1e-9), settings(1.0, 0.01, 0.0)] {
-            assert!(matches!(simulate(&system, &[1.0], &[0.0], &bad), Err(SolveError::BadSimulation { .. })));
+        for bad in [
+            settings(-1.0, 0.01, 1e-9),
+            settings(1.0, 0.0, 1e-9),
+            settings(1.0, 0.01, 0.0),
+        ] {
+            assert!(matches!(
+                simulate(&system, &[1.0], &[0.0], &bad),
+                Err(SolveError::BadSimulation { .. })
+            ));
         }
         assert!(simulate(&system, &[1.0, 2.0], &[0.0], &SimulateSettings::default()).is_err());
     }
@@ -539,12 +667,18 @@ mod tests {
             stopped: None,
             coordinates: 1,
         };
-        assert_eq!(trajectory.to_csv(), "t,q1,q1'\n0.0,0.30000000000000004,0.0\n0.01,1e-7,12345678.9\n");
+        assert_eq!(
+            trajectory.to_csv(),
+            "t,q1,q1'\n0.0,0.30000000000000004,0.0\n0.01,1e-7,12345678.9\n"
+        );
         let json: serde_json::Value = serde_json::from_str(&trajectory.to_json()).unwrap();
         assert_eq!(json["columns"], serde_json::json!(["t", "q1", "q1'"]));
         assert_eq!(json["rows"][0][1].as_f64(), Some(0.1 + 0.2));
         assert_eq!(json["rows"][1][1].as_f64(), Some(1e-7));
-        let empty = Trajectory { rows: Vec::new(), ..trajectory };
+        let empty = Trajectory {
+            rows: Vec::new(),
+            ..trajectory
+        };
         let json: serde_json::Value = serde_json::from_str(&empty.to_json()).unwrap();
         assert_eq!(json["rows"], serde_json::json!([]));
     }

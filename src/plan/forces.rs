@@ -76,7 +76,10 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
                 category: Category::Distance,
                 source: Source::Gravity,
                 label: format!("gravity on {}", problem.body_name(body)),
-                kind: ActionKind::Force { offset: state.center_offset.clone(), force: g.scaled(&state.mass) },
+                kind: ActionKind::Force {
+                    offset: state.center_offset.clone(),
+                    force: g.scaled(&state.mass),
+                },
             });
         }
     }
@@ -97,10 +100,26 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
             }
         }
         let label = format!("reaction at {}", joint.name);
-        push_pair(&mut out, model, j, Category::Contact, Source::Reaction(j), &label, &force, &moment);
+        push_pair(
+            &mut out,
+            model,
+            j,
+            Category::Contact,
+            Source::Reaction(j),
+            &label,
+            &force,
+            &moment,
+        );
     }
     for (index, load) in problem.loads.iter().enumerate() {
-        load_actions(model, index, &load.kind, &load.path, load.name.as_deref(), &mut out)?;
+        load_actions(
+            model,
+            index,
+            &load.kind,
+            &load.path,
+            load.name.as_deref(),
+            &mut out,
+        )?;
     }
     Ok(out)
 }
@@ -122,8 +141,20 @@ fn push_pair(
     let on_parent: Components = std::array::from_fn(|i| &jm.at[i] + &jm.motion.translation[i]);
     let minus = Expr::int(-1);
     let sides = [
-        (joint.child, joint.parent, jm.child_at.clone(), force.clone(), couple.clone()),
-        (joint.parent, joint.child, on_parent, force.scaled(&minus), couple.scaled(&minus)),
+        (
+            joint.child,
+            joint.parent,
+            jm.child_at.clone(),
+            force.clone(),
+            couple.clone(),
+        ),
+        (
+            joint.parent,
+            joint.child,
+            on_parent,
+            force.scaled(&minus),
+            couple.scaled(&minus),
+        ),
     ];
     for (body, partner, offset, f, c) in sides {
         if body == BodyId::GROUND {
@@ -131,11 +162,25 @@ fn push_pair(
         }
         if !f.is_zero() {
             let kind = ActionKind::Force { offset, force: f };
-            out.push(Action { body, partner: Some(partner), category, source, label: label.to_string(), kind });
+            out.push(Action {
+                body,
+                partner: Some(partner),
+                category,
+                source,
+                label: label.to_string(),
+                kind,
+            });
         }
         if !c.is_zero() {
             let kind = ActionKind::Couple { torque: c };
-            out.push(Action { body, partner: Some(partner), category, source, label: label.to_string(), kind });
+            out.push(Action {
+                body,
+                partner: Some(partner),
+                category,
+                source,
+                label: label.to_string(),
+                kind,
+            });
         }
     }
 }
@@ -151,7 +196,11 @@ fn load_actions(
     let problem = model.problem;
     let source = Source::Load(index);
     let named = |default: String| name.map(str::to_string).unwrap_or(default);
-    let error = |message: String, hint: &str| MechanicsError { path: path.to_string(), message, hint: Some(hint.into()) };
+    let error = |message: String, hint: &str| MechanicsError {
+        path: path.to_string(),
+        message,
+        hint: Some(hint.into()),
+    };
     let contact = |body: BodyId, partner: Option<BodyId>, label: String, kind: ActionKind| Action {
         body,
         partner,
@@ -167,31 +216,62 @@ fn load_actions(
                     let (body, offset) = model.locate(*point);
                     if body != *on {
                         return Err(error(
-                            format!("the point is on `{}`, not on `{}`", problem.body_name(body), problem.body_name(*on)),
+                            format!(
+                                "the point is on `{}`, not on `{}`",
+                                problem.body_name(body),
+                                problem.body_name(*on)
+                            ),
                             "a force acts at a point of the body it is applied to",
                         ));
                     }
                     offset
                 }
-                ForcePoint::Offset(v) => crate::mechanics::model::vector_of(v).components_in(*on, &model.frames),
+                ForcePoint::Offset(v) => {
+                    crate::mechanics::model::vector_of(v).components_in(*on, &model.frames)
+                }
             };
             let force = crate::mechanics::model::vector_of(vector);
             if *on != BodyId::GROUND {
-                out.push(contact(*on, None, named(format!("force on {}", problem.body_name(*on))), ActionKind::Force { offset, force }));
+                out.push(contact(
+                    *on,
+                    None,
+                    named(format!("force on {}", problem.body_name(*on))),
+                    ActionKind::Force { offset, force },
+                ));
             }
         }
-        LoadKind::Torque { on, vector, reaction_on } => {
+        LoadKind::Torque {
+            on,
+            vector,
+            reaction_on,
+        } => {
             let torque = crate::mechanics::model::vector_of(vector);
             let label = named(format!("torque on {}", problem.body_name(*on)));
             if *on != BodyId::GROUND {
-                out.push(contact(*on, *reaction_on, label.clone(), ActionKind::Couple { torque: torque.clone() }));
+                out.push(contact(
+                    *on,
+                    *reaction_on,
+                    label.clone(),
+                    ActionKind::Couple {
+                        torque: torque.clone(),
+                    },
+                ));
             }
             if let Some(other) = reaction_on.filter(|b| *b != BodyId::GROUND) {
                 let opposite = torque.scaled(&Expr::int(-1));
-                out.push(contact(other, Some(*on), label, ActionKind::Couple { torque: opposite }));
+                out.push(contact(
+                    other,
+                    Some(*on),
+                    label,
+                    ActionKind::Couple { torque: opposite },
+                ));
             }
         }
-        LoadKind::Spring { between, stiffness, free_length } => {
+        LoadKind::Spring {
+            between,
+            stiffness,
+            free_length,
+        } => {
             let (delta, _, ends) = separation(model, between, path)?;
             let length2 = delta.dot(&delta, &model.frames);
             // Tension k (l - l0) along the unit vector delta / l; with l0 = 0 no square root.
@@ -200,26 +280,80 @@ fn load_actions(
             } else {
                 stiffness * &(Expr::one() - free_length * &pow(length2, Expr::ratio(-1, 2)))
             };
-            push_two_point(out, model, ends, &delta.scaled(&factor), contact, &named("spring".into()));
+            push_two_point(
+                out,
+                model,
+                ends,
+                &delta.scaled(&factor),
+                contact,
+                &named("spring".into()),
+            );
         }
-        LoadKind::Damper { between, coefficient } => {
+        LoadKind::Damper {
+            between,
+            coefficient,
+        } => {
             let (delta, delta_rate, ends) = separation(model, between, path)?;
             let length2 = delta.dot(&delta, &model.frames);
             let rate = delta.dot(&delta_rate, &model.frames);
             let factor = coefficient * &(&rate * &pow(length2, Expr::int(-1)));
-            push_two_point(out, model, ends, &delta.scaled(&factor), contact, &named("damper".into()));
+            push_two_point(
+                out,
+                model,
+                ends,
+                &delta.scaled(&factor),
+                contact,
+                &named("damper".into()),
+            );
         }
-        LoadKind::JointSpring { joint, coordinate, stiffness, rest } => {
+        LoadKind::JointSpring {
+            joint,
+            coordinate,
+            stiffness,
+            rest,
+        } => {
             let q = problem.coordinate_expr(*coordinate, 0);
             let value = -(stiffness * &(&q - rest));
-            joint_load(out, model, *joint, *coordinate, &value, source, &named("joint spring".into()));
+            joint_load(
+                out,
+                model,
+                *joint,
+                *coordinate,
+                &value,
+                source,
+                &named("joint spring".into()),
+            );
         }
-        LoadKind::JointDamper { joint, coordinate, coefficient } => {
+        LoadKind::JointDamper {
+            joint,
+            coordinate,
+            coefficient,
+        } => {
             let value = -(coefficient * &problem.coordinate_expr(*coordinate, 1));
-            joint_load(out, model, *joint, *coordinate, &value, source, &named("joint damper".into()));
+            joint_load(
+                out,
+                model,
+                *joint,
+                *coordinate,
+                &value,
+                source,
+                &named("joint damper".into()),
+            );
         }
-        LoadKind::JointActuator { joint, coordinate, value } => {
-            joint_load(out, model, *joint, *coordinate, value, source, &named("actuator".into()));
+        LoadKind::JointActuator {
+            joint,
+            coordinate,
+            value,
+        } => {
+            joint_load(
+                out,
+                model,
+                *joint,
+                *coordinate,
+                value,
+                source,
+                &named("actuator".into()),
+            );
         }
     }
     Ok(())
@@ -228,18 +362,29 @@ fn load_actions(
 type Ends = [(BodyId, Components); 2];
 
 /// The vector from the first point to the second, its rate, and where the points are.
-fn separation(model: &Model, between: &[PointRef; 2], path: &str) -> Result<(Vector, Vector, Ends), MechanicsError> {
+fn separation(
+    model: &Model,
+    between: &[PointRef; 2],
+    path: &str,
+) -> Result<(Vector, Vector, Ends), MechanicsError> {
     let ends = [model.locate(between[0]), model.locate(between[1])];
     if ends[0].0 == ends[1].0 {
         return Err(MechanicsError {
             path: format!("{path}.between"),
-            message: format!("both points are on `{}`, so the element can never stretch", model.problem.body_name(ends[0].0)),
+            message: format!(
+                "both points are on `{}`, so the element can never stretch",
+                model.problem.body_name(ends[0].0)
+            ),
             hint: Some("connect points of two different bodies".into()),
         });
     }
     let first = model.point_on(ends[0].0, &ends[0].1);
     let second = model.point_on(ends[1].0, &ends[1].1);
-    Ok((second.position.minus(&first.position), second.velocity.minus(&first.velocity), ends))
+    Ok((
+        second.position.minus(&first.position),
+        second.velocity.minus(&first.velocity),
+        ends,
+    ))
 }
 
 /// `force_on_first` on the first point, its opposite on the second.
@@ -253,20 +398,55 @@ fn push_two_point(
 ) {
     let [(b1, o1), (b2, o2)] = ends;
     if b1 != BodyId::GROUND {
-        out.push(contact(b1, Some(b2), label.to_string(), ActionKind::Force { offset: o1, force: force_on_first.clone() }));
+        out.push(contact(
+            b1,
+            Some(b2),
+            label.to_string(),
+            ActionKind::Force {
+                offset: o1,
+                force: force_on_first.clone(),
+            },
+        ));
     }
     if b2 != BodyId::GROUND {
         let opposite = force_on_first.scaled(&Expr::int(-1));
-        out.push(contact(b2, Some(b1), label.to_string(), ActionKind::Force { offset: o2, force: opposite }));
+        out.push(contact(
+            b2,
+            Some(b1),
+            label.to_string(),
+            ActionKind::Force {
+                offset: o2,
+                force: opposite,
+            },
+        ));
     }
 }
 
-fn joint_load(out: &mut Vec<Action>, model: &Model, j: usize, coordinate: usize, value: &Expr, source: Source, label: &str) {
+fn joint_load(
+    out: &mut Vec<Action>,
+    model: &Model,
+    j: usize,
+    coordinate: usize,
+    value: &Expr,
+    source: Source,
+    label: &str,
+) {
     let index = model.problem.coordinates[coordinate].index_in_joint;
-    let Some(axis) = model.joints[j].load_axes.get(index) else { return };
+    let Some(axis) = model.joints[j].load_axes.get(index) else {
+        return;
+    };
     let force = axis.force.scaled(value);
     let couple = axis.torque.scaled(value);
-    push_pair(out, model, j, Category::Contact, source, label, &force, &couple);
+    push_pair(
+        out,
+        model,
+        j,
+        Category::Contact,
+        source,
+        label,
+        &force,
+        &couple,
+    );
 }
 
 /// The generalized force that joint loads put directly on each coordinate (for Kane's method).
@@ -275,13 +455,26 @@ pub fn joint_load_generalized_forces(model: &Model) -> Vec<Expr> {
     let mut q = vec![Expr::zero(); problem.coordinates.len()];
     for load in &problem.loads {
         let (c, value) = match &load.kind {
-            LoadKind::JointSpring { coordinate, stiffness, rest, .. } => {
-                (*coordinate, -(stiffness * &(&problem.coordinate_expr(*coordinate, 0) - rest)))
-            }
-            LoadKind::JointDamper { coordinate, coefficient, .. } => {
-                (*coordinate, -(coefficient * &problem.coordinate_expr(*coordinate, 1)))
-            }
-            LoadKind::JointActuator { coordinate, value, .. } => (*coordinate, value.clone()),
+            LoadKind::JointSpring {
+                coordinate,
+                stiffness,
+                rest,
+                ..
+            } => (
+                *coordinate,
+                -(stiffness * &(&problem.coordinate_expr(*coordinate, 0) - rest)),
+            ),
+            LoadKind::JointDamper {
+                coordinate,
+                coefficient,
+                ..
+            } => (
+                *coordinate,
+                -(coefficient * &problem.coordinate_expr(*coordinate, 1)),
+            ),
+            LoadKind::JointActuator {
+                coordinate, value, ..
+            } => (*coordinate, value.clone()),
             _ => continue,
         };
         q[c] = &q[c] + &value;

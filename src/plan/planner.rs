@@ -3,7 +3,9 @@
 //! nonsingular set with no unwanted reaction and the fewest terms. Every rejected candidate
 //! keeps its reason, so that the worked solution can show why a choice was made.
 
-use crate::equations::rows::{action_terms, resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum};
+use crate::equations::rows::{
+    action_terms, resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum,
+};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, Source};
 use crate::problem::{BodyId, JointKind};
@@ -66,7 +68,10 @@ pub fn free_bodies(model: &Model) -> Vec<Vec<BodyId>> {
     let n = model.order.len();
     if n <= MAX_BODIES_FOR_GROUPS {
         for mask in 1u32..(1 << n) {
-            let set: Vec<BodyId> = (0..n).filter(|i| mask & (1 << i) != 0).map(|i| model.order[i]).collect();
+            let set: Vec<BodyId> = (0..n)
+                .filter(|i| mask & (1 << i) != 0)
+                .map(|i| model.order[i])
+                .collect();
             if is_connected(model, &set) {
                 push(set);
             }
@@ -97,7 +102,10 @@ fn is_connected(model: &Model, set: &[BodyId]) -> bool {
 pub fn boundary_joints(model: &Model, free_body: &[BodyId]) -> Vec<usize> {
     let problem = model.problem;
     (0..problem.joints.len())
-        .filter(|&j| free_body.contains(&problem.joints[j].parent) != free_body.contains(&problem.joints[j].child))
+        .filter(|&j| {
+            free_body.contains(&problem.joints[j].parent)
+                != free_body.contains(&problem.joints[j].child)
+        })
         .collect()
 }
 
@@ -109,7 +117,11 @@ fn push_direction(out: &mut Vec<Direction>, d: Direction) {
 
 /// Directions for force rows and for moment rows: the joint axes in play and the unit
 /// vectors of the frames involved.
-fn directions(model: &Model, free_body: &[BodyId], boundary: &[usize]) -> (Vec<Direction>, Vec<Direction>) {
+fn directions(
+    model: &Model,
+    free_body: &[BodyId],
+    boundary: &[usize],
+) -> (Vec<Direction>, Vec<Direction>) {
     let problem = model.problem;
     let planar = model.is_planar();
     let (mut forces, mut moments) = (Vec::new(), Vec::new());
@@ -119,7 +131,10 @@ fn directions(model: &Model, free_body: &[BodyId], boundary: &[usize]) -> (Vec<D
         if let Some(axis) = &motion.written_axis {
             let d = Direction {
                 name: format!("axis of {}", joint.name),
-                latex: format!("\\hat{{\\mathbf{{e}}}}_{{{}}}", crate::symbolic::print::latex_name(&joint.name)),
+                latex: format!(
+                    "\\hat{{\\mathbf{{e}}}}_{{{}}}",
+                    crate::symbolic::print::latex_name(&joint.name)
+                ),
                 vector: Vector::new(joint.parent, axis.clone()),
             };
             if matches!(joint.kind, JointKind::Prismatic | JointKind::Cylindrical) {
@@ -130,8 +145,14 @@ fn directions(model: &Model, free_body: &[BodyId], boundary: &[usize]) -> (Vec<D
             }
         }
         if joint.kind == JointKind::Universal {
-            push_direction(&mut moments, unit_direction(model, joint.parent, joint.sequence[0] as usize));
-            push_direction(&mut moments, unit_direction(model, joint.child, joint.sequence[1] as usize));
+            push_direction(
+                &mut moments,
+                unit_direction(model, joint.parent, joint.sequence[0] as usize),
+            );
+            push_direction(
+                &mut moments,
+                unit_direction(model, joint.child, joint.sequence[1] as usize),
+            );
         }
     }
     let mut frames = vec![BodyId::GROUND];
@@ -164,23 +185,43 @@ fn directions(model: &Model, free_body: &[BodyId], boundary: &[usize]) -> (Vec<D
 /// only for candidates that survive.
 pub fn candidates(model: &Model, actions: &[Action], reactions: &[Symbol]) -> Vec<Candidate> {
     let problem = model.problem;
-    let reaction_actions: Vec<Action> =
-        actions.iter().filter(|a| matches!(a.source, Source::Reaction(_))).cloned().collect();
+    let reaction_actions: Vec<Action> = actions
+        .iter()
+        .filter(|a| matches!(a.source, Source::Reaction(_)))
+        .cloned()
+        .collect();
     let mut out = Vec::new();
     for free_body in free_bodies(model) {
         let boundary = boundary_joints(model, &free_body);
         let (force_directions, moment_directions) = directions(model, &free_body, &boundary);
         let mut points: Vec<(String, Vector)> = boundary
             .iter()
-            .map(|&j| (problem.joints[j].name.clone(), model.joints[j].point.position.clone()))
+            .map(|&j| {
+                (
+                    problem.joints[j].name.clone(),
+                    model.joints[j].point.position.clone(),
+                )
+            })
             .collect();
         for &body in &free_body {
-            points.push((format!("{}*", problem.body_name(body)), model.bodies[body.0].center.position.clone()));
+            points.push((
+                format!("{}*", problem.body_name(body)),
+                model.bodies[body.0].center.position.clone(),
+            ));
         }
-        let mut rows: Vec<(Sum, Direction)> = force_directions.into_iter().map(|d| (Sum::Force, d)).collect();
+        let mut rows: Vec<(Sum, Direction)> = force_directions
+            .into_iter()
+            .map(|d| (Sum::Force, d))
+            .collect();
         for (point, position) in points {
             for direction in &moment_directions {
-                rows.push((Sum::Moment { point: point.clone(), position: position.clone() }, direction.clone()));
+                rows.push((
+                    Sum::Moment {
+                        point: point.clone(),
+                        position: position.clone(),
+                    },
+                    direction.clone(),
+                ));
             }
         }
         for (sum, direction) in rows {
@@ -188,21 +229,45 @@ pub fn candidates(model: &Model, actions: &[Action], reactions: &[Symbol]) -> Ve
                 Sum::Moment { position, .. } => Some(position),
                 _ => None,
             };
-            let (terms, _) = action_terms(model, &reaction_actions, &free_body, about, &direction.vector);
+            let (terms, _) = action_terms(
+                model,
+                &reaction_actions,
+                &free_body,
+                about,
+                &direction.vector,
+            );
             let reactions = unknowns_in(&terms, reactions);
-            out.push(Candidate { free_body: free_body.clone(), sum, direction, reactions });
+            out.push(Candidate {
+                free_body: free_body.clone(),
+                sum,
+                direction,
+                reactions,
+            });
         }
     }
     out
 }
 
 /// Writes out the whole row of a candidate.
-pub fn write_out(model: &Model, actions: &[Action], inertia: &Inertia, candidate: &Candidate, unknowns: &[Symbol]) -> Equation {
+pub fn write_out(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    candidate: &Candidate,
+    unknowns: &[Symbol],
+) -> Equation {
     let about = match &candidate.sum {
         Sum::Moment { position, .. } => Some(position),
         _ => None,
     };
-    let groups = resultant(model, actions, inertia, &candidate.free_body, about, &candidate.direction.vector);
+    let groups = resultant(
+        model,
+        actions,
+        inertia,
+        &candidate.free_body,
+        about,
+        &candidate.direction.vector,
+    );
     let expression = groups.total();
     Equation {
         free_body: candidate.free_body.clone(),
@@ -221,14 +286,20 @@ pub fn sample_states(model: &Model) -> Vec<Values> {
     let problem = model.problem;
     let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut next = || {
-        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
         ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     };
     let mut states = Vec::new();
     for sample in 0..4 {
         let mut values = model.values.clone();
         for (i, c) in problem.coordinates.iter().enumerate() {
-            let (q, u) = if sample == 0 { (c.initial, c.rate) } else { (c.initial + next(), c.rate + next()) };
+            let (q, u) = if sample == 0 {
+                (c.initial, c.rate)
+            } else {
+                (c.initial + next(), c.rate + next())
+            };
             values.set(problem.coordinate_symbol(i, 0), q);
             values.set(problem.coordinate_symbol(i, 1), u);
         }
@@ -256,7 +327,10 @@ pub fn adds_rank(basis: &mut Vec<Vec<f64>>, row: &[f64]) -> bool {
     for _ in 0..2 {
         for b in basis.iter() {
             let projection: f64 = residual.iter().zip(b).map(|(r, b)| r * b).sum();
-            residual.iter_mut().zip(b).for_each(|(r, b)| *r -= projection * b);
+            residual
+                .iter_mut()
+                .zip(b)
+                .for_each(|(r, b)| *r -= projection * b);
         }
     }
     let left = residual.iter().map(|x| x * x).sum::<f64>().sqrt();
@@ -295,9 +369,16 @@ fn choose_at(
     let mut written: Vec<(usize, Equation)> = Vec::new();
     let mut rejected: Vec<(usize, Rejected)> = Vec::new();
     for (index, candidate) in candidates.into_iter().enumerate() {
-        let unwanted: Vec<&Symbol> = candidate.reactions.iter().filter(|u| !wanted.contains(u)).collect();
+        let unwanted: Vec<&Symbol> = candidate
+            .reactions
+            .iter()
+            .filter(|u| !wanted.contains(u))
+            .collect();
         if unwanted.is_empty() {
-            written.push((index, write_out(model, actions, inertia, &candidate, wanted)));
+            written.push((
+                index,
+                write_out(model, actions, inertia, &candidate, wanted),
+            ));
         } else {
             let reason = unwanted_reason(&unwanted);
             rejected.push((index, Rejected { candidate, reason }));
@@ -322,7 +403,10 @@ fn choose_at(
                 let candidate = Candidate {
                     free_body: equation.free_body.clone(),
                     sum: equation.sum.clone(),
-                    direction: equation.direction.clone().unwrap_or_else(|| unit_direction(model, BodyId::GROUND, 0)),
+                    direction: equation
+                        .direction
+                        .clone()
+                        .unwrap_or_else(|| unit_direction(model, BodyId::GROUND, 0)),
                     reactions: Vec::new(),
                 };
                 rejected.push((index, Rejected { candidate, reason }));
@@ -332,11 +416,19 @@ fn choose_at(
     }
     chosen.sort_by_key(|(i, _)| *i);
     rejected.sort_by_key(|(i, _)| *i);
-    Choice { rows: chosen.into_iter().map(|(_, e)| e).collect(), rejected: rejected.into_iter().map(|(_, r)| r).collect() }
+    Choice {
+        rows: chosen.into_iter().map(|(_, e)| e).collect(),
+        rejected: rejected.into_iter().map(|(_, r)| r).collect(),
+    }
 }
 
 /// Whether a row adds rank at every sample state; the bases grow only when it does.
-fn adds_rank_everywhere(bases: &mut [Vec<Vec<f64>>], equation: &Equation, wanted: &[Symbol], states: &[Values]) -> bool {
+fn adds_rank_everywhere(
+    bases: &mut [Vec<Vec<f64>>],
+    equation: &Equation,
+    wanted: &[Symbol],
+    states: &[Values],
+) -> bool {
     let mut trial: Vec<Vec<Vec<f64>>> = bases.to_vec();
     for (basis, values) in trial.iter_mut().zip(states) {
         if !adds_rank(basis, &coefficient_row(equation, wanted, values)) {
@@ -358,6 +450,10 @@ fn unwanted_reason(unwanted: &[&Symbol]) -> String {
         }
     }
     let list: Vec<String> = unwanted.iter().map(|u| u.to_string()).collect();
-    let place = if joints.len() == 1 { format!("the reaction at {}", joints[0]) } else { format!("the reactions at {}", joints.join(", ")) };
+    let place = if joints.len() == 1 {
+        format!("the reaction at {}", joints[0])
+    } else {
+        format!("the reactions at {}", joints.join(", "))
+    };
     format!("brings in {place} ({})", list.join(", "))
 }

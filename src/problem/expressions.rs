@@ -27,12 +27,18 @@ pub struct Context {
 impl Context {
     /// Constants only.
     pub fn constant(what: &'static str) -> Context {
-        Context { dynamic: false, what }
+        Context {
+            dynamic: false,
+            what,
+        }
     }
 
     /// A load: constants, coordinates, first rates and time.
     pub fn load(what: &'static str) -> Context {
-        Context { dynamic: true, what }
+        Context {
+            dynamic: true,
+            what,
+        }
     }
 }
 
@@ -46,7 +52,12 @@ pub struct Scope<'a> {
 
 impl<'a> Scope<'a> {
     fn new(names: &'a Names, context: Context, vectors: bool) -> Scope<'a> {
-        Scope { names, context, vectors, seen: RefCell::new(Vec::new()) }
+        Scope {
+            names,
+            context,
+            vectors,
+            seen: RefCell::new(Vec::new()),
+        }
     }
 
     fn allowed_names(&self) -> Vec<&'a str> {
@@ -75,15 +86,27 @@ impl Resolve for Scope<'_> {
                 .with_hint("only coordinates have rates, written `q1'`")
         };
         match (name, self.names.kind_of(name)) {
-            ("pi", _) => return if primes == 0 { Ok(Expr::constant("pi")) } else { Err(no_rate("`pi`")) },
+            ("pi", _) => {
+                return if primes == 0 {
+                    Ok(Expr::constant("pi"))
+                } else {
+                    Err(no_rate("`pi`"))
+                }
+            }
             ("t", _) if primes > 0 => return Err(no_rate("time")),
             ("t", _) if self.context.dynamic => return Ok(Expr::time()),
-            ("t", _) => return Err(self.only_constants(column, "time `t` is not allowed here".into())),
-            ("N", _) => {
-                return Err(ParseError::new(column, "`N` is the Newtonian frame, not a number")
-                    .with_hint("its unit vectors are N.x, N.y, N.z"))
+            ("t", _) => {
+                return Err(self.only_constants(column, "time `t` is not allowed here".into()))
             }
-            (_, Some(Kind::Constant)) if primes > 0 => return Err(no_rate(&format!("the constant `{name}`"))),
+            ("N", _) => {
+                return Err(
+                    ParseError::new(column, "`N` is the Newtonian frame, not a number")
+                        .with_hint("its unit vectors are N.x, N.y, N.z"),
+                )
+            }
+            (_, Some(Kind::Constant)) if primes > 0 => {
+                return Err(no_rate(&format!("the constant `{name}`")))
+            }
             (_, Some(Kind::Constant)) => return Ok(Expr::constant(name)),
             (_, Some(Kind::Coordinate)) => {}
             (_, Some(other)) => {
@@ -91,8 +114,11 @@ impl Resolve for Scope<'_> {
                     Kind::Body => format!("its unit vectors are {name}.x, {name}.y, {name}.z"),
                     _ => "expressions use numbers, constants, coordinates and `t`".into(),
                 };
-                return Err(ParseError::new(column, format!("`{name}` is {}, not a number", other.noun()))
-                    .with_hint(hint));
+                return Err(ParseError::new(
+                    column,
+                    format!("`{name}` is {}, not a number", other.noun()),
+                )
+                .with_hint(hint));
             }
             (_, None) => {
                 return Err(ParseError::new(column, format!("unknown name `{name}`"))
@@ -101,15 +127,26 @@ impl Resolve for Scope<'_> {
         }
         // A coordinate.
         if !self.context.dynamic {
-            let what = if primes == 0 { "a coordinate" } else { "a rate" };
-            return Err(self.only_constants(column, format!("`{written}` is {what}, not allowed here")));
+            let what = if primes == 0 {
+                "a coordinate"
+            } else {
+                "a rate"
+            };
+            return Err(
+                self.only_constants(column, format!("`{written}` is {what}, not allowed here"))
+            );
         }
         match primes {
             0 | 1 => Ok(Expr::coord(name, primes)),
-            2 => Err(ParseError::new(column, format!("`{written}` is a second rate, not allowed here"))
-                .with_hint("loads may use coordinates and their first rates only")),
-            _ => Err(ParseError::new(column, format!("`{written}`: too many primes"))
-                .with_hint("write `q1'` for a rate")),
+            2 => Err(ParseError::new(
+                column,
+                format!("`{written}` is a second rate, not allowed here"),
+            )
+            .with_hint("loads may use coordinates and their first rates only")),
+            _ => Err(
+                ParseError::new(column, format!("`{written}`: too many primes"))
+                    .with_hint("write `q1'` for a rate"),
+            ),
         }
     }
 
@@ -119,24 +156,41 @@ impl Resolve for Scope<'_> {
                 Some(kind) => format!("`{frame}` is {}, not a frame", kind.noun()),
                 None => format!("unknown frame `{frame}`"),
             };
-            return Err(ParseError::new(column, message).with_hint(suggest(frame, &self.names.frames(), "frames")));
+            return Err(ParseError::new(column, message).with_hint(suggest(
+                frame,
+                &self.names.frames(),
+                "frames",
+            )));
         };
         let index = match axis {
             "x" => 0u8,
             "y" => 1,
             "z" => 2,
             "o" => {
-                return Err(ParseError::new(column, format!("`{frame}.o` is a point, not a unit vector"))
-                    .with_hint(format!("the unit vectors are {frame}.x, {frame}.y, {frame}.z")))
+                return Err(ParseError::new(
+                    column,
+                    format!("`{frame}.o` is a point, not a unit vector"),
+                )
+                .with_hint(format!(
+                    "the unit vectors are {frame}.x, {frame}.y, {frame}.z"
+                )))
             }
             _ => {
-                return Err(ParseError::new(column, format!("`{frame}.{axis}`: unknown axis `{axis}`"))
-                    .with_hint(format!("the unit vectors are {frame}.x, {frame}.y, {frame}.z")))
+                return Err(ParseError::new(
+                    column,
+                    format!("`{frame}.{axis}`: unknown axis `{axis}`"),
+                )
+                .with_hint(format!(
+                    "the unit vectors are {frame}.x, {frame}.y, {frame}.z"
+                )))
             }
         };
         if !self.vectors {
-            return Err(ParseError::new(column, format!("the unit vector `{frame}.{axis}` is not allowed here"))
-                .with_hint(format!("{} is a scalar", self.context.what)));
+            return Err(ParseError::new(
+                column,
+                format!("the unit vector `{frame}.{axis}` is not allowed here"),
+            )
+            .with_hint(format!("{} is a scalar", self.context.what)));
         }
         self.seen.borrow_mut().push((body, index));
         Ok(Expr::sym(Symbol::UnitVector(frame.into(), index)))
@@ -165,7 +219,13 @@ fn report(diag: &mut Diagnostics, path: &str, e: ParseError) {
 }
 
 /// Parses a scalar expression at `path`.
-pub fn scalar(value: &Value, path: &str, names: &Names, context: Context, diag: &mut Diagnostics) -> Option<Expr> {
+pub fn scalar(
+    value: &Value,
+    path: &str,
+    names: &Names,
+    context: Context,
+    diag: &mut Diagnostics,
+) -> Option<Expr> {
     let text = text_of(value, path, false, diag)?;
     let scope = Scope::new(names, context, false);
     parse(&text, &scope).map_err(|e| report(diag, path, e)).ok()
@@ -181,26 +241,31 @@ pub fn vector(
 ) -> Option<VectorExpr> {
     let text = text_of(value, path, true, diag)?;
     let scope = Scope::new(names, context, true);
-    let expr = parse(&text, &scope).map_err(|e| report(diag, path, e)).ok()?;
+    let expr = parse(&text, &scope)
+        .map_err(|e| report(diag, path, e))
+        .ok()?;
     let mut order: Vec<(BodyId, u8)> = Vec::new();
     for seen in scope.seen.into_inner() {
         if !order.contains(&seen) {
             order.push(seen);
         }
     }
-    let symbols: Vec<Symbol> =
-        order.iter().map(|(b, a)| Symbol::UnitVector(names.body_name(*b).into(), *a)).collect();
-    let (coefficients, rest) = match linear_split(&expr, &symbols) {
-        Ok(split) => split,
-        Err(e) => {
-            diag.hint(
+    let symbols: Vec<Symbol> = order
+        .iter()
+        .map(|(b, a)| Symbol::UnitVector(names.body_name(*b).into(), *a))
+        .collect();
+    let (coefficients, rest) =
+        match linear_split(&expr, &symbols) {
+            Ok(split) => split,
+            Err(e) => {
+                diag.hint(
                 path,
                 format!("not a vector: `{}` does not appear linearly in `{}`", e.symbol, e.term),
                 "write a sum of terms, each a scalar times one unit vector, e.g. `L/2*A.x - h*A.y`",
             );
-            return None;
-        }
-    };
+                return None;
+            }
+        };
     if !rest.is_zero() {
         diag.hint(
             path,
@@ -272,8 +337,14 @@ mod tests {
 
     fn vector_of(text: &str) -> Result<VectorExpr, String> {
         let mut diag = Diagnostics::default();
-        vector(&Value::from(text), "x", &names(), Context::load("a force"), &mut diag)
-            .ok_or_else(|| diag.errors.remove(0).message)
+        vector(
+            &Value::from(text),
+            "x",
+            &names(),
+            Context::load("a force"),
+            &mut diag,
+        )
+        .ok_or_else(|| diag.errors.remove(0).message)
     }
 
     fn term(body: usize, axis: u8, coefficient: Expr) -> (BodyId, u8, Expr) {
@@ -295,11 +366,20 @@ mod tests {
         assert_eq!(scalar_of("m*q1", mass).unwrap_err().0, Some(3));
         assert_eq!(scalar_of("2 + t", mass).unwrap_err().0, Some(5));
         let load = Context::load("a load");
-        assert!(scalar_of("q1''", load).unwrap_err().1.contains("second rate"));
+        assert!(scalar_of("q1''", load)
+            .unwrap_err()
+            .1
+            .contains("second rate"));
         assert!(scalar_of("m'", load).unwrap_err().1.contains("no rate"));
         assert!(scalar_of("A", load).unwrap_err().1.contains("is a body"));
-        assert!(scalar_of("m*N.x", load).unwrap_err().1.contains("not allowed"));
-        assert!(scalar_of("mm", load).unwrap_err().1.contains("unknown name"));
+        assert!(scalar_of("m*N.x", load)
+            .unwrap_err()
+            .1
+            .contains("not allowed"));
+        assert!(scalar_of("mm", load)
+            .unwrap_err()
+            .1
+            .contains("unknown name"));
     }
 
     #[test]
@@ -318,7 +398,9 @@ mod tests {
     fn not_vectors() {
         assert!(vector_of("A.x*A.y").unwrap_err().contains("linearly"));
         assert!(vector_of("3").unwrap_err().contains("has no unit vector"));
-        assert!(vector_of("A.x + 1").unwrap_err().contains("has no unit vector"));
+        assert!(vector_of("A.x + 1")
+            .unwrap_err()
+            .contains("has no unit vector"));
         assert!(vector_of("sin(A.x)").unwrap_err().contains("linearly"));
         assert!(vector_of("C.x").unwrap_err().contains("unknown frame"));
         assert!(vector_of("A.o").unwrap_err().contains("is a point"));
@@ -330,7 +412,10 @@ mod tests {
         let mut values = ConstantValues::default();
         values.set("m", 2.0);
         let m = Expr::constant("m");
-        assert_eq!(values.eval(&(&m * &Expr::constant("pi"))), Some(2.0 * std::f64::consts::PI));
+        assert_eq!(
+            values.eval(&(&m * &Expr::constant("pi"))),
+            Some(2.0 * std::f64::consts::PI)
+        );
         assert_eq!(values.eval(&Expr::constant("L")), None);
         assert_eq!(values.eval(&Expr::coord("q1", 0)), None);
         let over_zero = crate::symbolic::pow(Expr::zero(), Expr::int(-1));

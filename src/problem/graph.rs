@@ -26,11 +26,18 @@ pub fn check_tree(links: &[Link], names: &Names, diag: &mut Diagnostics) {
         let Some(child) = link.child else { continue };
         let path = key_path(&index_path("joints", i), "child");
         if child == BodyId::GROUND {
-            diag.hint(&path, "`N` cannot be a child: it is the ground", "`N` may only be a parent; swap `parent` and `child`");
+            diag.hint(
+                &path,
+                "`N` cannot be a child: it is the ground",
+                "`N` may only be a parent; swap `parent` and `child`",
+            );
             continue;
         }
         if link.parent == Some(child) {
-            diag.error(&path, format!("the joint connects `{}` to itself", names.body_name(child)));
+            diag.error(
+                &path,
+                format!("the joint connects `{}` to itself", names.body_name(child)),
+            );
             continue;
         }
         match parent_joint[child.0] {
@@ -64,12 +71,20 @@ pub fn check_tree(links: &[Link], names: &Names, diag: &mut Diagnostics) {
             let Some(joint) = parent_joint[body] else {
                 diag.hint(
                     &key_path("bodies", names.body_name(BodyId(body))),
-                    format!("`{}` is not connected: no joint has it as its child", names.body_name(BodyId(body))),
-                    format!("add a joint with \"child\": \"{}\" and a parent on the way to N", names.body_name(BodyId(body))),
+                    format!(
+                        "`{}` is not connected: no joint has it as its child",
+                        names.body_name(BodyId(body))
+                    ),
+                    format!(
+                        "add a joint with \"child\": \"{}\" and a parent on the way to N",
+                        names.body_name(BodyId(body))
+                    ),
                 );
                 break;
             };
-            let Some(parent) = links[joint].parent else { break };
+            let Some(parent) = links[joint].parent else {
+                break;
+            };
             body = parent.0;
             if state[body] == 1 {
                 loop_at = Some(body);
@@ -81,12 +96,18 @@ pub fn check_tree(links: &[Link], names: &Names, diag: &mut Diagnostics) {
             let cycle: Vec<usize> = walk[from..].to_vec();
             let joints: Vec<usize> = cycle.iter().filter_map(|b| parent_joint[*b]).collect();
             let first = joints.iter().copied().min().unwrap_or(0);
-            let mut tour: Vec<&str> = cycle.iter().rev().map(|b| names.body_name(BodyId(*b))).collect();
+            let mut tour: Vec<&str> = cycle
+                .iter()
+                .rev()
+                .map(|b| names.body_name(BodyId(*b)))
+                .collect();
             if let Some(first_body) = tour.first().copied() {
                 tour.push(first_body);
             }
-            let joint_names: Vec<&str> =
-                joints.iter().map(|j| names.joints.get(*j).map_or("?", String::as_str)).collect();
+            let joint_names: Vec<&str> = joints
+                .iter()
+                .map(|j| names.joints.get(*j).map_or("?", String::as_str))
+                .collect();
             diag.hint(
                 &index_path("joints", first),
                 format!(
@@ -122,7 +143,9 @@ impl Orientation {
             i
         }
         for link in links {
-            if let (Some(p), Some(c), Some(JointKind::Prismatic | JointKind::Weld)) = (link.parent, link.child, link.kind) {
+            if let (Some(p), Some(c), Some(JointKind::Prismatic | JointKind::Weld)) =
+                (link.parent, link.child, link.kind)
+            {
                 if p.0 <= bodies && c.0 <= bodies {
                     let (a, b) = (find(&mut root, p.0), find(&mut root, c.0));
                     root[a.max(b)] = a.min(b);
@@ -151,13 +174,20 @@ mod tests {
     }
 
     fn link(parent: usize, child: usize) -> Link {
-        Link { parent: Some(BodyId(parent)), child: Some(BodyId(child)), kind: Some(JointKind::Revolute) }
+        Link {
+            parent: Some(BodyId(parent)),
+            child: Some(BodyId(child)),
+            kind: Some(JointKind::Revolute),
+        }
     }
 
     fn errors(bodies: &[&str], links: &[Link]) -> Vec<String> {
         let mut diag = Diagnostics::default();
         check_tree(links, &names(bodies), &mut diag);
-        diag.errors.iter().map(|e| format!("{}: {}", e.path, e.message)).collect()
+        diag.errors
+            .iter()
+            .map(|e| format!("{}: {}", e.path, e.message))
+            .collect()
     }
 
     #[test]
@@ -170,13 +200,25 @@ mod tests {
     #[test]
     fn what_is_not_a_tree() {
         let e = errors(&["A", "B"], &[link(0, 1), link(2, 1)]);
-        assert!(e[0].starts_with("joints[1].child") && e[0].contains("already has a parent"), "{e:?}");
-        assert!(e[1].starts_with("bodies.B") && e[1].contains("not connected"), "{e:?}");
+        assert!(
+            e[0].starts_with("joints[1].child") && e[0].contains("already has a parent"),
+            "{e:?}"
+        );
+        assert!(
+            e[1].starts_with("bodies.B") && e[1].contains("not connected"),
+            "{e:?}"
+        );
         let e = errors(&["A", "B"], &[link(2, 1), link(1, 2)]);
         assert_eq!(e.len(), 1, "{e:?}");
-        assert!(e[0].starts_with("joints[0]:") && e[0].contains("closed loop"), "{e:?}");
+        assert!(
+            e[0].starts_with("joints[0]:") && e[0].contains("closed loop"),
+            "{e:?}"
+        );
         let e = errors(&["A"], &[link(0, 1), link(1, 0)]);
-        assert!(e[0].starts_with("joints[1].child") && e[0].contains("cannot be a child"), "{e:?}");
+        assert!(
+            e[0].starts_with("joints[1].child") && e[0].contains("cannot be a child"),
+            "{e:?}"
+        );
         let e = errors(&["A"], &[link(1, 1)]);
         assert!(e[0].contains("to itself"), "{e:?}");
     }

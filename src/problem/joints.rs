@@ -59,15 +59,24 @@ fn coordinate_words(kind: JointKind) -> &'static str {
 }
 
 fn has_axis(kind: JointKind) -> bool {
-    matches!(kind, JointKind::Revolute | JointKind::Prismatic | JointKind::Cylindrical)
+    matches!(
+        kind,
+        JointKind::Revolute | JointKind::Prismatic | JointKind::Cylindrical
+    )
 }
 
 fn has_sequence(kind: JointKind) -> bool {
-    matches!(kind, JointKind::Universal | JointKind::Spherical | JointKind::Free)
+    matches!(
+        kind,
+        JointKind::Universal | JointKind::Spherical | JointKind::Free
+    )
 }
 
 fn allowed_in_2d(kind: JointKind) -> bool {
-    matches!(kind, JointKind::Revolute | JointKind::Prismatic | JointKind::Planar | JointKind::Weld)
+    matches!(
+        kind,
+        JointKind::Revolute | JointKind::Prismatic | JointKind::Planar | JointKind::Weld
+    )
 }
 
 impl Reader {
@@ -86,13 +95,15 @@ impl Reader {
             let name = required(fields, "name", &path, &mut self.diag)
                 .and_then(|v| string(v, &key_path(&path, "name"), &mut self.diag));
             if let Some(name) = name {
-                self.names.declare(name, Kind::Joint, &key_path(&path, "name"), &mut self.diag);
+                self.names
+                    .declare(name, Kind::Joint, &key_path(&path, "name"), &mut self.diag);
             }
             let name = name.unwrap_or("");
             // A name that failed to declare is still kept, so that references to it do not
             // add a second error for the same mistake.
             self.names.joints.push(name.to_string());
-            head.kind = required(fields, "type", &path, &mut self.diag).and_then(|v| self.joint_type(v, &key_path(&path, "type")));
+            head.kind = required(fields, "type", &path, &mut self.diag)
+                .and_then(|v| self.joint_type(v, &key_path(&path, "type")));
             self.check_joint_keys(fields, &path, head.kind);
             self.declare_coordinates(fields.get("coordinates"), &path, i, &mut head, &mut owners);
             heads.push(head);
@@ -113,12 +124,29 @@ impl Reader {
             return Some(kind);
         }
         let names: Vec<&str> = TYPES.iter().map(|k| k.name()).collect();
-        self.diag.hint(path, format!("unknown joint type `{name}`"), suggest(name, &names, "joint types"));
+        self.diag.hint(
+            path,
+            format!("unknown joint type `{name}`"),
+            suggest(name, &names, "joint types"),
+        );
         None
     }
 
-    fn check_joint_keys(&mut self, fields: &serde_json::Map<String, Value>, path: &str, kind: Option<JointKind>) {
-        let mut allowed = vec!["name", "type", "parent", "child", "coordinates", "at", "child_at"];
+    fn check_joint_keys(
+        &mut self,
+        fields: &serde_json::Map<String, Value>,
+        path: &str,
+        kind: Option<JointKind>,
+    ) {
+        let mut allowed = vec![
+            "name",
+            "type",
+            "parent",
+            "child",
+            "coordinates",
+            "at",
+            "child_at",
+        ];
         if kind.is_none_or(has_axis) {
             allowed.push("axis");
         }
@@ -138,16 +166,34 @@ impl Reader {
                 } else {
                     "remove it"
                 };
-                self.diag.hint(&key_path(path, key), format!("a {} joint has no `{key}`", kind.name()), hint);
+                self.diag.hint(
+                    &key_path(path, key),
+                    format!("a {} joint has no `{key}`", kind.name()),
+                    hint,
+                );
             }
         }
-        let known: Vec<&str> = allowed.iter().copied().chain(["axis", "sequence"]).collect();
-        let unknown: serde_json::Map<String, Value> =
-            fields.iter().filter(|(k, _)| !known.contains(&k.as_str())).map(|(k, v)| (k.clone(), v.clone())).collect();
+        let known: Vec<&str> = allowed
+            .iter()
+            .copied()
+            .chain(["axis", "sequence"])
+            .collect();
+        let unknown: serde_json::Map<String, Value> = fields
+            .iter()
+            .filter(|(k, _)| !known.contains(&k.as_str()))
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect();
         check_keys(&unknown, path, &allowed, &mut self.diag);
     }
 
-    fn declare_coordinates(&mut self, value: Option<&Value>, path: &str, joint: usize, head: &mut JointHead, owners: &mut Owners) {
+    fn declare_coordinates(
+        &mut self,
+        value: Option<&Value>,
+        path: &str,
+        joint: usize,
+        head: &mut JointHead,
+        owners: &mut Owners,
+    ) {
         let list_path = key_path(path, "coordinates");
         let items: &[Value] = match value {
             Some(v) => match array(v, &list_path, &mut self.diag) {
@@ -160,10 +206,21 @@ impl Reader {
             let wanted = kind.dof();
             if items.len() != wanted && (value.is_some() || wanted > 0) {
                 let message = match (value, wanted) {
-                    (None, _) => format!("`coordinates` is required: a {} joint has {wanted}", kind.name()),
+                    (None, _) => format!(
+                        "`coordinates` is required: a {} joint has {wanted}",
+                        kind.name()
+                    ),
                     (Some(_), 0) => "a weld joint has no coordinates".to_string(),
-                    (Some(_), 1) => format!("a {} joint has 1 coordinate, not {}", kind.name(), items.len()),
-                    (Some(_), _) => format!("a {} joint has {wanted} coordinates, not {}", kind.name(), items.len()),
+                    (Some(_), 1) => format!(
+                        "a {} joint has 1 coordinate, not {}",
+                        kind.name(),
+                        items.len()
+                    ),
+                    (Some(_), _) => format!(
+                        "a {} joint has {wanted} coordinates, not {}",
+                        kind.name(),
+                        items.len()
+                    ),
                 };
                 let hint = format!("{}: {}", kind.name(), coordinate_words(kind));
                 self.diag.hint(&list_path, message, hint);
@@ -172,7 +229,9 @@ impl Reader {
         let kinds = head.kind.map(coordinate_kinds).unwrap_or(&[]);
         for (k, item) in items.iter().enumerate() {
             let item_path = index_path(&list_path, k);
-            let Some(name) = string(item, &item_path, &mut self.diag) else { continue };
+            let Some(name) = string(item, &item_path, &mut self.diag) else {
+                continue;
+            };
             if let Some(existing) = self.names.coordinate(name) {
                 let (owner, _, _) = owners[existing];
                 let owner_name = self.names.joints.get(owner).cloned().unwrap_or_default();
@@ -181,10 +240,17 @@ impl Reader {
                 } else {
                     format!("the coordinate `{name}` already belongs to joint `{owner_name}` (joints[{owner}])")
                 };
-                self.diag.hint(&item_path, message, "each coordinate belongs to exactly one joint; give this one its own name");
+                self.diag.hint(
+                    &item_path,
+                    message,
+                    "each coordinate belongs to exactly one joint; give this one its own name",
+                );
                 continue;
             }
-            if self.names.declare(name, Kind::Coordinate, &item_path, &mut self.diag) {
+            if self
+                .names
+                .declare(name, Kind::Coordinate, &item_path, &mut self.diag)
+            {
                 let kind = kinds.get(k).copied().unwrap_or(CoordinateKind::Angle);
                 owners.push((joint, k, kind));
                 head.coordinates.push(owners.len() - 1);
@@ -197,10 +263,13 @@ impl Reader {
         let mut links = vec![Link::default(); values.len()];
         for (i, value) in values.iter().enumerate() {
             let path = index_path("joints", i);
-            let Some(fields) = value.as_object() else { continue };
+            let Some(fields) = value.as_object() else {
+                continue;
+            };
             links[i].kind = heads[i].kind;
             let body = |key: &str, r: &mut Reader| {
-                required(fields, key, &path, &mut r.diag).and_then(|v| r.body_ref(v, &key_path(&path, key)))
+                required(fields, key, &path, &mut r.diag)
+                    .and_then(|v| r.body_ref(v, &key_path(&path, key)))
             };
             links[i].parent = body("parent", self);
             links[i].child = body("child", self);
@@ -211,7 +280,10 @@ impl Reader {
         let mut joints = Vec::new();
         for (i, value) in values.iter().enumerate() {
             let path = index_path("joints", i);
-            let (parent, child) = (links[i].parent.unwrap_or(BodyId::GROUND), links[i].child.unwrap_or(BodyId::GROUND));
+            let (parent, child) = (
+                links[i].parent.unwrap_or(BodyId::GROUND),
+                links[i].child.unwrap_or(BodyId::GROUND),
+            );
             let kind = heads[i].kind.unwrap_or(JointKind::Weld);
             let mut joint = Joint {
                 name: self.names.joints[i].clone(),
@@ -227,14 +299,22 @@ impl Reader {
             };
             if let Some(fields) = value.as_object() {
                 if heads[i].kind.is_some_and(has_axis) {
-                    joint.axis = self.axis(fields.get("axis"), &key_path(&path, "axis"), kind, parent);
+                    joint.axis =
+                        self.axis(fields.get("axis"), &key_path(&path, "axis"), kind, parent);
                 }
                 if heads[i].kind.is_some_and(has_sequence) {
-                    joint.sequence = self.sequence(fields.get("sequence"), &key_path(&path, "sequence"), kind);
+                    joint.sequence =
+                        self.sequence(fields.get("sequence"), &key_path(&path, "sequence"), kind);
                 }
-                for (key, body, slot) in [("at", parent, &mut joint.at), ("child_at", child, &mut joint.child_at)] {
+                for (key, body, slot) in [
+                    ("at", parent, &mut joint.at),
+                    ("child_at", child, &mut joint.child_at),
+                ] {
                     let key_path = key_path(&path, key);
-                    if let Some(v) = fields.get(key).and_then(|v| self.position(v, &key_path, body, "the joint's point")) {
+                    if let Some(v) = fields
+                        .get(key)
+                        .and_then(|v| self.position(v, &key_path, body, "the joint's point"))
+                    {
                         validate::vector(&v, &self.values, &key_path, &mut self.diag);
                         *slot = v;
                     }
@@ -247,11 +327,19 @@ impl Reader {
 
     /// The axis, fixed in the parent; in 2D a revolute axis is along z and a prismatic
     /// one in the plane. A 2D revolute joint without an axis turns about `N.z`.
-    fn axis(&mut self, value: Option<&Value>, path: &str, kind: JointKind, parent: BodyId) -> Option<VectorExpr> {
+    fn axis(
+        &mut self,
+        value: Option<&Value>,
+        path: &str,
+        kind: JointKind,
+        parent: BodyId,
+    ) -> Option<VectorExpr> {
         let two_d = self.dimension == Some(Dimension::Two);
         let Some(value) = value else {
             if two_d && kind == JointKind::Revolute {
-                return Some(VectorExpr { terms: vec![(BodyId::GROUND, 2, crate::symbolic::Expr::one())] });
+                return Some(VectorExpr {
+                    terms: vec![(BodyId::GROUND, 2, crate::symbolic::Expr::one())],
+                });
             }
             if self.dimension.is_none() && kind == JointKind::Revolute {
                 // Maybe a 2D problem with a mistyped dimension: that error is enough.
@@ -260,7 +348,10 @@ impl Reader {
             self.diag.hint(
                 path,
                 format!("a {} joint needs an `axis`", kind.name()),
-                format!("a direction fixed in the parent, e.g. \"{}.z\"", self.names.body_name(parent)),
+                format!(
+                    "a direction fixed in the parent, e.g. \"{}.z\"",
+                    self.names.body_name(parent)
+                ),
             );
             return None;
         };
@@ -269,7 +360,11 @@ impl Reader {
         self.fixed_in(&axis, parent, path, "the axis");
         if two_d && kind == JointKind::Revolute {
             if let Some((frame, a, _)) = axis.terms.iter().find(|(_, a, _)| *a != 2) {
-                let f = format!("{}.{}", self.names.body_name(*frame), ["x", "y", "z"][usize::from(*a).min(2)]);
+                let f = format!(
+                    "{}.{}",
+                    self.names.body_name(*frame),
+                    ["x", "y", "z"][usize::from(*a).min(2)]
+                );
                 self.diag.hint(
                     path,
                     format!("in a 2D problem a revolute axis is along z, but this one has a `{f}` component"),
@@ -289,30 +384,52 @@ impl Reader {
         let length = if kind == JointKind::Universal { 2 } else { 3 };
         let example = if length == 2 { "\"xy\"" } else { "\"zxy\"" };
         let Some(value) = value else {
-            self.diag.hint(path, format!("a {} joint needs a `sequence`", kind.name()), format!("the body-fixed rotation axes, e.g. {example}"));
+            self.diag.hint(
+                path,
+                format!("a {} joint needs a `sequence`", kind.name()),
+                format!("the body-fixed rotation axes, e.g. {example}"),
+            );
             return Vec::new();
         };
-        let Some(text) = string(value, path, &mut self.diag) else { return Vec::new() };
+        let Some(text) = string(value, path, &mut self.diag) else {
+            return Vec::new();
+        };
         let mut axes = Vec::new();
         for (column, c) in text.chars().enumerate() {
             match "xyz".find(c) {
                 Some(a) => axes.push(a as u8),
                 None => {
-                    self.diag.push(path, Some(column + 1), format!("`{c}` is not an axis"), Some("the letters are x, y and z"));
+                    self.diag.push(
+                        path,
+                        Some(column + 1),
+                        format!("`{c}` is not an axis"),
+                        Some("the letters are x, y and z"),
+                    );
                     return Vec::new();
                 }
             }
         }
         if axes.len() != length {
             let letters = if length == 2 { "two" } else { "three" };
-            self.diag.hint(path, format!("a {} joint's sequence has {letters} letters, not {}", kind.name(), axes.len()), format!("e.g. {example}"));
+            self.diag.hint(
+                path,
+                format!(
+                    "a {} joint's sequence has {letters} letters, not {}",
+                    kind.name(),
+                    axes.len()
+                ),
+                format!("e.g. {example}"),
+            );
             return Vec::new();
         }
         if let Some(k) = axes.windows(2).position(|w| w[0] == w[1]) {
             self.diag.push(
                 path,
                 Some(k + 2),
-                format!("two rotations in a row about the same axis `{}`", &text[k..k + 1]),
+                format!(
+                    "two rotations in a row about the same axis `{}`",
+                    &text[k..k + 1]
+                ),
                 Some(format!("neighbouring letters must differ, e.g. {example}")),
             );
             return Vec::new();

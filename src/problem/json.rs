@@ -83,7 +83,11 @@ pub fn kind(value: &Value) -> &'static str {
 }
 
 /// The value as an object, or an error.
-pub fn object<'a>(value: &'a Value, path: &str, diag: &mut Diagnostics) -> Option<&'a Map<String, Value>> {
+pub fn object<'a>(
+    value: &'a Value,
+    path: &str,
+    diag: &mut Diagnostics,
+) -> Option<&'a Map<String, Value>> {
     match value {
         Value::Object(map) => Some(map),
         other => {
@@ -126,7 +130,11 @@ pub fn number(value: &Value, path: &str, diag: &mut Diagnostics) -> Option<f64> 
             }
         },
         Value::String(s) if s.trim().parse::<f64>().is_ok() => {
-            diag.hint(path, format!("expected a number, found the string \"{s}\""), "remove the quotes");
+            diag.hint(
+                path,
+                format!("expected a number, found the string \"{s}\""),
+                "remove the quotes",
+            );
             None
         }
         other => {
@@ -151,7 +159,12 @@ pub fn check_keys(map: &Map<String, Value>, path: &str, allowed: &[&str], diag: 
 }
 
 /// The value of a required key, or an error naming it.
-pub fn required<'a>(map: &'a Map<String, Value>, key: &str, path: &str, diag: &mut Diagnostics) -> Option<&'a Value> {
+pub fn required<'a>(
+    map: &'a Map<String, Value>,
+    key: &str,
+    path: &str,
+    diag: &mut Diagnostics,
+) -> Option<&'a Value> {
     let value = map.get(key);
     if value.is_none() {
         diag.error(&key_path(path, key), format!("`{key}` is required"));
@@ -160,13 +173,24 @@ pub fn required<'a>(map: &'a Map<String, Value>, key: &str, path: &str, diag: &m
 }
 
 /// An optional string key.
-pub fn optional_string(map: &Map<String, Value>, key: &str, path: &str, diag: &mut Diagnostics) -> Option<String> {
-    map.get(key).and_then(|v| string(v, &key_path(path, key), diag)).map(str::to_string)
+pub fn optional_string(
+    map: &Map<String, Value>,
+    key: &str,
+    path: &str,
+    diag: &mut Diagnostics,
+) -> Option<String> {
+    map.get(key)
+        .and_then(|v| string(v, &key_path(path, key), diag))
+        .map(str::to_string)
 }
 
 /// `a`, `b`, `c` as `` `a`, `b`, `c` ``.
 pub fn list(items: &[&str]) -> String {
-    items.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", ")
+    items
+        .iter()
+        .map(|k| format!("`{k}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// Reads JSON text into a value, noting every repeated key of an object.
@@ -179,12 +203,19 @@ pub fn parse(text: &str, diag: &mut Diagnostics) -> Result<Value, String> {
     }
     let duplicates = RefCell::new(Vec::new());
     let mut deserializer = serde_json::Deserializer::from_str(text);
-    let value = ValueSeed { path: String::new(), duplicates: &duplicates }
-        .deserialize(&mut deserializer)
-        .and_then(|value| deserializer.end().map(|()| value))
-        .map_err(|e| describe_syntax_error(&e))?;
+    let value = ValueSeed {
+        path: String::new(),
+        duplicates: &duplicates,
+    }
+    .deserialize(&mut deserializer)
+    .and_then(|value| deserializer.end().map(|()| value))
+    .map_err(|e| describe_syntax_error(&e))?;
     for (path, key) in duplicates.into_inner() {
-        diag.hint(&path, format!("the key `{key}` appears more than once"), "keep one; JSON readers keep only the last");
+        diag.hint(
+            &path,
+            format!("the key `{key}` appears more than once"),
+            "keep one; JSON readers keep only the last",
+        );
     }
     Ok(value)
 }
@@ -193,7 +224,11 @@ fn describe_syntax_error(e: &serde_json::Error) -> String {
     // serde_json appends " at line L column C"; say it once, in our words.
     let text = e.to_string();
     let message = text.split(" at line ").next().unwrap_or(&text).to_string();
-    format!("the file is not valid JSON: {message} at line {}, column {}", e.line(), e.column())
+    format!(
+        "the file is not valid JSON: {message} at line {}, column {}",
+        e.line(),
+        e.column()
+    )
 }
 
 /// Builds a [`Value`] like serde_json does, but records `(path, key)` for repeated keys.
@@ -225,7 +260,9 @@ impl<'de> Visitor<'de> for ValueSeed<'_> {
         Ok(Value::from(v))
     }
     fn visit_f64<E: de::Error>(self, v: f64) -> Result<Value, E> {
-        serde_json::Number::from_f64(v).map(Value::Number).ok_or_else(|| E::custom("number out of range"))
+        serde_json::Number::from_f64(v)
+            .map(Value::Number)
+            .ok_or_else(|| E::custom("number out of range"))
     }
     fn visit_str<E>(self, v: &str) -> Result<Value, E> {
         Ok(Value::String(v.to_string()))
@@ -242,7 +279,10 @@ impl<'de> Visitor<'de> for ValueSeed<'_> {
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Value, A::Error> {
         let mut items = Vec::new();
         loop {
-            let seed = ValueSeed { path: index_path(&self.path, items.len()), duplicates: self.duplicates };
+            let seed = ValueSeed {
+                path: index_path(&self.path, items.len()),
+                duplicates: self.duplicates,
+            };
             match seq.next_element_seed(seed)? {
                 Some(item) => items.push(item),
                 None => return Ok(Value::Array(items)),
@@ -253,7 +293,10 @@ impl<'de> Visitor<'de> for ValueSeed<'_> {
         let mut map = Map::new();
         while let Some(key) = access.next_key::<String>()? {
             let path = key_path(&self.path, &key);
-            let value = access.next_value_seed(ValueSeed { path: path.clone(), duplicates: self.duplicates })?;
+            let value = access.next_value_seed(ValueSeed {
+                path: path.clone(),
+                duplicates: self.duplicates,
+            })?;
             if map.insert(key.clone(), value).is_some() {
                 self.duplicates.borrow_mut().push((path, key));
             }
@@ -272,10 +315,13 @@ impl FileOrder {
             let next = order.len();
             order.entry(path.clone()).or_insert(next);
             match value {
-                Value::Object(map) => map.iter().for_each(|(k, v)| walk(v, key_path(&path, k), order)),
-                Value::Array(items) => {
-                    items.iter().enumerate().for_each(|(i, v)| walk(v, index_path(&path, i), order))
-                }
+                Value::Object(map) => map
+                    .iter()
+                    .for_each(|(k, v)| walk(v, key_path(&path, k), order)),
+                Value::Array(items) => items
+                    .iter()
+                    .enumerate()
+                    .for_each(|(i, v)| walk(v, index_path(&path, i), order)),
                 _ => {}
             }
         }
@@ -314,7 +360,10 @@ mod tests {
     #[test]
     fn repeated_keys_are_found_at_any_depth() {
         assert_eq!(duplicates(r#"{"a": 1, "a": 2}"#), ["a"]);
-        assert_eq!(duplicates(r#"{"b": [{"x": 1}, {"x": 1, "x": 2}]}"#), ["b[1].x"]);
+        assert_eq!(
+            duplicates(r#"{"b": [{"x": 1}, {"x": 1, "x": 2}]}"#),
+            ["b[1].x"]
+        );
         assert!(duplicates(r#"{"a": 1, "b": {"a": 2}}"#).is_empty());
     }
 

@@ -60,7 +60,12 @@ impl fmt::Display for ProblemError {
 impl ProblemError {
     /// An error about the file as a whole, which has no JSON path.
     pub fn file(message: impl Into<String>) -> ProblemError {
-        ProblemError { path: String::new(), column: None, message: message.into(), hint: None }
+        ProblemError {
+            path: String::new(),
+            column: None,
+            message: message.into(),
+            hint: None,
+        }
     }
 
     fn fmt_location(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -82,7 +87,11 @@ pub struct ProblemErrors(pub Vec<ProblemError>);
 impl fmt::Display for ProblemErrors {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let count = self.0.len();
-        write!(f, "the problem has {count} error{}:", if count == 1 { "" } else { "s" })?;
+        write!(
+            f,
+            "the problem has {count} error{}:",
+            if count == 1 { "" } else { "s" }
+        )?;
         for e in &self.0 {
             write!(f, "\n  ")?;
             e.fmt_location(f)?;
@@ -104,7 +113,8 @@ impl std::error::Error for ProblemErrors {}
 /// one error without a path; otherwise each error names its JSON path.
 pub fn load(text: &str) -> Result<Problem, ProblemErrors> {
     let mut diag = json::Diagnostics::default();
-    let value = json::parse(text, &mut diag).map_err(|message| ProblemErrors(vec![ProblemError::file(message)]))?;
+    let value = json::parse(text, &mut diag)
+        .map_err(|message| ProblemErrors(vec![ProblemError::file(message)]))?;
     let mut errors = diag.errors;
     match read::read(&value) {
         Ok(problem) if errors.is_empty() => return Ok(problem),
@@ -123,7 +133,10 @@ pub fn load(text: &str) -> Result<Problem, ProblemErrors> {
 /// [`crate::Error::Io`] when the file cannot be read; [`crate::Error::Problem`] when it is
 /// not UTF-8 text, not JSON, or not a valid problem.
 pub fn load_file(path: &Path) -> Result<Problem, crate::Error> {
-    let bytes = std::fs::read(path).map_err(|source| crate::Error::Io { path: path.to_path_buf(), source })?;
+    let bytes = std::fs::read(path).map_err(|source| crate::Error::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
     let text = String::from_utf8(bytes).map_err(|e| {
         let offset = e.utf8_error().valid_up_to();
         ProblemErrors(vec![ProblemError::file(format!(
@@ -158,7 +171,8 @@ pub fn apply_overrides(problem: &mut Problem, set: &[(String, f64)]) -> Result<(
         let path = format!("--set {name}");
         match updated.constants.iter_mut().find(|c| c.name == *name) {
             Some(constant) if value.is_finite() => constant.value = *value,
-            Some(_) => errors.push(ProblemError::file(format!("`{name}`: the value must be finite")).at(&path)),
+            Some(_) => errors
+                .push(ProblemError::file(format!("`{name}`: the value must be finite")).at(&path)),
             None => {
                 let known: Vec<&str> = updated.constants.iter().map(|c| c.name.as_str()).collect();
                 let is_coordinate = updated.coordinates.iter().any(|c| c.name == *name);

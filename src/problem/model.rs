@@ -183,14 +183,42 @@ pub enum ForcePoint {
 /// What a load does.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LoadKind {
-    Force { on: BodyId, at: ForcePoint, vector: VectorExpr },
-    Torque { on: BodyId, vector: VectorExpr, reaction_on: Option<BodyId> },
-    Spring { between: [PointRef; 2], stiffness: Expr, free_length: Expr },
-    Damper { between: [PointRef; 2], coefficient: Expr },
+    Force {
+        on: BodyId,
+        at: ForcePoint,
+        vector: VectorExpr,
+    },
+    Torque {
+        on: BodyId,
+        vector: VectorExpr,
+        reaction_on: Option<BodyId>,
+    },
+    Spring {
+        between: [PointRef; 2],
+        stiffness: Expr,
+        free_length: Expr,
+    },
+    Damper {
+        between: [PointRef; 2],
+        coefficient: Expr,
+    },
     /// `coordinate` indexes [`Problem::coordinates`].
-    JointSpring { joint: usize, coordinate: usize, stiffness: Expr, rest: Expr },
-    JointDamper { joint: usize, coordinate: usize, coefficient: Expr },
-    JointActuator { joint: usize, coordinate: usize, value: Expr },
+    JointSpring {
+        joint: usize,
+        coordinate: usize,
+        stiffness: Expr,
+        rest: Expr,
+    },
+    JointDamper {
+        joint: usize,
+        coordinate: usize,
+        coefficient: Expr,
+    },
+    JointActuator {
+        joint: usize,
+        coordinate: usize,
+        value: Expr,
+    },
 }
 
 /// A load with its optional name.
@@ -215,7 +243,11 @@ pub struct SimulateSettings {
 
 impl Default for SimulateSettings {
     fn default() -> Self {
-        SimulateSettings { duration: 5.0, output_step: 0.01, tolerance: 1e-9 }
+        SimulateSettings {
+            duration: 5.0,
+            output_step: 0.01,
+            tolerance: 1e-9,
+        }
     }
 }
 

@@ -37,7 +37,8 @@ impl Kind {
 /// Whether `name` matches `[A-Za-z][A-Za-z0-9_]*`.
 pub fn is_valid(name: &str) -> bool {
     let mut chars = name.chars();
-    chars.next().is_some_and(|c| c.is_ascii_alphabetic()) && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic())
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 /// Every declared name, by kind, in file order.
@@ -66,11 +67,17 @@ impl Names {
             } else {
                 format!("`{name}` is not a valid name")
             };
-            diag.hint(path, message, "names start with a letter, then letters, digits or `_`");
+            diag.hint(
+                path,
+                message,
+                "names start with a letter, then letters, digits or `_`",
+            );
             return false;
         }
         let reserved = match name {
-            "N" => Some("`N` is the Newtonian body and frame; it is always present and may not be declared"),
+            "N" => Some(
+                "`N` is the Newtonian body and frame; it is always present and may not be declared",
+            ),
             "t" => Some("`t` is reserved for time"),
             "pi" => Some("`pi` is reserved for 3.14159…"),
             _ => None,
@@ -87,7 +94,8 @@ impl Names {
             );
             return false;
         }
-        self.kinds.insert(name.to_string(), (kind, path.to_string()));
+        self.kinds
+            .insert(name.to_string(), (kind, path.to_string()));
         match kind {
             Kind::Constant => self.constants.push(name.to_string()),
             Kind::Coordinate => self.coordinates.push(name.to_string()),
@@ -108,7 +116,10 @@ impl Names {
         if name == "N" {
             return Some(BodyId::GROUND);
         }
-        self.bodies.iter().position(|b| b == name).map(|i| BodyId(i + 1))
+        self.bodies
+            .iter()
+            .position(|b| b == name)
+            .map(|i| BodyId(i + 1))
     }
 
     /// The joint named `name`.
@@ -137,7 +148,9 @@ impl Names {
 
     /// `N` and every body, for suggestions.
     pub fn frames(&self) -> Vec<&str> {
-        std::iter::once("N").chain(self.bodies.iter().map(String::as_str)).collect()
+        std::iter::once("N")
+            .chain(self.bodies.iter().map(String::as_str))
+            .collect()
     }
 }
 
@@ -190,8 +203,14 @@ mod tests {
 
     #[test]
     fn suggestions() {
-        assert_eq!(suggest("q3", &["q1", "m"], "coordinates"), "did you mean `q1`?");
+        assert_eq!(
+            suggest("q3", &["q1", "m"], "coordinates"),
+            "did you mean `q1`?"
+        );
         assert_eq!(suggest("zzz", &[], "joints"), "there are no joints");
-        assert_eq!(suggest("zzz", &["A", "B"], "bodies"), "the bodies are `A`, `B`");
+        assert_eq!(
+            suggest("zzz", &["A", "B"], "bodies"),
+            "the bodies are `A`, `B`"
+        );
     }
 }

@@ -7,7 +7,10 @@
 
 use super::expressions::{self, ConstantValues, Context};
 use super::graph::Orientation;
-use super::json::{self, check_keys, key_path, kind, number, object, optional_string, required, string, Diagnostics};
+use super::json::{
+    self, check_keys, key_path, kind, number, object, optional_string, required, string,
+    Diagnostics,
+};
 use super::model::*;
 use super::names::{suggest, Kind, Names};
 use super::validate;
@@ -15,8 +18,19 @@ use crate::symbolic::Expr;
 use serde_json::Value;
 
 const TOP_KEYS: [&str; 13] = [
-    "format", "title", "statement", "dimension", "constants", "coordinates", "gravity", "bodies", "joints",
-    "points", "loads", "find", "simulate",
+    "format",
+    "title",
+    "statement",
+    "dimension",
+    "constants",
+    "coordinates",
+    "gravity",
+    "bodies",
+    "joints",
+    "points",
+    "loads",
+    "find",
+    "simulate",
 ];
 
 /// The state shared by the parts of reading.
@@ -42,19 +56,30 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         values: ConstantValues::default(),
         orientation: None,
     };
-    let Some(top) = object(root, "", &mut r.diag) else { return Err(r.diag.errors) };
+    let Some(top) = object(root, "", &mut r.diag) else {
+        return Err(r.diag.errors);
+    };
     check_keys(top, "", &TOP_KEYS, &mut r.diag);
     r.format(top.get("format"));
-    let title = required(top, "title", "", &mut r.diag).and_then(|v| r.title(v)).unwrap_or_default();
+    let title = required(top, "title", "", &mut r.diag)
+        .and_then(|v| r.title(v))
+        .unwrap_or_default();
     let statement = optional_string(top, "statement", "", &mut r.diag);
     r.dimension = required(top, "dimension", "", &mut r.diag).and_then(|v| r.read_dimension(v));
 
-    let constants = top.get("constants").map(|v| r.constants(v)).unwrap_or_default();
+    let constants = top
+        .get("constants")
+        .map(|v| r.constants(v))
+        .unwrap_or_default();
     let body_entries = r.declare_bodies(top.get("bodies"));
     let joint_values: &[Value] = match top.get("joints") {
         Some(v) => json::array(v, "joints", &mut r.diag).unwrap_or(&[]),
         None => {
-            r.diag.hint("joints", "`joints` is required", "every body needs a joint to its parent, e.g. a revolute joint to N");
+            r.diag.hint(
+                "joints",
+                "`joints` is required",
+                "every body needs a joint to its parent, e.g. a revolute joint to N",
+            );
             &[]
         }
     };
@@ -63,16 +88,34 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
     let coordinates = r.coordinates(top.get("coordinates"), &owners);
 
     let joints = r.joints(joint_values, &heads);
-    let gravity = top.get("gravity").and_then(|v| r.position(v, "gravity", BodyId::GROUND, "gravity"));
+    let gravity = top
+        .get("gravity")
+        .and_then(|v| r.position(v, "gravity", BodyId::GROUND, "gravity"));
     if let Some(g) = &gravity {
         validate::vector(g, &r.values, "gravity", &mut r.diag);
     }
-    let bodies: Vec<Body> = body_entries.iter().map(|(name, value)| r.body(name, value)).collect();
-    let points: Vec<PointDef> = point_entries.iter().map(|(name, value)| r.point(name, value)).collect();
-    let known = super::loads::Known { joints: &joints, points: &points, coordinates: &coordinates };
-    let loads = top.get("loads").map(|v| r.loads(v, &known)).unwrap_or_default();
+    let bodies: Vec<Body> = body_entries
+        .iter()
+        .map(|(name, value)| r.body(name, value))
+        .collect();
+    let points: Vec<PointDef> = point_entries
+        .iter()
+        .map(|(name, value)| r.point(name, value))
+        .collect();
+    let known = super::loads::Known {
+        joints: &joints,
+        points: &points,
+        coordinates: &coordinates,
+    };
+    let loads = top
+        .get("loads")
+        .map(|v| r.loads(v, &known))
+        .unwrap_or_default();
     let find_reactions = top.get("find").map(|v| r.find(v)).unwrap_or_default();
-    let simulate = top.get("simulate").map(|v| r.simulate(v)).unwrap_or_default();
+    let simulate = top
+        .get("simulate")
+        .map(|v| r.simulate(v))
+        .unwrap_or_default();
 
     if !r.diag.is_empty() {
         return Err(r.diag.errors);
@@ -106,7 +149,13 @@ impl Reader {
 
     /// A constant vector fixed in `body`: its unit vectors must not turn relative to the
     /// body, and in 2D it lies in the plane.
-    pub fn position(&mut self, value: &Value, path: &str, body: BodyId, what: &'static str) -> Option<VectorExpr> {
+    pub fn position(
+        &mut self,
+        value: &Value,
+        path: &str,
+        body: BodyId,
+        what: &'static str,
+    ) -> Option<VectorExpr> {
         let v = self.vector(value, path, Context::constant(what))?;
         self.fixed_in(&v, body, path, what);
         self.in_plane(&v, path, what);
@@ -115,12 +164,20 @@ impl Reader {
 
     /// Records an error when a term of `v` uses unit vectors that turn relative to `body`.
     pub fn fixed_in(&mut self, v: &VectorExpr, body: BodyId, path: &str, what: &str) {
-        let Some(orientation) = &self.orientation else { return };
+        let Some(orientation) = &self.orientation else {
+            return;
+        };
         let two_d = self.dimension == Some(Dimension::Two);
         // In 2D every frame shares its z with N.z.
-        let turning = v.terms.iter().find(|(f, axis, _)| !(orientation.aligned(*f, body) || (two_d && *axis == 2)));
+        let turning = v
+            .terms
+            .iter()
+            .find(|(f, axis, _)| !(orientation.aligned(*f, body) || (two_d && *axis == 2)));
         if let Some((frame, axis, _)) = turning {
-            let (b, f) = (self.names.body_name(body).to_string(), self.names.body_name(*frame).to_string());
+            let (b, f) = (
+                self.names.body_name(body).to_string(),
+                self.names.body_name(*frame).to_string(),
+            );
             let letter = ["x", "y", "z"][usize::from(*axis).min(2)];
             self.diag.hint(
                 path,
@@ -149,8 +206,16 @@ impl Reader {
         let Some(value) = value else { return };
         match value.as_u64() {
             Some(1) => {}
-            Some(n) => self.diag.hint("format", format!("format {n} is not supported"), "this version reads format 1"),
-            None => self.diag.hint("format", format!("expected the integer 1, found {}", kind(value)), "write \"format\": 1 or leave it out"),
+            Some(n) => self.diag.hint(
+                "format",
+                format!("format {n} is not supported"),
+                "this version reads format 1",
+            ),
+            None => self.diag.hint(
+                "format",
+                format!("expected the integer 1, found {}", kind(value)),
+                "write \"format\": 1 or leave it out",
+            ),
         }
     }
 
@@ -168,26 +233,46 @@ impl Reader {
             Some(2) => Some(Dimension::Two),
             Some(3) => Some(Dimension::Three),
             _ => {
-                let found = if value.is_number() { format!("`{value}`") } else { kind(value).to_string() };
-                self.diag.hint("dimension", format!("the dimension must be 2 or 3, not {found}"), "2 for planar motion, 3 for spatial");
+                let found = if value.is_number() {
+                    format!("`{value}`")
+                } else {
+                    kind(value).to_string()
+                };
+                self.diag.hint(
+                    "dimension",
+                    format!("the dimension must be 2 or 3, not {found}"),
+                    "2 for planar motion, 3 for spatial",
+                );
                 None
             }
         }
     }
 
     fn constants(&mut self, value: &Value) -> Vec<Constant> {
-        let Some(map) = object(value, "constants", &mut self.diag) else { return Vec::new() };
+        let Some(map) = object(value, "constants", &mut self.diag) else {
+            return Vec::new();
+        };
         let mut out = Vec::new();
         for (name, value) in map {
             let path = key_path("constants", name);
-            self.names.declare(name, Kind::Constant, &path, &mut self.diag);
+            self.names
+                .declare(name, Kind::Constant, &path, &mut self.diag);
             let (number_value, unit, description) = match value {
                 Value::Object(fields) => {
-                    check_keys(fields, &path, &["value", "unit", "description"], &mut self.diag);
+                    check_keys(
+                        fields,
+                        &path,
+                        &["value", "unit", "description"],
+                        &mut self.diag,
+                    );
                     let v = required(fields, "value", &path, &mut self.diag)
                         .and_then(|v| number(v, &key_path(&path, "value"), &mut self.diag));
                     let unit = optional_string(fields, "unit", &path, &mut self.diag);
-                    (v, unit, optional_string(fields, "description", &path, &mut self.diag))
+                    (
+                        v,
+                        unit,
+                        optional_string(fields, "description", &path, &mut self.diag),
+                    )
                 }
                 Value::Number(_) => (number(value, &path, &mut self.diag), None, None),
                 other => {
@@ -195,39 +280,60 @@ impl Reader {
                         Value::String(_) => "constants are numbers; an expression belongs where the constant is used",
                         _ => "write a number, or { \"value\": 9.81, \"unit\": \"m/s^2\" }",
                     };
-                    self.diag.hint(&path, format!("expected a number or an object, found {}", kind(other)), hint);
+                    self.diag.hint(
+                        &path,
+                        format!("expected a number or an object, found {}", kind(other)),
+                        hint,
+                    );
                     (None, None, None)
                 }
             };
             if let Some(v) = number_value {
                 self.values.set(name, v);
             }
-            out.push(Constant { name: name.clone(), value: number_value.unwrap_or(f64::NAN), unit, description });
+            out.push(Constant {
+                name: name.clone(),
+                value: number_value.unwrap_or(f64::NAN),
+                unit,
+                description,
+            });
         }
         out
     }
 
     fn declare_bodies<'v>(&mut self, value: Option<&'v Value>) -> Vec<(String, &'v Value)> {
         let Some(value) = value else {
-            self.diag.hint("bodies", "`bodies` is required", "declare at least one body, e.g. \"A\": { \"mass\": \"m\" }");
+            self.diag.hint(
+                "bodies",
+                "`bodies` is required",
+                "declare at least one body, e.g. \"A\": { \"mass\": \"m\" }",
+            );
             return Vec::new();
         };
-        let Some(map) = object(value, "bodies", &mut self.diag) else { return Vec::new() };
+        let Some(map) = object(value, "bodies", &mut self.diag) else {
+            return Vec::new();
+        };
         if map.is_empty() {
             self.diag.error("bodies", "there must be at least one body");
         }
         for name in map.keys() {
             self.names.bodies.push(name.clone());
-            self.names.declare(name, Kind::Body, &key_path("bodies", name), &mut self.diag);
+            self.names
+                .declare(name, Kind::Body, &key_path("bodies", name), &mut self.diag);
         }
         map.iter().map(|(k, v)| (k.clone(), v)).collect()
     }
 
     fn declare_points<'v>(&mut self, value: Option<&'v Value>) -> Vec<(String, &'v Value)> {
-        let Some(map) = value.and_then(|v| object(v, "points", &mut self.diag)) else { return Vec::new() };
+        let Some(map) = value.and_then(|v| object(v, "points", &mut self.diag)) else {
+            return Vec::new();
+        };
         let mut out = Vec::new();
         for (name, value) in map {
-            if self.names.declare(name, Kind::Point, &key_path("points", name), &mut self.diag) {
+            if self
+                .names
+                .declare(name, Kind::Point, &key_path("points", name), &mut self.diag)
+            {
                 out.push((name.clone(), value));
             }
         }
@@ -251,7 +357,9 @@ impl Reader {
                 kind,
             })
             .collect();
-        let Some(map) = value.and_then(|v| object(v, "coordinates", &mut self.diag)) else { return out };
+        let Some(map) = value.and_then(|v| object(v, "coordinates", &mut self.diag)) else {
+            return out;
+        };
         for (name, value) in map {
             let path = key_path("coordinates", name);
             let Some(index) = self.names.coordinate(name) else {
@@ -267,11 +375,21 @@ impl Reader {
                 self.diag.hint(&path, message, hint);
                 continue;
             };
-            let Some(fields) = object(value, &path, &mut self.diag) else { continue };
-            check_keys(fields, &path, &["initial", "rate", "unit", "description"], &mut self.diag);
+            let Some(fields) = object(value, &path, &mut self.diag) else {
+                continue;
+            };
+            check_keys(
+                fields,
+                &path,
+                &["initial", "rate", "unit", "description"],
+                &mut self.diag,
+            );
             let entry = &mut out[index];
             let read_number = |key: &str, diag: &mut Diagnostics| {
-                fields.get(key).and_then(|v| number(v, &key_path(&path, key), diag)).unwrap_or(0.0)
+                fields
+                    .get(key)
+                    .and_then(|v| number(v, &key_path(&path, key), diag))
+                    .unwrap_or(0.0)
             };
             entry.initial = read_number("initial", &mut self.diag);
             entry.rate = read_number("rate", &mut self.diag);
@@ -292,8 +410,15 @@ impl Reader {
             description: None,
             path: path.clone(),
         };
-        let Some(fields) = object(value, &path, &mut self.diag) else { return body };
-        check_keys(fields, &path, &["mass", "center", "inertia", "description"], &mut self.diag);
+        let Some(fields) = object(value, &path, &mut self.diag) else {
+            return body;
+        };
+        check_keys(
+            fields,
+            &path,
+            &["mass", "center", "inertia", "description"],
+            &mut self.diag,
+        );
         let mass_path = key_path(&path, "mass");
         if let Some(mass) = required(fields, "mass", &path, &mut self.diag)
             .and_then(|v| self.scalar(v, &mass_path, Context::constant("a mass")))
@@ -302,7 +427,10 @@ impl Reader {
             body.mass = mass;
         }
         let center_path = key_path(&path, "center");
-        if let Some(center) = fields.get("center").and_then(|v| self.position(v, &center_path, id, "the mass center")) {
+        if let Some(center) = fields
+            .get("center")
+            .and_then(|v| self.position(v, &center_path, id, "the mass center"))
+        {
             validate::vector(&center, &self.values, &center_path, &mut self.diag);
             body.center = center;
         }
@@ -326,7 +454,9 @@ impl Reader {
         };
         let what = Context::constant("an inertia");
         if !spatial {
-            let Some(value) = value else { return Some(Inertia::Planar(Expr::zero())) };
+            let Some(value) = value else {
+                return Some(Inertia::Planar(Expr::zero()));
+            };
             if value.is_object() {
                 self.diag.hint(
                     path,
@@ -338,8 +468,14 @@ impl Reader {
             return self.scalar(value, path, what).map(Inertia::Planar);
         }
         let zero = || Expr::zero();
-        let mut m = [[zero(), zero(), zero()], [zero(), zero(), zero()], [zero(), zero(), zero()]];
-        let Some(value) = value else { return Some(Inertia::Spatial(m)) };
+        let mut m = [
+            [zero(), zero(), zero()],
+            [zero(), zero(), zero()],
+            [zero(), zero(), zero()],
+        ];
+        let Some(value) = value else {
+            return Some(Inertia::Spatial(m));
+        };
         let Some(fields) = value.as_object() else {
             self.diag.hint(
                 path,
@@ -348,7 +484,14 @@ impl Reader {
             );
             return None;
         };
-        let keys = [("xx", 0, 0), ("yy", 1, 1), ("zz", 2, 2), ("xy", 0, 1), ("yz", 1, 2), ("zx", 2, 0)];
+        let keys = [
+            ("xx", 0, 0),
+            ("yy", 1, 1),
+            ("zz", 2, 2),
+            ("xy", 0, 1),
+            ("yz", 1, 2),
+            ("zx", 2, 0),
+        ];
         check_keys(fields, path, &keys.map(|(k, _, _)| k), &mut self.diag);
         let mut ok = true;
         for (key, r, c) in keys {
@@ -366,14 +509,25 @@ impl Reader {
 
     fn point(&mut self, name: &str, value: &Value) -> PointDef {
         let path = key_path("points", name);
-        let mut point = PointDef { name: name.to_string(), on: BodyId::GROUND, at: VectorExpr::default() };
-        let Some(fields) = object(value, &path, &mut self.diag) else { return point };
+        let mut point = PointDef {
+            name: name.to_string(),
+            on: BodyId::GROUND,
+            at: VectorExpr::default(),
+        };
+        let Some(fields) = object(value, &path, &mut self.diag) else {
+            return point;
+        };
         check_keys(fields, &path, &["on", "at"], &mut self.diag);
-        if let Some(on) = required(fields, "on", &path, &mut self.diag).and_then(|v| self.body_ref(v, &key_path(&path, "on"))) {
+        if let Some(on) = required(fields, "on", &path, &mut self.diag)
+            .and_then(|v| self.body_ref(v, &key_path(&path, "on")))
+        {
             point.on = on;
         }
         let at_path = key_path(&path, "at");
-        if let Some(at) = fields.get("at").and_then(|v| self.position(v, &at_path, point.on, "a point's position")) {
+        if let Some(at) = fields
+            .get("at")
+            .and_then(|v| self.position(v, &at_path, point.on, "a point's position"))
+        {
             validate::vector(&at, &self.values, &at_path, &mut self.diag);
             point.at = at;
         }
@@ -401,7 +555,13 @@ impl Reader {
         if let Some(index) = self.names.joint(name) {
             return Some(index);
         }
-        let known: Vec<&str> = self.names.joints.iter().filter(|j| !j.is_empty()).map(String::as_str).collect();
+        let known: Vec<&str> = self
+            .names
+            .joints
+            .iter()
+            .filter(|j| !j.is_empty())
+            .map(String::as_str)
+            .collect();
         let message = match self.names.kind_of(name) {
             Some(other) => format!("`{name}` is {}, not a joint", other.noun()),
             None => format!("unknown joint `{name}`"),
@@ -412,9 +572,14 @@ impl Reader {
     }
 
     fn find(&mut self, value: &Value) -> Vec<usize> {
-        let Some(fields) = object(value, "find", &mut self.diag) else { return Vec::new() };
+        let Some(fields) = object(value, "find", &mut self.diag) else {
+            return Vec::new();
+        };
         check_keys(fields, "find", &["reactions"], &mut self.diag);
-        let Some(items) = fields.get("reactions").and_then(|v| json::array(v, "find.reactions", &mut self.diag)) else {
+        let Some(items) = fields
+            .get("reactions")
+            .and_then(|v| json::array(v, "find.reactions", &mut self.diag))
+        else {
             return Vec::new();
         };
         let mut out = Vec::new();
@@ -422,7 +587,10 @@ impl Reader {
             let path = json::index_path("find.reactions", i);
             if let Some(joint) = self.joint_ref(item, &path) {
                 if out.contains(&joint) {
-                    self.diag.error(&path, format!("the joint `{}` is listed twice", self.names.joints[joint]));
+                    self.diag.error(
+                        &path,
+                        format!("the joint `{}` is listed twice", self.names.joints[joint]),
+                    );
                 } else {
                     out.push(joint);
                 }
@@ -433,13 +601,28 @@ impl Reader {
 
     fn simulate(&mut self, value: &Value) -> SimulateSettings {
         let mut settings = SimulateSettings::default();
-        let Some(fields) = object(value, "simulate", &mut self.diag) else { return settings };
-        check_keys(fields, "simulate", &["duration", "output_step", "tolerance"], &mut self.diag);
+        let Some(fields) = object(value, "simulate", &mut self.diag) else {
+            return settings;
+        };
+        check_keys(
+            fields,
+            "simulate",
+            &["duration", "output_step", "tolerance"],
+            &mut self.diag,
+        );
         let positive = |key: &str, default: f64, diag: &mut Diagnostics| {
             let path = key_path("simulate", key);
-            let Some(v) = fields.get(key).and_then(|v| number(v, &path, diag)) else { return default };
+            let Some(v) = fields.get(key).and_then(|v| number(v, &path, diag)) else {
+                return default;
+            };
             if v <= 0.0 {
-                diag.error(&path, format!("`{key}` must be positive, not {}", crate::numeric::format::fixed(v)));
+                diag.error(
+                    &path,
+                    format!(
+                        "`{key}` must be positive, not {}",
+                        crate::numeric::format::fixed(v)
+                    ),
+                );
                 return default;
             }
             v

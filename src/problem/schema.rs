@@ -18,10 +18,18 @@ mod tests {
             Value::Object(map) => {
                 for (key, inner) in map {
                     if key == "properties" {
-                        out.extend(inner.as_object().into_iter().flat_map(|m| m.keys().cloned()));
+                        out.extend(
+                            inner
+                                .as_object()
+                                .into_iter()
+                                .flat_map(|m| m.keys().cloned()),
+                        );
                     }
                     if key == "enum" || key == "const" {
-                        let items = inner.as_array().cloned().unwrap_or_else(|| vec![inner.clone()]);
+                        let items = inner
+                            .as_array()
+                            .cloned()
+                            .unwrap_or_else(|| vec![inner.clone()]);
                         out.extend(items.iter().filter_map(|v| v.as_str().map(str::to_string)));
                     }
                     words(inner, out);
@@ -35,7 +43,10 @@ mod tests {
     #[test]
     fn the_schema_is_json_of_draft_2020_12() {
         let schema: Value = serde_json::from_str(SCHEMA).unwrap();
-        assert_eq!(schema["$schema"], "https://json-schema.org/draft/2020-12/schema");
+        assert_eq!(
+            schema["$schema"],
+            "https://json-schema.org/draft/2020-12/schema"
+        );
         assert_eq!(schema["additionalProperties"], false);
     }
 
@@ -50,7 +61,10 @@ mod tests {
             force torque spring damper joint_spring joint_damper joint_actuator";
         let mut found = BTreeSet::new();
         words(&serde_json::from_str(SCHEMA).unwrap(), &mut found);
-        let missing: Vec<&str> = format.split_whitespace().filter(|k| !found.contains(*k)).collect();
+        let missing: Vec<&str> = format
+            .split_whitespace()
+            .filter(|k| !found.contains(*k))
+            .collect();
         assert!(missing.is_empty(), "missing from the schema: {missing:?}");
     }
 }

@@ -11,14 +11,22 @@ use nalgebra::{Matrix3, SymmetricEigen};
 
 /// The value of `e` if finite; records an error when it is not (`None` also when it
 /// cannot be judged because a constant it names had its own error).
-pub fn finite(e: &Expr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) -> Option<f64> {
+pub fn finite(
+    e: &Expr,
+    values: &ConstantValues,
+    path: &str,
+    diag: &mut Diagnostics,
+) -> Option<f64> {
     let value = values.eval(e)?;
     if value.is_finite() {
         return Some(value);
     }
     diag.hint(
         path,
-        format!("`{e}` evaluates to {} with the constants' values", fixed(value)),
+        format!(
+            "`{e}` evaluates to {} with the constants' values",
+            fixed(value)
+        ),
         "look for a division by zero, or a square root or logarithm of a negative number",
     );
     None
@@ -28,7 +36,11 @@ pub fn finite(e: &Expr, values: &ConstantValues, path: &str, diag: &mut Diagnost
 pub fn mass(e: &Expr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) {
     if let Some(m) = finite(e, values, path, diag) {
         if m <= 0.0 {
-            diag.hint(path, format!("the mass must be positive; `{e}` is {}", fixed(m)), "a particle still has a positive mass");
+            diag.hint(
+                path,
+                format!("the mass must be positive; `{e}` is {}", fixed(m)),
+                "a particle still has a positive mass",
+            );
         }
     }
 }
@@ -52,7 +64,11 @@ pub fn axis(v: &VectorExpr, values: &ConstantValues, path: &str, diag: &mut Diag
     }
     let length = sum.iter().map(|x| x * x).sum::<f64>().sqrt();
     if length == 0.0 || !length.is_normal() {
-        diag.hint(path, "the axis is the zero vector", "give a direction such as N.z");
+        diag.hint(
+            path,
+            "the axis is the zero vector",
+            "give a direction such as N.z",
+        );
     }
 }
 
@@ -65,7 +81,14 @@ pub fn inertia(inertia: &Inertia, values: &ConstantValues, path: &str, diag: &mu
         Inertia::Planar(e) => {
             if let Some(i) = finite(e, values, path, diag) {
                 if i < 0.0 {
-                    diag.hint(path, format!("the moment of inertia must not be negative; `{e}` is {}", fixed(i)), "use 0 for a particle");
+                    diag.hint(
+                        path,
+                        format!(
+                            "the moment of inertia must not be negative; `{e}` is {}",
+                            fixed(i)
+                        ),
+                        "use 0 for a particle",
+                    );
                 }
             }
         }
@@ -75,7 +98,9 @@ pub fn inertia(inertia: &Inertia, values: &ConstantValues, path: &str, diag: &mu
             for (r, row) in m.iter().enumerate() {
                 for (c, e) in row.iter().enumerate() {
                     // Each product of inertia appears twice; judge it once.
-                    let value = if c < r { Some(numbers[(c, r)]) } else {
+                    let value = if c < r {
+                        Some(numbers[(c, r)])
+                    } else {
                         finite(e, values, &key_path(path, SPATIAL_KEYS[r][c]), diag)
                     };
                     match value {
@@ -92,7 +117,11 @@ pub fn inertia(inertia: &Inertia, values: &ConstantValues, path: &str, diag: &mu
 }
 
 fn principal_moments(matrix: &Matrix3<f64>, path: &str, diag: &mut Diagnostics) {
-    let mut moments: Vec<f64> = SymmetricEigen::new(*matrix).eigenvalues.iter().copied().collect();
+    let mut moments: Vec<f64> = SymmetricEigen::new(*matrix)
+        .eigenvalues
+        .iter()
+        .copied()
+        .collect();
     moments.sort_by(f64::total_cmp);
     let scale = moments.iter().fold(0.0f64, |a, m| a.max(m.abs()));
     // Round-off in the eigenvalues is relative to the largest moment.
@@ -101,7 +130,10 @@ fn principal_moments(matrix: &Matrix3<f64>, path: &str, diag: &mut Diagnostics) 
     if moments[0] < -tolerance {
         diag.hint(
             path,
-            format!("the inertia is not physical: its principal moments are {}, and one is negative", shown.join(", ")),
+            format!(
+                "the inertia is not physical: its principal moments are {}, and one is negative",
+                shown.join(", ")
+            ),
             "check the signs; `xy`, `yz`, `zx` are tensor elements (minus the products of inertia)",
         );
     } else if moments[2] > moments[0] + moments[1] + tolerance {
@@ -124,7 +156,10 @@ pub fn values(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
     let mut diag = Diagnostics::default();
     for constant in &problem.constants {
         if !constant.value.is_finite() {
-            diag.error(&key_path("constants", &constant.name), "the value is not a finite number");
+            diag.error(
+                &key_path("constants", &constant.name),
+                "the value is not a finite number",
+            );
         }
     }
     if let Some(gravity) = &problem.gravity {
@@ -132,18 +167,38 @@ pub fn values(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
     }
     for body in &problem.bodies {
         mass(&body.mass, values, &key_path(&body.path, "mass"), &mut diag);
-        vector(&body.center, values, &key_path(&body.path, "center"), &mut diag);
-        inertia(&body.inertia, values, &key_path(&body.path, "inertia"), &mut diag);
+        vector(
+            &body.center,
+            values,
+            &key_path(&body.path, "center"),
+            &mut diag,
+        );
+        inertia(
+            &body.inertia,
+            values,
+            &key_path(&body.path, "inertia"),
+            &mut diag,
+        );
     }
     for joint in &problem.joints {
         if let Some(a) = &joint.axis {
             axis(a, values, &key_path(&joint.path, "axis"), &mut diag);
         }
         vector(&joint.at, values, &key_path(&joint.path, "at"), &mut diag);
-        vector(&joint.child_at, values, &key_path(&joint.path, "child_at"), &mut diag);
+        vector(
+            &joint.child_at,
+            values,
+            &key_path(&joint.path, "child_at"),
+            &mut diag,
+        );
     }
     for point in &problem.points {
-        vector(&point.at, values, &key_path(&key_path("points", &point.name), "at"), &mut diag);
+        vector(
+            &point.at,
+            values,
+            &key_path(&key_path("points", &point.name), "at"),
+            &mut diag,
+        );
     }
     for load in &problem.loads {
         for (key, e) in load_scalars(&load.kind) {
@@ -162,11 +217,17 @@ pub fn load_scalars(kind: &LoadKind) -> Vec<(&'static str, &Expr)> {
         LoadKind::Force { vector, .. } | LoadKind::Torque { vector, .. } => {
             vector.terms.iter().map(|(_, _, c)| ("vector", c)).collect()
         }
-        LoadKind::Spring { stiffness, free_length, .. } => vec![("stiffness", stiffness), ("free_length", free_length)],
+        LoadKind::Spring {
+            stiffness,
+            free_length,
+            ..
+        } => vec![("stiffness", stiffness), ("free_length", free_length)],
         LoadKind::Damper { coefficient, .. } | LoadKind::JointDamper { coefficient, .. } => {
             vec![("coefficient", coefficient)]
         }
-        LoadKind::JointSpring { stiffness, rest, .. } => vec![("stiffness", stiffness), ("rest", rest)],
+        LoadKind::JointSpring {
+            stiffness, rest, ..
+        } => vec![("stiffness", stiffness), ("rest", rest)],
         LoadKind::JointActuator { value, .. } => vec![("value", value)],
     }
 }
@@ -178,12 +239,21 @@ mod tests {
     fn spatial(xx: f64, yy: f64, zz: f64, xy: f64) -> Inertia {
         let n = Expr::real;
         let zero = Expr::zero;
-        Inertia::Spatial([[n(xx), n(xy), zero()], [n(xy), n(yy), zero()], [zero(), zero(), n(zz)]])
+        Inertia::Spatial([
+            [n(xx), n(xy), zero()],
+            [n(xy), n(yy), zero()],
+            [zero(), zero(), n(zz)],
+        ])
     }
 
     fn errors(inertia_value: &Inertia) -> Vec<String> {
         let mut diag = Diagnostics::default();
-        inertia(inertia_value, &ConstantValues::default(), "bodies.A.inertia", &mut diag);
+        inertia(
+            inertia_value,
+            &ConstantValues::default(),
+            "bodies.A.inertia",
+            &mut diag,
+        );
         diag.errors.into_iter().map(|e| e.message).collect()
     }
 

@@ -52,7 +52,12 @@ pub fn setup(problem: &Problem, method: Method) -> Solution {
 
 /// `N`, then one frame per body in file order, oriented by the joint whose child it is.
 fn frames(problem: &Problem) -> Vec<Frame> {
-    let triad = |name: &str| (0..3).map(|axis| latex_unit_vector(name, axis)).collect::<Vec<_>>().join(", ");
+    let triad = |name: &str| {
+        (0..3)
+            .map(|axis| latex_unit_vector(name, axis))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     let mut frames = vec![Frame {
         name: "N".into(),
         frame_tex: triad("N"),
@@ -67,8 +72,12 @@ fn frames(problem: &Problem) -> Vec<Frame> {
             name: name.to_string(),
             frame_tex: triad(name),
             fixed_in: name.to_string(),
-            parent: joint.map(|j| problem.body_name(j.parent).to_string()).unwrap_or_default(),
-            orientation_tex: joint.map(|j| orientation_tex(problem, j)).unwrap_or_default(),
+            parent: joint
+                .map(|j| problem.body_name(j.parent).to_string())
+                .unwrap_or_default(),
+            orientation_tex: joint
+                .map(|j| orientation_tex(problem, j))
+                .unwrap_or_default(),
         });
     }
     frames
@@ -77,23 +86,42 @@ fn frames(problem: &Problem) -> Vec<Frame> {
 /// How a joint orients its child's frame relative to its parent's, in words and math.
 fn orientation_tex(problem: &Problem, joint: &Joint) -> String {
     let coordinate = |k: usize| {
-        joint.coordinates.get(k).map(|&i| latex(&problem.coordinate_expr(i, 0))).unwrap_or_else(|| "0".into())
+        joint
+            .coordinates
+            .get(k)
+            .map(|&i| latex(&problem.coordinate_expr(i, 0)))
+            .unwrap_or_else(|| "0".into())
     };
     let axis = || match &joint.axis {
         Some(axis) => vector_tex(problem, axis),
         None => latex_unit_vector(problem.body_name(joint.parent), 2),
     };
-    let rotated = |angle: String, about: String| format!("\\text{{rotated by }} {angle} \\text{{ about }} {about}");
+    let rotated = |angle: String, about: String| {
+        format!("\\text{{rotated by }} {angle} \\text{{ about }} {about}")
+    };
     match joint.kind {
         JointKind::Revolute => rotated(coordinate(0), axis()),
         JointKind::Cylindrical => rotated(coordinate(1), axis()),
-        JointKind::Planar => rotated(coordinate(2), latex_unit_vector(problem.body_name(joint.parent), 2)),
+        JointKind::Planar => rotated(
+            coordinate(2),
+            latex_unit_vector(problem.body_name(joint.parent), 2),
+        ),
         JointKind::Prismatic | JointKind::Weld => "\\text{aligned}".into(),
         JointKind::Universal | JointKind::Spherical | JointKind::Free => {
             let first_angle = if joint.kind == JointKind::Free { 3 } else { 0 };
-            let angles: Vec<String> = (0..joint.sequence.len()).map(|k| coordinate(first_angle + k)).collect();
-            let axes: Vec<&str> = joint.sequence.iter().map(|&a| ["x", "y", "z"].get(a as usize).copied().unwrap_or("?")).collect();
-            format!("\\text{{body-fixed rotations by }} {} \\text{{ about }} {}", angles.join(", "), axes.join(", "))
+            let angles: Vec<String> = (0..joint.sequence.len())
+                .map(|k| coordinate(first_angle + k))
+                .collect();
+            let axes: Vec<&str> = joint
+                .sequence
+                .iter()
+                .map(|&a| ["x", "y", "z"].get(a as usize).copied().unwrap_or("?"))
+                .collect();
+            format!(
+                "\\text{{body-fixed rotations by }} {} \\text{{ about }} {}",
+                angles.join(", "),
+                axes.join(", ")
+            )
         }
     }
 }

@@ -2,8 +2,8 @@
 //! turned into the strings and tables of [`Solution`].
 
 use super::context::{
-    Check, Equation as EquationView, Force, FreeBody, InitialValue, Kinematics, MatrixEntry, MatrixForm, Plan, PlanRow,
-    Plot, Reaction, Rejected as RejectedView, Solution, WholeMatrix,
+    Check, Equation as EquationView, Force, FreeBody, InitialValue, Kinematics, MatrixEntry,
+    MatrixForm, Plan, PlanRow, Plot, Reaction, Rejected as RejectedView, Solution, WholeMatrix,
 };
 use crate::equations::rows::{is_external, Equation, Sum};
 use crate::equations::{derive, Derivation, Method};
@@ -30,7 +30,11 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
     solution.free_bodies = free_bodies(&derivation);
     solution.plan = plan(&derivation);
     solution.kinematics = kinematics(model);
-    solution.equations = derivation.rows.iter().map(|row| equation_view(&derivation, row)).collect();
+    solution.equations = derivation
+        .rows
+        .iter()
+        .map(|row| equation_view(&derivation, row))
+        .collect();
     solution.matrix = matrix(&derivation);
     let compiled = Compiled::new(&derivation);
     let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
@@ -53,7 +57,12 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
         .reactions
         .iter()
         .map(|(joint, f, m)| {
-            let parent = problem.joints.iter().find(|j| &j.name == joint).map(|j| j.parent).unwrap_or(BodyId::GROUND);
+            let parent = problem
+                .joints
+                .iter()
+                .find(|j| &j.name == joint)
+                .map(|j| j.parent)
+                .unwrap_or(BodyId::GROUND);
             let frame = problem.body_name(parent);
             Reaction {
                 joint: joint.clone(),
@@ -80,7 +89,10 @@ fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
     if terms.is_empty() {
         return "\\mathbf{0}".into();
     }
-    format!("\\left({}\\right)\\,\\mathrm{{{unit}}}", terms.join(" + ").replace("+ -", "- "))
+    format!(
+        "\\left({}\\right)\\,\\mathrm{{{unit}}}",
+        terms.join(" + ").replace("+ -", "- ")
+    )
 }
 
 /// A vector as a sum of components times unit vectors, each component simplified.
@@ -132,7 +144,11 @@ fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
 }
 
 fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
-    bodies.iter().map(|b| problem.body_name(*b).to_string()).collect::<Vec<_>>().join(" + ")
+    bodies
+        .iter()
+        .map(|b| problem.body_name(*b).to_string())
+        .collect::<Vec<_>>()
+        .join(" + ")
 }
 
 fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
@@ -191,7 +207,11 @@ fn sum_text(sum: &Sum) -> String {
 }
 
 fn unknowns_tex(unknowns: &[Symbol]) -> String {
-    unknowns.iter().map(|u| latex(&Expr::sym(u.clone()))).collect::<Vec<_>>().join(", ")
+    unknowns
+        .iter()
+        .map(|u| latex(&Expr::sym(u.clone())))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn plan(derivation: &Derivation) -> Plan {
@@ -202,7 +222,11 @@ fn plan(derivation: &Derivation) -> Plan {
         .map(|row| PlanRow {
             free_body: bodies_name(problem, &row.free_body),
             equation: sum_text(&row.sum),
-            direction_tex: row.direction.as_ref().map(|d| d.latex.clone()).unwrap_or_else(|| "\\text{partial velocities}".into()),
+            direction_tex: row
+                .direction
+                .as_ref()
+                .map(|d| d.latex.clone())
+                .unwrap_or_else(|| "\\text{partial velocities}".into()),
             unknowns_tex: unknowns_tex(&row.unknowns),
         })
         .collect();
@@ -242,9 +266,18 @@ fn kinematics(model: &Model) -> Vec<Kinematics> {
             let name = model.problem.body_name(body);
             Kinematics {
                 body: name.to_string(),
-                omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} = {}", shortest_tex(model, &state.omega, body)),
-                alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{name}}} = {}", shortest_tex(model, &state.alpha, body)),
-                velocity_tex: format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {}", shortest_tex(model, &state.center.velocity, body)),
+                omega_tex: format!(
+                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} = {}",
+                    shortest_tex(model, &state.omega, body)
+                ),
+                alpha_tex: format!(
+                    "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{name}}} = {}",
+                    shortest_tex(model, &state.alpha, body)
+                ),
+                velocity_tex: format!(
+                    "{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {}",
+                    shortest_tex(model, &state.center.velocity, body)
+                ),
                 acceleration_tex: format!(
                     "{{}}^{{N}}\\mathbf{{a}}^{{{name}^*}} = {}",
                     shortest_tex(model, &state.center.acceleration, body)
@@ -274,9 +307,17 @@ fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         .map(|e| group_tex(e))
         .collect::<Vec<_>>()
         .join(" + ");
-    let direction = row.direction.as_ref().map(|d| format!(" along {}", d.name)).unwrap_or_default();
+    let direction = row
+        .direction
+        .as_ref()
+        .map(|d| format!(" along {}", d.name))
+        .unwrap_or_default();
     EquationView {
-        label: format!("{}: {}{direction}", bodies_name(problem, &row.free_body), sum_text(&row.sum)),
+        label: format!(
+            "{}: {}{direction}",
+            bodies_name(problem, &row.free_body),
+            sum_text(&row.sum)
+        ),
         grouped_tex: format!("{grouped} = 0"),
         simplified_tex: format!("{} = 0", latex(&simplify(&row.expression))),
     }
@@ -285,16 +326,29 @@ fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
 fn matrix(derivation: &Derivation) -> MatrixForm {
     let system = &derivation.system;
     let n = system.unknowns.len();
-    let simplified_a: Vec<Vec<Expr>> = system.a.iter().map(|row| row.iter().map(simplify).collect()).collect();
+    let simplified_a: Vec<Vec<Expr>> = system
+        .a
+        .iter()
+        .map(|row| row.iter().map(simplify).collect())
+        .collect();
     let simplified_b: Vec<Expr> = system.b.iter().map(simplify).collect();
     if n <= 4 {
-        let rows: Vec<String> =
-            simplified_a.iter().map(|row| row.iter().map(latex).collect::<Vec<_>>().join(" & ")).collect();
-        let x: Vec<String> = system.unknowns.iter().map(|u| latex(&Expr::sym(u.clone()))).collect();
+        let rows: Vec<String> = simplified_a
+            .iter()
+            .map(|row| row.iter().map(latex).collect::<Vec<_>>().join(" & "))
+            .collect();
+        let x: Vec<String> = system
+            .unknowns
+            .iter()
+            .map(|u| latex(&Expr::sym(u.clone())))
+            .collect();
         let b: Vec<String> = simplified_b.iter().map(latex).collect();
         return MatrixForm {
             whole: Some(WholeMatrix {
-                a_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ ")),
+                a_tex: format!(
+                    "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
+                    rows.join(" \\\\ ")
+                ),
                 x_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", x.join(" \\\\ ")),
                 b_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ ")),
             }),
@@ -304,14 +358,31 @@ fn matrix(derivation: &Derivation) -> MatrixForm {
     let mut entries = Vec::new();
     for (i, row) in simplified_a.iter().enumerate() {
         for (j, e) in row.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
-            entries.push(MatrixEntry { row: i + 1, column: (j + 1).to_string(), value_tex: format!("A_{{{},{}}} = {}", i + 1, j + 1, latex(e)) });
+            entries.push(MatrixEntry {
+                row: i + 1,
+                column: (j + 1).to_string(),
+                value_tex: format!("A_{{{},{}}} = {}", i + 1, j + 1, latex(e)),
+            });
         }
-        entries.push(MatrixEntry { row: i + 1, column: "b".into(), value_tex: format!("b_{{{}}} = {}", i + 1, latex(&simplified_b[i])) });
+        entries.push(MatrixEntry {
+            row: i + 1,
+            column: "b".into(),
+            value_tex: format!("b_{{{}}} = {}", i + 1, latex(&simplified_b[i])),
+        });
     }
-    MatrixForm { whole: None, entries }
+    MatrixForm {
+        whole: None,
+        entries,
+    }
 }
 
-fn simulation(solution: &mut Solution, problem: &Problem, compiled: &Compiled, q0: &[f64], rates0: &[f64]) {
+fn simulation(
+    solution: &mut Solution,
+    problem: &Problem,
+    compiled: &Compiled,
+    q0: &[f64],
+    rates0: &[f64],
+) {
     let trajectory = match simulate(compiled, q0, rates0, &problem.simulate) {
         Ok(t) => t,
         Err(e) => {
@@ -327,7 +398,8 @@ fn simulation(solution: &mut Solution, problem: &Problem, compiled: &Compiled, q
         .filter(|m| **m != compiled.method)
         .filter_map(|&m| derive(problem, m).ok().map(|d| (m, Compiled::new(&d))))
         .collect();
-    let mut systems: Vec<(&str, &dyn System)> = vec![(compiled.method.name(), compiled as &dyn System)];
+    let mut systems: Vec<(&str, &dyn System)> =
+        vec![(compiled.method.name(), compiled as &dyn System)];
     systems.extend(others.iter().map(|(m, c)| (m.name(), c as &dyn System)));
     let checks = [
         energy_check(compiled, &trajectory),
@@ -337,20 +409,33 @@ fn simulation(solution: &mut Solution, problem: &Problem, compiled: &Compiled, q
     solution.simulation.checks = checks
         .into_iter()
         .flatten()
-        .map(|c| Check { name: c.name, value: fixed(c.value), tolerance: fixed(c.tolerance), passed: c.passed })
+        .map(|c| Check {
+            name: c.name,
+            value: fixed(c.value),
+            tolerance: fixed(c.tolerance),
+            passed: c.passed,
+        })
         .collect();
     let names = compiled.coordinate_names();
-    let coordinate_series: Vec<(String, Vec<(f64, f64)>)> =
-        names.iter().filter_map(|n| trajectory.series(n).map(|s| (n.clone(), s))).collect();
+    let coordinate_series: Vec<(String, Vec<(f64, f64)>)> = names
+        .iter()
+        .filter_map(|n| trajectory.series(n).map(|s| (n.clone(), s)))
+        .collect();
     let energy_series: Vec<(String, Vec<(f64, f64)>)> = ["kinetic", "potential", "total"]
         .iter()
         .filter_map(|n| trajectory.series(n).map(|s| (n.to_string(), s)))
         .collect();
     for (kind, title, y_label, series) in [
-        ("coordinates", "Coordinates against time", "coordinate", coordinate_series),
+        (
+            "coordinates",
+            "Coordinates against time",
+            "coordinate",
+            coordinate_series,
+        ),
         ("energy", "Energy against time", "energy (J)", energy_series),
     ] {
-        let svg = crate::render::plot::line_plot(title, "t (s)", y_label, &series).unwrap_or_default();
+        let svg =
+            crate::render::plot::line_plot(title, "t (s)", y_label, &series).unwrap_or_default();
         solution.simulation.plots.push(Plot {
             kind: kind.into(),
             title: title.into(),

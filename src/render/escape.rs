@@ -26,7 +26,10 @@ pub fn paragraphs(text: &str) -> Vec<Vec<String>> {
 /// one paragraph of one line.
 fn split(text: &str, lines: Lines) -> Vec<Vec<String>> {
     let collapse = |line: &str| {
-        line.split(|c: char| c.is_whitespace() || c.is_control()).filter(|w| !w.is_empty()).collect::<Vec<_>>().join(" ")
+        line.split(|c: char| c.is_whitespace() || c.is_control())
+            .filter(|w| !w.is_empty())
+            .collect::<Vec<_>>()
+            .join(" ")
     };
     if lines == Lines::One {
         return vec![vec![collapse(text)]];
@@ -52,14 +55,46 @@ const LATEX_SAFE: &str = "\u{a0}¡\u{ad}¸¿ÀÁÂÃÄÅÆÇÈÉÊËÌÍÎÏÑÒ
 
 /// Greek letters, set in math mode, since a description may well say "the angle θ".
 const GREEK: [(char, &str); 40] = [
-    ('α', "alpha"), ('β', "beta"), ('γ', "gamma"), ('δ', "delta"), ('ε', "epsilon"),
-    ('ζ', "zeta"), ('η', "eta"), ('θ', "theta"), ('ι', "iota"), ('κ', "kappa"),
-    ('λ', "lambda"), ('μ', "mu"), ('ν', "nu"), ('ξ', "xi"), ('π', "pi"), ('ρ', "rho"),
-    ('σ', "sigma"), ('τ', "tau"), ('υ', "upsilon"), ('φ', "phi"), ('χ', "chi"), ('ψ', "psi"),
-    ('ω', "omega"), ('ϕ', "phi"), ('ϑ', "vartheta"), ('Γ', "Gamma"), ('Δ', "Delta"),
-    ('Θ', "Theta"), ('Λ', "Lambda"), ('Ξ', "Xi"), ('Π', "Pi"), ('Σ', "Sigma"),
-    ('Φ', "Phi"), ('Ψ', "Psi"), ('Ω', "Omega"), ('µ', "mu"), ('ς', "varsigma"),
-    ('Υ', "Upsilon"), ('ϵ', "epsilon"), ('ϱ', "varrho"),
+    ('α', "alpha"),
+    ('β', "beta"),
+    ('γ', "gamma"),
+    ('δ', "delta"),
+    ('ε', "epsilon"),
+    ('ζ', "zeta"),
+    ('η', "eta"),
+    ('θ', "theta"),
+    ('ι', "iota"),
+    ('κ', "kappa"),
+    ('λ', "lambda"),
+    ('μ', "mu"),
+    ('ν', "nu"),
+    ('ξ', "xi"),
+    ('π', "pi"),
+    ('ρ', "rho"),
+    ('σ', "sigma"),
+    ('τ', "tau"),
+    ('υ', "upsilon"),
+    ('φ', "phi"),
+    ('χ', "chi"),
+    ('ψ', "psi"),
+    ('ω', "omega"),
+    ('ϕ', "phi"),
+    ('ϑ', "vartheta"),
+    ('Γ', "Gamma"),
+    ('Δ', "Delta"),
+    ('Θ', "Theta"),
+    ('Λ', "Lambda"),
+    ('Ξ', "Xi"),
+    ('Π', "Pi"),
+    ('Σ', "Sigma"),
+    ('Φ', "Phi"),
+    ('Ψ', "Psi"),
+    ('Ω', "Omega"),
+    ('µ', "mu"),
+    ('ς', "varsigma"),
+    ('Υ', "Upsilon"),
+    ('ϵ', "epsilon"),
+    ('ϱ', "varrho"),
 ];
 
 /// One character of user text as LaTeX text-mode source.
@@ -228,7 +263,10 @@ mod tests {
         let cases = [
             ("100% & $5", "100\\% \\& \\$5"),
             ("a_b#c", "a\\_b\\#c"),
-            ("\\input{/etc/passwd}", "$\\backslash$input\\{/etc/passwd\\}"),
+            (
+                "\\input{/etc/passwd}",
+                "$\\backslash$input\\{/etc/passwd\\}",
+            ),
             ("~^", "\\~{}\\^{}"),
             ("<b>|", "$<$b$>$$|$"),
             ("a--b", "a-{}-{}b"),
@@ -247,15 +285,24 @@ mod tests {
         assert_eq!(latex("a\n b\n\n\n c", Lines::Paragraphs), "a \\\\\nb\n\nc");
         assert_eq!(latex("a\n b\n\n\n c", Lines::One), "a b c");
         assert_eq!(markdown("a\r\n\r\nb", Lines::Paragraphs), "a\n\nb");
-        assert_eq!(markdown("Find:\n1. q1''\n2. the reaction", Lines::Paragraphs), "Find:\\\n1\\. q1''\\\n2\\. the reaction");
-        assert_eq!(paragraphs("\n a \r\n b\n \n\nc\n"), vec![vec!["a".to_string(), "b".into()], vec!["c".into()]]);
+        assert_eq!(
+            markdown("Find:\n1. q1''\n2. the reaction", Lines::Paragraphs),
+            "Find:\\\n1\\. q1''\\\n2\\. the reaction"
+        );
+        assert_eq!(
+            paragraphs("\n a \r\n b\n \n\nc\n"),
+            vec![vec!["a".to_string(), "b".into()], vec!["c".into()]]
+        );
     }
 
     #[test]
     fn markdown_escapes_markup() {
         let cases = [
             ("<script>x</script>", "&lt;script&gt;x&lt;/script&gt;"),
-            ("{{ x }} 100% & $ # _ ~ ^", "\\{\\{ x \\}\\} 100% &amp; \\$ \\# \\_ \\~ \\^"),
+            (
+                "{{ x }} 100% & $ # _ ~ ^",
+                "\\{\\{ x \\}\\} 100% &amp; \\$ \\# \\_ \\~ \\^",
+            ),
             ("- item", "\\- item"),
             ("1. first", "1\\. first"),
             ("-2.5", "-2.5"),
@@ -270,6 +317,9 @@ mod tests {
 
     #[test]
     fn html_escapes_markup() {
-        assert_eq!(html("<script>alert('x') & \"y\"</script>"), "&lt;script&gt;alert(&#39;x&#39;) &amp; &quot;y&quot;&lt;/script&gt;");
+        assert_eq!(
+            html("<script>alert('x') & \"y\"</script>"),
+            "&lt;script&gt;alert(&#39;x&#39;) &amp; &quot;y&quot;&lt;/script&gt;"
+        );
     }
 }

@@ -23,7 +23,11 @@ pub struct MathError {
 
 impl fmt::Display for MathError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "cannot convert `{}` to MathML: {}", self.latex, self.message)
+        write!(
+            f,
+            "cannot convert `{}` to MathML: {}",
+            self.latex, self.message
+        )
     }
 }
 
@@ -43,18 +47,26 @@ pub enum Display {
 /// # Errors
 /// When the LaTeX does not parse; the message is the parser's.
 pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
-    let error = |message: String| MathError { latex: latex.to_string(), message };
+    let error = |message: String| MathError {
+        latex: latex.to_string(),
+        message,
+    };
     let storage = Storage::new();
     let events: Vec<_> = Parser::new(latex, &storage).collect();
     if let Some(Err(e)) = events.iter().find(|e| e.is_err()) {
         // The first line of the parser's message; the rest is a drawing of the input.
-        return Err(error(e.to_string().lines().next().unwrap_or_default().to_string()));
+        return Err(error(
+            e.to_string().lines().next().unwrap_or_default().to_string(),
+        ));
     }
     let display_mode = match display {
         Display::Inline => DisplayMode::Inline,
         Display::Block => DisplayMode::Block,
     };
-    let config = RenderConfig { display_mode, ..RenderConfig::default() };
+    let config = RenderConfig {
+        display_mode,
+        ..RenderConfig::default()
+    };
     let mut out = String::new();
     push_mathml(&mut out, events.into_iter(), config).map_err(|e| error(e.to_string()))?;
     // Our `mover`s are accents (`\hat`, `\dot`, `\ddot`): marked so, they sit close to the letter.
@@ -64,13 +76,34 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
 /// Converts LaTeX math to MathML; when it cannot, shows the LaTeX source as escaped code,
 /// so that one bad formula does not cost the student the whole page.
 pub fn to_mathml_or_source(latex: &str, display: Display) -> String {
-    to_mathml(latex, display).unwrap_or_else(|_| format!("<code class=\"tex\">{}</code>", escape::html(latex)))
+    to_mathml(latex, display)
+        .unwrap_or_else(|_| format!("<code class=\"tex\">{}</code>", escape::html(latex)))
 }
 
 /// The elements `pulldown-latex` writes, all presentation MathML.
 const ELEMENTS: [&str; 22] = [
-    "math", "mi", "mn", "mo", "ms", "mtext", "mspace", "mrow", "mfrac", "msqrt", "mroot", "msub",
-    "msup", "msubsup", "munder", "mover", "munderover", "mtable", "mtr", "mtd", "mstyle", "merror",
+    "math",
+    "mi",
+    "mn",
+    "mo",
+    "ms",
+    "mtext",
+    "mspace",
+    "mrow",
+    "mfrac",
+    "msqrt",
+    "mroot",
+    "msub",
+    "msup",
+    "msubsup",
+    "munder",
+    "mover",
+    "munderover",
+    "mtable",
+    "mtr",
+    "mtd",
+    "mstyle",
+    "merror",
 ];
 
 /// Keeps the tags of [`ELEMENTS`] (with attributes free of `<` and quotes balanced) and
@@ -102,7 +135,9 @@ fn allowed_tag(text: &str) -> Option<usize> {
     let inner = text.strip_prefix('<')?;
     let closing = inner.starts_with('/');
     let inner = inner.strip_prefix('/').unwrap_or(inner);
-    let name_length = inner.find(|c: char| !c.is_ascii_alphanumeric()).unwrap_or(inner.len());
+    let name_length = inner
+        .find(|c: char| !c.is_ascii_alphanumeric())
+        .unwrap_or(inner.len());
     if !ELEMENTS.contains(&&inner[..name_length]) {
         return None;
     }
@@ -117,12 +152,16 @@ fn allowed_tag(text: &str) -> Option<usize> {
 
 /// Whether `text` starts with a character reference such as `&amp;` or `&#x2F;`.
 fn is_entity(text: &str) -> bool {
-    let Some(end) = text.find(';') else { return false };
+    let Some(end) = text.find(';') else {
+        return false;
+    };
     let body = &text[1..end];
     !body.is_empty()
         && body.len() <= 10
         && (body.chars().all(|c| c.is_ascii_alphanumeric())
-            || body.strip_prefix('#').is_some_and(|n| n.chars().all(|c| c.is_ascii_alphanumeric())))
+            || body
+                .strip_prefix('#')
+                .is_some_and(|n| n.chars().all(|c| c.is_ascii_alphanumeric())))
 }
 
 #[cfg(test)]
@@ -134,23 +173,57 @@ mod tests {
         let mathml = to_mathml(latex, Display::Inline).unwrap_or_else(|e| panic!("{e}"));
         let mut rest = mathml.as_str();
         for fragment in fragments {
-            let at = rest.find(fragment).unwrap_or_else(|| panic!("`{fragment}` not in {mathml}"));
+            let at = rest
+                .find(fragment)
+                .unwrap_or_else(|| panic!("`{fragment}` not in {mathml}"));
             rest = &rest[at + fragment.len()..];
         }
     }
 
     #[test]
     fn our_latex_converts() {
-        check("\\ddot{q}_{1}", &["<msub><mover accent=\"true\">", "<mi>q</mi>", "¨", "</mover>", "<mn>1</mn>"]);
-        check("\\hat{\\mathbf{a}}_{x}", &["<msub><mover accent=\"true\">", "𝐚", "^", "<mi>x</mi>"]);
-        check("\\frac{L^{2} m}{12}", &["<mfrac>", "<msup><mi>L</mi>", "<mn>12</mn>", "</mfrac>"]);
-        check("\\left(\\dot{q}_{1} + 1\\right)", &["<mo stretchy=\"true\">(</mo>", "<mo>+</mo>", ")</mo>"]);
-        check("\\sin(q_{1}) \\cdot x \\times y \\quad z", &["<mi>sin</mi>", "⋅", "×", "<mspace", "<mi>z</mi>"]);
-        check("F^{O}_{x}", &["<msubsup><mi>F</mi>", "<mi>x</mi>", "<mi>O</mi>"]);
-        check("\\operatorname{atan2}\\left(a, b\\right)", &["<mi>atan2</mi>"]);
+        check(
+            "\\ddot{q}_{1}",
+            &[
+                "<msub><mover accent=\"true\">",
+                "<mi>q</mi>",
+                "¨",
+                "</mover>",
+                "<mn>1</mn>",
+            ],
+        );
+        check(
+            "\\hat{\\mathbf{a}}_{x}",
+            &["<msub><mover accent=\"true\">", "𝐚", "^", "<mi>x</mi>"],
+        );
+        check(
+            "\\frac{L^{2} m}{12}",
+            &["<mfrac>", "<msup><mi>L</mi>", "<mn>12</mn>", "</mfrac>"],
+        );
+        check(
+            "\\left(\\dot{q}_{1} + 1\\right)",
+            &["<mo stretchy=\"true\">(</mo>", "<mo>+</mo>", ")</mo>"],
+        );
+        check(
+            "\\sin(q_{1}) \\cdot x \\times y \\quad z",
+            &["<mi>sin</mi>", "⋅", "×", "<mspace", "<mi>z</mi>"],
+        );
+        check(
+            "F^{O}_{x}",
+            &["<msubsup><mi>F</mi>", "<mi>x</mi>", "<mi>O</mi>"],
+        );
+        check(
+            "\\operatorname{atan2}\\left(a, b\\right)",
+            &["<mi>atan2</mi>"],
+        );
         check(
             "\\begin{bmatrix} a & b \\\\ c & d \\end{bmatrix}",
-            &["[</mo><mtable", "<mtr><mtd><mi>a</mi></mtd><mtd><mi>b</mi></mtd></mtr>", "<mi>d</mi>", "]</mo>"],
+            &[
+                "[</mo><mtable",
+                "<mtr><mtd><mi>a</mi></mtd><mtd><mi>b</mi></mtd></mtr>",
+                "<mi>d</mi>",
+                "]</mo>",
+            ],
         );
     }
 
@@ -158,16 +231,34 @@ mod tests {
     fn bad_latex_is_an_error_and_falls_back_to_source() {
         assert!(to_mathml("\\frac{a}{", Display::Inline).is_err());
         let shown = to_mathml_or_source("\\input{x} <script>", Display::Block);
-        assert_eq!(shown, "<code class=\"tex\">\\input{x} &lt;script&gt;</code>");
+        assert_eq!(
+            shown,
+            "<code class=\"tex\">\\input{x} &lt;script&gt;</code>"
+        );
     }
 
     #[test]
     fn sanitizer_lets_only_mathml_through() {
-        assert_eq!(sanitize("<mo><</mo><mo>></mo>"), "<mo>&lt;</mo><mo>&gt;</mo>");
-        assert_eq!(sanitize("<mtext>a &amp; b & c</mtext>"), "<mtext>a &amp; b &amp; c</mtext>");
-        assert_eq!(sanitize("<script>x</script>"), "&lt;script&gt;x&lt;/script&gt;");
-        assert_eq!(sanitize("<mi onclick=\"x\">a</mi>"), "&lt;mi onclick=\"x\"&gt;a&lt;/mi&gt;".replace("&lt;/mi&gt;", "</mi>"));
-        assert_eq!(sanitize("<mspace width=\"1em\" />"), "<mspace width=\"1em\" />");
+        assert_eq!(
+            sanitize("<mo><</mo><mo>></mo>"),
+            "<mo>&lt;</mo><mo>&gt;</mo>"
+        );
+        assert_eq!(
+            sanitize("<mtext>a &amp; b & c</mtext>"),
+            "<mtext>a &amp; b &amp; c</mtext>"
+        );
+        assert_eq!(
+            sanitize("<script>x</script>"),
+            "&lt;script&gt;x&lt;/script&gt;"
+        );
+        assert_eq!(
+            sanitize("<mi onclick=\"x\">a</mi>"),
+            "&lt;mi onclick=\"x\"&gt;a&lt;/mi&gt;".replace("&lt;/mi&gt;", "</mi>")
+        );
+        assert_eq!(
+            sanitize("<mspace width=\"1em\" />"),
+            "<mspace width=\"1em\" />"
+        );
         let converted = to_mathml("a < b", Display::Inline).unwrap_or_default();
         assert!(converted.contains("<mo>&lt;</mo>"), "{converted}");
     }

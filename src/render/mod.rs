@@ -6,8 +6,8 @@
 //! can restyle a handout by passing a directory of replacements.
 
 pub mod build;
-pub mod derived;
 pub mod context;
+pub mod derived;
 pub mod escape;
 pub mod mathml;
 pub mod plot;
@@ -86,24 +86,39 @@ impl Format {
 /// # Errors
 /// When the replacement template cannot be read, does not parse, or fails to render; the
 /// error names the template and gives Tera's whole chain of causes.
-pub fn render(solution: &Solution, format: Format, templates: Option<&Path>, student: bool) -> Result<String, RenderError> {
+pub fn render(
+    solution: &Solution,
+    format: Format,
+    templates: Option<&Path>,
+    student: bool,
+) -> Result<String, RenderError> {
     let name = format.template_name();
-    let error = |message: String| RenderError { template: name.to_string(), message };
-    let override_path = templates.map(|dir| dir.join(name)).filter(|path| path.is_file());
+    let error = |message: String| RenderError {
+        template: name.to_string(),
+        message,
+    };
+    let override_path = templates
+        .map(|dir| dir.join(name))
+        .filter(|path| path.is_file());
     let (source, shown_name) = match &override_path {
         Some(path) => {
-            let source = std::fs::read_to_string(path).map_err(|e| error(format!("cannot read {}: {e}", path.display())))?;
+            let source = std::fs::read_to_string(path)
+                .map_err(|e| error(format!("cannot read {}: {e}", path.display())))?;
             (source, path.display().to_string())
         }
         None => (format.embedded().to_string(), name.to_string()),
     };
-    let error = |message: String| RenderError { template: shown_name.clone(), message };
+    let error = |message: String| RenderError {
+        template: shown_name.clone(),
+        message,
+    };
     let mut tera = tera::Tera::default();
     // The HTML template's name ends in `.tera`, so Tera's default (`.html` only) would not
     // escape it.
     tera.autoescape_on(vec![".html.tera"]);
     prepare::register_filters(&mut tera);
-    tera.add_raw_template(name, &source).map_err(|e| error(chain(&e)))?;
+    tera.add_raw_template(name, &source)
+        .map_err(|e| error(chain(&e)))?;
     let context = prepare::context(solution, format, student).map_err(|e| error(e.to_string()))?;
     tera.render(name, &context).map_err(|e| error(chain(&e)))
 }

@@ -42,7 +42,9 @@ pub enum PlotError {
 impl fmt::Display for PlotError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            PlotError::NoData { title } => write!(f, "plot `{title}`: there is no finite point to plot"),
+            PlotError::NoData { title } => {
+                write!(f, "plot `{title}`: there is no finite point to plot")
+            }
             PlotError::Drawing { title, message } => write!(f, "plot `{title}`: {message}"),
         }
     }
@@ -64,8 +66,13 @@ pub fn line_plot(
     y_label: &str,
     series: &[(String, Vec<(f64, f64)>)],
 ) -> Result<String, PlotError> {
-    let (x_range, y_range) = ranges(series).ok_or_else(|| PlotError::NoData { title: title.into() })?;
-    let drawing = |message: String| PlotError::Drawing { title: title.into(), message };
+    let (x_range, y_range) = ranges(series).ok_or_else(|| PlotError::NoData {
+        title: title.into(),
+    })?;
+    let drawing = |message: String| PlotError::Drawing {
+        title: title.into(),
+        message,
+    };
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
@@ -90,12 +97,17 @@ pub fn line_plot(
             .map_err(|e| drawing(e.to_string()))?;
         for (index, (name, points)) in series.iter().enumerate() {
             let colour = COLOURS[index % COLOURS.len()];
-            let finite = points.iter().copied().filter(|(x, y)| x.is_finite() && y.is_finite());
+            let finite = points
+                .iter()
+                .copied()
+                .filter(|(x, y)| x.is_finite() && y.is_finite());
             chart
                 .draw_series(LineSeries::new(finite, colour.stroke_width(2)))
                 .map_err(|e| drawing(e.to_string()))?
                 .label(name.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2)));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
         }
         chart
             .configure_series_labels()
@@ -112,15 +124,27 @@ pub fn line_plot(
 
 /// A tick label: [`fixed`], with round-off next to zero (`-2.2e-16`) shown as `0`.
 fn tick(value: f64, range: (f64, f64)) -> String {
-    let snapped = if value.abs() < 1e-9 * (range.1 - range.0) { 0.0 } else { value };
+    let snapped = if value.abs() < 1e-9 * (range.1 - range.0) {
+        0.0
+    } else {
+        value
+    };
     fixed(snapped)
 }
 
 /// The x and y ranges covering every finite point, y padded by 5 % so lines clear the
 /// frame; a flat range is widened so the axis has a length.
 fn ranges(series: &[(String, Vec<(f64, f64)>)]) -> Option<((f64, f64), (f64, f64))> {
-    let points = series.iter().flat_map(|(_, p)| p).filter(|(x, y)| x.is_finite() && y.is_finite());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    let points = series
+        .iter()
+        .flat_map(|(_, p)| p)
+        .filter(|(x, y)| x.is_finite() && y.is_finite());
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
     for &(x, y) in points {
         (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
     }
@@ -145,14 +169,23 @@ fn ranges(series: &[(String, Vec<(f64, f64)>)]) -> Option<((f64, f64), (f64, f64
 /// the last) and printed with [`fixed`] precision. Title, labels and series names are
 /// escaped as LaTeX text. Non-finite points are left out. The document needs
 /// `\usepackage{pgfplots}`.
-pub fn pgfplots(title: &str, x_label: &str, y_label: &str, series: &[(String, Vec<(f64, f64)>)]) -> String {
+pub fn pgfplots(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[(String, Vec<(f64, f64)>)],
+) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
     text.push_str(&format!("  title={{{}}},\n", escape_latex(title)));
     text.push_str(&format!("  xlabel={{{}}},\n", escape_latex(x_label)));
     text.push_str(&format!("  ylabel={{{}}},\n", escape_latex(y_label)));
     text.push_str("  width=12cm, height=7cm, grid=major,\n  legend pos=outer north east,\n]\n");
     for (name, points) in series {
-        let finite: Vec<(f64, f64)> = points.iter().copied().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
+        let finite: Vec<(f64, f64)> = points
+            .iter()
+            .copied()
+            .filter(|(x, y)| x.is_finite() && y.is_finite())
+            .collect();
         text.push_str("\\addplot+[mark=none] coordinates {\n");
         for (x, y) in thin(&finite, PGFPLOTS_MAX_POINTS) {
             text.push_str(&format!("  ({},{})\n", fixed(x), fixed(y)));
@@ -198,7 +231,10 @@ mod tests {
     use super::*;
 
     fn sine() -> Vec<(String, Vec<(f64, f64)>)> {
-        let points: Vec<(f64, f64)> = (0..=500).map(|i| i as f64 * 0.01).map(|t| (t, (3.0 * t).sin())).collect();
+        let points: Vec<(f64, f64)> = (0..=500)
+            .map(|i| i as f64 * 0.01)
+            .map(|t| (t, (3.0 * t).sin()))
+            .collect();
         let cosine: Vec<(f64, f64)> = points.iter().map(|(t, _)| (*t, (3.0 * t).cos())).collect();
         vec![("q1".to_string(), points), ("q_2".to_string(), cosine)]
     }
@@ -211,7 +247,14 @@ mod tests {
         assert!(first.starts_with("<svg"), "{}", &first[..60]);
         assert!(first.trim_end().ends_with("</svg>"));
         assert!(!first.contains("e-16"), "round-off in a tick label");
-        for text in ["\nCoordinates\n", "\nt (s)\n", "\nq1\n", "\nq_2\n", "\n0\n", "<polyline"] {
+        for text in [
+            "\nCoordinates\n",
+            "\nt (s)\n",
+            "\nq1\n",
+            "\nq_2\n",
+            "\n0\n",
+            "<polyline",
+        ] {
             assert!(first.contains(text), "missing {text}");
         }
     }
@@ -219,7 +262,10 @@ mod tests {
     #[test]
     fn svg_of_nothing_is_an_error() {
         let empty = vec![("q1".to_string(), vec![(f64::NAN, 1.0)])];
-        assert!(matches!(line_plot("Empty", "t", "q", &empty), Err(PlotError::NoData { .. })));
+        assert!(matches!(
+            line_plot("Empty", "t", "q", &empty),
+            Err(PlotError::NoData { .. })
+        ));
         // A flat line still gets an axis.
         let flat = vec![("q1".to_string(), vec![(0.0, 2.0), (1.0, 2.0)])];
         assert!(line_plot("Flat", "t", "q", &flat).is_ok());
@@ -242,7 +288,10 @@ mod tests {
     #[test]
     fn thinning_keeps_ends() {
         let points: Vec<(f64, f64)> = (0..10).map(|i| (i as f64, 0.0)).collect();
-        assert_eq!(thin(&points, 4), vec![(0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (9.0, 0.0)]);
+        assert_eq!(
+            thin(&points, 4),
+            vec![(0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (9.0, 0.0)]
+        );
         assert_eq!(thin(&points, 20).len(), 10);
         assert_eq!(thin(&points, 1), vec![(0.0, 0.0), (9.0, 0.0)]);
     }

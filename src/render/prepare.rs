@@ -14,14 +14,25 @@ use std::collections::HashMap;
 ///
 /// # Errors
 /// Only if the solution cannot be serialized, which plain strings and numbers always can.
-pub fn context(solution: &Solution, format: Format, student: bool) -> Result<tera::Context, tera::Error> {
+pub fn context(
+    solution: &Solution,
+    format: Format,
+    student: bool,
+) -> Result<tera::Context, tera::Error> {
     let mut value = serde_json::to_value(solution).map_err(tera::Error::json)?;
     walk(&mut value, "", format);
     if let Value::Object(map) = &mut value {
         // The statement as paragraphs of lines, for formats that mark paragraphs up.
-        let paragraphs = solution.statement.as_deref().map(escape::paragraphs).unwrap_or_default();
+        let paragraphs = solution
+            .statement
+            .as_deref()
+            .map(escape::paragraphs)
+            .unwrap_or_default();
         let line = |text: &String| Value::String(string(text, "statement_line", format));
-        let paragraphs = paragraphs.iter().map(|lines| Value::Array(lines.iter().map(line).collect())).collect();
+        let paragraphs = paragraphs
+            .iter()
+            .map(|lines| Value::Array(lines.iter().map(line).collect()))
+            .collect();
         map.insert("statement_paragraphs".into(), Value::Array(paragraphs));
         map.insert("student".into(), Value::Bool(student));
         map.insert("format".into(), Value::String(format.extension().into()));
@@ -53,7 +64,11 @@ fn string(text: &str, key: &str, format: Format) -> String {
         };
     }
     if key.ends_with("_latex") {
-        return if format == Format::Latex { text.to_string() } else { String::new() };
+        return if format == Format::Latex {
+            text.to_string()
+        } else {
+            String::new()
+        };
     }
     if key.ends_with("_svg") {
         return if format == Format::Html && !text.is_empty() {
@@ -62,7 +77,11 @@ fn string(text: &str, key: &str, format: Format) -> String {
             String::new()
         };
     }
-    let lines = if key == "statement" { Lines::Paragraphs } else { Lines::One };
+    let lines = if key == "statement" {
+        Lines::Paragraphs
+    } else {
+        Lines::One
+    };
     match format {
         Format::Latex if is_number(text) => latex_number(text),
         Format::Latex => escape::latex(text, lines),
@@ -76,7 +95,10 @@ fn string(text: &str, key: &str, format: Format) -> String {
 /// Whether `text` is a number as [`crate::numeric::format::fixed`] writes it.
 fn is_number(text: &str) -> bool {
     matches!(text, "NaN" | "inf" | "-inf")
-        || (text.parse::<f64>().is_ok() && text.chars().all(|c| c.is_ascii_digit() || "+-.e".contains(c)))
+        || (text.parse::<f64>().is_ok()
+            && text
+                .chars()
+                .all(|c| c.is_ascii_digit() || "+-.e".contains(c)))
 }
 
 /// A number in math mode, so that `-` is a minus sign and `1e-9` is `1 \times 10^{-9}`.
@@ -117,7 +139,11 @@ fn base64(bytes: &[u8]) -> String {
     const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for chunk in bytes.chunks(3) {
-        let b = [chunk[0], chunk.get(1).copied().unwrap_or(0), chunk.get(2).copied().unwrap_or(0)];
+        let b = [
+            chunk[0],
+            chunk.get(1).copied().unwrap_or(0),
+            chunk.get(2).copied().unwrap_or(0),
+        ];
         let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
         for i in 0..4 {
             if i <= chunk.len() {
@@ -136,21 +162,31 @@ fn base64(bytes: &[u8]) -> String {
 pub fn register_filters(tera: &mut tera::Tera) {
     tera.register_filter("mathml", |value: &Value, args: &HashMap<String, Value>| {
         let latex = tera::try_get_value!("mathml", "value", String, value);
-        let block = args.get("display").and_then(Value::as_bool).unwrap_or(false);
-        let display = if block { Display::Block } else { Display::Inline };
+        let block = args
+            .get("display")
+            .and_then(Value::as_bool)
+            .unwrap_or(false);
+        let display = if block {
+            Display::Block
+        } else {
+            Display::Inline
+        };
         Ok(Value::String(mathml::to_mathml_or_source(&latex, display)))
     });
-    tera.register_filter("tex_display", |value: &Value, args: &HashMap<String, Value>| {
-        let latex = tera::try_get_value!("tex_display", "value", String, value);
-        let width = args.get("width").and_then(Value::as_u64).unwrap_or(70) as usize;
-        let lines = break_lines(&latex, width);
-        // One line goes in `\[…\]`: `multline*` would stretch its spaces to the full width.
-        Ok(Value::String(if lines.contains(" \\\\ ") {
-            format!("\\begin{{multline*}}\n{lines}\n\\end{{multline*}}")
-        } else {
-            format!("\\[\n{lines}\n\\]")
-        }))
-    });
+    tera.register_filter(
+        "tex_display",
+        |value: &Value, args: &HashMap<String, Value>| {
+            let latex = tera::try_get_value!("tex_display", "value", String, value);
+            let width = args.get("width").and_then(Value::as_u64).unwrap_or(70) as usize;
+            let lines = break_lines(&latex, width);
+            // One line goes in `\[…\]`: `multline*` would stretch its spaces to the full width.
+            Ok(Value::String(if lines.contains(" \\\\ ") {
+                format!("\\begin{{multline*}}\n{lines}\n\\end{{multline*}}")
+            } else {
+                format!("\\[\n{lines}\n\\]")
+            }))
+        },
+    );
 }
 
 /// Breaks LaTeX math before top-level `+`, `-` and `=` (outside braces, `\\left…\\right` and
@@ -164,12 +200,18 @@ pub fn break_lines(latex: &str, width: usize) -> String {
     let mut i = 0;
     while i < bytes.len() {
         let rest = &latex[i..];
-        if let Some(length) = ["\\left", "\\begin"].iter().find_map(|c| command_at(rest, c)) {
+        if let Some(length) = ["\\left", "\\begin"]
+            .iter()
+            .find_map(|c| command_at(rest, c))
+        {
             depth += 1;
             i += length;
             continue;
         }
-        if let Some(length) = ["\\right", "\\end"].iter().find_map(|c| command_at(rest, c)) {
+        if let Some(length) = ["\\right", "\\end"]
+            .iter()
+            .find_map(|c| command_at(rest, c))
+        {
             depth -= 1;
             i += length;
             continue;
@@ -209,8 +251,21 @@ pub fn break_lines(latex: &str, width: usize) -> String {
 /// (`\\frac`, `\\mathbf`, `\\left`) and grouping count nothing, other commands one.
 fn printed_width(latex: &str) -> usize {
     const SILENT: [&str; 15] = [
-        "left", "right", "frac", "mathbf", "boldsymbol", "mathrm", "hat", "dot", "ddot", "text", "begin",
-        "end", "operatorname", "quad", "displaystyle",
+        "left",
+        "right",
+        "frac",
+        "mathbf",
+        "boldsymbol",
+        "mathrm",
+        "hat",
+        "dot",
+        "ddot",
+        "text",
+        "begin",
+        "end",
+        "operatorname",
+        "quad",
+        "displaystyle",
     ];
     let mut width = 0;
     let mut chars = latex.chars().peekable();
@@ -248,7 +303,15 @@ mod tests {
 
     #[test]
     fn base64_matches_the_rfc_4648_vectors() {
-        let cases = [("", ""), ("f", "Zg=="), ("fo", "Zm8="), ("foo", "Zm9v"), ("foob", "Zm9vYg=="), ("fooba", "Zm9vYmE="), ("foobar", "Zm9vYmFy")];
+        let cases = [
+            ("", ""),
+            ("f", "Zg=="),
+            ("fo", "Zm8="),
+            ("foo", "Zm9v"),
+            ("foob", "Zm9vYg=="),
+            ("fooba", "Zm9vYmE="),
+            ("foobar", "Zm9vYmFy"),
+        ];
         for (input, expected) in cases {
             assert_eq!(base64(input.as_bytes()), expected);
         }
@@ -258,17 +321,29 @@ mod tests {
     fn numbers_become_math_in_latex() {
         assert_eq!(string("-12.5", "value", Format::Latex), "$-12.5$");
         assert_eq!(string("1e-9", "value", Format::Latex), "$10^{-9}$");
-        assert_eq!(string("-2.5e7", "value", Format::Latex), "$-2.5 \\times 10^{7}$");
+        assert_eq!(
+            string("-2.5e7", "value", Format::Latex),
+            "$-2.5 \\times 10^{7}$"
+        );
         assert_eq!(string("1-2", "value", Format::Latex), "1-{}2");
     }
 
     #[test]
     fn fields_are_treated_by_name() {
         assert_eq!(string("a_b", "description", Format::Latex), "a\\_b");
-        assert_eq!(string("\\left|x\\right|", "value_tex", Format::Markdown), "\\left\\vert x\\right\\vert ");
-        assert_eq!(string("\\frac{a}{b}", "value_tex", Format::Latex), "\\frac{a}{b}");
+        assert_eq!(
+            string("\\left|x\\right|", "value_tex", Format::Markdown),
+            "\\left\\vert x\\right\\vert "
+        );
+        assert_eq!(
+            string("\\frac{a}{b}", "value_tex", Format::Latex),
+            "\\frac{a}{b}"
+        );
         assert_eq!(string("\\draw", "pgfplots_latex", Format::Html), "");
-        assert_eq!(string("<svg/>", "image_svg", Format::Html), "data:image/svg+xml;base64,PHN2Zy8+");
+        assert_eq!(
+            string("<svg/>", "image_svg", Format::Html),
+            "data:image/svg+xml;base64,PHN2Zy8+"
+        );
         assert_eq!(string("a b.svg", "svg_file", Format::Markdown), "a%20b.svg");
         assert_eq!(string("<b>", "title", Format::Html), "<b>");
     }
@@ -277,12 +352,24 @@ mod tests {
     fn long_math_breaks_only_at_top_level() {
         let latex = "aaaaaaa + bbbbbbb + ccccccc = 0";
         assert_eq!(break_lines(latex, 1000), latex);
-        assert_eq!(break_lines(latex, 10), "aaaaaaa \\\\ + bbbbbbb \\\\ + ccccccc = 0");
+        assert_eq!(
+            break_lines(latex, 10),
+            "aaaaaaa \\\\ + bbbbbbb \\\\ + ccccccc = 0"
+        );
         let grouped = "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) + {ddddddd - eeeeeee} = 0";
-        assert_eq!(break_lines(grouped, 10), "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) \\\\ + {ddddddd - eeeeeee} = 0");
+        assert_eq!(
+            break_lines(grouped, 10),
+            "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) \\\\ + {ddddddd - eeeeeee} = 0"
+        );
         let matrix = "\\begin{bmatrix} aaaaaaa - bbbbbbb \\end{bmatrix}";
         assert_eq!(break_lines(matrix, 3), matrix);
-        assert_eq!(break_lines("a \\rightarrow b + cccccccc", 1), "a \\rightarrow b \\\\ + cccccccc");
-        assert_eq!(printed_width("\\frac{m L^{2}}{12} \\hat{\\mathbf{n}}_{z}"), 7);
+        assert_eq!(
+            break_lines("a \\rightarrow b + cccccccc", 1),
+            "a \\rightarrow b \\\\ + cccccccc"
+        );
+        assert_eq!(
+            printed_width("\\frac{m L^{2}}{12} \\hat{\\mathbf{n}}_{z}"),
+            7
+        );
     }
 }

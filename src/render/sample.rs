@@ -62,7 +62,13 @@ pub fn sample() -> Solution {
 fn frames() -> Vec<Frame> {
     let triad = |u: &str| format!("{u}_{{x}}, {u}_{{y}}, {u}_{{z}}");
     vec![
-        Frame { name: s("N"), frame_tex: triad(N), fixed_in: s("N"), parent: s(""), orientation_tex: s("") },
+        Frame {
+            name: s("N"),
+            frame_tex: triad(N),
+            fixed_in: s("N"),
+            parent: s(""),
+            orientation_tex: s(""),
+        },
         Frame {
             name: s("A"),
             frame_tex: triad(A),
@@ -93,19 +99,38 @@ fn coordinate(name: &str, rate: &str, description: &str, joint: &str, initial: &
 }
 
 fn constant(name: &str, value: &str, unit: &str, description: &str) -> Constant {
-    Constant { name_tex: s(name), value: s(value), unit: s(unit), description: s(description) }
+    Constant {
+        name_tex: s(name),
+        value: s(value),
+        unit: s(unit),
+        description: s(description),
+    }
 }
 
 fn value(name: &str, value: &str, unit: &str) -> InitialValue {
-    InitialValue { name_tex: s(name), value: s(value), unit: s(unit) }
+    InitialValue {
+        name_tex: s(name),
+        value: s(value),
+        unit: s(unit),
+    }
 }
 
 fn force(label: &str, vector: String, point: &str) -> Force {
-    Force { label: s(label), vector_tex: vector, point_tex: s(point) }
+    Force {
+        label: s(label),
+        vector_tex: vector,
+        point_tex: s(point),
+    }
 }
 
 fn free_bodies() -> Vec<FreeBody> {
-    let gravity = |body: &str| force(&format!("gravity on {body}"), format!("-m g {N}_{{y}}"), &format!("{body}^{{*}}"));
+    let gravity = |body: &str| {
+        force(
+            &format!("gravity on {body}"),
+            format!("-m g {N}_{{y}}"),
+            &format!("{body}^{{*}}"),
+        )
+    };
     let inertia = |body: &str, alpha: &str| {
         vec![
             force(
@@ -113,21 +138,37 @@ fn free_bodies() -> Vec<FreeBody> {
                 format!("-m\\,{{}}^{{N}}\\mathbf{{a}}^{{{body}^{{*}}}}"),
                 &format!("{body}^{{*}}"),
             ),
-            force(&format!("inertia couple of {body}"), format!("-\\frac{{m L^{{2}}}}{{12}} {alpha} {N}_{{z}}"), ""),
+            force(
+                &format!("inertia couple of {body}"),
+                format!("-\\frac{{m L^{{2}}}}{{12}} {alpha} {N}_{{z}}"),
+                "",
+            ),
         ]
     };
     vec![
         FreeBody {
             name: s("A+B"),
             bodies: s("A, B"),
-            contact: vec![force("pin O", format!("F^{{O}}_{{x}} {N}_{{x}} + F^{{O}}_{{y}} {N}_{{y}}"), "O")],
+            contact: vec![force(
+                "pin O",
+                format!("F^{{O}}_{{x}} {N}_{{x}} + F^{{O}}_{{y}} {N}_{{y}}"),
+                "O",
+            )],
             distance: vec![gravity("A"), gravity("B")],
-            inertia: [inertia("A", "\\ddot{q}_{1}"), inertia("B", "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)")].concat(),
+            inertia: [
+                inertia("A", "\\ddot{q}_{1}"),
+                inertia("B", "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)"),
+            ]
+            .concat(),
         },
         FreeBody {
             name: s("B"),
             bodies: s("B"),
-            contact: vec![force("pin P", format!("F^{{P}}_{{x}} {A}_{{x}} + F^{{P}}_{{y}} {A}_{{y}}"), "P")],
+            contact: vec![force(
+                "pin P",
+                format!("F^{{P}}_{{x}} {A}_{{x}} + F^{{P}}_{{y}} {A}_{{y}}"),
+                "P",
+            )],
             distance: vec![gravity("B")],
             inertia: inertia("B", "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)"),
         },
@@ -144,10 +185,25 @@ fn plan() -> Plan {
     let accelerations = "\\ddot{q}_{1}, \\ddot{q}_{2}";
     Plan {
         rows: vec![
-            row("A+B", "moments about O", format!("{N}_{{z}}"), accelerations),
+            row(
+                "A+B",
+                "moments about O",
+                format!("{N}_{{z}}"),
+                accelerations,
+            ),
             row("B", "moments about P", format!("{A}_{{z}}"), accelerations),
-            row("A+B", "forces", format!("{N}_{{x}}"), "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}"),
-            row("A+B", "forces", format!("{N}_{{y}}"), "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}"),
+            row(
+                "A+B",
+                "forces",
+                format!("{N}_{{x}}"),
+                "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}",
+            ),
+            row(
+                "A+B",
+                "forces",
+                format!("{N}_{{y}}"),
+                "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}",
+            ),
         ],
         rejected: vec![Rejected {
             free_body: s("A"),
@@ -190,8 +246,14 @@ fn kinematics() -> Vec<Kinematics> {
 }
 
 fn equations() -> Vec<Equation> {
-    let loads = |body: &str| format!("\\left(-m g {N}_{{y}} - m\\,{{}}^{{N}}\\mathbf{{a}}^{{{body}^{{*}}}}\\right)");
-    let sum_forces = format!("F^{{O}}_{{x}} {N}_{{x}} + F^{{O}}_{{y}} {N}_{{y}} + {} + {}", loads("A"), loads("B"));
+    let loads = |body: &str| {
+        format!("\\left(-m g {N}_{{y}} - m\\,{{}}^{{N}}\\mathbf{{a}}^{{{body}^{{*}}}}\\right)")
+    };
+    let sum_forces = format!(
+        "F^{{O}}_{{x}} {N}_{{x}} + F^{{O}}_{{y}} {N}_{{y}} + {} + {}",
+        loads("A"),
+        loads("B")
+    );
     let c1 = "\\cos(q_{1})";
     let s1 = "\\sin(q_{1})";
     let c12 = "\\cos\\left(q_{1} + q_{2}\\right)";
@@ -245,10 +307,30 @@ fn equations() -> Vec<Equation> {
 
 fn matrix() -> MatrixForm {
     let a = [
-        ["m L^{2} \\left(\\frac{5}{3} + \\cos(q_{2})\\right)", "m L^{2} \\left(\\frac{1}{3} + \\frac{\\cos(q_{2})}{2}\\right)", "0", "0"],
-        ["m L^{2} \\left(\\frac{1}{3} + \\frac{\\cos(q_{2})}{2}\\right)", "\\frac{m L^{2}}{3}", "0", "0"],
-        ["-\\frac{m L}{2} \\left(3 \\cos(q_{1}) + \\cos\\left(q_{1} + q_{2}\\right)\\right)", "-\\frac{m L}{2} \\cos\\left(q_{1} + q_{2}\\right)", "1", "0"],
-        ["-\\frac{m L}{2} \\left(3 \\sin(q_{1}) + \\sin\\left(q_{1} + q_{2}\\right)\\right)", "-\\frac{m L}{2} \\sin\\left(q_{1} + q_{2}\\right)", "0", "1"],
+        [
+            "m L^{2} \\left(\\frac{5}{3} + \\cos(q_{2})\\right)",
+            "m L^{2} \\left(\\frac{1}{3} + \\frac{\\cos(q_{2})}{2}\\right)",
+            "0",
+            "0",
+        ],
+        [
+            "m L^{2} \\left(\\frac{1}{3} + \\frac{\\cos(q_{2})}{2}\\right)",
+            "\\frac{m L^{2}}{3}",
+            "0",
+            "0",
+        ],
+        [
+            "-\\frac{m L}{2} \\left(3 \\cos(q_{1}) + \\cos\\left(q_{1} + q_{2}\\right)\\right)",
+            "-\\frac{m L}{2} \\cos\\left(q_{1} + q_{2}\\right)",
+            "1",
+            "0",
+        ],
+        [
+            "-\\frac{m L}{2} \\left(3 \\sin(q_{1}) + \\sin\\left(q_{1} + q_{2}\\right)\\right)",
+            "-\\frac{m L}{2} \\sin\\left(q_{1} + q_{2}\\right)",
+            "0",
+            "1",
+        ],
     ];
     let b = [
         "\\frac{m L^{2}}{2} \\sin(q_{2}) \\left(2 \\dot{q}_{1} \\dot{q}_{2} + \\dot{q}_{2}^{2}\\right) - \\frac{m g L}{2} \\left(3 \\sin(q_{1}) + \\sin\\left(q_{1} + q_{2}\\right)\\right)",
@@ -271,8 +353,18 @@ fn simulation() -> Simulation {
     Simulation {
         settings: s("5 s, output every 0.01 s, tolerance 1e-9"),
         checks: vec![
-            Check { name: s("energy drift (relative)"), value: s("3.1e-10"), tolerance: s("1e-6"), passed: true },
-            Check { name: s("agreement with Kane's method"), value: s("4.4e-15"), tolerance: s("1e-9"), passed: true },
+            Check {
+                name: s("energy drift (relative)"),
+                value: s("3.1e-10"),
+                tolerance: s("1e-6"),
+                passed: true,
+            },
+            Check {
+                name: s("agreement with Kane's method"),
+                value: s("4.4e-15"),
+                tolerance: s("1e-9"),
+                passed: true,
+            },
             Check {
                 name: s("small-oscillation period, slow mode (s)"),
                 value: s("1.65772"),
@@ -281,10 +373,24 @@ fn simulation() -> Simulation {
             },
         ],
         plots: vec![
-            plot("coordinates", "The coordinates against time", "q_{1}", "q_{2}", "rad"),
-            plot("energy", "Kinetic, potential and total energy against time", "T", "V", "J"),
+            plot(
+                "coordinates",
+                "The coordinates against time",
+                "q_{1}",
+                "q_{2}",
+                "rad",
+            ),
+            plot(
+                "energy",
+                "Kinetic, potential and total energy against time",
+                "T",
+                "V",
+                "J",
+            ),
         ],
-        note: s("Every check passed: the equations conserve energy and agree with the second method."),
+        note: s(
+            "Every check passed: the equations conserve energy and agree with the second method.",
+        ),
     }
 }
 
@@ -299,5 +405,11 @@ fn plot(kind: &str, title: &str, first: &str, second: &str, unit: &str) -> Plot 
          \\addplot[red, no marks] coordinates {{(0,0) (0.5,0.3) (1,-0.2) (1.5,-0.3) (2,0.1)}};\n\\addlegendentry{{${second}$}}\n\
          \\end{{axis}}\n\\end{{tikzpicture}}"
     );
-    Plot { kind: s(kind), title: s(title), svg_file: format!("{kind}.svg"), image_svg: s(svg), pgfplots_latex: pgfplots }
+    Plot {
+        kind: s(kind),
+        title: s(title),
+        svg_file: format!("{kind}.svg"),
+        image_svg: s(svg),
+        pgfplots_latex: pgfplots,
+    }
 }

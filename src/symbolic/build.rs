@@ -61,7 +61,10 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
     let mut visit = |factor: &Expr, coefficient: &mut Number| match factor.node() {
         Node::Num(n) => *coefficient = coefficient.mul(*n),
         Node::Add(_) => sums.push(factor.clone()),
-        Node::Pow(base, exponent) => powers.entry(base.clone()).or_default().push(exponent.clone()),
+        Node::Pow(base, exponent) => powers
+            .entry(base.clone())
+            .or_default()
+            .push(exponent.clone()),
         _ => powers.entry(factor.clone()).or_default().push(Expr::one()),
     };
     for factor in factors {
@@ -80,7 +83,11 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
         if exponent.is_zero() {
             continue;
         }
-        let factor = if exponent.is_one() { base } else { pow(base, exponent) };
+        let factor = if exponent.is_one() {
+            base
+        } else {
+            pow(base, exponent)
+        };
         match factor.node() {
             Node::Num(n) => coefficient = coefficient.mul(*n),
             Node::Sym(_) | Node::Func(..) | Node::Pow(..) => rebuilt.push(factor),
@@ -179,9 +186,13 @@ pub fn func(f: Func, args: Vec<Expr>) -> Expr {
         let arg = &args[0];
         if arg.is_zero() {
             match f {
-                Func::Sin | Func::Tan | Func::Asin | Func::Atan | Func::Sqrt | Func::Abs | Func::Sign => {
-                    return Expr::zero()
-                }
+                Func::Sin
+                | Func::Tan
+                | Func::Asin
+                | Func::Atan
+                | Func::Sqrt
+                | Func::Abs
+                | Func::Sign => return Expr::zero(),
                 Func::Cos | Func::Exp => return Expr::one(),
                 _ => {}
             }
@@ -189,7 +200,10 @@ pub fn func(f: Func, args: Vec<Expr>) -> Expr {
         if f == Func::Sqrt {
             return pow(arg.clone(), Expr::ratio(1, 2));
         }
-        let odd = matches!(f, Func::Sin | Func::Tan | Func::Asin | Func::Atan | Func::Sign);
+        let odd = matches!(
+            f,
+            Func::Sin | Func::Tan | Func::Asin | Func::Atan | Func::Sign
+        );
         if (odd || f == Func::Cos || f == Func::Abs) && has_negative_sign(arg) {
             let flipped = func(f, vec![-arg.clone()]);
             return if odd { -flipped } else { flipped };
@@ -298,7 +312,10 @@ mod tests {
         let rhs = x() * x() - y() * y();
         assert_eq!(lhs, rhs);
         assert_eq!(x() / x(), Expr::one());
-        assert_eq!(pow(x() + y(), Expr::int(2)), x() * x() + Expr::int(2) * x() * y() + y() * y());
+        assert_eq!(
+            pow(x() + y(), Expr::int(2)),
+            x() * x() + Expr::int(2) * x() * y() + y() * y()
+        );
     }
 
     #[test]

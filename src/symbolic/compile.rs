@@ -40,7 +40,11 @@ impl Program {
     /// Symbols not among the inputs evaluate to NaN, except `pi`.
     pub fn compile(inputs: &[Symbol], outputs: &[Expr]) -> Program {
         let mut c = Compiler {
-            program: Program { inputs: inputs.to_vec(), instructions: Vec::new(), outputs: Vec::new() },
+            program: Program {
+                inputs: inputs.to_vec(),
+                instructions: Vec::new(),
+                outputs: Vec::new(),
+            },
             by_pointer: HashMap::new(),
             by_value: HashMap::new(),
             constant_slots: HashMap::new(),
@@ -53,7 +57,10 @@ impl Program {
 
     /// The number of arithmetic operations and function calls in one run.
     pub fn operation_count(&self) -> usize {
-        self.instructions.iter().filter(|i| !matches!(i, Instr::Const(_))).count()
+        self.instructions
+            .iter()
+            .filter(|i| !matches!(i, Instr::Const(_)))
+            .count()
     }
 
     /// The input symbols, in the order `run` reads them.
@@ -130,16 +137,26 @@ impl Compiler {
             Node::Num(n) => self.constant_slot(n.to_f64()),
             Node::Sym(s) => match self.program.inputs.iter().position(|i| i == s) {
                 Some(index) => index,
-                None if matches!(s, Symbol::Const(n) if &**n == "pi") => self.constant_slot(std::f64::consts::PI),
+                None if matches!(s, Symbol::Const(n) if &**n == "pi") => {
+                    self.constant_slot(std::f64::consts::PI)
+                }
                 None => self.constant_slot(f64::NAN),
             },
             Node::Add(terms) => {
                 let mut slots: Vec<(bool, usize)> = terms.iter().map(|t| self.signed(t)).collect();
                 slots.sort_by_key(|(negative, _)| *negative);
                 let (first_negative, first) = slots[0];
-                let mut acc = if first_negative { self.emit(Instr::Neg(first)) } else { first };
+                let mut acc = if first_negative {
+                    self.emit(Instr::Neg(first))
+                } else {
+                    first
+                };
                 for &(negative, slot) in &slots[1..] {
-                    let operand = if negative { self.emit(Instr::Neg(slot)) } else { slot };
+                    let operand = if negative {
+                        self.emit(Instr::Neg(slot))
+                    } else {
+                        slot
+                    };
                     acc = self.emit(Instr::Add(acc, operand));
                 }
                 acc
@@ -197,7 +214,11 @@ mod tests {
         let q = Expr::coord("q", 0);
         let l = Expr::constant("L");
         let shared = sin(q.clone()) * l.clone();
-        let outputs = [shared.clone() + cos(q.clone()), shared.clone() * Expr::int(3) - Expr::ratio(1, 2), pow_test(&q)];
+        let outputs = [
+            shared.clone() + cos(q.clone()),
+            shared.clone() * Expr::int(3) - Expr::ratio(1, 2),
+            pow_test(&q),
+        ];
         let inputs = [Symbol::Coord("q".into(), 0), Symbol::Const("L".into())];
         let program = Program::compile(&inputs, &outputs);
         let mut values = Values::new();
@@ -207,7 +228,11 @@ mod tests {
         for (e, g) in outputs.iter().zip(&got) {
             assert!((eval(e, &values) - g).abs() < 1e-14);
         }
-        let sins = program.instructions.iter().filter(|i| matches!(i, Instr::Func(Func::Sin, ..))).count();
+        let sins = program
+            .instructions
+            .iter()
+            .filter(|i| matches!(i, Instr::Func(Func::Sin, ..)))
+            .count();
         assert_eq!(sins, 1);
     }
 

@@ -18,7 +18,11 @@ pub struct DiffError {
 
 impl fmt::Display for DiffError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "cannot differentiate `{}`: {}", self.expression, self.reason)
+        write!(
+            f,
+            "cannot differentiate `{}`: {}",
+            self.expression, self.reason
+        )
     }
 }
 
@@ -29,7 +33,9 @@ impl fmt::Display for DiffError {
 /// something that changes, or a second rate.
 pub fn time_derivative(e: &Expr) -> Result<Expr, DiffError> {
     derivative(e, &|s| match s {
-        Symbol::Coord(name, order) if *order < 2 => Ok(Expr::sym(Symbol::Coord(name.clone(), order + 1))),
+        Symbol::Coord(name, order) if *order < 2 => {
+            Ok(Expr::sym(Symbol::Coord(name.clone(), order + 1)))
+        }
         Symbol::Coord(name, _) => Err(format!("`{name}''` has no derivative here")),
         Symbol::Time => Ok(Expr::one()),
         _ => Ok(Expr::zero()),
@@ -41,15 +47,30 @@ pub fn time_derivative(e: &Expr) -> Result<Expr, DiffError> {
 /// # Errors
 /// As for [`time_derivative`].
 pub fn partial(e: &Expr, symbol: &Symbol) -> Result<Expr, DiffError> {
-    derivative(e, &|s| Ok(if s == symbol { Expr::one() } else { Expr::zero() }))
+    derivative(e, &|s| {
+        Ok(if s == symbol {
+            Expr::one()
+        } else {
+            Expr::zero()
+        })
+    })
 }
 
-fn derivative(e: &Expr, of_symbol: &dyn Fn(&Symbol) -> Result<Expr, String>) -> Result<Expr, DiffError> {
-    let fail = |reason: String| DiffError { expression: e.to_string(), reason };
+fn derivative(
+    e: &Expr,
+    of_symbol: &dyn Fn(&Symbol) -> Result<Expr, String>,
+) -> Result<Expr, DiffError> {
+    let fail = |reason: String| DiffError {
+        expression: e.to_string(),
+        reason,
+    };
     Ok(match e.node() {
         Node::Num(_) => Expr::zero(),
         Node::Sym(s) => of_symbol(s).map_err(fail)?,
-        Node::Add(terms) => add(terms.iter().map(|t| derivative(t, of_symbol)).collect::<Result<Vec<_>, _>>()?),
+        Node::Add(terms) => add(terms
+            .iter()
+            .map(|t| derivative(t, of_symbol))
+            .collect::<Result<Vec<_>, _>>()?),
         Node::Mul(factors) => {
             let mut terms = Vec::with_capacity(factors.len());
             for (i, factor) in factors.iter().enumerate() {
@@ -66,7 +87,11 @@ fn derivative(e: &Expr, of_symbol: &dyn Fn(&Symbol) -> Result<Expr, String>) -> 
         Node::Pow(base, exponent) => {
             let db = derivative(base, of_symbol)?;
             let de = derivative(exponent, of_symbol)?;
-            let power_rule = mul([exponent.clone(), pow(base.clone(), exponent - &Expr::one()), db]);
+            let power_rule = mul([
+                exponent.clone(),
+                pow(base.clone(), exponent - &Expr::one()),
+                db,
+            ]);
             if de.is_zero() {
                 power_rule
             } else {
@@ -97,7 +122,10 @@ fn derivative(e: &Expr, of_symbol: &dyn Fn(&Symbol) -> Result<Expr, String>) -> 
                 }
                 Func::Sign => return Ok(Expr::zero()),
                 Func::Min | Func::Max => {
-                    return Err(fail(format!("`{}` has no derivative where its arguments cross", f.name())))
+                    return Err(fail(format!(
+                        "`{}` has no derivative where its arguments cross",
+                        f.name()
+                    )))
                 }
             };
             outer * dx
@@ -113,7 +141,11 @@ mod tests {
     struct Names;
     impl Resolve for Names {
         fn name(&self, name: &str, primes: u8, _: usize) -> Result<Expr, ParseError> {
-            Ok(if name.starts_with('q') { Expr::coord(name, primes) } else { Expr::constant(name) })
+            Ok(if name.starts_with('q') {
+                Expr::coord(name, primes)
+            } else {
+                Expr::constant(name)
+            })
         }
         fn unit_vector(&self, _: &str, _: &str, c: usize) -> Result<Expr, ParseError> {
             Err(ParseError::new(c, "no vectors"))
@@ -122,7 +154,11 @@ mod tests {
 
     fn check(expression: &str, expected: &str) {
         let e = parse(expression, &Names).unwrap();
-        assert_eq!(time_derivative(&e).unwrap(), parse(expected, &Names).unwrap(), "d/dt {expression}");
+        assert_eq!(
+            time_derivative(&e).unwrap(),
+            parse(expected, &Names).unwrap(),
+            "d/dt {expression}"
+        );
     }
 
     #[test]

@@ -68,7 +68,11 @@ impl Func {
 
     /// The name as written in a problem.
     pub fn name(self) -> &'static str {
-        Func::ALL.iter().find(|(f, _)| *f == self).map(|(_, n)| *n).unwrap_or("?")
+        Func::ALL
+            .iter()
+            .find(|(f, _)| *f == self)
+            .map(|(_, n)| *n)
+            .unwrap_or("?")
     }
 
     /// Looks a function up by name.

@@ -15,7 +15,11 @@ pub struct NotLinear {
 
 impl fmt::Display for NotLinear {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "`{}` does not appear linearly in the term `{}`", self.symbol, self.term)
+        write!(
+            f,
+            "`{}` does not appear linearly in the term `{}`",
+            self.symbol, self.term
+        )
     }
 }
 
@@ -29,16 +33,26 @@ pub fn linear_split(e: &Expr, unknowns: &[Symbol]) -> Result<(Vec<Expr>, Expr), 
     for term in e.terms() {
         let mut found: Option<(usize, usize)> = None;
         for (position, factor) in term.factors().iter().enumerate() {
-            let Some(index) = unknowns.iter().position(|u| factor.contains(u)) else { continue };
+            let Some(index) = unknowns.iter().position(|u| factor.contains(u)) else {
+                continue;
+            };
             let is_plain = matches!(factor.node(), Node::Sym(s) if *s == unknowns[index]);
             if !is_plain || found.is_some() {
-                return Err(NotLinear { symbol: unknowns[index].clone().to_string(), term: term.to_string() });
+                return Err(NotLinear {
+                    symbol: unknowns[index].clone().to_string(),
+                    term: term.to_string(),
+                });
             }
             found = Some((index, position));
         }
         match found {
             Some((index, position)) => {
-                let others = term.factors().iter().enumerate().filter(|(i, _)| *i != position).map(|(_, f)| f.clone());
+                let others = term
+                    .factors()
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| *i != position)
+                    .map(|(_, f)| f.clone());
                 coefficients[index].push(mul(others));
             }
             None => rest.push(term.clone()),

@@ -171,7 +171,9 @@ impl Number {
 
     /// The exact rational root `self^(1/2)` when it exists.
     pub fn exact_sqrt(self) -> Option<Number> {
-        let Number::Ratio(n, d) = self else { return None };
+        let Number::Ratio(n, d) = self else {
+            return None;
+        };
         if n < 0 {
             return None;
         }

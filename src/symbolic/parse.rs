@@ -32,7 +32,11 @@ pub struct ParseError {
 impl ParseError {
     /// An error at `column` without a hint.
     pub fn new(column: usize, message: impl Into<String>) -> ParseError {
-        ParseError { column, message: message.into(), hint: None }
+        ParseError {
+            column,
+            message: message.into(),
+            hint: None,
+        }
     }
 
     /// The same error with a hint.
@@ -80,7 +84,9 @@ fn tokenize(text: &str) -> Result<Vec<(Token, usize)>, ParseError> {
         let column = i + 1;
         if c.is_whitespace() {
             i += 1;
-        } else if c.is_ascii_digit() || (c == '.' && chars.get(i + 1).is_some_and(|d| d.is_ascii_digit())) {
+        } else if c.is_ascii_digit()
+            || (c == '.' && chars.get(i + 1).is_some_and(|d| d.is_ascii_digit()))
+        {
             let start = i;
             while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
                 i += 1;
@@ -98,8 +104,9 @@ fn tokenize(text: &str) -> Result<Vec<(Token, usize)>, ParseError> {
                 }
             }
             let literal: String = chars[start..i].iter().collect();
-            let number = Number::parse_decimal(&literal)
-                .ok_or_else(|| ParseError::new(column, format!("`{literal}` is not a finite number")))?;
+            let number = Number::parse_decimal(&literal).ok_or_else(|| {
+                ParseError::new(column, format!("`{literal}` is not a finite number"))
+            })?;
             tokens.push((Token::Number(number), column));
         } else if c.is_ascii_alphabetic() {
             let start = i;
@@ -148,22 +155,31 @@ struct Parser<'a> {
 /// The first syntax or name error, with its column.
 pub fn parse(text: &str, resolver: &dyn Resolve) -> Result<Expr, ParseError> {
     if text.len() > MAX_LENGTH {
-        return Err(ParseError::new(1, format!("the expression is {} bytes long", text.len()))
-            .with_hint(format!("expressions are limited to {MAX_LENGTH} bytes")));
+        return Err(
+            ParseError::new(1, format!("the expression is {} bytes long", text.len()))
+                .with_hint(format!("expressions are limited to {MAX_LENGTH} bytes")),
+        );
     }
     let tokens = tokenize(text)?;
     if tokens.is_empty() {
         return Err(ParseError::new(1, "the expression is empty").with_hint("write 0 for zero"));
     }
-    let mut parser =
-        Parser { tokens, position: 0, end_column: text.chars().count() + 1, depth: 0, resolver };
+    let mut parser = Parser {
+        tokens,
+        position: 0,
+        end_column: text.chars().count() + 1,
+        depth: 0,
+        resolver,
+    };
     let expr = parser.sum()?;
     if let Some((token, column)) = parser.tokens.get(parser.position) {
         let hint = match token {
             Token::Op(')') => "this parenthesis closes nothing",
             _ => "an operator such as * may be missing",
         };
-        return Err(ParseError::new(*column, format!("unexpected {}", describe(token))).with_hint(hint));
+        return Err(
+            ParseError::new(*column, format!("unexpected {}", describe(token))).with_hint(hint),
+        );
     }
     Ok(expr)
 }
@@ -183,7 +199,9 @@ impl Parser<'_> {
     }
 
     fn column(&self) -> usize {
-        self.tokens.get(self.position).map_or(self.end_column, |(_, c)| *c)
+        self.tokens
+            .get(self.position)
+            .map_or(self.end_column, |(_, c)| *c)
     }
 
     fn eat(&mut self, op: char) -> bool {
@@ -198,8 +216,11 @@ impl Parser<'_> {
     fn enter(&mut self) -> Result<(), ParseError> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
-            return Err(ParseError::new(self.column(), "the expression is nested too deeply")
-                .with_hint(format!("at most {MAX_DEPTH} levels of parentheses, powers and signs")));
+            return Err(
+                ParseError::new(self.column(), "the expression is nested too deeply").with_hint(
+                    format!("at most {MAX_DEPTH} levels of parentheses, powers and signs"),
+                ),
+            );
         }
         Ok(())
     }
@@ -291,19 +312,31 @@ impl Parser<'_> {
                 Some(close) => format!("did you mean `{close}`?"),
                 None => format!("the functions are {}", known.join(", ")),
             };
-            return Err(ParseError::new(column, format!("unknown function `{name}`")).with_hint(hint));
+            return Err(
+                ParseError::new(column, format!("unknown function `{name}`")).with_hint(hint),
+            );
         };
         let mut args = vec![self.sum()?];
         while self.eat(',') {
             args.push(self.sum()?);
         }
         if !self.eat(')') {
-            return Err(ParseError::new(self.column(), "missing `)`")
-                .with_hint(format!("the call of `{name}` at column {column} is never closed")));
+            return Err(
+                ParseError::new(self.column(), "missing `)`").with_hint(format!(
+                    "the call of `{name}` at column {column} is never closed"
+                )),
+            );
         }
         if args.len() != f.arity() {
-            let wanted = if f.arity() == 1 { "one argument" } else { "two arguments" };
-            return Err(ParseError::new(column, format!("`{name}` takes {wanted}, not {}", args.len())));
+            let wanted = if f.arity() == 1 {
+                "one argument"
+            } else {
+                "two arguments"
+            };
+            return Err(ParseError::new(
+                column,
+                format!("`{name}` takes {wanted}, not {}", args.len()),
+            ));
         }
         Ok(func(f, args))
     }
@@ -330,7 +363,11 @@ mod tests {
     }
 
     fn same(a: &str, b: &str) {
-        assert_eq!(parse(a, &Names).unwrap(), parse(b, &Names).unwrap(), "{a} vs {b}");
+        assert_eq!(
+            parse(a, &Names).unwrap(),
+            parse(b, &Names).unwrap(),
+            "{a} vs {b}"
+        );
     }
 
     fn error_column(text: &str) -> usize {
@@ -368,6 +405,9 @@ mod tests {
     #[test]
     fn long_sums_parse_in_linear_time() {
         let long = vec!["x"; 20_000].join("+");
-        assert_eq!(parse(&long, &Names).unwrap(), parse("20000*x", &Names).unwrap());
+        assert_eq!(
+            parse(&long, &Names).unwrap(),
+            parse("20000*x", &Names).unwrap()
+        );
     }
 }

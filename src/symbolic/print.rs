@@ -14,17 +14,21 @@ pub fn latex(e: &Expr) -> String {
 }
 
 const GREEK: [&str; 24] = [
-    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
-    "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega", "Omega",
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
+    "omega", "Omega",
 ];
-const GREEK_UPPER: [&str; 10] =
-    ["Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi"];
+const GREEK_UPPER: [&str; 10] = [
+    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi",
+];
 
 /// A name in LaTeX: Greek letters spelled out become symbols, trailing digits and
 /// `_suffix` become subscripts, longer words are set upright.
 pub fn latex_name(name: &str) -> String {
     let (stem, subscript) = match name.split_once('_') {
-        Some((stem, sub)) if !stem.is_empty() && !sub.is_empty() => (stem.to_string(), Some(sub.to_string())),
+        Some((stem, sub)) if !stem.is_empty() && !sub.is_empty() => {
+            (stem.to_string(), Some(sub.to_string()))
+        }
         _ => {
             let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
             if stem.is_empty() || stem.len() == name.len() {
@@ -48,7 +52,10 @@ pub fn latex_name(name: &str) -> String {
 }
 
 fn latex_name_plain(sub: &str) -> String {
-    if sub.chars().all(|c| c.is_ascii_alphanumeric()) && sub.chars().count() > 1 && !sub.chars().all(|c| c.is_ascii_digit()) {
+    if sub.chars().all(|c| c.is_ascii_alphanumeric())
+        && sub.chars().count() > 1
+        && !sub.chars().all(|c| c.is_ascii_digit())
+    {
         format!("\\mathrm{{{sub}}}")
     } else {
         sub.replace('_', ",")
@@ -95,7 +102,9 @@ fn plain_symbol(s: &Symbol) -> String {
         Symbol::Const(name) | Symbol::Unknown(name) => name.to_string(),
         Symbol::Coord(name, order) => format!("{name}{}", "'".repeat(*order as usize)),
         Symbol::Time => "t".into(),
-        Symbol::UnitVector(frame, axis) => format!("{frame}.{}", ["x", "y", "z"][(*axis as usize).min(2)]),
+        Symbol::UnitVector(frame, axis) => {
+            format!("{frame}.{}", ["x", "y", "z"][(*axis as usize).min(2)])
+        }
     }
 }
 
@@ -109,7 +118,11 @@ impl Printer {
         for (i, term) in e.terms().iter().enumerate() {
             let (coefficient, rest) = term.split_coefficient();
             let negative = coefficient.is_negative();
-            let magnitude = if negative { coefficient.neg() } else { coefficient };
+            let magnitude = if negative {
+                coefficient.neg()
+            } else {
+                coefficient
+            };
             let body = self.product(magnitude, &rest);
             match (i, negative, self.latex) {
                 (0, true, _) => out.push('-'),
@@ -145,7 +158,9 @@ impl Printer {
         if !rest.is_one() {
             for factor in rest.factors() {
                 match factor.node() {
-                    Node::Pow(base, exponent) if exponent.as_number().is_some_and(Number::is_negative) => {
+                    Node::Pow(base, exponent)
+                        if exponent.as_number().is_some_and(Number::is_negative) =>
+                    {
                         let positive = exponent.as_number().map(Number::neg).unwrap_or(Number::ONE);
                         denominator.push(self.power(base, &Expr::num(positive)));
                     }
@@ -160,14 +175,22 @@ impl Printer {
             denominator.insert(0, coefficient_den);
         }
         let join = if self.latex { " " } else { "*" };
-        let top = if numerator.is_empty() { "1".to_string() } else { numerator.join(join) };
+        let top = if numerator.is_empty() {
+            "1".to_string()
+        } else {
+            numerator.join(join)
+        };
         if denominator.is_empty() {
             return top;
         }
         if self.latex {
             format!("\\frac{{{top}}}{{{}}}", denominator.join(" "))
         } else {
-            let bottom = if denominator.len() > 1 { format!("({})", denominator.join("*")) } else { denominator.join("") };
+            let bottom = if denominator.len() > 1 {
+                format!("({})", denominator.join("*"))
+            } else {
+                denominator.join("")
+            };
             format!("{top}/{bottom}")
         }
     }
@@ -183,7 +206,11 @@ impl Printer {
     fn power(&self, base: &Expr, exponent: &Expr) -> String {
         let half = exponent.as_number() == Some(Number::Ratio(1, 2));
         if half {
-            return if self.latex { format!("\\sqrt{{{}}}", self.sum(base)) } else { format!("sqrt({})", self.sum(base)) };
+            return if self.latex {
+                format!("\\sqrt{{{}}}", self.sum(base))
+            } else {
+                format!("sqrt({})", self.sum(base))
+            };
         }
         if exponent.is_one() {
             return self.factor(base);
@@ -198,11 +225,18 @@ impl Printer {
         if self.latex {
             if let Node::Func(f, args) = base.node() {
                 if matches!(f, Func::Sin | Func::Cos | Func::Tan) {
-                    return format!("\\{}^{{{exponent_text}}}{}", f.name(), self.argument(&args[0]));
+                    return format!(
+                        "\\{}^{{{exponent_text}}}{}",
+                        f.name(),
+                        self.argument(&args[0])
+                    );
                 }
             }
             format!("{base_text}^{{{exponent_text}}}")
-        } else if exponent.as_number().is_some_and(|n| !n.is_negative() && matches!(n, Number::Ratio(_, 1))) {
+        } else if exponent
+            .as_number()
+            .is_some_and(|n| !n.is_negative() && matches!(n, Number::Ratio(_, 1)))
+        {
             format!("{base_text}^{exponent_text}")
         } else {
             format!("{base_text}^({exponent_text})")
@@ -242,14 +276,20 @@ impl Printer {
         }
         let inner: Vec<String> = args.iter().map(|a| self.sum(a)).collect();
         match f {
-            Func::Sin | Func::Cos | Func::Tan | Func::Exp | Func::Ln => format!("\\{}{}", f.name(), self.argument(&args[0])),
+            Func::Sin | Func::Cos | Func::Tan | Func::Exp | Func::Ln => {
+                format!("\\{}{}", f.name(), self.argument(&args[0]))
+            }
             Func::Asin => format!("\\arcsin{}", self.argument(&args[0])),
             Func::Acos => format!("\\arccos{}", self.argument(&args[0])),
             Func::Atan => format!("\\arctan{}", self.argument(&args[0])),
             Func::Sqrt => format!("\\sqrt{{{}}}", inner[0]),
             Func::Abs => format!("\\left|{}\\right|", inner[0]),
             Func::Min | Func::Max => format!("\\{}\\left({}\\right)", f.name(), inner.join(", ")),
-            Func::Atan2 | Func::Sign => format!("\\operatorname{{{}}}\\left({}\\right)", f.name(), inner.join(", ")),
+            Func::Atan2 | Func::Sign => format!(
+                "\\operatorname{{{}}}\\left({}\\right)",
+                f.name(),
+                inner.join(", ")
+            ),
         }
     }
 }
@@ -277,7 +317,10 @@ mod tests {
         assert_eq!(latex(&e), "\\frac{L^{2} m}{12}");
         assert_eq!(plain(&e), "L^2*m/12");
         let q = Expr::coord("q1", 0);
-        assert_eq!(latex(&(-(sin(q.clone()) * Expr::coord("q1", 1)))), "-\\dot{q}_{1} \\sin(q_{1})");
+        assert_eq!(
+            latex(&(-(sin(q.clone()) * Expr::coord("q1", 1)))),
+            "-\\dot{q}_{1} \\sin(q_{1})"
+        );
         assert_eq!(plain(&(cos(q.clone()) - Expr::one())), "-1 + cos(q1)");
     }
 }

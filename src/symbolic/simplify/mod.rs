@@ -48,7 +48,10 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Options {
-        Options { double_angle: false, max_passes: 64 }
+        Options {
+            double_angle: false,
+            max_passes: 64,
+        }
     }
 }
 
@@ -66,13 +69,22 @@ pub fn simplify_with_steps(e: &Expr) -> (Expr, Vec<Step>) {
 
 /// `e` simplified with `options`, pushing each step onto `steps` when given.
 pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>) -> Expr {
-    Simplifier { options, steps, memo: HashMap::new() }.expr(e)
+    Simplifier {
+        options,
+        steps,
+        memo: HashMap::new(),
+    }
+    .expr(e)
 }
 
 /// The index of the shortest of `candidates` by `Expr::operation_count`, the first on a
 /// tie; 0 for an empty slice.
 pub fn shortest_of(candidates: &[Expr]) -> usize {
-    candidates.iter().enumerate().min_by_key(|(i, e)| (e.operation_count(), *i)).map_or(0, |(i, _)| i)
+    candidates
+        .iter()
+        .enumerate()
+        .min_by_key(|(i, e)| (e.operation_count(), *i))
+        .map_or(0, |(i, _)| i)
 }
 
 /// A group of terms that one rule family may rewrite together.
@@ -82,7 +94,12 @@ pub(crate) enum Candidate {
     Pythagoras { arg: Expr, cofactor: Expr },
     /// The products of `sin`/`cos` of `a` and `b` (`a < b`) times `cofactor`: the
     /// `cos·cos` and `sin·sin` ones when `cosines`, else the mixed ones.
-    AngleSum { cosines: bool, a: Expr, b: Expr, cofactor: Expr },
+    AngleSum {
+        cosines: bool,
+        a: Expr,
+        b: Expr,
+        cofactor: Expr,
+    },
     /// `sin(arg)·cos(arg)·cofactor`.
     DoubleAngle { arg: Expr, cofactor: Expr },
 }
@@ -93,7 +110,9 @@ type Angles = (Expr, Option<Expr>);
 impl Candidate {
     fn angles(&self) -> Angles {
         match self {
-            Candidate::Pythagoras { arg, .. } | Candidate::DoubleAngle { arg, .. } => (arg.clone(), None),
+            Candidate::Pythagoras { arg, .. } | Candidate::DoubleAngle { arg, .. } => {
+                (arg.clone(), None)
+            }
             Candidate::AngleSum { a, b, .. } => (a.clone(), Some(b.clone())),
         }
     }
@@ -102,7 +121,12 @@ impl Candidate {
     fn rewrite(&self, terms: &Terms) -> Option<Rewrite> {
         match self {
             Candidate::Pythagoras { arg, cofactor } => pythagoras::rewrite(terms, arg, cofactor),
-            Candidate::AngleSum { cosines, a, b, cofactor } => trig::angle_sum(terms, *cosines, a, b, cofactor),
+            Candidate::AngleSum {
+                cosines,
+                a,
+                b,
+                cofactor,
+            } => trig::angle_sum(terms, *cosines, a, b, cofactor),
             Candidate::DoubleAngle { arg, cofactor } => trig::double_angle(terms, arg, cofactor),
         }
     }
@@ -167,8 +191,10 @@ impl Simplifier<'_> {
             trig::candidates(&monomials, self.options, &mut candidates);
             let mut seen = HashSet::with_capacity(candidates.len());
             candidates.retain(|c| seen.insert(c.clone()));
-            let mut scored: Vec<(Gain, Candidate, Rewrite)> =
-                candidates.into_iter().filter_map(|c| c.rewrite(&terms).map(|r| (terms.gain(&r), c, r))).collect();
+            let mut scored: Vec<(Gain, Candidate, Rewrite)> = candidates
+                .into_iter()
+                .filter_map(|c| c.rewrite(&terms).map(|r| (terms.gain(&r), c, r)))
+                .collect();
             if scored.is_empty() {
                 break;
             }
@@ -188,7 +214,11 @@ impl Simplifier<'_> {
                     (totals[&angles], angles, gain, candidate, rewrite)
                 })
                 .collect();
-            keyed.sort_by(|x, y| y.0.cmp(&x.0).then_with(|| x.1.cmp(&y.1)).then_with(|| y.2.cmp(&x.2)));
+            keyed.sort_by(|x, y| {
+                y.0.cmp(&x.0)
+                    .then_with(|| x.1.cmp(&y.1))
+                    .then_with(|| y.2.cmp(&x.2))
+            });
             let mut touched: HashSet<Expr> = HashSet::new();
             for (_, _, _, candidate, rewrite) in keyed {
                 // An earlier rewrite of this pass may have changed the group: look again.
@@ -201,9 +231,19 @@ impl Simplifier<'_> {
                     rewrite
                 };
                 if let Some(steps) = self.steps.as_deref_mut() {
-                    steps.push(Step { rule: rewrite.rule, before: rewrite.before(), after: rewrite.after() });
+                    steps.push(Step {
+                        rule: rewrite.rule,
+                        before: rewrite.before(),
+                        after: rewrite.after(),
+                    });
                 }
-                touched.extend(rewrite.remove.iter().chain(&rewrite.insert).map(|(m, _)| m.clone()));
+                touched.extend(
+                    rewrite
+                        .remove
+                        .iter()
+                        .chain(&rewrite.insert)
+                        .map(|(m, _)| m.clone()),
+                );
                 terms.apply(&rewrite);
                 changed = true;
             }

@@ -18,7 +18,10 @@ pub(crate) fn candidates(monomials: &[Expr], out: &mut Vec<Candidate>) {
     for m in monomials {
         for t in trig_factors(m).into_iter().filter(|t| t.power >= 2) {
             let cofactor = without(m, &t.base(), 2);
-            out.push(Candidate::Pythagoras { arg: t.arg, cofactor });
+            out.push(Candidate::Pythagoras {
+                arg: t.arg,
+                cofactor,
+            });
         }
     }
 }
@@ -31,7 +34,11 @@ pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewr
     if !ks.is_one() || !kc.is_one() {
         return None;
     }
-    let (s, c, p) = (terms.coefficient(&sin2), terms.coefficient(&cos2), terms.coefficient(cofactor));
+    let (s, c, p) = (
+        terms.coefficient(&sin2),
+        terms.coefficient(&cos2),
+        terms.coefficient(cofactor),
+    );
     let group = |s: Number, c: Number, p: Number| {
         [(sin2.clone(), s), (cos2.clone(), c), (cofactor.clone(), p)]
             .into_iter()
@@ -40,11 +47,19 @@ pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewr
     };
     let remove = group(s, c, p);
     // sin² = 1 − cos², then cos² = 1 − sin²; on a tie the first (keeping cos²) wins.
-    let options = [group(Number::ZERO, c.add(s.neg()), p.add(s)), group(s.add(c.neg()), Number::ZERO, p.add(c))];
+    let options = [
+        group(Number::ZERO, c.add(s.neg()), p.add(s)),
+        group(s.add(c.neg()), Number::ZERO, p.add(c)),
+    ];
     let mut best: Option<(Gain, Rewrite)> = None;
     for insert in options {
         let read = vec![sin2.clone(), cos2.clone(), cofactor.clone()];
-        let rewrite = Rewrite { rule: PYTHAGORAS, remove: remove.clone(), insert, read };
+        let rewrite = Rewrite {
+            rule: PYTHAGORAS,
+            remove: remove.clone(),
+            insert,
+            read,
+        };
         let gain = terms.gain(&rewrite);
         if gain.fewer_terms() && best.as_ref().is_none_or(|(g, _)| gain > *g) {
             best = Some((gain, rewrite));

@@ -41,8 +41,13 @@ impl Rewrite {
 
     /// The net change of each touched monomial, merged.
     fn deltas(&self) -> Vec<(&Expr, Number)> {
-        let mut out: Vec<(&Expr, Number)> = Vec::with_capacity(self.remove.len() + self.insert.len());
-        let changes = self.remove.iter().map(|(m, c)| (m, c.neg())).chain(self.insert.iter().map(|(m, c)| (m, *c)));
+        let mut out: Vec<(&Expr, Number)> =
+            Vec::with_capacity(self.remove.len() + self.insert.len());
+        let changes = self
+            .remove
+            .iter()
+            .map(|(m, c)| (m, c.neg()))
+            .chain(self.insert.iter().map(|(m, c)| (m, *c)));
         for (m, d) in changes {
             match out.iter_mut().find(|(seen, _)| *seen == m) {
                 Some(entry) => entry.1 = entry.1.add(d),
@@ -99,13 +104,19 @@ fn cost(c: Number, m: &Expr) -> Gain {
     } else {
         1 + m.operation_count() as i64 + i64::from(!c.is_one())
     };
-    Gain { terms: i64::from(!c.is_zero()), operations }
+    Gain {
+        terms: i64::from(!c.is_zero()),
+        operations,
+    }
 }
 
 impl Terms {
     /// The terms of `e` (a sum, or a single term).
     pub fn new(e: &Expr) -> Terms {
-        let mut terms = Terms { coefficients: HashMap::new(), order: Vec::new() };
+        let mut terms = Terms {
+            coefficients: HashMap::new(),
+            order: Vec::new(),
+        };
         for term in e.terms() {
             let (c, m) = term.split_coefficient();
             terms.change(m, c);
@@ -130,7 +141,11 @@ impl Terms {
 
     /// The monomials with a non-zero coefficient, in a deterministic order.
     pub fn monomials(&self) -> Vec<Expr> {
-        self.order.iter().filter(|m| !self.coefficient(m).is_zero()).cloned().collect()
+        self.order
+            .iter()
+            .filter(|m| !self.coefficient(m).is_zero())
+            .cloned()
+            .collect()
     }
 
     /// How much shorter the sum gets by `rewrite`.
@@ -147,7 +162,11 @@ impl Terms {
 
     /// Applies `rewrite`.
     pub fn apply(&mut self, rewrite: &Rewrite) {
-        let deltas: Vec<(Expr, Number)> = rewrite.deltas().into_iter().map(|(m, d)| (m.clone(), d)).collect();
+        let deltas: Vec<(Expr, Number)> = rewrite
+            .deltas()
+            .into_iter()
+            .map(|(m, d)| (m.clone(), d))
+            .collect();
         for (m, d) in deltas {
             self.change(m, d);
         }
@@ -183,18 +202,27 @@ impl TrigFactor {
 /// The sine and cosine factors of the monomial `m` with positive integer powers.
 pub(crate) fn trig_factors(m: &Expr) -> Vec<TrigFactor> {
     let as_trig = |e: &Expr| match e.node() {
-        Node::Func(f @ (Func::Sin | Func::Cos), args) if args.len() == 1 => Some((*f, args[0].clone())),
+        Node::Func(f @ (Func::Sin | Func::Cos), args) if args.len() == 1 => {
+            Some((*f, args[0].clone()))
+        }
         _ => None,
     };
     m.factors()
         .iter()
         .filter_map(|factor| match factor.node() {
             Node::Pow(base, exponent) => {
-                let power = exponent.as_number().and_then(Number::as_integer).filter(|k| *k >= 1)?;
+                let power = exponent
+                    .as_number()
+                    .and_then(Number::as_integer)
+                    .filter(|k| *k >= 1)?;
                 let (func, arg) = as_trig(base)?;
                 Some(TrigFactor { func, arg, power })
             }
-            _ => as_trig(factor).map(|(func, arg)| TrigFactor { func, arg, power: 1 }),
+            _ => as_trig(factor).map(|(func, arg)| TrigFactor {
+                func,
+                arg,
+                power: 1,
+            }),
         })
         .collect()
 }

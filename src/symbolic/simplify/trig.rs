@@ -49,13 +49,25 @@ pub(crate) fn candidates(monomials: &[Expr], options: &Options, out: &mut Vec<Ca
                     let symbol = matches!(x.arg.node(), Node::Sym(_));
                     if options.double_angle && symbol && x.func != y.func {
                         let cofactor = without(&without(m, &x.base(), 1), &y.base(), 1);
-                        out.push(Candidate::DoubleAngle { arg: x.arg.clone(), cofactor });
+                        out.push(Candidate::DoubleAngle {
+                            arg: x.arg.clone(),
+                            cofactor,
+                        });
                     }
                     continue;
                 }
                 let cofactor = without(&without(m, &x.base(), 1), &y.base(), 1);
-                let (a, b) = if x.arg < y.arg { (&x.arg, &y.arg) } else { (&y.arg, &x.arg) };
-                out.push(Candidate::AngleSum { cosines: x.func == y.func, a: a.clone(), b: b.clone(), cofactor });
+                let (a, b) = if x.arg < y.arg {
+                    (&x.arg, &y.arg)
+                } else {
+                    (&y.arg, &x.arg)
+                };
+                out.push(Candidate::AngleSum {
+                    cosines: x.func == y.func,
+                    a: a.clone(),
+                    b: b.clone(),
+                    cofactor,
+                });
             }
         }
     }
@@ -63,25 +75,50 @@ pub(crate) fn candidates(monomials: &[Expr], options: &Options, out: &mut Vec<Ca
 
 /// The monomial `M · f(a) · g(b)` when the product keeps coefficient one.
 fn product(cofactor: &Expr, (f, g): (Func, Func), a: &Expr, b: &Expr) -> Option<Expr> {
-    let (k, m) = times(cofactor, [func(f, vec![a.clone()]), func(g, vec![b.clone()])]);
+    let (k, m) = times(
+        cofactor,
+        [func(f, vec![a.clone()]), func(g, vec![b.clone()])],
+    );
     k.is_one().then_some(m)
 }
 
 /// The shortest identity of the group, if any applies and shortens the sum.
-pub(crate) fn angle_sum(terms: &Terms, cosines: bool, a: &Expr, b: &Expr, cofactor: &Expr) -> Option<Rewrite> {
+pub(crate) fn angle_sum(
+    terms: &Terms,
+    cosines: bool,
+    a: &Expr,
+    b: &Expr,
+    cofactor: &Expr,
+) -> Option<Rewrite> {
     let mut best: Option<(Gain, Rewrite)> = None;
-    for row in ROWS.iter().filter(|row| (row.first.0 == row.first.1) == cosines) {
+    for row in ROWS
+        .iter()
+        .filter(|row| (row.first.0 == row.first.1) == cosines)
+    {
         let first = product(cofactor, row.first, a, b)?;
         let second = product(cofactor, row.second, a, b)?;
         let (x, y) = (terms.coefficient(&first), terms.coefficient(&second));
         if x.is_zero() || !y.add(x.mul(Number::int(row.sign)).neg()).is_zero() {
             continue;
         }
-        let argument = if row.difference { add([a.clone(), -b.clone()]) } else { add([a.clone(), b.clone()]) };
+        let argument = if row.difference {
+            add([a.clone(), -b.clone()])
+        } else {
+            add([a.clone(), b.clone()])
+        };
         let (k, result) = times(cofactor, [func(row.result, vec![argument])]);
         let read = vec![first.clone(), second.clone(), result.clone()];
-        let insert = if k.is_zero() { vec![] } else { vec![(result, x.mul(k))] };
-        let rewrite = Rewrite { rule: row.rule, remove: vec![(first, x), (second, y)], insert, read };
+        let insert = if k.is_zero() {
+            vec![]
+        } else {
+            vec![(result, x.mul(k))]
+        };
+        let rewrite = Rewrite {
+            rule: row.rule,
+            remove: vec![(first, x), (second, y)],
+            insert,
+            read,
+        };
         let gain = terms.gain(&rewrite);
         if gain.fewer_terms() && best.as_ref().is_none_or(|(g, _)| gain > *g) {
             best = Some((gain, rewrite));
@@ -92,7 +129,10 @@ pub(crate) fn angle_sum(terms: &Terms, cosines: bool, a: &Expr, b: &Expr, cofact
 
 /// `c·sin x·cos x·M → (c/2)·sin(2x)·M`, when shorter.
 pub(crate) fn double_angle(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewrite> {
-    let (one, m) = times(cofactor, [func(Sin, vec![arg.clone()]), func(Cos, vec![arg.clone()])]);
+    let (one, m) = times(
+        cofactor,
+        [func(Sin, vec![arg.clone()]), func(Cos, vec![arg.clone()])],
+    );
     let c = terms.coefficient(&m);
     if !one.is_one() || c.is_zero() {
         return None;
@@ -100,6 +140,11 @@ pub(crate) fn double_angle(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option
     let (k, doubled) = times(cofactor, [func(Sin, vec![Expr::int(2) * arg.clone()])]);
     let read = vec![m.clone(), doubled.clone()];
     let insert = vec![(doubled, c.mul(k).mul(Number::ratio(1, 2)))];
-    let rewrite = Rewrite { rule: DOUBLE_ANGLE, remove: vec![(m, c)], insert, read };
+    let rewrite = Rewrite {
+        rule: DOUBLE_ANGLE,
+        remove: vec![(m, c)],
+        insert,
+        read,
+    };
     terms.gain(&rewrite).fewer_operations().then_some(rewrite)
 }

@@ -1,0 +1,166 @@
+//! Shared helpers: run the built binary and read its JSON.
+
+use serde_json::Value;
+use std::ffi::OsString;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// The three equation-forming methods, as the command line names them.
+pub const METHODS: [&str; 3] = ["motion-law", "newton-euler", "kane"];
+
+/// The path of `problems/NAME.json`.
+pub fn problem(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("problems")
+        .join(format!("{name}.json"))
+}
+
+/// Every `problems/*.json` file (not the `invalid/` ones), sorted.
+pub fn all_problems() -> Vec<PathBuf> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("problems");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("problems/ is readable")
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    files.sort();
+    files
+}
+
+/// Runs `mbd-tutor ARGS...`.
+pub fn run<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+/// Runs the command and parses its standard output as JSON, failing with its stderr.
+pub fn run_json<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Value {
+    let out = run(args);
+    let shown: Vec<String> = args
+        .iter()
+        .map(|a| a.as_ref().to_string_lossy().into_owned())
+        .collect();
+    assert!(
+        out.status.success(),
+        "mbd-tutor {} failed ({}):\n{}",
+        shown.join(" "),
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "mbd-tutor {}: output is not JSON ({e}):\n{}",
+            shown.join(" "),
+            String::from_utf8_lossy(&out.stdout)
+        )
+    })
+}
+
+/// The answer of `solve --format json`.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// The method that formed the equations.
+    pub method: String,
+    /// The whole JSON answer.
+    pub json: Value,
+}
+
+impl Solution {
+    /// The second derivative of coordinate `q`.
+    pub fn acc(&self, q: &str) -> f64 {
+        self.json["accelerations"][q]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{}: no acceleration for {q} in {}", self.method, self.json))
+    }
+
+    /// The reaction force at `joint`, in the parent's unit vectors.
+    pub fn force(&self, joint: &str) -> [f64; 3] {
+        self.vector(joint, "force")
+    }
+
+    /// The reaction moment at `joint` about its point on the child, in the parent's unit vectors.
+    pub fn moment(&self, joint: &str) -> [f64; 3] {
+        self.vector(joint, "moment")
+    }
+
+    fn vector(&self, joint: &str, which: &str) -> [f64; 3] {
+        let v = &self.json["reactions"][joint][which];
+        let get = |i: usize| {
+            v[i].as_f64().unwrap_or_else(|| {
+                panic!(
+                    "{}: no reaction {joint}.{which} in {}",
+                    self.method, self.json
+                )
+            })
+        };
+        [get(0), get(1), get(2)]
+    }
+}
+
+/// `mbd-tutor solve PROBLEM --format json --method METHOD EXTRA...`.
+pub fn solve(name: &str, method: &str, extra: &[&str]) -> Solution {
+    let mut args: Vec<OsString> = vec!["solve".into(), problem(name).into()];
+    args.extend(
+        ["--format", "json", "--method", method]
+            .iter()
+            .chain(extra)
+            .map(OsString::from),
+    );
+    Solution {
+        method: method.to_string(),
+        json: run_json(&args),
+    }
+}
+
+/// The same solve by each of the three methods.
+pub fn solve_all(name: &str, extra: &[&str]) -> Vec<Solution> {
+    METHODS.iter().map(|m| solve(name, m, extra)).collect()
+}
+
+/// `mbd-tutor simulate PROBLEM --format json EXTRA...`: the column names and the rows.
+pub fn simulate(name: &str, extra: &[&str]) -> (Vec<String>, Vec<Vec<f64>>) {
+    let mut args: Vec<OsString> = vec!["simulate".into(), problem(name).into()];
+    args.extend(["--format", "json"].iter().chain(extra).map(OsString::from));
+    let json = run_json(&args);
+    let columns = json["columns"]
+        .as_array()
+        .expect("columns")
+        .iter()
+        .map(|c| c.as_str().expect("column name").to_string())
+        .collect();
+    let rows = json["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .map(|r| {
+            r.as_array()
+                .expect("row")
+                .iter()
+                .map(|x| x.as_f64().expect("number"))
+                .collect()
+        })
+        .collect();
+    (columns, rows)
+}
+
+/// Asserts `|got - want| <= tol * max(|want|, scale)`: relative, with `scale` the size of
+/// the quantity in the problem, so that a value that should vanish is judged fairly.
+#[track_caller]
+pub fn assert_close(got: f64, want: f64, tol: f64, scale: f64, what: &str) {
+    let bound = tol * want.abs().max(scale);
+    assert!(
+        (got - want).abs() <= bound,
+        "{what}: got {got:.15e}, want {want:.15e} (difference {:.3e}, allowed {bound:.3e})",
+        (got - want).abs()
+    );
+}
+
+/// The index of column `name` in a simulation's columns.
+pub fn column(columns: &[String], name: &str) -> usize {
+    columns
+        .iter()
+        .position(|c| c == name)
+        .unwrap_or_else(|| panic!("no column {name} in {columns:?}"))
+}
