@@ -67,6 +67,11 @@ fn the_three_methods_agree_on_every_problem() {
         let first = solve(&name, METHODS[0], &[]);
         for method in &METHODS[1..] {
             let other = solve(&name, method, &[]);
+            assert_eq!(
+                other.json["method"].as_str(),
+                Some(*method),
+                "{name}: the answer names its method"
+            );
             let accelerations = first.json["accelerations"]
                 .as_object()
                 .expect("accelerations");
