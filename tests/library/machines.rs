@@ -33,7 +33,9 @@ fn arm_extension_feels_centrifugal_force_and_gravity_only() {
     // a_G . e = r'' - r |w x e|^2 (the Euler and Coriolis terms are normal to e), with
     // |w x e|^2 = q1'^2 cos^2 q2 + q2'^2. Along e: mE a_G . e = F3 - mE g sin q2.
     let Arm { me, le, .. } = ARM;
-    let (q2, q3, q1d, q2d, f3) = (0.4_f64, 0.15, 0.8, 0.3, 5.0);
+    let (q2, q3, q1d, q2d, q3d) = (0.4_f64, 0.15, 0.8, 0.3, 0.1);
+    // The actuator's controller: F3 = f3 + kp3 (r3 - q3) - kd3 q3'.
+    let f3 = 4.7 + 400.0 * (0.2 - q3) - 40.0 * q3d;
     let r = q3 + le / 2.0;
     let q3dd = r * (q1d * q1d * q2.cos().powi(2) + q2d * q2d) - G * q2.sin() + f3 / me;
     for s in solve_all("arm-3d-rrp", &[]) {
@@ -56,7 +58,7 @@ fn arm_turret_acceleration_with_the_arm_fixed_in_the_turret() {
         le,
         ..
     } = ARM;
-    let (q2, q3, tau1) = (0.4_f64, 0.15, 1.0);
+    let (q2, q3, tau1) = (0.4_f64, 0.15, 0.5);
     let (s2, c2) = (q2.sin().powi(2), q2.cos().powi(2));
     let r = q3 + le / 2.0;
     let turret = mt * rt * rt / 2.0;
@@ -70,19 +72,20 @@ fn arm_turret_acceleration_with_the_arm_fixed_in_the_turret() {
 
 #[test]
 fn arm_held_still_by_its_motors() {
-    // At rest: tau1 = 0; the shoulder carries gravity's moment g cos q2 (mU LU/2 + mE r);
-    // the actuator carries the link's weight along the arm, mE g sin q2. Then every q'' = 0,
+    // At rest on its targets the controllers give only their feedforward parts. With tau1 = 0,
+    // the shoulder carrying gravity's moment, tau2 = g cos q2 (mU LU/2 + mE r), and the actuator
+    // the link's weight along the arm, f3 = mE g sin q2, every q'' = 0,
     // and the slide holds the rest of the weight: in U's axes, with N.z = sin q2 U.x + cos q2 U.z,
     // F = mE g cos q2 U.z, and about E's origin M = (LE/2 U.x) x (mE g N.z) = -LE/2 mE g cos q2 U.y.
     let Arm { mu, lu, me, le, .. } = ARM;
-    let (q2, q3) = (0.4_f64, 0.15);
+    let (q2, q3) = (0.5_f64, 0.2);
     let r = q3 + le / 2.0;
     let tau2 = G * q2.cos() * (mu * lu / 2.0 + me * r);
     let f3 = me * G * q2.sin();
-    let set = format!("tau1=0,tau2={tau2:.17e},F3={f3:.17e}");
+    let set = format!("tau1=0,tau2={tau2:.17e},f3={f3:.17e}");
     for s in solve_all(
         "arm-3d-rrp",
-        &["--set", &set, "--state", "q1'=0,q2'=0,q3'=0"],
+        &["--set", &set, "--state", "q2=0.5,q3=0.2,q1'=0,q2'=0,q3'=0"],
     ) {
         for q in ["q1", "q2", "q3"] {
             assert_close(s.acc(q), 0.0, 1e-9, G, &format!("{}: {q}''", s.method));

@@ -466,7 +466,10 @@ fn robot_arm(tau1: f64, tau2: f64, q: [f64; 2], qd: [f64; 2]) -> [f64; 2] {
 fn robot_arm_accelerations_and_elbow_force() {
     let (l1, m2, l2) = (0.5, 2.0, 0.4);
     let (q, qd) = ([0.4_f64, 0.8_f64], [0.5, -0.3]);
-    let [a1, a2] = robot_arm(12.0, 3.0, q, qd);
+    // The controllers: T = tau + kp (r - q) - kd q'.
+    let shoulder = 15.95 + 60.0 * (0.6 - q[0]) - 8.0 * qd[0];
+    let elbow = 1.78 + 20.0 * (0.5 - q[1]) - 3.0 * qd[1];
+    let [a1, a2] = robot_arm(shoulder, elbow, q, qd);
     // Newton on the forearm: F = m2 a_G2 + m2 g (0, 1), with
     // G2 = L1 (cos t1, sin t1) + L2/2 (cos t2, sin t2); then into A's axes (rotate by -t1).
     let (t1, t2, w1, w2, e1, e2) = (q[0], q[0] + q[1], qd[0], qd[0] + qd[1], a1, a1 + a2);
@@ -512,15 +515,16 @@ fn robot_arm_accelerations_and_elbow_force() {
 
 #[test]
 fn robot_arm_holding_torques_keep_it_still() {
-    // At rest, q'' = 0 needs tau2 = m2 g L2/2 cos t2 and tau1 - tau2 = (m1/2 + m2) g L1 cos t1.
+    // At rest on target the controllers give only their feedforward torques, and q'' = 0 needs
+    // tau2 = m2 g L2/2 cos t2 and tau1 - tau2 = (m1/2 + m2) g L1 cos t1.
     let (m1, l1, m2, l2) = (3.0, 0.5, 2.0, 0.4);
-    let (t1, t2) = (0.4_f64, 1.2_f64);
+    let (t1, t2) = (0.6_f64, 1.1_f64);
     let tau2 = m2 * G * l2 / 2.0 * t2.cos();
     let tau1 = tau2 + (m1 / 2.0 + m2) * G * l1 * t1.cos();
     let set = format!("tau1={tau1:.17e},tau2={tau2:.17e}");
     for s in solve_all(
         "two-link-robot-arm",
-        &["--set", &set, "--state", "q1'=0,q2'=0"],
+        &["--set", &set, "--state", "q1=0.6,q2=0.5,q1'=0,q2'=0"],
     ) {
         assert_close(
             s.acc("q1"),
