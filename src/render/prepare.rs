@@ -177,7 +177,7 @@ pub fn register_filters(tera: &mut tera::Tera) {
         "tex_display",
         |value: &Value, args: &HashMap<String, Value>| {
             let latex = tera::try_get_value!("tex_display", "value", String, value);
-            let width = args.get("width").and_then(Value::as_u64).unwrap_or(70) as usize;
+            let width = args.get("width").and_then(Value::as_u64).unwrap_or(60) as usize;
             let lines = break_lines(&latex, width);
             // One line goes in `\[…\]`: `multline*` would stretch its spaces to the full width.
             Ok(Value::String(if lines.contains(" \\\\ ") {
@@ -189,55 +189,73 @@ pub fn register_filters(tera: &mut tera::Tera) {
     );
 }
 
-/// Breaks LaTeX math before top-level `+`, `-` and `=` (outside braces, `\\left…\\right` and
-/// environments, where a `\\\\` would not compile) so that no line is much wider than
-/// `width` symbols as printed. Lines are joined by `\\\\`, for `multline*`.
+/// Breaks LaTeX math before `+`, `-` and `=` so that no line is much wider than `width`
+/// symbols as printed; lines are joined by `\\`, for `multline*`.
+///
+/// It never breaks inside braces (`\frac{…}{…}`) or environments (`bmatrix`), where a `\\`
+/// would not compile. Inside `\left( … \right)` it closes the open delimiters with
+/// `\right.` before the break and reopens them with `\left.` after it, the textbook way to
+/// split a long bracket over lines.
 pub fn break_lines(latex: &str, width: usize) -> String {
-    let mut pieces: Vec<&str> = Vec::new();
-    let mut depth: i32 = 0;
-    let mut start = 0;
+    // (where a piece starts, how many `\left` are open there)
+    let mut starts: Vec<(usize, usize)> = vec![(0, 0)];
+    let (mut braces, mut environments, mut open) = (0i32, 0i32, 0usize);
     let bytes = latex.as_bytes();
     let mut i = 0;
     while i < bytes.len() {
         let rest = &latex[i..];
-        if let Some(length) = ["\\left", "\\begin"]
-            .iter()
-            .find_map(|c| command_at(rest, c))
-        {
-            depth += 1;
+        if let Some(length) = command_at(rest, "\\left") {
+            open += 1;
             i += length;
             continue;
         }
-        if let Some(length) = ["\\right", "\\end"]
-            .iter()
-            .find_map(|c| command_at(rest, c))
-        {
-            depth -= 1;
+        if let Some(length) = command_at(rest, "\\right") {
+            open = open.saturating_sub(1);
+            i += length;
+            continue;
+        }
+        if let Some(length) = command_at(rest, "\\begin") {
+            environments += 1;
+            i += length;
+            continue;
+        }
+        if let Some(length) = command_at(rest, "\\end") {
+            environments -= 1;
             i += length;
             continue;
         }
         match bytes[i] {
             b'\\' => i += 1, // `\{`, `\}`, `\\` are not groups
-            b'{' => depth += 1,
-            b'}' => depth -= 1,
-            b'+' | b'-' | b'=' if depth == 0 && i > 0 && bytes[i - 1] == b' ' => {
-                pieces.push(&latex[start..i]);
-                start = i;
+            b'{' => braces += 1,
+            b'}' => braces -= 1,
+            b'+' | b'-' | b'='
+                if braces == 0 && environments == 0 && i > 0 && bytes[i - 1] == b' ' =>
+            {
+                starts.push((i, open));
             }
             _ => {}
         }
         i += 1;
     }
-    pieces.push(&latex[start..]);
+    let ends = starts
+        .iter()
+        .skip(1)
+        .map(|&(at, _)| at)
+        .chain([latex.len()]);
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
     let mut line_width = 0;
-    for piece in pieces {
+    for (&(start, open), end) in starts.iter().zip(ends) {
+        let piece = &latex[start..end];
         let piece_width = printed_width(piece);
         // A short piece (`= 0`) stays on its line rather than standing alone.
         if line_width > 0 && line_width + piece_width > width && piece_width > 6 {
+            line.push_str(&"\\right.".repeat(open));
             lines.push(line.trim().to_string());
-            line.clear();
+            line = "\\left.".repeat(open);
+            if open > 0 {
+                line.push(' ');
+            }
             line_width = 0;
         }
         line.push_str(piece);
@@ -356,10 +374,11 @@ mod tests {
             break_lines(latex, 10),
             "aaaaaaa \\\\ + bbbbbbb \\\\ + ccccccc = 0"
         );
-        let grouped = "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) + {ddddddd - eeeeeee} = 0";
+        let grouped =
+            "x = \\left(aaaaaaa + \\sqrt{bbbbbbb + ccccccc}\\right)^{2} + {ddddddd - eeeeeee}";
         assert_eq!(
             break_lines(grouped, 10),
-            "\\left(aaaaaaa + bbbbbbb + ccccccc\\right) \\\\ + {ddddddd - eeeeeee} = 0"
+            "x = \\left(aaaaaaa \\right. \\\\ \\left. + \\sqrt{bbbbbbb + ccccccc}\\right)^{2} \\\\ + {ddddddd - eeeeeee}"
         );
         let matrix = "\\begin{bmatrix} aaaaaaa - bbbbbbb \\end{bmatrix}";
         assert_eq!(break_lines(matrix, 3), matrix);
