@@ -39,6 +39,9 @@ pub struct Compiled {
     energy_output: usize,
     conservative: bool,
     dissipative_only: bool,
+    outputs: usize,
+    // Reused between evaluations, so a solve allocates no program-sized buffer.
+    scratch: std::cell::RefCell<Vec<f64>>,
 }
 
 /// The solution at one state.
@@ -113,6 +116,8 @@ impl Compiled {
             program,
             reactions,
             energy_output,
+            outputs: outputs.len(),
+            scratch: std::cell::RefCell::new(Vec::new()),
             conservative: problem.loads.iter().all(|l| is_conservative(&l.kind)),
             dissipative_only: problem
                 .loads
@@ -136,7 +141,10 @@ impl Compiled {
         inputs.extend_from_slice(q);
         inputs.extend_from_slice(rates);
         inputs.push(t);
-        let values = self.program.eval(&inputs);
+        let mut scratch = self.scratch.take();
+        let mut values = vec![0.0; self.outputs];
+        self.program.run(&inputs, &mut scratch, &mut values);
+        self.scratch.replace(scratch);
         let n = self.unknowns;
         let a = DMatrix::from_row_slice(n, n, &values[..n * n]);
         let b = DVector::from_column_slice(&values[n * n..n * n + n]);

@@ -366,8 +366,11 @@ fn choose_at(
     wanted: &[Symbol],
     states: &[Values],
 ) -> Choice {
-    let mut written: Vec<(usize, Equation)> = Vec::new();
     let mut rejected: Vec<(usize, Rejected)> = Vec::new();
+    // Candidates free of unwanted reactions, by tier: free bodies of one body first, then
+    // of two, and so on. A tier is written out only while the rows so far are not enough,
+    // since writing out a row of a large free body is what costs.
+    let mut tiers: std::collections::BTreeMap<usize, Vec<(usize, Candidate)>> = Default::default();
     for (index, candidate) in candidates.into_iter().enumerate() {
         let unwanted: Vec<&Symbol> = candidate
             .reactions
@@ -375,43 +378,49 @@ fn choose_at(
             .filter(|u| !wanted.contains(u))
             .collect();
         if unwanted.is_empty() {
-            written.push((
-                index,
-                write_out(model, actions, inertia, &candidate, wanted),
-            ));
+            tiers
+                .entry(candidate.free_body.len())
+                .or_default()
+                .push((index, candidate));
         } else {
             let reason = unwanted_reason(&unwanted);
             rejected.push((index, Rejected { candidate, reason }));
         }
     }
-    // Sparse rows first (fewest unknowns), then the fewest terms.
-    written.sort_by_key(|(i, e)| (e.unknowns.len(), e.expression.operation_count(), *i));
     let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
     let mut chosen: Vec<(usize, Equation)> = Vec::new();
-    for (index, equation) in written {
-        let reason = if equation.unknowns.is_empty() {
-            Some("contains no unknown".to_string())
-        } else if bases[0].len() == wanted.len() {
-            Some("not needed: the rows chosen already determine every unknown".to_string())
-        } else if !adds_rank_everywhere(&mut bases, &equation, wanted, states) {
-            Some("adds nothing new: it follows from the rows already chosen".to_string())
-        } else {
-            None
-        };
-        match reason {
-            Some(reason) => {
-                let candidate = Candidate {
-                    free_body: equation.free_body.clone(),
-                    sum: equation.sum.clone(),
-                    direction: equation
-                        .direction
-                        .clone()
-                        .unwrap_or_else(|| unit_direction(model, BodyId::GROUND, 0)),
-                    reactions: Vec::new(),
-                };
+    for (_, tier) in tiers {
+        if bases[0].len() == wanted.len() {
+            for (index, candidate) in tier {
+                let reason =
+                    "not needed: the rows chosen already determine every unknown".to_string();
                 rejected.push((index, Rejected { candidate, reason }));
             }
-            None => chosen.push((index, equation)),
+            continue;
+        }
+        let mut written: Vec<(usize, Candidate, Equation)> = tier
+            .into_iter()
+            .map(|(index, candidate)| {
+                let equation = write_out(model, actions, inertia, &candidate, wanted);
+                (index, candidate, equation)
+            })
+            .collect();
+        // Sparse rows first (fewest unknowns), then the fewest terms.
+        written.sort_by_key(|(i, _, e)| (e.unknowns.len(), e.expression.operation_count(), *i));
+        for (index, candidate, equation) in written {
+            let reason = if equation.unknowns.is_empty() {
+                Some("contains no unknown".to_string())
+            } else if bases[0].len() == wanted.len() {
+                Some("not needed: the rows chosen already determine every unknown".to_string())
+            } else if !adds_rank_everywhere(&mut bases, &equation, wanted, states) {
+                Some("adds nothing new: it follows from the rows already chosen".to_string())
+            } else {
+                None
+            };
+            match reason {
+                Some(reason) => rejected.push((index, Rejected { candidate, reason })),
+                None => chosen.push((index, equation)),
+            }
         }
     }
     chosen.sort_by_key(|(i, _)| *i);

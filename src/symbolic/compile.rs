@@ -9,6 +9,7 @@ use std::collections::HashMap;
 enum Instr {
     Const(f64),
     Add(usize, usize),
+    Sub(usize, usize),
     Mul(usize, usize),
     Neg(usize),
     Recip(usize),
@@ -70,12 +71,15 @@ impl Program {
 
     /// Evaluates every output; `scratch` is reused between calls to avoid allocation.
     pub fn run(&self, inputs: &[f64], scratch: &mut Vec<f64>, outputs: &mut [f64]) {
+        let start = self.inputs.len();
         scratch.clear();
-        scratch.extend_from_slice(&inputs[..self.inputs.len()]);
-        for instr in &self.instructions {
+        scratch.resize(start + self.instructions.len(), 0.0);
+        scratch[..start].copy_from_slice(&inputs[..start]);
+        for (i, instr) in self.instructions.iter().enumerate() {
             let value = match *instr {
                 Instr::Const(x) => x,
                 Instr::Add(a, b) => scratch[a] + scratch[b],
+                Instr::Sub(a, b) => scratch[a] - scratch[b],
                 Instr::Mul(a, b) => scratch[a] * scratch[b],
                 Instr::Neg(a) => -scratch[a],
                 Instr::Recip(a) => 1.0 / scratch[a],
@@ -83,7 +87,7 @@ impl Program {
                 Instr::Pow(a, b) => power(scratch[a], scratch[b]),
                 Instr::Func(f, a, b) => apply(f, scratch[a], scratch[b]),
             };
-            scratch.push(value);
+            scratch[start + i] = value;
         }
         for (out, slot) in outputs.iter_mut().zip(&self.outputs) {
             *out = scratch[*slot];
@@ -143,23 +147,14 @@ impl Compiler {
                 None => self.constant_slot(f64::NAN),
             },
             Node::Add(terms) => {
-                let mut slots: Vec<(bool, usize)> = terms.iter().map(|t| self.signed(t)).collect();
-                slots.sort_by_key(|(negative, _)| *negative);
-                let (first_negative, first) = slots[0];
-                let mut acc = if first_negative {
-                    self.emit(Instr::Neg(first))
+                let plan =
+                    super::horner::factor(terms.iter().map(super::horner::monomial).collect());
+                let (negative, slot) = self.plan(&plan);
+                if negative {
+                    self.emit(Instr::Neg(slot))
                 } else {
-                    first
-                };
-                for &(negative, slot) in &slots[1..] {
-                    let operand = if negative {
-                        self.emit(Instr::Neg(slot))
-                    } else {
-                        slot
-                    };
-                    acc = self.emit(Instr::Add(acc, operand));
+                    slot
                 }
-                acc
             }
             Node::Mul(factors) => {
                 let slots: Vec<usize> = factors.iter().map(|f| self.slot(f)).collect();
@@ -191,14 +186,59 @@ impl Compiler {
         }
     }
 
-    /// A term as (negated, slot of its magnitude), so that `a - b` costs one subtraction.
-    fn signed(&mut self, term: &Expr) -> (bool, usize) {
-        let (coefficient, rest) = term.split_coefficient();
-        if coefficient.is_negative() && !rest.is_one() {
-            let magnitude = super::build::mul([Expr::num(coefficient.neg()), rest]);
-            (true, self.slot(&magnitude))
-        } else {
-            (false, self.slot(term))
+    /// Emits a factoring plan; returns (negated, slot of the magnitude), so that `a - b`
+    /// costs one subtraction.
+    fn plan(&mut self, plan: &super::horner::Plan) -> (bool, usize) {
+        use super::horner::Plan;
+        match plan {
+            Plan::Term((coefficient, factors)) => {
+                let negative = coefficient.is_negative();
+                let magnitude = if negative {
+                    coefficient.neg()
+                } else {
+                    *coefficient
+                };
+                let mut slots: Vec<usize> = factors
+                    .iter()
+                    .map(|(base, k)| {
+                        let power = if *k == 1 {
+                            base.clone()
+                        } else {
+                            super::build::pow(base.clone(), Expr::int(*k))
+                        };
+                        self.slot(&power)
+                    })
+                    .collect();
+                if !magnitude.is_one() || slots.is_empty() {
+                    slots.insert(0, self.constant_slot(magnitude.to_f64()));
+                }
+                let mut acc = slots[0];
+                for &s in &slots[1..] {
+                    acc = self.emit(Instr::Mul(acc, s));
+                }
+                (negative, acc)
+            }
+            Plan::Product(base, inner) => {
+                let b = self.slot(base);
+                let (negative, s) = self.plan(inner);
+                (negative, self.emit(Instr::Mul(b, s)))
+            }
+            Plan::Sum(parts) => {
+                let mut signed: Vec<(bool, usize)> = parts.iter().map(|p| self.plan(p)).collect();
+                signed.sort_by_key(|(negative, _)| *negative);
+                let all_negative = signed[0].0;
+                let mut acc = signed[0].1;
+                for &(negative, s) in &signed[1..] {
+                    // With every part negative, sum the magnitudes and negate once.
+                    let subtract = negative && !all_negative;
+                    acc = self.emit(if subtract {
+                        Instr::Sub(acc, s)
+                    } else {
+                        Instr::Add(acc, s)
+                    });
+                }
+                (all_negative, acc)
+            }
         }
     }
 }

@@ -7,6 +7,7 @@ pub mod diff;
 pub mod eval;
 pub mod expr;
 pub mod hint;
+pub mod horner;
 pub mod linear;
 pub mod number;
 pub mod parse;
