@@ -391,3 +391,51 @@ fn explain_directory_goes_on_past_failures_and_lists_them() {
         .expect("runs");
     assert_eq!(output.status.code(), Some(2));
 }
+
+/// Hostile text in every free-text field of a problem file (title, statement, units,
+/// descriptions, load names) and names with underscores, through the whole pipeline.
+#[test]
+fn hostile_problem_file_renders_safely_in_every_format() {
+    let problem = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/render/hostile-problem.json");
+    let dir = scratch("hostile-problem");
+    let explain = |format: &str, student: bool, target: &Path| {
+        let mut command = binary();
+        command
+            .args(["explain", "--format", format, "-o"])
+            .arg(target)
+            .arg(&problem);
+        if student {
+            command.arg("--student");
+        }
+        let output = command.output().expect("runs");
+        assert!(
+            output.status.success(),
+            "{format}: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        std::fs::read_to_string(target).expect("written")
+    };
+    for student in [false, true] {
+        let suffix = if student { "-student" } else { "" };
+        let html = explain("html", student, &dir.join(format!("hostile{suffix}.html")));
+        let lower = html.to_lowercase();
+        assert!(
+            !lower.contains("<script") && !lower.contains("<img src=x") && !lower.contains("<b>")
+        );
+        assert!(
+            html.contains("{{ x }} &lt;script&gt;alert(1)&lt;&#x2F;script&gt;"),
+            "title not kept"
+        );
+        let markdown = explain(
+            "markdown",
+            student,
+            &dir.join(format!("hostile{suffix}.md")),
+        );
+        assert!(!markdown.contains("<script") && !markdown.contains("<img src=x"));
+        let latex = explain("latex", student, &dir.join(format!("hostile{suffix}.tex")));
+        if pdflatex_present() {
+            let log = compile(&dir, &format!("compiled{suffix}"), &latex);
+            assert!(!log.contains("passwd"), "the log mentions passwd:\n{log}");
+        }
+    }
+}

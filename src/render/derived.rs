@@ -15,7 +15,7 @@ use crate::numeric::simulate::simulate;
 use crate::numeric::system::System;
 use crate::plan::forces::{ActionKind, Category};
 use crate::problem::{BodyId, Problem};
-use crate::symbolic::print::{latex, latex_unit_vector};
+use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Expr, Node, Symbol};
 use crate::Error;
@@ -179,16 +179,18 @@ fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
             }
             for &body in set {
                 let name = problem.body_name(body);
+                // In math a name is set as a symbol (`rod_a` would be a double subscript).
+                let symbol = latex_name(name);
                 let mass = latex(&model.bodies[body.0].mass);
                 view.inertia.push(Force {
                     label: format!("inertia force of {name}"),
-                    vector_tex: format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{name}^*}}"),
-                    point_tex: format!("\\text{{at }} {name}^*"),
+                    vector_tex: format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}"),
+                    point_tex: format!("\\text{{at }} {symbol}^*"),
                 });
                 view.inertia.push(Force {
                     label: format!("inertia torque of {name}"),
                     vector_tex: format!(
-                        "-\\boldsymbol{{\\alpha}}^{{{name}}} \\cdot \\mathbf{{I}}^{{{name}}} - \\boldsymbol{{\\omega}}^{{{name}}} \\times \\mathbf{{I}}^{{{name}}} \\cdot \\boldsymbol{{\\omega}}^{{{name}}}"
+                        "-\\boldsymbol{{\\alpha}}^{{{symbol}}} \\cdot \\mathbf{{I}}^{{{symbol}}} - \\boldsymbol{{\\omega}}^{{{symbol}}} \\times \\mathbf{{I}}^{{{symbol}}} \\cdot \\boldsymbol{{\\omega}}^{{{symbol}}}"
                     ),
                     point_tex: "\\text{couple}".into(),
                 });
@@ -264,22 +266,23 @@ fn kinematics(model: &Model) -> Vec<Kinematics> {
         .map(|&body| {
             let state = &model.bodies[body.0];
             let name = model.problem.body_name(body);
+            let symbol = latex_name(name);
             Kinematics {
                 body: name.to_string(),
                 omega_tex: format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} = {}",
+                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
                     shortest_tex(model, &state.omega, body)
                 ),
                 alpha_tex: format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{name}}} = {}",
+                    "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
                     shortest_tex(model, &state.alpha, body)
                 ),
                 velocity_tex: format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {}",
+                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
                     shortest_tex(model, &state.center.velocity, body)
                 ),
                 acceleration_tex: format!(
-                    "{{}}^{{N}}\\mathbf{{a}}^{{{name}^*}} = {}",
+                    "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
                     shortest_tex(model, &state.center.acceleration, body)
                 ),
             }
