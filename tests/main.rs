@@ -6,3 +6,4 @@ mod library;
 mod methods;
 mod render;
 mod support;
+mod snapshots_by_problem;

@@ -216,7 +216,8 @@ fn unknowns_tex(unknowns: &[Symbol]) -> String {
         .join(", ")
 }
 
-fn plan(derivation: &Derivation) -> Plan {
+/// Step 3: the planner's table, the rejected candidates and the counts.
+pub fn plan(derivation: &Derivation) -> Plan {
     let problem = derivation.model.problem;
     let rows = derivation
         .rows
@@ -302,7 +303,8 @@ fn group_tex(e: &Expr) -> String {
     }
 }
 
-fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
+/// Step 5: one row, grouped as the Motion Law groups it and simplified.
+pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let problem = derivation.model.problem;
     let g = &row.groups;
     let grouped = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque]
