@@ -37,6 +37,12 @@ pub struct Common {
     /// Write there instead of standard output; a failed run leaves an existing file untouched.
     #[arg(short, long)]
     pub output: Option<PathBuf>,
+    /// Refuse problems with more bodies than this, whose derivation could take hours.
+    #[arg(long, value_name = "N", default_value_t = crate::cmd::MAX_BODIES)]
+    pub max_bodies: usize,
+    /// Refuse problems with more coordinates than this, whose derivation could take hours.
+    #[arg(long, value_name = "N", default_value_t = crate::cmd::MAX_COORDINATES)]
+    pub max_coordinates: usize,
 }
 
 /// The commands.

@@ -5,5 +5,6 @@ mod kinematics;
 mod library;
 mod methods;
 mod render;
+mod robustness;
 mod support;
 mod snapshots_by_problem;

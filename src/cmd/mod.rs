@@ -7,7 +7,9 @@ pub mod simulate;
 pub mod solve;
 
 use crate::cli::Command;
+use crate::problem::{ProblemError, ProblemErrors};
 use crate::Error;
+use std::path::Path;
 
 /// Runs one command.
 ///
@@ -32,13 +34,98 @@ pub fn method(arg: crate::cli::MethodArg) -> crate::equations::Method {
     }
 }
 
-/// Loads the problem named on the command line and applies `--set`.
+/// The most bodies that `explain`, `solve` and `simulate` derive unless `--max-bodies`
+/// raises it: the symbolic work grows steeply with the size of the system.
+pub const MAX_BODIES: usize = 30;
+
+/// The most coordinates those commands derive unless `--max-coordinates` raises it.
+pub const MAX_COORDINATES: usize = 60;
+
+/// Loads the problem named on the command line and applies `--set`, refusing an output
+/// file that is the problem file and a problem beyond the size limits.
 ///
 /// # Errors
-/// An unreadable or invalid problem, or a `--set` that names no constant.
+/// A usage error when `-o` names the problem file; an unreadable or invalid problem, a
+/// `--set` that names no constant, or more bodies or coordinates than the limits allow.
 pub fn load_with_overrides(common: &crate::cli::Common) -> Result<crate::problem::Problem, Error> {
+    refuse_overwriting(&common.problem, common.output.as_deref())?;
     let mut problem = crate::problem::load_file(&common.problem)?;
     let overrides = crate::cli::parse_assignments(&common.set)?;
     crate::problem::apply_overrides(&mut problem, &overrides)?;
+    check_size(&problem, common)?;
     Ok(problem)
+}
+
+/// A usage error when `output` is the file `problem` (under any name, links included):
+/// writing the result there would destroy the problem.
+///
+/// # Errors
+/// [`Error::Usage`] naming the file.
+pub fn refuse_overwriting(problem: &Path, output: Option<&Path>) -> Result<(), Error> {
+    let Some(output) = output else {
+        return Ok(());
+    };
+    if same_file(problem, output) {
+        return Err(Error::Usage(format!(
+            "refusing to overwrite the problem file {} with the output: name another file with -o",
+            output.display()
+        )));
+    }
+    Ok(())
+}
+
+fn same_file(a: &Path, b: &Path) -> bool {
+    // An output that does not exist yet cannot be the problem.
+    let (Ok(ca), Ok(cb)) = (a.canonicalize(), b.canonicalize()) else {
+        return false;
+    };
+    if ca == cb {
+        return true;
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if let (Ok(ma), Ok(mb)) = (std::fs::metadata(&ca), std::fs::metadata(&cb)) {
+            return ma.dev() == mb.dev() && ma.ino() == mb.ino();
+        }
+    }
+    false
+}
+
+/// An error naming the limit and the flag that raises it, for a problem beyond
+/// `--max-bodies` or `--max-coordinates`.
+fn check_size(problem: &crate::problem::Problem, common: &crate::cli::Common) -> Result<(), Error> {
+    let limits = [
+        (
+            "bodies",
+            "bodies",
+            problem.bodies.len(),
+            common.max_bodies,
+            "--max-bodies",
+        ),
+        (
+            "joints",
+            "coordinates",
+            problem.coordinates.len(),
+            common.max_coordinates,
+            "--max-coordinates",
+        ),
+    ];
+    let errors: Vec<ProblemError> = limits
+        .into_iter()
+        .filter(|&(_, _, count, limit, _)| count > limit)
+        .map(|(path, what, count, limit, flag)| ProblemError {
+            path: path.to_string(),
+            column: None,
+            message: format!(
+                "the problem has {count} {what}, more than the limit of {limit}: deriving its equations could take hours"
+            ),
+            hint: Some(format!("raise the limit with {flag} {count}")),
+        })
+        .collect();
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::Problem(ProblemErrors(errors)))
+    }
 }

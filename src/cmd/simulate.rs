@@ -3,7 +3,9 @@
 use crate::cli::Common;
 use crate::equations::derive;
 use crate::numeric::evaluate::Compiled;
-use crate::numeric::simulate::{simulate_with_limits, Limits};
+use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
+use crate::numeric::SolveError;
+use crate::problem::{ProblemError, ProblemErrors};
 use crate::Error;
 use clap::ValueEnum;
 
@@ -48,6 +50,14 @@ pub fn run(args: Args) -> Result<(), Error> {
         }
         problem.simulate.duration = duration;
     }
+    // The output's size is known before any work: refuse it before deriving.
+    if let Err(e) = output_times(
+        problem.simulate.duration,
+        problem.simulate.output_step,
+        args.max_rows,
+    ) {
+        return Err(too_many_rows(e));
+    }
     let derivation = derive(&problem, super::method(args.common.method))?;
     let compiled = Compiled::new(&derivation);
     let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
@@ -56,7 +66,8 @@ pub fn run(args: Args) -> Result<(), Error> {
         max_rows: args.max_rows,
         ..Limits::default()
     };
-    let trajectory = simulate_with_limits(&compiled, &q0, &rates0, &problem.simulate, &limits)?;
+    let trajectory = simulate_with_limits(&compiled, &q0, &rates0, &problem.simulate, &limits)
+        .map_err(too_many_rows)?;
     let text = match args.format {
         Format::Csv => trajectory.to_csv(),
         Format::Json => trajectory.to_json(),
@@ -65,5 +76,20 @@ pub fn run(args: Args) -> Result<(), Error> {
     match trajectory.stopped {
         Some(reason) => Err(Error::Solve(reason)),
         None => Ok(()),
+    }
+}
+
+/// [`SolveError::TooManyRows`] as an error that names `--max-rows`; other errors as they are.
+fn too_many_rows(error: SolveError) -> Error {
+    match error {
+        SolveError::TooManyRows { rows, limit } => Error::Problem(ProblemErrors(vec![ProblemError {
+            path: "simulate.output_step".into(),
+            column: None,
+            message: format!("the simulation would write {rows} rows, more than the limit of {limit}"),
+            hint: Some(format!(
+                "shorten `duration`, lengthen `output_step`, or raise the limit with --max-rows {rows}"
+            )),
+        }])),
+        other => Error::Solve(other),
     }
 }

@@ -224,6 +224,14 @@ fn describe_syntax_error(e: &serde_json::Error) -> String {
     // serde_json appends " at line L column C"; say it once, in our words.
     let text = e.to_string();
     let message = text.split(" at line ").next().unwrap_or(&text).to_string();
+    if message == "recursion limit exceeded" {
+        // serde_json's guard against a stack overflow; say what it means for the file.
+        return format!(
+            "the file is nested more than 128 levels deep at line {}, column {}",
+            e.line(),
+            e.column()
+        );
+    }
     format!(
         "the file is not valid JSON: {message} at line {}, column {}",
         e.line(),
@@ -381,7 +389,8 @@ mod tests {
     #[test]
     fn deep_nesting_is_an_error_not_a_crash() {
         let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
-        assert!(parse(&deep, &mut Diagnostics::default()).is_err());
+        let e = parse(&deep, &mut Diagnostics::default()).unwrap_err();
+        assert!(e.contains("nested more than 128 levels deep"), "{e}");
     }
 
     #[test]

@@ -138,7 +138,9 @@ impl Reader {
                 })
             }
             "spring" | "damper" => {
-                let between = self.between(fields, path);
+                let between = self
+                    .between(fields, path)
+                    .filter(|ends| self.on_two_bodies(ends, path, known));
                 let key = if type_name == "spring" {
                     "stiffness"
                 } else {
@@ -389,6 +391,28 @@ impl Reader {
             return None;
         }
         Some([a, b])
+    }
+
+    /// Whether the two ends of a spring or damper are on different bodies; if not, an
+    /// error: a rigid body cannot stretch an element between two of its own points.
+    fn on_two_bodies(&mut self, ends: &[PointRef; 2], path: &str, known: &Known) -> bool {
+        let body = |point: PointRef| match point {
+            PointRef::Named(i) => known.points.get(i).map(|p| p.on),
+            PointRef::MassCenter(b) | PointRef::Origin(b) => Some(b),
+            PointRef::Joint(j) => known.joints.get(j).map(|joint| joint.child),
+        };
+        match (body(ends[0]), body(ends[1])) {
+            (Some(a), Some(b)) if a == b => {
+                let name = self.names.body_name(a).to_string();
+                self.diag.hint(
+                    &key_path(path, "between"),
+                    format!("both points are on `{name}`, so the element can never stretch"),
+                    "connect points of two different bodies",
+                );
+                false
+            }
+            _ => true,
+        }
     }
 
     /// `joint` and `coordinate` of a joint load: the coordinate must be the joint's.

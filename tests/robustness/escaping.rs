@@ -1,0 +1,237 @@
+//! Hostile text in a problem file, end to end through `explain`: LaTeX that compiles
+//! without reading any file the text names, HTML without a script, and Markdown where
+//! template syntax stays literal text.
+
+use super::scratch;
+use serde_json::Value;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+/// Text that would act if it reached TeX, a browser or Tera unescaped. `canary.tex` is a
+/// file in the working directory that announces itself in the log if TeX ever reads it.
+const HOSTILE: [&str; 6] = [
+    r"\input{/etc/passwd}",
+    r"\input{canary}\immediate\write18{touch pwned}",
+    "<script>alert(1)</script><SCRIPT src=x></SCRIPT>",
+    "{{ x }} {{ __tera_context }}",
+    "{% raw %}{% include \"/etc/passwd\" %}{% endraw %}",
+    "$x$ 100% & # _ ~ ^ \\\\ } { \\end{document}",
+];
+
+/// The simple pendulum with every text field (title, statement, descriptions, units)
+/// replaced by hostile text.
+fn hostile_problem(dir: &Path) -> std::path::PathBuf {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/simple-pendulum.json"
+    ))
+    .expect("read");
+    let mut problem: Value = serde_json::from_str(&text).expect("JSON");
+    let all = HOSTILE.join(" ");
+    problem["title"] = Value::from(format!("Pendulum {}", HOSTILE[0]));
+    problem["statement"] = Value::from(HOSTILE.join("\n\n"));
+    let mut i = 0;
+    let mut next = || {
+        i += 1;
+        Value::from(HOSTILE[i % HOSTILE.len()])
+    };
+    for section in ["constants", "coordinates", "bodies"] {
+        if let Some(map) = problem[section].as_object_mut() {
+            for entry in map.values_mut() {
+                if let Some(fields) = entry.as_object_mut() {
+                    fields.insert("description".into(), next());
+                    if section != "bodies" {
+                        fields.insert("unit".into(), next());
+                    }
+                }
+            }
+        }
+    }
+    problem["bodies"]["bob"]["description"] = Value::from(all);
+    let path = dir.join("hostile.json");
+    std::fs::write(&path, serde_json::to_string_pretty(&problem).expect("JSON")).expect("written");
+    path
+}
+
+fn explain(problem: &Path, format: &str, out: &Path, student: bool) -> String {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_mbd-tutor"));
+    command
+        .arg("explain")
+        .arg(problem)
+        .args(["--format", format, "-o"])
+        .arg(out);
+    if student {
+        command.arg("--student");
+    }
+    let output = command.output().expect("the binary runs");
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "explain --format {format}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    std::fs::read_to_string(out).expect("written")
+}
+
+/// Whether pdflatex can be run; without it the LaTeX check is skipped, except in CI.
+fn pdflatex_present() -> bool {
+    let present = Command::new("pdflatex")
+        .arg("--version")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok();
+    if !present {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "pdflatex is missing, and CI must compile the LaTeX"
+        );
+        eprintln!("notice: pdflatex not found; the hostile LaTeX was not compiled");
+    }
+    present
+}
+
+#[test]
+fn latex_compiles_and_reads_no_file_the_text_names() {
+    let dir = scratch("hostile-latex");
+    let problem = hostile_problem(&dir);
+    std::fs::write(
+        dir.join("canary.tex"),
+        "\\immediate\\write16{CANARY-WAS-READ}\n",
+    )
+    .expect("written");
+    for (name, student) in [("solution", false), ("handout", true)] {
+        let tex = explain(&problem, "latex", &dir.join(format!("{name}.tex")), student);
+        assert!(
+            !tex.contains(r"\input{/etc/passwd}"),
+            "{name}: the command survived unescaped"
+        );
+        assert!(
+            !tex.contains(r"\input{canary}"),
+            "{name}: the command survived unescaped"
+        );
+        assert!(
+            !tex.contains(r"\write18"),
+            "{name}: the command survived unescaped"
+        );
+        if !pdflatex_present() {
+            continue;
+        }
+        let output = Command::new("pdflatex")
+            .args([
+                "-interaction=nonstopmode",
+                "-halt-on-error",
+                "-no-shell-escape",
+            ])
+            .arg(format!("{name}.tex"))
+            .current_dir(&dir)
+            .stdin(Stdio::null())
+            .output()
+            .expect("pdflatex runs");
+        let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
+        let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
+        assert!(
+            output.status.success() && errors.is_empty(),
+            "{name}: pdflatex failed: {errors:?}"
+        );
+        assert!(dir.join(format!("{name}.pdf")).is_file(), "{name}: no PDF");
+        // pdflatex logs every file it opens as "(path"; the canary logs itself if read.
+        assert!(
+            !log.contains("(/etc/passwd"),
+            "{name}: /etc/passwd was read"
+        );
+        assert!(
+            !log.contains("CANARY-WAS-READ"),
+            "{name}: canary.tex was read"
+        );
+        assert!(!dir.join("pwned").exists(), "{name}: a shell command ran");
+    }
+    std::fs::remove_dir_all(&dir).expect("removed");
+}
+
+#[test]
+fn html_holds_no_script() {
+    let dir = scratch("hostile-html");
+    let problem = hostile_problem(&dir);
+    for (name, student) in [("solution", false), ("handout", true)] {
+        let html = explain(&problem, "html", &dir.join(format!("{name}.html")), student);
+        assert!(
+            !html.to_lowercase().contains("<script"),
+            "{name}: a script element"
+        );
+        assert!(!html.to_lowercase().contains("<\\/script"), "{name}");
+        // The text is shown, escaped, not dropped.
+        assert!(
+            html.contains("&lt;script&gt;alert(1)&lt;&#x2F;script&gt;")
+                || html.contains("&lt;script&gt;alert(1)&lt;/script&gt;"),
+            "{name}: the hostile title is not shown as text"
+        );
+        assert!(
+            html.contains("{{ x }}"),
+            "{name}: template syntax was not kept as text"
+        );
+    }
+    std::fs::remove_dir_all(&dir).expect("removed");
+}
+
+#[test]
+fn markdown_keeps_template_syntax_literally() {
+    let dir = scratch("hostile-markdown");
+    let problem = hostile_problem(&dir);
+    for (name, student) in [("solution", false), ("handout", true)] {
+        let source = explain(
+            &problem,
+            "markdown",
+            &dir.join(format!("{name}.md")),
+            student,
+        );
+        // Raw HTML passes through Markdown renderers: there must be none.
+        assert!(
+            !source.to_lowercase().contains("<script"),
+            "{name}: a script element"
+        );
+        let md = unescape(&source);
+        // Tera would have replaced `{{ x }}` (or failed on an unknown variable), dropped
+        // the raw tags and tried to include /etc/passwd: all of it is still text.
+        assert!(
+            md.contains("{{ x }}"),
+            "{name}: `{{{{ x }}}}` was evaluated"
+        );
+        assert!(
+            md.contains("{{ __tera_context }}"),
+            "{name}: the context was dumped"
+        );
+        assert!(md.contains("{% raw %}"), "{name}: raw tags were evaluated");
+        assert!(
+            md.contains("{% include"),
+            "{name}: the include was evaluated"
+        );
+        assert!(
+            !md.contains("root:x:0:0"),
+            "{name}: /etc/passwd was included"
+        );
+    }
+    std::fs::remove_dir_all(&dir).expect("removed");
+}
+
+/// The text that a CommonMark renderer shows for `markdown`'s backslash escapes: a
+/// backslash before ASCII punctuation stands for that character.
+fn unescape(markdown: &str) -> String {
+    let mut out = String::with_capacity(markdown.len());
+    let mut chars = markdown.chars().peekable();
+    while let Some(c) = chars.next() {
+        match chars.peek() {
+            Some(&next) if c == '\\' && next.is_ascii_punctuation() => {
+                out.push(next);
+                chars.next();
+            }
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+#[test]
+fn unescape_follows_commonmark() {
+    assert_eq!(unescape(r"\{\{ x \}\} \_a\\b c\d"), r"{{ x }} _a\b c\d");
+}

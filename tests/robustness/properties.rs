@@ -1,0 +1,159 @@
+//! Generated cases: the expression parser and the problem reader never panic or hang, and
+//! every error they report says where.
+//!
+//! The counts below add up to 12,000 cases; `PROPTEST_CASES=N` runs N cases in each suite
+//! instead (the long campaign in TESTING.md).
+
+use super::generate::{self, CONSTANTS, COORDINATES, FRAMES};
+use super::harness::check;
+use super::{mutate, problem_texts};
+use mbd_tutor::symbolic::parse::{parse, ParseError, Resolve};
+use mbd_tutor::symbolic::{print, Expr, Symbol};
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+use serde_json::Value;
+
+/// A small name scope: three constants, two coordinates with rates, time and two frames.
+struct Scope;
+
+impl Resolve for Scope {
+    fn name(&self, name: &str, primes: u8, column: usize) -> Result<Expr, ParseError> {
+        if CONSTANTS.contains(&name) && primes == 0 {
+            Ok(Expr::constant(name))
+        } else if COORDINATES.contains(&name) && primes <= 2 {
+            Ok(Expr::coord(name, primes))
+        } else if name == "t" && primes == 0 {
+            Ok(Expr::time())
+        } else {
+            Err(ParseError::new(column, format!("unknown name `{name}`")))
+        }
+    }
+
+    fn unit_vector(&self, frame: &str, axis: &str, column: usize) -> Result<Expr, ParseError> {
+        let index = ["x", "y", "z"].iter().position(|a| *a == axis);
+        match index {
+            Some(i) if FRAMES.contains(&frame) => {
+                Ok(Expr::sym(Symbol::UnitVector(frame.into(), i as u8)))
+            }
+            _ => Err(ParseError::new(
+                column,
+                format!("no unit vector `{frame}.{axis}`"),
+            )),
+        }
+    }
+}
+
+/// Parses `text`: a result, or an error whose column lies inside the text (or just past
+/// its end) with a message. A result must print as LaTeX without panicking.
+pub fn parses_or_says_where(text: &str) -> Result<(), TestCaseError> {
+    match parse(text, &Scope) {
+        Ok(e) => {
+            let _ = print::latex(&e);
+            let _ = print::plain(&e);
+            Ok(())
+        }
+        Err(e) => {
+            let end = text.chars().count() + 1;
+            prop_assert!(
+                (1..=end).contains(&e.column),
+                "column {} outside 1..={end} for {text:?}: {}",
+                e.column,
+                e.message
+            );
+            prop_assert!(!e.message.is_empty(), "an empty message for {text:?}");
+            Ok(())
+        }
+    }
+}
+
+/// Loads `text`: a problem, or errors that each name a JSON path, except that a text that
+/// is not JSON, or whose top level is not an object, gets one error about the file.
+pub fn loads_or_says_where(text: &str) -> Result<(), TestCaseError> {
+    let Err(errors) = mbd_tutor::problem::load(text) else {
+        return Ok(());
+    };
+    let report = errors.to_string();
+    prop_assert!(!errors.0.is_empty(), "an error without errors: {report}");
+    prop_assert!(errors.0.iter().all(|e| !e.message.is_empty()), "{report}");
+    let pathless = errors.0.iter().filter(|e| e.path.is_empty()).count();
+    match serde_json::from_str::<Value>(text) {
+        // Not JSON: one error about the file.
+        Err(_) => prop_assert!(errors.0.len() == 1 && pathless == 1, "{report}"),
+        // Every error names its path.
+        Ok(Value::Object(_)) => prop_assert!(pathless == 0, "errors without a JSON path: {report}"),
+        // The top level is not an object: that one error has no path; repeated keys
+        // inside it still name theirs.
+        Ok(_) => prop_assert!(pathless == 1, "{report}"),
+    }
+    Ok(())
+}
+
+#[test]
+fn parser_on_token_soup() {
+    check(
+        "parser_on_token_soup",
+        3_000,
+        generate::token_soup,
+        |text| parses_or_says_where(text),
+    );
+}
+
+#[test]
+fn parser_on_well_formed_expressions() {
+    check(
+        "parser_on_well_formed_expressions",
+        2_000,
+        generate::well_formed,
+        |text| parses_or_says_where(text),
+    );
+}
+
+#[test]
+fn reader_on_random_json() {
+    check(
+        "reader_on_random_json",
+        1_500,
+        generate::json_value,
+        |value| loads_or_says_where(&mutate::write(value)),
+    );
+}
+
+#[test]
+fn reader_on_problem_shaped_json() {
+    check(
+        "reader_on_problem_shaped_json",
+        1_500,
+        generate::problem_shaped,
+        |value| loads_or_says_where(&mutate::write(value)),
+    );
+}
+
+fn mutated_problems() -> impl Strategy<Value = (usize, Vec<(usize, generate::Mutation)>)> {
+    (
+        any::<usize>(),
+        proptest::collection::vec(generate::mutation(), 1..5),
+    )
+}
+
+#[test]
+fn reader_on_mutated_problems() {
+    let texts = problem_texts();
+    let originals: Vec<Value> = texts
+        .iter()
+        .map(|(name, text)| {
+            serde_json::from_str(text).unwrap_or_else(|e| panic!("{name} is not JSON: {e}"))
+        })
+        .collect();
+    check(
+        "reader_on_mutated_problems",
+        4_000,
+        mutated_problems,
+        move |(which, mutations)| {
+            let mut value = originals[which % originals.len()].clone();
+            for (at, mutation) in mutations {
+                mutate::apply(&mut value, *at, mutation);
+            }
+            loads_or_says_where(&mutate::write(&value))
+        },
+    );
+}
