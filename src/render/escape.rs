@@ -106,7 +106,8 @@ fn latex_char(c: char, out: &mut String) {
         '\\' => "$\\backslash$",
         '{' => "\\{",
         '}' => "\\}",
-        '$' => "\\$",
+        // `\$` in text mode takes its glyph from a TS1 font; in math it comes from OT1.
+        '$' => "$\\$$",
         '&' => "\\&",
         '#' => "\\#",
         '%' => "\\%",
@@ -261,7 +262,7 @@ mod tests {
     #[test]
     fn latex_escapes_every_special_character() {
         let cases = [
-            ("100% & $5", "100\\% \\& \\$5"),
+            ("100% & $5", "100\\% \\& $\\$$5"),
             ("a_b#c", "a\\_b\\#c"),
             (
                 "\\input{/etc/passwd}",
