@@ -247,6 +247,14 @@ fn templates_directory_overrides_only_the_files_it_has() {
 }
 
 #[test]
+fn a_missing_templates_directory_is_an_error() {
+    let missing = scratch("no-templates").join("missing");
+    let error = render(&sample(), Format::Markdown, Some(&missing), false)
+        .expect_err("a missing directory is not the built-in templates");
+    assert!(error.to_string().contains("does not exist"), "{error}");
+}
+
+#[test]
 fn template_errors_name_the_template_and_the_cause() {
     let dir = scratch("broken");
     std::fs::write(dir.join("solution.tex.tera"), "{{ missing_variable }}\n").expect("writable");

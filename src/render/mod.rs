@@ -84,8 +84,9 @@ impl Format {
 /// [`Solution`] with its text already escaped for the format; see [`context`].
 ///
 /// # Errors
-/// When the replacement template cannot be read, does not parse, or fails to render; the
-/// error names the template and gives Tera's whole chain of causes.
+/// When `templates` is not a directory, or the replacement template cannot be read, does
+/// not parse, or fails to render; the error names the template and gives Tera's whole
+/// chain of causes.
 pub fn render(
     solution: &Solution,
     format: Format,
@@ -97,6 +98,13 @@ pub fn render(
         template: name.to_string(),
         message,
     };
+    if let Some(dir) = templates.filter(|dir| !dir.is_dir()) {
+        // A mistyped directory must not silently fall back to the built-in templates.
+        return Err(error(format!(
+            "the templates directory {} does not exist",
+            dir.display()
+        )));
+    }
     let override_path = templates
         .map(|dir| dir.join(name))
         .filter(|path| path.is_file());
