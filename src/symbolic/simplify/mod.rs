@@ -20,6 +20,7 @@
 //! rewrite thus shrinks the sum, so the passes end; [`Options::max_passes`] bounds them
 //! anyway.
 
+mod key;
 mod pythagoras;
 pub mod steps;
 mod terms;
@@ -32,7 +33,8 @@ pub use steps::Step;
 
 use crate::symbolic::build::{add, func, mul, pow};
 use crate::symbolic::expr::{Expr, Node};
-use std::collections::{HashMap, HashSet};
+use key::{hash_expr, same, Key, KeyMap, KeySet};
+use std::hash::{Hash, Hasher};
 use terms::{has_trig, Gain, Rewrite, Terms};
 
 /// What [`simplify_with`] may do.
@@ -48,10 +50,7 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Options {
-        Options {
-            double_angle: false,
-            max_passes: 64,
-        }
+        Options { double_angle: false, max_passes: 64 }
     }
 }
 
@@ -69,51 +68,69 @@ pub fn simplify_with_steps(e: &Expr) -> (Expr, Vec<Step>) {
 
 /// `e` simplified with `options`, pushing each step onto `steps` when given.
 pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>) -> Expr {
-    Simplifier {
-        options,
-        steps,
-        memo: HashMap::new(),
-    }
-    .expr(e)
+    Simplifier { options, steps, memo: KeyMap::default() }.expr(e)
 }
 
 /// The index of the shortest of `candidates` by `Expr::operation_count`, the first on a
 /// tie; 0 for an empty slice.
 pub fn shortest_of(candidates: &[Expr]) -> usize {
-    candidates
-        .iter()
-        .enumerate()
-        .min_by_key(|(i, e)| (e.operation_count(), *i))
-        .map_or(0, |(i, _)| i)
+    candidates.iter().enumerate().min_by_key(|(i, e)| (e.operation_count(), *i)).map_or(0, |(i, _)| i)
 }
 
 /// A group of terms that one rule family may rewrite together.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Debug)]
 pub(crate) enum Candidate {
     /// `sin²(arg)·cofactor`, `cos²(arg)·cofactor` and `cofactor`.
     Pythagoras { arg: Expr, cofactor: Expr },
     /// The products of `sin`/`cos` of `a` and `b` (`a < b`) times `cofactor`: the
     /// `cos·cos` and `sin·sin` ones when `cosines`, else the mixed ones.
-    AngleSum {
-        cosines: bool,
-        a: Expr,
-        b: Expr,
-        cofactor: Expr,
-    },
+    AngleSum { cosines: bool, a: Expr, b: Expr, cofactor: Expr },
     /// `sin(arg)·cos(arg)·cofactor`.
     DoubleAngle { arg: Expr, cofactor: Expr },
 }
 
 /// The angle, or pair of angles, an identity instance is about.
-type Angles = (Expr, Option<Expr>);
+type Angles = (Key, Option<Key>);
+
+impl PartialEq for Candidate {
+    fn eq(&self, other: &Candidate) -> bool {
+        use Candidate::{AngleSum, DoubleAngle, Pythagoras};
+        match (self, other) {
+            (Pythagoras { arg: x, cofactor: m }, Pythagoras { arg: y, cofactor: n })
+            | (DoubleAngle { arg: x, cofactor: m }, DoubleAngle { arg: y, cofactor: n }) => same(x, y) && same(m, n),
+            (AngleSum { cosines: c, a, b, cofactor: m }, AngleSum { cosines: d, a: x, b: y, cofactor: n }) => {
+                c == d && same(a, x) && same(b, y) && same(m, n)
+            }
+            _ => false,
+        }
+    }
+}
+
+impl Eq for Candidate {}
+
+impl Hash for Candidate {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        match self {
+            Candidate::Pythagoras { arg, cofactor } | Candidate::DoubleAngle { arg, cofactor } => {
+                matches!(self, Candidate::Pythagoras { .. }).hash(state);
+                hash_expr(arg, state);
+                hash_expr(cofactor, state);
+            }
+            Candidate::AngleSum { cosines, a, b, cofactor } => {
+                cosines.hash(state);
+                hash_expr(a, state);
+                hash_expr(b, state);
+                hash_expr(cofactor, state);
+            }
+        }
+    }
+}
 
 impl Candidate {
     fn angles(&self) -> Angles {
         match self {
-            Candidate::Pythagoras { arg, .. } | Candidate::DoubleAngle { arg, .. } => {
-                (arg.clone(), None)
-            }
-            Candidate::AngleSum { a, b, .. } => (a.clone(), Some(b.clone())),
+            Candidate::Pythagoras { arg, .. } | Candidate::DoubleAngle { arg, .. } => (Key(arg.clone()), None),
+            Candidate::AngleSum { a, b, .. } => (Key(a.clone()), Some(Key(b.clone()))),
         }
     }
 
@@ -121,12 +138,7 @@ impl Candidate {
     fn rewrite(&self, terms: &Terms) -> Option<Rewrite> {
         match self {
             Candidate::Pythagoras { arg, cofactor } => pythagoras::rewrite(terms, arg, cofactor),
-            Candidate::AngleSum {
-                cosines,
-                a,
-                b,
-                cofactor,
-            } => trig::angle_sum(terms, *cosines, a, b, cofactor),
+            Candidate::AngleSum { cosines, a, b, cofactor } => trig::angle_sum(terms, *cosines, a, b, cofactor),
             Candidate::DoubleAngle { arg, cofactor } => trig::double_angle(terms, arg, cofactor),
         }
     }
@@ -137,7 +149,7 @@ struct Simplifier<'a> {
     steps: Option<&'a mut Vec<Step>>,
     /// Simplified functions and powers: the same `cos(...)` or `(...)^(-1)` recurs in
     /// many terms.
-    memo: HashMap<Expr, Expr>,
+    memo: KeyMap<Key, Expr>,
 }
 
 impl Simplifier<'_> {
@@ -165,18 +177,22 @@ impl Simplifier<'_> {
     }
 
     fn factor(&mut self, f: &Expr) -> Expr {
-        if !matches!(f.node(), Node::Func(..) | Node::Pow(..)) || !has_trig(f) {
+        if !matches!(f.node(), Node::Func(..) | Node::Pow(..)) {
             return f.clone();
         }
-        if let Some(done) = self.memo.get(f) {
+        // Look the memo up first: the same big factor recurs in many terms, and finding
+        // out that it holds no sine or cosine costs a walk over all of it.
+        let key = Key(f.clone());
+        if let Some(done) = self.memo.get(&key) {
             return done.clone();
         }
         let done = match f.node() {
+            _ if !has_trig(f) => f.clone(),
             Node::Func(name, args) => func(*name, args.iter().map(|a| self.expr(a)).collect()),
             Node::Pow(base, exponent) => pow(self.expr(base), self.expr(exponent)),
             _ => f.clone(),
         };
-        self.memo.insert(f.clone(), done.clone());
+        self.memo.insert(key, done.clone());
         done
     }
 
@@ -187,14 +203,12 @@ impl Simplifier<'_> {
         for _ in 0..self.options.max_passes {
             let monomials = terms.monomials();
             let mut candidates = Vec::new();
-            pythagoras::candidates(&monomials, &mut candidates);
-            trig::candidates(&monomials, self.options, &mut candidates);
-            let mut seen = HashSet::with_capacity(candidates.len());
+            pythagoras::candidates(&terms, &monomials, &mut candidates);
+            trig::candidates(&terms, &monomials, self.options, &mut candidates);
+            let mut seen = KeySet::default();
             candidates.retain(|c| seen.insert(c.clone()));
-            let mut scored: Vec<(Gain, Candidate, Rewrite)> = candidates
-                .into_iter()
-                .filter_map(|c| c.rewrite(&terms).map(|r| (terms.gain(&r), c, r)))
-                .collect();
+            let scored: Vec<(Gain, Candidate, Rewrite)> =
+                candidates.into_iter().filter_map(|c| c.rewrite(&terms).map(|r| (terms.gain(&r), c, r))).collect();
             if scored.is_empty() {
                 break;
             }
@@ -203,7 +217,7 @@ impl Simplifier<'_> {
             // with q3 in others leaves terms that no longer fit together. The angles whose
             // rewrites save most in total go first, then the biggest single savings; the
             // sort is stable, so ties keep the term order.
-            let mut totals: HashMap<Angles, Gain> = HashMap::new();
+            let mut totals: KeyMap<Angles, Gain> = KeyMap::default();
             for (gain, candidate, _) in &scored {
                 *totals.entry(candidate.angles()).or_default() += *gain;
             }
@@ -211,18 +225,14 @@ impl Simplifier<'_> {
                 .into_iter()
                 .map(|(gain, candidate, rewrite)| {
                     let angles = candidate.angles();
-                    (totals[&angles], angles, gain, candidate, rewrite)
+                    (totals.get(&angles).copied().unwrap_or_default(), angles, gain, candidate, rewrite)
                 })
                 .collect();
-            keyed.sort_by(|x, y| {
-                y.0.cmp(&x.0)
-                    .then_with(|| x.1.cmp(&y.1))
-                    .then_with(|| y.2.cmp(&x.2))
-            });
-            let mut touched: HashSet<Expr> = HashSet::new();
+            keyed.sort_by(|x, y| y.0.cmp(&x.0).then_with(|| x.1.cmp(&y.1)).then_with(|| y.2.cmp(&x.2)));
+            let mut touched: KeySet<Key> = KeySet::default();
             for (_, _, _, candidate, rewrite) in keyed {
                 // An earlier rewrite of this pass may have changed the group: look again.
-                let rewrite = if rewrite.read.iter().any(|m| touched.contains(m)) {
+                let rewrite = if rewrite.read.iter().any(|m| touched.contains(&Key(m.clone()))) {
                     match candidate.rewrite(&terms) {
                         Some(fresh) => fresh,
                         None => continue,
@@ -231,19 +241,9 @@ impl Simplifier<'_> {
                     rewrite
                 };
                 if let Some(steps) = self.steps.as_deref_mut() {
-                    steps.push(Step {
-                        rule: rewrite.rule,
-                        before: rewrite.before(),
-                        after: rewrite.after(),
-                    });
+                    steps.push(Step { rule: rewrite.rule, before: rewrite.before(), after: rewrite.after() });
                 }
-                touched.extend(
-                    rewrite
-                        .remove
-                        .iter()
-                        .chain(&rewrite.insert)
-                        .map(|(m, _)| m.clone()),
-                );
+                touched.extend(rewrite.remove.iter().chain(&rewrite.insert).map(|(m, _)| Key(m.clone())));
                 terms.apply(&rewrite);
                 changed = true;
             }

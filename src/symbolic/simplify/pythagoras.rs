@@ -7,59 +7,49 @@
 //! `a·sin²x·M + a·cos²x·M → a·M` and `a·M − a·sin²x·M → a·cos²x·M`.
 
 use super::steps::PYTHAGORAS;
-use super::terms::{times, trig_factors, without, Gain, Rewrite, Terms};
+use super::terms::{times_power, trig_factors, Gain, Rewrite, Terms};
 use super::Candidate;
-use crate::symbolic::build::{cos, pow, sin};
+use crate::symbolic::build::{cos, sin};
 use crate::symbolic::expr::Expr;
 use crate::symbolic::number::Number;
 
-/// A group for every `sin²x` or `cos²x` factor of every term.
-pub(crate) fn candidates(monomials: &[Expr], out: &mut Vec<Candidate>) {
+/// The monomials `sin²x·M`, `cos²x·M` and `M` of the group of `x` and `M`.
+fn group(arg: &Expr, cofactor: &Expr) -> [Expr; 3] {
+    let sin2 = times_power(cofactor, &sin(arg.clone()), 2);
+    let cos2 = times_power(cofactor, &cos(arg.clone()), 2);
+    [sin2, cos2, cofactor.clone()]
+}
+
+/// A group for every `sin²x` or `cos²x` factor of every term that has a partner.
+pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], out: &mut Vec<Candidate>) {
     for m in monomials {
         for t in trig_factors(m).into_iter().filter(|t| t.power >= 2) {
-            let cofactor = without(m, &t.base(), 2);
-            out.push(Candidate::Pythagoras {
-                arg: t.arg,
-                cofactor,
-            });
+            let cofactor = times_power(m, &t.base(), -2);
+            let present = group(&t.arg, &cofactor).iter().filter(|g| !terms.coefficient(g).is_zero()).count();
+            if present >= 2 {
+                out.push(Candidate::Pythagoras { arg: t.arg, cofactor });
+            }
         }
     }
 }
 
 /// The shorter way to write the group of `arg` and `cofactor`, if there is one.
 pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewrite> {
-    let square = |f: Expr| pow(f, Expr::int(2));
-    let (ks, sin2) = times(cofactor, [square(sin(arg.clone()))]);
-    let (kc, cos2) = times(cofactor, [square(cos(arg.clone()))]);
-    if !ks.is_one() || !kc.is_one() {
-        return None;
-    }
-    let (s, c, p) = (
-        terms.coefficient(&sin2),
-        terms.coefficient(&cos2),
-        terms.coefficient(cofactor),
-    );
-    let group = |s: Number, c: Number, p: Number| {
-        [(sin2.clone(), s), (cos2.clone(), c), (cofactor.clone(), p)]
+    let [sin2, cos2, one] = group(arg, cofactor);
+    let (s, c, p) = (terms.coefficient(&sin2), terms.coefficient(&cos2), terms.coefficient(&one));
+    let terms_of = |s: Number, c: Number, p: Number| {
+        [(sin2.clone(), s), (cos2.clone(), c), (one.clone(), p)]
             .into_iter()
             .filter(|(_, k)| !k.is_zero())
             .collect::<Vec<_>>()
     };
-    let remove = group(s, c, p);
+    let remove = terms_of(s, c, p);
     // sin² = 1 − cos², then cos² = 1 − sin²; on a tie the first (keeping cos²) wins.
-    let options = [
-        group(Number::ZERO, c.add(s.neg()), p.add(s)),
-        group(s.add(c.neg()), Number::ZERO, p.add(c)),
-    ];
+    let options = [terms_of(Number::ZERO, c.add(s.neg()), p.add(s)), terms_of(s.add(c.neg()), Number::ZERO, p.add(c))];
     let mut best: Option<(Gain, Rewrite)> = None;
     for insert in options {
-        let read = vec![sin2.clone(), cos2.clone(), cofactor.clone()];
-        let rewrite = Rewrite {
-            rule: PYTHAGORAS,
-            remove: remove.clone(),
-            insert,
-            read,
-        };
+        let read = vec![sin2.clone(), cos2.clone(), one.clone()];
+        let rewrite = Rewrite { rule: PYTHAGORAS, remove: remove.clone(), insert, read };
         let gain = terms.gain(&rewrite);
         if gain.fewer_terms() && best.as_ref().is_none_or(|(g, _)| gain > *g) {
             best = Some((gain, rewrite));

@@ -11,7 +11,7 @@
 //! exactly, and only when the result is shorter.
 
 use super::steps::{COS_DIFFERENCE, COS_SUM, DOUBLE_ANGLE, SIN_DIFFERENCE, SIN_SUM};
-use super::terms::{times, trig_factors, without, Gain, Rewrite, Terms};
+use super::terms::{times_power, times_trig, trig_factors, Gain, Rewrite, Terms};
 use super::{Candidate, Options};
 use crate::symbolic::build::{add, func};
 use crate::symbolic::expr::{Expr, Func, Node};
@@ -38,87 +38,66 @@ const ROWS: [Row; 4] = [
     Row { rule: SIN_DIFFERENCE, first: (Sin, Cos), second: (Cos, Sin), sign: -1, result: Sin, difference: true },
 ];
 
+/// The other function of the pair: `sin ↔ cos`.
+fn flip(f: Func) -> Func {
+    if f == Sin {
+        Cos
+    } else {
+        Sin
+    }
+}
+
 /// A group for every pair of sine or cosine factors with different arguments in every
-/// term, and (when asked for) a double-angle group for every `sin x cos x`.
-pub(crate) fn candidates(monomials: &[Expr], options: &Options, out: &mut Vec<Candidate>) {
+/// term whose partner (both functions swapped, e.g. `sin a sin b` for `cos a cos b`) is
+/// present with a coefficient of the same size; and (when asked for) a double-angle group
+/// for every `sin x cos x`.
+pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], options: &Options, out: &mut Vec<Candidate>) {
     for m in monomials {
         let trig = trig_factors(m);
         for (i, x) in trig.iter().enumerate() {
             for y in &trig[i + 1..] {
+                let cofactor = times_power(&times_power(m, &x.base(), -1), &y.base(), -1);
                 if x.arg == y.arg {
                     let symbol = matches!(x.arg.node(), Node::Sym(_));
                     if options.double_angle && symbol && x.func != y.func {
-                        let cofactor = without(&without(m, &x.base(), 1), &y.base(), 1);
-                        out.push(Candidate::DoubleAngle {
-                            arg: x.arg.clone(),
-                            cofactor,
-                        });
+                        out.push(Candidate::DoubleAngle { arg: x.arg.clone(), cofactor });
                     }
                     continue;
                 }
-                let cofactor = without(&without(m, &x.base(), 1), &y.base(), 1);
-                let (a, b) = if x.arg < y.arg {
-                    (&x.arg, &y.arg)
-                } else {
-                    (&y.arg, &x.arg)
-                };
-                out.push(Candidate::AngleSum {
-                    cosines: x.func == y.func,
-                    a: a.clone(),
-                    b: b.clone(),
-                    cofactor,
-                });
+                let partner = product(&cofactor, (flip(x.func), flip(y.func)), &x.arg, &y.arg);
+                let (c, p) = (terms.coefficient(m), terms.coefficient(&partner));
+                if p.is_zero() || !(c.add(p).is_zero() || c.add(p.neg()).is_zero()) {
+                    continue;
+                }
+                let (a, b) = if x.arg < y.arg { (&x.arg, &y.arg) } else { (&y.arg, &x.arg) };
+                out.push(Candidate::AngleSum { cosines: x.func == y.func, a: a.clone(), b: b.clone(), cofactor });
             }
         }
     }
 }
 
-/// The monomial `M · f(a) · g(b)` when the product keeps coefficient one.
-fn product(cofactor: &Expr, (f, g): (Func, Func), a: &Expr, b: &Expr) -> Option<Expr> {
-    let (k, m) = times(
-        cofactor,
-        [func(f, vec![a.clone()]), func(g, vec![b.clone()])],
-    );
-    k.is_one().then_some(m)
+/// The monomial `M · f(a) · g(b)`.
+fn product(cofactor: &Expr, (f, g): (Func, Func), a: &Expr, b: &Expr) -> Expr {
+    let fa = Expr::from_node(Node::Func(f, vec![a.clone()]));
+    let gb = Expr::from_node(Node::Func(g, vec![b.clone()]));
+    times_power(&times_power(cofactor, &fa, 1), &gb, 1)
 }
 
 /// The shortest identity of the group, if any applies and shortens the sum.
-pub(crate) fn angle_sum(
-    terms: &Terms,
-    cosines: bool,
-    a: &Expr,
-    b: &Expr,
-    cofactor: &Expr,
-) -> Option<Rewrite> {
+pub(crate) fn angle_sum(terms: &Terms, cosines: bool, a: &Expr, b: &Expr, cofactor: &Expr) -> Option<Rewrite> {
     let mut best: Option<(Gain, Rewrite)> = None;
-    for row in ROWS
-        .iter()
-        .filter(|row| (row.first.0 == row.first.1) == cosines)
-    {
-        let first = product(cofactor, row.first, a, b)?;
-        let second = product(cofactor, row.second, a, b)?;
+    for row in ROWS.iter().filter(|row| (row.first.0 == row.first.1) == cosines) {
+        let first = product(cofactor, row.first, a, b);
+        let second = product(cofactor, row.second, a, b);
         let (x, y) = (terms.coefficient(&first), terms.coefficient(&second));
         if x.is_zero() || !y.add(x.mul(Number::int(row.sign)).neg()).is_zero() {
             continue;
         }
-        let argument = if row.difference {
-            add([a.clone(), -b.clone()])
-        } else {
-            add([a.clone(), b.clone()])
-        };
-        let (k, result) = times(cofactor, [func(row.result, vec![argument])]);
+        let argument = if row.difference { add([a.clone(), -b.clone()]) } else { add([a.clone(), b.clone()]) };
+        let (k, result) = times_trig(cofactor, &func(row.result, vec![argument]));
         let read = vec![first.clone(), second.clone(), result.clone()];
-        let insert = if k.is_zero() {
-            vec![]
-        } else {
-            vec![(result, x.mul(k))]
-        };
-        let rewrite = Rewrite {
-            rule: row.rule,
-            remove: vec![(first, x), (second, y)],
-            insert,
-            read,
-        };
+        let insert = if k.is_zero() { vec![] } else { vec![(result, x.mul(k))] };
+        let rewrite = Rewrite { rule: row.rule, remove: vec![(first, x), (second, y)], insert, read };
         let gain = terms.gain(&rewrite);
         if gain.fewer_terms() && best.as_ref().is_none_or(|(g, _)| gain > *g) {
             best = Some((gain, rewrite));
@@ -129,22 +108,14 @@ pub(crate) fn angle_sum(
 
 /// `c·sin x·cos x·M → (c/2)·sin(2x)·M`, when shorter.
 pub(crate) fn double_angle(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewrite> {
-    let (one, m) = times(
-        cofactor,
-        [func(Sin, vec![arg.clone()]), func(Cos, vec![arg.clone()])],
-    );
+    let m = product(cofactor, (Sin, Cos), arg, arg);
     let c = terms.coefficient(&m);
-    if !one.is_one() || c.is_zero() {
+    if c.is_zero() {
         return None;
     }
-    let (k, doubled) = times(cofactor, [func(Sin, vec![Expr::int(2) * arg.clone()])]);
+    let (k, doubled) = times_trig(cofactor, &func(Sin, vec![Expr::int(2) * arg.clone()]));
     let read = vec![m.clone(), doubled.clone()];
     let insert = vec![(doubled, c.mul(k).mul(Number::ratio(1, 2)))];
-    let rewrite = Rewrite {
-        rule: DOUBLE_ANGLE,
-        remove: vec![(m, c)],
-        insert,
-        read,
-    };
+    let rewrite = Rewrite { rule: DOUBLE_ANGLE, remove: vec![(m, c)], insert, read };
     terms.gain(&rewrite).fewer_operations().then_some(rewrite)
 }
