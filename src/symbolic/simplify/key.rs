@@ -87,7 +87,8 @@ pub(crate) fn same(a: &Expr, b: &Expr) -> bool {
     if Rc::ptr_eq(&a.0, &b.0) {
         return true;
     }
-    let all = |x: &[Expr], y: &[Expr]| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same(p, q));
+    let all =
+        |x: &[Expr], y: &[Expr]| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same(p, q));
     match (a.node(), b.node()) {
         (Node::Num(x), Node::Num(y)) => x == y,
         (Node::Sym(x), Node::Sym(y)) => x == y,

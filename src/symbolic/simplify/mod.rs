@@ -50,7 +50,10 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Options {
-        Options { double_angle: false, max_passes: 64 }
+        Options {
+            double_angle: false,
+            max_passes: 64,
+        }
     }
 }
 
@@ -68,13 +71,22 @@ pub fn simplify_with_steps(e: &Expr) -> (Expr, Vec<Step>) {
 
 /// `e` simplified with `options`, pushing each step onto `steps` when given.
 pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>) -> Expr {
-    Simplifier { options, steps, memo: KeyMap::default() }.expr(e)
+    Simplifier {
+        options,
+        steps,
+        memo: KeyMap::default(),
+    }
+    .expr(e)
 }
 
 /// The index of the shortest of `candidates` by `Expr::operation_count`, the first on a
 /// tie; 0 for an empty slice.
 pub fn shortest_of(candidates: &[Expr]) -> usize {
-    candidates.iter().enumerate().min_by_key(|(i, e)| (e.operation_count(), *i)).map_or(0, |(i, _)| i)
+    candidates
+        .iter()
+        .enumerate()
+        .min_by_key(|(i, e)| (e.operation_count(), *i))
+        .map_or(0, |(i, _)| i)
 }
 
 /// A group of terms that one rule family may rewrite together.
@@ -84,7 +96,12 @@ pub(crate) enum Candidate {
     Pythagoras { arg: Expr, cofactor: Expr },
     /// The products of `sin`/`cos` of `a` and `b` (`a < b`) times `cofactor`: the
     /// `cos·cos` and `sin·sin` ones when `cosines`, else the mixed ones.
-    AngleSum { cosines: bool, a: Expr, b: Expr, cofactor: Expr },
+    AngleSum {
+        cosines: bool,
+        a: Expr,
+        b: Expr,
+        cofactor: Expr,
+    },
     /// `sin(arg)·cos(arg)·cofactor`.
     DoubleAngle { arg: Expr, cofactor: Expr },
 }
@@ -96,11 +113,40 @@ impl PartialEq for Candidate {
     fn eq(&self, other: &Candidate) -> bool {
         use Candidate::{AngleSum, DoubleAngle, Pythagoras};
         match (self, other) {
-            (Pythagoras { arg: x, cofactor: m }, Pythagoras { arg: y, cofactor: n })
-            | (DoubleAngle { arg: x, cofactor: m }, DoubleAngle { arg: y, cofactor: n }) => same(x, y) && same(m, n),
-            (AngleSum { cosines: c, a, b, cofactor: m }, AngleSum { cosines: d, a: x, b: y, cofactor: n }) => {
-                c == d && same(a, x) && same(b, y) && same(m, n)
-            }
+            (
+                Pythagoras {
+                    arg: x,
+                    cofactor: m,
+                },
+                Pythagoras {
+                    arg: y,
+                    cofactor: n,
+                },
+            )
+            | (
+                DoubleAngle {
+                    arg: x,
+                    cofactor: m,
+                },
+                DoubleAngle {
+                    arg: y,
+                    cofactor: n,
+                },
+            ) => same(x, y) && same(m, n),
+            (
+                AngleSum {
+                    cosines: c,
+                    a,
+                    b,
+                    cofactor: m,
+                },
+                AngleSum {
+                    cosines: d,
+                    a: x,
+                    b: y,
+                    cofactor: n,
+                },
+            ) => c == d && same(a, x) && same(b, y) && same(m, n),
             _ => false,
         }
     }
@@ -116,7 +162,12 @@ impl Hash for Candidate {
                 hash_expr(arg, state);
                 hash_expr(cofactor, state);
             }
-            Candidate::AngleSum { cosines, a, b, cofactor } => {
+            Candidate::AngleSum {
+                cosines,
+                a,
+                b,
+                cofactor,
+            } => {
                 cosines.hash(state);
                 hash_expr(a, state);
                 hash_expr(b, state);
@@ -129,7 +180,9 @@ impl Hash for Candidate {
 impl Candidate {
     fn angles(&self) -> Angles {
         match self {
-            Candidate::Pythagoras { arg, .. } | Candidate::DoubleAngle { arg, .. } => (Key(arg.clone()), None),
+            Candidate::Pythagoras { arg, .. } | Candidate::DoubleAngle { arg, .. } => {
+                (Key(arg.clone()), None)
+            }
             Candidate::AngleSum { a, b, .. } => (Key(a.clone()), Some(Key(b.clone()))),
         }
     }
@@ -138,7 +191,12 @@ impl Candidate {
     fn rewrite(&self, terms: &Terms) -> Option<Rewrite> {
         match self {
             Candidate::Pythagoras { arg, cofactor } => pythagoras::rewrite(terms, arg, cofactor),
-            Candidate::AngleSum { cosines, a, b, cofactor } => trig::angle_sum(terms, *cosines, a, b, cofactor),
+            Candidate::AngleSum {
+                cosines,
+                a,
+                b,
+                cofactor,
+            } => trig::angle_sum(terms, *cosines, a, b, cofactor),
             Candidate::DoubleAngle { arg, cofactor } => trig::double_angle(terms, arg, cofactor),
         }
     }
@@ -207,8 +265,10 @@ impl Simplifier<'_> {
             trig::candidates(&terms, &monomials, self.options, &mut candidates);
             let mut seen = KeySet::default();
             candidates.retain(|c| seen.insert(c.clone()));
-            let scored: Vec<(Gain, Candidate, Rewrite)> =
-                candidates.into_iter().filter_map(|c| c.rewrite(&terms).map(|r| (terms.gain(&r), c, r))).collect();
+            let scored: Vec<(Gain, Candidate, Rewrite)> = candidates
+                .into_iter()
+                .filter_map(|c| c.rewrite(&terms).map(|r| (terms.gain(&r), c, r)))
+                .collect();
             if scored.is_empty() {
                 break;
             }
@@ -225,14 +285,28 @@ impl Simplifier<'_> {
                 .into_iter()
                 .map(|(gain, candidate, rewrite)| {
                     let angles = candidate.angles();
-                    (totals.get(&angles).copied().unwrap_or_default(), angles, gain, candidate, rewrite)
+                    (
+                        totals.get(&angles).copied().unwrap_or_default(),
+                        angles,
+                        gain,
+                        candidate,
+                        rewrite,
+                    )
                 })
                 .collect();
-            keyed.sort_by(|x, y| y.0.cmp(&x.0).then_with(|| x.1.cmp(&y.1)).then_with(|| y.2.cmp(&x.2)));
+            keyed.sort_by(|x, y| {
+                y.0.cmp(&x.0)
+                    .then_with(|| x.1.cmp(&y.1))
+                    .then_with(|| y.2.cmp(&x.2))
+            });
             let mut touched: KeySet<Key> = KeySet::default();
             for (_, _, _, candidate, rewrite) in keyed {
                 // An earlier rewrite of this pass may have changed the group: look again.
-                let rewrite = if rewrite.read.iter().any(|m| touched.contains(&Key(m.clone()))) {
+                let rewrite = if rewrite
+                    .read
+                    .iter()
+                    .any(|m| touched.contains(&Key(m.clone())))
+                {
                     match candidate.rewrite(&terms) {
                         Some(fresh) => fresh,
                         None => continue,
@@ -241,9 +315,19 @@ impl Simplifier<'_> {
                     rewrite
                 };
                 if let Some(steps) = self.steps.as_deref_mut() {
-                    steps.push(Step { rule: rewrite.rule, before: rewrite.before(), after: rewrite.after() });
+                    steps.push(Step {
+                        rule: rewrite.rule,
+                        before: rewrite.before(),
+                        after: rewrite.after(),
+                    });
                 }
-                touched.extend(rewrite.remove.iter().chain(&rewrite.insert).map(|(m, _)| Key(m.clone())));
+                touched.extend(
+                    rewrite
+                        .remove
+                        .iter()
+                        .chain(&rewrite.insert)
+                        .map(|(m, _)| Key(m.clone())),
+                );
                 terms.apply(&rewrite);
                 changed = true;
             }

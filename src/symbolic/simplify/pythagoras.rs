@@ -25,9 +25,15 @@ pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], out: &mut Vec<Candid
     for m in monomials {
         for t in trig_factors(m).into_iter().filter(|t| t.power >= 2) {
             let cofactor = times_power(m, &t.base(), -2);
-            let present = group(&t.arg, &cofactor).iter().filter(|g| !terms.coefficient(g).is_zero()).count();
+            let present = group(&t.arg, &cofactor)
+                .iter()
+                .filter(|g| !terms.coefficient(g).is_zero())
+                .count();
             if present >= 2 {
-                out.push(Candidate::Pythagoras { arg: t.arg, cofactor });
+                out.push(Candidate::Pythagoras {
+                    arg: t.arg,
+                    cofactor,
+                });
             }
         }
     }
@@ -36,7 +42,11 @@ pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], out: &mut Vec<Candid
 /// The shorter way to write the group of `arg` and `cofactor`, if there is one.
 pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewrite> {
     let [sin2, cos2, one] = group(arg, cofactor);
-    let (s, c, p) = (terms.coefficient(&sin2), terms.coefficient(&cos2), terms.coefficient(&one));
+    let (s, c, p) = (
+        terms.coefficient(&sin2),
+        terms.coefficient(&cos2),
+        terms.coefficient(&one),
+    );
     let terms_of = |s: Number, c: Number, p: Number| {
         [(sin2.clone(), s), (cos2.clone(), c), (one.clone(), p)]
             .into_iter()
@@ -45,11 +55,19 @@ pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewr
     };
     let remove = terms_of(s, c, p);
     // sin² = 1 − cos², then cos² = 1 − sin²; on a tie the first (keeping cos²) wins.
-    let options = [terms_of(Number::ZERO, c.add(s.neg()), p.add(s)), terms_of(s.add(c.neg()), Number::ZERO, p.add(c))];
+    let options = [
+        terms_of(Number::ZERO, c.add(s.neg()), p.add(s)),
+        terms_of(s.add(c.neg()), Number::ZERO, p.add(c)),
+    ];
     let mut best: Option<(Gain, Rewrite)> = None;
     for insert in options {
         let read = vec![sin2.clone(), cos2.clone(), one.clone()];
-        let rewrite = Rewrite { rule: PYTHAGORAS, remove: remove.clone(), insert, read };
+        let rewrite = Rewrite {
+            rule: PYTHAGORAS,
+            remove: remove.clone(),
+            insert,
+            read,
+        };
         let gain = terms.gain(&rewrite);
         if gain.fewer_terms() && best.as_ref().is_none_or(|(g, _)| gain > *g) {
             best = Some((gain, rewrite));

@@ -41,8 +41,13 @@ impl Rewrite {
 
     /// The net change of each touched monomial, merged.
     fn deltas(&self) -> Vec<(&Expr, Number)> {
-        let mut out: Vec<(&Expr, Number)> = Vec::with_capacity(self.remove.len() + self.insert.len());
-        let changes = self.remove.iter().map(|(m, c)| (m, c.neg())).chain(self.insert.iter().map(|(m, c)| (m, *c)));
+        let mut out: Vec<(&Expr, Number)> =
+            Vec::with_capacity(self.remove.len() + self.insert.len());
+        let changes = self
+            .remove
+            .iter()
+            .map(|(m, c)| (m, c.neg()))
+            .chain(self.insert.iter().map(|(m, c)| (m, *c)));
         for (m, d) in changes {
             match out.iter_mut().find(|(seen, _)| same(seen, m)) {
                 Some(entry) => entry.1 = entry.1.add(d),
@@ -99,13 +104,19 @@ fn cost(c: Number, m: &Expr) -> Gain {
     } else {
         1 + m.operation_count() as i64 + i64::from(!c.is_one())
     };
-    Gain { terms: i64::from(!c.is_zero()), operations }
+    Gain {
+        terms: i64::from(!c.is_zero()),
+        operations,
+    }
 }
 
 impl Terms {
     /// The terms of `e` (a sum, or a single term).
     pub fn new(e: &Expr) -> Terms {
-        let mut terms = Terms { coefficients: KeyMap::default(), order: Vec::new() };
+        let mut terms = Terms {
+            coefficients: KeyMap::default(),
+            order: Vec::new(),
+        };
         for term in e.terms() {
             let (c, m) = term.split_coefficient();
             terms.change(m, c);
@@ -125,12 +136,19 @@ impl Terms {
 
     /// The coefficient of the monomial `m`, zero when absent.
     pub fn coefficient(&self, m: &Expr) -> Number {
-        self.coefficients.get(&Key(m.clone())).copied().unwrap_or(Number::ZERO)
+        self.coefficients
+            .get(&Key(m.clone()))
+            .copied()
+            .unwrap_or(Number::ZERO)
     }
 
     /// The monomials with a non-zero coefficient, in a deterministic order.
     pub fn monomials(&self) -> Vec<Expr> {
-        self.order.iter().filter(|m| !self.coefficient(m).is_zero()).cloned().collect()
+        self.order
+            .iter()
+            .filter(|m| !self.coefficient(m).is_zero())
+            .cloned()
+            .collect()
     }
 
     /// How much shorter the sum gets by `rewrite`.
@@ -147,7 +165,11 @@ impl Terms {
 
     /// Applies `rewrite`.
     pub fn apply(&mut self, rewrite: &Rewrite) {
-        let deltas: Vec<(Expr, Number)> = rewrite.deltas().into_iter().map(|(m, d)| (m.clone(), d)).collect();
+        let deltas: Vec<(Expr, Number)> = rewrite
+            .deltas()
+            .into_iter()
+            .map(|(m, d)| (m.clone(), d))
+            .collect();
         for (m, d) in deltas {
             self.change(m, d);
         }
@@ -183,18 +205,27 @@ impl TrigFactor {
 /// The sine and cosine factors of the monomial `m` with positive integer powers.
 pub(crate) fn trig_factors(m: &Expr) -> Vec<TrigFactor> {
     let as_trig = |e: &Expr| match e.node() {
-        Node::Func(f @ (Func::Sin | Func::Cos), args) if args.len() == 1 => Some((*f, args[0].clone())),
+        Node::Func(f @ (Func::Sin | Func::Cos), args) if args.len() == 1 => {
+            Some((*f, args[0].clone()))
+        }
         _ => None,
     };
     m.factors()
         .iter()
         .filter_map(|factor| match factor.node() {
             Node::Pow(base, exponent) => {
-                let power = exponent.as_number().and_then(Number::as_integer).filter(|k| *k >= 1)?;
+                let power = exponent
+                    .as_number()
+                    .and_then(Number::as_integer)
+                    .filter(|k| *k >= 1)?;
                 let (func, arg) = as_trig(base)?;
                 Some(TrigFactor { func, arg, power })
             }
-            _ => as_trig(factor).map(|(func, arg)| TrigFactor { func, arg, power: 1 }),
+            _ => as_trig(factor).map(|(func, arg)| TrigFactor {
+                func,
+                arg,
+                power: 1,
+            }),
         })
         .collect()
 }
@@ -205,7 +236,11 @@ pub(crate) fn trig_factors(m: &Expr) -> Vec<TrigFactor> {
 /// (a binary search and a copy of the `Rc`s) instead of forming a general product: rules
 /// build several such monomials for every pair of factors of every term.
 pub(crate) fn times_power(m: &Expr, base: &Expr, k: i64) -> Expr {
-    let general = || mul([m.clone(), pow(base.clone(), Expr::int(k))]).split_coefficient().1;
+    let general = || {
+        mul([m.clone(), pow(base.clone(), Expr::int(k))])
+            .split_coefficient()
+            .1
+    };
     let factors: &[Expr] = if m.is_one() { &[] } else { m.factors() };
     fn base_of(f: &Expr) -> &Expr {
         match f.node() {
@@ -287,12 +322,22 @@ mod tests {
             mul([pow(cos(x.clone()), Expr::int(-1)), sin(&x + &y)]),
             spring,
         ];
-        let bases = [sin(x.clone()), cos(x.clone()), sin(y.clone()), cos(&x + &y), sin(&x + &y)];
+        let bases = [
+            sin(x.clone()),
+            cos(x.clone()),
+            sin(y.clone()),
+            cos(&x + &y),
+            sin(&x + &y),
+        ];
         for monomial in &monomials {
             for base in &bases {
                 for k in [-3, -2, -1, 1, 2] {
                     let general = mul([monomial.clone(), pow(base.clone(), Expr::int(k))]);
-                    assert_eq!(times_power(monomial, base, k), general, "{monomial} * ({base})^{k}");
+                    assert_eq!(
+                        times_power(monomial, base, k),
+                        general,
+                        "{monomial} * ({base})^{k}"
+                    );
                 }
             }
         }
@@ -314,7 +359,10 @@ mod tests {
     #[test]
     fn gain_counts_terms_and_operations() {
         let x = Expr::coord("q1", 0);
-        let (s2, c2) = (pow(sin(x.clone()), Expr::int(2)), pow(cos(x.clone()), Expr::int(2)));
+        let (s2, c2) = (
+            pow(sin(x.clone()), Expr::int(2)),
+            pow(cos(x.clone()), Expr::int(2)),
+        );
         let terms = Terms::new(&(&s2 + &c2));
         let rewrite = Rewrite {
             rule: "test",
@@ -323,6 +371,12 @@ mod tests {
             read: vec![],
         };
         // sin(q1)^2 + cos(q1)^2 takes 5 operations, 1 takes none.
-        assert_eq!(terms.gain(&rewrite), Gain { terms: 1, operations: 5 });
+        assert_eq!(
+            terms.gain(&rewrite),
+            Gain {
+                terms: 1,
+                operations: 5
+            }
+        );
     }
 }

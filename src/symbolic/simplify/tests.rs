@@ -12,8 +12,14 @@ use crate::symbolic::parse::{parse, ParseError, Resolve};
 struct Names;
 impl Resolve for Names {
     fn name(&self, name: &str, primes: u8, _: usize) -> Result<Expr, ParseError> {
-        let coordinate = name.starts_with('q') && name.len() > 1 && name[1..].chars().all(|c| c.is_ascii_digit());
-        Ok(if coordinate || primes > 0 { Expr::coord(name, primes) } else { Expr::constant(name) })
+        let coordinate = name.starts_with('q')
+            && name.len() > 1
+            && name[1..].chars().all(|c| c.is_ascii_digit());
+        Ok(if coordinate || primes > 0 {
+            Expr::coord(name, primes)
+        } else {
+            Expr::constant(name)
+        })
     }
     fn unit_vector(&self, _: &str, _: &str, column: usize) -> Result<Expr, ParseError> {
         Err(ParseError::new(column, "no vectors here"))
@@ -51,7 +57,11 @@ fn assert_numerically_equal(a: &Expr, b: &Expr) {
         let mut values = Values::new();
         for s in &symbols {
             let u = random.next();
-            let value = if matches!(s, Symbol::Const(_)) { 0.5 + 2.0 * u } else { 6.0 * u - 3.0 };
+            let value = if matches!(s, Symbol::Const(_)) {
+                0.5 + 2.0 * u
+            } else {
+                6.0 * u - 3.0
+            };
             values.set(s.clone(), value);
         }
         let (x, y) = (eval(a, &values), eval(b, &values));
@@ -70,7 +80,10 @@ fn check(input: &str, expected: &str) {
     assert_numerically_equal(&e, &got);
     assert_eq!(simplify(&want), want, "simplify({expected}) changed it");
     let (with_steps, steps) = simplify_with_steps(&e);
-    assert_eq!(with_steps, got, "recording steps changed the result of {input}");
+    assert_eq!(
+        with_steps, got,
+        "recording steps changed the result of {input}"
+    );
     for step in &steps {
         assert_numerically_equal(&step.before, &step.after);
     }
@@ -79,7 +92,10 @@ fn check(input: &str, expected: &str) {
 #[test]
 fn pythagoras() {
     check("sin(q1)^2 + cos(q1)^2", "1");
-    check("m*L^2*sin(q1)^2*q1'^2 + m*L^2*cos(q1)^2*q1'^2", "m*L^2*q1'^2");
+    check(
+        "m*L^2*sin(q1)^2*q1'^2 + m*L^2*cos(q1)^2*q1'^2",
+        "m*L^2*q1'^2",
+    );
     check("1 - sin(q1)^2", "cos(q1)^2");
     check("1 - cos(q1)^2", "sin(q1)^2");
     check("2*m - 2*m*sin(q1+q2)^2", "2*m*cos(q1+q2)^2");
@@ -109,20 +125,38 @@ fn angle_sums() {
     check("sin(q2)*cos(q1) - cos(q2)*sin(q1)", "sin(q2-q1)");
     check("cos(q1)*cos(q1+q2) + sin(q1)*sin(q1+q2)", "cos(q2)");
     check("sin(q1+q2)*cos(q1) - cos(q1+q2)*sin(q1)", "sin(q2)");
-    check("2*L*sin(q1)*cos(q2) + 2*L*cos(q1)*sin(q2)", "2*L*sin(q1+q2)");
-    check("-m/3*q1'*cos(q1)*cos(q2) + m/3*q1'*sin(q1)*sin(q2)", "-m/3*q1'*cos(q1+q2)");
-    check("cos(q1)*cos(q2) - sin(q1)*sin(q2) + cos(q1+q2)", "2*cos(q1+q2)");
+    check(
+        "2*L*sin(q1)*cos(q2) + 2*L*cos(q1)*sin(q2)",
+        "2*L*sin(q1+q2)",
+    );
+    check(
+        "-m/3*q1'*cos(q1)*cos(q2) + m/3*q1'*sin(q1)*sin(q2)",
+        "-m/3*q1'*cos(q1+q2)",
+    );
+    check(
+        "cos(q1)*cos(q2) - sin(q1)*sin(q2) + cos(q1+q2)",
+        "2*cos(q1+q2)",
+    );
     check(
         "cos(q1)*cos(q2)*cos(q3) - sin(q1)*sin(q2)*cos(q3) - sin(q1)*cos(q2)*sin(q3) - cos(q1)*sin(q2)*sin(q3)",
         "cos(q1+q2+q3)",
     );
-    check("L*(cos(q1)*cos(q2) - sin(q1)*sin(q2)) + L*sin(q1)^2 + L*cos(q1)^2", "L*cos(q1+q2) + L");
+    check(
+        "L*(cos(q1)*cos(q2) - sin(q1)*sin(q2)) + L*sin(q1)^2 + L*cos(q1)^2",
+        "L*cos(q1+q2) + L",
+    );
 }
 
 #[test]
 fn angle_sums_need_matching_coefficients() {
-    check("cos(q1)*cos(q2) - 2*sin(q1)*sin(q2)", "cos(q1)*cos(q2) - 2*sin(q1)*sin(q2)");
-    check("a*cos(q1)*cos(q2) - b*sin(q1)*sin(q2)", "a*cos(q1)*cos(q2) - b*sin(q1)*sin(q2)");
+    check(
+        "cos(q1)*cos(q2) - 2*sin(q1)*sin(q2)",
+        "cos(q1)*cos(q2) - 2*sin(q1)*sin(q2)",
+    );
+    check(
+        "a*cos(q1)*cos(q2) - b*sin(q1)*sin(q2)",
+        "a*cos(q1)*cos(q2) - b*sin(q1)*sin(q2)",
+    );
     check("sin(q1)*cos(q1)", "sin(q1)*cos(q1)");
 }
 
@@ -144,7 +178,10 @@ fn double_pendulum_kinetic_energy() {
     let vx2 = format!("{vx1} + L2*cos(q1+q2)*(q1'+q2')");
     let vy2 = format!("{vy1} + L2*sin(q1+q2)*(q1'+q2')");
     let kinetic = format!("m1/2*(({vx1})^2 + ({vy1})^2) + m2/2*(({vx2})^2 + ({vy2})^2)");
-    check(&kinetic, "(m1+m2)/2*L1^2*q1'^2 + m2/2*L2^2*(q1'+q2')^2 + m2*L1*L2*q1'*(q1'+q2')*cos(q2)");
+    check(
+        &kinetic,
+        "(m1+m2)/2*L1^2*q1'^2 + m2/2*L2^2*(q1'+q2')^2 + m2*L1*L2*q1'*(q1'+q2')*cos(q2)",
+    );
 }
 
 #[test]
@@ -162,7 +199,10 @@ fn steps_name_the_identity_and_the_terms() {
     assert_eq!(steps[0].after, p("cos(q1+q2)"));
 
     let (_, steps) = simplify_with_steps(&p("cos(q1)*cos(q1+q2) + sin(q1)*sin(q1+q2)"));
-    assert_eq!(steps.iter().map(|s| s.rule).collect::<Vec<_>>(), [COS_DIFFERENCE]);
+    assert_eq!(
+        steps.iter().map(|s| s.rule).collect::<Vec<_>>(),
+        [COS_DIFFERENCE]
+    );
 
     let (_, steps) = simplify_with_steps(&p("m*g*L"));
     assert!(steps.is_empty());
@@ -170,7 +210,10 @@ fn steps_name_the_identity_and_the_terms() {
 
 #[test]
 fn double_angle_only_when_asked_and_shorter() {
-    let on = Options { double_angle: true, ..Options::default() };
+    let on = Options {
+        double_angle: true,
+        ..Options::default()
+    };
     let e = p("2*sin(q1)*cos(q1)");
     assert_eq!(simplify(&e), e);
     let doubled = simplify_with(&e, &on, None);
@@ -202,10 +245,14 @@ fn composed_rotations_give_the_rotation_by_the_sum() {
     for i in 1..=n {
         let q = Expr::coord(&format!("q{i}"), 0);
         let step = [[cos(q.clone()), -sin(q.clone())], [sin(q.clone()), cos(q)]];
-        r = [0, 1].map(|row| [0, 1].map(|col| &r[row][0] * &step[0][col] + &r[row][1] * &step[1][col]));
+        r = [0, 1]
+            .map(|row| [0, 1].map(|col| &r[row][0] * &step[0][col] + &r[row][1] * &step[1][col]));
     }
     let total = add((1..=n).map(|i| Expr::coord(&format!("q{i}"), 0)));
-    let expected = [[cos(total.clone()), -sin(total.clone())], [sin(total.clone()), cos(total)]];
+    let expected = [
+        [cos(total.clone()), -sin(total.clone())],
+        [sin(total.clone()), cos(total)],
+    ];
     for row in 0..2 {
         for col in 0..2 {
             assert_eq!(r[row][col].terms().len(), 16);
@@ -228,7 +275,11 @@ fn chain_kinetic_energy(n: usize) -> (Expr, Expr) {
     for k in 1..=n {
         let vx = add((1..=k).map(|i| mul([constant("L", i), cos(theta(i, 0)), theta(i, 1)])));
         let vy = add((1..=k).map(|i| mul([constant("L", i), sin(theta(i, 0)), theta(i, 1)])));
-        energy.push(mul([Expr::ratio(1, 2), constant("m", k), add([&vx * &vx, &vy * &vy])]));
+        energy.push(mul([
+            Expr::ratio(1, 2),
+            constant("m", k),
+            add([&vx * &vx, &vy * &vy]),
+        ]));
         for i in 1..=k {
             for j in 1..=k {
                 let angle = cos(theta(i, 0) - theta(j, 0));
@@ -257,6 +308,14 @@ fn chain_of_ten_links_is_fast() {
     let got = simplify(&energy);
     let elapsed = start.elapsed();
     assert_eq!(got, textbook);
-    assert!(elapsed.as_secs_f64() < 20.0, "{} terms took {elapsed:?}", energy.terms().len());
-    eprintln!("{} terms -> {} in {elapsed:?}", energy.terms().len(), got.terms().len());
+    assert!(
+        elapsed.as_secs_f64() < 20.0,
+        "{} terms took {elapsed:?}",
+        energy.terms().len()
+    );
+    eprintln!(
+        "{} terms -> {} in {elapsed:?}",
+        energy.terms().len(),
+        got.terms().len()
+    );
 }

@@ -51,7 +51,12 @@ fn flip(f: Func) -> Func {
 /// term whose partner (both functions swapped, e.g. `sin a sin b` for `cos a cos b`) is
 /// present with a coefficient of the same size; and (when asked for) a double-angle group
 /// for every `sin x cos x`.
-pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], options: &Options, out: &mut Vec<Candidate>) {
+pub(crate) fn candidates(
+    terms: &Terms,
+    monomials: &[Expr],
+    options: &Options,
+    out: &mut Vec<Candidate>,
+) {
     for m in monomials {
         let trig = trig_factors(m);
         for (i, x) in trig.iter().enumerate() {
@@ -60,7 +65,10 @@ pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], options: &Options, o
                 if x.arg == y.arg {
                     let symbol = matches!(x.arg.node(), Node::Sym(_));
                     if options.double_angle && symbol && x.func != y.func {
-                        out.push(Candidate::DoubleAngle { arg: x.arg.clone(), cofactor });
+                        out.push(Candidate::DoubleAngle {
+                            arg: x.arg.clone(),
+                            cofactor,
+                        });
                     }
                     continue;
                 }
@@ -69,8 +77,17 @@ pub(crate) fn candidates(terms: &Terms, monomials: &[Expr], options: &Options, o
                 if p.is_zero() || !(c.add(p).is_zero() || c.add(p.neg()).is_zero()) {
                     continue;
                 }
-                let (a, b) = if x.arg < y.arg { (&x.arg, &y.arg) } else { (&y.arg, &x.arg) };
-                out.push(Candidate::AngleSum { cosines: x.func == y.func, a: a.clone(), b: b.clone(), cofactor });
+                let (a, b) = if x.arg < y.arg {
+                    (&x.arg, &y.arg)
+                } else {
+                    (&y.arg, &x.arg)
+                };
+                out.push(Candidate::AngleSum {
+                    cosines: x.func == y.func,
+                    a: a.clone(),
+                    b: b.clone(),
+                    cofactor,
+                });
             }
         }
     }
@@ -84,20 +101,42 @@ fn product(cofactor: &Expr, (f, g): (Func, Func), a: &Expr, b: &Expr) -> Expr {
 }
 
 /// The shortest identity of the group, if any applies and shortens the sum.
-pub(crate) fn angle_sum(terms: &Terms, cosines: bool, a: &Expr, b: &Expr, cofactor: &Expr) -> Option<Rewrite> {
+pub(crate) fn angle_sum(
+    terms: &Terms,
+    cosines: bool,
+    a: &Expr,
+    b: &Expr,
+    cofactor: &Expr,
+) -> Option<Rewrite> {
     let mut best: Option<(Gain, Rewrite)> = None;
-    for row in ROWS.iter().filter(|row| (row.first.0 == row.first.1) == cosines) {
+    for row in ROWS
+        .iter()
+        .filter(|row| (row.first.0 == row.first.1) == cosines)
+    {
         let first = product(cofactor, row.first, a, b);
         let second = product(cofactor, row.second, a, b);
         let (x, y) = (terms.coefficient(&first), terms.coefficient(&second));
         if x.is_zero() || !y.add(x.mul(Number::int(row.sign)).neg()).is_zero() {
             continue;
         }
-        let argument = if row.difference { add([a.clone(), -b.clone()]) } else { add([a.clone(), b.clone()]) };
+        let argument = if row.difference {
+            add([a.clone(), -b.clone()])
+        } else {
+            add([a.clone(), b.clone()])
+        };
         let (k, result) = times_trig(cofactor, &func(row.result, vec![argument]));
         let read = vec![first.clone(), second.clone(), result.clone()];
-        let insert = if k.is_zero() { vec![] } else { vec![(result, x.mul(k))] };
-        let rewrite = Rewrite { rule: row.rule, remove: vec![(first, x), (second, y)], insert, read };
+        let insert = if k.is_zero() {
+            vec![]
+        } else {
+            vec![(result, x.mul(k))]
+        };
+        let rewrite = Rewrite {
+            rule: row.rule,
+            remove: vec![(first, x), (second, y)],
+            insert,
+            read,
+        };
         let gain = terms.gain(&rewrite);
         if gain.fewer_terms() && best.as_ref().is_none_or(|(g, _)| gain > *g) {
             best = Some((gain, rewrite));
@@ -116,6 +155,11 @@ pub(crate) fn double_angle(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option
     let (k, doubled) = times_trig(cofactor, &func(Sin, vec![Expr::int(2) * arg.clone()]));
     let read = vec![m.clone(), doubled.clone()];
     let insert = vec![(doubled, c.mul(k).mul(Number::ratio(1, 2)))];
-    let rewrite = Rewrite { rule: DOUBLE_ANGLE, remove: vec![(m, c)], insert, read };
+    let rewrite = Rewrite {
+        rule: DOUBLE_ANGLE,
+        remove: vec![(m, c)],
+        insert,
+        read,
+    };
     terms.gain(&rewrite).fewer_operations().then_some(rewrite)
 }
