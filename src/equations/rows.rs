@@ -188,7 +188,14 @@ pub fn inertia_terms(
 
 /// The unknowns among `all` that appear in `e`, in the order of `all`.
 pub fn unknowns_in(e: &Expr, all: &[Symbol]) -> Vec<Symbol> {
-    all.iter().filter(|s| e.contains(s)).cloned().collect()
+    // One walk of the expression, not one per unknown.
+    let mut present = std::collections::HashSet::new();
+    e.for_each_symbol(&mut |s| {
+        if matches!(s, Symbol::Coord(_, 2) | Symbol::Unknown(_)) {
+            present.insert(s.clone());
+        }
+    });
+    all.iter().filter(|s| present.contains(*s)).cloned().collect()
 }
 
 /// The LaTeX of a unit vector direction `frame.axis`.

@@ -30,10 +30,20 @@ impl fmt::Display for NotLinear {
 pub fn linear_split(e: &Expr, unknowns: &[Symbol]) -> Result<(Vec<Expr>, Expr), NotLinear> {
     let mut coefficients: Vec<Vec<Expr>> = vec![Vec::new(); unknowns.len()];
     let mut rest = Vec::new();
+    let index_of: std::collections::HashMap<&Symbol, usize> =
+        unknowns.iter().enumerate().map(|(i, u)| (u, i)).collect();
+    let find = |factor: &Expr| -> Option<usize> {
+        match factor.node() {
+            // The common case, an atom, is one lookup rather than a search of every unknown.
+            Node::Sym(s) => index_of.get(s).copied(),
+            Node::Num(_) => None,
+            _ => unknowns.iter().position(|u| factor.contains(u)),
+        }
+    };
     for term in e.terms() {
         let mut found: Option<(usize, usize)> = None;
         for (position, factor) in term.factors().iter().enumerate() {
-            let Some(index) = unknowns.iter().position(|u| factor.contains(u)) else {
+            let Some(index) = find(factor) else {
                 continue;
             };
             let is_plain = matches!(factor.node(), Node::Sym(s) if *s == unknowns[index]);
