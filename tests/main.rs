@@ -1,10 +1,11 @@
 //! The integration tests, as one binary so that the suite links once.
 
+mod agreement;
 mod invalid;
 mod kinematics;
 mod library;
 mod methods;
 mod render;
 mod robustness;
-mod support;
 mod snapshots_by_problem;
+mod support;
