@@ -307,11 +307,19 @@ fn group_tex(e: &Expr) -> String {
 pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let problem = derivation.model.problem;
     let g = &row.groups;
-    let grouped = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque]
-        .iter()
-        .map(|e| group_tex(e))
-        .collect::<Vec<_>>()
-        .join(" + ");
+    // Contact + distance + inertia forces + inertia torques, leaving out the empty groups.
+    let mut grouped = String::new();
+    for e in [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].into_iter().filter(|e| !e.is_zero()) {
+        let text = group_tex(e);
+        match (grouped.is_empty(), text.strip_prefix('-')) {
+            (true, _) => grouped = text,
+            (false, Some(rest)) => grouped.push_str(&format!(" - {rest}")),
+            (false, None) => grouped.push_str(&format!(" + {text}")),
+        }
+    }
+    if grouped.is_empty() {
+        grouped = "0".into();
+    }
     let direction = row
         .direction
         .as_ref()
