@@ -173,6 +173,13 @@ impl Frames {
         let matrix = rotations
             .iter()
             .fold(identity(), |acc, r| matmul(&acc, &r.matrix()));
+        // Products of rotations about different axes leave sums of trig products that the
+        // angle-sum identities shorten; everything built on the matrix is then smaller.
+        let matrix: Matrix = if rotations.len() > 1 {
+            std::array::from_fn(|i| std::array::from_fn(|j| crate::symbolic::simplify(&matrix[i][j])))
+        } else {
+            matrix
+        };
         let matrix = Rc::new(matrix);
         self.cache.borrow_mut().insert((to, from), matrix.clone());
         matrix

@@ -319,7 +319,8 @@ fn body_kinematics(
     let omega = parent_state
         .omega
         .expressed_in(body, frames)
-        .plus(&Vector::new(body, relative));
+        .plus(&Vector::new(body, relative))
+        .map(crate::symbolic::simplify);
     let omega_components = omega.components_in(body, frames);
     // Expressed in the body's own frame, d/dt in N equals d/dt of the components.
     let alpha = Vector::new(body, dt_components(&omega_components, path)?);
