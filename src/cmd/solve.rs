@@ -120,6 +120,9 @@ pub fn to_json(
     rates: &[f64],
     solution: &StateSolution,
 ) -> Value {
+    // -0.0 is a valid JSON number, but reads as a sign error to a student.
+    let clean = |x: f64| if x == 0.0 { 0.0 } else { x };
+    let clean3 = |v: &[f64; 3]| v.map(clean);
     let mut state = Map::new();
     for (name, value) in names.iter().zip(q) {
         state.insert(name.clone(), json!(value));
@@ -129,11 +132,11 @@ pub fn to_json(
     }
     let mut accelerations = Map::new();
     for (name, value) in names.iter().zip(&solution.accelerations) {
-        accelerations.insert(name.clone(), json!(value));
+        accelerations.insert(name.clone(), json!(clean(*value)));
     }
     let mut reactions = Map::new();
     for (joint, force, moment) in &solution.reactions {
-        reactions.insert(joint.clone(), json!({ "force": force, "moment": moment }));
+        reactions.insert(joint.clone(), json!({ "force": clean3(force), "moment": clean3(moment) }));
     }
     json!({
         "method": method,
