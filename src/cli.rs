@@ -26,7 +26,7 @@ pub enum MethodArg {
 /// Options shared by the commands that read a problem.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Common {
-    /// The problem file (JSON).
+    /// The problem file (JSON); for `explain`, also a directory of them.
     pub problem: PathBuf,
     /// Which method forms the equations.
     #[arg(long, value_enum, default_value_t)]

@@ -6,15 +6,25 @@ use mbd_tutor::equations::{derive, Method};
 use mbd_tutor::render::derived::{equation_view, plan};
 
 fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
-    let mut out = String::from("| Free body | Equation | Direction | Unknowns |\n|---|---|---|---|\n");
+    let mut out =
+        String::from("| Free body | Equation | Direction | Unknowns |\n|---|---|---|---|\n");
     for row in &p.rows {
-        out.push_str(&format!("| {} | {} | ${}$ | ${}$ |\n", row.free_body, row.equation, row.direction_tex, row.unknowns_tex));
+        out.push_str(&format!(
+            "| {} | {} | ${}$ | ${}$ |\n",
+            row.free_body, row.equation, row.direction_tex, row.unknowns_tex
+        ));
     }
-    out.push_str(&format!("\n{} equations, {} unknowns.\n", p.equations_count, p.unknowns_count));
+    out.push_str(&format!(
+        "\n{} equations, {} unknowns.\n",
+        p.equations_count, p.unknowns_count
+    ));
     if !p.rejected.is_empty() {
         out.push_str("\nRejected:\n");
         for r in &p.rejected {
-            out.push_str(&format!("- {}, {} along ${}$: {}\n", r.free_body, r.equation, r.direction_tex, r.reason));
+            out.push_str(&format!(
+                "- {}, {} along ${}$: {}\n",
+                r.free_body, r.equation, r.direction_tex, r.reason
+            ));
         }
     }
     out
@@ -23,11 +33,18 @@ fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
 #[test]
 fn plan_tables_and_equations_of_every_problem() {
     insta::glob!("../problems", "*.json", |path| {
-        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("problem").to_string();
+        let stem = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .unwrap_or("problem")
+            .to_string();
         let problem = mbd_tutor::problem::load_file(path).unwrap_or_else(|e| panic!("{stem}: {e}"));
         for method in Method::ALL {
             let derivation = derive(&problem, method).unwrap_or_else(|e| panic!("{stem}: {e}"));
-            insta::assert_snapshot!(format!("plan-{stem}-{}", method.name()), plan_markdown(&plan(&derivation)));
+            insta::assert_snapshot!(
+                format!("plan-{stem}-{}", method.name()),
+                plan_markdown(&plan(&derivation))
+            );
             let equations: Vec<String> = derivation
                 .rows
                 .iter()
@@ -36,7 +53,10 @@ fn plan_tables_and_equations_of_every_problem() {
                     format!("{}\n$$ {} $$\n", view.label, view.simplified_tex)
                 })
                 .collect();
-            insta::assert_snapshot!(format!("equations-{stem}-{}", method.name()), equations.join("\n"));
+            insta::assert_snapshot!(
+                format!("equations-{stem}-{}", method.name()),
+                equations.join("\n")
+            );
         }
     });
 }

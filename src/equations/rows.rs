@@ -195,7 +195,10 @@ pub fn unknowns_in(e: &Expr, all: &[Symbol]) -> Vec<Symbol> {
             present.insert(s.clone());
         }
     });
-    all.iter().filter(|s| present.contains(*s)).cloned().collect()
+    all.iter()
+        .filter(|s| present.contains(*s))
+        .cloned()
+        .collect()
 }
 
 /// The LaTeX of a unit vector direction `frame.axis`.
