@@ -1,7 +1,7 @@
 //! Every force and couple in the system, each acting on one body, sorted as the Motion Law
 //! names them: contact forces and distance forces. (Inertia forces come from kinematics.)
 
-use crate::mechanics::vector::{zero3, Components};
+use crate::mechanics::vector::Components;
 use crate::mechanics::{MechanicsError, Model, Vector};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
 use crate::symbolic::{pow, Expr, Symbol};
@@ -306,54 +306,25 @@ fn load_actions(
                 &named("damper".into()),
             );
         }
-        LoadKind::JointSpring {
-            joint,
-            coordinate,
-            stiffness,
-            rest,
-        } => {
-            let q = problem.coordinate_expr(*coordinate, 0);
-            let value = -(stiffness * &(&q - rest));
-            joint_load(
-                out,
-                model,
-                *joint,
-                *coordinate,
-                &value,
-                source,
-                &named("joint spring".into()),
-            );
-        }
-        LoadKind::JointDamper {
-            joint,
-            coordinate,
-            coefficient,
-        } => {
-            let value = -(coefficient * &problem.coordinate_expr(*coordinate, 1));
-            joint_load(
-                out,
-                model,
-                *joint,
-                *coordinate,
-                &value,
-                source,
-                &named("joint damper".into()),
-            );
-        }
-        LoadKind::JointActuator {
-            joint,
-            coordinate,
-            value,
-        } => {
-            joint_load(
-                out,
-                model,
-                *joint,
-                *coordinate,
-                value,
-                source,
-                &named("actuator".into()),
-            );
+        LoadKind::JointSpring { .. }
+        | LoadKind::JointDamper { .. }
+        | LoadKind::JointActuator { .. } => {
+            if let Some((joint, coordinate, value)) = joint_load_value(problem, kind) {
+                let label = match kind {
+                    LoadKind::JointSpring { .. } => "joint spring",
+                    LoadKind::JointDamper { .. } => "joint damper",
+                    _ => "actuator",
+                };
+                joint_load(
+                    out,
+                    model,
+                    joint,
+                    coordinate,
+                    &value,
+                    source,
+                    &named(label.into()),
+                );
+            }
         }
     }
     Ok(())
@@ -454,32 +425,47 @@ pub fn joint_load_generalized_forces(model: &Model) -> Vec<Expr> {
     let problem = model.problem;
     let mut q = vec![Expr::zero(); problem.coordinates.len()];
     for load in &problem.loads {
-        let (c, value) = match &load.kind {
-            LoadKind::JointSpring {
-                coordinate,
-                stiffness,
-                rest,
-                ..
-            } => (
-                *coordinate,
-                -(stiffness * &(&problem.coordinate_expr(*coordinate, 0) - rest)),
-            ),
-            LoadKind::JointDamper {
-                coordinate,
-                coefficient,
-                ..
-            } => (
-                *coordinate,
-                -(coefficient * &problem.coordinate_expr(*coordinate, 1)),
-            ),
-            LoadKind::JointActuator {
-                coordinate, value, ..
-            } => (*coordinate, value.clone()),
-            _ => continue,
+        let Some((_, c, value)) = joint_load_value(problem, &load.kind) else {
+            continue;
         };
         q[c] = &q[c] + &value;
     }
     q
+}
+
+/// A joint load's joint, coordinate and generalized force: `-k (q - rest)`, `-c q'` or the
+/// actuator's value; `None` for other loads.
+pub fn joint_load_value(
+    problem: &crate::problem::Problem,
+    kind: &LoadKind,
+) -> Option<(usize, usize, Expr)> {
+    match kind {
+        LoadKind::JointSpring {
+            joint,
+            coordinate,
+            stiffness,
+            rest,
+        } => Some((
+            *joint,
+            *coordinate,
+            -(stiffness * &(&problem.coordinate_expr(*coordinate, 0) - rest)),
+        )),
+        LoadKind::JointDamper {
+            joint,
+            coordinate,
+            coefficient,
+        } => Some((
+            *joint,
+            *coordinate,
+            -(coefficient * &problem.coordinate_expr(*coordinate, 1)),
+        )),
+        LoadKind::JointActuator {
+            joint,
+            coordinate,
+            value,
+        } => Some((*joint, *coordinate, value.clone())),
+        _ => None,
+    }
 }
 
 /// Whether an action is a joint load (so that Kane's method can take it as a generalized force).
@@ -488,9 +474,4 @@ pub fn is_joint_load(model: &Model, action: &Action) -> bool {
         model.problem.loads[i].kind,
         LoadKind::JointSpring { .. } | LoadKind::JointDamper { .. } | LoadKind::JointActuator { .. }
     ))
-}
-
-/// The offset of nothing: a force at the origin.
-pub fn origin() -> Components {
-    zero3()
 }
