@@ -198,19 +198,26 @@ impl Compiler {
                 } else {
                     *coefficient
                 };
-                let mut slots: Vec<usize> = factors
-                    .iter()
-                    .map(|(base, k)| {
-                        let power = if *k == 1 {
-                            base.clone()
-                        } else {
-                            super::build::pow(base.clone(), Expr::int(*k))
-                        };
-                        self.slot(&power)
-                    })
-                    .collect();
-                if !magnitude.is_one() || slots.is_empty() {
-                    slots.insert(0, self.constant_slot(magnitude.to_f64()));
+                let power = |(base, k): &(Expr, i64)| {
+                    if *k == 1 {
+                        base.clone()
+                    } else {
+                        super::build::pow(base.clone(), Expr::int(*k))
+                    }
+                };
+                // The constant part (coefficient and constants) as one product, so that the
+                // same `m L^2 / 12` is computed once for the whole program.
+                let (constant, varying): (Vec<_>, Vec<_>) =
+                    factors.iter().partition(|(base, _)| base.is_constant());
+                let mut constant_part: Vec<Expr> = constant.into_iter().map(power).collect();
+                constant_part.push(Expr::num(magnitude));
+                let constant_part = super::build::mul(constant_part);
+                let mut slots: Vec<usize> = Vec::new();
+                if !constant_part.is_one() || varying.is_empty() {
+                    slots.push(self.slot(&constant_part));
+                }
+                for factor in varying {
+                    slots.push(self.slot(&power(factor)));
                 }
                 let mut acc = slots[0];
                 for &s in &slots[1..] {
