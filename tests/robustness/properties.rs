@@ -1,7 +1,7 @@
 //! Generated cases: the expression parser and the problem reader never panic or hang, and
 //! every error they report says where.
 //!
-//! The counts below add up to 12,000 cases; `PROPTEST_CASES=N` runs N cases in each suite
+//! The counts below add up to 12,600 cases; `PROPTEST_CASES=N` runs N cases in each suite
 //! instead (the long campaign in TESTING.md).
 
 use super::generate::{self, CONSTANTS, COORDINATES, FRAMES};
@@ -155,5 +155,71 @@ fn reader_on_mutated_problems() {
             }
             loads_or_says_where(&mutate::write(&value))
         },
+    );
+}
+
+static DERIVED: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+/// Mutations that keep most problems valid: numbers made extreme, strings and numbers
+/// swapped for others of the same document, a token inserted into a string.
+fn gentle_mutations() -> impl Strategy<Value = (usize, Vec<(usize, generate::Mutation)>)> {
+    let gentle = prop_oneof![
+        any::<usize>().prop_map(generate::Mutation::Borrow),
+        proptest::sample::select(&["0", "-", "*0", "+q1", "*1e300", "/0", "^9"][..])
+            .prop_map(|t| generate::Mutation::Perturb(t.to_string())),
+        generate::json_number().prop_map(generate::Mutation::Replace),
+    ];
+    (
+        any::<usize>(),
+        proptest::collection::vec((any::<usize>(), gentle), 1..3),
+    )
+}
+
+/// The small bundled problems, whose derivation takes milliseconds.
+const SMALL: [&str; 5] = [
+    "simple-pendulum",
+    "double-pendulum-rods",
+    "two-mass-spring-damper",
+    "compound-pendulum",
+    "cart-pole",
+];
+
+/// Mutated small problems that still load go through the whole derivation and a solve
+/// at their initial state: an error is fine, a panic or a hang is not.
+#[test]
+fn pipeline_on_mutated_small_problems() {
+    use mbd_tutor::equations::{derive, Method};
+    use mbd_tutor::numeric::evaluate::Compiled;
+    let originals: Vec<Value> = problem_texts()
+        .iter()
+        .filter(|(name, _)| SMALL.iter().any(|s| name.ends_with(&format!("/{s}.json"))))
+        .map(|(_, text)| serde_json::from_str(text).expect("JSON"))
+        .collect();
+    assert_eq!(originals.len(), SMALL.len());
+    check(
+        "pipeline_on_mutated_small_problems",
+        300,
+        gentle_mutations,
+        move |(which, mutations)| {
+            let mut value = originals[which % originals.len()].clone();
+            for (at, mutation) in mutations {
+                mutate::apply(&mut value, *at, mutation);
+            }
+            let Ok(problem) = mbd_tutor::problem::load(&mutate::write(&value)) else {
+                return Ok(());
+            };
+            DERIVED.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            let method = [Method::MotionLaw, Method::NewtonEuler, Method::Kane][which % 3];
+            if let Ok(derivation) = derive(&problem, method) {
+                let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+                let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+                let _ = Compiled::new(&derivation).solve(0.0, &q, &rates);
+            }
+            Ok(())
+        },
+    );
+    eprintln!(
+        "derived {}",
+        DERIVED.load(std::sync::atomic::Ordering::Relaxed)
     );
 }
