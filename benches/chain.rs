@@ -106,7 +106,7 @@ fn main() {
             let repeats = 2000;
             let start = Instant::now();
             for _ in 0..repeats {
-                std::hint::black_box(compiled.solve(0.0, &q, &rates).expect("solves"));
+                std::hint::black_box(compiled.motion(0.0, &q, &rates).expect("solves"));
             }
             let solve_us = start.elapsed().as_secs_f64() * 1e6 / repeats as f64;
             println!(

@@ -136,7 +136,10 @@ pub fn to_json(
     }
     let mut reactions = Map::new();
     for (joint, force, moment) in &solution.reactions {
-        reactions.insert(joint.clone(), json!({ "force": clean3(force), "moment": clean3(moment) }));
+        reactions.insert(
+            joint.clone(),
+            json!({ "force": clean3(force), "moment": clean3(moment) }),
+        );
     }
     json!({
         "method": method,

@@ -176,7 +176,9 @@ impl Frames {
         // Products of rotations about different axes leave sums of trig products that the
         // angle-sum identities shorten; everything built on the matrix is then smaller.
         let matrix: Matrix = if rotations.len() > 1 {
-            std::array::from_fn(|i| std::array::from_fn(|j| crate::symbolic::simplify(&matrix[i][j])))
+            std::array::from_fn(|i| {
+                std::array::from_fn(|j| crate::symbolic::simplify(&matrix[i][j]))
+            })
         } else {
             matrix
         };

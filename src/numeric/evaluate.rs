@@ -36,12 +36,21 @@ pub struct Compiled {
     unknowns: usize,
     program: Program,
     reactions: Vec<ReactionSlot>,
-    energy_output: usize,
+    energy: Program,
     conservative: bool,
     dissipative_only: bool,
     outputs: usize,
     // Reused between evaluations, so a solve allocates no program-sized buffer.
     scratch: std::cell::RefCell<Vec<f64>>,
+}
+
+/// The q'' and the requested reactions at one state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Motion {
+    /// The q'', in coordinate order.
+    pub accelerations: Vec<f64>,
+    /// Each requested joint: name, force and moment in the parent's unit vectors.
+    pub reactions: Vec<(String, [f64; 3], [f64; 3])>,
 }
 
 /// The solution at one state.
@@ -104,9 +113,11 @@ impl Compiled {
                 components,
             });
         }
-        let energy_output = outputs.len();
-        outputs.push(energy::kinetic(model));
-        outputs.push(energy::potential(model));
+        // The energies are a program of their own: they are not part of A and b.
+        let energy = Program::compile(
+            &input_symbols(problem),
+            &[energy::kinetic(model), energy::potential(model)],
+        );
         let program = Program::compile(&input_symbols(problem), &outputs);
         Compiled {
             method: derivation.method,
@@ -115,7 +126,7 @@ impl Compiled {
             unknowns: n,
             program,
             reactions,
-            energy_output,
+            energy,
             outputs: outputs.len(),
             scratch: std::cell::RefCell::new(Vec::new()),
             conservative: problem.loads.iter().all(|l| is_conservative(&l.kind)),
@@ -126,7 +137,7 @@ impl Compiled {
         }
     }
 
-    /// The number of operations to evaluate `A` and `b` (and the extras) once.
+    /// The number of operations to evaluate `A` and `b` once (with the reaction directions).
     pub fn operation_count(&self) -> usize {
         self.program.operation_count()
     }
@@ -137,10 +148,35 @@ impl Compiled {
     /// A singular system, naming the state (and the coordinate that moves no mass, when one
     /// does not), or a value that is not finite.
     pub fn solve(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<StateSolution, SolveError> {
+        let motion = self.motion(t, q, rates)?;
+        let mut scratch = self.scratch.take();
+        let mut energies = [0.0; 2];
+        self.energy
+            .run(&self.inputs(t, q, rates), &mut scratch, &mut energies);
+        self.scratch.replace(scratch);
+        Ok(StateSolution {
+            accelerations: motion.accelerations,
+            reactions: motion.reactions,
+            kinetic: energies[0],
+            potential: energies[1],
+        })
+    }
+
+    fn inputs(&self, t: f64, q: &[f64], rates: &[f64]) -> Vec<f64> {
         let mut inputs = self.constants.clone();
         inputs.extend_from_slice(q);
         inputs.extend_from_slice(rates);
         inputs.push(t);
+        inputs
+    }
+
+    /// The q'' and the requested reactions only (no energies): one evaluation of `A` and
+    /// `b` and one LU solve.
+    ///
+    /// # Errors
+    /// As for [`Compiled::solve`].
+    pub fn motion(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Motion, SolveError> {
+        let inputs = self.inputs(t, q, rates);
         let mut scratch = self.scratch.take();
         let mut values = vec![0.0; self.outputs];
         self.program.run(&inputs, &mut scratch, &mut values);
@@ -172,15 +208,8 @@ impl Compiled {
             }
             reactions.push((slot.joint.clone(), force, moment));
         }
-        let solution = StateSolution {
-            accelerations,
-            reactions,
-            kinetic: values[self.energy_output],
-            potential: values[self.energy_output + 1],
-        };
-        let finite = solution.accelerations.iter().all(|x| x.is_finite())
-            && solution
-                .reactions
+        let finite = accelerations.iter().all(|x| x.is_finite())
+            && reactions
                 .iter()
                 .all(|(_, f, m)| f.iter().chain(m).all(|x| x.is_finite()));
         if !finite {
@@ -189,7 +218,10 @@ impl Compiled {
                 what: "the solution".into(),
             });
         }
-        Ok(solution)
+        Ok(Motion {
+            accelerations,
+            reactions,
+        })
     }
 
     fn singularity_detail(&self, a: &DMatrix<f64>) -> String {

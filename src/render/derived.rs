@@ -309,7 +309,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let g = &row.groups;
     // Contact + distance + inertia forces + inertia torques, leaving out the empty groups.
     let mut grouped = String::new();
-    for e in [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].into_iter().filter(|e| !e.is_zero()) {
+    for e in [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque]
+        .into_iter()
+        .filter(|e| !e.is_zero())
+    {
         let text = group_tex(e);
         match (grouped.is_empty(), text.strip_prefix('-')) {
             (true, _) => grouped = text,

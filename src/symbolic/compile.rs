@@ -6,16 +6,18 @@ use super::expr::{Expr, Func, Node, Symbol};
 use std::collections::HashMap;
 
 #[derive(Clone, Copy, Debug)]
+// Slots are u32 so that an instruction takes 12 bytes: the program is streamed through
+// once per evaluation, and its size, not the arithmetic, sets the time.
 enum Instr {
     Const(f64),
-    Add(usize, usize),
-    Sub(usize, usize),
-    Mul(usize, usize),
-    Neg(usize),
-    Recip(usize),
-    Square(usize),
-    Pow(usize, usize),
-    Func(Func, usize, usize),
+    Add(u32, u32),
+    Sub(u32, u32),
+    Mul(u32, u32),
+    Neg(u32),
+    Recip(u32),
+    Square(u32),
+    Pow(u32, u32),
+    Func(Func, u32, u32),
 }
 
 /// A straight-line program that evaluates a list of expressions.
@@ -72,20 +74,21 @@ impl Program {
     /// Evaluates every output; `scratch` is reused between calls to avoid allocation.
     pub fn run(&self, inputs: &[f64], scratch: &mut Vec<f64>, outputs: &mut [f64]) {
         let start = self.inputs.len();
-        scratch.clear();
+        // Every slot is written before it is read, so a buffer of the right length from an
+        // earlier run is reused as it is.
         scratch.resize(start + self.instructions.len(), 0.0);
         scratch[..start].copy_from_slice(&inputs[..start]);
         for (i, instr) in self.instructions.iter().enumerate() {
             let value = match *instr {
                 Instr::Const(x) => x,
-                Instr::Add(a, b) => scratch[a] + scratch[b],
-                Instr::Sub(a, b) => scratch[a] - scratch[b],
-                Instr::Mul(a, b) => scratch[a] * scratch[b],
-                Instr::Neg(a) => -scratch[a],
-                Instr::Recip(a) => 1.0 / scratch[a],
-                Instr::Square(a) => scratch[a] * scratch[a],
-                Instr::Pow(a, b) => power(scratch[a], scratch[b]),
-                Instr::Func(f, a, b) => apply(f, scratch[a], scratch[b]),
+                Instr::Add(a, b) => scratch[a as usize] + scratch[b as usize],
+                Instr::Sub(a, b) => scratch[a as usize] - scratch[b as usize],
+                Instr::Mul(a, b) => scratch[a as usize] * scratch[b as usize],
+                Instr::Neg(a) => -scratch[a as usize],
+                Instr::Recip(a) => 1.0 / scratch[a as usize],
+                Instr::Square(a) => scratch[a as usize] * scratch[a as usize],
+                Instr::Pow(a, b) => power(scratch[a as usize], scratch[b as usize]),
+                Instr::Func(f, a, b) => apply(f, scratch[a as usize], scratch[b as usize]),
             };
             scratch[start + i] = value;
         }
@@ -151,7 +154,7 @@ impl Compiler {
                     super::horner::factor(terms.iter().map(super::horner::monomial).collect());
                 let (negative, slot) = self.plan(&plan);
                 if negative {
-                    self.emit(Instr::Neg(slot))
+                    self.emit(Instr::Neg(slot as u32))
                 } else {
                     slot
                 }
@@ -160,18 +163,18 @@ impl Compiler {
                 let slots: Vec<usize> = factors.iter().map(|f| self.slot(f)).collect();
                 let mut acc = slots[0];
                 for &slot in &slots[1..] {
-                    acc = self.emit(Instr::Mul(acc, slot));
+                    acc = self.emit(Instr::Mul(acc as u32, slot as u32));
                 }
                 acc
             }
             Node::Pow(base, exponent) => {
                 let b = self.slot(base);
                 match exponent.as_number().and_then(|n| n.as_integer()) {
-                    Some(-1) => self.emit(Instr::Recip(b)),
-                    Some(2) => self.emit(Instr::Square(b)),
+                    Some(-1) => self.emit(Instr::Recip(b as u32)),
+                    Some(2) => self.emit(Instr::Square(b as u32)),
                     _ => {
                         let x = self.slot(exponent);
-                        self.emit(Instr::Pow(b, x))
+                        self.emit(Instr::Pow(b as u32, x as u32))
                     }
                 }
             }
@@ -181,7 +184,7 @@ impl Compiler {
                     Some(arg) => self.slot(arg),
                     None => a,
                 };
-                self.emit(Instr::Func(*f, a, b))
+                self.emit(Instr::Func(*f, a as u32, b as u32))
             }
         }
     }
@@ -221,14 +224,14 @@ impl Compiler {
                 }
                 let mut acc = slots[0];
                 for &s in &slots[1..] {
-                    acc = self.emit(Instr::Mul(acc, s));
+                    acc = self.emit(Instr::Mul(acc as u32, s as u32));
                 }
                 (negative, acc)
             }
             Plan::Product(base, inner) => {
                 let b = self.slot(base);
                 let (negative, s) = self.plan(inner);
-                (negative, self.emit(Instr::Mul(b, s)))
+                (negative, self.emit(Instr::Mul(b as u32, s as u32)))
             }
             Plan::Sum(parts) => {
                 let mut signed: Vec<(bool, usize)> = parts.iter().map(|p| self.plan(p)).collect();
@@ -239,9 +242,9 @@ impl Compiler {
                     // With every part negative, sum the magnitudes and negate once.
                     let subtract = negative && !all_negative;
                     acc = self.emit(if subtract {
-                        Instr::Sub(acc, s)
+                        Instr::Sub(acc as u32, s as u32)
                     } else {
-                        Instr::Add(acc, s)
+                        Instr::Add(acc as u32, s as u32)
                     });
                 }
                 (all_negative, acc)
