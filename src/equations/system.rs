@@ -136,14 +136,20 @@ pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Mecha
         }
     };
     if rows.len() != unknowns.len() {
+        let mut message = format!(
+            "{} found {} independent equations for {} unknowns",
+            method.title(),
+            rows.len(),
+            unknowns.len()
+        );
+        if let Some(name) = massless_coordinate(&model, &actions, &inertia, &accelerations) {
+            message.push_str(&format!(
+                ": the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined"
+            ));
+        }
         return Err(MechanicsError {
             path: "joints".into(),
-            message: format!(
-                "{} found {} independent equations for {} unknowns",
-                method.title(),
-                rows.len(),
-                unknowns.len()
-            ),
+            message,
             hint: Some(
                 "a coordinate may move nothing with mass, or a reaction may be undetermined".into(),
             ),
@@ -160,6 +166,29 @@ pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Mecha
         system,
         reaction_joints,
     })
+}
+
+/// A coordinate whose q'' has a zero coefficient in every one of Kane's rows (its column
+/// of the mass matrix is zero), at generic states: the usual reason a plan falls short.
+fn massless_coordinate(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    accelerations: &[Symbol],
+) -> Option<String> {
+    let rows = super::kane::equations(model, actions, inertia, accelerations, &[]);
+    let states = planner::sample_states(model);
+    let coefficients: Vec<Vec<f64>> = rows
+        .iter()
+        .flat_map(|row| {
+            states
+                .iter()
+                .map(move |values| planner::coefficient_row(row, accelerations, values))
+        })
+        .collect();
+    (0..accelerations.len())
+        .find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))
+        .map(|i| model.problem.coordinates[i].name.clone())
 }
 
 fn assemble(rows: &[Equation], unknowns: &[Symbol]) -> Result<LinearSystem, MechanicsError> {

@@ -6,7 +6,44 @@ use std::collections::BTreeMap;
 use std::ops;
 
 /// The largest integer power of a sum that is expanded.
-const MAX_EXPANDED_POWER: i64 = 8;
+pub const MAX_EXPANDED_POWER: i64 = 8;
+
+/// The most terms a power of a sum may expand to; a larger power stays a power (and the
+/// parser refuses it, see [`is_refused_power`]).
+pub const MAX_EXPANDED_TERMS: u64 = 10_000;
+
+/// An upper bound on the terms of `(a_1 + … + a_n)^k`: the monomials of degree k in n
+/// variables, C(n + k - 1, k), saturating.
+pub fn expanded_terms(n: usize, k: i64) -> u64 {
+    let (n, k) = (n as u64, k.max(0) as u64);
+    let mut count: u64 = 1;
+    for i in 0..k {
+        count = count.saturating_mul(n + i) / (i + 1);
+        if count > u64::MAX / 1024 {
+            return u64::MAX;
+        }
+    }
+    count
+}
+
+/// Whether `e` holds a power of a sum that was left unexpanded only because it would be
+/// too large: the sign of an input that grows past the bound.
+pub fn is_refused_power(e: &Expr) -> bool {
+    match e.node() {
+        Node::Pow(base, exponent) => {
+            let refused = matches!(base.node(), Node::Add(_))
+                && exponent
+                    .as_number()
+                    .and_then(Number::as_integer)
+                    .is_some_and(|k| (2..=MAX_EXPANDED_POWER).contains(&k));
+            refused || is_refused_power(base) || is_refused_power(exponent)
+        }
+        Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
+            items.iter().any(is_refused_power)
+        }
+        Node::Num(_) | Node::Sym(_) => false,
+    }
+}
 
 /// The canonical sum of `terms`.
 pub fn add(terms: impl IntoIterator<Item = Expr>) -> Expr {
@@ -156,8 +193,12 @@ pub fn pow(base: Expr, exponent: Expr) -> Expr {
         (Node::Pow(inner_base, inner_exp), _) if integer.is_some() => {
             return pow(inner_base.clone(), mul([inner_exp.clone(), exponent]));
         }
-        (Node::Add(_), _) => {
-            if let Some(k) = integer.filter(|k| (2..=MAX_EXPANDED_POWER).contains(k)) {
+        (Node::Add(terms), _) => {
+            let small = |k: &i64| {
+                (2..=MAX_EXPANDED_POWER).contains(k)
+                    && expanded_terms(terms.len(), *k) <= MAX_EXPANDED_TERMS
+            };
+            if let Some(k) = integer.filter(small) {
                 return mul(std::iter::repeat_n(base, k as usize));
             }
         }

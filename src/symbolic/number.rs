@@ -157,7 +157,11 @@ impl Number {
     /// An integer power, exact when it fits; `None` for `0^negative`.
     pub fn powi(self, exp: i64) -> Option<Number> {
         if exp < 0 {
-            return self.recip()?.powi(-exp);
+            // i64::MIN has no negation: such a power is a real number (0 or infinite) anyway.
+            return match exp.checked_neg() {
+                Some(positive) => self.recip()?.powi(positive),
+                None => Some(Number::Real(self.to_f64().powf(exp as f64))),
+            };
         }
         if exp > 64 {
             return Some(Number::Real(self.to_f64().powf(exp as f64)));

@@ -181,6 +181,12 @@ pub fn parse(text: &str, resolver: &dyn Resolve) -> Result<Expr, ParseError> {
             ParseError::new(*column, format!("unexpected {}", describe(token))).with_hint(hint),
         );
     }
+    if super::build::is_refused_power(&expr) {
+        return Err(ParseError::new(1, "the expression expands to too many terms").with_hint(format!(
+            "a power of a sum may expand to at most {} terms; write it with fewer terms or a smaller power",
+            super::build::MAX_EXPANDED_TERMS
+        )));
+    }
     Ok(expr)
 }
 
@@ -400,6 +406,13 @@ mod tests {
         assert!(parse(&deep, &Names).is_err());
         let signs = format!("{}x", "-".repeat(10_000));
         assert!(parse(&signs, &Names).is_err());
+    }
+
+    #[test]
+    fn powers_that_would_expand_past_the_bound_are_refused() {
+        assert!(parse("((m+L+g+p)^8)^8", &Names).is_err());
+        assert!(parse("(m+L+g+p)^8", &Names).is_ok());
+        assert!(parse("2^(-9223372036854775807-1)", &Names).is_ok());
     }
 
     #[test]

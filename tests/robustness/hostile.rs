@@ -223,7 +223,6 @@ fn division_by_zero_in_a_constant() {
 /// and it recurses until the stack overflows (the process aborts, status 134). Run in a
 /// child process so that the abort cannot take the test binary with it.
 #[test]
-#[ignore = "known: stack overflow in symbolic::number::Number::powi for the exponent i64::MIN"]
 fn the_smallest_integer_exponent_does_not_crash() {
     let (code, stderr) = binary_check(
         problem("t", "2^(-9223372036854775807-1)", "0*N.x").as_bytes(),
@@ -343,7 +342,6 @@ fn the_worst_cases_through_the_binary() {
 /// characters, (m + L + g + pi)^64, makes `check` run for minutes. It should be refused
 /// with the path, like an expression that is too long.
 #[test]
-#[ignore = "known: the expansion of powers of sums in symbolic::build is unbounded"]
 fn an_expression_that_expands_past_a_bound_is_refused() {
     let (code, stderr) = binary_check(
         problem("t", "((m+L+g+pi)^8)^8", "0*N.x").as_bytes(),

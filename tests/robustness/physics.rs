@@ -72,7 +72,6 @@ fn a_coordinate_that_moves_nothing_with_mass_is_named() {
 }
 
 #[test]
-#[ignore = "known: the Motion Law's planner reports a rank shortfall without naming `phi`"]
 fn the_motion_law_names_the_coordinate_that_moves_nothing() {
     let stderr = fails(&["solve", &file("massless-coordinate.json")]);
     assert!(stderr.contains("`phi` moves nothing with mass"), "{stderr}");
