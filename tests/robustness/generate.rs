@@ -312,7 +312,7 @@ pub fn json_number() -> impl Strategy<Value = Value> {
                 f64::MAX,
                 f64::MIN_POSITIVE,
                 5e-324,
-                1.5707963267948966
+                std::f64::consts::FRAC_PI_2
             ][..]
         )
         .prop_map(|x| Number::from_f64(x).map_or(Value::Null, Value::Number)),
