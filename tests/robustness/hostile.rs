@@ -219,9 +219,9 @@ fn division_by_zero_in_a_constant() {
     assert!(hint.contains("division by zero"), "{errors:?}");
 }
 
-/// `Number::powi` negates its exponent to take a reciprocal; for `i64::MIN` that wraps
-/// and it recurses until the stack overflows (the process aborts, status 134). Run in a
-/// child process so that the abort cannot take the test binary with it.
+/// Regression: `Number::powi` negated its exponent to take a reciprocal; for `i64::MIN`
+/// that wrapped and it recursed until the stack overflowed (the process aborted, status
+/// 134). Run in a child process so that such an abort cannot take the test binary along.
 #[test]
 fn the_smallest_integer_exponent_does_not_crash() {
     let (code, stderr) = binary_check(
@@ -338,9 +338,9 @@ fn the_worst_cases_through_the_binary() {
     }
 }
 
-/// Every expression is kept expanded, and nothing bounds the expansion: this mass of 16
-/// characters, (m + L + g + pi)^64, makes `check` run for minutes. It should be refused
-/// with the path, like an expression that is too long.
+/// Regression: every expression is kept expanded, and nothing bounded the expansion: this
+/// mass of 16 characters, (m + L + g + pi)^64, kept `check` busy for minutes. It is
+/// refused with its path, like an expression that is too long.
 #[test]
 fn an_expression_that_expands_past_a_bound_is_refused() {
     let (code, stderr) = binary_check(
@@ -349,4 +349,22 @@ fn an_expression_that_expands_past_a_bound_is_refused() {
     );
     assert_eq!(code, Some(1), "{stderr}");
     assert!(stderr.contains("bodies.A.mass"), "{stderr}");
+    assert!(stderr.contains("expands to too many terms"), "{stderr}");
+}
+
+/// Regression: inputs on which the parser fuzz target ran for more than 10 s (nested
+/// powers of sums, expanded without a bound). Each now finishes at once.
+#[test]
+fn fuzz_found_expansions_finish() {
+    for text in [
+        "((-.22^ ---t-3--t-3^-t-3^2 / 0)^4 +-t-3--t)^6 +--t)^6 +,440",
+        "((0.22^ ---t-3-q1-t-3^2 / 0)^4 +---t-3--t)^4 tan20",
+        "((0.2^2 +07^((0.2^2 ^1+107 +0)/3-0.3^2 / 0)^3 +42^2226 +5)/3-((0.2^2 +07+((0.2^2 \
+         +07^((N.x^2  *---t-3--t)^2 *---11 +0)/3-0.3^2 / 0)^3 +42^2226 +5)/3-0.3^2 / 0)^4 \
+         +07^223370.3^2 / 0)^4 +0t-7^2233-",
+    ] {
+        within(text, LIMIT, move || {
+            parses_or_says_where(text).unwrap_or_else(|e| panic!("{e}"));
+        });
+    }
 }
