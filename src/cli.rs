@@ -35,6 +35,7 @@ pub struct Common {
     #[arg(long, value_name = "NAME=VALUE,...")]
     pub set: Vec<String>,
     /// Write there instead of standard output; a failed run leaves an existing file untouched.
+    /// The problem file itself is refused (exit status 2).
     #[arg(short, long)]
     pub output: Option<PathBuf>,
     /// Refuse problems with more bodies than this, whose derivation could take hours.
