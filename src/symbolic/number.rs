@@ -183,7 +183,8 @@ impl Number {
         }
         let root = |v: i64| {
             let r = (v as f64).sqrt().round() as i64;
-            (r * r == v).then_some(r)
+            // Near i64::MAX the rounded root squared overflows: then it is no exact root.
+            (r.checked_mul(r) == Some(v)).then_some(r)
         };
         Some(Number::Ratio(root(n)?, root(d)?))
     }

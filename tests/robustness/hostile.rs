@@ -374,7 +374,6 @@ fn fuzz_found_expansions_finish() {
 /// test` without `--release`, the fuzz build); release builds wrap and happen to answer
 /// right. Found by the parser fuzz target.
 #[test]
-#[ignore = "known: i64 overflow in symbolic::number::Number::exact_sqrt; run without --release"]
 fn the_square_root_of_the_largest_integer() {
     for text in [
         "sqrt(9223372036854775807)",
