@@ -369,10 +369,9 @@ fn fuzz_found_expansions_finish() {
     }
 }
 
-/// `Number::exact_sqrt` squares the rounded root of an `i64` to check it, and for
-/// 9223372036854775807 the square overflows: a panic where overflow is checked (`cargo
-/// test` without `--release`, the fuzz build); release builds wrap and happen to answer
-/// right. Found by the parser fuzz target.
+/// Regression: `Number::exact_sqrt` squared the rounded root of an `i64` to check it, and
+/// for 9223372036854775807 the square overflowed: a panic where overflow is checked
+/// (`cargo test` without `--release`, the fuzz build). Found by the parser fuzz target.
 #[test]
 fn the_square_root_of_the_largest_integer() {
     for text in [
