@@ -248,6 +248,7 @@ impl Parser<'_> {
     }
 
     fn product(&mut self) -> Result<Expr, ParseError> {
+        let column = self.column();
         let mut factors = vec![self.unary()?];
         loop {
             if self.eat('*') {
@@ -257,6 +258,20 @@ impl Parser<'_> {
             } else {
                 break;
             }
+        }
+        // Multiplying out sums multiplies their term counts: refuse before doing the work.
+        let terms = factors
+            .iter()
+            .fold(1u64, |n, f| n.saturating_mul(f.terms().len() as u64));
+        if terms > super::build::MAX_EXPANDED_TERMS {
+            return Err(
+                ParseError::new(column, "the product expands to too many terms").with_hint(
+                    format!(
+                        "a product of sums may expand to at most {} terms",
+                        super::build::MAX_EXPANDED_TERMS
+                    ),
+                ),
+            );
         }
         Ok(mul(factors))
     }
