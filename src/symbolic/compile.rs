@@ -142,12 +142,14 @@ impl Compiler {
     fn build(&mut self, e: &Expr) -> usize {
         match e.node() {
             Node::Num(n) => self.constant_slot(n.to_f64()),
-            Node::Sym(s) => match self.program.inputs.iter().position(|i| i == s) {
-                Some(index) => index,
-                None if matches!(s, Symbol::Const(n) if &**n == "pi") => {
+            Node::Sym(s) => match (self.program.inputs.iter().position(|i| i == s), s) {
+                (Some(index), _) => index,
+                // Computed once however many terms use it: `slot` remembers it.
+                (None, Symbol::Defined(d)) => self.slot(d.value()),
+                (None, Symbol::Const(n)) if &**n == "pi" => {
                     self.constant_slot(std::f64::consts::PI)
                 }
-                None => self.constant_slot(f64::NAN),
+                (None, _) => self.constant_slot(f64::NAN),
             },
             Node::Add(terms) => {
                 let plan =

@@ -66,6 +66,7 @@ fn derivative(
     };
     Ok(match e.node() {
         Node::Num(_) => Expr::zero(),
+        Node::Sym(Symbol::Defined(d)) => derivative(d.value(), of_symbol)?,
         Node::Sym(s) => of_symbol(s).map_err(fail)?,
         Node::Add(terms) => add(terms
             .iter()

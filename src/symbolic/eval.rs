@@ -74,6 +74,7 @@ pub fn power(base: f64, exponent: f64) -> f64 {
 pub fn eval(e: &Expr, values: &Values) -> f64 {
     match e.node() {
         Node::Num(n) => n.to_f64(),
+        Node::Sym(Symbol::Defined(d)) => eval(d.value(), values),
         Node::Sym(s) => values.get(s),
         Node::Add(terms) => terms.iter().map(|t| eval(t, values)).sum(),
         Node::Mul(factors) => factors.iter().map(|f| eval(f, values)).product(),

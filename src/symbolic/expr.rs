@@ -26,6 +26,53 @@ pub enum Symbol {
     Unknown(Name),
     /// A unit vector `frame.axis` (axis 0, 1, 2 for x, y, z); only inside vector expressions.
     UnitVector(Name, u8),
+    /// A quantity named once and used in many places (see [`Definition`]).
+    Defined(Definition),
+}
+
+/// A quantity named once and used in many places, such as a component of a body's angular
+/// velocity: products of it stay products instead of being multiplied out, which keeps
+/// `(q1' + … + qk')^2` one term instead of k² terms. It evaluates, differentiates and
+/// prints as its definition. Two definitions are the same when their names are.
+#[derive(Clone, Debug)]
+pub struct Definition(Rc<(Name, Expr)>);
+
+impl Definition {
+    /// The unique name, e.g. `B.w.z`.
+    pub fn name(&self) -> &str {
+        &self.0 .0
+    }
+
+    /// What the symbol stands for.
+    pub fn value(&self) -> &Expr {
+        &self.0 .1
+    }
+}
+
+impl PartialEq for Definition {
+    fn eq(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.0, &other.0) || self.name() == other.name()
+    }
+}
+
+impl Eq for Definition {}
+
+impl PartialOrd for Definition {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Definition {
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.name().cmp(other.name())
+    }
+}
+
+impl std::hash::Hash for Definition {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.name().hash(state)
+    }
 }
 
 /// The functions of the problem format.
@@ -164,6 +211,15 @@ impl Expr {
         Expr::sym(Symbol::Coord(name.into(), order))
     }
 
+    /// `value` named `name` when it is a sum (see [`Definition`]); `value` itself otherwise.
+    pub fn defined(name: &str, value: Expr) -> Expr {
+        if matches!(value.node(), Node::Add(_)) {
+            Expr::sym(Symbol::Defined(Definition(Rc::new((name.into(), value)))))
+        } else {
+            value
+        }
+    }
+
     /// Time.
     pub fn time() -> Expr {
         Expr::sym(Symbol::Time)
@@ -231,11 +287,16 @@ impl Expr {
         }
     }
 
-    /// Calls `visit` on every symbol in the expression.
+    /// Calls `visit` on every symbol in the expression, inside definitions too.
     pub fn for_each_symbol(&self, visit: &mut impl FnMut(&Symbol)) {
         match self.node() {
             Node::Num(_) => {}
-            Node::Sym(s) => visit(s),
+            Node::Sym(s) => {
+                visit(s);
+                if let Symbol::Defined(d) = s {
+                    d.value().for_each_symbol(visit);
+                }
+            }
             Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
                 items.iter().for_each(|e| e.for_each_symbol(visit))
             }
@@ -246,10 +307,13 @@ impl Expr {
         }
     }
 
-    /// Whether any symbol satisfies `pred`.
+    /// Whether any symbol satisfies `pred`, inside definitions too.
     pub fn any_symbol(&self, pred: &impl Fn(&Symbol) -> bool) -> bool {
         match self.node() {
             Node::Num(_) => false,
+            Node::Sym(Symbol::Defined(d)) => {
+                pred(&Symbol::Defined(d.clone())) || d.value().any_symbol(pred)
+            }
             Node::Sym(s) => pred(s),
             Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
                 items.iter().any(|e| e.any_symbol(pred))
@@ -280,7 +344,11 @@ impl Expr {
         }
     }
 
-    fn rank(&self) -> u8 {
+    /// The rank of a product among node kinds (see `rank`).
+    pub(crate) const MUL_RANK: u8 = 4;
+
+    /// The order of node kinds when two expressions of different kinds are compared.
+    pub(crate) fn rank(&self) -> u8 {
         match self.node() {
             Node::Num(_) => 0,
             Node::Sym(_) => 1,
@@ -345,5 +413,83 @@ impl std::hash::Hash for Expr {
 impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&super::print::plain(self))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::{pow, sin};
+    use crate::symbolic::compile::Program;
+    use crate::symbolic::diff::time_derivative;
+    use crate::symbolic::eval::{eval, Values};
+    use crate::symbolic::linear::linear_split;
+    use crate::symbolic::print::{latex, plain};
+    use crate::symbolic::subst::substitute;
+
+    fn omega() -> Expr {
+        Expr::defined("B.w.z", Expr::coord("q1", 1) + Expr::coord("q2", 1))
+    }
+
+    #[test]
+    fn a_defined_sum_stays_one_factor_when_squared() {
+        let square = pow(omega(), Expr::int(2)) * sin(Expr::coord("q2", 0));
+        assert_eq!(square.terms().len(), 1);
+        assert_eq!(
+            latex(&square),
+            "\\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2} \\sin(q_{2})"
+        );
+        assert_eq!(plain(&square), "(q1' + q2')^2*sin(q2)");
+    }
+
+    #[test]
+    fn a_single_term_is_not_named() {
+        let single = Expr::defined("A.w.z", Expr::coord("q1", 1));
+        assert_eq!(single, Expr::coord("q1", 1));
+    }
+
+    #[test]
+    fn it_evaluates_and_differentiates_as_its_definition() {
+        let e = pow(omega(), Expr::int(2));
+        let expanded = pow(Expr::coord("q1", 1) + Expr::coord("q2", 1), Expr::int(2));
+        let mut values = Values::new();
+        let inputs = [
+            Symbol::Coord("q1".into(), 1),
+            Symbol::Coord("q2".into(), 1),
+            Symbol::Coord("q1".into(), 2),
+            Symbol::Coord("q2".into(), 2),
+        ];
+        for (s, v) in inputs.iter().zip([0.3, -1.1, 2.0, 0.5]) {
+            values.set(s.clone(), v);
+        }
+        // (0.3 - 1.1)^2 by hand
+        assert!((eval(&e, &values) - 0.64).abs() < 1e-15);
+        let program = Program::compile(&inputs, &[e.clone()]);
+        assert!((program.eval(&[0.3, -1.1, 2.0, 0.5])[0] - 0.64).abs() < 1e-15);
+        let rate = time_derivative(&e).unwrap();
+        assert!(
+            (eval(&rate, &values) - eval(&time_derivative(&expanded).unwrap(), &values)).abs()
+                < 1e-14
+        );
+    }
+
+    #[test]
+    fn splitting_in_a_symbol_inside_a_definition_is_refused() {
+        let e = omega() * Expr::constant("m");
+        assert!(linear_split(&e, &[Symbol::Coord("q1".into(), 1)]).is_err());
+        let (coefficients, rest) = linear_split(&e, &[Symbol::Coord("q1".into(), 2)]).unwrap();
+        assert!(coefficients[0].is_zero());
+        assert_eq!(rest, e);
+    }
+
+    #[test]
+    fn substituting_into_a_definition_replaces_it() {
+        let e = omega() * Expr::constant("m");
+        let frozen = substitute(&e, &|s| {
+            matches!(s, Symbol::Coord(n, 1) if &**n == "q2").then(Expr::zero)
+        });
+        assert_eq!(frozen, Expr::coord("q1", 1) * Expr::constant("m"));
+        let untouched = substitute(&e, &|s| matches!(s, Symbol::Time).then(Expr::zero));
+        assert_eq!(untouched, e);
     }
 }

@@ -35,8 +35,10 @@ pub fn linear_split(e: &Expr, unknowns: &[Symbol]) -> Result<(Vec<Expr>, Expr), 
     let find = |factor: &Expr| -> Option<usize> {
         match factor.node() {
             // The common case, an atom, is one lookup rather than a search of every unknown.
-            Node::Sym(s) => index_of.get(s).copied(),
-            Node::Num(_) => None,
+            Node::Sym(s) if index_of.contains_key(s) => index_of.get(s).copied(),
+            Node::Num(_) | Node::Sym(Symbol::Const(_)) => None,
+            // One walk to see whether any unknown is inside, then which.
+            _ if !factor.any_symbol(&|s| index_of.contains_key(s)) => None,
             _ => unknowns.iter().position(|u| factor.contains(u)),
         }
     };

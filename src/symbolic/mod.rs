@@ -16,6 +16,6 @@ pub mod simplify;
 pub mod subst;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
-pub use expr::{Expr, Func, Name, Node, Symbol};
+pub use expr::{Definition, Expr, Func, Name, Node, Symbol};
 pub use number::Number;
 pub use simplify::simplify;

@@ -94,6 +94,7 @@ fn latex_symbol(s: &Symbol) -> String {
             _ => latex_name(name),
         },
         Symbol::UnitVector(frame, axis) => latex_unit_vector(frame, *axis),
+        Symbol::Defined(d) => format!("\\left({}\\right)", latex(d.value())),
     }
 }
 
@@ -105,6 +106,7 @@ fn plain_symbol(s: &Symbol) -> String {
         Symbol::UnitVector(frame, axis) => {
             format!("{frame}.{}", ["x", "y", "z"][(*axis as usize).min(2)])
         }
+        Symbol::Defined(d) => format!("({})", plain(d.value())),
     }
 }
 
@@ -252,7 +254,9 @@ impl Printer {
     }
 
     fn argument(&self, arg: &Expr) -> String {
-        if self.latex && matches!(arg.node(), Node::Sym(_)) {
+        if matches!(arg.node(), Node::Sym(Symbol::Defined(_))) {
+            self.atom(arg)
+        } else if self.latex && matches!(arg.node(), Node::Sym(_)) {
             format!("({})", self.atom(arg))
         } else {
             self.parens(&self.sum(arg))

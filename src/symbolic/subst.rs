@@ -7,6 +7,15 @@ use super::expr::{Expr, Node, Symbol};
 pub fn substitute(e: &Expr, replace: &dyn Fn(&Symbol) -> Option<Expr>) -> Expr {
     match e.node() {
         Node::Num(_) => e.clone(),
+        Node::Sym(Symbol::Defined(d)) => {
+            // A definition that changes is replaced by what it now stands for.
+            let value = substitute(d.value(), replace);
+            if value == *d.value() {
+                e.clone()
+            } else {
+                value
+            }
+        }
         Node::Sym(s) => replace(s).unwrap_or_else(|| e.clone()),
         Node::Add(terms) => add(terms.iter().map(|t| substitute(t, replace))),
         Node::Mul(factors) => mul(factors.iter().map(|f| substitute(f, replace))),
