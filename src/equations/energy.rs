@@ -7,14 +7,27 @@ use crate::problem::{BodyId, LoadKind};
 use crate::symbolic::{add, pow, Expr};
 
 /// The kinetic energy: every body's translation and rotation.
+///
+/// The velocity components in `N` and the angular velocity components are named symbols,
+/// so that `v·v` is not multiplied out: for a chain of n bodies that would be n² terms a body.
 pub fn kinetic(model: &Model) -> Expr {
     let half = Expr::ratio(1, 2);
     let mut terms = Vec::new();
     for &body in &model.order {
         let state = &model.bodies[body.0];
-        let v = &state.center.velocity;
-        terms.push(&half * &(&state.mass * &v.dot(v, &model.frames)));
-        let w = state.omega.components_in(body, &model.frames);
+        let name = model.frames.name(body);
+        let v = state
+            .center
+            .velocity
+            .components_in(BodyId::GROUND, &model.frames);
+        let v: [Expr; 3] = std::array::from_fn(|axis| {
+            Expr::defined(
+                &format!("{name}.v.{}", ["x", "y", "z"][axis]),
+                v[axis].clone(),
+            )
+        });
+        terms.push(&half * &(&state.mass * &dot3(&v, &v)));
+        let w = state.omega_named.components_in(body, &model.frames);
         terms.push(&half * &dot3(&w, &apply(&state.inertia, &w)));
     }
     add(terms)

@@ -25,7 +25,7 @@ impl Inertia {
         for (index, state) in model.bodies.iter().enumerate() {
             let body = BodyId(index);
             force.push(state.center.acceleration.scaled(&-state.mass.clone()));
-            let w = state.omega.components_in(body, &model.frames);
+            let w = state.omega_named.components_in(body, &model.frames);
             let a = state.alpha.components_in(body, &model.frames);
             let iw = apply(&state.inertia, &w);
             let ia = apply(&state.inertia, &a);

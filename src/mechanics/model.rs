@@ -12,6 +12,10 @@ use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::Values;
 use crate::symbolic::{Expr, Symbol};
 
+/// In spatial problems, an angular velocity component with more terms than this is kept
+/// whole in velocity products; shorter ones are multiplied out (see `omega_named`).
+const MAX_EXPANDED_OMEGA_TERMS: usize = 3;
+
 /// Position, velocity and acceleration of a point in `N`.
 #[derive(Clone, Debug, Default)]
 pub struct PointMotion {
@@ -28,6 +32,10 @@ pub struct PointMotion {
 pub struct BodyState {
     /// Angular velocity in `N`, in the body's own unit vectors.
     pub omega: Vector,
+    /// The same with components kept whole as named symbols, for the velocity products
+    /// `ω×(ω×r)` and `ω×I·ω`: multiplied out, `(q1' + … + qk')^2` alone would be k² terms.
+    /// Planar problems name every sum; spatial ones only the long components.
+    pub omega_named: Vector,
     /// Angular acceleration in `N`, in the body's own unit vectors.
     pub alpha: Vector,
     /// The body's origin.
@@ -153,6 +161,7 @@ impl<'p> Model<'p> {
         let frames = Frames::new(frame_infos, names);
         let ground = BodyState {
             omega: Vector::zero(),
+            omega_named: Vector::zero(),
             alpha: Vector::zero(),
             origin: PointMotion::default(),
             center: PointMotion::default(),
@@ -291,7 +300,9 @@ fn rigid_point(
         acceleration: Vector::sum([
             state.origin.acceleration.clone(),
             state.alpha.cross(&r, frames),
-            state.omega.cross(&w_x_r, frames),
+            state
+                .omega_named
+                .cross(&state.omega_named.cross(&r, frames), frames),
         ]),
     }
 }
@@ -322,6 +333,22 @@ fn body_kinematics(
         .plus(&Vector::new(body, relative))
         .map(crate::symbolic::simplify);
     let omega_components = omega.components_in(body, frames);
+    let name = &problem.body(body).name;
+    let planar = problem.dimension == crate::problem::Dimension::Two;
+    let omega_named = Vector::new(
+        body,
+        std::array::from_fn(|axis| {
+            let component = &omega_components[axis];
+            // Planar: (q1' + q2')^2 as a student writes it. Spatial: short components are
+            // multiplied out so that sin^2 + cos^2 = 1 can simplify them.
+            if planar || component.terms().len() > MAX_EXPANDED_OMEGA_TERMS {
+                let label = format!("{name}.w.{}", ["x", "y", "z"][axis]);
+                Expr::defined(&label, component.clone())
+            } else {
+                component.clone()
+            }
+        }),
+    );
     // Expressed in the body's own frame, d/dt in N equals d/dt of the components.
     let alpha = Vector::new(body, dt_components(&omega_components, path)?);
 
@@ -341,7 +368,7 @@ fn body_kinematics(
             carried_point.acceleration,
             Vector::new(parent, d_accel),
             parent_state
-                .omega
+                .omega_named
                 .cross(&slide_rate, frames)
                 .scaled(&Expr::int(2)),
         ]),
@@ -349,6 +376,7 @@ fn body_kinematics(
     let back: Components = std::array::from_fn(|i| -child_at[i].clone());
     let partial_state = BodyState {
         omega: omega.clone(),
+        omega_named: omega_named.clone(),
         alpha: alpha.clone(),
         origin: joint_point.clone(),
         center: PointMotion::default(),
@@ -371,6 +399,7 @@ fn body_kinematics(
     };
     let mut state = BodyState {
         omega,
+        omega_named,
         alpha,
         origin,
         center: PointMotion::default(),
