@@ -180,11 +180,7 @@ fn massless_coordinate(
     let states = planner::sample_states(model);
     let coefficients: Vec<Vec<f64>> = rows
         .iter()
-        .flat_map(|row| {
-            states
-                .iter()
-                .map(move |values| planner::coefficient_row(row, accelerations, values))
-        })
+        .flat_map(|row| planner::coefficient_rows(row, accelerations, &states))
         .collect();
     (0..accelerations.len())
         .find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))

@@ -3,7 +3,7 @@
 
 use super::frames::Frames;
 use crate::problem::BodyId;
-use crate::symbolic::{add, Expr};
+use crate::symbolic::{add, mul, Expr};
 
 /// Three components in one frame's unit vectors.
 pub type Components = [Expr; 3];
@@ -15,16 +15,30 @@ pub fn zero3() -> Components {
 
 /// `a × b` of two triples in the same frame.
 pub fn cross3(a: &Components, b: &Components) -> Components {
+    // `x*y - z*w` as one sum with the sign folded into the product, so that a long `w`
+    // is multiplied out once, not once and then again to negate it.
+    let minus = Expr::int(-1);
+    let term = |x: &Expr, y: &Expr, z: &Expr, w: &Expr| {
+        add([
+            mul([x.clone(), y.clone()]),
+            mul([minus.clone(), z.clone(), w.clone()]),
+        ])
+    };
     [
-        &a[1] * &b[2] - &a[2] * &b[1],
-        &a[2] * &b[0] - &a[0] * &b[2],
-        &a[0] * &b[1] - &a[1] * &b[0],
+        term(&a[1], &b[2], &a[2], &b[1]),
+        term(&a[2], &b[0], &a[0], &b[2]),
+        term(&a[0], &b[1], &a[1], &b[0]),
     ]
 }
 
 /// `a · b` of two triples in the same frame.
 pub fn dot3(a: &Components, b: &Components) -> Expr {
     add([&a[0] * &b[0], &a[1] * &b[1], &a[2] * &b[2]])
+}
+
+/// The number of terms in a triple: a measure of the work of multiplying it out.
+fn size(c: &Components) -> usize {
+    c.iter().map(|e| e.terms().len()).sum()
 }
 
 /// A vector: a sum of parts, each a triple of components in one frame's unit vectors.
@@ -69,15 +83,22 @@ impl Vector {
     fn normalized(mut self) -> Vector {
         self.parts.sort_by_key(|(f, _)| *f);
         let mut merged: Vec<(BodyId, Components)> = Vec::with_capacity(self.parts.len());
-        for (frame, c) in self.parts {
-            match merged.last_mut() {
-                Some((last, acc)) if *last == frame => {
-                    *acc = [&acc[0] + &c[0], &acc[1] + &c[1], &acc[2] + &c[2]];
-                }
-                _ => merged.push((frame, c)),
+        let mut rest = self.parts.as_slice();
+        while let Some((frame, _)) = rest.first() {
+            let same = rest.iter().take_while(|(f, _)| f == frame).count();
+            let (group, tail) = rest.split_at(same);
+            rest = tail;
+            // One sum per axis over the whole group: adding the parts one at a time would
+            // re-sort a growing sum for every part.
+            let components = if group.len() == 1 {
+                group[0].1.clone()
+            } else {
+                std::array::from_fn(|axis| add(group.iter().map(|(_, c)| c[axis].clone())))
+            };
+            if components.iter().any(|e| !e.is_zero()) {
+                merged.push((*frame, components));
             }
         }
-        merged.retain(|(_, c)| c.iter().any(|e| !e.is_zero()));
         Vector { parts: merged }
     }
 
@@ -128,16 +149,12 @@ impl Vector {
 
     /// The components in `frame`'s unit vectors.
     pub fn components_in(&self, frame: BodyId, frames: &Frames) -> Components {
-        let mut total = zero3();
-        for (from, c) in &self.parts {
-            let expressed = frames.express(c, *from, frame);
-            total = [
-                &total[0] + &expressed[0],
-                &total[1] + &expressed[1],
-                &total[2] + &expressed[2],
-            ];
-        }
-        total
+        let expressed: Vec<Components> = self
+            .parts
+            .iter()
+            .map(|(from, c)| frames.express(c, *from, frame))
+            .collect();
+        std::array::from_fn(|axis| add(expressed.iter().map(|c| c[axis].clone())))
     }
 
     /// The same vector written in `frame`'s unit vectors only.
@@ -145,23 +162,37 @@ impl Vector {
         Vector::new(frame, self.components_in(frame, frames))
     }
 
-    /// `self · other`, each part of `other` expressed in the frame of each part of `self`.
+    /// `self · other`, part by part, the shorter part of each pair expressed in the frame
+    /// of the longer.
     pub fn dot(&self, other: &Vector, frames: &Frames) -> Expr {
         let mut terms = Vec::new();
         for (frame, a) in &self.parts {
             for (other_frame, b) in &other.parts {
-                terms.push(dot3(a, &frames.express(b, *other_frame, *frame)));
+                terms.push(if size(a) >= size(b) {
+                    dot3(a, &frames.express(b, *other_frame, *frame))
+                } else {
+                    dot3(&frames.express(a, *frame, *other_frame), b)
+                });
             }
         }
         add(terms)
     }
 
-    /// `self × other`, each part of `other` expressed in the frame of each part of `self`.
+    /// `self × other`, part by part, the shorter part of each pair expressed in the frame
+    /// of the longer (which is cheaper: the long one is multiplied out once, in the cross
+    /// product, instead of twice).
     pub fn cross(&self, other: &Vector, frames: &Frames) -> Vector {
         let mut parts = Vec::new();
         for (frame, a) in &self.parts {
             for (other_frame, b) in &other.parts {
-                parts.push((*frame, cross3(a, &frames.express(b, *other_frame, *frame))));
+                parts.push(if size(a) >= size(b) {
+                    (*frame, cross3(a, &frames.express(b, *other_frame, *frame)))
+                } else {
+                    (
+                        *other_frame,
+                        cross3(&frames.express(a, *frame, *other_frame), b),
+                    )
+                });
             }
         }
         Vector { parts }.normalized()

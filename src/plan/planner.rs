@@ -309,11 +309,18 @@ pub fn sample_states(model: &Model) -> Vec<Values> {
     states
 }
 
-/// The coefficients of the unknowns in a row, at a generic state.
-pub fn coefficient_row(equation: &Equation, unknowns: &[Symbol], values: &Values) -> Vec<f64> {
+/// The coefficients of the unknowns in a row, at each of `states`.
+pub fn coefficient_rows(
+    equation: &Equation,
+    unknowns: &[Symbol],
+    states: &[Values],
+) -> Vec<Vec<f64>> {
     match linear_split(&equation.expression, unknowns) {
-        Ok((coefficients, _)) => coefficients.iter().map(|c| eval(c, values)).collect(),
-        Err(_) => vec![f64::NAN; unknowns.len()],
+        Ok((coefficients, _)) => states
+            .iter()
+            .map(|values| coefficients.iter().map(|c| eval(c, values)).collect())
+            .collect(),
+        Err(_) => vec![vec![f64::NAN; unknowns.len()]; states.len()],
     }
 }
 
@@ -439,8 +446,9 @@ fn adds_rank_everywhere(
     states: &[Values],
 ) -> bool {
     let mut trial: Vec<Vec<Vec<f64>>> = bases.to_vec();
-    for (basis, values) in trial.iter_mut().zip(states) {
-        if !adds_rank(basis, &coefficient_row(equation, wanted, values)) {
+    let rows = coefficient_rows(equation, wanted, states);
+    for (basis, row) in trial.iter_mut().zip(&rows) {
+        if !adds_rank(basis, row) {
             return false;
         }
     }

@@ -2,7 +2,7 @@
 
 use super::expr::{Expr, Func, Node};
 use super::number::Number;
-use std::collections::BTreeMap;
+use std::cmp::Ordering;
 use std::ops;
 
 /// The largest integer power of a sum that is expanded.
@@ -48,29 +48,43 @@ pub fn is_refused_power(e: &Expr) -> bool {
 /// The canonical sum of `terms`.
 pub fn add(terms: impl IntoIterator<Item = Expr>) -> Expr {
     let mut constant = Number::ZERO;
-    let mut collected: BTreeMap<Expr, Number> = BTreeMap::new();
-    let mut push = |term: &Expr, constant: &mut Number| {
-        let (coefficient, rest) = term.split_coefficient();
-        if rest.is_one() {
-            *constant = constant.add(coefficient);
-        } else {
-            let entry = collected.entry(rest).or_insert(Number::ZERO);
-            *entry = entry.add(coefficient);
-        }
+    let mut monomials: Vec<Expr> = Vec::new();
+    let mut push = |term: &Expr| match term.node() {
+        Node::Num(n) => constant = constant.add(*n),
+        _ => monomials.push(term.clone()),
     };
     for term in terms {
         match term.node() {
-            Node::Add(inner) => inner.iter().for_each(|t| push(t, &mut constant)),
-            _ => push(&term, &mut constant),
+            Node::Add(inner) => inner.iter().for_each(&mut push),
+            _ => push(&term),
         }
     }
-    let mut out: Vec<Expr> = Vec::with_capacity(collected.len() + 1);
+    // Like terms end up next to each other; the sort is stable and finds the sorted runs
+    // that sums being added already are, so adding two sums costs about their length.
+    monomials.sort_by(|a, b| cmp_rest(rest_factors(a), rest_factors(b)));
+    let mut out: Vec<Expr> = Vec::with_capacity(monomials.len() + 1);
     if !constant.is_zero() {
         out.push(Expr::num(constant));
     }
-    for (rest, coefficient) in collected {
+    let mut rest = monomials.as_slice();
+    while let Some(first) = rest.first() {
+        let key = rest_factors(first);
+        let same = 1 + rest[1..]
+            .iter()
+            .take_while(|t| cmp_rest(rest_factors(t), key) == Ordering::Equal)
+            .count();
+        let (run, tail) = rest.split_at(same);
+        rest = tail;
+        if same == 1 {
+            // Already canonical: kept as it is, without a new node.
+            out.push(first.clone());
+            continue;
+        }
+        let coefficient = run
+            .iter()
+            .fold(Number::ZERO, |sum, t| sum.add(coefficient_of(t)));
         if !coefficient.is_zero() {
-            out.push(scale_monomial(coefficient, rest));
+            out.push(scale_factors(coefficient, key));
         }
     }
     match out.len() {
@@ -80,29 +94,71 @@ pub fn add(terms: impl IntoIterator<Item = Expr>) -> Expr {
     }
 }
 
-/// `coefficient * rest` where `rest` is a monomial without a numeric coefficient.
-fn scale_monomial(coefficient: Number, rest: Expr) -> Expr {
-    if coefficient.is_one() {
-        return rest;
+/// The numeric coefficient of a monomial.
+fn coefficient_of(term: &Expr) -> Number {
+    match term.node() {
+        Node::Num(n) => *n,
+        Node::Mul(factors) => factors[0].as_number().unwrap_or(Number::ONE),
+        _ => Number::ONE,
     }
-    let mut factors = vec![Expr::num(coefficient)];
-    factors.extend(rest.factors().iter().cloned());
-    Expr::from_node(Node::Mul(factors))
+}
+
+/// The factors of a monomial other than its numeric coefficient.
+fn rest_factors(term: &Expr) -> &[Expr] {
+    match term.node() {
+        Node::Mul(factors) if factors[0].as_number().is_some() => &factors[1..],
+        Node::Mul(factors) => factors,
+        _ => std::slice::from_ref(term),
+    }
+}
+
+/// The order of two monomials' non-numeric parts, exactly as `Expr::cmp` orders them once
+/// built (a single factor is itself, several are a product), without building them.
+fn cmp_rest(a: &[Expr], b: &[Expr]) -> Ordering {
+    match (a, b) {
+        ([x], [y]) => x.cmp(y),
+        ([x], _) if !matches!(x.node(), Node::Mul(_)) => x.rank().cmp(&Expr::MUL_RANK),
+        (_, [y]) if !matches!(y.node(), Node::Mul(_)) => Expr::MUL_RANK.cmp(&y.rank()),
+        _ => {
+            let (a, b) = (flatten_single(a), flatten_single(b));
+            a.len().cmp(&b.len()).then_with(|| a.cmp(b))
+        }
+    }
+}
+
+fn flatten_single(factors: &[Expr]) -> &[Expr] {
+    match factors {
+        [single] => single.factors(),
+        _ => factors,
+    }
+}
+
+/// `coefficient` times the product of `factors` (canonical, without a coefficient).
+fn scale_factors(coefficient: Number, factors: &[Expr]) -> Expr {
+    match (factors, coefficient.is_one()) {
+        ([], _) => Expr::num(coefficient),
+        ([single], true) => single.clone(),
+        (_, true) => Expr::from_node(Node::Mul(factors.to_vec())),
+        _ => {
+            let mut all = Vec::with_capacity(factors.len() + 1);
+            all.push(Expr::num(coefficient));
+            all.extend(factors.iter().cloned());
+            Expr::from_node(Node::Mul(all))
+        }
+    }
 }
 
 /// The canonical, expanded product of `factors`.
 pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
     let mut coefficient = Number::ONE;
-    let mut powers: BTreeMap<Expr, Vec<Expr>> = BTreeMap::new();
+    // (base, exponent, the factor as given)
+    let mut powers: Vec<(Expr, Expr, Expr)> = Vec::new();
     let mut sums: Vec<Expr> = Vec::new();
     let mut visit = |factor: &Expr, coefficient: &mut Number| match factor.node() {
         Node::Num(n) => *coefficient = coefficient.mul(*n),
         Node::Add(_) => sums.push(factor.clone()),
-        Node::Pow(base, exponent) => powers
-            .entry(base.clone())
-            .or_default()
-            .push(exponent.clone()),
-        _ => powers.entry(factor.clone()).or_default().push(Expr::one()),
+        Node::Pow(base, exponent) => powers.push((base.clone(), exponent.clone(), factor.clone())),
+        _ => powers.push((factor.clone(), Expr::one(), factor.clone())),
     };
     for factor in factors {
         match factor.node() {
@@ -113,17 +169,30 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
     if coefficient.is_zero() {
         return Expr::zero();
     }
+    powers.sort_by(|a, b| a.0.cmp(&b.0));
     let mut rebuilt: Vec<Expr> = Vec::with_capacity(powers.len());
     let mut needs_another_pass = false;
-    for (base, exponents) in powers {
-        let exponent = add(exponents);
-        if exponent.is_zero() {
-            continue;
-        }
-        let factor = if exponent.is_one() {
-            base
+    let mut rest = powers.as_slice();
+    while let Some((base, _, _)) = rest.first() {
+        let same = rest
+            .iter()
+            .take_while(|(b, _, _)| b.cmp(base) == Ordering::Equal)
+            .count();
+        let (run, tail) = rest.split_at(same);
+        rest = tail;
+        let factor = if same == 1 {
+            // A factor that meets no other of its base stays as it was given.
+            run[0].2.clone()
         } else {
-            pow(base, exponent)
+            let exponent = add(run.iter().map(|(_, e, _)| e.clone()));
+            if exponent.is_zero() {
+                continue;
+            }
+            if exponent.is_one() {
+                base.clone()
+            } else {
+                pow(base.clone(), exponent)
+            }
         };
         match factor.node() {
             Node::Num(n) => coefficient = coefficient.mul(*n),
@@ -138,6 +207,10 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
         rebuilt.push(Expr::num(coefficient));
         rebuilt.extend(sums);
         return mul(rebuilt);
+    }
+    if sums.len() == 1 && rebuilt.is_empty() {
+        // A number times a sum: scaling every coefficient keeps the terms' order.
+        return scale_sum(coefficient, &sums[0]);
     }
     if let Some(sum) = sums.pop() {
         // Distribute over the first sum; the recursion expands the others.
@@ -160,6 +233,32 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
             Expr::from_node(Node::Mul(all))
         }
     }
+}
+
+/// `coefficient` times a sum, term by term.
+fn scale_sum(coefficient: Number, sum: &Expr) -> Expr {
+    if coefficient.is_one() {
+        return sum.clone();
+    }
+    let underflows = sum
+        .terms()
+        .iter()
+        .any(|t| coefficient_of(t).mul(coefficient).is_zero());
+    if underflows {
+        return add(sum
+            .terms()
+            .iter()
+            .map(|t| mul([Expr::num(coefficient), t.clone()])));
+    }
+    let terms = sum
+        .terms()
+        .iter()
+        .map(|t| match t.node() {
+            Node::Num(n) => Expr::num(n.mul(coefficient)),
+            _ => scale_factors(coefficient.mul(coefficient_of(t)), rest_factors(t)),
+        })
+        .collect();
+    Expr::from_node(Node::Add(terms))
 }
 
 /// The canonical power `base^exponent`.
