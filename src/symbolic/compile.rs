@@ -1,29 +1,17 @@
 //! Compiling expressions once into a flat program: every shared subexpression is
 //! computed once, and one evaluation costs about the arithmetic it contains.
 
-use super::eval::{apply, power};
-use super::expr::{Expr, Func, Node, Symbol};
+use super::expr::{Expr, Node, Symbol};
+use super::instr::Instr;
 use std::collections::HashMap;
 
-#[derive(Clone, Copy, Debug)]
-// Slots are u32 so that an instruction takes 12 bytes: the program is streamed through
-// once per evaluation, and its size, not the arithmetic, sets the time.
-enum Instr {
-    Const(f64),
-    Add(u32, u32),
-    Sub(u32, u32),
-    Mul(u32, u32),
-    Neg(u32),
-    Recip(u32),
-    Square(u32),
-    Pow(u32, u32),
-    Func(Func, u32, u32),
-}
-
 /// A straight-line program that evaluates a list of expressions.
+///
+/// Slots: the inputs, then the constants, then one per instruction.
 #[derive(Clone, Debug)]
 pub struct Program {
     inputs: Vec<Symbol>,
+    constants: Vec<f64>,
     instructions: Vec<Instr>,
     outputs: Vec<usize>,
 }
@@ -33,6 +21,7 @@ struct Compiler {
     by_pointer: HashMap<*const Node, usize>,
     by_value: HashMap<Expr, usize>,
     constant_slots: HashMap<u64, usize>,
+    constant_values: Vec<f64>,
     // Keeps every compiled node alive so that pointers stay unique.
     alive: Vec<Expr>,
 }
@@ -45,25 +34,39 @@ impl Program {
         let mut c = Compiler {
             program: Program {
                 inputs: inputs.to_vec(),
+                constants: Vec::new(),
                 instructions: Vec::new(),
                 outputs: Vec::new(),
             },
             by_pointer: HashMap::new(),
             by_value: HashMap::new(),
             constant_slots: HashMap::new(),
+            constant_values: Vec::new(),
             alive: Vec::new(),
         };
         let slots: Vec<usize> = outputs.iter().map(|e| c.slot(e)).collect();
-        c.program.outputs = slots;
+        let (mut instructions, outputs) =
+            super::schedule::schedule(inputs.len(), &c.program.instructions, &slots);
+        // The schedule puts the constants first; they become a table copied in each run.
+        let count = instructions
+            .iter()
+            .take_while(|i| matches!(i, Instr::Const(_)))
+            .count();
+        c.program.constants = instructions
+            .drain(..count)
+            .map(|i| match i {
+                Instr::Const(index) => c.constant_values[index as usize],
+                _ => f64::NAN,
+            })
+            .collect();
+        c.program.instructions = instructions;
+        c.program.outputs = outputs;
         c.program
     }
 
     /// The number of arithmetic operations and function calls in one run.
     pub fn operation_count(&self) -> usize {
-        self.instructions
-            .iter()
-            .filter(|i| !matches!(i, Instr::Const(_)))
-            .count()
+        self.instructions.iter().map(Instr::operation_count).sum()
     }
 
     /// The input symbols, in the order `run` reads them.
@@ -73,24 +76,15 @@ impl Program {
 
     /// Evaluates every output; `scratch` is reused between calls to avoid allocation.
     pub fn run(&self, inputs: &[f64], scratch: &mut Vec<f64>, outputs: &mut [f64]) {
-        let start = self.inputs.len();
+        let (count, constants) = (self.inputs.len(), self.constants.len());
+        let start = count + constants;
         // Every slot is written before it is read, so a buffer of the right length from an
         // earlier run is reused as it is.
         scratch.resize(start + self.instructions.len(), 0.0);
-        scratch[..start].copy_from_slice(&inputs[..start]);
+        scratch[..count].copy_from_slice(&inputs[..count]);
+        scratch[count..start].copy_from_slice(&self.constants);
         for (i, instr) in self.instructions.iter().enumerate() {
-            let value = match *instr {
-                Instr::Const(x) => x,
-                Instr::Add(a, b) => scratch[a as usize] + scratch[b as usize],
-                Instr::Sub(a, b) => scratch[a as usize] - scratch[b as usize],
-                Instr::Mul(a, b) => scratch[a as usize] * scratch[b as usize],
-                Instr::Neg(a) => -scratch[a as usize],
-                Instr::Recip(a) => 1.0 / scratch[a as usize],
-                Instr::Square(a) => scratch[a as usize] * scratch[a as usize],
-                Instr::Pow(a, b) => power(scratch[a as usize], scratch[b as usize]),
-                Instr::Func(f, a, b) => apply(f, scratch[a as usize], scratch[b as usize]),
-            };
-            scratch[start + i] = value;
+            scratch[start + i] = instr.execute(scratch);
         }
         for (out, slot) in outputs.iter_mut().zip(&self.outputs) {
             *out = scratch[*slot];
@@ -106,12 +100,21 @@ impl Program {
     }
 }
 
+/// A value a factoring plan produced: in a slot, or a product not yet emitted, so that a
+/// sum can take it with its addition in one instruction.
+#[derive(Clone, Copy, Debug)]
+enum Value {
+    Slot(usize),
+    Product(usize, usize),
+}
+
 impl Compiler {
     fn constant_slot(&mut self, value: f64) -> usize {
         if let Some(slot) = self.constant_slots.get(&value.to_bits()) {
             return *slot;
         }
-        let slot = self.emit(Instr::Const(value));
+        let slot = self.emit(Instr::Const(self.constant_values.len() as u32));
+        self.constant_values.push(value);
         self.constant_slots.insert(value.to_bits(), slot);
         slot
     }
@@ -154,7 +157,8 @@ impl Compiler {
             Node::Add(terms) => {
                 let plan =
                     super::horner::factor(terms.iter().map(super::horner::monomial).collect());
-                let (negative, slot) = self.plan(&plan);
+                let (negative, value) = self.plan(&plan);
+                let slot = self.materialize(value);
                 if negative {
                     self.emit(Instr::Neg(slot as u32))
                 } else {
@@ -193,7 +197,15 @@ impl Compiler {
 
     /// Emits a factoring plan; returns (negated, slot of the magnitude), so that `a - b`
     /// costs one subtraction.
-    fn plan(&mut self, plan: &super::horner::Plan) -> (bool, usize) {
+    /// The slot of a value, emitting its last product if it is still pending.
+    fn materialize(&mut self, value: Value) -> usize {
+        match value {
+            Value::Slot(slot) => slot,
+            Value::Product(a, b) => self.emit(Instr::Mul(a as u32, b as u32)),
+        }
+    }
+
+    fn plan(&mut self, plan: &super::horner::Plan) -> (bool, Value) {
         use super::horner::Plan;
         match plan {
             Plan::Term((coefficient, factors)) => {
@@ -224,32 +236,40 @@ impl Compiler {
                 for factor in varying {
                     slots.push(self.slot(&power(factor)));
                 }
-                let mut acc = slots[0];
-                for &s in &slots[1..] {
+                let Some((&last, rest)) = slots.split_last() else {
+                    return (negative, Value::Slot(self.constant_slot(f64::NAN)));
+                };
+                let Some((&first, middle)) = rest.split_first() else {
+                    return (negative, Value::Slot(last));
+                };
+                let mut acc = first;
+                for &s in middle {
                     acc = self.emit(Instr::Mul(acc as u32, s as u32));
                 }
-                (negative, acc)
+                (negative, Value::Product(acc, last))
             }
             Plan::Product(base, inner) => {
                 let b = self.slot(base);
-                let (negative, s) = self.plan(inner);
-                (negative, self.emit(Instr::Mul(b as u32, s as u32)))
+                let (negative, value) = self.plan(inner);
+                let s = self.materialize(value);
+                (negative, Value::Product(b, s))
             }
             Plan::Sum(parts) => {
-                let mut signed: Vec<(bool, usize)> = parts.iter().map(|p| self.plan(p)).collect();
-                signed.sort_by_key(|(negative, _)| *negative);
-                let all_negative = signed[0].0;
-                let mut acc = signed[0].1;
-                for &(negative, s) in &signed[1..] {
-                    // With every part negative, sum the magnitudes and negate once.
-                    let subtract = negative && !all_negative;
-                    acc = self.emit(if subtract {
-                        Instr::Sub(acc as u32, s as u32)
-                    } else {
-                        Instr::Add(acc as u32, s as u32)
-                    });
-                }
-                (all_negative, acc)
+                let signed: Vec<(bool, Value)> = parts.iter().map(|p| self.plan(p)).collect();
+                let one = self.constant_slot(1.0);
+                let pair = |value: &Value| match *value {
+                    Value::Product(a, b) => [a as u32, b as u32],
+                    Value::Slot(s) => [s as u32, one as u32],
+                };
+                let plus = signed.iter().filter(|(negative, _)| !negative);
+                let minus = signed.iter().filter(|(negative, _)| *negative);
+                let pairs: Box<[[u32; 2]]> =
+                    plus.clone().chain(minus).map(|(_, v)| pair(v)).collect();
+                let positive = plus.count() as u32;
+                (
+                    false,
+                    Value::Slot(self.emit(Instr::Dot { pairs, positive })),
+                )
             }
         }
     }
@@ -260,6 +280,7 @@ mod tests {
     use super::*;
     use crate::symbolic::build::{cos, sin};
     use crate::symbolic::eval::{eval, Values};
+    use crate::symbolic::Func;
 
     #[test]
     fn matches_the_tree_walk_and_shares_subexpressions() {

@@ -8,10 +8,12 @@ pub mod eval;
 pub mod expr;
 pub mod hint;
 pub mod horner;
+mod instr;
 pub mod linear;
 pub mod number;
 pub mod parse;
 pub mod print;
+mod schedule;
 pub mod simplify;
 pub mod subst;
 

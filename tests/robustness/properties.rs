@@ -1,7 +1,7 @@
 //! Generated cases: the expression parser and the problem reader never panic or hang, and
 //! every error they report says where.
 //!
-//! The counts below add up to 12,600 cases; `PROPTEST_CASES=N` runs N cases in each suite
+//! The counts below add up to 14,600 cases; `PROPTEST_CASES=N` runs N cases in each suite
 //! instead (the long campaign in TESTING.md).
 
 use super::generate::{self, CONSTANTS, COORDINATES, FRAMES};
@@ -221,5 +221,53 @@ fn pipeline_on_mutated_small_problems() {
     eprintln!(
         "derived {}",
         DERIVED.load(std::sync::atomic::Ordering::Relaxed)
+    );
+}
+
+/// A compiled program gives what walking the expression gives: the compiler's sharing,
+/// factoring and reordering change the order of additions, never the value.
+pub fn compiles_to_the_same_value(text: &str) -> Result<(), TestCaseError> {
+    use mbd_tutor::symbolic::compile::Program;
+    use mbd_tutor::symbolic::eval::{eval, Values};
+    let Ok(e) = parse(text, &Scope) else {
+        return Ok(());
+    };
+    if e.any_symbol(&|s| matches!(s, Symbol::UnitVector(..))) {
+        return Ok(());
+    }
+    let mut inputs = vec![Symbol::Time];
+    let mut values = vec![0.7];
+    for (i, name) in ["m", "L", "g"].iter().enumerate() {
+        inputs.push(Symbol::Const((*name).into()));
+        values.push(1.3 + 0.4 * i as f64);
+    }
+    for (i, name) in COORDINATES.iter().enumerate() {
+        for order in 0..3u8 {
+            inputs.push(Symbol::Coord((*name).into(), order));
+            values.push(0.45 - 0.8 * i as f64 + 0.3 * order as f64);
+        }
+    }
+    let mut walk = Values::new();
+    for (symbol, value) in inputs.iter().zip(&values) {
+        walk.set(symbol.clone(), *value);
+    }
+    let expected = eval(&e, &walk);
+    let got = Program::compile(&inputs, std::slice::from_ref(&e)).eval(&values)[0];
+    if expected.is_finite() && expected.abs() < 1e12 {
+        prop_assert!(
+            (got - expected).abs() <= 1e-9 * (1.0 + expected.abs()),
+            "compiled {got} but the tree walk gives {expected} for {text:?}"
+        );
+    }
+    Ok(())
+}
+
+#[test]
+fn compiled_programs_agree_with_the_tree_walk() {
+    check(
+        "compiled_programs_agree_with_the_tree_walk",
+        2_000,
+        generate::well_formed,
+        |text| compiles_to_the_same_value(text),
     );
 }
