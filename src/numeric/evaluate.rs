@@ -241,14 +241,15 @@ impl Compiled {
 /// Solves `a x = b` by LU with partial pivoting; `None` when `a` is singular to working precision.
 pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
     let lu = a.clone().lu();
-    let u = lu.u();
-    let diagonal: Vec<f64> = u.diagonal().iter().map(|x| x.abs()).collect();
-    let largest = diagonal.iter().fold(0.0f64, |m, x| m.max(*x));
-    let smallest = diagonal.iter().fold(f64::INFINITY, |m, x| m.min(*x));
+    // The diagonal of the packed factors is U's (L's is ones and not stored).
+    let diagonal = lu.lu_internal().diagonal();
+    let largest = diagonal.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let smallest = diagonal.iter().fold(f64::INFINITY, |m, x| m.min(x.abs()));
     if !(largest > 0.0) || smallest <= 1e-13 * largest * (a.nrows() as f64) {
         return None;
     }
-    lu.solve(b)
+    let mut x = b.clone();
+    lu.solve_mut(&mut x).then_some(x)
 }
 
 /// Whether a load keeps the total (kinetic + potential) energy constant: springs do, since
@@ -291,6 +292,10 @@ impl System for Compiled {
             kinetic: s.kinetic,
             potential: s.potential,
         })
+    }
+
+    fn accelerations(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Vec<f64>, SolveError> {
+        self.motion(t, q, rates).map(|m| m.accelerations)
     }
 
     fn is_conservative(&self) -> bool {

@@ -122,11 +122,11 @@ pub fn simulate_with_limits(
 
     let derivative = |t: f64, y: &[f64], dy: &mut [f64]| -> Result<(), SolveError> {
         let (q, rates) = y.split_at(n);
-        let evaluation = system.evaluate(t, q, rates)?;
-        if evaluation.accelerations.len() != n {
-            return Err(mismatch("accelerations", n, evaluation.accelerations.len()));
+        let accelerations = system.accelerations(t, q, rates)?;
+        if accelerations.len() != n {
+            return Err(mismatch("accelerations", n, accelerations.len()));
         }
-        if evaluation.accelerations.iter().any(|a| !a.is_finite()) {
+        if accelerations.iter().any(|a| !a.is_finite()) {
             let state = describe_state(t, &names, q, rates);
             return Err(SolveError::NotFinite {
                 state,
@@ -134,7 +134,7 @@ pub fn simulate_with_limits(
             });
         }
         dy[..n].copy_from_slice(rates);
-        dy[n..].copy_from_slice(&evaluation.accelerations);
+        dy[n..].copy_from_slice(&accelerations);
         Ok(())
     };
     let y0: Vec<f64> = q0.iter().chain(rates0).copied().collect();

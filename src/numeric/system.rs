@@ -39,6 +39,16 @@ pub trait System {
     /// [`SolveError::NotFinite`]; the error's `state` should come from [`describe_state`].
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError>;
 
+    /// Only the accelerations, for the integrator, which calls this six times a step and
+    /// needs nothing else. By default the accelerations of [`System::evaluate`]; a system
+    /// that can skip the energies and reactions should.
+    ///
+    /// # Errors
+    /// As for [`System::evaluate`].
+    fn accelerations(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Vec<f64>, SolveError> {
+        self.evaluate(t, q, rates).map(|e| e.accelerations)
+    }
+
     /// True when total energy is conserved: no dampers, no actuators, no loads that depend
     /// on time.
     fn is_conservative(&self) -> bool;
