@@ -2,6 +2,7 @@
 //! velocities and partial angular velocities; requested reactions through auxiliary speeds.
 
 use super::rows::{is_external, Equation, Groups, Inertia, Sum};
+use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::vector::Components;
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{
@@ -87,16 +88,17 @@ pub fn equations(
                 Category::Distance => distance.push(term),
             }
         }
-        let (mut inertia_force, mut inertia_torque) = (Vec::new(), Vec::new());
+        let mut inertia_force = DotSum::new(frames);
+        let mut inertia_torque = Vec::new();
         for &body in &all_bodies {
             let center = &model.bodies[body.0].center_offset;
-            inertia_force.push(inertia.force[body.0].dot(&velocity_of(body, center), frames));
+            inertia_force.add(&velocity_of(body, center), &inertia.force[body.0]);
             inertia_torque.push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));
         }
         let groups = Groups {
             contact: add(contact),
             distance: add(distance),
-            inertia_force: add(inertia_force),
+            inertia_force: inertia_force.total(),
             inertia_torque: add(inertia_torque),
         };
         let expression = groups.total();

@@ -1,6 +1,7 @@
 //! One scalar equation of motion: a free body, a sum of forces or of moments about a point,
 //! dotted with a direction, its terms grouped as the Motion Law groups them.
 
+use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::frames::apply;
 use crate::mechanics::vector::Components;
 use crate::mechanics::{Model, Vector};
@@ -150,7 +151,9 @@ pub fn action_terms(
             (ActionKind::Couple { .. }, None) => continue,
             (ActionKind::Force { offset, force }, Some(point)) => {
                 let at = model.point_on(action.body, offset).position.minus(point);
-                at.cross(force, frames).dot(direction, frames)
+                let mut moment = MomentSum::new(frames, direction);
+                moment.add(&at, force);
+                moment.total()
             }
             (ActionKind::Couple { torque }, Some(_)) => torque.dot(direction, frames),
         };
@@ -171,19 +174,46 @@ pub fn inertia_terms(
     direction: &Vector,
 ) -> (Expr, Expr) {
     let frames = &model.frames;
-    let (mut inertia_force, mut inertia_torque) = (Vec::new(), Vec::new());
+    let Some(point) = about else {
+        // The forces summed first: one dot product instead of one per body.
+        let force = Vector::sum(free_body.iter().map(|b| inertia.force[b.0].clone()));
+        return (force.dot(direction, frames), Expr::zero());
+    };
+    let mut moments = MomentSum::new(frames, direction);
+    let mut inertia_torque = Vec::new();
     for &body in free_body {
-        let f = &inertia.force[body.0];
-        match about {
-            None => inertia_force.push(f.dot(direction, frames)),
-            Some(point) => {
-                let at = model.bodies[body.0].center.position.minus(point);
-                inertia_force.push(at.cross(f, frames).dot(direction, frames));
-                inertia_torque.push(inertia.torque[body.0].dot(direction, frames));
-            }
+        let at = model.bodies[body.0].center.position.minus(point);
+        moments.add(&at, &inertia.force[body.0]);
+        inertia_torque.push(inertia.torque[body.0].dot(direction, frames));
+    }
+    (moments.total(), add(inertia_torque))
+}
+
+/// A sum of moments `(at × force) · direction`, written `-Σ (at × direction) · force`: the
+/// short vectors are crossed, and the long forces are multiplied out once, in dot products
+/// that share work between bodies (see [`DotSum`]).
+struct MomentSum<'a> {
+    frames: &'a crate::mechanics::frames::Frames,
+    direction: &'a Vector,
+    sum: DotSum<'a>,
+}
+
+impl<'a> MomentSum<'a> {
+    fn new(frames: &'a crate::mechanics::frames::Frames, direction: &'a Vector) -> Self {
+        MomentSum {
+            frames,
+            direction,
+            sum: DotSum::new(frames),
         }
     }
-    (add(inertia_force), add(inertia_torque))
+
+    fn add(&mut self, at: &Vector, force: &Vector) {
+        self.sum.add(&at.cross(self.direction, self.frames), force);
+    }
+
+    fn total(self) -> Expr {
+        -self.sum.total()
+    }
 }
 
 /// The unknowns among `all` that appear in `e`, in the order of `all`.

@@ -25,6 +25,7 @@ impl fmt::Display for MechanicsError {
 
 impl std::error::Error for MechanicsError {}
 
+pub mod dot_sum;
 pub mod frames;
 pub mod joints;
 pub mod model;
