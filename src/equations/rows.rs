@@ -7,7 +7,7 @@ use crate::mechanics::vector::Components;
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::symbolic::{add, Expr, Node, Symbol};
 
 /// The inertia force `-m a*` and inertia torque `-α·I - ω×I·ω` of every body.
 #[derive(Clone, Debug)]
@@ -218,13 +218,25 @@ impl<'a> MomentSum<'a> {
 
 /// The unknowns among `all` that appear in `e`, in the order of `all`.
 pub fn unknowns_in(e: &Expr, all: &[Symbol]) -> Vec<Symbol> {
-    // One walk of the expression, not one per unknown.
-    let mut present = std::collections::HashSet::new();
-    e.for_each_symbol(&mut |s| {
-        if matches!(s, Symbol::Coord(_, 2) | Symbol::Unknown(_)) {
-            present.insert(s.clone());
+    // One walk of the expression, not one per unknown. Definitions are not entered: they
+    // hold rates, never an unknown (`linear_split` refuses one that would).
+    fn walk(e: &Expr, present: &mut std::collections::HashSet<Symbol>) {
+        match e.node() {
+            Node::Sym(s @ (Symbol::Coord(_, 2) | Symbol::Unknown(_))) => {
+                present.insert(s.clone());
+            }
+            Node::Num(_) | Node::Sym(_) => {}
+            Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
+                items.iter().for_each(|i| walk(i, present))
+            }
+            Node::Pow(b, x) => {
+                walk(b, present);
+                walk(x, present);
+            }
         }
-    });
+    }
+    let mut present = std::collections::HashSet::new();
+    walk(e, &mut present);
     all.iter()
         .filter(|s| present.contains(*s))
         .cloned()

@@ -413,7 +413,8 @@ fn choose_at(
             })
             .collect();
         // Sparse rows first (fewest unknowns), then the fewest terms.
-        written.sort_by_key(|(i, _, e)| (e.unknowns.len(), e.expression.operation_count(), *i));
+        written
+            .sort_by_cached_key(|(i, _, e)| (e.unknowns.len(), e.expression.operation_count(), *i));
         for (index, candidate, equation) in written {
             let reason = if equation.unknowns.is_empty() {
                 Some("contains no unknown".to_string())
