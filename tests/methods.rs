@@ -55,6 +55,25 @@ fn simple_pendulum_and_its_pin_reaction() {
     }
 }
 
+/// The pendulum at rest at the bottom (q = 0) and horizontal (q = pi/2): the Motion Law's
+/// rows must still determine the pin force there. A plan of `M about A*` with `F along N.x`
+/// is independent at generic angles but loses the vertical pin force at q = 0.
+#[test]
+fn pin_reaction_at_the_bottom_and_at_a_quarter_turn() {
+    let (m, l, g) = (2.0, 1.5, 9.81);
+    for (q, u) in [(0.0f64, 0.0f64), (std::f64::consts::FRAC_PI_2, 0.8)] {
+        for (method, s) in solve_all(PENDULUM, &[q], &[u]) {
+            let qdd = -(g / l) * q.sin();
+            assert_near(s.accelerations[0], qdd, method.name());
+            let fx = m * (l * qdd * q.cos() - l * u * u * q.sin());
+            let fy = m * (l * qdd * q.sin() + l * u * u * q.cos() + g);
+            let (_, force, _) = &s.reactions[0];
+            assert_near(force[0], fx, &format!("Fx by {} at q = {q}", method.name()));
+            assert_near(force[1], fy, &format!("Fy by {} at q = {q}", method.name()));
+        }
+    }
+}
+
 #[test]
 fn double_pendulum_of_point_masses_matches_the_textbook() {
     let text = r#"{

@@ -12,6 +12,7 @@ use crate::problem::{BodyId, JointKind};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::Symbol;
+use std::f64::consts::FRAC_PI_2;
 
 /// Above this many bodies, connected groups other than subtrees are not tried.
 const MAX_BODIES_FOR_GROUPS: usize = 4;
@@ -359,10 +360,49 @@ pub fn choose(
     let states = sample_states(model);
     let choice = choose_at(model, actions, inertia, candidates.clone(), wanted, &states);
     if choice.rows.len() == wanted.len() {
+        // Rows that are independent at generic states can still fail together at special
+        // ones: all q = 0 (often the equilibrium a student linearizes about) or a quarter
+        // turn. A pendulum's `M about bob*` with `F along N.x` loses the vertical pin force
+        // at q = 0. Plan again with those states too (both, else the first), and keep the
+        // new plan if there is one: some systems are singular there whatever the rows.
+        let special = [uniform_state(model, 0.0), uniform_state(model, FRAC_PI_2)];
+        if !special
+            .iter()
+            .all(|state| is_full_rank(&choice.rows, wanted, state))
+        {
+            for count in (1..=special.len()).rev() {
+                let mut more = states.clone();
+                more.extend(special[..count].iter().cloned());
+                let again = choose_at(model, actions, inertia, candidates.clone(), wanted, &more);
+                if again.rows.len() == wanted.len() {
+                    return again;
+                }
+            }
+        }
         return choice;
     }
     // The initial state itself may be singular (gimbal lock, say): plan on generic states.
     choose_at(model, actions, inertia, candidates, wanted, &states[1..])
+}
+
+/// Every coordinate at `q`, the rates as given initially.
+fn uniform_state(model: &Model, q: f64) -> Values {
+    let problem = model.problem;
+    let mut values = model.values.clone();
+    for (i, c) in problem.coordinates.iter().enumerate() {
+        values.set(problem.coordinate_symbol(i, 0), q);
+        values.set(problem.coordinate_symbol(i, 1), c.rate);
+    }
+    values.set(Symbol::Time, 0.0);
+    values
+}
+
+/// Whether `rows` determine every one of `wanted` at `state`.
+fn is_full_rank(rows: &[Equation], wanted: &[Symbol], state: &Values) -> bool {
+    let mut basis = Vec::new();
+    let states = std::slice::from_ref(state);
+    rows.iter()
+        .all(|row| adds_rank(&mut basis, &coefficient_rows(row, wanted, states)[0]))
 }
 
 fn choose_at(
