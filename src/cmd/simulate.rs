@@ -2,7 +2,9 @@
 
 use crate::cli::Common;
 use crate::equations::derive;
+use crate::numeric::checks::{confirm, Check};
 use crate::numeric::evaluate::Compiled;
+use crate::numeric::format::fixed;
 use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
 use crate::numeric::SolveError;
 use crate::problem::{ProblemError, ProblemErrors};
@@ -33,6 +35,10 @@ pub struct Args {
     /// The most output rows before the run is refused (a guard against gigabytes of output).
     #[arg(long, default_value_t = crate::numeric::simulate::MAX_ROWS)]
     pub max_rows: usize,
+    /// Skip the confirmation checks (energy, agreement of the three methods, period of small
+    /// oscillations) that are otherwise reported on standard error.
+    #[arg(long)]
+    pub no_checks: bool,
 }
 
 /// Runs `mbd-tutor simulate`.
@@ -75,8 +81,34 @@ pub fn run(args: Args) -> Result<(), Error> {
     crate::output::write_output(args.common.output.as_deref(), text.as_bytes())?;
     match trajectory.stopped {
         Some(reason) => Err(Error::Solve(reason)),
-        None => Ok(()),
+        None => {
+            if !args.no_checks {
+                let checks = confirm(&problem, &compiled, &trajectory, &q0);
+                eprint!("{}", report(compiled.method.name(), &checks));
+            }
+            Ok(())
+        }
     }
+}
+
+/// The checks as lines for standard error (the table itself goes to the output).
+fn report(method: &str, checks: &[Check]) -> String {
+    let mut text = format!("Confirmation of the {method} equations:\n");
+    if checks.is_empty() {
+        text.push_str("  no check applies to this problem\n");
+    }
+    for check in checks {
+        text.push_str(&format!(
+            "  {}: {} {} {} ({}): {}\n",
+            check.name,
+            fixed(check.value),
+            if check.passed { "<" } else { ">=" },
+            fixed(check.tolerance),
+            if check.passed { "pass" } else { "FAIL" },
+            check.detail
+        ));
+    }
+    text
 }
 
 /// [`SolveError::TooManyRows`] as an error that names `--max-rows`; other errors as they are.

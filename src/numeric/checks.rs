@@ -1,12 +1,43 @@
 //! Confirmation checks on a solution (step 6): energy, agreement between methods, and the
 //! period of small oscillations against the linearized equations.
 
+use super::evaluate::Compiled;
 use super::format::fixed;
 use super::integrate::{integrate, Options};
 use super::simulate::Trajectory;
 use super::system::System;
 use super::SolveError;
+use crate::equations::{derive, Method};
+use crate::problem::Problem;
 use std::f64::consts::PI;
+
+/// Every confirmation check that applies to a run of `compiled` on `problem`: energy,
+/// agreement with the other two methods (derived here) at 10 rows, and the small-oscillation
+/// period. Checks that do not apply (energy with actuators, the period without a stable
+/// one-coordinate equilibrium) are left out.
+pub fn confirm(
+    problem: &Problem,
+    compiled: &Compiled,
+    trajectory: &Trajectory,
+    q0: &[f64],
+) -> Vec<Check> {
+    let others: Vec<(Method, Compiled)> = Method::ALL
+        .iter()
+        .filter(|m| **m != compiled.method)
+        .filter_map(|&m| derive(problem, m).ok().map(|d| (m, Compiled::new(&d))))
+        .collect();
+    let mut systems: Vec<(&str, &dyn System)> =
+        vec![(compiled.method.name(), compiled as &dyn System)];
+    systems.extend(others.iter().map(|(m, c)| (m.name(), c as &dyn System)));
+    [
+        energy_check(compiled, trajectory),
+        method_agreement(&systems, trajectory, 10),
+        small_oscillation(compiled, q0),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
 
 /// Largest energy error allowed, relative to the energy scale of the motion.
 pub const ENERGY_TOLERANCE: f64 = 1e-6;

@@ -8,7 +8,7 @@ use super::context::{
 use crate::equations::rows::{is_external, Equation, Sum};
 use crate::equations::{derive, Derivation, Method};
 use crate::mechanics::{Model, Vector};
-use crate::numeric::checks::{energy_check, method_agreement, small_oscillation};
+use crate::numeric::checks::confirm;
 use crate::numeric::evaluate::Compiled;
 use crate::numeric::format::fixed;
 use crate::numeric::simulate::simulate;
@@ -409,22 +409,8 @@ fn simulation(
     if let Some(reason) = &trajectory.stopped {
         solution.simulation.note = format!("The simulation stopped early: {reason}");
     }
-    let others: Vec<(Method, Compiled)> = Method::ALL
-        .iter()
-        .filter(|m| **m != compiled.method)
-        .filter_map(|&m| derive(problem, m).ok().map(|d| (m, Compiled::new(&d))))
-        .collect();
-    let mut systems: Vec<(&str, &dyn System)> =
-        vec![(compiled.method.name(), compiled as &dyn System)];
-    systems.extend(others.iter().map(|(m, c)| (m.name(), c as &dyn System)));
-    let checks = [
-        energy_check(compiled, &trajectory),
-        method_agreement(&systems, &trajectory, 10),
-        small_oscillation(compiled, q0),
-    ];
-    solution.simulation.checks = checks
+    solution.simulation.checks = confirm(problem, compiled, &trajectory, q0)
         .into_iter()
-        .flatten()
         .map(|c| Check {
             name: c.name,
             value: fixed(c.value),

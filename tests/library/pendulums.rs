@@ -114,6 +114,30 @@ fn simple_pendulum_period_matches_the_large_amplitude_formula() {
     assert_close(measured, period, 1e-5, period, "period");
 }
 
+/// `simulate` reports its confirmation on standard error, the small-oscillation period
+/// among them: sqrt(g/L) = 3.50179 rad/s for L = 0.8 m, by hand.
+#[test]
+fn simulate_reports_its_checks() {
+    let out = crate::support::run(&[
+        "simulate",
+        crate::support::problem("simple-pendulum")
+            .to_str()
+            .expect("a UTF-8 path"),
+    ]);
+    assert!(out.status.success());
+    let report = String::from_utf8_lossy(&out.stderr);
+    for line in [
+        "energy conservation",
+        "agreement between methods",
+        "small-oscillation period",
+        "ω = 3.50179 rad/s",
+    ] {
+        assert!(report.contains(line), "{line:?} missing from:\n{report}");
+    }
+    assert!(!report.contains("FAIL"), "{report}");
+    assert!(report.matches("(pass)").count() == 3, "{report}");
+}
+
 #[test]
 fn compound_pendulum_with_pin_friction() {
     let (m, l, c) = (2.0, 1.0, 0.05);
