@@ -51,22 +51,18 @@ pub fn factor(terms: Vec<Monomial>) -> Plan {
         );
     }
     // The base that the most terms share (first seen wins a tie, so the plan is deterministic).
-    let mut counts: Vec<(Expr, usize)> = Vec::new();
+    let mut counts: std::collections::HashMap<&Expr, (usize, usize)> = Default::default();
     for (_, factors) in &terms {
         for (base, _) in factors {
-            match counts.iter_mut().find(|(b, _)| b == base) {
-                Some((_, n)) => *n += 1,
-                None => counts.push((base.clone(), 1)),
-            }
+            let seen = counts.len();
+            counts.entry(base).or_insert((seen, 0)).1 += 1;
         }
     }
     let best = counts
         .iter()
-        .fold(None::<&(Expr, usize)>, |best, c| match best {
-            Some(b) if b.1 >= c.1 => Some(b),
-            _ => Some(c),
-        });
-    let Some((base, count)) = best.cloned() else {
+        .min_by_key(|(_, (first, count))| (std::cmp::Reverse(*count), *first))
+        .map(|(base, (_, count))| ((*base).clone(), *count));
+    let Some((base, count)) = best else {
         return Plan::Sum(terms.into_iter().map(Plan::Term).collect());
     };
     if count < 2 {
