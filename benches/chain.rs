@@ -1,6 +1,7 @@
 //! The speed benchmark: planar chains of n = 1 … 20 rods joined by revolute joints, with
-//! joint (relative) angles as coordinates. For each n: the time to derive and plan, the
-//! operation count of A and b, and the time of one evaluate-and-solve.
+//! joint (relative) angles as coordinates. For each n: the time to derive and plan, the time
+//! to compile A and b, the size of A and b (terms multiplied out, and operations once
+//! compiled), and the time of one evaluate-and-solve. Times are the fastest of 5 tries.
 //!
 //! Run: `cargo bench --bench chain` (add `-- 10` for one size).
 
@@ -85,32 +86,58 @@ pub fn planar_chain(n: usize) -> Problem {
     }
 }
 
+/// How many times each measurement is repeated; the table shows the fastest, since on a
+/// shared machine the slower runs measure the neighbours, not the program.
+const TRIES: usize = 5;
+
 fn main() {
     let sizes: Vec<usize> = match std::env::args().nth(1).and_then(|a| a.parse().ok()) {
         Some(n) => vec![n],
         None => (1..=20).collect(),
     };
     println!(
-        "| n | method | derive and plan (ms) | operations in A and b | evaluate and solve (µs) |"
+        "| n | method | derive and plan (ms) | compile (ms) | terms in A and b | operations in A and b | evaluate and solve (µs) |"
     );
-    println!("|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|");
     for n in sizes {
         let problem = planar_chain(n);
         for method in [Method::Kane, Method::MotionLaw] {
-            let start = Instant::now();
-            let derivation = derive(&problem, method).expect("the chain derives");
-            let compiled = Compiled::new(&derivation);
-            let derive_ms = start.elapsed().as_secs_f64() * 1e3;
+            let (mut derive_ms, mut compile_ms) = (f64::INFINITY, f64::INFINITY);
+            let mut last = None;
+            for _ in 0..TRIES {
+                let start = Instant::now();
+                let derivation = derive(&problem, method).expect("the chain derives");
+                derive_ms = derive_ms.min(start.elapsed().as_secs_f64() * 1e3);
+                let start = Instant::now();
+                let compiled = Compiled::new(&derivation);
+                compile_ms = compile_ms.min(start.elapsed().as_secs_f64() * 1e3);
+                last = Some((derivation, compiled));
+            }
+            let Some((derivation, compiled)) = last else {
+                continue;
+            };
+            // The size of the equations themselves: the terms of every entry, multiplied out.
+            let system = &derivation.system;
+            let terms: usize = system
+                .a
+                .iter()
+                .flatten()
+                .chain(&system.b)
+                .map(|e| if e.is_zero() { 0 } else { e.terms().len() })
+                .sum();
             let q: Vec<f64> = (0..n).map(|i| 0.1 * i as f64).collect();
             let rates = vec![0.3; n];
             let repeats = 2000;
-            let start = Instant::now();
-            for _ in 0..repeats {
-                std::hint::black_box(compiled.motion(0.0, &q, &rates).expect("solves"));
+            let mut solve_us = f64::INFINITY;
+            for _ in 0..TRIES {
+                let start = Instant::now();
+                for _ in 0..repeats {
+                    std::hint::black_box(compiled.motion(0.0, &q, &rates).expect("solves"));
+                }
+                solve_us = solve_us.min(start.elapsed().as_secs_f64() * 1e6 / repeats as f64);
             }
-            let solve_us = start.elapsed().as_secs_f64() * 1e6 / repeats as f64;
             println!(
-                "| {n} | {} | {derive_ms:.1} | {} | {solve_us:.2} |",
+                "| {n} | {} | {derive_ms:.1} | {compile_ms:.1} | {terms} | {} | {solve_us:.2} |",
                 method.name(),
                 compiled.operation_count()
             );
