@@ -358,14 +358,31 @@ pub fn choose(
     wanted: &[Symbol],
 ) -> Choice {
     let states = sample_states(model);
-    let choice = choose_at(model, actions, inertia, candidates.clone(), wanted, &states);
+    // Rows written out once serve every attempt below: writing them out is what costs.
+    let mut written = std::collections::HashMap::new();
+    let mut attempt = |candidates: Vec<Candidate>, states: &[Values]| {
+        choose_at(
+            model,
+            actions,
+            inertia,
+            candidates,
+            wanted,
+            states,
+            &mut written,
+        )
+    };
+    let choice = attempt(candidates.clone(), &states);
     if choice.rows.len() == wanted.len() {
         // Rows that are independent at generic states can still fail together at special
         // ones: all q = 0 (often the equilibrium a student linearizes about) or a quarter
         // turn. A pendulum's `M about bob*` with `F along N.x` loses the vertical pin force
         // at q = 0. Plan again with those states too (both, else the first), and keep the
         // new plan if there is one: some systems are singular there whatever the rows.
-        let special = [uniform_state(model, 0.0), uniform_state(model, FRAC_PI_2)];
+        let special: Vec<Values> = [0.0, FRAC_PI_2]
+            .into_iter()
+            .map(|q| uniform_state(model, q))
+            .filter(|state| rates_are_independent(model, state))
+            .collect();
         if !special
             .iter()
             .all(|state| is_full_rank(&choice.rows, wanted, state))
@@ -373,7 +390,7 @@ pub fn choose(
             for count in (1..=special.len()).rev() {
                 let mut more = states.clone();
                 more.extend(special[..count].iter().cloned());
-                let again = choose_at(model, actions, inertia, candidates.clone(), wanted, &more);
+                let again = attempt(candidates.clone(), &more);
                 if again.rows.len() == wanted.len() {
                     return again;
                 }
@@ -382,7 +399,33 @@ pub fn choose(
         return choice;
     }
     // The initial state itself may be singular (gimbal lock, say): plan on generic states.
-    choose_at(model, actions, inertia, candidates, wanted, &states[1..])
+    attempt(candidates, &states[1..])
+}
+
+/// Whether no combination of the rates leaves every body still at `state`: the columns of
+/// the map from the rates to the bodies' velocities and angular velocities are independent.
+/// Euler angles in gimbal lock fail this, and then no choice of rows can be nonsingular.
+fn rates_are_independent(model: &Model, state: &Values) -> bool {
+    let problem = model.problem;
+    let rates: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 1))
+        .collect();
+    let mut columns = vec![Vec::new(); rates.len()];
+    for &body in &model.order {
+        let b = &model.bodies[body.0];
+        let velocity = b.center.velocity.components_in(body, &model.frames);
+        let omega = b.omega.components_in(body, &model.frames);
+        for component in velocity.iter().chain(&omega) {
+            let Ok((coefficients, _)) = linear_split(component, &rates) else {
+                return true; // not linear in the rates: no verdict
+            };
+            for (column, c) in columns.iter_mut().zip(&coefficients) {
+                column.push(eval(c, state));
+            }
+        }
+    }
+    let mut basis = Vec::new();
+    columns.iter().all(|column| adds_rank(&mut basis, column))
 }
 
 /// Every coordinate at `q`, the rates as given initially.
@@ -412,6 +455,7 @@ fn choose_at(
     candidates: Vec<Candidate>,
     wanted: &[Symbol],
     states: &[Values],
+    written_before: &mut std::collections::HashMap<usize, Equation>,
 ) -> Choice {
     let mut rejected: Vec<(usize, Rejected)> = Vec::new();
     // Candidates free of unwanted reactions, by tier: free bodies of one body first, then
@@ -448,7 +492,10 @@ fn choose_at(
         let mut written: Vec<(usize, Candidate, Equation)> = tier
             .into_iter()
             .map(|(index, candidate)| {
-                let equation = write_out(model, actions, inertia, &candidate, wanted);
+                let equation = written_before
+                    .entry(index)
+                    .or_insert_with(|| write_out(model, actions, inertia, &candidate, wanted))
+                    .clone();
                 (index, candidate, equation)
             })
             .collect();
