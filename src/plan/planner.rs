@@ -381,12 +381,17 @@ pub fn choose(
         let special: Vec<Values> = [0.0, FRAC_PI_2]
             .into_iter()
             .map(|q| uniform_state(model, q))
-            .filter(|state| rates_are_independent(model, state))
             .collect();
-        if !special
+        // The cheap test first: the kinematics are looked at only for a plan that fails.
+        let fails = |state: &Values| !is_full_rank(&choice.rows, wanted, state);
+        if special
             .iter()
-            .all(|state| is_full_rank(&choice.rows, wanted, state))
+            .any(|state| fails(state) && rates_are_independent(model, state))
         {
+            let special: Vec<Values> = special
+                .into_iter()
+                .filter(|state| rates_are_independent(model, state))
+                .collect();
             for count in (1..=special.len()).rev() {
                 let mut more = states.clone();
                 more.extend(special[..count].iter().cloned());
