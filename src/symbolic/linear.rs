@@ -32,13 +32,31 @@ pub fn linear_split(e: &Expr, unknowns: &[Symbol]) -> Result<(Vec<Expr>, Expr), 
     let mut rest = Vec::new();
     let index_of: std::collections::HashMap<&Symbol, usize> =
         unknowns.iter().enumerate().map(|(i, u)| (u, i)).collect();
+    // The kinds of symbol among the unknowns (q'' and reactions, say): most symbols are ruled
+    // out by their kind, without hashing their name.
+    let mut coordinate_orders = [false; 3];
+    let mut other_kinds = false;
+    for u in unknowns {
+        match u {
+            Symbol::Coord(_, order) => coordinate_orders[(*order as usize).min(2)] = true,
+            _ => other_kinds = true,
+        }
+    }
+    let is_unknown = |s: &Symbol| {
+        let possible = match s {
+            Symbol::Coord(_, order) => coordinate_orders[(*order as usize).min(2)],
+            Symbol::Const(_) => false,
+            _ => other_kinds,
+        };
+        possible && index_of.contains_key(s)
+    };
     let find = |factor: &Expr| -> Option<usize> {
         match factor.node() {
             // The common case, an atom, is one lookup rather than a search of every unknown.
-            Node::Sym(s) if index_of.contains_key(s) => index_of.get(s).copied(),
+            Node::Sym(s) if is_unknown(s) => index_of.get(s).copied(),
             Node::Num(_) | Node::Sym(Symbol::Const(_)) => None,
             // One walk to see whether any unknown is inside, then which.
-            _ if !factor.any_symbol(&|s| index_of.contains_key(s)) => None,
+            _ if !factor.any_symbol(&is_unknown) => None,
             _ => unknowns.iter().position(|u| factor.contains(u)),
         }
     };
