@@ -383,10 +383,11 @@ pub fn choose(
             .map(|q| uniform_state(model, q))
             .collect();
         // The cheap test first: the kinematics are looked at only for a plan that fails.
-        let fails = |state: &Values| !is_full_rank(&choice.rows, wanted, state);
+        let full = full_rank_at(&choice.rows, wanted, &special);
         if special
             .iter()
-            .any(|state| fails(state) && rates_are_independent(model, state))
+            .zip(&full)
+            .any(|(state, full)| !full && rates_are_independent(model, state))
         {
             let special: Vec<Values> = special
                 .into_iter()
@@ -445,12 +446,18 @@ fn uniform_state(model: &Model, q: f64) -> Values {
     values
 }
 
-/// Whether `rows` determine every one of `wanted` at `state`.
-fn is_full_rank(rows: &[Equation], wanted: &[Symbol], state: &Values) -> bool {
-    let mut basis = Vec::new();
-    let states = std::slice::from_ref(state);
-    rows.iter()
-        .all(|row| adds_rank(&mut basis, &coefficient_rows(row, wanted, states)[0]))
+/// For each of `states`, whether `rows` determine every one of `wanted` there (each row
+/// is split into its coefficients once for all the states).
+fn full_rank_at(rows: &[Equation], wanted: &[Symbol], states: &[Values]) -> Vec<bool> {
+    let mut bases = vec![Vec::new(); states.len()];
+    let mut full = vec![true; states.len()];
+    for row in rows {
+        let coefficients = coefficient_rows(row, wanted, states);
+        for ((basis, full), row) in bases.iter_mut().zip(&mut full).zip(&coefficients) {
+            *full = *full && adds_rank(basis, row);
+        }
+    }
+    full
 }
 
 fn choose_at(
