@@ -1,8 +1,11 @@
 //! `mbd-tutor solve`: the q'' and the requested reactions at one state.
 
 use crate::cli::{parse_assignments, Common};
+use crate::equations::system::{derive_at, State};
+use crate::equations::Method;
 use crate::numeric::evaluate::{Compiled, StateSolution};
 use crate::numeric::format::fixed;
+use crate::numeric::SolveError;
 use crate::Error;
 use clap::ValueEnum;
 use serde_json::{json, Map, Value};
@@ -82,8 +85,21 @@ pub fn run(args: Args) -> Result<(), Error> {
     let (q, rates) = initial_state(&problem, &args.state)?;
     let method = super::method(args.common.method);
     let derivation = crate::equations::derive(&problem, method)?;
-    let compiled = Compiled::new(&derivation);
-    let solution = compiled.solve(args.time, &q, &rates)?;
+    let mut compiled = Compiled::new(&derivation);
+    let mut solution = compiled.solve(args.time, &q, &rates);
+    if matches!(solution, Err(SolveError::SingularSystem { .. })) && method == Method::MotionLaw {
+        // The plan suits the initial and generic states; this state may be special for it
+        // (a row's reaction term vanishing there) and not for the system: plan for it.
+        let state = State {
+            t: args.time,
+            q: q.clone(),
+            rates: rates.clone(),
+        };
+        let derivation = derive_at(&problem, method, &[state])?;
+        compiled = Compiled::new(&derivation);
+        solution = compiled.solve(args.time, &q, &rates);
+    }
+    let solution = solution?;
     let text = match args.format {
         Format::Json => {
             let value = to_json(

@@ -5,6 +5,7 @@ use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, reaction_symbol, Action};
 use crate::plan::planner::{self, Rejected};
 use crate::problem::Problem;
+use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};
 
@@ -94,6 +95,30 @@ pub fn reaction_unknowns(model: &Model, joints: &[usize]) -> Vec<Symbol> {
 /// When the model cannot be built, the planner finds no complete set of rows, or an
 /// unknown appears nonlinearly.
 pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
+    derive_at(problem, method, &[])
+}
+
+/// A state the equations will be solved at: time, coordinates and rates in coordinate order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct State {
+    /// Time `t`.
+    pub t: f64,
+    /// The coordinates.
+    pub q: Vec<f64>,
+    /// Their rates.
+    pub rates: Vec<f64>,
+}
+
+/// As [`derive`], with the Motion Law's plan also required to be nonsingular at `states`
+/// where a plan can be (the other methods have no choice to make).
+///
+/// # Errors
+/// As for [`derive`].
+pub fn derive_at<'p>(
+    problem: &'p Problem,
+    method: Method,
+    states: &[State],
+) -> Result<Derivation<'p>, MechanicsError> {
     let model = Model::build(problem)?;
     let actions = actions(&model)?;
     let inertia = Inertia::of(&model);
@@ -131,7 +156,9 @@ pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Mecha
         Method::MotionLaw => {
             let reactions = reaction_unknowns(&model, &all_joints);
             let candidates = planner::candidates(&model, &actions, &reactions);
-            let choice = planner::choose(&model, &actions, &inertia, candidates, &unknowns);
+            let required: Vec<Values> = states.iter().map(|s| values_at(&model, s)).collect();
+            let choice =
+                planner::choose(&model, &actions, &inertia, candidates, &unknowns, &required);
             (choice.rows, choice.rejected)
         }
     };
@@ -185,6 +212,18 @@ fn massless_coordinate(
     (0..accelerations.len())
         .find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))
         .map(|i| model.problem.coordinates[i].name.clone())
+}
+
+/// The values of every symbol at `state`, constants included.
+fn values_at(model: &Model, state: &State) -> Values {
+    let problem = model.problem;
+    let mut values = model.values.clone();
+    for (i, (q, rate)) in state.q.iter().zip(&state.rates).enumerate() {
+        values.set(problem.coordinate_symbol(i, 0), *q);
+        values.set(problem.coordinate_symbol(i, 1), *rate);
+    }
+    values.set(Symbol::Time, state.t);
+    values
 }
 
 fn assemble(rows: &[Equation], unknowns: &[Symbol]) -> Result<LinearSystem, MechanicsError> {

@@ -356,6 +356,7 @@ pub fn choose(
     inertia: &Inertia,
     candidates: Vec<Candidate>,
     wanted: &[Symbol],
+    required: &[Values],
 ) -> Choice {
     let states = sample_states(model);
     // Rows written out once serve every attempt below: writing them out is what costs.
@@ -371,6 +372,16 @@ pub fn choose(
             &mut written,
         )
     };
+    if !required.is_empty() {
+        // States the caller will solve at: plan for them too if a plan can be; otherwise
+        // (the system itself is singular there) plan as usual.
+        let mut more = states.clone();
+        more.extend(required.iter().cloned());
+        let choice = attempt(candidates.clone(), &more);
+        if choice.rows.len() == wanted.len() {
+            return choice;
+        }
+    }
     let choice = attempt(candidates.clone(), &states);
     if choice.rows.len() == wanted.len() {
         // Rows that are independent at generic states can still fail together at special

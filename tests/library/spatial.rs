@@ -43,10 +43,17 @@ const BALL: (f64, f64, f64) = (1.0, 0.05, 1.0); // m, R, L
 
 #[test]
 fn spherical_pendulum_eulers_equations_and_socket_force() {
+    // q1 = pi/2 (the rod horizontal) is a state where the Motion Law's usual plan is
+    // singular though the system is not: solve must plan for it.
+    for q1 in [0.5_f64, std::f64::consts::FRAC_PI_2] {
+        spherical_pendulum_at(q1);
+    }
+}
+
+fn spherical_pendulum_at(q1: f64) {
     let (m, radius, l) = BALL;
     let i0 = 0.4 * m * radius * radius;
     let (across, along) = (i0 + m * l * l, i0);
-    let q1 = 0.5_f64;
     let rates = [0.2, 1.0, 0.3];
     // About the fixed socket O, in body axes (rotated by q1 about N.x), gravity's moment is
     // (-L e3) x (-m g (sin q1 e2 + cos q1 e3)) = -m g L sin q1 e1.
@@ -75,14 +82,15 @@ fn spherical_pendulum_eulers_equations_and_socket_force() {
     let r = [0.0, 0.0, -l];
     let a_g = add(cross(w_dot, r), cross(rates, cross(rates, r)));
     let force = add(mul(rot(0, q1), scale(m, a_g)), [0.0, 0.0, m * G]);
-    for s in solve_all("spherical-pendulum", &["--state", "q2=0,q3=0"]) {
+    let state = format!("q1={q1},q2=0,q3=0");
+    for s in solve_all("spherical-pendulum", &["--state", &state]) {
         for (k, q) in ["q1", "q2", "q3"].iter().enumerate() {
             assert_close(
                 s.acc(q),
                 acc[k],
                 1e-9,
                 G / l,
-                &format!("{}: {q}''", s.method),
+                &format!("{} at q1 = {q1}: {q}''", s.method),
             );
         }
         let f = s.force("O");
