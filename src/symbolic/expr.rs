@@ -464,7 +464,7 @@ mod tests {
         }
         // (0.3 - 1.1)^2 by hand
         assert!((eval(&e, &values) - 0.64).abs() < 1e-15);
-        let program = Program::compile(&inputs, &[e.clone()]);
+        let program = Program::compile(&inputs, std::slice::from_ref(&e));
         assert!((program.eval(&[0.3, -1.1, 2.0, 0.5])[0] - 0.64).abs() < 1e-15);
         let rate = time_derivative(&e).unwrap();
         assert!(
