@@ -62,11 +62,17 @@ fn latex_name_plain(sub: &str) -> String {
     }
 }
 
-/// A unit vector as a bold hat: `\hat{\mathbf{a}}_{x}`.
+/// A unit vector as a bold hat: `\hat{\mathbf{a}}_{x}`, `\hat{\mathbf{link}_{1}}_{x}`.
 pub fn latex_unit_vector(frame: &str, axis: u8) -> String {
     let axis = ["x", "y", "z"].get(axis as usize).copied().unwrap_or("?");
-    let frame = latex_name(&frame.to_lowercase());
-    format!("\\hat{{\\mathbf{{{frame}}}}}_{{{axis}}}")
+    let name = latex_name(&frame.to_lowercase());
+    // A word is set upright by `\mathrm`; inside `\mathbf` that would undo the bold, so the
+    // word is set in `\mathbf` alone.
+    let bold = match name.strip_prefix("\\mathrm{") {
+        Some(rest) => format!("\\mathbf{{{rest}"),
+        None => format!("\\mathbf{{{name}}}"),
+    };
+    format!("\\hat{{{bold}}}_{{{axis}}}")
 }
 
 fn latex_symbol(s: &Symbol) -> String {
@@ -311,6 +317,8 @@ mod tests {
         assert_eq!(latex_name("theta2"), "\\theta_{2}");
         assert_eq!(latex_name("m_A"), "m_{A}");
         assert_eq!(latex_unit_vector("A", 0), "\\hat{\\mathbf{a}}_{x}");
+        assert_eq!(latex_unit_vector("wedge", 1), "\\hat{\\mathbf{wedge}}_{y}");
+        assert_eq!(latex_unit_vector("link1", 2), "\\hat{\\mathbf{link}_{1}}_{z}");
     }
 
     #[test]
