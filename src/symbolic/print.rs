@@ -318,7 +318,10 @@ mod tests {
         assert_eq!(latex_name("m_A"), "m_{A}");
         assert_eq!(latex_unit_vector("A", 0), "\\hat{\\mathbf{a}}_{x}");
         assert_eq!(latex_unit_vector("wedge", 1), "\\hat{\\mathbf{wedge}}_{y}");
-        assert_eq!(latex_unit_vector("link1", 2), "\\hat{\\mathbf{link}_{1}}_{z}");
+        assert_eq!(
+            latex_unit_vector("link1", 2),
+            "\\hat{\\mathbf{link}_{1}}_{z}"
+        );
     }
 
     #[test]
