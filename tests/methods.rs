@@ -37,16 +37,23 @@ const PENDULUM: &str = r#"{
   "find": { "reactions": ["O"] }
 }"#;
 
+/// The pin force on the pendulum by hand, F = m (a* - g): tangential m L q'' and
+/// centripetal m L q'^2 toward O.
+fn pendulum_pin_force(q: f64, u: f64, qdd: f64) -> (f64, f64) {
+    let (m, l, g) = (2.0, 1.5, 9.81);
+    let fx = m * (l * qdd * q.cos() - l * u * u * q.sin());
+    let fy = m * (l * qdd * q.sin() + l * u * u * q.cos() + g);
+    (fx, fy)
+}
+
 #[test]
 fn simple_pendulum_and_its_pin_reaction() {
-    let (m, l, g) = (2.0, 1.5, 9.81);
+    let (l, g) = (1.5, 9.81);
     let (q, u) = (0.7f64, -1.3f64);
     for (method, s) in solve_all(PENDULUM, &[q], &[u]) {
         let qdd = -(g / l) * q.sin();
         assert_near(s.accelerations[0], qdd, method.name());
-        // F = m (a* - g): tangential m L q'' and centripetal m L q'^2 toward O.
-        let fx = m * (l * qdd * q.cos() - l * u * u * q.sin());
-        let fy = m * (l * qdd * q.sin() + l * u * u * q.cos() + g);
+        let (fx, fy) = pendulum_pin_force(q, u, qdd);
         let (_, force, moment) = &s.reactions[0];
         assert_near(force[0], fx, "Fx");
         assert_near(force[1], fy, "Fy");
@@ -60,13 +67,12 @@ fn simple_pendulum_and_its_pin_reaction() {
 /// is independent at generic angles but loses the vertical pin force at q = 0.
 #[test]
 fn pin_reaction_at_the_bottom_and_at_a_quarter_turn() {
-    let (m, l, g) = (2.0, 1.5, 9.81);
+    let (l, g) = (1.5, 9.81);
     for (q, u) in [(0.0f64, 0.0f64), (std::f64::consts::FRAC_PI_2, 0.8)] {
         for (method, s) in solve_all(PENDULUM, &[q], &[u]) {
             let qdd = -(g / l) * q.sin();
             assert_near(s.accelerations[0], qdd, method.name());
-            let fx = m * (l * qdd * q.cos() - l * u * u * q.sin());
-            let fy = m * (l * qdd * q.sin() + l * u * u * q.cos() + g);
+            let (fx, fy) = pendulum_pin_force(q, u, qdd);
             let (_, force, _) = &s.reactions[0];
             assert_near(force[0], fx, &format!("Fx by {} at q = {q}", method.name()));
             assert_near(force[1], fy, &format!("Fy by {} at q = {q}", method.name()));

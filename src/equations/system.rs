@@ -156,7 +156,10 @@ pub fn derive_at<'p>(
         Method::MotionLaw => {
             let reactions = reaction_unknowns(&model, &all_joints);
             let candidates = planner::candidates(&model, &actions, &reactions);
-            let required: Vec<Values> = states.iter().map(|s| values_at(&model, s)).collect();
+            let required: Vec<Values> = states
+                .iter()
+                .map(|s| model.values_at(s.t, &s.q, &s.rates))
+                .collect();
             let choice =
                 planner::choose(&model, &actions, &inertia, candidates, &unknowns, &required);
             (choice.rows, choice.rejected)
@@ -212,18 +215,6 @@ fn massless_coordinate(
     (0..accelerations.len())
         .find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))
         .map(|i| model.problem.coordinates[i].name.clone())
-}
-
-/// The values of every symbol at `state`, constants included.
-fn values_at(model: &Model, state: &State) -> Values {
-    let problem = model.problem;
-    let mut values = model.values.clone();
-    for (i, (q, rate)) in state.q.iter().zip(&state.rates).enumerate() {
-        values.set(problem.coordinate_symbol(i, 0), *q);
-        values.set(problem.coordinate_symbol(i, 1), *rate);
-    }
-    values.set(Symbol::Time, state.t);
-    values
 }
 
 fn assemble(rows: &[Equation], unknowns: &[Symbol]) -> Result<LinearSystem, MechanicsError> {

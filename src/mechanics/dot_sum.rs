@@ -7,7 +7,7 @@
 //! pair of frames instead of one per body and pair of frames.
 
 use super::frames::Frames;
-use super::vector::{dot3, Components, Vector};
+use super::vector::{dot3, size, Components, Vector};
 use crate::problem::BodyId;
 use crate::symbolic::{add, Expr};
 
@@ -70,8 +70,4 @@ impl<'a> DotSum<'a> {
         }
         add(terms)
     }
-}
-
-fn size(c: &Components) -> usize {
-    c.iter().map(|e| e.terms().len()).sum()
 }

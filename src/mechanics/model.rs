@@ -256,6 +256,18 @@ impl<'p> Model<'p> {
         Vector::new(frame, c.clone())
     }
 
+    /// The constants' values with the coordinates `q`, their `rates` and time `t`.
+    pub fn values_at(&self, t: f64, q: &[f64], rates: &[f64]) -> Values {
+        let problem = self.problem;
+        let mut values = self.values.clone();
+        for (i, (q, rate)) in q.iter().zip(rates).enumerate() {
+            values.set(problem.coordinate_symbol(i, 0), *q);
+            values.set(problem.coordinate_symbol(i, 1), *rate);
+        }
+        values.set(Symbol::Time, t);
+        values
+    }
+
     /// Whether the problem is planar.
     pub fn is_planar(&self) -> bool {
         self.problem.dimension == Dimension::Two

@@ -37,7 +37,7 @@ pub fn dot3(a: &Components, b: &Components) -> Expr {
 }
 
 /// The number of terms in a triple: a measure of the work of multiplying it out.
-fn size(c: &Components) -> usize {
+pub fn size(c: &Components) -> usize {
     c.iter().map(|e| e.terms().len()).sum()
 }
 

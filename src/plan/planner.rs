@@ -294,18 +294,17 @@ pub fn sample_states(model: &Model) -> Vec<Values> {
     };
     let mut states = Vec::new();
     for sample in 0..4 {
-        let mut values = model.values.clone();
-        for (i, c) in problem.coordinates.iter().enumerate() {
-            let (q, u) = if sample == 0 {
+        let (mut q, mut rates) = (Vec::new(), Vec::new());
+        for c in &problem.coordinates {
+            let (value, rate) = if sample == 0 {
                 (c.initial, c.rate)
             } else {
                 (c.initial + next(), c.rate + next())
             };
-            values.set(problem.coordinate_symbol(i, 0), q);
-            values.set(problem.coordinate_symbol(i, 1), u);
+            q.push(value);
+            rates.push(rate);
         }
-        values.set(Symbol::Time, 0.37 * sample as f64);
-        states.push(values);
+        states.push(model.values_at(0.37 * sample as f64, &q, &rates));
     }
     states
 }
@@ -447,14 +446,9 @@ fn rates_are_independent(model: &Model, state: &Values) -> bool {
 
 /// Every coordinate at `q`, the rates as given initially.
 fn uniform_state(model: &Model, q: f64) -> Values {
-    let problem = model.problem;
-    let mut values = model.values.clone();
-    for (i, c) in problem.coordinates.iter().enumerate() {
-        values.set(problem.coordinate_symbol(i, 0), q);
-        values.set(problem.coordinate_symbol(i, 1), c.rate);
-    }
-    values.set(Symbol::Time, 0.0);
-    values
+    let coordinates = &model.problem.coordinates;
+    let rates: Vec<f64> = coordinates.iter().map(|c| c.rate).collect();
+    model.values_at(0.0, &vec![q; coordinates.len()], &rates)
 }
 
 /// For each of `states`, whether `rows` determine every one of `wanted` there (each row

@@ -195,8 +195,6 @@ impl Compiler {
         }
     }
 
-    /// Emits a factoring plan; returns (negated, slot of the magnitude), so that `a - b`
-    /// costs one subtraction.
     /// The slot of a value, emitting its last product if it is still pending.
     fn materialize(&mut self, value: Value) -> usize {
         match value {
@@ -205,6 +203,8 @@ impl Compiler {
         }
     }
 
+    /// Emits a factoring plan; returns (negated, value of the magnitude). A sum's parts are
+    /// signed inside its Dot instruction, so only a single term or product comes back negated.
     fn plan(&mut self, plan: &super::horner::Plan) -> (bool, Value) {
         use super::horner::Plan;
         match plan {
