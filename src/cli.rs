@@ -44,6 +44,10 @@ pub struct Common {
     /// Refuse problems with more coordinates than this, whose derivation could take hours.
     #[arg(long, value_name = "N", default_value_t = crate::cmd::MAX_COORDINATES)]
     pub max_coordinates: usize,
+    /// Refuse, in seconds, a derivation whose symbolic work passes this many million
+    /// expression terms (about 30 s and 1.5 GB at the default).
+    #[arg(long, value_name = "MILLIONS", default_value_t = crate::symbolic::budget::DEFAULT_LIMIT / 1_000_000)]
+    pub max_work: u64,
 }
 
 /// The commands.

@@ -21,6 +21,13 @@ pub enum Error {
     Solve(crate::numeric::SolveError),
     /// A template failed to render.
     Render(crate::render::RenderError),
+    /// The symbolic work passed its limit (`--max-work`): the problem is too large.
+    TooMuchWork {
+        /// Where and at what limit.
+        overrun: crate::symbolic::budget::Overrun,
+        /// The method that was deriving.
+        method: crate::equations::Method,
+    },
     /// Some problems of a directory failed (`explain DIR`); the others were written.
     Batch(crate::cmd::explain::BatchError),
 }
@@ -61,6 +68,19 @@ impl fmt::Display for Error {
             Error::Solve(e) => write!(f, "{e}"),
             Error::Render(e) => write!(f, "{e}"),
             Error::Batch(e) => write!(f, "{e}"),
+            Error::TooMuchWork { overrun, method } => {
+                let raise = format!(
+                    "raise the limit with --max-work {}",
+                    overrun.limit / 250_000
+                );
+                match method {
+                    crate::equations::Method::NewtonEuler => write!(f, "{overrun}\n  hint: {raise}"),
+                    _ => write!(
+                        f,
+                        "{overrun}\n  hint: try --method newton-euler, whose rows are the smallest, or {raise}"
+                    ),
+                }
+            }
         }
     }
 }
@@ -77,6 +97,7 @@ impl std::error::Error for Error {
             Error::Solve(e) => e.source(),
             Error::Render(e) => e.source(),
             Error::Batch(e) => e.source(),
+            Error::TooMuchWork { .. } => None,
         }
     }
 }

@@ -17,6 +17,7 @@ use crate::numeric::evaluate::{Compiled, StateSolution};
 use crate::numeric::system::{Evaluation, System};
 use crate::numeric::SolveError;
 use crate::problem::Problem;
+use crate::symbolic::budget;
 use crate::Error;
 use std::cell::RefCell;
 
@@ -27,7 +28,20 @@ pub use crate::cmd::load_with_overrides as load;
 /// # Errors
 /// When the model cannot be built or the method finds no complete set of equations.
 pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    Ok(crate::equations::derive(problem, method)?)
+    derive_within_budget(problem, method, &[])
+}
+
+/// [`derive_at`] counted against the work limit ([`budget`]): past it, the overrun is the
+/// error, whatever the derivation returned.
+fn derive_within_budget<'p>(
+    problem: &'p Problem,
+    method: Method,
+    states: &[State],
+) -> Result<Derivation<'p>, Error> {
+    budget::start();
+    let derivation = derive_at(problem, method, states);
+    budget::settle().map_err(|overrun| Error::TooMuchWork { overrun, method })?;
+    Ok(derivation?)
 }
 
 /// Compiled equations that plan again where their plan is singular.
@@ -89,7 +103,7 @@ impl<'p> Solver<'p> {
             q: q.to_vec(),
             rates: rates.to_vec(),
         };
-        let Ok(derivation) = derive_at(self.problem, self.method, &[state]) else {
+        let Ok(derivation) = derive_within_budget(self.problem, self.method, &[state]) else {
             return first;
         };
         let compiled = Compiled::new(&derivation);

@@ -90,6 +90,8 @@ pub fn load_with_overrides(common: &crate::cli::Common) -> Result<crate::problem
     let overrides = crate::cli::parse_assignments(&common.set)?;
     crate::problem::apply_overrides(&mut problem, &overrides)?;
     check_size(&problem, common)?;
+    // Every derivation of this command is counted against the limit (see `budget`).
+    crate::symbolic::budget::set_limit(common.max_work.saturating_mul(1_000_000));
     Ok(problem)
 }
 

@@ -1,11 +1,11 @@
 //! `mbd-tutor simulate`: integrate the equations of motion and tabulate the motion.
 
 use crate::cli::Common;
-use crate::equations::derive;
 use crate::numeric::checks::{confirm, Check};
 use crate::numeric::format::fixed;
 use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
 use crate::numeric::SolveError;
+use crate::pipeline::derive;
 use crate::problem::{ProblemError, ProblemErrors};
 use crate::Error;
 use clap::ValueEnum;

@@ -6,6 +6,7 @@ use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, reaction_symbol, Action};
 use crate::plan::planner::{self, Rejected};
 use crate::problem::Problem;
+use crate::symbolic::budget;
 use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};
@@ -160,9 +161,17 @@ pub fn derive_at<'p>(
     method: Method,
     states: &[State],
 ) -> Result<Derivation<'p>, MechanicsError> {
+    budget::step("computing the kinematics (step 4)");
     let model = Model::build(problem)?;
+    budget::step("writing the forces and moments (step 2)");
     let actions = actions(&model)?;
+    budget::step("writing the inertia forces and torques (step 4)");
     let inertia = Inertia::of(&model);
+    budget::step(match method {
+        Method::MotionLaw => "writing the Motion Law's candidate rows (step 3)",
+        Method::NewtonEuler => "writing the Newton–Euler rows (step 3)",
+        Method::Kane => "writing Kane's generalized forces (step 3)",
+    });
     let accelerations: Vec<Symbol> = (0..problem.coordinates.len())
         .map(|i| problem.coordinate_symbol(i, 2))
         .collect();
@@ -275,6 +284,7 @@ pub fn derive_at<'p>(
             ),
         });
     }
+    budget::step("assembling the linear system (step 5)");
     let system = assemble(&rows, &unknowns)?;
     Ok(Derivation {
         model,

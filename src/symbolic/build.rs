@@ -48,6 +48,10 @@ pub fn is_refused_power(e: &Expr) -> bool {
 
 /// The canonical sum of `terms`.
 pub fn add(terms: impl IntoIterator<Item = Expr>) -> Expr {
+    // Past the work limit: see `budget`.
+    if super::budget::exhausted() {
+        return Expr::zero();
+    }
     let mut constant = Number::ZERO;
     let mut monomials: Vec<Expr> = Vec::new();
     let mut push = |term: &Expr| match term.node() {
@@ -60,6 +64,7 @@ pub fn add(terms: impl IntoIterator<Item = Expr>) -> Expr {
             _ => push(&term),
         }
     }
+    super::budget::charge(monomials.len() as u64);
     // Like terms end up next to each other; the sort is stable and finds the sorted runs
     // that sums being added already are, so adding two sums costs about their length.
     monomials.sort_by(|a, b| cmp_rest(rest_factors(a), rest_factors(b)));
@@ -151,6 +156,9 @@ fn scale_factors(coefficient: Number, factors: &[Expr]) -> Expr {
 
 /// The canonical, expanded product of `factors`.
 pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
+    if super::budget::exhausted() {
+        return Expr::zero();
+    }
     let mut coefficient = Number::ONE;
     // (base, exponent, the factor as given)
     let mut powers: Vec<(Expr, Expr, Expr)> = Vec::new();
@@ -170,6 +178,7 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
     if coefficient.is_zero() {
         return Expr::zero();
     }
+    super::budget::charge((powers.len() + sums.len()) as u64);
     powers.sort_by(|a, b| a.0.cmp(&b.0));
     let mut rebuilt: Vec<Expr> = Vec::with_capacity(powers.len());
     let mut needs_another_pass = false;
@@ -264,6 +273,9 @@ fn scale_sum(coefficient: Number, sum: &Expr) -> Expr {
 
 /// The canonical power `base^exponent`.
 pub fn pow(base: Expr, exponent: Expr) -> Expr {
+    if super::budget::exhausted() {
+        return Expr::zero();
+    }
     if exponent.is_zero() {
         return Expr::one();
     }
@@ -322,6 +334,9 @@ pub fn has_negative_sign(e: &Expr) -> bool {
 
 /// The canonical function application.
 pub fn func(f: Func, args: Vec<Expr>) -> Expr {
+    if super::budget::exhausted() {
+        return Expr::zero();
+    }
     let single = args.len() == 1;
     if single {
         let arg = &args[0];

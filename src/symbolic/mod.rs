@@ -1,6 +1,7 @@
 //! The computer-algebra core: expressions, parsing, d/dt, simplification, LaTeX,
 //! and compilation to a flat numeric program.
 
+pub mod budget;
 pub mod build;
 pub mod compile;
 pub mod diff;

@@ -190,3 +190,79 @@ fn an_expression_longer_than_the_limit_is_refused() {
     assert!(stderr.contains("limited to 100000 bytes"), "{stderr}");
     std::fs::remove_dir_all(&dir).expect("removed");
 }
+
+#[test]
+fn a_derivation_past_the_work_limit_is_refused_naming_the_step_and_the_flag() {
+    let arm = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/validation/all-joints-3d.json"
+    );
+    let dir = scratch("work-limit");
+    let kept = dir.join("kept.csv");
+    std::fs::write(&kept, "earlier output\n").expect("written");
+    let kept = kept.to_str().expect("UTF-8 path");
+    for (command, method) in [("solve", "kane"), ("simulate", "motion-law")] {
+        let stderr = refused(&[
+            command,
+            arm,
+            "--method",
+            method,
+            "--max-work",
+            "1",
+            "-o",
+            kept,
+        ]);
+        assert!(
+            stderr.contains("passed its limit of 1 million units")
+                && stderr.contains("(step 3)")
+                && stderr.contains("--method newton-euler")
+                && stderr.contains("--max-work 4"),
+            "{command}: {stderr}"
+        );
+    }
+    // Newton–Euler is not offered to itself.
+    let stderr = refused(&["solve", arm, "--method", "newton-euler", "--max-work", "0"]);
+    assert!(
+        stderr.contains("--max-work") && !stderr.contains("--method newton-euler"),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(kept).expect("kept"),
+        "earlier output\n"
+    );
+    // The default limit leaves the problem alone.
+    succeeds(&["solve", arm, "--method", "newton-euler"]);
+    std::fs::remove_dir_all(&dir).expect("removed");
+}
+
+/// Every bundled problem and method, cut off at several points of its derivation: the
+/// overrun is the error every time, never a panic or a system built from the zeros.
+#[test]
+fn cutting_a_derivation_short_anywhere_gives_the_overrun_and_never_a_panic() {
+    use mbd_tutor::equations::Method;
+    use mbd_tutor::symbolic::budget;
+    for path in crate::support::all_problems() {
+        let problem = mbd_tutor::problem::load_file(&path).expect("a bundled problem loads");
+        for method in Method::ALL {
+            budget::set_limit(u64::MAX);
+            let full = mbd_tutor::pipeline::derive(&problem, method);
+            let needed = budget::spent();
+            for fraction in [1, 10, 50, 90] {
+                budget::set_limit((needed * fraction / 100).max(1));
+                match mbd_tutor::pipeline::derive(&problem, method) {
+                    Err(mbd_tutor::Error::TooMuchWork { .. }) => {}
+                    other => panic!(
+                        "{} {} at {fraction}% of {needed}: {:?}",
+                        path.display(),
+                        method.name(),
+                        other.map(|d| d.rows.len())
+                    ),
+                }
+            }
+            budget::set_limit(needed.saturating_add(1));
+            let again = mbd_tutor::pipeline::derive(&problem, method);
+            assert_eq!(again.is_ok(), full.is_ok(), "{}", path.display());
+        }
+    }
+    budget::set_limit(u64::MAX);
+}

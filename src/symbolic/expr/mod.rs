@@ -259,6 +259,7 @@ impl Expr {
     }
 
     pub(crate) fn from_node(node: Node) -> Expr {
+        crate::symbolic::budget::charge(1);
         Expr(Rc::new(node))
     }
 
