@@ -15,7 +15,7 @@ use super::simulate::simulate;
 use super::system::System;
 use crate::problem::{Problem, ProblemError, Question, QuestionKind, SimulateSettings};
 use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::Symbol;
+use crate::symbolic::{Expr, Symbol};
 use nalgebra::{DMatrix, DVector};
 
 /// The most Newton iterations for a steady motion.
@@ -114,7 +114,7 @@ pub fn answer(
     }
     let mut residual = None;
     if let QuestionKind::Steady { unknowns, zero } = &question.kind {
-        let found = steady(system, t, &mut q, &mut rates, unknowns, zero)
+        let found = steady(problem, system, t, &mut q, &mut rates, unknowns, zero)
             .map_err(|(message, hint)| failure(question, message, hint))?;
         residual = Some(found);
     }
@@ -125,17 +125,7 @@ pub fn answer(
     let names = system.coordinate_names();
     let values = match &question.kind {
         QuestionKind::Value { expression, text } => {
-            let mut v = Values::new();
-            for c in &problem.constants {
-                v.set(Symbol::Const(c.name.as_str().into()), c.value);
-            }
-            for (i, name) in names.iter().enumerate() {
-                let s = |order| Symbol::Coord(name.as_str().into(), order);
-                v.set(s(0), q[i]);
-                v.set(s(1), rates[i]);
-                v.set(s(2), evaluation.accelerations[i]);
-            }
-            v.set(Symbol::Time, t);
+            let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
             let x = eval(expression, &v);
             if !x.is_finite() {
                 return Err(failure(
@@ -187,14 +177,14 @@ pub fn answer(
 
 type Failure = (String, &'static str);
 
-/// The q'' of `zero` at the state with `unknowns` set to `u`.
+/// The values of the `zero` expressions at the state with `unknowns` set to `u`.
 fn residual(
+    problem: &Problem,
     system: &dyn System,
     t: f64,
-    q: &[f64],
-    rates: &[f64],
+    (q, rates): (&[f64], &[f64]),
     unknowns: &[crate::problem::StateEntry],
-    zero: &[usize],
+    zero: &[(Expr, String)],
     u: &DVector<f64>,
 ) -> Option<DVector<f64>> {
     let (mut q, mut rates) = (q.to_vec(), rates.to_vec());
@@ -204,18 +194,36 @@ fn residual(
     }
     system.assemble(t, &mut q, &mut rates).ok()?;
     let a = system.accelerations(t, &q, &rates).ok()?;
-    let r = DVector::from_iterator(zero.len(), zero.iter().map(|&i| a[i]));
+    let values = state_values(problem, t, &q, &rates, &a);
+    let r = DVector::from_iterator(zero.len(), zero.iter().map(|(e, _)| eval(e, &values)));
     r.iter().all(|x| x.is_finite()).then_some(r)
+}
+
+/// The values of the constants, the coordinates, their rates and second rates, and `t`.
+fn state_values(problem: &Problem, t: f64, q: &[f64], rates: &[f64], a: &[f64]) -> Values {
+    let mut v = Values::new();
+    for c in &problem.constants {
+        v.set(Symbol::Const(c.name.as_str().into()), c.value);
+    }
+    for (i, c) in problem.coordinates.iter().enumerate() {
+        let s = |order| Symbol::Coord(c.name.as_str().into(), order);
+        v.set(s(0), q[i]);
+        v.set(s(1), rates[i]);
+        v.set(s(2), a[i]);
+    }
+    v.set(Symbol::Time, t);
+    v
 }
 
 /// Newton's method for the unknowns; on success `q` and `rates` hold the steady state.
 fn steady(
+    problem: &Problem,
     system: &dyn System,
     t: f64,
     q: &mut [f64],
     rates: &mut [f64],
     unknowns: &[crate::problem::StateEntry],
-    zero: &[usize],
+    zero: &[(Expr, String)],
 ) -> Result<(f64, usize), Failure> {
     let get = |q: &[f64], rates: &[f64], e: &crate::problem::StateEntry| {
         if e.order == 0 {
@@ -225,7 +233,8 @@ fn steady(
         }
     };
     let mut u = DVector::from_iterator(unknowns.len(), unknowns.iter().map(|e| get(q, rates, e)));
-    let f = |u: &DVector<f64>| residual(system, t, q, rates, unknowns, zero, u);
+    let (q0, rates0) = (q.to_vec(), rates.to_vec());
+    let f = |u: &DVector<f64>| residual(problem, system, t, (&q0, &rates0), unknowns, zero, u);
     let not_solvable = || {
         (
             "the equations cannot be solved at the starting guess".to_string(),
@@ -292,7 +301,7 @@ fn steady(
 fn no_root(left: f64, iterations: usize) -> Failure {
     (
         format!(
-            "no steady motion found: after {iterations} Newton iterations the largest second derivative left is {}",
+            "no steady motion found: after {iterations} Newton iterations the largest of the expressions to make zero is still {}",
             super::format::fixed(left)
         ),
         "start nearer a solution in `at.state`, or check that the unknowns can make these second derivatives zero",

@@ -5,9 +5,10 @@
 //!   and `t` (a coordinate, a spring force, a kinetic energy);
 //! - `reaction`: the reaction at a joint (closure, rolling contact) listed in
 //!   `find.reactions`;
-//! - `steady`: the values of some coordinates and rates (`unknowns`) that make the second
-//!   derivatives of the coordinates in `zero` (default: all) vanish, the others held: a
-//!   steady motion or an equilibrium,
+//! - `steady`: the values of some coordinates and rates (`unknowns`) that make the
+//!   expressions in `zero` vanish (default: every second derivative `q1''`), the rest of the
+//!   state held: a steady motion or an equilibrium; `zero` may add conditions such as a
+//!   spin held, `"phi' + psi'*cos(theta) - 150"`,
 //!
 //! `at` a state (`state`, with `time`, default 0), or at a time reached by simulating from
 //! the initial state (`time` alone). Without `at`, the initial state at t = 0.
@@ -33,10 +34,11 @@ pub enum QuestionKind {
     Value { expression: Expr, text: String },
     /// A reaction, as a site index (see [`Problem::site_name`](super::Problem::site_name)).
     Reaction { site: usize },
-    /// The `unknowns` that make the q'' of the `zero` coordinates vanish.
+    /// The `unknowns` that make the `zero` expressions vanish (default: every q''), each
+    /// with its text.
     Steady {
         unknowns: Vec<StateEntry>,
-        zero: Vec<usize>,
+        zero: Vec<(Expr, String)>,
     },
 }
 
@@ -280,25 +282,26 @@ impl Reader {
         }
         let zpath = key_path(path, "zero");
         let zero = match fields.get("zero") {
-            None => (0..self.names.coordinates.len()).collect(),
+            None => (0..self.names.coordinates.len())
+                .map(|i| {
+                    let name = &self.names.coordinates[i];
+                    (Expr::coord(name, 2), format!("{name}''"))
+                })
+                .collect(),
             Some(list) => {
                 let items = json::array(list, &zpath, &mut self.diag)?;
                 let mut zero = Vec::new();
                 for (i, item) in items.iter().enumerate() {
                     let ipath = index_path(&zpath, i);
-                    let name = string(item, &ipath, &mut self.diag)?;
-                    let base = name.trim().trim_end_matches('\'');
-                    let Some(c) = self.names.coordinate(base) else {
-                        let known: Vec<&str> =
-                            self.names.coordinates.iter().map(String::as_str).collect();
-                        self.diag.hint(
-                            &ipath,
-                            format!("`{}` is not a coordinate", name.trim()),
-                            super::names::suggest(base, &known, "coordinates"),
-                        );
-                        return None;
-                    };
-                    zero.push(c);
+                    let e = expressions::scalar(
+                        item,
+                        &ipath,
+                        &self.names,
+                        Context::question("an expression to make zero"),
+                        &mut self.diag,
+                    )?;
+                    let text = item.as_str().map(str::trim).unwrap_or("").to_string();
+                    zero.push((e, text));
                 }
                 zero
             }
@@ -307,11 +310,11 @@ impl Reader {
             self.diag.hint(
                 path,
                 format!(
-                    "{} unknowns but only {} second derivatives to make zero",
+                    "{} unknowns but only {} expressions to make zero",
                     unknowns.len(),
                     zero.len()
                 ),
-                "name no more unknowns than coordinates in `zero`",
+                "name no more unknowns than expressions in `zero`",
             );
             return None;
         }

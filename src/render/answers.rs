@@ -38,7 +38,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .collect();
             if let Some((left, iterations)) = answer.residual {
                 view.note = format!(
-                    "Newton's method: {iterations} iterations; the largest second derivative left is {}.",
+                    "Newton's method: {iterations} iterations; the conditions hold to {}.",
                     fixed(left)
                 );
             }
@@ -88,10 +88,7 @@ fn asked(problem: &Problem, question: &Question) -> String {
         }
         QuestionKind::Steady { unknowns, zero } => {
             let unknowns: Vec<String> = unknowns.iter().map(|e| entry_name(problem, e)).collect();
-            let zero: Vec<String> = zero
-                .iter()
-                .map(|&i| format!("{}''", problem.coordinates[i].name))
-                .collect();
+            let zero: Vec<&str> = zero.iter().map(|(_, text)| text.as_str()).collect();
             format!(
                 "Find {} for a steady motion: {} = 0.",
                 unknowns.join(", "),
