@@ -37,8 +37,9 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .map(|(name, value)| value_tex(problem, question, name, *value))
                 .collect();
             if let Some((left, iterations)) = answer.residual {
+                let plural = if iterations == 1 { "" } else { "s" };
                 view.note = format!(
-                    "Newton's method: {iterations} iterations; the conditions hold to {}.",
+                    "Newton's method: {iterations} iteration{plural}; the conditions hold to {}.",
                     fixed(left)
                 );
             }
