@@ -409,3 +409,44 @@ fn both_versions_come_from_one_run_and_compile() {
     assert_eq!(out.status.code(), Some(2));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+fn bundled_answers(name: &str) -> Vec<Answer> {
+    let text = std::fs::read_to_string(problem(name)).expect("readable");
+    answers_of(&load(&text).expect("valid"))
+}
+
+#[test]
+fn the_bundled_steady_questions_match_their_closed_forms() {
+    // Two carts on springs under a steady push F0: x1 = F0/k1, x2 = F0/k1 + F0/k2.
+    let a = bundled_answers("two-mass-spring-damper");
+    let statics = a.last().expect("the static deflections");
+    close(statics.values[0].1, 5.0 / 200.0, 1e-9, "x1");
+    close(statics.values[1].1, 5.0 / 200.0 + 5.0 / 100.0, 1e-9, "x2");
+    // The gyroscope's steady precession with the axle horizontal: psi' = m g d / (Is s).
+    let a = bundled_answers("gyroscope-gimbal");
+    close(
+        a[0].values[0].1,
+        0.4 * 9.81 * 0.02 / (2.0e-4 * 300.0),
+        1e-9,
+        "psi'",
+    );
+    // The block on the wedge: the textbook's closed forms.
+    let a = bundled_answers("block-on-wedge");
+    let (m, big_m, g, alpha) = (1.0, 5.0, 9.81, std::f64::consts::PI / 6.0);
+    let d = big_m + m * alpha.sin().powi(2);
+    close(
+        a[0].values[0].1,
+        -m * g * alpha.sin() * alpha.cos() / d,
+        1e-10,
+        "x''",
+    );
+    close(
+        a[1].values[0].1,
+        (big_m + m) * g * alpha.sin() / d,
+        1e-10,
+        "s''",
+    );
+    // The double pendulum's energy, written by hand in the problem, is the same after 4 s.
+    let a = bundled_answers("double-pendulum-rods");
+    close(a[3].values[0].1, a[4].values[0].1, 1e-7, "energy after 4 s");
+}
