@@ -89,6 +89,7 @@ pub fn planar_chain(n: usize) -> Problem {
         constraints: vec![],
         loads: vec![],
         find_reactions: vec![],
+        questions: Vec::new(),
         simulate: SimulateSettings::default(),
     }
 }

@@ -46,8 +46,12 @@ pub struct Args {
     #[arg(long, value_name = "DIR")]
     pub templates: Option<PathBuf>,
     /// Write the student's handout: the statement and the set-up, with blank tables.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "both")]
     pub student: bool,
+    /// Write both versions from one run: the worked solution to `-o NAME.EXT` and the
+    /// student's handout beside it as `NAME-student.EXT` (needs `-o`).
+    #[arg(long)]
+    pub both: bool,
     /// Add a section on small motions about the initial state, or about the state given
     /// (`--linearize q1=0,q1'=0`): M, C, K, the state matrix, eigenvalues and modes.
     #[arg(long, value_name = "STATE", num_args = 0..=1, default_missing_value = "")]
@@ -98,30 +102,70 @@ pub fn run(args: Args) -> Result<(), Error> {
     explain_file(&args, &args.common.problem, args.common.output.as_deref())
 }
 
+/// `NAME-student.EXT` beside `NAME.EXT`.
+pub fn student_path(path: &Path) -> PathBuf {
+    let name = match path.extension() {
+        Some(ext) => format!("{}-student.{}", file_stem(path), ext.to_string_lossy()),
+        None => format!("{}-student", file_stem(path)),
+    };
+    path.with_file_name(name)
+}
+
+/// Explains one problem into `output`; with `--both`, the student's handout too, beside it.
+fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
+    if !args.both {
+        return explain_version(args, problem_path, output, args.student);
+    }
+    let Some(output) = output else {
+        return Err(Error::Usage(
+            "--both writes two files: name the worked solution's with -o FILE".into(),
+        ));
+    };
+    explain_version(args, problem_path, Some(output), false)?;
+    explain_version(args, problem_path, Some(&student_path(output)), true)
+}
+
 /// Explains one problem into `output` (standard output when `None`); plots go beside it
 /// as `STEM-KIND.svg`, `STEM` being the output's file name without extension.
-fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
+fn explain_version(
+    args: &Args,
+    problem_path: &Path,
+    output: Option<&Path>,
+    student: bool,
+) -> Result<(), Error> {
     let common = Common {
         problem: problem_path.to_path_buf(),
         ..args.common.clone()
     };
     let problem = super::load_with_overrides(&common)?;
     let method = super::method(args.common.method);
-    let mut solution: Solution = if args.student {
+    let mut solution: Solution = if student {
         let mut setup = render::build::setup(&problem, method);
         // The handout shows the system; its free bodies are left to draw.
         if let Some(drawing) = render::draw::initial_configuration(&problem, method) {
             setup.configuration = drawing.figure();
         }
+        // As many blank rows as the worked solution has free bodies and equations.
+        if let Ok(full) = render::build::solution(&problem, method) {
+            setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
+            setup.plan.rows = vec![Default::default(); full.plan.rows.len()];
+        }
         setup
     } else {
         render::build::solution(&problem, method)?
     };
-    if let Some(state) = args.linearize.as_ref().filter(|_| !args.student) {
+    if let Some(state) = args.linearize.as_ref().filter(|_| !student) {
         let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
         let linearizer = crate::numeric::linearize::Linearizer::new(&problem, method)?;
         let l = linearizer.at(&problem, 0.0, &q, &rates)?;
         solution.linearization = Some(render::linearization::section(&problem, &l));
+    }
+    if !problem.questions.is_empty() {
+        solution.answers = if student {
+            render::answers::blank(&problem)
+        } else {
+            answers(&problem, method)?
+        };
     }
     for plot in &mut solution.simulation.plots {
         // On standard output there is nowhere to put plot files, so nothing refers to one.
@@ -133,7 +177,7 @@ fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Resu
         &solution,
         args.format.into(),
         args.templates.as_deref(),
-        args.student,
+        student,
     )?;
     if let Some(path) = output {
         // The plots first, so that a document never refers to a plot that is not there.
@@ -194,6 +238,18 @@ fn run_directory(args: &Args) -> Result<(), Error> {
             total: problems.len(),
         }))
     }
+}
+
+/// The answers to the problem's questions, computed with the equations of `method`.
+fn answers(
+    problem: &crate::problem::Problem,
+    method: crate::equations::Method,
+) -> Result<Vec<render::answers::AnswerView>, Error> {
+    let derivation = crate::pipeline::derive(problem, method)?;
+    let solver = crate::pipeline::Solver::new(problem, &derivation);
+    let answers = crate::numeric::answers::answer_all(problem, &solver)
+        .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))?;
+    Ok(render::answers::section(problem, &answers))
 }
 
 fn file_stem(path: &Path) -> String {

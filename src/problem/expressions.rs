@@ -22,6 +22,8 @@ pub struct Context {
     pub dynamic: bool,
     /// What the expression is, for messages: "a mass", "a position".
     pub what: &'static str,
+    /// Questions: second rates `q1''` are allowed too.
+    pub second_rates: bool,
 }
 
 impl Context {
@@ -30,6 +32,7 @@ impl Context {
         Context {
             dynamic: false,
             what,
+            second_rates: false,
         }
     }
 
@@ -38,6 +41,16 @@ impl Context {
         Context {
             dynamic: true,
             what,
+            second_rates: false,
+        }
+    }
+
+    /// A question's value: constants, coordinates, first and second rates, and time.
+    pub fn question(what: &'static str) -> Context {
+        Context {
+            dynamic: true,
+            what,
+            second_rates: true,
         }
     }
 }
@@ -138,6 +151,7 @@ impl Resolve for Scope<'_> {
         }
         match primes {
             0 | 1 => Ok(Expr::coord(name, primes)),
+            2 if self.context.second_rates => Ok(Expr::coord(name, 2)),
             2 => Err(ParseError::new(
                 column,
                 format!("`{written}` is a second rate, not allowed here"),

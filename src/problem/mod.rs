@@ -26,12 +26,14 @@ mod json;
 mod loads;
 pub mod model;
 mod names;
+mod questions;
 mod read;
 pub mod schema;
 mod settings;
 mod validate;
 
 pub use model::*;
+pub use questions::{Question, QuestionAt, QuestionKind, StateEntry};
 
 use std::fmt;
 use std::path::Path;

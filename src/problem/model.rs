@@ -281,6 +281,8 @@ pub struct Problem {
     pub constraints: Vec<Constraint>,
     /// Reactions requested, as site indices (see [`Problem::site_name`]).
     pub find_reactions: Vec<usize>,
+    /// The questions of `find.questions`, answered in the handout's "Answers".
+    pub questions: Vec<super::questions::Question>,
     pub simulate: SimulateSettings,
 }
 

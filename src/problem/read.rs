@@ -118,7 +118,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         .get("loads")
         .map(|v| r.loads(v, &known))
         .unwrap_or_default();
-    let find_reactions = top
+    let (find_reactions, questions) = top
         .get("find")
         .map(|v| r.find(v, constraint_values))
         .unwrap_or_default();
@@ -144,6 +144,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         closures,
         constraints,
         find_reactions,
+        questions,
         simulate,
     })
 }

@@ -6,14 +6,26 @@ use super::read::Reader;
 use serde_json::Value;
 
 impl Reader {
-    pub(super) fn find(&mut self, value: &Value, constraints: &[Value]) -> Vec<usize> {
+    /// Reads `find`: the reactions requested, then the questions asked.
+    pub(super) fn find(
+        &mut self,
+        value: &Value,
+        constraints: &[Value],
+    ) -> (Vec<usize>, Vec<super::questions::Question>) {
         let Some(fields) = object(value, "find", &mut self.diag) else {
-            return Vec::new();
+            return (Vec::new(), Vec::new());
         };
-        check_keys(fields, "find", &["reactions"], &mut self.diag);
-        let Some(items) = fields
-            .get("reactions")
-            .and_then(|v| json::array(v, "find.reactions", &mut self.diag))
+        check_keys(fields, "find", &["reactions", "questions"], &mut self.diag);
+        let reactions = self.find_reactions(fields.get("reactions"), constraints);
+        let questions = fields
+            .get("questions")
+            .map(|v| self.questions(v, &reactions, constraints))
+            .unwrap_or_default();
+        (reactions, questions)
+    }
+
+    fn find_reactions(&mut self, value: Option<&Value>, constraints: &[Value]) -> Vec<usize> {
+        let Some(items) = value.and_then(|v| json::array(v, "find.reactions", &mut self.diag))
         else {
             return Vec::new();
         };

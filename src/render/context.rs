@@ -73,6 +73,8 @@ pub struct Solution {
     pub simulation: Simulation,
     /// Small motions about a state (`explain --linearize`).
     pub linearization: Option<super::linearization::LinearizationSection>,
+    /// The answers to the problem's `find.questions` (blank in the student's handout).
+    pub answers: Vec<super::answers::AnswerView>,
 }
 
 /// One constraint row as step 1 shows it.

@@ -5,6 +5,7 @@
 //! one of the templates in `templates/`, which are embedded in the binary; an instructor
 //! can restyle a handout by passing a directory of replacements.
 
+pub mod answers;
 pub mod build;
 pub mod constrained;
 pub mod context;

@@ -63,6 +63,13 @@ pub fn sample() -> Solution {
         }],
         simulation: simulation(),
         linearization: None,
+        answers: vec![super::answers::AnswerView {
+            question: s("Find the angular acceleration of rod A at the instant of release."),
+            at_tex: s("t = 0\\ \\mathrm{s}"),
+            at_note: s("the initial state"),
+            values_tex: vec![s("\\ddot{q}_{1} = -12.0939\\ \\mathrm{rad}/\\mathrm{s}^{2}")],
+            note: String::new(),
+        }],
     }
 }
 

@@ -1,0 +1,309 @@
+//! The answers to a problem's `find.questions`: values at a state or at a time, reactions,
+//! and steady motions or equilibria.
+//!
+//! - At a state (`at.state`, others initial) at `at.time` (default 0): the state is
+//!   assembled (constraints) and the system evaluated there.
+//! - At a time alone: the motion is simulated from the initial state up to that time, with
+//!   the problem's tolerance, and the state reached is evaluated.
+//! - A steady motion: Newton's method (Gauss-Newton where there are more second derivatives
+//!   to make zero than unknowns) on the evaluated q'', with central-difference Jacobians and
+//!   a halving line search, from the state given as the guess. Which root it finds depends
+//!   on the guess: the slow and the fast precession of a top are two questions with two
+//!   guesses.
+
+use super::simulate::simulate;
+use super::system::System;
+use crate::problem::{Problem, ProblemError, Question, QuestionKind, SimulateSettings};
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::{Expr, Symbol};
+use nalgebra::{DMatrix, DVector};
+
+/// The most Newton iterations for a steady motion.
+const MAX_ITERATIONS: usize = 100;
+
+/// One question answered.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Answer {
+    /// What was found, each by name: `q1''`, the expression as written, `O.force.x`, or an
+    /// unknown of a steady motion (`psi'`); SI units (or the problem's).
+    pub values: Vec<(String, f64)>,
+    /// The time, seconds.
+    pub time: f64,
+    /// The state where the answer holds (for a steady motion, the one found).
+    pub q: Vec<f64>,
+    pub rates: Vec<f64>,
+    /// True when the state was reached by simulating from the initial state.
+    pub simulated: bool,
+    /// A steady motion: the largest |q''| of the `zero` coordinates left, and the
+    /// iterations taken.
+    pub residual: Option<(f64, usize)>,
+}
+
+/// Answers every question of `problem` with `system`, in order.
+///
+/// # Errors
+/// The first question that cannot be answered, with its JSON path and a hint.
+pub fn answer_all(problem: &Problem, system: &dyn System) -> Result<Vec<Answer>, ProblemError> {
+    problem
+        .questions
+        .iter()
+        .map(|q| answer(problem, system, q))
+        .collect()
+}
+
+fn failure(question: &Question, message: String, hint: &str) -> ProblemError {
+    ProblemError {
+        path: question.path.clone(),
+        column: None,
+        message,
+        hint: Some(hint.to_string()),
+    }
+}
+
+/// Answers one question.
+///
+/// # Errors
+/// A system that cannot be solved at the state, a simulation that stops before the time,
+/// or a steady motion that Newton's method does not find; each names the question's path.
+pub fn answer(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+) -> Result<Answer, ProblemError> {
+    let t = question.at.time.unwrap_or(0.0);
+    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let solve_failed = |e: super::SolveError| {
+        failure(
+            question,
+            format!("cannot answer: {e}"),
+            "ask at another state, or check the problem's initial state",
+        )
+    };
+    let simulated = question.at.state.is_none() && t > 0.0;
+    if let Some(state) = &question.at.state {
+        for (entry, value) in state {
+            let target = if entry.order == 0 { &mut q } else { &mut rates };
+            target[entry.coordinate] = *value;
+        }
+    }
+    if simulated {
+        let settings = SimulateSettings {
+            duration: t,
+            output_step: t,
+            tolerance: problem.simulate.tolerance,
+        };
+        let trajectory = simulate(system, &q, &rates, &settings).map_err(solve_failed)?;
+        if let Some(stopped) = trajectory.stopped {
+            return Err(failure(
+                question,
+                format!("the simulation stopped before t = {t}: {stopped}"),
+                "ask at an earlier time",
+            ));
+        }
+        let n = q.len();
+        let Some(last) = trajectory.rows.last().filter(|r| r[0] == t) else {
+            return Err(failure(
+                question,
+                format!("the simulation did not reach t = {t}"),
+                "ask at an earlier time",
+            ));
+        };
+        q.copy_from_slice(&last[1..=n]);
+        rates.copy_from_slice(&last[n + 1..=2 * n]);
+    }
+    let mut residual = None;
+    if let QuestionKind::Steady { unknowns, zero } = &question.kind {
+        let found = steady(problem, system, t, &mut q, &mut rates, unknowns, zero)
+            .map_err(|(message, hint)| failure(question, message, hint))?;
+        residual = Some(found);
+    }
+    system
+        .assemble(t, &mut q, &mut rates)
+        .map_err(solve_failed)?;
+    let evaluation = system.evaluate(t, &q, &rates).map_err(solve_failed)?;
+    let names = system.coordinate_names();
+    let values = match &question.kind {
+        QuestionKind::Value { expression, text } => {
+            let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
+            let x = eval(expression, &v);
+            if !x.is_finite() {
+                return Err(failure(
+                    question,
+                    format!("`{text}` is not finite at this state"),
+                    "ask at a state where the expression is defined",
+                ));
+            }
+            vec![(text.clone(), x)]
+        }
+        QuestionKind::Reaction { site } => {
+            let prefix = format!("{}.", problem.site_name(*site));
+            let planar = problem.dimension == crate::problem::Dimension::Two;
+            system
+                .reaction_columns()
+                .into_iter()
+                .zip(&evaluation.reactions)
+                .filter(|(column, _)| column.starts_with(&prefix))
+                .filter(|(column, _)| {
+                    !planar
+                        || column.ends_with("force.x")
+                        || column.ends_with("force.y")
+                        || column.ends_with("moment.z")
+                })
+                .map(|(column, &x)| (column, x))
+                .collect()
+        }
+        QuestionKind::Steady { unknowns, .. } => unknowns
+            .iter()
+            .map(|e| {
+                let name = &names[e.coordinate];
+                if e.order == 0 {
+                    (name.clone(), q[e.coordinate])
+                } else {
+                    (format!("{name}'"), rates[e.coordinate])
+                }
+            })
+            .collect(),
+    };
+    Ok(Answer {
+        values,
+        time: t,
+        q,
+        rates,
+        simulated,
+        residual,
+    })
+}
+
+type Failure = (String, &'static str);
+
+/// The values of the `zero` expressions at the state with `unknowns` set to `u`.
+fn residual(
+    problem: &Problem,
+    system: &dyn System,
+    t: f64,
+    (q, rates): (&[f64], &[f64]),
+    unknowns: &[crate::problem::StateEntry],
+    zero: &[(Expr, String)],
+    u: &DVector<f64>,
+) -> Option<DVector<f64>> {
+    let (mut q, mut rates) = (q.to_vec(), rates.to_vec());
+    for (e, &x) in unknowns.iter().zip(u.iter()) {
+        let target = if e.order == 0 { &mut q } else { &mut rates };
+        target[e.coordinate] = x;
+    }
+    system.assemble(t, &mut q, &mut rates).ok()?;
+    let a = system.accelerations(t, &q, &rates).ok()?;
+    let values = state_values(problem, t, &q, &rates, &a);
+    let r = DVector::from_iterator(zero.len(), zero.iter().map(|(e, _)| eval(e, &values)));
+    r.iter().all(|x| x.is_finite()).then_some(r)
+}
+
+/// The values of the constants, the coordinates, their rates and second rates, and `t`.
+fn state_values(problem: &Problem, t: f64, q: &[f64], rates: &[f64], a: &[f64]) -> Values {
+    let mut v = Values::new();
+    for c in &problem.constants {
+        v.set(Symbol::Const(c.name.as_str().into()), c.value);
+    }
+    for (i, c) in problem.coordinates.iter().enumerate() {
+        let s = |order| Symbol::Coord(c.name.as_str().into(), order);
+        v.set(s(0), q[i]);
+        v.set(s(1), rates[i]);
+        v.set(s(2), a[i]);
+    }
+    v.set(Symbol::Time, t);
+    v
+}
+
+/// Newton's method for the unknowns; on success `q` and `rates` hold the steady state.
+fn steady(
+    problem: &Problem,
+    system: &dyn System,
+    t: f64,
+    q: &mut [f64],
+    rates: &mut [f64],
+    unknowns: &[crate::problem::StateEntry],
+    zero: &[(Expr, String)],
+) -> Result<(f64, usize), Failure> {
+    let get = |q: &[f64], rates: &[f64], e: &crate::problem::StateEntry| {
+        if e.order == 0 {
+            q[e.coordinate]
+        } else {
+            rates[e.coordinate]
+        }
+    };
+    let mut u = DVector::from_iterator(unknowns.len(), unknowns.iter().map(|e| get(q, rates, e)));
+    let (q0, rates0) = (q.to_vec(), rates.to_vec());
+    let f = |u: &DVector<f64>| residual(problem, system, t, (&q0, &rates0), unknowns, zero, u);
+    let not_solvable = || {
+        (
+            "the equations cannot be solved at the starting guess".to_string(),
+            "start from another guess in `at.state`",
+        )
+    };
+    let mut r = f(&u).ok_or_else(not_solvable)?;
+    let scale = r.amax().max(1.0);
+    let tolerance = 1e-10 * scale;
+    let mut iterations = 0;
+    while r.amax() > tolerance {
+        if iterations == MAX_ITERATIONS {
+            return Err(no_root(r.amax(), iterations));
+        }
+        iterations += 1;
+        let mut jacobian = DMatrix::zeros(zero.len(), unknowns.len());
+        for k in 0..unknowns.len() {
+            let h = 1e-6 * u[k].abs().max(1.0);
+            let (mut up, mut down) = (u.clone(), u.clone());
+            up[k] += h;
+            down[k] -= h;
+            let (Some(rp), Some(rd)) = (f(&up), f(&down)) else {
+                return Err(not_solvable());
+            };
+            jacobian.set_column(k, &((rp - rd) / (2.0 * h)));
+        }
+        let step = jacobian
+            .svd(true, true)
+            .solve(&(-&r), 1e-14 * scale)
+            .map_err(|_| no_root(r.amax(), iterations))?;
+        // Halve the step until the residual decreases.
+        let mut lambda = 1.0;
+        let mut accepted = None;
+        for _ in 0..30 {
+            let trial = &u + &step * lambda;
+            if let Some(rt) = f(&trial) {
+                if rt.norm() < r.norm() {
+                    accepted = Some((trial, rt));
+                    break;
+                }
+            }
+            lambda /= 2.0;
+        }
+        let Some((next, rn)) = accepted else {
+            // No decrease: a root is reached to rounding, or there is none near.
+            if r.amax() <= 1e-7 * scale {
+                break;
+            }
+            return Err(no_root(r.amax(), iterations));
+        };
+        u = next;
+        r = rn;
+    }
+    for (e, &x) in unknowns.iter().zip(u.iter()) {
+        if e.order == 0 {
+            q[e.coordinate] = x;
+        } else {
+            rates[e.coordinate] = x;
+        }
+    }
+    Ok((r.amax(), iterations))
+}
+
+fn no_root(left: f64, iterations: usize) -> Failure {
+    (
+        format!(
+            "no steady motion found: after {iterations} Newton iterations the largest of the expressions to make zero is still {}",
+            super::format::fixed(left)
+        ),
+        "start nearer a solution in `at.state`, or check that the unknowns can make these second derivatives zero",
+    )
+}

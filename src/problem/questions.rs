@@ -1,0 +1,323 @@
+//! `find.questions`: what the student is asked, each answered in the handout's "Answers".
+//!
+//! A question asks for one of
+//! - `value`: any scalar expression of constants, coordinates, rates, second rates `q1''`
+//!   and `t` (a coordinate, a spring force, a kinetic energy);
+//! - `reaction`: the reaction at a joint (closure, rolling contact) listed in
+//!   `find.reactions`;
+//! - `steady`: the values of some coordinates and rates (`unknowns`) that make the
+//!   expressions in `zero` vanish (default: every second derivative `q1''`), the rest of the
+//!   state held: a steady motion or an equilibrium; `zero` may add conditions such as a
+//!   spin held, `"phi' + psi'*cos(theta) - 150"`,
+//!
+//! `at` a state (`state`, with `time`, default 0), or at a time reached by simulating from
+//! the initial state (`time` alone). Without `at`, the initial state at t = 0.
+
+use super::expressions::{self, Context};
+use super::json::{self, check_keys, index_path, key_path, number, object, string};
+use super::read::Reader;
+use crate::symbolic::Expr;
+use serde_json::{Map, Value};
+
+/// A coordinate's value (`order` 0) or rate (`order` 1), by index into
+/// [`Problem::coordinates`](super::Problem::coordinates).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StateEntry {
+    pub coordinate: usize,
+    pub order: u8,
+}
+
+/// What a question asks for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QuestionKind {
+    /// A scalar expression, with its text as written.
+    Value { expression: Expr, text: String },
+    /// A reaction, as a site index (see [`Problem::site_name`](super::Problem::site_name)).
+    Reaction { site: usize },
+    /// The `unknowns` that make the `zero` expressions vanish (default: every q''), each
+    /// with its text.
+    Steady {
+        unknowns: Vec<StateEntry>,
+        zero: Vec<(Expr, String)>,
+    },
+}
+
+/// Where a question is asked.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct QuestionAt {
+    /// Seconds; `None` is t = 0.
+    pub time: Option<f64>,
+    /// Values given; the others are the initial ones. `None`: no `state` key, so a `time`
+    /// is reached by simulating from the initial state.
+    pub state: Option<Vec<(StateEntry, f64)>>,
+}
+
+/// One entry of `find.questions`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Question {
+    /// The question as worded for the student (user text), if given.
+    pub text: Option<String>,
+    pub kind: QuestionKind,
+    pub at: QuestionAt,
+    /// The unit of a `value` (user text), if given.
+    pub unit: Option<String>,
+    /// The JSON path, e.g. `find.questions[0]`.
+    pub path: String,
+}
+
+const KEYS: [&str; 6] = ["text", "value", "reaction", "steady", "at", "unit"];
+
+impl Reader {
+    /// Reads `find.questions`; `reactions` are the sites `find.reactions` requested.
+    pub(super) fn questions(
+        &mut self,
+        value: &Value,
+        reactions: &[usize],
+        constraints: &[Value],
+    ) -> Vec<Question> {
+        let Some(items) = json::array(value, "find.questions", &mut self.diag) else {
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for (i, item) in items.iter().enumerate() {
+            let path = index_path("find.questions", i);
+            if let Some(q) = self.question(item, &path, reactions, constraints) {
+                out.push(q);
+            }
+        }
+        out
+    }
+
+    fn question(
+        &mut self,
+        value: &Value,
+        path: &str,
+        reactions: &[usize],
+        constraints: &[Value],
+    ) -> Option<Question> {
+        let fields = object(value, path, &mut self.diag)?;
+        check_keys(fields, path, &KEYS, &mut self.diag);
+        let text = fields
+            .get("text")
+            .and_then(|v| string(v, &key_path(path, "text"), &mut self.diag))
+            .map(str::to_string);
+        let unit = fields
+            .get("unit")
+            .and_then(|v| string(v, &key_path(path, "unit"), &mut self.diag))
+            .map(str::to_string);
+        let asked: Vec<&str> = ["value", "reaction", "steady"]
+            .into_iter()
+            .filter(|k| fields.contains_key(*k))
+            .collect();
+        if asked.len() != 1 {
+            let message = if asked.is_empty() {
+                "the question asks for nothing".to_string()
+            } else {
+                format!("the question asks for {} at once", json::list(&asked))
+            };
+            self.diag.hint(
+                path,
+                message,
+                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions) or `steady`",
+            );
+            return None;
+        }
+        let at = match fields.get("at") {
+            Some(v) => self.question_at(v, &key_path(path, "at"))?,
+            None => QuestionAt::default(),
+        };
+        let kind = match asked[0] {
+            "value" => {
+                let vpath = key_path(path, "value");
+                let v = &fields["value"];
+                let expression = expressions::scalar(
+                    v,
+                    &vpath,
+                    &self.names,
+                    Context::question("a question's value"),
+                    &mut self.diag,
+                )?;
+                let text = match v {
+                    Value::String(s) => s.trim().to_string(),
+                    other => other.to_string(),
+                };
+                QuestionKind::Value { expression, text }
+            }
+            "reaction" => {
+                let rpath = key_path(path, "reaction");
+                let site = self.site_ref(&fields["reaction"], &rpath, constraints)?;
+                if !reactions.contains(&site) {
+                    let name = fields["reaction"].as_str().unwrap_or("").trim();
+                    self.diag.hint(
+                        &rpath,
+                        format!("the reaction at `{name}` is not solved for"),
+                        format!("add \"{name}\" to find.reactions"),
+                    );
+                    return None;
+                }
+                QuestionKind::Reaction { site }
+            }
+            _ => self.steady(&fields["steady"], &key_path(path, "steady"))?,
+        };
+        if matches!(kind, QuestionKind::Steady { .. })
+            && at.state.is_none()
+            && at.time.is_some_and(|t| t != 0.0)
+        {
+            self.diag.hint(
+                &key_path(path, "at"),
+                "a steady motion is sought at a state, not after a simulation",
+                "give `at.state` (the starting guess and the values held); `time` then only sets t",
+            );
+            return None;
+        }
+        Some(Question {
+            text,
+            kind,
+            at,
+            unit,
+            path: path.to_string(),
+        })
+    }
+
+    fn question_at(&mut self, value: &Value, path: &str) -> Option<QuestionAt> {
+        let fields = object(value, path, &mut self.diag)?;
+        check_keys(fields, path, &["time", "state"], &mut self.diag);
+        let mut at = QuestionAt::default();
+        if let Some(v) = fields.get("time") {
+            let tpath = key_path(path, "time");
+            let t = number(v, &tpath, &mut self.diag)?;
+            if t < 0.0 {
+                self.diag.hint(
+                    &tpath,
+                    format!("the time {} is negative", crate::numeric::format::fixed(t)),
+                    "simulations start at t = 0; give a time of 0 or more",
+                );
+                return None;
+            }
+            at.time = Some(t);
+        }
+        if let Some(v) = fields.get("state") {
+            let spath = key_path(path, "state");
+            let entries = object(v, &spath, &mut self.diag)?;
+            at.state = Some(self.state_entries(entries, &spath)?);
+        }
+        Some(at)
+    }
+
+    fn state_entries(
+        &mut self,
+        entries: &Map<String, Value>,
+        path: &str,
+    ) -> Option<Vec<(StateEntry, f64)>> {
+        let mut out = Vec::new();
+        let mut ok = true;
+        for (name, v) in entries {
+            let epath = key_path(path, name);
+            let entry = self.state_name(name, &epath);
+            let value = number(v, &epath, &mut self.diag);
+            match (entry, value) {
+                (Some(e), Some(x)) => out.push((e, x)),
+                _ => ok = false,
+            }
+        }
+        ok.then_some(out)
+    }
+
+    /// `q1` or `q1'`, as a coordinate or its rate.
+    fn state_name(&mut self, name: &str, path: &str) -> Option<StateEntry> {
+        let trimmed = name.trim();
+        let (base, order) = match trimmed.strip_suffix('\'') {
+            Some(base) => (base, 1),
+            None => (trimmed, 0),
+        };
+        match self.names.coordinate(base) {
+            Some(coordinate) if !base.ends_with('\'') => Some(StateEntry { coordinate, order }),
+            _ => {
+                let known: Vec<&str> = self.names.coordinates.iter().map(String::as_str).collect();
+                self.diag.hint(
+                    path,
+                    format!("`{trimmed}` is not a coordinate or a rate"),
+                    format!(
+                        "name a coordinate (`q1`) or its rate (`q1'`); {}",
+                        super::names::suggest(base, &known, "coordinates")
+                    ),
+                );
+                None
+            }
+        }
+    }
+
+    fn steady(&mut self, value: &Value, path: &str) -> Option<QuestionKind> {
+        let fields = object(value, path, &mut self.diag)?;
+        check_keys(fields, path, &["unknowns", "zero"], &mut self.diag);
+        let upath = key_path(path, "unknowns");
+        let Some(list) = fields.get("unknowns") else {
+            self.diag.hint(
+                &upath,
+                "`unknowns` is required",
+                "name the coordinates or rates to solve for, e.g. [\"psi'\"] for a precession rate or [\"q1\"] for an equilibrium angle",
+            );
+            return None;
+        };
+        let items = json::array(list, &upath, &mut self.diag)?;
+        let mut unknowns = Vec::new();
+        for (i, item) in items.iter().enumerate() {
+            let ipath = index_path(&upath, i);
+            let name = string(item, &ipath, &mut self.diag)?;
+            let entry = self.state_name(name, &ipath)?;
+            if unknowns.contains(&entry) {
+                self.diag
+                    .error(&ipath, format!("`{}` is listed twice", name.trim()));
+                return None;
+            }
+            unknowns.push(entry);
+        }
+        if unknowns.is_empty() {
+            self.diag.hint(
+                &upath,
+                "no unknowns",
+                "name at least one coordinate or rate to solve for",
+            );
+            return None;
+        }
+        let zpath = key_path(path, "zero");
+        let zero = match fields.get("zero") {
+            None => (0..self.names.coordinates.len())
+                .map(|i| {
+                    let name = &self.names.coordinates[i];
+                    (Expr::coord(name, 2), format!("{name}''"))
+                })
+                .collect(),
+            Some(list) => {
+                let items = json::array(list, &zpath, &mut self.diag)?;
+                let mut zero = Vec::new();
+                for (i, item) in items.iter().enumerate() {
+                    let ipath = index_path(&zpath, i);
+                    let e = expressions::scalar(
+                        item,
+                        &ipath,
+                        &self.names,
+                        Context::question("an expression to make zero"),
+                        &mut self.diag,
+                    )?;
+                    let text = item.as_str().map(str::trim).unwrap_or("").to_string();
+                    zero.push((e, text));
+                }
+                zero
+            }
+        };
+        if zero.len() < unknowns.len() {
+            self.diag.hint(
+                path,
+                format!(
+                    "{} unknowns but only {} expressions to make zero",
+                    unknowns.len(),
+                    zero.len()
+                ),
+                "name no more unknowns than expressions in `zero`",
+            );
+            return None;
+        }
+        Some(QuestionKind::Steady { unknowns, zero })
+    }
+}

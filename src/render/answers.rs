@@ -1,0 +1,252 @@
+//! The handout's "Answers": each question of `find.questions` restated, then answered with
+//! its units (the numbers come from [`crate::numeric::answers`]). The student's handout
+//! restates the questions and leaves the answers blank.
+
+use crate::numeric::answers::Answer;
+use crate::numeric::format::fixed;
+use crate::problem::{CoordinateKind, Problem, Question, QuestionAt, QuestionKind, StateEntry};
+use crate::symbolic::print::{latex, latex_unit_vector};
+use serde::Serialize;
+
+/// One question and its answer, as the templates show it.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct AnswerView {
+    /// The question as worded (user text), or one made from what it asks.
+    pub question: String,
+    /// Where it is asked: `t = 2 \text{ s}, ...` (LaTeX math).
+    pub at_tex: String,
+    /// How the state was reached, in words: "the initial state", "simulated from the initial state".
+    pub at_note: String,
+    /// Each value found, `name = value unit` (LaTeX math); empty in the student's handout.
+    pub values_tex: Vec<String>,
+    /// A steady motion: the second derivatives left and the iterations (plain text).
+    pub note: String,
+}
+
+/// The questions with their answers, in order.
+pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
+    problem
+        .questions
+        .iter()
+        .zip(answers)
+        .map(|(question, answer)| {
+            let mut view = blank_one(problem, question);
+            view.values_tex = answer
+                .values
+                .iter()
+                .map(|(name, value)| value_tex(problem, question, name, *value))
+                .collect();
+            if let Some((left, iterations)) = answer.residual {
+                let plural = if iterations == 1 { "" } else { "s" };
+                view.note = format!(
+                    "Newton's method: {iterations} iteration{plural}; the conditions hold to {}.",
+                    fixed(left)
+                );
+            }
+            view
+        })
+        .collect()
+}
+
+/// The questions without answers, for the student's handout.
+pub fn blank(problem: &Problem) -> Vec<AnswerView> {
+    problem
+        .questions
+        .iter()
+        .map(|q| blank_one(problem, q))
+        .collect()
+}
+
+fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
+    let (at_tex, at_note) = at(problem, question);
+    AnswerView {
+        question: question
+            .text
+            .clone()
+            .unwrap_or_else(|| asked(problem, question)),
+        at_tex,
+        at_note,
+        values_tex: Vec::new(),
+        note: String::new(),
+    }
+}
+
+fn entry_name(problem: &Problem, e: &StateEntry) -> String {
+    let name = &problem.coordinates[e.coordinate].name;
+    if e.order == 0 {
+        name.clone()
+    } else {
+        format!("{name}'")
+    }
+}
+
+/// The question made from what it asks, when it has no `text`.
+fn asked(problem: &Problem, question: &Question) -> String {
+    match &question.kind {
+        QuestionKind::Value { text, .. } => format!("Find {text}."),
+        QuestionKind::Reaction { site } => {
+            format!("Find the reaction at {}.", problem.site_name(*site))
+        }
+        QuestionKind::Steady { unknowns, zero } => {
+            let unknowns: Vec<String> = unknowns.iter().map(|e| entry_name(problem, e)).collect();
+            let zero: Vec<&str> = zero.iter().map(|(_, text)| text.as_str()).collect();
+            format!(
+                "Find {} for a steady motion: {} = 0.",
+                unknowns.join(", "),
+                zero.join(" = ")
+            )
+        }
+    }
+}
+
+fn at(problem: &Problem, question: &Question) -> (String, String) {
+    let QuestionAt { time, state } = &question.at;
+    let t = time.unwrap_or(0.0);
+    let time_tex = format!("t = {}\\ \\mathrm{{s}}", fixed(t));
+    match state {
+        None if t > 0.0 => (time_tex, "simulated from the initial state".into()),
+        None => (time_tex, "the initial state".into()),
+        Some(entries) => {
+            let mut parts = vec![time_tex];
+            for (e, value) in entries {
+                let symbol = latex(&problem.coordinate_expr(e.coordinate, e.order));
+                parts.push(format!("{symbol} = {}", number_tex(*value)));
+            }
+            let note = if matches!(question.kind, QuestionKind::Steady { .. }) {
+                "starting guess; the other values held at the initial ones"
+            } else {
+                "the other values initial"
+            };
+            (parts.join(",\\ "), note.into())
+        }
+    }
+}
+
+fn number_tex(x: f64) -> String {
+    let text = fixed(x);
+    match text.split_once('e') {
+        Some((mantissa, exponent)) => format!(
+            "{mantissa} \\times 10^{{{}}}",
+            exponent.trim_start_matches('+')
+        ),
+        None => text,
+    }
+}
+
+/// The unit of coordinate `i` differentiated `order` times.
+fn coordinate_unit(problem: &Problem, i: usize, order: u8) -> String {
+    let c = &problem.coordinates[i];
+    let base = match (&c.unit, c.kind) {
+        (Some(unit), _) => unit.clone(),
+        (None, CoordinateKind::Angle) => "rad".into(),
+        (None, CoordinateKind::Distance) => "m".into(),
+    };
+    match order {
+        0 => base,
+        1 => format!("{base}/s"),
+        _ => format!("{base}/s^2"),
+    }
+}
+
+/// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
+fn unit_tex(unit: &str) -> String {
+    let tokens: Vec<String> = unit
+        .split_whitespace()
+        .map(|token| {
+            let clean: String = token
+                .chars()
+                .filter(|c| c.is_alphanumeric() || "^/.*-()".contains(*c))
+                .collect();
+            // `s^2` and `m/s^2`: the exponent raised, each part upright.
+            let parts: Vec<String> = clean
+                .split('^')
+                .enumerate()
+                .map(
+                    |(i, part)| match (i, part.find(|c: char| !c.is_ascii_digit() && c != '-')) {
+                        (0, _) => format!("\\mathrm{{{part}}}"),
+                        (_, Some(k)) => format!("{{{}}}\\mathrm{{{}}}", &part[..k], &part[k..]),
+                        (_, None) => format!("{{{part}}}"),
+                    },
+                )
+                .collect();
+            parts.join("^")
+        })
+        .filter(|t| !t.is_empty())
+        .collect();
+    if tokens.is_empty() {
+        String::new()
+    } else {
+        format!("\\ {}", tokens.join("\\,"))
+    }
+}
+
+fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> String {
+    let given = question.unit.clone();
+    let (symbol, unit) = match &question.kind {
+        QuestionKind::Value { expression, .. } => {
+            let unit = given.or_else(|| {
+                problem.coordinates.iter().enumerate().find_map(|(i, _)| {
+                    (0..3u8).find_map(|order| {
+                        (*expression == problem.coordinate_expr(i, order))
+                            .then(|| coordinate_unit(problem, i, order))
+                    })
+                })
+            });
+            (latex(expression), unit.unwrap_or_default())
+        }
+        QuestionKind::Reaction { site } => {
+            // `O.force.x`: the component along the parent's unit vector.
+            let mut parts = name.rsplitn(3, '.');
+            let axis = parts.next().unwrap_or("x");
+            let kind = parts.next().unwrap_or("force");
+            let parent = reaction_parent(problem, *site);
+            let axis_index = match axis {
+                "x" => 0,
+                "y" => 1,
+                _ => 2,
+            };
+            let (letter, unit) = if kind == "force" {
+                ("F", "N")
+            } else {
+                ("M", "N m")
+            };
+            (
+                format!(
+                    "\\mathbf{{{letter}}}^{{\\mathrm{{{}}}}} \\cdot {}",
+                    problem.site_name(*site).replace('_', "\\_"),
+                    latex_unit_vector(&parent, axis_index)
+                ),
+                unit.to_string(),
+            )
+        }
+        QuestionKind::Steady { unknowns, .. } => {
+            let entry = unknowns
+                .iter()
+                .find(|e| entry_name(problem, e) == name)
+                .copied()
+                .unwrap_or(StateEntry {
+                    coordinate: 0,
+                    order: 0,
+                });
+            (
+                latex(&problem.coordinate_expr(entry.coordinate, entry.order)),
+                coordinate_unit(problem, entry.coordinate, entry.order),
+            )
+        }
+    };
+    format!("{symbol} = {}{}", number_tex(value), unit_tex(&unit))
+}
+
+/// The name of the body whose unit vectors a site's reaction is written in.
+fn reaction_parent(problem: &Problem, site: usize) -> String {
+    let (j, c) = (problem.joints.len(), problem.closures.len());
+    if site < j {
+        problem.body_name(problem.joints[site].parent).to_string()
+    } else if site < j + c {
+        problem
+            .body_name(problem.closures[site - j].parent)
+            .to_string()
+    } else {
+        "N".into()
+    }
+}
