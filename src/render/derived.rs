@@ -13,6 +13,7 @@ use crate::numeric::format::fixed;
 use crate::numeric::system::System;
 use crate::plan::forces::{ActionKind, Category};
 use crate::problem::{BodyId, Problem};
+use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::{as_shown, named_definitions};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
@@ -31,18 +32,34 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
         super::constrained::constraints(&derivation);
     solution.force_definitions = force_definitions(&derivation);
     solution.plan = plan(&derivation);
-    solution.kinematics = kinematics(model);
-    solution.equations = derivation
-        .rows
+    // Steps 4 and 5 write sines and cosines of the coordinates as s_1, c_12, listed once.
+    let names: Vec<&str> = problem
+        .coordinates
         .iter()
-        .map(|row| equation_view(&derivation, row))
+        .map(|c| c.name.as_str())
         .collect();
-    // The matrix is listed entry by entry whenever an equation refers to its entries.
-    let by_name = solution
-        .equations
-        .iter()
-        .any(|e| !e.simplified_note.is_empty());
-    solution.matrix = matrix(&derivation, by_name);
+    let style = crate::symbolic::style::Style::default().with_coordinates(&names);
+    let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
+        solution.kinematics = kinematics(model);
+        solution.equations = derivation
+            .rows
+            .iter()
+            .map(|row| equation_view(&derivation, row))
+            .collect();
+        // The matrix is listed entry by entry whenever an equation refers to its entries.
+        let by_name = solution
+            .equations
+            .iter()
+            .any(|e| !e.simplified_note.is_empty());
+        solution.matrix = matrix(&derivation, by_name);
+    });
+    solution.abbreviations = abbreviations
+        .into_iter()
+        .map(|a| Named {
+            definition_tex: format!("{} = {}", a.name, a.value),
+            note: String::new(),
+        })
+        .collect();
     let solver = crate::pipeline::Solver::new(problem, &derivation);
     let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
@@ -409,7 +426,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         .map(|d| format!(" along {}", d.name))
         .unwrap_or_default();
     let mut grouped_tex = format!("{grouped} = 0");
-    let mut simplified_tex = format!("{} = 0", latex(&shown(&simplify(&row.expression))));
+    let mut simplified_tex = format!(
+        "{} = 0",
+        latex_collected(&shown(&simplify(&row.expression)))
+    );
     let mut simplified_note = String::new();
     if simplified_tex.len() > LONG_EQUATION {
         // Too long to read: the same row with the coefficients of the matrix form by name.

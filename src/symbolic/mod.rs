@@ -2,6 +2,7 @@
 //! and compilation to a flat numeric program.
 
 pub mod build;
+pub mod collect;
 pub mod compile;
 pub mod diff;
 pub mod eval;
@@ -16,6 +17,7 @@ pub mod parse;
 pub mod print;
 mod schedule;
 pub mod simplify;
+pub mod style;
 pub mod subst;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
