@@ -247,3 +247,30 @@ fn the_double_pendulum_reads_as_a_textbook_writes_it() {
     // Step 1 still writes the functions out.
     assert!(markdown[..step4].contains("\\cos") || !markdown[..step4].contains("c_{1}"));
 }
+
+#[test]
+fn the_rolling_coin_has_no_root_of_a_square() {
+    let markdown = explain("rolling-coin", "markdown");
+    // √(cos²θ) = cos θ while the coin stands (cos θ > 0 at the start), as a 1-D spring's
+    // |a + x| is shown as a + x; and (sin²φ + cos²φ)² = 1 inside the constraints.
+    assert!(!markdown.contains("\\sqrt"), "a square root is left");
+    assert!(markdown.contains("| floor.Fz | position | $z - R \\cos(\\theta) = 0$ |"));
+    // The velocity constraint along N.x, by hand, ẋ = R c_ψ (φ̇ + ψ̇ s_θ) + R θ̇ s_ψ c_θ,
+    // differentiated in time:
+    let expected = "-R c_{\\psi} \\ddot{\\phi} - R s_{\\theta} c_{\\psi} \\ddot{\\psi} - R s_{\\psi} c_{\\theta} \\ddot{\\theta} + \\ddot{x} + R s_{\\psi} s_{\\theta} \\dot{\\psi}^{2} + R s_{\\psi} s_{\\theta} \\dot{\\theta}^{2} + R s_{\\psi} \\dot{\\phi} \\dot{\\psi} - 2 R c_{\\psi} c_{\\theta} \\dot{\\psi} \\dot{\\theta}";
+    assert!(simplified_equations(&markdown)
+        .iter()
+        .any(|e| e == expected));
+}
+
+#[test]
+fn decimals_the_problem_writes_stay_decimals() {
+    let markdown = explain("floating-plate-springs", "markdown");
+    // The anchor A1 is written `-0.4*N.x + 1.0*N.y`, the corner C1 `-w/2*plate.x +
+    // h/2*plate.y`: by hand Δ1x = x - (w/2) cos θ - (h/2) sin θ + 0.4, the 0.4 as written
+    // and the halves as fractions, as written.
+    assert!(markdown.contains(
+        "- $\\Delta_{1x} = 0.4 + x - \\frac{h \\sin(\\theta)}{2} - \\frac{w \\cos(\\theta)}{2}$"
+    ));
+    assert!(!markdown.contains("\\frac{2}{5}"));
+}

@@ -282,6 +282,9 @@ pub struct Problem {
     /// Reactions requested, as site indices (see [`Problem::site_name`]).
     pub find_reactions: Vec<usize>,
     pub simulate: SimulateSettings,
+    /// The fractions the expressions write as decimals, with the decimal (`2/5`, `0.4`):
+    /// the worked solution prints them as written; the arithmetic stays exact.
+    pub decimals: Vec<(crate::symbolic::Number, String)>,
 }
 
 /// Where a disc's centre is on its body.

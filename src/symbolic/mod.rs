@@ -15,6 +15,7 @@ pub mod named;
 pub mod number;
 pub mod parse;
 pub mod print;
+pub mod roots;
 mod schedule;
 pub mod simplify;
 pub mod style;

@@ -156,6 +156,70 @@ pub(crate) fn decimal(n: i64, d: i64) -> Option<String> {
     })
 }
 
+/// The decimal literals of an expression's text that are not whole numbers, each with
+/// its value and its text as a plain decimal (`2.0e-3 → (1/500, "0.002")`).
+pub fn decimal_literals(text: &str) -> Vec<(Number, String)> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let starts = chars[i].is_ascii_digit()
+            || (chars[i] == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit));
+        // Digits that end a name (`q1`, `L_2`) are part of it.
+        let in_name = i > 0 && (chars[i - 1].is_ascii_alphanumeric() || chars[i - 1] == '_');
+        if !starts || in_name {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+            i += 1;
+        }
+        if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
+            let mut j = i + 1;
+            if j < chars.len() && (chars[j] == '+' || chars[j] == '-') {
+                j += 1;
+            }
+            if j < chars.len() && chars[j].is_ascii_digit() {
+                i = j;
+                while i < chars.len() && chars[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+        }
+        let literal: String = chars[start..i].iter().collect();
+        if !literal.contains(['.', 'e', 'E']) {
+            continue;
+        }
+        if let Some(Number::Ratio(n, d)) = Number::parse_decimal(&literal) {
+            if let Some(text) = plain_decimal(n, d) {
+                out.push((Number::Ratio(n, d), text));
+            }
+        }
+    }
+    out
+}
+
+/// `n/d` as a plain decimal when `d > 1` is a divisor of a power of ten (`1/500 → 0.002`).
+fn plain_decimal(n: i64, d: i64) -> Option<String> {
+    if d <= 1 {
+        return None;
+    }
+    let mut places = 0usize;
+    let mut scale: i128 = 1;
+    while scale % d as i128 != 0 {
+        scale *= 10;
+        places += 1;
+        if places > 18 {
+            return None;
+        }
+    }
+    let digits = (n.unsigned_abs() as i128 * (scale / d as i128)).to_string();
+    let digits = format!("{digits:0>width$}", width = places + 1);
+    let (whole, fraction) = digits.split_at(digits.len() - places);
+    Some(format!("{whole}.{fraction}"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -209,6 +273,15 @@ mod tests {
                 "\\sin\\left(2 \\theta\\right)"
             ]
         );
+    }
+
+    #[test]
+    fn decimal_literals_are_found_in_an_expression() {
+        let found: Vec<String> = decimal_literals("-0.4*N.x + 1.0*N.y + q1*2.0e-3 + x2/4 + .25")
+            .into_iter()
+            .map(|(n, t)| format!("{n} {t}"))
+            .collect();
+        assert_eq!(found, ["2/5 0.4", "1/500 0.002", "1/4 0.25"]);
     }
 
     #[test]
