@@ -90,6 +90,7 @@ pub fn planar_chain(n: usize) -> Problem {
         loads: vec![],
         find_reactions: vec![],
         simulate: SimulateSettings::default(),
+        decimals: vec![],
     }
 }
 
