@@ -107,6 +107,9 @@ pub(crate) fn higher_powers(e: &Expr) -> Option<Expr> {
             }
         }
     }
+    if args.is_empty() {
+        return None;
+    }
     let mut best: Option<Expr> = None;
     let mut best_count = e.operation_count();
     for x in &args {
