@@ -162,10 +162,11 @@ fn the_plate_on_two_springs_accelerates_as_a_hand_calculation_says() {
 #[test]
 fn a_wall_spring_reads_as_minus_k_x() {
     let equations = simplified_equations(&explain("two-mass-spring-damper", "markdown"));
-    // Cart A by hand: m1 x1'' = -k1 x1 - c1 x1' + k2 (x2 - x1) + c2 (x2' - x1').
+    // Cart A by hand: m1 x1'' = -k1 x1 - c1 x1' + k2 (x2 - x1) + c2 (x2' - x1'), collected
+    // by x1'', then the rates, then the coordinates.
     assert_eq!(
         equations[0],
-        "-c_{1} \\dot{x}_{1} - c_{2} \\dot{x}_{1} + c_{2} \\dot{x}_{2} - k_{1} x_{1} - k_{2} x_{1} + k_{2} x_{2} - m_{1} \\ddot{x}_{1}"
+        "-m_{1} \\ddot{x}_{1} - \\left(c_{1} + c_{2}\\right) \\dot{x}_{1} + c_{2} \\dot{x}_{2} - \\left(k_{1} + k_{2}\\right) x_{1} + k_{2} x_{2}"
     );
 }
 
@@ -184,7 +185,10 @@ fn indices_are_sorted_as_a_reader_counts() {
     assert!(markdown.contains(
         "$b_{1} = B_{1,1} \\, \\dot{q}_{1}^{2} + B_{1,2} \\, \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2} + "
     ));
-    assert!(markdown.contains("$B_{1,1} = \\frac{17 L^{2} m \\sin(q_{2})}{2}"));
+    // s_{23} = sin(q2 + q3), ...: the sines of sums of coordinates by their indices.
+    assert!(markdown
+        .contains("$B_{1,1} = \\frac{17 L^{2} m s_{2}}{2} + \\frac{15 L^{2} m s_{23}}{2} + "));
+    assert!(markdown.contains("$s_{23} = \\sin\\left(q_{2} + q_{3}\\right)$"));
 }
 
 #[test]
@@ -219,4 +223,54 @@ fn a_long_equation_is_shown_with_the_matrix_entries_by_name() {
     let tex = explain("five-link-chain", "latex");
     let longest = tex.lines().map(str::len).max().unwrap_or(0);
     assert!(longest < 2_500, "a line of {longest} characters");
+}
+
+#[test]
+fn the_double_pendulum_reads_as_a_textbook_writes_it() {
+    let markdown = explain("double-pendulum-rods", "markdown");
+    let equations = simplified_equations(&markdown);
+    // Rod B about P, by hand: -(m2 L2²/3)(q1'' + q2'') - m2 (L2/2) L1 (q1'' c2 + q1'² s2)
+    // - m2 g (L2/2) s12 = 0, collected by q1'', q2'', then the rates, the common factor
+    // -L2 m2 of q1'''s coefficient pulled out, sines and cosines by their abbreviations.
+    assert_eq!(
+        equations[2],
+        "-L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} c_{2}}{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} - \\frac{L_{2} g m_{2}}{2} s_{12}"
+    );
+    // Gravity on both rods along a_y: -(m1 + m2) g c1, the masses collected.
+    assert!(equations[0].ends_with("- g \\left(m_{1} + m_{2}\\right) c_{1}"));
+    // The abbreviations are defined once, at the start of step 4, in the order of the
+    // coordinates, the sums last.
+    let line = "Abbreviations: $s_{1} = \\sin(q_{1})$, $c_{1} = \\cos(q_{1})$, $s_{2} = \\sin(q_{2})$, $c_{2} = \\cos(q_{2})$, $s_{12} = \\sin\\left(q_{1} + q_{2}\\right)$.";
+    assert_eq!(markdown.matches(line).count(), 1);
+    let step4 = markdown.find("## Step 4").expect("step 4");
+    assert!(markdown.find(line).is_some_and(|i| i > step4));
+    // Step 1 still writes the functions out.
+    assert!(markdown[..step4].contains("\\cos") || !markdown[..step4].contains("c_{1}"));
+}
+
+#[test]
+fn the_rolling_coin_has_no_root_of_a_square() {
+    let markdown = explain("rolling-coin", "markdown");
+    // √(cos²θ) = cos θ while the coin stands (cos θ > 0 at the start), as a 1-D spring's
+    // |a + x| is shown as a + x; and (sin²φ + cos²φ)² = 1 inside the constraints.
+    assert!(!markdown.contains("\\sqrt"), "a square root is left");
+    assert!(markdown.contains("| floor.Fz | position | $z - R \\cos(\\theta) = 0$ |"));
+    // The velocity constraint along N.x, by hand, ẋ = R c_ψ (φ̇ + ψ̇ s_θ) + R θ̇ s_ψ c_θ,
+    // differentiated in time:
+    let expected = "-R c_{\\psi} \\ddot{\\phi} - R s_{\\theta} c_{\\psi} \\ddot{\\psi} - R s_{\\psi} c_{\\theta} \\ddot{\\theta} + \\ddot{x} + R s_{\\psi} s_{\\theta} \\dot{\\psi}^{2} + R s_{\\psi} s_{\\theta} \\dot{\\theta}^{2} + R s_{\\psi} \\dot{\\phi} \\dot{\\psi} - 2 R c_{\\psi} c_{\\theta} \\dot{\\psi} \\dot{\\theta}";
+    assert!(simplified_equations(&markdown)
+        .iter()
+        .any(|e| e == expected));
+}
+
+#[test]
+fn decimals_the_problem_writes_stay_decimals() {
+    let markdown = explain("floating-plate-springs", "markdown");
+    // The anchor A1 is written `-0.4*N.x + 1.0*N.y`, the corner C1 `-w/2*plate.x +
+    // h/2*plate.y`: by hand Δ1x = x - (w/2) cos θ - (h/2) sin θ + 0.4, the 0.4 as written
+    // and the halves as fractions, as written.
+    assert!(markdown.contains(
+        "- $\\Delta_{1x} = 0.4 + x - \\frac{h \\sin(\\theta)}{2} - \\frac{w \\cos(\\theta)}{2}$"
+    ));
+    assert!(!markdown.contains("\\frac{2}{5}"));
 }

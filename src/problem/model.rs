@@ -284,6 +284,9 @@ pub struct Problem {
     /// The questions of `find.questions`, answered in the handout's "Answers".
     pub questions: Vec<super::questions::Question>,
     pub simulate: SimulateSettings,
+    /// The fractions the expressions write as decimals, with the decimal (`2/5`, `0.4`):
+    /// the worked solution prints them as written; the arithmetic stays exact.
+    pub decimals: Vec<(crate::symbolic::Number, String)>,
 }
 
 /// Where a disc's centre is on its body.

@@ -146,7 +146,37 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         find_reactions,
         questions,
         simulate,
+        decimals: decimals_written(root),
     })
+}
+
+/// The fractions the problem's expressions write as decimals (`0.4`, `2.0e-3`), each once,
+/// so that the worked solution prints them so; the statement and the descriptions are
+/// prose, not expressions.
+fn decimals_written(value: &Value) -> Vec<(crate::symbolic::Number, String)> {
+    const PROSE: [&str; 5] = ["title", "statement", "description", "unit", "note"];
+    let mut out = Vec::new();
+    let mut walk = vec![value];
+    while let Some(v) = walk.pop() {
+        match v {
+            Value::String(text) => {
+                for found in crate::symbolic::style::decimal_literals(text) {
+                    if !out.contains(&found) {
+                        out.push(found);
+                    }
+                }
+            }
+            Value::Array(items) => walk.extend(items.iter().rev()),
+            Value::Object(map) => walk.extend(
+                map.iter()
+                    .filter(|(k, _)| !PROSE.contains(&k.as_str()))
+                    .map(|(_, v)| v)
+                    .rev(),
+            ),
+            _ => {}
+        }
+    }
+    out
 }
 
 impl Reader {

@@ -17,12 +17,27 @@ use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 /// When the equations cannot be derived or solved at the initial state.
 pub fn solution(problem: &Problem, method: Method) -> Result<Solution, crate::Error> {
     let mut solution = setup(problem, method);
-    super::derived::fill(&mut solution, problem, method)?;
+    let (filled, _) = crate::symbolic::style::with_style(style_of(problem), || {
+        super::derived::fill(&mut solution, problem, method)
+    });
+    filled?;
     Ok(solution)
+}
+
+/// How the worked solution of `problem` prints numbers: the decimals it wrote as decimals.
+pub fn style_of(problem: &Problem) -> crate::symbolic::style::Style {
+    problem.decimals.iter().fold(
+        crate::symbolic::style::Style::default(),
+        |style, (n, text)| style.with_decimal(*n, text),
+    )
 }
 
 /// What the problem alone gives: title, statement and step 1 (also the student's handout).
 pub fn setup(problem: &Problem, method: Method) -> Solution {
+    crate::symbolic::style::with_style(style_of(problem), || setup_styled(problem, method)).0
+}
+
+fn setup_styled(problem: &Problem, method: Method) -> Solution {
     Solution {
         title: problem.title.clone(),
         statement: problem.statement.clone(),

@@ -13,6 +13,7 @@ use crate::symbolic::Symbol;
 /// notes on what the constraints solve for.
 pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>) {
     let constraints = &derivation.model.constraints;
+    let sign = super::derived::initial_sign(&derivation.model);
     let views = constraints
         .rows
         .iter()
@@ -24,7 +25,13 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             ConstraintView {
                 name: row.name.clone(),
                 level: level.into(),
-                equation_tex: format!("{} = 0", latex(&crate::symbolic::simplify(expression))),
+                equation_tex: format!(
+                    "{} = 0",
+                    latex(&crate::symbolic::roots::roots_of_squares(
+                        &crate::symbolic::simplify(expression),
+                        &sign
+                    ))
+                ),
             }
         })
         .collect();

@@ -53,6 +53,9 @@ pub struct Solution {
     /// Step 2: the quantities the forces are written with (a spring's length `ℓ₁`, its
     /// unit vector `û₁`, its rate `ℓ̇₁`), each defined once; the later steps use them too.
     pub force_definitions: Vec<Named>,
+    /// Step 4: the abbreviations of sines and cosines that steps 4 and 5 use
+    /// (`s_{1} = \sin(q_{1})`), each defined once.
+    pub abbreviations: Vec<Named>,
     /// Step 3: the planner's table.
     pub plan: Plan,
     /// Step 4: angular velocity and acceleration of each body, velocity and acceleration of

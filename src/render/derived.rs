@@ -13,8 +13,10 @@ use crate::numeric::format::fixed;
 use crate::numeric::system::System;
 use crate::plan::forces::{ActionKind, Category};
 use crate::problem::{BodyId, Problem};
+use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::{as_shown, named_definitions};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Definition, Expr, Node, Symbol};
 use crate::Error;
@@ -31,18 +33,34 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
         super::constrained::constraints(&derivation);
     solution.force_definitions = force_definitions(&derivation);
     solution.plan = plan(&derivation);
-    solution.kinematics = kinematics(model);
-    solution.equations = derivation
-        .rows
+    // Steps 4 and 5 write sines and cosines of the coordinates as s_1, c_12, listed once.
+    let names: Vec<&str> = problem
+        .coordinates
         .iter()
-        .map(|row| equation_view(&derivation, row))
+        .map(|c| c.name.as_str())
         .collect();
-    // The matrix is listed entry by entry whenever an equation refers to its entries.
-    let by_name = solution
-        .equations
-        .iter()
-        .any(|e| !e.simplified_note.is_empty());
-    solution.matrix = matrix(&derivation, by_name);
+    let style = super::build::style_of(problem).with_coordinates(&names);
+    let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
+        solution.kinematics = kinematics(model);
+        solution.equations = derivation
+            .rows
+            .iter()
+            .map(|row| equation_view(&derivation, row))
+            .collect();
+        // The matrix is listed entry by entry whenever an equation refers to its entries.
+        let by_name = solution
+            .equations
+            .iter()
+            .any(|e| !e.simplified_note.is_empty());
+        solution.matrix = matrix(&derivation, by_name);
+    });
+    solution.abbreviations = abbreviations
+        .into_iter()
+        .map(|a| Named {
+            definition_tex: format!("{} = {}", a.name, a.value),
+            note: String::new(),
+        })
+        .collect();
     let solver = crate::pipeline::Solver::new(problem, &derivation);
     let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
@@ -196,8 +214,10 @@ fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
             for action in derivation.actions.iter().filter(|a| is_external(a, set)) {
                 let (vector_tex, point_tex) = match &action.kind {
                     ActionKind::Force { offset, force } => {
-                        let at = Vector::new(action.body, offset.clone());
-                        (vector_tex(model, &force.map(as_shown)), format!("\\text{{at }} {}", vector_tex(model, &at)))
+                        let sign = initial_sign(model);
+                        let at = Vector::new(action.body, offset.clone()).map(|e| roots_of_squares(e, &sign));
+                        let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
+                        (vector_tex(model, &force), format!("\\text{{at }} {}", vector_tex(model, &at)))
                     }
                     ActionKind::Couple { torque } => (vector_tex(model, torque), "\\text{couple}".into()),
                 };
@@ -234,6 +254,15 @@ fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
 pub fn force_definitions(derivation: &Derivation) -> Vec<Named> {
     let components: Vec<Expr> = action_components(derivation).map(as_shown).collect();
     named_list(named_definitions(&components))
+}
+
+/// The sign an expression has at the initial state, for [`roots_of_squares`].
+pub fn initial_sign(model: &Model) -> impl Fn(&Expr) -> f64 {
+    let problem = model.problem;
+    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let values = model.values_at(0.0, &q0, &rates0);
+    move |e: &Expr| crate::symbolic::eval::eval(e, &values).signum()
 }
 
 /// Every component of every force and couple.
@@ -381,12 +410,14 @@ fn group_tex(e: &Expr) -> String {
 /// Step 5: one row, grouped as the Motion Law groups it and simplified.
 pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let problem = derivation.model.problem;
+    let sign = initial_sign(&derivation.model);
     let shown = |e: &Expr| {
-        if uses_shown(derivation) {
+        let e = if uses_shown(derivation) {
             as_shown(e)
         } else {
             e.clone()
-        }
+        };
+        roots_of_squares(&e, &sign)
     };
     let g = &row.groups;
     let g = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].map(shown);
@@ -409,7 +440,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         .map(|d| format!(" along {}", d.name))
         .unwrap_or_default();
     let mut grouped_tex = format!("{grouped} = 0");
-    let mut simplified_tex = format!("{} = 0", latex(&shown(&simplify(&row.expression))));
+    let mut simplified_tex = format!(
+        "{} = 0",
+        latex_collected(&shown(&simplify(&row.expression)))
+    );
     let mut simplified_note = String::new();
     if simplified_tex.len() > LONG_EQUATION {
         // Too long to read: the same row with the coefficients of the matrix form by name.
@@ -437,13 +471,15 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
 fn matrix(derivation: &Derivation, by_entries: bool) -> MatrixForm {
     let system = &derivation.system;
     let n = system.unknowns.len();
+    let sign = initial_sign(&derivation.model);
     let shown = |e: &Expr| {
         let e = simplify(e);
-        if uses_shown(derivation) {
+        let e = if uses_shown(derivation) {
             as_shown(&e)
         } else {
             e
-        }
+        };
+        roots_of_squares(&e, &sign)
     };
     let simplified_a: Vec<Vec<Expr>> = system
         .a

@@ -43,6 +43,7 @@ pub fn sample() -> Solution {
         constraint_notes: Vec::new(),
         free_bodies: free_bodies(),
         force_definitions: Vec::new(),
+        abbreviations: Vec::new(),
         plan: plan(),
         kinematics: kinematics(),
         equations: equations(),

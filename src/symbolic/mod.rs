@@ -3,6 +3,7 @@
 
 pub mod budget;
 pub mod build;
+pub mod collect;
 pub mod compile;
 pub mod diff;
 pub mod eval;
@@ -15,8 +16,10 @@ pub mod named;
 pub mod number;
 pub mod parse;
 pub mod print;
+pub mod roots;
 mod schedule;
 pub mod simplify;
+pub mod style;
 pub mod subst;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};

@@ -62,6 +62,10 @@ pub fn as_shown(e: &Expr) -> Expr {
 /// Compares names as a reader counts: runs of digits by their value, so `q2 < q10`, and
 /// everything else character by character.
 pub fn natural_cmp(a: &str, b: &str) -> Ordering {
+    // A comparator of every canonical sort: no allocation, and equal names at once.
+    if a == b {
+        return Ordering::Equal;
+    }
     let (mut a, mut b) = (a.as_bytes(), b.as_bytes());
     loop {
         match (a.first(), b.first()) {
@@ -71,14 +75,9 @@ pub fn natural_cmp(a: &str, b: &str) -> Ordering {
             (Some(x), Some(y)) if x.is_ascii_digit() && y.is_ascii_digit() => {
                 let digits = |s: &[u8]| s.iter().take_while(|c| c.is_ascii_digit()).count();
                 let (da, db) = (digits(a), digits(b));
-                let (na, nb) = (&a[..da], &b[..db]);
                 // Without leading zeros, a longer run is a larger number.
-                let strip = |s: &'_ [u8]| {
-                    let zeros = s.iter().take_while(|c| **c == b'0').count();
-                    s[zeros..].to_vec()
-                };
-                let (sa, sb) = (strip(na), strip(nb));
-                let order = sa.len().cmp(&sb.len()).then_with(|| sa.cmp(&sb));
+                let (sa, sb) = (without_zeros(&a[..da]), without_zeros(&b[..db]));
+                let order = sa.len().cmp(&sb.len()).then_with(|| sa.cmp(sb));
                 if order != Ordering::Equal {
                     return order;
                 }
@@ -92,6 +91,11 @@ pub fn natural_cmp(a: &str, b: &str) -> Ordering {
             }
         }
     }
+}
+
+fn without_zeros(digits: &[u8]) -> &[u8] {
+    let zeros = digits.iter().take_while(|c| **c == b'0').count();
+    &digits[zeros..]
 }
 
 #[cfg(test)]

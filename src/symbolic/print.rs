@@ -127,6 +127,16 @@ fn plain_symbol(s: &Symbol) -> String {
     }
 }
 
+/// The argument of a function as LaTeX prints it: `(q_{1})`, `\left(q_{1} + q_{2}\right)`.
+pub(crate) fn latex_argument(arg: &Expr) -> String {
+    Printer { latex: true }.argument(arg)
+}
+
+/// A term as LaTeX prints it, from its coefficient (not negative) and the rest.
+pub(crate) fn latex_term(coefficient: Number, rest: &Expr) -> String {
+    Printer { latex: true }.product(coefficient, rest)
+}
+
 struct Printer {
     latex: bool,
 }
@@ -184,6 +194,11 @@ impl Printer {
         let mut denominator: Vec<String> = Vec::new();
         let (mut coefficient_num, mut coefficient_den) = (String::new(), String::new());
         match coefficient {
+            Number::Ratio(n, d)
+                if self.latex && d != 1 && super::style::decimal(n, d).is_some() =>
+            {
+                coefficient_num = super::style::decimal(n, d).unwrap_or_default();
+            }
             Number::Ratio(n, d) => {
                 if n != 1 || rest.is_one() {
                     coefficient_num = n.to_string();
@@ -267,6 +282,9 @@ impl Printer {
         let exponent_text = self.sum(exponent);
         if self.latex {
             if let Node::Func(f, args) = base.node() {
+                if let Some(name) = super::style::abbreviation(*f, &args[0]) {
+                    return format!("{name}^{{{exponent_text}}}");
+                }
                 if matches!(f, Func::Sin | Func::Cos | Func::Tan) {
                     return format!(
                         "\\{}^{{{exponent_text}}}{}",
@@ -306,6 +324,13 @@ impl Printer {
 
     fn atom(&self, e: &Expr) -> String {
         match e.node() {
+            Node::Num(Number::Ratio(n, d)) if self.latex && *d != 1 => {
+                match super::style::decimal(*n, *d) {
+                    Some(text) if *n < 0 => format!("-{text}"),
+                    Some(text) => text,
+                    None => Number::Ratio(*n, *d).to_string(),
+                }
+            }
             Node::Num(n) => n.to_string(),
             Node::Sym(s) if self.latex => latex_symbol(s),
             Node::Sym(s) => plain_symbol(s),
@@ -318,6 +343,9 @@ impl Printer {
         if !self.latex {
             let inner: Vec<String> = args.iter().map(|a| self.sum(a)).collect();
             return format!("{}({})", f.name(), inner.join(", "));
+        }
+        if let Some(name) = super::style::abbreviation(f, &args[0]) {
+            return name;
         }
         let inner: Vec<String> = args.iter().map(|a| self.sum(a)).collect();
         match f {

@@ -332,10 +332,45 @@ impl Simplifier<'_> {
                 changed = true;
             }
         }
-        if changed {
-            terms.to_expr()
-        } else {
-            e
+        let result = if changed { terms.to_expr() } else { e };
+        // Fewer operations each time, so this ends.
+        match pythagoras::higher_powers(&result) {
+            Some(shorter) => self.sum(shorter),
+            None => result,
         }
     }
+}
+
+/// `M` when `e` simplifies to `M²` for a single term `M` (every factor to an even power,
+/// the coefficient the square of a fraction): the square root up to its sign, which the
+/// caller chooses (`√(cos²θ) = ±cos θ`). `None` otherwise.
+pub fn square_root_of_square(e: &Expr) -> Option<Expr> {
+    use crate::symbolic::number::Number;
+    let e = simplify(e);
+    if e.terms().len() != 1 {
+        return None;
+    }
+    let (c, rest) = e.split_coefficient();
+    let root = |n: i64| -> Option<i64> {
+        let r = (n as f64).sqrt().round() as i64;
+        (r >= 0 && r.checked_mul(r) == Some(n)).then_some(r)
+    };
+    let Number::Ratio(n, d) = c else {
+        return None;
+    };
+    let mut factors = vec![Expr::num(Number::ratio(root(n)? as i128, root(d)? as i128))];
+    if !rest.is_one() {
+        for f in rest.factors() {
+            let Node::Pow(base, exponent) = f.node() else {
+                return None;
+            };
+            match exponent.as_number() {
+                Some(Number::Ratio(k, 1)) if k % 2 == 0 => {
+                    factors.push(pow(base.clone(), Expr::int(k / 2)))
+                }
+                _ => return None,
+            }
+        }
+    }
+    Some(mul(factors))
 }

@@ -76,3 +76,64 @@ pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewr
     }
     best.map(|(_, r)| r)
 }
+
+/// `sin⁴x + 2 sin²x cos²x + cos⁴x = 1` and the other identities of higher powers, which
+/// no single rewrite of a group shortens: every `cos²x` of the sum replaced by `1 − sin²x`
+/// (or every `sin²x` by `1 − cos²x`) and multiplied out, when that gives fewer operations.
+/// Tried only for an argument that some term holds to a power of 4 or more.
+pub(crate) fn higher_powers(e: &Expr) -> Option<Expr> {
+    use crate::symbolic::build::{add, mul, pow};
+    use crate::symbolic::expr::{Func, Node};
+    let power_of = |f: &Expr| -> Option<(Func, Expr, i64)> {
+        let (base, k) = match f.node() {
+            Node::Pow(b, x) => match x.as_number() {
+                Some(Number::Ratio(k, 1)) if k > 0 => (b, k),
+                _ => return None,
+            },
+            _ => (f, 1),
+        };
+        match base.node() {
+            Node::Func(g @ (Func::Sin | Func::Cos), args) => Some((*g, args[0].clone(), k)),
+            _ => None,
+        }
+    };
+    let mut args: Vec<Expr> = Vec::new();
+    for t in e.terms() {
+        let powers: Vec<(Func, Expr, i64)> = t.factors().iter().filter_map(power_of).collect();
+        for (_, x, _) in &powers {
+            let total: i64 = powers.iter().filter(|(_, y, _)| y == x).map(|p| p.2).sum();
+            if total >= 4 && !args.contains(x) {
+                args.push(x.clone());
+            }
+        }
+    }
+    if args.is_empty() {
+        return None;
+    }
+    let mut best: Option<Expr> = None;
+    let mut best_count = e.operation_count();
+    for x in &args {
+        for (from, to) in [(Func::Cos, Func::Sin), (Func::Sin, Func::Cos)] {
+            let other = pow(
+                crate::symbolic::build::func(to, vec![x.clone()]),
+                Expr::int(2),
+            );
+            let one_minus = add([Expr::one(), &other * &Expr::int(-1)]);
+            let substituted = add(e.terms().iter().map(|t| {
+                mul(t.factors().iter().map(|f| match power_of(f) {
+                    Some((g, y, k)) if g == from && y == *x && k >= 2 => {
+                        let rest = crate::symbolic::build::func(from, vec![x.clone()]);
+                        &pow(one_minus.clone(), Expr::int(k / 2)) * &pow(rest, Expr::int(k % 2))
+                    }
+                    _ => f.clone(),
+                }))
+            }));
+            let count = substituted.operation_count();
+            if count < best_count {
+                best_count = count;
+                best = Some(substituted);
+            }
+        }
+    }
+    best
+}

@@ -101,6 +101,13 @@ fn pythagoras() {
     check("2*m - 2*m*sin(q1+q2)^2", "2*m*cos(q1+q2)^2");
     check("sin(q1)^2 + cos(q1)^2 + 1", "2");
     check("3*sin(q1)^2 + 3*cos(q1)^2 - 3", "0");
+    // (sin² + cos²)² = 1, as the rolling coin's acceleration constraints hold it.
+    check("2 - sin(q1)^4 - cos(q1)^4 - 2*sin(q1)^2*cos(q1)^2", "1");
+    check(
+        "R*q2'*(1 - sin(q1)^4 - cos(q1)^4 - 2*sin(q1)^2*cos(q1)^2)/cos(q2) + R",
+        "R",
+    );
+    check("sin(q1)^4 - cos(q1)^4", "2*sin(q1)^2 - 1");
     check("L/2*sin(q2)^2*q1' + L/2*cos(q2)^2*q1' + g", "L/2*q1' + g");
     check("sin(q1)^3 + sin(q1)*cos(q1)^2", "sin(q1)");
     check("sin(q1)^2*cos(q1)^2 + cos(q1)^4", "cos(q1)^2");

@@ -1,0 +1,245 @@
+//! An equation as a textbook writes it: its terms collected by the second derivatives
+//! (`(…) q̈₁ + (…) q̈₂`), then by the reactions, then by the products of rates
+//! (`(…) q̇₁²`), then what is left, each coefficient with its common factor pulled out
+//! (`−L₂ m₂ (L₂/3 + L₁ c₂/2) q̈₁`). Display only: the canonical form, which decides
+//! equality, is a plain sum of monomials.
+
+use super::build::{add, mul, pow};
+use super::expr::{Expr, Node, Symbol};
+use super::number::Number;
+use super::print::{latex, latex_term};
+use std::ops::{Mul as _, Neg as _};
+
+/// What a factor of a term is collected by, in the order the groups are printed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Kind {
+    Acceleration,
+    Reaction,
+    Rate,
+    /// A coordinate or a function of coordinates (`x₁`, `c₁`, a spring's `ℓ₁`).
+    Position,
+}
+
+/// The kind of `factor`, or `None` for a constant (part of every coefficient).
+fn kind(factor: &Expr) -> Option<Kind> {
+    let base = match factor.node() {
+        Node::Pow(base, exponent) if exponent.as_number().is_some() => base,
+        _ => factor,
+    };
+    match base.node() {
+        Node::Sym(Symbol::Coord(_, 2)) => Some(Kind::Acceleration),
+        Node::Sym(Symbol::Unknown(_)) => Some(Kind::Reaction),
+        Node::Sym(Symbol::Coord(_, 1)) => Some(Kind::Rate),
+        Node::Sym(Symbol::Coord(_, _)) => Some(Kind::Position),
+        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 2))) => None,
+        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 1))) => Some(Kind::Rate),
+        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 0) | Symbol::Time)) => {
+            Some(Kind::Position)
+        }
+        _ => None,
+    }
+}
+
+/// `e` (a canonical sum) in LaTeX with its terms collected (see the module documentation).
+pub fn latex_collected(e: &Expr) -> String {
+    // Groups keyed by the product of the factors collected by, in order of first use.
+    let mut groups: Vec<(Option<Kind>, Expr, Vec<Expr>)> = Vec::new();
+    for term in e.terms() {
+        // Collected by the factors of its first kind; the others join the coefficient.
+        let first = term.factors().iter().filter_map(kind).min();
+        let (mut key, mut rest) = (Vec::new(), Vec::new());
+        for f in term.factors() {
+            if first.is_some() && kind(f) == first {
+                key.push(f.clone());
+            } else {
+                rest.push(f.clone());
+            }
+        }
+        let key = mul(key);
+        let coefficient = mul(rest);
+        match groups.iter_mut().find(|(_, k, _)| *k == key) {
+            Some((_, _, items)) => items.push(coefficient),
+            None => groups.push((first, key, vec![coefficient])),
+        }
+    }
+    // What is collected by comes first, by kind, then in the canonical order of the keys;
+    // what is left keeps its place at the end.
+    groups.sort_by(|(a, x, _), (b, y, _)| match (a, b) {
+        (Some(a), Some(b)) => a.cmp(b).then_with(|| x.cmp(y)),
+        (Some(_), None) => std::cmp::Ordering::Less,
+        (None, Some(_)) => std::cmp::Ordering::Greater,
+        (None, None) => std::cmp::Ordering::Equal,
+    });
+    let mut out = String::new();
+    for (kind, key, coefficients) in &groups {
+        if kind.is_none() {
+            // Constants: their sum, with its common factor out.
+            let constant = add(coefficients.iter().cloned());
+            let (common, inner) = pull_common_factor(&constant);
+            if constant.terms().len() == 1 || common.as_number().is_some() {
+                push_signed(&mut out, latex(&constant));
+            } else {
+                push_signed(&mut out, factored(&common, &inner, ""));
+            }
+            continue;
+        }
+        let key_text = latex(key);
+        let coefficient = add(coefficients.iter().cloned());
+        if coefficient.is_zero() {
+            continue;
+        }
+        let text = if coefficient.terms().len() == 1 {
+            let (c, rest) = coefficient.split_coefficient();
+            let sign = if c.is_negative() { "-" } else { "" };
+            let c = if c.is_negative() { c.neg() } else { c };
+            if rest.is_one() && c.is_one() {
+                format!("{sign}{key_text}")
+            } else {
+                format!("{sign}{} {key_text}", latex_term(c, &rest))
+            }
+        } else {
+            let (common, inner) = pull_common_factor(&coefficient);
+            factored(&common, &inner, &key_text)
+        };
+        push_signed(&mut out, text);
+    }
+    if out.is_empty() {
+        "0".into()
+    } else {
+        out
+    }
+}
+
+/// `common (inner) key`, the sign of `common` in front.
+fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
+    let (c, rest) = common.split_coefficient();
+    let sign = if c.is_negative() { "-" } else { "" };
+    let c = if c.is_negative() { c.neg() } else { c };
+    let front = if rest.is_one() && c.is_one() {
+        String::new()
+    } else {
+        format!("{} ", latex_term(c, &rest))
+    };
+    let text = format!("{sign}{front}\\left({}\\right) {key}", latex(inner));
+    text.trim_end().to_string()
+}
+
+fn push_signed(out: &mut String, text: String) {
+    match (out.is_empty(), text.strip_prefix('-')) {
+        (true, _) => *out = text,
+        (false, Some(rest)) => out.push_str(&format!(" - {rest}")),
+        (false, None) => out.push_str(&format!(" + {text}")),
+    }
+}
+
+/// A factor's base and integer exponent (`x³ → (x, 3)`, `sin q → (sin q, 1)`).
+fn base_and_exponent(f: &Expr) -> (Expr, i64) {
+    if let Node::Pow(base, exponent) = f.node() {
+        if let Some(Number::Ratio(n, 1)) = exponent.as_number() {
+            return (base.clone(), n);
+        }
+    }
+    (f.clone(), 1)
+}
+
+/// `sum = common · inner`: `common` the sign when every term is negative, the fraction
+/// all coefficients share (the same denominator, the gcd of the numerators) and the
+/// factors every term has, each to its lowest power.
+pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
+    let terms = sum.terms();
+    let split: Vec<(Number, Expr)> = terms.iter().map(Expr::split_coefficient).collect();
+    // The symbolic factors common to all terms, each to its lowest positive power.
+    let mut common: Vec<(Expr, i64)> = split[0]
+        .1
+        .factors()
+        .iter()
+        .filter(|f| !f.is_one())
+        .map(base_and_exponent)
+        .filter(|(_, n)| *n > 0)
+        .collect();
+    for (_, rest) in &split[1..] {
+        let powers: Vec<(Expr, i64)> = rest.factors().iter().map(base_and_exponent).collect();
+        common = common
+            .into_iter()
+            .filter_map(|(base, n)| {
+                let m = powers
+                    .iter()
+                    .find(|(b, _)| *b == base)
+                    .map_or(0, |(_, m)| *m);
+                (m.min(n) > 0).then(|| (base, m.min(n)))
+            })
+            .collect();
+    }
+    let mut number = Number::ONE;
+    if split.iter().all(|(c, _)| c.is_negative()) {
+        number = Number::MINUS_ONE;
+    }
+    let ratios: Option<Vec<(i64, i64)>> = split
+        .iter()
+        .map(|(c, _)| match c {
+            Number::Ratio(n, d) => Some((n.abs(), *d)),
+            Number::Real(_) => None,
+        })
+        .collect();
+    if let Some(ratios) = ratios {
+        let d = ratios[0].1;
+        if ratios.iter().all(|(_, e)| *e == d) {
+            let g = ratios.iter().fold(0i64, |g, (n, _)| gcd(g, *n));
+            if g > 0 {
+                number = number.mul(Number::ratio(g as i128, d as i128));
+            }
+        }
+    }
+    let mut factors = vec![Expr::num(number)];
+    factors.extend(common.into_iter().map(|(base, n)| pow(base, Expr::int(n))));
+    let common = mul(factors);
+    let inverse = pow(common.clone(), Expr::int(-1));
+    let inner = add(terms.iter().map(|t| mul([t.clone(), inverse.clone()])));
+    (common, inner)
+}
+
+fn gcd(a: i64, b: i64) -> i64 {
+    if b == 0 {
+        a.abs()
+    } else {
+        gcd(b, a % b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::{cos, sin};
+
+    fn c(name: &str) -> Expr {
+        Expr::constant(name)
+    }
+
+    #[test]
+    fn terms_are_collected_by_accelerations_then_rates_with_common_factors_out() {
+        let (l1, l2, m2, g) = (c("L1"), c("L2"), c("m2"), c("g"));
+        let q2 = Expr::coord("q2", 0);
+        let a1 = Expr::coord("q1", 2);
+        let w1 = Expr::coord("q1", 1);
+        // −L₂²m₂/3 q̈₁ − L₁L₂m₂ cos q₂ q̈₁/2 − L₁L₂m₂ sin q₂ q̇₁²/2 − g m₂ sin q₂
+        let e = add([
+            &(&(&l2 * &l2) * &m2) * &(&a1 * &Expr::ratio(-1, 3)),
+            &(&(&(&l1 * &l2) * &m2) * &cos(q2.clone())) * &(&a1 * &Expr::ratio(-1, 2)),
+            &(&(&(&l1 * &l2) * &m2) * &sin(q2.clone())) * &(&(&w1 * &w1) * &Expr::ratio(-1, 2)),
+            &(&g * &m2) * &(&sin(q2.clone()) * &Expr::int(-1)),
+        ]);
+        assert_eq!(
+            latex_collected(&e),
+            "-L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} \\cos(q_{2})}{2}\\right) \\ddot{q}_{1} - \\frac{L_{1} L_{2} m_{2} \\sin(q_{2})}{2} \\dot{q}_{1}^{2} - g m_{2} \\sin(q_{2})"
+        );
+    }
+
+    #[test]
+    fn a_shared_fraction_is_pulled_out_with_the_factors() {
+        let (a, b, m) = (c("a"), c("b"), c("m"));
+        let sum = &(&(&a * &m) * &Expr::ratio(1, 4)) + &(&(&b * &m) * &Expr::ratio(3, 4));
+        let (common, inner) = pull_common_factor(&sum);
+        assert_eq!(common, &m * &Expr::ratio(1, 4));
+        assert_eq!(inner, &a + &(&b * &Expr::int(3)));
+    }
+}

@@ -1,0 +1,295 @@
+//! How the worked solution prints what the canonical form keeps exact: `s₁ = sin q₁` and
+//! `c₁₂ = cos(q₁ + q₂)` for the sines and cosines of the coordinates, as Kane & Levinson
+//! and MotionGenesis write them, and the decimals a problem wrote as decimals (`0.4`, not
+//! `2/5`).
+//!
+//! A [`Style`] is set for the steps that use it with [`with_style`]; the LaTeX printer
+//! reads it and records every abbreviation it prints, so that the step that introduces
+//! them can list exactly those (see [`Style::used`]). Only the display changes: the
+//! expressions, their canonical form and the numbers stay as they are. Outside
+//! [`with_style`] the printer prints as it always did.
+
+use super::expr::{Expr, Func, Node, Symbol};
+use super::number::Number;
+use super::print::latex_name;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// What the printer abbreviates and how it writes numbers.
+#[derive(Clone, Debug, Default)]
+pub struct Style {
+    /// The index each coordinate is abbreviated by (`q1 → 1`, `theta → \theta`), in the
+    /// problem's order; empty: no abbreviations.
+    indices: Vec<(String, String)>,
+    /// The numbers the problem wrote as decimals, each with its text (`2/5 → 0.4`).
+    decimals: BTreeMap<(i64, i64), String>,
+}
+
+/// One abbreviation printed: `s_{12} = \sin\left(q_{1} + q_{2}\right)`.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Abbreviation {
+    /// How many coordinates the argument adds, their positions in the problem, then sine
+    /// (0) or cosine (1): the order of the list (`s₁, c₁, s₂, c₂, s₁₂`).
+    order: (usize, Vec<usize>, u8),
+    /// The abbreviation, e.g. `s_{12}`.
+    pub name: String,
+    /// What it stands for, e.g. `\sin\left(q_{1} + q_{2}\right)`.
+    pub value: String,
+}
+
+thread_local! {
+    static CURRENT: RefCell<Option<(Style, BTreeSet<Abbreviation>)>> = const { RefCell::new(None) };
+}
+
+impl Style {
+    /// Abbreviations for the sines and cosines of `coordinates` (names as in the problem).
+    /// When all of them are one letter with a number (`q1`, `q2`), the number alone is the
+    /// index (`s_{1}`); otherwise the whole name is (`s_{\theta}`).
+    pub fn with_coordinates(mut self, coordinates: &[&str]) -> Style {
+        let names: Vec<String> = coordinates.iter().map(|c| latex_name(c)).collect();
+        let split = |n: &str| -> Option<(String, String)> {
+            let (stem, sub) = n.split_once("_{")?;
+            let sub = sub.strip_suffix('}')?;
+            sub.chars()
+                .all(|c| c.is_ascii_digit())
+                .then(|| (stem.to_string(), sub.to_string()))
+        };
+        let parts: Vec<Option<(String, String)>> = names.iter().map(|n| split(n)).collect();
+        let one_stem = parts.iter().all(Option::is_some)
+            && parts
+                .iter()
+                .flatten()
+                .all(|(s, _)| Some(s) == parts[0].as_ref().map(|(s, _)| s));
+        self.indices = coordinates
+            .iter()
+            .zip(names.iter().zip(&parts))
+            .map(|(c, (name, part))| {
+                let index = match part {
+                    Some((_, digits)) if one_stem => digits.clone(),
+                    _ => name.clone(),
+                };
+                (c.to_string(), index)
+            })
+            .collect();
+        self
+    }
+
+    /// Prints `number` as `text` (a decimal the problem wrote, such as `0.4`).
+    pub fn with_decimal(mut self, number: Number, text: &str) -> Style {
+        if let Number::Ratio(n, d) = number {
+            if d != 1 {
+                self.decimals
+                    .insert((n.abs(), d), text.trim_start_matches('-').into());
+            }
+        }
+        self
+    }
+}
+
+/// Runs `f` with `style` in force for the LaTeX printer of this thread, and returns its
+/// result with the abbreviations printed meanwhile, in the order of the coordinates.
+pub fn with_style<R>(style: Style, f: impl FnOnce() -> R) -> (R, Vec<Abbreviation>) {
+    let previous = CURRENT.with(|c| c.replace(Some((style, BTreeSet::new()))));
+    let result = f();
+    let used = CURRENT.with(|c| c.replace(previous));
+    let used = used
+        .map(|(_, u)| u.into_iter().collect())
+        .unwrap_or_default();
+    (result, used)
+}
+
+/// The abbreviation of `f(arg)` under the current style, if it has one: `f` is `sin` or
+/// `cos` and `arg` a coordinate or a sum of coordinates (each once, with coefficient 1).
+/// Recorded as used.
+pub(crate) fn abbreviation(f: Func, arg: &Expr) -> Option<String> {
+    let letter = match f {
+        Func::Sin => "s",
+        Func::Cos => "c",
+        _ => return None,
+    };
+    let (name, positions) = CURRENT.with(|c| {
+        let current = c.borrow();
+        let (style, _) = current.as_ref()?;
+        if style.indices.is_empty() {
+            return None;
+        }
+        let mut positions = Vec::new();
+        for term in arg.terms() {
+            let Node::Sym(Symbol::Coord(name, 0)) = term.node() else {
+                return None;
+            };
+            positions.push(style.indices.iter().position(|(c, _)| **c == **name)?);
+        }
+        positions.sort_unstable();
+        let indices: Vec<&str> = positions
+            .iter()
+            .map(|&i| style.indices[i].1.as_str())
+            .collect();
+        // Single digits run together (`s_{12}`); anything longer is separated (`s_{1,10}`).
+        let joined = if indices.iter().all(|i| i.chars().count() == 1) {
+            indices.concat()
+        } else {
+            indices.join(",")
+        };
+        Some((format!("{letter}_{{{joined}}}"), positions))
+    })?;
+    // The argument is a sum of coordinates: printing it abbreviates nothing.
+    let value = format!("\\{}{}", f.name(), super::print::latex_argument(arg));
+    CURRENT.with(|c| {
+        if let Some((_, used)) = c.borrow_mut().as_mut() {
+            used.insert(Abbreviation {
+                order: (positions.len(), positions, u8::from(f == Func::Cos)),
+                name: name.clone(),
+                value,
+            });
+        }
+    });
+    Some(name)
+}
+
+/// How the current style writes the number `n/d` (`d > 1`), if as a decimal.
+pub(crate) fn decimal(n: i64, d: i64) -> Option<String> {
+    CURRENT.with(|c| {
+        let current = c.borrow();
+        let (style, _) = current.as_ref()?;
+        style.decimals.get(&(n.abs(), d)).cloned()
+    })
+}
+
+/// The decimal literals of an expression's text that are not whole numbers, each with
+/// its value and its text as a plain decimal (`2.0e-3 → (1/500, "0.002")`).
+pub fn decimal_literals(text: &str) -> Vec<(Number, String)> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let starts = chars[i].is_ascii_digit()
+            || (chars[i] == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit));
+        // Digits that end a name (`q1`, `L_2`) are part of it.
+        let in_name = i > 0 && (chars[i - 1].is_ascii_alphanumeric() || chars[i - 1] == '_');
+        if !starts || in_name {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+            i += 1;
+        }
+        if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
+            let mut j = i + 1;
+            if j < chars.len() && (chars[j] == '+' || chars[j] == '-') {
+                j += 1;
+            }
+            if j < chars.len() && chars[j].is_ascii_digit() {
+                i = j;
+                while i < chars.len() && chars[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+        }
+        let literal: String = chars[start..i].iter().collect();
+        if !literal.contains(['.', 'e', 'E']) {
+            continue;
+        }
+        if let Some(Number::Ratio(n, d)) = Number::parse_decimal(&literal) {
+            if let Some(text) = plain_decimal(n, d) {
+                out.push((Number::Ratio(n, d), text));
+            }
+        }
+    }
+    out
+}
+
+/// `n/d` as a plain decimal when `d > 1` is a divisor of a power of ten (`1/500 → 0.002`).
+fn plain_decimal(n: i64, d: i64) -> Option<String> {
+    if d <= 1 {
+        return None;
+    }
+    let mut places = 0usize;
+    let mut scale: i128 = 1;
+    while scale % d as i128 != 0 {
+        scale *= 10;
+        places += 1;
+        if places > 18 {
+            return None;
+        }
+    }
+    let digits = (n.unsigned_abs() as i128 * (scale / d as i128)).to_string();
+    let digits = format!("{digits:0>width$}", width = places + 1);
+    let (whole, fraction) = digits.split_at(digits.len() - places);
+    Some(format!("{whole}.{fraction}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::{cos, sin};
+    use crate::symbolic::print::latex;
+
+    fn q(i: usize) -> Expr {
+        Expr::coord(&format!("q{i}"), 0)
+    }
+
+    #[test]
+    fn sines_and_cosines_of_coordinates_are_abbreviated_and_listed() {
+        let style = Style::default().with_coordinates(&["q1", "q2", "q10"]);
+        let e = &(&sin(q(1)) * &cos(&q(1) + &q(2))) + &cos(&q(2) + &q(10));
+        let (text, used) = with_style(style, || latex(&e));
+        assert_eq!(text, "c_{2,10} + s_{1} c_{12}");
+        let listed: Vec<String> = used
+            .iter()
+            .map(|a| format!("{} = {}", a.name, a.value))
+            .collect();
+        assert_eq!(
+            listed,
+            [
+                "s_{1} = \\sin(q_{1})",
+                "c_{12} = \\cos\\left(q_{1} + q_{2}\\right)",
+                "c_{2,10} = \\cos\\left(q_{2} + q_{10}\\right)"
+            ]
+        );
+        // Outside the style nothing changes.
+        assert_eq!(latex(&sin(q(1))), "\\sin(q_{1})");
+    }
+
+    #[test]
+    fn names_with_other_stems_are_indexed_by_the_whole_name() {
+        let style = Style::default().with_coordinates(&["psi", "theta", "x1"]);
+        let theta = Expr::coord("theta", 0);
+        let e = &(&sin(theta.clone()) * &sin(theta.clone())) * &Expr::constant("m");
+        let twice = &Expr::int(2) * &theta;
+        let (text, _) = with_style(style, || {
+            [
+                latex(&e),
+                latex(&cos(Expr::coord("x1", 0))),
+                latex(&sin(twice)),
+            ]
+        });
+        assert_eq!(
+            text,
+            [
+                "m s_{\\theta}^{2}",
+                "c_{x_{1}}",
+                "\\sin\\left(2 \\theta\\right)"
+            ]
+        );
+    }
+
+    #[test]
+    fn decimal_literals_are_found_in_an_expression() {
+        let found: Vec<String> = decimal_literals("-0.4*N.x + 1.0*N.y + q1*2.0e-3 + x2/4 + .25")
+            .into_iter()
+            .map(|(n, t)| format!("{n} {t}"))
+            .collect();
+        assert_eq!(found, ["2/5 0.4", "1/500 0.002", "1/4 0.25"]);
+    }
+
+    #[test]
+    fn decimals_the_problem_wrote_print_as_written() {
+        let style = Style::default().with_decimal(Number::ratio(2, 5), "0.4");
+        let e = &Expr::ratio(-2, 5) + &Expr::constant("x");
+        let half = &Expr::ratio(1, 2) * &Expr::constant("x");
+        let (text, _) = with_style(style, || [latex(&e), latex(&half)]);
+        assert_eq!(text, ["-0.4 + x", "\\frac{x}{2}"]);
+    }
+}
