@@ -422,7 +422,7 @@ fn overfull_in_equations(log: &str, tex: &str) -> Vec<(usize, f64)> {
             .unwrap_or(f64::INFINITY);
         // "… in paragraph at lines 12--14" or "… detected at line 12"
         let at: usize = line
-            .rsplit(|c: char| c == ' ' || c == '-')
+            .rsplit([' ', '-'])
             .find(|w| !w.is_empty())
             .and_then(|w| w.parse().ok())
             .unwrap_or(0);
