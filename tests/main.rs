@@ -8,6 +8,7 @@ mod compact;
 mod constraints;
 mod draw;
 mod invalid;
+mod kane_handout;
 mod kinematics;
 mod library;
 mod linearize;

@@ -126,6 +126,7 @@ fn large_system_latex_compiles() {
             row,
             column: "b".into(),
             value_tex: format!("b_{{{row}}} = {long}"),
+            ..Default::default()
         })
         .collect();
     let source = rendered(&solution, Format::Latex, false);
@@ -333,8 +334,25 @@ fn every_problem_renders_and_its_latex_compiles() {
             );
             documents.push((name, rendered(&solution, Format::Latex, student)));
         }
+        // Kane's method adds its partial velocities and generalized forces.
+        let kane = mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::Kane)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        documents.push((
+            format!("{}-kane", file_stem(&path)),
+            rendered(&kane, Format::Latex, false),
+        ));
     }
     assert!(!documents.is_empty(), "no problems found");
+    for (name, source) in &documents {
+        for display in display_equations(source) {
+            assert!(
+                display.len() <= DISPLAY_LIMIT,
+                "{name}: a display equation of {} characters: {}…",
+                display.len(),
+                &display[..200]
+            );
+        }
+    }
     if !pdflatex_present() {
         return;
     }
@@ -345,11 +363,86 @@ fn every_problem_renders_and_its_latex_compiles() {
         for half in [first, second] {
             let dir: &Path = &dir;
             scope.spawn(move || {
-                half.iter()
-                    .for_each(|(name, source)| drop(compile(dir, name, source)))
+                half.iter().for_each(|(name, source)| {
+                    let log = compile(dir, name, source);
+                    let wide = overfull_in_equations(&log, source);
+                    assert!(
+                        wide.is_empty(),
+                        "{name}: lines of steps 4 and 5 stick out of the margin: {wide:?}"
+                    );
+                })
             });
         }
     });
+}
+
+/// The longest display equation a handout may hold, in characters of LaTeX.
+const DISPLAY_LIMIT: usize = 2500;
+/// How far a line may stick out of the margin, in points.
+const OVERFULL_LIMIT: f64 = 3.0;
+
+/// The display equations of a LaTeX document: each `\[…\]` and `multline*`, whose
+/// delimiters the templates put on lines of their own.
+fn display_equations(tex: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let mut start: Option<usize> = None;
+    let mut offset = 0;
+    for line in tex.split_inclusive('\n') {
+        let trimmed = line.trim();
+        match (start, trimmed) {
+            (None, "\\[" | "\\begin{multline*}") => start = Some(offset + line.len()),
+            (Some(from), "\\]" | "\\end{multline*}") => {
+                out.push(tex[from..offset].trim());
+                start = None;
+            }
+            _ => {}
+        }
+        offset += line.len();
+    }
+    out
+}
+
+/// The overfull lines of pdflatex's `log` wider than [`OVERFULL_LIMIT`] that lie in steps 4
+/// and 5 of `tex` (the kinematics, the equations, the matrix and the reactions), as
+/// (line, points).
+fn overfull_in_equations(log: &str, tex: &str) -> Vec<(usize, f64)> {
+    let line_of = |needle: &str| {
+        tex.lines()
+            .position(|l| l.starts_with(needle))
+            .map_or(usize::MAX, |i| i + 1)
+    };
+    let (from, to) = (line_of("\\section*{Step 4"), line_of("\\section*{Step 6"));
+    let mut out = Vec::new();
+    for line in log.lines() {
+        let Some(rest) = line.strip_prefix("Overfull \\hbox (") else {
+            continue;
+        };
+        let points: f64 = rest
+            .split("pt")
+            .next()
+            .and_then(|p| p.parse().ok())
+            .unwrap_or(f64::INFINITY);
+        // "… in paragraph at lines 12--14" or "… detected at line 12"
+        let at: usize = line
+            .rsplit([' ', '-'])
+            .find(|w| !w.is_empty())
+            .and_then(|w| w.parse().ok())
+            .unwrap_or(0);
+        if points > OVERFULL_LIMIT && (from..=to).contains(&at) {
+            out.push((at, points));
+        }
+    }
+    out
+}
+
+#[test]
+fn display_equations_are_found_whole() {
+    let tex =
+        "a\n\\[\nx = 1\n\\]\nMode 1\\\\[2pt]\n\\begin{multline*}\ny \\\\ = 2\n\\end{multline*}\n";
+    assert_eq!(display_equations(tex), ["x = 1", "y \\\\ = 2"]);
+    let log = "Overfull \\hbox (12.5pt too wide) in paragraph at lines 3--4\nOverfull \\hbox (2.0pt too wide) detected at line 3\nOverfull \\hbox (9.0pt too wide) detected at line 1\n";
+    let tex = "a\n\\section*{Step 4. Kinematics}\nb\nc\n\\section*{Step 6. x}\n";
+    assert_eq!(overfull_in_equations(log, tex), [(4, 12.5)]);
 }
 
 fn binary() -> Command {

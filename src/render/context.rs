@@ -61,6 +61,10 @@ pub struct Solution {
     /// Step 4: angular velocity and acceleration of each body, velocity and acceleration of
     /// its mass center, all in N.
     pub kinematics: Vec<Kinematics>,
+    /// Step 5 by Kane's method: the partial velocities of the mass centres and the partial
+    /// angular velocities of the bodies, for each generalized speed (empty for the other
+    /// methods).
+    pub partial_velocities: Vec<PartialVelocity>,
     /// Step 5: each equation, as formed and as simplified.
     pub equations: Vec<Equation>,
     /// Step 5: how the dependent rates follow from the independent ones (constrained
@@ -253,6 +257,28 @@ pub struct Equation {
     /// What introduces the simplified equation when it is not `Simplified:` (plain text;
     /// may be empty).
     pub simplified_note: String,
+    /// Kane's rows: the generalized active force, e.g. `F_{1} = -m g L \sin(q_{1})`
+    /// (empty for the other methods; then `grouped_tex` shows the row as formed).
+    pub active_tex: String,
+    /// Kane's rows: the generalized inertia force, e.g. `F^{*}_{1} = -m L^{2} \ddot{q}_{1}`.
+    pub inertia_tex: String,
+}
+
+/// One line of Kane's table of partial velocities: a generalized speed and a body.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct PartialVelocity {
+    /// The speed's index `r`, 1-based.
+    pub r: usize,
+    /// The speed, e.g. `u_{1} = \dot{q}_{1}`, on the first line of each speed; empty on
+    /// the others.
+    pub speed_tex: String,
+    /// The body's name.
+    pub body: String,
+    /// The partial velocity of its mass centre, e.g.
+    /// `{}^{N}\mathbf{v}^{A^*}_{1} = \frac{L}{2} \hat{\mathbf{a}}_{y}`.
+    pub velocity_tex: String,
+    /// Its partial angular velocity, e.g. `{}^{N}\boldsymbol{\omega}^{A}_{1} = \hat{\mathbf{n}}_{z}`.
+    pub omega_tex: String,
 }
 
 /// The dependent rates as a linear map of the independent ones at the initial state, and
@@ -286,6 +312,10 @@ pub struct WholeMatrix {
     pub x_tex: String,
     /// The right-hand side, a column.
     pub b_tex: String,
+    /// `A` and `b` as one table: a column per unknown, headed by it, then `b`; a row per
+    /// equation, led by its number in step 5 and what it sums, e.g. `(1)\; A{+}B\colon
+    /// \sum \mathbf{M}_{O} \cdot \hat{\mathbf{n}}_{z}`.
+    pub table_tex: String,
 }
 
 /// One entry of `A` or `b`.
@@ -297,6 +327,11 @@ pub struct MatrixEntry {
     pub column: String,
     /// The entry, e.g. `A_{12} = \frac{m L^{2}}{2} \cos(q_{2})`.
     pub value_tex: String,
+    /// On the first entry of each row, the row's equation as in [`WholeMatrix::table_tex`];
+    /// empty on the others.
+    pub row_label_tex: String,
+    /// The column's unknown, e.g. `\ddot{q}_{2}`, or `\mathbf{b}`.
+    pub column_tex: String,
 }
 
 /// A number at the initial state.

@@ -2,10 +2,10 @@
 //! turned into the strings and tables of [`Solution`].
 
 use super::context::{
-    Equation as EquationView, Force, FreeBody, InitialValue, Kinematics, MatrixEntry, MatrixForm,
-    Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution, WholeMatrix,
+    Equation as EquationView, Force, FreeBody, InitialValue, Kinematics, Named, Plan, PlanRow,
+    Reaction, Rejected as RejectedView, Solution,
 };
-use super::long::{by_rates, coefficient_form, LONG_EQUATION};
+use super::long::{coefficient_form, LONG_EQUATION};
 use crate::equations::rows::{is_external, Equation, Sum};
 use crate::equations::{derive, Derivation, Method};
 use crate::mechanics::{Model, Vector};
@@ -52,7 +52,15 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
             .equations
             .iter()
             .any(|e| !e.simplified_note.is_empty());
-        solution.matrix = matrix(&derivation, by_name);
+        let use_shown = uses_shown(&derivation);
+        let sign = initial_sign(&derivation.model);
+        let shown = |e: &Expr| {
+            let e = simplify(e);
+            let e = if use_shown { as_shown(&e) } else { e };
+            roots_of_squares(&e, &sign)
+        };
+        solution.matrix = super::matrix::matrix(&derivation, by_name, shown);
+        solution.partial_velocities = super::kane::partial_velocities(&derivation);
     });
     solution.abbreviations = abbreviations
         .into_iter()
@@ -138,7 +146,7 @@ fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
         return "\\mathbf{0}".into();
     }
     format!(
-        "\\left({}\\right)\\,\\mathrm{{{unit}}}",
+        "({})\\,\\mathrm{{{unit}}}",
         terms.join(" + ").replace("+ -", "- ")
     )
 }
@@ -175,7 +183,7 @@ pub fn vector_tex(model: &Model, v: &Vector) -> String {
 }
 
 /// The shortest way to write a vector among the frames `N`, the body's and its parent's.
-fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
+pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
     let mut frames = vec![body, BodyId::GROUND];
     if let Some(parent) = model.frames.info(body).parent {
         frames.push(parent);
@@ -331,7 +339,8 @@ pub fn plan(derivation: &Derivation) -> Plan {
             equation: sum_text(&row.sum),
             direction_tex: match (&row.direction, &row.sum) {
                 (Some(d), _) => d.latex.clone(),
-                (None, Sum::Constraint { .. }) => "\\text{differentiated in time}".into(),
+                // Differentiated in time, written short enough for the table's column.
+                (None, Sum::Constraint { .. }) => "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into(),
                 (None, _) => "\\text{partial velocities}".into(),
             },
             unknowns_tex: unknowns_tex(&row.unknowns),
@@ -456,126 +465,33 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     if grouped_tex.len() > LONG_EQUATION {
         grouped_tex = String::new();
     }
+    let mut label = format!(
+        "{}: {}{direction}",
+        bodies_name(problem, &row.free_body),
+        sum_text(&row.sum)
+    );
+    let (mut active_tex, mut inertia_tex) = (String::new(), String::new());
+    if let (Sum::Generalized { speed }, Some(r)) =
+        (&row.sum, super::kane::row_number(derivation, row))
+    {
+        // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
+        (active_tex, inertia_tex) = super::kane::generalized_forces(&row.groups, r, shown);
+        grouped_tex = String::new();
+        label = if r <= problem.coordinates.len() {
+            format!("r = {r}: the generalized speed {speed}")
+        } else {
+            format!(
+                "r = {r}: the auxiliary speed {speed}, which moves {} and brings in the reaction",
+                bodies_name(problem, &row.free_body)
+            )
+        };
+    }
     EquationView {
-        label: format!(
-            "{}: {}{direction}",
-            bodies_name(problem, &row.free_body),
-            sum_text(&row.sum)
-        ),
+        label,
         grouped_tex,
         simplified_tex,
         simplified_note,
-    }
-}
-
-fn matrix(derivation: &Derivation, by_entries: bool) -> MatrixForm {
-    let system = &derivation.system;
-    let n = system.unknowns.len();
-    let sign = initial_sign(&derivation.model);
-    let shown = |e: &Expr| {
-        let e = simplify(e);
-        let e = if uses_shown(derivation) {
-            as_shown(&e)
-        } else {
-            e
-        };
-        roots_of_squares(&e, &sign)
-    };
-    let simplified_a: Vec<Vec<Expr>> = system
-        .a
-        .iter()
-        .map(|row| row.iter().map(shown).collect())
-        .collect();
-    let simplified_b: Vec<Expr> = system.b.iter().map(shown).collect();
-    // Whole only when it is small enough to read as one display.
-    let whole_length: usize = simplified_a
-        .iter()
-        .flatten()
-        .chain(&simplified_b)
-        .map(|e| latex(e).len())
-        .sum();
-    if n <= 4 && !by_entries && whole_length <= LONG_EQUATION {
-        let rows: Vec<String> = simplified_a
-            .iter()
-            .map(|row| row.iter().map(latex).collect::<Vec<_>>().join(" & "))
-            .collect();
-        let x: Vec<String> = system
-            .unknowns
-            .iter()
-            .map(|u| latex(&Expr::sym(u.clone())))
-            .collect();
-        let b: Vec<String> = simplified_b.iter().map(latex).collect();
-        return MatrixForm {
-            whole: Some(WholeMatrix {
-                a_tex: format!(
-                    "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
-                    rows.join(" \\\\ ")
-                ),
-                x_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", x.join(" \\\\ ")),
-                b_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ ")),
-            }),
-            entries: Vec::new(),
-        };
-    }
-    let mut entries = Vec::new();
-    for (i, row) in simplified_a.iter().enumerate() {
-        for (j, e) in row.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
-            // A symmetric entry refers to the one above the diagonal, written once.
-            let mirror = simplified_a.get(j).and_then(|r| r.get(i));
-            let value = if j < i && mirror == Some(e) {
-                format!("A_{{{},{}}}", j + 1, i + 1)
-            } else {
-                latex(e)
-            };
-            entries.push(MatrixEntry {
-                row: i + 1,
-                column: (j + 1).to_string(),
-                value_tex: format!("A_{{{},{}}} = {value}", i + 1, j + 1),
-            });
-        }
-        let b_tex = latex(&simplified_b[i]);
-        let groups = if b_tex.len() > 2 * LONG_EQUATION {
-            by_rates(&simplified_b[i])
-        } else {
-            Vec::new()
-        };
-        if groups.len() < 2 {
-            entries.push(MatrixEntry {
-                row: i + 1,
-                column: "b".into(),
-                value_tex: format!("b_{{{}}} = {b_tex}", i + 1),
-            });
-            continue;
-        }
-        // Too long to read whole: b_i collected by the products of rates it holds, each
-        // coefficient named and given after it.
-        let name = |k: usize| format!("B_{{{},{k}}}", i + 1);
-        let sum: Vec<String> = groups
-            .iter()
-            .enumerate()
-            .map(|(k, (rates, _))| {
-                if rates.is_one() {
-                    name(k + 1)
-                } else {
-                    format!("{} \\, {}", name(k + 1), latex(rates))
-                }
-            })
-            .collect();
-        entries.push(MatrixEntry {
-            row: i + 1,
-            column: "b".into(),
-            value_tex: format!("b_{{{}}} = {}", i + 1, sum.join(" + ")),
-        });
-        for (k, (_, coefficient)) in groups.iter().enumerate() {
-            entries.push(MatrixEntry {
-                row: i + 1,
-                column: "b".into(),
-                value_tex: format!("{} = {}", name(k + 1), latex(coefficient)),
-            });
-        }
-    }
-    MatrixForm {
-        whole: None,
-        entries,
+        active_tex,
+        inertia_tex,
     }
 }

@@ -178,6 +178,15 @@ pub fn register_filters(tera: &mut tera::Tera) {
         } else {
             Display::Inline
         };
+        if block {
+            // A wide equation is broken into lines, each its own block, so that the page
+            // wraps it instead of clipping it or making the reader scroll far.
+            let lines: Vec<String> = break_into_lines(&latex, HTML_WIDTH)
+                .iter()
+                .map(|line| mathml::to_mathml_or_source(line, display))
+                .collect();
+            return Ok(Value::String(lines.join("\n")));
+        }
         Ok(Value::String(mathml::to_mathml_or_source(&latex, display)))
     });
     tera.register_filter(
@@ -185,25 +194,67 @@ pub fn register_filters(tera: &mut tera::Tera) {
         |value: &Value, args: &HashMap<String, Value>| {
             let latex = tera::try_get_value!("tex_display", "value", String, value);
             let width = args.get("width").and_then(Value::as_u64).unwrap_or(60) as usize;
-            let lines = break_lines(&latex, width);
-            // One line goes in `\[…\]`: `multline*` would stretch its spaces to the full width.
-            Ok(Value::String(if lines.contains(" \\\\ ") {
-                format!("\\begin{{multline*}}\n{lines}\n\\end{{multline*}}")
-            } else {
-                format!("\\[\n{lines}\n\\]")
-            }))
+            Ok(Value::String(displays(&break_into_lines(&latex, width))))
         },
     );
 }
 
+/// How many symbols a line of displayed math holds in the HTML page.
+const HTML_WIDTH: usize = 80;
+
+/// The most characters of LaTeX one displayed equation holds: a longer one goes on in the
+/// next display, since `multline*` cannot break across pages and a reader cannot take in
+/// more at once.
+pub const DISPLAY_LIMIT: usize = 2400;
+
+/// Lines of math as displays: one line in `\[…\]` (`multline*` would stretch its spaces
+/// to the full width), several in `multline*`, and a new display wherever the next line
+/// would take one past [`DISPLAY_LIMIT`] characters.
+fn displays(lines: &[String]) -> String {
+    let mut groups: Vec<Vec<&str>> = Vec::new();
+    let mut length = 0;
+    for line in lines {
+        match groups.last_mut() {
+            Some(group) if length + line.len() <= DISPLAY_LIMIT => {
+                group.push(line);
+                length += line.len() + 4;
+            }
+            _ => {
+                groups.push(vec![line]);
+                length = line.len();
+            }
+        }
+    }
+    groups
+        .iter()
+        .map(|group| match group.as_slice() {
+            [one] => format!("\\[\n{one}\n\\]"),
+            _ => format!(
+                "\\begin{{multline*}}\n{}\n\\end{{multline*}}",
+                group.join(" \\\\ ")
+            ),
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 /// Breaks LaTeX math before `+`, `-` and `=` so that no line is much wider than `width`
 /// symbols as printed; lines are joined by `\\`, for `multline*`.
+#[cfg(test)]
+fn break_lines(latex: &str, width: usize) -> String {
+    break_into_lines(latex, width).join(" \\\\ ")
+}
+
+/// The lines of [`break_lines`], each whole: a `\left` left open at a break is closed by
+/// `\right.` and reopened by `\left.` on the next line.
 ///
 /// It never breaks inside braces (`\frac{…}{…}`) or environments (`bmatrix`), where a `\\`
 /// would not compile. Inside `\left( … \right)` it closes the open delimiters with
 /// `\right.` before the break and reopens them with `\left.` after it, the textbook way to
 /// split a long bracket over lines.
-pub fn break_lines(latex: &str, width: usize) -> String {
+pub fn break_into_lines(latex: &str, width: usize) -> Vec<String> {
+    let opened = open_long_fractions(latex, width);
+    let latex = opened.as_str();
     // (where a piece starts, how many `\left` are open there)
     let mut starts: Vec<(usize, usize)> = vec![(0, 0)];
     let (mut braces, mut environments, mut open) = (0i32, 0i32, 0usize);
@@ -269,12 +320,89 @@ pub fn break_lines(latex: &str, width: usize) -> String {
         line_width += piece_width;
     }
     lines.push(line.trim().to_string());
-    lines.join(" \\\\ ")
+    lines
+}
+
+/// `latex` with every `\\frac{N}{D}` outside braces whose numerator prints wider than
+/// `width` written `\\frac{1}{D} \\left(N\\right)`, the same value, which
+/// [`break_into_lines`] can then break inside the bracket (never inside braces).
+fn open_long_fractions(latex: &str, width: usize) -> String {
+    let bytes = latex.as_bytes();
+    let mut out = String::with_capacity(latex.len() + 16);
+    let (mut copied, mut braces, mut i) = (0, 0i32, 0);
+    while i < bytes.len() {
+        if braces == 0 {
+            if let Some(length) = latex.get(i..).and_then(|rest| command_at(rest, "\\frac")) {
+                if let Some((numerator, denominator, end)) = two_groups(latex, i + length) {
+                    // Only a sum can be broken; a long product stays a fraction.
+                    let sum = numerator.contains(" + ") || numerator.contains(" - ");
+                    if sum && printed_width(numerator) > width && printed_width(denominator) <= 12 {
+                        out.push_str(&latex[copied..i]);
+                        out.push_str(&format!(
+                            "\\frac{{1}}{{{denominator}}} \\left({}\\right)",
+                            open_long_fractions(numerator, width)
+                        ));
+                        copied = end;
+                        i = end;
+                        continue;
+                    }
+                }
+            }
+        }
+        match bytes[i] {
+            b'\\' => i += 1, // `\{`, `\}` are not groups
+            b'{' => braces += 1,
+            b'}' => braces -= 1,
+            _ => {}
+        }
+        i += 1;
+    }
+    out.push_str(&latex[copied.min(latex.len())..]);
+    out
+}
+
+/// The contents of the two brace groups that start at `start` (after spaces), and where
+/// the second ends.
+fn two_groups(latex: &str, start: usize) -> Option<(&str, &str, usize)> {
+    let group = |from: usize| -> Option<(usize, usize)> {
+        let bytes = latex.as_bytes();
+        let mut i = from;
+        while bytes.get(i) == Some(&b' ') {
+            i += 1;
+        }
+        if bytes.get(i) != Some(&b'{') {
+            return None;
+        }
+        let (open, mut depth) = (i, 0i32);
+        while i < bytes.len() {
+            match bytes[i] {
+                b'\\' => i += 1,
+                b'{' => depth += 1,
+                b'}' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return Some((open + 1, i));
+                    }
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        None
+    };
+    let (a, a_end) = group(start)?;
+    let (b, b_end) = group(a_end + 1)?;
+    Some((&latex[a..a_end], &latex[b..b_end], b_end + 1))
 }
 
 /// Roughly how many symbols `latex` prints: command names that only shape or place
 /// (`\\frac`, `\\mathbf`, `\\left`) and grouping count nothing, other commands one.
-fn printed_width(latex: &str) -> usize {
+pub(super) fn printed_width(latex: &str) -> usize {
+    // Functions print their names.
+    const NAMED: [&str; 16] = [
+        "sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sqrt", "arcsin", "arccos",
+        "arctan", "sinh", "cosh", "tanh",
+    ];
     const SILENT: [&str; 15] = [
         "left",
         "right",
@@ -305,11 +433,15 @@ fn printed_width(latex: &str) -> usize {
                 if name.is_empty() {
                     chars.next();
                     width += 1;
+                } else if NAMED.contains(&name.as_str()) {
+                    width += if name == "sqrt" { 1 } else { name.len() };
                 } else if !SILENT.contains(&name.as_str()) {
                     width += 1;
                 }
             }
             '{' | '}' | '_' | '^' | ' ' => {}
+            // Binary operators and relations print with space on both sides.
+            '+' | '-' | '=' => width += 2,
             _ => width += 1,
         }
     }
@@ -384,7 +516,7 @@ mod tests {
         let grouped =
             "x = \\left(aaaaaaa + \\sqrt{bbbbbbb + ccccccc}\\right)^{2} + {ddddddd - eeeeeee}";
         assert_eq!(
-            break_lines(grouped, 10),
+            break_lines(grouped, 11),
             "x = \\left(aaaaaaa \\right. \\\\ \\left. + \\sqrt{bbbbbbb + ccccccc}\\right)^{2} \\\\ + {ddddddd - eeeeeee}"
         );
         let matrix = "\\begin{bmatrix} aaaaaaa - bbbbbbb \\end{bmatrix}";
@@ -397,5 +529,15 @@ mod tests {
             printed_width("\\frac{m L^{2}}{12} \\hat{\\mathbf{n}}_{z}"),
             7
         );
+        // A long numerator is taken out of the fraction, and broken inside the bracket.
+        let fraction = "- \\frac{L \\left(aaaaaaa + bbbbbbb\\right) c}{2} = 0";
+        assert_eq!(
+            break_lines(fraction, 10),
+            "- \\frac{1}{2} \\left(L \\left(aaaaaaa \\right.\\right. \\\\ \\left.\\left. + bbbbbbb\\right) c\\right) = 0"
+        );
+        assert_eq!(break_lines(fraction, 100), fraction);
+        // A long product has nowhere to break: it stays a fraction.
+        let product = "\\frac{L a b c d e f g h i j k}{2}";
+        assert_eq!(break_lines(product, 5), product);
     }
 }

@@ -48,6 +48,7 @@ pub fn sample() -> Solution {
         kinematics: kinematics(),
         equations: equations(),
         dependent_speeds: None,
+        partial_velocities: Vec::new(),
         matrix: matrix(),
         initial_values: vec![
             value("\\ddot{q}_{1}", "-12.0939", "rad/s^2"),
@@ -292,6 +293,8 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{m g L}}{{2}} \\left(3 {s1} + {s12}\\right) = 0"
             ),
             simplified_note: String::new(),
+            active_tex: String::new(),
+            inertia_tex: String::new(),
         },
         Equation {
             label: s("B: moments about P"),
@@ -304,6 +307,8 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\dot{{q}}_{{1}}^{{2}} + \\frac{{m g L}}{{2}} {s12} = 0"
             ),
             simplified_note: String::new(),
+            active_tex: String::new(),
+            inertia_tex: String::new(),
         },
         Equation {
             label: s("A+B: forces along x"),
@@ -313,6 +318,8 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{1}}{{2}} \\left({c12} {accelerations} - {s12} {rates}^{{2}}\\right)\\right) = 0"
             ),
             simplified_note: String::new(),
+            active_tex: String::new(),
+            inertia_tex: String::new(),
         },
         Equation {
             label: s("A+B: forces along y"),
@@ -322,6 +329,8 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{1}}{{2}} \\left({s12} {accelerations} + {c12} {rates}^{{2}}\\right)\\right) = 0"
             ),
             simplified_note: String::new(),
+            active_tex: String::new(),
+            inertia_tex: String::new(),
         },
     ]
 }
@@ -365,6 +374,8 @@ fn matrix() -> MatrixForm {
             a_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ ")),
             x_tex: s("\\begin{bmatrix} \\ddot{q}_{1} \\\\ \\ddot{q}_{2} \\\\ F^{O}_{x} \\\\ F^{O}_{y} \\end{bmatrix}"),
             b_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ ")),
+            // Too wide for one table on the page: the templates show A, x and b.
+            table_tex: String::new(),
         }),
         entries: Vec::new(),
     }

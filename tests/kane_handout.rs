@@ -1,0 +1,111 @@
+//! Kane's method as the worked solution shows it: the partial velocities and partial
+//! angular velocities of the double pendulum, and its generalized active and inertia forces
+//! each apart, read from the Markdown handout and held against a derivation by hand.
+//!
+//! The double pendulum (problems/double-pendulum-rods.json): rod A (m1, L1) pinned at O,
+//! turning q1 about N.z; rod B (m2, L2) pinned at P = -L1 a_y, turning q2 about A.z; each
+//! mass centre halfway down its rod, gravity -g n_y.
+//!
+//! By hand, with u_r = q_r':
+//! - v^{A*} = (L1/2) q1' a_x, so v_1^{A*} = (L1/2) a_x, ω_1^A = a_z, and A does not move
+//!   with u_2;
+//! - v^{B*} = L1 q1' a_x + (L2/2)(q1' + q2') b_x, with a_x = cos q2 b_x - sin q2 b_y, so
+//!   v_1^{B*} = (L2/2 + L1 cos q2) b_x - L1 sin q2 b_y, v_2^{B*} = (L2/2) b_x,
+//!   ω_1^B = ω_2^B = b_z;
+//! - F_r = -∂V/∂q_r with V = -m1 g (L1/2) cos q1 - m2 g (L1 cos q1 + (L2/2) cos(q1 + q2)):
+//!   F_1 = -(L1 g m1/2) sin q1 - L1 g m2 sin q1 - (L2 g m2/2) sin(q1 + q2),
+//!   F_2 = -(L2 g m2/2) sin(q1 + q2);
+//! - F_2* = -v_2^{B*}·m2 a^{B*} - ω_2^B·I^B α^B with I^B = m2 L2²/12 and
+//!   b_x·a^{B*} = L1 (q1'' cos q2 + q1'² sin q2) + (L2/2)(q1'' + q2''):
+//!   F_2* = -(m2 L2²/3)(q1'' + q2'') - (L1 L2 m2/2)(q1'' cos q2 + q1'² sin q2);
+//! - the auxiliary speeds along O's reaction give F_3 = F^O_x and
+//!   F_4 = F^O_y - g m1 - g m2 (the pin force and the weights along n_x, n_y).
+
+use mbd_tutor::equations::Method;
+use mbd_tutor::render::{render, Format};
+use mbd_tutor::symbolic::print::latex_unit_vector;
+use std::path::Path;
+
+fn markdown(name: &str) -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("problems")
+        .join(name);
+    let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
+    let solution =
+        mbd_tutor::render::build::solution(&problem, Method::Kane).expect("Kane's method derives");
+    render(&solution, Format::Markdown, None, false).expect("the handout renders")
+}
+
+/// The part of the handout from `start` to `end`.
+fn section<'a>(text: &'a str, start: &str, end: &str) -> &'a str {
+    let from = text.find(start).unwrap_or_else(|| panic!("no `{start}`"));
+    let to = text[from..].find(end).map_or(text.len(), |i| from + i);
+    &text[from..to]
+}
+
+#[test]
+fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apart() {
+    let text = markdown("double-pendulum-rods.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    let (a_x, a_z) = (latex_unit_vector("A", 0), latex_unit_vector("A", 2));
+    let (b_x, b_y, b_z) = (
+        latex_unit_vector("B", 0),
+        latex_unit_vector("B", 1),
+        latex_unit_vector("B", 2),
+    );
+    // The table: one line per speed and body that moves with it, the speed on its first.
+    let table: Vec<&str> = step5
+        .lines()
+        .skip_while(|l| !l.starts_with("| Speed"))
+        .skip(2)
+        .take_while(|l| l.starts_with("| "))
+        .collect();
+    let expected = [
+        format!(
+            "| $u_{{1}} = \\dot{{q}}_{{1}}$ | A | ${{}}^{{N}}\\mathbf{{v}}^{{A^*}}_{{1}} = \\frac{{L_{{1}}}}{{2}} {a_x}$ | ${{}}^{{N}}\\boldsymbol{{\\omega}}^{{A}}_{{1}} = {a_z}$ |"
+        ),
+        format!(
+            "|  | B | ${{}}^{{N}}\\mathbf{{v}}^{{B^*}}_{{1}} = (\\frac{{L_{{2}}}}{{2}} + L_{{1}} c_{{2}}) {b_x} - L_{{1}} s_{{2}} {b_y}$ | ${{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}}_{{1}} = {b_z}$ |"
+        ),
+        format!(
+            "| $u_{{2}} = \\dot{{q}}_{{2}}$ | B | ${{}}^{{N}}\\mathbf{{v}}^{{B^*}}_{{2}} = \\frac{{L_{{2}}}}{{2}} {b_x}$ | ${{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}}_{{2}} = {b_z}$ |"
+        ),
+    ];
+    assert_eq!(table, expected, "the table of partial velocities");
+    // F_r and F_r* each on its own, then their sum.
+    let shown = |tex: &str| format!("$$\n{tex}\n$$");
+    let forces = [
+        "F_{1} = -L_{1} g \\left(\\frac{m_{1}}{2} + m_{2}\\right) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}",
+        "F_{2} = -\\frac{L_{2} g m_{2}}{2} s_{12}",
+        "F^{*}_{2} = -L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} c_{2}}{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2}",
+        "F_{3} = F^{O}_{x}",
+        "F_{4} = F^{O}_{y} - g \\left(m_{1} + m_{2}\\right)",
+    ];
+    for f in forces {
+        assert!(step5.contains(&shown(f)), "missing {f}\n{step5}");
+    }
+    // In the order a textbook gives them: F_r, then F_r*, then the sum.
+    for r in 1..=4 {
+        let active = step5.find(&format!("$$\nF_{{{r}}} = ")).expect("F_r");
+        let inertia = step5
+            .find(&format!("$$\nF^{{*}}_{{{r}}} = "))
+            .expect("F_r*");
+        let sum = step5[inertia..].find("Their sum").expect("the sum") + inertia;
+        assert!(active < inertia && inertia < sum, "r = {r}");
+    }
+    assert!(
+        step5.contains("**1. r = 1: the generalized speed q1'**"),
+        "{step5}"
+    );
+}
+
+#[test]
+fn the_other_methods_show_no_partial_velocities() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/simple-pendulum.json");
+    let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
+    for method in [Method::MotionLaw, Method::NewtonEuler] {
+        let solution = mbd_tutor::render::build::solution(&problem, method).expect("derives");
+        assert!(solution.partial_velocities.is_empty());
+        assert!(solution.equations.iter().all(|e| e.active_tex.is_empty()));
+    }
+}
