@@ -18,6 +18,7 @@ pub mod mathml;
 pub mod mode_shape;
 pub mod plot;
 mod prepare;
+pub mod rejected;
 pub mod sample;
 pub mod simulation;
 
