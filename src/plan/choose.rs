@@ -393,7 +393,9 @@ fn triangular(
             .filter(|(_, new)| !new.is_empty())
             .collect();
         let mut seeds: Vec<&(usize, Vec<usize>)> = open.iter().collect();
-        seeds.sort_by_key(|(r, new)| (new.len(), *r));
+        // The smallest blocks first; among them, those that find the earliest unknowns
+        // (the q'' before the reactions, as a student goes), then the preferred rows.
+        seeds.sort_by_key(|(r, new)| (new.len(), new.iter().min().copied(), *r));
         let mut best: Option<(Vec<usize>, HashMap<usize, Fails>)> = None;
         for (_, seed_new) in seeds {
             if best.as_ref().is_some_and(|b| b.0.len() <= seed_new.len()) {
