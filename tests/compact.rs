@@ -233,14 +233,19 @@ fn the_double_pendulum_reads_as_a_textbook_writes_it() {
     // - m2 g (L2/2) s12 = 0, collected by q1'', q2'', then the rates, the common factor
     // -L2 m2 of q1'''s coefficient pulled out, sines and cosines by their abbreviations.
     assert_eq!(
-        equations[2],
+        equations[1],
         "-L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} c_{2}}{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} - \\frac{L_{2} g m_{2}}{2} s_{12}"
     );
-    // Gravity on both rods along a_y: -(m1 + m2) g c1, the masses collected.
-    assert!(equations[0].ends_with("- g \\left(m_{1} + m_{2}\\right) c_{1}"));
+    // A + B about O, gravity's moment by hand: -m1 g (L1/2) s1 - m2 g (L1 s1 + (L2/2) s12),
+    // the masses of s1's coefficient collected.
+    assert!(equations[0].ends_with(
+        "- L_{1} g \\left(\\frac{m_{1}}{2} + m_{2}\\right) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}"
+    ));
+    // Both rods along N.y: F^O_y - (m1 + m2) g + …, the masses collected.
+    assert!(equations[3].ends_with("- g \\left(m_{1} + m_{2}\\right)"));
     // The abbreviations are defined once, at the start of step 4, in the order of the
     // coordinates, the sums last.
-    let line = "Abbreviations: $s_{1} = \\sin(q_{1})$, $c_{1} = \\cos(q_{1})$, $s_{2} = \\sin(q_{2})$, $c_{2} = \\cos(q_{2})$, $s_{12} = \\sin\\left(q_{1} + q_{2}\\right)$.";
+    let line = "Abbreviations: $s_{1} = \\sin(q_{1})$, $c_{1} = \\cos(q_{1})$, $s_{2} = \\sin(q_{2})$, $c_{2} = \\cos(q_{2})$, $s_{12} = \\sin\\left(q_{1} + q_{2}\\right)$, $c_{12} = \\cos\\left(q_{1} + q_{2}\\right)$.";
     assert_eq!(markdown.matches(line).count(), 1);
     let step4 = markdown.find("## Step 4").expect("step 4");
     assert!(markdown.find(line).is_some_and(|i| i > step4));

@@ -14,6 +14,7 @@ mod library;
 mod linearize;
 mod methods;
 mod pipeline;
+mod planner;
 mod render;
 mod robustness;
 mod snapshots_by_problem;

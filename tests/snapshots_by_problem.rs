@@ -19,11 +19,20 @@ fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
         p.equations_count, p.unknowns_count
     ));
     if !p.rejected.is_empty() {
-        out.push_str("\nRejected:\n");
+        out.push_str(&format!(
+            "\nRejected ({} of {} shown):\n",
+            p.rejected.len(),
+            p.rejected_total
+        ));
         for r in &p.rejected {
+            let tex = if r.reason_tex.is_empty() {
+                String::new()
+            } else {
+                format!(" (${}$)", r.reason_tex)
+            };
             out.push_str(&format!(
-                "- {}, {} along ${}$: {}\n",
-                r.free_body, r.equation, r.direction_tex, r.reason
+                "- {}, {} along ${}$: {}{tex}{}\n",
+                r.free_body, r.equation, r.direction_tex, r.reason, r.reason_after
             ));
         }
     }

@@ -56,6 +56,10 @@ pub struct Args {
     /// (`--linearize q1=0,q1'=0`): M, C, K, the state matrix, eigenvalues and modes.
     #[arg(long, value_name = "STATE", num_args = 0..=1, default_missing_value = "")]
     pub linearize: Option<String>,
+    /// List every candidate equation the Motion Law's planner did not use, with its reason,
+    /// not only the few that show why the plan is what it is.
+    #[arg(long)]
+    pub verbose: bool,
 }
 
 /// Some problems of a directory failed; the others were written.
@@ -154,6 +158,9 @@ fn explain_version(
     } else {
         render::build::solution(&problem, method)?
     };
+    if args.verbose {
+        solution.plan.show_every_rejected();
+    }
     if let Some(state) = args.linearize.as_ref().filter(|_| !student) {
         let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
         let linearizer = crate::numeric::linearize::Linearizer::new(&problem, method)?;

@@ -248,7 +248,7 @@ pub fn derive_at<'p>(
                 &given,
                 &required,
             );
-            if choice.rows.len() + given.len() < unknowns.len() && !loop_sites.is_empty() {
+            if choice.rows.len() < unknowns.len() && !loop_sites.is_empty() {
                 // No free body avoids every reaction of the loop: solve for them too.
                 for &j in &loop_sites {
                     if !reaction_joints.contains(&j) {
@@ -263,7 +263,11 @@ pub fn derive_at<'p>(
             (choice.rows, choice.rejected)
         }
     };
-    let rows: Vec<Equation> = rows.into_iter().chain(given).collect();
+    // The Motion Law's plan places the constraint rows among its own.
+    let rows: Vec<Equation> = match method {
+        Method::MotionLaw => rows,
+        _ => rows.into_iter().chain(given).collect(),
+    };
     if rows.len() != unknowns.len() {
         let mut message = format!(
             "{} found {} independent equations for {} unknowns",

@@ -1,7 +1,9 @@
-//! The Motion Law planner (step 3): enumerate candidate rows (free body, sum of forces or of
-//! moments about a point, direction), find each one's unknowns, and choose a square,
-//! nonsingular set with no unwanted reaction and the fewest terms. Every rejected candidate
-//! keeps its reason, so that the worked solution can show why a choice was made.
+//! The Motion Law planner (step 3): enumerate candidate rows (free body, one body or a
+//! connected group of them; sum of forces or of moments about a point; direction) and find
+//! the reactions each brings in. [`choose`](super::choose) then picks a square, nonsingular
+//! set with no unwanted reaction, solvable in order when it can be, and every rejected
+//! candidate keeps its typed [`Reason`], so that the worked solution can show why a choice
+//! was made.
 
 use crate::equations::rows::{
     action_terms, resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum,
@@ -12,7 +14,6 @@ use crate::problem::{BodyId, JointKind};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::Symbol;
-use std::f64::consts::FRAC_PI_2;
 
 /// Above this many bodies, connected groups other than subtrees are not tried.
 const MAX_BODIES_FOR_GROUPS: usize = 4;
@@ -30,23 +31,8 @@ pub struct Candidate {
     pub reactions: Vec<Symbol>,
 }
 
-/// A candidate the planner did not use, and why.
-#[derive(Clone, Debug)]
-pub struct Rejected {
-    /// The candidate row.
-    pub candidate: Candidate,
-    /// Why it was not chosen.
-    pub reason: String,
-}
-
-/// The chosen rows and the rejected candidates.
-#[derive(Clone, Debug)]
-pub struct Choice {
-    /// Chosen rows, in the order of the candidates.
-    pub rows: Vec<Equation>,
-    /// Rejected candidates with their reasons.
-    pub rejected: Vec<Rejected>,
-}
+pub use super::choose::{choose, Choice};
+pub use super::rejection::{Reason, Rejected};
 
 /// The free bodies worth trying: every outboard subtree, every single body, and (while the
 /// system is small) every connected group of bodies.
@@ -54,7 +40,7 @@ pub fn free_bodies(model: &Model) -> Vec<Vec<BodyId>> {
     let mut out: Vec<Vec<BodyId>> = Vec::new();
     let mut push = |mut set: Vec<BodyId>| {
         set.sort();
-        if !set.is_empty() && !out.contains(&set) {
+        if !set.is_empty() && !out.contains(&set) && !closes_a_loop(model, &set) {
             out.push(set);
         }
     };
@@ -79,6 +65,15 @@ pub fn free_bodies(model: &Model) -> Vec<Vec<BodyId>> {
         }
     }
     out
+}
+
+/// Whether a closure joins two bodies of `set`. Its two sides then cancel only where the
+/// loop is closed, so the group's rows would hold on the constraint alone, not at every
+/// state the other methods are evaluated at.
+fn closes_a_loop(model: &Model, set: &[BodyId]) -> bool {
+    model.sites[model.problem.joints.len()..]
+        .iter()
+        .any(|site| set.contains(&site.parent) && set.contains(&site.child))
 }
 
 fn is_connected(model: &Model, set: &[BodyId]) -> bool {
@@ -203,7 +198,10 @@ pub fn candidates(model: &Model, actions: &[Action], reactions: &[Symbol]) -> Ve
                 )
             })
             .collect();
-        for &body in &free_body {
+        // A group is taken about a point where a reaction acts, to remove it; its bodies'
+        // mass centers are special only for a free body of one body (and writing out a
+        // group's rows is what costs).
+        for &body in free_body.iter().filter(|_| free_body.len() == 1) {
             points.push((
                 format!("{}*", problem.body_name(body)),
                 model.bodies[body.0].center.position.clone(),
@@ -345,246 +343,4 @@ pub fn adds_rank(basis: &mut Vec<Vec<f64>>, row: &[f64]) -> bool {
     }
     basis.push(residual.iter().map(|x| x / left).collect());
     true
-}
-
-/// Chooses the rows: wanted unknowns only, fewest terms first, each adding rank.
-pub fn choose(
-    model: &Model,
-    actions: &[Action],
-    inertia: &Inertia,
-    candidates: Vec<Candidate>,
-    wanted: &[Symbol],
-    given: &[Equation],
-    required: &[Values],
-) -> Choice {
-    let states = sample_states(model);
-    let complete = |choice: &Choice| choice.rows.len() + given.len() == wanted.len();
-    // Rows written out once serve every attempt below: writing them out is what costs.
-    let mut written = std::collections::HashMap::new();
-    let mut attempt = |candidates: Vec<Candidate>, states: &[Values]| {
-        choose_at(
-            model,
-            actions,
-            inertia,
-            candidates,
-            wanted,
-            given,
-            states,
-            &mut written,
-        )
-    };
-    if !required.is_empty() {
-        // States the caller will solve at: plan for them too if a plan can be; otherwise
-        // (the system itself is singular there) plan as usual.
-        let mut more = states.clone();
-        more.extend(required.iter().cloned());
-        let choice = attempt(candidates.clone(), &more);
-        if complete(&choice) {
-            return choice;
-        }
-    }
-    let choice = attempt(candidates.clone(), &states);
-    if complete(&choice) {
-        // Rows that are independent at generic states can still fail together at special
-        // ones: all q = 0 (often the equilibrium a student linearizes about) or a quarter
-        // turn. A pendulum's `M about bob*` with `F along N.x` loses the vertical pin force
-        // at q = 0. Plan again with those states too (both, else the first), and keep the
-        // new plan if there is one: some systems are singular there whatever the rows.
-        let special: Vec<Values> = [0.0, FRAC_PI_2]
-            .into_iter()
-            .map(|q| uniform_state(model, q))
-            .collect();
-        // The cheap test first: the kinematics are looked at only for a plan that fails.
-        let all_rows: Vec<Equation> = given.iter().chain(&choice.rows).cloned().collect();
-        let full = full_rank_at(&all_rows, wanted, &special);
-        if special
-            .iter()
-            .zip(&full)
-            .any(|(state, full)| !full && rates_are_independent(model, state))
-        {
-            let special: Vec<Values> = special
-                .into_iter()
-                .filter(|state| rates_are_independent(model, state))
-                .collect();
-            for count in (1..=special.len()).rev() {
-                let mut more = states.clone();
-                more.extend(special[..count].iter().cloned());
-                let again = attempt(candidates.clone(), &more);
-                if complete(&again) {
-                    return again;
-                }
-            }
-        }
-        return choice;
-    }
-    // The initial state itself may be singular (gimbal lock, say): plan on generic states.
-    attempt(candidates, &states[1..])
-}
-
-/// Whether no combination of the rates leaves every body still at `state`: the columns of
-/// the map from the rates to the bodies' velocities and angular velocities are independent.
-/// Euler angles in gimbal lock fail this, and then no choice of rows can be nonsingular.
-fn rates_are_independent(model: &Model, state: &Values) -> bool {
-    let problem = model.problem;
-    let rates: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 1))
-        .collect();
-    let mut columns = vec![Vec::new(); rates.len()];
-    for &body in &model.order {
-        let b = &model.bodies[body.0];
-        let velocity = b.center.velocity.components_in(body, &model.frames);
-        let omega = b.omega.components_in(body, &model.frames);
-        for component in velocity.iter().chain(&omega) {
-            let Ok((coefficients, _)) = linear_split(component, &rates) else {
-                return true; // not linear in the rates: no verdict
-            };
-            for (column, c) in columns.iter_mut().zip(&coefficients) {
-                column.push(eval(c, state));
-            }
-        }
-    }
-    let mut basis = Vec::new();
-    columns.iter().all(|column| adds_rank(&mut basis, column))
-}
-
-/// Every coordinate at `q`, the rates as given initially.
-fn uniform_state(model: &Model, q: f64) -> Values {
-    let coordinates = &model.problem.coordinates;
-    let rates: Vec<f64> = coordinates.iter().map(|c| c.rate).collect();
-    model.values_at(0.0, &vec![q; coordinates.len()], &rates)
-}
-
-/// For each of `states`, whether `rows` determine every one of `wanted` there (each row
-/// is split into its coefficients once for all the states).
-fn full_rank_at(rows: &[Equation], wanted: &[Symbol], states: &[Values]) -> Vec<bool> {
-    let mut bases = vec![Vec::new(); states.len()];
-    let mut full = vec![true; states.len()];
-    for row in rows {
-        let coefficients = coefficient_rows(row, wanted, states);
-        for ((basis, full), row) in bases.iter_mut().zip(&mut full).zip(&coefficients) {
-            *full = *full && adds_rank(basis, row);
-        }
-    }
-    full
-}
-
-#[allow(clippy::too_many_arguments)]
-fn choose_at(
-    model: &Model,
-    actions: &[Action],
-    inertia: &Inertia,
-    candidates: Vec<Candidate>,
-    wanted: &[Symbol],
-    given: &[Equation],
-    states: &[Values],
-    written_before: &mut std::collections::HashMap<usize, Equation>,
-) -> Choice {
-    let mut rejected: Vec<(usize, Rejected)> = Vec::new();
-    // Candidates free of unwanted reactions, by tier: free bodies of one body first, then
-    // of two, and so on. A tier is written out only while the rows so far are not enough,
-    // since writing out a row of a large free body is what costs.
-    let mut tiers: std::collections::BTreeMap<usize, Vec<(usize, Candidate)>> = Default::default();
-    for (index, candidate) in candidates.into_iter().enumerate() {
-        let unwanted: Vec<&Symbol> = candidate
-            .reactions
-            .iter()
-            .filter(|u| !wanted.contains(u))
-            .collect();
-        if unwanted.is_empty() {
-            tiers
-                .entry(candidate.free_body.len())
-                .or_default()
-                .push((index, candidate));
-        } else {
-            let reason = unwanted_reason(&unwanted);
-            rejected.push((index, Rejected { candidate, reason }));
-        }
-    }
-    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
-    // The constraint rows are always in: the free bodies' rows complete them.
-    for row in given {
-        adds_rank_everywhere(&mut bases, row, wanted, states);
-    }
-    let mut chosen: Vec<(usize, Equation)> = Vec::new();
-    for (_, tier) in tiers {
-        if bases[0].len() == wanted.len() {
-            for (index, candidate) in tier {
-                let reason =
-                    "not needed: the rows chosen already determine every unknown".to_string();
-                rejected.push((index, Rejected { candidate, reason }));
-            }
-            continue;
-        }
-        let mut written: Vec<(usize, Candidate, Equation)> = tier
-            .into_iter()
-            .map(|(index, candidate)| {
-                let equation = written_before
-                    .entry(index)
-                    .or_insert_with(|| write_out(model, actions, inertia, &candidate, wanted))
-                    .clone();
-                (index, candidate, equation)
-            })
-            .collect();
-        // Sparse rows first (fewest unknowns), then the fewest terms.
-        written
-            .sort_by_cached_key(|(i, _, e)| (e.unknowns.len(), e.expression.operation_count(), *i));
-        for (index, candidate, equation) in written {
-            let reason = if equation.unknowns.is_empty() {
-                Some("contains no unknown".to_string())
-            } else if bases[0].len() == wanted.len() {
-                Some("not needed: the rows chosen already determine every unknown".to_string())
-            } else if !adds_rank_everywhere(&mut bases, &equation, wanted, states) {
-                Some("adds nothing new: it follows from the rows already chosen".to_string())
-            } else {
-                None
-            };
-            match reason {
-                Some(reason) => rejected.push((index, Rejected { candidate, reason })),
-                None => chosen.push((index, equation)),
-            }
-        }
-    }
-    chosen.sort_by_key(|(i, _)| *i);
-    rejected.sort_by_key(|(i, _)| *i);
-    Choice {
-        rows: chosen.into_iter().map(|(_, e)| e).collect(),
-        rejected: rejected.into_iter().map(|(_, r)| r).collect(),
-    }
-}
-
-/// Whether a row adds rank at every sample state; the bases grow only when it does.
-fn adds_rank_everywhere(
-    bases: &mut [Vec<Vec<f64>>],
-    equation: &Equation,
-    wanted: &[Symbol],
-    states: &[Values],
-) -> bool {
-    let mut trial: Vec<Vec<Vec<f64>>> = bases.to_vec();
-    let rows = coefficient_rows(equation, wanted, states);
-    for (basis, row) in trial.iter_mut().zip(&rows) {
-        if !adds_rank(basis, row) {
-            return false;
-        }
-    }
-    bases.clone_from_slice(&trial);
-    true
-}
-
-fn unwanted_reason(unwanted: &[&Symbol]) -> String {
-    let mut joints: Vec<String> = Vec::new();
-    for u in unwanted {
-        if let Symbol::Unknown(name) = u {
-            let joint = name.split('.').next().unwrap_or(name).to_string();
-            if !joints.contains(&joint) {
-                joints.push(joint);
-            }
-        }
-    }
-    let list: Vec<String> = unwanted.iter().map(|u| u.to_string()).collect();
-    let place = if joints.len() == 1 {
-        format!("the reaction at {}", joints[0])
-    } else {
-        format!("the reactions at {}", joints.join(", "))
-    };
-    format!("brings in {place} ({})", list.join(", "))
 }

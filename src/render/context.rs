@@ -193,8 +193,14 @@ pub struct Named {
 pub struct Plan {
     /// The equations used, in order.
     pub rows: Vec<PlanRow>,
-    /// Candidate equations considered and not used.
+    /// Candidate equations considered and not used: the few worth showing, or every one
+    /// after [`Plan::show_every_rejected`].
     pub rejected: Vec<Rejected>,
+    /// How many candidates were considered and not used in all.
+    pub rejected_total: usize,
+    /// Every candidate considered and not used (`explain --verbose` shows them).
+    #[serde(skip)]
+    pub rejected_all: Vec<Rejected>,
     /// How many equations the rows give.
     pub equations_count: usize,
     /// How many unknowns they contain.
@@ -225,8 +231,19 @@ pub struct Rejected {
     pub equation: String,
     /// Its direction.
     pub direction_tex: String,
-    /// Why it was not used, e.g. `brings in F^O_x, not otherwise needed`.
+    /// Why it was not used (plain text), e.g. `brings in the reaction at P`.
     pub reason: String,
+    /// The reaction components it names, if any, e.g. `F^{P}_{x}, F^{P}_{y}`.
+    pub reason_tex: String,
+    /// Plain text after them, e.g. `, which is not asked for`.
+    pub reason_after: String,
+}
+
+impl Plan {
+    /// Shows every rejected candidate instead of the few worth showing.
+    pub fn show_every_rejected(&mut self) {
+        self.rejected = self.rejected_all.clone();
+    }
 }
 
 /// Step 4 for one body.

@@ -199,7 +199,7 @@ pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
     best.map(|(_, w)| vector_tex(model, &w)).unwrap_or_default()
 }
 
-fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
+pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
     bodies
         .iter()
         .map(|b| problem.body_name(*b).to_string())
@@ -307,7 +307,7 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
-fn sum_text(sum: &Sum) -> String {
+pub(super) fn sum_text(sum: &Sum) -> String {
     match sum {
         Sum::Force => "F".into(),
         Sum::Moment { point, .. } => format!("M about {point}"),
@@ -346,27 +346,35 @@ pub fn plan(derivation: &Derivation) -> Plan {
             unknowns_tex: unknowns_tex(&row.unknowns),
         })
         .collect();
-    let rejected = derivation
+    let rejected_all: Vec<RejectedView> = derivation
         .rejected
         .iter()
-        .map(|r| RejectedView {
-            free_body: bodies_name(problem, &r.candidate.free_body),
-            equation: sum_text(&r.candidate.sum),
-            direction_tex: r.candidate.direction.latex.clone(),
-            reason: r.reason.clone(),
-        })
+        .map(|r| super::rejected::view(derivation, r))
+        .collect();
+    let rejected = crate::plan::rejection::highlights(&derivation.model, &derivation.rejected)
+        .into_iter()
+        .map(|i| rejected_all[i].clone())
         .collect();
     let note = match derivation.method {
         Method::NewtonEuler => format!(
             "Every body is a free body: {} equations per body; the unknowns are every second derivative and every reaction component.",
             if problem.dimension == crate::problem::Dimension::Two { 3 } else { 6 }
         ),
-        Method::MotionLaw => "Rows are chosen so that no unwanted reaction appears: sparse rows first, then the fewest terms, each adding a new equation.".into(),
+        Method::MotionLaw => {
+            let order = super::rejected::order_note(derivation);
+            let mut note = "Rows are chosen so that no unwanted reaction appears, free bodies of one body or of several together; the fewest new unknowns at a time, then the fewest terms, each adding a new equation.".to_string();
+            if !order.is_empty() {
+                note = format!("{note} {order}");
+            }
+            note
+        }
         Method::Kane => "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".into(),
     };
     Plan {
         rows,
+        rejected_total: rejected_all.len(),
         rejected,
+        rejected_all,
         equations_count: derivation.rows.len(),
         unknowns_count: derivation.system.unknowns.len(),
         note,

@@ -21,6 +21,7 @@ pub mod matrix;
 pub mod mode_shape;
 pub mod plot;
 mod prepare;
+pub mod rejected;
 pub mod sample;
 pub mod simulation;
 

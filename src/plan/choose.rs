@@ -1,0 +1,494 @@
+//! Choosing the rows of the Motion Law from the candidates: a square set, nonsingular at
+//! every sample state, with no unwanted reaction. Where one exists, the plan is
+//! block-triangular: each block of rows brings in as many new unknowns as it has rows
+//! (one, when it can), so that a student solves the rows in order, a few unknowns at a time.
+
+use super::planner::{adds_rank, coefficient_rows, sample_states, write_out, Candidate};
+use super::rejection::{self, Reason, Rejected, SpecialState};
+use crate::equations::rows::{Equation, Inertia};
+use crate::mechanics::Model;
+use crate::plan::forces::Action;
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::{Expr, Symbol};
+use std::collections::HashMap;
+use std::f64::consts::FRAC_PI_2;
+
+/// The chosen rows and the rejected candidates.
+#[derive(Clone, Debug)]
+pub struct Choice {
+    /// Chosen rows, the constraint rows among them, in the order a student solves them.
+    pub rows: Vec<Equation>,
+    /// Rejected candidates with their reasons, in the order of the candidates.
+    pub rejected: Vec<Rejected>,
+}
+
+/// A sample state, and whether it is a special one (`None`: generic).
+type Sample = (Values, Option<SpecialState>);
+
+/// Rows written out, with their coefficients, by candidate (`false`) or constraint row
+/// (`true`) index: writing out and splitting a row is what costs, and the attempts share it.
+type Written = HashMap<(bool, usize), (Equation, Option<Vec<Expr>>)>;
+
+/// Chooses the rows: wanted unknowns only; a block-triangular set when there is one, else
+/// sparse rows first and the fewest terms, each adding rank. `given` (the constraint rows)
+/// are always among the rows. `required` are states the caller will solve at.
+pub fn choose(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    candidates: Vec<Candidate>,
+    wanted: &[Symbol],
+    given: &[Equation],
+    required: &[Values],
+) -> Choice {
+    let states: Vec<Sample> = sample_states(model)
+        .into_iter()
+        .enumerate()
+        .map(|(i, v)| (v, (i == 0).then_some(SpecialState::Initial)))
+        .collect();
+    let complete = |choice: &Choice| choice.rows.len() == wanted.len();
+    let mut written = Written::new();
+    let mut attempt = |states: &[Sample]| {
+        choose_at(
+            model,
+            actions,
+            inertia,
+            &candidates,
+            wanted,
+            given,
+            states,
+            &mut written,
+        )
+    };
+    if !required.is_empty() {
+        // States the caller will solve at: plan for them too if a plan can be; otherwise
+        // (the system itself is singular there) plan as usual.
+        let mut more = states.clone();
+        more.extend(
+            required
+                .iter()
+                .map(|v| (v.clone(), Some(SpecialState::Requested))),
+        );
+        let choice = attempt(&more);
+        if complete(&choice) {
+            return choice;
+        }
+    }
+    let choice = attempt(&states);
+    if complete(&choice) {
+        // Rows that are independent at generic states can still fail together at special
+        // ones: all q = 0 (often the equilibrium a student linearizes about) or a quarter
+        // turn. A pendulum's `M about bob*` with `F along N.x` loses the vertical pin force
+        // at q = 0. Plan again with those states too (both, else the first), and keep the
+        // new plan if there is one: some systems are singular there whatever the rows.
+        let special: Vec<Sample> = [
+            (0.0, SpecialState::AllZero),
+            (FRAC_PI_2, SpecialState::QuarterTurn),
+        ]
+        .into_iter()
+        .map(|(q, kind)| (uniform_state(model, q), Some(kind)))
+        .collect();
+        // The cheap test first: the kinematics are looked at only for a plan that fails.
+        let values: Vec<Values> = special.iter().map(|(v, _)| v.clone()).collect();
+        let full = full_rank_at(&choice.rows, wanted, &values);
+        if special
+            .iter()
+            .zip(&full)
+            .any(|((state, _), full)| !full && rates_are_independent(model, state))
+        {
+            let special: Vec<Sample> = special
+                .into_iter()
+                .filter(|(state, _)| rates_are_independent(model, state))
+                .collect();
+            for count in (1..=special.len()).rev() {
+                let mut more = states.clone();
+                more.extend(special[..count].iter().cloned());
+                let again = attempt(&more);
+                if complete(&again) {
+                    return again;
+                }
+            }
+        }
+        return choice;
+    }
+    // The initial state itself may be singular (gimbal lock, say): plan on generic states.
+    attempt(&states[1..])
+}
+
+/// Whether no combination of the rates leaves every body still at `state`: the columns of
+/// the map from the rates to the bodies' velocities and angular velocities are independent.
+/// Euler angles in gimbal lock fail this, and then no choice of rows can be nonsingular.
+fn rates_are_independent(model: &Model, state: &Values) -> bool {
+    let problem = model.problem;
+    let rates: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 1))
+        .collect();
+    let mut columns = vec![Vec::new(); rates.len()];
+    for &body in &model.order {
+        let b = &model.bodies[body.0];
+        let velocity = b.center.velocity.components_in(body, &model.frames);
+        let omega = b.omega.components_in(body, &model.frames);
+        for component in velocity.iter().chain(&omega) {
+            let Ok((coefficients, _)) = linear_split(component, &rates) else {
+                return true; // not linear in the rates: no verdict
+            };
+            for (column, c) in columns.iter_mut().zip(&coefficients) {
+                column.push(eval(c, state));
+            }
+        }
+    }
+    let mut basis = Vec::new();
+    columns.iter().all(|column| adds_rank(&mut basis, column))
+}
+
+/// Every coordinate at `q`, the rates as given initially.
+fn uniform_state(model: &Model, q: f64) -> Values {
+    let coordinates = &model.problem.coordinates;
+    let rates: Vec<f64> = coordinates.iter().map(|c| c.rate).collect();
+    model.values_at(0.0, &vec![q; coordinates.len()], &rates)
+}
+
+/// For each of `states`, whether `rows` determine every one of `wanted` there (each row
+/// is split into its coefficients once for all the states).
+fn full_rank_at(rows: &[Equation], wanted: &[Symbol], states: &[Values]) -> Vec<bool> {
+    let mut bases = vec![Vec::new(); states.len()];
+    let mut full = vec![true; states.len()];
+    for row in rows {
+        let coefficients = coefficient_rows(row, wanted, states);
+        for ((basis, full), row) in bases.iter_mut().zip(&mut full).zip(&coefficients) {
+            *full = *full && adds_rank(basis, row);
+        }
+    }
+    full
+}
+
+/// A row the planner may use: a candidate's or a constraint row.
+struct Row {
+    /// The candidate's index, or `None` for a constraint row.
+    candidate: Option<usize>,
+    equation: Equation,
+    /// The unknowns it contains, as indices of `wanted`.
+    unknowns: Vec<usize>,
+    /// Its coefficients of the unknowns at each state.
+    coefficients: Vec<Vec<f64>>,
+    /// Preference: constraint rows first (they are always in), then fewest unknowns, then
+    /// fewest terms, then the candidates' order.
+    key: (bool, usize, usize, usize),
+}
+
+/// Why a row could not join a set of rows.
+enum Fails {
+    /// At a generic state: it follows from them.
+    Everywhere,
+    /// Only at a special state.
+    At(SpecialState),
+}
+
+/// Whether the row `coefficients` (restricted to `columns` when given) adds rank at every
+/// state; the bases grow only when it does.
+fn try_add(
+    bases: &mut [Vec<Vec<f64>>],
+    coefficients: &[Vec<f64>],
+    columns: Option<&[usize]>,
+    states: &[Sample],
+) -> Result<(), Fails> {
+    let mut trial: Vec<Vec<Vec<f64>>> = bases.to_vec();
+    let mut special = None;
+    for ((basis, row), (_, kind)) in trial.iter_mut().zip(coefficients).zip(states) {
+        let restricted: Vec<f64> = match columns {
+            Some(columns) => {
+                let part: Vec<f64> = columns.iter().map(|&c| row[c]).collect();
+                // A part that is round-off beside the whole row is no pivot.
+                let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+                if norm(&part) <= 1e-10 * norm(row) {
+                    vec![0.0; part.len()]
+                } else {
+                    part
+                }
+            }
+            None => row.clone(),
+        };
+        if !adds_rank(basis, &restricted) {
+            match kind {
+                None => return Err(Fails::Everywhere),
+                Some(kind) => special = special.or(Some(*kind)),
+            }
+        }
+    }
+    if let Some(kind) = special {
+        return Err(Fails::At(kind));
+    }
+    bases.clone_from_slice(&trial);
+    Ok(())
+}
+
+#[allow(clippy::too_many_arguments)]
+fn choose_at(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    candidates: &[Candidate],
+    wanted: &[Symbol],
+    given: &[Equation],
+    states: &[Sample],
+    written: &mut Written,
+) -> Choice {
+    let values: Vec<Values> = states.iter().map(|(v, _)| v.clone()).collect();
+    let mut rejected: Vec<(usize, Rejected)> = Vec::new();
+    let mut rows: Vec<Row> = Vec::new();
+    let make_row = |candidate: Option<usize>,
+                    rows_before: usize,
+                    equation: &Equation,
+                    split: &Option<Vec<Expr>>| {
+        let unknowns: Vec<usize> = (0..wanted.len())
+            .filter(|&i| equation.unknowns.contains(&wanted[i]))
+            .collect();
+        let coefficients = match split {
+            Some(c) => values
+                .iter()
+                .map(|v| c.iter().map(|c| eval(c, v)).collect())
+                .collect(),
+            None => vec![vec![f64::NAN; wanted.len()]; values.len()],
+        };
+        let key = match candidate {
+            Some(index) => (
+                true,
+                unknowns.len(),
+                equation.expression.operation_count(),
+                index,
+            ),
+            None => (false, 0, 0, rows_before),
+        };
+        Row {
+            candidate,
+            equation: equation.clone(),
+            unknowns,
+            coefficients,
+            key,
+        }
+    };
+    let split = |equation: &Equation| linear_split(&equation.expression, wanted).ok().map(|c| c.0);
+    for (i, row) in given.iter().enumerate() {
+        let (equation, coefficients) = written
+            .entry((true, i))
+            .or_insert_with(|| (row.clone(), split(row)));
+        rows.push(make_row(None, i, equation, coefficients));
+    }
+    for (index, candidate) in candidates.iter().enumerate() {
+        let unwanted: Vec<Symbol> = candidate
+            .reactions
+            .iter()
+            .filter(|u| !wanted.contains(u))
+            .cloned()
+            .collect();
+        if !unwanted.is_empty() {
+            let reason = rejection::unwanted(model, &unwanted);
+            let candidate = candidate.clone();
+            rejected.push((index, Rejected { candidate, reason }));
+            continue;
+        }
+        let (equation, coefficients) = written.entry((false, index)).or_insert_with(|| {
+            let equation = write_out(model, actions, inertia, candidate, wanted);
+            let coefficients = split(&equation);
+            (equation, coefficients)
+        });
+        if equation.unknowns.is_empty() {
+            let candidate = candidate.clone();
+            let reason = Reason::NoUnknown;
+            rejected.push((index, Rejected { candidate, reason }));
+            continue;
+        }
+        rows.push(make_row(Some(index), 0, equation, coefficients));
+    }
+    rows.sort_by_key(|r| r.key);
+    let mut failed: HashMap<usize, Fails> = HashMap::new();
+    let order = triangular(&rows, wanted.len(), states, &mut failed)
+        .unwrap_or_else(|| any_square(&rows, wanted.len(), states, &mut failed));
+    let mut used = vec![false; rows.len()];
+    order.iter().for_each(|&r| used[r] = true);
+    let chosen: Vec<&Row> = order.iter().map(|&r| &rows[r]).collect();
+    for (r, row) in rows.iter().enumerate().filter(|(r, _)| !used[*r]) {
+        let Some(index) = row.candidate else { continue };
+        let duplicate = chosen
+            .iter()
+            .position(|c| parallel(&c.coefficients, &row.coefficients));
+        let reason = match (duplicate, failed.get(&r)) {
+            (Some(row), _) => Reason::Duplicate { row },
+            (None, Some(Fails::At(kind))) => Reason::SingularAt(*kind),
+            (None, Some(Fails::Everywhere)) => Reason::Redundant,
+            (None, None) => Reason::NotNeeded,
+        };
+        let candidate = candidates[index].clone();
+        rejected.push((index, Rejected { candidate, reason }));
+    }
+    rejected.sort_by_key(|(i, _)| *i);
+    Choice {
+        rows: chosen.into_iter().map(|r| r.equation.clone()).collect(),
+        rejected: rejected.into_iter().map(|(_, r)| r).collect(),
+    }
+}
+
+/// Whether two rows of coefficients are multiples of each other at every state.
+fn parallel(a: &[Vec<f64>], b: &[Vec<f64>]) -> bool {
+    a.iter().zip(b).all(|(a, b)| {
+        let dot: f64 = a.iter().zip(b).map(|(x, y)| x * y).sum();
+        let na = a.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let nb = b.iter().map(|x| x * x).sum::<f64>().sqrt();
+        na > 0.0 && nb > 0.0 && (dot.abs() - na * nb).abs() <= 1e-9 * na * nb
+    })
+}
+
+/// The old way, when no block-triangular plan exists: rows in order of preference, each
+/// kept when it adds rank at every state; the order of the candidates, the constraint rows
+/// last.
+fn any_square(
+    rows: &[Row],
+    n: usize,
+    states: &[Sample],
+    failed: &mut HashMap<usize, Fails>,
+) -> Vec<usize> {
+    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
+    let mut order = Vec::new();
+    for (r, row) in rows.iter().enumerate() {
+        if bases.iter().all(|b| b.len() == n) {
+            break;
+        }
+        match try_add(&mut bases, &row.coefficients, None, states) {
+            Ok(()) => order.push(r),
+            Err(fails) => {
+                failed.insert(r, fails);
+            }
+        }
+    }
+    order.sort_by_key(|&r| (rows[r].candidate.is_none(), rows[r].candidate));
+    order
+}
+
+/// A block-triangular plan, as indices of `rows` in the order they are solved: blocks
+/// taken one after another, each the smallest set of rows that brings in exactly as many
+/// new unknowns as it has rows and determines them at every state. `None` when the blocks
+/// run out before every unknown is found, or leave a constraint row out.
+fn triangular(
+    rows: &[Row],
+    n: usize,
+    states: &[Sample],
+    failed: &mut HashMap<usize, Fails>,
+) -> Option<Vec<usize>> {
+    let mut known = vec![false; n];
+    let mut used = vec![false; rows.len()];
+    let mut order = Vec::new();
+    while known.iter().any(|k| !k) {
+        let new = |r: usize| -> Vec<usize> {
+            rows[r]
+                .unknowns
+                .iter()
+                .copied()
+                .filter(|&u| !known[u])
+                .collect()
+        };
+        let open: Vec<(usize, Vec<usize>)> = (0..rows.len())
+            .filter(|&r| !used[r])
+            .map(|r| (r, new(r)))
+            .filter(|(_, new)| !new.is_empty())
+            .collect();
+        let mut seeds: Vec<&(usize, Vec<usize>)> = open.iter().collect();
+        // The smallest blocks first; among them, those that find the earliest unknowns
+        // (the q'' before the reactions, as a student goes), then the preferred rows.
+        seeds.sort_by_key(|(r, new)| (new.len(), new.iter().min().copied(), *r));
+        let mut best: Option<(Vec<usize>, HashMap<usize, Fails>)> = None;
+        for (_, seed_new) in seeds {
+            if best.as_ref().is_some_and(|b| b.0.len() <= seed_new.len()) {
+                break;
+            }
+            let mut set: Vec<usize> = seed_new.clone();
+            loop {
+                if best.as_ref().is_some_and(|b| b.0.len() <= set.len()) {
+                    break;
+                }
+                let inside: Vec<usize> = open
+                    .iter()
+                    .filter(|(_, new)| new.iter().all(|u| set.contains(u)))
+                    .map(|(r, _)| *r)
+                    .collect();
+                if inside.len() >= set.len() {
+                    let mut passed_over = HashMap::new();
+                    if let Some(block) = block(rows, &inside, &set, states, &mut passed_over) {
+                        best = Some((block, passed_over));
+                        break;
+                    }
+                }
+                // Grow by the row that brings in the fewest unknowns more.
+                let next = open
+                    .iter()
+                    .filter(|(r, _)| !inside.contains(r))
+                    .min_by_key(|(r, new)| (new.iter().filter(|u| !set.contains(u)).count(), *r));
+                let Some((_, more)) = next else { break };
+                set.extend(more.iter().copied());
+                set.sort();
+                set.dedup();
+            }
+        }
+        let (mut block, passed_over) = best?;
+        // Only the rows passed over for the block chosen have a reason to show.
+        failed.extend(passed_over);
+        // Within a block, the free bodies' rows in the candidates' order, then the
+        // constraint rows.
+        block.sort_by_key(|&r| (rows[r].candidate.is_none(), rows[r].candidate, r));
+        for &r in &block {
+            used[r] = true;
+            rows[r].unknowns.iter().for_each(|&u| known[u] = true);
+        }
+        order.extend(block);
+    }
+    let every_constraint_row = (0..rows.len()).all(|r| used[r] || rows[r].candidate.is_some());
+    every_constraint_row.then_some(order)
+}
+
+/// `set.len()` rows of `inside` (in order of preference) that determine the unknowns `set`
+/// at every state, once those found before are known.
+fn block(
+    rows: &[Row],
+    inside: &[usize],
+    set: &[usize],
+    states: &[Sample],
+    failed: &mut HashMap<usize, Fails>,
+) -> Option<Vec<usize>> {
+    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
+    let mut taken = Vec::new();
+    for &r in inside {
+        match try_add(&mut bases, &rows[r].coefficients, Some(set), states) {
+            Ok(()) => taken.push(r),
+            Err(fails) => {
+                failed.insert(r, fails);
+            }
+        }
+        if taken.len() == set.len() {
+            return Some(taken);
+        }
+    }
+    None
+}
+
+/// The blocks of `rows` in the order given, by their sizes: a block ends as soon as its
+/// rows bring in as many new unknowns (of `unknowns`) as it has rows. A plan that is not
+/// block-triangular is one block; `None` when the rows bring in fewer unknowns than rows.
+pub fn blocks(rows: &[Equation], unknowns: &[Symbol]) -> Option<Vec<usize>> {
+    let mut known: Vec<&Symbol> = Vec::new();
+    let (mut sizes, mut open) = (Vec::new(), 0);
+    for row in rows {
+        open += 1;
+        for u in row.unknowns.iter().filter(|u| unknowns.contains(u)) {
+            if !known.contains(&u) {
+                known.push(u);
+            }
+        }
+        if known.len() == sizes.iter().sum::<usize>() + open {
+            sizes.push(open);
+            open = 0;
+        } else if known.len() < sizes.iter().sum::<usize>() + open {
+            return None;
+        }
+    }
+    (open == 0).then_some(sizes)
+}

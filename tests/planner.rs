@@ -1,0 +1,226 @@
+//! The Motion Law's planner: groups of bodies as free bodies, plans solved one block of
+//! unknowns at a time, and the rejected candidates the worked solution shows.
+
+use crate::support::{problem, run};
+use mbd_tutor::equations::rows::{Equation, Sum};
+use mbd_tutor::equations::system::reaction_unknowns;
+use mbd_tutor::equations::{derive, Derivation, Method};
+use mbd_tutor::plan::choose::blocks;
+use mbd_tutor::plan::rejection::{Reason, SHOWN};
+use mbd_tutor::problem::load_file;
+use mbd_tutor::render::derived::plan;
+
+/// `(free body, equation, unknowns)` of each row, as the plan's table names them.
+fn rows(derivation: &Derivation) -> Vec<(String, String, Vec<String>)> {
+    let problem = derivation.model.problem;
+    derivation
+        .rows
+        .iter()
+        .map(|row: &Equation| {
+            let bodies: Vec<&str> = row
+                .free_body
+                .iter()
+                .map(|&b| problem.body_name(b))
+                .collect();
+            let equation = match &row.sum {
+                Sum::Moment { point, .. } => format!("M about {point}"),
+                Sum::Force => "F".into(),
+                Sum::Constraint { name } => format!("constraint {name}"),
+                Sum::Generalized { speed } => format!("generalized {speed}"),
+            };
+            let unknowns = row.unknowns.iter().map(|u| u.to_string()).collect();
+            (bodies.join(" + "), equation, unknowns)
+        })
+        .collect()
+}
+
+fn motion_law(name: &str) -> mbd_tutor::problem::Problem {
+    load_file(&problem(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+fn q_dd(problem: &mbd_tutor::problem::Problem, i: usize) -> String {
+    problem.coordinate_symbol(i, 2).to_string()
+}
+
+/// The reaction components of the joint named `name`.
+fn reactions_at(derivation: &Derivation, name: &str) -> Vec<String> {
+    let model = &derivation.model;
+    let site = (0..model.sites.len())
+        .find(|&j| model.sites[j].name == name)
+        .expect("the joint");
+    reaction_unknowns(model, &[site])
+        .iter()
+        .map(|s| s.to_string())
+        .collect()
+}
+
+#[test]
+fn the_double_pendulum_takes_both_rods_about_o_free_of_every_reaction() {
+    let problem = motion_law("double-pendulum-rods");
+    let derivation = derive(&problem, Method::MotionLaw).expect("derives");
+    let rows = rows(&derivation);
+    // Moments of A + B about O: the pin force at O has no moment there and the one at P
+    // is internal, so only q1'' and q2'' remain.
+    let about_o = rows
+        .iter()
+        .find(|(body, equation, _)| body == "A + B" && equation == "M about O")
+        .unwrap_or_else(|| panic!("no A + B about O in {rows:?}"));
+    assert_eq!(about_o.2, vec![q_dd(&problem, 0), q_dd(&problem, 1)]);
+    // Then B about P for the second q'', and one new pin force per row.
+    assert_eq!(
+        rows.iter()
+            .map(|(b, e, _)| format!("{b}: {e}"))
+            .collect::<Vec<_>>(),
+        ["A + B: M about O", "B: M about P", "A + B: F", "A + B: F"]
+    );
+    assert_eq!(
+        blocks(&derivation.rows, &derivation.system.unknowns),
+        Some(vec![2, 1, 1])
+    );
+}
+
+#[test]
+fn the_four_bar_takes_crank_and_coupler_about_o() {
+    let problem = motion_law("four-bar");
+    let derivation = derive(&problem, Method::MotionLaw).expect("derives");
+    let rows = rows(&derivation);
+    let about_o = rows
+        .iter()
+        .find(|(body, equation, _)| body == "A + B" && equation == "M about O")
+        .unwrap_or_else(|| panic!("no A + B about O in {rows:?}"));
+    // The pin force at O has no moment about O; the one at P is internal.
+    let at_o = reactions_at(&derivation, "O");
+    let at_p = reactions_at(&derivation, "P");
+    assert!(
+        about_o
+            .2
+            .iter()
+            .all(|u| !at_o.contains(u) && !at_p.contains(u)),
+        "{about_o:?}"
+    );
+    // No group holds both ends of the closure R (B and C): its rows would hold on the
+    // closed loop alone, not at every state the other methods are compared at.
+    assert!(
+        rows.iter()
+            .all(|(body, _, _)| !(body.contains('B') && body.contains('C'))),
+        "{rows:?}"
+    );
+    let sizes = blocks(&derivation.rows, &derivation.system.unknowns).expect("a square plan");
+    assert_eq!(sizes.iter().sum::<usize>(), derivation.rows.len());
+    assert!(sizes.len() > 1, "solved in order: {sizes:?}");
+}
+
+#[test]
+fn the_spatial_arm_is_solved_one_unknown_per_row() {
+    let problem = motion_law("arm-3d-rrp");
+    let derivation = derive(&problem, Method::MotionLaw).expect("derives");
+    let n = derivation.rows.len();
+    assert_eq!(
+        blocks(&derivation.rows, &derivation.system.unknowns),
+        Some(vec![1; n]),
+        "{:?}",
+        rows(&derivation)
+    );
+    let shown = plan(&derivation);
+    assert!(
+        shown
+            .note
+            .contains("Each equation introduces one new unknown"),
+        "{}",
+        shown.note
+    );
+}
+
+/// Internal names of reaction components, like `P.Fx` or `U.M1`.
+fn internal_name(text: &str) -> Option<&str> {
+    let bytes = text.as_bytes();
+    (1..bytes.len().saturating_sub(1)).find_map(|i| {
+        let named = bytes[i] == b'.'
+            && bytes[i - 1].is_ascii_alphanumeric()
+            && matches!(bytes[i + 1], b'F' | b'M');
+        named.then(|| &text[i.saturating_sub(3)..(i + 4).min(text.len())])
+    })
+}
+
+#[test]
+fn the_handout_shows_a_few_rejected_candidates_in_a_students_notation() {
+    for path in crate::support::all_problems() {
+        let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let derivation = derive(&problem, Method::MotionLaw).expect("derives");
+        let shown = plan(&derivation);
+        assert!(
+            shown.rejected.len() <= SHOWN,
+            "{}: {} shown",
+            path.display(),
+            shown.rejected.len()
+        );
+        assert_eq!(shown.rejected_total, derivation.rejected.len());
+        assert_eq!(shown.rejected_all.len(), derivation.rejected.len());
+        for r in &shown.rejected {
+            for text in [&r.free_body, &r.equation, &r.reason, &r.reason_after] {
+                assert_eq!(internal_name(text), None, "{}: {text}", path.display());
+            }
+        }
+        // A reason that names reactions names them in math, and the sites by name.
+        for r in &derivation.rejected {
+            if let Reason::UnwantedReactions { sites, reactions } = &r.reason {
+                assert!(
+                    !sites.is_empty() && !reactions.is_empty(),
+                    "{}",
+                    path.display()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_rejected_reason_names_the_reaction_at_the_next_joint() {
+    let problem = motion_law("double-pendulum-rods");
+    let derivation = derive(&problem, Method::MotionLaw).expect("derives");
+    let shown = plan(&derivation);
+    let a_about_o = shown
+        .rejected
+        .iter()
+        .find(|r| r.free_body == "A" && r.equation == "M about O")
+        .unwrap_or_else(|| panic!("{:?}", shown.rejected));
+    assert_eq!(a_about_o.reason, "brings in the reaction at P");
+    assert!(a_about_o.reason_tex.contains("F^{P}"), "{a_about_o:?}");
+}
+
+fn candidates_section(page: &str) -> Vec<String> {
+    let start = page.find("Candidates not used").expect("the list");
+    page[start..]
+        .lines()
+        .skip(1)
+        .skip_while(|l| l.trim().is_empty())
+        .take_while(|l| l.starts_with("- "))
+        .map(str::to_string)
+        .collect()
+}
+
+#[test]
+fn explain_verbose_lists_every_rejected_candidate() {
+    let p = problem("double-pendulum-rods");
+    let default = run(&["explain".as_ref(), p.as_os_str()]);
+    let verbose = run(&["explain".as_ref(), p.as_os_str(), "--verbose".as_ref()]);
+    assert!(default.status.success() && verbose.status.success());
+    let (default, verbose) = (
+        String::from_utf8_lossy(&default.stdout).into_owned(),
+        String::from_utf8_lossy(&verbose.stdout).into_owned(),
+    );
+    let problem = load_file(&p).expect("loads");
+    let total = derive(&problem, Method::MotionLaw)
+        .expect("derives")
+        .rejected
+        .len();
+    let few = candidates_section(&default);
+    assert!(!few.is_empty() && few.len() <= SHOWN, "{few:?}");
+    assert!(
+        default.contains(&format!("({} of {total},", few.len())),
+        "the handout says how many there are"
+    );
+    assert!(default.contains("explain --verbose"));
+    assert_eq!(candidates_section(&verbose).len(), total);
+    assert!(verbose.contains("Candidates not used:"));
+}
