@@ -179,7 +179,7 @@ fn auxiliary_rows(
         rows.push(Equation {
             free_body: subtree.clone(),
             sum: Sum::Generalized {
-                speed: format!("u({}.{})", joint.name, component.label),
+                speed: format!("u({}.{})", joint.name, component.component()),
             },
             direction: None,
             unknowns: super::rows::unknowns_in(&expression, unknowns),

@@ -3,7 +3,7 @@
 use super::rows::{Equation, Groups, Inertia, Sum};
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::{MechanicsError, Model};
-use crate::plan::forces::{actions, reaction_symbol, Action};
+use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
 use crate::problem::Problem;
 use crate::symbolic::eval::Values;
@@ -82,9 +82,7 @@ pub fn reaction_unknowns(model: &Model, sites: &[usize]) -> Vec<Symbol> {
         .iter()
         .flat_map(|&j| {
             let site = &model.sites[j];
-            site.reactions
-                .iter()
-                .map(move |c| reaction_symbol(&site.name, &c.label))
+            site.reactions.iter().map(move |c| c.unknown(&site.name))
         })
         .collect()
 }

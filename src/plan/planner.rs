@@ -573,8 +573,11 @@ fn adds_rank_everywhere(
 fn unwanted_reason(unwanted: &[&Symbol]) -> String {
     let mut joints: Vec<String> = Vec::new();
     for u in unwanted {
-        if let Symbol::Unknown(name) = u {
-            let joint = name.split('.').next().unwrap_or(name).to_string();
+        if let Symbol::Unknown(unknown) = u {
+            // A reaction's place is its site; a drive or a multiplier is its own.
+            let joint = unknown
+                .site()
+                .map_or_else(|| unknown.to_string(), str::to_string);
             if !joints.contains(&joint) {
                 joints.push(joint);
             }

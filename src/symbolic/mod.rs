@@ -19,6 +19,8 @@ pub mod simplify;
 pub mod subst;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
-pub use expr::{Definition, Expr, Func, Name, Node, Symbol};
+pub use expr::{
+    Axis, Component, ComponentKind, Definition, Expr, Func, Name, Node, Symbol, Unknown,
+};
 pub use number::Number;
 pub use simplify::simplify;
