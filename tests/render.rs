@@ -308,9 +308,9 @@ fn every_problem_renders_and_its_latex_compiles() {
     for path in problem_files() {
         let problem = mbd_tutor::problem::load_file(&path)
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let solution =
-            mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw)
-                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let worked = mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::MotionLaw)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let solution = mbd_tutor::render::build::solution(&worked);
         for student in [false, true] {
             let html = rendered(&solution, Format::Html, student);
             assert!(

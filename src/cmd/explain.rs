@@ -3,6 +3,7 @@
 
 use crate::cli::Common;
 use crate::output::write_output;
+use crate::pipeline;
 use crate::render::{self, Format, Solution};
 use crate::Error;
 use clap::ValueEnum;
@@ -110,16 +111,19 @@ fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Resu
     let mut solution: Solution = if args.student {
         let mut setup = render::build::setup(&problem, method);
         // The handout shows the system; its free bodies are left to draw.
-        if let Some(drawing) = render::draw::initial_configuration(&problem, method) {
+        if let Some(drawing) = pipeline::derive(&problem, method)
+            .ok()
+            .and_then(|derivation| render::draw::initial_configuration(&derivation))
+        {
             setup.configuration = drawing.figure();
         }
         setup
     } else {
-        render::build::solution(&problem, method)?
+        render::build::solution(&pipeline::work(&problem, method)?)
     };
     if let Some(state) = args.linearize.as_ref().filter(|_| !args.student) {
         let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
-        let linearizer = crate::numeric::linearize::Linearizer::new(&problem, method)?;
+        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&problem, method)?)?;
         let l = linearizer.at(&problem, 0.0, &q, &rates)?;
         solution.linearization = Some(render::linearization::section(&problem, &l));
     }

@@ -5,7 +5,8 @@ use super::solve::{initial_state, Format};
 use crate::cli::Common;
 use crate::numeric::format::fixed;
 use crate::numeric::linearize::modes::{self, Shape};
-use crate::numeric::linearize::{Linearization, Linearizer};
+use crate::numeric::linearize::Linearization;
+use crate::pipeline::{derive, Linearizer};
 use crate::problem::Problem;
 use crate::Error;
 use nalgebra::DMatrix;
@@ -115,7 +116,7 @@ pub fn run(args: Args) -> Result<(), Error> {
     }
     let problem = super::load_with_overrides(&args.common)?;
     let method = super::method(args.common.method);
-    let linearizer = Linearizer::new(&problem, method)?;
+    let linearizer = Linearizer::new(&derive(&problem, method)?)?;
     let report_output = if svg_output.is_some() && args.plot.is_none() {
         None
     } else {

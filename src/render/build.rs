@@ -10,15 +10,14 @@ use crate::numeric::format::fixed;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 
-/// The whole worked solution of `problem` by `method`: step 1 from the problem, steps 2
-/// to 6 from the derivation and the simulation.
-///
-/// # Errors
-/// When the equations cannot be derived or solved at the initial state.
-pub fn solution(problem: &Problem, method: Method) -> Result<Solution, crate::Error> {
-    let mut solution = setup(problem, method);
-    super::derived::fill(&mut solution, problem, method)?;
-    Ok(solution)
+/// The whole worked solution from what the stages gave (`pipeline::work`): step 1 from
+/// the problem, steps 2 to 6 from the derivation, the solution at the initial state and
+/// the simulation.
+pub fn solution(worked: &crate::pipeline::Worked) -> Solution {
+    let derivation = &worked.derivation;
+    let mut solution = setup(derivation.model.problem, derivation.method);
+    super::derived::fill(&mut solution, worked);
+    solution
 }
 
 /// What the problem alone gives: title, statement and step 1 (also the student's handout).
