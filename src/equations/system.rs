@@ -1,10 +1,10 @@
 //! Assembling the chosen rows into the symbolic linear system `A x = b`.
 
-use super::rows::{Equation, Groups, Inertia, Sum};
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
+use crate::plan::rows::{Equation, Groups, Inertia, Sum};
 use crate::problem::Problem;
 use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
@@ -115,7 +115,7 @@ fn constraint_equations(
                     name: row.name.clone(),
                 },
                 direction: None,
-                unknowns: super::rows::unknowns_in(&expression, unknowns),
+                unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
                 groups: Groups {
                     contact: expression.clone(),
                     distance: Expr::zero(),

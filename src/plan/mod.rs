@@ -2,3 +2,4 @@
 
 pub mod forces;
 pub mod planner;
+pub mod rows;

@@ -6,12 +6,12 @@ use super::context::{
     Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution, WholeMatrix,
 };
 use super::long::{by_rates, coefficient_form, LONG_EQUATION};
-use crate::equations::rows::{is_external, Equation, Sum};
 use crate::equations::{Derivation, Method};
 use crate::mechanics::{Model, Vector};
 use crate::numeric::format::fixed;
 use crate::pipeline::Worked;
 use crate::plan::forces::{ActionKind, Category};
+use crate::plan::rows::{is_external, Equation, Sum};
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::named::{as_shown, named_definitions};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};

@@ -6,6 +6,7 @@ pub mod compile;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+pub mod format;
 pub mod hint;
 pub mod horner;
 mod instr;

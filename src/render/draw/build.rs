@@ -3,10 +3,10 @@
 use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
 use super::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use super::shapes;
-use crate::equations::rows::is_external;
 use crate::equations::Derivation;
 use crate::mechanics::joints::ComponentKind;
 use crate::plan::forces::{Action, ActionKind, Source};
+use crate::plan::rows::is_external;
 use crate::problem::{BodyId, ForcePoint, JointKind, LoadKind, PointRef};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
