@@ -52,7 +52,8 @@ pub fn latex_name(name: &str) -> String {
     }
 }
 
-fn latex_name_plain(sub: &str) -> String {
+/// A subscript in LaTeX: digits as they are, a word upright, `a_b` as `a,b`.
+pub(crate) fn latex_name_plain(sub: &str) -> String {
     if sub.chars().all(|c| c.is_ascii_alphanumeric())
         && sub.chars().count() > 1
         && !sub.chars().all(|c| c.is_ascii_digit())

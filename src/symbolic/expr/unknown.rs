@@ -106,7 +106,7 @@ impl Unknown {
 
     /// The name in LaTeX: `F^{O}_{x}`, `Q_{\mathrm{q1}}`, `\lambda_{\mathrm{loop}}`.
     pub fn latex(&self) -> String {
-        use crate::symbolic::print::latex_name;
+        use crate::symbolic::print::{latex_name, latex_name_plain};
         match self {
             Unknown::Reaction { site, component } => format!(
                 "{}^{{{}}}_{{{}}}",
@@ -114,7 +114,10 @@ impl Unknown {
                 latex_name(site),
                 component.axis.subscript()
             ),
-            Unknown::Drive { .. } | Unknown::Multiplier { .. } => latex_name(&self.to_string()),
+            Unknown::Drive { coordinate } => format!("Q_{{{}}}", latex_name_plain(coordinate)),
+            Unknown::Multiplier { constraint } => {
+                format!("\\lambda_{{{}}}", latex_name_plain(constraint))
+            }
         }
     }
 }
@@ -215,6 +218,21 @@ mod tests {
             },
             "lambda_loop",
             "\\lambda_{\\mathrm{loop}}",
+        );
+        // As a name with `_` was printed: the part after the first `_` as the subscript.
+        check(
+            Unknown::Drive {
+                coordinate: "q_1".into(),
+            },
+            "Q_q_1",
+            &crate::symbolic::print::latex_name("Q_q_1"),
+        );
+        check(
+            Unknown::Multiplier {
+                constraint: "2".into(),
+            },
+            "lambda_2",
+            "\\lambda_{2}",
         );
     }
 
