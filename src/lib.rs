@@ -25,7 +25,7 @@
 //!    free-body diagrams, SVG and TikZ).
 //!
 //! [`pipeline`] runs the stages for the commands in [`cmd`] (one thin file each):
-//! `derive`, the [`Solver`](pipeline::Solver) and the [`Linearizer`](pipeline::Linearizer)
+//! `load`, `derive`, the [`Solver`](pipeline::Solver) and the [`Linearizer`](pipeline::Linearizer)
 //! with the one place where a singular plan is planned again, the confirmation checks, and
 //! [`work`](pipeline::work) for `explain`. [`symbolic`] is the computer-algebra core under
 //! all of them.

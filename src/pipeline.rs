@@ -1,12 +1,15 @@
 //! The stages every command runs, one entry each, data flowing one way:
 //!
-//! 1. [`load`]: the problem file and the command line's `--set` → a validated [`Problem`];
-//! 2. [`derive`]: the kinematics, the free bodies, the plan and the equations of one method
+//! 1. [`load`]: the problem file → a validated [`Problem`] (the commands then apply `--set`
+//!    and their size limits);
+//! 2. [`derive()`]: the kinematics, the free bodies, the plan and the equations of one method
 //!    → a [`Derivation`];
 //! 3. [`Solver::new`]: the equations compiled for numbers, with the constraints' assembly;
 //!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
 //!    their exact partial derivatives, for the small motions about any state;
-//! 4. the renderers and exporters read what the stages before them produced.
+//! 4. [`confirm`] checks a simulation against the other methods, and [`work`] runs every
+//!    stage for a worked solution;
+//! 5. the renderers and exporters read what the stages before them produced.
 //!
 //! Recovery lives here and nowhere else: where the Motion Law's plan is singular at a state
 //! at which the system is not (a row's reaction term vanishing there), the solver and the
@@ -24,7 +27,13 @@ use crate::problem::Problem;
 use crate::Error;
 use std::cell::RefCell;
 
-pub use crate::cmd::load_with_overrides as load;
+/// Reads and validates the problem file at `path`.
+///
+/// # Errors
+/// An unreadable file, or every error of an invalid problem with its path and hint.
+pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
+    crate::problem::load_file(path)
+}
 
 /// Derives the equations of `problem` by `method`.
 ///
@@ -291,7 +300,7 @@ impl Linearizer {
     pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
         Ok(Linearizer {
             linear: linearize::Linearizer::new(derivation)?,
-            jacobians: Plans::new(derivation.method, linearize::jacobian(derivation)?),
+            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)?),
         })
     }
 
@@ -318,7 +327,7 @@ impl Linearizer {
         let state = self.jacobians.run(
             problem,
             (t, &q, &rates),
-            |d| linearize::jacobian(d).ok(),
+            |d| linearize::jacobian_of(d).ok(),
             |jacobian| jacobian.at(problem, t, &q, &rates),
         )?;
         self.linear.at(problem, t, &q, &rates, state)

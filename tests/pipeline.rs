@@ -54,7 +54,7 @@ fn a_linearization_where_the_plan_is_singular_is_made_with_a_new_plan() {
     let special = [std::f64::consts::FRAC_PI_2, 0.0, 0.0];
     let rates = [0.2, 1.0, 0.3];
     let motion_law = derive(&problem, Method::MotionLaw).expect("derives");
-    let direct = linearize::jacobian(&motion_law)
+    let direct = linearize::jacobian_of(&motion_law)
         .expect("differentiates")
         .at(&problem, 0.0, &special, &rates);
     assert!(

@@ -38,7 +38,7 @@ pub struct Linearizer {
 ///
 /// # Errors
 /// When an entry has no derivative (`min`, `max` of something that changes).
-pub fn jacobian(derivation: &Derivation) -> Result<Jacobian, Error> {
+pub fn jacobian_of(derivation: &Derivation) -> Result<Jacobian, Error> {
     let model = LinearModel::unconstrained(derivation.model.problem, &derivation.system);
     Ok(Jacobian::new(&model)?)
 }
