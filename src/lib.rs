@@ -3,20 +3,32 @@
 //!
 //! # Steps
 //!
-//! 1. [`problem`]: read the JSON problem and validate it into a typed model.
-//! 2. [`mechanics`]: frames, unit vectors and coordinates (step 1), with the constraints
-//!    (closures, rolling contacts, constraint entries, prescribed motion) and the dependent
-//!    coordinates and rates; the kinematics of every body (step 4).
-//! 3. [`plan`]: the free bodies (step 2) and the planner's table of equations (step 3).
-//! 4. [`equations`]: Newton-Euler, the Motion Law and Kane's method, each giving a linear
-//!    system in the q'' and the reactions (step 5).
-//! 5. [`numeric`]: assembly of the constraints, evaluation, the linear solve, integration and
-//!    its checks (steps 5, 6), and linearization.
-//! 6. [`render`]: the worked solution as Markdown, LaTeX or HTML, and its pictures
-//!    (`render::draw`: the configuration and the free-body diagrams, SVG and TikZ).
+//! Data flows one way, each stage reading what the stages before it produced:
+//! problem → model → plan → equations → numeric → render.
 //!
-//! [`symbolic`] is the computer-algebra core under all of them. [`pipeline`] holds one entry
-//! per stage for the commands, and the one place where a singular plan is planned again.
+//! 1. [`problem`]: read the JSON problem and validate it into a typed
+//!    [`Problem`](problem::Problem), every error at once with its path and a hint.
+//! 2. [`mechanics`]: the model. Frames, unit vectors and coordinates (step 1); the sites
+//!    (joints, closures, rolling contacts) with their reaction components; the constraints
+//!    (closures, rolling contacts, constraint entries, prescribed motion) as rows, with
+//!    the dependent coordinates and rates; the kinematics of every body (step 4).
+//! 3. [`plan`]: every force and couple on every body (step 2, the free bodies), the rows
+//!    of equations ([`plan::rows`]), and the Motion Law planner's table (step 3).
+//! 4. [`equations`]: Newton–Euler, the Motion Law and Kane's method, each a
+//!    [`Derivation`](equations::Derivation) with a linear system `A x = b` (step 5). Its
+//!    unknowns are the q'' and typed [`Unknown`](symbolic::Unknown)s: reaction components
+//!    of sites, drives and multipliers, whose names and LaTeX come from the type.
+//! 5. [`numeric`]: the equations compiled for numbers, the constraints' assembly, the
+//!    linear solve, integration and its checks (steps 5, 6), and linearization.
+//! 6. [`render`]: the worked solution as Markdown, LaTeX or HTML from what the stages gave
+//!    ([`pipeline::Worked`]), and its pictures (`render::draw`: the configuration and the
+//!    free-body diagrams, SVG and TikZ).
+//!
+//! [`pipeline`] runs the stages for the commands in [`cmd`] (one thin file each):
+//! `load`, `derive`, the [`Solver`](pipeline::Solver) and the [`Linearizer`](pipeline::Linearizer)
+//! with the one place where a singular plan is planned again, the confirmation checks, and
+//! [`work`](pipeline::work) for `explain`. [`symbolic`] is the computer-algebra core under
+//! all of them.
 
 pub mod cli;
 pub mod cmd;

@@ -1,19 +1,26 @@
 //! The stages every command runs, one entry each, data flowing one way:
 //!
-//! 1. [`load`]: the problem file and the command line's `--set` → a validated [`Problem`];
-//! 2. [`derive`]: the kinematics, the free bodies, the plan and the equations of one method
+//! 1. [`load`]: the problem file → a validated [`Problem`] (the commands then apply `--set`
+//!    and their size limits);
+//! 2. [`derive()`]: the kinematics, the free bodies, the plan and the equations of one method
 //!    → a [`Derivation`];
 //! 3. [`Solver::new`]: the equations compiled for numbers, with the constraints' assembly;
-//!    a [`Solver`] is a [`System`] that solves, simulates and checks;
-//! 4. the renderers and exporters read what the stages before them produced.
+//!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
+//!    their exact partial derivatives, for the small motions about any state;
+//! 4. [`confirm`] checks a simulation against the other methods, and [`work`] runs every
+//!    stage for a worked solution;
+//! 5. the renderers and exporters read what the stages before them produced.
 //!
 //! Recovery lives here and nowhere else: where the Motion Law's plan is singular at a state
-//! at which the system is not (a row's reaction term vanishing there), the solver plans
-//! again for that state and goes on, for every command alike.
+//! at which the system is not (a row's reaction term vanishing there), the solver and the
+//! linearizer plan again for that state and go on, for every command alike.
 
 use crate::equations::system::{derive_at, State};
 use crate::equations::{Derivation, Method};
+use crate::numeric::checks::{self, Check};
 use crate::numeric::evaluate::{Compiled, StateSolution};
+use crate::numeric::linearize::{self, Linearization};
+use crate::numeric::simulate::{simulate, Trajectory};
 use crate::numeric::system::{Evaluation, System};
 use crate::numeric::SolveError;
 use crate::problem::Problem;
@@ -21,7 +28,13 @@ use crate::symbolic::budget;
 use crate::Error;
 use std::cell::RefCell;
 
-pub use crate::cmd::load_with_overrides as load;
+/// Reads and validates the problem file at `path`.
+///
+/// # Errors
+/// An unreadable file, or every error of an invalid problem with its path and hint.
+pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
+    crate::problem::load_file(path)
+}
 
 /// Derives the equations of `problem` by `method`.
 ///
@@ -44,43 +57,123 @@ fn derive_within_budget<'p>(
     Ok(derivation?)
 }
 
-/// Compiled equations that plan again where their plan is singular.
-pub struct Solver<'p> {
-    problem: &'p Problem,
-    method: Method,
-    /// The plan of the derivation first, then any plans made for special states.
-    plans: RefCell<Vec<Compiled>>,
+/// The confirmation checks of a run of `solver` from `q0` (see
+/// [`numeric::checks::confirm`](crate::numeric::checks::confirm)), the other two methods
+/// derived and solved through this pipeline, with the same recovery.
+pub fn confirm(
+    problem: &Problem,
+    solver: &Solver,
+    trajectory: &Trajectory,
+    q0: &[f64],
+) -> Vec<Check> {
+    let derived: Vec<(Method, Result<Derivation, String>)> = Method::ALL
+        .iter()
+        .filter(|m| **m != solver.method())
+        .map(|&m| (m, derive(problem, m).map_err(|e| e.to_string())))
+        .collect();
+    let solvers: Vec<(Method, Result<Solver, String>)> = derived
+        .iter()
+        .map(|(m, d)| {
+            (
+                *m,
+                d.as_ref()
+                    .map(|d| Solver::new(problem, d))
+                    .map_err(Clone::clone),
+            )
+        })
+        .collect();
+    let others: Vec<(&str, Result<&dyn System, String>)> = solvers
+        .iter()
+        .map(|(m, s)| {
+            (
+                m.name(),
+                s.as_ref().map(|s| s as &dyn System).map_err(Clone::clone),
+            )
+        })
+        .collect();
+    checks::confirm(
+        problem,
+        (solver.method().name(), solver),
+        &others,
+        trajectory,
+        q0,
+    )
 }
 
-impl<'p> Solver<'p> {
-    /// Compiles `derivation` for `problem`.
-    pub fn new(problem: &'p Problem, derivation: &Derivation) -> Solver<'p> {
-        Solver {
-            problem,
-            method: derivation.method,
-            plans: RefCell::new(vec![Compiled::new(derivation)]),
+/// Everything the worked solution shows, from every stage: the derivation, its solver, the
+/// initial state (made to meet the constraints) and the solution there, and the simulation
+/// from it with its confirmation checks.
+pub struct Worked<'p> {
+    /// The equations.
+    pub derivation: Derivation<'p>,
+    /// The equations compiled, with the recovery.
+    pub solver: Solver<'p>,
+    /// The initial coordinates, assembled.
+    pub q0: Vec<f64>,
+    /// The initial rates, assembled.
+    pub rates0: Vec<f64>,
+    /// The q'', reactions, drives and energies at the initial state.
+    pub initial: StateSolution,
+    /// The simulation and its checks, or why it could not start.
+    pub simulation: Result<(Trajectory, Vec<Check>), SolveError>,
+}
+
+/// Runs every stage for the worked solution of `problem` by `method` (see [`Worked`]).
+///
+/// # Errors
+/// When the equations cannot be derived, the constraints cannot be met at the initial
+/// state, or the system cannot be solved there. A simulation that cannot run is not an
+/// error: the worked solution says so.
+pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
+    let derivation = derive(problem, method)?;
+    let solver = Solver::new(problem, &derivation);
+    let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    solver.assemble(0.0, &mut q0, &mut rates0)?;
+    let initial = solver.solve(0.0, &q0, &rates0)?;
+    let simulation = simulate(&solver, &q0, &rates0, &problem.simulate).map(|trajectory| {
+        let checks = confirm(problem, &solver, &trajectory, &q0);
+        (trajectory, checks)
+    });
+    Ok(Worked {
+        derivation,
+        solver,
+        q0,
+        rates0,
+        initial,
+        simulation,
+    })
+}
+
+/// What is compiled from a derivation's plan, and from the plans made again for special
+/// states where it is singular: the recovery every compiled form of the equations shares.
+struct Plans<T> {
+    method: Method,
+    /// The plan of the derivation first, then any plans made for special states.
+    plans: RefCell<Vec<T>>,
+}
+
+impl<T> Plans<T> {
+    fn new(method: Method, first: T) -> Plans<T> {
+        Plans {
+            method,
+            plans: RefCell::new(vec![first]),
         }
     }
 
-    /// The method of the equations.
-    pub fn method(&self) -> Method {
-        self.method
-    }
-
-    /// The compiled equations of the derivation's own plan.
-    pub fn compiled(&self) -> std::cell::Ref<'_, Compiled> {
+    fn first(&self) -> std::cell::Ref<'_, T> {
         std::cell::Ref::map(self.plans.borrow(), |plans| &plans[0])
     }
 
     /// Runs `f` on the newest plan; where the system is singular with the Motion Law, plans
-    /// again for this state and runs `f` on the new plan.
-    fn with_plan<T>(
+    /// again for this state, compiles the new plan with `compile` and runs `f` on it.
+    fn run<R>(
         &self,
-        t: f64,
-        q: &[f64],
-        rates: &[f64],
-        f: impl Fn(&Compiled) -> Result<T, SolveError>,
-    ) -> Result<T, SolveError> {
+        problem: &Problem,
+        (t, q, rates): (f64, &[f64], &[f64]),
+        compile: impl Fn(&Derivation) -> Option<T>,
+        f: impl Fn(&T) -> Result<R, SolveError>,
+    ) -> Result<R, SolveError> {
         let first = {
             let plans = self.plans.borrow();
             // Each plan in turn: one made for an earlier special state may suit this one.
@@ -103,15 +196,55 @@ impl<'p> Solver<'p> {
             q: q.to_vec(),
             rates: rates.to_vec(),
         };
-        let Ok(derivation) = derive_within_budget(self.problem, self.method, &[state]) else {
+        let Some(compiled) = derive_within_budget(problem, self.method, &[state])
+            .ok()
+            .and_then(|derivation| compile(&derivation))
+        else {
             return first;
         };
-        let compiled = Compiled::new(&derivation);
         let result = f(&compiled);
         if result.is_ok() {
             self.plans.borrow_mut().push(compiled);
         }
         result
+    }
+}
+
+/// Compiled equations that plan again where their plan is singular.
+pub struct Solver<'p> {
+    problem: &'p Problem,
+    plans: Plans<Compiled>,
+}
+
+impl<'p> Solver<'p> {
+    /// Compiles `derivation` for `problem`.
+    pub fn new(problem: &'p Problem, derivation: &Derivation) -> Solver<'p> {
+        Solver {
+            problem,
+            plans: Plans::new(derivation.method, Compiled::new(derivation)),
+        }
+    }
+
+    /// The method of the equations.
+    pub fn method(&self) -> Method {
+        self.plans.method
+    }
+
+    /// The compiled equations of the derivation's own plan.
+    pub fn compiled(&self) -> std::cell::Ref<'_, Compiled> {
+        self.plans.first()
+    }
+
+    /// Runs `f` on the plan that suits the state (see [`Plans::run`]).
+    fn with_plan<T>(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        f: impl Fn(&Compiled) -> Result<T, SolveError>,
+    ) -> Result<T, SolveError> {
+        self.plans
+            .run(self.problem, (t, q, rates), |d| Some(Compiled::new(d)), f)
     }
 
     /// The q'', reactions, drives and energies at a state (which must meet the constraints).
@@ -162,5 +295,55 @@ impl System for Solver<'_> {
 
     fn has_dissipation_only(&self) -> bool {
         self.compiled().has_dissipation_only()
+    }
+}
+
+/// The linearization of a derivation about any state, with the same recovery as the
+/// [`Solver`]: where the Motion Law's plan is singular at the state, the state matrix comes
+/// from a plan made for it.
+pub struct Linearizer {
+    linear: linearize::Linearizer,
+    jacobians: Plans<linearize::Jacobian>,
+}
+
+impl Linearizer {
+    /// Differentiates and compiles the equations of `derivation`.
+    ///
+    /// # Errors
+    /// When the equations have no derivative (`min`, `max` of something that changes).
+    pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
+        Ok(Linearizer {
+            linear: linearize::Linearizer::new(derivation)?,
+            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)?),
+        })
+    }
+
+    /// The method of the equations.
+    pub fn method(&self) -> Method {
+        self.jacobians.method
+    }
+
+    /// Linearizes about the state `t`, `q`, `rates` (assembled first when there are
+    /// constraints), with the constants of `problem`: the problem derived from, or the
+    /// same with other values of its constants (a sweep).
+    ///
+    /// # Errors
+    /// Constraints that cannot be met, a system singular whatever the plan, a value that is
+    /// not finite, or eigenvalues that do not converge.
+    pub fn at(
+        &self,
+        problem: &Problem,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+    ) -> Result<Linearization, Error> {
+        let (q, rates) = self.linear.assemble(problem, t, q, rates)?;
+        let state = self.jacobians.run(
+            problem,
+            (t, &q, &rates),
+            |d| linearize::jacobian_of(d).ok(),
+            |jacobian| jacobian.at(problem, t, &q, &rates),
+        )?;
+        self.linear.at(problem, t, &q, &rates, state)
     }
 }

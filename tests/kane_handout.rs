@@ -31,8 +31,9 @@ fn markdown(name: &str) -> String {
         .join("problems")
         .join(name);
     let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
-    let solution =
-        mbd_tutor::render::build::solution(&problem, Method::Kane).expect("Kane's method derives");
+    let solution = mbd_tutor::pipeline::work(&problem, Method::Kane)
+        .map(|worked| mbd_tutor::render::build::solution(&worked))
+        .expect("Kane's method derives");
     render(&solution, Format::Markdown, None, false).expect("the handout renders")
 }
 
@@ -104,7 +105,9 @@ fn the_other_methods_show_no_partial_velocities() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/simple-pendulum.json");
     let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
     for method in [Method::MotionLaw, Method::NewtonEuler] {
-        let solution = mbd_tutor::render::build::solution(&problem, method).expect("derives");
+        let solution = mbd_tutor::pipeline::work(&problem, method)
+            .map(|worked| mbd_tutor::render::build::solution(&worked))
+            .expect("derives");
         assert!(solution.partial_velocities.is_empty());
         assert!(solution.equations.iter().all(|e| e.active_tex.is_empty()));
     }

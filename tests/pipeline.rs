@@ -42,3 +42,52 @@ fn a_plan_singular_at_a_state_is_made_again_there() {
     assert_eq!(trajectory.rows.len(), 21);
     assert!(solver.coordinate_names().len() == 3);
 }
+
+/// `linearize` goes through the same recovery: at the spherical pendulum's special state
+/// the Motion Law's first plan gives no state matrix, the pipeline's linearizer plans again
+/// and its state matrix, eigenvalues and q'' are Kane's, which has no plan to make.
+#[test]
+fn a_linearization_where_the_plan_is_singular_is_made_with_a_new_plan() {
+    use mbd_tutor::numeric::linearize;
+    use mbd_tutor::pipeline::Linearizer;
+    let problem = load_file(&crate::support::problem("spherical-pendulum")).expect("loads");
+    let special = [std::f64::consts::FRAC_PI_2, 0.0, 0.0];
+    let rates = [0.2, 1.0, 0.3];
+    let motion_law = derive(&problem, Method::MotionLaw).expect("derives");
+    let direct = linearize::jacobian_of(&motion_law)
+        .expect("differentiates")
+        .at(&problem, 0.0, &special, &rates);
+    assert!(
+        matches!(
+            direct,
+            Err(mbd_tutor::numeric::SolveError::SingularSystem { .. })
+        ),
+        "the first plan is expected to be singular there: {direct:?}"
+    );
+    let recovered = Linearizer::new(&motion_law)
+        .expect("differentiates")
+        .at(&problem, 0.0, &special, &rates)
+        .expect("the linearizer plans again");
+    let kane = derive(&problem, Method::Kane).expect("derives");
+    let reference = Linearizer::new(&kane)
+        .expect("differentiates")
+        .at(&problem, 0.0, &special, &rates)
+        .expect("Kane's method has no plan to make");
+    assert_eq!(recovered.a.shape(), (6, 6));
+    assert_eq!(recovered.variables, reference.variables);
+    let scale = reference.a.amax().max(1.0);
+    for (a, b) in recovered.a.iter().zip(reference.a.iter()) {
+        assert!((a - b).abs() <= 1e-9 * scale, "{a} against {b}");
+    }
+    for (a, b) in recovered.accelerations.iter().zip(&reference.accelerations) {
+        assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{a} against {b}");
+    }
+    for (a, b) in recovered.eigen.iter().zip(&reference.eigen) {
+        assert!(
+            (a.value - b.value).norm() <= 1e-7 * b.value.norm().max(1.0),
+            "{:?} against {:?}",
+            a.value,
+            b.value
+        );
+    }
+}

@@ -311,9 +311,9 @@ fn every_problem_renders_and_its_latex_compiles() {
     for path in problem_files() {
         let problem = mbd_tutor::problem::load_file(&path)
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let solution =
-            mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::MotionLaw)
-                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let worked = mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::MotionLaw)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let solution = mbd_tutor::render::build::solution(&worked);
         for student in [false, true] {
             let html = rendered(&solution, Format::Html, student);
             assert!(
@@ -335,7 +335,8 @@ fn every_problem_renders_and_its_latex_compiles() {
             documents.push((name, rendered(&solution, Format::Latex, student)));
         }
         // Kane's method adds its partial velocities and generalized forces.
-        let kane = mbd_tutor::render::build::solution(&problem, mbd_tutor::equations::Method::Kane)
+        let kane = mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::Kane)
+            .map(|worked| mbd_tutor::render::build::solution(&worked))
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         documents.push((
             format!("{}-kane", file_stem(&path)),

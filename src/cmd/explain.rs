@@ -3,6 +3,7 @@
 
 use crate::cli::Common;
 use crate::output::write_output;
+use crate::pipeline;
 use crate::render::{self, Format, Solution};
 use crate::Error;
 use clap::ValueEnum;
@@ -146,24 +147,25 @@ fn explain_version(
     let mut solution: Solution = if student {
         let mut setup = render::build::setup(&problem, method);
         // The handout shows the system; its free bodies are left to draw.
-        if let Some(drawing) = render::draw::initial_configuration(&problem, method) {
-            setup.configuration = drawing.figure();
-        }
-        // As many blank rows as the worked solution has free bodies and equations.
-        if let Ok(full) = render::build::solution(&problem, method) {
+        if let Ok(worked) = pipeline::work(&problem, method) {
+            if let Some(drawing) = render::draw::initial_configuration(&worked.derivation) {
+                setup.configuration = drawing.figure();
+            }
+            // As many blank rows as the worked solution has free bodies and equations.
+            let full = render::build::solution(&worked);
             setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
             setup.plan.rows = vec![Default::default(); full.plan.rows.len()];
         }
         setup
     } else {
-        render::build::solution(&problem, method)?
+        render::build::solution(&pipeline::work(&problem, method)?)
     };
     if args.verbose {
         solution.plan.show_every_rejected();
     }
     if let Some(state) = args.linearize.as_ref().filter(|_| !student) {
         let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
-        let linearizer = crate::numeric::linearize::Linearizer::new(&problem, method)?;
+        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&problem, method)?)?;
         let l = linearizer.at(&problem, 0.0, &q, &rates)?;
         solution.linearization = Some(render::linearization::section(&problem, &l));
     }

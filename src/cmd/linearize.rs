@@ -1,11 +1,11 @@
 //! `mbd-tutor linearize`: small motions about a state, their eigenvalues and modes;
 //! with `--sweep`, over a range of one constant.
 
-use super::solve::{initial_state, Format};
-use crate::cli::Common;
+use super::solve::{initial_state, AtState, Format};
 use crate::numeric::format::fixed;
 use crate::numeric::linearize::modes::{self, Shape};
-use crate::numeric::linearize::{Linearization, Linearizer};
+use crate::numeric::linearize::Linearization;
+use crate::pipeline::{derive, Linearizer};
 use crate::problem::Problem;
 use crate::Error;
 use nalgebra::DMatrix;
@@ -15,17 +15,9 @@ use std::path::{Path, PathBuf};
 /// Arguments of `mbd-tutor linearize`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
+    // The problem, the state to linearize about, the output format.
     #[command(flatten)]
-    pub common: Common,
-    /// The state to linearize about: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
-    #[arg(long, value_name = "NAME=VALUE,...")]
-    pub state: Vec<String>,
-    /// The time t.
-    #[arg(long, default_value_t = 0.0)]
-    pub time: f64,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t)]
-    pub format: Format,
+    pub at: AtState,
     /// Repeat over COUNT evenly spaced values of a constant, both ends included.
     #[arg(long, value_name = "NAME=FROM:TO:COUNT")]
     pub sweep: Option<String>,
@@ -99,11 +91,11 @@ pub fn parse_sweep(text: &str) -> Result<Sweep, Error> {
 /// An invalid problem or command line, a singular system, or eigenvalues that do not
 /// converge.
 pub fn run(args: Args) -> Result<(), Error> {
-    if !args.time.is_finite() {
+    if !args.at.time.is_finite() {
         return Err(Error::Usage("--time must be finite".into()));
     }
     let sweep = args.sweep.as_deref().map(parse_sweep).transpose()?;
-    let svg_output = args.common.output.as_deref().filter(|p| is_svg(p));
+    let svg_output = args.at.common.output.as_deref().filter(|p| is_svg(p));
     let plot_path = args.plot.as_deref().or(svg_output);
     if plot_path.is_some() && sweep.is_none() {
         return Err(Error::Usage(
@@ -111,20 +103,20 @@ pub fn run(args: Args) -> Result<(), Error> {
         ));
     }
     if let Some(plot) = &args.plot {
-        super::refuse_overwriting(&args.common.problem, Some(plot))?;
+        super::refuse_overwriting(&args.at.common.problem, Some(plot))?;
     }
-    let problem = super::load_with_overrides(&args.common)?;
-    let method = super::method(args.common.method);
-    let linearizer = Linearizer::new(&problem, method)?;
+    let problem = super::load_with_overrides(&args.at.common)?;
+    let method = super::method(args.at.common.method);
+    let linearizer = Linearizer::new(&derive(&problem, method)?)?;
     let report_output = if svg_output.is_some() && args.plot.is_none() {
         None
     } else {
-        args.common.output.as_deref()
+        args.at.common.output.as_deref()
     };
     let Some(sweep) = sweep else {
-        let (q, rates) = initial_state(&problem, &args.state)?;
-        let l = linearizer.at(&problem, args.time, &q, &rates)?;
-        let text = match args.format {
+        let (q, rates) = initial_state(&problem, &args.at.state)?;
+        let l = linearizer.at(&problem, args.at.time, &q, &rates)?;
+        let text = match args.at.format {
             Format::Json => pretty(&to_json(&problem, &l)),
             Format::Text => to_text(&problem, method.title(), &l),
         };
@@ -134,8 +126,8 @@ pub fn run(args: Args) -> Result<(), Error> {
     for &value in &sweep.values {
         let mut swept = problem.clone();
         crate::problem::apply_overrides(&mut swept, &[(sweep.name.clone(), value)])?;
-        let (q, rates) = initial_state(&swept, &args.state)?;
-        results.push(linearizer.at(&swept, args.time, &q, &rates)?);
+        let (q, rates) = initial_state(&swept, &args.at.state)?;
+        results.push(linearizer.at(&swept, args.at.time, &q, &rates)?);
     }
     if let Some(path) = plot_path {
         let svg = crate::render::eigen_plot::sweep_plot(
@@ -157,14 +149,14 @@ pub fn run(args: Args) -> Result<(), Error> {
             let at = |value: f64| -> Result<Linearization, Error> {
                 let mut swept = problem.clone();
                 crate::problem::apply_overrides(&mut swept, &[(sweep.name.clone(), value)])?;
-                let (q, rates) = initial_state(&swept, &args.state)?;
-                linearizer.at(&swept, args.time, &q, &rates)
+                let (q, rates) = initial_state(&swept, &args.at.state)?;
+                linearizer.at(&swept, args.at.time, &q, &rates)
             };
             let (a, b) = (sweep.values[i - 1], sweep.values[i]);
             edges.push((boundary(&at, a, b)?, stable[i]));
         }
     }
-    let text = match args.format {
+    let text = match args.at.format {
         Format::Json => {
             let items: Vec<Value> = sweep
                 .values

@@ -86,7 +86,7 @@ pub const MAX_COORDINATES: usize = 60;
 /// `--set` that names no constant, or more bodies or coordinates than the limits allow.
 pub fn load_with_overrides(common: &crate::cli::Common) -> Result<crate::problem::Problem, Error> {
     refuse_overwriting(&common.problem, common.output.as_deref())?;
-    let mut problem = crate::problem::load_file(&common.problem)?;
+    let mut problem = crate::pipeline::load(&common.problem)?;
     let overrides = crate::cli::parse_assignments(&common.set)?;
     crate::problem::apply_overrides(&mut problem, &overrides)?;
     check_size(&problem, common)?;

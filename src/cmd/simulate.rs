@@ -1,7 +1,7 @@
 //! `mbd-tutor simulate`: integrate the equations of motion and tabulate the motion.
 
 use crate::cli::Common;
-use crate::numeric::checks::{confirm, Check};
+use crate::numeric::checks::Check;
 use crate::numeric::format::fixed;
 use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
 use crate::numeric::SolveError;
@@ -90,7 +90,7 @@ pub fn run(args: Args) -> Result<(), Error> {
         Some(reason) => Err(Error::Solve(reason)),
         None => {
             if !args.no_checks {
-                let checks = confirm(&problem, &solver.compiled(), &trajectory, &q0);
+                let checks = crate::pipeline::confirm(&problem, &solver, &trajectory, &q0);
                 eprint!("{}", report(solver.method().name(), &checks));
             }
             Ok(())

@@ -18,9 +18,9 @@ pub enum Format {
     Json,
 }
 
-/// Arguments of `mbd-tutor solve`.
+/// What `solve` and `linearize` share: the problem, one state and the output format.
 #[derive(clap::Args, Debug)]
-pub struct Args {
+pub struct AtState {
     #[command(flatten)]
     pub common: Common,
     /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
@@ -32,6 +32,13 @@ pub struct Args {
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,
+}
+
+/// Arguments of `mbd-tutor solve`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    pub at: AtState,
 }
 
 /// A problem's state at the start, with `--state` overrides applied.
@@ -76,23 +83,23 @@ pub fn initial_state(
 /// # Errors
 /// An invalid problem, an unknown name in `--set` or `--state`, or a singular system.
 pub fn run(args: Args) -> Result<(), Error> {
-    if !args.time.is_finite() {
+    if !args.at.time.is_finite() {
         return Err(Error::Usage("--time must be finite".into()));
     }
-    let problem = super::load_with_overrides(&args.common)?;
-    let (mut q, mut rates) = initial_state(&problem, &args.state)?;
-    let method = super::method(args.common.method);
+    let problem = super::load_with_overrides(&args.at.common)?;
+    let (mut q, mut rates) = initial_state(&problem, &args.at.state)?;
+    let method = super::method(args.at.common.method);
     let derivation = crate::pipeline::derive(&problem, method)?;
-    super::report_constraints(&derivation.model, &args.state);
+    super::report_constraints(&derivation.model, &args.at.state);
     let solver = crate::pipeline::Solver::new(&problem, &derivation);
-    solver.assemble(args.time, &mut q, &mut rates)?;
-    let solution = solver.solve(args.time, &q, &rates)?;
+    solver.assemble(args.at.time, &mut q, &mut rates)?;
+    let solution = solver.solve(args.at.time, &q, &rates)?;
     let coordinates = solver.coordinate_names();
-    let text = match args.format {
+    let text = match args.at.format {
         Format::Json => {
             let value = to_json(
                 method.name(),
-                args.time,
+                args.at.time,
                 &coordinates,
                 &q,
                 &rates,
@@ -105,14 +112,14 @@ pub fn run(args: Args) -> Result<(), Error> {
         Format::Text => to_text(
             &problem.title,
             method.title(),
-            args.time,
+            args.at.time,
             &coordinates,
             &q,
             &rates,
             &solution,
         ),
     };
-    crate::output::write_output(args.common.output.as_deref(), text.as_bytes())
+    crate::output::write_output(args.at.common.output.as_deref(), text.as_bytes())
 }
 
 /// The JSON object of the command-line contract.

@@ -1,7 +1,6 @@
 //! Kane's method: one row per generalized speed, F_r + F_r* = 0, from the partial
 //! velocities and partial angular velocities; requested reactions through auxiliary speeds.
 
-use super::rows::{is_external, Equation, Groups, Inertia, Sum};
 use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::joints::ComponentKind;
 use crate::mechanics::vector::Components;
@@ -9,6 +8,7 @@ use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{
     is_joint_load, joint_load_generalized_forces, Action, ActionKind, Category, Source,
 };
+use crate::plan::rows::{is_external, Equation, Groups, Inertia, Sum};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{add, Expr, Symbol};
 
@@ -113,7 +113,7 @@ pub fn equations(
                 speed: rate.to_string(),
             },
             direction: None,
-            unknowns: super::rows::unknowns_in(&expression, unknowns),
+            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
             groups,
             expression,
         });
@@ -179,10 +179,10 @@ fn auxiliary_rows(
         rows.push(Equation {
             free_body: subtree.clone(),
             sum: Sum::Generalized {
-                speed: format!("u({}.{})", joint.name, component.label),
+                speed: format!("u({}.{})", joint.name, component.component()),
             },
             direction: None,
-            unknowns: super::rows::unknowns_in(&expression, unknowns),
+            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
             groups,
             expression,
         });

@@ -4,7 +4,8 @@
 pub mod energy;
 pub mod kane;
 pub mod newton_euler;
-pub mod rows;
+/// The rows of equations, which the planner writes out in step 3 (see [`crate::plan::rows`]).
+pub use crate::plan::rows;
 pub mod system;
 
 pub use system::{derive, Derivation, LinearSystem, Method};

@@ -1,9 +1,9 @@
 //! Newton–Euler: every body is a free body, with F along each axis in play and M about its
 //! mass center. The unknowns are every q'' and every reaction component.
 
-use super::rows::{resultant, unit_direction, unknowns_in, Equation, Inertia, Sum};
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
+use crate::plan::rows::{resultant, unit_direction, unknowns_in, Equation, Inertia, Sum};
 use crate::problem::BodyId;
 use crate::symbolic::Symbol;
 
@@ -31,9 +31,10 @@ pub fn equations(
                 })
                 .collect::<Vec<_>>()
         });
-        let length = |rows: &Vec<(super::rows::Direction, super::rows::Groups)>| -> usize {
-            rows.iter().map(|(_, g)| g.total().operation_count()).sum()
-        };
+        let length =
+            |rows: &Vec<(crate::plan::rows::Direction, crate::plan::rows::Groups)>| -> usize {
+                rows.iter().map(|(_, g)| g.total().operation_count()).sum()
+            };
         let [in_ground, in_body] = candidates;
         let chosen = if length(&in_body) < length(&in_ground) {
             in_body

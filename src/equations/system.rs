@@ -1,10 +1,10 @@
 //! Assembling the chosen rows into the symbolic linear system `A x = b`.
 
-use super::rows::{Equation, Groups, Inertia, Sum};
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::{MechanicsError, Model};
-use crate::plan::forces::{actions, reaction_symbol, Action};
+use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
+use crate::plan::rows::{Equation, Groups, Inertia, Sum};
 use crate::problem::Problem;
 use crate::symbolic::budget;
 use crate::symbolic::eval::Values;
@@ -83,9 +83,7 @@ pub fn reaction_unknowns(model: &Model, sites: &[usize]) -> Vec<Symbol> {
         .iter()
         .flat_map(|&j| {
             let site = &model.sites[j];
-            site.reactions
-                .iter()
-                .map(move |c| reaction_symbol(&site.name, &c.label))
+            site.reactions.iter().map(move |c| c.unknown(&site.name))
         })
         .collect()
 }
@@ -118,7 +116,7 @@ fn constraint_equations(
                     name: row.name.clone(),
                 },
                 direction: None,
-                unknowns: super::rows::unknowns_in(&expression, unknowns),
+                unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
                 groups: Groups {
                     contact: expression.clone(),
                     distance: Expr::zero(),

@@ -9,12 +9,11 @@ use super::sites::{closure_site, contact_site, Site, SiteKind};
 use super::vector::{cross3, zero3, Components, Vector};
 use super::MechanicsError;
 use crate::mechanics::joints::ComponentKind;
-use crate::plan::forces::reaction_symbol;
 use crate::problem::{BodyId, ConstraintKind, JointKind};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{Expr, Symbol, Unknown};
 
 /// What imposes a constraint row.
 #[derive(Clone, Debug, PartialEq)]
@@ -98,12 +97,16 @@ fn unit(axis: usize) -> Components {
 
 /// The symbol of a prescribed coordinate's drive.
 pub fn drive_symbol(coordinate: &str) -> Symbol {
-    Symbol::Unknown(format!("Q_{coordinate}").into())
+    Symbol::Unknown(Unknown::Drive {
+        coordinate: coordinate.into(),
+    })
 }
 
 /// The symbol of a `position` or `velocity` entry's multiplier.
 pub fn multiplier_symbol(name: &str) -> Symbol {
-    Symbol::Unknown(format!("lambda_{name}").into())
+    Symbol::Unknown(Unknown::Multiplier {
+        constraint: name.into(),
+    })
 }
 
 /// The sites of closures and contacts, and every constraint row.
@@ -152,10 +155,10 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                             site: index,
                             component,
                         },
-                        name: format!("{}.{}", site.name, reaction.label),
+                        name: format!("{}.{}", site.name, reaction.component()),
                         position: is_normal.then(|| contact.height.clone()),
                         velocity: velocity.dot(&reaction.direction, &model.frames),
-                        unknown: reaction_symbol(&site.name, &reaction.label),
+                        unknown: reaction.unknown(&site.name),
                     });
                 }
                 sites.push(site);
@@ -235,7 +238,7 @@ fn keep_enforced_reactions(
         }
         let before = site.reactions.len();
         site.reactions.retain(|r| {
-            let symbol = reaction_symbol(&site.name, &r.label);
+            let symbol = r.unknown(&site.name);
             rows.iter().any(|row| row.unknown == symbol)
         });
         if site.reactions.len() < before && problem.find_reactions.contains(&index) {
@@ -255,7 +258,7 @@ fn keep_enforced_reactions(
             if let Some(k) = s
                 .reactions
                 .iter()
-                .position(|r| reaction_symbol(&s.name, &r.label) == row.unknown)
+                .position(|r| r.unknown(&s.name) == row.unknown)
             {
                 *component = k;
             }
@@ -340,10 +343,10 @@ fn closure_rows(
                 site: index,
                 component,
             },
-            name: format!("{}.{}", site.name, reaction.label),
+            name: format!("{}.{}", site.name, reaction.component()),
             position: Some(position),
             velocity,
-            unknown: reaction_symbol(&site.name, &reaction.label),
+            unknown: reaction.unknown(&site.name),
         });
     }
     Ok(rows)

@@ -22,24 +22,36 @@ pub struct JointMotion {
     pub written_axis: Option<Components>,
 }
 
-/// Whether a reaction component is a force or a moment.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ComponentKind {
-    /// A force through the site's point.
-    Force,
-    /// A moment (a couple).
-    Moment,
-}
+pub use crate::symbolic::{Axis, Component, ComponentKind};
+use crate::symbolic::{Symbol, Unknown};
 
-/// A reaction component: its unknown's name suffix (`Fx`, `M1`) and its direction.
+/// A reaction component: its kind and axis (`Fx`, `M1`) and its direction.
 #[derive(Clone, Debug)]
 pub struct ReactionComponent {
     /// Force or moment.
     pub kind: ComponentKind,
-    /// `F` or `M` followed by the axis letter (`x`, `y`, `z`) or a number.
-    pub label: String,
+    /// Which way it acts, as its name tells it: the axis letter (`x`, `y`, `z`) or a number.
+    pub axis: Axis,
     /// The unit direction.
     pub direction: Vector,
+}
+
+impl ReactionComponent {
+    /// Its kind and axis, e.g. `Fx`.
+    pub fn component(&self) -> Component {
+        Component {
+            kind: self.kind,
+            axis: self.axis,
+        }
+    }
+
+    /// The unknown of this component at the site named `site`.
+    pub fn unknown(&self, site: &str) -> Symbol {
+        Symbol::Unknown(Unknown::Reaction {
+            site: site.into(),
+            component: self.component(),
+        })
+    }
 }
 
 /// Where a joint load on one coordinate acts: a force along `force`, a couple about `torque`.
@@ -247,22 +259,18 @@ pub fn reaction_components(
 ) -> Vec<ReactionComponent> {
     let planar = problem.dimension == Dimension::Two;
     let parent = joint.parent;
-    let component = |letter: &str, c: Components, index: usize| -> ReactionComponent {
-        let label = match unit_axis_of(&c) {
-            Some(axis) => format!("{letter}{}", ["x", "y", "z"][axis]),
-            None => format!("{letter}{index}"),
+    let component = |kind: ComponentKind, c: Components, index: usize| -> ReactionComponent {
+        let axis = match unit_axis_of(&c) {
+            Some(axis) => Axis::Unit(axis as u8),
+            None => Axis::Numbered(index as u8),
         };
         ReactionComponent {
-            kind: if letter == "F" {
-                ComponentKind::Force
-            } else {
-                ComponentKind::Moment
-            },
-            label,
+            kind,
+            axis,
             direction: Vector::new(parent, c),
         }
     };
-    let all = |kind: &str, axes: &[usize]| -> Vec<ReactionComponent> {
+    let all = |kind: ComponentKind, axes: &[usize]| -> Vec<ReactionComponent> {
         axes.iter()
             .map(|&a| component(kind, unit(a), a + 1))
             .collect()
@@ -270,7 +278,7 @@ pub fn reaction_components(
     let in_plane: &[usize] = &[0, 1];
     let out_of_plane: &[usize] = &[2];
     let every: &[usize] = &[0, 1, 2];
-    let perpendicular = |kind: &str, axis: &Components| -> Vec<ReactionComponent> {
+    let perpendicular = |kind: ComponentKind, axis: &Components| -> Vec<ReactionComponent> {
         perpendicular_pair(axis, values)
             .into_iter()
             .enumerate()
@@ -279,31 +287,33 @@ pub fn reaction_components(
     };
     let axis = motion.axis.clone().unwrap_or_else(|| unit(2));
     match (joint.kind, planar) {
-        (JointKind::Revolute, true) => all("F", in_plane),
-        (JointKind::Prismatic, true) => vec![component("F", cross3(&unit(2), &axis), 1)]
-            .into_iter()
-            .chain(all("M", out_of_plane))
-            .collect(),
+        (JointKind::Revolute, true) => all(ComponentKind::Force, in_plane),
+        (JointKind::Prismatic, true) => {
+            vec![component(ComponentKind::Force, cross3(&unit(2), &axis), 1)]
+                .into_iter()
+                .chain(all(ComponentKind::Moment, out_of_plane))
+                .collect()
+        }
         (JointKind::Planar, true) => vec![],
-        (JointKind::Weld, true) => all("F", in_plane)
+        (JointKind::Weld, true) => all(ComponentKind::Force, in_plane)
             .into_iter()
-            .chain(all("M", out_of_plane))
+            .chain(all(ComponentKind::Moment, out_of_plane))
             .collect(),
-        (JointKind::Revolute, false) => all("F", every)
+        (JointKind::Revolute, false) => all(ComponentKind::Force, every)
             .into_iter()
-            .chain(perpendicular("M", &axis))
+            .chain(perpendicular(ComponentKind::Moment, &axis))
             .collect(),
-        (JointKind::Prismatic, false) => perpendicular("F", &axis)
+        (JointKind::Prismatic, false) => perpendicular(ComponentKind::Force, &axis)
             .into_iter()
-            .chain(all("M", every))
+            .chain(all(ComponentKind::Moment, every))
             .collect(),
-        (JointKind::Cylindrical, _) => perpendicular("F", &axis)
+        (JointKind::Cylindrical, _) => perpendicular(ComponentKind::Force, &axis)
             .into_iter()
-            .chain(perpendicular("M", &axis))
+            .chain(perpendicular(ComponentKind::Moment, &axis))
             .collect(),
-        (JointKind::Planar, false) => all("F", out_of_plane)
+        (JointKind::Planar, false) => all(ComponentKind::Force, out_of_plane)
             .into_iter()
-            .chain(all("M", in_plane))
+            .chain(all(ComponentKind::Moment, in_plane))
             .collect(),
         (JointKind::Universal, _) => {
             // The constraint couple is along (first axis) × (second axis), turned with the first angle.
@@ -311,17 +321,20 @@ pub fn reaction_components(
             let second = &motion.rotations[1];
             let normal = cross3(&first.axis, &second.axis);
             let turned = super::frames::apply(&first.matrix(), &normal);
-            let mut out = all("F", every);
+            let mut out = all(ComponentKind::Force, every);
             out.push(ReactionComponent {
                 kind: ComponentKind::Moment,
-                label: "M1".into(),
+                axis: Axis::Numbered(1),
                 direction: Vector::new(parent, turned),
             });
             out
         }
-        (JointKind::Spherical, _) => all("F", every),
+        (JointKind::Spherical, _) => all(ComponentKind::Force, every),
         (JointKind::Free, _) => vec![],
-        (JointKind::Weld, false) => all("F", every).into_iter().chain(all("M", every)).collect(),
+        (JointKind::Weld, false) => all(ComponentKind::Force, every)
+            .into_iter()
+            .chain(all(ComponentKind::Moment, every))
+            .collect(),
     }
 }
 

@@ -59,7 +59,7 @@ pub struct JointModel {
     pub at: Components,
     /// The joint point on the child, from the child's origin, child's unit vectors.
     pub child_at: Components,
-    /// The reaction components, each an unknown `joint.label`.
+    /// The reaction components, each an unknown of the joint (`O.Fx`).
     pub reactions: Vec<ReactionComponent>,
     /// Where a joint load on each coordinate acts.
     pub load_axes: Vec<LoadAxis>,

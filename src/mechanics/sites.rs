@@ -2,7 +2,7 @@
 //! rolling contacts. Each is a site with a parent, a child, a point, and the directions
 //! that carry a reaction; every method treats the three kinds alike.
 
-use super::joints::{reaction_components, ComponentKind, JointMotion, ReactionComponent};
+use super::joints::{reaction_components, Axis, ComponentKind, JointMotion, ReactionComponent};
 use super::model::{own_components, vector_of, Model, PointMotion};
 use super::vector::{cross3, dot3, zero3, Components, Vector};
 use super::MechanicsError;
@@ -39,7 +39,7 @@ pub struct Site {
     pub parent_offset: Components,
     /// The motion of the child's material point at the site.
     pub point: PointMotion,
-    /// The reaction components, each an unknown `site.label`.
+    /// The reaction components, each an unknown of the site (`O.Fx`).
     pub reactions: Vec<ReactionComponent>,
 }
 
@@ -107,7 +107,7 @@ pub fn closure_site(model: &Model, c: usize) -> Result<Site, MechanicsError> {
     };
     // A spherical closure in a planar problem cannot occur; keep 2D reactions in the plane.
     if problem.dimension == Dimension::Two {
-        reactions.retain(|r| !r.label.ends_with('z') || r.kind == ComponentKind::Moment);
+        reactions.retain(|r| r.axis != Axis::Unit(2) || r.kind == ComponentKind::Moment);
     }
     // Where the child's point is, as a point of the parent (it slides along a prismatic
     // or cylindrical closure's axis; otherwise it is the closure's point on the parent).
@@ -139,13 +139,13 @@ fn universal_reactions(model: &Model, closure: &Joint) -> Vec<ReactionComponent>
     let mut out: Vec<ReactionComponent> = (0..3)
         .map(|a| ReactionComponent {
             kind: ComponentKind::Force,
-            label: format!("F{}", ["x", "y", "z"][a]),
+            axis: Axis::Unit(a as u8),
             direction: Vector::unit(closure.parent, a),
         })
         .collect();
     out.push(ReactionComponent {
         kind: ComponentKind::Moment,
-        label: "M1".into(),
+        axis: Axis::Numbered(1),
         direction: first.cross(&second, &model.frames),
     });
     out
@@ -237,13 +237,13 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         .enumerate()
         .map(|(i, t)| ReactionComponent {
             kind: ComponentKind::Force,
-            label: direction_label(t, i + 1),
+            axis: direction_axis(t, i + 1),
             direction: t.clone(),
         })
         .collect();
     reactions.push(ReactionComponent {
         kind: ComponentKind::Force,
-        label: direction_label(&n_vec, 0),
+        axis: direction_axis(&n_vec, 0),
         direction: n_vec.clone(),
     });
     let point = model.point_on(body, &offset_c);
@@ -268,7 +268,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
 }
 
 /// `Fx` when `d` is a unit vector of `N`, `Fn` for the normal otherwise, `Ft1`, `Ft2`.
-fn direction_label(d: &Vector, index: usize) -> String {
+fn direction_axis(d: &Vector, index: usize) -> Axis {
     let c = d
         .parts()
         .first()
@@ -276,12 +276,12 @@ fn direction_label(d: &Vector, index: usize) -> String {
         .unwrap_or_else(zero3);
     let ones: Vec<usize> = (0..3).filter(|&i| c[i].is_one()).collect();
     if ones.len() == 1 && c.iter().filter(|e| e.is_zero()).count() == 2 {
-        return format!("F{}", ["x", "y", "z"][ones[0]]);
+        return Axis::Unit(ones[0] as u8);
     }
     if index == 0 {
-        "Fn".into()
+        Axis::Normal
     } else {
-        format!("Ft{index}")
+        Axis::Tangent(index as u8)
     }
 }
 

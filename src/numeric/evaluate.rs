@@ -5,7 +5,6 @@ use super::system::{describe_state, Evaluation, System};
 use super::SolveError;
 use crate::equations::{energy, Derivation, Method};
 use crate::mechanics::joints::ComponentKind;
-use crate::plan::forces::reaction_symbol;
 use crate::problem::{LoadKind, Problem};
 use crate::symbolic::compile::Program;
 use crate::symbolic::{Expr, Symbol};
@@ -106,7 +105,7 @@ impl Compiled {
             let joint = &model.sites[j];
             let mut components = Vec::new();
             for component in &joint.reactions {
-                let symbol = reaction_symbol(&joint.name, &component.label);
+                let symbol = component.unknown(&joint.name);
                 let direction = component
                     .direction
                     .components_in(joint.parent, &model.frames);

@@ -6,7 +6,8 @@ pub mod assemble;
 pub mod checks;
 pub mod constraint_checks;
 pub mod evaluate;
-pub mod format;
+/// Fixed-precision numbers for text (see [`crate::symbolic::format`]).
+pub use crate::symbolic::format;
 pub mod integrate;
 pub mod linearize;
 pub mod reduce;

@@ -64,11 +64,6 @@ pub struct Action {
     pub kind: ActionKind,
 }
 
-/// The name of the unknown for reaction component `label` at joint `joint`.
-pub fn reaction_symbol(joint: &str, label: &str) -> Symbol {
-    Symbol::Unknown(format!("{joint}.{label}").into())
-}
-
 /// Every action in the system. Reactions come with their unknown components as symbols.
 ///
 /// # Errors
@@ -101,7 +96,7 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
         let mut force = Vector::zero();
         let mut moment = Vector::zero();
         for component in &site.reactions {
-            let unknown = Expr::sym(reaction_symbol(&site.name, &component.label));
+            let unknown = Expr::sym(component.unknown(&site.name));
             let part = component.direction.scaled(&unknown);
             if component.kind == ComponentKind::Force {
                 force = force.plus(&part);

@@ -4,3 +4,4 @@ pub mod choose;
 pub mod forces;
 pub mod planner;
 pub mod rejection;
+pub mod rows;

@@ -5,7 +5,7 @@ use super::expressions::ConstantValues;
 use super::json::{key_path, Diagnostics};
 use super::model::{Inertia, LoadKind, Problem, VectorExpr};
 use super::ProblemError;
-use crate::numeric::format::fixed;
+use crate::symbolic::format::fixed;
 use crate::symbolic::Expr;
 use nalgebra::{Matrix3, SymmetricEigen};
 

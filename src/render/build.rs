@@ -10,18 +10,17 @@ use crate::numeric::format::fixed;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 
-/// The whole worked solution of `problem` by `method`: step 1 from the problem, steps 2
-/// to 6 from the derivation and the simulation.
-///
-/// # Errors
-/// When the equations cannot be derived or solved at the initial state.
-pub fn solution(problem: &Problem, method: Method) -> Result<Solution, crate::Error> {
-    let mut solution = setup(problem, method);
-    let (filled, _) = crate::symbolic::style::with_style(style_of(problem), || {
-        super::derived::fill(&mut solution, problem, method)
+/// The whole worked solution from what the stages gave (`pipeline::work`): step 1 from
+/// the problem, steps 2 to 6 from the derivation, the solution at the initial state and
+/// the simulation.
+pub fn solution(worked: &crate::pipeline::Worked) -> Solution {
+    let derivation = &worked.derivation;
+    let problem = derivation.model.problem;
+    let mut solution = setup(problem, derivation.method);
+    crate::symbolic::style::with_style(style_of(problem), || {
+        super::derived::fill(&mut solution, worked)
     });
-    filled?;
-    Ok(solution)
+    solution
 }
 
 /// How the worked solution of `problem` prints numbers: the decimals it wrote as decimals.

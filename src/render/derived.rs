@@ -6,12 +6,12 @@ use super::context::{
     Reaction, Rejected as RejectedView, Solution,
 };
 use super::long::{coefficient_form, LONG_EQUATION};
-use crate::equations::rows::{is_external, Equation, Sum};
-use crate::equations::{derive, Derivation, Method};
+use crate::equations::{Derivation, Method};
 use crate::mechanics::{Model, Vector};
 use crate::numeric::format::fixed;
-use crate::numeric::system::System;
+use crate::pipeline::Worked;
 use crate::plan::forces::{ActionKind, Category};
+use crate::plan::rows::{is_external, Equation, Sum};
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::{as_shown, named_definitions};
@@ -19,20 +19,16 @@ use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Definition, Expr, Node, Symbol};
-use crate::Error;
 
-/// Fills steps 2 to 6 of `solution` from the derivation of `problem` by `method`.
-///
-/// # Errors
-/// When the equations cannot be derived or solved at the initial state.
-pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Result<(), Error> {
-    let derivation = derive(problem, method)?;
+/// Fills steps 2 to 6 of `solution` from what the stages gave (see [`Worked`]).
+pub fn fill(solution: &mut Solution, worked: &Worked) {
+    let derivation = &worked.derivation;
+    let problem = derivation.model.problem;
     let model = &derivation.model;
-    solution.free_bodies = free_bodies(&derivation);
-    (solution.constraints, solution.constraint_notes) =
-        super::constrained::constraints(&derivation);
-    solution.force_definitions = force_definitions(&derivation);
-    solution.plan = plan(&derivation);
+    solution.free_bodies = free_bodies(derivation);
+    (solution.constraints, solution.constraint_notes) = super::constrained::constraints(derivation);
+    solution.force_definitions = force_definitions(derivation);
+    solution.plan = plan(derivation);
     // Steps 4 and 5 write sines and cosines of the coordinates as s_1, c_12, listed once.
     let names: Vec<&str> = problem
         .coordinates
@@ -45,22 +41,22 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
         solution.equations = derivation
             .rows
             .iter()
-            .map(|row| equation_view(&derivation, row))
+            .map(|row| equation_view(derivation, row))
             .collect();
         // The matrix is listed entry by entry whenever an equation refers to its entries.
         let by_name = solution
             .equations
             .iter()
             .any(|e| !e.simplified_note.is_empty());
-        let use_shown = uses_shown(&derivation);
+        let use_shown = uses_shown(derivation);
         let sign = initial_sign(&derivation.model);
         let shown = |e: &Expr| {
             let e = simplify(e);
             let e = if use_shown { as_shown(&e) } else { e };
             roots_of_squares(&e, &sign)
         };
-        solution.matrix = super::matrix::matrix(&derivation, by_name, shown);
-        solution.partial_velocities = super::kane::partial_velocities(&derivation);
+        solution.matrix = super::matrix::matrix(derivation, by_name, shown);
+        solution.partial_velocities = super::kane::partial_velocities(derivation);
     });
     solution.abbreviations = abbreviations
         .into_iter()
@@ -69,12 +65,8 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
             note: String::new(),
         })
         .collect();
-    let solver = crate::pipeline::Solver::new(problem, &derivation);
-    let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    solver.assemble(0.0, &mut q0, &mut rates0)?;
-    let initial = solver.solve(0.0, &q0, &rates0)?;
-    solution.dependent_speeds = super::constrained::dependent_speeds(&derivation, &q0, &rates0);
+    let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
+    solution.dependent_speeds = super::constrained::dependent_speeds(derivation, q0, rates0);
     solution.initial_values = problem
         .coordinates
         .iter()
@@ -111,10 +103,10 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
         .collect();
     // The pictures at the initial state, the configuration first.
     let drawings = crate::render::draw::draw(
-        &derivation,
+        derivation,
         0.0,
-        &q0,
-        &rates0,
+        q0,
+        rates0,
         Some(&initial.accelerations),
         crate::render::draw::View::Isometric,
     );
@@ -129,8 +121,7 @@ pub fn fill(solution: &mut Solution, problem: &Problem, method: Method) -> Resul
             body.figure = drawing.figure();
         }
     }
-    super::simulation::simulation(solution, problem, &solver, &q0, &rates0);
-    Ok(())
+    super::simulation::simulation(solution, problem, &worked.simulation);
 }
 
 fn triple(v: &[f64; 3]) -> String {

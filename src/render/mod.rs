@@ -1,7 +1,8 @@
 //! The worked solution: a Tera context and templates -> Markdown, LaTeX, HTML, plots.
 //!
-//! [`build::solution`] turns a problem (and, as the pipeline grows, its equations and
-//! simulation) into a [`Solution`]: plain strings and tables. [`render`] puts it through
+//! [`build::solution`] turns what the stages gave (`pipeline::work`: the problem, its
+//! equations, the solution at the initial state, the simulation and its checks) into a
+//! [`Solution`]: plain strings and tables; nothing here derives, solves or simulates. [`render`] puts it through
 //! one of the templates in `templates/`, which are embedded in the binary; an instructor
 //! can restyle a handout by passing a directory of replacements.
 

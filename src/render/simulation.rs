@@ -1,23 +1,22 @@
 //! Step 6 of the worked solution: the simulation, its confirmation checks and its plots.
 
 use super::context::{Check, Plot, Solution};
-use crate::numeric::checks::confirm;
+use crate::numeric::checks;
 use crate::numeric::format::fixed;
-use crate::numeric::simulate::simulate;
-use crate::numeric::system::System;
+use crate::numeric::simulate::Trajectory;
+use crate::numeric::SolveError;
 use crate::problem::Problem;
 
-/// Simulates from the (assembled) initial state and fills step 6 of `solution`; a run that
-/// cannot start or stops early is said in the step's note.
+/// Fills step 6 of `solution` from the simulation from the (assembled) initial state and its
+/// confirmation checks; a run that could not start or stopped early is said in the step's
+/// note.
 pub fn simulation(
     solution: &mut Solution,
     problem: &Problem,
-    solver: &crate::pipeline::Solver,
-    q0: &[f64],
-    rates0: &[f64],
+    simulated: &Result<(Trajectory, Vec<checks::Check>), SolveError>,
 ) {
-    let trajectory = match simulate(solver, q0, rates0, &problem.simulate) {
-        Ok(t) => t,
+    let (trajectory, checks) = match simulated {
+        Ok(run) => run,
         Err(e) => {
             solution.simulation.note = format!("The simulation could not run: {e}");
             return;
@@ -26,16 +25,16 @@ pub fn simulation(
     if let Some(reason) = &trajectory.stopped {
         solution.simulation.note = format!("The simulation stopped early: {reason}");
     }
-    solution.simulation.checks = confirm(problem, &solver.compiled(), &trajectory, q0)
-        .into_iter()
+    solution.simulation.checks = checks
+        .iter()
         .map(|c| Check {
-            name: c.name,
+            name: c.name.clone(),
             value: fixed(c.value),
             tolerance: fixed(c.tolerance),
             passed: c.passed,
         })
         .collect();
-    let names = solver.coordinate_names();
+    let names: Vec<String> = problem.coordinates.iter().map(|c| c.name.clone()).collect();
     let coordinate_series: Vec<(String, Vec<(f64, f64)>)> = names
         .iter()
         .filter_map(|n| trajectory.series(n).map(|s| (n.clone(), s)))

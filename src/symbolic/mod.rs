@@ -8,6 +8,7 @@ pub mod compile;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+pub mod format;
 pub mod hint;
 pub mod horner;
 mod instr;
@@ -23,6 +24,8 @@ pub mod style;
 pub mod subst;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
-pub use expr::{Definition, Expr, Func, Name, Node, Symbol};
+pub use expr::{
+    Axis, Component, ComponentKind, Definition, Expr, Func, Name, Node, Symbol, Unknown,
+};
 pub use number::Number;
 pub use simplify::simplify;

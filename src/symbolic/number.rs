@@ -188,7 +188,7 @@ impl fmt::Display for Number {
         match self {
             Number::Ratio(n, 1) => write!(f, "{n}"),
             Number::Ratio(n, d) => write!(f, "{n}/{d}"),
-            Number::Real(x) => write!(f, "{}", crate::numeric::format::fixed(*x)),
+            Number::Real(x) => write!(f, "{}", crate::symbolic::format::fixed(*x)),
         }
     }
 }

@@ -52,7 +52,8 @@ pub fn latex_name(name: &str) -> String {
     }
 }
 
-fn latex_name_plain(sub: &str) -> String {
+/// A subscript in LaTeX: digits as they are, a word upright, `a_b` as `a,b`.
+pub(crate) fn latex_name_plain(sub: &str) -> String {
     if sub.chars().all(|c| c.is_ascii_alphanumeric())
         && sub.chars().count() > 1
         && !sub.chars().all(|c| c.is_ascii_digit())
@@ -92,14 +93,7 @@ fn latex_symbol(s: &Symbol) -> String {
             }
         }
         Symbol::Time => "t".into(),
-        Symbol::Unknown(name) => match name.split_once('.') {
-            // Reaction components are named `joint.Fx`, `joint.M2`: F^{O}_{x}.
-            Some((joint, component)) if component.len() >= 2 => {
-                let (letter, axis) = component.split_at(1);
-                format!("{letter}^{{{}}}_{{{axis}}}", latex_name(joint))
-            }
-            _ => latex_name(name),
-        },
+        Symbol::Unknown(unknown) => unknown.latex(),
         Symbol::UnitVector(frame, axis) => latex_unit_vector(frame, *axis),
         Symbol::Defined(d) => match d.latex() {
             Some(name) => name.to_string(),
@@ -113,7 +107,8 @@ fn latex_symbol(s: &Symbol) -> String {
 
 fn plain_symbol(s: &Symbol) -> String {
     match s {
-        Symbol::Const(name) | Symbol::Unknown(name) => name.to_string(),
+        Symbol::Const(name) => name.to_string(),
+        Symbol::Unknown(unknown) => unknown.to_string(),
         Symbol::Coord(name, order) => format!("{name}{}", "'".repeat(*order as usize)),
         Symbol::Time => "t".into(),
         Symbol::UnitVector(frame, axis) => {

@@ -413,7 +413,7 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
             continue;
         }
         for c in &joint.reactions {
-            let (letter, rest) = c.label.split_at(1);
+            let (letter, rest) = (c.kind.letter(), c.axis.subscript());
             let sign = if child { 1.0 } else { -1.0 };
             let dir = in_n(d, &c.direction, values).map(|x| x * sign);
             expected.push((

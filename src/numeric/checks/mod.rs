@@ -5,46 +5,29 @@ mod oscillation;
 
 pub use oscillation::{downward_crossings, modes, small_oscillation, Modes, MODES_CHECKED};
 
-use super::evaluate::Compiled;
 use super::format::fixed;
 use super::simulate::Trajectory;
 use super::system::System;
-use crate::equations::{derive, Method};
 use crate::problem::Problem;
 
-/// Every confirmation check that applies to a run of `compiled` on `problem`: energy,
-/// agreement with the other two methods (derived here) at 10 rows, and the small-oscillation
-/// period. Checks that do not apply (energy with actuators, the period without a stable
-/// equilibrium) are left out; a method whose equations cannot be derived is a failed
-/// agreement, never left out.
+/// Every confirmation check that applies to a run of `primary` (its method's name and its
+/// equations) on `problem`: energy, agreement with `others` (the other two methods, each with
+/// its equations or why they could not be had) at 10 rows, the small-oscillation period,
+/// and with constraints their drift and the drives' energy balance. Checks that do not
+/// apply (energy with actuators, the period without a stable equilibrium) are left out; a
+/// method whose equations cannot be had is a failed agreement, never left out.
 pub fn confirm(
     problem: &Problem,
-    compiled: &Compiled,
+    primary: (&str, &dyn System),
+    others: &[(&str, Result<&dyn System, String>)],
     trajectory: &Trajectory,
     q0: &[f64],
 ) -> Vec<Check> {
-    let others: Vec<(Method, Result<Compiled, String>)> = Method::ALL
-        .iter()
-        .filter(|m| **m != compiled.method)
-        .map(|&m| {
-            let derived = derive(problem, m).map(|d| Compiled::new(&d));
-            (m, derived.map_err(|e| e.to_string()))
-        })
-        .collect();
-    let others: Vec<(&str, Result<&dyn System, String>)> = others
-        .iter()
-        .map(|(m, c)| {
-            (
-                m.name(),
-                c.as_ref().map(|c| c as &dyn System).map_err(Clone::clone),
-            )
-        })
-        .collect();
-    let mut checks = confirm_systems((compiled.method.name(), compiled), &others, trajectory, q0);
+    let mut checks = confirm_systems(primary, others, trajectory, q0);
     checks.extend(super::constraint_checks::drive_energy_check(
         problem, trajectory,
     ));
-    checks.extend(super::constraint_checks::drift_check(compiled, trajectory));
+    checks.extend(super::constraint_checks::drift_check(primary.1, trajectory));
     checks
 }
 

@@ -113,7 +113,8 @@ fn not_differentiable(e: DiffError) -> MechanicsError {
 pub fn variable_name(symbol: &Symbol) -> String {
     match symbol {
         Symbol::Coord(name, order) => format!("{name}{}", "'".repeat(*order as usize)),
-        Symbol::Const(name) | Symbol::Unknown(name) => name.to_string(),
+        Symbol::Const(name) => name.to_string(),
+        Symbol::Unknown(unknown) => unknown.to_string(),
         Symbol::Time => "t".into(),
         Symbol::UnitVector(frame, axis) => format!("{frame}.{axis}"),
         Symbol::Defined(d) => d.name().to_string(),

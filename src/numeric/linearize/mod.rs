@@ -7,27 +7,58 @@ pub mod hqr;
 pub mod jacobian;
 pub mod modes;
 
-use crate::equations::system::{derive_at, State};
 use crate::equations::{kane, Derivation, Method};
 use crate::numeric::assemble::Assembly;
 use crate::numeric::reduce::Reducer;
 use crate::numeric::SolveError;
 use crate::problem::Problem;
 use crate::Error;
-use jacobian::{input_values, state_text, Jacobian, LinearModel, Matrices, SecondOrder};
+use jacobian::{input_values, state_text, variable_name, LinearModel, Matrices, SecondOrder};
+pub use jacobian::{Jacobian, StateMatrix};
 use modes::{Eigen, Mode};
 use nalgebra::DMatrix;
 
 /// The compiled linearization of one problem by one method, for any state and any values
-/// of the constants.
+/// of the constants, apart from the state matrix of its equations: that comes from a
+/// [`Jacobian`] of the plan that suits the state, which the pipeline chooses
+/// (`pipeline::Linearizer`), planning again where the first plan is singular.
 #[derive(Clone, Debug)]
 pub struct Linearizer {
     method: Method,
-    jacobian: Jacobian,
+    /// The state variables' names as printed (`q1`, `q1'`), whatever the plan.
+    variables: Vec<String>,
     /// `None` for a constrained system, whose equations carry constraint forces.
     second_order: Option<SecondOrder>,
     /// A constrained system's assembly and reduction to its independent variables.
     constraints: Option<(Assembly, Reducer)>,
+}
+
+/// The partial derivatives of the equations of `derivation` (its linear system in the q''
+/// and the other unknowns), compiled.
+///
+/// # Errors
+/// When an entry has no derivative (`min`, `max` of something that changes).
+pub fn jacobian_of(derivation: &Derivation) -> Result<Jacobian, Error> {
+    let model = LinearModel::unconstrained(derivation.model.problem, &derivation.system);
+    Ok(Jacobian::new(&model)?)
+}
+
+impl Jacobian {
+    /// The state matrix of these equations at the state `t`, `q`, `rates`, with the
+    /// constants of `problem`.
+    ///
+    /// # Errors
+    /// A singular system or a value that is not finite, naming the state.
+    pub fn at(
+        &self,
+        problem: &Problem,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+    ) -> Result<StateMatrix, SolveError> {
+        let inputs = input_values(problem, t, q, rates);
+        self.state_matrix(&inputs, &|| state_text(problem, t, q, rates))
+    }
 }
 
 /// The linearization at one state.
@@ -54,23 +85,23 @@ pub struct Linearization {
 }
 
 impl Linearizer {
-    /// Derives the equations of `problem` by `method`, differentiates and compiles them.
+    /// Differentiates and compiles what the linearization needs besides the state matrix:
+    /// M, C and K (Kane's rows without reactions), or the reduction of a constrained system.
     ///
     /// # Errors
-    /// When the equations cannot be derived, or have no derivative.
-    pub fn new(problem: &Problem, method: Method) -> Result<Linearizer, Error> {
-        let derivation = crate::equations::derive(problem, method)?;
-        Linearizer::of(&derivation)
-    }
-
-    fn of(derivation: &Derivation) -> Result<Linearizer, Error> {
+    /// When the equations have no derivative.
+    pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
         let problem = derivation.model.problem;
-        let model = LinearModel::unconstrained(problem, &derivation.system);
-        let jacobian = Jacobian::new(&model)?;
+        let mut variables: Vec<String> = (0..problem.coordinates.len())
+            .map(|i| variable_name(&problem.coordinate_symbol(i, 0)))
+            .collect();
+        variables.extend(
+            (0..problem.coordinates.len()).map(|i| variable_name(&problem.coordinate_symbol(i, 1))),
+        );
         if let Some(assembly) = Assembly::new(&derivation.model) {
             return Ok(Linearizer {
                 method: derivation.method,
-                jacobian,
+                variables,
                 second_order: None,
                 constraints: Some((assembly, Reducer::new(&derivation.model))),
             });
@@ -92,7 +123,7 @@ impl Linearizer {
         let second_order = SecondOrder::new(problem, &rows)?;
         Ok(Linearizer {
             method: derivation.method,
-            jacobian,
+            variables,
             second_order: Some(second_order),
             constraints: None,
         })
@@ -103,50 +134,47 @@ impl Linearizer {
         self.method
     }
 
-    /// The number of operations of one evaluation of the partial derivatives.
-    pub fn operation_count(&self) -> usize {
-        self.jacobian.operation_count()
-    }
-
-    /// Linearizes about the state `t`, `q`, `rates`, with the constants of `problem` (which
-    /// must be the problem this was built from, up to the values of its constants).
+    /// The state to linearize about: `q`, `rates` as given, or for a constrained system
+    /// the nearest that meets its constraints (with the constants of `problem`).
     ///
     /// # Errors
-    /// A singular system, a value that is not finite, or eigenvalues that do not converge.
-    /// When the Motion Law's plan is singular at this state, it plans again for it first.
+    /// When the constraints cannot be met near the state.
+    pub fn assemble(
+        &self,
+        problem: &Problem,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+    ) -> Result<(Vec<f64>, Vec<f64>), SolveError> {
+        let (mut q, mut rates) = (q.to_vec(), rates.to_vec());
+        if let Some((assembly, _)) = &self.constraints {
+            let constants: Vec<f64> = problem.constants.iter().map(|c| c.value).collect();
+            assembly.assemble(&constants, t, &mut q, &mut rates)?;
+        }
+        Ok((q, rates))
+    }
+
+    /// The linearization about the state `t`, `q`, `rates` (assembled, see
+    /// [`Linearizer::assemble`]), with the constants of `problem` (the problem this was
+    /// built from, up to the values of its constants), given the state matrix of its
+    /// equations there.
+    ///
+    /// # Errors
+    /// A value that is not finite, or eigenvalues that do not converge.
     pub fn at(
         &self,
         problem: &Problem,
         t: f64,
         q: &[f64],
         rates: &[f64],
+        state: StateMatrix,
     ) -> Result<Linearization, Error> {
-        // A constrained system is linearized where it meets its constraints.
-        let (mut q, mut rates) = (q.to_vec(), rates.to_vec());
-        if let Some((assembly, _)) = &self.constraints {
-            let constants: Vec<f64> = problem.constants.iter().map(|c| c.value).collect();
-            assembly.assemble(&constants, t, &mut q, &mut rates)?;
-        }
-        let (q, rates) = (q.as_slice(), rates.as_slice());
         let inputs = input_values(problem, t, q, rates);
         let describe = || state_text(problem, t, q, rates);
-        let state = match self.jacobian.state_matrix(&inputs, &describe) {
-            Err(SolveError::SingularSystem { .. }) if self.method == Method::MotionLaw => {
-                let here = State {
-                    t,
-                    q: q.to_vec(),
-                    rates: rates.to_vec(),
-                };
-                let derivation = derive_at(problem, self.method, &[here])?;
-                let model = LinearModel::unconstrained(problem, &derivation.system);
-                Jacobian::new(&model)?.state_matrix(&inputs, &describe)?
-            }
-            other => other?,
-        };
         let n = problem.coordinates.len();
         let accelerations: Vec<f64> = state.unknowns[..n].to_vec();
         let (a, variables, coordinates) = match &self.constraints {
-            None => (state.a, self.jacobian.variables.clone(), n),
+            None => (state.a, self.variables.clone(), n),
             Some((_, reducer)) => {
                 let qdd_q = state.a.view((n, 0), (n, n)).into_owned();
                 let qdd_v = state.a.view((n, n), (n, n)).into_owned();
@@ -164,11 +192,7 @@ impl Linearizer {
                 )
             }
         };
-        let state = jacobian::StateMatrix {
-            unknowns: state.unknowns,
-            a,
-        };
-        let eigen = modes::eigen(&state.a).ok_or_else(|| SolveError::NotFinite {
+        let eigen = modes::eigen(&a).ok_or_else(|| SolveError::NotFinite {
             state: describe(),
             what: "the eigenvalues of the state matrix (the iteration did not converge)".into(),
         })?;
@@ -183,7 +207,7 @@ impl Linearizer {
             rates: rates.to_vec(),
             accelerations,
             variables,
-            a: state.a,
+            a,
             eigen,
             modes,
             matrices,

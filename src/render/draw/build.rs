@@ -3,10 +3,10 @@
 use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
 use super::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use super::shapes;
-use crate::equations::rows::is_external;
 use crate::equations::Derivation;
 use crate::mechanics::joints::ComponentKind;
-use crate::plan::forces::{reaction_symbol, Action, ActionKind, Source};
+use crate::plan::forces::{Action, ActionKind, Source};
+use crate::plan::rows::is_external;
 use crate::problem::{BodyId, ForcePoint, JointKind, LoadKind, PointRef};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
@@ -445,11 +445,15 @@ impl Setting<'_, '_, '_> {
                     .filter_map(|c| {
                         let direction = scale(n.vector(&c.direction), sign);
                         unit(direction)?;
-                        let symbol = reaction_symbol(&joint.name, &c.label);
+                        let symbol = c.unknown(&joint.name);
                         // Plain as the joint is named: `F^P2_x` for `F^{P_{2}}_{x}`.
-                        let (letter, axis) = c.label.split_at(1);
                         let label = Label {
-                            plain: format!("{letter}^{}_{axis}", joint.name),
+                            plain: format!(
+                                "{}^{}_{}",
+                                c.kind.letter(),
+                                joint.name,
+                                c.axis.subscript()
+                            ),
                             tex: latex(&Expr::sym(symbol)),
                         };
                         Some(arrow(Kind::Reaction, label, direction))

@@ -59,16 +59,13 @@ impl Drawing {
     }
 }
 
-/// The configuration of `problem` at its initial state, for the student's handout; `None`
-/// when the equations cannot be derived.
-pub fn initial_configuration(
-    problem: &crate::problem::Problem,
-    method: crate::equations::Method,
-) -> Option<Drawing> {
-    let derivation = crate::equations::derive(problem, method).ok()?;
+/// The configuration of the derivation's problem at its initial state, for the student's
+/// handout.
+pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
+    let problem = derivation.model.problem;
     let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    draw(&derivation, 0.0, &q, &rates, None, View::Isometric)
+    draw(derivation, 0.0, &q, &rates, None, View::Isometric)
         .into_iter()
         .next()
 }

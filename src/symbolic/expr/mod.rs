@@ -11,6 +11,9 @@ use std::cmp::Ordering;
 use std::fmt;
 use std::rc::{Rc, Weak};
 
+mod unknown;
+pub use unknown::{Axis, Component, ComponentKind, Unknown};
+
 /// A name shared cheaply between expressions.
 pub type Name = Rc<str>;
 
@@ -27,8 +30,9 @@ pub enum Symbol {
     Coord(Name, u8),
     /// Time `t`.
     Time,
-    /// An unknown of the linear system other than a `q''`: a reaction component.
-    Unknown(Name),
+    /// An unknown of the linear system other than a `q''`: a reaction component, a drive
+    /// or a multiplier (see [`Unknown`]).
+    Unknown(Unknown),
     /// A unit vector `frame.axis` (axis 0, 1, 2 for x, y, z); only inside vector expressions.
     UnitVector(Name, u8),
     /// A quantity named once and used in many places (see [`Definition`]).
@@ -80,9 +84,8 @@ impl Ord for Symbol {
     fn cmp(&self, other: &Self) -> Ordering {
         use super::named::natural_cmp;
         match (self, other) {
-            (Symbol::Const(a), Symbol::Const(b)) | (Symbol::Unknown(a), Symbol::Unknown(b)) => {
-                natural_cmp(a, b).then_with(|| a.cmp(b))
-            }
+            (Symbol::Const(a), Symbol::Const(b)) => natural_cmp(a, b).then_with(|| a.cmp(b)),
+            (Symbol::Unknown(a), Symbol::Unknown(b)) => a.cmp(b),
             (Symbol::Coord(a, i), Symbol::Coord(b, j))
             | (Symbol::UnitVector(a, i), Symbol::UnitVector(b, j)) => natural_cmp(a, b)
                 .then_with(|| a.cmp(b))

@@ -1,0 +1,275 @@
+//! The unknowns of the linear system other than the q'': what each one is, as a type.
+//!
+//! Every printed form derives from the type: the plain name (`O.Fx`, `Q_q1`,
+//! `lambda_loop`), the LaTeX (`F^{O}_{x}`, `Q_{\mathrm{q1}}`, `\lambda_{\mathrm{loop}}`)
+//! and, through the site or coordinate it names, the keys of the commands' output.
+
+use super::Name;
+use std::cmp::Ordering;
+use std::fmt;
+
+/// Whether a reaction component is a force or a moment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum ComponentKind {
+    /// A force through the site's point.
+    Force,
+    /// A moment (a couple).
+    Moment,
+}
+
+impl ComponentKind {
+    /// `F` or `M`.
+    pub fn letter(self) -> &'static str {
+        match self {
+            ComponentKind::Force => "F",
+            ComponentKind::Moment => "M",
+        }
+    }
+}
+
+/// Which way a reaction component acts, as its name tells it. Declared in the order the
+/// names sort in (`F1 < Fn < Ft1 < Fx`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Axis {
+    /// One of the directions chosen perpendicular to a joint's axis, counted from 1.
+    Numbered(u8),
+    /// A rolling contact's normal.
+    Normal,
+    /// One of a rolling contact's tangents, counted from 1.
+    Tangent(u8),
+    /// A unit vector of the frame the reaction is given in: 0, 1, 2 for x, y, z.
+    Unit(u8),
+}
+
+impl Axis {
+    /// The subscript: `x`, `2`, `n`, `t1`.
+    pub fn subscript(self) -> String {
+        match self {
+            Axis::Numbered(i) => i.to_string(),
+            Axis::Normal => "n".into(),
+            Axis::Tangent(i) => format!("t{i}"),
+            Axis::Unit(i) => ["x", "y", "z"]
+                .get(i as usize)
+                .copied()
+                .unwrap_or("?")
+                .into(),
+        }
+    }
+}
+
+/// One reaction component's kind and axis: `Fx`, `M1`, `Fn`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Component {
+    /// Force or moment.
+    pub kind: ComponentKind,
+    /// Which way it acts.
+    pub axis: Axis,
+}
+
+impl fmt::Display for Component {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}{}", self.kind.letter(), self.axis.subscript())
+    }
+}
+
+/// An unknown of the linear system other than a q'' (those are `Symbol::Coord(_, 2)`).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Unknown {
+    /// A reaction component at a site: a joint, a closure or a rolling contact (whose
+    /// contact forces are its reaction components).
+    Reaction {
+        /// The site's name.
+        site: Name,
+        /// Which component.
+        component: Component,
+    },
+    /// The generalized force that drives a prescribed coordinate.
+    Drive {
+        /// The coordinate's name.
+        coordinate: Name,
+    },
+    /// The multiplier of a `position` or `velocity` constraint entry.
+    Multiplier {
+        /// The entry's name.
+        constraint: Name,
+    },
+}
+
+impl Unknown {
+    /// The site whose reaction this is, if it is one.
+    pub fn site(&self) -> Option<&str> {
+        match self {
+            Unknown::Reaction { site, .. } => Some(site),
+            _ => None,
+        }
+    }
+
+    /// The name in LaTeX: `F^{O}_{x}`, `Q_{\mathrm{q1}}`, `\lambda_{\mathrm{loop}}`.
+    pub fn latex(&self) -> String {
+        use crate::symbolic::print::{latex_name, latex_name_plain};
+        match self {
+            Unknown::Reaction { site, component } => format!(
+                "{}^{{{}}}_{{{}}}",
+                component.kind.letter(),
+                latex_name(site),
+                component.axis.subscript()
+            ),
+            Unknown::Drive { coordinate } => format!("Q_{{{}}}", latex_name_plain(coordinate)),
+            Unknown::Multiplier { constraint } => {
+                format!("\\lambda_{{{}}}", latex_name_plain(constraint))
+            }
+        }
+    }
+}
+
+/// The plain name: `O.Fx`, `Q_q1`, `lambda_loop`.
+impl fmt::Display for Unknown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Unknown::Reaction { site, component } => write!(f, "{site}.{component}"),
+            Unknown::Drive { coordinate } => write!(f, "Q_{coordinate}"),
+            Unknown::Multiplier { constraint } => write!(f, "lambda_{constraint}"),
+        }
+    }
+}
+
+/// Unknowns sort as their plain names do, read as a reader counts (`A.Fx < A.Fy < B.Fx`,
+/// `Q_q2 < Q_q10`), so expressions print in the same order whatever the kind of unknown.
+impl Ord for Unknown {
+    fn cmp(&self, other: &Self) -> Ordering {
+        use super::super::named::natural_cmp;
+        match (self, other) {
+            // The common cases need no name written out: with one site, the names differ
+            // in the component alone, whose order is that of its name.
+            (
+                Unknown::Reaction {
+                    site: a,
+                    component: x,
+                },
+                Unknown::Reaction {
+                    site: b,
+                    component: y,
+                },
+            ) if a == b => x.cmp(y),
+            (Unknown::Drive { coordinate: a }, Unknown::Drive { coordinate: b })
+            | (Unknown::Multiplier { constraint: a }, Unknown::Multiplier { constraint: b }) => {
+                natural_cmp(a, b).then_with(|| a.cmp(b))
+            }
+            _ => {
+                let (a, b) = (self.to_string(), other.to_string());
+                natural_cmp(&a, &b).then_with(|| a.cmp(&b))
+            }
+        }
+    }
+}
+
+impl PartialOrd for Unknown {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::named::natural_cmp;
+
+    fn reaction(site: &str, kind: ComponentKind, axis: Axis) -> Unknown {
+        Unknown::Reaction {
+            site: site.into(),
+            component: Component { kind, axis },
+        }
+    }
+
+    #[test]
+    fn names_and_latex_come_from_the_type() {
+        use Axis::*;
+        use ComponentKind::*;
+        let check = |u: Unknown, plain: &str, latex: &str| {
+            assert_eq!(u.to_string(), plain);
+            assert_eq!(u.latex(), latex);
+        };
+        check(reaction("O", Force, Unit(0)), "O.Fx", "F^{O}_{x}");
+        check(
+            reaction("P2", Moment, Numbered(1)),
+            "P2.M1",
+            "M^{P_{2}}_{1}",
+        );
+        check(
+            reaction("floor", Force, Normal),
+            "floor.Fn",
+            "F^{\\mathrm{floor}}_{n}",
+        );
+        check(
+            reaction("floor", Force, Tangent(2)),
+            "floor.Ft2",
+            "F^{\\mathrm{floor}}_{t2}",
+        );
+        check(
+            Unknown::Drive {
+                coordinate: "q1".into(),
+            },
+            "Q_q1",
+            "Q_{\\mathrm{q1}}",
+        );
+        check(
+            Unknown::Multiplier {
+                constraint: "loop".into(),
+            },
+            "lambda_loop",
+            "\\lambda_{\\mathrm{loop}}",
+        );
+        // As a name with `_` was printed: the part after the first `_` as the subscript.
+        check(
+            Unknown::Drive {
+                coordinate: "q_1".into(),
+            },
+            "Q_q_1",
+            &crate::symbolic::print::latex_name("Q_q_1"),
+        );
+        check(
+            Unknown::Multiplier {
+                constraint: "2".into(),
+            },
+            "lambda_2",
+            "\\lambda_{2}",
+        );
+    }
+
+    #[test]
+    fn unknowns_sort_as_their_names() {
+        use Axis::*;
+        use ComponentKind::*;
+        let mut all = Vec::new();
+        for site in ["A", "A1", "A10", "A2", "B", "Q", "a", "lambda"] {
+            for kind in [Force, Moment] {
+                for axis in [
+                    Unit(2),
+                    Unit(0),
+                    Numbered(2),
+                    Numbered(1),
+                    Normal,
+                    Tangent(1),
+                ] {
+                    all.push(reaction(site, kind, axis));
+                }
+            }
+        }
+        for name in ["q1", "q10", "q2", "x"] {
+            all.push(Unknown::Drive {
+                coordinate: name.into(),
+            });
+            all.push(Unknown::Multiplier {
+                constraint: name.into(),
+            });
+        }
+        let mut by_type = all.clone();
+        by_type.sort();
+        let mut by_name = all;
+        by_name.sort_by(|a, b| {
+            let (a, b) = (a.to_string(), b.to_string());
+            natural_cmp(&a, &b).then_with(|| a.cmp(&b))
+        });
+        assert_eq!(by_type, by_name);
+    }
+}
