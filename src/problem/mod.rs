@@ -17,6 +17,7 @@
 //! - a force names a point fixed on the body it acts on;
 //! - keys that do not apply to a joint's type (`axis` on a spherical joint) are errors.
 
+mod bodies;
 mod constraints;
 mod expressions;
 mod graph;

@@ -88,21 +88,7 @@ fn tokenize(text: &str) -> Result<Vec<(Token, usize)>, ParseError> {
             || (c == '.' && chars.get(i + 1).is_some_and(|d| d.is_ascii_digit()))
         {
             let start = i;
-            while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
-                i += 1;
-            }
-            if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
-                let mut j = i + 1;
-                if j < chars.len() && (chars[j] == '+' || chars[j] == '-') {
-                    j += 1;
-                }
-                if j < chars.len() && chars[j].is_ascii_digit() {
-                    i = j;
-                    while i < chars.len() && chars[i].is_ascii_digit() {
-                        i += 1;
-                    }
-                }
-            }
+            i = number_literal_end(&chars, i);
             let literal: String = chars[start..i].iter().collect();
             let number = Number::parse_decimal(&literal).ok_or_else(|| {
                 ParseError::new(column, format!("`{literal}` is not a finite number"))
@@ -361,6 +347,28 @@ impl Parser<'_> {
         }
         Ok(func(f, args))
     }
+}
+
+/// Where the number literal starting at `start` ends: digits and points, then an optional
+/// exponent (`e`, an optional sign, digits). Shared with the scan for written decimals.
+pub(crate) fn number_literal_end(chars: &[char], start: usize) -> usize {
+    let mut i = start;
+    while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+        i += 1;
+    }
+    if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
+        let mut j = i + 1;
+        if j < chars.len() && (chars[j] == '+' || chars[j] == '-') {
+            j += 1;
+        }
+        if j < chars.len() && chars[j].is_ascii_digit() {
+            i = j;
+            while i < chars.len() && chars[i].is_ascii_digit() {
+                i += 1;
+            }
+        }
+    }
+    i
 }
 
 #[cfg(test)]

@@ -172,21 +172,7 @@ pub fn decimal_literals(text: &str) -> Vec<(Number, String)> {
             continue;
         }
         let start = i;
-        while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
-            i += 1;
-        }
-        if i < chars.len() && (chars[i] == 'e' || chars[i] == 'E') {
-            let mut j = i + 1;
-            if j < chars.len() && (chars[j] == '+' || chars[j] == '-') {
-                j += 1;
-            }
-            if j < chars.len() && chars[j].is_ascii_digit() {
-                i = j;
-                while i < chars.len() && chars[i].is_ascii_digit() {
-                    i += 1;
-                }
-            }
-        }
+        i = super::parse::number_literal_end(&chars, i);
         let literal: String = chars[start..i].iter().collect();
         if !literal.contains(['.', 'e', 'E']) {
             continue;

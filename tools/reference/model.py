@@ -93,7 +93,8 @@ class Problem:
             self.gravity = self._tree(data["gravity"], "gravity")
         self.loads = [self._read_load(l, f"loads[{i}]") for i, l in enumerate(data.get("loads") or [])]
         find = data.get("find") or {}
-        _keys(find, "find", set(), {"reactions"})
+        # Questions are answered from q'' and reactions, which is what is compared here.
+        _keys(find, "find", set(), {"reactions", "questions"})
         self.find = list(find.get("reactions") or [])
         for j in self.find:
             if j not in self.joint_by_name:
