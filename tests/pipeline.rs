@@ -91,3 +91,34 @@ fn a_linearization_where_the_plan_is_singular_is_made_with_a_new_plan() {
         );
     }
 }
+
+/// `explain`'s stages (`pipeline::work`) on the spherical pendulum started at the special
+/// state: the worked solution's q'' there are Newton–Euler's, and its simulation, which
+/// runs through the Motion Law solver with the recovery, ends normally with every check
+/// passing.
+#[test]
+fn the_worked_solution_is_made_at_a_state_where_the_first_plan_is_singular() {
+    let mut problem = load_file(&crate::support::problem("spherical-pendulum")).expect("loads");
+    for (c, q) in problem
+        .coordinates
+        .iter_mut()
+        .zip([std::f64::consts::FRAC_PI_2, 0.0, 0.0])
+    {
+        c.initial = q;
+    }
+    problem.simulate.duration = 0.5;
+    let worked = mbd_tutor::pipeline::work(&problem, Method::MotionLaw).expect("works");
+    let reference = mbd_tutor::pipeline::work(&problem, Method::NewtonEuler).expect("works");
+    for (a, b) in worked
+        .initial
+        .accelerations
+        .iter()
+        .zip(&reference.initial.accelerations)
+    {
+        assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{a} against {b}");
+    }
+    let (trajectory, checks) = worked.simulation.as_ref().expect("the simulation runs");
+    assert!(trajectory.stopped.is_none(), "{:?}", trajectory.stopped);
+    assert!(!checks.is_empty());
+    assert!(checks.iter().all(|c| c.passed), "{checks:?}");
+}
