@@ -12,6 +12,7 @@ mod kane_handout;
 mod kinematics;
 mod library;
 mod linearize;
+mod mathml;
 mod methods;
 mod pipeline;
 mod planner;

@@ -70,7 +70,40 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
     let mut out = String::new();
     push_mathml(&mut out, events.into_iter(), config).map_err(|e| error(e.to_string()))?;
     // Our `mover`s are accents (`\hat`, `\dot`, `\ddot`): marked so, they sit close to the letter.
-    Ok(sanitize(&out.replace("<mover>", "<mover accent=\"true\">")))
+    let out = out.replace("<mover>", "<mover accent=\"true\">");
+    Ok(sanitize(&spaces_out_of_scripts(&out)))
+}
+
+/// The elements whose children are counted: a base and one or two scripts.
+const SCRIPTS: [&str; 6] = ["msup", "msub", "msubsup", "mover", "munder", "munderover"];
+
+/// Moves an `<mspace .../>` that opens a script element to just before it.
+///
+/// `pulldown-latex` writes the thin space before an operator name inside the script
+/// element, so `\sin^{2}` becomes `<msup><mspace/><mi>sin</mi><mn>2</mn></msup>`: three
+/// children where MathML allows two, which browsers then draw wrongly.
+fn spaces_out_of_scripts(markup: &str) -> String {
+    let mut out = markup.to_string();
+    for tag in SCRIPTS {
+        let open = format!("<{tag}>");
+        let mut from = 0;
+        while let Some(at) = out[from..].find(&open).map(|i| i + from) {
+            let inner = at + open.len();
+            let space = out[inner..]
+                .starts_with("<mspace")
+                .then(|| out[inner..].find("/>"))
+                .flatten();
+            match space {
+                Some(end) => {
+                    let space = out[inner..inner + end + 2].to_string();
+                    out.replace_range(at..inner + end + 2, &format!("{space}{open}"));
+                    from = at + space.len() + open.len();
+                }
+                None => from = inner,
+            }
+        }
+    }
+    out
 }
 
 /// Converts LaTeX math to MathML; when it cannot, shows the LaTeX source as escaped code,
@@ -223,6 +256,19 @@ mod tests {
                 "<mtr><mtd><mi>a</mi></mtd><mtd><mi>b</mi></mtd></mtr>",
                 "<mi>d</mi>",
                 "]</mo>",
+            ],
+        );
+    }
+
+    #[test]
+    fn a_squared_sine_is_a_base_and_one_script() {
+        let mathml = to_mathml("\\sin^{2}(q) + \\cos^{2}{x}", Display::Inline).unwrap_or_default();
+        assert!(!mathml.contains("<msup><mspace"), "{mathml}");
+        check(
+            "\\sin^{2}(q)",
+            &[
+                "<mspace",
+                "/><msup><mi>sin</mi><mrow><mn>2</mn></mrow></msup>",
             ],
         );
     }

@@ -164,3 +164,5 @@ pub fn column(columns: &[String], name: &str) -> usize {
         .position(|c| c == name)
         .unwrap_or_else(|| panic!("no column {name} in {columns:?}"))
 }
+
+pub mod mathml;
