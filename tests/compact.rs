@@ -174,7 +174,7 @@ fn a_wall_spring_reads_as_minus_k_x() {
 fn indices_are_sorted_as_a_reader_counts() {
     let markdown = explain("validation/ten-link-chain", "markdown");
     // By hand: the last link turns at the sum of all ten relative rates, q1' to q10'.
-    let expected = "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{10}} = \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6} + \\dot{q}_{7} + \\dot{q}_{8} + \\dot{q}_{9} + \\dot{q}_{10}\\right) \\hat{\\mathbf{link}_{10}}_{z}";
+    let expected = "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{10}} = \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6} + \\dot{q}_{7} + \\dot{q}_{8} + \\dot{q}_{9} + \\dot{q}_{10}\\right) \\hat{\\mathbf{z}}_{\\mathrm{link}_{10}}";
     assert!(
         markdown.lines().any(|l| l.trim() == expected),
         "no line reads {expected}"

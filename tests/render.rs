@@ -174,7 +174,7 @@ fn html_is_self_contained_mathml_without_script() {
 fn markdown_math_is_dollar_delimited_and_matches_snapshot() {
     let markdown = rendered(&sample(), Format::Markdown, false);
     assert!(markdown.contains(
-        "| $q_{1}$ | angle of rod A from the downward vertical | O (revolute) | rad | 0.5 | 0 |"
+        "| $q_{1}$ | angle of rod A from the downward vertical | O (revolute) | $\\mathrm{rad}$ | 0.5 | 0 |"
     ));
     assert!(markdown.contains("$$\n\\begin{bmatrix}"));
     insta::assert_snapshot!("render_sample_markdown", markdown);
@@ -192,7 +192,8 @@ fn hostile_sample() -> Solution {
         "{HOSTILE}\n\n{{% include \"/etc/passwd\" %}} second paragraph"
     ));
     s.constants[0].description = HOSTILE.into();
-    s.constants[0].unit = HOSTILE.into();
+    // A unit reaches the page only as `units::unit_tex` sets it.
+    s.constants[0].unit_tex = mbd_tutor::render::units::unit_tex(HOSTILE);
     s.coordinates[0].description = HOSTILE.into();
     s.free_bodies[0].contact[0].label = HOSTILE.into();
     s.plan.rejected[0].reason = HOSTILE.into();

@@ -150,33 +150,9 @@ fn coordinate_unit(problem: &Problem, i: usize, order: u8) -> String {
 
 /// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
 fn unit_tex(unit: &str) -> String {
-    let tokens: Vec<String> = unit
-        .split_whitespace()
-        .map(|token| {
-            let clean: String = token
-                .chars()
-                .filter(|c| c.is_alphanumeric() || "^/.*-()".contains(*c))
-                .collect();
-            // `s^2` and `m/s^2`: the exponent raised, each part upright.
-            let parts: Vec<String> = clean
-                .split('^')
-                .enumerate()
-                .map(
-                    |(i, part)| match (i, part.find(|c: char| !c.is_ascii_digit() && c != '-')) {
-                        (0, _) => format!("\\mathrm{{{part}}}"),
-                        (_, Some(k)) => format!("{{{}}}\\mathrm{{{}}}", &part[..k], &part[k..]),
-                        (_, None) => format!("{{{part}}}"),
-                    },
-                )
-                .collect();
-            parts.join("^")
-        })
-        .filter(|t| !t.is_empty())
-        .collect();
-    if tokens.is_empty() {
-        String::new()
-    } else {
-        format!("\\ {}", tokens.join("\\,"))
+    match super::units::unit_tex(unit) {
+        tex if tex.is_empty() => tex,
+        tex => format!("\\ {tex}"),
     }
 }
 

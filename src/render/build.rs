@@ -193,7 +193,7 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
                 rate_tex: latex(&problem.coordinate_expr(i, 1)),
                 description: c.description.clone().unwrap_or_default(),
                 joint: format!("{} ({})", joint.name, joint.kind.name()),
-                unit,
+                unit_tex: super::units::unit_tex(&unit),
                 initial: fixed(c.initial),
                 initial_rate: fixed(c.rate),
             }
@@ -208,7 +208,7 @@ fn constants(problem: &Problem) -> Vec<Constant> {
         .map(|c| Constant {
             name_tex: latex_name(&c.name),
             value: fixed(c.value),
-            unit: c.unit.clone().unwrap_or_default(),
+            unit_tex: super::units::unit_tex(c.unit.as_deref().unwrap_or_default()),
             description: c.description.clone().unwrap_or_default(),
         })
         .collect()

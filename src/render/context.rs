@@ -121,8 +121,8 @@ pub struct Coordinate {
     pub description: String,
     /// The joint that owns it and the joint's type, e.g. `O (revolute)`.
     pub joint: String,
-    /// Its unit, e.g. `rad` (user text).
-    pub unit: String,
+    /// Its unit in LaTeX, e.g. `\\mathrm{rad}` (see `units`).
+    pub unit_tex: String,
     /// Its initial value, formatted.
     pub initial: String,
     /// Its initial rate, formatted.
@@ -136,8 +136,8 @@ pub struct Constant {
     pub name_tex: String,
     /// Its value (after `--set`), formatted.
     pub value: String,
-    /// Its unit (user text; may be empty).
-    pub unit: String,
+    /// Its unit in LaTeX (may be empty).
+    pub unit_tex: String,
     /// What it is (user text; may be empty).
     pub description: String,
 }
@@ -358,8 +358,8 @@ pub struct InitialValue {
     pub name_tex: String,
     /// Its value, formatted.
     pub value: String,
-    /// Its unit (may be empty), e.g. `rad/s^2`.
-    pub unit: String,
+    /// Its unit in LaTeX (may be empty), e.g. `\\mathrm{rad/s^{2}}`.
+    pub unit_tex: String,
 }
 
 /// The reaction at one joint, at the initial state.

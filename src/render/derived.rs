@@ -74,9 +74,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .map(|(i, c)| InitialValue {
             name_tex: latex(&problem.coordinate_expr(i, 2)),
             value: fixed(initial.accelerations[i]),
-            unit: match c.kind {
-                crate::problem::CoordinateKind::Angle => "rad/s^2".into(),
-                crate::problem::CoordinateKind::Distance => "m/s^2".into(),
+            unit_tex: match c.kind {
+                crate::problem::CoordinateKind::Angle => super::units::unit_tex("rad/s^2"),
+                crate::problem::CoordinateKind::Distance => super::units::unit_tex("m/s^2"),
             },
         })
         .collect();

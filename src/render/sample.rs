@@ -35,9 +35,9 @@ pub fn sample() -> Solution {
             coordinate("q_{2}", "\\dot{q}_{2}", "angle of rod B relative to rod A", "P (revolute)", "0"),
         ],
         constants: vec![
-            constant("m", "1", "kg", "mass of each rod"),
-            constant("L", "0.5", "m", "length of each rod"),
-            constant("g", "9.81", "m/s^2", "gravitational acceleration"),
+            constant("m", "1", "\\mathrm{kg}", "mass of each rod"),
+            constant("L", "0.5", "\\mathrm{m}", "length of each rod"),
+            constant("g", "9.81", "\\mathrm{m/s^{2}}", "gravitational acceleration"),
         ],
         constraints: Vec::new(),
         constraint_notes: Vec::new(),
@@ -51,10 +51,10 @@ pub fn sample() -> Solution {
         partial_velocities: Vec::new(),
         matrix: matrix(),
         initial_values: vec![
-            value("\\ddot{q}_{1}", "-12.0939", "rad/s^2"),
-            value("\\ddot{q}_{2}", "16.1251", "rad/s^2"),
-            value("F^{O}_{x}", "-7.07557", "N"),
-            value("F^{O}_{y}", "15.7546", "N"),
+            value("\\ddot{q}_{1}", "-12.0939", "\\mathrm{rad/s^{2}}"),
+            value("\\ddot{q}_{2}", "16.1251", "\\mathrm{rad/s^{2}}"),
+            value("F^{O}_{x}", "-7.07557", "\\mathrm{N}"),
+            value("F^{O}_{y}", "15.7546", "\\mathrm{N}"),
         ],
         reactions: vec![Reaction {
             joint: s("O"),
@@ -108,7 +108,7 @@ fn coordinate(name: &str, rate: &str, description: &str, joint: &str, initial: &
         rate_tex: s(rate),
         description: s(description),
         joint: s(joint),
-        unit: s("rad"),
+        unit_tex: s("\\mathrm{rad}"),
         initial: s(initial),
         initial_rate: s("0"),
     }
@@ -118,7 +118,7 @@ fn constant(name: &str, value: &str, unit: &str, description: &str) -> Constant 
     Constant {
         name_tex: s(name),
         value: s(value),
-        unit: s(unit),
+        unit_tex: s(unit),
         description: s(description),
     }
 }
@@ -127,7 +127,7 @@ fn value(name: &str, value: &str, unit: &str) -> InitialValue {
     InitialValue {
         name_tex: s(name),
         value: s(value),
-        unit: s(unit),
+        unit_tex: s(unit),
     }
 }
 

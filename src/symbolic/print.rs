@@ -64,17 +64,22 @@ pub(crate) fn latex_name_plain(sub: &str) -> String {
     }
 }
 
-/// A unit vector as a bold hat: `\hat{\mathbf{a}}_{x}`, `\hat{\mathbf{link}_{1}}_{x}`.
+/// A unit vector as a bold hat over one letter: `\hat{\mathbf{a}}_{x}`, `\hat{\mathbf{b}}_{1,x}` (frame B1),
+/// `\hat{\mathbf{x}}_{\mathrm{wedge}}`.
 pub fn latex_unit_vector(frame: &str, axis: u8) -> String {
     let axis = ["x", "y", "z"].get(axis as usize).copied().unwrap_or("?");
     let name = latex_name(&frame.to_lowercase());
-    // A word is set upright by `\mathrm`; inside `\mathbf` that would undo the bold, so the
-    // word is set in `\mathbf` alone.
-    let bold = match name.strip_prefix("\\mathrm{") {
-        Some(rest) => format!("\\mathbf{{{rest}"),
-        None => format!("\\mathbf{{{name}}}"),
-    };
-    format!("\\hat{{{bold}}}_{{{axis}}}")
+    // The hat sits over one letter only, as textbooks print it: the frame's letter (`a_x`,
+    // `b_{1,x}` for B1), or, for a frame named by a word, the axis with the word below
+    // (`x_wedge`).
+    match name.split_once("_{") {
+        _ if name.chars().count() == 1 => format!("\\hat{{\\mathbf{{{name}}}}}_{{{axis}}}"),
+        Some((stem, index)) if stem.chars().count() == 1 => {
+            let index = index.trim_end_matches('}');
+            format!("\\hat{{\\mathbf{{{stem}}}}}_{{{index},{axis}}}")
+        }
+        _ => format!("\\hat{{\\mathbf{{{axis}}}}}_{{{name}}}"),
+    }
 }
 
 fn latex_symbol(s: &Symbol) -> String {
@@ -375,10 +380,15 @@ mod tests {
         assert_eq!(latex_name("theta2"), "\\theta_{2}");
         assert_eq!(latex_name("m_A"), "m_{A}");
         assert_eq!(latex_unit_vector("A", 0), "\\hat{\\mathbf{a}}_{x}");
-        assert_eq!(latex_unit_vector("wedge", 1), "\\hat{\\mathbf{wedge}}_{y}");
+        // The hat over one letter: the frame's, or the axis's under a word.
+        assert_eq!(latex_unit_vector("B1", 0), "\\hat{\\mathbf{b}}_{1,x}");
+        assert_eq!(
+            latex_unit_vector("wedge", 1),
+            "\\hat{\\mathbf{y}}_{\\mathrm{wedge}}"
+        );
         assert_eq!(
             latex_unit_vector("link1", 2),
-            "\\hat{\\mathbf{link}_{1}}_{z}"
+            "\\hat{\\mathbf{z}}_{\\mathrm{link}_{1}}"
         );
     }
 
