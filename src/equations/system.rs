@@ -77,16 +77,7 @@ pub struct Derivation<'p> {
     pub reaction_joints: Vec<usize>,
 }
 
-/// The reaction unknowns of the given sites (joints, closures, contacts), in that order.
-pub fn reaction_unknowns(model: &Model, sites: &[usize]) -> Vec<Symbol> {
-    sites
-        .iter()
-        .flat_map(|&j| {
-            let site = &model.sites[j];
-            site.reactions.iter().map(move |c| c.unknown(&site.name))
-        })
-        .collect()
-}
+pub use crate::mechanics::sites::reaction_unknowns;
 
 /// The unknowns that enforce constraint rows without a site: drives and multipliers.
 fn constraint_unknowns(model: &Model) -> Vec<Symbol> {

@@ -295,7 +295,7 @@ fn identically_zero(e: &Expr, model: &Model) -> bool {
     if e.is_zero() {
         return true;
     }
-    crate::plan::planner::sample_states(model)
+    super::model::sample_states(model)
         .iter()
         .all(|values| eval(e, values).abs() < 1e-12)
 }

@@ -319,3 +319,14 @@ fn tangents_of(n: &Components, planar: bool, model: &Model) -> Vec<Vector> {
         Vector::new(BodyId::GROUND, second),
     ]
 }
+
+/// The reaction unknowns of the given sites (joints, closures, contacts), in that order.
+pub fn reaction_unknowns(model: &super::Model, sites: &[usize]) -> Vec<crate::symbolic::Symbol> {
+    sites
+        .iter()
+        .flat_map(|&j| {
+            let site = &model.sites[j];
+            site.reactions.iter().map(move |c| c.unknown(&site.name))
+        })
+        .collect()
+}

@@ -5,7 +5,7 @@
 
 use super::planner::{adds_rank, coefficient_rows, sample_states, write_out, Candidate};
 use super::rejection::{self, Reason, Rejected, SpecialState};
-use crate::equations::rows::{Equation, Inertia};
+use super::rows::{Equation, Inertia};
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
 use crate::symbolic::eval::{eval, Values};

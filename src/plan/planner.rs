@@ -5,7 +5,7 @@
 //! candidate keeps its typed [`Reason`], so that the worked solution can show why a choice
 //! was made.
 
-use crate::equations::rows::{
+use super::rows::{
     action_terms, resultant, unit_direction, unknowns_in, Direction, Equation, Inertia, Sum,
 };
 use crate::mechanics::{Model, Vector};
@@ -277,34 +277,7 @@ pub fn write_out(
     }
 }
 
-/// States at which a choice of rows must be nonsingular: the initial state and a few generic
-/// ones (seeded, so the choice is the same every run). Requiring rank at all of them keeps the
-/// planner away from rows that only look independent at one state.
-pub fn sample_states(model: &Model) -> Vec<Values> {
-    let problem = model.problem;
-    let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
-    let mut next = || {
-        seed = seed
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-    };
-    let mut states = Vec::new();
-    for sample in 0..4 {
-        let (mut q, mut rates) = (Vec::new(), Vec::new());
-        for c in &problem.coordinates {
-            let (value, rate) = if sample == 0 {
-                (c.initial, c.rate)
-            } else {
-                (c.initial + next(), c.rate + next())
-            };
-            q.push(value);
-            rates.push(rate);
-        }
-        states.push(model.values_at(0.37 * sample as f64, &q, &rates));
-    }
-    states
-}
+pub use crate::mechanics::model::sample_states;
 
 /// The coefficients of the unknowns in a row, at each of `states`.
 pub fn coefficient_rows(

@@ -2,8 +2,8 @@
 //! sentences from it, and picks the few rejections worth showing a student.
 
 use super::planner::Candidate;
-use crate::equations::rows::Sum;
-use crate::equations::system::reaction_unknowns;
+use super::rows::Sum;
+use crate::mechanics::sites::reaction_unknowns;
 use crate::mechanics::Model;
 use crate::symbolic::Symbol;
 
