@@ -71,7 +71,7 @@ impl fmt::Display for Error {
             Error::TooMuchWork { overrun, method } => {
                 let raise = format!(
                     "raise the limit with --max-work {}",
-                    overrun.limit / 250_000
+                    (overrun.limit / 250_000).max(1)
                 );
                 match method {
                     crate::equations::Method::NewtonEuler => write!(f, "{overrun}\n  hint: {raise}"),

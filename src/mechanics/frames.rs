@@ -7,10 +7,17 @@
 
 use super::vector::{cross3, dot3, Components};
 use crate::problem::BodyId;
+use crate::symbolic::print::latex_name;
 use crate::symbolic::{add, cos, sin, Expr};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
+
+/// Chains of more rotations than this, after merging, are composed from named matrices
+/// (see [`Frames::composed`]); shorter ones are multiplied out and simplified.
+const MAX_DIRECT_ROTATIONS: usize = 3;
+
+const AXES: [&str; 3] = ["x", "y", "z"];
 
 /// A 3x3 matrix of expressions, row-major.
 pub type Matrix = [[Expr; 3]; 3];
@@ -170,6 +177,11 @@ impl Frames {
             return m.clone();
         }
         let rotations = self.rotations_between(to, from);
+        if rotations.len() > MAX_DIRECT_ROTATIONS {
+            let matrix = Rc::new(self.composed(to, from));
+            self.cache.borrow_mut().insert((to, from), matrix.clone());
+            return matrix;
+        }
         let matrix = rotations
             .iter()
             .fold(identity(), |acc, r| matmul(&acc, &r.matrix()));
@@ -185,6 +197,55 @@ impl Frames {
         let matrix = Rc::new(matrix);
         self.cache.borrow_mut().insert((to, from), matrix.clone());
         matrix
+    }
+
+    /// The matrix `to <- from` of a long chain of rotations, as the product of the matrices
+    /// of a shorter chain and of one joint, each entry named (`ᴺC^{B3}_{12}`). Multiplied
+    /// out, a chain of k spherical joints has entries of 3^k-fold trig products, and every
+    /// product of vectors across the chain would multiply them out again.
+    fn composed(&self, to: BodyId, from: BodyId) -> Matrix {
+        if self.path_from_ground(to).contains(&from) {
+            // `from` is an ancestor of `to`: the transpose of the named matrix the other way.
+            return transpose(&self.dcm(from, to));
+        }
+        let Some(parent) = self.frames[from.0].parent else {
+            return transpose(&self.dcm(from, to));
+        };
+        let product = matmul(&self.dcm(to, parent), &self.dcm(parent, from));
+        let (to_name, from_name) = (self.display_name(to), self.display_name(from));
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let value = &product[i][j];
+                if value.terms().len() < 2 {
+                    return value.clone();
+                }
+                Expr::named(
+                    &format!("C.{to_name}.{from_name}.{}{}", i + 1, j + 1),
+                    &format!(
+                        "{{}}^{{{}}}C^{{{}}}_{{{}{}}}",
+                        latex_name(&to_name),
+                        latex_name(&from_name),
+                        i + 1,
+                        j + 1
+                    ),
+                    &format!(
+                        "the direction cosine {}.{} · {}.{}",
+                        to_name,
+                        AXES[i],
+                        from_name,
+                        AXES[j]
+                    ),
+                    value.clone(),
+                )
+            })
+        })
+    }
+
+    fn display_name(&self, frame: BodyId) -> String {
+        self.names
+            .get(frame.0)
+            .cloned()
+            .unwrap_or_else(|| format!("F{}", frame.0))
     }
 
     /// Components given in `from` rewritten in `to`.

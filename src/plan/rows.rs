@@ -1,9 +1,10 @@
 //! One scalar equation of motion: a free body, a sum of forces or of moments about a point,
 //! dotted with a direction, its terms grouped as the Motion Law groups them.
 
+use crate::mechanics::compact::{named_components, Kind, Quantity, MAX_EXPANDED_TERMS};
 use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::frames::apply;
-use crate::mechanics::vector::Components;
+use crate::mechanics::vector::{size, Components};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
@@ -23,11 +24,41 @@ impl Inertia {
     pub fn of(model: &Model) -> Inertia {
         let mut force = Vec::with_capacity(model.bodies.len());
         let mut torque = Vec::with_capacity(model.bodies.len());
+        let accelerations: Vec<Symbol> = (0..model.problem.coordinates.len())
+            .map(|i| model.problem.coordinate_symbol(i, 2))
+            .collect();
+        // Spatial bodies' accelerations in their own unit vectors with named parts; planar
+        // ones stay as the student writes them.
+        let named = |body: BodyId, vector: &Vector, kind: Kind| -> Components {
+            let components = vector.components_in(body, &model.frames);
+            if model.is_planar() || body == BodyId::GROUND {
+                return components;
+            }
+            let body_name = model.frames.name(body);
+            let quantity = Quantity {
+                body: body_name,
+                kind,
+            };
+            named_components(&components, &accelerations, &quantity)
+        };
+        // A short acceleration keeps the unit vectors it was written in (`ẍ n_x`).
+        let is_long = |vector: &Vector| {
+            let terms: usize = vector.parts().iter().map(|(_, c)| size(c)).sum();
+            terms > 3 * MAX_EXPANDED_TERMS
+        };
         for (index, state) in model.bodies.iter().enumerate() {
             let body = BodyId(index);
-            force.push(state.center.acceleration.scaled(&-state.mass.clone()));
+            let center = if model.is_planar() || !is_long(&state.center.acceleration) {
+                state.center.acceleration.clone()
+            } else {
+                Vector::new(
+                    body,
+                    named(body, &state.center.acceleration, Kind::CenterAcceleration),
+                )
+            };
+            force.push(center.scaled(&-state.mass.clone()));
             let w = state.omega_named.components_in(body, &model.frames);
-            let a = state.alpha.components_in(body, &model.frames);
+            let a = named(body, &state.alpha, Kind::AngularAcceleration);
             let iw = apply(&state.inertia, &w);
             let ia = apply(&state.inertia, &a);
             let gyro = crate::mechanics::vector::cross3(&w, &iw);

@@ -2,12 +2,17 @@
 //! (see `compile` for that).
 
 use super::expr::{Expr, Func, Node, Symbol};
+use std::cell::RefCell;
 use std::collections::HashMap;
 
 /// Values of the symbols an expression may hold.
 #[derive(Clone, Debug, Default)]
 pub struct Values {
     values: HashMap<Symbol, f64>,
+    /// The values of the definitions met so far, by name, with these values: definitions
+    /// built on definitions (the direction cosines of a chain) are then evaluated once each,
+    /// not once per path through them.
+    defined: RefCell<HashMap<std::rc::Rc<str>, f64>>,
 }
 
 impl Values {
@@ -19,6 +24,7 @@ impl Values {
     /// Sets the value of `symbol`.
     pub fn set(&mut self, symbol: Symbol, value: f64) {
         self.values.insert(symbol, value);
+        self.defined.get_mut().clear();
     }
 
     /// The value of `symbol`; `pi` is built in, an unset symbol is NaN.
@@ -74,7 +80,14 @@ pub fn power(base: f64, exponent: f64) -> f64 {
 pub fn eval(e: &Expr, values: &Values) -> f64 {
     match e.node() {
         Node::Num(n) => n.to_f64(),
-        Node::Sym(Symbol::Defined(d)) => eval(d.value(), values),
+        Node::Sym(Symbol::Defined(d)) => {
+            if let Some(v) = values.defined.borrow().get(d.name()) {
+                return *v;
+            }
+            let v = eval(d.value(), values);
+            values.defined.borrow_mut().insert(d.name().into(), v);
+            v
+        }
         Node::Sym(s) => values.get(s),
         Node::Add(terms) => terms.iter().map(|t| eval(t, values)).sum(),
         Node::Mul(factors) => factors.iter().map(|f| eval(f, values)).product(),

@@ -195,7 +195,7 @@ fn an_expression_longer_than_the_limit_is_refused() {
 fn a_derivation_past_the_work_limit_is_refused_naming_the_step_and_the_flag() {
     let arm = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/problems/validation/all-joints-3d.json"
+        "/problems/validation/whipple-bicycle.json"
     );
     let dir = scratch("work-limit");
     let kept = dir.join("kept.csv");

@@ -65,6 +65,10 @@ struct DefinitionData {
     /// the rate's definition may refer back to this one; once the rate is gone d/dt falls
     /// back to differentiating the value.
     rate: OnceCell<Weak<Node>>,
+    /// Every symbol inside the value, nested definitions and what is inside them included,
+    /// each once: found on first use, so that a search through definitions built on
+    /// definitions (direction cosines of a long chain) visits each once, not once per path.
+    inside: OnceCell<Rc<[Symbol]>>,
 }
 
 impl Symbol {
@@ -140,10 +144,49 @@ impl Definition {
         self.0.rate.get().and_then(Weak::upgrade).map(Expr)
     }
 
+    /// Every symbol inside the value, nested definitions included, each once.
+    fn inside(&self) -> &[Symbol] {
+        self.0.inside.get_or_init(|| {
+            let mut found: Vec<Symbol> = Vec::new();
+            let mut seen = std::collections::HashSet::new();
+            collect_inside(self.value(), &mut found, &mut seen);
+            found.into()
+        })
+    }
+
     /// Gives the symbol a named time derivative: d/dt of this symbol is then `rate`
     /// (which must equal the derivative of the value). A second call is ignored.
     pub fn set_rate(&self, rate: &Expr) {
         let _ = self.0.rate.set(Rc::downgrade(&rate.0));
+    }
+}
+
+fn collect_inside(
+    e: &Expr,
+    found: &mut Vec<Symbol>,
+    seen: &mut std::collections::HashSet<Symbol>,
+) {
+    match e.node() {
+        Node::Num(_) => {}
+        Node::Sym(s) => {
+            if seen.insert(s.clone()) {
+                found.push(s.clone());
+                if let Symbol::Defined(d) = s {
+                    for inner in d.inside() {
+                        if seen.insert(inner.clone()) {
+                            found.push(inner.clone());
+                        }
+                    }
+                }
+            }
+        }
+        Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
+            items.iter().for_each(|x| collect_inside(x, found, seen))
+        }
+        Node::Pow(b, x) => {
+            collect_inside(b, found, seen);
+            collect_inside(x, found, seen);
+        }
     }
 }
 
@@ -321,6 +364,7 @@ impl Expr {
                 note: "".into(),
                 shown: None,
                 rate: OnceCell::new(),
+                inside: OnceCell::new(),
             }))))
         } else {
             value
@@ -350,6 +394,7 @@ impl Expr {
             note: note.into(),
             shown,
             rate: OnceCell::new(),
+            inside: OnceCell::new(),
         }))))
     }
 
@@ -453,7 +498,7 @@ impl Expr {
         match self.node() {
             Node::Num(_) => false,
             Node::Sym(Symbol::Defined(d)) => {
-                pred(&Symbol::Defined(d.clone())) || d.value().any_symbol(pred)
+                pred(&Symbol::Defined(d.clone())) || d.inside().iter().any(pred)
             }
             Node::Sym(s) => pred(s),
             Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {

@@ -1,0 +1,117 @@
+//! Long acceleration components of spatial problems as named quantities, linear in the q''.
+//!
+//! Multiplied out, the mass-centre acceleration of the k-th body of a spatial chain has
+//! hundreds of terms, and every equation that dots it with a partial velocity or crosses it
+//! with a lever arm multiplies them out again. Written as `Σ v_r q̈_r + ã`, with each long
+//! coefficient (a partial velocity component) and the rest `ã` a named quantity, it is n + 1
+//! terms, the q'' stay visible for the linear system, and the numbers are unchanged.
+
+use crate::mechanics::vector::Components;
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::{add, Expr, Symbol};
+
+/// Components with more terms than this are written with named parts; shorter ones are
+/// printed as they are.
+pub const MAX_EXPANDED_TERMS: usize = 8;
+
+/// What a component is, for the names of its parts.
+pub struct Quantity<'a> {
+    /// The body's name (`B3`).
+    pub body: &'a str,
+    /// `a` for the mass centre's acceleration, `alpha` for the angular acceleration.
+    pub kind: Kind,
+}
+
+/// The two accelerations that get named parts.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// The mass centre's acceleration; the q'' coefficients are partial velocities.
+    CenterAcceleration,
+    /// The angular acceleration; the q'' coefficients are partial angular velocities.
+    AngularAcceleration,
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// `components` (in the body's own unit vectors) with every long one rewritten as
+/// `Σ c_r q̈_r + rest`, each long `c_r` and `rest` a named quantity.
+pub fn named_components(
+    components: &Components,
+    accelerations: &[Symbol],
+    quantity: &Quantity,
+) -> Components {
+    std::array::from_fn(|axis| {
+        let value = &components[axis];
+        if value.terms().len() <= MAX_EXPANDED_TERMS {
+            return value.clone();
+        }
+        let Ok((coefficients, rest)) = linear_split(value, accelerations) else {
+            return value.clone();
+        };
+        let mut terms = Vec::with_capacity(accelerations.len() + 1);
+        for (coefficient, acceleration) in coefficients.iter().zip(accelerations) {
+            if coefficient.is_zero() {
+                continue;
+            }
+            let named = name_part(coefficient, quantity, axis, Some(acceleration));
+            terms.push(&named * &Expr::sym(acceleration.clone()));
+        }
+        terms.push(name_part(&rest, quantity, axis, None));
+        add(terms)
+    })
+}
+
+fn name_part(value: &Expr, quantity: &Quantity, axis: usize, rate: Option<&Symbol>) -> Expr {
+    if value.terms().len() < 2 {
+        return value.clone();
+    }
+    let body = quantity.body;
+    let body_tex = latex_name(body);
+    let axis_name = AXES[axis];
+    let (name, tex, note) = match (quantity.kind, rate) {
+        (Kind::CenterAcceleration, Some(s)) => {
+            let speed = coordinate_of(s);
+            (
+                format!("{body}*.v.{speed}.{axis_name}"),
+                format!("v^{{{body_tex}^{{*}}}}_{{{},{axis_name}}}", speed_tex(s)),
+                format!("partial velocity of {body}* for {speed}', along {body}.{axis_name}"),
+            )
+        }
+        (Kind::CenterAcceleration, None) => (
+            format!("{body}*.a.{axis_name}"),
+            format!("\\tilde{{a}}^{{{body_tex}^{{*}}}}_{{{axis_name}}}"),
+            format!("acceleration of {body}* along {body}.{axis_name} without the q''"),
+        ),
+        (Kind::AngularAcceleration, Some(s)) => {
+            let speed = coordinate_of(s);
+            (
+                format!("{body}.w.{speed}.{axis_name}"),
+                format!("\\omega^{{{body_tex}}}_{{{},{axis_name}}}", speed_tex(s)),
+                format!("partial angular velocity of {body} for {speed}', along {body}.{axis_name}"),
+            )
+        }
+        (Kind::AngularAcceleration, None) => (
+            format!("{body}.alpha.{axis_name}"),
+            format!("\\tilde{{\\alpha}}^{{{body_tex}}}_{{{axis_name}}}"),
+            format!("angular acceleration of {body} along {body}.{axis_name} without the q''"),
+        ),
+    };
+    Expr::named(&name, &tex, &note, value.clone())
+}
+
+/// The coordinate's name of a q'' symbol.
+fn coordinate_of(s: &Symbol) -> String {
+    match s {
+        Symbol::Coord(name, _) => name.to_string(),
+        other => other.to_string(),
+    }
+}
+
+/// The coordinate as LaTeX (`q_{3}`, `\theta`), the index of a partial velocity.
+fn speed_tex(s: &Symbol) -> String {
+    match s {
+        Symbol::Coord(name, _) => latex(&Expr::coord(name, 0)),
+        other => latex(&Expr::sym(other.clone())),
+    }
+}
