@@ -32,10 +32,26 @@ pub fn partials(v: &Vector, rates: &[Symbol]) -> Vec<Vector> {
     out
 }
 
-/// Partial velocities of the bodies' origins and partial angular velocities, per speed.
+/// Partial velocities of the bodies' origins and partial angular velocities, per speed;
+/// in spatial problems also those of the mass centres in each body's own unit vectors.
 struct Partials {
     origin: Vec<Vec<Vector>>,
     omega: Vec<Vec<Vector>>,
+    /// Indexed by body, then speed: ∂a*/∂q̈_r, which equals ∂v*/∂q̇_r. Read off the
+    /// accelerations the inertia forces use, these are the named coefficients there, so
+    /// `v_r · (-m a*)` is three products of names, not products of direction cosines
+    /// multiplied out across the chain. Empty in planar problems.
+    center_own: Vec<Vec<Vector>>,
+    /// ∂α/∂q̈_r = ∂ω/∂q̇_r likewise, in the body's own unit vectors.
+    omega_own: Vec<Vec<Vector>>,
+}
+
+/// The coefficients of the accelerations in each of `vectors`, a vector per acceleration.
+fn own_partials(vectors: &[Vector], accelerations: &[Symbol], is_planar: bool) -> Vec<Vec<Vector>> {
+    if is_planar {
+        return Vec::new();
+    }
+    vectors.iter().map(|v| partials(v, accelerations)).collect()
 }
 
 /// Kane's rows, one per coordinate, and one per requested reaction component.
@@ -51,6 +67,9 @@ pub fn equations(
     let rates: Vec<Symbol> = (0..problem.coordinates.len())
         .map(|i| problem.coordinate_symbol(i, 1))
         .collect();
+    let accelerations: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 2))
+        .collect();
     let partial = Partials {
         origin: model
             .bodies
@@ -62,6 +81,8 @@ pub fn equations(
             .iter()
             .map(|b| partials(&b.omega, &rates))
             .collect(),
+        center_own: own_partials(&inertia.acceleration, &accelerations, model.is_planar()),
+        omega_own: own_partials(&inertia.alpha, &accelerations, model.is_planar()),
     };
     let generalized_joint_loads = joint_load_generalized_forces(model);
     let all_bodies: Vec<_> = model.order.clone();
@@ -96,9 +117,17 @@ pub fn equations(
         let mut inertia_force = DotSum::new(frames);
         let mut inertia_torque = Vec::new();
         for &body in &all_bodies {
-            let center = &model.bodies[body.0].center_offset;
-            inertia_force.add(&velocity_of(body, center), &inertia.force[body.0]);
-            inertia_torque.push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));
+            if partial.center_own.is_empty() {
+                let center = &model.bodies[body.0].center_offset;
+                inertia_force.add(&velocity_of(body, center), &inertia.force[body.0]);
+                inertia_torque
+                    .push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));
+            } else {
+                // Both in the body's own unit vectors: three products each.
+                inertia_force.add(&partial.center_own[body.0][r], &inertia.force[body.0]);
+                inertia_torque
+                    .push(inertia.torque[body.0].dot(&partial.omega_own[body.0][r], frames));
+            }
         }
         let groups = Groups {
             contact: add(contact),

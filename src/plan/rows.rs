@@ -17,6 +17,11 @@ pub struct Inertia {
     pub force: Vec<Vector>,
     /// Indexed by body id, in the body's own unit vectors.
     pub torque: Vec<Vector>,
+    /// The mass centres' accelerations as the inertia forces use them: a long one in the
+    /// body's unit vectors with named parts (`Σ v_r q̈_r + ã`), for step 4. Indexed by body id.
+    pub acceleration: Vec<Vector>,
+    /// The angular accelerations likewise, in the body's unit vectors.
+    pub alpha: Vec<Vector>,
 }
 
 impl Inertia {
@@ -46,6 +51,8 @@ impl Inertia {
             let terms: usize = vector.parts().iter().map(|(_, c)| size(c)).sum();
             terms > 3 * MAX_EXPANDED_TERMS
         };
+        let mut acceleration = Vec::with_capacity(model.bodies.len());
+        let mut alpha = Vec::with_capacity(model.bodies.len());
         for (index, state) in model.bodies.iter().enumerate() {
             let body = BodyId(index);
             let center = if model.is_planar() || !is_long(&state.center.acceleration) {
@@ -57,6 +64,7 @@ impl Inertia {
                 )
             };
             force.push(center.scaled(&-state.mass.clone()));
+            acceleration.push(center);
             let w = state.omega_named.components_in(body, &model.frames);
             let a = named(body, &state.alpha, Kind::AngularAcceleration);
             let iw = apply(&state.inertia, &w);
@@ -64,8 +72,14 @@ impl Inertia {
             let gyro = crate::mechanics::vector::cross3(&w, &iw);
             let t: Components = std::array::from_fn(|i| -(&ia[i] + &gyro[i]));
             torque.push(Vector::new(body, t));
+            alpha.push(Vector::new(body, a));
         }
-        Inertia { force, torque }
+        Inertia {
+            force,
+            torque,
+            acceleration,
+            alpha,
+        }
     }
 }
 

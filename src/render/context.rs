@@ -56,6 +56,9 @@ pub struct Solution {
     /// Step 4: the abbreviations of sines and cosines that steps 4 and 5 use
     /// (`s_{1} = \sin(q_{1})`), each defined once.
     pub abbreviations: Vec<Named>,
+    /// Step 4: the named kinematic quantities that steps 4 and 5 use (the direction cosines
+    /// of long chains, partial velocities, accelerations without the q''), each defined once.
+    pub kinematic_definitions: Vec<Named>,
     /// Step 3: the planner's table.
     pub plan: Plan,
     /// Step 4: angular velocity and acceleration of each body, velocity and acceleration of
@@ -318,6 +321,13 @@ pub struct MatrixForm {
     pub whole: Option<WholeMatrix>,
     /// The nonzero entries one by one, when there are more.
     pub entries: Vec<MatrixEntry>,
+    /// Whether the long entries are given by their values at the initial state (a system
+    /// too large to print whole).
+    pub by_value: bool,
+    /// With `by_value`, what each kind of entry is, so that every value can be traced.
+    pub rules: Vec<Named>,
+    /// With `by_value`, the unknowns by column: `x_{1} = \ddot{q}_{1}`.
+    pub columns_tex: Vec<String>,
 }
 
 /// `A`, `x` and `b` as `bmatrix` environments.
@@ -349,6 +359,9 @@ pub struct MatrixEntry {
     pub row_label_tex: String,
     /// The column's unknown, e.g. `\ddot{q}_{2}`, or `\mathbf{b}`.
     pub column_tex: String,
+    /// A whole row's entries, printed one after the other (a system too large to print an
+    /// entry a line); empty otherwise.
+    pub values_tex: Vec<String>,
 }
 
 /// A number at the initial state.

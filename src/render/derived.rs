@@ -37,7 +37,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     let style = super::build::style_of(problem).with_coordinates(&names);
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
-        solution.kinematics = kinematics(model);
+        solution.kinematics = kinematics(derivation);
         solution.equations = derivation
             .rows
             .iter()
@@ -55,8 +55,11 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             let e = if use_shown { as_shown(&e) } else { e };
             roots_of_squares(&e, &sign)
         };
-        solution.matrix = super::matrix::matrix(derivation, by_name, shown);
+        let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
+        let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
+        solution.matrix = super::matrix::matrix(derivation, by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
+        solution.kinematic_definitions = kinematic_definitions(derivation);
     });
     solution.abbreviations = abbreviations
         .into_iter()
@@ -372,7 +375,57 @@ pub fn plan(derivation: &Derivation) -> Plan {
     }
 }
 
-fn kinematics(model: &Model) -> Vec<Kinematics> {
+/// The named quantities of steps 4 and 5 that the forces do not already define: each
+/// body's named acceleration parts and what the rows use.
+fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
+    let inertia = &derivation.inertia;
+    let parts = inertia
+        .acceleration
+        .iter()
+        .chain(&inertia.alpha)
+        .flat_map(|v| v.parts())
+        .flat_map(|(_, c)| c.iter());
+    let rows = derivation.rows.iter().map(|r| &r.expression);
+    let forces: Vec<Definition> = named_definitions(action_components(derivation));
+    let used: Vec<Definition> = named_definitions(parts.chain(rows))
+        .into_iter()
+        .filter(|d| !forces.contains(d))
+        .collect();
+    // A definition too long to read is given by what it is; the numbers use the formula.
+    let names: Vec<String> = used
+        .iter()
+        .map(|d| d.latex().unwrap_or_default().to_string())
+        .collect();
+    named_list(used)
+        .into_iter()
+        .zip(names)
+        .map(|(named, name)| {
+            if named.definition_tex.len() <= LONG_EQUATION {
+                return named;
+            }
+            Named {
+                definition_tex: name,
+                note: format!("{}; too long to print whole", named.note),
+            }
+        })
+        .collect()
+}
+
+fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
+    let model = &derivation.model;
+    let inertia = &derivation.inertia;
+    // The shorter of the vector multiplied out and as the equations use it (named parts).
+    let shorter = |expanded: &Vector, named: &Vector, body: BodyId| {
+        let (a, b) = (
+            shortest_tex(model, expanded, body),
+            shortest_tex(model, named, body),
+        );
+        if b.len() < a.len() {
+            b
+        } else {
+            a
+        }
+    };
     model
         .order
         .iter()
@@ -388,7 +441,7 @@ fn kinematics(model: &Model) -> Vec<Kinematics> {
                 ),
                 alpha_tex: format!(
                     "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
-                    shortest_tex(model, &state.alpha, body)
+                    shorter(&state.alpha, &inertia.alpha[body.0], body)
                 ),
                 velocity_tex: format!(
                     "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
@@ -396,7 +449,7 @@ fn kinematics(model: &Model) -> Vec<Kinematics> {
                 ),
                 acceleration_tex: format!(
                     "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
-                    shortest_tex(model, &state.center.acceleration, body)
+                    shorter(&state.center.acceleration, &inertia.acceleration[body.0], body)
                 ),
             }
         })
@@ -462,7 +515,8 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         }
     }
     if grouped_tex.len() > LONG_EQUATION {
-        grouped_tex = String::new();
+        // Too long as formed: the same sum in vector form, in the quantities of steps 2 and 4.
+        grouped_tex = super::long::vector_form(derivation, row);
     }
     let mut label = format!(
         "{}: {}{direction}",

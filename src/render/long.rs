@@ -2,7 +2,8 @@
 //! `A_{i,1} x_1 + … = b_i`, and a right-hand side collected by the products of rates.
 
 use crate::equations::Derivation;
-use crate::symbolic::print::latex;
+use crate::plan::rows::{Equation, Sum};
+use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::{Expr, Symbol};
 
 /// The most characters of LaTeX an equation of step 5 is shown with; a longer one is shown
@@ -52,4 +53,59 @@ pub fn by_rates(e: &Expr) -> Vec<(Expr, Expr)> {
         .into_iter()
         .map(|(key, terms)| (key, crate::symbolic::add(terms)))
         .collect()
+}
+
+/// A row of the Motion Law or of Newton–Euler in vector form, for a row too long to print
+/// as formed: the direction dotted with the external forces (or their moments about the
+/// point) and each body's inertia force (and inertia torque), every one named as in steps 2
+/// and 4. Empty for rows that are not sums of forces or moments.
+pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
+    let problem = derivation.model.problem;
+    let Some(direction) = &row.direction else {
+        return String::new();
+    };
+    let bodies: Vec<String> = row
+        .free_body
+        .iter()
+        .map(|b| latex_name(problem.body_name(*b)))
+        .collect();
+    let many = bodies.len() > 1;
+    // One body: its own letter; several: the sum over `k` in the free body.
+    let (sum, k) = if many {
+        (
+            format!("\\sum_{{k \\in \\{{{}\\}}}} ", bodies.join(", ")),
+            "k".to_string(),
+        )
+    } else {
+        (String::new(), bodies.first().cloned().unwrap_or_default())
+    };
+    let mass = if many {
+        "m_{k}".to_string()
+    } else {
+        let m = &derivation.model.bodies[row.free_body[0].0].mass;
+        if m.terms().len() > 1 {
+            format!("\\left({}\\right)", latex(m))
+        } else {
+            latex(m)
+        }
+    };
+    let inertia_force = format!("{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{k}^*}}");
+    let inside = match &row.sum {
+        Sum::Force => format!("\\sum \\mathbf{{F}} - {sum}{inertia_force}"),
+        Sum::Moment { point, .. } => {
+            let point = match point.strip_suffix('*') {
+                Some(stem) => format!("{}^{{*}}", latex_name(stem)),
+                None => latex_name(point),
+            };
+            let torque = format!(
+                "\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}} + \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
+            );
+            let inertia = format!(
+                "\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force} + {torque}"
+            );
+            format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {inertia} \\right)")
+        }
+        _ => return String::new(),
+    };
+    format!("{} \\cdot \\left( {inside} \\right) = 0", direction.latex)
 }

@@ -2,11 +2,12 @@
 //! equation it comes from. The whole table when it fits the line; otherwise entry by entry,
 //! a long right-hand side collected by the products of rates.
 
-use super::context::{MatrixEntry, MatrixForm, WholeMatrix};
+use super::context::{MatrixEntry, MatrixForm, Named, WholeMatrix};
 use super::long::{by_rates, LONG_EQUATION};
 use super::prepare::printed_width;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::Expr;
 
@@ -14,6 +15,15 @@ use crate::symbolic::Expr;
 const MOST_COLUMNS: usize = 6;
 /// How many symbols the whole table may print across: about the width of the page.
 const TABLE_WIDTH: usize = 70;
+/// The most characters of LaTeX the entries may print in all (about five pages). Past it,
+/// every entry longer than [`SHORT_ENTRY`] is given by its value at the initial state: the
+/// rows of step 5 define each entry, and a large system is solved by its numbers anyway.
+const ENTRIES_BUDGET: usize = 24_000;
+/// An entry this long or shorter is always printed as a formula.
+const SHORT_ENTRY: usize = 400;
+/// The most entries listed one a line; past it, the short entries of a row are printed one
+/// after another.
+const MOST_LISTED: usize = 48;
 
 /// What names row `i` of the system: its number in step 5 and its equation, e.g.
 /// `(2)\; B\colon \sum \mathbf{M}_{P} \cdot \hat{\mathbf{a}}_{z}` or, for Kane's rows,
@@ -54,11 +64,13 @@ pub fn row_label_tex(derivation: &Derivation, i: usize) -> String {
 }
 
 /// Step 5's `A x = b`; `by_entries` asks for the entries one by one (an equation refers to
-/// them by name).
+/// them by name); `initial` evaluates an entry at the initial state, for the entries of a
+/// system too large to print whole (see [`ENTRIES_BUDGET`]).
 pub fn matrix(
     derivation: &Derivation,
     by_entries: bool,
     shown: impl Fn(&Expr) -> Expr,
+    initial: impl Fn(&Expr) -> f64,
 ) -> MatrixForm {
     let system = &derivation.system;
     let n = system.unknowns.len();
@@ -74,7 +86,7 @@ pub fn matrix(
         .iter()
         .map(|u| latex(&Expr::sym(u.clone())))
         .collect();
-    let a_tex: Vec<Vec<String>> = a
+    let mut a_tex: Vec<Vec<String>> = a
         .iter()
         .map(|row| row.iter().map(latex).collect())
         .collect();
@@ -83,8 +95,25 @@ pub fn matrix(
         if let Some(whole) = whole(&labels, &x, &a_tex, &b_tex) {
             return MatrixForm {
                 whole: Some(whole),
-                entries: Vec::new(),
+                ..MatrixForm::default()
             };
+        }
+    }
+    let printed: usize = a_tex.iter().flatten().chain(&b_tex).map(String::len).sum();
+    let by_value = printed > ENTRIES_BUDGET;
+    // With `by_value`, a formula too long for a line is replaced by its value at the start.
+    let formula_or_number = |e: &Expr, text: String| {
+        if by_value && text.len() > SHORT_ENTRY {
+            // A sum that cancels at this state prints as 0, not as its rounding error.
+            let value = initial(e);
+            fixed(if value.abs() < 1e-12 { 0.0 } else { value })
+        } else {
+            text
+        }
+    };
+    for (row, texts) in system.a.iter().zip(a_tex.iter_mut()) {
+        for (e, text) in row.iter().zip(texts.iter_mut()) {
+            *text = formula_or_number(e, std::mem::take(text));
         }
     }
     let mut entries = Vec::new();
@@ -97,6 +126,7 @@ pub fn matrix(
                 value_tex,
                 row_label_tex: std::mem::take(&mut label),
                 column_tex,
+                values_tex: Vec::new(),
             });
         };
         for (j, e) in row.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
@@ -113,7 +143,8 @@ pub fn matrix(
                 format!("A_{{{},{}}} = {value}", i + 1, j + 1),
             );
         }
-        let groups = if b_tex[i].len() > 2 * LONG_EQUATION {
+        let longest_b = if by_value { SHORT_ENTRY } else { 2 * LONG_EQUATION };
+        let groups = if b_tex[i].len() > longest_b {
             by_rates(&b[i])
         } else {
             Vec::new()
@@ -123,7 +154,11 @@ pub fn matrix(
             entry(
                 "b".into(),
                 column_b(),
-                format!("b_{{{}}} = {}", i + 1, b_tex[i]),
+                format!(
+                    "b_{{{}}} = {}",
+                    i + 1,
+                    formula_or_number(&b[i], b_tex[i].clone())
+                ),
             );
             continue;
         }
@@ -150,14 +185,95 @@ pub fn matrix(
             entry(
                 "b".into(),
                 column_b(),
-                format!("{} = {}", name(k + 1), latex(coefficient)),
+                format!(
+                    "{} = {}",
+                    name(k + 1),
+                    formula_or_number(coefficient, latex(coefficient))
+                ),
             );
         }
     }
+    if !by_value && entries.len() <= MOST_LISTED {
+        return MatrixForm {
+            whole: None,
+            entries,
+            ..MatrixForm::default()
+        };
+    }
     MatrixForm {
         whole: None,
-        entries,
+        entries: row_by_row(entries),
+        by_value,
+        rules: if by_value {
+            coefficient_rules(derivation)
+        } else {
+            Vec::new()
+        },
+        columns_tex: x
+            .iter()
+            .enumerate()
+            .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
+            .collect(),
     }
+}
+
+/// The short entries of each row gathered into one, to be printed one after another; a
+/// long one keeps a display of its own.
+fn row_by_row(entries: Vec<MatrixEntry>) -> Vec<MatrixEntry> {
+    let mut rows: Vec<MatrixEntry> = Vec::new();
+    for entry in entries {
+        if entry.value_tex.len() > SHORT_ENTRY {
+            rows.push(entry);
+            continue;
+        }
+        match rows.last_mut() {
+            Some(last) if last.row == entry.row && !last.values_tex.is_empty() => {
+                last.values_tex.push(entry.value_tex)
+            }
+            _ => rows.push(MatrixEntry {
+                values_tex: vec![entry.value_tex],
+                value_tex: String::new(),
+                column: String::new(),
+                column_tex: String::new(),
+                ..entry
+            }),
+        }
+    }
+    rows
+}
+
+/// What the coefficient of each kind of unknown is in each kind of row, in the partial
+/// velocities of the bodies `k` of the row's free body.
+fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
+    let rule = |note: &str, tex: &str| Named {
+        definition_tex: tex.to_string(),
+        note: note.to_string(),
+    };
+    let mut rules = Vec::new();
+    let sums = |wanted: fn(&Sum) -> bool| derivation.rows.iter().any(|r| wanted(&r.sum));
+    if sums(|s| matches!(s, Sum::Force)) {
+        rules.push(rule(
+            "the coefficient of an acceleration in a sum of forces along a direction d",
+            "A_{ij} = -\\sum_{k} m_{k}\\, \\mathbf{v}^{k^*}_{j} \\cdot \\hat{\\mathbf{d}}",
+        ));
+    }
+    if sums(|s| matches!(s, Sum::Moment { .. })) {
+        rules.push(rule(
+            "in a sum of moments about a point P along d",
+            "A_{ij} = -\\sum_{k} \\left( \\mathbf{r}^{P k^*} \\times m_{k} \\mathbf{v}^{k^*}_{j} + \\mathbf{I}^{k} \\cdot \\boldsymbol{\\omega}^{k}_{j} \\right) \\cdot \\hat{\\mathbf{d}}",
+        ));
+    }
+    if sums(|s| matches!(s, Sum::Generalized { .. })) {
+        rules.push(rule(
+            "in Kane's row r",
+            "A_{rj} = -\\sum_{k} \\left( m_{k}\\, \\mathbf{v}^{k^*}_{r} \\cdot \\mathbf{v}^{k^*}_{j} + \\boldsymbol{\\omega}^{k}_{r} \\cdot \\mathbf{I}^{k} \\cdot \\boldsymbol{\\omega}^{k}_{j} \\right)",
+        ));
+    }
+    rules.push(rule(
+        "the coefficient of a reaction component: its unit force (or the moment of it about P) along d; and the right-hand side",
+        "b_{i} = -\\left( \\text{row } i \\right)_{\\ddot{q} = 0,\\ \\text{reactions} = 0}",
+    ));
+    rules
 }
 
 /// The whole table, when it prints no wider than the line.

@@ -43,6 +43,7 @@ pub fn sample() -> Solution {
         constraint_notes: Vec::new(),
         free_bodies: free_bodies(),
         force_definitions: Vec::new(),
+        kinematic_definitions: Vec::new(),
         abbreviations: Vec::new(),
         plan: plan(),
         kinematics: kinematics(),
@@ -381,7 +382,7 @@ fn matrix() -> MatrixForm {
             // Too wide for one table on the page: the templates show A, x and b.
             table_tex: String::new(),
         }),
-        entries: Vec::new(),
+        ..MatrixForm::default()
     }
 }
 
