@@ -445,7 +445,10 @@ mod tests {
             "Given $g = 9.81\\ \\mathrm{m/s^2}$, find **all** of ` x `."
         );
         let html = render_line(source, Format::Html);
-        assert!(html.starts_with("Given <math>"), "{html}");
+        assert!(
+            html.starts_with("Given <math display=\"inline\">"),
+            "{html}"
+        );
         assert!(
             html.ends_with("</math>, find <strong>all</strong> of <code>x</code>."),
             "{html}"
