@@ -374,8 +374,10 @@ pub fn plan(derivation: &Derivation) -> Plan {
                 (Some(d), _) => d.latex.clone(),
                 // A contact's or a closure's row: along its reaction component; any other
                 // constraint differentiated in time, short enough for the table's column.
-                (None, Sum::Constraint { name }) => constraint_direction_tex(&derivation.model, name)
-                    .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into()),
+                (None, Sum::Constraint { name }) => {
+                    constraint_direction_tex(&derivation.model, name)
+                        .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into())
+                }
                 (None, _) => "\\text{partial velocities}".into(),
             },
             unknowns_tex: unknowns_tex(&row.unknowns),

@@ -11,13 +11,23 @@ fn linearization_is_never_shrunk() {
     let output = binary()
         .args(["explain", "--linearize", "--format", "latex", "-o"])
         .arg(&tex)
-        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/problems/five-link-chain.json"))
+        .arg(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/problems/five-link-chain.json"
+        ))
         .output()
         .expect("the binary runs");
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let source = std::fs::read_to_string(&tex).expect("written");
     assert!(!source.contains("resizebox") && !source.contains("scalebox"));
-    assert!(source.contains("\\widedisplay{"), "the matrices are not in \\widedisplay");
+    assert!(
+        source.contains("\\widedisplay{"),
+        "the matrices are not in \\widedisplay"
+    );
     assert!(source.contains("entry by entry, the others 0: $M_{1,1} = "));
     if !pdflatex_present() {
         return;
