@@ -510,8 +510,13 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     if grouped_tex.len() > LONG_EQUATION {
         grouped_tex = String::new();
     }
-    let mut label = if matches!(row.sum, Sum::Constraint { .. }) {
-        sum_text(&derivation.model, &row.sum)
+    let mut label = if let Sum::Constraint { name } = &row.sum {
+        // A site has a row per reaction component: the component tells them apart.
+        let text = sum_text(&derivation.model, &row.sum);
+        match constraint_direction_tex(&derivation.model, name) {
+            Some(_) => format!("{text}, the row of its reaction {name}"),
+            None => text,
+        }
     } else {
         format!(
             "{}: {}{direction}",
