@@ -11,7 +11,8 @@ use serde::Serialize;
 /// One question and its answer, as the templates show it.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct AnswerView {
-    /// The question as worded (user text), or one made from what it asks.
+    /// The question as worded (user text in the markup of [`super::markup`], one line), or
+    /// one made from what it asks, its expressions as `$…$` math.
     pub question: String,
     /// Where it is asked: `t = 2 \text{ s}, ...` (LaTeX math).
     pub at_tex: String,
@@ -80,18 +81,26 @@ fn entry_name(problem: &Problem, e: &StateEntry) -> String {
     }
 }
 
-/// The question made from what it asks, when it has no `text`.
+/// The question made from what it asks, when it has no `text`, its expressions as math.
 fn asked(problem: &Problem, question: &Question) -> String {
     match &question.kind {
-        QuestionKind::Value { text, .. } => format!("Find {text}."),
+        QuestionKind::Value { expression, .. } => format!("Find ${}$.", latex(expression)),
         QuestionKind::Reaction { site } => {
             format!("Find the reaction at {}.", problem.site_name(*site))
         }
         QuestionKind::Steady { unknowns, zero } => {
-            let unknowns: Vec<String> = unknowns.iter().map(|e| entry_name(problem, e)).collect();
-            let zero: Vec<&str> = zero.iter().map(|(_, text)| text.as_str()).collect();
+            let unknowns: Vec<String> = unknowns
+                .iter()
+                .map(|e| {
+                    format!(
+                        "${}$",
+                        latex(&problem.coordinate_expr(e.coordinate, e.order))
+                    )
+                })
+                .collect();
+            let zero: Vec<String> = zero.iter().map(|(expr, _)| latex(expr)).collect();
             format!(
-                "Find {} for a steady motion: {} = 0.",
+                "Find {} for a steady motion: ${} = 0$.",
                 unknowns.join(", "),
                 zero.join(" = ")
             )

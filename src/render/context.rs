@@ -9,6 +9,7 @@
 //! | ends in `_latex` | LaTeX code (a pgfplots picture) | removed | verbatim | removed |
 //! | ends in `_svg` | an SVG document | removed | removed | a `data:` URI for `<img src>` (use `\| safe`) |
 //! | ends in `svg_inline` | an SVG element to inline | verbatim | removed | verbatim (use `\| safe`) |
+//! | `statement`, `question` | the problem's markup: paragraphs, lists, emphasis, `$…$` math (see [`super::markup`]) | Markdown, text escaped, math checked | LaTeX, the same | escaped HTML with MathML (use `\| safe`) |
 //! | anything else | plain text: user text, names, numbers | escaped | escaped | escaped by Tera |
 //!
 //! So user text (titles, descriptions, the statement) is only ever a value in the context,
@@ -24,8 +25,8 @@ pub use super::sample::sample;
 pub struct Solution {
     /// The problem's title (user text, one line).
     pub title: String,
-    /// The problem as given to the student (user text; blank lines separate paragraphs, line
-    /// breaks are kept).
+    /// The problem as given to the student (user text in the small Markdown of
+    /// [`super::markup`]: paragraphs, lists, emphasis, `$…$` math).
     pub statement: Option<String>,
     /// `planar` or `spatial`.
     pub dimension: String,

@@ -301,13 +301,54 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
-pub(super) fn sum_text(sum: &Sum) -> String {
+pub(super) fn sum_text(model: &Model, sum: &Sum) -> String {
     match sum {
         Sum::Force => "F".into(),
         Sum::Moment { point, .. } => format!("M about {point}"),
         Sum::Generalized { speed } => format!("F_r + F_r* for {speed}"),
-        Sum::Constraint { name } => format!("constraint {name}"),
+        Sum::Constraint { name } => constraint_text(model, name),
     }
+}
+
+/// The direction of a closure's or a contact's constraint row: that of the reaction
+/// component that enforces it (the row is the relative motion along it).
+fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
+    use crate::mechanics::constraints::RowOrigin;
+    let row = model.constraints.rows.iter().find(|r| r.name == name)?;
+    let RowOrigin::Site { site, component } = row.origin else {
+        return None;
+    };
+    let component = model.sites.get(site)?.reactions.get(component)?;
+    Some(vector_tex(model, &component.direction))
+}
+
+/// What a constraint row of the plan says, e.g. "rolling constraint at floor (acceleration
+/// level)": the rows are the constraints differentiated until the q'' appear.
+fn constraint_text(model: &Model, name: &str) -> String {
+    use crate::mechanics::constraints::RowOrigin;
+    use crate::mechanics::sites::SiteKind;
+    let problem = model.problem;
+    let row = model.constraints.rows.iter().find(|r| r.name == name);
+    let what = match row.map(|r| &r.origin) {
+        Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
+            Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
+                format!("rolling constraint at {}", s.name)
+            }
+            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
+                format!("loop closure at {}", s.name)
+            }
+            Some(s) => format!("constraint at {}", s.name),
+            None => format!("constraint {name}"),
+        },
+        Some(RowOrigin::Position(_)) => format!("position constraint {name}"),
+        Some(RowOrigin::Velocity(_)) => format!("velocity constraint {name}"),
+        Some(RowOrigin::Prescribed(c)) => match problem.coordinates.get(*c) {
+            Some(coordinate) => format!("prescribed motion of {}", coordinate.name),
+            None => format!("prescribed motion {name}"),
+        },
+        None => format!("constraint {name}"),
+    };
+    format!("{what} (acceleration level)")
 }
 
 fn unknowns_tex(unknowns: &[Symbol]) -> String {
@@ -325,16 +366,21 @@ pub fn plan(derivation: &Derivation) -> Plan {
         .rows
         .iter()
         .map(|row| PlanRow {
+            // A constraint row is no free body's equation.
             free_body: if matches!(row.sum, Sum::Constraint { .. }) {
-                "(constraint)".into()
+                "—".into()
             } else {
                 bodies_name(problem, &row.free_body)
             },
-            equation: sum_text(&row.sum),
+            equation: sum_text(&derivation.model, &row.sum),
             direction_tex: match (&row.direction, &row.sum) {
                 (Some(d), _) => d.latex.clone(),
-                // Differentiated in time, written short enough for the table's column.
-                (None, Sum::Constraint { .. }) => "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into(),
+                // A contact's or a closure's row: along its reaction component; any other
+                // constraint differentiated in time, short enough for the table's column.
+                (None, Sum::Constraint { name }) => {
+                    constraint_direction_tex(&derivation.model, name)
+                        .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into())
+                }
                 (None, _) => "\\text{partial velocities}".into(),
             },
             unknowns_tex: unknowns_tex(&row.unknowns),
@@ -518,11 +564,20 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         // Too long as formed: the same sum in vector form, in the quantities of steps 2 and 4.
         grouped_tex = super::long::vector_form(derivation, row);
     }
-    let mut label = format!(
-        "{}: {}{direction}",
-        bodies_name(problem, &row.free_body),
-        sum_text(&row.sum)
-    );
+    let mut label = if let Sum::Constraint { name } = &row.sum {
+        // A site has a row per reaction component: the component tells them apart.
+        let text = sum_text(&derivation.model, &row.sum);
+        match constraint_direction_tex(&derivation.model, name) {
+            Some(_) => format!("{text}, the row of its reaction {name}"),
+            None => text,
+        }
+    } else {
+        format!(
+            "{}: {}{direction}",
+            bodies_name(problem, &row.free_body),
+            sum_text(&derivation.model, &row.sum)
+        )
+    };
     let (mut active_tex, mut inertia_tex) = (String::new(), String::new());
     if let (Sum::Generalized { speed }, Some(r)) =
         (&row.sum, super::kane::row_number(derivation, row))

@@ -16,12 +16,6 @@ pub enum Lines {
     Paragraphs,
 }
 
-/// The paragraphs of `text` (separated by blank lines) as their lines, each line with its
-/// whitespace runs collapsed to one space and control characters dropped.
-pub fn paragraphs(text: &str) -> Vec<Vec<String>> {
-    split(text, Lines::Paragraphs)
-}
-
 /// Splits `text` into paragraphs of non-empty lines; with [`Lines::One`] there is exactly
 /// one paragraph of one line.
 fn split(text: &str, lines: Lines) -> Vec<Vec<String>> {
@@ -218,6 +212,21 @@ pub fn markdown(text: &str, lines: Lines) -> String {
     out
 }
 
+/// A piece of a line as Markdown that prints it literally, its whitespace kept.
+pub fn markdown_inline(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 8);
+    markdown_line(text, &mut out);
+    out
+}
+
+/// A piece of a line as LaTeX text-mode source that prints it literally, its whitespace
+/// kept.
+pub fn latex_inline(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 8);
+    text.chars().for_each(|c| latex_char(c, &mut out));
+    out
+}
+
 fn markdown_line(line: &str, out: &mut String) {
     let marker = block_marker(line);
     for (j, c) in line.char_indices() {
@@ -289,10 +298,6 @@ mod tests {
         assert_eq!(
             markdown("Find:\n1. q1''\n2. the reaction", Lines::Paragraphs),
             "Find:\\\n1\\. q1''\\\n2\\. the reaction"
-        );
-        assert_eq!(
-            paragraphs("\n a \r\n b\n \n\nc\n"),
-            vec![vec!["a".to_string(), "b".into()], vec!["c".into()]]
         );
     }
 

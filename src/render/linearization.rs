@@ -35,12 +35,29 @@ pub struct LinearizationSection {
     pub a_tex: String,
     /// The state variables, e.g. `\mathbf{z} = [q_1, \dot q_1]^T`.
     pub z_tex: String,
+    /// `M`, `C`, `K` and `A` entry by entry (`M_{1,2} = 0.5`, the nonzero ones), for a page
+    /// too narrow for the whole matrix; each empty when its matrix is.
+    pub entries: MatrixEntries,
     /// The eigenvalues, sorted.
     pub eigenvalues: Vec<EigenvalueRow>,
     /// One row per mode.
     pub modes: Vec<ModeRow>,
     /// Stable or not, as a sentence (plain text).
     pub stability: String,
+}
+
+/// The nonzero entries of the matrices of [`LinearizationSection`], each as
+/// `M_{i,j} = value` (LaTeX math).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct MatrixEntries {
+    /// Of the mass matrix.
+    pub m_tex: Vec<String>,
+    /// Of the damping matrix.
+    pub c_tex: Vec<String>,
+    /// Of the stiffness matrix.
+    pub k_tex: Vec<String>,
+    /// Of the state matrix.
+    pub a_tex: Vec<String>,
 }
 
 /// One eigenvalue.
@@ -104,6 +121,22 @@ fn bmatrix(m: &DMatrix<f64>) -> String {
     )
 }
 
+/// The nonzero entries of `m` as `letter_{i,j} = value`, row by row.
+fn entries(letter: &str, m: &DMatrix<f64>) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, row) in m.row_iter().enumerate() {
+        for (j, x) in row.iter().enumerate().filter(|(_, x)| **x != 0.0) {
+            out.push(format!(
+                "{letter}_{{{},{}}} = {}",
+                i + 1,
+                j + 1,
+                tex_number(*x)
+            ));
+        }
+    }
+    out
+}
+
 fn column(entries: &[String]) -> String {
     format!(
         "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
@@ -134,18 +167,25 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
         String::new()
     };
     let small = n <= MOST_COLUMNS;
+    let mut listed = MatrixEntries::default();
     let (m_tex, c_tex, k_tex) = match (&l.matrices, small) {
-        (Some(m), true) => (
-            format!("\\mathbf{{M}} = {}", bmatrix(&m.m)),
-            format!("\\mathbf{{C}} = {}", bmatrix(&m.c)),
-            format!("\\mathbf{{K}} = {}", bmatrix(&m.k)),
-        ),
+        (Some(m), true) => {
+            listed.m_tex = entries("M", &m.m);
+            listed.c_tex = entries("C", &m.c);
+            listed.k_tex = entries("K", &m.k);
+            (
+                format!("\\mathbf{{M}} = {}", bmatrix(&m.m)),
+                format!("\\mathbf{{C}} = {}", bmatrix(&m.c)),
+                format!("\\mathbf{{K}} = {}", bmatrix(&m.k)),
+            )
+        }
         _ => Default::default(),
     };
     let deltas: Vec<String> = (0..n).map(|i| format!("\\delta {}", name(i, 0))).collect();
     let mut z: Vec<String> = (0..n).map(|i| name(i, 0)).collect();
     z.extend((0..n).map(|i| name(i, 1)));
     let a_tex = if 2 * n <= MOST_COLUMNS {
+        listed.a_tex = entries("A", &l.a);
         format!("\\mathbf{{A}} = {}", bmatrix(&l.a))
     } else {
         String::new()
@@ -202,6 +242,7 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
         k_tex,
         a_tex,
         z_tex: format!("\\mathbf{{z}} = {}", column(&z)),
+        entries: listed,
         eigenvalues,
         modes,
         stability: stability.into(),

@@ -71,6 +71,9 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
     push_mathml(&mut out, events.into_iter(), config).map_err(|e| error(e.to_string()))?;
     // Our `mover`s are accents (`\hat`, `\dot`, `\ddot`): marked so, they sit close to the letter.
     let out = out.replace("<mover>", "<mover accent=\"true\">");
+    // `pulldown-latex` writes the space of `\ ` as an escaped entity, which a browser would
+    // print as the six characters `&nbsp;`.
+    let out = out.replace("&amp;nbsp;", "&#160;");
     Ok(sanitize(&spaces_out_of_scripts(&out)))
 }
 
@@ -258,6 +261,13 @@ mod tests {
                 "]</mo>",
             ],
         );
+    }
+
+    #[test]
+    fn a_control_space_is_a_space() {
+        let mathml = to_mathml("t = 2\\ \\mathrm{s}", Display::Inline).unwrap_or_default();
+        assert!(mathml.contains("<mtext>&#160;</mtext>"), "{mathml}");
+        assert!(!mathml.contains("&amp;"), "{mathml}");
     }
 
     #[test]

@@ -17,14 +17,17 @@ pub mod escape;
 pub mod kane;
 pub mod linearization;
 pub mod long;
+pub mod markup;
 pub mod mathml;
 pub mod matrix;
 pub mod mode_shape;
 pub mod plot;
 mod prepare;
 pub mod rejected;
+pub mod safe_math;
 pub mod sample;
 pub mod simulation;
+pub mod tex_wrap;
 pub mod units;
 
 pub use context::Solution;

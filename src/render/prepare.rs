@@ -5,6 +5,7 @@
 //! and what a format cannot show is removed.
 
 use super::escape::{self, Lines};
+use super::markup;
 use super::mathml::{self, Display};
 use super::{Format, Solution};
 use serde_json::Value;
@@ -22,18 +23,6 @@ pub fn context(
     let mut value = serde_json::to_value(solution).map_err(tera::Error::json)?;
     walk(&mut value, "", format);
     if let Value::Object(map) = &mut value {
-        // The statement as paragraphs of lines, for formats that mark paragraphs up.
-        let paragraphs = solution
-            .statement
-            .as_deref()
-            .map(escape::paragraphs)
-            .unwrap_or_default();
-        let line = |text: &String| Value::String(string(text, "statement_line", format));
-        let paragraphs = paragraphs
-            .iter()
-            .map(|lines| Value::Array(lines.iter().map(line).collect()))
-            .collect();
-        map.insert("statement_paragraphs".into(), Value::Array(paragraphs));
         map.insert("student".into(), Value::Bool(student));
         map.insert("format".into(), Value::String(format.extension().into()));
     }
@@ -84,16 +73,18 @@ fn string(text: &str, key: &str, format: Format) -> String {
             String::new()
         };
     }
-    let lines = if key == "statement" {
-        Lines::Paragraphs
-    } else {
-        Lines::One
-    };
+    // The statement and the questions are the problem's own markup (see `markup`), written
+    // out here for every format; in HTML they are markup the template marks `safe`.
+    match key {
+        "statement" => return markup::render_blocks(text, format),
+        "question" => return markup::render_line(text, format),
+        _ => {}
+    }
     match format {
         Format::Latex if is_number(text) => latex_number(text),
-        Format::Latex => escape::latex(text, lines),
+        Format::Latex => escape::latex(text, Lines::One),
         Format::Markdown if key == "svg_file" => percent_encode(text),
-        Format::Markdown => escape::markdown(text, lines),
+        Format::Markdown => escape::markdown(text, Lines::One),
         // Tera escapes the HTML template's output.
         Format::Html => text.to_string(),
     }
@@ -164,7 +155,7 @@ fn base64(bytes: &[u8]) -> String {
 }
 
 /// Registers `mathml` (LaTeX math -> a sanitized `<math>` element; `display=true` for a
-/// block) and `tex_display` (LaTeX math -> a displayed equation: `\\[…\\]`, or `multline*`
+/// block), `tex_wrap` (LaTeX math -> `$…$` that can break after commas and in brackets) and `tex_display` (LaTeX math -> a displayed equation: `\\[…\\]`, or `multline*`
 /// broken into lines when it is long).
 pub fn register_filters(tera: &mut tera::Tera) {
     tera.register_filter("mathml", |value: &Value, args: &HashMap<String, Value>| {
@@ -188,6 +179,11 @@ pub fn register_filters(tera: &mut tera::Tera) {
             return Ok(Value::String(lines.join("\n")));
         }
         Ok(Value::String(mathml::to_mathml_or_source(&latex, display)))
+    });
+    // LaTeX math -> inline math that a table cell or a list can wrap (see `tex_wrap`).
+    tera.register_filter("tex_wrap", |value: &Value, _: &HashMap<String, Value>| {
+        let latex = tera::try_get_value!("tex_wrap", "value", String, value);
+        Ok(Value::String(super::tex_wrap::wrap(&latex)))
     });
     tera.register_filter(
         "tex_display",

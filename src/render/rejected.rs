@@ -40,7 +40,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
                 format!(
                     " ({}, {})",
                     super::derived::bodies_name(problem, &r.free_body),
-                    super::derived::sum_text(&r.sum)
+                    super::derived::sum_text(&derivation.model, &r.sum)
                 )
             });
             plain(&format!(
@@ -63,7 +63,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
     };
     RejectedView {
         free_body: super::derived::bodies_name(problem, &candidate.free_body),
-        equation: super::derived::sum_text(&candidate.sum),
+        equation: super::derived::sum_text(&derivation.model, &candidate.sum),
         direction_tex: candidate.direction.latex.clone(),
         reason,
         reason_tex,

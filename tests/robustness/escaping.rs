@@ -9,17 +9,23 @@ use std::process::{Command, Stdio};
 
 /// Text that would act if it reached TeX, a browser or Tera unescaped. `canary.tex` is a
 /// file in the working directory that announces itself in the log if TeX ever reads it.
-const HOSTILE: [&str; 6] = [
+const HOSTILE: [&str; 11] = [
     r"\input{/etc/passwd}",
     r"\input{canary}\immediate\write18{touch pwned}",
+    // Math spans: only the allowed commands pass as math, the rest is text.
+    r"$\input{canary}$ $\write18{touch pwned}$ $\immediate\write18{touch pwned}$",
+    r"$x^{$ $}$ $\frac{a}$ $a^b^c$ $\def\x{\input{canary}}\x$ $\catcode`\^=7$",
+    "$</script><script>alert(2)</script>$ $<img src=x onerror=alert(3)>$",
+    "*emph <script>alert(4)</script>* `\\input{canary}` **{{ x }}**",
+    "- \\input{canary}\n1. $\\input{canary}$\n2. {{ x }}",
     "<script>alert(1)</script><SCRIPT src=x></SCRIPT>",
     "{{ x }} {{ __tera_context }}",
     "{% raw %}{% include \"/etc/passwd\" %}{% endraw %}",
     "$x$ 100% & # _ ~ ^ \\\\ } { \\end{document}",
 ];
 
-/// The simple pendulum with every text field (title, statement, descriptions, units)
-/// replaced by hostile text.
+/// The simple pendulum with every text field (title, statement, descriptions, units, the
+/// questions' texts) replaced by hostile text.
 fn hostile_problem(dir: &Path) -> std::path::PathBuf {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
@@ -48,6 +54,11 @@ fn hostile_problem(dir: &Path) -> std::path::PathBuf {
         }
     }
     problem["bodies"]["bob"]["description"] = Value::from(all);
+    if let Some(questions) = problem["find"]["questions"].as_array_mut() {
+        for question in questions {
+            question["text"] = next();
+        }
+    }
     let path = dir.join("hostile.json");
     std::fs::write(&path, serde_json::to_string_pretty(&problem).expect("JSON")).expect("written");
     path

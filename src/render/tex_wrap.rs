@@ -1,0 +1,172 @@
+//! Inline math that a LaTeX table cell or a list item can wrap.
+//!
+//! TeX breaks inline math only after a relation or a binary operator at the formula's
+//! outer level: never after a comma, never inside `\left( … \right)` (a subformula) or
+//! `\text{…}` (a box). So a list of unknowns, an orientation "rotated by … about …" or a
+//! position with brackets would stick out of a narrow column. [`wrap`] writes the same
+//! math so that it can break there: a permitted break after each comma of a list, `\bigl(`
+//! and `\bigr)` for `\left(` and `\right)`, and the words of `\text{…}` as text.
+
+/// `math` (LaTeX math, without `$`) as LaTeX text-mode source: `$…$` pieces that may break
+/// after commas and inside brackets, and the words of top-level `\text{…}` as text between
+/// them. Empty for empty math.
+pub fn wrap(math: &str) -> String {
+    let math = math.trim();
+    if math.is_empty() {
+        return String::new();
+    }
+    let mut out = String::with_capacity(math.len() + 32);
+    let mut piece = String::new();
+    let flush = |piece: &mut String, out: &mut String| {
+        let trimmed = piece.trim();
+        if !trimmed.is_empty() {
+            // Spaces around the math separate it from the words.
+            if piece.starts_with(' ') {
+                out.push(' ');
+            }
+            out.push('$');
+            out.push_str(&breakable(trimmed));
+            out.push('$');
+            if piece.ends_with(' ') {
+                out.push(' ');
+            }
+        }
+        piece.clear();
+    };
+    let mut depth = 0i32;
+    let mut rest = math;
+    while let Some(c) = rest.chars().next() {
+        if depth == 0 {
+            if let Some(after) = rest.strip_prefix("\\text{") {
+                if let Some(end) = group_end(after) {
+                    flush(&mut piece, &mut out);
+                    out.push_str(&after[..end]);
+                    rest = &after[end + 1..];
+                    continue;
+                }
+            }
+        }
+        match c {
+            '\\' => {
+                // A command or an escaped character goes over whole (`\{` is no group).
+                let name = rest[1..]
+                    .chars()
+                    .take_while(char::is_ascii_alphabetic)
+                    .count();
+                let length = match name {
+                    0 => 1 + rest[1..].chars().next().map_or(0, char::len_utf8),
+                    _ => 1 + name,
+                };
+                piece.push_str(&rest[..length]);
+                rest = &rest[length..];
+                continue;
+            }
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            _ => {}
+        }
+        piece.push(c);
+        rest = &rest[c.len_utf8()..];
+    }
+    flush(&mut piece, &mut out);
+    // A space of the math beside a space of the text: one is enough.
+    out.split(' ')
+        .filter(|w| !w.is_empty())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Where the group that `text` is the inside of closes (the index of its `}`).
+fn group_end(text: &str) -> Option<usize> {
+    let mut depth = 0i32;
+    let mut escaped = false;
+    for (i, c) in text.char_indices() {
+        match c {
+            _ if escaped => escaped = false,
+            '\\' => escaped = true,
+            '{' => depth += 1,
+            '}' if depth == 0 => return Some(i),
+            '}' => depth -= 1,
+            _ => {}
+        }
+    }
+    None
+}
+
+/// `math` with a permitted break after each comma outside braces, and `\left`/`\right`
+/// as `\bigl`/`\bigr` so that TeX can break inside the brackets (not for matrices, whose
+/// brackets must grow).
+fn breakable(math: &str) -> String {
+    let mut math = math.to_string();
+    if !math.contains("\\begin") {
+        math = replace_command(&math, "\\left", "\\bigl");
+        math = replace_command(&math, "\\right", "\\bigr");
+    }
+    let mut out = String::with_capacity(math.len() + 16);
+    let mut depth = 0i32;
+    let mut chars = math.chars().peekable();
+    while let Some(c) = chars.next() {
+        out.push(c);
+        match c {
+            '\\' => out.extend(chars.next()),
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ',' if depth == 0 => out.push_str("\\allowbreak"),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// `text` with the command `from` (a whole word: `\left`, not `\leftarrow`) written `to`.
+fn replace_command(text: &str, from: &str, to: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find(from) {
+        let after = &rest[at + from.len()..];
+        out.push_str(&rest[..at]);
+        if after.starts_with(|c: char| c.is_ascii_alphabetic()) {
+            out.push_str(from);
+        } else {
+            out.push_str(to);
+        }
+        rest = after;
+    }
+    out.push_str(rest);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lists_break_after_commas() {
+        assert_eq!(
+            wrap("\\ddot{x}, F^{O}_{x}, \\sin(a, b)"),
+            "$\\ddot{x},\\allowbreak F^{O}_{x},\\allowbreak \\sin(a,\\allowbreak b)$"
+        );
+        assert_eq!(wrap("a_{1,2}"), "$a_{1,2}$");
+        assert_eq!(wrap(""), "");
+    }
+
+    #[test]
+    fn text_comes_out_of_the_math() {
+        assert_eq!(
+            wrap("\\text{rotated by } q_{1} \\text{ about } \\hat{\\mathbf{n}}_{z}"),
+            "rotated by $q_{1}$ about $\\hat{\\mathbf{n}}_{z}$"
+        );
+        assert_eq!(wrap("\\text{couple}"), "couple");
+        assert_eq!(wrap("\\text{a\\{b\\}} x"), "a\\{b\\} $x$");
+    }
+
+    #[test]
+    fn brackets_can_break_but_matrices_keep_theirs() {
+        assert_eq!(
+            wrap("\\left(a + b\\right) \\leftarrow c"),
+            "$\\bigl(a + b\\bigr) \\leftarrow c$"
+        );
+        let matrix = "\\left[\\begin{matrix} a \\end{matrix}\\right]";
+        assert_eq!(wrap(matrix), format!("${matrix}$"));
+    }
+}
