@@ -402,6 +402,15 @@ impl Problem {
             .collect()
     }
 
+    /// The same problem with the coordinates' rates as its speeds: the same motion, derived
+    /// in `q''` (the state matrix of `linearize` is about `q` and `q'` either way).
+    pub fn without_speeds(&self) -> Problem {
+        Problem {
+            speeds: Vec::new(),
+            ..self.clone()
+        }
+    }
+
     /// Whether the problem declares its own generalized speeds.
     pub fn has_speeds(&self) -> bool {
         !self.speeds.is_empty()

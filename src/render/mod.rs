@@ -25,6 +25,7 @@ mod prepare;
 pub mod rejected;
 pub mod sample;
 pub mod simulation;
+pub mod speeds;
 pub mod units;
 
 pub use context::Solution;
