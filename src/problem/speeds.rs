@@ -21,7 +21,12 @@ impl Reader {
         coordinates: &[Coordinate],
         constrained: bool,
     ) -> Vec<Speed> {
-        let Some(map) = object(value, "speeds", &mut self.diag) else {
+        let Some(map) = value.as_object() else {
+            self.diag.hint(
+                "speeds",
+                format!("expected an object, found {}", super::json::kind(value)),
+                "write { \"u1\": { \"equals\": \"q1'\" }, ... }, one speed per coordinate",
+            );
             return Vec::new();
         };
         let rates: Vec<Symbol> = coordinates
@@ -84,8 +89,9 @@ impl Reader {
             self.diag.hint(
                 "speeds",
                 format!(
-                    "{} speeds declared for {} coordinates",
+                    "{} speed{} declared for {} coordinates",
                     map.len(),
+                    if map.len() == 1 { "" } else { "s" },
                     coordinates.len()
                 ),
                 format!(
@@ -105,22 +111,28 @@ impl Reader {
     fn speed_expression(&mut self, value: &Value, path: &str, rates: &[Symbol]) -> Option<Expr> {
         let text = value.as_str().unwrap_or_default().to_string();
         let e = self.scalar(value, path, Context::load("a speed"))?;
-        let column = |needle: &dyn Fn(&str) -> Option<usize>| needle(&text).map(|i| i + 1);
         if e.contains(&Symbol::Time) {
             self.diag.push(
                 path,
-                column(&|s| s.find('t')),
+                token_column(&text, "t"),
                 "a speed may not depend on time `t`",
                 Some("write the speed with constants, coordinates and their rates, e.g. \"q1' + q2'\""),
             );
             return None;
         }
-        let first_rate = |s: &str| s.find('\'').map(|i| i.saturating_sub(1));
+        // The column of the first rate that is not linear, for the messages below.
+        let nonlinear = rates
+            .iter()
+            .find(|r| match linear_split(&e, std::slice::from_ref(*r)) {
+                Err(_) => true,
+                Ok((c, _)) => c[0].contains(r),
+            })
+            .and_then(|r| token_column(&text, &r.to_string()));
         match linear_split(&e, rates) {
             Err(_) => {
                 self.diag.push(
                     path,
-                    column(&first_rate),
+                    nonlinear.or(Some(1)),
                     "the speed is not linear in the rates",
                     Some("a speed is a sum of rates times coefficients of constants and coordinates, e.g. \"cos(q2)*q1' + q3'\""),
                 );
@@ -131,7 +143,7 @@ impl Reader {
                 if coefficients.iter().any(has_rate) {
                     self.diag.push(
                         path,
-                        column(&first_rate),
+                        nonlinear.or(Some(1)),
                         "the speed is not linear in the rates: a rate multiplies a rate",
                         Some("a speed is a sum of rates times coefficients of constants and coordinates"),
                     );
@@ -192,5 +204,40 @@ impl Reader {
                 "choose speeds that are independent combinations of the rates (no speed a combination of the others), and an initial state away from gimbal lock",
             );
         }
+    }
+}
+
+/// The 1-based column of the first occurrence of `token` (a name, or a name and its primes)
+/// standing alone in `text`: not part of a longer name.
+fn token_column(text: &str, token: &str) -> Option<usize> {
+    let is_name = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let mut from = 0;
+    while let Some(i) = text[from..].find(token) {
+        let start = from + i;
+        let end = start + token.len();
+        let before = text[..start].chars().next_back();
+        let after = text[end..].chars().next();
+        let primes_end = token.ends_with('\'');
+        if !before.is_some_and(is_name)
+            && !after.is_some_and(|c| is_name(c) || (!primes_end && c == '\''))
+            && !(primes_end && after == Some('\''))
+        {
+            return Some(text[..start].chars().count() + 1);
+        }
+        from = end;
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::token_column;
+
+    #[test]
+    fn token_column_finds_whole_names_only() {
+        assert_eq!(token_column("theta*t*q1'", "t"), Some(7));
+        assert_eq!(token_column("q1'' + q1'", "q1'"), Some(8));
+        assert_eq!(token_column("q12' + q1'", "q1'"), Some(8));
+        assert_eq!(token_column("q2", "q1'"), None);
     }
 }
