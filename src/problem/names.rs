@@ -103,7 +103,11 @@ impl Names {
             diag.hint(
                 path,
                 format!("`{name}` is already {} (at `{other_path}`)", other.noun()),
-                "names are unique across constants, coordinates, bodies, joints, points, closures, constraints and speeds",
+                if kind == Kind::Speed || *other == Kind::Speed {
+                    "names are unique across constants, coordinates, bodies, joints, points, closures, constraints and speeds"
+                } else {
+                    "names are unique across constants, coordinates, bodies, joints, points, closures and constraints"
+                },
             );
             return false;
         }
