@@ -24,7 +24,11 @@ fn with_speeds(text: &str, speeds: Option<serde_json::Value>) -> Problem {
 }
 
 /// The q'' by `method` at each state.
-fn accelerations(problem: &Problem, method: Method, states: &[(Vec<f64>, Vec<f64>)]) -> Vec<Vec<f64>> {
+fn accelerations(
+    problem: &Problem,
+    method: Method,
+    states: &[(Vec<f64>, Vec<f64>)],
+) -> Vec<Vec<f64>> {
     let derivation = derive(problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
     let compiled = Compiled::new(&derivation);
     states
@@ -42,7 +46,9 @@ fn accelerations(problem: &Problem, method: Method, states: &[(Vec<f64>, Vec<f64
 fn states(n: usize) -> Vec<(Vec<f64>, Vec<f64>)> {
     let mut seed: u64 = 12345;
     let mut next = || {
-        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     };
     (0..4)
@@ -62,7 +68,13 @@ fn agrees_with_the_rates(with: &Problem, without: &Problem) {
         let got = accelerations(with, method, &states);
         for (s, (g, r)) in got.iter().zip(&reference).enumerate() {
             for (i, (g, r)) in g.iter().zip(r).enumerate() {
-                assert_close(*g, *r, 1e-9, 1.0, &format!("{} state {s} q''[{i}]", method.name()));
+                assert_close(
+                    *g,
+                    *r,
+                    1e-9,
+                    1.0,
+                    &format!("{} state {s} q''[{i}]", method.name()),
+                );
             }
         }
     }
@@ -96,7 +108,12 @@ fn torque_free_body_with_body_frame_speeds_gives_eulers_equations() {
         );
     }
     // The handout prints them so.
-    let out = crate::support::run(&["explain", problem_path(TORQUE_FREE).as_str(), "--method", "kane"]);
+    let out = crate::support::run(&[
+        "explain",
+        problem_path(TORQUE_FREE).as_str(),
+        "--method",
+        "kane",
+    ]);
     let text = String::from_utf8_lossy(&out.stdout);
     for line in [
         r"-I_{1} \dot{u}_{1} + \left(I_{2} - I_{3}\right) u_{2} u_{3} = 0",
@@ -140,22 +157,37 @@ fn a_general_free_body_with_body_frame_speeds_agrees_with_the_rates() {
 fn planar_speeds_agree_with_the_rates() {
     let cases = [
         // The absolute angular velocity of the second rod.
-        ("double-pendulum-rods", serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'" } })),
+        (
+            "double-pendulum-rods",
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'" } }),
+        ),
         // Five absolute angular velocities: a 5x5 W, inverted by elimination.
-        ("five-link-chain", serde_json::json!({
-            "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'" }, "u3": { "equals": "q1' + q2' + q3'" },
-            "u4": { "equals": "q1' + q2' + q3' + q4'" }, "u5": { "equals": "q1' + q2' + q3' + q4' + q5'" }
-        })),
+        (
+            "five-link-chain",
+            serde_json::json!({
+                "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'" }, "u3": { "equals": "q1' + q2' + q3'" },
+                "u4": { "equals": "q1' + q2' + q3' + q4'" }, "u5": { "equals": "q1' + q2' + q3' + q4' + q5'" }
+            }),
+        ),
         // Dampers: a load that uses the rates.
-        ("two-mass-spring-damper", serde_json::json!({ "u1": { "equals": "x1'" }, "u2": { "equals": "x2' - x1'" } })),
+        (
+            "two-mass-spring-damper",
+            serde_json::json!({ "u1": { "equals": "x1'" }, "u2": { "equals": "x2' - x1'" } }),
+        ),
         // The plate's velocity in its own unit vectors: W depends on a coordinate.
-        ("plate-on-two-springs", serde_json::json!({
-            "u1": { "equals": "cos(theta)*x' + sin(theta)*y'" },
-            "u2": { "equals": "-sin(theta)*x' + cos(theta)*y'" },
-            "u3": { "equals": "theta'" }
-        })),
+        (
+            "plate-on-two-springs",
+            serde_json::json!({
+                "u1": { "equals": "cos(theta)*x' + sin(theta)*y'" },
+                "u2": { "equals": "-sin(theta)*x' + cos(theta)*y'" },
+                "u3": { "equals": "theta'" }
+            }),
+        ),
         // A speed with a coordinate-dependent coefficient of another rate.
-        ("bead-on-rotating-rod", serde_json::json!({ "u1": { "equals": "theta'" }, "u2": { "equals": "r' + r*theta'" } })),
+        (
+            "bead-on-rotating-rod",
+            serde_json::json!({ "u1": { "equals": "theta'" }, "u2": { "equals": "r' + r*theta'" } }),
+        ),
     ];
     for (name, speeds) in cases {
         let text = read(name);
@@ -171,7 +203,9 @@ fn double_pendulum_with_absolute_speeds_prints_the_textbook_form() {
     let derivation = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
     // The angular velocity of B is u2 itself, not u1 + (u2 - u1).
     let b = problem.body_ids().nth(1).expect("two bodies");
-    let omega = derivation.model.bodies[b.0].omega.components_in(b, &derivation.model.frames);
+    let omega = derivation.model.bodies[b.0]
+        .omega
+        .components_in(b, &derivation.model.frames);
     assert_eq!(omega[2], speed("u2", 0));
 }
 
@@ -181,7 +215,10 @@ fn energy_is_conserved_with_speeds() {
     // components of the angular velocity computed here from a, a'.
     let (i1, i2, i3) = (4.0, 6.0, 8.0);
     for method in ["kane", "motion-law", "newton-euler"] {
-        let (columns, rows) = simulate(TORQUE_FREE, &["--method", method, "--duration", "5", "--no-checks"]);
+        let (columns, rows) = simulate(
+            TORQUE_FREE,
+            &["--method", method, "--duration", "5", "--no-checks"],
+        );
         let at = |row: &[f64], name: &str| row[column(&columns, name)];
         let energy = |row: &[f64]| {
             let (a2, a3) = (at(row, "a2"), at(row, "a3"));
@@ -194,7 +231,13 @@ fn energy_is_conserved_with_speeds() {
         let e0 = energy(&rows[0]);
         assert!(rows.len() > 100, "{method}: a long run");
         for row in &rows {
-            assert_close(energy(row), e0, 1e-7, 1.0, &format!("{method}: T at t = {}", row[0]));
+            assert_close(
+                energy(row),
+                e0,
+                1e-7,
+                1.0,
+                &format!("{method}: T at t = {}", row[0]),
+            );
         }
     }
 }
@@ -213,34 +256,59 @@ fn refused(speeds: serde_json::Value) -> String {
 #[test]
 fn bad_speeds_are_refused_with_their_path() {
     let cases = [
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'^2" } }),
-            "speeds.u2.equals, column 7: the speed is not linear in the rates"),
-        (serde_json::json!({ "u1": { "equals": "sin(q1')" }, "u2": { "equals": "q2'" } }),
-            "speeds.u1.equals, column 5: the speed is not linear in the rates"),
-        (serde_json::json!({ "u1": { "equals": "q1' + q2'" }, "u2": { "equals": "2*q1' + 2*q2'" } }),
-            "speeds: the speeds do not determine the rates q1, q2 at the initial state"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q3'" } }),
-            "speeds.u2.equals, column 7: unknown name `q3`"),
-        (serde_json::json!({ "u1": { "equals": "q1' + q2'" } }),
-            "speeds: 1 speed declared for 2 coordinates"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1'", "unit": 3 }, "u3": {} }),
-            "speeds: 3 speeds declared for 2 coordinates"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "g": { "equals": "q2'" } }),
-            "speeds.g: `g` is already a constant"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "t*q2'" } }),
-            "speeds.u2.equals, column 1: a speed may not depend on time `t`"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q2' + L1" } }),
-            "speeds.u2.equals, column 1: the speed has a part without rates"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1''" } }),
-            "speeds.u2.equals, column 1: `q1''` is a second rate"),
-        (serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "L1" } }),
-            "speeds.u2.equals, column 1: the speed has a part without rates"),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'^2" } }),
+            "speeds.u2.equals, column 7: the speed is not linear in the rates",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "sin(q1')" }, "u2": { "equals": "q2'" } }),
+            "speeds.u1.equals, column 5: the speed is not linear in the rates",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1' + q2'" }, "u2": { "equals": "2*q1' + 2*q2'" } }),
+            "speeds: the speeds do not determine the rates q1, q2 at the initial state",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q3'" } }),
+            "speeds.u2.equals, column 7: unknown name `q3`",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1' + q2'" } }),
+            "speeds: 1 speed declared for 2 coordinates",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1'", "unit": 3 }, "u3": {} }),
+            "speeds: 3 speeds declared for 2 coordinates",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "g": { "equals": "q2'" } }),
+            "speeds.g: `g` is already a constant",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "t*q2'" } }),
+            "speeds.u2.equals, column 1: a speed may not depend on time `t`",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q2' + L1" } }),
+            "speeds.u2.equals, column 1: the speed has a part without rates",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1''" } }),
+            "speeds.u2.equals, column 1: `q1''` is a second rate",
+        ),
+        (
+            serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "L1" } }),
+            "speeds.u2.equals, column 1: the speed has a part without rates",
+        ),
         (serde_json::json!([]), "speeds: expected an object"),
         (serde_json::json!({}), "speeds: `speeds` is empty"),
     ];
     for (speeds, expected) in cases {
         let report = refused(speeds.clone());
-        assert!(report.contains(expected), "{speeds}: expected {expected:?} in\n{report}");
+        assert!(
+            report.contains(expected),
+            "{speeds}: expected {expected:?} in\n{report}"
+        );
         assert!(report.contains("hint:"), "{speeds}: no hint in\n{report}");
     }
 }
@@ -252,7 +320,10 @@ fn speeds_are_refused_with_constraints() {
         "u1": { "equals": "q1'" }, "u2": { "equals": "q2'" }, "u3": { "equals": "q3'" }
     });
     let report = load(&value.to_string()).expect_err("refused").to_string();
-    assert!(report.contains("speeds: declared speeds are not supported with closures"), "{report}");
+    assert!(
+        report.contains("speeds: declared speeds are not supported with closures"),
+        "{report}"
+    );
 }
 
 #[test]
@@ -267,4 +338,45 @@ fn a_singular_w_away_from_the_initial_state_is_a_solve_error_not_a_panic() {
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+#[test]
+fn solve_reports_the_speeds_and_their_rates_as_eulers_equations_give_them() {
+    let (i1, i2, i3) = (4.0, 6.0, 8.0);
+    for s in crate::support::solve_all(
+        TORQUE_FREE,
+        &["--state", "a1=0.4,a2=0.3,a3=-1.1,a1'=0.7,a2'=-1.5,a3'=2.5"],
+    ) {
+        let get = |key: &str, name: &str| {
+            s.json[key][name]
+                .as_f64()
+                .unwrap_or_else(|| panic!("{}: no {key}.{name}", s.method))
+        };
+        // The speeds by hand from the attitude rates.
+        let (a2, a3, d1, d2, d3) = (0.3f64, -1.1f64, 0.7, -1.5, 2.5);
+        let u = [
+            a2.cos() * a3.cos() * d1 + a3.sin() * d2,
+            -a2.cos() * a3.sin() * d1 + a3.cos() * d2,
+            a2.sin() * d1 + d3,
+        ];
+        for (k, u) in u.iter().enumerate() {
+            assert_close(get("speeds", &format!("u{}", k + 1)), *u, 1e-12, 1.0, "u");
+        }
+        // Euler's equations by hand.
+        let du = [
+            (i2 - i3) * u[1] * u[2] / i1,
+            (i3 - i1) * u[2] * u[0] / i2,
+            (i1 - i2) * u[0] * u[1] / i3,
+        ];
+        for (k, du) in du.iter().enumerate() {
+            let what = format!("{}: u{}'", s.method, k + 1);
+            assert_close(
+                get("speed_derivatives", &format!("u{}", k + 1)),
+                *du,
+                1e-9,
+                1.0,
+                &what,
+            );
+        }
+    }
 }

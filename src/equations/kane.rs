@@ -130,10 +130,7 @@ fn speeds_forces(model: &Model, q: Vec<Expr>) -> Vec<Expr> {
     };
     (0..q.len())
         .map(|r| {
-            let f = add(q
-                .iter()
-                .zip(&speeds.inverse)
-                .map(|(qs, row)| qs * &row[r]));
+            let f = add(q.iter().zip(&speeds.inverse).map(|(qs, row)| qs * &row[r]));
             speeds.to_speeds(&crate::symbolic::simplify(&f))
         })
         .collect()

@@ -5,8 +5,8 @@ use super::frames::{FrameInfo, Frames, Matrix};
 use super::joints::{
     joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent,
 };
-use super::vector::{zero3, Components, Vector};
 use super::speeds::Speeds;
+use super::vector::{zero3, Components, Vector};
 use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
 use crate::symbolic::diff::time_derivative;

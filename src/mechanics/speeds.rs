@@ -78,13 +78,19 @@ impl Speeds {
         let Ok((c, rest)) = linear_split(e, &self.rates) else {
             let replaced = self.rates_as_speeds();
             return simplify(&crate::symbolic::subst::substitute(e, &|s| {
-                self.rates.iter().position(|r| r == s).map(|i| replaced[i].clone())
+                self.rates
+                    .iter()
+                    .position(|r| r == s)
+                    .map(|i| replaced[i].clone())
             }));
         };
         if c.iter().any(|c| self.rates.iter().any(|r| c.contains(r))) {
             let replaced = self.rates_as_speeds();
             return simplify(&crate::symbolic::subst::substitute(e, &|s| {
-                self.rates.iter().position(|r| r == s).map(|i| replaced[i].clone())
+                self.rates
+                    .iter()
+                    .position(|r| r == s)
+                    .map(|i| replaced[i].clone())
             }));
         }
         let c: Vec<Expr> = c.iter().map(simplify).collect();
@@ -225,11 +231,7 @@ fn adjugate_inverse(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
         }
     };
     (0..n)
-        .map(|i| {
-            (0..n)
-                .map(|j| simplify(&(&cofactor(j, i) / &d)))
-                .collect()
-        })
+        .map(|i| (0..n).map(|j| simplify(&(&cofactor(j, i) / &d))).collect())
         .collect()
 }
 
@@ -238,7 +240,11 @@ fn eliminate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
     let n = m.len();
     let mut a: Vec<Vec<Expr>> = m.to_vec();
     let mut inv: Vec<Vec<Expr>> = (0..n)
-        .map(|i| (0..n).map(|j| if i == j { Expr::one() } else { Expr::zero() }).collect())
+        .map(|i| {
+            (0..n)
+                .map(|j| if i == j { Expr::one() } else { Expr::zero() })
+                .collect()
+        })
         .collect();
     for col in 0..n {
         let pivot = (col..n)

@@ -74,6 +74,8 @@ pub struct StateSolution {
     pub kinetic: f64,
     /// Potential energy (gravity, springs, joint springs).
     pub potential: f64,
+    /// Each declared speed: name, `u` and `u'` (empty when the speeds are the rates).
+    pub speeds: Vec<(String, f64, f64)>,
 }
 
 /// The input symbols of the compiled program: constants, coordinates, rates, time, and
@@ -91,6 +93,7 @@ pub fn input_symbols(problem: &Problem) -> Vec<Symbol> {
 #[derive(Clone, Debug)]
 struct SpeedProgram {
     n: usize,
+    names: Vec<String>,
     program: Program,
 }
 
@@ -114,6 +117,7 @@ impl SpeedProgram {
         outputs.extend(derivatives);
         Some(SpeedProgram {
             n,
+            names: problem.speeds.iter().map(|s| s.name.clone()).collect(),
             program: Program::compile(&state_symbols(problem), &outputs),
         })
     }
@@ -124,6 +128,23 @@ impl SpeedProgram {
         let mut out = vec![0.0; self.n * (self.n + 2)];
         self.program.run(inputs, &mut scratch, &mut out);
         out
+    }
+
+    /// Each speed's name, `u` and `u' = W q'' + Ẇ q'`, at the state whose `run` gave `values`.
+    fn rates_of_speeds(&self, values: &[f64], accelerations: &[f64]) -> Vec<(String, f64, f64)> {
+        let n = self.n;
+        (0..n)
+            .map(|r| {
+                let w_row = &values[n + r * n..n + (r + 1) * n];
+                let du = w_row
+                    .iter()
+                    .zip(accelerations)
+                    .map(|(w, a)| w * a)
+                    .sum::<f64>()
+                    + values[n + n * n + r];
+                (self.names[r].clone(), values[r], du)
+            })
+            .collect()
     }
 
     /// The q'' from the speeds' rates `du` at the state whose `run` gave `values`.
@@ -243,7 +264,16 @@ impl Compiled {
         self.energy
             .run(&self.inputs(t, q, rates), &mut scratch, &mut energies);
         self.scratch.replace(scratch);
+        let speeds = match &self.speeds {
+            Some(program) => {
+                let inputs = self.inputs(t, q, rates);
+                let values = program.run(&inputs[..inputs.len() - program.n]);
+                program.rates_of_speeds(&values, &motion.accelerations)
+            }
+            None => Vec::new(),
+        };
         Ok(StateSolution {
+            speeds,
             accelerations: motion.accelerations,
             reactions: motion.reactions,
             drives: motion.drives,
@@ -289,8 +319,7 @@ impl Compiled {
             state: state(),
             detail: self.singularity_detail(&a),
         })?;
-        let mut accelerations: Vec<f64> =
-            x.iter().take(self.coordinates.len()).copied().collect();
+        let mut accelerations: Vec<f64> = x.iter().take(self.coordinates.len()).copied().collect();
         if let Some(speeds) = &self.speeds {
             // The unknowns are the u': q'' = W⁻¹ (u' − Ẇ q').
             let values = speeds.run(&inputs[..inputs.len() - speeds.n]);
@@ -298,7 +327,9 @@ impl Compiled {
                 .accelerations(&values, &accelerations)
                 .ok_or_else(|| SolveError::SingularSystem {
                     state: state(),
-                    detail: "the speeds do not determine the rates here: W of u = W(q) q' is singular".into(),
+                    detail:
+                        "the speeds do not determine the rates here: W of u = W(q) q' is singular"
+                            .into(),
                 })?;
         }
         let mut reactions = Vec::new();

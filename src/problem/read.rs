@@ -129,7 +129,13 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         .unwrap_or_default();
     let speeds = top
         .get("speeds")
-        .map(|v| r.speeds(v, &coordinates, !closures.is_empty() || !constraints.is_empty()))
+        .map(|v| {
+            r.speeds(
+                v,
+                &coordinates,
+                !closures.is_empty() || !constraints.is_empty(),
+            )
+        })
         .unwrap_or_default();
 
     if !r.diag.is_empty() {

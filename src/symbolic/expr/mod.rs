@@ -166,11 +166,7 @@ impl Definition {
     }
 }
 
-fn collect_inside(
-    e: &Expr,
-    found: &mut Vec<Symbol>,
-    seen: &mut std::collections::HashSet<Symbol>,
-) {
+fn collect_inside(e: &Expr, found: &mut Vec<Symbol>, seen: &mut std::collections::HashSet<Symbol>) {
     match e.node() {
         Node::Num(_) => {}
         Node::Sym(s) => {
