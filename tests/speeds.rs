@@ -23,7 +23,7 @@ fn with_speeds(text: &str, speeds: Option<serde_json::Value>) -> Problem {
     load(&value.to_string()).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// The q'' by `method` at each state.
+/// The q'' and the requested reactions by `method` at each state.
 fn accelerations(
     problem: &Problem,
     method: Method,
@@ -34,10 +34,15 @@ fn accelerations(
     states
         .iter()
         .map(|(q, rates)| {
-            compiled
+            let s = compiled
                 .solve(0.0, q, rates)
-                .unwrap_or_else(|e| panic!("{}: {e}", method.name()))
-                .accelerations
+                .unwrap_or_else(|e| panic!("{}: {e}", method.name()));
+            // q'', then the requested reactions' components.
+            let mut out = s.accelerations;
+            for (_, force, moment) in &s.reactions {
+                out.extend(force.iter().chain(moment));
+            }
+            out
         })
         .collect()
 }
@@ -67,13 +72,14 @@ fn agrees_with_the_rates(with: &Problem, without: &Problem) {
     for method in Method::ALL {
         let got = accelerations(with, method, &states);
         for (s, (g, r)) in got.iter().zip(&reference).enumerate() {
+            assert_eq!(g.len(), r.len(), "{}: as many values", method.name());
             for (i, (g, r)) in g.iter().zip(r).enumerate() {
                 assert_close(
                     *g,
                     *r,
                     1e-9,
                     1.0,
-                    &format!("{} state {s} q''[{i}]", method.name()),
+                    &format!("{} state {s} q'' or reaction [{i}]", method.name()),
                 );
             }
         }
