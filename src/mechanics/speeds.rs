@@ -172,8 +172,8 @@ fn blocks(w: &[Vec<Expr>]) -> Vec<(Vec<usize>, Vec<usize>)> {
         let mut k = 0;
         while k < rows.len() {
             let r = rows[k];
-            for s in 0..n {
-                if !w[r][s].is_zero() && !columns.contains(&s) {
+            for (s, entry) in w[r].iter().enumerate() {
+                if !entry.is_zero() && !columns.contains(&s) {
                     columns.push(s);
                     for (r2, seen) in row_seen.iter_mut().enumerate() {
                         if !*seen && !w[r2][s].is_zero() {
@@ -217,7 +217,7 @@ fn adjugate_inverse(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
             1 => Expr::one(),
             2 => {
                 let e = m[1 - i][1 - j].clone();
-                if (i + j) % 2 == 0 {
+                if (i + j).is_multiple_of(2) {
                     e
                 } else {
                     -e

@@ -217,11 +217,8 @@ fn token_column(text: &str, token: &str) -> Option<usize> {
         let end = start + token.len();
         let before = text[..start].chars().next_back();
         let after = text[end..].chars().next();
-        let primes_end = token.ends_with('\'');
-        if !before.is_some_and(is_name)
-            && !after.is_some_and(|c| is_name(c) || (!primes_end && c == '\''))
-            && !(primes_end && after == Some('\''))
-        {
+        // A prime after it makes it another symbol: `q1` in `q1'`, `q1'` in `q1''`.
+        if !before.is_some_and(is_name) && !after.is_some_and(|c| is_name(c) || c == '\'') {
             return Some(text[..start].chars().count() + 1);
         }
         from = end;
