@@ -91,6 +91,7 @@ pub fn planar_chain(n: usize) -> Problem {
         find_reactions: vec![],
         questions: Vec::new(),
         simulate: SimulateSettings::default(),
+        speeds: vec![],
         decimals: vec![],
     }
 }

@@ -11,12 +11,13 @@
 //! 2. [`mechanics`]: the model. Frames, unit vectors and coordinates (step 1); the sites
 //!    (joints, closures, rolling contacts) with their reaction components; the constraints
 //!    (closures, rolling contacts, constraint entries, prescribed motion) as rows, with
-//!    the dependent coordinates and rates; the kinematics of every body (step 4).
+//!    the dependent coordinates and rates; declared generalized speeds, `u = W(q) q'` and
+//!    its inverse; the kinematics of every body (step 4), written with the speeds.
 //! 3. [`plan`]: every force and couple on every body (step 2, the free bodies), the rows
 //!    of equations ([`plan::rows`]), and the Motion Law planner's table (step 3).
 //! 4. [`equations`]: Newton–Euler, the Motion Law and Kane's method, each a
 //!    [`Derivation`](equations::Derivation) with a linear system `A x = b` (step 5). Its
-//!    unknowns are the q'' and typed [`Unknown`](symbolic::Unknown)s: reaction components
+//!    unknowns are the q'' (the u' of declared speeds) and typed [`Unknown`](symbolic::Unknown)s: reaction components
 //!    of sites, drives and multipliers, whose names and LaTeX come from the type.
 //! 5. [`numeric`]: the equations compiled for numbers, the constraints' assembly, the
 //!    linear solve, integration and its checks (steps 5, 6), and linearization.

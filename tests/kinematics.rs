@@ -5,7 +5,8 @@ use mbd_tutor::problem::{load, BodyId, Problem};
 use mbd_tutor::symbolic::eval::{eval, Values};
 use mbd_tutor::symbolic::Symbol;
 
-/// Values of the constants and of q, q', q'' along q(t) = initial + a sin(w t + p).
+/// Values of the constants and of q, q', q'' along q(t) = initial + a sin(w t + p) (and of
+/// the declared speeds and their rates, if any).
 fn values_on_motion(problem: &Problem, t: f64, seed: u64) -> Values {
     let mut values = Values::new();
     for c in &problem.constants {
@@ -25,6 +26,12 @@ fn values_on_motion(problem: &Problem, t: f64, seed: u64) -> Values {
         values.set(problem.coordinate_symbol(i, 2), -a * w * w * s);
     }
     values.set(Symbol::Time, t);
+    // Declared speeds and their rates along the same motion: u = W(q) q' and its d/dt.
+    for (r, speed) in problem.speeds.iter().enumerate() {
+        let du = mbd_tutor::symbolic::diff::time_derivative(&speed.equals).expect("d/dt");
+        values.set(problem.speed_symbol(r, 1), eval(&speed.equals, &values));
+        values.set(problem.speed_symbol(r, 2), eval(&du, &values));
+    }
     values
 }
 

@@ -19,5 +19,6 @@ mod planner;
 mod render;
 mod robustness;
 mod snapshots_by_problem;
+mod speeds;
 mod support;
 mod svg_reader;

@@ -165,8 +165,10 @@ fn explain_version(
     }
     if let Some(state) = args.linearize.as_ref().filter(|_| !student) {
         let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
-        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&problem, method)?)?;
-        let l = linearizer.at(&problem, 0.0, &q, &rates)?;
+        // Small motions are about the coordinates and their rates, whatever the speeds.
+        let in_rates = problem.without_speeds();
+        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&in_rates, method)?)?;
+        let l = linearizer.at(&in_rates, 0.0, &q, &rates)?;
         solution.linearization = Some(render::linearization::section(&problem, &l));
     }
     if !problem.questions.is_empty() {

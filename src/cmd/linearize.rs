@@ -105,7 +105,8 @@ pub fn run(args: Args) -> Result<(), Error> {
     if let Some(plot) = &args.plot {
         super::refuse_overwriting(&args.at.common.problem, Some(plot))?;
     }
-    let problem = super::load_with_overrides(&args.at.common)?;
+    // Small motions are about the coordinates and their rates, whatever the speeds.
+    let problem = super::load_with_overrides(&args.at.common)?.without_speeds();
     let method = super::method(args.at.common.method);
     let linearizer = Linearizer::new(&derive(&problem, method)?)?;
     let report_output = if svg_output.is_some() && args.plot.is_none() {

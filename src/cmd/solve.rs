@@ -167,6 +167,21 @@ pub fn to_json(
             .collect();
         value["drives"] = Value::Object(drives);
     }
+    if !solution.speeds.is_empty() {
+        // Declared speeds: u and u' beside the contract's q''.
+        let (speeds, derivatives): (Map<String, Value>, Map<String, Value>) = solution
+            .speeds
+            .iter()
+            .map(|(name, u, du)| {
+                (
+                    (name.clone(), json!(clean(*u))),
+                    (name.clone(), json!(clean(*du))),
+                )
+            })
+            .unzip();
+        value["speeds"] = Value::Object(speeds);
+        value["speed_derivatives"] = Value::Object(derivatives);
+    }
     value
 }
 

@@ -64,12 +64,8 @@ pub fn equations(
 ) -> Vec<Equation> {
     let problem = model.problem;
     let frames = &model.frames;
-    let rates: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 1))
-        .collect();
-    let accelerations: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 2))
-        .collect();
+    let rates: Vec<Symbol> = problem.speed_symbols(1);
+    let accelerations: Vec<Symbol> = problem.speed_symbols(2);
     let partial = Partials {
         origin: model
             .bodies
@@ -84,7 +80,7 @@ pub fn equations(
         center_own: own_partials(&inertia.acceleration, &accelerations, model.is_planar()),
         omega_own: own_partials(&inertia.alpha, &accelerations, model.is_planar()),
     };
-    let generalized_joint_loads = joint_load_generalized_forces(model);
+    let generalized_joint_loads = speeds_forces(model, joint_load_generalized_forces(model));
     let all_bodies: Vec<_> = model.order.clone();
     let mut rows = Vec::new();
     for (r, rate) in rates.iter().enumerate() {
@@ -151,6 +147,20 @@ pub fn equations(
         rows.extend(auxiliary_rows(model, actions, inertia, unknowns, j));
     }
     rows
+}
+
+/// Generalized forces on the coordinates as generalized forces of the speeds: with declared
+/// speeds `∂q'_s/∂u_r = W⁻¹[s][r]`, so `F_r = Σ_s Q_s W⁻¹[s][r]`; otherwise unchanged.
+fn speeds_forces(model: &Model, q: Vec<Expr>) -> Vec<Expr> {
+    let Some(speeds) = &model.speeds else {
+        return q;
+    };
+    (0..q.len())
+        .map(|r| {
+            let f = add(q.iter().zip(&speeds.inverse).map(|(qs, row)| qs * &row[r]));
+            speeds.to_speeds(&crate::symbolic::simplify(&f))
+        })
+        .collect()
 }
 
 /// Rows for an auxiliary speed along each reaction component of joint `j`: the subtree

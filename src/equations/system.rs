@@ -161,9 +161,8 @@ pub fn derive_at<'p>(
         Method::NewtonEuler => "writing the Newton–Euler rows (step 3)",
         Method::Kane => "writing Kane's generalized forces (step 3)",
     });
-    let accelerations: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 2))
-        .collect();
+    // The q'' — or the u' of declared speeds.
+    let accelerations: Vec<Symbol> = problem.speed_symbols(2);
     let all_sites: Vec<usize> = (0..model.sites.len())
         .filter(|&j| !model.sites[j].reactions.is_empty())
         .collect();
@@ -256,6 +255,14 @@ pub fn derive_at<'p>(
     let rows: Vec<Equation> = match method {
         Method::MotionLaw => rows,
         _ => rows.into_iter().chain(given).collect(),
+    };
+    // Loads that use rates (dampers) are written with the speeds too.
+    let rows = match &model.speeds {
+        Some(speeds) => rows
+            .into_iter()
+            .map(|row| row.map_expressions(|e| speeds.to_speeds(e)))
+            .collect(),
+        None => rows,
     };
     if rows.len() != unknowns.len() {
         let mut message = format!(

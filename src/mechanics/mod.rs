@@ -33,6 +33,7 @@ pub mod frames;
 pub mod joints;
 pub mod model;
 pub mod sites;
+pub mod speeds;
 pub mod vector;
 
 pub use model::{BodyState, JointModel, Model, PointMotion};

@@ -5,6 +5,7 @@ use super::frames::{FrameInfo, Frames, Matrix};
 use super::joints::{
     joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent,
 };
+use super::speeds::Speeds;
 use super::vector::{zero3, Components, Vector};
 use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
@@ -87,6 +88,9 @@ pub struct Model<'p> {
     pub sites: Vec<super::sites::Site>,
     /// Closures, contacts, constraint entries and prescribed coordinates as rows.
     pub constraints: super::constraints::Constraints,
+    /// The declared speeds' kinematic differential equations; `None` when the speeds are
+    /// the rates. With them the kinematics are written with `u` and `u'`.
+    pub speeds: Option<super::speeds::Speeds>,
 }
 
 /// The vector a [`VectorExpr`] describes.
@@ -117,9 +121,17 @@ fn constant_values(problem: &Problem) -> Values {
     values
 }
 
-fn dt_components(c: &Components, path: &str) -> Result<Components, MechanicsError> {
+fn dt_components(
+    c: &Components,
+    path: &str,
+    speeds: Option<&Speeds>,
+) -> Result<Components, MechanicsError> {
     let d = |e: &Expr| {
-        time_derivative(e).map_err(|e| MechanicsError {
+        match speeds {
+            Some(s) => s.dt(e),
+            None => time_derivative(e),
+        }
+        .map_err(|e| MechanicsError {
             path: path.to_string(),
             message: e.to_string(),
             hint: None,
@@ -136,6 +148,7 @@ impl<'p> Model<'p> {
     /// unit vectors of a frame it is not fixed in.
     pub fn build(problem: &'p Problem) -> Result<Model<'p>, MechanicsError> {
         let values = constant_values(problem);
+        let speeds = Speeds::of(problem)?;
         let count = problem.bodies.len() + 1;
         let names = std::iter::once("N".to_string())
             .chain(problem.bodies.iter().map(|b| b.name.clone()))
@@ -189,9 +202,9 @@ impl<'p> Model<'p> {
                 &frames,
                 &values,
                 &bodies[joint.parent.0],
-                body,
-                j,
+                (body, j),
                 motion,
+                speeds.as_ref(),
             )?;
             bodies[body.0] = state;
             joints[j] = Some(joint_model);
@@ -206,6 +219,7 @@ impl<'p> Model<'p> {
             order,
             sites: Vec::new(),
             constraints: Default::default(),
+            speeds,
         };
         let (sites, constraints) = super::constraints::build(&model)?;
         model.sites = sites;
@@ -276,6 +290,10 @@ impl<'p> Model<'p> {
             values.set(problem.coordinate_symbol(i, 1), *rate);
         }
         values.set(Symbol::Time, t);
+        for (r, speed) in problem.speeds.iter().enumerate() {
+            let u = crate::symbolic::eval::eval(&speed.equals, &values);
+            values.set(problem.speed_symbol(r, 1), u);
+        }
         values
     }
 
@@ -335,10 +353,14 @@ fn body_kinematics(
     frames: &Frames,
     values: &Values,
     parent_state: &BodyState,
-    body: BodyId,
-    j: usize,
+    (body, j): (BodyId, usize),
     motion: JointMotion,
+    speeds: Option<&Speeds>,
 ) -> Result<(BodyState, JointModel), MechanicsError> {
+    let to_speeds = |e: &Expr| match speeds {
+        Some(s) => s.to_speeds(e),
+        None => e.clone(),
+    };
     let joint = &problem.joints[j];
     let parent = joint.parent;
     let path = &joint.path;
@@ -354,7 +376,8 @@ fn body_kinematics(
         .omega
         .expressed_in(body, frames)
         .plus(&Vector::new(body, relative))
-        .map(crate::symbolic::simplify);
+        .map(crate::symbolic::simplify)
+        .map(to_speeds);
     let omega_components = omega.components_in(body, frames);
     let name = &problem.body(body).name;
     let planar = problem.dimension == crate::problem::Dimension::Two;
@@ -373,14 +396,14 @@ fn body_kinematics(
         }),
     );
     // Expressed in the body's own frame, d/dt in N equals d/dt of the components.
-    let alpha = Vector::new(body, dt_components(&omega_components, path)?);
+    let alpha = Vector::new(body, dt_components(&omega_components, path, speeds)?);
 
     // The joint point on the parent, then the sliding along the joint, then back to the origin.
     let at = own_components(&joint.at, parent);
     let child_at = own_components(&joint.child_at, body);
     let d = motion.translation.clone();
-    let d_rate = dt_components(&d, path)?;
-    let d_accel = dt_components(&d_rate, path)?;
+    let d_rate = dt_components(&d, path, speeds)?;
+    let d_accel = dt_components(&d_rate, path, speeds)?;
     let carried: Components = std::array::from_fn(|i| &at[i] + &d[i]);
     let carried_point = rigid_point(frames, parent_state, parent, &carried);
     let slide_rate = Vector::new(parent, d_rate);

@@ -46,6 +46,8 @@ pub struct Compiled {
     drives: Vec<(String, Option<usize>)>,
     // Reused between evaluations, so a solve allocates no program-sized buffer.
     scratch: std::cell::RefCell<Vec<f64>>,
+    /// The declared speeds' kinematic differential equations, when there are any.
+    speeds: Option<SpeedProgram>,
 }
 
 /// The q'' and the requested reactions at one state.
@@ -72,10 +74,90 @@ pub struct StateSolution {
     pub kinetic: f64,
     /// Potential energy (gravity, springs, joint springs).
     pub potential: f64,
+    /// Each declared speed: name, `u` and `u'` (empty when the speeds are the rates).
+    pub speeds: Vec<(String, f64, f64)>,
 }
 
-/// The input symbols of the compiled program: constants, coordinates, rates, time.
+/// The input symbols of the compiled program: constants, coordinates, rates, time, and
+/// the declared speeds when there are any (computed from the rates, see [`SpeedProgram`]).
 pub fn input_symbols(problem: &Problem) -> Vec<Symbol> {
+    let mut inputs = state_symbols(problem);
+    if problem.has_speeds() {
+        inputs.extend(problem.speed_symbols(1));
+    }
+    inputs
+}
+
+/// The kinematic differential equations compiled: from the state, the speeds `u = W q'`,
+/// the entries of `W` and `Ẇ q'`, so that `q'' = W⁻¹ (u' − Ẇ q')`.
+#[derive(Clone, Debug)]
+struct SpeedProgram {
+    n: usize,
+    names: Vec<String>,
+    program: Program,
+}
+
+impl SpeedProgram {
+    fn new(problem: &Problem) -> Option<SpeedProgram> {
+        if !problem.has_speeds() {
+            return None;
+        }
+        let n = problem.coordinates.len();
+        let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
+        let mut outputs: Vec<Expr> = problem.speeds.iter().map(|s| s.equals.clone()).collect();
+        let mut derivatives = Vec::with_capacity(n);
+        for speed in &problem.speeds {
+            let (row, _) = crate::symbolic::linear::linear_split(&speed.equals, &rates).ok()?;
+            outputs.extend(row);
+            let d = crate::symbolic::diff::time_derivative(&speed.equals).ok()?;
+            derivatives.push(crate::symbolic::subst::substitute(&d, &|s| {
+                matches!(s, Symbol::Coord(_, 2)).then(Expr::zero)
+            }));
+        }
+        outputs.extend(derivatives);
+        Some(SpeedProgram {
+            n,
+            names: problem.speeds.iter().map(|s| s.name.clone()).collect(),
+            program: Program::compile(&state_symbols(problem), &outputs),
+        })
+    }
+
+    /// `[u, W row-major, Ẇ q']` at the state of `inputs`.
+    fn run(&self, inputs: &[f64]) -> Vec<f64> {
+        let mut scratch = Vec::new();
+        let mut out = vec![0.0; self.n * (self.n + 2)];
+        self.program.run(inputs, &mut scratch, &mut out);
+        out
+    }
+
+    /// Each speed's name, `u` and `u' = W q'' + Ẇ q'`, at the state whose `run` gave `values`.
+    fn rates_of_speeds(&self, values: &[f64], accelerations: &[f64]) -> Vec<(String, f64, f64)> {
+        let n = self.n;
+        (0..n)
+            .map(|r| {
+                let w_row = &values[n + r * n..n + (r + 1) * n];
+                let du = w_row
+                    .iter()
+                    .zip(accelerations)
+                    .map(|(w, a)| w * a)
+                    .sum::<f64>()
+                    + values[n + n * n + r];
+                (self.names[r].clone(), values[r], du)
+            })
+            .collect()
+    }
+
+    /// The q'' from the speeds' rates `du` at the state whose `run` gave `values`.
+    fn accelerations(&self, values: &[f64], du: &[f64]) -> Option<Vec<f64>> {
+        let n = self.n;
+        let w = DMatrix::from_row_slice(n, n, &values[n..n + n * n]);
+        let rhs = DVector::from_iterator(n, (0..n).map(|r| du[r] - values[n + n * n + r]));
+        solve_linear(&w, &rhs).map(|x| x.iter().copied().collect())
+    }
+}
+
+/// Constants, coordinates, rates and time: the state a command gives.
+fn state_symbols(problem: &Problem) -> Vec<Symbol> {
     let mut inputs: Vec<Symbol> = problem
         .constants
         .iter()
@@ -155,6 +237,7 @@ impl Compiled {
             energy,
             outputs: outputs.len(),
             scratch: std::cell::RefCell::new(Vec::new()),
+            speeds: SpeedProgram::new(problem),
             conservative: !drives_work && problem.loads.iter().all(|l| is_conservative(&l.kind)),
             dissipative_only: !drives_work
                 && problem
@@ -181,7 +264,16 @@ impl Compiled {
         self.energy
             .run(&self.inputs(t, q, rates), &mut scratch, &mut energies);
         self.scratch.replace(scratch);
+        let speeds = match &self.speeds {
+            Some(program) => {
+                let inputs = self.inputs(t, q, rates);
+                let values = program.run(&inputs[..inputs.len() - program.n]);
+                program.rates_of_speeds(&values, &motion.accelerations)
+            }
+            None => Vec::new(),
+        };
         Ok(StateSolution {
+            speeds,
             accelerations: motion.accelerations,
             reactions: motion.reactions,
             drives: motion.drives,
@@ -195,6 +287,10 @@ impl Compiled {
         inputs.extend_from_slice(q);
         inputs.extend_from_slice(rates);
         inputs.push(t);
+        if let Some(speeds) = &self.speeds {
+            let values = speeds.run(&inputs);
+            inputs.extend_from_slice(&values[..speeds.n]);
+        }
         inputs
     }
 
@@ -223,7 +319,19 @@ impl Compiled {
             state: state(),
             detail: self.singularity_detail(&a),
         })?;
-        let accelerations: Vec<f64> = x.iter().take(self.coordinates.len()).copied().collect();
+        let mut accelerations: Vec<f64> = x.iter().take(self.coordinates.len()).copied().collect();
+        if let Some(speeds) = &self.speeds {
+            // The unknowns are the u': q'' = W⁻¹ (u' − Ẇ q').
+            let values = speeds.run(&inputs[..inputs.len() - speeds.n]);
+            accelerations = speeds
+                .accelerations(&values, &accelerations)
+                .ok_or_else(|| SolveError::SingularSystem {
+                    state: state(),
+                    detail:
+                        "the speeds do not determine the rates here: W of u = W(q) q' is singular"
+                            .into(),
+                })?;
+        }
         let mut reactions = Vec::new();
         for slot in &self.reactions {
             let (mut force, mut moment) = ([0.0; 3], [0.0; 3]);

@@ -121,9 +121,7 @@ pub fn choose(
 /// Euler angles in gimbal lock fail this, and then no choice of rows can be nonsingular.
 fn rates_are_independent(model: &Model, state: &Values) -> bool {
     let problem = model.problem;
-    let rates: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 1))
-        .collect();
+    let rates: Vec<Symbol> = problem.speed_symbols(1);
     let mut columns = vec![Vec::new(); rates.len()];
     for &body in &model.order {
         let b = &model.bodies[body.0];

@@ -29,9 +29,7 @@ impl Inertia {
     pub fn of(model: &Model) -> Inertia {
         let mut force = Vec::with_capacity(model.bodies.len());
         let mut torque = Vec::with_capacity(model.bodies.len());
-        let accelerations: Vec<Symbol> = (0..model.problem.coordinates.len())
-            .map(|i| model.problem.coordinate_symbol(i, 2))
-            .collect();
+        let accelerations: Vec<Symbol> = model.problem.speed_symbols(2);
         // Spatial bodies' accelerations in their own unit vectors with named parts; planar
         // ones stay as the student writes them.
         let named = |body: BodyId, vector: &Vector, kind: Kind| -> Components {
@@ -161,6 +159,22 @@ pub struct Equation {
     pub unknowns: Vec<Symbol>,
 }
 
+impl Equation {
+    /// The same equation with `f` applied to its groups and its whole expression.
+    pub fn map_expressions(self, f: impl Fn(&Expr) -> Expr) -> Equation {
+        Equation {
+            groups: Groups {
+                contact: f(&self.groups.contact),
+                distance: f(&self.groups.distance),
+                inertia_force: f(&self.groups.inertia_force),
+                inertia_torque: f(&self.groups.inertia_torque),
+            },
+            expression: f(&self.expression),
+            ..self
+        }
+    }
+}
+
 /// Whether an action acts on the free body from outside it.
 pub fn is_external(action: &Action, free_body: &[BodyId]) -> bool {
     free_body.contains(&action.body) && !action.partner.is_some_and(|p| free_body.contains(&p))
@@ -273,7 +287,7 @@ pub fn unknowns_in(e: &Expr, all: &[Symbol]) -> Vec<Symbol> {
     // hold rates, never an unknown (`linear_split` refuses one that would).
     fn walk(e: &Expr, present: &mut std::collections::HashSet<Symbol>) {
         match e.node() {
-            Node::Sym(s @ (Symbol::Coord(_, 2) | Symbol::Unknown(_))) => {
+            Node::Sym(s @ (Symbol::Coord(_, 2) | Symbol::Speed(_, 1) | Symbol::Unknown(_))) => {
                 present.insert(s.clone());
             }
             Node::Num(_) | Node::Sym(_) => {}

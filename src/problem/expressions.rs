@@ -311,6 +311,11 @@ impl ConstantValues {
         self.known.insert(name.to_string());
     }
 
+    /// The constants' values, for evaluating expressions that hold more than constants.
+    pub fn values(&self) -> Values {
+        self.values.clone()
+    }
+
     /// The value of `e`, when it holds only constants whose values are known
     /// (an expression naming a constant that had its own error is not judged again).
     pub fn eval(&self, e: &Expr) -> Option<f64> {

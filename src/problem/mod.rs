@@ -31,6 +31,7 @@ mod questions;
 mod read;
 pub mod schema;
 mod settings;
+mod speeds;
 mod validate;
 
 pub use model::*;

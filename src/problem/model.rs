@@ -261,6 +261,19 @@ impl Default for SimulateSettings {
     }
 }
 
+/// A declared generalized speed (`speeds`): `u = equals`, linear in the first rates with
+/// coefficients of constants and coordinates (a row of `W` in `u = W(q) q'`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Speed {
+    pub name: String,
+    /// The speed as a combination of the coordinates' first rates.
+    pub equals: Expr,
+    pub unit: Option<String>,
+    pub description: Option<String>,
+    /// The JSON path, e.g. `speeds.u1`.
+    pub path: String,
+}
+
 /// A validated problem.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Problem {
@@ -284,6 +297,9 @@ pub struct Problem {
     /// The questions of `find.questions`, answered in the handout's "Answers".
     pub questions: Vec<super::questions::Question>,
     pub simulate: SimulateSettings,
+    /// The declared generalized speeds, as many as the coordinates; empty when the speeds
+    /// are the coordinates' rates (the default).
+    pub speeds: Vec<Speed>,
     /// The fractions the expressions write as decimals, with the decimal (`2/5`, `0.4`):
     /// the worked solution prints them as written; the arithmetic stays exact.
     pub decimals: Vec<(crate::symbolic::Number, String)>,
@@ -368,6 +384,36 @@ impl Problem {
     /// The symbol of coordinate `index` differentiated `order` times.
     pub fn coordinate_symbol(&self, index: usize, order: u8) -> Symbol {
         Symbol::Coord(self.coordinates[index].name.as_str().into(), order)
+    }
+
+    /// The generalized speed `r` (`order` 1) or its rate (`order` 2): the declared speed
+    /// when the problem has `speeds`, the coordinate's rate otherwise.
+    pub fn speed_symbol(&self, r: usize, order: u8) -> Symbol {
+        match self.speeds.get(r) {
+            Some(speed) => Symbol::Speed(speed.name.as_str().into(), order.saturating_sub(1)),
+            None => self.coordinate_symbol(r, order),
+        }
+    }
+
+    /// Every generalized speed (`order` 1) or every speed's rate (`order` 2), in order.
+    pub fn speed_symbols(&self, order: u8) -> Vec<Symbol> {
+        (0..self.coordinates.len())
+            .map(|r| self.speed_symbol(r, order))
+            .collect()
+    }
+
+    /// The same problem with the coordinates' rates as its speeds: the same motion, derived
+    /// in `q''` (the state matrix of `linearize` is about `q` and `q'` either way).
+    pub fn without_speeds(&self) -> Problem {
+        Problem {
+            speeds: Vec::new(),
+            ..self.clone()
+        }
+    }
+
+    /// Whether the problem declares its own generalized speeds.
+    pub fn has_speeds(&self) -> bool {
+        !self.speeds.is_empty()
     }
 
     /// The expression of coordinate `index` differentiated `order` times.

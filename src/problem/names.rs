@@ -23,6 +23,8 @@ pub enum Kind {
     Closure,
     /// An entry of `constraints`.
     Constraint,
+    /// A declared generalized speed.
+    Speed,
 }
 
 impl Kind {
@@ -36,6 +38,7 @@ impl Kind {
             Kind::Point => "a point",
             Kind::Closure => "a closure",
             Kind::Constraint => "a constraint",
+            Kind::Speed => "a generalized speed",
         }
     }
 }
@@ -100,7 +103,11 @@ impl Names {
             diag.hint(
                 path,
                 format!("`{name}` is already {} (at `{other_path}`)", other.noun()),
-                "names are unique across constants, coordinates, bodies, joints, points, closures and constraints",
+                if kind == Kind::Speed || *other == Kind::Speed {
+                    "names are unique across constants, coordinates, bodies, joints, points, closures, constraints and speeds"
+                } else {
+                    "names are unique across constants, coordinates, bodies, joints, points, closures and constraints"
+                },
             );
             return false;
         }
@@ -111,7 +118,7 @@ impl Names {
             Kind::Coordinate => self.coordinates.push(name.to_string()),
             Kind::Point => self.points.push(name.to_string()),
             // Bodies and joints keep their slots by position, see `body_slot`, `joint_slot`.
-            Kind::Body | Kind::Joint | Kind::Closure | Kind::Constraint => {}
+            Kind::Body | Kind::Joint | Kind::Closure | Kind::Constraint | Kind::Speed => {}
         }
         true
     }

@@ -17,7 +17,7 @@ use super::validate;
 use crate::symbolic::Expr;
 use serde_json::Value;
 
-const TOP_KEYS: [&str; 15] = [
+const TOP_KEYS: [&str; 16] = [
     "format",
     "title",
     "statement",
@@ -33,6 +33,7 @@ const TOP_KEYS: [&str; 15] = [
     "simulate",
     "closures",
     "constraints",
+    "speeds",
 ];
 
 /// The state shared by the parts of reading.
@@ -126,6 +127,16 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         .get("simulate")
         .map(|v| r.simulate(v))
         .unwrap_or_default();
+    let speeds = top
+        .get("speeds")
+        .map(|v| {
+            r.speeds(
+                v,
+                &coordinates,
+                !closures.is_empty() || !constraints.is_empty(),
+            )
+        })
+        .unwrap_or_default();
 
     if !r.diag.is_empty() {
         return Err(r.diag.errors);
@@ -146,6 +157,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         find_reactions,
         questions,
         simulate,
+        speeds,
         decimals: decimals_written(root),
     })
 }

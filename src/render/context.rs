@@ -41,6 +41,9 @@ pub struct Solution {
     pub coordinates: Vec<Coordinate>,
     /// Step 1: the constants, in file order.
     pub constants: Vec<Constant>,
+    /// Step 1: the declared generalized speeds and their kinematic differential equations
+    /// (`None` when the speeds are the coordinates' rates).
+    pub speeds: Option<SpeedsView>,
     /// Step 1: the constraints beyond the joints (loop closures, rolling, entries,
     /// prescribed motion), each as an equation.
     pub constraints: Vec<ConstraintView>,
@@ -131,6 +134,30 @@ pub struct Coordinate {
     pub initial: String,
     /// Its initial rate, formatted.
     pub initial_rate: String,
+}
+
+/// The declared generalized speeds.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct SpeedsView {
+    /// One row per speed.
+    pub rows: Vec<SpeedRow>,
+    /// The kinematic differential equations `u = W(q) q'` as one matrix equation.
+    pub matrix_tex: String,
+    /// Their inverse, one rate per line: `\dot{q}_s = Σ_r W⁻¹_{sr} u_r`.
+    pub inverse_tex: Vec<String>,
+}
+
+/// A declared generalized speed.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct SpeedRow {
+    /// The speed as a symbol, e.g. `u_{1}`.
+    pub name_tex: String,
+    /// Its definition, e.g. `u_{2} = \dot{q}_{1} + \dot{q}_{2}`.
+    pub definition_tex: String,
+    /// Its unit in LaTeX (may be empty).
+    pub unit_tex: String,
+    /// What it is (user text; may be empty).
+    pub description: String,
 }
 
 /// A constant of the problem.

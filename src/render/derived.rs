@@ -60,6 +60,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.matrix = super::matrix::matrix(derivation, by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kinematic_definitions = kinematic_definitions(derivation);
+        solution.speeds = super::speeds::speeds(derivation);
     });
     solution.abbreviations = abbreviations
         .into_iter()

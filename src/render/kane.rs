@@ -13,9 +13,13 @@ use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{add, Expr, Symbol};
 
-/// The generalized speeds are the rates of the coordinates: `u_r = \dot{q}_r`.
+/// The generalized speeds are the rates of the coordinates: `u_r = \dot{q}_r`; declared
+/// speeds are written by name (step 1 defines them).
 pub fn speed_tex(derivation: &Derivation, r: usize) -> String {
     let problem = derivation.model.problem;
+    if problem.has_speeds() {
+        return latex(&Expr::sym(problem.speed_symbol(r, 1)));
+    }
     format!(
         "u_{{{}}} = {}",
         r + 1,
@@ -31,9 +35,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     }
     let model = &derivation.model;
     let problem = model.problem;
-    let rates: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 1))
-        .collect();
+    let rates: Vec<Symbol> = problem.speed_symbols(1);
     let per_body: Vec<_> = model
         .order
         .iter()

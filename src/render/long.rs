@@ -31,7 +31,8 @@ pub fn coefficient_form(derivation: &Derivation, i: usize) -> String {
 /// `e` as a sum over the products of rates its terms hold: (product of rates, its
 /// coefficient), in the order the products first appear, the part without rates last.
 pub fn by_rates(e: &Expr) -> Vec<(Expr, Expr)> {
-    let is_rate = |f: &Expr| f.any_symbol(&|s| matches!(s, Symbol::Coord(_, 1)));
+    let is_rate =
+        |f: &Expr| f.any_symbol(&|s| matches!(s, Symbol::Coord(_, 1) | Symbol::Speed(_, 0)));
     let mut groups: Vec<(Expr, Vec<Expr>)> = Vec::new();
     let mut index: std::collections::HashMap<Expr, usize> = std::collections::HashMap::new();
     for term in e.terms() {

@@ -28,6 +28,7 @@ pub mod safe_math;
 pub mod sample;
 pub mod simulation;
 pub mod tex_wrap;
+pub mod speeds;
 pub mod units;
 
 pub use context::Solution;

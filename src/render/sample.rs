@@ -39,6 +39,7 @@ pub fn sample() -> Solution {
             constant("L", "0.5", "\\mathrm{m}", "length of each rod"),
             constant("g", "9.81", "\\mathrm{m/s^{2}}", "gravitational acceleration"),
         ],
+        speeds: None,
         constraints: Vec::new(),
         constraint_notes: Vec::new(),
         free_bodies: free_bodies(),

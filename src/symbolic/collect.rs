@@ -27,12 +27,15 @@ fn kind(factor: &Expr) -> Option<Kind> {
         _ => factor,
     };
     match base.node() {
-        Node::Sym(Symbol::Coord(_, 2)) => Some(Kind::Acceleration),
+        Node::Sym(Symbol::Coord(_, 2) | Symbol::Speed(_, 1)) => Some(Kind::Acceleration),
+        Node::Sym(Symbol::Speed(_, _)) => Some(Kind::Rate),
         Node::Sym(Symbol::Unknown(_)) => Some(Kind::Reaction),
         Node::Sym(Symbol::Coord(_, 1)) => Some(Kind::Rate),
         Node::Sym(Symbol::Coord(_, _)) => Some(Kind::Position),
-        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 2))) => None,
-        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 1))) => Some(Kind::Rate),
+        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 2) | Symbol::Speed(_, 1))) => None,
+        _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 1) | Symbol::Speed(_, 0))) => {
+            Some(Kind::Rate)
+        }
         _ if base.any_symbol(&|x| matches!(x, Symbol::Coord(_, 0) | Symbol::Time)) => {
             Some(Kind::Position)
         }

@@ -37,6 +37,8 @@ pub fn time_derivative(e: &Expr) -> Result<Expr, DiffError> {
             Ok(Expr::sym(Symbol::Coord(name.clone(), order + 1)))
         }
         Symbol::Coord(name, _) => Err(format!("`{name}''` has no derivative here")),
+        Symbol::Speed(name, 0) => Ok(Expr::sym(Symbol::Speed(name.clone(), 1))),
+        Symbol::Speed(name, _) => Err(format!("`{name}'` has no derivative here")),
         Symbol::Time => Ok(Expr::one()),
         _ => Ok(Expr::zero()),
     })

@@ -98,6 +98,14 @@ fn latex_symbol(s: &Symbol) -> String {
             }
         }
         Symbol::Time => "t".into(),
+        Symbol::Speed(name, 0) => latex_name(name),
+        Symbol::Speed(name, _) => {
+            let base = latex_name(name);
+            match base.split_once('_') {
+                Some((stem, sub)) => format!("\\dot{{{stem}}}_{sub}"),
+                None => format!("\\dot{{{base}}}"),
+            }
+        }
         Symbol::Unknown(unknown) => unknown.latex(),
         Symbol::UnitVector(frame, axis) => latex_unit_vector(frame, *axis),
         Symbol::Defined(d) => match d.latex() {
@@ -114,7 +122,9 @@ fn plain_symbol(s: &Symbol) -> String {
     match s {
         Symbol::Const(name) => name.to_string(),
         Symbol::Unknown(unknown) => unknown.to_string(),
-        Symbol::Coord(name, order) => format!("{name}{}", "'".repeat(*order as usize)),
+        Symbol::Coord(name, order) | Symbol::Speed(name, order) => {
+            format!("{name}{}", "'".repeat(*order as usize))
+        }
         Symbol::Time => "t".into(),
         Symbol::UnitVector(frame, axis) => {
             format!("{frame}.{}", ["x", "y", "z"][(*axis as usize).min(2)])

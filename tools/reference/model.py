@@ -68,7 +68,9 @@ class Problem:
     def __init__(self, data, overrides=None):
         _keys(data, "$", {"title", "dimension", "bodies", "joints"},
               {"format", "statement", "constants", "coordinates", "gravity", "points",
-               "loads", "find", "simulate"})
+               "loads", "find", "simulate", "speeds"})
+        # Declared generalized speeds change how the equations are written, not the motion:
+        # the q'' compared here are the same, so `speeds` is read past.
         self.dimension = data["dimension"]
         if self.dimension not in (2, 3):
             raise ProblemError("$.dimension: expected 2 or 3")

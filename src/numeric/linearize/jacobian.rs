@@ -112,7 +112,9 @@ fn not_differentiable(e: DiffError) -> MechanicsError {
 /// The name of a state variable as the command line writes it.
 pub fn variable_name(symbol: &Symbol) -> String {
     match symbol {
-        Symbol::Coord(name, order) => format!("{name}{}", "'".repeat(*order as usize)),
+        Symbol::Coord(name, order) | Symbol::Speed(name, order) => {
+            format!("{name}{}", "'".repeat(*order as usize))
+        }
         Symbol::Const(name) => name.to_string(),
         Symbol::Unknown(unknown) => unknown.to_string(),
         Symbol::Time => "t".into(),

@@ -30,6 +30,9 @@ pub enum Symbol {
     Coord(Name, u8),
     /// Time `t`.
     Time,
+    /// A declared generalized speed (`order` 0) or its time derivative (`order` 1), when a
+    /// problem's `speeds` replace the coordinates' rates.
+    Speed(Name, u8),
     /// An unknown of the linear system other than a `q''`: a reaction component, a drive
     /// or a multiplier (see [`Unknown`]).
     Unknown(Unknown),
@@ -77,9 +80,10 @@ impl Symbol {
             Symbol::Const(_) => 0,
             Symbol::Coord(..) => 1,
             Symbol::Time => 2,
-            Symbol::Unknown(_) => 3,
-            Symbol::UnitVector(..) => 4,
-            Symbol::Defined(_) => 5,
+            Symbol::Speed(..) => 3,
+            Symbol::Unknown(_) => 4,
+            Symbol::UnitVector(..) => 5,
+            Symbol::Defined(_) => 6,
         }
     }
 }
@@ -91,6 +95,7 @@ impl Ord for Symbol {
             (Symbol::Const(a), Symbol::Const(b)) => natural_cmp(a, b).then_with(|| a.cmp(b)),
             (Symbol::Unknown(a), Symbol::Unknown(b)) => a.cmp(b),
             (Symbol::Coord(a, i), Symbol::Coord(b, j))
+            | (Symbol::Speed(a, i), Symbol::Speed(b, j))
             | (Symbol::UnitVector(a, i), Symbol::UnitVector(b, j)) => natural_cmp(a, b)
                 .then_with(|| a.cmp(b))
                 .then_with(|| i.cmp(j)),
@@ -161,11 +166,7 @@ impl Definition {
     }
 }
 
-fn collect_inside(
-    e: &Expr,
-    found: &mut Vec<Symbol>,
-    seen: &mut std::collections::HashSet<Symbol>,
-) {
+fn collect_inside(e: &Expr, found: &mut Vec<Symbol>, seen: &mut std::collections::HashSet<Symbol>) {
     match e.node() {
         Node::Num(_) => {}
         Node::Sym(s) => {

@@ -1,0 +1,65 @@
+//! Step 1 with declared speeds: each speed's definition, the kinematic differential
+//! equations `u = W(q) q'` as a matrix, and their inverse `q' = W⁻¹(q) u`.
+
+use super::context::{SpeedRow, SpeedsView};
+use crate::equations::Derivation;
+use crate::symbolic::print::latex;
+use crate::symbolic::{add, Expr};
+
+/// The view of the declared speeds, or `None` when the speeds are the rates.
+pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let speeds = model.speeds.as_ref()?;
+    let u = |r: usize| Expr::sym(problem.speed_symbol(r, 1));
+    let rows = problem
+        .speeds
+        .iter()
+        .enumerate()
+        .map(|(r, s)| SpeedRow {
+            name_tex: latex(&u(r)),
+            definition_tex: format!("{} = {}", latex(&u(r)), latex(&s.equals)),
+            unit_tex: super::units::unit_tex(s.unit.as_deref().unwrap_or_default()),
+            description: s.description.clone().unwrap_or_default(),
+        })
+        .collect();
+    let n = problem.coordinates.len();
+    let column = |entries: Vec<String>| {
+        format!(
+            "\\left[\\begin{{array}}{{c}} {} \\end{{array}}\\right]",
+            entries.join(" \\\\ ")
+        )
+    };
+    let matrix = |m: &[Vec<Expr>]| {
+        let body: Vec<String> = m
+            .iter()
+            .map(|row| row.iter().map(latex).collect::<Vec<_>>().join(" & "))
+            .collect();
+        format!(
+            "\\left[\\begin{{array}}{{{}}} {} \\end{{array}}\\right]",
+            "c".repeat(n),
+            body.join(" \\\\ ")
+        )
+    };
+    let us = column((0..n).map(|r| latex(&u(r))).collect());
+    let rates = column(
+        (0..n)
+            .map(|s| latex(&problem.coordinate_expr(s, 1)))
+            .collect(),
+    );
+    let inverse_tex = (0..n)
+        .map(|s| {
+            let value = add((0..n).map(|r| &speeds.inverse[s][r] * &u(r)));
+            format!(
+                "{} = {}",
+                latex(&problem.coordinate_expr(s, 1)),
+                latex(&value)
+            )
+        })
+        .collect();
+    Some(SpeedsView {
+        rows,
+        matrix_tex: format!("{us} = {} {rates}", matrix(&speeds.w)),
+        inverse_tex,
+    })
+}
