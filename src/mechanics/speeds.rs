@@ -75,23 +75,21 @@ impl Speeds {
         if !self.rates.iter().any(|r| e.contains(r)) {
             return e.clone();
         }
-        let Ok((c, rest)) = linear_split(e, &self.rates) else {
+        // Not linear in the rates: every rate replaced by its expression in the speeds.
+        let substituted = || {
             let replaced = self.rates_as_speeds();
-            return simplify(&crate::symbolic::subst::substitute(e, &|s| {
+            simplify(&crate::symbolic::subst::substitute(e, &|s| {
                 self.rates
                     .iter()
                     .position(|r| r == s)
                     .map(|i| replaced[i].clone())
-            }));
+            }))
+        };
+        let Ok((c, rest)) = linear_split(e, &self.rates) else {
+            return substituted();
         };
         if c.iter().any(|c| self.rates.iter().any(|r| c.contains(r))) {
-            let replaced = self.rates_as_speeds();
-            return simplify(&crate::symbolic::subst::substitute(e, &|s| {
-                self.rates
-                    .iter()
-                    .position(|r| r == s)
-                    .map(|i| replaced[i].clone())
-            }));
+            return substituted();
         }
         let c: Vec<Expr> = c.iter().map(simplify).collect();
         if let Some((r, factor)) = self.multiple_of_row(&c) {

@@ -94,10 +94,7 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
     let inside = match &row.sum {
         Sum::Force => format!("\\sum \\mathbf{{F}} - {sum}{inertia_force}"),
         Sum::Moment { point, .. } => {
-            let point = match point.strip_suffix('*') {
-                Some(stem) => format!("{}^{{*}}", latex_name(stem)),
-                None => latex_name(point),
-            };
+            let point = super::matrix::point_tex(point);
             let torque = format!(
                 "\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}} + \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
             );

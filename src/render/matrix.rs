@@ -25,6 +25,14 @@ const SHORT_ENTRY: usize = 400;
 /// after another.
 const MOST_LISTED: usize = 48;
 
+/// A moment point as LaTeX: `O`, or `A^{*}` for the mass centre `A*`.
+pub fn point_tex(point: &str) -> String {
+    match point.strip_suffix('*') {
+        Some(stem) => format!("{}^{{*}}", latex_name(stem)),
+        None => latex_name(point),
+    }
+}
+
 /// What names row `i` of the system: its number in step 5 and its equation, e.g.
 /// `(2)\; B\colon \sum \mathbf{M}_{P} \cdot \hat{\mathbf{a}}_{z}` or, for Kane's rows,
 /// `(1)\; F_{1} + F^{*}_{1}`.
@@ -45,10 +53,7 @@ pub fn row_label_tex(derivation: &Derivation, i: usize) -> String {
     let what = match &row.sum {
         Sum::Force => format!("{body}\\colon \\sum \\mathbf{{F}}{direction}"),
         Sum::Moment { point, .. } => {
-            let point = match point.strip_suffix('*') {
-                Some(stem) => format!("{}^{{*}}", latex_name(stem)),
-                None => latex_name(point),
-            };
+            let point = point_tex(point);
             format!("{body}\\colon \\sum \\mathbf{{M}}_{{{point}}}{direction}")
         }
         Sum::Generalized { .. } => {
