@@ -2,6 +2,7 @@
 //! pdflatex compiles, HTML with MathML and no script, and hostile text that stays text.
 
 mod layout;
+mod plots;
 mod statement;
 
 use mbd_tutor::render::sample::sample;

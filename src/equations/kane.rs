@@ -116,8 +116,7 @@ pub fn equations(
             if partial.center_own.is_empty() {
                 let center = &model.bodies[body.0].center_offset;
                 inertia_force.add(&velocity_of(body, center), &inertia.force[body.0]);
-                inertia_torque
-                    .push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));
+                inertia_torque.push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));
             } else {
                 // Both in the body's own unit vectors: three products each.
                 inertia_force.add(&partial.center_own[body.0][r], &inertia.force[body.0]);

@@ -88,7 +88,9 @@ fn name_part(value: &Expr, quantity: &Quantity, axis: usize, rate: Option<&Symbo
             (
                 format!("{body}.w.{speed}.{axis_name}"),
                 format!("\\omega^{{{body_tex}}}_{{{},{axis_name}}}", speed_tex(s)),
-                format!("partial angular velocity of {body} for {speed}', along {body}.{axis_name}"),
+                format!(
+                    "partial angular velocity of {body} for {speed}', along {body}.{axis_name}"
+                ),
             )
         }
         (Kind::AngularAcceleration, None) => (

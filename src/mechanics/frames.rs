@@ -230,10 +230,7 @@ impl Frames {
                     ),
                     &format!(
                         "the direction cosine {}.{} · {}.{}",
-                        to_name,
-                        AXES[i],
-                        from_name,
-                        AXES[j]
+                        to_name, AXES[i], from_name, AXES[j]
                     ),
                     value.clone(),
                 )

@@ -326,11 +326,26 @@ fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
 /// What a constraint row of the plan says, e.g. "rolling constraint at floor (acceleration
 /// level)": the rows are the constraints differentiated until the q'' appear.
 fn constraint_text(model: &Model, name: &str) -> String {
+    format!("{} (acceleration level)", constraint_what(model, name))
+}
+
+/// A constraint row's label in the matrix form: what it constrains and, for a site's row,
+/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
+pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
+    let what = super::escape::latex(&constraint_what(model, name), super::escape::Lines::One);
+    match constraint_direction_tex(model, name) {
+        Some(direction) => format!("\\text{{{what}}} \\cdot {direction}"),
+        None => format!("\\text{{{what}}}"),
+    }
+}
+
+/// What a constraint row constrains, e.g. "rolling constraint at floor".
+fn constraint_what(model: &Model, name: &str) -> String {
     use crate::mechanics::constraints::RowOrigin;
     use crate::mechanics::sites::SiteKind;
     let problem = model.problem;
     let row = model.constraints.rows.iter().find(|r| r.name == name);
-    let what = match row.map(|r| &r.origin) {
+    match row.map(|r| &r.origin) {
         Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
             Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
                 format!("rolling constraint at {}", s.name)
@@ -348,8 +363,7 @@ fn constraint_text(model: &Model, name: &str) -> String {
             None => format!("prescribed motion {name}"),
         },
         None => format!("constraint {name}"),
-    };
-    format!("{what} (acceleration level)")
+    }
 }
 
 fn unknowns_tex(unknowns: &[Symbol]) -> String {
@@ -496,7 +510,11 @@ fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
                 ),
                 acceleration_tex: format!(
                     "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
-                    shorter(&state.center.acceleration, &inertia.acceleration[body.0], body)
+                    shorter(
+                        &state.center.acceleration,
+                        &inertia.acceleration[body.0],
+                        body
+                    )
                 ),
             }
         })

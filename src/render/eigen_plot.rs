@@ -2,9 +2,9 @@
 //! stability boundary Re λ = 0), the imaginary parts below. Deterministic SVG, in the
 //! style of [`super::plot`].
 
-use super::plot::PlotError;
-use crate::numeric::format::fixed;
+use super::plot::{axes, padded_range, unicode_of, PlotError};
 use crate::numeric::linearize::Linearization;
+use crate::symbolic::print::latex_name;
 use plotters::prelude::*;
 
 /// Size of the picture, in pixels.
@@ -24,6 +24,7 @@ pub fn sweep_plot(
     values: &[f64],
     results: &[Linearization],
 ) -> Result<String, PlotError> {
+    let name = &unicode_of(&latex_name(name));
     let part = |f: fn(&nalgebra::Complex<f64>) -> f64| -> Vec<(f64, f64)> {
         values
             .iter()
@@ -54,29 +55,13 @@ pub fn sweep_plot(
             )
             .map_err(|e| drawing(e.to_string()))?;
         let panels = root.split_evenly((2, 1));
-        let x_range = range(values.iter().copied(), 0.0);
+        let x_range = padded_range(values.iter().copied(), 0.0);
         for (panel, (points, label)) in panels
             .iter()
             .zip([(&re, "Re λ (1/s)"), (&im, "Im λ (1/s)")])
         {
-            let y_range = range(points.iter().map(|p| p.1).chain([0.0]), 0.05);
-            let mut chart = ChartBuilder::on(panel)
-                .margin(12)
-                .x_label_area_size(45)
-                .y_label_area_size(70)
-                .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
-                .map_err(|e| drawing(e.to_string()))?;
-            chart
-                .configure_mesh()
-                .x_desc(name)
-                .y_desc(label)
-                .x_label_formatter(&|x| tick(*x, x_range))
-                .y_label_formatter(&|y| tick(*y, y_range))
-                .light_line_style(TRANSPARENT)
-                .label_style(("sans-serif", 15))
-                .axis_desc_style(("sans-serif", 16))
-                .draw()
-                .map_err(|e| drawing(e.to_string()))?;
+            let y_range = padded_range(points.iter().map(|p| p.1).chain([0.0]), 0.05);
+            let mut chart = axes(panel, name, label, x_range, y_range).map_err(drawing)?;
             chart
                 .draw_series(LineSeries::new(
                     [(x_range.0, 0.0), (x_range.1, 0.0)],
@@ -90,32 +75,4 @@ pub fn sweep_plot(
         root.present().map_err(|e| drawing(e.to_string()))?;
     }
     Ok(svg)
-}
-
-/// The range covering `values`, padded; a flat range is widened so the axis has a length.
-fn range(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
-    let (low, high) = values
-        .filter(|x| x.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
-            (l.min(x), h.max(x))
-        });
-    if low > high {
-        return (-1.0, 1.0);
-    }
-    let span = high - low;
-    if span > 1e-12 * low.abs().max(high.abs()) {
-        (low - pad * span, high + pad * span)
-    } else {
-        let half = (0.1 * low.abs()).max(1.0);
-        (low - half, high + half)
-    }
-}
-
-/// A tick label: [`fixed`], with round-off next to zero shown as `0`.
-fn tick(value: f64, range: (f64, f64)) -> String {
-    if value.abs() < 1e-9 * (range.1 - range.0) {
-        "0".into()
-    } else {
-        fixed(value)
-    }
 }

@@ -91,6 +91,11 @@ const GREEK: [(char, &str); 40] = [
     ('ϱ', "varrho"),
 ];
 
+/// The Greek letter LaTeX names `\name` (`theta` → θ), for text that cannot hold math.
+pub fn greek_letter(name: &str) -> Option<char> {
+    GREEK.iter().find(|(_, n)| *n == name).map(|(c, _)| *c)
+}
+
 /// One character of user text as LaTeX text-mode source.
 fn latex_char(c: char, out: &mut String) {
     // The default OT1 fonts have no `<`, `>`, `|`, `\` glyphs in text (`\textless` and

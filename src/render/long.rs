@@ -98,9 +98,8 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
             let torque = format!(
                 "\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}} + \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
             );
-            let inertia = format!(
-                "\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force} + {torque}"
-            );
+            let inertia =
+                format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force} + {torque}");
             format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {inertia} \\right)")
         }
         _ => return String::new(),

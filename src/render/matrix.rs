@@ -63,7 +63,7 @@ pub fn row_label_tex(derivation: &Derivation, i: usize) -> String {
                 .count();
             format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
         }
-        Sum::Constraint { .. } => "\\text{constraint}".to_string(),
+        Sum::Constraint { name } => super::derived::constraint_label_tex(&derivation.model, name),
     };
     format!("({})\\; {what}", i + 1)
 }
@@ -148,7 +148,11 @@ pub fn matrix(
                 format!("A_{{{},{}}} = {value}", i + 1, j + 1),
             );
         }
-        let longest_b = if by_value { SHORT_ENTRY } else { 2 * LONG_EQUATION };
+        let longest_b = if by_value {
+            SHORT_ENTRY
+        } else {
+            2 * LONG_EQUATION
+        };
         let groups = if b_tex[i].len() > longest_b {
             by_rates(&b[i])
         } else {

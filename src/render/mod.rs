@@ -27,8 +27,8 @@ pub mod rejected;
 pub mod safe_math;
 pub mod sample;
 pub mod simulation;
-pub mod tex_wrap;
 pub mod speeds;
+pub mod tex_wrap;
 pub mod units;
 
 pub use context::Solution;

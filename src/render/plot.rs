@@ -3,6 +3,7 @@
 //! Both are deterministic: the same data gives the same bytes.
 
 use crate::numeric::format::fixed;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::fmt;
 
@@ -52,7 +53,51 @@ impl fmt::Display for PlotError {
 
 impl std::error::Error for PlotError {}
 
-/// An SVG line plot of `series`, each a name and its `(x, y)` points, with a legend.
+/// A label in both outputs: Unicode text for the SVG picture (θ₁, E₀) and LaTeX text-mode
+/// source for pgfplots (`$\theta_{1}$`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// What the SVG picture prints.
+    pub text: String,
+    /// LaTeX text-mode source: words as they are, symbols between `$`.
+    pub tex: String,
+}
+
+impl Label {
+    /// A symbol given as LaTeX math (without `$`), followed after a space by plain `words`
+    /// such as a unit in parentheses, if any: `Label::math("E - E_{0}", "(J)")`.
+    pub fn math(math: &str, words: &str) -> Label {
+        if words.is_empty() {
+            return Label {
+                text: unicode_of(math),
+                tex: format!("${math}$"),
+            };
+        }
+        Label {
+            text: format!("{} {words}", unicode_of(math)),
+            tex: format!("${math}$ {}", escape_latex(words)),
+        }
+    }
+
+    /// Plain words, the same in both outputs.
+    pub fn words(words: &str) -> Label {
+        Label {
+            text: words.into(),
+            tex: escape_latex(words),
+        }
+    }
+}
+
+/// One line of a plot: its legend and its `(x, y)` points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// The legend entry.
+    pub name: Label,
+    /// The points; non-finite ones are left out.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// An SVG line plot of `series` with a legend.
 ///
 /// Non-finite points are left out. Text is written as SVG `<text>`, so no font files are
 /// needed to draw or to view it.
@@ -62,13 +107,21 @@ impl std::error::Error for PlotError {}
 /// plotting library fails.
 pub fn line_plot(
     title: &str,
-    x_label: &str,
-    y_label: &str,
-    series: &[(String, Vec<(f64, f64)>)],
+    x_label: &Label,
+    y_label: &Label,
+    series: &[Series],
 ) -> Result<String, PlotError> {
-    let (x_range, y_range) = ranges(series).ok_or_else(|| PlotError::NoData {
-        title: title.into(),
-    })?;
+    let finite = series
+        .iter()
+        .flat_map(|s| &s.points)
+        .filter(|(x, y)| x.is_finite() && y.is_finite());
+    if finite.clone().next().is_none() {
+        return Err(PlotError::NoData {
+            title: title.into(),
+        });
+    }
+    let x_range = padded_range(finite.clone().map(|p| p.0), 0.0);
+    let y_range = padded_range(finite.map(|p| p.1), 0.05);
     let drawing = |message: String| PlotError::Drawing {
         title: title.into(),
         message,
@@ -77,34 +130,22 @@ pub fn line_plot(
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(|e| drawing(e.to_string()))?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 24))
-            .margin(12)
-            .x_label_area_size(50)
-            .y_label_area_size(70)
-            .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
+        let root = root
+            .titled(title, ("sans-serif", 24))
             .map_err(|e| drawing(e.to_string()))?;
-        chart
-            .configure_mesh()
-            .x_desc(x_label)
-            .y_desc(y_label)
-            .x_label_formatter(&|x| tick(*x, x_range))
-            .y_label_formatter(&|y| tick(*y, y_range))
-            .light_line_style(TRANSPARENT)
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 16))
-            .draw()
-            .map_err(|e| drawing(e.to_string()))?;
-        for (index, (name, points)) in series.iter().enumerate() {
+        let mut chart =
+            axes(&root, &x_label.text, &y_label.text, x_range, y_range).map_err(drawing)?;
+        for (index, line) in series.iter().enumerate() {
             let colour = COLOURS[index % COLOURS.len()];
-            let finite = points
+            let finite = line
+                .points
                 .iter()
                 .copied()
                 .filter(|(x, y)| x.is_finite() && y.is_finite());
             chart
                 .draw_series(LineSeries::new(finite, colour.stroke_width(2)))
                 .map_err(|e| drawing(e.to_string()))?
-                .label(name.as_str())
+                .label(line.name.text.as_str())
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
                 });
@@ -122,6 +163,39 @@ pub fn line_plot(
     Ok(svg)
 }
 
+/// The chart [`axes`] draws on: f64 by f64.
+pub(super) type Chart<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// A chart on `area` with its axes drawn as every SVG plot draws them: no minor grid, tick
+/// labels at [`fixed`] precision, the axis descriptions `x_label` and `y_label`.
+pub(super) fn axes<'a, 'b>(
+    area: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
+    x_label: &str,
+    y_label: &str,
+    x_range: (f64, f64),
+    y_range: (f64, f64),
+) -> Result<Chart<'a, 'b>, String> {
+    let mut chart = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(50)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(y_label)
+        .x_label_formatter(&|x| tick(*x, x_range))
+        .y_label_formatter(&|y| tick(*y, y_range))
+        .light_line_style(TRANSPARENT)
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 16))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    Ok(chart)
+}
+
 /// A tick label: [`fixed`], with round-off next to zero (`-2.2e-16`) shown as `0`.
 fn tick(value: f64, range: (f64, f64)) -> String {
     let snapped = if value.abs() < 1e-9 * (range.1 - range.0) {
@@ -132,56 +206,98 @@ fn tick(value: f64, range: (f64, f64)) -> String {
     fixed(snapped)
 }
 
-/// The x and y ranges covering every finite point, y padded by 5 % so lines clear the
-/// frame; a flat range is widened so the axis has a length.
-fn ranges(series: &[(String, Vec<(f64, f64)>)]) -> Option<((f64, f64), (f64, f64))> {
-    let points = series
-        .iter()
-        .flat_map(|(_, p)| p)
-        .filter(|(x, y)| x.is_finite() && y.is_finite());
-    let (mut x0, mut x1, mut y0, mut y1) = (
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-    );
-    for &(x, y) in points {
-        (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+/// The range covering the finite `values`, padded by `pad` of its span on each side so
+/// lines clear the frame; a flat range is widened so the axis has a length, and no value
+/// at all gives (-1, 1).
+pub(super) fn padded_range(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
+    let (low, high) = values
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+            (l.min(x), h.max(x))
+        });
+    if low > high {
+        return (-1.0, 1.0);
     }
-    if x0 > x1 {
-        return None;
+    let span = high - low;
+    if span > 1e-12 * low.abs().max(high.abs()) {
+        (low - pad * span, high + pad * span)
+    } else {
+        let half = (0.1 * low.abs()).max(1.0);
+        (low - half, high + half)
     }
-    let widen = |low: f64, high: f64, pad: f64| {
-        let span = high - low;
-        if span > 1e-12 * low.abs().max(high.abs()) {
-            (low - pad * span, high + pad * span)
-        } else {
-            let half = (0.1 * low.abs()).max(1.0);
-            (low - half, high + half)
+}
+
+/// Simple LaTeX math as Unicode text: Greek letters as letters, `\mathrm{..}` upright, a
+/// subscript of digits as subscript digits (`\theta_{1}` → θ₁, `E_{0}` → E₀); any other
+/// subscript keeps its `_`.
+pub fn unicode_of(math: &str) -> String {
+    let mut out = String::new();
+    let mut chars = math.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' => {
+                let mut command = String::new();
+                while let Some(&n) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
+                    command.push(n);
+                    chars.next();
+                }
+                match crate::render::escape::greek_letter(&command) {
+                    Some(letter) => out.push(letter),
+                    None if command == "mathrm" || command == "mathbf" => {}
+                    None => out.push_str(&command),
+                }
+            }
+            '_' => {
+                let braced = chars.peek() == Some(&'{');
+                let mut sub = String::new();
+                if braced {
+                    chars.next();
+                    for n in chars.by_ref() {
+                        if n == '}' {
+                            break;
+                        }
+                        sub.push(n);
+                    }
+                } else if let Some(n) = chars.next() {
+                    sub.push(n);
+                }
+                if sub.chars().all(|d| d.is_ascii_digit() || d == ',') {
+                    out.extend(sub.chars().map(subscript));
+                } else {
+                    out.push('_');
+                    out.push_str(&unicode_of(&sub));
+                }
+            }
+            '{' | '}' => {}
+            '-' => out.push('−'),
+            _ => out.push(c),
         }
-    };
-    Some((widen(x0, x1, 0.0), widen(y0, y1, 0.05)))
+    }
+    out
+}
+
+/// A digit as its subscript character; anything else as it is.
+fn subscript(d: char) -> char {
+    d.to_digit(10)
+        .and_then(|v| char::from_u32(0x2080 + v))
+        .unwrap_or(d)
 }
 
 /// A LaTeX `tikzpicture` with a pgfplots `axis` holding one `\addplot` per series.
 ///
 /// Each series is thinned to at most [`PGFPLOTS_MAX_POINTS`] points (keeping the first and
-/// the last) and printed with [`fixed`] precision. Title, labels and series names are
-/// escaped as LaTeX text. Non-finite points are left out. The document needs
-/// `\usepackage{pgfplots}`.
-pub fn pgfplots(
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    series: &[(String, Vec<(f64, f64)>)],
-) -> String {
+/// the last) and printed with [`fixed`] precision. The title is escaped as LaTeX text; the
+/// labels and legends are given as LaTeX already. Non-finite points are left out. The
+/// document needs `\usepackage{pgfplots}`.
+pub fn pgfplots(title: &str, x_label: &Label, y_label: &Label, series: &[Series]) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
     text.push_str(&format!("  title={{{}}},\n", escape_latex(title)));
-    text.push_str(&format!("  xlabel={{{}}},\n", escape_latex(x_label)));
-    text.push_str(&format!("  ylabel={{{}}},\n", escape_latex(y_label)));
+    text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
+    text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
     text.push_str("  width=12cm, height=7cm, grid=major,\n  legend pos=outer north east,\n]\n");
-    for (name, points) in series {
-        let finite: Vec<(f64, f64)> = points
+    for line in series {
+        let finite: Vec<(f64, f64)> = line
+            .points
             .iter()
             .copied()
             .filter(|(x, y)| x.is_finite() && y.is_finite())
@@ -191,7 +307,7 @@ pub fn pgfplots(
             text.push_str(&format!("  ({},{})\n", fixed(x), fixed(y)));
         }
         text.push_str("};\n");
-        text.push_str(&format!("\\addlegendentry{{{}}}\n", escape_latex(name)));
+        text.push_str(&format!("\\addlegendentry{{{}}}\n", line.name.tex));
     }
     text.push_str("\\end{axis}\n\\end{tikzpicture}\n");
     text
@@ -208,41 +324,42 @@ fn thin(points: &[(f64, f64)], most: usize) -> Vec<(f64, f64)> {
     (0..most).map(|i| points[i * last / (most - 1)]).collect()
 }
 
-/// `text` with LaTeX's special characters escaped, for use in text mode.
+/// User text as LaTeX text-mode source.
 fn escape_latex(text: &str) -> String {
-    let mut escaped = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '\\' => escaped.push_str("\\textbackslash{}"),
-            '~' => escaped.push_str("\\textasciitilde{}"),
-            '^' => escaped.push_str("\\textasciicircum{}"),
-            '#' | '$' | '%' | '&' | '_' | '{' | '}' => {
-                escaped.push('\\');
-                escaped.push(c);
-            }
-            _ => escaped.push(c),
-        }
-    }
-    escaped
+    crate::render::escape::latex(text, crate::render::escape::Lines::One)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn sine() -> Vec<(String, Vec<(f64, f64)>)> {
+    fn sine() -> Vec<Series> {
         let points: Vec<(f64, f64)> = (0..=500)
             .map(|i| i as f64 * 0.01)
             .map(|t| (t, (3.0 * t).sin()))
             .collect();
         let cosine: Vec<(f64, f64)> = points.iter().map(|(t, _)| (*t, (3.0 * t).cos())).collect();
-        vec![("q1".to_string(), points), ("q_2".to_string(), cosine)]
+        vec![
+            Series {
+                name: Label::math("q_{1}", ""),
+                points,
+            },
+            Series {
+                name: Label::math("\\theta_{2}", ""),
+                points: cosine,
+            },
+        ]
+    }
+
+    fn time() -> Label {
+        Label::math("t", "(s)")
     }
 
     #[test]
     fn svg_is_deterministic_and_labelled() {
-        let first = line_plot("Coordinates", "t (s)", "value", &sine()).unwrap();
-        let second = line_plot("Coordinates", "t (s)", "value", &sine()).unwrap();
+        let value = Label::words("value");
+        let first = line_plot("Coordinates", &time(), &value, &sine()).unwrap();
+        let second = line_plot("Coordinates", &time(), &value, &sine()).unwrap();
         assert_eq!(first, second);
         assert!(first.starts_with("<svg"), "{}", &first[..60]);
         assert!(first.trim_end().ends_with("</svg>"));
@@ -250,8 +367,8 @@ mod tests {
         for text in [
             "\nCoordinates\n",
             "\nt (s)\n",
-            "\nq1\n",
-            "\nq_2\n",
+            "\nq₁\n",
+            "\nθ₂\n",
             "\n0\n",
             "<polyline",
         ] {
@@ -261,28 +378,47 @@ mod tests {
 
     #[test]
     fn svg_of_nothing_is_an_error() {
-        let empty = vec![("q1".to_string(), vec![(f64::NAN, 1.0)])];
+        let q = Label::math("q", "");
+        let empty = vec![Series {
+            name: q.clone(),
+            points: vec![(f64::NAN, 1.0)],
+        }];
         assert!(matches!(
-            line_plot("Empty", "t", "q", &empty),
+            line_plot("Empty", &time(), &q, &empty),
             Err(PlotError::NoData { .. })
         ));
         // A flat line still gets an axis.
-        let flat = vec![("q1".to_string(), vec![(0.0, 2.0), (1.0, 2.0)])];
-        assert!(line_plot("Flat", "t", "q", &flat).is_ok());
+        let flat = vec![Series {
+            name: q.clone(),
+            points: vec![(0.0, 2.0), (1.0, 2.0)],
+        }];
+        assert!(line_plot("Flat", &time(), &q, &flat).is_ok());
     }
 
     #[test]
-    fn pgfplots_is_thinned_and_escaped() {
-        let text = pgfplots("Energy & more", "t (s)", "E (J)", &sine());
+    fn pgfplots_is_thinned_and_its_labels_are_math() {
+        let energy = Label::math("E", "(J)");
+        let text = pgfplots("Energy & more", &time(), &energy, &sine());
         assert!(text.starts_with("\\begin{tikzpicture}\n\\begin{axis}["));
         assert!(text.contains("title={Energy \\& more}"));
-        assert!(text.contains("\\addlegendentry{q\\_2}"));
+        assert!(text.contains("xlabel={$t$ (s)}"));
+        assert!(text.contains("ylabel={$E$ (J)}"));
+        assert!(text.contains("\\addlegendentry{$\\theta_{2}$}"));
         assert_eq!(text.matches("\\addplot").count(), 2);
         let points = text.lines().filter(|l| l.starts_with("  (")).count();
         assert_eq!(points, 2 * PGFPLOTS_MAX_POINTS);
         // First and last points kept, at fixed precision: sin(15) = 0.650288...
         assert!(text.contains("  (0,0)\n"));
         assert!(text.contains("  (5,0.650288)\n"));
+    }
+
+    #[test]
+    fn math_labels_print_as_unicode_in_pictures() {
+        assert_eq!(unicode_of("\\theta_{12}"), "θ₁₂");
+        assert_eq!(unicode_of("(E - E_{0})/|E_{0}|"), "(E − E₀)/|E₀|");
+        assert_eq!(unicode_of("x_{\\mathrm{cart}}"), "x_cart");
+        assert_eq!(unicode_of("\\phi_{2}"), "φ₂");
+        assert_eq!(Label::math("E - E_{0}", "(J)").text, "E − E₀ (J)");
     }
 
     #[test]

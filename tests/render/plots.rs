@@ -1,0 +1,118 @@
+//! The plots as `explain -o` writes them: one quantity per axis, legends and axis labels
+//! as symbols (Unicode in the SVG files, math in pgfplots), and the energy's drift on a
+//! plot of its own, checked against the conservation of energy.
+
+use super::{binary, scratch};
+use std::path::Path;
+
+fn explain(problem: &str, output: &Path, format: &str) {
+    let run = binary()
+        .args(["explain", "--format", format, "-o"])
+        .arg(output)
+        .arg(
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("problems")
+                .join(problem),
+        )
+        .output()
+        .expect("the binary runs");
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
+
+/// Whether an SVG picture prints `text` as one of its `<text>` elements.
+fn prints(svg: &str, text: &str) -> bool {
+    svg.contains(&format!(">\n{text}\n</text>"))
+}
+
+fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// The `(x, y)` points of each `\addplot` of the pgfplots axis whose `ylabel` is `label`.
+fn pgfplots_series(tex: &str, label: &str) -> Vec<Vec<(f64, f64)>> {
+    let start = tex
+        .find(&format!("ylabel={{{label}}}"))
+        .unwrap_or_else(|| panic!("no axis labelled {label}"));
+    let axis = &tex[start..start + tex[start..].find("\\end{axis}").expect("closed")];
+    axis.split("\\addplot")
+        .skip(1)
+        .map(|plot| {
+            plot.lines()
+                .filter_map(|l| l.trim().strip_prefix('(')?.strip_suffix(')'))
+                .map(|p| {
+                    let (x, y) = p.split_once(',').expect("x,y");
+                    (x.parse().expect("x"), y.parse().expect("y"))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_conservative_double_pendulum_plots_its_energy_and_a_drift_within_the_check() {
+    let dir = scratch("plots-pendulum");
+    explain("double-pendulum-rods.json", &dir.join("dp.md"), "markdown");
+    let angles = read(&dir.join("dp-coordinates.svg"));
+    for legend in ["q₁", "q₂", "t (s)", "angle (rad)"] {
+        assert!(prints(&angles, legend), "the angles' plot lacks {legend}");
+    }
+    let energy = read(&dir.join("dp-energy.svg"));
+    for legend in ["T", "V", "E = T + V"] {
+        assert!(prints(&energy, legend), "the energy plot lacks {legend}");
+    }
+    let drift = read(&dir.join("dp-energy-drift.svg"));
+    assert!(
+        prints(&drift, "(E − E₀)/|E₀|"),
+        "the drift's axis is not E − E₀"
+    );
+
+    explain("double-pendulum-rods.json", &dir.join("dp.tex"), "latex");
+    let tex = read(&dir.join("dp.tex"));
+    assert!(tex.contains("xlabel={$t$ (s)}"));
+    assert!(tex.contains("\\addlegendentry{$q_{1}$}"));
+    // No load does work: T + V stays put, so the total's line is flat and the drift is
+    // the integrator's error alone, zero at the start.
+    let energies = pgfplots_series(&tex, "energy (J)");
+    assert_eq!(energies.len(), 3, "T, V and E");
+    let e0 = energies[2][0].1;
+    for (&(t, kinetic), (&(_, potential), &(_, total))) in
+        energies[0].iter().zip(energies[1].iter().zip(&energies[2]))
+    {
+        // The printed values have six significant digits.
+        assert!(
+            (kinetic + potential - total).abs() < 1e-5 * (1.0 + total.abs()),
+            "T + V ≠ E at t = {t}"
+        );
+        assert!(
+            (total - e0).abs() < 1e-5 * (1.0 + e0.abs()),
+            "E moved at t = {t}"
+        );
+    }
+    let drift = pgfplots_series(&tex, "$(E - E_{0})/|E_{0}|$");
+    assert_eq!(drift[0][0], (0.0, 0.0));
+    assert!(
+        drift[0].iter().all(|(_, d)| d.abs() < 1e-6),
+        "the energy drifted"
+    );
+}
+
+#[test]
+fn angles_and_distances_are_never_on_one_axis() {
+    let dir = scratch("plots-cart-pole");
+    explain("cart-pole.json", &dir.join("cp.md"), "markdown");
+    let angles = read(&dir.join("cp-coordinates.svg"));
+    let positions = read(&dir.join("cp-positions.svg"));
+    assert!(
+        prints(&angles, "θ") && !prints(&angles, "x"),
+        "the angles' plot"
+    );
+    assert!(
+        prints(&positions, "x") && !prints(&positions, "θ"),
+        "the positions' plot"
+    );
+    assert!(prints(&positions, "position (m)"));
+}
