@@ -52,8 +52,8 @@ pub fn potential(model: &Model) -> Expr {
                 stiffness,
                 free_length,
             } => {
-                let p1 = model.point(between[0]).position;
-                let p2 = model.point(between[1]).position;
+                let p1 = model.position(between[0]);
+                let p2 = model.position(between[1]);
                 let d = p2.minus(&p1);
                 let length2 = d.dot(&d, &model.frames);
                 let stretch2 = if free_length.is_zero() {

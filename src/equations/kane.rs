@@ -191,7 +191,7 @@ fn auxiliary_rows(
         for action in actions.iter().filter(|a| is_external(a, &subtree)) {
             let term = match &action.kind {
                 ActionKind::Force { offset, force } => force.dot(
-                    &velocity_at(&model.point_on(action.body, offset).position),
+                    &velocity_at(&model.position_on(action.body, offset)),
                     frames,
                 ),
                 ActionKind::Couple { torque } => torque.dot(&omega, frames),

@@ -232,6 +232,21 @@ impl<'p> Model<'p> {
         rigid_point(&self.frames, &self.bodies[body.0], body, offset)
     }
 
+    /// The position alone of a point fixed on `body` at `offset`: a moment arm needs no
+    /// velocity or acceleration, whose cross products are most of [`Model::point_on`]'s work.
+    pub fn position_on(&self, body: BodyId, offset: &Components) -> Vector {
+        self.bodies[body.0]
+            .origin
+            .position
+            .plus(&Vector::new(body, offset.clone()))
+    }
+
+    /// The position of a named point.
+    pub fn position(&self, point: PointRef) -> Vector {
+        let (body, offset) = self.locate(point);
+        self.position_on(body, &offset)
+    }
+
     /// The body a point belongs to and its offset from that body's origin.
     pub fn locate(&self, point: PointRef) -> (BodyId, Components) {
         match point {

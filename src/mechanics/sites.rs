@@ -229,7 +229,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         (std::array::from_fn(|i| &w[i] * &inverse), length)
     };
     let offset_c: Components = std::array::from_fn(|i| &center_offset[i] - &(radius * &toward[i]));
-    let center_position = model.point_on(body, &center_offset).position;
+    let center_position = model.position_on(body, &center_offset);
     let height = &(&center_position.dot(&n_vec, frames) - offset) - &(radius * &tilt);
     let tangents = tangents_of(&n_in_n, planar, model);
     let mut reactions: Vec<ReactionComponent> = tangents

@@ -215,7 +215,7 @@ pub fn action_terms(
             (ActionKind::Force { force, .. }, None) => force.dot(direction, frames),
             (ActionKind::Couple { .. }, None) => continue,
             (ActionKind::Force { offset, force }, Some(point)) => {
-                let at = model.point_on(action.body, offset).position.minus(point);
+                let at = model.position_on(action.body, offset).minus(point);
                 let mut moment = MomentSum::new(frames, direction);
                 moment.add(&at, force);
                 moment.total()

@@ -42,32 +42,95 @@ pub fn monomial(term: &Expr) -> Monomial {
 
 /// The factoring plan of a sum of monomials.
 pub fn factor(terms: Vec<Monomial>) -> Plan {
+    // The bases are numbered once, so that the greedy search below counts and compares
+    // integers instead of hashing and comparing expressions at every level.
+    let mut numbers: std::collections::HashMap<Expr, u32> = Default::default();
+    let mut bases: Vec<Expr> = Vec::new();
+    let numbered: Vec<NumberedTerm> = terms
+        .into_iter()
+        .map(|(coefficient, factors)| {
+            let factors = factors
+                .into_iter()
+                .map(|(base, k)| {
+                    let id = *numbers.entry(base.clone()).or_insert_with(|| {
+                        bases.push(base);
+                        (bases.len() - 1) as u32
+                    });
+                    (id, k)
+                })
+                .collect();
+            (coefficient, factors)
+        })
+        .collect();
+    greedy(numbered).into_plan(&bases)
+}
+
+/// A monomial with its bases numbered.
+type NumberedTerm = (Number, Vec<(u32, i64)>);
+
+/// [`Plan`] over numbered bases.
+enum NumberedPlan {
+    Term(NumberedTerm),
+    Product(u32, Box<NumberedPlan>),
+    Sum(Vec<NumberedPlan>),
+}
+
+impl NumberedPlan {
+    fn into_plan(self, bases: &[Expr]) -> Plan {
+        match self {
+            NumberedPlan::Term((c, factors)) => Plan::Term((
+                c,
+                factors
+                    .into_iter()
+                    .map(|(id, k)| (bases[id as usize].clone(), k))
+                    .collect(),
+            )),
+            NumberedPlan::Product(id, inner) => {
+                Plan::Product(bases[id as usize].clone(), Box::new(inner.into_plan(bases)))
+            }
+            NumberedPlan::Sum(parts) => {
+                Plan::Sum(parts.into_iter().map(|p| p.into_plan(bases)).collect())
+            }
+        }
+    }
+}
+
+/// The base that the most terms share, if two or more do; of those sharing the most, the
+/// one seen first, so that the plan is deterministic.
+fn most_shared(terms: &[NumberedTerm]) -> Option<u32> {
+    let mut seen: Vec<(u32, usize)> = terms
+        .iter()
+        .flat_map(|(_, factors)| factors.iter().map(|(id, _)| *id))
+        .enumerate()
+        .map(|(position, id)| (id, position))
+        .collect();
+    seen.sort_unstable();
+    let mut best: Option<(usize, usize, u32)> = None; // (count, first position, base)
+    for group in seen.chunk_by(|a, b| a.0 == b.0) {
+        let (count, first) = (group.len(), group[0].1);
+        let better = match best {
+            None => true,
+            Some((c, f, _)) => count > c || (count == c && first < f),
+        };
+        if better {
+            best = Some((count, first, group[0].0));
+        }
+    }
+    best.filter(|(count, _, _)| *count >= 2).map(|(_, _, id)| id)
+}
+
+fn greedy(terms: Vec<NumberedTerm>) -> NumberedPlan {
     if terms.len() == 1 {
-        return Plan::Term(
+        return NumberedPlan::Term(
             terms
                 .into_iter()
                 .next()
                 .unwrap_or((Number::ZERO, Vec::new())),
         );
     }
-    // The base that the most terms share (first seen wins a tie, so the plan is deterministic).
-    let mut counts: std::collections::HashMap<&Expr, (usize, usize)> = Default::default();
-    for (_, factors) in &terms {
-        for (base, _) in factors {
-            let seen = counts.len();
-            counts.entry(base).or_insert((seen, 0)).1 += 1;
-        }
-    }
-    let best = counts
-        .iter()
-        .min_by_key(|(_, (first, count))| (std::cmp::Reverse(*count), *first))
-        .map(|(base, (_, count))| ((*base).clone(), *count));
-    let Some((base, count)) = best else {
-        return Plan::Sum(terms.into_iter().map(Plan::Term).collect());
+    let Some(base) = most_shared(&terms) else {
+        return NumberedPlan::Sum(terms.into_iter().map(NumberedPlan::Term).collect());
     };
-    if count < 2 {
-        return Plan::Sum(terms.into_iter().map(Plan::Term).collect());
-    }
     let (mut with, mut without) = (Vec::new(), Vec::new());
     for (c, factors) in terms {
         if factors.iter().any(|(b, _)| *b == base) {
@@ -75,7 +138,7 @@ pub fn factor(terms: Vec<Monomial>) -> Plan {
                 .into_iter()
                 .filter_map(|(b, k)| {
                     if b == base {
-                        (k > 1).then(|| (b, k - 1))
+                        (k > 1).then_some((b, k - 1))
                     } else {
                         Some((b, k))
                     }
@@ -86,16 +149,16 @@ pub fn factor(terms: Vec<Monomial>) -> Plan {
             without.push((c, factors));
         }
     }
-    let product = Plan::Product(base, Box::new(factor(with)));
+    let product = NumberedPlan::Product(base, Box::new(greedy(with)));
     if without.is_empty() {
         product
     } else {
-        match factor(without) {
-            Plan::Sum(mut parts) => {
+        match greedy(without) {
+            NumberedPlan::Sum(mut parts) => {
                 parts.insert(0, product);
-                Plan::Sum(parts)
+                NumberedPlan::Sum(parts)
             }
-            other => Plan::Sum(vec![product, other]),
+            other => NumberedPlan::Sum(vec![product, other]),
         }
     }
 }

@@ -99,7 +99,7 @@ fn size_of(n: &Numbers) -> f64 {
         .collect();
     points.extend(model.bodies.iter().map(|b| n.vector(&b.center.position)));
     for (i, _) in model.problem.points.iter().enumerate() {
-        points.push(n.vector(&model.point(crate::problem::PointRef::Named(i)).position));
+        points.push(n.vector(&model.position(crate::problem::PointRef::Named(i))));
     }
     let points: Vec<_> = points
         .into_iter()
