@@ -106,3 +106,77 @@ fn a_body_free_to_turn_about_the_vertical_has_no_failing_oscillation() {
         assert!(check.passed, "{check:?}");
     }
 }
+
+/// The equations of `inner` with every drive's force or torque scaled by `factor`: the
+/// motion is unchanged, the drives' reported work is not.
+struct ScaledDrives<'a> {
+    inner: &'a dyn System,
+    factor: f64,
+}
+
+impl System for ScaledDrives<'_> {
+    fn coordinate_names(&self) -> Vec<String> {
+        self.inner.coordinate_names()
+    }
+    fn reaction_columns(&self) -> Vec<String> {
+        self.inner.reaction_columns()
+    }
+    fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
+        let mut e = self.inner.evaluate(t, q, rates)?;
+        for (value, name) in e.reactions.iter_mut().zip(self.inner.reaction_columns()) {
+            if name.ends_with(".drive") {
+                *value *= self.factor;
+            }
+        }
+        Ok(e)
+    }
+    fn assemble(&self, t: f64, q: &mut [f64], rates: &mut [f64]) -> Result<(), SolveError> {
+        self.inner.assemble(t, q, rates)
+    }
+    fn is_constrained(&self) -> bool {
+        self.inner.is_constrained()
+    }
+    fn is_conservative(&self) -> bool {
+        self.inner.is_conservative()
+    }
+    fn has_dissipation_only(&self) -> bool {
+        self.inner.has_dissipation_only()
+    }
+}
+
+/// A crank or a rod turned at a constant rate: the energy is not conserved (no such check
+/// is made), it changes by the work of the drive, to 1e-6 of the energy scale; a drive
+/// torque 0.1 % off breaks that balance.
+#[test]
+fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() {
+    use mbd_tutor::numeric::checks::confirm;
+    use mbd_tutor::numeric::constraint_checks::drive_energy_check;
+    use mbd_tutor::numeric::simulate::simulate;
+    for name in ["slider-crank-driven", "collar-on-driven-rod"] {
+        let problem = problem(name);
+        let compiled = Compiled::new(&derive(&problem, Method::MotionLaw).expect("derives"));
+        let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+        let run =
+            simulate(&compiled, &initial(&problem), &rates, &problem.simulate).expect("simulates");
+        assert!(run.stopped.is_none(), "{name}: {:?}", run.stopped);
+        let checks = confirm(
+            &problem,
+            ("Motion Law", &compiled),
+            &[],
+            &run,
+            &initial(&problem),
+        );
+        assert!(
+            checks.iter().all(|c| c.name != "energy conservation"),
+            "{name}: a driven system's energy is not conserved: {checks:?}"
+        );
+        let balance = drive_energy_check(&problem, &compiled, &run).expect("applies");
+        assert!(balance.passed, "{name}: {balance:?}");
+        let wrong = ScaledDrives {
+            inner: &compiled,
+            factor: 1.001,
+        };
+        let balance = drive_energy_check(&problem, &wrong, &run).expect("applies");
+        assert!(!balance.passed, "{name}, drive × 1.001: {balance:?}");
+    }
+}

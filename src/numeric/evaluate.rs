@@ -219,12 +219,16 @@ impl Compiled {
                 (name, system.unknowns.iter().position(|u| *u == symbol))
             })
             .collect();
-        // Drives, and constraints that change with time, do work.
-        let drives_work = model
-            .constraints
-            .rows
-            .iter()
-            .any(|r| r.velocity.contains(&crate::symbolic::Symbol::Time));
+        // Drives, and constraints that change with time, do work: a prescribed `w*t` has
+        // the rate row `q' - w`, free of t, so the position row and the origin are asked too.
+        let time = crate::symbolic::Symbol::Time;
+        let drives_work = model.constraints.rows.iter().any(|r| {
+            matches!(
+                r.origin,
+                crate::mechanics::constraints::RowOrigin::Prescribed(_)
+            ) || r.velocity.contains(&time)
+                || r.position.as_ref().is_some_and(|p| p.contains(&time))
+        });
         Compiled {
             assembly: super::assemble::Assembly::new(model),
             drives,

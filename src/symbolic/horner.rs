@@ -116,7 +116,8 @@ fn most_shared(terms: &[NumberedTerm]) -> Option<u32> {
             best = Some((count, first, group[0].0));
         }
     }
-    best.filter(|(count, _, _)| *count >= 2).map(|(_, _, id)| id)
+    best.filter(|(count, _, _)| *count >= 2)
+        .map(|(_, _, id)| id)
 }
 
 fn greedy(terms: Vec<NumberedTerm>) -> NumberedPlan {

@@ -293,7 +293,7 @@ impl Printer {
         if self.latex {
             if let Node::Func(f, args) = base.node() {
                 if let Some(name) = super::style::abbreviation(*f, &args[0]) {
-                    return format!("{name}^{{{exponent_text}}}");
+                    return format!("{}^{{{exponent_text}}}", grouped_for_power(&name));
                 }
                 if matches!(f, Func::Sin | Func::Cos | Func::Tan) {
                     return format!(
@@ -303,7 +303,7 @@ impl Printer {
                     );
                 }
             }
-            format!("{base_text}^{{{exponent_text}}}")
+            format!("{}^{{{exponent_text}}}", grouped_for_power(&base_text))
         } else if exponent
             .as_number()
             .is_some_and(|n| !n.is_negative() && matches!(n, Number::Ratio(_, 1)))
@@ -377,6 +377,25 @@ impl Printer {
     }
 }
 
+/// A base that already carries a superscript, such as the named direction cosine
+/// `{}^{N}C^{F}_{31}`, braced so that its power is not a second superscript (a LaTeX error).
+fn grouped_for_power(base: &str) -> String {
+    let mut depth = 0i32;
+    let has_superscript = base.chars().any(|c| {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            _ => {}
+        }
+        c == '^' && depth == 0
+    });
+    if has_superscript {
+        format!("{{{base}}}")
+    } else {
+        base.to_string()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -415,5 +434,15 @@ mod tests {
             "-\\dot{q}_{1} \\sin(q_{1})"
         );
         assert_eq!(plain(&(cos(q.clone()) - Expr::one())), "-1 + cos(q1)");
+    }
+
+    #[test]
+    fn a_power_of_a_name_with_a_superscript_is_braced() {
+        let value = &(&Expr::constant("a") * &Expr::constant("b")) + &Expr::constant("c");
+        let c = Expr::named("C_N_F_31", "{}^{N}C^{F}_{31}", "", value);
+        let squared = crate::symbolic::build::pow(c, Expr::int(2));
+        assert_eq!(latex(&squared), "{{}^{N}C^{F}_{31}}^{2}");
+        let x = crate::symbolic::build::pow(Expr::constant("x"), Expr::int(2));
+        assert_eq!(latex(&x), "x^{2}");
     }
 }

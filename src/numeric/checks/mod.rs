@@ -25,7 +25,7 @@ pub fn confirm(
 ) -> Vec<Check> {
     let mut checks = confirm_systems(primary, others, trajectory, q0);
     checks.extend(super::constraint_checks::drive_energy_check(
-        problem, trajectory,
+        problem, primary.1, trajectory,
     ));
     checks.extend(super::constraint_checks::drift_check(primary.1, trajectory));
     checks

@@ -40,8 +40,7 @@ impl Setting<'_, '_, '_> {
     }
 
     fn position(&self, point: PointRef) -> P3 {
-        self.numbers
-            .vector(&self.derivation.model.position(point))
+        self.numbers.vector(&self.derivation.model.position(point))
     }
 
     /// The marker of a point, with its caption.
