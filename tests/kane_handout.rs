@@ -95,7 +95,7 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
         assert!(active < inertia && inertia < sum, "r = {r}");
     }
     assert!(
-        step5.contains("**1. r = 1: the generalized speed q1'**"),
+        step5.contains("**1. $r = 1\\colon\\; u_{1} = \\dot{q}_{1}$ (a generalized speed)**"),
         "{step5}"
     );
 }

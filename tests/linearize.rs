@@ -644,6 +644,23 @@ fn state_matrix_agrees_with_m_c_k_of_kanes_equations_for_every_problem() {
     );
 }
 
+/// `--linearize` before the problem's path leaves the path to the problem: the state, if
+/// any, follows an `=`.
+#[test]
+fn explain_linearize_before_the_path_keeps_the_path() {
+    let path = problem("simple-pendulum");
+    let out = run(&["explain", "--linearize", path.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // About the initial state, θ = 0.6: K = m g L cos θ = 0.5 · 9.81 · 0.8 · cos 0.6.
+    let k = 0.5 * 9.81 * 0.8 * 0.6f64.cos();
+    assert!((k - 3.23862).abs() < 5e-6);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("\\mathbf{K} = \\begin{bmatrix} 3.23862"));
+}
+
 /// `explain --linearize`: the section in Markdown with the pendulum's frequency, and
 /// LaTeX that pdflatex compiles (a spinning top: complex shapes; a five-link chain:
 /// matrices of five columns).
@@ -653,8 +670,7 @@ fn explain_adds_a_section_that_compiles() {
     let out = run(&[
         "explain",
         path.to_str().unwrap(),
-        "--linearize",
-        "theta=0,theta'=0",
+        "--linearize=theta=0,theta'=0",
     ]);
     assert!(
         out.status.success(),

@@ -157,7 +157,7 @@ fn the_handout_shows_a_few_rejected_candidates_in_a_students_notation() {
         assert_eq!(shown.rejected_total, derivation.rejected.len());
         assert_eq!(shown.rejected_all.len(), derivation.rejected.len());
         for r in &shown.rejected {
-            for text in [&r.free_body, &r.equation, &r.reason, &r.reason_after] {
+            for text in [&r.free_body, &r.equation_tex, &r.reason, &r.reason_after] {
                 assert_eq!(internal_name(text), None, "{}: {text}", path.display());
             }
         }
@@ -182,7 +182,7 @@ fn the_rejected_reason_names_the_reaction_at_the_next_joint() {
     let a_about_o = shown
         .rejected
         .iter()
-        .find(|r| r.free_body == "A" && r.equation == "M about O")
+        .find(|r| r.free_body == "A" && r.equation_tex == "\\sum \\mathbf{M}_{O}")
         .unwrap_or_else(|| panic!("{:?}", shown.rejected));
     assert_eq!(a_about_o.reason, "brings in the reaction at P");
     assert!(a_about_o.reason_tex.contains("F^{P}"), "{a_about_o:?}");
@@ -223,4 +223,27 @@ fn explain_verbose_lists_every_rejected_candidate() {
     assert!(default.contains("explain --verbose"));
     assert_eq!(candidates_section(&verbose).len(), total);
     assert!(verbose.contains("Candidates not used:"));
+}
+
+/// Step 5 heads each equation in math, `A + B: ΣM_O · n̂_z`, never with a frame's
+/// internal axis name such as `N.z` or a reaction's `O.Fx`.
+#[test]
+fn step_5_heads_each_equation_in_math() {
+    use mbd_tutor::render::derived::equation_view;
+    for path in crate::support::all_problems() {
+        let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        for method in Method::ALL {
+            let derivation = derive(&problem, method).expect("derives");
+            for row in &derivation.rows {
+                let view = equation_view(&derivation, row);
+                assert!(!view.label_tex.is_empty(), "{}: {view:?}", path.display());
+                for text in [&view.label_tex, &view.label] {
+                    let axis = text.as_bytes().windows(3).any(|w| {
+                        w[0].is_ascii_alphanumeric() && w[1] == b'.' && b"xyzFM".contains(&w[2])
+                    });
+                    assert!(!axis, "{}, {}: {text}", path.display(), method.name());
+                }
+            }
+        }
+    }
 }

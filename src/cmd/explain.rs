@@ -54,8 +54,15 @@ pub struct Args {
     #[arg(long)]
     pub both: bool,
     /// Add a section on small motions about the initial state, or about the state given
-    /// (`--linearize q1=0,q1'=0`): M, C, K, the state matrix, eigenvalues and modes.
-    #[arg(long, value_name = "STATE", num_args = 0..=1, default_missing_value = "")]
+    /// (`--linearize=q1=0,q1'=0`): M, C, K, the state matrix, eigenvalues and modes. The
+    /// state follows an `=`, so that `--linearize problem.json` keeps the problem's path.
+    #[arg(
+        long,
+        value_name = "STATE",
+        num_args = 0..=1,
+        require_equals = true,
+        default_missing_value = ""
+    )]
     pub linearize: Option<String>,
     /// List every candidate equation the Motion Law's planner did not use, with its reason,
     /// not only the few that show why the plan is what it is.

@@ -245,8 +245,8 @@ pub struct Plan {
 pub struct PlanRow {
     /// The free body, e.g. `A+B`.
     pub free_body: String,
-    /// The equation, e.g. `moments about O`.
-    pub equation: String,
+    /// The equation, e.g. `\sum \mathbf{M}_{O}`.
+    pub equation_tex: String,
     /// Its direction, e.g. `\hat{\mathbf{n}}_{z}`.
     pub direction_tex: String,
     /// The unknowns it contains, e.g. `\ddot{q}_{1}, \ddot{q}_{2}`.
@@ -258,8 +258,8 @@ pub struct PlanRow {
 pub struct Rejected {
     /// The free body.
     pub free_body: String,
-    /// The equation.
-    pub equation: String,
+    /// The equation, e.g. `\sum \mathbf{F}`.
+    pub equation_tex: String,
     /// Its direction.
     pub direction_tex: String,
     /// Why it was not used (plain text), e.g. `brings in the reaction at P`.
@@ -295,7 +295,10 @@ pub struct Kinematics {
 /// One scalar equation of motion (or of a reaction).
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Equation {
-    /// Where it comes from, e.g. `A+B, moments about O, along n_z` (plain text).
+    /// Where it comes from: the free body, the sum and its direction, e.g.
+    /// `A + B\colon \sum \mathbf{M}_{O} \cdot \hat{\mathbf{n}}_{z}`, or Kane's `r` and speed.
+    pub label_tex: String,
+    /// Plain words after it, e.g. `(a generalized speed)`; may be empty.
     pub label: String,
     /// The equation as formed, forces grouped, e.g. `\hat{\mathbf{n}}_{z} \cdot (…) = 0`.
     pub grouped_tex: String,

@@ -302,15 +302,6 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
-pub(super) fn sum_text(model: &Model, sum: &Sum) -> String {
-    match sum {
-        Sum::Force => "F".into(),
-        Sum::Moment { point, .. } => format!("M about {point}"),
-        Sum::Generalized { speed } => format!("F_r + F_r* for {speed}"),
-        Sum::Constraint { name } => constraint_text(model, name),
-    }
-}
-
 /// The direction of a closure's or a contact's constraint row: that of the reaction
 /// component that enforces it (the row is the relative motion along it).
 fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
@@ -323,20 +314,29 @@ fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
     Some(vector_tex(model, &component.direction))
 }
 
-/// What a constraint row of the plan says, e.g. "rolling constraint at floor (acceleration
-/// level)": the rows are the constraints differentiated until the q'' appear.
-fn constraint_text(model: &Model, name: &str) -> String {
-    format!("{} (acceleration level)", constraint_what(model, name))
-}
-
 /// A constraint row's label in the matrix form: what it constrains and, for a site's row,
 /// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
 pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
-    let what = super::escape::latex(&constraint_what(model, name), super::escape::Lines::One);
+    let what = constraint_what_tex(model, name);
     match constraint_direction_tex(model, name) {
-        Some(direction) => format!("\\text{{{what}}} \\cdot {direction}"),
-        None => format!("\\text{{{what}}}"),
+        Some(direction) => format!("{what} \\cdot {direction}"),
+        None => what,
     }
+}
+
+/// What a constraint row constrains, in LaTeX: `\text{rolling constraint at floor}`, or
+/// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
+pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
+    use crate::mechanics::constraints::RowOrigin;
+    let row = model.constraints.rows.iter().find(|r| r.name == name);
+    if let Some(RowOrigin::Prescribed(c)) = row.map(|r| &r.origin) {
+        if *c < model.problem.coordinates.len() {
+            let q = latex(&model.problem.coordinate_expr(*c, 0));
+            return format!("\\text{{prescribed motion of }} {q}");
+        }
+    }
+    let what = super::escape::latex(&constraint_what(model, name), super::escape::Lines::One);
+    format!("\\text{{{what}}}")
 }
 
 /// What a constraint row constrains, e.g. "rolling constraint at floor".
@@ -387,7 +387,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
             } else {
                 bodies_name(problem, &row.free_body)
             },
-            equation: sum_text(&derivation.model, &row.sum),
+            equation_tex: super::matrix::sum_tex(derivation, &row.sum),
             direction_tex: match (&row.direction, &row.sum) {
                 (Some(d), _) => d.latex.clone(),
                 // A contact's or a closure's row: along its reaction component; any other
@@ -560,11 +560,6 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     if grouped.is_empty() {
         grouped = "0".into();
     }
-    let direction = row
-        .direction
-        .as_ref()
-        .map(|d| format!(" along {}", d.name))
-        .unwrap_or_default();
     let mut grouped_tex = format!("{grouped} = 0");
     let mut simplified_tex = format!(
         "{} = 0",
@@ -583,38 +578,48 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         // Too long as formed: the same sum in vector form, in the quantities of steps 2 and 4.
         grouped_tex = super::long::vector_form(derivation, row);
     }
-    let mut label = if let Sum::Constraint { name } = &row.sum {
-        // A site has a row per reaction component: the component tells them apart.
-        let text = sum_text(&derivation.model, &row.sum);
-        match constraint_direction_tex(&derivation.model, name) {
-            Some(_) => format!("{text}, the row of its reaction {name}"),
-            None => text,
-        }
+    let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
+    let mut label_tex = index
+        .map(|i| super::matrix::row_heading_tex(derivation, i))
+        .unwrap_or_default();
+    let mut label = if matches!(row.sum, Sum::Constraint { .. }) {
+        "(differentiated to the acceleration level)".to_string()
     } else {
-        format!(
-            "{}: {}{direction}",
-            bodies_name(problem, &row.free_body),
-            sum_text(&derivation.model, &row.sum)
-        )
+        String::new()
     };
     let (mut active_tex, mut inertia_tex) = (String::new(), String::new());
-    if let (Sum::Generalized { speed }, Some(r)) =
-        (&row.sum, super::kane::row_number(derivation, row))
+    if let (Sum::Generalized { .. }, Some(r)) = (&row.sum, super::kane::row_number(derivation, row))
     {
         // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
         (active_tex, inertia_tex) = super::kane::generalized_forces(&row.groups, r, shown);
         grouped_tex = String::new();
-        label = if r <= problem.coordinates.len() {
-            format!("r = {r}: the generalized speed {speed}")
+        (label_tex, label) = if r <= problem.coordinates.len() {
+            (
+                format!(
+                    "r = {r}\\colon\\; {}",
+                    super::kane::speed_tex(derivation, r - 1)
+                ),
+                "(a generalized speed)".to_string(),
+            )
         } else {
-            format!(
-                "r = {r}: the auxiliary speed {speed}, which moves {} and brings in the reaction",
-                bodies_name(problem, &row.free_body)
+            let reactions: Vec<Symbol> = row
+                .unknowns
+                .iter()
+                .filter(|u| matches!(u, Symbol::Unknown(_)))
+                .cloned()
+                .collect();
+            (
+                format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&reactions)),
+                format!(
+                    "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
+                    bodies_name(problem, &row.free_body)
+                ),
             )
         };
     }
     EquationView {
         label,
+        label_tex,
         grouped_tex,
         simplified_tex,
         simplified_note,

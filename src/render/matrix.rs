@@ -19,6 +19,8 @@ const TABLE_WIDTH: usize = 70;
 /// every entry longer than [`SHORT_ENTRY`] is given by its value at the initial state: the
 /// rows of step 5 define each entry, and a large system is solved by its numbers anyway.
 const ENTRIES_BUDGET: usize = 24_000;
+/// An entry this wide or narrower (in printed symbols) stays in a table by name.
+const INLINE_ENTRY: usize = 4;
 /// An entry this long or shorter is always printed as a formula.
 const SHORT_ENTRY: usize = 400;
 /// The most entries listed one a line; past it, the short entries of a row are printed one
@@ -37,35 +39,56 @@ pub fn point_tex(point: &str) -> String {
 /// `(2)\; B\colon \sum \mathbf{M}_{P} \cdot \hat{\mathbf{a}}_{z}` or, for Kane's rows,
 /// `(1)\; F_{1} + F^{*}_{1}`.
 pub fn row_label_tex(derivation: &Derivation, i: usize) -> String {
+    format!("({})\\; {}", i + 1, row_heading_tex(derivation, i))
+}
+
+/// Row `i`'s equation as step 5 heads it: `B\colon \sum \mathbf{M}_{P} \cdot
+/// \hat{\mathbf{a}}_{z}`, `F_{1} + F^{*}_{1}`, or what a constraint row constrains.
+pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
     let row = &derivation.rows[i];
-    let problem = derivation.model.problem;
-    let body = row
-        .free_body
-        .iter()
-        .map(|b| latex_name(problem.body_name(*b)))
-        .collect::<Vec<_>>()
-        .join("{+}");
     let direction = row
         .direction
         .as_ref()
         .map(|d| format!(" \\cdot {}", d.latex))
         .unwrap_or_default();
-    let what = match &row.sum {
-        Sum::Force => format!("{body}\\colon \\sum \\mathbf{{F}}{direction}"),
-        Sum::Moment { point, .. } => {
-            let point = point_tex(point);
-            format!("{body}\\colon \\sum \\mathbf{{M}}_{{{point}}}{direction}")
-        }
+    match &row.sum {
+        Sum::Constraint { name } => super::derived::constraint_label_tex(&derivation.model, name),
+        Sum::Generalized { .. } => sum_tex(derivation, &row.sum),
+        _ => format!(
+            "{}\\colon {}{direction}",
+            bodies_tex(derivation, &row.free_body),
+            sum_tex(derivation, &row.sum)
+        ),
+    }
+}
+
+/// A free body's bodies in LaTeX, `A + B`.
+pub fn bodies_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
+    let problem = derivation.model.problem;
+    bodies
+        .iter()
+        .map(|b| latex_name(problem.body_name(*b)))
+        .collect::<Vec<_>>()
+        .join(" + ")
+}
+
+/// A sum as an equation's column names it: `\sum \mathbf{F}`, `\sum \mathbf{M}_{O}`,
+/// `F_{r} + F^{*}_{r}` (r among Kane's rows), or what a constraint constrains.
+pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
+    match sum {
+        Sum::Force => "\\sum \\mathbf{F}".into(),
+        Sum::Moment { point, .. } => format!("\\sum \\mathbf{{M}}_{{{}}}", point_tex(point)),
         Sum::Generalized { .. } => {
-            let r = derivation.rows[..=i]
+            let r = derivation
+                .rows
                 .iter()
                 .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
-                .count();
+                .position(|x| x.sum == *sum)
+                .map_or("r".to_string(), |i| (i + 1).to_string());
             format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
         }
-        Sum::Constraint { name } => super::derived::constraint_label_tex(&derivation.model, name),
-    };
-    format!("({})\\; {what}", i + 1)
+        Sum::Constraint { name } => super::derived::constraint_what_tex(&derivation.model, name),
+    }
 }
 
 /// Step 5's `A x = b`; `by_entries` asks for the entries one by one (an equation refers to
@@ -96,14 +119,28 @@ pub fn matrix(
         .map(|row| row.iter().map(latex).collect())
         .collect();
     let b_tex: Vec<String> = b.iter().map(latex).collect();
+    // In the table a row is labelled by its number: step 5 heads each equation with it.
+    let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
+    let b_names: Vec<String> = (1..=a.len()).map(|i| format!("b_{{{i}}}")).collect();
+    let mut table_with_b_by_name = None;
     if n <= MOST_COLUMNS && !by_entries {
-        if let Some(whole) = whole(&labels, &x, &a_tex, &b_tex) {
+        if let Some(whole) = whole(&numbers, &x, &a_tex, &b_tex) {
             return MatrixForm {
                 whole: Some(whole),
                 ..MatrixForm::default()
             };
         }
+        // A right-hand side too wide for the table: b by name in it, its entries below.
+        table_with_b_by_name = whole(&numbers, &x, &a_tex, &b_names);
     }
+    // Entries too wide as well: every entry longer than a symbol or two by name, as a
+    // textbook writes a larger system, the names defined below the table.
+    let a_names = named_entries(&a, &a_tex);
+    let table_by_name = if table_with_b_by_name.is_none() {
+        whole(&numbers, &x, &a_names, &b_names)
+    } else {
+        None
+    };
     let printed: usize = a_tex.iter().flatten().chain(&b_tex).map(String::len).sum();
     let by_value = printed > ENTRIES_BUDGET;
     // With `by_value`, a formula too long for a line is replaced by its value at the start.
@@ -202,6 +239,51 @@ pub fn matrix(
             );
         }
     }
+    if let Some(table) = table_by_name.filter(|_| !by_value) {
+        let mut defined = Vec::new();
+        for (i, row) in a_names.iter().enumerate() {
+            for (j, name) in row.iter().enumerate() {
+                if *name == format!("A_{{{},{}}}", i + 1, j + 1) {
+                    defined.push(MatrixEntry {
+                        row: i + 1,
+                        column: (j + 1).to_string(),
+                        value_tex: format!("{name} = {}", a_tex[i][j]),
+                        column_tex: x[j].clone(),
+                        ..MatrixEntry::default()
+                    });
+                }
+            }
+        }
+        defined.extend(
+            entries
+                .into_iter()
+                .filter(|e| e.column == "b")
+                .map(|e| MatrixEntry {
+                    row_label_tex: String::new(),
+                    ..e
+                }),
+        );
+        return MatrixForm {
+            whole: Some(table),
+            entries: defined,
+            ..MatrixForm::default()
+        };
+    }
+    if let Some(table) = table_with_b_by_name.filter(|_| !by_value) {
+        let b_entries = entries
+            .into_iter()
+            .filter(|e| e.column == "b")
+            .map(|e| MatrixEntry {
+                row_label_tex: String::new(),
+                ..e
+            })
+            .collect();
+        return MatrixForm {
+            whole: Some(table),
+            entries: b_entries,
+            ..MatrixForm::default()
+        };
+    }
     if !by_value && entries.len() <= MOST_LISTED {
         return MatrixForm {
             whole: None,
@@ -224,6 +306,33 @@ pub fn matrix(
             .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
             .collect(),
     }
+}
+
+/// The entries of `A` as a table by name prints them: 0, a symbol or two as it is
+/// (`m`, `-1`), any other by its name `A_{i,j}`; an entry below the diagonal equal to its
+/// mirror by its mirror's name.
+fn named_entries(a: &[Vec<Expr>], a_tex: &[Vec<String>]) -> Vec<Vec<String>> {
+    a_tex
+        .iter()
+        .enumerate()
+        .map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(j, text)| {
+                    let mirror = a.get(j).and_then(|r| r.get(i));
+                    if a[i][j].is_zero() {
+                        "0".to_string()
+                    } else if printed_width(text) <= INLINE_ENTRY {
+                        text.clone()
+                    } else if j < i && mirror == Some(&a[i][j]) {
+                        format!("A_{{{},{}}}", j + 1, i + 1)
+                    } else {
+                        format!("A_{{{},{}}}", i + 1, j + 1)
+                    }
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// The short entries of each row gathered into one, to be printed one after another; a

@@ -286,12 +286,11 @@ fn subscript(d: char) -> char {
 /// A LaTeX `tikzpicture` with a pgfplots `axis` holding one `\addplot` per series.
 ///
 /// Each series is thinned to at most [`PGFPLOTS_MAX_POINTS`] points (keeping the first and
-/// the last) and printed with [`fixed`] precision. The title is escaped as LaTeX text; the
-/// labels and legends are given as LaTeX already. Non-finite points are left out. The
+/// the last) and printed with [`fixed`] precision. The labels and legends are LaTeX
+/// already. No title: the figure's caption says what the plot shows. Non-finite points are left out. The
 /// document needs `\usepackage{pgfplots}`.
-pub fn pgfplots(title: &str, x_label: &Label, y_label: &Label, series: &[Series]) -> String {
+pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series]) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
-    text.push_str(&format!("  title={{{}}},\n", escape_latex(title)));
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
     text.push_str("  width=12cm, height=7cm, grid=major,\n  legend pos=outer north east,\n]\n");
@@ -398,9 +397,9 @@ mod tests {
     #[test]
     fn pgfplots_is_thinned_and_its_labels_are_math() {
         let energy = Label::math("E", "(J)");
-        let text = pgfplots("Energy & more", &time(), &energy, &sine());
+        let text = pgfplots(&time(), &energy, &sine());
         assert!(text.starts_with("\\begin{tikzpicture}\n\\begin{axis}["));
-        assert!(text.contains("title={Energy \\& more}"));
+        assert!(!text.contains("title="), "the caption is the title");
         assert!(text.contains("xlabel={$t$ (s)}"));
         assert!(text.contains("ylabel={$E$ (J)}"));
         assert!(text.contains("\\addlegendentry{$\\theta_{2}$}"));

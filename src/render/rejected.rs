@@ -35,35 +35,29 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
             )
         }
         Reason::NoUnknown => plain("contains none of the unknowns"),
+        Reason::Duplicate { row } if *row < derivation.rows.len() => (
+            format!("says the same as row {} of the plan", row + 1),
+            super::matrix::row_heading_tex(derivation, *row),
+            String::new(),
+        ),
         Reason::Duplicate { row } => {
-            let shown = derivation.rows.get(*row).map(|r| {
-                format!(
-                    " ({}, {})",
-                    super::derived::bodies_name(problem, &r.free_body),
-                    super::derived::sum_text(&derivation.model, &r.sum)
-                )
-            });
-            plain(&format!(
-                "says the same as row {} of the plan{}",
-                row + 1,
-                shown.unwrap_or_default()
-            ))
+            plain(&format!("says the same as row {} of the plan", row + 1))
         }
         Reason::Redundant => plain("adds nothing new: it follows from the rows chosen"),
         Reason::SingularAt(state) => plain(&format!(
-            "independent at most states, but not {}: the plan would be singular there",
+            "would make the plan singular {}, though it is independent at most states",
             match state {
                 SpecialState::Initial => "at the initial state",
                 SpecialState::Requested => "at the state asked for",
-                SpecialState::AllZero => "when every coordinate is 0",
-                SpecialState::QuarterTurn => "when every coordinate is a quarter turn",
+                SpecialState::AllZero => "where every coordinate is 0",
+                SpecialState::QuarterTurn => "where every coordinate is π/2",
             }
         )),
         Reason::NotNeeded => plain("not needed: the rows chosen already determine every unknown"),
     };
     RejectedView {
         free_body: super::derived::bodies_name(problem, &candidate.free_body),
-        equation: super::derived::sum_text(&derivation.model, &candidate.sum),
+        equation_tex: super::matrix::sum_tex(derivation, &candidate.sum),
         direction_tex: candidate.direction.latex.clone(),
         reason,
         reason_tex,

@@ -198,7 +198,7 @@ fn free_bodies() -> Vec<FreeBody> {
 fn plan() -> Plan {
     let row = |free_body: &str, equation: &str, direction: String, unknowns: &str| PlanRow {
         free_body: s(free_body),
-        equation: s(equation),
+        equation_tex: s(equation),
         direction_tex: direction,
         unknowns_tex: s(unknowns),
     };
@@ -207,27 +207,32 @@ fn plan() -> Plan {
         rows: vec![
             row(
                 "A+B",
-                "moments about O",
+                "\\sum \\mathbf{M}_{O}",
                 format!("{N}_{{z}}"),
                 accelerations,
             ),
-            row("B", "moments about P", format!("{A}_{{z}}"), accelerations),
+            row(
+                "B",
+                "\\sum \\mathbf{M}_{P}",
+                format!("{A}_{{z}}"),
+                accelerations,
+            ),
             row(
                 "A+B",
-                "forces",
+                "\\sum \\mathbf{F}",
                 format!("{N}_{{x}}"),
                 "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}",
             ),
             row(
                 "A+B",
-                "forces",
+                "\\sum \\mathbf{F}",
                 format!("{N}_{{y}}"),
                 "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}",
             ),
         ],
         rejected: vec![Rejected {
             free_body: s("A"),
-            equation: s("moments about O"),
+            equation_tex: s("\\sum \\mathbf{M}_{O}"),
             direction_tex: format!("{N}_{{z}}"),
             reason: s("brings in the reaction at P"),
             reason_tex: s("F^{P}_{x}, F^{P}_{y}"),
@@ -286,7 +291,8 @@ fn equations() -> Vec<Equation> {
     let accelerations = "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)";
     vec![
         Equation {
-            label: s("A+B: moments about O"),
+            label_tex: format!("A + B\\colon \\sum \\mathbf{{M}}_{{O}} \\cdot {N}_{{z}}"),
+            label: String::new(),
             grouped_tex: format!(
                 "{N}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{A^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} \\ddot{{q}}_{{1}} {N}_{{z}} \
                  + \\mathbf{{r}}^{{B^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
@@ -303,7 +309,8 @@ fn equations() -> Vec<Equation> {
             inertia_tex: String::new(),
         },
         Equation {
-            label: s("B: moments about P"),
+            label_tex: format!("B\\colon \\sum \\mathbf{{M}}_{{P}} \\cdot {A}_{{z}}"),
+            label: String::new(),
             grouped_tex: format!(
                 "{A}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{B^{{*}}/P}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
                 loads("B")
@@ -317,7 +324,8 @@ fn equations() -> Vec<Equation> {
             inertia_tex: String::new(),
         },
         Equation {
-            label: s("A+B: forces along x"),
+            label_tex: format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{x}}"),
+            label: String::new(),
             grouped_tex: format!("{N}_{{x}} \\cdot \\left({sum_forces}\\right) = 0"),
             simplified_tex: format!(
                 "F^{{O}}_{{x}} - m L \\left(\\frac{{3}}{{2}} \\left({c1} \\ddot{{q}}_{{1}} - {s1} \\dot{{q}}_{{1}}^{{2}}\\right) \
@@ -328,7 +336,8 @@ fn equations() -> Vec<Equation> {
             inertia_tex: String::new(),
         },
         Equation {
-            label: s("A+B: forces along y"),
+            label_tex: format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{y}}"),
+            label: String::new(),
             grouped_tex: format!("{N}_{{y}} \\cdot \\left({sum_forces}\\right) = 0"),
             simplified_tex: format!(
                 "F^{{O}}_{{y}} - 2 m g - m L \\left(\\frac{{3}}{{2}} \\left({s1} \\ddot{{q}}_{{1}} + {c1} \\dot{{q}}_{{1}}^{{2}}\\right) \
