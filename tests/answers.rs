@@ -1,6 +1,8 @@
 //! `find.questions` and the handout's Answers: each answer against a closed form or a hand
 //! derivation written here; bad questions; the student's handout; both versions compile.
 
+mod bundled;
+
 use crate::support::{problem, run};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::answers::{answer_all, Answer};
