@@ -1,6 +1,8 @@
 //! `find.questions` and the handout's Answers: each answer against a closed form or a hand
 //! derivation written here; bad questions; the student's handout; both versions compile.
 
+mod bundled;
+
 use crate::support::{problem, run};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::answers::{answer_all, Answer};
@@ -266,6 +268,27 @@ fn a_steady_motion_that_cannot_be_found_is_an_error_not_a_panic() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("find.questions[0]"), "{stderr}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_drive_is_the_torque_of_a_prescribed_motion_and_an_error_elsewhere() {
+    // The pendulum driven at theta = 0.6 + 0.5 t: the motor holds it against gravity with
+    // the torque m g L sin(theta) (theta'' = 0).
+    let mut p = pendulum(json!([{ "drive": "theta" }]), None);
+    p["coordinates"]["theta"] = json!({ "motion": "0.6 + 0.5*t" });
+    let a = answers_of(&load_value(&p));
+    close(
+        a[0].values[0].1,
+        0.5 * 9.81 * 0.8 * 0.6f64.sin(),
+        1e-12,
+        "drive",
+    );
+    // A free coordinate has no drive.
+    let free = load_value(&pendulum(json!([{ "drive": "theta" }]), None));
+    let derivation = derive(&free, Method::MotionLaw).expect("derives");
+    let e = answer_all(&free, &Solver::new(&free, &derivation)).expect_err("not prescribed");
+    assert_eq!(e.path, "find.questions[0]");
+    assert!(e.message.contains("not prescribed"), "{}", e.message);
 }
 
 fn p_json_no_steady() -> Value {

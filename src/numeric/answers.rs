@@ -5,6 +5,8 @@
 //!   assembled (constraints) and the system evaluated there.
 //! - At a time alone: the motion is simulated from the initial state up to that time, with
 //!   the problem's tolerance, and the state reached is evaluated.
+//! - A drive: the generalized force of a prescribed coordinate's motion, solved with the
+//!   reactions.
 //! - A steady motion: Newton's method (Gauss-Newton where there are more second derivatives
 //!   to make zero than unknowns) on the evaluated q'', with central-difference Jacobians and
 //!   a halving line search, from the state given as the guess. Which root it finds depends
@@ -24,7 +26,8 @@ const MAX_ITERATIONS: usize = 100;
 /// One question answered.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Answer {
-    /// What was found, each by name: `q1''`, the expression as written, `O.force.x`, or an
+    /// What was found, each by name: `q1''`, the expression as written, `O.force.x`,
+    /// `theta.drive`, or an
     /// unknown of a steady motion (`psi'`); SI units (or the problem's).
     pub values: Vec<(String, f64)>,
     /// The time, seconds.
@@ -152,6 +155,24 @@ pub fn answer(
                 })
                 .map(|(column, &x)| (column, x))
                 .collect()
+        }
+        QuestionKind::Drive { coordinate } => {
+            let name = &problem.coordinates[*coordinate].name;
+            let column = format!("{name}.drive");
+            let found = system
+                .reaction_columns()
+                .iter()
+                .zip(&evaluation.reactions)
+                .find(|(c, _)| **c == column)
+                .map(|(_, &x)| x);
+            let Some(x) = found else {
+                return Err(failure(
+                    question,
+                    format!("`{name}` is not prescribed, so nothing drives it"),
+                    "ask for the drive of a coordinate with a `motion`; a joint load's value is a `value` question",
+                ));
+            };
+            vec![(format!("{name}.drive"), x)]
         }
         QuestionKind::Steady { unknowns, .. } => unknowns
             .iter()

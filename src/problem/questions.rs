@@ -5,6 +5,8 @@
 //!   and `t` (a coordinate, a spring force, a kinetic energy);
 //! - `reaction`: the reaction at a joint (closure, rolling contact) listed in
 //!   `find.reactions`;
+//! - `drive`: the generalized force that drives a prescribed coordinate (one with a
+//!   `motion`): a motor's torque or an actuator's force;
 //! - `steady`: the values of some coordinates and rates (`unknowns`) that make the
 //!   expressions in `zero` vanish (default: every second derivative `q1''`), the rest of the
 //!   state held: a steady motion or an equilibrium; `zero` may add conditions such as a
@@ -34,6 +36,10 @@ pub enum QuestionKind {
     Value { expression: Expr, text: String },
     /// A reaction, as a site index (see [`Problem::site_name`](super::Problem::site_name)).
     Reaction { site: usize },
+    /// The generalized force that drives a prescribed coordinate, by index into
+    /// [`Problem::coordinates`](super::Problem::coordinates). Whether the coordinate is
+    /// prescribed is checked when the question is answered.
+    Drive { coordinate: usize },
     /// The `unknowns` that make the `zero` expressions vanish (default: every q''), each
     /// with its text.
     Steady {
@@ -65,7 +71,7 @@ pub struct Question {
     pub path: String,
 }
 
-const KEYS: [&str; 6] = ["text", "value", "reaction", "steady", "at", "unit"];
+const KEYS: [&str; 7] = ["text", "value", "reaction", "drive", "steady", "at", "unit"];
 
 impl Reader {
     /// Reads `find.questions`; `reactions` are the sites `find.reactions` requested.
@@ -105,7 +111,7 @@ impl Reader {
             .get("unit")
             .and_then(|v| string(v, &key_path(path, "unit"), &mut self.diag))
             .map(str::to_string);
-        let asked: Vec<&str> = ["value", "reaction", "steady"]
+        let asked: Vec<&str> = ["value", "reaction", "drive", "steady"]
             .into_iter()
             .filter(|k| fields.contains_key(*k))
             .collect();
@@ -118,7 +124,7 @@ impl Reader {
             self.diag.hint(
                 path,
                 message,
-                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions) or `steady`",
+                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed coordinate) or `steady`",
             );
             return None;
         }
@@ -156,6 +162,22 @@ impl Reader {
                     return None;
                 }
                 QuestionKind::Reaction { site }
+            }
+            "drive" => {
+                let dpath = key_path(path, "drive");
+                let name = string(&fields["drive"], &dpath, &mut self.diag)?;
+                let entry = self.state_name(name, &dpath)?;
+                if entry.order != 0 {
+                    self.diag.hint(
+                        &dpath,
+                        format!("`{}` is a rate, not a coordinate", name.trim()),
+                        "name the prescribed coordinate itself, e.g. \"theta\"",
+                    );
+                    return None;
+                }
+                QuestionKind::Drive {
+                    coordinate: entry.coordinate,
+                }
             }
             _ => self.steady(&fields["steady"], &key_path(path, "steady"))?,
         };

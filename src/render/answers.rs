@@ -88,6 +88,11 @@ fn asked(problem: &Problem, question: &Question) -> String {
         QuestionKind::Reaction { site } => {
             format!("Find the reaction at {}.", problem.site_name(*site))
         }
+        QuestionKind::Drive { coordinate } => format!(
+            "Find the generalized force ${}$ that drives ${}$.",
+            drive_tex(problem, *coordinate),
+            latex(&problem.coordinate_expr(*coordinate, 0))
+        ),
         QuestionKind::Steady { unknowns, zero } => {
             let unknowns: Vec<String> = unknowns
                 .iter()
@@ -204,6 +209,14 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
                 unit.to_string(),
             )
         }
+        QuestionKind::Drive { coordinate } => {
+            // A torque drives an angle, a force a distance.
+            let unit = match problem.coordinates[*coordinate].kind {
+                CoordinateKind::Angle => "N m",
+                CoordinateKind::Distance => "N",
+            };
+            (drive_tex(problem, *coordinate), unit.to_string())
+        }
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()
@@ -220,6 +233,14 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
         }
     };
     format!("{symbol} = {}{}", number_tex(value), unit_tex(&unit))
+}
+
+/// The drive of prescribed coordinate `i`, `Q_{\theta}`, as step 5 writes it.
+fn drive_tex(problem: &Problem, i: usize) -> String {
+    let name = &problem.coordinates[i].name;
+    latex(&crate::symbolic::Expr::sym(
+        crate::mechanics::constraints::drive_symbol(name),
+    ))
 }
 
 /// The name of the body whose unit vectors a site's reaction is written in.

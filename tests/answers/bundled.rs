@@ -1,0 +1,851 @@
+//! The bundled problems' answers, each against a reference written here: a closed form, a
+//! hand derivation (Lagrange's equations or Newton–Euler, worked in the comments), or
+//! conservation of energy or momentum. None is a number copied from the program.
+
+use super::{bundled_answers, close};
+use mbd_tutor::numeric::answers::Answer;
+use nalgebra::{Matrix2, Matrix3, Rotation3, Vector2, Vector3};
+use std::f64::consts::PI;
+
+/// The first value of answer `i`.
+fn v(a: &[Answer], i: usize) -> f64 {
+    a[i].values[0].1
+}
+
+/// The component `name` (`O.force.x`) of a reaction answer.
+fn part(a: &Answer, name: &str) -> f64 {
+    a.values
+        .iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, x)| *x)
+        .unwrap_or_else(|| panic!("no {name} in {:?}", a.values))
+}
+
+/// z of the planar cross product.
+fn cross2(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+fn perp(angle: f64) -> Vector2<f64> {
+    Vector2::new(-angle.sin(), angle.cos())
+}
+
+fn along(angle: f64) -> Vector2<f64> {
+    Vector2::new(angle.cos(), angle.sin())
+}
+
+/// Simulated answers: the problems integrate with a tolerance of 1e-10 per step, so over a
+/// few seconds the state and the conserved quantities drift by far less than this.
+const SIMULATED: f64 = 1e-7;
+
+#[test]
+fn every_bundled_statement_that_asks_declares_its_questions() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems");
+    let mut asked = 0;
+    for entry in std::fs::read_dir(&dir).expect("problems/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&path).expect("readable")).expect("JSON");
+        let statement = json["statement"].as_str().unwrap_or("");
+        if ["Find", "find", "How", "What", "?"]
+            .iter()
+            .any(|w| statement.contains(w))
+        {
+            let questions = json["find"]["questions"].as_array().map_or(0, Vec::len);
+            assert!(
+                questions > 0,
+                "{}: the statement asks, but find.questions is empty",
+                path.display()
+            );
+            asked += 1;
+        }
+    }
+    assert!(asked >= 28, "only {asked} statements ask anything");
+}
+
+#[test]
+fn the_collar_on_the_driven_rod() {
+    let a = bundled_answers("collar-on-driven-rod");
+    let (m, w, r, rd) = (0.3, 3.0, 0.2, 0.1);
+    // No force along the frictionless rod: r'' - r w^2 = 0.
+    close(v(&a, 0), r * w * w, 1e-9, "r''");
+    // Across the rod the collar needs m (r theta'' + 2 r' w) = 2 m r' w; no couple (theta'' = 0).
+    close(part(&a[1], "slide.force.x"), 0.0, 1e-9, "along the rod");
+    close(
+        part(&a[1], "slide.force.y"),
+        2.0 * m * rd * w,
+        1e-9,
+        "normal force",
+    );
+    close(part(&a[1], "slide.moment.z"), 0.0, 1e-9, "couple");
+    // The motor supplies dH_O/dt, H_O = (M L^2/3 + Ic + m r^2) w: 2 m r r' w.
+    close(v(&a, 2), 2.0 * m * r * rd * w, 1e-9, "motor torque");
+}
+
+#[test]
+fn the_cylinder_rolling_down_the_incline() {
+    let a = bundled_answers("cylinder-on-incline");
+    let (m, r, g, alpha) = (2.0, 0.1, 9.81, PI / 6.0);
+    // m x'' = m g sin(alpha) + F, (m R^2/2) theta'' = R F... with x' = -R theta': x'' = 2/3 g sin(alpha).
+    let xdd = 2.0 / 3.0 * g * alpha.sin();
+    close(v(&a, 0), xdd, 1e-9, "x''");
+    close(v(&a, 1), -xdd / r, 1e-9, "theta''");
+    close(
+        part(&a[2], "contact.force.x"),
+        -m * g * alpha.sin() / 3.0,
+        1e-9,
+        "friction",
+    );
+    close(
+        part(&a[2], "contact.force.y"),
+        m * g * alpha.cos(),
+        1e-9,
+        "normal force",
+    );
+}
+
+/// The chain of five links in absolute angles: M theta'' + C + G = Q (Lagrange's equations,
+/// with M as the statement gives it).
+#[test]
+fn the_five_link_chain_by_lagranges_equations_in_absolute_angles() {
+    let a = bundled_answers("five-link-chain");
+    let (m, l, c, g) = (0.2, 0.3, 0.002, 9.81);
+    let n = 5;
+    let q = [0.6, -0.3, 0.2, -0.1, 0.15];
+    let qd = [0.5, 0.0, -0.4, 0.3, 0.0];
+    let cum = |x: &[f64]| {
+        x.iter()
+            .scan(0.0, |s, v| {
+                *s += v;
+                Some(*s)
+            })
+            .collect::<Vec<f64>>()
+    };
+    let (th, thd) = (cum(&q), cum(&qd));
+    // Coefficient of link i and j (1-based): n - max(i, j) + 1/2, or n - i + 1/3 on the diagonal.
+    let coef = |i: usize, j: usize| {
+        if i == j {
+            (n - i) as f64 + 1.0 / 3.0
+        } else {
+            (n - i.max(j)) as f64 + 0.5
+        }
+    };
+    let mut mm = nalgebra::DMatrix::zeros(n, n);
+    let mut rhs = nalgebra::DVector::zeros(n);
+    for i in 0..n {
+        for j in 0..n {
+            let cij = coef(i + 1, j + 1);
+            mm[(i, j)] = m * l * l * cij * (th[i] - th[j]).cos();
+            // The velocity terms: sum_j m L^2 c_ij sin(theta_i - theta_j) theta_j'^2.
+            if i != j {
+                rhs[i] -= m * l * l * cij * (th[i] - th[j]).sin() * thd[j] * thd[j];
+            }
+        }
+        // Gravity: dV/dtheta_i = m g L (n - i + 1/2) sin(theta_i).
+        rhs[i] -= m * g * l * ((n - i - 1) as f64 + 0.5) * th[i].sin();
+        // The pins' friction -c q_k' on the relative angles: Q_i = -c q_i' + c q_(i+1)'.
+        rhs[i] += -c * qd[i] + if i + 1 < n { c * qd[i + 1] } else { 0.0 };
+    }
+    let thdd = mm.clone().lu().solve(&rhs).expect("regular");
+    for i in 0..n {
+        let want = thdd[i] - if i > 0 { thdd[i - 1] } else { 0.0 };
+        close(v(&a, i), want, 1e-8, &format!("q{}''", i + 1));
+    }
+    // The energy changes at theta'^T (M theta'' + C + G) = theta'^T Q = -c sum q_i'^2.
+    let rate: f64 = (0..n)
+        .map(|i| {
+            let mut row = m * g * l * ((n - i - 1) as f64 + 0.5) * th[i].sin();
+            for j in 0..n {
+                row += mm[(i, j)] * thdd[j];
+                if i != j {
+                    row += m * l * l * coef(i + 1, j + 1) * (th[i] - th[j]).sin() * thd[j] * thd[j];
+                }
+            }
+            thd[i] * row
+        })
+        .sum();
+    close(v(&a, 5), -rate, 1e-8, "dissipation");
+    close(
+        v(&a, 5),
+        c * qd.iter().map(|x| x * x).sum::<f64>(),
+        1e-12,
+        "c sum q'^2",
+    );
+}
+
+/// The four-bar from rest: the loop's kinematic coefficients, Lagrange's equation in q1, then
+/// Newton–Euler body by body for the pin forces.
+#[test]
+fn the_four_bar_released_from_rest() {
+    let a = bundled_answers("four-bar");
+    let (la, lb, lc, d, m, g) = (0.1, 0.3, 0.25, 0.3, 1.0, 9.81);
+    let q1 = 1.2f64;
+    let p = la * along(q1);
+    let qpin = Vector2::new(d, 0.0);
+    // R on the rocker's circle at the coupler's length from P (Newton from the problem's guess).
+    let mut q3 = 1.6f64;
+    for _ in 0..50 {
+        let rr = qpin + lc * along(q3) - p;
+        let f = rr.norm_squared() - lb * lb;
+        let df = 2.0 * rr.dot(&(lc * perp(q3)));
+        q3 -= f / df;
+    }
+    let r = qpin + lc * along(q3);
+    let phib = (r - p).y.atan2((r - p).x);
+    // a eA' + b phiB' eB' = c q3' eC' (the loop's velocity, per unit q1').
+    let k = Matrix2::from_columns(&[lb * perp(phib), -lc * perp(q3)]);
+    let s = k.lu().solve(&(-la * perp(q1))).expect("regular");
+    let (dphib, dq3) = (s.x, s.y);
+    let dga = la / 2.0 * perp(q1);
+    let dgb = la * perp(q1) + lb / 2.0 * dphib * perp(phib);
+    let dgc = lc / 2.0 * dq3 * perp(q3);
+    let (ia, ib, ic) = (m * la * la / 12.0, m * lb * lb / 12.0, m * lc * lc / 12.0);
+    let j = m * (dga.norm_squared() + dgb.norm_squared() + dgc.norm_squared())
+        + ia
+        + ib * dphib * dphib
+        + ic * dq3 * dq3;
+    let qg = -m * g * (dga.y + dgb.y + dgc.y);
+    // From rest the velocity terms vanish: J q1'' = Q.
+    let q1dd = qg / j;
+    let (phibdd, q3dd) = (dphib * q1dd, dq3 * q1dd);
+    close(v(&a, 0), q1dd, 1e-7, "q1''");
+    close(v(&a, 1), phibdd - q1dd, 1e-7, "q2''");
+    close(v(&a, 2), q3dd, 1e-7, "q3''");
+    // Accelerations of the mass centers of A and B (no centripetal terms from rest); the
+    // rocker turns about the fixed Q.
+    let aa = dga * q1dd;
+    let ab = la * perp(q1) * q1dd + lb / 2.0 * perp(phib) * phibdd;
+    let (ga, gb, gc) = (
+        la / 2.0 * along(q1),
+        p + lb / 2.0 * along(phib),
+        qpin + lc / 2.0 * along(q3),
+    );
+    let weight = Vector2::new(0.0, -m * g);
+    // Rocker about Q: (R - Q) x F_R + (G_C - Q) x W = (m c^2/3) q3''.
+    // Coupler about P: (R - P) x (-F_R) + (G_B - P) x W = I_B phiB'' + (G_B - P) x m a_B.
+    let (u, w) = (r - qpin, r - p);
+    let k = Matrix2::new(-u.y, u.x, w.y, -w.x);
+    let rhs = Vector2::new(
+        m * lc * lc / 3.0 * q3dd - cross2(gc - qpin, weight),
+        ib * phibdd + cross2(gb - p, m * ab) - cross2(gb - p, weight),
+    );
+    let f_r = k.lu().solve(&rhs).expect("regular");
+    let f_p = m * ab + f_r - weight;
+    let f_o = m * aa + f_p - weight;
+    // The crank about O closes the check: -P x F_P + G_A x W = (m a^2/3) q1''.
+    close(
+        -cross2(p, f_p) + cross2(ga, weight),
+        m * la * la / 3.0 * q1dd,
+        1e-9,
+        "crank moments",
+    );
+    close(part(&a[3], "O.force.x"), f_o.x, 1e-7, "O x");
+    close(part(&a[3], "O.force.y"), f_o.y, 1e-7, "O y");
+    // R is reported in the coupler's unit vectors.
+    close(
+        part(&a[4], "R.force.x"),
+        f_r.dot(&along(phib)),
+        1e-7,
+        "R along B",
+    );
+    close(
+        part(&a[4], "R.force.y"),
+        f_r.dot(&perp(phib)),
+        1e-7,
+        "R across B",
+    );
+}
+
+#[test]
+fn the_knife_edge_runs_on_a_circle() {
+    let a = bundled_answers("knife-edge");
+    // No force along the blade and no moment: the speed v and the turning rate w stay
+    // constant, so the blade's point runs on a circle of radius v/w.
+    let (th0, w) = (0.3f64, 1.0);
+    let vel = 1.2 / th0.cos();
+    close(v(&a, 0), -vel * th0.sin() * w, 1e-9, "x''");
+    close(v(&a, 1), vel * th0.cos() * w, 1e-9, "y''");
+    close(v(&a, 2), 0.0, 1e-9, "theta''");
+    let th = th0 + w * 1.0;
+    close(
+        v(&a, 3),
+        vel / w * (th.sin() - th0.sin()),
+        SIMULATED,
+        "x(1)",
+    );
+    close(
+        v(&a, 4),
+        -vel / w * (th.cos() - th0.cos()),
+        SIMULATED,
+        "y(1)",
+    );
+    close(v(&a, 5), th, SIMULATED, "theta(1)");
+}
+
+#[test]
+fn the_cartesian_pendulum_against_lagranges_equation_in_the_angle() {
+    let a = bundled_answers("pendulum-cartesian");
+    let (m, mx, l, g) = (1.0, 0.05, 0.5, 9.81);
+    // x = L sin(phi), y = -L cos(phi); the carriage moves with x only:
+    // T = m L^2 phi'^2/2 + mX (L cos(phi) phi')^2/2, V = -m g L cos(phi), so
+    // (m + mX cos^2) L phi'' = mX L cos sin phi'^2 - m g sin.
+    let (s, c) = (0.6, 0.8);
+    let pd = 0.6 / (l * c);
+    let pdd = (mx * l * c * s * pd * pd - m * g * s) / ((m + mx * c * c) * l);
+    close(v(&a, 0), l * (c * pdd - s * pd * pd), 1e-9, "x''");
+    close(v(&a, 1), l * (s * pdd + c * pd * pd), 1e-9, "y''");
+    close(v(&a, 2), l * pdd, 1e-9, "along the path");
+}
+
+/// Springs pull with k (l - l0) toward their anchors; Newton's and Euler's laws for the plate.
+fn plate_accelerations(
+    (m, i, g): (f64, f64, f64),
+    (pos, th, vel, w): (Vector2<f64>, f64, Vector2<f64>, f64),
+    springs: &[(Vector2<f64>, Vector2<f64>, f64, f64)],
+    dashpot: Option<(Vector2<f64>, Vector2<f64>, f64)>,
+    couple: f64,
+) -> (Vector3<f64>, Vec<f64>) {
+    let rot = nalgebra::Rotation2::new(th);
+    let mut force = Vector2::new(0.0, -m * g);
+    let mut moment = couple;
+    let mut tensions = Vec::new();
+    for &(anchor, corner, k, l0) in springs {
+        let r = rot * corner;
+        let d = anchor - (pos + r);
+        let t = k * (d.norm() - l0);
+        tensions.push(t);
+        force += t * d / d.norm();
+        moment += cross2(r, t * d / d.norm());
+    }
+    if let Some((anchor, corner, c)) = dashpot {
+        let r = rot * corner;
+        let d = pos + r - anchor;
+        let vd = vel + w * Vector2::new(-r.y, r.x);
+        let rate = d.dot(&vd) / d.norm();
+        tensions.push(c * rate);
+        let f = -c * rate * d / d.norm();
+        force += f;
+        moment += cross2(r, f);
+    }
+    (Vector3::new(force.x / m, force.y / m, moment / i), tensions)
+}
+
+#[test]
+fn the_plate_on_two_springs_by_newton_and_euler() {
+    let a = bundled_answers("plate-on-two-springs");
+    let (ha, b, d, e) = (0.25, 0.1, 0.5, 0.8);
+    let (acc, _) = plate_accelerations(
+        (2.0, 0.05, 9.81),
+        (Vector2::new(0.05, 0.0), 0.2, Vector2::new(0.2, -0.1), 0.3),
+        &[
+            (Vector2::new(-d, e), Vector2::new(-ha, b), 150.0, 0.4),
+            (Vector2::new(d, e), Vector2::new(ha, b), 120.0, 0.45),
+        ],
+        None,
+        0.0,
+    );
+    for (i, name) in ["x''", "y''", "theta''"].into_iter().enumerate() {
+        close(v(&a, i), acc[i], 1e-9, name);
+    }
+}
+
+#[test]
+fn the_floating_plate_s_spring_and_dashpot_forces() {
+    let a = bundled_answers("floating-plate-springs");
+    let (m, w, h) = (4.0, 0.6, 0.3);
+    let (acc, forces) = plate_accelerations(
+        (m, m * (w * w + h * h) / 12.0, 9.81),
+        (Vector2::new(0.02, 0.1), 0.1, Vector2::new(0.1, -0.2), 0.5),
+        &[
+            (
+                Vector2::new(-0.4, 1.0),
+                Vector2::new(-w / 2.0, h / 2.0),
+                200.0,
+                0.75,
+            ),
+            (
+                Vector2::new(0.4, 1.0),
+                Vector2::new(w / 2.0, h / 2.0),
+                200.0,
+                0.75,
+            ),
+        ],
+        Some((Vector2::new(0.0, -0.8), Vector2::new(0.0, -h / 2.0), 3.0)),
+        0.5,
+    );
+    close(v(&a, 0), forces[0], 1e-9, "left spring");
+    close(v(&a, 1), forces[1], 1e-9, "right spring");
+    close(v(&a, 2), forces[2], 1e-9, "dashpot");
+    for (i, name) in ["x''", "y''", "theta''"].into_iter().enumerate() {
+        close(v(&a, 3 + i), acc[i], 1e-9, name);
+    }
+}
+
+#[test]
+fn the_wheel_pendulum_released_from_rest() {
+    let a = bundled_answers("wheel-pendulum");
+    let (big_m, r, m, lp, g, psi) = (3.0, 0.2, 1.0, 0.6, 9.81, 0.8f64);
+    // Rolling: x' = -R theta'. With psi = theta + phi the rod's angle,
+    // T = (3M/2 + m) x'^2/2 + m Lp cos(psi) x' psi'/2 + m Lp^2 psi'^2/6,
+    // V = -m g Lp cos(psi)/2; from rest the velocity terms vanish.
+    let mm = Matrix2::new(
+        1.5 * big_m + m,
+        m * lp / 2.0 * psi.cos(),
+        m * lp / 2.0 * psi.cos(),
+        m * lp * lp / 3.0,
+    );
+    let s = mm
+        .lu()
+        .solve(&Vector2::new(0.0, -m * g * lp / 2.0 * psi.sin()))
+        .expect("regular");
+    let (xdd, psidd) = (s.x, s.y);
+    let thdd = -xdd / r;
+    close(v(&a, 0), xdd, 1e-9, "x''");
+    close(v(&a, 1), thdd, 1e-9, "theta''");
+    close(v(&a, 2), psidd - thdd, 1e-9, "phi''");
+    // Newton for the rod and for the whole: the rod's center accelerates at a_P.
+    let ap = Vector2::new(
+        xdd + lp / 2.0 * psi.cos() * psidd,
+        lp / 2.0 * psi.sin() * psidd,
+    );
+    close(
+        part(&a[3], "ground.force.x"),
+        big_m * xdd + m * ap.x,
+        1e-9,
+        "ground x",
+    );
+    close(
+        part(&a[3], "ground.force.y"),
+        m * ap.y + (big_m + m) * g,
+        1e-9,
+        "ground y",
+    );
+    close(part(&a[4], "pin.force.x"), m * ap.x, 1e-9, "pin x");
+    close(part(&a[4], "pin.force.y"), m * ap.y + m * g, 1e-9, "pin y");
+    // At rest the energy is the potential alone; it stays so.
+    let e0 = big_m * g * r + m * g * (r - lp / 2.0 * psi.cos());
+    close(v(&a, 5), e0, 1e-9, "energy at the release");
+    close(v(&a, 6), e0, SIMULATED, "energy after 4 s");
+}
+
+/// The rotation of the body-fixed sequence `axes` by `angles`.
+fn rotation(axes: [Vector3<f64>; 3], angles: [f64; 3]) -> Matrix3<f64> {
+    let mut r = Matrix3::identity();
+    for (axis, angle) in axes.iter().zip(angles) {
+        r *= Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(*axis), angle).matrix();
+    }
+    r
+}
+
+#[test]
+fn the_rolling_coin_keeps_its_energy_and_obeys_newton_and_euler() {
+    let a = bundled_answers("rolling-coin");
+    let (m, r, g, th) = (0.5, 0.1, 9.81, 0.3f64);
+    let (psid, phid) = (1.0, 8.0);
+    let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+    // Orientation z-x-y (heading, lean, spin); the axle is D.y.
+    let rot = rotation([z, x, y], [0.0, th, 0.0]);
+    let axle = rot * y;
+    let inertia =
+        rot * Matrix3::from_diagonal(&Vector3::new(
+            m * r * r / 4.0,
+            m * r * r / 2.0,
+            m * r * r / 4.0,
+        )) * rot.transpose();
+    let omega = psid * z + phid * axle;
+    // The contact point is the rim's lowest point: from the centre, R (0, sin, -cos).
+    let to_contact = r * Vector3::new(0.0, th.sin(), -th.cos());
+    let vel = omega.cross(&(-to_contact));
+    let e0 =
+        m * vel.norm_squared() / 2.0 + omega.dot(&(inertia * omega)) / 2.0 + m * g * r * th.cos();
+    close(v(&a, 4), e0, 1e-9, "energy at the start");
+    close(v(&a, 5), e0, SIMULATED, "energy after 5 s");
+    // Newton: the floor's force is m (a_G + g z). Euler about the centre:
+    // (C - G) x F = I alpha + omega x I omega, with (theta' = 0)
+    // alpha = psi'' z + theta'' x + phi'' axle + phi' psi' (z x axle).
+    let state = &a[3];
+    let p = mbd_tutor::problem::load(
+        &std::fs::read_to_string(crate::support::problem("rolling-coin")).expect("readable"),
+    )
+    .expect("valid");
+    let derivation =
+        mbd_tutor::pipeline::derive(&p, mbd_tutor::equations::Method::MotionLaw).expect("derives");
+    let solver = mbd_tutor::pipeline::Solver::new(&p, &derivation);
+    use mbd_tutor::numeric::system::System;
+    let qdd = solver
+        .evaluate(0.0, &state.q, &state.rates)
+        .expect("solves")
+        .accelerations;
+    let (ag, psidd, thdd, phidd) = (Vector3::new(qdd[0], qdd[1], qdd[2]), qdd[3], qdd[4], qdd[5]);
+    close(psidd, v(&a, 0), 1e-12, "psi''");
+    close(thdd, v(&a, 1), 1e-12, "theta''");
+    close(phidd, v(&a, 2), 1e-12, "phi''");
+    let force = m * (ag + g * z);
+    for (k, axis) in ["x", "y", "z"].into_iter().enumerate() {
+        close(
+            part(&a[3], &format!("floor.force.{axis}")),
+            force[k],
+            1e-9,
+            "floor force",
+        );
+    }
+    let alpha = psidd * z + thdd * x + phidd * axle + phid * psid * z.cross(&axle);
+    let residual = to_contact.cross(&force) - inertia * alpha - omega.cross(&(inertia * omega));
+    assert!(residual.norm() < 1e-9, "Euler's equations: {residual}");
+}
+
+#[test]
+fn the_two_wheeled_cart_under_equal_torques() {
+    let a = bundled_answers("two-wheeled-cart");
+    let (mc, iyy, mw, r, tau) = (6.0, 0.1, 1.0, 0.15, 0.6);
+    // With equal torques it goes straight: theta_w = phi + q the wheels' angle, x = R theta_w.
+    // T = ((mC + 2 mW) R^2 + mW R^2) theta_w'^2/2 + Iyy phi'^2/2; the motors do work
+    // 2 tau (d theta_w - d phi).
+    let thwdd = 2.0 * tau / ((mc + 3.0 * mw) * r * r);
+    let phidd = -2.0 * tau / iyy;
+    close(v(&a, 0), r * thwdd, 1e-9, "x''");
+    close(v(&a, 1), phidd, 1e-9, "phi''");
+    close(v(&a, 2), thwdd - phidd, 1e-9, "qL''");
+    close(v(&a, 3), thwdd - phidd, 1e-9, "qR''");
+    assert!(v(&a, 4).abs() < 1e-9, "psi'' = {}", v(&a, 4));
+}
+
+/// A slider-crank with the crank at angle q: the rod's absolute angle, the slider's
+/// position, and their derivatives by q, in closed form.
+struct SliderCrank {
+    r: f64,
+    l: f64,
+}
+
+impl SliderCrank {
+    /// (phi, dphi/dq, x, dx/dq, G_B, dG_B/dq).
+    fn at(&self, q: f64) -> (f64, f64, f64, f64, Vector2<f64>, Vector2<f64>) {
+        let (r, l) = (self.r, self.l);
+        let phi = (-r * q.sin() / l).asin();
+        let dphi = -r * q.cos() / (l * phi.cos());
+        let x = r * q.cos() + l * phi.cos();
+        let dx = -r * q.sin() - l * phi.sin() * dphi;
+        let gb = r * along(q) + l / 2.0 * along(phi);
+        let dgb = r * perp(q) + l / 2.0 * dphi * perp(phi);
+        (phi, dphi, x, dx, gb, dgb)
+    }
+}
+
+#[test]
+fn the_driven_slider_crank_s_motor_torque_and_pin_forces() {
+    let a = bundled_answers("slider-crank-driven");
+    let (r, l, ma, mb, mc, w, g) = (0.1, 0.35, 1.2, 1.5, 2.0, 4.0 * PI, 9.81);
+    // At the dead centre (q1 = 0) the rod lies along x and turns at -r w/l with no angular
+    // acceleration; the slider accelerates at -r w^2 (1 + r/l), the rod's center at
+    // -r w^2 (1 + r/(2 l)), the crank's at -r w^2/2, all along x.
+    let a_c = -r * w * w * (1.0 + r / l);
+    let a_b = -r * w * w * (1.0 + r / (2.0 * l));
+    let a_a = -r * w * w / 2.0;
+    // Rod about the crank pin: -l Q_y - (l/2) mB g = 0; slider along x: Q_x = mC a_C.
+    let (qx, qy) = (mc * a_c, -mb * g / 2.0);
+    // Rod: P - Q - mB g y = mB a_B; crank: F_O - P - mA g y = mA a_A.
+    let (px, py) = (mb * a_b + qx, qy + mb * g);
+    let (ox, oy) = (ma * a_a + px, py + ma * g);
+    // Crank about O: tau - r P_y - (r/2) mA g = 0.
+    close(
+        v(&a, 0),
+        r * py + r / 2.0 * ma * g,
+        1e-9,
+        "motor torque at t = 0",
+    );
+    close(
+        v(&a, 0),
+        r * g * (ma + mb) / 2.0,
+        1e-9,
+        "by the power of gravity",
+    );
+    close(part(&a[1], "O.force.x"), ox, 1e-9, "O x");
+    close(part(&a[1], "O.force.y"), oy, 1e-9, "O y");
+    close(part(&a[2], "Q.force.x"), qx, 1e-9, "Q along the rod");
+    close(part(&a[2], "Q.force.y"), qy, 1e-9, "Q across the rod");
+    // At any instant the motor's power is the rate of the energy, tau w = dE/dt = w dE/dq:
+    // E(q) = w^2 J(q)/2 + V(q), J the inertia reduced to the crank.
+    let sc = SliderCrank { r, l };
+    let energy = |q: f64| {
+        let (_, dphi, _, dx, gb, dgb) = sc.at(q);
+        let j = ma * r * r / 3.0
+            + mb * dgb.norm_squared()
+            + mb * l * l / 12.0 * dphi * dphi
+            + mc * dx * dx;
+        w * w * j / 2.0 + g * (ma * r / 2.0 * q.sin() + mb * gb.y)
+    };
+    let q = w * 0.1;
+    let h = 1e-5;
+    close(
+        v(&a, 3),
+        (energy(q + h) - energy(q - h)) / (2.0 * h),
+        1e-6,
+        "motor torque at 0.1 s",
+    );
+}
+
+#[test]
+fn the_engine_s_crank_and_its_energy() {
+    let a = bundled_answers("slider-crank-flywheel");
+    let (r, l, ia, mb, mc, f0, e, h, g) = (0.1, 0.35, 0.05, 1.5, 2.0, 100.0, 0.03f64, 0.48, 9.81);
+    let sc = SliderCrank { r, l };
+    // One degree of freedom: E = J(q) q'^2/2 + V(q), the gas's potential
+    // F0 e^1.4 (h - x)^-0.4/0.4; Lagrange: J q'' + J'(q) q'^2/2 + V'(q) = 0.
+    let j = |q: f64| {
+        let (_, dphi, _, dx, _, dgb) = sc.at(q);
+        ia + mb * dgb.norm_squared() + mb * l * l / 12.0 * dphi * dphi + mc * dx * dx
+    };
+    let pot = |q: f64| {
+        let (_, _, x, _, gb, _) = sc.at(q);
+        mb * g * gb.y + f0 * e.powf(1.4) * (h - x).powf(-0.4) / 0.4
+    };
+    let (q, qd, step) = (0.4, 20.0, 1e-5);
+    let dj = (j(q + step) - j(q - step)) / (2.0 * step);
+    let dv = (pot(q + step) - pot(q - step)) / (2.0 * step);
+    close(v(&a, 0), -(dj * qd * qd / 2.0 + dv) / j(q), 1e-6, "q1''");
+    let e0 = j(q) * qd * qd / 2.0 + pot(q);
+    close(v(&a, 1), e0, 1e-9, "energy at the start");
+    close(v(&a, 2), e0, SIMULATED, "energy after 2 s");
+}
+
+#[test]
+fn the_simple_pendulum_comes_back_after_the_large_amplitude_period() {
+    let a = bundled_answers("simple-pendulum");
+    let (l, g, th, thd) = (0.8, 9.81, 0.6f64, 0.5);
+    // Energy: cos(theta_max) = cos(theta) - L theta'^2/(2 g).
+    let th_max = (th.cos() - l * thd * thd / (2.0 * g)).acos();
+    close(v(&a, 3), th_max, 1e-12, "theta_max");
+    // T = 4 sqrt(L/g) K(k), k = sin(theta_max/2), K by the arithmetic-geometric mean.
+    let k = (th_max / 2.0).sin();
+    let (mut p, mut q) = (1.0f64, (1.0 - k * k).sqrt());
+    for _ in 0..8 {
+        (p, q) = ((p + q) / 2.0, (p * q).sqrt());
+    }
+    let period = 4.0 * (l / g).sqrt() * PI / (2.0 * p);
+    assert!(
+        (a[4].time - period).abs() < 1e-9,
+        "asked at {} s, T = {period}",
+        a[4].time
+    );
+    // After one period the bob is back where it started, moving as it started.
+    close(v(&a, 4), th, SIMULATED, "theta(T)");
+    close(v(&a, 5), thd, 1e-6, "theta'(T)");
+}
+
+#[test]
+fn the_spherical_pendulum_keeps_its_angular_momentum_about_the_vertical_and_its_energy() {
+    let a = bundled_answers("spherical-pendulum");
+    let (m, rb, l, g) = (1.0, 0.05, 1.0, 9.81);
+    let (q, qd) = ([0.5, 0.3, 0.0], [0.2, 1.0, 0.3]);
+    let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+    let rot = rotation([x, y, z], q);
+    // omega = q1' x + q2' (Rx y) + q3' (Rx Ry z); the ball's center is -L along the body's z.
+    let omega = qd[0] * x
+        + qd[1] * (rotation([x, y, z], [q[0], 0.0, 0.0]) * y)
+        + qd[2] * (rotation([x, y, z], [q[0], q[1], 0.0]) * z);
+    let axis = rot * z;
+    let i_o = (2.0 / 5.0 * m * rb * rb) * Matrix3::identity()
+        + m * l * l * (Matrix3::identity() - axis * axis.transpose());
+    let h = (i_o * omega).z;
+    let e = omega.dot(&(i_o * omega)) / 2.0 - m * g * l * axis.z;
+    close(v(&a, 4), h, 1e-12, "H at the start");
+    close(v(&a, 5), h, SIMULATED, "H after 4 s");
+    close(v(&a, 6), e, 1e-12, "energy at the start");
+    close(v(&a, 7), e, SIMULATED, "energy after 4 s");
+}
+
+/// Euler's equations I w' + w x I w = 0 in body axes, with w and w' from the x-y-z angles:
+/// w = (c2 c3 a1' + s3 a2', -c2 s3 a1' + c3 a2', s2 a1' + a3') and its derivative.
+fn euler_residual(inertia: Matrix3<f64>, q: [f64; 3], qd: [f64; 3], qdd: [f64; 3]) -> Vector3<f64> {
+    let (s2, c2, s3, c3) = (q[1].sin(), q[1].cos(), q[2].sin(), q[2].cos());
+    let w = Vector3::new(
+        c2 * c3 * qd[0] + s3 * qd[1],
+        -c2 * s3 * qd[0] + c3 * qd[1],
+        s2 * qd[0] + qd[2],
+    );
+    let wd = Vector3::new(
+        c2 * c3 * qdd[0] + s3 * qdd[1] - s2 * c3 * qd[1] * qd[0] - c2 * s3 * qd[2] * qd[0]
+            + c3 * qd[2] * qd[1],
+        -c2 * s3 * qdd[0] + c3 * qdd[1] + s2 * s3 * qd[1] * qd[0]
+            - c2 * c3 * qd[2] * qd[0]
+            - s3 * qd[2] * qd[1],
+        s2 * qdd[0] + qdd[2] + c2 * qd[1] * qd[0],
+    );
+    inertia * wd + w.cross(&(inertia * w))
+}
+
+#[test]
+fn the_torque_free_bodies_obey_eulers_equations_and_keep_their_energy() {
+    let a = bundled_answers("torque-free-body");
+    for i in 0..3 {
+        assert!(
+            v(&a, i).abs() < 1e-12,
+            "the mass center accelerates: {}",
+            v(&a, i)
+        );
+    }
+    let inertia = Matrix3::new(4.0, -0.5, 0.2, -0.5, 6.0, 0.3, 0.2, 0.3, 8.0);
+    let r = euler_residual(
+        inertia,
+        [0.0; 3],
+        [0.2, -0.1, 2.0],
+        [v(&a, 3), v(&a, 4), v(&a, 5)],
+    );
+    assert!(r.norm() < 1e-9, "Euler's equations: {r}");
+
+    let a = bundled_answers("torque-free-body-speeds");
+    let inertia = Matrix3::from_diagonal(&Vector3::new(4.0, 6.0, 8.0));
+    let (q, qd) = ([0.3, -0.2, 0.5], [0.2, -0.1, 2.0]);
+    let r = euler_residual(inertia, q, qd, [v(&a, 0), v(&a, 1), v(&a, 2)]);
+    assert!(r.norm() < 1e-9, "Euler's equations: {r}");
+    // The kinetic energy from the angular velocity in N, turned into body axes.
+    let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+    let omega_n = qd[0] * x
+        + qd[1] * (rotation([x, y, z], [q[0], 0.0, 0.0]) * y)
+        + qd[2] * (rotation([x, y, z], [q[0], q[1], 0.0]) * z);
+    let omega_b = rotation([x, y, z], q).transpose() * omega_n;
+    let t = omega_b.dot(&(inertia * omega_b)) / 2.0;
+    close(v(&a, 3), t, 1e-12, "T at the start");
+    close(v(&a, 4), t, SIMULATED, "T after 10 s");
+}
+
+#[test]
+fn the_two_link_arm_held_at_its_target() {
+    let a = bundled_answers("two-link-robot-arm");
+    let (m1, l1, m2, l2, g) = (3.0, 0.5, 2.0, 0.4, 9.81);
+    let (tau1, tau2, r1, r2, kp1, kp2) = (15.95, 1.78, 0.6f64, 0.5f64, 60.0, 20.0);
+    // Lagrange at rest: M(q) q'' = T - G(q), with
+    // M11 = m1 L1^2/3 + m2 (L1^2 + L2^2/3 + L1 L2 cos q2), M12 = m2 (L2^2/3 + L1 L2 cos q2/2),
+    // M22 = m2 L2^2/3, G1 = g ((m1/2 + m2) L1 cos q1 + m2 L2/2 cos(q1 + q2)),
+    // G2 = g m2 L2/2 cos(q1 + q2).
+    let gravity = |q1: f64, q2: f64| {
+        Vector2::new(
+            g * ((m1 / 2.0 + m2) * l1 * q1.cos() + m2 * l2 / 2.0 * (q1 + q2).cos()),
+            g * m2 * l2 / 2.0 * (q1 + q2).cos(),
+        )
+    };
+    let c2 = r2.cos();
+    let mm = Matrix2::new(
+        m1 * l1 * l1 / 3.0 + m2 * (l1 * l1 + l2 * l2 / 3.0 + l1 * l2 * c2),
+        m2 * (l2 * l2 / 3.0 + l1 * l2 * c2 / 2.0),
+        m2 * (l2 * l2 / 3.0 + l1 * l2 * c2 / 2.0),
+        m2 * l2 * l2 / 3.0,
+    );
+    let qdd = mm
+        .lu()
+        .solve(&(Vector2::new(tau1, tau2) - gravity(r1, r2)))
+        .expect("regular");
+    close(v(&a, 5), qdd.x, 1e-8, "q1'' at the target");
+    close(v(&a, 6), qdd.y, 1e-8, "q2'' at the target");
+    // Where it comes to rest the torques balance gravity: tau + kp (r - q) = G(q).
+    let rest = &a[7].values;
+    let (q1, q2) = (rest[0].1, rest[1].1);
+    let left = Vector2::new(tau1 + kp1 * (r1 - q1), tau2 + kp2 * (r2 - q2)) - gravity(q1, q2);
+    assert!(left.norm() < 1e-9, "statics: {left}");
+}
+
+#[test]
+fn the_rrp_arm_s_extension_and_the_slide_held_at_the_targets() {
+    let a = bundled_answers("arm-3d-rrp");
+    let (mt, rt, mu, lu, me, le, g) = (4.0, 0.1, 2.0, 0.5, 1.0, 0.4, 9.81);
+    let (tau1, tau2, f3, r2, r3) = (0.5, 7.75, 4.7, 0.5f64, 0.2);
+    close(v(&a, 0), tau1, 1e-12, "turret torque");
+    // Part 2: the right-hand side equals q3'' from the whole dynamics.
+    close(v(&a, 6), v(&a, 5), 1e-9, "the extension's equation");
+    // Held at rest at the targets: E's center at r = r3 + LE/2 from S on the turret's axis.
+    // Along the arm: mE q3'' = f3 - mE g sin q2. About the shoulder (no coupling with the
+    // turret, the arm's plane holding the vertical): (mU LU^2/3 + mE LE^2/12 + mE r^2) q2''
+    // = tau2 - g cos q2 (mU LU/2 + mE r). About the vertical: I_v q1'' = tau1.
+    let (s, c, r) = (r2.sin(), r2.cos(), r3 + le / 2.0);
+    let q3dd = f3 / me - g * s;
+    let q2dd = (tau2 - g * c * (mu * lu / 2.0 + me * r))
+        / (mu * lu * lu / 3.0 + me * le * le / 12.0 + me * r * r);
+    close(v(&a, 8), q2dd, 1e-8, "q2'' held");
+    close(v(&a, 9), q3dd, 1e-8, "q3'' held");
+    let (iux, iuz, iex, iez) = (2e-3, mu * lu * lu / 12.0, 5e-4, me * le * le / 12.0);
+    let i_v = mt * rt * rt / 2.0
+        + iux * s * s
+        + iuz * c * c
+        + mu * (lu / 2.0 * c).powi(2)
+        + iex * s * s
+        + iez * c * c
+        + me * (r * c).powi(2);
+    let q1dd = tau1 / i_v;
+    // The slide's force on E in U's axes (x along the arm, y horizontal, z up across it):
+    // E's center accelerates at (q3'', r cos q2 q1'', r q2''); gravity is -g (sin, 0, cos).
+    let held = &a[10];
+    close(part(held, "slide.force.x"), 0.0, 1e-9, "along the slide");
+    close(
+        part(held, "slide.force.y"),
+        me * r * c * q1dd,
+        1e-8,
+        "sideways",
+    );
+    close(
+        part(held, "slide.force.z"),
+        me * (r * q2dd + g * c),
+        1e-8,
+        "across",
+    );
+    // Its couple about E's inner end: I alpha + r_c x mE (a - g), alpha = (q1'' s, -q2'', q1'' c).
+    let (iey, rc) = (me * le * le / 12.0, le / 2.0);
+    close(
+        part(held, "slide.moment.x"),
+        iex * q1dd * s,
+        1e-8,
+        "couple x",
+    );
+    close(
+        part(held, "slide.moment.y"),
+        -iey * q2dd - rc * me * (r * q2dd + g * c),
+        1e-8,
+        "couple y",
+    );
+    close(
+        part(held, "slide.moment.z"),
+        iez * q1dd * c + rc * me * r * c * q1dd,
+        1e-8,
+        "couple z",
+    );
+}
+
+#[test]
+fn spins_and_angular_momenta_about_an_axis() {
+    // The gyroscope at its steady state: with the axle horizontal and theta' = 0 the rotor's
+    // spin equation is Is phi'' = tau - c phi', the motor's torque in it alone; off, -c s/Is.
+    let a = bundled_answers("gyroscope-gimbal");
+    close(v(&a, 4), -1e-5 * 300.0 / 2e-4, 1e-9, "the rotor slows down");
+    // The shaft and collar: about the vertical only the motor acts (the oil film and the
+    // spring are internal, the bearing carries no axial couple), so dH/dt = tau, and with the
+    // motor off both end at H/(Is + Ic).
+    let a = bundled_answers("collar-on-spinning-shaft");
+    let is = 3.0 * 0.025f64.powi(2) / 2.0;
+    let ic = 0.8 * (0.025f64.powi(2) + 0.04f64.powi(2)) / 2.0;
+    close(v(&a, 3), 0.1, 1e-9, "dH/dt");
+    close(
+        v(&a, 4),
+        (is * 20.0 + ic * 0.0) / (is + ic),
+        1e-12,
+        "common final spin",
+    );
+    // The bead: r'' = r theta'^2 - k (r - r0)/m; H = (I_O + m r^2) theta' is kept, so
+    // theta'' = -2 m r r' theta'/(I_O + m r^2); across the rod the bead needs
+    // m (r theta'' + 2 r' theta').
+    let a = bundled_answers("bead-on-rotating-rod");
+    let (big_m, ha, m, k, r0, r, rd, w) = (0.5, 0.5, 0.1, 20.0, 0.2, 0.3, 0.4, 6.0);
+    let i_o = big_m * (2.0 * ha) * (2.0 * ha) / 12.0;
+    let thdd = -2.0 * m * r * rd * w / (i_o + m * r * r);
+    close(v(&a, 0), r * w * w - k * (r - r0) / m, 1e-9, "r''");
+    close(v(&a, 1), thdd, 1e-9, "theta''");
+    close(v(&a, 2), r * w * w, 1e-12, "centripetal");
+    close(v(&a, 3), 2.0 * m * rd * w, 1e-12, "Coriolis");
+    close(
+        part(&a[4], "slide.force.y"),
+        m * (r * thdd + 2.0 * rd * w),
+        1e-9,
+        "normal force",
+    );
+}
