@@ -50,6 +50,55 @@ fn close(got: f64, want: f64, tol: f64, what: &str) {
     );
 }
 
+/// The Answers give a value by its `symbol`, a short expression as itself and a long one
+/// by its number alone; the state's values carry their units; round-off of zero is 0.
+#[test]
+fn answers_name_a_value_by_its_symbol_and_never_print_round_off() {
+    let energy = "m*L^2*theta'^2/2 - m*g*L*cos(theta) + 0*m*g*L*sin(theta)^2";
+    let p = load_value(&pendulum(
+        json!([
+            { "value": energy, "unit": "J", "symbol": "E" },
+            { "value": energy, "unit": "J" },
+            { "value": "theta'" },
+            { "value": "theta'' + g/L*sin(theta)", "unit": "rad/s^2",
+              "at": { "state": { "theta": 0.3, "theta'": 0 } } }
+        ]),
+        None,
+    ));
+    let answers = answers_of(&p);
+    let views = mbd_tutor::render::answers::section(&p, &answers);
+    // E = m L² θ'²/2 − m g L cos θ at θ = 0.6, θ' = 0.5, by hand.
+    let (m, l, g) = (0.5, 0.8, 9.81);
+    let e = m * l * l * 0.25 / 2.0 - m * g * l * 0.6f64.cos();
+    close(answers[0].values[0].1, e, 1e-12, "E");
+    assert_eq!(
+        views[0].values_tex,
+        vec![format!("E = {}\\ \\mathrm{{J}}", fixed(e))]
+    );
+    assert_eq!(
+        views[1].values_tex,
+        vec![format!("{}\\ \\mathrm{{J}}", fixed(e))]
+    );
+    assert_eq!(
+        views[2].values_tex,
+        vec!["\\dot{\\theta} = 0.5\\ \\mathrm{rad/s}"]
+    );
+    // θ'' = −(g/L) sin θ exactly, so the sum is round-off of zero.
+    assert_eq!(
+        views[3].values_tex,
+        vec!["\\ddot{\\theta} + \\frac{g \\sin(\\theta)}{L} = 0\\ \\mathrm{rad/s^{2}}"]
+    );
+    assert!(
+        views[3].at_tex.contains("\\theta = 0.3\\ \\mathrm{rad}"),
+        "{}",
+        views[3].at_tex
+    );
+}
+
+fn fixed(x: f64) -> String {
+    mbd_tutor::numeric::format::fixed(x)
+}
+
 #[test]
 fn a_pendulums_acceleration_and_tension_at_a_state_match_the_hand_derivation() {
     let p = load_value(&pendulum(

@@ -67,11 +67,15 @@ pub struct Question {
     pub at: QuestionAt,
     /// The unit of a `value` (user text), if given.
     pub unit: Option<String>,
+    /// The symbol a `value` is answered by (LaTeX math), if given.
+    pub symbol: Option<String>,
     /// The JSON path, e.g. `find.questions[0]`.
     pub path: String,
 }
 
-const KEYS: [&str; 7] = ["text", "value", "reaction", "drive", "steady", "at", "unit"];
+const KEYS: [&str; 8] = [
+    "text", "value", "reaction", "drive", "steady", "at", "unit", "symbol",
+];
 
 impl Reader {
     /// Reads `find.questions`; `reactions` are the sites `find.reactions` requested.
@@ -110,6 +114,10 @@ impl Reader {
         let unit = fields
             .get("unit")
             .and_then(|v| string(v, &key_path(path, "unit"), &mut self.diag))
+            .map(str::to_string);
+        let symbol = fields
+            .get("symbol")
+            .and_then(|v| string(v, &key_path(path, "symbol"), &mut self.diag))
             .map(str::to_string);
         let asked: Vec<&str> = ["value", "reaction", "drive", "steady"]
             .into_iter()
@@ -197,6 +205,7 @@ impl Reader {
             kind,
             at,
             unit,
+            symbol,
             path: path.to_string(),
         })
     }

@@ -124,7 +124,12 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
             let mut parts = vec![time_tex];
             for (e, value) in entries {
                 let symbol = latex(&problem.coordinate_expr(e.coordinate, e.order));
-                parts.push(format!("{symbol} = {}", number_tex(*value)));
+                let unit = coordinate_unit(problem, e.coordinate, e.order);
+                parts.push(format!(
+                    "{symbol} = {}{}",
+                    number_tex(*value),
+                    unit_tex(&unit)
+                ));
             }
             let note = if matches!(question.kind, QuestionKind::Steady { .. }) {
                 "starting guess; the other values held at the initial ones"
@@ -182,7 +187,19 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
                     })
                 })
             });
-            (latex(expression), unit.unwrap_or_default())
+            // The question's own symbol, else the expression when it reads at a glance; a
+            // long expression is restated by the question, so the answer is its number.
+            let written = latex(expression);
+            let symbol = match question
+                .symbol
+                .as_deref()
+                .and_then(super::safe_math::checked)
+            {
+                Some(symbol) => symbol,
+                None if written.len() <= LONGEST_RESTATED => written,
+                None => String::new(),
+            };
+            (symbol, unit.unwrap_or_default())
         }
         QuestionKind::Reaction { site } => {
             // `O.force.x`: the component along the parent's unit vector.
@@ -232,8 +249,20 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
             )
         }
     };
-    format!("{symbol} = {}{}", number_tex(value), unit_tex(&unit))
+    // Round-off of a zero (1e-13 rad/s²) is answered as the zero it is.
+    let value = if value.abs() < ROUND_OFF { 0.0 } else { value };
+    let number = format!("{}{}", number_tex(value), unit_tex(&unit));
+    if symbol.is_empty() {
+        number
+    } else {
+        format!("{symbol} = {number}")
+    }
 }
+
+/// The longest expression (characters of LaTeX) an answer restates before its number.
+const LONGEST_RESTATED: usize = 40;
+/// An answer smaller than this is round-off of zero in the SI units of a teaching problem.
+const ROUND_OFF: f64 = 1e-10;
 
 /// The drive of prescribed coordinate `i`, `Q_{\theta}`, as step 5 writes it.
 fn drive_tex(problem: &Problem, i: usize) -> String {
