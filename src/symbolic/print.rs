@@ -39,7 +39,29 @@ pub fn latex_name(name: &str) -> String {
             }
         }
     };
-    let body = if GREEK.contains(&stem.as_str()) || GREEK_UPPER.contains(&stem.as_str()) {
+    let greek = |word: &str| GREEK.contains(&word) || GREEK_UPPER.contains(&word);
+    // A letter (or a Greek letter's name) followed by one more letter is a symbol with a
+    // subscript, as textbooks write them: `Is` → I_s, `mT` → m_T, `tauL` → τ_L, `kp2` → k_{p2}.
+    let split = stem
+        .char_indices()
+        .last()
+        .filter(|&(i, c)| i > 0 && c.is_ascii_alphabetic())
+        .map(|(i, _)| (&stem[..i], &stem[i..]))
+        // After a Greek letter's name only a capital: `pin` is a word, not π_n.
+        .filter(|(head, letter)| {
+            head.chars().count() == 1 || (greek(head) && letter.starts_with(char::is_uppercase))
+        })
+        .filter(|_| !greek(&stem) && stem.chars().all(|c| c.is_ascii_alphabetic()));
+    if let Some((head, letter)) = split {
+        let head = if greek(head) {
+            format!("\\{head}")
+        } else {
+            head.to_string()
+        };
+        let sub = subscript.map(|s| latex_name_plain(&s)).unwrap_or_default();
+        return format!("{head}_{{{letter}{sub}}}");
+    }
+    let body = if greek(&stem) {
         format!("\\{stem}")
     } else if stem.chars().count() == 1 {
         stem.clone()
@@ -444,5 +466,21 @@ mod tests {
         assert_eq!(latex(&squared), "{{}^{N}C^{F}_{31}}^{2}");
         let x = crate::symbolic::build::pow(Expr::constant("x"), Expr::int(2));
         assert_eq!(latex(&x), "x^{2}");
+    }
+
+    #[test]
+    fn a_letter_and_one_more_is_a_subscripted_symbol() {
+        assert_eq!(latex_name("Is"), "I_{s}");
+        assert_eq!(latex_name("mT"), "m_{T}");
+        assert_eq!(latex_name("tauL"), "\\tau_{L}");
+        assert_eq!(latex_name("kp2"), "k_{p2}");
+        assert_eq!(latex_name("qL"), "q_{L}");
+        // Words, Greek letters and names with digits inside stay as they were.
+        assert_eq!(latex_name("bob"), "\\mathrm{bob}");
+        assert_eq!(latex_name("pin"), "\\mathrm{pin}");
+        assert_eq!(latex_name("theta"), "\\theta");
+        assert_eq!(latex_name("mu"), "\\mu");
+        assert_eq!(latex_name("q12"), "q_{12}");
+        assert_eq!(latex_name("L_p"), "L_{p}");
     }
 }

@@ -198,7 +198,12 @@ fn wheel_pendulum(alpha: f64, alpha_d: f64) -> (f64, f64) {
 #[test]
 fn wheel_with_pendulum_matches_lagrange() {
     for (th, phi, th_d, phi_d) in [(0.0, 0.8, 0.0, 0.0), (0.7, -0.2, -2.0, 3.5)] {
-        let given = state(&[("th", th), ("phi", phi), ("th'", th_d), ("phi'", phi_d)]);
+        let given = state(&[
+            ("theta", th),
+            ("phi", phi),
+            ("theta'", th_d),
+            ("phi'", phi_d),
+        ]);
         let (alpha, alpha_d) = (th + phi, th_d + phi_d);
         let (x_dd, alpha_dd) = wheel_pendulum(alpha, alpha_d);
         // The ground's force on the wheel: the whole system's momentum balance.
@@ -215,7 +220,7 @@ fn wheel_with_pendulum_matches_lagrange() {
             assert_close(xd, -RW * th_d, 1e-12, 1.0, &what("x' = -R th'"));
             assert_close(s.acc("x"), x_dd, 1e-9, G, &what("x''"));
             assert_close(s.acc("y"), 0.0, 1e-9, G, &what("y''"));
-            assert_close(s.acc("th"), -x_dd / RW, 1e-9, G / RW, &what("th''"));
+            assert_close(s.acc("theta"), -x_dd / RW, 1e-9, G / RW, &what("th''"));
             let phi_dd = alpha_dd + x_dd / RW;
             assert_close(s.acc("phi"), phi_dd, 1e-9, G / RW, &what("phi''"));
             for (k, want_k) in ground.iter().enumerate() {
@@ -246,8 +251,10 @@ fn wheel_with_pendulum_conserves_energy() {
         let energy: Vec<f64> = rows
             .iter()
             .map(|row| {
-                let (alpha, alpha_d) =
-                    (row[c("th")] + row[c("phi")], row[c("th'")] + row[c("phi'")]);
+                let (alpha, alpha_d) = (
+                    row[c("theta")] + row[c("phi")],
+                    row[c("theta'")] + row[c("phi'")],
+                );
                 let (xd, yd) = (row[c("x'")], row[c("y'")]);
                 let vp = [
                     xd + LP / 2.0 * alpha_d * alpha.cos(),
@@ -255,7 +262,7 @@ fn wheel_with_pendulum_conserves_energy() {
                 ];
                 let y_p = row[c("y")] - LP / 2.0 * alpha.cos();
                 0.5 * MW * (xd * xd + yd * yd)
-                    + 0.5 * MW * RW * RW / 2.0 * row[c("th'")].powi(2)
+                    + 0.5 * MW * RW * RW / 2.0 * row[c("theta'")].powi(2)
                     + 0.5 * MP * (vp[0] * vp[0] + vp[1] * vp[1])
                     + 0.5 * MP * LP * LP / 12.0 * alpha_d * alpha_d
                     + MW * G * row[c("y")]
@@ -270,7 +277,7 @@ fn wheel_with_pendulum_conserves_energy() {
             "{method}: energy drifts by {drift:e} J"
         );
         for row in &rows {
-            let slip = row[c("x'")] + RW * row[c("th'")];
+            let slip = row[c("x'")] + RW * row[c("theta'")];
             assert!(
                 slip.abs() < 1e-9,
                 "{method}: the wheel slips at {slip:e} m/s"
