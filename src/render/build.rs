@@ -4,7 +4,7 @@
 //! come from the equations and the simulation start empty, and the templates leave out
 //! what is empty.
 
-use super::context::{Constant, Coordinate, Frame, Plan, Simulation, Solution};
+use super::context::{Constant, Coordinate, Frame, Named, Plan, Simulation, Solution};
 use crate::equations::Method;
 use crate::numeric::format::fixed;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
@@ -49,6 +49,7 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         student: false,
         frames: frames(problem),
         coordinates: coordinates(problem),
+        axes: axes(problem),
         constants: constants(problem),
         plan: Plan::default(),
         simulation: Simulation {
@@ -62,6 +63,31 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         },
         ..Solution::default()
     }
+}
+
+/// The unit vector along each joint axis that a sum may be taken along (a prismatic or
+/// cylindrical joint's; a revolute joint's in 3D), as step 3 names it: `ê_slide`.
+fn axes(problem: &Problem) -> Vec<Named> {
+    problem
+        .joints
+        .iter()
+        .filter(|j| match j.kind {
+            JointKind::Prismatic | JointKind::Cylindrical => true,
+            JointKind::Revolute => problem.dimension == Dimension::Three,
+            _ => false,
+        })
+        .filter_map(|j| {
+            let axis = j.axis.as_ref()?;
+            let unit = format!("\\hat{{\\mathbf{{e}}}}_{{{}}}", latex_name(&j.name));
+            // A unit vector as written is the axis; any other vector gives its direction.
+            let plain = axis.terms.len() == 1 && axis.terms[0].2.is_one();
+            let relation = if plain { "=" } else { "\\parallel" };
+            Some(Named {
+                definition_tex: format!("{unit} {relation} {}", vector_tex(problem, axis)),
+                note: format!("the axis of the joint {}", j.name),
+            })
+        })
+        .collect()
 }
 
 /// `N`, then one frame per body in file order, oriented by the joint whose child it is.

@@ -39,6 +39,9 @@ pub struct Solution {
     pub frames: Vec<Frame>,
     /// Step 1: the generalized coordinates, in the order the joints name them.
     pub coordinates: Vec<Coordinate>,
+    /// Step 1: the unit vectors along the joints' axes that step 3 sums along, e.g.
+    /// `\hat{\mathbf{e}}_{\mathrm{slide}} = \hat{\mathbf{x}}_{\mathrm{rod}}`.
+    pub axes: Vec<Named>,
     /// Step 1: the constants, in file order.
     pub constants: Vec<Constant>,
     /// Step 1: the declared generalized speeds and their kinematic differential equations

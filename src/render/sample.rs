@@ -28,6 +28,7 @@ pub fn sample() -> Solution {
         method: s("the Motion Law"),
         student: false,
         frames: frames(),
+        axes: Vec::new(),
         // The sample is hand-written: no pictures, so its renderings stay as they were.
         configuration: Figure::default(),
         coordinates: vec![

@@ -165,7 +165,11 @@ pub fn draw(
         .coordinates
         .iter()
         .zip(q)
-        .map(|(c, v)| format!("{} = {}", c.name, fixed(*v)))
+        .map(|(c, v)| {
+            let symbol =
+                crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(&c.name));
+            format!("{symbol} = {}", fixed(*v))
+        })
         .collect();
     let mut title = format!("Configuration at {}", state.join(", "));
     if t != 0.0 {

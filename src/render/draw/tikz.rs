@@ -6,6 +6,9 @@ use std::fmt::Write;
 
 /// The widest a picture may be on the page, in points.
 const PAGE_WIDTH: f64 = 320.0;
+/// The tallest, in points (about a third of the text height): a tall pendulum would
+/// otherwise take a page of its own and push the text after it to the next one.
+const PAGE_HEIGHT: f64 = 230.0;
 
 fn num(x: f64) -> String {
     let text = format!("{x:.2}");
@@ -80,7 +83,9 @@ fn item(out: &mut String, item: &Item, unit: f64) {
 
 /// The picture as a `tikzpicture`, scaled to fit the page; needs `tikz` and `amsmath`.
 pub fn export(picture: &Picture) -> String {
-    let unit = (PAGE_WIDTH / picture.width).min(0.75);
+    let unit = (PAGE_WIDTH / picture.width)
+        .min(PAGE_HEIGHT / picture.height)
+        .min(0.75);
     let mut out = String::new();
     let _ = writeln!(
         out,
