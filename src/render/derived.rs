@@ -477,10 +477,13 @@ fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
     let inertia = &derivation.inertia;
     // The shorter of the vector multiplied out and as the equations use it (named parts).
     let shorter = |expanded: &Vector, named: &Vector, body: BodyId| {
-        let (a, b) = (
-            shortest_tex(model, expanded, body),
-            shortest_tex(model, named, body),
-        );
+        let b = shortest_tex(model, named, body);
+        // Multiplied out to many times the named form's size, a vector cannot come out the
+        // shorter, and simplifying it (in three frames) is most of a large handout's time.
+        if expanded.operation_count() > 4 * named.operation_count().max(100) {
+            return b;
+        }
+        let a = shortest_tex(model, expanded, body);
         if b.len() < a.len() {
             b
         } else {
