@@ -261,7 +261,9 @@ fn the_rolling_coin_has_no_root_of_a_square() {
     // √(cos²θ) = cos θ while the coin stands (cos θ > 0 at the start), as a 1-D spring's
     // |a + x| is shown as a + x; and (sin²φ + cos²φ)² = 1 inside the constraints.
     assert!(!markdown.contains("\\sqrt"), "a square root is left");
-    assert!(markdown.contains("| floor.Fz | position | $z - R \\cos(\\theta) = 0$ |"));
+    assert!(markdown.contains(
+        "| $\\text{rolling constraint at floor} \\cdot \\hat{\\mathbf{n}}_{z}$ | position | $z - R \\cos(\\theta) = 0$ |"
+    ));
     // The velocity constraint along N.x, by hand, ẋ = R c_ψ (φ̇ + ψ̇ s_θ) + R θ̇ s_ψ c_θ,
     // differentiated in time:
     let expected = "-R c_{\\psi} \\ddot{\\phi} - R s_{\\theta} c_{\\psi} \\ddot{\\psi} - R s_{\\psi} c_{\\theta} \\ddot{\\theta} + \\ddot{x} + R s_{\\psi} s_{\\theta} \\dot{\\psi}^{2} + R s_{\\psi} s_{\\theta} \\dot{\\theta}^{2} + R s_{\\psi} \\dot{\\phi} \\dot{\\psi} - 2 R c_{\\psi} c_{\\theta} \\dot{\\psi} \\dot{\\theta}";

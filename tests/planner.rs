@@ -157,7 +157,12 @@ fn the_handout_shows_a_few_rejected_candidates_in_a_students_notation() {
         assert_eq!(shown.rejected_total, derivation.rejected.len());
         assert_eq!(shown.rejected_all.len(), derivation.rejected.len());
         for r in &shown.rejected {
-            for text in [&r.free_body, &r.equation_tex, &r.reason, &r.reason_after] {
+            for text in [
+                &r.free_body_tex,
+                &r.equation_tex,
+                &r.reason,
+                &r.reason_after,
+            ] {
                 assert_eq!(internal_name(text), None, "{}: {text}", path.display());
             }
         }
@@ -182,7 +187,7 @@ fn the_rejected_reason_names_the_reaction_at_the_next_joint() {
     let a_about_o = shown
         .rejected
         .iter()
-        .find(|r| r.free_body == "A" && r.equation_tex == "\\sum \\mathbf{M}_{O}")
+        .find(|r| r.free_body_tex == "A" && r.equation_tex == "\\sum \\mathbf{M}_{O}")
         .unwrap_or_else(|| panic!("{:?}", shown.rejected));
     assert_eq!(a_about_o.reason, "brings in the reaction at P");
     assert!(a_about_o.reason_tex.contains("F^{P}"), "{a_about_o:?}");

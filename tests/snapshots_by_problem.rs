@@ -10,8 +10,8 @@ fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
         String::from("| Free body | Equation | Direction | Unknowns |\n|---|---|---|---|\n");
     for row in &p.rows {
         out.push_str(&format!(
-            "| {} | ${}$ | ${}$ | ${}$ |\n",
-            row.free_body, row.equation_tex, row.direction_tex, row.unknowns_tex
+            "| ${}$ | ${}$ | ${}$ | ${}$ |\n",
+            row.free_body_tex, row.equation_tex, row.direction_tex, row.unknowns_tex
         ));
     }
     out.push_str(&format!(
@@ -31,8 +31,8 @@ fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
                 format!(" (${}$)", r.reason_tex)
             };
             out.push_str(&format!(
-                "- {}, ${}$ along ${}$: {}{tex}{}\n",
-                r.free_body, r.equation_tex, r.direction_tex, r.reason, r.reason_after
+                "- ${}$, ${}$ along ${}$: {}{tex}{}\n",
+                r.free_body_tex, r.equation_tex, r.direction_tex, r.reason, r.reason_after
             ));
         }
     }

@@ -23,7 +23,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 None => ("velocity", &row.velocity),
             };
             ConstraintView {
-                name: row.name.clone(),
+                name_tex: super::derived::constraint_label_tex(&derivation.model, &row.name),
                 level: level.into(),
                 equation_tex: format!(
                     "{} = 0",
@@ -35,11 +35,13 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             }
         })
         .collect();
-    // Notes are written for the terminal, with `code` quotes; a handout shows plain names.
+    // Notes are written for the terminal, with `code` quotes; a handout shows the quoted
+    // coordinates and rates as symbols (the notes are markup, see `markup`).
+    let problem = derivation.model.problem;
     let mut notes: Vec<String> = constraints
         .notes
         .iter()
-        .map(|n| n.replace('`', ""))
+        .map(|n| quoted_as_math(problem, n))
         .collect();
     notes.extend(
         constraints
@@ -144,4 +146,27 @@ pub fn dependent_speeds(
         kane_tex,
         reduced_tex: reduced,
     })
+}
+
+/// `text` with each `q1` or `x'` between backquotes written as the math of that coordinate
+/// or rate, `$q_{1}$`, `$\dot{x}$`; any other quoted text plain.
+fn quoted_as_math(problem: &crate::problem::Problem, text: &str) -> String {
+    let mut out = String::new();
+    for (i, part) in text.split('`').enumerate() {
+        if i % 2 == 0 {
+            out.push_str(part);
+            continue;
+        }
+        let order = part.chars().rev().take_while(|c| *c == '\'').count();
+        let name = &part[..part.len() - order];
+        match problem.coordinates.iter().position(|c| c.name == name) {
+            Some(c) if order <= 2 => {
+                let symbol =
+                    crate::symbolic::print::latex(&problem.coordinate_expr(c, order as u8));
+                out.push_str(&format!("${symbol}$"));
+            }
+            _ => out.push_str(part),
+        }
+    }
+    out
 }

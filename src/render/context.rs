@@ -97,8 +97,9 @@ pub struct Solution {
 /// One constraint row as step 1 shows it.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct ConstraintView {
-    /// The row's name, e.g. `R.Fx`, `contact.Fy`, `q1 prescribed`.
-    pub name: String,
+    /// What the row constrains, e.g. `\text{loop closure at R} \cdot \hat{\mathbf{b}}_{x}`
+    /// (the direction of the reaction that enforces it) or `\text{prescribed motion of } q_{1}`.
+    pub name_tex: String,
     /// `position` (holonomic) or `velocity` (nonholonomic).
     pub level: String,
     /// The equation, `… = 0`.
@@ -181,6 +182,8 @@ pub struct Constant {
 pub struct FreeBody {
     /// Its name, e.g. `A` or `A+B`.
     pub name: String,
+    /// Its name in LaTeX, e.g. `A + B`, `\mathrm{link}_{1}`.
+    pub name_tex: String,
     /// The bodies it contains, e.g. `A, B`.
     pub bodies: String,
     /// Contact forces: reactions, springs, applied loads, joint loads.
@@ -246,8 +249,8 @@ pub struct Plan {
 /// One equation of the plan.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct PlanRow {
-    /// The free body, e.g. `A+B`.
-    pub free_body: String,
+    /// The free body in LaTeX, e.g. `A + B` (empty for a constraint row).
+    pub free_body_tex: String,
     /// The equation, e.g. `\sum \mathbf{M}_{O}`.
     pub equation_tex: String,
     /// Its direction, e.g. `\hat{\mathbf{n}}_{z}`.
@@ -259,8 +262,8 @@ pub struct PlanRow {
 /// A candidate equation the planner rejected.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Rejected {
-    /// The free body.
-    pub free_body: String,
+    /// The free body in LaTeX, e.g. `A + B` (empty for a constraint row).
+    pub free_body_tex: String,
     /// The equation, e.g. `\sum \mathbf{F}`.
     pub equation_tex: String,
     /// Its direction.

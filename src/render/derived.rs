@@ -213,7 +213,7 @@ fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
     }
     sets.iter()
         .map(|set| {
-            let mut view = FreeBody { name: bodies_name(problem, set), bodies: bodies_name(problem, set), ..FreeBody::default() };
+            let mut view = FreeBody { name: bodies_name(problem, set), name_tex: super::matrix::bodies_tex(derivation, set), bodies: bodies_name(problem, set), ..FreeBody::default() };
             for action in derivation.actions.iter().filter(|a| is_external(a, set)) {
                 let (vector_tex, point_tex) = match &action.kind {
                     ActionKind::Force { offset, force } => {
@@ -382,10 +382,10 @@ pub fn plan(derivation: &Derivation) -> Plan {
         .iter()
         .map(|row| PlanRow {
             // A constraint row is no free body's equation.
-            free_body: if matches!(row.sum, Sum::Constraint { .. }) {
-                "—".into()
+            free_body_tex: if matches!(row.sum, Sum::Constraint { .. }) {
+                String::new()
             } else {
-                bodies_name(problem, &row.free_body)
+                super::matrix::bodies_tex(derivation, &row.free_body)
             },
             equation_tex: super::matrix::sum_tex(derivation, &row.sum),
             direction_tex: match (&row.direction, &row.sum) {

@@ -196,14 +196,15 @@ pub(super) fn axes<'a, 'b>(
     Ok(chart)
 }
 
-/// A tick label: [`fixed`], with round-off next to zero (`-2.2e-16`) shown as `0`.
+/// A tick label: [`fixed`] as print shows it (`−2.5×10⁻⁸`), with round-off next to zero
+/// (`-2.2e-16`) shown as `0`.
 fn tick(value: f64, range: (f64, f64)) -> String {
     let snapped = if value.abs() < 1e-9 * (range.1 - range.0) {
         0.0
     } else {
         value
     };
-    fixed(snapped)
+    super::prepare::unicode_number(&fixed(snapped)).replace('-', "−")
 }
 
 /// The range covering the finite `values`, padded by `pad` of its span on each side so

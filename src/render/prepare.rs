@@ -78,6 +78,7 @@ fn string(text: &str, key: &str, format: Format) -> String {
     match key {
         "statement" => return markup::render_blocks(text, format),
         "question" => return markup::render_line(text, format),
+        "constraint_notes" => return markup::render_line(text, format),
         _ => {}
     }
     match format {
@@ -184,7 +185,7 @@ fn scientific_at(bytes: &[u8], i: usize) -> Option<usize> {
 
 /// A number in scientific notation as plain text prints it: `5.99959e-10` as
 /// `5.99959×10⁻¹⁰`, `1e-6` as `10⁻⁶`; any other number as it is.
-fn unicode_number(text: &str) -> String {
+pub(super) fn unicode_number(text: &str) -> String {
     let Some((mantissa, exponent)) = text.split_once('e') else {
         return text.to_string();
     };

@@ -11,7 +11,6 @@ use crate::symbolic::Expr;
 /// The rejected candidate as the worked solution prints it.
 pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
     let model = &derivation.model;
-    let problem = model.problem;
     let candidate = &rejected.candidate;
     let (reason, reason_tex, reason_after) = match &rejected.reason {
         Reason::UnwantedReactions { sites, reactions } => {
@@ -56,7 +55,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         Reason::NotNeeded => plain("not needed: the rows chosen already determine every unknown"),
     };
     RejectedView {
-        free_body: super::derived::bodies_name(problem, &candidate.free_body),
+        free_body_tex: super::matrix::bodies_tex(derivation, &candidate.free_body),
         equation_tex: super::matrix::sum_tex(derivation, &candidate.sum),
         direction_tex: candidate.direction.latex.clone(),
         reason,

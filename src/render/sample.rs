@@ -167,6 +167,7 @@ fn free_bodies() -> Vec<FreeBody> {
     vec![
         FreeBody {
             name: s("A+B"),
+            name_tex: s("A + B"),
             bodies: s("A, B"),
             contact: vec![force(
                 "pin O",
@@ -183,6 +184,7 @@ fn free_bodies() -> Vec<FreeBody> {
         },
         FreeBody {
             name: s("B"),
+            name_tex: s("B"),
             bodies: s("B"),
             contact: vec![force(
                 "pin P",
@@ -198,7 +200,7 @@ fn free_bodies() -> Vec<FreeBody> {
 
 fn plan() -> Plan {
     let row = |free_body: &str, equation: &str, direction: String, unknowns: &str| PlanRow {
-        free_body: s(free_body),
+        free_body_tex: s(free_body),
         equation_tex: s(equation),
         direction_tex: direction,
         unknowns_tex: s(unknowns),
@@ -207,7 +209,7 @@ fn plan() -> Plan {
     Plan {
         rows: vec![
             row(
-                "A+B",
+                "A + B",
                 "\\sum \\mathbf{M}_{O}",
                 format!("{N}_{{z}}"),
                 accelerations,
@@ -219,20 +221,20 @@ fn plan() -> Plan {
                 accelerations,
             ),
             row(
-                "A+B",
+                "A + B",
                 "\\sum \\mathbf{F}",
                 format!("{N}_{{x}}"),
                 "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}",
             ),
             row(
-                "A+B",
+                "A + B",
                 "\\sum \\mathbf{F}",
                 format!("{N}_{{y}}"),
                 "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}",
             ),
         ],
         rejected: vec![Rejected {
-            free_body: s("A"),
+            free_body_tex: s("A"),
             equation_tex: s("\\sum \\mathbf{M}_{O}"),
             direction_tex: format!("{N}_{{z}}"),
             reason: s("brings in the reaction at P"),

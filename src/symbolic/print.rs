@@ -52,6 +52,11 @@ pub fn latex_name(name: &str) -> String {
             head.chars().count() == 1 || (greek(head) && letter.starts_with(char::is_uppercase))
         })
         .filter(|_| !greek(&stem) && stem.chars().all(|c| c.is_ascii_alphabetic()));
+    // An inertia component: `Ixx` → I_{xx}, `Jyz` → J_{yz}.
+    let axes = stem.len() == 3
+        && stem.starts_with(|c: char| c.is_ascii_uppercase())
+        && stem[1..].chars().all(|c| "xyz".contains(c));
+    let split = split.or_else(|| axes.then(|| (&stem[..1], &stem[1..])));
     if let Some((head, letter)) = split {
         let head = if greek(head) {
             format!("\\{head}")
@@ -475,6 +480,7 @@ mod tests {
         assert_eq!(latex_name("tauL"), "\\tau_{L}");
         assert_eq!(latex_name("kp2"), "k_{p2}");
         assert_eq!(latex_name("qL"), "q_{L}");
+        assert_eq!(latex_name("Ixy"), "I_{xy}");
         // Words, Greek letters and names with digits inside stay as they were.
         assert_eq!(latex_name("bob"), "\\mathrm{bob}");
         assert_eq!(latex_name("pin"), "\\mathrm{pin}");

@@ -104,7 +104,7 @@ impl Unknown {
         }
     }
 
-    /// The name in LaTeX: `F^{O}_{x}`, `Q_{\mathrm{q1}}`, `\lambda_{\mathrm{loop}}`.
+    /// The name in LaTeX: `F^{O}_{x}`, `Q_{\theta}`, `\lambda_{\mathrm{loop}}`.
     pub fn latex(&self) -> String {
         use crate::symbolic::print::{latex_name, latex_name_plain};
         match self {
@@ -114,7 +114,7 @@ impl Unknown {
                 latex_name(site),
                 component.axis.subscript()
             ),
-            Unknown::Drive { coordinate } => format!("Q_{{{}}}", latex_name_plain(coordinate)),
+            Unknown::Drive { coordinate } => format!("Q_{{{}}}", latex_name(coordinate)),
             Unknown::Multiplier { constraint } => {
                 format!("\\lambda_{{{}}}", latex_name_plain(constraint))
             }
@@ -210,7 +210,7 @@ mod tests {
                 coordinate: "q1".into(),
             },
             "Q_q1",
-            "Q_{\\mathrm{q1}}",
+            "Q_{q_{1}}",
         );
         check(
             Unknown::Multiplier {
@@ -219,13 +219,13 @@ mod tests {
             "lambda_loop",
             "\\lambda_{\\mathrm{loop}}",
         );
-        // As a name with `_` was printed: the part after the first `_` as the subscript.
+        // The coordinate as it prints everywhere else, as the subscript.
         check(
             Unknown::Drive {
                 coordinate: "q_1".into(),
             },
             "Q_q_1",
-            &crate::symbolic::print::latex_name("Q_q_1"),
+            "Q_{q_{1}}",
         );
         check(
             Unknown::Multiplier {
