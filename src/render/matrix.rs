@@ -136,10 +136,14 @@ pub fn matrix(
     // Entries too wide as well: every entry longer than a symbol or two by name, as a
     // textbook writes a larger system, the names defined below the table.
     let a_names = named_entries(&a, &a_tex);
-    let table_by_name = if table_with_b_by_name.is_none() {
-        whole(&numbers, &x, &a_names, &b_names)
+    // Wider still: the unknowns by column number, x_j, given below the table.
+    let x_names: Vec<String> = (1..=n).map(|j| format!("x_{{{j}}}")).collect();
+    let (table_by_name, unknowns_by_number) = if table_with_b_by_name.is_some() {
+        (None, false)
+    } else if let Some(table) = whole(&numbers, &x, &a_names, &b_names) {
+        (Some(table), false)
     } else {
-        None
+        (whole(&numbers, &x_names, &a_names, &b_names), true)
     };
     let printed: usize = a_tex.iter().flatten().chain(&b_tex).map(String::len).sum();
     let by_value = printed > ENTRIES_BUDGET;
@@ -266,6 +270,14 @@ pub fn matrix(
         return MatrixForm {
             whole: Some(table),
             entries: defined,
+            columns_tex: if unknowns_by_number {
+                x.iter()
+                    .enumerate()
+                    .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
+                    .collect()
+            } else {
+                Vec::new()
+            },
             ..MatrixForm::default()
         };
     }
