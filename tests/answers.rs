@@ -95,6 +95,32 @@ fn answers_name_a_value_by_its_symbol_and_never_print_round_off() {
     );
 }
 
+/// A pin's reaction is answered by its two forces; its moment about the pin's axis is no
+/// unknown (exactly 0) and is left out, with a note.
+#[test]
+fn a_pins_reaction_is_answered_without_its_free_moment() {
+    let p = load_value(&pendulum(
+        json!([{ "reaction": "O", "at": { "state": { "theta": 0.0, "theta'": 0.0 } } }]),
+        None,
+    ));
+    let answers = answers_of(&p);
+    let views = mbd_tutor::render::answers::section(&p, &answers);
+    // Hanging at rest: the pin holds the weight, F_y = m g = 4.905 N, F_x = 0.
+    let fy = answers[0]
+        .values
+        .iter()
+        .find(|(n, _)| n.ends_with("force.y"))
+        .expect("F_y")
+        .1;
+    close(fy, 0.5 * 9.81, 1e-12, "F_y");
+    assert_eq!(views[0].values_tex.len(), 2, "{:?}", views[0].values_tex);
+    assert!(views[0]
+        .values_tex
+        .iter()
+        .all(|v| v.starts_with("\\mathbf{F}")));
+    assert_eq!(views[0].note, "The components not listed are zero.");
+}
+
 fn fixed(x: f64) -> String {
     mbd_tutor::numeric::format::fixed(x)
 }

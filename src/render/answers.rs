@@ -32,8 +32,20 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
         .zip(answers)
         .map(|(question, answer)| {
             let mut view = blank_one(problem, question);
-            view.values_tex = answer
+            // A reaction's moment about a free axis is no unknown at all: exactly 0, and not
+            // worth a line; the note says the others are zero.
+            let is_reaction = matches!(question.kind, QuestionKind::Reaction { .. });
+            let shown: Vec<&(String, f64)> = answer
                 .values
+                .iter()
+                .filter(|(name, value)| {
+                    !(is_reaction && *value == 0.0 && name.contains(".moment."))
+                })
+                .collect();
+            if shown.len() < answer.values.len() {
+                view.note = "The components not listed are zero.".into();
+            }
+            view.values_tex = shown
                 .iter()
                 .map(|(name, value)| value_tex(problem, question, name, *value))
                 .collect();
