@@ -220,13 +220,14 @@ fn named_line(
     to: &str,
 ) -> (Expr, Vector, Expr) {
     let frame_name = model.frames.name(frame).to_string();
-    let along = |axis: usize| format!("along {frame_name}.{}", AXES[axis]);
+    // "the x component, in frame N," as a textbook says it, not the internal `N.x`.
+    let along = |axis: usize| format!("{} component, in frame {frame_name},", AXES[axis]);
     let delta: Components = std::array::from_fn(|axis| {
         Expr::named(
             &format!("line{number}.d.{}", AXES[axis]),
             &format!("\\Delta_{{{number}{}}}", AXES[axis]),
             &format!(
-                "component {} of the vector from {from} to {to}",
+                "the {} of the vector from {from} to {to}",
                 along(axis)
             ),
             components[axis].clone(),
@@ -246,7 +247,7 @@ fn named_line(
             &format!("line{number}.u.{}", AXES[axis]),
             &format!("\\hat{{u}}_{{{number}{}}}", AXES[axis]),
             &format!(
-                "component {} of the unit vector from {from} toward {to}",
+                "the {} of the unit vector from {from} toward {to}",
                 along(axis)
             ),
             &delta[axis] / &length,
