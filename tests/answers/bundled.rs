@@ -849,3 +849,22 @@ fn spins_and_angular_momenta_about_an_axis() {
         "normal force",
     );
 }
+
+/// The bar about its end: I_O θ̈ = −m g (L/2) sin θ at rest, I_O = m L²/3, so the equivalent
+/// simple pendulum −g sin θ/θ̈ is 2L/3 at any angle (the statement's third part).
+#[test]
+fn the_compound_pendulum_swings_like_a_simple_pendulum_of_two_thirds_its_length() {
+    let a = bundled_answers("compound-pendulum");
+    let l = 1.0;
+    close(v(&a, 2), 2.0 * l / 3.0, 1e-12, "ℓ_e");
+}
+
+/// The block on the smooth wedge: N = M m g cos α / (M + m sin² α), the statement's
+/// closed form, from the program's ẍ through the block's motion normal to the incline.
+#[test]
+fn the_wedges_normal_force_is_the_closed_form() {
+    let a = bundled_answers("block-on-wedge");
+    let (big_m, m, g, alpha) = (5.0, 1.0, 9.81, std::f64::consts::PI / 6.0);
+    let n = big_m * m * g * alpha.cos() / (big_m + m * alpha.sin().powi(2));
+    close(v(&a, 4), n, 1e-12, "N");
+}

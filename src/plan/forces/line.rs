@@ -226,10 +226,7 @@ fn named_line(
         Expr::named(
             &format!("line{number}.d.{}", AXES[axis]),
             &format!("\\Delta_{{{number}{}}}", AXES[axis]),
-            &format!(
-                "the {} of the vector from {from} to {to}",
-                along(axis)
-            ),
+            &format!("the {} of the vector from {from} to {to}", along(axis)),
             components[axis].clone(),
         )
     });
