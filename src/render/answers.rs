@@ -52,7 +52,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             if let Some((left, iterations)) = answer.residual {
                 let plural = if iterations == 1 { "" } else { "s" };
                 view.note = format!(
-                    "Newton's method: {iterations} iteration{plural}; the conditions hold to {}.",
+                    "Newton's method: {iterations} iteration{plural}; every condition of the steady motion (the second derivatives asked to vanish, and any other) holds there to {}.",
                     fixed(left)
                 );
             }
