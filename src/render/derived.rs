@@ -159,6 +159,7 @@ pub fn vector_tex(model: &Model, v: &Vector) -> String {
             let text = match c.node() {
                 Node::Add(_) => format!("\\left({}\\right) {unit}", latex(&c)),
                 _ if c.is_one() => unit,
+                _ if (-&c).is_one() => format!("-{unit}"),
                 _ => format!("{} {unit}", latex(&c)),
             };
             terms.push(text);
