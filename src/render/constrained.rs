@@ -4,6 +4,8 @@
 
 use super::context::{ConstraintView, DependentSpeeds};
 use crate::equations::Derivation;
+use crate::mechanics::constraints::RowOrigin;
+use crate::mechanics::Model;
 use crate::numeric::format::fixed;
 use crate::problem::BodyId;
 use crate::symbolic::print::{latex, latex_name};
@@ -23,7 +25,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 None => ("velocity", &row.velocity),
             };
             ConstraintView {
-                name_tex: super::derived::constraint_label_tex(&derivation.model, &row.name),
+                name_tex: constraint_label_tex(&derivation.model, &row.name),
                 level: level.into(),
                 equation_tex: format!(
                     "{} = 0",
@@ -169,4 +171,59 @@ fn quoted_as_math(problem: &crate::problem::Problem, text: &str) -> String {
         }
     }
     out
+}
+
+/// The direction of a closure's or a contact's constraint row: that of the reaction
+/// component that enforces it (the row is the relative motion along it).
+pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
+    let row = model.constraints.rows.iter().find(|r| r.name == name)?;
+    let RowOrigin::Site { site, component } = row.origin else {
+        return None;
+    };
+    let component = model.sites.get(site)?.reactions.get(component)?;
+    Some(super::derived::vector_tex(model, &component.direction))
+}
+
+/// A constraint row's label in the matrix form: what it constrains and, for a site's row,
+/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
+pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
+    let what = constraint_what_tex(model, name);
+    match constraint_direction_tex(model, name) {
+        Some(direction) => format!("{what} \\cdot {direction}"),
+        None => what,
+    }
+}
+
+/// What a constraint row constrains, in LaTeX: `\text{rolling constraint at floor}`, or
+/// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
+pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
+    use crate::mechanics::sites::SiteKind;
+    let problem = model.problem;
+    let text = |words: String| {
+        format!(
+            "\\text{{{}}}",
+            super::escape::latex(&words, super::escape::Lines::One)
+        )
+    };
+    let row = model.constraints.rows.iter().find(|r| r.name == name);
+    match row.map(|r| &r.origin) {
+        Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
+            Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
+                text(format!("rolling constraint at {}", s.name))
+            }
+            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
+                text(format!("loop closure at {}", s.name))
+            }
+            Some(s) => text(format!("constraint at {}", s.name)),
+            None => text(format!("constraint {name}")),
+        },
+        Some(RowOrigin::Position(_)) => text(format!("position constraint {name}")),
+        Some(RowOrigin::Velocity(_)) => text(format!("velocity constraint {name}")),
+        Some(RowOrigin::Prescribed(c)) if *c < problem.coordinates.len() => format!(
+            "\\text{{prescribed motion of }} {}",
+            latex(&problem.coordinate_expr(*c, 0))
+        ),
+        Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
+        None => text(format!("constraint {name}")),
+    }
 }

@@ -195,6 +195,16 @@ pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
     best.map(|(_, w)| vector_tex(model, &w)).unwrap_or_default()
 }
 
+/// A free body's bodies in LaTeX, `A + B`.
+pub(super) fn bodies_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
+    let problem = derivation.model.problem;
+    bodies
+        .iter()
+        .map(|b| latex_name(problem.body_name(*b)))
+        .collect::<Vec<_>>()
+        .join(" + ")
+}
+
 pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
     bodies
         .iter()
@@ -214,7 +224,12 @@ fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
     }
     sets.iter()
         .map(|set| {
-            let mut view = FreeBody { name: bodies_name(problem, set), name_tex: super::matrix::bodies_tex(derivation, set), bodies: bodies_name(problem, set), ..FreeBody::default() };
+            let mut view = FreeBody {
+                name: bodies_name(problem, set),
+                name_tex: bodies_tex(derivation, set),
+                bodies: bodies_name(problem, set),
+                ..FreeBody::default()
+            };
             for action in derivation.actions.iter().filter(|a| is_external(a, set)) {
                 let (vector_tex, point_tex) = match &action.kind {
                     ActionKind::Force { offset, force } => {
@@ -303,70 +318,6 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
-/// The direction of a closure's or a contact's constraint row: that of the reaction
-/// component that enforces it (the row is the relative motion along it).
-fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
-    use crate::mechanics::constraints::RowOrigin;
-    let row = model.constraints.rows.iter().find(|r| r.name == name)?;
-    let RowOrigin::Site { site, component } = row.origin else {
-        return None;
-    };
-    let component = model.sites.get(site)?.reactions.get(component)?;
-    Some(vector_tex(model, &component.direction))
-}
-
-/// A constraint row's label in the matrix form: what it constrains and, for a site's row,
-/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
-pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
-    let what = constraint_what_tex(model, name);
-    match constraint_direction_tex(model, name) {
-        Some(direction) => format!("{what} \\cdot {direction}"),
-        None => what,
-    }
-}
-
-/// What a constraint row constrains, in LaTeX: `\text{rolling constraint at floor}`, or
-/// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
-pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
-    use crate::mechanics::constraints::RowOrigin;
-    let row = model.constraints.rows.iter().find(|r| r.name == name);
-    if let Some(RowOrigin::Prescribed(c)) = row.map(|r| &r.origin) {
-        if *c < model.problem.coordinates.len() {
-            let q = latex(&model.problem.coordinate_expr(*c, 0));
-            return format!("\\text{{prescribed motion of }} {q}");
-        }
-    }
-    let what = super::escape::latex(&constraint_what(model, name), super::escape::Lines::One);
-    format!("\\text{{{what}}}")
-}
-
-/// What a constraint row constrains, e.g. "rolling constraint at floor".
-fn constraint_what(model: &Model, name: &str) -> String {
-    use crate::mechanics::constraints::RowOrigin;
-    use crate::mechanics::sites::SiteKind;
-    let problem = model.problem;
-    let row = model.constraints.rows.iter().find(|r| r.name == name);
-    match row.map(|r| &r.origin) {
-        Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
-            Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
-                format!("rolling constraint at {}", s.name)
-            }
-            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
-                format!("loop closure at {}", s.name)
-            }
-            Some(s) => format!("constraint at {}", s.name),
-            None => format!("constraint {name}"),
-        },
-        Some(RowOrigin::Position(_)) => format!("position constraint {name}"),
-        Some(RowOrigin::Velocity(_)) => format!("velocity constraint {name}"),
-        Some(RowOrigin::Prescribed(c)) => match problem.coordinates.get(*c) {
-            Some(coordinate) => format!("prescribed motion of {}", coordinate.name),
-            None => format!("prescribed motion {name}"),
-        },
-        None => format!("constraint {name}"),
-    }
-}
-
 fn unknowns_tex(unknowns: &[Symbol]) -> String {
     unknowns
         .iter()
@@ -386,7 +337,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
             free_body_tex: if matches!(row.sum, Sum::Constraint { .. }) {
                 String::new()
             } else {
-                super::matrix::bodies_tex(derivation, &row.free_body)
+                bodies_tex(derivation, &row.free_body)
             },
             equation_tex: super::matrix::sum_tex(derivation, &row.sum),
             direction_tex: match (&row.direction, &row.sum) {
@@ -394,7 +345,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
                 // A contact's or a closure's row: along its reaction component; any other
                 // constraint differentiated in time, short enough for the table's column.
                 (None, Sum::Constraint { name }) => {
-                    constraint_direction_tex(&derivation.model, name)
+                    super::constrained::constraint_direction_tex(&derivation.model, name)
                         .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into())
                 }
                 (None, _) => "\\text{partial velocities}".into(),

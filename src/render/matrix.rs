@@ -52,24 +52,16 @@ pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
         .map(|d| format!(" \\cdot {}", d.latex))
         .unwrap_or_default();
     match &row.sum {
-        Sum::Constraint { name } => super::derived::constraint_label_tex(&derivation.model, name),
+        Sum::Constraint { name } => {
+            super::constrained::constraint_label_tex(&derivation.model, name)
+        }
         Sum::Generalized { .. } => sum_tex(derivation, &row.sum),
         _ => format!(
             "{}\\colon {}{direction}",
-            bodies_tex(derivation, &row.free_body),
+            super::derived::bodies_tex(derivation, &row.free_body),
             sum_tex(derivation, &row.sum)
         ),
     }
-}
-
-/// A free body's bodies in LaTeX, `A + B`.
-pub fn bodies_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
-    let problem = derivation.model.problem;
-    bodies
-        .iter()
-        .map(|b| latex_name(problem.body_name(*b)))
-        .collect::<Vec<_>>()
-        .join(" + ")
 }
 
 /// A sum as an equation's column names it: `\sum \mathbf{F}`, `\sum \mathbf{M}_{O}`,
@@ -87,7 +79,9 @@ pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
                 .map_or("r".to_string(), |i| (i + 1).to_string());
             format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
         }
-        Sum::Constraint { name } => super::derived::constraint_what_tex(&derivation.model, name),
+        Sum::Constraint { name } => {
+            super::constrained::constraint_what_tex(&derivation.model, name)
+        }
     }
 }
 

@@ -21,6 +21,7 @@ pub mod markup;
 pub mod mathml;
 pub mod matrix;
 pub mod mode_shape;
+mod numbers;
 pub mod plot;
 mod prepare;
 pub mod rejected;

@@ -204,7 +204,7 @@ fn tick(value: f64, range: (f64, f64)) -> String {
     } else {
         value
     };
-    super::prepare::unicode_number(&fixed(snapped)).replace('-', "−")
+    super::numbers::unicode_number(&fixed(snapped)).replace('-', "−")
 }
 
 /// The range covering the finite `values`, padded by `pad` of its span on each side so

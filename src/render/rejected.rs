@@ -55,7 +55,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         Reason::NotNeeded => plain("not needed: the rows chosen already determine every unknown"),
     };
     RejectedView {
-        free_body_tex: super::matrix::bodies_tex(derivation, &candidate.free_body),
+        free_body_tex: super::derived::bodies_tex(derivation, &candidate.free_body),
         equation_tex: super::matrix::sum_tex(derivation, &candidate.sum),
         direction_tex: candidate.direction.latex.clone(),
         reason,
