@@ -16,11 +16,11 @@ fn initial(problem: &Problem) -> Vec<f64> {
     problem.coordinates.iter().map(|c| c.initial).collect()
 }
 
-/// The equations of `inner` with the q'' of coordinate `index` multiplied by `factor`.
+/// The equations of `inner` with their evaluation changed by `change`, which is given the
+/// evaluation and the names of its reaction columns.
 struct Tampered<'a> {
     inner: &'a dyn System,
-    index: usize,
-    factor: f64,
+    change: &'a dyn Fn(&mut Evaluation, &[String]),
 }
 
 impl System for Tampered<'_> {
@@ -32,11 +32,17 @@ impl System for Tampered<'_> {
     }
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
         let mut e = self.inner.evaluate(t, q, rates)?;
-        e.accelerations[self.index] *= self.factor;
+        (self.change)(&mut e, &self.inner.reaction_columns());
         Ok(e)
     }
     fn energies(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<(f64, f64), SolveError> {
         self.inner.energies(t, q, rates)
+    }
+    fn assemble(&self, t: f64, q: &mut [f64], rates: &mut [f64]) -> Result<(), SolveError> {
+        self.inner.assemble(t, q, rates)
+    }
+    fn is_constrained(&self) -> bool {
+        self.inner.is_constrained()
     }
     fn is_conservative(&self) -> bool {
         self.inner.is_conservative()
@@ -81,8 +87,7 @@ fn right_equations_pass_and_a_wrong_sign_fails() {
             for factor in [-1.0, 1.05] {
                 let wrong = Tampered {
                     inner: &compiled,
-                    index: last,
-                    factor,
+                    change: &|e, _| e.accelerations[last] *= factor,
                 };
                 let check = small_oscillation(&wrong, &q0).expect("applies");
                 assert!(!check.passed, "{name}, × {factor}: {check:?}");
@@ -104,43 +109,6 @@ fn a_body_free_to_turn_about_the_vertical_has_no_failing_oscillation() {
     let compiled = Compiled::new(&derive(&problem, Method::Kane).expect("derives"));
     if let Some(check) = small_oscillation(&compiled, &q0) {
         assert!(check.passed, "{check:?}");
-    }
-}
-
-/// The equations of `inner` with every drive's force or torque scaled by `factor`: the
-/// motion is unchanged, the drives' reported work is not.
-struct ScaledDrives<'a> {
-    inner: &'a dyn System,
-    factor: f64,
-}
-
-impl System for ScaledDrives<'_> {
-    fn coordinate_names(&self) -> Vec<String> {
-        self.inner.coordinate_names()
-    }
-    fn reaction_columns(&self) -> Vec<String> {
-        self.inner.reaction_columns()
-    }
-    fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
-        let mut e = self.inner.evaluate(t, q, rates)?;
-        for (value, name) in e.reactions.iter_mut().zip(self.inner.reaction_columns()) {
-            if name.ends_with(".drive") {
-                *value *= self.factor;
-            }
-        }
-        Ok(e)
-    }
-    fn assemble(&self, t: f64, q: &mut [f64], rates: &mut [f64]) -> Result<(), SolveError> {
-        self.inner.assemble(t, q, rates)
-    }
-    fn is_constrained(&self) -> bool {
-        self.inner.is_constrained()
-    }
-    fn is_conservative(&self) -> bool {
-        self.inner.is_conservative()
-    }
-    fn has_dissipation_only(&self) -> bool {
-        self.inner.has_dissipation_only()
     }
 }
 
@@ -172,9 +140,18 @@ fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() 
         );
         let balance = drive_energy_check(&problem, &compiled, &run).expect("applies");
         assert!(balance.passed, "{name}: {balance:?}");
-        let wrong = ScaledDrives {
+        // Every drive's force or torque 0.1 % off: the motion is unchanged, the drives'
+        // reported work is not.
+        let scale_drives = |e: &mut Evaluation, names: &[String]| {
+            for (value, name) in e.reactions.iter_mut().zip(names) {
+                if name.ends_with(".drive") {
+                    *value *= 1.001;
+                }
+            }
+        };
+        let wrong = Tampered {
             inner: &compiled,
-            factor: 1.001,
+            change: &scale_drives,
         };
         let balance = drive_energy_check(&problem, &wrong, &run).expect("applies");
         assert!(!balance.passed, "{name}, drive × 1.001: {balance:?}");
