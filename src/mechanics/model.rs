@@ -11,6 +11,7 @@ use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::Values;
+use crate::symbolic::print::latex_name;
 use crate::symbolic::{Expr, Symbol};
 
 /// In spatial problems, an angular velocity component with more terms than this is kept
@@ -390,21 +391,41 @@ fn body_kinematics(
     let omega = parent_state
         .omega
         .expressed_in(body, frames)
-        .plus(&Vector::new(body, relative))
+        .plus(&Vector::new(body, relative.clone()))
         .map(crate::symbolic::simplify)
         .map(to_speeds);
     let omega_components = omega.components_in(body, frames);
     let name = &problem.body(body).name;
     let planar = problem.dimension == crate::problem::Dimension::Two;
+    // The same built on the parent's named components: a chain's k-th body then reads
+    // ω_k = C ω_(k-1) + its joint's rates, a few terms, where multiplied out it has many.
+    let recursive = parent_state
+        .omega_named
+        .expressed_in(body, frames)
+        .plus(&Vector::new(body, relative.clone()))
+        .map(crate::symbolic::simplify)
+        .map(to_speeds)
+        .components_in(body, frames);
     let omega_named = Vector::new(
         body,
         std::array::from_fn(|axis| {
             let component = &omega_components[axis];
+            let shorter = if recursive[axis].terms().len() < component.terms().len() {
+                &recursive[axis]
+            } else {
+                component
+            };
             // Planar: (q1' + q2')^2 as a student writes it. Spatial: short components are
             // multiplied out so that sin^2 + cos^2 = 1 can simplify them.
-            if planar || component.terms().len() > MAX_EXPANDED_OMEGA_TERMS {
-                let label = format!("{name}.w.{}", ["x", "y", "z"][axis]);
+            let axis_name = ["x", "y", "z"][axis];
+            let label = format!("{name}.w.{axis_name}");
+            if planar {
                 Expr::defined(&label, component.clone())
+            } else if component.terms().len() > MAX_EXPANDED_OMEGA_TERMS {
+                // Named, so that velocity products print as products of three letters.
+                let tex = format!("\\omega^{{{}}}_{{{axis_name}}}", latex_name(name));
+                let note = format!("angular velocity of {name} along {name}.{axis_name}");
+                Expr::named(&label, &tex, &note, shorter.clone())
             } else {
                 component.clone()
             }

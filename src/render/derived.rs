@@ -2,7 +2,7 @@
 //! turned into the strings and tables of [`Solution`].
 
 use super::context::{
-    Equation as EquationView, Force, FreeBody, InitialValue, Kinematics, Named, Plan, PlanRow,
+    Equation as EquationView, Force, FreeBody, InitialValue, Named, Plan, PlanRow,
     Reaction, Rejected as RejectedView, Solution,
 };
 use super::long::{coefficient_form, LONG_EQUATION};
@@ -37,7 +37,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     let style = super::build::style_of(problem).with_coordinates(&names);
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
-        solution.kinematics = kinematics(derivation);
+        solution.kinematics = super::kinematics::kinematics(derivation);
         solution.equations = derivation
             .rows
             .iter()
@@ -396,6 +396,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .acceleration
         .iter()
         .chain(&inertia.alpha)
+        .chain(derivation.model.bodies.iter().map(|b| &b.omega_named))
         .flat_map(|v| v.parts())
         .flat_map(|(_, c)| c.iter());
     let rows = derivation.rows.iter().map(|r| &r.expression);
@@ -419,58 +420,6 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
             Named {
                 definition_tex: name,
                 note: format!("{}; too long to print whole", named.note),
-            }
-        })
-        .collect()
-}
-
-fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
-    let model = &derivation.model;
-    let inertia = &derivation.inertia;
-    // The shorter of the vector multiplied out and as the equations use it (named parts).
-    let shorter = |expanded: &Vector, named: &Vector, body: BodyId| {
-        let b = shortest_tex(model, named, body);
-        // Multiplied out to many times the named form's size, a vector cannot come out the
-        // shorter, and simplifying it (in three frames) is most of a large handout's time.
-        if expanded.operation_count() > 4 * named.operation_count().max(100) {
-            return b;
-        }
-        let a = shortest_tex(model, expanded, body);
-        if b.len() < a.len() {
-            b
-        } else {
-            a
-        }
-    };
-    model
-        .order
-        .iter()
-        .map(|&body| {
-            let state = &model.bodies[body.0];
-            let name = model.problem.body_name(body);
-            let symbol = latex_name(name);
-            Kinematics {
-                body: name.to_string(),
-                omega_tex: format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
-                    shortest_tex(model, &state.omega, body)
-                ),
-                alpha_tex: format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
-                    shorter(&state.alpha, &inertia.alpha[body.0], body)
-                ),
-                velocity_tex: format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
-                    shortest_tex(model, &state.center.velocity, body)
-                ),
-                acceleration_tex: format!(
-                    "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
-                    shorter(
-                        &state.center.acceleration,
-                        &inertia.acceleration[body.0],
-                        body
-                    )
-                ),
             }
         })
         .collect()

@@ -15,6 +15,7 @@ pub mod draw;
 pub mod eigen_plot;
 pub mod escape;
 pub mod kane;
+mod kinematics;
 pub mod linearization;
 pub mod long;
 pub mod markup;

@@ -1,0 +1,99 @@
+//! Step 4's vectors: each body's angular velocity and acceleration and its mass centre's
+//! velocity and acceleration, in the shortest of their multiplied-out and named forms.
+
+use super::context::Kinematics;
+use super::derived::shortest_tex;
+use crate::equations::Derivation;
+use crate::mechanics::{Model, Vector};
+use crate::problem::BodyId;
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::print::latex_name;
+use crate::symbolic::simplify::simplify;
+use crate::symbolic::{add, Expr};
+
+pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
+    let model = &derivation.model;
+    let inertia = &derivation.inertia;
+    // The shorter of the vector multiplied out and as the equations use it (named parts).
+    let shorter = |expanded: &Vector, named: &Vector, body: BodyId| {
+        let b = shortest_tex(model, named, body);
+        // Multiplied out to many times the named form's size, a vector cannot come out the
+        // shorter, and simplifying it (in three frames) is most of a large handout's time.
+        if expanded.operation_count() > 4 * named.operation_count().max(100) {
+            return b;
+        }
+        let a = shortest_tex(model, expanded, body);
+        if b.len() < a.len() {
+            b
+        } else {
+            a
+        }
+    };
+    model
+        .order
+        .iter()
+        .map(|&body| {
+            let state = &model.bodies[body.0];
+            let name = model.problem.body_name(body);
+            let symbol = latex_name(name);
+            Kinematics {
+                body: name.to_string(),
+                omega_tex: format!(
+                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
+                    shorter(&state.omega, &state.omega_named, body)
+                ),
+                alpha_tex: format!(
+                    "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
+                    shorter(&state.alpha, &inertia.alpha[body.0], body)
+                ),
+                velocity_tex: format!(
+                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
+                    match by_partial_velocities(model, &inertia.acceleration[body.0], body) {
+                        Some(named) => shorter(&state.center.velocity, &named, body),
+                        None => shortest_tex(model, &state.center.velocity, body),
+                    }
+                ),
+                acceleration_tex: format!(
+                    "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
+                    shorter(
+                        &state.center.acceleration,
+                        &inertia.acceleration[body.0],
+                        body
+                    )
+                ),
+            }
+        })
+        .collect()
+}
+
+/// The mass centre's velocity as `Σ v_r q̇_r`, with the partial velocities named in its
+/// acceleration `Σ v_r q̈_r + ã` (∂a/∂q̈_r = ∂v/∂q̇_r), or `None` when the velocity has a part
+/// the rates do not carry (a driven coordinate's time) or a coefficient differs.
+fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> Option<Vector> {
+    let rates = model.problem.speed_symbols(1);
+    let accelerations = model.problem.speed_symbols(2);
+    let velocity = model.bodies[body.0]
+        .center
+        .velocity
+        .components_in(body, &model.frames);
+    let named = acceleration.components_in(body, &model.frames);
+    let mut components = Vec::with_capacity(3);
+    for (v, a) in velocity.iter().zip(&named) {
+        let (by_rate, rest) = linear_split(&simplify(v), &rates).ok()?;
+        let (partials, _) = linear_split(a, &accelerations).ok()?;
+        if !rest.is_zero() {
+            return None;
+        }
+        let mut terms = Vec::with_capacity(rates.len());
+        for ((partial, expanded), rate) in partials.iter().zip(&by_rate).zip(&rates) {
+            let value = partial.as_definition().map_or(partial, |d| d.value());
+            if !simplify(&(value - expanded)).is_zero() {
+                return None;
+            }
+            terms.push(partial * &Expr::sym(rate.clone()));
+        }
+        components.push(add(terms));
+    }
+    let components: [Expr; 3] = components.try_into().ok()?;
+    Some(Vector::new(body, components))
+}
