@@ -6,8 +6,9 @@ use super::derived::shortest_tex;
 use crate::equations::Derivation;
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
+use crate::symbolic::collect::{factored, pull_common_factor};
 use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::latex_name;
+use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{add, Expr};
 
@@ -36,6 +37,16 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
             let state = &model.bodies[body.0];
             let name = model.problem.body_name(body);
             let symbol = latex_name(name);
+            let direct_velocity =
+                match by_partial_velocities(model, &inertia.acceleration[body.0], body) {
+                    Some(named) => shorter(&state.center.velocity, &named, body),
+                    None => shortest_tex(model, &state.center.velocity, body),
+                };
+            let direct_acceleration = shorter(
+                &state.center.acceleration,
+                &inertia.acceleration[body.0],
+                body,
+            );
             Kinematics {
                 body: name.to_string(),
                 omega_tex: format!(
@@ -48,18 +59,11 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
                 ),
                 velocity_tex: format!(
                     "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
-                    match by_partial_velocities(model, &inertia.acceleration[body.0], body) {
-                        Some(named) => shorter(&state.center.velocity, &named, body),
-                        None => shortest_tex(model, &state.center.velocity, body),
-                    }
+                    from_parent(model, body, Motion::Velocity, direct_velocity)
                 ),
                 acceleration_tex: format!(
                     "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
-                    shorter(
-                        &state.center.acceleration,
-                        &inertia.acceleration[body.0],
-                        body
-                    )
+                    from_parent(model, body, Motion::Acceleration, direct_acceleration)
                 ),
             }
         })
@@ -96,4 +100,63 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
     }
     let components: [Expr; 3] = components.try_into().ok()?;
     Some(Vector::new(body, components))
+}
+
+/// The mass centre's velocity or acceleration.
+#[derive(Clone, Copy)]
+enum Motion {
+    Velocity,
+    Acceleration,
+}
+
+/// `direct`, or, when shorter, the same vector as the parent's mass centre's plus the
+/// difference, each part in its own unit vectors: down a chain, `v^{k*} = v^{(k-1)*} + …` is
+/// a few terms where the vector written out grows with k.
+fn from_parent(model: &Model, body: BodyId, motion: Motion, direct: String) -> String {
+    let Some(parent) = model.frames.info(body).parent.filter(|p| *p != BodyId::GROUND) else {
+        return direct;
+    };
+    let of = |b: BodyId| {
+        let center = &model.bodies[b.0].center;
+        match motion {
+            Motion::Velocity => &center.velocity,
+            Motion::Acceleration => &center.acceleration,
+        }
+    };
+    let difference = of(body).minus(of(parent));
+    let (letter, parent_name) = (
+        match motion {
+            Motion::Velocity => "v",
+            Motion::Acceleration => "a",
+        },
+        latex_name(model.problem.body_name(parent)),
+    );
+    let mut text = format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{parent_name}^*}}");
+    for (frame, components) in difference.parts() {
+        for (axis, c) in components.iter().enumerate() {
+            let c = simplify(c);
+            if c.is_zero() {
+                continue;
+            }
+            let unit = latex_unit_vector(model.frames.name(*frame), axis as u8);
+            // (L/2)(q̇1 + … + q̇6) as a textbook writes it.
+            let (common, inner) = pull_common_factor(&c);
+            let term = if c.terms().len() > 1 && !common.is_one() {
+                factored(&common, &inner, &unit)
+            } else if c.terms().len() > 1 {
+                format!("\\left({}\\right) {unit}", latex(&c))
+            } else {
+                format!("{} {unit}", latex(&c))
+            };
+            match term.strip_prefix('-') {
+                Some(negative) => text.push_str(&format!(" - {negative}")),
+                None => text.push_str(&format!(" + {term}")),
+            }
+        }
+    }
+    if text.len() < direct.len() {
+        text
+    } else {
+        direct
+    }
 }

@@ -114,7 +114,7 @@ pub fn latex_collected(e: &Expr) -> String {
 }
 
 /// `common (inner) key`, the sign of `common` in front.
-fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
+pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
     let (c, rest) = common.split_coefficient();
     let sign = if c.is_negative() { "-" } else { "" };
     let c = if c.is_negative() { c.neg() } else { c };
