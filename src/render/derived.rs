@@ -2,7 +2,7 @@
 //! turned into the strings and tables of [`Solution`].
 
 use super::context::{
-    Equation as EquationView, Force, FreeBody, InitialValue, Named, Plan, PlanRow,
+    Equation as EquationView, InitialValue, Named, Plan, PlanRow,
     Reaction, Rejected as RejectedView, Solution,
 };
 use super::long::{coefficient_form, LONG_EQUATION};
@@ -10,8 +10,8 @@ use crate::equations::{Derivation, Method};
 use crate::mechanics::{Model, Vector};
 use crate::numeric::format::fixed;
 use crate::pipeline::Worked;
-use crate::plan::forces::{ActionKind, Category};
-use crate::plan::rows::{is_external, Equation, Sum};
+use crate::plan::forces::ActionKind;
+use crate::plan::rows::{Equation, Sum};
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::{as_shown, named_definitions};
@@ -25,7 +25,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let derivation = &worked.derivation;
     let problem = derivation.model.problem;
     let model = &derivation.model;
-    solution.free_bodies = free_bodies(derivation);
+    solution.free_bodies = super::free_bodies::free_bodies(derivation);
     (solution.constraints, solution.constraint_notes) = super::constrained::constraints(derivation);
     solution.force_definitions = force_definitions(derivation);
     solution.plan = plan(derivation);
@@ -211,62 +211,6 @@ pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
         .map(|b| problem.body_name(*b).to_string())
         .collect::<Vec<_>>()
         .join(" + ")
-}
-
-fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
-    let model = &derivation.model;
-    let problem = model.problem;
-    let mut sets: Vec<Vec<BodyId>> = Vec::new();
-    for row in &derivation.rows {
-        if !row.free_body.is_empty() && !sets.contains(&row.free_body) {
-            sets.push(row.free_body.clone());
-        }
-    }
-    sets.iter()
-        .map(|set| {
-            let mut view = FreeBody {
-                name: bodies_name(problem, set),
-                name_tex: bodies_tex(derivation, set),
-                bodies: bodies_name(problem, set),
-                ..FreeBody::default()
-            };
-            for action in derivation.actions.iter().filter(|a| is_external(a, set)) {
-                let (vector_tex, point_tex) = match &action.kind {
-                    ActionKind::Force { offset, force } => {
-                        let sign = initial_sign(model);
-                        let at = Vector::new(action.body, offset.clone()).map(|e| roots_of_squares(e, &sign));
-                        let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
-                        (vector_tex(model, &force), format!("\\text{{at }} {}", vector_tex(model, &at)))
-                    }
-                    ActionKind::Couple { torque } => (vector_tex(model, torque), "\\text{couple}".into()),
-                };
-                let force = Force { label: action.label.clone(), vector_tex, point_tex };
-                match action.category {
-                    Category::Contact => view.contact.push(force),
-                    Category::Distance => view.distance.push(force),
-                }
-            }
-            for &body in set {
-                let name = problem.body_name(body);
-                // In math a name is set as a symbol (`rod_a` would be a double subscript).
-                let symbol = latex_name(name);
-                let mass = latex(&model.bodies[body.0].mass);
-                view.inertia.push(Force {
-                    label: format!("inertia force of {name}"),
-                    vector_tex: format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}"),
-                    point_tex: format!("\\text{{at }} {symbol}^*"),
-                });
-                view.inertia.push(Force {
-                    label: format!("inertia torque of {name}"),
-                    vector_tex: format!(
-                        "-\\boldsymbol{{\\alpha}}^{{{symbol}}} \\cdot \\mathbf{{I}}^{{{symbol}}} - \\boldsymbol{{\\omega}}^{{{symbol}}} \\times \\mathbf{{I}}^{{{symbol}}} \\cdot \\boldsymbol{{\\omega}}^{{{symbol}}}"
-                    ),
-                    point_tex: "\\text{couple}".into(),
-                });
-            }
-            view
-        })
-        .collect()
 }
 
 /// The named quantities the forces use, each with what it stands for.

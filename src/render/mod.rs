@@ -14,6 +14,7 @@ pub mod derived;
 pub mod draw;
 pub mod eigen_plot;
 pub mod escape;
+mod free_bodies;
 pub mod kane;
 mod kinematics;
 pub mod linearization;

@@ -1,0 +1,128 @@
+//! Step 2's free bodies: each with the forces and couples that act on it from outside, the
+//! distance forces, and the inertia forces and torques of its bodies.
+
+use super::context::{Force, FreeBody};
+use super::derived::{bodies_name, bodies_tex, initial_sign, vector_tex};
+use crate::equations::Derivation;
+use crate::mechanics::model::vector_of;
+use crate::mechanics::{Model, Vector};
+use crate::plan::forces::{ActionKind, Category, Source};
+use crate::plan::rows::is_external;
+use crate::problem::BodyId;
+use crate::symbolic::named::as_shown;
+use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::roots::roots_of_squares;
+
+/// A free body of more bodies than this lists gravity and the inertia forces once, for
+/// each body k, instead of body by body.
+const MOST_BODIES_LISTED: usize = 3;
+
+pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let mut sets: Vec<Vec<BodyId>> = Vec::new();
+    for row in &derivation.rows {
+        if !row.free_body.is_empty() && !sets.contains(&row.free_body) {
+            sets.push(row.free_body.clone());
+        }
+    }
+    sets.iter()
+        .map(|set| {
+            let mut view = FreeBody {
+                name: bodies_name(problem, set),
+                name_tex: bodies_tex(derivation, set),
+                bodies: bodies_name(problem, set),
+                ..FreeBody::default()
+            };
+            // A free body of many bodies lists gravity and the inertia forces once, for each
+            // body k, as a textbook does for a chain: body by body they would fill pages.
+            let grouped = set.len() > MOST_BODIES_LISTED;
+            for action in derivation.actions.iter().filter(|a| is_external(a, set)) {
+                if grouped && action.source == Source::Gravity {
+                    continue;
+                }
+                let (vector_tex, point_tex) = match &action.kind {
+                    ActionKind::Force { offset, force } => {
+                        let sign = initial_sign(model);
+                        let at = Vector::new(action.body, offset.clone()).map(|e| roots_of_squares(e, &sign));
+                        let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
+                        (vector_tex(model, &force), format!("\\text{{at }} {}", vector_tex(model, &at)))
+                    }
+                    ActionKind::Couple { torque } => (vector_tex(model, torque), "\\text{couple}".into()),
+                };
+                let force = Force { label: action.label.clone(), vector_tex, point_tex };
+                match action.category {
+                    Category::Contact => view.contact.push(force),
+                    Category::Distance => view.distance.push(force),
+                }
+            }
+            if grouped {
+                group_rows(&mut view, derivation, set);
+            } else {
+                for &body in set {
+                    inertia_rows(&mut view, model, body);
+                }
+            }
+            view
+        })
+        .collect()
+}
+
+fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
+    let name = model.problem.body_name(body);
+    // In math a name is set as a symbol (`rod_a` would be a double subscript).
+    let symbol = latex_name(name);
+    let mass = latex(&model.bodies[body.0].mass);
+    view.inertia.push(Force {
+        label: format!("inertia force of {name}"),
+        vector_tex: format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}"),
+        point_tex: format!("\\text{{at }} {symbol}^*"),
+    });
+    view.inertia.push(Force {
+        label: format!("inertia torque of {name}"),
+        vector_tex: torque_tex(&symbol),
+        point_tex: "\\text{couple}".into(),
+    });
+}
+
+fn torque_tex(k: &str) -> String {
+    format!(
+        "-\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}} - \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
+    )
+}
+
+/// Gravity and the inertia forces and torques of every body of `set` as one row each,
+/// written for a body k of the set.
+fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
+    let model = &derivation.model;
+    let every = format!("k \\in \\{{{}\\}}", bodies_tex(derivation, set).replace(" + ", ", "));
+    let at_center = format!("\\text{{at }} k^*,\\; {every}");
+    if let Some(g) = &model.problem.gravity {
+        let g = vector_of(g);
+        view.distance.push(Force {
+            label: "gravity on each body k".into(),
+            vector_tex: times_mass(&vector_tex(model, &g)),
+            point_tex: at_center.clone(),
+        });
+    }
+    view.inertia.push(Force {
+        label: "inertia force of each body k".into(),
+        vector_tex: "-m_{k}\\, {}^{N}\\mathbf{a}^{k^*}".into(),
+        point_tex: at_center,
+    });
+    view.inertia.push(Force {
+        label: "inertia torque of each body k".into(),
+        vector_tex: torque_tex("k"),
+        point_tex: format!("\\text{{couple}},\\; {every}"),
+    });
+}
+
+/// `m_k g` for the field `g`: `-m_k g n̂_y` for `-g n̂_y`, `m_k (…)` for a sum.
+fn times_mass(g: &str) -> String {
+    let single = !g[1..].contains(" + ") && !g[1..].contains(" - ");
+    match g.strip_prefix('-') {
+        Some(rest) if single => format!("-m_{{k}}\\, {rest}"),
+        _ if single => format!("m_{{k}}\\, {g}"),
+        _ => format!("m_{{k}} \\left({g}\\right)"),
+    }
+}
