@@ -283,3 +283,42 @@ fn decimals_the_problem_writes_stay_decimals() {
     ));
     assert!(!markdown.contains("\\frac{2}{5}"));
 }
+
+#[test]
+fn a_chain_link_moves_with_its_parents_mass_centre() {
+    let markdown = explain("validation/ten-link-chain", "markdown");
+    // By hand: link6 hangs along -y of its frame from its joint, so from link6* to the joint
+    // P7 is -(L/2) ŷ6 and from P7 to link7* is -(L/2) ŷ7. With ω6 = (q̇1 + … + q̇6) ẑ,
+    // ω6 × (-(L/2) ŷ6) = (L/2)(q̇1 + … + q̇6) x̂6, and likewise for link7.
+    let expected = "{}^{N}\\mathbf{v}^{\\mathrm{link}_{7}^*} = {}^{N}\\mathbf{v}^{\\mathrm{link}_{6}^*} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{6}} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6} + \\dot{q}_{7}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}";
+    assert!(
+        markdown.lines().any(|l| l.trim() == expected),
+        "no line reads {expected}"
+    );
+    // The free body of all ten links lists gravity once, for a link k: -m_k g n̂_y.
+    assert!(markdown.contains(
+        "| distance: gravity on each body k | $-m_{k}\\, g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } k^*,\\; k \\in \\{\\mathrm{link}_{1}, "
+    ));
+    // link1 belongs to that free body only, so no row names it alone.
+    assert!(!markdown.contains("gravity on link1 |"));
+    assert!(!markdown.contains("inertia force of link1 |"));
+}
+
+#[test]
+fn a_spherical_link_turns_with_its_parent_by_name() {
+    let markdown = explain("validation/spherical-chain-3", "markdown");
+    // B3 is B2 turned by q7 about x, q8 about the new y, q9 about the final z. Along b̂3z, by
+    // hand: x̂2 · b̂3z = sin q8, ŷ2 · b̂3z = -sin q7 cos q8, ẑ2 · b̂3z = cos q7 cos q8, and the
+    // rates add q̇7 sin q8 + q̇9.
+    assert!(markdown.contains(
+        "- $\\omega^{B_{3}}_{z} = \\dot{q}_{9} + \\dot{q}_{7} s_{8} + \\omega^{B_{2}}_{x} s_{8} - \\omega^{B_{2}}_{y} s_{7} c_{8} + \\omega^{B_{2}}_{z} c_{7} c_{8}$: angular velocity of B3 along B3.z"
+    ));
+    // Step 4 writes the vector by those names.
+    assert!(markdown.contains(
+        "{}^{N}\\boldsymbol{\\omega}^{B_{3}} = \\omega^{B_{3}}_{x} \\hat{\\mathbf{b}}_{3,x} + \\omega^{B_{3}}_{y} \\hat{\\mathbf{b}}_{3,y} + \\omega^{B_{3}}_{z} \\hat{\\mathbf{b}}_{3,z}"
+    ));
+    // The mass centre's velocity is Σ v_r q̇_r with the partial velocities of its acceleration.
+    assert!(markdown.contains(
+        "{}^{N}\\mathbf{v}^{B_{3}^*} = \\left(-b_{3} \\dot{q}_{9} + \\dot{q}_{1} v^{B_{3}^{*}}_{q_{1},x} + "
+    ));
+}
