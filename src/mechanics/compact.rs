@@ -40,6 +40,7 @@ pub fn named_components(
     components: &Components,
     accelerations: &[Symbol],
     quantity: &Quantity,
+    recursive: Option<&[Components]>,
 ) -> Components {
     std::array::from_fn(|axis| {
         let value = &components[axis];
@@ -50,10 +51,15 @@ pub fn named_components(
             return value.clone();
         };
         let mut terms = Vec::with_capacity(accelerations.len() + 1);
-        for (coefficient, acceleration) in coefficients.iter().zip(accelerations) {
+        for (r, (coefficient, acceleration)) in coefficients.iter().zip(accelerations).enumerate() {
             if coefficient.is_zero() {
                 continue;
             }
+            // The same coefficient built on the parent's named ones, when that is shorter.
+            let coefficient = match recursive.map(|c| &c[r][axis]) {
+                Some(built) if built.terms().len() < coefficient.terms().len() => built,
+                _ => coefficient,
+            };
             let named = name_part(coefficient, quantity, axis, Some(acceleration));
             terms.push(&named * &Expr::sym(acceleration.clone()));
         }

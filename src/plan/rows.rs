@@ -32,18 +32,32 @@ impl Inertia {
         let accelerations: Vec<Symbol> = model.problem.speed_symbols(2);
         // Spatial bodies' accelerations in their own unit vectors with named parts; planar
         // ones stay as the student writes them.
-        let named = |body: BodyId, vector: &Vector, kind: Kind| -> Components {
-            let components = vector.components_in(body, &model.frames);
-            if model.is_planar() || body == BodyId::GROUND {
-                return components;
-            }
-            let body_name = model.frames.name(body);
-            let quantity = Quantity {
-                body: body_name,
-                kind,
+        let named =
+            |body: BodyId, vector: &Vector, kind: Kind, recursive: Option<&[Components]>| {
+                let components = vector.components_in(body, &model.frames);
+                if model.is_planar() || body == BodyId::GROUND {
+                    return components;
+                }
+                let body_name = model.frames.name(body);
+                let quantity = Quantity {
+                    body: body_name,
+                    kind,
+                };
+                named_components(&components, &accelerations, &quantity, recursive)
             };
-            named_components(&components, &accelerations, &quantity)
-        };
+        // Angular accelerations parents first, so that a body's partial angular velocities
+        // can be built on its parent's named ones: ω_r^k = C ω_r^(k-1) + the joint's own.
+        let mut alphas: Vec<Components> =
+            vec![std::array::from_fn(|_| Expr::zero()); model.bodies.len()];
+        for &body in &model.order {
+            let recursive = partial_angular_velocities(model, body, &alphas, &accelerations);
+            alphas[body.0] = named(
+                body,
+                &model.bodies[body.0].alpha,
+                Kind::AngularAcceleration,
+                recursive.as_deref(),
+            );
+        }
         // A short acceleration keeps the unit vectors it was written in (`ẍ n_x`).
         let is_long = |vector: &Vector| {
             let terms: usize = vector.parts().iter().map(|(_, c)| size(c)).sum();
@@ -58,13 +72,18 @@ impl Inertia {
             } else {
                 Vector::new(
                     body,
-                    named(body, &state.center.acceleration, Kind::CenterAcceleration),
+                    named(
+                        body,
+                        &state.center.acceleration,
+                        Kind::CenterAcceleration,
+                        None,
+                    ),
                 )
             };
             force.push(center.scaled(&-state.mass.clone()));
             acceleration.push(center);
             let w = state.omega_named.components_in(body, &model.frames);
-            let a = named(body, &state.alpha, Kind::AngularAcceleration);
+            let a = alphas[index].clone();
             let iw = apply(&state.inertia, &w);
             let ia = apply(&state.inertia, &a);
             let gyro = crate::mechanics::vector::cross3(&w, &iw);
@@ -79,6 +98,51 @@ impl Inertia {
             alpha,
         }
     }
+}
+
+/// The partial angular velocities of `body` for each acceleration, in its own unit vectors,
+/// from its parent's as `alphas` names them (the q̈ coefficients of α): the parent's carried
+/// into this frame plus the joint's own axes. `None` for a child of `N`, in the plane, or
+/// with declared speeds, whose kinematic equations mix the rates.
+fn partial_angular_velocities(
+    model: &Model,
+    body: BodyId,
+    alphas: &[Components],
+    accelerations: &[Symbol],
+) -> Option<Vec<Components>> {
+    let parent = model.frames.info(body).parent?;
+    if parent == BodyId::GROUND || model.is_planar() || model.speeds.is_some() {
+        return None;
+    }
+    let relative = model.frames.relative_angular_velocity(body).ok()?;
+    let rates: Vec<Symbol> = model.problem.speed_symbols(1);
+    let (own, _) = split_components(&relative, &rates)?;
+    let (from_parent, _) = split_components(&alphas[parent.0], accelerations)?;
+    let into_body = model.frames.dcm(body, parent);
+    Some(
+        (0..accelerations.len())
+            .map(|r| {
+                let carried = apply(&into_body, &from_parent[r]);
+                std::array::from_fn(|i| crate::symbolic::simplify(&(&carried[i] + &own[r][i])))
+            })
+            .collect(),
+    )
+}
+
+/// Each component split by `unknowns`: for every unknown its coefficient vector, and the rest.
+fn split_components(c: &Components, unknowns: &[Symbol]) -> Option<(Vec<Components>, Components)> {
+    let mut by_unknown: Vec<Components> =
+        vec![std::array::from_fn(|_| Expr::zero()); unknowns.len()];
+    let mut rest: Components = std::array::from_fn(|_| Expr::zero());
+    for axis in 0..3 {
+        let (coefficients, remainder) =
+            crate::symbolic::linear::linear_split(&c[axis], unknowns).ok()?;
+        for (r, coefficient) in coefficients.into_iter().enumerate() {
+            by_unknown[r][axis] = coefficient;
+        }
+        rest[axis] = remainder;
+    }
+    Some((by_unknown, rest))
 }
 
 /// The Motion Law's groups of one scalar equation; their sum is zero.

@@ -2,8 +2,8 @@
 //! turned into the strings and tables of [`Solution`].
 
 use super::context::{
-    Equation as EquationView, InitialValue, Named, Plan, PlanRow,
-    Reaction, Rejected as RejectedView, Solution,
+    Equation as EquationView, InitialValue, Named, Plan, PlanRow, Reaction,
+    Rejected as RejectedView, Solution,
 };
 use super::long::{coefficient_form, LONG_EQUATION};
 use crate::equations::{Derivation, Method};

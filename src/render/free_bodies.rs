@@ -44,13 +44,23 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                 let (vector_tex, point_tex) = match &action.kind {
                     ActionKind::Force { offset, force } => {
                         let sign = initial_sign(model);
-                        let at = Vector::new(action.body, offset.clone()).map(|e| roots_of_squares(e, &sign));
+                        let at = Vector::new(action.body, offset.clone())
+                            .map(|e| roots_of_squares(e, &sign));
                         let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
-                        (vector_tex(model, &force), format!("\\text{{at }} {}", vector_tex(model, &at)))
+                        (
+                            vector_tex(model, &force),
+                            format!("\\text{{at }} {}", vector_tex(model, &at)),
+                        )
                     }
-                    ActionKind::Couple { torque } => (vector_tex(model, torque), "\\text{couple}".into()),
+                    ActionKind::Couple { torque } => {
+                        (vector_tex(model, torque), "\\text{couple}".into())
+                    }
                 };
-                let force = Force { label: action.label.clone(), vector_tex, point_tex };
+                let force = Force {
+                    label: action.label.clone(),
+                    vector_tex,
+                    point_tex,
+                };
                 match action.category {
                     Category::Contact => view.contact.push(force),
                     Category::Distance => view.distance.push(force),
@@ -95,7 +105,10 @@ fn torque_tex(k: &str) -> String {
 /// written for a body k of the set.
 fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
     let model = &derivation.model;
-    let every = format!("k \\in \\{{{}\\}}", bodies_tex(derivation, set).replace(" + ", ", "));
+    let every = format!(
+        "k \\in \\{{{}\\}}",
+        bodies_tex(derivation, set).replace(" + ", ", ")
+    );
     let at_center = format!("\\text{{at }} k^*,\\; {every}");
     if let Some(g) = &model.problem.gravity {
         let g = vector_of(g);

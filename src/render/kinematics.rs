@@ -113,7 +113,12 @@ enum Motion {
 /// difference, each part in its own unit vectors: down a chain, `v^{k*} = v^{(k-1)*} + …` is
 /// a few terms where the vector written out grows with k.
 fn from_parent(model: &Model, body: BodyId, motion: Motion, direct: String) -> String {
-    let Some(parent) = model.frames.info(body).parent.filter(|p| *p != BodyId::GROUND) else {
+    let Some(parent) = model
+        .frames
+        .info(body)
+        .parent
+        .filter(|p| *p != BodyId::GROUND)
+    else {
         return direct;
     };
     let of = |b: BodyId| {
