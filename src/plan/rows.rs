@@ -4,7 +4,7 @@
 use crate::mechanics::compact::{named_components, Kind, Quantity, MAX_EXPANDED_TERMS};
 use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::frames::apply;
-use crate::mechanics::vector::{size, Components};
+use crate::mechanics::vector::{cross3, size, Components};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
@@ -63,23 +63,33 @@ impl Inertia {
             let terms: usize = vector.parts().iter().map(|(_, c)| size(c)).sum();
             terms > 3 * MAX_EXPANDED_TERMS
         };
+        // Mass centres parents first too: v_r^k* = v_r^(k-1)* + ω_r^(k-1) × r + ω_r^k × r'.
+        let mut centers: Vec<Vector> = model
+            .bodies
+            .iter()
+            .map(|b| b.center.acceleration.clone())
+            .collect();
+        for &body in &model.order {
+            let state = &model.bodies[body.0];
+            if model.is_planar() || !is_long(&state.center.acceleration) {
+                continue;
+            }
+            let recursive = partial_center_velocities(model, body, &centers, &alphas);
+            centers[body.0] = Vector::new(
+                body,
+                named(
+                    body,
+                    &state.center.acceleration,
+                    Kind::CenterAcceleration,
+                    recursive.as_deref(),
+                ),
+            );
+        }
         let mut acceleration = Vec::with_capacity(model.bodies.len());
         let mut alpha = Vec::with_capacity(model.bodies.len());
         for (index, state) in model.bodies.iter().enumerate() {
             let body = BodyId(index);
-            let center = if model.is_planar() || !is_long(&state.center.acceleration) {
-                state.center.acceleration.clone()
-            } else {
-                Vector::new(
-                    body,
-                    named(
-                        body,
-                        &state.center.acceleration,
-                        Kind::CenterAcceleration,
-                        None,
-                    ),
-                )
-            };
+            let center = centers[index].clone();
             force.push(center.scaled(&-state.mass.clone()));
             acceleration.push(center);
             let w = state.omega_named.components_in(body, &model.frames);
@@ -124,6 +134,64 @@ fn partial_angular_velocities(
             .map(|r| {
                 let carried = apply(&into_body, &from_parent[r]);
                 std::array::from_fn(|i| crate::symbolic::simplify(&(&carried[i] + &own[r][i])))
+            })
+            .collect(),
+    )
+}
+
+/// The partial velocities of `body`'s mass centre for each acceleration, in its own unit
+/// vectors, from its parent's as `centers` names them: the parent's, plus the parent's
+/// partial angular velocity across to the joint and the joint's sliding, carried into this
+/// frame, plus this body's partial angular velocity across to its mass centre. `None` where
+/// [`partial_angular_velocities`] is.
+fn partial_center_velocities(
+    model: &Model,
+    body: BodyId,
+    centers: &[Vector],
+    alphas: &[Components],
+) -> Option<Vec<Components>> {
+    let parent = model.frames.info(body).parent?;
+    if parent == BodyId::GROUND || model.is_planar() || model.speeds.is_some() {
+        return None;
+    }
+    let joint = &model.joints[model.problem.joint_of(body)?];
+    let (accelerations, rates) = (
+        model.problem.speed_symbols(2),
+        model.problem.speed_symbols(1),
+    );
+    let frames = &model.frames;
+    let (parent_center, _) = split_components(
+        &centers[parent.0].components_in(parent, frames),
+        &accelerations,
+    )?;
+    let (parent_omega, _) = split_components(&alphas[parent.0], &accelerations)?;
+    let (own_omega, _) = split_components(&alphas[body.0], &accelerations)?;
+    let d = &joint.motion.translation;
+    let slide_rate: Components = [
+        crate::symbolic::diff::time_derivative(&d[0]).ok()?,
+        crate::symbolic::diff::time_derivative(&d[1]).ok()?,
+        crate::symbolic::diff::time_derivative(&d[2]).ok()?,
+    ];
+    let (slide, _) = split_components(&slide_rate, &rates)?;
+    let parent_offset = &model.bodies[parent.0].center_offset;
+    let to_joint: Components = std::array::from_fn(|i| &(&joint.at[i] + &d[i]) - &parent_offset[i]);
+    let own_offset = &model.bodies[body.0].center_offset;
+    let to_center: Components = std::array::from_fn(|i| &own_offset[i] - &joint.child_at[i]);
+    let into_body = frames.dcm(body, parent);
+    Some(
+        (0..accelerations.len())
+            .map(|r| {
+                let across = cross3(&parent_omega[r], &to_joint);
+                let at_joint: Components = std::array::from_fn(|i| {
+                    add([
+                        parent_center[r][i].clone(),
+                        across[i].clone(),
+                        slide[r][i].clone(),
+                    ])
+                });
+                let carried = apply(&into_body, &at_joint);
+                let turning = cross3(&own_omega[r], &to_center);
+                std::array::from_fn(|i| crate::symbolic::simplify(&(&carried[i] + &turning[i])))
             })
             .collect(),
     )

@@ -4,9 +4,11 @@
 use super::context::Kinematics;
 use super::derived::shortest_tex;
 use crate::equations::Derivation;
+use crate::mechanics::model::sample_states;
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
 use crate::symbolic::collect::{factored, pull_common_factor};
+use crate::symbolic::eval::eval;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
@@ -81,6 +83,7 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
         .velocity
         .components_in(body, &model.frames);
     let named = acceleration.components_in(body, &model.frames);
+    let states = sample_states(model);
     let mut components = Vec::with_capacity(3);
     for (v, a) in velocity.iter().zip(&named) {
         let (by_rate, rest) = linear_split(&simplify(v), &rates).ok()?;
@@ -90,8 +93,13 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
         }
         let mut terms = Vec::with_capacity(rates.len());
         for ((partial, expanded), rate) in partials.iter().zip(&by_rate).zip(&rates) {
-            let value = partial.as_definition().map_or(partial, |d| d.value());
-            if !simplify(&(value - expanded)).is_zero() {
+            // The named partial may be built on its parent's: compared by value at the
+            // planner's sample states, where an identity holds and a slip would not.
+            let differs = states.iter().any(|state| {
+                let (a, b) = (eval(partial, state), eval(expanded, state));
+                (a - b).abs() > 1e-9 * (1.0 + b.abs())
+            });
+            if differs {
                 return None;
             }
             terms.push(partial * &Expr::sym(rate.clone()));
