@@ -2,8 +2,8 @@
 //! computed once, and one evaluation costs about the arithmetic it contains.
 
 use super::expr::{Expr, Node, Symbol};
+use super::fast_hash::FastMap;
 use super::instr::Instr;
-use std::collections::HashMap;
 use std::ops::Neg;
 
 /// A straight-line program that evaluates a list of expressions.
@@ -19,9 +19,9 @@ pub struct Program {
 
 struct Compiler {
     program: Program,
-    by_pointer: HashMap<*const Node, usize>,
-    by_value: HashMap<Expr, usize>,
-    constant_slots: HashMap<u64, usize>,
+    by_pointer: FastMap<*const Node, usize>,
+    by_value: FastMap<Expr, usize>,
+    constant_slots: FastMap<u64, usize>,
     constant_values: Vec<f64>,
     // Keeps every compiled node alive so that pointers stay unique.
     alive: Vec<Expr>,
@@ -39,9 +39,9 @@ impl Program {
                 instructions: Vec::new(),
                 outputs: Vec::new(),
             },
-            by_pointer: HashMap::new(),
-            by_value: HashMap::new(),
-            constant_slots: HashMap::new(),
+            by_pointer: FastMap::default(),
+            by_value: FastMap::default(),
+            constant_slots: FastMap::default(),
             constant_values: Vec::new(),
             alive: Vec::new(),
         };

@@ -2,17 +2,17 @@
 //! (see `compile` for that).
 
 use super::expr::{Expr, Func, Node, Symbol};
+use super::fast_hash::FastMap;
 use std::cell::RefCell;
-use std::collections::HashMap;
 
 /// Values of the symbols an expression may hold.
 #[derive(Clone, Debug, Default)]
 pub struct Values {
-    values: HashMap<Symbol, f64>,
+    values: FastMap<Symbol, f64>,
     /// The values of the definitions met so far, by name, with these values: definitions
     /// built on definitions (the direction cosines of a chain) are then evaluated once each,
     /// not once per path through them.
-    defined: RefCell<HashMap<std::rc::Rc<str>, f64>>,
+    defined: RefCell<FastMap<std::rc::Rc<str>, f64>>,
 }
 
 impl Values {

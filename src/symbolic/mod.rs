@@ -8,6 +8,7 @@ pub mod compile;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+pub mod fast_hash;
 pub mod format;
 pub mod hint;
 pub mod horner;
