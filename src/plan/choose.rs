@@ -3,7 +3,7 @@
 //! block-triangular: each block of rows brings in as many new unknowns as it has rows
 //! (one, when it can), so that a student solves the rows in order, a few unknowns at a time.
 
-use super::planner::{adds_rank, coefficient_rows, sample_states, write_out, Candidate};
+use super::planner::{adds_rank, sample_states, write_out, Candidate};
 use super::rejection::{self, Reason, Rejected, SpecialState};
 use super::rows::{Equation, Inertia};
 use crate::mechanics::Model;
@@ -26,9 +26,56 @@ pub struct Choice {
 /// A sample state, and whether it is a special one (`None`: generic).
 type Sample = (Values, Option<SpecialState>);
 
-/// Rows written out, with their coefficients, by candidate (`false`) or constraint row
-/// (`true`) index: writing out and splitting a row is what costs, and the attempts share it.
-type Written = HashMap<(bool, usize), (Equation, Option<Vec<Expr>>)>;
+/// Whether a sample state is a special one, and which (`None`: generic).
+type Kind = Option<SpecialState>;
+
+/// A row's key: its candidate's (`false`) or constraint row's (`true`) index.
+type Key = (bool, usize);
+
+/// A row written out, its coefficients, and their values by sample state (`None`: not
+/// evaluated yet): writing out, splitting and evaluating a row is what costs, and the
+/// attempts share it.
+struct Written {
+    equation: Equation,
+    coefficients: Option<Vec<Expr>>,
+    values: Vec<Option<Vec<f64>>>,
+}
+
+impl Written {
+    fn new(equation: Equation, wanted: &[Symbol]) -> Written {
+        let coefficients = linear_split(&equation.expression, wanted).ok().map(|c| c.0);
+        Written {
+            equation,
+            coefficients,
+            values: Vec::new(),
+        }
+    }
+
+    /// The coefficients' values at `states[state]` (NaN for a row not linear in them).
+    fn at(&mut self, states: &[Sample], state: usize, wanted: usize) -> &[f64] {
+        if self.values.len() <= state {
+            self.values.resize(state + 1, None);
+        }
+        let coefficients = &self.coefficients;
+        self.values[state].get_or_insert_with(|| match coefficients {
+            Some(c) => c.iter().map(|c| eval(c, &states[state].0)).collect(),
+            None => vec![f64::NAN; wanted],
+        })
+    }
+}
+
+/// What the attempts share: the sample states met so far (each keeps the values of the
+/// definitions it evaluated) and the rows written out.
+struct Planner<'a, 'p> {
+    model: &'a Model<'p>,
+    actions: &'a [Action],
+    inertia: &'a Inertia,
+    candidates: &'a [Candidate],
+    wanted: &'a [Symbol],
+    given: &'a [Equation],
+    states: Vec<Sample>,
+    written: HashMap<Key, Written>,
+}
 
 /// Chooses the rows: wanted unknowns only; a block-triangular set when there is one, else
 /// sparse rows first and the fewest terms, each adding rank. `given` (the constraint rows)
@@ -42,69 +89,71 @@ pub fn choose(
     given: &[Equation],
     required: &[Values],
 ) -> Choice {
-    let states: Vec<Sample> = sample_states(model)
+    let mut planner = Planner {
+        model,
+        actions,
+        inertia,
+        candidates: &candidates,
+        wanted,
+        given,
+        states: Vec::new(),
+        written: HashMap::new(),
+    };
+    let states: Vec<usize> = sample_states(model)
         .into_iter()
         .enumerate()
-        .map(|(i, v)| (v, (i == 0).then_some(SpecialState::Initial)))
+        .map(|(i, v)| planner.add_state(v, (i == 0).then_some(SpecialState::Initial)))
         .collect();
     let complete = |choice: &Choice| choice.rows.len() == wanted.len();
-    let mut written = Written::new();
-    let mut attempt = |states: &[Sample]| {
-        choose_at(
-            model,
-            actions,
-            inertia,
-            &candidates,
-            wanted,
-            given,
-            states,
-            &mut written,
-        )
-    };
     if !required.is_empty() {
         // States the caller will solve at: plan for them too if a plan can be; otherwise
         // (the system itself is singular there) plan as usual.
         let mut more = states.clone();
-        more.extend(
-            required
-                .iter()
-                .map(|v| (v.clone(), Some(SpecialState::Requested))),
-        );
-        let choice = attempt(&more);
+        for v in required {
+            more.push(planner.add_state(v.clone(), Some(SpecialState::Requested)));
+        }
+        let (choice, _) = planner.attempt(&more);
         if complete(&choice) {
             return choice;
         }
     }
-    let choice = attempt(&states);
+    let (choice, keys) = planner.attempt(&states);
     if complete(&choice) {
         // Rows that are independent at generic states can still fail together at special
         // ones: all q = 0 (often the equilibrium a student linearizes about) or a quarter
         // turn. A pendulum's `M about bob*` with `F along N.x` loses the vertical pin force
         // at q = 0. Plan again with those states too (both, else the first), and keep the
         // new plan if there is one: some systems are singular there whatever the rows.
-        let special: Vec<Sample> = [
+        let special: Vec<usize> = [
             (0.0, SpecialState::AllZero),
             (FRAC_PI_2, SpecialState::QuarterTurn),
         ]
         .into_iter()
-        .map(|(q, kind)| (uniform_state(model, q), Some(kind)))
+        .map(|(q, kind)| planner.add_state(uniform_state(model, q), Some(kind)))
         .collect();
         // The cheap test first: the kinematics are looked at only for a plan that fails.
-        let values: Vec<Values> = special.iter().map(|(v, _)| v.clone()).collect();
-        let full = full_rank_at(&choice.rows, wanted, &values);
-        if special
+        let full: Vec<bool> = special
             .iter()
-            .zip(&full)
-            .any(|((state, _), full)| !full && rates_are_independent(model, state))
-        {
-            let special: Vec<Sample> = special
+            .map(|&state| planner.full_rank_at(&keys, state))
+            .collect();
+        if full.iter().all(|&full| full) {
+            return choice;
+        }
+        let columns = rate_columns(model);
+        let independent: Vec<bool> = special
+            .iter()
+            .map(|&state| rates_are_independent(&columns, &planner.states[state].0))
+            .collect();
+        if full.iter().zip(&independent).any(|(full, independent)| !full && *independent) {
+            let special: Vec<usize> = special
                 .into_iter()
-                .filter(|(state, _)| rates_are_independent(model, state))
+                .zip(&independent)
+                .filter_map(|(state, independent)| independent.then_some(state))
                 .collect();
             for count in (1..=special.len()).rev() {
                 let mut more = states.clone();
-                more.extend(special[..count].iter().cloned());
-                let again = attempt(&more);
+                more.extend(&special[..count]);
+                let (again, _) = planner.attempt(&more);
                 if complete(&again) {
                     return again;
                 }
@@ -113,31 +162,41 @@ pub fn choose(
         return choice;
     }
     // The initial state itself may be singular (gimbal lock, say): plan on generic states.
-    attempt(&states[1..])
+    planner.attempt(&states[1..]).0
 }
 
-/// Whether no combination of the rates leaves every body still at `state`: the columns of
-/// the map from the rates to the bodies' velocities and angular velocities are independent.
-/// Euler angles in gimbal lock fail this, and then no choice of rows can be nonsingular.
-fn rates_are_independent(model: &Model, state: &Values) -> bool {
-    let problem = model.problem;
-    let rates: Vec<Symbol> = problem.speed_symbols(1);
+/// The coefficients of the rates in each body's velocity and angular velocity, by rate
+/// (`None`: not linear in the rates, no verdict). They do not depend on the state.
+fn rate_columns(model: &Model) -> Option<Vec<Vec<Expr>>> {
+    let rates: Vec<Symbol> = model.problem.speed_symbols(1);
     let mut columns = vec![Vec::new(); rates.len()];
     for &body in &model.order {
         let b = &model.bodies[body.0];
         let velocity = b.center.velocity.components_in(body, &model.frames);
         let omega = b.omega.components_in(body, &model.frames);
         for component in velocity.iter().chain(&omega) {
-            let Ok((coefficients, _)) = linear_split(component, &rates) else {
-                return true; // not linear in the rates: no verdict
-            };
-            for (column, c) in columns.iter_mut().zip(&coefficients) {
-                column.push(eval(c, state));
+            let (coefficients, _) = linear_split(component, &rates).ok()?;
+            for (column, c) in columns.iter_mut().zip(coefficients) {
+                column.push(c);
             }
         }
     }
+    Some(columns)
+}
+
+/// Whether no combination of the rates leaves every body still at `state`: the columns of
+/// the map from the rates to the bodies' velocities and angular velocities (`columns`, see
+/// [`rate_columns`]) are independent. Euler angles in gimbal lock fail this, and then no
+/// choice of rows can be nonsingular.
+fn rates_are_independent(columns: &Option<Vec<Vec<Expr>>>, state: &Values) -> bool {
+    let Some(columns) = columns else {
+        return true;
+    };
     let mut basis = Vec::new();
-    columns.iter().all(|column| adds_rank(&mut basis, column))
+    columns.iter().all(|column| {
+        let column: Vec<f64> = column.iter().map(|c| eval(c, state)).collect();
+        adds_rank(&mut basis, &column)
+    })
 }
 
 /// Every coordinate at `q`, the rates as given initially.
@@ -147,32 +206,26 @@ fn uniform_state(model: &Model, q: f64) -> Values {
     model.values_at(0.0, &vec![q; coordinates.len()], &rates)
 }
 
-/// For each of `states`, whether `rows` determine every one of `wanted` there (each row
-/// is split into its coefficients once for all the states).
-fn full_rank_at(rows: &[Equation], wanted: &[Symbol], states: &[Values]) -> Vec<bool> {
-    let mut bases = vec![Vec::new(); states.len()];
-    let mut full = vec![true; states.len()];
-    for row in rows {
-        let coefficients = coefficient_rows(row, wanted, states);
-        for ((basis, full), row) in bases.iter_mut().zip(&mut full).zip(&coefficients) {
-            *full = *full && adds_rank(basis, row);
-        }
-    }
-    full
-}
-
 /// A row the planner may use: a candidate's or a constraint row.
 struct Row {
-    /// The candidate's index, or `None` for a constraint row.
-    candidate: Option<usize>,
-    equation: Equation,
+    key: Key,
     /// The unknowns it contains, as indices of `wanted`.
     unknowns: Vec<usize>,
     /// Its coefficients of the unknowns at each state.
     coefficients: Vec<Vec<f64>>,
     /// Preference: constraint rows first (they are always in), then fewest unknowns, then
     /// fewest terms, then the candidates' order.
-    key: (bool, usize, usize, usize),
+    preference: (bool, usize, usize, usize),
+}
+
+impl Row {
+    /// The candidate's index, or `None` for a constraint row.
+    fn candidate(&self) -> Option<usize> {
+        match self.key {
+            (false, index) => Some(index),
+            (true, _) => None,
+        }
+    }
 }
 
 /// Why a row could not join a set of rows.
@@ -189,11 +242,11 @@ fn try_add(
     bases: &mut [Vec<Vec<f64>>],
     coefficients: &[Vec<f64>],
     columns: Option<&[usize]>,
-    states: &[Sample],
+    kinds: &[Kind],
 ) -> Result<(), Fails> {
     let mut trial: Vec<Vec<Vec<f64>>> = bases.to_vec();
     let mut special = None;
-    for ((basis, row), (_, kind)) in trial.iter_mut().zip(coefficients).zip(states) {
+    for ((basis, row), kind) in trial.iter_mut().zip(coefficients).zip(kinds) {
         let restricted: Vec<f64> = match columns {
             Some(columns) => {
                 let part: Vec<f64> = columns.iter().map(|&c| row[c]).collect();
@@ -221,109 +274,131 @@ fn try_add(
     Ok(())
 }
 
-#[allow(clippy::too_many_arguments)]
-fn choose_at(
-    model: &Model,
-    actions: &[Action],
-    inertia: &Inertia,
-    candidates: &[Candidate],
-    wanted: &[Symbol],
-    given: &[Equation],
-    states: &[Sample],
-    written: &mut Written,
-) -> Choice {
-    let values: Vec<Values> = states.iter().map(|(v, _)| v.clone()).collect();
-    let mut rejected: Vec<(usize, Rejected)> = Vec::new();
-    let mut rows: Vec<Row> = Vec::new();
-    let make_row = |candidate: Option<usize>,
-                    rows_before: usize,
-                    equation: &Equation,
-                    split: &Option<Vec<Expr>>| {
-        let unknowns: Vec<usize> = (0..wanted.len())
-            .filter(|&i| equation.unknowns.contains(&wanted[i]))
-            .collect();
-        let coefficients = match split {
-            Some(c) => values
+impl Planner<'_, '_> {
+    /// Adds a sample state; returns its index.
+    fn add_state(&mut self, values: Values, kind: Kind) -> usize {
+        self.states.push((values, kind));
+        self.states.len() - 1
+    }
+
+    /// The row of `key`, written out (once) and split into its coefficients.
+    fn written(&mut self, key: Key) -> &mut Written {
+        let Planner {
+            model,
+            actions,
+            inertia,
+            candidates,
+            wanted,
+            given,
+            ..
+        } = *self;
+        self.written.entry(key).or_insert_with(|| {
+            let equation = match key {
+                (true, i) => given[i].clone(),
+                (false, i) => write_out(model, actions, inertia, &candidates[i], wanted),
+            };
+            Written::new(equation, wanted)
+        })
+    }
+
+    /// Whether the rows of `keys` determine every wanted unknown at `states[state]`.
+    fn full_rank_at(&mut self, keys: &[Key], state: usize) -> bool {
+        let mut basis = Vec::new();
+        keys.iter().all(|&key| {
+            self.written(key);
+            let row = self.written.get_mut(&key).expect("written above");
+            adds_rank(&mut basis, row.at(&self.states, state, self.wanted.len()))
+        })
+    }
+
+    /// A choice of rows nonsingular at the sample states `picked`, and the keys of its rows.
+    fn attempt(&mut self, picked: &[usize]) -> (Choice, Vec<Key>) {
+        let (model, candidates, wanted) = (self.model, self.candidates, self.wanted);
+        let kinds: Vec<Kind> = picked.iter().map(|&s| self.states[s].1).collect();
+        let mut rejected: Vec<(usize, Rejected)> = Vec::new();
+        let mut rows: Vec<Row> = Vec::new();
+        let mut make_row = |planner: &mut Self, key: Key| {
+            let states = &planner.states;
+            let written = planner.written.get_mut(&key).expect("written above");
+            let unknowns: Vec<usize> = (0..wanted.len())
+                .filter(|&i| written.equation.unknowns.contains(&wanted[i]))
+                .collect();
+            let coefficients = picked
                 .iter()
-                .map(|v| c.iter().map(|c| eval(c, v)).collect())
+                .map(|&state| written.at(states, state, wanted.len()).to_vec())
+                .collect();
+            let preference = match key {
+                (false, index) => (
+                    true,
+                    unknowns.len(),
+                    written.equation.expression.operation_count(),
+                    index,
+                ),
+                (true, i) => (false, 0, 0, i),
+            };
+            rows.push(Row {
+                key,
+                unknowns,
+                coefficients,
+                preference,
+            });
+        };
+        for i in 0..self.given.len() {
+            self.written((true, i));
+            make_row(self, (true, i));
+        }
+        for (index, candidate) in candidates.iter().enumerate() {
+            let unwanted: Vec<Symbol> = candidate
+                .reactions
+                .iter()
+                .filter(|u| !wanted.contains(u))
+                .cloned()
+                .collect();
+            if !unwanted.is_empty() {
+                let reason = rejection::unwanted(model, &unwanted);
+                let candidate = candidate.clone();
+                rejected.push((index, Rejected { candidate, reason }));
+                continue;
+            }
+            if self.written((false, index)).equation.unknowns.is_empty() {
+                let candidate = candidate.clone();
+                let reason = Reason::NoUnknown;
+                rejected.push((index, Rejected { candidate, reason }));
+                continue;
+            }
+            make_row(self, (false, index));
+        }
+        rows.sort_by_key(|r| r.preference);
+        let mut failed: HashMap<usize, Fails> = HashMap::new();
+        let order = triangular(&rows, wanted.len(), &kinds, &mut failed)
+            .unwrap_or_else(|| any_square(&rows, wanted.len(), &kinds, &mut failed));
+        let mut used = vec![false; rows.len()];
+        order.iter().for_each(|&r| used[r] = true);
+        let chosen: Vec<&Row> = order.iter().map(|&r| &rows[r]).collect();
+        for (r, row) in rows.iter().enumerate().filter(|(r, _)| !used[*r]) {
+            let Some(index) = row.candidate() else { continue };
+            let duplicate = chosen
+                .iter()
+                .position(|c| parallel(&c.coefficients, &row.coefficients));
+            let reason = match (duplicate, failed.get(&r)) {
+                (Some(row), _) => Reason::Duplicate { row },
+                (None, Some(Fails::At(kind))) => Reason::SingularAt(*kind),
+                (None, Some(Fails::Everywhere)) => Reason::Redundant,
+                (None, None) => Reason::NotNeeded,
+            };
+            let candidate = candidates[index].clone();
+            rejected.push((index, Rejected { candidate, reason }));
+        }
+        rejected.sort_by_key(|(i, _)| *i);
+        let keys: Vec<Key> = chosen.iter().map(|r| r.key).collect();
+        let choice = Choice {
+            rows: keys
+                .iter()
+                .map(|key| self.written[key].equation.clone())
                 .collect(),
-            None => vec![vec![f64::NAN; wanted.len()]; values.len()],
+            rejected: rejected.into_iter().map(|(_, r)| r).collect(),
         };
-        let key = match candidate {
-            Some(index) => (
-                true,
-                unknowns.len(),
-                equation.expression.operation_count(),
-                index,
-            ),
-            None => (false, 0, 0, rows_before),
-        };
-        Row {
-            candidate,
-            equation: equation.clone(),
-            unknowns,
-            coefficients,
-            key,
-        }
-    };
-    let split = |equation: &Equation| linear_split(&equation.expression, wanted).ok().map(|c| c.0);
-    for (i, row) in given.iter().enumerate() {
-        let (equation, coefficients) = written
-            .entry((true, i))
-            .or_insert_with(|| (row.clone(), split(row)));
-        rows.push(make_row(None, i, equation, coefficients));
-    }
-    for (index, candidate) in candidates.iter().enumerate() {
-        let unwanted: Vec<Symbol> = candidate
-            .reactions
-            .iter()
-            .filter(|u| !wanted.contains(u))
-            .cloned()
-            .collect();
-        if !unwanted.is_empty() {
-            let reason = rejection::unwanted(model, &unwanted);
-            let candidate = candidate.clone();
-            rejected.push((index, Rejected { candidate, reason }));
-            continue;
-        }
-        let (equation, coefficients) = written.entry((false, index)).or_insert_with(|| {
-            let equation = write_out(model, actions, inertia, candidate, wanted);
-            let coefficients = split(&equation);
-            (equation, coefficients)
-        });
-        if equation.unknowns.is_empty() {
-            let candidate = candidate.clone();
-            let reason = Reason::NoUnknown;
-            rejected.push((index, Rejected { candidate, reason }));
-            continue;
-        }
-        rows.push(make_row(Some(index), 0, equation, coefficients));
-    }
-    rows.sort_by_key(|r| r.key);
-    let mut failed: HashMap<usize, Fails> = HashMap::new();
-    let order = triangular(&rows, wanted.len(), states, &mut failed)
-        .unwrap_or_else(|| any_square(&rows, wanted.len(), states, &mut failed));
-    let mut used = vec![false; rows.len()];
-    order.iter().for_each(|&r| used[r] = true);
-    let chosen: Vec<&Row> = order.iter().map(|&r| &rows[r]).collect();
-    for (r, row) in rows.iter().enumerate().filter(|(r, _)| !used[*r]) {
-        let Some(index) = row.candidate else { continue };
-        let duplicate = chosen
-            .iter()
-            .position(|c| parallel(&c.coefficients, &row.coefficients));
-        let reason = match (duplicate, failed.get(&r)) {
-            (Some(row), _) => Reason::Duplicate { row },
-            (None, Some(Fails::At(kind))) => Reason::SingularAt(*kind),
-            (None, Some(Fails::Everywhere)) => Reason::Redundant,
-            (None, None) => Reason::NotNeeded,
-        };
-        let candidate = candidates[index].clone();
-        rejected.push((index, Rejected { candidate, reason }));
-    }
-    rejected.sort_by_key(|(i, _)| *i);
-    Choice {
-        rows: chosen.into_iter().map(|r| r.equation.clone()).collect(),
-        rejected: rejected.into_iter().map(|(_, r)| r).collect(),
+        (choice, keys)
     }
 }
 
@@ -343,23 +418,23 @@ fn parallel(a: &[Vec<f64>], b: &[Vec<f64>]) -> bool {
 fn any_square(
     rows: &[Row],
     n: usize,
-    states: &[Sample],
+    kinds: &[Kind],
     failed: &mut HashMap<usize, Fails>,
 ) -> Vec<usize> {
-    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
+    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); kinds.len()];
     let mut order = Vec::new();
     for (r, row) in rows.iter().enumerate() {
         if bases.iter().all(|b| b.len() == n) {
             break;
         }
-        match try_add(&mut bases, &row.coefficients, None, states) {
+        match try_add(&mut bases, &row.coefficients, None, kinds) {
             Ok(()) => order.push(r),
             Err(fails) => {
                 failed.insert(r, fails);
             }
         }
     }
-    order.sort_by_key(|&r| (rows[r].candidate.is_none(), rows[r].candidate));
+    order.sort_by_key(|&r| (rows[r].candidate().is_none(), rows[r].candidate()));
     order
 }
 
@@ -370,7 +445,7 @@ fn any_square(
 fn triangular(
     rows: &[Row],
     n: usize,
-    states: &[Sample],
+    kinds: &[Kind],
     failed: &mut HashMap<usize, Fails>,
 ) -> Option<Vec<usize>> {
     let mut known = vec![false; n];
@@ -411,7 +486,7 @@ fn triangular(
                     .collect();
                 if inside.len() >= set.len() {
                     let mut passed_over = HashMap::new();
-                    if let Some(block) = block(rows, &inside, &set, states, &mut passed_over) {
+                    if let Some(block) = block(rows, &inside, &set, kinds, &mut passed_over) {
                         best = Some((block, passed_over));
                         break;
                     }
@@ -432,14 +507,14 @@ fn triangular(
         failed.extend(passed_over);
         // Within a block, the free bodies' rows in the candidates' order, then the
         // constraint rows.
-        block.sort_by_key(|&r| (rows[r].candidate.is_none(), rows[r].candidate, r));
+        block.sort_by_key(|&r| (rows[r].candidate().is_none(), rows[r].candidate(), r));
         for &r in &block {
             used[r] = true;
             rows[r].unknowns.iter().for_each(|&u| known[u] = true);
         }
         order.extend(block);
     }
-    let every_constraint_row = (0..rows.len()).all(|r| used[r] || rows[r].candidate.is_some());
+    let every_constraint_row = (0..rows.len()).all(|r| used[r] || rows[r].candidate().is_some());
     every_constraint_row.then_some(order)
 }
 
@@ -449,13 +524,13 @@ fn block(
     rows: &[Row],
     inside: &[usize],
     set: &[usize],
-    states: &[Sample],
+    kinds: &[Kind],
     failed: &mut HashMap<usize, Fails>,
 ) -> Option<Vec<usize>> {
-    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); states.len()];
+    let mut bases: Vec<Vec<Vec<f64>>> = vec![Vec::new(); kinds.len()];
     let mut taken = Vec::new();
     for &r in inside {
-        match try_add(&mut bases, &rows[r].coefficients, Some(set), states) {
+        match try_add(&mut bases, &rows[r].coefficients, Some(set), kinds) {
             Ok(()) => taken.push(r),
             Err(fails) => {
                 failed.insert(r, fails);
