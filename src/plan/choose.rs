@@ -9,7 +9,7 @@ use super::rows::{Equation, Inertia};
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
 use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
+use crate::symbolic::linear::linear_coefficients;
 use crate::symbolic::{Expr, Symbol};
 use std::collections::HashMap;
 use std::f64::consts::FRAC_PI_2;
@@ -43,7 +43,7 @@ struct Written {
 
 impl Written {
     fn new(equation: Equation, wanted: &[Symbol]) -> Written {
-        let coefficients = linear_split(&equation.expression, wanted).ok().map(|c| c.0);
+        let coefficients = linear_coefficients(&equation.expression, wanted).ok();
         Written {
             equation,
             coefficients,
@@ -175,7 +175,7 @@ fn rate_columns(model: &Model) -> Option<Vec<Vec<Expr>>> {
         let velocity = b.center.velocity.components_in(body, &model.frames);
         let omega = b.omega.components_in(body, &model.frames);
         for component in velocity.iter().chain(&omega) {
-            let (coefficients, _) = linear_split(component, &rates).ok()?;
+            let coefficients = linear_coefficients(component, &rates).ok()?;
             for (column, c) in columns.iter_mut().zip(coefficients) {
                 column.push(c);
             }

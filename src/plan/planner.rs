@@ -12,7 +12,7 @@ use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, Source};
 use crate::problem::{BodyId, JointKind};
 use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
+use crate::symbolic::linear::linear_coefficients;
 use crate::symbolic::Symbol;
 
 /// Above this many bodies, connected groups other than subtrees are not tried.
@@ -285,8 +285,8 @@ pub fn coefficient_rows(
     unknowns: &[Symbol],
     states: &[Values],
 ) -> Vec<Vec<f64>> {
-    match linear_split(&equation.expression, unknowns) {
-        Ok((coefficients, _)) => states
+    match linear_coefficients(&equation.expression, unknowns) {
+        Ok(coefficients) => states
             .iter()
             .map(|values| coefficients.iter().map(|c| eval(c, values)).collect())
             .collect(),
