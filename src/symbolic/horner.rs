@@ -44,7 +44,7 @@ pub fn monomial(term: &Expr) -> Monomial {
 pub fn factor(terms: Vec<Monomial>) -> Plan {
     // The bases are numbered once, so that the greedy search below counts and compares
     // integers instead of hashing and comparing expressions at every level.
-    let mut numbers: std::collections::HashMap<Expr, u32> = Default::default();
+    let mut numbers: super::fast_hash::FastMap<Expr, u32> = Default::default();
     let mut bases: Vec<Expr> = Vec::new();
     let numbered: Vec<NumberedTerm> = terms
         .into_iter()
@@ -62,7 +62,8 @@ pub fn factor(terms: Vec<Monomial>) -> Plan {
             (coefficient, factors)
         })
         .collect();
-    greedy(numbered).into_plan(&bases)
+    let mut tally = Tally::new(bases.len());
+    greedy(numbered, &mut tally).into_plan(&bases)
 }
 
 /// A monomial with its bases numbered.
@@ -95,32 +96,57 @@ impl NumberedPlan {
     }
 }
 
+/// For [`most_shared`]: by base number, how many factors of the terms have it and where
+/// the first is; zero between calls, so that each call costs the factors it counts rather
+/// than a sort of them (the recursion calls it once per level).
+struct Tally {
+    count: Vec<usize>,
+    first: Vec<usize>,
+    seen: Vec<u32>,
+}
+
+impl Tally {
+    fn new(bases: usize) -> Tally {
+        Tally {
+            count: vec![0; bases],
+            first: vec![0; bases],
+            seen: Vec::new(),
+        }
+    }
+}
+
 /// The base that the most terms share, if two or more do; of those sharing the most, the
 /// one seen first, so that the plan is deterministic.
-fn most_shared(terms: &[NumberedTerm]) -> Option<u32> {
-    let mut seen: Vec<(u32, usize)> = terms
+fn most_shared(terms: &[NumberedTerm], tally: &mut Tally) -> Option<u32> {
+    let ids = terms
         .iter()
-        .flat_map(|(_, factors)| factors.iter().map(|(id, _)| *id))
-        .enumerate()
-        .map(|(position, id)| (id, position))
-        .collect();
-    seen.sort_unstable();
+        .flat_map(|(_, factors)| factors.iter().map(|(id, _)| *id));
+    for (position, id) in ids.enumerate() {
+        let i = id as usize;
+        if tally.count[i] == 0 {
+            tally.first[i] = position;
+            tally.seen.push(id);
+        }
+        tally.count[i] += 1;
+    }
     let mut best: Option<(usize, usize, u32)> = None; // (count, first position, base)
-    for group in seen.chunk_by(|a, b| a.0 == b.0) {
-        let (count, first) = (group.len(), group[0].1);
+    for id in tally.seen.drain(..) {
+        let i = id as usize;
+        let (count, first) = (tally.count[i], tally.first[i]);
+        tally.count[i] = 0;
         let better = match best {
             None => true,
             Some((c, f, _)) => count > c || (count == c && first < f),
         };
         if better {
-            best = Some((count, first, group[0].0));
+            best = Some((count, first, id));
         }
     }
     best.filter(|(count, _, _)| *count >= 2)
         .map(|(_, _, id)| id)
 }
 
-fn greedy(terms: Vec<NumberedTerm>) -> NumberedPlan {
+fn greedy(terms: Vec<NumberedTerm>, tally: &mut Tally) -> NumberedPlan {
     if terms.len() == 1 {
         return NumberedPlan::Term(
             terms
@@ -129,7 +155,7 @@ fn greedy(terms: Vec<NumberedTerm>) -> NumberedPlan {
                 .unwrap_or((Number::ZERO, Vec::new())),
         );
     }
-    let Some(base) = most_shared(&terms) else {
+    let Some(base) = most_shared(&terms, tally) else {
         return NumberedPlan::Sum(terms.into_iter().map(NumberedPlan::Term).collect());
     };
     let (mut with, mut without) = (Vec::new(), Vec::new());
@@ -150,11 +176,11 @@ fn greedy(terms: Vec<NumberedTerm>) -> NumberedPlan {
             without.push((c, factors));
         }
     }
-    let product = NumberedPlan::Product(base, Box::new(greedy(with)));
+    let product = NumberedPlan::Product(base, Box::new(greedy(with, tally)));
     if without.is_empty() {
         product
     } else {
-        match greedy(without) {
+        match greedy(without, tally) {
             NumberedPlan::Sum(mut parts) => {
                 parts.insert(0, product);
                 NumberedPlan::Sum(parts)
