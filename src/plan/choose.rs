@@ -37,6 +37,8 @@ type Key = (bool, usize);
 /// attempts share it.
 struct Written {
     equation: Equation,
+    /// The arithmetic of the whole row: fewer is preferred.
+    operations: usize,
     coefficients: Option<Vec<Expr>>,
     values: Vec<Option<Vec<f64>>>,
 }
@@ -45,6 +47,7 @@ impl Written {
     fn new(equation: Equation, wanted: &[Symbol]) -> Written {
         let coefficients = linear_coefficients(&equation.expression, wanted).ok();
         Written {
+            operations: equation.expression.operation_count(),
             equation,
             coefficients,
             values: Vec::new(),
@@ -331,7 +334,7 @@ impl Planner<'_, '_> {
                 (false, index) => (
                     true,
                     unknowns.len(),
-                    written.equation.expression.operation_count(),
+                    written.operations,
                     index,
                 ),
                 (true, i) => (false, 0, 0, i),
