@@ -13,6 +13,10 @@ pub struct Values {
     /// built on definitions (the direction cosines of a chain) are then evaluated once each,
     /// not once per path through them.
     defined: RefCell<FastMap<std::rc::Rc<str>, f64>>,
+    /// The values of the symbols met so far, by the address of their name and their kind:
+    /// one word hashed instead of the name's characters. The symbol is kept so that the
+    /// address stays its own.
+    met: RefCell<FastMap<(usize, u16), (Symbol, f64)>>,
 }
 
 impl Values {
@@ -25,6 +29,7 @@ impl Values {
     pub fn set(&mut self, symbol: Symbol, value: f64) {
         self.values.insert(symbol, value);
         self.defined.get_mut().clear();
+        self.met.get_mut().clear();
     }
 
     /// The value of `symbol`; `pi` is built in, an unset symbol is NaN.
@@ -34,6 +39,36 @@ impl Values {
             None if matches!(symbol, Symbol::Const(n) if &**n == "pi") => std::f64::consts::PI,
             None => f64::NAN,
         }
+    }
+
+    /// The value of `symbol` in an evaluation: a definition's is its value's.
+    fn of(&self, symbol: &Symbol) -> f64 {
+        let address = |name: &str| name.as_ptr() as usize;
+        let key = match symbol {
+            Symbol::Const(n) => (address(n), 0),
+            Symbol::Coord(n, order) => (address(n), 0x100 | u16::from(*order)),
+            Symbol::Speed(n, order) => (address(n), 0x200 | u16::from(*order)),
+            Symbol::Defined(d) => (address(d.name()), 0x300),
+            _ => return self.get(symbol),
+        };
+        if let Some((_, v)) = self.met.borrow().get(&key) {
+            return *v;
+        }
+        let v = match symbol {
+            Symbol::Defined(d) => self.definition(d),
+            _ => self.get(symbol),
+        };
+        self.met.borrow_mut().insert(key, (symbol.clone(), v));
+        v
+    }
+
+    fn definition(&self, d: &super::Definition) -> f64 {
+        if let Some(v) = self.defined.borrow().get(d.name()) {
+            return *v;
+        }
+        let v = eval(d.value(), self);
+        self.defined.borrow_mut().insert(d.name().into(), v);
+        v
     }
 }
 
@@ -80,15 +115,7 @@ pub fn power(base: f64, exponent: f64) -> f64 {
 pub fn eval(e: &Expr, values: &Values) -> f64 {
     match e.node() {
         Node::Num(n) => n.to_f64(),
-        Node::Sym(Symbol::Defined(d)) => {
-            if let Some(v) = values.defined.borrow().get(d.name()) {
-                return *v;
-            }
-            let v = eval(d.value(), values);
-            values.defined.borrow_mut().insert(d.name().into(), v);
-            v
-        }
-        Node::Sym(s) => values.get(s),
+        Node::Sym(s) => values.of(s),
         Node::Add(terms) => terms.iter().map(|t| eval(t, values)).sum(),
         Node::Mul(factors) => factors.iter().map(|f| eval(f, values)).product(),
         Node::Pow(b, x) => power(eval(b, values), eval(x, values)),
