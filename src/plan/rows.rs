@@ -3,12 +3,13 @@
 
 use crate::mechanics::compact::{named_components, Kind, Quantity, MAX_EXPANDED_TERMS};
 use crate::mechanics::dot_sum::DotSum;
-use crate::mechanics::frames::apply;
+use crate::mechanics::frames::{apply, Frames};
 use crate::mechanics::vector::{cross3, size, Components};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
 use crate::symbolic::{add, Expr, Node, Symbol};
+use std::cell::RefCell;
 
 /// The inertia force `-m a*` and inertia torque `-α·I - ω×I·ω` of every body.
 #[derive(Clone, Debug)]
@@ -22,6 +23,9 @@ pub struct Inertia {
     pub acceleration: Vec<Vector>,
     /// The angular accelerations likewise, in the body's unit vectors.
     pub alpha: Vec<Vector>,
+    /// Inertia torques dotted with a direction so far: a torque is long, and every free
+    /// body that holds its body dots it with the same directions again.
+    torque_along: RefCell<Vec<(BodyId, Vector, Expr)>>,
 }
 
 impl Inertia {
@@ -106,7 +110,24 @@ impl Inertia {
             torque,
             acceleration,
             alpha,
+            torque_along: RefCell::default(),
         }
+    }
+
+    /// The inertia torque of `body` dotted with `direction`, written out once for each.
+    pub fn torque_along(&self, body: BodyId, direction: &Vector, frames: &Frames) -> Expr {
+        let known = self
+            .torque_along
+            .borrow()
+            .iter()
+            .find(|(b, d, _)| *b == body && d == direction)
+            .map(|(.., e)| e.clone());
+        known.unwrap_or_else(|| {
+            let e = self.torque[body.0].dot(direction, frames);
+            let entry = (body, direction.clone(), e.clone());
+            self.torque_along.borrow_mut().push(entry);
+            e
+        })
     }
 }
 
@@ -381,7 +402,7 @@ pub fn inertia_terms(
     for &body in free_body {
         let at = model.bodies[body.0].center.position.minus(point);
         moments.add(&at, &inertia.force[body.0]);
-        inertia_torque.push(inertia.torque[body.0].dot(direction, frames));
+        inertia_torque.push(inertia.torque_along(body, direction, frames));
     }
     (moments.total(), add(inertia_torque))
 }
@@ -390,13 +411,13 @@ pub fn inertia_terms(
 /// short vectors are crossed, and the long forces are multiplied out once, in dot products
 /// that share work between bodies (see [`DotSum`]).
 struct MomentSum<'a> {
-    frames: &'a crate::mechanics::frames::Frames,
+    frames: &'a Frames,
     direction: &'a Vector,
     sum: DotSum<'a>,
 }
 
 impl<'a> MomentSum<'a> {
-    fn new(frames: &'a crate::mechanics::frames::Frames, direction: &'a Vector) -> Self {
+    fn new(frames: &'a Frames, direction: &'a Vector) -> Self {
         MomentSum {
             frames,
             direction,
