@@ -96,13 +96,7 @@ fn split(
         }
         match found {
             Some((index, position)) => {
-                let others = term
-                    .factors()
-                    .iter()
-                    .enumerate()
-                    .filter(|(i, _)| *i != position)
-                    .map(|(_, f)| f.clone());
-                coefficients[index].push(mul(others));
+                coefficients[index].push(product_without(term.factors(), position));
             }
             None => {
                 if let Some(rest) = rest.as_deref_mut() {
@@ -112,6 +106,32 @@ fn split(
         }
     }
     Ok(coefficients.into_iter().map(add).collect())
+}
+
+/// The product of a term's factors but the one at `position`. The term is canonical, so
+/// plain factors (symbols, functions, powers) after its coefficient are already in order
+/// with distinct bases and make the product as they are: `mul` would sort and merge them
+/// again to the same result, at a cost that dominated splitting a row.
+fn product_without(factors: &[Expr], position: usize) -> Expr {
+    let others: Vec<Expr> = factors
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| *i != position)
+        .map(|(_, f)| f.clone())
+        .collect();
+    let plain = |f: &Expr| matches!(f.node(), Node::Sym(_) | Node::Func(..) | Node::Pow(..));
+    let coefficient = |f: &Expr| f.as_number().is_some_and(|c| !c.is_one() && !c.is_zero());
+    match others.as_slice() {
+        [single] if plain(single) => single.clone(),
+        [first, rest @ ..] if !rest.is_empty() && (plain(first) || coefficient(first)) => {
+            if rest.iter().all(plain) {
+                Expr::from_node(Node::Mul(others))
+            } else {
+                mul(others)
+            }
+        }
+        _ => mul(others),
+    }
 }
 
 impl fmt::Display for Symbol {
@@ -137,5 +157,25 @@ mod tests {
         assert_eq!(rest, Expr::constant("g"));
         assert_eq!(linear_coefficients(&e, &unknowns).unwrap(), coefficients);
         assert!(linear_split(&(&a * &a), &unknowns).is_err());
+    }
+
+    #[test]
+    fn a_product_but_one_factor_is_the_one_mul_makes() {
+        let (q, a) = (Expr::coord("q1", 0), Expr::coord("q1", 2));
+        let m = Expr::constant("m");
+        let terms = [
+            Expr::int(3) * m.clone() * cos(q.clone()) * a.clone(),
+            &m * &a,
+            Expr::int(-2) * a.clone(),
+            a.clone(),
+            crate::symbolic::pow(q.clone(), Expr::ratio(1, 2)) * m.clone() * a.clone(),
+        ];
+        for term in terms {
+            for position in 0..term.factors().len() {
+                let others = term.factors().iter().enumerate();
+                let others = others.filter(|(i, _)| *i != position).map(|(_, f)| f.clone());
+                assert_eq!(product_without(term.factors(), position), mul(others));
+            }
+        }
     }
 }
