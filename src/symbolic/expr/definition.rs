@@ -2,7 +2,9 @@
 //! worked solution's "where" lists.
 
 use super::{Expr, Name, Node, Symbol};
+use crate::symbolic::fast_hash::FastHasher;
 use std::cell::OnceCell;
+use std::hash::BuildHasherDefault;
 use std::cmp::Ordering;
 use std::rc::{Rc, Weak};
 
@@ -95,7 +97,7 @@ impl Definition {
     pub(super) fn inside(&self) -> &[Symbol] {
         self.0.inside.get_or_init(|| {
             let mut found: Vec<Symbol> = Vec::new();
-            let mut seen = std::collections::HashSet::new();
+            let mut seen = Seen::default();
             collect_inside(self.value(), &mut found, &mut seen);
             found.into()
         })
@@ -108,7 +110,10 @@ impl Definition {
     }
 }
 
-fn collect_inside(e: &Expr, found: &mut Vec<Symbol>, seen: &mut std::collections::HashSet<Symbol>) {
+/// The symbols met so far: only asked whether one is new, never listed.
+type Seen = std::collections::HashSet<Symbol, BuildHasherDefault<FastHasher>>;
+
+fn collect_inside(e: &Expr, found: &mut Vec<Symbol>, seen: &mut Seen) {
     match e.node() {
         Node::Num(_) => {}
         Node::Sym(s) => {
