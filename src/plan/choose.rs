@@ -147,7 +147,11 @@ pub fn choose(
             .iter()
             .map(|&state| rates_are_independent(&columns, &planner.states[state].0))
             .collect();
-        if full.iter().zip(&independent).any(|(full, independent)| !full && *independent) {
+        if full
+            .iter()
+            .zip(&independent)
+            .any(|(full, independent)| !full && *independent)
+        {
             let special: Vec<usize> = special
                 .into_iter()
                 .zip(&independent)
@@ -331,12 +335,7 @@ impl Planner<'_, '_> {
                 .map(|&state| written.at(states, state, wanted.len()).to_vec())
                 .collect();
             let preference = match key {
-                (false, index) => (
-                    true,
-                    unknowns.len(),
-                    written.operations,
-                    index,
-                ),
+                (false, index) => (true, unknowns.len(), written.operations, index),
                 (true, i) => (false, 0, 0, i),
             };
             rows.push(Row {
@@ -379,7 +378,9 @@ impl Planner<'_, '_> {
         order.iter().for_each(|&r| used[r] = true);
         let chosen: Vec<&Row> = order.iter().map(|&r| &rows[r]).collect();
         for (r, row) in rows.iter().enumerate().filter(|(r, _)| !used[*r]) {
-            let Some(index) = row.candidate() else { continue };
+            let Some(index) = row.candidate() else {
+                continue;
+            };
             let duplicate = chosen
                 .iter()
                 .position(|c| parallel(&c.coefficients, &row.coefficients));

@@ -173,7 +173,9 @@ mod tests {
         for term in terms {
             for position in 0..term.factors().len() {
                 let others = term.factors().iter().enumerate();
-                let others = others.filter(|(i, _)| *i != position).map(|(_, f)| f.clone());
+                let others = others
+                    .filter(|(i, _)| *i != position)
+                    .map(|(_, f)| f.clone());
                 assert_eq!(product_without(term.factors(), position), mul(others));
             }
         }

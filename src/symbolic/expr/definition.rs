@@ -4,8 +4,8 @@
 use super::{Expr, Name, Node, Symbol};
 use crate::symbolic::fast_hash::FastHasher;
 use std::cell::OnceCell;
-use std::hash::BuildHasherDefault;
 use std::cmp::Ordering;
+use std::hash::BuildHasherDefault;
 use std::rc::{Rc, Weak};
 
 /// A definition with a printed name (a spring's length `ℓ₁`) prints as that name, and the
