@@ -399,13 +399,18 @@ fn body_kinematics(
     let planar = problem.dimension == crate::problem::Dimension::Two;
     // The same built on the parent's named components: a chain's k-th body then reads
     // ω_k = C ω_(k-1) + its joint's rates, a few terms, where multiplied out it has many.
-    let recursive = parent_state
-        .omega_named
-        .expressed_in(body, frames)
-        .plus(&Vector::new(body, relative.clone()))
-        .map(crate::symbolic::simplify)
-        .map(to_speeds)
-        .components_in(body, frames);
+    // (In the plane every component is kept whole as it is, so there is nothing to build.)
+    let recursive = if planar {
+        omega_components.clone()
+    } else {
+        parent_state
+            .omega_named
+            .expressed_in(body, frames)
+            .plus(&Vector::new(body, relative.clone()))
+            .map(crate::symbolic::simplify)
+            .map(to_speeds)
+            .components_in(body, frames)
+    };
     let omega_named = Vector::new(
         body,
         std::array::from_fn(|axis| {

@@ -8,6 +8,7 @@ use crate::mechanics::vector::{cross3, size, Components};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
+use crate::symbolic::linear::linear_coefficients;
 use crate::symbolic::{add, Expr, Node, Symbol};
 use std::cell::RefCell;
 
@@ -133,22 +134,18 @@ impl Inertia {
 
 /// The partial angular velocities of `body` for each acceleration, in its own unit vectors,
 /// from its parent's as `alphas` names them (the q̈ coefficients of α): the parent's carried
-/// into this frame plus the joint's own axes. `None` for a child of `N`, in the plane, or
-/// with declared speeds, whose kinematic equations mix the rates.
+/// into this frame plus the joint's own axes. `None` as for [`parent_in_chain`].
 fn partial_angular_velocities(
     model: &Model,
     body: BodyId,
     alphas: &[Components],
     accelerations: &[Symbol],
 ) -> Option<Vec<Components>> {
-    let parent = model.frames.info(body).parent?;
-    if parent == BodyId::GROUND || model.is_planar() || model.speeds.is_some() {
-        return None;
-    }
+    let parent = parent_in_chain(model, body)?;
     let relative = model.frames.relative_angular_velocity(body).ok()?;
     let rates: Vec<Symbol> = model.problem.speed_symbols(1);
-    let (own, _) = split_components(&relative, &rates)?;
-    let (from_parent, _) = split_components(&alphas[parent.0], accelerations)?;
+    let own = split_components(&relative, &rates)?;
+    let from_parent = split_components(&alphas[parent.0], accelerations)?;
     let into_body = model.frames.dcm(body, parent);
     Some(
         (0..accelerations.len())
@@ -171,29 +168,26 @@ fn partial_center_velocities(
     centers: &[Vector],
     alphas: &[Components],
 ) -> Option<Vec<Components>> {
-    let parent = model.frames.info(body).parent?;
-    if parent == BodyId::GROUND || model.is_planar() || model.speeds.is_some() {
-        return None;
-    }
+    let parent = parent_in_chain(model, body)?;
     let joint = &model.joints[model.problem.joint_of(body)?];
     let (accelerations, rates) = (
         model.problem.speed_symbols(2),
         model.problem.speed_symbols(1),
     );
     let frames = &model.frames;
-    let (parent_center, _) = split_components(
+    let parent_center = split_components(
         &centers[parent.0].components_in(parent, frames),
         &accelerations,
     )?;
-    let (parent_omega, _) = split_components(&alphas[parent.0], &accelerations)?;
-    let (own_omega, _) = split_components(&alphas[body.0], &accelerations)?;
+    let parent_omega = split_components(&alphas[parent.0], &accelerations)?;
+    let own_omega = split_components(&alphas[body.0], &accelerations)?;
     let d = &joint.motion.translation;
     let slide_rate: Components = [
         crate::symbolic::diff::time_derivative(&d[0]).ok()?,
         crate::symbolic::diff::time_derivative(&d[1]).ok()?,
         crate::symbolic::diff::time_derivative(&d[2]).ok()?,
     ];
-    let (slide, _) = split_components(&slide_rate, &rates)?;
+    let slide = split_components(&slide_rate, &rates)?;
     let parent_offset = &model.bodies[parent.0].center_offset;
     let to_joint: Components = std::array::from_fn(|i| &(&joint.at[i] + &d[i]) - &parent_offset[i]);
     let own_offset = &model.bodies[body.0].center_offset;
@@ -218,20 +212,26 @@ fn partial_center_velocities(
     )
 }
 
-/// Each component split by `unknowns`: for every unknown its coefficient vector, and the rest.
-fn split_components(c: &Components, unknowns: &[Symbol]) -> Option<(Vec<Components>, Components)> {
+/// The parent whose named partials a body's are built on: `None` for a child of `N`, in
+/// the plane (nothing is named there), or with declared speeds, whose kinematic equations
+/// mix the rates.
+fn parent_in_chain(model: &Model, body: BodyId) -> Option<BodyId> {
+    let parent = model.frames.info(body).parent?;
+    let built = parent != BodyId::GROUND && !model.is_planar() && model.speeds.is_none();
+    built.then_some(parent)
+}
+
+/// For every unknown, its coefficient in each component.
+fn split_components(c: &Components, unknowns: &[Symbol]) -> Option<Vec<Components>> {
     let mut by_unknown: Vec<Components> =
         vec![std::array::from_fn(|_| Expr::zero()); unknowns.len()];
-    let mut rest: Components = std::array::from_fn(|_| Expr::zero());
     for axis in 0..3 {
-        let (coefficients, remainder) =
-            crate::symbolic::linear::linear_split(&c[axis], unknowns).ok()?;
+        let coefficients = linear_coefficients(&c[axis], unknowns).ok()?;
         for (r, coefficient) in coefficients.into_iter().enumerate() {
             by_unknown[r][axis] = coefficient;
         }
-        rest[axis] = remainder;
     }
-    Some((by_unknown, rest))
+    Some(by_unknown)
 }
 
 /// The Motion Law's groups of one scalar equation; their sum is zero.

@@ -148,6 +148,15 @@ fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
 
 /// A vector as a sum of components times unit vectors, each component simplified.
 pub fn vector_tex(model: &Model, v: &Vector) -> String {
+    vector_tex_by(model, v, component_term)
+}
+
+/// As [`vector_tex`], each nonzero component and its unit vector written by `term`.
+pub(super) fn vector_tex_by(
+    model: &Model,
+    v: &Vector,
+    term: impl Fn(&Expr, &str) -> String,
+) -> String {
     let mut terms: Vec<String> = Vec::new();
     for (frame, components) in v.parts() {
         for (axis, c) in components.iter().enumerate() {
@@ -156,13 +165,7 @@ pub fn vector_tex(model: &Model, v: &Vector) -> String {
                 continue;
             }
             let unit = latex_unit_vector(model.frames.name(*frame), axis as u8);
-            let text = match c.node() {
-                Node::Add(_) => format!("\\left({}\\right) {unit}", latex(&c)),
-                _ if c.is_one() => unit,
-                _ if (-&c).is_one() => format!("-{unit}"),
-                _ => format!("{} {unit}", latex(&c)),
-            };
-            terms.push(text);
+            terms.push(term(&c, &unit));
         }
     }
     if terms.is_empty() {
@@ -176,6 +179,16 @@ pub fn vector_tex(model: &Model, v: &Vector) -> String {
         }
     }
     out
+}
+
+/// A component times its unit vector: a sum in brackets, ±1 left out.
+pub(super) fn component_term(c: &Expr, unit: &str) -> String {
+    match c.node() {
+        Node::Add(_) => format!("\\left({}\\right) {unit}", latex(c)),
+        _ if c.is_one() => unit.to_string(),
+        _ if (-c).is_one() => format!("-{unit}"),
+        _ => format!("{} {unit}", latex(c)),
+    }
 }
 
 /// The shortest way to write a vector among the frames `N`, the body's and its parent's.

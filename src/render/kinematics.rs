@@ -2,7 +2,7 @@
 //! velocity and acceleration, in the shortest of their multiplied-out and named forms.
 
 use super::context::Kinematics;
-use super::derived::shortest_tex;
+use super::derived::{component_term, shortest_tex, vector_tex_by};
 use crate::equations::Derivation;
 use crate::mechanics::model::sample_states;
 use crate::mechanics::{Model, Vector};
@@ -10,7 +10,7 @@ use crate::problem::BodyId;
 use crate::symbolic::collect::{factored, pull_common_factor};
 use crate::symbolic::eval::eval;
 use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::print::latex_name;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{add, Expr};
 
@@ -145,26 +145,19 @@ fn from_parent(model: &Model, body: BodyId, motion: Motion, direct: String) -> S
         latex_name(model.problem.body_name(parent)),
     );
     let mut text = format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{parent_name}^*}}");
-    for (frame, components) in difference.parts() {
-        for (axis, c) in components.iter().enumerate() {
-            let c = simplify(c);
-            if c.is_zero() {
-                continue;
-            }
-            let unit = latex_unit_vector(model.frames.name(*frame), axis as u8);
-            // (L/2)(q̇1 + … + q̇6) as a textbook writes it.
-            let (common, inner) = pull_common_factor(&c);
-            let term = if c.terms().len() > 1 && !common.is_one() {
-                factored(&common, &inner, &unit)
-            } else if c.terms().len() > 1 {
-                format!("\\left({}\\right) {unit}", latex(&c))
+    if !difference.is_zero() {
+        // (L/2)(q̇1 + … + q̇6) as a textbook writes it.
+        let rest = vector_tex_by(model, &difference, |c, unit| {
+            let (common, inner) = pull_common_factor(c);
+            if c.terms().len() > 1 && !common.is_one() {
+                factored(&common, &inner, unit)
             } else {
-                format!("{} {unit}", latex(&c))
-            };
-            match term.strip_prefix('-') {
-                Some(negative) => text.push_str(&format!(" - {negative}")),
-                None => text.push_str(&format!(" + {term}")),
+                component_term(c, unit)
             }
+        });
+        match rest.strip_prefix('-') {
+            Some(negative) => text.push_str(&format!(" - {negative}")),
+            None => text.push_str(&format!(" + {rest}")),
         }
     }
     if text.len() < direct.len() {
