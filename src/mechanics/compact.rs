@@ -6,7 +6,9 @@
 //! coefficient (a partial velocity component) and the rest `ã` a named quantity, it is n + 1
 //! terms, the q'' stay visible for the linear system, and the numbers are unchanged.
 
+use crate::mechanics::on_parent::Built;
 use crate::mechanics::vector::Components;
+use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::{add, Expr, Symbol};
@@ -35,13 +37,22 @@ pub enum Kind {
 const AXES: [&str; 3] = ["x", "y", "z"];
 
 /// `components` (in the body's own unit vectors) with every long one rewritten as
-/// `Σ c_r q̈_r + rest`, each long `c_r` and `rest` a named quantity.
+/// `Σ c_r q̈_r + rest`, each long `c_r` and `rest` a named quantity. A part of `built` (the
+/// same acceleration built on the parent's) is used where it is shorter and has the same
+/// value at every one of `states`, where an identity holds and a slip would not.
 pub fn named_components(
     components: &Components,
     accelerations: &[Symbol],
     quantity: &Quantity,
-    recursive: Option<&[Components]>,
+    built: Option<&Built>,
+    states: &[Values],
 ) -> Components {
+    let shorter = |direct: Expr, candidate: Option<&Expr>| match candidate {
+        Some(c) if c.terms().len() < direct.terms().len() && same_value(c, &direct, states) => {
+            c.clone()
+        }
+        _ => direct,
+    };
     std::array::from_fn(|axis| {
         let value = &components[axis];
         if value.terms().len() <= MAX_EXPANDED_TERMS {
@@ -51,20 +62,27 @@ pub fn named_components(
             return value.clone();
         };
         let mut terms = Vec::with_capacity(accelerations.len() + 1);
-        for (r, (coefficient, acceleration)) in coefficients.iter().zip(accelerations).enumerate() {
+        for (r, (coefficient, acceleration)) in
+            coefficients.into_iter().zip(accelerations).enumerate()
+        {
             if coefficient.is_zero() {
                 continue;
             }
-            // The same coefficient built on the parent's named ones, when that is shorter.
-            let coefficient = match recursive.map(|c| &c[r][axis]) {
-                Some(built) if built.terms().len() < coefficient.terms().len() => built,
-                _ => coefficient,
-            };
-            let named = name_part(coefficient, quantity, axis, Some(acceleration));
+            let coefficient = shorter(coefficient, built.map(|b| &b.partials[r][axis]));
+            let named = name_part(&coefficient, quantity, axis, Some(acceleration));
             terms.push(&named * &Expr::sym(acceleration.clone()));
         }
+        let rest = shorter(rest, built.map(|b| &b.rest[axis]));
         terms.push(name_part(&rest, quantity, axis, None));
         add(terms)
+    })
+}
+
+/// Whether `a` and `b` agree at every state, to rounding.
+fn same_value(a: &Expr, b: &Expr, states: &[Values]) -> bool {
+    states.iter().all(|state| {
+        let (x, y) = (eval(a, state), eval(b, state));
+        (x - y).abs() <= 1e-9 * (1.0 + y.abs())
     })
 }
 

@@ -32,6 +32,7 @@ pub mod dot_sum;
 pub mod frames;
 pub mod joints;
 pub mod model;
+pub mod on_parent;
 pub mod sites;
 pub mod speeds;
 pub mod vector;

@@ -4,11 +4,12 @@
 use crate::mechanics::compact::{named_components, Kind, Quantity, MAX_EXPANDED_TERMS};
 use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::frames::{apply, Frames};
-use crate::mechanics::vector::{cross3, size, Components};
+use crate::mechanics::model::sample_states;
+use crate::mechanics::on_parent::{self, Built};
+use crate::mechanics::vector::{size, Components};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
-use crate::symbolic::linear::linear_coefficients;
 use crate::symbolic::{add, Expr, Node, Symbol};
 use std::cell::RefCell;
 
@@ -37,30 +38,36 @@ impl Inertia {
         let accelerations: Vec<Symbol> = model.problem.speed_symbols(2);
         // Spatial bodies' accelerations in their own unit vectors with named parts; planar
         // ones stay as the student writes them.
-        let named =
-            |body: BodyId, vector: &Vector, kind: Kind, recursive: Option<&[Components]>| {
-                let components = vector.components_in(body, &model.frames);
-                if model.is_planar() || body == BodyId::GROUND {
-                    return components;
-                }
-                let body_name = model.frames.name(body);
-                let quantity = Quantity {
-                    body: body_name,
-                    kind,
-                };
-                named_components(&components, &accelerations, &quantity, recursive)
+        // The states at which a part built on the parent's is checked (nothing is built in
+        // the plane).
+        let states = if model.is_planar() {
+            Vec::new()
+        } else {
+            sample_states(model)
+        };
+        let named = |body: BodyId, vector: &Vector, kind: Kind, built: Option<&Built>| {
+            let components = vector.components_in(body, &model.frames);
+            if model.is_planar() || body == BodyId::GROUND {
+                return components;
+            }
+            let body_name = model.frames.name(body);
+            let quantity = Quantity {
+                body: body_name,
+                kind,
             };
+            named_components(&components, &accelerations, &quantity, built, &states)
+        };
         // Angular accelerations parents first, so that a body's partial angular velocities
         // can be built on its parent's named ones: ω_r^k = C ω_r^(k-1) + the joint's own.
         let mut alphas: Vec<Components> =
             vec![std::array::from_fn(|_| Expr::zero()); model.bodies.len()];
         for &body in &model.order {
-            let recursive = partial_angular_velocities(model, body, &alphas, &accelerations);
+            let built = on_parent::angular(model, body, &alphas);
             alphas[body.0] = named(
                 body,
                 &model.bodies[body.0].alpha,
                 Kind::AngularAcceleration,
-                recursive.as_deref(),
+                built.as_ref(),
             );
         }
         // A short acceleration keeps the unit vectors it was written in (`ẍ n_x`).
@@ -79,14 +86,14 @@ impl Inertia {
             if model.is_planar() || !is_long(&state.center.acceleration) {
                 continue;
             }
-            let recursive = partial_center_velocities(model, body, &centers, &alphas);
+            let built = on_parent::center(model, body, &centers, &alphas);
             centers[body.0] = Vector::new(
                 body,
                 named(
                     body,
                     &state.center.acceleration,
                     Kind::CenterAcceleration,
-                    recursive.as_deref(),
+                    built.as_ref(),
                 ),
             );
         }
@@ -130,108 +137,6 @@ impl Inertia {
             e
         })
     }
-}
-
-/// The partial angular velocities of `body` for each acceleration, in its own unit vectors,
-/// from its parent's as `alphas` names them (the q̈ coefficients of α): the parent's carried
-/// into this frame plus the joint's own axes. `None` as for [`parent_in_chain`].
-fn partial_angular_velocities(
-    model: &Model,
-    body: BodyId,
-    alphas: &[Components],
-    accelerations: &[Symbol],
-) -> Option<Vec<Components>> {
-    let parent = parent_in_chain(model, body)?;
-    let relative = model.frames.relative_angular_velocity(body).ok()?;
-    let rates: Vec<Symbol> = model.problem.speed_symbols(1);
-    let own = split_components(&relative, &rates)?;
-    let from_parent = split_components(&alphas[parent.0], accelerations)?;
-    let into_body = model.frames.dcm(body, parent);
-    Some(
-        (0..accelerations.len())
-            .map(|r| {
-                let carried = apply(&into_body, &from_parent[r]);
-                std::array::from_fn(|i| crate::symbolic::simplify(&(&carried[i] + &own[r][i])))
-            })
-            .collect(),
-    )
-}
-
-/// The partial velocities of `body`'s mass centre for each acceleration, in its own unit
-/// vectors, from its parent's as `centers` names them: the parent's, plus the parent's
-/// partial angular velocity across to the joint and the joint's sliding, carried into this
-/// frame, plus this body's partial angular velocity across to its mass centre. `None` where
-/// [`partial_angular_velocities`] is.
-fn partial_center_velocities(
-    model: &Model,
-    body: BodyId,
-    centers: &[Vector],
-    alphas: &[Components],
-) -> Option<Vec<Components>> {
-    let parent = parent_in_chain(model, body)?;
-    let joint = &model.joints[model.problem.joint_of(body)?];
-    let (accelerations, rates) = (
-        model.problem.speed_symbols(2),
-        model.problem.speed_symbols(1),
-    );
-    let frames = &model.frames;
-    let parent_center = split_components(
-        &centers[parent.0].components_in(parent, frames),
-        &accelerations,
-    )?;
-    let parent_omega = split_components(&alphas[parent.0], &accelerations)?;
-    let own_omega = split_components(&alphas[body.0], &accelerations)?;
-    let d = &joint.motion.translation;
-    let slide_rate: Components = [
-        crate::symbolic::diff::time_derivative(&d[0]).ok()?,
-        crate::symbolic::diff::time_derivative(&d[1]).ok()?,
-        crate::symbolic::diff::time_derivative(&d[2]).ok()?,
-    ];
-    let slide = split_components(&slide_rate, &rates)?;
-    let parent_offset = &model.bodies[parent.0].center_offset;
-    let to_joint: Components = std::array::from_fn(|i| &(&joint.at[i] + &d[i]) - &parent_offset[i]);
-    let own_offset = &model.bodies[body.0].center_offset;
-    let to_center: Components = std::array::from_fn(|i| &own_offset[i] - &joint.child_at[i]);
-    let into_body = frames.dcm(body, parent);
-    Some(
-        (0..accelerations.len())
-            .map(|r| {
-                let across = cross3(&parent_omega[r], &to_joint);
-                let at_joint: Components = std::array::from_fn(|i| {
-                    add([
-                        parent_center[r][i].clone(),
-                        across[i].clone(),
-                        slide[r][i].clone(),
-                    ])
-                });
-                let carried = apply(&into_body, &at_joint);
-                let turning = cross3(&own_omega[r], &to_center);
-                std::array::from_fn(|i| crate::symbolic::simplify(&(&carried[i] + &turning[i])))
-            })
-            .collect(),
-    )
-}
-
-/// The parent whose named partials a body's are built on: `None` for a child of `N`, in
-/// the plane (nothing is named there), or with declared speeds, whose kinematic equations
-/// mix the rates.
-fn parent_in_chain(model: &Model, body: BodyId) -> Option<BodyId> {
-    let parent = model.frames.info(body).parent?;
-    let built = parent != BodyId::GROUND && !model.is_planar() && model.speeds.is_none();
-    built.then_some(parent)
-}
-
-/// For every unknown, its coefficient in each component.
-fn split_components(c: &Components, unknowns: &[Symbol]) -> Option<Vec<Components>> {
-    let mut by_unknown: Vec<Components> =
-        vec![std::array::from_fn(|_| Expr::zero()); unknowns.len()];
-    for axis in 0..3 {
-        let coefficients = linear_coefficients(&c[axis], unknowns).ok()?;
-        for (r, coefficient) in coefficients.into_iter().enumerate() {
-            by_unknown[r][axis] = coefficient;
-        }
-    }
-    Some(by_unknown)
 }
 
 /// The Motion Law's groups of one scalar equation; their sum is zero.
