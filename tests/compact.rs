@@ -322,3 +322,38 @@ fn a_spherical_link_turns_with_its_parent_by_name() {
         "{}^{N}\\mathbf{v}^{B_{3}^*} = \\left(-b_{3} \\dot{q}_{9} + \\dot{q}_{1} v^{B_{3}^{*}}_{q_{1},x} + "
     ));
 }
+
+#[test]
+fn a_planar_chain_is_computed_by_names_and_printed_whole() {
+    use mbd_tutor::equations::Method;
+    use mbd_tutor::numeric::evaluate::Compiled;
+    use mbd_tutor::pipeline::{derive, derive_for_handout};
+    let chain = mbd_tutor::problem::load_file(&problem("validation/ten-link-chain")).unwrap();
+    let q: Vec<f64> = (0..10).map(|i| 0.3 - 0.17 * f64::from(i)).collect();
+    let rates: Vec<f64> = (0..10).map(|i| 0.5 - 0.11 * f64::from(i)).collect();
+    for method in Method::ALL {
+        // For numbers, the outer links' accelerations have named parts built on the parent's
+        // (unless whole is smaller); the handout writes them whole. The q'' are the same to
+        // rounding, and the program no larger.
+        let numeric = Compiled::new(&derive(&chain, method).unwrap());
+        let handout = Compiled::new(&derive_for_handout(&chain, method).unwrap());
+        let (a, b) = (
+            numeric.motion(0.0, &q, &rates).unwrap(),
+            handout.motion(0.0, &q, &rates).unwrap(),
+        );
+        for (x, y) in a.accelerations.iter().zip(&b.accelerations) {
+            assert!(
+                (x - y).abs() <= 1e-9 * (1.0 + y.abs()),
+                "{method:?}: {x} and {y}"
+            );
+        }
+        assert!(
+            numeric.operation_count() <= handout.operation_count(),
+            "{method:?}: {} operations, the handout's {}",
+            numeric.operation_count(),
+            handout.operation_count()
+        );
+    }
+    let markdown = explain("validation/ten-link-chain", "markdown");
+    assert!(!markdown.contains("\\tilde{a}"));
+}

@@ -40,7 +40,7 @@ pub fn derivation_at<'p>(
     method: Method,
     state: &mut State,
 ) -> Result<(Derivation<'p>, Option<Vec<f64>>), Error> {
-    let derivation = crate::pipeline::derive(problem, method)?;
+    let derivation = crate::pipeline::derive_for_handout(problem, method)?;
     let solver = crate::pipeline::Solver::new(problem, &derivation);
     solver.assemble(state.t, &mut state.q, &mut state.rates)?;
     let accelerations = solver

@@ -40,18 +40,28 @@ struct Partials {
     /// Indexed by body, then speed: ∂a*/∂q̈_r, which equals ∂v*/∂q̇_r. Read off the
     /// accelerations the inertia forces use, these are the named coefficients there, so
     /// `v_r · (-m a*)` is three products of names, not products of direction cosines
-    /// multiplied out across the chain. Empty in planar problems.
+    /// multiplied out across the chain. Empty for a planar body whose acceleration is short,
+    /// which is read as the student writes it.
     center_own: Vec<Vec<Vector>>,
     /// ∂α/∂q̈_r = ∂ω/∂q̇_r likewise, in the body's own unit vectors.
     omega_own: Vec<Vec<Vector>>,
 }
 
-/// The coefficients of the accelerations in each of `vectors`, a vector per acceleration.
-fn own_partials(vectors: &[Vector], accelerations: &[Symbol], is_planar: bool) -> Vec<Vec<Vector>> {
-    if is_planar {
-        return Vec::new();
-    }
-    vectors.iter().map(|v| partials(v, accelerations)).collect()
+/// The coefficients of the accelerations in each of `vectors`, a vector per acceleration;
+/// none for a body that `wanted` leaves out.
+fn own_partials(
+    vectors: &[Vector],
+    accelerations: &[Symbol],
+    wanted: impl Fn(usize) -> bool,
+) -> Vec<Vec<Vector>> {
+    let body = |(index, v): (usize, &Vector)| {
+        if wanted(index) {
+            partials(v, accelerations)
+        } else {
+            Vec::new()
+        }
+    };
+    vectors.iter().enumerate().map(body).collect()
 }
 
 /// Kane's rows, one per coordinate, and one per requested reaction component.
@@ -66,6 +76,7 @@ pub fn equations(
     let frames = &model.frames;
     let rates: Vec<Symbol> = problem.speed_symbols(1);
     let accelerations: Vec<Symbol> = problem.speed_symbols(2);
+    let own = |body: usize| !model.is_planar() || inertia.compact[body];
     let partial = Partials {
         origin: model
             .bodies
@@ -77,8 +88,8 @@ pub fn equations(
             .iter()
             .map(|b| partials(&b.omega, &rates))
             .collect(),
-        center_own: own_partials(&inertia.acceleration, &accelerations, model.is_planar()),
-        omega_own: own_partials(&inertia.alpha, &accelerations, model.is_planar()),
+        center_own: own_partials(&inertia.acceleration, &accelerations, own),
+        omega_own: own_partials(&inertia.alpha, &accelerations, own),
     };
     let generalized_joint_loads = speeds_forces(model, joint_load_generalized_forces(model));
     let all_bodies: Vec<_> = model.order.clone();
@@ -113,7 +124,7 @@ pub fn equations(
         let mut inertia_force = DotSum::new(frames);
         let mut inertia_torque = Vec::new();
         for &body in &all_bodies {
-            if partial.center_own.is_empty() {
+            if partial.center_own[body.0].is_empty() {
                 let center = &model.bodies[body.0].center_offset;
                 inertia_force.add(&velocity_of(body, center), &inertia.force[body.0]);
                 inertia_torque.push(inertia.torque[body.0].dot(&partial.omega[body.0][r], frames));

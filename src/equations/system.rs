@@ -4,6 +4,7 @@ use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
+pub use crate::plan::rows::Form;
 use crate::plan::rows::{Equation, Groups, Inertia, Sum};
 use crate::problem::Problem;
 use crate::symbolic::budget;
@@ -120,13 +121,14 @@ fn constraint_equations(
         .collect()
 }
 
-/// Derives the equations of motion of `problem` by `method`.
+/// Derives the equations of motion of `problem` by `method`, for numbers
+/// ([`Form::Numeric`]).
 ///
 /// # Errors
 /// When the model cannot be built, the planner finds no complete set of rows, or an
 /// unknown appears nonlinearly.
 pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
-    derive_at(problem, method, &[])
+    derive_at(problem, method, &[], Form::Numeric)
 }
 
 /// A state the equations will be solved at: time, coordinates and rates in coordinate order.
@@ -149,13 +151,14 @@ pub fn derive_at<'p>(
     problem: &'p Problem,
     method: Method,
     states: &[State],
+    form: Form,
 ) -> Result<Derivation<'p>, MechanicsError> {
     budget::step("computing the kinematics (step 4)");
     let model = Model::build(problem)?;
     budget::step("writing the forces and moments (step 2)");
     let actions = actions(&model)?;
     budget::step("writing the inertia forces and torques (step 4)");
-    let inertia = Inertia::of(&model);
+    let inertia = Inertia::of(&model, form);
     budget::step(match method {
         Method::MotionLaw => "writing the Motion Law's candidate rows (step 3)",
         Method::NewtonEuler => "writing the Newton–Euler rows (step 3)",

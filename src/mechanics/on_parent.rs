@@ -12,12 +12,14 @@
 //! with `r` from the parent's mass centre to the joint, `d` the joint's sliding and `r'` from
 //! the joint to this body's mass centre.
 
+use crate::mechanics::compact::MAX_EXPANDED_TERMS;
 use crate::mechanics::frames::apply;
 use crate::mechanics::vector::{cross3, Components};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::linear::linear_split;
+use crate::symbolic::print::latex_name;
 use crate::symbolic::{add, simplify, Expr, Symbol};
 
 /// One acceleration built on the parent's: the coefficient of each q̈ (a partial velocity)
@@ -107,14 +109,15 @@ pub fn center(
     let centripetal = cross3(&parent_omega, &cross3(&parent_omega, &to_joint));
     let coriolis = cross3(&parent_omega, &slide_rate);
     let at_joint: Components = std::array::from_fn(|i| {
-        add([
+        simplify(&add([
             parent_center_rest[i].clone(),
             across[i].clone(),
             centripetal[i].clone(),
             &Expr::int(2) * &coriolis[i],
             slide_rest[i].clone(),
-        ])
+        ]))
     });
+    let at_joint = joint_point_names(model, body, parent, at_joint);
     let carried = apply(&into_body, &at_joint);
     let turning = cross3(&own_alpha_rest, &to_center);
     let centripetal = cross3(&omega, &cross3(&omega, &to_center));
@@ -128,12 +131,48 @@ pub fn center(
     Some(Built { partials, rest })
 }
 
-/// The parent whose named parts a body's are built on: `None` for a child of `N`, in the
-/// plane (nothing is named there), or with declared speeds, whose kinematic equations mix
-/// the rates.
+/// The joint point's acceleration without the q'' (in the parent's unit vectors), each long
+/// component a named quantity: carried into the child's frame, the direction cosines then
+/// multiply three names, not every term of the parent's motion.
+fn joint_point_names(
+    model: &Model,
+    body: BodyId,
+    parent: BodyId,
+    at_joint: Components,
+) -> Components {
+    if at_joint
+        .iter()
+        .all(|c| c.terms().len() <= MAX_EXPANDED_TERMS)
+    {
+        return at_joint;
+    }
+    let Some(j) = model.problem.joint_of(body) else {
+        return at_joint;
+    };
+    let joint = &model.problem.joints[j].name;
+    let parent = model.frames.name(parent);
+    let axes = ["x", "y", "z"];
+    std::array::from_fn(|axis| {
+        let (value, axis) = (&at_joint[axis], axes[axis]);
+        if value.terms().len() < 2 {
+            return value.clone();
+        }
+        Expr::named(
+            &format!("{joint}.a.{axis}"),
+            &format!("\\tilde{{a}}^{{{}}}_{{{axis}}}", latex_name(joint)),
+            &format!(
+                "acceleration of the joint point {joint} along {parent}.{axis} without the q''"
+            ),
+            value.clone(),
+        )
+    })
+}
+
+/// The parent whose named parts a body's are built on: `None` for a child of `N`, or with
+/// declared speeds, whose kinematic equations mix the rates.
 fn parent_in_chain(model: &Model, body: BodyId) -> Option<BodyId> {
     let parent = model.frames.info(body).parent?;
-    let built = parent != BodyId::GROUND && !model.is_planar() && model.speeds.is_none();
+    let built = parent != BodyId::GROUND && model.speeds.is_none();
     built.then_some(parent)
 }
 

@@ -36,7 +36,8 @@ pub struct Compiled {
     unknowns: usize,
     program: Program,
     reactions: Vec<ReactionSlot>,
-    energy: Program,
+    /// The kinetic and potential energies, compiled when first asked: `solve` never asks.
+    energy: Lazy,
     conservative: bool,
     dissipative_only: bool,
     outputs: usize,
@@ -70,10 +71,6 @@ pub struct StateSolution {
     pub reactions: Vec<(String, [f64; 3], [f64; 3])>,
     /// Each prescribed coordinate: the generalized force that drives it.
     pub drives: Vec<(String, f64)>,
-    /// Kinetic energy.
-    pub kinetic: f64,
-    /// Potential energy (gravity, springs, joint springs).
-    pub potential: f64,
     /// Each declared speed: name, `u` and `u'` (empty when the speeds are the rates).
     pub speeds: Vec<(String, f64, f64)>,
 }
@@ -170,6 +167,21 @@ fn state_symbols(problem: &Problem) -> Vec<Symbol> {
     inputs
 }
 
+/// A program compiled on its first run.
+#[derive(Clone, Debug)]
+struct Lazy {
+    inputs: Vec<crate::symbolic::Symbol>,
+    outputs: [Expr; 2],
+    program: std::cell::OnceCell<Program>,
+}
+
+impl Lazy {
+    fn program(&self) -> &Program {
+        self.program
+            .get_or_init(|| Program::compile(&self.inputs, &self.outputs))
+    }
+}
+
 impl Compiled {
     /// Compiles the system, the requested reactions and the energies of a derivation.
     pub fn new(derivation: &Derivation) -> Compiled {
@@ -204,10 +216,11 @@ impl Compiled {
             });
         }
         // The energies are a program of their own: they are not part of A and b.
-        let energy = Program::compile(
-            &input_symbols(problem),
-            &[energy::kinetic(model), energy::potential(model)],
-        );
+        let energy = Lazy {
+            inputs: input_symbols(problem),
+            outputs: [energy::kinetic(model), energy::potential(model)],
+            program: std::cell::OnceCell::new(),
+        };
         let program = Program::compile(&input_symbols(problem), &outputs);
         let drives = model
             .constraints
@@ -263,11 +276,6 @@ impl Compiled {
     /// does not), or a value that is not finite.
     pub fn solve(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<StateSolution, SolveError> {
         let motion = self.motion(t, q, rates)?;
-        let mut scratch = self.scratch.take();
-        let mut energies = [0.0; 2];
-        self.energy
-            .run(&self.inputs(t, q, rates), &mut scratch, &mut energies);
-        self.scratch.replace(scratch);
         let speeds = match &self.speeds {
             Some(program) => {
                 let inputs = self.inputs(t, q, rates);
@@ -281,8 +289,6 @@ impl Compiled {
             accelerations: motion.accelerations,
             reactions: motion.reactions,
             drives: motion.drives,
-            kinetic: energies[0],
-            potential: energies[1],
         })
     }
 
@@ -428,6 +434,7 @@ impl System for Compiled {
 
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
         let s = self.solve(t, q, rates)?;
+        let (kinetic, potential) = self.energies(t, q, rates)?;
         let reactions = s
             .reactions
             .iter()
@@ -437,8 +444,8 @@ impl System for Compiled {
         Ok(Evaluation {
             accelerations: s.accelerations,
             reactions,
-            kinetic: s.kinetic,
-            potential: s.potential,
+            kinetic,
+            potential,
         })
     }
 
@@ -450,6 +457,7 @@ impl System for Compiled {
         let mut scratch = self.scratch.take();
         let mut energies = [0.0; 2];
         self.energy
+            .program()
             .run(&self.inputs(t, q, rates), &mut scratch, &mut energies);
         self.scratch.replace(scratch);
         Ok((energies[0], energies[1]))

@@ -25,29 +25,36 @@ pub struct Inertia {
     pub acceleration: Vec<Vector>,
     /// The angular accelerations likewise, in the body's unit vectors.
     pub alpha: Vec<Vector>,
+    /// Whether a body's mass-centre acceleration is written with named parts. Indexed by
+    /// body id.
+    pub compact: Vec<bool>,
     /// Inertia torques dotted with a direction so far: a torque is long, and every free
     /// body that holds its body dots it with the same directions again.
     torque_along: RefCell<Vec<(BodyId, Vector, Expr)>>,
 }
 
+/// Who reads the equations: the form of a planar chain's long accelerations depends on it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Form {
+    /// A student, in the worked solution: a planar acceleration is written whole.
+    Handout,
+    /// The compiled program only: every long acceleration gets named parts, the fewest
+    /// operations.
+    Numeric,
+}
+
 impl Inertia {
-    /// The inertia forces and torques of every body of `model`.
-    pub fn of(model: &Model) -> Inertia {
+    /// The inertia forces and torques of every body of `model`, written for `form`.
+    pub fn of(model: &Model, form: Form) -> Inertia {
         let mut force = Vec::with_capacity(model.bodies.len());
         let mut torque = Vec::with_capacity(model.bodies.len());
         let accelerations: Vec<Symbol> = model.problem.speed_symbols(2);
-        // Spatial bodies' accelerations in their own unit vectors with named parts; planar
-        // ones stay as the student writes them.
-        // The states at which a part built on the parent's is checked (nothing is built in
-        // the plane).
-        let states = if model.is_planar() {
-            Vec::new()
-        } else {
-            sample_states(model)
-        };
+        // Long accelerations in the body's own unit vectors with named parts; short ones stay
+        // as the student writes them. The states check the parts built on the parent's.
+        let states = sample_states(model);
         let named = |body: BodyId, vector: &Vector, kind: Kind, built: Option<&Built>| {
             let components = vector.components_in(body, &model.frames);
-            if model.is_planar() || body == BodyId::GROUND {
+            if body == BodyId::GROUND {
                 return components;
             }
             let body_name = model.frames.name(body);
@@ -70,10 +77,19 @@ impl Inertia {
                 built.as_ref(),
             );
         }
-        // A short acceleration keeps the unit vectors it was written in (`ẍ n_x`).
+        // A short acceleration keeps the unit vectors it was written in (`ẍ n_x`). A handout
+        // writes a planar one whole, as the student does: a five-link chain's outer link
+        // (−L m (1/3 + cos q5 / 2 + …) q̈1) reads better so than by names, and a ten-link
+        // chain's takes no fewer pages by names.
+        let whole = model.is_planar() && form == Form::Handout;
+        let longest = if whole {
+            usize::MAX
+        } else {
+            3 * MAX_EXPANDED_TERMS
+        };
         let is_long = |vector: &Vector| {
             let terms: usize = vector.parts().iter().map(|(_, c)| size(c)).sum();
-            terms > 3 * MAX_EXPANDED_TERMS
+            terms > longest
         };
         // Mass centres parents first too: v_r^k* = v_r^(k-1)* + ω_r^(k-1) × r + ω_r^k × r'.
         let mut centers: Vec<Vector> = model
@@ -81,11 +97,13 @@ impl Inertia {
             .iter()
             .map(|b| b.center.acceleration.clone())
             .collect();
+        let mut compact = vec![false; model.bodies.len()];
         for &body in &model.order {
             let state = &model.bodies[body.0];
-            if model.is_planar() || !is_long(&state.center.acceleration) {
+            if !is_long(&state.center.acceleration) {
                 continue;
             }
+            compact[body.0] = true;
             let built = on_parent::center(model, body, &centers, &alphas);
             centers[body.0] = Vector::new(
                 body,
@@ -118,6 +136,7 @@ impl Inertia {
             torque,
             acceleration,
             alpha,
+            compact,
             torque_along: RefCell::default(),
         }
     }

@@ -1,7 +1,7 @@
 //! Compiling expressions once into a flat program: every shared subexpression is
 //! computed once, and one evaluation costs about the arithmetic it contains.
 
-use super::expr::{Expr, Node, Symbol};
+use super::expr::{Expr, Func, Node, Symbol};
 use super::fast_hash::FastMap;
 use super::instr::Instr;
 use std::ops::Neg;
@@ -101,6 +101,13 @@ impl Program {
     }
 }
 
+/// Whether `e` is a sum of two or more coordinates, the angles of a chain. (Only these: in
+/// `sin(1e308 + q)` the sum rounds to the large term, and the identity would not.)
+fn is_angle_sum(e: &Expr) -> bool {
+    let is_angle = |t: &Expr| matches!(t.node(), Node::Sym(Symbol::Coord(_, 0)));
+    matches!(e.node(), Node::Add(terms) if terms.len() >= 2 && terms.iter().all(is_angle))
+}
+
 /// A value a factoring plan produced: in a slot, or a product not yet emitted, so that a
 /// sum can take it with its addition in one instruction.
 #[derive(Clone, Copy, Debug)]
@@ -185,6 +192,9 @@ impl Compiler {
                     }
                 }
             }
+            Node::Func(f @ (Func::Sin | Func::Cos), args) if is_angle_sum(&args[0]) => {
+                self.angle_sum(*f, args[0].terms())
+            }
             Node::Func(f, args) => {
                 let a = self.slot(&args[0]);
                 let b = match args.get(1) {
@@ -194,6 +204,29 @@ impl Compiler {
                 self.emit(Instr::Func(*f, a as u32, b as u32))
             }
         }
+    }
+
+    /// sin or cos of `a + t` from those of `a` and `t`, four products where a function call
+    /// costs tens: a chain's relative angles need the sine and cosine of every run
+    /// `q_i + … + q_j`, and each is the previous run's and one angle's.
+    fn angle_sum(&mut self, f: Func, terms: &[Expr]) -> usize {
+        let (last, head) = terms.split_last().unwrap_or((&terms[0], &[]));
+        let head = super::build::add(head.to_vec());
+        let [sin_head, cos_head, sin_last, cos_last] = [
+            super::build::sin(head.clone()),
+            super::build::cos(head),
+            super::build::sin(last.clone()),
+            super::build::cos(last.clone()),
+        ]
+        .map(|e| self.slot(&e) as u32);
+        let (pairs, positive) = match f {
+            Func::Sin => ([[sin_head, cos_last], [cos_head, sin_last]], 2),
+            _ => ([[cos_head, cos_last], [sin_head, sin_last]], 1),
+        };
+        self.emit(Instr::Dot {
+            pairs: Box::new(pairs),
+            positive,
+        })
     }
 
     /// The slot of a value, emitting its last product if it is still pending.
@@ -308,6 +341,32 @@ mod tests {
             .filter(|i| matches!(i, Instr::Func(Func::Sin, ..)))
             .count();
         assert_eq!(sins, 1);
+    }
+
+    #[test]
+    fn sines_of_angle_sums_come_from_the_angles_by_the_addition_formulas() {
+        let angles: Vec<Expr> = (1..=4).map(|i| Expr::coord(&format!("q{i}"), 0)).collect();
+        let run = |k: usize| crate::symbolic::build::add(angles[..k].to_vec());
+        // A chain's runs: q1 + q2, q1 + q2 + q3, q1 + … + q4.
+        let outputs: Vec<Expr> = (2..=4).flat_map(|k| [sin(run(k)), cos(run(k))]).collect();
+        let inputs: Vec<Symbol> = (1..=4)
+            .map(|i| Symbol::Coord(format!("q{i}").into(), 0))
+            .collect();
+        let program = Program::compile(&inputs, &outputs);
+        let q = [0.3, -1.2, 2.5, 0.8];
+        let got = program.eval(&q);
+        for (k, pair) in (2..=4).zip(got.chunks(2)) {
+            let angle: f64 = q[..k].iter().sum();
+            assert!((pair[0] - angle.sin()).abs() < 1e-14);
+            assert!((pair[1] - angle.cos()).abs() < 1e-14);
+        }
+        // One sine and one cosine per angle; the sums' are products of these.
+        let calls = program
+            .instructions
+            .iter()
+            .filter(|i| matches!(i, Instr::Func(..)))
+            .count();
+        assert_eq!(calls, 8);
     }
 
     fn pow_test(q: &Expr) -> Expr {
