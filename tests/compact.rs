@@ -324,6 +324,20 @@ fn a_spherical_link_turns_with_its_parent_by_name() {
 }
 
 #[test]
+fn a_spherical_links_acceleration_is_built_on_its_joint_points() {
+    let markdown = explain("validation/spherical-chain-3", "markdown");
+    // B2* is at r' = a2 b̂2x + b2 b̂2y − (L2/2) b̂2z from the joint S2. By hand, along b̂2z:
+    // the joint point's acceleration carried in (ẑ2 in B1's unit vectors is s5, −s4 c5,
+    // c4 c5 for the x-y-z angles q4, q5, q6), (α̃ × r')_z = b2 α̃x − a2 α̃y, and
+    // (ω × (ω × r'))_z = a2 ωx ωz + b2 ωy ωz + (L2/2)(ωx² + ωy²).
+    assert!(markdown.contains(
+        "- $\\tilde{a}^{B_{2}^{*}}_{z} = \\frac{L_{2} {\\omega^{B_{2}}_{x}}^{2}}{2} + \\frac{L_{2} {\\omega^{B_{2}}_{y}}^{2}}{2} - a_{2} \\tilde{\\alpha}^{B_{2}}_{y} + b_{2} \\tilde{\\alpha}^{B_{2}}_{x} + \\tilde{a}^{S_{2}}_{x} s_{5} + a_{2} \\omega^{B_{2}}_{x} \\omega^{B_{2}}_{z} + b_{2} \\omega^{B_{2}}_{y} \\omega^{B_{2}}_{z} - \\tilde{a}^{S_{2}}_{y} s_{4} c_{5} + \\tilde{a}^{S_{2}}_{z} c_{4} c_{5}$"
+    ));
+    // The joint point's is the parent's mass centre's and the parent's turning across to it.
+    assert!(markdown.contains("- $\\tilde{a}^{S_{2}}_{x} = \\tilde{a}^{B_{1}^{*}}_{x} + "));
+}
+
+#[test]
 fn a_planar_chain_is_computed_by_names_and_printed_whole() {
     use mbd_tutor::equations::Method;
     use mbd_tutor::numeric::evaluate::Compiled;
