@@ -34,7 +34,8 @@ pub enum Kind {
     AngularAcceleration,
 }
 
-const AXES: [&str; 3] = ["x", "y", "z"];
+/// The names of the axes, for the names of the parts.
+pub const AXES: [&str; 3] = ["x", "y", "z"];
 
 /// `components` (in the body's own unit vectors) with every long one rewritten as
 /// `Σ c_r q̈_r + rest`, each long `c_r` and `rest` a named quantity. A part of `built` (the

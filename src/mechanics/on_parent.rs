@@ -12,7 +12,7 @@
 //! with `r` from the parent's mass centre to the joint, `d` the joint's sliding and `r'` from
 //! the joint to this body's mass centre.
 
-use crate::mechanics::compact::MAX_EXPANDED_TERMS;
+use crate::mechanics::compact::{AXES, MAX_EXPANDED_TERMS};
 use crate::mechanics::frames::apply;
 use crate::mechanics::vector::{cross3, Components};
 use crate::mechanics::{Model, Vector};
@@ -44,20 +44,14 @@ pub fn angular(model: &Model, body: BodyId, alphas: &[Components]) -> Option<Bui
     let partials = (0..accelerations.len())
         .map(|r| {
             let carried = apply(&into_body, &from_parent[r]);
-            std::array::from_fn(|i| simplify(&add([carried[i].clone(), own[r][i].clone()])))
+            simplified(sum(&[&carried, &own[r]]))
         })
         .collect();
     // The joint's relative angular velocity, differentiated in N: in this frame, plus ω × it.
     let omega = own_omega(model, body);
     let turning = cross3(&omega, &relative);
     let carried = apply(&into_body, &parent_rest);
-    let rest = std::array::from_fn(|i| {
-        simplify(&add([
-            carried[i].clone(),
-            own_rest[i].clone(),
-            turning[i].clone(),
-        ]))
-    });
+    let rest = simplified(sum(&[&carried, &own_rest, &turning]));
     Some(Built { partials, rest })
 }
 
@@ -70,7 +64,8 @@ pub fn center(
     alphas: &[Components],
 ) -> Option<Built> {
     let parent = parent_in_chain(model, body)?;
-    let joint = &model.joints[model.problem.joint_of(body)?];
+    let j = model.problem.joint_of(body)?;
+    let joint = &model.joints[j];
     let (accelerations, rates) = symbols(model);
     let frames = &model.frames;
     let (parent_center, parent_center_rest) = split(
@@ -91,69 +86,45 @@ pub fn center(
     let partials = (0..accelerations.len())
         .map(|r| {
             let across = cross3(&parent_alpha[r], &to_joint);
-            let at_joint: Components = std::array::from_fn(|i| {
-                add([
-                    parent_center[r][i].clone(),
-                    across[i].clone(),
-                    slide[r][i].clone(),
-                ])
-            });
+            let at_joint = sum(&[&parent_center[r], &across, &slide[r]]);
             let carried = apply(&into_body, &at_joint);
             let turning = cross3(&own_alpha[r], &to_center);
-            std::array::from_fn(|i| simplify(&(&carried[i] + &turning[i])))
+            simplified(sum(&[&carried, &turning]))
         })
         .collect();
     let parent_omega = own_omega(model, parent);
     let omega = own_omega(model, body);
     let across = cross3(&parent_alpha_rest, &to_joint);
     let centripetal = cross3(&parent_omega, &cross3(&parent_omega, &to_joint));
-    let coriolis = cross3(&parent_omega, &slide_rate);
-    let at_joint: Components = std::array::from_fn(|i| {
-        simplify(&add([
-            parent_center_rest[i].clone(),
-            across[i].clone(),
-            centripetal[i].clone(),
-            &Expr::int(2) * &coriolis[i],
-            slide_rest[i].clone(),
-        ]))
-    });
-    let at_joint = joint_point_names(model, body, parent, at_joint);
+    let coriolis = cross3(&parent_omega, &slide_rate).map(|c| &Expr::int(2) * &c);
+    let at_joint = sum(&[
+        &parent_center_rest,
+        &across,
+        &centripetal,
+        &coriolis,
+        &slide_rest,
+    ]);
+    let joint_name = &model.problem.joints[j].name;
+    let at_joint = joint_point_names(joint_name, frames.name(parent), simplified(at_joint));
     let carried = apply(&into_body, &at_joint);
     let turning = cross3(&own_alpha_rest, &to_center);
     let centripetal = cross3(&omega, &cross3(&omega, &to_center));
-    let rest = std::array::from_fn(|i| {
-        simplify(&add([
-            carried[i].clone(),
-            turning[i].clone(),
-            centripetal[i].clone(),
-        ]))
-    });
+    let rest = simplified(sum(&[&carried, &turning, &centripetal]));
     Some(Built { partials, rest })
 }
 
 /// The joint point's acceleration without the q'' (in the parent's unit vectors), each long
 /// component a named quantity: carried into the child's frame, the direction cosines then
 /// multiply three names, not every term of the parent's motion.
-fn joint_point_names(
-    model: &Model,
-    body: BodyId,
-    parent: BodyId,
-    at_joint: Components,
-) -> Components {
+fn joint_point_names(joint: &str, parent: &str, at_joint: Components) -> Components {
     if at_joint
         .iter()
         .all(|c| c.terms().len() <= MAX_EXPANDED_TERMS)
     {
         return at_joint;
     }
-    let Some(j) = model.problem.joint_of(body) else {
-        return at_joint;
-    };
-    let joint = &model.problem.joints[j].name;
-    let parent = model.frames.name(parent);
-    let axes = ["x", "y", "z"];
     std::array::from_fn(|axis| {
-        let (value, axis) = (&at_joint[axis], axes[axis]);
+        let (value, axis) = (&at_joint[axis], AXES[axis]);
         if value.terms().len() < 2 {
             return value.clone();
         }
@@ -189,6 +160,16 @@ fn own_omega(model: &Model, body: BodyId) -> Components {
     model.bodies[body.0]
         .omega_named
         .components_in(body, &model.frames)
+}
+
+/// The sum of `parts`, component by component.
+fn sum(parts: &[&Components]) -> Components {
+    std::array::from_fn(|i| add(parts.iter().map(|p| p[i].clone())))
+}
+
+/// Each component simplified.
+fn simplified(c: Components) -> Components {
+    c.map(|e| simplify(&e))
 }
 
 /// d/dt of each component.

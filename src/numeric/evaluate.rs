@@ -170,7 +170,7 @@ fn state_symbols(problem: &Problem) -> Vec<Symbol> {
 /// A program compiled on its first run.
 #[derive(Clone, Debug)]
 struct Lazy {
-    inputs: Vec<crate::symbolic::Symbol>,
+    inputs: Vec<Symbol>,
     outputs: [Expr; 2],
     program: std::cell::OnceCell<Program>,
 }
