@@ -211,11 +211,11 @@ fn linearize_finds_the_weave_and_capsize_speeds() {
     let weave = speed("stable from v = ");
     let capsize = speed("unstable from v = ");
     assert!(
-        (weave - 4.29238253634111).abs() < 1e-8,
+        (weave - 4.29238253634111).abs() < 1e-10,
         "weave speed {weave}"
     );
     assert!(
-        (capsize - 6.02426201538837).abs() < 1e-8,
+        (capsize - 6.02426201538837).abs() < 1e-10,
         "capsize speed {capsize}"
     );
 }

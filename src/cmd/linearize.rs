@@ -475,7 +475,8 @@ fn boundary(
 ) -> Result<f64, Error> {
     let raw = |value: f64| -> Result<Vec<nalgebra::Complex<f64>>, Error> {
         let l = at(value)?;
-        let mut values = crate::numeric::linearize::hqr::eigenvalues(&l.a).unwrap_or_default();
+        let a = without_ignorable(&l.a);
+        let mut values = crate::numeric::linearize::hqr::eigenvalues(&a).unwrap_or_default();
         values.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
         Ok(values)
     };
@@ -511,6 +512,25 @@ fn boundary(
     Ok(0.5 * (a + b))
 }
 
+/// `a` without the rows and columns of the states nothing depends on (zero columns, such
+/// as a bicycle's position and heading), repeated until none is left. Expanding the
+/// determinant along such a column, each removal takes away one eigenvalue 0 and keeps the
+/// others exactly; left in, these zeros form Jordan blocks whose round-off of 1e-16 moves
+/// them by 1e-8, enough to blur a slow mode's crossing of zero.
+fn without_ignorable(a: &nalgebra::DMatrix<f64>) -> nalgebra::DMatrix<f64> {
+    let mut a = a.clone();
+    let scale = a.amax();
+    while let Some(i) =
+        (0..a.ncols()).find(|&i| a.column(i).iter().all(|x| x.abs() <= 1e-14 * scale))
+    {
+        if a.ncols() == 1 {
+            break;
+        }
+        a = a.remove_row(i).remove_column(i);
+    }
+    a
+}
+
 /// Whether a path names an SVG file.
 pub fn is_svg(path: &Path) -> bool {
     path.extension()
@@ -520,6 +540,22 @@ pub fn is_svg(path: &Path) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ignorable_states_go_and_the_slow_mode_stays_exact() {
+        // x' = ψ (a heading that moves the position), ψ' = 0, and a slow mode s' = 1e-9 s:
+        // x's column is zero, then ψ's; what is left is the slow mode alone, exactly.
+        let a = nalgebra::DMatrix::from_row_slice(
+            3,
+            3,
+            &[0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-9],
+        );
+        let reduced = without_ignorable(&a);
+        assert_eq!(reduced, nalgebra::DMatrix::from_element(1, 1, 1e-9));
+        // Nothing to take away from a matrix without a zero column.
+        let full = nalgebra::DMatrix::from_row_slice(2, 2, &[0.0, 1.0, -1.0, 0.0]);
+        assert_eq!(without_ignorable(&full), full);
+    }
 
     #[test]
     fn sweeps_include_both_ends() {

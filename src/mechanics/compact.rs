@@ -87,7 +87,7 @@ fn same_value(a: &Expr, b: &Expr, states: &[Values]) -> bool {
     })
 }
 
-fn name_part(value: &Expr, quantity: &Quantity, axis: usize, rate: Option<&Symbol>) -> Expr {
+pub fn name_part(value: &Expr, quantity: &Quantity, axis: usize, rate: Option<&Symbol>) -> Expr {
     if value.terms().len() < 2 {
         return value.clone();
     }

@@ -25,6 +25,7 @@ impl fmt::Display for MechanicsError {
 
 impl std::error::Error for MechanicsError {}
 
+pub mod angular;
 pub mod compact;
 pub mod constraints;
 pub mod dependent;

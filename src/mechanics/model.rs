@@ -1,6 +1,7 @@
 //! Building the kinematic model of a problem: frames from the joints (step 1), then the
 //! angular velocity and acceleration of every body and the motion of every point (step 4).
 
+use super::compact::AXES;
 use super::frames::{FrameInfo, Frames, Matrix};
 use super::joints::{
     joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent,
@@ -373,71 +374,35 @@ fn body_kinematics(
     motion: JointMotion,
     speeds: Option<&Speeds>,
 ) -> Result<(BodyState, JointModel), MechanicsError> {
-    let to_speeds = |e: &Expr| match speeds {
-        Some(s) => s.to_speeds(e),
-        None => e.clone(),
-    };
     let joint = &problem.joints[j];
     let parent = joint.parent;
     let path = &joint.path;
-    // Angular velocity: the parent's, carried into this frame, plus the joint's own.
+    let fail = |message: String| MechanicsError {
+        path: path.clone(),
+        message: format!("joint `{}`: {message}", joint.name),
+        hint: None,
+    };
     let relative = frames
         .relative_angular_velocity(body)
-        .map_err(|e| MechanicsError {
-            path: path.clone(),
-            message: format!("joint `{}`: {e}", joint.name),
-            hint: None,
-        })?;
-    let omega = parent_state
-        .omega
-        .expressed_in(body, frames)
-        .plus(&Vector::new(body, relative.clone()))
-        .map(crate::symbolic::simplify)
-        .map(to_speeds);
-    let omega_components = omega.components_in(body, frames);
-    let name = &problem.body(body).name;
+        .map_err(|e| fail(e.to_string()))?;
     let planar = problem.dimension == crate::problem::Dimension::Two;
-    // The same built on the parent's named components: a chain's k-th body then reads
-    // ω_k = C ω_(k-1) + its joint's rates, a few terms, where multiplied out it has many.
-    // (In the plane every component is kept whole as it is, so there is nothing to build.)
-    let recursive = if planar {
-        omega_components.clone()
+    let Angular {
+        omega,
+        omega_named,
+        alpha,
+    } = if planar || speeds.is_some() {
+        angular_multiplied_out(
+            problem,
+            frames,
+            parent_state,
+            (body, path),
+            &relative,
+            speeds,
+        )?
     } else {
-        parent_state
-            .omega_named
-            .expressed_in(body, frames)
-            .plus(&Vector::new(body, relative.clone()))
-            .map(crate::symbolic::simplify)
-            .map(to_speeds)
-            .components_in(body, frames)
+        super::angular::built(problem, frames, parent_state, (body, parent), &relative)
+            .map_err(fail)?
     };
-    let omega_named = Vector::new(
-        body,
-        std::array::from_fn(|axis| {
-            let component = &omega_components[axis];
-            let shorter = if recursive[axis].terms().len() < component.terms().len() {
-                &recursive[axis]
-            } else {
-                component
-            };
-            // Planar: (q1' + q2')^2 as a student writes it. Spatial: short components are
-            // multiplied out so that sin^2 + cos^2 = 1 can simplify them.
-            let axis_name = ["x", "y", "z"][axis];
-            let label = format!("{name}.w.{axis_name}");
-            if planar {
-                Expr::defined(&label, component.clone())
-            } else if component.terms().len() > MAX_EXPANDED_OMEGA_TERMS {
-                // Named, so that velocity products print as products of three letters.
-                let tex = format!("\\omega^{{{}}}_{{{axis_name}}}", latex_name(name));
-                let note = format!("angular velocity of {name} along {name}.{axis_name}");
-                Expr::named(&label, &tex, &note, shorter.clone())
-            } else {
-                component.clone()
-            }
-        }),
-    );
-    // Expressed in the body's own frame, d/dt in N equals d/dt of the components.
-    let alpha = Vector::new(body, dt_components(&omega_components, path, speeds)?);
 
     // The joint point on the parent, then the sliding along the joint, then back to the origin.
     let at = own_components(&joint.at, parent);
@@ -506,6 +471,89 @@ fn body_kinematics(
         point: joint_point,
     };
     Ok((state, joint_model))
+}
+
+/// A body's angular velocity, the same with long components named, and its angular
+/// acceleration, each in the body's own unit vectors.
+pub struct Angular {
+    /// See [`BodyState::omega`].
+    pub omega: Vector,
+    /// See [`BodyState::omega_named`].
+    pub omega_named: Vector,
+    /// See [`BodyState::alpha`].
+    pub alpha: Vector,
+}
+
+/// The angular velocity as the parent's carried into this frame plus the joint's own,
+/// multiplied out, and its derivative. In the plane these are sums of rates; with declared
+/// speeds the kinematic equations mix the rates, so nothing is built on the parent's parts.
+fn angular_multiplied_out(
+    problem: &Problem,
+    frames: &Frames,
+    parent_state: &BodyState,
+    (body, path): (BodyId, &str),
+    relative: &Components,
+    speeds: Option<&Speeds>,
+) -> Result<Angular, MechanicsError> {
+    let to_speeds = |e: &Expr| match speeds {
+        Some(s) => s.to_speeds(e),
+        None => e.clone(),
+    };
+    let carried = |parent_omega: &Vector| {
+        parent_omega
+            .expressed_in(body, frames)
+            .plus(&Vector::new(body, relative.clone()))
+            .map(crate::symbolic::simplify)
+            .map(to_speeds)
+    };
+    let omega = carried(&parent_state.omega);
+    let omega_components = omega.components_in(body, frames);
+    let name = &problem.body(body).name;
+    let planar = problem.dimension == crate::problem::Dimension::Two;
+    // The same built on the parent's named components: ω_k = C ω_(k-1) + its joint's rates,
+    // a few terms where multiplied out it has many. (In the plane there is nothing to build.)
+    let recursive = if planar {
+        omega_components.clone()
+    } else {
+        carried(&parent_state.omega_named).components_in(body, frames)
+    };
+    let omega_named = Vector::new(
+        body,
+        std::array::from_fn(|axis| {
+            let component = &omega_components[axis];
+            let label = format!("{name}.w.{}", AXES[axis]);
+            // Planar: (q1' + q2')^2 as a student writes it.
+            if planar {
+                Expr::defined(&label, component.clone())
+            } else {
+                let shorter = if recursive[axis].terms().len() < component.terms().len() {
+                    &recursive[axis]
+                } else {
+                    component
+                };
+                omega_component_named(name, axis, shorter)
+            }
+        }),
+    );
+    let alpha = Vector::new(body, dt_components(&omega_components, path, speeds)?);
+    Ok(Angular {
+        omega,
+        omega_named,
+        alpha,
+    })
+}
+
+/// A spatial angular velocity component for velocity products: short ones multiplied out,
+/// so that sin^2 + cos^2 = 1 can simplify them; long ones named, so that the products
+/// print as products of three letters.
+pub fn omega_component_named(body: &str, axis: usize, value: &Expr) -> Expr {
+    if value.terms().len() <= MAX_EXPANDED_OMEGA_TERMS {
+        return value.clone();
+    }
+    let axis_name = AXES[axis];
+    let tex = format!("\\omega^{{{}}}_{{{axis_name}}}", latex_name(body));
+    let note = format!("angular velocity of {body} along {body}.{axis_name}");
+    Expr::named(&format!("{body}.w.{axis_name}"), &tex, &note, value.clone())
 }
 
 /// States at which a choice of rows must be nonsingular: the initial state and a few generic

@@ -163,12 +163,12 @@ fn own_omega(model: &Model, body: BodyId) -> Components {
 }
 
 /// The sum of `parts`, component by component.
-fn sum(parts: &[&Components]) -> Components {
+pub(super) fn sum(parts: &[&Components]) -> Components {
     std::array::from_fn(|i| add(parts.iter().map(|p| p[i].clone())))
 }
 
 /// Each component simplified.
-fn simplified(c: Components) -> Components {
+pub(super) fn simplified(c: Components) -> Components {
     c.map(|e| simplify(&e))
 }
 
@@ -182,7 +182,7 @@ fn derivative(c: &Components) -> Option<Components> {
 }
 
 /// For every unknown its coefficient in each component, and what is left.
-fn split(c: &Components, unknowns: &[Symbol]) -> Option<(Vec<Components>, Components)> {
+pub(super) fn split(c: &Components, unknowns: &[Symbol]) -> Option<(Vec<Components>, Components)> {
     let mut by_unknown: Vec<Components> =
         vec![std::array::from_fn(|_| Expr::zero()); unknowns.len()];
     let mut rest: Components = std::array::from_fn(|_| Expr::zero());

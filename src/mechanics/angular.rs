@@ -1,0 +1,136 @@
+//! A spatial body's angular velocity and acceleration built on its parent's, the partial
+//! angular velocities named where long.
+//!
+//! Multiplied out in the body's own unit vectors, the angular velocity of the k-th body of
+//! a spatial chain carries every direction cosine across the chain: 3^k-fold trig products.
+//! Built as Kane and Levinson build it, it stays a few terms per link:
+//! - `ω^k = Σ_r ω^k_r q̇_r + ω̃^k`, with the partial angular velocities `ω^k_r = C ω^p_r +`
+//!   the joint's axis for `q_r`, and `ω̃^k` what a driven coordinate adds;
+//! - `α^k = Σ_r ω^k_r q̈_r + α̃^k`, with `α̃^k = C α̃^p + (the joint's ω' without the q'')
+//!   + ω^p × ω_rel`, where `C` takes the parent's unit vectors to the body's.
+
+use super::compact::{name_part, Kind, Quantity, MAX_EXPANDED_TERMS};
+use super::frames::apply;
+use super::frames::Frames;
+use super::model::{omega_component_named, Angular, BodyState};
+use super::on_parent::{simplified, split, sum};
+use super::vector::{cross3, Components};
+use super::Vector;
+use crate::problem::{BodyId, Problem};
+use crate::symbolic::diff::time_derivative;
+use crate::symbolic::{add, Expr, Symbol};
+
+/// The angular velocity and acceleration of `body` from those of `parent` (`parent_state`)
+/// and the joint's `relative` angular velocity (body's unit vectors).
+///
+/// # Errors
+/// When the joint's angular velocity is not linear in the rates or cannot be differentiated.
+pub fn built(
+    problem: &Problem,
+    frames: &Frames,
+    parent_state: &BodyState,
+    (body, parent): (BodyId, BodyId),
+    relative: &Components,
+) -> Result<Angular, String> {
+    let rates = problem.speed_symbols(1);
+    let accelerations = problem.speed_symbols(2);
+    let name = &problem.body(body).name;
+    let into_body = frames.dcm(body, parent);
+    let not_linear = || "its angular velocity is not linear in the rates".to_string();
+    let parent_omega = parent_state.omega.components_in(parent, frames);
+    let (from_parent, parent_rest) = split(&parent_omega, &rates).ok_or_else(not_linear)?;
+    let (own, own_rest) = split(relative, &rates).ok_or_else(not_linear)?;
+    let plain: Vec<Components> = (0..rates.len())
+        .map(|r| simplified(sum(&[&apply(&into_body, &from_parent[r]), &own[r]])))
+        .collect();
+    let rest = simplified(sum(&[&apply(&into_body, &parent_rest), &own_rest]));
+    // As in the inertia forces (see `compact`): the coefficients of a long component are
+    // named, so that the next body's are built on three names, not on their terms.
+    let long: [bool; 3] = std::array::from_fn(|axis| {
+        let terms = plain.iter().filter(|w| !w[axis].is_zero());
+        let terms = terms.map(|w| w[axis].terms().len());
+        terms.sum::<usize>() + usize::from(!rest[axis].is_zero()) > MAX_EXPANDED_TERMS
+    });
+    let quantity = Quantity {
+        body: name,
+        kind: Kind::AngularAcceleration,
+    };
+    let partials: Vec<Components> = plain
+        .iter()
+        .zip(&accelerations)
+        .map(|(w, acceleration)| {
+            std::array::from_fn(|axis| match long[axis] {
+                true => name_part(&w[axis], &quantity, axis, Some(acceleration)),
+                false => w[axis].clone(),
+            })
+        })
+        .collect();
+    let by_partials = |derivatives: &[Symbol], rest: &Components| -> Components {
+        std::array::from_fn(|axis| {
+            let terms = partials
+                .iter()
+                .zip(derivatives)
+                .map(|(w, s)| &w[axis] * &Expr::sym(s.clone()));
+            add(terms.chain([rest[axis].clone()]))
+        })
+    };
+    let omega = by_partials(&rates, &rest);
+    // The parent's ω, long components by name, carried here.
+    let parent_named = apply(
+        &into_body,
+        &parent_state.omega_named.components_in(parent, frames),
+    );
+    let recursive = sum(&[&parent_named, relative]);
+    let omega_named: Components = std::array::from_fn(|axis| {
+        let shorter = [&recursive[axis], &omega[axis]]
+            .into_iter()
+            .min_by_key(|c| c.terms().len())
+            .unwrap_or(&omega[axis]);
+        omega_component_named(name, axis, shorter)
+    });
+    let turning = [&parent_named, &omega_named].map(|w| cross3(w, relative));
+    let alpha_rest = alpha_rest(
+        problem,
+        frames,
+        parent_state,
+        (body, parent),
+        relative,
+        &turning,
+    )?;
+    let alpha_rest = std::array::from_fn(|axis| {
+        match long[axis] || alpha_rest[axis].terms().len() > MAX_EXPANDED_TERMS {
+            true => name_part(&alpha_rest[axis], &quantity, axis, None),
+            false => alpha_rest[axis].clone(),
+        }
+    });
+    Ok(Angular {
+        omega: Vector::new(body, omega),
+        omega_named: Vector::new(body, omega_named),
+        alpha: Vector::new(body, by_partials(&accelerations, &alpha_rest)),
+    })
+}
+
+/// `α̃^k = C α̃^p + (the joint's ω' without the q'') + ω^k × ω_rel`, where the last term,
+/// which equals `ω^p × ω_rel`, is whichever of `turning` makes the rest shorter.
+fn alpha_rest(
+    problem: &Problem,
+    frames: &Frames,
+    parent_state: &BodyState,
+    (body, parent): (BodyId, BodyId),
+    relative: &Components,
+    turning: &[Components; 2],
+) -> Result<Components, String> {
+    let accelerations = problem.speed_symbols(2);
+    let not_linear = || "its angular acceleration is not linear in the q''".to_string();
+    let parent_alpha = parent_state.alpha.components_in(parent, frames);
+    let (_, parent_rest) = split(&parent_alpha, &accelerations).ok_or_else(not_linear)?;
+    let d = |e: &Expr| time_derivative(e).map_err(|e| e.to_string());
+    let relative_rate = [d(&relative[0])?, d(&relative[1])?, d(&relative[2])?];
+    let (_, own_rest) = split(&relative_rate, &accelerations).ok_or_else(not_linear)?;
+    let carried = apply(&frames.dcm(body, parent), &parent_rest);
+    let size = |c: &Components| c.iter().map(|e| e.terms().len()).sum::<usize>();
+    let [a, b] = turning
+        .clone()
+        .map(|t| simplified(sum(&[&carried, &own_rest, &t])));
+    Ok(if size(&b) < size(&a) { b } else { a })
+}
