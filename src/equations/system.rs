@@ -154,7 +154,7 @@ pub fn derive_at<'p>(
     form: Form,
 ) -> Result<Derivation<'p>, MechanicsError> {
     budget::step("computing the kinematics (step 4)");
-    let model = Model::build(problem)?;
+    let model = Model::build_for(problem, form)?;
     budget::step("writing the forces and moments (step 2)");
     let actions = actions(&model)?;
     budget::step("writing the inertia forces and torques (step 4)");

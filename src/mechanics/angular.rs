@@ -15,6 +15,7 @@ use super::frames::Frames;
 use super::model::{omega_component_named, Angular, BodyState};
 use super::on_parent::{simplified, split, sum};
 use super::vector::{cross3, Components};
+use super::Form;
 use super::Vector;
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::diff::time_derivative;
@@ -29,7 +30,7 @@ pub fn built(
     problem: &Problem,
     frames: &Frames,
     parent_state: &BodyState,
-    (body, parent): (BodyId, BodyId),
+    (body, parent, form): (BodyId, BodyId, Form),
     relative: &Components,
 ) -> Result<Angular, String> {
     let rates = problem.speed_symbols(1);
@@ -45,11 +46,19 @@ pub fn built(
         .collect();
     let rest = simplified(sum(&[&apply(&into_body, &parent_rest), &own_rest]));
     // As in the inertia forces (see `compact`): the coefficients of a long component are
-    // named, so that the next body's are built on three names, not on their terms.
+    // named, so that the next body's are built on three names, not on their terms. Once a
+    // parent's are named, a child's are long whatever they look like: written on names,
+    // their terms no longer count what they would multiply out to.
+    // For numbers alone, naming every multi-term partial past the first body is cheapest.
+    let numeric_chain = form == Form::Numeric && parent != BodyId::GROUND;
+    let parent_named = parent_omega
+        .iter()
+        .any(|c| c.any_symbol(&|s| matches!(s, Symbol::Defined(_))));
     let long: [bool; 3] = std::array::from_fn(|axis| {
         let terms = plain.iter().filter(|w| !w[axis].is_zero());
         let terms = terms.map(|w| w[axis].terms().len());
-        terms.sum::<usize>() + usize::from(!rest[axis].is_zero()) > MAX_EXPANDED_TERMS
+        let written = terms.sum::<usize>() + usize::from(!rest[axis].is_zero());
+        written > MAX_EXPANDED_TERMS || parent_named || numeric_chain
     });
     let quantity = Quantity {
         body: name,
@@ -82,11 +91,18 @@ pub fn built(
     );
     let recursive = sum(&[&parent_named, relative]);
     let omega_named: Components = std::array::from_fn(|axis| {
-        let shorter = [&recursive[axis], &omega[axis]]
-            .into_iter()
-            .min_by_key(|c| c.terms().len())
-            .unwrap_or(&omega[axis]);
-        omega_component_named(name, axis, shorter)
+        // Σ ω_r q̇_r has as many terms as multiplied out when the partials are written
+        // whole; by names, it has fewer, and either form counts.
+        let forms = [&recursive[axis], &omega[axis]];
+        let by_names = partials.iter().any(|w| {
+            matches!(w[axis].node(), crate::symbolic::expr::Node::Sym(Symbol::Defined(_)))
+        });
+        let length = match by_names {
+            true => forms.iter().map(|c| c.terms().len()).max().unwrap_or(0),
+            false => omega[axis].terms().len(),
+        };
+        let shorter = forms.into_iter().min_by_key(|c| c.terms().len());
+        omega_component_named(name, axis, length, shorter.unwrap_or(&omega[axis]))
     });
     let turning = [&parent_named, &omega_named].map(|w| cross3(w, relative));
     let alpha_rest = alpha_rest(

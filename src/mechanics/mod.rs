@@ -25,6 +25,17 @@ impl fmt::Display for MechanicsError {
 
 impl std::error::Error for MechanicsError {}
 
+/// Who reads the equations: how much of the kinematics is named depends on it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Form {
+    /// A student, in the worked solution: a planar acceleration is written whole, and a
+    /// spatial one named where it is long.
+    Handout,
+    /// The compiled program only: every long acceleration gets named parts, and every
+    /// partial angular velocity past the first body, the fewest operations.
+    Numeric,
+}
+
 pub mod angular;
 pub mod compact;
 pub mod constraints;

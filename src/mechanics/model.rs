@@ -149,6 +149,14 @@ impl<'p> Model<'p> {
     /// When a joint axis is zero or not fixed in its parent, or a point is given in the
     /// unit vectors of a frame it is not fixed in.
     pub fn build(problem: &'p Problem) -> Result<Model<'p>, MechanicsError> {
+        Model::build_for(problem, super::Form::Handout)
+    }
+
+    /// As [`Model::build`], the kinematics named as `form` reads them.
+    ///
+    /// # Errors
+    /// As [`Model::build`].
+    pub fn build_for(problem: &'p Problem, form: super::Form) -> Result<Model<'p>, MechanicsError> {
         let values = constant_values(problem);
         let speeds = Speeds::of(problem)?;
         let count = problem.bodies.len() + 1;
@@ -206,7 +214,7 @@ impl<'p> Model<'p> {
                 &bodies[joint.parent.0],
                 (body, j),
                 motion,
-                speeds.as_ref(),
+                (speeds.as_ref(), form),
             )?;
             bodies[body.0] = state;
             joints[j] = Some(joint_model);
@@ -372,7 +380,7 @@ fn body_kinematics(
     parent_state: &BodyState,
     (body, j): (BodyId, usize),
     motion: JointMotion,
-    speeds: Option<&Speeds>,
+    (speeds, form): (Option<&Speeds>, super::Form),
 ) -> Result<(BodyState, JointModel), MechanicsError> {
     let joint = &problem.joints[j];
     let parent = joint.parent;
@@ -400,8 +408,14 @@ fn body_kinematics(
             speeds,
         )?
     } else {
-        super::angular::built(problem, frames, parent_state, (body, parent), &relative)
-            .map_err(fail)?
+        super::angular::built(
+            problem,
+            frames,
+            parent_state,
+            (body, parent, form),
+            &relative,
+        )
+        .map_err(fail)?
     };
 
     // The joint point on the parent, then the sliding along the joint, then back to the origin.
@@ -531,7 +545,7 @@ fn angular_multiplied_out(
                 } else {
                     component
                 };
-                omega_component_named(name, axis, shorter)
+                omega_component_named(name, axis, component.terms().len(), shorter)
             }
         }),
     );
@@ -543,11 +557,12 @@ fn angular_multiplied_out(
     })
 }
 
-/// A spatial angular velocity component for velocity products: short ones multiplied out,
-/// so that sin^2 + cos^2 = 1 can simplify them; long ones named, so that the products
-/// print as products of three letters.
-pub fn omega_component_named(body: &str, axis: usize, value: &Expr) -> Expr {
-    if value.terms().len() <= MAX_EXPANDED_OMEGA_TERMS {
+/// A spatial angular velocity component for velocity products, `value` being its shortest
+/// form and `length` the terms of its longest: short ones multiplied out, so that
+/// sin^2 + cos^2 = 1 can simplify them; long ones named, so that the products print as
+/// products of three letters.
+pub fn omega_component_named(body: &str, axis: usize, length: usize, value: &Expr) -> Expr {
+    if length <= MAX_EXPANDED_OMEGA_TERMS {
         return value.clone();
     }
     let axis_name = AXES[axis];

@@ -7,6 +7,7 @@ use crate::mechanics::frames::{apply, Frames};
 use crate::mechanics::model::sample_states;
 use crate::mechanics::on_parent::{self, Built};
 use crate::mechanics::vector::{size, Components};
+pub use crate::mechanics::Form;
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
@@ -31,16 +32,6 @@ pub struct Inertia {
     /// Inertia torques dotted with a direction so far: a torque is long, and every free
     /// body that holds its body dots it with the same directions again.
     torque_along: RefCell<Vec<(BodyId, Vector, Expr)>>,
-}
-
-/// Who reads the equations: the form of a planar chain's long accelerations depends on it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Form {
-    /// A student, in the worked solution: a planar acceleration is written whole.
-    Handout,
-    /// The compiled program only: every long acceleration gets named parts, the fewest
-    /// operations.
-    Numeric,
 }
 
 impl Inertia {
