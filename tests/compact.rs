@@ -371,3 +371,45 @@ fn a_planar_chain_is_computed_by_names_and_printed_whole() {
     let markdown = explain("validation/ten-link-chain", "markdown");
     assert!(!markdown.contains("\\tilde{a}"));
 }
+
+#[test]
+fn a_long_rolling_constraint_reads_as_the_contact_points_velocity() {
+    let markdown = explain("validation/whipple-bicycle", "markdown");
+    let point = "{}^{N}\\mathbf{v}^{\\mathrm{front}_{\\mathrm{contact}}}";
+    // The front contact's two rolling rows: its velocity along n̂x and along n̂y.
+    for axis in ["x", "y"] {
+        let row = format!("| ${point} \\cdot \\hat{{\\mathbf{{n}}}}_{{{axis}}} = 0$ |");
+        assert!(markdown.contains(&row), "no row {row}");
+    }
+    // The velocity itself once, below the table. By hand, its first terms are the rear
+    // axle's velocity, the origin of B at (x, y, z) in N: ẋ n̂x + ẏ n̂y + ż n̂z.
+    let definition = format!(
+        "{point} = \\dot{{x}} \\hat{{\\mathbf{{n}}}}_{{x}} + \\dot{{y}} \\hat{{\\mathbf{{n}}}}_{{y}} + \\dot{{z}} \\hat{{\\mathbf{{n}}}}_{{z}} + "
+    );
+    assert_eq!(markdown.matches(&definition).count(), 1, "{definition}");
+    assert!(markdown.contains("| definition | equation (C7) below |"));
+}
+
+#[test]
+fn rows_written_out_in_step_5_are_not_listed_again_in_the_matrix() {
+    let markdown = explain("validation/all-joints-3d", "markdown");
+    let sentence = "Rows (1)–(9), (16)–(18), (24)–(26) are written out in full in step 5";
+    assert!(markdown.contains(sentence), "no sentence {sentence}");
+    let read_off: Vec<usize> = (1..=9).chain(16..=18).chain(24..=26).collect();
+    // Step 5's heading of row i, and what follows it up to the next row.
+    let row = |i: usize| -> &str {
+        let start = markdown
+            .find(&format!("\n**{i}. "))
+            .unwrap_or_else(|| panic!("no row {i} in step 5"));
+        let rest = &markdown[start + 1..];
+        let end = rest[1..].find("\n**").map_or(rest.len(), |e| e + 1);
+        &rest[..end]
+    };
+    for i in 1..=26 {
+        let listed = markdown.contains(&format!("\nRow {i}, "));
+        let by_names = row(i).contains(&format!("A_{{{i},"));
+        // A row is listed entry by entry exactly when step 5 writes it with A's names.
+        assert_eq!(listed, by_names, "row {i}");
+        assert_eq!(listed, !read_off.contains(&i), "row {i}");
+    }
+}

@@ -95,7 +95,10 @@ pub fn built(
         // whole; by names, it has fewer, and either form counts.
         let forms = [&recursive[axis], &omega[axis]];
         let by_names = partials.iter().any(|w| {
-            matches!(w[axis].node(), crate::symbolic::expr::Node::Sym(Symbol::Defined(_)))
+            matches!(
+                w[axis].node(),
+                crate::symbolic::expr::Node::Sym(Symbol::Defined(_))
+            )
         });
         let length = match by_names {
             true => forms.iter().map(|c| c.terms().len()).max().unwrap_or(0),

@@ -8,15 +8,24 @@ use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::Model;
 use crate::numeric::format::fixed;
 use crate::problem::BodyId;
+use crate::symbolic::collect::latex_collected;
 use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::Symbol;
+use crate::symbolic::roots::roots_of_squares;
+use crate::symbolic::{simplify, Symbol};
+
+/// The longest equation (LaTeX characters) the constraint table's narrow column holds;
+/// a longer one, lines of a few terms each, would run over pages.
+const LONGEST_IN_TABLE: usize = 600;
 
 /// Step 1: every constraint row as an equation (position level when it has one), and the
 /// notes on what the constraints solve for.
 pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>) {
-    let constraints = &derivation.model.constraints;
-    let sign = super::derived::initial_sign(&derivation.model);
-    let views = constraints
+    let model = &derivation.model;
+    let constraints = &model.constraints;
+    let sign = super::derived::initial_sign(model);
+    // The contact points whose velocity a long row is written with, each defined once.
+    let mut velocities: Vec<usize> = Vec::new();
+    let mut views: Vec<ConstraintView> = constraints
         .rows
         .iter()
         .map(|row| {
@@ -24,19 +33,53 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 Some(p) => ("position", p),
                 None => ("velocity", &row.velocity),
             };
+            let shown = roots_of_squares(&simplify(expression), &sign);
+            // A velocity constraint collected by the rates, as Σ (coefficient) q̇_j = 0.
+            let mut equation_tex = format!("{} = 0", latex_collected(&shown));
+            let name_tex = constraint_label_tex(model, &row.name);
+            if let (true, None, RowOrigin::Site { site, component }) = (
+                equation_tex.len() > LONGEST_IN_TABLE,
+                &row.position,
+                &row.origin,
+            ) {
+                // Multiplied out, a contact's velocity across a chain of frames is long;
+                // as the contact point's velocity along the reaction's direction it reads
+                // as a textbook writes the constraint.
+                let reaction = &model.sites[*site].reactions[*component];
+                equation_tex = format!(
+                    "{} \\cdot {} = 0",
+                    point_velocity_tex(model, *site),
+                    super::derived::vector_tex(model, &reaction.direction)
+                );
+                if !velocities.contains(site) {
+                    velocities.push(*site);
+                }
+            }
             ConstraintView {
-                name_tex: constraint_label_tex(&derivation.model, &row.name),
+                name_tex,
                 level: level.into(),
-                equation_tex: format!(
-                    "{} = 0",
-                    latex(&crate::symbolic::roots::roots_of_squares(
-                        &crate::symbolic::simplify(expression),
-                        &sign
-                    ))
-                ),
+                below: equation_tex.len() > LONGEST_IN_TABLE,
+                equation_tex,
             }
         })
         .collect();
+    for site in velocities {
+        let velocity = &model.sites[site].point.velocity;
+        let equation_tex = format!(
+            "{} = {}",
+            point_velocity_tex(model, site),
+            super::derived::vector_tex(model, velocity)
+        );
+        views.push(ConstraintView {
+            name_tex: format!(
+                "\\text{{the velocity of the contact point at {}}}",
+                super::escape::latex(&model.sites[site].name, super::escape::Lines::One)
+            ),
+            level: "definition".into(),
+            below: equation_tex.len() > LONGEST_IN_TABLE,
+            equation_tex,
+        });
+    }
     // Notes are written for the terminal, with `code` quotes; a handout shows the quoted
     // coordinates and rates as symbols (the notes are markup, see `markup`).
     let problem = derivation.model.problem;
@@ -52,6 +95,14 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             .map(|(row, why)| format!("Constraint {row} left out: {why}.").replace('`', "")),
     );
     (views, notes)
+}
+
+/// `{}^{N}\mathbf{v}^{P}` for the contact point of site `site`.
+fn point_velocity_tex(model: &Model, site: usize) -> String {
+    format!(
+        "{{}}^{{N}}\\mathbf{{v}}^{{{}}}",
+        latex_name(&model.sites[site].name)
+    )
 }
 
 /// The dependent rates as a linear map of the independent ones at the (assembled) initial

@@ -104,6 +104,9 @@ pub struct ConstraintView {
     pub level: String,
     /// The equation, `… = 0`.
     pub equation_tex: String,
+    /// Too long for the table's column: displayed below it at full width, the table
+    /// pointing to it by number.
+    pub below: bool,
 }
 
 /// A reference frame and its unit vectors.
@@ -365,6 +368,9 @@ pub struct MatrixForm {
     pub rules: Vec<Named>,
     /// With `by_value`, the unknowns by column: `x_{1} = \ddot{q}_{1}`.
     pub columns_tex: Vec<String>,
+    /// The rows listed entry by entry leave out those step 5 writes out in full, to be
+    /// read off there: their numbers, `(1)--(9), (24)` (empty when none is left out).
+    pub read_off_tex: String,
 }
 
 /// `A`, `x` and `b` as `bmatrix` environments.

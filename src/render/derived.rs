@@ -44,10 +44,11 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .map(|row| equation_view(derivation, row))
             .collect();
         // The matrix is listed entry by entry whenever an equation refers to its entries.
-        let by_name = solution
+        let by_name: Vec<bool> = solution
             .equations
             .iter()
-            .any(|e| !e.simplified_note.is_empty());
+            .map(|e| !e.simplified_note.is_empty())
+            .collect();
         let use_shown = uses_shown(derivation);
         let sign = initial_sign(&derivation.model);
         let shown = |e: &Expr| {
@@ -57,7 +58,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         };
         let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
         let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
-        solution.matrix = super::matrix::matrix(derivation, by_name, shown, initial);
+        solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kinematic_definitions = kinematic_definitions(derivation);
         solution.speeds = super::speeds::speeds(derivation);

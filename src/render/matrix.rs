@@ -85,15 +85,18 @@ pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
     }
 }
 
-/// Step 5's `A x = b`; `by_entries` asks for the entries one by one (an equation refers to
-/// them by name); `initial` evaluates an entry at the initial state, for the entries of a
-/// system too large to print whole (see [`ENTRIES_BUDGET`]).
+/// Step 5's `A x = b`; `by_name[i]` tells whether step 5 writes row `i` with the entries'
+/// names, and then they are listed one by one: the rows step 5 writes out in full are read
+/// off there and not repeated. `initial` evaluates an entry at the initial state, for the
+/// entries of a system too large to print whole (see [`ENTRIES_BUDGET`]).
 pub fn matrix(
     derivation: &Derivation,
-    by_entries: bool,
+    by_name: &[bool],
     shown: impl Fn(&Expr) -> Expr,
     initial: impl Fn(&Expr) -> f64,
 ) -> MatrixForm {
+    let by_entries = by_name.iter().any(|&b| b);
+    let listed = |i: usize| !by_entries || by_name.get(i).copied().unwrap_or(true);
     let system = &derivation.system;
     let n = system.unknowns.len();
     let a: Vec<Vec<Expr>> = system
@@ -139,7 +142,11 @@ pub fn matrix(
     } else {
         (whole(&numbers, &x_names, &a_names, &b_names), true)
     };
-    let printed: usize = a_tex.iter().flatten().chain(&b_tex).map(String::len).sum();
+    let printed: usize = (0..a_tex.len())
+        .filter(|&i| listed(i))
+        .flat_map(|i| a_tex[i].iter().chain([&b_tex[i]]))
+        .map(String::len)
+        .sum();
     let by_value = printed > ENTRIES_BUDGET;
     // With `by_value`, a formula too long for a line is replaced by its value at the start.
     let formula_or_number = |e: &Expr, text: String| {
@@ -172,7 +179,7 @@ pub fn matrix(
         for (j, e) in row.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
             // A symmetric entry refers to the one above the diagonal, written once.
             let mirror = a.get(j).and_then(|r| r.get(i));
-            let value = if j < i && mirror == Some(e) {
+            let value = if j < i && mirror == Some(e) && listed(j) {
                 format!("A_{{{},{}}}", j + 1, i + 1)
             } else {
                 a_tex[i][j].clone()
@@ -290,10 +297,14 @@ pub fn matrix(
             ..MatrixForm::default()
         };
     }
+    let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
+    entries.retain(|e| listed(e.row - 1));
+    let read_off_tex = rows_tex(&read_off);
     if !by_value && entries.len() <= MOST_LISTED {
         return MatrixForm {
             whole: None,
             entries,
+            read_off_tex,
             ..MatrixForm::default()
         };
     }
@@ -311,7 +322,25 @@ pub fn matrix(
             .enumerate()
             .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
             .collect(),
+        read_off_tex,
     }
+}
+
+/// Row numbers as a reader lists them, runs joined: `(1)–(9), (24)–(26)`.
+fn rows_tex(rows: &[usize]) -> String {
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    for &i in rows {
+        match runs.last_mut() {
+            Some((_, end)) if *end + 1 == i => *end = i,
+            _ => runs.push((i, i)),
+        }
+    }
+    let run = |(a, b): (usize, usize)| match b - a {
+        0 => format!("({})", a + 1),
+        1 => format!("({}), ({})", a + 1, b + 1),
+        _ => format!("({})--({})", a + 1, b + 1),
+    };
+    runs.into_iter().map(run).collect::<Vec<_>>().join(", ")
 }
 
 /// The entries of `A` as a table by name prints them: 0, a symbol or two as it is
