@@ -52,7 +52,8 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
         message,
     };
     let storage = Storage::new();
-    let events: Vec<_> = Parser::new(latex, &storage).collect();
+    let plain = underscores_in_text(latex);
+    let events: Vec<_> = Parser::new(&plain, &storage).collect();
     if let Some(Err(e)) = events.iter().find(|e| e.is_err()) {
         // The first line of the parser's message; the rest is a drawing of the input.
         return Err(error(
@@ -75,6 +76,38 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
     // print as the six characters `&nbsp;`.
     let out = out.replace("&amp;nbsp;", "&#160;");
     Ok(sanitize(&spaces_out_of_scripts(&out)))
+}
+
+/// `latex` with `\_` inside `\text{…}` written `_`: the parser ends the text there and
+/// drops the rest (`\text{rear\_contact}` would read `rear`), while a plain underscore in
+/// text mode is a character.
+fn underscores_in_text(latex: &str) -> std::borrow::Cow<'_, str> {
+    if !latex.contains("\\_") {
+        return latex.into();
+    }
+    let mut out = String::with_capacity(latex.len());
+    let mut rest = latex;
+    while let Some(start) = rest.find("\\text{") {
+        let (before, text) = rest.split_at(start + "\\text{".len());
+        out.push_str(before);
+        // The group's end: braces nest.
+        let mut depth = 1;
+        let end = text
+            .char_indices()
+            .find(|&(_, c)| {
+                depth += match c {
+                    '{' => 1,
+                    '}' => -1,
+                    _ => 0,
+                };
+                depth == 0
+            })
+            .map_or(text.len(), |(i, _)| i);
+        out.push_str(&text[..end].replace("\\_", "_"));
+        rest = &text[end..];
+    }
+    out.push_str(rest);
+    out.into()
 }
 
 /// The elements whose children are counted: a base and one or two scripts.
@@ -261,6 +294,16 @@ mod tests {
                 "]</mo>",
             ],
         );
+    }
+
+    #[test]
+    fn an_underscore_in_text_is_kept() {
+        let mathml = to_mathml("\\text{at rear\\_contact} \\cdot x_{1}", Display::Inline).unwrap();
+        assert!(
+            mathml.contains("<mtext>at rear_contact</mtext>"),
+            "{mathml}"
+        );
+        assert!(mathml.contains("<msub>"), "{mathml}");
     }
 
     #[test]
