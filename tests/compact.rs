@@ -413,3 +413,15 @@ fn rows_written_out_in_step_5_are_not_listed_again_in_the_matrix() {
         assert_eq!(listed, !read_off.contains(&i), "row {i}");
     }
 }
+
+#[test]
+fn a_partial_angular_velocity_the_same_for_several_speeds_is_written_once() {
+    let markdown = explain("validation/spherical-chain-3", "markdown");
+    // For a speed of B1's joint, B3's partial angular velocity is B2's carried across the
+    // joint of B3: along b̂3z, by hand, ω^{B2}_r · b̂3z with b̂3z = s8 x̂2 - s7 c8 ŷ2 + c7 c8 ẑ2
+    // (x-y-z angles q7, q8, q9). Written once, with the speeds it holds for.
+    assert!(markdown.contains(
+        "- $\\omega^{B_{3}}_{r,z} = \\omega^{B_{2}}_{r,x} s_{8} - \\omega^{B_{2}}_{r,y} s_{7} c_{8} + \\omega^{B_{2}}_{r,z} c_{7} c_{8} \\quad (r = q_{1}, q_{2})$: partial angular velocity of B3 for r, along B3.z"
+    ));
+    assert!(!markdown.contains("\\omega^{B_{3}}_{q_{1},z} ="));
+}

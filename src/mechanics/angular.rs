@@ -1,5 +1,6 @@
-//! A spatial body's angular velocity and acceleration built on its parent's, the partial
-//! angular velocities named where long.
+//! A body's angular velocity and acceleration (step 4): in the plane, or with declared
+//! speeds, multiplied out; in space, built on its parent's, the partial angular velocities
+//! named where long.
 //!
 //! Multiplied out in the body's own unit vectors, the angular velocity of the k-th body of
 //! a spatial chain carries every direction cosine across the chain: 3^k-fold trig products.
@@ -9,17 +10,107 @@
 //! - `α^k = Σ_r ω^k_r q̈_r + α̃^k`, with `α̃^k = C α̃^p + (the joint's ω' without the q'')
 //!   + ω^p × ω_rel`, where `C` takes the parent's unit vectors to the body's.
 
-use super::compact::{name_part, Kind, Quantity, MAX_EXPANDED_TERMS};
-use super::frames::apply;
-use super::frames::Frames;
-use super::model::{omega_component_named, Angular, BodyState};
+use super::compact::{name_part, Kind, Quantity, AXES, MAX_EXPANDED_TERMS};
+use super::frames::{apply, Frames};
+use super::model::{dt_components, BodyState};
 use super::on_parent::{simplified, split, sum};
+use super::speeds::Speeds;
 use super::vector::{cross3, Components};
 use super::Form;
+use super::MechanicsError;
 use super::Vector;
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::diff::time_derivative;
+use crate::symbolic::print::latex_name;
 use crate::symbolic::{add, Expr, Symbol};
+
+/// In spatial problems, an angular velocity component with more terms than this is kept
+/// whole in velocity products; shorter ones are multiplied out (see `omega_named`).
+const MAX_EXPANDED_OMEGA_TERMS: usize = 3;
+
+/// A body's angular velocity, the same with long components named, and its angular
+/// acceleration, each in the body's own unit vectors.
+pub struct Angular {
+    /// See [`BodyState::omega`].
+    pub omega: Vector,
+    /// See [`BodyState::omega_named`].
+    pub omega_named: Vector,
+    /// See [`BodyState::alpha`].
+    pub alpha: Vector,
+}
+
+/// The angular velocity as the parent's carried into this frame plus the joint's own,
+/// multiplied out, and its derivative. In the plane these are sums of rates; with declared
+/// speeds the kinematic equations mix the rates, so nothing is built on the parent's parts.
+pub(super) fn multiplied_out(
+    problem: &Problem,
+    frames: &Frames,
+    parent_state: &BodyState,
+    (body, path): (BodyId, &str),
+    relative: &Components,
+    speeds: Option<&Speeds>,
+) -> Result<Angular, MechanicsError> {
+    let to_speeds = |e: &Expr| match speeds {
+        Some(s) => s.to_speeds(e),
+        None => e.clone(),
+    };
+    let carried = |parent_omega: &Vector| {
+        parent_omega
+            .expressed_in(body, frames)
+            .plus(&Vector::new(body, relative.clone()))
+            .map(crate::symbolic::simplify)
+            .map(to_speeds)
+    };
+    let omega = carried(&parent_state.omega);
+    let omega_components = omega.components_in(body, frames);
+    let name = &problem.body(body).name;
+    let planar = problem.dimension == crate::problem::Dimension::Two;
+    // The same built on the parent's named components: ω_k = C ω_(k-1) + its joint's rates,
+    // a few terms where multiplied out it has many. (In the plane there is nothing to build.)
+    let recursive = if planar {
+        omega_components.clone()
+    } else {
+        carried(&parent_state.omega_named).components_in(body, frames)
+    };
+    let omega_named = Vector::new(
+        body,
+        std::array::from_fn(|axis| {
+            let component = &omega_components[axis];
+            let label = format!("{name}.w.{}", AXES[axis]);
+            // Planar: (q1' + q2')^2 as a student writes it.
+            if planar {
+                Expr::defined(&label, component.clone())
+            } else {
+                let shorter = if recursive[axis].terms().len() < component.terms().len() {
+                    &recursive[axis]
+                } else {
+                    component
+                };
+                omega_component_named(name, axis, component.terms().len(), shorter)
+            }
+        }),
+    );
+    let alpha = Vector::new(body, dt_components(&omega_components, path, speeds)?);
+    Ok(Angular {
+        omega,
+        omega_named,
+        alpha,
+    })
+}
+
+/// A spatial angular velocity component for velocity products, `value` being its shortest
+/// form and `length` the terms of its longest: short ones multiplied out, so that
+/// sin^2 + cos^2 = 1 can simplify them; long ones named, so that the products print as
+/// products of three letters.
+pub fn omega_component_named(body: &str, axis: usize, length: usize, value: &Expr) -> Expr {
+    if length <= MAX_EXPANDED_OMEGA_TERMS {
+        return value.clone();
+    }
+    let axis_name = AXES[axis];
+    let tex = format!("\\omega^{{{}}}_{{{axis_name}}}", latex_name(body));
+    let note = format!("angular velocity of {body} along {body}.{axis_name}");
+    Expr::named(&format!("{body}.w.{axis_name}"), &tex, &note, value.clone())
+}
 
 /// The angular velocity and acceleration of `body` from those of `parent` (`parent_state`)
 /// and the joint's `relative` angular velocity (body's unit vectors).
@@ -60,6 +151,9 @@ pub fn built(
         let written = terms.sum::<usize>() + usize::from(!rest[axis].is_zero());
         written > MAX_EXPANDED_TERMS || parent_named || numeric_chain
     });
+    // One long axis names all three: a child's partials are then the same rule for every
+    // speed of this body's (ω^c_r = C ω^k_r), written once in the handout.
+    let long = [long.contains(&true); 3];
     let quantity = Quantity {
         body: name,
         kind: Kind::AngularAcceleration,

@@ -1,7 +1,7 @@
 //! Building the kinematic model of a problem: frames from the joints (step 1), then the
 //! angular velocity and acceleration of every body and the motion of every point (step 4).
 
-use super::compact::AXES;
+use super::angular::Angular;
 use super::frames::{FrameInfo, Frames, Matrix};
 use super::joints::{
     joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent,
@@ -12,12 +12,7 @@ use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::Values;
-use crate::symbolic::print::latex_name;
 use crate::symbolic::{Expr, Symbol};
-
-/// In spatial problems, an angular velocity component with more terms than this is kept
-/// whole in velocity products; shorter ones are multiplied out (see `omega_named`).
-const MAX_EXPANDED_OMEGA_TERMS: usize = 3;
 
 /// Position, velocity and acceleration of a point in `N`.
 #[derive(Clone, Debug, Default)]
@@ -123,7 +118,7 @@ fn constant_values(problem: &Problem) -> Values {
     values
 }
 
-fn dt_components(
+pub(super) fn dt_components(
     c: &Components,
     path: &str,
     speeds: Option<&Speeds>,
@@ -399,7 +394,7 @@ fn body_kinematics(
         omega_named,
         alpha,
     } = if planar || speeds.is_some() {
-        angular_multiplied_out(
+        super::angular::multiplied_out(
             problem,
             frames,
             parent_state,
@@ -485,90 +480,6 @@ fn body_kinematics(
         point: joint_point,
     };
     Ok((state, joint_model))
-}
-
-/// A body's angular velocity, the same with long components named, and its angular
-/// acceleration, each in the body's own unit vectors.
-pub struct Angular {
-    /// See [`BodyState::omega`].
-    pub omega: Vector,
-    /// See [`BodyState::omega_named`].
-    pub omega_named: Vector,
-    /// See [`BodyState::alpha`].
-    pub alpha: Vector,
-}
-
-/// The angular velocity as the parent's carried into this frame plus the joint's own,
-/// multiplied out, and its derivative. In the plane these are sums of rates; with declared
-/// speeds the kinematic equations mix the rates, so nothing is built on the parent's parts.
-fn angular_multiplied_out(
-    problem: &Problem,
-    frames: &Frames,
-    parent_state: &BodyState,
-    (body, path): (BodyId, &str),
-    relative: &Components,
-    speeds: Option<&Speeds>,
-) -> Result<Angular, MechanicsError> {
-    let to_speeds = |e: &Expr| match speeds {
-        Some(s) => s.to_speeds(e),
-        None => e.clone(),
-    };
-    let carried = |parent_omega: &Vector| {
-        parent_omega
-            .expressed_in(body, frames)
-            .plus(&Vector::new(body, relative.clone()))
-            .map(crate::symbolic::simplify)
-            .map(to_speeds)
-    };
-    let omega = carried(&parent_state.omega);
-    let omega_components = omega.components_in(body, frames);
-    let name = &problem.body(body).name;
-    let planar = problem.dimension == crate::problem::Dimension::Two;
-    // The same built on the parent's named components: ω_k = C ω_(k-1) + its joint's rates,
-    // a few terms where multiplied out it has many. (In the plane there is nothing to build.)
-    let recursive = if planar {
-        omega_components.clone()
-    } else {
-        carried(&parent_state.omega_named).components_in(body, frames)
-    };
-    let omega_named = Vector::new(
-        body,
-        std::array::from_fn(|axis| {
-            let component = &omega_components[axis];
-            let label = format!("{name}.w.{}", AXES[axis]);
-            // Planar: (q1' + q2')^2 as a student writes it.
-            if planar {
-                Expr::defined(&label, component.clone())
-            } else {
-                let shorter = if recursive[axis].terms().len() < component.terms().len() {
-                    &recursive[axis]
-                } else {
-                    component
-                };
-                omega_component_named(name, axis, component.terms().len(), shorter)
-            }
-        }),
-    );
-    let alpha = Vector::new(body, dt_components(&omega_components, path, speeds)?);
-    Ok(Angular {
-        omega,
-        omega_named,
-        alpha,
-    })
-}
-
-/// A spatial angular velocity component for velocity products, `value` being its shortest
-/// form and `length` the terms of its longest: short ones multiplied out, so that
-/// sin^2 + cos^2 = 1 can simplify them; long ones named, so that the products print as
-/// products of three letters.
-pub fn omega_component_named(body: &str, axis: usize, length: usize, value: &Expr) -> Expr {
-    if length <= MAX_EXPANDED_OMEGA_TERMS {
-        return value.clone();
-    }
-    let axis_name = AXES[axis];
-    let tex = format!("\\omega^{{{}}}_{{{axis_name}}}", latex_name(body));
-    let note = format!("angular velocity of {body} along {body}.{axis_name}");
-    Expr::named(&format!("{body}.w.{axis_name}"), &tex, &note, value.clone())
 }
 
 /// States at which a choice of rows must be nonsingular: the initial state and a few generic

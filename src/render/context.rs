@@ -220,7 +220,7 @@ pub struct Force {
 }
 
 /// A named quantity and what it stands for.
-#[derive(Clone, Debug, Default, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Named {
     /// The definition, e.g. `\ell_{1} = \sqrt{x^{2} + y^{2}}`.
     pub definition_tex: String,

@@ -363,20 +363,26 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .into_iter()
         .filter(|d| !forces.contains(d))
         .collect();
-    // A definition too long to read is given by what it is; the numbers use the formula.
-    let names: Vec<String> = used
-        .iter()
-        .map(|d| d.latex().unwrap_or_default().to_string())
+    let problem = derivation.model.problem;
+    let coordinates = 0..problem.coordinates.len();
+    let speeds: Vec<String> = coordinates
+        .clone()
+        .map(|i| latex(&problem.coordinate_expr(i, 0)))
         .collect();
-    named_list(used)
+    let plain: Vec<String> = coordinates
+        .map(|i| problem.coordinates[i].name.clone())
+        .collect();
+    let merged = super::by_speed::merged(named_list(used), &speeds, &plain);
+    // A definition too long to read is given by what it is; the numbers use the formula.
+    merged
         .into_iter()
-        .zip(names)
-        .map(|(named, name)| {
+        .map(|named| {
             if named.definition_tex.len() <= LONG_EQUATION {
                 return named;
             }
+            let name = named.definition_tex.split(" = ").next().unwrap_or_default();
             Named {
-                definition_tex: name,
+                definition_tex: name.to_string(),
                 note: format!("{}; too long to print whole", named.note),
             }
         })

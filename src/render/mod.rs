@@ -8,6 +8,7 @@
 
 pub mod answers;
 pub mod build;
+mod by_speed;
 pub mod constrained;
 pub mod context;
 pub mod derived;
