@@ -325,9 +325,10 @@ impl Compiled {
                 what: "a coefficient of the equations".into(),
             });
         }
-        let x = solve_linear(&a, &b).ok_or_else(|| SolveError::SingularSystem {
+        // Factored in place; rebuilt from the values only to explain a singular one.
+        let x = solve_linear_owned(a, b).ok_or_else(|| SolveError::SingularSystem {
             state: state(),
-            detail: self.singularity_detail(&a),
+            detail: self.singularity_detail(&DMatrix::from_row_slice(n, n, &values[..n * n])),
         })?;
         let mut accelerations: Vec<f64> = x.iter().take(self.coordinates.len()).copied().collect();
         if let Some(speeds) = &self.speeds {
@@ -392,15 +393,21 @@ impl Compiled {
 
 /// Solves `a x = b` by LU with partial pivoting; `None` when `a` is singular to working precision.
 pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-    let lu = a.clone().lu();
+    solve_linear_owned(a.clone(), b.clone())
+}
+
+/// As [`solve_linear`], factoring `a` in place and solving into `b`: no copies.
+pub fn solve_linear_owned(a: DMatrix<f64>, b: DVector<f64>) -> Option<DVector<f64>> {
+    let n = a.nrows() as f64;
+    let lu = a.lu();
     // The diagonal of the packed factors is U's (L's is ones and not stored).
     let diagonal = lu.lu_internal().diagonal();
     let largest = diagonal.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let smallest = diagonal.iter().fold(f64::INFINITY, |m, x| m.min(x.abs()));
-    if largest.is_nan() || largest <= 0.0 || smallest <= 1e-13 * largest * (a.nrows() as f64) {
+    if largest.is_nan() || largest <= 0.0 || smallest <= 1e-13 * largest * n {
         return None;
     }
-    let mut x = b.clone();
+    let mut x = b;
     lu.solve_mut(&mut x).then_some(x)
 }
 
