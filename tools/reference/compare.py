@@ -80,14 +80,20 @@ def compare_outputs(got, ref):
     return diffs
 
 
+def number(value):
+    return value if isinstance(value, (int, float)) else 0.0
+
+
 def random_states(prob, k, rng):
     states = []
     for _ in range(k):
         s = {}
         for name in prob.coords:
             decl = prob.declared_coords.get(name, {})
-            s[name] = decl.get("initial", 0.0) + rng.uniform(-1.0, 1.0)
-            s[name + "'"] = decl.get("rate", 0.0) + rng.uniform(-1.0, 1.0)
+            # A value written as an expression (a rate of "-v/rR") is a state like any
+            # other here: the states are random about the number, or about zero.
+            s[name] = number(decl.get("initial")) + rng.uniform(-1.0, 1.0)
+            s[name + "'"] = number(decl.get("rate")) + rng.uniform(-1.0, 1.0)
         states.append(s)
     return states
 
