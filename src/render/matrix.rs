@@ -326,7 +326,8 @@ pub fn matrix(
     }
 }
 
-/// Row numbers as a reader lists them, runs joined: `(1)–(9), (24)–(26)`.
+/// Row numbers as a reader lists them, runs joined by an en dash (LaTeX `--`):
+/// `(1)--(9), (24)--(26)`.
 fn rows_tex(rows: &[usize]) -> String {
     let mut runs: Vec<(usize, usize)> = Vec::new();
     for &i in rows {
