@@ -139,21 +139,19 @@ pub fn built(
     // As in the inertia forces (see `compact`): the coefficients of a long component are
     // named, so that the next body's are built on three names, not on their terms. Once a
     // parent's are named, a child's are long whatever they look like: written on names,
-    // their terms no longer count what they would multiply out to.
-    // For numbers alone, naming every multi-term partial past the first body is cheapest.
+    // their terms no longer count what they would multiply out to. One long axis names all
+    // three, so that a child's partials are the same rule for every speed of this body's
+    // (ω^c_r = C ω^k_r), written once in the handout. For numbers alone, naming every
+    // multi-term partial past the first body is cheapest.
     let numeric_chain = form == Form::Numeric && parent != BodyId::GROUND;
-    let parent_named = parent_omega
-        .iter()
-        .any(|c| c.any_symbol(&|s| matches!(s, Symbol::Defined(_))));
-    let long: [bool; 3] = std::array::from_fn(|axis| {
-        let terms = plain.iter().filter(|w| !w[axis].is_zero());
-        let terms = terms.map(|w| w[axis].terms().len());
-        let written = terms.sum::<usize>() + usize::from(!rest[axis].is_zero());
-        written > MAX_EXPANDED_TERMS || parent_named || numeric_chain
-    });
-    // One long axis names all three: a child's partials are then the same rule for every
-    // speed of this body's (ω^c_r = C ω^k_r), written once in the handout.
-    let long = [long.contains(&true); 3];
+    let parent_by_names = parent_omega.iter().any(|c| c.any_symbol(&is_name));
+    let long = numeric_chain
+        || parent_by_names
+        || (0..3).any(|axis| {
+            let terms = plain.iter().filter(|w| !w[axis].is_zero());
+            let terms = terms.map(|w| w[axis].terms().len()).sum::<usize>();
+            terms + usize::from(!rest[axis].is_zero()) > MAX_EXPANDED_TERMS
+        });
     let quantity = Quantity {
         body: name,
         kind: Kind::AngularAcceleration,
@@ -162,7 +160,7 @@ pub fn built(
         .iter()
         .zip(&accelerations)
         .map(|(w, acceleration)| {
-            std::array::from_fn(|axis| match long[axis] {
+            std::array::from_fn(|axis| match long {
                 true => name_part(&w[axis], &quantity, axis, Some(acceleration)),
                 false => w[axis].clone(),
             })
@@ -179,21 +177,18 @@ pub fn built(
     };
     let omega = by_partials(&rates, &rest);
     // The parent's ω, long components by name, carried here.
-    let parent_named = apply(
+    let parent_carried = apply(
         &into_body,
         &parent_state.omega_named.components_in(parent, frames),
     );
-    let recursive = sum(&[&parent_named, relative]);
+    let recursive = sum(&[&parent_carried, relative]);
     let omega_named: Components = std::array::from_fn(|axis| {
         // Σ ω_r q̇_r has as many terms as multiplied out when the partials are written
         // whole; by names, it has fewer, and either form counts.
         let forms = [&recursive[axis], &omega[axis]];
-        let by_names = partials.iter().any(|w| {
-            matches!(
-                w[axis].node(),
-                crate::symbolic::expr::Node::Sym(Symbol::Defined(_))
-            )
-        });
+        let by_names = partials
+            .iter()
+            .any(|w| w[axis].as_symbol().is_some_and(is_name));
         let length = match by_names {
             true => forms.iter().map(|c| c.terms().len()).max().unwrap_or(0),
             false => omega[axis].terms().len(),
@@ -201,7 +196,7 @@ pub fn built(
         let shorter = forms.into_iter().min_by_key(|c| c.terms().len());
         omega_component_named(name, axis, length, shorter.unwrap_or(&omega[axis]))
     });
-    let turning = [&parent_named, &omega_named].map(|w| cross3(w, relative));
+    let turning = [&parent_carried, &omega_named].map(|w| cross3(w, relative));
     let alpha_rest = alpha_rest(
         problem,
         frames,
@@ -211,7 +206,7 @@ pub fn built(
         &turning,
     )?;
     let alpha_rest = std::array::from_fn(|axis| {
-        match long[axis] || alpha_rest[axis].terms().len() > MAX_EXPANDED_TERMS {
+        match long || alpha_rest[axis].terms().len() > MAX_EXPANDED_TERMS {
             true => name_part(&alpha_rest[axis], &quantity, axis, None),
             false => alpha_rest[axis].clone(),
         }
@@ -221,6 +216,11 @@ pub fn built(
         omega_named: Vector::new(body, omega_named),
         alpha: Vector::new(body, by_partials(&accelerations, &alpha_rest)),
     })
+}
+
+/// Whether a symbol is a named quantity (a definition).
+fn is_name(s: &Symbol) -> bool {
+    matches!(s, Symbol::Defined(_))
 }
 
 /// `α̃^k = C α̃^p + (the joint's ω' without the q'') + ω^k × ω_rel`, where the last term,
