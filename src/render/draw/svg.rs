@@ -31,7 +31,10 @@ fn points(ps: &[P2]) -> String {
 
 fn stroke(out: &mut String, s: &Stroke) {
     let tag = if s.closed { "polygon" } else { "polyline" };
-    let fill = s.fill.map_or("none".to_string(), color);
+    // No fill is the shapes group's default (see `export`).
+    let fill = s
+        .fill
+        .map_or(String::new(), |ink| format!(" fill=\"{}\"", color(ink)));
     let dash = if s.dashed {
         " stroke-dasharray=\"4 3\""
     } else {
@@ -39,7 +42,7 @@ fn stroke(out: &mut String, s: &Stroke) {
     };
     let _ = writeln!(
         out,
-        "<{tag} points=\"{}\" fill=\"{fill}\" stroke=\"{}\" stroke-width=\"{}\"{dash}/>",
+        "<{tag} points=\"{}\"{fill} stroke=\"{}\" stroke-width=\"{}\"{dash}/>",
         points(&s.points),
         color(s.ink),
         num(s.width)
@@ -57,6 +60,12 @@ fn label_spans(label: &Label) -> String {
             return;
         }
         let dy = script - *shift;
+        if dy == 0.0 && script == 0.0 {
+            // On the baseline already: plain text, no span.
+            out.push_str(&xml(run));
+            run.clear();
+            return;
+        }
         let size = if script != 0.0 {
             " font-size=\"9\""
         } else {
@@ -87,10 +96,8 @@ fn label_spans(label: &Label) -> String {
             _ => run.push(c),
         }
     }
+    // A script that ends the label needs no return to the baseline: nothing follows.
     flush(&mut out, &mut run, &mut shift, script);
-    if shift != 0.0 {
-        let _ = write!(out, "<tspan dy=\"{}\"></tspan>", num(-shift));
-    }
     out
 }
 
@@ -116,7 +123,7 @@ fn item(out: &mut String, item: &Item) {
         Item::Text { at, label, ink } => {
             let _ = writeln!(
                 out,
-                "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" fill=\"{}\">{}</text>",
+                "<text x=\"{}\" y=\"{}\" fill=\"{}\">{}</text>",
                 num(at[0]),
                 num(at[1] + 4.5),
                 color(*ink),
@@ -137,7 +144,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         .collect();
     let _ = writeln!(
         out,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" data-projection=\"{}\" font-family=\"DejaVu Serif, Times New Roman, serif\" font-size=\"13\" stroke-linecap=\"round\" stroke-linejoin=\"round\">",
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" data-projection=\"{}\" font-family=\"DejaVu Serif, Times New Roman, serif\" font-size=\"13\" text-anchor=\"middle\" stroke-linecap=\"round\" stroke-linejoin=\"round\">",
         projection.join(" "),
         w = num(picture.width),
         h = num(picture.height),
@@ -149,11 +156,12 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         num(picture.width),
         num(picture.height)
     );
-    out.push_str("<g class=\"shapes\">\n");
+    out.push_str("<g class=\"shapes\" fill=\"none\">\n");
     for i in &picture.items {
         item(&mut out, i);
     }
-    out.push_str("</g>\n<g class=\"points\">\n");
+    // Every point's circle has the same outline, given once.
+    out.push_str("</g>\n<g class=\"points\" stroke=\"#222222\" stroke-width=\"1.2\">\n");
     for m in &picture.marks {
         let (r, fill, class) = match m.role {
             Role::Joint => (2.6, "#222222", "joint"),
@@ -162,7 +170,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         };
         let _ = writeln!(
             out,
-            "<circle id=\"{}{}\" class=\"{class}\" cx=\"{}\" cy=\"{}\" r=\"{r}\" fill=\"{fill}\" stroke=\"#222222\" stroke-width=\"1.2\"/>",
+            "<circle id=\"{}{}\" class=\"{class}\" cx=\"{}\" cy=\"{}\" r=\"{r}\" fill=\"{fill}\"/>",
             xml(prefix),
             xml(&m.id),
             num(m.at[0]),
@@ -173,7 +181,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
             let (x, y) = (m.at[0], m.at[1]);
             let _ = writeln!(
                 out,
-                "<path d=\"M{} {} h4.5 a4.5 4.5 0 0 0 -4.5 -4.5 z M{} {} h-4.5 a4.5 4.5 0 0 0 4.5 4.5 z\" fill=\"#222222\"/>",
+                "<path d=\"M{} {} h4.5 a4.5 4.5 0 0 0 -4.5 -4.5 z M{} {} h-4.5 a4.5 4.5 0 0 0 4.5 4.5 z\" fill=\"#222222\" stroke=\"none\"/>",
                 num(x),
                 num(y),
                 num(x),
@@ -181,7 +189,8 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
             );
         }
     }
-    out.push_str("</g>\n<g class=\"arrows\">\n");
+    // Every arrow's line or arc has the same width, given once.
+    out.push_str("</g>\n<g class=\"arrows\" stroke-width=\"1.6\">\n");
     for a in &picture.arrows {
         let mut class = String::from("force");
         if a.couple {
@@ -213,7 +222,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
                 let sweep_flag = u8::from(arc.sweep > 0.0);
                 let _ = writeln!(
                     out,
-                    "<path d=\"M{} {} A{} {} 0 {large} {sweep_flag} {} {}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"1.6\"/>",
+                    "<path d=\"M{} {} A{} {} 0 {large} {sweep_flag} {} {}\" fill=\"none\" stroke=\"{ink}\"/>",
                     num(a.tail[0]),
                     num(a.tail[1]),
                     num(arc.radius),
@@ -225,7 +234,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
             None => {
                 let _ = writeln!(
                     out,
-                    "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{ink}\" stroke-width=\"1.6\"/>",
+                    "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{ink}\"/>",
                     num(a.tail[0]),
                     num(a.tail[1]),
                     num(a.head[0]),
@@ -242,7 +251,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         }
         out.push_str("</g>\n");
     }
-    out.push_str("</g>\n<g class=\"labels\">\n");
+    out.push_str("</g>\n<g class=\"labels\" fill=\"none\">\n");
     for t in &picture.texts {
         item(&mut out, t);
     }
