@@ -425,3 +425,16 @@ fn a_partial_angular_velocity_the_same_for_several_speeds_is_written_once() {
     ));
     assert!(!markdown.contains("\\omega^{B_{3}}_{q_{1},z} ="));
 }
+
+#[test]
+fn a_reaction_acts_at_its_joint_by_name() {
+    let markdown = explain("five-link-chain", "markdown");
+    // The free body link2 + … + link5 is cut at P2: the reaction of link1 on link2 acts at
+    // the pin P2, which is also link2's origin, where an offset would read as 0.
+    assert!(markdown.contains(
+        "| contact: reaction at P2 | $F^{P_{2}}_{x} \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}} + F^{P_{2}}_{y} \\hat{\\mathbf{y}}_{\\mathrm{link}_{1}}$ | $\\text{at } P_{2}$ |"
+    ));
+    assert!(!markdown.contains("$\\text{at } \\mathbf{0}$"));
+    // Gravity acts at each link's mass centre, named as such (link5* alone on its own).
+    assert!(markdown.contains("| distance: gravity on link5 | $-g m \\hat{\\mathbf{n}}_{y}$ | $\\text{at } \\mathrm{link}_{5}^*$ |"));
+}

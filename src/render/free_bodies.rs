@@ -17,6 +17,25 @@ use crate::symbolic::roots::roots_of_squares;
 /// each body k, instead of body by body.
 const MOST_BODIES_LISTED: usize = 3;
 
+/// Where a force acts, as a textbook's table says it: a reaction at its joint's (or
+/// closure's, or contact's) point by name, `at O`; another force at the body's mass centre
+/// or origin as that; anything else by its position from the body's origin.
+fn acts_at(model: &Model, action: &crate::plan::forces::Action, at: &Vector) -> String {
+    if let Source::Reaction(site) = action.source {
+        let name = model.problem.site_name(site);
+        return format!("\\text{{at }} {}", latex_name(name));
+    }
+    let body = latex_name(model.problem.body_name(action.body));
+    let center = Model::own(action.body, &model.bodies[action.body.0].center_offset);
+    if *at == center {
+        return format!("\\text{{at }} {body}^*");
+    }
+    if at.is_zero() {
+        return format!("\\text{{at the origin of }} {body}");
+    }
+    format!("\\text{{at }} {}", vector_tex(model, at))
+}
+
 pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
     let model = &derivation.model;
     let problem = model.problem;
@@ -47,10 +66,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                         let at = Vector::new(action.body, offset.clone())
                             .map(|e| roots_of_squares(e, &sign));
                         let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
-                        (
-                            vector_tex(model, &force),
-                            format!("\\text{{at }} {}", vector_tex(model, &at)),
-                        )
+                        (vector_tex(model, &force), acts_at(model, action, &at))
                     }
                     ActionKind::Couple { torque } => {
                         (vector_tex(model, torque), "\\text{couple}".into())
