@@ -6,6 +6,7 @@
 //! node, so shared subtrees cost nothing.
 
 use crate::symbolic::expr::{Expr, Node};
+use crate::symbolic::fast_hash::FastHasher;
 use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet};
 use std::hash::{BuildHasherDefault, Hash, Hasher};
@@ -19,38 +20,6 @@ const HASHED_NODES: u32 = 32;
 pub(crate) type KeyMap<K, V> = HashMap<K, V, BuildHasherDefault<FastHasher>>;
 /// A hash set of expressions, with [`FastHasher`].
 pub(crate) type KeySet<K> = HashSet<K, BuildHasherDefault<FastHasher>>;
-
-/// The multiply-rotate hash of rustc (`FxHasher`): the keys here are our own expressions,
-/// not input an attacker controls, so SipHash's protection buys nothing and costs a
-/// quarter of the run time on big equations.
-#[derive(Default)]
-pub(crate) struct FastHasher(u64);
-
-impl Hasher for FastHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        for chunk in bytes.chunks(8) {
-            let mut word = [0u8; 8];
-            word[..chunk.len()].copy_from_slice(chunk);
-            self.write_u64(u64::from_le_bytes(word));
-        }
-    }
-
-    fn write_u64(&mut self, word: u64) {
-        self.0 = (self.0.rotate_left(5) ^ word).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
-
-    fn write_u8(&mut self, n: u8) {
-        self.write_u64(u64::from(n));
-    }
-
-    fn write_usize(&mut self, n: usize) {
-        self.write_u64(n as u64);
-    }
-
-    fn finish(&self) -> u64 {
-        self.0
-    }
-}
 
 /// An expression used as a key of a hash map or set.
 #[derive(Clone, Debug)]
