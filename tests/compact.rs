@@ -173,46 +173,60 @@ fn a_wall_spring_reads_as_minus_k_x() {
 #[test]
 fn indices_are_sorted_as_a_reader_counts() {
     let markdown = explain("validation/ten-link-chain", "markdown");
-    // By hand: the last link turns at the sum of all ten relative rates, q1' to q10'.
-    let expected = "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{10}} = \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6} + \\dot{q}_{7} + \\dot{q}_{8} + \\dot{q}_{9} + \\dot{q}_{10}\\right) \\hat{\\mathbf{z}}_{\\mathrm{link}_{10}}";
-    assert!(
-        markdown.lines().any(|l| l.trim() == expected),
-        "no line reads {expected}"
-    );
+    // By hand: the last link turns at the sum of all ten relative rates, q1' to q10', a run
+    // a textbook writes by its ends; the third at q1' + q2' + q3', written out.
+    for expected in [
+        "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{10}} = \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{10}\\right) \\hat{\\mathbf{z}}_{\\mathrm{link}_{10}}",
+        "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{3}} = \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3}\\right) \\hat{\\mathbf{z}}_{\\mathrm{link}_{3}}",
+    ] {
+        assert!(
+            markdown.lines().any(|l| l.trim() == expected),
+            "no line reads {expected}"
+        );
+    }
     assert!(!markdown.contains("q_{1} + q_{10}"));
     // A right-hand side too long to read whole is collected by the squares of the links'
     // angular velocities (the centripetal terms of a chain), each coefficient named.
     assert!(markdown.contains(
         "$b_{1} = B_{1,1} \\, \\dot{q}_{1}^{2} + B_{1,2} \\, \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2} + "
     ));
-    // s_{23} = sin(q2 + q3), ...: the sines of sums of coordinates by their indices.
-    assert!(markdown
-        .contains("$B_{1,1} = \\frac{17 L^{2} m s_{2}}{2} + \\frac{15 L^{2} m s_{23}}{2} + "));
+    // s_{23} = sin(q2 + q3), ...: the sines of sums of coordinates by their indices, in the
+    // order a reader counts (9, 10), a run of five or more by its ends; the coefficient's
+    // common factor L²m/2 pulled out.
+    assert!(markdown.contains(
+        "$B_{1,1} = \\frac{L^{2} m}{2} \\left(17 s_{2} + 15 s_{23} + 13 s_{234} + 11 s_{2345} + 9 s_{2\\ldots 6} + "
+    ));
     assert!(markdown.contains("$s_{23} = \\sin\\left(q_{2} + q_{3}\\right)$"));
+    assert!(markdown.contains("$c_{9,10} = \\cos\\left(q_{9} + q_{10}\\right)$"));
+    assert!(markdown.contains("$s_{2\\ldots 10} = \\sin\\left(q_{2} + \\cdots + q_{10}\\right)$"));
 }
 
 #[test]
 fn a_long_equation_is_shown_with_the_matrix_entries_by_name() {
-    let markdown = explain("five-link-chain", "markdown");
-    let equations = simplified_equations(&markdown);
-    // A row of A x = b for five coordinates, every coefficient nonzero: the plan's first
-    // rows (the outer links) are short enough to show whole, the later ones are not.
-    let by_name: Vec<&String> = equations.iter().filter(|e| e.starts_with("A_{")).collect();
-    assert!(!by_name.is_empty());
+    // A row of A x = b for ten coordinates, every coefficient nonzero: too long to show
+    // whole, it is shown by the names of its entries.
+    let ten = explain("validation/ten-link-chain", "markdown");
+    let by_name: Vec<String> = simplified_equations(&ten)
+        .into_iter()
+        .filter(|e| e.starts_with("A_{"))
+        .collect();
+    assert_eq!(by_name.len(), 10);
     for e in by_name {
         let i = &e[3..e.find(',').unwrap_or(3)];
-        let expected = (1..=5)
+        let expected = (1..=10)
             .map(|j| format!("A_{{{i},{j}}} \\ddot{{q}}_{{{j}}}"))
             .collect::<Vec<_>>()
             .join(" + ");
-        assert_eq!(*e, format!("{expected} = b_{{{i}}}"));
+        assert_eq!(e, format!("{expected} = b_{{{i}}}"));
     }
-    assert!(markdown.contains("With the coefficients of the matrix form below:"));
+    assert!(ten.contains("With the coefficients of the matrix form below:"));
+    let markdown = explain("five-link-chain", "markdown");
     // The mass matrix is symmetric: in the table by name, the entry below the diagonal is
     // the one above, defined once.
     assert!(markdown.contains("(2) & A_{1,2} &"));
     assert!(!markdown.contains("$A_{2,1} = "));
-    assert!(markdown.contains("$A_{1,2} = -\\frac{22 L^{2} m}{3}"));
+    // By hand, with the common factor L²m/6 out: A₁₂ = -(L²m/6)(44 + 21 c₂ + …).
+    assert!(markdown.contains("$A_{1,2} = -\\frac{L^{2} m}{6} \\left(44 + 21 c_{2} + "));
     // The text's size: the pictures embedded as inline SVG are not equations.
     let mut text = markdown.clone();
     while let (Some(a), Some(b)) = (text.find("<svg"), text.find("</svg>")) {
@@ -233,15 +247,16 @@ fn the_double_pendulum_reads_as_a_textbook_writes_it() {
     let equations = simplified_equations(&markdown);
     // Rod B about P, by hand: -(m2 L2²/3)(q1'' + q2'') - m2 (L2/2) L1 (q1'' c2 + q1'² s2)
     // - m2 g (L2/2) s12 = 0, collected by q1'', q2'', then the rates, the common factor
-    // -L2 m2 of q1'''s coefficient pulled out, sines and cosines by their abbreviations.
+    // -L2 m2/6 of q1'''s coefficient pulled out (the coefficients inside integers), sines
+    // and cosines by their abbreviations.
     assert_eq!(
         equations[1],
-        "-L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} c_{2}}{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} - \\frac{L_{2} g m_{2}}{2} s_{12}"
+        "-\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} c_{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} - \\frac{L_{2} g m_{2}}{2} s_{12}"
     );
     // A + B about O, gravity's moment by hand: -m1 g (L1/2) s1 - m2 g (L1 s1 + (L2/2) s12),
     // the masses of s1's coefficient collected.
     assert!(equations[0].ends_with(
-        "- L_{1} g \\left(\\frac{m_{1}}{2} + m_{2}\\right) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}"
+        "- \\frac{L_{1} g}{2} \\left(m_{1} + 2 m_{2}\\right) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}"
     ));
     // Both rods along N.y: F^O_y - (m1 + m2) g + …, the masses collected.
     assert!(equations[3].ends_with("- g \\left(m_{1} + m_{2}\\right)"));
@@ -290,7 +305,7 @@ fn a_chain_link_moves_with_its_parents_mass_centre() {
     // By hand: link6 hangs along -y of its frame from its joint, so from link6* to the joint
     // P7 is -(L/2) ŷ6 and from P7 to link7* is -(L/2) ŷ7. With ω6 = (q̇1 + … + q̇6) ẑ,
     // ω6 × (-(L/2) ŷ6) = (L/2)(q̇1 + … + q̇6) x̂6, and likewise for link7.
-    let expected = "{}^{N}\\mathbf{v}^{\\mathrm{link}_{7}^*} = {}^{N}\\mathbf{v}^{\\mathrm{link}_{6}^*} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{6}} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3} + \\dot{q}_{4} + \\dot{q}_{5} + \\dot{q}_{6} + \\dot{q}_{7}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}";
+    let expected = "{}^{N}\\mathbf{v}^{\\mathrm{link}_{7}^*} = {}^{N}\\mathbf{v}^{\\mathrm{link}_{6}^*} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{6}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{6}} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{7}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}";
     assert!(
         markdown.lines().any(|l| l.trim() == expected),
         "no line reads {expected}"

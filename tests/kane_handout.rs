@@ -76,9 +76,9 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
     // F_r and F_r* each on its own, then their sum.
     let shown = |tex: &str| format!("$$\n{tex}\n$$");
     let forces = [
-        "F_{1} = -L_{1} g \\left(\\frac{m_{1}}{2} + m_{2}\\right) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}",
+        "F_{1} = -\\frac{L_{1} g}{2} \\left(m_{1} + 2 m_{2}\\right) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}",
         "F_{2} = -\\frac{L_{2} g m_{2}}{2} s_{12}",
-        "F^{*}_{2} = -L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} c_{2}}{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2}",
+        "F^{*}_{2} = -\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} c_{2}\\right) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2}",
         "F_{3} = F^{O}_{x}",
         "F_{4} = F^{O}_{y} - g \\left(m_{1} + m_{2}\\right)",
     ];

@@ -7,6 +7,7 @@ use super::long::{by_rates, LONG_EQUATION};
 use super::prepare::printed_width;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
+use crate::symbolic::collect::latex_factored;
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::Expr;
@@ -113,9 +114,9 @@ pub fn matrix(
         .collect();
     let mut a_tex: Vec<Vec<String>> = a
         .iter()
-        .map(|row| row.iter().map(latex).collect())
+        .map(|row| row.iter().map(latex_factored).collect())
         .collect();
-    let b_tex: Vec<String> = b.iter().map(latex).collect();
+    let b_tex: Vec<String> = b.iter().map(latex_factored).collect();
     // In the table a row is labelled by its number: step 5 heads each equation with it.
     let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
     let b_names: Vec<String> = (1..=a.len()).map(|i| format!("b_{{{i}}}")).collect();
@@ -239,7 +240,7 @@ pub fn matrix(
                 format!(
                     "{} = {}",
                     name(k + 1),
-                    formula_or_number(coefficient, latex(coefficient))
+                    formula_or_number(coefficient, latex_factored(coefficient))
                 ),
             );
         }

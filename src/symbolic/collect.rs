@@ -113,6 +113,28 @@ pub fn latex_collected(e: &Expr) -> String {
     }
 }
 
+/// A sum with the factor all its terms share pulled out, `\frac{L^{2} m}{2} (3 s_{2} + s_{23})`,
+/// when that is shorter; otherwise as it is.
+pub fn latex_factored(e: &Expr) -> String {
+    let whole = latex(e);
+    if e.terms().len() < 2 {
+        return whole;
+    }
+    let (common, inner) = pull_common_factor(e);
+    if common
+        .as_number()
+        .is_some_and(|c| c.is_one() || c.neg().is_one())
+    {
+        return whole;
+    }
+    let text = factored(&common, &inner, "");
+    if text.len() < whole.len() {
+        text
+    } else {
+        whole
+    }
+}
+
 /// `common (inner) key`, the sign of `common` in front.
 pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
     let (c, rest) = common.split_coefficient();
@@ -146,7 +168,7 @@ fn base_and_exponent(f: &Expr) -> (Expr, i64) {
 }
 
 /// `sum = common · inner`: `common` the sign when every term is negative, the fraction
-/// all coefficients share (the same denominator, the gcd of the numerators) and the
+/// all coefficients share (the gcd of the numerators over the lcm of the denominators) and the
 /// factors every term has, each to its lowest power.
 pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
     let terms = sum.terms();
@@ -185,12 +207,19 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
         })
         .collect();
     if let Some(ratios) = ratios {
-        let d = ratios[0].1;
-        if ratios.iter().all(|(_, e)| *e == d) {
-            let g = ratios.iter().fold(0i64, |g, (n, _)| gcd(g, *n));
-            if g > 0 {
-                number = number.mul(Number::ratio(g as i128, d as i128));
-            }
+        // gcd of the numerators over the lcm of the denominators, so that the coefficients
+        // left inside are integers: L²m/3 + L²m c/2 = L²m/6 (2 + 3c). Only beside a
+        // symbolic factor (a bare 1/3 (3a + b) reads worse than a + b/3), and not for a
+        // large lcm, which given decimals make: 0.35 a + 0.2 b stays as it is.
+        const LARGEST_DENOMINATOR: i64 = 12;
+        let g = ratios.iter().fold(0i64, |g, (n, _)| gcd(g, *n));
+        let same = |l: i64| ratios.iter().all(|(_, d)| *d == l);
+        let l = ratios
+            .iter()
+            .try_fold(1i64, |l, (_, d)| (l / gcd(l, *d)).checked_mul(*d))
+            .filter(|&l| same(l) || (l <= LARGEST_DENOMINATOR && !common.is_empty()));
+        if let (true, Some(l)) = (g > 0, l) {
+            number = number.mul(Number::ratio(g as i128, l as i128));
         }
     }
     let mut factors = vec![Expr::num(number)];
@@ -233,7 +262,7 @@ mod tests {
         ]);
         assert_eq!(
             latex_collected(&e),
-            "-L_{2} m_{2} \\left(\\frac{L_{2}}{3} + \\frac{L_{1} \\cos(q_{2})}{2}\\right) \\ddot{q}_{1} - \\frac{L_{1} L_{2} m_{2} \\sin(q_{2})}{2} \\dot{q}_{1}^{2} - g m_{2} \\sin(q_{2})"
+            "-\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} \\cos(q_{2})\\right) \\ddot{q}_{1} - \\frac{L_{1} L_{2} m_{2} \\sin(q_{2})}{2} \\dot{q}_{1}^{2} - g m_{2} \\sin(q_{2})"
         );
     }
 

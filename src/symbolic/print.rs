@@ -204,23 +204,40 @@ impl Printer {
     }
 
     fn terms(&self, terms: &[Expr]) -> String {
+        let signed: Vec<(bool, String)> = terms
+            .iter()
+            .map(|term| {
+                let (coefficient, rest) = term.split_coefficient();
+                let negative = coefficient.is_negative();
+                let magnitude = if negative {
+                    coefficient.neg()
+                } else {
+                    coefficient
+                };
+                (negative, self.product(magnitude, &rest))
+            })
+            .collect();
         let mut out = String::new();
-        for (i, term) in terms.iter().enumerate() {
-            let (coefficient, rest) = term.split_coefficient();
-            let negative = coefficient.is_negative();
-            let magnitude = if negative {
-                coefficient.neg()
-            } else {
-                coefficient
-            };
-            let body = self.product(magnitude, &rest);
-            match (i, negative, self.latex) {
-                (0, true, _) => out.push('-'),
-                (0, false, _) => {}
-                (_, true, _) => out.push_str(" - "),
-                (_, false, _) => out.push_str(" + "),
+        let mut i = 0;
+        while i < signed.len() {
+            let (negative, body) = &signed[i];
+            match (i, negative) {
+                (0, true) => out.push('-'),
+                (0, false) => {}
+                (_, true) => out.push_str(" - "),
+                (_, false) => out.push_str(" + "),
             }
-            out.push_str(&body);
+            out.push_str(body);
+            let run = if self.latex {
+                indexed_run(&signed[i..])
+            } else {
+                1
+            };
+            if run > 1 {
+                out.push_str(" + \\cdots + ");
+                out.push_str(&signed[i + run - 1].1);
+            }
+            i += run;
         }
         out
     }
@@ -404,6 +421,32 @@ impl Printer {
     }
 }
 
+/// How many terms from the first are one symbol with consecutive indices, all added
+/// (`q̇₁ + q̇₂ + … + q̇₉`), when at least [`SHORTEST_RUN`]; else 1. A textbook writes such a
+/// run by its ends, q̇₁ + ⋯ + q̇₉.
+fn indexed_run(terms: &[(bool, String)]) -> usize {
+    const SHORTEST_RUN: usize = 4;
+    fn indexed((negative, body): &(bool, String)) -> Option<(&str, u64)> {
+        let (stem, index) = body.rsplit_once("_{")?;
+        let index: u64 = index.strip_suffix('}')?.parse().ok()?;
+        let one_symbol = !negative && !stem.contains(' ') && !stem.contains("\\frac");
+        one_symbol.then_some((stem, index))
+    }
+    let Some((stem, first)) = terms.first().and_then(indexed) else {
+        return 1;
+    };
+    let length = terms
+        .iter()
+        .zip(first..)
+        .take_while(|(term, expected)| indexed(term) == Some((stem, *expected)))
+        .count();
+    if length >= SHORTEST_RUN {
+        length
+    } else {
+        1
+    }
+}
+
 /// A base that already carries a superscript, such as the named direction cosine
 /// `{}^{N}C^{F}_{31}`, braced so that its power is not a second superscript (a LaTeX error).
 fn grouped_for_power(base: &str) -> String {
@@ -461,6 +504,30 @@ mod tests {
             "-\\dot{q}_{1} \\sin(q_{1})"
         );
         assert_eq!(plain(&(cos(q.clone()) - Expr::one())), "-1 + cos(q1)");
+    }
+
+    #[test]
+    fn a_run_of_four_or_more_indexed_rates_is_written_by_its_ends() {
+        let rates = |range: std::ops::RangeInclusive<u32>| {
+            crate::symbolic::build::add(range.map(|i| Expr::coord(&format!("q{i}"), 1)))
+        };
+        assert_eq!(
+            latex(&rates(1..=3)),
+            "\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3}"
+        );
+        assert_eq!(
+            latex(&rates(1..=10)),
+            "\\dot{q}_{1} + \\cdots + \\dot{q}_{10}"
+        );
+        // A term with a coefficient, or a gap, ends the run.
+        let gap = &rates(1..=4) + &Expr::coord("q6", 1);
+        assert_eq!(
+            latex(&gap),
+            "\\dot{q}_{1} + \\cdots + \\dot{q}_{4} + \\dot{q}_{6}"
+        );
+        let scaled = &rates(1..=3) + &(&Expr::int(2) * &Expr::coord("q4", 1));
+        assert!(!latex(&scaled).contains("cdots"));
+        assert!(!plain(&rates(1..=10)).contains("cdots"));
     }
 
     #[test]

@@ -125,8 +125,12 @@ pub(crate) fn abbreviation(f: Func, arg: &Expr) -> Option<String> {
             .iter()
             .map(|&i| style.indices[i].1.as_str())
             .collect();
-        // Single digits run together (`s_{12}`); anything longer is separated (`s_{1,10}`).
-        let joined = if indices.iter().all(|i| i.chars().count() == 1) {
+        // Single digits run together (`s_{12}`); anything longer is separated (`s_{1,10}`);
+        // a long run of consecutive indices by its ends (`s_{2…10}`), as
+        // q̇₂ + ⋯ + q̇₁₀ is written.
+        let joined = if let Some((first, last)) = consecutive_run(&indices) {
+            format!("{first}\\ldots {last}")
+        } else if indices.iter().all(|i| i.chars().count() == 1) {
             indices.concat()
         } else {
             indices.join(",")
@@ -145,6 +149,17 @@ pub(crate) fn abbreviation(f: Func, arg: &Expr) -> Option<String> {
         }
     });
     Some(name)
+}
+
+/// The ends of `indices` when they are at least five consecutive integers.
+fn consecutive_run<'a>(indices: &[&'a str]) -> Option<(&'a str, &'a str)> {
+    const SHORTEST: usize = 5;
+    let numbers: Vec<u64> = indices
+        .iter()
+        .map(|i| i.parse().ok())
+        .collect::<Option<_>>()?;
+    let consecutive = numbers.windows(2).all(|w| w[1] == w[0] + 1);
+    (numbers.len() >= SHORTEST && consecutive).then(|| (indices[0], indices[indices.len() - 1]))
 }
 
 /// How the current style writes the number `n/d` (`d > 1`), if as a decimal.
