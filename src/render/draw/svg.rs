@@ -6,9 +6,20 @@ use super::scene::{Label, Role};
 use crate::render::escape::html as xml;
 use std::fmt::Write;
 
-/// A number as the SVG writes it: three decimals, no negative zero.
+/// A number the contract reads (a point's centre, an arrow's line, the size): three
+/// decimals, no negative zero.
 fn num(x: f64) -> String {
-    let text = format!("{x:.3}");
+    decimals(x, 3)
+}
+
+/// A number only the eye reads (an outline, an arrowhead, a label's place): a tenth of a
+/// pixel is finer than a screen or a printer shows.
+fn coarse(x: f64) -> String {
+    decimals(x, 1)
+}
+
+fn decimals(x: f64, places: usize) -> String {
+    let text = format!("{x:.places$}");
     let text = text.trim_end_matches('0').trim_end_matches('.').to_string();
     if text == "-0" {
         "0".into()
@@ -24,9 +35,84 @@ fn color(ink: Ink) -> String {
 
 fn points(ps: &[P2]) -> String {
     ps.iter()
-        .map(|p| format!("{},{}", num(p[0]), num(p[1])))
+        .map(|p| format!("{},{}", coarse(p[0]), coarse(p[1])))
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+/// An open, unfilled line's look: lines that share it can be one `<path>`.
+fn line_style(item: &Item) -> Option<(Ink, u64, bool)> {
+    match item {
+        Item::Stroke(s) if !s.closed && s.fill.is_none() && s.points.len() > 1 => {
+            Some((s.ink, s.width.to_bits(), s.dashed))
+        }
+        _ => None,
+    }
+}
+
+/// The shapes, a run of lines drawn alike as one `<path>`. A chain of links is drawn link by
+/// link as outline then fill; such a run of pairs becomes two paths, every outline and then
+/// every fill, so the links read as one bar with the joints' circles on it.
+fn shapes(out: &mut String, items: &[Item]) {
+    let mut i = 0;
+    while i < items.len() {
+        let (Some(a), b) = (line_style(&items[i]), items.get(i + 1).and_then(line_style)) else {
+            item(out, &items[i]);
+            i += 1;
+            continue;
+        };
+        let alike = |start: usize, style| items.get(start).and_then(line_style) == Some(style);
+        let pairs = b.map_or(0, |b| {
+            (0..)
+                .take_while(|k| alike(i + 2 * k, a) && alike(i + 2 * k + 1, b))
+                .count()
+        });
+        if pairs >= 2 {
+            let run = &items[i..i + 2 * pairs];
+            merged(out, run.iter().step_by(2));
+            merged(out, run.iter().skip(1).step_by(2));
+            i += 2 * pairs;
+            continue;
+        }
+        let singles = (i..).take_while(|&k| alike(k, a)).count();
+        merged(out, items[i..i + singles].iter());
+        i += singles;
+    }
+}
+
+/// Lines of one look as one `<path>` (one line as a `<polyline>`).
+fn merged<'a>(out: &mut String, lines: impl Iterator<Item = &'a Item>) {
+    let strokes: Vec<&Stroke> = lines
+        .filter_map(|i| match i {
+            Item::Stroke(s) => Some(s),
+            _ => None,
+        })
+        .collect();
+    let [first, ..] = strokes[..] else {
+        return;
+    };
+    if strokes.len() == 1 {
+        stroke(out, first);
+        return;
+    }
+    let mut d = String::new();
+    for s in &strokes {
+        for (k, p) in s.points.iter().enumerate() {
+            d.push(if k == 0 { 'M' } else { 'L' });
+            let _ = write!(d, "{},{}", coarse(p[0]), coarse(p[1]));
+        }
+    }
+    let dash = if first.dashed {
+        " stroke-dasharray=\"4 3\""
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        out,
+        "<path d=\"{d}\" stroke=\"{}\" stroke-width=\"{}\"{dash}/>",
+        color(first.ink),
+        num(first.width)
+    );
 }
 
 fn stroke(out: &mut String, s: &Stroke) {
@@ -113,9 +199,9 @@ fn item(out: &mut String, item: &Item) {
             let _ = writeln!(
                 out,
                 "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"1.2\"/>",
-                num(center[0]),
-                num(center[1]),
-                num(*radius),
+                coarse(center[0]),
+                coarse(center[1]),
+                coarse(*radius),
                 color(*fill),
                 color(*ink)
             );
@@ -124,8 +210,8 @@ fn item(out: &mut String, item: &Item) {
             let _ = writeln!(
                 out,
                 "<text x=\"{}\" y=\"{}\" fill=\"{}\">{}</text>",
-                num(at[0]),
-                num(at[1] + 4.5),
+                coarse(at[0]),
+                coarse(at[1] + 4.5),
                 color(*ink),
                 label_spans(label)
             );
@@ -157,9 +243,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         num(picture.height)
     );
     out.push_str("<g class=\"shapes\" fill=\"none\">\n");
-    for i in &picture.items {
-        item(&mut out, i);
-    }
+    shapes(&mut out, &picture.items);
     // Every point's circle has the same outline, given once.
     out.push_str("</g>\n<g class=\"points\" stroke=\"#222222\" stroke-width=\"1.2\">\n");
     for m in &picture.marks {
@@ -179,11 +263,10 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         if m.role == Role::Center {
             // The quartered circle of a mass center.
             let (x, y) = (m.at[0], m.at[1]);
+            // After `z` the pen is back at the centre: the second quarter starts `m0 0`.
             let _ = writeln!(
                 out,
-                "<path d=\"M{} {} h4.5 a4.5 4.5 0 0 0 -4.5 -4.5 z M{} {} h-4.5 a4.5 4.5 0 0 0 4.5 4.5 z\" fill=\"#222222\" stroke=\"none\"/>",
-                num(x),
-                num(y),
+                "<path d=\"M{},{}h4.5a4.5 4.5 0 0 0-4.5-4.5zm0 0h-4.5a4.5 4.5 0 0 0 4.5 4.5z\" fill=\"#222222\" stroke=\"none\"/>",
                 num(x),
                 num(y)
             );
@@ -257,4 +340,47 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     }
     out.push_str("</g>\n</svg>\n");
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(points: &[P2], ink: Ink, width: f64) -> Item {
+        Item::Stroke(Stroke {
+            points: points.to_vec(),
+            closed: false,
+            width,
+            ink,
+            fill: None,
+            dashed: false,
+        })
+    }
+
+    #[test]
+    fn links_drawn_outline_then_fill_become_two_paths() {
+        let (a, b, c) = ([0.0, 0.0], [10.0, 0.0], [10.04, 5.26]);
+        let items = [
+            line(&[a, b], Ink::Black, 7.0),
+            line(&[a, b], Ink::Body, 4.6),
+            line(&[b, c], Ink::Black, 7.0),
+            line(&[b, c], Ink::Body, 4.6),
+        ];
+        let mut out = String::new();
+        shapes(&mut out, &items);
+        // Every outline under every fill, each coordinate to a tenth.
+        let outline = format!(
+            "<path d=\"M0,0L10,0M10,0L10,5.3\" stroke=\"{}\" stroke-width=\"7\"/>\n",
+            color(Ink::Black)
+        );
+        let fill = format!(
+            "<path d=\"M0,0L10,0M10,0L10,5.3\" stroke=\"{}\" stroke-width=\"4.6\"/>\n",
+            color(Ink::Body)
+        );
+        assert_eq!(out, format!("{outline}{fill}"));
+        // One link alone stays a polyline.
+        let mut one = String::new();
+        shapes(&mut one, &items[..2]);
+        assert_eq!(one.matches("<polyline").count(), 2, "{one}");
+    }
 }
