@@ -174,10 +174,14 @@ fn a_wall_spring_reads_as_minus_k_x() {
 fn indices_are_sorted_as_a_reader_counts() {
     let markdown = explain("validation/ten-link-chain", "markdown");
     // By hand: the last link turns at the sum of all ten relative rates, q1' to q10', a run
-    // a textbook writes by its ends; the third at q1' + q2' + q3', written out.
+    // a textbook writes by its ends; the third at q1' + q2' + q3', written out. Each with its
+    // angular acceleration on the same line, as a textbook sets two short results.
+    let alpha = |k: usize, rates: &str| {
+        format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{\\mathrm{{link}}_{{{k}}}}} = \\left({rates}\\right) \\hat{{\\mathbf{{z}}}}_{{\\mathrm{{link}}_{{{k}}}}}")
+    };
     for expected in [
-        "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{10}} = \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{10}\\right) \\hat{\\mathbf{z}}_{\\mathrm{link}_{10}}",
-        "{}^{N}\\boldsymbol{\\omega}^{\\mathrm{link}_{3}} = \\left(\\dot{q}_{1} + \\dot{q}_{2} + \\dot{q}_{3}\\right) \\hat{\\mathbf{z}}_{\\mathrm{link}_{3}}",
+        format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{\\mathrm{{link}}_{{10}}}} = \\left(\\dot{{q}}_{{1}} + \\cdots + \\dot{{q}}_{{10}}\\right) \\hat{{\\mathbf{{z}}}}_{{\\mathrm{{link}}_{{10}}}}, \\qquad {}", alpha(10, "\\ddot{q}_{1} + \\cdots + \\ddot{q}_{10}")),
+        format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{\\mathrm{{link}}_{{3}}}} = \\left(\\dot{{q}}_{{1}} + \\dot{{q}}_{{2}} + \\dot{{q}}_{{3}}\\right) \\hat{{\\mathbf{{z}}}}_{{\\mathrm{{link}}_{{3}}}}, \\qquad {}", alpha(3, "\\ddot{q}_{1} + \\ddot{q}_{2} + \\ddot{q}_{3}")),
     ] {
         assert!(
             markdown.lines().any(|l| l.trim() == expected),
@@ -204,7 +208,7 @@ fn indices_are_sorted_as_a_reader_counts() {
 #[test]
 fn a_long_equation_is_shown_with_the_matrix_entries_by_name() {
     // A row of A x = b for ten coordinates, every coefficient nonzero: too long to show
-    // whole, it is shown by the names of its entries.
+    // whole, it is shown by the names of its entries, the first two and the last.
     let ten = explain("validation/ten-link-chain", "markdown");
     let by_name: Vec<String> = simplified_equations(&ten)
         .into_iter()
@@ -213,10 +217,8 @@ fn a_long_equation_is_shown_with_the_matrix_entries_by_name() {
     assert_eq!(by_name.len(), 10);
     for e in by_name {
         let i = &e[3..e.find(',').unwrap_or(3)];
-        let expected = (1..=10)
-            .map(|j| format!("A_{{{i},{j}}} \\ddot{{q}}_{{{j}}}"))
-            .collect::<Vec<_>>()
-            .join(" + ");
+        let term = |j: usize| format!("A_{{{i},{j}}} \\ddot{{q}}_{{{j}}}");
+        let expected = format!("{} + {} + \\cdots + {}", term(1), term(2), term(10));
         assert_eq!(e, format!("{expected} = b_{{{i}}}"));
     }
     assert!(ten.contains("With the coefficients of the matrix form below:"));

@@ -49,16 +49,20 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
                 &inertia.acceleration[body.0],
                 body,
             );
-            Kinematics {
-                body: name.to_string(),
-                omega_tex: format!(
+            let (omega_tex, alpha_tex) = one_line_if_short(
+                format!(
                     "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
                     shorter(&state.omega, &state.omega_named, body)
                 ),
-                alpha_tex: format!(
+                format!(
                     "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
                     shorter(&state.alpha, &inertia.alpha[body.0], body)
                 ),
+            );
+            Kinematics {
+                body: name.to_string(),
+                omega_tex,
+                alpha_tex,
                 velocity_tex: format!(
                     "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
                     from_parent(model, body, Motion::Velocity, direct_velocity)
@@ -70,6 +74,19 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
             }
         })
         .collect()
+}
+
+/// ω and α in one display, `ω = …, α = …`, when together they fit most of a line, as a
+/// textbook sets a pair of short results; else each in its own (α's then empty here).
+fn one_line_if_short(omega: String, alpha: String) -> (String, String) {
+    const MOST_OF_A_LINE: usize = 60;
+    if super::prepare::printed_width(&omega) + super::prepare::printed_width(&alpha)
+        <= MOST_OF_A_LINE
+    {
+        (format!("{omega}, \\qquad {alpha}"), String::new())
+    } else {
+        (omega, alpha)
+    }
 }
 
 /// The mass centre's velocity as `Σ v_r q̇_r`, with the partial velocities named in its

@@ -20,10 +20,14 @@ pub fn coefficient_form(derivation: &Derivation, i: usize) -> String {
         .filter(|(_, (a, _))| !a.is_zero())
         .map(|(j, (_, x))| format!("A_{{{},{}}} {}", i + 1, j + 1, latex(&Expr::sym(x.clone()))))
         .collect();
-    let left = if terms.is_empty() {
-        "0".to_string()
-    } else {
-        terms.join(" + ")
+    // A long row by its first two terms and its last, as a textbook writes row i of A x.
+    const MOST_TERMS: usize = 4;
+    let left = match terms.as_slice() {
+        [] => "0".to_string(),
+        [first, second, .., last] if terms.len() > MOST_TERMS => {
+            format!("{first} + {second} + \\cdots + {last}")
+        }
+        _ => terms.join(" + "),
     };
     format!("{left} = b_{{{}}}", i + 1)
 }
