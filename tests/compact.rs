@@ -455,3 +455,16 @@ fn a_reaction_acts_at_its_joint_by_name() {
     // Gravity acts at each link's mass centre, named as such (link5* alone on its own).
     assert!(markdown.contains("| distance: gravity on link5 | $-g m \\hat{\\mathbf{n}}_{y}$ | $\\text{at } \\mathrm{link}_{5}^*$ |"));
 }
+
+#[test]
+fn the_bicycles_front_wheel_lean_is_named_once() {
+    let markdown = explain("validation/whipple-bicycle", "markdown");
+    // By hand: the front wheel's centre sits r_F above its contact along the part of the
+    // ground normal in the wheel's plane, n − (n·f̂_y) f̂_y, of length
+    // √(C₃₁² + C₃₃²) (the cosines of N.z with F.x and F.z): named σ_F, the contact's
+    // height term is r_F σ_F, and the root is written once, in its definition.
+    assert!(markdown
+        .contains("- $\\sigma_{F} = \\sqrt{{{}^{N}C^{F}_{31}}^{2} + {{}^{N}C^{F}_{33}}^{2}}$"));
+    assert!(markdown.contains("- r_{F} \\sigma_{F} + "));
+    assert_eq!(markdown.matches("\\sqrt").count(), 1);
+}

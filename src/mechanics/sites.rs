@@ -168,6 +168,23 @@ pub struct Contact {
     pub tilt: Expr,
 }
 
+/// |n − (n·â)â|, the cosine of the wheel's lean from the normal, named σ_B where it is a
+/// root of a sum (the bicycle's √(C₃₁² + C₃₂²)), which would otherwise be written out in
+/// every term of the contact's velocity. A root of one square (the coin's √(cos²θ)) stays,
+/// as the worked solution writes it as cos θ.
+fn tilt_named(body: &str, square: Expr) -> Expr {
+    let length = sqrt(square.clone());
+    if crate::symbolic::simplify(&square).terms().len() < 2 {
+        return length;
+    }
+    Expr::named(
+        &format!("{body}.tilt"),
+        &format!("\\sigma_{{{}}}", crate::symbolic::print::latex_name(body)),
+        &format!("length of the normal's part in the plane of {body}: the cosine of its lean"),
+        length,
+    )
+}
+
 /// The site of rolling contact `k` (before the normal is perhaps dropped) and its geometry.
 ///
 /// # Errors
@@ -224,7 +241,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         (n_in_body.clone(), Expr::one())
     } else {
         let w: Components = std::array::from_fn(|i| &n_in_body[i] - &(&n_dot_a * &a[i]));
-        let length = sqrt(dot3(&w, &w));
+        let length = tilt_named(&model.problem.body_name(body).to_string(), dot3(&w, &w));
         let inverse = pow(length.clone(), Expr::int(-1));
         (std::array::from_fn(|i| &w[i] * &inverse), length)
     };
