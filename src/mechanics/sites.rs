@@ -241,7 +241,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         (n_in_body.clone(), Expr::one())
     } else {
         let w: Components = std::array::from_fn(|i| &n_in_body[i] - &(&n_dot_a * &a[i]));
-        let length = tilt_named(&model.problem.body_name(body).to_string(), dot3(&w, &w));
+        let length = tilt_named(model.problem.body_name(body), dot3(&w, &w));
         let inverse = pow(length.clone(), Expr::int(-1));
         (std::array::from_fn(|i| &w[i] * &inverse), length)
     };
