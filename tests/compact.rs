@@ -468,3 +468,17 @@ fn the_bicycles_front_wheel_lean_is_named_once() {
     assert!(markdown.contains("- r_{F} \\sigma_{F} + "));
     assert_eq!(markdown.matches("\\sqrt").count(), 1);
 }
+
+#[test]
+fn a_long_chain_of_rotations_is_composed_by_name() {
+    let markdown = explain("validation/all-joints-3d", "markdown");
+    // By hand, E on a z-x-y spherical joint: ᴰC^E = R_z(qE1) R_x(qE2) R_y(qE3), whose first
+    // entry is c₁c₃ − s₁s₂s₃; and ᴺC^E = ᴺC^D ᴰC^E entry by entry, three products of names
+    // (ᴺC^D₁₂ = −sin(qA + qC) cos qD1 and ᴰC^E₃₁ = −sin qE3 cos qE2, one term each, unnamed).
+    assert!(markdown.contains(
+        "- ${}^{D}C^{E}_{11} = \\cos(q_{E1}) \\cos(q_{E3}) - \\sin(q_{E1}) \\sin(q_{E2}) \\sin(q_{E3})$"
+    ));
+    assert!(markdown.contains(
+        "- ${}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} s_{q_{A},q_{C}} c_{q_{D1}} - {}^{N}C^{D}_{13} s_{q_{E3}} c_{q_{E2}}$"
+    ));
+}

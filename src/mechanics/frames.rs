@@ -211,11 +211,22 @@ impl Frames {
         let Some(parent) = self.frames[from.0].parent else {
             return transpose(&self.dcm(from, to));
         };
-        let product = matmul(&self.dcm(to, parent), &self.dcm(parent, from));
+        // ᴺC^E = ᴺC^D ᴰC^E with both factors by name, as a textbook composes rotations:
+        // each entry is then three products of names, not the factors multiplied out.
+        let product = matmul(
+            &self.named(self.dcm(to, parent).as_ref(), to, parent),
+            &self.named(self.dcm(parent, from).as_ref(), parent, from),
+        );
+        self.named(&product, to, from)
+    }
+
+    /// The matrix `to <- from` with every entry of more than one term a named direction
+    /// cosine, `ᴺC^{B3}_{12}` (entries already names stay as they are).
+    fn named(&self, matrix: &Matrix, to: BodyId, from: BodyId) -> Matrix {
         let (to_name, from_name) = (self.display_name(to), self.display_name(from));
         std::array::from_fn(|i| {
             std::array::from_fn(|j| {
-                let value = &product[i][j];
+                let value = &matrix[i][j];
                 if value.terms().len() < 2 {
                     return value.clone();
                 }
