@@ -22,12 +22,18 @@ fn explain(name: &str, format: &str) -> String {
     String::from_utf8(out.stdout).expect("UTF-8")
 }
 
-/// The simplified equations (step 5) of a Markdown solution, one per entry, without `= 0`.
+/// The simplified equations (step 5) of a Markdown solution, one per entry, without `= 0`
+/// (a row formed already simplified is written once).
 fn simplified_equations(markdown: &str) -> Vec<String> {
     let lines: Vec<&str> = markdown.lines().collect();
     let mut out = Vec::new();
     for (i, line) in lines.iter().enumerate() {
-        if line.starts_with("Simplified") || line.starts_with("With the coefficients") {
+        let introduced = [
+            "Simplified",
+            "With the coefficients",
+            "As formed, already simplified",
+        ];
+        if introduced.iter().any(|s| line.starts_with(s)) {
             let body = lines[i + 1..]
                 .iter()
                 .skip_while(|l| l.trim() == "$$" || l.trim().is_empty())
@@ -481,4 +487,13 @@ fn a_long_chain_of_rotations_is_composed_by_name() {
     assert!(markdown.contains(
         "- ${}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} s_{q_{A},q_{C}} c_{q_{D1}} - {}^{N}C^{D}_{13} s_{q_{E3}} c_{q_{E2}}$"
     ));
+}
+
+#[test]
+fn a_row_formed_already_simplified_is_written_once() {
+    let markdown = explain("two-mass-spring-damper", "markdown");
+    // Cart A along N.y, by hand: the track's reaction holds its weight, F_y - m1 g = 0, as
+    // formed; written once, not again as "simplified".
+    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAs formed, already simplified:\n\n$$\nF^{\\mathrm{trackA}}_{y} - g m_{1} = 0\n$$\n\n**4.";
+    assert!(markdown.contains(row), "row 3 is not written once");
 }

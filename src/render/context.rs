@@ -317,6 +317,10 @@ pub struct Equation {
     /// What introduces the simplified equation when it is not `Simplified:` (plain text;
     /// may be empty).
     pub simplified_note: String,
+    /// The simplified equation is written with the names of A's and b's entries, which the
+    /// matrix form then lists.
+    #[serde(skip)]
+    pub by_name: bool,
     /// Kane's rows: the generalized active force, e.g. `F_{1} = -m g L \sin(q_{1})`
     /// (empty for the other methods; then `grouped_tex` shows the row as formed).
     pub active_tex: String,

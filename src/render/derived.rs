@@ -44,11 +44,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .map(|row| equation_view(derivation, row))
             .collect();
         // The matrix is listed entry by entry whenever an equation refers to its entries.
-        let by_name: Vec<bool> = solution
-            .equations
-            .iter()
-            .map(|e| !e.simplified_note.is_empty())
-            .collect();
+        let by_name: Vec<bool> = solution.equations.iter().map(|e| e.by_name).collect();
         let use_shown = uses_shown(derivation);
         let sign = initial_sign(&derivation.model);
         let shown = |e: &Expr| {
@@ -434,12 +430,14 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         latex_collected(&shown(&simplify(&row.expression)))
     );
     let mut simplified_note = String::new();
+    let mut by_name = false;
     if simplified_tex.len() > LONG_EQUATION {
         // Too long to read: the same row with the coefficients of the matrix form by name.
         let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
         if let Some(i) = index {
             simplified_tex = coefficient_form(derivation, i);
             simplified_note = "With the coefficients of the matrix form below:".into();
+            by_name = true;
         }
     }
     if grouped_tex.len() > LONG_EQUATION {
@@ -485,12 +483,18 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             )
         };
     }
+    if grouped_tex == simplified_tex && simplified_note.is_empty() {
+        // Formed already in its simplest form: written once.
+        grouped_tex.clear();
+        simplified_note = "As formed, already simplified:".into();
+    }
     EquationView {
         label,
         label_tex,
         grouped_tex,
         simplified_tex,
         simplified_note,
+        by_name,
         active_tex,
         inertia_tex,
     }
