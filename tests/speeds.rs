@@ -88,6 +88,14 @@ fn agrees_with_the_rates(with: &Problem, without: &Problem) {
 
 const TORQUE_FREE: &str = "torque-free-body-speeds";
 
+/// `e` with every named quantity replaced by its definition, nested ones too.
+fn written_out(e: &Expr) -> Expr {
+    mbd_tutor::symbolic::subst::substitute(e, &|s| match s {
+        Symbol::Defined(d) => Some(written_out(d.value())),
+        _ => None,
+    })
+}
+
 fn speed(name: &str, order: u8) -> Expr {
     Expr::sym(Symbol::Speed(name.into(), order))
 }
@@ -106,8 +114,9 @@ fn torque_free_body_with_body_frame_speeds_gives_eulers_equations() {
     });
     assert_eq!(derivation.rows.len(), 3);
     for (row, expected) in derivation.rows.iter().zip(&euler) {
+        // The rows for the numbers name the inertia torque's rest, T = I·α̃ + ω × I·ω.
         assert!(
-            simplify(&(&row.expression - expected)).is_zero(),
+            simplify(&(&written_out(&row.expression) - expected)).is_zero(),
             "Kane's row {} is not Euler's equation {}",
             row.expression,
             expected

@@ -4,7 +4,7 @@
 use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::joints::ComponentKind;
 use crate::mechanics::vector::Components;
-use crate::mechanics::{Model, Vector};
+use crate::mechanics::{Form, Model, Vector};
 use crate::plan::forces::{
     is_joint_load, joint_load_generalized_forces, Action, ActionKind, Category, Source,
 };
@@ -109,6 +109,15 @@ pub fn equations(
                 continue;
             }
             let term = match &action.kind {
+                // For the numbers, a force at a mass centre dots the centre's named partial
+                // velocity, three products, instead of the lever arms of every joint inboard.
+                ActionKind::Force { offset, force }
+                    if inertia.form == Form::Numeric
+                        && !partial.center_own[action.body.0].is_empty()
+                        && *offset == model.bodies[action.body.0].center_offset =>
+                {
+                    force.dot(&partial.center_own[action.body.0][r], frames)
+                }
                 ActionKind::Force { offset, force } => {
                     force.dot(&velocity_of(action.body, offset), frames)
                 }

@@ -29,6 +29,8 @@ pub struct Inertia {
     /// Whether a body's mass-centre acceleration is written with named parts. Indexed by
     /// body id.
     pub compact: Vec<bool>,
+    /// The form it is written for.
+    pub form: Form,
     /// Inertia torques dotted with a direction so far: a torque is long, and every free
     /// body that holds its body dots it with the same directions again.
     torque_along: RefCell<Vec<(BodyId, Vector, Expr)>>,
@@ -116,9 +118,19 @@ impl Inertia {
             let w = state.omega_named.components_in(body, &model.frames);
             let a = alphas[index].clone();
             let iw = apply(&state.inertia, &w);
-            let ia = apply(&state.inertia, &a);
             let gyro = crate::mechanics::vector::cross3(&w, &iw);
-            let t: Components = std::array::from_fn(|i| -(&ia[i] + &gyro[i]));
+            let t: Components = if form == Form::Numeric && !model.is_planar() {
+                torque_with_named_rest(
+                    &state.inertia,
+                    &a,
+                    &gyro,
+                    &accelerations,
+                    model.frames.name(body),
+                )
+            } else {
+                let ia = apply(&state.inertia, &a);
+                std::array::from_fn(|i| -(&ia[i] + &gyro[i]))
+            };
             torque.push(Vector::new(body, t));
             alpha.push(Vector::new(body, a));
         }
@@ -128,6 +140,7 @@ impl Inertia {
             acceleration,
             alpha,
             compact,
+            form,
             torque_along: RefCell::default(),
         }
     }
@@ -384,4 +397,52 @@ pub fn unit_direction(model: &Model, frame: BodyId, axis: usize) -> Direction {
         latex: crate::symbolic::print::latex_unit_vector(name, axis as u8),
         vector: Vector::unit(frame, axis),
     }
+}
+
+/// The inertia torque −(I·α + ω × I·ω) with what does not multiply a q̈ named, component by
+/// component: T^k = I·α̃ + ω × I·ω. Every Kane row and every moment then takes it as three
+/// products, ω_r · T, where multiplied out against ω_r the gyroscopic part alone is some
+/// thirty monomials of the ω components for each body and row. For the numbers only.
+fn torque_with_named_rest(
+    inertia: &crate::mechanics::frames::Matrix,
+    alpha: &Components,
+    gyro: &Components,
+    accelerations: &[Symbol],
+    body: &str,
+) -> Components {
+    let split: Option<Vec<(Vec<Expr>, Expr)>> = alpha
+        .iter()
+        .map(|c| crate::symbolic::linear::linear_split(c, accelerations).ok())
+        .collect();
+    let Some(split) = split else {
+        let ia = apply(inertia, alpha);
+        return std::array::from_fn(|i| -(&ia[i] + &gyro[i]));
+    };
+    let rest: Components = std::array::from_fn(|i| split[i].1.clone());
+    let with_q: Components = std::array::from_fn(|i| {
+        add(split[i]
+            .0
+            .iter()
+            .zip(accelerations)
+            .map(|(c, q)| c * &Expr::sym(q.clone())))
+    });
+    let (i_with_q, i_rest) = (apply(inertia, &with_q), apply(inertia, &rest));
+    std::array::from_fn(|axis| {
+        let value = &i_rest[axis] + &gyro[axis];
+        let axis_name = ["x", "y", "z"][axis];
+        let named = if value.terms().len() < 2 {
+            value
+        } else {
+            Expr::named(
+                &format!("{body}.T.{axis_name}"),
+                &format!(
+                    "T^{{{}}}_{{{axis_name}}}",
+                    crate::symbolic::print::latex_name(body)
+                ),
+                &format!("inertia torque of {body} without the q'', along {body}.{axis_name}"),
+                value,
+            )
+        };
+        -(&i_with_q[axis] + &named)
+    })
 }
