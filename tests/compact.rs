@@ -497,3 +497,34 @@ fn a_row_formed_already_simplified_is_written_once() {
     let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAs formed, already simplified:\n\n$$\nF^{\\mathrm{trackA}}_{y} - g m_{1} = 0\n$$\n\n**4.";
     assert!(markdown.contains(row), "row 3 is not written once");
 }
+
+#[test]
+fn a_group_of_links_is_named_by_its_ends_where_the_pictures_are_not_named() {
+    let markdown = explain("validation/ten-link-chain", "markdown");
+    // Step 5 heads the row of links 2 to 10 about P2 by the ends of the run, and its free
+    // body's forces are given for a link k of {link2, …, link10}.
+    assert!(markdown.contains(
+        "**2. $\\mathrm{link}_{2} + \\cdots + \\mathrm{link}_{10}\\colon \\sum \\mathbf{M}_{P_{2}} \\cdot \\hat{\\mathbf{n}}_{z}$**"
+    ));
+    assert!(markdown.contains("k \\in \\{\\mathrm{link}_{2}, \\ldots, \\mathrm{link}_{10}\\}"));
+    // The plan's table and step 2's headings name every link: the pictures are named so.
+    assert!(markdown.contains(
+        "### Free body $\\mathrm{link}_{2} + \\mathrm{link}_{3} + \\mathrm{link}_{4} + "
+    ));
+    assert!(markdown.contains(
+        "| $\\mathrm{link}_{2} + \\mathrm{link}_{3} + \\mathrm{link}_{4} + \\mathrm{link}_{5} + "
+    ));
+}
+
+#[test]
+fn the_latex_handout_states_the_pictures_legend_once() {
+    let tex = explain("validation/ten-link-chain", "latex");
+    // Ten free-body pictures; the legend once, in step 2's text, not under each of them.
+    assert_eq!(tex.matches("\\subsection*{Free body").count(), 10);
+    assert_eq!(tex.matches("Not to scale").count(), 1);
+    let step2 = tex.find("Step 2. Free bodies").expect("step 2");
+    assert!(tex.find("Not to scale").is_some_and(|i| i > step2));
+    // The SVG pictures keep it: a picture read alone must say what its arrows mean.
+    let markdown = explain("validation/ten-link-chain", "markdown");
+    assert_eq!(markdown.matches(">Not to scale").count(), 10);
+}

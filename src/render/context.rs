@@ -57,6 +57,9 @@ pub struct Solution {
     pub configuration: Figure,
     /// Step 2: the free bodies the planner uses.
     pub free_bodies: Vec<FreeBody>,
+    /// Step 2: how the free-body pictures are drawn, said once where the pictures leave it
+    /// out (LaTeX); empty when nothing is drawn.
+    pub free_body_legend: String,
     /// Step 2: the quantities the forces are written with (a spring's length `ℓ₁`, its
     /// unit vector `û₁`, its rate `ℓ̇₁`), each defined once; the later steps use them too.
     pub force_definitions: Vec<Named>,

@@ -15,7 +15,7 @@ use crate::plan::rows::{Equation, Sum};
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::{as_shown, named_definitions};
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Definition, Expr, Node, Symbol};
@@ -111,6 +111,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         Some(&initial.accelerations),
         crate::render::draw::View::Isometric,
     );
+    if drawings.len() > 1 {
+        solution.free_body_legend = crate::render::draw::FREE_BODY_LEGEND.into();
+    }
     for drawing in &drawings {
         if drawing.free_body.is_empty() {
             solution.configuration = drawing.figure();
@@ -207,12 +210,30 @@ pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
 
 /// A free body's bodies in LaTeX, `A + B`.
 pub(super) fn bodies_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
+    bodies_latex(derivation, bodies).join(" + ")
+}
+
+/// A free body's bodies in LaTeX, a run of four or more links by its ends,
+/// `\\mathrm{link}_{2} + \\cdots + \\mathrm{link}_{10}`, as a heading in step 5 names it.
+/// (The plan's table and step 2 name every body: the pictures' names are those.)
+pub(super) fn bodies_tex_short(
+    derivation: &Derivation,
+    bodies: &[crate::problem::BodyId],
+) -> String {
+    list_by_runs(&bodies_latex(derivation, bodies), " + ", "\\cdots")
+}
+
+/// A free body's bodies as a set's members, `\\mathrm{link}_{2}, \\ldots, \\mathrm{link}_{10}`.
+pub(super) fn bodies_set_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
+    list_by_runs(&bodies_latex(derivation, bodies), ", ", "\\ldots")
+}
+
+fn bodies_latex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> Vec<String> {
     let problem = derivation.model.problem;
     bodies
         .iter()
         .map(|b| latex_name(problem.body_name(*b)))
-        .collect::<Vec<_>>()
-        .join(" + ")
+        .collect()
 }
 
 pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {

@@ -123,7 +123,7 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
     let model = &derivation.model;
     let every = format!(
         "k \\in \\{{{}\\}}",
-        bodies_tex(derivation, set).replace(" + ", ", ")
+        super::derived::bodies_set_tex(derivation, set)
     );
     let at_center = format!("\\text{{at }} k^*,\\; {every}");
     if let Some(g) = &model.problem.gravity {

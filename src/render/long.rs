@@ -3,7 +3,7 @@
 
 use crate::equations::Derivation;
 use crate::plan::rows::{Equation, Sum};
-use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::print::{latex, latex_name, list_by_runs};
 use crate::symbolic::{Expr, Symbol};
 
 /// The most characters of LaTeX an equation of step 5 is shown with; a longer one is shown
@@ -78,7 +78,10 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
     // One body: its own letter; several: the sum over `k` in the free body.
     let (sum, k) = if many {
         (
-            format!("\\sum_{{k \\in \\{{{}\\}}}} ", bodies.join(", ")),
+            format!(
+                "\\sum_{{k \\in \\{{{}\\}}}} ",
+                list_by_runs(&bodies, ", ", "\\ldots")
+            ),
             "k".to_string(),
         )
     } else {

@@ -59,7 +59,7 @@ pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
         Sum::Generalized { .. } => sum_tex(derivation, &row.sum),
         _ => format!(
             "{}\\colon {}{direction}",
-            super::derived::bodies_tex(derivation, &row.free_body),
+            super::derived::bodies_tex_short(derivation, &row.free_body),
             sum_tex(derivation, &row.sum)
         ),
     }

@@ -44,6 +44,7 @@ pub fn sample() -> Solution {
         constraints: Vec::new(),
         constraint_notes: Vec::new(),
         free_bodies: free_bodies(),
+        free_body_legend: String::new(),
         force_definitions: Vec::new(),
         kinematic_definitions: Vec::new(),
         abbreviations: Vec::new(),

@@ -229,7 +229,12 @@ impl Printer {
             }
             out.push_str(body);
             let run = if self.latex {
-                indexed_run(&signed[i..])
+                // Only added terms make a run.
+                indexed_run(
+                    signed[i..]
+                        .iter()
+                        .map(|(negative, body)| (!negative).then_some(body.as_str())),
+                )
             } else {
                 1
             };
@@ -421,30 +426,47 @@ impl Printer {
     }
 }
 
-/// How many terms from the first are one symbol with consecutive indices, all added
-/// (`q̇₁ + q̇₂ + … + q̇₉`), when at least [`SHORTEST_RUN`]; else 1. A textbook writes such a
-/// run by its ends, q̇₁ + ⋯ + q̇₉.
-fn indexed_run(terms: &[(bool, String)]) -> usize {
+/// How many items from the first are one symbol with consecutive indices
+/// (`\\dot{q}_{1}`, `\\dot{q}_{2}`, …) when at least four; else 1 (`None` is no symbol). A
+/// textbook writes such a run by its ends: q̇₁ + ⋯ + q̇₉, {link₂, …, link₁₀}.
+pub(crate) fn indexed_run<'a>(items: impl IntoIterator<Item = Option<&'a str>>) -> usize {
     const SHORTEST_RUN: usize = 4;
-    fn indexed((negative, body): &(bool, String)) -> Option<(&str, u64)> {
-        let (stem, index) = body.rsplit_once("_{")?;
+    fn indexed(text: &str) -> Option<(&str, u64)> {
+        let (stem, index) = text.rsplit_once("_{")?;
         let index: u64 = index.strip_suffix('}')?.parse().ok()?;
-        let one_symbol = !negative && !stem.contains(' ') && !stem.contains("\\frac");
+        let one_symbol = !stem.contains(' ') && !stem.contains("\\frac");
         one_symbol.then_some((stem, index))
     }
-    let Some((stem, first)) = terms.first().and_then(indexed) else {
+    let mut items = items.into_iter();
+    let Some((stem, first)) = items.next().flatten().and_then(indexed) else {
         return 1;
     };
-    let length = terms
-        .iter()
-        .zip(first..)
-        .take_while(|(term, expected)| indexed(term) == Some((stem, *expected)))
+    let length = 1 + items
+        .zip(first + 1..)
+        .take_while(|(item, expected)| item.and_then(indexed) == Some((stem, *expected)))
         .count();
     if length >= SHORTEST_RUN {
         length
     } else {
         1
     }
+}
+
+/// A list written with `separator`, each run of four or more consecutive indexed symbols by
+/// its ends: `\\mathrm{link}_{2}, \\ldots, \\mathrm{link}_{10}`.
+pub fn list_by_runs(items: &[String], separator: &str, ellipsis: &str) -> String {
+    let mut out: Vec<&str> = Vec::new();
+    let mut i = 0;
+    while i < items.len() {
+        let run = indexed_run(items[i..].iter().map(|s| Some(s.as_str())));
+        out.push(&items[i]);
+        if run > 1 {
+            out.push(ellipsis);
+            out.push(&items[i + run - 1]);
+        }
+        i += run;
+    }
+    out.join(separator)
 }
 
 /// A base that already carries a superscript, such as the named direction cosine

@@ -12,6 +12,11 @@ use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::Expr;
 
+/// What every free-body picture's arrows mean.
+pub const FREE_BODY_LEGEND: &str = "Not to scale: every arrow has one length (a longer one \
+     shares its line with another). Known forces point the way they act at this state; \
+     unknown reaction components (red) along their positive directions.";
+
 /// What every picture of one problem shares.
 pub struct Setting<'a, 'm, 'p> {
     /// The derivation whose plan gives the free bodies.
@@ -345,10 +350,7 @@ impl Setting<'_, '_, '_> {
             markers,
             arrows,
             kinetic: Some((body_shapes, kinetic)),
-            legend: "Not to scale: every arrow has one length (a longer one shares its line \
-                     with another). Known forces point the way they act at this state; \
-                     unknown reaction components (red) along their positive directions."
-                .into(),
+            legend: FREE_BODY_LEGEND.into(),
         }
     }
 

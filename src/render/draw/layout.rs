@@ -547,6 +547,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         marks,
         arrows,
         texts,
+        legend: (legend_lines.len(), legend),
     }
 }
 

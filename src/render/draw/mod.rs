@@ -19,6 +19,7 @@ pub mod tikz;
 use crate::equations::Derivation;
 use crate::numeric::format::fixed;
 use crate::problem::BodyId;
+pub use build::FREE_BODY_LEGEND;
 use numbers::{norm, sub, Numbers};
 pub use picture::{Picture, View};
 

@@ -253,4 +253,7 @@ pub struct Picture {
     pub arrows: Vec<DrawnArrow>,
     /// Labels and captions, drawn last.
     pub texts: Vec<Item>,
+    /// The legend under the picture: its lines are the last of `texts`, in a strip this
+    /// high at the bottom. A handout that states it once leaves both out.
+    pub legend: (usize, f64),
 }

@@ -83,8 +83,11 @@ fn item(out: &mut String, item: &Item, unit: f64) {
 
 /// The picture as a `tikzpicture`, scaled to fit the page; needs `tikz` and `amsmath`.
 pub fn export(picture: &Picture) -> String {
+    // The legend is stated once in the handout's text, not under every picture.
+    let (legend_lines, legend_height) = picture.legend;
+    let height = picture.height - legend_height;
     let unit = (PAGE_WIDTH / picture.width)
-        .min(PAGE_HEIGHT / picture.height)
+        .min(PAGE_HEIGHT / height)
         .min(0.75);
     let mut out = String::new();
     let _ = writeln!(
@@ -97,7 +100,7 @@ pub fn export(picture: &Picture) -> String {
         out,
         "\\path[use as bounding box] (0,0) rectangle ({},{});",
         num(picture.width),
-        num(picture.height)
+        num(height)
     );
     for i in &picture.items {
         item(&mut out, i, unit);
@@ -145,7 +148,7 @@ pub fn export(picture: &Picture) -> String {
             let _ = writeln!(out, "\\path[fill={ink}] {};", path(h, true));
         }
     }
-    for t in &picture.texts {
+    for t in &picture.texts[..picture.texts.len().saturating_sub(legend_lines)] {
         item(&mut out, t, unit);
     }
     out.push_str("\\end{tikzpicture}\n");
