@@ -173,6 +173,9 @@ impl Frames {
 
     /// The direction cosine matrix taking components in `from` to components in `to`.
     pub fn dcm(&self, to: BodyId, from: BodyId) -> Rc<Matrix> {
+        // A frame that does not turn against its parent (a slider's) is the parent's
+        // orientation: one matrix and one set of names, ᴬC^E, not ᴮC^E as well.
+        let (to, from) = (self.oriented_as(to), self.oriented_as(from));
         if let Some(m) = self.cache.borrow().get(&(to, from)) {
             return m.clone();
         }
@@ -197,6 +200,19 @@ impl Frames {
         let matrix = Rc::new(matrix);
         self.cache.borrow_mut().insert((to, from), matrix.clone());
         matrix
+    }
+
+    /// The nearest of `frame` and its ancestors that turns against its own parent (or `N`):
+    /// the frames between have the same orientation.
+    fn oriented_as(&self, frame: BodyId) -> BodyId {
+        let mut frame = frame;
+        while let (true, Some(parent)) = (
+            self.frames[frame.0].rotations.is_empty(),
+            self.frames[frame.0].parent,
+        ) {
+            frame = parent;
+        }
+        frame
     }
 
     /// The matrix `to <- from` of a long chain of rotations, as the product of the matrices
