@@ -487,6 +487,10 @@ fn a_long_chain_of_rotations_is_composed_by_name() {
     assert!(markdown.contains(
         "- ${}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} s_{q_{A},q_{C}} c_{q_{D1}} - {}^{N}C^{D}_{13} s_{q_{E3}} c_{q_{E2}}$"
     ));
+    // Step 2's forces on E use its partial angular velocities; for qA and qC, both turns
+    // about parallel z axes, they are the same and written once, for r = qA, qC.
+    assert!(markdown
+        .contains("\\quad (r = q_{A}, q_{C})$: partial angular velocity of E for r, along E.y"));
     // B slides along A.x without turning: B's cosines are A's, named once as ᴬC^E.
     assert!(markdown.contains("{}^{A}C^{E}_{31}"));
     assert!(!markdown.contains("{}^{B}C^{E}"));

@@ -247,7 +247,22 @@ pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
 /// The named quantities the forces use, each with what it stands for.
 pub fn force_definitions(derivation: &Derivation) -> Vec<Named> {
     let components: Vec<Expr> = action_components(derivation).map(as_shown).collect();
-    named_list(named_definitions(&components))
+    let (speeds, plain) = speed_indices(derivation);
+    super::by_speed::merged(named_list(named_definitions(&components)), &speeds, &plain)
+}
+
+/// The speeds as a name's index writes them (`q_{1}`, `\\phi`) and as a note does (`q1`).
+fn speed_indices(derivation: &Derivation) -> (Vec<String>, Vec<String>) {
+    let problem = derivation.model.problem;
+    let coordinates = 0..problem.coordinates.len();
+    let speeds: Vec<String> = coordinates
+        .clone()
+        .map(|i| latex(&problem.coordinate_expr(i, 0)))
+        .collect();
+    let plain: Vec<String> = coordinates
+        .map(|i| problem.coordinates[i].name.clone())
+        .collect();
+    (speeds, plain)
 }
 
 /// The sign an expression has at the initial state, for [`roots_of_squares`].
@@ -380,15 +395,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .into_iter()
         .filter(|d| !forces.contains(d))
         .collect();
-    let problem = derivation.model.problem;
-    let coordinates = 0..problem.coordinates.len();
-    let speeds: Vec<String> = coordinates
-        .clone()
-        .map(|i| latex(&problem.coordinate_expr(i, 0)))
-        .collect();
-    let plain: Vec<String> = coordinates
-        .map(|i| problem.coordinates[i].name.clone())
-        .collect();
+    let (speeds, plain) = speed_indices(derivation);
     let merged = super::by_speed::merged(named_list(used), &speeds, &plain);
     // A definition too long to read is given by what it is; the numbers use the formula.
     merged
