@@ -169,7 +169,7 @@ pub struct Contact {
 }
 
 /// |n − (n·â)â|, the cosine of the wheel's lean from the normal, named σ_B where it is a
-/// root of a sum (the bicycle's √(C₃₁² + C₃₂²)), which would otherwise be written out in
+/// root of a sum (the bicycle's √(C₃₁² + C₃₃²)), which would otherwise be written out in
 /// every term of the contact's velocity. A root of one square (the coin's √(cos²θ)) stays,
 /// as the worked solution writes it as cos θ.
 fn tilt_named(body: &str, square: Expr) -> Expr {

@@ -442,8 +442,11 @@ pub(crate) fn indexed_run<'a>(items: impl IntoIterator<Item = Option<&'a str>>) 
         return 1;
     };
     let length = 1 + items
-        .zip(first + 1..)
-        .take_while(|(item, expected)| item.and_then(indexed) == Some((stem, *expected)))
+        .zip(1u64..)
+        .take_while(|(item, k)| {
+            let expected = first.checked_add(*k).map(|index| (stem, index));
+            expected.is_some() && item.and_then(indexed) == expected
+        })
         .count();
     if length >= SHORTEST_RUN {
         length

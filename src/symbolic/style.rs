@@ -158,7 +158,9 @@ fn consecutive_run<'a>(indices: &[&'a str]) -> Option<(&'a str, &'a str)> {
         .iter()
         .map(|i| i.parse().ok())
         .collect::<Option<_>>()?;
-    let consecutive = numbers.windows(2).all(|w| w[1] == w[0] + 1);
+    let consecutive = numbers
+        .windows(2)
+        .all(|w| w[0].checked_add(1) == Some(w[1]));
     (numbers.len() >= SHORTEST && consecutive).then(|| (indices[0], indices[indices.len() - 1]))
 }
 

@@ -2,7 +2,9 @@
 //! coordinates, arrows of a fixed length and labels placed where they overlap nothing.
 
 use super::numbers::{add, cross, scale, unit, P3};
-use super::picture::{Arc, DrawnArrow, Ink, Item, Mark, Picture, Projection, Stroke, View, P2};
+use super::picture::{
+    Arc, DrawnArrow, Ink, Item, Legend, Mark, Picture, Projection, Stroke, View, P2,
+};
 use super::place::{text_size, Obstacles};
 use super::scene::{Arrow, Label, Role, Scene, Shape};
 
@@ -547,7 +549,10 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         marks,
         arrows,
         texts,
-        legend: (legend_lines.len(), legend),
+        legend: Legend {
+            lines: legend_lines.len(),
+            height: legend,
+        },
     }
 }
 

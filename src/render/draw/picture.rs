@@ -253,7 +253,16 @@ pub struct Picture {
     pub arrows: Vec<DrawnArrow>,
     /// Labels and captions, drawn last.
     pub texts: Vec<Item>,
-    /// The legend under the picture: its lines are the last of `texts`, in a strip this
-    /// high at the bottom. A handout that states it once leaves both out.
-    pub legend: (usize, f64),
+    /// The legend under the picture, which a handout that states it once leaves out.
+    pub legend: Legend,
+}
+
+/// The legend of a picture: its lines are the last of the picture's `texts`, in a strip
+/// at the bottom.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Legend {
+    /// How many of the texts.
+    pub lines: usize,
+    /// The strip's height.
+    pub height: f64,
 }

@@ -84,8 +84,7 @@ fn item(out: &mut String, item: &Item, unit: f64) {
 /// The picture as a `tikzpicture`, scaled to fit the page; needs `tikz` and `amsmath`.
 pub fn export(picture: &Picture) -> String {
     // The legend is stated once in the handout's text, not under every picture.
-    let (legend_lines, legend_height) = picture.legend;
-    let height = picture.height - legend_height;
+    let height = picture.height - picture.legend.height;
     let unit = (PAGE_WIDTH / picture.width)
         .min(PAGE_HEIGHT / height)
         .min(0.75);
@@ -148,7 +147,7 @@ pub fn export(picture: &Picture) -> String {
             let _ = writeln!(out, "\\path[fill={ink}] {};", path(h, true));
         }
     }
-    for t in &picture.texts[..picture.texts.len().saturating_sub(legend_lines)] {
+    for t in &picture.texts[..picture.texts.len().saturating_sub(picture.legend.lines)] {
         item(&mut out, t, unit);
     }
     out.push_str("\\end{tikzpicture}\n");
