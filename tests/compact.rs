@@ -535,3 +535,17 @@ fn the_latex_handout_states_the_pictures_legend_once() {
     let markdown = explain("validation/ten-link-chain", "markdown");
     assert_eq!(markdown.matches(">Not to scale").count(), 10);
 }
+
+#[test]
+fn a_right_hand_side_is_collected_by_the_rates() {
+    let markdown = explain("five-link-chain", "markdown");
+    // b₁ of the five-link chain as step 5 writes an equation: the damper's c q̇₁, then each
+    // square of a link's angular velocity with its coefficient's factor L²m/2 out, gravity
+    // last.
+    assert!(markdown.contains(
+        "- $b_{1} = c \\dot{q}_{1} + \\frac{L^{2} m}{2} \\left(7 s_{2} + 5 s_{23} + 3 s_{234} + s_{2345}\\right) \\dot{q}_{1}^{2} + "
+    ));
+    assert!(markdown.contains(
+        "\\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{5}\\right)^{2} + \\frac{9 L g m}{2} s_{1} + "
+    ));
+}

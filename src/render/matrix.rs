@@ -7,7 +7,7 @@ use super::long::{by_rates, LONG_EQUATION};
 use super::prepare::printed_width;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
-use crate::symbolic::collect::latex_factored;
+use crate::symbolic::collect::{latex_collected, latex_factored};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::Expr;
@@ -116,7 +116,19 @@ pub fn matrix(
         .iter()
         .map(|row| row.iter().map(latex_factored).collect())
         .collect();
-    let b_tex: Vec<String> = b.iter().map(latex_factored).collect();
+    // b collected by the products of rates, each coefficient's factor out, as step 5
+    // writes an equation, when that is shorter.
+    let b_tex: Vec<String> = b
+        .iter()
+        .map(|e| {
+            let (factored, collected) = (latex_factored(e), latex_collected(e));
+            if collected.len() < factored.len() {
+                collected
+            } else {
+                factored
+            }
+        })
+        .collect();
     // In the table a row is labelled by its number: step 5 heads each equation with it.
     let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
     let b_names: Vec<String> = (1..=a.len()).map(|i| format!("b_{{{i}}}")).collect();
