@@ -472,6 +472,9 @@ fn the_bicycles_front_wheel_lean_is_named_once() {
     assert!(markdown
         .contains("- $\\sigma_{F} = \\sqrt{{{}^{N}C^{F}_{31}}^{2} + {{}^{N}C^{F}_{33}}^{2}}$"));
     assert!(markdown.contains("- r_{F} \\sigma_{F} + "));
+    // The contact point's velocity along f̂_x: every term holds r_F C₃₃/σ_F, written once.
+    assert!(markdown
+        .contains("\\frac{r_{F} {}^{N}C^{F}_{33}}{\\sigma_{F}} \\left(\\dot{\\theta}_{F} + "));
     assert_eq!(markdown.matches("\\sqrt").count(), 1);
 }
 

@@ -184,7 +184,20 @@ pub(super) fn vector_tex_by(
 /// A component times its unit vector: a sum in brackets, ±1 left out.
 pub(super) fn component_term(c: &Expr, unit: &str) -> String {
     match c.node() {
-        Node::Add(_) => format!("\\left({}\\right) {unit}", latex(c)),
+        Node::Add(_) => {
+            // A factor every term shares comes out, as a textbook writes (r_F/σ_F)(…) f̂_x.
+            let whole = format!("\\left({}\\right) {unit}", latex(c));
+            let (common, inner) = crate::symbolic::collect::pull_common_factor(c);
+            let trivial = common
+                .as_number()
+                .is_some_and(|n| n.is_one() || std::ops::Neg::neg(n).is_one());
+            let factored = crate::symbolic::collect::factored(&common, &inner, unit);
+            if trivial || factored.len() >= whole.len() {
+                whole
+            } else {
+                factored
+            }
+        }
         _ if c.is_one() => unit.to_string(),
         _ if (-c).is_one() => format!("-{unit}"),
         _ => format!("{} {unit}", latex(c)),

@@ -173,14 +173,15 @@ fn base_and_exponent(f: &Expr) -> (Expr, i64) {
 pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
     let terms = sum.terms();
     let split: Vec<(Number, Expr)> = terms.iter().map(Expr::split_coefficient).collect();
-    // The symbolic factors common to all terms, each to its lowest positive power.
+    // The symbolic factors common to all terms, each to its power nearest zero: a factor
+    // every term multiplies (L², L → L) or every term divides by (1/σ in each → 1/σ).
     let mut common: Vec<(Expr, i64)> = split[0]
         .1
         .factors()
         .iter()
         .filter(|f| !f.is_one())
         .map(base_and_exponent)
-        .filter(|(_, n)| *n > 0)
+        .filter(|(_, n)| *n != 0)
         .collect();
     for (_, rest) in &split[1..] {
         let powers: Vec<(Expr, i64)> = rest.factors().iter().map(base_and_exponent).collect();
@@ -191,7 +192,8 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
                     .iter()
                     .find(|(b, _)| *b == base)
                     .map_or(0, |(_, m)| *m);
-                (m.min(n) > 0).then(|| (base, m.min(n)))
+                let shared = if n > 0 { m.min(n) } else { m.max(n) };
+                (shared != 0 && shared.signum() == n.signum()).then_some((base, shared))
             })
             .collect();
     }
@@ -273,5 +275,18 @@ mod tests {
         let (common, inner) = pull_common_factor(&sum);
         assert_eq!(common, &m * &Expr::ratio(1, 4));
         assert_eq!(inner, &a + &(&b * &Expr::int(3)));
+    }
+
+    #[test]
+    fn a_divisor_of_every_term_is_pulled_out() {
+        // r a/σ + r b/σ² = (r/σ)(a + b/σ); a divisor of only some terms stays inside.
+        let (a, b, r, sigma) = (c("a"), c("b"), c("r"), c("sigma"));
+        let over = |n: i64| crate::symbolic::build::pow(sigma.clone(), Expr::int(-n));
+        let sum = &(&(&r * &a) * &over(1)) + &(&(&r * &b) * &over(2));
+        let (common, inner) = pull_common_factor(&sum);
+        assert_eq!(common, &r * &over(1));
+        assert_eq!(inner, &a + &(&b * &over(1)));
+        let (common, _) = pull_common_factor(&(&(&(&r * &a) * &over(1)) + &(&r * &b)));
+        assert_eq!(common, r);
     }
 }
