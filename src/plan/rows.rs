@@ -128,8 +128,7 @@ impl Inertia {
                     model.frames.name(body),
                 )
             } else {
-                let ia = apply(&state.inertia, &a);
-                std::array::from_fn(|i| -(&ia[i] + &gyro[i]))
+                torque_whole(&state.inertia, &a, &gyro)
             };
             torque.push(Vector::new(body, t));
             alpha.push(Vector::new(body, a));
@@ -399,6 +398,16 @@ pub fn unit_direction(model: &Model, frame: BodyId, axis: usize) -> Direction {
     }
 }
 
+/// The inertia torque −(I·α + ω × I·ω), as the student writes it.
+fn torque_whole(
+    inertia: &crate::mechanics::frames::Matrix,
+    alpha: &Components,
+    gyro: &Components,
+) -> Components {
+    let ia = apply(inertia, alpha);
+    std::array::from_fn(|i| -(&ia[i] + &gyro[i]))
+}
+
 /// The inertia torque −(I·α + ω × I·ω) with what does not multiply a q̈ named, component by
 /// component: T^k = I·α̃ + ω × I·ω. Every Kane row and every moment then takes it as three
 /// products, ω_r · T, where multiplied out against ω_r the gyroscopic part alone is some
@@ -415,8 +424,7 @@ fn torque_with_named_rest(
         .map(|c| crate::symbolic::linear::linear_split(c, accelerations).ok())
         .collect();
     let Some(split) = split else {
-        let ia = apply(inertia, alpha);
-        return std::array::from_fn(|i| -(&ia[i] + &gyro[i]));
+        return torque_whole(inertia, alpha, gyro);
     };
     let rest: Components = std::array::from_fn(|i| split[i].1.clone());
     let with_q: Components = std::array::from_fn(|i| {

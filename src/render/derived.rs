@@ -187,15 +187,9 @@ pub(super) fn component_term(c: &Expr, unit: &str) -> String {
         Node::Add(_) => {
             // A factor every term shares comes out, as a textbook writes (r_F/σ_F)(…) f̂_x.
             let whole = format!("\\left({}\\right) {unit}", latex(c));
-            let (common, inner) = crate::symbolic::collect::pull_common_factor(c);
-            let trivial = common
-                .as_number()
-                .is_some_and(|n| n.is_one() || std::ops::Neg::neg(n).is_one());
-            let factored = crate::symbolic::collect::factored(&common, &inner, unit);
-            if trivial || factored.len() >= whole.len() {
-                whole
-            } else {
-                factored
+            match crate::symbolic::collect::common_factor_out(c, unit) {
+                Some(factored) if factored.len() < whole.len() => factored,
+                _ => whole,
             }
         }
         _ if c.is_one() => unit.to_string(),

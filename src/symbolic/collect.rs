@@ -117,22 +117,22 @@ pub fn latex_collected(e: &Expr) -> String {
 /// when that is shorter; otherwise as it is.
 pub fn latex_factored(e: &Expr) -> String {
     let whole = latex(e);
+    match common_factor_out(e, "") {
+        Some(text) if text.len() < whole.len() => text,
+        _ => whole,
+    }
+}
+
+/// `common (inner) key` when the terms of `e` share a factor other than ±1; else `None`.
+pub fn common_factor_out(e: &Expr, key: &str) -> Option<String> {
     if e.terms().len() < 2 {
-        return whole;
+        return None;
     }
     let (common, inner) = pull_common_factor(e);
-    if common
+    let trivial = common
         .as_number()
-        .is_some_and(|c| c.is_one() || c.neg().is_one())
-    {
-        return whole;
-    }
-    let text = factored(&common, &inner, "");
-    if text.len() < whole.len() {
-        text
-    } else {
-        whole
-    }
+        .is_some_and(|c| c.is_one() || c.neg().is_one());
+    (!trivial).then(|| factored(&common, &inner, key))
 }
 
 /// `common (inner) key`, the sign of `common` in front.
