@@ -22,6 +22,36 @@ fn explain(name: &str, format: &str) -> String {
     String::from_utf8(out.stdout).expect("UTF-8")
 }
 
+/// Whether a "where" list of the Markdown solution defines `definition` (LaTeX, without
+/// `$`) with a note containing `note`: on an entry of its own (`- $d$: note`) or among the
+/// entries of one kind (`- note: $d$; $e$`).
+fn defines(markdown: &str, definition: &str, note: &str) -> bool {
+    let math = format!("${definition}$");
+    markdown
+        .lines()
+        .any(|l| l.starts_with("- ") && l.contains(&math) && l.contains(note))
+}
+
+/// The rows of the table of `A` and `b` by value in a Markdown solution: each row's numbers,
+/// `A`'s then `b`'s.
+fn value_table(markdown: &str) -> Vec<Vec<f64>> {
+    let table = markdown
+        .lines()
+        .find(|l| l.starts_with("\\begin{array}"))
+        .expect("a table of A and b");
+    let body = table.split("\\hline").nth(1).expect("a header");
+    body.trim_end_matches("\\end{array}")
+        .split("\\\\")
+        .filter(|row| !row.trim().is_empty())
+        .map(|row| {
+            row.split(" & ")
+                .skip(1)
+                .map(|x| x.trim().parse().unwrap_or_else(|_| panic!("a number: {x}")))
+                .collect()
+        })
+        .collect()
+}
+
 /// The simplified equations (step 5) of a Markdown solution, one per entry, without `= 0`
 /// (a row formed already simplified is written once).
 fn simplified_equations(markdown: &str) -> Vec<String> {
@@ -121,7 +151,11 @@ fn a_plate_on_two_springs_gives_a_small_handout_written_with_the_lengths() {
         equations[0],
         "-m \\ddot{x} - k_{1} \\hat{u}_{1x} \\left(\\ell_{1} - l_{1}\\right) - k_{2} \\hat{u}_{2x} \\left(\\ell_{2} - l_{2}\\right)"
     );
-    assert!(markdown.contains("- $\\Delta_{1x} = d + x - a \\cos(\\theta) - b \\sin(\\theta)$"));
+    assert!(defines(
+        &markdown,
+        "\\Delta_{1x} = d + x - a \\cos(\\theta) - b \\sin(\\theta)",
+        "of the vector from"
+    ));
     if pdflatex_present() {
         let dir = std::env::temp_dir().join(format!("mbd-tutor-compact-{}", std::process::id()));
         let count = pages(&dir, &tex);
@@ -195,17 +229,24 @@ fn indices_are_sorted_as_a_reader_counts() {
         );
     }
     assert!(!markdown.contains("q_{1} + q_{10}"));
-    // A right-hand side too long to read whole is collected by the squares of the links'
-    // angular velocities (the centripetal terms of a chain), each coefficient named.
-    assert!(markdown.contains(
-        "$b_{1} = B_{1,1} \\, \\dot{q}_{1}^{2} + B_{1,2} \\, \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2} + "
-    ));
+    // Too large to print every entry as a formula, A and b are one table of their values at
+    // the initial state. By hand: the last link about its joint is a rod about its end,
+    // A_{10,10} = -m L²/3 = -1/12 (m = 1, L = 0.5); and A is symmetric, each row the moment
+    // of the links outboard of a joint (the chain's mass matrix, negated).
+    let a = value_table(&markdown);
+    assert_eq!((a.len(), a[0].len()), (10, 11));
+    assert!((a[9][9] + 1.0 / 12.0).abs() < 1e-6, "A_10,10 = {}", a[9][9]);
+    for (i, row) in a.iter().enumerate() {
+        for (j, x) in row.iter().enumerate().take(i) {
+            let mirror = a[j][i];
+            assert!(
+                (x - mirror).abs() <= 1e-5 * x.abs().max(1e-3),
+                "A_{i},{j} = {x} but A_{j},{i} = {mirror}"
+            );
+        }
+    }
     // s_{23} = sin(q2 + q3), ...: the sines of sums of coordinates by their indices, in the
-    // order a reader counts (9, 10), a run of five or more by its ends; the coefficient's
-    // common factor L²m/2 pulled out.
-    assert!(markdown.contains(
-        "$B_{1,1} = \\frac{L^{2} m}{2} \\left(17 s_{2} + 15 s_{23} + 13 s_{234} + 11 s_{2345} + 9 s_{2\\ldots 6} + "
-    ));
+    // order a reader counts (9, 10), a run of five or more by its ends.
     assert!(markdown.contains("$s_{23} = \\sin\\left(q_{2} + q_{3}\\right)$"));
     assert!(markdown.contains("$c_{9,10} = \\cos\\left(q_{9} + q_{10}\\right)$"));
     assert!(markdown.contains("$s_{2\\ldots 10} = \\sin\\left(q_{2} + \\cdots + q_{10}\\right)$"));
@@ -301,8 +342,10 @@ fn decimals_the_problem_writes_stay_decimals() {
     // The anchor A1 is written `-0.4*N.x + 1.0*N.y`, the corner C1 `-w/2*plate.x +
     // h/2*plate.y`: by hand Δ1x = x - (w/2) cos θ - (h/2) sin θ + 0.4, the 0.4 as written
     // and the halves as fractions, as written.
-    assert!(markdown.contains(
-        "- $\\Delta_{1x} = 0.4 + x - \\frac{h \\sin(\\theta)}{2} - \\frac{w \\cos(\\theta)}{2}$"
+    assert!(defines(
+        &markdown,
+        "\\Delta_{1x} = 0.4 + x - \\frac{h \\sin(\\theta)}{2} - \\frac{w \\cos(\\theta)}{2}",
+        "of the vector from"
     ));
     assert!(!markdown.contains("\\frac{2}{5}"));
 }
@@ -333,8 +376,10 @@ fn a_spherical_link_turns_with_its_parent_by_name() {
     // B3 is B2 turned by q7 about x, q8 about the new y, q9 about the final z. Along b̂3z, by
     // hand: x̂2 · b̂3z = sin q8, ŷ2 · b̂3z = -sin q7 cos q8, ẑ2 · b̂3z = cos q7 cos q8, and the
     // rates add q̇7 sin q8 + q̇9.
-    assert!(markdown.contains(
-        "- $\\omega^{B_{3}}_{z} = \\dot{q}_{9} + \\dot{q}_{7} s_{8} + \\omega^{B_{2}}_{x} s_{8} - \\omega^{B_{2}}_{y} s_{7} c_{8} + \\omega^{B_{2}}_{z} c_{7} c_{8}$: angular velocity of B3 along B3.z"
+    assert!(defines(
+        &markdown,
+        "\\omega^{B_{3}}_{z} = \\dot{q}_{9} + \\dot{q}_{7} s_{8} + \\omega^{B_{2}}_{x} s_{8} - \\omega^{B_{2}}_{y} s_{7} c_{8} + \\omega^{B_{2}}_{z} c_{7} c_{8}",
+        "components of the angular velocity of B3:"
     ));
     // Step 4 writes the vector by those names.
     assert!(markdown.contains(
@@ -354,10 +399,10 @@ fn a_spherical_links_acceleration_is_built_on_its_joint_points() {
     // c4 c5 for the x-y-z angles q4, q5, q6), (α̃ × r')_z = b2 α̃x − a2 α̃y, and
     // (ω × (ω × r'))_z = a2 ωx ωz + b2 ωy ωz + (L2/2)(ωx² + ωy²).
     assert!(markdown.contains(
-        "- $\\tilde{a}^{B_{2}^{*}}_{z} = \\frac{L_{2} {\\omega^{B_{2}}_{x}}^{2}}{2} + \\frac{L_{2} {\\omega^{B_{2}}_{y}}^{2}}{2} - a_{2} \\tilde{\\alpha}^{B_{2}}_{y} + b_{2} \\tilde{\\alpha}^{B_{2}}_{x} + \\tilde{a}^{S_{2}}_{x} s_{5} + a_{2} \\omega^{B_{2}}_{x} \\omega^{B_{2}}_{z} + b_{2} \\omega^{B_{2}}_{y} \\omega^{B_{2}}_{z} - \\tilde{a}^{S_{2}}_{y} s_{4} c_{5} + \\tilde{a}^{S_{2}}_{z} c_{4} c_{5}$"
+        "$\\tilde{a}^{B_{2}^{*}}_{z} = \\frac{L_{2} {\\omega^{B_{2}}_{x}}^{2}}{2} + \\frac{L_{2} {\\omega^{B_{2}}_{y}}^{2}}{2} - a_{2} \\tilde{\\alpha}^{B_{2}}_{y} + b_{2} \\tilde{\\alpha}^{B_{2}}_{x} + \\tilde{a}^{S_{2}}_{x} s_{5} + a_{2} \\omega^{B_{2}}_{x} \\omega^{B_{2}}_{z} + b_{2} \\omega^{B_{2}}_{y} \\omega^{B_{2}}_{z} - \\tilde{a}^{S_{2}}_{y} s_{4} c_{5} + \\tilde{a}^{S_{2}}_{z} c_{4} c_{5}$"
     ));
     // The joint point's is the parent's mass centre's and the parent's turning across to it.
-    assert!(markdown.contains("- $\\tilde{a}^{S_{2}}_{x} = \\tilde{a}^{B_{1}^{*}}_{x} + "));
+    assert!(markdown.contains("$\\tilde{a}^{S_{2}}_{x} = \\tilde{a}^{B_{1}^{*}}_{x} + "));
 }
 
 #[test]
@@ -443,8 +488,10 @@ fn a_partial_angular_velocity_the_same_for_several_speeds_is_written_once() {
     // For a speed of B1's joint, B3's partial angular velocity is B2's carried across the
     // joint of B3: along b̂3z, by hand, ω^{B2}_r · b̂3z with b̂3z = s8 x̂2 - s7 c8 ŷ2 + c7 c8 ẑ2
     // (x-y-z angles q7, q8, q9). Written once, with the speeds it holds for.
-    assert!(markdown.contains(
-        "- $\\omega^{B_{3}}_{r,z} = \\omega^{B_{2}}_{r,x} s_{8} - \\omega^{B_{2}}_{r,y} s_{7} c_{8} + \\omega^{B_{2}}_{r,z} c_{7} c_{8} \\quad (r = q_{1}, q_{2})$: partial angular velocity of B3 for r, along B3.z"
+    assert!(defines(
+        &markdown,
+        "\\omega^{B_{3}}_{r,z} = \\omega^{B_{2}}_{r,x} s_{8} - \\omega^{B_{2}}_{r,y} s_{7} c_{8} + \\omega^{B_{2}}_{r,z} c_{7} c_{8} \\quad (r = q_{1}, q_{2})",
+        "partial angular velocities of B3:"
     ));
     assert!(!markdown.contains("\\omega^{B_{3}}_{q_{1},z} ="));
 }
@@ -484,16 +531,23 @@ fn a_long_chain_of_rotations_is_composed_by_name() {
     // By hand, E on a z-x-y spherical joint: ᴰC^E = R_z(qE1) R_x(qE2) R_y(qE3), whose first
     // entry is c₁c₃ − s₁s₂s₃; and ᴺC^E = ᴺC^D ᴰC^E entry by entry, three products of names
     // (ᴺC^D₁₂ = −sin(qA + qC) cos qD1 and ᴰC^E₃₁ = −sin qE3 cos qE2, one term each, unnamed).
-    assert!(markdown.contains(
-        "- ${}^{D}C^{E}_{11} = \\cos(q_{E1}) \\cos(q_{E3}) - \\sin(q_{E1}) \\sin(q_{E2}) \\sin(q_{E3})$"
+    assert!(defines(
+        &markdown,
+        "{}^{D}C^{E}_{11} = \\cos(q_{E1}) \\cos(q_{E3}) - \\sin(q_{E1}) \\sin(q_{E2}) \\sin(q_{E3})",
+        "direction cosines:"
     ));
-    assert!(markdown.contains(
-        "- ${}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} s_{q_{A},q_{C}} c_{q_{D1}} - {}^{N}C^{D}_{13} s_{q_{E3}} c_{q_{E2}}$"
+    assert!(defines(
+        &markdown,
+        "{}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} s_{q_{A},q_{C}} c_{q_{D1}} - {}^{N}C^{D}_{13} s_{q_{E3}} c_{q_{E2}}",
+        "direction cosines:"
     ));
     // Step 2's forces on E use its partial angular velocities; for qA and qC, both turns
     // about parallel z axes, they are the same and written once, for r = qA, qC.
     assert!(markdown
-        .contains("\\quad (r = q_{A}, q_{C})$: partial angular velocity of E for r, along E.y"));
+        .lines()
+        .any(|l| l.starts_with("- partial angular velocities of E:")
+            && l.contains("\\omega^{E}_{r,y} =")
+            && l.contains("\\quad (r = q_{A}, q_{C})$")));
     // B slides along A.x without turning: B's cosines are A's, named once as ᴬC^E.
     assert!(markdown.contains("{}^{A}C^{E}_{31}"));
     assert!(!markdown.contains("{}^{B}C^{E}"));

@@ -62,13 +62,13 @@ pub struct Solution {
     pub free_body_legend: String,
     /// Step 2: the quantities the forces are written with (a spring's length `ℓ₁`, its
     /// unit vector `û₁`, its rate `ℓ̇₁`), each defined once; the later steps use them too.
-    pub force_definitions: Vec<Named>,
+    pub force_definitions: Vec<WhereEntry>,
     /// Step 4: the abbreviations of sines and cosines that steps 4 and 5 use
     /// (`s_{1} = \sin(q_{1})`), each defined once.
     pub abbreviations: Vec<Named>,
     /// Step 4: the named kinematic quantities that steps 4 and 5 use (the direction cosines
     /// of long chains, partial velocities, accelerations without the q''), each defined once.
-    pub kinematic_definitions: Vec<Named>,
+    pub kinematic_definitions: Vec<WhereEntry>,
     /// Step 3: the planner's table.
     pub plan: Plan,
     /// Step 4: angular velocity and acceleration of each body, velocity and acceleration of
@@ -229,6 +229,18 @@ pub struct Named {
     pub definition_tex: String,
     /// What it is (plain text; may be empty), e.g. `length of the line from A1 to P1`.
     pub note: String,
+}
+
+/// One entry of a "where" list: a definition with its note, or several of one kind (the
+/// direction cosines, the partial velocities of one mass centre) under the note they share.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct WhereEntry {
+    /// The definitions, e.g. `v^{B^*}_{q_{1},x} = -b s_{2}`, one or several.
+    pub definitions_tex: Vec<String>,
+    /// What they are (plain text; may be empty), e.g. `partial velocities of B*`.
+    pub note: String,
+    /// Whether this is a group, written note first: `partial velocities of B*: …, …`.
+    pub grouped: bool,
 }
 
 /// Step 3: which equation each free body gives, and what it leaves unknown.

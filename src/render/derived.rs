@@ -27,7 +27,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let model = &derivation.model;
     solution.free_bodies = super::free_bodies::free_bodies(derivation);
     (solution.constraints, solution.constraint_notes) = super::constrained::constraints(derivation);
-    solution.force_definitions = force_definitions(derivation);
+    solution.force_definitions = super::where_list::grouped(force_definitions(derivation));
     solution.plan = plan(derivation);
     // Steps 4 and 5 write sines and cosines of the coordinates as s_1, c_12, listed once.
     let names: Vec<&str> = problem
@@ -56,7 +56,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
-        solution.kinematic_definitions = kinematic_definitions(derivation);
+        solution.kinematic_definitions =
+            super::where_list::grouped(kinematic_definitions(derivation));
         solution.speeds = super::speeds::speeds(derivation);
     });
     solution.abbreviations = abbreviations

@@ -4,6 +4,7 @@
 
 use super::context::{MatrixEntry, MatrixForm, Named, WholeMatrix};
 use super::long::{by_rates, LONG_EQUATION};
+use super::numbers::math_number;
 use super::prepare::printed_width;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
@@ -17,13 +18,22 @@ const MOST_COLUMNS: usize = 6;
 /// How many symbols the whole table may print across: about the width of the page.
 const TABLE_WIDTH: usize = 70;
 /// The most characters of LaTeX the entries may print in all (about five pages). Past it,
-/// every entry longer than [`SHORT_ENTRY`] is given by its value at the initial state: the
-/// rows of step 5 define each entry, and a large system is solved by its numbers anyway.
+/// the longest entries are given by their values at the initial state until the formulas
+/// left fit [`BY_VALUE_BUDGET`]: the rows of step 5 define each entry, and a large system
+/// is solved by its numbers anyway.
 const ENTRIES_BUDGET: usize = 24_000;
+/// The most characters of LaTeX the formulas kept among values may print (about a page).
+const BY_VALUE_BUDGET: usize = 8_000;
 /// An entry this wide or narrower (in printed symbols) stays in a table by name.
 const INLINE_ENTRY: usize = 4;
-/// An entry this long or shorter is always printed as a formula.
+/// An entry this long or shorter is printed as a formula whenever the budget allows.
 const SHORT_ENTRY: usize = 400;
+/// An entry this long or shorter (in characters of LaTeX) is always printed as a formula:
+/// `m_{1} + m_{2}` tells more than its value.
+const INLINE_FORMULA: usize = 24;
+/// The most unknowns a system given by value prints as one table of numbers; past it, entry
+/// by entry.
+const MOST_VALUE_COLUMNS: usize = 12;
 /// The most entries listed one a line; past it, the short entries of a row are printed one
 /// after another.
 const MOST_LISTED: usize = 48;
@@ -161,12 +171,45 @@ pub fn matrix(
         .map(String::len)
         .sum();
     let by_value = printed > ENTRIES_BUDGET;
-    // With `by_value`, a formula too long for a line is replaced by its value at the start.
+    if by_value && n <= MOST_VALUE_COLUMNS {
+        // A system this large is read by its numbers: A and b at the initial state as one
+        // table, the rules saying what each entry is.
+        return MatrixForm {
+            whole: Some(value_table(&numbers, &x, &system.a, &system.b, &initial)),
+            by_value,
+            rules: coefficient_rules(derivation),
+            ..MatrixForm::default()
+        };
+    }
+    // b's entries too long to read whole, collected by the products of rates they hold.
+    let longest_b = if by_value {
+        SHORT_ENTRY
+    } else {
+        2 * LONG_EQUATION
+    };
+    let b_groups: Vec<Vec<(Expr, Expr)>> = b
+        .iter()
+        .zip(&b_tex)
+        .map(|(e, text)| {
+            if text.len() > longest_b {
+                by_rates(e)
+            } else {
+                Vec::new()
+            }
+        })
+        .collect();
+    let longest_formula = if by_value {
+        longest_kept(&a, &a_tex, &b_tex, &b_groups, &listed)
+    } else {
+        usize::MAX
+    };
+    // With `by_value`, a formula longer than the budget keeps is replaced by its value at
+    // the start.
     let formula_or_number = |e: &Expr, text: String| {
-        if by_value && text.len() > SHORT_ENTRY {
+        if text.len() > longest_formula {
             // A sum that cancels at this state prints as 0, not as its rounding error.
             let value = initial(e);
-            fixed(if value.abs() < 1e-12 { 0.0 } else { value })
+            math_number(&fixed(if value.abs() < 1e-12 { 0.0 } else { value }))
         } else {
             text
         }
@@ -203,16 +246,7 @@ pub fn matrix(
                 format!("A_{{{},{}}} = {value}", i + 1, j + 1),
             );
         }
-        let longest_b = if by_value {
-            SHORT_ENTRY
-        } else {
-            2 * LONG_EQUATION
-        };
-        let groups = if b_tex[i].len() > longest_b {
-            by_rates(&b[i])
-        } else {
-            Vec::new()
-        };
+        let groups = &b_groups[i];
         let column_b = || "\\mathbf{b}".to_string();
         if groups.len() < 2 {
             entry(
@@ -339,6 +373,43 @@ pub fn matrix(
     }
 }
 
+/// The longest formula an entry may print when the system is given by value: the entries
+/// kept as formulas, shortest first, print at most [`BY_VALUE_BUDGET`] characters, and a
+/// short entry (up to a symbol or two) is always kept.
+fn longest_kept(
+    a: &[Vec<Expr>],
+    a_tex: &[Vec<String>],
+    b_tex: &[String],
+    b_groups: &[Vec<(Expr, Expr)>],
+    listed: &impl Fn(usize) -> bool,
+) -> usize {
+    let mut lengths: Vec<usize> = Vec::new();
+    for i in (0..a.len()).filter(|&i| listed(i)) {
+        for (j, e) in a[i].iter().enumerate().filter(|(_, e)| !e.is_zero()) {
+            let mirrored = j < i && a.get(j).and_then(|r| r.get(i)) == Some(e) && listed(j);
+            if !mirrored {
+                lengths.push(a_tex[i][j].len());
+            }
+        }
+        if b_groups[i].len() < 2 {
+            lengths.push(b_tex[i].len());
+        } else {
+            lengths.extend(b_groups[i].iter().map(|(_, c)| latex_factored(c).len()));
+        }
+    }
+    lengths.sort_unstable();
+    let mut total = 0;
+    let mut longest = INLINE_FORMULA;
+    for length in lengths {
+        total += length;
+        if total > BY_VALUE_BUDGET {
+            break;
+        }
+        longest = longest.max(length);
+    }
+    longest.min(SHORT_ENTRY)
+}
+
 /// Row numbers as a reader lists them, runs joined by an en dash (LaTeX `--`):
 /// `(1)--(9), (24)--(26)`.
 fn rows_tex(rows: &[usize]) -> String {
@@ -443,6 +514,31 @@ fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
     rules
 }
 
+/// `A` and `b` at the initial state as one table, laid out as [`whole`] lays out the
+/// formulas.
+fn value_table(
+    labels: &[String],
+    x: &[String],
+    a: &[Vec<Expr>],
+    b: &[Expr],
+    initial: &impl Fn(&Expr) -> f64,
+) -> WholeMatrix {
+    let value = |e: &Expr| {
+        if e.is_zero() {
+            return "0".to_string();
+        }
+        // A sum that cancels at this state prints as 0, not as its rounding error.
+        let v = initial(e);
+        math_number(&fixed(if v.abs() < 1e-12 { 0.0 } else { v }))
+    };
+    let a_values: Vec<Vec<String>> = a
+        .iter()
+        .map(|row| row.iter().map(value).collect())
+        .collect();
+    let b_values: Vec<String> = b.iter().map(value).collect();
+    table(labels, x, &a_values, &b_values)
+}
+
 /// The whole table, when it prints no wider than the line.
 fn whole(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Option<WholeMatrix> {
     let widest = |column: &mut dyn Iterator<Item = &String>| {
@@ -456,6 +552,11 @@ fn whole(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Op
     if width > TABLE_WIDTH {
         return None;
     }
+    Some(table(labels, x, a, b))
+}
+
+/// `A`, `x` and `b` as matrices, and `A` and `b` as one table headed by the unknowns.
+fn table(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> WholeMatrix {
     let column = |items: &[String]| {
         format!(
             "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
@@ -477,7 +578,7 @@ fn whole(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Op
         ));
     }
     table.push_str(" \\end{array}");
-    Some(WholeMatrix {
+    WholeMatrix {
         a_tex: format!(
             "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
             rows.join(" \\\\ ")
@@ -485,5 +586,5 @@ fn whole(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Op
         x_tex: column(x),
         b_tex: column(b),
         table_tex: table,
-    })
+    }
 }

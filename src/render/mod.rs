@@ -34,6 +34,7 @@ pub mod simulation;
 pub mod speeds;
 pub mod tex_wrap;
 pub mod units;
+mod where_list;
 
 pub use context::Solution;
 

@@ -123,18 +123,27 @@ pub(super) fn is_number(text: &str) -> bool {
 pub(super) fn latex_number(text: &str) -> String {
     match text {
         "NaN" => "NaN".into(),
-        "inf" => "$\\infty$".into(),
-        "-inf" => "$-\\infty$".into(),
+        _ => format!("${}$", math_number(text)),
+    }
+}
+
+/// A number as math-mode LaTeX (without `$`): `1e-9` as `1 \times 10^{-9}`, `inf` as
+/// `\infty`.
+pub(super) fn math_number(text: &str) -> String {
+    match text {
+        "NaN" => "\\text{NaN}".into(),
+        "inf" => "\\infty".into(),
+        "-inf" => "-\\infty".into(),
         _ => match text.split_once('e') {
             Some((mantissa, exponent)) => {
                 let exponent = exponent.trim_start_matches('+');
                 if mantissa == "1" {
-                    format!("$10^{{{exponent}}}$")
+                    format!("10^{{{exponent}}}")
                 } else {
-                    format!("${mantissa} \\times 10^{{{exponent}}}$")
+                    format!("{mantissa} \\times 10^{{{exponent}}}")
                 }
             }
-            None => format!("${text}$"),
+            None => text.to_string(),
         },
     }
 }

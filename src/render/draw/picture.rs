@@ -251,7 +251,7 @@ pub struct Picture {
     pub marks: Vec<Mark>,
     /// The arrows.
     pub arrows: Vec<DrawnArrow>,
-    /// Labels and captions, drawn last.
+    /// Labels and captions, drawn last: the first is the picture's title.
     pub texts: Vec<Item>,
     /// The legend under the picture, which a handout that states it once leaves out.
     pub legend: Legend,

@@ -95,12 +95,6 @@ pub fn export(picture: &Picture) -> String {
         num_fine(unit),
         num_fine(unit)
     );
-    let _ = writeln!(
-        out,
-        "\\path[use as bounding box] (0,0) rectangle ({},{});",
-        num(picture.width),
-        num(height)
-    );
     for i in &picture.items {
         item(&mut out, i, unit);
     }
@@ -147,7 +141,10 @@ pub fn export(picture: &Picture) -> String {
             let _ = writeln!(out, "\\path[fill={ink}] {};", path(h, true));
         }
     }
-    for t in &picture.texts[..picture.texts.len().saturating_sub(picture.legend.lines)] {
+    // The handout heads each picture with its title already, and TikZ's own bounding box
+    // fits what is drawn: no strip of margin above or below.
+    let captions = picture.texts.len().saturating_sub(picture.legend.lines);
+    for t in picture.texts.get(1..captions).unwrap_or_default() {
         item(&mut out, t, unit);
     }
     out.push_str("\\end{tikzpicture}\n");
