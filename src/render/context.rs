@@ -334,7 +334,6 @@ pub struct Equation {
     pub simplified_note: String,
     /// The simplified equation is written with the names of A's and b's entries, which the
     /// matrix form then lists.
-    #[serde(skip)]
     pub by_name: bool,
     /// Kane's rows: the generalized active force, e.g. `F_{1} = -m g L \sin(q_{1})`
     /// (empty for the other methods; then `grouped_tex` shows the row as formed).
@@ -380,12 +379,14 @@ pub struct MatrixForm {
     pub whole: Option<WholeMatrix>,
     /// The nonzero entries one by one, when there are more.
     pub entries: Vec<MatrixEntry>,
-    /// Whether the long entries are given by their values at the initial state (a system
-    /// too large to print whole).
-    pub by_value: bool,
-    /// With `by_value`, what each kind of entry is, so that every value can be traced.
+    /// For a system too large to print every entry as a formula, `A` and `b` at the initial
+    /// state as tables of numbers (`array`s), in blocks of columns when the system is wide,
+    /// `b` in the last; empty otherwise.
+    pub value_tables_tex: Vec<String>,
+    /// With the tables of values, what each kind of entry is, so that every value can be
+    /// traced.
     pub rules: Vec<Named>,
-    /// With `by_value`, the unknowns by column: `x_{1} = \ddot{q}_{1}`.
+    /// The unknowns by column, where the entries name them `x_{j}`: `x_{1} = \ddot{q}_{1}`.
     pub columns_tex: Vec<String>,
     /// The rows listed entry by entry leave out those step 5 writes out in full, to be
     /// read off there: their numbers, `(1)--(9), (24)` (empty when none is left out).

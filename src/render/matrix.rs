@@ -22,17 +22,14 @@ const TABLE_WIDTH: usize = 70;
 /// left fit [`BY_VALUE_BUDGET`]: the rows of step 5 define each entry, and a large system
 /// is solved by its numbers anyway.
 const ENTRIES_BUDGET: usize = 24_000;
-/// The most characters of LaTeX the formulas kept among values may print (about a page).
-const BY_VALUE_BUDGET: usize = 8_000;
+
 /// An entry this wide or narrower (in printed symbols) stays in a table by name.
 const INLINE_ENTRY: usize = 4;
 /// An entry this long or shorter is printed as a formula whenever the budget allows.
 const SHORT_ENTRY: usize = 400;
-/// An entry this long or shorter (in characters of LaTeX) is always printed as a formula:
-/// `m_{1} + m_{2}` tells more than its value.
-const INLINE_FORMULA: usize = 24;
-/// The most unknowns a system given by value prints as one table of numbers; past it, entry
-/// by entry.
+
+/// The most columns of numbers a table by value prints across the page; a wider system is
+/// printed in blocks of columns, as a printed matrix is.
 const MOST_VALUE_COLUMNS: usize = 12;
 /// The most entries listed one a line; past it, the short entries of a row are printed one
 /// after another.
@@ -122,7 +119,7 @@ pub fn matrix(
         .iter()
         .map(|u| latex(&Expr::sym(u.clone())))
         .collect();
-    let mut a_tex: Vec<Vec<String>> = a
+    let a_tex: Vec<Vec<String>> = a
         .iter()
         .map(|row| row.iter().map(latex_factored).collect())
         .collect();
@@ -170,55 +167,27 @@ pub fn matrix(
         .flat_map(|i| a_tex[i].iter().chain([&b_tex[i]]))
         .map(String::len)
         .sum();
-    let by_value = printed > ENTRIES_BUDGET;
-    if by_value && n <= MOST_VALUE_COLUMNS {
-        // A system this large is read by its numbers: A and b at the initial state as one
+    if printed > ENTRIES_BUDGET {
+        // A system this large is read by its numbers: A and b at the initial state as a
         // table, the rules saying what each entry is.
         return MatrixForm {
-            whole: Some(value_table(&numbers, &x, &system.a, &system.b, &initial)),
-            by_value,
+            value_tables_tex: value_tables(&numbers, &x, &system.a, &system.b, &initial),
             rules: coefficient_rules(derivation),
             ..MatrixForm::default()
         };
     }
     // b's entries too long to read whole, collected by the products of rates they hold.
-    let longest_b = if by_value {
-        SHORT_ENTRY
-    } else {
-        2 * LONG_EQUATION
-    };
     let b_groups: Vec<Vec<(Expr, Expr)>> = b
         .iter()
         .zip(&b_tex)
         .map(|(e, text)| {
-            if text.len() > longest_b {
+            if text.len() > 2 * LONG_EQUATION {
                 by_rates(e)
             } else {
                 Vec::new()
             }
         })
         .collect();
-    let longest_formula = if by_value {
-        longest_kept(&a, &a_tex, &b_tex, &b_groups, &listed)
-    } else {
-        usize::MAX
-    };
-    // With `by_value`, a formula longer than the budget keeps is replaced by its value at
-    // the start.
-    let formula_or_number = |e: &Expr, text: String| {
-        if text.len() > longest_formula {
-            // A sum that cancels at this state prints as 0, not as its rounding error.
-            let value = initial(e);
-            math_number(&fixed(if value.abs() < 1e-12 { 0.0 } else { value }))
-        } else {
-            text
-        }
-    };
-    for (row, texts) in system.a.iter().zip(a_tex.iter_mut()) {
-        for (e, text) in row.iter().zip(texts.iter_mut()) {
-            *text = formula_or_number(e, std::mem::take(text));
-        }
-    }
     let mut entries = Vec::new();
     for (i, row) in a.iter().enumerate() {
         let mut label = labels[i].clone();
@@ -252,11 +221,7 @@ pub fn matrix(
             entry(
                 "b".into(),
                 column_b(),
-                format!(
-                    "b_{{{}}} = {}",
-                    i + 1,
-                    formula_or_number(&b[i], b_tex[i].clone())
-                ),
+                format!("b_{{{}}} = {}", i + 1, b_tex[i]),
             );
             continue;
         }
@@ -283,15 +248,11 @@ pub fn matrix(
             entry(
                 "b".into(),
                 column_b(),
-                format!(
-                    "{} = {}",
-                    name(k + 1),
-                    formula_or_number(coefficient, latex_factored(coefficient))
-                ),
+                format!("{} = {}", name(k + 1), latex_factored(coefficient)),
             );
         }
     }
-    if let Some(table) = table_by_name.filter(|_| !by_value) {
+    if let Some(table) = table_by_name {
         let mut defined = Vec::new();
         for (i, row) in a_names.iter().enumerate() {
             for (j, name) in row.iter().enumerate() {
@@ -329,7 +290,7 @@ pub fn matrix(
             ..MatrixForm::default()
         };
     }
-    if let Some(table) = table_with_b_by_name.filter(|_| !by_value) {
+    if let Some(table) = table_with_b_by_name {
         let b_entries = entries
             .into_iter()
             .filter(|e| e.column == "b")
@@ -347,7 +308,7 @@ pub fn matrix(
     let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
     entries.retain(|e| listed(e.row - 1));
     let read_off_tex = rows_tex(&read_off);
-    if !by_value && entries.len() <= MOST_LISTED {
+    if entries.len() <= MOST_LISTED {
         return MatrixForm {
             whole: None,
             entries,
@@ -358,56 +319,14 @@ pub fn matrix(
     MatrixForm {
         whole: None,
         entries: row_by_row(entries),
-        by_value,
-        rules: if by_value {
-            coefficient_rules(derivation)
-        } else {
-            Vec::new()
-        },
         columns_tex: x
             .iter()
             .enumerate()
             .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
             .collect(),
         read_off_tex,
+        ..MatrixForm::default()
     }
-}
-
-/// The longest formula an entry may print when the system is given by value: the entries
-/// kept as formulas, shortest first, print at most [`BY_VALUE_BUDGET`] characters, and a
-/// short entry (up to a symbol or two) is always kept.
-fn longest_kept(
-    a: &[Vec<Expr>],
-    a_tex: &[Vec<String>],
-    b_tex: &[String],
-    b_groups: &[Vec<(Expr, Expr)>],
-    listed: &impl Fn(usize) -> bool,
-) -> usize {
-    let mut lengths: Vec<usize> = Vec::new();
-    for i in (0..a.len()).filter(|&i| listed(i)) {
-        for (j, e) in a[i].iter().enumerate().filter(|(_, e)| !e.is_zero()) {
-            let mirrored = j < i && a.get(j).and_then(|r| r.get(i)) == Some(e) && listed(j);
-            if !mirrored {
-                lengths.push(a_tex[i][j].len());
-            }
-        }
-        if b_groups[i].len() < 2 {
-            lengths.push(b_tex[i].len());
-        } else {
-            lengths.extend(b_groups[i].iter().map(|(_, c)| latex_factored(c).len()));
-        }
-    }
-    lengths.sort_unstable();
-    let mut total = 0;
-    let mut longest = INLINE_FORMULA;
-    for length in lengths {
-        total += length;
-        if total > BY_VALUE_BUDGET {
-            break;
-        }
-        longest = longest.max(length);
-    }
-    longest.min(SHORT_ENTRY)
 }
 
 /// Row numbers as a reader lists them, runs joined by an en dash (LaTeX `--`):
@@ -514,15 +433,16 @@ fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
     rules
 }
 
-/// `A` and `b` at the initial state as one table, laid out as [`whole`] lays out the
-/// formulas.
-fn value_table(
+/// `A` and `b` at the initial state as tables laid out as [`whole`] lays out the formulas,
+/// in blocks of at most [`MOST_VALUE_COLUMNS`] columns of about equal width, `b` in the
+/// last.
+fn value_tables(
     labels: &[String],
     x: &[String],
     a: &[Vec<Expr>],
     b: &[Expr],
     initial: &impl Fn(&Expr) -> f64,
-) -> WholeMatrix {
+) -> Vec<String> {
     let value = |e: &Expr| {
         if e.is_zero() {
             return "0".to_string();
@@ -536,7 +456,20 @@ fn value_table(
         .map(|row| row.iter().map(value).collect())
         .collect();
     let b_values: Vec<String> = b.iter().map(value).collect();
-    table(labels, x, &a_values, &b_values)
+    let blocks = x.len().div_ceil(MOST_VALUE_COLUMNS).max(1);
+    let width = x.len().div_ceil(blocks);
+    (0..blocks)
+        .map(|k| {
+            let columns = k * width..((k + 1) * width).min(x.len());
+            let block: Vec<Vec<String>> = a_values
+                .iter()
+                .map(|row| row[columns.clone()].to_vec())
+                .collect();
+            let last = k + 1 == blocks;
+            let b_column = if last { Some(&b_values[..]) } else { None };
+            array(labels, &x[columns], &block, b_column)
+        })
+        .collect()
 }
 
 /// The whole table, when it prints no wider than the line.
@@ -564,20 +497,6 @@ fn table(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Wh
         )
     };
     let rows: Vec<String> = a.iter().map(|row| row.join(" & ")).collect();
-    let mut table = format!(
-        "\\begin{{array}}{{l|{}|c}} & {} & \\mathbf{{b}} \\\\ \\hline",
-        "c".repeat(x.len()),
-        x.join(" & ")
-    );
-    for (i, row) in a.iter().enumerate() {
-        table.push_str(&format!(
-            " {} & {} & {} \\\\",
-            labels[i],
-            row.join(" & "),
-            b[i]
-        ));
-    }
-    table.push_str(" \\end{array}");
     WholeMatrix {
         a_tex: format!(
             "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
@@ -585,6 +504,28 @@ fn table(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Wh
         ),
         x_tex: column(x),
         b_tex: column(b),
-        table_tex: table,
+        table_tex: array(labels, x, a, Some(b)),
     }
+}
+
+/// `A`'s columns `x` (and `b` last, when given) as one `array`, a column per unknown
+/// headed by it, a row per equation led by its label.
+fn array(labels: &[String], x: &[String], a: &[Vec<String>], b: Option<&[String]>) -> String {
+    let b_head = if b.is_some() { " & \\mathbf{b}" } else { "" };
+    let mut table = format!(
+        "\\begin{{array}}{{l|{}{}}} & {}{b_head} \\\\ \\hline",
+        "c".repeat(x.len()),
+        if b.is_some() { "|c" } else { "" },
+        x.join(" & ")
+    );
+    for (i, row) in a.iter().enumerate() {
+        let b_entry = b.map_or(String::new(), |b| format!(" & {}", b[i]));
+        table.push_str(&format!(
+            " {} & {}{b_entry} \\\\",
+            labels[i],
+            row.join(" & ")
+        ));
+    }
+    table.push_str(" \\end{array}");
+    table
 }
