@@ -60,8 +60,16 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             super::where_list::grouped(kinematic_definitions(derivation));
         solution.speeds = super::speeds::speeds(derivation);
     });
+    // Only those the solution prints: a text formed and then given up (an entry given by
+    // value, a row too long to write whole) records its abbreviations too.
+    let printed = serde_json::to_string(&*solution).unwrap_or_default();
+    let in_print = |name: &str| {
+        let quoted = serde_json::to_string(name).unwrap_or_default();
+        printed.contains(quoted.trim_matches('"'))
+    };
     solution.abbreviations = abbreviations
         .into_iter()
+        .filter(|a| in_print(&a.name))
         .map(|a| Named {
             definition_tex: format!("{} = {}", a.name, a.value),
             note: String::new(),
