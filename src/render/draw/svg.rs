@@ -219,6 +219,19 @@ fn item(out: &mut String, item: &Item) {
     }
 }
 
+/// A label without its colour, which the group around it gives.
+fn text(out: &mut String, item: &Item) {
+    if let Item::Text { at, label, .. } = item {
+        let _ = writeln!(
+            out,
+            "<text x=\"{}\" y=\"{}\">{}</text>",
+            coarse(at[0]),
+            coarse(at[1] + 4.5),
+            label_spans(label)
+        );
+    }
+}
+
 /// The picture as an SVG document; every id (and `data-at`) starts with `prefix`.
 pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     let mut out = String::new();
@@ -335,8 +348,24 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         out.push_str("</g>\n");
     }
     out.push_str("</g>\n<g class=\"labels\" fill=\"none\">\n");
-    for t in &picture.texts {
-        item(&mut out, t);
+    // A run of labels of one colour shares it, given once.
+    let mut texts = picture.texts.iter().peekable();
+    while let Some(t) = texts.next() {
+        let Item::Text { ink, .. } = t else {
+            item(&mut out, t);
+            continue;
+        };
+        let same = |next: &&Item| matches!(next, Item::Text { ink: other, .. } if other == ink);
+        if !texts.peek().is_some_and(same) {
+            item(&mut out, t);
+            continue;
+        }
+        let _ = writeln!(out, "<g fill=\"{}\">", color(*ink));
+        text(&mut out, t);
+        while let Some(next) = texts.next_if(same) {
+            text(&mut out, next);
+        }
+        out.push_str("</g>\n");
     }
     out.push_str("</g>\n</svg>\n");
     out
