@@ -163,5 +163,9 @@ pub fn render(
     prepare::register_filters(&mut tera);
     tera.add_raw_template(name, &source).map_err(tera_error)?;
     let context = prepare::context(solution, format, student).map_err(|e| error(e.to_string()))?;
-    tera.render(name, &context).map_err(tera_error)
+    let text = tera.render(name, &context).map_err(tera_error)?;
+    Ok(match format {
+        Format::Latex => tex_wrap::short_source_lines(&text),
+        Format::Markdown | Format::Html => text,
+    })
 }

@@ -7,6 +7,42 @@
 //! math so that it can break there: a permitted break after each comma of a list, `\bigl(`
 //! and `\bigr)` for `\left(` and `\right)`, and the words of `\text{…}` as text.
 
+/// The longest source line [`short_source_lines`] leaves, in bytes.
+const LONGEST_SOURCE_LINE: usize = 200;
+
+/// `tex` with every source line longer than [`LONGEST_SOURCE_LINE`] broken at spaces. TeX
+/// reads a single line end as a space, so the pages are the same, and an editor or a diff
+/// copes with the source. A line with a comment is left whole (a break before the `%` would
+/// be safe, one after it would not), and so is a space after a backslash (a control space).
+pub fn short_source_lines(tex: &str) -> String {
+    let mut out = String::with_capacity(tex.len() + tex.len() / LONGEST_SOURCE_LINE);
+    for line in tex.split_inclusive('\n') {
+        if line.len() <= LONGEST_SOURCE_LINE || has_comment(line) {
+            out.push_str(line);
+            continue;
+        }
+        let mut run = 0;
+        let mut previous = '\0';
+        for c in line.chars() {
+            if c == ' ' && run >= LONGEST_SOURCE_LINE && previous != '\\' {
+                out.push('\n');
+                run = 0;
+            } else {
+                out.push(c);
+                run += c.len_utf8();
+            }
+            previous = c;
+        }
+    }
+    out
+}
+
+/// Whether `line` holds a `%` that starts a comment (one not written `\%`).
+fn has_comment(line: &str) -> bool {
+    let bytes = line.as_bytes();
+    (0..bytes.len()).any(|i| bytes[i] == b'%' && (i == 0 || bytes[i - 1] != b'\\'))
+}
+
 /// `math` (LaTeX math, without `$`) as LaTeX text-mode source: `$…$` pieces that may break
 /// after commas and inside brackets, and the words of top-level `\text{…}` as text between
 /// them. Empty for empty math.
@@ -168,5 +204,19 @@ mod tests {
         );
         let matrix = "\\left[\\begin{matrix} a \\end{matrix}\\right]";
         assert_eq!(wrap(matrix), format!("${matrix}$"));
+    }
+
+    #[test]
+    fn long_source_lines_break_at_spaces_and_nowhere_else() {
+        let long = format!("$a = {}b$", "x + ".repeat(100));
+        let broken = short_source_lines(&format!("{long}\nshort\n"));
+        assert!(broken.lines().all(|l| l.len() <= LONGEST_SOURCE_LINE + 8));
+        // A line end is a space to TeX: the same text, line ends read as spaces.
+        assert_eq!(broken.replace('\n', " "), format!("{long} short "));
+        // Comments and control spaces stay as they are.
+        let comment = format!("{long} % a comment\n");
+        assert_eq!(short_source_lines(&comment), comment);
+        let spaces = format!("{}\n", "a\\ ".repeat(100));
+        assert_eq!(short_source_lines(&spaces), spaces);
     }
 }
