@@ -187,7 +187,7 @@ fn a_plate_on_two_springs_gives_a_small_handout_written_with_the_lengths() {
     );
     assert!(defines(
         &markdown,
-        "\\Delta_{1x} = d + x - a \\cos(\\theta) - b \\sin(\\theta)",
+        "\\Delta_{1x} = d + x - a c_{\\theta} - b s_{\\theta}",
         "of the vector from"
     ));
     if pdflatex_present() {
@@ -356,14 +356,14 @@ fn the_double_pendulum_reads_as_a_textbook_writes_it() {
     ));
     // Both rods along N.y: F^O_y - (m1 + m2) g + …, the masses collected.
     assert!(equations[3].ends_with("- g \\left(m_{1} + m_{2}\\right)"));
-    // The abbreviations are defined once, at the start of step 4, in the order of the
-    // coordinates, the sums last.
+    // The abbreviations are defined once, at the start of step 2 where steps 2 to 5 begin
+    // to use them, in the order of the coordinates, the sums last.
     let line = "Abbreviations: $s_{1} = \\sin(q_{1})$, $c_{1} = \\cos(q_{1})$, $s_{2} = \\sin(q_{2})$, $c_{2} = \\cos(q_{2})$, $s_{12} = \\sin\\left(q_{1} + q_{2}\\right)$, $c_{12} = \\cos\\left(q_{1} + q_{2}\\right)$.";
     assert_eq!(markdown.matches(line).count(), 1);
-    let step4 = markdown.find("## Step 4").expect("step 4");
-    assert!(markdown.find(line).is_some_and(|i| i > step4));
+    let step2 = markdown.find("## Step 2").expect("step 2");
+    assert!(markdown.find(line).is_some_and(|i| i > step2));
     // Step 1 still writes the functions out.
-    assert!(markdown[..step4].contains("\\cos") || !markdown[..step4].contains("c_{1}"));
+    assert!(markdown[..step2].contains("\\cos") || !markdown[..step2].contains("c_{1}"));
 }
 
 #[test]
@@ -391,7 +391,7 @@ fn decimals_the_problem_writes_stay_decimals() {
     // and the halves as fractions, as written.
     assert!(defines(
         &markdown,
-        "\\Delta_{1x} = 0.4 + x - \\frac{h \\sin(\\theta)}{2} - \\frac{w \\cos(\\theta)}{2}",
+        "\\Delta_{1x} = 0.4 + x - \\frac{h s_{\\theta}}{2} - \\frac{w c_{\\theta}}{2}",
         "of the vector from"
     ));
     assert!(!markdown.contains("\\frac{2}{5}"));
@@ -580,7 +580,7 @@ fn a_long_chain_of_rotations_is_composed_by_name() {
     // (ᴺC^D₁₂ = −sin(qA + qC) cos qD1 and ᴰC^E₃₁ = −sin qE3 cos qE2, one term each, unnamed).
     assert!(defines(
         &markdown,
-        "{}^{D}C^{E}_{11} = \\cos(q_{E1}) \\cos(q_{E3}) - \\sin(q_{E1}) \\sin(q_{E2}) \\sin(q_{E3})",
+        "{}^{D}C^{E}_{11} = c_{q_{E1}} c_{q_{E3}} - s_{q_{E1}} s_{q_{E2}} s_{q_{E3}}",
         "direction cosines:"
     ));
     assert!(defines(
