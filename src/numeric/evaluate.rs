@@ -183,11 +183,15 @@ impl Lazy {
 }
 
 impl Compiled {
-    /// Compiles the system, the requested reactions and the energies of a derivation.
+    /// Compiles the system (by composite bodies where the derivation has it), the requested
+    /// reactions and the energies of a derivation.
     pub fn new(derivation: &Derivation) -> Compiled {
         let model = &derivation.model;
         let problem = model.problem;
-        let system = &derivation.system;
+        let system = derivation
+            .composite_system
+            .as_ref()
+            .unwrap_or(&derivation.system);
         let n = system.unknowns.len();
         let mut outputs: Vec<Expr> = Vec::with_capacity(n * n + n + 8);
         for row in &system.a {
