@@ -1,13 +1,18 @@
-//! Kane's mass matrix for the numbers by composite bodies, as the composite-rigid-body
-//! algorithm builds it ([`mass`]): Kane's rows sum over the bodies for every entry, n³ work
-//! for the whole matrix; this is n².
+//! Kane's rows for the numbers by composite bodies: the mass matrix as the
+//! composite-rigid-body algorithm builds it ([`mass`]), and what the rows hold besides the
+//! q'' from the bodies' forces carried in from the leaves ([`forces`]), as the recursive
+//! Newton–Euler algorithm does, on each body's motion built on its parent's
+//! ([`kinematics`]). Kane's rows sum over the bodies for every entry, n³ work for the mass
+//! matrix and n² for the rest; these are n² and n.
 //!
-//! It rests on one fact. With the rates as the speeds and nothing but the tree's joints
+//! Both rest on one fact. With the rates as the speeds and nothing but the tree's joints
 //! constraining the motion, each speed `r` of joint `i` moves the bodies outboard of `i`
 //! as one rigid body: with `ω_r` the partial angular velocity of the joint's child and
 //! `u_r` the partial velocity of the child's point at the joint `O_i`, a point `P` of a
 //! body outboard of `i` has the partial velocity `u_r + ω_r × (P − O_i)` and the body the
-//! partial angular velocity `ω_r`; every other body, none.
+//! partial angular velocity `ω_r`; every other body, none. Kane's `Σ F · v_r + T · ω_r`
+//! over those bodies is then `u_r · F + ω_r · M(O_i)`, with `F` the resultant of the forces
+//! on the bodies outboard of `i` and `M(O_i)` their moment about `O_i` with the couples.
 //!
 //! A quantity taken at a joint is written in the unit vectors of the joint's child, each
 //! component a named quantity, so that carrying it to the next joint in is a rotation by
@@ -15,6 +20,8 @@
 //! in its parent's unit vectors, where its axes are fixed: a free body's three translations
 //! then meet its mass as `m`, not as products of direction cosines that make up `m`.
 
+pub mod forces;
+pub mod kinematics;
 pub mod mass;
 
 use crate::equations::LinearSystem;
@@ -22,23 +29,28 @@ use crate::mechanics::frames::Matrix;
 use crate::mechanics::on_parent::split;
 use crate::mechanics::vector::{cross3, Components};
 use crate::mechanics::{Model, Vector};
+use crate::plan::forces::Action;
 use crate::problem::BodyId;
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::print::latex_name;
 use crate::symbolic::Expr;
 
-/// Kane's linear system as `formed` from the rows, with the q'' coefficients of the rows
-/// of the speeds (the mass matrix) rebuilt by composite bodies. `None` where [`applies`]
-/// does not hold.
-pub fn system(model: &Model, formed: &LinearSystem) -> Option<LinearSystem> {
+/// Kane's linear system as `formed` from the rows, with the rows of the speeds rebuilt by
+/// composite bodies. `None` where [`applies`] does not hold.
+pub fn system(model: &Model, actions: &[Action], formed: &LinearSystem) -> Option<LinearSystem> {
     let speeds = speed_motions(model)?;
+    let bodies = kinematics::body_motions(model)?;
+    let resultants = forces::resultants(model, actions, &bodies)?;
     let momenta = mass::momenta(model, &speeds)?;
     let mut rebuilt = formed.clone();
     let mass = mass::mass_matrix(model, &speeds, &momenta);
-    for (row, entries) in rebuilt.a.iter_mut().zip(mass) {
+    let rests = forces::rests(model, &resultants, &speeds);
+    let rows = rebuilt.a.iter_mut().zip(&mut rebuilt.b);
+    for ((row, b), (entries, rest)) in rows.zip(mass.into_iter().zip(rests)) {
         for (entry, m) in row.iter_mut().zip(entries) {
             *entry = -m;
         }
+        *b = -rest;
     }
     Some(rebuilt)
 }
