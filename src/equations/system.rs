@@ -297,7 +297,9 @@ pub fn derive_at<'p>(
     budget::step("assembling the linear system (step 5)");
     let system = assemble(&rows, &unknowns)?;
     let composite_system = match (method, form) {
-        (Method::Kane, Form::Numeric) => super::composite::system(&model, &actions, &system),
+        (Method::Kane, Form::Numeric) => {
+            super::composite::system(&model, &actions, &system, &reaction_joints)
+        }
         _ => None,
     };
     Ok(Derivation {

@@ -1,9 +1,10 @@
-//! Kane's rows for the numbers by composite bodies: the mass matrix as the
+//! Kane's linear system for the numbers by composite bodies: the mass matrix as the
 //! composite-rigid-body algorithm builds it ([`mass`]), and what the rows hold besides the
 //! q'' from the bodies' forces carried in from the leaves ([`forces`]), as the recursive
 //! Newton–Euler algorithm does, on each body's motion built on its parent's
-//! ([`kinematics`]). Kane's rows sum over the bodies for every entry, n³ work for the mass
-//! matrix and n² for the rest; these are n² and n.
+//! ([`kinematics`]); the rows of requested reactions likewise ([`reactions`]). Kane's rows
+//! sum over the bodies for every entry, n³ work for the mass matrix and n² for the rest;
+//! these are n² and n.
 //!
 //! Both rest on one fact. With the rates as the speeds and nothing but the tree's joints
 //! constraining the motion, each speed `r` of joint `i` moves the bodies outboard of `i`
@@ -23,6 +24,7 @@
 pub mod forces;
 pub mod kinematics;
 pub mod mass;
+pub mod reactions;
 
 use crate::equations::LinearSystem;
 use crate::mechanics::frames::Matrix;
@@ -35,9 +37,15 @@ use crate::symbolic::diff::time_derivative;
 use crate::symbolic::print::latex_name;
 use crate::symbolic::Expr;
 
-/// Kane's linear system as `formed` from the rows, with the rows of the speeds rebuilt by
-/// composite bodies. `None` where [`applies`] does not hold.
-pub fn system(model: &Model, actions: &[Action], formed: &LinearSystem) -> Option<LinearSystem> {
+/// Kane's linear system as `formed` from the rows, with the reactions of `reaction_joints`
+/// (tree joints, in the order of their rows), every row rebuilt by composite bodies. `None`
+/// where [`applies`] does not hold.
+pub fn system(
+    model: &Model,
+    actions: &[Action],
+    formed: &LinearSystem,
+    reaction_joints: &[usize],
+) -> Option<LinearSystem> {
     let speeds = speed_motions(model)?;
     let bodies = kinematics::body_motions(model)?;
     let resultants = forces::resultants(model, actions, &bodies)?;
@@ -51,6 +59,22 @@ pub fn system(model: &Model, actions: &[Action], formed: &LinearSystem) -> Optio
             *entry = -m;
         }
         *b = -rest;
+    }
+    let reaction_rows = reactions::rows(
+        model,
+        actions,
+        (&speeds, &momenta, &resultants),
+        reaction_joints,
+        &formed.unknowns,
+    )?;
+    let n = speeds.iter().map(Vec::len).sum::<usize>();
+    if n + reaction_rows.len() != formed.a.len() {
+        // A row of another kind (a constraint's, which `applies` rules out).
+        return None;
+    }
+    for (index, (a, b)) in reaction_rows.into_iter().enumerate() {
+        rebuilt.a[n + index] = a;
+        rebuilt.b[n + index] = b;
     }
     Some(rebuilt)
 }
@@ -148,6 +172,19 @@ fn leaves_first(model: &Model) -> Vec<usize> {
     let problem = model.problem;
     let order = model.order.iter().rev();
     order.filter_map(|&body| problem.joint_of(body)).collect()
+}
+
+/// The joints from joint `j` in to the root, `j` first.
+fn path_in(model: &Model, j: usize) -> Vec<usize> {
+    let problem = model.problem;
+    let mut path = vec![j];
+    while let Some(inner) = path
+        .last()
+        .and_then(|&at| problem.joint_of(problem.joints[at].parent))
+    {
+        path.push(inner);
+    }
+    path
 }
 
 /// The point of joint `c` (on its parent) from the point `from` of the same body, in that
