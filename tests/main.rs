@@ -5,6 +5,7 @@ mod answers;
 mod bicycle;
 mod checks;
 mod compact;
+mod composite;
 mod constraints;
 mod draw;
 mod invalid;

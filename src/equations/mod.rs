@@ -1,6 +1,7 @@
 //! Step 5: Newton-Euler, the Motion Law and Kane's method -> a linear system in the q''
 //! and the reactions.
 
+pub mod composite;
 pub mod energy;
 pub mod kane;
 pub mod newton_euler;

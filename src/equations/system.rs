@@ -74,6 +74,13 @@ pub struct Derivation<'p> {
     pub rejected: Vec<Rejected>,
     /// The assembled system.
     pub system: LinearSystem,
+    /// The same system with Kane's rows rebuilt by composite bodies, for evaluation (see
+    /// [`super::composite`]): equal numbers, the mass matrix for n² work where `system`'s
+    /// rows take n³, the rest for n where they take n². Only for Kane's method in
+    /// [`Form::Numeric`], where it applies. Derivatives are taken of `system`: these rows
+    /// nest named quantities through the whole tree, and a derivative multiplies a named
+    /// quantity out.
+    pub composite_system: Option<LinearSystem>,
     /// Joints whose reactions are unknowns of the system.
     pub reaction_joints: Vec<usize>,
 }
@@ -289,6 +296,12 @@ pub fn derive_at<'p>(
     }
     budget::step("assembling the linear system (step 5)");
     let system = assemble(&rows, &unknowns)?;
+    let composite_system = match (method, form) {
+        (Method::Kane, Form::Numeric) => {
+            super::composite::system(&model, &actions, &system, &reaction_joints)
+        }
+        _ => None,
+    };
     Ok(Derivation {
         model,
         method,
@@ -297,6 +310,7 @@ pub fn derive_at<'p>(
         rows,
         rejected,
         system,
+        composite_system,
         reaction_joints,
     })
 }

@@ -182,7 +182,7 @@ fn derivative(c: &Components) -> Option<Components> {
 }
 
 /// For every unknown its coefficient in each component, and what is left.
-pub(super) fn split(c: &Components, unknowns: &[Symbol]) -> Option<(Vec<Components>, Components)> {
+pub fn split(c: &Components, unknowns: &[Symbol]) -> Option<(Vec<Components>, Components)> {
     let mut by_unknown: Vec<Components> =
         vec![std::array::from_fn(|_| Expr::zero()); unknowns.len()];
     let mut rest: Components = std::array::from_fn(|_| Expr::zero());

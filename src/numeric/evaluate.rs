@@ -25,6 +25,13 @@ struct ReactionSlot {
     components: Vec<ReactionComponentSlot>,
 }
 
+/// Below this many operations a system by composite bodies is compared with the rows as
+/// formed, and the shorter program kept: a planar chain of two links writes its rows whole
+/// in a few dozen operations (the angle sums keep `cos(q1 + q2)` one factor), a handful fewer
+/// than by composite bodies. Past a few hundred the composite rows are the shorter (five
+/// links in the plane: 359 operations against 506), and compiling both would cost time.
+const SMALL_PROGRAM: usize = 400;
+
 /// A derivation compiled for fast, repeated evaluation.
 #[derive(Clone, Debug)]
 pub struct Compiled {
@@ -183,17 +190,16 @@ impl Lazy {
 }
 
 impl Compiled {
-    /// Compiles the system, the requested reactions and the energies of a derivation.
+    /// Compiles the system, the requested reactions and the energies of a derivation: the
+    /// system by composite bodies where the derivation has it, unless it is small and the
+    /// rows as formed compile shorter (see [`SMALL_PROGRAM`]).
     pub fn new(derivation: &Derivation) -> Compiled {
         let model = &derivation.model;
         let problem = model.problem;
-        let system = &derivation.system;
-        let n = system.unknowns.len();
-        let mut outputs: Vec<Expr> = Vec::with_capacity(n * n + n + 8);
-        for row in &system.a {
-            outputs.extend(row.iter().cloned());
-        }
-        outputs.extend(system.b.iter().cloned());
+        let formed = &derivation.system;
+        let n = formed.unknowns.len();
+        // The reaction directions come after A and b, whichever system gives those.
+        let mut directions: Vec<Expr> = Vec::new();
         let mut reactions = Vec::new();
         for &j in &problem.find_reactions {
             let joint = &model.sites[j];
@@ -205,23 +211,45 @@ impl Compiled {
                     .components_in(joint.parent, &model.frames);
                 components.push(ReactionComponentSlot {
                     is_force: component.kind == ComponentKind::Force,
-                    unknown: system.unknowns.iter().position(|u| *u == symbol),
-                    direction_output: outputs.len(),
+                    unknown: formed.unknowns.iter().position(|u| *u == symbol),
+                    direction_output: n * n + n + directions.len(),
                 });
-                outputs.extend(direction);
+                directions.extend(direction);
             }
             reactions.push(ReactionSlot {
                 joint: joint.name.clone(),
                 components,
             });
         }
+        let inputs = input_symbols(problem);
+        let compile = |system: &crate::equations::LinearSystem| {
+            let mut outputs: Vec<Expr> = system.a.iter().flatten().cloned().collect();
+            outputs.extend(system.b.iter().cloned());
+            outputs.extend(directions.iter().cloned());
+            Program::compile(&inputs, &outputs)
+        };
+        let program = match &derivation.composite_system {
+            None => compile(formed),
+            Some(composite) => {
+                let by_composite = compile(composite);
+                if by_composite.operation_count() < SMALL_PROGRAM {
+                    let as_formed = compile(formed);
+                    if as_formed.operation_count() < by_composite.operation_count() {
+                        as_formed
+                    } else {
+                        by_composite
+                    }
+                } else {
+                    by_composite
+                }
+            }
+        };
         // The energies are a program of their own: they are not part of A and b.
         let energy = Lazy {
-            inputs: input_symbols(problem),
+            inputs,
             outputs: [energy::kinetic(model), energy::potential(model)],
             program: std::cell::OnceCell::new(),
         };
-        let program = Program::compile(&input_symbols(problem), &outputs);
         let drives = model
             .constraints
             .prescribed
@@ -229,7 +257,7 @@ impl Compiled {
             .map(|&p| {
                 let name = problem.coordinates[p].name.clone();
                 let symbol = crate::mechanics::constraints::drive_symbol(&name);
-                (name, system.unknowns.iter().position(|u| *u == symbol))
+                (name, formed.unknowns.iter().position(|u| *u == symbol))
             })
             .collect();
         // Drives, and constraints that change with time, do work: a prescribed `w*t` has
@@ -252,7 +280,7 @@ impl Compiled {
             program,
             reactions,
             energy,
-            outputs: outputs.len(),
+            outputs: n * n + n + directions.len(),
             scratch: std::cell::RefCell::new(Vec::new()),
             speeds: SpeedProgram::new(problem),
             conservative: !drives_work && problem.loads.iter().all(|l| is_conservative(&l.kind)),
