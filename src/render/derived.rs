@@ -8,7 +8,7 @@ use super::context::{
 use super::long::{coefficient_form, LONG_EQUATION};
 use crate::equations::{Derivation, Method};
 use crate::mechanics::{Model, Vector};
-use crate::numeric::format::fixed;
+use crate::numeric::format::{fixed, fixed_or_zero};
 use crate::pipeline::Worked;
 use crate::plan::forces::ActionKind;
 use crate::plan::rows::{Equation, Sum};
@@ -84,7 +84,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .enumerate()
         .map(|(i, c)| InitialValue {
             name_tex: latex(&problem.coordinate_expr(i, 2)),
-            value: fixed(initial.accelerations[i]),
+            value: fixed_or_zero(initial.accelerations[i]),
             unit_tex: match c.kind {
                 crate::problem::CoordinateKind::Angle => super::units::unit_tex("rad/s^2"),
                 crate::problem::CoordinateKind::Distance => super::units::unit_tex("m/s^2"),

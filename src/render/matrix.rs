@@ -9,7 +9,7 @@ use super::prepare::printed_width;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::symbolic::collect::{latex_collected, latex_factored};
-use crate::symbolic::format::fixed;
+use crate::symbolic::format::fixed_or_zero;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::Expr;
 
@@ -447,9 +447,7 @@ fn value_tables(
         if e.is_zero() {
             return "0".to_string();
         }
-        // A sum that cancels at this state prints as 0, not as its rounding error.
-        let v = initial(e);
-        math_number(&fixed(if v.abs() < 1e-12 { 0.0 } else { v }))
+        math_number(&fixed_or_zero(initial(e)))
     };
     let a_values: Vec<Vec<String>> = a
         .iter()

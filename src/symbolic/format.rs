@@ -32,6 +32,13 @@ pub fn fixed(x: f64) -> String {
     trim_zeros(&format!("{rounded:.decimals$}"))
 }
 
+/// `x` as [`fixed`] writes it, or `0` below 1e-12 in magnitude: a value that cancels at a
+/// state (an acceleration of a system in equilibrium, an entry of a matrix) prints as 0,
+/// not as its rounding error.
+pub fn fixed_or_zero(x: f64) -> String {
+    fixed(if x.abs() < 1e-12 { 0.0 } else { x })
+}
+
 fn trim_zeros(text: &str) -> String {
     if text.contains('.') {
         text.trim_end_matches('0').trim_end_matches('.').to_string()
