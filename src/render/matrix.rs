@@ -18,14 +18,13 @@ const MOST_COLUMNS: usize = 6;
 /// How many symbols the whole table may print across: about the width of the page.
 const TABLE_WIDTH: usize = 70;
 /// The most characters of LaTeX the entries may print in all (about five pages). Past it,
-/// the longest entries are given by their values at the initial state until the formulas
-/// left fit [`BY_VALUE_BUDGET`]: the rows of step 5 define each entry, and a large system
-/// is solved by its numbers anyway.
+/// A and b are given as tables of their values at the initial state: the rows of step 5
+/// define each entry, and a large system is solved by its numbers anyway.
 const ENTRIES_BUDGET: usize = 24_000;
-
 /// An entry this wide or narrower (in printed symbols) stays in a table by name.
 const INLINE_ENTRY: usize = 4;
-/// An entry this long or shorter is printed as a formula whenever the budget allows.
+/// An entry longer than this keeps a display of its own when a row's entries are printed
+/// one after another.
 const SHORT_ENTRY: usize = 400;
 
 /// The most columns of numbers a table by value prints across the page; a wider system is
