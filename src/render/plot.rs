@@ -294,7 +294,12 @@ pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series]) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
-    text.push_str("  width=12cm, height=5cm, grid=major,\n  legend pos=outer north east,\n]\n");
+    text.push_str("  width=12cm, height=5cm, grid=major,\n  legend pos=outer north east,\n");
+    // A legend of many lines in two columns, small, so that it is no taller than the plot.
+    if series.len() > 6 {
+        text.push_str("  legend columns=2, legend style={font=\\footnotesize},\n");
+    }
+    text.push_str("]\n");
     for line in series {
         let finite: Vec<(f64, f64)> = line
             .points
