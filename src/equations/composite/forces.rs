@@ -11,7 +11,7 @@
 //! every speed's partial velocities.
 
 use super::kinematics::BodyMotion;
-use super::{
+use super::tree::{
     carried_by, carried_in, leaves_first, named_components, named_vector, sum, SpeedMotion,
 };
 use crate::mechanics::frames::apply;

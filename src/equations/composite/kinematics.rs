@@ -17,7 +17,7 @@
 //! Gravity enters as an acceleration `−g` of the ground: every body's inertia force then
 //! carries its weight, `−m (a − g)`, and no body needs `g` in its own unit vectors.
 
-use super::{apply, derivative, named_components, named_dcm, sum};
+use super::tree::{apply, derivative, named_components, named_dcm, sum};
 use crate::mechanics::on_parent::split;
 use crate::mechanics::vector::{cross3, zero3, Components};
 use crate::mechanics::Model;
@@ -95,7 +95,7 @@ fn body_motion(
                 &sum(&apply(&turn, &from.alpha), &turning_rate),
                 &cross3(&carried, &relative),
             );
-            let r = super::joint_offset(model, k, &model.joints[*p].child_at);
+            let r = super::tree::joint_offset(model, k, &model.joints[*p].child_at);
             let w = &from.omega;
             let coriolis = cross3(w, &sliding_rate).map(|c| &Expr::int(2) * &c);
             let at_joint = [

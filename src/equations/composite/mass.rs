@@ -14,7 +14,7 @@
 //! in); towards the root, `H_s(O_p) = H_s(O_i) + (O_i − O_p) × L_s`, one shift per joint.
 //! An entry is one dot product, where the rows sum over the bodies.
 
-use super::{
+use super::tree::{
     apply, carried_by, carried_in, leaves_first, named, named_components, named_dcm, named_vector,
     SpeedMotion, AXES,
 };
@@ -166,7 +166,7 @@ fn composite(model: &Model, j: usize, outer: &[Option<Composite>]) -> Composite 
         let grandchild = problem.joints[c].child;
         let turn = named_dcm(model, child, grandchild);
         // The carried joint's point from this one's, in the child's unit vectors.
-        let offset = super::joint_offset(model, c, joint_point);
+        let offset = super::tree::joint_offset(model, c, joint_point);
         let moment = apply(&turn, &carried.first_moment);
         masses.push(carried.mass.clone());
         first_moments.push(moment.clone());

@@ -13,8 +13,8 @@
 
 use super::forces::{moments_about_joint, Resultant};
 use super::mass::{Composite, Momenta};
-use super::SpeedMotion;
-use super::{apply, in_frame, joint_offset, named_components, named_dcm, path_in, sum};
+use super::tree::SpeedMotion;
+use super::tree::{apply, in_frame, joint_offset, named_components, named_dcm, path_in, sum};
 use crate::mechanics::joints::ComponentKind;
 use crate::mechanics::vector::{cross3, Components};
 use crate::mechanics::{Model, Vector};
