@@ -62,29 +62,22 @@ pub fn merged(list: Vec<Named>, speeds: &[String], plain: &[String]) -> Vec<Name
 mod tests {
     use super::*;
 
-    fn named(definition: &str, note: &str) -> Named {
-        Named {
-            definition_tex: definition.into(),
-            note: note.into(),
-        }
-    }
-
     #[test]
     fn the_same_rule_for_several_speeds_is_written_once() {
         let speeds = ["q_{1}", "q_{2}", "q_{3}"].map(String::from);
         let plain = ["q1", "q2", "q3"].map(String::from);
         let list = vec![
-            named(
+            Named::new(
                 "w_{q_{1},x} = c w'_{q_{1},x}",
                 "partial of B for q1', along x",
             ),
-            named("w_{q_{1},y} = s", "partial of B for q1', along y"),
-            named(
+            Named::new("w_{q_{1},y} = s", "partial of B for q1', along y"),
+            Named::new(
                 "w_{q_{2},x} = c w'_{q_{2},x}",
                 "partial of B for q2', along x",
             ),
-            named("w_{q_{3},x} = s_{3}", "partial of B for q3', along x"),
-            named("a = b", "something else"),
+            Named::new("w_{q_{3},x} = s_{3}", "partial of B for q3', along x"),
+            Named::new("a = b", "something else"),
         ];
         let merged = merged(list, &speeds, &plain);
         let texts: Vec<&str> = merged.iter().map(|n| n.definition_tex.as_str()).collect();

@@ -231,6 +231,16 @@ pub struct Named {
     pub note: String,
 }
 
+impl Named {
+    /// `definition_tex` with its `note`.
+    pub fn new(definition_tex: impl Into<String>, note: impl Into<String>) -> Named {
+        Named {
+            definition_tex: definition_tex.into(),
+            note: note.into(),
+        }
+    }
+}
+
 /// One entry of a "where" list: a definition with its note, or several of one kind (the
 /// direction cosines, the partial velocities of one mass centre) under the note they share.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]

@@ -401,10 +401,7 @@ fn row_by_row(entries: Vec<MatrixEntry>) -> Vec<MatrixEntry> {
 /// What the coefficient of each kind of unknown is in each kind of row, in the partial
 /// velocities of the bodies `k` of the row's free body.
 fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
-    let rule = |note: &str, tex: &str| Named {
-        definition_tex: tex.to_string(),
-        note: note.to_string(),
-    };
+    let rule = |note: &str, tex: &str| Named::new(tex, note);
     let mut rules = Vec::new();
     let sums = |wanted: fn(&Sum) -> bool| derivation.rows.iter().any(|r| wanted(&r.sum));
     if sums(|s| matches!(s, Sum::Force)) {
@@ -442,12 +439,7 @@ fn value_tables(
     b: &[Expr],
     initial: &impl Fn(&Expr) -> f64,
 ) -> Vec<String> {
-    let value = |e: &Expr| {
-        if e.is_zero() {
-            return "0".to_string();
-        }
-        math_number(&fixed_or_zero(initial(e)))
-    };
+    let value = |e: &Expr| math_number(&fixed_or_zero(initial(e)));
     let a_values: Vec<Vec<String>> = a
         .iter()
         .map(|row| row.iter().map(value).collect())
@@ -482,11 +474,6 @@ fn whole(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Op
     if width > TABLE_WIDTH {
         return None;
     }
-    Some(table(labels, x, a, b))
-}
-
-/// `A`, `x` and `b` as matrices, and `A` and `b` as one table headed by the unknowns.
-fn table(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> WholeMatrix {
     let column = |items: &[String]| {
         format!(
             "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
@@ -494,7 +481,7 @@ fn table(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Wh
         )
     };
     let rows: Vec<String> = a.iter().map(|row| row.join(" & ")).collect();
-    WholeMatrix {
+    Some(WholeMatrix {
         a_tex: format!(
             "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
             rows.join(" \\\\ ")
@@ -502,7 +489,7 @@ fn table(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Wh
         x_tex: column(x),
         b_tex: column(b),
         table_tex: array(labels, x, a, Some(b)),
-    }
+    })
 }
 
 /// `A`'s columns `x` (and `b` last, when given) as one `array`, a column per unknown

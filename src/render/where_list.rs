@@ -82,13 +82,6 @@ fn kind(note: &str) -> String {
 mod tests {
     use super::*;
 
-    fn named(definition: &str, note: &str) -> Named {
-        Named {
-            definition_tex: definition.into(),
-            note: note.into(),
-        }
-    }
-
     #[test]
     fn a_kind_drops_the_component_and_the_speed() {
         assert_eq!(
@@ -118,9 +111,9 @@ mod tests {
     #[test]
     fn entries_of_one_kind_are_one_entry_where_the_first_stood() {
         let list = vec![
-            named("a = 1", "the direction cosine A.x · B.x"),
-            named("l = 2", "distance from A to B"),
-            named("b = 3", "the direction cosine A.y · B.x"),
+            Named::new("a = 1", "the direction cosine A.x · B.x"),
+            Named::new("l = 2", "distance from A to B"),
+            Named::new("b = 3", "the direction cosine A.y · B.x"),
         ];
         let entries = grouped(list);
         assert_eq!(entries.len(), 2);

@@ -206,25 +206,21 @@ fn item(out: &mut String, item: &Item) {
                 color(*ink)
             );
         }
-        Item::Text { at, label, ink } => {
-            let _ = writeln!(
-                out,
-                "<text x=\"{}\" y=\"{}\" fill=\"{}\">{}</text>",
-                coarse(at[0]),
-                coarse(at[1] + 4.5),
-                color(*ink),
-                label_spans(label)
-            );
-        }
+        Item::Text { .. } => text(out, item, true),
     }
 }
 
-/// A label without its colour, which the group around it gives.
-fn text(out: &mut String, item: &Item) {
-    if let Item::Text { at, label, .. } = item {
+/// A label, with its colour or (`coloured` false) without, when a group around it gives it.
+fn text(out: &mut String, item: &Item, coloured: bool) {
+    if let Item::Text { at, label, ink } = item {
+        let fill = if coloured {
+            format!(" fill=\"{}\"", color(*ink))
+        } else {
+            String::new()
+        };
         let _ = writeln!(
             out,
-            "<text x=\"{}\" y=\"{}\">{}</text>",
+            "<text x=\"{}\" y=\"{}\"{fill}>{}</text>",
             coarse(at[0]),
             coarse(at[1] + 4.5),
             label_spans(label)
@@ -361,9 +357,9 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
             continue;
         }
         let _ = writeln!(out, "<g fill=\"{}\">", color(*ink));
-        text(&mut out, t);
+        text(&mut out, t, false);
         while let Some(next) = texts.next_if(same) {
-            text(&mut out, next);
+            text(&mut out, next, false);
         }
         out.push_str("</g>\n");
     }
