@@ -19,6 +19,7 @@ mod pipeline;
 mod planner;
 mod render;
 mod robustness;
+mod rows_as_formed;
 mod snapshots_by_problem;
 mod speeds;
 mod support;

@@ -5,7 +5,7 @@ use super::context::{
     Equation as EquationView, InitialValue, Named, Plan, PlanRow, Reaction,
     Rejected as RejectedView, Solution,
 };
-use super::long::{coefficient_form, LONG_EQUATION};
+use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
 use crate::equations::{Derivation, Method};
 use crate::mechanics::{Model, Vector};
 use crate::numeric::format::{fixed, fixed_or_zero};
@@ -456,10 +456,17 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     };
     let g = &row.groups;
     let g = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].map(shown);
-    // Contact + distance + inertia forces + inertia torques, leaving out the empty groups.
+    // Contact + distance + inertia forces + inertia torques, leaving out the empty groups;
+    // a long inertia group by the names of step 4.
     let mut grouped = String::new();
-    for e in g.iter().filter(|e| !e.is_zero()) {
-        let text = group_tex(e);
+    for (k, e) in g.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
+        let inertia = k >= 2;
+        let written = group_tex(e);
+        let named = (inertia && e.terms().len() > MOST_INERTIA_TERMS)
+            .then(|| named_inertia_group(derivation, row, k == 3))
+            .flatten()
+            .filter(|named| named.len() < written.len());
+        let text = named.unwrap_or(written);
         match (grouped.is_empty(), text.strip_prefix('-')) {
             (true, _) => grouped = text,
             (false, Some(rest)) => grouped.push_str(&format!(" - {rest}")),

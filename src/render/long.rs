@@ -60,15 +60,21 @@ pub fn by_rates(e: &Expr) -> Vec<(Expr, Expr)> {
         .collect()
 }
 
-/// A row of the Motion Law or of Newton–Euler in vector form, for a row too long to print
-/// as formed: the direction dotted with the external forces (or their moments about the
-/// point) and each body's inertia force (and inertia torque), every one named as in steps 2
-/// and 4. Empty for rows that are not sums of forces or moments.
-pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
+/// The inertia terms of a row written by the names of steps 2 and 4: the sum over the
+/// bodies of the free body (empty for one body), each body's inertia force `m a*` (its
+/// moment about the row's point in a moment row) and its inertia torque. None for rows
+/// that are not sums of forces or moments.
+struct NamedInertia {
+    sum: String,
+    force: String,
+    torque: Option<String>,
+}
+
+fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia> {
+    if !matches!(row.sum, Sum::Force | Sum::Moment { .. }) {
+        return None;
+    }
     let problem = derivation.model.problem;
-    let Some(direction) = &row.direction else {
-        return String::new();
-    };
     let bodies: Vec<String> = row
         .free_body
         .iter()
@@ -90,7 +96,7 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
     let mass = if many {
         "m_{k}".to_string()
     } else {
-        let m = &derivation.model.bodies[row.free_body[0].0].mass;
+        let m = &derivation.model.bodies[row.free_body.first()?.0].mass;
         if m.terms().len() > 1 {
             format!("\\left({}\\right)", latex(m))
         } else {
@@ -98,18 +104,72 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
         }
     };
     let inertia_force = format!("{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{k}^*}}");
-    let inside = match &row.sum {
-        Sum::Force => format!("\\sum \\mathbf{{F}} - {sum}{inertia_force}"),
+    match &row.sum {
+        Sum::Force => Some(NamedInertia {
+            sum,
+            force: inertia_force,
+            torque: None,
+        }),
         Sum::Moment { point, .. } => {
             let point = super::matrix::point_tex(point);
-            let torque = format!(
-                "\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}} + \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
-            );
-            let inertia =
-                format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force} + {torque}");
-            format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {inertia} \\right)")
+            let mut torque =
+                format!("\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}}");
+            if !derivation.model.is_planar() {
+                // In a plane ω × I·ω is normal to ω, so it has no part along the plane's normal.
+                torque.push_str(&format!(
+                    " + \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
+                ));
+            }
+            Some(NamedInertia {
+                sum,
+                force: format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force}"),
+                torque: Some(torque),
+            })
         }
-        _ => return String::new(),
+        _ => None,
+    }
+}
+
+/// A row of the Motion Law or of Newton–Euler in vector form, for a row too long to print
+/// as formed: the direction dotted with the external forces (or their moments about the
+/// point) and each body's inertia force (and inertia torque), every one named as in steps 2
+/// and 4. Empty for rows that are not sums of forces or moments.
+pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
+    let (Some(direction), Some(named)) = (&row.direction, named_inertia(derivation, row)) else {
+        return String::new();
+    };
+    let NamedInertia { sum, force, torque } = named;
+    let inside = match (&row.sum, torque) {
+        (Sum::Moment { point, .. }, Some(torque)) => {
+            let point = super::matrix::point_tex(point);
+            format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {force} + {torque} \\right)")
+        }
+        _ => format!("\\sum \\mathbf{{F}} - {sum}{force}"),
     };
     format!("{} \\cdot \\left( {inside} \\right) = 0", direction.latex)
+}
+
+/// The most terms an inertia group of a row as formed is written out with; a longer one
+/// is written by the names of step 4, as `− m a^{B*} · d̂`, since multiplied out it
+/// repeats step 4's acceleration in the row's direction and hides the forces.
+pub const MOST_INERTIA_TERMS: usize = 3;
+
+/// The inertia force (`torque` false) or inertia torque of a row as formed, by name and
+/// with its sign: `- m\, {}^{N}\mathbf{a}^{B^*} \cdot \hat{\mathbf{x}}`. None where the row
+/// has no direction or is not a sum of forces or moments.
+pub fn named_inertia_group(
+    derivation: &Derivation,
+    row: &Equation,
+    torque: bool,
+) -> Option<String> {
+    let direction = row.direction.as_ref()?;
+    let named = named_inertia(derivation, row)?;
+    let term = if torque { named.torque? } else { named.force };
+    let single = !term.contains(" + ") && !term.contains("\\times") && !term.contains("\\cdot");
+    let body = if single {
+        term
+    } else {
+        format!("\\left( {term} \\right)")
+    };
+    Some(format!("- {}{body} \\cdot {}", named.sum, direction.latex))
 }

@@ -1,0 +1,98 @@
+//! Step 5's rows as formed: the forces as the free-body diagram gives them, and a long
+//! inertia force or torque by the names of step 4 instead of multiplied out, as a textbook
+//! writes `ΣF·x̂ − m a*·x̂ = 0` before simplifying it.
+
+use crate::support::{problem, run};
+
+/// `mbd-tutor explain NAME --method METHOD --format FORMAT` on standard output.
+fn explain(name: &str, method: &str, format: &str) -> String {
+    let path = problem(name);
+    let out = run(&[
+        "explain".as_ref(),
+        path.as_os_str(),
+        "--method".as_ref(),
+        method.as_ref(),
+        "--format".as_ref(),
+        format.as_ref(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// The row as formed under the Markdown heading that starts with `heading`: the first
+/// display after it.
+fn row_as_formed(markdown: &str, heading: &str) -> String {
+    let start = markdown
+        .find(heading)
+        .unwrap_or_else(|| panic!("no heading {heading}"));
+    let rest = &markdown[start..];
+    let open = rest.find("$$\n").expect("a display") + 3;
+    let close = rest[open..].find("\n$$").expect("its end");
+    rest[open..open + close].to_string()
+}
+
+#[test]
+fn a_long_inertia_force_is_written_by_the_acceleration_of_step_4() {
+    let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
+    // By hand: the pin forces at P7 and P8 in link 7's frame, gravity along x̂ of link 7
+    // (whose angle is q1 + … + q7), and the inertia force −m a*·x̂, whose a* step 4 gives.
+    let heading =
+        "**19. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}$**";
+    assert_eq!(
+        row_as_formed(&markdown, heading),
+        "\\left[-F^{P_{8}}_{x} + F^{P_{7}}_{x} c_{7} + F^{P_{7}}_{y} s_{7}\\right] - g m s_{1\\ldots 7} - m\\, {}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}} = 0"
+    );
+    assert!(
+        markdown.contains("{}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} = "),
+        "step 4 defines the acceleration the row names"
+    );
+}
+
+#[test]
+fn a_short_inertia_force_stays_multiplied_out() {
+    let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
+    // Link 1 turns about a fixed pin: m a*·x̂ = m (L/2) q̈1 in one term.
+    let heading =
+        "**1. $\\mathrm{link}_{1}\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}}$**";
+    assert_eq!(
+        row_as_formed(&markdown, heading),
+        "\\left[-F^{P_{2}}_{x} + F^{O}_{x} c_{1} + F^{O}_{y} s_{1}\\right] - g m s_{1} - \\frac{L m \\ddot{q}_{1}}{2} = 0"
+    );
+}
+
+#[test]
+fn a_planar_inertia_torque_is_alpha_dot_i_alone() {
+    let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
+    // In a plane ω × I·ω is normal to ω, so only α·I has a part along n̂z.
+    let heading = "**21. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{M}_{\\mathrm{link}_{7}^{*}} \\cdot \\hat{\\mathbf{n}}_{z}$**";
+    assert_eq!(
+        row_as_formed(&markdown, heading),
+        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - \\left( \\boldsymbol{\\alpha}^{\\mathrm{link}_{7}} \\cdot \\mathbf{I}^{\\mathrm{link}_{7}} \\right) \\cdot \\hat{\\mathbf{n}}_{z} = 0"
+    );
+}
+
+#[test]
+fn a_spatial_inertia_torque_keeps_the_gyroscopic_term() {
+    let markdown = explain("validation/all-joints-3d", "newton-euler", "markdown");
+    let torque = "- \\left( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} \\right) \\cdot \\hat{\\mathbf{d}}_{x} = 0";
+    assert!(markdown.contains(torque), "no row ends in {torque}");
+}
+
+#[test]
+fn a_group_names_its_inertia_forces_by_a_sum_over_its_bodies() {
+    let markdown = explain("validation/ten-link-chain", "motion-law", "markdown");
+    // The Motion Law's free body link7 + … + link10 about P7: the moments of the four
+    // bodies' inertia forces, each r × m a* with its a* from step 4.
+    let named = "- \\sum_{k \\in \\{";
+    let moment = "\\left( \\mathbf{r}^{P_{7} k^*} \\times m_{k}\\, {}^{N}\\mathbf{a}^{k^*} \\right) \\cdot \\hat{\\mathbf{n}}_{z}";
+    assert!(
+        markdown
+            .lines()
+            .any(|l| l.contains(named) && l.contains(moment)),
+        "no row names the moments of its bodies' inertia forces"
+    );
+}
