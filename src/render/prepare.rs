@@ -170,10 +170,22 @@ pub fn register_filters(tera: &mut tera::Tera) {
         |value: &Value, args: &HashMap<String, Value>| {
             let latex = tera::try_get_value!("tex_display", "value", String, value);
             let width = args.get("width").and_then(Value::as_u64).unwrap_or(60) as usize;
-            Ok(Value::String(displays(&break_into_lines(&latex, width))))
+            let lines = break_into_lines(&latex, width);
+            let broken = displays(&lines);
+            if lines.len() > 1 && latex.len() <= MEASURED_AT_MOST {
+                // The count of symbols is a guess: LaTeX measures whether the equation fits
+                // one line after all, and sets it whole if so.
+                return Ok(Value::String(format!(
+                    "\\fitdisplay{{{latex}}}{{\n{broken}\n}}"
+                )));
+            }
+            Ok(Value::String(broken))
         },
     );
 }
+
+/// The longest LaTeX a broken display is measured whole for: a longer one cannot fit a line.
+const MEASURED_AT_MOST: usize = 500;
 
 /// How many symbols a line of displayed math holds in the HTML page.
 const HTML_WIDTH: usize = 80;
