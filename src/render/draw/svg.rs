@@ -28,9 +28,14 @@ fn decimals(x: f64, places: usize) -> String {
     }
 }
 
+/// A colour as `#rgb` where each channel's two digits are alike (`#222`), else `#rrggbb`.
 fn color(ink: Ink) -> String {
     let (r, g, b) = ink.rgb();
-    format!("#{r:02x}{g:02x}{b:02x}")
+    if [r, g, b].iter().all(|c| c % 17 == 0) {
+        format!("#{:x}{:x}{:x}", r / 17, g / 17, b / 17)
+    } else {
+        format!("#{r:02x}{g:02x}{b:02x}")
+    }
 }
 
 fn points(ps: &[P2]) -> String {
@@ -247,19 +252,19 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     let _ = writeln!(out, "<title>{}</title>", xml(title));
     let _ = writeln!(
         out,
-        "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>",
+        "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#fff\"/>",
         num(picture.width),
         num(picture.height)
     );
     out.push_str("<g class=\"shapes\" fill=\"none\">\n");
     shapes(&mut out, &picture.items);
     // Every point's circle has the same outline, given once.
-    out.push_str("</g>\n<g class=\"points\" stroke=\"#222222\" stroke-width=\"1.2\">\n");
+    out.push_str("</g>\n<g class=\"points\" stroke=\"#222\" stroke-width=\"1.2\">\n");
     for m in &picture.marks {
         let (r, fill, class) = match m.role {
-            Role::Joint => (2.6, "#222222", "joint"),
-            Role::Center => (4.5, "#ffffff", "center"),
-            Role::Point => (2.6, "#222222", "point"),
+            Role::Joint => (2.6, "#222", "joint"),
+            Role::Center => (4.5, "#fff", "center"),
+            Role::Point => (2.6, "#222", "point"),
         };
         let _ = writeln!(
             out,
@@ -275,14 +280,14 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
             // After `z` the pen is back at the centre: the second quarter starts `m0 0`.
             let _ = writeln!(
                 out,
-                "<path d=\"M{},{}h4.5a4.5 4.5 0 0 0-4.5-4.5zm0 0h-4.5a4.5 4.5 0 0 0 4.5 4.5z\" fill=\"#222222\" stroke=\"none\"/>",
-                num(x),
-                num(y)
+                "<path d=\"M{},{}h4.5a4.5 4.5 0 0 0-4.5-4.5zm0 0h-4.5a4.5 4.5 0 0 0 4.5 4.5z\" fill=\"#222\" stroke=\"none\"/>",
+                coarse(x),
+                coarse(y)
             );
         }
     }
-    // Every arrow's line or arc has the same width, given once.
-    out.push_str("</g>\n<g class=\"arrows\" stroke-width=\"1.6\">\n");
+    // Every arrow's line or arc has the same width, and its heads no outline, given once.
+    out.push_str("</g>\n<g class=\"arrows\" stroke-width=\"1.6\" stroke=\"none\">\n");
     for a in &picture.arrows {
         let mut class = String::from("force");
         if a.couple {
@@ -302,7 +307,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         let ink = color(a.ink);
         let _ = writeln!(
             out,
-            "<g class=\"{class}\" data-kind=\"{}\" data-label=\"{}\" data-at=\"{}{}\"{sense}>",
+            "<g class=\"{class}\" data-kind=\"{}\" data-label=\"{}\" data-at=\"{}{}\"{sense} fill=\"{ink}\">",
             a.kind.name(),
             xml(&a.label.plain),
             xml(prefix),
@@ -335,11 +340,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
             }
         }
         for h in &a.heads {
-            let _ = writeln!(
-                out,
-                "<polygon points=\"{}\" fill=\"{ink}\" stroke=\"none\"/>",
-                points(h)
-            );
+            let _ = writeln!(out, "<polygon points=\"{}\"/>", points(h));
         }
         out.push_str("</g>\n");
     }
@@ -380,6 +381,14 @@ mod tests {
             fill: None,
             dashed: false,
         })
+    }
+
+    #[test]
+    fn a_colour_of_doubled_digits_is_written_short() {
+        assert_eq!(color(Ink::Black), "#222");
+        assert_eq!(color(Ink::White), "#fff");
+        assert_eq!(color(Ink::Weight), "#2e7d32");
+        assert_eq!(color(Ink::Grey), "#787878");
     }
 
     #[test]
