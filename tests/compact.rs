@@ -293,10 +293,29 @@ fn indices_are_sorted_as_a_reader_counts() {
     }
     assert!(!line.contains("s_{23}"));
     // In the five-link chain, s_{23} = sin(q2 + q3), ...: the sines of sums of coordinates
-    // by their indices, a run of five or more by its ends.
+    // by their indices, a run of five or more by its ends. They are many, so the handout
+    // states their rule with the first, the first of a sum and the longest as examples.
     let five = explain("five-link-chain", "markdown");
-    assert!(five.contains("$s_{23} = \\sin\\left(q_{2} + q_{3}\\right)$"));
-    assert!(five.contains("$s_{1\\ldots 5} = \\sin\\left(q_{1} + \\cdots + q_{5}\\right)$"));
+    let rule = "Abbreviations: $s$ and $c$ are the sine and cosine of the coordinate their subscript names, or of the sum of the coordinates it lists, as in $s_{1} = \\sin(q_{1})$, $s_{12} = \\sin\\left(q_{1} + q_{2}\\right)$, $s_{1\\ldots 5} = \\sin\\left(q_{1} + \\cdots + q_{5}\\right)$.";
+    assert!(five.lines().any(|l| l == rule), "no line {rule}");
+    assert!(
+        five.contains("s_{23}"),
+        "s_{{23}} follows the rule unlisted"
+    );
+}
+
+#[test]
+fn a_few_abbreviations_are_listed_one_by_one() {
+    // The bicycle's ten sines and cosines, each of one angle, are listed whole.
+    let markdown = explain("validation/whipple-bicycle", "markdown");
+    let line = markdown
+        .lines()
+        .find(|l| l.starts_with("Abbreviations:"))
+        .expect("abbreviations");
+    assert!(
+        line.starts_with("Abbreviations: $s_{\\psi} = \\sin(\\psi)$, $c_{\\psi} = \\cos(\\psi)$")
+    );
+    assert_eq!(line.matches(" = ").count(), 10, "{line}");
 }
 
 #[test]

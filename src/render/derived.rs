@@ -68,7 +68,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let quoted = serde_json::to_string(name).unwrap_or_default();
         printed.contains(quoted.trim_matches('"'))
     };
-    solution.abbreviations = abbreviations
+    let printed: Vec<Named> = abbreviations
         .into_iter()
         .filter(|a| in_print(&a.name))
         .map(|a| Named {
@@ -76,6 +76,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             note: String::new(),
         })
         .collect();
+    (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
     solution.dependent_speeds = super::constrained::dependent_speeds(derivation, q0, rates0);
     solution.initial_values = problem
@@ -428,6 +429,33 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
             }
         })
         .collect()
+}
+
+/// The most abbreviations listed one by one; more are stated by their rule, which every one
+/// follows (`s_{12} = \sin(q_1 + q_2)`), with a few examples.
+const MOST_ABBREVIATIONS_LISTED: usize = 12;
+
+/// The abbreviations to list and whether they are examples of the rule: the first, the first
+/// of a sum and the last (the longest sum), in the list's order.
+fn abbreviation_examples(all: Vec<Named>) -> (Vec<Named>, bool) {
+    if all.len() <= MOST_ABBREVIATIONS_LISTED {
+        return (all, false);
+    }
+    let of_sum = |n: &Named| n.definition_tex.contains(" + ");
+    let picks = [
+        Some(0),
+        all.iter().position(of_sum),
+        all.len().checked_sub(1),
+    ];
+    let mut keep: Vec<usize> = picks.into_iter().flatten().collect();
+    keep.dedup();
+    let examples = all
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| keep.contains(i))
+        .map(|(_, n)| n)
+        .collect();
+    (examples, true)
 }
 
 fn group_tex(e: &Expr) -> String {

@@ -48,6 +48,7 @@ pub fn sample() -> Solution {
         force_definitions: Vec::new(),
         kinematic_definitions: Vec::new(),
         abbreviations: Vec::new(),
+        abbreviations_by_rule: false,
         plan: plan(),
         kinematics: kinematics(),
         equations: equations(),
