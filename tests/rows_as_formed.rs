@@ -96,3 +96,13 @@ fn a_group_names_its_inertia_forces_by_a_sum_over_its_bodies() {
         "no row names the moments of its bodies' inertia forces"
     );
 }
+
+#[test]
+fn a_free_body_table_gives_a_planar_inertia_torque_as_alpha_dot_i() {
+    // A planar body's inertia is a moment about the normal, along which ω lies, so
+    // ω × I·ω is zero; in space it stays.
+    let planar = explain("validation/ten-link-chain", "newton-euler", "markdown");
+    assert!(planar.contains("| inertia: inertia torque of link4 | $-\\boldsymbol{\\alpha}^{\\mathrm{link}_{4}} \\cdot \\mathbf{I}^{\\mathrm{link}_{4}}$ | $\\text{couple}$ |"));
+    let spatial = explain("validation/all-joints-3d", "newton-euler", "markdown");
+    assert!(spatial.contains("| inertia: inertia torque of D | $-\\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} - \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D}$ | $\\text{couple}$ |"));
+}

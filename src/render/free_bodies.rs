@@ -106,15 +106,21 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
     });
     view.inertia.push(Force {
         label: format!("inertia torque of {name}"),
-        vector_tex: torque_tex(&symbol),
+        vector_tex: torque_tex(&symbol, model.is_planar()),
         point_tex: "\\text{couple}".into(),
     });
 }
 
-fn torque_tex(k: &str) -> String {
-    format!(
-        "-\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}} - \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
-    )
+/// Body `k`'s inertia torque, −α·I − ω × I·ω; in a plane −α·I alone, since there I is a
+/// moment of inertia about the normal, along which ω lies, and ω × I·ω is zero.
+fn torque_tex(k: &str, planar: bool) -> String {
+    let mut tex = format!("-\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}}");
+    if !planar {
+        tex.push_str(&format!(
+            " - \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
+        ));
+    }
+    tex
 }
 
 /// Gravity and the inertia forces and torques of every body of `set` as one row each,
@@ -141,7 +147,7 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
     });
     view.inertia.push(Force {
         label: "inertia torque of each body k".into(),
-        vector_tex: torque_tex("k"),
+        vector_tex: torque_tex("k", model.is_planar()),
         point_tex: format!("\\text{{couple}},\\; {every}"),
     });
 }
