@@ -1,25 +1,13 @@
 //! Compact equations: a spring's length, unit vector and rate are named once, so that the
 //! handout stays small enough to read and to compile, and the numbers do not change.
 
-use crate::support::{problem, run, solve_all};
+use crate::support::{problem, solve_all};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
 /// `mbd-tutor explain NAME --format FORMAT` on standard output.
 fn explain(name: &str, format: &str) -> String {
-    let path = problem(name);
-    let out = run(&[
-        "explain".as_ref(),
-        path.as_os_str(),
-        "--format".as_ref(),
-        format.as_ref(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{name}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("UTF-8")
+    crate::support::explain(name, &["--format", format])
 }
 
 /// Whether a "where" list of the Markdown solution defines `definition` (LaTeX, without

@@ -2,25 +2,9 @@
 //! inertia force or torque by the names of step 4 instead of multiplied out, as a textbook
 //! writes `ΣF·x̂ − m a*·x̂ = 0` before simplifying it.
 
-use crate::support::{problem, run};
-
 /// `mbd-tutor explain NAME --method METHOD --format FORMAT` on standard output.
 fn explain(name: &str, method: &str, format: &str) -> String {
-    let path = problem(name);
-    let out = run(&[
-        "explain".as_ref(),
-        path.as_os_str(),
-        "--method".as_ref(),
-        method.as_ref(),
-        "--format".as_ref(),
-        format.as_ref(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{name}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("UTF-8")
+    crate::support::explain(name, &["--method", method, "--format", format])
 }
 
 /// The row as formed under the Markdown heading that starts with `heading`: the first

@@ -166,3 +166,17 @@ pub fn column(columns: &[String], name: &str) -> usize {
 }
 
 pub mod mathml;
+
+/// `mbd-tutor explain problems/NAME.json ARGS…`: its standard output, failing with its stderr.
+pub fn explain(name: &str, args: &[&str]) -> String {
+    let path = problem(name);
+    let mut all = vec![std::ffi::OsStr::new("explain"), path.as_os_str()];
+    all.extend(args.iter().map(std::ffi::OsStr::new));
+    let out = run(&all);
+    assert!(
+        out.status.success(),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
