@@ -111,16 +111,10 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
     });
 }
 
-/// Body `k`'s inertia torque, −α·I − ω × I·ω; in a plane −α·I alone, since there I is a
-/// moment of inertia about the normal, along which ω lies, and ω × I·ω is zero.
+/// Body `k`'s inertia torque, −α·I − ω × I·ω (−α·I in a plane).
 fn torque_tex(k: &str, planar: bool) -> String {
-    let mut tex = format!("-\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}}");
-    if !planar {
-        tex.push_str(&format!(
-            " - \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
-        ));
-    }
-    tex
+    let terms = super::long::inertia_torque_terms(k, planar);
+    format!("-{}", terms.join(" - "))
 }
 
 /// Gravity and the inertia forces and torques of every body of `set` as one row each,

@@ -112,14 +112,7 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
         }),
         Sum::Moment { point, .. } => {
             let point = super::matrix::point_tex(point);
-            let mut torque =
-                format!("\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}}");
-            if !derivation.model.is_planar() {
-                // In a plane ω × I·ω is normal to ω, so it has no part along the plane's normal.
-                torque.push_str(&format!(
-                    " + \\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
-                ));
-            }
+            let torque = inertia_torque_terms(&k, derivation.model.is_planar()).join(" + ");
             Some(NamedInertia {
                 sum,
                 force: format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force}"),
@@ -128,6 +121,21 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
         }
         _ => None,
     }
+}
+
+/// The terms of body `k`'s inertia torque with their sign changed, α·I and ω × I·ω; in a
+/// plane α·I alone, since there I is a moment of inertia about the normal, along which ω
+/// lies, and ω × I·ω is zero.
+pub fn inertia_torque_terms(k: &str, planar: bool) -> Vec<String> {
+    let mut terms = vec![format!(
+        "\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}}"
+    )];
+    if !planar {
+        terms.push(format!(
+            "\\boldsymbol{{\\omega}}^{{{k}}} \\times \\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\omega}}^{{{k}}}"
+        ));
+    }
+    terms
 }
 
 /// A row of the Motion Law or of Newton–Euler in vector form, for a row too long to print
