@@ -90,3 +90,33 @@ fn a_free_body_table_gives_a_planar_inertia_torque_as_alpha_dot_i() {
     let spatial = explain("validation/all-joints-3d", "newton-euler", "markdown");
     assert!(spatial.contains("| inertia: inertia torque of D | $-\\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} - \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D}$ | $\\text{couple}$ |"));
 }
+
+/// The simplified row under the Markdown heading that starts with `heading`.
+fn row_simplified(markdown: &str, heading: &str) -> String {
+    let start = markdown
+        .find(heading)
+        .unwrap_or_else(|| panic!("no heading {heading}"));
+    let rest = &markdown[start..];
+    let after = rest.find("Simplified:").expect("a simplified row");
+    row_as_formed(&rest[after..], "Simplified:")
+}
+
+#[test]
+fn second_derivatives_sharing_a_coefficient_are_written_once_with_their_sum() {
+    let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
+    // By hand: about its own mass centre, link 10 (a rod, I = m L²/12) turns at
+    // q̈1 + … + q̈10; only the pin force at P10, half a length away, has a moment.
+    let heading = "**30. $\\mathrm{link}_{10}\\colon \\sum \\mathbf{M}";
+    assert_eq!(
+        row_simplified(&markdown, heading),
+        "-\\frac{L^{2} m}{12} \\left(\\ddot{q}_{1} + \\cdots + \\ddot{q}_{10}\\right) - \\frac{L c_{10}}{2} F^{P_{10}}_{x} - \\frac{L s_{10}}{2} F^{P_{10}}_{y} = 0"
+    );
+}
+
+#[test]
+fn the_plan_writes_a_run_of_second_derivatives_by_its_ends() {
+    let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
+    // Link 7's force along its x̂ holds the q̈ of links 1 to 7 and the pins at P7 and P8.
+    let row = "| $\\mathrm{link}_{7}$ | $\\sum \\mathbf{F}$ | $\\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}$ | $\\ddot{q}_{1}, \\dots, \\ddot{q}_{7}, F^{P_{7}}_{x}, F^{P_{7}}_{y}, F^{P_{8}}_{x}$ |";
+    assert!(markdown.lines().any(|l| l == row), "no plan row {row}");
+}

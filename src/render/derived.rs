@@ -326,12 +326,14 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
+/// A row's unknowns, a run such as q̈₁, …, q̈₁₀ by its ends: a ten-link row otherwise wraps
+/// in its column.
 fn unknowns_tex(unknowns: &[Symbol]) -> String {
-    unknowns
+    let items: Vec<String> = unknowns
         .iter()
         .map(|u| latex(&Expr::sym(u.clone())))
-        .collect::<Vec<_>>()
-        .join(", ")
+        .collect();
+    list_by_runs(&items, ", ", "\\dots")
 }
 
 /// Step 3: the planner's table, the rejected candidates and the counts.

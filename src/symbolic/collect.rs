@@ -7,7 +7,7 @@
 use super::build::{add, mul, pow};
 use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
-use super::print::{latex, latex_term};
+use super::print::{latex, latex_term, list_by_runs};
 use std::ops::{Mul as _, Neg as _};
 
 /// What a factor of a term is collected by, in the order the groups are printed.
@@ -74,7 +74,7 @@ pub fn latex_collected(e: &Expr) -> String {
         (None, None) => std::cmp::Ordering::Equal,
     });
     let mut out = String::new();
-    for (kind, key, coefficients) in &groups {
+    for (kind, keys, coefficients) in &sharing_coefficients(groups) {
         if kind.is_none() {
             // Constants: their sum, with its common factor out.
             let constant = add(coefficients.iter().cloned());
@@ -86,11 +86,11 @@ pub fn latex_collected(e: &Expr) -> String {
             }
             continue;
         }
-        let key_text = latex(key);
         let coefficient = add(coefficients.iter().cloned());
         if coefficient.is_zero() {
             continue;
         }
+        let key_text = keys_tex(keys);
         let text = if coefficient.terms().len() == 1 {
             let (c, rest) = coefficient.split_coefficient();
             let sign = if c.is_negative() { "-" } else { "" };
@@ -110,6 +110,41 @@ pub fn latex_collected(e: &Expr) -> String {
         "0".into()
     } else {
         out
+    }
+}
+
+/// A group to print: what it is collected by, its keys (more than one when they share a
+/// coefficient) and the terms of that coefficient.
+type Shared = (Option<Kind>, Vec<Expr>, Vec<Expr>);
+
+/// The groups with second derivatives of the same coefficient merged into the first of
+/// them, as a textbook writes −(L²m/12)(q̈₁ + ⋯ + q̈₁₀) rather than ten terms.
+fn sharing_coefficients(groups: Vec<(Option<Kind>, Expr, Vec<Expr>)>) -> Vec<Shared> {
+    let mut out: Vec<(Shared, Expr)> = Vec::new();
+    for (kind, key, coefficients) in groups {
+        let total = add(coefficients.iter().cloned());
+        let merged = (kind == Some(Kind::Acceleration) && !total.is_zero())
+            .then(|| {
+                out.iter_mut()
+                    .find(|((k, _, _), t)| *k == kind && *t == total)
+            })
+            .flatten();
+        match merged {
+            Some(((_, keys, _), _)) => keys.push(key),
+            None => out.push(((kind, vec![key], coefficients), total)),
+        }
+    }
+    out.into_iter().map(|(group, _)| group).collect()
+}
+
+/// One key as it is, several as their sum in parentheses, a run by its ends.
+fn keys_tex(keys: &[Expr]) -> String {
+    match keys {
+        [key] => latex(key),
+        _ => {
+            let items: Vec<String> = keys.iter().map(latex).collect();
+            format!("\\left({}\\right)", list_by_runs(&items, " + ", "\\cdots"))
+        }
     }
 }
 
