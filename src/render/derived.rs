@@ -539,7 +539,8 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     if let (Sum::Generalized { .. }, Some(r)) = (&row.sum, super::kane::row_number(derivation, row))
     {
         // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
-        (active_tex, inertia_tex) = super::kane::generalized_forces(&row.groups, r, shown);
+        (active_tex, inertia_tex) =
+            super::kane::generalized_forces(&row.groups, r, !by_name, shown);
         grouped_tex = String::new();
         (label_tex, label) = if r <= problem.coordinates.len() {
             (

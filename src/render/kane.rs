@@ -100,11 +100,17 @@ pub fn row_number(derivation: &Derivation, row: &Equation) -> Option<usize> {
         .map(|r| r + 1)
 }
 
+/// The most characters of LaTeX a generalized force is written out with when its row's sum
+/// is written out after it (about two lines): every term of it is in the sum, collected,
+/// and a long force printed twice doubles the row.
+const LONGEST_BESIDE_THE_SUM: usize = 400;
+
 /// `F_r = …` and `F_r^* = …` of Kane's row `r`, simplified; each written as its definition
-/// when it is too long to read expanded.
+/// when it is too long to read expanded, or long and `sum_written_out`.
 pub fn generalized_forces(
     groups: &Groups,
     r: usize,
+    sum_written_out: bool,
     shown: impl Fn(&Expr) -> Expr,
 ) -> (String, String) {
     let active = shown(&simplify(&add(vec![
@@ -121,6 +127,8 @@ pub fn generalized_forces(
         let text = crate::symbolic::collect::latex_collected(e);
         if text.len() > LONG_EQUATION {
             format!("{name} = {definition} \\quad \\text{{(too long to print whole)}}")
+        } else if sum_written_out && text.len() > LONGEST_BESIDE_THE_SUM {
+            format!("{name} = {definition} \\quad \\text{{(collected in their sum below)}}")
         } else {
             format!("{name} = {text}")
         }

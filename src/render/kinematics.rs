@@ -59,33 +59,38 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
                     shorter(&state.alpha, &inertia.alpha[body.0], body)
                 ),
             );
+            let (velocity_tex, acceleration_tex) = one_line_if_short(
+                format!(
+                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
+                    from_parent(model, body, Motion::Velocity, direct_velocity)
+                ),
+                format!(
+                    "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
+                    from_parent(model, body, Motion::Acceleration, direct_acceleration)
+                ),
+            );
             Kinematics {
                 body: name.to_string(),
                 omega_tex,
                 alpha_tex,
-                velocity_tex: format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
-                    from_parent(model, body, Motion::Velocity, direct_velocity)
-                ),
-                acceleration_tex: format!(
-                    "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
-                    from_parent(model, body, Motion::Acceleration, direct_acceleration)
-                ),
+                velocity_tex,
+                acceleration_tex,
             }
         })
         .collect()
 }
 
-/// ω and α in one display, `ω = …, α = …`, when together they fit most of a line, as a
-/// textbook sets a pair of short results; else each in its own (α's then empty here).
-fn one_line_if_short(omega: String, alpha: String) -> (String, String) {
+/// A pair such as ω and α, or v* and a*, in one display, `ω = …, α = …`, when together they
+/// fit most of a line, as a textbook sets a pair of short results; else each in its own
+/// (the second's then empty here).
+fn one_line_if_short(first: String, second: String) -> (String, String) {
     const MOST_OF_A_LINE: usize = 60;
-    if super::prepare::printed_width(&omega) + super::prepare::printed_width(&alpha)
+    if super::prepare::printed_width(&first) + super::prepare::printed_width(&second)
         <= MOST_OF_A_LINE
     {
-        (format!("{omega}, \\qquad {alpha}"), String::new())
+        (format!("{first}, \\qquad {second}"), String::new())
     } else {
-        (omega, alpha)
+        (first, second)
     }
 }
 
