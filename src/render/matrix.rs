@@ -32,7 +32,7 @@ const SHORT_ENTRY: usize = 400;
 const MOST_VALUE_COLUMNS: usize = 12;
 /// The most entries listed one a line; past it, the short entries of a row are printed one
 /// after another.
-const MOST_LISTED: usize = 48;
+const MOST_LISTED: usize = 16;
 
 /// A moment point as LaTeX: `O`, or `A^{*}` for the mass centre `A*`.
 pub fn point_tex(point: &str) -> String {
