@@ -133,7 +133,11 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .iter_mut()
             .find(|b| b.name == drawing.free_body)
         {
-            body.figure = drawing.figure();
+            body.figure = if super::free_bodies::table_is_narrow(body) {
+                drawing.figure_beside_a_table()
+            } else {
+                drawing.figure()
+            };
         }
     }
     super::simulation::simulation(solution, problem, &worked.simulation);

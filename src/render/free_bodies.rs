@@ -155,3 +155,21 @@ fn times_mass(g: &str) -> String {
         _ => format!("m_{{k}} \\left({g}\\right)"),
     }
 }
+
+/// The most symbols a row of a free body's table may print in its vector and point columns
+/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](super::draw::tikz::BESIDE_A_TABLE)
+/// in small type: a chain link's pin forces in two components.
+const NARROW_TABLE: usize = 36;
+
+/// Whether the free body's table of forces is narrow enough to sit beside its picture.
+pub fn table_is_narrow(body: &FreeBody) -> bool {
+    let width = |tex: &str| super::prepare::printed_width(tex);
+    let (vectors, points): (Vec<usize>, Vec<usize>) =
+        [&body.contact, &body.distance, &body.inertia]
+            .into_iter()
+            .flatten()
+            .map(|f| (width(&f.vector_tex), width(&f.point_tex)))
+            .unzip();
+    let widest = |w: &[usize]| w.iter().copied().max().unwrap_or(0);
+    widest(&vectors) + widest(&points) <= NARROW_TABLE
+}

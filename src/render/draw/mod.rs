@@ -44,18 +44,35 @@ impl Drawing {
 
     /// The picture as a `tikzpicture`.
     pub fn tikz(&self) -> String {
-        tikz::export(&self.picture)
+        tikz::export(&self.picture, tikz::PAGE_SIZE)
     }
 
     /// The picture to embed in a page: its ids prefixed by its name, so that a page of
     /// several pictures keeps them unique.
     pub fn figure(&self) -> crate::render::context::Figure {
+        self.figure_in(tikz::PAGE_SIZE)
+    }
+
+    /// The picture to embed in a page beside a narrow table, a little smaller (see
+    /// [`tikz::BESIDE_A_TABLE`]); as [`figure`](Self::figure) when the picture is much
+    /// wider than high, since it would then be too small to read there and goes above its
+    /// table anyway.
+    pub fn figure_beside_a_table(&self) -> crate::render::context::Figure {
+        const WIDEST_BESIDE: f64 = 2.5;
+        let height = self.picture.height - self.picture.legend.height;
+        if self.picture.width > WIDEST_BESIDE * height {
+            return self.figure();
+        }
+        self.figure_in(tikz::BESIDE_A_TABLE)
+    }
+
+    fn figure_in(&self, room: tikz::Size) -> crate::render::context::Figure {
         let svg = self.svg(&format!("{}-", self.name));
         crate::render::context::Figure {
             // The XML declaration-free SVG element, one line per element, no blank lines
             // (a blank line would end a Markdown HTML block).
             svg_inline: svg.trim_end().to_string(),
-            picture_latex: self.tikz(),
+            picture_latex: tikz::export(&self.picture, room),
         }
     }
 }

@@ -4,11 +4,26 @@ use super::picture::{Ink, Item, Picture, Stroke, P2};
 use super::scene::Role;
 use std::fmt::Write;
 
-/// The widest a picture may be on the page, in points.
-const PAGE_WIDTH: f64 = 320.0;
-/// The tallest, in points (about a third of the text height): a tall pendulum would
-/// otherwise take a page of its own and push the text after it to the next one.
-const PAGE_HEIGHT: f64 = 230.0;
+/// The largest a picture may be on the page, in points: the height about a third of the
+/// text's, as a tall pendulum would otherwise take a page of its own and push the text after
+/// it to the next.
+pub const PAGE_SIZE: Size = Size {
+    width: 320.0,
+    height: 230.0,
+};
+/// The largest a free body may be beside its table of forces: a chain has one per link,
+/// and a link's table (about 220 pt wide) fits beside a picture of 260 pt.
+pub const BESIDE_A_TABLE: Size = Size {
+    width: 260.0,
+    height: 200.0,
+};
+
+/// The room a picture may take on the page, in points.
+#[derive(Clone, Copy, Debug)]
+pub struct Size {
+    pub width: f64,
+    pub height: f64,
+}
 
 fn num(x: f64) -> String {
     let text = format!("{x:.2}");
@@ -81,12 +96,12 @@ fn item(out: &mut String, item: &Item, unit: f64) {
     }
 }
 
-/// The picture as a `tikzpicture`, scaled to fit the page; needs `tikz` and `amsmath`.
-pub fn export(picture: &Picture) -> String {
+/// The picture as a `tikzpicture`, scaled to fit `room`; needs `tikz` and `amsmath`.
+pub fn export(picture: &Picture, room: Size) -> String {
     // The legend is stated once in the handout's text, not under every picture.
     let height = picture.height - picture.legend.height;
-    let unit = (PAGE_WIDTH / picture.width)
-        .min(PAGE_HEIGHT / height)
+    let unit = (room.width / picture.width)
+        .min(room.height / height)
         .min(0.75);
     let mut out = String::new();
     let _ = writeln!(
