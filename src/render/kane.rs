@@ -9,6 +9,11 @@ use super::long::LONG_EQUATION;
 use crate::equations::kane::partials;
 use crate::equations::rows::{Equation, Groups, Sum};
 use crate::equations::{Derivation, Method};
+use crate::mechanics::model::sample_states;
+use crate::mechanics::{Model, Vector};
+use crate::problem::BodyId;
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{add, Expr, Symbol};
@@ -36,23 +41,29 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     let model = &derivation.model;
     let problem = model.problem;
     let rates: Vec<Symbol> = problem.speed_symbols(1);
+    let accelerations: Vec<Symbol> = problem.speed_symbols(2);
+    let states = sample_states(model);
+    let inertia = &derivation.inertia;
     let per_body: Vec<_> = model
         .order
         .iter()
         .map(|&body| {
             let state = &model.bodies[body.0];
-            (
-                body,
-                partials(&state.center.velocity, &rates),
-                partials(&state.omega, &rates),
-            )
+            let v = partials(&state.center.velocity, &rates);
+            let w = partials(&state.omega, &rates);
+            let by_name = |of: &Vector, partials: &[Vector]| {
+                named_partials(model, of, body, &accelerations, partials, &states)
+            };
+            let named_v = by_name(&inertia.acceleration[body.0], &v);
+            let named_w = by_name(&inertia.alpha[body.0], &w);
+            (body, v, w, named_v, named_w)
         })
         .collect();
     let zero = "\\mathbf{0}";
     let mut out = Vec::new();
     for r in 0..rates.len() {
         let mut first = true;
-        for (body, v, w) in &per_body {
+        for (body, v, w, named_v, named_w) in &per_body {
             // Plain brackets, so that TeX can break a long entry inside its table cell.
             let plain = |t: String| {
                 t.replace("\\left(", "(")
@@ -60,8 +71,15 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
                     .replace("\\left[", "[")
                     .replace("\\right]", "]")
             };
-            let v_tex = plain(shortest_tex(model, &v[r], *body));
-            let w_tex = plain(shortest_tex(model, &w[r], *body));
+            let shortest = |expanded: &Vector, named: Option<&Vector>| {
+                let text = shortest_tex(model, expanded, *body);
+                match named.map(|n| shortest_tex(model, n, *body)) {
+                    Some(by_name) if by_name.len() < text.len() => by_name,
+                    _ => text,
+                }
+            };
+            let v_tex = plain(shortest(&v[r], named_v.as_ref().map(|n| &n[r])));
+            let w_tex = plain(shortest(&w[r], named_w.as_ref().map(|n| &n[r])));
             if v_tex == zero && w_tex == zero {
                 continue;
             }
@@ -149,4 +167,43 @@ pub fn generalized_forces(
             ),
         ),
     )
+}
+
+/// The partial velocities (or partial angular velocities) by the names step 4 writes the
+/// acceleration with, a^{B*} = Σ v_r q̈_r + ã: the coefficient of each q̈_r (or u̇_r) in the
+/// body's unit vectors, since ∂a/∂q̈_r = ∂v/∂q̇_r. `None` when a coefficient differs from
+/// `expanded`'s at the sample states (then an identity does not hold as written).
+fn named_partials(
+    model: &Model,
+    acceleration: &Vector,
+    body: BodyId,
+    accelerations: &[Symbol],
+    expanded: &[Vector],
+    states: &[Values],
+) -> Option<Vec<Vector>> {
+    let components = acceleration.components_in(body, &model.frames);
+    let mut by_axis = Vec::with_capacity(3);
+    for c in &components {
+        by_axis.push(linear_split(c, accelerations).ok()?.0);
+    }
+    let named: Vec<Vector> = (0..accelerations.len())
+        .map(|r| {
+            let parts: [Expr; 3] = std::array::from_fn(|axis| by_axis[axis][r].clone());
+            Vector::new(body, parts)
+        })
+        .collect();
+    for (n, e) in named.iter().zip(expanded) {
+        let e = e.components_in(body, &model.frames);
+        let n = n.components_in(body, &model.frames);
+        for (a, b) in n.iter().zip(&e) {
+            let differs = states.iter().any(|state| {
+                let (a, b) = (eval(a, state), eval(b, state));
+                (a - b).abs() > 1e-9 * (1.0 + b.abs())
+            });
+            if differs {
+                return None;
+            }
+        }
+    }
+    Some(named)
 }
