@@ -120,3 +120,16 @@ fn the_plan_writes_a_run_of_second_derivatives_by_its_ends() {
     let row = "| $\\mathrm{link}_{7}$ | $\\sum \\mathbf{F}$ | $\\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}$ | $\\ddot{q}_{1}, \\dots, \\ddot{q}_{7}, F^{P_{7}}_{x}, F^{P_{7}}_{y}, F^{P_{8}}_{x}$ |";
     assert!(markdown.lines().any(|l| l == row), "no plan row {row}");
 }
+
+#[test]
+fn a_contact_group_is_written_with_sin_squared_plus_cos_squared_as_one() {
+    let markdown = explain("validation/all-joints-3d", "newton-euler", "markdown");
+    // By hand: the universal joint U's couple M^U_1 acts about its first axis, which has
+    // the component cos q_{D2} along d̂z once sin² q_{D1} + cos² q_{D1} = 1 is applied; no
+    // other contact force has a moment about D* along d̂z.
+    let heading = "**24. $D\\colon \\sum \\mathbf{M}_{D^{*}} \\cdot \\hat{\\mathbf{d}}_{z}$**";
+    assert_eq!(
+        row_as_formed(&markdown, heading),
+        "M^{U}_{1} c_{q_{D2}} - \\left( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} \\right) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
+    );
+}

@@ -491,11 +491,18 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let g = &row.groups;
     let g = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].map(shown);
     // Contact + distance + inertia forces + inertia torques, leaving out the empty groups;
-    // a long inertia group by the names of step 4.
+    // a long inertia group by the names of step 4; a force group with the identities
+    // (sin² + cos² = 1) applied when that is shorter, as the simplified row has them.
     let mut grouped = String::new();
     for (k, e) in g.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
         let inertia = k >= 2;
-        let written = group_tex(e);
+        let mut written = group_tex(e);
+        if !inertia {
+            let simpler = group_tex(&simplify(e));
+            if simpler.len() < written.len() {
+                written = simpler;
+            }
+        }
         let named = (inertia && e.terms().len() > MOST_INERTIA_TERMS)
             .then(|| named_inertia_group(derivation, row, k == 3))
             .flatten()
