@@ -482,6 +482,18 @@ fn body_kinematics(
     Ok((state, joint_model))
 }
 
+/// Whether `a` and `b` have the same value at every one of `states` (to 1e-9, relative): an
+/// identity holds there, and a slip in a name would not.
+pub fn same_at(a: &Expr, b: &Expr, states: &[Values]) -> bool {
+    states.iter().all(|state| {
+        let (x, y) = (
+            crate::symbolic::eval::eval(a, state),
+            crate::symbolic::eval::eval(b, state),
+        );
+        (x - y).abs() <= 1e-9 * (1.0 + y.abs())
+    })
+}
+
 /// States at which a choice of rows must be nonsingular: the initial state and a few generic
 /// ones (seeded, so the choice is the same every run). Requiring rank at all of them keeps the
 /// planner away from rows that only look independent at one state.

@@ -9,10 +9,10 @@ use super::long::LONG_EQUATION;
 use crate::equations::kane::partials;
 use crate::equations::rows::{Equation, Groups, Sum};
 use crate::equations::{Derivation, Method};
-use crate::mechanics::model::sample_states;
+use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::simplify::simplify;
@@ -195,14 +195,8 @@ fn named_partials(
     for (n, e) in named.iter().zip(expanded) {
         let e = e.components_in(body, &model.frames);
         let n = n.components_in(body, &model.frames);
-        for (a, b) in n.iter().zip(&e) {
-            let differs = states.iter().any(|state| {
-                let (a, b) = (eval(a, state), eval(b, state));
-                (a - b).abs() > 1e-9 * (1.0 + b.abs())
-            });
-            if differs {
-                return None;
-            }
+        if n.iter().zip(&e).any(|(a, b)| !same_at(a, b, states)) {
+            return None;
         }
     }
     Some(named)

@@ -4,11 +4,10 @@
 use super::context::Kinematics;
 use super::derived::{component_term, shortest_tex, vector_tex_by};
 use crate::equations::Derivation;
-use crate::mechanics::model::sample_states;
+use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
 use crate::symbolic::collect::{factored, pull_common_factor};
-use crate::symbolic::eval::eval;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::latex_name;
 use crate::symbolic::simplify::simplify;
@@ -117,11 +116,7 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
         for ((partial, expanded), rate) in partials.iter().zip(&by_rate).zip(&rates) {
             // The named partial may be built on its parent's: compared by value at the
             // planner's sample states, where an identity holds and a slip would not.
-            let differs = states.iter().any(|state| {
-                let (a, b) = (eval(partial, state), eval(expanded, state));
-                (a - b).abs() > 1e-9 * (1.0 + b.abs())
-            });
-            if differs {
+            if !same_at(partial, expanded, &states) {
                 return None;
             }
             terms.push(partial * &Expr::sym(rate.clone()));
