@@ -21,6 +21,7 @@ mod kinematics;
 pub mod linearization;
 pub mod long;
 pub mod markup;
+pub mod math_width;
 pub mod mathml;
 pub mod matrix;
 pub mod mode_shape;
