@@ -14,6 +14,7 @@ mod kinematics;
 mod library;
 mod linearize;
 mod mathml;
+mod matrix_pattern;
 mod methods;
 mod pipeline;
 mod planner;

@@ -30,6 +30,10 @@ const SHORT_ENTRY: usize = 400;
 /// The most columns of numbers a table by value prints across the page; a wider system is
 /// printed in blocks of columns, as a printed matrix is.
 const MOST_VALUE_COLUMNS: usize = 12;
+/// The most columns and rows of a table of where `A` is not zero: a column is a dot,
+/// narrow, and the rows are those a page holds.
+const MOST_PATTERN_COLUMNS: usize = 44;
+const MOST_PATTERN_ROWS: usize = 60;
 /// The most entries listed one a line; past it, the short entries of a row are printed one
 /// after another.
 const MOST_LISTED: usize = 16;
@@ -304,6 +308,23 @@ pub fn matrix(
             ..MatrixForm::default()
         };
     }
+    let columns_tex: Vec<String> = x
+        .iter()
+        .enumerate()
+        .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
+        .collect();
+    if !by_entries && entries.len() > MOST_LISTED {
+        // Step 5 writes every row out, collected by its unknowns: listing the entries again
+        // would repeat it. Where each row's unknowns are is the system's shape, which the
+        // rows one by one do not show.
+        let all: Vec<usize> = (0..a.len()).collect();
+        return MatrixForm {
+            pattern_tex: pattern_tables(&numbers, &a, &b),
+            columns_tex,
+            read_off_tex: rows_tex(&all),
+            ..MatrixForm::default()
+        };
+    }
     let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
     entries.retain(|e| listed(e.row - 1));
     let read_off_tex = rows_tex(&read_off);
@@ -318,14 +339,43 @@ pub fn matrix(
     MatrixForm {
         whole: None,
         entries: row_by_row(entries),
-        columns_tex: x
-            .iter()
-            .enumerate()
-            .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
-            .collect(),
+        columns_tex,
         read_off_tex,
         ..MatrixForm::default()
     }
+}
+
+/// Where `A` and `b` are not zero, a dot in a table for each, columns by number (in blocks
+/// of at most [`MOST_PATTERN_COLUMNS`]), rows by their number in step 5: the shape of the
+/// system, such as Newton–Euler's reactions shared by two bodies' rows.
+fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> Vec<String> {
+    let dot = |e: &Expr| {
+        if e.is_zero() {
+            String::new()
+        } else {
+            "\\bullet".to_string()
+        }
+    };
+    let n = a.first().map_or(0, Vec::len);
+    let column_blocks = n.div_ceil(MOST_PATTERN_COLUMNS).max(1);
+    let width = n.div_ceil(column_blocks);
+    let row_blocks = a.len().div_ceil(MOST_PATTERN_ROWS).max(1);
+    let height = a.len().div_ceil(row_blocks);
+    let mut tables = Vec::new();
+    for k in 0..column_blocks {
+        let columns = k * width..((k + 1) * width).min(n);
+        let heads: Vec<String> = columns.clone().map(|j| (j + 1).to_string()).collect();
+        for rows in (0..row_blocks).map(|r| r * height..((r + 1) * height).min(a.len())) {
+            let block: Vec<Vec<String>> = a[rows.clone()]
+                .iter()
+                .map(|row| row[columns.clone()].iter().map(dot).collect())
+                .collect();
+            let b_dots: Vec<String> = b[rows.clone()].iter().map(dot).collect();
+            let b_column = (k + 1 == column_blocks).then_some(&b_dots[..]);
+            tables.push(array(&labels[rows], &heads, &block, b_column));
+        }
+    }
+    tables
 }
 
 /// Row numbers as a reader lists them, runs joined by an en dash (LaTeX `--`):
