@@ -132,3 +132,53 @@ fn each_link_s_rows_hold_its_two_pins_and_the_angles_inboard_of_it() {
         "the table has dots beyond one a row: {dots:?}"
     );
 }
+
+#[test]
+fn the_rows_written_by_name_are_given_by_their_values_beside_the_pattern() {
+    let markdown = crate::support::explain(
+        "validation/whipple-bicycle",
+        &["--method", "newton-euler", "--format", "markdown"],
+    );
+    // 30 rows: 24 of the four bodies and the rear contact's 3, written out; the front
+    // contact's 3, by name.
+    assert!(markdown.contains("Step 5 writes rows (1)–(27) out"));
+    let dots = dots(&markdown);
+    assert!(dots.iter().all(|&(i, _)| (1..=30).contains(&i)));
+    let row = |i: usize| {
+        let start = markdown
+            .find(&format!("\nRow {i}, $({i})"))
+            .unwrap_or_else(|| panic!("row {i}'s values"));
+        let line = markdown[start + 1..].lines().nth(1).expect("the values");
+        line.split(", ")
+            .map(|v| {
+                let (name, value) = v.trim_matches(['$', '.']).split_once(" = ").expect("=");
+                (name.to_string(), value.parse::<f64>().expect("a number"))
+            })
+            .collect::<Vec<_>>()
+    };
+    // By hand, upright and running straight, the front contact's velocity along n̂x: the
+    // rear contact's ẋ one for one; the frame's pitch θ̇ turns the front hub about the rear
+    // hub, (r_R − r_F) θ̇, and rolls the front wheel on, r_F θ̇, so r_R = 0.3 in all; the
+    // front wheel's spin, r_F = 0.35; yaw, lean and steer move it sideways or not at all.
+    let expected = [
+        ("A_{28,1}", 1.0),
+        ("A_{28,4}", 0.0),
+        ("A_{28,5}", 0.0),
+        ("A_{28,6}", 0.3),
+        ("A_{28,8}", 0.0),
+        ("A_{28,9}", 0.35),
+        ("b_{28}", 0.0),
+    ];
+    let got = row(28);
+    assert_eq!(got.len(), expected.len(), "{got:?}");
+    for ((name, value), (want_name, want)) in got.iter().zip(expected) {
+        assert_eq!(name, want_name);
+        assert!((value - want).abs() < 1e-9, "{name} = {value}, not {want}");
+    }
+    // Each value printed is a dot of the table, and the other rows' values are not listed.
+    for (name, _) in got.iter().filter(|(n, _)| n.starts_with("A_")) {
+        let j: usize = name[6..name.len() - 1].parse().expect("a column");
+        assert!(dots.contains(&(28, j)), "{name}");
+    }
+    assert!(!markdown.contains("\nRow 27, $(27)"));
+}

@@ -399,9 +399,10 @@ pub struct MatrixForm {
     /// With the tables of values, what each kind of entry is, so that every value can be
     /// traced.
     pub rules: Vec<Named>,
-    /// For a large system whose every row step 5 writes out: where `A` and `b` are not
-    /// zero, as tables of dots (`array`s) in blocks of columns; the entries are read off
-    /// step 5. Empty otherwise.
+    /// For a large system whose rows step 5 writes out, all or most: where `A` and `b` are
+    /// not zero, as tables of dots (`array`s) in blocks; the entries are read off step 5,
+    /// but for the few rows it writes by their coefficients' names (too long to print),
+    /// whose values at the initial state are in `entries`. Empty otherwise.
     pub pattern_tex: Vec<String>,
     /// The unknowns by column, where the entries name them `x_{j}`: `x_{1} = \ddot{q}_{1}`.
     pub columns_tex: Vec<String>,

@@ -170,6 +170,40 @@ pub fn matrix(
         .flat_map(|i| a_tex[i].iter().chain([&b_tex[i]]))
         .map(String::len)
         .sum();
+    let named_rows = (0..a.len()).filter(|&i| by_entries && listed(i)).count();
+    if printed > ENTRIES_BUDGET && by_entries && 4 * named_rows <= a.len() {
+        // Three rows in four or more are written out in step 5, the few others by their
+        // coefficients' names, too long to print: those few by their values at the initial
+        // state, the rest read off step 5, and the table of dots shows the whole. With more
+        // rows by name, A and b by value are worth their space: a reader can solve them.
+        let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
+        let value = |e: &Expr| math_number(&fixed_or_zero(initial(e)));
+        let entries = (0..a.len())
+            .filter(|&i| listed(i))
+            .map(|i| {
+                let mut values: Vec<String> = system.a[i]
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, e)| !e.is_zero())
+                    .map(|(j, e)| format!("A_{{{},{}}} = {}", i + 1, j + 1, value(e)))
+                    .collect();
+                values.push(format!("b_{{{}}} = {}", i + 1, value(&system.b[i])));
+                MatrixEntry {
+                    row: i + 1,
+                    row_label_tex: labels[i].clone(),
+                    values_tex: values,
+                    ..MatrixEntry::default()
+                }
+            })
+            .collect();
+        return MatrixForm {
+            pattern_tex: pattern_tables(&numbers, &a, &b),
+            entries,
+            columns_tex: columns(&x),
+            read_off_tex: rows_tex(&read_off),
+            ..MatrixForm::default()
+        };
+    }
     if printed > ENTRIES_BUDGET {
         // A system this large is read by its numbers: A and b at the initial state as a
         // table, the rules saying what each entry is.
@@ -283,10 +317,7 @@ pub fn matrix(
             whole: Some(table),
             entries: defined,
             columns_tex: if unknowns_by_number {
-                x.iter()
-                    .enumerate()
-                    .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
-                    .collect()
+                columns(&x)
             } else {
                 Vec::new()
             },
@@ -308,11 +339,7 @@ pub fn matrix(
             ..MatrixForm::default()
         };
     }
-    let columns_tex: Vec<String> = x
-        .iter()
-        .enumerate()
-        .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
-        .collect();
+    let columns_tex = columns(&x);
     if !by_entries && entries.len() > MOST_LISTED {
         // Step 5 writes every row out, collected by its unknowns: listing the entries again
         // would repeat it. Where each row's unknowns are is the system's shape, which the
@@ -343,6 +370,14 @@ pub fn matrix(
         read_off_tex,
         ..MatrixForm::default()
     }
+}
+
+/// The unknowns by column, for a table that heads them by number: `x_{1} = \\ddot{q}_{1}`.
+fn columns(x: &[String]) -> Vec<String> {
+    x.iter()
+        .enumerate()
+        .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
+        .collect()
 }
 
 /// Where `A` and `b` are not zero, a dot in a table for each, columns by number (in blocks
