@@ -101,10 +101,17 @@ fn merged<'a>(out: &mut String, lines: impl Iterator<Item = &'a Item>) {
         return;
     }
     let mut d = String::new();
+    let mut end = String::new();
     for s in &strokes {
         for (k, p) in s.points.iter().enumerate() {
+            let at = format!("{},{}", coarse(p[0]), coarse(p[1]));
+            // A line that starts where the last ended goes on from there (a chain of links).
+            if k == 0 && at == end {
+                continue;
+            }
             d.push(if k == 0 { 'M' } else { 'L' });
-            let _ = write!(d, "{},{}", coarse(p[0]), coarse(p[1]));
+            d.push_str(&at);
+            end = at;
         }
     }
     let dash = if first.dashed {
@@ -402,13 +409,14 @@ mod tests {
         ];
         let mut out = String::new();
         shapes(&mut out, &items);
-        // Every outline under every fill, each coordinate to a tenth.
+        // Every outline under every fill, each coordinate to a tenth, a link that starts
+        // where the last ended going on from it.
         let outline = format!(
-            "<path d=\"M0,0L10,0M10,0L10,5.3\" stroke=\"{}\" stroke-width=\"7\"/>\n",
+            "<path d=\"M0,0L10,0L10,5.3\" stroke=\"{}\" stroke-width=\"7\"/>\n",
             color(Ink::Black)
         );
         let fill = format!(
-            "<path d=\"M0,0L10,0M10,0L10,5.3\" stroke=\"{}\" stroke-width=\"4.6\"/>\n",
+            "<path d=\"M0,0L10,0L10,5.3\" stroke=\"{}\" stroke-width=\"4.6\"/>\n",
             color(Ink::Body)
         );
         assert_eq!(out, format!("{outline}{fill}"));
