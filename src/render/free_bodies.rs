@@ -163,7 +163,7 @@ const NARROW_TABLE: usize = 36;
 
 /// Whether the free body's table of forces is narrow enough to sit beside its picture.
 pub fn table_is_narrow(body: &FreeBody) -> bool {
-    let width = |tex: &str| super::prepare::printed_width(tex);
+    let width = |tex: &str| super::math_width::printed_width(tex);
     let (vectors, points): (Vec<usize>, Vec<usize>) =
         [&body.contact, &body.distance, &body.inertia]
             .into_iter()

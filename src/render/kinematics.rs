@@ -84,7 +84,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
 /// (the second's then empty here).
 fn one_line_if_short(first: String, second: String) -> (String, String) {
     const MOST_OF_A_LINE: usize = 60;
-    if super::prepare::printed_width(&first) + super::prepare::printed_width(&second)
+    if super::math_width::printed_width(&first) + super::math_width::printed_width(&second)
         <= MOST_OF_A_LINE
     {
         (format!("{first}, \\qquad {second}"), String::new())

@@ -4,8 +4,8 @@
 
 use super::context::{MatrixEntry, MatrixForm, Named, WholeMatrix};
 use super::long::{by_rates, LONG_EQUATION};
+use super::math_width::printed_width;
 use super::numbers::math_number;
-use super::prepare::printed_width;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::symbolic::collect::{latex_collected, latex_factored};

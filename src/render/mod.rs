@@ -18,6 +18,7 @@ pub mod escape;
 mod free_bodies;
 pub mod kane;
 mod kinematics;
+mod line_break;
 pub mod linearization;
 pub mod long;
 pub mod markup;
