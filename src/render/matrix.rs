@@ -170,14 +170,14 @@ pub fn matrix(
         .flat_map(|i| a_tex[i].iter().chain([&b_tex[i]]))
         .map(String::len)
         .sum();
-    let named_rows = (0..a.len()).filter(|&i| by_entries && listed(i)).count();
-    if printed > ENTRIES_BUDGET && by_entries && 4 * named_rows <= a.len() {
+    let named_rows = by_name.iter().filter(|&&named| named).count();
+    if printed > ENTRIES_BUDGET && named_rows > 0 && 4 * named_rows <= a.len() {
         // Three rows in four or more are written out in step 5, the few others by their
         // coefficients' names, too long to print: those few by their values at the initial
         // state, the rest read off step 5, and the table of dots shows the whole. With more
         // rows by name, A and b by value are worth their space: a reader can solve them.
         let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
-        let value = |e: &Expr| math_number(&fixed_or_zero(initial(e)));
+        let value = |e: &Expr| value_tex(&initial, e);
         let entries = (0..a.len())
             .filter(|&i| listed(i))
             .map(|i| {
@@ -344,11 +344,9 @@ pub fn matrix(
         // Step 5 writes every row out, collected by its unknowns: listing the entries again
         // would repeat it. Where each row's unknowns are is the system's shape, which the
         // rows one by one do not show.
-        let all: Vec<usize> = (0..a.len()).collect();
         return MatrixForm {
             pattern_tex: pattern_tables(&numbers, &a, &b),
             columns_tex,
-            read_off_tex: rows_tex(&all),
             ..MatrixForm::default()
         };
     }
@@ -370,6 +368,11 @@ pub fn matrix(
         read_off_tex,
         ..MatrixForm::default()
     }
+}
+
+/// An entry's value at the initial state, as the tables and lists of values print it.
+fn value_tex(initial: &impl Fn(&Expr) -> f64, e: &Expr) -> String {
+    math_number(&fixed_or_zero(initial(e)))
 }
 
 /// The unknowns by column, for a table that heads them by number: `x_{1} = \\ddot{q}_{1}`.
@@ -524,7 +527,7 @@ fn value_tables(
     b: &[Expr],
     initial: &impl Fn(&Expr) -> f64,
 ) -> Vec<String> {
-    let value = |e: &Expr| math_number(&fixed_or_zero(initial(e)));
+    let value = |e: &Expr| value_tex(initial, e);
     let a_values: Vec<Vec<String>> = a
         .iter()
         .map(|row| row.iter().map(value).collect())
