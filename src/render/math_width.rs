@@ -261,11 +261,7 @@ pub fn printed_width(latex: &str) -> usize {
     while let Some(c) = chars.next() {
         match c {
             '\\' => {
-                let mut name = String::new();
-                while let Some(&next) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
-                    name.push(next);
-                    chars.next();
-                }
+                let name = crate::render::escape::command_name(&mut chars);
                 if name.is_empty() {
                     chars.next();
                     width += 1;

@@ -2,24 +2,22 @@
 //! equation it comes from. The whole table when it fits the line; otherwise entry by entry,
 //! a long right-hand side collected by the products of rates.
 
-use super::context::{MatrixEntry, MatrixForm, Named, WholeMatrix};
+use super::context::{MatrixEntry, MatrixForm, Named};
 use super::long::{by_rates, LONG_EQUATION};
 use super::math_width::printed_width;
-use super::numbers::math_number;
+use super::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::symbolic::collect::{latex_collected, latex_factored};
-use crate::symbolic::format::fixed_or_zero;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::Expr;
 
 /// The most columns the whole table has.
 const MOST_COLUMNS: usize = 6;
-/// How many symbols the whole table may print across: about the width of the page.
-const TABLE_WIDTH: usize = 70;
 /// The most characters of LaTeX the entries may print in all (about five pages). Past it,
-/// A and b are given as tables of their values at the initial state: the rows of step 5
-/// define each entry, and a large system is solved by its numbers anyway.
+/// entries are given by their values at the initial state, a large system being solved by
+/// its numbers anyway: the few rows step 5 writes by name beside the table of dots, or all
+/// of A and b as tables when more rows are by name.
 const ENTRIES_BUDGET: usize = 24_000;
 /// An entry this wide or narrower (in printed symbols) stays in a table by name.
 const INLINE_ENTRY: usize = 4;
@@ -27,13 +25,6 @@ const INLINE_ENTRY: usize = 4;
 /// one after another.
 const SHORT_ENTRY: usize = 400;
 
-/// The most columns of numbers a table by value prints across the page; a wider system is
-/// printed in blocks of columns, as a printed matrix is.
-const MOST_VALUE_COLUMNS: usize = 12;
-/// The most columns and rows of a table of where `A` is not zero: a column is a dot,
-/// narrow, and the rows are those a page holds.
-const MOST_PATTERN_COLUMNS: usize = 44;
-const MOST_PATTERN_ROWS: usize = 60;
 /// The most entries listed one a line; past it, the short entries of a row are printed one
 /// after another.
 const MOST_LISTED: usize = 16;
@@ -370,50 +361,12 @@ pub fn matrix(
     }
 }
 
-/// An entry's value at the initial state, as the tables and lists of values print it.
-fn value_tex(initial: &impl Fn(&Expr) -> f64, e: &Expr) -> String {
-    math_number(&fixed_or_zero(initial(e)))
-}
-
 /// The unknowns by column, for a table that heads them by number: `x_{1} = \\ddot{q}_{1}`.
 fn columns(x: &[String]) -> Vec<String> {
     x.iter()
         .enumerate()
         .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
         .collect()
-}
-
-/// Where `A` and `b` are not zero, a dot in a table for each, columns by number (in blocks
-/// of at most [`MOST_PATTERN_COLUMNS`]), rows by their number in step 5: the shape of the
-/// system, such as Newton–Euler's reactions shared by two bodies' rows.
-fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> Vec<String> {
-    let dot = |e: &Expr| {
-        if e.is_zero() {
-            String::new()
-        } else {
-            "\\bullet".to_string()
-        }
-    };
-    let n = a.first().map_or(0, Vec::len);
-    let column_blocks = n.div_ceil(MOST_PATTERN_COLUMNS).max(1);
-    let width = n.div_ceil(column_blocks);
-    let row_blocks = a.len().div_ceil(MOST_PATTERN_ROWS).max(1);
-    let height = a.len().div_ceil(row_blocks);
-    let mut tables = Vec::new();
-    for k in 0..column_blocks {
-        let columns = k * width..((k + 1) * width).min(n);
-        let heads: Vec<String> = columns.clone().map(|j| (j + 1).to_string()).collect();
-        for rows in (0..row_blocks).map(|r| r * height..((r + 1) * height).min(a.len())) {
-            let block: Vec<Vec<String>> = a[rows.clone()]
-                .iter()
-                .map(|row| row[columns.clone()].iter().map(dot).collect())
-                .collect();
-            let b_dots: Vec<String> = b[rows.clone()].iter().map(dot).collect();
-            let b_column = (k + 1 == column_blocks).then_some(&b_dots[..]);
-            tables.push(array(&labels[rows], &heads, &block, b_column));
-        }
-    }
-    tables
 }
 
 /// Row numbers as a reader lists them, runs joined by an en dash (LaTeX `--`):
@@ -515,89 +468,4 @@ fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
         "b_{i} = -\\left( \\text{row } i \\right)_{\\ddot{q} = 0,\\ \\text{reactions} = 0}",
     ));
     rules
-}
-
-/// `A` and `b` at the initial state as tables laid out as [`whole`] lays out the formulas,
-/// in blocks of at most [`MOST_VALUE_COLUMNS`] columns of about equal width, `b` in the
-/// last.
-fn value_tables(
-    labels: &[String],
-    x: &[String],
-    a: &[Vec<Expr>],
-    b: &[Expr],
-    initial: &impl Fn(&Expr) -> f64,
-) -> Vec<String> {
-    let value = |e: &Expr| value_tex(initial, e);
-    let a_values: Vec<Vec<String>> = a
-        .iter()
-        .map(|row| row.iter().map(value).collect())
-        .collect();
-    let b_values: Vec<String> = b.iter().map(value).collect();
-    let blocks = x.len().div_ceil(MOST_VALUE_COLUMNS).max(1);
-    let width = x.len().div_ceil(blocks);
-    (0..blocks)
-        .map(|k| {
-            let columns = k * width..((k + 1) * width).min(x.len());
-            let block: Vec<Vec<String>> = a_values
-                .iter()
-                .map(|row| row[columns.clone()].to_vec())
-                .collect();
-            let last = k + 1 == blocks;
-            let b_column = if last { Some(&b_values[..]) } else { None };
-            array(labels, &x[columns], &block, b_column)
-        })
-        .collect()
-}
-
-/// The whole table, when it prints no wider than the line.
-fn whole(labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]) -> Option<WholeMatrix> {
-    let widest = |column: &mut dyn Iterator<Item = &String>| {
-        column.map(|t| printed_width(t)).max().unwrap_or(0) + 2
-    };
-    let mut width = widest(&mut labels.iter())
-        + widest(&mut b.iter().chain(["\\mathbf{b}".to_string()].iter()));
-    for j in 0..x.len() {
-        width += widest(&mut a.iter().map(|row| &row[j]).chain([&x[j]]));
-    }
-    if width > TABLE_WIDTH {
-        return None;
-    }
-    let column = |items: &[String]| {
-        format!(
-            "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
-            items.join(" \\\\ ")
-        )
-    };
-    let rows: Vec<String> = a.iter().map(|row| row.join(" & ")).collect();
-    Some(WholeMatrix {
-        a_tex: format!(
-            "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
-            rows.join(" \\\\ ")
-        ),
-        x_tex: column(x),
-        b_tex: column(b),
-        table_tex: array(labels, x, a, Some(b)),
-    })
-}
-
-/// `A`'s columns `x` (and `b` last, when given) as one `array`, a column per unknown
-/// headed by it, a row per equation led by its label.
-fn array(labels: &[String], x: &[String], a: &[Vec<String>], b: Option<&[String]>) -> String {
-    let b_head = if b.is_some() { " & \\mathbf{b}" } else { "" };
-    let mut table = format!(
-        "\\begin{{array}}{{l|{}{}}} & {}{b_head} \\\\ \\hline",
-        "c".repeat(x.len()),
-        if b.is_some() { "|c" } else { "" },
-        x.join(" & ")
-    );
-    for (i, row) in a.iter().enumerate() {
-        let b_entry = b.map_or(String::new(), |b| format!(" & {}", b[i]));
-        table.push_str(&format!(
-            " {} & {}{b_entry} \\\\",
-            labels[i],
-            row.join(" & ")
-        ));
-    }
-    table.push_str(" \\end{array}");
-    table
 }

@@ -25,6 +25,7 @@ pub mod markup;
 pub mod math_width;
 pub mod mathml;
 pub mod matrix;
+mod matrix_tables;
 pub mod mode_shape;
 mod numbers;
 pub mod plot;

@@ -237,11 +237,7 @@ pub fn unicode_of(math: &str) -> String {
     while let Some(c) = chars.next() {
         match c {
             '\\' => {
-                let mut command = String::new();
-                while let Some(&n) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
-                    command.push(n);
-                    chars.next();
-                }
+                let command = crate::render::escape::command_name(&mut chars);
                 match crate::render::escape::greek_letter(&command) {
                     Some(letter) => out.push(letter),
                     None if command == "mathrm" || command == "mathbf" => {}

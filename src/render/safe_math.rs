@@ -201,11 +201,7 @@ pub fn checked(source: &str) -> Option<String> {
     while let Some(c) = chars.next() {
         match c {
             '\\' => {
-                let mut name = String::new();
-                while let Some(&next) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
-                    name.push(next);
-                    chars.next();
-                }
+                let name = crate::render::escape::command_name(&mut chars);
                 if name.is_empty() {
                     let next = chars.next().filter(|n| ESCAPED.contains(*n))?;
                     out.push('\\');
