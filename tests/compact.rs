@@ -21,27 +21,39 @@ fn defines(markdown: &str, definition: &str, note: &str) -> bool {
 }
 
 /// The rows of `A` and `b` by value in a Markdown solution, each row's numbers, `A`'s then
-/// `b`'s: the tables of blocks of columns side by side.
+/// `b`'s: the tables of blocks of columns side by side, each row found by its label `(i)`;
+/// a row a block leaves out is zero in all its columns.
 fn value_table(markdown: &str) -> Vec<Vec<f64>> {
     let mut rows: Vec<Vec<f64>> = Vec::new();
     for table in markdown.lines().filter(|l| l.starts_with("\\begin{array}")) {
-        let body = table.split("\\hline").nth(1).expect("a header");
-        let block = body
+        let (head, body) = table.split_once("\\hline").expect("a header");
+        let columns = head.matches(" & ").count();
+        let width = rows.first().map_or(0, Vec::len);
+        for row in body
             .trim_end_matches("\\end{array}")
             .split("\\\\")
             .filter(|row| !row.trim().is_empty())
-            .map(|row| {
-                row.split(" & ")
-                    .skip(1)
-                    .map(|x| x.trim().parse().unwrap_or_else(|_| panic!("a number: {x}")))
-                    .collect::<Vec<f64>>()
-            });
-        if rows.is_empty() {
-            rows = block.collect();
-        } else {
-            rows.iter_mut()
-                .zip(block)
-                .for_each(|(row, more)| row.extend(more));
+        {
+            let mut cells = row.split(" & ");
+            let label = cells.next().expect("a label").trim();
+            let i: usize = label
+                .trim_start_matches('(')
+                .trim_end_matches(')')
+                .parse()
+                .unwrap_or_else(|_| panic!("a row label: {label}"));
+            if rows.len() < i {
+                rows.resize(i, vec![0.0; width]);
+            }
+            let values: Vec<f64> = cells
+                .map(|x| x.trim().parse().unwrap_or_else(|_| panic!("a number: {x}")))
+                .collect();
+            assert_eq!(values.len(), columns, "row {i}");
+            rows[i - 1].truncate(width);
+            rows[i - 1].resize(width, 0.0);
+            rows[i - 1].extend(values);
+        }
+        for row in &mut rows {
+            row.resize(width + columns, 0.0);
         }
     }
     assert!(!rows.is_empty(), "no table of A and b");

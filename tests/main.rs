@@ -13,6 +13,7 @@ mod kane_handout;
 mod kinematics;
 mod library;
 mod linearize;
+mod long_rows;
 mod mathml;
 mod matrix_pattern;
 mod methods;

@@ -275,6 +275,18 @@ pub struct Plan {
     pub unknowns_count: usize,
     /// A sentence about the count (plain text; may be empty).
     pub note: String,
+    /// The widths of the table's columns in LaTeX.
+    pub columns: PlanColumns,
+}
+
+/// The widths of step 3's table in centimetres, each column as wide as what it prints and
+/// the unknowns the rest, so that a long list of unknowns takes one line where it can.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct PlanColumns {
+    pub free_body_cm: f64,
+    pub equation_cm: f64,
+    pub direction_cm: f64,
+    pub unknowns_cm: f64,
 }
 
 /// One equation of the plan.

@@ -44,6 +44,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .iter()
             .map(|row| equation_view(derivation, row))
             .collect();
+        super::long::refer_to_repeated_vector_forms(derivation, &mut solution.equations);
         // The matrix is listed entry by entry whenever an equation refers to its entries.
         let by_name: Vec<bool> = solution.equations.iter().map(|e| e.by_name).collect();
         let use_shown = uses_shown(derivation);
@@ -136,7 +137,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             body.figure = if super::free_bodies::table_is_narrow(body) {
                 drawing.figure_beside_a_table()
             } else {
-                drawing.figure()
+                drawing.figure_above_a_table()
             };
         }
     }
@@ -343,7 +344,7 @@ fn unknowns_tex(unknowns: &[Symbol]) -> String {
 /// Step 3: the planner's table, the rejected candidates and the counts.
 pub fn plan(derivation: &Derivation) -> Plan {
     let problem = derivation.model.problem;
-    let rows = derivation
+    let rows: Vec<PlanRow> = derivation
         .rows
         .iter()
         .map(|row| PlanRow {
@@ -392,6 +393,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         Method::Kane => "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".into(),
     };
     Plan {
+        columns: super::plan_table::columns(&rows),
         rows,
         rejected_total: rejected_all.len(),
         rejected,

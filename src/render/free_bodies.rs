@@ -15,7 +15,7 @@ use crate::symbolic::roots::roots_of_squares;
 
 /// A free body of more bodies than this lists gravity and the inertia forces once, for
 /// each body k, instead of body by body.
-const MOST_BODIES_LISTED: usize = 3;
+const MOST_BODIES_LISTED: usize = 2;
 
 /// Where a force acts, as a textbook's table says it: a reaction at its joint's (or
 /// closure's, or contact's) point by name, `at O`; another force at the body's mass centre

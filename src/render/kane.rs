@@ -123,8 +123,9 @@ pub fn row_number(derivation: &Derivation, row: &Equation) -> Option<usize> {
 /// and a long force printed twice doubles the row.
 const LONGEST_BESIDE_THE_SUM: usize = 400;
 
-/// `F_r = …` and `F_r^* = …` of Kane's row `r`, simplified; each written as its definition
-/// when it is too long to read expanded, or long and `sum_written_out`.
+/// `F_r = …` and `F_r^* = …` of Kane's row `r`, simplified; a force too long to read
+/// expanded (or long, and `sum_written_out`) by its name alone, since its definition stands
+/// above the rows.
 pub fn generalized_forces(
     groups: &Groups,
     r: usize,
@@ -139,33 +140,19 @@ pub fn generalized_forces(
         groups.inertia_force.clone(),
         groups.inertia_torque.clone(),
     ])));
-    // The value alone, since the definitions stand above the rows; the definition when the
-    // value is too long to read.
-    let written = |e: &Expr, name: String, definition: String| {
+    let written = |e: &Expr, name: String| {
         let text = crate::symbolic::collect::latex_collected(e);
         if text.len() > LONG_EQUATION {
-            format!("{name} = {definition} \\quad \\text{{(too long to print whole)}}")
+            format!("{name}\\ \\text{{too long to print whole}}")
         } else if sum_written_out && text.len() > LONGEST_BESIDE_THE_SUM {
-            format!("{name} = {definition} \\quad \\text{{(collected in their sum below)}}")
+            format!("{name}\\ \\text{{collected in their sum below}}")
         } else {
             format!("{name} = {text}")
         }
     };
     (
-        written(
-            &active,
-            format!("F_{{{r}}}"),
-            format!(
-                "\\sum_{{P}} \\mathbf{{v}}^{{P}}_{{{r}}} \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\boldsymbol{{\\omega}}^{{B}}_{{{r}}} \\cdot \\mathbf{{T}}_{{B}}"
-            ),
-        ),
-        written(
-            &inertia,
-            format!("F^{{*}}_{{{r}}}"),
-            format!(
-                "\\sum_{{B}} \\left(\\mathbf{{v}}^{{B^*}}_{{{r}}} \\cdot \\mathbf{{R}}^{{*}}_{{B}} + \\boldsymbol{{\\omega}}^{{B}}_{{{r}}} \\cdot \\mathbf{{T}}^{{*}}_{{B}}\\right)"
-            ),
-        ),
+        written(&active, format!("F_{{{r}}}")),
+        written(&inertia, format!("F^{{*}}_{{{r}}}")),
     )
 }
 

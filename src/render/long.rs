@@ -1,6 +1,7 @@
 //! Equations too long to read whole, written with named coefficients: a row of step 5 as
 //! `A_{i,1} x_1 + … = b_i`, and a right-hand side collected by the products of rates.
 
+use super::context::Equation as EquationView;
 use crate::equations::Derivation;
 use crate::plan::rows::{Equation, Sum};
 use crate::symbolic::print::{latex, latex_name, list_by_runs};
@@ -180,4 +181,33 @@ pub fn named_inertia_group(
         format!("\\left( {term} \\right)")
     };
     Some(format!("- {}{body} \\cdot {}", named.sum, direction.latex))
+}
+
+/// Rows written in vector form that an earlier such row repeats but for its direction (the
+/// same free body's moments about the same point along another axis) refer to that row
+/// instead of printing the same display again, as a textbook writes "likewise along ŷ".
+pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [EquationView]) {
+    let mut seen: Vec<(String, usize)> = Vec::new();
+    for (i, (row, view)) in derivation.rows.iter().zip(views.iter_mut()).enumerate() {
+        let Some(direction) = &row.direction else {
+            continue;
+        };
+        let form = vector_form(derivation, row);
+        if form.is_empty() || view.grouped_tex != form {
+            continue;
+        }
+        let Some(rest) = form.strip_prefix(&direction.latex) else {
+            continue;
+        };
+        match seen.iter().find(|(key, _)| key == rest) {
+            Some((_, first)) => {
+                view.grouped_tex.clear();
+                view.simplified_note = format!(
+                    "Formed as row {first}, along this row's direction. {}",
+                    view.simplified_note
+                );
+            }
+            None => seen.push((rest.to_string(), i + 1)),
+        }
+    }
 }

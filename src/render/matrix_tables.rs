@@ -60,7 +60,9 @@ pub(super) fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> 
 
 /// `A` and `b` at the initial state as tables laid out as [`whole`] lays out the formulas,
 /// in blocks of at most [`MOST_VALUE_COLUMNS`] columns of about equal width, `b` in the
-/// last.
+/// last. A block leaves out the rows that are zero in all its columns, as a printed sparse
+/// matrix does: a floating body's rows are zero under a chain's q̈, and a reaction's column
+/// is zero but in the rows of the bodies it acts on.
 pub(super) fn value_tables(
     labels: &[String],
     x: &[String],
@@ -79,13 +81,24 @@ pub(super) fn value_tables(
     (0..blocks)
         .map(|k| {
             let columns = k * width..((k + 1) * width).min(x.len());
-            let block: Vec<Vec<String>> = a_values
-                .iter()
-                .map(|row| row[columns.clone()].to_vec())
-                .collect();
             let last = k + 1 == blocks;
-            let b_column = if last { Some(&b_values[..]) } else { None };
-            array(labels, &x[columns], &block, b_column)
+            let zero = |i: usize| {
+                a_values[i][columns.clone()].iter().all(|v| v == "0")
+                    && (!last || b_values[i] == "0")
+            };
+            let mut rows: Vec<usize> = (0..a.len()).filter(|&i| !zero(i)).collect();
+            if rows.is_empty() {
+                rows = (0..a.len()).collect();
+            }
+            let pick = |items: &[String]| -> Vec<String> {
+                rows.iter().map(|&i| items[i].clone()).collect()
+            };
+            let block: Vec<Vec<String>> = rows
+                .iter()
+                .map(|&i| a_values[i][columns.clone()].to_vec())
+                .collect();
+            let b_column = last.then(|| pick(&b_values));
+            array(&pick(labels), &x[columns], &block, b_column.as_deref())
         })
         .collect()
 }

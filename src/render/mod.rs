@@ -28,6 +28,7 @@ pub mod matrix;
 mod matrix_tables;
 pub mod mode_shape;
 mod numbers;
+mod plan_table;
 pub mod plot;
 mod prepare;
 pub mod rejected;

@@ -208,7 +208,7 @@ fn plan() -> Plan {
         unknowns_tex: s(unknowns),
     };
     let accelerations = "\\ddot{q}_{1}, \\ddot{q}_{2}";
-    Plan {
+    let mut plan = Plan {
         rows: vec![
             row(
                 "A + B",
@@ -248,7 +248,10 @@ fn plan() -> Plan {
         equations_count: 4,
         unknowns_count: 4,
         note: s("The system is square: one equation for each unknown."),
-    }
+        columns: Default::default(),
+    };
+    plan.columns = super::plan_table::columns(&plan.rows);
+    plan
 }
 
 fn kinematics() -> Vec<Kinematics> {

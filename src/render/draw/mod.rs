@@ -54,16 +54,21 @@ impl Drawing {
     }
 
     /// The picture to embed in a page beside a narrow table, a little smaller (see
-    /// [`tikz::BESIDE_A_TABLE`]); as [`figure`](Self::figure) when the picture is much
+    /// [`tikz::BESIDE_A_TABLE`]); as [`figure_above_a_table`](Self::figure_above_a_table) when the picture is much
     /// wider than high, since it would then be too small to read there and goes above its
     /// table anyway.
     pub fn figure_beside_a_table(&self) -> crate::render::context::Figure {
         const WIDEST_BESIDE: f64 = 2.5;
         let height = self.picture.height - self.picture.legend.height;
         if self.picture.width > WIDEST_BESIDE * height {
-            return self.figure();
+            return self.figure_above_a_table();
         }
         self.figure_in(tikz::BESIDE_A_TABLE)
+    }
+
+    /// The picture to embed in a page above a wide table (see [`tikz::ABOVE_A_TABLE`]).
+    pub fn figure_above_a_table(&self) -> crate::render::context::Figure {
+        self.figure_in(tikz::ABOVE_A_TABLE)
     }
 
     fn figure_in(&self, room: tikz::Size) -> crate::render::context::Figure {

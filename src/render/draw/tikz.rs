@@ -18,6 +18,13 @@ pub const BESIDE_A_TABLE: Size = Size {
     height: 200.0,
 };
 
+/// The largest a free body may be above its table of forces: a little lower than a page's
+/// picture, as a 3D problem has a free body for each of several bodies and groups.
+pub const ABOVE_A_TABLE: Size = Size {
+    width: 320.0,
+    height: 185.0,
+};
+
 /// The room a picture may take on the page, in points.
 #[derive(Clone, Copy, Debug)]
 pub struct Size {

@@ -1,0 +1,84 @@
+//! A large system's step 5 says each thing once: a generalized force too long to print is
+//! named, not redefined; a row in vector form that repeats an earlier one along another
+//! axis refers to it; and A by value leaves out the rows a block of columns does not touch.
+
+/// The all-joints mechanism's handout by `method`, in `format`.
+fn all_joints(method: &str, format: &str) -> String {
+    crate::support::explain(
+        "validation/all-joints-3d",
+        &["--method", method, "--format", format],
+    )
+}
+
+/// Step 5's row headings of a Markdown handout: (number, free body) for each.
+fn row_free_bodies(markdown: &str) -> Vec<(usize, String)> {
+    markdown
+        .lines()
+        .filter_map(|l| {
+            let rest = l.strip_prefix("**")?;
+            let (number, rest) = rest.split_once(". $")?;
+            let (free_body, _) = rest.split_once("\\colon")?;
+            Some((number.parse().ok()?, free_body.to_string()))
+        })
+        .collect()
+}
+
+#[test]
+fn a_block_of_a_by_value_leaves_out_the_rows_of_a_body_its_unknowns_do_not_move() {
+    // The plate F hangs from the turntable's rim on a spring: a spring's force depends on
+    // where the bodies are, not on how they accelerate, so none of F's own rows holds a
+    // q̈ of the chain A…E. The first block of A's columns (the chain's q̈) leaves those rows
+    // out, and lists each of the chain's rows.
+    let markdown = all_joints("motion-law", "markdown");
+    let rows = row_free_bodies(&markdown);
+    let plate: Vec<usize> = rows
+        .iter()
+        .filter(|(_, body)| body == "F")
+        .map(|(i, _)| *i)
+        .collect();
+    assert_eq!(plate.len(), 6, "{rows:?}");
+    let first = markdown
+        .lines()
+        .find(|l| l.starts_with("\\begin{array}"))
+        .expect("a table by value");
+    assert!(first.contains("\\ddot{q}_{A}"), "{first}");
+    for i in plate {
+        assert!(!first.contains(&format!("({i}) &")), "row {i} in {first}");
+    }
+    for (i, body) in &rows {
+        if body.contains("A + B") || body.contains("E") {
+            assert!(first.contains(&format!("({i}) &")), "row {i} missing");
+        }
+    }
+}
+
+#[test]
+fn a_moment_row_along_another_axis_refers_to_the_first_of_its_vector_form() {
+    // Rows 22 and 23 take moments of the whole chain about O along n_x and n_y, as row 10
+    // does along e_O; each is too long to print, so the vector form is printed once.
+    let markdown = all_joints("motion-law", "markdown");
+    for row in [22, 23] {
+        let heading = format!("**{row}. $A + B + C + D + E + G\\colon \\sum \\mathbf{{M}}_{{O}}");
+        let at = markdown.find(&heading).expect("the row");
+        let body = &markdown[at..at + 400];
+        assert!(
+            body.contains("Formed as row 10, along this row's direction."),
+            "{body}"
+        );
+    }
+    let vector_forms = markdown
+        .matches("\\sum \\mathbf{M}_{O} - \\sum_{k \\in \\{A, B, C, D, E, G\\}}")
+        .count();
+    assert_eq!(vector_forms, 1);
+}
+
+#[test]
+fn a_generalized_force_too_long_to_print_is_named_not_redefined() {
+    // Kane's F*_r is defined once, above the rows; a row whose F*_r is too long to print
+    // names it rather than writing the sum out again.
+    let latex = all_joints("kane", "latex");
+    let definition = "\\sum_{B} \\left(\\mathbf{v}^{B^*}_r \\cdot \\mathbf{R}^{*}_{B}";
+    assert_eq!(latex.matches(definition).count(), 1);
+    assert!(latex.contains("F^{*}_{1}\\ \\text{too long to print whole}"));
+    assert!(!latex.contains("\\mathbf{v}^{B^*}_{1} \\cdot"));
+}
