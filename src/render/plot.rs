@@ -291,7 +291,7 @@ pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series]) -> String {
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
     // Two plots side by side on the page, each with its legend beside it, small.
-    text.push_str("  width=5.6cm, height=4.6cm, grid=major,\n  legend pos=outer north east,\n");
+    text.push_str("  width=5.6cm, height=3.9cm, grid=major,\n  legend pos=outer north east,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     // A legend of many lines in two columns, so that it is no taller than the plot.
     if series.len() > 6 {

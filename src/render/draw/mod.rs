@@ -58,7 +58,7 @@ impl Drawing {
     /// wider than high, since it would then be too small to read there and goes above its
     /// table anyway.
     pub fn figure_beside_a_table(&self) -> crate::render::context::Figure {
-        const WIDEST_BESIDE: f64 = 2.5;
+        const WIDEST_BESIDE: f64 = 4.0;
         let height = self.picture.height - self.picture.legend.height;
         if self.picture.width > WIDEST_BESIDE * height {
             return self.figure_above_a_table();

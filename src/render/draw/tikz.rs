@@ -12,10 +12,11 @@ pub const PAGE_SIZE: Size = Size {
     height: 230.0,
 };
 /// The largest a free body may be beside its table of forces: a chain has one per link,
-/// and a link's table (about 220 pt wide) fits beside a picture of 260 pt.
+/// and a link's table (about 220 pt wide and 110 pt high) fits beside a picture of 260 pt;
+/// a picture no higher than the table lets the page hold four links.
 pub const BESIDE_A_TABLE: Size = Size {
     width: 260.0,
-    height: 200.0,
+    height: 160.0,
 };
 
 /// The largest a free body may be above its table of forces: a little lower than a page's
