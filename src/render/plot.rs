@@ -280,6 +280,9 @@ fn subscript(d: char) -> char {
         .unwrap_or(d)
 }
 
+/// The most entries a row of a plot's legend holds: as wide as the plot.
+const LEGEND_COLUMNS: usize = 4;
+
 /// A LaTeX `tikzpicture` with a pgfplots `axis` holding one `\addplot` per series.
 ///
 /// Each series is thinned to at most [`PGFPLOTS_MAX_POINTS`] points (keeping the first and
@@ -290,15 +293,14 @@ pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series]) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
-    // Two plots side by side on the page, each with its legend beside it, small.
-    text.push_str("  width=5.6cm, height=3.9cm, grid=major,\n  legend pos=outer north east,\n");
+    // Three plots side by side on the page, each with its legend under it, small: the rows
+    // of a legend are lower than a second row of plots.
+    text.push_str("  width=5.2cm, height=3.7cm, grid=major,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
-    // A legend of many lines in two columns, so that it is no taller than the plot.
-    if series.len() > 6 {
-        text.push_str("  legend columns=2, legend style={font=\\scriptsize},\n");
-    } else {
-        text.push_str("  legend style={font=\\footnotesize},\n");
-    }
+    text.push_str(&format!(
+        "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.42)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
+        series.len().clamp(1, LEGEND_COLUMNS)
+    ));
     text.push_str("]\n");
     for line in series {
         let finite: Vec<(f64, f64)> = line
