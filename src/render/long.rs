@@ -202,10 +202,12 @@ pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [Equa
         match seen.iter().find(|(key, _)| key == rest) {
             Some((_, first)) => {
                 view.grouped_tex.clear();
-                view.simplified_note = format!(
-                    "Formed as row {first}, along this row's direction. {}",
-                    view.simplified_note
-                );
+                let then = match view.simplified_note.as_str() {
+                    "" => "Simplified:",
+                    note => note,
+                };
+                view.simplified_note =
+                    format!("Formed as row {first}, along this row's direction. {then}");
             }
             None => seen.push((rest.to_string(), i + 1)),
         }
