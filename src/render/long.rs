@@ -189,14 +189,13 @@ pub fn named_inertia_group(
 pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [EquationView]) {
     let mut seen: Vec<(String, usize)> = Vec::new();
     for (i, (row, view)) in derivation.rows.iter().zip(views.iter_mut()).enumerate() {
-        let Some(direction) = &row.direction else {
-            continue;
-        };
-        let form = vector_form(derivation, row);
-        if form.is_empty() || view.grouped_tex != form {
-            continue;
-        }
-        let Some(rest) = form.strip_prefix(&direction.latex) else {
+        // A row in vector form reads `d · (…) = 0`, as `vector_form` writes it.
+        let Some(rest) = row
+            .direction
+            .as_ref()
+            .and_then(|d| view.grouped_tex.strip_prefix(&d.latex))
+            .filter(|rest| rest.starts_with(" \\cdot \\left( "))
+        else {
             continue;
         };
         match seen.iter().find(|(key, _)| key == rest) {

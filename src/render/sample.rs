@@ -208,33 +208,35 @@ fn plan() -> Plan {
         unknowns_tex: s(unknowns),
     };
     let accelerations = "\\ddot{q}_{1}, \\ddot{q}_{2}";
-    let mut plan = Plan {
-        rows: vec![
-            row(
-                "A + B",
-                "\\sum \\mathbf{M}_{O}",
-                format!("{N}_{{z}}"),
-                accelerations,
-            ),
-            row(
-                "B",
-                "\\sum \\mathbf{M}_{P}",
-                format!("{A}_{{z}}"),
-                accelerations,
-            ),
-            row(
-                "A + B",
-                "\\sum \\mathbf{F}",
-                format!("{N}_{{x}}"),
-                "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}",
-            ),
-            row(
-                "A + B",
-                "\\sum \\mathbf{F}",
-                format!("{N}_{{y}}"),
-                "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}",
-            ),
-        ],
+    let rows = vec![
+        row(
+            "A + B",
+            "\\sum \\mathbf{M}_{O}",
+            format!("{N}_{{z}}"),
+            accelerations,
+        ),
+        row(
+            "B",
+            "\\sum \\mathbf{M}_{P}",
+            format!("{A}_{{z}}"),
+            accelerations,
+        ),
+        row(
+            "A + B",
+            "\\sum \\mathbf{F}",
+            format!("{N}_{{x}}"),
+            "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{x}",
+        ),
+        row(
+            "A + B",
+            "\\sum \\mathbf{F}",
+            format!("{N}_{{y}}"),
+            "\\ddot{q}_{1}, \\ddot{q}_{2}, F^{O}_{y}",
+        ),
+    ];
+    Plan {
+        columns: super::plan_table::columns(&rows),
+        rows,
         rejected: vec![Rejected {
             free_body_tex: s("A"),
             equation_tex: s("\\sum \\mathbf{M}_{O}"),
@@ -248,10 +250,7 @@ fn plan() -> Plan {
         equations_count: 4,
         unknowns_count: 4,
         note: s("The system is square: one equation for each unknown."),
-        columns: Default::default(),
-    };
-    plan.columns = super::plan_table::columns(&plan.rows);
-    plan
+    }
 }
 
 fn kinematics() -> Vec<Kinematics> {

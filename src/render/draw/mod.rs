@@ -54,9 +54,9 @@ impl Drawing {
     }
 
     /// The picture to embed in a page beside a narrow table, a little smaller (see
-    /// [`tikz::BESIDE_A_TABLE`]); as [`figure_above_a_table`](Self::figure_above_a_table) when the picture is much
-    /// wider than high, since it would then be too small to read there and goes above its
-    /// table anyway.
+    /// [`tikz::BESIDE_A_TABLE`]); as [`figure_above_a_table`](Self::figure_above_a_table)
+    /// when the picture is much wider than high, since it would then be too small to read
+    /// there and goes above its table anyway.
     pub fn figure_beside_a_table(&self) -> crate::render::context::Figure {
         const WIDEST_BESIDE: f64 = 4.0;
         let height = self.picture.height - self.picture.legend.height;
