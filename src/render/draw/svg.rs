@@ -38,11 +38,55 @@ fn color(ink: Ink) -> String {
     }
 }
 
-fn points(ps: &[P2]) -> String {
-    ps.iter()
-        .map(|p| format!("{},{}", coarse(p[0]), coarse(p[1])))
-        .collect::<Vec<_>>()
-        .join(" ")
+/// A number of tenths as the shortest decimal: `-5` → `-.5`, `30` → `3`.
+fn tenths(n: i64) -> String {
+    let sign = if n < 0 { "-" } else { "" };
+    let (whole, tenth) = (n.abs() / 10, n.abs() % 10);
+    match (whole, tenth) {
+        (w, 0) => format!("{sign}{w}"),
+        (0, t) => format!("{sign}.{t}"),
+        (w, t) => format!("{sign}{w}.{t}"),
+    }
+}
+
+/// A point rounded to tenths of a pixel, as whole tenths.
+fn in_tenths(p: P2) -> (i64, i64) {
+    // Pictures are a few hundred pixels: the tenths fit an i64 many times over.
+    ((p[0] * 10.0).round() as i64, (p[1] * 10.0).round() as i64)
+}
+
+/// Numbers one after another, a space between two only where a minus sign does not already
+/// part them, as path data allows.
+fn push_numbers(d: &mut String, numbers: &[String]) {
+    for n in numbers {
+        if !d.is_empty() && !n.starts_with('-') && !d.ends_with(['M', 'l', 'm']) {
+            d.push(' ');
+        }
+        d.push_str(n);
+    }
+}
+
+/// Path data through `points`: the first absolute, each next one as the step from the last,
+/// all in tenths of a pixel. The steps are taken between rounded points, so rounding never
+/// adds up along a long outline.
+fn relative_path(d: &mut String, points: &[P2], closed: bool) {
+    let Some((&first, rest)) = points.split_first() else {
+        return;
+    };
+    let mut last = in_tenths(first);
+    d.push('M');
+    push_numbers(d, &[tenths(last.0), tenths(last.1)]);
+    if !rest.is_empty() {
+        d.push('l');
+    }
+    for &p in rest {
+        let now = in_tenths(p);
+        push_numbers(d, &[tenths(now.0 - last.0), tenths(now.1 - last.1)]);
+        last = now;
+    }
+    if closed {
+        d.push('z');
+    }
 }
 
 /// An open, unfilled line's look: lines that share it can be one `<path>`.
@@ -100,19 +144,21 @@ fn merged<'a>(out: &mut String, lines: impl Iterator<Item = &'a Item>) {
         stroke(out, first);
         return;
     }
-    let mut d = String::new();
-    let mut end = String::new();
+    // A line that starts where the last ended goes on from there (a chain of links).
+    let mut runs: Vec<Vec<P2>> = Vec::new();
     for s in &strokes {
-        for (k, p) in s.points.iter().enumerate() {
-            let at = format!("{},{}", coarse(p[0]), coarse(p[1]));
-            // A line that starts where the last ended goes on from there (a chain of links).
-            if k == 0 && at == end {
-                continue;
+        match (runs.last_mut(), s.points.split_first()) {
+            (Some(run), Some((&start, rest)))
+                if run.last().map(|&p| in_tenths(p)) == Some(in_tenths(start)) =>
+            {
+                run.extend_from_slice(rest);
             }
-            d.push(if k == 0 { 'M' } else { 'L' });
-            d.push_str(&at);
-            end = at;
+            _ => runs.push(s.points.clone()),
         }
+    }
+    let mut d = String::new();
+    for run in &runs {
+        relative_path(&mut d, run, false);
     }
     let dash = if first.dashed {
         " stroke-dasharray=\"4 3\""
@@ -121,14 +167,22 @@ fn merged<'a>(out: &mut String, lines: impl Iterator<Item = &'a Item>) {
     };
     let _ = writeln!(
         out,
-        "<path d=\"{d}\" stroke=\"{}\" stroke-width=\"{}\"{dash}/>",
-        color(first.ink),
+        "<path d=\"{d}\"{} stroke-width=\"{}\"{dash}/>",
+        outline(first.ink),
         num(first.width)
     );
 }
 
+/// A shape's outline colour, left out when it is the shapes group's (see `export`).
+fn outline(ink: Ink) -> String {
+    if ink == Ink::Black {
+        String::new()
+    } else {
+        format!(" stroke=\"{}\"", color(ink))
+    }
+}
+
 fn stroke(out: &mut String, s: &Stroke) {
-    let tag = if s.closed { "polygon" } else { "polyline" };
     // No fill is the shapes group's default (see `export`).
     let fill = s
         .fill
@@ -138,11 +192,12 @@ fn stroke(out: &mut String, s: &Stroke) {
     } else {
         ""
     };
+    let mut d = String::new();
+    relative_path(&mut d, &s.points, s.closed);
     let _ = writeln!(
         out,
-        "<{tag} points=\"{}\"{fill} stroke=\"{}\" stroke-width=\"{}\"{dash}/>",
-        points(&s.points),
-        color(s.ink),
+        "<path d=\"{d}\"{fill}{} stroke-width=\"{}\"{dash}/>",
+        outline(s.ink),
         num(s.width)
     );
 }
@@ -164,12 +219,10 @@ fn label_spans(label: &Label) -> String {
             run.clear();
             return;
         }
-        let size = if script != 0.0 {
-            " font-size=\"9\""
-        } else {
-            ""
-        };
-        let _ = write!(out, "<tspan dy=\"{}\"{size}>{}</tspan>", num(dy), xml(run));
+        // Scripts take the picture's small size (its `<style>`); a run back on the baseline
+        // is marked to take the full size again.
+        let class = if script != 0.0 { "" } else { " class=\"b\"" };
+        let _ = write!(out, "<tspan{class} dy=\"{}\">{}</tspan>", num(dy), xml(run));
         *shift = script;
         run.clear();
     };
@@ -210,12 +263,12 @@ fn item(out: &mut String, item: &Item) {
         } => {
             let _ = writeln!(
                 out,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"1.2\"/>",
+                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"{}/>",
                 coarse(center[0]),
                 coarse(center[1]),
                 coarse(*radius),
                 color(*fill),
-                color(*ink)
+                outline(*ink)
             );
         }
         Item::Text { .. } => text(out, item, true),
@@ -240,6 +293,10 @@ fn text(out: &mut String, item: &Item, coloured: bool) {
     }
 }
 
+/// The size of a label's scripts, and of a run back on the baseline after one: said once in
+/// each picture rather than on every `<tspan>`.
+const SCRIPT_STYLE: &str = "<style>.mbd tspan{font-size:9px}.mbd tspan.b{font-size:13px}</style>";
+
 /// The picture as an SVG document; every id (and `data-at`) starts with `prefix`.
 pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     let mut out = String::new();
@@ -251,107 +308,31 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         .collect();
     let _ = writeln!(
         out,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" data-projection=\"{}\" font-family=\"DejaVu Serif, Times New Roman, serif\" font-size=\"13\" text-anchor=\"middle\" stroke-linecap=\"round\" stroke-linejoin=\"round\">",
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" class=\"mbd\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" data-projection=\"{}\" font-family=\"DejaVu Serif, Times New Roman, serif\" font-size=\"13\" text-anchor=\"middle\" stroke-linecap=\"round\" stroke-linejoin=\"round\">",
         projection.join(" "),
         w = num(picture.width),
         h = num(picture.height),
     );
     let _ = writeln!(out, "<title>{}</title>", xml(title));
+    out.push_str(SCRIPT_STYLE);
+    out.push('\n');
     let _ = writeln!(
         out,
         "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#fff\"/>",
         num(picture.width),
         num(picture.height)
     );
-    out.push_str("<g class=\"shapes\" fill=\"none\">\n");
+    // Outlines are black and thin unless a shape says otherwise.
+    let _ = writeln!(
+        out,
+        "<g class=\"shapes\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\">",
+        color(Ink::Black)
+    );
     shapes(&mut out, &picture.items);
-    // Every point's circle has the same outline, given once.
-    out.push_str("</g>\n<g class=\"points\" stroke=\"#222\" stroke-width=\"1.2\">\n");
-    for m in &picture.marks {
-        let (r, fill, class) = match m.role {
-            Role::Joint => (2.6, "#222", "joint"),
-            Role::Center => (4.5, "#fff", "center"),
-            Role::Point => (2.6, "#222", "point"),
-        };
-        let _ = writeln!(
-            out,
-            "<circle id=\"{}{}\" class=\"{class}\" cx=\"{}\" cy=\"{}\" r=\"{r}\" fill=\"{fill}\"/>",
-            xml(prefix),
-            xml(&m.id),
-            num(m.at[0]),
-            num(m.at[1])
-        );
-        if m.role == Role::Center {
-            // The quartered circle of a mass center.
-            let (x, y) = (m.at[0], m.at[1]);
-            // After `z` the pen is back at the centre: the second quarter starts `m0 0`.
-            let _ = writeln!(
-                out,
-                "<path d=\"M{},{}h4.5a4.5 4.5 0 0 0-4.5-4.5zm0 0h-4.5a4.5 4.5 0 0 0 4.5 4.5z\" fill=\"#222\" stroke=\"none\"/>",
-                coarse(x),
-                coarse(y)
-            );
-        }
-    }
-    // Every arrow's line or arc has the same width, and its heads no outline, given once.
-    out.push_str("</g>\n<g class=\"arrows\" stroke-width=\"1.6\" stroke=\"none\">\n");
-    for a in &picture.arrows {
-        let mut class = String::from("force");
-        if a.couple {
-            class.push_str(" couple");
-        }
-        if a.kind == super::scene::Kind::Inertia {
-            class.push_str(" inertia");
-        } else {
-            class.push(' ');
-            class.push_str(a.kind.name());
-        }
-        let sense = a
-            .arc
-            .as_ref()
-            .map(|arc| format!(" data-sense=\"{:+}\"", arc.sense))
-            .unwrap_or_default();
-        let ink = color(a.ink);
-        let _ = writeln!(
-            out,
-            "<g class=\"{class}\" data-kind=\"{}\" data-label=\"{}\" data-at=\"{}{}\"{sense} fill=\"{ink}\">",
-            a.kind.name(),
-            xml(&a.label.plain),
-            xml(prefix),
-            xml(&a.at_id)
-        );
-        match &a.arc {
-            Some(arc) => {
-                let large = u8::from(arc.sweep.abs() > std::f64::consts::PI);
-                let sweep_flag = u8::from(arc.sweep > 0.0);
-                let _ = writeln!(
-                    out,
-                    "<path d=\"M{} {} A{} {} 0 {large} {sweep_flag} {} {}\" fill=\"none\" stroke=\"{ink}\"/>",
-                    num(a.tail[0]),
-                    num(a.tail[1]),
-                    num(arc.radius),
-                    num(arc.radius),
-                    num(a.head[0]),
-                    num(a.head[1])
-                );
-            }
-            None => {
-                let _ = writeln!(
-                    out,
-                    "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{ink}\"/>",
-                    num(a.tail[0]),
-                    num(a.tail[1]),
-                    num(a.head[0]),
-                    num(a.head[1])
-                );
-            }
-        }
-        for h in &a.heads {
-            let _ = writeln!(out, "<polygon points=\"{}\"/>", points(h));
-        }
-        out.push_str("</g>\n");
-    }
-    out.push_str("</g>\n<g class=\"labels\" fill=\"none\">\n");
+    out.push_str("</g>\n");
+    marks(&mut out, picture, prefix);
+    arrows(&mut out, picture, prefix);
+    out.push_str("<g class=\"labels\" fill=\"none\">\n");
     // A run of labels of one colour shares it, given once.
     let mut texts = picture.texts.iter().peekable();
     while let Some(t) = texts.next() {
@@ -373,6 +354,127 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     }
     out.push_str("</g>\n</svg>\n");
     out
+}
+
+/// The marked points, each a `<circle>` with its id; the mass centres' black quarters all
+/// in one path after them.
+fn marks(out: &mut String, picture: &Picture, prefix: &str) {
+    // Every point's circle has the same outline, given once.
+    out.push_str("<g class=\"points\" stroke=\"#222\" stroke-width=\"1.2\">\n");
+    let mut quarters = String::new();
+    for m in &picture.marks {
+        let (r, fill, class) = match m.role {
+            Role::Joint => (2.6, "#222", "joint"),
+            Role::Center => (4.5, "#fff", "center"),
+            Role::Point => (2.6, "#222", "point"),
+        };
+        let _ = writeln!(
+            out,
+            "<circle id=\"{}{}\" class=\"{class}\" cx=\"{}\" cy=\"{}\" r=\"{r}\" fill=\"{fill}\"/>",
+            xml(prefix),
+            xml(&m.id),
+            num(m.at[0]),
+            num(m.at[1])
+        );
+        if m.role == Role::Center {
+            // The quartered circle of a mass center. After `z` the pen is back at the
+            // centre: the second quarter starts `m0 0`.
+            let (x, y) = in_tenths(m.at);
+            let _ = write!(
+                quarters,
+                "M{},{}h4.5a4.5 4.5 0 0 0-4.5-4.5zm0 0h-4.5a4.5 4.5 0 0 0 4.5 4.5z",
+                tenths(x),
+                tenths(y)
+            );
+        }
+    }
+    if !quarters.is_empty() {
+        let _ = writeln!(
+            out,
+            "<path d=\"{quarters}\" fill=\"#222\" stroke=\"none\"/>"
+        );
+    }
+    out.push_str("</g>\n");
+}
+
+/// The arrows, each a `<g>` with the contract's class and data; a run of one colour inside
+/// a group that gives it, to line and head alike.
+fn arrows(out: &mut String, picture: &Picture, prefix: &str) {
+    // Every arrow's line or arc has the same width, given once.
+    out.push_str("<g class=\"arrows\" stroke-width=\"1.6\">\n");
+    let mut run_ink = None;
+    for a in &picture.arrows {
+        if run_ink != Some(a.ink) {
+            if run_ink.is_some() {
+                out.push_str("</g>\n");
+            }
+            let ink = color(a.ink);
+            let _ = writeln!(out, "<g fill=\"{ink}\" stroke=\"{ink}\">");
+            run_ink = Some(a.ink);
+        }
+        let mut class = String::from("force");
+        if a.couple {
+            class.push_str(" couple");
+        }
+        if a.kind == super::scene::Kind::Inertia {
+            class.push_str(" inertia");
+        } else {
+            class.push(' ');
+            class.push_str(a.kind.name());
+        }
+        let sense = a
+            .arc
+            .as_ref()
+            .map(|arc| format!(" data-sense=\"{:+}\"", arc.sense))
+            .unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "<g class=\"{class}\" data-kind=\"{}\" data-label=\"{}\" data-at=\"{}{}\"{sense}>",
+            a.kind.name(),
+            xml(&a.label.plain),
+            xml(prefix),
+            xml(&a.at_id)
+        );
+        match &a.arc {
+            Some(arc) => {
+                let large = u8::from(arc.sweep.abs() > std::f64::consts::PI);
+                let sweep_flag = u8::from(arc.sweep > 0.0);
+                let _ = writeln!(
+                    out,
+                    "<path d=\"M{} {} A{} {} 0 {large} {sweep_flag} {} {}\" fill=\"none\"/>",
+                    num(a.tail[0]),
+                    num(a.tail[1]),
+                    num(arc.radius),
+                    num(arc.radius),
+                    num(a.head[0]),
+                    num(a.head[1])
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\"/>",
+                    num(a.tail[0]),
+                    num(a.tail[1]),
+                    num(a.head[0]),
+                    num(a.head[1])
+                );
+            }
+        }
+        // The heads, filled; the arrow's outline around them only rounds their corners.
+        let mut d = String::new();
+        for h in &a.heads {
+            relative_path(&mut d, h, true);
+        }
+        if !d.is_empty() {
+            let _ = writeln!(out, "<path d=\"{d}\"/>");
+        }
+        out.push_str("</g>\n");
+    }
+    if run_ink.is_some() {
+        out.push_str("</g>\n");
+    }
+    out.push_str("</g>\n");
 }
 
 #[cfg(test)]
@@ -410,19 +512,29 @@ mod tests {
         let mut out = String::new();
         shapes(&mut out, &items);
         // Every outline under every fill, each coordinate to a tenth, a link that starts
-        // where the last ended going on from it.
-        let outline = format!(
-            "<path d=\"M0,0L10,0L10,5.3\" stroke=\"{}\" stroke-width=\"7\"/>\n",
-            color(Ink::Black)
-        );
+        // where the last ended going on from it, each point as the step from the last.
+        // The outline's black is the shapes group's and is not repeated.
+        let outline = "<path d=\"M0 0l10 0 0 5.3\" stroke-width=\"7\"/>\n".to_string();
         let fill = format!(
-            "<path d=\"M0,0L10,0L10,5.3\" stroke=\"{}\" stroke-width=\"4.6\"/>\n",
+            "<path d=\"M0 0l10 0 0 5.3\" stroke=\"{}\" stroke-width=\"4.6\"/>\n",
             color(Ink::Body)
         );
         assert_eq!(out, format!("{outline}{fill}"));
-        // One link alone stays a polyline.
+        // One link alone is a path of its own.
         let mut one = String::new();
         shapes(&mut one, &items[..2]);
-        assert_eq!(one.matches("<polyline").count(), 2, "{one}");
+        assert_eq!(one.matches("<path").count(), 2, "{one}");
+    }
+
+    #[test]
+    fn steps_are_taken_between_rounded_points() {
+        // 0.04 three times: each point alone rounds to 0, 0.1 and 0.1, so the steps are
+        // 1, 0 in tenths and the last point lands where it would alone (0.12 → 0.1).
+        let mut d = String::new();
+        relative_path(&mut d, &[[0.0, 0.0], [0.06, -0.5], [0.12, -1.25]], true);
+        assert_eq!(d, "M0 0l.1-.5 0-.8z");
+        assert_eq!(tenths(-5), "-.5");
+        assert_eq!(tenths(30), "3");
+        assert_eq!(tenths(-123), "-12.3");
     }
 }
