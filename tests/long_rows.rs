@@ -1,6 +1,7 @@
 //! A large system's step 5 says each thing once: a generalized force too long to print is
 //! named, not redefined; a row in vector form that repeats an earlier one along another
-//! axis refers to it; and A by value leaves out the rows a block of columns does not touch.
+//! axis refers to it; A by value leaves out the rows a block of columns does not touch; and
+//! a displayed simplified row opens with its note.
 
 /// The all-joints mechanism's handout by `method`, in `format`.
 fn all_joints(method: &str, format: &str) -> String {
@@ -81,4 +82,23 @@ fn a_generalized_force_too_long_to_print_is_named_not_redefined() {
     assert_eq!(latex.matches(definition).count(), 1);
     assert!(latex.contains("F^{*}_{1}\\ \\text{too long to print whole}"));
     assert!(!latex.contains("\\mathbf{v}^{B^*}_{1} \\cdot"));
+}
+
+#[test]
+fn a_displayed_simplified_row_opens_with_its_note() {
+    // Row 24 of the all-joints mechanism by Newton–Euler, D's moments about D* along d_z,
+    // is too long for a line once simplified: its display starts with the note, which
+    // then does not stand on a line of its own above it.
+    let latex = all_joints("newton-euler", "latex");
+    let at = latex
+        .find("\\steprow{24. $D\\colon \\sum \\mathbf{M}_{D^{*}} \\cdot \\hat{\\mathbf{d}}_{z}$}")
+        .expect("row 24");
+    let end = latex[at + 1..].find("\\steprow{25.").expect("row 25") + at + 1;
+    let row = &latex[at..end];
+    assert!(
+        row.contains("\\begin{multline*}\n\\text{Simplified:}\\quad -\\frac{L^{2} m"),
+        "{row}"
+    );
+    // Said once in the display (the inline form, used when the row fits a line, has its own).
+    assert_eq!(row.matches("\\text{Simplified:}").count(), 1, "{row}");
 }

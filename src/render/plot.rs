@@ -295,10 +295,10 @@ pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series]) -> String {
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
     // Three plots side by side on the page, each with its legend under it, small: the rows
     // of a legend are lower than a second row of plots.
-    text.push_str("  width=5.2cm, height=3.7cm, grid=major,\n");
+    text.push_str("  width=5.2cm, height=3.3cm, grid=major,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
-        "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.42)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
+        "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.48)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
         series.len().clamp(1, LEGEND_COLUMNS)
     ));
     text.push_str("]\n");

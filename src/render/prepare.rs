@@ -174,6 +174,12 @@ pub fn register_filters(tera: &mut tera::Tera) {
                 .get("width")
                 .and_then(Value::as_f64)
                 .unwrap_or(LINE_SYMBOLS);
+            // Words that open the first line (a row's "Simplified:"), so that they do not
+            // take a line of their own above the display.
+            let latex = match args.get("lead").and_then(Value::as_str) {
+                Some(lead) if !lead.is_empty() => format!("\\text{{{lead}}}\\quad {latex}"),
+                _ => latex,
+            };
             let lines = break_into_lines(&latex, width);
             let broken = displays(&lines);
             if lines.len() > 1 && latex.len() <= MEASURED_AT_MOST {
