@@ -396,13 +396,18 @@ fn display_equations(tex: &str) -> Vec<&str> {
     let mut offset = 0;
     for line in tex.split_inclusive('\n') {
         let trimmed = line.trim();
-        match (start, trimmed) {
-            (None, "\\[" | "\\begin{multline*}") => start = Some(offset + line.len()),
-            (Some(from), "\\]" | "\\end{multline*}") => {
-                out.push(tex[from..offset].trim());
-                start = None;
-            }
-            _ => {}
+        // A display may open at the end of a line (`}{\begin{multline*}`, a row's argument)
+        // and close at the start of one (`\end{multline*}}`).
+        let opens = trimmed.ends_with("\\begin{multline*}")
+            || trimmed.ends_with("{\\[")
+            || trimmed == "\\[";
+        let closes = trimmed.starts_with("\\end{multline*}") || trimmed.starts_with("\\]");
+        if let (Some(from), true) = (start, closes) {
+            out.push(tex[from..offset].trim());
+            start = None;
+        }
+        if start.is_none() && opens {
+            start = Some(offset + line.len());
         }
         offset += line.len();
     }
@@ -446,6 +451,8 @@ fn display_equations_are_found_whole() {
     let tex =
         "a\n\\[\nx = 1\n\\]\nMode 1\\\\[2pt]\n\\begin{multline*}\ny \\\\ = 2\n\\end{multline*}\n";
     assert_eq!(display_equations(tex), ["x = 1", "y \\\\ = 2"]);
+    let tex = "= 0}{\\begin{multline*}\nz \\\\ = 3\n\\end{multline*}}{\\[\nw = 4\n\\]}\n";
+    assert_eq!(display_equations(tex), ["z \\\\ = 3", "w = 4"]);
     let log = "Overfull \\hbox (12.5pt too wide) in paragraph at lines 3--4\nOverfull \\hbox (2.0pt too wide) detected at line 3\nOverfull \\hbox (9.0pt too wide) detected at line 1\n";
     let tex = "a\n\\section*{Step 1. Frames}\nb\nc\n\\section*{Step 6. x}\n";
     assert_eq!(overfull_lines(log, tex), [(4, 12.5)]);

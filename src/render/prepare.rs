@@ -174,29 +174,59 @@ pub fn register_filters(tera: &mut tera::Tera) {
                 .get("width")
                 .and_then(Value::as_f64)
                 .unwrap_or(LINE_SYMBOLS);
-            // Words that open the first line (a row's "Simplified:"), so that they do not
-            // take a line of their own above the display.
-            let latex = match args.get("lead").and_then(Value::as_str) {
-                Some(lead) if !lead.is_empty() => format!("\\text{{{lead}}}\\quad {latex}"),
-                _ => latex,
-            };
+            let lead = args.get("lead").and_then(Value::as_str).unwrap_or("");
+            let (latex, above) = lead_into(&latex, lead, width);
             let lines = break_into_lines(&latex, width);
             let broken = displays(&lines);
             if lines.len() > 1 && latex.len() <= MEASURED_AT_MOST {
                 // The count of symbols is a guess: LaTeX measures whether the equation fits
                 // one line after all, and sets it whole if so.
                 return Ok(Value::String(format!(
-                    "\\fitdisplay{{{latex}}}{{\n{broken}\n}}"
+                    "{above}\\fitdisplay{{{latex}}}{{\n{broken}\n}}"
                 )));
             }
-            Ok(Value::String(broken))
+            Ok(Value::String(format!("{above}{broken}")))
         },
     );
+}
+
+/// The most of a display's line that words opening it may take: a longer heading leaves
+/// too little beside it for the first term.
+const LEAD_AT_MOST: f64 = 0.45;
+
+/// A display's math with `lead` (text: a row's heading, "Simplified:") opening its first
+/// line, so that the words do not take a line of their own above it; or, when the words
+/// would take too much of the line, the math as it is and the words to set above it.
+fn lead_into(latex: &str, lead: &str, width: f64) -> (String, String) {
+    if lead.is_empty() {
+        return (latex.to_string(), String::new());
+    }
+    let words = format!("\\text{{{lead}}}");
+    if super::math_width::symbols(&words) > LEAD_AT_MOST * width {
+        return (latex.to_string(), format!("{lead}\n"));
+    }
+    (format!("{words}\\quad {latex}"), String::new())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_short_lead_opens_the_display_and_a_long_one_stands_above_it() {
+        let (math, above) = lead_into("x = 0", "Simplified:", 70.0);
+        assert_eq!(math, "\\text{Simplified:}\\quad x = 0");
+        assert_eq!(above, "");
+        // 40 letters of a constraint's heading: more than 0.45 of a 70-symbol line.
+        let heading = "rolling constraint at the front contact x";
+        let (math, above) = lead_into("x = 0", heading, 70.0);
+        assert_eq!(math, "x = 0");
+        assert_eq!(above, format!("{heading}\n"));
+        assert_eq!(
+            lead_into("x = 0", "", 70.0),
+            ("x = 0".to_string(), String::new())
+        );
+    }
 
     #[test]
     fn base64_matches_the_rfc_4648_vectors() {
