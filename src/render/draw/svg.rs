@@ -295,7 +295,8 @@ fn text(out: &mut String, item: &Item, coloured: bool) {
 
 /// The size of a label's scripts, and of a run back on the baseline after one: said once in
 /// each picture rather than on every `<tspan>`.
-const SCRIPT_STYLE: &str = "<style type=\"text/css\">.mbd tspan{font-size:9px}.mbd tspan.b{font-size:13px}</style>";
+const SCRIPT_STYLE: &str =
+    "<style type=\"text/css\">.mbd tspan{font-size:9px}.mbd tspan.b{font-size:13px}</style>";
 
 /// The picture as an SVG document; every id (and `data-at`) starts with `prefix`.
 pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
