@@ -726,3 +726,23 @@ fn an_acceleration_that_cancels_prints_as_zero() {
     assert_eq!(values.len(), 9);
     assert!(values.iter().all(|v| *v == "0"), "{values:?}");
 }
+
+#[test]
+fn two_rates_that_turn_together_are_squared_as_one() {
+    // Link C of the all-joints mechanism turns about ĉ_z at q̇_A + q̇_C (the turntable's
+    // rate plus its own), its centre L/2 along ĉ_x from the slider: by hand, the centre's
+    // centripetal acceleration is −(L/2)(q̇_A + q̇_C)² ĉ_x, not the square multiplied out.
+    let markdown = crate::support::explain(
+        "validation/all-joints-3d",
+        &["--method", "newton-euler", "--format", "markdown"],
+    );
+    let step4 = &markdown[markdown.find("## Step 4").expect("step 4")..];
+    assert!(step4.contains(
+        "{}^{N}\\mathbf{a}^{C^*} = {}^{N}\\mathbf{a}^{B^*} + \\ddot{s}_{C} \\hat{\\mathbf{b}}_{z} - \\frac{L}{2} \\left(\\dot{q}_{A} + \\dot{q}_{C}\\right)^{2} \\hat{\\mathbf{c}}_{x}"
+    ));
+    assert!(!markdown.contains("\\dot{q}_{A}^{2} + \\dot{q}_{C}^{2} + 2 \\dot{q}_{A} \\dot{q}_{C}"));
+    // Step 5 collects a row's rates the same way: D hangs from C, so D's rows hold the
+    // square of C's rate, (…)(q̇_A + q̇_C)², beside q̇_D1² and the other products.
+    let step5 = &markdown[markdown.find("## Step 5").expect("step 5")..];
+    assert!(step5.contains("\\left(\\dot{q}_{A} + \\dot{q}_{C}\\right)^{2} + "));
+}

@@ -74,7 +74,7 @@ pub fn latex_collected(e: &Expr) -> String {
         (None, None) => std::cmp::Ordering::Equal,
     });
     let mut out = String::new();
-    for (kind, keys, coefficients) in &sharing_coefficients(groups) {
+    for (kind, keys, coefficients, square) in &squares_of_rates(sharing_coefficients(groups)) {
         if kind.is_none() {
             // Constants: their sum, with its common factor out.
             let constant = add(coefficients.iter().cloned());
@@ -90,7 +90,10 @@ pub fn latex_collected(e: &Expr) -> String {
         if coefficient.is_zero() {
             continue;
         }
-        let key_text = keys_tex(keys);
+        let key_text = match square {
+            Some(root) => format!("\\left({}\\right)^{{2}}", latex(root)),
+            None => keys_tex(keys),
+        };
         let text = if coefficient.terms().len() == 1 {
             let (c, rest) = coefficient.split_coefficient();
             let sign = if c.is_negative() { "-" } else { "" };
@@ -137,6 +140,58 @@ fn sharing_coefficients(groups: Vec<(Option<Kind>, Expr, Vec<Expr>)>) -> Vec<Sha
     out.into_iter().map(|(group, _)| group).collect()
 }
 
+/// A group to print, with the sum whose square it is collected by, when it is one.
+type Squared = (Option<Kind>, Vec<Expr>, Vec<Expr>, Option<Expr>);
+
+/// The groups of rates whose coefficients are one coefficient times numbers that make the
+/// square of a sum merged into one: k q̇₁² + k q̇₂² + 2k q̇₁ q̇₂ → k (q̇₁ + q̇₂)², as a
+/// textbook writes the speed of two rates that always turn together.
+fn squares_of_rates(groups: Vec<Shared>) -> Vec<Squared> {
+    let mut out: Vec<Squared> = groups
+        .into_iter()
+        .map(|(kind, keys, coefficients)| (kind, keys, coefficients, None))
+        .collect();
+    let single_rate = |g: &Squared| g.0 == Some(Kind::Rate) && g.1.len() == 1 && g.3.is_none();
+    let mut i = 0;
+    while i < out.len() {
+        let base = add(out[i].2.iter().cloned());
+        if !single_rate(&out[i]) || base.is_zero() {
+            i += 1;
+            continue;
+        }
+        let mut members = vec![(i, Number::ONE)];
+        for (j, group) in out.iter().enumerate().skip(i + 1) {
+            if let (true, Some(r)) = (
+                single_rate(group),
+                multiple_of(&add(group.2.iter().cloned()), &base),
+            ) {
+                members.push((j, r));
+            }
+        }
+        let keys = add(members
+            .iter()
+            .map(|&(j, r)| mul([Expr::num(r), out[j].1[0].clone()])));
+        if let (true, Some(root)) = (members.len() >= 3, square_root_of_sum(&keys)) {
+            for &(j, _) in members.iter().skip(1).rev() {
+                out.remove(j);
+            }
+            out[i].3 = Some(root);
+        }
+        i += 1;
+    }
+    out
+}
+
+/// The number r with `a = r b`, when there is one.
+fn multiple_of(a: &Expr, b: &Expr) -> Option<Number> {
+    let (first_a, first_b) = (a.terms().first()?, b.terms().first()?);
+    if a.terms().len() != b.terms().len() {
+        return None;
+    }
+    let r = first_a.split_coefficient().0 * first_b.split_coefficient().0.recip()?;
+    (mul([Expr::num(r), b.clone()]) == *a).then_some(r)
+}
+
 /// One key as it is, several as their sum in parentheses, a run by its ends.
 fn keys_tex(keys: &[Expr]) -> String {
     match keys {
@@ -180,8 +235,47 @@ pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
     } else {
         format!("{} ", latex_term(c, &rest))
     };
-    let text = format!("{sign}{front}\\left({}\\right) {key}", latex(inner));
+    let inner = match square_root_of_sum(inner) {
+        Some(root) => format!("\\left({}\\right)^{{2}}", latex(&root)),
+        None => format!("\\left({}\\right)", latex(inner)),
+    };
+    let text = format!("{sign}{front}{inner} {key}");
     text.trim_end().to_string()
+}
+
+/// The sum whose square `sum` is, when it is the square of a sum of two to four terms
+/// that each appear squared with coefficient 1: q̇₁² + q̇₂² + 2 q̇₁ q̇₂ → q̇₁ + q̇₂, as a
+/// textbook writes a body's (q̇₁ + q̇₂)² of two rates that always turn together.
+fn square_root_of_sum(sum: &Expr) -> Option<Expr> {
+    const MOST_TERMS: usize = 4;
+    let squares: Vec<Expr> = sum
+        .terms()
+        .iter()
+        .filter_map(|t| match (t.split_coefficient(), t.node()) {
+            ((c, _), Node::Pow(base, exponent))
+                if c.is_one() && exponent.as_number() == Some(Number::ratio(2, 1)) =>
+            {
+                Some(base.clone())
+            }
+            _ => None,
+        })
+        .collect();
+    let k = squares.len();
+    // (a₁ + … + a_k)² has k squares and k(k − 1)/2 cross terms.
+    if !(2..=MOST_TERMS).contains(&k) || sum.terms().len() != k * (k + 1) / 2 {
+        return None;
+    }
+    // The first term's sign is free; each other sign is tried both ways.
+    (0..1u32 << (k - 1)).find_map(|signs| {
+        let root = add(squares.iter().enumerate().map(|(i, base)| {
+            if i > 0 && (signs >> (i - 1)) & 1 == 1 {
+                base.neg()
+            } else {
+                base.clone()
+            }
+        }));
+        (mul([root.clone(), root.clone()]) == *sum).then_some(root)
+    })
 }
 
 fn push_signed(out: &mut String, text: String) {
@@ -300,6 +394,39 @@ mod tests {
         assert_eq!(
             latex_collected(&e),
             "-\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} \\cos(q_{2})\\right) \\ddot{q}_{1} - \\frac{L_{1} L_{2} m_{2} \\sin(q_{2})}{2} \\dot{q}_{1}^{2} - g m_{2} \\sin(q_{2})"
+        );
+    }
+
+    #[test]
+    fn rates_that_make_a_square_are_written_as_the_square_of_their_sum() {
+        let (l, m) = (c("L"), c("m"));
+        let q = Expr::coord("q3", 0);
+        let (w1, w2, w3) = (
+            Expr::coord("q1", 1),
+            Expr::coord("q2", 1),
+            Expr::coord("q3", 1),
+        );
+        // L m cos q₃ (q̇₁² + q̇₂² − 2 q̇₁ q̇₂) + L q̇₃²: the first three are L m cos q₃ (q̇₁ − q̇₂)².
+        let k = &(&l * &m) * &cos(q.clone());
+        let e = add([
+            &k * &(&w1 * &w1),
+            &k * &(&w2 * &w2),
+            &(&k * &Expr::int(-2)) * &(&w1 * &w2),
+            &l * &(&w3 * &w3),
+        ]);
+        assert_eq!(
+            latex_collected(&e),
+            "L m \\cos(q_{3}) \\left(\\dot{q}_{1} - \\dot{q}_{2}\\right)^{2} + L \\dot{q}_{3}^{2}"
+        );
+        // A sum that is not a square stays as it is: q̇₁² + q̇₂² + q̇₁ q̇₂.
+        let not = add([&w1 * &w1, &w2 * &w2, &w1 * &w2]);
+        assert_eq!(square_root_of_sum(&not), None);
+        // Inside a factored coefficient too: m/2 (q̇₁² + 2 q̇₁ q̇₂ + q̇₂²) → m/2 (q̇₁ + q̇₂)².
+        let square = add([&w1 * &w1, &w2 * &w2, &(&w1 * &w2) * &Expr::int(2)]);
+        assert_eq!(square_root_of_sum(&square), Some(&w1 + &w2));
+        assert_eq!(
+            factored(&(&m * &Expr::ratio(1, 2)), &square, ""),
+            "\\frac{m}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2}"
         );
     }
 
