@@ -1,7 +1,8 @@
 //! A large system's step 5 says each thing once: a generalized force too long to print is
 //! named, not redefined; a row in vector form that repeats an earlier one along another
-//! axis refers to it; A by value leaves out the rows a block of columns does not touch; and
-//! a displayed simplified row opens with its note.
+//! axis refers to it; A by value leaves out the rows a block of columns does not touch; a
+//! displayed simplified row opens with its note; and Kane's auxiliary rows at one joint say
+//! once what their speed does.
 
 /// The all-joints mechanism's handout by `method`, in `format`.
 fn all_joints(method: &str, format: &str) -> String {
@@ -101,4 +102,28 @@ fn a_displayed_simplified_row_opens_with_its_note() {
     );
     // Said once in the display (the inline form, used when the row fits a line, has its own).
     assert_eq!(row.matches("\\text{Simplified:}").count(), 1, "{row}");
+}
+
+#[test]
+fn an_auxiliary_row_after_the_first_at_a_joint_refers_to_it() {
+    // Kane's rows 16 to 20 bring in the five reactions at O through auxiliary speeds that
+    // each move the whole chain A…G against the joint: said at row 16, referred to after.
+    let markdown = all_joints("kane", "markdown");
+    let full = "(an auxiliary speed: it moves A + B + C + D + E + G against the joint and brings in the reaction)";
+    assert_eq!(markdown.matches(full).count(), 1);
+    assert!(markdown.contains(&format!(
+        "$r = 16\\colon\\; u_{{16}} \\to F^{{O}}_{{x}}$ {full}"
+    )));
+    for row in 17..=20 {
+        let heading = format!("**{row}. $r = {row}\\colon\\; u_{{{row}}} \\to ");
+        let at = markdown.find(&heading).expect("the row");
+        let line = markdown[at..].lines().next().unwrap_or_default();
+        assert!(
+            line.ends_with("(an auxiliary speed, as in row 16)**"),
+            "{line}"
+        );
+    }
+    // The joint W's rows refer to the first of theirs.
+    assert!(markdown.contains("(an auxiliary speed: it moves G against the joint"));
+    assert!(markdown.contains("(an auxiliary speed, as in row 21)"));
 }

@@ -45,6 +45,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .map(|row| equation_view(derivation, row))
             .collect();
         super::long::refer_to_repeated_vector_forms(derivation, &mut solution.equations);
+        super::long::refer_to_the_first_auxiliary_row(&mut solution.equations);
         // The matrix is listed entry by entry whenever an equation refers to its entries.
         let by_name: Vec<bool> = solution.equations.iter().map(|e| e.by_name).collect();
         let use_shown = uses_shown(derivation);

@@ -212,3 +212,19 @@ pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [Equa
         }
     }
 }
+
+/// Kane's auxiliary rows after the first at a joint refer to it for what their speed does,
+/// rather than saying again that it moves the same bodies against the joint.
+pub fn refer_to_the_first_auxiliary_row(views: &mut [EquationView]) {
+    const OPENING: &str = "(an auxiliary speed: it moves ";
+    let mut seen: Vec<(String, usize)> = Vec::new();
+    for (i, view) in views.iter_mut().enumerate() {
+        if !view.label.starts_with(OPENING) {
+            continue;
+        }
+        match seen.iter().find(|(label, _)| *label == view.label) {
+            Some((_, first)) => view.label = format!("(an auxiliary speed, as in row {first})"),
+            None => seen.push((view.label.clone(), i + 1)),
+        }
+    }
+}
