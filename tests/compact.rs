@@ -745,4 +745,13 @@ fn two_rates_that_turn_together_are_squared_as_one() {
     // square of C's rate, (…)(q̇_A + q̇_C)², beside q̇_D1² and the other products.
     let step5 = &markdown[markdown.find("## Step 5").expect("step 5")..];
     assert!(step5.contains("\\left(\\dot{q}_{A} + \\dot{q}_{C}\\right)^{2} + "));
+    // A "where" list's definition keeps its terms, the square of C's rate written as one:
+    // the joint point K's acceleration without the q'' along D's x axis.
+    let definition = step4
+        .lines()
+        .find(|l| l.contains("\\tilde{a}^{K}_{x} = "))
+        .expect("K's acceleration");
+    assert!(definition.contains(
+        "+ \\frac{L s_{q_{D2}} c_{q_{D1}}^{2} c_{q_{D2}}}{2} \\left(\\dot{q}_{A} + \\dot{q}_{C}\\right)^{2}"
+    ));
 }

@@ -13,7 +13,7 @@ use crate::pipeline::Worked;
 use crate::plan::forces::ActionKind;
 use crate::plan::rows::{Equation, Sum};
 use crate::problem::{BodyId, Problem};
-use crate::symbolic::collect::latex_collected;
+use crate::symbolic::collect::{latex_collected, latex_with_squares};
 use crate::symbolic::named::{as_shown, named_definitions};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};
 use crate::symbolic::roots::roots_of_squares;
@@ -325,7 +325,7 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
             definition_tex: format!(
                 "{} = {}",
                 d.latex().unwrap_or_default(),
-                latex(&simplify(d.value()))
+                latex_with_squares(&simplify(d.value()))
             ),
             note: d.note().to_string(),
         })

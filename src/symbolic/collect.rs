@@ -116,6 +116,78 @@ pub fn latex_collected(e: &Expr) -> String {
     }
 }
 
+/// `e` (a canonical sum) in LaTeX as it is, but for the terms whose rates make the square
+/// of a sum, written as that square after the others: (L s/2) q̇_A² + (L s/2) q̇_C² +
+/// L s q̇_A q̇_C → (L s/2)(q̇_A + q̇_C)². For a definition, which keeps its terms' order
+/// rather than being collected (see [`latex_collected`]).
+pub fn latex_with_squares(e: &Expr) -> String {
+    // Each term as its rates and the rest.
+    let split: Vec<(Expr, Expr)> = e
+        .terms()
+        .iter()
+        .map(|t| {
+            let (rates, rest): (Vec<Expr>, Vec<Expr>) = t
+                .factors()
+                .iter()
+                .cloned()
+                .partition(|f| kind(f) == Some(Kind::Rate));
+            (mul(rates), mul(rest))
+        })
+        .collect();
+    let mut used = vec![false; split.len()];
+    let mut squares = String::new();
+    for i in 0..split.len() {
+        if used[i] || split[i].0.is_one() {
+            continue;
+        }
+        let base = split[i].1.clone();
+        let members: Vec<(usize, Number)> = (i..split.len())
+            .filter(|&j| !used[j] && !split[j].0.is_one())
+            .filter_map(|j| multiple_of(&split[j].1, &base).map(|r| (j, r)))
+            .collect();
+        if members.len() < 3 {
+            continue;
+        }
+        let keys = add(members
+            .iter()
+            .map(|&(j, r)| mul([Expr::num(r), split[j].0.clone()])));
+        let Some(root) = square_root_of_sum(&keys) else {
+            continue;
+        };
+        for &(j, _) in &members {
+            used[j] = true;
+        }
+        let square = format!("\\left({}\\right)^{{2}}", latex(&root));
+        let (c, rest) = base.split_coefficient();
+        let text = match (
+            c.is_negative(),
+            c.is_one() || c.neg().is_one(),
+            rest.is_one(),
+        ) {
+            (negative, true, true) => format!("{}{square}", if negative { "-" } else { "" }),
+            (true, _, _) => format!("-{} {square}", latex_term(c.neg(), &rest)),
+            (false, _, _) => format!("{} {square}", latex_term(c, &rest)),
+        };
+        push_signed(&mut squares, text);
+    }
+    if squares.is_empty() {
+        return latex(e);
+    }
+    let others = add(e
+        .terms()
+        .iter()
+        .zip(&used)
+        .filter(|(_, used)| !**used)
+        .map(|(t, _)| t.clone()));
+    let mut out = if others.is_zero() {
+        String::new()
+    } else {
+        latex(&others)
+    };
+    push_signed(&mut out, squares);
+    out
+}
+
 /// A group to print: what it is collected by, its keys (more than one when they share a
 /// coefficient) and the terms of that coefficient.
 type Shared = (Option<Kind>, Vec<Expr>, Vec<Expr>);
@@ -428,6 +500,35 @@ mod tests {
             factored(&(&m * &Expr::ratio(1, 2)), &square, ""),
             "\\frac{m}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right)^{2}"
         );
+    }
+
+    #[test]
+    fn a_definition_keeps_its_terms_but_writes_a_square_of_rates_as_one() {
+        let (l, a) = (c("L"), c("a"));
+        let (w1, w2, w3) = (
+            Expr::coord("q1", 1),
+            Expr::coord("q2", 1),
+            Expr::coord("q3", 1),
+        );
+        // a + L q̇₃ + (L/2) q̇₁² + (L/2) q̇₂² + L q̇₁ q̇₂ = a + L q̇₃ + (L/2)(q̇₁ + q̇₂)².
+        let half = &l * &Expr::ratio(1, 2);
+        let e = add([
+            a.clone(),
+            &l * &w3,
+            &half * &(&w1 * &w1),
+            &half * &(&w2 * &w2),
+            &l * &(&w1 * &w2),
+        ]);
+        assert_eq!(
+            latex_with_squares(&e),
+            format!(
+                "{} + \\frac{{L}}{{2}} \\left(\\dot{{q}}_{{1}} + \\dot{{q}}_{{2}}\\right)^{{2}}",
+                latex(&add([a.clone(), &l * &w3]))
+            )
+        );
+        // Nothing to square: as `latex` writes it.
+        let plain = add([a.clone(), &l * &(&w1 * &w2)]);
+        assert_eq!(latex_with_squares(&plain), latex(&plain));
     }
 
     #[test]
