@@ -90,19 +90,9 @@ pub fn latex_collected(e: &Expr) -> String {
         if coefficient.is_zero() {
             continue;
         }
-        let key_text = match square {
-            Some(root) => format!("\\left({}\\right)^{{2}}", latex(root)),
-            None => keys_tex(keys),
-        };
+        let key_text = square.as_ref().map_or_else(|| keys_tex(keys), square_tex);
         let text = if coefficient.terms().len() == 1 {
-            let (c, rest) = coefficient.split_coefficient();
-            let sign = if c.is_negative() { "-" } else { "" };
-            let c = if c.is_negative() { c.neg() } else { c };
-            if rest.is_one() && c.is_one() {
-                format!("{sign}{key_text}")
-            } else {
-                format!("{sign}{} {key_text}", latex_term(c, &rest))
-            }
+            signed_term(&coefficient, &key_text)
         } else {
             let (common, inner) = pull_common_factor(&coefficient);
             factored(&common, &inner, &key_text)
@@ -121,8 +111,8 @@ pub fn latex_collected(e: &Expr) -> String {
 /// L s q̇_A q̇_C → (L s/2)(q̇_A + q̇_C)². For a definition, which keeps its terms' order
 /// rather than being collected (see [`latex_collected`]).
 pub fn latex_with_squares(e: &Expr) -> String {
-    // Each term as its rates and the rest.
-    let split: Vec<(Expr, Expr)> = e
+    // Each term as its rates and the rest; a term without rates takes no part.
+    let items: Vec<Option<(Expr, Expr)>> = e
         .terms()
         .iter()
         .map(|t| {
@@ -131,47 +121,21 @@ pub fn latex_with_squares(e: &Expr) -> String {
                 .iter()
                 .cloned()
                 .partition(|f| kind(f) == Some(Kind::Rate));
-            (mul(rates), mul(rest))
+            let rates = mul(rates);
+            (!rates.is_one()).then(|| (rates, mul(rest)))
         })
         .collect();
-    let mut used = vec![false; split.len()];
-    let mut squares = String::new();
-    for i in 0..split.len() {
-        if used[i] || split[i].0.is_one() {
-            continue;
-        }
-        let base = split[i].1.clone();
-        let members: Vec<(usize, Number)> = (i..split.len())
-            .filter(|&j| !used[j] && !split[j].0.is_one())
-            .filter_map(|j| multiple_of(&split[j].1, &base).map(|r| (j, r)))
-            .collect();
-        if members.len() < 3 {
-            continue;
-        }
-        let keys = add(members
-            .iter()
-            .map(|&(j, r)| mul([Expr::num(r), split[j].0.clone()])));
-        let Some(root) = square_root_of_sum(&keys) else {
-            continue;
-        };
-        for &(j, _) in &members {
-            used[j] = true;
-        }
-        let square = format!("\\left({}\\right)^{{2}}", latex(&root));
-        let (c, rest) = base.split_coefficient();
-        let text = match (
-            c.is_negative(),
-            c.is_one() || c.neg().is_one(),
-            rest.is_one(),
-        ) {
-            (negative, true, true) => format!("{}{square}", if negative { "-" } else { "" }),
-            (true, _, _) => format!("-{} {square}", latex_term(c.neg(), &rest)),
-            (false, _, _) => format!("{} {square}", latex_term(c, &rest)),
-        };
-        push_signed(&mut squares, text);
-    }
-    if squares.is_empty() {
+    let found = squares(&items);
+    if found.is_empty() {
         return latex(e);
+    }
+    let mut used = vec![false; items.len()];
+    let mut squared = String::new();
+    for (members, root) in &found {
+        members.iter().for_each(|&j| used[j] = true);
+        if let Some((_, coefficient)) = &items[members[0]] {
+            push_signed(&mut squared, signed_term(coefficient, &square_tex(root)));
+        }
     }
     let others = add(e
         .terms()
@@ -184,7 +148,40 @@ pub fn latex_with_squares(e: &Expr) -> String {
     } else {
         latex(&others)
     };
-    push_signed(&mut out, squares);
+    push_signed(&mut out, squared);
+    out
+}
+
+/// Among `items` (each a product of rates and its coefficient, or `None` to leave out), the
+/// runs whose coefficients are the first one's times numbers that, as weights of their
+/// rates, make the square of a sum: k q̇₁², k q̇₂², 2k q̇₁ q̇₂. Each as its items' indices,
+/// the first one's first, and the sum squared.
+fn squares(items: &[Option<(Expr, Expr)>]) -> Vec<(Vec<usize>, Expr)> {
+    let mut used = vec![false; items.len()];
+    let mut out = Vec::new();
+    for (i, item) in items.iter().enumerate() {
+        let Some((_, base)) = item.as_ref().filter(|(_, c)| !used[i] && !c.is_zero()) else {
+            continue;
+        };
+        let members: Vec<(usize, Number)> = (i..items.len())
+            .filter(|&j| !used[j])
+            .filter_map(|j| {
+                let (_, coefficient) = items[j].as_ref()?;
+                multiple_of(coefficient, base).map(|r| (j, r))
+            })
+            .collect();
+        if members.len() < 3 {
+            continue;
+        }
+        let weighted = add(members.iter().filter_map(|&(j, r)| {
+            let (rates, _) = items[j].as_ref()?;
+            Some(mul([Expr::num(r), rates.clone()]))
+        }));
+        if let Some(root) = square_root_of_sum(&weighted) {
+            members.iter().for_each(|&(j, _)| used[j] = true);
+            out.push((members.into_iter().map(|(j, _)| j).collect(), root));
+        }
+    }
     out
 }
 
@@ -219,39 +216,28 @@ type Squared = (Option<Kind>, Vec<Expr>, Vec<Expr>, Option<Expr>);
 /// square of a sum merged into one: k q̇₁² + k q̇₂² + 2k q̇₁ q̇₂ → k (q̇₁ + q̇₂)², as a
 /// textbook writes the speed of two rates that always turn together.
 fn squares_of_rates(groups: Vec<Shared>) -> Vec<Squared> {
-    let mut out: Vec<Squared> = groups
-        .into_iter()
-        .map(|(kind, keys, coefficients)| (kind, keys, coefficients, None))
+    let items: Vec<Option<(Expr, Expr)>> = groups
+        .iter()
+        .map(|(kind, keys, coefficients)| match keys.as_slice() {
+            [key] if *kind == Some(Kind::Rate) => {
+                Some((key.clone(), add(coefficients.iter().cloned())))
+            }
+            _ => None,
+        })
         .collect();
-    let single_rate = |g: &Squared| g.0 == Some(Kind::Rate) && g.1.len() == 1 && g.3.is_none();
-    let mut i = 0;
-    while i < out.len() {
-        let base = add(out[i].2.iter().cloned());
-        if !single_rate(&out[i]) || base.is_zero() {
-            i += 1;
-            continue;
-        }
-        let mut members = vec![(i, Number::ONE)];
-        for (j, group) in out.iter().enumerate().skip(i + 1) {
-            if let (true, Some(r)) = (
-                single_rate(group),
-                multiple_of(&add(group.2.iter().cloned()), &base),
-            ) {
-                members.push((j, r));
-            }
-        }
-        let keys = add(members
-            .iter()
-            .map(|&(j, r)| mul([Expr::num(r), out[j].1[0].clone()])));
-        if let (true, Some(root)) = (members.len() >= 3, square_root_of_sum(&keys)) {
-            for &(j, _) in members.iter().skip(1).rev() {
-                out.remove(j);
-            }
-            out[i].3 = Some(root);
-        }
-        i += 1;
+    let mut roots: Vec<Option<Expr>> = vec![None; groups.len()];
+    let mut merged = vec![false; groups.len()];
+    for (members, root) in squares(&items) {
+        members.iter().skip(1).for_each(|&j| merged[j] = true);
+        roots[members[0]] = Some(root);
     }
-    out
+    groups
+        .into_iter()
+        .zip(roots)
+        .zip(merged)
+        .filter(|(_, merged)| !merged)
+        .map(|(((kind, keys, coefficients), root), _)| (kind, keys, coefficients, root))
+        .collect()
 }
 
 /// The number r with `a = r b`, when there is one.
@@ -307,10 +293,10 @@ pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
     } else {
         format!("{} ", latex_term(c, &rest))
     };
-    let inner = match square_root_of_sum(inner) {
-        Some(root) => format!("\\left({}\\right)^{{2}}", latex(&root)),
-        None => format!("\\left({}\\right)", latex(inner)),
-    };
+    let inner = square_root_of_sum(inner).map_or_else(
+        || format!("\\left({}\\right)", latex(inner)),
+        |root| square_tex(&root),
+    );
     let text = format!("{sign}{front}{inner} {key}");
     text.trim_end().to_string()
 }
@@ -348,6 +334,23 @@ fn square_root_of_sum(sum: &Expr) -> Option<Expr> {
         }));
         (mul([root.clone(), root.clone()]) == *sum).then_some(root)
     })
+}
+
+/// `(root)²` in LaTeX.
+fn square_tex(root: &Expr) -> String {
+    format!("\\left({}\\right)^{{2}}", latex(root))
+}
+
+/// `coefficient key`, `coefficient` one term, its sign in front and a factor ±1 left out.
+fn signed_term(coefficient: &Expr, key_text: &str) -> String {
+    let (c, rest) = coefficient.split_coefficient();
+    let sign = if c.is_negative() { "-" } else { "" };
+    let c = if c.is_negative() { c.neg() } else { c };
+    if rest.is_one() && c.is_one() {
+        format!("{sign}{key_text}")
+    } else {
+        format!("{sign}{} {key_text}", latex_term(c, &rest))
+    }
 }
 
 fn push_signed(out: &mut String, text: String) {
