@@ -16,7 +16,7 @@ const SYMBOL_CM: f64 = 0.25;
 /// at most what the fixed layout gave, beyond which an entry wraps.
 const FREE_BODY_CM: (f64, f64) = (1.8, 4.2);
 const EQUATION_CM: (f64, f64) = (1.7, 3.0);
-const DIRECTION_CM: (f64, f64) = (1.8, 2.4);
+const DIRECTION_CM: (f64, f64) = (1.8, 2.8);
 
 /// The columns' widths for `rows`, to a millimetre.
 pub fn columns(rows: &[PlanRow]) -> PlanColumns {
