@@ -19,11 +19,12 @@ pub const BESIDE_A_TABLE: Size = Size {
     height: 160.0,
 };
 
-/// The largest a free body may be above its table of forces: a little lower than a page's
-/// picture, as a 3D problem has a free body for each of several bodies and groups.
+/// The largest a free body may be above its table of forces: lower than a page's picture,
+/// as a 3D problem has a free body for each of several bodies and groups, and a free body
+/// and its kinetic diagram side by side are wider than high.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 320.0,
-    height: 185.0,
+    height: 150.0,
 };
 
 /// The room a picture may take on the page, in points.
