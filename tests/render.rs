@@ -350,7 +350,24 @@ fn every_problem_renders_and_its_latex_compiles() {
         ));
     }
     assert!(!documents.is_empty(), "no problems found");
-    for (name, source) in &documents {
+    // Newton–Euler's handouts are read for their displays only: compiling them too would
+    // double the time of this test, and their layout is the Motion Law's.
+    let newton_euler: Vec<(String, String)> = problem_files()
+        .iter()
+        .map(|path| {
+            let problem = mbd_tutor::problem::load_file(path)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let worked =
+                mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::NewtonEuler)
+                    .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let solution = mbd_tutor::render::build::solution(&worked);
+            (
+                format!("{}-newton-euler", file_stem(path)),
+                rendered(&solution, Format::Latex, false),
+            )
+        })
+        .collect();
+    for (name, source) in documents.iter().chain(&newton_euler) {
         for display in display_equations(source) {
             assert!(
                 display.len() <= DISPLAY_LIMIT,
