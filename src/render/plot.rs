@@ -280,8 +280,25 @@ fn subscript(d: char) -> char {
         .unwrap_or(d)
 }
 
-/// The most entries a row of a plot's legend holds: as wide as the plot.
-const LEGEND_COLUMNS: usize = 4;
+/// How many symbols a row of a plot's legend may print, each entry counted with its line's
+/// sample as four: as wide as the plot when three plots share the page's width, or four.
+const LEGEND_ROOM: usize = 28;
+const LEGEND_ROOM_OF_FOUR: usize = 20;
+
+/// How many entries of `series` a row of the legend holds: as many as fit its room.
+fn legend_columns(series: &[Series], of_four: bool) -> usize {
+    let room = if of_four {
+        LEGEND_ROOM_OF_FOUR
+    } else {
+        LEGEND_ROOM
+    };
+    let widest = series
+        .iter()
+        .map(|s| super::math_width::printed_width(&s.name.tex.replace('$', "")) + 4)
+        .max()
+        .unwrap_or(4);
+    (room / widest).clamp(1, series.len().max(1))
+}
 
 /// A LaTeX `tikzpicture` with a pgfplots `axis` holding one `\addplot` per series.
 ///
@@ -289,17 +306,18 @@ const LEGEND_COLUMNS: usize = 4;
 /// the last) and printed with [`fixed`] precision. The labels and legends are LaTeX
 /// already. No title: the figure's caption says what the plot shows. Non-finite points are left out. The
 /// document needs `\usepackage{pgfplots}`.
-pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series]) -> String {
+pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series], of_four: bool) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
-    // Three plots side by side on the page, each with its legend under it, small: the rows
-    // of a legend are lower than a second row of plots.
-    text.push_str("  width=5.2cm, height=3.3cm, grid=major,\n");
+    // Three or four plots side by side on the page, each with its legend under it, small:
+    // the rows of a legend are lower than a second row of plots. The width is the page's
+    // to set (`\pgfplotsset{width=…}`), by how many plots share the row.
+    text.push_str("  height=3.3cm, grid=major,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
         "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.48)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
-        series.len().clamp(1, LEGEND_COLUMNS)
+        legend_columns(series, of_four)
     ));
     text.push_str("]\n");
     for line in series {
@@ -405,7 +423,7 @@ mod tests {
     #[test]
     fn pgfplots_is_thinned_and_its_labels_are_math() {
         let energy = Label::math("E", "(J)");
-        let text = pgfplots(&time(), &energy, &sine());
+        let text = pgfplots(&time(), &energy, &sine(), false);
         assert!(text.starts_with("\\begin{tikzpicture}\n\\begin{axis}["));
         assert!(!text.contains("title="), "the caption is the title");
         assert!(text.contains("xlabel={$t$ (s)}"));

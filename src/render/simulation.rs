@@ -90,17 +90,17 @@ pub fn simulation(
         plots.push(drift);
     }
     let time = Label::math("t", "(s)");
+    plots.retain(|plot| !plot.3.is_empty());
+    // Four plots share a row of the page (see the LaTeX template), each narrower.
+    let of_four = plots.len() == 4;
     for (kind, title, y_label, series) in plots {
-        if series.is_empty() {
-            continue;
-        }
         let svg = line_plot(title, &time, &y_label, &series).unwrap_or_default();
         solution.simulation.plots.push(Plot {
             kind: kind.into(),
             title: title.into(),
             svg_file: String::new(),
             image_svg: svg,
-            pgfplots_latex: pgfplots(&time, &y_label, &series),
+            pgfplots_latex: pgfplots(&time, &y_label, &series, of_four),
         });
     }
 }
