@@ -280,24 +280,28 @@ fn subscript(d: char) -> char {
         .unwrap_or(d)
 }
 
-/// How many symbols a row of a plot's legend may print, each entry counted with its line's
-/// sample as four: as wide as the plot when three plots share the page's width, or four.
-const LEGEND_ROOM: usize = 28;
+/// The most entries a row of a plot's legend holds when three plots share the page's
+/// width: as wide as the plot.
+const LEGEND_COLUMNS: usize = 4;
+
+/// How many symbols a row of a legend may print when four plots share the width, each entry
+/// counted with its line's sample as four.
 const LEGEND_ROOM_OF_FOUR: usize = 20;
 
-/// How many entries of `series` a row of the legend holds: as many as fit its room.
-fn legend_columns(series: &[Series], of_four: bool) -> usize {
-    let room = if of_four {
-        LEGEND_ROOM_OF_FOUR
+/// How many entries of `series` a row of the legend holds, `plots_in_row` plots sharing the
+/// page's width: as many as fit the plot's width.
+fn legend_columns(series: &[Series], plots_in_row: usize) -> usize {
+    let most = if plots_in_row < 4 {
+        LEGEND_COLUMNS
     } else {
-        LEGEND_ROOM
+        let widest = series
+            .iter()
+            .map(|s| super::math_width::printed_width(&s.name.tex.replace('$', "")) + 4)
+            .max()
+            .unwrap_or(4);
+        LEGEND_ROOM_OF_FOUR / widest
     };
-    let widest = series
-        .iter()
-        .map(|s| super::math_width::printed_width(&s.name.tex.replace('$', "")) + 4)
-        .max()
-        .unwrap_or(4);
-    (room / widest).clamp(1, series.len().max(1))
+    most.min(series.len()).max(1)
 }
 
 /// A LaTeX `tikzpicture` with a pgfplots `axis` holding one `\addplot` per series.
@@ -306,7 +310,12 @@ fn legend_columns(series: &[Series], of_four: bool) -> usize {
 /// the last) and printed with [`fixed`] precision. The labels and legends are LaTeX
 /// already. No title: the figure's caption says what the plot shows. Non-finite points are left out. The
 /// document needs `\usepackage{pgfplots}`.
-pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series], of_four: bool) -> String {
+pub fn pgfplots(
+    x_label: &Label,
+    y_label: &Label,
+    series: &[Series],
+    plots_in_row: usize,
+) -> String {
     let mut text = String::from("\\begin{tikzpicture}\n\\begin{axis}[\n");
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
@@ -317,7 +326,7 @@ pub fn pgfplots(x_label: &Label, y_label: &Label, series: &[Series], of_four: bo
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
         "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.48)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
-        legend_columns(series, of_four)
+        legend_columns(series, plots_in_row)
     ));
     text.push_str("]\n");
     for line in series {
@@ -421,9 +430,30 @@ mod tests {
     }
 
     #[test]
+    fn a_legend_of_four_to_a_row_holds_what_its_narrower_plot_fits() {
+        let named = |names: &[&str]| -> Vec<Series> {
+            names
+                .iter()
+                .map(|n| Series {
+                    name: Label::math(n, ""),
+                    points: vec![(0.0, 0.0)],
+                })
+                .collect()
+        };
+        let energies = named(&["T", "V", "E = T + V"]);
+        let angles = named(&["\\psi", "\\phi", "\\theta", "\\theta_{R}", "\\delta"]);
+        // Three to a row: every entry of a short legend on one row, at most four.
+        assert_eq!(legend_columns(&energies, 3), 3);
+        assert_eq!(legend_columns(&angles, 3), 4);
+        // Four to a row: "E = T + V" with its sample takes more than half the row.
+        assert_eq!(legend_columns(&energies, 4), 1);
+        assert_eq!(legend_columns(&angles, 4), 3);
+    }
+
+    #[test]
     fn pgfplots_is_thinned_and_its_labels_are_math() {
         let energy = Label::math("E", "(J)");
-        let text = pgfplots(&time(), &energy, &sine(), false);
+        let text = pgfplots(&time(), &energy, &sine(), 3);
         assert!(text.starts_with("\\begin{tikzpicture}\n\\begin{axis}["));
         assert!(!text.contains("title="), "the caption is the title");
         assert!(text.contains("xlabel={$t$ (s)}"));

@@ -91,8 +91,9 @@ pub fn simulation(
     }
     let time = Label::math("t", "(s)");
     plots.retain(|plot| !plot.3.is_empty());
-    // Four plots share a row of the page (see the LaTeX template), each narrower.
-    let of_four = plots.len() == 4;
+    // Four plots share a row of the page, each narrower; otherwise three to a row (see the
+    // LaTeX template).
+    let plots_in_row = if plots.len() == 4 { 4 } else { 3 };
     for (kind, title, y_label, series) in plots {
         let svg = line_plot(title, &time, &y_label, &series).unwrap_or_default();
         solution.simulation.plots.push(Plot {
@@ -100,7 +101,7 @@ pub fn simulation(
             title: title.into(),
             svg_file: String::new(),
             image_svg: svg,
-            pgfplots_latex: pgfplots(&time, &y_label, &series, of_four),
+            pgfplots_latex: pgfplots(&time, &y_label, &series, plots_in_row),
         });
     }
 }
