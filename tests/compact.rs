@@ -755,3 +755,22 @@ fn two_rates_that_turn_together_are_squared_as_one() {
         "+ \\frac{L s_{q_{D2}} c_{q_{D1}}^{2} c_{q_{D2}}}{2} \\left(\\dot{q}_{A} + \\dot{q}_{C}\\right)^{2}"
     ));
 }
+
+#[test]
+fn a_damper_on_a_long_chain_grows_at_the_ends_relative_velocity_along_its_unit_vector() {
+    // The air damper of all-joints-3d runs from N.o to the tip of the pendulum E, five
+    // joints out: ℓ̇ = û · (ᴺv^tip − ᴺv^{N.o}), three products once the relative velocity's
+    // components (in frame E, as û's) are named. Multiplied out it was 56 terms.
+    let markdown = explain("validation/all-joints-3d", "markdown");
+    assert!(defines(
+        &markdown,
+        "\\dot{\\ell}_{2} = \\Delta v_{2x} \\hat{u}_{2x} + \\Delta v_{2y} \\hat{u}_{2y} + \\Delta v_{2z} \\hat{u}_{2z}",
+        "rate at which the distance from N.o to tip grows"
+    ));
+    assert!(markdown.lines().any(|l| l.starts_with("- ")
+        && l.contains("of the velocity of tip relative to N.o")
+        && l.contains("$\\Delta v_{2x} = ")));
+    // A spring between a body and the ground keeps its short rate written out.
+    let plate = explain("plate-on-two-springs", "markdown");
+    assert!(!plate.contains("\\Delta v_{"));
+}

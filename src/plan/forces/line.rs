@@ -37,6 +37,11 @@ pub struct Lines {
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
+/// The most terms a component of the ends' relative velocity may have and still be written
+/// into ℓ̇ = û·Δv; a longer one (an end on a long chain) is named, so that ℓ̇ reads as three
+/// products instead of every rate times every direction cosine.
+const MAX_INLINE_RATE_TERMS: usize = 2;
+
 /// A point's name as the problem writes it.
 fn point_name(problem: &Problem, point: PointRef) -> String {
     match point {
@@ -253,6 +258,21 @@ fn named_line(
     let rates = delta_rate
         .components_in(frame, &model.frames)
         .map(|e| simplify(&e));
+    let rates: Components = std::array::from_fn(|axis| {
+        let rate = &rates[axis];
+        if rate.terms().len() <= MAX_INLINE_RATE_TERMS {
+            return rate.clone();
+        }
+        Expr::named(
+            &format!("line{number}.dv.{}", AXES[axis]),
+            &format!("\\Delta v_{{{number}{}}}", AXES[axis]),
+            &format!(
+                "the {} of the velocity of {to} relative to {from}",
+                along(axis)
+            ),
+            rate.clone(),
+        )
+    });
     let rate = Expr::named(
         &format!("line{number}.v"),
         &format!("\\dot{{\\ell}}_{{{number}}}"),
