@@ -227,13 +227,19 @@ fn named_line(
     let frame_name = model.frames.name(frame).to_string();
     // "the x component, in frame N," as a textbook says it, not the internal `N.x`.
     let along = |axis: usize| format!("{} component, in frame {frame_name},", AXES[axis]);
-    let delta: Components = std::array::from_fn(|axis| {
+    // A vector of the line by its components, each named `symbol` with the line's number
+    // and the axis as its index: Δ₁ₓ, û₁ₓ, Δv₁ₓ.
+    let component = |key: &str, symbol: &str, of: &str, axis: usize, value: Expr| {
         Expr::named(
-            &format!("line{number}.d.{}", AXES[axis]),
-            &format!("\\Delta_{{{number}{}}}", AXES[axis]),
-            &format!("the {} of the vector from {from} to {to}", along(axis)),
-            components[axis].clone(),
+            &format!("line{number}.{key}.{}", AXES[axis]),
+            &format!("{symbol}_{{{number}{}}}", AXES[axis]),
+            &format!("the {} of {of}", along(axis)),
+            value,
         )
+    };
+    let delta: Components = std::array::from_fn(|axis| {
+        let of = format!("the vector from {from} to {to}");
+        component("d", "\\Delta", &of, axis, components[axis].clone())
     });
     let length = Expr::named(
         &format!("line{number}.l"),
@@ -245,15 +251,8 @@ fn named_line(
         if components[axis].is_zero() {
             return Expr::zero();
         }
-        Expr::named(
-            &format!("line{number}.u.{}", AXES[axis]),
-            &format!("\\hat{{u}}_{{{number}{}}}", AXES[axis]),
-            &format!(
-                "the {} of the unit vector from {from} toward {to}",
-                along(axis)
-            ),
-            &delta[axis] / &length,
-        )
+        let of = format!("the unit vector from {from} toward {to}");
+        component("u", "\\hat{u}", &of, axis, &delta[axis] / &length)
     });
     let rates = delta_rate
         .components_in(frame, &model.frames)
@@ -263,15 +262,8 @@ fn named_line(
         if rate.terms().len() <= MAX_INLINE_RATE_TERMS {
             return rate.clone();
         }
-        Expr::named(
-            &format!("line{number}.dv.{}", AXES[axis]),
-            &format!("\\Delta v_{{{number}{}}}", AXES[axis]),
-            &format!(
-                "the {} of the velocity of {to} relative to {from}",
-                along(axis)
-            ),
-            rate.clone(),
-        )
+        let of = format!("the velocity of {to} relative to {from}");
+        component("dv", "\\Delta v", &of, axis, rate.clone())
     });
     let rate = Expr::named(
         &format!("line{number}.v"),
