@@ -309,17 +309,23 @@ fn file_stem(path: &Path) -> String {
         .unwrap_or_default()
 }
 
+/// The worked solution of the problem at `path` by `method`, as the pipeline builds it.
+fn worked_solution(path: &Path, method: mbd_tutor::equations::Method) -> Solution {
+    let problem =
+        mbd_tutor::problem::load_file(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let worked = mbd_tutor::pipeline::work(&problem, method)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    mbd_tutor::render::build::solution(&worked)
+}
+
 /// Every problem of `problems/`, as the pipeline builds it, in every format; every `.tex`
 /// (solution and handout) compiles.
 #[test]
 fn every_problem_renders_and_its_latex_compiles() {
+    use mbd_tutor::equations::Method;
     let mut documents = Vec::new();
     for path in problem_files() {
-        let problem = mbd_tutor::problem::load_file(&path)
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let worked = mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::MotionLaw)
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let solution = mbd_tutor::render::build::solution(&worked);
+        let solution = worked_solution(&path, Method::MotionLaw);
         for student in [false, true] {
             let html = rendered(&solution, Format::Html, student);
             assert!(
@@ -341,9 +347,7 @@ fn every_problem_renders_and_its_latex_compiles() {
             documents.push((name, rendered(&solution, Format::Latex, student)));
         }
         // Kane's method adds its partial velocities and generalized forces.
-        let kane = mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::Kane)
-            .map(|worked| mbd_tutor::render::build::solution(&worked))
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let kane = worked_solution(&path, Method::Kane);
         documents.push((
             format!("{}-kane", file_stem(&path)),
             rendered(&kane, Format::Latex, false),
@@ -355,12 +359,7 @@ fn every_problem_renders_and_its_latex_compiles() {
     let newton_euler: Vec<(String, String)> = problem_files()
         .iter()
         .map(|path| {
-            let problem = mbd_tutor::problem::load_file(path)
-                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-            let worked =
-                mbd_tutor::pipeline::work(&problem, mbd_tutor::equations::Method::NewtonEuler)
-                    .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-            let solution = mbd_tutor::render::build::solution(&worked);
+            let solution = worked_solution(path, Method::NewtonEuler);
             (
                 format!("{}-newton-euler", file_stem(path)),
                 rendered(&solution, Format::Latex, false),

@@ -494,6 +494,9 @@ pub struct Simulation {
     pub checks: Vec<Check>,
     /// The plots.
     pub plots: Vec<Plot>,
+    /// How many plots share a row of the page: four when there are four (each narrower),
+    /// else three.
+    pub plots_in_row: usize,
     /// A sentence about the outcome (plain text; may be empty).
     pub note: String,
 }

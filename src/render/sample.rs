@@ -430,6 +430,7 @@ fn simulation() -> Simulation {
                 passed: true,
             },
         ],
+        plots_in_row: 3,
         plots: vec![
             plot(
                 "coordinates",

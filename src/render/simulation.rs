@@ -91,9 +91,8 @@ pub fn simulation(
     }
     let time = Label::math("t", "(s)");
     plots.retain(|plot| !plot.3.is_empty());
-    // Four plots share a row of the page, each narrower; otherwise three to a row (see the
-    // LaTeX template).
     let plots_in_row = if plots.len() == 4 { 4 } else { 3 };
+    solution.simulation.plots_in_row = plots_in_row;
     for (kind, title, y_label, series) in plots {
         let svg = line_plot(title, &time, &y_label, &series).unwrap_or_default();
         solution.simulation.plots.push(Plot {
