@@ -4,6 +4,7 @@ mod agreement;
 mod answers;
 mod bicycle;
 mod checks;
+mod collected_constants;
 mod compact;
 mod composite;
 mod constraints;

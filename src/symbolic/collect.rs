@@ -5,6 +5,7 @@
 //! equality, is a plain sum of monomials.
 
 use super::build::{add, mul, pow};
+use super::collect_constants::latex_constants_collected;
 use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::{latex, latex_term, list_by_runs};
@@ -127,7 +128,7 @@ pub fn latex_with_squares(e: &Expr) -> String {
         .collect();
     let found = squares(&items);
     if found.is_empty() {
-        return latex(e);
+        return sum_tex(e);
     }
     let mut used = vec![false; items.len()];
     let mut squared = String::new();
@@ -146,7 +147,7 @@ pub fn latex_with_squares(e: &Expr) -> String {
     let mut out = if others.is_zero() {
         String::new()
     } else {
-        latex(&others)
+        sum_tex(&others)
     };
     push_signed(&mut out, squared);
     out
@@ -241,7 +242,7 @@ fn squares_of_rates(groups: Vec<Shared>) -> Vec<Squared> {
 }
 
 /// The number r with `a = r b`, when there is one.
-fn multiple_of(a: &Expr, b: &Expr) -> Option<Number> {
+pub(super) fn multiple_of(a: &Expr, b: &Expr) -> Option<Number> {
     let (first_a, first_b) = (a.terms().first()?, b.terms().first()?);
     if a.terms().len() != b.terms().len() {
         return None;
@@ -285,6 +286,28 @@ pub fn common_factor_out(e: &Expr, key: &str) -> Option<String> {
 
 /// `common (inner) key`, the sign of `common` in front.
 pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
+    // A sum that leads with a minus: −k (a − b − c) when most of its terms are negative,
+    // else its positive terms first, as a textbook writes (I₃ − I₁).
+    let negative = |t: &Expr| t.split_coefficient().0.is_negative();
+    let negatives = inner.terms().iter().filter(|t| negative(t)).count();
+    let leads_negative = inner.terms().len() > 1 && negative(&inner.terms()[0]);
+    let positives = inner.terms().len() - negatives;
+    let (common, inner) = if leads_negative && negatives > positives {
+        (&common.neg(), &inner.neg())
+    } else {
+        (common, inner)
+    };
+    let inner_tex = if leads_negative && negatives <= positives {
+        let mut out = String::new();
+        let (first, then): (Vec<&Expr>, Vec<&Expr>) =
+            inner.terms().iter().partition(|t| !negative(t));
+        for t in first.into_iter().chain(then) {
+            push_signed(&mut out, latex(t));
+        }
+        out
+    } else {
+        sum_tex(inner)
+    };
     let (c, rest) = common.split_coefficient();
     let sign = if c.is_negative() { "-" } else { "" };
     let c = if c.is_negative() { c.neg() } else { c };
@@ -294,7 +317,7 @@ pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
         format!("{} ", latex_term(c, &rest))
     };
     let inner = square_root_of_sum(inner).map_or_else(
-        || format!("\\left({}\\right)", latex(inner)),
+        || format!("\\left({inner_tex}\\right)"),
         |root| square_tex(&root),
     );
     let text = format!("{sign}{front}{inner} {key}");
@@ -336,13 +359,19 @@ fn square_root_of_sum(sum: &Expr) -> Option<Expr> {
     })
 }
 
+/// A sum in LaTeX, its terms that differ only in constants written once (see
+/// [`latex_constants_collected`]) where that is shorter.
+fn sum_tex(e: &Expr) -> String {
+    latex_constants_collected(e).unwrap_or_else(|| latex(e))
+}
+
 /// `(root)²` in LaTeX.
 fn square_tex(root: &Expr) -> String {
     format!("\\left({}\\right)^{{2}}", latex(root))
 }
 
 /// `coefficient key`, `coefficient` one term, its sign in front and a factor ±1 left out.
-fn signed_term(coefficient: &Expr, key_text: &str) -> String {
+pub(super) fn signed_term(coefficient: &Expr, key_text: &str) -> String {
     let (c, rest) = coefficient.split_coefficient();
     let sign = if c.is_negative() { "-" } else { "" };
     let c = if c.is_negative() { c.neg() } else { c };
@@ -353,7 +382,7 @@ fn signed_term(coefficient: &Expr, key_text: &str) -> String {
     }
 }
 
-fn push_signed(out: &mut String, text: String) {
+pub(super) fn push_signed(out: &mut String, text: String) {
     match (out.is_empty(), text.strip_prefix('-')) {
         (true, _) => *out = text,
         (false, Some(rest)) => out.push_str(&format!(" - {rest}")),
@@ -436,7 +465,7 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
     (common, inner)
 }
 
-fn gcd(a: i64, b: i64) -> i64 {
+pub(super) fn gcd(a: i64, b: i64) -> i64 {
     if b == 0 {
         a.abs()
     } else {

@@ -4,6 +4,7 @@
 pub mod budget;
 pub mod build;
 pub mod collect;
+mod collect_constants;
 pub mod compile;
 pub mod diff;
 pub mod eval;

@@ -1,0 +1,198 @@
+//! A sum with the terms that differ only in their constants written as one:
+//! c θ̇² + w θ̇² − x_B θ̇² → (c + w − x_B) θ̇², as a textbook writes a definition whose
+//! terms share the state they depend on. Display only, like [`super::collect`].
+
+use super::build::{add, mul};
+use super::collect::{factored, gcd, multiple_of, pull_common_factor, push_signed};
+use super::expr::Expr;
+use super::number::Number;
+use super::print::latex;
+use std::ops::Neg as _;
+
+/// Terms that share their varying factors: those factors, and each term whole and as its
+/// constant part.
+struct Set {
+    varying: Expr,
+    terms: Vec<Expr>,
+    constants: Vec<Expr>,
+}
+
+/// `e` (a canonical sum) in LaTeX with each set of terms that share all their varying
+/// factors written as the sum of their constant factors times those, in the order each
+/// set first appears; sets whose sums are multiples of one share it:
+/// −(r + z)(θ̇² + 2 ψ̇ θ̇ s_φ). `None` when no two terms share their varying factors, or
+/// when that is no shorter.
+pub fn latex_constants_collected(e: &Expr) -> Option<String> {
+    let mut sets: Vec<Set> = Vec::new();
+    for term in e.terms() {
+        let (number, rest) = term.split_coefficient();
+        let (constant, varying): (Vec<Expr>, Vec<Expr>) =
+            rest.factors().iter().cloned().partition(Expr::is_constant);
+        let constant = mul(std::iter::once(Expr::num(number)).chain(constant));
+        let varying = mul(varying);
+        match sets.iter_mut().find(|s| s.varying == varying) {
+            Some(set) => {
+                set.terms.push(term.clone());
+                set.constants.push(constant);
+            }
+            None => sets.push(Set {
+                varying,
+                terms: vec![term.clone()],
+                constants: vec![constant],
+            }),
+        }
+    }
+    // A sum of constants alone is left to `latex` (and to the caller's common factor).
+    if sets.iter().all(|s| s.terms.len() < 2) || sets.iter().all(|s| s.varying.is_one()) {
+        return None;
+    }
+    let mut out = String::new();
+    for group in shared_sums(&sets) {
+        let text = match group {
+            Shared::AsIs(term) => latex(term),
+            Shared::Sum { constant, varying } => {
+                let (common, sum) = pull_common_factor(&constant);
+                let key = if varying.is_one() {
+                    String::new()
+                } else if varying.terms().len() > 1 {
+                    format!("\\left({}\\right)", latex(&varying))
+                } else {
+                    latex(&varying)
+                };
+                if sum.terms().len() > 1 {
+                    factored(&common, &sum, &key)
+                } else {
+                    factored_once(&mul([common, sum]), &key)
+                }
+            }
+        };
+        push_signed(&mut out, text);
+    }
+    let whole = latex(e);
+    (out.len() < whole.len()).then_some(out)
+}
+
+/// What one printed term of the sum is.
+enum Shared<'a> {
+    /// A term no other shares anything with, as it is.
+    AsIs(&'a Expr),
+    /// A sum of constants times a sum of varying parts, each with its number.
+    Sum { constant: Expr, varying: Expr },
+}
+
+/// The sets in their order, each with the later ones whose constant sum is a number times
+/// its own merged into it: −(r + z) θ̇² − 2 (r + z) ψ̇ θ̇ → −(r + z)(θ̇² + 2 ψ̇ θ̇).
+fn shared_sums(sets: &[Set]) -> Vec<Shared<'_>> {
+    let sums: Vec<Expr> = sets
+        .iter()
+        .map(|s| add(s.constants.iter().cloned()))
+        .collect();
+    let mut used = vec![false; sets.len()];
+    let mut out = Vec::new();
+    for (i, set) in sets.iter().enumerate() {
+        if used[i] {
+            continue;
+        }
+        used[i] = true;
+        // A sum of numbers alone is no constant worth sharing.
+        let symbolic = !sums[i].is_zero() && sums[i].as_number().is_none();
+        let mut varying = vec![set.varying.clone()];
+        if symbolic {
+            for j in i + 1..sets.len() {
+                if let Some(r) = (!used[j])
+                    .then(|| multiple_of(&sums[j], &sums[i]))
+                    .flatten()
+                {
+                    used[j] = true;
+                    varying.push(mul([Expr::num(r), sets[j].varying.clone()]));
+                }
+            }
+        }
+        if varying.len() == 1 && set.terms.len() == 1 {
+            out.push(Shared::AsIs(&set.terms[0]));
+        } else if !sums[i].is_zero() {
+            // Whole numbers inside: (r + z)(2 φ̇ θ̇ + ψ̇²) rather than 2 (r + z)(φ̇ θ̇ + ψ̇²/2).
+            let shared = shared_number(&varying);
+            let inverse = Expr::num(shared.recip().unwrap_or(Number::ONE));
+            out.push(Shared::Sum {
+                constant: mul([Expr::num(shared), sums[i].clone()]),
+                varying: add(varying.into_iter().map(|v| mul([inverse.clone(), v]))),
+            });
+        }
+    }
+    out
+}
+
+/// The gcd of the terms' numerators over the lcm of their denominators, or 1 where a
+/// number is no fraction or the lcm would overflow.
+fn shared_number(terms: &[Expr]) -> Number {
+    let ratios: Option<Vec<(i64, i64)>> = terms
+        .iter()
+        .map(|t| match t.split_coefficient().0 {
+            Number::Ratio(n, d) => Some((n.abs(), d)),
+            Number::Real(_) => None,
+        })
+        .collect();
+    let Some(ratios) = ratios else {
+        return Number::ONE;
+    };
+    let numerator = ratios.iter().fold(0, |g, &(n, _)| gcd(g, n));
+    let denominator = ratios
+        .iter()
+        .try_fold(1i64, |l, &(_, d)| (l / gcd(l, d)).checked_mul(d));
+    match denominator {
+        Some(d) if numerator > 0 => Number::ratio(numerator.into(), d.into()),
+        _ => Number::ONE,
+    }
+}
+
+/// `constant key` for a constant of one term, its sign in front.
+fn factored_once(constant: &Expr, key: &str) -> String {
+    let (c, rest) = constant.split_coefficient();
+    let sign = if c.is_negative() { "-" } else { "" };
+    let c = if c.is_negative() { c.neg() } else { c };
+    let front = latex(&mul([Expr::num(c), rest]));
+    if front == "1" {
+        format!("{sign}{key}")
+    } else {
+        format!("{sign}{front} {key}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::build::pow;
+
+    fn c(name: &str) -> Expr {
+        Expr::constant(name)
+    }
+
+    #[test]
+    fn terms_that_share_their_rates_are_written_once_with_their_constants_summed() {
+        let (cc, w, x, z) = (c("c"), c("w"), c("x_B"), c("z_B"));
+        let rate = pow(Expr::coord("theta", 1), Expr::int(2));
+        let other = &Expr::coord("phi", 1) * &Expr::coord("psi", 1);
+        // c θ̇² + w θ̇² − x_B θ̇² + z_B φ̇ ψ̇ → (c + w − x_B) θ̇² + z_B φ̇ ψ̇.
+        let e = add([
+            &cc * &rate,
+            &w * &rate,
+            &(&x * &Expr::int(-1)) * &rate,
+            &z * &other,
+        ]);
+        assert_eq!(
+            latex_constants_collected(&e).unwrap(),
+            format!(
+                "\\left({}\\right) {} + {}",
+                latex(&add([cc.clone(), w.clone(), &x * &Expr::int(-1)])),
+                latex(&rate),
+                latex(&(&z * &other))
+            )
+        );
+        // Nothing shared: left to `latex`.
+        assert_eq!(
+            latex_constants_collected(&add([&cc * &rate, &z * &other])),
+            None
+        );
+    }
+}
