@@ -286,28 +286,7 @@ pub fn common_factor_out(e: &Expr, key: &str) -> Option<String> {
 
 /// `common (inner) key`, the sign of `common` in front.
 pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
-    // A sum that leads with a minus: −k (a − b − c) when most of its terms are negative,
-    // else its positive terms first, as a textbook writes (I₃ − I₁).
-    let negative = |t: &Expr| t.split_coefficient().0.is_negative();
-    let negatives = inner.terms().iter().filter(|t| negative(t)).count();
-    let leads_negative = inner.terms().len() > 1 && negative(&inner.terms()[0]);
-    let positives = inner.terms().len() - negatives;
-    let (common, inner) = if leads_negative && negatives > positives {
-        (&common.neg(), &inner.neg())
-    } else {
-        (common, inner)
-    };
-    let inner_tex = if leads_negative && negatives <= positives {
-        let mut out = String::new();
-        let (first, then): (Vec<&Expr>, Vec<&Expr>) =
-            inner.terms().iter().partition(|t| !negative(t));
-        for t in first.into_iter().chain(then) {
-            push_signed(&mut out, latex(t));
-        }
-        out
-    } else {
-        sum_tex(inner)
-    };
+    let (common, inner, inner_tex) = &signed_inner(common, inner);
     let (c, rest) = common.split_coefficient();
     let sign = if c.is_negative() { "-" } else { "" };
     let c = if c.is_negative() { c.neg() } else { c };
@@ -322,6 +301,41 @@ pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
     );
     let text = format!("{sign}{front}{inner} {key}");
     text.trim_end().to_string()
+}
+
+/// `common` and `inner` as [`factored`] writes them, with `inner` in LaTeX: collected by
+/// its constants where that is shorter and leads with a plus; else, a sum that leads with a
+/// minus as −k (a − b − c) when most of its terms are negative, or with its positive terms
+/// first, as a textbook writes (I₃ − I₁).
+fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
+    let flipped = || (common.neg(), inner.neg());
+    match latex_constants_collected(inner) {
+        Some(tex) if !tex.starts_with('-') => return (common.clone(), inner.clone(), tex),
+        Some(_) => {
+            let (common, inner) = flipped();
+            if let Some(tex) = latex_constants_collected(&inner).filter(|t| !t.starts_with('-')) {
+                return (common, inner, tex);
+            }
+        }
+        None => {}
+    }
+    let negative = |t: &Expr| t.split_coefficient().0.is_negative();
+    let negatives = inner.terms().iter().filter(|t| negative(t)).count();
+    let positives = inner.terms().len() - negatives;
+    if inner.terms().len() < 2 || !negative(&inner.terms()[0]) {
+        return (common.clone(), inner.clone(), latex(inner));
+    }
+    if negatives > positives {
+        let (common, inner) = flipped();
+        let tex = latex(&inner);
+        return (common, inner, tex);
+    }
+    let mut tex = String::new();
+    let (first, then): (Vec<&Expr>, Vec<&Expr>) = inner.terms().iter().partition(|t| !negative(t));
+    for t in first.into_iter().chain(then) {
+        push_signed(&mut tex, latex(t));
+    }
+    (common.clone(), inner.clone(), tex)
 }
 
 /// The sum whose square `sum` is, when it is the square of a sum of two to four terms

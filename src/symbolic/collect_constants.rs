@@ -4,7 +4,7 @@
 
 use super::build::{add, mul};
 use super::collect::{factored, gcd, multiple_of, pull_common_factor, push_signed};
-use super::expr::Expr;
+use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::latex;
 use std::ops::Neg as _;
@@ -20,29 +20,15 @@ struct Set {
 /// `e` (a canonical sum) in LaTeX with each set of terms that share all their varying
 /// factors written as the sum of their constant factors times those, in the order each
 /// set first appears; sets whose sums are multiples of one share it:
-/// −(r + z)(θ̇² + 2 ψ̇ θ̇ s_φ). `None` when no two terms share their varying factors, or
-/// when that is no shorter.
+/// −(r + z)(θ̇² + 2 ψ̇ θ̇ s_φ). A sum of constants alone is collected the same way by its
+/// functions of constants: (c + w − x_H) cos λ + z_H sin λ. `None` when no two terms share
+/// what they are collected by, or when that is no shorter.
 pub fn latex_constants_collected(e: &Expr) -> Option<String> {
-    let mut sets: Vec<Set> = Vec::new();
-    for term in e.terms() {
-        let (number, rest) = term.split_coefficient();
-        let (constant, varying): (Vec<Expr>, Vec<Expr>) =
-            rest.factors().iter().cloned().partition(Expr::is_constant);
-        let constant = mul(std::iter::once(Expr::num(number)).chain(constant));
-        let varying = mul(varying);
-        match sets.iter_mut().find(|s| s.varying == varying) {
-            Some(set) => {
-                set.terms.push(term.clone());
-                set.constants.push(constant);
-            }
-            None => sets.push(Set {
-                varying,
-                terms: vec![term.clone()],
-                constants: vec![constant],
-            }),
-        }
+    let mut sets = sets_by(e, Expr::is_constant);
+    if sets.iter().all(|s| s.varying.is_one()) {
+        sets = sets_by(e, is_plain_constant);
     }
-    // A sum of constants alone is left to `latex` (and to the caller's common factor).
+    // Nothing shared, or constants that are all plain (c + w − x_H): left to `latex`.
     if sets.iter().all(|s| s.terms.len() < 2) || sets.iter().all(|s| s.varying.is_one()) {
         return None;
     }
@@ -70,6 +56,40 @@ pub fn latex_constants_collected(e: &Expr) -> Option<String> {
     }
     let whole = latex(e);
     (out.len() < whole.len()).then_some(out)
+}
+
+/// The terms of `e` in sets by their factors that are not `constant`, in order of first
+/// appearance.
+fn sets_by(e: &Expr, constant: impl Fn(&Expr) -> bool) -> Vec<Set> {
+    let mut sets: Vec<Set> = Vec::new();
+    for term in e.terms() {
+        let (number, rest) = term.split_coefficient();
+        let (constants, varying): (Vec<Expr>, Vec<Expr>) =
+            rest.factors().iter().cloned().partition(|f| constant(f));
+        let constants = mul(std::iter::once(Expr::num(number)).chain(constants));
+        let varying = mul(varying);
+        match sets.iter_mut().find(|s| s.varying == varying) {
+            Some(set) => {
+                set.terms.push(term.clone());
+                set.constants.push(constants);
+            }
+            None => sets.push(Set {
+                varying,
+                terms: vec![term.clone()],
+                constants: vec![constants],
+            }),
+        }
+    }
+    sets
+}
+
+/// A named constant or a power of one (`c`, `L²`), not a function of one (`cos λ`).
+fn is_plain_constant(factor: &Expr) -> bool {
+    let base = match factor.node() {
+        Node::Pow(base, exponent) if exponent.as_number().is_some() => base,
+        _ => factor,
+    };
+    matches!(base.node(), Node::Sym(Symbol::Const(_)))
 }
 
 /// What one printed term of the sum is.
