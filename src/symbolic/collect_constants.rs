@@ -215,4 +215,26 @@ mod tests {
             None
         );
     }
+
+    #[test]
+    fn a_sum_of_constants_is_collected_by_its_functions_of_constants() {
+        use crate::symbolic::build::{cos, sin};
+        let (cc, w, x, z, lambda) = (c("c"), c("w"), c("x_H"), c("z_H"), c("lambda"));
+        // c cos λ + w cos λ − x_H cos λ + z_H sin λ → (c + w − x_H) cos λ + z_H sin λ.
+        let e = add([
+            &cc * &cos(lambda.clone()),
+            &w * &cos(lambda.clone()),
+            &(&x * &Expr::int(-1)) * &cos(lambda.clone()),
+            &z * &sin(lambda.clone()),
+        ]);
+        let expected = format!(
+            "\\left({}\\right) {} + {}",
+            latex(&add([cc.clone(), w.clone(), &x * &Expr::int(-1)])),
+            latex(&cos(lambda.clone())),
+            latex(&(&z * &sin(lambda.clone())))
+        );
+        assert_eq!(latex_constants_collected(&e).unwrap(), expected);
+        // Plain constants alone are left as they are: c + w − x_H.
+        assert_eq!(latex_constants_collected(&add([cc, w, x])), None);
+    }
 }
