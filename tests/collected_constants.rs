@@ -36,3 +36,14 @@ fn eulers_equations_write_the_difference_of_inertias_positive_first() {
     // I₂ u̇₂ = (I₃ − I₁) u₃ u₁, as Euler wrote it.
     assert!(markdown.contains(r"-I_{2} \dot{u}_{2} + \left(I_{3} - I_{1}\right) u_{1} u_{3} = 0"));
 }
+
+#[test]
+fn a_vectors_component_is_collected_by_its_constants() {
+    let markdown = kane_markdown("validation/whipple-bicycle");
+    // The front contact moves with the rear frame B by ω^B × r, r reaching c + w forward
+    // along b̂_x (wheelbase and trail): its b̂_z part is −ω^B_y (c + w), with
+    // ω^B_y = θ̇ + ψ̇ sin φ.
+    assert!(markdown.contains(
+        r"- \left(c + w\right) \left(\dot{\theta} + \dot{\psi} \sin(\phi)\right) \hat{\mathbf{b}}_{z}"
+    ));
+}

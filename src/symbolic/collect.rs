@@ -5,7 +5,8 @@
 //! equality, is a plain sum of monomials.
 
 use super::build::{add, mul, pow};
-use super::collect_constants::latex_constants_collected;
+pub use super::collect_constants::shown_length;
+use super::collect_constants::{constants_collected_terms, latex_constants_collected};
 use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::{latex, latex_term, list_by_runs};
@@ -336,6 +337,27 @@ fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
         push_signed(&mut tex, latex(t));
     }
     (common.clone(), inner.clone(), tex)
+}
+
+/// A vector's component `c` (a sum) times `key` with its terms collected by their constants,
+/// `−(c + w)(θ̇ + ψ̇ s_φ) b̂_z`, when that collects anything; the minus out when the collected
+/// sum would lead with one.
+pub fn component_collected(c: &Expr, key: &str) -> Option<String> {
+    let terms = constants_collected_terms(c)?;
+    if let [one] = terms.as_slice() {
+        return Some(format!("{one} {key}"));
+    }
+    let (sign, terms) = if terms[0].starts_with('-') {
+        match constants_collected_terms(&c.neg()) {
+            Some(flipped) if !flipped[0].starts_with('-') => ("-", flipped),
+            _ => ("", terms),
+        }
+    } else {
+        ("", terms)
+    };
+    let mut sum = String::new();
+    terms.into_iter().for_each(|t| push_signed(&mut sum, t));
+    Some(format!("{sign}\\left({sum}\\right) {key}"))
 }
 
 /// The sum whose square `sum` is, when it is the square of a sum of two to four terms

@@ -24,6 +24,15 @@ struct Set {
 /// functions of constants: (c + w − x_H) cos λ + z_H sin λ. `None` when no two terms share
 /// what they are collected by, or when that is no shorter.
 pub fn latex_constants_collected(e: &Expr) -> Option<String> {
+    constants_collected_terms(e).map(|terms| {
+        let mut out = String::new();
+        terms.into_iter().for_each(|t| push_signed(&mut out, t));
+        out
+    })
+}
+
+/// The terms [`latex_constants_collected`] writes, each with its sign.
+pub fn constants_collected_terms(e: &Expr) -> Option<Vec<String>> {
     let mut sets = sets_by(e, Expr::is_constant);
     if sets.iter().all(|s| s.varying.is_one()) {
         sets = sets_by(e, is_plain_constant);
@@ -32,7 +41,7 @@ pub fn latex_constants_collected(e: &Expr) -> Option<String> {
     if sets.iter().all(|s| s.terms.len() < 2) || sets.iter().all(|s| s.varying.is_one()) {
         return None;
     }
-    let mut out = String::new();
+    let mut out = Vec::new();
     for group in shared_sums(&sets) {
         let text = match group {
             Shared::AsIs(term) => latex(term),
@@ -52,10 +61,16 @@ pub fn latex_constants_collected(e: &Expr) -> Option<String> {
                 }
             }
         };
-        push_signed(&mut out, text);
+        out.push(text);
     }
-    let whole = latex(e);
-    (out.len() < whole.len()).then_some(out)
+    // Each joint adds " + ": the sum is shorter when its terms and joints are.
+    let length: usize = out.iter().map(|t| shown_length(t) + 3).sum();
+    (length < shown_length(&latex(e)) + 3).then_some(out)
+}
+
+/// The length of LaTeX as a reader sees it: `\left(` and `\right)` are one character each.
+pub fn shown_length(tex: &str) -> usize {
+    tex.len() - 5 * tex.matches("\\left").count() - 6 * tex.matches("\\right").count()
 }
 
 /// The terms of `e` in sets by their factors that are not `constant`, in order of first
@@ -114,6 +129,12 @@ fn shared_sums(sets: &[Set]) -> Vec<Shared<'_>> {
             continue;
         }
         used[i] = true;
+        // The terms of constants alone stay as they are: (a + b) alone gains nothing, and
+        // would pull out a bare fraction, ⅓ (a + b).
+        if set.varying.is_one() {
+            out.extend(set.terms.iter().map(Shared::AsIs));
+            continue;
+        }
         // A sum of numbers alone is no constant worth sharing.
         let symbolic = !sums[i].is_zero() && sums[i].as_number().is_none();
         let mut varying = vec![set.varying.clone()];
