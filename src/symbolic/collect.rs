@@ -347,9 +347,9 @@ pub fn component_collected(c: &Expr, key: &str) -> Option<String> {
     if let [one] = terms.as_slice() {
         return Some(format!("{one} {key}"));
     }
-    let (sign, terms) = if terms[0].starts_with('-') {
+    let (sign, terms) = if terms.first()?.starts_with('-') {
         match constants_collected_terms(&c.neg()) {
-            Some(flipped) if !flipped[0].starts_with('-') => ("-", flipped),
+            Some(flipped) if flipped.first().is_some_and(|t| !t.starts_with('-')) => ("-", flipped),
             _ => ("", terms),
         }
     } else {

@@ -65,7 +65,7 @@ pub fn constants_collected_terms(e: &Expr) -> Option<Vec<String>> {
     }
     // Each joint adds " + ": the sum is shorter when its terms and joints are.
     let length: usize = out.iter().map(|t| shown_length(t) + 3).sum();
-    (length < shown_length(&latex(e)) + 3).then_some(out)
+    (!out.is_empty() && length < shown_length(&latex(e)) + 3).then_some(out)
 }
 
 /// The length of LaTeX as a reader sees it: `\left(` and `\right)` are one character each.
