@@ -43,6 +43,20 @@ fn the_command_writes_one_file_per_picture_into_a_new_directory() {
         (want[0] - got[0]).hypot(want[1] - got[1]) < 0.01,
         "--state moves the picture"
     );
+    // The group A + B is cut at O alone: P, the pin between A and B, carries no force on
+    // it, so it is drawn with the bodies and not marked as a point forces act at; B alone
+    // is cut at P.
+    let group = read(
+        "cli",
+        &std::fs::read_to_string(dir.join("fbd-A+B.svg")).expect("written"),
+    );
+    assert!(group.points.contains_key("joint-O"));
+    assert!(!group.points.contains_key("joint-P"));
+    let single = read(
+        "cli",
+        &std::fs::read_to_string(dir.join("fbd-B.svg")).expect("written"),
+    );
+    assert!(single.points.contains_key("joint-P"));
     let _ = std::fs::remove_dir_all(dir.parent().expect("scratch"));
 }
 

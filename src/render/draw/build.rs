@@ -342,7 +342,12 @@ impl Setting<'_, '_, '_> {
         {
             arrows.extend(self.action_arrows(action, &mut markers));
         }
-        let kinetic = set.iter().flat_map(|&b| self.inertia_arrows(b)).collect();
+        let kinetic: Vec<Arrow> = set.iter().flat_map(|&b| self.inertia_arrows(b)).collect();
+        // A joint inside the group carries no force on it: its pin is drawn with the bodies,
+        // not marked and named as a point forces act at.
+        let inside = self.joints_inside(set);
+        let acted_at = |id: &String| arrows.iter().chain(&kinetic).any(|a| &a.at_id == id);
+        markers.retain(|m| !inside.contains(&m.id) || acted_at(&m.id));
         Scene {
             title,
             planar: self.derivation.model.is_planar(),
@@ -352,6 +357,18 @@ impl Setting<'_, '_, '_> {
             kinetic: Some((body_shapes, kinetic)),
             legend: FREE_BODY_LEGEND.into(),
         }
+    }
+
+    /// The ids of the joints, closures and contacts both of whose bodies are in `set`.
+    fn joints_inside(&self, set: &[BodyId]) -> Vec<String> {
+        let inside = |a: BodyId, b: BodyId| set.contains(&a) && set.contains(&b);
+        self.derivation
+            .model
+            .sites
+            .iter()
+            .filter(|site| site.parent != site.child && inside(site.parent, site.child))
+            .map(|site| format!("joint-{}", site.name))
+            .collect()
     }
 
     /// The id of the marker at `at` on the action's body, adding one if there is none.
