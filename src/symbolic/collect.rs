@@ -309,16 +309,13 @@ pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
 /// minus as −k (a − b − c) when most of its terms are negative, or with its positive terms
 /// first, as a textbook writes (I₃ − I₁).
 fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
-    let flipped = || (common.neg(), inner.neg());
-    match latex_constants_collected(inner) {
-        Some(tex) if !tex.starts_with('-') => return (common.clone(), inner.clone(), tex),
-        Some(_) => {
-            let (common, inner) = flipped();
-            if let Some(tex) = latex_constants_collected(&inner).filter(|t| !t.starts_with('-')) {
-                return (common, inner, tex);
-            }
-        }
-        None => {}
+    if let Some(terms) = constants_collected_terms(inner) {
+        let (flipped, tex) = positive_first(terms);
+        return if flipped {
+            (common.neg(), inner.neg(), tex)
+        } else {
+            (common.clone(), inner.clone(), tex)
+        };
     }
     let negative = |t: &Expr| t.split_coefficient().0.is_negative();
     let negatives = inner.terms().iter().filter(|t| negative(t)).count();
@@ -327,7 +324,7 @@ fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
         return (common.clone(), inner.clone(), latex(inner));
     }
     if negatives > positives {
-        let (common, inner) = flipped();
+        let (common, inner) = (common.neg(), inner.neg());
         let tex = latex(&inner);
         return (common, inner, tex);
     }
@@ -339,24 +336,39 @@ fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
     (common.clone(), inner.clone(), tex)
 }
 
+/// Printed terms, each with its sign in front, as one sum: negated when most are negative
+/// (whether it was is the first value), then its positive terms first.
+fn positive_first(terms: Vec<String>) -> (bool, String) {
+    let negatives = terms.iter().filter(|t| t.starts_with('-')).count();
+    let flip = 2 * negatives > terms.len();
+    let terms = terms.into_iter().map(|t| {
+        if !flip {
+            t
+        } else if let Some(rest) = t.strip_prefix('-') {
+            rest.to_string()
+        } else {
+            format!("-{t}")
+        }
+    });
+    let (first, then): (Vec<String>, Vec<String>) = terms.partition(|t| !t.starts_with('-'));
+    let mut out = String::new();
+    first
+        .into_iter()
+        .chain(then)
+        .for_each(|t| push_signed(&mut out, t));
+    (flip, out)
+}
+
 /// A vector's component `c` (a sum) times `key` with its terms collected by their constants,
-/// `−(c + w)(θ̇ + ψ̇ s_φ) b̂_z`, when that collects anything; the minus out when the collected
-/// sum would lead with one.
+/// `−(c + w)(θ̇ + ψ̇ s_φ) b̂_z`, when that collects anything; the minus out when most of
+/// the collected terms are negative, and the positive ones first.
 pub fn component_collected(c: &Expr, key: &str) -> Option<String> {
     let terms = constants_collected_terms(c)?;
     if let [one] = terms.as_slice() {
         return Some(format!("{one} {key}"));
     }
-    let (sign, terms) = if terms.first()?.starts_with('-') {
-        match constants_collected_terms(&c.neg()) {
-            Some(flipped) if flipped.first().is_some_and(|t| !t.starts_with('-')) => ("-", flipped),
-            _ => ("", terms),
-        }
-    } else {
-        ("", terms)
-    };
-    let mut sum = String::new();
-    terms.into_iter().for_each(|t| push_signed(&mut sum, t));
+    let (flipped, sum) = positive_first(terms);
+    let sign = if flipped { "-" } else { "" };
     Some(format!("{sign}\\left({sum}\\right) {key}"))
 }
 

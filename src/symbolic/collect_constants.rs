@@ -5,6 +5,7 @@
 use super::build::{add, mul};
 use super::collect::{factored, gcd, multiple_of, pull_common_factor, push_signed};
 use super::expr::{Expr, Node, Symbol};
+use super::fast_hash::FastMap;
 use super::number::Number;
 use super::print::latex;
 use std::ops::Neg as _;
@@ -41,31 +42,55 @@ pub fn constants_collected_terms(e: &Expr) -> Option<Vec<String>> {
     if sets.iter().all(|s| s.terms.len() < 2) || sets.iter().all(|s| s.varying.is_one()) {
         return None;
     }
-    let mut out = Vec::new();
-    for group in shared_sums(&sets) {
-        let text = match group {
-            Shared::AsIs(term) => latex(term),
-            Shared::Sum { constant, varying } => {
-                let (common, sum) = pull_common_factor(&constant);
-                let key = if varying.is_one() {
-                    String::new()
-                } else if varying.terms().len() > 1 {
-                    format!("\\left({}\\right)", latex(&varying))
-                } else {
-                    latex(&varying)
-                };
-                if sum.terms().len() > 1 {
-                    factored(&common, &sum, &key)
-                } else {
-                    factored_once(&mul([common, sum]), &key)
-                }
-            }
+    let groups = shared_sums(&sets);
+    // Only the collected groups differ from the sum as `latex` writes it: each is weighed
+    // against the terms it replaces, so a long row is printed once, not twice.
+    let mut texts = Vec::with_capacity(groups.len());
+    let mut gain = 0isize;
+    for group in &groups {
+        let Shared::Sum {
+            constant,
+            varying,
+            members,
+        } = group
+        else {
+            texts.push(None);
+            continue;
         };
-        out.push(text);
+        let text = collected_text(constant, varying);
+        let before: usize = members.iter().map(|t| shown_length(&latex(t)) + 3).sum();
+        gain += before as isize - (shown_length(&text) + 3) as isize;
+        texts.push(Some(text));
     }
-    // Each joint adds " + ": the sum is shorter when its terms and joints are.
-    let length: usize = out.iter().map(|t| shown_length(t) + 3).sum();
-    (!out.is_empty() && length < shown_length(&latex(e)) + 3).then_some(out)
+    if gain <= 0 {
+        return None;
+    }
+    let out = groups
+        .iter()
+        .zip(texts)
+        .map(|(group, text)| match group {
+            Shared::AsIs(term) => latex(term),
+            Shared::Sum { .. } => text.unwrap_or_default(),
+        })
+        .collect();
+    Some(out)
+}
+
+/// A sum of constants times a sum of varying parts: `(c + w − x_H) (ω_y² + ω_z²)`.
+fn collected_text(constant: &Expr, varying: &Expr) -> String {
+    let (common, sum) = pull_common_factor(constant);
+    let key = if varying.is_one() {
+        String::new()
+    } else if varying.terms().len() > 1 {
+        format!("\\left({}\\right)", latex(varying))
+    } else {
+        latex(varying)
+    };
+    if sum.terms().len() > 1 {
+        factored(&common, &sum, &key)
+    } else {
+        factored_once(&mul([common, sum]), &key)
+    }
 }
 
 /// The length of LaTeX as a reader sees it: `\left(` and `\right)` are one character each.
@@ -77,25 +102,42 @@ pub fn shown_length(tex: &str) -> usize {
 /// appearance.
 fn sets_by(e: &Expr, constant: impl Fn(&Expr) -> bool) -> Vec<Set> {
     let mut sets: Vec<Set> = Vec::new();
+    // A long sum (a row of a large system) has hundreds of terms: found by hash, not by scan.
+    let mut index: FastMap<Expr, usize> = FastMap::default();
     for term in e.terms() {
         let (number, rest) = term.split_coefficient();
         let (constants, varying): (Vec<Expr>, Vec<Expr>) =
             rest.factors().iter().cloned().partition(|f| constant(f));
         let constants = mul(std::iter::once(Expr::num(number)).chain(constants));
         let varying = mul(varying);
-        match sets.iter_mut().find(|s| s.varying == varying) {
-            Some(set) => {
-                set.terms.push(term.clone());
-                set.constants.push(constants);
+        match index.get(&varying) {
+            Some(&i) => {
+                sets[i].terms.push(term.clone());
+                sets[i].constants.push(constants);
             }
-            None => sets.push(Set {
-                varying,
-                terms: vec![term.clone()],
-                constants: vec![constants],
-            }),
+            None => {
+                index.insert(varying.clone(), sets.len());
+                sets.push(Set {
+                    varying,
+                    terms: vec![term.clone()],
+                    constants: vec![constants],
+                });
+            }
         }
     }
     sets
+}
+
+/// The number r with `a = r b`, as [`multiple_of`] finds it, without multiplying out
+/// when both are one term: then they differ only in their numbers or not at all.
+fn ratio(a: &Expr, b: &Expr) -> Option<Number> {
+    match (a.terms(), b.terms()) {
+        ([x], [y]) => {
+            let ((p, x), (q, y)) = (x.split_coefficient(), y.split_coefficient());
+            (x == y).then(|| q.recip().map(|q| p * q)).flatten()
+        }
+        _ => multiple_of(a, b),
+    }
 }
 
 /// A named constant or a power of one (`c`, `L²`), not a function of one (`cos λ`).
@@ -111,8 +153,13 @@ fn is_plain_constant(factor: &Expr) -> bool {
 enum Shared<'a> {
     /// A term no other shares anything with, as it is.
     AsIs(&'a Expr),
-    /// A sum of constants times a sum of varying parts, each with its number.
-    Sum { constant: Expr, varying: Expr },
+    /// A sum of constants times a sum of varying parts, each with its number, and the
+    /// terms it stands for.
+    Sum {
+        constant: Expr,
+        varying: Expr,
+        members: Vec<&'a Expr>,
+    },
 }
 
 /// The sets in their order, each with the later ones whose constant sum is a number times
@@ -138,26 +185,26 @@ fn shared_sums(sets: &[Set]) -> Vec<Shared<'_>> {
         // A sum of numbers alone is no constant worth sharing.
         let symbolic = !sums[i].is_zero() && sums[i].as_number().is_none();
         let mut varying = vec![set.varying.clone()];
+        let mut members: Vec<&Expr> = set.terms.iter().collect();
         if symbolic {
             for j in i + 1..sets.len() {
-                if let Some(r) = (!used[j])
-                    .then(|| multiple_of(&sums[j], &sums[i]))
-                    .flatten()
-                {
+                if let Some(r) = (!used[j]).then(|| ratio(&sums[j], &sums[i])).flatten() {
                     used[j] = true;
                     varying.push(mul([Expr::num(r), sets[j].varying.clone()]));
+                    members.extend(&sets[j].terms);
                 }
             }
         }
-        if varying.len() == 1 && set.terms.len() == 1 {
-            out.push(Shared::AsIs(&set.terms[0]));
-        } else if !sums[i].is_zero() {
+        if members.len() == 1 || sums[i].is_zero() {
+            out.extend(members.into_iter().map(Shared::AsIs));
+        } else {
             // Whole numbers inside: (r + z)(2 φ̇ θ̇ + ψ̇²) rather than 2 (r + z)(φ̇ θ̇ + ψ̇²/2).
             let shared = shared_number(&varying);
             let inverse = Expr::num(shared.recip().unwrap_or(Number::ONE));
             out.push(Shared::Sum {
                 constant: mul([Expr::num(shared), sums[i].clone()]),
                 varying: add(varying.into_iter().map(|v| mul([inverse.clone(), v]))),
+                members,
             });
         }
     }
