@@ -252,12 +252,9 @@ mod tests {
     use super::*;
     use crate::symbolic::build::pow;
 
-    fn c(name: &str) -> Expr {
-        Expr::constant(name)
-    }
-
     #[test]
     fn terms_that_share_their_rates_are_written_once_with_their_constants_summed() {
+        let c = Expr::constant;
         let (cc, w, x, z) = (c("c"), c("w"), c("x_B"), c("z_B"));
         let rate = pow(Expr::coord("theta", 1), Expr::int(2));
         let other = &Expr::coord("phi", 1) * &Expr::coord("psi", 1);
@@ -286,6 +283,7 @@ mod tests {
 
     #[test]
     fn a_sum_of_constants_is_collected_by_its_functions_of_constants() {
+        let c = Expr::constant;
         use crate::symbolic::build::{cos, sin};
         let (cc, w, x, z, lambda) = (c("c"), c("w"), c("x_H"), c("z_H"), c("lambda"));
         // c cos λ + w cos λ − x_H cos λ + z_H sin λ → (c + w − x_H) cos λ + z_H sin λ.
