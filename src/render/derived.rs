@@ -13,7 +13,7 @@ use crate::pipeline::Worked;
 use crate::plan::forces::ActionKind;
 use crate::plan::rows::{Equation, Sum};
 use crate::problem::{BodyId, Problem};
-use crate::symbolic::collect::{latex_collected, latex_with_squares, shown_length};
+use crate::symbolic::collect::{self, latex_collected, latex_with_squares};
 use crate::symbolic::named::{as_shown, named_definitions};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};
 use crate::symbolic::roots::roots_of_squares;
@@ -201,23 +201,7 @@ pub(super) fn vector_tex_by(
 /// A component times its unit vector: a sum in brackets, ±1 left out.
 pub(super) fn component_term(c: &Expr, unit: &str) -> String {
     match c.node() {
-        Node::Add(_) => {
-            // A factor every term shares comes out, as a textbook writes (r_F/σ_F)(…) f̂_x.
-            let whole = format!("\\left({}\\right) {unit}", latex(c));
-            [
-                crate::symbolic::collect::common_factor_out(c, unit),
-                crate::symbolic::collect::component_collected(c, unit),
-            ]
-            .into_iter()
-            .flatten()
-            .fold(whole, |best, t| {
-                if shown_length(&t) < shown_length(&best) {
-                    t
-                } else {
-                    best
-                }
-            })
-        }
+        Node::Add(_) => collect::sum_times(c, unit),
         _ if c.is_one() => unit.to_string(),
         _ if (-c).is_one() => format!("-{unit}"),
         _ => format!("{} {unit}", latex(c)),

@@ -5,8 +5,8 @@
 //! equality, is a plain sum of monomials.
 
 use super::build::{add, mul, pow};
-pub use super::collect_constants::shown_length;
-use super::collect_constants::{constants_collected_terms, latex_constants_collected};
+use super::collect_constants::{constants_collected_terms, positive_first, sum_tex};
+pub use super::collect_constants::sum_times;
 use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::{latex, latex_term, list_by_runs};
@@ -336,42 +336,6 @@ fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
     (common.clone(), inner.clone(), tex)
 }
 
-/// Printed terms, each with its sign in front, as one sum: negated when most are negative
-/// (whether it was is the first value), then its positive terms first.
-fn positive_first(terms: Vec<String>) -> (bool, String) {
-    let negatives = terms.iter().filter(|t| t.starts_with('-')).count();
-    let flip = 2 * negatives > terms.len();
-    let terms = terms.into_iter().map(|t| {
-        if !flip {
-            t
-        } else if let Some(rest) = t.strip_prefix('-') {
-            rest.to_string()
-        } else {
-            format!("-{t}")
-        }
-    });
-    let (first, then): (Vec<String>, Vec<String>) = terms.partition(|t| !t.starts_with('-'));
-    let mut out = String::new();
-    first
-        .into_iter()
-        .chain(then)
-        .for_each(|t| push_signed(&mut out, t));
-    (flip, out)
-}
-
-/// A vector's component `c` (a sum) times `key` with its terms collected by their constants,
-/// `−(c + w)(θ̇ + ψ̇ s_φ) b̂_z`, when that collects anything; the minus out when most of
-/// the collected terms are negative, and the positive ones first.
-pub fn component_collected(c: &Expr, key: &str) -> Option<String> {
-    let terms = constants_collected_terms(c)?;
-    if let [one] = terms.as_slice() {
-        return Some(format!("{one} {key}"));
-    }
-    let (flipped, sum) = positive_first(terms);
-    let sign = if flipped { "-" } else { "" };
-    Some(format!("{sign}\\left({sum}\\right) {key}"))
-}
-
 /// The sum whose square `sum` is, when it is the square of a sum of two to four terms
 /// that each appear squared with coefficient 1: q̇₁² + q̇₂² + 2 q̇₁ q̇₂ → q̇₁ + q̇₂, as a
 /// textbook writes a body's (q̇₁ + q̇₂)² of two rates that always turn together.
@@ -405,12 +369,6 @@ fn square_root_of_sum(sum: &Expr) -> Option<Expr> {
         }));
         (mul([root.clone(), root.clone()]) == *sum).then_some(root)
     })
-}
-
-/// A sum in LaTeX, its terms that differ only in constants written once (see
-/// [`latex_constants_collected`]) where that is shorter.
-fn sum_tex(e: &Expr) -> String {
-    latex_constants_collected(e).unwrap_or_else(|| latex(e))
 }
 
 /// `(root)²` in LaTeX.

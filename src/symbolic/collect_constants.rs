@@ -3,7 +3,9 @@
 //! terms share the state they depend on. Display only, like [`super::collect`].
 
 use super::build::{add, mul};
-use super::collect::{factored, gcd, multiple_of, pull_common_factor, push_signed};
+use super::collect::{
+    common_factor_out, factored, gcd, multiple_of, pull_common_factor, push_signed,
+};
 use super::expr::{Expr, Node, Symbol};
 use super::fast_hash::FastMap;
 use super::number::Number;
@@ -30,6 +32,12 @@ pub fn latex_constants_collected(e: &Expr) -> Option<String> {
         terms.into_iter().for_each(|t| push_signed(&mut out, t));
         out
     })
+}
+
+/// A sum in LaTeX, its terms that differ only in constants written once (see
+/// [`latex_constants_collected`]) where that is shorter.
+pub(super) fn sum_tex(e: &Expr) -> String {
+    latex_constants_collected(e).unwrap_or_else(|| latex(e))
 }
 
 /// The terms [`latex_constants_collected`] writes, each with its sign.
@@ -245,6 +253,53 @@ fn factored_once(constant: &Expr, key: &str) -> String {
     } else {
         format!("{sign}{front} {key}")
     }
+}
+
+/// Printed terms, each with its sign in front, as one sum: negated when most are negative
+/// (whether it was is the first value), then its positive terms first.
+pub(super) fn positive_first(terms: Vec<String>) -> (bool, String) {
+    let negatives = terms.iter().filter(|t| t.starts_with('-')).count();
+    let flip = 2 * negatives > terms.len();
+    let terms = terms.into_iter().map(|t| {
+        if !flip {
+            t
+        } else if let Some(rest) = t.strip_prefix('-') {
+            rest.to_string()
+        } else {
+            format!("-{t}")
+        }
+    });
+    let (first, then): (Vec<String>, Vec<String>) = terms.partition(|t| !t.starts_with('-'));
+    let mut out = String::new();
+    first
+        .into_iter()
+        .chain(then)
+        .for_each(|t| push_signed(&mut out, t));
+    (flip, out)
+}
+
+/// A sum `c` times `key` as it reads shortest: whole in brackets, with a factor every
+/// term shares out, (r_F/σ_F)(…) f̂_x, or collected by its constants.
+pub fn sum_times(c: &Expr, key: &str) -> String {
+    let whole = format!("\\left({}\\right) {key}", latex(c));
+    let shorter = [common_factor_out(c, key), component_collected(c, key)];
+    std::iter::once(whole)
+        .chain(shorter.into_iter().flatten())
+        .min_by_key(|t| shown_length(t))
+        .unwrap_or_default()
+}
+
+/// A vector's component `c` (a sum) times `key` with its terms collected by their constants,
+/// `−(c + w)(θ̇ + ψ̇ s_φ) b̂_z`, when that collects anything; the minus out when most of
+/// the collected terms are negative, and the positive ones first.
+fn component_collected(c: &Expr, key: &str) -> Option<String> {
+    let terms = constants_collected_terms(c)?;
+    if let [one] = terms.as_slice() {
+        return Some(format!("{one} {key}"));
+    }
+    let (flipped, sum) = positive_first(terms);
+    let sign = if flipped { "-" } else { "" };
+    Some(format!("{sign}\\left({sum}\\right) {key}"))
 }
 
 #[cfg(test)]
