@@ -47,3 +47,14 @@ fn a_vectors_component_is_collected_by_its_constants() {
         r"- \left(c + w\right) \left(\dot{\theta} + \dot{\psi} \sin(\phi)\right) \hat{\mathbf{b}}_{z}"
     ));
 }
+
+#[test]
+fn sums_that_share_a_factor_of_constants_write_it_once() {
+    let markdown = crate::support::explain("two-wheeled-cart", &["--method", "motion-law"]);
+    // In a moment row, the inertia force of the whole cart, −(m_C + 2 m_W) ẍ, has the arm
+    // R sin θ + b cos θ (axle height R and centre offset b, pitched by θ): the two terms
+    // R (m_C + 2 m_W) s_θ + b (m_C + 2 m_W) c_θ are written with the mass once.
+    assert!(markdown.contains(
+        r"c_{\psi} \left(m_{C} + 2 m_{W}\right) \left(R s_{\theta} + b c_{\theta}\right) \ddot{x}"
+    ));
+}

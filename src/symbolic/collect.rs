@@ -5,8 +5,8 @@
 //! equality, is a plain sum of monomials.
 
 use super::build::{add, mul, pow};
-use super::collect_constants::{constants_collected_terms, positive_first, sum_tex};
 pub use super::collect_constants::sum_times;
+use super::collect_constants::{constants_collected_terms, positive_first, sum_tex};
 use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::{latex, latex_term, list_by_runs};
@@ -296,21 +296,24 @@ pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
     } else {
         format!("{} ", latex_term(c, &rest))
     };
-    let inner = square_root_of_sum(inner).map_or_else(
-        || format!("\\left({inner_tex}\\right)"),
-        |root| square_tex(&root),
-    );
+    let inner =
+        square_root_of_sum(inner).map_or_else(|| inner_tex.clone(), |root| square_tex(&root));
     let text = format!("{sign}{front}{inner} {key}");
     text.trim_end().to_string()
 }
 
-/// `common` and `inner` as [`factored`] writes them, with `inner` in LaTeX: collected by
+/// `common` and `inner` as [`factored`] writes them, with `inner` in LaTeX, in brackets
+/// unless it is one product: collected by
 /// its constants where that is shorter and leads with a plus; else, a sum that leads with a
 /// minus as −k (a − b − c) when most of its terms are negative, or with its positive terms
 /// first, as a textbook writes (I₃ − I₁).
 fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
+    let parenthesized = |tex: String| format!("\\left({tex}\\right)");
     if let Some(terms) = constants_collected_terms(inner) {
+        // Collected into one product, it needs no brackets of its own.
+        let one = terms.len() == 1;
         let (flipped, tex) = positive_first(terms);
+        let tex = if one { tex } else { parenthesized(tex) };
         return if flipped {
             (common.neg(), inner.neg(), tex)
         } else {
@@ -321,11 +324,11 @@ fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
     let negatives = inner.terms().iter().filter(|t| negative(t)).count();
     let positives = inner.terms().len() - negatives;
     if inner.terms().len() < 2 || !negative(&inner.terms()[0]) {
-        return (common.clone(), inner.clone(), latex(inner));
+        return (common.clone(), inner.clone(), parenthesized(latex(inner)));
     }
     if negatives > positives {
         let (common, inner) = (common.neg(), inner.neg());
-        let tex = latex(&inner);
+        let tex = parenthesized(latex(&inner));
         return (common, inner, tex);
     }
     let mut tex = String::new();
@@ -333,7 +336,7 @@ fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
     for t in first.into_iter().chain(then) {
         push_signed(&mut tex, latex(t));
     }
-    (common.clone(), inner.clone(), tex)
+    (common.clone(), inner.clone(), parenthesized(tex))
 }
 
 /// The sum whose square `sum` is, when it is the square of a sum of two to four terms

@@ -192,31 +192,72 @@ fn shared_sums(sets: &[Set]) -> Vec<Shared<'_>> {
         }
         // A sum of numbers alone is no constant worth sharing.
         let symbolic = !sums[i].is_zero() && sums[i].as_number().is_none();
-        let mut varying = vec![set.varying.clone()];
+        // What the sets share: the sum without its common factor, R (m + 2 M) and
+        // b (m + 2 M) sharing m + 2 M; one term as it is.
+        let (own, base) = if sums[i].terms().len() > 1 {
+            pull_common_factor(&sums[i])
+        } else {
+            (Expr::one(), sums[i].clone())
+        };
+        // Each set's varying part with its factor: over `sums[i]` (a number), and over `base`.
+        let mut by_number = vec![set.varying.clone()];
+        let mut by_base = vec![mul([own.clone(), set.varying.clone()])];
         let mut members: Vec<&Expr> = set.terms.iter().collect();
         if symbolic {
             for j in i + 1..sets.len() {
-                if let Some(r) = (!used[j]).then(|| ratio(&sums[j], &sums[i])).flatten() {
-                    used[j] = true;
-                    varying.push(mul([Expr::num(r), sets[j].varying.clone()]));
-                    members.extend(&sets[j].terms);
-                }
+                let Some((f, r)) = (!used[j])
+                    .then(|| factor_of(&sums[j], &sums[i], &own, &base))
+                    .flatten()
+                else {
+                    continue;
+                };
+                used[j] = true;
+                by_number.extend(r.map(|r| mul([Expr::num(r), sets[j].varying.clone()])));
+                by_base.push(mul([f, sets[j].varying.clone()]));
+                members.extend(&sets[j].terms);
             }
         }
         if members.len() == 1 || sums[i].is_zero() {
             out.extend(members.into_iter().map(Shared::AsIs));
-        } else {
-            // Whole numbers inside: (r + z)(2 φ̇ θ̇ + ψ̇²) rather than 2 (r + z)(φ̇ θ̇ + ψ̇²/2).
-            let shared = shared_number(&varying);
-            let inverse = Expr::num(shared.recip().unwrap_or(Number::ONE));
-            out.push(Shared::Sum {
-                constant: mul([Expr::num(shared), sums[i].clone()]),
-                varying: add(varying.into_iter().map(|v| mul([inverse.clone(), v]))),
-                members,
-            });
+            continue;
         }
+        // Shared by numbers alone: the sum as it is, −(r + z)(θ̇² + 2 ψ̇ θ̇); else its
+        // base, (m + 2 M)(R sin θ + b cos θ).
+        let (constant, varying) = if by_number.len() == by_base.len() {
+            (sums[i].clone(), by_number)
+        } else {
+            (base, by_base)
+        };
+        // Whole numbers inside: (r + z)(2 φ̇ θ̇ + ψ̇²) rather than 2 (r + z)(φ̇ θ̇ + ψ̇²/2).
+        let shared = shared_number(&varying);
+        let inverse = Expr::num(shared.recip().unwrap_or(Number::ONE));
+        out.push(Shared::Sum {
+            constant: mul([Expr::num(shared), constant]),
+            varying: add(varying.into_iter().map(|v| mul([inverse.clone(), v]))),
+            members,
+        });
     }
     out
+}
+
+/// The factor f with `sum = f · base`, where `first = own · base` is the sum of the set
+/// that shares it: a number r times `first` (`−2 (r + z)`), with r, or, for sums of several
+/// terms, another common factor of the same sum (`b (m + 2 M)` beside `R (m + 2 M)`).
+fn factor_of(sum: &Expr, first: &Expr, own: &Expr, base: &Expr) -> Option<(Expr, Option<Number>)> {
+    if let Some(r) = ratio(sum, first) {
+        return Some((mul([Expr::num(r), own.clone()]), Some(r)));
+    }
+    if base.terms().len() < 2 || sum.terms().len() != base.terms().len() {
+        return None;
+    }
+    let (common, rest) = pull_common_factor(sum);
+    if rest == *base {
+        Some((common, None))
+    } else if rest == base.neg() {
+        Some((common.neg(), None))
+    } else {
+        None
+    }
 }
 
 /// The gcd of the terms' numerators over the lcm of their denominators, or 1 where a
