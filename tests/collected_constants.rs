@@ -2,23 +2,28 @@
 //! constants summed, and a sum that leads with a minus with its positive terms first. Each
 //! test reads a real handout and compares with a form derived by hand.
 
-fn kane_markdown(problem: &str) -> String {
-    crate::support::explain(problem, &["--method", "kane"])
+/// Asserts that the Markdown handout of `problem` by `method` prints `expected`.
+fn prints(problem: &str, method: &str, expected: &str) {
+    let markdown = crate::support::explain(problem, &["--method", method]);
+    assert!(
+        markdown.contains(expected),
+        "{problem} by {method} lacks {expected}"
+    );
 }
 
 #[test]
 fn the_heavy_tops_moment_of_inertia_about_the_vertical_is_collected() {
-    let markdown = kane_markdown("heavy-symmetric-top");
     // About the vertical the top's inertia is I₃ cos²θ + (I_t + m h²) sin²θ: the transverse
     // moment about the support point, I_t + m h² by the parallel-axis theorem, comes as one.
-    assert!(markdown.contains(
-        r"\left(I_{3} c_{\theta}^{2} + \left(I_{t} + h^{2} m\right) s_{\theta}^{2}\right) \ddot{\psi}"
-    ));
+    prints(
+        "heavy-symmetric-top",
+        "kane",
+        r"\left(I_{3} c_{\theta}^{2} + \left(I_{t} + h^{2} m\right) s_{\theta}^{2}\right) \ddot{\psi}",
+    );
 }
 
 #[test]
 fn a_joint_points_acceleration_groups_the_offsets_as_the_rigid_body_formula_does() {
-    let markdown = kane_markdown("validation/whipple-bicycle");
     // a^P = a^{H*} + α × r + ω × (ω × r), r from H* to the front hub, (w − x_H, 0, −(r_F + z_H))
     // in H. Its x component: a^{H*}_x + r_z (α_y + ω_x ω_z) − r_x (ω_y² + ω_z²).
     let expected = [
@@ -27,34 +32,36 @@ fn a_joint_points_acceleration_groups_the_offsets_as_the_rigid_body_formula_does
         r" + \left(x_{H} - w\right) \left({\omega^{H}_{y}}^{2} + {\omega^{H}_{z}}^{2}\right)$",
     ]
     .concat();
-    assert!(markdown.contains(&expected), "no {expected}");
+    prints("validation/whipple-bicycle", "kane", &expected);
 }
 
 #[test]
 fn eulers_equations_write_the_difference_of_inertias_positive_first() {
-    let markdown = kane_markdown("torque-free-body-speeds");
     // I₂ u̇₂ = (I₃ − I₁) u₃ u₁, as Euler wrote it.
-    assert!(markdown.contains(r"-I_{2} \dot{u}_{2} + \left(I_{3} - I_{1}\right) u_{1} u_{3} = 0"));
+    let euler = r"-I_{2} \dot{u}_{2} + \left(I_{3} - I_{1}\right) u_{1} u_{3} = 0";
+    prints("torque-free-body-speeds", "kane", euler);
 }
 
 #[test]
 fn a_vectors_component_is_collected_by_its_constants() {
-    let markdown = kane_markdown("validation/whipple-bicycle");
     // The front contact moves with the rear frame B by ω^B × r, r reaching c + w forward
     // along b̂_x (wheelbase and trail): its b̂_z part is −ω^B_y (c + w), with
     // ω^B_y = θ̇ + ψ̇ sin φ.
-    assert!(markdown.contains(
-        r"- \left(c + w\right) \left(\dot{\theta} + \dot{\psi} \sin(\phi)\right) \hat{\mathbf{b}}_{z}"
-    ));
+    prints(
+        "validation/whipple-bicycle",
+        "kane",
+        r"- \left(c + w\right) \left(\dot{\theta} + \dot{\psi} \sin(\phi)\right) \hat{\mathbf{b}}_{z}",
+    );
 }
 
 #[test]
 fn sums_that_share_a_factor_of_constants_write_it_once() {
-    let markdown = crate::support::explain("two-wheeled-cart", &["--method", "motion-law"]);
     // In a moment row, the inertia force of the whole cart, −(m_C + 2 m_W) ẍ, has the arm
     // R sin θ + b cos θ (axle height R and centre offset b, pitched by θ): the two terms
     // R (m_C + 2 m_W) s_θ + b (m_C + 2 m_W) c_θ are written with the mass once.
-    assert!(markdown.contains(
-        r"c_{\psi} \left(m_{C} + 2 m_{W}\right) \left(R s_{\theta} + b c_{\theta}\right) \ddot{x}"
-    ));
+    prints(
+        "two-wheeled-cart",
+        "motion-law",
+        r"c_{\psi} \left(m_{C} + 2 m_{W}\right) \left(R s_{\theta} + b c_{\theta}\right) \ddot{x}",
+    );
 }
