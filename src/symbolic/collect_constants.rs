@@ -4,7 +4,7 @@
 
 use super::build::{add, mul};
 use super::collect::{
-    common_factor_out, factored, gcd, multiple_of, pull_common_factor, push_signed,
+    common_factor_out, factored, gcd, multiple_of, pull_common_factor, push_signed, signed_term,
 };
 use super::expr::{Expr, Node, Symbol};
 use super::fast_hash::FastMap;
@@ -26,7 +26,7 @@ struct Set {
 /// −(r + z)(θ̇² + 2 ψ̇ θ̇ s_φ). A sum of constants alone is collected the same way by its
 /// functions of constants: (c + w − x_H) cos λ + z_H sin λ. `None` when no two terms share
 /// what they are collected by, or when that is no shorter.
-pub fn latex_constants_collected(e: &Expr) -> Option<String> {
+fn latex_constants_collected(e: &Expr) -> Option<String> {
     constants_collected_terms(e).map(|terms| {
         let mut out = String::new();
         terms.into_iter().for_each(|t| push_signed(&mut out, t));
@@ -41,7 +41,7 @@ pub(super) fn sum_tex(e: &Expr) -> String {
 }
 
 /// The terms [`latex_constants_collected`] writes, each with its sign.
-pub fn constants_collected_terms(e: &Expr) -> Option<Vec<String>> {
+pub(super) fn constants_collected_terms(e: &Expr) -> Option<Vec<String>> {
     let mut sets = sets_by(e, Expr::is_constant);
     if sets.iter().all(|s| s.varying.is_one()) {
         sets = sets_by(e, is_plain_constant);
@@ -97,12 +97,12 @@ fn collected_text(constant: &Expr, varying: &Expr) -> String {
     if sum.terms().len() > 1 {
         factored(&common, &sum, &key)
     } else {
-        factored_once(&mul([common, sum]), &key)
+        signed_term(&mul([common, sum]), &key)
     }
 }
 
 /// The length of LaTeX as a reader sees it: `\left(` and `\right)` are one character each.
-pub fn shown_length(tex: &str) -> usize {
+fn shown_length(tex: &str) -> usize {
     tex.len() - 5 * tex.matches("\\left").count() - 6 * tex.matches("\\right").count()
 }
 
@@ -280,19 +280,6 @@ fn shared_number(terms: &[Expr]) -> Number {
     match denominator {
         Some(d) if numerator > 0 => Number::ratio(numerator.into(), d.into()),
         _ => Number::ONE,
-    }
-}
-
-/// `constant key` for a constant of one term, its sign in front.
-fn factored_once(constant: &Expr, key: &str) -> String {
-    let (c, rest) = constant.split_coefficient();
-    let sign = if c.is_negative() { "-" } else { "" };
-    let c = if c.is_negative() { c.neg() } else { c };
-    let front = latex(&mul([Expr::num(c), rest]));
-    if front == "1" {
-        format!("{sign}{key}")
-    } else {
-        format!("{sign}{front} {key}")
     }
 }
 
