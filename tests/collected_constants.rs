@@ -44,14 +44,39 @@ fn eulers_equations_write_the_difference_of_inertias_positive_first() {
 
 #[test]
 fn a_vectors_component_is_collected_by_its_constants() {
-    // The front contact moves with the rear frame B by ω^B × r, r reaching c + w forward
-    // along b̂_x (wheelbase and trail): its b̂_z part is −ω^B_y (c + w), with
-    // ω^B_y = θ̇ + ψ̇ sin φ.
-    prints(
-        "validation/whipple-bicycle",
-        "kane",
-        r"- \left(c + w\right) \left(\dot{\theta} + \dot{\psi} \sin(\phi)\right) \hat{\mathbf{b}}_{z}",
+    // A turntable arm B (angle q1 about N.z) carries a tip C on a joint at a along B.x, turning
+    // about B.x; C's centre lies b further along C.x = B.x. By hand v^{C*} = q̇1 n̂z × (a + b) b̂x
+    // = (a + b) q̇1 b̂y: the arm's a and the tip's b are one length.
+    let problem = r#"{
+      "title": "A turntable arm with a tip turning about it", "dimension": 3,
+      "constants": { "a": { "value": 0.4 }, "b": { "value": 0.1 }, "m": { "value": 1 }, "J": { "value": 0.01 } },
+      "coordinates": { "q1": { "initial": 0, "rate": 1 }, "q2": { "initial": 0.3, "rate": 2 } },
+      "bodies": {
+        "B": { "mass": "m", "inertia": { "xx": "J", "yy": "J", "zz": "J" } },
+        "C": { "mass": "m", "center": "b*C.x", "inertia": { "xx": "J", "yy": "J", "zz": "J" } }
+      },
+      "joints": [
+        { "name": "O", "type": "revolute", "parent": "N", "child": "B", "axis": "N.z", "coordinates": ["q1"] },
+        { "name": "P", "type": "revolute", "parent": "B", "child": "C", "at": "a*B.x", "axis": "B.x", "coordinates": ["q2"] }
+      ]
+    }"#;
+    let path = std::env::temp_dir().join(format!("mbd-arm-{}.json", std::process::id()));
+    std::fs::write(&path, problem).expect("temporary file");
+    let out = crate::support::run(&[
+        std::ffi::OsStr::new("explain"),
+        path.as_os_str(),
+        std::ffi::OsStr::new("--method"),
+        std::ffi::OsStr::new("kane"),
+    ]);
+    let _ = std::fs::remove_file(&path);
+    let markdown = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
     );
+    let expected = r"{}^{N}\mathbf{v}^{C^*} = \dot{q}_{1} \left(a + b\right) \hat{\mathbf{b}}_{y}";
+    assert!(markdown.contains(expected), "no {expected}");
 }
 
 #[test]

@@ -515,13 +515,15 @@ fn a_long_rolling_constraint_reads_as_the_contact_points_velocity() {
         let row = format!("| ${point} \\cdot \\hat{{\\mathbf{{n}}}}_{{{axis}}} = 0$ |");
         assert!(markdown.contains(&row), "no row {row}");
     }
-    // The velocity itself once, below the table. By hand, its first terms are the rear
-    // axle's velocity, the origin of B at (x, y, z) in N: ẋ n̂x + ẏ n̂y + ż n̂z.
+    // The velocity itself once, as a textbook forms a point of the wheel's: by hand
+    // ᴺv^P = ᴺv^{F*} + ᴺω^F × r^{F*P}, the arm r_F long along the ground normal's part in
+    // the wheel's plane, (C₃₁ f̂x + C₃₃ f̂z)/σ_F.
     let definition = format!(
-        "{point} = \\dot{{x}} \\hat{{\\mathbf{{n}}}}_{{x}} + \\dot{{y}} \\hat{{\\mathbf{{n}}}}_{{y}} + \\dot{{z}} \\hat{{\\mathbf{{n}}}}_{{z}} + "
+        "{point} = {{}}^{{N}}\\mathbf{{v}}^{{F^*}} + {{}}^{{N}}\\boldsymbol{{\\omega}}^{{F}} \\times \\mathbf{{r}}^{{F^* \\mathrm{{front}}_{{\\mathrm{{contact}}}}}}"
     );
     assert_eq!(markdown.matches(&definition).count(), 1, "{definition}");
-    assert!(markdown.contains("| definition | equation (C7) below |"));
+    let arm = "= \\frac{r_{F} {}^{N}C^{F}_{31}}{\\sigma_{F}} \\hat{\\mathbf{f}}_{x} + \\frac{r_{F} {}^{N}C^{F}_{33}}{\\sigma_{F}} \\hat{\\mathbf{f}}_{z}$";
+    assert!(markdown.contains(arm), "no arm {arm}");
 }
 
 #[test]
@@ -585,9 +587,8 @@ fn the_bicycles_front_wheel_lean_is_named_once() {
     assert!(markdown
         .contains("- $\\sigma_{F} = \\sqrt{{{}^{N}C^{F}_{31}}^{2} + {{}^{N}C^{F}_{33}}^{2}}$"));
     assert!(markdown.contains("- r_{F} \\sigma_{F} + "));
-    // The contact point's velocity along f̂_x: every term holds r_F C₃₃/σ_F, written once.
-    assert!(markdown
-        .contains("\\frac{r_{F} {}^{N}C^{F}_{33}}{\\sigma_{F}} \\left(\\dot{\\theta}_{F} + "));
+    // The contact's arm from the wheel's centre along f̂_z: r_F C₃₃/σ_F.
+    assert!(markdown.contains("\\frac{r_{F} {}^{N}C^{F}_{33}}{\\sigma_{F}} \\hat{\\mathbf{f}}_{z}"));
     assert_eq!(markdown.matches("\\sqrt").count(), 1);
 }
 

@@ -5,6 +5,7 @@
 use super::context::{ConstraintView, DependentSpeeds};
 use crate::equations::Derivation;
 use crate::mechanics::constraints::RowOrigin;
+use crate::mechanics::vector::Vector;
 use crate::mechanics::Model;
 use crate::numeric::format::fixed;
 use crate::problem::BodyId;
@@ -64,12 +65,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         })
         .collect();
     for site in velocities {
-        let velocity = &model.sites[site].point.velocity;
-        let equation_tex = format!(
-            "{} = {}",
-            point_velocity_tex(model, site),
-            super::derived::vector_tex(model, velocity)
-        );
+        let equation_tex = contact_velocity_tex(model, site);
         views.push(ConstraintView {
             name_tex: format!(
                 "\\text{{the velocity of the contact point at {}}}",
@@ -95,6 +91,25 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             .map(|(row, why)| format!("Constraint {row} left out: {why}.").replace('`', "")),
     );
     (views, notes)
+}
+
+/// The velocity of the child's material point at a contact as a textbook forms it, from
+/// the body's mass centre: ᴺv^P = ᴺv^{F*} + ᴺω^F × r^{F*P}, both named in step 4, with the
+/// arm r^{F*P} written out. Multiplied out across the chain of frames it would fill lines.
+fn contact_velocity_tex(model: &Model, site: usize) -> String {
+    let contact = &model.sites[site];
+    let body = contact.child;
+    let center = &model.bodies[body.0].center_offset;
+    let arm = Vector::sum((0..3).map(|axis| {
+        Vector::unit(body, axis).scaled(&(&contact.child_offset[axis] - &center[axis]))
+    }));
+    let name = latex_name(model.problem.body_name(body));
+    let point = latex_name(&contact.name);
+    format!(
+        "{} = {{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} + {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} \\times \\mathbf{{r}}^{{{name}^* {point}}}, \\quad \\mathbf{{r}}^{{{name}^* {point}}} = {}",
+        point_velocity_tex(model, site),
+        super::derived::vector_tex(model, &arm)
+    )
 }
 
 /// `{}^{N}\mathbf{v}^{P}` for the contact point of site `site`.

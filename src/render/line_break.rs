@@ -71,17 +71,22 @@ pub fn break_into_lines(latex: &str, width: f64) -> Vec<String> {
     // (where a piece starts, how many `\left` are open there)
     let mut starts: Vec<(usize, usize)> = vec![(0, 0)];
     let (mut braces, mut environments, mut open) = (0i32, 0i32, 0usize);
+    // For each open `\left`, whether it holds a function's argument, cos(λ + θ), which
+    // a textbook never splits over lines.
+    let mut arguments: Vec<bool> = Vec::new();
     let bytes = latex.as_bytes();
     let mut i = 0;
     while i < bytes.len() {
         let rest = &latex[i..];
         if let Some(length) = command_at(rest, "\\left") {
             open += 1;
+            arguments.push(ends_with_function(&latex[..i]));
             i += length;
             continue;
         }
         if let Some(length) = command_at(rest, "\\right") {
             open = open.saturating_sub(1);
+            arguments.pop();
             i += length;
             continue;
         }
@@ -100,7 +105,11 @@ pub fn break_into_lines(latex: &str, width: f64) -> Vec<String> {
             b'{' => braces += 1,
             b'}' => braces -= 1,
             b'+' | b'-' | b'='
-                if braces == 0 && environments == 0 && i > 0 && bytes[i - 1] == b' ' =>
+                if braces == 0
+                    && environments == 0
+                    && !arguments.contains(&true)
+                    && i > 0
+                    && bytes[i - 1] == b' ' =>
             {
                 starts.push((i, open));
             }
@@ -252,6 +261,25 @@ fn two_groups(latex: &str, start: usize) -> Option<(&str, &str, usize)> {
     Some((&latex[a..a_end], &latex[b..b_end], b_end + 1))
 }
 
+/// Whether `before` ends with a function's name (`\\cos`, `\\sin^{2}`), so that a bracket
+/// opened next holds its argument.
+fn ends_with_function(before: &str) -> bool {
+    const FUNCTIONS: [&str; 12] = [
+        "sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcsin", "arccos", "arctan",
+    ];
+    let mut text = before.trim_end();
+    // A power written before the argument, as in sin²(λ + θ).
+    if let Some(stem) = text.strip_suffix('}') {
+        if let Some(at) = stem.rfind("^{") {
+            text = &text[..at];
+        }
+    }
+    let name_start = text
+        .rfind(|c: char| !c.is_ascii_alphabetic())
+        .map_or(0, |at| at + 1);
+    text[..name_start].ends_with('\\') && FUNCTIONS.contains(&&text[name_start..])
+}
+
 /// The length of `command` if `text` starts with it as a whole word (`\\left`, not `\\leftarrow`).
 fn command_at(text: &str, command: &str) -> Option<usize> {
     let after = text.strip_prefix(command)?;
@@ -289,6 +317,15 @@ mod tests {
             "- \\frac{1}{2} \\left(L \\left(aaaaaaa \\right.\\right. \\\\ \\left.\\left. + bbbbbbb\\right) c\\right) = 0"
         );
         assert_eq!(break_lines(fraction, 100.0), fraction);
+        // A function's argument is never split over lines.
+        assert_eq!(
+            break_lines("a \\cos\\left(\\lambda + \\theta\\right) + b + c", 3.0),
+            "a \\cos\\left(\\lambda + \\theta\\right) \\\\ + b + c"
+        );
+        assert_eq!(
+            break_lines("\\sin^{2}\\left(x - y\\right) + bbbbbbbb", 1.0),
+            "\\sin^{2}\\left(x - y\\right) \\\\ + bbbbbbbb"
+        );
         // A long product has nowhere to break: it stays a fraction.
         let product = "\\frac{L a b c d e f g h i j k}{2}";
         assert_eq!(break_lines(product, 5.0), product);

@@ -112,11 +112,22 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
             torque: None,
         }),
         Sum::Moment { point, .. } => {
+            // About a body's own mass centre its inertia force has no moment.
+            let about_own_centre = !many
+                && row
+                    .free_body
+                    .first()
+                    .is_some_and(|b| point.strip_suffix('*') == Some(problem.body_name(*b)));
             let point = super::matrix::point_tex(point);
             let torque = inertia_torque_terms(&k, derivation.model.is_planar()).join(" + ");
+            let force = if about_own_centre {
+                String::new()
+            } else {
+                format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force}")
+            };
             Some(NamedInertia {
                 sum,
-                force: format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force}"),
+                force,
                 torque: Some(torque),
             })
         }
@@ -151,7 +162,11 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
     let inside = match (&row.sum, torque) {
         (Sum::Moment { point, .. }, Some(torque)) => {
             let point = super::matrix::point_tex(point);
-            format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {force} + {torque} \\right)")
+            let inertia = match force.as_str() {
+                "" => torque,
+                _ => format!("{force} + {torque}"),
+            };
+            format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {inertia} \\right)")
         }
         _ => format!("\\sum \\mathbf{{F}} - {sum}{force}"),
     };
@@ -174,6 +189,9 @@ pub fn named_inertia_group(
     let direction = row.direction.as_ref()?;
     let named = named_inertia(derivation, row)?;
     let term = if torque { named.torque? } else { named.force };
+    if term.is_empty() {
+        return None;
+    }
     let single = !term.contains(" + ") && !term.contains("\\times") && !term.contains("\\cdot");
     let body = if single {
         term
