@@ -775,3 +775,33 @@ fn a_damper_on_a_long_chain_grows_at_the_ends_relative_velocity_along_its_unit_v
     let plate = explain("plate-on-two-springs", "markdown");
     assert!(!plate.contains("\\Delta v_{"));
 }
+
+#[test]
+fn a_long_acceleration_is_written_by_the_partial_velocities() {
+    let markdown = explain("validation/whipple-bicycle", "markdown");
+    // B* moves as v^{B*} = Σ_r v^{B*}_r q̇_r (the rates' coefficients), so by the rule of
+    // differentiation a^{B*} = Σ_r v^{B*}_r q̈_r + ã^{B*}: the q̈ have the velocity's
+    // coefficients, and only the rest, ã, is new, named component by component in B.
+    let rule = "{}^{N}\\mathbf{a}^{B^*} = \\sum_{r} {}^{N}\\mathbf{v}^{B^*}_{r}\\, \\ddot{q}_{r} + \\tilde{a}^{B^{*}}_{x} \\hat{\\mathbf{b}}_{x} + \\tilde{a}^{B^{*}}_{y} \\hat{\\mathbf{b}}_{y} + \\tilde{a}^{B^{*}}_{z} \\hat{\\mathbf{b}}_{z}";
+    assert!(markdown.contains(rule), "no {rule}");
+    assert!(markdown.contains("{}^{N}\\mathbf{v}^{B^*} = \\left(\\dot{\\psi} v^{B^{*}}_{\\psi,x}"));
+    // The where list says once what v_r is.
+    assert_eq!(
+        markdown
+            .matches("- ${}^{N}\\mathbf{v}^{k^*}_{r} = \\partial\\, {}^{N}\\mathbf{v}^{k^*} / \\partial \\dot{q}_{r}$: the partial velocities")
+            .count(),
+        1
+    );
+}
+
+#[test]
+fn a_moment_about_a_bodys_own_mass_centre_has_no_moment_of_its_inertia_force() {
+    // Newton–Euler's row of H's moments about H* along ĥ_y is long enough to be formed in
+    // vector form; about H* itself, the arm of −m_H a^{H*} is zero, so only the inertia
+    // torque is subtracted: ĥ_y · (Σ M_{H*} − (α·I + ω × I·ω)) = 0.
+    let markdown =
+        crate::support::explain("validation/whipple-bicycle", &["--method", "newton-euler"]);
+    let row = "\\hat{\\mathbf{h}}_{y} \\cdot \\left( \\sum \\mathbf{M}_{H^{*}} - \\left( \\boldsymbol{\\alpha}^{H} \\cdot \\mathbf{I}^{H} + \\boldsymbol{\\omega}^{H} \\times \\mathbf{I}^{H} \\cdot \\boldsymbol{\\omega}^{H} \\right) \\right) = 0";
+    assert!(markdown.contains(row), "no {row}");
+    assert!(!markdown.contains("\\mathbf{r}^{H^{*} H^*}"));
+}

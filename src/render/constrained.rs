@@ -159,6 +159,23 @@ pub fn dependent_speeds(
         rows.join(" \\\\ "),
         column(&reducer.rates)
     );
+    // The same map as equations, ẋ = −0.3 θ̇_R, for the handouts that need no C by name.
+    let relations_tex = dependent
+        .iter()
+        .enumerate()
+        .map(|(d, &s)| {
+            let terms = reducer
+                .rates
+                .iter()
+                .enumerate()
+                .map(|(k, &r)| (c[(d, k)], rate(r)));
+            format!(
+                "{} = {}",
+                rate(s),
+                numeric_sum(terms, 0.0).unwrap_or("0".into())
+            )
+        })
+        .collect();
     let kane_tex = "\\left(F_r + F_r^*\\right) + \\sum_{s} C_{sr} \\left(F_s + F_s^*\\right) = 0, \\quad r \\text{ independent}, \\; s \\text{ dependent}".to_string();
     // Reduced partial velocities: ṽ_r = v_r + Σ_s C_sr v_s for each mass centre.
     let values = model.values_at(0.0, q, rates);
@@ -184,25 +201,11 @@ pub fn dependent_speeds(
                     *x += c[(d, k)] * numbers[s][i];
                 }
             }
-            let mut terms = String::new();
-            for (axis, x) in ["x", "y", "z"].iter().zip(v) {
-                if x.abs() < 1e-13 {
-                    continue;
-                }
-                let sign = match (terms.is_empty(), x < 0.0) {
-                    (true, true) => "-",
-                    (true, false) => "",
-                    (false, true) => " - ",
-                    (false, false) => " + ",
-                };
-                terms.push_str(&format!(
-                    "{sign}{} \\hat{{\\mathbf{{n}}}}_{{{axis}}}",
-                    fixed(x.abs())
-                ));
-            }
-            if terms.is_empty() {
-                terms.push_str("\\mathbf{0}");
-            }
+            let units = ["x", "y", "z"]
+                .iter()
+                .zip(v)
+                .map(|(axis, x)| (x, format!("\\hat{{\\mathbf{{n}}}}_{{{axis}}}")));
+            let terms = numeric_sum(units, 1e-13).unwrap_or("\\mathbf{0}".into());
             reduced.push(format!(
                 "\\tilde{{\\mathbf{{v}}}}^{{{name}^*}}_{{{}}} = {terms}",
                 rate(r)
@@ -211,9 +214,34 @@ pub fn dependent_speeds(
     }
     Some(DependentSpeeds {
         relation_tex,
+        relations_tex,
         kane_tex,
         reduced_tex: reduced,
     })
+}
+
+/// `Σ x_k symbol_k` with numbers written to the digits of the tables and a coefficient of
+/// one left out; `None` when every `|x_k|` is at most `zero`.
+fn numeric_sum(terms: impl IntoIterator<Item = (f64, String)>, zero: f64) -> Option<String> {
+    let mut sum = String::new();
+    for (x, symbol) in terms {
+        if x.abs() <= zero {
+            continue;
+        }
+        let sign = match (sum.is_empty(), x < 0.0) {
+            (true, true) => "-",
+            (true, false) => "",
+            (false, true) => " - ",
+            (false, false) => " + ",
+        };
+        let size = if x.abs() == 1.0 {
+            String::new()
+        } else {
+            format!("{} ", fixed(x.abs()))
+        };
+        sum.push_str(&format!("{sign}{size}{symbol}"));
+    }
+    (!sum.is_empty()).then_some(sum)
 }
 
 /// `text` with each `q1` or `x'` between backquotes written as the math of that coordinate

@@ -390,6 +390,8 @@ pub struct PartialVelocity {
 pub struct DependentSpeeds {
     /// `q'_D = C q'_U (+ …)` at the initial state, with `C` in numbers.
     pub relation_tex: String,
+    /// The same, one equation per dependent rate, `\dot{x} = -0.3 \dot{\theta}_{R}`.
+    pub relations_tex: Vec<String>,
     /// Kane's equations for the independent speeds, the constraint forces eliminated.
     pub kane_tex: String,
     /// The reduced partial velocities of the mass centres at the initial state, one per

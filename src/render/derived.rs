@@ -38,7 +38,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.force_definitions = super::where_list::grouped(force_definitions(derivation));
-        solution.kinematics = super::kinematics::kinematics(derivation);
+        let by_partials;
+        (solution.kinematics, by_partials) = super::kinematics::kinematics(derivation);
         solution.equations = derivation
             .rows
             .iter()
@@ -59,8 +60,12 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
-        solution.kinematic_definitions =
-            super::where_list::grouped(kinematic_definitions(derivation));
+        let mut definitions = kinematic_definitions(derivation);
+        if by_partials {
+            let rule = super::kinematics::partial_velocity_definition(derivation);
+            definitions.insert(0, rule);
+        }
+        solution.kinematic_definitions = super::where_list::grouped(definitions);
         solution.speeds = super::speeds::speeds(derivation);
     });
     // Only those the solution prints: a text formed and then given up (an entry given by
@@ -572,6 +577,11 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 ),
             )
         };
+    }
+    if matches!(row.sum, Sum::Constraint { .. }) && !by_name {
+        // A constraint differentiated is one sum with no groups: as formed it is the
+        // simplified row in another order, so it is written once.
+        grouped_tex.clear();
     }
     if grouped_tex == simplified_tex && simplified_note.is_empty() {
         // Formed already in its simplest form: written once.

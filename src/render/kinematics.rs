@@ -1,8 +1,9 @@
 //! Step 4's vectors: each body's angular velocity and acceleration and its mass centre's
 //! velocity and acceleration, in the shortest of their multiplied-out and named forms.
 
-use super::context::Kinematics;
+use super::context::{Kinematics, Named};
 use super::derived::{component_term, shortest_tex, vector_tex_by};
+use super::math_width::printed_width;
 use crate::equations::Derivation;
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
@@ -13,7 +14,9 @@ use crate::symbolic::print::latex_name;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{add, Expr};
 
-pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
+/// Step 4's vectors, body by body, and whether an acceleration is written by the partial
+/// velocities (`Σ_r ᴺv_r q̈_r + ᴺã`), which the where list then defines.
+pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
     let model = &derivation.model;
     let inertia = &derivation.inertia;
     // The shorter of the vector multiplied out and as the equations use it (named parts).
@@ -31,23 +34,35 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
             a
         }
     };
-    model
+    let mut by_partials = false;
+    let views = model
         .order
         .iter()
         .map(|&body| {
             let state = &model.bodies[body.0];
             let name = model.problem.body_name(body);
             let symbol = latex_name(name);
-            let direct_velocity =
-                match by_partial_velocities(model, &inertia.acceleration[body.0], body) {
-                    Some(named) => shorter(&state.center.velocity, &named, body),
-                    None => shortest_tex(model, &state.center.velocity, body),
-                };
+            let partials = by_partial_velocities(model, &inertia.acceleration[body.0], body);
+            let direct_velocity = match &partials {
+                Some(named) => shorter(&state.center.velocity, named, body),
+                None => shortest_tex(model, &state.center.velocity, body),
+            };
             let direct_acceleration = shorter(
                 &state.center.acceleration,
                 &inertia.acceleration[body.0],
                 body,
             );
+            let mut acceleration =
+                from_parent(model, body, Motion::Acceleration, direct_acceleration);
+            // Written out over lines, the acceleration repeats the velocity's coefficients;
+            // by the rule it is one line when its rest is named.
+            if partials.is_some() && printed_width(&acceleration) > LINE {
+                let rule = by_the_rule(model, &inertia.acceleration[body.0], body, &symbol);
+                if let Some(rule) = rule.filter(|r| printed_width(r) <= LINE) {
+                    acceleration = rule;
+                    by_partials = true;
+                }
+            }
             let (omega_tex, alpha_tex) = one_line_if_short(
                 format!(
                     "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
@@ -63,10 +78,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
                     "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
                     from_parent(model, body, Motion::Velocity, direct_velocity)
                 ),
-                format!(
-                    "{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {}",
-                    from_parent(model, body, Motion::Acceleration, direct_acceleration)
-                ),
+                format!("{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {acceleration}"),
             );
             Kinematics {
                 body: name.to_string(),
@@ -76,7 +88,21 @@ pub(super) fn kinematics(derivation: &Derivation) -> Vec<Kinematics> {
                 acceleration_tex,
             }
         })
-        .collect()
+        .collect();
+    (views, by_partials)
+}
+
+/// The where list's entry for accelerations written by the partial velocities.
+pub(super) fn partial_velocity_definition(derivation: &Derivation) -> Named {
+    let rate = if derivation.model.problem.has_speeds() {
+        "u_{r}"
+    } else {
+        "\\dot{q}_{r}"
+    };
+    Named::new(
+        format!("{{}}^{{N}}\\mathbf{{v}}^{{k^*}}_{{r}} = \\partial\\, {{}}^{{N}}\\mathbf{{v}}^{{k^*}} / \\partial {rate}"),
+        "the partial velocities of each mass centre: the coefficient of each rate in its velocity above, and of the rate's derivative in its acceleration",
+    )
 }
 
 /// A pair such as ω and α, or v* and a*, in one display, `ω = …, α = …`, when together they
@@ -125,6 +151,35 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
     }
     let components: [Expr; 3] = components.try_into().ok()?;
     Some(Vector::new(body, components))
+}
+
+/// How many symbols a line of a display holds (see `line_break`).
+const LINE: usize = 70;
+
+/// A long acceleration as Kane writes it, `Σ_r ᴺv_r q̈_r + ᴺã`: the q̈ coefficients are the
+/// partial velocities the velocity above is written with (∂a/∂q̈_r = ∂v/∂q̇_r), so only the
+/// rest, ã, is new. `None` when no rest is left to write.
+fn by_the_rule(model: &Model, acceleration: &Vector, body: BodyId, symbol: &str) -> Option<String> {
+    let problem = model.problem;
+    let accelerations = problem.speed_symbols(2);
+    let mut rest = Vec::with_capacity(3);
+    for a in acceleration.components_in(body, &model.frames) {
+        let (_, without) = linear_split(&a, &accelerations).ok()?;
+        rest.push(without);
+    }
+    let rest = Vector::new(body, rest.try_into().ok()?);
+    let speed = if problem.has_speeds() {
+        "\\dot{u}_{r}"
+    } else {
+        "\\ddot{q}_{r}"
+    };
+    let rest_tex = vector_tex_by(model, &rest, component_term);
+    (!rest_tex.is_empty()).then(|| {
+        let sign = if rest_tex.starts_with('-') { "" } else { "+ " };
+        format!(
+            "\\sum_{{r}} {{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}}_{{r}}\\, {speed} {sign}{rest_tex}"
+        )
+    })
 }
 
 /// The mass centre's velocity or acceleration.

@@ -409,3 +409,31 @@ fn kane_shows_the_coins_dependent_speeds() {
         );
     }
 }
+
+/// Newton–Euler's worked solution of the coin states the same map as equations, one per
+/// dependent rate (by hand as above, at θ = 0.3), and writes each rolling row once: the
+/// constraint ż + R sin θ θ' = 0 differentiated is z'' + R sin θ θ'' + R cos θ θ'² = 0,
+/// which as formed is that sum in another order.
+#[test]
+fn newton_euler_states_the_coins_dependent_rates_as_equations() {
+    let text = crate::support::explain("rolling-coin", &["--method", "newton-euler"]);
+    let (s, c) = 0.3f64.sin_cos();
+    let f = |x: f64| mbd_tutor::numeric::format::fixed(x);
+    let expected = format!(
+        "at the initial state, $\\dot{{z}} = -{} \\dot{{\\theta}}$, $\\dot{{x}} = {} \\dot{{\\psi}} + {} \\dot{{\\phi}}$, $\\dot{{y}} = -{} \\dot{{\\theta}}$.",
+        f(R_COIN * s),
+        f(R_COIN * s),
+        f(R_COIN),
+        f(R_COIN * c)
+    );
+    assert!(text.contains(&expected), "no {expected}");
+    let row = text
+        .split("**9. ")
+        .nth(1)
+        .and_then(|rest| rest.split("The velocity constraints").next())
+        .expect("row 9, the last");
+    assert!(row.contains(
+        "R s_{\\theta} \\ddot{\\theta} + \\ddot{z} + R c_{\\theta} \\dot{\\theta}^{2} = 0"
+    ));
+    assert_eq!(row.matches(" = 0").count(), 1, "{row}");
+}
