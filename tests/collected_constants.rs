@@ -90,3 +90,15 @@ fn sums_that_share_a_factor_of_constants_write_it_once() {
         r"c_{\psi} \left(m_{C} + 2 m_{W}\right) \left(R s_{\theta} + b c_{\theta}\right) \ddot{x}",
     );
 }
+
+#[test]
+fn a_vectors_component_that_would_lead_with_a_minus_puts_its_positive_terms_first() {
+    // The elbow motor applies T₂ = τ₂ + k_p2 (r₂ − q₂) − k_d2 q̇₂ to the forearm and −T₂ to the
+    // upper arm A (along â_z): −τ₂ − k_p2 r₂ + k_p2 q₂ + k_d2 q̇₂, which a textbook writes with the positive
+    // terms first rather than opening with −τ₂.
+    prints(
+        "two-link-robot-arm",
+        "newton-euler",
+        r"| contact: elbow motor | $\left(k_{d2} \dot{q}_{2} + k_{p2} q_{2} - \tau_{2} - k_{p2} r_{2}\right) \hat{\mathbf{a}}_{z}$",
+    );
+}

@@ -451,9 +451,13 @@ fn a_spherical_link_turns_with_its_parent_by_name() {
     assert!(markdown.contains(
         "{}^{N}\\boldsymbol{\\omega}^{B_{3}} = \\omega^{B_{3}}_{x} \\hat{\\mathbf{b}}_{3,x} + \\omega^{B_{3}}_{y} \\hat{\\mathbf{b}}_{3,y} + \\omega^{B_{3}}_{z} \\hat{\\mathbf{b}}_{3,z}"
     ));
-    // The mass centre's velocity is Σ v_r q̇_r with the partial velocities of its acceleration.
+    // The mass centre's velocity is Σ v_r q̇_r with the partial velocities of its acceleration,
+    // the positive terms first. B3* is at b3 b̂3y − (L3/2) b̂3z from its joint, so along b̂3x
+    // q̇9 (about b̂3z) moves it by −b3 q̇9 and q̇8 (about c9 b̂3y + s9 b̂3x) by −(L3/2) q̇8 c9.
+    assert!(markdown
+        .contains("{}^{N}\\mathbf{v}^{B_{3}^*} = \\left(\\dot{q}_{1} v^{B_{3}^{*}}_{q_{1},x} + "));
     assert!(markdown.contains(
-        "{}^{N}\\mathbf{v}^{B_{3}^*} = \\left(-b_{3} \\dot{q}_{9} + \\dot{q}_{1} v^{B_{3}^{*}}_{q_{1},x} + "
+        " - b_{3} \\dot{q}_{9} - \\frac{L_{3} \\dot{q}_{8} c_{9}}{2}\\right) \\hat{\\mathbf{b}}_{3,x}"
     ));
 }
 

@@ -309,10 +309,14 @@ pub(super) fn positive_first(terms: Vec<String>) -> (bool, String) {
 /// A sum `c` times `key` as it reads shortest: whole in brackets, with a factor every
 /// term shares out, (r_F/σ_F)(…) f̂_x, or collected by its constants.
 pub fn sum_times(c: &Expr, key: &str) -> String {
-    let whole = format!("\\left({}\\right) {key}", latex(c));
+    // Whole, with the sign rule: (k s_B − R k/2), never (−R k/2 + k s_B).
+    let whole = factored(&Expr::one(), c, key);
+    // A factor pulled out wins a tie, as a textbook pulls it out.
     let shorter = [common_factor_out(c, key), component_collected(c, key)];
-    std::iter::once(whole)
-        .chain(shorter.into_iter().flatten())
+    shorter
+        .into_iter()
+        .flatten()
+        .chain(std::iter::once(whole))
         .min_by_key(|t| shown_length(t))
         .unwrap_or_default()
 }
