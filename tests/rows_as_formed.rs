@@ -133,3 +133,15 @@ fn a_contact_group_is_written_with_sin_squared_plus_cos_squared_as_one() {
         "M^{U}_{1} c_{q_{D2}} - \\left( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} \\right) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
     );
 }
+
+#[test]
+fn the_constraint_rows_say_once_that_they_are_differentiated() {
+    // The four-bar's loop closes at R along b̂x and b̂y: two rows, differentiated twice in time
+    // so that they hold the q''. The first says so for both; the second is headed by what it
+    // constrains alone.
+    let markdown = explain("four-bar", "newton-euler", "markdown");
+    let first = "**10. $\\text{loop closure at R} \\cdot \\hat{\\mathbf{b}}_{x}$ (differentiated to the acceleration level, as are the constraint rows after it)**";
+    let second = "**11. $\\text{loop closure at R} \\cdot \\hat{\\mathbf{b}}_{y}$**";
+    assert!(markdown.contains(first), "no {first}");
+    assert!(markdown.contains(second), "no {second}");
+}

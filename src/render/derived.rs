@@ -47,6 +47,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .collect();
         super::long::refer_to_repeated_vector_forms(derivation, &mut solution.equations);
         super::long::refer_to_the_first_auxiliary_row(&mut solution.equations);
+        super::long::say_the_acceleration_level_once(&mut solution.equations);
         // The matrix is listed entry by entry whenever an equation refers to its entries.
         let by_name: Vec<bool> = solution.equations.iter().map(|e| e.by_name).collect();
         let use_shown = uses_shown(derivation);

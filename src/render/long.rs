@@ -231,6 +231,25 @@ pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [Equa
     }
 }
 
+/// The constraint rows say once, at the first, that they are differentiated to the
+/// acceleration level: repeated on every heading it would take a line of its own.
+pub fn say_the_acceleration_level_once(views: &mut [EquationView]) {
+    const LEVEL: &str = "(differentiated to the acceleration level)";
+    let mut rows = views.iter_mut().filter(|v| v.label == LEVEL);
+    let Some(first) = rows.next() else {
+        return;
+    };
+    let mut later = rows.peekable();
+    if later.peek().is_some() {
+        first.label =
+            "(differentiated to the acceleration level, as are the constraint rows after it)"
+                .into();
+    }
+    for view in later {
+        view.label.clear();
+    }
+}
+
 /// Kane's auxiliary rows after the first at a joint refer to it for what their speed does,
 /// rather than saying again that it moves the same bodies against the joint.
 pub fn refer_to_the_first_auxiliary_row(views: &mut [EquationView]) {
