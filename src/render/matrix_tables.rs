@@ -149,12 +149,21 @@ fn array(labels: &[String], x: &[String], a: &[Vec<String>], b: Option<&[String]
         if b.is_some() { "|c" } else { "" },
         x.join(" & ")
     );
+    // An empty cell is a bare `&`: a table of dots is mostly empty cells.
+    let cells = |row: &[String]| -> String {
+        row.iter()
+            .map(|c| match c.as_str() {
+                "" => "&".to_string(),
+                c => format!("& {c} "),
+            })
+            .collect()
+    };
     for (i, row) in a.iter().enumerate() {
-        let b_entry = b.map_or(String::new(), |b| format!(" & {}", b[i]));
+        let b_entry = b.map_or(String::new(), |b| cells(&b[i..=i]));
         table.push_str(&format!(
-            " {} & {}{b_entry} \\\\",
+            " {} {}{b_entry}\\\\",
             labels[i],
-            row.join(" & ")
+            cells(row)
         ));
     }
     table.push_str(" \\end{array}");
