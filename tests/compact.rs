@@ -376,13 +376,13 @@ fn the_double_pendulum_reads_as_a_textbook_writes_it() {
     // Both rods along N.y: F^O_y - (m1 + m2) g + …, the masses collected.
     assert!(equations[3].ends_with("- g \\left(m_{1} + m_{2}\\right)"));
     // The abbreviations are defined once, at the start of step 2 where steps 2 to 5 begin
-    // to use them, in the order of the coordinates, the sums last.
+    // to use them (this chain has no constraint in step 1), in the order of the
+    // coordinates, the sums last.
     let line = "Abbreviations: $s_{1} = \\sin(q_{1})$, $c_{1} = \\cos(q_{1})$, $s_{2} = \\sin(q_{2})$, $c_{2} = \\cos(q_{2})$, $s_{12} = \\sin\\left(q_{1} + q_{2}\\right)$, $c_{12} = \\cos\\left(q_{1} + q_{2}\\right)$.";
     assert_eq!(markdown.matches(line).count(), 1);
     let step2 = markdown.find("## Step 2").expect("step 2");
     assert!(markdown.find(line).is_some_and(|i| i > step2));
-    // Step 1 still writes the functions out.
-    assert!(markdown[..step2].contains("\\cos") || !markdown[..step2].contains("c_{1}"));
+    assert!(!markdown[..step2].contains("c_{1}"));
 }
 
 #[test]
@@ -391,9 +391,16 @@ fn the_rolling_coin_has_no_root_of_a_square() {
     // √(cos²θ) = cos θ while the coin stands (cos θ > 0 at the start), as a 1-D spring's
     // |a + x| is shown as a + x; and (sin²φ + cos²φ)² = 1 inside the constraints.
     assert!(!markdown.contains("\\sqrt"), "a square root is left");
+    // Step 1's constraints use the abbreviations, listed just before their table.
     assert!(markdown.contains(
-        "| $\\text{rolling constraint at floor} \\cdot \\hat{\\mathbf{n}}_{z}$ | position | $z - R \\cos(\\theta) = 0$ |"
+        "| $\\text{rolling constraint at floor} \\cdot \\hat{\\mathbf{n}}_{z}$ | position | $z - R c_{\\theta} = 0$ |"
     ));
+    let abbreviations = markdown.find("Abbreviations: ").expect("abbreviations");
+    let table = markdown
+        .find("| Constraint | Level | Equation |")
+        .expect("constraints");
+    let step2 = markdown.find("## Step 2").expect("step 2");
+    assert!(abbreviations < table && table < step2);
     // The velocity constraint along N.x, by hand, ẋ = R c_ψ (φ̇ + ψ̇ s_θ) + R θ̇ s_ψ c_θ,
     // differentiated in time:
     let expected = "-R c_{\\psi} \\ddot{\\phi} - R s_{\\theta} c_{\\psi} \\ddot{\\psi} - R s_{\\psi} c_{\\theta} \\ddot{\\theta} + \\ddot{x} + R s_{\\psi} s_{\\theta} \\dot{\\psi}^{2} + R s_{\\psi} s_{\\theta} \\dot{\\theta}^{2} + R s_{\\psi} \\dot{\\phi} \\dot{\\psi} - 2 R c_{\\psi} c_{\\theta} \\dot{\\psi} \\dot{\\theta}";

@@ -82,10 +82,11 @@ fn axes(problem: &Problem) -> Vec<Named> {
             // A unit vector as written is the axis; any other vector gives its direction.
             let plain = axis.terms.len() == 1 && axis.terms[0].2.is_one();
             let relation = if plain { "=" } else { "\\parallel" };
-            Some(Named {
-                definition_tex: format!("{unit} {relation} {}", vector_tex(problem, axis)),
-                note: format!("the axis of the joint {}", j.name),
-            })
+            // The subscript names the joint: no note.
+            Some(Named::new(
+                format!("{unit} {relation} {}", vector_tex(problem, axis)),
+                "",
+            ))
         })
         .collect()
 }

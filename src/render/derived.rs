@@ -25,10 +25,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let derivation = &worked.derivation;
     let problem = derivation.model.problem;
     let model = &derivation.model;
-    (solution.constraints, solution.constraint_notes) = super::constrained::constraints(derivation);
     solution.plan = plan(derivation);
-    // Steps 2 to 5 write sines and cosines of the coordinates as s_1, c_12, listed once at
-    // the start of step 2.
+    // The constraints of step 1 and steps 2 to 5 write sines and cosines of the coordinates
+    // as s_1, c_12, listed once where they are first used.
     let names: Vec<&str> = problem
         .coordinates
         .iter()
@@ -36,6 +35,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     let style = super::build::style_of(problem).with_coordinates(&names);
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
+        (solution.constraints, solution.constraint_notes) =
+            super::constrained::constraints(derivation);
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.force_definitions = super::where_list::grouped(force_definitions(derivation));
         let by_partials;

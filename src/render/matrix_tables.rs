@@ -160,11 +160,7 @@ fn array(labels: &[String], x: &[String], a: &[Vec<String>], b: Option<&[String]
     };
     for (i, row) in a.iter().enumerate() {
         let b_entry = b.map_or(String::new(), |b| cells(&b[i..=i]));
-        table.push_str(&format!(
-            " {} {}{b_entry}\\\\",
-            labels[i],
-            cells(row)
-        ));
+        table.push_str(&format!(" {} {}{b_entry}\\\\", labels[i], cells(row)));
     }
     table.push_str(" \\end{array}");
     table
