@@ -153,8 +153,8 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
     Some(Vector::new(body, components))
 }
 
-/// How many symbols a line of a display holds (see `line_break`).
-const LINE: usize = 70;
+/// How many symbols a line of a display holds.
+const LINE: usize = super::line_break::LINE_SYMBOLS as usize;
 
 /// A long acceleration as Kane writes it, `Σ_r ᴺv_r q̈_r + ᴺã`: the q̈ coefficients are the
 /// partial velocities the velocity above is written with (∂a/∂q̈_r = ∂v/∂q̇_r), so only the
