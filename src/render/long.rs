@@ -234,8 +234,9 @@ pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [Equa
 /// The constraint rows say once, at the first, that they are differentiated to the
 /// acceleration level: repeated on every heading it would take a line of its own.
 pub fn say_the_acceleration_level_once(views: &mut [EquationView]) {
-    const LEVEL: &str = "(differentiated to the acceleration level)";
-    let mut rows = views.iter_mut().filter(|v| v.label == LEVEL);
+    let mut rows = views
+        .iter_mut()
+        .filter(|v| v.label == super::row_view::ACCELERATION_LEVEL);
     let Some(first) = rows.next() else {
         return;
     };

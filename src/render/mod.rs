@@ -32,6 +32,7 @@ mod plan_table;
 pub mod plot;
 mod prepare;
 pub mod rejected;
+pub mod row_view;
 pub mod safe_math;
 pub mod sample;
 pub mod simulation;

@@ -1,0 +1,151 @@
+//! Step 5: one row as the worked solution writes it: as formed (the Motion Law's groups, or
+//! Kane's F_r and F*_r), then simplified, with its heading.
+
+use super::context::Equation as EquationView;
+use super::derived::{bodies_name, initial_sign, unknowns_tex, uses_shown};
+use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
+use crate::equations::Derivation;
+use crate::plan::rows::{Equation, Sum};
+use crate::symbolic::collect::latex_collected;
+use crate::symbolic::named::as_shown;
+use crate::symbolic::print::latex;
+use crate::symbolic::roots::roots_of_squares;
+use crate::symbolic::simplify::simplify;
+use crate::symbolic::{Expr, Symbol};
+
+/// What a constraint row's heading adds: the row is the constraint differentiated.
+pub const ACCELERATION_LEVEL: &str = "(differentiated to the acceleration level)";
+
+fn group_tex(e: &Expr) -> String {
+    if e.is_zero() {
+        return "0".into();
+    }
+    let text = latex(e);
+    if e.terms().len() > 1 {
+        format!("\\left[{text}\\right]")
+    } else {
+        text
+    }
+}
+
+/// Step 5: one row, grouped as the Motion Law groups it and simplified.
+pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
+    let problem = derivation.model.problem;
+    let sign = initial_sign(&derivation.model);
+    let shown = |e: &Expr| {
+        let e = if uses_shown(derivation) {
+            as_shown(e)
+        } else {
+            e.clone()
+        };
+        roots_of_squares(&e, &sign)
+    };
+    let g = &row.groups;
+    let g = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].map(shown);
+    // Contact + distance + inertia forces + inertia torques, leaving out the empty groups;
+    // a long inertia group by the names of step 4; a force group with the identities
+    // (sin² + cos² = 1) applied when that is shorter, as the simplified row has them.
+    let mut grouped = String::new();
+    for (k, e) in g.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
+        let inertia = k >= 2;
+        let mut written = group_tex(e);
+        if !inertia {
+            let simpler = group_tex(&simplify(e));
+            if simpler.len() < written.len() {
+                written = simpler;
+            }
+        }
+        let named = (inertia && e.terms().len() > MOST_INERTIA_TERMS)
+            .then(|| named_inertia_group(derivation, row, k == 3))
+            .flatten()
+            .filter(|named| named.len() < written.len());
+        let text = named.unwrap_or(written);
+        match (grouped.is_empty(), text.strip_prefix('-')) {
+            (true, _) => grouped = text,
+            (false, Some(rest)) => grouped.push_str(&format!(" - {rest}")),
+            (false, None) => grouped.push_str(&format!(" + {text}")),
+        }
+    }
+    if grouped.is_empty() {
+        grouped = "0".into();
+    }
+    let mut grouped_tex = format!("{grouped} = 0");
+    let mut simplified_tex = format!(
+        "{} = 0",
+        latex_collected(&shown(&simplify(&row.expression)))
+    );
+    let mut simplified_note = String::new();
+    let mut by_name = false;
+    let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
+    if simplified_tex.len() > LONG_EQUATION {
+        // Too long to read: the same row with the coefficients of the matrix form by name.
+        if let Some(i) = index {
+            simplified_tex = coefficient_form(derivation, i);
+            simplified_note = "With the coefficients of the matrix form below:".into();
+            by_name = true;
+        }
+    }
+    if grouped_tex.len() > LONG_EQUATION {
+        // Too long as formed: the same sum in vector form, in the quantities of steps 2 and 4.
+        grouped_tex = super::long::vector_form(derivation, row);
+    }
+    let mut label_tex = index
+        .map(|i| super::matrix::row_heading_tex(derivation, i))
+        .unwrap_or_default();
+    let mut label = if matches!(row.sum, Sum::Constraint { .. }) {
+        ACCELERATION_LEVEL.to_string()
+    } else {
+        String::new()
+    };
+    let (mut active_tex, mut inertia_tex) = (String::new(), String::new());
+    if let (Sum::Generalized { .. }, Some(r)) = (&row.sum, super::kane::row_number(derivation, row))
+    {
+        // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
+        (active_tex, inertia_tex) =
+            super::kane::generalized_forces(&row.groups, r, !by_name, shown);
+        grouped_tex = String::new();
+        (label_tex, label) = if r <= problem.coordinates.len() {
+            (
+                format!(
+                    "r = {r}\\colon\\; {}",
+                    super::kane::speed_tex(derivation, r - 1)
+                ),
+                "(a generalized speed)".to_string(),
+            )
+        } else {
+            let reactions: Vec<Symbol> = row
+                .unknowns
+                .iter()
+                .filter(|u| matches!(u, Symbol::Unknown(_)))
+                .cloned()
+                .collect();
+            (
+                format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&reactions)),
+                format!(
+                    "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
+                    bodies_name(problem, &row.free_body)
+                ),
+            )
+        };
+    }
+    if matches!(row.sum, Sum::Constraint { .. }) && !by_name {
+        // A constraint differentiated is one sum with no groups: as formed it is the
+        // simplified row in another order, so it is written once.
+        grouped_tex.clear();
+    }
+    if grouped_tex == simplified_tex && simplified_note.is_empty() {
+        // Formed already in its simplest form: written once.
+        grouped_tex.clear();
+        simplified_note = "As formed, already simplified:".into();
+    }
+    EquationView {
+        label,
+        label_tex,
+        grouped_tex,
+        simplified_tex,
+        simplified_note,
+        by_name,
+        active_tex,
+        inertia_tex,
+    }
+}
