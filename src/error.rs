@@ -29,7 +29,7 @@ pub enum Error {
         method: crate::equations::Method,
     },
     /// Some problems of a directory failed (`explain DIR`); the others were written.
-    Batch(crate::cmd::explain::BatchError),
+    Batch(BatchError),
 }
 
 impl Error {
@@ -102,6 +102,15 @@ impl std::error::Error for Error {
     }
 }
 
+impl From<crate::problem::LoadError> for Error {
+    fn from(error: crate::problem::LoadError) -> Self {
+        match error {
+            crate::problem::LoadError::Io { path, source } => Error::Io { path, source },
+            crate::problem::LoadError::Invalid(errors) => Error::Problem(errors),
+        }
+    }
+}
+
 impl From<crate::problem::ProblemErrors> for Error {
     fn from(e: crate::problem::ProblemErrors) -> Self {
         Error::Problem(e)
@@ -163,3 +172,34 @@ mod tests {
         assert_eq!(usage.one_line(), "no");
     }
 }
+
+/// Some problems of a directory failed; the others were written.
+#[derive(Debug)]
+pub struct BatchError {
+    /// The problem files that failed, with their errors.
+    pub failures: Vec<(PathBuf, String)>,
+    /// How many problems there were.
+    pub total: usize,
+}
+
+impl fmt::Display for BatchError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} of {} problems failed:",
+            self.failures.len(),
+            self.total
+        )?;
+        for (path, error) in &self.failures {
+            write!(
+                f,
+                "\n  {}: {}",
+                path.display(),
+                error.replace('\n', "\n    ")
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for BatchError {}

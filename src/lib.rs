@@ -45,4 +45,4 @@ pub mod problem;
 pub mod render;
 pub mod symbolic;
 
-pub use error::Error;
+pub use error::{BatchError, Error};

@@ -33,7 +33,7 @@ use std::cell::RefCell;
 /// # Errors
 /// An unreadable file, or every error of an invalid problem with its path and hint.
 pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
-    crate::problem::load_file(path)
+    Ok(crate::problem::load_file(path)?)
 }
 
 /// Derives the equations of `problem` by `method`, in their most compact form, for
@@ -328,7 +328,7 @@ impl System for Solver<'_> {
 /// [`Solver`]: where the Motion Law's plan is singular at the state, the state matrix comes
 /// from a plan made for it.
 pub struct Linearizer {
-    linear: linearize::Linearizer,
+    linear: linearize::ModalAnalysis,
     jacobians: Plans<linearize::Jacobian>,
 }
 
@@ -339,7 +339,7 @@ impl Linearizer {
     /// When the equations have no derivative (`min`, `max` of something that changes).
     pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
         Ok(Linearizer {
-            linear: linearize::Linearizer::new(derivation)?,
+            linear: linearize::ModalAnalysis::new(derivation)?,
             jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)?),
         })
     }
@@ -370,6 +370,6 @@ impl Linearizer {
             |d| linearize::jacobian_of(d).ok(),
             |jacobian| jacobian.at(problem, t, &q, &rates),
         )?;
-        self.linear.at(problem, t, &q, &rates, state)
+        Ok(self.linear.at(problem, t, &q, &rates, state)?)
     }
 }

@@ -5,9 +5,9 @@ use crate::cli::Common;
 use crate::output::write_output;
 use crate::pipeline;
 use crate::render::{self, Format, Solution};
+use crate::error::BatchError;
 use crate::Error;
 use clap::ValueEnum;
-use std::fmt;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
@@ -69,37 +69,6 @@ pub struct Args {
     #[arg(long)]
     pub verbose: bool,
 }
-
-/// Some problems of a directory failed; the others were written.
-#[derive(Debug)]
-pub struct BatchError {
-    /// The problem files that failed, with their errors.
-    pub failures: Vec<(PathBuf, String)>,
-    /// How many problems there were.
-    pub total: usize,
-}
-
-impl fmt::Display for BatchError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} of {} problems failed:",
-            self.failures.len(),
-            self.total
-        )?;
-        for (path, error) in &self.failures {
-            write!(
-                f,
-                "\n  {}: {}",
-                path.display(),
-                error.replace('\n', "\n    ")
-            )?;
-        }
-        Ok(())
-    }
-}
-
-impl std::error::Error for BatchError {}
 
 /// Runs `mbd-tutor explain`.
 ///

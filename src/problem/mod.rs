@@ -166,13 +166,42 @@ fn name_joints(errors: &mut [ProblemError], value: &serde_json::Value) {
     }
 }
 
+/// Why a problem file could not be loaded.
+#[derive(Debug)]
+pub enum LoadError {
+    /// The file could not be read.
+    Io {
+        path: std::path::PathBuf,
+        source: std::io::Error,
+    },
+    /// The file is not UTF-8 text, not JSON, or not a valid problem.
+    Invalid(ProblemErrors),
+}
+
+impl std::fmt::Display for LoadError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            LoadError::Io { path, source } => write!(f, "{}: {source}", path.display()),
+            LoadError::Invalid(errors) => write!(f, "{errors}"),
+        }
+    }
+}
+
+impl std::error::Error for LoadError {}
+
+impl From<ProblemErrors> for LoadError {
+    fn from(errors: ProblemErrors) -> Self {
+        LoadError::Invalid(errors)
+    }
+}
+
 /// Reads and validates the problem in the file at `path`.
 ///
 /// # Errors
-/// [`crate::Error::Io`] when the file cannot be read; [`crate::Error::Problem`] when it is
-/// not UTF-8 text, not JSON, or not a valid problem.
-pub fn load_file(path: &Path) -> Result<Problem, crate::Error> {
-    let bytes = std::fs::read(path).map_err(|source| crate::Error::Io {
+/// [`LoadError::Io`] when the file cannot be read; [`LoadError::Invalid`] when it is not
+/// UTF-8 text, not JSON, or not a valid problem.
+pub fn load_file(path: &Path) -> Result<Problem, LoadError> {
+    let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
         path: path.to_path_buf(),
         source,
     })?;

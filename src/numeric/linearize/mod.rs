@@ -11,19 +11,20 @@ use crate::equations::{kane, Derivation, Method};
 use crate::numeric::assemble::Assembly;
 use crate::numeric::reduce::Reducer;
 use crate::numeric::SolveError;
+use crate::mechanics::MechanicsError;
 use crate::problem::Problem;
-use crate::Error;
 use jacobian::{input_values, state_text, variable_name, LinearModel, Matrices, SecondOrder};
 pub use jacobian::{Jacobian, StateMatrix};
 use modes::{Eigen, Mode};
 use nalgebra::DMatrix;
 
-/// The compiled linearization of one problem by one method, for any state and any values
-/// of the constants, apart from the state matrix of its equations: that comes from a
+/// What the linearization of one problem by one method makes of a state matrix, for any
+/// state and any values of the constants: a constrained system reduced to its independent
+/// variables, the eigenvalues and modes, and M, C, K. The state matrix itself comes from a
 /// [`Jacobian`] of the plan that suits the state, which the pipeline chooses
 /// (`pipeline::Linearizer`), planning again where the first plan is singular.
 #[derive(Clone, Debug)]
-pub struct Linearizer {
+pub struct ModalAnalysis {
     method: Method,
     /// The state variables' names as printed (`q1`, `q1'`), whatever the plan.
     variables: Vec<String>,
@@ -38,9 +39,9 @@ pub struct Linearizer {
 ///
 /// # Errors
 /// When an entry has no derivative (`min`, `max` of something that changes).
-pub fn jacobian_of(derivation: &Derivation) -> Result<Jacobian, Error> {
+pub fn jacobian_of(derivation: &Derivation) -> Result<Jacobian, MechanicsError> {
     let model = LinearModel::unconstrained(derivation.model.problem, &derivation.system);
-    Ok(Jacobian::new(&model)?)
+    Jacobian::new(&model)
 }
 
 impl Jacobian {
@@ -84,13 +85,13 @@ pub struct Linearization {
     pub matrices: Option<Matrices>,
 }
 
-impl Linearizer {
+impl ModalAnalysis {
     /// Differentiates and compiles what the linearization needs besides the state matrix:
     /// M, C and K (Kane's rows without reactions), or the reduction of a constrained system.
     ///
     /// # Errors
     /// When the equations have no derivative.
-    pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
+    pub fn new(derivation: &Derivation) -> Result<ModalAnalysis, MechanicsError> {
         let problem = derivation.model.problem;
         let mut variables: Vec<String> = (0..problem.coordinates.len())
             .map(|i| variable_name(&problem.coordinate_symbol(i, 0)))
@@ -99,7 +100,7 @@ impl Linearizer {
             (0..problem.coordinates.len()).map(|i| variable_name(&problem.coordinate_symbol(i, 1))),
         );
         if let Some(assembly) = Assembly::new(&derivation.model) {
-            return Ok(Linearizer {
+            return Ok(ModalAnalysis {
                 method: derivation.method,
                 variables,
                 second_order: None,
@@ -121,7 +122,7 @@ impl Linearizer {
         .map(|row| row.expression)
         .collect();
         let second_order = SecondOrder::new(problem, &rows)?;
-        Ok(Linearizer {
+        Ok(ModalAnalysis {
             method: derivation.method,
             variables,
             second_order: Some(second_order),
@@ -155,7 +156,7 @@ impl Linearizer {
     }
 
     /// The linearization about the state `t`, `q`, `rates` (assembled, see
-    /// [`Linearizer::assemble`]), with the constants of `problem` (the problem this was
+    /// [`ModalAnalysis::assemble`]), with the constants of `problem` (the problem this was
     /// built from, up to the values of its constants), given the state matrix of its
     /// equations there.
     ///
@@ -168,7 +169,7 @@ impl Linearizer {
         q: &[f64],
         rates: &[f64],
         state: StateMatrix,
-    ) -> Result<Linearization, Error> {
+    ) -> Result<Linearization, SolveError> {
         let inputs = input_values(problem, t, q, rates);
         let describe = || state_text(problem, t, q, rates);
         let n = problem.coordinates.len();
