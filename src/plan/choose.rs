@@ -387,8 +387,12 @@ impl Planner<'_, '_> {
             let reason = match (duplicate, failed.get(&r)) {
                 (Some(row), _) => Reason::Duplicate { row },
                 (None, Some(Fails::At(kind))) => Reason::SingularAt(*kind),
-                (None, Some(Fails::Everywhere)) => Reason::Redundant,
-                (None, None) => Reason::NotNeeded,
+                (None, Some(Fails::Everywhere)) => Reason::Redundant {
+                    rows: follows_from(&chosen, row, &kinds),
+                },
+                (None, None) => Reason::NotNeeded {
+                    rows: follows_from(&chosen, row, &kinds),
+                },
             };
             let candidate = candidates[index].clone();
             rejected.push((index, Rejected { candidate, reason }));
@@ -407,6 +411,34 @@ impl Planner<'_, '_> {
 }
 
 /// Whether two rows of coefficients are multiples of each other at every state.
+/// The chosen rows (as indices of `chosen`) of which `row` is a combination, read at the
+/// first generic state; empty when that cannot be told (it follows from them only on the
+/// unknowns of a block).
+fn follows_from(chosen: &[&Row], row: &Row, kinds: &[Kind]) -> Vec<usize> {
+    let Some(state) = kinds.iter().position(Option::is_none) else {
+        return Vec::new();
+    };
+    let target = nalgebra::DVector::from_column_slice(&row.coefficients[state]);
+    let columns: Vec<nalgebra::DVector<f64>> = chosen
+        .iter()
+        .map(|c| nalgebra::DVector::from_column_slice(&c.coefficients[state]))
+        .collect();
+    if columns.is_empty() || target.norm() == 0.0 {
+        return Vec::new();
+    }
+    let basis = nalgebra::DMatrix::from_columns(&columns);
+    let Ok(weights) = basis.clone().svd(true, true).solve(&target, 1e-12) else {
+        return Vec::new();
+    };
+    let scale = target.norm();
+    if (&basis * &weights - &target).norm() > 1e-8 * scale {
+        return Vec::new();
+    }
+    (0..columns.len())
+        .filter(|&i| (weights[i] * columns[i].norm()).abs() > 1e-8 * scale)
+        .collect()
+}
+
 fn parallel(a: &[Vec<f64>], b: &[Vec<f64>]) -> bool {
     a.iter().zip(b).all(|(a, b)| {
         let dot: f64 = a.iter().zip(b).map(|(x, y)| x * y).sum();

@@ -38,13 +38,20 @@ pub enum Reason {
         /// The chosen row, as an index of the plan's rows.
         row: usize,
     },
-    /// It adds no new equation: it follows from the rows chosen before it.
-    Redundant,
+    /// It adds no new equation: it follows from the rows chosen.
+    Redundant {
+        /// The chosen rows it is a combination of, as indices of the plan's rows; empty
+        /// when it follows from them only on the unknowns of a block.
+        rows: Vec<usize>,
+    },
     /// It would add a new equation at generic states, but not at a special one, where the
     /// plan would become singular.
     SingularAt(SpecialState),
     /// The rows chosen already determine every unknown.
-    NotNeeded,
+    NotNeeded {
+        /// The chosen rows it is a combination of, as indices of the plan's rows.
+        rows: Vec<usize>,
+    },
 }
 
 /// A candidate the planner did not use, and why.
@@ -77,9 +84,11 @@ pub const SHOWN: usize = 4;
 
 /// The few rejected candidates worth showing a student, as indices of `rejected`, in its
 /// order: the natural first choices that fail (moments of one body about its own joint,
-/// which bring in a reaction not asked for), a row that would make the plan singular at a
-/// special state, and, when that leaves fewer than two, a row that adds nothing new and
-/// one that says the same as a chosen row.
+/// which bring in a reaction not asked for) and, when that leaves fewer than two, a row
+/// that adds nothing new, one that says the same as a chosen row, and one that the rows
+/// chosen make unnecessary. A row left out only
+/// because the plan would fail at a special state (every coordinate 0) teaches nothing
+/// about choosing equations, so it is listed only by `explain --verbose`.
 pub fn highlights(model: &Model, rejected: &[Rejected]) -> Vec<usize> {
     let mut shown: Vec<usize> = Vec::new();
     // The natural first choice for each body: moments about the joint that holds it, along
@@ -107,15 +116,14 @@ pub fn highlights(model: &Model, rejected: &[Rejected]) -> Vec<usize> {
         }
     }
     shown.truncate(SHOWN - 1);
-    if let Some(i) = (0..rejected.len())
-        .find(|&i| matches!(rejected[i].reason, Reason::SingularAt(_)) && !shown.contains(&i))
-    {
-        shown.push(i);
-    }
     // With nothing else to show, a row that adds nothing new, and one that says the same
     // as a chosen row: the first of each, in candidate order.
     if shown.len() < 2 {
-        for wanted in [Reason::Redundant, Reason::Duplicate { row: 0 }] {
+        for wanted in [
+            Reason::Redundant { rows: Vec::new() },
+            Reason::Duplicate { row: 0 },
+            Reason::NotNeeded { rows: Vec::new() },
+        ] {
             let same = |r: &Reason| std::mem::discriminant(r) == std::mem::discriminant(&wanted);
             if let Some(i) = (0..rejected.len()).find(|&i| same(&rejected[i].reason)) {
                 if shown.len() < SHOWN && !shown.contains(&i) {

@@ -30,7 +30,8 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
             (
                 format!("brings in {place}"),
                 tex.join(", "),
-                ", which is not asked for".to_string(),
+                if names.len() > 1 { ", which are not asked for" } else { ", which is not asked for" }
+                    .to_string(),
             )
         }
         Reason::NoUnknown => plain("contains none of the unknowns"),
@@ -42,17 +43,23 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         Reason::Duplicate { row } => {
             plain(&format!("says the same as row {} of the plan", row + 1))
         }
-        Reason::Redundant => plain("adds nothing new: it follows from the rows chosen"),
+        Reason::Redundant { rows } | Reason::NotNeeded { rows } => plain(&match rows.as_slice() {
+            [] if matches!(rejected.reason, Reason::NotNeeded { .. }) => {
+                "not needed: the rows chosen already determine every unknown".to_string()
+            }
+            [] => "adds nothing new: it follows from the rows chosen".to_string(),
+            [one] => format!("adds nothing that row {} does not already say", one + 1),
+            _ => format!("adds nothing that rows {} do not already say", row_list(rows)),
+        }),
         Reason::SingularAt(state) => plain(&format!(
-            "would make the plan singular {}, though it is independent at most states",
+            "not needed: the rows chosen determine every unknown, {}",
             match state {
-                SpecialState::Initial => "at the initial state",
-                SpecialState::Requested => "at the state asked for",
-                SpecialState::AllZero => "where every coordinate is 0",
-                SpecialState::QuarterTurn => "where every coordinate is π/2",
+                SpecialState::Initial => "at the initial state too",
+                SpecialState::Requested => "at the state asked for too",
+                SpecialState::AllZero => "also where every coordinate is 0",
+                SpecialState::QuarterTurn => "also where every coordinate is π/2",
             }
         )),
-        Reason::NotNeeded => plain("not needed: the rows chosen already determine every unknown"),
     };
     RejectedView {
         free_body_tex: super::derived::bodies_tex(derivation, &candidate.free_body),
@@ -61,6 +68,31 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         reason,
         reason_tex,
         reason_after,
+    }
+}
+
+/// Plan rows (indices from 0) as a sentence names them, from 1, a run of three or more by
+/// its ends: `1, 2 and 4`, `1 to 6`.
+fn row_list(rows: &[usize]) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < rows.len() {
+        let run = rows[i..]
+            .windows(2)
+            .take_while(|w| w[1] == w[0] + 1)
+            .count()
+            + 1;
+        if run >= 3 {
+            parts.push(format!("{} to {}", rows[i] + 1, rows[i + run - 1] + 1));
+            i += run;
+        } else {
+            parts.push((rows[i] + 1).to_string());
+            i += 1;
+        }
+    }
+    match parts.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => parts.concat(),
     }
 }
 
@@ -103,4 +135,18 @@ pub fn order_note(derivation: &Derivation) -> String {
         "The equations can be solved in order, a few unknowns at a time: {}.",
         parts.join(", then ")
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::row_list;
+
+    #[test]
+    fn rows_are_named_from_one_with_runs_by_their_ends() {
+        assert_eq!(row_list(&[2]), "3");
+        assert_eq!(row_list(&[2, 3]), "3 and 4");
+        assert_eq!(row_list(&[0, 1, 5, 6]), "1, 2, 6 and 7");
+        assert_eq!(row_list(&[0, 1, 2, 3, 4, 5]), "1 to 6");
+        assert_eq!(row_list(&[0, 2, 3, 4, 7]), "1, 3 to 5 and 8");
+    }
 }
