@@ -424,16 +424,22 @@ fn decimals_the_problem_writes_stay_decimals() {
 }
 
 #[test]
-fn a_chain_link_moves_with_its_parents_mass_centre() {
+fn a_chain_link_moves_with_its_pin_and_the_pin_with_the_one_before() {
     let markdown = explain("validation/ten-link-chain", "markdown");
-    // By hand: link6 hangs along -y of its frame from its joint, so from link6* to the joint
-    // P7 is -(L/2) ŷ6 and from P7 to link7* is -(L/2) ŷ7. With ω6 = (q̇1 + … + q̇6) ẑ,
-    // ω6 × (-(L/2) ŷ6) = (L/2)(q̇1 + … + q̇6) x̂6, and likewise for link7.
-    let expected = "{}^{N}\\mathbf{v}^{\\mathrm{link}_{7}^*} = {}^{N}\\mathbf{v}^{\\mathrm{link}_{6}^*} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{6}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{6}} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{7}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}";
-    assert!(
-        markdown.lines().any(|l| l.trim() == expected),
-        "no line reads {expected}"
-    );
+    // By hand: link6 hangs along -y of its frame from its joint P6, P7 a length L further,
+    // so r^{P6P7} = -L ŷ6 and, with ω6 = (q̇1 + … + q̇6) ẑ, ω6 × r = L (q̇1 + … + q̇6) x̂6;
+    // from P7 to link7* is -(L/2) ŷ7, so ω7 × r = (L/2)(q̇1 + … + q̇7) x̂7. The pin's
+    // acceleration adds α6 × r = L (q̈1 + … + q̈6) x̂6 and -ω6² r = L (q̇1 + … + q̇6)² ŷ6.
+    for expected in [
+        "{}^{N}\\mathbf{v}^{P_{7}} = {}^{N}\\mathbf{v}^{P_{6}} + L \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{6}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{6}}",
+        "{}^{N}\\mathbf{a}^{P_{7}} = {}^{N}\\mathbf{a}^{P_{6}} + L \\left(\\ddot{q}_{1} + \\cdots + \\ddot{q}_{6}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{6}} + L \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{6}\\right)^{2} \\hat{\\mathbf{y}}_{\\mathrm{link}_{6}}",
+        "{}^{N}\\mathbf{v}^{\\mathrm{link}_{7}^*} = {}^{N}\\mathbf{v}^{P_{7}} + \\frac{L}{2} \\left(\\dot{q}_{1} + \\cdots + \\dot{q}_{7}\\right) \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}",
+    ] {
+        assert!(
+            markdown.lines().any(|l| l.trim() == expected),
+            "no line reads {expected}"
+        );
+    }
     // The free body of all ten links lists gravity once, for a link k: -m_k g n̂_y.
     assert!(markdown.contains(
         "| distance: gravity on each body k | $-m_{k}\\, g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } k^*,\\; k \\in \\{\\mathrm{link}_{1}, "
@@ -815,4 +821,21 @@ fn a_moment_about_a_bodys_own_mass_centre_has_no_moment_of_its_inertia_force() {
     let row = "\\hat{\\mathbf{h}}_{y} \\cdot \\left( \\sum \\mathbf{M}_{H^{*}} - \\left( \\boldsymbol{\\alpha}^{H} \\cdot \\mathbf{I}^{H} + \\boldsymbol{\\omega}^{H} \\times \\mathbf{I}^{H} \\cdot \\boldsymbol{\\omega}^{H} \\right) \\right) = 0";
     assert!(markdown.contains(row), "no {row}");
     assert!(!markdown.contains("\\mathbf{r}^{H^{*} H^*}"));
+}
+
+#[test]
+fn the_double_pendulums_second_rod_moves_with_its_pin() {
+    let markdown = explain("double-pendulum-rods", "markdown");
+    // By hand: the pin P is L1 along -â_y from O, so v^P = ω^A × r^{OP} = L1 q̇1 â_x and
+    // a^P = L1 q̈1 â_x + L1 q̇1² â_y; B* is L2/2 along -b̂_y from P, so
+    // v^{B*} = v^P + (L2/2)(q̇1 + q̇2) b̂_x, never v^{A*} + … .
+    let pin = "{}^{N}\\mathbf{v}^{P} = L_{1} \\dot{q}_{1} \\hat{\\mathbf{a}}_{x}, \\qquad {}^{N}\\mathbf{a}^{P} = L_{1} \\ddot{q}_{1} \\hat{\\mathbf{a}}_{x} + L_{1} \\dot{q}_{1}^{2} \\hat{\\mathbf{a}}_{y}";
+    let center = "{}^{N}\\mathbf{v}^{B^*} = {}^{N}\\mathbf{v}^{P} + \\frac{L_{2}}{2} \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right) \\hat{\\mathbf{b}}_{x}";
+    for expected in [pin, center] {
+        assert!(
+            markdown.lines().any(|l| l.trim() == expected),
+            "no line reads {expected}"
+        );
+    }
+    assert!(!markdown.contains("\\mathbf{v}^{B^*} = {}^{N}\\mathbf{v}^{A^*}"));
 }

@@ -335,6 +335,10 @@ pub struct Kinematics {
     pub omega_tex: String,
     /// Its angular acceleration in N.
     pub alpha_tex: String,
+    /// The velocity of the pin that holds it to a moving parent, in N (empty without one).
+    pub pin_velocity_tex: String,
+    /// The acceleration of that pin in N (empty when it shares the velocity's display).
+    pub pin_acceleration_tex: String,
     /// The velocity of its mass center in N.
     pub velocity_tex: String,
     /// The acceleration of its mass center in N.

@@ -52,8 +52,11 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                 &inertia.acceleration[body.0],
                 body,
             );
-            let mut acceleration =
-                from_parent(model, body, Motion::Acceleration, direct_acceleration);
+            let pin = pin_of(model, body);
+            let mut acceleration = match pin {
+                Some(site) => from_pin(model, body, site, Motion::Acceleration, direct_acceleration),
+                None => from_parent(model, body, Motion::Acceleration, direct_acceleration),
+            };
             // Written out over lines, the acceleration repeats the velocity's coefficients;
             // by the rule it is one line when its rest is named.
             if partials.is_some() && printed_width(&acceleration) > LINE {
@@ -73,17 +76,27 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                     shorter(&state.alpha, &inertia.alpha[body.0], body)
                 ),
             );
+            let velocity = match pin {
+                Some(site) => from_pin(model, body, site, Motion::Velocity, direct_velocity),
+                None => from_parent(model, body, Motion::Velocity, direct_velocity),
+            };
             let (velocity_tex, acceleration_tex) = one_line_if_short(
-                format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {}",
-                    from_parent(model, body, Motion::Velocity, direct_velocity)
-                ),
+                format!("{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {velocity}"),
                 format!("{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {acceleration}"),
             );
+            let (pin_velocity_tex, pin_acceleration_tex) = match pin {
+                Some(site) => one_line_if_short(
+                    pin_line(model, site, Motion::Velocity),
+                    pin_line(model, site, Motion::Acceleration),
+                ),
+                None => (String::new(), String::new()),
+            };
             Kinematics {
                 body: name.to_string(),
                 omega_tex,
                 alpha_tex,
+                pin_velocity_tex,
+                pin_acceleration_tex,
                 velocity_tex,
                 acceleration_tex,
             }
@@ -216,23 +229,128 @@ fn from_parent(model: &Model, body: BodyId, motion: Motion, direct: String) -> S
         },
         latex_name(model.problem.body_name(parent)),
     );
-    let mut text = format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{parent_name}^*}}");
-    if !difference.is_zero() {
-        // (L/2)(q̇1 + … + q̇6) as a textbook writes it.
-        let rest = vector_tex_by(model, &difference, |c, unit| {
-            let (common, inner) = pull_common_factor(c);
-            if c.terms().len() > 1 && !common.is_one() {
-                factored(&common, &inner, unit)
-            } else {
-                component_term(c, unit)
-            }
-        });
-        match rest.strip_prefix('-') {
-            Some(negative) => text.push_str(&format!(" - {negative}")),
-            None => text.push_str(&format!(" + {rest}")),
-        }
-    }
+    let text = plus_difference(
+        model,
+        format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{parent_name}^*}}"),
+        &difference,
+    );
     if text.len() < direct.len() {
+        text
+    } else {
+        direct
+    }
+}
+
+/// `reference + difference`, the difference written component by component in its own unit
+/// vectors with a common factor out, `(L/2)(q̇1 + … + q̇6) x̂6`, as a textbook writes it.
+fn plus_difference(model: &Model, reference: String, difference: &Vector) -> String {
+    let mut text = reference;
+    if difference.is_zero() {
+        return text;
+    }
+    let rest = vector_tex_by(model, difference, |c, unit| {
+        let (common, inner) = pull_common_factor(c);
+        if c.terms().len() > 1 && !common.is_one() {
+            factored(&common, &inner, unit)
+        } else {
+            component_term(c, unit)
+        }
+    });
+    match rest.strip_prefix('-') {
+        Some(negative) => text.push_str(&format!(" - {negative}")),
+        None => text.push_str(&format!(" + {rest}")),
+    }
+    text
+}
+
+/// The joint that holds `body` to a moving parent at a moving point fixed in both (a pin: a
+/// revolute, universal, spherical joint or a weld), as an index of `Model::sites`. Step 4
+/// goes through it as a textbook does: the pin's velocity first, then the mass centre's
+/// from the pin, `v^{B*} = v^P + ω^B × r^{PB*}`.
+fn pin_of(model: &Model, body: BodyId) -> Option<usize> {
+    use crate::mechanics::sites::SiteKind;
+    use crate::problem::JointKind;
+    let parent = model.frames.info(body).parent?;
+    if parent == BodyId::GROUND {
+        return None;
+    }
+    let site = model.sites.iter().position(|site| {
+        site.child == body
+            && matches!(site.kind, SiteKind::Joint(j) if matches!(
+                model.problem.joints[j].kind,
+                JointKind::Revolute | JointKind::Universal | JointKind::Spherical | JointKind::Weld
+            ))
+    })?;
+    // A pin that does not move (on a parent that only turns about it) is a fixed point:
+    // the mass centre's motion is written directly, as for a body pinned to the ground.
+    let still = pin_motion(model, site, Motion::Velocity)
+        .expressed_in(BodyId::GROUND, &model.frames)
+        .map(simplify)
+        .is_zero();
+    (!still).then_some(site)
+}
+
+/// The motion of the pin `site` as a point of its parent.
+fn pin_motion(model: &Model, site: usize, motion: Motion) -> Vector {
+    let site = &model.sites[site];
+    let point = model.point_on(site.parent, &site.parent_offset);
+    match motion {
+        Motion::Velocity => point.velocity,
+        Motion::Acceleration => point.acceleration,
+    }
+}
+
+/// `{}^{N}\mathbf{v}^{P}` (or `a`) for the pin `site`.
+fn pin_symbol(model: &Model, site: usize, motion: Motion) -> String {
+    let letter = match motion {
+        Motion::Velocity => "v",
+        Motion::Acceleration => "a",
+    };
+    format!(
+        "{{}}^{{N}}\\mathbf{{{letter}}}^{{{}}}",
+        latex_name(&model.sites[site].name)
+    )
+}
+
+/// The pin's velocity or acceleration: from the parent's own pin down a chain
+/// (`v^{P2} = v^{P1} + ω^A × r^{P1P2}`, written out), else as it is, whichever is shorter.
+fn pin_line(model: &Model, site: usize, motion: Motion) -> String {
+    let parent = model.sites[site].parent;
+    let own = pin_motion(model, site, motion);
+    let direct = shortest_tex(model, &own, parent);
+    let text = match pin_of(model, parent) {
+        Some(previous) => {
+            let chained = plus_difference(
+                model,
+                pin_symbol(model, previous, motion),
+                &own.minus(&pin_motion(model, previous, motion)),
+            );
+            if chained.len() < direct.len() {
+                chained
+            } else {
+                direct
+            }
+        }
+        None => direct,
+    };
+    format!("{} = {text}", pin_symbol(model, site, motion))
+}
+
+/// The mass centre's velocity or acceleration from its pin, `v^{B*} = v^P + …`, the rest
+/// written out; `direct` when that is shorter by more than half (a spatial body whose
+/// named form is far shorter).
+fn from_pin(model: &Model, body: BodyId, site: usize, motion: Motion, direct: String) -> String {
+    let center = &model.bodies[body.0].center;
+    let own = match motion {
+        Motion::Velocity => &center.velocity,
+        Motion::Acceleration => &center.acceleration,
+    };
+    let text = plus_difference(
+        model,
+        pin_symbol(model, site, motion),
+        &own.minus(&pin_motion(model, site, motion)),
+    );
+    if model.is_planar() || text.len() <= 2 * direct.len() {
         text
     } else {
         direct

@@ -261,6 +261,8 @@ fn kinematics() -> Vec<Kinematics> {
             body: s("A"),
             omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{A}} = \\dot{{q}}_{{1}} {N}_{{z}}"),
             alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{A}} = \\ddot{{q}}_{{1}} {N}_{{z}}"),
+            pin_velocity_tex: String::new(),
+            pin_acceleration_tex: String::new(),
             velocity_tex: format!("{{}}^{{N}}\\mathbf{{v}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\dot{{q}}_{{1}} {A}_{{x}}"),
             acceleration_tex: format!(
                 "{{}}^{{N}}\\mathbf{{a}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\ddot{{q}}_{{1}} {A}_{{x}} + \\frac{{L}}{{2}} \\dot{{q}}_{{1}}^{{2}} {A}_{{y}}"
@@ -270,12 +272,15 @@ fn kinematics() -> Vec<Kinematics> {
             body: s("B"),
             omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}} = {rates} {N}_{{z}}"),
             alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{B}} = {accelerations} {N}_{{z}}"),
+            pin_velocity_tex: format!(
+                "{{}}^{{N}}\\mathbf{{v}}^{{P}} = L \\dot{{q}}_{{1}} {A}_{{x}}, \\qquad {{}}^{{N}}\\mathbf{{a}}^{{P}} = L \\ddot{{q}}_{{1}} {A}_{{x}} + L \\dot{{q}}_{{1}}^{{2}} {A}_{{y}}"
+            ),
+            pin_acceleration_tex: String::new(),
             velocity_tex: format!(
-                "{{}}^{{N}}\\mathbf{{v}}^{{B^{{*}}}} = L \\dot{{q}}_{{1}} {A}_{{x}} + \\frac{{L}}{{2}} {rates} {B}_{{x}}"
+                "{{}}^{{N}}\\mathbf{{v}}^{{B^{{*}}}} = {{}}^{{N}}\\mathbf{{v}}^{{P}} + \\frac{{L}}{{2}} {rates} {B}_{{x}}"
             ),
             acceleration_tex: format!(
-                "{{}}^{{N}}\\mathbf{{a}}^{{B^{{*}}}} = L \\ddot{{q}}_{{1}} {A}_{{x}} + L \\dot{{q}}_{{1}}^{{2}} {A}_{{y}} \
-                 + \\frac{{L}}{{2}} {accelerations} {B}_{{x}} + \\frac{{L}}{{2}} {rates}^{{2}} {B}_{{y}}"
+                "{{}}^{{N}}\\mathbf{{a}}^{{B^{{*}}}} = {{}}^{{N}}\\mathbf{{a}}^{{P}} + \\frac{{L}}{{2}} {accelerations} {B}_{{x}} + \\frac{{L}}{{2}} {rates}^{{2}} {B}_{{y}}"
             ),
         },
     ]

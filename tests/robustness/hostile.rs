@@ -280,7 +280,7 @@ fn bytes_that_are_not_utf8() {
         let file = dir.join("problem.json");
         std::fs::write(&file, &bytes).expect("written");
         match load_file(&file) {
-            Err(mbd_tutor::Error::Problem(errors)) => {
+            Err(mbd_tutor::problem::LoadError::Invalid(errors)) => {
                 assert_eq!(errors.0.len(), 1, "{name}");
                 assert!(
                     errors.0[0].message.contains("not UTF-8"),
