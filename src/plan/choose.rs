@@ -235,6 +235,15 @@ impl Row {
     }
 }
 
+/// The chosen rows of which `row` is a combination, read at the first generic state.
+fn follows_from(chosen: &[&Row], row: &Row, kinds: &[Kind]) -> Vec<usize> {
+    let Some(state) = kinds.iter().position(Option::is_none) else {
+        return Vec::new();
+    };
+    let chosen: Vec<&[Vec<f64>]> = chosen.iter().map(|c| c.coefficients.as_slice()).collect();
+    super::span::combination_of(&chosen, &row.coefficients, state)
+}
+
 /// Why a row could not join a set of rows.
 enum Fails {
     /// At a generic state: it follows from them.
@@ -383,7 +392,7 @@ impl Planner<'_, '_> {
             };
             let duplicate = chosen
                 .iter()
-                .position(|c| parallel(&c.coefficients, &row.coefficients));
+                .position(|c| super::span::parallel(&c.coefficients, &row.coefficients));
             let reason = match (duplicate, failed.get(&r)) {
                 (Some(row), _) => Reason::Duplicate { row },
                 (None, Some(Fails::At(kind))) => Reason::SingularAt(*kind),
@@ -411,43 +420,6 @@ impl Planner<'_, '_> {
 }
 
 /// Whether two rows of coefficients are multiples of each other at every state.
-/// The chosen rows (as indices of `chosen`) of which `row` is a combination, read at the
-/// first generic state; empty when that cannot be told (it follows from them only on the
-/// unknowns of a block).
-fn follows_from(chosen: &[&Row], row: &Row, kinds: &[Kind]) -> Vec<usize> {
-    let Some(state) = kinds.iter().position(Option::is_none) else {
-        return Vec::new();
-    };
-    let target = nalgebra::DVector::from_column_slice(&row.coefficients[state]);
-    let columns: Vec<nalgebra::DVector<f64>> = chosen
-        .iter()
-        .map(|c| nalgebra::DVector::from_column_slice(&c.coefficients[state]))
-        .collect();
-    if columns.is_empty() || target.norm() == 0.0 {
-        return Vec::new();
-    }
-    let basis = nalgebra::DMatrix::from_columns(&columns);
-    let Ok(weights) = basis.clone().svd(true, true).solve(&target, 1e-12) else {
-        return Vec::new();
-    };
-    let scale = target.norm();
-    if (&basis * &weights - &target).norm() > 1e-8 * scale {
-        return Vec::new();
-    }
-    (0..columns.len())
-        .filter(|&i| (weights[i] * columns[i].norm()).abs() > 1e-8 * scale)
-        .collect()
-}
-
-fn parallel(a: &[Vec<f64>], b: &[Vec<f64>]) -> bool {
-    a.iter().zip(b).all(|(a, b)| {
-        let dot: f64 = a.iter().zip(b).map(|(x, y)| x * y).sum();
-        let na = a.iter().map(|x| x * x).sum::<f64>().sqrt();
-        let nb = b.iter().map(|x| x * x).sum::<f64>().sqrt();
-        na > 0.0 && nb > 0.0 && (dot.abs() - na * nb).abs() <= 1e-9 * na * nb
-    })
-}
-
 /// The old way, when no block-triangular plan exists: rows in order of preference, each
 /// kept when it adds rank at every state; the order of the candidates, the constraint rows
 /// last.

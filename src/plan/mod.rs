@@ -5,3 +5,4 @@ pub mod forces;
 pub mod planner;
 pub mod rejection;
 pub mod rows;
+mod span;
