@@ -15,6 +15,7 @@ mod kinematics;
 mod library;
 mod linearize;
 mod long_rows;
+mod massless;
 mod mathml;
 mod matrix_pattern;
 mod methods;

@@ -43,6 +43,7 @@ pub mod dependent;
 pub mod dot_sum;
 pub mod frames;
 pub mod joints;
+pub mod massless;
 pub mod model;
 pub mod on_parent;
 pub mod sites;
