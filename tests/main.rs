@@ -23,6 +23,7 @@ mod pipeline;
 mod planner;
 mod render;
 mod robustness;
+mod rolling_on_body;
 mod rows_as_formed;
 mod snapshots_by_problem;
 mod speeds;

@@ -139,7 +139,15 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                     sites.push(placeholder(model, sites.len()));
                 }
                 tilts.push((site.name.clone(), contact.tilt.clone()));
-                let velocity = &site.point.velocity;
+                // No slip is relative: the disc's material point at the contact moves as
+                // the material point of `on` there (at rest when `on` is N).
+                let velocity = &match site.parent {
+                    BodyId::GROUND => site.point.velocity.clone(),
+                    on => site
+                        .point
+                        .velocity
+                        .minus(&model.point_on(on, &site.parent_offset).velocity),
+                };
                 let keeps_height = identically_zero(&contact.height, model);
                 if keeps_height {
                     site.reactions.pop();

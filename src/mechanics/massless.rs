@@ -58,7 +58,9 @@ pub fn check(model: &Model) -> Result<(), MechanicsError> {
             .iter()
             .any(|c| subtree.contains(&c.parent) || subtree.contains(&c.child))
             || problem.constraints.iter().any(|c| match &c.kind {
-                ConstraintKind::Rolling { body, .. } => subtree.contains(body),
+                ConstraintKind::Rolling { body, on, .. } => {
+                    subtree.contains(body) || subtree.contains(on)
+                }
                 _ => true,
             });
         if touched {

@@ -228,19 +228,22 @@ impl Reader {
                 "name the body that carries the wheel",
             );
         }
+        // The plane is fixed in `on`: `N` (the default) or a moving body, not the disc's own.
+        let mut on_id = BodyId::GROUND;
         if let Some(on) = fields.get("on") {
             let on_path = key_path(path, "on");
             if let Some(b) = self.body_ref(on, &on_path) {
-                if b != BodyId::GROUND {
+                if body.is_some_and(|own| own == b) {
                     self.diag.hint(
                         &on_path,
                         format!(
-                            "a disc rolls on a plane fixed in `N`, not on `{}`",
+                            "a disc cannot roll on its own body `{}`",
                             self.names.body_name(b)
                         ),
-                        "write \"on\": \"N\"",
+                        "name the body (or N) that carries the plane",
                     );
                 }
+                on_id = b;
             }
         }
         let radius_path = key_path(path, "radius");
@@ -280,7 +283,7 @@ impl Reader {
         });
         let normal_path = key_path(path, "normal");
         let normal = required(fields, "normal", path, &mut self.diag).and_then(|v| {
-            let normal = self.position(v, &normal_path, BodyId::GROUND, "the plane's normal")?;
+            let normal = self.position(v, &normal_path, on_id, "the plane's normal")?;
             validate::axis(&normal, &self.values, &normal_path, &mut self.diag);
             Some(normal)
         });
@@ -308,6 +311,7 @@ impl Reader {
         };
         Some(ConstraintKind::Rolling {
             body: body?,
+            on: on_id,
             radius: radius?,
             axis: axis?,
             center: center?,

@@ -308,17 +308,20 @@ pub struct Problem {
 /// Where a disc's centre is on its body.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ConstraintKind {
-    /// A thin disc on `body` rolling without slipping on a plane fixed in `N`.
+    /// A thin disc on `body` rolling without slipping on a plane fixed in `on` (`N` or a
+    /// moving body).
     Rolling {
         body: BodyId,
+        /// The body the plane is fixed in.
+        on: BodyId,
         radius: Expr,
         /// The axle, fixed in the body (as written, not yet normalized).
         axis: VectorExpr,
         /// The disc's centre.
         center: ForcePoint,
-        /// The plane's normal, fixed in `N` (as written).
+        /// The plane's normal, fixed in `on` (as written).
         normal: VectorExpr,
-        /// The plane's distance from `N.o` along the normal.
+        /// The plane's distance from `on`'s origin along the normal.
         offset: Expr,
     },
     /// `expression = 0`, of constants, coordinates and `t`.
