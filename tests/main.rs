@@ -9,6 +9,7 @@ mod compact;
 mod composite;
 mod constraints;
 mod draw;
+mod gears;
 mod invalid;
 mod kane_handout;
 mod kinematics;

@@ -184,6 +184,7 @@ impl Reader {
             };
             let kind = match kind_name {
                 "rolling" => self.rolling(fields, &path),
+                "gear" => self.gear(fields, &path),
                 "position" | "velocity" => self.general_constraint(fields, &path, kind_name),
                 other => {
                     self.diag.hint(
@@ -191,7 +192,7 @@ impl Reader {
                         format!("unknown constraint type `{other}`"),
                         super::names::suggest(
                             other,
-                            &["rolling", "position", "velocity"],
+                            &["rolling", "gear", "position", "velocity"],
                             "constraint types",
                         ),
                     );
@@ -287,24 +288,7 @@ impl Reader {
             validate::axis(&normal, &self.values, &normal_path, &mut self.diag);
             Some(normal)
         });
-        let center = match fields.get("center") {
-            Some(v)
-                if v.as_str().is_some_and(|s| {
-                    self.names.point(s.trim()).is_some()
-                        || s.trim().ends_with('*')
-                        || s.trim().ends_with(".o")
-                }) =>
-            {
-                self.named_point(v, &key_path(path, "center"), body_id)
-            }
-            Some(v) => {
-                let p = key_path(path, "center");
-                let at = self.position(v, &p, body_id, "the disc's centre")?;
-                validate::vector(&at, &self.values, &p, &mut self.diag);
-                Some(ForcePoint::Offset(at))
-            }
-            None => Some(ForcePoint::Point(PointRef::Origin(body_id))),
-        };
+        let center = self.disc_center(fields.get("center"), &key_path(path, "center"), body_id)?;
         let offset = match fields.get("offset") {
             Some(v) => self.scalar(v, &key_path(path, "offset"), Context::constant("an offset")),
             None => Some(Expr::zero()),
@@ -314,10 +298,37 @@ impl Reader {
             on: on_id,
             radius: radius?,
             axis: axis?,
-            center: center?,
+            center,
             normal: normal?,
             offset: offset?,
         })
+    }
+
+    /// A disc's centre on `body`: a point name, or a vector from its origin in its unit
+    /// vectors; missing, the origin.
+    pub(super) fn disc_center(
+        &mut self,
+        value: Option<&Value>,
+        path: &str,
+        body: BodyId,
+    ) -> Option<ForcePoint> {
+        match value {
+            Some(v)
+                if v.as_str().is_some_and(|s| {
+                    self.names.point(s.trim()).is_some()
+                        || s.trim().ends_with('*')
+                        || s.trim().ends_with(".o")
+                }) =>
+            {
+                self.named_point(v, path, body)
+            }
+            Some(v) => {
+                let at = self.position(v, path, body, "the disc's centre")?;
+                validate::vector(&at, &self.values, path, &mut self.diag);
+                Some(ForcePoint::Offset(at))
+            }
+            None => Some(ForcePoint::Point(PointRef::Origin(body))),
+        }
     }
 
     /// `A*`, `A.o` or a declared point, which must be on `body`.
@@ -477,12 +488,12 @@ impl Reader {
             let rolling = constraints[k]
                 .get("type")
                 .and_then(Value::as_str)
-                .is_some_and(|t| t == "rolling");
+                .is_some_and(|t| t == "rolling" || t == "gear");
             if !rolling {
                 self.diag.hint(
                     path,
                     format!("`{}` is a position or velocity constraint, which has no reaction to report", name.unwrap_or("")),
-                    "request joints, closures and rolling contacts",
+                    "request joints, closures, rolling contacts and gears",
                 );
                 return None;
             }

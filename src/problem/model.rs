@@ -324,6 +324,19 @@ pub enum ConstraintKind {
         /// The plane's distance from `on`'s origin along the normal.
         offset: Expr,
     },
+    /// Two discs with parallel axles rolling on each other without slipping: `body`'s disc
+    /// on `on`'s, outside it or (`internal`) inside it.
+    Gear {
+        body: BodyId,
+        radius: Expr,
+        center: ForcePoint,
+        on: BodyId,
+        on_radius: Expr,
+        on_center: ForcePoint,
+        internal: bool,
+        /// The common axle, fixed in `body` (as written); `None` in 2D (N.z).
+        axis: Option<VectorExpr>,
+    },
     /// `expression = 0`, of constants, coordinates and `t`.
     Position { expression: Expr },
     /// `expression = 0`, affine in the first rates.
