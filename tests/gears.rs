@@ -146,3 +146,34 @@ fn a_pinion_drives_its_rack_by_every_method() {
         assert_close(teeth[0], -m * r * theta_dd, 1e-9, 1.0, &what("tooth force"));
     }
 }
+
+/// The same gear pair written in 3D (axles along z, the common axle given as `B.z`) gives
+/// the planar answers.
+#[test]
+fn the_gear_pair_in_3d_agrees_with_the_plane() {
+    let mut p: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(problem("gear-pair-torque")).unwrap())
+            .unwrap();
+    p["dimension"] = 3.into();
+    p["bodies"]["A"]["inertia"] = serde_json::json!({ "xx": "IA/2", "yy": "IA/2", "zz": "IA" });
+    p["bodies"]["B"]["inertia"] = serde_json::json!({ "xx": "IB/2", "yy": "IB/2", "zz": "IB" });
+    p["constraints"][0]["axis"] = "B.z".into();
+    let dir = std::env::temp_dir().join(format!("mbd-gear-3d-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("gear-pair-3d.json");
+    std::fs::write(&path, p.to_string()).unwrap();
+    let qa_dd = T / (IA + IB * (RA / RB).powi(2));
+    for method in METHODS {
+        let s = run_json(&[
+            "solve",
+            path.to_str().unwrap(),
+            "--format",
+            "json",
+            "--method",
+            method,
+        ]);
+        let acc = s["accelerations"]["qA"].as_f64().unwrap();
+        assert_close(acc, qa_dd, 1e-9, 1.0, &format!("{method}: 3D qA''"));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

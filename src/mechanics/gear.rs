@@ -52,7 +52,15 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
         .minus(&model.position_on(on, &on_center))
         .components_in(on, frames);
     let distance = sqrt(dot3(&between, &between));
-    let inverse = pow(distance.clone(), Expr::int(-1));
+    let allowed = if *internal {
+        on_radius - radius
+    } else {
+        on_radius + radius
+    };
+    // The unit line of centres: where the distance condition holds (after assembly, and
+    // along the motion) the length is the pitch radii's sum (difference), which keeps
+    // square roots out of every row but the distance itself.
+    let inverse = pow(allowed.clone(), Expr::int(-1));
     let toward: Components = std::array::from_fn(|i| &between[i] * &inverse);
     let line = Vector::new(on, toward);
     let axle = match axis {
@@ -82,11 +90,6 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     let sign = if *internal { Expr::one() } else { -Expr::one() };
     let offset: Components =
         std::array::from_fn(|i| &body_center[i] + &(&(&sign * radius) * &line_in_body[i]));
-    let allowed = if *internal {
-        on_radius - radius
-    } else {
-        on_radius + radius
-    };
     let gap = &distance - &allowed;
     let reactions = vec![
         ReactionComponent {
