@@ -25,7 +25,7 @@ fn names_a_json_path_recognizes_paths_only() {
         "  joints[1].axis, column 3: unknown frame"
     ));
     assert!(names_a_json_path(
-        "  bodies.A.mass: the mass must be positive"
+        "  bodies.A.mass: the mass must not be negative"
     ));
     assert!(!names_a_json_path("  the file is empty"));
     assert!(!names_a_json_path("    hint: did you mean `q1`?"));
@@ -96,7 +96,7 @@ fn set_overrides_are_checked() {
     assert_eq!(negative.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&negative.stderr);
     assert!(
-        stderr.contains("bodies.A.mass: the mass must be positive"),
+        stderr.contains("bodies.A.mass: the mass must not be negative"),
         "{stderr}"
     );
     let unknown = run("mm=1");

@@ -23,8 +23,27 @@ pub fn run(args: Args) -> Result<(), Error> {
     let overrides = crate::cli::parse_assignments(&args.set)?;
     let mut problem = problem::load_file(&args.problem)?;
     problem::apply_overrides(&mut problem, &overrides)?;
+    structure(&problem)?;
     println!("{}", summary(&problem));
     Ok(())
+}
+
+/// The checks of the model's structure that `solve` makes before any number is solved
+/// for (dependent coordinates and rates against the constraints, constraints the joints
+/// already keep, a massless body that nothing fixes): the same code, through the model's
+/// construction, reported as a problem error with its path and hint.
+fn structure(problem: &Problem) -> Result<(), Error> {
+    match crate::mechanics::Model::build(problem) {
+        Ok(_) => Ok(()),
+        Err(e) => Err(Error::Problem(problem::ProblemErrors(vec![
+            problem::ProblemError {
+                path: e.path,
+                column: None,
+                message: e.message,
+                hint: e.hint,
+            },
+        ]))),
+    }
 }
 
 fn count(n: usize, one: &str, many: &str) -> String {

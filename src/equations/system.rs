@@ -281,13 +281,23 @@ pub fn derive_at<'p>(
             rows.len(),
             unknowns.len()
         );
-        if let Some(name) = massless_coordinate(&model, &actions, &inertia, &accelerations) {
-            message.push_str(&format!(
-                ": the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined"
-            ));
+        let mut path = "joints".to_string();
+        if let Some(i) = massless_coordinate(&model, &actions, &inertia, &accelerations) {
+            let name = &model.problem.coordinates[i].name;
+            match crate::mechanics::massless::massless_body_moved_by(&model, i) {
+                Some(body) => {
+                    let body = model.problem.body(body);
+                    path = format!("{}.mass", body.path);
+                    message.push_str(": ");
+                    message.push_str(&crate::mechanics::massless::undetermined(name, &body.name));
+                }
+                None => message.push_str(&format!(
+                    ": the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined"
+                )),
+            }
         }
         return Err(MechanicsError {
-            path: "joints".into(),
+            path,
             message,
             hint: Some(
                 "a coordinate may move nothing with mass, or a reaction may be undetermined".into(),
@@ -322,16 +332,14 @@ fn massless_coordinate(
     actions: &[Action],
     inertia: &Inertia,
     accelerations: &[Symbol],
-) -> Option<String> {
+) -> Option<usize> {
     let rows = super::kane::equations(model, actions, inertia, accelerations, &[]);
     let states = planner::sample_states(model);
     let coefficients: Vec<Vec<f64>> = rows
         .iter()
         .flat_map(|row| planner::coefficient_rows(row, accelerations, &states))
         .collect();
-    (0..accelerations.len())
-        .find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))
-        .map(|i| model.problem.coordinates[i].name.clone())
+    (0..accelerations.len()).find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))
 }
 
 fn assemble(rows: &[Equation], unknowns: &[Symbol]) -> Result<LinearSystem, MechanicsError> {

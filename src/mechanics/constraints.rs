@@ -130,8 +130,13 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let values = initial_values(model);
     for (k, constraint) in problem.constraints.iter().enumerate() {
         match &constraint.kind {
-            ConstraintKind::Rolling { .. } => {
-                let (mut site, contact) = contact_site(model, k)?;
+            ConstraintKind::Rolling { .. } | ConstraintKind::Gear { .. } => {
+                let gear = matches!(constraint.kind, ConstraintKind::Gear { .. });
+                let (mut site, contact) = if gear {
+                    super::gear::gear_site(model, k)?
+                } else {
+                    contact_site(model, k)?
+                };
                 let index = problem.joints.len() + problem.closures.len() + k;
                 while sites.len() < index {
                     // Keep site indices aligned with `Problem::site_name` for entries that are
@@ -139,14 +144,29 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                     sites.push(placeholder(model, sites.len()));
                 }
                 tilts.push((site.name.clone(), contact.tilt.clone()));
-                let velocity = &site.point.velocity;
+                // No slip is relative: the disc's material point at the contact moves as
+                // the material point of `on` there (at rest when `on` is N).
+                let velocity = &match site.parent {
+                    BodyId::GROUND => site.point.velocity.clone(),
+                    on => site
+                        .point
+                        .velocity
+                        .minus(&model.point_on(on, &site.parent_offset).velocity),
+                };
                 let keeps_height = identically_zero(&contact.height, model);
                 if keeps_height {
                     site.reactions.pop();
-                    dropped.push((
-                        format!("{}.height", site.name),
-                        "the joints already keep the disc on the plane, so its height constraint holds identically and the joints carry the normal load".to_string(),
-                    ));
+                    dropped.push(if gear {
+                        (
+                            format!("{}.distance", site.name),
+                            "the joints already keep the centres at the pitch radii's distance, so the distance constraint holds identically and the joints carry the push along the line of centres".to_string(),
+                        )
+                    } else {
+                        (
+                            format!("{}.height", site.name),
+                            "the joints already keep the disc on the plane, so its height constraint holds identically and the joints carry the normal load".to_string(),
+                        )
+                    });
                 }
                 for (component, reaction) in site.reactions.iter().enumerate() {
                     let is_normal = !keeps_height && component + 1 == site.reactions.len();

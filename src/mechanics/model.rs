@@ -11,7 +11,7 @@ use super::vector::{zero3, Components, Vector};
 use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
 use crate::symbolic::diff::time_derivative;
-use crate::symbolic::eval::Values;
+use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{Expr, Symbol};
 
 /// Position, velocity and acceleration of a point in `N`.
@@ -229,6 +229,7 @@ impl<'p> Model<'p> {
         let (sites, constraints) = super::constraints::build(&model)?;
         model.sites = sites;
         model.constraints = constraints;
+        super::massless::check(&model)?;
         Ok(model)
     }
 
@@ -458,6 +459,7 @@ fn body_kinematics(
         }
         Inertia::Spatial(m) => m.clone(),
     };
+    let massless = eval(&declared.mass, values) == 0.0;
     let mut state = BodyState {
         omega,
         omega_named,
@@ -465,8 +467,18 @@ fn body_kinematics(
         origin,
         center: PointMotion::default(),
         center_offset: center_offset.clone(),
-        mass: declared.mass.clone(),
-        inertia,
+        // A massless body (mass 0, validated with no inertia) carries no weight and no
+        // inertia force: written 0, its terms leave the equations and the diagrams.
+        mass: if massless {
+            Expr::zero()
+        } else {
+            declared.mass.clone()
+        },
+        inertia: if massless {
+            std::array::from_fn(|_| zero3())
+        } else {
+            inertia
+        },
     };
     state.center = rigid_point(frames, &state, body, &center_offset);
     let reactions = reaction_components(problem, joint, &motion, values);

@@ -194,6 +194,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
     let constraint = &problem.constraints[k];
     let ConstraintKind::Rolling {
         body,
+        on,
         radius,
         axis,
         center,
@@ -208,7 +209,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         });
     };
     let frames = &model.frames;
-    let body = *body;
+    let (body, on) = (*body, *on);
     let normalized = |written: &crate::problem::VectorExpr, frame: BodyId, key: &str| {
         let c = vector_of(written).components_in(frame, frames);
         let length = c
@@ -226,13 +227,14 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         let scale = pow(dot3(&c, &c), Expr::ratio(-1, 2));
         Ok(std::array::from_fn(|i| &c[i] * &scale))
     };
-    let n_in_n: Components = normalized(normal, BodyId::GROUND, "normal")?;
+    // The plane's normal, fixed in `on`, in `on`'s unit vectors.
+    let n_in_n: Components = normalized(normal, on, "normal")?;
     let a: Components = normalized(axis, body, "axis")?;
     let center_offset = match center {
         ForcePoint::Point(p) => model.locate(*p).1,
         ForcePoint::Offset(v) => vector_of(v).components_in(body, frames),
     };
-    let n_vec = Vector::new(BodyId::GROUND, n_in_n.clone());
+    let n_vec = Vector::new(on, n_in_n.clone());
     let n_in_body = n_vec.components_in(body, frames);
     // Towards the contact from the centre: -(n - (n.a) a) / |n - (n.a) a|.
     let n_dot_a = dot3(&n_in_body, &a);
@@ -246,9 +248,14 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         (std::array::from_fn(|i| &w[i] * &inverse), length)
     };
     let offset_c: Components = std::array::from_fn(|i| &center_offset[i] - &(radius * &toward[i]));
-    let center_position = model.position_on(body, &center_offset);
+    // The centre's height above the plane, measured from `on`'s origin.
+    let from_on = |position: Vector| match on {
+        BodyId::GROUND => position,
+        _ => position.minus(&model.position_on(on, &zero3())),
+    };
+    let center_position = from_on(model.position_on(body, &center_offset));
     let height = &(&center_position.dot(&n_vec, frames) - offset) - &(radius * &tilt);
-    let tangents = tangents_of(&n_in_n, planar, model);
+    let tangents = tangents_of(&n_in_n, planar, model, on);
     let mut reactions: Vec<ReactionComponent> = tangents
         .iter()
         .enumerate()
@@ -264,13 +271,14 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         direction: n_vec.clone(),
     });
     let point = model.point_on(body, &offset_c);
+    let parent_offset = from_on(point.position.clone()).components_in(on, frames);
     let site = Site {
         name: constraint.name.clone(),
         kind: SiteKind::Contact(k),
-        parent: BodyId::GROUND,
+        parent: on,
         child: body,
         child_offset: offset_c.clone(),
-        parent_offset: point.position.components_in(BodyId::GROUND, frames),
+        parent_offset,
         point,
         reactions,
     };
@@ -303,25 +311,22 @@ fn direction_axis(d: &Vector, index: usize) -> Axis {
 }
 
 /// Unit directions in the plane: N's unit vectors when the normal is one of them.
-fn tangents_of(n: &Components, planar: bool, model: &Model) -> Vec<Vector> {
+fn tangents_of(n: &Components, planar: bool, model: &Model, frame: BodyId) -> Vec<Vector> {
     let axis_of = |c: &Components| -> Option<usize> {
         let nonzero: Vec<usize> = (0..3).filter(|&i| !c[i].is_zero()).collect();
         (nonzero.len() == 1).then(|| nonzero[0])
     };
     if planar {
         if let Some(a) = axis_of(n).filter(|&a| a < 2) {
-            return vec![Vector::unit(BodyId::GROUND, 1 - a)];
+            return vec![Vector::unit(frame, 1 - a)];
         }
         let t = cross3(&unit(2), n);
-        return vec![Vector::new(BodyId::GROUND, t)];
+        return vec![Vector::new(frame, t)];
     }
     if let Some(a) = axis_of(n) {
         let (b, c) = ((a + 1) % 3, (a + 2) % 3);
         let (first, second) = if b < c { (b, c) } else { (c, b) };
-        return vec![
-            Vector::unit(BodyId::GROUND, first),
-            Vector::unit(BodyId::GROUND, second),
-        ];
+        return vec![Vector::unit(frame, first), Vector::unit(frame, second)];
     }
     let magnitudes: Vec<f64> = n.iter().map(|c| eval(c, &model.values).abs()).collect();
     let least = (0..3)
@@ -331,10 +336,7 @@ fn tangents_of(n: &Components, planar: bool, model: &Model) -> Vec<Vector> {
     let scale = pow(dot3(&raw, &raw), Expr::ratio(-1, 2));
     let first: Components = std::array::from_fn(|i| &raw[i] * &scale);
     let second = cross3(n, &first);
-    vec![
-        Vector::new(BodyId::GROUND, first),
-        Vector::new(BodyId::GROUND, second),
-    ]
+    vec![Vector::new(frame, first), Vector::new(frame, second)]
 }
 
 /// The reaction unknowns of the given sites (joints, closures, contacts), in that order.

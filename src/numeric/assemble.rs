@@ -198,7 +198,7 @@ impl Assembly {
             return Ok(());
         }
         let out = self.velocity.eval(&Self::inputs(constants, t, q, rates));
-        let columns = self.rate_columns(&out, m);
+        let columns = self.rate_columns(&out, m, rates);
         let columns = &columns;
         let matrix = DMatrix::from_fn(m, columns.len(), |r, c| out[r * n + columns[c]]);
         let rhs = DVector::from_fn(m, |r, _| {
@@ -224,8 +224,21 @@ impl Assembly {
     /// is nearly singular here (a knife edge whose blade turns through N.y cannot give y'),
     /// and then the best pivots at this state. The other rates keep their values, so
     /// which rates are dependent may change along a motion.
-    fn rate_columns(&self, out: &[f64], m: usize) -> Vec<usize> {
+    fn rate_columns(&self, out: &[f64], m: usize, rates: &[f64]) -> Vec<usize> {
         let n = self.coordinates;
+        // Rates that do not meet the constraints yet (a state just given, its dependent
+        // rates placeholders) are the user's independent ones: keep the chosen set unless
+        // it cannot give the rest at all, or the given rates would be overwritten.
+        let consistent = (0..m).all(|r| {
+            let row = &out[r * n..(r + 1) * n];
+            let residual: f64 =
+                row.iter().zip(rates).map(|(c, v)| c * v).sum::<f64>() + out[m * n + r];
+            let scale = row
+                .iter()
+                .zip(rates)
+                .fold(out[m * n + r].abs(), |a, (c, v)| a.max((c * v).abs()));
+            residual.abs() <= 1e-9 * scale.max(1.0)
+        });
         let smallest_singular = |columns: &[usize]| -> f64 {
             let block = DMatrix::from_fn(m, columns.len(), |r, c| out[r * n + columns[c]]);
             let singular = block.svd(false, false).singular_values;
@@ -239,7 +252,8 @@ impl Assembly {
         if best.len() == m && best != current {
             // Hysteresis: change only when the best block is ten times better conditioned,
             // so that two nearly equal choices do not alternate from step to step.
-            if smallest_singular(&current) < 0.1 * smallest_singular(&best) {
+            let (now, better) = (smallest_singular(&current), smallest_singular(&best));
+            if now < 0.1 * better && (consistent || now <= 1e-9 * better) {
                 *self.current_rates.borrow_mut() = best.clone();
                 return best;
             }

@@ -39,6 +39,8 @@ pub struct Compiled {
     pub method: Method,
     /// Coordinate names in contract order.
     pub coordinates: Vec<String>,
+    /// For each coordinate, a massless body it moves: the reason its q'' may be undetermined.
+    massless: Vec<Option<String>>,
     constants: Vec<f64>,
     unknowns: usize,
     program: Program,
@@ -275,6 +277,12 @@ impl Compiled {
             drives,
             method: derivation.method,
             coordinates: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
+            massless: (0..problem.coordinates.len())
+                .map(|i| {
+                    crate::mechanics::massless::massless_body_moved_by(model, i)
+                        .map(|b| problem.body_name(b).to_string())
+                })
+                .collect(),
             constants: problem.constants.iter().map(|c| c.value).collect(),
             unknowns: n,
             program,
@@ -412,7 +420,10 @@ impl Compiled {
             .max(f64::MIN_POSITIVE);
         for (i, name) in self.coordinates.iter().enumerate() {
             if a.column(i).iter().all(|x| x.abs() <= 1e-12 * scale) {
-                return format!("the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined");
+                return match &self.massless[i] {
+                    Some(body) => crate::mechanics::massless::undetermined(name, body),
+                    None => format!("the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined"),
+                };
             }
         }
         "the equations do not determine the unknowns here (a singular configuration, such as gimbal lock)".into()

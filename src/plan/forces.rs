@@ -76,6 +76,10 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
         let g = crate::mechanics::model::vector_of(g);
         for body in problem.body_ids() {
             let state = &model.bodies[body.0];
+            if state.mass.is_zero() {
+                // A massless body has no weight.
+                continue;
+            }
             out.push(Action {
                 body,
                 partner: None,

@@ -170,6 +170,13 @@ impl super::read::Reader {
             validate::inertia(&inertia, &self.values, &inertia_path, &mut self.diag);
             body.inertia = inertia;
         }
+        validate::massless_inertia(
+            &body.mass,
+            &body.inertia,
+            &self.values,
+            &inertia_path,
+            &mut self.diag,
+        );
         body.description = optional_string(fields, "description", &path, &mut self.diag);
         body
     }

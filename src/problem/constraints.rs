@@ -184,6 +184,7 @@ impl Reader {
             };
             let kind = match kind_name {
                 "rolling" => self.rolling(fields, &path),
+                "gear" => self.gear(fields, &path),
                 "position" | "velocity" => self.general_constraint(fields, &path, kind_name),
                 other => {
                     self.diag.hint(
@@ -191,7 +192,7 @@ impl Reader {
                         format!("unknown constraint type `{other}`"),
                         super::names::suggest(
                             other,
-                            &["rolling", "position", "velocity"],
+                            &["rolling", "gear", "position", "velocity"],
                             "constraint types",
                         ),
                     );
@@ -228,19 +229,22 @@ impl Reader {
                 "name the body that carries the wheel",
             );
         }
+        // The plane is fixed in `on`: `N` (the default) or a moving body, not the disc's own.
+        let mut on_id = BodyId::GROUND;
         if let Some(on) = fields.get("on") {
             let on_path = key_path(path, "on");
             if let Some(b) = self.body_ref(on, &on_path) {
-                if b != BodyId::GROUND {
+                if body.is_some_and(|own| own == b) {
                     self.diag.hint(
                         &on_path,
                         format!(
-                            "a disc rolls on a plane fixed in `N`, not on `{}`",
+                            "a disc cannot roll on its own body `{}`",
                             self.names.body_name(b)
                         ),
-                        "write \"on\": \"N\"",
+                        "name the body (or N) that carries the plane",
                     );
                 }
+                on_id = b;
             }
         }
         let radius_path = key_path(path, "radius");
@@ -280,11 +284,35 @@ impl Reader {
         });
         let normal_path = key_path(path, "normal");
         let normal = required(fields, "normal", path, &mut self.diag).and_then(|v| {
-            let normal = self.position(v, &normal_path, BodyId::GROUND, "the plane's normal")?;
+            let normal = self.position(v, &normal_path, on_id, "the plane's normal")?;
             validate::axis(&normal, &self.values, &normal_path, &mut self.diag);
             Some(normal)
         });
-        let center = match fields.get("center") {
+        let center = self.disc_center(fields.get("center"), &key_path(path, "center"), body_id)?;
+        let offset = match fields.get("offset") {
+            Some(v) => self.scalar(v, &key_path(path, "offset"), Context::constant("an offset")),
+            None => Some(Expr::zero()),
+        };
+        Some(ConstraintKind::Rolling {
+            body: body?,
+            on: on_id,
+            radius: radius?,
+            axis: axis?,
+            center,
+            normal: normal?,
+            offset: offset?,
+        })
+    }
+
+    /// A disc's centre on `body`: a point name, or a vector from its origin in its unit
+    /// vectors; missing, the origin.
+    pub(super) fn disc_center(
+        &mut self,
+        value: Option<&Value>,
+        path: &str,
+        body: BodyId,
+    ) -> Option<ForcePoint> {
+        match value {
             Some(v)
                 if v.as_str().is_some_and(|s| {
                     self.names.point(s.trim()).is_some()
@@ -292,28 +320,15 @@ impl Reader {
                         || s.trim().ends_with(".o")
                 }) =>
             {
-                self.named_point(v, &key_path(path, "center"), body_id)
+                self.named_point(v, path, body)
             }
             Some(v) => {
-                let p = key_path(path, "center");
-                let at = self.position(v, &p, body_id, "the disc's centre")?;
-                validate::vector(&at, &self.values, &p, &mut self.diag);
+                let at = self.position(v, path, body, "the disc's centre")?;
+                validate::vector(&at, &self.values, path, &mut self.diag);
                 Some(ForcePoint::Offset(at))
             }
-            None => Some(ForcePoint::Point(PointRef::Origin(body_id))),
-        };
-        let offset = match fields.get("offset") {
-            Some(v) => self.scalar(v, &key_path(path, "offset"), Context::constant("an offset")),
-            None => Some(Expr::zero()),
-        };
-        Some(ConstraintKind::Rolling {
-            body: body?,
-            radius: radius?,
-            axis: axis?,
-            center: center?,
-            normal: normal?,
-            offset: offset?,
-        })
+            None => Some(ForcePoint::Point(PointRef::Origin(body))),
+        }
     }
 
     /// `A*`, `A.o` or a declared point, which must be on `body`.
@@ -473,12 +488,12 @@ impl Reader {
             let rolling = constraints[k]
                 .get("type")
                 .and_then(Value::as_str)
-                .is_some_and(|t| t == "rolling");
+                .is_some_and(|t| t == "rolling" || t == "gear");
             if !rolling {
                 self.diag.hint(
                     path,
                     format!("`{}` is a position or velocity constraint, which has no reaction to report", name.unwrap_or("")),
-                    "request joints, closures and rolling contacts",
+                    "request joints, closures, rolling contacts and gears",
                 );
                 return None;
             }

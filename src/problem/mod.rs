@@ -20,6 +20,7 @@
 mod bodies;
 mod constraints;
 mod expressions;
+mod gear;
 mod graph;
 mod initial;
 mod joints;

@@ -308,18 +308,34 @@ pub struct Problem {
 /// Where a disc's centre is on its body.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ConstraintKind {
-    /// A thin disc on `body` rolling without slipping on a plane fixed in `N`.
+    /// A thin disc on `body` rolling without slipping on a plane fixed in `on` (`N` or a
+    /// moving body).
     Rolling {
         body: BodyId,
+        /// The body the plane is fixed in.
+        on: BodyId,
         radius: Expr,
         /// The axle, fixed in the body (as written, not yet normalized).
         axis: VectorExpr,
         /// The disc's centre.
         center: ForcePoint,
-        /// The plane's normal, fixed in `N` (as written).
+        /// The plane's normal, fixed in `on` (as written).
         normal: VectorExpr,
-        /// The plane's distance from `N.o` along the normal.
+        /// The plane's distance from `on`'s origin along the normal.
         offset: Expr,
+    },
+    /// Two discs with parallel axles rolling on each other without slipping: `body`'s disc
+    /// on `on`'s, outside it or (`internal`) inside it.
+    Gear {
+        body: BodyId,
+        radius: Expr,
+        center: ForcePoint,
+        on: BodyId,
+        on_radius: Expr,
+        on_center: ForcePoint,
+        internal: bool,
+        /// The common axle, fixed in `body` (as written); `None` in 2D (N.z).
+        axis: Option<VectorExpr>,
     },
     /// `expression = 0`, of constants, coordinates and `t`.
     Position { expression: Expr },

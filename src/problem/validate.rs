@@ -1,4 +1,5 @@
-//! The checks that depend on the constants' values: masses positive, inertias physical,
+//! The checks that depend on the constants' values: masses not negative (zero only with
+//! no inertia, a massless body), inertias physical,
 //! axes not zero, nothing infinite. They run while reading and again after `--set`.
 
 use super::expressions::ConstantValues;
@@ -32,16 +33,44 @@ pub fn finite(
     None
 }
 
-/// The mass: finite and positive.
+/// The mass: finite and not negative (zero for a massless body: a light link or collar).
 pub fn mass(e: &Expr, values: &ConstantValues, path: &str, diag: &mut Diagnostics) {
     if let Some(m) = finite(e, values, path, diag) {
-        if m <= 0.0 {
+        if m < 0.0 {
             diag.hint(
                 path,
-                format!("the mass must be positive; `{e}` is {}", fixed(m)),
-                "a particle still has a positive mass",
+                format!("the mass must not be negative; `{e}` is {}", fixed(m)),
+                "a particle has a positive mass; a light link or collar has mass 0",
             );
         }
+    }
+}
+
+/// A massless body has no inertia either: mass 0 with a nonzero inertia is not a body.
+/// (A positive mass with zero inertia is a particle, and stays allowed.)
+pub fn massless_inertia(
+    mass: &Expr,
+    inertia: &Inertia,
+    values: &ConstantValues,
+    path: &str,
+    diag: &mut Diagnostics,
+) {
+    if values.eval(mass) != Some(0.0) {
+        return;
+    }
+    let components: Vec<&Expr> = match inertia {
+        Inertia::Planar(e) => vec![e],
+        Inertia::Spatial(m) => m.iter().flatten().collect(),
+    };
+    let nonzero = components
+        .iter()
+        .any(|e| values.eval(e).is_some_and(|v| v != 0.0));
+    if nonzero {
+        diag.hint(
+            path,
+            format!("the body has mass `{mass}` = 0 but a nonzero inertia"),
+            "a massless body (a light link, collar or pulley) has inertia 0: omit `inertia`, or give the body its mass",
+        );
     }
 }
 
@@ -182,6 +211,13 @@ pub fn values(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
             &key_path(&body.path, "inertia"),
             &mut diag,
         );
+        massless_inertia(
+            &body.mass,
+            &body.inertia,
+            values,
+            &key_path(&body.path, "inertia"),
+            &mut diag,
+        );
     }
     for joint in &problem.joints {
         if let Some(a) = &joint.axis {
@@ -282,12 +318,35 @@ mod tests {
     fn masses_and_axes() {
         let values = ConstantValues::default();
         let mut diag = Diagnostics::default();
+        mass(&Expr::int(-1), &values, "m", &mut diag);
         mass(&Expr::int(0), &values, "m", &mut diag);
         mass(&Expr::int(2), &values, "m", &mut diag);
         let zero_axis = VectorExpr::default();
         axis(&zero_axis, &values, "a", &mut diag);
         let messages: Vec<&str> = diag.errors.iter().map(|e| e.message.as_str()).collect();
         assert_eq!(messages.len(), 2, "{messages:?}");
-        assert!(messages[0].contains("positive") && messages[1].contains("zero"));
+        assert!(messages[0].contains("negative") && messages[1].contains("zero"));
+    }
+
+    #[test]
+    fn a_massless_body_has_no_inertia() {
+        let values = ConstantValues::default();
+        let check = |m: i64, inertia: &Inertia| {
+            let mut diag = Diagnostics::default();
+            massless_inertia(
+                &Expr::int(m),
+                inertia,
+                &values,
+                "bodies.A.inertia",
+                &mut diag,
+            );
+            diag.errors.len()
+        };
+        assert_eq!(check(0, &Inertia::Planar(Expr::zero())), 0);
+        assert_eq!(check(0, &spatial(0.0, 0.0, 0.0, 0.0)), 0);
+        assert_eq!(check(0, &Inertia::Planar(Expr::int(1))), 1);
+        assert_eq!(check(0, &spatial(0.0, 0.0, 0.0, 0.5)), 1);
+        // A particle: positive mass, no inertia.
+        assert_eq!(check(2, &Inertia::Planar(Expr::zero())), 0);
     }
 }

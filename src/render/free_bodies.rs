@@ -95,6 +95,10 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
 }
 
 fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
+    if model.bodies[body.0].mass.is_zero() {
+        // A massless body's kinetic diagram is empty.
+        return;
+    }
     let name = model.problem.body_name(body);
     // In math a name is set as a symbol (`rod_a` would be a double subscript).
     let symbol = latex_name(name);

@@ -140,16 +140,18 @@ fn a_one_megabyte_string() {
 fn huge_exponents() {
     // m = L = 1 and g = 9.81: 1^1e308 is 1, a valid mass; the others overflow or vanish.
     assert!(errors("m^1e308", problem("t", "m^1e308", "0*N.x")).is_empty());
-    for mass in [
-        "2^1e308",
-        "g^1e308",
-        "2^99999999",
-        "(g+L)^99999999",
-        "2^(-9223372036854775807)",
-        "g^-1e308",
-    ] {
+    for mass in ["2^1e308", "g^1e308", "2^99999999", "(g+L)^99999999"] {
         let errors = errors(mass, problem("t", mass, "0*N.x"));
         assert!(!errors.is_empty(), "{mass} accepted as a mass");
+        assert!(
+            errors.iter().all(|e| e.path == "bodies.A.mass"),
+            "{mass}: {errors:?}"
+        );
+    }
+    // Those that vanish make a mass 0, a massless body: valid as a value (the model then
+    // refuses it when nothing fixes its coordinate), never a panic.
+    for mass in ["2^(-9223372036854775807)", "g^-1e308"] {
+        let errors = errors(mass, problem("t", mass, "0*N.x"));
         assert!(
             errors.iter().all(|e| e.path == "bodies.A.mass"),
             "{mass}: {errors:?}"

@@ -8,13 +8,17 @@ fn bodies() {
         base(),
         |p| p["bodies"]["A"]["mass"] = json!("-m"),
         "bodies.A.mass",
-        "positive",
+        "must not be negative",
     );
+    // Mass 0 is a massless body, which has no inertia.
     rejects(
         base(),
-        |p| p["bodies"]["A"]["mass"] = json!(0),
-        "bodies.A.mass",
-        "positive",
+        |p| {
+            p["bodies"]["A"]["mass"] = json!(0);
+            p["bodies"]["A"]["inertia"] = json!(1);
+        },
+        "bodies.A.inertia",
+        "nonzero inertia",
     );
     rejects(
         base(),

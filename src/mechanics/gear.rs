@@ -1,0 +1,129 @@
+//! A `gear` contact: two discs with parallel axles rolling on each other without slipping
+//! (pitch circles, friction wheels), `body`'s disc outside `on`'s or, `internal`, inside it.
+//! Its site is at the contact point on the line of centres, with the parent `on`, so that
+//! the contact force acts on both bodies; its rows are the distance between the centres
+//! (`on_radius ± radius`) and no slip along the common tangent.
+
+use super::joints::{Axis, ComponentKind, ReactionComponent};
+use super::model::{vector_of, Model};
+use super::sites::{Contact, Site, SiteKind};
+use super::vector::{dot3, zero3, Components, Vector};
+use super::MechanicsError;
+use crate::problem::{BodyId, ConstraintKind, ForcePoint};
+use crate::symbolic::eval::eval;
+use crate::symbolic::{pow, sqrt, Expr};
+
+/// The site of gear contact `k` and its geometry (the "height" is the distance between the
+/// centres minus what the radii allow; the "normal" the unit line of centres, from `on`'s
+/// centre toward `body`'s).
+///
+/// # Errors
+/// A 3D axle that is zero.
+pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsError> {
+    let constraint = &model.problem.constraints[k];
+    let ConstraintKind::Gear {
+        body,
+        radius,
+        center,
+        on,
+        on_radius,
+        on_center,
+        internal,
+        axis,
+    } = &constraint.kind
+    else {
+        return Err(MechanicsError {
+            path: constraint.path.clone(),
+            message: "not a gear contact".into(),
+            hint: None,
+        });
+    };
+    let frames = &model.frames;
+    let (body, on) = (*body, *on);
+    let offset_of = |p: &ForcePoint, b: BodyId| match p {
+        ForcePoint::Point(p) => model.locate(*p).1,
+        ForcePoint::Offset(v) => vector_of(v).components_in(b, frames),
+    };
+    let body_center = offset_of(center, body);
+    let on_center = offset_of(on_center, on);
+    // The line of centres, in `on`'s unit vectors, and its length.
+    let between = model
+        .position_on(body, &body_center)
+        .minus(&model.position_on(on, &on_center))
+        .components_in(on, frames);
+    let distance = sqrt(dot3(&between, &between));
+    let allowed = if *internal {
+        on_radius - radius
+    } else {
+        on_radius + radius
+    };
+    // The unit line of centres: where the distance condition holds (after assembly, and
+    // along the motion) the length is the pitch radii's sum (difference), which keeps
+    // square roots out of every row but the distance itself.
+    let inverse = pow(allowed.clone(), Expr::int(-1));
+    let toward: Components = std::array::from_fn(|i| &between[i] * &inverse);
+    let line = Vector::new(on, toward);
+    let axle = match axis {
+        None => Vector::unit(BodyId::GROUND, 2),
+        Some(written) => {
+            let c = vector_of(written).components_in(body, frames);
+            let length = c
+                .iter()
+                .map(|e| eval(e, &model.values).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            if length.is_nan() || length <= 1e-12 {
+                return Err(MechanicsError {
+                    path: format!("{}.axis", constraint.path),
+                    message: "the axis is zero".into(),
+                    hint: Some("give the common axle's direction, e.g. B.z".into()),
+                });
+            }
+            let scale = pow(dot3(&c, &c), Expr::ratio(-1, 2));
+            Vector::new(body, std::array::from_fn(|i| &c[i] * &scale))
+        }
+    };
+    let tangent = axle.cross(&line, frames);
+    // The contact point on the line of centres, `radius` from the disc's centre: toward
+    // `on`'s centre outside it, away from it inside a ring.
+    let line_in_body = line.components_in(body, frames);
+    let sign = if *internal { Expr::one() } else { -Expr::one() };
+    let offset: Components =
+        std::array::from_fn(|i| &body_center[i] + &(&(&sign * radius) * &line_in_body[i]));
+    let gap = &distance - &allowed;
+    let reactions = vec![
+        ReactionComponent {
+            kind: ComponentKind::Force,
+            axis: Axis::Tangent(1),
+            direction: tangent.clone(),
+        },
+        ReactionComponent {
+            kind: ComponentKind::Force,
+            axis: Axis::Normal,
+            direction: line.clone(),
+        },
+    ];
+    let point = model.point_on(body, &offset);
+    let parent_offset = point
+        .position
+        .minus(&model.position_on(on, &zero3()))
+        .components_in(on, frames);
+    let site = Site {
+        name: constraint.name.clone(),
+        kind: SiteKind::Contact(k),
+        parent: on,
+        child: body,
+        child_offset: offset.clone(),
+        parent_offset,
+        point,
+        reactions,
+    };
+    let contact = Contact {
+        offset,
+        height: gap,
+        normal: line,
+        tangents: vec![tangent],
+        tilt: Expr::one(),
+    };
+    Ok((site, contact))
+}

@@ -1,0 +1,77 @@
+//! `rolling` on a moving body: a disc rolling on a cart that slides freely, against the
+//! classic closed form worked by hand below, and the work–energy balance in simulation.
+
+use crate::support::{assert_close, column, simulate, solve_all};
+
+/// `problems/disc-on-cart.json`: cart M pulled by P, uniform disc m of radius R on it.
+const M: f64 = 3.0;
+const MD: f64 = 2.0;
+const R: f64 = 0.1;
+const P: f64 = 12.0;
+const G: f64 = 9.81;
+
+/// By hand: friction f (on the disc, along C.x) accelerates the disc's centre, m a_d = f,
+/// and turns it, (m R²/2) θ'' = R f; no slip at the contact, a_d + R θ'' = a_c; the cart,
+/// M a_c = P − f. So f = m a_c / 3, a_c = 3P/(3M + m), a_d = P/(3M + m).
+#[test]
+fn a_disc_on_a_free_cart_matches_the_classic_result_by_every_method() {
+    let a_cart = 3.0 * P / (3.0 * M + MD);
+    let a_disc = P / (3.0 * M + MD);
+    let friction = MD * a_disc;
+    for s in solve_all("disc-on-cart", &[]) {
+        let what = |q: &str| format!("{}: {q}", s.method);
+        assert_close(s.acc("x"), a_cart, 1e-9, 1.0, &what("x''"));
+        assert_close(
+            s.acc("x") + s.acc("s"),
+            a_disc,
+            1e-9,
+            1.0,
+            &what("disc centre"),
+        );
+        assert_close(
+            s.acc("theta"),
+            (a_cart - a_disc) / R,
+            1e-9,
+            1.0,
+            &what("theta''"),
+        );
+        assert_close(s.acc("h"), 0.0, 1e-9, 1.0, &what("h''"));
+        // The cart's push on the disc, in the cart's unit vectors: friction, then the
+        // normal force carrying the disc's weight.
+        let contact = s.force("contact");
+        assert_close(contact[0], friction, 1e-9, 1.0, &what("friction"));
+        assert_close(contact[1], MD * G, 1e-9, 1.0, &what("normal"));
+        // The ground carries both bodies' weight: the contact force acts on the cart too.
+        assert_close(s.force("S")[1], (M + MD) * G, 1e-9, 1.0, &what("S normal"));
+        // No slip is relative: the disc's contact point moves with the cart.
+        let state = &s.json["state"];
+        let rate = |q: &str| state[q].as_f64().unwrap();
+        assert_close(
+            rate("s'") + R * rate("theta'"),
+            0.0,
+            1e-12,
+            1.0,
+            &what("no slip"),
+        );
+    }
+}
+
+#[test]
+fn the_disc_on_the_cart_keeps_the_work_energy_balance() {
+    let (columns, rows) = simulate("disc-on-cart", &[]);
+    let at = |name: &str| column(&columns, name);
+    let (x, xd, sd, td) = (at("x"), at("x'"), at("s'"), at("theta'"));
+    // Kinetic energy minus the work of P: the rolling contact does no work.
+    let balance = |r: &[f64]| {
+        let v_disc = r[xd] + r[sd];
+        M * r[xd].powi(2) / 2.0 + MD * v_disc.powi(2) / 2.0 + MD * R * R / 4.0 * r[td].powi(2)
+            - P * r[x]
+    };
+    let start = balance(&rows[0]);
+    let last = rows.last().unwrap();
+    assert!(last[x] > 1.0, "the cart has moved: {}", last[x]);
+    for row in &rows {
+        assert_close(balance(row), start, 1e-7, 1.0, "kinetic energy − work of P");
+        assert_close(row[sd] + R * row[td], 0.0, 1e-7, 1.0, "no slip on the cart");
+    }
+}
