@@ -158,6 +158,7 @@ fn draw_until_solved(
         json.push('\n');
         // The variant is read back from its own text, exactly as `answer` will read it.
         let solved = crate::problem::load(&json)
+            .and_then(|mut p| crate::problem::apply_overrides(&mut p, &[]).map(|()| p))
             .map_err(Error::Problem)
             .and_then(|p| crate::pipeline::answers(&p, method).map(|a| key_columns(&p, &a)));
         match solved {
