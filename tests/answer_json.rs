@@ -15,7 +15,12 @@ fn scratch(name: &str, problem: &Value) -> std::path::PathBuf {
 }
 
 fn answers(path: &std::path::Path) -> Vec<Value> {
-    let out = run_json(&["answer".as_ref(), path.as_os_str(), "--format".as_ref(), "json".as_ref()]);
+    let out = run_json(&[
+        "answer".as_ref(),
+        path.as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
     out["answers"].as_array().expect("answers").clone()
 }
 
@@ -54,7 +59,12 @@ fn top_precession_rates_are_the_roots_of_the_steady_quadratic() {
     assert_eq!(tip["kind"], "reaction");
     assert_eq!(tip["unit"], "N");
     assert!(tip["components"].get("moment").is_none(), "{tip}");
-    close(tip["components"]["z"].as_f64().expect("z"), m * g, 1e-3, "weight");
+    close(
+        tip["components"]["z"].as_f64().expect("z"),
+        m * g,
+        1e-3,
+        "weight",
+    );
     // The horizontal one turns the mass centre on its circle: m h sin θ ψ'² inward.
     let psi = 3.45313f64;
     close(
@@ -126,7 +136,12 @@ fn a_pendulum_pin_reaction_is_m_a_minus_m_g() {
     let (m, l, g, theta, rate) = (1.5, 0.8, 9.81, -0.7f64, 1.3f64);
     // About O: (m L²/3) θ'' = −m g (L/2) cos θ.
     let acceleration = -3.0 * g / (2.0 * l) * theta.cos();
-    close(found[0]["value"].as_f64().expect("value"), acceleration, 1e-10, "theta''");
+    close(
+        found[0]["value"].as_f64().expect("value"),
+        acceleration,
+        1e-10,
+        "theta''",
+    );
     assert_eq!(found[0]["unit"], "rad/s^2");
     // The pin's force on the rod: F + m g = m a_G, a_G = (L/2)(θ'' e_θ − θ'² e_r).
     let (s, c) = theta.sin_cos();
@@ -134,7 +149,12 @@ fn a_pendulum_pin_reaction_is_m_a_minus_m_g() {
     let ay = l / 2.0 * (acceleration * c - rate * rate * s);
     let components = &found[1]["components"];
     close(components["x"].as_f64().expect("x"), m * ax, 1e-10, "F_x");
-    close(components["y"].as_f64().expect("y"), m * ay + m * g, 1e-10, "F_y");
+    close(
+        components["y"].as_f64().expect("y"),
+        m * ay + m * g,
+        1e-10,
+        "F_y",
+    );
     // A pin takes no moment about its axis: none reported, in JSON as in the handout.
     assert!(components.get("moment").is_none(), "{components}");
     assert_eq!(found[1]["state"]["theta'"].as_f64(), Some(rate));
@@ -151,23 +171,37 @@ fn a_drive_is_the_torque_that_keeps_the_prescribed_motion() {
     ));
     let (m, l, g, th0, w, al) = (1.5, 0.8, 9.81, 0.4f64, 2.0, 3.0);
     // (m L²/3) θ'' = Q − m g (L/2) cos θ, with θ'' = al.
-    let torque = |t: f64| m * l * l / 3.0 * al + m * g * l / 2.0 * (th0 + w * t + al * t * t / 2.0).cos();
+    let torque =
+        |t: f64| m * l * l / 3.0 * al + m * g * l / 2.0 * (th0 + w * t + al * t * t / 2.0).cos();
     for (index, t) in [(0, 0.0), (1, 0.25)] {
         assert_eq!(found[index]["kind"], "drive");
         assert_eq!(found[index]["unit"], "N m");
         assert_eq!(found[index]["time"].as_f64(), Some(t));
-        close(found[index]["value"].as_f64().expect("drive"), torque(t), 1e-8, "drive");
+        close(
+            found[index]["value"].as_f64().expect("drive"),
+            torque(t),
+            1e-8,
+            "drive",
+        );
     }
 }
 
 #[test]
 fn answer_text_lists_every_value_with_its_unit() {
     let out = run(&["answer".as_ref(), problem("four-bar").as_os_str()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("[0] value at t = 0.0 s"), "{text}");
     assert!(text.contains("O.force.x = "), "{text}");
-    assert!(text.lines().any(|l| l.trim().starts_with("q1'' = ") && l.ends_with(" rad/s^2")), "{text}");
+    assert!(
+        text.lines()
+            .any(|l| l.trim().starts_with("q1'' = ") && l.ends_with(" rad/s^2")),
+        "{text}"
+    );
 }
 
 #[test]

@@ -54,13 +54,19 @@ fn variants(problem: &Path, seed: &str, out: &Path) {
         "-o".as_ref(),
         out.as_os_str(),
     ]);
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
 }
 
 /// The key's header and rows.
 fn key(dir: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(dir.join("key.csv")).expect("key.csv");
-    let mut lines = text.lines().map(|l| l.split(',').map(String::from).collect::<Vec<_>>());
+    let mut lines = text
+        .lines()
+        .map(|l| l.split(',').map(String::from).collect::<Vec<_>>());
     let header = lines.next().expect("a header");
     (header, lines.collect())
 }
@@ -84,19 +90,40 @@ fn contents(dir: &Path) -> Vec<(String, Vec<u8>)> {
 fn twenty_variants_draw_on_their_grids_and_the_key_is_what_answer_gives() {
     let dir = scratch("twenty");
     let problem = dir.join("rod.json");
-    std::fs::write(&problem, serde_json::to_string_pretty(&varied_rod()).unwrap()).unwrap();
+    std::fs::write(
+        &problem,
+        serde_json::to_string_pretty(&varied_rod()).unwrap(),
+    )
+    .unwrap();
     let first = dir.join("first");
     variants(&problem, "2026", &first);
     let (header, rows) = key(&first);
     assert_eq!(
         header,
-        ["file", "seed", "redraws", "m", "L", "g", "\\ddot{\\theta}", "1.x", "1.y", "2"]
+        [
+            "file",
+            "seed",
+            "redraws",
+            "m",
+            "L",
+            "g",
+            "\\ddot{\\theta}",
+            "1.x",
+            "1.y",
+            "2"
+        ]
     );
     assert_eq!(rows.len(), 20);
     let on_grid = |x: f64, origin: f64, step: f64, low: f64, high: f64, what: &str| {
-        assert!((low..=high).contains(&x), "{what} = {x} outside [{low}, {high}]");
+        assert!(
+            (low..=high).contains(&x),
+            "{what} = {x} outside [{low}, {high}]"
+        );
         let k = (x - origin) / step;
-        assert!((k - k.round()).abs() < 1e-9, "{what} = {x} is off the grid {step}");
+        assert!(
+            (k - k.round()).abs() < 1e-9,
+            "{what} = {x} is off the grid {step}"
+        );
     };
     let mut drawn = Vec::new();
     for (i, row) in rows.iter().enumerate() {
@@ -110,7 +137,8 @@ fn twenty_variants_draw_on_their_grids_and_the_key_is_what_answer_gives() {
         drawn.push((m, l, g));
         // The variant's file: the problem with the drawn values, `vary` and `step` gone.
         let file = first.join(&row[0]);
-        let variant: Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+        let variant: Value =
+            serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
         let mut expected = varied_rod();
         for (name, value) in [("m", m), ("L", l), ("g", g)] {
             let fields = expected["constants"][name].as_object_mut().unwrap();
@@ -126,12 +154,20 @@ fn twenty_variants_draw_on_their_grids_and_the_key_is_what_answer_gives() {
             "--format".as_ref(),
             "json".as_ref(),
         ]);
-        assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
         let printed = printed_answers(&output.stdout);
         assert_eq!(row[6..], printed, "{}", row[0]);
         // And θ'' is the closed form, −3 g cos θ / (2 L).
         let theta_dd = -3.0 * g / (2.0 * l) * (-0.7f64).cos();
-        assert!((number(6) - theta_dd).abs() < 1e-10 * theta_dd.abs(), "{}", row[0]);
+        assert!(
+            (number(6) - theta_dd).abs() < 1e-10 * theta_dd.abs(),
+            "{}",
+            row[0]
+        );
         // Both handouts are there.
         for suffix in [".tex", "-student.tex"] {
             let name = row[0].replace(".json", suffix);
@@ -143,13 +179,21 @@ fn twenty_variants_draw_on_their_grids_and_the_key_is_what_answer_gives() {
 
     let again = dir.join("again");
     variants(&problem, "2026", &again);
-    assert!(contents(&first) == contents(&again), "one seed, other bytes");
+    assert!(
+        contents(&first) == contents(&again),
+        "one seed, other bytes"
+    );
 
     let other = dir.join("other");
     variants(&problem, "7", &other);
     let (_, other_rows) = key(&other);
-    let constants = |rows: &[Vec<String>]| rows.iter().map(|r| r[3..6].to_vec()).collect::<Vec<_>>();
-    assert_ne!(constants(&rows), constants(&other_rows), "another seed, the same numbers");
+    let constants =
+        |rows: &[Vec<String>]| rows.iter().map(|r| r[3..6].to_vec()).collect::<Vec<_>>();
+    assert_ne!(
+        constants(&rows),
+        constants(&other_rows),
+        "another seed, the same numbers"
+    );
 
     every_latex_file_compiles(&first);
 }
@@ -166,10 +210,15 @@ fn printed_answers(stdout: &[u8]) -> Vec<String> {
     let sheet: Sheet = serde_json::from_slice(stdout).expect("answer JSON");
     let a = &sheet.answers;
     let components: Fields = serde_json::from_str(a[1]["components"].get()).expect("components");
-    [a[0]["value"], components["x"], components["y"], a[2]["value"]]
-        .iter()
-        .map(|raw| raw.get().to_string())
-        .collect()
+    [
+        a[0]["value"],
+        components["x"],
+        components["y"],
+        a[2]["value"],
+    ]
+    .iter()
+    .map(|raw| raw.get().to_string())
+    .collect()
 }
 
 fn every_latex_file_compiles(dir: &Path) {
@@ -186,7 +235,11 @@ fn every_latex_file_compiles(dir: &Path) {
     let mut count = 0;
     for (name, _) in contents(dir).iter().filter(|(n, _)| n.ends_with(".tex")) {
         let status = Command::new("pdflatex")
-            .args(["-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape"])
+            .args([
+                "-interaction=nonstopmode",
+                "-halt-on-error",
+                "-no-shell-escape",
+            ])
             .arg(name)
             .current_dir(dir)
             .stdin(Stdio::null())
@@ -210,21 +263,67 @@ fn range_errors(fields: Value) -> String {
 #[test]
 fn a_range_that_cannot_be_drawn_from_is_an_error_with_its_path_and_a_hint() {
     let cases = [
-        (json!({ "value": 1, "vary": [2, 0.5] }), "constants.m.vary", "above its high end"),
-        (json!({ "value": 1, "vary": [1, 1] }), "constants.m.vary", "one value"),
-        (json!({ "value": 1, "vary": [0.5, 2], "step": 0 }), "constants.m.step", "must be positive"),
-        (json!({ "value": 1, "vary": [0.5, 2], "step": -0.1 }), "constants.m.step", "must be positive"),
-        (json!({ "value": 1, "vary": [0.5, 2], "step": 5 }), "constants.m.step", "wider than the range"),
-        (json!({ "value": 3, "vary": [0.5, 2] }), "constants.m.value", "outside its range"),
-        (json!({ "value": 1, "step": 0.1 }), "constants.m.step", "without `vary`"),
-        (json!({ "value": 1, "vary": [0.5] }), "constants.m.vary", "expected [low, high]"),
-        (json!({ "value": 1, "vary": [0.5, "2"] }), "constants.m.vary[1]", "expected a number"),
-        (json!({ "value": 1, "vary": [0.5, 2], "stepp": 0.1 }), "constants.m.stepp", "did you mean `step`?"),
+        (
+            json!({ "value": 1, "vary": [2, 0.5] }),
+            "constants.m.vary",
+            "above its high end",
+        ),
+        (
+            json!({ "value": 1, "vary": [1, 1] }),
+            "constants.m.vary",
+            "one value",
+        ),
+        (
+            json!({ "value": 1, "vary": [0.5, 2], "step": 0 }),
+            "constants.m.step",
+            "must be positive",
+        ),
+        (
+            json!({ "value": 1, "vary": [0.5, 2], "step": -0.1 }),
+            "constants.m.step",
+            "must be positive",
+        ),
+        (
+            json!({ "value": 1, "vary": [0.5, 2], "step": 5 }),
+            "constants.m.step",
+            "wider than the range",
+        ),
+        (
+            json!({ "value": 3, "vary": [0.5, 2] }),
+            "constants.m.value",
+            "outside its range",
+        ),
+        (
+            json!({ "value": 1, "step": 0.1 }),
+            "constants.m.step",
+            "without `vary`",
+        ),
+        (
+            json!({ "value": 1, "vary": [0.5] }),
+            "constants.m.vary",
+            "expected [low, high]",
+        ),
+        (
+            json!({ "value": 1, "vary": [0.5, "2"] }),
+            "constants.m.vary[1]",
+            "expected a number",
+        ),
+        (
+            json!({ "value": 1, "vary": [0.5, 2], "stepp": 0.1 }),
+            "constants.m.stepp",
+            "did you mean `step`?",
+        ),
     ];
     for (fields, path, message) in cases {
         let text = range_errors(fields.clone());
-        assert!(text.contains(path) && text.contains(message), "{fields}: {text}");
-        assert!(text.contains("hint") || text.contains("did you mean"), "{fields}: no hint in {text}");
+        assert!(
+            text.contains(path) && text.contains(message),
+            "{fields}: {text}"
+        );
+        assert!(
+            text.contains("hint") || text.contains("did you mean"),
+            "{fields}: no hint in {text}"
+        );
     }
 }
 
@@ -240,9 +339,21 @@ fn the_schema_describes_vary_and_step() {
 fn absurd_requests_are_refused_before_any_work() {
     let dir = scratch("refused");
     let problem = dir.join("rod.json");
-    std::fs::write(&problem, serde_json::to_string_pretty(&varied_rod()).unwrap()).unwrap();
+    std::fs::write(
+        &problem,
+        serde_json::to_string_pretty(&varied_rod()).unwrap(),
+    )
+    .unwrap();
     let fixed = dir.join("fixed.json");
-    std::fs::write(&fixed, crate::support::problem("simple-pendulum").to_str().map(std::fs::read_to_string).unwrap().unwrap()).unwrap();
+    std::fs::write(
+        &fixed,
+        crate::support::problem("simple-pendulum")
+            .to_str()
+            .map(std::fs::read_to_string)
+            .unwrap()
+            .unwrap(),
+    )
+    .unwrap();
     let out = dir.join("out");
     let refused = |problem: &Path, count: &str, expected: &str, status: i32| {
         let output = run(&[

@@ -39,8 +39,7 @@ pub fn run(args: Args) -> Result<(), Error> {
         );
         error.path = "find.questions".into();
         error.hint = Some(
-            "add questions, e.g. \"find\": { \"questions\": [ { \"value\": \"q1''\" } ] }"
-                .into(),
+            "add questions, e.g. \"find\": { \"questions\": [ { \"value\": \"q1''\" } ] }".into(),
         );
         return Err(Error::Problem(crate::problem::ProblemErrors(vec![error])));
     }

@@ -23,6 +23,10 @@ pub const MAX_COUNT: usize = 500;
 /// problems that cannot be solved.
 const MAX_DRAWS: usize = 50;
 
+/// The most draws of one variant that repeat an earlier variant's values before a repeat
+/// is accepted (only when nearly every combination of the grids is taken).
+const MAX_DUPLICATES: usize = 10_000;
+
 /// Arguments of `mbd-tutor variants`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -91,12 +95,17 @@ pub fn run(args: Args) -> Result<(), Error> {
     let method = super::method(args.method);
     let width = args.count.to_string().len().max(2);
     let mut seeds = SplitMix64::new(args.seed);
-    let variants = (1..=args.count)
-        .map(|i| {
-            let stem = format!("variant-{i:0width$}");
-            draw_until_solved(&problem, &raw, &varied, stem, seeds.next_u64(), method)
-        })
-        .collect::<Result<Vec<_>, Error>>()?;
+    let mut variants: Vec<Variant> = Vec::with_capacity(args.count);
+    for i in 1..=args.count {
+        let stem = format!("variant-{i:0width$}");
+        let drawn = Drawn {
+            problem: &problem,
+            raw: &raw,
+            varied: &varied,
+            earlier: &variants,
+        };
+        variants.push(drawn.until_solved(stem, seeds.next_u64(), method)?);
+    }
     let io = |path: &Path| {
         let path = path.to_path_buf();
         move |source| Error::Io { path, source }
@@ -123,9 +132,8 @@ fn read(path: &Path) -> Result<(Problem, serde_json::Value), Error> {
         source,
     })?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-    let raw = serde_json::from_str(text).map_err(|e| {
-        Error::Problem(ProblemErrors(vec![ProblemError::file(e.to_string())]))
-    })?;
+    let raw = serde_json::from_str(text)
+        .map_err(|e| Error::Problem(ProblemErrors(vec![ProblemError::file(e.to_string())])))?;
     Ok((problem, raw))
 }
 
@@ -139,51 +147,67 @@ fn no_range() -> Error {
     Error::Problem(ProblemErrors(vec![error]))
 }
 
-/// Draws variant `stem` from its own stream until its problem is valid and every question
-/// is answered.
-fn draw_until_solved(
-    problem: &Problem,
-    raw: &serde_json::Value,
-    varied: &[(String, crate::problem::vary::Grid)],
-    stem: String,
-    seed: u64,
-    method: crate::equations::Method,
-) -> Result<Variant, Error> {
-    let mut random = SplitMix64::new(seed);
-    let mut last = String::new();
-    for redraws in 0..MAX_DRAWS {
-        let values = variant::draw(varied, &mut random);
-        let mut json = serde_json::to_string_pretty(&variant::with_values(raw, &values))
-            .unwrap_or_default();
-        json.push('\n');
-        // The variant is read back from its own text, exactly as `answer` will read it.
-        let solved = crate::problem::load(&json)
-            .and_then(|mut p| crate::problem::apply_overrides(&mut p, &[]).map(|()| p))
-            .map_err(Error::Problem)
-            .and_then(|p| crate::pipeline::answers(&p, method).map(|a| key_columns(&p, &a)));
-        match solved {
-            Ok(columns) => {
-                return Ok(Variant {
-                    stem,
-                    seed,
-                    redraws,
-                    values,
-                    json,
-                    columns,
-                })
+/// What a variant is drawn from, and the variants drawn before it.
+struct Drawn<'a> {
+    problem: &'a Problem,
+    raw: &'a serde_json::Value,
+    varied: &'a [(String, crate::problem::vary::Grid)],
+    earlier: &'a [Variant],
+}
+
+impl Drawn<'_> {
+    /// Draws variant `stem` from its own stream until its values differ from every earlier
+    /// variant's (two students, two sets of numbers), its problem is valid and every
+    /// question is answered. Only the draws that could not be solved count as redraws.
+    fn until_solved(
+        &self,
+        stem: String,
+        seed: u64,
+        method: crate::equations::Method,
+    ) -> Result<Variant, Error> {
+        let mut random = SplitMix64::new(seed);
+        let mut last = String::new();
+        let mut redraws = 0;
+        let mut duplicates = 0;
+        while redraws < MAX_DRAWS {
+            let values = variant::draw(self.varied, &mut random);
+            if self.earlier.iter().any(|v| v.values == values) && duplicates < MAX_DUPLICATES {
+                duplicates += 1;
+                continue;
             }
-            Err(error) => last = error.one_line(),
+            let mut json = serde_json::to_string_pretty(&variant::with_values(self.raw, &values))
+                .unwrap_or_default();
+            json.push('\n');
+            // The variant is read back from its own text, as `answer` reads its file.
+            let solved = crate::problem::load(&json)
+                .and_then(|mut p| crate::problem::apply_overrides(&mut p, &[]).map(|()| p))
+                .map_err(Error::Problem)
+                .and_then(|p| crate::pipeline::answers(&p, method).map(|a| key_columns(&p, &a)));
+            match solved {
+                Ok(columns) => {
+                    return Ok(Variant {
+                        stem,
+                        seed,
+                        redraws,
+                        values,
+                        json,
+                        columns,
+                    })
+                }
+                Err(error) => last = error.one_line(),
+            }
+            redraws += 1;
         }
+        let mut error = ProblemError::file(format!(
+            "{stem}: none of {MAX_DRAWS} draws could be solved; the last: {last}"
+        ));
+        error.path = "constants".into();
+        error.hint = Some(format!(
+            "narrow the ranges to values where `{}` solves",
+            self.problem.title
+        ));
+        Err(Error::Problem(ProblemErrors(vec![error])))
     }
-    let mut error = ProblemError::file(format!(
-        "{stem}: none of {MAX_DRAWS} draws could be solved; the last: {last}"
-    ));
-    error.path = "constants".into();
-    error.hint = Some(format!(
-        "narrow the ranges to values where `{}` solves",
-        problem.title
-    ));
-    Err(Error::Problem(ProblemErrors(vec![error])))
 }
 
 /// The arguments of `explain --both` for one variant's file.
@@ -217,7 +241,11 @@ fn key(varied: &[(String, crate::problem::vary::Grid)], variants: &[Variant]) ->
     }
     let mut out = line(&header);
     for v in variants {
-        let mut row = vec![format!("{}.json", v.stem), v.seed.to_string(), v.redraws.to_string()];
+        let mut row = vec![
+            format!("{}.json", v.stem),
+            v.seed.to_string(),
+            v.redraws.to_string(),
+        ];
         row.extend(v.values.iter().map(|(_, x)| full(*x)));
         row.extend(v.columns.iter().map(|(_, x)| full(*x)));
         out.push_str(&line(&row));

@@ -36,7 +36,11 @@ impl Vary {
     /// The grid of values a draw picks from.
     pub fn grid(&self) -> Grid {
         let (origin, step, last) = match self.step {
-            Some(step) => (self.low, step, ((self.high - self.low) / step + SLACK).floor()),
+            Some(step) => (
+                self.low,
+                step,
+                ((self.high - self.low) / step + SLACK).floor(),
+            ),
             None => {
                 let largest = self.low.abs().max(self.high.abs());
                 let exponent = if largest > 0.0 {
@@ -86,9 +90,7 @@ pub(super) fn read(
     diag: &mut Diagnostics,
 ) -> Option<Vary> {
     let step_path = key_path(path, "step");
-    let step = fields
-        .get("step")
-        .and_then(|v| number(v, &step_path, diag));
+    let step = fields.get("step").and_then(|v| number(v, &step_path, diag));
     let Some(range) = fields.get("vary") else {
         if fields.contains_key("step") {
             diag.hint(
@@ -127,7 +129,11 @@ pub(super) fn read(
         diag.hint(
             &vary_path,
             message,
-            format!("write the low end first and make the ends differ, e.g. [{}, {}]", low.min(high), low.max(high).max(low.min(high) + 1.0)),
+            format!(
+                "write the low end first and make the ends differ, e.g. [{}, {}]",
+                low.min(high),
+                low.max(high).max(low.min(high) + 1.0)
+            ),
         );
         return None;
     }
@@ -162,7 +168,9 @@ pub(super) fn read(
     if valid && vary.grid().count < 2 {
         diag.hint(
             &vary_path,
-            format!("the range [{low}, {high}] holds fewer than two values of 3 significant digits"),
+            format!(
+                "the range [{low}, {high}] holds fewer than two values of 3 significant digits"
+            ),
             "widen the range, or give a finer `step`",
         );
         valid = false;
@@ -170,7 +178,10 @@ pub(super) fn read(
     if valid && vary.grid().count > MAX_GRID {
         diag.hint(
             &step_path,
-            format!("the step {} makes more than {MAX_GRID} values in [{low}, {high}]", vary.grid().step),
+            format!(
+                "the step {} makes more than {MAX_GRID} values in [{low}, {high}]",
+                vary.grid().step
+            ),
             "a coarser step: a grader reads the values a student was given",
         );
         valid = false;

@@ -38,7 +38,10 @@ fn reaction_part(name: &str) -> (&str, &str) {
 }
 
 /// The values of an answer worth reporting: all but a reaction's moments about free axes.
-fn reported<'a>(question: &'a Question, answer: &'a Answer) -> impl Iterator<Item = (&'a str, f64)> {
+fn reported<'a>(
+    question: &'a Question,
+    answer: &'a Answer,
+) -> impl Iterator<Item = (&'a str, f64)> {
     answer
         .values
         .iter()
