@@ -22,6 +22,7 @@ pub fn planar_chain(n: usize) -> Problem {
         value,
         unit: None,
         description: None,
+        vary: None,
     };
     let down = |scale: Expr, frame: usize| VectorExpr {
         terms: vec![(BodyId(frame), 1, -scale)],

@@ -67,6 +67,11 @@ pub enum Command {
     Schema(crate::cmd::schema::Args),
     /// SVG pictures of the configuration and of every free-body diagram of the plan.
     Draw(crate::cmd::draw::Args),
+    /// Every question of `find.questions` answered in full precision, as text or JSON.
+    Answer(crate::cmd::answer::Args),
+    /// Randomized variants of a problem, each with its worked solution and student
+    /// handout, and `key.csv` with every variant's constants and answers.
+    Variants(crate::cmd::variants::Args),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

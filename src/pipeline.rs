@@ -170,6 +170,22 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
     })
 }
 
+/// The answers to the questions of `problem` (`find.questions`), in order, with the
+/// equations of `method` in their numeric form: what the handout's "Answers", `mbd-tutor
+/// answer` and each row of a variants key report.
+///
+/// # Errors
+/// When the equations cannot be derived, or the first question that cannot be answered.
+pub fn answers(
+    problem: &Problem,
+    method: Method,
+) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
+    let derivation = derive(problem, method)?;
+    let solver = Solver::new(problem, &derivation);
+    crate::numeric::answers::answer_all(problem, &solver)
+        .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
+}
+
 /// What is compiled from a derivation's plan, and from the plans made again for special
 /// states where it is singular: the recovery every compiled form of the equations shares.
 struct Plans<T> {

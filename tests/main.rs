@@ -1,6 +1,7 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod agreement;
+mod answer_json;
 mod answers;
 mod bicycle;
 mod checks;
@@ -30,3 +31,4 @@ mod snapshots_by_problem;
 mod speeds;
 mod support;
 mod svg_reader;
+mod variants;

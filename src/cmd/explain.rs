@@ -93,7 +93,7 @@ pub fn student_path(path: &Path) -> PathBuf {
 }
 
 /// Explains one problem into `output`; with `--both`, the student's handout too, beside it.
-fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
+pub fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
     if !args.both {
         return explain_version(args, problem_path, output, args.student);
     }
@@ -151,7 +151,7 @@ fn explain_version(
         solution.answers = if student {
             render::answers::blank(&problem)
         } else {
-            answers(&problem, method)?
+            render::answers::section(&problem, &pipeline::answers(&problem, method)?)
         };
     }
     for plot in &mut solution.simulation.plots {
@@ -227,19 +227,7 @@ fn run_directory(args: &Args) -> Result<(), Error> {
     }
 }
 
-/// The answers to the problem's questions, computed with the equations of `method`.
-fn answers(
-    problem: &crate::problem::Problem,
-    method: crate::equations::Method,
-) -> Result<Vec<render::answers::AnswerView>, Error> {
-    let derivation = crate::pipeline::derive(problem, method)?;
-    let solver = crate::pipeline::Solver::new(problem, &derivation);
-    let answers = crate::numeric::answers::answer_all(problem, &solver)
-        .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))?;
-    Ok(render::answers::section(problem, &answers))
-}
-
-fn file_stem(path: &Path) -> String {
+pub fn file_stem(path: &Path) -> String {
     path.file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "solution".into())

@@ -1,5 +1,6 @@
 //! One file per subcommand; each turns its arguments into work on the pipeline.
 
+pub mod answer;
 pub mod check;
 pub mod draw;
 pub mod explain;
@@ -7,6 +8,7 @@ pub mod linearize;
 pub mod schema;
 pub mod simulate;
 pub mod solve;
+pub mod variants;
 
 use crate::cli::Command;
 use crate::problem::{ProblemError, ProblemErrors};
@@ -26,6 +28,8 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Linearize(args) => linearize::run(args),
         Command::Schema(args) => schema::run(args),
         Command::Draw(args) => draw::run(args),
+        Command::Answer(args) => answer::run(args),
+        Command::Variants(args) => variants::run(args),
     }
 }
 

@@ -15,7 +15,9 @@
 
 use super::simulate::simulate;
 use super::system::System;
-use crate::problem::{Problem, ProblemError, Question, QuestionKind, SimulateSettings};
+use crate::problem::{
+    CoordinateKind, Problem, ProblemError, Question, QuestionKind, SimulateSettings, StateEntry,
+};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{Expr, Symbol};
 use nalgebra::{DMatrix, DVector};
@@ -327,4 +329,81 @@ fn no_root(left: f64, iterations: usize) -> Failure {
         ),
         "start nearer a solution in `at.state`, or check that the unknowns can make these second derivatives zero",
     )
+}
+
+/// The unit of the value `name` of `answer`'s question: what the handout prints after the
+/// number and `mbd-tutor answer` reports. A `value`'s is its `unit`, else the unit of the
+/// coordinate or rate it is, else none; a reaction's force is in N and its moment in N m;
+/// a drive is a torque (an angle's) or a force (a distance's); a steady motion's unknown
+/// has its coordinate's unit, per second for a rate.
+pub fn unit(problem: &Problem, question: &Question, name: &str) -> String {
+    match &question.kind {
+        QuestionKind::Value { expression, .. } => question
+            .unit
+            .clone()
+            .or_else(|| {
+                (0..problem.coordinates.len()).find_map(|i| {
+                    (0..3u8).find_map(|order| {
+                        (*expression == problem.coordinate_expr(i, order))
+                            .then(|| coordinate_unit(problem, i, order))
+                    })
+                })
+            })
+            .unwrap_or_default(),
+        QuestionKind::Reaction { .. } => {
+            if name.contains(".moment.") {
+                "N m".into()
+            } else {
+                "N".into()
+            }
+        }
+        QuestionKind::Drive { coordinate } => match problem.coordinates[*coordinate].kind {
+            CoordinateKind::Angle => "N m".into(),
+            CoordinateKind::Distance => "N".into(),
+        },
+        QuestionKind::Steady { unknowns, .. } => {
+            let entry = unknowns
+                .iter()
+                .find(|e| entry_name(problem, e) == name)
+                .copied()
+                .unwrap_or(StateEntry {
+                    coordinate: 0,
+                    order: 0,
+                });
+            coordinate_unit(problem, entry.coordinate, entry.order)
+        }
+    }
+}
+
+/// `theta` or `theta'`: a steady motion's unknown as [`Answer::values`] names it.
+pub fn entry_name(problem: &Problem, e: &StateEntry) -> String {
+    let name = &problem.coordinates[e.coordinate].name;
+    if e.order == 0 {
+        name.clone()
+    } else {
+        format!("{name}'")
+    }
+}
+
+/// The unit of coordinate `i` differentiated `order` times: its `unit`, else rad or m.
+pub fn coordinate_unit(problem: &Problem, i: usize, order: u8) -> String {
+    let c = &problem.coordinates[i];
+    let base = match (&c.unit, c.kind) {
+        (Some(unit), _) => unit.clone(),
+        (None, CoordinateKind::Angle) => "rad".into(),
+        (None, CoordinateKind::Distance) => "m".into(),
+    };
+    match order {
+        0 => base,
+        1 => format!("{base}/s"),
+        _ => format!("{base}/s^2"),
+    }
+}
+
+/// Whether `name` is a reaction's moment about a free axis: no unknown at all, exactly 0,
+/// so that neither the handout nor `answer` reports it.
+pub fn is_free_moment(question: &Question, name: &str, value: f64) -> bool {
+    matches!(question.kind, QuestionKind::Reaction { .. })
+        && value == 0.0
+        && name.contains(".moment.")
 }

@@ -34,6 +34,8 @@ pub mod schema;
 mod settings;
 mod speeds;
 mod validate;
+pub mod variant;
+pub mod vary;
 
 pub use model::*;
 pub use questions::{Question, QuestionAt, QuestionKind, StateEntry};

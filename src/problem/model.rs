@@ -37,6 +37,8 @@ pub struct Constant {
     pub value: f64,
     pub unit: Option<String>,
     pub description: Option<String>,
+    /// The range a randomized variant draws the value from.
+    pub vary: Option<super::vary::Vary>,
 }
 
 /// What a coordinate measures.

@@ -312,12 +312,12 @@ impl Reader {
             let path = key_path("constants", name);
             self.names
                 .declare(name, Kind::Constant, &path, &mut self.diag);
-            let (number_value, unit, description) = match value {
+            let (number_value, unit, description, vary) = match value {
                 Value::Object(fields) => {
                     check_keys(
                         fields,
                         &path,
-                        &["value", "unit", "description"],
+                        &["value", "unit", "description", "vary", "step"],
                         &mut self.diag,
                     );
                     let v = required(fields, "value", &path, &mut self.diag)
@@ -327,9 +327,10 @@ impl Reader {
                         v,
                         unit,
                         optional_string(fields, "description", &path, &mut self.diag),
+                        super::vary::read(fields, &path, v, &mut self.diag),
                     )
                 }
-                Value::Number(_) => (number(value, &path, &mut self.diag), None, None),
+                Value::Number(_) => (number(value, &path, &mut self.diag), None, None, None),
                 other => {
                     let hint = match other {
                         Value::String(_) => "constants are numbers; an expression belongs where the constant is used",
@@ -340,7 +341,7 @@ impl Reader {
                         format!("expected a number or an object, found {}", kind(other)),
                         hint,
                     );
-                    (None, None, None)
+                    (None, None, None, None)
                 }
             };
             if let Some(v) = number_value {
@@ -351,6 +352,7 @@ impl Reader {
                 value: number_value.unwrap_or(f64::NAN),
                 unit,
                 description,
+                vary,
             });
         }
         out

@@ -2,9 +2,9 @@
 //! its units (the numbers come from [`crate::numeric::answers`]). The student's handout
 //! restates the questions and leaves the answers blank.
 
-use crate::numeric::answers::Answer;
+use crate::numeric::answers::{coordinate_unit, Answer};
 use crate::numeric::format::fixed;
-use crate::problem::{CoordinateKind, Problem, Question, QuestionAt, QuestionKind, StateEntry};
+use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
 use crate::symbolic::print::{latex, latex_unit_vector};
 use serde::Serialize;
 
@@ -34,12 +34,11 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             let mut view = blank_one(problem, question);
             // A reaction's moment about a free axis is no unknown at all: exactly 0, and not
             // worth a line; the note says the others are zero.
-            let is_reaction = matches!(question.kind, QuestionKind::Reaction { .. });
             let shown: Vec<&(String, f64)> = answer
                 .values
                 .iter()
                 .filter(|(name, value)| {
-                    !(is_reaction && *value == 0.0 && name.contains(".moment."))
+                    !crate::numeric::answers::is_free_moment(question, name, *value)
                 })
                 .collect();
             if shown.len() < answer.values.len() {
@@ -84,17 +83,8 @@ fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
     }
 }
 
-fn entry_name(problem: &Problem, e: &StateEntry) -> String {
-    let name = &problem.coordinates[e.coordinate].name;
-    if e.order == 0 {
-        name.clone()
-    } else {
-        format!("{name}'")
-    }
-}
-
 /// The question made from what it asks, when it has no `text`, its expressions as math.
-fn asked(problem: &Problem, question: &Question) -> String {
+pub fn asked(problem: &Problem, question: &Question) -> String {
     match &question.kind {
         QuestionKind::Value { expression, .. } => format!("Find ${}$.", latex(expression)),
         QuestionKind::Reaction { site } => {
@@ -164,21 +154,6 @@ fn number_tex(x: f64) -> String {
     }
 }
 
-/// The unit of coordinate `i` differentiated `order` times.
-fn coordinate_unit(problem: &Problem, i: usize, order: u8) -> String {
-    let c = &problem.coordinates[i];
-    let base = match (&c.unit, c.kind) {
-        (Some(unit), _) => unit.clone(),
-        (None, CoordinateKind::Angle) => "rad".into(),
-        (None, CoordinateKind::Distance) => "m".into(),
-    };
-    match order {
-        0 => base,
-        1 => format!("{base}/s"),
-        _ => format!("{base}/s^2"),
-    }
-}
-
 /// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
 fn unit_tex(unit: &str) -> String {
     match super::units::unit_tex(unit) {
@@ -188,21 +163,13 @@ fn unit_tex(unit: &str) -> String {
 }
 
 fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> String {
-    let given = question.unit.clone();
-    let (symbol, unit) = match &question.kind {
+    let unit = crate::numeric::answers::unit(problem, question, name);
+    let symbol = match &question.kind {
         QuestionKind::Value { expression, .. } => {
-            let unit = given.or_else(|| {
-                problem.coordinates.iter().enumerate().find_map(|(i, _)| {
-                    (0..3u8).find_map(|order| {
-                        (*expression == problem.coordinate_expr(i, order))
-                            .then(|| coordinate_unit(problem, i, order))
-                    })
-                })
-            });
             // The question's own symbol, else the expression when it reads at a glance; a
             // long expression is restated by the question, so the answer is its number.
             let written = latex(expression);
-            let symbol = match question
+            match question
                 .symbol
                 .as_deref()
                 .and_then(super::safe_math::checked)
@@ -210,8 +177,7 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
                 Some(symbol) => symbol,
                 None if written.len() <= LONGEST_RESTATED => written,
                 None => String::new(),
-            };
-            (symbol, unit.unwrap_or_default())
+            }
         }
         QuestionKind::Reaction { site } => {
             // `O.force.x`: the component along the parent's unit vector.
@@ -224,41 +190,24 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
                 "y" => 1,
                 _ => 2,
             };
-            let (letter, unit) = if kind == "force" {
-                ("F", "N")
-            } else {
-                ("M", "N m")
-            };
-            (
-                format!(
-                    "\\mathbf{{{letter}}}^{{\\mathrm{{{}}}}} \\cdot {}",
-                    problem.site_name(*site).replace('_', "\\_"),
-                    latex_unit_vector(&parent, axis_index)
-                ),
-                unit.to_string(),
+            let letter = if kind == "force" { "F" } else { "M" };
+            format!(
+                "\\mathbf{{{letter}}}^{{\\mathrm{{{}}}}} \\cdot {}",
+                problem.site_name(*site).replace('_', "\\_"),
+                latex_unit_vector(&parent, axis_index)
             )
         }
-        QuestionKind::Drive { coordinate } => {
-            // A torque drives an angle, a force a distance.
-            let unit = match problem.coordinates[*coordinate].kind {
-                CoordinateKind::Angle => "N m",
-                CoordinateKind::Distance => "N",
-            };
-            (drive_tex(problem, *coordinate), unit.to_string())
-        }
+        QuestionKind::Drive { coordinate } => drive_tex(problem, *coordinate),
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()
-                .find(|e| entry_name(problem, e) == name)
+                .find(|e| crate::numeric::answers::entry_name(problem, e) == name)
                 .copied()
                 .unwrap_or(StateEntry {
                     coordinate: 0,
                     order: 0,
                 });
-            (
-                latex(&problem.coordinate_expr(entry.coordinate, entry.order)),
-                coordinate_unit(problem, entry.coordinate, entry.order),
-            )
+            latex(&problem.coordinate_expr(entry.coordinate, entry.order))
         }
     };
     // Round-off of a zero (1e-13 rad/s²) is answered as the zero it is.

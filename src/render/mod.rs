@@ -6,6 +6,7 @@
 //! one of the templates in `templates/`, which are embedded in the binary; an instructor
 //! can restyle a handout by passing a directory of replacements.
 
+pub mod answer_sheet;
 pub mod answers;
 pub mod build;
 mod by_speed;

@@ -77,7 +77,7 @@ class Problem:
         self.constants = {}
         for name, c in (data.get("constants") or {}).items():
             if isinstance(c, dict):
-                _keys(c, f"constants.{name}", {"value"}, {"unit", "description"})
+                _keys(c, f"constants.{name}", {"value"}, {"unit", "description", "vary", "step"})
                 c = c["value"]
             self.constants[name] = float(c)
         for name, value in (overrides or {}).items():

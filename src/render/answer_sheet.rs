@@ -1,0 +1,194 @@
+//! The answers of `find.questions` without a handout: JSON and text for `mbd-tutor
+//! answer`, and the columns of a variants key. The numbers are the f64s computed, printed
+//! in full (the shortest text that reads back as the same f64), not rounded as a handout
+//! prints them.
+
+use crate::numeric::answers::{self, Answer};
+use crate::problem::{Problem, Question, QuestionKind};
+use serde_json::{Map, Value};
+use std::fmt::Write;
+
+/// What a question asks for, as `answer --format json` names it.
+fn kind_name(question: &Question) -> &'static str {
+    match question.kind {
+        QuestionKind::Value { .. } => "value",
+        QuestionKind::Reaction { .. } => "reaction",
+        QuestionKind::Drive { .. } => "drive",
+        QuestionKind::Steady { .. } => "steady",
+    }
+}
+
+/// `x` as JSON: a number, or `null` when not finite (never, for an answer).
+fn number(x: f64) -> Value {
+    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
+}
+
+/// `x` in full precision: the shortest decimal that reads back as the same f64 (as JSON
+/// prints it, so that a key's cell and `answer --format json` agree character for character).
+pub fn full(x: f64) -> String {
+    number(x).to_string()
+}
+
+/// A reaction value's place: `("force" | "moment", axis)` from `O.force.x`.
+fn reaction_part(name: &str) -> (&str, &str) {
+    let mut parts = name.rsplitn(3, '.');
+    let axis = parts.next().unwrap_or("x");
+    let kind = parts.next().unwrap_or("force");
+    (kind, axis)
+}
+
+/// The values of an answer worth reporting: all but a reaction's moments about free axes.
+fn reported<'a>(
+    question: &'a Question,
+    answer: &'a Answer,
+) -> impl Iterator<Item = (&'a str, f64)> {
+    answer
+        .values
+        .iter()
+        .filter(|(name, x)| !answers::is_free_moment(question, name, *x))
+        .map(|(name, x)| (name.as_str(), *x))
+}
+
+/// One question's answer as JSON (see `docs/answer-and-variants.md`).
+fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer) -> Value {
+    let mut out = Map::new();
+    out.insert("index".into(), index.into());
+    let text = question
+        .text
+        .clone()
+        .unwrap_or_else(|| super::answers::asked(problem, question));
+    out.insert("text".into(), text.into());
+    out.insert("kind".into(), kind_name(question).into());
+    let unit_of = |name: &str| answers::unit(problem, question, name);
+    match &question.kind {
+        QuestionKind::Value { .. } | QuestionKind::Drive { .. } => {
+            if let Some((name, x)) = answer.values.first() {
+                out.insert("value".into(), number(*x));
+                out.insert("unit".into(), unit_of(name).into());
+            }
+        }
+        QuestionKind::Reaction { .. } => {
+            let mut components = Map::new();
+            let mut moment = Map::new();
+            for (name, x) in reported(question, answer) {
+                match reaction_part(name) {
+                    ("moment", axis) => moment.insert(axis.into(), number(x)),
+                    (_, axis) => components.insert(axis.into(), number(x)),
+                };
+            }
+            out.insert("unit".into(), "N".into());
+            if !moment.is_empty() {
+                components.insert("moment".into(), Value::Object(moment));
+                out.insert("moment_unit".into(), "N m".into());
+            }
+            out.insert("components".into(), Value::Object(components));
+        }
+        QuestionKind::Steady { .. } => {
+            let unknowns = answer
+                .values
+                .iter()
+                .map(|(name, x)| (name.clone(), number(*x)))
+                .collect();
+            let units = answer
+                .values
+                .iter()
+                .map(|(name, _)| (name.clone(), Value::from(unit_of(name))))
+                .collect();
+            out.insert("unknowns".into(), Value::Object(unknowns));
+            out.insert("units".into(), Value::Object(units));
+            if let Some((left, iterations)) = answer.residual {
+                out.insert("residual".into(), number(left));
+                out.insert("iterations".into(), iterations.into());
+            }
+        }
+    }
+    out.insert("state".into(), Value::Object(state(problem, answer)));
+    out.insert("time".into(), number(answer.time));
+    Value::Object(out)
+}
+
+/// The state where an answer holds: every coordinate, then every rate (`theta'`).
+fn state(problem: &Problem, answer: &Answer) -> Map<String, Value> {
+    let coordinates = problem.coordinates.iter().zip(&answer.q);
+    let rates = problem.coordinates.iter().zip(&answer.rates);
+    coordinates
+        .map(|(c, x)| (c.name.clone(), number(*x)))
+        .chain(rates.map(|(c, x)| (format!("{}'", c.name), number(*x))))
+        .collect()
+}
+
+/// `{ "answers": [ … ] }`, pretty-printed, with a final newline.
+pub fn json(problem: &Problem, answers: &[Answer]) -> String {
+    let records: Vec<Value> = problem
+        .questions
+        .iter()
+        .zip(answers)
+        .enumerate()
+        .map(|(i, (question, answer))| record(problem, i, question, answer))
+        .collect();
+    let mut map = Map::new();
+    map.insert("answers".into(), Value::Array(records));
+    let mut text = serde_json::to_string_pretty(&Value::Object(map)).unwrap_or_default();
+    text.push('\n');
+    text
+}
+
+/// The answers for a reader: each question's index, kind and where it is asked, its text,
+/// then each value found with its unit.
+pub fn text(problem: &Problem, answers: &[Answer]) -> String {
+    let mut out = String::new();
+    for (i, (question, answer)) in problem.questions.iter().zip(answers).enumerate() {
+        let how = if answer.simulated {
+            ", simulated from the initial state"
+        } else {
+            ""
+        };
+        let _ = writeln!(
+            out,
+            "[{i}] {} at t = {} s{how}",
+            kind_name(question),
+            full(answer.time)
+        );
+        let text = question
+            .text
+            .clone()
+            .unwrap_or_else(|| super::answers::asked(problem, question));
+        let _ = writeln!(out, "    {}", text.replace('\n', " "));
+        for (name, x) in reported(question, answer) {
+            let unit = answers::unit(problem, question, name);
+            let _ = writeln!(out, "    {name} = {} {unit}", full(x));
+        }
+    }
+    out
+}
+
+/// The key's answer columns of one problem: each question's values named by its `symbol`,
+/// else its index; a reaction's components as `NAME.x`, `NAME.moment.z`, a steady
+/// motion's unknowns as `NAME.psi'`. The same numbers as [`json`] gives.
+pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> {
+    let mut columns = Vec::new();
+    for (i, (question, answer)) in problem.questions.iter().zip(answers).enumerate() {
+        let base = question.symbol.clone().unwrap_or_else(|| i.to_string());
+        for (name, x) in reported(question, answer) {
+            let column = match &question.kind {
+                QuestionKind::Value { .. } | QuestionKind::Drive { .. } => base.clone(),
+                QuestionKind::Reaction { .. } => match reaction_part(name) {
+                    ("moment", axis) => format!("{base}.moment.{axis}"),
+                    (_, axis) => format!("{base}.{axis}"),
+                },
+                QuestionKind::Steady { .. } => format!("{base}.{name}"),
+            };
+            columns.push((column, x));
+        }
+    }
+    columns
+}
+
+/// A CSV cell: quoted when it holds a comma, a quote or a line break (RFC 4180).
+pub fn csv_cell(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
