@@ -86,6 +86,68 @@ pub fn with_values(raw: &Value, values: &[(String, f64)]) -> Value {
         fields.shift_remove("vary");
         fields.shift_remove("step");
     }
+    let originals: Vec<(String, f64, f64)> = values
+        .iter()
+        .filter_map(|(name, x)| {
+            let old = raw.pointer(&format!("/constants/{name}/value"))?.as_f64()?;
+            Some((name.clone(), old, *x))
+        })
+        .collect();
+    if let Some(Value::String(text)) = out.get_mut("statement") {
+        *text = restated(text, &originals);
+    }
+    if let Some(questions) = out
+        .pointer_mut("/find/questions")
+        .and_then(Value::as_array_mut)
+    {
+        for question in questions {
+            if let Some(Value::String(text)) = question.get_mut("text") {
+                *text = restated(text, &originals);
+            }
+        }
+    }
+    out
+}
+
+/// `text` with every `$NAME = VALUE$` that gives a varied constant its original value
+/// written with the drawn one, so that a variant's statement ("Given $m = 0.5$ kg") agrees
+/// with its constants. NAME as the problem's name (`I3`) or as LaTeX prints it (`I_3`,
+/// `I_{3}`); anything else in the text is left as written.
+fn restated(text: &str, values: &[(String, f64, f64)]) -> String {
+    let mut text = text.to_string();
+    for (name, old, new) in values {
+        let printed = crate::symbolic::print::latex_name(name);
+        let plain = printed.replace(['{', '}'], "");
+        for symbol in [name.as_str(), printed.as_str(), plain.as_str()] {
+            text = restate_one(&text, symbol, *old, *new);
+        }
+    }
+    text
+}
+
+fn restate_one(text: &str, symbol: &str, old: f64, new: f64) -> String {
+    let opening = format!("${symbol} = ");
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find(&opening) {
+        let after = &rest[at + opening.len()..];
+        let number_length = after
+            .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+            .unwrap_or(after.len());
+        let closes = after[number_length..].starts_with('$');
+        let matches = closes
+            && after[..number_length]
+                .parse::<f64>()
+                .is_ok_and(|x| (x - old).abs() <= 1e-12 * old.abs().max(1.0));
+        out.push_str(&rest[..at + opening.len()]);
+        if matches {
+            out.push_str(&new.to_string());
+        } else {
+            out.push_str(&after[..number_length]);
+        }
+        rest = &after[number_length..];
+    }
+    out.push_str(rest);
     out
 }
 
@@ -100,6 +162,15 @@ mod tests {
         let mut random = SplitMix64::new(1_234_567);
         assert_eq!(random.next_u64(), 6_457_827_717_110_365_317);
         assert_eq!(random.next_u64(), 3_203_168_211_198_807_973);
+    }
+
+    #[test]
+    fn a_statement_gives_the_drawn_values() {
+        let values = [("m".to_string(), 0.5, 0.43), ("I3".to_string(), 4e-4, 5e-4)];
+        assert_eq!(
+            restated("Given $m = 0.5$ kg, $m = 2$ and $I_3 = 0.0004$, $mm = 0.5$", &values),
+            "Given $m = 0.43$ kg, $m = 2$ and $I_3 = 0.0005$, $mm = 0.5$"
+        );
     }
 
     #[test]
