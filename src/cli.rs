@@ -67,6 +67,8 @@ pub enum Command {
     Schema(crate::cmd::schema::Args),
     /// SVG pictures of the configuration and of every free-body diagram of the plan.
     Draw(crate::cmd::draw::Args),
+    /// Serve the HTML worked solution on a local web server, rebuilt when the file changes.
+    Serve(crate::cmd::serve::Args),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

@@ -145,6 +145,36 @@ fn explain_version(
     output: Option<&Path>,
     student: bool,
 ) -> Result<(), Error> {
+    let (text, solution) = rendered(args, problem_path, output, student)?;
+    if let Some(path) = output {
+        // The plots first, so that a document never refers to a plot that is not there.
+        let directory = path.parent().unwrap_or(Path::new(""));
+        for plot in solution
+            .simulation
+            .plots
+            .iter()
+            .filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty())
+        {
+            write_output(
+                Some(&directory.join(&plot.svg_file)),
+                plot.image_svg.as_bytes(),
+            )?;
+        }
+    }
+    write_output(output, text.as_bytes())
+}
+
+/// The text of one problem's handout in the chosen format, and the solution it was made
+/// from (whose plots go beside `output`, when there is one). `serve` shows the same page.
+///
+/// # Errors
+/// An invalid problem, equations that cannot be solved, a template that fails.
+pub fn rendered(
+    args: &Args,
+    problem_path: &Path,
+    output: Option<&Path>,
+    student: bool,
+) -> Result<(String, Solution), Error> {
     let common = Common {
         problem: problem_path.to_path_buf(),
         ..args.common.clone()
@@ -197,22 +227,7 @@ fn explain_version(
         args.templates.as_deref(),
         student,
     )?;
-    if let Some(path) = output {
-        // The plots first, so that a document never refers to a plot that is not there.
-        let directory = path.parent().unwrap_or(Path::new(""));
-        for plot in solution
-            .simulation
-            .plots
-            .iter()
-            .filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty())
-        {
-            write_output(
-                Some(&directory.join(&plot.svg_file)),
-                plot.image_svg.as_bytes(),
-            )?;
-        }
-    }
-    write_output(output, text.as_bytes())
+    Ok((text, solution))
 }
 
 /// Explains every `*.json` directly in the directory, in name order, into `-o DIR`,

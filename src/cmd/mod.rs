@@ -5,6 +5,7 @@ pub mod draw;
 pub mod explain;
 pub mod linearize;
 pub mod schema;
+pub mod serve;
 pub mod simulate;
 pub mod solve;
 
@@ -26,6 +27,7 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Linearize(args) => linearize::run(args),
         Command::Schema(args) => schema::run(args),
         Command::Draw(args) => draw::run(args),
+        Command::Serve(args) => serve::run(args),
     }
 }
 
