@@ -150,7 +150,12 @@ pub fn motion_svg(args: &Args) -> Result<String, Error> {
     })?;
     let duration = args.duration.unwrap_or(problem.simulate.duration);
     motion::frame_count(duration, args.fps)?;
-    let derivation = crate::pipeline::derive_for_handout(&problem, super::method(args.common.method))?;
+    let derivation =
+        crate::pipeline::derive_for_handout(&problem, super::method(args.common.method))?;
     let frames = motion::frames(&problem, &derivation, duration, args.fps)?;
-    Ok(motion_svg::export(&motion::motion(&derivation, &frames, view)))
+    Ok(motion_svg::export(&motion::motion(
+        &derivation,
+        &frames,
+        view,
+    )))
 }

@@ -195,7 +195,12 @@ pub fn rendered(
         }
         setup
     } else {
-        render::build::solution(&pipeline::work(&problem, method)?)
+        let worked = pipeline::work(&problem, method)?;
+        let mut solution = render::build::solution(&worked);
+        if args.format == FormatArg::Html {
+            with_motion(&mut solution, &problem, &worked.derivation);
+        }
+        solution
     };
     if args.verbose {
         solution.plan.show_every_rejected();
@@ -228,6 +233,32 @@ pub fn rendered(
         student,
     )?;
     Ok((text, solution))
+}
+
+/// Step 6's motion for the HTML page, over the simulation's duration at the default frame
+/// rate; left out, with a note, when it cannot be made.
+fn with_motion(
+    solution: &mut Solution,
+    problem: &crate::problem::Problem,
+    derivation: &crate::equations::Derivation,
+) {
+    use render::draw::{motion, motion_svg};
+    let duration = problem.simulate.duration;
+    match motion::frames(problem, derivation, duration, motion::DEFAULT_FPS) {
+        Ok(frames) => {
+            let drawn = motion::motion(derivation, &frames, render::draw::View::Isometric);
+            solution.simulation.motion_duration = frames.last().map_or(duration, |f| f.t);
+            solution.simulation.motion_svg_inline =
+                motion_svg::export(&drawn).trim_end().to_string();
+            solution.simulation.time_axis = render::plot::x_axis_span();
+        }
+        Err(e) => {
+            let note = &mut solution.simulation.note;
+            if note.is_empty() {
+                *note = format!("The motion could not be animated: {}", e.one_line());
+            }
+        }
+    }
 }
 
 /// Explains every `*.json` directly in the directory, in name order, into `-o DIR`,

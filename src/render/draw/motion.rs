@@ -86,8 +86,8 @@ pub fn frames(
         max_rows: count + 1,
         ..Limits::default()
     };
-    let run = simulate_with_limits(&solver, &q0, &rates0, &settings, &limits)
-        .map_err(Error::Solve)?;
+    let run =
+        simulate_with_limits(&solver, &q0, &rates0, &settings, &limits).map_err(Error::Solve)?;
     let n = run.coordinates;
     let frames: Vec<Frame> = run
         .rows
@@ -110,7 +110,10 @@ pub enum Look {
     /// A wheel of this radius about the sheet's origin, with spokes that show it turning.
     Disc(f64),
     /// Rods from the mass centre to each of the body's points (sheet coordinates).
-    Rods { center: [f64; 2], points: Vec<[f64; 2]> },
+    Rods {
+        center: [f64; 2],
+        points: Vec<[f64; 2]>,
+    },
     /// A ball at the sheet's origin (the mass centre), with light rods to these points.
     Particle { rods: Vec<[f64; 2]> },
 }
@@ -177,7 +180,9 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
     let problem = model.problem;
     let first = &frames[0];
     let still = super::draw(derivation, first.t, &first.q, &first.rates, None, view);
-    let still_rows = still.first().map_or(view.rows(false), |d| d.picture.projection.a);
+    let still_rows = still
+        .first()
+        .map_or(view.rows(false), |d| d.picture.projection.a);
     let numbers = Numbers::new(model, first.t, &first.q, &first.rates);
     let sheets: Vec<Sheet> = problem.body_ids().map(|b| sheet(&numbers, b)).collect();
     let mut points: Vec<(String, bool)> = Vec::new();
@@ -297,7 +302,9 @@ fn sheet(n: &Numbers, body: BodyId) -> Sheet {
     let mass = n.scalar(&body_data.mass);
     let inertia = match &body_data.inertia {
         crate::problem::Inertia::Planar(i) => n.scalar(i),
-        crate::problem::Inertia::Spatial(m) => (0..3).map(|k| n.scalar(&m[k][k])).fold(0.0, f64::max),
+        crate::problem::Inertia::Spatial(m) => {
+            (0..3).map(|k| n.scalar(&m[k][k])).fold(0.0, f64::max)
+        }
     };
     if let [joint] = points[..] {
         // A uniform rod on one joint (I = m d²/3 within 1 %): drawn to its far end.
@@ -391,9 +398,7 @@ fn place(derivation: &Derivation, sheets: &[Sheet], frame: &Frame) -> Placed {
         .loads
         .iter()
         .filter_map(|load| match &load.kind {
-            LoadKind::Spring { between, .. } => {
-                Some(between.map(|p| n.vector(&model.position(p))))
-            }
+            LoadKind::Spring { between, .. } => Some(between.map(|p| n.vector(&model.position(p)))),
             _ => None,
         })
         .collect();

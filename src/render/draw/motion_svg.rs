@@ -63,7 +63,14 @@ pub fn compose([e, f, theta, skew, sx, sy]: [f64; 6]) -> [f64; 6] {
     let (sin, cos) = theta.to_radians().sin_cos();
     let k = skew.to_radians().tan();
     // R · K · S with K = [[1, k], [0, 1]], S = diag(sx, sy).
-    [cos * sx, sin * sx, (cos * k - sin) * sy, (sin * k + cos) * sy, e, f]
+    [
+        cos * sx,
+        sin * sx,
+        (cos * k - sin) * sy,
+        (sin * k + cos) * sy,
+        e,
+        f,
+    ]
 }
 
 /// The animation's common attributes: its length, its key times, looping.
@@ -188,7 +195,11 @@ fn ground(out: &mut String, motion: &Motion) {
     }
     for &i in &motion.rolling {
         let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
-        let _ = writeln!(out, "<path d=\"{}\" stroke-dasharray=\"6 3\"/>", polyline(&track));
+        let _ = writeln!(
+            out,
+            "<path d=\"{}\" stroke-dasharray=\"6 3\"/>",
+            polyline(&track)
+        );
     }
     out.push_str("</g>\n");
 }
@@ -196,7 +207,13 @@ fn ground(out: &mut String, motion: &Motion) {
 fn polyline(points: &[P2]) -> String {
     let mut d = String::new();
     for (i, [x, y]) in points.iter().enumerate() {
-        let _ = write!(d, "{}{} {}", if i == 0 { "M" } else { "L" }, num(*x), num(*y));
+        let _ = write!(
+            d,
+            "{}{} {}",
+            if i == 0 { "M" } else { "L" },
+            num(*x),
+            num(*y)
+        );
     }
     d
 }
@@ -327,7 +344,12 @@ fn zigzag(a: P2, b: P2) -> Vec<P2> {
     let d = [b[0] - a[0], b[1] - a[1]];
     let length = d[0].hypot(d[1]).max(1e-9);
     let across = [-d[1] / length * 6.0, d[0] / length * 6.0];
-    let at = |s: f64, side: f64| [a[0] + d[0] * s + across[0] * side, a[1] + d[1] * s + across[1] * side];
+    let at = |s: f64, side: f64| {
+        [
+            a[0] + d[0] * s + across[0] * side,
+            a[1] + d[1] * s + across[1] * side,
+        ]
+    };
     let mut out = vec![a, at(0.15, 0.0)];
     for k in 0..12 {
         let s = 0.15 + 0.7 * (f64::from(k) + 0.5) / 12.0;
@@ -400,6 +422,9 @@ mod tests {
 
     #[test]
     fn a_spring_has_as_many_points_however_long() {
-        assert_eq!(zigzag([0.0, 0.0], [1.0, 0.0]).len(), zigzag([0.0, 0.0], [100.0, 50.0]).len());
+        assert_eq!(
+            zigzag([0.0, 0.0], [1.0, 0.0]).len(),
+            zigzag([0.0, 0.0], [100.0, 50.0]).len()
+        );
     }
 }
