@@ -1,6 +1,7 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod agreement;
+mod browser;
 mod answers;
 mod bicycle;
 mod checks;
