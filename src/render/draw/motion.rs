@@ -155,6 +155,9 @@ pub struct Motion {
     pub sheets: Vec<Sheet>,
     /// The ids of the marked points (`cm-B`, `joint-J`) and whether each is a mass centre.
     pub points: Vec<(String, bool)>,
+    /// Per marked point, the words that follow it: a body's name beside its mass centre,
+    /// a joint's coordinates beside the joint.
+    pub captions: Vec<Option<String>>,
     /// The joints fixed to `N` (ids into `points`), drawn with a support.
     pub grounded: Vec<usize>,
     /// Rolling contacts' points (ids into `points`), whose track is drawn as the ground.
@@ -188,6 +191,7 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
     let mut points: Vec<(String, bool)> = Vec::new();
     let mut grounded = Vec::new();
     let mut rolling = Vec::new();
+    let mut captions = Vec::new();
     for site in &model.sites {
         if site.parent == site.child {
             continue;
@@ -204,9 +208,14 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
             }
         }
         points.push((format!("joint-{}", site.name), false));
+        captions.push(match site.kind {
+            crate::mechanics::sites::SiteKind::Joint(j) => coordinates_of(problem, j),
+            _ => None,
+        });
     }
     for b in problem.body_ids() {
         points.push((format!("cm-{}", problem.body_name(b)), true));
+        captions.push(Some(problem.body_name(b).to_string()));
     }
     let placed: Vec<Placed> = frames
         .iter()
@@ -217,12 +226,27 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         title: problem.title.clone(),
         sheets,
         points,
+        captions,
         grounded,
         rolling,
         frames: placed,
         projection,
         size,
     }
+}
+
+/// A joint's coordinates as the pictures print them (`θ`, `q₁, q₂`), if it has any.
+fn coordinates_of(problem: &Problem, joint: usize) -> Option<String> {
+    let names: Vec<String> = problem.joints[joint]
+        .coordinates
+        .iter()
+        .map(|&c| {
+            crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(
+                &problem.coordinates[c].name,
+            ))
+        })
+        .collect();
+    (!names.is_empty()).then(|| names.join(", "))
 }
 
 /// A body's sheet and look, from its points at the first frame.

@@ -384,12 +384,20 @@ fn points(out: &mut String, motion: &Motion, timing: &Timing) {
         timing.animate(out, "cx", &xs);
         timing.animate(out, "cy", &ys);
         out.push_str("</circle>\n");
-        if let Some(name) = id.strip_prefix("cm-").filter(|_| *center) {
-            let xs: Vec<String> = track.iter().map(|q| num(q[0] + 14.0)).collect();
-            let ys: Vec<String> = track.iter().map(|q| num(q[1] - 8.0)).collect();
+        if let Some(name) = &motion.captions[i] {
+            // Mass centres' names above right, joints' coordinates below right.
+            let (dx, dy) = if *center { (14.0, -8.0) } else { (16.0, 16.0) };
+            let xs: Vec<String> = track.iter().map(|q| num(q[0] + dx)).collect();
+            let ys: Vec<String> = track.iter().map(|q| num(q[1] + dy)).collect();
+            let class = if *center { "label" } else { "label coordinate" };
+            let fill = if *center {
+                String::new()
+            } else {
+                format!(" fill=\"{}\"", color(Ink::Grey))
+            };
             let _ = writeln!(
                 out,
-                "<text class=\"label\" x=\"{}\" y=\"{}\">{}",
+                "<text class=\"{class}\"{fill} x=\"{}\" y=\"{}\">{}",
                 xs[0],
                 ys[0],
                 xml(name)
