@@ -1,9 +1,9 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod agreement;
-mod browser;
 mod answers;
 mod bicycle;
+mod browser;
 mod checks;
 mod collected_constants;
 mod compact;

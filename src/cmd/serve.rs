@@ -71,10 +71,13 @@ impl Site {
 /// Runs `mbd-tutor serve` until SIGINT or SIGTERM.
 ///
 /// # Errors
-/// A usage error when the address cannot be listened on.
+/// [`Error::Io`] when the address cannot be listened on (a port in use, an unknown host).
 pub fn run(args: Args) -> Result<(), Error> {
-    let server = tiny_http::Server::http((args.host.as_str(), args.port))
-        .map_err(|e| Error::Usage(format!("cannot listen on {}:{}: {e}", args.host, args.port)))?;
+    let server =
+        tiny_http::Server::http((args.host.as_str(), args.port)).map_err(|e| Error::Io {
+            path: PathBuf::from(format!("{}:{}", args.host, args.port)),
+            source: std::io::Error::other(e.to_string()),
+        })?;
     let port = server
         .server_addr()
         .to_ip()
