@@ -72,6 +72,8 @@ pub enum Command {
     /// Randomized variants of a problem, each with its worked solution and student
     /// handout, and `key.csv` with every variant's constants and answers.
     Variants(crate::cmd::variants::Args),
+    /// Serve the HTML worked solution on a local web server, rebuilt when the file changes.
+    Serve(crate::cmd::serve::Args),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

@@ -4,6 +4,7 @@ mod agreement;
 mod answer_json;
 mod answers;
 mod bicycle;
+mod browser;
 mod checks;
 mod collected_constants;
 mod compact;

@@ -26,6 +26,15 @@ pub struct Args {
     /// Also write each picture as a TikZ picture, NAME.tex.
     #[arg(long)]
     pub tikz: bool,
+    /// Also write motion.svg: the configuration over the simulated motion, animated.
+    #[arg(long)]
+    pub animate: bool,
+    /// With --animate: seconds of motion; default the problem's `simulate.duration` (5 s).
+    #[arg(long, requires = "animate")]
+    pub duration: Option<f64>,
+    /// With --animate: frames per second.
+    #[arg(long, requires = "animate", default_value_t = crate::render::draw::motion::DEFAULT_FPS)]
+    pub fps: f64,
 }
 
 /// The derivation whose plan the pictures show and the q'' at the state, if solvable. The
@@ -101,6 +110,11 @@ pub fn run(args: Args) -> Result<(), Error> {
         )));
     }
     let drawings = drawings(&args)?;
+    let motion = if args.animate {
+        Some(motion_svg(&args)?)
+    } else {
+        None
+    };
     std::fs::create_dir_all(&directory).map_err(|source| Error::Io {
         path: directory.clone(),
         source,
@@ -113,5 +127,35 @@ pub fn run(args: Args) -> Result<(), Error> {
             crate::output::write_output(Some(&path), drawing.tikz().as_bytes())?;
         }
     }
+    if let Some(svg) = motion {
+        crate::output::write_output(Some(&directory.join("motion.svg")), svg.as_bytes())?;
+    }
     Ok(())
+}
+
+/// `motion.svg`: the simulated motion from the problem's initial state, animated.
+///
+/// # Errors
+/// A usage error for a bad `--duration`, `--fps` or `--view`, or too many frames (before
+/// any work); an invalid problem; a simulation that cannot start.
+pub fn motion_svg(args: &Args) -> Result<String, Error> {
+    use crate::render::draw::{motion, motion_svg};
+    let view = match &args.view {
+        Some(text) => View::parse(text).map_err(Error::Usage)?,
+        None => View::Isometric,
+    };
+    let problem = super::load_with_overrides(&Common {
+        output: None,
+        ..args.common.clone()
+    })?;
+    let duration = args.duration.unwrap_or(problem.simulate.duration);
+    motion::frame_count(duration, args.fps)?;
+    let derivation =
+        crate::pipeline::derive_for_handout(&problem, super::method(args.common.method))?;
+    let frames = motion::frames(&problem, &derivation, duration, args.fps)?;
+    Ok(motion_svg::export(&motion::motion(
+        &derivation,
+        &frames,
+        view,
+    )))
 }

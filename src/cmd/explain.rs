@@ -114,6 +114,36 @@ fn explain_version(
     output: Option<&Path>,
     student: bool,
 ) -> Result<(), Error> {
+    let (text, solution) = rendered(args, problem_path, output, student)?;
+    if let Some(path) = output {
+        // The plots first, so that a document never refers to a plot that is not there.
+        let directory = path.parent().unwrap_or(Path::new(""));
+        for plot in solution
+            .simulation
+            .plots
+            .iter()
+            .filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty())
+        {
+            write_output(
+                Some(&directory.join(&plot.svg_file)),
+                plot.image_svg.as_bytes(),
+            )?;
+        }
+    }
+    write_output(output, text.as_bytes())
+}
+
+/// The text of one problem's handout in the chosen format, and the solution it was made
+/// from (whose plots go beside `output`, when there is one). `serve` shows the same page.
+///
+/// # Errors
+/// An invalid problem, equations that cannot be solved, a template that fails.
+pub fn rendered(
+    args: &Args,
+    problem_path: &Path,
+    output: Option<&Path>,
+    student: bool,
+) -> Result<(String, Solution), Error> {
     let common = Common {
         problem: problem_path.to_path_buf(),
         ..args.common.clone()
@@ -134,7 +164,12 @@ fn explain_version(
         }
         setup
     } else {
-        render::build::solution(&pipeline::work(&problem, method)?)
+        let worked = pipeline::work(&problem, method)?;
+        let mut solution = render::build::solution(&worked);
+        if args.format == FormatArg::Html {
+            with_motion(&mut solution, &problem, &worked.derivation);
+        }
+        solution
     };
     if args.verbose {
         solution.plan.show_every_rejected();
@@ -166,22 +201,33 @@ fn explain_version(
         args.templates.as_deref(),
         student,
     )?;
-    if let Some(path) = output {
-        // The plots first, so that a document never refers to a plot that is not there.
-        let directory = path.parent().unwrap_or(Path::new(""));
-        for plot in solution
-            .simulation
-            .plots
-            .iter()
-            .filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty())
-        {
-            write_output(
-                Some(&directory.join(&plot.svg_file)),
-                plot.image_svg.as_bytes(),
-            )?;
+    Ok((text, solution))
+}
+
+/// Step 6's motion for the HTML page, over the simulation's duration at the default frame
+/// rate; left out, with a note, when it cannot be made.
+fn with_motion(
+    solution: &mut Solution,
+    problem: &crate::problem::Problem,
+    derivation: &crate::equations::Derivation,
+) {
+    use render::draw::{motion, motion_svg};
+    let duration = problem.simulate.duration;
+    match motion::frames(problem, derivation, duration, motion::DEFAULT_FPS) {
+        Ok(frames) => {
+            let drawn = motion::motion(derivation, &frames, render::draw::View::Isometric);
+            solution.simulation.motion_duration = frames.last().map_or(duration, |f| f.t);
+            solution.simulation.motion_svg_inline =
+                motion_svg::export(&drawn).trim_end().to_string();
+            solution.simulation.time_axis = render::plot::x_axis_span();
+        }
+        Err(e) => {
+            let note = &mut solution.simulation.note;
+            if note.is_empty() {
+                *note = format!("The motion could not be animated: {}", e.one_line());
+            }
         }
     }
-    write_output(output, text.as_bytes())
 }
 
 /// Explains every `*.json` directly in the directory, in name order, into `-o DIR`,

@@ -6,6 +6,7 @@ pub mod draw;
 pub mod explain;
 pub mod linearize;
 pub mod schema;
+pub mod serve;
 pub mod simulate;
 pub mod solve;
 pub mod variants;
@@ -30,6 +31,7 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Draw(args) => draw::run(args),
         Command::Answer(args) => answer::run(args),
         Command::Variants(args) => variants::run(args),
+        Command::Serve(args) => serve::run(args),
     }
 }
 

@@ -505,6 +505,13 @@ pub struct Simulation {
     pub plots_in_row: usize,
     /// A sentence about the outcome (plain text; may be empty).
     pub note: String,
+    /// The motion as an animated SVG element, for the HTML page (empty otherwise).
+    pub motion_svg_inline: String,
+    /// The motion's length in seconds, and where the plots' time axis runs (fractions of
+    /// their width), for the page's slider and the plots' markers.
+    pub motion_duration: f64,
+    /// See `motion_duration`.
+    pub time_axis: [f64; 2],
 }
 
 /// One confirmation check.

@@ -169,6 +169,20 @@ pub(super) type Chart<'a, 'b> =
 
 /// A chart on `area` with its axes drawn as every SVG plot draws them: no minor grid, tick
 /// labels at [`fixed`] precision, the axis descriptions `x_label` and `y_label`.
+/// The room around a plot, and the room for its y axis's labels, in pixels.
+const MARGIN: u32 = 12;
+const Y_LABEL_AREA: u32 = 70;
+
+/// Where a plot's x axis runs, as fractions of the plot's width: the HTML page draws a
+/// marker at a time on it.
+pub fn x_axis_span() -> [f64; 2] {
+    let width = f64::from(SIZE.0);
+    [
+        f64::from(MARGIN + Y_LABEL_AREA) / width,
+        f64::from(SIZE.0 - MARGIN) / width,
+    ]
+}
+
 pub(super) fn axes<'a, 'b>(
     area: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
     x_label: &str,
@@ -177,9 +191,9 @@ pub(super) fn axes<'a, 'b>(
     y_range: (f64, f64),
 ) -> Result<Chart<'a, 'b>, String> {
     let mut chart = ChartBuilder::on(area)
-        .margin(12)
+        .margin(MARGIN)
         .x_label_area_size(50)
-        .y_label_area_size(70)
+        .y_label_area_size(Y_LABEL_AREA)
         .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
         .map_err(|e| e.to_string())?;
     chart

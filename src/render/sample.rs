@@ -455,6 +455,7 @@ fn simulation() -> Simulation {
         note: s(
             "Every check passed: the equations conserve energy and agree with the second method.",
         ),
+        ..Simulation::default()
     }
 }
 

@@ -180,3 +180,25 @@ pub fn explain(name: &str, args: &[&str]) -> String {
     );
     String::from_utf8(out.stdout).expect("UTF-8")
 }
+
+/// The HTML page without step 6's motion controls, the one script the page may hold
+/// (cli.md, "draw --animate": "a small inline script is allowed there"). Exactly that
+/// script goes, byte for byte as the template writes it: anything else, such as a script
+/// smuggled in through the problem's text, stays for the caller to find.
+pub fn without_motion_script(html: &str) -> String {
+    const START: &str =
+        "<script>\n/* The motion's controls: play, pause, the time slider, and the plots' markers at its time. */\n";
+    let Some(start) = html.find(START) else {
+        return html.to_string();
+    };
+    let end = html[start..]
+        .find("</script>")
+        .map_or(html.len(), |e| start + e + "</script>".len());
+    let script = &html[start..end];
+    // The controls touch only the motion's own elements.
+    assert!(
+        !script.contains("fetch(") && !script.contains("innerHTML") && !script.contains("eval("),
+        "the motion's script does more than drive the motion"
+    );
+    format!("{}{}", &html[..start], &html[end..])
+}

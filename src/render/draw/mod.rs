@@ -8,6 +8,8 @@
 
 pub mod build;
 pub mod layout;
+pub mod motion;
+pub mod motion_svg;
 pub mod numbers;
 pub mod picture;
 pub mod place;

@@ -1,0 +1,438 @@
+//! `motion.svg`: a [`Motion`] written as SVG animated with SMIL (`<animate>`,
+//! `<animateTransform>`), looping, no script.
+
+use super::motion::{Look, Motion, Placed, TITLE_STRIP};
+use super::numbers::P3;
+use super::picture::{Ink, Projection, P2};
+use crate::render::escape::html as xml;
+use std::fmt::Write;
+
+/// Three decimals, no negative zero, no trailing zeros.
+fn num(x: f64) -> String {
+    let text = format!("{x:.3}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.to_string()
+    }
+}
+
+/// Six significant digits, for the sheets' scales (metres to pixels).
+fn fine(x: f64) -> String {
+    let text = format!("{x:.6e}");
+    match text.parse::<f64>() {
+        Ok(v) if v != 0.0 => format!("{v}"),
+        _ => "0".into(),
+    }
+}
+
+fn color(ink: Ink) -> String {
+    let (r, g, b) = ink.rgb();
+    format!("#{r:02x}{g:02x}{b:02x}")
+}
+
+/// The SVG matrix `[a, b, c, d, e, f]` (x' = a u + c v + e, y' = b u + d v + f) of a sheet
+/// at origin `o` with unit vectors `e1`, `e2`, seen through `p`.
+fn sheet_matrix(p: &Projection, [o, e1, e2]: &[P3; 3]) -> [f64; 6] {
+    let [a, b] = p.direction(*e1);
+    let [c, d] = p.direction(*e2);
+    let [e, f] = p.point(*o);
+    [a, b, c, d, e, f]
+}
+
+/// An affine map as translate · rotate · skewX · scale: `[e, f, θ°, φ°, sx, sy]`.
+pub fn decompose([a, b, c, d, e, f]: [f64; 6]) -> [f64; 6] {
+    let sx = a.hypot(b);
+    let theta = b.atan2(a);
+    let (sin, cos) = theta.sin_cos();
+    // R(−θ) M is upper triangular: [[sx, m12], [0, m22]] = skewX(φ) · scale(sx, m22).
+    let m12 = cos * c + sin * d;
+    let mut sy = -sin * c + cos * d;
+    // A sheet seen edge on: keep the skew finite (the sheet is a line either way).
+    let least = 1e-4 * sx.max(m12.abs());
+    if sy.abs() < least {
+        sy = if sy < 0.0 { -least } else { least };
+    }
+    let skew = (m12 / sy).atan();
+    [e, f, theta.to_degrees(), skew.to_degrees(), sx, sy]
+}
+
+/// The composition of what [`decompose`] gives, for checking it.
+pub fn compose([e, f, theta, skew, sx, sy]: [f64; 6]) -> [f64; 6] {
+    let (sin, cos) = theta.to_radians().sin_cos();
+    let k = skew.to_radians().tan();
+    // R · K · S with K = [[1, k], [0, 1]], S = diag(sx, sy).
+    [
+        cos * sx,
+        sin * sx,
+        (cos * k - sin) * sy,
+        (sin * k + cos) * sy,
+        e,
+        f,
+    ]
+}
+
+/// The animation's common attributes: its length, its key times, looping.
+struct Timing {
+    attributes: String,
+}
+
+impl Timing {
+    fn new(frames: &[Placed]) -> Timing {
+        let start = frames.first().map_or(0.0, |f| f.t);
+        let end = frames.last().map_or(1.0, |f| f.t);
+        let length = (end - start).max(1e-9);
+        let times: Vec<String> = frames
+            .iter()
+            .enumerate()
+            .map(|(i, f)| {
+                if i + 1 == frames.len() {
+                    "1".to_string()
+                } else {
+                    // Key times must not decrease; rounding could otherwise tie them.
+                    format!("{:.6}", (f.t - start) / length)
+                        .trim_end_matches('0')
+                        .trim_end_matches('.')
+                        .to_string()
+                }
+            })
+            .collect();
+        Timing {
+            attributes: format!(
+                "dur=\"{}s\" keyTimes=\"{}\" calcMode=\"linear\" repeatCount=\"indefinite\"",
+                fine(length),
+                times.join(";")
+            ),
+        }
+    }
+
+    fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
+        let _ = writeln!(
+            out,
+            "<animate attributeName=\"{attribute}\" values=\"{}\" {}/>",
+            values.join(";"),
+            self.attributes
+        );
+    }
+
+    fn transform(&self, out: &mut String, kind: &str, values: &[String]) {
+        let _ = writeln!(
+            out,
+            "<animateTransform attributeName=\"transform\" type=\"{kind}\" additive=\"sum\" values=\"{}\" {}/>",
+            values.join(";"),
+            self.attributes
+        );
+    }
+}
+
+/// The motion as an SVG document.
+pub fn export(motion: &Motion) -> String {
+    let p = &motion.projection;
+    let [width, height] = motion.size;
+    let mut out = String::new();
+    let numbers: Vec<String> = p.numbers().iter().map(|x| format!("{x:.9}")).collect();
+    let _ = writeln!(
+        out,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" class=\"mbd motion\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" data-projection=\"{}\" data-duration=\"{}\" data-frames=\"{}\" font-family=\"DejaVu Serif, Times New Roman, serif\" font-size=\"13\" text-anchor=\"middle\" stroke-linecap=\"round\" stroke-linejoin=\"round\">",
+        numbers.join(" "),
+        fine(motion.frames.last().map_or(0.0, |f| f.t)),
+        motion.frames.len(),
+        w = num(width),
+        h = num(height),
+    );
+    let _ = writeln!(out, "<title>Motion of {}</title>", xml(&motion.title));
+    let _ = writeln!(
+        out,
+        "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#fff\"/>",
+        num(width),
+        num(height)
+    );
+    let _ = writeln!(
+        out,
+        "<text x=\"{}\" y=\"{}\">{}</text>",
+        num(width / 2.0),
+        num(TITLE_STRIP * 0.7),
+        xml(&motion.title)
+    );
+    let timing = Timing::new(&motion.frames);
+    ground(&mut out, motion);
+    for (k, sheet) in motion.sheets.iter().enumerate() {
+        body(&mut out, motion, &timing, k);
+        let _ = sheet;
+    }
+    springs(&mut out, motion, &timing);
+    points(&mut out, motion, &timing);
+    out.push_str("</svg>\n");
+    out
+}
+
+/// Supports under the joints on `N`, and the track of each rolling contact as its ground.
+fn ground(out: &mut String, motion: &Motion) {
+    let p = &motion.projection;
+    let grey = color(Ink::Grey);
+    let _ = writeln!(
+        out,
+        "<g class=\"ground\" fill=\"none\" stroke=\"{grey}\" stroke-width=\"1.2\">"
+    );
+    for &i in &motion.grounded {
+        let Some(first) = motion.frames.first() else {
+            break;
+        };
+        let [x, y] = p.point(first.points[i]);
+        let _ = writeln!(
+            out,
+            "<path d=\"M{} {}L{} {}L{} {}Z M{} {}h24\"/>",
+            num(x),
+            num(y),
+            num(x - 8.0),
+            num(y + 14.0),
+            num(x + 8.0),
+            num(y + 14.0),
+            num(x - 12.0),
+            num(y + 14.0)
+        );
+    }
+    for &i in &motion.rolling {
+        let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
+        let _ = writeln!(
+            out,
+            "<path d=\"{}\" stroke-dasharray=\"6 3\"/>",
+            polyline(&track)
+        );
+    }
+    out.push_str("</g>\n");
+}
+
+fn polyline(points: &[P2]) -> String {
+    let mut d = String::new();
+    for (i, [x, y]) in points.iter().enumerate() {
+        let _ = write!(
+            d,
+            "{}{} {}",
+            if i == 0 { "M" } else { "L" },
+            num(*x),
+            num(*y)
+        );
+    }
+    d
+}
+
+/// A body: its shape on its sheet (in metres), moved by four animated transforms.
+fn body(out: &mut String, motion: &Motion, timing: &Timing, k: usize) {
+    let sheet = &motion.sheets[k];
+    let p = &motion.projection;
+    let kind = match sheet.look {
+        Look::Disc(_) => "disc",
+        Look::Rods { .. } => "rod",
+        Look::Particle { .. } => "particle",
+    };
+    let _ = writeln!(
+        out,
+        "<g class=\"body\" id=\"body-{}\" data-shape=\"{kind}\">",
+        xml(&sheet.name)
+    );
+    let mut parts: [Vec<String>; 4] = Default::default();
+    let mut last_angle: Option<f64> = None;
+    for frame in &motion.frames {
+        let [e, f, mut theta, skew, sx, sy] = decompose(sheet_matrix(p, &frame.sheets[k]));
+        // The turn goes on continuously, never back round the long way.
+        if let Some(last) = last_angle {
+            theta += 360.0 * ((last - theta) / 360.0).round();
+        }
+        last_angle = Some(theta);
+        parts[0].push(format!("{} {}", num(e), num(f)));
+        parts[1].push(num(theta));
+        parts[2].push(num(skew));
+        parts[3].push(format!("{} {}", fine(sx), fine(sy)));
+    }
+    for (kind, values) in ["translate", "rotate", "skewX", "scale"].iter().zip(&parts) {
+        timing.transform(out, kind, values);
+    }
+    // Line widths and the ball stay in pixels whatever the sheet's scale.
+    let pixel = 1.0 / p.a[0].iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-12);
+    let ink = color(Ink::Black);
+    let fill = color(Ink::Body);
+    match &sheet.look {
+        Look::Disc(r) => {
+            let _ = writeln!(
+                out,
+                "<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"{fill}\" stroke=\"{ink}\" stroke-width=\"1.6\" vector-effect=\"non-scaling-stroke\"/>",
+                fine(*r)
+            );
+            // Two spokes, one darker: the wheel is seen to turn.
+            let _ = writeln!(
+                out,
+                "<path d=\"M{m} 0H{r}M0 {m}V{r}\" stroke=\"{}\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\"/>",
+                color(Ink::Grey),
+                m = fine(-r),
+                r = fine(*r)
+            );
+            let _ = writeln!(
+                out,
+                "<path d=\"M0 0H{}\" stroke=\"{}\" stroke-width=\"2.5\" vector-effect=\"non-scaling-stroke\"/>",
+                fine(*r),
+                color(Ink::Unknown)
+            );
+        }
+        Look::Rods { center, points } => {
+            let mut d = String::new();
+            for q in points {
+                let _ = write!(
+                    d,
+                    "M{} {}L{} {}",
+                    fine(center[0]),
+                    fine(center[1]),
+                    fine(q[0]),
+                    fine(q[1])
+                );
+            }
+            let _ = writeln!(
+                out,
+                "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"7\" vector-effect=\"non-scaling-stroke\"/>"
+            );
+            let _ = writeln!(
+                out,
+                "<path d=\"{d}\" fill=\"none\" stroke=\"{fill}\" stroke-width=\"4.5\" vector-effect=\"non-scaling-stroke\"/>"
+            );
+        }
+        Look::Particle { rods } => {
+            let mut d = String::new();
+            for q in rods {
+                let _ = write!(d, "M0 0L{} {}", fine(q[0]), fine(q[1]));
+            }
+            if !d.is_empty() {
+                let _ = writeln!(
+                    out,
+                    "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"1.5\" vector-effect=\"non-scaling-stroke\"/>"
+                );
+            }
+            let _ = writeln!(
+                out,
+                "<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"{ink}\"/>",
+                fine(7.0 * pixel)
+            );
+        }
+    }
+    out.push_str("</g>\n");
+}
+
+/// The springs as zig-zags that stretch with the motion.
+fn springs(out: &mut String, motion: &Motion, timing: &Timing) {
+    let p = &motion.projection;
+    let count = motion.frames.first().map_or(0, |f| f.springs.len());
+    for s in 0..count {
+        let shapes: Vec<String> = motion
+            .frames
+            .iter()
+            .map(|f| polyline(&zigzag(p.point(f.springs[s][0]), p.point(f.springs[s][1]))))
+            .collect();
+        let _ = writeln!(
+            out,
+            "<path class=\"spring\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.4\">",
+            shapes[0],
+            color(Ink::Known)
+        );
+        timing.animate(out, "d", &shapes);
+        out.push_str("</path>\n");
+    }
+}
+
+/// A spring from `a` to `b`: straight ends and twelve zig-zags between, always as many
+/// points, so that one frame's path turns into the next.
+fn zigzag(a: P2, b: P2) -> Vec<P2> {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let length = d[0].hypot(d[1]).max(1e-9);
+    let across = [-d[1] / length * 6.0, d[0] / length * 6.0];
+    let at = |s: f64, side: f64| {
+        [
+            a[0] + d[0] * s + across[0] * side,
+            a[1] + d[1] * s + across[1] * side,
+        ]
+    };
+    let mut out = vec![a, at(0.15, 0.0)];
+    for k in 0..12 {
+        let s = 0.15 + 0.7 * (f64::from(k) + 0.5) / 12.0;
+        out.push(at(s, if k % 2 == 0 { 1.0 } else { -1.0 }));
+    }
+    out.push(at(0.85, 0.0));
+    out.push(b);
+    out
+}
+
+/// The mass centres and joints: circles outside the bodies, their centres animated, and
+/// the bodies' names beside their mass centres.
+fn points(out: &mut String, motion: &Motion, timing: &Timing) {
+    let p = &motion.projection;
+    for (i, (id, center)) in motion.points.iter().enumerate() {
+        let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
+        let xs: Vec<String> = track.iter().map(|q| num(q[0])).collect();
+        let ys: Vec<String> = track.iter().map(|q| num(q[1])).collect();
+        let (r, fill) = if *center {
+            ("4", color(Ink::White))
+        } else {
+            ("3", color(Ink::Black))
+        };
+        let _ = writeln!(
+            out,
+            "<circle id=\"{}\" cx=\"{}\" cy=\"{}\" r=\"{r}\" fill=\"{fill}\" stroke=\"{}\" stroke-width=\"1.2\">",
+            xml(id),
+            xs[0],
+            ys[0],
+            color(Ink::Black)
+        );
+        timing.animate(out, "cx", &xs);
+        timing.animate(out, "cy", &ys);
+        out.push_str("</circle>\n");
+        if let Some(name) = &motion.captions[i] {
+            // Mass centres' names above right, joints' coordinates below right.
+            let (dx, dy) = if *center { (14.0, -8.0) } else { (16.0, 16.0) };
+            let xs: Vec<String> = track.iter().map(|q| num(q[0] + dx)).collect();
+            let ys: Vec<String> = track.iter().map(|q| num(q[1] + dy)).collect();
+            let class = if *center { "label" } else { "label coordinate" };
+            let fill = if *center {
+                String::new()
+            } else {
+                format!(" fill=\"{}\"", color(Ink::Grey))
+            };
+            let _ = writeln!(
+                out,
+                "<text class=\"{class}\"{fill} x=\"{}\" y=\"{}\">{}",
+                xs[0],
+                ys[0],
+                xml(name)
+            );
+            timing.animate(out, "x", &xs);
+            timing.animate(out, "y", &ys);
+            out.push_str("</text>\n");
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_affine_map_is_translate_rotate_skew_scale() {
+        for m in [
+            [2.0, 0.5, -0.3, 1.5, 10.0, 20.0],
+            [0.0, 3.0, -3.0, 0.0, 1.0, 2.0],
+            [1.0, 0.0, 0.0, -1.0, 0.0, 0.0],
+            [-0.7, 0.2, 0.9, 0.4, -5.0, 3.0],
+        ] {
+            let back = compose(decompose(m));
+            for (x, y) in m.iter().zip(back) {
+                assert!((x - y).abs() < 1e-9, "{m:?} came back as {back:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_spring_has_as_many_points_however_long() {
+        assert_eq!(
+            zigzag([0.0, 0.0], [1.0, 0.0]).len(),
+            zigzag([0.0, 0.0], [100.0, 50.0]).len()
+        );
+    }
+}

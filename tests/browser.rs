@@ -1,0 +1,189 @@
+//! Real clients: headless Chromium (through playwright-core, `tests/browser/run.js`) opens
+//! the page `serve` serves and edits the problem under it, reads the drawn positions of
+//! `motion.svg` at two instants, and plays the HTML handout's motion. Skipped with a notice
+//! when Chromium, node or `tests/browser/node_modules` is missing and `CI` is unset.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn browser_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser")
+}
+
+/// Whether the browser tests can run; panics under CI when they cannot.
+fn ready(test: &str) -> bool {
+    let chromium = Path::new("/usr/bin/chromium").exists();
+    let node = Command::new("node").arg("--version").output().is_ok();
+    let modules = browser_dir().join("node_modules/playwright-core").exists();
+    if chromium && node && modules {
+        return true;
+    }
+    let missing = format!(
+        "{test}: needs /usr/bin/chromium ({chromium}), node ({node}) and `npm ci` in tests/browser ({modules})"
+    );
+    assert!(std::env::var_os("CI").is_none(), "CI {missing}");
+    eprintln!("skipped {missing}");
+    false
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mbd-browser-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    dir
+}
+
+fn problem(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("problems/{name}.json"))
+}
+
+fn node(args: &[&std::ffi::OsStr]) {
+    let output = Command::new("node")
+        .current_dir(browser_dir())
+        .arg("run.js")
+        .args(args)
+        .output()
+        .expect("node runs");
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        output.status.success(),
+        "{text}{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+fn mbd(args: &[&std::ffi::OsStr]) -> String {
+    let output = Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
+        .args(args)
+        .output()
+        .expect("mbd-tutor runs");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+#[test]
+fn a_served_page_follows_the_file_through_an_error_and_back() {
+    if !ready("serve") {
+        return;
+    }
+    let dir = scratch("serve");
+    let file = dir.join("pendulum.json");
+    std::fs::copy(problem("simple-pendulum"), &file).expect("copy");
+    node(&[
+        "serve".as_ref(),
+        env!("CARGO_BIN_EXE_mbd-tutor").as_ref(),
+        file.as_os_str(),
+    ]);
+}
+
+/// The double pendulum of two uniform rods by hand: O at the origin, A's centre at half
+/// A's length down rod A (angle q1 from the downward vertical), P at its end, B's centre at
+/// half B's length down rod B (angle q1 + q2).
+fn double_pendulum_points(q1: f64, q2: f64) -> Vec<(&'static str, [f64; 3])> {
+    let (l1, l2) = (0.6, 0.4);
+    let down = |angle: f64, length: f64| [length * angle.sin(), -length * angle.cos(), 0.0];
+    let p = down(q1, l1);
+    let b = down(q1 + q2, l2 / 2.0);
+    vec![
+        ("joint-O", [0.0, 0.0, 0.0]),
+        ("cm-A", down(q1, l1 / 2.0)),
+        ("joint-P", p),
+        ("cm-B", [p[0] + b[0], p[1] + b[1], 0.0]),
+    ]
+}
+
+#[test]
+fn motion_svg_draws_the_simulated_double_pendulum_at_two_instants() {
+    if !ready("motion") {
+        return;
+    }
+    let dir = scratch("motion");
+    let file = problem("double-pendulum-rods");
+    mbd(&[
+        "draw".as_ref(),
+        file.as_os_str(),
+        "--animate".as_ref(),
+        "-o".as_ref(),
+        dir.as_os_str(),
+    ]);
+    // The simulation's own table at its 0.01 s step, independent of the frames.
+    let table: serde_json::Value = serde_json::from_str(&mbd(&[
+        "simulate".as_ref(),
+        file.as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+        "--no-checks".as_ref(),
+    ]))
+    .expect("simulate's JSON");
+    let columns: Vec<&str> = table["columns"]
+        .as_array()
+        .expect("columns")
+        .iter()
+        .map(|c| c.as_str().unwrap_or(""))
+        .collect();
+    let column = |name: &str| columns.iter().position(|c| *c == name).expect(name);
+    let rows = table["rows"].as_array().expect("rows");
+    let instants: Vec<serde_json::Value> = [0.8, 2.4]
+        .iter()
+        .map(|&t: &f64| {
+            let row = rows
+                .iter()
+                .find(|r| (r[0].as_f64().unwrap_or(f64::NAN) - t).abs() < 1e-9)
+                .expect("a row at the instant");
+            let q = |name: &str| row[column(name)].as_f64().expect("number");
+            let points: serde_json::Map<String, serde_json::Value> =
+                double_pendulum_points(q("q1"), q("q2"))
+                    .into_iter()
+                    .map(|(id, p)| (id.to_string(), serde_json::json!(p)))
+                    .collect();
+            serde_json::json!({ "t": t, "points": points })
+        })
+        .collect();
+    let expected = dir.join("expected.json");
+    std::fs::write(
+        &expected,
+        serde_json::json!({ "instants": instants }).to_string(),
+    )
+    .expect("write");
+    node(&[
+        "motion".as_ref(),
+        dir.join("motion.svg").as_os_str(),
+        expected.as_os_str(),
+    ]);
+}
+
+#[test]
+fn the_html_handout_plays_its_motion() {
+    if !ready("handout") {
+        return;
+    }
+    let dir = scratch("handout");
+    let page = dir.join("pendulum.html");
+    mbd(&[
+        "explain".as_ref(),
+        problem("double-pendulum-rods").as_os_str(),
+        "--format".as_ref(),
+        "html".as_ref(),
+        "-o".as_ref(),
+        page.as_os_str(),
+    ]);
+    node(&["handout".as_ref(), page.as_os_str()]);
+}
+
+#[test]
+fn absurd_frame_counts_are_refused_at_once() {
+    let dir = scratch("frames");
+    let output = Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
+        .args(["draw", "--animate", "--fps", "1000000", "-o"])
+        .arg(&dir)
+        .arg(problem("double-pendulum-rods"))
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("--fps"));
+    assert!(!dir.join("motion.svg").exists());
+}

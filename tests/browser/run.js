@@ -1,0 +1,214 @@
+// Headless Chromium as the client of `serve`, `motion.svg` and the HTML handout.
+// Run by tests/browser.rs:  node run.js MODE ARGS...; exits 0 when every check passes and
+// prints what failed otherwise.
+//   serve BIN PROBLEM          start `BIN serve PROBLEM --port 0`, edit the file, watch the page
+//   motion SVG EXPECTED.json   compare the drawn points at instants with EXPECTED's
+//   handout HTML               the handout's motion plays; nothing is loaded from outside
+'use strict';
+const { chromium } = require('playwright-core');
+const { spawn } = require('child_process');
+const fs = require('fs');
+
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const failures = [];
+function check(ok, what) {
+  if (!ok) failures.push(what);
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+}
+
+async function browser() {
+  return chromium.launch({
+    executablePath: CHROMIUM,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+}
+
+// Waits until `test()` is true, polling; the time it took, or null after `limit` ms.
+async function within(limit, test) {
+  const start = Date.now();
+  while (Date.now() - start < limit) {
+    if (await test()) return Date.now() - start;
+    await new Promise((r) => setTimeout(r, 50));
+  }
+  return null;
+}
+
+async function serve(bin, problem) {
+  const server = spawn(bin, ['serve', problem, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+  const exited = new Promise((resolve) => server.on('exit', (code, signal) => resolve({ code, signal })));
+  const first = await new Promise((resolve) => {
+    let text = '';
+    server.stdout.on('data', (chunk) => {
+      text += chunk;
+      if (text.includes('\n')) resolve(text.split('\n')[0]);
+    });
+    setTimeout(() => resolve(text), 30000);
+  });
+  const match = /^serving (http:\/\/127\.0\.0\.1:(\d+)\/)$/.exec(first);
+  check(match !== null && match[2] !== '0', `first line is "serving http://127.0.0.1:PORT/": ${first}`);
+  if (!match) { server.kill('SIGTERM'); return; }
+  const url = match[1];
+  const b = await browser();
+  const page = await b.newPage();
+  const outside = [];
+  page.on('request', (r) => { if (!r.url().startsWith(url) && !r.url().startsWith('data:')) outside.push(r.url()); });
+  await page.goto(url);
+  const text = () => page.evaluate(() => document.body ? document.body.innerText : '');
+  check((await text()).includes('Step 6'), 'the page is the worked solution');
+  let alive = true;
+  exited.then(() => { alive = false; });
+
+  const original = fs.readFileSync(problem, 'utf8');
+  const edited = original.replace(/"value": 0\.5,/, '"value": 0.7321,');
+  check(edited !== original, 'the test could edit the mass in the problem');
+  // Edit as editors save: a new file renamed over the old one.
+  fs.writeFileSync(problem + '.tmp', edited);
+  fs.renameSync(problem + '.tmp', problem);
+  let took = await within(2000, async () => (await text().catch(() => '')).includes('0.7321'));
+  check(took !== null, `the new value appears without a manual reload within 2 s (${took} ms)`);
+
+  fs.writeFileSync(problem, edited.replace('"mass": "m"', '"mass": "mm"'));
+  took = await within(2000, async () => (await text().catch(() => '')).includes('bodies.bob.mass'));
+  check(took !== null, `the broken file's JSON path appears in the page within 2 s (${took} ms)`);
+  const errors = await text().catch(() => '');
+  check(errors.includes('column 1') && errors.includes('did you mean'), 'the error has its column and hint');
+  check(alive, 'the server is still running after the broken file');
+
+  fs.writeFileSync(problem, edited);
+  took = await within(2000, async () => {
+    const t = await text().catch(() => '');
+    return t.includes('Step 6') && !t.includes('bodies.bob.mass');
+  });
+  check(took !== null, `fixing the file brings the solution back within 2 s (${took} ms)`);
+  check(outside.length === 0, `the page loads nothing from outside: ${outside.join(' ')}`);
+  await b.close();
+  check(alive, 'the server is still running');
+  server.kill('SIGTERM');
+  const end = await Promise.race([exited, new Promise((r) => setTimeout(() => r(null), 5000))]);
+  check(end !== null && end.code === 0, `SIGTERM ends it with status 0: ${JSON.stringify(end)}`);
+}
+
+// The drawn centre of every element whose id is given, at animation time t.
+async function drawn(page, ids, t) {
+  return page.evaluate(([ids, t]) => {
+    const svg = document.querySelector('svg');
+    svg.pauseAnimations();
+    svg.setCurrentTime(t);
+    const box = svg.getBoundingClientRect();
+    const out = {};
+    for (const id of ids) {
+      const r = document.getElementById(id).getBoundingClientRect();
+      out[id] = [r.x + r.width / 2 - box.x, r.y + r.height / 2 - box.y];
+    }
+    return out;
+  }, [ids, t]);
+}
+
+async function motion(svgPath, expectedPath) {
+  // EXPECTED: { "instants": [ { "t": 0.8, "points": { "cm-A": [x, y, z], ... } } ] }, the
+  // positions in N from the simulation through the test's own forward kinematics.
+  const expected = JSON.parse(fs.readFileSync(expectedPath, 'utf8'));
+  const b = await browser();
+  const page = await b.newPage({ viewport: { width: 1200, height: 1000 } });
+  await page.goto('file://' + svgPath);
+  const meta = await page.evaluate(() => {
+    const svg = document.querySelector('svg');
+    return {
+      projection: svg.getAttribute('data-projection').split(' ').map(Number),
+      width: svg.width.baseVal.value,
+      height: svg.height.baseVal.value,
+      duration: Number(svg.getAttribute('data-duration')),
+      animated: document.querySelectorAll('animate, animateTransform').length,
+      scripts: document.querySelectorAll('script').length,
+    };
+  });
+  check(meta.animated > 0 && meta.scripts === 0, `SMIL animation, no script (${meta.animated} animations)`);
+  const [a, b1, c, d, e, f, tx, ty] = meta.projection;
+  const project = ([x, y, z]) => [a * x + b1 * y + c * z + tx, d * x + e * y + f * z + ty];
+  const tolerance = 0.01 * Math.max(meta.width, meta.height);
+  for (const instant of expected.instants) {
+    const ids = Object.keys(instant.points);
+    const at = await drawn(page, ids, instant.t);
+    for (const id of ids) {
+      const [x, y] = project(instant.points[id]);
+      const miss = Math.hypot(at[id][0] - x, at[id][1] - y);
+      check(miss < tolerance, `${id} at t = ${instant.t}: drawn (${at[id].map((v) => v.toFixed(1))}), expected (${x.toFixed(1)}, ${y.toFixed(1)}), off by ${miss.toFixed(2)} < ${tolerance.toFixed(2)}`);
+    }
+  }
+  // The whole motion inside the picture: every point and body at 200 instants.
+  let outside = [];
+  for (let k = 0; k <= 200; k++) {
+    const t = (meta.duration * k) / 200;
+    const out = await page.evaluate((t) => {
+      const svg = document.querySelector('svg');
+      svg.setCurrentTime(t);
+      const box = svg.getBoundingClientRect();
+      const bad = [];
+      for (const el of document.querySelectorAll('g.body, circle[id]')) {
+        const r = el.getBoundingClientRect();
+        if (r.left < box.left - 0.5 || r.top < box.top - 0.5 || r.right > box.right + 0.5 || r.bottom > box.bottom + 0.5) bad.push(el.id || el.parentNode.id);
+      }
+      return bad;
+    }, t);
+    if (out.length) outside.push(`${t.toFixed(2)}: ${out.join(',')}`);
+  }
+  check(outside.length === 0, `the whole motion stays inside the picture ${outside.slice(0, 3).join(' ')}`);
+  await b.close();
+}
+
+async function handout(htmlPath) {
+  const b = await browser();
+  const page = await b.newPage();
+  const outside = [];
+  page.on('request', (r) => { if (!r.url().startsWith('file://') && !r.url().startsWith('data:')) outside.push(r.url()); });
+  await page.goto('file://' + htmlPath);
+  const found = await page.evaluate(() => !!document.querySelector('#motion svg.motion'));
+  check(found, 'step 6 holds the motion');
+  if (found) {
+    const before = await page.evaluate(() => document.querySelector('#motion svg').getCurrentTime());
+    await page.waitForTimeout(600);
+    const playing = await page.evaluate(() => document.querySelector('#motion svg').getCurrentTime());
+    check(playing > before + 0.3, `the motion plays (${before.toFixed(2)} s, then ${playing.toFixed(2)} s)`);
+    await page.click('#motion button.pause');
+    const paused = await page.evaluate(() => document.querySelector('#motion svg').getCurrentTime());
+    await page.waitForTimeout(400);
+    const still = await page.evaluate(() => document.querySelector('#motion svg').getCurrentTime());
+    check(Math.abs(still - paused) < 0.05, 'pause stops it');
+    await page.evaluate(() => {
+      const s = document.querySelector('#motion input[type=range]');
+      s.value = 1.5;
+      s.dispatchEvent(new Event('input'));
+    });
+    const moved = await page.evaluate(() => document.querySelector('#motion svg').getCurrentTime());
+    check(Math.abs(moved - 1.5) < 0.05, `the slider sets the time (${moved.toFixed(2)} s)`);
+    const at = await page.evaluate(() => [...document.querySelectorAll('.time-marker')].map((m) => m.style.left));
+    await page.evaluate(() => {
+      const s = document.querySelector('#motion input[type=range]');
+      s.value = 0.5;
+      s.dispatchEvent(new Event('input'));
+    });
+    const later = await page.evaluate(() => [...document.querySelectorAll('.time-marker')].map((m) => m.style.left));
+    check(at.length > 0 && at.every((x, i) => x !== later[i]), `a marker on each plot follows the slider (${at.join(' ')} then ${later.join(' ')})`);
+    await page.screenshot({ path: (process.env.SCREENSHOT_DIR || '/tmp') + '/handout-step6.png', fullPage: true });
+  }
+  check(outside.length === 0, `the handout loads nothing from outside: ${outside.join(' ')}`);
+  await b.close();
+}
+
+(async () => {
+  const [mode, ...args] = process.argv.slice(2);
+  try {
+    if (mode === 'serve') await serve(...args);
+    else if (mode === 'motion') await motion(...args);
+    else if (mode === 'handout') await handout(...args);
+    else failures.push(`unknown mode ${mode}`);
+  } catch (e) {
+    failures.push(String(e && e.stack || e));
+    console.log(String(e && e.stack || e));
+  }
+  if (failures.length) {
+    console.log(`${failures.length} check(s) failed`);
+    process.exit(1);
+  }
+})();
