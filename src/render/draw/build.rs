@@ -59,7 +59,8 @@ impl Setting<'_, '_, '_> {
             ),
             PointRef::Origin(b) => (
                 Role::Point,
-                format!("{}_{{o}}", latex_name(problem.body_name(b))),
+                // Braced: `B0` is `B_{0}`, and a second subscript needs a group to hang on.
+                format!("{{{}}}_{{o}}", latex_name(problem.body_name(b))),
             ),
             PointRef::Joint(j) => (Role::Joint, latex_name(&problem.joints[j].name)),
         };
@@ -290,13 +291,27 @@ impl Setting<'_, '_, '_> {
         });
     }
 
+    /// Gravity's direction in a planar problem, which the pictures draw down the page.
+    fn down(&self) -> Option<P3> {
+        let model = &self.derivation.model;
+        let gravity = self.problem().gravity.as_ref()?;
+        let g = self.numbers.local(&crate::mechanics::model::own_components(
+            gravity,
+            BodyId::GROUND,
+        ));
+        (model.is_planar() && g.iter().all(|x| x.is_finite()))
+            .then(|| unit(g))
+            .flatten()
+    }
+
     /// The picture of the whole system at the state.
     pub fn configuration(&self, title: String) -> Scene {
         let mut shapes = Vec::new();
         let bodies = self.body_ids();
         for &b in &bodies {
-            shapes.extend(shapes::body(self.numbers, b, self.size));
+            shapes.push(super::bodies::body(self.numbers, b, self.size));
         }
+        shapes.extend(super::bodies::surfaces(self.numbers, self.size));
         self.elements(&mut shapes);
         for j in 0..self.problem().joints.len() {
             shapes.extend(shapes::joint(self.numbers, j, self.size));
@@ -310,6 +325,7 @@ impl Setting<'_, '_, '_> {
             markers: self.markers(&bodies, true),
             arrows: Vec::new(),
             kinetic: None,
+            down: self.down(),
             legend: String::new(),
         }
     }
@@ -319,7 +335,7 @@ impl Setting<'_, '_, '_> {
         let problem = self.problem();
         let mut shapes = Vec::new();
         for &b in set {
-            shapes.extend(shapes::body(self.numbers, b, self.size));
+            shapes.push(super::bodies::body(self.numbers, b, self.size));
         }
         let body_shapes = shapes.clone();
         // Joints inside the group hold it together; the cut ones are replaced by arrows.
@@ -355,6 +371,7 @@ impl Setting<'_, '_, '_> {
             markers,
             arrows,
             kinetic: Some((body_shapes, kinetic)),
+            down: self.down(),
             legend: FREE_BODY_LEGEND.into(),
         }
     }

@@ -1,7 +1,8 @@
 //! Laying a scene out: the projection that fits it on the page, the shapes in picture
 //! coordinates, arrows of a fixed length and labels placed where they overlap nothing.
 
-use super::numbers::{add, cross, scale, unit, P3};
+use super::fit::fit;
+use super::numbers::{add, cross, dot, scale, sub, unit, P3};
 use super::picture::{
     Arc, DrawnArrow, Ink, Item, Legend, Mark, Picture, Projection, Stroke, View, P2,
 };
@@ -13,11 +14,11 @@ const ARROW: f64 = 44.0;
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
 /// The room around the system for arrows and labels.
-const MARGIN: f64 = 90.0;
+pub const MARGIN: f64 = 90.0;
 /// The largest extent of the system in the picture.
-const CONTENT: f64 = 300.0;
+pub const CONTENT: f64 = 300.0;
 /// Room for the caption above.
-const TITLE: f64 = 26.0;
+pub const TITLE: f64 = 26.0;
 
 fn p2add(a: P2, b: P2) -> P2 {
     [a[0] + b[0], a[1] + b[1]]
@@ -47,56 +48,6 @@ fn head(tip: P2, u: P2) -> [P2; 3] {
     ]
 }
 
-/// Every point of a shape in `N`, for fitting the picture.
-fn shape_points(shape: &Shape) -> Vec<P3> {
-    match shape {
-        Shape::Bar(p) | Shape::Polygon(p) | Shape::Outline(p) => p.clone(),
-        Shape::Dot(p) | Shape::Pin(p) | Shape::Ball(p) | Shape::Weld(p) => vec![*p],
-        Shape::Slider { at, .. } => vec![*at],
-        Shape::Ground { at, along, .. } => vec![add(*at, *along), add(*at, scale(*along, -1.0))],
-        Shape::Spring { from, to }
-        | Shape::Damper { from, to }
-        | Shape::Distance { from, to, .. }
-        | Shape::Dashed { from, to } => vec![*from, *to],
-        Shape::Triad { origin, .. } => origin.iter().copied().collect(),
-        Shape::Angle { center, .. } => vec![*center],
-    }
-}
-
-/// The projection that fits `scene` into the content box, and the picture's size.
-fn fit(scene: &Scene, view: View) -> (Projection, P2) {
-    let rows = view.rows(scene.planar);
-    let mut points: Vec<P3> = scene.shapes.iter().flat_map(shape_points).collect();
-    points.extend(scene.markers.iter().map(|m| m.at));
-    let unit_map = Projection {
-        a: rows,
-        b: [0.0, 0.0],
-    };
-    let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
-    for p in points.iter().map(|p| unit_map.point(*p)) {
-        if p.iter().all(|x| x.is_finite()) {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-    }
-    if lo[0] > hi[0] {
-        (lo, hi) = ([0.0; 2], [0.0; 2]);
-    }
-    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-    let s = if extent > 1e-12 {
-        CONTENT / extent
-    } else {
-        100.0
-    };
-    let a = [scale(rows[0], s), scale(rows[1], s)];
-    let width = (hi[0] - lo[0]) * s + 2.0 * MARGIN;
-    let height = (hi[1] - lo[1]) * s + 2.0 * MARGIN + TITLE;
-    let b = [MARGIN - lo[0] * s, MARGIN + TITLE - lo[1] * s];
-    (Projection { a, b }, [width.max(160.0), height])
-}
-
 struct Painter {
     projection: Projection,
     shift: P2,
@@ -104,6 +55,10 @@ struct Painter {
     texts: Vec<Item>,
     obstacles: Obstacles,
     scale: f64,
+    /// Put before a body's group id: empty in the free body, `kinetic-` beside it.
+    body_prefix: &'static str,
+    /// Labels wait until every line of their panel is drawn, so that none crosses them.
+    pending: Vec<(P2, f64, Label, Ink)>,
 }
 
 impl Painter {
@@ -145,18 +100,102 @@ impl Painter {
     }
 
     fn label(&mut self, anchor: P2, toward: f64, label: &Label, ink: Ink) {
-        let at = self
-            .obstacles
-            .place(anchor, toward, text_size(&label.plain));
-        self.texts.push(Item::Text {
-            at,
-            label: label.clone(),
-            ink,
+        self.pending.push((anchor, toward, label.clone(), ink));
+    }
+
+    /// Places the waiting labels, in the order they came, around everything drawn.
+    fn place_labels(&mut self) {
+        for (anchor, toward, label, ink) in std::mem::take(&mut self.pending) {
+            let at = self
+                .obstacles
+                .place(anchor, toward, text_size(&label.plain));
+            self.texts.push(Item::Text { at, label, ink });
+        }
+    }
+
+    /// A caption at a fixed place, which later labels keep clear of.
+    fn fixed_text(&mut self, at: P2, label: Label, ink: Ink) {
+        self.obstacles.reserve(at, text_size(&label.plain));
+        self.texts.push(Item::Text { at, label, ink });
+    }
+
+    /// A wheel: a circle (an ellipse, seen obliquely) with a spoke and a hub.
+    fn wheel(&mut self, center: P3, normal: P3, radius: f64, mark: P3) {
+        let c = self.at(center);
+        let rim = super::shapes::circle(center, normal, radius);
+        let outline: Vec<P2> = rim.iter().map(|p| self.at(*p)).collect();
+        self.obstacles.polyline(&outline, true);
+        // The image of the disc: M = A [u v] r; its semi-axes from M Mᵀ.
+        let u = unit(sub(rim[0], center)).unwrap_or([1.0, 0.0, 0.0]);
+        let v = cross(normal, u);
+        let (du, dv) = (
+            p2scale(self.projection.direction(u), radius),
+            p2scale(self.projection.direction(v), radius),
+        );
+        let (a, b, d) = (
+            du[0] * du[0] + dv[0] * dv[0],
+            du[0] * du[1] + dv[0] * dv[1],
+            du[1] * du[1] + dv[1] * dv[1],
+        );
+        let mean = (a + d) / 2.0;
+        let spread = (((a - d) / 2.0).powi(2) + b * b).sqrt();
+        let (rx, ry) = ((mean + spread).sqrt(), (mean - spread).max(0.0).sqrt());
+        if rx - ry < 1e-6 * rx.max(1e-12) {
+            self.items.push(Item::Circle {
+                center: c,
+                radius: rx,
+                ink: Ink::Black,
+                fill: Ink::Body,
+            });
+        } else {
+            let angle = (b.atan2(mean + spread - d)).to_degrees();
+            let angle = if b.abs() < 1e-12 && a >= d { 0.0 } else { angle };
+            self.items.push(Item::Ellipse {
+                center: c,
+                rx,
+                ry,
+                angle,
+                ink: Ink::Black,
+                fill: Ink::Body,
+            });
+        }
+        // The spoke, fixed in the body, turns with it; a hub at the centre.
+        let mark = sub(mark, scale(normal, dot(mark, normal)));
+        let tip = self.at(add(center, scale(unit(mark).unwrap_or(u), radius)));
+        self.stroke(vec![c, tip], 1.6, Ink::Black, None, false);
+        self.items.push(Item::Circle {
+            center: c,
+            radius: 2.2,
+            ink: Ink::Black,
+            fill: Ink::Black,
         });
     }
 
     fn shape(&mut self, shape: &Shape) {
         match shape {
+            Shape::Body { name, kind, parts } => {
+                let outside = std::mem::take(&mut self.items);
+                for part in parts {
+                    self.shape(part);
+                }
+                let items = std::mem::replace(&mut self.items, outside);
+                self.items.push(Item::Body {
+                    id: format!("{}body-{name}", self.body_prefix),
+                    kind: *kind,
+                    items,
+                });
+            }
+            Shape::Wheel {
+                center,
+                normal,
+                radius,
+                mark,
+            } => self.wheel(*center, *normal, *radius, *mark),
+            Shape::LightRod { from, to } => {
+                let (a, b) = (self.at(*from), self.at(*to));
+                self.stroke(vec![a, b], 1.1, Ink::Black, None, false);
+            }
+            Shape::Surface { at, along, up } => self.surface(*at, *along, *up),
             Shape::Bar(points) => {
                 let points: Vec<P2> = points.iter().map(|p| self.at(*p)).collect();
                 self.stroke(points.clone(), 7.0, Ink::Black, None, false);
@@ -303,6 +342,32 @@ impl Painter {
         for k in 0..=count {
             let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count.max(1) as f64));
             let e = p2add(s, p2add(p2scale(u, -6.0), p2scale(t, -5.0)));
+            self.items.push(Item::Stroke(Stroke {
+                points: vec![s, e],
+                closed: false,
+                width: 0.8,
+                ink: Ink::Black,
+                fill: None,
+                dashed: false,
+            }));
+        }
+    }
+
+    /// A hatched line through `at` along `along` (its half length), hatched away from `up`.
+    fn surface(&mut self, at: P3, along: P3, up: P3) {
+        let c = self.at(at);
+        let u = p2unit(self.projection.direction(up)).unwrap_or([0.0, -1.0]);
+        let t = p2unit(self.projection.direction(along)).unwrap_or([-u[1], u[0]]);
+        let half = p2norm(self.projection.direction(along)).max(30.0);
+        let (a, b) = (p2add(c, p2scale(t, -half)), p2add(c, p2scale(t, half)));
+        self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
+        // The hatching's normal side, `n`, is the page's side away from `up`.
+        let n = p2scale(u, -1.0);
+        let count = ((2.0 * half) / 7.0).floor().max(1.0) as usize;
+        for k in 0..=count {
+            let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count as f64));
+            let e = p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -5.0)));
+            self.obstacles.segment(s, e);
             self.items.push(Item::Stroke(Stroke {
                 points: vec![s, e],
                 closed: false,
@@ -461,6 +526,8 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         texts: Vec::new(),
         obstacles: Obstacles::within([0.0, TITLE], [panel_width, height - legend]),
         scale,
+        body_prefix: "",
+        pending: Vec::new(),
     };
     for shape in scene
         .shapes
@@ -497,9 +564,23 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
             painter.label(mark.at, -std::f64::consts::FRAC_PI_4, caption, Ink::Black);
         }
     }
+    let panel_captions = [
+        (panel_width / 2.0, "free body"),
+        (panel_width * 1.5, "kinetic diagram"),
+    ];
+    let equals = [panel_width, (TITLE + height - legend) / 2.0];
+    if scene.kinetic.is_some() {
+        let (x, caption) = panel_captions[0];
+        painter.fixed_text([x, TITLE + 8.0], Label::text(caption), Ink::Grey);
+        painter.obstacles.reserve(equals, text_size("="));
+    }
+    painter.place_labels();
     if let Some((shapes, inertia)) = &scene.kinetic {
         painter.shift = [panel_width, 0.0];
         painter.obstacles = Obstacles::within([panel_width, TITLE], [width, height - legend]);
+        painter.body_prefix = "kinetic-";
+        let (x, caption) = panel_captions[1];
+        painter.fixed_text([x, TITLE + 8.0], Label::text(caption), Ink::Grey);
         for shape in shapes {
             painter.shape(shape);
         }
@@ -512,21 +593,8 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
             let stack = stack_of(&mut counts, arrow, scene.planar);
             arrows.push(painter.arrow(arrow, scene.planar, stack));
         }
-        painter.texts.push(Item::Text {
-            at: [panel_width, (TITLE + height - legend) / 2.0],
-            label: Label::from_tex("="),
-            ink: Ink::Black,
-        });
-        for (x, caption) in [
-            (panel_width / 2.0, "free body"),
-            (panel_width * 1.5, "kinetic diagram"),
-        ] {
-            painter.texts.push(Item::Text {
-                at: [x, TITLE + 8.0],
-                label: Label::text(caption),
-                ink: Ink::Grey,
-            });
-        }
+        painter.fixed_text(equals, Label::from_tex("="), Ink::Black);
+        painter.place_labels();
     }
     let mut texts = vec![Item::Text {
         at: [width / 2.0, 16.0],

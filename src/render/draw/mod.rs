@@ -6,7 +6,9 @@
 //! fixed-size arrows, label placement), and written by two exporters, [`svg`] and [`tikz`],
 //! so the two never disagree.
 
+pub mod bodies;
 pub mod build;
+pub mod fit;
 pub mod layout;
 pub mod numbers;
 pub mod picture;

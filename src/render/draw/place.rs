@@ -80,6 +80,14 @@ impl Obstacles {
         }
     }
 
+    /// Room a text at a fixed place takes: labels placed later keep clear of it.
+    pub fn reserve(&mut self, center: P2, size: P2) {
+        self.labels.push(Box2 {
+            center,
+            half: [size[0] / 2.0, size[1] / 2.0],
+        });
+    }
+
     /// A round spot to avoid.
     pub fn spot(&mut self, at: P2, radius: f64) {
         self.boxes.push(Box2 {

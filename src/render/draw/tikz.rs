@@ -92,6 +92,35 @@ fn item(out: &mut String, item: &Item, unit: f64) {
                 num(*radius)
             );
         }
+        Item::Ellipse {
+            center,
+            rx,
+            ry,
+            angle,
+            ink,
+            fill,
+        } => {
+            // The y axis points down, so the page's clockwise turn is TikZ's positive one.
+            let _ = writeln!(
+                out,
+                "\\path[draw={},fill={},line width={}pt,rotate around={{{}:({},{})}}] ({},{}) ellipse[x radius={}, y radius={}];",
+                color(*ink),
+                color(*fill),
+                num(1.2 * unit),
+                num(-*angle),
+                num(center[0]),
+                num(center[1]),
+                num(center[0]),
+                num(center[1]),
+                num(*rx),
+                num(*ry)
+            );
+        }
+        Item::Body { items, .. } => {
+            for inner in items {
+                self::item(out, inner, unit);
+            }
+        }
         Item::Text { at, label, ink } => {
             let _ = writeln!(
                 out,
