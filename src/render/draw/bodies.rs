@@ -109,7 +109,6 @@ fn declared(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape
                 ]));
                 parts.retain(|s| !matches!(s, Shape::Bar(_)));
             }
-            let _ = size;
             (BodyKind::Block, parts)
         }
         BodyShape::Particle => (BodyKind::Particle, particle_parts(n, body, size)),
@@ -294,4 +293,13 @@ pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
         });
     }
     out
+}
+
+/// Gravity's direction in a planar problem, which the pictures draw down the page.
+pub fn down(n: &Numbers) -> Option<P3> {
+    let gravity = n.model.problem.gravity.as_ref()?;
+    let g = n.local(&own_components(gravity, BodyId::GROUND));
+    (n.model.is_planar() && g.iter().all(|x| x.is_finite()))
+        .then(|| unit(g))
+        .flatten()
 }

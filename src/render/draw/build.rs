@@ -277,7 +277,7 @@ impl Setting<'_, '_, '_> {
         // Turned back by q about the axis: where the line lay at q = 0.
         let now = sub(now, scale(axis, super::numbers::dot(now, axis)));
         let Some(now) = unit(now) else { return };
-        let back = rotate(now, axis, -q);
+        let back = super::numbers::rotate(now, axis, -q);
         shapes.push(Shape::Dashed {
             from: at,
             to: add(at, scale(back, 0.3 * self.size)),
@@ -289,19 +289,6 @@ impl Setting<'_, '_, '_> {
             angle: q,
             label,
         });
-    }
-
-    /// Gravity's direction in a planar problem, which the pictures draw down the page.
-    fn down(&self) -> Option<P3> {
-        let model = &self.derivation.model;
-        let gravity = self.problem().gravity.as_ref()?;
-        let g = self.numbers.local(&crate::mechanics::model::own_components(
-            gravity,
-            BodyId::GROUND,
-        ));
-        (model.is_planar() && g.iter().all(|x| x.is_finite()))
-            .then(|| unit(g))
-            .flatten()
     }
 
     /// The picture of the whole system at the state.
@@ -325,7 +312,7 @@ impl Setting<'_, '_, '_> {
             markers: self.markers(&bodies, true),
             arrows: Vec::new(),
             kinetic: None,
-            down: self.down(),
+            down: super::bodies::down(self.numbers),
             legend: String::new(),
         }
     }
@@ -371,7 +358,7 @@ impl Setting<'_, '_, '_> {
             markers,
             arrows,
             kinetic: Some((body_shapes, kinetic)),
-            down: self.down(),
+            down: super::bodies::down(self.numbers),
             legend: FREE_BODY_LEGEND.into(),
         }
     }
@@ -596,15 +583,6 @@ impl Setting<'_, '_, '_> {
         }
         out
     }
-}
-
-/// `v` turned by `angle` about the unit `axis` (Rodrigues).
-fn rotate(v: P3, axis: P3, angle: f64) -> P3 {
-    let (s, c) = angle.sin_cos();
-    let k = axis;
-    let kxv = super::numbers::cross(k, v);
-    let kdv = super::numbers::dot(k, v);
-    std::array::from_fn(|i| v[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c))
 }
 
 /// An expression as a factor of a product: in parentheses when it is a sum.

@@ -7,6 +7,9 @@ use super::picture::{
     Arc, DrawnArrow, Ink, Item, Legend, Mark, Picture, Projection, Stroke, View, P2,
 };
 use super::place::{text_size, Obstacles};
+use super::strokes::{
+    dashpot, ellipse_of, head, p2add, p2norm, p2scale, p2unit, stack_of, wrap, zigzag,
+};
 use super::scene::{Arrow, Label, Role, Scene, Shape};
 
 /// The length of every force arrow.
@@ -19,34 +22,6 @@ pub const MARGIN: f64 = 90.0;
 pub const CONTENT: f64 = 300.0;
 /// Room for the caption above.
 pub const TITLE: f64 = 26.0;
-
-fn p2add(a: P2, b: P2) -> P2 {
-    [a[0] + b[0], a[1] + b[1]]
-}
-
-fn p2scale(a: P2, k: f64) -> P2 {
-    [a[0] * k, a[1] * k]
-}
-
-fn p2norm(a: P2) -> f64 {
-    a[0].hypot(a[1])
-}
-
-fn p2unit(a: P2) -> Option<P2> {
-    let n = p2norm(a);
-    (n > 1e-9).then(|| p2scale(a, 1.0 / n))
-}
-
-/// A triangle for an arrowhead at `tip` pointing along unit `u`.
-fn head(tip: P2, u: P2) -> [P2; 3] {
-    let n = [-u[1], u[0]];
-    let back = p2add(tip, p2scale(u, -9.0));
-    [
-        tip,
-        p2add(back, p2scale(n, 3.8)),
-        p2add(back, p2scale(n, -3.8)),
-    ]
-}
 
 struct Painter {
     projection: Projection,
@@ -79,6 +54,7 @@ impl Painter {
     }
 
     fn thin_dashed(&mut self, a: P2, b: P2) {
+        self.obstacles.segment(a, b);
         self.items.push(Item::Stroke(Stroke {
             points: vec![a, b],
             closed: false,
@@ -132,14 +108,7 @@ impl Painter {
             p2scale(self.projection.direction(u), radius),
             p2scale(self.projection.direction(v), radius),
         );
-        let (a, b, d) = (
-            du[0] * du[0] + dv[0] * dv[0],
-            du[0] * du[1] + dv[0] * dv[1],
-            du[1] * du[1] + dv[1] * dv[1],
-        );
-        let mean = (a + d) / 2.0;
-        let spread = (((a - d) / 2.0).powi(2) + b * b).sqrt();
-        let (rx, ry) = ((mean + spread).sqrt(), (mean - spread).max(0.0).sqrt());
+        let (rx, ry, angle) = ellipse_of(du, dv);
         if rx - ry < 1e-6 * rx.max(1e-12) {
             self.items.push(Item::Circle {
                 center: c,
@@ -148,8 +117,6 @@ impl Painter {
                 fill: Ink::Body,
             });
         } else {
-            let angle = (b.atan2(mean + spread - d)).to_degrees();
-            let angle = if b.abs() < 1e-12 && a >= d { 0.0 } else { angle };
             self.items.push(Item::Ellipse {
                 center: c,
                 rx,
@@ -342,6 +309,7 @@ impl Painter {
         for k in 0..=count {
             let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count.max(1) as f64));
             let e = p2add(s, p2add(p2scale(u, -6.0), p2scale(t, -5.0)));
+            self.obstacles.segment(s, e);
             self.items.push(Item::Stroke(Stroke {
                 points: vec![s, e],
                 closed: false,
@@ -465,44 +433,6 @@ impl Painter {
     }
 }
 
-/// A zig-zag from `a` to `b`.
-fn zigzag(a: P2, b: P2) -> Vec<P2> {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let Some(u) = p2unit(d) else {
-        return vec![a, b];
-    };
-    let n = [-u[1], u[0]];
-    let length = p2norm(d);
-    let lead = (0.15 * length).min(14.0);
-    let coils = 8;
-    let mut points = vec![a, p2add(a, p2scale(u, lead))];
-    for k in 0..coils {
-        let t = lead + (length - 2.0 * lead) * (k as f64 + 0.5) / coils as f64;
-        let side = if k % 2 == 0 { 6.0 } else { -6.0 };
-        points.push(p2add(p2add(a, p2scale(u, t)), p2scale(n, side)));
-    }
-    points.push(p2add(a, p2scale(u, length - lead)));
-    points.push(b);
-    points
-}
-
-/// A dashpot from `a` to `b`: rod, cylinder, piston, rod.
-fn dashpot(a: P2, b: P2) -> Vec<Vec<P2>> {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let Some(u) = p2unit(d) else {
-        return vec![vec![a, b]];
-    };
-    let n = [-u[1], u[0]];
-    let length = p2norm(d);
-    let at = |t: f64, side: f64| p2add(p2add(a, p2scale(u, t * length)), p2scale(n, side));
-    vec![
-        vec![a, at(0.4, 0.0)],
-        vec![at(0.6, 8.0), at(0.4, 8.0), at(0.4, -8.0), at(0.6, -8.0)],
-        vec![at(0.52, 6.0), at(0.52, -6.0)],
-        vec![at(0.52, 0.0), b],
-    ]
-}
-
 /// Lays `scene` out for `view`.
 pub fn lay_out(scene: &Scene, view: View) -> Picture {
     let (mut projection, [mut panel_width, height]) = fit(scene, view);
@@ -624,43 +554,3 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     }
 }
 
-/// How many arrows were drawn at the same point along the same line before this one
-/// (2D couples count apart: they are arcs).
-fn stack_of(counts: &mut Vec<(String, bool, usize)>, arrow: &Arrow, planar: bool) -> usize {
-    let arc = arrow.couple && planar;
-    let key = if arc {
-        arrow.at_id.clone()
-    } else {
-        let u = unit(arrow.direction).map(|u| u.map(|x| (x * 8.0).round() as i64));
-        format!("{}:{u:?}", arrow.at_id)
-    };
-    bump(counts, key, arc)
-}
-
-fn bump(counts: &mut Vec<(String, bool, usize)>, key: String, couple: bool) -> usize {
-    if let Some(entry) = counts
-        .iter_mut()
-        .find(|(k, c, _)| *k == key && *c == couple)
-    {
-        entry.2 += 1;
-        entry.2 - 1
-    } else {
-        counts.push((key, couple, 1));
-        0
-    }
-}
-
-/// Words broken into lines that fit `width`.
-fn wrap(text: &str, width: f64) -> Vec<String> {
-    let mut lines: Vec<String> = Vec::new();
-    for word in text.split_whitespace() {
-        match lines.last_mut() {
-            Some(line) if text_size(&format!("{line} {word}"))[0] <= width => {
-                line.push(' ');
-                line.push_str(word);
-            }
-            _ => lines.push(word.to_string()),
-        }
-    }
-    lines
-}

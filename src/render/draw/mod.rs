@@ -15,6 +15,7 @@ pub mod picture;
 pub mod place;
 pub mod scene;
 pub mod shapes;
+pub mod strokes;
 pub mod svg;
 pub mod tikz;
 

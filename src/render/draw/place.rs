@@ -121,9 +121,11 @@ impl Obstacles {
     /// `toward` (radians, picture coordinates); returns its centre and takes its room.
     pub fn place(&mut self, anchor: P2, toward: f64, size: P2) -> P2 {
         let half = [size[0] / 2.0 + 1.0, size[1] / 2.0 + 1.0];
-        let turns = [0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, 2.5, -2.5, 3.0];
+        let turns = [
+            0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, -2.0, 2.5, -2.5, 3.0, -3.0, 3.5, -3.5, 4.0,
+        ];
         let mut best: Option<(usize, Box2)> = None;
-        for gap in [4.0, 12.0, 22.0, 36.0] {
+        for gap in [4.0, 12.0, 22.0, 36.0, 52.0, 72.0] {
             for turn in turns {
                 let t = toward + turn * std::f64::consts::FRAC_PI_4;
                 let (s, c) = t.sin_cos();
@@ -168,5 +170,7 @@ pub fn text_size(plain: &str) -> P2 {
             _ => width += if small { 6.0 } else { 8.0 },
         }
     }
-    [width.max(6.0) + 4.0, 16.0]
+    // Scripts reach above and below the letters' line: room for both.
+    let scripted = plain.contains(['^', '_']);
+    [width.max(6.0) + 4.0, if scripted { 21.0 } else { 16.0 }]
 }

@@ -4,27 +4,27 @@ use super::picture::{Ink, Item, Picture, Stroke, P2};
 use super::scene::Role;
 use std::fmt::Write;
 
-/// The largest a picture may be on the page, in points: the height about a third of the
-/// text's, as a tall pendulum would otherwise take a page of its own and push the text after
-/// it to the next.
+/// The scale at which a picture's labels print at `\footnotesize` (8 pt, its scripts
+/// 6 pt) and keep the room the layout gave them at 13 px: the picture's natural size.
+pub const NATURAL: f64 = 8.0 / 13.0;
+
+/// The largest a picture may be on the page, in points: the text's width (A4 or letter
+/// with 1.8 cm margins), and about half the text's height.
 pub const PAGE_SIZE: Size = Size {
-    width: 320.0,
-    height: 230.0,
+    width: 500.0,
+    height: 380.0,
 };
-/// The largest a free body may be beside its table of forces: a chain has one per link,
-/// and a link's table (about 220 pt wide and 110 pt high) fits beside a picture of 260 pt;
-/// a picture no higher than the table lets the page hold four links.
+/// The largest a free body may be beside its table of forces: the handout puts it above
+/// the table when the two are wider than the line.
 pub const BESIDE_A_TABLE: Size = Size {
-    width: 260.0,
-    height: 160.0,
+    width: 500.0,
+    height: 300.0,
 };
 
-/// The largest a free body may be above its table of forces: lower than a page's picture,
-/// as a 3D problem has a free body for each of several bodies and groups, and a free body
-/// and its kinetic diagram side by side are wider than high.
+/// The largest a free body may be above its table of forces.
 pub const ABOVE_A_TABLE: Size = Size {
-    width: 320.0,
-    height: 150.0,
+    width: 500.0,
+    height: 300.0,
 };
 
 /// The room a picture may take on the page, in points.
@@ -124,7 +124,7 @@ fn item(out: &mut String, item: &Item, unit: f64) {
         Item::Text { at, label, ink } => {
             let _ = writeln!(
                 out,
-                "\\node[text={},font=\\scriptsize,inner sep=0pt] at ({},{}) {{${}$}};",
+                "\\node[text={},font=\\footnotesize,inner sep=0pt] at ({},{}) {{${}$}};",
                 color(*ink),
                 num(at[0]),
                 num(at[1]),
@@ -140,7 +140,7 @@ pub fn export(picture: &Picture, room: Size) -> String {
     let height = picture.height - picture.legend.height;
     let unit = (room.width / picture.width)
         .min(room.height / height)
-        .min(0.75);
+        .min(NATURAL);
     let mut out = String::new();
     let _ = writeln!(
         out,
