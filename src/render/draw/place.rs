@@ -125,7 +125,7 @@ impl Obstacles {
             0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, -2.0, 2.5, -2.5, 3.0, -3.0, 3.5, -3.5, 4.0,
         ];
         let mut best: Option<(usize, Box2)> = None;
-        for gap in [4.0, 12.0, 22.0, 36.0, 52.0, 72.0] {
+        for gap in [4.0, 12.0, 22.0, 36.0, 52.0, 72.0, 96.0, 124.0] {
             for turn in turns {
                 let t = toward + turn * std::f64::consts::FRAC_PI_4;
                 let (s, c) = t.sin_cos();
@@ -147,12 +147,47 @@ impl Obstacles {
                 break;
             }
         }
+        if best.as_ref().is_some_and(|(c, _)| *c > 0) {
+            // Crowded round the anchor: the free spot nearest to it anywhere in the picture.
+            if let Some(free) = self.nearest_free(anchor, half) {
+                best = Some((0, free));
+            }
+        }
         let chosen = best.map(|(_, b)| b).unwrap_or(Box2 {
             center: anchor,
             half,
         });
         self.labels.push(chosen);
         chosen.center
+    }
+}
+
+impl Obstacles {
+    /// The box of half size `half` nearest to `anchor` that meets nothing, on a grid over
+    /// the picture's bounds.
+    fn nearest_free(&self, anchor: P2, half: P2) -> Option<Box2> {
+        let (lo, hi) = self.bounds?;
+        const STEP: f64 = 6.0;
+        let mut best: Option<(f64, Box2)> = None;
+        let mut y = lo[1] + half[1];
+        while y <= hi[1] - half[1] {
+            let mut x = lo[0] + half[0];
+            while x <= hi[0] - half[0] {
+                let d = (x - anchor[0]).hypot(y - anchor[1]);
+                if best.as_ref().is_none_or(|(b, _)| d < *b) {
+                    let candidate = Box2 {
+                        center: [x, y],
+                        half,
+                    };
+                    if self.cost(&candidate) == 0 {
+                        best = Some((d, candidate));
+                    }
+                }
+                x += STEP;
+            }
+            y += STEP;
+        }
+        best.map(|(_, b)| b)
     }
 }
 

@@ -284,21 +284,25 @@ fn item(out: &mut String, item: &Item) {
             ink,
             fill,
         } => {
-            let turn = if angle.abs() < 0.05 {
-                String::new()
+            // Turned by the plain `rotate(A)` about the origin, its centre written turned
+            // back by A, so that after the transform it is where the disc's centre is.
+            let (turn, at) = if angle.abs() < 0.05 {
+                (String::new(), *center)
             } else {
-                format!(
-                    " transform=\"rotate({} {} {})\"",
-                    coarse(*angle),
-                    coarse(center[0]),
-                    coarse(center[1])
+                let (s, c) = angle.to_radians().sin_cos();
+                (
+                    format!(" transform=\"rotate({})\"", decimals(*angle, 3)),
+                    [
+                        center[0] * c + center[1] * s,
+                        -center[0] * s + center[1] * c,
+                    ],
                 )
             };
             let _ = writeln!(
                 out,
                 "<ellipse cx=\"{}\" cy=\"{}\" rx=\"{}\" ry=\"{}\"{turn} fill=\"{}\"{}/>",
-                coarse(center[0]),
-                coarse(center[1]),
+                decimals(at[0], 2),
+                decimals(at[1], 2),
                 coarse(*rx),
                 coarse(*ry),
                 color(*fill),

@@ -142,11 +142,16 @@ pub fn export(picture: &Picture, room: Size) -> String {
         .min(room.height / height)
         .min(NATURAL);
     let mut out = String::new();
+    // Narrower than the picture at this scale, a page's line shrinks it further (the
+    // labels keep their size): pgfmath takes the smaller when the picture is set.
+    let scale = format!(
+        "min({},(\\linewidth-2pt)/{})*1pt",
+        num_fine(unit),
+        num_fine(picture.width)
+    );
     let _ = writeln!(
         out,
-        "\\begin{{tikzpicture}}[x={}pt,y=-{}pt,line cap=round,line join=round]",
-        num_fine(unit),
-        num_fine(unit)
+        "\\begin{{tikzpicture}}[x={{{scale}}},y={{-{scale}}},line cap=round,line join=round]"
     );
     for i in &picture.items {
         item(&mut out, i, unit);
