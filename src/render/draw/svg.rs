@@ -577,7 +577,7 @@ mod tests {
         assert_eq!(out, format!("{outline}{fill}"));
         // One link alone is a path of its own.
         let mut one = String::new();
-        shapes(&mut one, &items[..2]);
+        shapes(&mut one, &items[..2], "");
         assert_eq!(one.matches("<path").count(), 2, "{one}");
     }
 
