@@ -42,7 +42,7 @@ impl Painter {
     }
 
     fn stroke(&mut self, points: Vec<P2>, width: f64, ink: Ink, fill: Option<Ink>, closed: bool) {
-        self.obstacles.polyline(&points, closed);
+        self.obstacles.wide_polyline(&points, closed, width);
         self.items.push(Item::Stroke(Stroke {
             points,
             closed,
@@ -409,6 +409,9 @@ impl Painter {
                 .map(|k| arc.at(start + sweep * k as f64 / steps as f64))
                 .collect();
             self.obstacles.polyline(&points, false);
+            for h in &drawn.heads {
+                self.obstacles.polyline(h, true);
+            }
             drawn.arc = Some(arc);
             let toward = (start + sweep / 2.0) + std::f64::consts::PI;
             self.label(
@@ -428,6 +431,9 @@ impl Painter {
             drawn.heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
         }
         self.obstacles.segment(at, tip);
+        for h in &drawn.heads {
+            self.obstacles.polyline(h, true);
+        }
         self.label(tip, u[1].atan2(u[0]), &arrow.label, ink);
         drawn
     }

@@ -49,7 +49,8 @@ impl Box2 {
 /// What labels must avoid.
 #[derive(Clone, Debug, Default)]
 pub struct Obstacles {
-    segments: Vec<(P2, P2)>,
+    /// Lines, each with half its stroke's width.
+    segments: Vec<(P2, P2, f64)>,
     boxes: Vec<Box2>,
     labels: Vec<Box2>,
     /// The picture's extent (labels stay inside).
@@ -67,7 +68,18 @@ impl Obstacles {
 
     /// A line to avoid.
     pub fn segment(&mut self, a: P2, b: P2) {
-        self.segments.push((a, b));
+        self.segments.push((a, b, 1.0));
+    }
+
+    /// A polyline drawn `width` wide to avoid.
+    pub fn wide_polyline(&mut self, points: &[P2], closed: bool, width: f64) {
+        let pad = (width / 2.0).max(1.0);
+        for w in points.windows(2) {
+            self.segments.push((w[0], w[1], pad));
+        }
+        if closed && points.len() > 2 {
+            self.segments.push((points[points.len() - 1], points[0], pad));
+        }
     }
 
     /// A polyline to avoid.
@@ -112,7 +124,13 @@ impl Obstacles {
         cost += self
             .segments
             .iter()
-            .filter(|(p, q)| b.meets_segment(*p, *q))
+            .filter(|(p, q, pad)| {
+                let wide = Box2 {
+                    center: b.center,
+                    half: [b.half[0] + pad, b.half[1] + pad],
+                };
+                wide.meets_segment(*p, *q)
+            })
             .count();
         cost
     }
