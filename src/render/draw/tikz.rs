@@ -100,14 +100,15 @@ fn item(out: &mut String, item: &Item, unit: f64) {
             ink,
             fill,
         } => {
-            // The y axis points down, so the page's clockwise turn is TikZ's positive one.
+            // The picture's y axis points down, and TikZ turns in the picture's axes: the
+            // same angle as the SVG's.
             let _ = writeln!(
                 out,
                 "\\path[draw={},fill={},line width={}pt,rotate around={{{}:({},{})}}] ({},{}) ellipse[x radius={}, y radius={}];",
                 color(*ink),
                 color(*fill),
                 num(1.2 * unit),
-                num(-*angle),
+                num(*angle),
                 num(center[0]),
                 num(center[1]),
                 num(center[0]),
