@@ -77,6 +77,9 @@ pub fn fit(scene: &Scene, view: View) -> (Projection, P2) {
     let width = (hi[0] - lo[0]) * s + 2.0 * MARGIN;
     let height = (hi[1] - lo[1]) * s + 2.0 * MARGIN + TITLE;
     let b = [MARGIN - lo[0] * s, MARGIN + TITLE - lo[1] * s];
-    (Projection { a, b }, [width.max(160.0), height])
+    // At least wide enough for a long label beside a tall, thin body.
+    let room = 280.0f64.max(width);
+    let b = [b[0] + (room - width) / 2.0, b[1]];
+    (Projection { a, b }, [room, height])
 }
 
