@@ -35,6 +35,7 @@ pub fn planar_chain(n: usize) -> Problem {
             center: down(&l / &Expr::int(2), i),
             inertia: Inertia::Planar(&(&m * &(&l * &l)) / &Expr::int(12)),
             description: None,
+            shape: None,
             path: format!("bodies.B{i}"),
         })
         .collect();

@@ -139,6 +139,7 @@ impl super::read::Reader {
             center: VectorExpr::default(),
             inertia: Inertia::Planar(Expr::zero()),
             description: None,
+            shape: None,
             path: path.clone(),
         };
         let Some(fields) = object(value, &path, &mut self.diag) else {
@@ -147,7 +148,7 @@ impl super::read::Reader {
         check_keys(
             fields,
             &path,
-            &["mass", "center", "inertia", "description"],
+            &["mass", "center", "inertia", "description", "shape"],
             &mut self.diag,
         );
         let mass_path = key_path(&path, "mass");
@@ -178,6 +179,9 @@ impl super::read::Reader {
             &mut self.diag,
         );
         body.description = optional_string(fields, "description", &path, &mut self.diag);
+        if let Some(shape) = fields.get("shape") {
+            body.shape = self.shape(shape, &key_path(&path, "shape"), id);
+        }
         body
     }
 

@@ -32,6 +32,7 @@ mod questions;
 mod read;
 pub mod schema;
 mod settings;
+mod shapes;
 mod speeds;
 mod validate;
 pub mod variant;

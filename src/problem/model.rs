@@ -96,8 +96,30 @@ pub struct Body {
     pub center: VectorExpr,
     pub inertia: Inertia,
     pub description: Option<String>,
+    /// How pictures draw it (`shape`); the mechanics never read it.
+    pub shape: Option<BodyShape>,
     /// The JSON path, e.g. `bodies.A`.
     pub path: String,
+}
+
+/// A body's `shape`: positions from the body's origin in its own unit vectors, lengths of
+/// constants.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BodyShape {
+    /// A bar between two points.
+    Rod { from: VectorExpr, to: VectorExpr },
+    /// A disc seen end-on; `center` defaults to the mass centre, `axis` to the body's z.
+    Disc {
+        radius: Expr,
+        center: Option<VectorExpr>,
+        axis: Option<VectorExpr>,
+    },
+    /// A rectangle (a box in 3D) with sides along the body's x, y (and z).
+    Block { size: Vec<Expr>, center: VectorExpr },
+    /// A ball at the mass centre.
+    Particle,
+    /// A plate through the points.
+    Polygon { points: Vec<VectorExpr> },
 }
 
 /// The joint types of the format.

@@ -59,7 +59,8 @@ impl Setting<'_, '_, '_> {
             ),
             PointRef::Origin(b) => (
                 Role::Point,
-                format!("{}_{{o}}", latex_name(problem.body_name(b))),
+                // Braced: `B0` is `B_{0}`, and a second subscript needs a group to hang on.
+                format!("{{{}}}_{{o}}", latex_name(problem.body_name(b))),
             ),
             PointRef::Joint(j) => (Role::Joint, latex_name(&problem.joints[j].name)),
         };
@@ -276,7 +277,7 @@ impl Setting<'_, '_, '_> {
         // Turned back by q about the axis: where the line lay at q = 0.
         let now = sub(now, scale(axis, super::numbers::dot(now, axis)));
         let Some(now) = unit(now) else { return };
-        let back = rotate(now, axis, -q);
+        let back = super::numbers::rotate(now, axis, -q);
         shapes.push(Shape::Dashed {
             from: at,
             to: add(at, scale(back, 0.3 * self.size)),
@@ -295,8 +296,9 @@ impl Setting<'_, '_, '_> {
         let mut shapes = Vec::new();
         let bodies = self.body_ids();
         for &b in &bodies {
-            shapes.extend(shapes::body(self.numbers, b, self.size));
+            shapes.push(super::bodies::body(self.numbers, b, self.size));
         }
+        shapes.extend(super::bodies::surfaces(self.numbers, self.size));
         self.elements(&mut shapes);
         for j in 0..self.problem().joints.len() {
             shapes.extend(shapes::joint(self.numbers, j, self.size));
@@ -310,6 +312,7 @@ impl Setting<'_, '_, '_> {
             markers: self.markers(&bodies, true),
             arrows: Vec::new(),
             kinetic: None,
+            down: super::bodies::down(self.numbers),
             legend: String::new(),
         }
     }
@@ -319,7 +322,7 @@ impl Setting<'_, '_, '_> {
         let problem = self.problem();
         let mut shapes = Vec::new();
         for &b in set {
-            shapes.extend(shapes::body(self.numbers, b, self.size));
+            shapes.push(super::bodies::body(self.numbers, b, self.size));
         }
         let body_shapes = shapes.clone();
         // Joints inside the group hold it together; the cut ones are replaced by arrows.
@@ -355,6 +358,7 @@ impl Setting<'_, '_, '_> {
             markers,
             arrows,
             kinetic: Some((body_shapes, kinetic)),
+            down: super::bodies::down(self.numbers),
             legend: FREE_BODY_LEGEND.into(),
         }
     }
@@ -579,15 +583,6 @@ impl Setting<'_, '_, '_> {
         }
         out
     }
-}
-
-/// `v` turned by `angle` about the unit `axis` (Rodrigues).
-fn rotate(v: P3, axis: P3, angle: f64) -> P3 {
-    let (s, c) = angle.sin_cos();
-    let k = axis;
-    let kxv = super::numbers::cross(k, v);
-    let kdv = super::numbers::dot(k, v);
-    std::array::from_fn(|i| v[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c))
 }
 
 /// An expression as a factor of a product: in parentheses when it is a sum.

@@ -1,11 +1,15 @@
 //! Laying a scene out: the projection that fits it on the page, the shapes in picture
 //! coordinates, arrows of a fixed length and labels placed where they overlap nothing.
 
-use super::numbers::{add, cross, scale, unit, P3};
+use super::fit::fit;
+use super::numbers::{add, cross, dot, scale, sub, unit, P3};
 use super::picture::{
     Arc, DrawnArrow, Ink, Item, Legend, Mark, Picture, Projection, Stroke, View, P2,
 };
 use super::place::{text_size, Obstacles};
+use super::strokes::{
+    dashpot, ellipse_of, head, p2add, p2norm, p2scale, p2unit, stack_of, wrap, zigzag,
+};
 use super::scene::{Arrow, Label, Role, Scene, Shape};
 
 /// The length of every force arrow.
@@ -13,89 +17,11 @@ const ARROW: f64 = 44.0;
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
 /// The room around the system for arrows and labels.
-const MARGIN: f64 = 90.0;
+pub const MARGIN: f64 = 90.0;
 /// The largest extent of the system in the picture.
-const CONTENT: f64 = 300.0;
+pub const CONTENT: f64 = 300.0;
 /// Room for the caption above.
-const TITLE: f64 = 26.0;
-
-fn p2add(a: P2, b: P2) -> P2 {
-    [a[0] + b[0], a[1] + b[1]]
-}
-
-fn p2scale(a: P2, k: f64) -> P2 {
-    [a[0] * k, a[1] * k]
-}
-
-fn p2norm(a: P2) -> f64 {
-    a[0].hypot(a[1])
-}
-
-fn p2unit(a: P2) -> Option<P2> {
-    let n = p2norm(a);
-    (n > 1e-9).then(|| p2scale(a, 1.0 / n))
-}
-
-/// A triangle for an arrowhead at `tip` pointing along unit `u`.
-fn head(tip: P2, u: P2) -> [P2; 3] {
-    let n = [-u[1], u[0]];
-    let back = p2add(tip, p2scale(u, -9.0));
-    [
-        tip,
-        p2add(back, p2scale(n, 3.8)),
-        p2add(back, p2scale(n, -3.8)),
-    ]
-}
-
-/// Every point of a shape in `N`, for fitting the picture.
-fn shape_points(shape: &Shape) -> Vec<P3> {
-    match shape {
-        Shape::Bar(p) | Shape::Polygon(p) | Shape::Outline(p) => p.clone(),
-        Shape::Dot(p) | Shape::Pin(p) | Shape::Ball(p) | Shape::Weld(p) => vec![*p],
-        Shape::Slider { at, .. } => vec![*at],
-        Shape::Ground { at, along, .. } => vec![add(*at, *along), add(*at, scale(*along, -1.0))],
-        Shape::Spring { from, to }
-        | Shape::Damper { from, to }
-        | Shape::Distance { from, to, .. }
-        | Shape::Dashed { from, to } => vec![*from, *to],
-        Shape::Triad { origin, .. } => origin.iter().copied().collect(),
-        Shape::Angle { center, .. } => vec![*center],
-    }
-}
-
-/// The projection that fits `scene` into the content box, and the picture's size.
-fn fit(scene: &Scene, view: View) -> (Projection, P2) {
-    let rows = view.rows(scene.planar);
-    let mut points: Vec<P3> = scene.shapes.iter().flat_map(shape_points).collect();
-    points.extend(scene.markers.iter().map(|m| m.at));
-    let unit_map = Projection {
-        a: rows,
-        b: [0.0, 0.0],
-    };
-    let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
-    for p in points.iter().map(|p| unit_map.point(*p)) {
-        if p.iter().all(|x| x.is_finite()) {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-    }
-    if lo[0] > hi[0] {
-        (lo, hi) = ([0.0; 2], [0.0; 2]);
-    }
-    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-    let s = if extent > 1e-12 {
-        CONTENT / extent
-    } else {
-        100.0
-    };
-    let a = [scale(rows[0], s), scale(rows[1], s)];
-    let width = (hi[0] - lo[0]) * s + 2.0 * MARGIN;
-    let height = (hi[1] - lo[1]) * s + 2.0 * MARGIN + TITLE;
-    let b = [MARGIN - lo[0] * s, MARGIN + TITLE - lo[1] * s];
-    (Projection { a, b }, [width.max(160.0), height])
-}
+pub const TITLE: f64 = 26.0;
 
 struct Painter {
     projection: Projection,
@@ -104,6 +30,10 @@ struct Painter {
     texts: Vec<Item>,
     obstacles: Obstacles,
     scale: f64,
+    /// Put before a body's group id: empty in the free body, `kinetic-` beside it.
+    body_prefix: &'static str,
+    /// Labels wait until every line of their panel is drawn, so that none crosses them.
+    pending: Vec<(P2, f64, Label, Ink)>,
 }
 
 impl Painter {
@@ -112,7 +42,7 @@ impl Painter {
     }
 
     fn stroke(&mut self, points: Vec<P2>, width: f64, ink: Ink, fill: Option<Ink>, closed: bool) {
-        self.obstacles.polyline(&points, closed);
+        self.obstacles.wide_polyline(&points, closed, width);
         self.items.push(Item::Stroke(Stroke {
             points,
             closed,
@@ -124,6 +54,7 @@ impl Painter {
     }
 
     fn thin_dashed(&mut self, a: P2, b: P2) {
+        self.obstacles.segment(a, b);
         self.items.push(Item::Stroke(Stroke {
             points: vec![a, b],
             closed: false,
@@ -145,18 +76,93 @@ impl Painter {
     }
 
     fn label(&mut self, anchor: P2, toward: f64, label: &Label, ink: Ink) {
-        let at = self
-            .obstacles
-            .place(anchor, toward, text_size(&label.plain));
-        self.texts.push(Item::Text {
-            at,
-            label: label.clone(),
-            ink,
+        self.pending.push((anchor, toward, label.clone(), ink));
+    }
+
+    /// Places the waiting labels, in the order they came, around everything drawn.
+    fn place_labels(&mut self) {
+        for (anchor, toward, label, ink) in std::mem::take(&mut self.pending) {
+            let at = self
+                .obstacles
+                .place(anchor, toward, text_size(&label.plain));
+            self.texts.push(Item::Text { at, label, ink });
+        }
+    }
+
+    /// A caption at a fixed place, which later labels keep clear of.
+    fn fixed_text(&mut self, at: P2, label: Label, ink: Ink) {
+        self.obstacles.reserve(at, text_size(&label.plain));
+        self.texts.push(Item::Text { at, label, ink });
+    }
+
+    /// A wheel: a circle (an ellipse, seen obliquely) with a spoke and a hub.
+    fn wheel(&mut self, center: P3, normal: P3, radius: f64, mark: P3) {
+        let c = self.at(center);
+        let rim = super::shapes::circle(center, normal, radius);
+        let outline: Vec<P2> = rim.iter().map(|p| self.at(*p)).collect();
+        self.obstacles.polyline(&outline, true);
+        // The image of the disc: M = A [u v] r; its semi-axes from M Mᵀ.
+        let u = unit(sub(rim[0], center)).unwrap_or([1.0, 0.0, 0.0]);
+        let v = cross(normal, u);
+        let (du, dv) = (
+            p2scale(self.projection.direction(u), radius),
+            p2scale(self.projection.direction(v), radius),
+        );
+        let (rx, ry, angle) = ellipse_of(du, dv);
+        if rx - ry < 1e-6 * rx.max(1e-12) {
+            self.items.push(Item::Circle {
+                center: c,
+                radius: rx,
+                ink: Ink::Black,
+                fill: Ink::Body,
+            });
+        } else {
+            self.items.push(Item::Ellipse {
+                center: c,
+                rx,
+                ry,
+                angle,
+                ink: Ink::Black,
+                fill: Ink::Body,
+            });
+        }
+        // The spoke, fixed in the body, turns with it; a hub at the centre.
+        let mark = sub(mark, scale(normal, dot(mark, normal)));
+        let tip = self.at(add(center, scale(unit(mark).unwrap_or(u), radius)));
+        self.stroke(vec![c, tip], 1.6, Ink::Black, None, false);
+        self.items.push(Item::Circle {
+            center: c,
+            radius: 2.2,
+            ink: Ink::Black,
+            fill: Ink::Black,
         });
     }
 
     fn shape(&mut self, shape: &Shape) {
         match shape {
+            Shape::Body { name, kind, parts } => {
+                let outside = std::mem::take(&mut self.items);
+                for part in parts {
+                    self.shape(part);
+                }
+                let items = std::mem::replace(&mut self.items, outside);
+                self.items.push(Item::Body {
+                    id: format!("{}body-{name}", self.body_prefix),
+                    kind: *kind,
+                    items,
+                });
+            }
+            Shape::Wheel {
+                center,
+                normal,
+                radius,
+                mark,
+            } => self.wheel(*center, *normal, *radius, *mark),
+            Shape::LightRod { from, to } => {
+                let (a, b) = (self.at(*from), self.at(*to));
+                self.stroke(vec![a, b], 1.1, Ink::Black, None, false);
+            }
+            Shape::Surface { at, along, up } => self.surface(*at, *along, *up),
             Shape::Bar(points) => {
                 let points: Vec<P2> = points.iter().map(|p| self.at(*p)).collect();
                 self.stroke(points.clone(), 7.0, Ink::Black, None, false);
@@ -303,6 +309,33 @@ impl Painter {
         for k in 0..=count {
             let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count.max(1) as f64));
             let e = p2add(s, p2add(p2scale(u, -6.0), p2scale(t, -5.0)));
+            self.obstacles.segment(s, e);
+            self.items.push(Item::Stroke(Stroke {
+                points: vec![s, e],
+                closed: false,
+                width: 0.8,
+                ink: Ink::Black,
+                fill: None,
+                dashed: false,
+            }));
+        }
+    }
+
+    /// A hatched line through `at` along `along` (its half length), hatched away from `up`.
+    fn surface(&mut self, at: P3, along: P3, up: P3) {
+        let c = self.at(at);
+        let u = p2unit(self.projection.direction(up)).unwrap_or([0.0, -1.0]);
+        let t = p2unit(self.projection.direction(along)).unwrap_or([-u[1], u[0]]);
+        let half = p2norm(self.projection.direction(along)).max(30.0);
+        let (a, b) = (p2add(c, p2scale(t, -half)), p2add(c, p2scale(t, half)));
+        self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
+        // The hatching's normal side, `n`, is the page's side away from `up`.
+        let n = p2scale(u, -1.0);
+        let count = ((2.0 * half) / 7.0).floor().max(1.0) as usize;
+        for k in 0..=count {
+            let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count as f64));
+            let e = p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -5.0)));
+            self.obstacles.segment(s, e);
             self.items.push(Item::Stroke(Stroke {
                 points: vec![s, e],
                 closed: false,
@@ -376,6 +409,9 @@ impl Painter {
                 .map(|k| arc.at(start + sweep * k as f64 / steps as f64))
                 .collect();
             self.obstacles.polyline(&points, false);
+            for h in &drawn.heads {
+                self.obstacles.polyline(h, true);
+            }
             drawn.arc = Some(arc);
             let toward = (start + sweep / 2.0) + std::f64::consts::PI;
             self.label(
@@ -395,47 +431,12 @@ impl Painter {
             drawn.heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
         }
         self.obstacles.segment(at, tip);
+        for h in &drawn.heads {
+            self.obstacles.polyline(h, true);
+        }
         self.label(tip, u[1].atan2(u[0]), &arrow.label, ink);
         drawn
     }
-}
-
-/// A zig-zag from `a` to `b`.
-fn zigzag(a: P2, b: P2) -> Vec<P2> {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let Some(u) = p2unit(d) else {
-        return vec![a, b];
-    };
-    let n = [-u[1], u[0]];
-    let length = p2norm(d);
-    let lead = (0.15 * length).min(14.0);
-    let coils = 8;
-    let mut points = vec![a, p2add(a, p2scale(u, lead))];
-    for k in 0..coils {
-        let t = lead + (length - 2.0 * lead) * (k as f64 + 0.5) / coils as f64;
-        let side = if k % 2 == 0 { 6.0 } else { -6.0 };
-        points.push(p2add(p2add(a, p2scale(u, t)), p2scale(n, side)));
-    }
-    points.push(p2add(a, p2scale(u, length - lead)));
-    points.push(b);
-    points
-}
-
-/// A dashpot from `a` to `b`: rod, cylinder, piston, rod.
-fn dashpot(a: P2, b: P2) -> Vec<Vec<P2>> {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let Some(u) = p2unit(d) else {
-        return vec![vec![a, b]];
-    };
-    let n = [-u[1], u[0]];
-    let length = p2norm(d);
-    let at = |t: f64, side: f64| p2add(p2add(a, p2scale(u, t * length)), p2scale(n, side));
-    vec![
-        vec![a, at(0.4, 0.0)],
-        vec![at(0.6, 8.0), at(0.4, 8.0), at(0.4, -8.0), at(0.6, -8.0)],
-        vec![at(0.52, 6.0), at(0.52, -6.0)],
-        vec![at(0.52, 0.0), b],
-    ]
 }
 
 /// Lays `scene` out for `view`.
@@ -461,6 +462,8 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         texts: Vec::new(),
         obstacles: Obstacles::within([0.0, TITLE], [panel_width, height - legend]),
         scale,
+        body_prefix: "",
+        pending: Vec::new(),
     };
     for shape in scene
         .shapes
@@ -497,9 +500,23 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
             painter.label(mark.at, -std::f64::consts::FRAC_PI_4, caption, Ink::Black);
         }
     }
+    let panel_captions = [
+        (panel_width / 2.0, "free body"),
+        (panel_width * 1.5, "kinetic diagram"),
+    ];
+    let equals = [panel_width, (TITLE + height - legend) / 2.0];
+    if scene.kinetic.is_some() {
+        let (x, caption) = panel_captions[0];
+        painter.fixed_text([x, TITLE + 8.0], Label::text(caption), Ink::Grey);
+        painter.obstacles.reserve(equals, text_size("="));
+    }
+    painter.place_labels();
     if let Some((shapes, inertia)) = &scene.kinetic {
         painter.shift = [panel_width, 0.0];
         painter.obstacles = Obstacles::within([panel_width, TITLE], [width, height - legend]);
+        painter.body_prefix = "kinetic-";
+        let (x, caption) = panel_captions[1];
+        painter.fixed_text([x, TITLE + 8.0], Label::text(caption), Ink::Grey);
         for shape in shapes {
             painter.shape(shape);
         }
@@ -512,21 +529,8 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
             let stack = stack_of(&mut counts, arrow, scene.planar);
             arrows.push(painter.arrow(arrow, scene.planar, stack));
         }
-        painter.texts.push(Item::Text {
-            at: [panel_width, (TITLE + height - legend) / 2.0],
-            label: Label::from_tex("="),
-            ink: Ink::Black,
-        });
-        for (x, caption) in [
-            (panel_width / 2.0, "free body"),
-            (panel_width * 1.5, "kinetic diagram"),
-        ] {
-            painter.texts.push(Item::Text {
-                at: [x, TITLE + 8.0],
-                label: Label::text(caption),
-                ink: Ink::Grey,
-            });
-        }
+        painter.fixed_text(equals, Label::from_tex("="), Ink::Black);
+        painter.place_labels();
     }
     let mut texts = vec![Item::Text {
         at: [width / 2.0, 16.0],
@@ -556,43 +560,3 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     }
 }
 
-/// How many arrows were drawn at the same point along the same line before this one
-/// (2D couples count apart: they are arcs).
-fn stack_of(counts: &mut Vec<(String, bool, usize)>, arrow: &Arrow, planar: bool) -> usize {
-    let arc = arrow.couple && planar;
-    let key = if arc {
-        arrow.at_id.clone()
-    } else {
-        let u = unit(arrow.direction).map(|u| u.map(|x| (x * 8.0).round() as i64));
-        format!("{}:{u:?}", arrow.at_id)
-    };
-    bump(counts, key, arc)
-}
-
-fn bump(counts: &mut Vec<(String, bool, usize)>, key: String, couple: bool) -> usize {
-    if let Some(entry) = counts
-        .iter_mut()
-        .find(|(k, c, _)| *k == key && *c == couple)
-    {
-        entry.2 += 1;
-        entry.2 - 1
-    } else {
-        counts.push((key, couple, 1));
-        0
-    }
-}
-
-/// Words broken into lines that fit `width`.
-fn wrap(text: &str, width: f64) -> Vec<String> {
-    let mut lines: Vec<String> = Vec::new();
-    for word in text.split_whitespace() {
-        match lines.last_mut() {
-            Some(line) if text_size(&format!("{line} {word}"))[0] <= width => {
-                line.push(' ');
-                line.push_str(word);
-            }
-            _ => lines.push(word.to_string()),
-        }
-    }
-    lines
-}

@@ -6,7 +6,9 @@
 //! fixed-size arrows, label placement), and written by two exporters, [`svg`] and [`tikz`],
 //! so the two never disagree.
 
+pub mod bodies;
 pub mod build;
+pub mod fit;
 pub mod layout;
 pub mod motion;
 pub mod motion_svg;
@@ -15,6 +17,7 @@ pub mod picture;
 pub mod place;
 pub mod scene;
 pub mod shapes;
+pub mod strokes;
 pub mod svg;
 pub mod tikz;
 

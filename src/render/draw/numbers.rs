@@ -123,3 +123,12 @@ pub fn unit(a: P3) -> Option<P3> {
     let n = norm(a);
     (n.is_finite() && n > 1e-12).then(|| scale(a, 1.0 / n))
 }
+
+/// `v` turned by `angle` about the unit `axis` (Rodrigues).
+pub fn rotate(v: P3, axis: P3, angle: f64) -> P3 {
+    let (s, c) = angle.sin_cos();
+    let k = axis;
+    let kxv = cross(k, v);
+    let kdv = dot(k, v);
+    std::array::from_fn(|i| v[i] * c + kxv[i] * s + k[i] * kdv * (1.0 - c))
+}

@@ -1,7 +1,7 @@
 //! A laid-out picture in picture coordinates (y down), which both exporters write.
 
 use super::numbers::{cross, dot, unit, P3};
-use super::scene::{Kind, Label, Role};
+use super::scene::{BodyKind, Kind, Label, Role};
 
 /// A point in the picture, y pointing down.
 pub type P2 = [f64; 2];
@@ -168,8 +168,24 @@ pub enum Item {
         ink: Ink,
         fill: Ink,
     },
+    /// An ellipse (a disc seen obliquely): semi-axes `rx`, `ry`, turned by `angle`
+    /// (degrees, clockwise on the page).
+    Ellipse {
+        center: P2,
+        rx: f64,
+        ry: f64,
+        angle: f64,
+        ink: Ink,
+        fill: Ink,
+    },
     /// Text: a label centered at `at`.
     Text { at: P2, label: Label, ink: Ink },
+    /// One body's items, as a group with its id (`body-A`) and its shape's kind.
+    Body {
+        id: String,
+        kind: BodyKind,
+        items: Vec<Item>,
+    },
 }
 
 /// A marked point: a circle whose id the markup carries.

@@ -49,7 +49,8 @@ impl Box2 {
 /// What labels must avoid.
 #[derive(Clone, Debug, Default)]
 pub struct Obstacles {
-    segments: Vec<(P2, P2)>,
+    /// Lines, each with half its stroke's width.
+    segments: Vec<(P2, P2, f64)>,
     boxes: Vec<Box2>,
     labels: Vec<Box2>,
     /// The picture's extent (labels stay inside).
@@ -67,7 +68,18 @@ impl Obstacles {
 
     /// A line to avoid.
     pub fn segment(&mut self, a: P2, b: P2) {
-        self.segments.push((a, b));
+        self.segments.push((a, b, 1.0));
+    }
+
+    /// A polyline drawn `width` wide to avoid.
+    pub fn wide_polyline(&mut self, points: &[P2], closed: bool, width: f64) {
+        let pad = (width / 2.0).max(1.0);
+        for w in points.windows(2) {
+            self.segments.push((w[0], w[1], pad));
+        }
+        if closed && points.len() > 2 {
+            self.segments.push((points[points.len() - 1], points[0], pad));
+        }
     }
 
     /// A polyline to avoid.
@@ -78,6 +90,14 @@ impl Obstacles {
         if closed && points.len() > 2 {
             self.segment(points[points.len() - 1], points[0]);
         }
+    }
+
+    /// Room a text at a fixed place takes: labels placed later keep clear of it.
+    pub fn reserve(&mut self, center: P2, size: P2) {
+        self.labels.push(Box2 {
+            center,
+            half: [size[0] / 2.0, size[1] / 2.0],
+        });
     }
 
     /// A round spot to avoid.
@@ -104,7 +124,13 @@ impl Obstacles {
         cost += self
             .segments
             .iter()
-            .filter(|(p, q)| b.meets_segment(*p, *q))
+            .filter(|(p, q, pad)| {
+                let wide = Box2 {
+                    center: b.center,
+                    half: [b.half[0] + pad, b.half[1] + pad],
+                };
+                wide.meets_segment(*p, *q)
+            })
             .count();
         cost
     }
@@ -113,9 +139,11 @@ impl Obstacles {
     /// `toward` (radians, picture coordinates); returns its centre and takes its room.
     pub fn place(&mut self, anchor: P2, toward: f64, size: P2) -> P2 {
         let half = [size[0] / 2.0 + 1.0, size[1] / 2.0 + 1.0];
-        let turns = [0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, 2.5, -2.5, 3.0];
+        let turns = [
+            0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, -2.0, 2.5, -2.5, 3.0, -3.0, 3.5, -3.5, 4.0,
+        ];
         let mut best: Option<(usize, Box2)> = None;
-        for gap in [4.0, 12.0, 22.0, 36.0] {
+        for gap in [4.0, 12.0, 22.0, 36.0, 52.0, 72.0, 96.0, 124.0] {
             for turn in turns {
                 let t = toward + turn * std::f64::consts::FRAC_PI_4;
                 let (s, c) = t.sin_cos();
@@ -137,12 +165,47 @@ impl Obstacles {
                 break;
             }
         }
+        if best.as_ref().is_some_and(|(c, _)| *c > 0) {
+            // Crowded round the anchor: the free spot nearest to it anywhere in the picture.
+            if let Some(free) = self.nearest_free(anchor, half) {
+                best = Some((0, free));
+            }
+        }
         let chosen = best.map(|(_, b)| b).unwrap_or(Box2 {
             center: anchor,
             half,
         });
         self.labels.push(chosen);
         chosen.center
+    }
+}
+
+impl Obstacles {
+    /// The box of half size `half` nearest to `anchor` that meets nothing, on a grid over
+    /// the picture's bounds.
+    fn nearest_free(&self, anchor: P2, half: P2) -> Option<Box2> {
+        let (lo, hi) = self.bounds?;
+        const STEP: f64 = 6.0;
+        let mut best: Option<(f64, Box2)> = None;
+        let mut y = lo[1] + half[1];
+        while y <= hi[1] - half[1] {
+            let mut x = lo[0] + half[0];
+            while x <= hi[0] - half[0] {
+                let d = (x - anchor[0]).hypot(y - anchor[1]);
+                if best.as_ref().is_none_or(|(b, _)| d < *b) {
+                    let candidate = Box2 {
+                        center: [x, y],
+                        half,
+                    };
+                    if self.cost(&candidate) == 0 {
+                        best = Some((d, candidate));
+                    }
+                }
+                x += STEP;
+            }
+            y += STEP;
+        }
+        best.map(|(_, b)| b)
     }
 }
 
@@ -160,5 +223,7 @@ pub fn text_size(plain: &str) -> P2 {
             _ => width += if small { 6.0 } else { 8.0 },
         }
     }
-    [width.max(6.0) + 4.0, 16.0]
+    // Scripts reach above and below the letters' line: room for both.
+    let scripted = plain.contains(['^', '_']);
+    [width.max(6.0) + 4.0, if scripted { 21.0 } else { 16.0 }]
 }

@@ -159,9 +159,52 @@ pub enum Role {
     Point,
 }
 
+/// What a body is drawn as (`data-shape` in the SVG).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BodyKind {
+    Rod,
+    Disc,
+    Block,
+    Particle,
+    Outline,
+}
+
+impl BodyKind {
+    /// The name written in `data-shape`.
+    pub fn name(self) -> &'static str {
+        match self {
+            BodyKind::Rod => "rod",
+            BodyKind::Disc => "disc",
+            BodyKind::Block => "block",
+            BodyKind::Particle => "particle",
+            BodyKind::Outline => "outline",
+        }
+    }
+}
+
 /// A shape drawn in `N`'s coordinates (sizes in picture units where it says so).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
+    /// One body's shapes, grouped so that a picture (or an animation) can find the body.
+    Body {
+        name: String,
+        kind: BodyKind,
+        parts: Vec<Shape>,
+    },
+    /// A wheel: the disc of `radius` about `center` perpendicular to the unit `normal`,
+    /// lightly filled, with a spoke towards the unit `mark` (fixed in the body) that shows
+    /// it turning.
+    Wheel {
+        center: P3,
+        normal: P3,
+        radius: f64,
+        mark: P3,
+    },
+    /// A massless link to a particle: a thin line.
+    LightRod { from: P3, to: P3 },
+    /// A surface a body rolls on: a hatched line through `at` along `along` (a vector, its
+    /// half length), hatched on the side opposite the unit `up`.
+    Surface { at: P3, along: P3, up: P3 },
     /// A rod: a thick line through the points.
     Bar(Vec<P3>),
     /// A block: a closed outline, lightly filled.
@@ -236,6 +279,8 @@ pub struct Scene {
     pub arrows: Vec<Arrow>,
     /// The kinetic diagram drawn beside it: its shapes and arrows.
     pub kinetic: Option<(Vec<Shape>, Vec<Arrow>)>,
+    /// Gravity's direction in a planar picture, drawn straight down the page.
+    pub down: Option<P3>,
     /// A line under the picture saying how arrows are scaled.
     pub legend: String,
 }

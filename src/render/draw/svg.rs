@@ -102,9 +102,14 @@ fn line_style(item: &Item) -> Option<(Ink, u64, bool)> {
 /// The shapes, a run of lines drawn alike as one `<path>`. A chain of links is drawn link by
 /// link as outline then fill; such a run of pairs becomes two paths, every outline and then
 /// every fill, so the links read as one bar with the joints' circles on it.
-fn shapes(out: &mut String, items: &[Item]) {
+fn shapes(out: &mut String, items: &[Item], prefix: &str) {
     let mut i = 0;
     while i < items.len() {
+        if matches!(items[i], Item::Body { .. }) {
+            body(out, &items[i], prefix);
+            i += 1;
+            continue;
+        }
         let (Some(a), b) = (line_style(&items[i]), items.get(i + 1).and_then(line_style)) else {
             item(out, &items[i]);
             i += 1;
@@ -271,7 +276,56 @@ fn item(out: &mut String, item: &Item) {
                 outline(*ink)
             );
         }
+        Item::Ellipse {
+            center,
+            rx,
+            ry,
+            angle,
+            ink,
+            fill,
+        } => {
+            // Turned by the plain `rotate(A)` about the origin, its centre written turned
+            // back by A, so that after the transform it is where the disc's centre is.
+            let (turn, at) = if angle.abs() < 0.05 {
+                (String::new(), *center)
+            } else {
+                let (s, c) = angle.to_radians().sin_cos();
+                (
+                    format!(" transform=\"rotate({})\"", decimals(*angle, 3)),
+                    [
+                        center[0] * c + center[1] * s,
+                        -center[0] * s + center[1] * c,
+                    ],
+                )
+            };
+            let _ = writeln!(
+                out,
+                "<ellipse cx=\"{}\" cy=\"{}\" rx=\"{}\" ry=\"{}\"{turn} fill=\"{}\"{}/>",
+                decimals(at[0], 2),
+                decimals(at[1], 2),
+                coarse(*rx),
+                coarse(*ry),
+                color(*fill),
+                outline(*ink)
+            );
+        }
         Item::Text { .. } => text(out, item, true),
+        Item::Body { .. } => body(out, item, ""),
+    }
+}
+
+/// A body's group: `<g class="body" id="body-A" data-shape="rod">` around its items.
+fn body(out: &mut String, item: &Item, prefix: &str) {
+    if let Item::Body { id, kind, items } = item {
+        let _ = writeln!(
+            out,
+            "<g class=\"body\" id=\"{}{}\" data-shape=\"{}\">",
+            xml(prefix),
+            xml(id),
+            kind.name()
+        );
+        shapes(out, items, prefix);
+        out.push_str("</g>\n");
     }
 }
 
@@ -329,7 +383,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         "<g class=\"shapes\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\">",
         color(Ink::Black)
     );
-    shapes(&mut out, &picture.items);
+    shapes(&mut out, &picture.items, prefix);
     out.push_str("</g>\n");
     marks(&mut out, picture, prefix);
     arrows(&mut out, picture, prefix);
@@ -511,7 +565,7 @@ mod tests {
             line(&[b, c], Ink::Body, 4.6),
         ];
         let mut out = String::new();
-        shapes(&mut out, &items);
+        shapes(&mut out, &items, "");
         // Every outline under every fill, each coordinate to a tenth, a link that starts
         // where the last ended going on from it, each point as the step from the last.
         // The outline's black is the shapes group's and is not repeated.
@@ -523,7 +577,7 @@ mod tests {
         assert_eq!(out, format!("{outline}{fill}"));
         // One link alone is a path of its own.
         let mut one = String::new();
-        shapes(&mut one, &items[..2]);
+        shapes(&mut one, &items[..2], "");
         assert_eq!(one.matches("<path").count(), 2, "{one}");
     }
 

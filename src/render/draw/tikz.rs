@@ -4,27 +4,27 @@ use super::picture::{Ink, Item, Picture, Stroke, P2};
 use super::scene::Role;
 use std::fmt::Write;
 
-/// The largest a picture may be on the page, in points: the height about a third of the
-/// text's, as a tall pendulum would otherwise take a page of its own and push the text after
-/// it to the next.
+/// The scale at which a picture's labels print at `\footnotesize` (8 pt, its scripts
+/// 6 pt) and keep the room the layout gave them at 13 px: the picture's natural size.
+pub const NATURAL: f64 = 8.0 / 13.0;
+
+/// The largest a picture may be on the page, in points: the text's width (A4 or letter
+/// with 1.8 cm margins), and about half the text's height.
 pub const PAGE_SIZE: Size = Size {
-    width: 320.0,
-    height: 230.0,
+    width: 500.0,
+    height: 380.0,
 };
-/// The largest a free body may be beside its table of forces: a chain has one per link,
-/// and a link's table (about 220 pt wide and 110 pt high) fits beside a picture of 260 pt;
-/// a picture no higher than the table lets the page hold four links.
+/// The largest a free body may be beside its table of forces: the handout puts it above
+/// the table when the two are wider than the line.
 pub const BESIDE_A_TABLE: Size = Size {
-    width: 260.0,
-    height: 160.0,
+    width: 500.0,
+    height: 300.0,
 };
 
-/// The largest a free body may be above its table of forces: lower than a page's picture,
-/// as a 3D problem has a free body for each of several bodies and groups, and a free body
-/// and its kinetic diagram side by side are wider than high.
+/// The largest a free body may be above its table of forces.
 pub const ABOVE_A_TABLE: Size = Size {
-    width: 320.0,
-    height: 150.0,
+    width: 500.0,
+    height: 300.0,
 };
 
 /// The room a picture may take on the page, in points.
@@ -92,10 +92,40 @@ fn item(out: &mut String, item: &Item, unit: f64) {
                 num(*radius)
             );
         }
+        Item::Ellipse {
+            center,
+            rx,
+            ry,
+            angle,
+            ink,
+            fill,
+        } => {
+            // The picture's y axis points down, and TikZ turns in the picture's axes: the
+            // same angle as the SVG's.
+            let _ = writeln!(
+                out,
+                "\\path[draw={},fill={},line width={}pt,rotate around={{{}:({},{})}}] ({},{}) ellipse[x radius={}, y radius={}];",
+                color(*ink),
+                color(*fill),
+                num(1.2 * unit),
+                num(*angle),
+                num(center[0]),
+                num(center[1]),
+                num(center[0]),
+                num(center[1]),
+                num(*rx),
+                num(*ry)
+            );
+        }
+        Item::Body { items, .. } => {
+            for inner in items {
+                self::item(out, inner, unit);
+            }
+        }
         Item::Text { at, label, ink } => {
             let _ = writeln!(
                 out,
-                "\\node[text={},font=\\scriptsize,inner sep=0pt] at ({},{}) {{${}$}};",
+                "\\node[text={},font=\\footnotesize,inner sep=0pt] at ({},{}) {{${}$}};",
                 color(*ink),
                 num(at[0]),
                 num(at[1]),
@@ -111,13 +141,18 @@ pub fn export(picture: &Picture, room: Size) -> String {
     let height = picture.height - picture.legend.height;
     let unit = (room.width / picture.width)
         .min(room.height / height)
-        .min(0.75);
+        .min(NATURAL);
     let mut out = String::new();
+    // Narrower than the picture at this scale, a page's line shrinks it further (the
+    // labels keep their size): pgfmath takes the smaller when the picture is set.
+    let scale = format!(
+        "min({},(\\linewidth-2pt)/{})*1pt",
+        num_fine(unit),
+        num_fine(picture.width)
+    );
     let _ = writeln!(
         out,
-        "\\begin{{tikzpicture}}[x={}pt,y=-{}pt,line cap=round,line join=round]",
-        num_fine(unit),
-        num_fine(unit)
+        "\\begin{{tikzpicture}}[x={{{scale}}},y={{-{scale}}},line cap=round,line join=round]"
     );
     for i in &picture.items {
         item(&mut out, i, unit);

@@ -1,0 +1,138 @@
+//! Small pieces of the layout in picture coordinates: vector arithmetic, arrowheads,
+//! springs and dashpots, the ellipse a disc projects to, arrows stacked at one point, and
+//! words wrapped into lines.
+
+use super::picture::P2;
+use super::place::text_size;
+use super::scene::Arrow;
+use super::numbers::unit;
+
+pub fn p2add(a: P2, b: P2) -> P2 {
+    [a[0] + b[0], a[1] + b[1]]
+}
+
+pub fn p2scale(a: P2, k: f64) -> P2 {
+    [a[0] * k, a[1] * k]
+}
+
+pub fn p2norm(a: P2) -> f64 {
+    a[0].hypot(a[1])
+}
+
+pub fn p2unit(a: P2) -> Option<P2> {
+    let n = p2norm(a);
+    (n > 1e-9).then(|| p2scale(a, 1.0 / n))
+}
+
+/// A triangle for an arrowhead at `tip` pointing along unit `u`.
+pub fn head(tip: P2, u: P2) -> [P2; 3] {
+    let n = [-u[1], u[0]];
+    let back = p2add(tip, p2scale(u, -9.0));
+    [
+        tip,
+        p2add(back, p2scale(n, 3.8)),
+        p2add(back, p2scale(n, -3.8)),
+    ]
+}
+
+/// A zig-zag from `a` to `b`.
+pub fn zigzag(a: P2, b: P2) -> Vec<P2> {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let Some(u) = p2unit(d) else {
+        return vec![a, b];
+    };
+    let n = [-u[1], u[0]];
+    let length = p2norm(d);
+    let lead = (0.15 * length).min(14.0);
+    let coils = 8;
+    let mut points = vec![a, p2add(a, p2scale(u, lead))];
+    for k in 0..coils {
+        let t = lead + (length - 2.0 * lead) * (k as f64 + 0.5) / coils as f64;
+        let side = if k % 2 == 0 { 6.0 } else { -6.0 };
+        points.push(p2add(p2add(a, p2scale(u, t)), p2scale(n, side)));
+    }
+    points.push(p2add(a, p2scale(u, length - lead)));
+    points.push(b);
+    points
+}
+
+/// A dashpot from `a` to `b`: rod, cylinder, piston, rod.
+pub fn dashpot(a: P2, b: P2) -> Vec<Vec<P2>> {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let Some(u) = p2unit(d) else {
+        return vec![vec![a, b]];
+    };
+    let n = [-u[1], u[0]];
+    let length = p2norm(d);
+    let at = |t: f64, side: f64| p2add(p2add(a, p2scale(u, t * length)), p2scale(n, side));
+    vec![
+        vec![a, at(0.4, 0.0)],
+        vec![at(0.6, 8.0), at(0.4, 8.0), at(0.4, -8.0), at(0.6, -8.0)],
+        vec![at(0.52, 6.0), at(0.52, -6.0)],
+        vec![at(0.52, 0.0), b],
+    ]
+}
+
+/// The ellipse `t -> c + du cos t + dv sin t` as its semi-axes and its turn (degrees,
+/// clockwise on the page): the eigen-decomposition of M Mᵀ, M = [du dv].
+pub fn ellipse_of(du: P2, dv: P2) -> (f64, f64, f64) {
+    let (a, b, d) = (
+        du[0] * du[0] + dv[0] * dv[0],
+        du[0] * du[1] + dv[0] * dv[1],
+        du[1] * du[1] + dv[1] * dv[1],
+    );
+    let mean = (a + d) / 2.0;
+    let spread = (((a - d) / 2.0).powi(2) + b * b).sqrt();
+    let (rx, ry) = ((mean + spread).sqrt(), (mean - spread).max(0.0).sqrt());
+    let angle = if b.abs() < 1e-12 {
+        if a >= d {
+            0.0
+        } else {
+            90.0
+        }
+    } else {
+        b.atan2(mean + spread - d).to_degrees()
+    };
+    (rx, ry, angle)
+}
+
+/// How many arrows were drawn at the same point along the same line before this one
+/// (2D couples count apart: they are arcs).
+pub fn stack_of(counts: &mut Vec<(String, bool, usize)>, arrow: &Arrow, planar: bool) -> usize {
+    let arc = arrow.couple && planar;
+    let key = if arc {
+        arrow.at_id.clone()
+    } else {
+        let u = unit(arrow.direction).map(|u| u.map(|x| (x * 8.0).round() as i64));
+        format!("{}:{u:?}", arrow.at_id)
+    };
+    bump(counts, key, arc)
+}
+
+fn bump(counts: &mut Vec<(String, bool, usize)>, key: String, couple: bool) -> usize {
+    if let Some(entry) = counts
+        .iter_mut()
+        .find(|(k, c, _)| *k == key && *c == couple)
+    {
+        entry.2 += 1;
+        entry.2 - 1
+    } else {
+        counts.push((key, couple, 1));
+        0
+    }
+}
+
+/// Words broken into lines that fit `width`.
+pub fn wrap(text: &str, width: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(line) if text_size(&format!("{line} {word}"))[0] <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}

@@ -1,0 +1,306 @@
+//! The pictures as a browser lays them out: every bundled problem's pictures (and one whose
+//! bodies are named B0, B1, B2, link_1) are drawn, put on one page with `measure.js`, and
+//! read back from headless Chromium's DOM. From the browser's own text boxes and stroke
+//! geometry: no label overlaps another and no stroke crosses a label; a rolling body is a
+//! circle (an ellipse in 3D) of its radius; a uniform rod pinned at one end reaches its far
+//! end; in 2D the weight points straight down the page.
+
+use crate::support::{all_problems, run};
+use mbd_tutor::problem::{ConstraintKind, Inertia, Problem};
+use mbd_tutor::symbolic::eval::{eval, Values};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const CHROMIUM: &str = "chromium";
+
+/// Whether Chromium is here; CI must have it (`.ci/run` installs it).
+fn chromium_present() -> bool {
+    let present = Command::new(CHROMIUM).arg("--version").output().is_ok();
+    assert!(
+        present || std::env::var_os("CI").is_none(),
+        "chromium is missing, and CI must measure the pictures in a browser"
+    );
+    if !present {
+        eprintln!("notice: chromium not found; the pictures were not measured in a browser");
+    }
+    present
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mbd-browser-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    dir
+}
+
+/// The problems measured: every bundled one and the one of awkward names.
+fn problems() -> Vec<PathBuf> {
+    let mut files = all_problems();
+    files.push(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/draw/names.json"));
+    files
+}
+
+/// Draws `problem` into `dir` and returns the page holding its pictures.
+fn page(problem: &Path, dir: &Path) -> String {
+    let p = problem.to_string_lossy().into_owned();
+    let out = run(&["draw", p.as_str(), "-o", &dir.to_string_lossy()]);
+    assert!(
+        out.status.success(),
+        "{p}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .expect("pictures written")
+        .map(|e| e.expect("entry").path())
+        .filter(|f| f.extension().is_some_and(|e| e == "svg"))
+        .collect();
+    files.sort();
+    let mut body = String::new();
+    for f in files {
+        let svg = std::fs::read_to_string(&f).expect("readable");
+        let svg = svg.find("<svg").map_or(svg.as_str(), |k| &svg[k..]);
+        let name = f.file_name().expect("a name").to_string_lossy();
+        body.push_str(&format!("<div data-file=\"{name}\">{svg}</div>\n"));
+    }
+    let script = include_str!("measure.js");
+    format!(
+        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"></head><body>\n{body}<pre id=\"result\"></pre>\n<script>{script}</script>\n</body></html>\n"
+    )
+}
+
+/// Loads `html` in headless Chromium and returns what `measure.js` wrote.
+fn measure(html: &Path) -> Value {
+    let profile = scratch("profile");
+    let out = Command::new(CHROMIUM)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--allow-file-access-from-files",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .arg("--dump-dom")
+        .arg(format!("file://{}", html.display()))
+        .output()
+        .expect("chromium runs");
+    let _ = std::fs::remove_dir_all(&profile);
+    let dom = String::from_utf8_lossy(&out.stdout);
+    let start = dom
+        .find("<pre id=\"result\">")
+        .unwrap_or_else(|| panic!("no result in the page: {}", String::from_utf8_lossy(&out.stderr)))
+        + "<pre id=\"result\">".len();
+    let end = start + dom[start..].find("</pre>").expect("the result ends");
+    let text = dom[start..end]
+        .replace("&quot;", "\"")
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("the measurements are JSON: {e}"))
+}
+
+fn constants(problem: &Problem) -> Values {
+    let mut v = Values::new();
+    for c in &problem.constants {
+        v.set(
+            mbd_tutor::symbolic::Symbol::Const(c.name.as_str().into()),
+            c.value,
+        );
+    }
+    v
+}
+
+fn numbers(v: &Value) -> Vec<f64> {
+    v.as_array()
+        .map(|a| a.iter().filter_map(Value::as_f64).collect())
+        .unwrap_or_default()
+}
+
+/// The picture's scale: N's unit length in picture units (the length of a row, as a
+/// parallel projection's rows are orthogonal and of one length).
+fn scale_of(svg_projection: &[f64]) -> f64 {
+    svg_projection[0]
+        .hypot(svg_projection[1])
+        .hypot(svg_projection[2])
+}
+
+/// A picture's projection, read from its file.
+fn projection(dir: &Path, file: &str) -> Vec<f64> {
+    let svg = std::fs::read_to_string(dir.join(file)).expect("a picture");
+    let start = svg.find("data-projection=\"").expect("a projection") + 17;
+    let end = start + svg[start..].find('"').expect("closed");
+    svg[start..end]
+        .split_whitespace()
+        .map(|x| x.parse().expect("a number"))
+        .collect()
+}
+
+/// The point of a marker circle in the picture, from the measurements' own source file.
+fn marker(dir: &Path, file: &str, id: &str) -> Option<[f64; 2]> {
+    let svg = std::fs::read_to_string(dir.join(file)).ok()?;
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let tag_start = svg[..at].rfind('<')?;
+    let tag = &svg[tag_start..tag_start + svg[tag_start..].find('>')?];
+    let attr = |k: &str| -> Option<f64> {
+        let s = tag.find(&format!(" {k}=\""))? + k.len() + 3;
+        tag[s..s + tag[s..].find('"')?].parse().ok()
+    };
+    Some([attr("cx")?, attr("cy")?])
+}
+
+fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// What the pictures of one problem get wrong.
+fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
+    let problem: Problem = mbd_tutor::problem::load_file(problem_file).expect("a valid problem");
+    let name = problem_file.file_stem().unwrap().to_string_lossy().into_owned();
+    let values = constants(&problem);
+    let planar = problem.dimension == mbd_tutor::problem::Dimension::Two;
+    let mut faults = Vec::new();
+    for report in reports.as_array().expect("one report per picture") {
+        let file = report["file"].as_str().unwrap_or("?").to_string();
+        let scale = scale_of(&projection(dir, &file));
+        let at = format!("{name}/{file}");
+        for pair in report["overlaps"].as_array().into_iter().flatten() {
+            faults.push(format!("{at}: labels {pair} overlap"));
+        }
+        for pair in report["crossings"].as_array().into_iter().flatten() {
+            faults.push(format!("{at}: label and stroke {pair} cross"));
+        }
+        if planar && problem.gravity.is_some() {
+            for g in report["gravity"].as_array().into_iter().flatten() {
+                let g = numbers(g);
+                if !((g[2] - g[0]).abs() < 0.5 && g[3] > g[1]) {
+                    faults.push(format!("{at}: the weight {g:?} does not point down the page"));
+                }
+            }
+        }
+        let bodies = report["bodies"].as_array().cloned().unwrap_or_default();
+        if file == "configuration.svg" {
+            for b in problem.body_ids() {
+                let body_name = problem.body_name(b);
+                if !bodies
+                    .iter()
+                    .any(|g| g["id"] == format!("body-{body_name}"))
+                {
+                    faults.push(format!("{at}: no group body-{body_name}"));
+                }
+            }
+        }
+        for g in &bodies {
+            let id = g["id"].as_str().unwrap_or("");
+            let Some(body_name) = id.strip_prefix("body-") else {
+                continue;
+            };
+            let Some(b) = problem.body_ids().find(|b| problem.body_name(*b) == body_name) else {
+                faults.push(format!("{at}: {id} names no body"));
+                continue;
+            };
+            // A rolling body: a circle (2D) or an ellipse whose long half-axis is the
+            // radius (3D: a parallel projection keeps the length of the disc's diameter
+            // that is parallel to the page).
+            let rolling = problem.constraints.iter().find_map(|c| match &c.kind {
+                ConstraintKind::Rolling { body, radius, .. } if *body == b => {
+                    Some(eval(radius, &values))
+                }
+                _ => None,
+            });
+            if let Some(radius) = rolling {
+                let want = radius * scale;
+                let drawn: Vec<f64> = if planar {
+                    g["circles"].as_array().into_iter().flatten().map(|c| numbers(c)[2]).collect()
+                } else {
+                    g["ellipses"]
+                        .as_array()
+                        .into_iter()
+                        .flatten()
+                        .chain(g["circles"].as_array().into_iter().flatten())
+                        .map(|e| {
+                            let e = numbers(e);
+                            e[2].max(*e.get(3).unwrap_or(&0.0))
+                        })
+                        .collect()
+                };
+                if g["shape"] != "disc" || !drawn.iter().any(|r| (r - want).abs() < 0.6) {
+                    faults.push(format!(
+                        "{at}: {id} ({}) is no wheel of radius {want:.1}: {drawn:?}",
+                        g["shape"]
+                    ));
+                }
+                continue;
+            }
+            // A uniform rod on one joint: reaches 2d from the joint through its mass centre.
+            let body = problem.body(b);
+            let joints: Vec<usize> = problem
+                .joints
+                .iter()
+                .enumerate()
+                .filter(|(_, j)| j.child == b || j.parent == b)
+                .map(|(k, _)| k)
+                .collect();
+            let closed = problem.closures.iter().any(|j| j.child == b || j.parent == b);
+            if !planar || body.shape.is_some() || closed || joints.len() != 1 {
+                continue;
+            }
+            let Inertia::Planar(izz) = &body.inertia else {
+                continue;
+            };
+            let (Some(pin), Some(cm)) = (
+                marker(dir, &file, &format!("joint-{}", problem.joints[joints[0]].name)),
+                marker(dir, &file, &format!("cm-{body_name}")),
+            ) else {
+                continue;
+            };
+            let d = distance(pin, cm) / scale;
+            let (m, i) = (eval(&body.mass, &values), eval(izz, &values));
+            if d <= 0.0 || (i - m * d * d / 3.0).abs() > 0.01 * m * d * d / 3.0 {
+                continue;
+            }
+            let far = [2.0 * cm[0] - pin[0], 2.0 * cm[1] - pin[1]];
+            let points: Vec<[f64; 2]> = g["points"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .map(|p| {
+                    let p = numbers(p);
+                    [p[0], p[1]]
+                })
+                .collect();
+            let nearest = points.iter().map(|p| distance(*p, far)).fold(f64::MAX, f64::min);
+            let beyond = points.iter().any(|p| distance(*p, pin) > distance(far, pin) + 6.0);
+            if g["shape"] != "rod" || nearest > 4.0 || beyond {
+                faults.push(format!(
+                    "{at}: {id} ({}) does not reach its far end {far:?} (nearest {nearest:.1})",
+                    g["shape"]
+                ));
+            }
+        }
+    }
+    faults
+}
+
+#[test]
+fn every_picture_measured_in_a_browser_reads_as_a_textbook_figure() {
+    if !chromium_present() {
+        return;
+    }
+    let root = scratch("pictures");
+    let mut faults = Vec::new();
+    for problem in problems() {
+        let name = problem.file_stem().unwrap().to_string_lossy().into_owned();
+        let dir = root.join(&name);
+        let html = root.join(format!("{name}.html"));
+        std::fs::write(&html, page(&problem, &dir)).expect("page written");
+        let reports = measure(&html);
+        faults.extend(judge(&problem, &dir, &reports));
+    }
+    let _ = std::fs::remove_dir_all(&root);
+    assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+}
