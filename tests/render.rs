@@ -47,24 +47,6 @@ fn scratch(name: &str) -> Scratch {
     Scratch(dir)
 }
 
-/// Whether LaTeX can be checked here. Without pdflatex the check is skipped with a notice,
-/// except in CI (`CI` set), where skipping would hide a failure.
-fn pdflatex_present() -> bool {
-    let present = Command::new("pdflatex")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .is_ok();
-    if !present {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "pdflatex is missing, and CI must compile the LaTeX"
-        );
-        eprintln!("notice: pdflatex not found; LaTeX compilation not checked");
-    }
-    present
-}
 
 /// Compiles `source` with pdflatex (no shell escape, stop at the first error) and returns
 /// the log; panics with the log's errors when it does not compile.
@@ -103,7 +85,7 @@ fn compile(dir: &Path, name: &str, source: &str) -> String {
 
 #[test]
 fn sample_latex_compiles_full_and_student() {
-    if !pdflatex_present() {
+    if !crate::support::pdflatex_present("the LaTeX") {
         return;
     }
     let dir = scratch("sample");
@@ -114,7 +96,7 @@ fn sample_latex_compiles_full_and_student() {
 /// More than four unknowns: the matrix entry by entry, and a very long equation.
 #[test]
 fn large_system_latex_compiles() {
-    if !pdflatex_present() {
+    if !crate::support::pdflatex_present("the LaTeX") {
         return;
     }
     let mut solution = sample();
@@ -210,7 +192,7 @@ fn hostile_sample() -> Solution {
 
 #[test]
 fn hostile_text_compiles_without_running_anything() {
-    if !pdflatex_present() {
+    if !crate::support::pdflatex_present("the LaTeX") {
         return;
     }
     let dir = scratch("hostile");
@@ -376,7 +358,7 @@ fn every_problem_renders_and_its_latex_compiles() {
             );
         }
     }
-    if !pdflatex_present() {
+    if !crate::support::pdflatex_present("the LaTeX") {
         return;
     }
     let dir = scratch("problems");
@@ -584,7 +566,7 @@ fn hostile_problem_file_renders_safely_in_every_format() {
         );
         assert!(!markdown.contains("<script") && !markdown.contains("<img src=x"));
         let latex = explain("latex", student, &dir.join(format!("hostile{suffix}.tex")));
-        if pdflatex_present() {
+        if crate::support::pdflatex_present("the LaTeX") {
             let log = compile(&dir, &format!("compiled{suffix}"), &latex);
             assert!(!log.contains("passwd"), "the log mentions passwd:\n{log}");
         }

@@ -28,7 +28,7 @@ fn a_plate_on_two_springs_gives_a_small_handout_written_with_the_lengths() {
         "\\Delta_{1x} = d + x - a c_{\\theta} - b s_{\\theta}",
         "of the vector from"
     ));
-    if pdflatex_present() {
+    if crate::support::pdflatex_present("the handout") {
         let dir = std::env::temp_dir().join(format!("mbd-tutor-compact-{}", std::process::id()));
         let count = pages(&dir, &tex);
         assert!((1..=12).contains(&count), "{count} pages");

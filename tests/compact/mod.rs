@@ -111,20 +111,6 @@ fn simplified_equations(markdown: &str) -> Vec<String> {
     out
 }
 
-/// Whether pdflatex is here; CI must have it.
-fn pdflatex_present() -> bool {
-    let present = Command::new("pdflatex")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .is_ok();
-    assert!(
-        present || std::env::var_os("CI").is_none(),
-        "CI needs pdflatex"
-    );
-    present
-}
 
 /// Compiles `source` in `dir` and returns the number of pages.
 fn pages(dir: &Path, source: &str) -> usize {

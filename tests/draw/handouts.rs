@@ -7,22 +7,6 @@ use crate::support::{all_problems, run};
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
-fn pdflatex_present() -> bool {
-    let present = Command::new("pdflatex")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .is_ok();
-    assert!(
-        present || std::env::var_os("CI").is_none(),
-        "pdflatex is missing, and CI must compile the LaTeX"
-    );
-    if !present {
-        eprintln!("notice: pdflatex not found; the handouts were not compiled");
-    }
-    present
-}
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mbd-handouts-{}-{name}", std::process::id()));
@@ -37,7 +21,7 @@ fn names_problem() -> PathBuf {
 
 #[test]
 fn every_handout_compiles_with_its_pictures() {
-    if !pdflatex_present() {
+    if !crate::support::pdflatex_present("the handouts") {
         return;
     }
     let dir = scratch("latex");

@@ -1,7 +1,7 @@
 //! Nothing shrunk, nothing past the margin: the linearization's matrices are shown whole
 //! when they fit the line and entry by entry when they do not, never scaled down.
 
-use super::{binary, compile, overfull_lines, pdflatex_present, scratch};
+use super::{binary, compile, overfull_lines, scratch};
 
 /// The five-link chain's 5 × 5 matrices are wider than the page: listed entry by entry.
 #[test]
@@ -29,7 +29,7 @@ fn linearization_is_never_shrunk() {
         "the matrices are not in \\widedisplay"
     );
     assert!(source.contains("entry by entry, the others 0: $M_{1,1} = "));
-    if !pdflatex_present() {
+    if !crate::support::pdflatex_present("the handout") {
         return;
     }
     let log = compile(&dir, "chain-compiled", &source);

@@ -84,23 +84,6 @@ fn explain(problem: &Path, format: &str, out: &Path, student: bool) -> String {
     std::fs::read_to_string(out).expect("written")
 }
 
-/// Whether pdflatex can be run; without it the LaTeX check is skipped, except in CI.
-fn pdflatex_present() -> bool {
-    let present = Command::new("pdflatex")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .is_ok();
-    if !present {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "pdflatex is missing, and CI must compile the LaTeX"
-        );
-        eprintln!("notice: pdflatex not found; the hostile LaTeX was not compiled");
-    }
-    present
-}
 
 #[test]
 fn latex_compiles_and_reads_no_file_the_text_names() {
@@ -125,7 +108,7 @@ fn latex_compiles_and_reads_no_file_the_text_names() {
             !tex.contains(r"\write18"),
             "{name}: the command survived unescaped"
         );
-        if !pdflatex_present() {
+        if !crate::support::pdflatex_present("the hostile LaTeX") {
             continue;
         }
         let output = Command::new("pdflatex")

@@ -202,3 +202,23 @@ pub fn without_motion_script(html: &str) -> String {
     );
     format!("{}{}", &html[..start], &html[end..])
 }
+
+/// Whether pdflatex can be run here. Without it a LaTeX check is skipped with a notice
+/// naming `what` was not compiled, except in CI (`CI` set), where skipping would hide a
+/// failure.
+pub fn pdflatex_present(what: &str) -> bool {
+    let present = std::process::Command::new("pdflatex")
+        .arg("--version")
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()
+        .is_ok();
+    assert!(
+        present || std::env::var_os("CI").is_none(),
+        "pdflatex is missing, and CI must compile the LaTeX"
+    );
+    if !present {
+        eprintln!("notice: pdflatex not found; {what} was not compiled");
+    }
+    present
+}
