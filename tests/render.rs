@@ -47,7 +47,6 @@ fn scratch(name: &str) -> Scratch {
     Scratch(dir)
 }
 
-
 /// Compiles `source` with pdflatex (no shell escape, stop at the first error) and returns
 /// the log; panics with the log's errors when it does not compile.
 fn compile(dir: &Path, name: &str, source: &str) -> String {

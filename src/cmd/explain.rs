@@ -2,10 +2,10 @@
 //! directory.
 
 use crate::cli::Common;
+use crate::error::BatchError;
 use crate::output::write_output;
 use crate::pipeline;
 use crate::render::{self, Format, Solution};
-use crate::error::BatchError;
 use crate::Error;
 use clap::ValueEnum;
 use std::io::{IsTerminal, Write};

@@ -35,4 +35,3 @@ pub(super) fn parallel(a: &[Vec<f64>], b: &[Vec<f64>]) -> bool {
         na > 0.0 && nb > 0.0 && (dot.abs() - na * nb).abs() <= 1e-9 * na * nb
     })
 }
-

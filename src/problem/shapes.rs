@@ -49,7 +49,8 @@ impl super::read::Reader {
                 let axis_path = key_path(path, "axis");
                 let axis = match fields.get("axis") {
                     Some(v) => {
-                        let axis = self.vector(v, &axis_path, Context::constant("a disc's axis"))?;
+                        let axis =
+                            self.vector(v, &axis_path, Context::constant("a disc's axis"))?;
                         self.fixed_in(&axis, id, &axis_path, "a disc's axis");
                         validate::axis(&axis, &self.values, &axis_path, &mut self.diag);
                         Some(axis)
@@ -66,12 +67,20 @@ impl super::read::Reader {
                 let size_path = key_path(path, "size");
                 let value = required(fields, "size", path, &mut self.diag)?;
                 let items = array(value, &size_path, &mut self.diag)?;
-                let wanted = if self.dimension == Some(Dimension::Three) { 3 } else { 2 };
+                let wanted = if self.dimension == Some(Dimension::Three) {
+                    3
+                } else {
+                    2
+                };
                 if items.len() != wanted {
                     self.diag.hint(
                         &size_path,
                         format!("a block's size has {wanted} lengths, found {}", items.len()),
-                        if wanted == 3 { "write [W, H, D]" } else { "write [W, H]" },
+                        if wanted == 3 {
+                            "write [W, H, D]"
+                        } else {
+                            "write [W, H]"
+                        },
                     );
                     return None;
                 }

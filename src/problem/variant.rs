@@ -168,7 +168,10 @@ mod tests {
     fn a_statement_gives_the_drawn_values() {
         let values = [("m".to_string(), 0.5, 0.43), ("I3".to_string(), 4e-4, 5e-4)];
         assert_eq!(
-            restated("Given $m = 0.5$ kg, $m = 2$ and $I_3 = 0.0004$, $mm = 0.5$", &values),
+            restated(
+                "Given $m = 0.5$ kg, $m = 2$ and $I_3 = 0.0004$, $mm = 0.5$",
+                &values
+            ),
             "Given $m = 0.43$ kg, $m = 2$ and $I_3 = 0.0005$, $mm = 0.5$"
         );
     }

@@ -58,7 +58,11 @@ impl Vary {
             origin,
             step,
             // Saturating: a range of 1e300 steps is refused by its size (MAX_GRID), not a panic.
-            count: if last >= 0.0 { (last as u64).saturating_add(1) } else { 0 },
+            count: if last >= 0.0 {
+                (last as u64).saturating_add(1)
+            } else {
+                0
+            },
             decimals: decimals(step).max(decimals(origin)),
         }
     }
@@ -224,7 +228,12 @@ mod tests {
         let g = grid(0.0312, 0.05, None);
         assert_eq!(g.value(0), 0.0312);
         assert_eq!(g.value(g.count - 1), 0.05);
-        let huge = Vary { low: 0.0, high: 1e300, step: Some(1e-300) }.grid();
+        let huge = Vary {
+            low: 0.0,
+            high: 1e300,
+            step: Some(1e-300),
+        }
+        .grid();
         assert_eq!(huge.count, u64::MAX);
     }
 }

@@ -54,7 +54,9 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             );
             let pin = pin_of(model, body);
             let mut acceleration = match pin {
-                Some(site) => from_pin(model, body, site, Motion::Acceleration, direct_acceleration),
+                Some(site) => {
+                    from_pin(model, body, site, Motion::Acceleration, direct_acceleration)
+                }
                 None => from_parent(model, body, Motion::Acceleration, direct_acceleration),
             };
             // Written out over lines, the acceleration repeats the velocity's coefficients;

@@ -30,8 +30,12 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
             (
                 format!("brings in {place}"),
                 tex.join(", "),
-                if names.len() > 1 { ", which are not asked for" } else { ", which is not asked for" }
-                    .to_string(),
+                if names.len() > 1 {
+                    ", which are not asked for"
+                } else {
+                    ", which is not asked for"
+                }
+                .to_string(),
             )
         }
         Reason::NoUnknown => plain("contains none of the unknowns"),
@@ -49,7 +53,10 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
             }
             [] => "adds nothing new: it follows from the rows chosen".to_string(),
             [one] => format!("adds nothing that row {} does not already say", one + 1),
-            _ => format!("adds nothing that rows {} do not already say", row_list(rows)),
+            _ => format!(
+                "adds nothing that rows {} do not already say",
+                row_list(rows)
+            ),
         }),
         Reason::SingularAt(state) => plain(&format!(
             "not needed: the rows chosen determine every unknown, {}",

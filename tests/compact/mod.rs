@@ -111,7 +111,6 @@ fn simplified_equations(markdown: &str) -> Vec<String> {
     out
 }
 
-
 /// Compiles `source` in `dir` and returns the number of pages.
 fn pages(dir: &Path, source: &str) -> usize {
     std::fs::create_dir_all(dir).expect("scratch directory");
@@ -150,5 +149,5 @@ fn pages(dir: &Path, source: &str) -> usize {
     count
 }
 
-mod kinematics;
 mod equations;
+mod kinematics;

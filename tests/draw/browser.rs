@@ -91,10 +91,12 @@ fn measure(html: &Path) -> Value {
         .expect("chromium runs");
     let _ = std::fs::remove_dir_all(&profile);
     let dom = String::from_utf8_lossy(&out.stdout);
-    let start = dom
-        .find("<pre id=\"result\">")
-        .unwrap_or_else(|| panic!("no result in the page: {}", String::from_utf8_lossy(&out.stderr)))
-        + "<pre id=\"result\">".len();
+    let start = dom.find("<pre id=\"result\">").unwrap_or_else(|| {
+        panic!(
+            "no result in the page: {}",
+            String::from_utf8_lossy(&out.stderr)
+        )
+    }) + "<pre id=\"result\">".len();
     let end = start + dom[start..].find("</pre>").expect("the result ends");
     let text = dom[start..end]
         .replace("&quot;", "\"")
@@ -160,7 +162,11 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
 /// What the pictures of one problem get wrong.
 fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
     let problem: Problem = mbd_tutor::problem::load_file(problem_file).expect("a valid problem");
-    let name = problem_file.file_stem().unwrap().to_string_lossy().into_owned();
+    let name = problem_file
+        .file_stem()
+        .unwrap()
+        .to_string_lossy()
+        .into_owned();
     let values = constants(&problem);
     let planar = problem.dimension == mbd_tutor::problem::Dimension::Two;
     let mut faults = Vec::new();
@@ -178,7 +184,9 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
             for g in report["gravity"].as_array().into_iter().flatten() {
                 let g = numbers(g);
                 if !((g[2] - g[0]).abs() < 0.5 && g[3] > g[1]) {
-                    faults.push(format!("{at}: the weight {g:?} does not point down the page"));
+                    faults.push(format!(
+                        "{at}: the weight {g:?} does not point down the page"
+                    ));
                 }
             }
         }
@@ -199,7 +207,10 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
             let Some(body_name) = id.strip_prefix("body-") else {
                 continue;
             };
-            let Some(b) = problem.body_ids().find(|b| problem.body_name(*b) == body_name) else {
+            let Some(b) = problem
+                .body_ids()
+                .find(|b| problem.body_name(*b) == body_name)
+            else {
                 faults.push(format!("{at}: {id} names no body"));
                 continue;
             };
@@ -215,7 +226,12 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
             if let Some(radius) = rolling {
                 let want = radius * scale;
                 let drawn: Vec<f64> = if planar {
-                    g["circles"].as_array().into_iter().flatten().map(|c| numbers(c)[2]).collect()
+                    g["circles"]
+                        .as_array()
+                        .into_iter()
+                        .flatten()
+                        .map(|c| numbers(c)[2])
+                        .collect()
                 } else {
                     g["ellipses"]
                         .as_array()
@@ -245,7 +261,10 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
                 .filter(|(_, j)| j.child == b || j.parent == b)
                 .map(|(k, _)| k)
                 .collect();
-            let closed = problem.closures.iter().any(|j| j.child == b || j.parent == b);
+            let closed = problem
+                .closures
+                .iter()
+                .any(|j| j.child == b || j.parent == b);
             if !planar || body.shape.is_some() || closed || joints.len() != 1 {
                 continue;
             }
@@ -253,7 +272,11 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
                 continue;
             };
             let (Some(pin), Some(cm)) = (
-                marker(dir, &file, &format!("joint-{}", problem.joints[joints[0]].name)),
+                marker(
+                    dir,
+                    &file,
+                    &format!("joint-{}", problem.joints[joints[0]].name),
+                ),
                 marker(dir, &file, &format!("cm-{body_name}")),
             ) else {
                 continue;
@@ -273,8 +296,13 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
                     [p[0], p[1]]
                 })
                 .collect();
-            let nearest = points.iter().map(|p| distance(*p, far)).fold(f64::MAX, f64::min);
-            let beyond = points.iter().any(|p| distance(*p, pin) > distance(far, pin) + 6.0);
+            let nearest = points
+                .iter()
+                .map(|p| distance(*p, far))
+                .fold(f64::MAX, f64::min);
+            let beyond = points
+                .iter()
+                .any(|p| distance(*p, pin) > distance(far, pin) + 6.0);
             if g["shape"] != "rod" || nearest > 4.0 || beyond {
                 faults.push(format!(
                     "{at}: {id} ({}) does not reach its far end {far:?} (nearest {nearest:.1})",
@@ -302,5 +330,10 @@ fn every_picture_measured_in_a_browser_reads_as_a_textbook_figure() {
         faults.extend(judge(&problem, &dir, &reports));
     }
     let _ = std::fs::remove_dir_all(&root);
-    assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+    assert!(
+        faults.is_empty(),
+        "{} faults:\n{}",
+        faults.len(),
+        faults.join("\n")
+    );
 }

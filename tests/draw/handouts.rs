@@ -7,7 +7,6 @@ use crate::support::{all_problems, run};
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
-
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mbd-handouts-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -39,11 +38,22 @@ fn every_handout_compiles_with_its_pictures() {
             "-o",
             &tex.to_string_lossy(),
         ]);
-        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let source = std::fs::read_to_string(&tex).expect("written");
-        assert!(source.contains("\\begin{tikzpicture}"), "{name}: no picture");
+        assert!(
+            source.contains("\\begin{tikzpicture}"),
+            "{name}: no picture"
+        );
         let compiled = Command::new("pdflatex")
-            .args(["-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape"])
+            .args([
+                "-interaction=nonstopmode",
+                "-halt-on-error",
+                "-no-shell-escape",
+            ])
             .arg(format!("{name}.tex"))
             .current_dir(&dir)
             .stdin(Stdio::null())
@@ -51,23 +61,47 @@ fn every_handout_compiles_with_its_pictures() {
             .expect("pdflatex runs");
         if !compiled.status.success() {
             let log = String::from_utf8_lossy(&compiled.stdout);
-            let error = log.lines().find(|l| l.starts_with('!')).unwrap_or("?").to_string();
+            let error = log
+                .lines()
+                .find(|l| l.starts_with('!'))
+                .unwrap_or("?")
+                .to_string();
             failed.push(format!("{name}: {error}"));
         }
     }
-    assert!(failed.is_empty(), "handouts that do not compile ({}):\n{}", dir.display(), failed.join("\n"));
+    assert!(
+        failed.is_empty(),
+        "handouts that do not compile ({}):\n{}",
+        dir.display(),
+        failed.join("\n")
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
 fn names_with_digits_and_underscores_print_in_svg_and_tikz() {
     let dir = scratch("names");
-    let out = run(&["draw", &names_problem().to_string_lossy(), "-o", &dir.to_string_lossy()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = run(&[
+        "draw",
+        &names_problem().to_string_lossy(),
+        "-o",
+        &dir.to_string_lossy(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let svg = std::fs::read_to_string(dir.join("configuration.svg")).expect("drawn");
     for body in ["B0", "B1", "B2", "link_1"] {
-        assert!(svg.contains(&format!("id=\"body-{body}\"")), "no group for {body}");
-        assert!(svg.contains(&format!("id=\"origin-{body}\"")) || body == "B1", "no origin of {body}");
+        assert!(
+            svg.contains(&format!("id=\"body-{body}\"")),
+            "no group for {body}"
+        );
+        assert!(
+            svg.contains(&format!("id=\"origin-{body}\"")) || body == "B1",
+            "no origin of {body}"
+        );
     }
     let tex = dir.join("names.tex");
     let out = run(&[
@@ -80,8 +114,14 @@ fn names_with_digits_and_underscores_print_in_svg_and_tikz() {
     ]);
     assert!(out.status.success());
     let source = std::fs::read_to_string(&tex).expect("written");
-    assert!(!source.contains("}_{o}$") || !source.contains("$B_{0}_{o}$"), "a double subscript");
-    assert!(source.contains("{B_{0}}_{o}"), "the origin of B0 captioned as a group with its subscript");
+    assert!(
+        !source.contains("}_{o}$") || !source.contains("$B_{0}_{o}$"),
+        "a double subscript"
+    );
+    assert!(
+        source.contains("{B_{0}}_{o}"),
+        "the origin of B0 captioned as a group with its subscript"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -104,20 +144,43 @@ fn a_declared_shape_is_what_the_picture_draws() {
     let dir = scratch("shapes");
     for (shape, kind, element) in [
         (r#"{ "type": "disc", "radius": "L/4" }"#, "disc", "<circle"),
-        (r#"{ "type": "block", "size": ["L/3", "L"], "center": "-L/2*A.y" }"#, "block", "<path"),
-        (r#"{ "type": "rod", "from": "0", "to": "-L*A.y" }"#, "rod", "<"),
+        (
+            r#"{ "type": "block", "size": ["L/3", "L"], "center": "-L/2*A.y" }"#,
+            "block",
+            "<path",
+        ),
+        (
+            r#"{ "type": "rod", "from": "0", "to": "-L*A.y" }"#,
+            "rod",
+            "<",
+        ),
         (r#"{ "type": "particle" }"#, "particle", "<circle"),
-        (r#"{ "type": "polygon", "points": ["0", "-L*A.y + L/4*A.x", "-L*A.y - L/4*A.x"] }"#, "outline", "<path"),
+        (
+            r#"{ "type": "polygon", "points": ["0", "-L*A.y + L/4*A.x", "-L*A.y - L/4*A.x"] }"#,
+            "outline",
+            "<path",
+        ),
     ] {
         let file = dir.join(format!("{kind}.json"));
         std::fs::write(&file, shaped(shape)).expect("written");
         let out_dir = dir.join(kind);
-        let out = run(&["draw", &file.to_string_lossy(), "-o", &out_dir.to_string_lossy()]);
-        assert!(out.status.success(), "{kind}: {}", String::from_utf8_lossy(&out.stderr));
+        let out = run(&[
+            "draw",
+            &file.to_string_lossy(),
+            "-o",
+            &out_dir.to_string_lossy(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{kind}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         for picture in ["configuration.svg", "fbd-A.svg"] {
             let svg = std::fs::read_to_string(out_dir.join(picture)).expect("drawn");
             let open = format!("<g class=\"body\" id=\"body-A\" data-shape=\"{kind}\">");
-            let at = svg.find(&open).unwrap_or_else(|| panic!("{kind}: {picture} has no {open}"));
+            let at = svg
+                .find(&open)
+                .unwrap_or_else(|| panic!("{kind}: {picture} has no {open}"));
             let group = &svg[at..at + svg[at..].find("</g>").expect("the group ends")];
             assert!(group.contains(element), "{kind}: {picture}: {group}");
         }
@@ -141,7 +204,11 @@ fn a_declared_shape_is_what_the_picture_draws() {
         .expect("a radius")
         .parse()
         .expect("a number");
-    assert!((r - 0.25 * scale).abs() < 0.06, "radius {r} against {}", 0.25 * scale);
+    assert!(
+        (r - 0.25 * scale).abs() < 0.06,
+        "radius {r} against {}",
+        0.25 * scale
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -150,11 +217,23 @@ fn a_bad_shape_is_refused_with_its_path() {
     let dir = scratch("bad-shapes");
     for (shape, path) in [
         (r#"{ "type": "wheel" }"#, "bodies.A.shape.type"),
-        (r#"{ "type": "disc", "radius": "-L" }"#, "bodies.A.shape.radius"),
-        (r#"{ "type": "block", "size": ["L"] }"#, "bodies.A.shape.size"),
-        (r#"{ "type": "polygon", "points": ["0", "L*A.x"] }"#, "bodies.A.shape.points"),
+        (
+            r#"{ "type": "disc", "radius": "-L" }"#,
+            "bodies.A.shape.radius",
+        ),
+        (
+            r#"{ "type": "block", "size": ["L"] }"#,
+            "bodies.A.shape.size",
+        ),
+        (
+            r#"{ "type": "polygon", "points": ["0", "L*A.x"] }"#,
+            "bodies.A.shape.points",
+        ),
         (r#"{ "type": "rod", "from": "0" }"#, "bodies.A.shape.to"),
-        (r#"{ "type": "rod", "from": "0", "to": "L*B.x" }"#, "bodies.A.shape.to"),
+        (
+            r#"{ "type": "rod", "from": "0", "to": "L*B.x" }"#,
+            "bodies.A.shape.to",
+        ),
     ] {
         let file = dir.join("bad.json");
         std::fs::write(&file, shaped(shape)).expect("written");
@@ -165,7 +244,10 @@ fn a_bad_shape_is_refused_with_its_path() {
             String::from_utf8_lossy(&out.stderr)
         );
         assert_eq!(out.status.code(), Some(1), "{shape}: {text}");
-        assert!(text.contains(path), "{shape}: the error names {path}: {text}");
+        assert!(
+            text.contains(path),
+            "{shape}: the error names {path}: {text}"
+        );
         assert!(!text.contains("panicked"), "{shape}: {text}");
     }
     let _ = std::fs::remove_dir_all(&dir);

@@ -232,7 +232,6 @@ fn norm(a: C64) -> f64 {
 /// A heavy symmetric top on its tip, its spin (the last angle of an x-y-z sequence, so that
 /// upright is not a gimbal lock) set by the constant `w` through an expression-valued rate.
 
-
 #[test]
 fn sleeping_top_is_stable_above_its_threshold_spin() {
     let (m, l, i3, it, g): (f64, f64, f64, f64, f64) = (0.5, 0.04, 4.0e-4, 2.5e-4, 9.81);

@@ -84,7 +84,6 @@ fn explain(problem: &Path, format: &str, out: &Path, student: bool) -> String {
     std::fs::read_to_string(out).expect("written")
 }
 
-
 #[test]
 fn latex_compiles_and_reads_no_file_the_text_names() {
     let dir = scratch("hostile-latex");

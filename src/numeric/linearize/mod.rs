@@ -8,10 +8,10 @@ pub mod jacobian;
 pub mod modes;
 
 use crate::equations::{kane, Derivation, Method};
+use crate::mechanics::MechanicsError;
 use crate::numeric::assemble::Assembly;
 use crate::numeric::reduce::Reducer;
 use crate::numeric::SolveError;
-use crate::mechanics::MechanicsError;
 use crate::problem::Problem;
 use jacobian::{input_values, state_text, variable_name, LinearModel, Matrices, SecondOrder};
 pub use jacobian::{Jacobian, StateMatrix};

@@ -71,7 +71,9 @@ fn declared(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape
                 (false, Some(a)) => direction(n, body, a),
                 _ => None,
             }
-            .unwrap_or_else(|| unit(n.in_ground(body, &[0.0, 0.0, 1.0])).unwrap_or([0.0, 0.0, 1.0]));
+            .unwrap_or_else(|| {
+                unit(n.in_ground(body, &[0.0, 0.0, 1.0])).unwrap_or([0.0, 0.0, 1.0])
+            });
             let radius = n.scalar(radius);
             let mark = spoke(n, body, normal);
             (
@@ -84,11 +86,20 @@ fn declared(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape
                 }],
             )
         }
-        BodyShape::Block { size: sides, center } => {
+        BodyShape::Block {
+            size: sides,
+            center,
+        } => {
             let half: Vec<f64> = sides.iter().map(|s| n.scalar(s) / 2.0).collect();
             let c = n.local(&own_components(center, body));
             let corner = |x: f64, y: f64, z: f64| {
-                n.point_on(body, &add(c, [x * half[0], y * half[1], z * half.get(2).unwrap_or(&0.0)]))
+                n.point_on(
+                    body,
+                    &add(
+                        c,
+                        [x * half[0], y * half[1], z * half.get(2).unwrap_or(&0.0)],
+                    ),
+                )
             };
             let mut parts = vec![Shape::Polygon(vec![
                 corner(-1.0, -1.0, 1.0),
@@ -124,16 +135,21 @@ fn declared(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape
 /// Rule 1: a body with a rolling contact is a wheel of the contact's radius about its
 /// centre; points of the body beyond the rim hang on it by bars.
 fn wheel(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape>)> {
-    let (radius, center, axis) = n.model.problem.constraints.iter().find_map(|c| match &c.kind {
-        ConstraintKind::Rolling {
-            body: b,
-            radius,
-            axis,
-            center,
-            ..
-        } if *b == body => Some((radius, center, axis)),
-        _ => None,
-    })?;
+    let (radius, center, axis) =
+        n.model
+            .problem
+            .constraints
+            .iter()
+            .find_map(|c| match &c.kind {
+                ConstraintKind::Rolling {
+                    body: b,
+                    radius,
+                    axis,
+                    center,
+                    ..
+                } if *b == body => Some((radius, center, axis)),
+                _ => None,
+            })?;
     let radius = n.scalar(radius);
     let center = match center {
         ForcePoint::Point(p) => n.vector(&n.model.position(*p)),

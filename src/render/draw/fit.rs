@@ -82,4 +82,3 @@ pub fn fit(scene: &Scene, view: View) -> (Projection, P2) {
     let b = [b[0] + (room - width) / 2.0, b[1]];
     (Projection { a, b }, [room, height])
 }
-

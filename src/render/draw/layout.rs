@@ -7,10 +7,10 @@ use super::picture::{
     Arc, DrawnArrow, Ink, Item, Legend, Mark, Picture, Projection, Stroke, View, P2,
 };
 use super::place::{text_size, Obstacles};
+use super::scene::{Arrow, Label, Role, Scene, Shape};
 use super::strokes::{
     dashpot, ellipse_of, head, p2add, p2norm, p2scale, p2unit, stack_of, wrap, zigzag,
 };
-use super::scene::{Arrow, Label, Role, Scene, Shape};
 
 /// The length of every force arrow.
 const ARROW: f64 = 44.0;
@@ -559,4 +559,3 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         },
     }
 }
-

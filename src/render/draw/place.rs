@@ -78,7 +78,8 @@ impl Obstacles {
             self.segments.push((w[0], w[1], pad));
         }
         if closed && points.len() > 2 {
-            self.segments.push((points[points.len() - 1], points[0], pad));
+            self.segments
+                .push((points[points.len() - 1], points[0], pad));
         }
     }
 

@@ -2,10 +2,10 @@
 //! springs and dashpots, the ellipse a disc projects to, arrows stacked at one point, and
 //! words wrapped into lines.
 
+use super::numbers::unit;
 use super::picture::P2;
 use super::place::text_size;
 use super::scene::Arrow;
-use super::numbers::unit;
 
 pub fn p2add(a: P2, b: P2) -> P2 {
     [a[0] + b[0], a[1] + b[1]]
