@@ -1,37 +1,16 @@
 //! `mbd-tutor answer`: every question of `find.questions` answered, without a handout.
 
-use crate::cli::Common;
+use crate::cli::{AnswerArgs, AnswerFormat};
 use crate::output::write_output;
 use crate::render::answer_sheet;
 use crate::Error;
-use clap::ValueEnum;
-
-/// The output format of `answer`.
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum AnswerFormat {
-    /// One block per question: its text, then each value with its unit.
-    #[default]
-    Text,
-    /// `{ "answers": [ … ] }`, every number in full precision, for a grader.
-    Json,
-}
-
-/// Arguments of `mbd-tutor answer`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    #[command(flatten)]
-    pub common: Common,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t)]
-    pub format: AnswerFormat,
-}
 
 /// Runs `mbd-tutor answer`.
 ///
 /// # Errors
 /// An invalid problem, a problem without questions, equations that cannot be derived, or
 /// the first question that cannot be answered (its JSON path and a hint).
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: AnswerArgs) -> Result<(), Error> {
     let problem = super::load_with_overrides(&args.common)?;
     if problem.questions.is_empty() {
         let mut error = crate::problem::ProblemError::file(

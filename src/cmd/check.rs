@@ -1,25 +1,15 @@
 //! `mbd-tutor check`: validate a problem and report every error in it at once.
 
+use crate::cli::CheckArgs;
 use crate::problem::{self, Dimension, Problem};
 use crate::Error;
-use std::path::PathBuf;
-
-/// Arguments of `mbd-tutor check`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// The problem file (JSON).
-    pub problem: PathBuf,
-    /// Override constants: NAME=VALUE,... (the checks that depend on values run again).
-    #[arg(long, value_name = "NAME=VALUE,...")]
-    pub set: Vec<String>,
-}
 
 /// Runs `mbd-tutor check`: prints a one-line summary when the problem is valid.
 ///
 /// # Errors
 /// [`Error::Problem`] with every error found; [`Error::Io`] when the file cannot be read;
 /// [`Error::Usage`] for a malformed `--set`.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: CheckArgs) -> Result<(), Error> {
     let overrides = crate::cli::parse_assignments(&args.set)?;
     let mut problem = problem::load_file(&args.problem)?;
     problem::apply_overrides(&mut problem, &overrides)?;

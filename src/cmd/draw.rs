@@ -1,41 +1,11 @@
 //! `mbd-tutor draw`: the configuration and every free-body diagram as SVG files.
 
-use crate::cli::Common;
+use crate::cli::{Common, DrawArgs};
 use crate::equations::system::State;
 use crate::equations::{Derivation, Method};
 use crate::numeric::system::System;
 use crate::render::draw::{draw, Drawing, View};
 use crate::Error;
-
-/// Arguments of `mbd-tutor draw`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// The problem; `-o` names the directory the pictures go to (created if missing).
-    #[command(flatten)]
-    pub common: Common,
-    /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
-    #[arg(long, value_name = "NAME=VALUE,...")]
-    pub state: Vec<String>,
-    /// The time t.
-    #[arg(long, default_value_t = 0.0)]
-    pub time: f64,
-    /// How a spatial system is seen: iso (default), front, side, top, or a direction
-    /// X,Y,Z to look along. Planar systems are drawn in their plane.
-    #[arg(long, value_name = "VIEW")]
-    pub view: Option<String>,
-    /// Also write each picture as a TikZ picture, NAME.tex.
-    #[arg(long)]
-    pub tikz: bool,
-    /// Also write motion.svg: the configuration over the simulated motion, animated.
-    #[arg(long)]
-    pub animate: bool,
-    /// With --animate: seconds of motion; default the problem's `simulate.duration` (5 s).
-    #[arg(long, requires = "animate")]
-    pub duration: Option<f64>,
-    /// With --animate: frames per second.
-    #[arg(long, requires = "animate", default_value_t = crate::render::draw::motion::DEFAULT_FPS)]
-    pub fps: f64,
-}
 
 /// The derivation whose plan the pictures show and the q'' at the state, if solvable. The
 /// state is first made to meet the constraints (dependent coordinates and rates, prescribed
@@ -63,7 +33,7 @@ pub fn derivation_at<'p>(
 ///
 /// # Errors
 /// A usage error for a bad `--view`, `--time` or `--state`; an invalid problem.
-pub fn drawings(args: &Args) -> Result<Vec<Drawing>, Error> {
+pub fn drawings(args: &DrawArgs) -> Result<Vec<Drawing>, Error> {
     let view = match &args.view {
         Some(text) => View::parse(text).map_err(Error::Usage)?,
         None => View::Isometric,
@@ -97,7 +67,7 @@ pub fn drawings(args: &Args) -> Result<Vec<Drawing>, Error> {
 ///
 /// # Errors
 /// A usage error without `-o DIR`; whatever [`drawings`] reports; an unwritable directory.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: DrawArgs) -> Result<(), Error> {
     let Some(directory) = args.common.output.clone() else {
         return Err(Error::Usage(
             "draw writes several pictures: name the output directory with -o DIR".into(),
@@ -138,7 +108,7 @@ pub fn run(args: Args) -> Result<(), Error> {
 /// # Errors
 /// A usage error for a bad `--duration`, `--fps` or `--view`, or too many frames (before
 /// any work); an invalid problem; a simulation that cannot start.
-pub fn motion_svg(args: &Args) -> Result<String, Error> {
+pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
     use crate::render::draw::{motion, motion_svg};
     let view = match &args.view {
         Some(text) => View::parse(text).map_err(Error::Usage)?,

@@ -1,27 +1,14 @@
 //! `mbd-tutor explain`: the worked solution of one problem, or of every problem in a
 //! directory.
 
-use crate::cli::Common;
+use crate::cli::{Common, ExplainArgs, FormatArg};
 use crate::error::BatchError;
 use crate::output::write_output;
 use crate::pipeline;
 use crate::render::{self, Format, Solution};
 use crate::Error;
-use clap::ValueEnum;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
-
-/// The output format of `explain`.
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum FormatArg {
-    /// Markdown with `$…$` math (GitHub, pandoc).
-    #[default]
-    Markdown,
-    /// A standalone LaTeX article for pdflatex.
-    Latex,
-    /// One self-contained HTML page with MathML.
-    Html,
-}
 
 impl From<FormatArg> for Format {
     fn from(arg: FormatArg) -> Format {
@@ -33,50 +20,13 @@ impl From<FormatArg> for Format {
     }
 }
 
-/// Arguments of `mbd-tutor explain`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// A problem file, or a directory of them (then `-o` names the output directory).
-    #[command(flatten)]
-    pub common: Common,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t)]
-    pub format: FormatArg,
-    /// A directory of templates (`solution.md.tera`, `solution.tex.tera`,
-    /// `solution.html.tera`) that replace the built-in ones, to restyle a handout.
-    #[arg(long, value_name = "DIR")]
-    pub templates: Option<PathBuf>,
-    /// Write the student's handout: the statement and the set-up, with blank tables.
-    #[arg(long, conflicts_with = "both")]
-    pub student: bool,
-    /// Write both versions from one run: the worked solution to `-o NAME.EXT` and the
-    /// student's handout beside it as `NAME-student.EXT` (needs `-o`).
-    #[arg(long)]
-    pub both: bool,
-    /// Add a section on small motions about the initial state, or about the state given
-    /// (`--linearize=q1=0,q1'=0`): M, C, K, the state matrix, eigenvalues and modes. The
-    /// state follows an `=`, so that `--linearize problem.json` keeps the problem's path.
-    #[arg(
-        long,
-        value_name = "STATE",
-        num_args = 0..=1,
-        require_equals = true,
-        default_missing_value = ""
-    )]
-    pub linearize: Option<String>,
-    /// List every candidate equation the Motion Law's planner did not use, with its reason,
-    /// not only the few that show why the plan is what it is.
-    #[arg(long)]
-    pub verbose: bool,
-}
-
 /// Runs `mbd-tutor explain`.
 ///
 /// # Errors
 /// For one file, whatever stops it (an invalid problem, equations that cannot be solved, a
 /// template that fails, an unwritable output). For a directory, a [`BatchError`] listing
 /// every problem that failed, after all the others were written.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: ExplainArgs) -> Result<(), Error> {
     if args.common.problem.is_dir() {
         return run_directory(&args);
     }
@@ -93,7 +43,11 @@ pub fn student_path(path: &Path) -> PathBuf {
 }
 
 /// Explains one problem into `output`; with `--both`, the student's handout too, beside it.
-pub fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> Result<(), Error> {
+pub fn explain_file(
+    args: &ExplainArgs,
+    problem_path: &Path,
+    output: Option<&Path>,
+) -> Result<(), Error> {
     if !args.both {
         return explain_version(args, problem_path, output, args.student);
     }
@@ -109,7 +63,7 @@ pub fn explain_file(args: &Args, problem_path: &Path, output: Option<&Path>) -> 
 /// Explains one problem into `output` (standard output when `None`); plots go beside it
 /// as `STEM-KIND.svg`, `STEM` being the output's file name without extension.
 fn explain_version(
-    args: &Args,
+    args: &ExplainArgs,
     problem_path: &Path,
     output: Option<&Path>,
     student: bool,
@@ -139,7 +93,7 @@ fn explain_version(
 /// # Errors
 /// An invalid problem, equations that cannot be solved, a template that fails.
 pub fn rendered(
-    args: &Args,
+    args: &ExplainArgs,
     problem_path: &Path,
     output: Option<&Path>,
     student: bool,
@@ -232,7 +186,7 @@ fn with_motion(
 
 /// Explains every `*.json` directly in the directory, in name order, into `-o DIR`,
 /// going on past failures.
-fn run_directory(args: &Args) -> Result<(), Error> {
+fn run_directory(args: &ExplainArgs) -> Result<(), Error> {
     let directory = &args.common.problem;
     let Some(out) = args.common.output.as_deref() else {
         return Err(Error::Usage(format!(

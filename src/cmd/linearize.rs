@@ -1,7 +1,8 @@
 //! `mbd-tutor linearize`: small motions about a state, their eigenvalues and modes;
 //! with `--sweep`, over a range of one constant.
 
-use super::solve::{initial_state, AtState, Format};
+use super::solve::initial_state;
+use crate::cli::{LinearizeArgs, SolveFormat as Format};
 use crate::numeric::format::fixed;
 use crate::numeric::linearize::modes::{self, Shape};
 use crate::numeric::linearize::Linearization;
@@ -10,22 +11,7 @@ use crate::problem::Problem;
 use crate::Error;
 use nalgebra::DMatrix;
 use serde_json::{json, Map, Value};
-use std::path::{Path, PathBuf};
-
-/// Arguments of `mbd-tutor linearize`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    // The problem, the state to linearize about, the output format.
-    #[command(flatten)]
-    pub at: AtState,
-    /// Repeat over COUNT evenly spaced values of a constant, both ends included.
-    #[arg(long, value_name = "NAME=FROM:TO:COUNT")]
-    pub sweep: Option<String>,
-    /// With --sweep, also plot the eigenvalues against the constant into this SVG file
-    /// (as does `-o FILE.svg`, the report then going to standard output).
-    #[arg(long, value_name = "FILE")]
-    pub plot: Option<PathBuf>,
-}
+use std::path::Path;
 
 /// The most values a sweep may take.
 pub const MAX_SWEEP: usize = 100_000;
@@ -90,7 +76,7 @@ pub fn parse_sweep(text: &str) -> Result<Sweep, Error> {
 /// # Errors
 /// An invalid problem or command line, a singular system, or eigenvalues that do not
 /// converge.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     if !args.at.time.is_finite() {
         return Err(Error::Usage("--time must be finite".into()));
     }

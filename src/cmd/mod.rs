@@ -77,13 +77,6 @@ pub fn report_constraints(model: &crate::mechanics::Model, state: &[String]) {
     }
 }
 
-/// The most bodies that `explain`, `solve` and `simulate` derive unless `--max-bodies`
-/// raises it: the symbolic work grows steeply with the size of the system.
-pub const MAX_BODIES: usize = 30;
-
-/// The most coordinates those commands derive unless `--max-coordinates` raises it.
-pub const MAX_COORDINATES: usize = 60;
-
 /// Loads the problem named on the command line and applies `--set`, refusing an output
 /// file that is the problem file and a problem beyond the size limits.
 ///

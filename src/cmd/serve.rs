@@ -8,7 +8,7 @@
 //! soon as the version is no longer N or a rebuild starts (or after [`LONG_POLL`]): a new
 //! version reloads the tab; a rebuild that lasts over a second shows "rebuilding…".
 
-use crate::cli::MethodArg;
+use crate::cli::{ExplainArgs, MethodArg, ServeArgs};
 use crate::Error;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -23,22 +23,6 @@ const LONG_POLL: Duration = Duration::from_secs(20);
 
 /// How often the request loop looks for SIGINT and SIGTERM.
 const SIGNAL_CHECK: Duration = Duration::from_millis(100);
-
-/// Arguments of `mbd-tutor serve`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// The problem file (JSON).
-    pub problem: PathBuf,
-    /// The port to listen on; 0 picks a free one.
-    #[arg(long, default_value_t = 7070)]
-    pub port: u16,
-    /// The address to listen on.
-    #[arg(long, default_value = "127.0.0.1")]
-    pub host: String,
-    /// Which method forms the equations.
-    #[arg(long, value_enum, default_value_t)]
-    pub method: MethodArg,
-}
 
 /// What the tabs are shown: the page and its version.
 struct Shown {
@@ -72,7 +56,7 @@ impl Site {
 ///
 /// # Errors
 /// [`Error::Io`] when the address cannot be listened on (a port in use, an unknown host).
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: ServeArgs) -> Result<(), Error> {
     let server =
         tiny_http::Server::http((args.host.as_str(), args.port)).map_err(|e| Error::Io {
             path: PathBuf::from(format!("{}:{}", args.host, args.port)),
@@ -157,17 +141,17 @@ fn watch(path: &Path, method: MethodArg, site: &Site, stop: &AtomicBool) {
 
 /// The worked solution of the file as it is now, or the page of its errors.
 fn page(path: &Path, method: MethodArg) -> String {
-    let args = super::explain::Args {
+    let args = ExplainArgs {
         common: crate::cli::Common {
             problem: path.to_path_buf(),
             method,
             set: Vec::new(),
             output: None,
-            max_bodies: super::MAX_BODIES,
-            max_coordinates: super::MAX_COORDINATES,
+            max_bodies: crate::cli::MAX_BODIES,
+            max_coordinates: crate::cli::MAX_COORDINATES,
             max_work: crate::symbolic::budget::DEFAULT_LIMIT / 1_000_000,
         },
-        format: super::explain::FormatArg::Html,
+        format: crate::cli::FormatArg::Html,
         templates: None,
         student: false,
         both: false,

@@ -1,6 +1,6 @@
 //! `mbd-tutor simulate`: integrate the equations of motion and tabulate the motion.
 
-use crate::cli::Common;
+use crate::cli::{SimulateArgs, SimulateFormat};
 use crate::numeric::checks::Check;
 use crate::numeric::format::fixed;
 use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
@@ -8,44 +8,13 @@ use crate::numeric::SolveError;
 use crate::pipeline::derive;
 use crate::problem::{ProblemError, ProblemErrors};
 use crate::Error;
-use clap::ValueEnum;
-
-/// How `simulate` writes its table.
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Format {
-    /// A header row, then one row per output step.
-    #[default]
-    Csv,
-    /// `{ "columns": [...], "rows": [[...], ...] }`.
-    Json,
-}
-
-/// Arguments of `mbd-tutor simulate`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    #[command(flatten)]
-    pub common: Common,
-    /// Seconds to simulate; default the problem's `simulate.duration` (5 s).
-    #[arg(long)]
-    pub duration: Option<f64>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t)]
-    pub format: Format,
-    /// The most output rows before the run is refused (a guard against gigabytes of output).
-    #[arg(long, default_value_t = crate::numeric::simulate::MAX_ROWS)]
-    pub max_rows: usize,
-    /// Skip the confirmation checks (energy, agreement of the three methods, period of small
-    /// oscillations) that are otherwise reported on standard error.
-    #[arg(long)]
-    pub no_checks: bool,
-}
 
 /// Runs `mbd-tutor simulate`.
 ///
 /// # Errors
 /// An invalid problem, unusable settings, or a run that stops early (a singular
 /// configuration): then everything computed up to that time is still written.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: SimulateArgs) -> Result<(), Error> {
     let mut problem = super::load_with_overrides(&args.common)?;
     if let Some(duration) = args.duration {
         if !(duration.is_finite() && duration > 0.0) {
@@ -82,8 +51,8 @@ pub fn run(args: Args) -> Result<(), Error> {
         }
     }
     let text = match args.format {
-        Format::Csv => trajectory.to_csv(),
-        Format::Json => trajectory.to_json(),
+        SimulateFormat::Csv => trajectory.to_csv(),
+        SimulateFormat::Json => trajectory.to_json(),
     };
     crate::output::write_output(args.common.output.as_deref(), text.as_bytes())?;
     match trajectory.stopped {

@@ -1,45 +1,11 @@
 //! `mbd-tutor solve`: the q'' and the requested reactions at one state.
 
-use crate::cli::{parse_assignments, Common};
+use crate::cli::{parse_assignments, SolveArgs, SolveFormat};
 use crate::numeric::evaluate::StateSolution;
 use crate::numeric::format::fixed;
 use crate::numeric::system::System;
 use crate::Error;
-use clap::ValueEnum;
 use serde_json::{json, Map, Value};
-
-/// How `solve` prints its result.
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Format {
-    /// A readable table.
-    #[default]
-    Text,
-    /// The JSON object of the command-line contract.
-    Json,
-}
-
-/// What `solve` and `linearize` share: the problem, one state and the output format.
-#[derive(clap::Args, Debug)]
-pub struct AtState {
-    #[command(flatten)]
-    pub common: Common,
-    /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
-    #[arg(long, value_name = "NAME=VALUE,...")]
-    pub state: Vec<String>,
-    /// The time t.
-    #[arg(long, default_value_t = 0.0)]
-    pub time: f64,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t)]
-    pub format: Format,
-}
-
-/// Arguments of `mbd-tutor solve`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    #[command(flatten)]
-    pub at: AtState,
-}
 
 /// A problem's state at the start, with `--state` overrides applied.
 ///
@@ -82,7 +48,7 @@ pub fn initial_state(
 ///
 /// # Errors
 /// An invalid problem, an unknown name in `--set` or `--state`, or a singular system.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: SolveArgs) -> Result<(), Error> {
     if !args.at.time.is_finite() {
         return Err(Error::Usage("--time must be finite".into()));
     }
@@ -96,7 +62,7 @@ pub fn run(args: Args) -> Result<(), Error> {
     let solution = solver.solve(args.at.time, &q, &rates)?;
     let coordinates = solver.coordinate_names();
     let text = match args.at.format {
-        Format::Json => {
+        SolveFormat::Json => {
             let value = to_json(
                 method.name(),
                 args.at.time,
@@ -109,7 +75,7 @@ pub fn run(args: Args) -> Result<(), Error> {
             text.push('\n');
             text
         }
-        Format::Text => to_text(
+        SolveFormat::Text => to_text(
             &problem.title,
             method.title(),
             args.at.time,

@@ -7,14 +7,14 @@
 //! answered (a singular plan, no steady root near the guess), is drawn again from its own
 //! stream, and the key counts the redraws.
 
-use super::explain::{self, FormatArg};
-use crate::cli::{Common, MethodArg};
+use super::explain;
+use crate::cli::{Common, ExplainArgs, VariantsArgs};
 use crate::output::write_output;
 use crate::problem::variant::{self, SplitMix64};
 use crate::problem::{Problem, ProblemError, ProblemErrors};
 use crate::render::answer_sheet::{csv_cell, full, key_columns};
 use crate::Error;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// The most variants one run writes: each takes seconds, and a class is not larger.
 pub const MAX_COUNT: usize = 500;
@@ -26,28 +26,6 @@ const MAX_DRAWS: usize = 50;
 /// The most draws of one variant that repeat an earlier variant's values before a repeat
 /// is accepted (only when nearly every combination of the grids is taken).
 const MAX_DUPLICATES: usize = 10_000;
-
-/// Arguments of `mbd-tutor variants`.
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// The problem file (JSON), with at least one constant that declares `vary`.
-    pub problem: PathBuf,
-    /// How many variants to write (1 to 500).
-    #[arg(long, value_name = "N")]
-    pub count: usize,
-    /// The seed of the draws: the same seed writes the same files, byte for byte.
-    #[arg(long, value_name = "S", default_value_t = 1)]
-    pub seed: u64,
-    /// The directory to write into (made if missing).
-    #[arg(short, long, value_name = "DIR")]
-    pub output: PathBuf,
-    /// The format of each worked solution and student handout.
-    #[arg(long, value_enum, default_value_t = FormatArg::Latex)]
-    pub format: FormatArg,
-    /// Which method forms the equations.
-    #[arg(long, value_enum, default_value_t)]
-    pub method: MethodArg,
-}
 
 /// One variant drawn and answered.
 struct Variant {
@@ -67,7 +45,7 @@ struct Variant {
 /// A usage error for a count out of range, an output that is a file, or a problem with no
 /// constant that varies or fewer different variants than asked; an invalid problem; a
 /// variant that no draw could solve; an output that cannot be written.
-pub fn run(args: Args) -> Result<(), Error> {
+pub fn run(args: VariantsArgs) -> Result<(), Error> {
     if !(1..=MAX_COUNT).contains(&args.count) {
         return Err(Error::Usage(format!(
             "--count {}: ask for 1 to {MAX_COUNT} variants",
@@ -211,15 +189,15 @@ impl Drawn<'_> {
 }
 
 /// The arguments of `explain --both` for one variant's file.
-fn explain_args(args: &Args, file: &Path) -> explain::Args {
-    explain::Args {
+fn explain_args(args: &VariantsArgs, file: &Path) -> ExplainArgs {
+    ExplainArgs {
         common: Common {
             problem: file.to_path_buf(),
             method: args.method,
             set: Vec::new(),
             output: None,
-            max_bodies: super::MAX_BODIES,
-            max_coordinates: super::MAX_COORDINATES,
+            max_bodies: crate::cli::MAX_BODIES,
+            max_coordinates: crate::cli::MAX_COORDINATES,
             max_work: crate::symbolic::budget::DEFAULT_LIMIT / 1_000_000,
         },
         format: args.format,

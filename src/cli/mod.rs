@@ -1,7 +1,18 @@
 //! The command line: clap types, converted into a plain [`Config`] before any work.
 
+mod commands;
+
+pub use commands::*;
+
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
+
+/// The most bodies that `explain`, `solve` and `simulate` derive unless `--max-bodies`
+/// raises it: the symbolic work grows steeply with the size of the system.
+pub const MAX_BODIES: usize = 30;
+
+/// The most coordinates those commands derive unless `--max-coordinates` raises it.
+pub const MAX_COORDINATES: usize = 60;
 
 /// Derive, solve and explain the equations of motion of rigid multibody systems.
 #[derive(Parser, Debug)]
@@ -39,10 +50,10 @@ pub struct Common {
     #[arg(short, long)]
     pub output: Option<PathBuf>,
     /// Refuse problems with more bodies than this, whose derivation could take hours.
-    #[arg(long, value_name = "N", default_value_t = crate::cmd::MAX_BODIES)]
+    #[arg(long, value_name = "N", default_value_t = MAX_BODIES)]
     pub max_bodies: usize,
     /// Refuse problems with more coordinates than this, whose derivation could take hours.
-    #[arg(long, value_name = "N", default_value_t = crate::cmd::MAX_COORDINATES)]
+    #[arg(long, value_name = "N", default_value_t = MAX_COORDINATES)]
     pub max_coordinates: usize,
     /// Refuse, in seconds, a derivation whose symbolic work passes this many million
     /// expression terms (about 30 s and 1.5 GB at the default).
@@ -54,26 +65,26 @@ pub struct Common {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// The worked solution: the six steps, the tables, the equations and the simulation.
-    Explain(crate::cmd::explain::Args),
+    Explain(ExplainArgs),
     /// The second derivatives of the coordinates and the requested reactions at one state.
-    Solve(crate::cmd::solve::Args),
+    Solve(SolveArgs),
     /// Integrate the equations of motion over time.
-    Simulate(crate::cmd::simulate::Args),
+    Simulate(SimulateArgs),
     /// Validate a problem and report every error in it at once.
-    Check(crate::cmd::check::Args),
+    Check(CheckArgs),
     /// Small motions about a state: the state matrix, its eigenvalues and the modes.
-    Linearize(crate::cmd::linearize::Args),
+    Linearize(LinearizeArgs),
     /// Print the JSON Schema of the problem format.
-    Schema(crate::cmd::schema::Args),
+    Schema(SchemaArgs),
     /// SVG pictures of the configuration and of every free-body diagram of the plan.
-    Draw(crate::cmd::draw::Args),
+    Draw(DrawArgs),
     /// Every question of `find.questions` answered in full precision, as text or JSON.
-    Answer(crate::cmd::answer::Args),
+    Answer(AnswerArgs),
     /// Randomized variants of a problem, each with its worked solution and student
     /// handout, and `key.csv` with every variant's constants and answers.
-    Variants(crate::cmd::variants::Args),
+    Variants(VariantsArgs),
     /// Serve the HTML worked solution on a local web server, rebuilt when the file changes.
-    Serve(crate::cmd::serve::Args),
+    Serve(ServeArgs),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).
