@@ -118,7 +118,8 @@ impl Setting<'_, '_, '_> {
     /// The springs and dampers, with ground marks at their ends on `N`.
     fn elements(&self, shapes: &mut Vec<Shape>) {
         let model = &self.derivation.model;
-        for load in &self.problem().loads {
+        let lanes = super::strokes::lanes(&self.problem().loads);
+        for (load, &lane) in self.problem().loads.iter().zip(&lanes) {
             let (between, spring) = match &load.kind {
                 LoadKind::Spring { between, .. } => (between, true),
                 LoadKind::Damper { between, .. } => (between, false),
@@ -126,9 +127,9 @@ impl Setting<'_, '_, '_> {
             };
             let [from, to] = between.map(|p| self.position(p));
             shapes.push(if spring {
-                Shape::Spring { from, to }
+                Shape::Spring { from, to, lane }
             } else {
-                Shape::Damper { from, to }
+                Shape::Damper { from, to, lane }
             });
             for (end, other) in [(between[0], to), (between[1], from)] {
                 if model.locate(end).0 == BodyId::GROUND {

@@ -23,8 +23,8 @@ fn shape_points(shape: &Shape) -> Vec<P3> {
         Shape::Dot(p) | Shape::Pin(p) | Shape::Ball(p) | Shape::Weld(p) => vec![*p],
         Shape::Slider { at, .. } => vec![*at],
         Shape::Ground { at, along, .. } => vec![add(*at, *along), add(*at, scale(*along, -1.0))],
-        Shape::Spring { from, to }
-        | Shape::Damper { from, to }
+        Shape::Spring { from, to, .. }
+        | Shape::Damper { from, to, .. }
         | Shape::Distance { from, to, .. }
         | Shape::Dashed { from, to } => vec![*from, *to],
         Shape::Triad { origin, .. } => origin.iter().copied().collect(),

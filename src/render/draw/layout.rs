@@ -9,7 +9,7 @@ use super::picture::{
 use super::place::{text_size, Obstacles};
 use super::scene::{Arrow, Label, Role, Scene, Shape};
 use super::strokes::{
-    dashpot, ellipse_of, head, p2add, p2norm, p2scale, p2unit, stack_of, wrap, zigzag,
+    dashpot, ellipse_of, head, in_lane, p2add, p2norm, p2scale, p2unit, stack_of, wrap, zigzag,
 };
 
 /// The length of every force arrow.
@@ -212,13 +212,18 @@ impl Painter {
                 self.stroke(sleeve, 1.2, Ink::Black, None, true);
             }
             Shape::Ground { at, along, up } => self.ground(*at, *along, *up),
-            Shape::Spring { from, to } => {
+            Shape::Spring { from, to, lane } => {
                 let (a, b) = (self.at(*from), self.at(*to));
+                let ([a, b], legs) = in_lane(a, b, *lane);
+                for leg in legs {
+                    self.stroke(leg, 1.3, Ink::Black, None, false);
+                }
                 self.stroke(zigzag(a, b), 1.3, Ink::Black, None, false);
             }
-            Shape::Damper { from, to } => {
+            Shape::Damper { from, to, lane } => {
                 let (a, b) = (self.at(*from), self.at(*to));
-                for part in dashpot(a, b) {
+                let ([a, b], legs) = in_lane(a, b, *lane);
+                for part in legs.into_iter().chain(dashpot(a, b)) {
                     self.stroke(part, 1.3, Ink::Black, None, false);
                 }
             }

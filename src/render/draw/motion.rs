@@ -144,6 +144,8 @@ pub struct Placed {
     pub points: Vec<P3>,
     /// Per spring: its ends.
     pub springs: Vec<[P3; 2]>,
+    /// Per damper: its ends.
+    pub dampers: Vec<[P3; 2]>,
 }
 
 /// The whole motion, ready to write.
@@ -162,6 +164,10 @@ pub struct Motion {
     pub grounded: Vec<usize>,
     /// Rolling contacts' points (ids into `points`), whose track is drawn as the ground.
     pub rolling: Vec<usize>,
+    /// Per spring, then per damper: its lane beside the others between the same points
+    /// (see [`super::strokes::lanes`]).
+    pub spring_lanes: Vec<f64>,
+    pub damper_lanes: Vec<f64>,
     /// The frames.
     pub frames: Vec<Placed>,
     /// The map to the picture, chosen so that the whole motion fits.
@@ -222,6 +228,20 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         .map(|f| place(derivation, &sheets, f))
         .collect();
     let (projection, size) = fit(still_rows, &sheets, &placed);
+    let lanes = super::strokes::lanes(&problem.loads);
+    let lanes_of = |spring: bool| -> Vec<f64> {
+        problem
+            .loads
+            .iter()
+            .zip(&lanes)
+            .filter(|(load, _)| match load.kind {
+                LoadKind::Spring { .. } => spring,
+                LoadKind::Damper { .. } => !spring,
+                _ => false,
+            })
+            .map(|(_, &lane)| lane)
+            .collect()
+    };
     Motion {
         title: problem.title.clone(),
         sheets,
@@ -229,6 +249,8 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         captions,
         grounded,
         rolling,
+        spring_lanes: lanes_of(true),
+        damper_lanes: lanes_of(false),
         frames: placed,
         projection,
         size,
@@ -392,7 +414,7 @@ fn plane_through(center: P3, points: &[P3]) -> [P3; 2] {
     }
 }
 
-/// Where the sheets, points and springs are at one frame.
+/// Where the sheets, points, springs and dampers are at one frame.
 fn place(derivation: &Derivation, sheets: &[Sheet], frame: &Frame) -> Placed {
     let model = &derivation.model;
     let problem = model.problem;
@@ -426,11 +448,20 @@ fn place(derivation: &Derivation, sheets: &[Sheet], frame: &Frame) -> Placed {
             _ => None,
         })
         .collect();
+    let dampers = problem
+        .loads
+        .iter()
+        .filter_map(|load| match &load.kind {
+            LoadKind::Damper { between, .. } => Some(between.map(|p| n.vector(&model.position(p)))),
+            _ => None,
+        })
+        .collect();
     Placed {
         t: frame.t,
         sheets,
         points,
         springs,
+        dampers,
     }
 }
 
@@ -439,6 +470,7 @@ fn place(derivation: &Derivation, sheets: &[Sheet], frame: &Frame) -> Placed {
 fn extent(sheets: &[Sheet], placed: &Placed) -> Vec<P3> {
     let mut out = placed.points.clone();
     out.extend(placed.springs.iter().flatten());
+    out.extend(placed.dampers.iter().flatten());
     for (sheet, [o, e1, e2]) in sheets.iter().zip(&placed.sheets) {
         let at = |u: f64, v: f64| add(*o, add(scale(*e1, u), scale(*e2, v)));
         match &sheet.look {

@@ -4,6 +4,7 @@
 use super::motion::{Look, Motion, Placed, TITLE_STRIP};
 use super::numbers::P3;
 use super::picture::{Ink, Projection, P2};
+use super::strokes::in_lane;
 use crate::render::escape::html as xml;
 use std::fmt::Write;
 
@@ -162,6 +163,7 @@ pub fn export(motion: &Motion) -> String {
         let _ = sheet;
     }
     springs(&mut out, motion, &timing);
+    dampers(&mut out, motion, &timing);
     points(&mut out, motion, &timing);
     out.push_str("</svg>\n");
     out
@@ -325,7 +327,14 @@ fn springs(out: &mut String, motion: &Motion, timing: &Timing) {
         let shapes: Vec<String> = motion
             .frames
             .iter()
-            .map(|f| polyline(&zigzag(p.point(f.springs[s][0]), p.point(f.springs[s][1]))))
+            .map(|f| {
+                let [a, b] = f.springs[s].map(|e| p.point(e));
+                let ([a1, b1], legs) = in_lane(a, b, motion.spring_lanes[s]);
+                let mut points: Vec<P2> = legs.first().map_or(Vec::new(), |leg| leg[..2].to_vec());
+                points.extend(zigzag(a1, b1));
+                points.extend(legs.get(1).map_or(Vec::new(), |leg| vec![leg[1], leg[0]]));
+                polyline(&points)
+            })
             .collect();
         let _ = writeln!(
             out,
@@ -335,6 +344,100 @@ fn springs(out: &mut String, motion: &Motion, timing: &Timing) {
         );
         timing.animate(out, "d", &shapes);
         out.push_str("</path>\n");
+    }
+}
+
+/// The dampers as dashpots: a cylinder fixed to the first end and a piston on a rod from
+/// the second, both of fixed length, so that the piston slides in the cylinder as the ends
+/// move; the cylinder is made long enough for the piston's whole stroke.
+fn dampers(out: &mut String, motion: &Motion, timing: &Timing) {
+    let p = &motion.projection;
+    let count = motion.frames.first().map_or(0, |f| f.dampers.len());
+    for s in 0..count {
+        // The dashpot's own ends in its lane, and the legs that join them to the points.
+        let ends: Vec<([P2; 2], Vec<Vec<P2>>)> = motion
+            .frames
+            .iter()
+            .map(|f| {
+                in_lane(
+                    p.point(f.dampers[s][0]),
+                    p.point(f.dampers[s][1]),
+                    motion.damper_lanes[s],
+                )
+            })
+            .collect();
+        let lengths = ends
+            .iter()
+            .map(|([a, b], _)| (b[0] - a[0]).hypot(b[1] - a[1]));
+        let shortest = lengths.clone().fold(f64::INFINITY, f64::min);
+        let longest = lengths.fold(0.0, f64::max);
+        let dashpot = Dashpot::for_stroke(shortest, longest);
+        let shapes: Vec<String> = ends
+            .iter()
+            .map(|([a, b], legs)| {
+                let legs: String = legs.iter().map(|leg| polyline(leg)).collect();
+                legs + &dashpot.path(*a, *b)
+            })
+            .collect();
+        let _ = writeln!(
+            out,
+            "<path class=\"damper\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.4\">",
+            shapes[0],
+            color(Ink::Known)
+        );
+        timing.animate(out, "d", &shapes);
+        out.push_str("</path>\n");
+    }
+}
+
+/// A dashpot's fixed lengths on the page: its piston's distance back from the second end,
+/// and its cylinder's bottom and open end measured from the first.
+struct Dashpot {
+    piston_back: f64,
+    bottom: f64,
+    open: f64,
+}
+
+impl Dashpot {
+    /// One whose piston stays inside the cylinder while the ends are `shortest` to
+    /// `longest` apart.
+    fn for_stroke(shortest: f64, longest: f64) -> Dashpot {
+        let piston_back = 0.45 * shortest;
+        Dashpot {
+            piston_back,
+            bottom: 0.25 * shortest,
+            open: (longest - piston_back + 4.0).max(0.75 * shortest),
+        }
+    }
+
+    /// The dashpot from `a` to `b`: always the same commands, so that one frame's path
+    /// turns into the next.
+    fn path(&self, a: P2, b: P2) -> String {
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let length = d[0].hypot(d[1]).max(1e-9);
+        let (u, n) = (
+            [d[0] / length, d[1] / length],
+            [-d[1] / length, d[0] / length],
+        );
+        let from = |base: P2, along: f64, side: f64| {
+            [
+                base[0] + u[0] * along + n[0] * side,
+                base[1] + u[1] * along + n[1] * side,
+            ]
+        };
+        let piston = -self.piston_back;
+        let parts = [
+            vec![a, from(a, self.bottom, 0.0)],
+            vec![
+                from(a, self.open, 8.0),
+                from(a, self.bottom, 8.0),
+                from(a, self.bottom, -8.0),
+                from(a, self.open, -8.0),
+            ],
+            vec![from(b, piston, 6.0), from(b, piston, -6.0)],
+            vec![from(b, piston, 0.0), b],
+        ];
+        parts.iter().map(|part| polyline(part)).collect()
     }
 }
 
@@ -425,6 +528,36 @@ mod tests {
             for (x, y) in m.iter().zip(back) {
                 assert!((x - y).abs() < 1e-9, "{m:?} came back as {back:?}");
             }
+        }
+    }
+
+    /// The numbers of a path's commands, in order.
+    fn numbers(path: &str) -> Vec<f64> {
+        path.split(['M', 'L', ' '])
+            .filter(|s| !s.is_empty())
+            .map(|s| s.parse().unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn a_dashpots_piston_slides_inside_its_cylinder() {
+        let (shortest, longest) = (60.0, 150.0);
+        let dashpot = Dashpot::for_stroke(shortest, longest);
+        let commands = |p: &str| p.matches(['M', 'L']).count();
+        let first = dashpot.path([0.0, 0.0], [100.0, 0.0]);
+        for length in [shortest, 80.0, 100.0, longest] {
+            let path = dashpot.path([0.0, 0.0], [length, 0.0]);
+            assert_eq!(commands(&path), commands(&first));
+            let n = numbers(&path);
+            // The parts: rod (2 points), cylinder (4), piston (2), rod (2).
+            let (open, bottom, piston) = (n[4], n[6], n[12]);
+            assert_eq!((bottom, open), (dashpot.bottom, dashpot.open));
+            assert!(
+                bottom < piston && piston < open,
+                "piston at {piston} out of [{bottom}, {open}]"
+            );
+            assert!((length - piston - dashpot.piston_back).abs() < 1e-9);
+            assert_eq!(n[n.len() - 2], length, "the rod ends at the second end");
         }
     }
 

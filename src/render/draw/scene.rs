@@ -224,10 +224,11 @@ pub enum Shape {
     /// Ground at a point, on the side opposite the unit `up`: a rail of half length
     /// `along` (a vector), or a small support when `along` is zero.
     Ground { at: P3, along: P3, up: P3 },
-    /// A spring as a zig-zag.
-    Spring { from: P3, to: P3 },
-    /// A damper as a dashpot.
-    Damper { from: P3, to: P3 },
+    /// A spring as a zig-zag, `lane` steps to the side of the line between its ends when
+    /// it shares them with others (see [`super::strokes::lanes`]).
+    Spring { from: P3, to: P3, lane: f64 },
+    /// A damper as a dashpot, likewise.
+    Damper { from: P3, to: P3, lane: f64 },
     /// Unit vectors at a frame's origin (`None`: in a corner of the picture), with labels.
     Triad {
         origin: Option<P3>,

@@ -73,6 +73,53 @@ pub fn dashpot(a: P2, b: P2) -> Vec<Vec<P2>> {
     ]
 }
 
+/// The page distance between two springs or dampers drawn side by side.
+pub const LANE_WIDTH: f64 = 18.0;
+
+/// Per load of `loads`, its lane: 0 for a spring or damper alone between its two points,
+/// and for those that share both ends (a spring and a damper in parallel), steps of one
+/// either side of the line, as a textbook draws them side by side.
+pub fn lanes(loads: &[crate::problem::Load]) -> Vec<f64> {
+    use crate::problem::LoadKind;
+    let ends: Vec<Option<[crate::problem::PointRef; 2]>> = loads
+        .iter()
+        .map(|load| match &load.kind {
+            LoadKind::Spring { between, .. } | LoadKind::Damper { between, .. } => Some(*between),
+            _ => None,
+        })
+        .collect();
+    let same = |x: &Option<[crate::problem::PointRef; 2]>,
+                [a, b]: [crate::problem::PointRef; 2]| {
+        matches!(x, Some([c, d]) if (*c == a && *d == b) || (*c == b && *d == a))
+    };
+    ends.iter()
+        .enumerate()
+        .map(|(i, pair)| {
+            let Some(pair) = *pair else { return 0.0 };
+            let sharing = ends.iter().filter(|x| same(x, pair)).count();
+            let before = ends[..i].iter().filter(|x| same(x, pair)).count();
+            before as f64 - (sharing - 1) as f64 / 2.0
+        })
+        .collect()
+}
+
+/// The ends of an element drawn `lane` steps to the side of the line from `a` to `b`, and
+/// the two short legs that join it to `a` and `b` (none in lane 0).
+pub fn in_lane(a: P2, b: P2, lane: f64) -> ([P2; 2], Vec<Vec<P2>>) {
+    let Some(u) = p2unit([b[0] - a[0], b[1] - a[1]]) else {
+        return ([a, b], Vec::new());
+    };
+    if lane == 0.0 {
+        return ([a, b], Vec::new());
+    }
+    let side = p2scale([-u[1], u[0]], lane * LANE_WIDTH);
+    let (a2, b2) = (p2add(a, side), p2add(b, side));
+    // The legs leave the ends a little way along the line, as a bracket.
+    let inset = p2scale(u, 6.0);
+    let (a1, b1) = (p2add(a2, inset), p2add(b2, p2scale(inset, -1.0)));
+    ([a1, b1], vec![vec![a, a2, a1], vec![b, b2, b1]])
+}
+
 /// The ellipse `t -> c + du cos t + dv sin t` as its semi-axes and its turn (degrees,
 /// clockwise on the page): the eigen-decomposition of M Mᵀ, M = [du dv].
 pub fn ellipse_of(du: P2, dv: P2) -> (f64, f64, f64) {
@@ -135,4 +182,57 @@ pub fn wrap(text: &str, width: f64) -> Vec<String> {
         }
     }
     lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problem::{BodyId, Load, LoadKind, PointRef};
+    use crate::symbolic::Expr;
+
+    fn element(spring: bool, between: [PointRef; 2]) -> Load {
+        let zero = Expr::zero();
+        let kind = if spring {
+            LoadKind::Spring {
+                between,
+                stiffness: zero.clone(),
+                free_length: zero,
+            }
+        } else {
+            LoadKind::Damper {
+                between,
+                coefficient: zero,
+            }
+        };
+        Load {
+            name: None,
+            kind,
+            path: String::new(),
+        }
+    }
+
+    #[test]
+    fn a_spring_and_a_damper_between_the_same_points_go_side_by_side() {
+        let (wall, a, b) = (
+            PointRef::Origin(BodyId::GROUND),
+            PointRef::MassCenter(BodyId(1)),
+            PointRef::MassCenter(BodyId(2)),
+        );
+        let loads = [
+            element(true, [wall, a]),
+            element(false, [a, wall]),
+            element(true, [a, b]),
+        ];
+        assert_eq!(lanes(&loads), [-0.5, 0.5, 0.0]);
+    }
+
+    #[test]
+    fn an_element_in_a_lane_is_joined_to_its_ends() {
+        let ([a1, b1], legs) = in_lane([0.0, 0.0], [100.0, 0.0], 1.0);
+        assert_eq!(a1, [6.0, LANE_WIDTH]);
+        assert_eq!(b1, [94.0, LANE_WIDTH]);
+        assert_eq!(legs[0].first(), Some(&[0.0, 0.0]));
+        assert_eq!(legs[1].first(), Some(&[100.0, 0.0]));
+        assert!(in_lane([0.0, 0.0], [100.0, 0.0], 0.0).1.is_empty());
+    }
 }
