@@ -80,6 +80,25 @@ fn a_served_page_follows_the_file_through_an_error_and_back() {
     ]);
 }
 
+/// A chain of six spherical links, whose worked solution takes seconds to build: an edit
+/// shows "rebuilding…" in the page until the new solution replaces it (a quick rebuild, as
+/// the pendulum's above, must not show it).
+#[test]
+fn a_slow_rebuild_says_rebuilding_meanwhile() {
+    if !ready("rebuilding") {
+        return;
+    }
+    let dir = scratch("rebuilding");
+    let file = dir.join("chain.json");
+    std::fs::copy(browser_dir().join("six-spherical-links.json"), &file).expect("copy");
+    node(&[
+        "rebuilding".as_ref(),
+        env!("CARGO_BIN_EXE_mbd-tutor").as_ref(),
+        file.as_os_str(),
+        "m1".as_ref(),
+    ]);
+}
+
 /// The double pendulum of two uniform rods by hand: O at the origin, A's centre at half
 /// A's length down rod A (angle q1 from the downward vertical), P at its end, B's centre at
 /// half B's length down rod B (angle q1 + q2).

@@ -2,6 +2,7 @@
 // Run by tests/browser.rs:  node run.js MODE ARGS...; exits 0 when every check passes and
 // prints what failed otherwise.
 //   serve BIN PROBLEM          start `BIN serve PROBLEM --port 0`, edit the file, watch the page
+//   rebuilding BIN PROBLEM C   edit constant C of a problem slow to solve: "rebuilding…" shows
 //   motion SVG EXPECTED.json   compare the drawn points at instants with EXPECTED's
 //   handout HTML               the handout's motion plays; nothing is loaded from outside
 'use strict';
@@ -34,7 +35,9 @@ async function within(limit, test) {
   return null;
 }
 
-async function serve(bin, problem) {
+// Starts `BIN serve PROBLEM --port 0` and opens its page: the server, its exit, the page,
+// the page's text, and the addresses it loaded from outside; null when it did not start.
+async function served(bin, problem) {
   const server = spawn(bin, ['serve', problem, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
   const exited = new Promise((resolve) => server.on('exit', (code, signal) => resolve({ code, signal })));
   const first = await new Promise((resolve) => {
@@ -43,11 +46,11 @@ async function serve(bin, problem) {
       text += chunk;
       if (text.includes('\n')) resolve(text.split('\n')[0]);
     });
-    setTimeout(() => resolve(text), 30000);
+    setTimeout(() => resolve(text), 60000);
   });
   const match = /^serving (http:\/\/127\.0\.0\.1:(\d+)\/)$/.exec(first);
   check(match !== null && match[2] !== '0', `first line is "serving http://127.0.0.1:PORT/": ${first}`);
-  if (!match) { server.kill('SIGTERM'); return; }
+  if (!match) { server.kill('SIGTERM'); return null; }
   const url = match[1];
   const b = await browser();
   const page = await b.newPage();
@@ -55,6 +58,19 @@ async function serve(bin, problem) {
   page.on('request', (r) => { if (!r.url().startsWith(url) && !r.url().startsWith('data:')) outside.push(r.url()); });
   await page.goto(url);
   const text = () => page.evaluate(() => document.body ? document.body.innerText : '');
+  return { server, exited, b, page, text, outside };
+}
+
+// Saves `text` as editors do: a new file renamed over the old one.
+function save(problem, text) {
+  fs.writeFileSync(problem + '.tmp', text);
+  fs.renameSync(problem + '.tmp', problem);
+}
+
+async function serve(bin, problem) {
+  const s = await served(bin, problem);
+  if (!s) return;
+  const { server, exited, b, page, text, outside } = s;
   check((await text()).includes('Step 6'), 'the page is the worked solution');
   let alive = true;
   exited.then(() => { alive = false; });
@@ -62,11 +78,17 @@ async function serve(bin, problem) {
   const original = fs.readFileSync(problem, 'utf8');
   const edited = original.replace(/"value": 0\.5,/, '"value": 0.7321,');
   check(edited !== original, 'the test could edit the mass in the problem');
-  // Edit as editors save: a new file renamed over the old one.
-  fs.writeFileSync(problem + '.tmp', edited);
-  fs.renameSync(problem + '.tmp', problem);
+  const banner = () => page.evaluate(() => {
+    const e = document.getElementById('mbd-rebuilding');
+    return e !== null && getComputedStyle(e).display !== 'none';
+  }).catch(() => false);
+  let seenBanner = false;
+  const watching = setInterval(async () => { if (await banner()) seenBanner = true; }, 50);
+  save(problem, edited);
   let took = await within(2000, async () => (await text().catch(() => '')).includes('0.7321'));
   check(took !== null, `the new value appears without a manual reload within 2 s (${took} ms)`);
+  clearInterval(watching);
+  check(!seenBanner, 'a rebuild under a second shows no "rebuilding…"');
 
   fs.writeFileSync(problem, edited.replace('"mass": "m"', '"mass": "mm"'));
   took = await within(2000, async () => (await text().catch(() => '')).includes('bodies.bob.mass'));
@@ -87,6 +109,46 @@ async function serve(bin, problem) {
   server.kill('SIGTERM');
   const end = await Promise.race([exited, new Promise((r) => setTimeout(() => r(null), 5000))]);
   check(end !== null && end.code === 0, `SIGTERM ends it with status 0: ${JSON.stringify(end)}`);
+}
+
+// A rebuild that lasts over a second: "rebuilding…" shows meanwhile, then the new page.
+// PROBLEM is a problem whose worked solution takes seconds; CONSTANT its constant to edit.
+async function rebuilding(bin, problem, constant) {
+  const s = await served(bin, problem);
+  if (!s) return;
+  const { server, b, page, text } = s;
+  const original = fs.readFileSync(problem, 'utf8');
+  const pattern = new RegExp(`"${constant}": [0-9.]+,`);
+  const edited = original.replace(pattern, `"${constant}": 1.23457,`);
+  check(edited !== original, `the test could edit ${constant}`);
+  const start = Date.now();
+  save(problem, edited);
+  let bannerAt = null;
+  const done = await within(120000, async () => {
+    const shown = await page.evaluate(() => {
+      const e = document.getElementById('mbd-rebuilding');
+      return e !== null && getComputedStyle(e).display !== 'none';
+    }).catch(() => false);
+    if (shown && bannerAt === null) bannerAt = Date.now() - start;
+    return (await text().catch(() => '')).includes('1.23457');
+  });
+  check(done !== null, `the new value appears after the rebuild (${done} ms)`);
+  if (done !== null && done > 2000) {
+    check(bannerAt !== null && bannerAt < 2000,
+      `a rebuild of ${done} ms showed "rebuilding…" after ${bannerAt} ms`);
+  } else {
+    console.log(`note: the rebuild took ${done} ms, too short to need "rebuilding…"`);
+  }
+  await within(5000, async () => (await text().catch(() => '')).includes('Step 6'));
+  const after = await text().catch(() => '');
+  const still = await page.evaluate(() => {
+    const e = document.getElementById('mbd-rebuilding');
+    return e !== null && getComputedStyle(e).display !== 'none';
+  }).catch(() => null);
+  check(after.includes('Step 6') && still === false,
+    `the new page shows the solution (${after.includes('Step 6')}) without the banner (${still})`);
+  await b.close();
+  server.kill('SIGTERM');
 }
 
 // The drawn centre of every element whose id is given, at animation time t.
@@ -200,6 +262,7 @@ async function handout(htmlPath) {
   const [mode, ...args] = process.argv.slice(2);
   try {
     if (mode === 'serve') await serve(...args);
+    else if (mode === 'rebuilding') await rebuilding(...args);
     else if (mode === 'motion') await motion(...args);
     else if (mode === 'handout') await handout(...args);
     else failures.push(`unknown mode ${mode}`);
