@@ -132,34 +132,86 @@ fn declared(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape
     })
 }
 
-/// Rule 1: a body with a rolling contact is a wheel of the contact's radius about its
-/// centre; points of the body beyond the rim hang on it by bars.
-fn wheel(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape>)> {
-    let (radius, center, axis) =
-        n.model
-            .problem
-            .constraints
-            .iter()
-            .find_map(|c| match &c.kind {
-                ConstraintKind::Rolling {
-                    body: b,
-                    radius,
-                    axis,
-                    center,
-                    ..
-                } if *b == body => Some((radius, center, axis)),
-                _ => None,
-            })?;
-    let radius = n.scalar(radius);
-    let center = match center {
+/// Where a body's disc is, from the contact that makes it one: its radius, its centre
+/// and the axle's direction (N.z in 2D).
+struct Disc {
+    radius: f64,
+    center: P3,
+    normal: P3,
+}
+
+/// A place given as a point or as an offset from `body`'s origin, in `N`.
+fn place(n: &Numbers, body: BodyId, at: &ForcePoint) -> P3 {
+    match at {
         ForcePoint::Point(p) => n.vector(&n.model.position(*p)),
         ForcePoint::Offset(v) => point(n, body, v),
-    };
-    let normal = if n.model.is_planar() {
-        [0.0, 0.0, 1.0]
-    } else {
-        direction(n, body, axis)?
-    };
+    }
+}
+
+/// The axle of a contact whose axis is written in `body`'s unit vectors (N.z in 2D).
+fn axle(n: &Numbers, body: BodyId, axis: Option<&VectorExpr>) -> Option<P3> {
+    match axis {
+        _ if n.model.is_planar() => Some([0.0, 0.0, 1.0]),
+        Some(axis) => direction(n, body, axis),
+        None => None,
+    }
+}
+
+/// `body`'s disc: a rolling body's wheel, a gear, or the disc a gear rolls on outside.
+fn disc_of(n: &Numbers, body: BodyId) -> Option<Disc> {
+    n.model
+        .problem
+        .constraints
+        .iter()
+        .find_map(|c| match &c.kind {
+            ConstraintKind::Rolling {
+                body: b,
+                radius,
+                axis,
+                center,
+                ..
+            } if *b == body => Some(Disc {
+                radius: n.scalar(radius),
+                center: place(n, body, center),
+                normal: axle(n, body, Some(axis))?,
+            }),
+            ConstraintKind::Gear {
+                body: b,
+                radius,
+                center,
+                axis,
+                ..
+            } if *b == body => Some(Disc {
+                radius: n.scalar(radius),
+                center: place(n, body, center),
+                normal: axle(n, body, axis.as_ref())?,
+            }),
+            // A ring that a gear rolls inside is not a disc: its other rules draw it.
+            ConstraintKind::Gear {
+                body: gear,
+                on,
+                on_radius,
+                on_center,
+                axis,
+                internal: false,
+                ..
+            } if *on == body => Some(Disc {
+                radius: n.scalar(on_radius),
+                center: place(n, body, on_center),
+                normal: axle(n, *gear, axis.as_ref())?,
+            }),
+            _ => None,
+        })
+}
+
+/// Rule 1: a body with a rolling contact or a gear is a wheel of the contact's radius
+/// about its centre; points of the body beyond the rim hang on it by bars.
+fn wheel(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape>)> {
+    let Disc {
+        radius,
+        center,
+        normal,
+    } = disc_of(n, body)?;
     let mut parts = vec![Shape::Wheel {
         center,
         normal,
@@ -266,47 +318,62 @@ fn outline(n: &Numbers, body: BodyId, size: f64) -> (BodyKind, Vec<Shape>) {
     (kind, parts)
 }
 
-/// The ground a rolling contact runs on: a hatched line along its plane through the
-/// contact, long enough to read as a floor or an incline.
+/// What rolling contacts run on: a line along the plane through the contact, long enough
+/// to read as a floor or an incline (hatched when fixed in `N`, plain on a moving body);
+/// and the circle fixed in `N` that a gear rolls on or in, hatched.
 pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
-    let model = n.model;
     let mut out = Vec::new();
-    for c in &model.problem.constraints {
-        let ConstraintKind::Rolling {
-            body,
-            radius,
-            axis,
-            center,
-            normal,
-            ..
-        } = &c.kind
-        else {
-            continue;
-        };
-        let Some(up) = unit(n.local(&own_components(normal, BodyId::GROUND))) else {
-            continue;
-        };
-        let radius = n.scalar(radius);
-        let center = match center {
-            ForcePoint::Point(p) => n.vector(&model.position(*p)),
-            ForcePoint::Offset(v) => point(n, *body, v),
-        };
-        let (along, toward) = if model.is_planar() {
-            (cross(up, [0.0, 0.0, 1.0]), scale(up, -1.0))
-        } else {
-            let a = direction(n, *body, axis).unwrap_or([0.0, 0.0, 1.0]);
-            let rolling = unit(cross(a, up)).unwrap_or([1.0, 0.0, 0.0]);
-            // From the centre to the contact: down the disc's plane.
-            let w = sub(up, scale(a, dot(up, a)));
-            (rolling, scale(unit(w).unwrap_or(up), -1.0))
-        };
-        let contact = add(center, scale(toward, radius));
-        let reach = (3.0 * radius).max(0.35 * size);
-        out.push(Shape::Surface {
-            at: contact,
-            along: scale(along, reach),
-            up,
-        });
+    for c in &n.model.problem.constraints {
+        match &c.kind {
+            ConstraintKind::Rolling {
+                body,
+                on,
+                normal,
+                axis,
+                ..
+            } => {
+                let (Some(up), Some(disc)) = (direction(n, *on, normal), disc_of(n, *body)) else {
+                    continue;
+                };
+                let (along, toward) = if n.model.is_planar() {
+                    (cross(up, [0.0, 0.0, 1.0]), scale(up, -1.0))
+                } else {
+                    let a = direction(n, *body, axis).unwrap_or([0.0, 0.0, 1.0]);
+                    let rolling = unit(cross(a, up)).unwrap_or([1.0, 0.0, 0.0]);
+                    // From the centre to the contact: down the disc's plane.
+                    let w = sub(up, scale(a, dot(up, a)));
+                    (rolling, scale(unit(w).unwrap_or(up), -1.0))
+                };
+                let contact = add(disc.center, scale(toward, disc.radius));
+                let reach = (3.0 * disc.radius).max(0.35 * size);
+                out.push(Shape::Surface {
+                    at: contact,
+                    along: scale(along, reach),
+                    up,
+                    fixed: *on == BodyId::GROUND,
+                });
+            }
+            ConstraintKind::Gear {
+                body,
+                on,
+                on_radius,
+                on_center,
+                internal,
+                axis,
+                ..
+            } if *on == BodyId::GROUND => {
+                let Some(normal) = axle(n, *body, axis.as_ref()) else {
+                    continue;
+                };
+                out.push(Shape::Track {
+                    center: place(n, BodyId::GROUND, on_center),
+                    normal,
+                    radius: n.scalar(on_radius),
+                    inside: *internal,
+                });
+            }
+            _ => {}
+        }
     }
     out
 }

@@ -162,7 +162,18 @@ impl Painter {
                 let (a, b) = (self.at(*from), self.at(*to));
                 self.stroke(vec![a, b], 1.1, Ink::Black, None, false);
             }
-            Shape::Surface { at, along, up } => self.surface(*at, *along, *up),
+            Shape::Surface {
+                at,
+                along,
+                up,
+                fixed,
+            } => self.surface(*at, *along, *up, *fixed),
+            Shape::Track {
+                center,
+                normal,
+                radius,
+                inside,
+            } => self.track(*center, *normal, *radius, *inside),
             Shape::Bar(points) => {
                 let points: Vec<P2> = points.iter().map(|p| self.at(*p)).collect();
                 self.stroke(points.clone(), 7.0, Ink::Black, None, false);
@@ -327,13 +338,16 @@ impl Painter {
     }
 
     /// A hatched line through `at` along `along` (its half length), hatched away from `up`.
-    fn surface(&mut self, at: P3, along: P3, up: P3) {
+    fn surface(&mut self, at: P3, along: P3, up: P3, fixed: bool) {
         let c = self.at(at);
         let u = p2unit(self.projection.direction(up)).unwrap_or([0.0, -1.0]);
         let t = p2unit(self.projection.direction(along)).unwrap_or([-u[1], u[0]]);
         let half = p2norm(self.projection.direction(along)).max(30.0);
         let (a, b) = (p2add(c, p2scale(t, -half)), p2add(c, p2scale(t, half)));
         self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
+        if !fixed {
+            return;
+        }
         // The hatching's normal side, `n`, is the page's side away from `up`.
         let n = p2scale(u, -1.0);
         let count = ((2.0 * half) / 7.0).floor().max(1.0) as usize;
@@ -349,6 +363,46 @@ impl Painter {
                 fill: None,
                 dashed: false,
             }));
+        }
+    }
+
+    fn track(&mut self, center: P3, normal: P3, radius: f64, inside: bool) {
+        let c = self.at(center);
+        let rim: Vec<P2> = super::shapes::circle(center, normal, radius)
+            .iter()
+            .map(|p| self.at(*p))
+            .collect();
+        self.stroke(rim.clone(), 1.4, Ink::Black, None, true);
+        // A tick every 8 px along the rim, away from the disc: outward when it rolls
+        // inside, inward when outside.
+        let away = if inside { 1.0 } else { -1.0 };
+        let mut to_next_tick = 0.0;
+        for (k, &p) in rim.iter().enumerate() {
+            let q = rim[(k + 1) % rim.len()];
+            let (Some(along), length) = (
+                p2unit([q[0] - p[0], q[1] - p[1]]),
+                p2norm([q[0] - p[0], q[1] - p[1]]),
+            ) else {
+                continue;
+            };
+            while to_next_tick < length {
+                let s = p2add(p, p2scale(along, to_next_tick));
+                to_next_tick += 8.0;
+                let Some(out) = p2unit([s[0] - c[0], s[1] - c[1]]) else {
+                    continue;
+                };
+                let e = p2add(s, p2add(p2scale(out, 6.0 * away), p2scale(along, -4.0)));
+                self.obstacles.segment(s, e);
+                self.items.push(Item::Stroke(Stroke {
+                    points: vec![s, e],
+                    closed: false,
+                    width: 0.8,
+                    ink: Ink::Black,
+                    fill: None,
+                    dashed: false,
+                }));
+            }
+            to_next_tick -= length;
         }
     }
 

@@ -202,9 +202,23 @@ pub enum Shape {
     },
     /// A massless link to a particle: a thin line.
     LightRod { from: P3, to: P3 },
-    /// A surface a body rolls on: a hatched line through `at` along `along` (a vector, its
-    /// half length), hatched on the side opposite the unit `up`.
-    Surface { at: P3, along: P3, up: P3 },
+    /// A surface a body rolls on: a line through `at` along `along` (a vector, its half
+    /// length); when `fixed` in `N`, hatched on the side opposite the unit `up` as the
+    /// ground is, else plain, the face of the body that carries it.
+    Surface {
+        at: P3,
+        along: P3,
+        up: P3,
+        fixed: bool,
+    },
+    /// A circle fixed in `N` that a disc rolls on or, `inside`, in (a gear's fixed partner,
+    /// a cylinder): hatched on the side away from the disc.
+    Track {
+        center: P3,
+        normal: P3,
+        radius: f64,
+        inside: bool,
+    },
     /// A rod: a thick line through the points.
     Bar(Vec<P3>),
     /// A block: a closed outline, lightly filled.
