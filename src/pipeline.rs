@@ -349,15 +349,12 @@ pub struct Linearizer {
 }
 
 impl Linearizer {
-    /// Differentiates and compiles the equations of `derivation`.
-    ///
-    /// # Errors
-    /// When the equations have no derivative (`min`, `max` of something that changes).
-    pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
-        Ok(Linearizer {
-            linear: linearize::ModalAnalysis::new(derivation)?,
-            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)?),
-        })
+    /// Compiles the equations of `derivation` for their partial derivatives.
+    pub fn new(derivation: &Derivation) -> Linearizer {
+        Linearizer {
+            linear: linearize::ModalAnalysis::new(derivation),
+            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)),
+        }
     }
 
     /// The method of the equations.
@@ -383,7 +380,7 @@ impl Linearizer {
         let state = self.jacobians.run(
             problem,
             (t, &q, &rates),
-            |d| linearize::jacobian_of(d).ok(),
+            |d| Some(linearize::jacobian_of(d)),
             |jacobian| jacobian.at(problem, t, &q, &rates),
         )?;
         Ok(self.linear.at(problem, t, &q, &rates, state)?)
