@@ -15,7 +15,7 @@
 //! at which the system is not (a row's reaction term vanishing there), the solver and the
 //! linearizer plan again for that state and go on, for every command alike.
 
-use crate::equations::system::{derive_at, Form, State};
+use crate::equations::system::{derive_at, derive_for_numbers, Form, State};
 use crate::equations::{Derivation, Method};
 use crate::numeric::checks::{self, Check};
 use crate::numeric::evaluate::{Compiled, StateSolution};
@@ -37,13 +37,14 @@ pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
 }
 
 /// Derives the equations of `problem` by `method`, in their most compact form, for
-/// numbers ([`Form::Numeric`]).
+/// numbers ([`Form::Numeric`]), forming no row that is not compiled
+/// ([`derive_for_numbers`]).
 ///
 /// # Errors
 /// When the model cannot be built or the method finds no complete set of equations.
 pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
     within_budget(method, || {
-        let numeric = derive_at(problem, method, &[], Form::Numeric)?;
+        let numeric = derive_for_numbers(problem, method, &[])?;
         let named = numeric.inertia.compact.iter().any(|&c| c);
         if method != Method::MotionLaw || !numeric.model.is_planar() || !named {
             return Ok(numeric);

@@ -85,6 +85,42 @@ pub struct Linearization {
     pub matrices: Option<Matrices>,
 }
 
+/// Kane's rows without reactions, each `… = 0`: the equations of motion for the q'' alone.
+/// Kane's own derivation has them as the first rows of its system, `A x − b` with the q''
+/// its first unknowns (by composite bodies where it has those), so they are not formed twice.
+fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
+    let problem = derivation.model.problem;
+    let n = problem.coordinates.len();
+    let accelerations: Vec<_> = (0..n).map(|i| problem.coordinate_symbol(i, 2)).collect();
+    let system = derivation
+        .composite_system
+        .as_ref()
+        .unwrap_or(&derivation.system);
+    if derivation.method == Method::Kane && system.unknowns.get(..n) == Some(&accelerations[..]) {
+        return (0..n)
+            .map(|i| {
+                let mut terms: Vec<_> = (0..n)
+                    .map(|j| {
+                        &system.a[i][j] * &crate::symbolic::Expr::sym(accelerations[j].clone())
+                    })
+                    .collect();
+                terms.push(-&system.b[i]);
+                crate::symbolic::add(terms)
+            })
+            .collect();
+    }
+    kane::equations(
+        &derivation.model,
+        &derivation.actions,
+        &derivation.inertia,
+        &accelerations,
+        &[],
+    )
+    .into_iter()
+    .map(|row| row.expression)
+    .collect()
+}
+
 impl ModalAnalysis {
     /// Compiles what the linearization needs besides the state matrix: M, C and K (Kane's
     /// rows without reactions), or the reduction of a constrained system.
@@ -104,20 +140,7 @@ impl ModalAnalysis {
                 constraints: Some((assembly, Reducer::new(&derivation.model))),
             };
         }
-        // Kane's rows without reactions are the equations of motion for the q'' alone.
-        let accelerations: Vec<_> = (0..problem.coordinates.len())
-            .map(|i| problem.coordinate_symbol(i, 2))
-            .collect();
-        let rows: Vec<_> = kane::equations(
-            &derivation.model,
-            &derivation.actions,
-            &derivation.inertia,
-            &accelerations,
-            &[],
-        )
-        .into_iter()
-        .map(|row| row.expression)
-        .collect();
+        let rows = kane_rows(derivation);
         ModalAnalysis {
             method: derivation.method,
             variables,
