@@ -15,7 +15,7 @@
 //! at which the system is not (a row's reaction term vanishing there), the solver and the
 //! linearizer plan again for that state and go on, for every command alike.
 
-use crate::equations::system::{derive_at, Form, State};
+use crate::equations::system::{derive_at, derive_for_numbers, Form, State};
 use crate::equations::{Derivation, Method};
 use crate::numeric::checks::{self, Check};
 use crate::numeric::evaluate::{Compiled, StateSolution};
@@ -37,13 +37,14 @@ pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
 }
 
 /// Derives the equations of `problem` by `method`, in their most compact form, for
-/// numbers ([`Form::Numeric`]).
+/// numbers ([`Form::Numeric`]), forming no row that is not compiled
+/// ([`derive_for_numbers`]).
 ///
 /// # Errors
 /// When the model cannot be built or the method finds no complete set of equations.
 pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
     within_budget(method, || {
-        let numeric = derive_at(problem, method, &[], Form::Numeric)?;
+        let numeric = derive_for_numbers(problem, method, &[])?;
         let named = numeric.inertia.compact.iter().any(|&c| c);
         if method != Method::MotionLaw || !numeric.model.is_planar() || !named {
             return Ok(numeric);
@@ -349,15 +350,12 @@ pub struct Linearizer {
 }
 
 impl Linearizer {
-    /// Differentiates and compiles the equations of `derivation`.
-    ///
-    /// # Errors
-    /// When the equations have no derivative (`min`, `max` of something that changes).
-    pub fn new(derivation: &Derivation) -> Result<Linearizer, Error> {
-        Ok(Linearizer {
-            linear: linearize::ModalAnalysis::new(derivation)?,
-            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)?),
-        })
+    /// Compiles the equations of `derivation` for their partial derivatives.
+    pub fn new(derivation: &Derivation) -> Linearizer {
+        Linearizer {
+            linear: linearize::ModalAnalysis::new(derivation),
+            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)),
+        }
     }
 
     /// The method of the equations.
@@ -383,7 +381,7 @@ impl Linearizer {
         let state = self.jacobians.run(
             problem,
             (t, &q, &rates),
-            |d| linearize::jacobian_of(d).ok(),
+            |d| Some(linearize::jacobian_of(d)),
             |jacobian| jacobian.at(problem, t, &q, &rates),
         )?;
         Ok(self.linear.at(problem, t, &q, &rates, state)?)

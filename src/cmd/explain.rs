@@ -132,7 +132,7 @@ pub fn rendered(
         let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
         // Small motions are about the coordinates and their rates, whatever the speeds.
         let in_rates = problem.without_speeds();
-        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&in_rates, method)?)?;
+        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&in_rates, method)?);
         let l = linearizer.at(&in_rates, 0.0, &q, &rates)?;
         solution.linearization = Some(render::linearization::section(&problem, &l));
     }

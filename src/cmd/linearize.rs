@@ -94,7 +94,7 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     // Small motions are about the coordinates and their rates, whatever the speeds.
     let problem = super::load_with_overrides(&args.at.common)?.without_speeds();
     let method = super::method(args.at.common.method);
-    let linearizer = Linearizer::new(&derive(&problem, method)?)?;
+    let linearizer = Linearizer::new(&derive(&problem, method)?);
     let report_output = if svg_output.is_some() && args.plot.is_none() {
         None
     } else {

@@ -68,7 +68,8 @@ pub struct Derivation<'p> {
     pub actions: Vec<Action>,
     /// The inertia forces and torques.
     pub inertia: Inertia,
-    /// The chosen rows.
+    /// The chosen rows; none where only the numbers were asked for and Kane's system was
+    /// built by composite bodies alone ([`derive_for_numbers`]).
     pub rows: Vec<Equation>,
     /// The candidates rejected, with reasons (the Motion Law only).
     pub rejected: Vec<Rejected>,
@@ -160,6 +161,40 @@ pub fn derive_at<'p>(
     states: &[State],
     form: Form,
 ) -> Result<Derivation<'p>, MechanicsError> {
+    derive_with(problem, method, states, form, Rows::Formed)
+}
+
+/// As [`derive_at`] in [`Form::Numeric`], for the numbers alone: where Kane's system by
+/// composite bodies is the one compiled (a tree large enough, see
+/// [`super::composite::SMALL_PROGRAM`]), it is built directly and Kane's rows are never
+/// formed; the derivation's `rows` are then empty and its `system` is the composite one.
+///
+/// # Errors
+/// As for [`derive`].
+pub fn derive_for_numbers<'p>(
+    problem: &'p Problem,
+    method: Method,
+    states: &[State],
+) -> Result<Derivation<'p>, MechanicsError> {
+    derive_with(problem, method, states, Form::Numeric, Rows::Compiled)
+}
+
+/// Which rows a derivation forms.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Rows {
+    /// Every row the method writes, for the worked solution and for comparisons.
+    Formed,
+    /// Only what is compiled for numbers.
+    Compiled,
+}
+
+fn derive_with<'p>(
+    problem: &'p Problem,
+    method: Method,
+    states: &[State],
+    form: Form,
+    wanted: Rows,
+) -> Result<Derivation<'p>, MechanicsError> {
     budget::step("computing the kinematics (step 4)");
     let model = Model::build_for(problem, form)?;
     budget::step("writing the forces and moments (step 2)");
@@ -214,6 +249,25 @@ pub fn derive_at<'p>(
     };
     let mut unknowns = unknowns_of(&reaction_joints);
     let given = constraint_equations(&model, &every_unknown)?;
+    let composite_alone = match (method, form, wanted) {
+        (Method::Kane, Form::Numeric, Rows::Compiled) => {
+            super::composite::system_alone(&model, &actions, &unknowns, &reaction_joints)
+        }
+        _ => None,
+    };
+    if let Some(system) = composite_alone {
+        return Ok(Derivation {
+            model,
+            method,
+            actions,
+            inertia,
+            rows: Vec::new(),
+            rejected: Vec::new(),
+            system,
+            composite_system: None,
+            reaction_joints,
+        });
+    }
     let (rows, rejected) = match method {
         Method::NewtonEuler => (
             super::newton_euler::equations(&model, &actions, &inertia, &every_unknown),

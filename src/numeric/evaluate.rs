@@ -3,6 +3,7 @@
 
 use super::system::{describe_state, Evaluation, System};
 use super::SolveError;
+use crate::equations::composite::SMALL_PROGRAM;
 use crate::equations::{energy, Derivation, Method};
 use crate::mechanics::joints::ComponentKind;
 use crate::problem::{LoadKind, Problem};
@@ -24,13 +25,6 @@ struct ReactionSlot {
     joint: String,
     components: Vec<ReactionComponentSlot>,
 }
-
-/// Below this many operations a system by composite bodies is compared with the rows as
-/// formed, and the shorter program kept: a planar chain of two links writes its rows whole
-/// in a few dozen operations (the angle sums keep `cos(q1 + q2)` one factor), a handful fewer
-/// than by composite bodies. Past a few hundred the composite rows are the shorter (five
-/// links in the plane: 359 operations against 506), and compiling both would cost time.
-const SMALL_PROGRAM: usize = 400;
 
 /// A derivation compiled for fast, repeated evaluation.
 #[derive(Clone, Debug)]

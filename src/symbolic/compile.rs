@@ -11,10 +11,10 @@ use std::ops::Neg;
 /// Slots: the inputs, then the constants, then one per instruction.
 #[derive(Clone, Debug)]
 pub struct Program {
-    inputs: Vec<Symbol>,
-    constants: Vec<f64>,
-    instructions: Vec<Instr>,
-    outputs: Vec<usize>,
+    pub(super) inputs: Vec<Symbol>,
+    pub(super) constants: Vec<f64>,
+    pub(super) instructions: Vec<Instr>,
+    pub(super) outputs: Vec<usize>,
 }
 
 struct Compiler {

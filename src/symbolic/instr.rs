@@ -34,6 +34,17 @@ impl Instr {
         }
     }
 
+    /// Whether it reads a slot for which `test` holds; unlike [`Instr::operands`], with no
+    /// list built, for a test run once per instruction per evaluation.
+    pub(super) fn reads_any(&self, test: impl Fn(u32) -> bool) -> bool {
+        match self {
+            Instr::Const(_) => false,
+            Instr::Neg(a) | Instr::Recip(a) | Instr::Square(a) => test(*a),
+            Instr::Mul(a, b) | Instr::Pow(a, b) | Instr::Func(_, a, b) => test(*a) || test(*b),
+            Instr::Dot { pairs, .. } => pairs.iter().flatten().any(|&s| test(s)),
+        }
+    }
+
     /// What it does, as a number: equal for instructions that run the same code.
     pub(super) fn kind(&self) -> u8 {
         match self {

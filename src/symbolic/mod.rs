@@ -11,6 +11,7 @@ pub mod eval;
 pub mod expr;
 pub mod fast_hash;
 pub mod format;
+pub mod forward;
 pub mod hint;
 pub mod horner;
 mod instr;

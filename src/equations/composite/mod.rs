@@ -32,6 +32,58 @@ pub use tree::{applies, speed_motions, SpeedMotion};
 use crate::equations::LinearSystem;
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
+use crate::symbolic::compile::Program;
+use crate::symbolic::{Expr, Symbol};
+
+/// Below this many operations Kane's rows as formed may compile shorter than by composite
+/// bodies, and both are built to keep the shorter: a planar chain of two links writes its
+/// rows whole in a few dozen operations (the angle sums keep `cos(q1 + q2)` one factor), a
+/// handful fewer than by composite bodies. Past a few hundred the composite rows are the
+/// shorter (five links in the plane: 359 operations against 506), and forming the rows
+/// only to drop them would cost time and memory, n³ of each.
+pub const SMALL_PROGRAM: usize = 400;
+
+/// Kane's linear system in `unknowns` (the q'', then the reactions of `reaction_joints`)
+/// built by composite bodies alone, without forming Kane's rows, for the numbers of a
+/// system large enough that the rows as formed would not be compiled (see
+/// [`SMALL_PROGRAM`]). `None` where [`applies`] does not hold or the system is small.
+pub fn system_alone(
+    model: &Model,
+    actions: &[Action],
+    unknowns: &[Symbol],
+    reaction_joints: &[usize],
+) -> Option<LinearSystem> {
+    if !applies(model) {
+        return None;
+    }
+    // Every row of the outline is replaced: `system` checks the count.
+    let k = unknowns.len();
+    let outline = LinearSystem {
+        unknowns: unknowns.to_vec(),
+        a: vec![vec![Expr::zero(); k]; k],
+        b: vec![Expr::zero(); k],
+    };
+    let built = system(model, actions, &outline, reaction_joints)?;
+    let mut outputs: Vec<Expr> = built.a.iter().flatten().cloned().collect();
+    outputs.extend(built.b.iter().cloned());
+    let inputs = state_symbols(model);
+    (Program::compile(&inputs, &outputs).operation_count() >= SMALL_PROGRAM).then_some(built)
+}
+
+/// Constants, coordinates, rates and time: what a compiled system reads.
+fn state_symbols(model: &Model) -> Vec<Symbol> {
+    let problem = model.problem;
+    let n = problem.coordinates.len();
+    let mut inputs: Vec<Symbol> = problem
+        .constants
+        .iter()
+        .map(|c| Symbol::Const(c.name.as_str().into()))
+        .collect();
+    inputs.extend((0..n).map(|i| problem.coordinate_symbol(i, 0)));
+    inputs.extend((0..n).map(|i| problem.coordinate_symbol(i, 1)));
+    inputs.push(Symbol::Time);
+    inputs
+}
 
 /// Kane's linear system as `formed` from the rows, with the reactions of `reaction_joints`
 /// (tree joints, in the order of their rows), every row rebuilt by composite bodies. `None`

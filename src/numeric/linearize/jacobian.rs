@@ -2,91 +2,44 @@
 //!
 //! The equations are a linear system `A(s) x = b(s)` in the unknowns `x` (the q'' and any
 //! reactions), with `s` the inputs (constants, coordinates, rates, time). The state
-//! variables `z` are some of the inputs, and each one's time derivative is an expression
-//! `f(s, x)`. Then
+//! variables `z` are every coordinate, then every rate; their time derivatives the rates,
+//! then the q''. Then
 //!
 //! ```text
-//! ∂x/∂z_j = A⁻¹ (∂b/∂z_j − (∂A/∂z_j) x),     ∂ż_i/∂z_j = ∂f_i/∂z_j + Σ_k ∂f_i/∂x_k ∂x_k/∂z_j.
+//! ∂x/∂z_j = A⁻¹ (∂b/∂z_j − (∂A/∂z_j) x).
 //! ```
 //!
-//! Every partial derivative is taken symbolically, compiled once and evaluated at any
-//! state: no finite differences. For a system without constraints `z` is every coordinate,
-//! then every rate, and `f` is the rates, then the q''; a constrained system brings its own
-//! list of independent variables and their derivatives ([`LinearModel`]).
+//! The partial derivatives of `A` and `b` come from differentiating the compiled program
+//! that evaluates them, in forward mode ([`crate::symbolic::forward`]): exact to rounding,
+//! at the cost of a few evaluations, with no derivative expression ever built. (Taking
+//! them symbolically multiplied the equations by the number of variables: the bicycle's
+//! took seconds and hundreds of megabytes.)
 //!
 //! The mass, damping and stiffness matrices of [`SecondOrder`] are the partial derivatives
-//! of equations with no reaction in them (Kane's) with respect to the q'', q' and q.
+//! of equations with no reaction in them (Kane's) with respect to the q'', q' and q, taken
+//! the same way.
 
 use crate::equations::LinearSystem;
-use crate::mechanics::MechanicsError;
 use crate::numeric::evaluate::{input_symbols, solve_linear};
 use crate::numeric::system::describe_state;
 use crate::numeric::SolveError;
 use crate::problem::Problem;
 use crate::symbolic::compile::Program;
-use crate::symbolic::diff::{partial, DiffError};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::symbolic::{Expr, Symbol};
 use nalgebra::{DMatrix, DVector};
 
-/// What to linearize: a linear system in some unknowns, the state variables among its
-/// inputs, and the time derivative of each state variable.
-#[derive(Clone, Debug)]
-pub struct LinearModel {
-    /// The inputs of `a`, `b` and `derivatives`, in the order values are given.
-    pub inputs: Vec<Symbol>,
-    /// The unknowns `x`.
-    pub unknowns: Vec<Symbol>,
-    /// Row-major coefficients of `A x = b`.
-    pub a: Vec<Vec<Expr>>,
-    /// The right-hand sides.
-    pub b: Vec<Expr>,
-    /// The state variables `z`, each one of `inputs`.
-    pub variables: Vec<Symbol>,
-    /// `dz/dt`, one per variable, in the inputs and the unknowns.
-    pub derivatives: Vec<Expr>,
-}
-
-impl LinearModel {
-    /// A system without constraints: the variables are every coordinate, then every rate,
-    /// in the order the joints name them; their derivatives the rates, then the q''.
-    pub fn unconstrained(problem: &Problem, system: &LinearSystem) -> LinearModel {
-        let n = problem.coordinates.len();
-        let symbol = |order: u8| (0..n).map(move |i| problem.coordinate_symbol(i, order));
-        LinearModel {
-            inputs: input_symbols(problem),
-            unknowns: system.unknowns.clone(),
-            a: system.a.clone(),
-            b: system.b.clone(),
-            variables: symbol(0).chain(symbol(1)).collect(),
-            derivatives: symbol(1).chain(symbol(2)).map(Expr::sym).collect(),
-        }
-    }
-}
-
-/// A partial derivative that is not identically zero: which variable, which entry, and
-/// where its value is among the outputs of the compiled program.
-#[derive(Clone, Copy, Debug)]
-struct Entry {
-    variable: usize,
-    row: usize,
-    column: usize,
-    output: usize,
-}
-
-/// The compiled system and its partial derivatives.
+/// The compiled system, ready to be differentiated at any state.
 #[derive(Clone, Debug)]
 pub struct Jacobian {
     /// The state variables' names as printed (`q1`, `q1'`).
     pub variables: Vec<String>,
     unknowns: usize,
+    /// Reads the inputs of [`input_symbols`]; gives `A` row by row, then `b`.
     system: Program,
-    /// Reads the inputs, then the unknowns; gives the entries below, each at its `output`.
-    partials: Program,
-    d_a: Vec<Entry>,
-    d_b: Vec<Entry>,
-    d_f_by_z: Vec<Entry>,
-    d_f_by_x: Vec<Entry>,
+    /// The positions among the inputs of the coordinates, then the rates.
+    directions: Vec<usize>,
+    /// Each coordinate's q'' among the unknowns (none for a prescribed coordinate).
+    accelerations: Vec<Option<usize>>,
 }
 
 /// The linearization at one state.
@@ -96,17 +49,6 @@ pub struct StateMatrix {
     pub unknowns: Vec<f64>,
     /// `∂ż/∂z`, rows and columns in the order of the variables.
     pub a: DMatrix<f64>,
-}
-
-fn not_differentiable(e: DiffError) -> MechanicsError {
-    MechanicsError {
-        path: "loads".into(),
-        message: format!("the equations cannot be linearized: {e}"),
-        hint: Some(
-            "linearizing needs loads with a derivative; replace min/max by a smooth expression"
-                .into(),
-        ),
-    }
 }
 
 /// The name of a state variable as the command line writes it.
@@ -123,52 +65,40 @@ pub fn variable_name(symbol: &Symbol) -> String {
     }
 }
 
+/// The positions among the inputs of [`input_symbols`] of the coordinates, then the rates.
+fn state_directions(problem: &Problem) -> Vec<usize> {
+    let first = problem.constants.len();
+    (first..first + 2 * problem.coordinates.len()).collect()
+}
+
 impl Jacobian {
-    /// Differentiates the system with respect to every variable and compiles the result.
-    ///
-    /// # Errors
-    /// When an entry has no derivative (`min`, `max` of something that changes).
-    pub fn new(model: &LinearModel) -> Result<Jacobian, MechanicsError> {
-        let d = |e: &Expr, z: &Symbol| partial(e, z).map_err(not_differentiable);
-        let mut outputs: Vec<Expr> = Vec::new();
-        let (mut d_a, mut d_b, mut d_f_by_z, mut d_f_by_x) = (vec![], vec![], vec![], vec![]);
-        for (variable, z) in model.variables.iter().enumerate() {
-            for (row, entries) in model.a.iter().enumerate() {
-                for (column, e) in entries.iter().enumerate() {
-                    push(&mut outputs, &mut d_a, d(e, z)?, variable, row, column);
-                }
-            }
-            for (row, e) in model.b.iter().enumerate() {
-                push(&mut outputs, &mut d_b, d(e, z)?, variable, row, 0);
-            }
-            for (row, e) in model.derivatives.iter().enumerate() {
-                push(&mut outputs, &mut d_f_by_z, d(e, z)?, variable, row, 0);
-            }
+    /// Compiles `system`, the equations of `problem`, for its state matrix.
+    pub fn new(problem: &Problem, system: &LinearSystem) -> Jacobian {
+        let n = problem.coordinates.len();
+        let mut outputs: Vec<Expr> = system.a.iter().flatten().cloned().collect();
+        outputs.extend(system.b.iter().cloned());
+        let variables = (0..n)
+            .map(|i| problem.coordinate_symbol(i, 0))
+            .chain((0..n).map(|i| problem.coordinate_symbol(i, 1)))
+            .map(|s| variable_name(&s))
+            .collect();
+        Jacobian {
+            variables,
+            unknowns: system.unknowns.len(),
+            system: Program::compile(&input_symbols(problem), &outputs),
+            directions: state_directions(problem),
+            accelerations: (0..n)
+                .map(|i| {
+                    let symbol = problem.coordinate_symbol(i, 2);
+                    system.unknowns.iter().position(|u| *u == symbol)
+                })
+                .collect(),
         }
-        for (k, x) in model.unknowns.iter().enumerate() {
-            for (row, e) in model.derivatives.iter().enumerate() {
-                push(&mut outputs, &mut d_f_by_x, d(e, x)?, k, row, 0);
-            }
-        }
-        let mut system_outputs: Vec<Expr> = model.a.iter().flatten().cloned().collect();
-        system_outputs.extend(model.b.iter().cloned());
-        let mut extended = model.inputs.clone();
-        extended.extend(model.unknowns.iter().cloned());
-        Ok(Jacobian {
-            variables: model.variables.iter().map(variable_name).collect(),
-            unknowns: model.unknowns.len(),
-            system: Program::compile(&model.inputs, &system_outputs),
-            partials: Program::compile(&extended, &outputs),
-            d_a,
-            d_b,
-            d_f_by_z,
-            d_f_by_x,
-        })
     }
 
-    /// The number of operations of one evaluation of the partial derivatives.
+    /// The number of operations of one evaluation of the system.
     pub fn operation_count(&self) -> usize {
-        self.system.operation_count() + self.partials.operation_count()
+        self.system.operation_count()
     }
 
     /// The state matrix at the state given by the values of the inputs.
@@ -182,51 +112,52 @@ impl Jacobian {
         state: &dyn Fn() -> String,
     ) -> Result<StateMatrix, SolveError> {
         let n = self.unknowns;
-        let values = self.system.eval(inputs);
-        let a = DMatrix::from_row_slice(n, n, &values[..n * n]);
-        let b = DVector::from_column_slice(&values[n * n..]);
+        let m = self.directions.len();
+        let d = self.system.run_with_derivatives(inputs, &self.directions);
         let not_finite = |what: &str| SolveError::NotFinite {
             state: state(),
             what: what.into(),
         };
-        if values.iter().any(|x| !x.is_finite()) {
+        if d.values.iter().any(|x| !x.is_finite()) {
             return Err(not_finite("a coefficient of the equations"));
         }
+        let a = DMatrix::from_row_slice(n, n, &d.values[..n * n]);
+        let b = DVector::from_column_slice(&d.values[n * n..]);
         let singular = || SolveError::SingularSystem {
             state: state(),
             detail: "the equations do not determine the unknowns here".into(),
         };
         let x = solve_linear(&a, &b).ok_or_else(singular)?;
-        let mut extended = inputs.to_vec();
-        extended.extend(x.iter());
-        let values = self.partials.eval(&extended);
-        if values.iter().any(|x| !x.is_finite()) {
+        if d.partials.iter().any(|x| !x.is_finite()) {
             return Err(not_finite("a partial derivative of the equations"));
         }
-        let m = self.variables.len();
         // ∂b/∂z_j − (∂A/∂z_j) x for every j, as the columns of one right-hand side.
         let mut rhs = DMatrix::<f64>::zeros(n, m);
-        for e in &self.d_a {
-            let value = values[e.output];
-            rhs[(e.row, e.variable)] -= value * x[e.column];
-        }
-        for e in &self.d_b {
-            rhs[(e.row, e.variable)] += values[e.output];
-        }
-        let mut jacobian = DMatrix::<f64>::zeros(m, m);
-        for e in &self.d_f_by_z {
-            jacobian[(e.row, e.variable)] += values[e.output];
+        for row in 0..n {
+            for (j, value) in d.of(n * n + row).iter().enumerate() {
+                rhs[(row, j)] = *value;
+            }
+            for column in 0..n {
+                for (j, value) in d.of(row * n + column).iter().enumerate() {
+                    rhs[(row, j)] -= value * x[column];
+                }
+            }
         }
         let dx = if n == 0 {
             DMatrix::zeros(0, m)
         } else {
-            let lu = a.clone().lu();
-            lu.solve(&rhs).ok_or_else(singular)?
+            a.lu().solve(&rhs).ok_or_else(singular)?
         };
-        for e in &self.d_f_by_x {
-            let value = values[e.output];
-            for j in 0..m {
-                jacobian[(e.row, j)] += value * dx[(e.variable, j)];
+        // ż = (q', q''): the rates' rows pick the rates, the q''s' rows are rows of ∂x/∂z.
+        let coordinates = self.accelerations.len();
+        let mut jacobian = DMatrix::<f64>::zeros(m, m);
+        for i in 0..coordinates {
+            jacobian[(i, coordinates + i)] = 1.0;
+            if let Some(k) = self.accelerations[i] {
+                for j in 0..m {
+                    // Added to zero, so that a −0 prints as 0.
+                    jacobian[(coordinates + i, j)] += dx[(k, j)];
+                }
             }
         }
         if jacobian.iter().any(|x| !x.is_finite()) {
@@ -239,32 +170,16 @@ impl Jacobian {
     }
 }
 
-fn push(
-    outputs: &mut Vec<Expr>,
-    entries: &mut Vec<Entry>,
-    e: Expr,
-    variable: usize,
-    row: usize,
-    column: usize,
-) {
-    if !e.is_zero() {
-        entries.push(Entry {
-            variable,
-            row,
-            column,
-            output: outputs.len(),
-        });
-        outputs.push(e);
-    }
-}
-
 /// The mass, damping and stiffness matrices `M δq'' + C δq' + K δq = 0` of equations
 /// free of reactions, one per coordinate.
 #[derive(Clone, Debug)]
 pub struct SecondOrder {
     coordinates: usize,
     inputs: usize,
-    program: Program,
+    /// Reads the inputs, then the q''; gives the rows.
+    rows: Program,
+    /// The positions among its inputs of the q'', the rates, then the coordinates.
+    directions: Vec<usize>,
 }
 
 /// `M`, `C`, `K` at one state.
@@ -279,49 +194,24 @@ pub struct Matrices {
 }
 
 impl SecondOrder {
-    /// Compiles the partial derivatives of `rows`, each `… = 0` and linear in the q''
-    /// with coefficients `−M` (as Kane's `F_r + F_r* = 0` are: the sign is turned so that
-    /// `M` is the mass matrix).
-    ///
-    /// # Errors
-    /// When a row has no derivative.
-    pub fn new(problem: &Problem, rows: &[Expr]) -> Result<SecondOrder, MechanicsError> {
+    /// Compiles `rows`, each `… = 0` and linear in the q'' with coefficients `−M` (as
+    /// Kane's `F_r + F_r* = 0` are: the sign is turned so that `M` is the mass matrix).
+    pub fn new(problem: &Problem, rows: &[Expr]) -> SecondOrder {
         let n = problem.coordinates.len();
-        let accelerations: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 2)).collect();
-        let (mut m, mut c, mut k) = (Vec::new(), Vec::new(), Vec::new());
-        for row in rows {
-            // row = Σ coefficients_j q''_j + rest: the mass matrix is read off, and only the
-            // (smaller) coefficients and the rest are differentiated.
-            let (coefficients, rest) =
-                linear_split(row, &accelerations).map_err(|e| MechanicsError {
-                    path: "loads".into(),
-                    message: e.to_string(),
-                    hint: Some("loads may not depend on second rates".into()),
-                })?;
-            m.extend(coefficients.iter().map(|e| -e));
-            for (order, out) in [(1u8, &mut c), (0, &mut k)] {
-                for i in 0..n {
-                    let z = problem.coordinate_symbol(i, order);
-                    let mut terms = vec![partial(&rest, &z).map_err(not_differentiable)?];
-                    for (coefficient, x) in coefficients.iter().zip(&accelerations) {
-                        let d = partial(coefficient, &z).map_err(not_differentiable)?;
-                        if !d.is_zero() {
-                            terms.push(d * Expr::sym(x.clone()));
-                        }
-                    }
-                    out.push(-add(terms));
-                }
-            }
-        }
-        let outputs: Vec<Expr> = m.into_iter().chain(c).chain(k).collect();
         let mut inputs = input_symbols(problem);
         let count = inputs.len();
         inputs.extend((0..n).map(|i| problem.coordinate_symbol(i, 2)));
-        Ok(SecondOrder {
+        let states = state_directions(problem);
+        let directions = (count..count + n)
+            .chain(states[n..].iter().copied())
+            .chain(states[..n].iter().copied())
+            .collect();
+        SecondOrder {
             coordinates: n,
             inputs: count,
-            program: Program::compile(&inputs, &outputs),
-        })
+            rows: Program::compile(&inputs, rows),
+            directions,
+        }
     }
 
     /// `M`, `C`, `K` at the inputs' values, with the q'' there.
@@ -329,8 +219,9 @@ impl SecondOrder {
         let n = self.coordinates;
         let mut extended = inputs[..self.inputs].to_vec();
         extended.extend_from_slice(accelerations);
-        let values = self.program.eval(&extended);
-        let block = |i: usize| DMatrix::from_row_slice(n, n, &values[i * n * n..(i + 1) * n * n]);
+        let d = self.rows.run_with_derivatives(&extended, &self.directions);
+        // Subtracted from zero, so that a −0 prints as 0.
+        let block = |k: usize| DMatrix::from_fn(n, n, |r, c| 0.0 - d.of(r)[k * n + c]);
         Matrices {
             m: block(0),
             c: block(1),

@@ -8,12 +8,11 @@ pub mod jacobian;
 pub mod modes;
 
 use crate::equations::{kane, Derivation, Method};
-use crate::mechanics::MechanicsError;
 use crate::numeric::assemble::Assembly;
 use crate::numeric::reduce::Reducer;
 use crate::numeric::SolveError;
 use crate::problem::Problem;
-use jacobian::{input_values, state_text, variable_name, LinearModel, Matrices, SecondOrder};
+use jacobian::{input_values, state_text, variable_name, Matrices, SecondOrder};
 pub use jacobian::{Jacobian, StateMatrix};
 use modes::{Eigen, Mode};
 use nalgebra::DMatrix;
@@ -34,14 +33,15 @@ pub struct ModalAnalysis {
     constraints: Option<(Assembly, Reducer)>,
 }
 
-/// The partial derivatives of the equations of `derivation` (its linear system in the q''
-/// and the other unknowns), compiled.
-///
-/// # Errors
-/// When an entry has no derivative (`min`, `max` of something that changes).
-pub fn jacobian_of(derivation: &Derivation) -> Result<Jacobian, MechanicsError> {
-    let model = LinearModel::unconstrained(derivation.model.problem, &derivation.system);
-    Jacobian::new(&model)
+/// The equations of `derivation` (its linear system in the q'' and the other unknowns)
+/// compiled for their partial derivatives: by composite bodies where the derivation has
+/// them, the shorter program for the same unknowns.
+pub fn jacobian_of(derivation: &Derivation) -> Jacobian {
+    let system = derivation
+        .composite_system
+        .as_ref()
+        .unwrap_or(&derivation.system);
+    Jacobian::new(derivation.model.problem, system)
 }
 
 impl Jacobian {
@@ -85,13 +85,46 @@ pub struct Linearization {
     pub matrices: Option<Matrices>,
 }
 
+/// Kane's rows without reactions, each `… = 0`: the equations of motion for the q'' alone.
+/// Kane's own derivation has them as the first rows of its system, `A x − b` with the q''
+/// its first unknowns (by composite bodies where it has those), so they are not formed twice.
+fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
+    let problem = derivation.model.problem;
+    let n = problem.coordinates.len();
+    let accelerations: Vec<_> = (0..n).map(|i| problem.coordinate_symbol(i, 2)).collect();
+    let system = derivation
+        .composite_system
+        .as_ref()
+        .unwrap_or(&derivation.system);
+    if derivation.method == Method::Kane && system.unknowns.get(..n) == Some(&accelerations[..]) {
+        return (0..n)
+            .map(|i| {
+                let mut terms: Vec<_> = (0..n)
+                    .map(|j| {
+                        &system.a[i][j] * &crate::symbolic::Expr::sym(accelerations[j].clone())
+                    })
+                    .collect();
+                terms.push(-&system.b[i]);
+                crate::symbolic::add(terms)
+            })
+            .collect();
+    }
+    kane::equations(
+        &derivation.model,
+        &derivation.actions,
+        &derivation.inertia,
+        &accelerations,
+        &[],
+    )
+    .into_iter()
+    .map(|row| row.expression)
+    .collect()
+}
+
 impl ModalAnalysis {
-    /// Differentiates and compiles what the linearization needs besides the state matrix:
-    /// M, C and K (Kane's rows without reactions), or the reduction of a constrained system.
-    ///
-    /// # Errors
-    /// When the equations have no derivative.
-    pub fn new(derivation: &Derivation) -> Result<ModalAnalysis, MechanicsError> {
+    /// Compiles what the linearization needs besides the state matrix: M, C and K (Kane's
+    /// rows without reactions), or the reduction of a constrained system.
+    pub fn new(derivation: &Derivation) -> ModalAnalysis {
         let problem = derivation.model.problem;
         let mut variables: Vec<String> = (0..problem.coordinates.len())
             .map(|i| variable_name(&problem.coordinate_symbol(i, 0)))
@@ -100,34 +133,20 @@ impl ModalAnalysis {
             (0..problem.coordinates.len()).map(|i| variable_name(&problem.coordinate_symbol(i, 1))),
         );
         if let Some(assembly) = Assembly::new(&derivation.model) {
-            return Ok(ModalAnalysis {
+            return ModalAnalysis {
                 method: derivation.method,
                 variables,
                 second_order: None,
                 constraints: Some((assembly, Reducer::new(&derivation.model))),
-            });
+            };
         }
-        // Kane's rows without reactions are the equations of motion for the q'' alone.
-        let accelerations: Vec<_> = (0..problem.coordinates.len())
-            .map(|i| problem.coordinate_symbol(i, 2))
-            .collect();
-        let rows: Vec<_> = kane::equations(
-            &derivation.model,
-            &derivation.actions,
-            &derivation.inertia,
-            &accelerations,
-            &[],
-        )
-        .into_iter()
-        .map(|row| row.expression)
-        .collect();
-        let second_order = SecondOrder::new(problem, &rows)?;
-        Ok(ModalAnalysis {
+        let rows = kane_rows(derivation);
+        ModalAnalysis {
             method: derivation.method,
             variables,
-            second_order: Some(second_order),
+            second_order: Some(SecondOrder::new(problem, &rows)),
             constraints: None,
-        })
+        }
     }
 
     /// The method the equations come from.

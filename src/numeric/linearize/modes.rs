@@ -184,12 +184,23 @@ fn shape(vector: &DVector<Complex<f64>>, coordinates: usize) -> Shape {
                         clean(if snap_small(x.norm()) == 0.0 {
                             0.0
                         } else {
-                            x.arg()
+                            phase(*x)
                         }),
                     )
                 })
                 .collect(),
         )
+    }
+}
+
+/// The phase of a component in (−π, π]; one in opposition within round-off is π, not
+/// −π from an imaginary part of −0 or −1e−17 that another order of the same sums rounds
+/// to +0.
+fn phase(x: Complex<f64>) -> f64 {
+    if x.im.abs() <= 1e-14 * x.norm() && x.re < 0.0 {
+        std::f64::consts::PI
+    } else {
+        x.arg()
     }
 }
 
