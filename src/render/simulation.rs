@@ -50,15 +50,21 @@ pub fn simulation(
             })
             .collect()
     };
-    let energy_series: Vec<Series> = [("kinetic", "T"), ("potential", "V"), ("total", "E = T + V")]
-        .iter()
-        .filter_map(|(part, symbol)| {
-            trajectory.series(part).map(|points| Series {
-                name: Label::math(symbol, ""),
-                points,
-            })
+    // V and E from the problem's datum, as the answers give them, not from the start.
+    let datum = trajectory.potential_at_start;
+    let energy_series: Vec<Series> = [
+        ("kinetic", "T", 0.0),
+        ("potential", "V", datum),
+        ("total", "E = T + V", datum),
+    ]
+    .iter()
+    .filter_map(|&(part, symbol, shift)| {
+        trajectory.series(part).map(|points| Series {
+            name: Label::math(symbol, ""),
+            points: points.into_iter().map(|(t, e)| (t, e + shift)).collect(),
         })
-        .collect();
+    })
+    .collect();
     let mut plots = vec![
         (
             "coordinates",

@@ -92,6 +92,26 @@ fn a_conservative_double_pendulum_plots_its_energy_and_a_drift_within_the_check(
             "E moved at t = {t}"
         );
     }
+    // V and E from the datum at O, as the answers give them: by hand, the rods' energy
+    // at the start (q1 = 0.7, q2 = −0.4, q1' = 1, q2' = −0.5).
+    let (m1, l1, m2, l2, g) = (1.2, 0.6, 0.8, 0.4, 9.81);
+    let (q1, q2, u1, u2): (f64, f64, f64, f64) = (0.7, -0.4, 1.0, -0.5);
+    let kinetic = m1 * (l1 * u1).powi(2) / 6.0
+        + m2 * ((l1 * u1).powi(2) / 2.0
+            + (l2 * (u1 + u2)).powi(2) / 6.0
+            + l1 * l2 * u1 * (u1 + u2) * q2.cos() / 2.0);
+    let potential =
+        -g * (m1 * l1 / 2.0 * q1.cos() + m2 * (l1 * q1.cos() + l2 / 2.0 * (q1 + q2).cos()));
+    assert!(
+        (energies[1][0].1 - potential).abs() < 1e-5 * potential.abs(),
+        "V at the start is {} on the plot, {potential} from the datum",
+        energies[1][0].1
+    );
+    assert!(
+        (e0 - (kinetic + potential)).abs() < 1e-5 * e0.abs(),
+        "E at the start is {e0} on the plot, {} from the datum",
+        kinetic + potential
+    );
     let drift = pgfplots_series(&tex, "$(E - E_{0})/|E_{0}|$");
     assert_eq!(drift[0][0], (0.0, 0.0));
     assert!(

@@ -48,6 +48,10 @@ pub struct Trajectory {
     pub stopped: Option<SolveError>,
     /// The number of coordinates, so `q` is `row[1..=n]` and the rates follow.
     pub coordinates: usize,
+    /// The potential energy at the start from the problem's datum (gravity's from `N`'s
+    /// origin, springs' from their free length), which the rows' columns leave out: added
+    /// back, it gives the energies that the answers and a textbook measure.
+    pub potential_at_start: f64,
 }
 
 /// Integrates `system` from `q0` and `rates0` at `t = 0` over `settings.duration`, with the
@@ -111,6 +115,7 @@ pub fn simulate_with_limits(
         rows: Vec::with_capacity(times.len()),
         stopped: None,
         coordinates: n,
+        potential_at_start: 0.0,
     };
     let (mut q0, mut rates0) = (q0.to_vec(), rates0.to_vec());
     if let Err(e) = system.assemble(0.0, &mut q0, &mut rates0) {
@@ -125,6 +130,7 @@ pub fn simulate_with_limits(
             return Ok(trajectory);
         }
     };
+    trajectory.potential_at_start = potential0;
 
     // With constraints, the integrated dependent coordinates and rates only serve as the
     // starting guess: each evaluation solves them again from the independent ones.
