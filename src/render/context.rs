@@ -525,6 +525,8 @@ pub struct Check {
     pub tolerance: String,
     /// Whether it passed.
     pub passed: bool,
+    /// What was compared with what, with the numbers behind the value.
+    pub detail: String,
 }
 
 /// One plot, as an SVG file (Markdown, HTML) and as a pgfplots picture (LaTeX).

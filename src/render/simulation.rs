@@ -34,6 +34,7 @@ pub fn simulation(
             value: fixed(c.value),
             tolerance: fixed(c.tolerance),
             passed: c.passed,
+            detail: c.detail.clone(),
         })
         .collect();
     // One quantity per axis: angles and distances on plots of their own.
