@@ -325,16 +325,21 @@ impl Painter {
         for k in 0..=count {
             let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count.max(1) as f64));
             let e = p2add(s, p2add(p2scale(u, -6.0), p2scale(t, -5.0)));
-            self.obstacles.segment(s, e);
-            self.items.push(Item::Stroke(Stroke {
-                points: vec![s, e],
-                closed: false,
-                width: 0.8,
-                ink: Ink::Black,
-                fill: None,
-                dashed: false,
-            }));
+            self.hatch_tick(s, e);
         }
+    }
+
+    /// One thin tick of a hatching, from `s` to `e`, which labels keep clear of.
+    fn hatch_tick(&mut self, s: P2, e: P2) {
+        self.obstacles.segment(s, e);
+        self.items.push(Item::Stroke(Stroke {
+            points: vec![s, e],
+            closed: false,
+            width: 0.8,
+            ink: Ink::Black,
+            fill: None,
+            dashed: false,
+        }));
     }
 
     /// A hatched line through `at` along `along` (its half length), hatched away from `up`.
@@ -354,15 +359,7 @@ impl Painter {
         for k in 0..=count {
             let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count as f64));
             let e = p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -5.0)));
-            self.obstacles.segment(s, e);
-            self.items.push(Item::Stroke(Stroke {
-                points: vec![s, e],
-                closed: false,
-                width: 0.8,
-                ink: Ink::Black,
-                fill: None,
-                dashed: false,
-            }));
+            self.hatch_tick(s, e);
         }
     }
 
@@ -392,15 +389,7 @@ impl Painter {
                     continue;
                 };
                 let e = p2add(s, p2add(p2scale(out, 6.0 * away), p2scale(along, -4.0)));
-                self.obstacles.segment(s, e);
-                self.items.push(Item::Stroke(Stroke {
-                    points: vec![s, e],
-                    closed: false,
-                    width: 0.8,
-                    ink: Ink::Black,
-                    fill: None,
-                    dashed: false,
-                }));
+                self.hatch_tick(s, e);
             }
             to_next_tick -= length;
         }

@@ -336,15 +336,20 @@ fn springs(out: &mut String, motion: &Motion, timing: &Timing) {
                 polyline(&points)
             })
             .collect();
-        let _ = writeln!(
-            out,
-            "<path class=\"spring\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.4\">",
-            shapes[0],
-            color(Ink::Known)
-        );
-        timing.animate(out, "d", &shapes);
-        out.push_str("</path>\n");
+        animated_path(out, "spring", &shapes, timing);
     }
+}
+
+/// A path of class `class` drawn in the known loads' ink, one shape per frame.
+fn animated_path(out: &mut String, class: &str, shapes: &[String], timing: &Timing) {
+    let _ = writeln!(
+        out,
+        "<path class=\"{class}\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.4\">",
+        shapes[0],
+        color(Ink::Known)
+    );
+    timing.animate(out, "d", shapes);
+    out.push_str("</path>\n");
 }
 
 /// The dampers as dashpots: a cylinder fixed to the first end and a piston on a rod from
@@ -379,14 +384,7 @@ fn dampers(out: &mut String, motion: &Motion, timing: &Timing) {
                 legs + &dashpot.path(*a, *b)
             })
             .collect();
-        let _ = writeln!(
-            out,
-            "<path class=\"damper\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.4\">",
-            shapes[0],
-            color(Ink::Known)
-        );
-        timing.animate(out, "d", &shapes);
-        out.push_str("</path>\n");
+        animated_path(out, "damper", &shapes, timing);
     }
 }
 
