@@ -365,6 +365,33 @@ impl Compiled {
         self.friction.as_ref().map_or_else(Vec::new, |f| f.names())
     }
 
+    /// Each friction site at a state, held as `held` (decided when `None`), with the values
+    /// of its switching functions (see [`super::friction::Friction::switching`]).
+    ///
+    /// # Errors
+    /// As for [`Compiled::solve`].
+    pub fn friction_at(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        held: Option<&[super::friction::Held]>,
+    ) -> Result<(Vec<super::friction::SiteState>, Vec<f64>), SolveError> {
+        let Some(friction) = &self.friction else {
+            return Ok((Vec::new(), Vec::new()));
+        };
+        let states = self.motion_held(t, q, rates, held)?.friction;
+        let held: Vec<super::friction::Held> = match held {
+            Some(held) => held.to_vec(),
+            None => states
+                .iter()
+                .map(super::friction::SiteState::held)
+                .collect(),
+        };
+        let switching = friction.switching(&self.inputs(t, q, rates), &held, &states);
+        Ok((states, switching))
+    }
+
     /// As [`Compiled::motion`], each friction site held as `held` (decided from its slip
     /// velocity when `None`).
     ///

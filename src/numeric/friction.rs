@@ -90,6 +90,19 @@ impl SiteState {
         norm(&self.tangential)
     }
 
+    /// How to hold the site from here on: sticking, or sliding with its friction force's
+    /// direction.
+    pub fn held(&self) -> Held {
+        let force = self.friction();
+        match self.mode {
+            Mode::Slip if force > 0.0 => {
+                Held::Slip(self.tangential.iter().map(|t| t / force).collect())
+            }
+            Mode::Slip => Held::Slip(self.tangential.iter().map(|_| 0.0).collect()),
+            Mode::Stick => Held::Stick,
+        }
+    }
+
     /// |F| / |N|, 0 when N is 0.
     pub fn ratio(&self) -> f64 {
         let n = self.normal.abs();

@@ -201,6 +201,7 @@ fn csv_and_json_round_trip_every_digit() {
         rows: vec![vec![0.0, 0.1 + 0.2, -0.0], vec![0.01, 1e-7, 12345678.9]],
         stopped: None,
         coordinates: 1,
+        switches: Vec::new(),
     };
     assert_eq!(
         trajectory.to_csv(),
