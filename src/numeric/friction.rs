@@ -242,10 +242,13 @@ impl Friction {
                 self.slots.iter().zip(&modes).zip(signs.iter().zip(&run))
             {
                 if let Held::Slip(held_direction) = mode {
-                    // Against the slip while there is one (it turns in 3D); as held at rest.
+                    // Against the slip while there is one (it turns in 3D), as held at rest
+                    // and past it: a slip that overshoots zero within a step must not turn
+                    // the friction round, or the step would straddle a jump.
                     let speed = norm(slip);
-                    let direction: Vec<f64> = if speed > REST {
-                        slip.iter().map(|v| -v / speed).collect()
+                    let against: Vec<f64> = slip.iter().map(|v| -v / speed).collect();
+                    let direction = if speed > REST && dot(&against, held_direction) > 0.0 {
+                        against
                     } else {
                         held_direction.clone()
                     };
