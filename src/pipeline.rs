@@ -339,6 +339,33 @@ impl System for Solver<'_> {
     fn has_dissipation_only(&self) -> bool {
         self.compiled().has_dissipation_only()
     }
+
+    fn friction_sites(&self) -> Vec<String> {
+        self.compiled().friction_sites()
+    }
+
+    fn accelerations_held(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        held: &[crate::numeric::friction::Held],
+    ) -> Result<Vec<f64>, SolveError> {
+        self.with_plan(t, q, rates, |c| {
+            c.motion_held(t, q, rates, Some(held))
+                .map(|m| m.accelerations)
+        })
+    }
+
+    fn friction_at(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        held: Option<&[crate::numeric::friction::Held]>,
+    ) -> Result<(Vec<crate::numeric::friction::SiteState>, Vec<f64>), SolveError> {
+        self.with_plan(t, q, rates, |c| c.friction_at(t, q, rates, held))
+    }
 }
 
 /// The linearization of a derivation about any state, with the same recovery as the

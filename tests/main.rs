@@ -11,6 +11,7 @@ mod compact;
 mod composite;
 mod constraints;
 mod draw;
+mod friction;
 mod gears;
 mod invalid;
 mod kane_handout;

@@ -3,7 +3,7 @@
 use crate::cli::{SimulateArgs, SimulateFormat};
 use crate::numeric::checks::Check;
 use crate::numeric::format::fixed;
-use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
+use crate::numeric::simulate::{output_times, simulate_with_limits, Limits, Switch};
 use crate::numeric::SolveError;
 use crate::pipeline::derive;
 use crate::problem::{ProblemError, ProblemErrors};
@@ -50,6 +50,9 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
             return Err(Error::Solve(reason));
         }
     }
+    for switch in &trajectory.switches {
+        eprintln!("{}", switch_line(&problem, switch));
+    }
     let text = match args.format {
         SimulateFormat::Csv => trajectory.to_csv(),
         SimulateFormat::Json => trajectory.to_json(),
@@ -65,6 +68,29 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
             Ok(())
         }
     }
+}
+
+/// A friction site's switch in words: `t = 0.2912 s: contact lane stops slipping (rolls)`.
+pub fn switch_line(problem: &crate::problem::Problem, switch: &Switch) -> String {
+    use crate::numeric::friction::Mode;
+    let rolls = problem.constraints.iter().any(|c| {
+        c.name == switch.site
+            && matches!(
+                c.kind,
+                crate::problem::ConstraintKind::Rolling { .. }
+                    | crate::problem::ConstraintKind::Gear { .. }
+            )
+    });
+    let what = match (switch.from, switch.to) {
+        (Mode::Slip, Mode::Stick) if rolls => "stops slipping (rolls)",
+        (Mode::Slip, Mode::Stick) => "stops slipping (sticks)",
+        (Mode::Stick, Mode::Slip) => "starts to slip",
+        (Mode::Slip, Mode::Slip) => "stops, and slips the other way",
+        (Mode::Stick, Mode::Stick) => "sticks again",
+    };
+    // Ten significant digits: the instant is located to the integration tolerance.
+    let t: f64 = format!("{:.9e}", switch.t).parse().unwrap_or(switch.t);
+    format!("t = {t} s: contact {} {what}", switch.site)
 }
 
 /// The checks as lines for standard error (the table itself goes to the output).

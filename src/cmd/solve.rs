@@ -148,6 +148,24 @@ pub fn to_json(
         value["speeds"] = Value::Object(speeds);
         value["speed_derivatives"] = Value::Object(derivatives);
     }
+    if !solution.friction.is_empty() {
+        // Per site: the normal force's component along the normal, the friction force's
+        // magnitude, and their ratio, which never exceeds μ.
+        let friction: Map<String, Value> = solution
+            .friction
+            .iter()
+            .map(|site| {
+                let entry = json!({
+                    "mode": site.mode.name(),
+                    "normal": clean(site.normal),
+                    "tangential": clean(site.friction()),
+                    "ratio": clean(site.ratio()),
+                });
+                (site.name.clone(), entry)
+            })
+            .collect();
+        value["friction"] = Value::Object(friction);
+    }
     value
 }
 
@@ -183,6 +201,20 @@ fn to_text(
         out.push_str("\ndrive (generalized force along or about the prescribed coordinate)\n");
         for (name, value) in &s.drives {
             out.push_str(&format!("{name}: {}\n", fixed(*value)));
+        }
+    }
+    if !s.friction.is_empty() {
+        out.push_str("\nfriction (mode, normal force N, friction force |F|, |F|/|N|)\n");
+        for site in &s.friction {
+            out.push_str(&format!(
+                "{}: {}  N = {}  |F| = {}  |F|/|N| = {} (mu = {})\n",
+                site.name,
+                site.mode.name(),
+                fixed(site.normal),
+                fixed(site.friction()),
+                fixed(site.ratio()),
+                fixed(site.coefficient)
+            ));
         }
     }
     out

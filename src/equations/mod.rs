@@ -3,6 +3,7 @@
 
 pub mod composite;
 pub mod energy;
+pub mod friction;
 pub mod kane;
 pub mod newton_euler;
 /// The rows of equations, which the planner writes out in step 3 (see [`crate::plan::rows`]).

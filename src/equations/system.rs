@@ -1,6 +1,6 @@
 //! Assembling the chosen rows into the symbolic linear system `A x = b`.
 
-use crate::mechanics::constraints::RowOrigin;
+use crate::mechanics::constraints::{ConstraintRow, RowOrigin};
 use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
@@ -100,33 +100,29 @@ fn constraint_unknowns(model: &Model) -> Vec<Symbol> {
 }
 
 /// The constraint rows at the acceleration level, as equations.
-fn constraint_equations(
-    model: &Model,
+pub(super) fn constraint_equations<'r>(
+    rows: impl Iterator<Item = &'r ConstraintRow>,
     unknowns: &[Symbol],
 ) -> Result<Vec<Equation>, MechanicsError> {
-    model
-        .constraints
-        .rows
-        .iter()
-        .map(|row| {
-            let expression = row.acceleration()?;
-            Ok(Equation {
-                free_body: Vec::new(),
-                sum: Sum::Constraint {
-                    name: row.name.clone(),
-                },
-                direction: None,
-                unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
-                groups: Groups {
-                    contact: expression.clone(),
-                    distance: Expr::zero(),
-                    inertia_force: Expr::zero(),
-                    inertia_torque: Expr::zero(),
-                },
-                expression,
-            })
+    rows.map(|row| {
+        let expression = row.acceleration()?;
+        Ok(Equation {
+            free_body: Vec::new(),
+            sum: Sum::Constraint {
+                name: row.name.clone(),
+            },
+            direction: None,
+            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
+            groups: Groups {
+                contact: expression.clone(),
+                distance: Expr::zero(),
+                inertia_force: Expr::zero(),
+                inertia_torque: Expr::zero(),
+            },
+            expression,
         })
-        .collect()
+    })
+    .collect()
 }
 
 /// Derives the equations of motion of `problem` by `method`, for numbers
@@ -239,6 +235,8 @@ fn derive_with<'p>(
         }
         Method::MotionLaw => problem.find_reactions.clone(),
     };
+    // Friction is proportional to a normal force: every method solves for it.
+    super::friction::require_sites(&model, &mut reaction_joints);
     let unknowns_of = |sites: &[usize]| -> Vec<Symbol> {
         accelerations
             .iter()
@@ -248,7 +246,8 @@ fn derive_with<'p>(
             .collect()
     };
     let mut unknowns = unknowns_of(&reaction_joints);
-    let given = constraint_equations(&model, &every_unknown)?;
+    let mut given = constraint_equations(model.constraints.rows.iter(), &every_unknown)?;
+    given.extend(super::friction::stick_equations(&model, &every_unknown)?);
     let composite_alone = match (method, form, wanted) {
         (Method::Kane, Form::Numeric, Rows::Compiled) => {
             super::composite::system_alone(&model, &actions, &unknowns, &reaction_joints)

@@ -4,6 +4,7 @@
 //! differentiated, at the acceleration level, each with the unknown that enforces it: a
 //! reaction component, a multiplier or a drive.
 
+use super::friction::FrictionSite;
 use super::model::Model;
 use super::sites::{closure_site, contact_site, Site, SiteKind};
 use super::vector::{cross3, zero3, Components, Vector};
@@ -77,6 +78,9 @@ pub struct Constraints {
     pub prescribed: Vec<usize>,
     /// What was chosen and why, for the user.
     pub notes: Vec<String>,
+    /// The sites where Coulomb friction acts, each with the rows that hold while it
+    /// sticks; those rows are not among `rows`, so the rates they tie stay independent.
+    pub friction: Vec<FrictionSite>,
     /// Each rolling contact's name and the sine of the angle between its axle and the
     /// plane's normal, which must not vanish.
     pub tilts: Vec<(String, Expr)>,
@@ -121,6 +125,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let mut rows = Vec::new();
     let mut dropped = Vec::new();
     let mut tilts = Vec::new();
+    let mut friction: Vec<FrictionSite> = Vec::new();
     for c in 0..problem.closures.len() {
         let site = closure_site(model, c)?;
         let index = sites.len();
@@ -130,10 +135,15 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let values = initial_values(model);
     for (k, constraint) in problem.constraints.iter().enumerate() {
         match &constraint.kind {
-            ConstraintKind::Rolling { .. } | ConstraintKind::Gear { .. } => {
+            ConstraintKind::Rolling { .. }
+            | ConstraintKind::Gear { .. }
+            | ConstraintKind::Contact { .. } => {
                 let gear = matches!(constraint.kind, ConstraintKind::Gear { .. });
+                let point = matches!(constraint.kind, ConstraintKind::Contact { .. });
                 let (mut site, contact) = if gear {
                     super::gear::gear_site(model, k)?
+                } else if point {
+                    super::friction::contact_point_site(model, k)?
                 } else {
                     contact_site(model, k)?
                 };
@@ -143,7 +153,9 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                     // not contacts: they carry no reaction.
                     sites.push(placeholder(model, sites.len()));
                 }
-                tilts.push((site.name.clone(), contact.tilt.clone()));
+                if !point {
+                    tilts.push((site.name.clone(), contact.tilt.clone()));
+                }
                 // No slip is relative: the disc's material point at the contact moves as
                 // the material point of `on` there (at rest when `on` is N).
                 let velocity = &match site.parent {
@@ -168,9 +180,10 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                         )
                     });
                 }
+                let mut site_rows = Vec::new();
                 for (component, reaction) in site.reactions.iter().enumerate() {
                     let is_normal = !keeps_height && component + 1 == site.reactions.len();
-                    rows.push(ConstraintRow {
+                    site_rows.push(ConstraintRow {
                         origin: RowOrigin::Site {
                             site: index,
                             component,
@@ -181,6 +194,10 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                         unknown: reaction.unknown(&site.name),
                     });
                 }
+                let (kept, frictional) =
+                    super::friction::split_rows(model, k, index, site_rows, keeps_height)?;
+                rows.extend(kept);
+                friction.extend(frictional);
                 sites.push(site);
             }
             ConstraintKind::Position { expression } => {
@@ -232,9 +249,18 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
         });
     }
     let mut rows = drop_redundant(model, rows, &values, &mut dropped);
+    // A friction site's stick rows enforce its tangential reactions as the rows do theirs.
+    let kept = rows.len();
+    rows.extend(friction.iter_mut().flat_map(|f| f.stick.drain(..)));
     keep_enforced_reactions(model, &mut sites, &mut rows)?;
+    let mut stick = rows.split_off(kept).into_iter();
+    for f in &mut friction {
+        let count = sites[f.site].reactions.len().saturating_sub(1);
+        f.stick = stick.by_ref().take(count).collect();
+    }
     let mut constraints = Constraints {
         rows,
+        friction,
         dropped,
         prescribed,
         tilts,

@@ -42,6 +42,7 @@ pub mod constraints;
 pub mod dependent;
 pub mod dot_sum;
 pub mod frames;
+pub mod friction;
 pub mod gear;
 pub mod joints;
 pub mod massless;

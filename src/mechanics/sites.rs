@@ -293,7 +293,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
 }
 
 /// `Fx` when `d` is a unit vector of `N`, `Fn` for the normal otherwise, `Ft1`, `Ft2`.
-fn direction_axis(d: &Vector, index: usize) -> Axis {
+pub(super) fn direction_axis(d: &Vector, index: usize) -> Axis {
     let c = d
         .parts()
         .first()
@@ -311,7 +311,12 @@ fn direction_axis(d: &Vector, index: usize) -> Axis {
 }
 
 /// Unit directions in the plane: N's unit vectors when the normal is one of them.
-fn tangents_of(n: &Components, planar: bool, model: &Model, frame: BodyId) -> Vec<Vector> {
+pub(super) fn tangents_of(
+    n: &Components,
+    planar: bool,
+    model: &Model,
+    frame: BodyId,
+) -> Vec<Vector> {
     let axis_of = |c: &Components| -> Option<usize> {
         let nonzero: Vec<usize> = (0..3).filter(|&i| !c[i].is_zero()).collect();
         (nonzero.len() == 1).then(|| nonzero[0])

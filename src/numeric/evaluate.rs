@@ -52,6 +52,8 @@ pub struct Compiled {
     scratch: std::cell::RefCell<Vec<f64>>,
     /// The declared speeds' kinematic differential equations, when there are any.
     speeds: Option<SpeedProgram>,
+    /// The friction sites, when there are any.
+    friction: Option<super::friction::Friction>,
 }
 
 /// The q'' and the requested reactions at one state.
@@ -63,6 +65,8 @@ pub struct Motion {
     pub reactions: Vec<(String, [f64; 3], [f64; 3])>,
     /// Each prescribed coordinate: the generalized force that drives it.
     pub drives: Vec<(String, f64)>,
+    /// Each friction site: sticking or slipping, its normal and friction forces.
+    pub friction: Vec<super::friction::SiteState>,
 }
 
 /// The solution at one state.
@@ -76,6 +80,8 @@ pub struct StateSolution {
     pub drives: Vec<(String, f64)>,
     /// Each declared speed: name, `u` and `u'` (empty when the speeds are the rates).
     pub speeds: Vec<(String, f64, f64)>,
+    /// Each friction site: sticking or slipping, its normal and friction forces.
+    pub friction: Vec<super::friction::SiteState>,
 }
 
 /// The input symbols of the compiled program: constants, coordinates, rates, time, and
@@ -241,6 +247,7 @@ impl Compiled {
             }
         };
         // The energies are a program of their own: they are not part of A and b.
+        let friction = super::friction::Friction::new(derivation, &inputs);
         let energy = Lazy {
             inputs,
             outputs: [energy::kinetic(model), energy::potential(model)],
@@ -267,6 +274,7 @@ impl Compiled {
                 || r.position.as_ref().is_some_and(|p| p.contains(&time))
         });
         Compiled {
+            friction,
             assembly: super::assemble::Assembly::new(model),
             drives,
             method: derivation.method,
@@ -285,7 +293,9 @@ impl Compiled {
             outputs: n * n + n + directions.len(),
             scratch: std::cell::RefCell::new(Vec::new()),
             speeds: SpeedProgram::new(problem),
-            conservative: !drives_work && problem.loads.iter().all(|l| is_conservative(&l.kind)),
+            conservative: !drives_work
+                && model.constraints.friction.is_empty()
+                && problem.loads.iter().all(|l| is_conservative(&l.kind)),
             dissipative_only: !drives_work
                 && problem
                     .loads
@@ -319,6 +329,7 @@ impl Compiled {
             accelerations: motion.accelerations,
             reactions: motion.reactions,
             drives: motion.drives,
+            friction: motion.friction,
         })
     }
 
@@ -340,6 +351,53 @@ impl Compiled {
     /// # Errors
     /// As for [`Compiled::solve`].
     pub fn motion(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Motion, SolveError> {
+        self.motion_held(t, q, rates, None)
+    }
+
+    /// The friction sites' names (empty without friction).
+    pub fn friction_sites(&self) -> Vec<String> {
+        self.friction.as_ref().map_or_else(Vec::new, |f| f.names())
+    }
+
+    /// Each friction site at a state, held as `held` (decided when `None`), with the values
+    /// of its switching functions (see [`super::friction::Friction::switching`]).
+    ///
+    /// # Errors
+    /// As for [`Compiled::solve`].
+    pub fn friction_at(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        held: Option<&[super::friction::Held]>,
+    ) -> Result<(Vec<super::friction::SiteState>, Vec<f64>), SolveError> {
+        let Some(friction) = &self.friction else {
+            return Ok((Vec::new(), Vec::new()));
+        };
+        let states = self.motion_held(t, q, rates, held)?.friction;
+        let held: Vec<super::friction::Held> = match held {
+            Some(held) => held.to_vec(),
+            None => states
+                .iter()
+                .map(super::friction::SiteState::held)
+                .collect(),
+        };
+        let switching = friction.switching(&self.inputs(t, q, rates), &held, &states);
+        Ok((states, switching))
+    }
+
+    /// As [`Compiled::motion`], each friction site held as `held` (decided from its slip
+    /// velocity when `None`).
+    ///
+    /// # Errors
+    /// As for [`Compiled::solve`].
+    pub fn motion_held(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        held: Option<&[super::friction::Held]>,
+    ) -> Result<Motion, SolveError> {
         let inputs = self.inputs(t, q, rates);
         let mut scratch = self.scratch.take();
         let mut values = vec![0.0; self.outputs];
@@ -355,11 +413,25 @@ impl Compiled {
                 what: "a coefficient of the equations".into(),
             });
         }
-        // Factored in place; rebuilt from the values only to explain a singular one.
-        let x = solve_linear_owned(a, b).ok_or_else(|| SolveError::SingularSystem {
+        let singular = || SolveError::SingularSystem {
             state: state(),
             detail: self.singularity_detail(&DMatrix::from_row_slice(n, n, &values[..n * n])),
-        })?;
+        };
+        // Factored in place; rebuilt from the values only to explain a singular one.
+        let (x, friction) = match &self.friction {
+            None => (solve_linear_owned(a, b).ok_or_else(singular)?, Vec::new()),
+            Some(friction) => {
+                let decided;
+                let held = match held {
+                    Some(held) => held,
+                    None => {
+                        decided = friction.held_at(&inputs, rates);
+                        &decided
+                    }
+                };
+                friction.solve(&a, &b, &inputs, held).ok_or_else(singular)?
+            }
+        };
         let mut accelerations: Vec<f64> = x.iter().take(self.coordinates.len()).copied().collect();
         if let Some(speeds) = &self.speeds {
             // The unknowns are the u': q'' = W⁻¹ (u' − Ẇ q').
@@ -404,6 +476,7 @@ impl Compiled {
             accelerations,
             reactions,
             drives,
+            friction,
         })
     }
 

@@ -6,6 +6,7 @@ pub mod assemble;
 pub mod checks;
 pub mod constraint_checks;
 pub mod evaluate;
+pub mod friction;
 /// Fixed-precision numbers for text (see [`crate::symbolic::format`]).
 pub use crate::symbolic::format;
 pub mod integrate;

@@ -4,6 +4,7 @@
 //! [`System`]; the integrator, the simulation and the confirmation checks see only this.
 
 use super::format::fixed;
+use super::friction::{Held, SiteState};
 use super::SolveError;
 
 /// One evaluation of the equations of motion at a state.
@@ -85,6 +86,42 @@ pub trait System {
 
     /// True when the only non-conservative elements are dampers, so energy can only fall.
     fn has_dissipation_only(&self) -> bool;
+
+    /// The names of the sites where Coulomb friction acts (none by default).
+    fn friction_sites(&self) -> Vec<String> {
+        Vec::new()
+    }
+
+    /// The accelerations with each friction site held as `held` (sticking, or sliding a
+    /// given way), as a simulation holds them between switches. By default
+    /// [`System::accelerations`].
+    ///
+    /// # Errors
+    /// As for [`System::evaluate`].
+    fn accelerations_held(
+        &self,
+        t: f64,
+        q: &[f64],
+        rates: &[f64],
+        _held: &[Held],
+    ) -> Result<Vec<f64>, SolveError> {
+        self.accelerations(t, q, rates)
+    }
+
+    /// Each friction site at a state, held as `held` (decided by the check when `None`),
+    /// with the values of the functions whose zeros are its switches (positive until then).
+    ///
+    /// # Errors
+    /// As for [`System::evaluate`].
+    fn friction_at(
+        &self,
+        _t: f64,
+        _q: &[f64],
+        _rates: &[f64],
+        _held: Option<&[Held]>,
+    ) -> Result<(Vec<SiteState>, Vec<f64>), SolveError> {
+        Ok((Vec::new(), Vec::new()))
+    }
 }
 
 /// A state in words for error messages: `t = 0.5, q1 = 0.3, q1' = -1.2`.

@@ -185,6 +185,7 @@ impl Reader {
             let kind = match kind_name {
                 "rolling" => self.rolling(fields, &path),
                 "gear" => self.gear(fields, &path),
+                "contact" => self.contact(fields, &path),
                 "position" | "velocity" => self.general_constraint(fields, &path, kind_name),
                 other => {
                     self.diag.hint(
@@ -192,17 +193,22 @@ impl Reader {
                         format!("unknown constraint type `{other}`"),
                         super::names::suggest(
                             other,
-                            &["rolling", "gear", "position", "velocity"],
+                            &["rolling", "gear", "contact", "position", "velocity"],
                             "constraint types",
                         ),
                     );
                     None
                 }
             };
+            let friction = match kind_name {
+                "rolling" | "gear" | "contact" => self.friction(fields, &path),
+                _ => None,
+            };
             if let Some(kind) = kind {
                 out.push(Constraint {
                     name: self.names.constraints.get(i).cloned().unwrap_or_default(),
                     kind,
+                    friction,
                     path,
                 });
             }
@@ -216,6 +222,7 @@ impl Reader {
             path,
             &[
                 "name", "type", "body", "radius", "axis", "center", "on", "normal", "offset",
+                "friction",
             ],
             &mut self.diag,
         );
@@ -488,12 +495,12 @@ impl Reader {
             let rolling = constraints[k]
                 .get("type")
                 .and_then(Value::as_str)
-                .is_some_and(|t| t == "rolling" || t == "gear");
+                .is_some_and(|t| matches!(t, "rolling" | "gear" | "contact"));
             if !rolling {
                 self.diag.hint(
                     path,
                     format!("`{}` is a position or velocity constraint, which has no reaction to report", name.unwrap_or("")),
-                    "request joints, closures, rolling contacts and gears",
+                    "request joints, closures, rolling contacts, gears and contacts",
                 );
                 return None;
             }

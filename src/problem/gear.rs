@@ -9,7 +9,7 @@ use super::validate;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const GEAR_KEYS: [&str; 10] = [
+const GEAR_KEYS: [&str; 11] = [
     "name",
     "type",
     "body",
@@ -20,6 +20,7 @@ const GEAR_KEYS: [&str; 10] = [
     "on_center",
     "internal",
     "axis",
+    "friction",
 ];
 
 impl Reader {

@@ -20,6 +20,7 @@
 mod bodies;
 mod constraints;
 mod expressions;
+mod friction;
 mod gear;
 mod graph;
 mod initial;

@@ -361,6 +361,18 @@ pub enum ConstraintKind {
         /// The common axle, fixed in `body` (as written); `None` in 2D (N.z).
         axis: Option<VectorExpr>,
     },
+    /// A point of `body` that stays on a plane fixed in `on` and may slide on it.
+    Contact {
+        body: BodyId,
+        /// The point that touches the plane.
+        point: ForcePoint,
+        /// The body the plane is fixed in.
+        on: BodyId,
+        /// The plane's normal, fixed in `on` (as written).
+        normal: VectorExpr,
+        /// The plane's distance from `on`'s origin along the normal.
+        offset: Expr,
+    },
     /// `expression = 0`, of constants, coordinates and `t`.
     Position { expression: Expr },
     /// `expression = 0`, affine in the first rates.
@@ -372,6 +384,10 @@ pub enum ConstraintKind {
 pub struct Constraint {
     pub name: String,
     pub kind: ConstraintKind,
+    /// The coefficient of Coulomb friction μ ≥ 0 (a `rolling`, `gear` or `contact`), a
+    /// scalar of constants; `None` for a contact that never slips (`rolling`, `gear`) or
+    /// is smooth (`contact`).
+    pub friction: Option<Expr>,
     /// The JSON path, e.g. `constraints[0]`.
     pub path: String,
 }

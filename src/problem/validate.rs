@@ -239,6 +239,12 @@ pub fn values(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
             &mut diag,
         );
     }
+    for constraint in &problem.constraints {
+        if let Some(mu) = &constraint.friction {
+            let path = key_path(&constraint.path, "friction");
+            super::friction::coefficient(mu, values, &path, &mut diag);
+        }
+    }
     for load in &problem.loads {
         for (key, e) in load_scalars(&load.kind) {
             // Only loads that hold constants alone can be judged before the motion.

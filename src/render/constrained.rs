@@ -299,6 +299,15 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
             super::escape::latex(&words, super::escape::Lines::One)
         )
     };
+    let sticking = model
+        .constraints
+        .friction
+        .iter()
+        .find(|f| f.stick.iter().any(|r| r.name == name));
+    if let Some(site) = sticking {
+        // A friction site's no-slip row holds only while it sticks (rolls).
+        return text(format!("no slip at {} while it sticks", site.name));
+    }
     let row = model.constraints.rows.iter().find(|r| r.name == name);
     match row.map(|r| &r.origin) {
         Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {

@@ -92,6 +92,8 @@ pub struct Solution {
     pub initial_values: Vec<InitialValue>,
     /// Step 5: the requested reactions at the initial state.
     pub reactions: Vec<Reaction>,
+    /// Step 5: each friction site at the initial state, sticking or sliding, and why.
+    pub friction: Vec<FrictionView>,
     /// Step 6: the simulation and its checks.
     pub simulation: Simulation,
     /// Small motions about a state (`explain --linearize`).
@@ -472,6 +474,26 @@ pub struct InitialValue {
     pub value: String,
     /// Its unit in LaTeX (may be empty), e.g. `\\mathrm{rad/s^{2}}`.
     pub unit_tex: String,
+}
+
+/// A friction site at the initial state: the textbook's process, step by step.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct FrictionView {
+    /// The site's name (user text).
+    pub site: String,
+    /// μ, formatted.
+    pub coefficient: String,
+    /// The sentences, each with its display math.
+    pub steps: Vec<FrictionStep>,
+}
+
+/// One sentence of a friction site's process, and the math it leads to (may be empty).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct FrictionStep {
+    /// Plain text.
+    pub text: String,
+    /// LaTeX math without `$`, shown on its own line; empty for none.
+    pub math_tex: String,
 }
 
 /// The reaction at one joint, at the initial state.

@@ -100,6 +100,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             },
         })
         .collect();
+    solution.friction = super::friction::views(derivation, &initial.friction);
     solution.reactions = initial
         .reactions
         .iter()

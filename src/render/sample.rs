@@ -61,6 +61,7 @@ pub fn sample() -> Solution {
             value("F^{O}_{x}", "-7.07557", "\\mathrm{N}"),
             value("F^{O}_{y}", "15.7546", "\\mathrm{N}"),
         ],
+        friction: Vec::new(),
         reactions: vec![Reaction {
             joint: s("O"),
             force: s("(-7.07557, 15.7546, 0) N"),

@@ -165,9 +165,14 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
                 (worst, at) = (row[total] - lowest, row[0]);
             }
         }
+        // Coulomb friction, like a damper, only takes energy away.
+        let who = if system.friction_sites().is_empty() {
+            "the dampers only remove"
+        } else {
+            "the dampers and friction only remove"
+        };
         let detail = format!(
-            "the dampers only remove energy: it rises by at most {} J (at t = {} s) on an energy \
-             scale of {} J",
+            "{who} energy: it rises by at most {} J (at t = {} s) on an energy scale of {} J",
             fixed(worst),
             fixed(at),
             fixed(scale)

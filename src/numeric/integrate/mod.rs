@@ -25,6 +25,59 @@ use dormand_prince::{combine, error_norm, try_step};
 use std::fmt;
 use step_size::{first_guess, second_guess, GROW_MOST, SAFETY, SHRINK_MOST};
 
+/// An instant where a switching function fell to zero.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Event {
+    /// The time (s), the first at which the function is zero or below.
+    pub t: f64,
+    /// The state there.
+    pub y: Vec<f64>,
+    /// Which functions fell, by index.
+    pub which: Vec<usize>,
+}
+
+/// The first instant within a step at which a switching function falls from positive to
+/// zero or below: bisection on the dense output, from the values at the step's two ends.
+fn locate<G>(
+    events: &mut G,
+    dense: &Dense,
+    t: f64,
+    h: f64,
+    before: &[f64],
+    after: &[f64],
+) -> Option<(f64, Vec<f64>, Vec<usize>)>
+where
+    G: FnMut(f64, &[f64]) -> Vec<f64>,
+{
+    let falls = |now: &[f64]| -> Vec<usize> {
+        (0..before.len().min(now.len()))
+            .filter(|&i| before[i] > 0.0 && now[i] <= 0.0)
+            .collect()
+    };
+    if falls(after).is_empty() {
+        return None;
+    }
+    let (mut low, mut high) = (0.0f64, 1.0f64);
+    let resolution = 1e-13 * (1.0 + t.abs()) / h.abs().max(f64::MIN_POSITIVE);
+    while high - low > resolution {
+        let middle = 0.5 * (low + high);
+        let now = events(t + middle * h, &dense.at(middle));
+        if falls(&now).is_empty() {
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    let y = dense.at(high);
+    let which = falls(&events(t + high * h, &y));
+    let which = if which.is_empty() {
+        falls(after)
+    } else {
+        which
+    };
+    Some((t + high * h, y, which))
+}
+
 /// Step-size control settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
@@ -117,6 +170,9 @@ pub struct Solution<E> {
     pub times: Vec<f64>,
     /// The state at each of `times`.
     pub states: Vec<Vec<f64>>,
+    /// Where a switching function fell to zero, ending the run early (see
+    /// [`integrate_until`]).
+    pub event: Option<Event>,
     /// `None` when every output time was reached.
     pub stop: Option<Stop<E>>,
     /// Step counts.
@@ -131,8 +187,20 @@ pub struct Solution<E> {
 /// # Errors
 /// Never panics and never loops without bound: when `f` fails, the step collapses or the
 /// step limit is hit, the result holds the outputs reached so far and a [`Stop`].
-pub fn integrate<E, F>(
+pub fn integrate<E, F>(f: F, t0: f64, y0: &[f64], outputs: &[f64], options: &Options) -> Solution<E>
+where
+    F: FnMut(f64, &[f64], &mut [f64]) -> Result<(), E>,
+{
+    integrate_until(f, |_, _| Vec::new(), t0, y0, outputs, options)
+}
+
+/// As [`integrate`], stopping early at the first instant one of the switching functions
+/// `events(t, y)` falls from positive to zero or below: located on the step's dense output
+/// by bisection (to about 1e-13 of the step's time), and kept in [`Solution::event`] with
+/// the rows up to it. An empty list from `events` means none can fall.
+pub fn integrate_until<E, F, G>(
     mut f: F,
+    mut events: G,
     t0: f64,
     y0: &[f64],
     outputs: &[f64],
@@ -140,10 +208,12 @@ pub fn integrate<E, F>(
 ) -> Solution<E>
 where
     F: FnMut(f64, &[f64], &mut [f64]) -> Result<(), E>,
+    G: FnMut(f64, &[f64]) -> Vec<f64>,
 {
     let mut solution = Solution {
         times: Vec::new(),
         states: Vec::new(),
+        event: None,
         stop: None,
         stats: Stats::default(),
     };
@@ -194,6 +264,7 @@ where
     let mut just_rejected = false;
     // The derivative's latest error inside a trial step, reported if the steps collapse.
     let mut failure = None;
+    let mut switching = events(t, &y);
 
     loop {
         if solution.stats.accepted + solution.stats.rejected >= options.max_steps {
@@ -244,21 +315,31 @@ where
         if error <= 1.0 {
             solution.stats.accepted += 1;
             failure = None;
-            let t_new = if last { t_end } else { t + h };
+            let mut t_new = if last { t_end } else { t + h };
             let dense = Dense::new(&y, &y_new, &k, h);
+            let after = events(t_new, &y_new);
+            let event = locate(&mut events, &dense, t, h, &switching, &after);
+            if let Some((at, _, _)) = &event {
+                t_new = *at;
+            }
             while next_output < outputs.len() && outputs[next_output] <= t_new {
                 let at = outputs[next_output];
                 solution.times.push(at);
-                solution.states.push(if at == t_new {
+                solution.states.push(if at == t_new && event.is_none() {
                     y_new.clone()
                 } else {
                     dense.at((at - t) / h)
                 });
                 next_output += 1;
             }
+            if let Some((t, y, which)) = event {
+                solution.event = Some(Event { t, y, which });
+                return solution;
+            }
             if next_output == outputs.len() {
                 return solution;
             }
+            switching = after;
             t = t_new;
             std::mem::swap(&mut y, &mut y_new);
             // First same as last: this step's final stage is the next one's first.

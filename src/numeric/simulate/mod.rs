@@ -3,10 +3,12 @@
 //! The state integrated is `[q, q']`; each output row then evaluates the system once more
 //! at the interpolated state for q'', the energies and the reactions.
 
+use super::friction::Held;
 use super::integrate::{integrate, Options, Stop};
 use super::system::{describe_state, System};
 use super::SolveError;
 use crate::problem::SimulateSettings;
+pub use switching::Switch;
 
 /// The most rows [`simulate`] writes unless [`Limits::max_rows`] is raised: a million rows of
 /// a few dozen numbers is already tens of megabytes of CSV, and a mistyped `output_step`
@@ -52,6 +54,8 @@ pub struct Trajectory {
     /// origin, springs' from their free length), which the rows' columns leave out: added
     /// back, it gives the energies that the answers and a textbook measure.
     pub potential_at_start: f64,
+    /// Where a friction site switched between sticking and sliding, in order.
+    pub switches: Vec<Switch>,
 }
 
 /// Integrates `system` from `q0` and `rates0` at `t = 0` over `settings.duration`, with the
@@ -116,6 +120,7 @@ pub fn simulate_with_limits(
         stopped: None,
         coordinates: n,
         potential_at_start: 0.0,
+        switches: Vec::new(),
     };
     let (mut q0, mut rates0) = (q0.to_vec(), rates0.to_vec());
     if let Err(e) = system.assemble(0.0, &mut q0, &mut rates0) {
@@ -135,37 +140,64 @@ pub fn simulate_with_limits(
     // With constraints, the integrated dependent coordinates and rates only serve as the
     // starting guess: each evaluation solves them again from the independent ones.
     let constrained = system.is_constrained();
-    let derivative = |t: f64, y: &[f64], dy: &mut [f64]| -> Result<(), SolveError> {
-        let mut assembled = Vec::new();
-        let (q, rates) = if constrained {
-            assembled.extend_from_slice(y);
-            let (q, rates) = assembled.split_at_mut(n);
-            system.assemble(t, q, rates)?;
-            (&*q, &*rates)
-        } else {
-            y.split_at(n)
+    let derivative =
+        |t: f64, y: &[f64], dy: &mut [f64], held: Option<&[Held]>| -> Result<(), SolveError> {
+            let mut assembled = Vec::new();
+            let (q, rates) = if constrained {
+                assembled.extend_from_slice(y);
+                let (q, rates) = assembled.split_at_mut(n);
+                system.assemble(t, q, rates)?;
+                (&*q, &*rates)
+            } else {
+                y.split_at(n)
+            };
+            let accelerations = match held {
+                Some(held) => system.accelerations_held(t, q, rates, held)?,
+                None => system.accelerations(t, q, rates)?,
+            };
+            if accelerations.len() != n {
+                return Err(mismatch("accelerations", n, accelerations.len()));
+            }
+            if accelerations.iter().any(|a| !a.is_finite()) {
+                let state = describe_state(t, &names, q, rates);
+                return Err(SolveError::NotFinite {
+                    state,
+                    what: "an acceleration".into(),
+                });
+            }
+            dy[..n].copy_from_slice(rates);
+            dy[n..].copy_from_slice(&accelerations);
+            Ok(())
         };
-        let accelerations = system.accelerations(t, q, rates)?;
-        if accelerations.len() != n {
-            return Err(mismatch("accelerations", n, accelerations.len()));
-        }
-        if accelerations.iter().any(|a| !a.is_finite()) {
-            let state = describe_state(t, &names, q, rates);
-            return Err(SolveError::NotFinite {
-                state,
-                what: "an acceleration".into(),
-            });
-        }
-        dy[..n].copy_from_slice(rates);
-        dy[n..].copy_from_slice(&accelerations);
-        Ok(())
-    };
     let y0: Vec<f64> = q0.iter().chain(rates0).copied().collect();
     let options = Options {
         max_steps: limits.max_steps,
         ..Options::with_tolerance(tolerance)
     };
-    let solution = integrate(derivative, 0.0, &y0, &times, &options);
+    let solution = if system.friction_sites().is_empty() {
+        integrate(
+            |t, y: &[f64], dy: &mut [f64]| derivative(t, y, dy, None),
+            0.0,
+            &y0,
+            &times,
+            &options,
+        )
+    } else {
+        let settle = |t: f64, y: &[f64]| -> Result<Vec<f64>, SolveError> {
+            let mut y = y.to_vec();
+            if constrained {
+                let (q, rates) = y.split_at_mut(n);
+                system.assemble(t, q, rates)?;
+            }
+            Ok(y)
+        };
+        let mut held_derivative =
+            |t: f64, y: &[f64], dy: &mut [f64], held: &[Held]| derivative(t, y, dy, Some(held));
+        let (solution, switches) =
+            switching::integrate(system, &mut held_derivative, &settle, &y0, &times, &options);
+        trajectory.switches = switches;
+        solution
+    };
 
     for (&t, y) in solution.times.iter().zip(&solution.states) {
         let mut y = y.clone();
@@ -342,6 +374,8 @@ pub fn full_precision(x: f64) -> String {
     }
     format!("{x:?}")
 }
+
+mod switching;
 
 /// Small systems with hand-written equations, for the tests here and in `checks`.
 #[cfg(test)]

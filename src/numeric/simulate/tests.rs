@@ -202,6 +202,7 @@ fn csv_and_json_round_trip_every_digit() {
         stopped: None,
         coordinates: 1,
         potential_at_start: 0.0,
+        switches: Vec::new(),
     };
     assert_eq!(
         trajectory.to_csv(),

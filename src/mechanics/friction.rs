@@ -1,0 +1,168 @@
+//! Coulomb friction in the model: the `contact` entry's site, and the sites where friction
+//! acts (a `rolling`, `gear` or `contact` with `friction`).
+//!
+//! A friction site keeps its tangential reaction components as unknowns (the friction
+//! force) and its normal one (N). Its no-slip rows are not constraints of the motion: the
+//! rates they would tie stay independent, since the site may slip. They are kept apart as
+//! the rows that hold while it sticks (or rolls); the numbers then choose, state by state,
+//! between them and the sliding law `F = μ|N|` against the slip (see
+//! [`crate::numeric::friction`]).
+
+use super::constraints::{ConstraintRow, RowOrigin};
+use super::joints::{ComponentKind, ReactionComponent};
+use super::model::{vector_of, Model};
+use super::sites::{direction_axis, tangents_of, Contact, Site, SiteKind};
+use super::vector::{dot3, zero3, Components, Vector};
+use super::MechanicsError;
+use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint};
+use crate::symbolic::eval::eval;
+use crate::symbolic::{pow, Expr, Symbol};
+
+/// A site where Coulomb friction acts.
+#[derive(Clone, Debug)]
+pub struct FrictionSite {
+    /// The contact's name, which names the site everywhere (`find.reactions`, the JSON).
+    pub name: String,
+    /// Index into `Model::sites`.
+    pub site: usize,
+    /// The coefficient of friction μ, a scalar of constants.
+    pub coefficient: Expr,
+    /// The rows that hold while the site sticks: the slip velocity along each tangent is
+    /// zero (one in 2D, two in 3D). Each row's unknown is the friction force's component
+    /// along that tangent, and its velocity expression is that slip velocity component.
+    pub stick: Vec<ConstraintRow>,
+    /// The normal force's unknown, along the plane's normal (or the line of centres).
+    pub normal: Symbol,
+}
+
+/// The site of `contact` entry `k`: the point of the body on the plane, with its normal
+/// reaction, and its tangential ones when it has friction.
+///
+/// # Errors
+/// A zero normal.
+pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsError> {
+    let problem = model.problem;
+    let constraint = &problem.constraints[k];
+    let ConstraintKind::Contact {
+        body,
+        point,
+        on,
+        normal,
+        offset,
+    } = &constraint.kind
+    else {
+        return Err(MechanicsError {
+            path: constraint.path.clone(),
+            message: "not a contact".into(),
+            hint: None,
+        });
+    };
+    let frames = &model.frames;
+    let (body, on) = (*body, *on);
+    let written = vector_of(normal).components_in(on, frames);
+    let length = written
+        .iter()
+        .map(|e| eval(e, &model.values).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    if length.is_nan() || length <= 1e-12 {
+        return Err(MechanicsError {
+            path: format!("{}.normal", constraint.path),
+            message: "the normal is zero".into(),
+            hint: Some("give a nonzero direction, e.g. \"N.y\"".into()),
+        });
+    }
+    let scale = pow(dot3(&written, &written), Expr::ratio(-1, 2));
+    let n_in_on: Components = std::array::from_fn(|i| &written[i] * &scale);
+    let n_vec = Vector::new(on, n_in_on.clone());
+    let offset_c = match point {
+        ForcePoint::Point(p) => model.locate(*p).1,
+        ForcePoint::Offset(v) => vector_of(v).components_in(body, frames),
+    };
+    let from_on = |position: Vector| match on {
+        BodyId::GROUND => position,
+        _ => position.minus(&model.position_on(on, &zero3())),
+    };
+    let point_position = from_on(model.position_on(body, &offset_c));
+    let height = &point_position.dot(&n_vec, frames) - offset;
+    let planar = problem.dimension == Dimension::Two;
+    let tangents = tangents_of(&n_in_on, planar, model, on);
+    let mut reactions: Vec<ReactionComponent> = Vec::new();
+    if constraint.friction.is_some() {
+        reactions.extend(tangents.iter().enumerate().map(|(i, t)| ReactionComponent {
+            kind: ComponentKind::Force,
+            axis: direction_axis(t, i + 1),
+            direction: t.clone(),
+        }));
+    }
+    reactions.push(ReactionComponent {
+        kind: ComponentKind::Force,
+        axis: direction_axis(&n_vec, 0),
+        direction: n_vec.clone(),
+    });
+    let motion = model.point_on(body, &offset_c);
+    let parent_offset = from_on(motion.position.clone()).components_in(on, frames);
+    let site = Site {
+        name: constraint.name.clone(),
+        kind: SiteKind::Contact(k),
+        parent: on,
+        child: body,
+        child_offset: offset_c.clone(),
+        parent_offset,
+        point: motion,
+        reactions,
+    };
+    let contact = Contact {
+        offset: offset_c,
+        height,
+        normal: n_vec,
+        tangents,
+        tilt: Expr::one(),
+    };
+    Ok((site, contact))
+}
+
+/// Splits a friction site's rows: the no-slip rows (every component but the normal, which
+/// is last) become the site's stick rows, the normal's row stays a constraint.
+///
+/// # Errors
+/// When the joints already keep the contact (its normal row was dropped): then no normal
+/// force reaches the contact, and friction has nothing to be proportional to.
+pub fn split_rows(
+    model: &Model,
+    k: usize,
+    index: usize,
+    rows: Vec<ConstraintRow>,
+    keeps_height: bool,
+) -> Result<(Vec<ConstraintRow>, Option<FrictionSite>), MechanicsError> {
+    let constraint = &model.problem.constraints[k];
+    let Some(coefficient) = &constraint.friction else {
+        return Ok((rows, None));
+    };
+    if keeps_height {
+        return Err(MechanicsError {
+            path: format!("{}.friction", constraint.path),
+            message: format!(
+                "`{}` has friction, but the joints already hold the body against the surface, so the normal force is theirs and the contact carries none for friction to be proportional to",
+                constraint.name
+            ),
+            hint: Some("give the body a coordinate along the normal (marked `dependent`, e.g. a planar joint's y) so that the contact carries the normal force".into()),
+        });
+    }
+    let mut rows = rows;
+    let Some(normal_row) = rows.pop() else {
+        return Ok((rows, None));
+    };
+    let site = FrictionSite {
+        name: constraint.name.clone(),
+        site: index,
+        coefficient: coefficient.clone(),
+        stick: rows,
+        normal: normal_row.unknown.clone(),
+    };
+    debug_assert!(site
+        .stick
+        .iter()
+        .all(|r| matches!(r.origin, RowOrigin::Site { .. })));
+    Ok((vec![normal_row], Some(site)))
+}

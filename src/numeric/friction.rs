@@ -1,0 +1,340 @@
+//! Coulomb friction at a state: the textbook's process, with numbers.
+//!
+//! The equations are formed with every friction site sticking (rolling): its no-slip rows
+//! are rows of `A x = b`, and its friction and normal forces unknowns. A site that slips
+//! exchanges each of those rows for the sliding law `F_k = μ |N| f_k`, with `f` the unit
+//! direction of the friction force (against the slip velocity) and `|N| = σ N`, σ the sign
+//! of N; both known, the law is linear in the unknowns.
+//!
+//! A site whose slip velocity is zero is first assumed to stick; the solution is accepted
+//! when `|F| ≤ μ |N|`, and otherwise solved again sliding, the friction force along the
+//! force that sticking needed (it opposes the motion that would start).
+
+use super::evaluate::solve_linear;
+use crate::equations::rows::Sum;
+use crate::equations::Derivation;
+use crate::symbolic::compile::Program;
+use crate::symbolic::Expr;
+use nalgebra::{DMatrix, DVector};
+
+/// A slip speed at or below this (times the largest rate, plus one) is zero: the site is
+/// at rest relative to its surface.
+const REST: f64 = 1e-8;
+
+/// How a site is treated when the equations are solved.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Held {
+    /// Assume sticking, check `|F| ≤ μ|N|`, and slide if the check fails.
+    Decide,
+    /// Sticking (rolling), without the check.
+    Stick,
+    /// Sliding, the friction force along this unit direction (one component per tangent).
+    Slip(Vec<f64>),
+}
+
+/// Whether a site sticks or slips.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// No relative motion at the contact (rolling, for a disc).
+    Stick,
+    /// Sliding, with friction μ|N| against the slip.
+    Slip,
+}
+
+impl Mode {
+    /// `stick` or `slip`, as the JSON writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Stick => "stick",
+            Mode::Slip => "slip",
+        }
+    }
+}
+
+/// The sticking solution that failed its check: the friction force sticking needed, and
+/// the most friction can give.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FailedStick {
+    /// The friction force's components along the tangents (N).
+    pub tangential: Vec<f64>,
+    /// The normal force (N).
+    pub normal: f64,
+    /// μ |N| (N).
+    pub limit: f64,
+}
+
+/// One friction site at a solved state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SiteState {
+    /// The site's name (its contact's).
+    pub name: String,
+    /// Sticking or slipping.
+    pub mode: Mode,
+    /// The normal force, along the plane's normal (N).
+    pub normal: f64,
+    /// The friction force's components along the tangents (N).
+    pub tangential: Vec<f64>,
+    /// μ |N| (N).
+    pub limit: f64,
+    /// The coefficient of friction μ.
+    pub coefficient: f64,
+    /// The slip velocity's components along the tangents (m/s).
+    pub slip: Vec<f64>,
+    /// When the site was at rest and sticking failed its check: that first solution.
+    pub failed_stick: Option<FailedStick>,
+}
+
+impl SiteState {
+    /// |F|, the friction force's magnitude (N).
+    pub fn friction(&self) -> f64 {
+        norm(&self.tangential)
+    }
+
+    /// How to hold the site from here on: sticking, or sliding with its friction force's
+    /// direction.
+    pub fn held(&self) -> Held {
+        let force = self.friction();
+        match self.mode {
+            Mode::Slip if force > 0.0 => {
+                Held::Slip(self.tangential.iter().map(|t| t / force).collect())
+            }
+            Mode::Slip => Held::Slip(self.tangential.iter().map(|_| 0.0).collect()),
+            Mode::Stick => Held::Stick,
+        }
+    }
+
+    /// |F| / |N|, 0 when N is 0.
+    pub fn ratio(&self) -> f64 {
+        let n = self.normal.abs();
+        if n > 0.0 {
+            self.friction() / n
+        } else {
+            0.0
+        }
+    }
+}
+
+/// One site's places in the system.
+#[derive(Clone, Debug)]
+struct Slot {
+    name: String,
+    /// The stick rows' indices in `A`.
+    rows: Vec<usize>,
+    /// The friction force components' indices among the unknowns.
+    tangential: Vec<usize>,
+    /// The normal force's index among the unknowns.
+    normal: usize,
+    /// μ's output, then the slip velocity components', in the program.
+    first_output: usize,
+}
+
+/// The friction sites of a derivation, compiled.
+#[derive(Clone, Debug)]
+pub struct Friction {
+    slots: Vec<Slot>,
+    program: Program,
+    outputs: usize,
+}
+
+impl Friction {
+    /// The friction sites of `derivation`, or `None` when it has none. `inputs` are the
+    /// symbols the compiled equations take.
+    pub fn new(derivation: &Derivation, inputs: &[crate::symbolic::Symbol]) -> Option<Friction> {
+        let model = &derivation.model;
+        let sites = &model.constraints.friction;
+        if sites.is_empty() {
+            return None;
+        }
+        let unknowns = &derivation.system.unknowns;
+        let row_of = |name: &str| {
+            derivation
+                .rows
+                .iter()
+                .position(|r| matches!(&r.sum, Sum::Constraint { name: n } if n == name))
+        };
+        let mut outputs: Vec<Expr> = Vec::new();
+        let mut slots = Vec::new();
+        for site in sites {
+            let first_output = outputs.len();
+            outputs.push(site.coefficient.clone());
+            outputs.extend(site.stick.iter().map(|r| r.velocity.clone()));
+            slots.push(Slot {
+                name: site.name.clone(),
+                rows: site
+                    .stick
+                    .iter()
+                    .map(|r| row_of(&r.name))
+                    .collect::<Option<_>>()?,
+                tangential: site
+                    .stick
+                    .iter()
+                    .map(|r| unknowns.iter().position(|u| *u == r.unknown))
+                    .collect::<Option<_>>()?,
+                normal: unknowns.iter().position(|u| *u == site.normal)?,
+                first_output,
+            });
+        }
+        Some(Friction {
+            slots,
+            outputs: outputs.len(),
+            program: Program::compile(inputs, &outputs),
+        })
+    }
+
+    /// The sites' names.
+    pub fn names(&self) -> Vec<String> {
+        self.slots.iter().map(|s| s.name.clone()).collect()
+    }
+
+    /// Each site's μ and slip velocity components at the state of `inputs`.
+    fn run(&self, inputs: &[f64]) -> Vec<(f64, Vec<f64>)> {
+        let mut values = vec![0.0; self.outputs];
+        self.program.run(inputs, &mut Vec::new(), &mut values);
+        self.slots
+            .iter()
+            .map(|s| {
+                let v = &values[s.first_output..s.first_output + 1 + s.rows.len()];
+                (v[0], v[1..].to_vec())
+            })
+            .collect()
+    }
+
+    /// What a site does with no history: slides against its slip where it slips, and is
+    /// decided by the check where it is at rest.
+    pub fn held_at(&self, inputs: &[f64], rates: &[f64]) -> Vec<Held> {
+        let scale = 1.0 + rates.iter().fold(0.0f64, |m, r| m.max(r.abs()));
+        self.run(inputs)
+            .into_iter()
+            .map(|(_, slip)| {
+                let speed = norm(&slip);
+                if speed > REST * scale {
+                    Held::Slip(slip.iter().map(|v| -v / speed).collect())
+                } else {
+                    Held::Decide
+                }
+            })
+            .collect()
+    }
+
+    /// Solves `a x = b` with each site `held` as given; where a site is to be decided,
+    /// sticking first and sliding if the check fails. `None` when a system is singular.
+    pub fn solve(
+        &self,
+        a: &DMatrix<f64>,
+        b: &DVector<f64>,
+        inputs: &[f64],
+        held: &[Held],
+    ) -> Option<(DVector<f64>, Vec<SiteState>)> {
+        let run = self.run(inputs);
+        let mut modes: Vec<Held> = held
+            .iter()
+            .map(|h| match h {
+                Held::Decide => Held::Stick,
+                other => other.clone(),
+            })
+            .collect();
+        let mut signs = vec![1.0; self.slots.len()];
+        let mut failed: Vec<Option<FailedStick>> = vec![None; self.slots.len()];
+        // Each pass settles a site's mode or the sign of its N; a few suffice.
+        for _ in 0..=2 * self.slots.len() + 2 {
+            let (mut a, mut b) = (a.clone(), b.clone());
+            for ((slot, mode), (sign, (mu, slip))) in
+                self.slots.iter().zip(&modes).zip(signs.iter().zip(&run))
+            {
+                if let Held::Slip(held_direction) = mode {
+                    // Against the slip while there is one (it turns in 3D), as held at rest
+                    // and past it: a slip that overshoots zero within a step must not turn
+                    // the friction round, or the step would straddle a jump.
+                    let speed = norm(slip);
+                    let against: Vec<f64> = slip.iter().map(|v| -v / speed).collect();
+                    let direction = if speed > REST && dot(&against, held_direction) > 0.0 {
+                        against
+                    } else {
+                        held_direction.clone()
+                    };
+                    for (k, &row) in slot.rows.iter().enumerate() {
+                        a.row_mut(row).fill(0.0);
+                        a[(row, slot.tangential[k])] = 1.0;
+                        a[(row, slot.normal)] -= mu * sign * direction[k];
+                        b[row] = 0.0;
+                    }
+                }
+            }
+            let x = solve_linear(&a, &b)?;
+            let mut settled = true;
+            for (i, slot) in self.slots.iter().enumerate() {
+                let normal = x[slot.normal];
+                let mu = run[i].0;
+                let tangential: Vec<f64> = slot.tangential.iter().map(|&t| x[t]).collect();
+                let sign = if normal < 0.0 { -1.0 } else { 1.0 };
+                match &modes[i] {
+                    Held::Slip(_) if sign != signs[i] => {
+                        signs[i] = sign;
+                        settled = false;
+                    }
+                    Held::Stick if held[i] == Held::Decide => {
+                        let (force, limit) = (norm(&tangential), mu * normal.abs());
+                        if force > limit * (1.0 + 1e-12) + 1e-12 {
+                            modes[i] = Held::Slip(tangential.iter().map(|t| t / force).collect());
+                            signs[i] = sign;
+                            failed[i] = Some(FailedStick {
+                                tangential,
+                                normal,
+                                limit,
+                            });
+                            settled = false;
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            if settled {
+                let states = self
+                    .slots
+                    .iter()
+                    .enumerate()
+                    .map(|(i, slot)| {
+                        let normal = x[slot.normal];
+                        SiteState {
+                            name: slot.name.clone(),
+                            mode: match modes[i] {
+                                Held::Slip(_) => Mode::Slip,
+                                _ => Mode::Stick,
+                            },
+                            normal,
+                            tangential: slot.tangential.iter().map(|&t| x[t]).collect(),
+                            limit: run[i].0 * normal.abs(),
+                            coefficient: run[i].0,
+                            slip: run[i].1.clone(),
+                            failed_stick: failed[i].take(),
+                        }
+                    })
+                    .collect();
+                return Some((x, states));
+            }
+        }
+        None
+    }
+
+    /// The functions whose zeros are the instants a site changes mode, while each is held
+    /// as `held`: a slipping site's slip velocity along the way it started (it stops, or
+    /// turns), a sticking site's margin μ|N| − |F| (it starts to slip). Positive until then.
+    pub fn switching(&self, inputs: &[f64], held: &[Held], states: &[SiteState]) -> Vec<f64> {
+        self.run(inputs)
+            .into_iter()
+            .zip(held.iter().zip(states))
+            .map(|((_, slip), (held, state))| match held {
+                Held::Slip(direction) => -dot(direction, &slip),
+                _ => state.limit - state.friction(),
+            })
+            .collect()
+    }
+}
+
+fn norm(v: &[f64]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}

@@ -1,0 +1,173 @@
+//! Step 5's friction: at each friction site, the textbook's process in words and numbers.
+//! Where the site slides, the sliding law in place of the no-slip row; where it is at rest,
+//! the assumption that it sticks, the solution, the check `|F| ≤ μ|N|` and, when the check
+//! fails, the solution again with sliding friction.
+
+use super::context::{FrictionStep, FrictionView};
+use crate::equations::rows::Sum;
+use crate::equations::Derivation;
+use crate::numeric::format::fixed;
+use crate::numeric::friction::{Mode, SiteState};
+use crate::symbolic::print::latex;
+use crate::symbolic::Expr;
+
+/// One view per friction site of `derivation`, from its state in `friction` (the solution
+/// at the initial state).
+pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionView> {
+    let model = &derivation.model;
+    model
+        .constraints
+        .friction
+        .iter()
+        .zip(friction)
+        .map(|(site, state)| {
+            let names: Vec<String> = site
+                .stick
+                .iter()
+                .map(|r| latex(&Expr::sym(r.unknown.clone())))
+                .collect();
+            let normal = latex(&Expr::sym(site.normal.clone()));
+            let rows: Vec<String> = site
+                .stick
+                .iter()
+                .filter_map(|r| {
+                    derivation
+                        .rows
+                        .iter()
+                        .position(
+                            |row| matches!(&row.sum, Sum::Constraint { name } if *name == r.name),
+                        )
+                        .map(|i| format!("({})", i + 1))
+                })
+                .collect();
+            let rows = rows.join(" and ");
+            let mu = latex(&site.coefficient);
+            let steps = steps(state, &names, &normal, &rows, &mu);
+            FrictionView {
+                site: site.name.clone(),
+                coefficient: fixed(state.coefficient),
+                steps,
+            }
+        })
+        .collect()
+}
+
+fn step(text: impl Into<String>, math_tex: impl Into<String>) -> FrictionStep {
+    FrictionStep {
+        text: text.into(),
+        math_tex: math_tex.into(),
+    }
+}
+
+/// The forces as equations, `F_x = -13.734\ \mathrm{N}, \quad F_y = 68.67\ \mathrm{N}`.
+fn forces(names: &[String], tangential: &[f64], normal_name: &str, normal: f64) -> String {
+    let mut parts: Vec<String> = names
+        .iter()
+        .zip(tangential)
+        .map(|(n, v)| format!("{n} = {}\\ \\mathrm{{N}}", fixed(*v)))
+        .collect();
+    parts.push(format!("{normal_name} = {}\\ \\mathrm{{N}}", fixed(normal)));
+    parts.join(", \\quad ")
+}
+
+/// `|F|`: the component's absolute value in 2D, the root of the squares in 3D.
+fn magnitude_tex(names: &[String]) -> String {
+    match names {
+        [one] => format!("\\left|{one}\\right|"),
+        _ => format!(
+            "\\sqrt{{{}}}",
+            names
+                .iter()
+                .map(|n| format!("{{{n}}}^{{2}}"))
+                .collect::<Vec<_>>()
+                .join(" + ")
+        ),
+    }
+}
+
+/// The sliding law for each tangential component: `F_x = -\mu F_y`.
+fn law_tex(names: &[String], normal: &str, mu: &str, state: &SiteState) -> String {
+    let force = state.friction().max(f64::MIN_POSITIVE);
+    let sign = if state.normal < 0.0 { -1.0 } else { 1.0 };
+    names
+        .iter()
+        .zip(&state.tangential)
+        .map(|(name, t)| {
+            let factor = sign * t / force;
+            let factor_tex = match factor {
+                f if (f - 1.0).abs() < 1e-12 => String::new(),
+                f if (f + 1.0).abs() < 1e-12 => "-".to_string(),
+                f => format!("{} \\, ", fixed(f)),
+            };
+            format!("{name} = {factor_tex}{mu} \\, {normal}")
+        })
+        .collect::<Vec<_>>()
+        .join(", \\qquad ")
+}
+
+fn steps(
+    state: &SiteState,
+    names: &[String],
+    normal: &str,
+    rows: &str,
+    mu: &str,
+) -> Vec<FrictionStep> {
+    let magnitude = magnitude_tex(names);
+    let check = |tangential: &[f64], n: f64, holds: bool| {
+        let force: f64 = tangential.iter().map(|t| t * t).sum::<f64>().sqrt();
+        format!(
+            "{magnitude} = {}\\ \\mathrm{{N}} {} {mu} \\left|{normal}\\right| = {} \\times {}\\ \\mathrm{{N}} = {}\\ \\mathrm{{N}}",
+            fixed(force),
+            if holds { "\\le" } else { ">" },
+            fixed(state.coefficient),
+            fixed(n.abs()),
+            fixed(state.coefficient * n.abs())
+        )
+    };
+    let solved = forces(names, &state.tangential, normal, state.normal);
+    let slip_speed: f64 = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let mut out = Vec::new();
+    if state.mode == Mode::Slip && state.failed_stick.is_none() {
+        out.push(step(
+            format!(
+                "The contact slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ|N| against the slip, and the no-slip row {rows} of the equations above does not hold; in its place, the sliding law:",
+                fixed(slip_speed)
+            ),
+            law_tex(names, normal, mu, state),
+        ));
+        out.push(step("Solved with it:", solved));
+        return out;
+    }
+    let first = state.failed_stick.as_ref();
+    let (tangential, n) = first.map_or((&state.tangential[..], state.normal), |f| {
+        (&f.tangential[..], f.normal)
+    });
+    out.push(step(
+        format!("The contact is at rest relative to the surface at this state. Assume that it sticks (a wheel: that it rolls without slipping), so that the no-slip row {rows} holds. Solved with it:"),
+        forces(names, tangential, normal, n),
+    ));
+    match first {
+        None => {
+            out.push(step(
+                "Check that friction can give that much, |F| ≤ μ|N|:",
+                check(tangential, n, true),
+            ));
+            out.push(step(
+                "The check holds: the contact sticks, and the solution stands.",
+                "",
+            ));
+        }
+        Some(_) => {
+            out.push(step(
+                "Check that friction can give that much, |F| ≤ μ|N|:",
+                check(tangential, n, false),
+            ));
+            out.push(step(
+                format!("The check fails: friction cannot hold the contact, and it slips. Solve again with sliding friction μ|N| opposing the motion that would start (along the force that sticking needed): row {rows} is replaced by the sliding law"),
+                law_tex(names, normal, mu, state),
+            ));
+            out.push(step("Solved with it (the values below):", solved));
+        }
+    }
+    out
+}
