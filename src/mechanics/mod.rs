@@ -43,6 +43,7 @@ pub mod dependent;
 pub mod dot_sum;
 pub mod frames;
 pub mod gear;
+pub mod independent;
 pub mod joints;
 pub mod massless;
 pub mod model;
