@@ -17,6 +17,7 @@ pub mod draw;
 pub mod eigen_plot;
 pub mod escape;
 mod free_bodies;
+mod independent;
 pub mod kane;
 mod kinematics;
 mod line_break;
