@@ -14,6 +14,7 @@ mod draw;
 mod gears;
 mod invalid;
 mod kane_handout;
+mod kane_speeds;
 mod kinematics;
 mod library;
 mod linearize;
