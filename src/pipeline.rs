@@ -15,7 +15,7 @@
 //! at which the system is not (a row's reaction term vanishing there), the solver and the
 //! linearizer plan again for that state and go on, for every command alike.
 
-use crate::equations::system::{derive_at, derive_for_numbers, Form, State};
+use crate::equations::system::{derive_at, derive_fastest, derive_for_numbers, Form, State};
 use crate::equations::{Derivation, Method};
 use crate::numeric::checks::{self, Check};
 use crate::numeric::evaluate::{Compiled, StateSolution};
@@ -36,30 +36,57 @@ pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
     Ok(crate::problem::load_file(path)?)
 }
 
-/// Derives the equations of `problem` by `method`, in their most compact form, for
-/// numbers ([`Form::Numeric`]), forming no row that is not compiled
-/// ([`derive_for_numbers`]).
+/// Derives the equations for the numbers of `problem` by `method` in the fastest exact form
+/// ([`Form::Numeric`]): Kane's system by composite bodies wherever it stands in for the
+/// method's own rows ([`derive_fastest`]), the method's own rows elsewhere
+/// ([`derive_own`]). The q'' and the reactions are the same to rounding; the derivation
+/// keeps `method`, so what is printed names the method asked for.
 ///
 /// # Errors
 /// When the model cannot be built or the method finds no complete set of equations.
 pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
     within_budget(method, || {
-        let numeric = derive_for_numbers(problem, method, &[])?;
-        let named = numeric.inertia.compact.iter().any(|&c| c);
-        if method != Method::MotionLaw || !numeric.model.is_planar() || !named {
-            return Ok(numeric);
+        let fastest = derive_fastest(problem, method)?;
+        if fastest.system_method != method {
+            return Ok(fastest);
         }
-        // The Motion Law's moments multiply each lever arm out against the named parts,
-        // where whole the trigonometric identities collect them: a chain of equal links
-        // comes out smaller whole (3,911 operations against 8,380 for ten), one of unequal
-        // links smaller by names (11,837 against 17,559). Keep the smaller program.
-        let whole = derive_at(problem, method, &[], Form::Handout)?;
-        let size = |d: &Derivation| Compiled::new(d).operation_count();
-        Ok(if size(&whole) < size(&numeric) {
-            whole
-        } else {
-            numeric
-        })
+        most_compact(problem, fastest)
+    })
+}
+
+/// Derives the equations of `problem` by `method` itself, in their most compact form, for
+/// numbers ([`Form::Numeric`]), forming no row that is not compiled
+/// ([`derive_for_numbers`]): what the confirmation checks compare.
+///
+/// # Errors
+/// As for [`derive()`].
+pub fn derive_own(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
+    within_budget(method, || {
+        most_compact(problem, derive_for_numbers(problem, method, &[])?)
+    })
+}
+
+/// The Motion Law's planar rows whole or by names, whichever compiles shorter; any other
+/// derivation as it is.
+fn most_compact<'p>(
+    problem: &'p Problem,
+    numeric: Derivation<'p>,
+) -> Result<Derivation<'p>, crate::mechanics::MechanicsError> {
+    let method = numeric.method;
+    let named = numeric.inertia.compact.iter().any(|&c| c);
+    if method != Method::MotionLaw || !numeric.model.is_planar() || !named {
+        return Ok(numeric);
+    }
+    // The Motion Law's moments multiply each lever arm out against the named parts,
+    // where whole the trigonometric identities collect them: a chain of equal links
+    // comes out smaller whole (3,911 operations against 8,380 for ten), one of unequal
+    // links smaller by names (11,837 against 17,559). Keep the smaller program.
+    let whole = derive_at(problem, method, &[], Form::Handout)?;
+    let size = |d: &Derivation| Compiled::new(d).operation_count();
+    Ok(if size(&whole) < size(&numeric) {
+        whole
+    } else {
+        numeric
     })
 }
 
@@ -85,17 +112,24 @@ fn within_budget<T>(
 
 /// The confirmation checks of a run of `solver` from `q0` (see
 /// [`numeric::checks::confirm`](crate::numeric::checks::confirm)), the other two methods
-/// derived and solved through this pipeline, with the same recovery.
+/// derived and solved through this pipeline, with the same recovery. Every method is
+/// checked by its own rows ([`derive_own`]): where Kane's system by composite bodies stood
+/// in for `solver`'s method, that method's own rows are derived for the check.
 pub fn confirm(
     problem: &Problem,
     solver: &Solver,
     trajectory: &Trajectory,
     q0: &[f64],
 ) -> Vec<Check> {
+    let method = solver.method();
+    let own = match solver.is_own() {
+        true => None,
+        false => Some(derive_own(problem, method).map(|d| Solver::new(problem, &d))),
+    };
     let derived: Vec<(Method, Result<Derivation, String>)> = Method::ALL
         .iter()
-        .filter(|m| **m != solver.method())
-        .map(|&m| (m, derive(problem, m).map_err(|e| e.to_string())))
+        .filter(|m| **m != method)
+        .map(|&m| (m, derive_own(problem, m).map_err(|e| e.to_string())))
         .collect();
     let solvers: Vec<(Method, Result<Solver, String>)> = derived
         .iter()
@@ -108,7 +142,7 @@ pub fn confirm(
             )
         })
         .collect();
-    let others: Vec<(&str, Result<&dyn System, String>)> = solvers
+    let mut others: Vec<(&str, Result<&dyn System, String>)> = solvers
         .iter()
         .map(|(m, s)| {
             (
@@ -117,13 +151,17 @@ pub fn confirm(
             )
         })
         .collect();
-    checks::confirm(
-        problem,
-        (solver.method().name(), solver),
-        &others,
-        trajectory,
-        q0,
-    )
+    // Without its own rows the method fails the agreement, with the reason, and the run's
+    // equations stand in for the other checks.
+    let primary: &Solver = match &own {
+        None => solver,
+        Some(Ok(own)) => own,
+        Some(Err(e)) => {
+            others.push((method.name(), Err(e.to_string())));
+            solver
+        }
+    };
+    checks::confirm(problem, (method.name(), primary), &others, trajectory, q0)
 }
 
 /// Everything the worked solution shows, from every stage: the derivation, its solver, the
@@ -191,14 +229,20 @@ pub fn answers(
 /// states where it is singular: the recovery every compiled form of the equations shares.
 struct Plans<T> {
     method: Method,
+    /// Whether the first plan is the Motion Law's, which a special state may make singular.
+    replans: bool,
+    /// Whether the equations are the method's own (see [`Solver::is_own`]).
+    own: bool,
     /// The plan of the derivation first, then any plans made for special states.
     plans: RefCell<Vec<T>>,
 }
 
 impl<T> Plans<T> {
-    fn new(method: Method, first: T) -> Plans<T> {
+    fn new(derivation: &Derivation, first: T) -> Plans<T> {
         Plans {
-            method,
+            method: derivation.method,
+            replans: derivation.system_method == Method::MotionLaw,
+            own: derivation.system_method == derivation.method,
             plans: RefCell::new(vec![first]),
         }
     }
@@ -230,7 +274,7 @@ impl<T> Plans<T> {
             }
             result
         };
-        if self.method != Method::MotionLaw || self.plans.borrow().len() > 8 {
+        if !self.replans || self.plans.borrow().len() > 8 {
             return first;
         }
         let state = State {
@@ -264,13 +308,19 @@ impl<'p> Solver<'p> {
     pub fn new(problem: &'p Problem, derivation: &Derivation) -> Solver<'p> {
         Solver {
             problem,
-            plans: Plans::new(derivation.method, Compiled::new(derivation)),
+            plans: Plans::new(derivation, Compiled::new(derivation)),
         }
     }
 
     /// The method of the equations.
     pub fn method(&self) -> Method {
         self.plans.method
+    }
+
+    /// Whether the equations are the method's own rows, not Kane's system by composite
+    /// bodies standing in for them.
+    pub fn is_own(&self) -> bool {
+        self.plans.own
     }
 
     /// The compiled equations of the derivation's own plan.
@@ -381,7 +431,7 @@ impl Linearizer {
     pub fn new(derivation: &Derivation) -> Linearizer {
         Linearizer {
             linear: linearize::ModalAnalysis::new(derivation),
-            jacobians: Plans::new(derivation.method, linearize::jacobian_of(derivation)),
+            jacobians: Plans::new(derivation, linearize::jacobian_of(derivation)),
         }
     }
 

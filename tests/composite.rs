@@ -133,3 +133,42 @@ fn a_deep_chain_compiles_by_composite_bodies_and_a_small_system_as_formed() {
     derivation.composite_system = None;
     assert_eq!(chosen, program(&derivation));
 }
+
+#[test]
+fn every_methods_numbers_of_a_large_tree_are_kanes_composite_system_and_its_own_rows() {
+    use mbd_tutor::pipeline::{derive, derive_own, Solver};
+    // A spherical chain, and every joint type with the reactions at O and W asked for.
+    for name in ["validation/spherical-chain-3", "validation/all-joints-3d"] {
+        let problem = load(name);
+        let q: Vec<f64> = problem
+            .coordinates
+            .iter()
+            .map(|c| c.initial + 0.3)
+            .collect();
+        let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate - 0.7).collect();
+        for method in [Method::MotionLaw, Method::NewtonEuler] {
+            let fastest = derive(&problem, method).expect("derives");
+            assert_eq!(fastest.method, method, "{name}");
+            assert_eq!(fastest.system_method, Method::Kane, "{name} {method:?}");
+            let own = derive_own(&problem, method).expect("derives");
+            assert_eq!(own.system_method, method, "{name} {method:?}");
+            let stand_in = Solver::new(&problem, &fastest);
+            assert!(!stand_in.is_own() && Solver::new(&problem, &own).is_own());
+            let got = stand_in.solve(0.0, &q, &rates).expect("solves");
+            let expected = Solver::new(&problem, &own)
+                .solve(0.0, &q, &rates)
+                .expect("solves");
+            let close = |x: f64, y: f64| (x - y).abs() <= 1e-10 * y.abs().max(1.0);
+            for (x, y) in got.accelerations.iter().zip(&expected.accelerations) {
+                assert!(close(*x, *y), "{name} {method:?}: q'' {x} against {y}");
+            }
+            assert_eq!(got.reactions.len(), expected.reactions.len(), "{name}");
+            for (a, b) in got.reactions.iter().zip(&expected.reactions) {
+                assert_eq!(a.0, b.0, "{name}");
+                for (x, y) in a.1.iter().chain(&a.2).zip(b.1.iter().chain(&b.2)) {
+                    assert!(close(*x, *y), "{name} {method:?} {}: {x} against {y}", a.0);
+                }
+            }
+        }
+    }
+}

@@ -75,12 +75,15 @@ pub struct Derivation<'p> {
     /// The inertia forces and torques.
     pub inertia: Inertia,
     /// The chosen rows; none where only the numbers were asked for and Kane's system was
-    /// built by composite bodies alone ([`derive_for_numbers`]).
+    /// built by composite bodies alone ([`derive_for_numbers`], [`derive_fastest`]).
     pub rows: Vec<Equation>,
     /// The candidates rejected, with reasons (the Motion Law only).
     pub rejected: Vec<Rejected>,
     /// The assembled system.
     pub system: LinearSystem,
+    /// The method whose equations `system` holds: `method`, or Kane's where Kane's system
+    /// by composite bodies stands in for the numbers of another method ([`derive_fastest`]).
+    pub system_method: Method,
     /// The same system with Kane's rows rebuilt by composite bodies, for evaluation (see
     /// [`super::composite`]): equal numbers, the mass matrix for n² work where `system`'s
     /// rows take n³, the rest for n where they take n². Only for Kane's method in
@@ -186,6 +189,19 @@ pub fn derive_for_numbers<'p>(
     derive_with(problem, method, states, Form::Numeric, Rows::Compiled)
 }
 
+/// As [`derive_for_numbers`] with no states, with Kane's system by composite bodies standing
+/// in for the rows of any method where it is built alone: an unconstrained tree large enough
+/// (see [`super::composite::system_alone`]). The q'' and the reactions are the method's own
+/// to rounding, and the composite system costs n² where the Motion Law's and Newton–Euler's
+/// rows cost n³ or more. The derivation keeps `method`; its `system_method` says whose
+/// equations its system holds.
+///
+/// # Errors
+/// As for [`derive`].
+pub fn derive_fastest(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
+    derive_with(problem, method, &[], Form::Numeric, Rows::Fastest)
+}
+
 /// Which rows a derivation forms.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Rows {
@@ -193,6 +209,8 @@ enum Rows {
     Formed,
     /// Only what is compiled for numbers.
     Compiled,
+    /// Only what is compiled for numbers, by Kane's composite system whatever the method.
+    Fastest,
 }
 
 fn derive_with<'p>(
@@ -234,16 +252,7 @@ fn derive_with<'p>(
         .collect();
     let mut reaction_joints: Vec<usize> = match method {
         Method::NewtonEuler => all_sites.clone(),
-        Method::Kane => {
-            let mut sites: Vec<usize> = problem
-                .find_reactions
-                .iter()
-                .copied()
-                .filter(|&j| j < problem.joints.len())
-                .collect();
-            sites.extend(loop_sites.iter().copied());
-            sites
-        }
+        Method::Kane => kane_reaction_joints(problem, &loop_sites),
         Method::MotionLaw => problem.find_reactions.clone(),
     };
     // Friction is proportional to a normal force: every method solves for it.
@@ -260,12 +269,17 @@ fn derive_with<'p>(
     let mut given = constraint_equations(model.constraints.rows.iter(), &every_unknown)?;
     given.extend(super::friction::stick_equations(&model, &every_unknown)?);
     let composite_alone = match (method, form, wanted) {
-        (Method::Kane, Form::Numeric, Rows::Compiled) => {
-            super::composite::system_alone(&model, &actions, &unknowns, &reaction_joints)
+        (_, Form::Numeric, Rows::Fastest) | (Method::Kane, Form::Numeric, Rows::Compiled) => {
+            // Kane's reactions: the requested ones, where every other method's are too
+            // (`system_alone` applies to trees alone, without closures or contacts).
+            let joints = kane_reaction_joints(problem, &loop_sites);
+            let kane_unknowns = unknowns_of(&joints);
+            super::composite::system_alone(&model, &actions, &kane_unknowns, &joints)
+                .map(|system| (system, joints))
         }
         _ => None,
     };
-    if let Some(system) = composite_alone {
+    if let Some((system, reaction_joints)) = composite_alone {
         return Ok(Derivation {
             model,
             method,
@@ -274,6 +288,7 @@ fn derive_with<'p>(
             rows: Vec::new(),
             rejected: Vec::new(),
             system,
+            system_method: Method::Kane,
             composite_system: None,
             reaction_joints,
             dependent_speeds: None,
@@ -458,10 +473,19 @@ fn finish<'p>(
         rows,
         rejected,
         system,
+        system_method: method,
         composite_system,
         reaction_joints,
         dependent_speeds,
     })
+}
+
+/// The joints whose reactions are unknowns of Kane's rows: the requested tree joints, then
+/// every closure and contact (with the tree's speeds they do work).
+fn kane_reaction_joints(problem: &Problem, loop_sites: &[usize]) -> Vec<usize> {
+    let tree = problem.joints.len();
+    let requested = problem.find_reactions.iter().copied().filter(|&j| j < tree);
+    requested.chain(loop_sites.iter().copied()).collect()
 }
 
 /// A coordinate whose q'' has a zero coefficient in every one of Kane's rows (its column

@@ -86,8 +86,9 @@ pub struct Linearization {
 }
 
 /// Kane's rows without reactions, each `… = 0`: the equations of motion for the q'' alone.
-/// Kane's own derivation has them as the first rows of its system, `A x − b` with the q''
-/// its first unknowns (by composite bodies where it has those), so they are not formed twice.
+/// A derivation whose system is Kane's (its own, or standing in for another method's) has
+/// them as its first rows, `A x − b` with the q'' its first unknowns (by composite bodies
+/// where it has those), so they are not formed twice.
 fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
     let problem = derivation.model.problem;
     let n = problem.coordinates.len();
@@ -96,7 +97,9 @@ fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
         .composite_system
         .as_ref()
         .unwrap_or(&derivation.system);
-    if derivation.method == Method::Kane && system.unknowns.get(..n) == Some(&accelerations[..]) {
+    if derivation.system_method == Method::Kane
+        && system.unknowns.get(..n) == Some(&accelerations[..])
+    {
         return (0..n)
             .map(|i| {
                 let mut terms: Vec<_> = (0..n)
