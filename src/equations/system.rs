@@ -13,11 +13,6 @@ use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};
 
-/// The most dependent speeds Kane's handout writes as u_D = C u_I: beyond them C grows
-/// past what a student reads (and what the symbolic work affords), and the handout keeps
-/// the constraint forces as unknowns.
-const MAX_DEPENDENT_SPEEDS_WRITTEN: usize = 3;
-
 /// The equation-forming method.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Method {
@@ -298,16 +293,8 @@ fn derive_with<'p>(
     // constraint force is an unknown but those asked for.
     let dependent_speeds = match method {
         // A friction site's normal force must stay an unknown (its friction is μ|N|):
-        // there Kane keeps the constraint forces as unknowns. The numbers come from the
-        // augmented rows, whose compiled form stays small where u_D = C u_I written out
-        // in symbols would not (the bicycle); the handout writes the independent speeds
-        // where C stays a few terms.
-        Method::Kane
-            if form == Form::Handout
-                && !model.constraints.is_empty()
-                && model.constraints.friction.is_empty()
-                && model.constraints.dependent_rates.len() <= MAX_DEPENDENT_SPEEDS_WRITTEN =>
-        {
+        // there Kane keeps the constraint forces as unknowns.
+        Method::Kane if !model.constraints.is_empty() && model.constraints.friction.is_empty() => {
             budget::step("writing the dependent speeds u_D = C u_I (step 3)");
             DependentSpeeds::of(&model)
         }
