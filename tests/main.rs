@@ -15,7 +15,6 @@ mod friction;
 mod gears;
 mod invalid;
 mod kane_handout;
-mod kane_speeds;
 mod kinematics;
 mod library;
 mod linearize;

@@ -44,7 +44,6 @@ pub mod dot_sum;
 pub mod frames;
 pub mod friction;
 pub mod gear;
-pub mod independent;
 pub mod joints;
 pub mod massless;
 pub mod model;
