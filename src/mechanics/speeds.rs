@@ -132,8 +132,9 @@ impl Speeds {
     }
 }
 
-/// `W⁻¹`, block by block.
-fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
+/// `W⁻¹`, block by block: for a square matrix of rows `r` and columns `s`, the
+/// inverse indexed `[s][r]`.
+pub(crate) fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
     let n = w.len();
     let mut out = vec![vec![Expr::zero(); n]; n];
     for (rows, columns) in blocks(w) {
@@ -154,6 +155,15 @@ fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
         }
     }
     out
+}
+
+/// The size of the largest block [`inverse`] solves together.
+pub(crate) fn largest_block(w: &[Vec<Expr>]) -> usize {
+    blocks(w)
+        .iter()
+        .map(|(rows, _)| rows.len())
+        .max()
+        .unwrap_or(0)
 }
 
 /// The square blocks of `w`: rows and columns connected through nonzero entries.
