@@ -20,6 +20,12 @@ use crate::symbolic::{add, simplify, Expr, Symbol};
 /// written out (a long chain of contacts), and Kane's rows keep the constraint forces.
 const LARGEST_INVERSE: usize = 4_000;
 
+/// The most operations an entry of `C` may have once simplified. Past it the relation
+/// `u_D = C u_I` no longer reads as a textbook writes it (nested fractions the simplifier
+/// cannot cancel, e.g. a gear pair's `−r_A/r_B` written over `(r_A + r_B)²`), and Kane's
+/// rows keep the constraint forces instead, which reads better.
+const LONGEST_ENTRY_OF_C: usize = 30;
+
 /// The most dependent rates solved together symbolically (one block of `A_D`).
 const LARGEST_BLOCK: usize = 6;
 
@@ -89,10 +95,13 @@ impl DependentSpeeds {
             return None;
         }
         // `inverse` maps the rows' values back to the columns: [s][k].
-        let violation = super::speeds::inverse(&a_d);
-        let size: usize = violation.iter().flatten().map(Expr::operation_count).sum();
-        if size > LARGEST_INVERSE {
-            return None;
+        let violation = super::speeds::inverse_within(&a_d, Some(LARGEST_INVERSE))?;
+        let mut size = 0;
+        for entry in violation.iter().flatten() {
+            size += entry.operation_count_capped(LARGEST_INVERSE);
+            if size > LARGEST_INVERSE {
+                return None;
+            }
         }
         let map = |columns: &[usize]| -> Vec<Vec<Expr>> {
             (0..dependent.len())
@@ -118,9 +127,16 @@ impl DependentSpeeds {
                     .map(|(k, b)| &violation[s][k] * b)))
             })
             .collect();
+        let c = map(&independent);
+        if c.iter()
+            .flatten()
+            .any(|e| e.operation_count_capped(LONGEST_ENTRY_OF_C) > LONGEST_ENTRY_OF_C)
+        {
+            return None;
+        }
         Some(DependentSpeeds {
             rest,
-            c: map(&independent),
+            c,
             c_prescribed: map(&prescribed),
             independent,
             dependent,
