@@ -1,7 +1,7 @@
 //! Assembling the chosen rows into the symbolic linear system `A x = b`.
 
 use crate::mechanics::constraints::{ConstraintRow, RowOrigin};
-use crate::mechanics::independent::DependentSpeeds;
+use crate::mechanics::independent::{DependentSpeeds, KeptForces};
 use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
@@ -93,6 +93,9 @@ pub struct Derivation<'p> {
     /// one whose dependent speeds are too long to write (its rows then keep the
     /// constraint forces as unknowns).
     pub dependent_speeds: Option<DependentSpeeds>,
+    /// Kane's method on a constrained system whose rows keep the constraint forces as
+    /// unknowns: why the independent speeds are not taken alone.
+    pub kept_forces: Option<KeptForces>,
 }
 
 pub use crate::mechanics::sites::reaction_unknowns;
@@ -287,18 +290,26 @@ fn derive_with<'p>(
             composite_system: None,
             reaction_joints,
             dependent_speeds: None,
+            kept_forces: None,
         });
     }
     // With constraints, Kane's rows are formed with the independent speeds, and no
     // constraint force is an unknown but those asked for.
-    let dependent_speeds = match method {
+    let written = match method {
         // A friction site's normal force must stay an unknown (its friction is μ|N|):
         // there Kane keeps the constraint forces as unknowns.
-        Method::Kane if !model.constraints.is_empty() && model.constraints.friction.is_empty() => {
-            budget::step("writing the dependent speeds u_D = C u_I (step 3)");
-            DependentSpeeds::of(&model)
+        Method::Kane if !model.constraints.is_empty() && !model.constraints.friction.is_empty() => {
+            Err(KeptForces::Friction)
         }
-        _ => None,
+        Method::Kane if !model.constraints.is_empty() => {
+            budget::step("writing the dependent speeds u_D = C u_I (step 3)");
+            DependentSpeeds::written(&model)
+        }
+        _ => Ok(None),
+    };
+    let (dependent_speeds, kept_forces) = match written {
+        Ok(speeds) => (speeds, None),
+        Err(why) => (None, Some(why)),
     };
     if let Some(speeds) = &dependent_speeds {
         budget::step("writing Kane's equations with independent speeds (step 3)");
@@ -323,7 +334,7 @@ fn derive_with<'p>(
             (rows, vec![]),
             unknowns,
             reaction_joints,
-            dependent_speeds,
+            (dependent_speeds, None),
             form,
         );
     }
@@ -387,7 +398,7 @@ fn derive_with<'p>(
         (rows, rejected),
         unknowns,
         reaction_joints,
-        None,
+        (None, kept_forces),
         form,
     )
 }
@@ -402,7 +413,7 @@ fn finish<'p>(
     (rows, rejected): (Vec<Equation>, Vec<Rejected>),
     unknowns: Vec<Symbol>,
     reaction_joints: Vec<usize>,
-    dependent_speeds: Option<DependentSpeeds>,
+    (dependent_speeds, kept_forces): (Option<DependentSpeeds>, Option<KeptForces>),
     form: Form,
 ) -> Result<Derivation<'p>, MechanicsError> {
     let accelerations: Vec<Symbol> = model.problem.speed_symbols(2);
@@ -464,6 +475,7 @@ fn finish<'p>(
         composite_system,
         reaction_joints,
         dependent_speeds,
+        kept_forces,
     })
 }
 

@@ -29,6 +29,41 @@ const LONGEST_ENTRY_OF_C: usize = 30;
 /// The most dependent rates solved together symbolically (one block of `A_D`).
 const LARGEST_BLOCK: usize = 6;
 
+/// Why Kane's rows keep the constraint forces as unknowns instead of taking the independent
+/// speeds alone: said in the handout, since a student expects the independent speeds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KeptForces {
+    /// A contact with Coulomb friction: its normal force must be an unknown.
+    Friction,
+    /// The constraints are not linear in the rates with coefficients free of them, or do
+    /// not fix as many dependent rates as they have rows.
+    NotSolvable,
+    /// `A_D` has a block too large, or its elimination grows past what can be written.
+    LargeBlock,
+    /// An entry of `C` would not read as a textbook writes it.
+    LongRelation,
+}
+
+impl KeptForces {
+    /// The reason, in words that end a sentence.
+    pub fn reason(self) -> &'static str {
+        match self {
+            KeptForces::Friction => {
+                "a contact has Coulomb friction, whose force $\\mu |N|$ needs the normal force $N$ as an unknown"
+            }
+            KeptForces::NotSolvable => {
+                "the velocity constraints do not give the dependent rates as a linear map of the others"
+            }
+            KeptForces::LargeBlock => {
+                "the dependent rates are coupled in a block too large to solve for in symbols that a reader could follow"
+            }
+            KeptForces::LongRelation => {
+                "solved in symbols, the dependent rates would be fractions within fractions, longer than the rows they would save"
+            }
+        }
+    }
+}
+
 /// The dependent speeds of a constrained model as linear maps of the independent ones.
 #[derive(Clone, Debug)]
 pub struct DependentSpeeds {
@@ -58,6 +93,15 @@ impl DependentSpeeds {
     /// the constraints do not determine as many dependent rates as they have rows, or when
     /// the map would be too long to write (then Kane's method keeps the constraint forces).
     pub fn of(model: &Model) -> Option<DependentSpeeds> {
+        Self::written(model).ok().flatten()
+    }
+
+    /// As [`Self::of`]: `Ok(None)` when there are no velocity constraints to solve, the
+    /// reason the constraint forces stay when the map is not written.
+    ///
+    /// # Errors
+    /// [`KeptForces`]: why the dependent speeds are not written.
+    pub fn written(model: &Model) -> Result<Option<DependentSpeeds>, KeptForces> {
         let problem = model.problem;
         let constraints = &model.constraints;
         let n = problem.coordinates.len();
@@ -67,8 +111,11 @@ impl DependentSpeeds {
             .collect();
         let dependent = constraints.dependent_rates.clone();
         let prescribed = constraints.prescribed.clone();
-        if (rows.is_empty() && prescribed.is_empty()) || dependent.len() != rows.len() {
-            return None;
+        if rows.is_empty() && prescribed.is_empty() {
+            return Ok(None);
+        }
+        if dependent.len() != rows.len() {
+            return Err(KeptForces::NotSolvable);
         }
         let independent: Vec<usize> = (0..n)
             .filter(|i| !dependent.contains(i) && !prescribed.contains(i))
@@ -76,12 +123,13 @@ impl DependentSpeeds {
         let mut a: Vec<Vec<Expr>> = Vec::with_capacity(rows.len());
         let mut beta: Vec<Expr> = Vec::with_capacity(rows.len());
         for &k in &rows {
-            let (coefficients, rest) = linear_split(&constraints.rows[k].velocity, &rates).ok()?;
+            let (coefficients, rest) = linear_split(&constraints.rows[k].velocity, &rates)
+                .map_err(|_| KeptForces::NotSolvable)?;
             if coefficients
                 .iter()
                 .any(|c| rates.iter().any(|r| c.contains(r)))
             {
-                return None;
+                return Err(KeptForces::NotSolvable);
             }
             a.push(coefficients.iter().map(simplify).collect());
             beta.push(rest);
@@ -92,15 +140,16 @@ impl DependentSpeeds {
             .map(|row| dependent.iter().map(|&s| row[s].clone()).collect())
             .collect();
         if super::speeds::largest_block(&a_d) > LARGEST_BLOCK {
-            return None;
+            return Err(KeptForces::LargeBlock);
         }
         // `inverse` maps the rows' values back to the columns: [s][k].
-        let violation = super::speeds::inverse_within(&a_d, Some(LARGEST_INVERSE))?;
+        let violation = super::speeds::inverse_within(&a_d, Some(LARGEST_INVERSE))
+            .ok_or(KeptForces::LargeBlock)?;
         let mut size = 0;
         for entry in violation.iter().flatten() {
             size += entry.operation_count_capped(LARGEST_INVERSE);
             if size > LARGEST_INVERSE {
-                return None;
+                return Err(KeptForces::LargeBlock);
             }
         }
         let map = |columns: &[usize]| -> Vec<Vec<Expr>> {
@@ -132,9 +181,9 @@ impl DependentSpeeds {
             .flatten()
             .any(|e| e.operation_count_capped(LONGEST_ENTRY_OF_C) > LONGEST_ENTRY_OF_C)
         {
-            return None;
+            return Err(KeptForces::LongRelation);
         }
-        Some(DependentSpeeds {
+        Ok(Some(DependentSpeeds {
             rest,
             c,
             c_prescribed: map(&prescribed),
@@ -143,7 +192,7 @@ impl DependentSpeeds {
             prescribed,
             rows,
             violation,
-        })
+        }))
     }
 
     /// The weights of the coordinates' rates in the motion of independent speed `r`

@@ -220,6 +220,16 @@ pub fn dependent_speeds(
         relations_tex,
         kane_tex,
         reduced_tex: reduced,
+        kane_kept_note: derivation
+            .kept_forces
+            .map(|why| {
+                format!(
+                    "Kane's rows here keep the forces that enforce the constraints as unknowns, \
+                     rather than take the independent speeds alone: {}.",
+                    why.reason()
+                )
+            })
+            .unwrap_or_default(),
         ..DependentSpeeds::default()
     })
 }

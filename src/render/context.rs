@@ -409,6 +409,8 @@ pub struct DependentSpeeds {
     /// After the rows: which forces dropped out and why, the auxiliary speeds, and the
     /// order of the solve, in markup.
     pub kane_solve_notes: Vec<String>,
+    /// Kane's rows with the constraint forces kept: why, in markup (empty otherwise).
+    pub kane_kept_note: String,
 }
 
 /// The equations as `A x = b`.

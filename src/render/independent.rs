@@ -174,6 +174,7 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
         reduced_tex: Vec::new(),
         kane_speeds_notes: paragraphs,
         kane_solve_notes: after_rows(derivation, speeds),
+        kane_kept_note: String::new(),
     }
 }
 
