@@ -4,6 +4,7 @@
 use mbd_tutor::equations::{derive, Method};
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::numeric::simulate::simulate;
+use mbd_tutor::numeric::system::System;
 use mbd_tutor::problem::load_file;
 
 /// A seeded generator, so that a failure names a state that can be replayed.
@@ -61,6 +62,12 @@ fn the_three_methods_agree_at_random_states_of_every_bundled_problem() {
                 .map(|c| c.rate + random.next())
                 .collect();
             let t = 0.5 * (random.next() + 1.0);
+            let (mut q, mut rates) = (q, rates);
+            // Kane's rows with independent speeds hold only where the constraints do: the
+            // methods are compared on the constraint manifold.
+            if compiled[0].assemble(t, &mut q, &mut rates).is_err() {
+                continue;
+            }
             let Ok(first) = compiled[0].solve(t, &q, &rates) else {
                 continue;
             };

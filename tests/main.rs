@@ -15,6 +15,7 @@ mod friction;
 mod gears;
 mod invalid;
 mod kane_handout;
+mod kane_speeds;
 mod kinematics;
 mod library;
 mod linearize;

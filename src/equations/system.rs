@@ -1,6 +1,7 @@
 //! Assembling the chosen rows into the symbolic linear system `A x = b`.
 
 use crate::mechanics::constraints::{ConstraintRow, RowOrigin};
+use crate::mechanics::independent::{DependentSpeeds, KeptForces};
 use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
@@ -87,6 +88,14 @@ pub struct Derivation<'p> {
     pub composite_system: Option<LinearSystem>,
     /// Joints whose reactions are unknowns of the system.
     pub reaction_joints: Vec<usize>,
+    /// Kane's method on a constrained system: the independent speeds and `u_D = C u_I`
+    /// its rows are formed with. `None` for the other methods, an unconstrained system, or
+    /// one whose dependent speeds are too long to write (its rows then keep the
+    /// constraint forces as unknowns).
+    pub dependent_speeds: Option<DependentSpeeds>,
+    /// Kane's method on a constrained system whose rows keep the constraint forces as
+    /// unknowns: why the independent speeds are not taken alone.
+    pub kept_forces: Option<KeptForces>,
 }
 
 pub use crate::mechanics::sites::reaction_unknowns;
@@ -280,7 +289,54 @@ fn derive_with<'p>(
             system_method: Method::Kane,
             composite_system: None,
             reaction_joints,
+            dependent_speeds: None,
+            kept_forces: None,
         });
+    }
+    // With constraints, Kane's rows are formed with the independent speeds, and no
+    // constraint force is an unknown but those asked for.
+    let written = match method {
+        // A friction site's normal force must stay an unknown (its friction is μ|N|):
+        // there Kane keeps the constraint forces as unknowns.
+        Method::Kane if !model.constraints.is_empty() && !model.constraints.friction.is_empty() => {
+            Err(KeptForces::Friction)
+        }
+        Method::Kane if !model.constraints.is_empty() => {
+            budget::step("writing the dependent speeds u_D = C u_I (step 3)");
+            DependentSpeeds::written(&model)
+        }
+        _ => Ok(None),
+    };
+    let (dependent_speeds, kept_forces) = match written {
+        Ok(speeds) => (speeds, None),
+        Err(why) => (None, Some(why)),
+    };
+    if let Some(speeds) = &dependent_speeds {
+        budget::step("writing Kane's equations with independent speeds (step 3)");
+        reaction_joints = problem.find_reactions.clone();
+        let kept: Vec<Symbol> = Vec::new();
+        unknowns =
+            super::kane::constrained::unknowns(&model, &accelerations, &reaction_joints, &kept);
+        let request = super::kane::constrained::Request {
+            speeds,
+            reactions: &reaction_joints,
+            kept: &kept,
+            unknowns: &unknowns,
+        };
+        let rows = super::kane::constrained::equations(&model, &actions, &inertia, &request);
+        let given = constraint_equations(model.constraints.rows.iter(), &unknowns)?;
+        let rows: Vec<Equation> = rows.into_iter().chain(given).collect();
+        return finish(
+            model,
+            method,
+            actions,
+            inertia,
+            (rows, vec![]),
+            unknowns,
+            reaction_joints,
+            (dependent_speeds, None),
+            form,
+        );
     }
     let (rows, rejected) = match method {
         Method::NewtonEuler => (
@@ -334,6 +390,33 @@ fn derive_with<'p>(
         Method::MotionLaw => rows,
         _ => rows.into_iter().chain(given).collect(),
     };
+    finish(
+        model,
+        method,
+        actions,
+        inertia,
+        (rows, rejected),
+        unknowns,
+        reaction_joints,
+        (None, kept_forces),
+        form,
+    )
+}
+
+/// The rows checked against the unknowns and assembled into the system.
+#[allow(clippy::too_many_arguments)]
+fn finish<'p>(
+    model: Model<'p>,
+    method: Method,
+    actions: Vec<Action>,
+    inertia: Inertia,
+    (rows, rejected): (Vec<Equation>, Vec<Rejected>),
+    unknowns: Vec<Symbol>,
+    reaction_joints: Vec<usize>,
+    (dependent_speeds, kept_forces): (Option<DependentSpeeds>, Option<KeptForces>),
+    form: Form,
+) -> Result<Derivation<'p>, MechanicsError> {
+    let accelerations: Vec<Symbol> = model.problem.speed_symbols(2);
     // Loads that use rates (dampers) are written with the speeds too.
     let rows = match &model.speeds {
         Some(speeds) => rows
@@ -391,6 +474,8 @@ fn derive_with<'p>(
         system_method: method,
         composite_system,
         reaction_joints,
+        dependent_speeds,
+        kept_forces,
     })
 }
 

@@ -44,6 +44,7 @@ pub mod dot_sum;
 pub mod frames;
 pub mod friction;
 pub mod gear;
+pub mod independent;
 pub mod joints;
 pub mod massless;
 pub mod model;

@@ -132,8 +132,16 @@ impl Speeds {
     }
 }
 
-/// `W⁻¹`, block by block.
-fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
+/// `W⁻¹`, block by block: for a square matrix of rows `r` and columns `s`, the
+/// inverse indexed `[s][r]`.
+pub(crate) fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
+    inverse_within(w, None).unwrap_or_default()
+}
+
+/// As [`inverse`], or `None` once an entry formed on the way has more than `largest`
+/// operations: the elimination of a large block of trigonometric entries grows without
+/// bound, and is given up early rather than simplified for minutes.
+pub(crate) fn inverse_within(w: &[Vec<Expr>], largest: Option<usize>) -> Option<Vec<Vec<Expr>>> {
     let n = w.len();
     let mut out = vec![vec![Expr::zero(); n]; n];
     for (rows, columns) in blocks(w) {
@@ -144,7 +152,7 @@ fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
         let inv = if block.len() <= 3 {
             adjugate_inverse(&block)
         } else {
-            eliminate(&block)
+            eliminate(&block, largest)?
         };
         // W⁻¹ maps speeds (rows of W) to rates (columns of W).
         for (i, &s) in columns.iter().enumerate() {
@@ -153,7 +161,16 @@ fn inverse(w: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
             }
         }
     }
-    out
+    Some(out)
+}
+
+/// The size of the largest block [`inverse`] solves together.
+pub(crate) fn largest_block(w: &[Vec<Expr>]) -> usize {
+    blocks(w)
+        .iter()
+        .map(|(rows, _)| rows.len())
+        .max()
+        .unwrap_or(0)
 }
 
 /// The square blocks of `w`: rows and columns connected through nonzero entries.
@@ -234,7 +251,9 @@ fn adjugate_inverse(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
 }
 
 /// The inverse by Gauss–Jordan elimination, preferring numeric pivots, then short ones.
-fn eliminate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
+/// `None` once an entry passes `largest` operations.
+fn eliminate(m: &[Vec<Expr>], largest: Option<usize>) -> Option<Vec<Vec<Expr>>> {
+    let too_long = |e: &Expr| largest.is_some_and(|cap| e.operation_count_capped(cap) > cap);
     let n = m.len();
     let mut a: Vec<Vec<Expr>> = m.to_vec();
     let mut inv: Vec<Vec<Expr>> = (0..n)
@@ -264,8 +283,11 @@ fn eliminate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
             for j in 0..n {
                 a[r][j] = simplify(&(&a[r][j] - &(&factor * &a[col][j])));
                 inv[r][j] = simplify(&(&inv[r][j] - &(&factor * &inv[col][j])));
+                if too_long(&a[r][j]) || too_long(&inv[r][j]) {
+                    return None;
+                }
             }
         }
     }
-    inv
+    Some(inv)
 }

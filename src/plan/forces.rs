@@ -409,6 +409,18 @@ fn joint_load(
 
 /// The generalized force that joint loads put directly on each coordinate (for Kane's method).
 pub fn joint_load_generalized_forces(model: &Model) -> Vec<Expr> {
+    let mut q = load_generalized_forces(model);
+    for (coordinates, values) in constraint_generalized_forces(model) {
+        for (c, value) in coordinates.into_iter().zip(values) {
+            q[c] = &q[c] + &value;
+        }
+    }
+    q
+}
+
+/// The generalized forces of the joint loads alone (springs, dampers, actuators on the
+/// joints' coordinates), one per coordinate: without what enforces the constraints.
+pub fn load_generalized_forces(model: &Model) -> Vec<Expr> {
     let problem = model.problem;
     let mut q = vec![Expr::zero(); problem.coordinates.len()];
     for load in &problem.loads {
@@ -416,11 +428,6 @@ pub fn joint_load_generalized_forces(model: &Model) -> Vec<Expr> {
             continue;
         };
         q[c] = &q[c] + &value;
-    }
-    for (coordinates, values) in constraint_generalized_forces(model) {
-        for (c, value) in coordinates.into_iter().zip(values) {
-            q[c] = &q[c] + &value;
-        }
     }
     q
 }

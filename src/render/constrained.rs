@@ -127,6 +127,9 @@ pub fn dependent_speeds(
     q: &[f64],
     rates: &[f64],
 ) -> Option<DependentSpeeds> {
+    if let Some(speeds) = &derivation.dependent_speeds {
+        return Some(super::independent::dependent_speeds(derivation, speeds));
+    }
     let model = &derivation.model;
     let problem = model.problem;
     let reducer = crate::numeric::reduce::Reducer::new(model);
@@ -217,6 +220,17 @@ pub fn dependent_speeds(
         relations_tex,
         kane_tex,
         reduced_tex: reduced,
+        kane_kept_note: derivation
+            .kept_forces
+            .map(|why| {
+                format!(
+                    "Kane's rows here keep the forces that enforce the constraints as unknowns, \
+                     rather than take the independent speeds alone: {}.",
+                    why.reason()
+                )
+            })
+            .unwrap_or_default(),
+        ..DependentSpeeds::default()
     })
 }
 

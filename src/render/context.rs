@@ -403,6 +403,14 @@ pub struct DependentSpeeds {
     /// The reduced partial velocities of the mass centres at the initial state, one per
     /// body and independent speed, in `N`'s unit vectors.
     pub reduced_tex: Vec<String>,
+    /// Kane's method with independent speeds (empty otherwise): what the speeds are and
+    /// why, before `relation_tex`, in markup.
+    pub kane_speeds_notes: Vec<String>,
+    /// After the rows: which forces dropped out and why, the auxiliary speeds, and the
+    /// order of the solve, in markup.
+    pub kane_solve_notes: Vec<String>,
+    /// Kane's rows with the constraint forces kept: why, in markup (empty otherwise).
+    pub kane_kept_note: String,
 }
 
 /// The equations as `A x = b`.

@@ -38,6 +38,9 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     if derivation.method != Method::Kane {
         return Vec::new();
     }
+    if let Some(speeds) = &derivation.dependent_speeds {
+        return super::independent::partial_velocities(derivation, speeds);
+    }
     let model = &derivation.model;
     let problem = model.problem;
     let rates: Vec<Symbol> = problem.speed_symbols(1);
@@ -85,6 +88,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
+            let particle = super::independent::is_particle(derivation, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
@@ -97,10 +101,15 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
                     "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}}_{{{}}} = {v_tex}",
                     r + 1
                 ),
-                omega_tex: format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}}_{{{}}} = {w_tex}",
-                    r + 1
-                ),
+                // A particle has no inertia torque: its partial angular velocity does nothing.
+                omega_tex: if particle {
+                    String::new()
+                } else {
+                    format!(
+                        "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}}_{{{}}} = {w_tex}",
+                        r + 1
+                    )
+                },
             });
         }
     }

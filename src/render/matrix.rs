@@ -79,7 +79,11 @@ pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
                 .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
                 .position(|x| x.sum == *sum)
                 .map_or("r".to_string(), |i| (i + 1).to_string());
-            format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
+            if derivation.dependent_speeds.is_some() {
+                format!("\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}")
+            } else {
+                format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
+            }
         }
         Sum::Constraint { name } => {
             super::constrained::constraint_what_tex(&derivation.model, name)

@@ -18,6 +18,7 @@ pub mod eigen_plot;
 pub mod escape;
 mod free_bodies;
 mod friction;
+mod independent;
 pub mod kane;
 mod kinematics;
 mod line_break;

@@ -80,7 +80,9 @@ fn string(text: &str, key: &str, format: Format) -> String {
     match key {
         "statement" => return markup::render_blocks(text, format),
         "question" => return markup::render_line(text, format),
-        "constraint_notes" => return markup::render_line(text, format),
+        "constraint_notes" | "kane_speeds_notes" | "kane_solve_notes" | "kane_kept_note" => {
+            return markup::render_line(text, format)
+        }
         // A description is the problem's own text, in the markup of its statement.
         "description" => return markup::render_line(text, format),
         _ => {}

@@ -70,11 +70,22 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         grouped = "0".into();
     }
     let mut grouped_tex = format!("{grouped} = 0");
-    let mut simplified_tex = format!(
-        "{} = 0",
-        latex_collected(&shown(&simplify(&row.expression)))
-    );
+    let mut simplified = shown(&simplify(&row.expression));
     let mut simplified_note = String::new();
+    if derivation.dependent_speeds.is_some() && matches!(row.sum, Sum::Generalized { .. }) {
+        // F̃*_r is minus the mass matrix times q̈: written with the signs changed, the
+        // equation reads M q̈ = …, with the mass matrix positive.
+        let negated = -simplified.clone();
+        if latex_collected(&simplified).starts_with('-')
+            && !latex_collected(&negated).starts_with('-')
+        {
+            simplified = negated;
+            simplified_note =
+                "Their sum, simplified, and its signs changed so that the mass matrix is positive:"
+                    .into();
+        }
+    }
+    let mut simplified_tex = format!("{} = 0", latex_collected(&simplified));
     let mut by_name = false;
     let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
     if simplified_tex.len() > LONG_EQUATION {
@@ -104,7 +115,36 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         (active_tex, inertia_tex) =
             super::kane::generalized_forces(&row.groups, r, !by_name, shown);
         grouped_tex = String::new();
-        (label_tex, label) = if r <= problem.coordinates.len() {
+        let independent = derivation.dependent_speeds.as_ref();
+        if independent.is_some() {
+            // Formed with the constrained partial velocities: F̃_r and F̃*_r.
+            let tilde = |t: String| {
+                t.replacen("F_{", "\\tilde{F}_{", 1)
+                    .replacen("F^{*}_{", "\\tilde{F}^{*}_{", 1)
+            };
+            (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
+        }
+        (label_tex, label) = if let Some(speeds) = independent.filter(|s| r <= s.independent.len())
+        {
+            (
+                format!(
+                    "r = {r}\\colon\\; {}",
+                    super::independent::speed_tex(derivation, speeds, r - 1)
+                ),
+                "(an independent speed)".to_string(),
+            )
+        } else if independent.is_some() {
+            let forces: Vec<Symbol> = row
+                .unknowns
+                .iter()
+                .filter(|u| matches!(u, Symbol::Unknown(_)))
+                .cloned()
+                .collect();
+            (
+                format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
+                "(an auxiliary speed along the force asked for: it relaxes the one constraint that force enforces, and brings in that force alone)".to_string(),
+            )
+        } else if r <= problem.coordinates.len() {
             (
                 format!(
                     "r = {r}\\colon\\; {}",

@@ -390,6 +390,44 @@ impl Expr {
         }
     }
 
+    /// As [`Self::operation_count`], but the count stops once past `cap`: a subexpression
+    /// shared in many places is counted at each, so the whole count of a large shared tree
+    /// can take exponential time where the question is only "more than `cap`?".
+    pub fn operation_count_capped(&self, cap: usize) -> usize {
+        fn walk(e: &Expr, count: &mut usize, cap: usize) {
+            let children: &[Expr] = match e.node() {
+                Node::Num(_) | Node::Sym(_) => return,
+                Node::Add(items) | Node::Mul(items) => {
+                    *count += items.len() - 1;
+                    items
+                }
+                Node::Pow(b, x) => {
+                    *count += 1;
+                    for child in [b, x] {
+                        if *count > cap {
+                            return;
+                        }
+                        walk(child, count, cap);
+                    }
+                    return;
+                }
+                Node::Func(_, args) => {
+                    *count += 1;
+                    args
+                }
+            };
+            for child in children {
+                if *count > cap {
+                    return;
+                }
+                walk(child, count, cap);
+            }
+        }
+        let mut count = 0;
+        walk(self, &mut count, cap);
+        count.min(cap.saturating_add(1))
+    }
+
     /// The rank of a product among node kinds (see `rank`).
     pub(crate) const MUL_RANK: u8 = 4;
 

@@ -6,9 +6,12 @@ use crate::mechanics::joints::ComponentKind;
 use crate::mechanics::vector::Components;
 use crate::mechanics::{Form, Model, Vector};
 use crate::plan::forces::{
-    is_joint_load, joint_load_generalized_forces, Action, ActionKind, Category, Source,
+    is_joint_load, joint_load_generalized_forces, load_generalized_forces, Action, ActionKind,
+    Category, Source,
 };
 use crate::plan::rows::{is_external, Equation, Groups, Inertia, Sum};
+
+pub mod constrained;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{add, Expr, Symbol};
 
@@ -64,7 +67,8 @@ fn own_partials(
     vectors.iter().enumerate().map(body).collect()
 }
 
-/// Kane's rows, one per coordinate, and one per requested reaction component.
+/// Kane's rows, one per coordinate, and one per requested reaction component (the
+/// augmented form: with constraints, their forces are unknowns of every row).
 pub fn equations(
     model: &Model,
     actions: &[Action],
@@ -72,6 +76,57 @@ pub fn equations(
     unknowns: &[Symbol],
     reaction_joints: &[usize],
 ) -> Vec<Equation> {
+    let groups = generalized_groups(model, actions, inertia, Workless::TreeReactions);
+    let rates: Vec<Symbol> = model.problem.speed_symbols(1);
+    let mut rows: Vec<Equation> = groups
+        .into_iter()
+        .zip(&rates)
+        .map(|(groups, rate)| generalized_row(model, rate.to_string(), groups, unknowns))
+        .collect();
+    for &j in reaction_joints {
+        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, j));
+    }
+    rows
+}
+
+/// Kane's row of `groups` for the speed named `speed`: every body in it.
+pub(crate) fn generalized_row(
+    model: &Model,
+    speed: String,
+    groups: Groups,
+    unknowns: &[Symbol],
+) -> Equation {
+    let expression = groups.total();
+    Equation {
+        free_body: model.order.clone(),
+        sum: Sum::Generalized { speed },
+        direction: None,
+        unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
+        groups,
+        expression,
+    }
+}
+
+/// Which forces do no work with the speeds the rows are formed for, and are left out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Workless {
+    /// The reactions of the tree's joints: with the coordinates' rates as speeds, the
+    /// reactions at closures and contacts, and what enforces the other constraints, do work.
+    TreeReactions,
+    /// Every reaction and every force that enforces a constraint: with the independent
+    /// speeds, they do none (Kane & Levinson, ch. 4). The rows are then combined by the
+    /// dependent speeds before any is used.
+    EveryConstraintForce,
+}
+
+/// The generalized active and inertia forces of every speed, `F_r` and `F_r^*` in groups,
+/// without the forces `workless` names.
+pub(crate) fn generalized_groups(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    workless: Workless,
+) -> Vec<Groups> {
     let problem = model.problem;
     let frames = &model.frames;
     let rates: Vec<Symbol> = problem.speed_symbols(1);
@@ -91,18 +146,25 @@ pub fn equations(
         center_own: own_partials(&inertia.acceleration, &accelerations, own),
         omega_own: own_partials(&inertia.alpha, &accelerations, own),
     };
-    let generalized_joint_loads = speeds_forces(model, joint_load_generalized_forces(model));
+    let joint_loads = match workless {
+        Workless::TreeReactions => joint_load_generalized_forces(model),
+        Workless::EveryConstraintForce => load_generalized_forces(model),
+    };
+    let generalized_joint_loads = speeds_forces(model, joint_loads);
     let all_bodies: Vec<_> = model.order.clone();
-    let mut rows = Vec::new();
-    for (r, rate) in rates.iter().enumerate() {
+    let mut out = Vec::with_capacity(rates.len());
+    for (r, joint_load) in generalized_joint_loads.iter().enumerate() {
         let velocity_of = |body: crate::problem::BodyId, offset: &Components| -> Vector {
             let w = &partial.omega[body.0][r];
             partial.origin[body.0][r].plus(&w.cross(&Vector::new(body, offset.clone()), frames))
         };
-        let (mut contact, mut distance) = (vec![generalized_joint_loads[r].clone()], Vec::new());
+        let (mut contact, mut distance) = (vec![joint_load.clone()], Vec::new());
         for action in actions {
-            let workless =
-                matches!(action.source, Source::Reaction(j) if j < model.problem.joints.len());
+            let workless = match (workless, action.source) {
+                (Workless::TreeReactions, Source::Reaction(j)) => j < problem.joints.len(),
+                (Workless::EveryConstraintForce, Source::Reaction(_)) => true,
+                _ => false,
+            };
             if workless || is_joint_load(model, action) {
                 // Reactions at the tree's joints do no work with these speeds; joint loads
                 // (and what enforces a constraint row without a site) are taken above.
@@ -144,28 +206,14 @@ pub fn equations(
                     .push(inertia.torque[body.0].dot(&partial.omega_own[body.0][r], frames));
             }
         }
-        let groups = Groups {
+        out.push(Groups {
             contact: add(contact),
             distance: add(distance),
             inertia_force: inertia_force.total(),
             inertia_torque: add(inertia_torque),
-        };
-        let expression = groups.total();
-        rows.push(Equation {
-            free_body: all_bodies.clone(),
-            sum: Sum::Generalized {
-                speed: rate.to_string(),
-            },
-            direction: None,
-            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
-            groups,
-            expression,
         });
     }
-    for &j in reaction_joints {
-        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, j));
-    }
-    rows
+    out
 }
 
 /// Generalized forces on the coordinates as generalized forces of the speeds: with declared
@@ -184,7 +232,7 @@ fn speeds_forces(model: &Model, q: Vec<Expr>) -> Vec<Expr> {
 
 /// Rows for an auxiliary speed along each reaction component of joint `j`: the subtree
 /// outboard of the joint moves rigidly along (or about) the component's direction.
-fn auxiliary_rows(
+pub(crate) fn auxiliary_rows(
     model: &Model,
     actions: &[Action],
     inertia: &Inertia,

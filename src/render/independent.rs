@@ -1,0 +1,217 @@
+//! Kane's method with independent speeds as the handout teaches it (step 5): which speeds
+//! are independent and why, `u_D = C u_I` in symbols, the constrained partial velocities
+//! `ṽ_r = v_r + Σ_s C_sr v_s`, which forces drop out and why, the auxiliary speeds of the
+//! requested reactions and drives, and the order in which the system is solved.
+
+use super::context::{DependentSpeeds, PartialVelocity};
+use crate::equations::kane::partials;
+use crate::equations::Derivation;
+use crate::mechanics::independent::DependentSpeeds as Speeds;
+use crate::mechanics::Vector;
+use crate::symbolic::collect::latex_collected;
+use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::roots::roots_of_squares;
+use crate::symbolic::{simplify, Expr, Symbol};
+
+/// `u_k = \dot{q}` of independent speed `r` (0-based).
+pub fn speed_tex(derivation: &Derivation, speeds: &Speeds, r: usize) -> String {
+    let rate = latex(
+        &derivation
+            .model
+            .problem
+            .coordinate_expr(speeds.independent[r], 1),
+    );
+    format!("u_{{{}}} = {rate}", r + 1)
+}
+
+/// Whether a body is a particle: no central moment of inertia, so no inertia torque and
+/// no partial angular velocity worth printing.
+pub fn is_particle(derivation: &Derivation, body: crate::problem::BodyId) -> bool {
+    derivation.model.bodies[body.0]
+        .inertia
+        .iter()
+        .flatten()
+        .all(Expr::is_zero)
+}
+
+/// The constrained partial velocities and partial angular velocities of every body, one
+/// line per body and independent speed.
+pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<PartialVelocity> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let n = problem.coordinates.len();
+    let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
+    let sign = super::derived::initial_sign(model);
+    let combined = |list: &[Vector], weights: &[Expr]| -> Vector {
+        Vector::sum(
+            list.iter()
+                .zip(weights)
+                .filter(|(_, w)| !w.is_zero())
+                .map(|(v, w)| v.scaled(w)),
+        )
+        .map(|e| roots_of_squares(&simplify(e), &sign))
+    };
+    let per_body: Vec<_> = model
+        .order
+        .iter()
+        .map(|&body| {
+            let state = &model.bodies[body.0];
+            (
+                body,
+                partials(&state.center.velocity, &rates),
+                partials(&state.omega, &rates),
+            )
+        })
+        .collect();
+    let zero = "\\mathbf{0}";
+    let mut out = Vec::new();
+    for r in 0..speeds.independent.len() {
+        let weights = speeds.independent_weights(r, n);
+        let mut first = true;
+        for (body, v, w) in &per_body {
+            let v_tex = super::derived::shortest_tex(model, &combined(v, &weights), *body);
+            let particle = is_particle(derivation, *body);
+            let w_tex = if particle {
+                zero.to_string()
+            } else {
+                super::derived::shortest_tex(model, &combined(w, &weights), *body)
+            };
+            if v_tex == zero && w_tex == zero {
+                continue;
+            }
+            let symbol = latex_name(problem.body_name(*body));
+            out.push(PartialVelocity {
+                r: r + 1,
+                speed_tex: if std::mem::take(&mut first) {
+                    speed_tex(derivation, speeds, r)
+                } else {
+                    String::new()
+                },
+                body: problem.body_name(*body).to_string(),
+                velocity_tex: format!(
+                    "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{symbol}^*}}_{{{}}} = {v_tex}",
+                    r + 1
+                ),
+                omega_tex: if particle {
+                    String::new()
+                } else {
+                    format!(
+                        "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{}}} = {w_tex}",
+                        r + 1
+                    )
+                },
+            });
+        }
+    }
+    out
+}
+
+/// `u_D = C u_I` in symbols, Kane's equations with these speeds, and the paragraphs that
+/// say what was chosen, what drops out, and how the system is solved.
+pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSpeeds {
+    let problem = derivation.model.problem;
+    let sign = super::derived::initial_sign(&derivation.model);
+    let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
+    let rates = |list: &[usize]| list.iter().map(|&i| rate(i)).collect::<Vec<_>>();
+    let listed = |list: &[usize]| {
+        let all: Vec<String> = rates(list).iter().map(|r| format!("${r}$")).collect();
+        words(&all)
+    };
+    let relations_tex: Vec<String> =
+        speeds
+            .dependent
+            .iter()
+            .enumerate()
+            .map(|(s, &d)| {
+                let terms =
+                    speeds
+                        .independent
+                        .iter()
+                        .enumerate()
+                        .map(|(r, &i)| &speeds.c[s][r] * &problem.coordinate_expr(i, 1))
+                        .chain(speeds.prescribed.iter().enumerate().map(|(p, &i)| {
+                            &speeds.c_prescribed[s][p] * &problem.coordinate_expr(i, 1)
+                        }))
+                        .chain(std::iter::once(speeds.rest[s].clone()));
+                let sum = roots_of_squares(&simplify(&crate::symbolic::add(terms)), &sign);
+                format!("{} = {}", rate(d), latex_collected(&sum))
+            })
+            .collect();
+    let relation_tex = format!(
+        "\\begin{{aligned}} {} \\end{{aligned}}",
+        relations_tex
+            .iter()
+            .map(|r| r.replacen(" = ", " &= ", 1))
+            .collect::<Vec<_>>()
+            .join(" \\\\ ")
+    );
+    let independent = rates(&speeds.independent);
+    let mut paragraphs = vec![format!(
+        "The constraints fix the rates {} once the others are known, so Kane's method takes as generalized speeds only the rates that stay free, the independent speeds {}{}. The velocity constraints, solved for the dependent rates, give $\\dot{{q}}_D = C\\,\\dot{{q}}_I$:",
+        listed(&speeds.dependent),
+        listed(&speeds.independent),
+        if speeds.prescribed.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " (the rate of {} is prescribed, not a speed)",
+                listed(&speeds.prescribed)
+            )
+        }
+    )];
+    paragraphs.push(
+        "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints:".to_string(),
+    );
+    let kane_tex = format!(
+        "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0, \\quad \\tilde{{F}}_r = \\sum_{{P}} \\tilde{{\\mathbf{{v}}}}^{{P}}_r \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\tilde{{\\boldsymbol{{\\omega}}}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}} = F_r + \\sum_s C_{{sr}} F_s \\quad (r = {})",
+        independent.join(", ")
+    );
+    DependentSpeeds {
+        relation_tex,
+        relations_tex,
+        kane_tex,
+        reduced_tex: Vec::new(),
+        kane_speeds_notes: paragraphs,
+        kane_solve_notes: after_rows(derivation, speeds),
+        kane_kept_note: String::new(),
+    }
+}
+
+/// What drops out and why, the auxiliary speeds, and the order of the solve.
+fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let mut out = vec![
+        "The reactions of the joints, closures and contacts, and whatever enforces the other constraints, drop out of these equations: where such a force acts, the two bodies it joins move alike along it in every constrained motion, so $\\tilde{\\mathbf{v}}_r$ of its point relative to the other body has no component along it, and it does no work. No constraint force is an unknown unless it is asked for.".to_string(),
+    ];
+    let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
+    if asked {
+        out.push("A force that is asked for is brought in by an auxiliary speed along it (Kane and Levinson, ch. 5): the constraint that force enforces is relaxed by a speed $u$ along it, so that the augmented velocity of each body is its velocity plus $u$ times a partial velocity that moves the body along the force (the dependent rates still keep every other constraint). The partial velocities of the auxiliary speed are those; only that force does work with them, and the row is written with the accelerations taken at $u = 0$, so the motion is the one above. A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.".to_string());
+    }
+    let n = problem.coordinates.len();
+    let constraint_rows = model.constraints.rows.len();
+    let mut solve = format!(
+        "Solving: the {} equations of the independent speeds and the {} differentiated constraints are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
+        speeds.independent.len(),
+        constraint_rows,
+        speeds.independent.len() + constraint_rows,
+        n
+    );
+    if asked {
+        solve.push_str("; then each force asked for from its own auxiliary row, with the $\\ddot{q}$ known, one unknown per row.");
+    } else {
+        solve.push('.');
+    }
+    out.push(solve);
+    out
+}
+
+/// `a`, `a and b`, `a, b and c`.
+fn words(list: &[String]) -> String {
+    match list {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    }
+}

@@ -1,0 +1,370 @@
+//! Kane's method with independent speeds: for every constrained bundled problem, one row
+//! per independent speed (and per drive, and per requested reaction component), no
+//! constraint force among the unknowns unless asked for, and the q'' of Newton–Euler; the
+//! rolling coin's three equations against a derivation by hand.
+
+use mbd_tutor::equations::rows::Sum;
+use mbd_tutor::equations::{derive, Derivation, Method};
+use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::system::System;
+use mbd_tutor::problem::{load_file, Problem};
+use mbd_tutor::symbolic::eval::eval;
+use mbd_tutor::symbolic::Symbol;
+
+/// A seeded generator, so that a failure names a state that can be replayed.
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    }
+}
+
+/// Whether a problem has a contact with Coulomb friction: there the normal force must be an
+/// unknown (the friction is μ|N|), and Kane's rows keep the contact's forces.
+fn has_friction(problem: &Problem) -> bool {
+    problem.constraints.iter().any(|c| c.friction.is_some())
+}
+
+/// The constrained problems whose `u_D = C u_I` would not read as a textbook writes it
+/// (entries of `C` with nested fractions the simplifier does not cancel): their Kane rows
+/// keep the constraint forces.
+const WRITTEN_WITH_CONSTRAINT_FORCES: [&str; 3] = [
+    "problems/disc-in-cylinder.json",
+    "problems/four-bar.json",
+    "problems/gear-pair-torque.json",
+];
+
+/// Every bundled problem with a closure, a constraint or a prescribed coordinate, without
+/// friction (see [`has_friction`]) and not in [`WRITTEN_WITH_CONSTRAINT_FORCES`].
+fn constrained() -> Vec<(String, Problem)> {
+    let mut paths: Vec<_> = std::fs::read_dir("problems")
+        .expect("problems/")
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    paths.sort();
+    let list: Vec<(String, Problem)> = paths
+        .iter()
+        .map(|p| (p.display().to_string(), load_file(p).expect("valid")))
+        .filter(|(name, problem)| {
+            !has_friction(problem) && !WRITTEN_WITH_CONSTRAINT_FORCES.contains(&name.as_str())
+        })
+        .filter(|(_, problem)| {
+            !problem.closures.is_empty()
+                || !problem.constraints.is_empty()
+                || problem.coordinates.iter().any(|c| c.motion.is_some())
+        })
+        .collect();
+    assert!(list.len() >= 11, "only {} constrained problems", list.len());
+    list
+}
+
+fn generalized_rows(derivation: &Derivation) -> usize {
+    derivation
+        .rows
+        .iter()
+        .filter(|r| matches!(r.sum, Sum::Generalized { .. }))
+        .count()
+}
+
+/// The reaction components of the requested sites.
+fn requested_components(derivation: &Derivation) -> usize {
+    let model = &derivation.model;
+    model
+        .problem
+        .find_reactions
+        .iter()
+        .map(|&j| model.sites[j].reactions.len())
+        .sum()
+}
+
+/// Kane's plan: a row per independent speed, per drive and per requested component, and
+/// no unknown but the q'', those components and the drives.
+fn check_plan(name: &str, kane: &Derivation) {
+    let speeds = kane
+        .dependent_speeds
+        .as_ref()
+        .unwrap_or_else(|| panic!("{name}: no independent speeds"));
+    let n = kane.model.problem.coordinates.len();
+    let drives = speeds.prescribed.len();
+    let asked = requested_components(kane);
+    assert_eq!(
+        generalized_rows(kane),
+        speeds.independent.len() + drives + asked,
+        "{name}: Kane's rows"
+    );
+    assert_eq!(
+        kane.system.unknowns.len(),
+        n + drives + asked,
+        "{name}: unknowns {:?}",
+        kane.system.unknowns
+    );
+    for row in kane.rows.iter().take(speeds.independent.len()) {
+        assert!(
+            row.unknowns
+                .iter()
+                .all(|u| matches!(u, Symbol::Coord(_, 2))),
+            "{name}: a constraint force in {:?}: {:?}",
+            row.sum,
+            row.unknowns
+        );
+    }
+}
+
+/// Kane's q'' (and reactions and drives) against Newton–Euler's at assembled states near
+/// the initial one.
+fn check_numbers(name: &str, problem: &Problem, kane: &Derivation) {
+    let newton = Compiled::new(&derive(problem, Method::NewtonEuler).expect("derives"));
+    let kane = Compiled::new(kane);
+    let mut random = Lcg(11);
+    let mut checked = 0;
+    for _ in 0..6 {
+        let mut q: Vec<f64> = problem
+            .coordinates
+            .iter()
+            .map(|c| c.initial + 0.2 * random.next())
+            .collect();
+        let mut rates: Vec<f64> = problem
+            .coordinates
+            .iter()
+            .map(|c| c.rate + random.next())
+            .collect();
+        let t = 0.3 * (random.next() + 1.0);
+        if newton.assemble(t, &mut q, &mut rates).is_err() {
+            continue;
+        }
+        let Ok(reference) = newton.solve(t, &q, &rates) else {
+            continue;
+        };
+        let ours = kane
+            .solve(t, &q, &rates)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let close = |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-9 * scale.max(1.0);
+        let scale = reference
+            .accelerations
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        for (a, b) in reference.accelerations.iter().zip(&ours.accelerations) {
+            assert!(close(*a, *b, scale), "{name}: q'' {b}, Newton–Euler {a}");
+        }
+        for ((joint, f1, m1), (_, f2, m2)) in reference.reactions.iter().zip(&ours.reactions) {
+            let scale = f1.iter().chain(m1).fold(0.0f64, |m, x| m.max(x.abs()));
+            for (a, b) in f1.iter().chain(m1).zip(f2.iter().chain(m2)) {
+                assert!(
+                    close(*a, *b, scale),
+                    "{name}: reaction at {joint}: {b}, {a}"
+                );
+            }
+        }
+        for ((coordinate, a), (_, b)) in reference.drives.iter().zip(&ours.drives) {
+            assert!(
+                close(*a, *b, a.abs()),
+                "{name}: drive {coordinate}: {b}, {a}"
+            );
+        }
+        checked += 1;
+    }
+    assert!(checked >= 3, "{name}: too few assembled states");
+}
+
+#[test]
+fn kane_has_one_row_per_independent_speed_and_per_requested_component() {
+    for (name, problem) in constrained() {
+        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        check_plan(&name, &kane);
+        check_numbers(&name, &problem, &kane);
+    }
+}
+
+#[test]
+fn kane_without_requested_reactions_has_only_the_accelerations_and_drives_as_unknowns() {
+    for (name, mut problem) in constrained() {
+        problem.find_reactions.clear();
+        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        check_plan(&name, &kane);
+        let speeds = kane.dependent_speeds.as_ref().expect("speeds");
+        let n = problem.coordinates.len();
+        assert_eq!(kane.system.unknowns.len(), n + speeds.prescribed.len());
+        check_numbers(&name, &problem, &kane);
+    }
+}
+
+/// The rolling disc of Kane and Levinson (Dynamics: Theory and Applications, 1985), by
+/// hand: with `b₁` along the disc's plane horizontally, `b₂` its axle and `b₃` from the
+/// contact P to the centre C, `ω = w₁ b₁ + w₂ b₂ + w₃ b₃` with `w₁ = θ'`,
+/// `w₂ = φ' + ψ' sin θ`, `w₃ = ψ' cos θ`; the frame B of b turns with
+/// `Ω = w₁ b₁ + w₃ tan θ b₂ + w₃ b₃`; rolling gives `v^C = R (w₂ b₁ − w₁ b₂)`. The moment of
+/// momentum about the contact point, `Ḣ_C + r^{PC} × m a^C = r^{PC} × m g`, in B's unit
+/// vectors is three equations in `w'`, from which `ψ''`, `θ''`, `φ''`.
+fn rolling_disc_by_hand(m: f64, r: f64, g: f64, theta: f64, rates: [f64; 3]) -> [f64; 3] {
+    let [psi_d, theta_d, phi_d] = rates;
+    let (s, c) = theta.sin_cos();
+    let (i, j) = (m * r * r / 4.0, m * r * r / 2.0);
+    let w = [theta_d, phi_d + psi_d * s, psi_d * c];
+    let big_omega = [w[0], w[2] * s / c, w[2]];
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    // Each equation is linear in w': its coefficients (a column per w'_k) and the rest.
+    // v^C = R (w₂ b₁ − w₁ b₂): a^C = R (w₂' b₁ − w₁' b₂) + Ω × v^C.
+    let v = [r * w[1], -r * w[0], 0.0];
+    let a_rest = cross(big_omega, v);
+    let h = [i * w[0], j * w[1], i * w[2]];
+    let h_rest = cross(big_omega, h);
+    let arm = [0.0, 0.0, r];
+    // Gravity: −m g N.z with N.z = sin θ b₂ + cos θ b₃.
+    let weight = [0.0, -m * g * s, -m * g * c];
+    let moment = cross(arm, weight);
+    let rest_of = |k: usize| h_rest[k] + m * cross(arm, a_rest)[k] - moment[k];
+    // Columns: ∂/∂w'_k of Ḣ + r × m a.
+    let column = |k: usize| {
+        let dh = match k {
+            0 => [i, 0.0, 0.0],
+            1 => [0.0, j, 0.0],
+            _ => [0.0, 0.0, i],
+        };
+        let da = match k {
+            0 => [0.0, -r, 0.0],
+            1 => [r, 0.0, 0.0],
+            _ => [0.0, 0.0, 0.0],
+        };
+        let ra = cross(arm, da);
+        [dh[0] + m * ra[0], dh[1] + m * ra[1], dh[2] + m * ra[2]]
+    };
+    let a = nalgebra::Matrix3::from_columns(&[
+        nalgebra::Vector3::from(column(0)),
+        nalgebra::Vector3::from(column(1)),
+        nalgebra::Vector3::from(column(2)),
+    ]);
+    let b = -nalgebra::Vector3::new(rest_of(0), rest_of(1), rest_of(2));
+    let w_dot = a.lu().solve(&b).expect("regular");
+    // w₁' = θ'', w₂' = φ'' + ψ'' sin θ + ψ' θ' cos θ, w₃' = ψ'' cos θ − ψ' θ' sin θ.
+    let theta_dd = w_dot[0];
+    let psi_dd = (w_dot[2] + psi_d * theta_d * s) / c;
+    let phi_dd = w_dot[1] - psi_dd * s - psi_d * theta_d * c;
+    [psi_dd, theta_dd, phi_dd]
+}
+
+#[test]
+fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
+    let problem = load_file(std::path::Path::new("problems/rolling-coin.json")).expect("valid");
+    let kane = derive(&problem, Method::Kane).expect("derives");
+    let speeds = kane.dependent_speeds.as_ref().expect("independent speeds");
+    let names = |list: &[usize]| -> Vec<String> {
+        let mut names: Vec<String> = list
+            .iter()
+            .map(|&i| problem.coordinates[i].name.clone())
+            .collect();
+        names.sort();
+        names
+    };
+    assert_eq!(names(&speeds.independent), ["phi", "psi", "theta"]);
+    assert_eq!(names(&speeds.dependent), ["x", "y", "z"]);
+    let mut plain = problem.clone();
+    plain.find_reactions.clear();
+    let reduced = derive(&plain, Method::Kane).expect("derives");
+    assert_eq!(generalized_rows(&reduced), 3);
+    let compiled = Compiled::new(&reduced);
+    let index = |name: &str| {
+        problem
+            .coordinates
+            .iter()
+            .position(|c| c.name == name)
+            .expect("coordinate")
+    };
+    let (m, r, g) = (0.5, 0.1, 9.81);
+    let mut random = Lcg(3);
+    for _ in 0..8 {
+        let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+        let mut rates = vec![0.0; q.len()];
+        q[index("theta")] = 0.3 + 0.8 * random.next();
+        q[index("psi")] = 2.0 * random.next();
+        q[index("phi")] = 2.0 * random.next();
+        for name in ["psi", "theta", "phi"] {
+            rates[index(name)] = 5.0 * random.next();
+        }
+        compiled
+            .assemble(0.0, &mut q, &mut rates)
+            .expect("assembles");
+        let ours = compiled.solve(0.0, &q, &rates).expect("solves");
+        let theirs = rolling_disc_by_hand(
+            m,
+            r,
+            g,
+            q[index("theta")],
+            [
+                rates[index("psi")],
+                rates[index("theta")],
+                rates[index("phi")],
+            ],
+        );
+        for (name, expected) in ["psi", "theta", "phi"].iter().zip(theirs) {
+            let got = ours.accelerations[index(name)];
+            assert!(
+                (got - expected).abs() <= 1e-9 * expected.abs().max(1.0),
+                "{name}'' = {got}, by hand {expected}"
+            );
+        }
+        // Each of the three rows holds at the hand's accelerations: the same equations.
+        let mut values = reduced.model.values_at(0.0, &q, &rates);
+        for (k, name) in ["psi", "theta", "phi"].iter().enumerate() {
+            values.set(Symbol::Coord((*name).into(), 2), theirs[k]);
+        }
+        for (name, value) in ["x", "y", "z"]
+            .iter()
+            .map(|n| (n, ours.accelerations[index(n)]))
+        {
+            values.set(Symbol::Coord((*name).into(), 2), value);
+        }
+        for row in reduced.rows.iter().take(3) {
+            let residual = eval(&row.expression, &values);
+            assert!(residual.abs() < 1e-9, "{:?}: residual {residual}", row.sum);
+        }
+    }
+}
+
+#[test]
+fn with_friction_kane_keeps_the_contact_forces_and_agrees_with_newton_euler() {
+    let mut seen = 0;
+    for entry in std::fs::read_dir("problems").expect("problems/").flatten() {
+        let path = entry.path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let problem = load_file(&path).expect("valid");
+        if !has_friction(&problem) {
+            continue;
+        }
+        seen += 1;
+        let name = path.display().to_string();
+        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(
+            kane.dependent_speeds.is_none(),
+            "{name}: the normal force must stay"
+        );
+        check_numbers(&name, &problem, &kane);
+    }
+    assert!(seen >= 3, "only {seen} problems with friction");
+}
+
+#[test]
+fn where_c_would_not_read_well_kane_keeps_the_constraint_forces_and_agrees() {
+    for name in WRITTEN_WITH_CONSTRAINT_FORCES {
+        let problem = load_file(std::path::Path::new(name)).expect("valid");
+        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(
+            kane.dependent_speeds.is_none(),
+            "{name}: written with u_D = C u_I"
+        );
+        check_numbers(name, &problem, &kane);
+    }
+}
