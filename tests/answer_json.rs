@@ -53,9 +53,19 @@ fn top_precession_rates_are_the_roots_of_the_steady_quadratic() {
         assert_eq!(answer["state"]["theta"].as_f64(), Some(theta));
         assert_eq!(answer["time"].as_f64(), Some(0.0));
     }
+    // The statement's "show that": at the slow rate (rounded to 6 digits) the right side
+    // Ω (I3 ω3 − I1 Ω cos θ) is the gravity moment m g h.
+    let shown = &found[2];
+    assert_eq!(shown["kind"], "value");
+    close(
+        shown["value"].as_f64().expect("value"),
+        m * g * h,
+        1e-5,
+        "m g h",
+    );
     // The reaction at the tip: the force components only (a spherical joint takes no
     // moment); its vertical component carries the weight, the top not rising.
-    let tip = &found[2];
+    let tip = &found[3];
     assert_eq!(tip["kind"], "reaction");
     assert_eq!(tip["unit"], "N");
     assert!(tip["components"].get("moment").is_none(), "{tip}");

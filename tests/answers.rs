@@ -227,13 +227,13 @@ fn the_heavy_top_precesses_steadily_at_the_closed_form_rates() {
     close(a[0].values[1].1 + slow * th.cos(), w3, 1e-10, "spin held");
     // The floor carries the weight; horizontally it supplies m h sin(theta) W^2, the
     // centripetal force of the mass center's circle (sign by the geometry at psi = 0).
-    let fz = a[2]
+    let fz = a[3]
         .values
         .iter()
         .find(|(n, _)| n == "tip.force.z")
         .expect("z")
         .1;
-    let fy = a[2]
+    let fy = a[3]
         .values
         .iter()
         .find(|(n, _)| n == "tip.force.y")
