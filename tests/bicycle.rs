@@ -219,3 +219,34 @@ fn linearize_finds_the_weave_and_capsize_speeds() {
         "capsize speed {capsize}"
     );
 }
+
+/// The statement's questions, answered by `answer`: each disturbed state's roll and steer
+/// accelerations against the paper's linear equations, to the order of the disturbance
+/// squared (a lean of 10⁻³ rad) or to rounding (a roll rate, which enters linearly here).
+#[test]
+fn the_answers_match_the_published_linear_equations() {
+    let out = crate::support::run_json(&[
+        "answer",
+        "problems/validation/whipple-bicycle.json",
+        "--format",
+        "json",
+    ]);
+    let answers = out["answers"].as_array().expect("answers");
+    assert_eq!(answers.len(), 4);
+    let v = 5.0;
+    let (kq, kr) = published_jacobians(v);
+    let lean = kq * Vector2::new(1e-3, 0.0);
+    let roll_rate = kr * Vector2::new(1e-3, 0.0);
+    let expected = [lean[0], lean[1], roll_rate[0], roll_rate[1]];
+    for (answer, (want, tolerance)) in answers
+        .iter()
+        .zip(expected.iter().zip([1e-8, 1e-8, 1e-12, 1e-12]))
+    {
+        let found = answer["value"].as_f64().expect("value");
+        assert!(
+            (found - want).abs() <= tolerance,
+            "{}: {found} against the paper's {want}",
+            answer["text"]
+        );
+    }
+}
