@@ -3,6 +3,7 @@
 
 pub mod answers;
 pub mod assemble;
+pub mod check;
 pub mod checks;
 pub mod constraint_checks;
 pub mod evaluate;
