@@ -3,7 +3,7 @@
 //! constraint Jacobian at the initial configuration (the largest pivot first, as Gaussian
 //! elimination with complete pivoting picks them).
 
-use super::constraints::{Constraints, RowOrigin};
+use super::constraint_rows::{Constraints, RowOrigin};
 use super::model::Model;
 use super::MechanicsError;
 use crate::symbolic::eval::{eval, Values};

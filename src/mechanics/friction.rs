@@ -8,32 +8,18 @@
 //! between them and the sliding law `F = μ|N|` against the slip (see
 //! [`crate::numeric::friction`]).
 
-use super::constraints::{ConstraintRow, RowOrigin};
+pub use super::constraint_rows::FrictionSite;
+use super::constraint_rows::{ConstraintRow, RowOrigin};
 use super::joints::{ComponentKind, ReactionComponent};
-use super::model::{vector_of, Model};
-use super::sites::{direction_axis, tangents_of, Contact, Site, SiteKind};
+use super::model::Model;
+use super::site::{Contact, Site, SiteKind};
+use super::sites::{direction_axis, tangents_of};
+use super::vector::vector_of;
 use super::vector::{dot3, zero3, Components, Vector};
 use super::MechanicsError;
 use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint};
 use crate::symbolic::eval::eval;
-use crate::symbolic::{pow, Expr, Symbol};
-
-/// A site where Coulomb friction acts.
-#[derive(Clone, Debug)]
-pub struct FrictionSite {
-    /// The contact's name, which names the site everywhere (`find.reactions`, the JSON).
-    pub name: String,
-    /// Index into `Model::sites`.
-    pub site: usize,
-    /// The coefficient of friction μ, a scalar of constants.
-    pub coefficient: Expr,
-    /// The rows that hold while the site sticks: the slip velocity along each tangent is
-    /// zero (one in 2D, two in 3D). Each row's unknown is the friction force's component
-    /// along that tangent, and its velocity expression is that slip velocity component.
-    pub stick: Vec<ConstraintRow>,
-    /// The normal force's unknown, along the plane's normal (or the line of centres).
-    pub normal: Symbol,
-}
+use crate::symbolic::{pow, Expr};
 
 /// The site of `contact` entry `k`: the point of the body on the plane, with its normal
 /// reaction, and its tangential ones when it has friction.

@@ -5,8 +5,9 @@
 //! (`on_radius ± radius`) and no slip along the common tangent.
 
 use super::joints::{Axis, ComponentKind, ReactionComponent};
-use super::model::{vector_of, Model};
-use super::sites::{Contact, Site, SiteKind};
+use super::model::Model;
+use super::site::{Contact, Site, SiteKind};
+use super::vector::vector_of;
 use super::vector::{dot3, zero3, Components, Vector};
 use super::MechanicsError;
 use crate::problem::{BodyId, ConstraintKind, ForcePoint};

@@ -94,7 +94,7 @@ pub fn joint_axis(
             "for example \"axis\": \"N.z\"",
         ));
     };
-    let vector = super::model::vector_of(written);
+    let vector = super::vector::vector_of(written);
     let components = vector.components_in(joint.parent, frames);
     if components.iter().any(|c| !c.is_constant()) {
         return Err(error(

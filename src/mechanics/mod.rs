@@ -37,7 +37,10 @@ pub enum Form {
 }
 
 pub mod angular;
+pub mod build;
 pub mod compact;
+pub mod components;
+pub mod constraint_rows;
 pub mod constraints;
 pub mod dependent;
 pub mod dot_sum;
@@ -48,9 +51,12 @@ pub mod joints;
 pub mod massless;
 pub mod model;
 pub mod on_parent;
+pub mod point;
+pub mod site;
 pub mod sites;
 pub mod speeds;
 pub mod vector;
 
-pub use model::{BodyState, JointModel, Model, PointMotion};
+pub use model::{BodyState, JointModel, Model};
+pub use point::PointMotion;
 pub use vector::Vector;
