@@ -9,6 +9,7 @@ pub mod compile;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+mod factor;
 pub mod fast_hash;
 pub mod format;
 pub mod forward;
