@@ -10,16 +10,15 @@
 
 pub use super::constraint_rows::FrictionSite;
 use super::constraint_rows::{ConstraintRow, RowOrigin};
-use super::joints::{ComponentKind, ReactionComponent};
 use super::model::Model;
-use super::site::{Contact, Site, SiteKind};
-use super::sites::{direction_axis, tangents_of};
-use super::vector::vector_of;
-use super::vector::{dot3, zero3, Components, Vector};
+use super::site::{Contact, Site};
+use super::sites::{
+    contact_reactions, contact_site_of, from_origin_of, offset_on, tangents_of, unit_direction,
+};
+use super::vector::Vector;
 use super::MechanicsError;
-use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint};
-use crate::symbolic::eval::eval;
-use crate::symbolic::{pow, Expr};
+use crate::problem::{ConstraintKind, Dimension};
+use crate::symbolic::Expr;
 
 /// The site of `contact` entry `k`: the point of the body on the plane, with its normal
 /// reaction, and its tangential ones when it has friction.
@@ -45,59 +44,24 @@ pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), Me
     };
     let frames = &model.frames;
     let (body, on) = (*body, *on);
-    let written = vector_of(normal).components_in(on, frames);
-    let length = written
-        .iter()
-        .map(|e| eval(e, &model.values).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    if length.is_nan() || length <= 1e-12 {
-        return Err(MechanicsError {
-            path: format!("{}.normal", constraint.path),
-            message: "the normal is zero".into(),
-            hint: Some("give a nonzero direction, e.g. \"N.y\"".into()),
-        });
-    }
-    let scale = pow(dot3(&written, &written), Expr::ratio(-1, 2));
-    let n_in_on: Components = std::array::from_fn(|i| &written[i] * &scale);
+    let n_in_on = unit_direction(model, normal, on, || MechanicsError {
+        path: format!("{}.normal", constraint.path),
+        message: "the normal is zero".into(),
+        hint: Some("give a nonzero direction, e.g. \"N.y\"".into()),
+    })?;
     let n_vec = Vector::new(on, n_in_on.clone());
-    let offset_c = match point {
-        ForcePoint::Point(p) => model.locate(*p).1,
-        ForcePoint::Offset(v) => vector_of(v).components_in(body, frames),
-    };
-    let from_on = |position: Vector| match on {
-        BodyId::GROUND => position,
-        _ => position.minus(&model.position_on(on, &zero3())),
-    };
-    let point_position = from_on(model.position_on(body, &offset_c));
+    let offset_c = offset_on(model, point, body);
+    let point_position = from_origin_of(model, on, model.position_on(body, &offset_c));
     let height = &point_position.dot(&n_vec, frames) - offset;
     let planar = problem.dimension == Dimension::Two;
     let tangents = tangents_of(&n_in_on, planar, model, on);
-    let mut reactions: Vec<ReactionComponent> = Vec::new();
-    if constraint.friction.is_some() {
-        reactions.extend(tangents.iter().enumerate().map(|(i, t)| ReactionComponent {
-            kind: ComponentKind::Force,
-            axis: direction_axis(t, i + 1),
-            direction: t.clone(),
-        }));
-    }
-    reactions.push(ReactionComponent {
-        kind: ComponentKind::Force,
-        axis: direction_axis(&n_vec, 0),
-        direction: n_vec.clone(),
-    });
-    let motion = model.point_on(body, &offset_c);
-    let parent_offset = from_on(motion.position.clone()).components_in(on, frames);
-    let site = Site {
-        name: constraint.name.clone(),
-        kind: SiteKind::Contact(k),
-        parent: on,
-        child: body,
-        child_offset: offset_c.clone(),
-        parent_offset,
-        point: motion,
-        reactions,
+    // Without friction the contact holds along its normal only.
+    let slides = if constraint.friction.is_some() {
+        &tangents[..]
+    } else {
+        &[]
     };
+    let reactions = contact_reactions(slides, &n_vec);
     let contact = Contact {
         offset: offset_c,
         height,
@@ -105,7 +69,14 @@ pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), Me
         tangents,
         tilt: Expr::one(),
     };
-    Ok((site, contact))
+    Ok(contact_site_of(
+        model,
+        k,
+        (on, body),
+        reactions,
+        contact,
+        |motion| from_origin_of(model, on, motion.position.clone()).components_in(on, frames),
+    ))
 }
 
 /// Splits a friction site's rows: the no-slip rows (every component but the normal, which
