@@ -18,6 +18,7 @@ pub mod horner;
 mod instr;
 pub mod linear;
 pub mod named;
+pub mod natural;
 pub mod number;
 pub mod parse;
 pub mod print;
@@ -26,6 +27,7 @@ mod schedule;
 pub mod simplify;
 pub mod style;
 pub mod subst;
+mod tex_name;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
 pub use expr::{
