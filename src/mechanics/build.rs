@@ -3,13 +3,13 @@
 //! then the closures, contacts and constraints on them.
 
 use super::angular::Angular;
+use super::error::MechanicsError;
 use super::frames::{FrameInfo, Frames, Matrix};
 use super::joints::{joint_motion, load_axes, reaction_components, JointMotion};
 use super::model::{dt_components, rigid_point, tree_order, BodyState, JointModel, Model};
 use super::point::PointMotion;
 use super::speeds::Speeds;
 use super::vector::{own_components, zero3, Components, Vector};
-use super::MechanicsError;
 use crate::problem::{BodyId, Inertia, Problem};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{Expr, Symbol};
@@ -21,14 +21,17 @@ impl<'p> Model<'p> {
     /// When a joint axis is zero or not fixed in its parent, or a point is given in the
     /// unit vectors of a frame it is not fixed in.
     pub fn build(problem: &'p Problem) -> Result<Model<'p>, MechanicsError> {
-        Model::build_for(problem, super::Form::Handout)
+        Model::build_for(problem, super::model::Form::Handout)
     }
 
     /// As [`Model::build`], the kinematics named as `form` reads them.
     ///
     /// # Errors
     /// As [`Model::build`].
-    pub fn build_for(problem: &'p Problem, form: super::Form) -> Result<Model<'p>, MechanicsError> {
+    pub fn build_for(
+        problem: &'p Problem,
+        form: super::model::Form,
+    ) -> Result<Model<'p>, MechanicsError> {
         let values = constant_values(problem);
         let speeds = Speeds::of(problem)?;
         let count = problem.bodies.len() + 1;
@@ -126,7 +129,7 @@ fn body_kinematics(
     parent_state: &BodyState,
     (body, j): (BodyId, usize),
     motion: JointMotion,
-    (speeds, form): (Option<&Speeds>, super::Form),
+    (speeds, form): (Option<&Speeds>, super::model::Form),
 ) -> Result<(BodyState, JointModel), MechanicsError> {
     let joint = &problem.joints[j];
     let parent = joint.parent;

@@ -2,7 +2,7 @@
 //! acceleration levels, each with the unknown that enforces it, and the friction sites'
 //! rows that hold only while they stick. Built in [`super::constraints`].
 
-use super::MechanicsError;
+use super::error::MechanicsError;
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::{Expr, Symbol, Unknown};
 

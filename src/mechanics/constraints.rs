@@ -8,11 +8,11 @@ use super::constraint_rows::FrictionSite;
 pub use super::constraint_rows::{
     drive_symbol, multiplier_symbol, ConstraintRow, Constraints, RowOrigin,
 };
+use super::error::MechanicsError;
 use super::model::Model;
 use super::site::{Site, SiteKind};
 use super::sites::{closure_site, contact_site};
 use super::vector::{cross3, zero3, Components, Vector};
-use super::MechanicsError;
 use crate::mechanics::joints::ComponentKind;
 use crate::problem::{BodyId, ConstraintKind, JointKind};
 use crate::symbolic::diff::time_derivative;

@@ -4,8 +4,8 @@
 //! elimination with complete pivoting picks them).
 
 use super::constraint_rows::{Constraints, RowOrigin};
+use super::error::MechanicsError;
 use super::model::Model;
-use super::MechanicsError;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::Symbol;

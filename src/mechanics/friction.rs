@@ -10,13 +10,13 @@
 
 pub use super::constraint_rows::FrictionSite;
 use super::constraint_rows::{ConstraintRow, RowOrigin};
+use super::error::MechanicsError;
 use super::model::Model;
 use super::site::{Contact, Site};
 use super::sites::{
     contact_reactions, contact_site_of, from_origin_of, offset_on, tangents_of, unit_direction,
 };
 use super::vector::Vector;
-use super::MechanicsError;
 use crate::problem::{ConstraintKind, Dimension};
 use crate::symbolic::Expr;
 

@@ -4,12 +4,12 @@
 //! the contact force acts on both bodies; its rows are the distance between the centres
 //! (`on_radius ± radius`) and no slip along the common tangent.
 
+use super::error::MechanicsError;
 use super::joints::{Axis, ComponentKind, ReactionComponent};
 use super::model::Model;
 use super::site::{Contact, Site};
 use super::sites::{contact_site_of, offset_on, unit_direction};
 use super::vector::{dot3, zero3, Components, Vector};
-use super::MechanicsError;
 use crate::problem::{BodyId, ConstraintKind};
 use crate::symbolic::{pow, sqrt, Expr};
 

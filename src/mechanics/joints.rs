@@ -1,9 +1,9 @@
 //! What each joint type does: the rotations and translation it allows, the directions its
 //! joint loads act along, and the directions that carry a reaction.
 
+use super::error::MechanicsError;
 use super::frames::{dual_basis, Frames, Rotation};
 use super::vector::{cross3, zero3, Components, Vector};
-use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Joint, JointKind, Problem};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{pow, Expr};

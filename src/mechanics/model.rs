@@ -3,6 +3,7 @@
 //! [`super::build`].
 
 use super::constraint_rows::Constraints;
+use super::error::MechanicsError;
 use super::frames::{Frames, Matrix};
 use super::joints::{JointMotion, LoadAxis, ReactionComponent};
 pub use super::point::PointMotion;
@@ -10,11 +11,21 @@ use super::site::Site;
 use super::speeds::Speeds;
 pub use super::vector::{own_components, vector_of};
 use super::vector::{zero3, Components, Vector};
-use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, PointRef, Problem};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::Values;
 use crate::symbolic::{Expr, Symbol};
+
+/// Who reads the equations: how much of the kinematics is named depends on it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Form {
+    /// A student, in the worked solution: a planar acceleration is written whole, and a
+    /// spatial one named where it is long.
+    Handout,
+    /// The compiled program only: every long acceleration gets named parts, and every
+    /// partial angular velocity past the first body, the fewest operations.
+    Numeric,
+}
 
 /// The kinematics of one body.
 #[derive(Clone, Debug)]

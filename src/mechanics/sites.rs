@@ -2,13 +2,13 @@
 //! rolling contacts. Each is a site with a parent, a child, a point, and the directions
 //! that carry a reaction; every method treats the three kinds alike.
 
+use super::error::MechanicsError;
 use super::joints::{reaction_components, Axis, ComponentKind, JointMotion, ReactionComponent};
 use super::model::Model;
 use super::point::PointMotion;
 pub use super::site::{Contact, Site, SiteKind};
 use super::vector::{cross3, dot3, zero3, Components, Vector};
 use super::vector::{own_components, vector_of};
-use super::MechanicsError;
 use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint, Joint, JointKind, VectorExpr};
 use crate::symbolic::eval::eval;
 use crate::symbolic::{pow, sqrt, Expr};
