@@ -1,6 +1,6 @@
 //! Each command's arguments, as clap reads them; the commands in `cmd` take these.
 
-use super::{Common, MethodArg};
+use super::common::{Common, MethodArg};
 use clap::ValueEnum;
 use std::path::PathBuf;
 
