@@ -4,7 +4,6 @@ use super::expr::{Expr, Func, Node, Symbol};
 use super::number::Number;
 use super::style::abbreviation;
 pub use super::tex_name::latex_name;
-pub(crate) use super::tex_name::latex_name_plain;
 use std::ops::Neg;
 
 /// Plain text in the grammar of the problem format, e.g. `-m*L^2*sin(q1)/12`.

@@ -106,7 +106,7 @@ impl Unknown {
 
     /// The name in LaTeX: `F^{O}_{x}`, `Q_{\theta}`, `\lambda_{\mathrm{loop}}`.
     pub fn latex(&self) -> String {
-        use crate::symbolic::print::{latex_name, latex_name_plain};
+        use crate::symbolic::tex_name::{latex_name, latex_name_plain};
         match self {
             Unknown::Reaction { site, component } => format!(
                 "{}^{{{}}}_{{{}}}",
