@@ -3,7 +3,7 @@
 //! smooth wall on a rough floor (holds at rest iff tan θ ≤ 2μ), and a bowling ball that
 //! skids before it rolls (a solid sphere rolls after t = 2v₀/(7μg), a disc after v₀/(3μg)).
 
-use crate::support::{assert_close, column, problem, run, solve_all, METHODS};
+use crate::support::{assert_close, column, problem, run, solve_all, table, METHODS};
 use serde_json::Value;
 
 const G: f64 = 9.81;
@@ -269,24 +269,7 @@ fn simulate_ball(path: &std::path::Path, method: &str) -> (f64, Vec<String>, Vec
     assert!(out.status.success(), "{method}: {stderr}");
     let t = switch_time(&stderr, "lane stops slipping (rolls)");
     let json: Value = serde_json::from_slice(&out.stdout).expect("JSON");
-    let columns = json["columns"]
-        .as_array()
-        .expect("columns")
-        .iter()
-        .map(|c| c.as_str().expect("name").to_string())
-        .collect();
-    let rows = json["rows"]
-        .as_array()
-        .expect("rows")
-        .iter()
-        .map(|r| {
-            r.as_array()
-                .expect("row")
-                .iter()
-                .map(|x| x.as_f64().expect("number"))
-                .collect()
-        })
-        .collect();
+    let (columns, rows) = table(&json);
     (t, columns, rows)
 }
 

@@ -1,6 +1,6 @@
 //! Each command's arguments, as clap reads them; the commands in `cmd` take these.
 
-use super::{Common, MethodArg};
+use super::common::{Common, MethodArg};
 use clap::ValueEnum;
 use std::path::PathBuf;
 
@@ -38,6 +38,32 @@ pub struct CheckArgs {
     pub set: Vec<String>,
 }
 
+// `draw`, `solve` and `linearize`
+
+/// The state a command works at: `--state` and `--time`.
+#[derive(clap::Args, Clone, Debug)]
+pub struct GivenState {
+    /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
+    #[arg(long, value_name = "NAME=VALUE,...")]
+    pub state: Vec<String>,
+    /// The time t.
+    #[arg(long, default_value_t = 0.0)]
+    pub time: f64,
+}
+
+impl GivenState {
+    /// Refuses a time that is not finite (a usage error, exit status 2).
+    ///
+    /// # Errors
+    /// `--time` is not finite.
+    pub fn check_time(&self) -> Result<(), crate::Error> {
+        if !self.time.is_finite() {
+            return Err(crate::Error::Usage("--time must be finite".into()));
+        }
+        Ok(())
+    }
+}
+
 // `draw`
 
 /// Arguments of `mbd-tutor draw`.
@@ -46,12 +72,8 @@ pub struct DrawArgs {
     /// The problem; `-o` names the directory the pictures go to (created if missing).
     #[command(flatten)]
     pub common: Common,
-    /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
-    #[arg(long, value_name = "NAME=VALUE,...")]
-    pub state: Vec<String>,
-    /// The time t.
-    #[arg(long, default_value_t = 0.0)]
-    pub time: f64,
+    #[command(flatten)]
+    pub given: GivenState,
     /// How a spatial system is seen: iso (default), front, side, top, or a direction
     /// X,Y,Z to look along. Planar systems are drawn in their plane.
     #[arg(long, value_name = "VIEW")]
@@ -215,12 +237,8 @@ pub enum SolveFormat {
 pub struct AtState {
     #[command(flatten)]
     pub common: Common,
-    /// Coordinates and rates: q1=0.3,q1'=1.2; unset ones take the problem's initial values.
-    #[arg(long, value_name = "NAME=VALUE,...")]
-    pub state: Vec<String>,
-    /// The time t.
-    #[arg(long, default_value_t = 0.0)]
-    pub time: f64,
+    #[command(flatten)]
+    pub given: GivenState,
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
     pub format: SolveFormat,

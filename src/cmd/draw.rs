@@ -38,17 +38,15 @@ pub fn drawings(args: &DrawArgs) -> Result<Vec<Drawing>, Error> {
         Some(text) => View::parse(text).map_err(Error::Usage)?,
         None => View::Isometric,
     };
-    if !args.time.is_finite() {
-        return Err(Error::Usage("--time must be finite".into()));
-    }
+    args.given.check_time()?;
     let problem = super::load_with_overrides(&Common {
         output: None,
         ..args.common.clone()
     })?;
-    let (q, rates) = super::solve::initial_state(&problem, &args.state)?;
+    let (q, rates) = super::solve::initial_state(&problem, &args.given.state)?;
     let method = super::method(args.common.method);
     let mut state = State {
-        t: args.time,
+        t: args.given.time,
         q,
         rates,
     };

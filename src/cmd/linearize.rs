@@ -77,9 +77,7 @@ pub fn parse_sweep(text: &str) -> Result<Sweep, Error> {
 /// An invalid problem or command line, a singular system, or eigenvalues that do not
 /// converge.
 pub fn run(args: LinearizeArgs) -> Result<(), Error> {
-    if !args.at.time.is_finite() {
-        return Err(Error::Usage("--time must be finite".into()));
-    }
+    args.at.given.check_time()?;
     let sweep = args.sweep.as_deref().map(parse_sweep).transpose()?;
     let svg_output = args.at.common.output.as_deref().filter(|p| is_svg(p));
     let plot_path = args.plot.as_deref().or(svg_output);
@@ -101,8 +99,8 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
         args.at.common.output.as_deref()
     };
     let Some(sweep) = sweep else {
-        let (q, rates) = initial_state(&problem, &args.at.state)?;
-        let l = linearizer.at(&problem, args.at.time, &q, &rates)?;
+        let (q, rates) = initial_state(&problem, &args.at.given.state)?;
+        let l = linearizer.at(&problem, args.at.given.time, &q, &rates)?;
         let text = match args.at.format {
             Format::Json => pretty(&to_json(&problem, &l)),
             Format::Text => to_text(&problem, method.title(), &l),
@@ -113,8 +111,8 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     for &value in &sweep.values {
         let mut swept = problem.clone();
         crate::problem::apply_overrides(&mut swept, &[(sweep.name.clone(), value)])?;
-        let (q, rates) = initial_state(&swept, &args.at.state)?;
-        results.push(linearizer.at(&swept, args.at.time, &q, &rates)?);
+        let (q, rates) = initial_state(&swept, &args.at.given.state)?;
+        results.push(linearizer.at(&swept, args.at.given.time, &q, &rates)?);
     }
     if let Some(path) = plot_path {
         let svg = crate::render::eigen_plot::sweep_plot(
@@ -136,8 +134,8 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
             let at = |value: f64| -> Result<Linearization, Error> {
                 let mut swept = problem.clone();
                 crate::problem::apply_overrides(&mut swept, &[(sweep.name.clone(), value)])?;
-                let (q, rates) = initial_state(&swept, &args.at.state)?;
-                linearizer.at(&swept, args.at.time, &q, &rates)
+                let (q, rates) = initial_state(&swept, &args.at.given.state)?;
+                linearizer.at(&swept, args.at.given.time, &q, &rates)
             };
             let (a, b) = (sweep.values[i - 1], sweep.values[i]);
             edges.push((boundary(&at, a, b)?, stable[i]));

@@ -49,23 +49,21 @@ pub fn initial_state(
 /// # Errors
 /// An invalid problem, an unknown name in `--set` or `--state`, or a singular system.
 pub fn run(args: SolveArgs) -> Result<(), Error> {
-    if !args.at.time.is_finite() {
-        return Err(Error::Usage("--time must be finite".into()));
-    }
+    args.at.given.check_time()?;
     let problem = super::load_with_overrides(&args.at.common)?;
-    let (mut q, mut rates) = initial_state(&problem, &args.at.state)?;
+    let (mut q, mut rates) = initial_state(&problem, &args.at.given.state)?;
     let method = super::method(args.at.common.method);
     let derivation = crate::pipeline::derive(&problem, method)?;
-    super::report_constraints(&derivation.model, &args.at.state);
+    super::report_constraints(&derivation.model, &args.at.given.state);
     let solver = crate::pipeline::Solver::new(&problem, &derivation);
-    solver.assemble(args.at.time, &mut q, &mut rates)?;
-    let solution = solver.solve(args.at.time, &q, &rates)?;
+    solver.assemble(args.at.given.time, &mut q, &mut rates)?;
+    let solution = solver.solve(args.at.given.time, &q, &rates)?;
     let coordinates = solver.coordinate_names();
     let text = match args.at.format {
         SolveFormat::Json => {
             let value = to_json(
                 method.name(),
-                args.at.time,
+                args.at.given.time,
                 &coordinates,
                 &q,
                 &rates,
@@ -78,7 +76,7 @@ pub fn run(args: SolveArgs) -> Result<(), Error> {
         SolveFormat::Text => to_text(
             &problem.title,
             method.title(),
-            args.at.time,
+            args.at.given.time,
             &coordinates,
             &q,
             &rates,

@@ -11,13 +11,13 @@
 //!   + ω^p × ω_rel`, where `C` takes the parent's unit vectors to the body's.
 
 use super::compact::{name_part, Kind, Quantity, AXES, MAX_EXPANDED_TERMS};
+use super::error::MechanicsError;
 use super::frames::{apply, Frames};
+use super::model::Form;
 use super::model::{dt_components, BodyState};
 use super::on_parent::{simplified, split, sum};
 use super::speeds::Speeds;
 use super::vector::{cross3, Components};
-use super::Form;
-use super::MechanicsError;
 use super::Vector;
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::diff::time_derivative;

@@ -6,7 +6,6 @@
 //! coefficient (a partial velocity component) and the rest `ã` a named quantity, it is n + 1
 //! terms, the q'' stay visible for the linear system, and the numbers are unchanged.
 
-use crate::mechanics::on_parent::Built;
 use crate::mechanics::vector::Components;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
@@ -32,6 +31,15 @@ pub enum Kind {
     CenterAcceleration,
     /// The angular acceleration; the q'' coefficients are partial angular velocities.
     AngularAcceleration,
+}
+
+/// One acceleration built on the parent's: the coefficient of each q̈ (a partial velocity)
+/// and the rest, each in the body's own unit vectors.
+pub struct Built {
+    /// Indexed like the accelerations.
+    pub partials: Vec<Components>,
+    /// The part without the q''.
+    pub rest: Components,
 }
 
 /// The names of the axes, for the names of the parts.

@@ -4,113 +4,26 @@
 //! differentiated, at the acceleration level, each with the unknown that enforces it: a
 //! reaction component, a multiplier or a drive.
 
-use super::friction::FrictionSite;
+use super::constraint_rows::FrictionSite;
+pub use super::constraint_rows::{
+    drive_symbol, multiplier_symbol, ConstraintRow, Constraints, RowOrigin,
+};
+use super::error::MechanicsError;
 use super::model::Model;
-use super::sites::{closure_site, contact_site, Site, SiteKind};
+use super::site::{Site, SiteKind};
+use super::sites::{closure_site, contact_site};
 use super::vector::{cross3, zero3, Components, Vector};
-use super::MechanicsError;
 use crate::mechanics::joints::ComponentKind;
 use crate::problem::{BodyId, ConstraintKind, JointKind};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol, Unknown};
-
-/// What imposes a constraint row.
-#[derive(Clone, Debug, PartialEq)]
-pub enum RowOrigin {
-    /// A reaction component of a closure or contact site.
-    Site {
-        /// Index into `Model::sites`.
-        site: usize,
-        /// Index into the site's reactions.
-        component: usize,
-    },
-    /// A `position` entry, by index into `Problem::constraints`.
-    Position(usize),
-    /// A `velocity` entry.
-    Velocity(usize),
-    /// A prescribed coordinate, by coordinate index.
-    Prescribed(usize),
-}
-
-/// One scalar constraint.
-#[derive(Clone, Debug)]
-pub struct ConstraintRow {
-    /// What imposes it.
-    pub origin: RowOrigin,
-    /// A name for messages, e.g. `R.Fx`, `roll.Fz`, `rod`.
-    pub name: String,
-    /// The position-level expression of a holonomic row (zero when met).
-    pub position: Option<Expr>,
-    /// The velocity-level expression, affine in the rates (zero when met).
-    pub velocity: Expr,
-    /// The unknown that enforces it.
-    pub unknown: Symbol,
-}
-
-impl ConstraintRow {
-    /// The acceleration-level expression, linear in the q''.
-    ///
-    /// # Errors
-    /// When the expression cannot be differentiated.
-    pub fn acceleration(&self) -> Result<Expr, MechanicsError> {
-        time_derivative(&self.velocity).map_err(|e| MechanicsError {
-            path: "constraints".into(),
-            message: format!("{}: {e}", self.name),
-            hint: None,
-        })
-    }
-}
-
-/// Every constraint of a model, with the coordinates and rates it makes dependent.
-#[derive(Clone, Debug, Default)]
-pub struct Constraints {
-    /// The rows kept, in order: closures, contacts, entries, prescribed coordinates.
-    pub rows: Vec<ConstraintRow>,
-    /// Rows left out, each with why.
-    pub dropped: Vec<(String, String)>,
-    /// Coordinates solved from the position rows.
-    pub dependent: Vec<usize>,
-    /// Coordinates whose rates are solved from the velocity rows (the dependent ones first).
-    pub dependent_rates: Vec<usize>,
-    /// Prescribed coordinates.
-    pub prescribed: Vec<usize>,
-    /// What was chosen and why, for the user.
-    pub notes: Vec<String>,
-    /// The sites where Coulomb friction acts, each with the rows that hold while it
-    /// sticks; those rows are not among `rows`, so the rates they tie stay independent.
-    pub friction: Vec<FrictionSite>,
-    /// Each rolling contact's name and the sine of the angle between its axle and the
-    /// plane's normal, which must not vanish.
-    pub tilts: Vec<(String, Expr)>,
-}
-
-impl Constraints {
-    /// Whether there is nothing to enforce.
-    pub fn is_empty(&self) -> bool {
-        self.rows.is_empty()
-    }
-}
+use crate::symbolic::{Expr, Symbol};
 
 fn unit(axis: usize) -> Components {
     let mut c = zero3();
     c[axis] = Expr::one();
     c
-}
-
-/// The symbol of a prescribed coordinate's drive.
-pub fn drive_symbol(coordinate: &str) -> Symbol {
-    Symbol::Unknown(Unknown::Drive {
-        coordinate: coordinate.into(),
-    })
-}
-
-/// The symbol of a `position` or `velocity` entry's multiplier.
-pub fn multiplier_symbol(name: &str) -> Symbol {
-    Symbol::Unknown(Unknown::Multiplier {
-        constraint: name.into(),
-    })
 }
 
 /// The sites of closures and contacts, and every constraint row.
@@ -361,7 +274,7 @@ fn closure_rows(
     let (parent, child) = (closure.parent, closure.child);
     let parent_state = &model.bodies[parent.0];
     let child_state = &model.bodies[child.0];
-    let at = super::model::own_components(&closure.at, parent);
+    let at = super::vector::own_components(&closure.at, parent);
     let parent_point = model.point_on(parent, &at);
     let gap = site.point.position.minus(&parent_point.position);
     // The parent's material point where the child's point is now.

@@ -3,9 +3,9 @@
 //! constraint Jacobian at the initial configuration (the largest pivot first, as Gaussian
 //! elimination with complete pivoting picks them).
 
-use super::constraints::{Constraints, RowOrigin};
+use super::constraint_rows::{Constraints, RowOrigin};
+use super::error::MechanicsError;
 use super::model::Model;
-use super::MechanicsError;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::Symbol;

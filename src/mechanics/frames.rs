@@ -5,7 +5,7 @@
 //! rotations along the tree path between them, and rotations about the same axis are
 //! merged first, so that a planar chain gives `cos(q2 + q3)` instead of a product.
 
-use super::vector::{cross3, dot3, Components};
+use super::components::{cross3, dot3, Components};
 use crate::problem::BodyId;
 use crate::symbolic::print::latex_name;
 use crate::symbolic::{add, cos, sin, Expr};

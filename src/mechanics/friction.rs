@@ -8,32 +8,17 @@
 //! between them and the sliding law `F = μ|N|` against the slip (see
 //! [`crate::numeric::friction`]).
 
-use super::constraints::{ConstraintRow, RowOrigin};
-use super::joints::{ComponentKind, ReactionComponent};
-use super::model::{vector_of, Model};
-use super::sites::{direction_axis, tangents_of, Contact, Site, SiteKind};
-use super::vector::{dot3, zero3, Components, Vector};
-use super::MechanicsError;
-use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint};
-use crate::symbolic::eval::eval;
-use crate::symbolic::{pow, Expr, Symbol};
-
-/// A site where Coulomb friction acts.
-#[derive(Clone, Debug)]
-pub struct FrictionSite {
-    /// The contact's name, which names the site everywhere (`find.reactions`, the JSON).
-    pub name: String,
-    /// Index into `Model::sites`.
-    pub site: usize,
-    /// The coefficient of friction μ, a scalar of constants.
-    pub coefficient: Expr,
-    /// The rows that hold while the site sticks: the slip velocity along each tangent is
-    /// zero (one in 2D, two in 3D). Each row's unknown is the friction force's component
-    /// along that tangent, and its velocity expression is that slip velocity component.
-    pub stick: Vec<ConstraintRow>,
-    /// The normal force's unknown, along the plane's normal (or the line of centres).
-    pub normal: Symbol,
-}
+pub use super::constraint_rows::FrictionSite;
+use super::constraint_rows::{ConstraintRow, RowOrigin};
+use super::error::MechanicsError;
+use super::model::Model;
+use super::site::{Contact, Site};
+use super::sites::{
+    contact_reactions, contact_site_of, from_origin_of, offset_on, tangents_of, unit_direction,
+};
+use super::vector::Vector;
+use crate::problem::{ConstraintKind, Dimension};
+use crate::symbolic::Expr;
 
 /// The site of `contact` entry `k`: the point of the body on the plane, with its normal
 /// reaction, and its tangential ones when it has friction.
@@ -59,59 +44,24 @@ pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), Me
     };
     let frames = &model.frames;
     let (body, on) = (*body, *on);
-    let written = vector_of(normal).components_in(on, frames);
-    let length = written
-        .iter()
-        .map(|e| eval(e, &model.values).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    if length.is_nan() || length <= 1e-12 {
-        return Err(MechanicsError {
-            path: format!("{}.normal", constraint.path),
-            message: "the normal is zero".into(),
-            hint: Some("give a nonzero direction, e.g. \"N.y\"".into()),
-        });
-    }
-    let scale = pow(dot3(&written, &written), Expr::ratio(-1, 2));
-    let n_in_on: Components = std::array::from_fn(|i| &written[i] * &scale);
+    let n_in_on = unit_direction(model, normal, on, || MechanicsError {
+        path: format!("{}.normal", constraint.path),
+        message: "the normal is zero".into(),
+        hint: Some("give a nonzero direction, e.g. \"N.y\"".into()),
+    })?;
     let n_vec = Vector::new(on, n_in_on.clone());
-    let offset_c = match point {
-        ForcePoint::Point(p) => model.locate(*p).1,
-        ForcePoint::Offset(v) => vector_of(v).components_in(body, frames),
-    };
-    let from_on = |position: Vector| match on {
-        BodyId::GROUND => position,
-        _ => position.minus(&model.position_on(on, &zero3())),
-    };
-    let point_position = from_on(model.position_on(body, &offset_c));
+    let offset_c = offset_on(model, point, body);
+    let point_position = from_origin_of(model, on, model.position_on(body, &offset_c));
     let height = &point_position.dot(&n_vec, frames) - offset;
     let planar = problem.dimension == Dimension::Two;
     let tangents = tangents_of(&n_in_on, planar, model, on);
-    let mut reactions: Vec<ReactionComponent> = Vec::new();
-    if constraint.friction.is_some() {
-        reactions.extend(tangents.iter().enumerate().map(|(i, t)| ReactionComponent {
-            kind: ComponentKind::Force,
-            axis: direction_axis(t, i + 1),
-            direction: t.clone(),
-        }));
-    }
-    reactions.push(ReactionComponent {
-        kind: ComponentKind::Force,
-        axis: direction_axis(&n_vec, 0),
-        direction: n_vec.clone(),
-    });
-    let motion = model.point_on(body, &offset_c);
-    let parent_offset = from_on(motion.position.clone()).components_in(on, frames);
-    let site = Site {
-        name: constraint.name.clone(),
-        kind: SiteKind::Contact(k),
-        parent: on,
-        child: body,
-        child_offset: offset_c.clone(),
-        parent_offset,
-        point: motion,
-        reactions,
+    // Without friction the contact holds along its normal only.
+    let slides = if constraint.friction.is_some() {
+        &tangents[..]
+    } else {
+        &[]
     };
+    let reactions = contact_reactions(slides, &n_vec);
     let contact = Contact {
         offset: offset_c,
         height,
@@ -119,7 +69,14 @@ pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), Me
         tangents,
         tilt: Expr::one(),
     };
-    Ok((site, contact))
+    Ok(contact_site_of(
+        model,
+        k,
+        (on, body),
+        reactions,
+        contact,
+        |motion| from_origin_of(model, on, motion.position.clone()).components_in(on, frames),
+    ))
 }
 
 /// Splits a friction site's rows: the no-slip rows (every component but the normal, which

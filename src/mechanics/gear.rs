@@ -4,13 +4,13 @@
 //! the contact force acts on both bodies; its rows are the distance between the centres
 //! (`on_radius ± radius`) and no slip along the common tangent.
 
+use super::error::MechanicsError;
 use super::joints::{Axis, ComponentKind, ReactionComponent};
-use super::model::{vector_of, Model};
-use super::sites::{Contact, Site, SiteKind};
+use super::model::Model;
+use super::site::{Contact, Site};
+use super::sites::{contact_site_of, offset_on, unit_direction};
 use super::vector::{dot3, zero3, Components, Vector};
-use super::MechanicsError;
-use crate::problem::{BodyId, ConstraintKind, ForcePoint};
-use crate::symbolic::eval::eval;
+use crate::problem::{BodyId, ConstraintKind};
 use crate::symbolic::{pow, sqrt, Expr};
 
 /// The site of gear contact `k` and its geometry (the "height" is the distance between the
@@ -40,12 +40,8 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     };
     let frames = &model.frames;
     let (body, on) = (*body, *on);
-    let offset_of = |p: &ForcePoint, b: BodyId| match p {
-        ForcePoint::Point(p) => model.locate(*p).1,
-        ForcePoint::Offset(v) => vector_of(v).components_in(b, frames),
-    };
-    let body_center = offset_of(center, body);
-    let on_center = offset_of(on_center, on);
+    let body_center = offset_on(model, center, body);
+    let on_center = offset_on(model, on_center, on);
     // The line of centres, in `on`'s unit vectors, and its length.
     let between = model
         .position_on(body, &body_center)
@@ -65,23 +61,14 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     let line = Vector::new(on, toward);
     let axle = match axis {
         None => Vector::unit(BodyId::GROUND, 2),
-        Some(written) => {
-            let c = vector_of(written).components_in(body, frames);
-            let length = c
-                .iter()
-                .map(|e| eval(e, &model.values).powi(2))
-                .sum::<f64>()
-                .sqrt();
-            if length.is_nan() || length <= 1e-12 {
-                return Err(MechanicsError {
-                    path: format!("{}.axis", constraint.path),
-                    message: "the axis is zero".into(),
-                    hint: Some("give the common axle's direction, e.g. B.z".into()),
-                });
-            }
-            let scale = pow(dot3(&c, &c), Expr::ratio(-1, 2));
-            Vector::new(body, std::array::from_fn(|i| &c[i] * &scale))
-        }
+        Some(written) => Vector::new(
+            body,
+            unit_direction(model, written, body, || MechanicsError {
+                path: format!("{}.axis", constraint.path),
+                message: "the axis is zero".into(),
+                hint: Some("give the common axle's direction, e.g. B.z".into()),
+            })?,
+        ),
     };
     let tangent = axle.cross(&line, frames);
     // The contact point on the line of centres, `radius` from the disc's centre: toward
@@ -103,21 +90,6 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
             direction: line.clone(),
         },
     ];
-    let point = model.point_on(body, &offset);
-    let parent_offset = point
-        .position
-        .minus(&model.position_on(on, &zero3()))
-        .components_in(on, frames);
-    let site = Site {
-        name: constraint.name.clone(),
-        kind: SiteKind::Contact(k),
-        parent: on,
-        child: body,
-        child_offset: offset.clone(),
-        parent_offset,
-        point,
-        reactions,
-    };
     let contact = Contact {
         offset,
         height: gap,
@@ -125,5 +97,17 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
         tangents: vec![tangent],
         tilt: Expr::one(),
     };
-    Ok((site, contact))
+    Ok(contact_site_of(
+        model,
+        k,
+        (on, body),
+        reactions,
+        contact,
+        |point| {
+            point
+                .position
+                .minus(&model.position_on(on, &zero3()))
+                .components_in(on, frames)
+        },
+    ))
 }

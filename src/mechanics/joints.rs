@@ -1,9 +1,9 @@
 //! What each joint type does: the rotations and translation it allows, the directions its
 //! joint loads act along, and the directions that carry a reaction.
 
+use super::error::MechanicsError;
 use super::frames::{dual_basis, Frames, Rotation};
 use super::vector::{cross3, zero3, Components, Vector};
-use super::MechanicsError;
 use crate::problem::{BodyId, Dimension, Joint, JointKind, Problem};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{pow, Expr};
@@ -94,7 +94,7 @@ pub fn joint_axis(
             "for example \"axis\": \"N.z\"",
         ));
     };
-    let vector = super::model::vector_of(written);
+    let vector = super::vector::vector_of(written);
     let components = vector.components_in(joint.parent, frames);
     if components.iter().any(|c| !c.is_constant()) {
         return Err(error(

@@ -4,8 +4,8 @@
 //! (so `check` reports it too); the derivation names the body when its equations fall
 //! short for the same reason.
 
+use super::error::MechanicsError;
 use super::model::Model;
-use super::MechanicsError;
 use crate::problem::{BodyId, ConstraintKind};
 use crate::symbolic::eval::eval;
 

@@ -1,28 +1,30 @@
-//! Building the kinematic model of a problem: frames from the joints (step 1), then the
-//! angular velocity and acceleration of every body and the motion of every point (step 4).
+//! The kinematic model of a problem: every body's frame, angular velocity and
+//! acceleration, the motion of its points, and the sites and constraints on it; built in
+//! [`super::build`].
 
-use super::angular::Angular;
-use super::frames::{FrameInfo, Frames, Matrix};
-use super::joints::{
-    joint_motion, load_axes, reaction_components, JointMotion, LoadAxis, ReactionComponent,
-};
+use super::constraint_rows::Constraints;
+use super::error::MechanicsError;
+use super::frames::{Frames, Matrix};
+use super::joints::{JointMotion, LoadAxis, ReactionComponent};
+pub use super::point::PointMotion;
+use super::site::Site;
 use super::speeds::Speeds;
+pub use super::vector::{own_components, vector_of};
 use super::vector::{zero3, Components, Vector};
-use super::MechanicsError;
-use crate::problem::{BodyId, Dimension, Inertia, PointRef, Problem, VectorExpr};
+use crate::problem::{BodyId, Dimension, PointRef, Problem};
 use crate::symbolic::diff::time_derivative;
-use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::eval::Values;
 use crate::symbolic::{Expr, Symbol};
 
-/// Position, velocity and acceleration of a point in `N`.
-#[derive(Clone, Debug, Default)]
-pub struct PointMotion {
-    /// From `N.o`.
-    pub position: Vector,
-    /// The velocity in `N`.
-    pub velocity: Vector,
-    /// The acceleration in `N`.
-    pub acceleration: Vector,
+/// Who reads the equations: how much of the kinematics is named depends on it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Form {
+    /// A student, in the worked solution: a planar acceleration is written whole, and a
+    /// spatial one named where it is long.
+    Handout,
+    /// The compiled program only: every long acceleration gets named parts, and every
+    /// partial angular velocity past the first body, the fewest operations.
+    Numeric,
 }
 
 /// The kinematics of one body.
@@ -82,40 +84,12 @@ pub struct Model<'p> {
     pub order: Vec<BodyId>,
     /// Where reactions act: the joints (indexed like [`Problem::joints`]), then the
     /// closures, then one per entry of `constraints` (only rolling contacts carry reactions).
-    pub sites: Vec<super::sites::Site>,
+    pub sites: Vec<Site>,
     /// Closures, contacts, constraint entries and prescribed coordinates as rows.
-    pub constraints: super::constraints::Constraints,
+    pub constraints: Constraints,
     /// The declared speeds' kinematic differential equations; `None` when the speeds are
     /// the rates. With them the kinematics are written with `u` and `u'`.
-    pub speeds: Option<super::speeds::Speeds>,
-}
-
-/// The vector a [`VectorExpr`] describes.
-pub fn vector_of(written: &VectorExpr) -> Vector {
-    Vector::sum(
-        written.terms.iter().map(|(frame, axis, coefficient)| {
-            Vector::unit(*frame, *axis as usize).scaled(coefficient)
-        }),
-    )
-}
-
-/// Components of a vector written in the body's own unit vectors (as `at`, `center` are).
-pub fn own_components(written: &VectorExpr, frame: BodyId) -> Components {
-    let mut c = zero3();
-    for (f, axis, coefficient) in &written.terms {
-        if *f == frame {
-            c[*axis as usize] = &c[*axis as usize] + coefficient;
-        }
-    }
-    c
-}
-
-fn constant_values(problem: &Problem) -> Values {
-    let mut values = Values::new();
-    for c in &problem.constants {
-        values.set(Symbol::Const(c.name.as_str().into()), c.value);
-    }
-    values
+    pub speeds: Option<Speeds>,
 }
 
 pub(super) fn dt_components(
@@ -138,101 +112,6 @@ pub(super) fn dt_components(
 }
 
 impl<'p> Model<'p> {
-    /// Builds the frames and the kinematics of every body of `problem`.
-    ///
-    /// # Errors
-    /// When a joint axis is zero or not fixed in its parent, or a point is given in the
-    /// unit vectors of a frame it is not fixed in.
-    pub fn build(problem: &'p Problem) -> Result<Model<'p>, MechanicsError> {
-        Model::build_for(problem, super::Form::Handout)
-    }
-
-    /// As [`Model::build`], the kinematics named as `form` reads them.
-    ///
-    /// # Errors
-    /// As [`Model::build`].
-    pub fn build_for(problem: &'p Problem, form: super::Form) -> Result<Model<'p>, MechanicsError> {
-        let values = constant_values(problem);
-        let speeds = Speeds::of(problem)?;
-        let count = problem.bodies.len() + 1;
-        let names = std::iter::once("N".to_string())
-            .chain(problem.bodies.iter().map(|b| b.name.clone()))
-            .collect();
-        let mut frame_infos = vec![
-            FrameInfo {
-                parent: None,
-                rotations: vec![]
-            };
-            count
-        ];
-        let order = tree_order(problem);
-        let mut motions: Vec<Option<JointMotion>> = vec![None; problem.joints.len()];
-        // Frames first, parents before children: an axis is read in its parent's frame.
-        for &body in &order {
-            let Some(j) = problem.joint_of(body) else {
-                continue;
-            };
-            let joint = &problem.joints[j];
-            let partial = Frames::new(frame_infos.clone(), Vec::new());
-            let motion = joint_motion(problem, joint, &partial, &values)?;
-            frame_infos[body.0] = FrameInfo {
-                parent: Some(joint.parent),
-                rotations: motion.rotations.clone(),
-            };
-            motions[j] = Some(motion);
-        }
-        let frames = Frames::new(frame_infos, names);
-        let ground = BodyState {
-            omega: Vector::zero(),
-            omega_named: Vector::zero(),
-            alpha: Vector::zero(),
-            origin: PointMotion::default(),
-            center: PointMotion::default(),
-            center_offset: zero3(),
-            mass: Expr::zero(),
-            inertia: std::array::from_fn(|_| zero3()),
-        };
-        let mut bodies = vec![ground; count];
-        let mut joints: Vec<Option<JointModel>> = vec![None; problem.joints.len()];
-        for &body in &order {
-            let Some(j) = problem.joint_of(body) else {
-                continue;
-            };
-            let joint = &problem.joints[j];
-            let Some(motion) = motions[j].take() else {
-                continue;
-            };
-            let (state, joint_model) = body_kinematics(
-                problem,
-                &frames,
-                &values,
-                &bodies[joint.parent.0],
-                (body, j),
-                motion,
-                (speeds.as_ref(), form),
-            )?;
-            bodies[body.0] = state;
-            joints[j] = Some(joint_model);
-        }
-        let joints = joints.into_iter().flatten().collect();
-        let mut model = Model {
-            problem,
-            frames,
-            values,
-            bodies,
-            joints,
-            order,
-            sites: Vec::new(),
-            constraints: Default::default(),
-            speeds,
-        };
-        let (sites, constraints) = super::constraints::build(&model)?;
-        model.sites = sites;
-        model.constraints = constraints;
-        super::massless::check(&model)?;
-        Ok(model)
-    }
-
     /// The motion of a point fixed on `body` at `offset` (body's unit vectors) from its origin.
     pub fn point_on(&self, body: BodyId, offset: &Components) -> PointMotion {
         rigid_point(&self.frames, &self.bodies[body.0], body, offset)
@@ -348,7 +227,7 @@ pub fn tree_order(problem: &Problem) -> Vec<BodyId> {
     order
 }
 
-fn rigid_point(
+pub(super) fn rigid_point(
     frames: &Frames,
     state: &BodyState,
     body: BodyId,
@@ -367,131 +246,6 @@ fn rigid_point(
                 .cross(&state.omega_named.cross(&r, frames), frames),
         ]),
     }
-}
-
-fn body_kinematics(
-    problem: &Problem,
-    frames: &Frames,
-    values: &Values,
-    parent_state: &BodyState,
-    (body, j): (BodyId, usize),
-    motion: JointMotion,
-    (speeds, form): (Option<&Speeds>, super::Form),
-) -> Result<(BodyState, JointModel), MechanicsError> {
-    let joint = &problem.joints[j];
-    let parent = joint.parent;
-    let path = &joint.path;
-    let fail = |message: String| MechanicsError {
-        path: path.clone(),
-        message: format!("joint `{}`: {message}", joint.name),
-        hint: None,
-    };
-    let relative = frames
-        .relative_angular_velocity(body)
-        .map_err(|e| fail(e.to_string()))?;
-    let planar = problem.dimension == crate::problem::Dimension::Two;
-    let Angular {
-        omega,
-        omega_named,
-        alpha,
-    } = if planar || speeds.is_some() {
-        super::angular::multiplied_out(
-            problem,
-            frames,
-            parent_state,
-            (body, path),
-            &relative,
-            speeds,
-        )?
-    } else {
-        super::angular::built(
-            problem,
-            frames,
-            parent_state,
-            (body, parent, form),
-            &relative,
-        )
-        .map_err(fail)?
-    };
-
-    // The joint point on the parent, then the sliding along the joint, then back to the origin.
-    let at = own_components(&joint.at, parent);
-    let child_at = own_components(&joint.child_at, body);
-    let d = motion.translation.clone();
-    let d_rate = dt_components(&d, path, speeds)?;
-    let d_accel = dt_components(&d_rate, path, speeds)?;
-    let carried: Components = std::array::from_fn(|i| &at[i] + &d[i]);
-    let carried_point = rigid_point(frames, parent_state, parent, &carried);
-    let slide_rate = Vector::new(parent, d_rate);
-    let joint_point = PointMotion {
-        position: carried_point.position,
-        velocity: carried_point.velocity.plus(&slide_rate),
-        acceleration: Vector::sum([
-            carried_point.acceleration,
-            Vector::new(parent, d_accel),
-            parent_state
-                .omega_named
-                .cross(&slide_rate, frames)
-                .scaled(&Expr::int(2)),
-        ]),
-    };
-    let back: Components = std::array::from_fn(|i| -child_at[i].clone());
-    let partial_state = BodyState {
-        omega: omega.clone(),
-        omega_named: omega_named.clone(),
-        alpha: alpha.clone(),
-        origin: joint_point.clone(),
-        center: PointMotion::default(),
-        center_offset: zero3(),
-        mass: Expr::zero(),
-        inertia: std::array::from_fn(|_| zero3()),
-    };
-    // The joint point moves with the child, so the origin follows by the rigid-body formulas.
-    let origin = rigid_point(frames, &partial_state, body, &back);
-
-    let declared = problem.body(body);
-    let center_offset = own_components(&declared.center, body);
-    let inertia = match &declared.inertia {
-        Inertia::Planar(izz) => {
-            let mut m: Matrix = std::array::from_fn(|_| zero3());
-            m[2][2] = izz.clone();
-            m
-        }
-        Inertia::Spatial(m) => m.clone(),
-    };
-    let massless = eval(&declared.mass, values) == 0.0;
-    let mut state = BodyState {
-        omega,
-        omega_named,
-        alpha,
-        origin,
-        center: PointMotion::default(),
-        center_offset: center_offset.clone(),
-        // A massless body (mass 0, validated with no inertia) carries no weight and no
-        // inertia force: written 0, its terms leave the equations and the diagrams.
-        mass: if massless {
-            Expr::zero()
-        } else {
-            declared.mass.clone()
-        },
-        inertia: if massless {
-            std::array::from_fn(|_| zero3())
-        } else {
-            inertia
-        },
-    };
-    state.center = rigid_point(frames, &state, body, &center_offset);
-    let reactions = reaction_components(problem, joint, &motion, values);
-    let axes = load_axes(joint, &motion, frames);
-    let joint_model = JointModel {
-        motion,
-        at,
-        child_at,
-        reactions,
-        load_axes: axes,
-        point: joint_point,
-    };
-    Ok((state, joint_model))
 }
 
 /// Whether `a` and `b` have the same value at every one of `states` (to 1e-9, relative): an

@@ -12,7 +12,7 @@
 //! with `r` from the parent's mass centre to the joint, `d` the joint's sliding and `r'` from
 //! the joint to this body's mass centre.
 
-use crate::mechanics::compact::{AXES, MAX_EXPANDED_TERMS};
+use crate::mechanics::compact::{Built, AXES, MAX_EXPANDED_TERMS};
 use crate::mechanics::frames::apply;
 use crate::mechanics::vector::{cross3, Components};
 use crate::mechanics::{Model, Vector};
@@ -21,15 +21,6 @@ use crate::symbolic::diff::time_derivative;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::latex_name;
 use crate::symbolic::{add, simplify, Expr, Symbol};
-
-/// One acceleration built on the parent's: the coefficient of each q̈ (a partial velocity)
-/// and the rest, each in the body's own unit vectors.
-pub struct Built {
-    /// Indexed like the accelerations.
-    pub partials: Vec<Components>,
-    /// The part without the q''.
-    pub rest: Components,
-}
 
 /// The angular acceleration of `body` from its parent's as `alphas` names them (in each
 /// body's own unit vectors). `None` as for [`parent_in_chain`].

@@ -2,46 +2,16 @@
 //! rolling contacts. Each is a site with a parent, a child, a point, and the directions
 //! that carry a reaction; every method treats the three kinds alike.
 
+use super::error::MechanicsError;
 use super::joints::{reaction_components, Axis, ComponentKind, JointMotion, ReactionComponent};
-use super::model::{own_components, vector_of, Model, PointMotion};
+use super::model::Model;
+use super::point::PointMotion;
+pub use super::site::{Contact, Site, SiteKind};
 use super::vector::{cross3, dot3, zero3, Components, Vector};
-use super::MechanicsError;
-use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint, Joint, JointKind};
+use super::vector::{own_components, vector_of};
+use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint, Joint, JointKind, VectorExpr};
 use crate::symbolic::eval::eval;
 use crate::symbolic::{pow, sqrt, Expr};
-
-/// What a site is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SiteKind {
-    /// A joint of the tree, by index into `Problem::joints`.
-    Joint(usize),
-    /// A closure, by index into `Problem::closures`.
-    Closure(usize),
-    /// A rolling contact, by index into `Problem::constraints`.
-    Contact(usize),
-}
-
-/// A place where the parent exerts a reaction on the child.
-#[derive(Clone, Debug)]
-pub struct Site {
-    /// The joint's, closure's or contact's name.
-    pub name: String,
-    /// What it is.
-    pub kind: SiteKind,
-    /// The body exerting the reaction (`N` for a contact).
-    pub parent: BodyId,
-    /// The body it acts on.
-    pub child: BodyId,
-    /// The point on the child, from its origin in its unit vectors (for a contact it
-    /// moves over the body as it turns).
-    pub child_offset: Components,
-    /// The parent's material point there, from its origin in its unit vectors.
-    pub parent_offset: Components,
-    /// The motion of the child's material point at the site.
-    pub point: PointMotion,
-    /// The reaction components, each an unknown of the site (`O.Fx`).
-    pub reactions: Vec<ReactionComponent>,
-}
 
 impl Site {
     /// The site of tree joint `j`.
@@ -151,23 +121,6 @@ fn universal_reactions(model: &Model, closure: &Joint) -> Vec<ReactionComponent>
     out
 }
 
-/// The geometry of a rolling contact: where it is and which ways it holds the disc.
-#[derive(Clone, Debug)]
-pub struct Contact {
-    /// The contact point from the body's origin, in the body's unit vectors.
-    pub offset: Components,
-    /// The height of the centre above the plane minus what the disc's tilt allows; zero
-    /// when the disc touches the plane.
-    pub height: Expr,
-    /// The plane's unit normal, and two unit directions in the plane (one in 2D), in `N`.
-    pub normal: Vector,
-    /// Unit directions in the plane.
-    pub tangents: Vec<Vector>,
-    /// `|n − (n·a) a|`, the sine of the angle between the axle and the normal: the contact
-    /// is undefined where it is zero.
-    pub tilt: Expr,
-}
-
 /// |n − (n·â)â|, the cosine of the wheel's lean from the normal, named σ_B where it is a
 /// root of a sum (the bicycle's √(C₃₁² + C₃₃²)), which would otherwise be written out in
 /// every term of the contact's velocity. A root of one square (the coin's √(cos²θ)) stays,
@@ -210,30 +163,17 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
     };
     let frames = &model.frames;
     let (body, on) = (*body, *on);
-    let normalized = |written: &crate::problem::VectorExpr, frame: BodyId, key: &str| {
-        let c = vector_of(written).components_in(frame, frames);
-        let length = c
-            .iter()
-            .map(|e| eval(e, &model.values).powi(2))
-            .sum::<f64>()
-            .sqrt();
-        if length.is_nan() || length <= 1e-12 {
-            return Err(MechanicsError {
-                path: format!("{}.{key}", constraint.path),
-                message: format!("the {key} is zero"),
-                hint: Some("give a nonzero direction".into()),
-            });
-        }
-        let scale = pow(dot3(&c, &c), Expr::ratio(-1, 2));
-        Ok(std::array::from_fn(|i| &c[i] * &scale))
+    let normalized = |written: &VectorExpr, frame: BodyId, key: &str| {
+        unit_direction(model, written, frame, || MechanicsError {
+            path: format!("{}.{key}", constraint.path),
+            message: format!("the {key} is zero"),
+            hint: Some("give a nonzero direction".into()),
+        })
     };
     // The plane's normal, fixed in `on`, in `on`'s unit vectors.
     let n_in_n: Components = normalized(normal, on, "normal")?;
     let a: Components = normalized(axis, body, "axis")?;
-    let center_offset = match center {
-        ForcePoint::Point(p) => model.locate(*p).1,
-        ForcePoint::Offset(v) => vector_of(v).components_in(body, frames),
-    };
+    let center_offset = offset_on(model, center, body);
     let n_vec = Vector::new(on, n_in_n.clone());
     let n_in_body = n_vec.components_in(body, frames);
     // Towards the contact from the centre: -(n - (n.a) a) / |n - (n.a) a|.
@@ -249,13 +189,67 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
     };
     let offset_c: Components = std::array::from_fn(|i| &center_offset[i] - &(radius * &toward[i]));
     // The centre's height above the plane, measured from `on`'s origin.
-    let from_on = |position: Vector| match on {
-        BodyId::GROUND => position,
-        _ => position.minus(&model.position_on(on, &zero3())),
-    };
-    let center_position = from_on(model.position_on(body, &center_offset));
+    let center_position = from_origin_of(model, on, model.position_on(body, &center_offset));
     let height = &(&center_position.dot(&n_vec, frames) - offset) - &(radius * &tilt);
     let tangents = tangents_of(&n_in_n, planar, model, on);
+    let reactions = contact_reactions(&tangents, &n_vec);
+    let contact = Contact {
+        offset: offset_c,
+        height,
+        normal: n_vec,
+        tangents,
+        tilt,
+    };
+    Ok(contact_site_of(
+        model,
+        k,
+        (on, body),
+        reactions,
+        contact,
+        |point| from_origin_of(model, on, point.position.clone()).components_in(on, frames),
+    ))
+}
+
+/// Where a point given by name or by offset is on `body`: from its origin, in its unit
+/// vectors.
+pub(super) fn offset_on(model: &Model, point: &ForcePoint, body: BodyId) -> Components {
+    match point {
+        ForcePoint::Point(p) => model.locate(*p).1,
+        ForcePoint::Offset(v) => vector_of(v).components_in(body, &model.frames),
+    }
+}
+
+/// A direction written in the problem, in `frame`'s unit vectors and of unit length; the
+/// error `zero` when it has no length at the constants' values.
+pub(super) fn unit_direction(
+    model: &Model,
+    written: &VectorExpr,
+    frame: BodyId,
+    zero: impl FnOnce() -> MechanicsError,
+) -> Result<Components, MechanicsError> {
+    let c = vector_of(written).components_in(frame, &model.frames);
+    let length = c
+        .iter()
+        .map(|e| eval(e, &model.values).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    if length.is_nan() || length <= 1e-12 {
+        return Err(zero());
+    }
+    let scale = pow(dot3(&c, &c), Expr::ratio(-1, 2));
+    Ok(std::array::from_fn(|i| &c[i] * &scale))
+}
+
+/// `position` from `on`'s origin (as it is when `on` is the ground).
+pub(super) fn from_origin_of(model: &Model, on: BodyId, position: Vector) -> Vector {
+    match on {
+        BodyId::GROUND => position,
+        _ => position.minus(&model.position_on(on, &zero3())),
+    }
+}
+
+/// A contact's force components: one along each of `tangents`, then the normal, last.
+pub(super) fn contact_reactions(tangents: &[Vector], normal: &Vector) -> Vec<ReactionComponent> {
     let mut reactions: Vec<ReactionComponent> = tangents
         .iter()
         .enumerate()
@@ -267,29 +261,34 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         .collect();
     reactions.push(ReactionComponent {
         kind: ComponentKind::Force,
-        axis: direction_axis(&n_vec, 0),
-        direction: n_vec.clone(),
+        axis: direction_axis(normal, 0),
+        direction: normal.clone(),
     });
-    let point = model.point_on(body, &offset_c);
-    let parent_offset = from_on(point.position.clone()).components_in(on, frames);
+    reactions
+}
+
+/// The site of contact entry `k`, where `body` touches `on` at `contact.offset`, carrying
+/// `reactions`; `parent_offset` gives `on`'s material point there from the point's motion.
+pub(super) fn contact_site_of(
+    model: &Model,
+    k: usize,
+    (on, body): (BodyId, BodyId),
+    reactions: Vec<ReactionComponent>,
+    contact: Contact,
+    parent_offset: impl FnOnce(&PointMotion) -> Components,
+) -> (Site, Contact) {
+    let point = model.point_on(body, &contact.offset);
     let site = Site {
-        name: constraint.name.clone(),
+        name: model.problem.constraints[k].name.clone(),
         kind: SiteKind::Contact(k),
         parent: on,
         child: body,
-        child_offset: offset_c.clone(),
-        parent_offset,
+        child_offset: contact.offset.clone(),
+        parent_offset: parent_offset(&point),
         point,
         reactions,
     };
-    let contact = Contact {
-        offset: offset_c,
-        height,
-        normal: n_vec,
-        tangents,
-        tilt,
-    };
-    Ok((site, contact))
+    (site, contact)
 }
 
 /// `Fx` when `d` is a unit vector of `N`, `Fn` for the normal otherwise, `Ft1`, `Ft2`.

@@ -5,7 +5,7 @@
 //! `W⁻¹` is found symbolically block by block (the speeds that share coordinates): by the
 //! adjugate up to 3×3 (Euler-angle kinematics), by elimination beyond.
 
-use super::MechanicsError;
+use super::error::MechanicsError;
 use crate::problem::Problem;
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::linear::linear_split;

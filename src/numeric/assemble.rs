@@ -51,7 +51,7 @@ impl Assembly {
         }
         let problem = model.problem;
         let n = problem.coordinates.len();
-        let inputs = super::evaluate::input_symbols(problem);
+        let inputs = super::inputs::input_symbols(problem);
         let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
         let split = |e: &Expr| -> (Vec<Expr>, Expr) {
             linear_split(e, &rates).unwrap_or_else(|_| (vec![Expr::zero(); n], e.clone()))

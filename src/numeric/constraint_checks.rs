@@ -1,7 +1,7 @@
 //! Confirmation checks for constrained systems: the constraints still hold along the
 //! simulated motion, and the energy changes by exactly the work the drives do.
 
-use super::checks::{Check, ENERGY_TOLERANCE};
+use super::check::{Check, ENERGY_TOLERANCE};
 use super::format::fixed;
 use super::simulate::Trajectory;
 use super::system::System;

@@ -1,12 +1,15 @@
 //! Evaluating a derivation at a state: the compiled program for `A`, `b`, the reaction
-//! directions and the energies, then the linear solve (LU with partial pivoting).
+//! directions and the energies, then the linear solve (see [`super::linear`]).
 
+use super::inputs::input_symbols;
+use super::linear::solve_linear_owned;
+use super::speeds::SpeedProgram;
 use super::system::{describe_state, Evaluation, System};
 use super::SolveError;
 use crate::equations::composite::SMALL_PROGRAM;
 use crate::equations::{energy, Derivation, Method};
 use crate::mechanics::joints::ComponentKind;
-use crate::problem::{LoadKind, Problem};
+use crate::problem::LoadKind;
 use crate::symbolic::compile::Program;
 use crate::symbolic::{Expr, Symbol};
 use nalgebra::{DMatrix, DVector};
@@ -82,98 +85,6 @@ pub struct StateSolution {
     pub speeds: Vec<(String, f64, f64)>,
     /// Each friction site: sticking or slipping, its normal and friction forces.
     pub friction: Vec<super::friction::SiteState>,
-}
-
-/// The input symbols of the compiled program: constants, coordinates, rates, time, and
-/// the declared speeds when there are any (computed from the rates, see [`SpeedProgram`]).
-pub fn input_symbols(problem: &Problem) -> Vec<Symbol> {
-    let mut inputs = state_symbols(problem);
-    if problem.has_speeds() {
-        inputs.extend(problem.speed_symbols(1));
-    }
-    inputs
-}
-
-/// The kinematic differential equations compiled: from the state, the speeds `u = W q'`,
-/// the entries of `W` and `Ẇ q'`, so that `q'' = W⁻¹ (u' − Ẇ q')`.
-#[derive(Clone, Debug)]
-struct SpeedProgram {
-    n: usize,
-    names: Vec<String>,
-    program: Program,
-}
-
-impl SpeedProgram {
-    fn new(problem: &Problem) -> Option<SpeedProgram> {
-        if !problem.has_speeds() {
-            return None;
-        }
-        let n = problem.coordinates.len();
-        let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
-        let mut outputs: Vec<Expr> = problem.speeds.iter().map(|s| s.equals.clone()).collect();
-        let mut derivatives = Vec::with_capacity(n);
-        for speed in &problem.speeds {
-            let (row, _) = crate::symbolic::linear::linear_split(&speed.equals, &rates).ok()?;
-            outputs.extend(row);
-            let d = crate::symbolic::diff::time_derivative(&speed.equals).ok()?;
-            derivatives.push(crate::symbolic::subst::substitute(&d, &|s| {
-                matches!(s, Symbol::Coord(_, 2)).then(Expr::zero)
-            }));
-        }
-        outputs.extend(derivatives);
-        Some(SpeedProgram {
-            n,
-            names: problem.speeds.iter().map(|s| s.name.clone()).collect(),
-            program: Program::compile(&state_symbols(problem), &outputs),
-        })
-    }
-
-    /// `[u, W row-major, Ẇ q']` at the state of `inputs`.
-    fn run(&self, inputs: &[f64]) -> Vec<f64> {
-        let mut scratch = Vec::new();
-        let mut out = vec![0.0; self.n * (self.n + 2)];
-        self.program.run(inputs, &mut scratch, &mut out);
-        out
-    }
-
-    /// Each speed's name, `u` and `u' = W q'' + Ẇ q'`, at the state whose `run` gave `values`.
-    fn rates_of_speeds(&self, values: &[f64], accelerations: &[f64]) -> Vec<(String, f64, f64)> {
-        let n = self.n;
-        (0..n)
-            .map(|r| {
-                let w_row = &values[n + r * n..n + (r + 1) * n];
-                let du = w_row
-                    .iter()
-                    .zip(accelerations)
-                    .map(|(w, a)| w * a)
-                    .sum::<f64>()
-                    + values[n + n * n + r];
-                (self.names[r].clone(), values[r], du)
-            })
-            .collect()
-    }
-
-    /// The q'' from the speeds' rates `du` at the state whose `run` gave `values`.
-    fn accelerations(&self, values: &[f64], du: &[f64]) -> Option<Vec<f64>> {
-        let n = self.n;
-        let w = DMatrix::from_row_slice(n, n, &values[n..n + n * n]);
-        let rhs = DVector::from_iterator(n, (0..n).map(|r| du[r] - values[n + n * n + r]));
-        solve_linear(&w, &rhs).map(|x| x.iter().copied().collect())
-    }
-}
-
-/// Constants, coordinates, rates and time: the state a command gives.
-fn state_symbols(problem: &Problem) -> Vec<Symbol> {
-    let mut inputs: Vec<Symbol> = problem
-        .constants
-        .iter()
-        .map(|c| Symbol::Const(c.name.as_str().into()))
-        .collect();
-    for order in 0..2 {
-        inputs.extend((0..problem.coordinates.len()).map(|i| problem.coordinate_symbol(i, order)));
-    }
-    inputs.push(Symbol::Time);
-    inputs
 }
 
 /// A program compiled on its first run.
@@ -495,26 +406,6 @@ impl Compiled {
         }
         "the equations do not determine the unknowns here (a singular configuration, such as gimbal lock)".into()
     }
-}
-
-/// Solves `a x = b` by LU with partial pivoting; `None` when `a` is singular to working precision.
-pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-    solve_linear_owned(a.clone(), b.clone())
-}
-
-/// As [`solve_linear`], factoring `a` in place and solving into `b`: no copies.
-pub fn solve_linear_owned(a: DMatrix<f64>, b: DVector<f64>) -> Option<DVector<f64>> {
-    let n = a.nrows() as f64;
-    let lu = a.lu();
-    // The diagonal of the packed factors is U's (L's is ones and not stored).
-    let diagonal = lu.lu_internal().diagonal();
-    let largest = diagonal.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let smallest = diagonal.iter().fold(f64::INFINITY, |m, x| m.min(x.abs()));
-    if largest.is_nan() || largest <= 0.0 || smallest <= 1e-13 * largest * n {
-        return None;
-    }
-    let mut x = b;
-    lu.solve_mut(&mut x).then_some(x)
 }
 
 /// Whether a load keeps the total (kinetic + potential) energy constant: springs do, since

@@ -10,7 +10,7 @@
 //! when `|F| ≤ μ |N|`, and otherwise solved again sliding, the friction force along the
 //! force that sticking needed (it opposes the motion that would start).
 
-use super::evaluate::solve_linear;
+use super::linear::solve_linear;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::symbolic::compile::Program;

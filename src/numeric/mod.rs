@@ -3,16 +3,20 @@
 
 pub mod answers;
 pub mod assemble;
+pub mod check;
 pub mod checks;
 pub mod constraint_checks;
 pub mod evaluate;
 pub mod friction;
+pub mod inputs;
 /// Fixed-precision numbers for text (see [`crate::symbolic::format`]).
 pub use crate::symbolic::format;
 pub mod integrate;
+pub mod linear;
 pub mod linearize;
 pub mod reduce;
 pub mod simulate;
+pub mod speeds;
 pub mod system;
 
 use std::fmt;

@@ -40,7 +40,7 @@ impl Reducer {
         let problem = model.problem;
         let constraints = &model.constraints;
         let n = problem.coordinates.len();
-        let inputs = super::evaluate::input_symbols(problem);
+        let inputs = super::inputs::input_symbols(problem);
         let q: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 0)).collect();
         let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
         let coefficients = |e: &Expr| {

@@ -1,11 +1,11 @@
 //! One scalar equation of motion: a free body, a sum of forces or of moments about a point,
 //! dotted with a direction, its terms grouped as the Motion Law groups them.
 
-use crate::mechanics::compact::{named_components, Kind, Quantity, MAX_EXPANDED_TERMS};
+use crate::mechanics::compact::{named_components, Built, Kind, Quantity, MAX_EXPANDED_TERMS};
 use crate::mechanics::dot_sum::DotSum;
 use crate::mechanics::frames::{apply, Frames};
 use crate::mechanics::model::sample_states;
-use crate::mechanics::on_parent::{self, Built};
+use crate::mechanics::on_parent;
 use crate::mechanics::vector::{size, Components};
 pub use crate::mechanics::Form;
 use crate::mechanics::{Model, Vector};

@@ -39,7 +39,7 @@ impl Reader {
 }
 
 /// Evaluates the coordinates' expression-valued `initial` and `rate` with `values` (after
-/// `--set`); a value that cannot be computed becomes NaN, which [`validate::values`] reports.
+/// `--set`); a value that cannot be computed becomes NaN, which [`super::apply_overrides`] reports.
 pub fn evaluate(problem: &mut Problem, values: &ConstantValues) {
     for c in &mut problem.coordinates {
         if let Some(e) = &c.initial_expr {

@@ -4,7 +4,7 @@
 //! text is read into a [`Value`] by a visitor that notes duplicate keys, and the value is
 //! then walked with helpers that record an error and carry on.
 
-use super::ProblemError;
+use super::error::ProblemError;
 use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde_json::{Map, Value};
 use std::cell::RefCell;

@@ -7,7 +7,7 @@ use super::json::{
 };
 use super::model::*;
 use super::names::{is_valid, suggest};
-use super::read::Reader;
+use super::read::{Known, Reader};
 use super::validate;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
@@ -42,16 +42,6 @@ fn point_fixed_on_both(kind: JointKind) -> bool {
         kind,
         JointKind::Revolute | JointKind::Universal | JointKind::Spherical | JointKind::Weld
     )
-}
-
-/// What a load needs to know of the rest of the problem.
-pub struct Known<'a> {
-    /// The joints.
-    pub joints: &'a [Joint],
-    /// The declared points.
-    pub points: &'a [PointDef],
-    /// The coordinates.
-    pub coordinates: &'a [Coordinate],
 }
 
 impl Reader {

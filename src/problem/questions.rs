@@ -17,61 +17,10 @@
 
 use super::expressions::{self, Context};
 use super::json::{self, check_keys, index_path, key_path, number, object, string};
+use super::model::{Question, QuestionAt, QuestionKind, StateEntry};
 use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
-
-/// A coordinate's value (`order` 0) or rate (`order` 1), by index into
-/// [`Problem::coordinates`](super::Problem::coordinates).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StateEntry {
-    pub coordinate: usize,
-    pub order: u8,
-}
-
-/// What a question asks for.
-#[derive(Clone, Debug, PartialEq)]
-pub enum QuestionKind {
-    /// A scalar expression, with its text as written.
-    Value { expression: Expr, text: String },
-    /// A reaction, as a site index (see [`Problem::site_name`](super::Problem::site_name)).
-    Reaction { site: usize },
-    /// The generalized force that drives a prescribed coordinate, by index into
-    /// [`Problem::coordinates`](super::Problem::coordinates). Whether the coordinate is
-    /// prescribed is checked when the question is answered.
-    Drive { coordinate: usize },
-    /// The `unknowns` that make the `zero` expressions vanish (default: every q''), each
-    /// with its text.
-    Steady {
-        unknowns: Vec<StateEntry>,
-        zero: Vec<(Expr, String)>,
-    },
-}
-
-/// Where a question is asked.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct QuestionAt {
-    /// Seconds; `None` is t = 0.
-    pub time: Option<f64>,
-    /// Values given; the others are the initial ones. `None`: no `state` key, so a `time`
-    /// is reached by simulating from the initial state.
-    pub state: Option<Vec<(StateEntry, f64)>>,
-}
-
-/// One entry of `find.questions`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Question {
-    /// The question as worded for the student (user text), if given.
-    pub text: Option<String>,
-    pub kind: QuestionKind,
-    pub at: QuestionAt,
-    /// The unit of a `value` (user text), if given.
-    pub unit: Option<String>,
-    /// The symbol a `value` is answered by (LaTeX math), if given.
-    pub symbol: Option<String>,
-    /// The JSON path, e.g. `find.questions[0]`.
-    pub path: String,
-}
 
 const KEYS: [&str; 8] = [
     "text", "value", "reaction", "drive", "steady", "at", "unit", "symbol",

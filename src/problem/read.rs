@@ -36,6 +36,16 @@ const TOP_KEYS: [&str; 16] = [
     "speeds",
 ];
 
+/// What a load needs to know of the rest of the problem.
+pub struct Known<'a> {
+    /// The joints.
+    pub joints: &'a [Joint],
+    /// The declared points.
+    pub points: &'a [PointDef],
+    /// The coordinates.
+    pub coordinates: &'a [Coordinate],
+}
+
 /// The state shared by the parts of reading.
 pub struct Reader {
     /// Every error so far.
@@ -51,7 +61,7 @@ pub struct Reader {
 }
 
 /// Reads a whole problem; the errors are in the order found.
-pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
+pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
     let mut r = Reader {
         diag: Diagnostics::default(),
         names: Names::default(),
@@ -110,7 +120,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::ProblemError>> {
         .iter()
         .map(|(name, value)| r.point(name, value))
         .collect();
-    let known = super::loads::Known {
+    let known = Known {
         joints: &joints,
         points: &points,
         coordinates: &coordinates,

@@ -4,8 +4,7 @@
 
 use super::expressions::ConstantValues;
 use super::json::{key_path, Diagnostics};
-use super::model::{Inertia, LoadKind, Problem, VectorExpr};
-use super::ProblemError;
+use super::model::{Inertia, VectorExpr};
 use crate::symbolic::format::fixed;
 use crate::symbolic::Expr;
 use nalgebra::{Matrix3, SymmetricEigen};
@@ -177,103 +176,6 @@ fn principal_moments(matrix: &Matrix3<f64>, path: &str, diag: &mut Diagnostics) 
             ),
             "no rigid body has one principal moment larger than the sum of the other two",
         );
-    }
-}
-
-/// Every value-dependent check over a whole problem, with `values` for the constants.
-pub fn values(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
-    let mut diag = Diagnostics::default();
-    for constant in &problem.constants {
-        if !constant.value.is_finite() {
-            diag.error(
-                &key_path("constants", &constant.name),
-                "the value is not a finite number",
-            );
-        }
-    }
-    for (path, e) in super::initial::expressions(problem) {
-        finite(e, values, &path, &mut diag);
-    }
-    if let Some(gravity) = &problem.gravity {
-        vector(gravity, values, "gravity", &mut diag);
-    }
-    for body in &problem.bodies {
-        mass(&body.mass, values, &key_path(&body.path, "mass"), &mut diag);
-        vector(
-            &body.center,
-            values,
-            &key_path(&body.path, "center"),
-            &mut diag,
-        );
-        inertia(
-            &body.inertia,
-            values,
-            &key_path(&body.path, "inertia"),
-            &mut diag,
-        );
-        massless_inertia(
-            &body.mass,
-            &body.inertia,
-            values,
-            &key_path(&body.path, "inertia"),
-            &mut diag,
-        );
-    }
-    for joint in &problem.joints {
-        if let Some(a) = &joint.axis {
-            axis(a, values, &key_path(&joint.path, "axis"), &mut diag);
-        }
-        vector(&joint.at, values, &key_path(&joint.path, "at"), &mut diag);
-        vector(
-            &joint.child_at,
-            values,
-            &key_path(&joint.path, "child_at"),
-            &mut diag,
-        );
-    }
-    for point in &problem.points {
-        vector(
-            &point.at,
-            values,
-            &key_path(&key_path("points", &point.name), "at"),
-            &mut diag,
-        );
-    }
-    for constraint in &problem.constraints {
-        if let Some(mu) = &constraint.friction {
-            let path = key_path(&constraint.path, "friction");
-            super::friction::coefficient(mu, values, &path, &mut diag);
-        }
-    }
-    for load in &problem.loads {
-        for (key, e) in load_scalars(&load.kind) {
-            // Only loads that hold constants alone can be judged before the motion.
-            if e.is_constant() {
-                finite(e, values, &key_path(&load.path, key), &mut diag);
-            }
-        }
-    }
-    diag.errors
-}
-
-/// The scalar expressions of a load with their keys.
-pub fn load_scalars(kind: &LoadKind) -> Vec<(&'static str, &Expr)> {
-    match kind {
-        LoadKind::Force { vector, .. } | LoadKind::Torque { vector, .. } => {
-            vector.terms.iter().map(|(_, _, c)| ("vector", c)).collect()
-        }
-        LoadKind::Spring {
-            stiffness,
-            free_length,
-            ..
-        } => vec![("stiffness", stiffness), ("free_length", free_length)],
-        LoadKind::Damper { coefficient, .. } | LoadKind::JointDamper { coefficient, .. } => {
-            vec![("coefficient", coefficient)]
-        }
-        LoadKind::JointSpring {
-            stiffness, rest, ..
-        } => vec![("stiffness", stiffness), ("rest", rest)],
-        LoadKind::JointActuator { value, .. } => vec![("value", value)],
     }
 }
 

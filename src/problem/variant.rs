@@ -8,8 +8,8 @@
 //! of this program, which a key that must be drawn again identically needs. A crate's
 //! generator may change its stream between versions (`rand`'s `StdRng` says so).
 
+use super::model::Problem;
 use super::vary::Grid;
-use super::Problem;
 use serde_json::Value;
 
 /// SplitMix64: a 64-bit state advanced by a fixed odd constant, each output a mix of it.

@@ -3,13 +3,13 @@
 //! terms share the state they depend on. Display only, like [`super::collect`].
 
 use super::build::{add, mul};
-use super::collect::{
-    common_factor_out, factored, gcd, multiple_of, pull_common_factor, push_signed, signed_term,
-};
 use super::expr::{Expr, Node, Symbol};
+use super::factor::{
+    gcd, multiple_of, pull_common_factor, push_signed, signed_term, square_root_of_sum, square_tex,
+};
 use super::fast_hash::FastMap;
 use super::number::Number;
-use super::print::latex;
+use super::print::{latex, latex_term};
 use std::ops::Neg as _;
 
 /// Terms that share their varying factors: those factors, and each term whole and as its
@@ -332,6 +332,72 @@ fn component_collected(c: &Expr, key: &str) -> Option<String> {
     let (flipped, sum) = positive_first(terms);
     let sign = if flipped { "-" } else { "" };
     Some(format!("{sign}\\left({sum}\\right) {key}"))
+}
+
+/// `common (inner) key` when the terms of `e` share a factor other than ±1; else `None`.
+pub fn common_factor_out(e: &Expr, key: &str) -> Option<String> {
+    if e.terms().len() < 2 {
+        return None;
+    }
+    let (common, inner) = pull_common_factor(e);
+    let trivial = common
+        .as_number()
+        .is_some_and(|c| c.is_one() || c.neg().is_one());
+    (!trivial).then(|| factored(&common, &inner, key))
+}
+
+/// `common (inner) key`, the sign of `common` in front.
+pub fn factored(common: &Expr, inner: &Expr, key: &str) -> String {
+    let (common, inner, inner_tex) = &signed_inner(common, inner);
+    let (c, rest) = common.split_coefficient();
+    let sign = if c.is_negative() { "-" } else { "" };
+    let c = if c.is_negative() { c.neg() } else { c };
+    let front = if rest.is_one() && c.is_one() {
+        String::new()
+    } else {
+        format!("{} ", latex_term(c, &rest))
+    };
+    let inner =
+        square_root_of_sum(inner).map_or_else(|| inner_tex.clone(), |root| square_tex(&root));
+    let text = format!("{sign}{front}{inner} {key}");
+    text.trim_end().to_string()
+}
+
+/// `common` and `inner` as [`factored`] writes them, with `inner` in LaTeX, in brackets
+/// unless it is one product: collected by
+/// its constants where that is shorter and leads with a plus; else, a sum that leads with a
+/// minus as −k (a − b − c) when most of its terms are negative, or with its positive terms
+/// first, as a textbook writes (I₃ − I₁).
+fn signed_inner(common: &Expr, inner: &Expr) -> (Expr, Expr, String) {
+    let parenthesized = |tex: String| format!("\\left({tex}\\right)");
+    if let Some(terms) = constants_collected_terms(inner) {
+        // Collected into one product, it needs no brackets of its own.
+        let one = terms.len() == 1;
+        let (flipped, tex) = positive_first(terms);
+        let tex = if one { tex } else { parenthesized(tex) };
+        return if flipped {
+            (common.neg(), inner.neg(), tex)
+        } else {
+            (common.clone(), inner.clone(), tex)
+        };
+    }
+    let negative = |t: &Expr| t.split_coefficient().0.is_negative();
+    let negatives = inner.terms().iter().filter(|t| negative(t)).count();
+    let positives = inner.terms().len() - negatives;
+    if inner.terms().len() < 2 || !negative(&inner.terms()[0]) {
+        return (common.clone(), inner.clone(), parenthesized(latex(inner)));
+    }
+    if negatives > positives {
+        let (common, inner) = (common.neg(), inner.neg());
+        let tex = parenthesized(latex(&inner));
+        return (common, inner, tex);
+    }
+    let mut tex = String::new();
+    let (first, then): (Vec<&Expr>, Vec<&Expr>) = inner.terms().iter().partition(|t| !negative(t));
+    for t in first.into_iter().chain(then) {
+        push_signed(&mut tex, latex(t));
+    }
+    (common.clone(), inner.clone(), parenthesized(tex))
 }
 
 #[cfg(test)]

@@ -9,6 +9,7 @@ pub mod compile;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+mod factor;
 pub mod fast_hash;
 pub mod format;
 pub mod forward;
@@ -17,6 +18,7 @@ pub mod horner;
 mod instr;
 pub mod linear;
 pub mod named;
+pub mod natural;
 pub mod number;
 pub mod parse;
 pub mod print;
@@ -25,6 +27,7 @@ mod schedule;
 pub mod simplify;
 pub mod style;
 pub mod subst;
+mod tex_name;
 
 pub use build::{add, cos, func, mul, pow, sin, sqrt};
 pub use expr::{

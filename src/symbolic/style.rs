@@ -11,7 +11,7 @@
 
 use super::expr::{Expr, Func, Node, Symbol};
 use super::number::Number;
-use super::print::latex_name;
+use super::tex_name::latex_name;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -100,8 +100,13 @@ pub fn with_style<R>(style: Style, f: impl FnOnce() -> R) -> (R, Vec<Abbreviatio
 
 /// The abbreviation of `f(arg)` under the current style, if it has one: `f` is `sin` or
 /// `cos` and `arg` a coordinate or a sum of coordinates (each once, with coefficient 1).
-/// Recorded as used.
-pub(crate) fn abbreviation(f: Func, arg: &Expr) -> Option<String> {
+/// Recorded as used, with its value written by `latex_argument` (the printer's, passed in
+/// so that the style stays below the printer).
+pub(crate) fn abbreviation(
+    f: Func,
+    arg: &Expr,
+    latex_argument: impl FnOnce(&Expr) -> String,
+) -> Option<String> {
     let letter = match f {
         Func::Sin => "s",
         Func::Cos => "c",
@@ -138,7 +143,7 @@ pub(crate) fn abbreviation(f: Func, arg: &Expr) -> Option<String> {
         Some((format!("{letter}_{{{joined}}}"), positions))
     })?;
     // The argument is a sum of coordinates: printing it abbreviates nothing.
-    let value = format!("\\{}{}", f.name(), super::print::latex_argument(arg));
+    let value = format!("\\{}{}", f.name(), latex_argument(arg));
     CURRENT.with(|c| {
         if let Some((_, used)) = c.borrow_mut().as_mut() {
             used.insert(Abbreviation {

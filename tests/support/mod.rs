@@ -123,7 +123,11 @@ pub fn solve_all(name: &str, extra: &[&str]) -> Vec<Solution> {
 pub fn simulate(name: &str, extra: &[&str]) -> (Vec<String>, Vec<Vec<f64>>) {
     let mut args: Vec<OsString> = vec!["simulate".into(), problem(name).into()];
     args.extend(["--format", "json"].iter().chain(extra).map(OsString::from));
-    let json = run_json(&args);
+    table(&run_json(&args))
+}
+
+/// The column names and the rows of `simulate --format json` output.
+pub fn table(json: &Value) -> (Vec<String>, Vec<Vec<f64>>) {
     let columns = json["columns"]
         .as_array()
         .expect("columns")

@@ -8,7 +8,7 @@
 //! from a small displacement along one mode, and the period measured on the motion. If the
 //! equations are wrong (a sign, a factor, a missing term) the two periods differ.
 
-use super::{Check, PERIOD_TOLERANCE};
+use crate::numeric::check::{Check, PERIOD_TOLERANCE};
 use crate::numeric::format::fixed;
 use crate::numeric::integrate::{integrate, Options};
 use crate::numeric::system::System;

@@ -20,7 +20,8 @@
 //! the same way.
 
 use crate::equations::LinearSystem;
-use crate::numeric::evaluate::{input_symbols, solve_linear};
+use crate::numeric::inputs::input_symbols;
+use crate::numeric::linear::solve_linear;
 use crate::numeric::system::describe_state;
 use crate::numeric::SolveError;
 use crate::problem::Problem;

@@ -23,12 +23,12 @@ pub const CONTENT: f64 = 300.0;
 /// Room for the caption above.
 pub const TITLE: f64 = 26.0;
 
-struct Painter {
-    projection: Projection,
+pub(super) struct Painter {
+    pub(super) projection: Projection,
     shift: P2,
-    items: Vec<Item>,
+    pub(super) items: Vec<Item>,
     texts: Vec<Item>,
-    obstacles: Obstacles,
+    pub(super) obstacles: Obstacles,
     scale: f64,
     /// Put before a body's group id: empty in the free body, `kinetic-` beside it.
     body_prefix: &'static str,
@@ -37,11 +37,18 @@ struct Painter {
 }
 
 impl Painter {
-    fn at(&self, p: P3) -> P2 {
+    pub(super) fn at(&self, p: P3) -> P2 {
         p2add(self.projection.point(p), self.shift)
     }
 
-    fn stroke(&mut self, points: Vec<P2>, width: f64, ink: Ink, fill: Option<Ink>, closed: bool) {
+    pub(super) fn stroke(
+        &mut self,
+        points: Vec<P2>,
+        width: f64,
+        ink: Ink,
+        fill: Option<Ink>,
+        closed: bool,
+    ) {
         self.obstacles.wide_polyline(&points, closed, width);
         self.items.push(Item::Stroke(Stroke {
             points,
@@ -292,106 +299,6 @@ impl Painter {
                 let (a, b) = (self.at(*from), self.at(*to));
                 self.thin_dashed(a, b);
             }
-        }
-    }
-
-    fn ground(&mut self, at: P3, along: P3, up: P3) {
-        let c = self.at(at);
-        let u = p2unit(self.projection.direction(up)).unwrap_or([0.0, -1.0]);
-        let mut t = p2unit(self.projection.direction(along)).unwrap_or([-u[1], u[0]]);
-        let reach = p2norm(self.projection.direction(along));
-        let (line_center, half) = if reach > 1e-9 {
-            (p2add(c, p2scale(u, -9.0)), reach.max(30.0))
-        } else if up == [0.0; 3] {
-            (c, 12.0)
-        } else {
-            // A small support: a triangle from the pin to the ground line.
-            let base = p2add(c, p2scale(u, -14.0));
-            let tri = vec![
-                c,
-                p2add(base, p2scale(t, 9.0)),
-                p2add(base, p2scale(t, -9.0)),
-            ];
-            self.stroke(tri, 1.2, Ink::Black, Some(Ink::Body), true);
-            (base, 14.0)
-        };
-        if t[0] < 0.0 {
-            t = p2scale(t, -1.0);
-        }
-        let a = p2add(line_center, p2scale(t, -half));
-        let b = p2add(line_center, p2scale(t, half));
-        self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
-        let count = ((2.0 * half) / 6.0).floor() as usize;
-        for k in 0..=count {
-            let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count.max(1) as f64));
-            let e = p2add(s, p2add(p2scale(u, -6.0), p2scale(t, -5.0)));
-            self.hatch_tick(s, e);
-        }
-    }
-
-    /// One thin tick of a hatching, from `s` to `e`, which labels keep clear of.
-    fn hatch_tick(&mut self, s: P2, e: P2) {
-        self.obstacles.segment(s, e);
-        self.items.push(Item::Stroke(Stroke {
-            points: vec![s, e],
-            closed: false,
-            width: 0.8,
-            ink: Ink::Black,
-            fill: None,
-            dashed: false,
-        }));
-    }
-
-    /// A hatched line through `at` along `along` (its half length), hatched away from `up`.
-    fn surface(&mut self, at: P3, along: P3, up: P3, fixed: bool) {
-        let c = self.at(at);
-        let u = p2unit(self.projection.direction(up)).unwrap_or([0.0, -1.0]);
-        let t = p2unit(self.projection.direction(along)).unwrap_or([-u[1], u[0]]);
-        let half = p2norm(self.projection.direction(along)).max(30.0);
-        let (a, b) = (p2add(c, p2scale(t, -half)), p2add(c, p2scale(t, half)));
-        self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
-        if !fixed {
-            return;
-        }
-        // The hatching's normal side, `n`, is the page's side away from `up`.
-        let n = p2scale(u, -1.0);
-        let count = ((2.0 * half) / 7.0).floor().max(1.0) as usize;
-        for k in 0..=count {
-            let s = p2add(a, p2scale(t, k as f64 * 2.0 * half / count as f64));
-            let e = p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -5.0)));
-            self.hatch_tick(s, e);
-        }
-    }
-
-    fn track(&mut self, center: P3, normal: P3, radius: f64, inside: bool) {
-        let c = self.at(center);
-        let rim: Vec<P2> = super::shapes::circle(center, normal, radius)
-            .iter()
-            .map(|p| self.at(*p))
-            .collect();
-        self.stroke(rim.clone(), 1.4, Ink::Black, None, true);
-        // A tick every 8 px along the rim, away from the disc: outward when it rolls
-        // inside, inward when outside.
-        let away = if inside { 1.0 } else { -1.0 };
-        let mut to_next_tick = 0.0;
-        for (k, &p) in rim.iter().enumerate() {
-            let q = rim[(k + 1) % rim.len()];
-            let (Some(along), length) = (
-                p2unit([q[0] - p[0], q[1] - p[1]]),
-                p2norm([q[0] - p[0], q[1] - p[1]]),
-            ) else {
-                continue;
-            };
-            while to_next_tick < length {
-                let s = p2add(p, p2scale(along, to_next_tick));
-                to_next_tick += 8.0;
-                let Some(out) = p2unit([s[0] - c[0], s[1] - c[1]]) else {
-                    continue;
-                };
-                let e = p2add(s, p2add(p2scale(out, 6.0 * away), p2scale(along, -4.0)));
-                self.hatch_tick(s, e);
-            }
-            to_next_tick -= length;
         }
     }
 

@@ -9,6 +9,7 @@
 pub mod bodies;
 pub mod build;
 pub mod fit;
+mod ground;
 pub mod layout;
 pub mod motion;
 pub mod motion_svg;

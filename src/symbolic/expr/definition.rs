@@ -154,7 +154,7 @@ impl PartialOrd for Definition {
 
 impl Ord for Definition {
     fn cmp(&self, other: &Self) -> Ordering {
-        crate::symbolic::named::natural_cmp(self.name(), other.name())
+        crate::symbolic::natural::natural_cmp(self.name(), other.name())
             .then_with(|| self.name().cmp(other.name()))
     }
 }

@@ -7,7 +7,6 @@
 
 use super::number::Number;
 use std::cmp::Ordering;
-use std::fmt;
 use std::rc::Rc;
 
 mod definition;
@@ -21,7 +20,7 @@ pub type Name = Rc<str>;
 /// A symbol: what an expression can refer to.
 ///
 /// Symbols are ordered by kind in the order below, then by name as a reader counts
-/// (`q2` before `q10`, see [`natural_cmp`](super::named::natural_cmp)), so that sums print
+/// (`q2` before `q10`, see [`natural_cmp`](super::natural::natural_cmp)), so that sums print
 /// `q1 + q2 + … + q10`.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Symbol {
@@ -64,7 +63,7 @@ impl Symbol {
 
 impl Ord for Symbol {
     fn cmp(&self, other: &Self) -> Ordering {
-        use super::named::natural_cmp;
+        use super::natural::natural_cmp;
         match (self, other) {
             (Symbol::Const(a), Symbol::Const(b)) => natural_cmp(a, b).then_with(|| a.cmp(b)),
             (Symbol::Unknown(a), Symbol::Unknown(b)) => a.cmp(b),
@@ -491,12 +490,6 @@ impl std::hash::Hash for Expr {
                 args.hash(state)
             }
         }
-    }
-}
-
-impl fmt::Display for Expr {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&super::print::plain(self))
     }
 }
 

@@ -106,7 +106,7 @@ impl Unknown {
 
     /// The name in LaTeX: `F^{O}_{x}`, `Q_{\theta}`, `\lambda_{\mathrm{loop}}`.
     pub fn latex(&self) -> String {
-        use crate::symbolic::print::{latex_name, latex_name_plain};
+        use crate::symbolic::tex_name::{latex_name, latex_name_plain};
         match self {
             Unknown::Reaction { site, component } => format!(
                 "{}^{{{}}}_{{{}}}",
@@ -137,7 +137,7 @@ impl fmt::Display for Unknown {
 /// `Q_q2 < Q_q10`), so expressions print in the same order whatever the kind of unknown.
 impl Ord for Unknown {
     fn cmp(&self, other: &Self) -> Ordering {
-        use super::super::named::natural_cmp;
+        use super::super::natural::natural_cmp;
         match (self, other) {
             // The common cases need no name written out: with one site, the names differ
             // in the component alone, whose order is that of its name.
@@ -172,7 +172,7 @@ impl PartialOrd for Unknown {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::symbolic::named::natural_cmp;
+    use crate::symbolic::natural::natural_cmp;
 
     fn reaction(site: &str, kind: ComponentKind, axis: Axis) -> Unknown {
         Unknown::Reaction {

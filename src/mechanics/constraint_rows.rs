@@ -1,0 +1,115 @@
+//! What the constraints of a model are, once built: rows at the position, velocity and
+//! acceleration levels, each with the unknown that enforces it, and the friction sites'
+//! rows that hold only while they stick. Built in [`super::constraints`].
+
+use super::error::MechanicsError;
+use crate::symbolic::diff::time_derivative;
+use crate::symbolic::{Expr, Symbol, Unknown};
+
+/// What imposes a constraint row.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RowOrigin {
+    /// A reaction component of a closure or contact site.
+    Site {
+        /// Index into `Model::sites`.
+        site: usize,
+        /// Index into the site's reactions.
+        component: usize,
+    },
+    /// A `position` entry, by index into `Problem::constraints`.
+    Position(usize),
+    /// A `velocity` entry.
+    Velocity(usize),
+    /// A prescribed coordinate, by coordinate index.
+    Prescribed(usize),
+}
+
+/// One scalar constraint.
+#[derive(Clone, Debug)]
+pub struct ConstraintRow {
+    /// What imposes it.
+    pub origin: RowOrigin,
+    /// A name for messages, e.g. `R.Fx`, `roll.Fz`, `rod`.
+    pub name: String,
+    /// The position-level expression of a holonomic row (zero when met).
+    pub position: Option<Expr>,
+    /// The velocity-level expression, affine in the rates (zero when met).
+    pub velocity: Expr,
+    /// The unknown that enforces it.
+    pub unknown: Symbol,
+}
+
+impl ConstraintRow {
+    /// The acceleration-level expression, linear in the q''.
+    ///
+    /// # Errors
+    /// When the expression cannot be differentiated.
+    pub fn acceleration(&self) -> Result<Expr, MechanicsError> {
+        time_derivative(&self.velocity).map_err(|e| MechanicsError {
+            path: "constraints".into(),
+            message: format!("{}: {e}", self.name),
+            hint: None,
+        })
+    }
+}
+
+/// Every constraint of a model, with the coordinates and rates it makes dependent.
+#[derive(Clone, Debug, Default)]
+pub struct Constraints {
+    /// The rows kept, in order: closures, contacts, entries, prescribed coordinates.
+    pub rows: Vec<ConstraintRow>,
+    /// Rows left out, each with why.
+    pub dropped: Vec<(String, String)>,
+    /// Coordinates solved from the position rows.
+    pub dependent: Vec<usize>,
+    /// Coordinates whose rates are solved from the velocity rows (the dependent ones first).
+    pub dependent_rates: Vec<usize>,
+    /// Prescribed coordinates.
+    pub prescribed: Vec<usize>,
+    /// What was chosen and why, for the user.
+    pub notes: Vec<String>,
+    /// The sites where Coulomb friction acts, each with the rows that hold while it
+    /// sticks; those rows are not among `rows`, so the rates they tie stay independent.
+    pub friction: Vec<FrictionSite>,
+    /// Each rolling contact's name and the sine of the angle between its axle and the
+    /// plane's normal, which must not vanish.
+    pub tilts: Vec<(String, Expr)>,
+}
+
+impl Constraints {
+    /// Whether there is nothing to enforce.
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+}
+
+/// A site where Coulomb friction acts.
+#[derive(Clone, Debug)]
+pub struct FrictionSite {
+    /// The contact's name, which names the site everywhere (`find.reactions`, the JSON).
+    pub name: String,
+    /// Index into `Model::sites`.
+    pub site: usize,
+    /// The coefficient of friction μ, a scalar of constants.
+    pub coefficient: Expr,
+    /// The rows that hold while the site sticks: the slip velocity along each tangent is
+    /// zero (one in 2D, two in 3D). Each row's unknown is the friction force's component
+    /// along that tangent, and its velocity expression is that slip velocity component.
+    pub stick: Vec<ConstraintRow>,
+    /// The normal force's unknown, along the plane's normal (or the line of centres).
+    pub normal: Symbol,
+}
+
+/// The symbol of a prescribed coordinate's drive.
+pub fn drive_symbol(coordinate: &str) -> Symbol {
+    Symbol::Unknown(Unknown::Drive {
+        coordinate: coordinate.into(),
+    })
+}
+
+/// The symbol of a `position` or `velocity` entry's multiplier.
+pub fn multiplier_symbol(name: &str) -> Symbol {
+    Symbol::Unknown(Unknown::Multiplier {
+        constraint: name.into(),
+    })
+}

@@ -1,0 +1,79 @@
+//! Names in LaTeX: the one piece of printing that the styles need as well as the
+//! printer, so it stands below both.
+
+const GREEK: [&str; 24] = [
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
+    "omega", "Omega",
+];
+const GREEK_UPPER: [&str; 10] = [
+    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi",
+];
+
+/// A name in LaTeX: Greek letters spelled out become symbols, trailing digits and
+/// `_suffix` become subscripts, longer words are set upright.
+pub fn latex_name(name: &str) -> String {
+    let (stem, subscript) = match name.split_once('_') {
+        Some((stem, sub)) if !stem.is_empty() && !sub.is_empty() => {
+            (stem.to_string(), Some(sub.to_string()))
+        }
+        _ => {
+            let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
+            if stem.is_empty() || stem.len() == name.len() {
+                (name.to_string(), None)
+            } else {
+                (stem.to_string(), Some(name[stem.len()..].to_string()))
+            }
+        }
+    };
+    let greek = |word: &str| GREEK.contains(&word) || GREEK_UPPER.contains(&word);
+    // A letter (or a Greek letter's name) followed by one more letter is a symbol with a
+    // subscript, as textbooks write them: `Is` → I_s, `mT` → m_T, `tauL` → τ_L, `kp2` → k_{p2}.
+    let split = stem
+        .char_indices()
+        .last()
+        .filter(|&(i, c)| i > 0 && c.is_ascii_alphabetic())
+        .map(|(i, _)| (&stem[..i], &stem[i..]))
+        // After a Greek letter's name only a capital: `pin` is a word, not π_n.
+        .filter(|(head, letter)| {
+            head.chars().count() == 1 || (greek(head) && letter.starts_with(char::is_uppercase))
+        })
+        .filter(|_| !greek(&stem) && stem.chars().all(|c| c.is_ascii_alphabetic()));
+    // An inertia component: `Ixx` → I_{xx}, `Jyz` → J_{yz}.
+    let axes = stem.len() == 3
+        && stem.starts_with(|c: char| c.is_ascii_uppercase())
+        && stem[1..].chars().all(|c| "xyz".contains(c));
+    let split = split.or_else(|| axes.then(|| (&stem[..1], &stem[1..])));
+    if let Some((head, letter)) = split {
+        let head = if greek(head) {
+            format!("\\{head}")
+        } else {
+            head.to_string()
+        };
+        let sub = subscript.map(|s| latex_name_plain(&s)).unwrap_or_default();
+        return format!("{head}_{{{letter}{sub}}}");
+    }
+    let body = if greek(&stem) {
+        format!("\\{stem}")
+    } else if stem.chars().count() == 1 {
+        stem.clone()
+    } else {
+        format!("\\mathrm{{{}}}", stem.replace('_', "\\_"))
+    };
+    match subscript {
+        Some(sub) => format!("{body}_{{{}}}", latex_name_plain(&sub)),
+        None => body,
+    }
+}
+
+/// A subscript in LaTeX: digits as they are, a word upright, `a_b` as `a,b`.
+pub(crate) fn latex_name_plain(sub: &str) -> String {
+    if sub.chars().all(|c| c.is_ascii_alphanumeric())
+        && sub.chars().count() > 1
+        && !sub.chars().all(|c| c.is_ascii_digit())
+    {
+        format!("\\mathrm{{{sub}}}")
+    } else {
+        sub.replace('_', ",")
+    }
+}
