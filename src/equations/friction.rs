@@ -26,5 +26,5 @@ pub fn stick_equations(
     unknowns: &[Symbol],
 ) -> Result<Vec<Equation>, MechanicsError> {
     let rows = model.constraints.friction.iter().flat_map(|f| &f.stick);
-    super::system::constraint_equations(rows, unknowns)
+    super::constraint_rows::constraint_equations(rows, unknowns)
 }

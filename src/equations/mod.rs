@@ -2,6 +2,7 @@
 //! and the reactions.
 
 pub mod composite;
+mod constraint_rows;
 pub mod energy;
 pub mod friction;
 pub mod kane;

@@ -1,12 +1,13 @@
 //! Assembling the chosen rows into the symbolic linear system `A x = b`.
 
-use crate::mechanics::constraints::{ConstraintRow, RowOrigin};
+use super::constraint_rows::constraint_equations;
+use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::independent::{DependentSpeeds, KeptForces};
 use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::{actions, Action};
 use crate::plan::planner::{self, Rejected};
 pub use crate::plan::rows::Form;
-use crate::plan::rows::{Equation, Groups, Inertia, Sum};
+use crate::plan::rows::{Equation, Inertia};
 use crate::problem::Problem;
 use crate::symbolic::budget;
 use crate::symbolic::eval::Values;
@@ -109,32 +110,6 @@ fn constraint_unknowns(model: &Model) -> Vec<Symbol> {
         .filter(|r| !matches!(r.origin, RowOrigin::Site { .. }))
         .map(|r| r.unknown.clone())
         .collect()
-}
-
-/// The constraint rows at the acceleration level, as equations.
-pub(super) fn constraint_equations<'r>(
-    rows: impl Iterator<Item = &'r ConstraintRow>,
-    unknowns: &[Symbol],
-) -> Result<Vec<Equation>, MechanicsError> {
-    rows.map(|row| {
-        let expression = row.acceleration()?;
-        Ok(Equation {
-            free_body: Vec::new(),
-            sum: Sum::Constraint {
-                name: row.name.clone(),
-            },
-            direction: None,
-            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
-            groups: Groups {
-                contact: expression.clone(),
-                distance: Expr::zero(),
-                inertia_force: Expr::zero(),
-                inertia_torque: Expr::zero(),
-            },
-            expression,
-        })
-    })
-    .collect()
 }
 
 /// Derives the equations of motion of `problem` by `method`, for numbers
