@@ -7,17 +7,7 @@ use mbd_tutor::numeric::simulate::simulate;
 use mbd_tutor::numeric::system::System;
 use mbd_tutor::problem::load_file;
 
-/// A seeded generator, so that a failure names a state that can be replayed.
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-    }
-}
+use crate::support::Lcg;
 
 fn bundled() -> Vec<std::path::PathBuf> {
     let mut paths: Vec<_> = std::fs::read_dir("problems")

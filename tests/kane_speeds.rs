@@ -11,17 +11,7 @@ use mbd_tutor::problem::{load_file, Problem};
 use mbd_tutor::symbolic::eval::eval;
 use mbd_tutor::symbolic::Symbol;
 
-/// A seeded generator, so that a failure names a state that can be replayed.
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-    }
-}
+use crate::support::Lcg;
 
 /// Whether a problem has a contact with Coulomb friction: there the normal force must be an
 /// unknown (the friction is μ|N|), and Kane's rows keep the contact's forces.

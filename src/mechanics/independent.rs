@@ -89,15 +89,9 @@ pub struct DependentSpeeds {
 }
 
 impl DependentSpeeds {
-    /// The dependent speeds of `model`; `None` when it has no velocity constraints, when
-    /// the constraints do not determine as many dependent rates as they have rows, or when
-    /// the map would be too long to write (then Kane's method keeps the constraint forces).
-    pub fn of(model: &Model) -> Option<DependentSpeeds> {
-        Self::written(model).ok().flatten()
-    }
-
-    /// As [`Self::of`]: `Ok(None)` when there are no velocity constraints to solve, the
-    /// reason the constraint forces stay when the map is not written.
+    /// The dependent speeds of `model`: `Ok(None)` when it has no velocity constraints to
+    /// solve, and why Kane's rows keep the constraint forces when the map is not written
+    /// (the constraints do not fix the dependent rates, or the map would be too long).
     ///
     /// # Errors
     /// [`KeptForces`]: why the dependent speeds are not written.

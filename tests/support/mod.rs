@@ -226,3 +226,17 @@ pub fn pdflatex_present(what: &str) -> bool {
     }
     present
 }
+
+/// A seeded generator of numbers in [-1, 1), so that a failure names a state that can be
+/// replayed.
+pub struct Lcg(pub u64);
+
+impl Lcg {
+    pub fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    }
+}
