@@ -4,7 +4,7 @@
 //! # Steps
 //!
 //! Data flows one way, each stage reading what the stages before it produced:
-//! problem → model → plan → equations → numeric → render.
+//! problem → model → plan → equations → numeric → solution → render.
 //!
 //! 1. [`problem`]: read the JSON problem and validate it into a typed
 //!    [`Problem`](problem::Problem), every error at once with its path and a hint.
@@ -23,9 +23,12 @@
 //!    and for a large tree built that way alone, never formed.
 //! 5. [`numeric`]: the equations compiled for numbers, the constraints' assembly, the
 //!    linear solve, integration and its checks (steps 5, 6), and linearization.
-//! 6. [`render`]: the worked solution as Markdown, LaTeX or HTML from what the stages gave
-//!    ([`pipeline::Worked`]), and its pictures (`render::draw`: the configuration and the
-//!    free-body diagrams, SVG and TikZ).
+//! 6. [`solution`]: the worked solution's content from what the stages gave
+//!    ([`pipeline::Worked`]): each step's rows, tables, where-lists and reasons, the
+//!    pictures' scenes (`solution::pictures`: the configuration, the free-body diagrams and
+//!    the motion), the answers and the checks.
+//! 7. [`render`]: writes that content as Markdown, LaTeX or HTML through Tera templates,
+//!    and the scenes as SVG and TikZ; it reads none of the stages before the solution.
 //!
 //! [`pipeline`] runs the stages for the commands in [`cmd`] (one thin file each):
 //! `load`, `derive`, the [`Solver`](pipeline::Solver) and the [`Linearizer`](pipeline::Linearizer)
@@ -44,6 +47,7 @@ pub mod pipeline;
 pub mod plan;
 pub mod problem;
 pub mod render;
+pub mod solution;
 pub mod symbolic;
 
 pub use error::{BatchError, Error};

@@ -32,7 +32,7 @@ fn markdown(name: &str) -> String {
         .join(name);
     let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
     let solution = mbd_tutor::pipeline::work(&problem, Method::Kane)
-        .map(|worked| mbd_tutor::render::build::solution(&worked))
+        .map(|worked| mbd_tutor::solution::worked(&worked))
         .expect("Kane's method derives");
     render(&solution, Format::Markdown, None, false).expect("the handout renders")
 }
@@ -106,7 +106,7 @@ fn the_other_methods_show_no_partial_velocities() {
     let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
     for method in [Method::MotionLaw, Method::NewtonEuler] {
         let solution = mbd_tutor::pipeline::work(&problem, method)
-            .map(|worked| mbd_tutor::render::build::solution(&worked))
+            .map(|worked| mbd_tutor::solution::worked(&worked))
             .expect("derives");
         assert!(solution.partial_velocities.is_empty());
         assert!(solution.equations.iter().all(|e| e.active_tex.is_empty()));

@@ -8,7 +8,7 @@ use mbd_tutor::equations::{derive, Derivation, Method};
 use mbd_tutor::plan::choose::blocks;
 use mbd_tutor::plan::rejection::{Reason, SHOWN};
 use mbd_tutor::problem::load_file;
-use mbd_tutor::render::derived::plan;
+use mbd_tutor::solution::derived::plan;
 
 /// `(free body, equation, unknowns)` of each row, as the plan's table names them.
 fn rows(derivation: &Derivation) -> Vec<(String, String, Vec<String>)> {
@@ -234,7 +234,7 @@ fn explain_verbose_lists_every_rejected_candidate() {
 /// internal axis name such as `N.z` or a reaction's `O.Fx`.
 #[test]
 fn step_5_heads_each_equation_in_math() {
-    use mbd_tutor::render::row_view::equation_view;
+    use mbd_tutor::solution::row_view::equation_view;
     for path in crate::support::all_problems() {
         let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         for method in Method::ALL {

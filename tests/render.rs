@@ -296,7 +296,7 @@ fn worked_solution(path: &Path, method: mbd_tutor::equations::Method) -> Solutio
         mbd_tutor::problem::load_file(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let worked = mbd_tutor::pipeline::work(&problem, method)
         .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    mbd_tutor::render::build::solution(&worked)
+    mbd_tutor::solution::worked(&worked)
 }
 
 /// Every problem of `problems/`, as the pipeline builds it, in every format; every `.tex`

@@ -4,8 +4,8 @@
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::pipeline::derive_for_handout;
-use mbd_tutor::render::derived::plan;
-use mbd_tutor::render::row_view::equation_view;
+use mbd_tutor::solution::derived::plan;
+use mbd_tutor::solution::row_view::equation_view;
 
 fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
     let mut out =

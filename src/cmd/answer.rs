@@ -2,7 +2,7 @@
 
 use crate::cli::{AnswerArgs, AnswerFormat};
 use crate::output::write_output;
-use crate::render::answer_sheet;
+use crate::solution::answer_sheet;
 use crate::Error;
 
 /// Runs `mbd-tutor answer`.

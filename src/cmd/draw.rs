@@ -4,7 +4,8 @@ use crate::cli::{Common, DrawArgs};
 use crate::equations::system::State;
 use crate::equations::{Derivation, Method};
 use crate::numeric::system::System;
-use crate::render::draw::{draw, Drawing, View};
+use crate::render::draw::{Drawing, View};
+use crate::solution::pictures::draw;
 use crate::Error;
 
 /// The derivation whose plan the pictures show and the q'' at the state, if solvable. The
@@ -107,7 +108,8 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
 /// A usage error for a bad `--duration`, `--fps` or `--view`, or too many frames (before
 /// any work); an invalid problem; a simulation that cannot start.
 pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
-    use crate::render::draw::{motion, motion_svg};
+    use crate::render::draw::motion_svg;
+    use crate::solution::pictures::motion;
     let view = match &args.view {
         Some(text) => View::parse(text).map_err(Error::Usage)?,
         None => View::Isometric,

@@ -6,6 +6,7 @@ use crate::error::BatchError;
 use crate::output::write_output;
 use crate::pipeline;
 use crate::render::{self, Format, Solution};
+use crate::solution;
 use crate::Error;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -105,21 +106,21 @@ pub fn rendered(
     let problem = super::load_with_overrides(&common)?;
     let method = super::method(args.common.method);
     let mut solution: Solution = if student {
-        let mut setup = render::build::setup(&problem, method);
+        let mut setup = solution::setup(&problem, method);
         // The handout shows the system; its free bodies are left to draw.
         if let Ok(worked) = pipeline::work(&problem, method) {
-            if let Some(drawing) = render::draw::initial_configuration(&worked.derivation) {
+            if let Some(drawing) = solution::pictures::initial_configuration(&worked.derivation) {
                 setup.configuration = drawing.figure();
             }
             // As many blank rows as the worked solution has free bodies and equations.
-            let full = render::build::solution(&worked);
+            let full = solution::worked(&worked);
             setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
             setup.plan.rows = vec![Default::default(); full.plan.rows.len()];
         }
         setup
     } else {
         let worked = pipeline::work(&problem, method)?;
-        let mut solution = render::build::solution(&worked);
+        let mut solution = solution::worked(&worked);
         if args.format == FormatArg::Html {
             with_motion(&mut solution, &problem, &worked.derivation);
         }
@@ -134,13 +135,13 @@ pub fn rendered(
         let in_rates = problem.without_speeds();
         let linearizer = pipeline::Linearizer::new(&pipeline::derive(&in_rates, method)?);
         let l = linearizer.at(&in_rates, 0.0, &q, &rates)?;
-        solution.linearization = Some(render::linearization::section(&problem, &l));
+        solution.linearization = Some(solution::linearization::section(&problem, &l));
     }
     if !problem.questions.is_empty() {
         solution.answers = if student {
-            render::answers::blank(&problem)
+            solution::answers::blank(&problem)
         } else {
-            render::answers::section(&problem, &pipeline::answers(&problem, method)?)
+            solution::answers::section(&problem, &pipeline::answers(&problem, method)?)
         };
     }
     for plot in &mut solution.simulation.plots {
@@ -165,7 +166,8 @@ fn with_motion(
     problem: &crate::problem::Problem,
     derivation: &crate::equations::Derivation,
 ) {
-    use render::draw::{motion, motion_svg};
+    use crate::solution::pictures::motion;
+    use render::draw::motion_svg;
     let duration = problem.simulate.duration;
     match motion::frames(problem, derivation, duration, motion::DEFAULT_FPS) {
         Ok(frames) => {

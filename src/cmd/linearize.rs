@@ -115,7 +115,7 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
         results.push(linearizer.at(&swept, args.at.given.time, &q, &rates)?);
     }
     if let Some(path) = plot_path {
-        let svg = crate::render::eigen_plot::sweep_plot(
+        let svg = crate::solution::eigen_plot::sweep_plot(
             &problem.title,
             &sweep.name,
             &sweep.values,

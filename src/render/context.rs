@@ -14,7 +14,7 @@
 //!
 //! So user text (titles, descriptions, the statement) is only ever a value in the context,
 //! never part of a template's source, and can never be evaluated by Tera or by TeX.
-//! Numbers are formatted before they get here, with [`crate::numeric::format::fixed`].
+//! Numbers are formatted before they get here, with [`crate::symbolic::format::fixed`].
 
 use serde::Serialize;
 
@@ -97,9 +97,9 @@ pub struct Solution {
     /// Step 6: the simulation and its checks.
     pub simulation: Simulation,
     /// Small motions about a state (`explain --linearize`).
-    pub linearization: Option<super::linearization::LinearizationSection>,
+    pub linearization: Option<super::sections::LinearizationSection>,
     /// The answers to the problem's `find.questions` (blank in the student's handout).
-    pub answers: Vec<super::answers::AnswerView>,
+    pub answers: Vec<super::sections::AnswerView>,
 }
 
 /// One constraint row as step 1 shows it.

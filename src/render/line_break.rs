@@ -13,7 +13,7 @@ pub(super) const HTML_WIDTH: f64 = 64.0;
 /// How many symbols a line of a LaTeX display holds. A `multline*` line has 489 pt; over
 /// the bundled handouts (every line measured by LaTeX's `\settowidth`) 72 symbols made the
 /// widest line 484 pt, so 70 leaves room for symbols wider than those seen.
-pub(super) const LINE_SYMBOLS: f64 = 70.0;
+pub const LINE_SYMBOLS: f64 = 70.0;
 
 /// The most characters of LaTeX one displayed equation holds: a longer one goes on in the
 /// next display, since `multline*` cannot break across pages and a reader cannot take in

@@ -21,14 +21,14 @@ const MOST_PATTERN_COLUMNS: usize = 44;
 const MOST_PATTERN_ROWS: usize = 60;
 
 /// An entry's value at the initial state, as the tables and lists of values print it.
-pub(super) fn value_tex(initial: &impl Fn(&Expr) -> f64, e: &Expr) -> String {
+pub fn value_tex(initial: &impl Fn(&Expr) -> f64, e: &Expr) -> String {
     math_number(&fixed_or_zero(initial(e)))
 }
 
 /// Where `A` and `b` are not zero, a dot in a table for each, columns by number (in blocks
 /// of at most [`MOST_PATTERN_COLUMNS`]), rows by their number in step 5: the shape of the
 /// system, such as Newton–Euler's reactions shared by two bodies' rows.
-pub(super) fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> Vec<String> {
+pub fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> Vec<String> {
     let dot = |e: &Expr| {
         if e.is_zero() {
             String::new()
@@ -63,7 +63,7 @@ pub(super) fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> 
 /// last. A block leaves out the rows that are zero in all its columns, as a printed sparse
 /// matrix does: a floating body's rows are zero under a chain's q̈, and a reaction's column
 /// is zero but in the rows of the bodies it acts on.
-pub(super) fn value_tables(
+pub fn value_tables(
     labels: &[String],
     x: &[String],
     a: &[Vec<Expr>],
@@ -104,7 +104,7 @@ pub(super) fn value_tables(
 }
 
 /// The whole table, when it prints no wider than the line.
-pub(super) fn whole(
+pub fn whole(
     labels: &[String],
     x: &[String],
     a: &[Vec<String>],

@@ -1,48 +1,31 @@
-//! The worked solution: a Tera context and templates -> Markdown, LaTeX, HTML, plots.
+//! Writing the worked solution: its content ([`Solution`], filled by the solution stage,
+//! `crate::solution`) through a Tera template into Markdown, LaTeX or HTML, its pictures'
+//! scenes into SVG and TikZ ([`draw`]), its plots into SVG and pgfplots ([`plot`]).
 //!
-//! [`build::solution`] turns what the stages gave (`pipeline::work`: the problem, its
-//! equations, the solution at the initial state, the simulation and its checks) into a
-//! [`Solution`]: plain strings and tables; nothing here derives, solves or simulates. [`render`] puts it through
-//! one of the templates in `templates/`, which are embedded in the binary; an instructor
-//! can restyle a handout by passing a directory of replacements.
+//! Nothing here derives, solves or simulates, and nothing here reads the stages before the
+//! solution: it writes what it is given. [`render`] puts a [`Solution`] through one of the
+//! templates in `templates/`, which are embedded in the binary; an instructor can restyle a
+//! handout by passing a directory of replacements.
 
-pub mod answer_sheet;
-pub mod answers;
-pub mod build;
-mod by_speed;
-pub mod constrained;
+pub mod by_speed;
 pub mod context;
-pub mod derived;
 pub mod draw;
-pub mod eigen_plot;
 pub mod escape;
-mod free_bodies;
-mod friction;
-mod independent;
-pub mod kane;
-mod kinematics;
-mod line_break;
-pub mod linearization;
-pub mod long;
+pub mod line_break;
 pub mod markup;
 pub mod math_width;
 pub mod mathml;
-pub mod matrix;
-mod matrix_tables;
-pub mod mode_shape;
-mod numbers;
-mod plan_table;
+pub mod matrix_tables;
+pub mod numbers;
+pub mod plan_table;
 pub mod plot;
 mod prepare;
-pub mod rejected;
-pub mod row_view;
 pub mod safe_math;
 pub mod sample;
-pub mod simulation;
-pub mod speeds;
+pub mod sections;
 pub mod tex_wrap;
 pub mod units;
-mod where_list;
+pub mod where_list;
 
 pub use context::Solution;
 

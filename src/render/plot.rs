@@ -2,7 +2,7 @@
 //!
 //! Both are deterministic: the same data gives the same bytes.
 
-use crate::numeric::format::fixed;
+use crate::symbolic::format::fixed;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::fmt;
@@ -164,7 +164,7 @@ pub fn line_plot(
 }
 
 /// The chart [`axes`] draws on: f64 by f64.
-pub(super) type Chart<'a, 'b> =
+pub type Chart<'a, 'b> =
     ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// A chart on `area` with its axes drawn as every SVG plot draws them: no minor grid, tick
@@ -183,7 +183,7 @@ pub fn x_axis_span() -> [f64; 2] {
     ]
 }
 
-pub(super) fn axes<'a, 'b>(
+pub fn axes<'a, 'b>(
     area: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
     x_label: &str,
     y_label: &str,
@@ -224,7 +224,7 @@ fn tick(value: f64, range: (f64, f64)) -> String {
 /// The range covering the finite `values`, padded by `pad` of its span on each side so
 /// lines clear the frame; a flat range is widened so the axis has a length, and no value
 /// at all gives (-1, 1).
-pub(super) fn padded_range(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
+pub fn padded_range(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
     let (low, high) = values
         .filter(|x| x.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {

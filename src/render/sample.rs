@@ -71,7 +71,7 @@ pub fn sample() -> Solution {
         }],
         simulation: simulation(),
         linearization: None,
-        answers: vec![super::answers::AnswerView {
+        answers: vec![super::sections::AnswerView {
             question: s("Find the angular acceleration of rod A at the instant of release."),
             at_tex: s("t = 0\\ \\mathrm{s}"),
             at_note: s("the initial state"),

@@ -16,14 +16,14 @@ fn shape_points(shape: &Shape) -> Vec<P3> {
             normal,
             radius,
             ..
-        } => super::shapes::circle(*center, *normal, *radius),
+        } => super::numbers::circle(*center, *normal, *radius),
         Shape::LightRod { from, to } => vec![*from, *to],
         Shape::Track {
             center,
             normal,
             radius,
             ..
-        } => super::shapes::circle(*center, *normal, *radius),
+        } => super::numbers::circle(*center, *normal, *radius),
         Shape::Surface { at, along, .. } => vec![add(*at, *along), add(*at, scale(*along, -1.0))],
         Shape::Bar(p) | Shape::Polygon(p) | Shape::Outline(p) => p.clone(),
         Shape::Dot(p) | Shape::Pin(p) | Shape::Ball(p) | Shape::Weld(p) => vec![*p],

@@ -79,7 +79,7 @@ impl Painter {
     /// A fixed circular track that a disc rolls on, hatched on the side away from it.
     pub(super) fn track(&mut self, center: P3, normal: P3, radius: f64, inside: bool) {
         let c = self.at(center);
-        let rim: Vec<P2> = super::shapes::circle(center, normal, radius)
+        let rim: Vec<P2> = super::numbers::circle(center, normal, radius)
             .iter()
             .map(|p| self.at(*p))
             .collect();

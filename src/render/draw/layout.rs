@@ -105,7 +105,7 @@ impl Painter {
     /// A wheel: a circle (an ellipse, seen obliquely) with a spoke and a hub.
     fn wheel(&mut self, center: P3, normal: P3, radius: f64, mark: P3) {
         let c = self.at(center);
-        let rim = super::shapes::circle(center, normal, radius);
+        let rim = super::numbers::circle(center, normal, radius);
         let outline: Vec<P2> = rim.iter().map(|p| self.at(*p)).collect();
         self.obstacles.polyline(&outline, true);
         // The image of the disc: M = A [u v] r; its semi-axes from M Mᵀ.

@@ -4,10 +4,10 @@
 //! come from the equations and the simulation start empty, and the templates leave out
 //! what is empty.
 
-use super::context::{Constant, Coordinate, Frame, Named, Plan, Simulation, Solution};
 use crate::equations::Method;
-use crate::numeric::format::fixed;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
+use crate::render::context::{Constant, Coordinate, Frame, Named, Plan, Simulation, Solution};
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 
 /// The whole worked solution from what the stages gave (`pipeline::work`): step 1 from
@@ -220,7 +220,7 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
                 rate_tex: latex(&problem.coordinate_expr(i, 1)),
                 description: c.description.clone().unwrap_or_default(),
                 joint: format!("{} ({})", joint.name, joint.kind.name()),
-                unit_tex: super::units::unit_tex(&unit),
+                unit_tex: crate::render::units::unit_tex(&unit),
                 initial: fixed(c.initial),
                 initial_rate: fixed(c.rate),
             }
@@ -235,7 +235,7 @@ fn constants(problem: &Problem) -> Vec<Constant> {
         .map(|c| Constant {
             name_tex: latex_name(&c.name),
             value: fixed(c.value),
-            unit_tex: super::units::unit_tex(c.unit.as_deref().unwrap_or_default()),
+            unit_tex: crate::render::units::unit_tex(c.unit.as_deref().unwrap_or_default()),
             description: c.description.clone().unwrap_or_default(),
         })
         .collect()

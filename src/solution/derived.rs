@@ -1,18 +1,18 @@
 //! Steps 2 to 6 of the worked solution: what the derivation and the simulation give,
 //! turned into the strings and tables of [`Solution`].
 
-use super::context::{
-    InitialValue, Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution,
-};
 use super::long::LONG_EQUATION;
 use crate::equations::{Derivation, Method};
 use crate::mechanics::{Model, Vector};
-use crate::numeric::format::{fixed, fixed_or_zero};
 use crate::pipeline::Worked;
 use crate::plan::forces::ActionKind;
 use crate::plan::rows::Sum;
 use crate::problem::{BodyId, Problem};
+use crate::render::context::{
+    InitialValue, Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution,
+};
 use crate::symbolic::collect::{self, latex_with_squares};
+use crate::symbolic::format::{fixed, fixed_or_zero};
 use crate::symbolic::named::{as_shown, named_definitions};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};
 use crate::symbolic::roots::roots_of_squares;
@@ -37,7 +37,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         (solution.constraints, solution.constraint_notes) =
             super::constrained::constraints(derivation);
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
-        solution.force_definitions = super::where_list::grouped(force_definitions(derivation));
+        solution.force_definitions =
+            crate::render::where_list::grouped(force_definitions(derivation));
         let by_partials;
         (solution.kinematics, by_partials) = super::kinematics::kinematics(derivation);
         solution.equations = derivation
@@ -66,7 +67,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             let rule = super::kinematics::partial_velocity_definition(derivation);
             definitions.insert(0, rule);
         }
-        solution.kinematic_definitions = super::where_list::grouped(definitions);
+        solution.kinematic_definitions = crate::render::where_list::grouped(definitions);
         solution.speeds = super::speeds::speeds(derivation);
     });
     // Only those the solution prints: a text formed and then given up (an entry given by
@@ -95,8 +96,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             name_tex: latex(&problem.coordinate_expr(i, 2)),
             value: fixed_or_zero(initial.accelerations[i]),
             unit_tex: match c.kind {
-                crate::problem::CoordinateKind::Angle => super::units::unit_tex("rad/s^2"),
-                crate::problem::CoordinateKind::Distance => super::units::unit_tex("m/s^2"),
+                crate::problem::CoordinateKind::Angle => crate::render::units::unit_tex("rad/s^2"),
+                crate::problem::CoordinateKind::Distance => crate::render::units::unit_tex("m/s^2"),
             },
         })
         .collect();
@@ -123,7 +124,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         })
         .collect();
     // The pictures at the initial state, the configuration first.
-    let drawings = crate::render::draw::draw(
+    let drawings = crate::solution::pictures::draw(
         derivation,
         0.0,
         q0,
@@ -132,7 +133,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         crate::render::draw::View::Isometric,
     );
     if drawings.len() > 1 {
-        solution.free_body_legend = crate::render::draw::FREE_BODY_LEGEND.into();
+        solution.free_body_legend = crate::solution::pictures::FREE_BODY_LEGEND.into();
     }
     for drawing in &drawings {
         if drawing.free_body.is_empty() {
@@ -272,7 +273,7 @@ pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
 pub fn force_definitions(derivation: &Derivation) -> Vec<Named> {
     let components: Vec<Expr> = action_components(derivation).map(as_shown).collect();
     let (speeds, plain) = speed_indices(derivation);
-    super::by_speed::merged(named_list(named_definitions(&components)), &speeds, &plain)
+    crate::render::by_speed::merged(named_list(named_definitions(&components)), &speeds, &plain)
 }
 
 /// The speeds as a name's index writes them (`q_{1}`, `\\phi`) and as a note does (`q1`).
@@ -394,7 +395,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         Method::Kane => "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".into(),
     };
     Plan {
-        columns: super::plan_table::columns(&rows),
+        columns: crate::render::plan_table::columns(&rows),
         rows,
         rejected_total: rejected_all.len(),
         rejected,
@@ -423,7 +424,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .filter(|d| !forces.contains(d))
         .collect();
     let (speeds, plain) = speed_indices(derivation);
-    let merged = super::by_speed::merged(named_list(used), &speeds, &plain);
+    let merged = crate::render::by_speed::merged(named_list(used), &speeds, &plain);
     // A definition too long to read is given by what it is; the numbers use the formula.
     merged
         .into_iter()

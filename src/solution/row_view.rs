@@ -1,11 +1,11 @@
 //! Step 5: one row as the worked solution writes it: as formed (the Motion Law's groups, or
 //! Kane's F_r and F*_r), then simplified, with its heading.
 
-use super::context::Equation as EquationView;
 use super::derived::{bodies_name, initial_sign, unknowns_tex, uses_shown};
 use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
 use crate::equations::Derivation;
 use crate::plan::rows::{Equation, Sum};
+use crate::render::context::Equation as EquationView;
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::as_shown;
 use crate::symbolic::print::latex;

@@ -1,9 +1,9 @@
 //! Equations too long to read whole, written with named coefficients: a row of step 5 as
 //! `A_{i,1} x_1 + … = b_i`, and a right-hand side collected by the products of rates.
 
-use super::context::Equation as EquationView;
 use crate::equations::Derivation;
 use crate::plan::rows::{Equation, Sum};
+use crate::render::context::Equation as EquationView;
 use crate::symbolic::print::{latex, latex_name, list_by_runs};
 use crate::symbolic::{Expr, Symbol};
 

@@ -1,10 +1,10 @@
 //! Step 3's candidates not used: the sentence for each typed reason, in the notation the
 //! plan's table uses, and the sentence on the order in which the rows are solved.
 
-use super::context::Rejected as RejectedView;
 use crate::equations::Derivation;
 use crate::plan::planner::{Reason, Rejected};
 use crate::plan::rejection::SpecialState;
+use crate::render::context::Rejected as RejectedView;
 use crate::symbolic::print::latex;
 use crate::symbolic::Expr;
 

@@ -1,13 +1,13 @@
 //! Building the scenes: the configuration, and each free body with its kinetic diagram.
 
 use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
-use super::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use super::shapes;
 use crate::equations::Derivation;
 use crate::mechanics::joints::ComponentKind;
 use crate::plan::forces::{Action, ActionKind, Source};
 use crate::plan::rows::is_external;
 use crate::problem::{BodyId, ForcePoint, JointKind, LoadKind, PointRef};
+use crate::render::draw::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::Expr;
@@ -118,7 +118,7 @@ impl Setting<'_, '_, '_> {
     /// The springs and dampers, with ground marks at their ends on `N`.
     fn elements(&self, shapes: &mut Vec<Shape>) {
         let model = &self.derivation.model;
-        let lanes = super::strokes::lanes(&self.problem().loads);
+        let lanes = super::lanes::lanes(&self.problem().loads);
         for (load, &lane) in self.problem().loads.iter().zip(&lanes) {
             let (between, spring) = match &load.kind {
                 LoadKind::Spring { between, .. } => (between, true),

@@ -2,12 +2,12 @@
 //! equation it comes from. The whole table when it fits the line; otherwise entry by entry,
 //! a long right-hand side collected by the products of rates.
 
-use super::context::{MatrixEntry, MatrixForm, Named};
 use super::long::{by_rates, LONG_EQUATION};
-use super::math_width::printed_width;
-use super::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
+use crate::render::context::{MatrixEntry, MatrixForm, Named};
+use crate::render::math_width::printed_width;
+use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
 use crate::symbolic::collect::{latex_collected, latex_factored};
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::Expr;

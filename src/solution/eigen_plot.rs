@@ -1,9 +1,9 @@
 //! The eigenvalues of a sweep against the swept constant: the real parts above (with the
 //! stability boundary Re λ = 0), the imaginary parts below. Deterministic SVG, in the
-//! style of [`super::plot`].
+//! style of [`crate::render::plot`].
 
-use super::plot::{axes, padded_range, unicode_of, PlotError};
 use crate::numeric::linearize::Linearization;
+use crate::render::plot::{axes, padded_range, unicode_of, PlotError};
 use crate::symbolic::print::latex_name;
 use plotters::prelude::*;
 

@@ -3,26 +3,10 @@
 //! restates the questions and leaves the answers blank.
 
 use crate::numeric::answers::{coordinate_unit, Answer};
-use crate::numeric::format::fixed;
 use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
+use crate::render::sections::AnswerView;
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_unit_vector};
-use serde::Serialize;
-
-/// One question and its answer, as the templates show it.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct AnswerView {
-    /// The question as worded (user text in the markup of [`super::markup`], one line), or
-    /// one made from what it asks, its expressions as `$…$` math.
-    pub question: String,
-    /// Where it is asked: `t = 2 \text{ s}, ...` (LaTeX math).
-    pub at_tex: String,
-    /// How the state was reached, in words: "the initial state", "simulated from the initial state".
-    pub at_note: String,
-    /// Each value found, `name = value unit` (LaTeX math); empty in the student's handout.
-    pub values_tex: Vec<String>,
-    /// A steady motion: the second derivatives left and the iterations (plain text).
-    pub note: String,
-}
 
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
@@ -156,7 +140,7 @@ fn number_tex(x: f64) -> String {
 
 /// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
 fn unit_tex(unit: &str) -> String {
-    match super::units::unit_tex(unit) {
+    match crate::render::units::unit_tex(unit) {
         tex if tex.is_empty() => tex,
         tex => format!("\\ {tex}"),
     }
@@ -172,7 +156,7 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
             match question
                 .symbol
                 .as_deref()
-                .and_then(super::safe_math::checked)
+                .and_then(crate::render::safe_math::checked)
             {
                 Some(symbol) => symbol,
                 None if written.len() <= LONGEST_RESTATED => written,

@@ -1,88 +1,18 @@
 //! The linearization section of the worked solution (`explain --linearize`): the
 //! linearized equations `M δq'' + C δq' + K δq = 0`, the state matrix, the eigenvalues and
-//! a table of the modes. Strings follow the naming rules of [`super::context`].
+//! a table of the modes. Strings follow the naming rules of [`crate::render::context`].
 
-use crate::numeric::format::fixed;
 use crate::numeric::linearize::modes::{is_stable, Shape};
 use crate::numeric::linearize::Linearization;
 use crate::problem::Problem;
+use crate::render::sections::{EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow};
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex;
 use nalgebra::DMatrix;
-use serde::Serialize;
 
 /// `amsmath` typesets at most this many columns in a `bmatrix`; larger matrices are not
 /// printed (`mbd-tutor linearize` gives them).
 pub const MOST_COLUMNS: usize = 10;
-
-/// Small motions about a state.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct LinearizationSection {
-    /// The state, e.g. `q_{1} = 0, \dot{q}_{1} = 0`.
-    pub state_tex: String,
-    /// A sentence when the state is not steady (plain text; may be empty).
-    pub steady_note: String,
-    /// `\mathbf{M}\,\delta\ddot{\mathbf{q}} + … = \mathbf{0}`.
-    pub equation_tex: String,
-    /// `\delta\mathbf{q} = [δq_1 … ]`.
-    pub q_tex: String,
-    /// `\mathbf{M} = [...]`, and likewise `C` and `K`; empty when too large to print.
-    pub m_tex: String,
-    /// The damping (and gyroscopic) matrix.
-    pub c_tex: String,
-    /// The stiffness matrix.
-    pub k_tex: String,
-    /// `\mathbf{A} = [...]` with the state `\mathbf{z}`; empty when too large.
-    pub a_tex: String,
-    /// The state variables, e.g. `\mathbf{z} = [q_1, \dot q_1]^T`.
-    pub z_tex: String,
-    /// `M`, `C`, `K` and `A` entry by entry (`M_{1,2} = 0.5`, the nonzero ones), for a page
-    /// too narrow for the whole matrix; each empty when its matrix is.
-    pub entries: MatrixEntries,
-    /// The eigenvalues, sorted.
-    pub eigenvalues: Vec<EigenvalueRow>,
-    /// One row per mode.
-    pub modes: Vec<ModeRow>,
-    /// Stable or not, as a sentence (plain text).
-    pub stability: String,
-}
-
-/// The nonzero entries of the matrices of [`LinearizationSection`], each as
-/// `M_{i,j} = value` (LaTeX math).
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct MatrixEntries {
-    /// Of the mass matrix.
-    pub m_tex: Vec<String>,
-    /// Of the damping matrix.
-    pub c_tex: Vec<String>,
-    /// Of the stiffness matrix.
-    pub k_tex: Vec<String>,
-    /// Of the state matrix.
-    pub a_tex: Vec<String>,
-}
-
-/// One eigenvalue.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct EigenvalueRow {
-    /// E.g. `\lambda_{1} = -0.5 + 3.1 i`.
-    pub value_tex: String,
-}
-
-/// One mode in the table.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct ModeRow {
-    /// 1, 2, …
-    pub index: usize,
-    /// |λ|/2π in Hz, formatted.
-    pub natural_frequency: String,
-    /// Im λ/2π in Hz, formatted.
-    pub damped_frequency: String,
-    /// −Re λ/|λ|, formatted.
-    pub damping_ratio: String,
-    /// The shape as a column, scaled so that its largest component is 1.
-    pub shape_tex: String,
-    /// The shape drawn as bars, one per coordinate.
-    pub figure: super::context::Figure,
-}
 
 /// A number in LaTeX math: `1.5`, `-2`, `3 \times 10^{-5}`.
 pub fn tex_number(x: f64) -> String {

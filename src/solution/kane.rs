@@ -3,7 +3,6 @@
 //! row, the generalized active force `F_r` and the generalized inertia force `F_r^*` apart,
 //! before their sum `F_r + F_r^* = 0`.
 
-use super::context::PartialVelocity;
 use super::derived::shortest_tex;
 use super::long::LONG_EQUATION;
 use crate::equations::kane::partials;
@@ -12,6 +11,7 @@ use crate::equations::{Derivation, Method};
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
+use crate::render::context::PartialVelocity;
 use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name};

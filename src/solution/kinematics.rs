@@ -1,13 +1,13 @@
 //! Step 4's vectors: each body's angular velocity and acceleration and its mass centre's
 //! velocity and acceleration, in the shortest of their multiplied-out and named forms.
 
-use super::context::{Kinematics, Named};
 use super::derived::{component_term, shortest_tex, vector_tex_by};
-use super::math_width::printed_width;
 use crate::equations::Derivation;
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
+use crate::render::context::{Kinematics, Named};
+use crate::render::math_width::printed_width;
 use crate::symbolic::collect::{factored, pull_common_factor};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::latex_name;
@@ -125,7 +125,8 @@ pub(super) fn partial_velocity_definition(derivation: &Derivation) -> Named {
 /// (the second's then empty here).
 fn one_line_if_short(first: String, second: String) -> (String, String) {
     const MOST_OF_A_LINE: usize = 60;
-    if super::math_width::printed_width(&first) + super::math_width::printed_width(&second)
+    if crate::render::math_width::printed_width(&first)
+        + crate::render::math_width::printed_width(&second)
         <= MOST_OF_A_LINE
     {
         (format!("{first}, \\qquad {second}"), String::new())
@@ -169,7 +170,7 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
 }
 
 /// How many symbols a line of a display holds.
-const LINE: usize = super::line_break::LINE_SYMBOLS as usize;
+const LINE: usize = crate::render::line_break::LINE_SYMBOLS as usize;
 
 /// A long acceleration as Kane writes it, `Σ_r ᴺv_r q̈_r + ᴺã`: the q̈ coefficients are the
 /// partial velocities the velocity above is written with (∂a/∂q̈_r = ∂v/∂q̇_r), so only the

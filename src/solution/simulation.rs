@@ -1,12 +1,12 @@
 //! Step 6 of the worked solution: the simulation, its confirmation checks and its plots.
 
-use super::context::{Check, Plot, Solution};
-use super::plot::{line_plot, pgfplots, Label, Series};
 use crate::numeric::checks;
-use crate::numeric::format::fixed;
 use crate::numeric::simulate::Trajectory;
 use crate::numeric::SolveError;
 use crate::problem::{CoordinateKind, Problem};
+use crate::render::context::{Check, Plot, Solution};
+use crate::render::plot::{line_plot, pgfplots, Label, Series};
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex_name;
 
 /// Fills step 6 of `solution` from the simulation from the (assembled) initial state and its

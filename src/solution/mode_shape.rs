@@ -2,8 +2,8 @@
 //! share of the motion (the largest is 1), and for a complex shape its phase above it.
 //! The same bars as SVG for HTML and Markdown and as TikZ for LaTeX.
 
-use super::context::Figure;
 use crate::numeric::linearize::modes::Shape;
+use crate::render::context::Figure;
 
 /// Bar width and spacing (SVG pixels); the bars reach `HEIGHT` above or below the axis.
 const STEP: f64 = 56.0;

@@ -2,9 +2,9 @@
 //! bars between their points, blocks and discs where the inertia suggests them, particles
 //! as dots.
 
-use super::numbers::{add, cross, dot, norm, scale, sub, unit, Numbers, P3};
-use super::scene::Shape;
+use super::numbers::{add, circle, cross, dot, norm, scale, sub, unit, Numbers, P3};
 use crate::problem::{BodyId, Inertia, JointKind, LoadKind, PointRef};
+use crate::render::draw::scene::Shape;
 
 /// The points of `body` that a picture must reach, in the body's own unit vectors: its
 /// joint points, declared points, load ends and mass center.
@@ -91,26 +91,6 @@ fn disc_of(n: &Numbers, body: BodyId) -> Option<(f64, P3)> {
             Some(((2.0 * largest / mass).sqrt(), e))
         }
     }
-}
-
-/// A circle about `center` of `radius` perpendicular to the unit `normal`, as points.
-pub fn circle(center: P3, normal: P3, radius: f64) -> Vec<P3> {
-    let helper = if normal[0].abs() < 0.9 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
-    };
-    let u = unit(cross(normal, helper)).unwrap_or([1.0, 0.0, 0.0]);
-    let v = cross(normal, u);
-    (0..48)
-        .map(|k| {
-            let t = k as f64 * std::f64::consts::TAU / 48.0;
-            add(
-                center,
-                add(scale(u, radius * t.cos()), scale(v, radius * t.sin())),
-            )
-        })
-        .collect()
 }
 
 /// The shapes of one body; `size` is the picture's characteristic length.

@@ -2,14 +2,14 @@
 //! equations (step 1), the dependent rates as a map of the independent ones, Kane's
 //! equations with dependent speeds and the reduced partial velocities (step 5).
 
-use super::context::{ConstraintView, DependentSpeeds};
 use crate::equations::Derivation;
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::vector::Vector;
 use crate::mechanics::Model;
-use crate::numeric::format::fixed;
 use crate::problem::BodyId;
+use crate::render::context::{ConstraintView, DependentSpeeds};
 use crate::symbolic::collect::latex_collected;
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::{simplify, Symbol};
@@ -69,7 +69,10 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         views.push(ConstraintView {
             name_tex: format!(
                 "\\text{{the velocity of the contact point at {}}}",
-                super::escape::latex(&model.sites[site].name, super::escape::Lines::One)
+                crate::render::escape::latex(
+                    &model.sites[site].name,
+                    crate::render::escape::Lines::One
+                )
             ),
             level: "definition".into(),
             below: equation_tex.len() > LONGEST_IN_TABLE,
@@ -310,7 +313,7 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
     let text = |words: String| {
         format!(
             "\\text{{{}}}",
-            super::escape::latex(&words, super::escape::Lines::One)
+            crate::render::escape::latex(&words, crate::render::escape::Lines::One)
         )
     };
     let sticking = model

@@ -3,11 +3,11 @@
 //! `ṽ_r = v_r + Σ_s C_sr v_s`, which forces drop out and why, the auxiliary speeds of the
 //! requested reactions and drives, and the order in which the system is solved.
 
-use super::context::{DependentSpeeds, PartialVelocity};
 use crate::equations::kane::partials;
 use crate::equations::Derivation;
 use crate::mechanics::independent::DependentSpeeds as Speeds;
 use crate::mechanics::Vector;
+use crate::render::context::{DependentSpeeds, PartialVelocity};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::roots::roots_of_squares;

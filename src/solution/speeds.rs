@@ -1,8 +1,8 @@
 //! Step 1 with declared speeds: each speed's definition, the kinematic differential
 //! equations `u = W(q) q'` as a matrix, and their inverse `q' = W⁻¹(q) u`.
 
-use super::context::{SpeedRow, SpeedsView};
 use crate::equations::Derivation;
+use crate::render::context::{SpeedRow, SpeedsView};
 use crate::symbolic::print::latex;
 use crate::symbolic::{add, Expr};
 
@@ -19,7 +19,7 @@ pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
         .map(|(r, s)| SpeedRow {
             name_tex: latex(&u(r)),
             definition_tex: format!("{} = {}", latex(&u(r)), latex(&s.equals)),
-            unit_tex: super::units::unit_tex(s.unit.as_deref().unwrap_or_default()),
+            unit_tex: crate::render::units::unit_tex(s.unit.as_deref().unwrap_or_default()),
             description: s.description.clone().unwrap_or_default(),
         })
         .collect();

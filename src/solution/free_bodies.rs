@@ -1,7 +1,6 @@
 //! Step 2's free bodies: each with the forces and couples that act on it from outside, the
 //! distance forces, and the inertia forces and torques of its bodies.
 
-use super::context::{Force, FreeBody};
 use super::derived::{bodies_name, bodies_tex, initial_sign, vector_tex};
 use crate::equations::Derivation;
 use crate::mechanics::model::vector_of;
@@ -9,6 +8,7 @@ use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{ActionKind, Category, Source};
 use crate::plan::rows::is_external;
 use crate::problem::BodyId;
+use crate::render::context::{Force, FreeBody};
 use crate::symbolic::named::as_shown;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::roots::roots_of_squares;
@@ -161,13 +161,13 @@ fn times_mass(g: &str) -> String {
 }
 
 /// The most symbols a row of a free body's table may print in its vector and point columns
-/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](super::draw::tikz::BESIDE_A_TABLE)
+/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](crate::render::draw::tikz::BESIDE_A_TABLE)
 /// in small type: a chain link's pin forces in two components.
 const NARROW_TABLE: usize = 36;
 
 /// Whether the free body's table of forces is narrow enough to sit beside its picture.
 pub fn table_is_narrow(body: &FreeBody) -> bool {
-    let width = |tex: &str| super::math_width::printed_width(tex);
+    let width = |tex: &str| crate::render::math_width::printed_width(tex);
     let (vectors, points): (Vec<usize>, Vec<usize>) =
         [&body.contact, &body.distance, &body.inertia]
             .into_iter()

@@ -3,11 +3,11 @@
 //! the assumption that it sticks, the solution, the check `|F| ≤ μ|N|` and, when the check
 //! fails, the solution again with sliding friction.
 
-use super::context::{FrictionStep, FrictionView};
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
-use crate::numeric::format::fixed;
 use crate::numeric::friction::{Mode, SiteState};
+use crate::render::context::{FrictionStep, FrictionView};
+use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex;
 use crate::symbolic::Expr;
 

@@ -1,0 +1,31 @@
+//! The worked solution's content (step by step, as a textbook prints it), prepared from what
+//! the stages before gave: the problem, the model, the plan, the equations, the solution at
+//! the initial state, the simulation and its checks ([`crate::pipeline::Worked`]).
+//!
+//! [`worked`] fills a [`Solution`](crate::render::Solution): each step's rows as formed and simplified with their
+//! headings, the where-lists, the rejections chosen to show, the tables, the pictures'
+//! scenes (laid out, [`pictures`]), the answers and the checks. [`crate::render`] only writes
+//! it; this stage is the last one that reads the derivation.
+
+pub mod answer_sheet;
+pub mod answers;
+mod build;
+mod constrained;
+pub mod derived;
+pub mod eigen_plot;
+mod free_bodies;
+mod friction;
+mod independent;
+mod kane;
+mod kinematics;
+pub mod linearization;
+mod long;
+mod matrix;
+mod mode_shape;
+pub mod pictures;
+mod rejected;
+pub mod row_view;
+mod simulation;
+mod speeds;
+
+pub use build::{setup, solution as worked, style_of};

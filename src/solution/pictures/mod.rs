@@ -1,0 +1,154 @@
+//! The pictures' scenes (steps 1 and 2, and the motion of step 6): the configuration and
+//! each free body of the plan with its kinetic diagram, built in `N`'s coordinates from the
+//! model at a state ([`build`]) and laid out by [`crate::render::draw`], which writes them.
+
+pub mod bodies;
+pub mod build;
+pub mod lanes;
+pub mod motion;
+pub mod numbers;
+pub mod shapes;
+
+use crate::equations::Derivation;
+use crate::problem::BodyId;
+use crate::render::draw::{layout, Drawing, View};
+use crate::symbolic::format::fixed;
+pub use build::FREE_BODY_LEGEND;
+use numbers::{norm, sub, Numbers};
+
+/// The configuration of the derivation's problem at its initial state, for the student's
+/// handout.
+pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
+    let problem = derivation.model.problem;
+    let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    draw(derivation, 0.0, &q, &rates, None, View::Isometric)
+        .into_iter()
+        .next()
+}
+
+/// The free bodies of the plan, in the order its rows first use them.
+pub fn free_body_sets(derivation: &Derivation) -> Vec<Vec<BodyId>> {
+    let mut sets: Vec<Vec<BodyId>> = Vec::new();
+    for row in &derivation.rows {
+        if !row.free_body.is_empty() && !sets.contains(&row.free_body) {
+            sets.push(row.free_body.clone());
+        }
+    }
+    sets
+}
+
+/// The plan table's name of a free body, e.g. `A + B`.
+pub fn free_body_name(problem: &crate::problem::Problem, set: &[BodyId]) -> String {
+    set.iter()
+        .map(|b| problem.body_name(*b).to_string())
+        .collect::<Vec<_>>()
+        .join(" + ")
+}
+
+/// The system's characteristic length: the spread of its points, or its bodies' size.
+fn size_of(n: &Numbers) -> f64 {
+    let model = n.model;
+    let mut points: Vec<numbers::P3> = model
+        .joints
+        .iter()
+        .map(|j| n.vector(&j.point.position))
+        .collect();
+    points.extend(model.bodies.iter().map(|b| n.vector(&b.center.position)));
+    for (i, _) in model.problem.points.iter().enumerate() {
+        points.push(n.vector(&model.position(crate::problem::PointRef::Named(i))));
+    }
+    let points: Vec<_> = points
+        .into_iter()
+        .filter(|p| p.iter().all(|x| x.is_finite()))
+        .collect();
+    let mut spread = 0.0f64;
+    for a in &points {
+        for b in &points {
+            spread = spread.max(norm(sub(*a, *b)));
+        }
+    }
+    if spread > 1e-9 {
+        return spread;
+    }
+    // Everything at one point (a top, a gimbal): the size the inertia gives.
+    let radius = model
+        .problem
+        .body_ids()
+        .filter_map(|b| {
+            let body = model.problem.body(b);
+            let m = n.scalar(&body.mass);
+            let i = match &body.inertia {
+                crate::problem::Inertia::Planar(i) => n.scalar(i),
+                crate::problem::Inertia::Spatial(m) => {
+                    (0..3).map(|k| n.scalar(&m[k][k])).fold(0.0, f64::max)
+                }
+            };
+            (m > 0.0 && i > 0.0).then(|| (2.0 * i / m).sqrt())
+        })
+        .fold(0.0, f64::max);
+    if radius > 0.0 {
+        4.0 * radius
+    } else {
+        1.0
+    }
+}
+
+/// Every picture of `derivation` at time `t`, coordinates `q` and rates `rates`, seen
+/// along `view`: the configuration, then one per free body of the plan. With the q''
+/// (`accelerations`) the kinetic diagrams carry `m a*` and `I α`; without, only the bodies.
+pub fn draw(
+    derivation: &Derivation,
+    t: f64,
+    q: &[f64],
+    rates: &[f64],
+    accelerations: Option<&[f64]>,
+    view: View,
+) -> Vec<Drawing> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let mut numbers = Numbers::new(model, t, q, rates);
+    if let Some(a) = accelerations {
+        numbers.set_accelerations(a);
+    }
+    let size = size_of(&numbers);
+    let setting = build::Setting {
+        derivation,
+        numbers: &numbers,
+        accelerations: accelerations.is_some(),
+        size,
+    };
+    let state: Vec<String> = problem
+        .coordinates
+        .iter()
+        .zip(q)
+        .map(|(c, v)| {
+            let symbol =
+                crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(&c.name));
+            format!("{symbol} = {}", fixed(*v))
+        })
+        .collect();
+    let mut title = format!("Configuration at {}", state.join(", "));
+    if t != 0.0 {
+        title.push_str(&format!(", t = {}", fixed(t)));
+    }
+    let scene = setting.configuration(title.clone());
+    let mut out = vec![Drawing {
+        name: "configuration".into(),
+        title,
+        free_body: String::new(),
+        picture: layout::lay_out(&scene, view),
+    }];
+    for set in free_body_sets(derivation) {
+        let name = free_body_name(problem, &set);
+        let title = format!("Free body {name}");
+        let scene = setting.free_body(&set, title.clone());
+        out.push(Drawing {
+            name: format!("fbd-{}", name.replace(' ', "")),
+            title,
+            free_body: name,
+            picture: layout::lay_out(&scene, view),
+        });
+    }
+    out
+}
