@@ -18,6 +18,7 @@
 
 use serde::Serialize;
 
+pub use super::figure::Figure;
 pub use super::sample::sample;
 
 /// The worked solution of one problem by one method: the six steps.
@@ -205,15 +206,6 @@ pub struct FreeBody {
     pub inertia: Vec<Force>,
     /// Its free-body diagram with the kinetic diagram (empty when not drawn).
     pub figure: Figure,
-}
-
-/// A picture of `mbd-tutor draw`, embedded: inline SVG (Markdown, HTML) and TikZ (LaTeX).
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct Figure {
-    /// The SVG element, its ids prefixed by the picture's name; empty when not drawn.
-    pub svg_inline: String,
-    /// The same picture as a `tikzpicture`.
-    pub picture_latex: String,
 }
 
 /// One force or couple on a free body.

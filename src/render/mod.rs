@@ -11,6 +11,7 @@ pub mod by_speed;
 pub mod context;
 pub mod draw;
 pub mod escape;
+pub mod figure;
 pub mod line_break;
 pub mod markup;
 pub mod math_width;

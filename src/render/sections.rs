@@ -87,5 +87,5 @@ pub struct ModeRow {
     /// The shape as a column, scaled so that its largest component is 1.
     pub shape_tex: String,
     /// The shape drawn as bars, one per coordinate.
-    pub figure: super::context::Figure,
+    pub figure: super::figure::Figure,
 }

@@ -4,6 +4,7 @@
 //! come from the equations and the simulation start empty, and the templates leave out
 //! what is empty.
 
+use super::tex::style_of;
 use crate::equations::Method;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
 use crate::render::context::{Constant, Coordinate, Frame, Named, Plan, Simulation, Solution};
@@ -21,14 +22,6 @@ pub fn solution(worked: &crate::pipeline::Worked) -> Solution {
         super::derived::fill(&mut solution, worked)
     });
     solution
-}
-
-/// How the worked solution of `problem` prints numbers: the decimals it wrote as decimals.
-pub fn style_of(problem: &Problem) -> crate::symbolic::style::Style {
-    problem.decimals.iter().fold(
-        crate::symbolic::style::Style::default(),
-        |style, (n, text)| style.with_decimal(*n, text),
-    )
 }
 
 /// What the problem alone gives: title, statement and step 1 (also the student's handout).

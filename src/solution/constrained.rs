@@ -2,6 +2,7 @@
 //! equations (step 1), the dependent rates as a map of the independent ones, Kane's
 //! equations with dependent speeds and the reduced partial velocities (step 5).
 
+use super::tex::constraint_label_tex;
 use crate::equations::Derivation;
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::vector::Vector;
@@ -23,7 +24,7 @@ const LONGEST_IN_TABLE: usize = 600;
 pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>) {
     let model = &derivation.model;
     let constraints = &model.constraints;
-    let sign = super::derived::initial_sign(model);
+    let sign = super::tex::initial_sign(model);
     // The contact points whose velocity a long row is written with, each defined once.
     let mut velocities: Vec<usize> = Vec::new();
     let mut views: Vec<ConstraintView> = constraints
@@ -50,7 +51,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 equation_tex = format!(
                     "{} \\cdot {} = 0",
                     point_velocity_tex(model, *site),
-                    super::derived::vector_tex(model, &reaction.direction)
+                    super::tex::vector_tex(model, &reaction.direction)
                 );
                 if !velocities.contains(site) {
                     velocities.push(*site);
@@ -111,7 +112,7 @@ fn contact_velocity_tex(model: &Model, site: usize) -> String {
     format!(
         "{} = {{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} + {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} \\times \\mathbf{{r}}^{{{name}^* {point}}}, \\quad \\mathbf{{r}}^{{{name}^* {point}}} = {}",
         point_velocity_tex(model, site),
-        super::derived::vector_tex(model, &arm)
+        super::tex::vector_tex(model, &arm)
     )
 }
 
@@ -282,68 +283,4 @@ fn quoted_as_math(problem: &crate::problem::Problem, text: &str) -> String {
         }
     }
     out
-}
-
-/// The direction of a closure's or a contact's constraint row: that of the reaction
-/// component that enforces it (the row is the relative motion along it).
-pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
-    let row = model.constraints.rows.iter().find(|r| r.name == name)?;
-    let RowOrigin::Site { site, component } = row.origin else {
-        return None;
-    };
-    let component = model.sites.get(site)?.reactions.get(component)?;
-    Some(super::derived::vector_tex(model, &component.direction))
-}
-
-/// A constraint row's label in the matrix form: what it constrains and, for a site's row,
-/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
-pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
-    let what = constraint_what_tex(model, name);
-    match constraint_direction_tex(model, name) {
-        Some(direction) => format!("{what} \\cdot {direction}"),
-        None => what,
-    }
-}
-
-/// What a constraint row constrains, in LaTeX: `\text{rolling constraint at floor}`, or
-/// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
-pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
-    use crate::mechanics::sites::SiteKind;
-    let problem = model.problem;
-    let text = |words: String| {
-        format!(
-            "\\text{{{}}}",
-            crate::render::escape::latex(&words, crate::render::escape::Lines::One)
-        )
-    };
-    let sticking = model
-        .constraints
-        .friction
-        .iter()
-        .find(|f| f.stick.iter().any(|r| r.name == name));
-    if let Some(site) = sticking {
-        // A friction site's no-slip row holds only while it sticks (rolls).
-        return text(format!("no slip at {} while it sticks", site.name));
-    }
-    let row = model.constraints.rows.iter().find(|r| r.name == name);
-    match row.map(|r| &r.origin) {
-        Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
-            Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
-                text(format!("rolling constraint at {}", s.name))
-            }
-            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
-                text(format!("loop closure at {}", s.name))
-            }
-            Some(s) => text(format!("constraint at {}", s.name)),
-            None => text(format!("constraint {name}")),
-        },
-        Some(RowOrigin::Position(_)) => text(format!("position constraint {name}")),
-        Some(RowOrigin::Velocity(_)) => text(format!("velocity constraint {name}")),
-        Some(RowOrigin::Prescribed(c)) if *c < problem.coordinates.len() => format!(
-            "\\text{{prescribed motion of }} {}",
-            latex(&problem.coordinate_expr(*c, 0))
-        ),
-        Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
-        None => text(format!("constraint {name}")),
-    }
 }

@@ -2,22 +2,21 @@
 //! turned into the strings and tables of [`Solution`].
 
 use super::long::LONG_EQUATION;
+use super::tex::{action_components, bodies_tex, initial_sign, unknowns_tex, uses_shown};
 use crate::equations::{Derivation, Method};
-use crate::mechanics::{Model, Vector};
 use crate::pipeline::Worked;
-use crate::plan::forces::ActionKind;
 use crate::plan::rows::Sum;
-use crate::problem::{BodyId, Problem};
+use crate::problem::BodyId;
 use crate::render::context::{
     InitialValue, Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution,
 };
-use crate::symbolic::collect::{self, latex_with_squares};
+use crate::symbolic::collect::latex_with_squares;
 use crate::symbolic::format::{fixed, fixed_or_zero};
 use crate::symbolic::named::{as_shown, named_definitions};
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};
+use crate::symbolic::print::{latex, latex_unit_vector};
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::simplify::simplify;
-use crate::symbolic::{Definition, Expr, Node, Symbol};
+use crate::symbolic::{Definition, Expr};
 
 /// Fills steps 2 to 6 of `solution` from what the stages gave (see [`Worked`]).
 pub fn fill(solution: &mut Solution, worked: &Worked) {
@@ -32,7 +31,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .iter()
         .map(|c| c.name.as_str())
         .collect();
-    let style = super::build::style_of(problem).with_coordinates(&names);
+    let style = super::tex::style_of(problem).with_coordinates(&names);
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
         (solution.constraints, solution.constraint_notes) =
             super::constrained::constraints(derivation);
@@ -171,104 +170,6 @@ fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
     )
 }
 
-/// A vector as a sum of components times unit vectors, each component simplified.
-pub fn vector_tex(model: &Model, v: &Vector) -> String {
-    vector_tex_by(model, v, component_term)
-}
-
-/// As [`vector_tex`], each nonzero component and its unit vector written by `term`.
-pub(super) fn vector_tex_by(
-    model: &Model,
-    v: &Vector,
-    term: impl Fn(&Expr, &str) -> String,
-) -> String {
-    let mut terms: Vec<String> = Vec::new();
-    for (frame, components) in v.parts() {
-        for (axis, c) in components.iter().enumerate() {
-            let c = simplify(c);
-            if c.is_zero() {
-                continue;
-            }
-            let unit = latex_unit_vector(model.frames.name(*frame), axis as u8);
-            terms.push(term(&c, &unit));
-        }
-    }
-    if terms.is_empty() {
-        return "\\mathbf{0}".into();
-    }
-    let mut out = terms[0].clone();
-    for t in &terms[1..] {
-        match t.strip_prefix('-') {
-            Some(rest) => out.push_str(&format!(" - {rest}")),
-            None => out.push_str(&format!(" + {t}")),
-        }
-    }
-    out
-}
-
-/// A component times its unit vector: a sum in brackets, ±1 left out.
-pub(super) fn component_term(c: &Expr, unit: &str) -> String {
-    match c.node() {
-        Node::Add(_) => collect::sum_times(c, unit),
-        _ if c.is_one() => unit.to_string(),
-        _ if (-c).is_one() => format!("-{unit}"),
-        _ => format!("{} {unit}", latex(c)),
-    }
-}
-
-/// The shortest way to write a vector among the frames `N`, the body's and its parent's.
-pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
-    let mut frames = vec![body, BodyId::GROUND];
-    if let Some(parent) = model.frames.info(body).parent {
-        frames.push(parent);
-    }
-    let mut best: Option<(usize, Vector)> = None;
-    for frame in frames {
-        let written = v.expressed_in(frame, &model.frames).map(simplify);
-        let length = written.operation_count();
-        if best.as_ref().is_none_or(|(l, _)| length < *l) {
-            best = Some((length, written));
-        }
-    }
-    best.map(|(_, w)| vector_tex(model, &w)).unwrap_or_default()
-}
-
-/// A free body's bodies in LaTeX, `A + B`.
-pub(super) fn bodies_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
-    bodies_latex(derivation, bodies).join(" + ")
-}
-
-/// A free body's bodies in LaTeX, a run of four or more links by its ends,
-/// `\\mathrm{link}_{2} + \\cdots + \\mathrm{link}_{10}`, as a heading in step 5 names it.
-/// (The plan's table and step 2 name every body: the pictures' names are those.)
-pub(super) fn bodies_tex_short(
-    derivation: &Derivation,
-    bodies: &[crate::problem::BodyId],
-) -> String {
-    list_by_runs(&bodies_latex(derivation, bodies), " + ", "\\cdots")
-}
-
-/// A free body's bodies as a set's members, `\\mathrm{link}_{2}, \\ldots, \\mathrm{link}_{10}`.
-pub(super) fn bodies_set_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
-    list_by_runs(&bodies_latex(derivation, bodies), ", ", "\\ldots")
-}
-
-fn bodies_latex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> Vec<String> {
-    let problem = derivation.model.problem;
-    bodies
-        .iter()
-        .map(|b| latex_name(problem.body_name(*b)))
-        .collect()
-}
-
-pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
-    bodies
-        .iter()
-        .map(|b| problem.body_name(*b).to_string())
-        .collect::<Vec<_>>()
-        .join(" + ")
-}
-
 /// The named quantities the forces use, each with what it stands for.
 pub fn force_definitions(derivation: &Derivation) -> Vec<Named> {
     let components: Vec<Expr> = action_components(derivation).map(as_shown).collect();
@@ -290,34 +191,6 @@ fn speed_indices(derivation: &Derivation) -> (Vec<String>, Vec<String>) {
     (speeds, plain)
 }
 
-/// The sign an expression has at the initial state, for [`roots_of_squares`].
-pub fn initial_sign(model: &Model) -> impl Fn(&Expr) -> f64 {
-    let problem = model.problem;
-    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let values = model.values_at(0.0, &q0, &rates0);
-    move |e: &Expr| crate::symbolic::eval::eval(e, &values).signum()
-}
-
-/// Every component of every force and couple.
-fn action_components<'d>(derivation: &'d Derivation) -> impl Iterator<Item = &'d Expr> {
-    derivation
-        .actions
-        .iter()
-        .flat_map(|a| match &a.kind {
-            ActionKind::Force { force, .. } => force.parts(),
-            ActionKind::Couple { torque } => torque.parts(),
-        })
-        .flat_map(|(_, c)| c.iter())
-}
-
-/// Whether the forces use a quantity shown otherwise than it is computed (see
-/// [`as_shown`]); checked once, since the equations are far larger than the forces.
-pub(super) fn uses_shown(derivation: &Derivation) -> bool {
-    action_components(derivation)
-        .any(|c| c.any_symbol(&|s| matches!(s, Symbol::Defined(d) if d.shown().is_some())))
-}
-
 /// Each definition as `name = value`, with its note.
 pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
     definitions
@@ -333,16 +206,6 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
-/// A row's unknowns, a run such as q̈₁, …, q̈₁₀ by its ends: a ten-link row otherwise wraps
-/// in its column.
-pub(super) fn unknowns_tex(unknowns: &[Symbol]) -> String {
-    let items: Vec<String> = unknowns
-        .iter()
-        .map(|u| latex(&Expr::sym(u.clone())))
-        .collect();
-    list_by_runs(&items, ", ", "\\dots")
-}
-
 /// Step 3: the planner's table, the rejected candidates and the counts.
 pub fn plan(derivation: &Derivation) -> Plan {
     let problem = derivation.model.problem;
@@ -356,13 +219,13 @@ pub fn plan(derivation: &Derivation) -> Plan {
             } else {
                 bodies_tex(derivation, &row.free_body)
             },
-            equation_tex: super::matrix::sum_tex(derivation, &row.sum),
+            equation_tex: super::tex::sum_tex(derivation, &row.sum),
             direction_tex: match (&row.direction, &row.sum) {
                 (Some(d), _) => d.latex.clone(),
                 // A contact's or a closure's row: along its reaction component; any other
                 // constraint differentiated in time, short enough for the table's column.
                 (None, Sum::Constraint { name }) => {
-                    super::constrained::constraint_direction_tex(&derivation.model, name)
+                    super::tex::constraint_direction_tex(&derivation.model, name)
                         .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into())
                 }
                 (None, _) => "\\text{partial velocities}".into(),

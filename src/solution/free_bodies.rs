@@ -1,7 +1,7 @@
 //! Step 2's free bodies: each with the forces and couples that act on it from outside, the
 //! distance forces, and the inertia forces and torques of its bodies.
 
-use super::derived::{bodies_name, bodies_tex, initial_sign, vector_tex};
+use super::tex::{bodies_name, bodies_tex, initial_sign, vector_tex};
 use crate::equations::Derivation;
 use crate::mechanics::model::vector_of;
 use crate::mechanics::{Model, Vector};
@@ -127,7 +127,7 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
     let model = &derivation.model;
     let every = format!(
         "k \\in \\{{{}\\}}",
-        super::derived::bodies_set_tex(derivation, set)
+        super::tex::bodies_set_tex(derivation, set)
     );
     let at_center = format!("\\text{{at }} k^*,\\; {every}");
     if let Some(g) = &model.problem.gravity {

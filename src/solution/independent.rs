@@ -42,7 +42,7 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
     let n = problem.coordinates.len();
     let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
     // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
-    let sign = super::derived::initial_sign(model);
+    let sign = super::tex::initial_sign(model);
     let combined = |list: &[Vector], weights: &[Expr]| -> Vector {
         Vector::sum(
             list.iter()
@@ -70,12 +70,12 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
         let weights = speeds.independent_weights(r, n);
         let mut first = true;
         for (body, v, w) in &per_body {
-            let v_tex = super::derived::shortest_tex(model, &combined(v, &weights), *body);
+            let v_tex = super::tex::shortest_tex(model, &combined(v, &weights), *body);
             let particle = is_particle(derivation, *body);
             let w_tex = if particle {
                 zero.to_string()
             } else {
-                super::derived::shortest_tex(model, &combined(w, &weights), *body)
+                super::tex::shortest_tex(model, &combined(w, &weights), *body)
             };
             if v_tex == zero && w_tex == zero {
                 continue;
@@ -111,7 +111,7 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
 /// say what was chosen, what drops out, and how the system is solved.
 pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSpeeds {
     let problem = derivation.model.problem;
-    let sign = super::derived::initial_sign(&derivation.model);
+    let sign = super::tex::initial_sign(&derivation.model);
     let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
     let rates = |list: &[usize]| list.iter().map(|&i| rate(i)).collect::<Vec<_>>();
     let listed = |list: &[usize]| {

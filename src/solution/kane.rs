@@ -3,8 +3,8 @@
 //! row, the generalized active force `F_r` and the generalized inertia force `F_r^*` apart,
 //! before their sum `F_r + F_r^* = 0`.
 
-use super::derived::shortest_tex;
 use super::long::LONG_EQUATION;
+use super::tex::shortest_tex;
 use crate::equations::kane::partials;
 use crate::equations::rows::{Equation, Groups, Sum};
 use crate::equations::{Derivation, Method};

@@ -1,7 +1,7 @@
 //! Step 4's vectors: each body's angular velocity and acceleration and its mass centre's
 //! velocity and acceleration, in the shortest of their multiplied-out and named forms.
 
-use super::derived::{component_term, shortest_tex, vector_tex_by};
+use super::tex::{component_term, shortest_tex, vector_tex_by};
 use crate::equations::Derivation;
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};

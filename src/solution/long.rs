@@ -118,7 +118,7 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
                     .free_body
                     .first()
                     .is_some_and(|b| point.strip_suffix('*') == Some(problem.body_name(*b)));
-            let point = super::matrix::point_tex(point);
+            let point = super::tex::point_tex(point);
             let torque = inertia_torque_terms(&k, derivation.model.is_planar()).join(" + ");
             let force = if about_own_centre {
                 String::new()
@@ -161,7 +161,7 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
     let NamedInertia { sum, force, torque } = named;
     let inside = match (&row.sum, torque) {
         (Sum::Moment { point, .. }, Some(torque)) => {
-            let point = super::matrix::point_tex(point);
+            let point = super::tex::point_tex(point);
             let inertia = match force.as_str() {
                 "" => torque,
                 _ => format!("{force} + {torque}"),
@@ -236,7 +236,7 @@ pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [Equa
 pub fn say_the_acceleration_level_once(views: &mut [EquationView]) {
     let mut rows = views
         .iter_mut()
-        .filter(|v| v.label == super::row_view::ACCELERATION_LEVEL);
+        .filter(|v| v.label == super::tex::ACCELERATION_LEVEL);
     let Some(first) = rows.next() else {
         return;
     };

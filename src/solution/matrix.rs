@@ -3,13 +3,14 @@
 //! a long right-hand side collected by the products of rates.
 
 use super::long::{by_rates, LONG_EQUATION};
+use super::tex::row_heading_tex;
 use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
 use crate::render::math_width::printed_width;
 use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
 use crate::symbolic::collect::{latex_collected, latex_factored};
-use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::print::latex;
 use crate::symbolic::Expr;
 
 /// The most columns the whole table has.
@@ -29,66 +30,11 @@ const SHORT_ENTRY: usize = 400;
 /// after another.
 const MOST_LISTED: usize = 16;
 
-/// A moment point as LaTeX: `O`, or `A^{*}` for the mass centre `A*`.
-pub fn point_tex(point: &str) -> String {
-    match point.strip_suffix('*') {
-        Some(stem) => format!("{}^{{*}}", latex_name(stem)),
-        None => latex_name(point),
-    }
-}
-
 /// What names row `i` of the system: its number in step 5 and its equation, e.g.
 /// `(2)\; B\colon \sum \mathbf{M}_{P} \cdot \hat{\mathbf{a}}_{z}` or, for Kane's rows,
 /// `(1)\; F_{1} + F^{*}_{1}`.
 pub fn row_label_tex(derivation: &Derivation, i: usize) -> String {
     format!("({})\\; {}", i + 1, row_heading_tex(derivation, i))
-}
-
-/// Row `i`'s equation as step 5 heads it: `B\colon \sum \mathbf{M}_{P} \cdot
-/// \hat{\mathbf{a}}_{z}`, `F_{1} + F^{*}_{1}`, or what a constraint row constrains.
-pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
-    let row = &derivation.rows[i];
-    let direction = row
-        .direction
-        .as_ref()
-        .map(|d| format!(" \\cdot {}", d.latex))
-        .unwrap_or_default();
-    match &row.sum {
-        Sum::Constraint { name } => {
-            super::constrained::constraint_label_tex(&derivation.model, name)
-        }
-        Sum::Generalized { .. } => sum_tex(derivation, &row.sum),
-        _ => format!(
-            "{}\\colon {}{direction}",
-            super::derived::bodies_tex_short(derivation, &row.free_body),
-            sum_tex(derivation, &row.sum)
-        ),
-    }
-}
-
-/// A sum as an equation's column names it: `\sum \mathbf{F}`, `\sum \mathbf{M}_{O}`,
-/// `F_{r} + F^{*}_{r}` (r among Kane's rows), or what a constraint constrains.
-pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
-    match sum {
-        Sum::Force => "\\sum \\mathbf{F}".into(),
-        Sum::Moment { point, .. } => format!("\\sum \\mathbf{{M}}_{{{}}}", point_tex(point)),
-        Sum::Generalized { .. } => {
-            let r = derivation
-                .rows
-                .iter()
-                .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
-                .position(|x| x.sum == *sum)
-                .map_or("r".to_string(), |i| (i + 1).to_string());
-            if derivation.dependent_speeds.is_some() {
-                format!("\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}")
-            } else {
-                format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
-            }
-        }
-        Sum::Constraint { name } => {
-            super::constrained::constraint_what_tex(&derivation.model, name)
-        }
-    }
 }
 
 /// Step 5's `A x = b`; `by_name[i]` tells whether step 5 writes row `i` with the entries'

@@ -27,5 +27,7 @@ mod rejected;
 pub mod row_view;
 mod simulation;
 mod speeds;
+mod tex;
 
-pub use build::{setup, solution as worked, style_of};
+pub use build::{setup, solution as worked};
+pub use tex::style_of;

@@ -41,7 +41,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         Reason::NoUnknown => plain("contains none of the unknowns"),
         Reason::Duplicate { row } if *row < derivation.rows.len() => (
             format!("says the same as row {} of the plan", row + 1),
-            super::matrix::row_heading_tex(derivation, *row),
+            super::tex::row_heading_tex(derivation, *row),
             String::new(),
         ),
         Reason::Duplicate { row } => {
@@ -69,8 +69,8 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         )),
     };
     RejectedView {
-        free_body_tex: super::derived::bodies_tex(derivation, &candidate.free_body),
-        equation_tex: super::matrix::sum_tex(derivation, &candidate.sum),
+        free_body_tex: super::tex::bodies_tex(derivation, &candidate.free_body),
+        equation_tex: super::tex::sum_tex(derivation, &candidate.sum),
         direction_tex: candidate.direction.latex.clone(),
         reason,
         reason_tex,

@@ -1,8 +1,8 @@
 //! Step 5: one row as the worked solution writes it: as formed (the Motion Law's groups, or
 //! Kane's F_r and F*_r), then simplified, with its heading.
 
-use super::derived::{bodies_name, initial_sign, unknowns_tex, uses_shown};
 use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
+use super::tex::{bodies_name, initial_sign, unknowns_tex, uses_shown, ACCELERATION_LEVEL};
 use crate::equations::Derivation;
 use crate::plan::rows::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
@@ -12,9 +12,6 @@ use crate::symbolic::print::latex;
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Expr, Symbol};
-
-/// What a constraint row's heading adds: the row is the constraint differentiated.
-pub const ACCELERATION_LEVEL: &str = "(differentiated to the acceleration level)";
 
 fn group_tex(e: &Expr) -> String {
     if e.is_zero() {
@@ -101,7 +98,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         grouped_tex = super::long::vector_form(derivation, row);
     }
     let mut label_tex = index
-        .map(|i| super::matrix::row_heading_tex(derivation, i))
+        .map(|i| super::tex::row_heading_tex(derivation, i))
         .unwrap_or_default();
     let mut label = if matches!(row.sum, Sum::Constraint { .. }) {
         ACCELERATION_LEVEL.to_string()

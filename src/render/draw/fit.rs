@@ -2,10 +2,16 @@
 //! points down the page, in 3D the view asked for; scaled so the system spans the content
 //! box, with room around it for arrows and labels.
 
-use super::layout::{CONTENT, MARGIN, TITLE};
 use super::numbers::{add, scale, unit, P3};
 use super::picture::{Projection, View, P2};
 use super::scene::{Scene, Shape};
+
+/// The room around the system for arrows and labels.
+pub const MARGIN: f64 = 90.0;
+/// The largest extent of the system in the picture.
+pub const CONTENT: f64 = 300.0;
+/// Room for the caption above.
+pub const TITLE: f64 = 26.0;
 
 /// Every point of a shape in `N`, for fitting the picture.
 fn shape_points(shape: &Shape) -> Vec<P3> {

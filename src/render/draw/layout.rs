@@ -1,7 +1,7 @@
 //! Laying a scene out: the projection that fits it on the page, the shapes in picture
 //! coordinates, arrows of a fixed length and labels placed where they overlap nothing.
 
-use super::fit::fit;
+use super::fit::{fit, TITLE};
 use super::numbers::{add, cross, dot, scale, sub, unit, P3};
 use super::picture::{
     Arc, DrawnArrow, Ink, Item, Legend, Mark, Picture, Projection, Stroke, View, P2,
@@ -16,12 +16,6 @@ use super::strokes::{
 const ARROW: f64 = 44.0;
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
-/// The room around the system for arrows and labels.
-pub const MARGIN: f64 = 90.0;
-/// The largest extent of the system in the picture.
-pub const CONTENT: f64 = 300.0;
-/// Room for the caption above.
-pub const TITLE: f64 = 26.0;
 
 pub(super) struct Painter {
     pub(super) projection: Projection,
