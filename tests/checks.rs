@@ -135,7 +135,9 @@ fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() 
             &initial(&problem),
         );
         assert!(
-            checks.iter().all(|c| c.name != "energy conservation"),
+            checks
+                .iter()
+                .all(|c| c.kind != mbd_tutor::numeric::check::CheckKind::EnergyConservation),
             "{name}: a driven system's energy is not conserved: {checks:?}"
         );
         let balance = drive_energy_check(&problem, &compiled, &run).expect("applies");

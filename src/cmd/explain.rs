@@ -4,7 +4,6 @@
 use crate::cli::{Common, ExplainArgs, FormatArg};
 use crate::error::BatchError;
 use crate::output::write_output;
-use crate::pipeline;
 use crate::render::{self, Format, Solution};
 use crate::solution;
 use crate::Error;
@@ -104,46 +103,20 @@ pub fn rendered(
         ..args.common.clone()
     };
     let problem = super::load_with_overrides(&common)?;
-    let method = super::method(args.common.method);
-    let mut solution: Solution = if student {
-        let mut setup = solution::setup(&problem, method);
-        // The handout shows the system; its free bodies are left to draw.
-        if let Ok(worked) = pipeline::work(&problem, method) {
-            if let Some(drawing) = solution::pictures::initial_configuration(&worked.derivation) {
-                setup.configuration = drawing.figure();
-            }
-            // As many blank rows as the worked solution has free bodies and equations.
-            let full = solution::worked(&worked);
-            setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
-            setup.plan.rows = vec![Default::default(); full.plan.rows.len()];
-        }
-        setup
-    } else {
-        let worked = pipeline::work(&problem, method)?;
-        let mut solution = solution::worked(&worked);
-        if args.format == FormatArg::Html {
-            with_motion(&mut solution, &problem, &worked.derivation);
-        }
-        solution
+    let linearize_at = match args.linearize.as_ref().filter(|_| !student) {
+        Some(state) => Some(super::solve::initial_state(
+            &problem,
+            std::slice::from_ref(state),
+        )?),
+        None => None,
     };
-    if args.verbose {
-        solution.plan.show_every_rejected();
-    }
-    if let Some(state) = args.linearize.as_ref().filter(|_| !student) {
-        let (q, rates) = super::solve::initial_state(&problem, std::slice::from_ref(state))?;
-        // Small motions are about the coordinates and their rates, whatever the speeds.
-        let in_rates = problem.without_speeds();
-        let linearizer = pipeline::Linearizer::new(&pipeline::derive(&in_rates, method)?);
-        let l = linearizer.at(&in_rates, 0.0, &q, &rates)?;
-        solution.linearization = Some(solution::linearization::section(&problem, &l));
-    }
-    if !problem.questions.is_empty() {
-        solution.answers = if student {
-            solution::answers::blank(&problem)
-        } else {
-            solution::answers::section(&problem, &pipeline::answers(&problem, method)?)
-        };
-    }
+    let settings = solution::Handout {
+        student,
+        linearize_at,
+        motion: args.format == FormatArg::Html,
+        every_rejected: args.verbose,
+    };
+    let mut solution = solution::handout(&problem, super::method(args.common.method), &settings)?;
     for plot in &mut solution.simulation.plots {
         // On standard output there is nowhere to put plot files, so nothing refers to one.
         plot.svg_file = output
@@ -157,33 +130,6 @@ pub fn rendered(
         student,
     )?;
     Ok((text, solution))
-}
-
-/// Step 6's motion for the HTML page, over the simulation's duration at the default frame
-/// rate; left out, with a note, when it cannot be made.
-fn with_motion(
-    solution: &mut Solution,
-    problem: &crate::problem::Problem,
-    derivation: &crate::equations::Derivation,
-) {
-    use crate::solution::pictures::motion;
-    use render::draw::motion_svg;
-    let duration = problem.simulate.duration;
-    match motion::frames(problem, derivation, duration, motion::DEFAULT_FPS) {
-        Ok(frames) => {
-            let drawn = motion::motion(derivation, &frames, render::draw::View::Isometric);
-            solution.simulation.motion_duration = frames.last().map_or(duration, |f| f.t);
-            solution.simulation.motion_svg_inline =
-                motion_svg::export(&drawn).trim_end().to_string();
-            solution.simulation.time_axis = render::plot::x_axis_span();
-        }
-        Err(e) => {
-            let note = &mut solution.simulation.note;
-            if note.is_empty() {
-                *note = format!("The motion could not be animated: {}", e.one_line());
-            }
-        }
-    }
 }
 
 /// Explains every `*.json` directly in the directory, in name order, into `-o DIR`,

@@ -102,7 +102,7 @@ fn report(method: &str, checks: &[Check]) -> String {
     for check in checks {
         text.push_str(&format!(
             "  {}: {} {} {} ({}): {}\n",
-            check.name,
+            check.name(),
             fixed(check.value),
             if check.passed { "<" } else { ">=" },
             fixed(check.tolerance),

@@ -9,11 +9,42 @@ pub const AGREEMENT_TOLERANCE: f64 = 1e-8;
 /// one the energies give.
 pub const PERIOD_TOLERANCE: f64 = 1e-4;
 
+/// What a check compares.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheckKind {
+    /// The total energy of a conservative system stays what it was.
+    EnergyConservation,
+    /// With dampers or friction, the total energy never rises.
+    EnergyNeverRises,
+    /// Every method's q'' along the trajectory are the same.
+    MethodAgreement,
+    /// The period of small oscillations from the equations equals the energies' one.
+    SmallOscillationPeriod,
+    /// The constraints still hold along the trajectory.
+    ConstraintDrift,
+    /// With prescribed motion, the energy changes by the drives' work.
+    EnergyBalanceWithDrives,
+}
+
+impl CheckKind {
+    /// Its name in reports, e.g. `energy conservation`.
+    pub fn name(self) -> &'static str {
+        match self {
+            CheckKind::EnergyConservation => "energy conservation",
+            CheckKind::EnergyNeverRises => "energy never rises",
+            CheckKind::MethodAgreement => "agreement between methods",
+            CheckKind::SmallOscillationPeriod => "small-oscillation period",
+            CheckKind::ConstraintDrift => "constraint drift",
+            CheckKind::EnergyBalanceWithDrives => "energy balance with the drives' work",
+        }
+    }
+}
+
 /// The outcome of one check.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Check {
-    /// What was checked, e.g. `energy conservation`.
-    pub name: String,
+    /// What was checked.
+    pub kind: CheckKind,
     /// The measured error (dimensionless).
     pub value: f64,
     /// The largest error that passes.
@@ -26,13 +57,18 @@ pub struct Check {
 
 impl Check {
     /// A check of `value` against `tolerance`: passed when below it.
-    pub(crate) fn new(name: &str, value: f64, tolerance: f64, detail: String) -> Self {
+    pub(crate) fn new(kind: CheckKind, value: f64, tolerance: f64, detail: String) -> Self {
         Check {
-            name: name.into(),
+            kind,
             value,
             tolerance,
             passed: value < tolerance,
             detail,
         }
+    }
+
+    /// What was checked, e.g. `energy conservation`.
+    pub fn name(&self) -> &'static str {
+        self.kind.name()
     }
 }

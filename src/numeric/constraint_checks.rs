@@ -1,7 +1,7 @@
 //! Confirmation checks for constrained systems: the constraints still hold along the
 //! simulated motion, and the energy changes by exactly the work the drives do.
 
-use super::check::{Check, ENERGY_TOLERANCE};
+use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
 use super::format::fixed;
 use super::simulate::Trajectory;
 use super::system::System;
@@ -24,7 +24,7 @@ pub fn drift_check(system: &dyn System, trajectory: &Trajectory) -> Option<Check
         }
     }
     Some(Check {
-        name: "constraint drift".into(),
+        kind: CheckKind::ConstraintDrift,
         value: worst,
         tolerance: DRIFT_TOLERANCE,
         passed: worst < DRIFT_TOLERANCE,
@@ -121,7 +121,7 @@ pub fn drive_energy_check(
         }
     }
     Some(Check {
-        name: "energy balance with the drives' work".into(),
+        kind: CheckKind::EnergyBalanceWithDrives,
         value: worst / scale,
         tolerance: ENERGY_TOLERANCE,
         passed: worst / scale < ENERGY_TOLERANCE,

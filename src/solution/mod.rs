@@ -15,6 +15,7 @@ pub mod derived;
 pub mod eigen_plot;
 mod free_bodies;
 mod friction;
+mod handout;
 mod independent;
 mod kane;
 mod kinematics;
@@ -30,4 +31,5 @@ mod speeds;
 mod tex;
 
 pub use build::{setup, solution as worked};
+pub use handout::{handout, Handout};
 pub use tex::style_of;

@@ -1,6 +1,6 @@
 //! Step 6 of the worked solution: the simulation, its confirmation checks and its plots.
 
-use crate::numeric::checks;
+use crate::numeric::checks::{self, CheckKind};
 use crate::numeric::simulate::Trajectory;
 use crate::numeric::SolveError;
 use crate::problem::{CoordinateKind, Problem};
@@ -30,7 +30,7 @@ pub fn simulation(
     solution.simulation.checks = checks
         .iter()
         .map(|c| Check {
-            name: c.name.clone(),
+            name: c.name().to_string(),
             value: fixed(c.value),
             tolerance: fixed(c.tolerance),
             passed: c.passed,
@@ -92,7 +92,9 @@ pub fn simulation(
         energy_series,
     ));
     // The drift is the integrator's error only where no load or drive does work.
-    let conserved = checks.iter().any(|c| c.name == "energy conservation");
+    let conserved = checks
+        .iter()
+        .any(|c| c.kind == CheckKind::EnergyConservation);
     if let Some(drift) = energy_drift(trajectory).filter(|_| conserved) {
         plots.push(drift);
     }

@@ -3,7 +3,7 @@
 
 mod oscillation;
 
-pub use super::check::{Check, AGREEMENT_TOLERANCE, ENERGY_TOLERANCE, PERIOD_TOLERANCE};
+pub use super::check::{Check, CheckKind, AGREEMENT_TOLERANCE, ENERGY_TOLERANCE, PERIOD_TOLERANCE};
 pub use oscillation::{downward_crossings, modes, small_oscillation, Modes, MODES_CHECKED};
 
 use super::format::fixed;
@@ -58,7 +58,7 @@ pub fn confirm_systems(
             detail.push_str(&format!("; among the others, {}", check.detail));
         }
         agreement = Some(Check::new(
-            AGREEMENT,
+            CheckKind::MethodAgreement,
             f64::INFINITY,
             AGREEMENT_TOLERANCE,
             detail,
@@ -78,8 +78,6 @@ pub fn confirm_systems(
     .flatten()
     .collect()
 }
-
-const AGREEMENT: &str = "agreement between methods";
 
 /// Energy over the run: conserved when `system` is conservative (max |E(t) − E(0)| over the
 /// energy scale), never rising when it only dissipates (the largest rise above the lowest
@@ -117,7 +115,7 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
             fixed(scale)
         );
         Some(Check::new(
-            "energy conservation",
+            CheckKind::EnergyConservation,
             value,
             ENERGY_TOLERANCE,
             detail,
@@ -144,7 +142,7 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
             fixed(scale)
         );
         Some(Check::new(
-            "energy never rises",
+            CheckKind::EnergyNeverRises,
             worst / scale,
             ENERGY_TOLERANCE,
             detail,
@@ -161,7 +159,6 @@ pub fn method_agreement(
     trajectory: &Trajectory,
     samples: usize,
 ) -> Option<Check> {
-    const NAME: &str = AGREEMENT;
     let ((reference_name, reference), others) = systems.split_first()?;
     let rows = &trajectory.rows;
     if others.is_empty() || rows.is_empty() {
@@ -169,7 +166,14 @@ pub fn method_agreement(
     }
     let names = reference.coordinate_names();
     let n = names.len();
-    let fail = |detail: String| Some(Check::new(NAME, f64::INFINITY, AGREEMENT_TOLERANCE, detail));
+    let fail = |detail: String| {
+        Some(Check::new(
+            CheckKind::MethodAgreement,
+            f64::INFINITY,
+            AGREEMENT_TOLERANCE,
+            detail,
+        ))
+    };
     if let Some((other, _)) = others.iter().find(|(_, s)| s.coordinate_names() != names) {
         return fail(format!(
             "the {other} equations use other coordinates than the {reference_name} ones"
@@ -218,7 +222,12 @@ pub fn method_agreement(
             worst.1
         ),
     };
-    Some(Check::new(NAME, worst.0, AGREEMENT_TOLERANCE, detail))
+    Some(Check::new(
+        CheckKind::MethodAgreement,
+        worst.0,
+        AGREEMENT_TOLERANCE,
+        detail,
+    ))
 }
 
 #[cfg(test)]
@@ -243,7 +252,7 @@ mod tests {
     fn energy_is_conserved_by_a_correct_pendulum() {
         let pendulum = Pendulum::new(0.5, 9.81);
         let check = energy_check(&pendulum, &run(&pendulum, 1.2, 0.0)).unwrap();
-        assert_eq!(check.name, "energy conservation");
+        assert_eq!(check.kind, CheckKind::EnergyConservation);
         assert!(check.passed, "{check:?}");
         assert!(check.value < 1e-7, "{check:?}");
     }
@@ -269,7 +278,7 @@ mod tests {
         };
         let trajectory = run(&damped, 0.2, 0.0);
         let check = energy_check(&damped, &trajectory).unwrap();
-        assert_eq!(check.name, "energy never rises");
+        assert_eq!(check.kind, CheckKind::EnergyNeverRises);
         assert!(check.passed, "{check:?}");
         // The same rows with energy added halfway: a damped system cannot do that.
         let mut pumped = trajectory.clone();
@@ -328,7 +337,7 @@ mod tests {
             &trajectory,
             &[1.0],
         );
-        let names: Vec<&str> = checks.iter().map(|c| c.name.as_str()).collect();
+        let names: Vec<&str> = checks.iter().map(|c| c.name()).collect();
         assert_eq!(
             names,
             [
@@ -358,7 +367,9 @@ mod tests {
             &trajectory,
             &[1.0],
         );
-        assert!(alone.iter().any(|c| c.name == AGREEMENT && !c.passed));
+        assert!(alone
+            .iter()
+            .any(|c| c.kind == CheckKind::MethodAgreement && !c.passed));
         // And when they all derive, the agreement passes.
         let all = confirm_systems(
             ("motion-law", &a),

@@ -8,7 +8,7 @@
 //! from a small displacement along one mode, and the period measured on the motion. If the
 //! equations are wrong (a sign, a factor, a missing term) the two periods differ.
 
-use crate::numeric::check::{Check, PERIOD_TOLERANCE};
+use crate::numeric::check::{Check, CheckKind, PERIOD_TOLERANCE};
 use crate::numeric::format::fixed;
 use crate::numeric::integrate::{integrate, Options};
 use crate::numeric::system::System;
@@ -210,7 +210,6 @@ fn mass_matrix(t: &dyn Fn(&[f64]) -> Option<f64>, n: usize) -> Option<DMatrix<f6
 /// coordinate (the modes then mix), no stable equilibrium, or damping so strong that the
 /// motion dies out within the periods integrated.
 pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
-    const NAME: &str = "small-oscillation period";
     let names = system.coordinate_names();
     let conservative = system.is_conservative();
     if !conservative && (!system.has_dissipation_only() || names.len() != 1) {
@@ -242,7 +241,12 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
                     mode + 1,
                     fixed(modes.omegas[mode])
                 );
-                return Some(Check::new(NAME, f64::INFINITY, PERIOD_TOLERANCE, detail));
+                return Some(Check::new(
+                    CheckKind::SmallOscillationPeriod,
+                    f64::INFINITY,
+                    PERIOD_TOLERANCE,
+                    detail,
+                ));
             }
         };
         let expected = 2.0 * PI / modes.omegas[mode];
@@ -294,7 +298,12 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
             measured.periods,
         )
     };
-    Some(Check::new(NAME, error, PERIOD_TOLERANCE, detail))
+    Some(Check::new(
+        CheckKind::SmallOscillationPeriod,
+        error,
+        PERIOD_TOLERANCE,
+        detail,
+    ))
 }
 
 /// Whether damping would take the motion below a thousandth of its amplitude within the
