@@ -93,7 +93,7 @@ pub struct FrictionSite {
     /// The coefficient of friction μ, a scalar of constants.
     pub coefficient: Expr,
     /// The rows that hold while the site sticks: the slip velocity along each tangent is
-    /// zero (one in 2D, two in 3D). Each row's unknown is the friction force's component
+    /// zero (one in 2D, two in 3D; one along a rough slider's axis). Each row's unknown is the friction force's component
     /// along that tangent, and its velocity expression is that slip velocity component.
     pub stick: Vec<ConstraintRow>,
     /// The normal force's unknowns: one along the plane's normal (or the line of centres);

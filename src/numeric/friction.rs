@@ -4,7 +4,9 @@
 //! are rows of `A x = b`, and its friction and normal forces unknowns. A site that slips
 //! exchanges each of those rows for the sliding law `F_k = μ |N| f_k`, with `f` the unit
 //! direction of the friction force (against the slip velocity) and `|N| = σ N`, σ the sign
-//! of N; both known, the law is linear in the unknowns.
+//! of N; both known, the law is linear in the unknowns. A rough slider in 3D has two normal
+//! components: `|N| = e·N` with `e` N's unit direction, taken from the last solution and
+//! iterated until it stands still.
 //!
 //! A site whose slip velocity is zero is first assumed to stick; the solution is accepted
 //! when `|F| ≤ μ |N|`, and otherwise solved again sliding, the friction force along the

@@ -32,9 +32,9 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
                 .iter()
                 .map(|n| latex(&Expr::sym(n.clone())))
                 .collect();
-            let normal = match &normal_names[..] {
-                [one] => one.clone(),
-                many => magnitude_tex(many),
+            let (normal, size) = match &normal_names[..] {
+                [one] => (one.clone(), format!("\\left|{one}\\right|")),
+                many => (magnitude_tex(many), magnitude_tex(many)),
             };
             let slider = site.site < model.problem.joints.len() + model.problem.closures.len();
             let noun = if slider { "slider" } else { "contact" };
@@ -53,7 +53,7 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
                 .collect();
             let rows = rows.join(" and ");
             let mu = latex(&site.coefficient);
-            let steps = steps(state, &names, (&normal, noun), &rows, &mu);
+            let steps = steps(state, &names, (&normal, &size, noun), &rows, &mu);
             FrictionView {
                 site: site.name.clone(),
                 coefficient: fixed(state.coefficient),
@@ -119,15 +119,20 @@ fn law_tex(names: &[String], normal: &str, mu: &str, state: &SiteState) -> Strin
 fn steps(
     state: &SiteState,
     names: &[String],
-    (normal, noun): (&str, &str),
+    (normal, size, noun): (&str, &str, &str),
     rows: &str,
     mu: &str,
 ) -> Vec<FrictionStep> {
     let magnitude = magnitude_tex(names);
+    let wheel = if noun == "contact" {
+        " (a wheel: that it rolls without slipping)"
+    } else {
+        ""
+    };
     let check = |tangential: &[f64], n: f64, holds: bool| {
         let force: f64 = tangential.iter().map(|t| t * t).sum::<f64>().sqrt();
         format!(
-            "{magnitude} = {}\\ \\mathrm{{N}} {} {mu} \\left|{normal}\\right| = {} \\times {}\\ \\mathrm{{N}} = {}\\ \\mathrm{{N}}",
+            "{magnitude} = {}\\ \\mathrm{{N}} {} {mu} {size} = {} \\times {}\\ \\mathrm{{N}} = {}\\ \\mathrm{{N}}",
             fixed(force),
             if holds { "\\le" } else { ">" },
             fixed(state.coefficient),
@@ -154,7 +159,7 @@ fn steps(
         (&f.tangential[..], f.normal)
     });
     out.push(step(
-        format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks (a wheel: that it rolls without slipping), so that the no-slip row {rows} holds. Solved with it:"),
+        format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip row {rows} holds. Solved with it:"),
         forces(names, tangential, normal, n),
     ));
     match first {
