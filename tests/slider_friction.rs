@@ -327,3 +327,47 @@ fn explain_shows_the_slider_s_assumption_check_and_second_solve() {
         assert!(text.contains(wanted), "no `{wanted}` in the handout");
     }
 }
+
+#[test]
+fn a_rough_slider_crank_passes_its_dead_centres_sliding_and_only_loses_energy() {
+    // At a dead centre the slider stops while the crank turns on: sticking is impossible
+    // (the kinematics accelerate the slider), so it slides back, against the acceleration.
+    let text = std::fs::read_to_string(problem("slider-crank-flywheel")).expect("read");
+    let mut json: Value = serde_json::from_str(&text).expect("JSON");
+    json["loads"] = Value::Array(Vec::new());
+    let slider = json["joints"]
+        .as_array_mut()
+        .and_then(|joints| joints.iter_mut().find(|j| j["type"] == "prismatic"))
+        .expect("a prismatic joint");
+    slider["friction"] = Value::from(0.3);
+    let name = slider["name"].as_str().unwrap_or_default().to_string();
+    let path = std::env::temp_dir().join(format!("mbd-rough-crank-{}.json", std::process::id()));
+    std::fs::write(&path, json.to_string()).expect("write the problem");
+    let out = run(&[
+        OsString::from("simulate"),
+        path.clone().into(),
+        "--format".into(),
+        "json".into(),
+    ]);
+    let _ = std::fs::remove_file(&path);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(out.status.success(), "{stderr}");
+    let reversals = stderr
+        .lines()
+        .filter(|l| l.contains(&format!("slider {name} stops, and slips the other way")))
+        .count();
+    assert!(reversals >= 2, "{stderr}");
+    assert!(
+        stderr.contains("energy never rises") && !stderr.contains("FAIL"),
+        "{stderr}"
+    );
+    let (columns, rows) = table(&serde_json::from_slice(&out.stdout).expect("JSON"));
+    let total = column(&columns, "total");
+    for pair in rows.windows(2) {
+        assert!(pair[1][total] <= pair[0][total] + 1e-9, "energy rose");
+    }
+    assert!(
+        rows[rows.len() - 1][total] < rows[0][total] * 0.9,
+        "friction took energy"
+    );
+}

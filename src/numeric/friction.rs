@@ -248,6 +248,9 @@ impl Friction {
             .map(|s| first_unit(s.normal.len()))
             .collect();
         let mut failed: Vec<Option<FailedStick>> = vec![None; self.slots.len()];
+        // Sites at rest that could not stick (their sticking system was singular).
+        let mut forced = vec![false; self.slots.len()];
+        let (a_formed, b_formed) = (a, b);
         // Each pass settles a site's mode or the sign of its N; a few suffice. With two
         // components (a rough slider in 3D) |N| is not linear: the passes iterate on N's
         // direction until it stands still.
@@ -277,8 +280,36 @@ impl Friction {
                     }
                 }
             }
-            let x = solve_linear(&a, &b)?;
+            let Some(x) = solve_linear(&a, &b) else {
+                // Sticking can be impossible at rest: where the kinematics make the slip
+                // accelerate (a slider at a dead centre), no force holds it. It slides
+                // then, against the slip acceleration (found on the next pass).
+                let stuck = (0..self.slots.len())
+                    .find(|&i| held[i] == Held::Decide && modes[i] == Held::Stick && !forced[i])?;
+                forced[stuck] = true;
+                modes[stuck] = Held::Slip(first_unit(self.slots[stuck].rows.len()));
+                continue;
+            };
             let mut settled = true;
+            for (i, slot) in self.slots.iter().enumerate() {
+                let Held::Slip(direction) = &modes[i] else {
+                    continue;
+                };
+                if !forced[i] {
+                    continue;
+                }
+                // The slip acceleration: each stick row's residual, with the rows as formed.
+                let accelerating: Vec<f64> = slot
+                    .rows
+                    .iter()
+                    .map(|&r| (a_formed.row(r) * &x)[0] - b_formed[r])
+                    .collect();
+                let size = norm(&accelerating);
+                if size > 0.0 && dot(direction, &accelerating) > 1e-12 * size {
+                    modes[i] = Held::Slip(accelerating.iter().map(|v| -v / size).collect());
+                    settled = false;
+                }
+            }
             for (i, slot) in self.slots.iter().enumerate() {
                 let components: Vec<f64> = slot.normal.iter().map(|&n| x[n]).collect();
                 let normal = signed_normal(&components);
