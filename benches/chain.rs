@@ -56,6 +56,7 @@ pub fn planar_chain(n: usize) -> Problem {
                 down(l.clone(), i - 1)
             },
             child_at: VectorExpr::default(),
+            friction: None,
             path: format!("joints[{}]", i - 1),
         })
         .collect();

@@ -17,6 +17,9 @@ use crate::support::Lcg;
 /// unknown (the friction is μ|N|), and Kane's rows keep the contact's forces.
 fn has_friction(problem: &Problem) -> bool {
     problem.constraints.iter().any(|c| c.friction.is_some())
+        || (problem.joints.iter())
+            .chain(&problem.closures)
+            .any(|j| j.friction.is_some())
 }
 
 /// The constrained problems whose `u_D = C u_I` would not read as a textbook writes it

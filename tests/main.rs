@@ -30,6 +30,7 @@ mod render;
 mod robustness;
 mod rolling_on_body;
 mod rows_as_formed;
+mod slider_friction;
 mod snapshots_by_problem;
 mod speeds;
 mod support;

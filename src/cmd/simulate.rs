@@ -70,7 +70,8 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     }
 }
 
-/// A friction site's switch in words: `t = 0.2912 s: contact lane stops slipping (rolls)`.
+/// A friction site's switch in words: `t = 0.2912 s: contact lane stops slipping (rolls)`,
+/// `slider slope` for a rough prismatic joint or closure.
 pub fn switch_line(problem: &crate::problem::Problem, switch: &Switch) -> String {
     use crate::numeric::friction::Mode;
     let rolls = problem.constraints.iter().any(|c| {
@@ -88,9 +89,16 @@ pub fn switch_line(problem: &crate::problem::Problem, switch: &Switch) -> String
         (Mode::Slip, Mode::Slip) => "stops, and slips the other way",
         (Mode::Stick, Mode::Stick) => "sticks again",
     };
+    // A rough prismatic joint or closure is a slider, the rest contacts.
+    let slider = problem
+        .joints
+        .iter()
+        .chain(&problem.closures)
+        .any(|j| j.name == switch.site && j.friction.is_some());
+    let kind = if slider { "slider" } else { "contact" };
     // Ten significant digits: the instant is located to the integration tolerance.
     let t: f64 = format!("{:.9e}", switch.t).parse().unwrap_or(switch.t);
-    format!("t = {t} s: contact {} {what}", switch.site)
+    format!("t = {t} s: {kind} {} {what}", switch.site)
 }
 
 /// The checks as lines for standard error (the table itself goes to the output).

@@ -93,11 +93,13 @@ pub struct FrictionSite {
     /// The coefficient of friction μ, a scalar of constants.
     pub coefficient: Expr,
     /// The rows that hold while the site sticks: the slip velocity along each tangent is
-    /// zero (one in 2D, two in 3D). Each row's unknown is the friction force's component
+    /// zero (one in 2D, two in 3D; one along a rough slider's axis). Each row's unknown is the friction force's component
     /// along that tangent, and its velocity expression is that slip velocity component.
     pub stick: Vec<ConstraintRow>,
-    /// The normal force's unknown, along the plane's normal (or the line of centres).
-    pub normal: Symbol,
+    /// The normal force's unknowns: one along the plane's normal (or the line of centres);
+    /// for a rough slider, its force components perpendicular to the axis (one in 2D, two
+    /// in 3D, |N| then their root sum of squares).
+    pub normal: Vec<Symbol>,
 }
 
 /// The symbol of a prescribed coordinate's drive.

@@ -39,10 +39,17 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let mut dropped = Vec::new();
     let mut tilts = Vec::new();
     let mut friction: Vec<FrictionSite> = Vec::new();
+    for (j, site) in sites.iter().enumerate() {
+        friction.extend(super::friction::joint_site(model, j, site)?);
+    }
     for c in 0..problem.closures.len() {
         let site = closure_site(model, c)?;
         let index = sites.len();
-        rows.extend(closure_rows(model, &site, index)?);
+        let closure = closure_rows(model, &site, index)?;
+        let (kept, frictional) =
+            super::friction::split_closure_rows(model, c, (&site, index), closure);
+        rows.extend(kept);
+        friction.extend(frictional);
         sites.push(site);
     }
     let values = initial_values(model);
@@ -164,13 +171,14 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let mut rows = drop_redundant(model, rows, &values, &mut dropped);
     // A friction site's stick rows enforce its tangential reactions as the rows do theirs.
     let kept = rows.len();
+    let counts: Vec<usize> = friction.iter().map(|f| f.stick.len()).collect();
     rows.extend(friction.iter_mut().flat_map(|f| f.stick.drain(..)));
     keep_enforced_reactions(model, &mut sites, &mut rows)?;
     let mut stick = rows.split_off(kept).into_iter();
-    for f in &mut friction {
-        let count = sites[f.site].reactions.len().saturating_sub(1);
+    for (f, count) in friction.iter_mut().zip(counts) {
         f.stick = stick.by_ref().take(count).collect();
     }
+    super::friction::check_normals(model, &sites, &friction)?;
     let mut constraints = Constraints {
         rows,
         friction,

@@ -1,5 +1,6 @@
 //! Coulomb friction in the model: the `contact` entry's site, and the sites where friction
-//! acts (a `rolling`, `gear` or `contact` with `friction`).
+//! acts (a `rolling`, `gear` or `contact` with `friction`, a rough `prismatic` joint or
+//! closure).
 //!
 //! A friction site keeps its tangential reaction components as unknowns (the friction
 //! force) and its normal one (N). Its no-slip rows are not constraints of the motion: the
@@ -115,11 +116,124 @@ pub fn split_rows(
         site: index,
         coefficient: coefficient.clone(),
         stick: rows,
-        normal: normal_row.unknown.clone(),
+        normal: vec![normal_row.unknown.clone()],
     };
     debug_assert!(site
         .stick
         .iter()
         .all(|r| matches!(r.origin, RowOrigin::Site { .. })));
     Ok((vec![normal_row], Some(site)))
+}
+
+/// The friction site of rough prismatic joint `j` of the tree (its site `site`), if it is
+/// one: its friction force along the axis (the first reaction component) is held by the
+/// row `±q' = 0` while it sticks, and its normal force is the reaction's force components
+/// perpendicular to the axis (its moment does not count).
+///
+/// # Errors
+/// An invalid axis.
+pub fn joint_site(
+    model: &Model,
+    j: usize,
+    site: &Site,
+) -> Result<Option<FrictionSite>, MechanicsError> {
+    let problem = model.problem;
+    let joint = &problem.joints[j];
+    let Some(coefficient) = &joint.friction else {
+        return Ok(None);
+    };
+    let (_, flipped) = super::joints::joint_axis(problem, joint, &model.frames, &model.values)?;
+    let rate = problem.coordinate_expr(joint.coordinates[0], 1);
+    // The friction component is along the canonical axis, the coordinate along the axis as
+    // written.
+    let velocity = if flipped { -rate } else { rate };
+    Ok(slider_site(site, j, coefficient, velocity))
+}
+
+/// Splits rough prismatic closure `c`'s rows (its site `site`, at `index`): the row along
+/// the axis (the first) becomes the site's stick row, without a position level, since the
+/// closure lets the child slide.
+pub fn split_closure_rows(
+    model: &Model,
+    c: usize,
+    (site, index): (&Site, usize),
+    mut rows: Vec<ConstraintRow>,
+) -> (Vec<ConstraintRow>, Option<FrictionSite>) {
+    let Some(coefficient) = &model.problem.closures[c].friction else {
+        return (rows, None);
+    };
+    let Some(axial) = site.reactions.first().map(|r| r.unknown(&site.name)) else {
+        return (rows, None);
+    };
+    let Some(at) = rows.iter().position(|r| r.unknown == axial) else {
+        return (rows, None);
+    };
+    let row = rows.remove(at);
+    let friction = slider_site(site, index, coefficient, row.velocity);
+    (rows, friction)
+}
+
+/// A rough slider's friction site, whose first reaction component is the friction force,
+/// with the stick row's velocity (the slip velocity along that component) given.
+fn slider_site(
+    site: &Site,
+    index: usize,
+    coefficient: &Expr,
+    velocity: Expr,
+) -> Option<FrictionSite> {
+    let (friction, rest) = site.reactions.split_first()?;
+    let normal = rest
+        .iter()
+        .filter(|r| r.kind == super::joints::ComponentKind::Force)
+        .map(|r| r.unknown(&site.name))
+        .collect();
+    let stick = ConstraintRow {
+        origin: RowOrigin::Site {
+            site: index,
+            component: 0,
+        },
+        name: format!("{}.{}", site.name, friction.component()),
+        position: None,
+        velocity,
+        unknown: friction.unknown(&site.name),
+    };
+    Some(FrictionSite {
+        name: site.name.clone(),
+        site: index,
+        coefficient: coefficient.clone(),
+        stick: vec![stick],
+        normal,
+    })
+}
+
+/// Every friction site keeps a normal force: a rough closure whose perpendicular rows are
+/// redundant with other constraints has none of its own for friction to be proportional to.
+///
+/// # Errors
+/// A friction site without its normal force among its reactions.
+pub fn check_normals(
+    model: &Model,
+    sites: &[Site],
+    friction: &[FrictionSite],
+) -> Result<(), MechanicsError> {
+    for f in friction {
+        let site = &sites[f.site];
+        let kept = |symbol: &crate::symbolic::Symbol| {
+            site.reactions
+                .iter()
+                .any(|r| r.unknown(&site.name) == *symbol)
+        };
+        if !f.normal.is_empty() && f.normal.iter().all(kept) {
+            continue;
+        }
+        return Err(MechanicsError {
+            path: format!("{}.friction", model.problem.site_path(f.site)),
+            message: format!(
+                "`{}` has friction, but its normal force is not unique: the other constraints already hold the body across the axis, so friction has no normal force to be proportional to",
+                f.name
+            ),
+            hint: Some("remove `friction` here, or the constraint that holds the body across the axis".into()),
+        });
+    }
+    Ok(())
 }

@@ -286,7 +286,7 @@ pub fn reaction_components(
             .collect()
     };
     let axis = motion.axis.clone().unwrap_or_else(|| unit(2));
-    match (joint.kind, planar) {
+    let mut out = match (joint.kind, planar) {
         (JointKind::Revolute, true) => all(ComponentKind::Force, in_plane),
         (JointKind::Prismatic, true) => {
             vec![component(ComponentKind::Force, cross3(&unit(2), &axis), 1)]
@@ -335,6 +335,23 @@ pub fn reaction_components(
             .into_iter()
             .chain(all(ComponentKind::Moment, every))
             .collect(),
+    };
+    if joint.kind == JointKind::Prismatic && joint.friction.is_some() {
+        out.insert(0, friction_component(parent, axis));
+    }
+    out
+}
+
+/// A rough slider's friction force along its (canonical) axis, first among its reactions:
+/// named by the axis letter when the axis is a unit vector (`Fx`), `Ft1` otherwise.
+fn friction_component(parent: BodyId, axis: Components) -> ReactionComponent {
+    ReactionComponent {
+        kind: ComponentKind::Force,
+        axis: match unit_axis_of(&axis) {
+            Some(a) => Axis::Unit(a as u8),
+            None => Axis::Tangent(1),
+        },
+        direction: Vector::new(parent, axis),
     }
 }
 

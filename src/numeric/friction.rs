@@ -4,7 +4,9 @@
 //! are rows of `A x = b`, and its friction and normal forces unknowns. A site that slips
 //! exchanges each of those rows for the sliding law `F_k = μ |N| f_k`, with `f` the unit
 //! direction of the friction force (against the slip velocity) and `|N| = σ N`, σ the sign
-//! of N; both known, the law is linear in the unknowns.
+//! of N; both known, the law is linear in the unknowns. A rough slider in 3D has two normal
+//! components: `|N| = e·N` with `e` N's unit direction, taken from the last solution and
+//! iterated until it stands still.
 //!
 //! A site whose slip velocity is zero is first assumed to stick; the solution is accepted
 //! when `|F| ≤ μ |N|`, and otherwise solved again sliding, the friction force along the
@@ -122,8 +124,9 @@ struct Slot {
     rows: Vec<usize>,
     /// The friction force components' indices among the unknowns.
     tangential: Vec<usize>,
-    /// The normal force's index among the unknowns.
-    normal: usize,
+    /// The normal force's components' indices among the unknowns (two for a rough slider
+    /// in 3D).
+    normal: Vec<usize>,
     /// μ's output, then the slip velocity components', in the program.
     first_output: usize,
 }
@@ -170,7 +173,11 @@ impl Friction {
                     .iter()
                     .map(|r| unknowns.iter().position(|u| *u == r.unknown))
                     .collect::<Option<_>>()?,
-                normal: unknowns.iter().position(|u| *u == site.normal)?,
+                normal: site
+                    .normal
+                    .iter()
+                    .map(|n| unknowns.iter().position(|u| u == n))
+                    .collect::<Option<_>>()?,
                 first_output,
             });
         }
@@ -233,10 +240,21 @@ impl Friction {
                 other => other.clone(),
             })
             .collect();
-        let mut signs = vec![1.0; self.slots.len()];
+        // The unit direction of each site's N among its components, so that |N| = e·N is
+        // linear in the unknowns: with one component e is N's sign.
+        let mut signs: Vec<Vec<f64>> = self
+            .slots
+            .iter()
+            .map(|s| first_unit(s.normal.len()))
+            .collect();
         let mut failed: Vec<Option<FailedStick>> = vec![None; self.slots.len()];
-        // Each pass settles a site's mode or the sign of its N; a few suffice.
-        for _ in 0..=2 * self.slots.len() + 2 {
+        // Sites at rest that could not stick (their sticking system was singular).
+        let mut forced = vec![false; self.slots.len()];
+        let (a_formed, b_formed) = (a, b);
+        // Each pass settles a site's mode or the sign of its N; a few suffice. With two
+        // components (a rough slider in 3D) |N| is not linear: the passes iterate on N's
+        // direction until it stands still.
+        for _ in 0..=2 * self.slots.len() + 2 + DIRECTION_PASSES {
             let (mut a, mut b) = (a.clone(), b.clone());
             for ((slot, mode), (sign, (mu, slip))) in
                 self.slots.iter().zip(&modes).zip(signs.iter().zip(&run))
@@ -255,20 +273,51 @@ impl Friction {
                     for (k, &row) in slot.rows.iter().enumerate() {
                         a.row_mut(row).fill(0.0);
                         a[(row, slot.tangential[k])] = 1.0;
-                        a[(row, slot.normal)] -= mu * sign * direction[k];
+                        for (&n, e) in slot.normal.iter().zip(sign) {
+                            a[(row, n)] -= mu * e * direction[k];
+                        }
                         b[row] = 0.0;
                     }
                 }
             }
-            let x = solve_linear(&a, &b)?;
+            let Some(x) = solve_linear(&a, &b) else {
+                // Sticking can be impossible at rest: where the kinematics make the slip
+                // accelerate (a slider at a dead centre), no force holds it. It slides
+                // then, against the slip acceleration (found on the next pass).
+                let stuck = (0..self.slots.len())
+                    .find(|&i| held[i] == Held::Decide && modes[i] == Held::Stick && !forced[i])?;
+                forced[stuck] = true;
+                modes[stuck] = Held::Slip(first_unit(self.slots[stuck].rows.len()));
+                continue;
+            };
             let mut settled = true;
             for (i, slot) in self.slots.iter().enumerate() {
-                let normal = x[slot.normal];
+                let Held::Slip(direction) = &modes[i] else {
+                    continue;
+                };
+                if !forced[i] {
+                    continue;
+                }
+                // The slip acceleration: each stick row's residual, with the rows as formed.
+                let accelerating: Vec<f64> = slot
+                    .rows
+                    .iter()
+                    .map(|&r| (a_formed.row(r) * &x)[0] - b_formed[r])
+                    .collect();
+                let size = norm(&accelerating);
+                if size > 0.0 && dot(direction, &accelerating) > 1e-12 * size {
+                    modes[i] = Held::Slip(accelerating.iter().map(|v| -v / size).collect());
+                    settled = false;
+                }
+            }
+            for (i, slot) in self.slots.iter().enumerate() {
+                let components: Vec<f64> = slot.normal.iter().map(|&n| x[n]).collect();
+                let normal = signed_normal(&components);
                 let mu = run[i].0;
                 let tangential: Vec<f64> = slot.tangential.iter().map(|&t| x[t]).collect();
-                let sign = if normal < 0.0 { -1.0 } else { 1.0 };
+                let sign = direction_of(&components, &signs[i]);
                 match &modes[i] {
-                    Held::Slip(_) if sign != signs[i] => {
+                    Held::Slip(_) if !same_direction(&sign, &signs[i]) => {
                         signs[i] = sign;
                         settled = false;
                     }
@@ -294,7 +343,8 @@ impl Friction {
                     .iter()
                     .enumerate()
                     .map(|(i, slot)| {
-                        let normal = x[slot.normal];
+                        let components: Vec<f64> = slot.normal.iter().map(|&n| x[n]).collect();
+                        let normal = signed_normal(&components);
                         SiteState {
                             name: slot.name.clone(),
                             mode: match modes[i] {
@@ -329,6 +379,45 @@ impl Friction {
             })
             .collect()
     }
+}
+
+/// Passes allowed, beyond those that settle modes and signs, for N's direction to settle
+/// where N has two components.
+const DIRECTION_PASSES: usize = 60;
+
+/// N as reported: its one component, signed; the magnitude of two.
+fn signed_normal(components: &[f64]) -> f64 {
+    match components {
+        [n] => *n,
+        _ => norm(components),
+    }
+}
+
+/// N's unit direction among its components; `held` where N is zero. With one component,
+/// its sign (zero counts as positive, as the first guess).
+fn direction_of(components: &[f64], held: &[f64]) -> Vec<f64> {
+    if let [n] = components {
+        return vec![if *n < 0.0 { -1.0 } else { 1.0 }];
+    }
+    let size = norm(components);
+    if size > 0.0 {
+        components.iter().map(|c| c / size).collect()
+    } else {
+        held.to_vec()
+    }
+}
+
+/// Whether two unit directions agree: exactly for a sign, to rounding for two components.
+fn same_direction(a: &[f64], b: &[f64]) -> bool {
+    match (a, b) {
+        ([x], [y]) => x == y,
+        _ => a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-13),
+    }
+}
+
+/// The first unit vector among `n` components, the first guess of N's direction.
+fn first_unit(n: usize) -> Vec<f64> {
+    (0..n).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect()
 }
 
 fn norm(v: &[f64]) -> f64 {

@@ -2,7 +2,7 @@
 //! coordinate keys `dependent`, `dependent_rate` and `motion` (see constraints.md).
 
 use super::expressions::Context;
-use super::joints::{has_axis, has_sequence};
+use super::joints::{has_axis, has_friction, has_sequence, NO_FRICTION_HINT};
 use super::json::{array, check_keys, index_path, key_path, kind, object, required, string};
 use super::model::*;
 use super::names::Kind;
@@ -11,8 +11,8 @@ use super::validate;
 use crate::symbolic::{Expr, Symbol};
 use serde_json::{Map, Value};
 
-const CLOSURE_KEYS: [&str; 8] = [
-    "name", "type", "parent", "child", "axis", "sequence", "at", "child_at",
+const CLOSURE_KEYS: [&str; 9] = [
+    "name", "type", "parent", "child", "axis", "sequence", "at", "child_at", "friction",
 ];
 
 impl Reader {
@@ -99,8 +99,18 @@ impl Reader {
                 sequence: Vec::new(),
                 at: VectorExpr::default(),
                 child_at: VectorExpr::default(),
+                friction: None,
                 path: path.clone(),
             };
+            if has_friction(kind) {
+                joint.friction = self.friction(fields, &path);
+            } else if fields.contains_key("friction") {
+                self.diag.hint(
+                    &key_path(&path, "friction"),
+                    format!("a {} closure cannot have friction", kind.name()),
+                    NO_FRICTION_HINT,
+                );
+            }
             if has_axis(kind) {
                 joint.axis = self.axis(fields.get("axis"), &key_path(&path, "axis"), kind, parent);
             } else if fields.contains_key("axis") {

@@ -1,6 +1,7 @@
 //! Reading Coulomb friction: the key `friction` (the coefficient μ ≥ 0) on `rolling`, `gear`
-//! and `contact` entries, and the `contact` entry itself, a point of a body that stays on a
-//! plane fixed in another and may slide on it (see constraints.md, version 3).
+//! and `contact` entries and on `prismatic` joints and closures, and the `contact` entry
+//! itself, a point of a body that stays on a plane fixed in another and may slide on it
+//! (see constraints.md, version 3).
 
 use super::expressions::{ConstantValues, Context};
 use super::json::{check_keys, key_path, required, Diagnostics};
@@ -96,6 +97,29 @@ pub fn coefficient(mu: &Expr, values: &ConstantValues, path: &str, diag: &mut Di
                     fixed(value)
                 ),
                 "give μ ≥ 0, e.g. \"friction\": 0.3 (0 for a smooth surface)",
+            );
+        }
+    }
+}
+
+/// A rough prismatic joint's coordinate may not be prescribed: the drive and the friction
+/// would both act along the axis, and while the slider sticks nothing would share the
+/// force between them.
+pub fn check_sliders(joints: &[Joint], coordinates: &[Coordinate], diag: &mut Diagnostics) {
+    for joint in joints.iter().filter(|j| j.friction.is_some()) {
+        let prescribed = joint
+            .coordinates
+            .iter()
+            .filter_map(|&c| coordinates.get(c))
+            .find(|c| c.motion.is_some());
+        if let Some(c) = prescribed {
+            diag.hint(
+                &key_path(&joint.path, "friction"),
+                format!(
+                    "joint `{}` has friction, but its coordinate `{}` is prescribed: the drive along the axis and the friction could not be told apart while it sticks",
+                    joint.name, c.name
+                ),
+                "remove `friction` (the drive's force then includes it), or the coordinate's `motion`",
             );
         }
     }

@@ -72,6 +72,14 @@ pub(super) fn has_sequence(kind: JointKind) -> bool {
     )
 }
 
+/// Whether a joint (or closure) of this type may carry Coulomb friction: only a slider.
+pub(super) fn has_friction(kind: JointKind) -> bool {
+    kind == JointKind::Prismatic
+}
+
+/// What to do instead of friction on a joint that is not prismatic.
+pub(super) const NO_FRICTION_HINT: &str = "Coulomb friction acts along a `prismatic` joint or closure, or at a `rolling`, `gear` or `contact` entry of `constraints`; remove `friction` here";
+
 fn allowed_in_2d(kind: JointKind) -> bool {
     matches!(
         kind,
@@ -153,6 +161,9 @@ impl Reader {
         if kind.is_none_or(has_sequence) {
             allowed.push("sequence");
         }
+        if kind.is_none_or(has_friction) {
+            allowed.push("friction");
+        }
         let Some(kind) = kind else {
             check_keys(fields, path, &allowed, &mut self.diag);
             return;
@@ -173,10 +184,17 @@ impl Reader {
                 );
             }
         }
+        if fields.contains_key("friction") && !has_friction(kind) {
+            self.diag.hint(
+                &key_path(path, "friction"),
+                format!("a {} joint cannot have friction", kind.name()),
+                NO_FRICTION_HINT,
+            );
+        }
         let known: Vec<&str> = allowed
             .iter()
             .copied()
-            .chain(["axis", "sequence"])
+            .chain(["axis", "sequence", "friction"])
             .collect();
         let unknown: serde_json::Map<String, Value> = fields
             .iter()
@@ -295,9 +313,13 @@ impl Reader {
                 sequence: Vec::new(),
                 at: VectorExpr::default(),
                 child_at: VectorExpr::default(),
+                friction: None,
                 path: path.clone(),
             };
             if let Some(fields) = value.as_object() {
+                if heads[i].kind.is_some_and(has_friction) {
+                    joint.friction = self.friction(fields, &path);
+                }
                 if heads[i].kind.is_some_and(has_axis) {
                     joint.axis =
                         self.axis(fields.get("axis"), &key_path(&path, "axis"), kind, parent);

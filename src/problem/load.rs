@@ -192,9 +192,12 @@ fn recheck(problem: &Problem, values: &ConstantValues) -> Vec<ProblemError> {
             &mut diag,
         );
     }
-    for constraint in &problem.constraints {
-        if let Some(mu) = &constraint.friction {
-            let path = key_path(&constraint.path, "friction");
+    let coefficients = (problem.constraints.iter().map(|c| (&c.friction, &c.path)))
+        .chain(problem.joints.iter().map(|j| (&j.friction, &j.path)))
+        .chain(problem.closures.iter().map(|j| (&j.friction, &j.path)));
+    for (friction, path) in coefficients {
+        if let Some(mu) = friction {
+            let path = key_path(path, "friction");
             super::friction::coefficient(mu, values, &path, &mut diag);
         }
     }

@@ -179,6 +179,9 @@ pub struct Joint {
     pub at: VectorExpr,
     /// The joint's point on the child, from the child's origin in its unit vectors.
     pub child_at: VectorExpr,
+    /// Prismatic: the coefficient of Coulomb friction μ ≥ 0 along the axis, a scalar of
+    /// constants; `None` for a smooth slider.
+    pub friction: Option<Expr>,
     /// The JSON path, e.g. `joints[1]`.
     pub path: String,
 }
@@ -427,6 +430,18 @@ impl Problem {
             &self.closures[site - j].name
         } else {
             &self.constraints[site - j - c].name
+        }
+    }
+
+    /// The JSON path of reaction site `site`'s entry, e.g. `closures[0]`.
+    pub fn site_path(&self, site: usize) -> &str {
+        let (j, c) = (self.joints.len(), self.closures.len());
+        if site < j {
+            &self.joints[site].path
+        } else if site < j + c {
+            &self.closures[site - j].path
+        } else {
+            &self.constraints[site - j - c].path
         }
     }
 

@@ -26,7 +26,18 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
                 .iter()
                 .map(|r| latex(&Expr::sym(r.unknown.clone())))
                 .collect();
-            let normal = latex(&Expr::sym(site.normal.clone()));
+            // A rough slider in 3D has two normal components: |N| is their root sum of squares.
+            let normal_names: Vec<String> = site
+                .normal
+                .iter()
+                .map(|n| latex(&Expr::sym(n.clone())))
+                .collect();
+            let (normal, size) = match &normal_names[..] {
+                [one] => (one.clone(), format!("\\left|{one}\\right|")),
+                many => (magnitude_tex(many), magnitude_tex(many)),
+            };
+            let slider = site.site < model.problem.joints.len() + model.problem.closures.len();
+            let noun = if slider { "slider" } else { "contact" };
             let rows: Vec<String> = site
                 .stick
                 .iter()
@@ -42,7 +53,7 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
                 .collect();
             let rows = rows.join(" and ");
             let mu = latex(&site.coefficient);
-            let steps = steps(state, &names, &normal, &rows, &mu);
+            let steps = steps(state, &names, (&normal, &size, noun), &rows, &mu);
             FrictionView {
                 site: site.name.clone(),
                 coefficient: fixed(state.coefficient),
@@ -108,15 +119,20 @@ fn law_tex(names: &[String], normal: &str, mu: &str, state: &SiteState) -> Strin
 fn steps(
     state: &SiteState,
     names: &[String],
-    normal: &str,
+    (normal, size, noun): (&str, &str, &str),
     rows: &str,
     mu: &str,
 ) -> Vec<FrictionStep> {
     let magnitude = magnitude_tex(names);
+    let wheel = if noun == "contact" {
+        " (a wheel: that it rolls without slipping)"
+    } else {
+        ""
+    };
     let check = |tangential: &[f64], n: f64, holds: bool| {
         let force: f64 = tangential.iter().map(|t| t * t).sum::<f64>().sqrt();
         format!(
-            "{magnitude} = {}\\ \\mathrm{{N}} {} {mu} \\left|{normal}\\right| = {} \\times {}\\ \\mathrm{{N}} = {}\\ \\mathrm{{N}}",
+            "{magnitude} = {}\\ \\mathrm{{N}} {} {mu} {size} = {} \\times {}\\ \\mathrm{{N}} = {}\\ \\mathrm{{N}}",
             fixed(force),
             if holds { "\\le" } else { ">" },
             fixed(state.coefficient),
@@ -130,7 +146,7 @@ fn steps(
     if state.mode == Mode::Slip && state.failed_stick.is_none() {
         out.push(step(
             format!(
-                "The contact slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ|N| against the slip, and the no-slip row {rows} of the equations above does not hold; in its place, the sliding law:",
+                "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ|N| against the slip, and the no-slip row {rows} of the equations above does not hold; in its place, the sliding law:",
                 fixed(slip_speed)
             ),
             law_tex(names, normal, mu, state),
@@ -143,7 +159,7 @@ fn steps(
         (&f.tangential[..], f.normal)
     });
     out.push(step(
-        format!("The contact is at rest relative to the surface at this state. Assume that it sticks (a wheel: that it rolls without slipping), so that the no-slip row {rows} holds. Solved with it:"),
+        format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip row {rows} holds. Solved with it:"),
         forces(names, tangential, normal, n),
     ));
     match first {
@@ -153,7 +169,7 @@ fn steps(
                 check(tangential, n, true),
             ));
             out.push(step(
-                "The check holds: the contact sticks, and the solution stands.",
+                format!("The check holds: the {noun} sticks, and the solution stands."),
                 "",
             ));
         }
@@ -163,7 +179,7 @@ fn steps(
                 check(tangential, n, false),
             ));
             out.push(step(
-                format!("The check fails: friction cannot hold the contact, and it slips. Solve again with sliding friction μ|N| opposing the motion that would start (along the force that sticking needed): row {rows} is replaced by the sliding law"),
+                format!("The check fails: friction cannot hold the {noun}, and it slips. Solve again with sliding friction μ|N| opposing the motion that would start (along the force that sticking needed): row {rows} is replaced by the sliding law"),
                 law_tex(names, normal, mu, state),
             ));
             out.push(step("Solved with it (the values below):", solved));

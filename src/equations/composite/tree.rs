@@ -20,6 +20,7 @@ pub fn applies(model: &Model) -> bool {
     let problem = model.problem;
     model.speeds.is_none()
         && model.constraints.is_empty()
+        && model.constraints.friction.is_empty()
         && problem.closures.is_empty()
         && problem.constraints.is_empty()
         && problem

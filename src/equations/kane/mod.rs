@@ -147,7 +147,13 @@ pub(crate) fn generalized_groups(
         omega_own: own_partials(&inertia.alpha, &accelerations, own),
     };
     let joint_loads = match workless {
-        Workless::TreeReactions => joint_load_generalized_forces(model),
+        Workless::TreeReactions => {
+            let mut q = joint_load_generalized_forces(model);
+            // A rough slider's friction is the one part of a tree joint's reaction that
+            // does work with the coordinates' rates.
+            crate::equations::friction::add_slider_forces(model, &mut q);
+            q
+        }
         Workless::EveryConstraintForce => load_generalized_forces(model),
     };
     let generalized_joint_loads = speeds_forces(model, joint_loads);
@@ -244,7 +250,14 @@ pub(crate) fn auxiliary_rows(
     let subtree = model.subtree(j);
     let pivot = model.sites[j].point.position.clone();
     let mut rows = Vec::new();
-    for component in &model.sites[j].reactions {
+    let site = &model.sites[j];
+    for component in &site.reactions {
+        if crate::equations::friction::is_slider_friction(model, j, &component.unknown(&site.name))
+        {
+            // Along the axis the auxiliary speed would be the joint's own: the row is the
+            // coordinate's.
+            continue;
+        }
         let is_force = component.kind == ComponentKind::Force;
         let d = &component.direction;
         let velocity_at = |position: &Vector| -> Vector {

@@ -35,7 +35,8 @@ pub enum Axis {
     Numbered(u8),
     /// A rolling contact's normal.
     Normal,
-    /// One of a rolling contact's tangents, counted from 1.
+    /// One of a rolling contact's tangents, counted from 1 (`t1` is also a rough slider's
+    /// axis when it is not a unit vector).
     Tangent(u8),
     /// A unit vector of the frame the reaction is given in: 0, 1, 2 for x, y, z.
     Unit(u8),
