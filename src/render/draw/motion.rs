@@ -69,7 +69,7 @@ pub struct Motion {
     /// Rolling contacts' points (ids into `points`), whose track is drawn as the ground.
     pub rolling: Vec<usize>,
     /// Per spring, then per damper: its lane beside the others between the same points
-    /// (see [`super::strokes::lanes`]).
+    /// (the solution stage gives each its lane).
     pub spring_lanes: Vec<f64>,
     pub damper_lanes: Vec<f64>,
     /// The frames.

@@ -239,7 +239,7 @@ pub enum Shape {
     /// `along` (a vector), or a small support when `along` is zero.
     Ground { at: P3, along: P3, up: P3 },
     /// A spring as a zig-zag, `lane` steps to the side of the line between its ends when
-    /// it shares them with others (see [`super::strokes::lanes`]).
+    /// it shares them with others (the solution stage gives each its lane).
     Spring { from: P3, to: P3, lane: f64 },
     /// A damper as a dashpot, likewise.
     Damper { from: P3, to: P3, lane: f64 },
