@@ -65,7 +65,7 @@ fn main() {
             Some(Ok(motion)) => motion
                 .accelerations
                 .iter()
-                .map(|x| format!("{x:.6}"))
+                .map(|x| format!("{x:.12}"))
                 .collect::<Vec<_>>()
                 .join(" "),
             _ => "singular".into(),

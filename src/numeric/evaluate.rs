@@ -315,15 +315,15 @@ impl Compiled {
         self.program.run(&inputs, &mut scratch, &mut values);
         self.scratch.replace(scratch);
         let n = self.unknowns;
-        let a = DMatrix::from_row_slice(n, n, &values[..n * n]);
-        let b = DVector::from_column_slice(&values[n * n..n * n + n]);
         let state = || describe_state(t, &self.coordinates, q, rates);
-        if a.iter().chain(b.iter()).any(|x| !x.is_finite()) {
+        if !values[..n * n + n].iter().all(|x| x.is_finite()) {
             return Err(SolveError::NotFinite {
                 state: state(),
                 what: "a coefficient of the equations".into(),
             });
         }
+        let a = DMatrix::from_row_slice(n, n, &values[..n * n]);
+        let b = DVector::from_column_slice(&values[n * n..n * n + n]);
         let singular = || SolveError::SingularSystem {
             state: state(),
             detail: self.singularity_detail(&DMatrix::from_row_slice(n, n, &values[..n * n])),

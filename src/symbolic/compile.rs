@@ -4,6 +4,7 @@
 use super::expr::{Expr, Func, Node, Symbol};
 use super::fast_hash::FastMap;
 use super::instr::Instr;
+use super::runs::Runs;
 use std::ops::Neg;
 
 /// A straight-line program that evaluates a list of expressions.
@@ -15,6 +16,8 @@ pub struct Program {
     pub(super) constants: Vec<f64>,
     pub(super) instructions: Vec<Instr>,
     pub(super) outputs: Vec<usize>,
+    /// The instructions as [`Runs`], the form `run` executes.
+    runs: Runs,
 }
 
 struct Compiler {
@@ -38,6 +41,7 @@ impl Program {
                 constants: Vec::new(),
                 instructions: Vec::new(),
                 outputs: Vec::new(),
+                runs: Runs::default(),
             },
             by_pointer: FastMap::default(),
             by_value: FastMap::default(),
@@ -60,6 +64,8 @@ impl Program {
                 _ => f64::NAN,
             })
             .collect();
+        let first = inputs.len() + c.program.constants.len();
+        c.program.runs = Runs::new(&instructions, first);
         c.program.instructions = instructions;
         c.program.outputs = outputs;
         c.program
@@ -84,9 +90,7 @@ impl Program {
         scratch.resize(start + self.instructions.len(), 0.0);
         scratch[..count].copy_from_slice(&inputs[..count]);
         scratch[count..start].copy_from_slice(&self.constants);
-        for (i, instr) in self.instructions.iter().enumerate() {
-            scratch[start + i] = instr.execute(scratch);
-        }
+        self.runs.execute(scratch, start);
         for (out, slot) in outputs.iter_mut().zip(&self.outputs) {
             *out = scratch[*slot];
         }

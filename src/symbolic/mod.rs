@@ -23,6 +23,7 @@ pub mod number;
 pub mod parse;
 pub mod print;
 pub mod roots;
+mod runs;
 mod schedule;
 pub mod simplify;
 pub mod style;
