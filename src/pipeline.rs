@@ -354,7 +354,7 @@ impl System for Solver<'_> {
         self.compiled().coordinate_names()
     }
 
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<crate::numeric::system::ReactionColumn> {
         self.compiled().reaction_columns()
     }
 

@@ -109,7 +109,7 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
     let fy = answers[0]
         .values
         .iter()
-        .find(|(n, _)| n.ends_with("force.y"))
+        .find(|(n, _)| n.to_string().ends_with("force.y"))
         .expect("F_y")
         .1;
     close(fy, 0.5 * 9.81, 1e-12, "F_y");
@@ -147,7 +147,7 @@ fn a_pendulums_acceleration_and_tension_at_a_state_match_the_hand_derivation() {
     let get = |name: &str| {
         a[2].values
             .iter()
-            .find(|(n, _)| n == name)
+            .find(|(n, _)| n.to_string() == name)
             .map(|(_, v)| *v)
             .expect(name)
     };
@@ -230,13 +230,13 @@ fn the_heavy_top_precesses_steadily_at_the_closed_form_rates() {
     let fz = a[3]
         .values
         .iter()
-        .find(|(n, _)| n == "tip.force.z")
+        .find(|(n, _)| n.to_string() == "tip.force.z")
         .expect("z")
         .1;
     let fy = a[3]
         .values
         .iter()
-        .find(|(n, _)| n == "tip.force.y")
+        .find(|(n, _)| n.to_string() == "tip.force.y")
         .expect("y")
         .1;
     close(fz, m * g, 1e-5, "vertical force");

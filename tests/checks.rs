@@ -4,7 +4,7 @@
 use mbd_tutor::equations::{derive, Method};
 use mbd_tutor::numeric::checks::{modes, small_oscillation};
 use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::{Evaluation, System};
+use mbd_tutor::numeric::system::{Evaluation, ReactionColumn, System};
 use mbd_tutor::numeric::SolveError;
 use mbd_tutor::problem::{load_file, Problem};
 
@@ -20,14 +20,14 @@ fn initial(problem: &Problem) -> Vec<f64> {
 /// evaluation and the names of its reaction columns.
 struct Tampered<'a> {
     inner: &'a dyn System,
-    change: &'a dyn Fn(&mut Evaluation, &[String]),
+    change: &'a dyn Fn(&mut Evaluation, &[ReactionColumn]),
 }
 
 impl System for Tampered<'_> {
     fn coordinate_names(&self) -> Vec<String> {
         self.inner.coordinate_names()
     }
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
         self.inner.reaction_columns()
     }
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
@@ -144,9 +144,9 @@ fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() 
         assert!(balance.passed, "{name}: {balance:?}");
         // Every drive's force or torque 0.1 % off: the motion is unchanged, the drives'
         // reported work is not.
-        let scale_drives = |e: &mut Evaluation, names: &[String]| {
-            for (value, name) in e.reactions.iter_mut().zip(names) {
-                if name.ends_with(".drive") {
+        let scale_drives = |e: &mut Evaluation, columns: &[ReactionColumn]| {
+            for (value, column) in e.reactions.iter_mut().zip(columns) {
+                if matches!(column, ReactionColumn::Drive { .. }) {
                     *value *= 1.001;
                 }
             }

@@ -14,24 +14,41 @@
 //!   guesses.
 
 use super::simulate::simulate;
-use super::system::System;
+use super::system::{ReactionColumn, System};
 use crate::problem::{
     CoordinateKind, Problem, ProblemError, Question, QuestionKind, SimulateSettings, StateEntry,
 };
 use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{ComponentKind, Expr, Symbol};
 use nalgebra::{DMatrix, DVector};
 
 /// The most Newton iterations for a steady motion.
 const MAX_ITERATIONS: usize = 100;
 
+/// What an answer found.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Quantity {
+    /// A value by name: the expression as written (`q1''`), or an unknown of a steady
+    /// motion (`psi`, `psi'`).
+    Named(String),
+    /// A reaction component (`O.force.x`) or a drive (`theta.drive`).
+    Reaction(ReactionColumn),
+}
+
+impl std::fmt::Display for Quantity {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Quantity::Named(name) => f.write_str(name),
+            Quantity::Reaction(column) => column.fmt(f),
+        }
+    }
+}
+
 /// One question answered.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Answer {
-    /// What was found, each by name: `q1''`, the expression as written, `O.force.x`,
-    /// `theta.drive`, or an
-    /// unknown of a steady motion (`psi'`); SI units (or the problem's).
-    pub values: Vec<(String, f64)>,
+    /// What was found, each with its value in SI units (or the problem's).
+    pub values: Vec<(Quantity, f64)>,
     /// The time, seconds.
     pub time: f64,
     /// The state where the answer holds (for a steady motion, the one found).
@@ -139,28 +156,40 @@ pub fn answer(
                     "ask at a state where the expression is defined",
                 ));
             }
-            vec![(text.clone(), x)]
+            vec![(Quantity::Named(text.clone()), x)]
         }
         QuestionKind::Reaction { site } => {
-            let prefix = format!("{}.", problem.site_name(*site));
+            let site = problem.site_name(*site);
             let planar = problem.dimension == crate::problem::Dimension::Two;
+            // In the plane: the force along x and y, the moment about z.
+            let in_plane = |column: &ReactionColumn| {
+                matches!(
+                    column,
+                    ReactionColumn::Component {
+                        kind: ComponentKind::Force,
+                        axis: 0 | 1,
+                        ..
+                    } | ReactionColumn::Component {
+                        kind: ComponentKind::Moment,
+                        axis: 2,
+                        ..
+                    }
+                )
+            };
             system
                 .reaction_columns()
                 .into_iter()
                 .zip(&evaluation.reactions)
-                .filter(|(column, _)| column.starts_with(&prefix))
-                .filter(|(column, _)| {
-                    !planar
-                        || column.ends_with("force.x")
-                        || column.ends_with("force.y")
-                        || column.ends_with("moment.z")
-                })
-                .map(|(column, &x)| (column, x))
+                .filter(|(column, _)| column.site() == Some(site))
+                .filter(|(column, _)| !planar || in_plane(column))
+                .map(|(column, &x)| (Quantity::Reaction(column), x))
                 .collect()
         }
         QuestionKind::Drive { coordinate } => {
             let name = &problem.coordinates[*coordinate].name;
-            let column = format!("{name}.drive");
+            let column = ReactionColumn::Drive {
+                coordinate: name.clone(),
+            };
             let found = system
                 .reaction_columns()
                 .iter()
@@ -174,16 +203,16 @@ pub fn answer(
                     "ask for the drive of a coordinate with a `motion`; a joint load's value is a `value` question",
                 ));
             };
-            vec![(format!("{name}.drive"), x)]
+            vec![(Quantity::Reaction(column), x)]
         }
         QuestionKind::Steady { unknowns, .. } => unknowns
             .iter()
             .map(|e| {
                 let name = &names[e.coordinate];
                 if e.order == 0 {
-                    (name.clone(), q[e.coordinate])
+                    (Quantity::Named(name.clone()), q[e.coordinate])
                 } else {
-                    (format!("{name}'"), rates[e.coordinate])
+                    (Quantity::Named(format!("{name}'")), rates[e.coordinate])
                 }
             })
             .collect(),
@@ -336,7 +365,7 @@ fn no_root(left: f64, iterations: usize) -> Failure {
 /// coordinate or rate it is, else none; a reaction's force is in N and its moment in N m;
 /// a drive is a torque (an angle's) or a force (a distance's); a steady motion's unknown
 /// has its coordinate's unit, per second for a rate.
-pub fn unit(problem: &Problem, question: &Question, name: &str) -> String {
+pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String {
     match &question.kind {
         QuestionKind::Value { expression, .. } => question
             .unit
@@ -351,7 +380,7 @@ pub fn unit(problem: &Problem, question: &Question, name: &str) -> String {
             })
             .unwrap_or_default(),
         QuestionKind::Reaction { .. } => {
-            if name.contains(".moment.") {
+            if matches!(found, Quantity::Reaction(column) if column.is_moment()) {
                 "N m".into()
             } else {
                 "N".into()
@@ -364,7 +393,7 @@ pub fn unit(problem: &Problem, question: &Question, name: &str) -> String {
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()
-                .find(|e| entry_name(problem, e) == name)
+                .find(|e| matches!(found, Quantity::Named(name) if entry_name(problem, e) == *name))
                 .copied()
                 .unwrap_or(StateEntry {
                     coordinate: 0,
@@ -402,8 +431,8 @@ pub fn coordinate_unit(problem: &Problem, i: usize, order: u8) -> String {
 
 /// Whether `name` is a reaction's moment about a free axis: no unknown at all, exactly 0,
 /// so that neither the handout nor `answer` reports it.
-pub fn is_free_moment(question: &Question, name: &str, value: f64) -> bool {
+pub fn is_free_moment(question: &Question, found: &Quantity, value: f64) -> bool {
     matches!(question.kind, QuestionKind::Reaction { .. })
         && value == 0.0
-        && name.contains(".moment.")
+        && matches!(found, Quantity::Reaction(column) if column.is_moment())
 }

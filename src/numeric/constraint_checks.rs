@@ -4,7 +4,7 @@
 use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
 use super::format::fixed;
 use super::simulate::Trajectory;
-use super::system::System;
+use super::system::{ReactionColumn, System};
 use crate::problem::{LoadKind, Problem};
 
 /// Largest constraint residual allowed along a simulation (metres, radians, m/s, rad/s).
@@ -72,7 +72,9 @@ pub fn drive_energy_check(
     let drives: Vec<(usize, usize)> = prescribed
         .iter()
         .map(|name| {
-            let drive = format!("{name}.drive");
+            let drive = ReactionColumn::Drive {
+                coordinate: name.to_string(),
+            };
             Some((
                 reactions.iter().position(|r| *r == drive)?,
                 names.iter().position(|q| q == name)?,

@@ -4,7 +4,7 @@
 use super::inputs::input_symbols;
 use super::linear::solve_linear_owned;
 use super::speeds::SpeedProgram;
-use super::system::{describe_state, Evaluation, System};
+use super::system::{describe_state, Evaluation, ReactionColumn, System};
 use super::SolveError;
 use crate::equations::composite::SMALL_PROGRAM;
 use crate::equations::{energy, Derivation, Method};
@@ -423,16 +423,15 @@ impl System for Compiled {
         self.coordinates.clone()
     }
 
-    fn reaction_columns(&self) -> Vec<String> {
-        let mut columns = Vec::new();
-        for slot in &self.reactions {
-            for kind in ["force", "moment"] {
-                for axis in ["x", "y", "z"] {
-                    columns.push(format!("{}.{kind}.{axis}", slot.joint));
-                }
-            }
-        }
-        columns.extend(self.drives.iter().map(|(name, _)| format!("{name}.drive")));
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
+        let mut columns: Vec<ReactionColumn> = self
+            .reactions
+            .iter()
+            .flat_map(|slot| ReactionColumn::of_site(&slot.joint))
+            .collect();
+        columns.extend(self.drives.iter().map(|(name, _)| ReactionColumn::Drive {
+            coordinate: name.clone(),
+        }));
         columns
     }
 

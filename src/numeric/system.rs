@@ -6,6 +6,74 @@
 use super::format::fixed;
 use super::friction::{Held, SiteState};
 use super::SolveError;
+use crate::symbolic::ComponentKind;
+use std::fmt;
+
+/// One reported reaction: a component of a site's force or moment along its frame's unit
+/// vectors, or the force or torque that drives a prescribed coordinate. Written
+/// `O.force.x`, `O.moment.z`, `q1.drive` in simulate's columns and the answers' keys.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ReactionColumn {
+    /// The component along unit vector `axis` (0, 1, 2 for x, y, z) of the force or the
+    /// moment of the joint or site named `site`.
+    Component {
+        site: String,
+        kind: ComponentKind,
+        axis: usize,
+    },
+    /// The drive of the prescribed coordinate named `coordinate`.
+    Drive { coordinate: String },
+}
+
+impl ReactionColumn {
+    /// The six components of `site`'s reaction: force x, y, z, then moment x, y, z.
+    pub fn of_site(site: &str) -> impl Iterator<Item = ReactionColumn> + '_ {
+        [ComponentKind::Force, ComponentKind::Moment]
+            .into_iter()
+            .flat_map(move |kind| {
+                (0..3).map(move |axis| ReactionColumn::Component {
+                    site: site.to_string(),
+                    kind,
+                    axis,
+                })
+            })
+    }
+
+    /// The site whose reaction this is, for a component.
+    pub fn site(&self) -> Option<&str> {
+        match self {
+            ReactionColumn::Component { site, .. } => Some(site),
+            ReactionColumn::Drive { .. } => None,
+        }
+    }
+
+    /// Whether this is a moment component.
+    pub fn is_moment(&self) -> bool {
+        matches!(
+            self,
+            ReactionColumn::Component {
+                kind: ComponentKind::Moment,
+                ..
+            }
+        )
+    }
+}
+
+impl fmt::Display for ReactionColumn {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReactionColumn::Component { site, kind, axis } => {
+                let kind = match kind {
+                    ComponentKind::Force => "force",
+                    ComponentKind::Moment => "moment",
+                };
+                let axis = ["x", "y", "z"].get(*axis).copied().unwrap_or("?");
+                write!(f, "{site}.{kind}.{axis}")
+            }
+            ReactionColumn::Drive { coordinate } => write!(f, "{coordinate}.drive"),
+        }
+    }
+}
 
 /// One evaluation of the equations of motion at a state.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,7 +98,7 @@ pub trait System {
 
     /// The names of the reaction components reported by [`System::evaluate`], e.g.
     /// `O.force.x`, `O.force.y`, `O.force.z`, `O.moment.x`, `O.moment.y`, `O.moment.z`.
-    fn reaction_columns(&self) -> Vec<String>;
+    fn reaction_columns(&self) -> Vec<ReactionColumn>;
 
     /// The accelerations, reactions and energies at time `t` (s), coordinates `q` and
     /// rates `rates` (both in [`System::coordinate_names`] order).

@@ -3,8 +3,10 @@
 //! in full (the shortest text that reads back as the same f64), not rounded as a handout
 //! prints them.
 
-use crate::numeric::answers::{self, Answer};
+use crate::numeric::answers::{self, Answer, Quantity};
+use crate::numeric::system::ReactionColumn;
 use crate::problem::{Problem, Question, QuestionKind};
+use crate::symbolic::ComponentKind;
 use serde_json::{Map, Value};
 use std::fmt::Write;
 
@@ -29,24 +31,27 @@ pub fn full(x: f64) -> String {
     number(x).to_string()
 }
 
-/// A reaction value's place: `("force" | "moment", axis)` from `O.force.x`.
-fn reaction_part(name: &str) -> (&str, &str) {
-    let mut parts = name.rsplitn(3, '.');
-    let axis = parts.next().unwrap_or("x");
-    let kind = parts.next().unwrap_or("force");
-    (kind, axis)
+/// A reaction value's place: whether it is a moment, and its axis `x`, `y` or `z`.
+fn reaction_part(found: &Quantity) -> (bool, &'static str) {
+    match found {
+        Quantity::Reaction(ReactionColumn::Component { kind, axis, .. }) => (
+            *kind == ComponentKind::Moment,
+            ["x", "y", "z"].get(*axis).copied().unwrap_or("x"),
+        ),
+        _ => (false, "x"),
+    }
 }
 
 /// The values of an answer worth reporting: all but a reaction's moments about free axes.
 fn reported<'a>(
     question: &'a Question,
     answer: &'a Answer,
-) -> impl Iterator<Item = (&'a str, f64)> {
+) -> impl Iterator<Item = (&'a Quantity, f64)> {
     answer
         .values
         .iter()
-        .filter(|(name, x)| !answers::is_free_moment(question, name, *x))
-        .map(|(name, x)| (name.as_str(), *x))
+        .filter(|(found, x)| !answers::is_free_moment(question, found, *x))
+        .map(|(found, x)| (found, *x))
 }
 
 /// One question's answer as JSON (see `docs/answer-and-variants.md`).
@@ -59,7 +64,7 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
         .unwrap_or_else(|| super::answers::asked(problem, question));
     out.insert("text".into(), text.into());
     out.insert("kind".into(), kind_name(question).into());
-    let unit_of = |name: &str| answers::unit(problem, question, name);
+    let unit_of = |found: &Quantity| answers::unit(problem, question, found);
     match &question.kind {
         QuestionKind::Value { .. } | QuestionKind::Drive { .. } => {
             if let Some((name, x)) = answer.values.first() {
@@ -70,10 +75,10 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
         QuestionKind::Reaction { .. } => {
             let mut components = Map::new();
             let mut moment = Map::new();
-            for (name, x) in reported(question, answer) {
-                match reaction_part(name) {
-                    ("moment", axis) => moment.insert(axis.into(), number(x)),
-                    (_, axis) => components.insert(axis.into(), number(x)),
+            for (found, x) in reported(question, answer) {
+                match reaction_part(found) {
+                    (true, axis) => moment.insert(axis.into(), number(x)),
+                    (false, axis) => components.insert(axis.into(), number(x)),
                 };
             }
             out.insert("unit".into(), "N".into());
@@ -87,12 +92,12 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
             let unknowns = answer
                 .values
                 .iter()
-                .map(|(name, x)| (name.clone(), number(*x)))
+                .map(|(found, x)| (found.to_string(), number(*x)))
                 .collect();
             let units = answer
                 .values
                 .iter()
-                .map(|(name, _)| (name.clone(), Value::from(unit_of(name))))
+                .map(|(found, _)| (found.to_string(), Value::from(unit_of(found))))
                 .collect();
             out.insert("unknowns".into(), Value::Object(unknowns));
             out.insert("units".into(), Value::Object(units));
@@ -154,9 +159,9 @@ pub fn text(problem: &Problem, answers: &[Answer]) -> String {
             .clone()
             .unwrap_or_else(|| super::answers::asked(problem, question));
         let _ = writeln!(out, "    {}", text.replace('\n', " "));
-        for (name, x) in reported(question, answer) {
-            let unit = answers::unit(problem, question, name);
-            let _ = writeln!(out, "    {name} = {} {unit}", full(x));
+        for (found, x) in reported(question, answer) {
+            let unit = answers::unit(problem, question, found);
+            let _ = writeln!(out, "    {found} = {} {unit}", full(x));
         }
     }
     out
@@ -169,14 +174,14 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
     let mut columns = Vec::new();
     for (i, (question, answer)) in problem.questions.iter().zip(answers).enumerate() {
         let base = question.symbol.clone().unwrap_or_else(|| i.to_string());
-        for (name, x) in reported(question, answer) {
+        for (found, x) in reported(question, answer) {
             let column = match &question.kind {
                 QuestionKind::Value { .. } | QuestionKind::Drive { .. } => base.clone(),
-                QuestionKind::Reaction { .. } => match reaction_part(name) {
-                    ("moment", axis) => format!("{base}.moment.{axis}"),
-                    (_, axis) => format!("{base}.{axis}"),
+                QuestionKind::Reaction { .. } => match reaction_part(found) {
+                    (true, axis) => format!("{base}.moment.{axis}"),
+                    (false, axis) => format!("{base}.{axis}"),
                 },
-                QuestionKind::Steady { .. } => format!("{base}.{name}"),
+                QuestionKind::Steady { .. } => format!("{base}.{found}"),
             };
             columns.push((column, x));
         }

@@ -2,11 +2,13 @@
 //! its units (the numbers come from [`crate::numeric::answers`]). The student's handout
 //! restates the questions and leaves the answers blank.
 
-use crate::numeric::answers::{coordinate_unit, Answer};
+use crate::numeric::answers::{coordinate_unit, Answer, Quantity};
+use crate::numeric::system::ReactionColumn;
 use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
 use crate::render::sections::AnswerView;
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_unit_vector};
+use crate::symbolic::ComponentKind;
 
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
@@ -18,11 +20,11 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             let mut view = blank_one(problem, question);
             // A reaction's moment about a free axis is no unknown at all: exactly 0, and not
             // worth a line; the note says the others are zero.
-            let shown: Vec<&(String, f64)> = answer
+            let shown: Vec<&(Quantity, f64)> = answer
                 .values
                 .iter()
-                .filter(|(name, value)| {
-                    !crate::numeric::answers::is_free_moment(question, name, *value)
+                .filter(|(found, value)| {
+                    !crate::numeric::answers::is_free_moment(question, found, *value)
                 })
                 .collect();
             if shown.len() < answer.values.len() {
@@ -30,7 +32,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             }
             view.values_tex = shown
                 .iter()
-                .map(|(name, value)| value_tex(problem, question, name, *value))
+                .map(|(found, value)| value_tex(problem, question, found, *value))
                 .collect();
             if let Some((left, iterations)) = answer.residual {
                 let plural = if iterations == 1 { "" } else { "s" };
@@ -146,8 +148,8 @@ fn unit_tex(unit: &str) -> String {
     }
 }
 
-fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> String {
-    let unit = crate::numeric::answers::unit(problem, question, name);
+fn value_tex(problem: &Problem, question: &Question, found: &Quantity, value: f64) -> String {
+    let unit = crate::numeric::answers::unit(problem, question, found);
     let symbol = match &question.kind {
         QuestionKind::Value { expression, .. } => {
             // The question's own symbol, else the expression when it reads at a glance; a
@@ -165,27 +167,25 @@ fn value_tex(problem: &Problem, question: &Question, name: &str, value: f64) -> 
         }
         QuestionKind::Reaction { site } => {
             // `O.force.x`: the component along the parent's unit vector.
-            let mut parts = name.rsplitn(3, '.');
-            let axis = parts.next().unwrap_or("x");
-            let kind = parts.next().unwrap_or("force");
-            let parent = reaction_parent(problem, *site);
-            let axis_index = match axis {
-                "x" => 0,
-                "y" => 1,
-                _ => 2,
+            let (kind, axis_index) = match found {
+                Quantity::Reaction(ReactionColumn::Component { kind, axis, .. }) => (*kind, *axis),
+                _ => (ComponentKind::Force, 0),
             };
-            let letter = if kind == "force" { "F" } else { "M" };
+            let parent = reaction_parent(problem, *site);
+            let letter = kind.letter();
             format!(
                 "\\mathbf{{{letter}}}^{{\\mathrm{{{}}}}} \\cdot {}",
                 problem.site_name(*site).replace('_', "\\_"),
-                latex_unit_vector(&parent, axis_index)
+                latex_unit_vector(&parent, axis_index as u8)
             )
         }
         QuestionKind::Drive { coordinate } => drive_tex(problem, *coordinate),
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()
-                .find(|e| crate::numeric::answers::entry_name(problem, e) == name)
+                .find(|e| {
+                    matches!(found, Quantity::Named(name) if crate::numeric::answers::entry_name(problem, e) == *name)
+                })
                 .copied()
                 .unwrap_or(StateEntry {
                     coordinate: 0,

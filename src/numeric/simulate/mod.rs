@@ -5,7 +5,7 @@
 
 use super::friction::Held;
 use super::integrate::{integrate, Options, Stop};
-use super::system::{describe_state, System};
+use super::system::{describe_state, ReactionColumn, System};
 use super::SolveError;
 use crate::problem::SimulateSettings;
 pub use switching::Switch;
@@ -262,13 +262,13 @@ fn mismatch(what: &str, expected: usize, got: usize) -> SolveError {
 }
 
 /// The column names in the order of the command-line contract.
-pub fn column_names(coordinates: &[String], reactions: &[String]) -> Vec<String> {
+pub fn column_names(coordinates: &[String], reactions: &[ReactionColumn]) -> Vec<String> {
     let mut columns = vec!["t".to_string()];
     columns.extend(coordinates.iter().cloned());
     columns.extend(coordinates.iter().map(|q| format!("{q}'")));
     columns.extend(coordinates.iter().map(|q| format!("{q}''")));
     columns.extend(["kinetic", "potential", "total"].map(String::from));
-    columns.extend(reactions.iter().cloned());
+    columns.extend(reactions.iter().map(ReactionColumn::to_string));
     columns
 }
 

@@ -1,6 +1,6 @@
 //! Small systems with hand-written equations, for the tests here and in `checks`.
 
-use super::super::system::{describe_state, Evaluation, System};
+use super::super::system::{describe_state, Evaluation, ReactionColumn, System};
 use super::super::SolveError;
 
 /// m x'' + c x' + k x = 0; the wall's force on the mass is the reaction `W.force.x`.
@@ -14,8 +14,8 @@ impl System for MassSpringDamper {
     fn coordinate_names(&self) -> Vec<String> {
         vec!["x".into()]
     }
-    fn reaction_columns(&self) -> Vec<String> {
-        vec!["W.force.x".into()]
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
+        ReactionColumn::of_site("W").take(1).collect()
     }
     fn evaluate(&self, _: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
         let (x, v) = (q[0], rates[0]);
@@ -59,8 +59,8 @@ impl System for Pendulum {
     fn coordinate_names(&self) -> Vec<String> {
         vec!["theta".into()]
     }
-    fn reaction_columns(&self) -> Vec<String> {
-        vec!["O.force.x".into(), "O.force.y".into()]
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
+        ReactionColumn::of_site("O").take(2).collect()
     }
     fn evaluate(&self, _: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
         let (theta, w) = (q[0], rates[0]);
@@ -91,7 +91,7 @@ impl System for TwoOscillators {
     fn coordinate_names(&self) -> Vec<String> {
         vec!["a".into(), "b".into()]
     }
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
         Vec::new()
     }
     fn evaluate(&self, _: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
@@ -119,7 +119,7 @@ impl System for SingularPast {
     fn coordinate_names(&self) -> Vec<String> {
         vec!["x".into()]
     }
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
         Vec::new()
     }
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {

@@ -16,7 +16,7 @@ fn v(a: &[Answer], i: usize) -> f64 {
 fn part(a: &Answer, name: &str) -> f64 {
     a.values
         .iter()
-        .find(|(n, _)| n == name)
+        .find(|(n, _)| n.to_string() == name)
         .map(|(_, x)| *x)
         .unwrap_or_else(|| panic!("no {name} in {:?}", a.values))
 }

@@ -1,6 +1,6 @@
 use super::*;
 use crate::numeric::simulate::test_systems::{MassSpringDamper, Pendulum, TwoOscillators};
-use crate::numeric::system::Evaluation;
+use crate::numeric::system::{Evaluation, ReactionColumn};
 
 /// Another system's equations with q'' multiplied by `factor` (−1: every sign wrong), its
 /// energies untouched: equations that no longer follow from the energies.
@@ -13,7 +13,7 @@ impl System for Broken<'_> {
     fn coordinate_names(&self) -> Vec<String> {
         self.inner.coordinate_names()
     }
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
         self.inner.reaction_columns()
     }
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
@@ -43,7 +43,7 @@ impl System for Chain {
     fn coordinate_names(&self) -> Vec<String> {
         vec!["x1".into(), "x2".into()]
     }
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
         Vec::new()
     }
     fn evaluate(&self, _: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
@@ -74,7 +74,7 @@ impl System for Free {
     fn coordinate_names(&self) -> Vec<String> {
         vec!["x".into()]
     }
-    fn reaction_columns(&self) -> Vec<String> {
+    fn reaction_columns(&self) -> Vec<ReactionColumn> {
         Vec::new()
     }
     fn evaluate(&self, _: f64, _: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError> {
