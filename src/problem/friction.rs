@@ -84,6 +84,29 @@ impl Reader {
             offset: offset?,
         })
     }
+
+    /// A rough prismatic joint's coordinate may not be prescribed: the drive and the friction
+    /// would both act along the axis, and while the slider sticks nothing would share the
+    /// force between them.
+    pub(super) fn check_sliders(&mut self, joints: &[Joint], coordinates: &[Coordinate]) {
+        for joint in joints.iter().filter(|j| j.friction.is_some()) {
+            let prescribed = joint
+                .coordinates
+                .iter()
+                .filter_map(|&c| coordinates.get(c))
+                .find(|c| c.motion.is_some());
+            if let Some(c) = prescribed {
+                self.diag.hint(
+                    &key_path(&joint.path, "friction"),
+                    format!(
+                        "joint `{}` has friction, but its coordinate `{}` is prescribed: the drive along the axis and the friction could not be told apart while it sticks",
+                        joint.name, c.name
+                    ),
+                    "remove `friction` (the drive's force then includes it), or the coordinate's `motion`",
+                );
+            }
+        }
+    }
 }
 
 /// A coefficient of friction: finite and not negative.
@@ -97,29 +120,6 @@ pub fn coefficient(mu: &Expr, values: &ConstantValues, path: &str, diag: &mut Di
                     fixed(value)
                 ),
                 "give μ ≥ 0, e.g. \"friction\": 0.3 (0 for a smooth surface)",
-            );
-        }
-    }
-}
-
-/// A rough prismatic joint's coordinate may not be prescribed: the drive and the friction
-/// would both act along the axis, and while the slider sticks nothing would share the
-/// force between them.
-pub fn check_sliders(joints: &[Joint], coordinates: &[Coordinate], diag: &mut Diagnostics) {
-    for joint in joints.iter().filter(|j| j.friction.is_some()) {
-        let prescribed = joint
-            .coordinates
-            .iter()
-            .filter_map(|&c| coordinates.get(c))
-            .find(|c| c.motion.is_some());
-        if let Some(c) = prescribed {
-            diag.hint(
-                &key_path(&joint.path, "friction"),
-                format!(
-                    "joint `{}` has friction, but its coordinate `{}` is prescribed: the drive along the axis and the friction could not be told apart while it sticks",
-                    joint.name, c.name
-                ),
-                "remove `friction` (the drive's force then includes it), or the coordinate's `motion`",
             );
         }
     }

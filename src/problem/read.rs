@@ -147,7 +147,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
             )
         })
         .unwrap_or_default();
-    super::friction::check_sliders(&joints, &coordinates, &mut r.diag);
+    r.check_sliders(&joints, &coordinates);
 
     if !r.diag.is_empty() {
         return Err(r.diag.errors);

@@ -160,7 +160,8 @@ class Problem:
         self.bodies = {}
         for name, b in bodies.items():
             path = f"bodies.{name}"
-            _keys(b, path, {"mass"}, {"center", "inertia", "description"})
+            # `shape` only says how the body is drawn.
+            _keys(b, path, {"mass"}, {"center", "inertia", "description", "shape"})
             body = Body(name)
             body.mass = self.scalar(b["mass"], path + ".mass")
             self.bodies[name] = body
