@@ -24,11 +24,13 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let problem = derivation.model.problem;
     let model = &derivation.model;
     solution.plan = plan(derivation);
-    // The constraints of step 1 and steps 2 to 5 write sines and cosines of the coordinates
-    // as s_1, c_12, listed once where they are first used.
+    // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
+    // s_1, c_12, listed once where they are first used. Only angles are indexed, so that a
+    // slider's distance `x` beside the angles `q1`, `q2` leaves them `s_1`, `c_12`.
     let names: Vec<&str> = problem
         .coordinates
         .iter()
+        .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
         .map(|c| c.name.as_str())
         .collect();
     let style = super::tex::style_of(problem).with_coordinates(&names);
