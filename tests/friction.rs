@@ -3,20 +3,12 @@
 //! smooth wall on a rough floor (holds at rest iff tan θ ≤ 2μ), and a bowling ball that
 //! skids before it rolls (a solid sphere rolls after t = 2v₀/(7μg), a disc after v₀/(3μg)).
 
-use crate::support::{assert_close, column, problem, run, solve_all, table, METHODS};
+use crate::support::{
+    assert_close, column, friction_site, number, problem, run, solve_all, table, METHODS,
+};
 use serde_json::Value;
 
 const G: f64 = 9.81;
-
-fn friction<'a>(json: &'a Value, site: &str) -> &'a Value {
-    &json["friction"][site]
-}
-
-fn number(value: &Value, key: &str) -> f64 {
-    value[key]
-        .as_f64()
-        .unwrap_or_else(|| panic!("no number `{key}` in {value}"))
-}
 
 // ---- a block on a rough incline (`problems/block-on-rough-incline.json`) ----
 
@@ -32,7 +24,7 @@ fn a_block_on_a_rough_incline_slides_with_a_equal_to_g_sin_minus_mu_cos() {
     for s in solve_all("block-on-rough-incline", &[]) {
         let what = |q: &str| format!("{}: {q}", s.method);
         assert_close(s.acc("x"), a, 1e-9, 1.0, &what("x''"));
-        let site = friction(&s.json, "plane");
+        let site = friction_site(&s.json, "plane");
         assert_eq!(site["mode"], "slip", "{}", what("mode"));
         assert_close(number(site, "normal"), normal, 1e-9, 1.0, &what("N"));
         assert_close(
@@ -61,7 +53,7 @@ fn a_block_on_a_rough_incline_sticks_while_tan_alpha_is_at_most_mu() {
     for s in solve_all("block-on-rough-incline", &["--set", "mu=0.6"]) {
         let what = |q: &str| format!("{}: {q}", s.method);
         assert_close(s.acc("x"), 0.0, 1e-9, 1.0, &what("x''"));
-        let site = friction(&s.json, "plane");
+        let site = friction_site(&s.json, "plane");
         assert_eq!(site["mode"], "stick", "{}", what("mode"));
         assert_close(
             number(site, "tangential"),
@@ -87,7 +79,7 @@ fn the_block_changes_from_sticking_to_sliding_at_tan_alpha_equal_to_mu() {
         let set = format!("mu={mu}");
         for s in solve_all("block-on-rough-incline", &["--set", &set]) {
             assert_eq!(
-                friction(&s.json, "plane")["mode"],
+                friction_site(&s.json, "plane")["mode"],
                 mode,
                 "{} at μ = {mu}",
                 s.method
@@ -154,7 +146,7 @@ fn a_ladder_at_rest_holds_while_tan_theta_is_at_most_two_mu() {
     for s in solve_all("ladder-about-to-slip", &["--state", "theta=0.5"]) {
         let what = |q: &str| format!("{}: {q}", s.method);
         assert_close(s.acc("theta"), 0.0, 1e-9, 1.0, &what("theta''"));
-        let floor = friction(&s.json, "floor");
+        let floor = friction_site(&s.json, "floor");
         assert_eq!(floor["mode"], "stick", "{}", what("mode"));
         // Moments about the foot: the wall pushes mg tan θ / 2, which friction balances.
         let push = LADDER_MASS * G * theta.tan() / 2.0;
@@ -198,7 +190,7 @@ fn a_ladder_just_past_the_angle_slides_as_worked_by_hand() {
             1.0,
             &what("y''"),
         );
-        let floor = friction(&s.json, "floor");
+        let floor = friction_site(&s.json, "floor");
         assert_eq!(floor["mode"], "slip", "{}", what("mode"));
         assert_close(number(floor, "normal"), normal, 1e-9, 1.0, &what("N"));
         assert_close(number(floor, "ratio"), LADDER_MU, 1e-9, 1.0, &what("ratio"));
@@ -213,7 +205,7 @@ fn the_ladder_starts_to_slip_at_tan_theta_equal_to_two_mu() {
         let state = format!("theta={theta}");
         for s in solve_all("ladder-about-to-slip", &["--state", &state]) {
             assert_eq!(
-                friction(&s.json, "floor")["mode"],
+                friction_site(&s.json, "floor")["mode"],
                 mode,
                 "{} at θ = {theta}",
                 s.method
@@ -346,7 +338,7 @@ fn a_skidding_bowling_ball_rolls_after_two_v0_over_seven_mu_g() {
             &what("theta''"),
         );
         assert_eq!(
-            friction(&s.json, "lane")["mode"],
+            friction_site(&s.json, "lane")["mode"],
             "slip",
             "{}",
             what("mode")
@@ -369,7 +361,7 @@ fn a_skidding_disc_rolls_after_v0_over_three_mu_g() {
 fn a_ball_that_already_rolls_keeps_rolling_with_no_friction() {
     let state = format!("theta'={}", -V0 / RADIUS);
     for s in solve_all("bowling-ball", &["--state", &state]) {
-        let lane = friction(&s.json, "lane");
+        let lane = friction_site(&s.json, "lane");
         assert_eq!(lane["mode"], "stick", "{}", s.method);
         assert_close(
             number(lane, "tangential"),

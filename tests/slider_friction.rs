@@ -5,23 +5,15 @@
 //! space (|N| the root sum of the squares of two components) and a bead on a rough rail
 //! across a cart (|N| depends on the friction, solved here by a fixed point of our own).
 
-use crate::support::{assert_close, column, problem, run, run_json, solve_all, table, METHODS};
+use crate::support::{
+    assert_close, column, friction_site, number, problem, run, run_json, solve_all, table, METHODS,
+};
 use serde_json::Value;
 use std::ffi::OsString;
 
 const G: f64 = 9.81;
 const SLOPE: f64 = std::f64::consts::PI / 6.0;
 const BLOCK: f64 = 2.0;
-
-fn site<'a>(json: &'a Value, name: &str) -> &'a Value {
-    &json["friction"][name]
-}
-
-fn number(value: &Value, key: &str) -> f64 {
-    value[key]
-        .as_f64()
-        .unwrap_or_else(|| panic!("no number `{key}` in {value}"))
-}
 
 // ---- a block on a rough incline, on a prismatic joint up the slope ----
 
@@ -35,7 +27,7 @@ fn a_block_on_a_rough_slide_slips_down_with_g_sin_minus_mu_cos() {
         // s is measured up the slope: it slides down.
         let a = -G * (SLOPE.sin() - mu * SLOPE.cos());
         assert_close(s.acc("s"), a, 1e-9, 1.0, &what("s''"));
-        let slope = site(&s.json, "slope");
+        let slope = friction_site(&s.json, "slope");
         assert_eq!(slope["mode"], "slip", "{}", what("mode"));
         assert_close(number(slope, "normal"), normal, 1e-9, 1.0, &what("N"));
         assert_close(
@@ -79,7 +71,7 @@ fn a_block_on_a_rough_slide_sticks_on_either_side_of_tan_alpha_equal_to_mu() {
         let set = format!("mu={mu}");
         for s in solve_all("block-on-rough-slide", &["--set", &set]) {
             let what = |q: &str| format!("{} at μ = {mu}: {q}", s.method);
-            let slope = site(&s.json, "slope");
+            let slope = friction_site(&s.json, "slope");
             assert_eq!(slope["mode"], mode, "{}", what("mode"));
             let (a, friction) = if mode == "slip" {
                 let normal = BLOCK * G * SLOPE.cos();
@@ -184,7 +176,7 @@ fn a_block_pushed_along_a_rough_floor_moves_with_p_minus_mu_m_g_over_m() {
         let set = format!("P={p}");
         for s in solve_all("block-pushed-on-rough-floor", &["--set", &set]) {
             let what = |q: &str| format!("{} at P = {p}: {q}", s.method);
-            let floor = site(&s.json, "floor");
+            let floor = friction_site(&s.json, "floor");
             assert_eq!(floor["mode"], mode, "{}", what("mode"));
             let (a, friction) = if mode == "slip" {
                 ((p - mu * m * G) / m, -mu * m * G)
@@ -212,7 +204,7 @@ fn a_collar_pulled_along_a_rough_rod_presses_on_its_top_and_slides() {
         let what = |q: &str| format!("{}: {q}", s.method);
         assert_close(s.acc("x"), a, 1e-9, 1.0, &what("x''"));
         assert_close(s.acc("y"), 0.0, 1e-9, 1.0, &what("y''"));
-        let rod = site(&s.json, "rod");
+        let rod = friction_site(&s.json, "rod");
         assert_eq!(rod["mode"], "slip", "{}", what("mode"));
         assert_close(number(rod, "normal"), normal, 1e-9, 1.0, &what("N"));
         assert_close(
@@ -226,7 +218,7 @@ fn a_collar_pulled_along_a_rough_rod_presses_on_its_top_and_slides() {
     }
     // A gentler pull leaves it at rest: the friction needed, P cos β, is within μ|N|.
     for s in solve_all("collar-on-rough-rod", &["--set", "P=2"]) {
-        let rod = site(&s.json, "rod");
+        let rod = friction_site(&s.json, "rod");
         assert_eq!(rod["mode"], "stick", "{}", s.method);
         assert_close(s.acc("x"), 0.0, 1e-9, 1.0, &s.method);
         assert_close(s.force("rod")[0], -2.0 * beta.cos(), 1e-9, 1.0, &s.method);
@@ -242,7 +234,7 @@ fn a_bead_on_a_rough_rail_in_space_takes_the_magnitude_of_both_normal_components
     for s in solve_all("bead-on-rough-rail-3d", &[]) {
         let what = |w: &str| format!("{}: {w}", s.method);
         assert_close(s.acc("x"), (p - mu * normal) / m, 1e-9, 1.0, &what("x''"));
-        let rail = site(&s.json, "rail");
+        let rail = friction_site(&s.json, "rail");
         assert_eq!(rail["mode"], "slip", "{}", what("mode"));
         assert_close(number(rail, "normal"), normal, 1e-9, 1.0, &what("|N|"));
         let force = s.force("rail");
@@ -251,7 +243,12 @@ fn a_bead_on_a_rough_rail_in_space_takes_the_magnitude_of_both_normal_components
         assert_close(force[2], m * G, 1e-9, 1.0, &what("Fz"));
     }
     for s in solve_all("bead-on-rough-rail-3d", &["--set", "P=2"]) {
-        assert_eq!(site(&s.json, "rail")["mode"], "stick", "{}", s.method);
+        assert_eq!(
+            friction_site(&s.json, "rail")["mode"],
+            "stick",
+            "{}",
+            s.method
+        );
         assert_close(s.acc("x"), 0.0, 1e-9, 1.0, &s.method);
     }
 }
@@ -308,7 +305,7 @@ fn a_bead_on_a_rough_rail_across_a_free_cart_agrees_with_a_fixed_point_worked_by
         let acc = |q: &str| number(&json["accelerations"], q);
         assert_close(acc("y"), y, 1e-9, 1.0, &format!("{method}: y''"));
         assert_close(acc("s"), s_acc, 1e-9, 1.0, &format!("{method}: s''"));
-        let rail = site(&json, "rail");
+        let rail = friction_site(&json, "rail");
         assert_close(number(rail, "normal"), n1.hypot(m * G), 1e-9, 1.0, method);
         assert_close(number(rail, "tangential"), -f, 1e-9, 1.0, method);
     }

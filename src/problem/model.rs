@@ -423,25 +423,24 @@ impl Problem {
     /// The name of reaction site `site`: the joints first, then the closures, then the
     /// constraints (the indices of [`Problem::find_reactions`]).
     pub fn site_name(&self, site: usize) -> &str {
-        let (j, c) = (self.joints.len(), self.closures.len());
-        if site < j {
-            &self.joints[site].name
-        } else if site < j + c {
-            &self.closures[site - j].name
-        } else {
-            &self.constraints[site - j - c].name
-        }
+        self.site_name_and_path(site).0
     }
 
     /// The JSON path of reaction site `site`'s entry, e.g. `closures[0]`.
     pub fn site_path(&self, site: usize) -> &str {
+        self.site_name_and_path(site).1
+    }
+
+    fn site_name_and_path(&self, site: usize) -> (&str, &str) {
         let (j, c) = (self.joints.len(), self.closures.len());
         if site < j {
-            &self.joints[site].path
+            (&self.joints[site].name, &self.joints[site].path)
         } else if site < j + c {
-            &self.closures[site - j].path
+            let closure = &self.closures[site - j];
+            (&closure.name, &closure.path)
         } else {
-            &self.constraints[site - j - c].path
+            let constraint = &self.constraints[site - j - c];
+            (&constraint.name, &constraint.path)
         }
     }
 

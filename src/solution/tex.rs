@@ -84,26 +84,23 @@ pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
 }
 
 /// A free body's bodies in LaTeX, `A + B`.
-pub(super) fn bodies_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
+pub(super) fn bodies_tex(derivation: &Derivation, bodies: &[BodyId]) -> String {
     bodies_latex(derivation, bodies).join(" + ")
 }
 
 /// A free body's bodies in LaTeX, a run of four or more links by its ends,
 /// `\\mathrm{link}_{2} + \\cdots + \\mathrm{link}_{10}`, as a heading in step 5 names it.
 /// (The plan's table and step 2 name every body: the pictures' names are those.)
-pub(super) fn bodies_tex_short(
-    derivation: &Derivation,
-    bodies: &[crate::problem::BodyId],
-) -> String {
+pub(super) fn bodies_tex_short(derivation: &Derivation, bodies: &[BodyId]) -> String {
     list_by_runs(&bodies_latex(derivation, bodies), " + ", "\\cdots")
 }
 
 /// A free body's bodies as a set's members, `\\mathrm{link}_{2}, \\ldots, \\mathrm{link}_{10}`.
-pub(super) fn bodies_set_tex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> String {
+pub(super) fn bodies_set_tex(derivation: &Derivation, bodies: &[BodyId]) -> String {
     list_by_runs(&bodies_latex(derivation, bodies), ", ", "\\ldots")
 }
 
-fn bodies_latex(derivation: &Derivation, bodies: &[crate::problem::BodyId]) -> Vec<String> {
+fn bodies_latex(derivation: &Derivation, bodies: &[BodyId]) -> Vec<String> {
     let problem = derivation.model.problem;
     bodies
         .iter()

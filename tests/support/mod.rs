@@ -161,6 +161,18 @@ pub fn assert_close(got: f64, want: f64, tol: f64, scale: f64, what: &str) {
     );
 }
 
+/// The `friction` entry of `solve --format json` for the site `name`.
+pub fn friction_site<'a>(json: &'a Value, name: &str) -> &'a Value {
+    &json["friction"][name]
+}
+
+/// The number under `key` of a JSON object.
+pub fn number(value: &Value, key: &str) -> f64 {
+    value[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("no number `{key}` in {value}"))
+}
+
 /// The index of column `name` in a simulation's columns.
 pub fn column(columns: &[String], name: &str) -> usize {
     columns
