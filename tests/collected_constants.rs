@@ -75,7 +75,8 @@ fn a_vectors_component_is_collected_by_its_constants() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let expected = r"{}^{N}\mathbf{v}^{C^*} = \dot{q}_{1} \left(a + b\right) \hat{\mathbf{b}}_{y}";
+    // (Step 4 writes v^{C*} from the pin P; the partial velocity is the vector whole.)
+    let expected = r"{}^{N}\mathbf{v}^{C^*}_{1} = (a + b) \hat{\mathbf{b}}_{y}";
     assert!(markdown.contains(expected), "no {expected}");
 }
 

@@ -27,6 +27,7 @@ mod methods;
 mod pipeline;
 mod planner;
 mod render;
+mod resal;
 mod robustness;
 mod rolling_on_body;
 mod rows_as_formed;

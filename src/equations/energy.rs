@@ -27,7 +27,7 @@ pub fn kinetic(model: &Model) -> Expr {
             )
         });
         terms.push(&half * &(&state.mass * &dot3(&v, &v)));
-        let w = state.omega_named.components_in(body, &model.frames);
+        let w = state.omega_named.components_in(state.frame, &model.frames);
         terms.push(&half * &dot3(&w, &apply(&state.inertia, &w)));
     }
     add(terms)

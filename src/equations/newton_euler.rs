@@ -20,7 +20,9 @@ pub fn equations(
         let free_body = vec![body];
         let force_axes: &[usize] = if planar { &[0, 1] } else { &[0, 1, 2] };
         // Forces along N or along the body's own axes, whichever writes shorter.
-        let candidates = [BodyId::GROUND, body].map(|frame| {
+        // (A body spinning about its symmetry axis: the axes that do not spin.)
+        let own = model.bodies[body.0].frame;
+        let candidates = [BodyId::GROUND, own].map(|frame| {
             force_axes
                 .iter()
                 .map(|&axis| {
@@ -56,7 +58,7 @@ pub fn equations(
         let point = format!("{}*", model.problem.body_name(body));
         let moment_axes: &[usize] = if planar { &[2] } else { &[0, 1, 2] };
         for &axis in moment_axes {
-            let direction = unit_direction(model, if planar { BodyId::GROUND } else { body }, axis);
+            let direction = unit_direction(model, if planar { BodyId::GROUND } else { own }, axis);
             let groups = resultant(
                 model,
                 actions,

@@ -63,6 +63,7 @@ impl<'p> Model<'p> {
         }
         let frames = Frames::new(frame_infos, names);
         let ground = BodyState {
+            frame: BodyId::GROUND,
             omega: Vector::zero(),
             omega_named: Vector::zero(),
             alpha: Vector::zero(),
@@ -105,10 +106,12 @@ impl<'p> Model<'p> {
             sites: Vec::new(),
             constraints: Default::default(),
             speeds,
+            spin_frames: Vec::new(),
         };
         let (sites, constraints) = super::constraints::build(&model)?;
         model.sites = sites;
         model.constraints = constraints;
+        super::resal::write_without_spin(&mut model, form);
         super::massless::check(&model)?;
         Ok(model)
     }
@@ -190,6 +193,7 @@ fn body_kinematics(
     };
     let back: Components = std::array::from_fn(|i| -child_at[i].clone());
     let partial_state = BodyState {
+        frame: body,
         omega: omega.clone(),
         omega_named: omega_named.clone(),
         alpha: alpha.clone(),
@@ -214,6 +218,7 @@ fn body_kinematics(
     };
     let massless = eval(&declared.mass, values) == 0.0;
     let mut state = BodyState {
+        frame: body,
         omega,
         omega_named,
         alpha,

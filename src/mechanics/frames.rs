@@ -102,6 +102,13 @@ impl Frames {
         }
     }
 
+    /// Adds a frame that is no body's (see [`super::resal`]) and returns its id.
+    pub fn push(&mut self, info: FrameInfo, name: String) -> BodyId {
+        self.frames.push(info);
+        self.names.push(name);
+        BodyId(self.frames.len() - 1)
+    }
+
     /// The number of frames, `N` included.
     pub fn len(&self) -> usize {
         self.frames.len()

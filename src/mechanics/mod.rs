@@ -18,6 +18,7 @@ pub mod massless;
 pub mod model;
 pub mod on_parent;
 pub mod point;
+pub mod resal;
 pub mod site;
 pub mod sites;
 pub mod speeds;

@@ -30,13 +30,17 @@ pub enum Form {
 /// The kinematics of one body.
 #[derive(Clone, Debug)]
 pub struct BodyState {
-    /// Angular velocity in `N`, in the body's own unit vectors.
+    /// The frame the body's `omega`, `alpha` and `inertia` are written in: its own, or for
+    /// a body spinning about its symmetry axis the frame that does not spin (see
+    /// [`super::resal`]).
+    pub frame: BodyId,
+    /// Angular velocity in `N`, in the unit vectors of `frame`.
     pub omega: Vector,
     /// The same with components kept whole as named symbols, for the velocity products
     /// `ω×(ω×r)` and `ω×I·ω`: multiplied out, `(q1' + … + qk')^2` alone would be k² terms.
     /// Planar problems name every sum; spatial ones only the long components.
     pub omega_named: Vector,
-    /// Angular acceleration in `N`, in the body's own unit vectors.
+    /// Angular acceleration in `N`, in the unit vectors of `frame`.
     pub alpha: Vector,
     /// The body's origin.
     pub origin: PointMotion,
@@ -46,7 +50,7 @@ pub struct BodyState {
     pub center_offset: Components,
     /// The mass (zero for `N`).
     pub mass: Expr,
-    /// The central inertia matrix in the body's unit vectors (2D: only `zz` is set).
+    /// The central inertia matrix in the unit vectors of `frame` (2D: only `zz` is set).
     pub inertia: Matrix,
 }
 
@@ -90,6 +94,8 @@ pub struct Model<'p> {
     /// The declared speeds' kinematic differential equations; `None` when the speeds are
     /// the rates. With them the kinematics are written with `u` and `u'`.
     pub speeds: Option<Speeds>,
+    /// The bodies written in a frame that does not spin with them (the worked solution's).
+    pub spin_frames: Vec<super::resal::SpinFrame>,
 }
 
 pub(super) fn dt_components(

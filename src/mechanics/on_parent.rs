@@ -134,7 +134,9 @@ fn joint_point_names(joint: &str, parent: &str, at_joint: Components) -> Compone
 /// declared speeds, whose kinematic equations mix the rates.
 fn parent_in_chain(model: &Model, body: BodyId) -> Option<BodyId> {
     let parent = model.frames.info(body).parent?;
-    let built = parent != BodyId::GROUND && model.speeds.is_none();
+    // A body written in a frame that does not spin is written from that frame's turning.
+    let own_frame = model.bodies[body.0].frame == body;
+    let built = parent != BodyId::GROUND && model.speeds.is_none() && own_frame;
     built.then_some(parent)
 }
 

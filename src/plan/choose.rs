@@ -179,8 +179,8 @@ fn rate_columns(model: &Model) -> Option<Vec<Vec<Expr>>> {
     let mut columns = vec![Vec::new(); rates.len()];
     for &body in &model.order {
         let b = &model.bodies[body.0];
-        let velocity = b.center.velocity.components_in(body, &model.frames);
-        let omega = b.omega.components_in(body, &model.frames);
+        let velocity = b.center.velocity.components_in(b.frame, &model.frames);
+        let omega = b.omega.components_in(b.frame, &model.frames);
         for component in velocity.iter().chain(&omega) {
             let coefficients = linear_coefficients(component, &rates).ok()?;
             for (column, c) in columns.iter_mut().zip(coefficients) {

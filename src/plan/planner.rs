@@ -151,9 +151,11 @@ fn directions(
         }
     }
     let mut frames = vec![BodyId::GROUND];
+    // A body spinning about its symmetry axis offers the unit vectors that do not spin.
     for &j in boundary {
-        frames.push(model.sites[j].parent);
-        frames.push(model.sites[j].child);
+        for body in [model.sites[j].parent, model.sites[j].child] {
+            frames.push(model.bodies[body.0].frame);
+        }
     }
     frames.sort();
     frames.dedup();

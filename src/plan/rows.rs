@@ -46,7 +46,8 @@ impl Inertia {
         // as the student writes them. The states check the parts built on the parent's.
         let states = sample_states(model);
         let named = |body: BodyId, vector: &Vector, kind: Kind, built: Option<&Built>| {
-            let components = vector.components_in(body, &model.frames);
+            let frame = model.bodies[body.0].frame;
+            let components = vector.components_in(frame, &model.frames);
             if body == BodyId::GROUND {
                 return components;
             }
@@ -99,7 +100,7 @@ impl Inertia {
             compact[body.0] = true;
             let built = on_parent::center(model, body, &centers, &alphas);
             centers[body.0] = Vector::new(
-                body,
+                state.frame,
                 named(
                     body,
                     &state.center.acceleration,
@@ -115,7 +116,7 @@ impl Inertia {
             let center = centers[index].clone();
             force.push(center.scaled(&-state.mass.clone()));
             acceleration.push(center);
-            let w = state.omega_named.components_in(body, &model.frames);
+            let w = state.omega_named.components_in(state.frame, &model.frames);
             let a = alphas[index].clone();
             let iw = apply(&state.inertia, &w);
             let gyro = crate::mechanics::vector::cross3(&w, &iw);
@@ -130,8 +131,8 @@ impl Inertia {
             } else {
                 torque_whole(&state.inertia, &a, &gyro)
             };
-            torque.push(Vector::new(body, t));
-            alpha.push(Vector::new(body, a));
+            torque.push(Vector::new(state.frame, t));
+            alpha.push(Vector::new(state.frame, a));
         }
         Inertia {
             force,

@@ -38,6 +38,9 @@ pub struct Solution {
     pub student: bool,
     /// Step 1: one frame per body, `N` first.
     pub frames: Vec<Frame>,
+    /// Step 1: the frames that do not spin, one per body spinning about its symmetry axis
+    /// (Resal's frames), in which that body's kinematics and moments are written.
+    pub spin_frames: Vec<SpinFrame>,
     /// Step 1: the generalized coordinates, in the order the joints name them.
     pub coordinates: Vec<Coordinate>,
     /// Step 1: the unit vectors along the joints' axes that step 3 sums along, e.g.
@@ -131,6 +134,22 @@ pub struct Frame {
     pub parent: String,
     /// Its orientation relative to `parent`, e.g. `\text{rotated by } q_{1} \text{ about } \hat{\mathbf{n}}_{z}`.
     pub orientation_tex: String,
+}
+
+/// A frame that turns with a body but does not spin with it, and why it is used.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct SpinFrame {
+    /// The frame, as a row of the frames' table (`parent` and `orientation_tex` as for a
+    /// body's; `fixed_in` empty: it is fixed in no body).
+    pub frame: Frame,
+    /// The spinning body's name.
+    pub body: String,
+    /// Its symmetry axis, e.g. `\hat{\mathbf{z}}_{\mathrm{top}}`.
+    pub axis_tex: String,
+    /// The spin angle, e.g. `\phi`.
+    pub spin_tex: String,
+    /// Whether the frame is the parent's own (a revolute joint) rather than one added.
+    pub parents: bool,
 }
 
 /// A generalized coordinate.

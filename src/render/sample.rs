@@ -28,6 +28,20 @@ pub fn sample() -> Solution {
         method: s("the Motion Law"),
         student: false,
         frames: frames(),
+        spin_frames: vec![SpinFrame {
+            frame: Frame {
+                name: "C".into(),
+                frame_tex: "\\hat{\\mathbf{c}}_{x}, \\hat{\\mathbf{c}}_{y}, \\hat{\\mathbf{c}}_{z}".into(),
+                fixed_in: String::new(),
+                parent: "N".into(),
+                orientation_tex: "\\text{body-fixed rotations by } \\psi, \\theta \\text{ about } z, x"
+                    .into(),
+            },
+            body: "B".into(),
+            axis_tex: "\\hat{\\mathbf{b}}_{z}".into(),
+            spin_tex: "\\phi".into(),
+            parents: false,
+        }],
         axes: Vec::new(),
         // The sample is hand-written: no pictures, so its renderings stay as they were.
         configuration: Figure::default(),

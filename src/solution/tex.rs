@@ -68,7 +68,8 @@ pub(super) fn component_term(c: &Expr, unit: &str) -> String {
 
 /// The shortest way to write a vector among the frames `N`, the body's and its parent's.
 pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
-    let mut frames = vec![body, BodyId::GROUND];
+    // A body spinning about its symmetry axis first in the frame that does not spin.
+    let mut frames = vec![model.bodies[body.0].frame, body, BodyId::GROUND];
     if let Some(parent) = model.frames.info(body).parent {
         frames.push(parent);
     }
