@@ -3,7 +3,9 @@
 //! rows that hold only while they stick. Built in [`super::constraints`].
 
 use super::error::MechanicsError;
+use crate::problem::{CoordinateKind, Problem};
 use crate::symbolic::diff::time_derivative;
+use crate::symbolic::print::latex_name;
 use crate::symbolic::{Expr, Symbol, Unknown};
 
 /// What imposes a constraint row.
@@ -102,10 +104,39 @@ pub struct FrictionSite {
     pub normal: Vec<Symbol>,
 }
 
-/// The symbol of a prescribed coordinate's drive.
-pub fn drive_symbol(coordinate: &str) -> Symbol {
+/// The symbol of the drive of prescribed coordinate `coordinate` (an index into
+/// [`Problem::coordinates`]), written as the statement names it (`drive.symbol`), else as a
+/// textbook does: τ for a torque (an angle's drive), F for a force (a distance's), with the
+/// coordinate as subscript where several drives, or a constant, would share the letter.
+pub fn drive_symbol(problem: &Problem, coordinate: usize) -> Symbol {
+    let c = &problem.coordinates[coordinate];
+    let letter = |c: &crate::problem::Coordinate| match c.kind {
+        CoordinateKind::Angle => "\\tau",
+        CoordinateKind::Distance => "F",
+    };
+    let tex = match &c.drive_symbol {
+        Some(symbol) => latex_name(symbol),
+        None => {
+            let shared = problem
+                .coordinates
+                .iter()
+                .filter(|d| d.motion.is_some() && d.drive_symbol.is_none())
+                .filter(|d| letter(d) == letter(c))
+                .count()
+                > 1
+                || problem
+                    .constants
+                    .iter()
+                    .any(|k| latex_name(&k.name) == letter(c));
+            match shared {
+                true => format!("{}_{{{}}}", letter(c), latex_name(&c.name)),
+                false => letter(c).to_string(),
+            }
+        }
+    };
     Symbol::Unknown(Unknown::Drive {
-        coordinate: coordinate.into(),
+        coordinate: c.name.as_str().into(),
+        tex: tex.as_str().into(),
     })
 }
 

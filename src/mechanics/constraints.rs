@@ -165,7 +165,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
             name: format!("{} prescribed", coordinate.name),
             position: Some(position),
             velocity,
-            unknown: drive_symbol(&coordinate.name),
+            unknown: drive_symbol(problem, i),
         });
     }
     let mut rows = drop_redundant(model, rows, &values, &mut dropped);

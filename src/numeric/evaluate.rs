@@ -170,7 +170,7 @@ impl Compiled {
             .iter()
             .map(|&p| {
                 let name = problem.coordinates[p].name.clone();
-                let symbol = crate::mechanics::constraints::drive_symbol(&name);
+                let symbol = crate::mechanics::constraints::drive_symbol(problem, p);
                 (name, formed.unknowns.iter().position(|u| *u == symbol))
             })
             .collect();

@@ -121,7 +121,15 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
     }
     for (r, (coordinate, value)) in constraint_generalized_forces(model).into_iter().enumerate() {
         for (c, value) in coordinate.into_iter().zip(value) {
-            let label = format!("enforcing {}", model.constraints.rows[r].name);
+            let row = &model.constraints.rows[r];
+            // A prescribed coordinate's row is enforced by its drive, at its joint.
+            let label = match row.origin {
+                crate::mechanics::constraints::RowOrigin::Prescribed(i) => format!(
+                    "drive at {} ({} prescribed)",
+                    problem.joints[problem.coordinates[i].joint].name, problem.coordinates[i].name
+                ),
+                _ => format!("enforcing {}", row.name),
+            };
             joint_load(
                 &mut out,
                 model,

@@ -81,6 +81,7 @@ impl super::read::Reader {
                 dependent: false,
                 dependent_rate: false,
                 motion: None,
+                drive_symbol: None,
             })
             .collect();
         let Some(map) = value.and_then(|v| object(v, "coordinates", &mut self.diag)) else {
@@ -115,6 +116,7 @@ impl super::read::Reader {
                     "dependent",
                     "dependent_rate",
                     "motion",
+                    "drive",
                 ],
                 &mut self.diag,
             );

@@ -460,6 +460,13 @@ impl Reader {
             }
         }
         let Some(v) = fields.get("motion") else {
+            if fields.contains_key("drive") {
+                self.diag.hint(
+                    &key_path(path, "drive"),
+                    "only a prescribed coordinate has a drive",
+                    "give the coordinate a `motion`, or remove `drive`",
+                );
+            }
             return;
         };
         let motion_path = key_path(path, "motion");
@@ -492,6 +499,32 @@ impl Reader {
             return;
         }
         entry.motion = Some(motion);
+        entry.drive_symbol = self.drive_symbol(fields, path);
+    }
+
+    /// `drive.symbol` of a prescribed coordinate: the name its drive goes by.
+    fn drive_symbol(&mut self, fields: &Map<String, Value>, path: &str) -> Option<String> {
+        let drive = fields.get("drive")?;
+        let drive_path = key_path(path, "drive");
+        let Some(drive) = object(drive, &drive_path, &mut self.diag) else {
+            return None;
+        };
+        check_keys(drive, &drive_path, &["symbol"], &mut self.diag);
+        let symbol_path = key_path(&drive_path, "symbol");
+        let symbol = drive.get("symbol")?;
+        let name = symbol.as_str().filter(|s| {
+            let mut chars = s.chars();
+            chars.next().is_some_and(|c| c.is_ascii_alphabetic())
+                && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        });
+        if name.is_none() {
+            self.diag.hint(
+                &symbol_path,
+                format!("expected a name such as \"tau\" or \"M_m\", found {symbol}"),
+                "letters, digits and underscores, starting with a letter; Greek letters by name",
+            );
+        }
+        name.map(str::to_string)
     }
 
     /// A `find.reactions` name: a joint, a closure or a rolling contact, as a site index.

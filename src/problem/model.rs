@@ -75,6 +75,8 @@ pub struct Coordinate {
     pub dependent_rate: bool,
     /// A prescribed motion `q(t)` (constants and `t`): then not a degree of freedom.
     pub motion: Option<Expr>,
+    /// The name its drive goes by in the statement (`drive.symbol`, e.g. `tau_m`).
+    pub drive_symbol: Option<String>,
 }
 
 /// The central inertia of a body.

@@ -211,9 +211,8 @@ const ROUND_OFF: f64 = 1e-10;
 
 /// The drive of prescribed coordinate `i`, `Q_{\theta}`, as step 5 writes it.
 fn drive_tex(problem: &Problem, i: usize) -> String {
-    let name = &problem.coordinates[i].name;
     latex(&crate::symbolic::Expr::sym(
-        crate::mechanics::constraints::drive_symbol(name),
+        crate::mechanics::constraints::drive_symbol(problem, i),
     ))
 }
 

@@ -385,3 +385,32 @@ fn the_energy_check_does_not_fail_where_a_constraint_does_work() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("FAIL"), "{stderr}");
 }
+
+// A drive is written as the statement names it: τ by default for a crank's torque, the
+// `drive.symbol` when the problem gives one; the output's key stays the coordinate's.
+#[test]
+fn a_drive_is_written_as_the_statement_names_it() {
+    let markdown = crate::support::explain("slider-crank-driven", &["--method", "motion-law"]);
+    assert!(markdown.contains("drive at O (q1 prescribed) | $\\tau \\hat{\\mathbf{n}}_{z}$"));
+    assert!(!markdown.contains("Q_{q_{1}}"), "the drive is still Q");
+    let mut problem: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(crate::support::problem("slider-crank-driven")).expect("read"),
+    )
+    .expect("JSON");
+    problem["coordinates"]["q1"]["drive"] = serde_json::json!({ "symbol": "M_m" });
+    let path = std::env::temp_dir().join(format!("mbd-drive-{}.json", std::process::id()));
+    std::fs::write(&path, problem.to_string()).expect("write");
+    let run = |args: &[&str]| {
+        let mut all: Vec<&std::ffi::OsStr> = vec![std::ffi::OsStr::new(args[0]), path.as_os_str()];
+        all.extend(args[1..].iter().map(std::ffi::OsStr::new));
+        crate::support::run(&all)
+    };
+    let explained = run(&["explain", "--method", "kane"]);
+    let solved = run(&["solve", "--format", "json"]);
+    let _ = std::fs::remove_file(&path);
+    let markdown = String::from_utf8_lossy(&explained.stdout);
+    assert!(markdown.contains("M_{m}"), "no M_m in the handout");
+    assert!(!markdown.contains("\\tau"), "τ beside the statement's M_m");
+    let json: serde_json::Value = serde_json::from_slice(&solved.stdout).expect("JSON");
+    assert!(json["drives"]["q1"].as_f64().is_some(), "{json}");
+}

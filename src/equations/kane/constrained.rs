@@ -64,7 +64,7 @@ pub fn equations(
         // The drive does work only with its own coordinate's rate, by a unit weight.
         let name = &model.problem.coordinates[i].name;
         let mut groups = combined(&raw, &speeds.prescribed_weights(p, n));
-        groups.contact = &groups.contact + &Expr::sym(drive_symbol(name));
+        groups.contact = &groups.contact + &Expr::sym(drive_symbol(model.problem, i));
         rows.push(row(auxiliary_name(&format!("{name} drive")), groups));
     }
     for &j in request.reactions {

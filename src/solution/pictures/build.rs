@@ -430,7 +430,15 @@ impl Setting<'_, '_, '_> {
             ActionKind::Couple { torque } => {
                 let at = match action.source {
                     Source::Reaction(j) => n.vector(&model.sites[j].point.position),
-                    Source::Constraint(_) => n.vector(&model.bodies[action.body.0].center.position),
+                    // A drive turns its coordinate's joint: drawn there, as a motor at its
+                    // bearing; a multiplier's couple at the mass centre.
+                    Source::Constraint(r) => match model.constraints.rows[r].origin {
+                        crate::mechanics::constraints::RowOrigin::Prescribed(i) => {
+                            let j = problem.coordinates[i].joint;
+                            n.vector(&model.joints[j].point.position)
+                        }
+                        _ => n.vector(&model.bodies[action.body.0].center.position),
+                    },
                     Source::Load(i) => {
                         match crate::plan::forces::joint_load_value(problem, &problem.loads[i].kind)
                         {

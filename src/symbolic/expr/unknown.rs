@@ -1,7 +1,7 @@
 //! The unknowns of the linear system other than the q'': what each one is, as a type.
 //!
 //! Every printed form derives from the type: the plain name (`O.Fx`, `Q_q1`,
-//! `lambda_loop`), the LaTeX (`F^{O}_{x}`, `Q_{\mathrm{q1}}`, `\lambda_{\mathrm{loop}}`)
+//! `lambda_loop`), the LaTeX (`F^{O}_{x}`, `\tau`, `\lambda_{\mathrm{loop}}`)
 //! and, through the site or coordinate it names, the keys of the commands' output.
 
 use super::Name;
@@ -88,6 +88,9 @@ pub enum Unknown {
     Drive {
         /// The coordinate's name.
         coordinate: Name,
+        /// How it is written: the statement's symbol, or `\\tau` for an angle and `F` for
+        /// a distance (see `mechanics::constraints::drive_symbol`).
+        tex: Name,
     },
     /// The multiplier of a `position` or `velocity` constraint entry.
     Multiplier {
@@ -105,7 +108,7 @@ impl Unknown {
         }
     }
 
-    /// The name in LaTeX: `F^{O}_{x}`, `Q_{\theta}`, `\lambda_{\mathrm{loop}}`.
+    /// The name in LaTeX: `F^{O}_{x}`, `\tau`, `\lambda_{\mathrm{loop}}`.
     pub fn latex(&self) -> String {
         use crate::symbolic::tex_name::{latex_name, latex_name_plain};
         match self {
@@ -115,7 +118,7 @@ impl Unknown {
                 latex_name(site),
                 component.axis.subscript()
             ),
-            Unknown::Drive { coordinate } => format!("Q_{{{}}}", latex_name(coordinate)),
+            Unknown::Drive { tex, .. } => tex.to_string(),
             Unknown::Multiplier { constraint } => {
                 format!("\\lambda_{{{}}}", latex_name_plain(constraint))
             }
@@ -128,7 +131,7 @@ impl fmt::Display for Unknown {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Unknown::Reaction { site, component } => write!(f, "{site}.{component}"),
-            Unknown::Drive { coordinate } => write!(f, "Q_{coordinate}"),
+            Unknown::Drive { coordinate, .. } => write!(f, "Q_{coordinate}"),
             Unknown::Multiplier { constraint } => write!(f, "lambda_{constraint}"),
         }
     }
@@ -152,7 +155,7 @@ impl Ord for Unknown {
                     component: y,
                 },
             ) if a == b => x.cmp(y),
-            (Unknown::Drive { coordinate: a }, Unknown::Drive { coordinate: b })
+            (Unknown::Drive { coordinate: a, .. }, Unknown::Drive { coordinate: b, .. })
             | (Unknown::Multiplier { constraint: a }, Unknown::Multiplier { constraint: b }) => {
                 natural_cmp(a, b).then_with(|| a.cmp(b))
             }
@@ -209,9 +212,10 @@ mod tests {
         check(
             Unknown::Drive {
                 coordinate: "q1".into(),
+                tex: "\\tau".into(),
             },
             "Q_q1",
-            "Q_{q_{1}}",
+            "\\tau",
         );
         check(
             Unknown::Multiplier {
@@ -224,9 +228,10 @@ mod tests {
         check(
             Unknown::Drive {
                 coordinate: "q_1".into(),
+                tex: "F_{q_{1}}".into(),
             },
             "Q_q_1",
-            "Q_{q_{1}}",
+            "F_{q_{1}}",
         );
         check(
             Unknown::Multiplier {
@@ -259,6 +264,7 @@ mod tests {
         for name in ["q1", "q10", "q2", "x"] {
             all.push(Unknown::Drive {
                 coordinate: name.into(),
+                tex: "\\tau".into(),
             });
             all.push(Unknown::Multiplier {
                 constraint: name.into(),
