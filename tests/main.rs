@@ -20,6 +20,7 @@ mod kinematics;
 mod library;
 mod linearize;
 mod long_rows;
+mod loops;
 mod massless;
 mod mathml;
 mod matrix_pattern;

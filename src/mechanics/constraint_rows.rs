@@ -39,6 +39,11 @@ pub struct ConstraintRow {
     pub velocity: Expr,
     /// The unknown that enforces it.
     pub unknown: Symbol,
+    /// For a closure that holds its point (revolute, spherical, universal, weld), the
+    /// acceleration loop's component, (a^{R_C} − a^{R_B}) · d, as a textbook writes the
+    /// row: equal to the derivative of `velocity` wherever the loop is closed, which the
+    /// assembly keeps it to 1e-13.
+    pub loop_acceleration: Option<Expr>,
 }
 
 impl ConstraintRow {
@@ -47,6 +52,9 @@ impl ConstraintRow {
     /// # Errors
     /// When the expression cannot be differentiated.
     pub fn acceleration(&self) -> Result<Expr, MechanicsError> {
+        if let Some(written) = &self.loop_acceleration {
+            return Ok(written.clone());
+        }
         time_derivative(&self.velocity).map_err(|e| MechanicsError {
             path: "constraints".into(),
             message: format!("{}: {e}", self.name),

@@ -112,6 +112,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                         position: is_normal.then(|| contact.height.clone()),
                         velocity: velocity.dot(&reaction.direction, &model.frames),
                         unknown: reaction.unknown(&site.name),
+                        loop_acceleration: None,
                     });
                 }
                 let (kept, frictional) =
@@ -132,6 +133,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                     position: Some(expression.clone()),
                     velocity,
                     unknown: multiplier_symbol(&constraint.name),
+                    loop_acceleration: None,
                 });
             }
             ConstraintKind::Velocity { expression } => rows.push(ConstraintRow {
@@ -140,6 +142,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                 position: None,
                 velocity: expression.clone(),
                 unknown: multiplier_symbol(&constraint.name),
+                loop_acceleration: None,
             }),
         }
     }
@@ -166,6 +169,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
             position: Some(position),
             velocity,
             unknown: drive_symbol(problem, i),
+            loop_acceleration: None,
         });
     }
     let mut rows = drop_redundant(model, rows, &values, &mut dropped);
@@ -305,6 +309,18 @@ fn closure_rows(
             let g = alignment(model, closure, d, axis.as_ref());
             (g, relative_omega.dot(d, frames))
         };
+        // A closure that holds its point: the two material points there have the same
+        // acceleration, and each row is that loop's component.
+        let holds_point = matches!(
+            closure.kind,
+            JointKind::Revolute | JointKind::Spherical | JointKind::Universal | JointKind::Weld
+        );
+        let loop_acceleration = (holds_point && reaction.kind == ComponentKind::Force).then(|| {
+            site.point
+                .acceleration
+                .minus(&parent_point.acceleration)
+                .dot(d, frames)
+        });
         rows.push(ConstraintRow {
             origin: RowOrigin::Site {
                 site: index,
@@ -314,6 +330,7 @@ fn closure_rows(
             position: Some(position),
             velocity,
             unknown: reaction.unknown(&site.name),
+            loop_acceleration,
         });
     }
     Ok(rows)

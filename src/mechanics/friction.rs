@@ -196,6 +196,7 @@ fn slider_site(
         position: None,
         velocity,
         unknown: friction.unknown(&site.name),
+        loop_acceleration: None,
     };
     Some(FrictionSite {
         name: site.name.clone(),

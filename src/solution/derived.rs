@@ -49,6 +49,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .map(|row| super::row_view::equation_view(derivation, row))
             .collect();
         super::long::refer_to_repeated_vector_forms(derivation, &mut solution.equations);
+        super::loops::refer_to_repeated_loops(&mut solution.equations);
         super::long::refer_to_the_first_auxiliary_row(&mut solution.equations);
         super::long::say_the_acceleration_level_once(&mut solution.equations);
         // The matrix is listed entry by entry whenever an equation refers to its entries.

@@ -21,6 +21,7 @@ mod kane;
 mod kinematics;
 pub mod linearization;
 mod long;
+mod loops;
 mod matrix;
 mod mode_shape;
 pub mod pictures;

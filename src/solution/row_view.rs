@@ -167,8 +167,13 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     }
     if matches!(row.sum, Sum::Constraint { .. }) && !by_name {
         // A constraint differentiated is one sum with no groups: as formed it is the
-        // simplified row in another order, so it is written once.
+        // simplified row in another order, so it is written once; a closure's is the
+        // component of its vector loop, which is written first.
         grouped_tex.clear();
+        if let Some(vector_loop) = super::loops::closure_loop_tex(derivation, row) {
+            grouped_tex = vector_loop;
+            simplified_note = super::loops::component_note();
+        }
     }
     if grouped_tex == simplified_tex && simplified_note.is_empty() {
         // Formed already in its simplest form: written once.
