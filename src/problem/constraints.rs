@@ -506,9 +506,7 @@ impl Reader {
     fn drive_symbol(&mut self, fields: &Map<String, Value>, path: &str) -> Option<String> {
         let drive = fields.get("drive")?;
         let drive_path = key_path(path, "drive");
-        let Some(drive) = object(drive, &drive_path, &mut self.diag) else {
-            return None;
-        };
+        let drive = object(drive, &drive_path, &mut self.diag)?;
         check_keys(drive, &drive_path, &["symbol"], &mut self.diag);
         let symbol_path = key_path(&drive_path, "symbol");
         let symbol = drive.get("symbol")?;
