@@ -75,6 +75,7 @@ pub fn planar_chain(n: usize) -> Problem {
             dependent: false,
             dependent_rate: false,
             motion: None,
+            drive_symbol: None,
         })
         .collect();
     Problem {

@@ -20,14 +20,13 @@ fn loop_by_hand(v: &Values) -> [f64; 2] {
     let (q1, q2, q3) = (q("q1", 0), q("q2", 0), q("q3", 0));
     let (w1, w2, w3) = (q("q1", 1), q("q2", 1), q("q3", 1));
     let (e1, e2, e3) = (q("q1", 2), q("q2", 2), q("q3", 2));
-    let mut gap = [0.0; 2];
-    for k in 0..2 {
+    let gap: [f64; 2] = std::array::from_fn(|k| {
         let on_c = c("c") * e3 * normal(q3)[k] - c("c") * w3 * w3 * unit(q3)[k];
         let on_b = c("a") * e1 * normal(q1)[k] - c("a") * w1 * w1 * unit(q1)[k]
             + c("b") * (e1 + e2) * normal(q1 + q2)[k]
             - c("b") * (w1 + w2).powi(2) * unit(q1 + q2)[k];
-        gap[k] = on_c - on_b;
-    }
+        on_c - on_b
+    });
     let (bx, by) = (unit(q1 + q2), normal(q1 + q2));
     [
         gap[0] * bx[0] + gap[1] * bx[1],
