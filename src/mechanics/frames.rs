@@ -102,7 +102,8 @@ impl Frames {
         }
     }
 
-    /// Adds a frame that is no body's (see [`super::resal`]) and returns its id.
+    /// Adds a frame that is no body's (a frame that does not spin, `mechanics/resal.rs`) and
+    /// returns its id.
     pub fn push(&mut self, info: FrameInfo, name: String) -> BodyId {
         self.frames.push(info);
         self.names.push(name);

@@ -31,8 +31,8 @@ pub enum Form {
 #[derive(Clone, Debug)]
 pub struct BodyState {
     /// The frame the body's `omega`, `alpha` and `inertia` are written in: its own, or for
-    /// a body spinning about its symmetry axis the frame that does not spin (see
-    /// [`super::resal`]).
+    /// a body spinning about its symmetry axis the frame that does not spin (Resal's, see
+    /// `mechanics/resal.rs`).
     pub frame: BodyId,
     /// Angular velocity in `N`, in the unit vectors of `frame`.
     pub omega: Vector,
@@ -52,6 +52,22 @@ pub struct BodyState {
     pub mass: Expr,
     /// The central inertia matrix in the unit vectors of `frame` (2D: only `zz` is set).
     pub inertia: Matrix,
+}
+
+/// A body written in a frame that does not spin with it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SpinFrame {
+    /// The spinning body.
+    pub body: BodyId,
+    /// The frame its ω, α and inertia are written in: the parent's (one rotation), or a
+    /// frame of its own after the joint's other rotations, named like a body.
+    pub frame: BodyId,
+    /// Whether `frame` was added for it (not a body's frame).
+    pub added: bool,
+    /// The spin angle: the coordinate of the joint's last rotation.
+    pub spin: usize,
+    /// The symmetry axis (0, 1, 2: x, y, z of the body).
+    pub axis: usize,
 }
 
 /// A joint with what it allows and what it transmits.
@@ -95,7 +111,7 @@ pub struct Model<'p> {
     /// the rates. With them the kinematics are written with `u` and `u'`.
     pub speeds: Option<Speeds>,
     /// The bodies written in a frame that does not spin with them (the worked solution's).
-    pub spin_frames: Vec<super::resal::SpinFrame>,
+    pub spin_frames: Vec<SpinFrame>,
 }
 
 pub(super) fn dt_components(

@@ -13,27 +13,11 @@
 use super::angular::omega_component_named;
 use super::components::{cross3, Components};
 use super::frames::{FrameInfo, Frames};
-use super::model::{rigid_point, Form, Model};
+use super::model::{rigid_point, Form, Model, SpinFrame};
 use super::vector::Vector;
 use crate::problem::{BodyId, Dimension, ForcePoint, LoadKind, PointRef, Problem};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::{simplify, Expr};
-
-/// A body written in a frame that does not spin with it.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SpinFrame {
-    /// The spinning body.
-    pub body: BodyId,
-    /// The frame its ω, α and inertia are written in: the parent's (one rotation), or a
-    /// frame of its own after the joint's other rotations, named like a body.
-    pub frame: BodyId,
-    /// Whether `frame` was added for it (not a body's frame).
-    pub added: bool,
-    /// The spin angle: the coordinate of the joint's last rotation.
-    pub spin: usize,
-    /// The symmetry axis (0, 1, 2: x, y, z of the body).
-    pub axis: usize,
-}
 
 /// Writes every body that qualifies in its frame that does not spin (see the module).
 pub(super) fn write_without_spin(model: &mut Model, form: Form) {

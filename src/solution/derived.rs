@@ -42,7 +42,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             crate::render::where_list::grouped(force_definitions(derivation));
         let by_partials;
         (solution.kinematics, by_partials) = super::kinematics::kinematics(derivation);
-        solution.spin_frames = super::build::spin_frames(derivation);
+        solution.spin_frames = super::spin_frames::spin_frames(derivation);
         solution.equations = derivation
             .rows
             .iter()

@@ -29,6 +29,7 @@ mod rejected;
 pub mod row_view;
 mod simulation;
 mod speeds;
+mod spin_frames;
 mod tex;
 
 pub use build::{setup, solution as worked};
