@@ -169,6 +169,7 @@ impl Painter {
                 up,
                 fixed,
             } => self.surface(*at, *along, *up, *fixed),
+            Shape::Floor { corners, up } => self.floor(corners, *up),
             Shape::Track {
                 center,
                 normal,

@@ -1,7 +1,7 @@
 //! `motion.svg`: a [`Motion`] written as SVG animated with SMIL (`<animate>`,
 //! `<animateTransform>`), looping, no script.
 
-use super::motion::{Look, Motion, Placed, TITLE_STRIP};
+use super::motion::{Motion, Part, Placed, TITLE_STRIP};
 use super::numbers::P3;
 use super::picture::{Ink, Projection, P2};
 use super::strokes::in_lane;
@@ -9,7 +9,7 @@ use crate::render::escape::html as xml;
 use std::fmt::Write;
 
 /// Three decimals, no negative zero, no trailing zeros.
-fn num(x: f64) -> String {
+pub(super) fn num(x: f64) -> String {
     let text = format!("{x:.3}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" {
@@ -28,7 +28,7 @@ fn fine(x: f64) -> String {
     }
 }
 
-fn color(ink: Ink) -> String {
+pub(super) fn color(ink: Ink) -> String {
     let (r, g, b) = ink.rgb();
     format!("#{r:02x}{g:02x}{b:02x}")
 }
@@ -75,7 +75,7 @@ pub fn compose([e, f, theta, skew, sx, sy]: [f64; 6]) -> [f64; 6] {
 }
 
 /// The animation's common attributes: its length, its key times, looping.
-struct Timing {
+pub(super) struct Timing {
     attributes: String,
 }
 
@@ -108,7 +108,7 @@ impl Timing {
         }
     }
 
-    fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
+    pub(super) fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
         let _ = writeln!(
             out,
             "<animate attributeName=\"{attribute}\" values=\"{}\" {}/>",
@@ -143,6 +143,8 @@ pub fn export(motion: &Motion) -> String {
         h = num(height),
     );
     let _ = writeln!(out, "<title>Motion of {}</title>", xml(&motion.title));
+    out.push_str(super::svg::SCRIPT_STYLE);
+    out.push('\n');
     let _ = writeln!(
         out,
         "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#fff\"/>",
@@ -157,13 +159,14 @@ pub fn export(motion: &Motion) -> String {
         xml(&motion.title)
     );
     let timing = Timing::new(&motion.frames);
+    super::motion_marks::floors(&mut out, motion);
     ground(&mut out, motion);
-    for (k, sheet) in motion.sheets.iter().enumerate() {
+    for k in 0..motion.bodies.len() {
         body(&mut out, motion, &timing, k);
-        let _ = sheet;
     }
     springs(&mut out, motion, &timing);
     dampers(&mut out, motion, &timing);
+    super::motion_marks::gauges(&mut out, motion, &timing);
     points(&mut out, motion, &timing);
     out.push_str("</svg>\n");
     out
@@ -206,7 +209,7 @@ fn ground(out: &mut String, motion: &Motion) {
     out.push_str("</g>\n");
 }
 
-fn polyline(points: &[P2]) -> String {
+pub(super) fn polyline(points: &[P2]) -> String {
     let mut d = String::new();
     for (i, [x, y]) in points.iter().enumerate() {
         let _ = write!(
@@ -220,24 +223,52 @@ fn polyline(points: &[P2]) -> String {
     d
 }
 
-/// A body: its shape on its sheet (in metres), moved by four animated transforms.
+/// A body: its group, and in it each of its sheets with its parts (in metres), moved by
+/// four animated transforms; a particle's ball, moved by its centre.
 fn body(out: &mut String, motion: &Motion, timing: &Timing, k: usize) {
-    let sheet = &motion.sheets[k];
+    let body = &motion.bodies[k];
     let p = &motion.projection;
-    let kind = match sheet.look {
-        Look::Disc(_) => "disc",
-        Look::Rods { .. } => "rod",
-        Look::Particle { .. } => "particle",
-    };
     let _ = writeln!(
         out,
-        "<g class=\"body\" id=\"body-{}\" data-shape=\"{kind}\">",
-        xml(&sheet.name)
+        "<g class=\"body\" id=\"body-{}\" data-shape=\"{}\">",
+        xml(&body.name),
+        body.kind.name()
     );
+    for (s, sheet) in motion.sheets.iter().enumerate() {
+        if sheet.body == k && !sheet.parts.is_empty() {
+            out.push_str("<g class=\"sheet\">\n");
+            sheet_transforms(out, motion, timing, s);
+            for part in &sheet.parts {
+                self::part(out, part);
+            }
+            out.push_str("</g>\n");
+        }
+    }
+    if let Some(i) = body.ball {
+        let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
+        let xs: Vec<String> = track.iter().map(|q| num(q[0])).collect();
+        let ys: Vec<String> = track.iter().map(|q| num(q[1])).collect();
+        let _ = writeln!(
+            out,
+            "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"7\" fill=\"{}\">",
+            xs[0],
+            ys[0],
+            color(Ink::Black)
+        );
+        timing.animate(out, "cx", &xs);
+        timing.animate(out, "cy", &ys);
+        out.push_str("</circle>\n");
+    }
+    out.push_str("</g>\n");
+}
+
+/// The four transforms that carry sheet `s` from its own plane to the picture, per frame.
+fn sheet_transforms(out: &mut String, motion: &Motion, timing: &Timing, s: usize) {
+    let p = &motion.projection;
     let mut parts: [Vec<String>; 4] = Default::default();
     let mut last_angle: Option<f64> = None;
     for frame in &motion.frames {
-        let [e, f, mut theta, skew, sx, sy] = decompose(sheet_matrix(p, &frame.sheets[k]));
+        let [e, f, mut theta, skew, sx, sy] = decompose(sheet_matrix(p, &frame.sheets[s]));
         // The turn goes on continuously, never back round the long way.
         if let Some(last) = last_angle {
             theta += 360.0 * ((last - theta) / 360.0).round();
@@ -251,72 +282,95 @@ fn body(out: &mut String, motion: &Motion, timing: &Timing, k: usize) {
     for (kind, values) in ["translate", "rotate", "skewX", "scale"].iter().zip(&parts) {
         timing.transform(out, kind, values);
     }
-    // Line widths and the ball stay in pixels whatever the sheet's scale.
-    let pixel = 1.0 / p.a[0].iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-12);
+}
+
+/// Path data through sheet points (metres, so finely).
+fn sheet_path(points: &[[f64; 2]], closed: bool) -> String {
+    let mut d = String::new();
+    for (i, q) in points.iter().enumerate() {
+        let _ = write!(
+            d,
+            "{}{} {}",
+            if i == 0 { "M" } else { "L" },
+            fine(q[0]),
+            fine(q[1])
+        );
+    }
+    if closed {
+        d.push('Z');
+    }
+    d
+}
+
+/// One part on a sheet; line widths stay in pixels whatever the sheet's scale.
+fn part(out: &mut String, part: &Part) {
     let ink = color(Ink::Black);
     let fill = color(Ink::Body);
-    match &sheet.look {
-        Look::Disc(r) => {
+    const KEEP: &str = "vector-effect=\"non-scaling-stroke\"";
+    match part {
+        Part::Wheel {
+            center,
+            radius,
+            mark,
+        } => {
+            let [cx, cy] = *center;
             let _ = writeln!(
                 out,
-                "<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"{fill}\" stroke=\"{ink}\" stroke-width=\"1.6\" vector-effect=\"non-scaling-stroke\"/>",
-                fine(*r)
+                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\" stroke=\"{ink}\" stroke-width=\"1.6\" {KEEP}/>",
+                fine(cx),
+                fine(cy),
+                fine(*radius)
             );
-            // Two spokes, one darker: the wheel is seen to turn.
-            let _ = writeln!(
-                out,
-                "<path d=\"M{m} 0H{r}M0 {m}V{r}\" stroke=\"{}\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\"/>",
-                color(Ink::Grey),
-                m = fine(-r),
-                r = fine(*r)
-            );
-            let _ = writeln!(
-                out,
-                "<path d=\"M0 0H{}\" stroke=\"{}\" stroke-width=\"2.5\" vector-effect=\"non-scaling-stroke\"/>",
-                fine(*r),
-                color(Ink::Unknown)
-            );
-        }
-        Look::Rods { center, points } => {
-            let mut d = String::new();
-            for q in points {
-                let _ = write!(
-                    d,
-                    "M{} {}L{} {}",
-                    fine(center[0]),
-                    fine(center[1]),
-                    fine(q[0]),
-                    fine(q[1])
-                );
-            }
-            let _ = writeln!(
-                out,
-                "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"7\" vector-effect=\"non-scaling-stroke\"/>"
+            // A light cross and the dark spoke of the still picture: the wheel is seen to
+            // turn.
+            let at = |u: f64, v: f64| {
+                [
+                    cx + radius * (u * mark[0] - v * mark[1]),
+                    cy + radius * (u * mark[1] + v * mark[0]),
+                ]
+            };
+            let cross = format!(
+                "{}{}",
+                sheet_path(&[at(-1.0, 0.0), at(1.0, 0.0)], false),
+                sheet_path(&[at(0.0, -1.0), at(0.0, 1.0)], false)
             );
             let _ = writeln!(
                 out,
-                "<path d=\"{d}\" fill=\"none\" stroke=\"{fill}\" stroke-width=\"4.5\" vector-effect=\"non-scaling-stroke\"/>"
+                "<path d=\"{cross}\" stroke=\"{}\" stroke-width=\"0.8\" {KEEP}/>",
+                color(Ink::Grey)
+            );
+            let _ = writeln!(
+                out,
+                "<path class=\"mark\" d=\"{}\" stroke=\"{ink}\" stroke-width=\"2\" {KEEP}/>",
+                sheet_path(&[*center, at(1.0, 0.0)], false)
             );
         }
-        Look::Particle { rods } => {
-            let mut d = String::new();
-            for q in rods {
-                let _ = write!(d, "M0 0L{} {}", fine(q[0]), fine(q[1]));
-            }
-            if !d.is_empty() {
-                let _ = writeln!(
-                    out,
-                    "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"1.5\" vector-effect=\"non-scaling-stroke\"/>"
-                );
-            }
+        Part::Bar(points) => {
+            let d = sheet_path(points, false);
             let _ = writeln!(
                 out,
-                "<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"{ink}\"/>",
-                fine(7.0 * pixel)
+                "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"7\" {KEEP}/>"
+            );
+            let _ = writeln!(
+                out,
+                "<path d=\"{d}\" fill=\"none\" stroke=\"{fill}\" stroke-width=\"4.6\" {KEEP}/>"
+            );
+        }
+        Part::Line(a, b) => {
+            let _ = writeln!(
+                out,
+                "<path d=\"{}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"1.1\" {KEEP}/>",
+                sheet_path(&[*a, *b], false)
+            );
+        }
+        Part::Outline(points) => {
+            let _ = writeln!(
+                out,
+                "<path d=\"{}\" fill=\"{fill}\" stroke=\"{ink}\" stroke-width=\"1.4\" {KEEP}/>",
+                sheet_path(points, true)
             );
         }
     }
-    out.push_str("</g>\n");
 }
 
 /// The springs as zig-zags that stretch with the motion.
