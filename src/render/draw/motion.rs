@@ -102,8 +102,10 @@ pub struct Motion {
     /// Per marked point, the words that follow it: a body's name beside its mass centre,
     /// a joint's coordinates that no mark shows beside the joint.
     pub captions: Vec<Option<String>>,
-    /// The pins and balls fixed to `N` (ids into `points`), drawn with a support.
-    pub grounded: Vec<usize>,
+    /// The pins and balls fixed to `N` (ids into `points`), drawn with a support, each
+    /// with the unit direction towards the body it carries (the support is on the other
+    /// side).
+    pub grounded: Vec<(usize, P3)>,
     /// Rolling contacts' points (ids into `points`), whose track is drawn on the ground.
     pub rolling: Vec<usize>,
     /// The floors fixed in `N` that bodies roll on in 3D: each a parallelogram (its

@@ -89,6 +89,9 @@ fn drawn(p: &Projection, gauge: &Gauge, size: P2) -> Drawn {
             angle,
             reference,
         } => {
+            // Past a whole turn (a crank that keeps turning) only the last turn is drawn,
+            // which ends where the whole angle does.
+            let angle = angle % std::f64::consts::TAU;
             let r = ARC / pixels(p);
             let v = cross(axis, from);
             let c = p.point(center);

@@ -180,23 +180,28 @@ fn ground(out: &mut String, motion: &Motion) {
         out,
         "<g class=\"ground\" fill=\"none\" stroke=\"{grey}\" stroke-width=\"1.2\">"
     );
-    for &i in &motion.grounded {
+    for &(i, toward) in &motion.grounded {
         let Some(first) = motion.frames.first() else {
             break;
         };
-        let [x, y] = p.point(first.points[i]);
-        let _ = writeln!(
-            out,
-            "<path d=\"M{} {}L{} {}L{} {}Z M{} {}h24\"/>",
-            num(x),
-            num(y),
-            num(x - 8.0),
-            num(y + 14.0),
-            num(x + 8.0),
-            num(y + 14.0),
-            num(x - 12.0),
-            num(y + 14.0)
-        );
+        let c = p.point(first.points[i]);
+        // A triangle from the pin away from its body, on a hatched ground line.
+        let up = super::strokes::p2unit(p.direction(toward)).unwrap_or([0.0, -1.0]);
+        let across = [-up[1], up[0]];
+        let at = |back: f64, side: f64| {
+            [
+                c[0] - up[0] * back + across[0] * side,
+                c[1] - up[1] * back + across[1] * side,
+            ]
+        };
+        let mut d = polyline(&[c, at(14.0, 8.0), at(14.0, -8.0)]);
+        d.push('Z');
+        d.push_str(&polyline(&[at(14.0, -12.0), at(14.0, 12.0)]));
+        for k in 0..5 {
+            let side = -12.0 + 6.0 * f64::from(k);
+            d.push_str(&polyline(&[at(14.0, side), at(19.0, side - 4.0)]));
+        }
+        let _ = writeln!(out, "<path d=\"{d}\"/>");
     }
     for &i in &motion.rolling {
         let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();

@@ -9,7 +9,7 @@
 //! (`cm-B`, `joint-J`) are circles outside the bodies' groups, moved by `<animate>` of
 //! their centres, so that their attributes give their place.
 
-use super::numbers::{add, dot, norm, scale, sub, Numbers, P3};
+use super::numbers::{add, dot, norm, scale, sub, unit, Numbers, P3};
 use super::sheets;
 use crate::equations::Derivation;
 use crate::mechanics::sites::SiteKind;
@@ -140,7 +140,7 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
                         JointKind::Revolute | JointKind::Spherical | JointKind::Universal
                     ) =>
                 {
-                    grounded.push(points.len());
+                    grounded.push((points.len(), toward_body(&numbers, j)));
                 }
                 SiteKind::Joint(_) => {}
                 _ => rolling.push(points.len()),
@@ -204,6 +204,29 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         frames: placed,
         projection,
         size,
+    }
+}
+
+/// The direction from joint `j` on `N` towards the body it carries, upright when it is
+/// nearly so, at the first frame: its support is drawn on the other side, as the still
+/// picture draws it.
+fn toward_body(n: &Numbers, j: usize) -> P3 {
+    let model = n.model;
+    let vertical = if model.is_planar() {
+        [0.0, 1.0, 0.0]
+    } else {
+        [0.0, 0.0, 1.0]
+    };
+    let at = n.vector(&model.joints[j].point.position);
+    let child = n.vector(
+        &model.bodies[model.problem.joints[j].child.0]
+            .center
+            .position,
+    );
+    match unit(sub(child, at)) {
+        Some(v) if dot(v, vertical).abs() >= 0.5 => scale(vertical, dot(v, vertical).signum()),
+        Some(v) => v,
+        None => vertical,
     }
 }
 
