@@ -116,19 +116,22 @@ impl Painter {
             if self.obstacles.crosses_label(arrow.head, tip) {
                 return None;
             }
-            let Some(free) = self.obstacles.free_near(tip, toward, size, &NEAR[..2]) else {
+            // The longer arrow first, so that its label keeps clear of it too.
+            let mut heads = vec![head(tip, u)];
+            if arrow.heads.len() > 1 {
+                heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
+            }
+            let mut longer = self.obstacles.clone();
+            longer.segment(arrow.head, tip);
+            for h in &heads {
+                longer.polyline(h, true);
+            }
+            let Some(free) = longer.free_near(tip, toward, size, &NEAR[..2]) else {
                 continue;
             };
-            self.obstacles.segment(arrow.head, tip);
-            let double = arrow.heads.len() > 1;
+            self.obstacles = longer;
             arrow.head = tip;
-            arrow.heads = vec![head(tip, u)];
-            if double {
-                arrow.heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
-            }
-            for h in &arrow.heads {
-                self.obstacles.polyline(h, true);
-            }
+            arrow.heads = heads;
             return Some(self.obstacles.take(free));
         }
         None

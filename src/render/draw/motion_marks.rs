@@ -3,7 +3,7 @@
 //! Every frame's path has the same commands, so that one frame's turns into the next.
 
 use super::motion::{Gauge, Motion};
-use super::motion_svg::{color, num, polyline, Timing};
+use super::motion_svg::{color, Timing};
 use super::numbers::{add, cross, scale};
 use super::picture::{Ink, Projection, P2};
 use super::place::text_size;
@@ -13,6 +13,8 @@ use std::fmt::Write;
 
 /// The radius of an angle's arc, as the still picture draws it.
 const ARC: f64 = 30.0;
+/// The arc's straight pieces: a sixth of a pixel from the true arc at most.
+const ARC_STEPS: u32 = 16;
 /// How far a dimension line stands off the points it measures, and its extension lines.
 const STANDOFF: f64 = 14.0;
 const EXTENSION: f64 = 18.0;
@@ -58,6 +60,33 @@ pub(super) fn floors(out: &mut String, motion: &Motion) {
     }
 }
 
+/// A number only the eye reads: to a tenth of a pixel, which keeps a long motion's file
+/// small.
+fn coarse(x: f64) -> String {
+    let text = format!("{x:.1}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.to_string()
+    }
+}
+
+/// Path data through `points`, to a tenth of a pixel.
+fn polyline(points: &[P2]) -> String {
+    let mut d = String::new();
+    for (i, [x, y]) in points.iter().enumerate() {
+        let _ = write!(
+            d,
+            "{}{} {}",
+            if i == 0 { "M" } else { "L" },
+            coarse(*x),
+            coarse(*y)
+        );
+    }
+    d
+}
+
 /// One mark as drawn at one frame, in the picture: its thin dashed lines, its line or
 /// arc, its arrowheads and its label's centre.
 struct Drawn {
@@ -95,9 +124,9 @@ fn drawn(p: &Projection, gauge: &Gauge, size: P2) -> Drawn {
             let r = ARC / pixels(p);
             let v = cross(axis, from);
             let c = p.point(center);
-            let line: Vec<P2> = (0..=24)
+            let line: Vec<P2> = (0..=ARC_STEPS)
                 .map(|k| {
-                    let t = angle * f64::from(k) / 24.0;
+                    let t = angle * f64::from(k) / f64::from(ARC_STEPS);
                     p.point(add(
                         center,
                         scale(add(scale(from, t.cos()), scale(v, t.sin())), r),
@@ -220,13 +249,13 @@ pub(super) fn gauges(out: &mut String, motion: &Motion, timing: &Timing) {
             timing.animate(out, "d", values);
             out.push_str("</path>\n");
         }
-        let xs: Vec<String> = frames.iter().map(|d| num(d.label[0])).collect();
-        let ys: Vec<String> = frames.iter().map(|d| num(d.label[1] + 4.5)).collect();
+        let xs: Vec<String> = frames.iter().map(|d| coarse(d.label[0])).collect();
+        let ys: Vec<String> = frames.iter().map(|d| coarse(d.label[1] + 4.5)).collect();
         let _ = writeln!(
             out,
             "<text class=\"label\" x=\"{}\" y=\"{}\" fill=\"{}\" stroke=\"none\">{}",
-            num(first.label[0]),
-            num(first.label[1] + 4.5),
+            coarse(first.label[0]),
+            coarse(first.label[1] + 4.5),
             color(Ink::Black),
             super::svg::label_spans(label)
         );
@@ -272,7 +301,7 @@ mod tests {
         assert!(
             p2norm([end[0] - 200.0, end[1] - 200.0]) > p2norm([tip[0] - 200.0, tip[1] - 200.0])
         );
-        assert_eq!(d.line.len(), 25);
+        assert_eq!(d.line.len(), ARC_STEPS as usize + 1);
     }
 
     #[test]

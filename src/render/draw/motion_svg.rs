@@ -9,7 +9,7 @@ use crate::render::escape::html as xml;
 use std::fmt::Write;
 
 /// Three decimals, no negative zero, no trailing zeros.
-pub(super) fn num(x: f64) -> String {
+fn num(x: f64) -> String {
     let text = format!("{x:.3}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" {
@@ -214,7 +214,7 @@ fn ground(out: &mut String, motion: &Motion) {
     out.push_str("</g>\n");
 }
 
-pub(super) fn polyline(points: &[P2]) -> String {
+fn polyline(points: &[P2]) -> String {
     let mut d = String::new();
     for (i, [x, y]) in points.iter().enumerate() {
         let _ = write!(
