@@ -267,17 +267,7 @@ pub(super) fn gauges(out: &mut String, motion: &Motion, timing: &Timing) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::numbers::P3;
     use super::*;
-
-    /// A point of `N` on an angle's arc `r` metres from its centre.
-    fn on_arc(center: P3, from: P3, axis: P3, t: f64, r: f64) -> P3 {
-        let v = cross(axis, from);
-        add(
-            center,
-            scale(add(scale(from, t.cos()), scale(v, t.sin())), r),
-        )
-    }
 
     #[test]
     fn an_arc_ends_where_the_angle_has_turned() {
@@ -286,22 +276,28 @@ mod tests {
             a: [[100.0, 0.0, 0.0], [0.0, -100.0, 0.0]],
             b: [200.0, 200.0],
         };
-        let gauge = Gauge::Angle {
+        let gauge = |angle: f64| Gauge::Angle {
             center: [0.0; 3],
             from: [1.0, 0.0, 0.0],
             axis: [0.0, 0.0, 1.0],
-            angle: 0.7,
+            angle,
             reference: 0.3,
         };
-        let d = drawn(&p, &gauge, [10.0, 16.0]);
-        let end = p.point(on_arc([0.0; 3], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 0.7, 0.3));
+        let d = drawn(&p, &gauge(0.7), [10.0, 16.0]);
         let tip = d.line[d.line.len() - 1];
         let turned = (-(tip[1] - 200.0)).atan2(tip[0] - 200.0);
         assert!((turned - 0.7).abs() < 1e-9, "{turned}");
-        assert!(
-            p2norm([end[0] - 200.0, end[1] - 200.0]) > p2norm([tip[0] - 200.0, tip[1] - 200.0])
-        );
+        assert!((p2norm([tip[0] - 200.0, tip[1] - 200.0]) - ARC).abs() < 1e-9);
         assert_eq!(d.line.len(), ARC_STEPS as usize + 1);
+        // A crank past a whole turn shows its last turn, ending at the same place.
+        let again = drawn(&p, &gauge(0.7 + std::f64::consts::TAU), [10.0, 16.0]);
+        let other = again.line[again.line.len() - 1];
+        assert!(p2norm([other[0] - tip[0], other[1] - tip[1]]) < 1e-9);
+        let (m, n) = (
+            again.line[ARC_STEPS as usize / 2],
+            d.line[ARC_STEPS as usize / 2],
+        );
+        assert!(p2norm([m[0] - n[0], m[1] - n[1]]) < 1e-9, "{m:?} {n:?}");
     }
 
     #[test]
