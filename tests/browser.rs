@@ -115,21 +115,9 @@ fn double_pendulum_points(q1: f64, q2: f64) -> Vec<(&'static str, [f64; 3])> {
     ]
 }
 
-#[test]
-fn motion_svg_draws_the_simulated_double_pendulum_at_two_instants() {
-    if !ready("motion") {
-        return;
-    }
-    let dir = scratch("motion");
-    let file = problem("double-pendulum-rods");
-    mbd(&[
-        "draw".as_ref(),
-        file.as_os_str(),
-        "--animate".as_ref(),
-        "-o".as_ref(),
-        dir.as_os_str(),
-    ]);
-    // The simulation's own table at its 0.01 s step, independent of the frames.
+/// The simulation's own table (`simulate --format json`, at its output step, independent of
+/// the motion's frames) at each of `instants`: the coordinates by name.
+fn simulated(file: &Path, instants: &[f64]) -> Vec<std::collections::HashMap<String, f64>> {
     let table: serde_json::Value = serde_json::from_str(&mbd(&[
         "simulate".as_ref(),
         file.as_os_str(),
@@ -138,24 +126,56 @@ fn motion_svg_draws_the_simulated_double_pendulum_at_two_instants() {
         "--no-checks".as_ref(),
     ]))
     .expect("simulate's JSON");
-    let columns: Vec<&str> = table["columns"]
+    let columns: Vec<String> = table["columns"]
         .as_array()
         .expect("columns")
         .iter()
-        .map(|c| c.as_str().unwrap_or(""))
+        .map(|c| c.as_str().unwrap_or("").to_string())
         .collect();
-    let column = |name: &str| columns.iter().position(|c| *c == name).expect(name);
     let rows = table["rows"].as_array().expect("rows");
-    let instants: Vec<serde_json::Value> = [0.8, 2.4]
+    instants
         .iter()
-        .map(|&t: &f64| {
+        .map(|&t| {
             let row = rows
                 .iter()
                 .find(|r| (r[0].as_f64().unwrap_or(f64::NAN) - t).abs() < 1e-9)
                 .expect("a row at the instant");
-            let q = |name: &str| row[column(name)].as_f64().expect("number");
+            columns
+                .iter()
+                .enumerate()
+                .filter_map(|(k, c)| Some((c.clone(), row[k].as_f64()?)))
+                .collect()
+        })
+        .collect()
+}
+
+/// `draw --animate` of `problem` into a scratch directory: the directory.
+fn animated(name: &str, problem: &Path) -> PathBuf {
+    let dir = scratch(name);
+    mbd(&[
+        "draw".as_ref(),
+        problem.as_os_str(),
+        "--animate".as_ref(),
+        "-o".as_ref(),
+        dir.as_os_str(),
+    ]);
+    dir
+}
+
+#[test]
+fn motion_svg_draws_the_simulated_double_pendulum_at_two_instants() {
+    if !ready("motion") {
+        return;
+    }
+    let file = problem("double-pendulum-rods");
+    let dir = animated("motion", &file);
+    let times = [0.8, 2.4];
+    let instants: Vec<serde_json::Value> = simulated(&file, &times)
+        .iter()
+        .zip(times)
+        .map(|(q, t)| {
             let points: serde_json::Map<String, serde_json::Value> =
-                double_pendulum_points(q("q1"), q("q2"))
+                double_pendulum_points(q["q1"], q["q2"])
                     .into_iter()
                     .map(|(id, p)| (id.to_string(), serde_json::json!(p)))
                     .collect();
@@ -170,6 +190,86 @@ fn motion_svg_draws_the_simulated_double_pendulum_at_two_instants() {
     .expect("write");
     node(&[
         "motion".as_ref(),
+        dir.join("motion.svg").as_os_str(),
+        expected.as_os_str(),
+    ]);
+}
+
+/// The double pendulum's angle marks follow the simulation: at two instants the arc of
+/// q1 at O runs from straight down (rod A at q1 = 0) to along rod A, and that of q2 at P
+/// from along rod A to along rod B, each sweeping the simulated coordinate; the labels move
+/// with them.
+#[test]
+fn motion_svg_turns_the_angle_marks_with_the_coordinates() {
+    if !ready("gauges") {
+        return;
+    }
+    let file = problem("double-pendulum-rods");
+    let dir = animated("gauges", &file);
+    let times = [0.8, 1.6];
+    let along = |angle: f64| [angle.sin(), -angle.cos(), 0.0];
+    let instants: Vec<serde_json::Value> = simulated(&file, &times)
+        .iter()
+        .zip(times)
+        .map(|(q, t)| {
+            let (q1, q2) = (q["q1"], q["q2"]);
+            let p = [0.6 * q1.sin(), -0.6 * q1.cos(), 0.0];
+            serde_json::json!({ "t": t, "gauges": {
+                "q_1": { "q": q1, "center": [0.0, 0.0, 0.0], "start": along(0.0), "end": along(q1) },
+                "q_2": { "q": q2, "center": p, "start": along(q1), "end": along(q1 + q2) },
+            }})
+        })
+        .collect();
+    let expected = dir.join("expected.json");
+    std::fs::write(
+        &expected,
+        serde_json::json!({ "instants": instants }).to_string(),
+    )
+    .expect("write");
+    node(&[
+        "gauges".as_ref(),
+        dir.join("motion.svg").as_os_str(),
+        expected.as_os_str(),
+    ]);
+}
+
+/// The rolling coin's rim is drawn each frame as the ellipse its disc projects to: its
+/// long half-axis the radius, its short one the radius times the axle's component towards
+/// the reader, the axle D.y = (−sin ψ cos θ, cos ψ cos θ, sin θ) by hand from the simulated
+/// angles (body-fixed z, x, y); it changes as the coin leans and turns.
+#[test]
+fn motion_svg_draws_a_3d_disc_as_its_changing_projection() {
+    if !ready("disc") {
+        return;
+    }
+    let file = problem("rolling-coin");
+    let dir = animated("disc", &file);
+    // Instants on frames (every 0.04 s), where no in-between blends the transforms.
+    let times = [0.48, 2.0];
+    let instants: Vec<serde_json::Value> = simulated(&file, &times)
+        .iter()
+        .zip(times)
+        .map(|(q, t)| {
+            let (psi, theta) = (q["psi"], q["theta"]);
+            let axle = [
+                -psi.sin() * theta.cos(),
+                psi.cos() * theta.cos(),
+                theta.sin(),
+            ];
+            serde_json::json!({ "t": t, "normal": axle })
+        })
+        .collect();
+    let coin: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).expect("the problem")).expect("JSON");
+    let radius = coin["constants"]["R"]["value"].as_f64().expect("R");
+    let expected = dir.join("expected.json");
+    std::fs::write(
+        &expected,
+        serde_json::json!({ "body": "D", "radius": radius, "instants": instants }).to_string(),
+    )
+    .expect("write");
+    node(&[
+        "disc".as_ref(),
         dir.join("motion.svg").as_os_str(),
         expected.as_os_str(),
     ]);

@@ -4,6 +4,8 @@
 //   serve BIN PROBLEM          start `BIN serve PROBLEM --port 0`, edit the file, watch the page
 //   rebuilding BIN PROBLEM C   edit constant C of a problem slow to solve: "rebuilding…" shows
 //   motion SVG EXPECTED.json   compare the drawn points at instants with EXPECTED's
+//   gauges SVG EXPECTED.json   compare the coordinates' arcs at instants with EXPECTED's
+//   disc SVG EXPECTED.json     compare a 3D disc's drawn ellipse at instants with EXPECTED's
 //   handout HTML               the handout's motion plays; nothing is loaded from outside
 'use strict';
 const { chromium } = require('playwright-core');
@@ -219,6 +221,122 @@ async function motion(svgPath, expectedPath) {
   await b.close();
 }
 
+// The animated picture at `svgPath` in a page, and its data-projection as a function of a
+// point of N, its scale (pixels per metre) and the direction it looks along.
+async function opened(svgPath) {
+  const b = await browser();
+  const page = await b.newPage({ viewport: { width: 1200, height: 1000 } });
+  await page.goto('file://' + svgPath);
+  const m = await page.evaluate(() => document.querySelector('svg').getAttribute('data-projection').split(' ').map(Number));
+  const project = ([x, y, z]) => [m[0] * x + m[1] * y + m[2] * z + m[6], m[3] * x + m[4] * y + m[5] * z + m[7]];
+  const scale = Math.hypot(m[0], m[1], m[2]);
+  const r = [m[0], m[1], m[2]].map((v) => v / scale), s = [m[3], m[4], m[5]].map((v) => v / scale);
+  // The page's x and y (down) rows and the direction out of the page towards the reader.
+  const toward = [r[1] * s[2] - r[2] * s[1], r[2] * s[0] - r[0] * s[2], r[0] * s[1] - r[1] * s[0]];
+  return { b, page, m, project, scale, toward };
+}
+
+// The angle (radians, -pi..pi) from page direction u to page direction v, both of a planar
+// picture, as turned in N (the page's y points down, so the turn is read mirrored).
+function turnInN(u, v) {
+  return Math.atan2(-(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1]);
+}
+
+async function gauges(svgPath, expectedPath) {
+  // EXPECTED: { "instants": [ { "t": 0.8, "gauges": { "q_1": { "q": 0.3, "center": [x, y, z],
+  //   "start": [dx, dy, dz], "end": [dx, dy, dz] } } } ] }: each angle's simulated value, its
+  //   joint and the directions in N of its child's line at zero and now, by hand.
+  const expected = JSON.parse(fs.readFileSync(expectedPath, 'utf8'));
+  const { b, page, project } = await opened(svgPath);
+  const labels = {};
+  for (const instant of expected.instants) {
+    const drawn = await page.evaluate(([names, t]) => {
+      const svg = document.querySelector('svg');
+      svg.pauseAnimations();
+      svg.setCurrentTime(t);
+      const out = {};
+      for (const name of names) {
+        const g = [...document.querySelectorAll('g.gauge[data-kind="angle"]')].find((e) => e.getAttribute('data-label') === name);
+        if (!g) continue;
+        const arc = g.querySelector('path.arc');
+        const at = (p) => { const q = p.matrixTransform(svg.getScreenCTM().inverse().multiply(arc.getScreenCTM())); return [q.x, q.y]; };
+        const text = g.querySelector('text').getBBox();
+        out[name] = {
+          start: at(arc.getPointAtLength(0)),
+          end: at(arc.getPointAtLength(arc.getTotalLength())),
+          label: [text.x + text.width / 2, text.y + text.height / 2],
+        };
+      }
+      return out;
+    }, [Object.keys(instant.gauges), instant.t]);
+    for (const [name, want] of Object.entries(instant.gauges)) {
+      const got = drawn[name];
+      check(got !== undefined, `an arc labelled ${name}`);
+      if (!got) continue;
+      const c = project(want.center);
+      const onPage = (d) => { const q = project(want.center.map((x, k) => x + d[k])); return [q[0] - c[0], q[1] - c[1]]; };
+      const drawnStart = [got.start[0] - c[0], got.start[1] - c[1]];
+      const drawnEnd = [got.end[0] - c[0], got.end[1] - c[1]];
+      const startOff = Math.abs(turnInN(onPage(want.start), drawnStart));
+      const endOff = Math.abs(turnInN(onPage(want.end), drawnEnd));
+      check(startOff < 0.02 && endOff < 0.02,
+        `${name} at t = ${instant.t}: the arc starts along the line at zero (off ${(startOff * 180 / Math.PI).toFixed(2)}°) and ends along the line now (off ${(endOff * 180 / Math.PI).toFixed(2)}°)`);
+      // The sweep against the simulated coordinate itself, both taken round to (-pi, pi].
+      const sweep = turnInN(drawnStart, drawnEnd);
+      const q = Math.atan2(Math.sin(want.q), Math.cos(want.q));
+      check(Math.abs(sweep - q) < 0.02, `${name} at t = ${instant.t}: the arc sweeps ${sweep.toFixed(3)} rad, the simulated coordinate is ${want.q.toFixed(3)} rad`);
+      (labels[name] = labels[name] || []).push(got.label);
+    }
+  }
+  for (const [name, at] of Object.entries(labels)) {
+    const moved = Math.hypot(at[0][0] - at[at.length - 1][0], at[0][1] - at[at.length - 1][1]);
+    check(moved > 2, `${name}'s label follows its arc (moved ${moved.toFixed(1)} px)`);
+  }
+  await b.close();
+}
+
+async function disc(svgPath, expectedPath) {
+  // EXPECTED: { "body": "D", "radius": R, "instants": [ { "t": 0.5, "normal": [x, y, z] } ] }:
+  // the disc's axle in N from the simulation by hand. A parallel projection draws the rim
+  // as an ellipse whose long half-axis is the radius and whose short one is the radius
+  // times the axle's component towards the reader.
+  const expected = JSON.parse(fs.readFileSync(expectedPath, 'utf8'));
+  const { b, page, scale, toward } = await opened(svgPath);
+  const drawn = [];
+  for (const instant of expected.instants) {
+    const e = await page.evaluate(([body, t]) => {
+      const svg = document.querySelector('svg');
+      svg.pauseAnimations();
+      svg.setCurrentTime(t);
+      const rim = document.querySelector(`#body-${body} circle:not(.ball)`);
+      if (!rim) return null;
+      const m = svg.getScreenCTM().inverse().multiply(rim.getScreenCTM());
+      const r = rim.r.baseVal.value;
+      // The half-axes of the image of a circle under [[a, c], [b, d]]: its singular values.
+      const [a, bb, c, d] = [m.a, m.b, m.c, m.d];
+      const p = a * a + bb * bb + c * c + d * d, q = Math.abs(a * d - bb * c);
+      const s1 = Math.sqrt((p + Math.sqrt(Math.max(p * p - 4 * q * q, 0))) / 2);
+      const s2 = q / s1;
+      const [u, v] = [a * a + c * c - (bb * bb + d * d), 2 * (a * bb + c * d)];
+      return { major: r * s1, minor: r * s2, turn: 0.5 * Math.atan2(v, u) };
+    }, [expected.body, instant.t]);
+    check(e !== null, `body-${expected.body} has a rim at t = ${instant.t}`);
+    if (!e) continue;
+    const n = instant.normal;
+    const want = { major: expected.radius * scale, minor: expected.radius * scale * Math.abs(n[0] * toward[0] + n[1] * toward[1] + n[2] * toward[2]) };
+    const tolerance = 0.01 * want.major + 0.3;
+    check(Math.abs(e.major - want.major) < tolerance && Math.abs(e.minor - want.minor) < tolerance,
+      `body-${expected.body} at t = ${instant.t}: rim drawn ${e.major.toFixed(1)} × ${e.minor.toFixed(1)} px, expected ${want.major.toFixed(1)} × ${want.minor.toFixed(1)}`);
+    drawn.push(e);
+  }
+  if (drawn.length >= 2) {
+    const [p, q] = [drawn[0], drawn[drawn.length - 1]];
+    const changed = Math.abs(p.minor - q.minor) > 2 || Math.abs(Math.sin(p.turn - q.turn)) > 0.05;
+    check(changed, `the ellipse changes between the instants (${p.minor.toFixed(1)} px at ${(p.turn * 180 / Math.PI).toFixed(0)}°, then ${q.minor.toFixed(1)} px at ${(q.turn * 180 / Math.PI).toFixed(0)}°)`);
+  }
+  await b.close();
+}
+
 async function handout(htmlPath) {
   const b = await browser();
   const page = await b.newPage();
@@ -264,6 +382,8 @@ async function handout(htmlPath) {
     if (mode === 'serve') await serve(...args);
     else if (mode === 'rebuilding') await rebuilding(...args);
     else if (mode === 'motion') await motion(...args);
+    else if (mode === 'gauges') await gauges(...args);
+    else if (mode === 'disc') await disc(...args);
     else if (mode === 'handout') await handout(...args);
     else failures.push(`unknown mode ${mode}`);
   } catch (e) {

@@ -30,6 +30,7 @@ fn shape_points(shape: &Shape) -> Vec<P3> {
             radius,
             ..
         } => super::numbers::circle(*center, *normal, *radius),
+        Shape::Floor { corners, .. } => corners.to_vec(),
         Shape::Surface { at, along, .. } => vec![add(*at, *along), add(*at, scale(*along, -1.0))],
         Shape::Bar(p) | Shape::Polygon(p) | Shape::Outline(p) => p.clone(),
         Shape::Dot(p) | Shape::Pin(p) | Shape::Ball(p) | Shape::Weld(p) => vec![*p],

@@ -42,6 +42,36 @@ impl Painter {
         }
     }
 
+    /// A patch of floor through `corners` (in order): lightly filled, its edge thin, and
+    /// the two edges lowest on the page hatched outwards, as a cut through the ground is;
+    /// the patch's middle stays free for the bodies on it and their labels.
+    pub(super) fn floor(&mut self, corners: &[P3; 4], up: P3) {
+        let _ = up;
+        let points: Vec<P2> = corners.iter().map(|p| self.at(*p)).collect();
+        let middle = p2scale(points.iter().fold([0.0, 0.0], |m, p| p2add(m, *p)), 0.25);
+        self.stroke(points.clone(), 1.0, Ink::Grey, Some(Ink::Floor), true);
+        let mut edges: Vec<(P2, P2)> = (0..4).map(|k| (points[k], points[(k + 1) % 4])).collect();
+        // The lowest two on the page: the near edges seen from above.
+        edges.sort_by(|a, b| (b.0[1] + b.1[1]).total_cmp(&(a.0[1] + a.1[1])));
+        for &(a, b) in &edges[..2] {
+            let d = [b[0] - a[0], b[1] - a[1]];
+            let (Some(t), length) = (p2unit(d), p2norm(d)) else {
+                continue;
+            };
+            let mut n = [-t[1], t[0]];
+            let mid = p2scale(p2add(a, b), 0.5);
+            if (mid[0] - middle[0]) * n[0] + (mid[1] - middle[1]) * n[1] < 0.0 {
+                n = p2scale(n, -1.0);
+            }
+            let count = (length / 7.0).floor().max(1.0) as usize;
+            for k in 0..=count {
+                let s = p2add(a, p2scale(t, k as f64 * length / count as f64));
+                let e = p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -4.0)));
+                self.hatch_tick(s, e);
+            }
+        }
+    }
+
     /// One thin tick of a hatching, from `s` to `e`, which labels keep clear of.
     fn hatch_tick(&mut self, s: P2, e: P2) {
         self.obstacles.segment(s, e);

@@ -26,8 +26,9 @@ pub(super) struct Painter {
     scale: f64,
     /// Put before a body's group id: empty in the free body, `kinetic-` beside it.
     body_prefix: &'static str,
-    /// Labels wait until every line of their panel is drawn, so that none crosses them.
-    pending: Vec<(P2, f64, Label, Ink)>,
+    /// Labels wait until every line of their panel is drawn, so that none crosses them;
+    /// an arrow's label knows its arrow (an index into the picture's arrows).
+    pending: Vec<(P2, f64, Label, Ink, Option<usize>)>,
 }
 
 impl Painter {
@@ -77,17 +78,63 @@ impl Painter {
     }
 
     fn label(&mut self, anchor: P2, toward: f64, label: &Label, ink: Ink) {
-        self.pending.push((anchor, toward, label.clone(), ink));
+        self.pending
+            .push((anchor, toward, label.clone(), ink, None));
     }
 
-    /// Places the waiting labels, in the order they came, around everything drawn.
-    fn place_labels(&mut self) {
-        for (anchor, toward, label, ink) in std::mem::take(&mut self.pending) {
-            let at = self
-                .obstacles
-                .place(anchor, toward, text_size(&label.plain));
+    /// Places the waiting labels, in the order they came, around everything drawn: an
+    /// arrow's label beside its tip, or beside the tip pushed out along the arrow's line
+    /// when the room there is taken; any label else at the nearest free spot.
+    fn place_labels(&mut self, arrows: &mut [DrawnArrow]) {
+        for (anchor, toward, label, ink, arrow) in std::mem::take(&mut self.pending) {
+            let size = text_size(&label.plain);
+            let pushed = arrow
+                .and_then(|k| arrows.get_mut(k))
+                .and_then(|a| self.push_apart(a, toward, size));
+            let at = match pushed {
+                Some(at) => at,
+                None => self.obstacles.place(anchor, toward, size),
+            };
             self.texts.push(Item::Text { at, label, ink });
         }
+    }
+
+    /// The place of a straight arrow's label of `size` close beside its tip; when there is
+    /// none, the arrow is made longer along its own line, a step at a time, until there is
+    /// (its new end crossing no label). `None` when neither serves.
+    fn push_apart(&mut self, arrow: &mut DrawnArrow, toward: f64, size: P2) -> Option<P2> {
+        const NEAR: [f64; 3] = [4.0, 12.0, 22.0];
+        if arrow.arc.is_some() {
+            return None;
+        }
+        if let Some(free) = self.obstacles.free_near(arrow.head, toward, size, &NEAR) {
+            return Some(self.obstacles.take(free));
+        }
+        let u = p2unit([arrow.head[0] - arrow.tail[0], arrow.head[1] - arrow.tail[1]])?;
+        for step in [14.0, 28.0, 42.0] {
+            let tip = p2add(arrow.head, p2scale(u, step));
+            if self.obstacles.crosses_label(arrow.head, tip) {
+                return None;
+            }
+            // The longer arrow first, so that its label keeps clear of it too.
+            let mut heads = vec![head(tip, u)];
+            if arrow.heads.len() > 1 {
+                heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
+            }
+            let mut longer = self.obstacles.clone();
+            longer.segment(arrow.head, tip);
+            for h in &heads {
+                longer.polyline(h, true);
+            }
+            let Some(free) = longer.free_near(tip, toward, size, &NEAR[..2]) else {
+                continue;
+            };
+            self.obstacles = longer;
+            arrow.head = tip;
+            arrow.heads = heads;
+            return Some(self.obstacles.take(free));
+        }
+        None
     }
 
     /// A caption at a fixed place, which later labels keep clear of.
@@ -169,6 +216,7 @@ impl Painter {
                 up,
                 fixed,
             } => self.surface(*at, *along, *up, *fixed),
+            Shape::Floor { corners, up } => self.floor(corners, *up),
             Shape::Track {
                 center,
                 normal,
@@ -317,8 +365,9 @@ impl Painter {
         }
     }
 
-    /// An arrow of fixed size at its point; `stack` counts arrows already drawn there.
-    fn arrow(&mut self, arrow: &Arrow, planar: bool, stack: usize) -> DrawnArrow {
+    /// An arrow of fixed size at its point; `stack` counts arrows already drawn there along
+    /// its line; `index` is its place among the picture's arrows.
+    fn arrow(&mut self, arrow: &Arrow, planar: bool, stack: usize, index: usize) -> DrawnArrow {
         let ink = Ink::of(arrow.kind);
         let at = self.at(arrow.at);
         let d = self.projection.direction(arrow.direction);
@@ -383,8 +432,17 @@ impl Painter {
         for h in &drawn.heads {
             self.obstacles.polyline(h, true);
         }
-        self.label(tip, u[1].atan2(u[0]), &arrow.label, ink);
+        self.pending
+            .push((tip, u[1].atan2(u[0]), arrow.label.clone(), ink, Some(index)));
         drawn
+    }
+
+    /// The direction an arrow points on the page (a 2D couple, an arc: none).
+    fn page_direction(&self, arrow: &Arrow, planar: bool) -> Option<P2> {
+        if arrow.couple && planar {
+            return None;
+        }
+        Some(p2unit(self.projection.direction(arrow.direction)).unwrap_or([0.0, -1.0]))
     }
 }
 
@@ -432,10 +490,12 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         });
     }
     let mut arrows = Vec::new();
-    let mut counts: Vec<(String, bool, usize)> = Vec::new();
+    let mut drawn_at = Vec::new();
     for arrow in &scene.arrows {
-        let stack = stack_of(&mut counts, arrow, scene.planar);
-        arrows.push(painter.arrow(arrow, scene.planar, stack));
+        let u = painter.page_direction(arrow, scene.planar);
+        let stack = stack_of(&mut drawn_at, &arrow.at_id, u);
+        let index = arrows.len();
+        arrows.push(painter.arrow(arrow, scene.planar, stack, index));
     }
     for shape in scene
         .shapes
@@ -459,7 +519,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         painter.fixed_text([x, TITLE + 8.0], Label::text(caption), Ink::Grey);
         painter.obstacles.reserve(equals, text_size("="));
     }
-    painter.place_labels();
+    painter.place_labels(&mut arrows);
     if let Some((shapes, inertia)) = &scene.kinetic {
         painter.shift = [panel_width, 0.0];
         painter.obstacles = Obstacles::within([panel_width, TITLE], [width, height - legend]);
@@ -473,13 +533,15 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
             let at = painter.at(m.at);
             painter.circle(at, 4.5, Ink::Black, Ink::White);
         }
-        let mut counts = Vec::new();
+        let mut drawn_at = Vec::new();
         for arrow in inertia {
-            let stack = stack_of(&mut counts, arrow, scene.planar);
-            arrows.push(painter.arrow(arrow, scene.planar, stack));
+            let u = painter.page_direction(arrow, scene.planar);
+            let stack = stack_of(&mut drawn_at, &arrow.at_id, u);
+            let index = arrows.len();
+            arrows.push(painter.arrow(arrow, scene.planar, stack, index));
         }
         painter.fixed_text(equals, Label::from_tex("="), Ink::Black);
-        painter.place_labels();
+        painter.place_labels(&mut arrows);
     }
     let mut texts = vec![Item::Text {
         at: [width / 2.0, 16.0],

@@ -10,6 +10,8 @@ pub mod fit;
 mod ground;
 pub mod layout;
 pub mod motion;
+mod motion_bodies;
+mod motion_marks;
 pub mod motion_svg;
 pub mod numbers;
 pub mod picture;

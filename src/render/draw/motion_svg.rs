@@ -1,15 +1,14 @@
 //! `motion.svg`: a [`Motion`] written as SVG animated with SMIL (`<animate>`,
 //! `<animateTransform>`), looping, no script.
 
-use super::motion::{Look, Motion, Placed, TITLE_STRIP};
-use super::numbers::P3;
-use super::picture::{Ink, Projection, P2};
+use super::motion::{Motion, Placed, TITLE_STRIP};
+use super::picture::{Ink, P2};
 use super::strokes::in_lane;
 use crate::render::escape::html as xml;
 use std::fmt::Write;
 
 /// Three decimals, no negative zero, no trailing zeros.
-fn num(x: f64) -> String {
+pub(super) fn num(x: f64) -> String {
     let text = format!("{x:.3}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" {
@@ -20,7 +19,7 @@ fn num(x: f64) -> String {
 }
 
 /// Six significant digits, for the sheets' scales (metres to pixels).
-fn fine(x: f64) -> String {
+pub(super) fn fine(x: f64) -> String {
     let text = format!("{x:.6e}");
     match text.parse::<f64>() {
         Ok(v) if v != 0.0 => format!("{v}"),
@@ -28,54 +27,13 @@ fn fine(x: f64) -> String {
     }
 }
 
-fn color(ink: Ink) -> String {
+pub(super) fn color(ink: Ink) -> String {
     let (r, g, b) = ink.rgb();
     format!("#{r:02x}{g:02x}{b:02x}")
 }
 
-/// The SVG matrix `[a, b, c, d, e, f]` (x' = a u + c v + e, y' = b u + d v + f) of a sheet
-/// at origin `o` with unit vectors `e1`, `e2`, seen through `p`.
-fn sheet_matrix(p: &Projection, [o, e1, e2]: &[P3; 3]) -> [f64; 6] {
-    let [a, b] = p.direction(*e1);
-    let [c, d] = p.direction(*e2);
-    let [e, f] = p.point(*o);
-    [a, b, c, d, e, f]
-}
-
-/// An affine map as translate · rotate · skewX · scale: `[e, f, θ°, φ°, sx, sy]`.
-pub fn decompose([a, b, c, d, e, f]: [f64; 6]) -> [f64; 6] {
-    let sx = a.hypot(b);
-    let theta = b.atan2(a);
-    let (sin, cos) = theta.sin_cos();
-    // R(−θ) M is upper triangular: [[sx, m12], [0, m22]] = skewX(φ) · scale(sx, m22).
-    let m12 = cos * c + sin * d;
-    let mut sy = -sin * c + cos * d;
-    // A sheet seen edge on: keep the skew finite (the sheet is a line either way).
-    let least = 1e-4 * sx.max(m12.abs());
-    if sy.abs() < least {
-        sy = if sy < 0.0 { -least } else { least };
-    }
-    let skew = (m12 / sy).atan();
-    [e, f, theta.to_degrees(), skew.to_degrees(), sx, sy]
-}
-
-/// The composition of what [`decompose`] gives, for checking it.
-pub fn compose([e, f, theta, skew, sx, sy]: [f64; 6]) -> [f64; 6] {
-    let (sin, cos) = theta.to_radians().sin_cos();
-    let k = skew.to_radians().tan();
-    // R · K · S with K = [[1, k], [0, 1]], S = diag(sx, sy).
-    [
-        cos * sx,
-        sin * sx,
-        (cos * k - sin) * sy,
-        (sin * k + cos) * sy,
-        e,
-        f,
-    ]
-}
-
 /// The animation's common attributes: its length, its key times, looping.
-struct Timing {
+pub(super) struct Timing {
     attributes: String,
 }
 
@@ -108,7 +66,7 @@ impl Timing {
         }
     }
 
-    fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
+    pub(super) fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
         let _ = writeln!(
             out,
             "<animate attributeName=\"{attribute}\" values=\"{}\" {}/>",
@@ -117,7 +75,7 @@ impl Timing {
         );
     }
 
-    fn transform(&self, out: &mut String, kind: &str, values: &[String]) {
+    pub(super) fn transform(&self, out: &mut String, kind: &str, values: &[String]) {
         let _ = writeln!(
             out,
             "<animateTransform attributeName=\"transform\" type=\"{kind}\" additive=\"sum\" values=\"{}\" {}/>",
@@ -143,6 +101,8 @@ pub fn export(motion: &Motion) -> String {
         h = num(height),
     );
     let _ = writeln!(out, "<title>Motion of {}</title>", xml(&motion.title));
+    out.push_str(super::svg::SCRIPT_STYLE);
+    out.push('\n');
     let _ = writeln!(
         out,
         "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#fff\"/>",
@@ -157,13 +117,14 @@ pub fn export(motion: &Motion) -> String {
         xml(&motion.title)
     );
     let timing = Timing::new(&motion.frames);
+    super::motion_marks::floors(&mut out, motion);
     ground(&mut out, motion);
-    for (k, sheet) in motion.sheets.iter().enumerate() {
-        body(&mut out, motion, &timing, k);
-        let _ = sheet;
+    for k in 0..motion.bodies.len() {
+        super::motion_bodies::body(&mut out, motion, &timing, k);
     }
     springs(&mut out, motion, &timing);
     dampers(&mut out, motion, &timing);
+    super::motion_marks::gauges(&mut out, motion, &timing);
     points(&mut out, motion, &timing);
     out.push_str("</svg>\n");
     out
@@ -177,23 +138,28 @@ fn ground(out: &mut String, motion: &Motion) {
         out,
         "<g class=\"ground\" fill=\"none\" stroke=\"{grey}\" stroke-width=\"1.2\">"
     );
-    for &i in &motion.grounded {
+    for &(i, toward) in &motion.grounded {
         let Some(first) = motion.frames.first() else {
             break;
         };
-        let [x, y] = p.point(first.points[i]);
-        let _ = writeln!(
-            out,
-            "<path d=\"M{} {}L{} {}L{} {}Z M{} {}h24\"/>",
-            num(x),
-            num(y),
-            num(x - 8.0),
-            num(y + 14.0),
-            num(x + 8.0),
-            num(y + 14.0),
-            num(x - 12.0),
-            num(y + 14.0)
-        );
+        let c = p.point(first.points[i]);
+        // A triangle from the pin away from its body, on a hatched ground line.
+        let up = super::strokes::p2unit(p.direction(toward)).unwrap_or([0.0, -1.0]);
+        let across = [-up[1], up[0]];
+        let at = |back: f64, side: f64| {
+            [
+                c[0] - up[0] * back + across[0] * side,
+                c[1] - up[1] * back + across[1] * side,
+            ]
+        };
+        let mut d = polyline(&[c, at(14.0, 8.0), at(14.0, -8.0)]);
+        d.push('Z');
+        d.push_str(&polyline(&[at(14.0, -12.0), at(14.0, 12.0)]));
+        for k in 0..5 {
+            let side = -12.0 + 6.0 * f64::from(k);
+            d.push_str(&polyline(&[at(14.0, side), at(19.0, side - 4.0)]));
+        }
+        let _ = writeln!(out, "<path d=\"{d}\"/>");
     }
     for &i in &motion.rolling {
         let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
@@ -218,105 +184,6 @@ fn polyline(points: &[P2]) -> String {
         );
     }
     d
-}
-
-/// A body: its shape on its sheet (in metres), moved by four animated transforms.
-fn body(out: &mut String, motion: &Motion, timing: &Timing, k: usize) {
-    let sheet = &motion.sheets[k];
-    let p = &motion.projection;
-    let kind = match sheet.look {
-        Look::Disc(_) => "disc",
-        Look::Rods { .. } => "rod",
-        Look::Particle { .. } => "particle",
-    };
-    let _ = writeln!(
-        out,
-        "<g class=\"body\" id=\"body-{}\" data-shape=\"{kind}\">",
-        xml(&sheet.name)
-    );
-    let mut parts: [Vec<String>; 4] = Default::default();
-    let mut last_angle: Option<f64> = None;
-    for frame in &motion.frames {
-        let [e, f, mut theta, skew, sx, sy] = decompose(sheet_matrix(p, &frame.sheets[k]));
-        // The turn goes on continuously, never back round the long way.
-        if let Some(last) = last_angle {
-            theta += 360.0 * ((last - theta) / 360.0).round();
-        }
-        last_angle = Some(theta);
-        parts[0].push(format!("{} {}", num(e), num(f)));
-        parts[1].push(num(theta));
-        parts[2].push(num(skew));
-        parts[3].push(format!("{} {}", fine(sx), fine(sy)));
-    }
-    for (kind, values) in ["translate", "rotate", "skewX", "scale"].iter().zip(&parts) {
-        timing.transform(out, kind, values);
-    }
-    // Line widths and the ball stay in pixels whatever the sheet's scale.
-    let pixel = 1.0 / p.a[0].iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-12);
-    let ink = color(Ink::Black);
-    let fill = color(Ink::Body);
-    match &sheet.look {
-        Look::Disc(r) => {
-            let _ = writeln!(
-                out,
-                "<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"{fill}\" stroke=\"{ink}\" stroke-width=\"1.6\" vector-effect=\"non-scaling-stroke\"/>",
-                fine(*r)
-            );
-            // Two spokes, one darker: the wheel is seen to turn.
-            let _ = writeln!(
-                out,
-                "<path d=\"M{m} 0H{r}M0 {m}V{r}\" stroke=\"{}\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\"/>",
-                color(Ink::Grey),
-                m = fine(-r),
-                r = fine(*r)
-            );
-            let _ = writeln!(
-                out,
-                "<path d=\"M0 0H{}\" stroke=\"{}\" stroke-width=\"2.5\" vector-effect=\"non-scaling-stroke\"/>",
-                fine(*r),
-                color(Ink::Unknown)
-            );
-        }
-        Look::Rods { center, points } => {
-            let mut d = String::new();
-            for q in points {
-                let _ = write!(
-                    d,
-                    "M{} {}L{} {}",
-                    fine(center[0]),
-                    fine(center[1]),
-                    fine(q[0]),
-                    fine(q[1])
-                );
-            }
-            let _ = writeln!(
-                out,
-                "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"7\" vector-effect=\"non-scaling-stroke\"/>"
-            );
-            let _ = writeln!(
-                out,
-                "<path d=\"{d}\" fill=\"none\" stroke=\"{fill}\" stroke-width=\"4.5\" vector-effect=\"non-scaling-stroke\"/>"
-            );
-        }
-        Look::Particle { rods } => {
-            let mut d = String::new();
-            for q in rods {
-                let _ = write!(d, "M0 0L{} {}", fine(q[0]), fine(q[1]));
-            }
-            if !d.is_empty() {
-                let _ = writeln!(
-                    out,
-                    "<path d=\"{d}\" fill=\"none\" stroke=\"{ink}\" stroke-width=\"1.5\" vector-effect=\"non-scaling-stroke\"/>"
-                );
-            }
-            let _ = writeln!(
-                out,
-                "<circle cx=\"0\" cy=\"0\" r=\"{}\" fill=\"{ink}\"/>",
-                fine(7.0 * pixel)
-            );
-        }
-    }
-    out.push_str("</g>\n");
 }
 
 /// The springs as zig-zags that stretch with the motion.
@@ -513,21 +380,6 @@ fn points(out: &mut String, motion: &Motion, timing: &Timing) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn an_affine_map_is_translate_rotate_skew_scale() {
-        for m in [
-            [2.0, 0.5, -0.3, 1.5, 10.0, 20.0],
-            [0.0, 3.0, -3.0, 0.0, 1.0, 2.0],
-            [1.0, 0.0, 0.0, -1.0, 0.0, 0.0],
-            [-0.7, 0.2, 0.9, 0.4, -5.0, 3.0],
-        ] {
-            let back = compose(decompose(m));
-            for (x, y) in m.iter().zip(back) {
-                assert!((x - y).abs() < 1e-9, "{m:?} came back as {back:?}");
-            }
-        }
-    }
 
     /// The numbers of a path's commands, in order.
     fn numbers(path: &str) -> Vec<f64> {

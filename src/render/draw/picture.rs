@@ -111,6 +111,8 @@ pub enum Ink {
     Inertia,
     /// The paper.
     White,
+    /// A floor's patch.
+    Floor,
 }
 
 impl Ink {
@@ -125,6 +127,7 @@ impl Ink {
             Ink::Weight => (46, 125, 50),
             Ink::Inertia => (123, 31, 162),
             Ink::White => (255, 255, 255),
+            Ink::Floor => (238, 238, 238),
         }
     }
 

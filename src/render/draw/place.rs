@@ -136,24 +136,55 @@ impl Obstacles {
         cost
     }
 
+    /// The boxes of half size `half` around `anchor`, `gap` clear of it, turning away from
+    /// the direction `toward` (radians, picture coordinates) both ways in eighths of a turn.
+    fn around(anchor: P2, toward: f64, half: P2, gap: f64) -> impl Iterator<Item = Box2> {
+        const TURNS: [f64; 16] = [
+            0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, -2.0, 2.5, -2.5, 3.0, -3.0, 3.5, -3.5, 4.0,
+        ];
+        TURNS.into_iter().map(move |turn| {
+            let t = toward + turn * std::f64::consts::FRAC_PI_4;
+            let (s, c) = t.sin_cos();
+            // Far enough along t that the box clears the anchor by `gap`.
+            let reach = gap + (half[0] * c.abs()).max(half[1] * s.abs());
+            Box2 {
+                center: [anchor[0] + reach * c, anchor[1] + reach * s],
+                half,
+            }
+        })
+    }
+
+    fn half_of(size: P2) -> P2 {
+        [size[0] / 2.0 + 1.0, size[1] / 2.0 + 1.0]
+    }
+
+    /// The first box for a label of `size` around `anchor`, at one of `gaps`, that meets
+    /// nothing; nothing is taken.
+    pub fn free_near(&self, anchor: P2, toward: f64, size: P2, gaps: &[f64]) -> Option<Box2> {
+        let half = Self::half_of(size);
+        gaps.iter()
+            .flat_map(|&gap| Self::around(anchor, toward, half, gap))
+            .find(|b| self.cost(b) == 0)
+    }
+
+    /// Whether the line from `a` to `b` meets a label placed before.
+    pub fn crosses_label(&self, a: P2, b: P2) -> bool {
+        self.labels.iter().any(|l| l.meets_segment(a, b))
+    }
+
+    /// Takes the room of a label at `chosen`; its centre.
+    pub fn take(&mut self, chosen: Box2) -> P2 {
+        self.labels.push(chosen);
+        chosen.center
+    }
+
     /// Places a label of `size` (width, height) near `anchor`, preferring the direction
     /// `toward` (radians, picture coordinates); returns its centre and takes its room.
     pub fn place(&mut self, anchor: P2, toward: f64, size: P2) -> P2 {
-        let half = [size[0] / 2.0 + 1.0, size[1] / 2.0 + 1.0];
-        let turns = [
-            0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5, 2.0, -2.0, 2.5, -2.5, 3.0, -3.0, 3.5, -3.5, 4.0,
-        ];
+        let half = Self::half_of(size);
         let mut best: Option<(usize, Box2)> = None;
         for gap in [4.0, 12.0, 22.0, 36.0, 52.0, 72.0, 96.0, 124.0] {
-            for turn in turns {
-                let t = toward + turn * std::f64::consts::FRAC_PI_4;
-                let (s, c) = t.sin_cos();
-                // Far enough along t that the box clears the anchor by `gap`.
-                let reach = gap + (half[0] * c.abs()).max(half[1] * s.abs());
-                let candidate = Box2 {
-                    center: [anchor[0] + reach * c, anchor[1] + reach * s],
-                    half,
-                };
+            for candidate in Self::around(anchor, toward, half, gap) {
                 let cost = self.cost(&candidate);
                 if best.as_ref().is_none_or(|(c, _)| cost < *c) {
                     best = Some((cost, candidate));
@@ -176,8 +207,7 @@ impl Obstacles {
             center: anchor,
             half,
         });
-        self.labels.push(chosen);
-        chosen.center
+        self.take(chosen)
     }
 }
 

@@ -211,6 +211,9 @@ pub enum Shape {
         up: P3,
         fixed: bool,
     },
+    /// A patch of a floor fixed in `N` (3D) that bodies roll on: a parallelogram through
+    /// the corners, lightly filled and hatched, seen from the side of the unit `up`.
+    Floor { corners: [P3; 4], up: P3 },
     /// A circle fixed in `N` that a disc rolls on or, `inside`, in (a gear's fixed partner,
     /// a cylinder): hatched on the side away from the disc.
     Track {

@@ -2,10 +2,8 @@
 //! springs and dashpots, the ellipse a disc projects to, arrows stacked at one point, and
 //! words wrapped into lines.
 
-use super::numbers::unit;
 use super::picture::P2;
 use super::place::text_size;
-use super::scene::Arrow;
 
 pub fn p2add(a: P2, b: P2) -> P2 {
     [a[0] + b[0], a[1] + b[1]]
@@ -116,30 +114,21 @@ pub fn ellipse_of(du: P2, dv: P2) -> (f64, f64, f64) {
     (rx, ry, angle)
 }
 
-/// How many arrows were drawn at the same point along the same line before this one
-/// (2D couples count apart: they are arcs).
-pub fn stack_of(counts: &mut Vec<(String, bool, usize)>, arrow: &Arrow, planar: bool) -> usize {
-    let arc = arrow.couple && planar;
-    let key = if arc {
-        arrow.at_id.clone()
-    } else {
-        let u = unit(arrow.direction).map(|u| u.map(|x| (x * 8.0).round() as i64));
-        format!("{}:{u:?}", arrow.at_id)
+/// How many arrows were drawn before this one at the same point along the same line on
+/// the page (within 8°, so that two forces that only look collinear in a 3D view are
+/// staggered too); 2D couples, arcs (`u` none), count apart. Records this one.
+pub fn stack_of(drawn: &mut Vec<(String, Option<P2>)>, at_id: &str, u: Option<P2>) -> usize {
+    let alike = |v: &Option<P2>| match (v, u) {
+        (None, None) => true,
+        (Some(a), Some(b)) => a[0] * b[0] + a[1] * b[1] > 8f64.to_radians().cos(),
+        _ => false,
     };
-    bump(counts, key, arc)
-}
-
-fn bump(counts: &mut Vec<(String, bool, usize)>, key: String, couple: bool) -> usize {
-    if let Some(entry) = counts
-        .iter_mut()
-        .find(|(k, c, _)| *k == key && *c == couple)
-    {
-        entry.2 += 1;
-        entry.2 - 1
-    } else {
-        counts.push((key, couple, 1));
-        0
-    }
+    let count = drawn
+        .iter()
+        .filter(|(id, v)| id == at_id && alike(v))
+        .count();
+    drawn.push((at_id.to_string(), u));
+    count
 }
 
 /// Words broken into lines that fit `width`.

@@ -208,7 +208,7 @@ fn stroke(out: &mut String, s: &Stroke) {
 }
 
 /// A label's plain text with `^` and `_` as raised and lowered `<tspan>`s.
-fn label_spans(label: &Label) -> String {
+pub(super) fn label_spans(label: &Label) -> String {
     let mut out = String::new();
     let mut shift = 0.0f64;
     let mut script = 0.0f64;
@@ -349,7 +349,7 @@ fn text(out: &mut String, item: &Item, coloured: bool) {
 
 /// The size of a label's scripts, and of a run back on the baseline after one: said once in
 /// each picture rather than on every `<tspan>`.
-const SCRIPT_STYLE: &str =
+pub(super) const SCRIPT_STYLE: &str =
     "<style type=\"text/css\">.mbd tspan{font-size:9px}.mbd tspan.b{font-size:13px}</style>";
 
 /// The picture as an SVG document; every id (and `data-at`) starts with `prefix`.

@@ -318,11 +318,15 @@ fn outline(n: &Numbers, body: BodyId, size: f64) -> (BodyKind, Vec<Shape>) {
     (kind, parts)
 }
 
-/// What rolling contacts run on: a line along the plane through the contact, long enough
-/// to read as a floor or an incline (hatched when fixed in `N`, plain on a moving body);
-/// and the circle fixed in `N` that a gear rolls on or in, hatched.
+/// What rolling contacts run on: in 2D a line along the plane through the contact, long
+/// enough to read as a floor or an incline (hatched when fixed in `N`, plain on a moving
+/// body); in 3D a plane fixed in `N` is a patch of floor around its contacts, one per plane,
+/// and one on a moving body a line; and the circle fixed in `N` that a gear rolls on or in,
+/// hatched.
 pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
     let mut out = Vec::new();
+    // Planes fixed in N in 3D: the normal, the contacts on it, the widest wheel's radius.
+    let mut floors: Vec<(P3, Vec<P3>, f64)> = Vec::new();
     for c in &n.model.problem.constraints {
         match &c.kind {
             ConstraintKind::Rolling {
@@ -335,7 +339,8 @@ pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
                 let (Some(up), Some(disc)) = (direction(n, *on, normal), disc_of(n, *body)) else {
                     continue;
                 };
-                let (along, toward) = if n.model.is_planar() {
+                let planar = n.model.is_planar();
+                let (along, toward) = if planar {
                     (cross(up, [0.0, 0.0, 1.0]), scale(up, -1.0))
                 } else {
                     let a = direction(n, *body, axis).unwrap_or([0.0, 0.0, 1.0]);
@@ -345,6 +350,20 @@ pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
                     (rolling, scale(unit(w).unwrap_or(up), -1.0))
                 };
                 let contact = add(disc.center, scale(toward, disc.radius));
+                if !planar && *on == BodyId::GROUND {
+                    let same = |(u, points, _): &&mut (P3, Vec<P3>, f64)| {
+                        dot(*u, up) > 1.0 - 1e-9
+                            && dot(sub(contact, points[0]), up).abs() < 1e-6 * size
+                    };
+                    match floors.iter_mut().find(same) {
+                        Some((_, points, radius)) => {
+                            points.push(contact);
+                            *radius = radius.max(disc.radius);
+                        }
+                        None => floors.push((up, vec![contact], disc.radius)),
+                    }
+                    continue;
+                }
                 let reach = (3.0 * disc.radius).max(0.35 * size);
                 out.push(Shape::Surface {
                     at: contact,
@@ -375,7 +394,54 @@ pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
             _ => {}
         }
     }
+    for (up, points, radius) in floors {
+        out.push(Shape::Floor {
+            corners: patch(&points, up, (2.0 * radius).max(0.25 * size)),
+            up,
+        });
+    }
     out
+}
+
+/// The normal of the plane fixed in `N` that constraint `c` rolls a disc on, and the
+/// disc's radius; `None` for any other constraint.
+pub fn floor_of(n: &Numbers, c: usize) -> Option<(P3, f64)> {
+    match &n.model.problem.constraints.get(c)?.kind {
+        ConstraintKind::Rolling {
+            body, on, normal, ..
+        } if *on == BodyId::GROUND => Some((direction(n, *on, normal)?, disc_of(n, *body)?.radius)),
+        _ => None,
+    }
+}
+
+/// A patch of the plane through `points` with the unit normal `up`: the rectangle along
+/// the plane's own directions (N.x where it lies in the plane) around the points, `pad`
+/// wider on every side; its corners in order.
+pub fn patch(points: &[P3], up: P3, pad: f64) -> [P3; 4] {
+    let e1 = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+        .iter()
+        .find_map(|e| unit(sub(*e, scale(up, dot(*e, up)))).filter(|_| dot(*e, up).abs() < 0.9))
+        .unwrap_or([1.0, 0.0, 0.0]);
+    let e2 = cross(up, e1);
+    let origin = points.first().copied().unwrap_or([0.0; 3]);
+    let (mut lo, mut hi) = ([0.0f64; 2], [0.0f64; 2]);
+    for p in points {
+        let d = sub(*p, origin);
+        let uv = [dot(d, e1), dot(d, e2)];
+        if uv.iter().all(|x| x.is_finite()) {
+            for k in 0..2 {
+                lo[k] = lo[k].min(uv[k]);
+                hi[k] = hi[k].max(uv[k]);
+            }
+        }
+    }
+    let at = |u: f64, v: f64| add(origin, add(scale(e1, u), scale(e2, v)));
+    [
+        at(lo[0] - pad, lo[1] - pad),
+        at(hi[0] + pad, lo[1] - pad),
+        at(hi[0] + pad, hi[1] + pad),
+        at(lo[0] - pad, hi[1] + pad),
+    ]
 }
 
 /// Gravity's direction in a planar problem, which the pictures draw down the page.

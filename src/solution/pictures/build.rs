@@ -6,7 +6,8 @@ use crate::equations::Derivation;
 use crate::mechanics::joints::ComponentKind;
 use crate::plan::forces::{Action, ActionKind, Source};
 use crate::plan::rows::is_external;
-use crate::problem::{BodyId, ForcePoint, JointKind, LoadKind, PointRef};
+use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
+use crate::render::draw::motion::Gauge;
 use crate::render::draw::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify::simplify;
@@ -176,130 +177,53 @@ impl Setting<'_, '_, '_> {
         }
     }
 
-    /// Angle arcs and dimension lines for the coordinates.
+    /// Angle arcs (each with its dashed line where the child lay at zero) and dimension
+    /// lines for the coordinates; a distance that is zero now is left out.
     fn coordinates(&self, shapes: &mut Vec<Shape>) {
-        let n = self.numbers;
-        let model = &self.derivation.model;
-        let problem = self.problem();
-        for (j, joint) in problem.joints.iter().enumerate() {
-            let jm = &model.joints[j];
-            let label = |k: usize| {
-                let c = joint.coordinates[k];
-                Label::from_tex(&latex(&problem.coordinate_expr(c, 0)))
-            };
-            let value = |k: usize| {
-                n.values
-                    .get(&problem.coordinate_symbol(joint.coordinates[k], 0))
-            };
-            let at = n.vector(&jm.point.position);
-            let base = n.point_on(joint.parent, &n.local(&jm.at));
-            let axis = jm
-                .motion
-                .written_axis
-                .as_ref()
-                .map(|a| n.in_ground(joint.parent, &n.local(a)))
-                .and_then(unit);
-            match joint.kind {
-                JointKind::Revolute | JointKind::Cylindrical => {
-                    let k = usize::from(joint.kind == JointKind::Cylindrical);
-                    if let Some(axis) = axis {
-                        self.angle(shapes, joint.child, at, axis, value(k), label(k));
-                    }
-                    if k == 1 && norm(sub(at, base)) > 1e-6 * self.size {
-                        shapes.push(Shape::Distance {
-                            from: base,
-                            to: at,
-                            label: label(0),
-                        });
-                    }
-                }
-                JointKind::Prismatic if norm(sub(at, base)) > 1e-6 * self.size => {
-                    shapes.push(Shape::Distance {
-                        from: base,
-                        to: at,
-                        label: label(0),
-                    });
-                }
-                JointKind::Planar if model.is_planar() => {
-                    let x = n.in_ground(joint.parent, &[1.0, 0.0, 0.0]);
-                    let corner = add(base, scale(x, value(0)));
-                    for (from, to, k) in [(base, corner, 0), (corner, at, 1)] {
-                        if norm(sub(to, from)) > 1e-6 * self.size {
-                            shapes.push(Shape::Distance {
-                                from,
-                                to,
-                                label: label(k),
-                            });
-                        }
-                    }
+        for gauge in super::gauges::gauges(self.numbers, self.size) {
+            let label = gauge.label;
+            match gauge.at {
+                Some(Gauge::Angle {
+                    center,
+                    from,
+                    axis,
+                    angle,
+                    reference,
+                }) => {
                     shapes.push(Shape::Dashed {
-                        from: at,
-                        to: add(at, scale(x, 0.25 * self.size)),
+                        from: center,
+                        to: add(center, scale(from, reference)),
                     });
                     shapes.push(Shape::Angle {
-                        center: at,
-                        from: x,
-                        axis: [0.0, 0.0, 1.0],
-                        angle: value(2),
-                        label: label(2),
+                        center,
+                        from,
+                        axis,
+                        angle,
+                        label,
                     });
+                }
+                Some(Gauge::Distance { from, to, .. })
+                    if norm(sub(to, from)) > 1e-6 * self.size =>
+                {
+                    shapes.push(Shape::Distance { from, to, label });
                 }
                 _ => {}
             }
         }
     }
 
-    /// The arc of a relative angle at a joint, from where the child's line lay at zero.
-    fn angle(
-        &self,
-        shapes: &mut Vec<Shape>,
-        child: BodyId,
-        at: P3,
-        axis: P3,
-        q: f64,
-        label: Label,
-    ) {
-        let n = self.numbers;
-        let model = &self.derivation.model;
-        let joint = model.problem.joint_of(child).map(|j| &model.joints[j]);
-        let child_at = joint.map_or([0.0; 3], |jm| n.local(&jm.child_at));
-        let center = n.local(&model.bodies[child.0].center_offset);
-        let mut line = sub(center, child_at);
-        if norm(line) < 1e-6 * self.size {
-            line = shapes::key_points(n, child)
-                .into_iter()
-                .map(|p| sub(p, child_at))
-                .fold(
-                    [1.0, 0.0, 0.0],
-                    |best, p| if norm(p) > norm(best) { p } else { best },
-                );
-        }
-        let now = n.in_ground(child, &line);
-        // Turned back by q about the axis: where the line lay at q = 0.
-        let now = sub(now, scale(axis, super::numbers::dot(now, axis)));
-        let Some(now) = unit(now) else { return };
-        let back = super::numbers::rotate(now, axis, -q);
-        shapes.push(Shape::Dashed {
-            from: at,
-            to: add(at, scale(back, 0.3 * self.size)),
-        });
-        shapes.push(Shape::Angle {
-            center: at,
-            from: back,
-            axis,
-            angle: q,
-            label,
-        });
-    }
-
     /// The picture of the whole system at the state.
     pub fn configuration(&self, title: String) -> Scene {
-        let mut shapes = Vec::new();
+        // A floor goes under everything on it; the other surfaces after the bodies.
+        let (mut shapes, surfaces): (Vec<Shape>, Vec<Shape>) =
+            super::bodies::surfaces(self.numbers, self.size)
+                .into_iter()
+                .partition(|s| matches!(s, Shape::Floor { .. }));
         let bodies = self.body_ids();
         for &b in &bodies {
             shapes.push(super::bodies::body(self.numbers, b, self.size));
         }
-        shapes.extend(super::bodies::surfaces(self.numbers, self.size));
+        shapes.extend(surfaces);
         self.elements(&mut shapes);
         for j in 0..self.problem().joints.len() {
             shapes.extend(shapes::joint(self.numbers, j, self.size));

@@ -4,10 +4,12 @@
 
 pub mod bodies;
 pub mod build;
+pub mod gauges;
 pub mod lanes;
 pub mod motion;
 pub mod numbers;
 pub mod shapes;
+pub mod sheets;
 
 use crate::equations::Derivation;
 use crate::problem::BodyId;
@@ -47,7 +49,7 @@ pub fn free_body_name(problem: &crate::problem::Problem, set: &[BodyId]) -> Stri
 }
 
 /// The system's characteristic length: the spread of its points, or its bodies' size.
-fn size_of(n: &Numbers) -> f64 {
+pub(super) fn size_of(n: &Numbers) -> f64 {
     let model = n.model;
     let mut points: Vec<numbers::P3> = model
         .joints

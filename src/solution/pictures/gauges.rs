@@ -1,0 +1,134 @@
+//! The coordinates' marks: an arc for each angle at its joint, from where the child's line
+//! lay at zero, and a dimension line for each distance. One list per problem, the same at
+//! every state, so that the still picture draws it and the motion moves it frame by frame.
+
+use super::numbers::{add, dot, norm, rotate, scale, sub, unit, Numbers, P3};
+use super::shapes;
+use crate::problem::{BodyId, JointKind};
+use crate::render::draw::motion::Gauge;
+use crate::render::draw::scene::Label;
+use crate::symbolic::print::latex;
+
+/// One coordinate's mark.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Gauged {
+    /// The coordinate (an index into the problem's coordinates).
+    pub coordinate: usize,
+    /// Its symbol.
+    pub label: Label,
+    /// Where it is drawn at this state; `None` where it has no direction to be drawn in
+    /// (the child's line along the joint's axis).
+    pub at: Option<Gauge>,
+}
+
+/// Every coordinate's mark at the state of `n`; `size` is the system's length. The list
+/// depends only on the problem, not on the state.
+pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
+    let model = n.model;
+    let problem = model.problem;
+    let mut out = Vec::new();
+    for (j, joint) in problem.joints.iter().enumerate() {
+        let jm = &model.joints[j];
+        let label = |k: usize| {
+            let c = joint.coordinates[k];
+            Label::from_tex(&latex(&problem.coordinate_expr(c, 0)))
+        };
+        let value = |k: usize| {
+            n.values
+                .get(&problem.coordinate_symbol(joint.coordinates[k], 0))
+        };
+        let mut push = |k: usize, at: Option<Gauge>| {
+            out.push(Gauged {
+                coordinate: joint.coordinates[k],
+                label: label(k),
+                at,
+            });
+        };
+        let at = n.vector(&jm.point.position);
+        let base = n.point_on(joint.parent, &n.local(&jm.at));
+        let axis = jm
+            .motion
+            .written_axis
+            .as_ref()
+            .map(|a| n.in_ground(joint.parent, &n.local(a)))
+            .and_then(unit);
+        let along = |axis: Option<P3>| {
+            axis.or_else(|| unit(sub(at, base)))
+                .unwrap_or([1.0, 0.0, 0.0])
+        };
+        match joint.kind {
+            JointKind::Revolute | JointKind::Cylindrical => {
+                let k = usize::from(joint.kind == JointKind::Cylindrical);
+                if let Some(axis) = axis {
+                    push(k, angle(n, joint.child, at, axis, value(k), size));
+                }
+                if k == 1 {
+                    push(
+                        0,
+                        Some(Gauge::Distance {
+                            from: base,
+                            to: at,
+                            along: along(axis),
+                        }),
+                    );
+                }
+            }
+            JointKind::Prismatic => push(
+                0,
+                Some(Gauge::Distance {
+                    from: base,
+                    to: at,
+                    along: along(axis),
+                }),
+            ),
+            JointKind::Planar if model.is_planar() => {
+                let x = n.in_ground(joint.parent, &[1.0, 0.0, 0.0]);
+                let y = n.in_ground(joint.parent, &[0.0, 1.0, 0.0]);
+                let corner = add(base, scale(x, value(0)));
+                for (from, to, k, along) in [(base, corner, 0, x), (corner, at, 1, y)] {
+                    push(k, Some(Gauge::Distance { from, to, along }));
+                }
+                push(
+                    2,
+                    Some(Gauge::Angle {
+                        center: at,
+                        from: x,
+                        axis: [0.0, 0.0, 1.0],
+                        angle: value(2),
+                        reference: 0.25 * size,
+                    }),
+                );
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The arc of a relative angle `q` at a joint at `at`, from where the child's line lay at
+/// zero: turned back by `q` about the axis from where it lies now.
+fn angle(n: &Numbers, child: BodyId, at: P3, axis: P3, q: f64, size: f64) -> Option<Gauge> {
+    let model = n.model;
+    let joint = model.problem.joint_of(child).map(|j| &model.joints[j]);
+    let child_at = joint.map_or([0.0; 3], |jm| n.local(&jm.child_at));
+    let center = n.local(&model.bodies[child.0].center_offset);
+    let mut line = sub(center, child_at);
+    if norm(line) < 1e-6 * size {
+        line = shapes::key_points(n, child)
+            .into_iter()
+            .map(|p| sub(p, child_at))
+            .fold(
+                [1.0, 0.0, 0.0],
+                |best, p| if norm(p) > norm(best) { p } else { best },
+            );
+    }
+    let now = n.in_ground(child, &line);
+    let now = unit(sub(now, scale(axis, dot(now, axis))))?;
+    Some(Gauge::Angle {
+        center: at,
+        from: rotate(now, axis, -q),
+        axis,
+        angle: q,
+        reference: 0.3 * size,
+    })
+}
