@@ -26,6 +26,7 @@ mod matrix_pattern;
 mod methods;
 mod pipeline;
 mod planner;
+mod recursive;
 mod render;
 mod robustness;
 mod rolling_on_body;

@@ -44,7 +44,11 @@ pub(super) fn numbers(c: &[Expr; 3], values: &Values) -> Option<Vector3<f64>> {
     if !c.iter().all(Expr::is_constant) {
         return None;
     }
-    let v = Vector3::new(eval(&c[0], values), eval(&c[1], values), eval(&c[2], values));
+    let v = Vector3::new(
+        eval(&c[0], values),
+        eval(&c[1], values),
+        eval(&c[2], values),
+    );
     v.iter().all(|x| x.is_finite()).then_some(v)
 }
 

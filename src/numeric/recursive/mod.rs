@@ -44,6 +44,8 @@ pub struct Recursive {
     ground: Vector6<f64>,
     /// The number of coordinates.
     dof: usize,
+    /// Reused between evaluations, so that one allocates only its result.
+    scratch: std::cell::RefCell<aba::Scratch>,
 }
 
 impl Recursive {
@@ -110,6 +112,7 @@ impl Recursive {
             bodies,
             ground: spatial::join(Vector3::zeros(), -g),
             dof: problem.coordinates.len(),
+            scratch: Default::default(),
         })
     }
 
@@ -124,7 +127,10 @@ impl Recursive {
         if q.len() != self.dof || rates.len() != self.dof {
             return None;
         }
-        aba::accelerations(self, q, rates)
+        let mut scratch = self.scratch.take();
+        let out = aba::accelerations(self, &mut scratch, q, rates);
+        self.scratch.replace(scratch);
+        out
     }
 }
 

@@ -23,13 +23,19 @@ pub(super) fn join(angular: Vector3<f64>, linear: Vector3<f64>) -> Vector6<f64> 
 /// `v ×` a motion vector `u`.
 pub(super) fn cross_motion(v: &Vector6<f64>, u: &Vector6<f64>) -> Vector6<f64> {
     let (w, vl) = (angular(v), linear(v));
-    join(w.cross(&angular(u)), w.cross(&linear(u)) + vl.cross(&angular(u)))
+    join(
+        w.cross(&angular(u)),
+        w.cross(&linear(u)) + vl.cross(&angular(u)),
+    )
 }
 
 /// `v ×*` a force `f`.
 pub(super) fn cross_force(v: &Vector6<f64>, f: &Vector6<f64>) -> Vector6<f64> {
     let (w, vl) = (angular(v), linear(v));
-    join(w.cross(&angular(f)) + vl.cross(&linear(f)), w.cross(&linear(f)))
+    join(
+        w.cross(&angular(f)) + vl.cross(&linear(f)),
+        w.cross(&linear(f)),
+    )
 }
 
 /// The cross-product matrix `[a×]`.
@@ -76,13 +82,23 @@ impl Transform {
         )
     }
 
-    /// An articulated inertia of the child, in the parent's coordinates: `Xᵀ I X`.
+    /// An articulated inertia of the child, in the parent's coordinates: `Xᵀ I X`, by
+    /// blocks. With `X = diag(E, E) T`, `T = [1 0; −r× 1]` and the rotated blocks
+    /// `[A B; Bᵀ C]`: `[A − B r× + r×(Bᵀ − C r×), B + r× C; (B + r× C)ᵀ, C]`.
     pub fn inertia_back(&self, i: &Matrix6<f64>) -> Matrix6<f64> {
-        let mut x = Matrix6::zeros();
-        x.fixed_view_mut::<3, 3>(0, 0).copy_from(&self.e);
-        x.fixed_view_mut::<3, 3>(3, 3).copy_from(&self.e);
-        x.fixed_view_mut::<3, 3>(3, 0)
-            .copy_from(&(-self.e * skew(&self.r)));
-        x.transpose() * i * x
+        let (e, et) = (&self.e, self.e.transpose());
+        let a = et * i.fixed_view::<3, 3>(0, 0) * e;
+        let b = et * i.fixed_view::<3, 3>(0, 3) * e;
+        let c = et * i.fixed_view::<3, 3>(3, 3) * e;
+        let rx = skew(&self.r);
+        let top_right = b + rx * c;
+        let top_left = a - b * rx + rx * (b.transpose() - c * rx);
+        let mut out = Matrix6::zeros();
+        out.fixed_view_mut::<3, 3>(0, 0).copy_from(&top_left);
+        out.fixed_view_mut::<3, 3>(0, 3).copy_from(&top_right);
+        out.fixed_view_mut::<3, 3>(3, 0)
+            .copy_from(&top_right.transpose());
+        out.fixed_view_mut::<3, 3>(3, 3).copy_from(&c);
+        out
     }
 }
