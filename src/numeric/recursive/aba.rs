@@ -3,6 +3,9 @@
 //! A joint's `S` has at most six columns, so its projections are small loops over them
 //! rather than 6×6 products.
 
+// Index loops over the small matrices read as the formulas they compute.
+#![allow(clippy::needless_range_loop)]
+
 use super::joint::{State, MAX_DOF};
 use super::spatial::{cross_force, cross_motion};
 use super::Recursive;
@@ -139,7 +142,7 @@ fn inverse(d: &Small, k: usize, smallest: f64) -> Option<Small> {
         for p in 0..j {
             pivot -= l[j][p] * l[j][p];
         }
-        if !(pivot > smallest) {
+        if pivot.is_nan() || pivot <= smallest {
             return None;
         }
         l[j][j] = pivot.sqrt();
