@@ -50,7 +50,7 @@ fn main() {
             }
         };
         let derive_ms = start.elapsed().as_secs_f64() * 1e3;
-        let compiled = Compiled::new(&derivation);
+        let compiled = Compiled::fastest(&derivation);
         let repeats = 20_000;
         let mut solve_us = f64::INFINITY;
         let mut last = None;

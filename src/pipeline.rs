@@ -220,7 +220,7 @@ pub fn answers(
     method: Method,
 ) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
     let derivation = derive(problem, method)?;
-    let solver = Solver::new(problem, &derivation);
+    let solver = Solver::fastest(problem, &derivation);
     crate::numeric::answers::answer_all(problem, &solver)
         .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
 }
@@ -312,6 +312,15 @@ impl<'p> Solver<'p> {
         }
     }
 
+    /// As [`Solver::new`], with the q'' in the fastest exact form ([`Compiled::fastest`]):
+    /// for `solve`, `simulate` and the answers.
+    pub fn fastest(problem: &'p Problem, derivation: &Derivation) -> Solver<'p> {
+        Solver {
+            problem,
+            plans: Plans::new(derivation, Compiled::fastest(derivation)),
+        }
+    }
+
     /// The method of the equations.
     pub fn method(&self) -> Method {
         self.plans.method
@@ -320,7 +329,7 @@ impl<'p> Solver<'p> {
     /// Whether the equations are the method's own rows, not Kane's system by composite
     /// bodies standing in for them.
     pub fn is_own(&self) -> bool {
-        self.plans.own
+        self.plans.own && !self.compiled().is_recursive()
     }
 
     /// The compiled equations of the derivation's own plan.

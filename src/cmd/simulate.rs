@@ -34,7 +34,7 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     }
     let derivation = derive(&problem, super::method(args.common.method))?;
     super::report_constraints(&derivation.model, &[]);
-    let solver = crate::pipeline::Solver::new(&problem, &derivation);
+    let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let limits = Limits {

@@ -55,7 +55,7 @@ pub fn run(args: SolveArgs) -> Result<(), Error> {
     let method = super::method(args.at.common.method);
     let derivation = crate::pipeline::derive(&problem, method)?;
     super::report_constraints(&derivation.model, &args.at.given.state);
-    let solver = crate::pipeline::Solver::new(&problem, &derivation);
+    let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     solver.assemble(args.at.given.time, &mut q, &mut rates)?;
     let solution = solver.solve(args.at.given.time, &q, &rates)?;
     let coordinates = solver.coordinate_names();

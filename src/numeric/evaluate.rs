@@ -3,6 +3,7 @@
 
 use super::inputs::input_symbols;
 use super::linear::solve_linear_owned;
+use super::recursive::{Recursive, RECURSIVE_FROM_DOF};
 use super::speeds::SpeedProgram;
 use super::system::{describe_state, Evaluation, ReactionColumn, System};
 use super::SolveError;
@@ -57,6 +58,8 @@ pub struct Compiled {
     speeds: Option<SpeedProgram>,
     /// The friction sites, when there are any.
     friction: Option<super::friction::Friction>,
+    /// The q'' by the articulated-body algorithm, where [`Compiled::fastest`] chose it.
+    recursive: Option<super::recursive::Recursive>,
 }
 
 /// The q'' and the requested reactions at one state.
@@ -185,6 +188,7 @@ impl Compiled {
                 || r.position.as_ref().is_some_and(|p| p.contains(&time))
         });
         Compiled {
+            recursive: None,
             friction,
             assembly: super::assemble::Assembly::new(model),
             drives,
@@ -213,6 +217,30 @@ impl Compiled {
                     .iter()
                     .all(|l| is_conservative(&l.kind) || is_dissipative(&l.kind)),
         }
+    }
+
+    /// As [`Compiled::new`], with the q'' by the articulated-body algorithm where it
+    /// applies and is the faster: an unconstrained tree of joints, bodies and gravity
+    /// alone, no reactions asked, at least [`RECURSIVE_FROM_DOF`] coordinates (see
+    /// [`super::recursive`]). The numbers of `solve` and `simulate`; the confirmation
+    /// checks compile each method's own rows with [`Compiled::new`].
+    pub fn fastest(derivation: &Derivation) -> Compiled {
+        let mut compiled = Compiled::new(derivation);
+        let plain = compiled.reactions.is_empty()
+            && compiled.drives.is_empty()
+            && compiled.friction.is_none()
+            && compiled.speeds.is_none()
+            && compiled.assembly.is_none()
+            && compiled.coordinates.len() >= RECURSIVE_FROM_DOF;
+        if plain {
+            compiled.recursive = Recursive::new(&derivation.model);
+        }
+        compiled
+    }
+
+    /// Whether the q'' come from the articulated-body algorithm, not the compiled rows.
+    pub fn is_recursive(&self) -> bool {
+        self.recursive.is_some()
     }
 
     /// The number of operations to evaluate `A` and `b` once (with the reaction directions).
@@ -309,6 +337,17 @@ impl Compiled {
         rates: &[f64],
         held: Option<&[super::friction::Held]>,
     ) -> Result<Motion, SolveError> {
+        // A state the recursive form finds singular goes on to the dense form, which says why.
+        if let (Some(tree), None) = (&self.recursive, held) {
+            if let Some(accelerations) = tree.accelerations(q, rates) {
+                return Ok(Motion {
+                    accelerations,
+                    reactions: Vec::new(),
+                    drives: Vec::new(),
+                    friction: Vec::new(),
+                });
+            }
+        }
         let inputs = self.inputs(t, q, rates);
         let mut scratch = self.scratch.take();
         let mut values = vec![0.0; self.outputs];

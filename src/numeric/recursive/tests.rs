@@ -1,0 +1,170 @@
+//! The recursive form against references it shares no code with: the dense compiled
+//! rows of Kane's method on random states, and a pendulum's equation written by hand.
+
+use super::Recursive;
+use crate::equations::Method;
+use crate::numeric::evaluate::Compiled;
+use crate::pipeline::derive_own;
+use crate::problem::{load, Problem};
+
+/// A repeatable stream of numbers in [-1, 1).
+struct Numbers(u64);
+
+impl Numbers {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+}
+
+/// A problem file with its loads and requested reactions taken out.
+fn plain(path: &str) -> Problem {
+    let text = std::fs::read_to_string(path).expect("bundled problem");
+    let mut value: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let fields = value.as_object_mut().expect("object");
+    fields.remove("loads");
+    fields.remove("find");
+    load(&serde_json::to_string(&value).expect("JSON")).expect("valid problem")
+}
+
+/// The recursive q'' equal the dense form's on random states, relative to max(1, |q''|).
+fn agrees(problem: &Problem, seed: u64) {
+    let derivation = derive_own(problem, Method::Kane).expect("derives");
+    let tree = Recursive::new(&derivation.model).expect("a plain tree");
+    let dense = Compiled::new(&derivation);
+    let n = problem.coordinates.len();
+    let mut numbers = Numbers(seed);
+    for _ in 0..6 {
+        let q: Vec<f64> = (0..n).map(|_| 1.5 * numbers.next()).collect();
+        let rates: Vec<f64> = (0..n).map(|_| 2.0 * numbers.next()).collect();
+        let ours = tree.accelerations(&q, &rates).expect("regular");
+        let theirs = dense
+            .motion(0.0, &q, &rates)
+            .expect("regular")
+            .accelerations;
+        for (i, (a, b)) in ours.iter().zip(&theirs).enumerate() {
+            assert!(
+                (a - b).abs() <= 1e-9 * b.abs().max(1.0),
+                "{}: q{i}'' {a} against the dense {b} at q = {q:?}, q' = {rates:?}",
+                problem.title
+            );
+        }
+    }
+}
+
+#[test]
+fn every_joint_type_agrees_with_the_dense_form() {
+    agrees(&plain("problems/validation/all-joints-3d.json"), 1);
+}
+
+#[test]
+fn spherical_chain_agrees_with_the_dense_form() {
+    agrees(&plain("problems/validation/spherical-chain-3.json"), 2);
+}
+
+#[test]
+fn planar_chains_agree_with_the_dense_form() {
+    agrees(&plain("problems/validation/ten-link-chain.json"), 3);
+    agrees(&plain("problems/five-link-chain.json"), 4);
+}
+
+#[test]
+fn skewed_axes_and_offset_joints_agree_with_the_dense_form() {
+    // Axes off the unit vectors, one written against its canonical sign, and joint points
+    // off both bodies' origins, so every term of the joint's transform is exercised.
+    let problem = load(
+        r#"{
+      "title": "a skewed chain", "dimension": 3,
+      "constants": { "g": 9.81, "m": 1.3, "L": 0.7 },
+      "gravity": "-g*N.z",
+      "coordinates": { "a": {}, "b": {}, "c": {}, "s": {} },
+      "bodies": {
+        "A": { "mass": "m", "center": "0.1*A.x - L/2*A.z",
+               "inertia": { "xx": "0.03", "yy": "0.04", "zz": "0.02", "xy": "0.002" } },
+        "B": { "mass": "2*m", "center": "0.2*B.y",
+               "inertia": { "xx": "0.05", "yy": "0.03", "zz": "0.06", "yz": "-0.004" } },
+        "C": { "mass": "m/2", "center": "-0.1*C.z",
+               "inertia": { "xx": "0.01", "yy": "0.02", "zz": "0.015", "zx": "0.001" } },
+        "D": { "mass": "m", "center": "0.05*D.x",
+               "inertia": { "xx": "0.01", "yy": "0.01", "zz": "0.01" } }
+      },
+      "joints": [
+        { "name": "J1", "type": "revolute", "parent": "N", "child": "A",
+          "axis": "N.x + 2*N.y + 0.5*N.z", "at": "0.1*N.x", "coordinates": ["a"] },
+        { "name": "J2", "type": "revolute", "parent": "A", "child": "B",
+          "axis": "-A.x + A.z", "at": "-L*A.z", "child_at": "0.1*B.x + 0.2*B.z",
+          "coordinates": ["b"] },
+        { "name": "J3", "type": "revolute", "parent": "B", "child": "C",
+          "axis": "B.y", "at": "0.3*B.y", "child_at": "-0.15*C.y", "coordinates": ["c"] },
+        { "name": "J4", "type": "prismatic", "parent": "C", "child": "D",
+          "axis": "-C.x - C.z", "at": "0.2*C.z", "child_at": "0.1*D.y", "coordinates": ["s"] }
+      ]
+    }"#,
+    )
+    .expect("valid problem");
+    agrees(&problem, 5);
+}
+
+#[test]
+fn compound_pendulum_follows_its_equation_written_by_hand() {
+    // θ'' = −m g d sin θ / (I + m d²), the pivot at the origin, the centre d below it.
+    let problem = load(
+        r#"{
+      "title": "a compound pendulum", "dimension": 2,
+      "constants": { "g": 9.81, "m": 2.0, "d": 0.4, "I": 0.05 },
+      "gravity": "-g*N.y",
+      "coordinates": { "th": {} },
+      "bodies": { "B": { "mass": "m", "center": "-d*B.y", "inertia": "I" } },
+      "joints": [ { "name": "O", "type": "revolute", "parent": "N", "child": "B",
+                    "coordinates": ["th"] } ]
+    }"#,
+    )
+    .expect("valid problem");
+    let derivation = derive_own(&problem, Method::Kane).expect("derives");
+    let tree = Recursive::new(&derivation.model).expect("a plain tree");
+    let (m, g, d, i) = (2.0, 9.81, 0.4, 0.05);
+    for theta in [-2.0, -0.3, 0.0, 0.7, 2.9] {
+        for rate in [0.0, 1.5] {
+            let ours = tree.accelerations(&[theta], &[rate]).expect("regular")[0];
+            let by_hand = -m * g * d * f64::sin(theta) / (i + m * d * d);
+            assert!(
+                (ours - by_hand).abs() <= 1e-12,
+                "θ = {theta}: {ours} against {by_hand}"
+            );
+        }
+    }
+}
+
+#[test]
+fn loads_and_constraints_are_left_to_the_dense_form() {
+    for path in [
+        "problems/validation/all-joints-3d.json",
+        "problems/four-bar.json",
+    ] {
+        let problem = crate::problem::load_file(std::path::Path::new(path)).expect("valid");
+        let derivation = derive_own(&problem, Method::Kane).expect("derives");
+        assert!(Recursive::new(&derivation.model).is_none(), "{path}");
+    }
+}
+
+#[test]
+fn gimbal_lock_is_left_to_the_dense_form_which_names_it() {
+    // x-y-z angles with the second at a right angle: the first and third axes align.
+    let problem = plain("problems/validation/spherical-chain-3.json");
+    let derivation = crate::pipeline::derive(&problem, Method::Kane).expect("derives");
+    let compiled = Compiled::fastest(&derivation);
+    assert!(compiled.is_recursive());
+    let n = problem.coordinates.len();
+    let mut q = vec![0.1; n];
+    q[1] = std::f64::consts::FRAC_PI_2;
+    let tree = Recursive::new(&derivation.model).expect("a plain tree");
+    assert!(tree.accelerations(&q, &vec![0.0; n]).is_none());
+    let error = compiled.motion(0.0, &q, &vec![0.0; n]).unwrap_err();
+    assert!(
+        matches!(error, crate::numeric::SolveError::SingularSystem { .. }),
+        "{error}"
+    );
+}
