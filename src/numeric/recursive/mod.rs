@@ -19,8 +19,10 @@ use crate::problem::BodyId;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 /// From this many degrees of freedom the recursive form is used where it applies; below it
-/// the dense program and its LU. Measured with `cargo bench --bench evaluate` on the chains
-/// of `tools/bench/chains.py` (BENCHMARKS.md): the recursive form is faster from here.
+/// the dense program and its LU. Chosen, not yet measured at the boundary: the smallest
+/// chains of `tools/bench/chains.py` (revolute 6, spherical 3) already run faster
+/// recursively (BENCHMARKS.md), and with one or two coordinates the dense program is a
+/// handful of operations.
 pub const RECURSIVE_FROM_DOF: usize = 3;
 
 /// One body of the tree, in an order with parents first.
