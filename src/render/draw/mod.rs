@@ -13,6 +13,7 @@ pub mod motion;
 mod motion_bodies;
 mod motion_marks;
 pub mod motion_svg;
+mod motion_timing;
 pub mod numbers;
 pub mod picture;
 pub mod place;

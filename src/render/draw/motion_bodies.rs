@@ -3,7 +3,7 @@
 //! orthographic picture of a moving plane is an affine map of it).
 
 use super::motion::{Motion, Part};
-use super::motion_svg::{color, fine, num, Timing};
+use super::motion_timing::{color, fine, num, Timing};
 use super::numbers::P3;
 use super::picture::{Ink, Projection, P2};
 use crate::render::escape::html as xml;

@@ -3,7 +3,7 @@
 //! Every frame's path has the same commands, so that one frame's turns into the next.
 
 use super::motion::{Gauge, Motion};
-use super::motion_svg::{color, Timing};
+use super::motion_timing::{color, Timing};
 use super::numbers::{add, cross, scale};
 use super::picture::{Ink, Projection, P2};
 use super::place::text_size;

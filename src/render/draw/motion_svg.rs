@@ -1,89 +1,12 @@
 //! `motion.svg`: a [`Motion`] written as SVG animated with SMIL (`<animate>`,
 //! `<animateTransform>`), looping, no script.
 
-use super::motion::{Motion, Placed, TITLE_STRIP};
+use super::motion::{Motion, TITLE_STRIP};
+use super::motion_timing::{color, fine, num, Timing};
 use super::picture::{Ink, P2};
 use super::strokes::in_lane;
 use crate::render::escape::html as xml;
 use std::fmt::Write;
-
-/// Three decimals, no negative zero, no trailing zeros.
-pub(super) fn num(x: f64) -> String {
-    let text = format!("{x:.3}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.to_string()
-    }
-}
-
-/// Six significant digits, for the sheets' scales (metres to pixels).
-pub(super) fn fine(x: f64) -> String {
-    let text = format!("{x:.6e}");
-    match text.parse::<f64>() {
-        Ok(v) if v != 0.0 => format!("{v}"),
-        _ => "0".into(),
-    }
-}
-
-pub(super) fn color(ink: Ink) -> String {
-    let (r, g, b) = ink.rgb();
-    format!("#{r:02x}{g:02x}{b:02x}")
-}
-
-/// The animation's common attributes: its length, its key times, looping.
-pub(super) struct Timing {
-    attributes: String,
-}
-
-impl Timing {
-    fn new(frames: &[Placed]) -> Timing {
-        let start = frames.first().map_or(0.0, |f| f.t);
-        let end = frames.last().map_or(1.0, |f| f.t);
-        let length = (end - start).max(1e-9);
-        let times: Vec<String> = frames
-            .iter()
-            .enumerate()
-            .map(|(i, f)| {
-                if i + 1 == frames.len() {
-                    "1".to_string()
-                } else {
-                    // Key times must not decrease; rounding could otherwise tie them.
-                    format!("{:.6}", (f.t - start) / length)
-                        .trim_end_matches('0')
-                        .trim_end_matches('.')
-                        .to_string()
-                }
-            })
-            .collect();
-        Timing {
-            attributes: format!(
-                "dur=\"{}s\" keyTimes=\"{}\" calcMode=\"linear\" repeatCount=\"indefinite\"",
-                fine(length),
-                times.join(";")
-            ),
-        }
-    }
-
-    pub(super) fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
-        let _ = writeln!(
-            out,
-            "<animate attributeName=\"{attribute}\" values=\"{}\" {}/>",
-            values.join(";"),
-            self.attributes
-        );
-    }
-
-    pub(super) fn transform(&self, out: &mut String, kind: &str, values: &[String]) {
-        let _ = writeln!(
-            out,
-            "<animateTransform attributeName=\"transform\" type=\"{kind}\" additive=\"sum\" values=\"{}\" {}/>",
-            values.join(";"),
-            self.attributes
-        );
-    }
-}
 
 /// The motion as an SVG document.
 pub fn export(motion: &Motion) -> String {

@@ -1,0 +1,84 @@
+//! What every animated element of `motion.svg` shares: its timing (length, key times,
+//! looping) and how numbers and inks are written.
+
+use super::motion::Placed;
+use super::picture::Ink;
+use std::fmt::Write;
+
+/// Three decimals, no negative zero, no trailing zeros.
+pub(super) fn num(x: f64) -> String {
+    let text = format!("{x:.3}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.to_string()
+    }
+}
+
+/// Six significant digits, for the sheets' scales (metres to pixels).
+pub(super) fn fine(x: f64) -> String {
+    let text = format!("{x:.6e}");
+    match text.parse::<f64>() {
+        Ok(v) if v != 0.0 => format!("{v}"),
+        _ => "0".into(),
+    }
+}
+
+pub(super) fn color(ink: Ink) -> String {
+    let (r, g, b) = ink.rgb();
+    format!("#{r:02x}{g:02x}{b:02x}")
+}
+
+/// The animation's common attributes: its length, its key times, looping.
+pub(super) struct Timing {
+    attributes: String,
+}
+
+impl Timing {
+    pub(super) fn new(frames: &[Placed]) -> Timing {
+        let start = frames.first().map_or(0.0, |f| f.t);
+        let end = frames.last().map_or(1.0, |f| f.t);
+        let length = (end - start).max(1e-9);
+        let times: Vec<String> = frames
+            .iter()
+            .enumerate()
+            .map(|(i, f)| {
+                if i + 1 == frames.len() {
+                    "1".to_string()
+                } else {
+                    // Key times must not decrease; rounding could otherwise tie them.
+                    format!("{:.6}", (f.t - start) / length)
+                        .trim_end_matches('0')
+                        .trim_end_matches('.')
+                        .to_string()
+                }
+            })
+            .collect();
+        Timing {
+            attributes: format!(
+                "dur=\"{}s\" keyTimes=\"{}\" calcMode=\"linear\" repeatCount=\"indefinite\"",
+                fine(length),
+                times.join(";")
+            ),
+        }
+    }
+
+    pub(super) fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
+        let _ = writeln!(
+            out,
+            "<animate attributeName=\"{attribute}\" values=\"{}\" {}/>",
+            values.join(";"),
+            self.attributes
+        );
+    }
+
+    pub(super) fn transform(&self, out: &mut String, kind: &str, values: &[String]) {
+        let _ = writeln!(
+            out,
+            "<animateTransform attributeName=\"transform\" type=\"{kind}\" additive=\"sum\" values=\"{}\" {}/>",
+            values.join(";"),
+            self.attributes
+        );
+    }
+}
