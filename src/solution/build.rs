@@ -146,18 +146,24 @@ fn orientation_tex(problem: &Problem, joint: &Joint) -> String {
             let angles: Vec<String> = (0..joint.sequence.len())
                 .map(|k| coordinate(first_angle + k))
                 .collect();
-            let axes: Vec<&str> = joint
-                .sequence
-                .iter()
-                .map(|&a| ["x", "y", "z"].get(a as usize).copied().unwrap_or("?"))
-                .collect();
-            format!(
-                "\\text{{body-fixed rotations by }} {} \\text{{ about }} {}",
-                angles.join(", "),
-                axes.join(", ")
-            )
+            body_fixed_rotations_tex(&angles, &joint.sequence)
         }
     }
+}
+
+/// `\text{body-fixed rotations by } ψ, θ \text{ about } z, x`: the angles in order, each
+/// about the axis of `sequence` at its place.
+pub(super) fn body_fixed_rotations_tex(angles: &[String], sequence: &[u8]) -> String {
+    let axes: Vec<&str> = sequence
+        .iter()
+        .take(angles.len())
+        .map(|&a| ["x", "y", "z"].get(a as usize).copied().unwrap_or("?"))
+        .collect();
+    format!(
+        "\\text{{body-fixed rotations by }} {} \\text{{ about }} {}",
+        angles.join(", "),
+        axes.join(", ")
+    )
 }
 
 /// A vector expression as textbook LaTeX: `\frac{L}{2} \hat{\mathbf{a}}_{x} - \hat{\mathbf{n}}_{y}`.

@@ -33,17 +33,7 @@ pub(super) fn spin_frames(derivation: &crate::equations::Derivation) -> Vec<Spin
                         .filter(|&&c| problem.coordinates[c].kind == CoordinateKind::Angle)
                         .map(|&c| latex(&problem.coordinate_expr(c, 0)))
                         .collect();
-                    let axes: Vec<&str> = j
-                        .sequence
-                        .iter()
-                        .take(angles.len())
-                        .map(|&a| ["x", "y", "z"].get(a as usize).copied().unwrap_or("?"))
-                        .collect();
-                    format!(
-                        "\\text{{body-fixed rotations by }} {} \\text{{ about }} {}",
-                        angles.join(", "),
-                        axes.join(", ")
-                    )
+                    super::build::body_fixed_rotations_tex(&angles, &j.sequence)
                 })
                 .unwrap_or_default();
             SpinFrame {
