@@ -3,7 +3,7 @@
 //! Every frame's path has the same commands, so that one frame's turns into the next.
 
 use super::motion::{Gauge, Motion};
-use super::motion_timing::{color, Timing};
+use super::motion_timing::{coarse, color, polyline, Timing};
 use super::numbers::{add, cross, scale};
 use super::picture::{Ink, Projection, P2};
 use super::place::text_size;
@@ -25,7 +25,7 @@ pub(super) fn floors(out: &mut String, motion: &Motion) {
     for corners in &motion.floors {
         let points: Vec<P2> = corners.iter().map(|c| p.point(*c)).collect();
         let middle = p2scale(points.iter().fold([0.0, 0.0], |m, q| p2add(m, *q)), 0.25);
-        let mut d = polyline(&points);
+        let mut d = polyline(&points, coarse);
         d.push('Z');
         let mut edges: Vec<(P2, P2)> = (0..4).map(|k| (points[k], points[(k + 1) % 4])).collect();
         edges.sort_by(|a, b| (b.0[1] + b.1[1]).total_cmp(&(a.0[1] + a.1[1])));
@@ -43,10 +43,10 @@ pub(super) fn floors(out: &mut String, motion: &Motion) {
             let count = (length / 7.0).floor().max(1.0) as usize;
             for k in 0..=count {
                 let s = p2add(a, p2scale(t, k as f64 * length / count as f64));
-                ticks.push(polyline(&[
-                    s,
-                    p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -4.0))),
-                ]));
+                ticks.push(polyline(
+                    &[s, p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -4.0)))],
+                    coarse,
+                ));
             }
         }
         let _ = writeln!(
@@ -58,33 +58,6 @@ pub(super) fn floors(out: &mut String, motion: &Motion) {
             color(Ink::Black)
         );
     }
-}
-
-/// A number only the eye reads: to a tenth of a pixel, which keeps a long motion's file
-/// small.
-fn coarse(x: f64) -> String {
-    let text = format!("{x:.1}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.to_string()
-    }
-}
-
-/// Path data through `points`, to a tenth of a pixel.
-fn polyline(points: &[P2]) -> String {
-    let mut d = String::new();
-    for (i, [x, y]) in points.iter().enumerate() {
-        let _ = write!(
-            d,
-            "{}{} {}",
-            if i == 0 { "M" } else { "L" },
-            coarse(*x),
-            coarse(*y)
-        );
-    }
-    d
 }
 
 /// One mark as drawn at one frame, in the picture: its thin dashed lines, its line or
@@ -215,12 +188,12 @@ pub(super) fn gauges(out: &mut String, motion: &Motion, timing: &Timing) {
         );
         let shapes =
             |path: &dyn Fn(&Drawn) -> String| -> Vec<String> { frames.iter().map(path).collect() };
-        let dashed = shapes(&|d| d.dashed.iter().map(|l| polyline(l)).collect());
-        let line = shapes(&|d| polyline(&d.line));
+        let dashed = shapes(&|d| d.dashed.iter().map(|l| polyline(l, coarse)).collect());
+        let line = shapes(&|d| polyline(&d.line, coarse));
         let heads = shapes(&|d| {
             d.heads
                 .iter()
-                .map(|h| polyline(h) + "Z")
+                .map(|h| polyline(h, coarse) + "Z")
                 .collect::<String>()
         });
         for (class, values, style) in [

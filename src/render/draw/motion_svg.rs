@@ -2,7 +2,7 @@
 //! `<animateTransform>`), looping, no script.
 
 use super::motion::{Motion, TITLE_STRIP};
-use super::motion_timing::{color, fine, num, Timing};
+use super::motion_timing::{color, fine, num, polyline, Timing};
 use super::picture::{Ink, P2};
 use super::strokes::in_lane;
 use crate::render::escape::html as xml;
@@ -75,12 +75,12 @@ fn ground(out: &mut String, motion: &Motion) {
                 c[1] - up[1] * back + across[1] * side,
             ]
         };
-        let mut d = polyline(&[c, at(14.0, 8.0), at(14.0, -8.0)]);
+        let mut d = polyline(&[c, at(14.0, 8.0), at(14.0, -8.0)], num);
         d.push('Z');
-        d.push_str(&polyline(&[at(14.0, -12.0), at(14.0, 12.0)]));
+        d.push_str(&polyline(&[at(14.0, -12.0), at(14.0, 12.0)], num));
         for k in 0..5 {
             let side = -12.0 + 6.0 * f64::from(k);
-            d.push_str(&polyline(&[at(14.0, side), at(19.0, side - 4.0)]));
+            d.push_str(&polyline(&[at(14.0, side), at(19.0, side - 4.0)], num));
         }
         let _ = writeln!(out, "<path d=\"{d}\"/>");
     }
@@ -89,24 +89,10 @@ fn ground(out: &mut String, motion: &Motion) {
         let _ = writeln!(
             out,
             "<path d=\"{}\" stroke-dasharray=\"6 3\"/>",
-            polyline(&track)
+            polyline(&track, num)
         );
     }
     out.push_str("</g>\n");
-}
-
-fn polyline(points: &[P2]) -> String {
-    let mut d = String::new();
-    for (i, [x, y]) in points.iter().enumerate() {
-        let _ = write!(
-            d,
-            "{}{} {}",
-            if i == 0 { "M" } else { "L" },
-            num(*x),
-            num(*y)
-        );
-    }
-    d
 }
 
 /// The springs as zig-zags that stretch with the motion.
@@ -123,7 +109,7 @@ fn springs(out: &mut String, motion: &Motion, timing: &Timing) {
                 let mut points: Vec<P2> = legs.first().map_or(Vec::new(), |leg| leg[..2].to_vec());
                 points.extend(zigzag(a1, b1));
                 points.extend(legs.get(1).map_or(Vec::new(), |leg| vec![leg[1], leg[0]]));
-                polyline(&points)
+                polyline(&points, num)
             })
             .collect();
         animated_path(out, "spring", &shapes, timing);
@@ -170,7 +156,7 @@ fn dampers(out: &mut String, motion: &Motion, timing: &Timing) {
         let shapes: Vec<String> = ends
             .iter()
             .map(|([a, b], legs)| {
-                let legs: String = legs.iter().map(|leg| polyline(leg)).collect();
+                let legs: String = legs.iter().map(|leg| polyline(leg, num)).collect();
                 legs + &dashpot.path(*a, *b)
             })
             .collect();
@@ -225,7 +211,7 @@ impl Dashpot {
             vec![from(b, piston, 6.0), from(b, piston, -6.0)],
             vec![from(b, piston, 0.0), b],
         ];
-        parts.iter().map(|part| polyline(part)).collect()
+        parts.iter().map(|part| polyline(part, num)).collect()
     }
 }
 

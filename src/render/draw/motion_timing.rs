@@ -2,18 +2,45 @@
 //! looping) and how numbers and inks are written.
 
 use super::motion::Placed;
-use super::picture::Ink;
+use super::picture::{Ink, P2};
 use std::fmt::Write;
 
 /// Three decimals, no negative zero, no trailing zeros.
 pub(super) fn num(x: f64) -> String {
-    let text = format!("{x:.3}");
+    decimals(x, 3)
+}
+
+/// A number only the eye reads: to a tenth of a pixel, which keeps a long motion's file
+/// small.
+pub(super) fn coarse(x: f64) -> String {
+    decimals(x, 1)
+}
+
+fn decimals(x: f64, places: usize) -> String {
+    let text = format!("{x:.places$}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" {
         "0".into()
     } else {
         text.to_string()
     }
+}
+
+/// Path data through `points`, each number written by `write`.
+pub(super) fn polyline(points: &[P2], write: fn(f64) -> String) -> String {
+    let mut d = String::new();
+    for (i, [x, y]) in points.iter().enumerate() {
+        let _ = std::fmt::Write::write_fmt(
+            &mut d,
+            format_args!(
+                "{}{} {}",
+                if i == 0 { "M" } else { "L" },
+                write(*x),
+                write(*y)
+            ),
+        );
+    }
+    d
 }
 
 /// Six significant digits, for the sheets' scales (metres to pixels).
