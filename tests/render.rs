@@ -103,14 +103,14 @@ fn large_system_latex_compiles() {
         .map(|i| format!("m L^{{2}} \\cos(q_{{{i}}}) \\ddot{{q}}_{{{i}}}"))
         .collect::<Vec<_>>()
         .join(" + ");
-    solution.equations[0].simplified_tex = format!("{long} = 0");
-    solution.equations[1].grouped_tex = format!("\\left({long}\\right) = 0");
+    solution.equations[0].simplified_tex = format!("{long} = 0").into();
+    solution.equations[1].grouped_tex = format!("\\left({long}\\right) = 0").into();
     solution.matrix.whole = None;
     solution.matrix.entries = (1..=6)
         .map(|row| mbd_tutor::render::context::MatrixEntry {
             row,
             column: "b".into(),
-            value_tex: format!("b_{{{row}}} = {long}"),
+            value_tex: format!("b_{{{row}}} = {long}").into(),
             ..Default::default()
         })
         .collect();
@@ -173,12 +173,11 @@ fn markdown_math_is_dollar_delimited_and_matches_snapshot() {
 fn hostile_sample() -> Solution {
     let mut s = sample();
     s.title = HOSTILE.into();
-    s.statement = Some(format!(
-        "{HOSTILE}\n\n{{% include \"/etc/passwd\" %}} second paragraph"
-    ));
+    s.statement =
+        Some(format!("{HOSTILE}\n\n{{% include \"/etc/passwd\" %}} second paragraph").into());
     s.constants[0].description = HOSTILE.into();
     // A unit reaches the page only as `units::unit_tex` sets it.
-    s.constants[0].unit_tex = mbd_tutor::render::units::unit_tex(HOSTILE);
+    s.constants[0].unit_tex = mbd_tutor::render::units::unit_tex(HOSTILE).into();
     s.coordinates[0].description = HOSTILE.into();
     s.free_bodies[0].contact[0].label = HOSTILE.into();
     s.plan.rejected[0].reason = HOSTILE.into();

@@ -4,6 +4,7 @@
 use crate::cli::{Common, ExplainArgs, FormatArg};
 use crate::error::BatchError;
 use crate::output::write_output;
+use crate::render::text::FileName;
 use crate::render::{self, Format, Solution};
 use crate::solution;
 use crate::Error;
@@ -79,7 +80,7 @@ fn explain_version(
             .filter(|p| !p.image_svg.is_empty() && !p.svg_file.is_empty())
         {
             write_output(
-                Some(&directory.join(&plot.svg_file)),
+                Some(&directory.join(plot.svg_file.as_str())),
                 plot.image_svg.as_bytes(),
             )?;
         }
@@ -119,9 +120,11 @@ pub fn rendered(
     let mut solution = solution::handout(&problem, super::method(args.common.method), &settings)?;
     for plot in &mut solution.simulation.plots {
         // On standard output there is nowhere to put plot files, so nothing refers to one.
-        plot.svg_file = output
-            .map(|path| format!("{}-{}.svg", file_stem(path), plot.kind))
-            .unwrap_or_default();
+        plot.svg_file = FileName::from(
+            output
+                .map(|path| format!("{}-{}.svg", file_stem(path), plot.kind))
+                .unwrap_or_default(),
+        );
     }
     let text = render::render(
         &solution,

@@ -2,6 +2,7 @@
 //! Levinson write `ω^{B3}_r = ᴮ³C^{B2} ω^{B2}_r (r = q_1, …, q_6)` rather than six times.
 
 use super::context::Named;
+use super::text::Math;
 
 /// `list` with the definitions that read the same but for their speed (`_{q_{1},x}` in a
 /// name's index, wherever it stands) merged into one, written with `r` and the speeds it
@@ -19,9 +20,11 @@ pub fn merged(list: Vec<Named>, speeds: &[String], plain: &[String]) -> Vec<Name
             continue;
         };
         let key = Named {
-            definition_tex: named
-                .definition_tex
-                .replace(&format!("_{{{},", speeds[r]), "_{r,"),
+            definition_tex: Math::from(
+                named
+                    .definition_tex
+                    .replace(&format!("_{{{},", speeds[r]), "_{r,"),
+            ),
             note: named.note.replace(&format!(" {}'", plain[r]), " r"),
         };
         match groups
@@ -37,20 +40,21 @@ pub fn merged(list: Vec<Named>, speeds: &[String], plain: &[String]) -> Vec<Name
         .map(|(key, rs)| match rs.as_slice() {
             // Alone: as it was, its own speed written back.
             [r] => Named {
-                definition_tex: key
-                    .definition_tex
-                    .replace("_{r,", &format!("_{{{},", speeds[*r])),
+                definition_tex: Math::from(
+                    key.definition_tex
+                        .replace("_{r,", &format!("_{{{},", speeds[*r])),
+                ),
                 note: key.note.replace(" r,", &format!(" {}',", plain[*r])),
             },
             [] => key,
             _ => {
                 let list: Vec<&str> = rs.iter().map(|&r| speeds[r].as_str()).collect();
                 Named {
-                    definition_tex: format!(
+                    definition_tex: Math::from(format!(
                         "{} \\quad (r = {})",
                         key.definition_tex,
                         list.join(", ")
-                    ),
+                    )),
                     note: key.note,
                 }
             }

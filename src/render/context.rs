@@ -1,21 +1,26 @@
 //! The worked solution as plain data: the Tera context of the templates.
 //!
-//! Everything is already a string, so the templates hold layout only. The renderer treats a
-//! string by the name of its field, and every template relies on it:
+//! Everything is already a string, so the templates hold layout only. Each string is of a
+//! kind of [`super::text`], and the renderer treats it by its kind:
 //!
-//! | field name | holds | Markdown | LaTeX | HTML |
+//! | type | holds | Markdown | LaTeX | HTML |
 //! |---|---|---|---|---|
-//! | ends in `_tex` | LaTeX math, without `$` | verbatim, inside `$…$` | verbatim | converted to MathML (use `\| safe`) |
-//! | ends in `_latex` | LaTeX code (a pgfplots picture) | removed | verbatim | removed |
-//! | ends in `_svg` | an SVG document | removed | removed | a `data:` URI for `<img src>` (use `\| safe`) |
-//! | ends in `svg_inline` | an SVG element to inline | verbatim | removed | verbatim (use `\| safe`) |
-//! | `statement`, `question` | the problem's markup: paragraphs, lists, emphasis, `$…$` math (see [`super::markup`]) | Markdown, text escaped, math checked | LaTeX, the same | escaped HTML with MathML (use `\| safe`) |
-//! | anything else | plain text: user text, names, numbers | escaped | escaped | escaped by Tera |
+//! | [`Math`] | LaTeX math, without `$` | verbatim, inside `$…$` | verbatim | converted to MathML (use `\| safe`) |
+//! | [`LatexCode`] | LaTeX code (a pgfplots or TikZ picture) | removed | verbatim | removed |
+//! | [`SvgDocument`] | an SVG document | removed | removed | a `data:` URI for `<img src>` (use `\| safe`) |
+//! | [`InlineSvg`] | an SVG element to inline | verbatim | removed | verbatim (use `\| safe`) |
+//! | [`Markup`], [`MarkupLine`] | the problem's markup: paragraphs, lists, emphasis, `$…$` math (see [`super::markup`]) | Markdown, text escaped, math checked | LaTeX, the same | escaped HTML with MathML (use `\| safe`) |
+//! | [`FileName`] | a file the Markdown links to | percent-encoded | as is | as is |
+//! | `String` | plain text: user text, names, numbers | escaped | escaped | escaped by Tera |
+//!
+//! The fields keep the names the templates know them by (`…_tex` for math, `…_latex`,
+//! `…_svg`), but the type, not the name, decides.
 //!
 //! So user text (titles, descriptions, the statement) is only ever a value in the context,
 //! never part of a template's source, and can never be evaluated by Tera or by TeX.
 //! Numbers are formatted before they get here, with [`crate::symbolic::format::fixed`].
 
+use super::text::{FileName, InlineSvg, LatexCode, Markup, MarkupLine, Math, SvgDocument};
 use serde::Serialize;
 
 pub use super::figure::Figure;
@@ -28,7 +33,7 @@ pub struct Solution {
     pub title: String,
     /// The problem as given to the student (user text in the small Markdown of
     /// [`super::markup`]: paragraphs, lists, emphasis, `$…$` math).
-    pub statement: Option<String>,
+    pub statement: Option<Markup>,
     /// `planar` or `spatial`.
     pub dimension: String,
     /// The method's name as a sentence uses it, e.g. `the Motion Law`.
@@ -56,7 +61,7 @@ pub struct Solution {
     pub constraints: Vec<ConstraintView>,
     /// Step 1: which coordinates and rates the constraints solve for and why, and which
     /// constraints were left out.
-    pub constraint_notes: Vec<String>,
+    pub constraint_notes: Vec<MarkupLine>,
     /// Step 1: the picture of the system at the initial state (empty when not drawn).
     pub configuration: Figure,
     /// Step 2: the free bodies the planner uses.
@@ -111,11 +116,11 @@ pub struct Solution {
 pub struct ConstraintView {
     /// What the row constrains, e.g. `\text{loop closure at R} \cdot \hat{\mathbf{b}}_{x}`
     /// (the direction of the reaction that enforces it) or `\text{prescribed motion of } q_{1}`.
-    pub name_tex: String,
+    pub name_tex: Math,
     /// `position` (holonomic) or `velocity` (nonholonomic).
     pub level: String,
     /// The equation, `… = 0`.
-    pub equation_tex: String,
+    pub equation_tex: Math,
     /// Too long for the table's column: displayed below it at full width, the table
     /// pointing to it by number.
     pub below: bool,
@@ -127,13 +132,13 @@ pub struct Frame {
     /// The frame's name, e.g. `A`.
     pub name: String,
     /// Its unit vectors, e.g. `\hat{\mathbf{a}}_{x}, \hat{\mathbf{a}}_{y}, \hat{\mathbf{a}}_{z}`.
-    pub frame_tex: String,
+    pub frame_tex: Math,
     /// The body it is fixed in, e.g. `A` (`N` for the ground).
     pub fixed_in: String,
     /// The frame it is oriented relative to (empty for `N`).
     pub parent: String,
     /// Its orientation relative to `parent`, e.g. `\text{rotated by } q_{1} \text{ about } \hat{\mathbf{n}}_{z}`.
-    pub orientation_tex: String,
+    pub orientation_tex: Math,
 }
 
 /// A frame that turns with a body but does not spin with it, and why it is used.
@@ -145,9 +150,9 @@ pub struct SpinFrame {
     /// The spinning body's name.
     pub body: String,
     /// Its symmetry axis, e.g. `\hat{\mathbf{z}}_{\mathrm{top}}`.
-    pub axis_tex: String,
+    pub axis_tex: Math,
     /// The spin angle, e.g. `\phi`.
-    pub spin_tex: String,
+    pub spin_tex: Math,
     /// Whether the frame is the parent's own (a revolute joint) rather than one added.
     pub parents: bool,
 }
@@ -156,15 +161,15 @@ pub struct SpinFrame {
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Coordinate {
     /// The coordinate as a symbol, e.g. `q_{1}`.
-    pub name_tex: String,
+    pub name_tex: Math,
     /// Its rate, e.g. `\dot{q}_{1}`.
-    pub rate_tex: String,
+    pub rate_tex: Math,
     /// What it measures (user text; may be empty).
-    pub description: String,
+    pub description: MarkupLine,
     /// The joint that owns it and the joint's type, e.g. `O (revolute)`.
     pub joint: String,
     /// Its unit in LaTeX, e.g. `\\mathrm{rad}` (see `units`).
-    pub unit_tex: String,
+    pub unit_tex: Math,
     /// Its initial value, formatted.
     pub initial: String,
     /// Its initial rate, formatted.
@@ -177,35 +182,35 @@ pub struct SpeedsView {
     /// One row per speed.
     pub rows: Vec<SpeedRow>,
     /// The kinematic differential equations `u = W(q) q'` as one matrix equation.
-    pub matrix_tex: String,
+    pub matrix_tex: Math,
     /// Their inverse, one rate per line: `\dot{q}_s = Σ_r W⁻¹_{sr} u_r`.
-    pub inverse_tex: Vec<String>,
+    pub inverse_tex: Vec<Math>,
 }
 
 /// A declared generalized speed.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct SpeedRow {
     /// The speed as a symbol, e.g. `u_{1}`.
-    pub name_tex: String,
+    pub name_tex: Math,
     /// Its definition, e.g. `u_{2} = \dot{q}_{1} + \dot{q}_{2}`.
-    pub definition_tex: String,
+    pub definition_tex: Math,
     /// Its unit in LaTeX (may be empty).
-    pub unit_tex: String,
+    pub unit_tex: Math,
     /// What it is (user text; may be empty).
-    pub description: String,
+    pub description: MarkupLine,
 }
 
 /// A constant of the problem.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Constant {
     /// The constant as a symbol, e.g. `L`.
-    pub name_tex: String,
+    pub name_tex: Math,
     /// Its value (after `--set`), formatted.
     pub value: String,
     /// Its unit in LaTeX (may be empty).
-    pub unit_tex: String,
+    pub unit_tex: Math,
     /// What it is (user text; may be empty).
-    pub description: String,
+    pub description: MarkupLine,
 }
 
 /// One free body with its forces, sorted the way the Motion Law sorts them.
@@ -214,7 +219,7 @@ pub struct FreeBody {
     /// Its name, e.g. `A` or `A+B`.
     pub name: String,
     /// Its name in LaTeX, e.g. `A + B`, `\mathrm{link}_{1}`.
-    pub name_tex: String,
+    pub name_tex: Math,
     /// The bodies it contains, e.g. `A, B`.
     pub bodies: String,
     /// Contact forces: reactions, springs, applied loads, joint loads.
@@ -233,23 +238,23 @@ pub struct Force {
     /// What it is, e.g. `pin O` or the load's name (user text).
     pub label: String,
     /// The vector, e.g. `F^{O}_{x} \hat{\mathbf{n}}_{x} + F^{O}_{y} \hat{\mathbf{n}}_{y}`.
-    pub vector_tex: String,
+    pub vector_tex: Math,
     /// Where it acts, or for a couple empty, e.g. `A^{*}`.
-    pub point_tex: String,
+    pub point_tex: Math,
 }
 
 /// A named quantity and what it stands for.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Named {
     /// The definition, e.g. `\ell_{1} = \sqrt{x^{2} + y^{2}}`.
-    pub definition_tex: String,
+    pub definition_tex: Math,
     /// What it is (plain text; may be empty), e.g. `length of the line from A1 to P1`.
     pub note: String,
 }
 
 impl Named {
     /// `definition_tex` with its `note`.
-    pub fn new(definition_tex: impl Into<String>, note: impl Into<String>) -> Named {
+    pub fn new(definition_tex: impl Into<Math>, note: impl Into<String>) -> Named {
         Named {
             definition_tex: definition_tex.into(),
             note: note.into(),
@@ -262,7 +267,7 @@ impl Named {
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct WhereEntry {
     /// The definitions, e.g. `v^{B^*}_{q_{1},x} = -b s_{2}`, one or several.
-    pub definitions_tex: Vec<String>,
+    pub definitions_tex: Vec<Math>,
     /// What they are (plain text; may be empty), e.g. `partial velocities of B*`.
     pub note: String,
     /// Whether this is a group, written note first: `partial velocities of B*: …, …`.
@@ -306,28 +311,28 @@ pub struct PlanColumns {
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct PlanRow {
     /// The free body in LaTeX, e.g. `A + B` (empty for a constraint row).
-    pub free_body_tex: String,
+    pub free_body_tex: Math,
     /// The equation, e.g. `\sum \mathbf{M}_{O}`.
-    pub equation_tex: String,
+    pub equation_tex: Math,
     /// Its direction, e.g. `\hat{\mathbf{n}}_{z}`.
-    pub direction_tex: String,
+    pub direction_tex: Math,
     /// The unknowns it contains, e.g. `\ddot{q}_{1}, \ddot{q}_{2}`.
-    pub unknowns_tex: String,
+    pub unknowns_tex: Math,
 }
 
 /// A candidate equation the planner rejected.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Rejected {
     /// The free body in LaTeX, e.g. `A + B` (empty for a constraint row).
-    pub free_body_tex: String,
+    pub free_body_tex: Math,
     /// The equation, e.g. `\sum \mathbf{F}`.
-    pub equation_tex: String,
+    pub equation_tex: Math,
     /// Its direction.
-    pub direction_tex: String,
+    pub direction_tex: Math,
     /// Why it was not used (plain text), e.g. `brings in the reaction at P`.
     pub reason: String,
     /// The reaction components it names, if any, e.g. `F^{P}_{x}, F^{P}_{y}`.
-    pub reason_tex: String,
+    pub reason_tex: Math,
     /// Plain text after them, e.g. `, which is not asked for`.
     pub reason_after: String,
 }
@@ -345,17 +350,17 @@ pub struct Kinematics {
     /// The body's name.
     pub body: String,
     /// Its angular velocity in N, e.g. `{}^{N}\boldsymbol{\omega}^{A} = \dot{q}_{1} \hat{\mathbf{n}}_{z}`.
-    pub omega_tex: String,
+    pub omega_tex: Math,
     /// Its angular acceleration in N.
-    pub alpha_tex: String,
+    pub alpha_tex: Math,
     /// The velocity of the pin that holds it to a moving parent, in N (empty without one).
-    pub pin_velocity_tex: String,
+    pub pin_velocity_tex: Math,
     /// The acceleration of that pin in N (empty when it shares the velocity's display).
-    pub pin_acceleration_tex: String,
+    pub pin_acceleration_tex: Math,
     /// The velocity of its mass center in N.
-    pub velocity_tex: String,
+    pub velocity_tex: Math,
     /// The acceleration of its mass center in N.
-    pub acceleration_tex: String,
+    pub acceleration_tex: Math,
 }
 
 /// One scalar equation of motion (or of a reaction).
@@ -363,14 +368,14 @@ pub struct Kinematics {
 pub struct Equation {
     /// Where it comes from: the free body, the sum and its direction, e.g.
     /// `A + B\colon \sum \mathbf{M}_{O} \cdot \hat{\mathbf{n}}_{z}`, or Kane's `r` and speed.
-    pub label_tex: String,
+    pub label_tex: Math,
     /// Plain words after it, e.g. `(a generalized speed)`; may be empty.
     pub label: String,
     /// The equation as formed, forces grouped, e.g. `\hat{\mathbf{n}}_{z} \cdot (…) = 0`.
-    pub grouped_tex: String,
+    pub grouped_tex: Math,
     /// The same equation simplified, `… = 0`; when that is too long to read, the same
     /// with the coefficients of the matrix form by name, `A_{1,1} \ddot{q}_{1} + … = b_{1}`.
-    pub simplified_tex: String,
+    pub simplified_tex: Math,
     /// What introduces the simplified equation when it is not `Simplified:` (plain text;
     /// may be empty).
     pub simplified_note: String,
@@ -379,9 +384,9 @@ pub struct Equation {
     pub by_name: bool,
     /// Kane's rows: the generalized active force, e.g. `F_{1} = -m g L \sin(q_{1})`
     /// (empty for the other methods; then `grouped_tex` shows the row as formed).
-    pub active_tex: String,
+    pub active_tex: Math,
     /// Kane's rows: the generalized inertia force, e.g. `F^{*}_{1} = -m L^{2} \ddot{q}_{1}`.
-    pub inertia_tex: String,
+    pub inertia_tex: Math,
 }
 
 /// One line of Kane's table of partial velocities: a generalized speed and a body.
@@ -391,14 +396,14 @@ pub struct PartialVelocity {
     pub r: usize,
     /// The speed, e.g. `u_{1} = \dot{q}_{1}`, on the first line of each speed; empty on
     /// the others.
-    pub speed_tex: String,
+    pub speed_tex: Math,
     /// The body's name.
     pub body: String,
     /// The partial velocity of its mass centre, e.g.
     /// `{}^{N}\mathbf{v}^{A^*}_{1} = \frac{L}{2} \hat{\mathbf{a}}_{y}`.
-    pub velocity_tex: String,
+    pub velocity_tex: Math,
     /// Its partial angular velocity, e.g. `{}^{N}\boldsymbol{\omega}^{A}_{1} = \hat{\mathbf{n}}_{z}`.
-    pub omega_tex: String,
+    pub omega_tex: Math,
 }
 
 /// The dependent rates as a linear map of the independent ones at the initial state, and
@@ -406,22 +411,22 @@ pub struct PartialVelocity {
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct DependentSpeeds {
     /// `q'_D = C q'_U (+ …)` at the initial state, with `C` in numbers.
-    pub relation_tex: String,
+    pub relation_tex: Math,
     /// The same, one equation per dependent rate, `\dot{x} = -0.3 \dot{\theta}_{R}`.
-    pub relations_tex: Vec<String>,
+    pub relations_tex: Vec<Math>,
     /// Kane's equations for the independent speeds, the constraint forces eliminated.
-    pub kane_tex: String,
+    pub kane_tex: Math,
     /// The reduced partial velocities of the mass centres at the initial state, one per
     /// body and independent speed, in `N`'s unit vectors.
-    pub reduced_tex: Vec<String>,
+    pub reduced_tex: Vec<Math>,
     /// Kane's method with independent speeds (empty otherwise): what the speeds are and
     /// why, before `relation_tex`, in markup.
-    pub kane_speeds_notes: Vec<String>,
+    pub kane_speeds_notes: Vec<MarkupLine>,
     /// After the rows: which forces dropped out and why, the auxiliary speeds, and the
     /// order of the solve, in markup.
-    pub kane_solve_notes: Vec<String>,
+    pub kane_solve_notes: Vec<MarkupLine>,
     /// Kane's rows with the constraint forces kept: why, in markup (empty otherwise).
-    pub kane_kept_note: String,
+    pub kane_kept_note: MarkupLine,
 }
 
 /// The equations as `A x = b`.
@@ -434,7 +439,7 @@ pub struct MatrixForm {
     /// For a system too large to print every entry as a formula, `A` and `b` at the initial
     /// state as tables of numbers (`array`s), in blocks of columns when the system is wide,
     /// `b` in the last; empty otherwise.
-    pub value_tables_tex: Vec<String>,
+    pub value_tables_tex: Vec<Math>,
     /// With the tables of values, what each kind of entry is, so that every value can be
     /// traced.
     pub rules: Vec<Named>,
@@ -442,27 +447,27 @@ pub struct MatrixForm {
     /// not zero, as tables of dots (`array`s) in blocks; the entries are read off step 5,
     /// but for the few rows it writes by their coefficients' names (too long to print),
     /// whose values at the initial state are in `entries`. Empty otherwise.
-    pub pattern_tex: Vec<String>,
+    pub pattern_tex: Vec<Math>,
     /// The unknowns by column, where the entries name them `x_{j}`: `x_{1} = \ddot{q}_{1}`.
-    pub columns_tex: Vec<String>,
+    pub columns_tex: Vec<Math>,
     /// The rows listed entry by entry leave out those step 5 writes out in full, to be
     /// read off there: their numbers, `(1)--(9), (24)` (empty when none is left out).
-    pub read_off_tex: String,
+    pub read_off_tex: Math,
 }
 
 /// `A`, `x` and `b` as `bmatrix` environments.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct WholeMatrix {
     /// The coefficient matrix.
-    pub a_tex: String,
+    pub a_tex: Math,
     /// The unknowns, a column.
-    pub x_tex: String,
+    pub x_tex: Math,
     /// The right-hand side, a column.
-    pub b_tex: String,
+    pub b_tex: Math,
     /// `A` and `b` as one table: a column per unknown, headed by it, then `b`; a row per
     /// equation, led by its number in step 5 and what it sums, e.g. `(1)\; A{+}B\colon
     /// \sum \mathbf{M}_{O} \cdot \hat{\mathbf{n}}_{z}`.
-    pub table_tex: String,
+    pub table_tex: Math,
 }
 
 /// One entry of `A` or `b`.
@@ -473,26 +478,26 @@ pub struct MatrixEntry {
     /// The column, 1-based; `b` for the right-hand side.
     pub column: String,
     /// The entry, e.g. `A_{12} = \frac{m L^{2}}{2} \cos(q_{2})`.
-    pub value_tex: String,
+    pub value_tex: Math,
     /// On the first entry of each row, the row's equation as in [`WholeMatrix::table_tex`];
     /// empty on the others.
-    pub row_label_tex: String,
+    pub row_label_tex: Math,
     /// The column's unknown, e.g. `\ddot{q}_{2}`, or `\mathbf{b}`.
-    pub column_tex: String,
+    pub column_tex: Math,
     /// A whole row's entries, printed one after the other (a system too large to print an
     /// entry a line); empty otherwise.
-    pub values_tex: Vec<String>,
+    pub values_tex: Vec<Math>,
 }
 
 /// A number at the initial state.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct InitialValue {
     /// What it is, e.g. `\ddot{q}_{1}`.
-    pub name_tex: String,
+    pub name_tex: Math,
     /// Its value, formatted.
     pub value: String,
     /// Its unit in LaTeX (may be empty), e.g. `\\mathrm{rad/s^{2}}`.
-    pub unit_tex: String,
+    pub unit_tex: Math,
 }
 
 /// A friction site at the initial state: the textbook's process, step by step.
@@ -512,7 +517,7 @@ pub struct FrictionStep {
     /// Plain text.
     pub text: String,
     /// LaTeX math without `$`, shown on its own line; empty for none.
-    pub math_tex: String,
+    pub math_tex: Math,
 }
 
 /// The reaction at one joint, at the initial state.
@@ -527,9 +532,9 @@ pub struct Reaction {
     pub moment: String,
     /// The force as a vector with its unit, e.g.
     /// `\left(1.2 \hat{\mathbf{n}}_{x} + 19.6 \hat{\mathbf{n}}_{y}\right) \mathrm{N}`.
-    pub force_tex: String,
+    pub force_tex: Math,
     /// The moment as a vector with its unit.
-    pub moment_tex: String,
+    pub moment_tex: Math,
 }
 
 /// Step 6: the simulation that confirms the equations.
@@ -547,7 +552,7 @@ pub struct Simulation {
     /// A sentence about the outcome (plain text; may be empty).
     pub note: String,
     /// The motion as an animated SVG element, for the HTML page (empty otherwise).
-    pub motion_svg_inline: String,
+    pub motion_svg_inline: InlineSvg,
     /// The motion's length in seconds, and where the plots' time axis runs (fractions of
     /// their width), for the page's slider and the plots' markers.
     pub motion_duration: f64,
@@ -579,9 +584,9 @@ pub struct Plot {
     pub title: String,
     /// The SVG file name the Markdown refers to, relative to the output, e.g.
     /// `pendulum-energy.svg`; empty when no file is written (output to standard output).
-    pub svg_file: String,
+    pub svg_file: FileName,
     /// The SVG document, inlined into HTML.
-    pub image_svg: String,
+    pub image_svg: SvgDocument,
     /// A `tikzpicture` with a pgfplots `axis`, for LaTeX.
-    pub pgfplots_latex: String,
+    pub pgfplots_latex: LatexCode,
 }

@@ -4,6 +4,7 @@
 use super::context::WholeMatrix;
 use super::math_width::printed_width;
 use super::numbers::math_number;
+use super::text::Math;
 use crate::symbolic::format::fixed_or_zero;
 use crate::symbolic::Expr;
 
@@ -129,13 +130,13 @@ pub fn whole(
     };
     let rows: Vec<String> = a.iter().map(|row| row.join(" & ")).collect();
     Some(WholeMatrix {
-        a_tex: format!(
+        a_tex: Math::from(format!(
             "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
             rows.join(" \\\\ ")
-        ),
-        x_tex: column(x),
-        b_tex: column(b),
-        table_tex: array(labels, x, a, Some(b)),
+        )),
+        x_tex: Math::from(column(x)),
+        b_tex: Math::from(column(b)),
+        table_tex: Math::from(array(labels, x, a, Some(b))),
     })
 }
 

@@ -25,6 +25,7 @@ pub mod safe_math;
 pub mod sample;
 pub mod sections;
 pub mod tex_wrap;
+pub mod text;
 pub mod units;
 pub mod where_list;
 

@@ -1,14 +1,15 @@
 //! The [`Solution`] as a Tera context for one format, and the filters the templates use.
 //!
-//! Strings are treated by their field's name (see [`super::context`]): user text is escaped
-//! here for LaTeX and Markdown (Tera escapes HTML itself), math is left for the template,
-//! and what a format cannot show is removed.
+//! Strings are treated by their kind (see [`super::text`]): plain text is escaped here for
+//! LaTeX and Markdown (Tera escapes HTML itself), math is left for the template, the
+//! problem's markup is written out, and what a format cannot show is removed.
 
 use super::escape::{self, Lines};
 use super::line_break::{break_into_lines, displays, HTML_WIDTH, LINE_SYMBOLS, MEASURED_AT_MOST};
 use super::markup;
 use super::mathml::{self, Display};
 use super::numbers::{is_number, keeping_spaces, latex_number, unicode_number, with_numbers};
+use super::text::key;
 use super::{Format, Solution};
 use serde_json::Value;
 use std::collections::HashMap;
@@ -23,7 +24,7 @@ pub fn context(
     student: bool,
 ) -> Result<tera::Context, tera::Error> {
     let mut value = serde_json::to_value(solution).map_err(tera::Error::json)?;
-    walk(&mut value, "", format);
+    walk(&mut value, format);
     if let Value::Object(map) = &mut value {
         map.insert("student".into(), Value::Bool(student));
         map.insert("format".into(), Value::String(format.extension().into()));
@@ -31,65 +32,69 @@ pub fn context(
     tera::Context::from_value(value)
 }
 
-fn walk(value: &mut Value, key: &str, format: Format) {
+fn walk(value: &mut Value, format: Format) {
+    if let Some(prepared) = kind_of(value).map(|(kind, text)| typed(text, kind, format)) {
+        *value = Value::String(prepared);
+        return;
+    }
     match value {
         Value::Object(map) => {
-            for (key, item) in map.iter_mut() {
-                walk(item, key, format);
-            }
+            map.values_mut().for_each(|item| walk(item, format));
         }
-        Value::Array(items) => items.iter_mut().for_each(|item| walk(item, key, format)),
-        Value::String(text) => *text = string(text, key, format),
+        Value::Array(items) => items.iter_mut().for_each(|item| walk(item, format)),
+        Value::String(text) => *text = plain(text, format),
         _ => {}
     }
 }
 
-/// One string of the context, by its field's name.
-fn string(text: &str, key: &str, format: Format) -> String {
-    if key.ends_with("_tex") {
-        let math = text.split_whitespace().collect::<Vec<_>>().join(" ");
-        return match format {
-            // `|` would end a Markdown table cell, even inside `$…$` on GitHub.
-            Format::Markdown => math.replace("\\|", "\\Vert ").replace('|', "\\vert "),
-            Format::Latex | Format::Html => math,
-        };
-    }
-    if key.ends_with("_latex") {
-        return if format == Format::Latex {
+/// A typed string of [`super::text`], as it serializes: its kind's key and the string.
+fn kind_of(value: &Value) -> Option<(&str, &str)> {
+    let Value::Object(map) = value else {
+        return None;
+    };
+    let (kind, text) = map.iter().next()?;
+    (map.len() == 1 && kind.starts_with('\0')).then_some((kind.as_str(), text.as_str()?))
+}
+
+/// One typed string of the context, by its kind (see [`super::text`]).
+fn typed(text: &str, kind: &str, format: Format) -> String {
+    let kept_in = |formats: &[Format]| {
+        if formats.contains(&format) {
             text.to_string()
         } else {
             String::new()
-        };
-    }
-    if key.ends_with("svg_inline") {
-        return if format == Format::Latex {
-            String::new()
-        } else {
-            text.to_string()
-        };
-    }
-    if key.ends_with("_svg") {
-        return if format == Format::Html && !text.is_empty() {
-            format!("data:image/svg+xml;base64,{}", base64(text.as_bytes()))
-        } else {
-            String::new()
-        };
-    }
-    // The statement and the questions are the problem's own markup (see `markup`), written
-    // out here for every format; in HTML they are markup the template marks `safe`.
-    match key {
-        "statement" => return markup::render_blocks(text, format),
-        "question" => return markup::render_line(text, format),
-        "constraint_notes" | "kane_speeds_notes" | "kane_solve_notes" | "kane_kept_note" => {
-            return markup::render_line(text, format)
         }
-        // A description is the problem's own text, in the markup of its statement.
-        "description" => return markup::render_line(text, format),
-        _ => {}
+    };
+    match kind {
+        key::MATH => {
+            let math = text.split_whitespace().collect::<Vec<_>>().join(" ");
+            match format {
+                // `|` would end a Markdown table cell, even inside `$…$` on GitHub.
+                Format::Markdown => math.replace("\\|", "\\Vert ").replace('|', "\\vert "),
+                Format::Latex | Format::Html => math,
+            }
+        }
+        // The statement, the questions and the notes written in it are the problem's own
+        // markup (see `markup`), written out here for every format; in HTML they are
+        // markup the template marks `safe`.
+        key::MARKUP => markup::render_blocks(text, format),
+        key::MARKUP_LINE => markup::render_line(text, format),
+        key::LATEX_CODE => kept_in(&[Format::Latex]),
+        key::INLINE_SVG => kept_in(&[Format::Markdown, Format::Html]),
+        key::SVG_DOCUMENT if format == Format::Html && !text.is_empty() => {
+            format!("data:image/svg+xml;base64,{}", base64(text.as_bytes()))
+        }
+        key::SVG_DOCUMENT => String::new(),
+        key::FILE_NAME if format == Format::Markdown => percent_encode(text),
+        key::FILE_NAME => text.to_string(),
+        _ => plain(text, format),
     }
+}
+
+/// One plain-text string of the context: user text, names, numbers.
+fn plain(text: &str, format: Format) -> String {
     match format {
         Format::Latex if is_number(text) => latex_number(text),
-        Format::Markdown if key == "svg_file" => percent_encode(text),
         // Numbers written `1e-9` in a sentence read as powers of ten, as in print.
         Format::Latex => with_numbers(text, latex_number, |p| {
             keeping_spaces(p, |p| escape::latex(p, Lines::One))
@@ -248,48 +253,65 @@ mod tests {
 
     #[test]
     fn numbers_become_math_in_latex() {
-        assert_eq!(string("-12.5", "value", Format::Latex), "$-12.5$");
-        assert_eq!(string("1e-9", "value", Format::Latex), "$10^{-9}$");
-        assert_eq!(
-            string("-2.5e7", "value", Format::Latex),
-            "$-2.5 \\times 10^{7}$"
-        );
-        assert_eq!(string("1-2", "value", Format::Latex), "1-{}2");
+        assert_eq!(plain("-12.5", Format::Latex), "$-12.5$");
+        assert_eq!(plain("1e-9", Format::Latex), "$10^{-9}$");
+        assert_eq!(plain("-2.5e7", Format::Latex), "$-2.5 \\times 10^{7}$");
+        assert_eq!(plain("1-2", Format::Latex), "1-{}2");
+    }
+
+    /// `value` as the context holds it once prepared for `format`.
+    fn prepared(value: impl serde::Serialize, format: Format) -> Value {
+        let mut value = serde_json::to_value(value).unwrap();
+        walk(&mut value, format);
+        value
     }
 
     #[test]
-    fn fields_are_treated_by_name() {
-        assert_eq!(string("a_b", "description", Format::Latex), "a\\_b");
+    fn strings_are_treated_by_kind() {
+        use crate::render::text::*;
+        assert_eq!(prepared("a_b", Format::Latex), "a\\_b");
+        assert_eq!(prepared(MarkupLine::from("a_b"), Format::Latex), "a\\_b");
         assert_eq!(
-            string("\\left|x\\right|", "value_tex", Format::Markdown),
+            prepared(Math::from("\\left|x\\right|"), Format::Markdown),
             "\\left\\vert x\\right\\vert "
         );
         assert_eq!(
-            string("\\frac{a}{b}", "value_tex", Format::Latex),
+            prepared(Math::from("\\frac{a}{b}"), Format::Latex),
             "\\frac{a}{b}"
         );
-        assert_eq!(string("\\draw", "pgfplots_latex", Format::Html), "");
+        // A plain string that looks like math is still text.
         assert_eq!(
-            string("<svg/>", "image_svg", Format::Html),
+            prepared("\\frac{a}{b}", Format::Latex),
+            "$\\backslash$frac\\{a\\}\\{b\\}"
+        );
+        assert_eq!(prepared(LatexCode::from("\\draw"), Format::Html), "");
+        assert_eq!(prepared(LatexCode::from("\\draw"), Format::Latex), "\\draw");
+        assert_eq!(prepared(InlineSvg::from("<svg/>"), Format::Latex), "");
+        assert_eq!(
+            prepared(SvgDocument::from("<svg/>"), Format::Html),
             "data:image/svg+xml;base64,PHN2Zy8+"
         );
-        assert_eq!(string("a b.svg", "svg_file", Format::Markdown), "a%20b.svg");
-        assert_eq!(string("<b>", "title", Format::Html), "<b>");
+        assert_eq!(
+            prepared(FileName::from("a b.svg"), Format::Markdown),
+            "a%20b.svg"
+        );
+        assert_eq!(prepared("<b>", Format::Html), "<b>");
+        // Typed strings inside lists and structs.
+        assert_eq!(
+            prepared(vec![Math::from("x"), Math::from("a|b")], Format::Markdown),
+            serde_json::json!(["x", "a\\vert b"])
+        );
     }
 
     #[test]
     fn scientific_numbers_in_text_read_as_powers_of_ten() {
-        let latex = string(
-            "tolerance 1e-9, hold to -1.77636e-15.",
-            "note",
-            Format::Latex,
-        );
+        let latex = plain("tolerance 1e-9, hold to -1.77636e-15.", Format::Latex);
         assert_eq!(
             latex,
             "tolerance $10^{-9}$, hold to $-1.77636 \\times 10^{-15}$."
         );
-        let html = string("value 5.99959e-10 of q1e2 and 3e8m", "note", Format::Html);
+        let html = plain("value 5.99959e-10 of q1e2 and 3e8m", Format::Html);
         assert_eq!(html, "value 5.99959×10⁻¹⁰ of q1e2 and 3e8m");
-        assert_eq!(string("1e-6", "tolerance", Format::Markdown), "10⁻⁶");
+        assert_eq!(plain("1e-6", Format::Markdown), "10⁻⁶");
     }
 }

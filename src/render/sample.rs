@@ -8,6 +8,7 @@
 //! `L = 0.5 m`, `g = 9.81 m/s^2`, released from rest at `q1 = 0.5`, `q2 = 0`.
 
 use super::context::*;
+use super::text::{FileName, LatexCode, Markup, MarkupLine, Math, SvgDocument};
 
 fn s(text: &str) -> String {
     text.to_string()
@@ -21,9 +22,9 @@ const B: &str = "\\hat{\\mathbf{b}}";
 pub fn sample() -> Solution {
     Solution {
         title: s("Double pendulum of two uniform rods"),
-        statement: Some(s("Two uniform rods A and B, each of mass m and length L, are pinned together at P; \
+        statement: Some(Markup::from(s("Two uniform rods A and B, each of mass m and length L, are pinned together at P; \
             rod A hangs from a fixed pin at O. The system is released from rest with q1 = 0.5 rad and q2 = 0.\n\n\
-            Find the angular accelerations of the rods and the reaction at O at the instant of release.")),
+            Find the angular accelerations of the rods and the reaction at O at the instant of release."))),
         dimension: s("planar"),
         method: s("the Motion Law"),
         student: false,
@@ -80,16 +81,16 @@ pub fn sample() -> Solution {
             joint: s("O"),
             force: s("(-7.07557, 15.7546, 0) N"),
             moment: s("(0, 0, 0) N m"),
-            force_tex: format!("\\left(-7.07557 {N}_{{x}} + 15.7546 {N}_{{y}}\\right) \\mathrm{{N}}"),
-            moment_tex: s("\\mathbf{0} \\; \\mathrm{N\\,m}"),
+            force_tex: Math::from(format!("\\left(-7.07557 {N}_{{x}} + 15.7546 {N}_{{y}}\\right) \\mathrm{{N}}")),
+            moment_tex: Math::from(s("\\mathbf{0} \\; \\mathrm{N\\,m}")),
         }],
         simulation: simulation(),
         linearization: None,
         answers: vec![super::sections::AnswerView {
-            question: s("Find the angular acceleration of rod A at the instant of release."),
-            at_tex: s("t = 0\\ \\mathrm{s}"),
+            question: MarkupLine::from(s("Find the angular acceleration of rod A at the instant of release.")),
+            at_tex: Math::from(s("t = 0\\ \\mathrm{s}")),
             at_note: s("the initial state"),
-            values_tex: vec![s("\\ddot{q}_{1} = -12.0939\\ \\mathrm{rad}/\\mathrm{s}^{2}")],
+            values_tex: vec![Math::from(s("\\ddot{q}_{1} = -12.0939\\ \\mathrm{rad}/\\mathrm{s}^{2}"))],
             note: String::new(),
         }],
     }
@@ -100,35 +101,39 @@ fn frames() -> Vec<Frame> {
     vec![
         Frame {
             name: s("N"),
-            frame_tex: triad(N),
+            frame_tex: Math::from(triad(N)),
             fixed_in: s("N"),
             parent: s(""),
-            orientation_tex: s(""),
+            orientation_tex: Math::from(s("")),
         },
         Frame {
             name: s("A"),
-            frame_tex: triad(A),
+            frame_tex: Math::from(triad(A)),
             fixed_in: s("A"),
             parent: s("N"),
-            orientation_tex: format!("\\text{{rotated by }} q_{{1}} \\text{{ about }} {N}_{{z}}"),
+            orientation_tex: Math::from(format!(
+                "\\text{{rotated by }} q_{{1}} \\text{{ about }} {N}_{{z}}"
+            )),
         },
         Frame {
             name: s("B"),
-            frame_tex: triad(B),
+            frame_tex: Math::from(triad(B)),
             fixed_in: s("B"),
             parent: s("A"),
-            orientation_tex: format!("\\text{{rotated by }} q_{{2}} \\text{{ about }} {A}_{{z}}"),
+            orientation_tex: Math::from(format!(
+                "\\text{{rotated by }} q_{{2}} \\text{{ about }} {A}_{{z}}"
+            )),
         },
     ]
 }
 
 fn coordinate(name: &str, rate: &str, description: &str, joint: &str, initial: &str) -> Coordinate {
     Coordinate {
-        name_tex: s(name),
-        rate_tex: s(rate),
-        description: s(description),
+        name_tex: Math::from(s(name)),
+        rate_tex: Math::from(s(rate)),
+        description: MarkupLine::from(s(description)),
         joint: s(joint),
-        unit_tex: s("\\mathrm{rad}"),
+        unit_tex: Math::from(s("\\mathrm{rad}")),
         initial: s(initial),
         initial_rate: s("0"),
     }
@@ -136,26 +141,26 @@ fn coordinate(name: &str, rate: &str, description: &str, joint: &str, initial: &
 
 fn constant(name: &str, value: &str, unit: &str, description: &str) -> Constant {
     Constant {
-        name_tex: s(name),
+        name_tex: Math::from(s(name)),
         value: s(value),
-        unit_tex: s(unit),
-        description: s(description),
+        unit_tex: Math::from(s(unit)),
+        description: MarkupLine::from(s(description)),
     }
 }
 
 fn value(name: &str, value: &str, unit: &str) -> InitialValue {
     InitialValue {
-        name_tex: s(name),
+        name_tex: Math::from(s(name)),
         value: s(value),
-        unit_tex: s(unit),
+        unit_tex: Math::from(s(unit)),
     }
 }
 
 fn force(label: &str, vector: String, point: &str) -> Force {
     Force {
         label: s(label),
-        vector_tex: vector,
-        point_tex: s(point),
+        vector_tex: Math::from(vector),
+        point_tex: Math::from(s(point)),
     }
 }
 
@@ -184,7 +189,7 @@ fn free_bodies() -> Vec<FreeBody> {
     vec![
         FreeBody {
             name: s("A+B"),
-            name_tex: s("A + B"),
+            name_tex: Math::from(s("A + B")),
             bodies: s("A, B"),
             contact: vec![force(
                 "pin O",
@@ -201,7 +206,7 @@ fn free_bodies() -> Vec<FreeBody> {
         },
         FreeBody {
             name: s("B"),
-            name_tex: s("B"),
+            name_tex: Math::from(s("B")),
             bodies: s("B"),
             contact: vec![force(
                 "pin P",
@@ -217,10 +222,10 @@ fn free_bodies() -> Vec<FreeBody> {
 
 fn plan() -> Plan {
     let row = |free_body: &str, equation: &str, direction: String, unknowns: &str| PlanRow {
-        free_body_tex: s(free_body),
-        equation_tex: s(equation),
-        direction_tex: direction,
-        unknowns_tex: s(unknowns),
+        free_body_tex: Math::from(s(free_body)),
+        equation_tex: Math::from(s(equation)),
+        direction_tex: Math::from(direction),
+        unknowns_tex: Math::from(s(unknowns)),
     };
     let accelerations = "\\ddot{q}_{1}, \\ddot{q}_{2}";
     let rows = vec![
@@ -253,11 +258,11 @@ fn plan() -> Plan {
         columns: super::plan_table::columns(&rows),
         rows,
         rejected: vec![Rejected {
-            free_body_tex: s("A"),
-            equation_tex: s("\\sum \\mathbf{M}_{O}"),
-            direction_tex: format!("{N}_{{z}}"),
+            free_body_tex: Math::from(s("A")),
+            equation_tex: Math::from(s("\\sum \\mathbf{M}_{O}")),
+            direction_tex: Math::from(format!("{N}_{{z}}")),
             reason: s("brings in the reaction at P"),
-            reason_tex: s("F^{P}_{x}, F^{P}_{y}"),
+            reason_tex: Math::from(s("F^{P}_{x}, F^{P}_{y}")),
             reason_after: s(", which is not asked for"),
         }],
         rejected_total: 1,
@@ -274,29 +279,29 @@ fn kinematics() -> Vec<Kinematics> {
     vec![
         Kinematics {
             body: s("A"),
-            omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{A}} = \\dot{{q}}_{{1}} {N}_{{z}}"),
-            alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{A}} = \\ddot{{q}}_{{1}} {N}_{{z}}"),
-            pin_velocity_tex: String::new(),
-            pin_acceleration_tex: String::new(),
-            velocity_tex: format!("{{}}^{{N}}\\mathbf{{v}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\dot{{q}}_{{1}} {A}_{{x}}"),
-            acceleration_tex: format!(
+            omega_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{A}} = \\dot{{q}}_{{1}} {N}_{{z}}")),
+            alpha_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{A}} = \\ddot{{q}}_{{1}} {N}_{{z}}")),
+            pin_velocity_tex: Math::from(String::new()),
+            pin_acceleration_tex: Math::from(String::new()),
+            velocity_tex: Math::from(format!("{{}}^{{N}}\\mathbf{{v}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\dot{{q}}_{{1}} {A}_{{x}}")),
+            acceleration_tex: Math::from(format!(
                 "{{}}^{{N}}\\mathbf{{a}}^{{A^{{*}}}} = \\frac{{L}}{{2}} \\ddot{{q}}_{{1}} {A}_{{x}} + \\frac{{L}}{{2}} \\dot{{q}}_{{1}}^{{2}} {A}_{{y}}"
-            ),
+            )),
         },
         Kinematics {
             body: s("B"),
-            omega_tex: format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}} = {rates} {N}_{{z}}"),
-            alpha_tex: format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{B}} = {accelerations} {N}_{{z}}"),
-            pin_velocity_tex: format!(
+            omega_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}} = {rates} {N}_{{z}}")),
+            alpha_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{B}} = {accelerations} {N}_{{z}}")),
+            pin_velocity_tex: Math::from(format!(
                 "{{}}^{{N}}\\mathbf{{v}}^{{P}} = L \\dot{{q}}_{{1}} {A}_{{x}}, \\qquad {{}}^{{N}}\\mathbf{{a}}^{{P}} = L \\ddot{{q}}_{{1}} {A}_{{x}} + L \\dot{{q}}_{{1}}^{{2}} {A}_{{y}}"
-            ),
-            pin_acceleration_tex: String::new(),
-            velocity_tex: format!(
+            )),
+            pin_acceleration_tex: Math::from(String::new()),
+            velocity_tex: Math::from(format!(
                 "{{}}^{{N}}\\mathbf{{v}}^{{B^{{*}}}} = {{}}^{{N}}\\mathbf{{v}}^{{P}} + \\frac{{L}}{{2}} {rates} {B}_{{x}}"
-            ),
-            acceleration_tex: format!(
+            )),
+            acceleration_tex: Math::from(format!(
                 "{{}}^{{N}}\\mathbf{{a}}^{{B^{{*}}}} = {{}}^{{N}}\\mathbf{{a}}^{{P}} + \\frac{{L}}{{2}} {accelerations} {B}_{{x}} + \\frac{{L}}{{2}} {rates}^{{2}} {B}_{{y}}"
-            ),
+            )),
         },
     ]
 }
@@ -318,65 +323,65 @@ fn equations() -> Vec<Equation> {
     let accelerations = "\\left(\\ddot{q}_{1} + \\ddot{q}_{2}\\right)";
     vec![
         Equation {
-            label_tex: format!("A + B\\colon \\sum \\mathbf{{M}}_{{O}} \\cdot {N}_{{z}}"),
+            label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{M}}_{{O}} \\cdot {N}_{{z}}")),
             label: String::new(),
-            grouped_tex: format!(
+            grouped_tex: Math::from(format!(
                 "{N}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{A^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} \\ddot{{q}}_{{1}} {N}_{{z}} \
                  + \\mathbf{{r}}^{{B^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
                 loads("A"),
                 loads("B")
-            ),
-            simplified_tex: format!(
+            )),
+            simplified_tex: Math::from(format!(
                 "m L^{{2}} \\left(\\frac{{5}}{{3}} + \\cos(q_{{2}})\\right) \\ddot{{q}}_{{1}} + m L^{{2}} \\left(\\frac{{1}}{{3}} + \\frac{{\\cos(q_{{2}})}}{{2}}\\right) \\ddot{{q}}_{{2}} \
                  - \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\left(2 \\dot{{q}}_{{1}} \\dot{{q}}_{{2}} + \\dot{{q}}_{{2}}^{{2}}\\right) \
                  + \\frac{{m g L}}{{2}} \\left(3 {s1} + {s12}\\right) = 0"
-            ),
+            )),
             simplified_note: String::new(),
             by_name: false,
-            active_tex: String::new(),
-            inertia_tex: String::new(),
+            active_tex: Math::from(String::new()),
+            inertia_tex: Math::from(String::new()),
         },
         Equation {
-            label_tex: format!("B\\colon \\sum \\mathbf{{M}}_{{P}} \\cdot {A}_{{z}}"),
+            label_tex: Math::from(format!("B\\colon \\sum \\mathbf{{M}}_{{P}} \\cdot {A}_{{z}}")),
             label: String::new(),
-            grouped_tex: format!(
+            grouped_tex: Math::from(format!(
                 "{A}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{B^{{*}}/P}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
                 loads("B")
-            ),
-            simplified_tex: format!(
+            )),
+            simplified_tex: Math::from(format!(
                 "m L^{{2}} \\left(\\frac{{1}}{{3}} + \\frac{{\\cos(q_{{2}})}}{{2}}\\right) \\ddot{{q}}_{{1}} + \\frac{{m L^{{2}}}}{{3}} \\ddot{{q}}_{{2}} \
                  + \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\dot{{q}}_{{1}}^{{2}} + \\frac{{m g L}}{{2}} {s12} = 0"
-            ),
+            )),
             simplified_note: String::new(),
             by_name: false,
-            active_tex: String::new(),
-            inertia_tex: String::new(),
+            active_tex: Math::from(String::new()),
+            inertia_tex: Math::from(String::new()),
         },
         Equation {
-            label_tex: format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{x}}"),
+            label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{x}}")),
             label: String::new(),
-            grouped_tex: format!("{N}_{{x}} \\cdot \\left({sum_forces}\\right) = 0"),
-            simplified_tex: format!(
+            grouped_tex: Math::from(format!("{N}_{{x}} \\cdot \\left({sum_forces}\\right) = 0")),
+            simplified_tex: Math::from(format!(
                 "F^{{O}}_{{x}} - m L \\left(\\frac{{3}}{{2}} \\left({c1} \\ddot{{q}}_{{1}} - {s1} \\dot{{q}}_{{1}}^{{2}}\\right) \
                  + \\frac{{1}}{{2}} \\left({c12} {accelerations} - {s12} {rates}^{{2}}\\right)\\right) = 0"
-            ),
+            )),
             simplified_note: String::new(),
             by_name: false,
-            active_tex: String::new(),
-            inertia_tex: String::new(),
+            active_tex: Math::from(String::new()),
+            inertia_tex: Math::from(String::new()),
         },
         Equation {
-            label_tex: format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{y}}"),
+            label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{y}}")),
             label: String::new(),
-            grouped_tex: format!("{N}_{{y}} \\cdot \\left({sum_forces}\\right) = 0"),
-            simplified_tex: format!(
+            grouped_tex: Math::from(format!("{N}_{{y}} \\cdot \\left({sum_forces}\\right) = 0")),
+            simplified_tex: Math::from(format!(
                 "F^{{O}}_{{y}} - 2 m g - m L \\left(\\frac{{3}}{{2}} \\left({s1} \\ddot{{q}}_{{1}} + {c1} \\dot{{q}}_{{1}}^{{2}}\\right) \
                  + \\frac{{1}}{{2}} \\left({s12} {accelerations} + {c12} {rates}^{{2}}\\right)\\right) = 0"
-            ),
+            )),
             simplified_note: String::new(),
             by_name: false,
-            active_tex: String::new(),
-            inertia_tex: String::new(),
+            active_tex: Math::from(String::new()),
+            inertia_tex: Math::from(String::new()),
         },
     ]
 }
@@ -417,11 +422,11 @@ fn matrix() -> MatrixForm {
     let rows: Vec<String> = a.iter().map(|row| row.join(" & ")).collect();
     MatrixForm {
         whole: Some(WholeMatrix {
-            a_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ ")),
-            x_tex: s("\\begin{bmatrix} \\ddot{q}_{1} \\\\ \\ddot{q}_{2} \\\\ F^{O}_{x} \\\\ F^{O}_{y} \\end{bmatrix}"),
-            b_tex: format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ ")),
+            a_tex: Math::from(format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ "))),
+            x_tex: Math::from(s("\\begin{bmatrix} \\ddot{q}_{1} \\\\ \\ddot{q}_{2} \\\\ F^{O}_{x} \\\\ F^{O}_{y} \\end{bmatrix}")),
+            b_tex: Math::from(format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", b.join(" \\\\ "))),
             // Too wide for one table on the page: the templates show A, x and b.
-            table_tex: String::new(),
+            table_tex: Math::from(String::new()),
         }),
         ..MatrixForm::default()
     }
@@ -491,8 +496,8 @@ fn plot(kind: &str, title: &str, first: &str, second: &str, unit: &str) -> Plot 
     Plot {
         kind: s(kind),
         title: s(title),
-        svg_file: format!("{kind}.svg"),
-        image_svg: s(svg),
-        pgfplots_latex: pgfplots,
+        svg_file: FileName::from(format!("{kind}.svg")),
+        image_svg: SvgDocument::from(s(svg)),
+        pgfplots_latex: LatexCode::from(pgfplots),
     }
 }

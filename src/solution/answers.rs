@@ -6,6 +6,7 @@ use crate::numeric::answers::{coordinate_unit, Answer, Quantity};
 use crate::numeric::system::ReactionColumn;
 use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
 use crate::render::sections::AnswerView;
+use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_unit_vector};
 use crate::symbolic::ComponentKind;
@@ -33,7 +34,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             view.values_tex = shown
                 .iter()
                 .map(|(found, value)| value_tex(problem, question, found, *value))
-                .collect();
+                .map(Math::from).collect();
             if let Some((left, iterations)) = answer.residual {
                 let plural = if iterations == 1 { "" } else { "s" };
                 view.note = format!(
@@ -58,11 +59,13 @@ pub fn blank(problem: &Problem) -> Vec<AnswerView> {
 fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
     let (at_tex, at_note) = at(problem, question);
     AnswerView {
-        question: question
-            .text
-            .clone()
-            .unwrap_or_else(|| asked(problem, question)),
-        at_tex,
+        question: MarkupLine::from(
+            question
+                .text
+                .clone()
+                .unwrap_or_else(|| asked(problem, question)),
+        ),
+        at_tex: Math::from(at_tex),
         at_note,
         values_tex: Vec::new(),
         note: String::new(),

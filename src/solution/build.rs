@@ -8,6 +8,7 @@ use super::tex::style_of;
 use crate::equations::Method;
 use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
 use crate::render::context::{Constant, Coordinate, Frame, Named, Plan, Simulation, Solution};
+use crate::render::text::{Markup, MarkupLine, Math};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
 
@@ -32,7 +33,7 @@ pub fn setup(problem: &Problem, method: Method) -> Solution {
 fn setup_styled(problem: &Problem, method: Method) -> Solution {
     Solution {
         title: problem.title.clone(),
-        statement: problem.statement.clone(),
+        statement: problem.statement.clone().map(Markup::from),
         dimension: match problem.dimension {
             Dimension::Two => "planar",
             Dimension::Three => "spatial",
@@ -94,24 +95,26 @@ fn frames(problem: &Problem) -> Vec<Frame> {
     };
     let mut frames = vec![Frame {
         name: "N".into(),
-        frame_tex: triad("N"),
+        frame_tex: Math::from(triad("N")),
         fixed_in: "N".into(),
         parent: String::new(),
-        orientation_tex: String::new(),
+        orientation_tex: Math::from(String::new()),
     }];
     for id in problem.body_ids() {
         let name = problem.body_name(id);
         let joint = problem.joint_of(id).map(|j| &problem.joints[j]);
         frames.push(Frame {
             name: name.to_string(),
-            frame_tex: triad(name),
+            frame_tex: Math::from(triad(name)),
             fixed_in: name.to_string(),
             parent: joint
                 .map(|j| problem.body_name(j.parent).to_string())
                 .unwrap_or_default(),
-            orientation_tex: joint
-                .map(|j| orientation_tex(problem, j))
-                .unwrap_or_default(),
+            orientation_tex: Math::from(
+                joint
+                    .map(|j| orientation_tex(problem, j))
+                    .unwrap_or_default(),
+            ),
         });
     }
     frames
@@ -215,11 +218,11 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
                 (None, CoordinateKind::Distance) => String::new(),
             };
             Coordinate {
-                name_tex: latex(&problem.coordinate_expr(i, 0)),
-                rate_tex: latex(&problem.coordinate_expr(i, 1)),
-                description: c.description.clone().unwrap_or_default(),
+                name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
+                rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
+                description: MarkupLine::from(c.description.clone().unwrap_or_default()),
                 joint: format!("{} ({})", joint.name, joint.kind.name()),
-                unit_tex: crate::render::units::unit_tex(&unit),
+                unit_tex: Math::from(crate::render::units::unit_tex(&unit)),
                 initial: fixed(c.initial),
                 initial_rate: fixed(c.rate),
             }
@@ -232,10 +235,12 @@ fn constants(problem: &Problem) -> Vec<Constant> {
         .constants
         .iter()
         .map(|c| Constant {
-            name_tex: latex_name(&c.name),
+            name_tex: Math::from(latex_name(&c.name)),
             value: fixed(c.value),
-            unit_tex: crate::render::units::unit_tex(c.unit.as_deref().unwrap_or_default()),
-            description: c.description.clone().unwrap_or_default(),
+            unit_tex: Math::from(crate::render::units::unit_tex(
+                c.unit.as_deref().unwrap_or_default(),
+            )),
+            description: MarkupLine::from(c.description.clone().unwrap_or_default()),
         })
         .collect()
 }

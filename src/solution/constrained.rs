@@ -9,6 +9,7 @@ use crate::mechanics::vector::Vector;
 use crate::mechanics::Model;
 use crate::problem::BodyId;
 use crate::render::context::{ConstraintView, DependentSpeeds};
+use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
@@ -58,26 +59,26 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 }
             }
             ConstraintView {
-                name_tex,
+                name_tex: Math::from(name_tex),
                 level: level.into(),
                 below: equation_tex.len() > LONGEST_IN_TABLE,
-                equation_tex,
+                equation_tex: Math::from(equation_tex),
             }
         })
         .collect();
     for site in velocities {
         let equation_tex = contact_velocity_tex(model, site);
         views.push(ConstraintView {
-            name_tex: format!(
+            name_tex: Math::from(format!(
                 "\\text{{the velocity of the contact point at {}}}",
                 crate::render::escape::latex(
                     &model.sites[site].name,
                     crate::render::escape::Lines::One
                 )
-            ),
+            )),
             level: "definition".into(),
             below: equation_tex.len() > LONGEST_IN_TABLE,
-            equation_tex,
+            equation_tex: Math::from(equation_tex),
         });
     }
     // Notes are written for the terminal, with `code` quotes; a handout shows the quoted
@@ -182,6 +183,7 @@ pub fn dependent_speeds(
                 numeric_sum(terms, 0.0).unwrap_or("0".into())
             )
         })
+        .map(Math::from)
         .collect();
     let kane_tex = "\\left(F_r + F_r^*\\right) + \\sum_{s} C_{sr} \\left(F_s + F_s^*\\right) = 0, \\quad r \\text{ independent}, \\; s \\text{ dependent}".to_string();
     // Reduced partial velocities: ṽ_r = v_r + Σ_s C_sr v_s for each mass centre.
@@ -220,20 +222,22 @@ pub fn dependent_speeds(
         }
     }
     Some(DependentSpeeds {
-        relation_tex,
+        relation_tex: Math::from(relation_tex),
         relations_tex,
-        kane_tex,
-        reduced_tex: reduced,
-        kane_kept_note: derivation
-            .kept_forces
-            .map(|why| {
-                format!(
+        kane_tex: Math::from(kane_tex),
+        reduced_tex: Math::all(reduced),
+        kane_kept_note: MarkupLine::from(
+            derivation
+                .kept_forces
+                .map(|why| {
+                    format!(
                     "Kane's rows here keep the forces that enforce the constraints as unknowns, \
                      rather than take the independent speeds alone: {}.",
                     why.reason()
                 )
-            })
-            .unwrap_or_default(),
+                })
+                .unwrap_or_default(),
+        ),
         ..DependentSpeeds::default()
     })
 }

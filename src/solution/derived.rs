@@ -10,6 +10,7 @@ use crate::problem::BodyId;
 use crate::render::context::{
     InitialValue, Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution,
 };
+use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_with_squares;
 use crate::symbolic::format::{fixed, fixed_or_zero};
 use crate::symbolic::named::{as_shown, named_definitions};
@@ -35,8 +36,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     let style = super::tex::style_of(problem).with_coordinates(&names);
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
-        (solution.constraints, solution.constraint_notes) =
-            super::constrained::constraints(derivation);
+        let constraint_notes;
+        (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
+        solution.constraint_notes = MarkupLine::all(constraint_notes);
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.force_definitions =
             crate::render::where_list::grouped(force_definitions(derivation));
@@ -84,7 +86,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .into_iter()
         .filter(|a| in_print(&a.name))
         .map(|a| Named {
-            definition_tex: format!("{} = {}", a.name, a.value),
+            definition_tex: Math::from(format!("{} = {}", a.name, a.value)),
             note: String::new(),
         })
         .collect();
@@ -96,11 +98,15 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .iter()
         .enumerate()
         .map(|(i, c)| InitialValue {
-            name_tex: latex(&problem.coordinate_expr(i, 2)),
+            name_tex: Math::from(latex(&problem.coordinate_expr(i, 2))),
             value: fixed_or_zero(initial.accelerations[i]),
             unit_tex: match c.kind {
-                crate::problem::CoordinateKind::Angle => crate::render::units::unit_tex("rad/s^2"),
-                crate::problem::CoordinateKind::Distance => crate::render::units::unit_tex("m/s^2"),
+                crate::problem::CoordinateKind::Angle => {
+                    Math::from(crate::render::units::unit_tex("rad/s^2"))
+                }
+                crate::problem::CoordinateKind::Distance => {
+                    Math::from(crate::render::units::unit_tex("m/s^2"))
+                }
             },
         })
         .collect();
@@ -121,8 +127,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
                 joint: joint.clone(),
                 force: triple(f),
                 moment: triple(m),
-                force_tex: numeric_vector_tex(frame, f, "N"),
-                moment_tex: numeric_vector_tex(frame, m, "N\\,m"),
+                force_tex: Math::from(numeric_vector_tex(frame, f, "N")),
+                moment_tex: Math::from(numeric_vector_tex(frame, m, "N\\,m")),
             }
         })
         .collect();
@@ -200,11 +206,11 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
     definitions
         .iter()
         .map(|d| Named {
-            definition_tex: format!(
+            definition_tex: Math::from(format!(
                 "{} = {}",
                 d.latex().unwrap_or_default(),
                 latex_with_squares(&simplify(d.value()))
-            ),
+            )),
             note: d.note().to_string(),
         })
         .collect()
@@ -219,22 +225,22 @@ pub fn plan(derivation: &Derivation) -> Plan {
         .map(|row| PlanRow {
             // A constraint row is no free body's equation.
             free_body_tex: if matches!(row.sum, Sum::Constraint { .. }) {
-                String::new()
+                Math::from(String::new())
             } else {
-                bodies_tex(derivation, &row.free_body)
+                Math::from(bodies_tex(derivation, &row.free_body))
             },
-            equation_tex: super::tex::sum_tex(derivation, &row.sum),
+            equation_tex: Math::from(super::tex::sum_tex(derivation, &row.sum)),
             direction_tex: match (&row.direction, &row.sum) {
-                (Some(d), _) => d.latex.clone(),
+                (Some(d), _) => Math::from(d.latex.clone()),
                 // A contact's or a closure's row: along its reaction component; any other
                 // constraint differentiated in time, short enough for the table's column.
-                (None, Sum::Constraint { name }) => {
+                (None, Sum::Constraint { name }) => Math::from(
                     super::tex::constraint_direction_tex(&derivation.model, name)
-                        .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into())
-                }
+                        .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into()),
+                ),
                 (None, _) => "\\text{partial velocities}".into(),
             },
-            unknowns_tex: unknowns_tex(&row.unknowns),
+            unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),
         })
         .collect();
     let rejected_all: Vec<RejectedView> = derivation
@@ -301,7 +307,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
             }
             let name = named.definition_tex.split(" = ").next().unwrap_or_default();
             Named {
-                definition_tex: name.to_string(),
+                definition_tex: Math::from(name.to_string()),
                 note: format!("{}; too long to print whole", named.note),
             }
         })

@@ -9,6 +9,7 @@ use crate::plan::forces::{ActionKind, Category, Source};
 use crate::plan::rows::is_external;
 use crate::problem::BodyId;
 use crate::render::context::{Force, FreeBody};
+use crate::render::text::Math;
 use crate::symbolic::named::as_shown;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::roots::roots_of_squares;
@@ -49,7 +50,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
         .map(|set| {
             let mut view = FreeBody {
                 name: bodies_name(problem, set),
-                name_tex: bodies_tex(derivation, set),
+                name_tex: Math::from(bodies_tex(derivation, set)),
                 bodies: bodies_name(problem, set),
                 ..FreeBody::default()
             };
@@ -74,8 +75,8 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                 };
                 let force = Force {
                     label: action.label.clone(),
-                    vector_tex,
-                    point_tex,
+                    vector_tex: Math::from(vector_tex),
+                    point_tex: Math::from(point_tex),
                 };
                 match action.category {
                     Category::Contact => view.contact.push(force),
@@ -105,12 +106,12 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
     let mass = latex(&model.bodies[body.0].mass);
     view.inertia.push(Force {
         label: format!("inertia force of {name}"),
-        vector_tex: format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}"),
-        point_tex: format!("\\text{{at }} {symbol}^*"),
+        vector_tex: Math::from(format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}")),
+        point_tex: Math::from(format!("\\text{{at }} {symbol}^*")),
     });
     view.inertia.push(Force {
         label: format!("inertia torque of {name}"),
-        vector_tex: torque_tex(&symbol, model.is_planar()),
+        vector_tex: Math::from(torque_tex(&symbol, model.is_planar())),
         point_tex: "\\text{couple}".into(),
     });
 }
@@ -134,19 +135,19 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
         let g = vector_of(g);
         view.distance.push(Force {
             label: "gravity on each body k".into(),
-            vector_tex: times_mass(&vector_tex(model, &g)),
-            point_tex: at_center.clone(),
+            vector_tex: Math::from(times_mass(&vector_tex(model, &g))),
+            point_tex: Math::from(at_center.clone()),
         });
     }
     view.inertia.push(Force {
         label: "inertia force of each body k".into(),
         vector_tex: "-m_{k}\\, {}^{N}\\mathbf{a}^{k^*}".into(),
-        point_tex: at_center,
+        point_tex: Math::from(at_center),
     });
     view.inertia.push(Force {
         label: "inertia torque of each body k".into(),
-        vector_tex: torque_tex("k", model.is_planar()),
-        point_tex: format!("\\text{{couple}},\\; {every}"),
+        vector_tex: Math::from(torque_tex("k", model.is_planar())),
+        point_tex: Math::from(format!("\\text{{couple}},\\; {every}")),
     });
 }
 

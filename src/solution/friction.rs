@@ -7,6 +7,7 @@ use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::numeric::friction::{Mode, SiteState};
 use crate::render::context::{FrictionStep, FrictionView};
+use crate::render::text::Math;
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex;
 use crate::symbolic::Expr;
@@ -66,7 +67,7 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
 fn step(text: impl Into<String>, math_tex: impl Into<String>) -> FrictionStep {
     FrictionStep {
         text: text.into(),
-        math_tex: math_tex.into(),
+        math_tex: Math::from(math_tex.into()),
     }
 }
 

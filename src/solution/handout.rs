@@ -5,6 +5,7 @@
 use crate::equations::{Derivation, Method};
 use crate::pipeline;
 use crate::problem::Problem;
+use crate::render::text::InlineSvg;
 use crate::render::Solution;
 use crate::Error;
 
@@ -84,7 +85,7 @@ fn with_motion(solution: &mut Solution, problem: &Problem, derivation: &Derivati
             let drawn = motion::motion(derivation, &frames, View::Isometric);
             solution.simulation.motion_duration = frames.last().map_or(duration, |f| f.t);
             solution.simulation.motion_svg_inline =
-                motion_svg::export(&drawn).trim_end().to_string();
+                InlineSvg::from(motion_svg::export(&drawn).trim_end().to_string());
             solution.simulation.time_axis = crate::render::plot::x_axis_span();
         }
         Err(e) => {

@@ -8,6 +8,7 @@ use crate::equations::Derivation;
 use crate::mechanics::independent::DependentSpeeds as Speeds;
 use crate::mechanics::Vector;
 use crate::render::context::{DependentSpeeds, PartialVelocity};
+use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::roots::roots_of_squares;
@@ -84,22 +85,22 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
-                    speed_tex(derivation, speeds, r)
+                    Math::from(speed_tex(derivation, speeds, r))
                 } else {
-                    String::new()
+                    Math::from(String::new())
                 },
                 body: problem.body_name(*body).to_string(),
-                velocity_tex: format!(
+                velocity_tex: Math::from(format!(
                     "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{symbol}^*}}_{{{}}} = {v_tex}",
                     r + 1
-                ),
+                )),
                 omega_tex: if particle {
-                    String::new()
+                    Math::from(String::new())
                 } else {
-                    format!(
+                    Math::from(format!(
                         "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{}}} = {w_tex}",
                         r + 1
-                    )
+                    ))
                 },
             });
         }
@@ -168,13 +169,13 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
         independent.join(", ")
     );
     DependentSpeeds {
-        relation_tex,
-        relations_tex,
-        kane_tex,
+        relation_tex: Math::from(relation_tex),
+        relations_tex: Math::all(relations_tex),
+        kane_tex: Math::from(kane_tex),
         reduced_tex: Vec::new(),
-        kane_speeds_notes: paragraphs,
-        kane_solve_notes: after_rows(derivation, speeds),
-        kane_kept_note: String::new(),
+        kane_speeds_notes: MarkupLine::all(paragraphs),
+        kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds)),
+        kane_kept_note: MarkupLine::from(String::new()),
     }
 }
 

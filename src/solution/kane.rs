@@ -12,6 +12,7 @@ use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
+use crate::render::text::Math;
 use crate::symbolic::eval::Values;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name};
@@ -92,23 +93,23 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
-                    speed_tex(derivation, r)
+                    Math::from(speed_tex(derivation, r))
                 } else {
-                    String::new()
+                    Math::from(String::new())
                 },
                 body: name.to_string(),
-                velocity_tex: format!(
+                velocity_tex: Math::from(format!(
                     "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}}_{{{}}} = {v_tex}",
                     r + 1
-                ),
+                )),
                 // A particle has no inertia torque: its partial angular velocity does nothing.
                 omega_tex: if particle {
-                    String::new()
+                    Math::from(String::new())
                 } else {
-                    format!(
+                    Math::from(format!(
                         "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}}_{{{}}} = {w_tex}",
                         r + 1
-                    )
+                    ))
                 },
             });
         }

@@ -8,6 +8,7 @@ use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
 use crate::render::context::{Kinematics, Named};
 use crate::render::math_width::printed_width;
+use crate::render::text::Math;
 use crate::symbolic::collect::{factored, pull_common_factor};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::latex_name;
@@ -95,12 +96,12 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             };
             Kinematics {
                 body: name.to_string(),
-                omega_tex,
-                alpha_tex,
-                pin_velocity_tex,
-                pin_acceleration_tex,
-                velocity_tex,
-                acceleration_tex,
+                omega_tex: Math::from(omega_tex),
+                alpha_tex: Math::from(alpha_tex),
+                pin_velocity_tex: Math::from(pin_velocity_tex),
+                pin_acceleration_tex: Math::from(pin_acceleration_tex),
+                velocity_tex: Math::from(velocity_tex),
+                acceleration_tex: Math::from(acceleration_tex),
             }
         })
         .collect();

@@ -1,11 +1,12 @@
 //! The linearization section of the worked solution (`explain --linearize`): the
 //! linearized equations `M δq'' + C δq' + K δq = 0`, the state matrix, the eigenvalues and
-//! a table of the modes. Strings follow the naming rules of [`crate::render::context`].
+//! a table of the modes. Strings are of the kinds of [`crate::render::text`].
 
 use crate::numeric::linearize::modes::{is_stable, Shape};
 use crate::numeric::linearize::Linearization;
 use crate::problem::Problem;
 use crate::render::sections::{EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow};
+use crate::render::text::Math;
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex;
 use nalgebra::DMatrix;
@@ -100,9 +101,9 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
     let mut listed = MatrixEntries::default();
     let (m_tex, c_tex, k_tex) = match (&l.matrices, small) {
         (Some(m), true) => {
-            listed.m_tex = entries("M", &m.m);
-            listed.c_tex = entries("C", &m.c);
-            listed.k_tex = entries("K", &m.k);
+            listed.m_tex = Math::all(entries("M", &m.m));
+            listed.c_tex = Math::all(entries("C", &m.c));
+            listed.k_tex = Math::all(entries("K", &m.k));
             (
                 format!("\\mathbf{{M}} = {}", bmatrix(&m.m)),
                 format!("\\mathbf{{C}} = {}", bmatrix(&m.c)),
@@ -115,7 +116,7 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
     let mut z: Vec<String> = (0..n).map(|i| name(i, 0)).collect();
     z.extend((0..n).map(|i| name(i, 1)));
     let a_tex = if 2 * n <= MOST_COLUMNS {
-        listed.a_tex = entries("A", &l.a);
+        listed.a_tex = Math::all(entries("A", &l.a));
         format!("\\mathbf{{A}} = {}", bmatrix(&l.a))
     } else {
         String::new()
@@ -125,11 +126,11 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
         .iter()
         .enumerate()
         .map(|(i, e)| EigenvalueRow {
-            value_tex: format!(
+            value_tex: Math::from(format!(
                 "\\lambda_{{{}}} = {}",
                 i + 1,
                 complex_tex(e.value.re, e.value.im)
-            ),
+            )),
         })
         .collect();
     let modes = l
@@ -142,7 +143,7 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
             natural_frequency: fixed(m.natural_frequency_hz),
             damped_frequency: fixed(m.damped_frequency_hz),
             damping_ratio: fixed(m.damping_ratio),
-            shape_tex: column(&match &m.shape {
+            shape_tex: Math::from(column(&match &m.shape {
                 Shape::Real(values) => values.iter().map(|x| tex_number(*x)).collect::<Vec<_>>(),
                 Shape::Complex(values) => values
                     .iter()
@@ -154,7 +155,7 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
                         )
                     })
                     .collect(),
-            }),
+            })),
         })
         .collect();
     let stability = if is_stable(&l.eigen, 0.0) {
@@ -163,15 +164,15 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
         "An eigenvalue has a positive real part: small disturbances grow, and the state is unstable."
     };
     LinearizationSection {
-        state_tex: state.join(",\\ "),
+        state_tex: Math::from(state.join(",\\ ")),
         steady_note,
         equation_tex: "\\mathbf{M}\\,\\delta\\ddot{\\mathbf{q}} + \\mathbf{C}\\,\\delta\\dot{\\mathbf{q}} + \\mathbf{K}\\,\\delta\\mathbf{q} = \\mathbf{0}".into(),
-        q_tex: format!("\\delta\\mathbf{{q}} = {}", column(&deltas)),
-        m_tex,
-        c_tex,
-        k_tex,
-        a_tex,
-        z_tex: format!("\\mathbf{{z}} = {}", column(&z)),
+        q_tex: Math::from(format!("\\delta\\mathbf{{q}} = {}", column(&deltas))),
+        m_tex: Math::from(m_tex),
+        c_tex: Math::from(c_tex),
+        k_tex: Math::from(k_tex),
+        a_tex: Math::from(a_tex),
+        z_tex: Math::from(format!("\\mathbf{{z}} = {}", column(&z))),
         entries: listed,
         eigenvalues,
         modes,

@@ -8,6 +8,7 @@ use crate::equations::Derivation;
 use crate::mechanics::constraints::RowOrigin;
 use crate::plan::rows::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
+use crate::render::text::Math;
 use crate::symbolic::print::latex_name;
 
 /// What the note says where a row is the loop's component.
@@ -54,7 +55,7 @@ pub(super) fn component_note() -> String {
 
 /// A loop written once: a later row of the same closure refers to the first.
 pub(super) fn refer_to_repeated_loops(views: &mut [EquationView]) {
-    let mut seen: Vec<(String, usize)> = Vec::new();
+    let mut seen: Vec<(Math, usize)> = Vec::new();
     for (i, view) in views.iter_mut().enumerate() {
         if view.simplified_note != COMPONENT || view.grouped_tex.is_empty() {
             continue;

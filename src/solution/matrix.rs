@@ -9,6 +9,7 @@ use crate::equations::Derivation;
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
 use crate::render::math_width::printed_width;
 use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
+use crate::render::text::Math;
 use crate::symbolic::collect::{latex_collected, latex_factored};
 use crate::symbolic::print::latex;
 use crate::symbolic::Expr;
@@ -131,17 +132,17 @@ pub fn matrix(
                 values.push(format!("b_{{{}}} = {}", i + 1, value(&system.b[i])));
                 MatrixEntry {
                     row: i + 1,
-                    row_label_tex: labels[i].clone(),
-                    values_tex: values,
+                    row_label_tex: Math::from(labels[i].clone()),
+                    values_tex: Math::all(values),
                     ..MatrixEntry::default()
                 }
             })
             .collect();
         return MatrixForm {
-            pattern_tex: pattern_tables(&numbers, &a, &b),
+            pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
             entries,
-            columns_tex: columns(&x),
-            read_off_tex: rows_tex(&read_off),
+            columns_tex: Math::all(columns(&x)),
+            read_off_tex: Math::from(rows_tex(&read_off)),
             ..MatrixForm::default()
         };
     }
@@ -149,7 +150,7 @@ pub fn matrix(
         // A system this large is read by its numbers: A and b at the initial state as a
         // table, the rules saying what each entry is.
         return MatrixForm {
-            value_tables_tex: value_tables(&numbers, &x, &system.a, &system.b, &initial),
+            value_tables_tex: Math::all(value_tables(&numbers, &x, &system.a, &system.b, &initial)),
             rules: coefficient_rules(derivation),
             ..MatrixForm::default()
         };
@@ -173,9 +174,9 @@ pub fn matrix(
             entries.push(MatrixEntry {
                 row: i + 1,
                 column,
-                value_tex,
-                row_label_tex: std::mem::take(&mut label),
-                column_tex,
+                value_tex: Math::from(value_tex),
+                row_label_tex: Math::from(std::mem::take(&mut label)),
+                column_tex: Math::from(column_tex),
                 values_tex: Vec::new(),
             });
         };
@@ -238,8 +239,8 @@ pub fn matrix(
                     defined.push(MatrixEntry {
                         row: i + 1,
                         column: (j + 1).to_string(),
-                        value_tex: format!("{name} = {}", a_tex[i][j]),
-                        column_tex: x[j].clone(),
+                        value_tex: Math::from(format!("{name} = {}", a_tex[i][j])),
+                        column_tex: Math::from(x[j].clone()),
                         ..MatrixEntry::default()
                     });
                 }
@@ -250,7 +251,7 @@ pub fn matrix(
                 .into_iter()
                 .filter(|e| e.column == "b")
                 .map(|e| MatrixEntry {
-                    row_label_tex: String::new(),
+                    row_label_tex: Math::from(String::new()),
                     ..e
                 }),
         );
@@ -258,7 +259,7 @@ pub fn matrix(
             whole: Some(table),
             entries: defined,
             columns_tex: if unknowns_by_number {
-                columns(&x)
+                Math::all(columns(&x))
             } else {
                 Vec::new()
             },
@@ -270,7 +271,7 @@ pub fn matrix(
             .into_iter()
             .filter(|e| e.column == "b")
             .map(|e| MatrixEntry {
-                row_label_tex: String::new(),
+                row_label_tex: Math::from(String::new()),
                 ..e
             })
             .collect();
@@ -286,8 +287,8 @@ pub fn matrix(
         // would repeat it. Where each row's unknowns are is the system's shape, which the
         // rows one by one do not show.
         return MatrixForm {
-            pattern_tex: pattern_tables(&numbers, &a, &b),
-            columns_tex,
+            pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
+            columns_tex: Math::all(columns_tex),
             ..MatrixForm::default()
         };
     }
@@ -298,15 +299,15 @@ pub fn matrix(
         return MatrixForm {
             whole: None,
             entries,
-            read_off_tex,
+            read_off_tex: Math::from(read_off_tex),
             ..MatrixForm::default()
         };
     }
     MatrixForm {
         whole: None,
         entries: row_by_row(entries),
-        columns_tex,
-        read_off_tex,
+        columns_tex: Math::all(columns_tex),
+        read_off_tex: Math::from(read_off_tex),
         ..MatrixForm::default()
     }
 }
@@ -379,9 +380,9 @@ fn row_by_row(entries: Vec<MatrixEntry>) -> Vec<MatrixEntry> {
             }
             _ => rows.push(MatrixEntry {
                 values_tex: vec![entry.value_tex],
-                value_tex: String::new(),
+                value_tex: Math::from(String::new()),
                 column: String::new(),
-                column_tex: String::new(),
+                column_tex: Math::from(String::new()),
                 ..entry
             }),
         }

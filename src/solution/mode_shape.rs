@@ -4,6 +4,7 @@
 
 use crate::numeric::linearize::modes::Shape;
 use crate::render::context::Figure;
+use crate::render::text::{InlineSvg, LatexCode};
 
 /// Bar width and spacing (SVG pixels); the bars reach `HEIGHT` above or below the axis.
 const STEP: f64 = 56.0;
@@ -24,8 +25,8 @@ pub fn figure(names: &[String], shape: &Shape, index: usize) -> Figure {
             .collect(),
     };
     Figure {
-        svg_inline: svg(&bars, index),
-        picture_latex: tikz(&bars),
+        svg_inline: InlineSvg::from(svg(&bars, index)),
+        picture_latex: LatexCode::from(tikz(&bars)),
     }
 }
 

@@ -5,6 +5,7 @@ use crate::equations::Derivation;
 use crate::plan::planner::{Reason, Rejected};
 use crate::plan::rejection::SpecialState;
 use crate::render::context::Rejected as RejectedView;
+use crate::render::text::Math;
 use crate::symbolic::print::latex;
 use crate::symbolic::Expr;
 
@@ -69,11 +70,11 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         )),
     };
     RejectedView {
-        free_body_tex: super::tex::bodies_tex(derivation, &candidate.free_body),
-        equation_tex: super::tex::sum_tex(derivation, &candidate.sum),
-        direction_tex: candidate.direction.latex.clone(),
+        free_body_tex: Math::from(super::tex::bodies_tex(derivation, &candidate.free_body)),
+        equation_tex: Math::from(super::tex::sum_tex(derivation, &candidate.sum)),
+        direction_tex: Math::from(candidate.direction.latex.clone()),
         reason,
-        reason_tex,
+        reason_tex: Math::from(reason_tex),
         reason_after,
     }
 }

@@ -6,6 +6,7 @@ use super::tex::{bodies_name, initial_sign, unknowns_tex, uses_shown, ACCELERATI
 use crate::equations::Derivation;
 use crate::plan::rows::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
+use crate::render::text::Math;
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::named::as_shown;
 use crate::symbolic::print::latex;
@@ -182,12 +183,12 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     }
     EquationView {
         label,
-        label_tex,
-        grouped_tex,
-        simplified_tex,
+        label_tex: Math::from(label_tex),
+        grouped_tex: Math::from(grouped_tex),
+        simplified_tex: Math::from(simplified_tex),
         simplified_note,
         by_name,
-        active_tex,
-        inertia_tex,
+        active_tex: Math::from(active_tex),
+        inertia_tex: Math::from(inertia_tex),
     }
 }

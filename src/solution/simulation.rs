@@ -6,6 +6,7 @@ use crate::numeric::SolveError;
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{Check, Plot, Solution};
 use crate::render::plot::{line_plot, pgfplots, Label, Series};
+use crate::render::text::{FileName, LatexCode, SvgDocument};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex_name;
 
@@ -107,9 +108,9 @@ pub fn simulation(
         solution.simulation.plots.push(Plot {
             kind: kind.into(),
             title: title.into(),
-            svg_file: String::new(),
-            image_svg: svg,
-            pgfplots_latex: pgfplots(&time, &y_label, &series, plots_in_row),
+            svg_file: FileName::from(String::new()),
+            image_svg: SvgDocument::from(svg),
+            pgfplots_latex: LatexCode::from(pgfplots(&time, &y_label, &series, plots_in_row)),
         });
     }
 }

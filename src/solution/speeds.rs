@@ -3,6 +3,7 @@
 
 use crate::equations::Derivation;
 use crate::render::context::{SpeedRow, SpeedsView};
+use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::print::latex;
 use crate::symbolic::{add, Expr};
 
@@ -17,10 +18,12 @@ pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
         .iter()
         .enumerate()
         .map(|(r, s)| SpeedRow {
-            name_tex: latex(&u(r)),
-            definition_tex: format!("{} = {}", latex(&u(r)), latex(&s.equals)),
-            unit_tex: crate::render::units::unit_tex(s.unit.as_deref().unwrap_or_default()),
-            description: s.description.clone().unwrap_or_default(),
+            name_tex: Math::from(latex(&u(r))),
+            definition_tex: Math::from(format!("{} = {}", latex(&u(r)), latex(&s.equals))),
+            unit_tex: Math::from(crate::render::units::unit_tex(
+                s.unit.as_deref().unwrap_or_default(),
+            )),
+            description: MarkupLine::from(s.description.clone().unwrap_or_default()),
         })
         .collect();
     let n = problem.coordinates.len();
@@ -56,10 +59,11 @@ pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
                 latex(&value)
             )
         })
+        .map(Math::from)
         .collect();
     Some(SpeedsView {
         rows,
-        matrix_tex: format!("{us} = {} {rates}", matrix(&speeds.w)),
+        matrix_tex: Math::from(format!("{us} = {} {rates}", matrix(&speeds.w))),
         inverse_tex,
     })
 }

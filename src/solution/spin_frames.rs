@@ -3,6 +3,7 @@
 
 use crate::problem::CoordinateKind;
 use crate::render::context::{Frame, SpinFrame};
+use crate::render::text::Math;
 use crate::symbolic::print::{latex, latex_unit_vector};
 
 /// The frames that do not spin (see [`crate::mechanics::resal`]), with what the handout
@@ -39,16 +40,16 @@ pub(super) fn spin_frames(derivation: &crate::equations::Derivation) -> Vec<Spin
             SpinFrame {
                 frame: Frame {
                     name: name.to_string(),
-                    frame_tex: triad(name),
+                    frame_tex: Math::from(triad(name)),
                     fixed_in: String::new(),
                     parent: joint
                         .map(|j| problem.body_name(j.parent).to_string())
                         .unwrap_or_default(),
-                    orientation_tex,
+                    orientation_tex: Math::from(orientation_tex),
                 },
                 body: body.to_string(),
-                axis_tex: latex_unit_vector(body, spin.axis as u8),
-                spin_tex: latex(&problem.coordinate_expr(spin.spin, 0)),
+                axis_tex: Math::from(latex_unit_vector(body, spin.axis as u8)),
+                spin_tex: Math::from(latex(&problem.coordinate_expr(spin.spin, 0))),
                 parents: !spin.added,
             }
         })

@@ -78,8 +78,8 @@ impl Drawing {
         crate::render::context::Figure {
             // The XML declaration-free SVG element, one line per element, no blank lines
             // (a blank line would end a Markdown HTML block).
-            svg_inline: svg.trim_end().to_string(),
-            picture_latex: tikz::export(&self.picture, room),
+            svg_inline: crate::render::text::InlineSvg::from(svg.trim_end().to_string()),
+            picture_latex: crate::render::text::LatexCode::from(tikz::export(&self.picture, room)),
         }
     }
 }
