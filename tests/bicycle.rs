@@ -6,9 +6,10 @@
 //! accelerations are differenced about the upright straight run, at constant rear wheel
 //! rate θR' = −v/rR, and compared with the paper's −M⁻¹(v C1 q' + (g K0 + v² K2) q).
 
-use mbd_tutor::equations::{derive, Method};
+use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::numeric::system::System;
+use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::load_file;
 use nalgebra::{Matrix2, Vector2};
 
@@ -81,7 +82,7 @@ impl Bicycle {
         let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("problems/validation/whipple-bicycle.json");
         let problem = load_file(&path).expect("the bicycle loads");
-        let derivation = derive(&problem, method).expect("the bicycle derives");
+        let derivation = derive_rows(&problem, method).expect("the bicycle derives");
         Bicycle {
             names: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
             initial_q: problem.coordinates.iter().map(|c| c.initial).collect(),

@@ -3,9 +3,10 @@
 //! states wherever they apply; the rows as formed wherever they do not.
 
 use crate::support::problem;
-use mbd_tutor::equations::system::{derive_at, Form};
 use mbd_tutor::equations::{Derivation, LinearSystem, Method};
+use mbd_tutor::mechanics::Form;
 use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::pipeline::derive_at;
 use mbd_tutor::problem::{load_file, Problem};
 use mbd_tutor::symbolic::eval::{eval, Values};
 

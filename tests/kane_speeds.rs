@@ -4,9 +4,10 @@
 //! rolling coin's three equations against a derivation by hand.
 
 use mbd_tutor::equations::rows::Sum;
-use mbd_tutor::equations::{derive, Derivation, Method};
+use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::numeric::system::System;
+use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::{load_file, Problem};
 use mbd_tutor::symbolic::eval::eval;
 use mbd_tutor::symbolic::Symbol;
@@ -112,7 +113,7 @@ fn check_plan(name: &str, kane: &Derivation) {
 /// Kane's q'' (and reactions and drives) against Newton–Euler's at assembled states near
 /// the initial one.
 fn check_numbers(name: &str, problem: &Problem, kane: &Derivation) {
-    let newton = Compiled::new(&derive(problem, Method::NewtonEuler).expect("derives"));
+    let newton = Compiled::new(&derive_rows(problem, Method::NewtonEuler).expect("derives"));
     let kane = Compiled::new(kane);
     let mut random = Lcg(11);
     let mut checked = 0;
@@ -168,7 +169,7 @@ fn check_numbers(name: &str, problem: &Problem, kane: &Derivation) {
 #[test]
 fn kane_has_one_row_per_independent_speed_and_per_requested_component() {
     for (name, problem) in constrained() {
-        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
         check_plan(&name, &kane);
         check_numbers(&name, &problem, &kane);
     }
@@ -178,7 +179,7 @@ fn kane_has_one_row_per_independent_speed_and_per_requested_component() {
 fn kane_without_requested_reactions_has_only_the_accelerations_and_drives_as_unknowns() {
     for (name, mut problem) in constrained() {
         problem.find_reactions.clear();
-        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
         check_plan(&name, &kane);
         let speeds = kane.dependent_speeds.as_ref().expect("speeds");
         let n = problem.coordinates.len();
@@ -250,7 +251,7 @@ fn rolling_disc_by_hand(m: f64, r: f64, g: f64, theta: f64, rates: [f64; 3]) -> 
 #[test]
 fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     let problem = load_file(std::path::Path::new("problems/rolling-coin.json")).expect("valid");
-    let kane = derive(&problem, Method::Kane).expect("derives");
+    let kane = derive_rows(&problem, Method::Kane).expect("derives");
     let speeds = kane.dependent_speeds.as_ref().expect("independent speeds");
     let names = |list: &[usize]| -> Vec<String> {
         let mut names: Vec<String> = list
@@ -264,7 +265,7 @@ fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     assert_eq!(names(&speeds.dependent), ["x", "y", "z"]);
     let mut plain = problem.clone();
     plain.find_reactions.clear();
-    let reduced = derive(&plain, Method::Kane).expect("derives");
+    let reduced = derive_rows(&plain, Method::Kane).expect("derives");
     assert_eq!(generalized_rows(&reduced), 3);
     let compiled = Compiled::new(&reduced);
     let index = |name: &str| {
@@ -339,7 +340,7 @@ fn with_friction_kane_keeps_the_contact_forces_and_agrees_with_newton_euler() {
         }
         seen += 1;
         let name = path.display().to_string();
-        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(
             kane.dependent_speeds.is_none(),
             "{name}: the normal force must stay"
@@ -353,7 +354,7 @@ fn with_friction_kane_keeps_the_contact_forces_and_agrees_with_newton_euler() {
 fn where_c_would_not_read_well_kane_keeps_the_constraint_forces_and_agrees() {
     for name in WRITTEN_WITH_CONSTRAINT_FORCES {
         let problem = load_file(std::path::Path::new(name)).expect("valid");
-        let kane = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(
             kane.dependent_speeds.is_none(),
             "{name}: written with u_D = C u_I"

@@ -3,8 +3,9 @@
 //! them; energy is conserved; bad declarations are refused with their JSON path.
 
 use crate::support::{assert_close, column, problem, simulate};
-use mbd_tutor::equations::{derive, Method};
+use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::{load, Problem};
 use mbd_tutor::symbolic::{simplify, Expr, Symbol};
 
@@ -29,7 +30,8 @@ fn accelerations(
     method: Method,
     states: &[(Vec<f64>, Vec<f64>)],
 ) -> Vec<Vec<f64>> {
-    let derivation = derive(problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
+    let derivation =
+        derive_rows(problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
     let compiled = Compiled::new(&derivation);
     states
         .iter()
@@ -103,7 +105,7 @@ fn speed(name: &str, order: u8) -> Expr {
 #[test]
 fn torque_free_body_with_body_frame_speeds_gives_eulers_equations() {
     let problem = load(&read(TORQUE_FREE)).unwrap_or_else(|e| panic!("{e}"));
-    let derivation = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
+    let derivation = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
     let i = |k: usize| Expr::constant(&format!("I{k}"));
     // Euler's equations by hand, F_r + F_r* = 0 with F_r = 0:
     // -I1 u1' + (I2 - I3) u2 u3, and cyclically.
@@ -215,7 +217,7 @@ fn double_pendulum_with_absolute_speeds_prints_the_textbook_form() {
     let text = read("double-pendulum-rods");
     let speeds = serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'" } });
     let problem = with_speeds(&text, Some(speeds));
-    let derivation = derive(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
+    let derivation = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
     // The angular velocity of B is u2 itself, not u1 + (u2 - u1).
     let b = problem.body_ids().nth(1).expect("two bodies");
     let omega = derivation.model.bodies[b.0]

@@ -11,4 +11,4 @@ pub mod newton_euler;
 pub use crate::plan::rows;
 pub mod system;
 
-pub use system::{derive, Derivation, LinearSystem, Method};
+pub use system::{write_equations, Derivation, LinearSystem, Method, Request, Rows, State};

@@ -4,10 +4,11 @@ use super::constraint_rows::constraint_equations;
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::independent::{DependentSpeeds, KeptForces};
 use crate::mechanics::{MechanicsError, Model};
-use crate::plan::forces::{actions, Action};
+use crate::plan::forces::Action;
 use crate::plan::planner::{self, Rejected};
 pub use crate::plan::rows::Form;
 use crate::plan::rows::{Equation, Inertia};
+use crate::plan::FreeBodies;
 use crate::problem::Problem;
 use crate::symbolic::budget;
 use crate::symbolic::eval::Values;
@@ -71,14 +72,14 @@ pub struct Derivation<'p> {
     /// The inertia forces and torques.
     pub inertia: Inertia,
     /// The chosen rows; none where only the numbers were asked for and Kane's system was
-    /// built by composite bodies alone ([`derive_for_numbers`], [`derive_fastest`]).
+    /// built by composite bodies alone ([`Rows::Compiled`], [`Rows::Fastest`]).
     pub rows: Vec<Equation>,
     /// The candidates rejected, with reasons (the Motion Law only).
     pub rejected: Vec<Rejected>,
     /// The assembled system.
     pub system: LinearSystem,
     /// The method whose equations `system` holds: `method`, or Kane's where Kane's system
-    /// by composite bodies stands in for the numbers of another method ([`derive_fastest`]).
+    /// by composite bodies stands in for the numbers of another method ([`Rows::Fastest`]).
     pub system_method: Method,
     /// The same system with Kane's rows rebuilt by composite bodies, for evaluation (see
     /// [`super::composite`]): equal numbers, the mass matrix for n² work where `system`'s
@@ -112,16 +113,6 @@ fn constraint_unknowns(model: &Model) -> Vec<Symbol> {
         .collect()
 }
 
-/// Derives the equations of motion of `problem` by `method`, for numbers
-/// ([`Form::Numeric`]).
-///
-/// # Errors
-/// When the model cannot be built, the planner finds no complete set of rows, or an
-/// unknown appears nonlinearly.
-pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
-    derive_at(problem, method, &[], Form::Numeric)
-}
-
 /// A state the equations will be solved at: time, coordinates and rates in coordinate order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct State {
@@ -133,72 +124,57 @@ pub struct State {
     pub rates: Vec<f64>,
 }
 
-/// As [`derive`], with the Motion Law's plan also required to be nonsingular at `states`
-/// where a plan can be (the other methods have no choice to make).
-///
-/// # Errors
-/// As for [`derive`].
-pub fn derive_at<'p>(
-    problem: &'p Problem,
-    method: Method,
-    states: &[State],
-    form: Form,
-) -> Result<Derivation<'p>, MechanicsError> {
-    derive_with(problem, method, states, form, Rows::Formed)
-}
-
-/// As [`derive_at`] in [`Form::Numeric`], for the numbers alone: where Kane's system by
-/// composite bodies is the one compiled (a tree large enough, see
-/// [`super::composite::SMALL_PROGRAM`]), it is built directly and Kane's rows are never
-/// formed; the derivation's `rows` are then empty and its `system` is the composite one.
-///
-/// # Errors
-/// As for [`derive`].
-pub fn derive_for_numbers<'p>(
-    problem: &'p Problem,
-    method: Method,
-    states: &[State],
-) -> Result<Derivation<'p>, MechanicsError> {
-    derive_with(problem, method, states, Form::Numeric, Rows::Compiled)
-}
-
-/// As [`derive_for_numbers`] with no states, with Kane's system by composite bodies standing
-/// in for the rows of any method where it is built alone: an unconstrained tree large enough
-/// (see [`super::composite::system_alone`]). The q'' and the reactions are the method's own
-/// to rounding, and the composite system costs n² where the Motion Law's and Newton–Euler's
-/// rows cost n³ or more. The derivation keeps `method`; its `system_method` says whose
-/// equations its system holds.
-///
-/// # Errors
-/// As for [`derive`].
-pub fn derive_fastest(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
-    derive_with(problem, method, &[], Form::Numeric, Rows::Fastest)
+/// What a derivation is for: the form its expressions take, which rows it forms, and the
+/// states where the Motion Law's plan must be nonsingular where a plan can be (the other
+/// methods have no choice to make).
+#[derive(Clone, Copy, Debug)]
+pub struct Request<'s> {
+    /// For numbers or for the worked solution.
+    pub form: Form,
+    /// Which rows to form.
+    pub rows: Rows,
+    /// The states the plan must be nonsingular at.
+    pub states: &'s [State],
 }
 
 /// Which rows a derivation forms.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Rows {
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rows {
     /// Every row the method writes, for the worked solution and for comparisons.
     Formed,
-    /// Only what is compiled for numbers.
+    /// Only what is compiled for numbers: where Kane's system by composite bodies is the
+    /// one compiled (a tree large enough, see [`super::composite::SMALL_PROGRAM`]), it is
+    /// built directly and Kane's rows are never formed; the derivation's `rows` are then
+    /// empty and its `system` is the composite one.
     Compiled,
-    /// Only what is compiled for numbers, by Kane's composite system whatever the method.
+    /// As `Compiled`, with Kane's system by composite bodies standing in for the rows of
+    /// any method where it is built alone: an unconstrained tree large enough (see
+    /// [`super::composite::system_alone`]). The q'' and the reactions are the method's own
+    /// to rounding, and the composite system costs n² where the Motion Law's and
+    /// Newton–Euler's rows cost n³ or more. The derivation keeps `method`; its
+    /// `system_method` says whose equations its system holds.
     Fastest,
 }
 
-fn derive_with<'p>(
-    problem: &'p Problem,
+/// Step 3 and 5: the equations of motion of `model` by `method`, from its free bodies
+/// (step 2): the method's rows (for the Motion Law, the rows its planner chooses),
+/// assembled into `A x = b`.
+///
+/// # Errors
+/// When the planner finds no complete set of rows, or an unknown appears nonlinearly.
+pub fn write_equations<'p>(
+    model: Model<'p>,
+    free_bodies: FreeBodies,
     method: Method,
-    states: &[State],
-    form: Form,
-    wanted: Rows,
+    request: Request<'_>,
 ) -> Result<Derivation<'p>, MechanicsError> {
-    budget::step("computing the kinematics (step 4)");
-    let model = Model::build_for(problem, form)?;
-    budget::step("writing the forces and moments (step 2)");
-    let actions = actions(&model)?;
-    budget::step("writing the inertia forces and torques (step 4)");
-    let inertia = Inertia::of(&model, form);
+    let Request {
+        form,
+        rows: wanted,
+        states,
+    } = request;
+    let FreeBodies { actions, inertia } = free_bodies;
+    let problem = model.problem;
     budget::step(match method {
         Method::MotionLaw => "writing the Motion Law's candidate rows (step 3)",
         Method::NewtonEuler => "writing the Newton–Euler rows (step 3)",

@@ -2,8 +2,8 @@
 //!
 //! 1. [`load`]: the problem file → a validated [`Problem`] (the commands then apply `--set`
 //!    and their size limits);
-//! 2. [`derive()`]: the kinematics, the free bodies, the plan and the equations of one method
-//!    → a [`Derivation`];
+//! 2. [`derive()`]: the model (the kinematics), the free bodies, then the plan and the
+//!    equations of one method, each stage called in turn ([`derive_for`]) → a [`Derivation`];
 //! 3. [`Solver::new`]: the equations compiled for numbers, with the constraints' assembly;
 //!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
 //!    their exact partial derivatives, for the small motions about any state;
@@ -15,8 +15,12 @@
 //! at which the system is not (a row's reaction term vanishing there), the solver and the
 //! linearizer plan again for that state and go on, for every command alike.
 
-use crate::equations::system::{derive_at, derive_fastest, derive_for_numbers, Form, State};
-use crate::equations::{Derivation, Method};
+mod stages;
+
+pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
+
+use crate::equations::{Derivation, Method, State};
+use crate::mechanics::Form;
 use crate::numeric::checks::{self, Check};
 use crate::numeric::evaluate::{Compiled, StateSolution};
 use crate::numeric::linearize::{self, Linearization};

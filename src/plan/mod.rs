@@ -6,3 +6,29 @@ pub mod planner;
 pub mod rejection;
 pub mod rows;
 mod span;
+
+use crate::mechanics::{Form, MechanicsError, Model};
+use forces::Action;
+use rows::Inertia;
+
+/// Step 2: what the free-body diagrams show, every force and couple on every body
+/// (reactions included), and what the kinetic diagrams show, their inertia forces and
+/// torques.
+#[derive(Debug)]
+pub struct FreeBodies {
+    /// Every force and couple.
+    pub actions: Vec<Action>,
+    /// The inertia forces and torques.
+    pub inertia: Inertia,
+}
+
+/// Step 2 for `model`, its expressions in `form`.
+///
+/// # Errors
+/// A load whose expression cannot be written on the model.
+pub fn free_bodies(model: &Model, form: Form) -> Result<FreeBodies, MechanicsError> {
+    Ok(FreeBodies {
+        actions: forces::actions(model)?,
+        inertia: Inertia::of(model, form),
+    })
+}

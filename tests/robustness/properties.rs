@@ -188,8 +188,9 @@ const SMALL: [&str; 5] = [
 /// at their initial state: an error is fine, a panic or a hang is not.
 #[test]
 fn pipeline_on_mutated_small_problems() {
-    use mbd_tutor::equations::{derive, Method};
+    use mbd_tutor::equations::Method;
     use mbd_tutor::numeric::evaluate::Compiled;
+    use mbd_tutor::pipeline::derive_rows;
     let originals: Vec<Value> = problem_texts()
         .iter()
         .filter(|(name, _)| SMALL.iter().any(|s| name.ends_with(&format!("/{s}.json"))))
@@ -210,7 +211,7 @@ fn pipeline_on_mutated_small_problems() {
             };
             DERIVED.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
             let method = [Method::MotionLaw, Method::NewtonEuler, Method::Kane][which % 3];
-            if let Ok(derivation) = derive(&problem, method) {
+            if let Ok(derivation) = derive_rows(&problem, method) {
                 let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
                 let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
                 let _ = Compiled::new(&derivation).solve(0.0, &q, &rates);
