@@ -6,11 +6,11 @@
 
 use super::tex::style_of;
 use crate::equations::Method;
-use crate::problem::{CoordinateKind, Dimension, Joint, JointKind, Problem, VectorExpr};
-use crate::render::context::{Constant, Coordinate, Frame, Named, Plan, Simulation, Solution};
+use crate::problem::{CoordinateKind, Dimension, JointKind, Problem};
+use crate::render::context::{Constant, Coordinate, Named, Plan, Simulation, Solution};
 use crate::render::text::{Markup, MarkupLine, Math};
 use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::print::{latex, latex_name};
 
 /// The whole worked solution from what the stages gave (`pipeline::work`): step 1 from
 /// the problem, steps 2 to 6 from the derivation, the solution at the initial state and
@@ -41,7 +41,7 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         .to_string(),
         method: method.title().to_string(),
         student: false,
-        frames: frames(problem),
+        frames: super::frames::frames(problem),
         coordinates: coordinates(problem),
         axes: axes(problem),
         constants: constants(problem),
@@ -78,131 +78,14 @@ fn axes(problem: &Problem) -> Vec<Named> {
             let relation = if plain { "=" } else { "\\parallel" };
             // The subscript names the joint: no note.
             Some(Named::new(
-                format!("{unit} {relation} {}", vector_tex(problem, axis)),
+                format!(
+                    "{unit} {relation} {}",
+                    super::frames::vector_tex(problem, axis)
+                ),
                 "",
             ))
         })
         .collect()
-}
-
-/// `N`, then one frame per body in file order, oriented by the joint whose child it is.
-fn frames(problem: &Problem) -> Vec<Frame> {
-    let triad = |name: &str| {
-        (0..3)
-            .map(|axis| latex_unit_vector(name, axis))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let mut frames = vec![Frame {
-        name: "N".into(),
-        frame_tex: Math::from(triad("N")),
-        fixed_in: "N".into(),
-        parent: String::new(),
-        orientation_tex: Math::from(String::new()),
-    }];
-    for id in problem.body_ids() {
-        let name = problem.body_name(id);
-        let joint = problem.joint_of(id).map(|j| &problem.joints[j]);
-        frames.push(Frame {
-            name: name.to_string(),
-            frame_tex: Math::from(triad(name)),
-            fixed_in: name.to_string(),
-            parent: joint
-                .map(|j| problem.body_name(j.parent).to_string())
-                .unwrap_or_default(),
-            orientation_tex: Math::from(
-                joint
-                    .map(|j| orientation_tex(problem, j))
-                    .unwrap_or_default(),
-            ),
-        });
-    }
-    frames
-}
-
-/// How a joint orients its child's frame relative to its parent's, in words and math.
-fn orientation_tex(problem: &Problem, joint: &Joint) -> String {
-    let coordinate = |k: usize| {
-        joint
-            .coordinates
-            .get(k)
-            .map(|&i| latex(&problem.coordinate_expr(i, 0)))
-            .unwrap_or_else(|| "0".into())
-    };
-    let axis = || match &joint.axis {
-        Some(axis) => vector_tex(problem, axis),
-        None => latex_unit_vector(problem.body_name(joint.parent), 2),
-    };
-    let rotated = |angle: String, about: String| {
-        format!("\\text{{rotated by }} {angle} \\text{{ about }} {about}")
-    };
-    match joint.kind {
-        JointKind::Revolute => rotated(coordinate(0), axis()),
-        JointKind::Cylindrical => rotated(coordinate(1), axis()),
-        JointKind::Planar => rotated(
-            coordinate(2),
-            latex_unit_vector(problem.body_name(joint.parent), 2),
-        ),
-        JointKind::Prismatic | JointKind::Weld => "\\text{aligned}".into(),
-        JointKind::Universal | JointKind::Spherical | JointKind::Free => {
-            let first_angle = if joint.kind == JointKind::Free { 3 } else { 0 };
-            let angles: Vec<String> = (0..joint.sequence.len())
-                .map(|k| coordinate(first_angle + k))
-                .collect();
-            body_fixed_rotations_tex(&angles, &joint.sequence)
-        }
-    }
-}
-
-/// `\text{body-fixed rotations by } ψ, θ \text{ about } z, x`: the angles in order, each
-/// about the axis of `sequence` at its place.
-pub(super) fn body_fixed_rotations_tex(angles: &[String], sequence: &[u8]) -> String {
-    let axes: Vec<&str> = sequence
-        .iter()
-        .take(angles.len())
-        .map(|&a| ["x", "y", "z"].get(a as usize).copied().unwrap_or("?"))
-        .collect();
-    format!(
-        "\\text{{body-fixed rotations by }} {} \\text{{ about }} {}",
-        angles.join(", "),
-        axes.join(", ")
-    )
-}
-
-/// A vector expression as textbook LaTeX: `\frac{L}{2} \hat{\mathbf{a}}_{x} - \hat{\mathbf{n}}_{y}`.
-pub fn vector_tex(problem: &Problem, vector: &VectorExpr) -> String {
-    let mut out = String::new();
-    for (frame, axis, coefficient) in &vector.terms {
-        let unit = latex_unit_vector(problem.body_name(*frame), *axis);
-        let text = if coefficient.is_one() {
-            unit
-        } else if coefficient.terms().len() > 1 {
-            format!("\\left({}\\right) {unit}", latex(coefficient))
-        } else {
-            let c = latex(coefficient);
-            if c == "-1" {
-                format!("-{unit}")
-            } else {
-                format!("{c} {unit}")
-            }
-        };
-        match (out.is_empty(), text.strip_prefix('-')) {
-            (true, _) => out.push_str(&text),
-            (false, Some(rest)) => {
-                out.push_str(" - ");
-                out.push_str(rest);
-            }
-            (false, None) => {
-                out.push_str(" + ");
-                out.push_str(&text);
-            }
-        }
-    }
-    if out.is_empty() {
-        "\\mathbf{0}".into()
-    } else {
-        out
-    }
 }
 
 fn coordinates(problem: &Problem) -> Vec<Coordinate> {

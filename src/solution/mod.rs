@@ -13,6 +13,7 @@ mod build;
 mod constrained;
 pub mod derived;
 pub mod eigen_plot;
+mod frames;
 mod free_bodies;
 mod friction;
 mod handout;

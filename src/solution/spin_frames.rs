@@ -34,7 +34,7 @@ pub(super) fn spin_frames(derivation: &crate::equations::Derivation) -> Vec<Spin
                         .filter(|&&c| problem.coordinates[c].kind == CoordinateKind::Angle)
                         .map(|&c| latex(&problem.coordinate_expr(c, 0)))
                         .collect();
-                    super::build::body_fixed_rotations_tex(&angles, &j.sequence)
+                    super::frames::body_fixed_rotations_tex(&angles, &j.sequence)
                 })
                 .unwrap_or_default();
             SpinFrame {
