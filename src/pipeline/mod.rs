@@ -16,8 +16,10 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod stages;
+mod sweep;
 
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
+pub use sweep::{sweep, Sweep, Swept};
 
 use crate::equations::{Derivation, Method, State};
 use crate::mechanics::Form;
