@@ -126,3 +126,54 @@ fn a_long_partial_velocity_is_written_by_the_names_of_step_4() {
         assert!(text.contains(&name), "{name} is not defined");
     }
 }
+
+/// The mass matrix by hand, from the kinetic energy T = ½ q̇ᵀ M q̇ of the two rods:
+/// M11 = m1 L1²/3 + m2 (L1² + L2²/3 + L1 L2 cos q2), M12 = m2 (L2²/3 + L1 L2 cos q2 / 2),
+/// M22 = m2 L2²/3, all positive. Kane's rows of the speeds are −(M q̈ + …) = 0, so the
+/// handout writes them, and the matrix form, with the signs changed: A = M.
+#[test]
+fn kanes_rows_of_the_speeds_are_written_with_the_mass_matrix_positive() {
+    let text = markdown("double-pendulum-rods.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    let entry = |name: &str| {
+        let start = format!("- ${name} = ");
+        let line = step5
+            .lines()
+            .find(|l| l.starts_with(&start))
+            .unwrap_or_else(|| panic!("no entry {name}"));
+        line[start.len()..].trim_end_matches('$').to_string()
+    };
+    assert_eq!(
+        entry("A_{1,1}"),
+        "\\frac{L_{1}^{2} m_{1}}{3} + L_{1}^{2} m_{2} + \\frac{L_{2}^{2} m_{2}}{3} + L_{1} L_{2} m_{2} c_{2}"
+    );
+    assert_eq!(
+        entry("A_{1,2}"),
+        "\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} c_{2}\\right)"
+    );
+    assert_eq!(entry("A_{2,2}"), "\\frac{L_{2}^{2} m_{2}}{3}");
+    // The auxiliary rows keep their reaction positive: F^O_x − m a = 0.
+    assert!(step5.contains("(3) & A_{3,1} & A_{3,2} & 1 & 0 & b_{3}"));
+    assert!(step5.contains("its signs changed so that the mass matrix is positive"));
+}
+
+/// Kane and Levinson's auxiliary speed along F^O_x: O gives way along n_x, every point of
+/// A + B gains u₃ n_x, so v₃^{A*} = v₃^{B*} = n_x and ω₃ = 0; the pin P inside A + B does
+/// no work; the system is block-triangular (q̈ from rows 1–2, then one force a row).
+#[test]
+fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_solve() {
+    let text = markdown("double-pendulum-rods.json");
+    let n_x = latex_unit_vector("N", 0);
+    let row3 = section(&text, "**3. ", "**4. ");
+    assert!(row3.contains(&format!(
+        "the joint $O$ is let give way with speed $u_{{3}}$ along ${n_x}$"
+    )));
+    assert!(row3.contains(&format!(
+        "$\\mathbf{{v}}^{{A^*}}_{{3}} = \\mathbf{{v}}^{{B^*}}_{{3}} = {n_x}$, its partial angular velocities zero"
+    )));
+    assert!(row3.contains("The reaction at $P$, inside $A + B$, drops out"));
+    assert!(row3.contains("with $u_{3} = 0$"));
+    let plan = section(&text, "## Step 3", "## Step 4");
+    assert!(plan.contains("rows 1 and 2 hold only the second derivatives"));
+    assert!(plan.contains("each of rows 3 and 4 gives its one reaction"));
+}

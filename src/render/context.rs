@@ -371,6 +371,9 @@ pub struct Equation {
     pub label_tex: Math,
     /// Plain words after it, e.g. `(a generalized speed)`; may be empty.
     pub label: String,
+    /// Kane's row of an auxiliary speed: its augmented velocities, their partial
+    /// velocities and which forces drop out, in markup (empty otherwise).
+    pub augmented_note: MarkupLine,
     /// The equation as formed, forces grouped, e.g. `\hat{\mathbf{n}}_{z} \cdot (…) = 0`.
     pub grouped_tex: Math,
     /// The same equation simplified, `… = 0`; when that is too long to read, the same

@@ -325,6 +325,7 @@ fn equations() -> Vec<Equation> {
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{M}}_{{O}} \\cdot {N}_{{z}}")),
             label: String::new(),
+            augmented_note: MarkupLine::default(),
             grouped_tex: Math::from(format!(
                 "{N}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{A^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} \\ddot{{q}}_{{1}} {N}_{{z}} \
                  + \\mathbf{{r}}^{{B^{{*}}/O}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
@@ -344,6 +345,7 @@ fn equations() -> Vec<Equation> {
         Equation {
             label_tex: Math::from(format!("B\\colon \\sum \\mathbf{{M}}_{{P}} \\cdot {A}_{{z}}")),
             label: String::new(),
+            augmented_note: MarkupLine::default(),
             grouped_tex: Math::from(format!(
                 "{A}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{B^{{*}}/P}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
                 loads("B")
@@ -360,6 +362,7 @@ fn equations() -> Vec<Equation> {
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{x}}")),
             label: String::new(),
+            augmented_note: MarkupLine::default(),
             grouped_tex: Math::from(format!("{N}_{{x}} \\cdot \\left({sum_forces}\\right) = 0")),
             simplified_tex: Math::from(format!(
                 "F^{{O}}_{{x}} - m L \\left(\\frac{{3}}{{2}} \\left({c1} \\ddot{{q}}_{{1}} - {s1} \\dot{{q}}_{{1}}^{{2}}\\right) \
@@ -373,6 +376,7 @@ fn equations() -> Vec<Equation> {
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{y}}")),
             label: String::new(),
+            augmented_note: MarkupLine::default(),
             grouped_tex: Math::from(format!("{N}_{{y}} \\cdot \\left({sum_forces}\\right) = 0")),
             simplified_tex: Math::from(format!(
                 "F^{{O}}_{{y}} - 2 m g - m L \\left(\\frac{{3}}{{2}} \\left({s1} \\ddot{{q}}_{{1}} + {c1} \\dot{{q}}_{{1}}^{{2}}\\right) \

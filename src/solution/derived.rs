@@ -265,7 +265,13 @@ pub fn plan(derivation: &Derivation) -> Plan {
             }
             note
         }
-        Method::Kane => "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".into(),
+        Method::Kane => {
+            let mut note = "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".to_string();
+            if let Some(order) = super::kane::solve_order_note(derivation) {
+                note = format!("{note} {order}");
+            }
+            note
+        }
     };
     Plan {
         columns: crate::render::plan_table::columns(&rows),

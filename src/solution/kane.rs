@@ -117,6 +117,74 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     out
 }
 
+/// Whether step 5 writes row `i` of the system with its signs changed. Kane's row of a
+/// speed is `F_r + F^*_r = 0` with `F^*_r = −M q̈ + …`: changed, it reads `M q̈ = …`, the
+/// mass matrix positive, as a textbook writes it; the matrix form changes the row alike.
+/// A row of an auxiliary speed keeps its reaction positive (`F^O_x − m a = 0`).
+pub fn sign_changed(derivation: &Derivation, i: usize) -> bool {
+    let Some(row) = derivation.rows.get(i) else {
+        return false;
+    };
+    let speeds = match &derivation.dependent_speeds {
+        Some(speeds) => speeds.independent.len(),
+        None => derivation.model.problem.coordinates.len(),
+    };
+    derivation.method == Method::Kane
+        && matches!(row.sum, Sum::Generalized { .. })
+        && row_number(derivation, row).is_some_and(|r| r <= speeds)
+}
+
+/// The system as step 5 writes it: Kane's rows of speeds with their signs changed (see
+/// [`sign_changed`]); the same equations, the mass matrix positive.
+pub fn shown_system(derivation: &Derivation) -> crate::equations::LinearSystem {
+    let mut system = derivation.system.clone();
+    let rows = system.a.iter_mut().zip(system.b.iter_mut()).enumerate();
+    for (i, (a, b)) in rows {
+        if sign_changed(derivation, i) {
+            a.iter_mut().for_each(|entry| *entry = -entry.clone());
+            *b = -b.clone();
+        }
+    }
+    system
+}
+
+/// How Kane's system of an unconstrained tree with reactions asked for is solved, where it
+/// is block-triangular: the rows of the speeds hold only the q̈ and are solved first, then
+/// each auxiliary row gives its one reaction. `None` where the system is not so.
+pub fn solve_order_note(derivation: &Derivation) -> Option<String> {
+    if derivation.dependent_speeds.is_some() || derivation.kept_forces.is_some() {
+        return None;
+    }
+    let system = &derivation.system;
+    let speeds = derivation.model.problem.speed_symbols(2).len();
+    let n = system.a.len();
+    if n <= speeds || system.unknowns.len() != n {
+        return None;
+    }
+    let first_only_q = system.a[..speeds]
+        .iter()
+        .all(|row| row[speeds..].iter().all(Expr::is_zero));
+    let one_each = system.a[speeds..].iter().enumerate().all(|(k, row)| {
+        row[speeds..]
+            .iter()
+            .enumerate()
+            .all(|(j, a)| a.is_zero() == (j != k))
+    });
+    if !first_only_q || !one_each {
+        return None;
+    }
+    let rows = |from: usize, to: usize| match to - from {
+        0 => format!("row {from}"),
+        1 => format!("rows {from} and {to}"),
+        _ => format!("rows {from}–{to}"),
+    };
+    Some(format!(
+        "The system is solved in two stages: {} hold only the second derivatives and are solved for them first; then each of {} gives its one reaction, with the second derivatives known.",
+        rows(1, speeds),
+        rows(speeds + 1, n)
+    ))
+}
+
 /// Which of Kane's rows `row` is, 1-based (the speeds first, then the auxiliary speeds of
 /// the requested reactions); `None` for a row that is not Kane's.
 pub fn row_number(derivation: &Derivation, row: &Equation) -> Option<usize> {

@@ -50,7 +50,7 @@ pub fn matrix(
 ) -> MatrixForm {
     let by_entries = by_name.iter().any(|&b| b);
     let listed = |i: usize| !by_entries || by_name.get(i).copied().unwrap_or(true);
-    let system = &derivation.system;
+    let system = &super::kane::shown_system(derivation);
     let n = system.unknowns.len();
     let a: Vec<Vec<Expr>> = system
         .a

@@ -9,6 +9,7 @@
 
 pub mod answer_sheet;
 pub mod answers;
+mod auxiliary;
 mod build;
 mod constrained;
 pub mod derived;

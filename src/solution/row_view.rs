@@ -70,22 +70,17 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let mut grouped_tex = format!("{grouped} = 0");
     let mut simplified = shown(&simplify(&row.expression));
     let mut simplified_note = String::new();
-    if derivation.dependent_speeds.is_some() && matches!(row.sum, Sum::Generalized { .. }) {
-        // F̃*_r is minus the mass matrix times q̈: written with the signs changed, the
+    let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
+    if index.is_some_and(|i| super::kane::sign_changed(derivation, i)) {
+        // F*_r is minus the mass matrix times q̈: written with the signs changed, the
         // equation reads M q̈ = …, with the mass matrix positive.
-        let negated = -simplified.clone();
-        if latex_collected(&simplified).starts_with('-')
-            && !latex_collected(&negated).starts_with('-')
-        {
-            simplified = negated;
-            simplified_note =
-                "Their sum, simplified, and its signs changed so that the mass matrix is positive:"
-                    .into();
-        }
+        simplified = -simplified;
+        simplified_note =
+            "Their sum, simplified, and its signs changed so that the mass matrix is positive:"
+                .into();
     }
     let mut simplified_tex = format!("{} = 0", latex_collected(&simplified));
     let mut by_name = false;
-    let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
     if simplified_tex.len() > LONG_EQUATION {
         // Too long to read: the same row with the coefficients of the matrix form by name.
         if let Some(i) = index {
@@ -107,6 +102,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         String::new()
     };
     let (mut active_tex, mut inertia_tex) = (String::new(), String::new());
+    let mut augmented_note = String::new();
     if let (Sum::Generalized { .. }, Some(r)) = (&row.sum, super::kane::row_number(derivation, row))
     {
         // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
@@ -151,6 +147,8 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 "(a generalized speed)".to_string(),
             )
         } else {
+            augmented_note =
+                super::auxiliary::augmented_note(derivation, row, r).unwrap_or_default();
             let reactions: Vec<Symbol> = row
                 .unknowns
                 .iter()
@@ -183,6 +181,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     }
     EquationView {
         label,
+        augmented_note: augmented_note.into(),
         label_tex: Math::from(label_tex),
         grouped_tex: Math::from(grouped_tex),
         simplified_tex: Math::from(simplified_tex),

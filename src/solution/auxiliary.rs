@@ -1,0 +1,98 @@
+//! Kane's auxiliary speeds as Kane and Levinson teach them (ch. 5): for a reaction asked
+//! for, the augmented velocities that let the joint give way along it, their partial
+//! velocities, which forces drop out and why, and the accelerations at the speed zero.
+
+use super::tex::{bodies_tex, vector_tex};
+use crate::equations::Derivation;
+use crate::plan::rows::Equation;
+use crate::problem::BodyId;
+use crate::symbolic::print::latex_name;
+use crate::symbolic::{ComponentKind, Symbol, Unknown};
+
+/// The sentences that show how Kane's row `r` (an auxiliary speed of the tree, `row`)
+/// brings in its reaction, in the problem's markup; `None` for any other row.
+pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let (site, component) = row.unknowns.iter().find_map(|u| match u {
+        Symbol::Unknown(Unknown::Reaction { site, component }) => Some((site, component)),
+        _ => None,
+    })?;
+    let j = problem
+        .joints
+        .iter()
+        .position(|joint| joint.name.as_str() == &**site)?;
+    let reaction = model.sites[j]
+        .reactions
+        .iter()
+        .find(|c| c.component() == *component)?;
+    let subtree = model.subtree(j);
+    if subtree != row.free_body {
+        return None;
+    }
+    let unknown =
+        crate::symbolic::print::latex(&crate::symbolic::Expr::sym(reaction.unknown(site)));
+    let bodies = bodies_tex(derivation, &subtree);
+    let point = latex_name(site);
+    let d = vector_tex(model, &reaction.direction);
+    let u = format!("u_{{{r}}}");
+    let particles_only = subtree
+        .iter()
+        .all(|&b| super::independent::is_particle(derivation, b));
+    let centres = |separator: &str, each: &dyn Fn(&str) -> String| -> String {
+        subtree
+            .iter()
+            .map(|&b| each(&latex_name(problem.body_name(b))))
+            .collect::<Vec<_>>()
+            .join(separator)
+    };
+    let motion = match reaction.kind {
+        ComponentKind::Force => {
+            let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}^*}}_{{{r}}}"));
+            let angular = if particles_only {
+                String::new()
+            } else {
+                ", its partial angular velocities zero".to_string()
+            };
+            format!(
+                "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before: the partial velocities of ${u}$ are ${partials} = {d}${angular}."
+            )
+        }
+        ComponentKind::Moment => {
+            let partials = centres(", ", &|b| {
+                format!(
+                    "\\mathbf{{v}}^{{{b}^*}}_{{{r}}} = {d} \\times \\mathbf{{r}}^{{{point} {b}^*}}"
+                )
+            });
+            format!(
+                "Augmented velocities: ${bodies}$ is let turn about ${point}$ with angular speed ${u}$ about ${d}$, so each of its bodies gains ${u}\\, {d}$ and each point $X$ of it ${u}\\, {d} \\times \\mathbf{{r}}^{{{point} X}}$: the partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
+            )
+        }
+    };
+    let inside = joints_inside(derivation, &subtree);
+    let inside = match inside.as_slice() {
+        [] => String::new(),
+        [one] => format!(
+            " The reaction at ${one}$, inside ${bodies}$, drops out: its two equal and opposite forces act at one point, which moves the same on both sides."
+        ),
+        many => format!(
+            " The reactions at ${}$, inside ${bodies}$, drop out: each pair of equal and opposite forces acts at one point, which moves the same on both sides.",
+            many.join(", ")
+        ),
+    };
+    Some(format!(
+        "{motion} Only ${unknown}$ and the other forces on ${bodies}$ from outside do work with them.{inside} The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe."
+    ))
+}
+
+/// The joints both of whose bodies are among `bodies`, by name in LaTeX.
+fn joints_inside(derivation: &Derivation, bodies: &[BodyId]) -> Vec<String> {
+    derivation
+        .model
+        .problem
+        .joints
+        .iter()
+        .filter(|joint| bodies.contains(&joint.parent) && bodies.contains(&joint.child))
+        .map(|joint| latex_name(&joint.name))
+        .collect()
+}
