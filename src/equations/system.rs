@@ -354,8 +354,29 @@ fn derive_with<'p>(
                 }
                 unknowns = unknowns_of(&reaction_joints);
                 choice = planner::choose(
-                    &model, &actions, &inertia, candidates, &unknowns, &given, &required,
+                    &model,
+                    &actions,
+                    &inertia,
+                    candidates.clone(),
+                    &unknowns,
+                    &given,
+                    &required,
                 );
+            }
+            if choice.rows.len() < unknowns.len() && !model.constraints.friction.is_empty() {
+                // Sticking may leave the friction forces undetermined (two rough contacts
+                // of one body share one no-slip motion), sliding not: plan by the sliding
+                // law's rows, then write the stick rows back for the numbers to exchange.
+                let sliding = super::friction::sliding_stand_ins(&model, &given, &unknowns);
+                let again = planner::choose(
+                    &model, &actions, &inertia, candidates, &unknowns, &sliding, &required,
+                );
+                if again.rows.len() == unknowns.len() {
+                    choice = planner::Choice {
+                        rows: super::friction::stick_rows_back(again.rows, &given),
+                        rejected: again.rejected,
+                    };
+                }
             }
             (choice.rows, choice.rejected)
         }

@@ -1,0 +1,117 @@
+//! The validation problems of version 3 against closed forms worked by hand, by every
+//! method: two rough contacts on one body (a box pushed on its two edges, a ladder on a
+//! rough floor and a rough wall).
+
+use crate::support::{assert_close, friction_site, solve_all};
+
+const G: f64 = 9.81;
+
+// ---- a box pushed across a rough floor on its two bottom edges ----
+
+#[test]
+fn a_box_pushed_on_two_rough_edges_slides_with_a_equal_to_p_minus_mu_m_g_over_m() {
+    let (m, b, c, d, p, mu) = (20.0, 0.4, 0.3, 0.1, 120.0, 0.4);
+    // Sliding: m a = P − μ(N_A + N_B), N_A + N_B = m g; no turning, so about the centre
+    // b (N_B − N_A) = μ c (N_A + N_B) + P d.
+    let a = (p - mu * m * G) / m;
+    let difference = (mu * c * m * G + p * d) / b;
+    let (back, front) = ((m * G - difference) / 2.0, (m * G + difference) / 2.0);
+    // From rest too: P > μ m g, so it starts to slide at once.
+    for rate in ["x'=1.2", "x'=0"] {
+        for s in solve_all("validation/box-on-two-rough-edges", &["--state", rate]) {
+            let what = |q: &str| format!("{} at {rate}: {q}", s.method);
+            assert_close(s.acc("x"), a, 1e-9, 1.0, &what("x''"));
+            assert_close(s.acc("th"), 0.0, 1e-9, 1.0, &what("th''"));
+            for (edge, normal) in [("back", back), ("front", front)] {
+                assert_eq!(
+                    friction_site(&s.json, edge)["mode"],
+                    "slip",
+                    "{}",
+                    what(edge)
+                );
+                assert_close(s.force(edge)[1], normal, 1e-9, 1.0, &what(edge));
+                assert_close(s.force(edge)[0], -mu * normal, 1e-9, 1.0, &what(edge));
+            }
+        }
+    }
+}
+
+// ---- a ladder on a rough floor against a rough wall ----
+
+/// By hand, the ladder sliding (θ from the vertical, foot away from the wall, top down):
+/// floor N₁ up and μ₁N₁ toward the wall, wall N₂ out and μ₂N₂ up, the mid-point at
+/// (l sin θ, l cos θ):
+///   m (l cos θ θ'' − l sin θ θ'²) = N₂ − μ₁N₁,
+///   m (−l sin θ θ'' − l cos θ θ'²) = N₁ + μ₂N₂ − m g,
+///   m l²/3 θ'' = l N₁ (sin θ − μ₁ cos θ) − l N₂ (cos θ + μ₂ sin θ),
+/// solved by Cramer's rule for (θ'', N₁, N₂).
+fn ladder(theta: f64, rate: f64) -> [f64; 3] {
+    let (m, l, mu1, mu2) = (12.0, 1.25, 0.25, 0.2);
+    let (s, c) = theta.sin_cos();
+    let a = [
+        [m * l * c, mu1, -1.0],
+        [-m * l * s, -1.0, -mu2],
+        [m * l * l / 3.0, -l * (s - mu1 * c), l * (c + mu2 * s)],
+    ];
+    let b = [
+        m * l * s * rate * rate,
+        m * l * c * rate * rate - m * G,
+        0.0,
+    ];
+    let det = |a: [[f64; 3]; 3]| {
+        a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+            - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+    };
+    let whole = det(a);
+    let mut x = [0.0; 3];
+    for (k, x) in x.iter_mut().enumerate() {
+        let mut replaced = a;
+        for (row, b) in replaced.iter_mut().zip(b) {
+            row[k] = b;
+        }
+        *x = det(replaced) / whole;
+    }
+    x
+}
+
+#[test]
+fn a_ladder_sliding_on_a_rough_floor_and_wall_follows_the_hand_solution() {
+    let (theta, rate) = (0.6_f64, 0.5);
+    let [alpha, floor, wall] = ladder(theta, rate);
+    for s in solve_all("validation/ladder-on-rough-wall-and-floor", &[]) {
+        let what = |q: &str| format!("{}: {q}", s.method);
+        assert_close(s.acc("theta"), alpha, 1e-9, 1.0, &what("theta''"));
+        let x = 1.25 * (theta.cos() * alpha - theta.sin() * rate * rate);
+        assert_close(s.acc("x"), x, 1e-9, 1.0, &what("x''"));
+        assert_close(s.force("floor")[1], floor, 1e-9, 1.0, &what("floor N"));
+        assert_close(
+            s.force("floor")[0],
+            -0.25 * floor,
+            1e-9,
+            1.0,
+            &what("floor F"),
+        );
+        assert_close(s.force("wall")[0], wall, 1e-9, 1.0, &what("wall N"));
+        assert_close(s.force("wall")[1], 0.2 * wall, 1e-9, 1.0, &what("wall F"));
+        for site in ["floor", "wall"] {
+            assert_eq!(
+                friction_site(&s.json, site)["mode"],
+                "slip",
+                "{}",
+                what(site)
+            );
+        }
+    }
+}
+
+#[test]
+fn the_motion_law_explains_two_rough_contacts_of_one_body() {
+    for name in [
+        "validation/box-on-two-rough-edges",
+        "validation/ladder-on-rough-wall-and-floor",
+    ] {
+        let text = crate::support::explain(name, &["--method", "motion-law"]);
+        assert!(text.contains("while it sticks"), "{name}: no stick rows");
+    }
+}
