@@ -1,8 +1,8 @@
 //! The validation problems of version 3 against closed forms worked by hand, by every
 //! method: two rough contacts on one body (a box pushed on its two edges, a ladder on a
-//! rough floor and a rough wall).
+//! rough floor and a rough wall) and a pendulum on a light slider.
 
-use crate::support::{assert_close, friction_site, solve_all};
+use crate::support::{assert_close, friction_site, problem, run, solve_all};
 
 const G: f64 = 9.81;
 
@@ -113,5 +113,55 @@ fn the_motion_law_explains_two_rough_contacts_of_one_body() {
     ] {
         let text = crate::support::explain(name, &["--method", "motion-law"]);
         assert!(text.contains("while it sticks"), "{name}: no stick rows");
+    }
+}
+
+// ---- a pendulum hung from a light slider held by a spring ----
+
+#[test]
+fn a_pendulum_on_a_light_slider_follows_the_hand_solution() {
+    let (m, l, k) = (0.8, 0.6, 50.0);
+    let (x, theta, theta_rate) = (0.05_f64, 0.4_f64, -0.7_f64);
+    // The slider has no mass: the spring's −k x reaches the bob through the rod alone, so
+    // m X'' = −k x for the bob's X = x + L sin θ, and the rod (no mass either) pushes along
+    // itself: sin θ (Y'' + g) + cos θ X'' = 0 with Y = −L cos θ.
+    let bob_x = -k * x / m;
+    let (s, c) = theta.sin_cos();
+    let alpha = -(l * s * c * theta_rate.powi(2) + G * s + c * bob_x) / (l * s * s);
+    let slider = bob_x - l * c * alpha + l * s * theta_rate.powi(2);
+    let bob_y = l * s * alpha + l * c * theta_rate.powi(2);
+    for sol in solve_all("validation/pendulum-on-light-slider", &[]) {
+        let what = |q: &str| format!("{}: {q}", sol.method);
+        assert_close(sol.acc("theta"), alpha, 1e-9, 1.0, &what("theta''"));
+        assert_close(sol.acc("x"), slider, 1e-9, 1.0, &what("x''"));
+        assert_close(sol.force("pin")[0], -k * x, 1e-9, 1.0, &what("pin x"));
+        assert_close(
+            sol.force("pin")[1],
+            m * (bob_y + G),
+            1e-9,
+            1.0,
+            &what("pin y"),
+        );
+    }
+}
+
+#[test]
+fn with_the_rod_hanging_straight_down_every_method_names_the_light_slider() {
+    let path = problem("validation/pendulum-on-light-slider");
+    for method in crate::support::METHODS {
+        let out = run(&[
+            "solve".as_ref(),
+            path.as_os_str(),
+            "--method".as_ref(),
+            method.as_ref(),
+            "--state".as_ref(),
+            "theta=0".as_ref(),
+        ]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{method}: {stderr}");
+        assert!(
+            stderr.contains("`x''` is undetermined: body S has no mass"),
+            "{method}: {stderr}"
+        );
     }
 }
