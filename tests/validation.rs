@@ -1,8 +1,9 @@
 //! The validation problems of version 3 against closed forms worked by hand, by every
 //! method: two rough contacts on one body (a box pushed on its two edges, a ladder on a
-//! rough floor and a rough wall) and a pendulum on a light slider.
+//! rough floor and a rough wall), a pendulum on a light slider, a planetary gear train and
+//! an Atwood machine with a massive pulley.
 
-use crate::support::{assert_close, friction_site, problem, run, solve_all};
+use crate::support::{assert_close, friction_site, number, problem, run, solve_all};
 
 const G: f64 = 9.81;
 
@@ -163,5 +164,74 @@ fn with_the_rod_hanging_straight_down_every_method_names_the_light_slider() {
             stderr.contains("`x''` is undetermined: body S has no mass"),
             "{method}: {stderr}"
         );
+    }
+}
+
+// ---- a planetary gear train with a fixed ring ----
+
+#[test]
+fn a_planetary_train_turns_with_the_reflected_inertia_and_its_tooth_forces() {
+    let (rs, rp, is, ic, ip, mp, t) = (0.06_f64, 0.03_f64, 0.004, 0.01, 0.0006, 1.2, 2.5);
+    // The ring fixed: ω_c = r_s ω_s / (2 (r_s + r_p)), ω_p = −r_s ω_s / (2 r_p) (absolute).
+    let carrier = rs / (2.0 * (rs + rp));
+    let planet = -rs / (2.0 * rp);
+    let inertia = is + (ic + mp * (rs + rp).powi(2)) * carrier.powi(2) + ip * planet.powi(2);
+    let alpha = t / inertia;
+    // The sun: I_s α = T − r_s F; the planet about its centre: I_p ω_p' = r_p (G − F).
+    let sun_tooth = (t - is * alpha) / rs;
+    let ring_tooth = sun_tooth + ip * planet * alpha / rp;
+    let (qs, qc) = (0.7_f64, 0.3_f64);
+    let state = format!("qs={qs},qc={qc},qp=1.1");
+    for s in solve_all("validation/planetary-gear-train", &["--state", &state]) {
+        let what = |q: &str| format!("{}: {q}", s.method);
+        assert_close(s.acc("qs"), alpha, 1e-9, 1.0, &what("qs''"));
+        assert_close(s.acc("qc"), carrier * alpha, 1e-9, 1.0, &what("qc''"));
+        assert_close(
+            s.acc("qp"),
+            (planet - carrier) * alpha,
+            1e-9,
+            1.0,
+            &what("qp''"),
+        );
+        // Both tooth forces on the planet lie along the tangent (−sin qc, cos qc); the sun's
+        // in the sun's unit vectors, the ring's in N's.
+        let sun = s.force("sunmesh");
+        let (tx, ty) = (-sun_tooth * qc.sin(), sun_tooth * qc.cos());
+        let (c, sn) = (qs.cos(), qs.sin());
+        assert_close(sun[0], c * tx + sn * ty, 1e-9, 1.0, &what("sun tooth x"));
+        assert_close(sun[1], -sn * tx + c * ty, 1e-9, 1.0, &what("sun tooth y"));
+        let ring = s.force("ringmesh");
+        assert_close(ring[0], -ring_tooth * qc.sin(), 1e-9, 1.0, &what("ring x"));
+        assert_close(ring[1], ring_tooth * qc.cos(), 1e-9, 1.0, &what("ring y"));
+    }
+}
+
+// ---- an Atwood machine with a massive pulley ----
+
+#[test]
+fn an_atwood_machine_with_a_massive_or_a_light_pulley() {
+    let (r, m1, m2) = (0.2, 3.0, 1.5);
+    for mass in [4.0, 0.0] {
+        // T = (M R²/2 + (m₁ + m₂) R²) θ'²/2, V = g R θ (m₂ − m₁).
+        let alpha = G * r * (m1 - m2) / (mass * r * r / 2.0 + (m1 + m2) * r * r);
+        let (left, right) = (m1 * (G - r * alpha), m2 * (G + r * alpha));
+        let set = format!("M={mass}");
+        for s in solve_all("validation/atwood-massive-pulley", &["--set", &set]) {
+            let what = |q: &str| format!("{} with M = {mass}: {q}", s.method);
+            assert_close(s.acc("th"), alpha, 1e-9, 1.0, &what("th''"));
+            assert_close(s.acc("y1"), -r * alpha, 1e-9, 1.0, &what("y1''"));
+            assert_close(s.acc("y2"), r * alpha, 1e-9, 1.0, &what("y2''"));
+            assert_close(s.force("left")[1], -left, 1e-9, 1.0, &what("left"));
+            assert_close(s.force("right")[1], -right, 1e-9, 1.0, &what("right"));
+            let bearing = mass * G + left + right;
+            assert_close(s.force("O")[1], bearing, 1e-9, 1.0, &what("bearing"));
+            assert_close(
+                number(&s.json["state"], "y1'"),
+                -r * 1.5,
+                1e-9,
+                1.0,
+                &what("y1'"),
+            );
+        }
     }
 }
