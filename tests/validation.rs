@@ -3,7 +3,7 @@
 //! rough floor and a rough wall), a pendulum on a light slider, a planetary gear train and
 //! an Atwood machine with a massive pulley.
 
-use crate::support::{assert_close, friction_site, number, problem, run, solve_all};
+use crate::support::{assert_close, column, friction_site, number, problem, run, solve_all};
 
 const G: f64 = 9.81;
 
@@ -34,6 +34,69 @@ fn a_box_pushed_on_two_rough_edges_slides_with_a_equal_to_p_minus_mu_m_g_over_m(
                 assert_close(s.force(edge)[0], -mu * normal, 1e-9, 1.0, &what(edge));
             }
         }
+    }
+}
+
+#[test]
+fn a_box_pushed_less_than_mu_m_g_stays_at_rest_on_both_edges() {
+    let (m, b, c, d, p, mu) = (20.0, 0.4, 0.3, 0.1, 50.0, 0.4);
+    assert!(p < mu * m * G, "the case holds");
+    // Both edges stick: statics fixes N_A + N_B = m g, F_A + F_B = −P and, about the
+    // centre, b (N_B − N_A) = (c + d) P, but not how the friction is shared; the tool
+    // shares it so that both edges are equally far from slipping: |F|/N = P/(m g).
+    let difference = (c + d) * p / b;
+    let (back, front) = ((m * G - difference) / 2.0, (m * G + difference) / 2.0);
+    for s in solve_all(
+        "validation/box-on-two-rough-edges",
+        &["--set", "P=50", "--state", "x'=0"],
+    ) {
+        let what = |q: &str| format!("{}: {q}", s.method);
+        assert_close(s.acc("x"), 0.0, 1e-9, 1.0, &what("x''"));
+        assert_close(
+            s.force("back")[0] + s.force("front")[0],
+            -p,
+            1e-9,
+            1.0,
+            &what("ΣF"),
+        );
+        for (edge, normal) in [("back", back), ("front", front)] {
+            let site = friction_site(&s.json, edge);
+            assert_eq!(site["mode"], "stick", "{}", what(edge));
+            assert_close(number(site, "normal"), normal, 1e-9, 1.0, &what(edge));
+            assert_close(number(site, "ratio"), p / (m * G), 1e-9, 1.0, &what(edge));
+        }
+    }
+}
+
+#[test]
+fn a_box_thrown_along_the_floor_stops_at_v_squared_over_two_a_and_stays() {
+    // Pushed with P = 50 N < μ m g while sliding at 1.2 m/s: it slows at (μ m g − P)/m,
+    // stops at t = v/a having gone v²/(2a), and both edges stick from then on.
+    let (m, mu, p, v) = (20.0, 0.4, 50.0, 1.2);
+    let a = (mu * m * G - p) / m;
+    for method in crate::support::METHODS {
+        let (columns, rows) = crate::support::simulate(
+            "validation/box-on-two-rough-edges",
+            &[
+                "--set",
+                "P=50",
+                "--method",
+                method,
+                "--duration",
+                "1.5",
+                "--no-checks",
+            ],
+        );
+        let (x, rate) = (column(&columns, "x"), column(&columns, "x'"));
+        let last = rows.last().expect("rows");
+        assert_close(
+            last[x],
+            v * v / (2.0 * a),
+            1e-8,
+            1.0,
+            &format!("{method}: x"),
+        );
+        assert_close(last[rate], 0.0, 1e-8, 1.0, &format!("{method}: x'"));
     }
 }
 
@@ -102,6 +165,33 @@ fn a_ladder_sliding_on_a_rough_floor_and_wall_follows_the_hand_solution() {
                 "{}",
                 what(site)
             );
+        }
+    }
+}
+
+#[test]
+fn a_ladder_on_a_rough_floor_and_wall_holds_while_tan_theta_is_at_most_the_limit() {
+    // At rest both ends stick, and statics leaves the forces one short (four for three
+    // equations); the ladder holds if some split keeps both within μN, that is for
+    // tan θ ≤ 2μ₁/(1 − μ₁μ₂) (θ from the vertical).
+    let (mu1, mu2) = (0.25_f64, 0.2_f64);
+    let limit = (2.0 * mu1 / (1.0 - mu1 * mu2)).atan();
+    for (theta, mode) in [(limit - 1e-4, "stick"), (limit + 1e-4, "slip")] {
+        let state = format!("theta={theta},theta'=0");
+        for s in solve_all(
+            "validation/ladder-on-rough-wall-and-floor",
+            &["--state", &state],
+        ) {
+            let what = |q: &str| format!("{} at θ = {theta}: {q}", s.method);
+            let want = if mode == "stick" {
+                0.0
+            } else {
+                ladder(theta, 0.0)[0]
+            };
+            assert_close(s.acc("theta"), want, 1e-9, 1.0, &what("theta''"));
+            for site in ["floor", "wall"] {
+                assert_eq!(friction_site(&s.json, site)["mode"], mode, "{}", what(site));
+            }
         }
     }
 }
