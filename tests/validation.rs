@@ -69,6 +69,16 @@ fn a_box_pushed_less_than_mu_m_g_stays_at_rest_on_both_edges() {
 }
 
 #[test]
+fn the_handout_says_that_statics_leaves_the_split_between_the_edges_free() {
+    let text = crate::support::explain(
+        "validation/box-on-two-rough-edges",
+        &["--set", "P=50,v=0", "--method", "kane"],
+    );
+    assert!(text.contains("the equations are one short"), "{text}");
+    assert!(text.contains("The check holds"), "{text}");
+}
+
+#[test]
 fn a_box_thrown_along_the_floor_stops_at_v_squared_over_two_a_and_stays() {
     // Pushed with P = 50 N < μ m g while sliding at 1.2 m/s: it slows at (μ m g − P)/m,
     // stops at t = v/a having gone v²/(2a), and both edges stick from then on.

@@ -84,6 +84,9 @@ pub struct SiteState {
     pub slip: Vec<f64>,
     /// When the site was at rest and sticking failed its check: that first solution.
     pub failed_stick: Option<FailedStick>,
+    /// Whether it sticks together with other sites whose forces statics does not split
+    /// (the split taken is the one farthest from slipping, see [`Friction::solve`]).
+    pub shared: bool,
 }
 
 impl SiteState {
@@ -280,7 +283,10 @@ impl Friction {
                     }
                 }
             }
-            let solved = solve_linear(&a, &b).or_else(|| self.shared(&a, &b, &modes, &run));
+            let solved = solve_linear(&a, &b);
+            // Whether this pass takes the split of forces that statics leaves free.
+            let shared = solved.is_none();
+            let solved = solved.or_else(|| self.shared(&a, &b, &modes, &run));
             let Some(x) = solved else {
                 // Sticking can be impossible at rest: where the kinematics make the slip
                 // accelerate (a slider at a dead centre), no force holds it. It slides
@@ -358,6 +364,7 @@ impl Friction {
                             coefficient: run[i].0,
                             slip: run[i].1.clone(),
                             failed_stick: failed[i].take(),
+                            shared: shared && modes[i] == Held::Stick,
                         }
                     })
                     .collect();
