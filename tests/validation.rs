@@ -1,7 +1,7 @@
 //! The validation problems of version 3 against closed forms worked by hand, by every
 //! method: two rough contacts on one body (a box pushed on its two edges, a ladder on a
-//! rough floor and a rough wall), a pendulum on a light slider, a planetary gear train and
-//! an Atwood machine with a massive pulley.
+//! rough floor and a rough wall), a block on a rough cart, a pendulum on a light slider,
+//! a planetary gear train and an Atwood machine with a massive pulley.
 
 use crate::support::{assert_close, column, friction_site, number, problem, run, solve_all};
 
@@ -214,6 +214,34 @@ fn the_motion_law_explains_two_rough_contacts_of_one_body() {
     ] {
         let text = crate::support::explain(name, &["--method", "motion-law"]);
         assert!(text.contains("while it sticks"), "{name}: no stick rows");
+    }
+}
+
+// ---- a block on a rough cart pulled by a force ----
+
+#[test]
+fn a_block_on_a_rough_cart_rides_along_or_slips_back_by_every_method() {
+    let (cart, block, mu) = (4.0, 1.5, 0.3);
+    for p in [10.0, 30.0] {
+        // Together while the block's m a needs no more than μ m g: P ≤ μ g (M + m).
+        let (x, s, friction) = if p <= mu * G * (cart + block) {
+            let a = p / (cart + block);
+            (a, 0.0, block * a)
+        } else {
+            let a = (p - mu * block * G) / cart;
+            (a, mu * G - a, mu * block * G)
+        };
+        let set = format!("P={p}");
+        for sol in solve_all("validation/block-on-rough-cart", &["--set", &set]) {
+            let what = |q: &str| format!("{} with P = {p}: {q}", sol.method);
+            assert_close(sol.acc("x"), x, 1e-9, 1.0, &what("x''"));
+            assert_close(sol.acc("s"), s, 1e-9, 1.0, &what("s''"));
+            assert_close(sol.force("top")[0], friction, 1e-9, 1.0, &what("friction"));
+            assert_close(sol.force("top")[1], block * G, 1e-9, 1.0, &what("normal"));
+            // The rail carries both weights; the light slider carries nothing across.
+            let rail = sol.force("rail");
+            assert_close(rail[1], (cart + block) * G, 1e-9, 1.0, &what("rail"));
+        }
     }
 }
 
