@@ -380,7 +380,7 @@ fn check_fails(json: &str, path_fragment: &str) {
     let file = std::env::temp_dir().join(format!(
         "friction-bad-{}-{}.json",
         std::process::id(),
-        path_fragment.replace(['[', ']', '.'], "_")
+        path_fragment.replace(['[', ']', '.', ':', ' '], "_")
     ));
     std::fs::write(&file, json).expect("a temporary file");
     for command in ["check", "solve"] {
@@ -405,7 +405,7 @@ fn negative_friction_and_a_zero_normal_are_refused_with_their_paths() {
     );
     check_fails(
         &text.replace("\"normal\": \"N.y\"", "\"normal\": \"0*N.y\""),
-        "constraints[0].normal",
+        "constraints[0].normal: the normal is the zero vector",
     );
     check_fails(
         &text.replace(

@@ -38,4 +38,5 @@ mod snapshots_by_problem;
 mod speeds;
 mod support;
 mod svg_reader;
+mod validation;
 mod variants;

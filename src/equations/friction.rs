@@ -3,7 +3,7 @@
 //! that say so are named after the site's tangential components, so that the numbers can
 //! exchange them for the sliding law where the site slips ([`crate::numeric::friction`]).
 
-use super::rows::Equation;
+use super::rows::{Equation, Sum};
 use crate::mechanics::{MechanicsError, Model};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};
@@ -28,6 +28,54 @@ pub fn stick_equations(
 ) -> Result<Vec<Equation>, MechanicsError> {
     let rows = model.constraints.friction.iter().flat_map(|f| &f.stick);
     super::constraint_rows::constraint_equations(rows, unknowns)
+}
+
+/// `given` with each friction site's stick rows written as the sliding law writes them,
+/// `F_k − c N = 0` (generic c): rows for the Motion Law's planner to judge a plan by where
+/// sticking leaves the forces undetermined but sliding does not. Two rough contacts of one
+/// body (a box on two edges, a ladder on a rough floor and wall) share one no-slip motion,
+/// so their sticking rows say the same thing; sliding, each has its own law. The chosen
+/// rows are the stick rows again ([`stick_rows_back`]): the numbers exchange them where a
+/// site slips.
+pub fn sliding_stand_ins(model: &Model, given: &[Equation], unknowns: &[Symbol]) -> Vec<Equation> {
+    let mut stand_ins = given.to_vec();
+    for (k, f) in model.constraints.friction.iter().enumerate() {
+        for (t, row) in f.stick.iter().enumerate() {
+            let Some(at) = given
+                .iter()
+                .position(|e| matches!(&e.sum, Sum::Constraint { name } if *name == row.name))
+            else {
+                continue;
+            };
+            // Coefficients no two sites share, so that no choice of rows is singular by
+            // coincidence.
+            let mut expression = Expr::sym(row.unknown.clone());
+            for (n, normal) in f.normal.iter().enumerate() {
+                let c = Expr::ratio(7 + 3 * (k + t + n) as i64, 11 + 5 * k as i64 + 2 * t as i64);
+                expression = &expression - &(&c * &Expr::sym(normal.clone()));
+            }
+            let equation = &mut stand_ins[at];
+            equation.unknowns = crate::plan::rows::unknowns_in(&expression, unknowns);
+            equation.groups.contact = expression.clone();
+            equation.expression = expression;
+        }
+    }
+    stand_ins
+}
+
+/// The chosen rows with each stand-in of [`sliding_stand_ins`] exchanged for the stick row
+/// of the same name in `given`.
+pub fn stick_rows_back(rows: Vec<Equation>, given: &[Equation]) -> Vec<Equation> {
+    rows.into_iter()
+        .map(|row| match &row.sum {
+            Sum::Constraint { name } => given
+                .iter()
+                .find(|e| matches!(&e.sum, Sum::Constraint { name: n } if n == name))
+                .cloned()
+                .unwrap_or(row),
+            _ => row,
+        })
+        .collect()
 }
 
 /// Adds to `q`, one generalized force per coordinate, the friction of each rough prismatic

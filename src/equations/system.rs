@@ -330,8 +330,63 @@ pub fn write_equations<'p>(
                 }
                 unknowns = unknowns_of(&reaction_joints);
                 choice = planner::choose(
-                    &model, &actions, &inertia, candidates, &unknowns, &given, &required,
+                    &model,
+                    &actions,
+                    &inertia,
+                    candidates.clone(),
+                    &unknowns,
+                    &given,
+                    &required,
                 );
+            }
+            // Sticking may leave the friction forces undetermined (two rough contacts of
+            // one body share one no-slip motion), sliding not: plan by the sliding law's
+            // rows, then write the stick rows back for the numbers to exchange.
+            let by_sliding = |unknowns: &[Symbol], choice: planner::Choice| {
+                if choice.rows.len() == unknowns.len() || model.constraints.friction.is_empty() {
+                    return choice;
+                }
+                let again = planner::choose(
+                    &model,
+                    &actions,
+                    &inertia,
+                    candidates.clone(),
+                    unknowns,
+                    &super::friction::sliding_stand_ins(&model, &given, unknowns),
+                    &required,
+                );
+                if again.rows.len() == unknowns.len() {
+                    planner::Choice {
+                        rows: super::friction::stick_rows_back(again.rows, &given),
+                        rejected: again.rejected,
+                    }
+                } else {
+                    choice
+                }
+            };
+            choice = by_sliding(&unknowns, choice);
+            if choice.rows.len() < unknowns.len() {
+                // A contact keeps a group of bodies from being one free body (its rows
+                // would hold only where the contact holds), so a requested reaction may
+                // have no row without another one (a cart's rail, with a block held on
+                // the cart by a contact and carried by a light slider): solve for every
+                // reaction then, as Newton-Euler does.
+                let every = unknowns_of(&all_sites);
+                let again = planner::choose(
+                    &model,
+                    &actions,
+                    &inertia,
+                    candidates.clone(),
+                    &every,
+                    &given,
+                    &required,
+                );
+                let again = by_sliding(&every, again);
+                if again.rows.len() == every.len() {
+                    reaction_joints = all_sites.clone();
+                    unknowns = every;
+                    choice = again;
+                }
             }
             (choice.rows, choice.rejected)
         }

@@ -443,7 +443,30 @@ impl Compiled {
                 };
             }
         }
+        // Rows that keep every column can still leave a massless body's coordinate free
+        // together with others (a light slider under a pendulum hanging straight down): its
+        // q'' is then part of the motion the equations do not fix.
+        if let Some(i) = self.massless_left_free(a) {
+            if let Some(body) = &self.massless[i] {
+                return crate::mechanics::massless::undetermined(&self.coordinates[i], body);
+            }
+        }
         "the equations do not determine the unknowns here (a singular configuration, such as gimbal lock)".into()
+    }
+
+    /// A coordinate that moves a massless body and takes part in the motion that `a`
+    /// leaves undetermined (its null space, from the smallest singular value).
+    fn massless_left_free(&self, a: &DMatrix<f64>) -> Option<usize> {
+        if self.massless.iter().all(Option::is_none) || a.nrows() != a.ncols() {
+            return None;
+        }
+        let svd = a.clone().svd(false, true);
+        let v_t = svd.v_t.as_ref()?;
+        let smallest = svd.singular_values.imin();
+        let null = v_t.row(smallest);
+        let size = null.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        (0..self.coordinates.len().min(null.len()))
+            .find(|&i| self.massless[i].is_some() && null[i].abs() > 1e-6 * size)
     }
 }
 

@@ -84,6 +84,9 @@ pub struct SiteState {
     pub slip: Vec<f64>,
     /// When the site was at rest and sticking failed its check: that first solution.
     pub failed_stick: Option<FailedStick>,
+    /// Whether it sticks together with other sites whose forces statics does not split
+    /// (the split taken is the one farthest from slipping, see [`Friction::solve`]).
+    pub shared: bool,
 }
 
 impl SiteState {
@@ -280,7 +283,11 @@ impl Friction {
                     }
                 }
             }
-            let Some(x) = solve_linear(&a, &b) else {
+            let solved = solve_linear(&a, &b);
+            // Whether this pass takes the split of forces that statics leaves free.
+            let shared = solved.is_none();
+            let solved = solved.or_else(|| self.shared(&a, &b, &modes, &run));
+            let Some(x) = solved else {
                 // Sticking can be impossible at rest: where the kinematics make the slip
                 // accelerate (a slider at a dead centre), no force holds it. It slides
                 // then, against the slip acceleration (found on the next pass).
@@ -357,6 +364,7 @@ impl Friction {
                             coefficient: run[i].0,
                             slip: run[i].1.clone(),
                             failed_stick: failed[i].take(),
+                            shared: shared && modes[i] == Held::Stick,
                         }
                     })
                     .collect();
@@ -364,6 +372,65 @@ impl Friction {
             }
         }
         None
+    }
+
+    /// Sticking can fix the motion and leave the contact forces undetermined: two rough
+    /// contacts of one body at rest (a box on two edges, a ladder on a rough floor and
+    /// wall) share one no-slip motion, and statics alone does not split the forces between
+    /// them. Where `a x = b` is consistent and leaves free only the forces of sites that
+    /// stick, the tool takes the split that keeps every site farthest from slipping (the
+    /// least largest |F|/(μ|N|)), so that all stick whenever some split could hold them;
+    /// the check then decides as usual. `None` otherwise (the system is singular).
+    fn shared(
+        &self,
+        a: &DMatrix<f64>,
+        b: &DVector<f64>,
+        modes: &[Held],
+        run: &[(f64, Vec<f64>)],
+    ) -> Option<DVector<f64>> {
+        let sticking: Vec<(&Slot, f64)> = self
+            .slots
+            .iter()
+            .zip(modes)
+            .zip(run)
+            .filter(|((_, mode), _)| **mode == Held::Stick)
+            .map(|((slot, _), (mu, _))| (slot, *mu))
+            .collect();
+        let forces: Vec<usize> = sticking
+            .iter()
+            .flat_map(|(slot, _)| slot.tangential.iter().chain(&slot.normal).copied())
+            .collect();
+        if sticking.is_empty() || a.nrows() != a.ncols() {
+            return None;
+        }
+        let svd = a.clone().svd(true, true);
+        let largest = svd.singular_values.max();
+        if largest.is_nan() || largest <= 0.0 {
+            return None;
+        }
+        let tolerance = 1e-10 * largest;
+        let v_t = svd.v_t.as_ref()?;
+        let free: Vec<DVector<f64>> = (0..svd.singular_values.len())
+            .filter(|&k| svd.singular_values[k] <= tolerance)
+            .map(|k| v_t.row(k).transpose())
+            .collect();
+        let only_forces = free
+            .iter()
+            .all(|v| (0..v.len()).all(|j| forces.contains(&j) || v[j].abs() <= 1e-8 * v.amax()));
+        if free.is_empty() || !only_forces {
+            return None;
+        }
+        let x = svd.solve(b, tolerance).ok()?;
+        if (a * &x - b).norm() > 1e-9 * (b.norm() + a.norm() * x.norm()) {
+            return None;
+        }
+        let planar = sticking
+            .iter()
+            .all(|(slot, _)| slot.tangential.len() == 1 && slot.normal.len() == 1);
+        match free.as_slice() {
+            [v] if planar => Some(farthest_from_slipping(&x, v, &sticking)),
+            _ => Some(x),
+        }
     }
 
     /// The functions whose zeros are the instants a site changes mode, while each is held
@@ -426,4 +493,67 @@ fn norm(v: &[f64]) -> f64 {
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Along the one free direction `v` of the forces, from the solution `x`, the point that
+/// keeps the sites (each with one friction and one normal component, and its μ) farthest
+/// from slipping: the least r with |F| ≤ r μ N and N ≥ 0 at every site (N's sign as in `x`),
+/// by bisection on r. `x` itself when no point has every N on its side.
+fn farthest_from_slipping(
+    x: &DVector<f64>,
+    v: &DVector<f64>,
+    sites: &[(&Slot, f64)],
+) -> DVector<f64> {
+    // Each condition as `c0 + c1 t ≤ 0` on x + t v.
+    let conditions = |r: f64| -> Vec<(f64, f64)> {
+        let mut out = Vec::new();
+        for (slot, mu) in sites {
+            let (f, n) = (slot.tangential[0], slot.normal[0]);
+            let sign = if x[n] < 0.0 { -1.0 } else { 1.0 };
+            let (n0, n1) = (sign * x[n], sign * v[n]);
+            out.push((-n0, -n1));
+            out.push((x[f] - r * mu * n0, v[f] - r * mu * n1));
+            out.push((-x[f] - r * mu * n0, -v[f] - r * mu * n1));
+        }
+        out
+    };
+    let interval = |r: f64| -> Option<(f64, f64)> {
+        let (mut low, mut high) = (f64::NEG_INFINITY, f64::INFINITY);
+        for (c0, c1) in conditions(r) {
+            let slack = 1e-12 * (c0.abs() + 1.0);
+            if c1.abs() <= 1e-15 {
+                if c0 > slack {
+                    return None;
+                }
+            } else if c1 > 0.0 {
+                high = high.min(-c0 / c1);
+            } else {
+                low = low.max(-c0 / c1);
+            }
+        }
+        (low <= high).then_some((low, high))
+    };
+    let at = |t: f64| x + v * t;
+    let mut high = 1.0;
+    while interval(high).is_none() {
+        high *= 2.0;
+        if high > 1e12 {
+            return x.clone();
+        }
+    }
+    let mut low = 0.0;
+    for _ in 0..100 {
+        let middle = 0.5 * (low + high);
+        if interval(middle).is_some() {
+            high = middle;
+        } else {
+            low = middle;
+        }
+    }
+    match interval(high) {
+        Some((from, to)) if from.is_finite() && to.is_finite() => at(0.5 * (from + to)),
+        Some((from, _)) if from.is_finite() => at(from),
+        Some((_, to)) if to.is_finite() => at(to),
+        _ => x.clone(),
+    }
 }

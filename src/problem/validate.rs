@@ -92,9 +92,11 @@ pub fn axis(v: &VectorExpr, values: &ConstantValues, path: &str, diag: &mut Diag
     }
     let length = sum.iter().map(|x| x * x).sum::<f64>().sqrt();
     if length == 0.0 || !length.is_normal() {
+        // Named by its key: a joint's `axis`, a contact's `normal`.
+        let key = path.rsplit('.').next().unwrap_or("axis");
         diag.hint(
             path,
-            "the axis is the zero vector",
+            format!("the {key} is the zero vector"),
             "give a direction such as N.z",
         );
     }

@@ -163,6 +163,12 @@ fn steps(
         format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip row {rows} holds. Solved with it:"),
         forces(names, tangential, normal, n),
     ));
+    if state.shared {
+        out.push(step(
+            format!("Sticking here, the equations are one short: statics fixes only what the sticking contacts carry together, not how they share it. The split taken is the one that keeps every {noun} as far from slipping (|F|/μ|N|) as the others, so that the {noun}s stick if any split could hold them."),
+            "",
+        ));
+    }
     match first {
         None => {
             out.push(step(

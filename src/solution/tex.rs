@@ -240,7 +240,13 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
     match row.map(|r| &r.origin) {
         Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
             Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
-                text(format!("rolling constraint at {}", s.name))
+                // A point that slides on a plane (`contact`) does not roll.
+                let slides = matches!(s.kind, SiteKind::Contact(k) if matches!(
+                    problem.constraints.get(k).map(|c| &c.kind),
+                    Some(crate::problem::ConstraintKind::Contact { .. })
+                ));
+                let what = if slides { "contact" } else { "rolling" };
+                text(format!("{what} constraint at {}", s.name))
             }
             Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
                 text(format!("loop closure at {}", s.name))
