@@ -220,22 +220,35 @@ impl Compiled {
     }
 
     /// As [`Compiled::new`], with the q'' by the articulated-body algorithm where it
-    /// applies and is the faster: an unconstrained tree of joints, bodies and gravity
-    /// alone, no reactions asked, at least [`RECURSIVE_FROM_DOF`] coordinates (see
+    /// applies and is the faster: an unconstrained tree of joints, bodies, gravity and
+    /// loads, no reactions asked, at least [`RECURSIVE_FROM_DOF`] coordinates (see
     /// [`super::recursive`]). The numbers of `solve` and `simulate`; the confirmation
     /// checks compile each method's own rows with [`Compiled::new`].
     pub fn fastest(derivation: &Derivation) -> Compiled {
-        let mut compiled = Compiled::new(derivation);
-        let plain = compiled.reactions.is_empty()
-            && compiled.drives.is_empty()
-            && compiled.friction.is_none()
-            && compiled.speeds.is_none()
-            && compiled.assembly.is_none()
-            && compiled.coordinates.len() >= RECURSIVE_FROM_DOF;
-        if plain {
-            compiled.recursive = Recursive::new(&derivation.model);
+        let compiled = Compiled::new(derivation);
+        if compiled.coordinates.len() >= RECURSIVE_FROM_DOF {
+            compiled.with_recursive(derivation)
+        } else {
+            compiled
         }
-        compiled
+    }
+
+    /// As [`Compiled::new`], with the q'' by the articulated-body algorithm wherever it
+    /// applies, whatever the number of coordinates: the benchmarks time both forms with it.
+    pub fn recursive(derivation: &Derivation) -> Compiled {
+        Compiled::new(derivation).with_recursive(derivation)
+    }
+
+    fn with_recursive(mut self, derivation: &Derivation) -> Compiled {
+        let plain = self.reactions.is_empty()
+            && self.drives.is_empty()
+            && self.friction.is_none()
+            && self.speeds.is_none()
+            && self.assembly.is_none();
+        if plain {
+            self.recursive = Recursive::new(derivation);
+        }
+        self
     }
 
     /// Whether the q'' come from the articulated-body algorithm, not the compiled rows.
@@ -339,7 +352,7 @@ impl Compiled {
     ) -> Result<Motion, SolveError> {
         // A state the recursive form finds singular goes on to the dense form, which says why.
         if let (Some(tree), None) = (&self.recursive, held) {
-            if let Some(accelerations) = tree.accelerations(q, rates) {
+            if let Some(accelerations) = tree.accelerations(t, q, rates) {
                 return Ok(Motion {
                     accelerations,
                     reactions: Vec::new(),

@@ -2,19 +2,27 @@
 //! with everything that is constant for a problem (joint axes and points, masses, inertias,
 //! gravity) read from the model once, so an evaluation does only the three passes.
 //!
-//! It covers the inertia and the weight, nothing else: a problem with loads, constraints,
-//! prescribed or dependent coordinates, declared speeds or friction is left to the dense
-//! form ([`Recursive::new`] gives `None`), as is any state where it finds a joint's
-//! articulated inertia singular (the dense form then explains why).
+//! Gravity is the ground's acceleration. The loads (springs, dampers, applied forces and
+//! torques, joint springs, dampers and actuators) enter as the joint forces τ: their
+//! generalized active forces `Q_r = Σ F · ∂v/∂q̇_r + T · ∂ω/∂q̇_r`, formed in symbols once
+//! from Kane's partial velocities ([`crate::equations::kane::loads`]) and compiled into one
+//! program of the constants, q, q' and t, run before the passes at each state (`loads`).
+//!
+//! A problem with constraints, prescribed or dependent coordinates, declared speeds or
+//! friction is left to the dense form ([`Recursive::new`] gives `None`), as is any state
+//! where it finds a joint's articulated inertia singular (the dense form then explains
+//! why). [`super::evaluate`] leaves to it too a problem that asks for reactions, which the
+//! passes do not give.
 //!
 //! Which form `solve` and `simulate` use is decided in [`super::evaluate`]: by the rule
 //! [`RECURSIVE_FROM_DOF`].
 
 mod aba;
 mod joint;
+mod loads;
 mod spatial;
 
-use crate::mechanics::Model;
+use crate::equations::Derivation;
 use crate::problem::BodyId;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
@@ -46,18 +54,20 @@ pub struct Recursive {
     ground: Vector6<f64>,
     /// The number of coordinates.
     dof: usize,
+    /// The loads' generalized forces, the joint forces τ; `None` without loads.
+    loads: Option<loads::Loads>,
     /// Reused between evaluations, so that one allocates only its result.
     scratch: std::cell::RefCell<aba::Scratch>,
 }
 
 impl Recursive {
-    /// The tree of `model`, with the constants' values of the model; `None` where the
-    /// problem has anything but joints, bodies and gravity (see the module's notes), or an
-    /// expression the passes need is not constant.
-    pub fn new(model: &Model) -> Option<Recursive> {
+    /// The tree of `derivation`'s model, with the constants' values of the model and its
+    /// loads compiled; `None` where the problem has anything but joints, bodies, gravity and
+    /// loads (see the module's notes), or an expression the passes need is not constant.
+    pub fn new(derivation: &Derivation) -> Option<Recursive> {
+        let model = &derivation.model;
         let problem = model.problem;
-        let plain = problem.loads.is_empty()
-            && problem.closures.is_empty()
+        let plain = problem.closures.is_empty()
             && problem.constraints.is_empty()
             && problem.speeds.is_empty()
             && model.speeds.is_none()
@@ -114,6 +124,7 @@ impl Recursive {
             bodies,
             ground: spatial::join(Vector3::zeros(), -g),
             dof: problem.coordinates.len(),
+            loads: loads::Loads::new(derivation),
             scratch: Default::default(),
         })
     }
@@ -123,13 +134,24 @@ impl Recursive {
         self.dof
     }
 
-    /// The q'' at coordinates `q` and rates `rates` (coordinate order); `None` where a
-    /// joint's articulated inertia is singular or a value is not finite.
-    pub fn accelerations(&self, q: &[f64], rates: &[f64]) -> Option<Vec<f64>> {
+    /// The number of operations of one evaluation of the loads' generalized forces (zero
+    /// without loads).
+    pub fn load_operation_count(&self) -> usize {
+        self.loads.as_ref().map_or(0, loads::Loads::operation_count)
+    }
+
+    /// The q'' at time `t`, coordinates `q` and rates `rates` (coordinate order); `None`
+    /// where a joint's articulated inertia is singular or a value is not finite.
+    pub fn accelerations(&self, t: f64, q: &[f64], rates: &[f64]) -> Option<Vec<f64>> {
         if q.len() != self.dof || rates.len() != self.dof {
             return None;
         }
         let mut scratch = self.scratch.take();
+        scratch.tau.clear();
+        scratch.tau.resize(self.dof, 0.0);
+        if let Some(loads) = &self.loads {
+            loads.run(t, q, rates, &mut scratch.tau);
+        }
         let out = aba::accelerations(self, &mut scratch, q, rates);
         self.scratch.replace(scratch);
         out
