@@ -8,7 +8,7 @@
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::recursive::RECURSIVE_FROM_DOF;
+use mbd_tutor::numeric::recursive::is_faster;
 use mbd_tutor::numeric::simulate::simulate;
 use mbd_tutor::numeric::system::System;
 use mbd_tutor::pipeline::{derive, Solver};
@@ -115,7 +115,8 @@ fn bundled_problems_with_loads_keep_their_numbers_with_the_recursive_form() {
             assert!(ours.is_recursive(), "{what}");
             let fastest = Solver::fastest(&problem, &derivation);
             let n = problem.coordinates.len();
-            assert_eq!(fastest.compiled().is_recursive(), n >= RECURSIVE_FROM_DOF, "{what}");
+            let planar = derivation.model.is_planar();
+            assert_eq!(fastest.compiled().is_recursive(), is_faster(n, planar), "{what}");
             let theirs = Compiled::new(&derivation);
             // Random states and times, a repeatable stream.
             let mut seed = 0x2545_f491_4f6c_dd1du64;

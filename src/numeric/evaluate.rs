@@ -3,7 +3,7 @@
 
 use super::inputs::input_symbols;
 use super::linear::solve_linear_owned;
-use super::recursive::{Recursive, RECURSIVE_FROM_DOF};
+use super::recursive::Recursive;
 use super::speeds::SpeedProgram;
 use super::system::{describe_state, Evaluation, ReactionColumn, System};
 use super::SolveError;
@@ -221,12 +221,13 @@ impl Compiled {
 
     /// As [`Compiled::new`], with the q'' by the articulated-body algorithm where it
     /// applies and is the faster: an unconstrained tree of joints, bodies, gravity and
-    /// loads, no reactions asked, at least [`RECURSIVE_FROM_DOF`] coordinates (see
-    /// [`super::recursive`]). The numbers of `solve` and `simulate`; the confirmation
+    /// loads, no reactions asked, with as many coordinates as make it the faster
+    /// ([`super::recursive::is_faster`]). The numbers of `solve` and `simulate`; the confirmation
     /// checks compile each method's own rows with [`Compiled::new`].
     pub fn fastest(derivation: &Derivation) -> Compiled {
         let compiled = Compiled::new(derivation);
-        if compiled.coordinates.len() >= RECURSIVE_FROM_DOF {
+        let planar = derivation.model.is_planar();
+        if super::recursive::is_faster(compiled.coordinates.len(), planar) {
             compiled.with_recursive(derivation)
         } else {
             compiled
@@ -249,6 +250,12 @@ impl Compiled {
             self.recursive = Recursive::new(derivation);
         }
         self
+    }
+
+    /// The operations of one evaluation of the loads' generalized forces where the q'' come
+    /// from the articulated-body algorithm (zero without loads); `None` where they do not.
+    pub fn load_operation_count(&self) -> Option<usize> {
+        self.recursive.as_ref().map(Recursive::load_operation_count)
     }
 
     /// Whether the q'' come from the articulated-body algorithm, not the compiled rows.

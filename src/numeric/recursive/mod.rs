@@ -15,7 +15,7 @@
 //! passes do not give.
 //!
 //! Which form `solve` and `simulate` use is decided in [`super::evaluate`]: by the rule
-//! [`RECURSIVE_FROM_DOF`].
+//! [`is_faster`], from the measured [`RECURSIVE_FROM_DOF`] and [`RECURSIVE_FROM_DOF_PLANAR`].
 
 mod aba;
 mod joint;
@@ -26,12 +26,36 @@ use crate::equations::Derivation;
 use crate::problem::BodyId;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
-/// From this many degrees of freedom the recursive form is used where it applies; below it
-/// the dense program and its LU. Chosen, not yet measured at the boundary: the smallest
-/// chains of `tools/bench/chains.py` (revolute 6, spherical 3) already run faster
-/// recursively (BENCHMARKS.md), and with one or two coordinates the dense program is a
-/// handful of operations.
-pub const RECURSIVE_FROM_DOF: usize = 3;
+/// From this many coordinates a spatial problem takes the recursive form where it applies;
+/// below it the dense program and its LU. Measured (2026-11-28, the fastest of 2 runs of
+/// `cargo bench --bench evaluate -- F kane`, which times the two forms taking turns, on
+/// `python3 tools/bench/chains.py write KIND N F` and the same `--springs`): revolute chains
+/// of 2, 3 and 4 coordinates tie (0.88 / 0.85, 1.35 / 1.35, 1.39 / 1.38 µs dense /
+/// recursive), and from 6 the recursive form wins (revolute 6: 3.74 / 2.26 µs, spherical 2:
+/// 1.70 / 1.03 µs); with a spring and damper on every coordinate the loads' program makes
+/// the recursive form lose to 4 coordinates (revolute 4: 1.76 / 1.85 µs) and tie at 6
+/// (3.0 / 2.82 µs). The machine's speed varied by up to 2× between runs.
+pub const RECURSIVE_FROM_DOF: usize = 6;
+
+/// As [`RECURSIVE_FROM_DOF`], for a planar problem: the passes work in space, while the
+/// dense program of a planar chain is short, so the dense form wins longer. Measured as
+/// there on planar chains: dense faster at 2 to 10 coordinates (planar 2: 0.55 / 0.84 µs,
+/// planar 6: 1.97 / 2.94 µs, planar 10: 4.00 / 4.67 µs), a tie at 12 (6.42 / 7.14 and
+/// 5.34 / 5.26 µs in two runs), the recursive from 14 (planar 14: 6.28 / 5.97 µs, planar 16:
+/// 8.70 / 8.20 µs, planar 20: 12.01 / 10.22 µs); with a spring and damper on every
+/// coordinate the dense form wins at every size measured, to 10.
+pub const RECURSIVE_FROM_DOF_PLANAR: usize = 14;
+
+/// Whether the recursive form is the faster for `dof` coordinates, in the plane or not
+/// (see [`RECURSIVE_FROM_DOF`] and [`RECURSIVE_FROM_DOF_PLANAR`]).
+pub fn is_faster(dof: usize, planar: bool) -> bool {
+    let from = if planar {
+        RECURSIVE_FROM_DOF_PLANAR
+    } else {
+        RECURSIVE_FROM_DOF
+    };
+    dof >= from
+}
 
 /// One body of the tree, in an order with parents first.
 #[derive(Clone, Debug)]
