@@ -116,7 +116,11 @@ fn bundled_problems_with_loads_keep_their_numbers_with_the_recursive_form() {
             let fastest = Solver::fastest(&problem, &derivation);
             let n = problem.coordinates.len();
             let planar = derivation.model.is_planar();
-            assert_eq!(fastest.compiled().is_recursive(), is_faster(n, planar), "{what}");
+            assert_eq!(
+                fastest.compiled().is_recursive(),
+                is_faster(n, planar),
+                "{what}"
+            );
             let theirs = Compiled::new(&derivation);
             // Random states and times, a repeatable stream.
             let mut seed = 0x2545_f491_4f6c_dd1du64;

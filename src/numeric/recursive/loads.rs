@@ -44,7 +44,8 @@ impl Loads {
         inputs.extend_from_slice(q);
         inputs.extend_from_slice(rates);
         inputs.push(t);
-        self.program.run(&inputs, &mut self.scratch.borrow_mut(), tau);
+        self.program
+            .run(&inputs, &mut self.scratch.borrow_mut(), tau);
     }
 
     /// The number of operations of one run.
