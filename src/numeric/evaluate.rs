@@ -3,7 +3,7 @@
 
 use super::inputs::input_symbols;
 use super::linear::solve_linear_owned;
-use super::recursive::{Recursive, RECURSIVE_FROM_DOF};
+use super::recursive::Recursive;
 use super::speeds::SpeedProgram;
 use super::system::{describe_state, Evaluation, ReactionColumn, System};
 use super::SolveError;
@@ -220,22 +220,42 @@ impl Compiled {
     }
 
     /// As [`Compiled::new`], with the q'' by the articulated-body algorithm where it
-    /// applies and is the faster: an unconstrained tree of joints, bodies and gravity
-    /// alone, no reactions asked, at least [`RECURSIVE_FROM_DOF`] coordinates (see
-    /// [`super::recursive`]). The numbers of `solve` and `simulate`; the confirmation
+    /// applies and is the faster: an unconstrained tree of joints, bodies, gravity and
+    /// loads, no reactions asked, with as many coordinates as make it the faster
+    /// ([`super::recursive::is_faster`]). The numbers of `solve` and `simulate`; the confirmation
     /// checks compile each method's own rows with [`Compiled::new`].
     pub fn fastest(derivation: &Derivation) -> Compiled {
-        let mut compiled = Compiled::new(derivation);
-        let plain = compiled.reactions.is_empty()
-            && compiled.drives.is_empty()
-            && compiled.friction.is_none()
-            && compiled.speeds.is_none()
-            && compiled.assembly.is_none()
-            && compiled.coordinates.len() >= RECURSIVE_FROM_DOF;
-        if plain {
-            compiled.recursive = Recursive::new(&derivation.model);
+        let compiled = Compiled::new(derivation);
+        let planar = derivation.model.is_planar();
+        if super::recursive::is_faster(compiled.coordinates.len(), planar) {
+            compiled.with_recursive(derivation)
+        } else {
+            compiled
         }
-        compiled
+    }
+
+    /// As [`Compiled::new`], with the q'' by the articulated-body algorithm wherever it
+    /// applies, whatever the number of coordinates: the benchmarks time both forms with it.
+    pub fn recursive(derivation: &Derivation) -> Compiled {
+        Compiled::new(derivation).with_recursive(derivation)
+    }
+
+    fn with_recursive(mut self, derivation: &Derivation) -> Compiled {
+        let plain = self.reactions.is_empty()
+            && self.drives.is_empty()
+            && self.friction.is_none()
+            && self.speeds.is_none()
+            && self.assembly.is_none();
+        if plain {
+            self.recursive = Recursive::new(derivation);
+        }
+        self
+    }
+
+    /// The operations of one evaluation of the loads' generalized forces where the q'' come
+    /// from the articulated-body algorithm (zero without loads); `None` where they do not.
+    pub fn load_operation_count(&self) -> Option<usize> {
+        self.recursive.as_ref().map(Recursive::load_operation_count)
     }
 
     /// Whether the q'' come from the articulated-body algorithm, not the compiled rows.
@@ -339,7 +359,7 @@ impl Compiled {
     ) -> Result<Motion, SolveError> {
         // A state the recursive form finds singular goes on to the dense form, which says why.
         if let (Some(tree), None) = (&self.recursive, held) {
-            if let Some(accelerations) = tree.accelerations(q, rates) {
+            if let Some(accelerations) = tree.accelerations(t, q, rates) {
                 return Ok(Motion {
                     accelerations,
                     reactions: Vec::new(),

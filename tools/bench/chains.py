@@ -9,6 +9,10 @@ axis:
   spherical  spherical joints, body-fixed x-y-z angles (3D).
 
   python3 tools/bench/chains.py write KIND N OUT.json     the problem file
+  python3 tools/bench/chains.py write KIND N OUT.json --springs
+                                                           with loads: a spring and a damper
+                                                           on every coordinate, and a spring
+                                                           from the ground to the last link
   python3 tools/bench/chains.py aba KIND N                 Pinocchio's aba, µs per call
 """
 import json
@@ -84,6 +88,26 @@ def problem(kind, n):
     }
 
 
+def with_springs(spec, kind, n):
+    """The chain with loads: a joint spring and damper on every coordinate, and a spring of
+    free length 0.5 from a point of the ground to the last link's mass centre."""
+    planar = kind == "planar"
+    spec["title"] += ", with springs and dampers"
+    spec["constants"].update({"k": 20.0, "c": 0.4, "K": 50.0, "l0": 0.5})
+    spec["points"] = {"anchor": {"on": "N", "at": "0.3*N.x" if planar else "0.3*N.x + 0.2*N.y"}}
+    loads = []
+    for joint in spec["joints"]:
+        for q in joint["coordinates"]:
+            loads.append({"type": "joint_spring", "joint": joint["name"], "coordinate": q,
+                          "stiffness": "k"})
+            loads.append({"type": "joint_damper", "joint": joint["name"], "coordinate": q,
+                          "coefficient": "c"})
+    loads.append({"type": "spring", "between": ["anchor", f"B{n}*"], "stiffness": "K",
+                  "free_length": "l0"})
+    spec["loads"] = loads
+    return spec
+
+
 def pinocchio_model(kind, n):
     """The same chain as a Pinocchio model (joint frames at the pins, z up, gravity -g z)."""
     import numpy as np
@@ -151,8 +175,11 @@ def main():
         sys.exit(__doc__)
     command, kind, n = sys.argv[1], sys.argv[2], int(sys.argv[3])
     if command == "write":
+        spec = problem(kind, n)
+        if "--springs" in sys.argv[5:]:
+            spec = with_springs(spec, kind, n)
         with open(sys.argv[4], "w") as out:
-            json.dump(problem(kind, n), out, indent=1)
+            json.dump(spec, out, indent=1)
             out.write("\n")
     elif command == "aba":
         us, qdd = aba_microseconds(kind, n)

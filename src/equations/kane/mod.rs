@@ -12,6 +12,7 @@ use crate::plan::forces::{
 use crate::plan::rows::{is_external, Equation, Groups, Inertia, Sum};
 
 pub mod constrained;
+pub mod loads;
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{add, Expr, Symbol};
 

@@ -26,13 +26,15 @@ struct Inward {
     u: [Vector6<f64>; MAX_DOF],
     /// `D⁻¹`.
     d_inverse: Small,
-    /// `τ − Sᵀ pᴬ` (τ = 0: no loads).
+    /// `τ − Sᵀ pᴬ`, τ the loads' generalized forces on the joint's coordinates.
     free: [f64; MAX_DOF],
 }
 
 /// The per-body buffers of one evaluation, kept between evaluations.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Scratch {
+    /// The joint forces τ of the state, in coordinate order: written before the passes.
+    pub tau: Vec<f64>,
     states: Vec<State>,
     velocity: Vec<Vector6<f64>>,
     bias: Vec<Vector6<f64>>,
@@ -42,8 +44,9 @@ pub(super) struct Scratch {
     acceleration: Vec<Vector6<f64>>,
 }
 
-/// The q'' at coordinates `q` and rates `rates`, in the problem's coordinate order; `None`
-/// where a joint's articulated inertia is singular or a value is not finite.
+/// The q'' at coordinates `q` and rates `rates` with the joint forces `s.tau`, in the
+/// problem's coordinate order; `None` where a joint's articulated inertia is singular or a
+/// value is not finite.
 pub(super) fn accelerations(
     tree: &Recursive,
     s: &mut Scratch,
@@ -76,9 +79,9 @@ pub(super) fn accelerations(
         let (k, state, inertia) = (body.dof, &s.states[i], s.inertia[i]);
         let mut w = Inward::default();
         let mut d: Small = Default::default();
-        for a in 0..k {
+        for (a, c) in body.joint.coordinates().enumerate() {
             w.u[a] = inertia * state.s[a];
-            w.free[a] = -state.s[a].dot(&s.force[i]);
+            w.free[a] = s.tau[c] - state.s[a].dot(&s.force[i]);
             for b in 0..=a {
                 let x = state.s[b].dot(&w.u[a]);
                 d[a][b] = x;
