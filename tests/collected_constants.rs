@@ -37,8 +37,9 @@ fn a_joint_points_acceleration_groups_the_offsets_as_the_rigid_body_formula_does
 
 #[test]
 fn eulers_equations_write_the_difference_of_inertias_positive_first() {
-    // I₂ u̇₂ = (I₃ − I₁) u₃ u₁, as Euler wrote it.
-    let euler = r"-I_{2} \dot{u}_{2} + \left(I_{3} - I_{1}\right) u_{1} u_{3} = 0";
+    // I₂ u̇₂ = (I₃ − I₁) u₃ u₁, as Euler wrote it; the handout writes Kane's row with the
+    // mass matrix positive, I₂ u̇₂ + (I₁ − I₃) u₁ u₃ = 0.
+    let euler = r"I_{2} \dot{u}_{2} + \left(I_{1} - I_{3}\right) u_{1} u_{3} = 0";
     prints("torque-free-body-speeds", "kane", euler);
 }
 

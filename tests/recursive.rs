@@ -53,17 +53,7 @@ fn bundled_problems_keep_their_numbers_with_the_recursive_form() {
             let ours = fastest.solve(0.0, &q, &rates).expect("solves");
             let theirs = dense.solve(0.0, &q, &rates).expect("solves");
             close(&ours.accelerations, &theirs.accelerations, 1e-10, &what);
-            let ours = simulate(&fastest, &q, &rates, &problem.simulate).expect("simulates");
-            let theirs = simulate(&dense, &q, &rates, &problem.simulate).expect("simulates");
-            assert_eq!(ours.rows.len(), theirs.rows.len(), "{what}");
-            for (a, b) in ours
-                .rows
-                .iter()
-                .zip(&theirs.rows)
-                .filter(|(_, b)| b[0] <= 1.0)
-            {
-                close(a, b, 1e-10, &what);
-            }
+            first_second_agrees(&problem, &fastest, &dense, &what);
         }
     }
     assert!(taken >= 4, "the recursive form took {taken} runs");

@@ -312,15 +312,19 @@ pub fn write_equations<'p>(
                 .iter()
                 .map(|s| model.values_at(s.t, &s.q, &s.rates))
                 .collect();
-            let mut choice = planner::choose(
-                &model,
-                &actions,
-                &inertia,
-                candidates.clone(),
-                &unknowns,
-                &given,
-                &required,
-            );
+            // The plan for `wanted` unknowns, with `given` rows (the constraints).
+            let plan = |wanted: &[Symbol], given: &[Equation]| {
+                planner::choose(
+                    &model,
+                    &actions,
+                    &inertia,
+                    candidates.clone(),
+                    wanted,
+                    given,
+                    &required,
+                )
+            };
+            let mut choice = plan(&unknowns, &given);
             if choice.rows.len() < unknowns.len() && !loop_sites.is_empty() {
                 // No free body avoids every reaction of the loop: solve for them too.
                 for &j in &loop_sites {
@@ -329,15 +333,7 @@ pub fn write_equations<'p>(
                     }
                 }
                 unknowns = unknowns_of(&reaction_joints);
-                choice = planner::choose(
-                    &model,
-                    &actions,
-                    &inertia,
-                    candidates.clone(),
-                    &unknowns,
-                    &given,
-                    &required,
-                );
+                choice = plan(&unknowns, &given);
             }
             // Sticking may leave the friction forces undetermined (two rough contacts of
             // one body share one no-slip motion), sliding not: plan by the sliding law's
@@ -346,14 +342,9 @@ pub fn write_equations<'p>(
                 if choice.rows.len() == unknowns.len() || model.constraints.friction.is_empty() {
                     return choice;
                 }
-                let again = planner::choose(
-                    &model,
-                    &actions,
-                    &inertia,
-                    candidates.clone(),
+                let again = plan(
                     unknowns,
                     &super::friction::sliding_stand_ins(&model, &given, unknowns),
-                    &required,
                 );
                 if again.rows.len() == unknowns.len() {
                     planner::Choice {
@@ -372,15 +363,7 @@ pub fn write_equations<'p>(
                 // the cart by a contact and carried by a light slider): solve for every
                 // reaction then, as Newton-Euler does.
                 let every = unknowns_of(&all_sites);
-                let again = planner::choose(
-                    &model,
-                    &actions,
-                    &inertia,
-                    candidates.clone(),
-                    &every,
-                    &given,
-                    &required,
-                );
+                let again = plan(&every, &given);
                 let again = by_sliding(&every, again);
                 if again.rows.len() == every.len() {
                     reaction_joints = all_sites.clone();
