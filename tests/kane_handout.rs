@@ -173,6 +173,12 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
     )));
     assert!(row3.contains("The reaction at $P$, inside $A + B$, drops out"));
     assert!(row3.contains("with $u_{3} = 0$"));
+    // The second component at O is told in short, referring to the first.
+    let n_y = latex_unit_vector("N", 1);
+    let row4 = section(&text, "**4. ", "In matrix form");
+    assert!(row4.contains(&format!(
+        "As in row 3, along ${n_y}$: the partial velocities of $u_{{4}}$ are $\\mathbf{{v}}^{{A^*}}_{{4}} = \\mathbf{{v}}^{{B^*}}_{{4}} = {n_y}$"
+    )));
     let plan = section(&text, "## Step 3", "## Step 4");
     assert!(plan.contains("rows 1 and 2 hold only the second derivatives"));
     assert!(plan.contains("each of rows 3 and 4 gives its one reaction"));

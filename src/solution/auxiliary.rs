@@ -46,8 +46,21 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
             .collect::<Vec<_>>()
             .join(separator)
     };
-    let motion = match reaction.kind {
-        ComponentKind::Force => {
+    // A later component at the same joint is told as the first is, in short.
+    let first = first_row_at(derivation, row, site, reaction.kind).filter(|&first| first < r);
+    let motion = match (reaction.kind, first) {
+        (ComponentKind::Force, Some(first)) => {
+            let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}^*}}_{{{r}}}"));
+            return Some(format!(
+                "As in row {first}, along ${d}$: the partial velocities of ${u}$ are ${partials} = {d}$, and only ${unknown}$ and the forces on ${bodies}$ from outside do work with them."
+            ));
+        }
+        (ComponentKind::Moment, Some(first)) => {
+            return Some(format!(
+                "As in row {first}, turning about ${d}$: the partial angular velocities of ${u}$ are ${d}$, and only ${unknown}$ and the forces on ${bodies}$ from outside do work with them."
+            ));
+        }
+        (ComponentKind::Force, None) => {
             let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}^*}}_{{{r}}}"));
             let angular = if particles_only {
                 String::new()
@@ -58,7 +71,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
                 "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before: the partial velocities of ${u}$ are ${partials} = {d}${angular}."
             )
         }
-        ComponentKind::Moment => {
+        (ComponentKind::Moment, None) => {
             let partials = centres(", ", &|b| {
                 format!(
                     "\\mathbf{{v}}^{{{b}^*}}_{{{r}}} = {d} \\times \\mathbf{{r}}^{{{point} {b}^*}}"
@@ -83,6 +96,29 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     Some(format!(
         "{motion} Only ${unknown}$ and the other forces on ${bodies}$ from outside do work with them.{inside} The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe."
     ))
+}
+
+/// The number of Kane's first auxiliary row (1-based) that brings in a reaction of the
+/// joint `site` of `kind` on the same free body as `row`.
+fn first_row_at(
+    derivation: &Derivation,
+    row: &Equation,
+    site: &str,
+    kind: ComponentKind,
+) -> Option<usize> {
+    let speeds = super::kane::speed_rows(derivation);
+    let brings_in = |u: &Symbol| {
+        matches!(u, Symbol::Unknown(Unknown::Reaction { site: s, component })
+            if &**s == site && component.kind == kind)
+    };
+    derivation
+        .rows
+        .iter()
+        .filter(|x| matches!(x.sum, crate::plan::rows::Sum::Generalized { .. }))
+        .enumerate()
+        .skip(speeds)
+        .find(|(_, x)| x.free_body == row.free_body && x.unknowns.iter().any(brings_in))
+        .map(|(i, _)| i + 1)
 }
 
 /// The joints both of whose bodies are among `bodies`, by name in LaTeX.

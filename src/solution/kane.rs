@@ -125,13 +125,18 @@ pub fn sign_changed(derivation: &Derivation, i: usize) -> bool {
     let Some(row) = derivation.rows.get(i) else {
         return false;
     };
-    let speeds = match &derivation.dependent_speeds {
-        Some(speeds) => speeds.independent.len(),
-        None => derivation.model.problem.coordinates.len(),
-    };
     derivation.method == Method::Kane
         && matches!(row.sum, Sum::Generalized { .. })
-        && row_number(derivation, row).is_some_and(|r| r <= speeds)
+        && row_number(derivation, row).is_some_and(|r| r <= speed_rows(derivation))
+}
+
+/// How many of Kane's rows are the speeds' (generalized or independent); the rows after
+/// them are the auxiliary speeds'.
+pub fn speed_rows(derivation: &Derivation) -> usize {
+    match &derivation.dependent_speeds {
+        Some(speeds) => speeds.independent.len(),
+        None => derivation.model.problem.coordinates.len(),
+    }
 }
 
 /// The system as step 5 writes it: Kane's rows of speeds with their signs changed (see
