@@ -74,18 +74,8 @@ pub(super) fn body(out: &mut String, motion: &Motion, timing: &Timing, k: usize)
     }
     if let Some(i) = body.ball {
         let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
-        let xs: Vec<String> = track.iter().map(|q| num(q[0])).collect();
-        let ys: Vec<String> = track.iter().map(|q| num(q[1])).collect();
-        let _ = writeln!(
-            out,
-            "<circle class=\"ball\" cx=\"{}\" cy=\"{}\" r=\"7\" fill=\"{}\">",
-            xs[0],
-            ys[0],
-            color(Ink::Black)
-        );
-        timing.animate(out, "cx", &xs);
-        timing.animate(out, "cy", &ys);
-        out.push_str("</circle>\n");
+        let rest = format!("r=\"7\" fill=\"{}\"", color(Ink::Black));
+        timing.moving_circle(out, &track, "class=\"ball\"", &rest);
     }
     out.push_str("</g>\n");
 }

@@ -243,24 +243,17 @@ fn points(out: &mut String, motion: &Motion, timing: &Timing) {
     let p = &motion.projection;
     for (i, (id, center)) in motion.points.iter().enumerate() {
         let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
-        let xs: Vec<String> = track.iter().map(|q| num(q[0])).collect();
-        let ys: Vec<String> = track.iter().map(|q| num(q[1])).collect();
         let (r, fill) = if *center {
             ("4", color(Ink::White))
         } else {
             ("3", color(Ink::Black))
         };
-        let _ = writeln!(
-            out,
-            "<circle id=\"{}\" cx=\"{}\" cy=\"{}\" r=\"{r}\" fill=\"{fill}\" stroke=\"{}\" stroke-width=\"1.2\">",
-            xml(id),
-            xs[0],
-            ys[0],
+        let lead = format!("id=\"{}\"", xml(id));
+        let rest = format!(
+            "r=\"{r}\" fill=\"{fill}\" stroke=\"{}\" stroke-width=\"1.2\"",
             color(Ink::Black)
         );
-        timing.animate(out, "cx", &xs);
-        timing.animate(out, "cy", &ys);
-        out.push_str("</circle>\n");
+        timing.moving_circle(out, &track, &lead, &rest);
         if let Some(name) = &motion.captions[i] {
             // Mass centres' names above right, joints' coordinates below right.
             let (dx, dy) = if *center { (14.0, -8.0) } else { (16.0, 16.0) };

@@ -91,6 +91,21 @@ impl Timing {
         }
     }
 
+    /// A circle whose centre follows `track` (a point in the picture per frame):
+    /// `<circle {lead} cx cy {rest}>`, its centre animated.
+    pub(super) fn moving_circle(&self, out: &mut String, track: &[P2], lead: &str, rest: &str) {
+        let xs: Vec<String> = track.iter().map(|q| num(q[0])).collect();
+        let ys: Vec<String> = track.iter().map(|q| num(q[1])).collect();
+        let _ = writeln!(
+            out,
+            "<circle {lead} cx=\"{}\" cy=\"{}\" {rest}>",
+            xs[0], ys[0]
+        );
+        self.animate(out, "cx", &xs);
+        self.animate(out, "cy", &ys);
+        out.push_str("</circle>\n");
+    }
+
     pub(super) fn animate(&self, out: &mut String, attribute: &str, values: &[String]) {
         let _ = writeln!(
             out,
