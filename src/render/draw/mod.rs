@@ -11,6 +11,7 @@ mod ground;
 pub mod layout;
 pub mod motion;
 mod motion_bodies;
+mod motion_labels;
 mod motion_marks;
 pub mod motion_svg;
 mod motion_timing;

@@ -11,7 +11,7 @@ use std::fmt::Write;
 
 /// The SVG matrix `[a, b, c, d, e, f]` (x' = a u + c v + e, y' = b u + d v + f) of a sheet
 /// at origin `o` with unit vectors `e1`, `e2`, seen through `p`.
-fn sheet_matrix(p: &Projection, [o, e1, e2]: &[P3; 3]) -> [f64; 6] {
+pub(super) fn sheet_matrix(p: &Projection, [o, e1, e2]: &[P3; 3]) -> [f64; 6] {
     let [a, b] = p.direction(*e1);
     let [c, d] = p.direction(*e2);
     let [e, f] = p.point(*o);
@@ -100,6 +100,49 @@ fn sheet_transforms(out: &mut String, motion: &Motion, timing: &Timing, s: usize
     for (kind, values) in ["translate", "rotate", "skewX", "scale"].iter().zip(&parts) {
         timing.transform(out, kind, values);
     }
+}
+
+/// The lines of sheet `s` at `frame` in the picture, each with whether it closes and its
+/// width: what labels keep clear of.
+pub(super) fn sheet_lines(motion: &Motion, frame: usize, s: usize) -> Vec<(Vec<P2>, bool, f64)> {
+    let (Some(sheet), Some(placed)) = (
+        motion.sheets.get(s),
+        motion.frames.get(frame).and_then(|f| f.sheets.get(s)),
+    ) else {
+        return Vec::new();
+    };
+    let [a, b, c, d, e, f] = sheet_matrix(&motion.projection, placed);
+    let map = |q: &[f64; 2]| [a * q[0] + c * q[1] + e, b * q[0] + d * q[1] + f];
+    let mut lines = Vec::new();
+    for part in &sheet.parts {
+        match part {
+            Part::Wheel {
+                center,
+                radius,
+                mark,
+            } => {
+                let at = |u: f64, v: f64| {
+                    [
+                        center[0] + radius * (u * mark[0] - v * mark[1]),
+                        center[1] + radius * (u * mark[1] + v * mark[0]),
+                    ]
+                };
+                let rim: Vec<P2> = (0..32)
+                    .map(|k| {
+                        let t = std::f64::consts::TAU * f64::from(k) / 32.0;
+                        map(&at(t.cos(), t.sin()))
+                    })
+                    .collect();
+                lines.push((rim, true, 1.6));
+                lines.push((vec![map(&at(-1.0, 0.0)), map(&at(1.0, 0.0))], false, 2.0));
+                lines.push((vec![map(&at(0.0, -1.0)), map(&at(0.0, 1.0))], false, 0.8));
+            }
+            Part::Bar(points) => lines.push((points.iter().map(map).collect(), false, 7.0)),
+            Part::Line(p, q) => lines.push((vec![map(p), map(q)], false, 1.1)),
+            Part::Outline(points) => lines.push((points.iter().map(map).collect(), true, 1.4)),
+        }
+    }
+    lines
 }
 
 /// Path data through sheet points (metres, so finely).

@@ -6,7 +6,6 @@ use super::motion::{Gauge, Motion};
 use super::motion_timing::{coarse, color, polyline, Timing};
 use super::numbers::{add, cross, scale};
 use super::picture::{Ink, Projection, P2};
-use super::place::text_size;
 use super::strokes::{head, p2add, p2norm, p2scale, p2unit};
 use crate::render::escape::html as xml;
 use std::fmt::Write;
@@ -19,14 +18,19 @@ const ARC_STEPS: u32 = 16;
 const STANDOFF: f64 = 14.0;
 const EXTENSION: f64 = 18.0;
 
-/// The floors, lightly filled, their two edges lowest on the page hatched outwards.
-pub(super) fn floors(out: &mut String, motion: &Motion) {
+/// A floor as drawn: its outline, and the ticks of its two edges lowest on the page.
+pub(super) struct Floor {
+    pub(super) outline: Vec<P2>,
+    pub(super) ticks: Vec<[P2; 2]>,
+}
+
+/// The floors in the picture, their two edges lowest on the page hatched outwards.
+pub(super) fn floor_lines(motion: &Motion) -> Vec<Floor> {
     let p = &motion.projection;
+    let mut floors = Vec::new();
     for corners in &motion.floors {
         let points: Vec<P2> = corners.iter().map(|c| p.point(*c)).collect();
         let middle = p2scale(points.iter().fold([0.0, 0.0], |m, q| p2add(m, *q)), 0.25);
-        let mut d = polyline(&points, coarse);
-        d.push('Z');
         let mut edges: Vec<(P2, P2)> = (0..4).map(|k| (points[k], points[(k + 1) % 4])).collect();
         edges.sort_by(|a, b| (b.0[1] + b.1[1]).total_cmp(&(a.0[1] + a.1[1])));
         let mut ticks = Vec::new();
@@ -43,30 +47,42 @@ pub(super) fn floors(out: &mut String, motion: &Motion) {
             let count = (length / 7.0).floor().max(1.0) as usize;
             for k in 0..=count {
                 let s = p2add(a, p2scale(t, k as f64 * length / count as f64));
-                ticks.push(polyline(
-                    &[s, p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -4.0)))],
-                    coarse,
-                ));
+                ticks.push([s, p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -4.0)))]);
             }
         }
+        floors.push(Floor {
+            outline: points,
+            ticks,
+        });
+    }
+    floors
+}
+
+/// The floors, lightly filled, their two edges lowest on the page hatched outwards.
+pub(super) fn floors(out: &mut String, floors: &[Floor]) {
+    for floor in floors {
+        let mut d = polyline(&floor.outline, coarse);
+        d.push('Z');
+        let ticks: String = floor.ticks.iter().map(|t| polyline(t, coarse)).collect();
         let _ = writeln!(
             out,
-            "<g class=\"floor\"><path d=\"{d}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"1\"/><path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"0.8\"/></g>",
+            "<g class=\"floor\"><path d=\"{d}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"1\"/><path d=\"{ticks}\" fill=\"none\" stroke=\"{}\" stroke-width=\"0.8\"/></g>",
             color(Ink::Floor),
             color(Ink::Grey),
-            ticks.concat(),
             color(Ink::Black)
         );
     }
 }
 
 /// One mark as drawn at one frame, in the picture: its thin dashed lines, its line or
-/// arc, its arrowheads and its label's centre.
-struct Drawn {
-    dashed: Vec<Vec<P2>>,
-    line: Vec<P2>,
-    heads: Vec<[P2; 3]>,
-    label: P2,
+/// arc, its arrowheads, and where its label would go: beside `anchor`, towards `toward`
+/// (radians) if that is free.
+pub(super) struct Drawn {
+    pub(super) dashed: Vec<Vec<P2>>,
+    pub(super) line: Vec<P2>,
+    pub(super) heads: Vec<[P2; 3]>,
+    pub(super) anchor: P2,
+    pub(super) toward: f64,
 }
 
 /// The picture's pixels per metre.
@@ -74,15 +90,8 @@ fn pixels(p: &Projection) -> f64 {
     p.a[0].iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-12)
 }
 
-/// Where a label of `size` goes beyond `anchor` in the unit direction `toward`: clear of
-/// the anchor by a few pixels, however the direction turns.
-fn beyond(anchor: P2, toward: P2, size: P2) -> P2 {
-    let reach = 5.0 + (size[0] / 2.0 * toward[0].abs()).max(size[1] / 2.0 * toward[1].abs());
-    p2add(anchor, p2scale(toward, reach))
-}
-
 /// A mark at one frame as the still picture draws it.
-fn drawn(p: &Projection, gauge: &Gauge, size: P2) -> Drawn {
+fn drawn(p: &Projection, gauge: &Gauge) -> Drawn {
     match *gauge {
         Gauge::Angle {
             center,
@@ -123,7 +132,8 @@ fn drawn(p: &Projection, gauge: &Gauge, size: P2) -> Drawn {
                 dashed: vec![vec![c, p.point(add(center, scale(from, reference)))]],
                 line,
                 heads,
-                label: beyond(middle, toward, size),
+                anchor: middle,
+                toward: toward[1].atan2(toward[0]),
             }
         }
         Gauge::Distance { from, to, along } => {
@@ -154,29 +164,48 @@ fn drawn(p: &Projection, gauge: &Gauge, size: P2) -> Drawn {
                 ],
                 line: vec![a2, b2],
                 heads,
-                label: beyond(p2scale(p2add(a2, b2), 0.5), n, size),
+                anchor: p2scale(p2add(a2, b2), 0.5),
+                toward: n[1].atan2(n[0]),
             }
         }
     }
 }
 
-/// The coordinates' marks, each a group `<g class="gauge" data-label="q_1"
-/// data-kind="angle">` whose dashed lines, arc or line, heads and label move with the
-/// motion.
-pub(super) fn gauges(out: &mut String, motion: &Motion, timing: &Timing) {
+/// Each coordinate's mark as drawn at each frame.
+pub(super) fn marks(motion: &Motion) -> Vec<Vec<Drawn>> {
     let p = &motion.projection;
+    (0..motion.gauges.len())
+        .map(|k| {
+            motion
+                .frames
+                .iter()
+                .filter_map(|f| f.gauges.get(k))
+                .map(|g| drawn(p, g))
+                .collect()
+        })
+        .collect()
+}
+
+/// The coordinates' marks (`marks`), each a group `<g class="gauge" data-label="q_1"
+/// data-kind="angle">` whose dashed lines, arc or line, heads and label move with the
+/// motion; each label's centre per frame in `labels`.
+pub(super) fn gauges(
+    out: &mut String,
+    motion: &Motion,
+    timing: &Timing,
+    marks: &[Vec<Drawn>],
+    labels: &[Vec<P2>],
+) {
     let grey = color(Ink::Grey);
     for (k, label) in motion.gauges.iter().enumerate() {
-        let size = text_size(&label.plain);
-        let frames: Vec<Drawn> = motion
-            .frames
-            .iter()
-            .filter_map(|f| f.gauges.get(k))
-            .map(|g| drawn(p, g, size))
-            .collect();
-        let (Some(first), Some(gauge)) = (frames.first(), motion.frames[0].gauges.get(k)) else {
+        let (Some(frames), Some(centres), Some(gauge)) =
+            (marks.get(k), labels.get(k), motion.frames[0].gauges.get(k))
+        else {
             continue;
         };
+        if frames.is_empty() || centres.is_empty() {
+            continue;
+        }
         let kind = match gauge {
             Gauge::Angle { .. } => "angle",
             Gauge::Distance { .. } => "distance",
@@ -222,13 +251,12 @@ pub(super) fn gauges(out: &mut String, motion: &Motion, timing: &Timing) {
             timing.animate(out, "d", values);
             out.push_str("</path>\n");
         }
-        let xs: Vec<String> = frames.iter().map(|d| coarse(d.label[0])).collect();
-        let ys: Vec<String> = frames.iter().map(|d| coarse(d.label[1] + 4.5)).collect();
+        let (xs, ys) = label_track(centres);
         let _ = writeln!(
             out,
             "<text class=\"label\" x=\"{}\" y=\"{}\" fill=\"{}\" stroke=\"none\">{}",
-            coarse(first.label[0]),
-            coarse(first.label[1] + 4.5),
+            xs[0],
+            ys[0],
             color(Ink::Black),
             super::svg::label_spans(label)
         );
@@ -236,6 +264,15 @@ pub(super) fn gauges(out: &mut String, motion: &Motion, timing: &Timing) {
         timing.animate(out, "y", &ys);
         out.push_str("</text>\n</g>\n");
     }
+}
+
+/// A label's `x` and `y` per frame from its centres: the letters' line sits below the
+/// middle of the box.
+pub(super) fn label_track(centres: &[P2]) -> (Vec<String>, Vec<String>) {
+    (
+        centres.iter().map(|c| coarse(c[0])).collect(),
+        centres.iter().map(|c| coarse(c[1] + 4.5)).collect(),
+    )
 }
 
 #[cfg(test)]
@@ -256,14 +293,14 @@ mod tests {
             angle,
             reference: 0.3,
         };
-        let d = drawn(&p, &gauge(0.7), [10.0, 16.0]);
+        let d = drawn(&p, &gauge(0.7));
         let tip = d.line[d.line.len() - 1];
         let turned = (-(tip[1] - 200.0)).atan2(tip[0] - 200.0);
         assert!((turned - 0.7).abs() < 1e-9, "{turned}");
         assert!((p2norm([tip[0] - 200.0, tip[1] - 200.0]) - ARC).abs() < 1e-9);
         assert_eq!(d.line.len(), ARC_STEPS as usize + 1);
         // A crank past a whole turn shows its last turn, ending at the same place.
-        let again = drawn(&p, &gauge(0.7 + std::f64::consts::TAU), [10.0, 16.0]);
+        let again = drawn(&p, &gauge(0.7 + std::f64::consts::TAU));
         let other = again.line[again.line.len() - 1];
         assert!(p2norm([other[0] - tip[0], other[1] - tip[1]]) < 1e-9);
         let (m, n) = (
@@ -285,10 +322,11 @@ mod tests {
             along: [1.0, 0.0, 0.0],
         };
         let (plus, minus) = (
-            drawn(&p, &at(0.5), [10.0, 16.0]),
-            drawn(&p, &at(-0.5), [10.0, 16.0]),
+            drawn(&p, &at(0.5)),
+            drawn(&p, &at(-0.5)),
         );
         assert_eq!(plus.line[0][1], minus.line[0][1]);
-        assert_eq!(plus.label[1], minus.label[1]);
+        assert_eq!(plus.anchor[1], minus.anchor[1]);
+        assert_eq!(plus.toward, minus.toward);
     }
 }

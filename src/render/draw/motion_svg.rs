@@ -40,27 +40,60 @@ pub fn export(motion: &Motion) -> String {
         xml(&motion.title)
     );
     let timing = Timing::new(&motion.frames);
-    super::motion_marks::floors(&mut out, motion);
-    ground(&mut out, motion);
+    let lines = Lines {
+        floors: super::motion_marks::floor_lines(motion),
+        ground: ground_lines(motion),
+        springs: spring_lines(motion),
+        dampers: damper_lines(motion),
+        marks: super::motion_marks::marks(motion),
+    };
+    let labels = super::motion_labels::place(motion, &lines);
+    super::motion_marks::floors(&mut out, &lines.floors);
+    ground(&mut out, &lines.ground);
     for k in 0..motion.bodies.len() {
         super::motion_bodies::body(&mut out, motion, &timing, k);
     }
-    springs(&mut out, motion, &timing);
-    dampers(&mut out, motion, &timing);
-    super::motion_marks::gauges(&mut out, motion, &timing);
-    points(&mut out, motion, &timing);
+    for frames in &lines.springs {
+        let shapes: Vec<String> = frames.iter().map(|f| polyline(f, num)).collect();
+        animated_path(&mut out, "spring", &shapes, &timing);
+    }
+    for frames in &lines.dampers {
+        let shapes: Vec<String> = frames
+            .iter()
+            .map(|parts| parts.iter().map(|part| polyline(part, num)).collect())
+            .collect();
+        animated_path(&mut out, "damper", &shapes, &timing);
+    }
+    super::motion_marks::gauges(&mut out, motion, &timing, &lines.marks, &labels.gauges);
+    points(&mut out, motion, &timing, &labels.captions);
     out.push_str("</svg>\n");
     out
 }
 
-/// Supports under the joints on `N`, and the track of each rolling contact as its ground.
-fn ground(out: &mut String, motion: &Motion) {
+/// Everything of the motion drawn in lines besides the bodies, in the picture: what is
+/// written, and what the labels keep clear of.
+pub(super) struct Lines {
+    pub(super) floors: Vec<super::motion_marks::Floor>,
+    pub(super) ground: Ground,
+    /// Per spring, per frame: its zig-zag.
+    pub(super) springs: Vec<Vec<Vec<P2>>>,
+    /// Per damper, per frame: its pieces.
+    pub(super) dampers: Vec<Vec<Vec<Vec<P2>>>>,
+    /// Per coordinate's mark, per frame.
+    pub(super) marks: Vec<Vec<super::motion_marks::Drawn>>,
+}
+
+/// The fixed ground: each support's pieces (whether each closes), and each rolling
+/// contact's track.
+pub(super) struct Ground {
+    pub(super) supports: Vec<Vec<(Vec<P2>, bool)>>,
+    pub(super) tracks: Vec<Vec<P2>>,
+}
+
+/// Supports under the joints on `N`, and the track of each rolling contact.
+fn ground_lines(motion: &Motion) -> Ground {
     let p = &motion.projection;
-    let grey = color(Ink::Grey);
-    let _ = writeln!(
-        out,
-        "<g class=\"ground\" fill=\"none\" stroke=\"{grey}\" stroke-width=\"1.2\">"
-    );
+    let mut supports = Vec::new();
     for &(i, toward) in &motion.grounded {
         let Some(first) = motion.frames.first() else {
             break;
@@ -75,45 +108,72 @@ fn ground(out: &mut String, motion: &Motion) {
                 c[1] - up[1] * back + across[1] * side,
             ]
         };
-        let mut d = polyline(&[c, at(14.0, 8.0), at(14.0, -8.0)], num);
-        d.push('Z');
-        d.push_str(&polyline(&[at(14.0, -12.0), at(14.0, 12.0)], num));
+        let mut pieces = vec![
+            (vec![c, at(14.0, 8.0), at(14.0, -8.0)], true),
+            (vec![at(14.0, -12.0), at(14.0, 12.0)], false),
+        ];
         for k in 0..5 {
             let side = -12.0 + 6.0 * f64::from(k);
-            d.push_str(&polyline(&[at(14.0, side), at(19.0, side - 4.0)], num));
+            pieces.push((vec![at(14.0, side), at(19.0, side - 4.0)], false));
+        }
+        supports.push(pieces);
+    }
+    let tracks = motion
+        .rolling
+        .iter()
+        .map(|&i| motion.frames.iter().map(|f| p.point(f.points[i])).collect())
+        .collect();
+    Ground { supports, tracks }
+}
+
+/// Supports under the joints on `N`, and the track of each rolling contact as its ground.
+fn ground(out: &mut String, ground: &Ground) {
+    let grey = color(Ink::Grey);
+    let _ = writeln!(
+        out,
+        "<g class=\"ground\" fill=\"none\" stroke=\"{grey}\" stroke-width=\"1.2\">"
+    );
+    for pieces in &ground.supports {
+        let mut d = String::new();
+        for (points, closed) in pieces {
+            d.push_str(&polyline(points, num));
+            if *closed {
+                d.push('Z');
+            }
         }
         let _ = writeln!(out, "<path d=\"{d}\"/>");
     }
-    for &i in &motion.rolling {
-        let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
+    for track in &ground.tracks {
         let _ = writeln!(
             out,
             "<path d=\"{}\" stroke-dasharray=\"6 3\"/>",
-            polyline(&track, num)
+            polyline(track, num)
         );
     }
     out.push_str("</g>\n");
 }
 
-/// The springs as zig-zags that stretch with the motion.
-fn springs(out: &mut String, motion: &Motion, timing: &Timing) {
+/// The springs as zig-zags that stretch with the motion: per spring, per frame.
+fn spring_lines(motion: &Motion) -> Vec<Vec<Vec<P2>>> {
     let p = &motion.projection;
     let count = motion.frames.first().map_or(0, |f| f.springs.len());
-    for s in 0..count {
-        let shapes: Vec<String> = motion
-            .frames
-            .iter()
-            .map(|f| {
-                let [a, b] = f.springs[s].map(|e| p.point(e));
-                let ([a1, b1], legs) = in_lane(a, b, motion.spring_lanes[s]);
-                let mut points: Vec<P2> = legs.first().map_or(Vec::new(), |leg| leg[..2].to_vec());
-                points.extend(zigzag(a1, b1));
-                points.extend(legs.get(1).map_or(Vec::new(), |leg| vec![leg[1], leg[0]]));
-                polyline(&points, num)
-            })
-            .collect();
-        animated_path(out, "spring", &shapes, timing);
-    }
+    (0..count)
+        .map(|s| {
+            motion
+                .frames
+                .iter()
+                .map(|f| {
+                    let [a, b] = f.springs[s].map(|e| p.point(e));
+                    let ([a1, b1], legs) = in_lane(a, b, motion.spring_lanes[s]);
+                    let mut points: Vec<P2> =
+                        legs.first().map_or(Vec::new(), |leg| leg[..2].to_vec());
+                    points.extend(zigzag(a1, b1));
+                    points.extend(legs.get(1).map_or(Vec::new(), |leg| vec![leg[1], leg[0]]));
+                    points
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// A path of class `class` drawn in the known loads' ink, one shape per frame.
@@ -128,40 +188,41 @@ fn animated_path(out: &mut String, class: &str, shapes: &[String], timing: &Timi
     out.push_str("</path>\n");
 }
 
-/// The dampers as dashpots: a cylinder fixed to the first end and a piston on a rod from
-/// the second, both of fixed length, so that the piston slides in the cylinder as the ends
-/// move; the cylinder is made long enough for the piston's whole stroke.
-fn dampers(out: &mut String, motion: &Motion, timing: &Timing) {
+/// The dampers as dashpots, per damper, per frame: a cylinder fixed to the first end and
+/// a piston on a rod from the second, both of fixed length, so that the piston slides in
+/// the cylinder as the ends move; the cylinder is made long enough for the piston's whole
+/// stroke.
+fn damper_lines(motion: &Motion) -> Vec<Vec<Vec<Vec<P2>>>> {
     let p = &motion.projection;
     let count = motion.frames.first().map_or(0, |f| f.dampers.len());
-    for s in 0..count {
-        // The dashpot's own ends in its lane, and the legs that join them to the points.
-        let ends: Vec<([P2; 2], Vec<Vec<P2>>)> = motion
-            .frames
-            .iter()
-            .map(|f| {
-                in_lane(
-                    p.point(f.dampers[s][0]),
-                    p.point(f.dampers[s][1]),
-                    motion.damper_lanes[s],
-                )
-            })
-            .collect();
-        let lengths = ends
-            .iter()
-            .map(|([a, b], _)| (b[0] - a[0]).hypot(b[1] - a[1]));
-        let shortest = lengths.clone().fold(f64::INFINITY, f64::min);
-        let longest = lengths.fold(0.0, f64::max);
-        let dashpot = Dashpot::for_stroke(shortest, longest);
-        let shapes: Vec<String> = ends
-            .iter()
-            .map(|([a, b], legs)| {
-                let legs: String = legs.iter().map(|leg| polyline(leg, num)).collect();
-                legs + &dashpot.path(*a, *b)
-            })
-            .collect();
-        animated_path(out, "damper", &shapes, timing);
-    }
+    (0..count)
+        .map(|s| {
+            // The dashpot's own ends in its lane, and the legs that join them to the points.
+            let ends: Vec<([P2; 2], Vec<Vec<P2>>)> = motion
+                .frames
+                .iter()
+                .map(|f| {
+                    in_lane(
+                        p.point(f.dampers[s][0]),
+                        p.point(f.dampers[s][1]),
+                        motion.damper_lanes[s],
+                    )
+                })
+                .collect();
+            let lengths = ends
+                .iter()
+                .map(|([a, b], _)| (b[0] - a[0]).hypot(b[1] - a[1]));
+            let shortest = lengths.clone().fold(f64::INFINITY, f64::min);
+            let longest = lengths.fold(0.0, f64::max);
+            let dashpot = Dashpot::for_stroke(shortest, longest);
+            ends.into_iter()
+                .map(|([a, b], mut legs)| {
+                    legs.extend(dashpot.parts(a, b));
+                    legs
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// A dashpot's fixed lengths on the page: its piston's distance back from the second end,
@@ -184,9 +245,18 @@ impl Dashpot {
         }
     }
 
-    /// The dashpot from `a` to `b`: always the same commands, so that one frame's path
-    /// turns into the next.
+    /// The dashpot from `a` to `b`, as path data.
+    #[cfg(test)]
     fn path(&self, a: P2, b: P2) -> String {
+        self.parts(a, b)
+            .iter()
+            .map(|part| polyline(part, num))
+            .collect()
+    }
+
+    /// The dashpot's pieces from `a` to `b`: always as many points, so that one frame's
+    /// path turns into the next.
+    fn parts(&self, a: P2, b: P2) -> Vec<Vec<P2>> {
         let d = [b[0] - a[0], b[1] - a[1]];
         let length = d[0].hypot(d[1]).max(1e-9);
         let (u, n) = (
@@ -211,7 +281,7 @@ impl Dashpot {
             vec![from(b, piston, 6.0), from(b, piston, -6.0)],
             vec![from(b, piston, 0.0), b],
         ];
-        parts.iter().map(|part| polyline(part, num)).collect()
+        parts.to_vec()
     }
 }
 
@@ -238,8 +308,8 @@ fn zigzag(a: P2, b: P2) -> Vec<P2> {
 }
 
 /// The mass centres and joints: circles outside the bodies, their centres animated, and
-/// the bodies' names beside their mass centres.
-fn points(out: &mut String, motion: &Motion, timing: &Timing) {
+/// the words beside them (`captions`: each one's centre per frame).
+fn points(out: &mut String, motion: &Motion, timing: &Timing, captions: &[Option<Vec<P2>>]) {
     let p = &motion.projection;
     for (i, (id, center)) in motion.points.iter().enumerate() {
         let track: Vec<P2> = motion.frames.iter().map(|f| p.point(f.points[i])).collect();
@@ -254,28 +324,25 @@ fn points(out: &mut String, motion: &Motion, timing: &Timing) {
             color(Ink::Black)
         );
         timing.moving_circle(out, &track, &lead, &rest);
-        if let Some(name) = &motion.captions[i] {
-            // Mass centres' names above right, joints' coordinates below right.
-            let (dx, dy) = if *center { (14.0, -8.0) } else { (16.0, 16.0) };
-            let xs: Vec<String> = track.iter().map(|q| num(q[0] + dx)).collect();
-            let ys: Vec<String> = track.iter().map(|q| num(q[1] + dy)).collect();
-            let class = if *center { "label" } else { "label coordinate" };
-            let fill = if *center {
-                String::new()
-            } else {
-                format!(" fill=\"{}\"", color(Ink::Grey))
-            };
-            let _ = writeln!(
-                out,
-                "<text class=\"{class}\"{fill} x=\"{}\" y=\"{}\">{}",
-                xs[0],
-                ys[0],
-                xml(name)
-            );
-            timing.animate(out, "x", &xs);
-            timing.animate(out, "y", &ys);
-            out.push_str("</text>\n");
-        }
+        let (Some(name), Some(Some(centres))) = (&motion.captions[i], captions.get(i)) else {
+            continue;
+        };
+        let (xs, ys) = super::motion_marks::label_track(centres);
+        let (class, fill) = if *center {
+            ("label", String::new())
+        } else {
+            ("label coordinate", format!(" fill=\"{}\"", color(Ink::Grey)))
+        };
+        let _ = writeln!(
+            out,
+            "<text class=\"{class}\"{fill} x=\"{}\" y=\"{}\">{}",
+            xs[0],
+            ys[0],
+            xml(name)
+        );
+        timing.animate(out, "x", &xs);
+        timing.animate(out, "y", &ys);
+        out.push_str("</text>\n");
     }
 }
 

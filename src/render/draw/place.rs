@@ -3,6 +3,9 @@
 
 use super::picture::P2;
 
+/// How far from its anchor a label may go, nearest first.
+const GAPS: [f64; 8] = [4.0, 12.0, 22.0, 36.0, 52.0, 72.0, 96.0, 124.0];
+
 /// A box in the picture: centre and half sizes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Box2 {
@@ -158,6 +161,19 @@ impl Obstacles {
         [size[0] / 2.0 + 1.0, size[1] / 2.0 + 1.0]
     }
 
+    /// Every box [`Obstacles::place`] tries for a label of `size` around `anchor`, nearest
+    /// and most like `toward` first.
+    pub fn spots(anchor: P2, toward: f64, size: P2) -> impl Iterator<Item = Box2> {
+        let half = Self::half_of(size);
+        GAPS.into_iter()
+            .flat_map(move |gap| Self::around(anchor, toward, half, gap))
+    }
+
+    /// How much a label at `b` would meet: 0 when nothing.
+    pub fn clash(&self, b: &Box2) -> usize {
+        self.cost(b)
+    }
+
     /// The first box for a label of `size` around `anchor`, at one of `gaps`, that meets
     /// nothing; nothing is taken.
     pub fn free_near(&self, anchor: P2, toward: f64, size: P2, gaps: &[f64]) -> Option<Box2> {
@@ -183,7 +199,7 @@ impl Obstacles {
     pub fn place(&mut self, anchor: P2, toward: f64, size: P2) -> P2 {
         let half = Self::half_of(size);
         let mut best: Option<(usize, Box2)> = None;
-        for gap in [4.0, 12.0, 22.0, 36.0, 52.0, 72.0, 96.0, 124.0] {
+        for gap in GAPS {
             for candidate in Self::around(anchor, toward, half, gap) {
                 let cost = self.cost(&candidate);
                 if best.as_ref().is_none_or(|(c, _)| cost < *c) {
