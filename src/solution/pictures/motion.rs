@@ -174,7 +174,8 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         captions.push(Some(problem.body_name(b).to_string()));
     }
     let floors = floors(&numbers, &rolling, &placed, size);
-    let (projection, size) = fit(still_rows, &sheets, &floors, &placed);
+    let title = crate::render::draw::place::text_size(&problem.title)[0] + 2.0 * MARGIN;
+    let (projection, size) = fit(still_rows, &sheets, &floors, &placed, title);
     let lanes = super::lanes::lanes(&problem.loads);
     let lanes_of = |spring: bool| -> Vec<f64> {
         problem
@@ -385,12 +386,23 @@ fn place(
     (placed, gauges)
 }
 
-/// Every point the picture shows at one frame, in `N`: the points, the springs' ends and
-/// each body's outline.
+/// Every point the picture shows at one frame, in `N`: the points, the springs' ends, the
+/// ends of the coordinates' marks and each body's outline.
 fn extent(sheets: &[Sheet], placed: &Placed) -> Vec<P3> {
     let mut out = placed.points.clone();
     out.extend(placed.springs.iter().flatten());
     out.extend(placed.dampers.iter().flatten());
+    for gauge in &placed.gauges {
+        match *gauge {
+            Gauge::Angle {
+                center,
+                from,
+                reference,
+                ..
+            } => out.extend([center, add(center, scale(from, reference))]),
+            Gauge::Distance { from, to, .. } => out.extend([from, to]),
+        }
+    }
     for (sheet, [o, e1, e2]) in sheets.iter().zip(&placed.sheets) {
         let at = |p: [f64; 2]| add(*o, add(scale(*e1, p[0]), scale(*e2, p[1])));
         for part in &sheet.parts {
@@ -410,12 +422,14 @@ fn extent(sheets: &[Sheet], placed: &Placed) -> Vec<P3> {
 }
 
 /// The projection with the still picture's orientation (`rows`, any scale), scaled and
-/// shifted so that every frame and the floors fit in the picture, and the picture's size.
+/// shifted so that every frame and the floors fit in the picture, and the picture's size:
+/// at least `least_width` wide (the title's room), the motion centred in it.
 fn fit(
     rows: [P3; 2],
     sheets: &[Sheet],
     floors: &[[P3; 4]],
     placed: &[Placed],
+    least_width: f64,
 ) -> (Projection, [f64; 2]) {
     let unit_scale = norm(rows[0]).max(1e-12);
     let rows = rows.map(|r| scale(r, 1.0 / unit_scale));
@@ -439,13 +453,18 @@ fn fit(
     }
     let span = (high[0] - low[0]).max(high[1] - low[1]).max(1e-9);
     let s = LONGEST_SIDE / span;
+    let width = (high[0] - low[0]) * s + 2.0 * MARGIN;
+    let extra = (least_width.min(LONGEST_SIDE + 2.0 * MARGIN) - width).max(0.0);
     let size = [
-        (high[0] - low[0]) * s + 2.0 * MARGIN,
+        width + extra,
         (high[1] - low[1]) * s + 2.0 * MARGIN + TITLE_STRIP,
     ];
     let projection = Projection {
         a: rows.map(|r| scale(r, s)),
-        b: [MARGIN - s * low[0], MARGIN + TITLE_STRIP - s * low[1]],
+        b: [
+            MARGIN + extra / 2.0 - s * low[0],
+            MARGIN + TITLE_STRIP - s * low[1],
+        ],
     };
     (projection, size)
 }
