@@ -1,7 +1,8 @@
-//! The pictures as a browser lays them out: every bundled problem's pictures (and one whose
-//! bodies are named B0, B1, B2, link_1) are drawn, put on one page with `measure.js`, and
-//! read back from headless Chromium's DOM. From the browser's own text boxes and stroke
-//! geometry: no label overlaps another and no stroke crosses a label; a rolling body is a
+//! The pictures as a browser lays them out: every bundled problem's pictures and its
+//! motion (and those of one whose bodies are named B0, B1, B2, link_1) are drawn, put on
+//! one page with `measure.js`, and read back from headless Chromium's DOM. From the
+//! browser's own text boxes and stroke geometry: no label overlaps another and no stroke
+//! crosses a label, in the stills and at key frames of the motion; a rolling body is a
 //! circle (an ellipse in 3D) of its radius; a uniform rod pinned at one end reaches its far
 //! end; in 2D the weight points straight down the page.
 
@@ -44,7 +45,7 @@ fn problems() -> Vec<PathBuf> {
 /// Draws `problem` into `dir` and returns the page holding its pictures.
 fn page(problem: &Path, dir: &Path) -> String {
     let p = problem.to_string_lossy().into_owned();
-    let out = run(&["draw", p.as_str(), "-o", &dir.to_string_lossy()]);
+    let out = run(&["draw", p.as_str(), "--animate", "-o", &dir.to_string_lossy()]);
     assert!(
         out.status.success(),
         "{p}: {}",
@@ -173,7 +174,10 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
     for report in reports.as_array().expect("one report per picture") {
         let file = report["file"].as_str().unwrap_or("?").to_string();
         let scale = scale_of(&projection(dir, &file));
-        let at = format!("{name}/{file}");
+        let at = match report["time"].as_f64() {
+            Some(t) => format!("{name}/{file} at t = {t:.3} s"),
+            None => format!("{name}/{file}"),
+        };
         for pair in report["overlaps"].as_array().into_iter().flatten() {
             faults.push(format!("{at}: labels {pair} overlap"));
         }

@@ -1,7 +1,8 @@
 // Measures every inline picture of the page in the browser that lays it out, and writes
 // the measurements as JSON into <pre id="result">: the labels' own text boxes, the labels
 // that overlap, the strokes that cross a label, each body group's circles and ellipses and
-// the points of its strokes, and the gravity arrows. The test judges them.
+// the points of its strokes, and the gravity arrows; of an animated picture, its labels
+// frame by frame. The test judges them.
 (function () {
   const SLACK = 1.0; // a text box's padding around its letters, in px
   const out = [];
@@ -17,16 +18,20 @@
       const a = ['x1', 'y1', 'x2', 'y2'].map((k) => el[k].baseVal.value);
       return [[toSvg(svg, el, a[0], a[1]), toSvg(svg, el, a[2], a[3])]];
     }
+    // Lengths in the picture's units, also for a shape drawn in its own (a moving sheet's
+    // metres): its map's largest stretch.
+    const m = svg.getScreenCTM().inverse().multiply(el.getScreenCTM());
+    const stretch = Math.max(Math.hypot(m.a, m.b), Math.hypot(m.c, m.d));
     const length = el.getTotalLength();
     const pieces = [];
     let run = [];
-    const steps = Math.max(8, Math.ceil(length / 1.5));
+    const steps = Math.max(8, Math.ceil((length * stretch) / 1.5));
     let last = null;
     for (let k = 0; k <= steps; k++) {
       const q = el.getPointAtLength((length * k) / steps);
       const p = toSvg(svg, el, q.x, q.y);
       // A path's move to a new piece shows as a jump longer than the step.
-      if (last && Math.hypot(p.x - last.x, p.y - last.y) > 3 * (length / steps) + 2) {
+      if (last && Math.hypot(p.x - last.x, p.y - last.y) > 3 * ((length * stretch) / steps) + 2) {
         pieces.push(run);
         run = [];
       }
@@ -54,9 +59,9 @@
     }
     return t0 <= t1;
   }
-  for (const holder of document.querySelectorAll('[data-file]')) {
-    const svg = holder.querySelector('svg');
-    const report = { file: holder.dataset.file, labels: [], overlaps: [], crossings: [], bodies: [], gravity: [] };
+  // The labels' own text boxes, the labels that overlap and the strokes that cross a
+  // label, as the picture stands now.
+  function labelsOf(svg, report) {
     const labels = [];
     for (const t of svg.querySelectorAll('text')) {
       const b = t.getBBox();
@@ -86,6 +91,49 @@
         }
       }
     }
+  }
+  // An animated picture: its labels at some of its key frames (at most SAMPLES, the first
+  // and the last among them), each as a report of its own with its time. Each key frame
+  // is set by hand from the animations' values (their clocks are left out).
+  const SAMPLES = 26;
+  function motion(holder, svg) {
+    const animations = [...svg.querySelectorAll('animate, animateTransform')];
+    const tracks = animations.map((a) => ({
+      el: a.parentElement,
+      transform: a.tagName === 'animateTransform',
+      name: a.getAttribute('attributeName'),
+      type: a.getAttribute('type'),
+      values: a.getAttribute('values').split(';'),
+    }));
+    for (const a of animations) a.remove();
+    const frames = Number(svg.dataset.frames), duration = Number(svg.dataset.duration);
+    const picked = new Set();
+    for (let k = 0; k < SAMPLES; k++) picked.add(Math.round((k * (frames - 1)) / (SAMPLES - 1)));
+    for (const frame of [...picked].sort((a, b) => a - b)) {
+      const transforms = new Map();
+      for (const t of tracks) {
+        const value = t.values[Math.min(frame, t.values.length - 1)];
+        if (t.transform) {
+          transforms.set(t.el, (transforms.get(t.el) || '') + ` ${t.type}(${value})`);
+        } else {
+          t.el.setAttribute(t.name, value);
+        }
+      }
+      for (const [el, transform] of transforms) el.setAttribute('transform', transform);
+      const time = frames > 1 ? (duration * frame) / (frames - 1) : 0;
+      const report = { file: holder.dataset.file, time, labels: [], overlaps: [], crossings: [], bodies: [], gravity: [] };
+      labelsOf(svg, report);
+      out.push(report);
+    }
+  }
+  for (const holder of document.querySelectorAll('[data-file]')) {
+    const svg = holder.querySelector('svg');
+    if (svg.classList.contains('motion')) {
+      motion(holder, svg);
+      continue;
+    }
+    const report = { file: holder.dataset.file, labels: [], overlaps: [], crossings: [], bodies: [], gravity: [] };
+    labelsOf(svg, report);
     for (const g of svg.querySelectorAll('g.body')) {
       const body = { id: g.id, shape: g.dataset.shape, circles: [], ellipses: [], points: [] };
       for (const c of g.querySelectorAll('circle')) {
