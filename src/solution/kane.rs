@@ -89,7 +89,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
-            let particle = super::independent::is_particle(derivation, *body);
+            let particle = super::independent::is_particle(&derivation.model, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
