@@ -184,3 +184,24 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
     assert!(plan.contains("rows 1 and 2 hold only the second derivatives"));
     assert!(plan.contains("each of rows 3 and 4 gives its one reaction"));
 }
+
+/// A bob on a light rod is a two-force member: every force but the pin's acts at the bob,
+/// so the pin's force lies along the rod. Kane's auxiliary speed along the rod brings in
+/// the tension alone; by hand, along the rod toward O, T − m g cos θ = m L θ̇² (the
+/// centripetal acceleration), so T = m (g cos θ + L θ̇²) = 4.14827 N at θ = 0.6, θ̇ = 0.5.
+#[test]
+fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
+    let text = markdown("simple-pendulum.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    assert!(step5.contains("u_{2} \\to T^{O}$"), "no auxiliary speed for T^O");
+    assert!(step5.contains("T^{O} - L m \\dot{\\theta}^{2} - g m c_{\\theta} = 0"));
+    assert!(step5.contains("is a two-force member"));
+    let (m, g, l, theta, rate): (f64, f64, f64, f64, f64) = (0.5, 9.81, 0.8, 0.6, 0.5);
+    let tension = m * (g * theta.cos() + l * rate * rate);
+    let row = step5
+        .lines()
+        .find(|l| l.starts_with("| $T^{O}$ | "))
+        .expect("T^O's value at the start");
+    let value: f64 = row.split('|').nth(2).unwrap().trim().parse().unwrap();
+    assert!((value - tension).abs() < 1e-5 * tension, "{value} against {tension}");
+}
