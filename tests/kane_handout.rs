@@ -146,10 +146,19 @@ fn kanes_rows_of_the_speeds_are_written_with_the_mass_matrix_positive() {
     let m12 = "\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} c_{2}\\right)";
     let m22 = "\\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2}";
     let (row1, row2) = (row(1), row(2));
-    assert!(row1.starts_with(&format!("{m11} + {m12} \\ddot{{q}}_{{2}}")), "{row1}");
-    assert!(row2.starts_with(&format!("{m12} \\ddot{{q}}_{{1}} + {m22}")), "{row2}");
+    assert!(
+        row1.starts_with(&format!("{m11} + {m12} \\ddot{{q}}_{{2}}")),
+        "{row1}"
+    );
+    assert!(
+        row2.starts_with(&format!("{m12} \\ddot{{q}}_{{1}} + {m22}")),
+        "{row2}"
+    );
     // −q̇₁² + (q̇₁ + q̇₂)² collected as a textbook writes it.
-    assert!(row1.contains("\\left(\\dot{q}_{2}^{2} + 2 \\dot{q}_{1} \\dot{q}_{2}\\right)"), "{row1}");
+    assert!(
+        row1.contains("\\left(\\dot{q}_{2}^{2} + 2 \\dot{q}_{1} \\dot{q}_{2}\\right)"),
+        "{row1}"
+    );
     // The auxiliary rows keep their reaction positive: F^O_x − m a = 0.
     assert!(row(3).contains("+ F^{O}_{x} "), "{}", row(3));
     assert!(step5.contains("its signs changed so that the mass matrix is positive"));
@@ -193,7 +202,10 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
 fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
     let text = markdown("simple-pendulum.json");
     let step5 = section(&text, "## Step 5", "## Step 6");
-    assert!(step5.contains("u_{2} \\to T^{O}$"), "no auxiliary speed for T^O");
+    assert!(
+        step5.contains("u_{2} \\to T^{O}$"),
+        "no auxiliary speed for T^O"
+    );
     assert!(step5.contains("T^{O} - L m \\dot{\\theta}^{2} - g m c_{\\theta} = 0"));
     assert!(step5.contains("is a two-force member"));
     let (m, g, l, theta, rate): (f64, f64, f64, f64, f64) = (0.5, 9.81, 0.8, 0.6, 0.5);
@@ -203,5 +215,8 @@ fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
         .find(|l| l.starts_with("| $T^{O}$ | "))
         .expect("T^O's value at the start");
     let value: f64 = row.split('|').nth(2).unwrap().trim().parse().unwrap();
-    assert!((value - tension).abs() < 1e-5 * tension, "{value} against {tension}");
+    assert!(
+        (value - tension).abs() < 1e-5 * tension,
+        "{value} against {tension}"
+    );
 }

@@ -52,8 +52,7 @@ fn member_direction(model: &Model, s: usize) -> Option<Vector> {
             .coordinates
             .iter()
             .all(|&c| problem.coordinates[c].motion.is_none());
-    if !is_particle || state.mass.is_zero() || !forces_only || !plain || loaded(problem, body, j)
-    {
+    if !is_particle || state.mass.is_zero() || !forces_only || !plain || loaded(problem, body, j) {
         return None;
     }
     let values = &model.values;
@@ -61,9 +60,8 @@ fn member_direction(model: &Model, s: usize) -> Option<Vector> {
     // Every other joint of the body holds a child at the particle.
     let at_particle = model.sites.iter().all(|other| {
         other.parent != body
-            || (0..3).all(|k| {
-                number(&(&other.parent_offset[k] - &state.center_offset[k])).abs() < 1e-12
-            })
+            || (0..3)
+                .all(|k| number(&(&other.parent_offset[k] - &state.center_offset[k])).abs() < 1e-12)
     });
     if !at_particle {
         return None;

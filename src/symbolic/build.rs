@@ -179,7 +179,11 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
         return Expr::zero();
     }
     super::budget::charge((powers.len() + sums.len()) as u64);
-    if !sums.is_empty() && powers.iter().any(|(b, _, _)| matches!(b.node(), Node::Add(_))) {
+    if !sums.is_empty()
+        && powers
+            .iter()
+            .any(|(b, _, _)| matches!(b.node(), Node::Add(_)))
+    {
         // A sum meeting a power of itself merges with it, S · S⁻¹ = 1, rather than being
         // multiplied out over it.
         sums.retain(|sum| {

@@ -21,7 +21,7 @@ pub fn cancel_sums(e: &Expr) -> Expr {
     }
     // Groups by the sums below, in order of first use: each term with its powers of them
     // and the rest of it.
-    let mut groups: Vec<(Vec<Expr>, Vec<(Vec<i64>, Expr, Expr)>)> = Vec::new();
+    let mut groups: Vec<(Vec<Expr>, Vec<Member>)> = Vec::new();
     for t in terms {
         let below = denominators(t);
         let sums: Vec<Expr> = below.iter().map(|(s, _)| s.clone()).collect();
@@ -144,6 +144,9 @@ fn content(s: &Expr) -> Option<(Expr, Expr)> {
     Some((common, rest))
 }
 
+/// A term of a group: its powers of the group's sums, the rest of it, and the term itself.
+type Member = (Vec<i64>, Expr, Expr);
+
 /// Whether `f` is a negative integer power of a sum.
 fn is_denominator(f: &Expr) -> bool {
     match f.node() {
@@ -227,7 +230,7 @@ fn divide_polynomials(n: &Expr, s: &Expr, atoms: &[Expr]) -> Option<Expr> {
         }
         let factor = mul([Expr::num(lead_number), coefficient]);
         quotient.push(mul(
-            std::iter::once(factor.clone()).chain(monomial(&atoms, &shift)),
+            std::iter::once(factor.clone()).chain(monomial(&atoms, &shift))
         ));
         for (exponents, c) in &divisor {
             let at: Vec<i64> = exponents.iter().zip(&shift).map(|(a, b)| a + b).collect();
@@ -288,7 +291,10 @@ fn polynomial(e: &Expr, atoms: &[Expr]) -> Option<Polynomial> {
             }
         }
         let coefficient = mul(rest);
-        let sum = add([out.remove(&exponents).unwrap_or_else(Expr::zero), coefficient]);
+        let sum = add([
+            out.remove(&exponents).unwrap_or_else(Expr::zero),
+            coefficient,
+        ]);
         if !sum.is_zero() {
             out.insert(exponents, sum);
         }

@@ -105,7 +105,11 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
         }
     }
     let mut factors = vec![Expr::num(number)];
-    factors.extend(common.iter().map(|(base, n)| pow(base.clone(), Expr::int(*n))));
+    factors.extend(
+        common
+            .iter()
+            .map(|(base, n)| pow(base.clone(), Expr::int(*n))),
+    );
     // Each term divided factor by factor: a power of a sum taken out must meet its own
     // power in the term, not be multiplied out first.
     let mut inverse = vec![Expr::num(number.recip().unwrap_or(Number::ONE))];
