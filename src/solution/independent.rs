@@ -192,10 +192,25 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
     }
     let n = problem.coordinates.len();
     let constraint_rows = model.constraints.rows.len();
+    let count = |k: usize, one: &str, many: &str| {
+        if k == 1 {
+            format!("the {one}")
+        } else {
+            format!("the {k} {many}")
+        }
+    };
     let mut solve = format!(
-        "Solving: the {} equations of the independent speeds and the {} differentiated constraints are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
-        speeds.independent.len(),
-        constraint_rows,
+        "Solving: {} and {} are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
+        count(
+            speeds.independent.len(),
+            "equation of the independent speed",
+            "equations of the independent speeds"
+        ),
+        count(
+            constraint_rows,
+            "differentiated constraint",
+            "differentiated constraints"
+        ),
         speeds.independent.len() + constraint_rows,
         n
     );
