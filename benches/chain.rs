@@ -57,6 +57,7 @@ pub fn planar_chain(n: usize) -> Problem {
             },
             child_at: VectorExpr::default(),
             friction: None,
+            angle_from: None,
             path: format!("joints[{}]", i - 1),
         })
         .collect();

@@ -130,31 +130,41 @@ fn a_long_partial_velocity_is_written_by_the_names_of_step_4() {
 /// The mass matrix by hand, from the kinetic energy T = ½ q̇ᵀ M q̇ of the two rods:
 /// M11 = m1 L1²/3 + m2 (L1² + L2²/3 + L1 L2 cos q2), M12 = m2 (L2²/3 + L1 L2 cos q2 / 2),
 /// M22 = m2 L2²/3, all positive. Kane's rows of the speeds are −(M q̈ + …) = 0, so the
-/// handout writes them, and the matrix form, with the signs changed: A = M.
+/// handout writes them with the signs changed, each once: the matrix form shows only
+/// where the entries are, read off the rows.
 #[test]
 fn kanes_rows_of_the_speeds_are_written_with_the_mass_matrix_positive() {
     let text = markdown("double-pendulum-rods.json");
     let step5 = section(&text, "## Step 5", "## Step 6");
-    let entry = |name: &str| {
-        let start = format!("- ${name} = ");
-        let line = step5
-            .lines()
-            .find(|l| l.starts_with(&start))
-            .unwrap_or_else(|| panic!("no entry {name}"));
-        line[start.len()..].trim_end_matches('$').to_string()
+    let row = |k: usize| {
+        let row = section(step5, &format!("**{k}. "), &format!("**{}. ", k + 1));
+        let at = row.rfind("$$\n").expect("the row's equation") + 3;
+        let from = row[..at - 3].rfind("$$\n").expect("its start") + 3;
+        row[from..at - 3].trim().to_string()
     };
-    assert_eq!(
-        entry("A_{1,1}"),
-        "\\frac{L_{1}^{2} m_{1}}{3} + L_{1}^{2} m_{2} + \\frac{L_{2}^{2} m_{2}}{3} + L_{1} L_{2} m_{2} c_{2}"
+    let m11 = "\\left(\\frac{L_{1}^{2} m_{1}}{3} + L_{1}^{2} m_{2} + \\frac{L_{2}^{2} m_{2}}{3} + L_{1} L_{2} m_{2} c_{2}\\right) \\ddot{q}_{1}";
+    let m12 = "\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} c_{2}\\right)";
+    let m22 = "\\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2}";
+    let (row1, row2) = (row(1), row(2));
+    assert!(
+        row1.starts_with(&format!("{m11} + {m12} \\ddot{{q}}_{{2}}")),
+        "{row1}"
     );
-    assert_eq!(
-        entry("A_{1,2}"),
-        "\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} c_{2}\\right)"
+    assert!(
+        row2.starts_with(&format!("{m12} \\ddot{{q}}_{{1}} + {m22}")),
+        "{row2}"
     );
-    assert_eq!(entry("A_{2,2}"), "\\frac{L_{2}^{2} m_{2}}{3}");
+    // −q̇₁² + (q̇₁ + q̇₂)² collected as a textbook writes it.
+    assert!(
+        row1.contains("\\left(\\dot{q}_{2}^{2} + 2 \\dot{q}_{1} \\dot{q}_{2}\\right)"),
+        "{row1}"
+    );
     // The auxiliary rows keep their reaction positive: F^O_x − m a = 0.
-    assert!(step5.contains("(3) & A_{3,1} & A_{3,2} & 1 & 0 & b_{3}"));
+    assert!(row(3).contains("+ F^{O}_{x} "), "{}", row(3));
     assert!(step5.contains("its signs changed so that the mass matrix is positive"));
+    // Each equation once: no list of the matrix's entries repeats the rows.
+    assert!(!step5.contains("- $A_{1,1} = "));
+    assert!(step5.contains("so the entries are read off there"));
 }
 
 /// Kane and Levinson's auxiliary speed along F^O_x: O gives way along n_x, every point of
@@ -182,4 +192,31 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
     let plan = section(&text, "## Step 3", "## Step 4");
     assert!(plan.contains("rows 1 and 2 hold only the second derivatives"));
     assert!(plan.contains("each of rows 3 and 4 gives its one reaction"));
+}
+
+/// A bob on a light rod is a two-force member: every force but the pin's acts at the bob,
+/// so the pin's force lies along the rod. Kane's auxiliary speed along the rod brings in
+/// the tension alone; by hand, along the rod toward O, T − m g cos θ = m L θ̇² (the
+/// centripetal acceleration), so T = m (g cos θ + L θ̇²) = 4.14827 N at θ = 0.6, θ̇ = 0.5.
+#[test]
+fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
+    let text = markdown("simple-pendulum.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    assert!(
+        step5.contains("u_{2} \\to T^{O}$"),
+        "no auxiliary speed for T^O"
+    );
+    assert!(step5.contains("T^{O} - L m \\dot{\\theta}^{2} - g m c_{\\theta} = 0"));
+    assert!(step5.contains("is a two-force member"));
+    let (m, g, l, theta, rate): (f64, f64, f64, f64, f64) = (0.5, 9.81, 0.8, 0.6, 0.5);
+    let tension = m * (g * theta.cos() + l * rate * rate);
+    let row = step5
+        .lines()
+        .find(|l| l.starts_with("| $T^{O}$ | "))
+        .expect("T^O's value at the start");
+    let value: f64 = row.split('|').nth(2).unwrap().trim().parse().unwrap();
+    assert!(
+        (value - tension).abs() < 1e-5 * tension,
+        "{value} against {tension}"
+    );
 }

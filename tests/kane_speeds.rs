@@ -24,13 +24,10 @@ fn has_friction(problem: &Problem) -> bool {
 }
 
 /// The constrained problems whose `u_D = C u_I` would not read as a textbook writes it
-/// (entries of `C` with nested fractions the simplifier does not cancel): their Kane rows
+/// (entries of `C` that hold only on the constraint, x² + y² = (R − r)², which no rational
+/// cancellation finds): their Kane rows
 /// keep the constraint forces.
-const WRITTEN_WITH_CONSTRAINT_FORCES: [&str; 3] = [
-    "problems/disc-in-cylinder.json",
-    "problems/four-bar.json",
-    "problems/gear-pair-torque.json",
-];
+const WRITTEN_WITH_CONSTRAINT_FORCES: [&str; 1] = ["problems/disc-in-cylinder.json"];
 
 /// Every bundled problem with a closure, a constraint or a prescribed coordinate, without
 /// friction (see [`has_friction`]) and not in [`WRITTEN_WITH_CONSTRAINT_FORCES`].

@@ -363,3 +363,46 @@ fn an_atwood_machine_with_a_massive_or_a_light_pulley() {
         }
     }
 }
+
+// ---- a double pendulum of two particles, both angles measured from the vertical ----
+
+#[test]
+fn a_double_pendulum_with_absolute_angles_follows_the_textbook_equations_and_its_rods_pull_along_themselves(
+) {
+    let (m1, m2, l1, l2) = (1.0, 0.5, 0.6, 0.4);
+    let (q1, q2, u1, u2): (f64, f64, f64, f64) = (0.7, 0.3, 1.0, 0.5);
+    let d = q1 - q2;
+    // Lagrange's equations in the absolute angles, by hand:
+    // (m1 + m2) L1 q̈1 + m2 L2 cos(q1 − q2) q̈2 = −m2 L2 sin(q1 − q2) q̇2² − (m1 + m2) g sin q1,
+    // L1 cos(q1 − q2) q̈1 + L2 q̈2 = L1 sin(q1 − q2) q̇1² − g sin q2.
+    let (a11, a12, b1) = (
+        (m1 + m2) * l1,
+        m2 * l2 * d.cos(),
+        -m2 * l2 * d.sin() * u2 * u2 - (m1 + m2) * G * q1.sin(),
+    );
+    let (a21, a22, b2) = (l1 * d.cos(), l2, l1 * d.sin() * u1 * u1 - G * q2.sin());
+    let det = a11 * a22 - a12 * a21;
+    let acc1 = (b1 * a22 - a12 * b2) / det;
+    let acc2 = (a11 * b2 - a21 * b1) / det;
+    // Each rod is a two-force member: it pulls its bob toward its pivot with a tension.
+    // Along rod 2 (e₂ = (−sin q2, cos q2), from P2 toward Q) for bob 2, then along rod 1.
+    let e = |q: f64| [-q.sin(), q.cos()];
+    let t2 = m2 * (G * q2.cos() + l2 * u2 * u2 + l1 * u1 * u1 * d.cos() + l1 * acc1 * d.sin());
+    let t1 = m1 * (G * q1.cos() + l1 * u1 * u1) + t2 * d.cos();
+    for s in solve_all("validation/double-pendulum-particles-absolute", &[]) {
+        let what = |q: &str| format!("{}: {q}", s.method);
+        assert_close(s.acc("q1"), acc1, 1e-9, 1.0, &what("q1''"));
+        assert_close(s.acc("q2"), acc2, 1e-9, 1.0, &what("q2''"));
+        // O's force in N's unit vectors; Q's in rod 1's, turned by q1 into N's.
+        let o = s.force("O");
+        let q = s.force("Q");
+        let q_in_n = [
+            q[0] * q1.cos() - q[1] * q1.sin(),
+            q[0] * q1.sin() + q[1] * q1.cos(),
+        ];
+        for k in 0..2 {
+            assert_close(o[k], t1 * e(q1)[k], 1e-9, 1.0, &what("O along rod 1"));
+            assert_close(q_in_n[k], t2 * e(q2)[k], 1e-9, 1.0, &what("Q along rod 2"));
+        }
+    }
+}

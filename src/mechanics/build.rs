@@ -10,7 +10,7 @@ use super::model::{dt_components, rigid_point, tree_order, BodyState, JointModel
 use super::point::PointMotion;
 use super::speeds::Speeds;
 use super::vector::{own_components, zero3, Components, Vector};
-use crate::problem::{BodyId, Inertia, Problem};
+use crate::problem::{BodyId, Dimension, Inertia, Problem};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{Expr, Symbol};
 
@@ -47,6 +47,9 @@ impl<'p> Model<'p> {
         ];
         let order = tree_order(problem);
         let mut motions: Vec<Option<JointMotion>> = vec![None; problem.joints.len()];
+        // In a plane, each body's angle from N about N.z: an absolute joint angle turns the
+        // child by itself less its parent's.
+        let mut absolute = vec![Expr::zero(); count];
         // Frames first, parents before children: an axis is read in its parent's frame.
         for &body in &order {
             let Some(j) = problem.joint_of(body) else {
@@ -54,7 +57,20 @@ impl<'p> Model<'p> {
             };
             let joint = &problem.joints[j];
             let partial = Frames::new(frame_infos.clone(), Vec::new());
-            let motion = joint_motion(problem, joint, &partial, &values)?;
+            let mut motion = joint_motion(problem, joint, &partial, &values)?;
+            if joint.angle_from == Some(BodyId::GROUND) {
+                if let Some(turn) = motion.rotations.first_mut() {
+                    turn.angle = &turn.angle - &(&absolute[joint.parent.0] * &turn.axis[2]);
+                }
+            }
+            if problem.dimension == Dimension::Two {
+                absolute[body.0] = motion
+                    .rotations
+                    .iter()
+                    .fold(absolute[joint.parent.0].clone(), |angle, turn| {
+                        &angle + &(&turn.angle * &turn.axis[2])
+                    });
+            }
             frame_infos[body.0] = FrameInfo {
                 parent: Some(joint.parent),
                 rotations: motion.rotations.clone(),

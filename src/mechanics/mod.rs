@@ -22,6 +22,7 @@ pub mod resal;
 pub mod site;
 pub mod sites;
 pub mod speeds;
+pub mod two_force;
 pub mod vector;
 
 pub use error::MechanicsError;

@@ -19,7 +19,11 @@ pub fn derive_for<'p>(
     request: Request<'_>,
 ) -> Result<Derivation<'p>, MechanicsError> {
     budget::step("computing the kinematics (step 4)");
-    let model = Model::build_for(problem, request.form)?;
+    let mut model = Model::build_for(problem, request.form)?;
+    if method == Method::Kane {
+        // Kane's auxiliary speed along a light rod brings in its tension alone.
+        crate::mechanics::two_force::along_members(&mut model);
+    }
     budget::step("writing the forces, the inertia forces and torques (step 2)");
     let free_bodies = plan::free_bodies(&model, request.form)?;
     equations::write_equations(model, free_bodies, method, request)

@@ -100,6 +100,7 @@ impl Reader {
                 at: VectorExpr::default(),
                 child_at: VectorExpr::default(),
                 friction: None,
+                angle_from: None,
                 path: path.clone(),
             };
             if has_friction(kind) {

@@ -164,6 +164,9 @@ impl Reader {
         if kind.is_none_or(has_friction) {
             allowed.push("friction");
         }
+        if kind.is_none_or(|k| k == JointKind::Revolute) {
+            allowed.push("angle_from");
+        }
         let Some(kind) = kind else {
             check_keys(fields, path, &allowed, &mut self.diag);
             return;
@@ -191,10 +194,17 @@ impl Reader {
                 NO_FRICTION_HINT,
             );
         }
+        if fields.contains_key("angle_from") && kind != JointKind::Revolute {
+            self.diag.hint(
+                &key_path(path, "angle_from"),
+                format!("a {} joint has no angle to measure from N", kind.name()),
+                "only a revolute joint's angle may be measured from N; remove `angle_from`",
+            );
+        }
         let known: Vec<&str> = allowed
             .iter()
             .copied()
-            .chain(["axis", "sequence", "friction"])
+            .chain(["axis", "sequence", "friction", "angle_from"])
             .collect();
         let unknown: serde_json::Map<String, Value> = fields
             .iter()
@@ -202,6 +212,32 @@ impl Reader {
             .map(|(k, v)| (k.clone(), v.clone()))
             .collect();
         check_keys(&unknown, path, &allowed, &mut self.diag);
+    }
+
+    /// A revolute joint's `angle_from`: N (an absolute angle, in a plane only) or its parent
+    /// (the default, `None`).
+    fn angle_from(&mut self, value: &Value, path: &str, parent: BodyId) -> Option<BodyId> {
+        let from = self.body_ref(value, path)?;
+        if from == parent {
+            return None;
+        }
+        if from != BodyId::GROUND {
+            self.diag.hint(
+                path,
+                format!("an angle is measured from N or from the parent, not from `{}`", self.names.bodies[from.0 - 1]),
+                "write \"N\" for an absolute angle, or leave `angle_from` out for one relative to the parent",
+            );
+            return None;
+        }
+        if self.dimension != Some(Dimension::Two) {
+            self.diag.hint(
+                path,
+                "an absolute angle is measured in a plane: in 3D a joint's angle is relative to its parent".to_string(),
+                "remove `angle_from`, or make the problem 2D with \"dimension\": 2",
+            );
+            return None;
+        }
+        Some(from)
     }
 
     fn declare_coordinates(
@@ -314,9 +350,16 @@ impl Reader {
                 at: VectorExpr::default(),
                 child_at: VectorExpr::default(),
                 friction: None,
+                angle_from: None,
                 path: path.clone(),
             };
             if let Some(fields) = value.as_object() {
+                if kind == JointKind::Revolute {
+                    if let Some(v) = fields.get("angle_from") {
+                        joint.angle_from =
+                            self.angle_from(v, &key_path(&path, "angle_from"), parent);
+                    }
+                }
                 if heads[i].kind.is_some_and(has_friction) {
                     joint.friction = self.friction(fields, &path);
                 }

@@ -184,6 +184,9 @@ pub struct Joint {
     /// Prismatic: the coefficient of Coulomb friction μ ≥ 0 along the axis, a scalar of
     /// constants; `None` for a smooth slider.
     pub friction: Option<Expr>,
+    /// Revolute in a plane: `Some(N)` when its angle is measured from N's axes (an absolute
+    /// angle) rather than from the parent's; `None` for the parent's.
+    pub angle_from: Option<BodyId>,
     /// The JSON path, e.g. `joints[1]`.
     pub path: String,
 }

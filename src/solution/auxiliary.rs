@@ -7,7 +7,7 @@ use crate::equations::Derivation;
 use crate::plan::rows::Equation;
 use crate::problem::BodyId;
 use crate::symbolic::print::latex_name;
-use crate::symbolic::{ComponentKind, Symbol, Unknown};
+use crate::symbolic::{Axis, ComponentKind, Symbol, Unknown};
 
 /// The sentences that show how Kane's row `r` (an auxiliary speed of the tree, `row`)
 /// brings in its reaction, in the problem's markup; `None` for any other row.
@@ -38,7 +38,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     let u = format!("u_{{{r}}}");
     let particles_only = subtree
         .iter()
-        .all(|&b| super::independent::is_particle(derivation, b));
+        .all(|&b| super::independent::is_particle(&derivation.model, b));
     let centres = |separator: &str, each: &dyn Fn(&str) -> String| -> String {
         subtree
             .iter()
@@ -81,6 +81,14 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
                 "Augmented velocities: ${bodies}$ is let turn about ${point}$ with angular speed ${u}$ about ${d}$, so each of its bodies gains ${u}\\, {d}$ and each point $X$ of it ${u}\\, {d} \\times \\mathbf{{r}}^{{{point} X}}$: the partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
             )
         }
+    };
+    let motion = if reaction.axis == Axis::Member {
+        let member = latex_name(problem.body_name(problem.joints[j].child));
+        format!(
+            "${member}$ is a two-force member: a particle on a light rod, every other force on it acting at ${member}^*$, so the moment about ${member}^*$ of the force at ${point}$ is zero and that force lies along the rod, $\\mathbf{{F}}^{{{point}}} = {unknown}\\, {d}$: one unknown, the rod's tension (positive when the rod pulls). {motion}"
+        )
+    } else {
+        motion
     };
     let inside = joints_inside(derivation, &subtree);
     let inside = match inside.as_slice() {

@@ -110,6 +110,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             },
         })
         .collect();
+    solution
+        .initial_values
+        .extend(tensions(derivation, q0, rates0, &initial.reactions));
     solution.friction = super::friction::views(derivation, &initial.friction);
     solution.reactions = initial
         .reactions
@@ -345,4 +348,39 @@ fn abbreviation_examples(all: Vec<Named>) -> (Vec<Named>, bool) {
         .map(|(_, n)| n)
         .collect();
     (examples, true)
+}
+
+/// The tension of each two-force member at the initial state, from its joint's force:
+/// T = F · ê, ê the member's direction toward the joint.
+fn tensions(
+    derivation: &Derivation,
+    q0: &[f64],
+    rates0: &[f64],
+    reactions: &[(String, [f64; 3], [f64; 3])],
+) -> Vec<InitialValue> {
+    let model = &derivation.model;
+    let values = model.values_at(0.0, q0, rates0);
+    let mut out = Vec::new();
+    for site in &model.sites {
+        let Some(member) = site
+            .reactions
+            .iter()
+            .find(|c| c.axis == crate::symbolic::Axis::Member)
+        else {
+            continue;
+        };
+        let Some((_, force, _)) = reactions.iter().find(|(joint, _, _)| *joint == site.name) else {
+            continue;
+        };
+        let along = member.direction.components_in(site.parent, &model.frames);
+        let tension: f64 = (0..3)
+            .map(|k| force[k] * crate::symbolic::eval::eval(&along[k], &values))
+            .sum();
+        out.push(InitialValue {
+            name_tex: Math::from(latex(&Expr::sym(member.unknown(&site.name)))),
+            value: fixed_or_zero(tension),
+            unit_tex: Math::from(crate::render::units::unit_tex("N")),
+        });
+    }
+    out
 }

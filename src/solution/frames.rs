@@ -29,7 +29,11 @@ pub(super) fn frames(problem: &Problem) -> Vec<Frame> {
             frame_tex: Math::from(triad(name)),
             fixed_in: name.to_string(),
             parent: joint
-                .map(|j| problem.body_name(j.parent).to_string())
+                .map(|j| {
+                    problem
+                        .body_name(j.angle_from.unwrap_or(j.parent))
+                        .to_string()
+                })
                 .unwrap_or_default(),
             orientation_tex: Math::from(
                 joint
@@ -50,9 +54,19 @@ fn orientation_tex(problem: &Problem, joint: &Joint) -> String {
             .map(|&i| latex(&problem.coordinate_expr(i, 0)))
             .unwrap_or_else(|| "0".into())
     };
-    let axis = || match &joint.axis {
-        Some(axis) => vector_tex(problem, axis),
-        None => latex_unit_vector(problem.body_name(joint.parent), 2),
+    let axis = || match (&joint.axis, joint.angle_from) {
+        // An absolute angle turns about N's normal to the plane, as the parent's does.
+        (Some(axis), Some(from)) => {
+            let terms = axis.terms.iter().map(|(_, k, c)| (from, *k, c.clone()));
+            vector_tex(
+                problem,
+                &VectorExpr {
+                    terms: terms.collect(),
+                },
+            )
+        }
+        (Some(axis), None) => vector_tex(problem, axis),
+        (None, from) => latex_unit_vector(problem.body_name(from.unwrap_or(joint.parent)), 2),
     };
     let rotated = |angle: String, about: String| {
         format!("\\text{{rotated by }} {angle} \\text{{ about }} {about}")

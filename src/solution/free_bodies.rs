@@ -1,6 +1,7 @@
 //! Step 2's free bodies: each with the forces and couples that act on it from outside, the
 //! distance forces, and the inertia forces and torques of its bodies.
 
+use super::independent::is_particle;
 use super::tex::{bodies_name, bodies_tex, initial_sign, vector_tex};
 use crate::equations::Derivation;
 use crate::mechanics::model::vector_of;
@@ -109,6 +110,10 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
         vector_tex: Math::from(format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}")),
         point_tex: Math::from(format!("\\text{{at }} {symbol}^*")),
     });
+    if is_particle(model, body) {
+        // A particle has no rotational inertia: no inertia torque to write.
+        return;
+    }
     view.inertia.push(Force {
         label: format!("inertia torque of {name}"),
         vector_tex: Math::from(torque_tex(&symbol, model.is_planar())),
@@ -144,6 +149,9 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
         vector_tex: "-m_{k}\\, {}^{N}\\mathbf{a}^{k^*}".into(),
         point_tex: Math::from(at_center),
     });
+    if set.iter().all(|&body| is_particle(model, body)) {
+        return;
+    }
     view.inertia.push(Force {
         label: "inertia torque of each body k".into(),
         vector_tex: Math::from(torque_tex("k", model.is_planar())),

@@ -6,7 +6,7 @@
 use crate::equations::kane::partials;
 use crate::equations::Derivation;
 use crate::mechanics::independent::DependentSpeeds as Speeds;
-use crate::mechanics::Vector;
+use crate::mechanics::{Model, Vector};
 use crate::render::context::{DependentSpeeds, PartialVelocity};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_collected;
@@ -27,8 +27,8 @@ pub fn speed_tex(derivation: &Derivation, speeds: &Speeds, r: usize) -> String {
 
 /// Whether a body is a particle: no central moment of inertia, so no inertia torque and
 /// no partial angular velocity worth printing.
-pub fn is_particle(derivation: &Derivation, body: crate::problem::BodyId) -> bool {
-    derivation.model.bodies[body.0]
+pub fn is_particle(model: &Model, body: crate::problem::BodyId) -> bool {
+    model.bodies[body.0]
         .inertia
         .iter()
         .flatten()
@@ -72,7 +72,7 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
         let mut first = true;
         for (body, v, w) in &per_body {
             let v_tex = super::tex::shortest_tex(model, &combined(v, &weights), *body);
-            let particle = is_particle(derivation, *body);
+            let particle = is_particle(&derivation.model, *body);
             let w_tex = if particle {
                 zero.to_string()
             } else {
@@ -192,10 +192,25 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
     }
     let n = problem.coordinates.len();
     let constraint_rows = model.constraints.rows.len();
+    let count = |k: usize, one: &str, many: &str| {
+        if k == 1 {
+            format!("the {one}")
+        } else {
+            format!("the {k} {many}")
+        }
+    };
     let mut solve = format!(
-        "Solving: the {} equations of the independent speeds and the {} differentiated constraints are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
-        speeds.independent.len(),
-        constraint_rows,
+        "Solving: {} and {} are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
+        count(
+            speeds.independent.len(),
+            "equation of the independent speed",
+            "equations of the independent speeds"
+        ),
+        count(
+            constraint_rows,
+            "differentiated constraint",
+            "differentiated constraints"
+        ),
         speeds.independent.len() + constraint_rows,
         n
     );

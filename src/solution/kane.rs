@@ -89,7 +89,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
-            let particle = super::independent::is_particle(derivation, *body);
+            let particle = super::independent::is_particle(&derivation.model, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
@@ -183,10 +183,21 @@ pub fn solve_order_note(derivation: &Derivation) -> Option<String> {
         1 => format!("rows {from} and {to}"),
         _ => format!("rows {from}–{to}"),
     };
+    let first = if speeds == 1 {
+        "row 1 holds only the second derivative and is solved for it first".to_string()
+    } else {
+        format!(
+            "{} hold only the second derivatives and are solved for them first",
+            rows(1, speeds)
+        )
+    };
+    let then = if n == speeds + 1 {
+        format!("row {n} gives the reaction")
+    } else {
+        format!("each of {} gives its one reaction", rows(speeds + 1, n))
+    };
     Some(format!(
-        "The system is solved in two stages: {} hold only the second derivatives and are solved for them first; then each of {} gives its one reaction, with the second derivatives known.",
-        rows(1, speeds),
-        rows(speeds + 1, n)
+        "The system is solved in two stages: {first}; then {then}, with the second derivatives known."
     ))
 }
 

@@ -88,6 +88,9 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                 format!("{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {acceleration}"),
             );
             let (pin_velocity_tex, pin_acceleration_tex) = match pin {
+                // A pin at the parent's mass centre (a bob's) has that centre's motion,
+                // written above: v^{B*} follows from v^{A*}.
+                Some(site) if at_parent_centre(model, site) => (String::new(), String::new()),
                 Some(site) => one_line_if_short(
                     pin_line(model, site, Motion::Velocity),
                     pin_line(model, site, Motion::Acceleration),
@@ -304,16 +307,30 @@ fn pin_motion(model: &Model, site: usize, motion: Motion) -> Vector {
     }
 }
 
-/// `{}^{N}\mathbf{v}^{P}` (or `a`) for the pin `site`.
+/// `{}^{N}\mathbf{v}^{P}` (or `a`) for the pin `site`; the parent's mass centre's,
+/// `\mathbf{v}^{A^*}`, for a pin there.
 fn pin_symbol(model: &Model, site: usize, motion: Motion) -> String {
     let letter = match motion {
         Motion::Velocity => "v",
         Motion::Acceleration => "a",
     };
-    format!(
-        "{{}}^{{N}}\\mathbf{{{letter}}}^{{{}}}",
+    let point = if at_parent_centre(model, site) {
+        let parent = model.sites[site].parent;
+        format!("{}^*", latex_name(model.problem.body_name(parent)))
+    } else {
         latex_name(&model.sites[site].name)
-    )
+    };
+    format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{point}}}")
+}
+
+/// Whether the pin `site` is at its parent's mass centre.
+fn at_parent_centre(model: &Model, site: usize) -> bool {
+    let site = &model.sites[site];
+    let centre = &model.bodies[site.parent.0].center_offset;
+    (0..3).all(|k| {
+        crate::symbolic::eval::eval(&(&site.parent_offset[k] - &centre[k]), &model.values).abs()
+            < 1e-12
+    })
 }
 
 /// The pin's velocity or acceleration: from the parent's own pin down a chain

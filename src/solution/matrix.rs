@@ -5,7 +5,7 @@
 use super::long::{by_rates, LONG_EQUATION};
 use super::tex::row_heading_tex;
 use crate::equations::rows::Sum;
-use crate::equations::Derivation;
+use crate::equations::{Derivation, Method};
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
 use crate::render::math_width::printed_width;
 use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
@@ -83,6 +83,19 @@ pub fn matrix(
         .collect();
     // In the table a row is labelled by its number: step 5 heads each equation with it.
     let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
+    if derivation.method == Method::Kane && !by_entries {
+        // Kane's rows stand whole in step 5, each written once, its mass matrix positive:
+        // the matrix form shows only where its entries are (the structure of the solve),
+        // and a single row is its own solution.
+        if a.len() < 2 {
+            return MatrixForm::default();
+        }
+        return MatrixForm {
+            pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
+            columns_tex: Math::all(columns(&x)),
+            ..MatrixForm::default()
+        };
+    }
     let b_names: Vec<String> = (1..=a.len()).map(|i| format!("b_{{{i}}}")).collect();
     let mut table_with_b_by_name = None;
     if n <= MOST_COLUMNS && !by_entries {

@@ -179,6 +179,26 @@ pub fn mul(factors: impl IntoIterator<Item = Expr>) -> Expr {
         return Expr::zero();
     }
     super::budget::charge((powers.len() + sums.len()) as u64);
+    if !sums.is_empty()
+        && powers
+            .iter()
+            .any(|(b, _, _)| matches!(b.node(), Node::Add(_)))
+    {
+        // A sum meeting a power of itself merges with it, S · S⁻¹ = 1, rather than being
+        // multiplied out over it.
+        sums.retain(|sum| {
+            let meets = powers.iter().any(|(b, e, _)| {
+                b == sum
+                    && e.as_number()
+                        .and_then(Number::as_integer)
+                        .is_some_and(|k| k < 0)
+            });
+            if meets {
+                powers.push((sum.clone(), Expr::one(), sum.clone()));
+            }
+            !meets
+        });
+    }
     powers.sort_by(|a, b| a.0.cmp(&b.0));
     let mut rebuilt: Vec<Expr> = Vec::with_capacity(powers.len());
     let mut needs_another_pass = false;
@@ -468,6 +488,12 @@ mod tests {
         let rhs = x() * x() - y() * y();
         assert_eq!(lhs, rhs);
         assert_eq!(x() / x(), Expr::one());
+        let s = x() + y();
+        assert_eq!(s.clone() / s.clone(), Expr::one());
+        assert_eq!(
+            mul([s.clone(), x(), pow(s.clone(), Expr::int(-2))]),
+            x() * pow(s.clone(), Expr::int(-1))
+        );
         assert_eq!(
             pow(x() + y(), Expr::int(2)),
             x() * x() + Expr::int(2) * x() * y() + y() * y()

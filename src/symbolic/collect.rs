@@ -48,6 +48,7 @@ fn kind(factor: &Expr) -> Option<Kind> {
 
 /// `e` (a canonical sum) in LaTeX with its terms collected (see the module documentation).
 pub fn latex_collected(e: &Expr) -> String {
+    let e = &rate_sums_inlined(e);
     // Groups keyed by the product of the factors collected by, in order of first use.
     let mut groups: Vec<(Option<Kind>, Expr, Vec<Expr>)> = Vec::new();
     for term in e.terms() {
@@ -77,7 +78,8 @@ pub fn latex_collected(e: &Expr) -> String {
         (None, None) => std::cmp::Ordering::Equal,
     });
     let mut out = String::new();
-    for (kind, keys, coefficients, square) in &squares_of_rates(sharing_coefficients(groups)) {
+    let groups = proportional_rates(squares_of_rates(sharing_coefficients(groups)));
+    for (kind, keys, coefficients, square) in &groups {
         if kind.is_none() {
             // Constants: their sum, with its common factor out.
             let constant = add(coefficients.iter().cloned());
@@ -107,6 +109,78 @@ pub fn latex_collected(e: &Expr) -> String {
     } else {
         out
     }
+}
+
+/// Whether `d` is a sum of rates kept whole only to keep expressions small (ω = q̇₁ + q̇₂),
+/// printed as its value.
+fn is_hidden_rate_sum(d: &super::expr::Definition) -> bool {
+    !d.is_named()
+        && d.value().terms().len() > 1
+        && !d.value().any_symbol(&|s| {
+            !matches!(
+                s,
+                Symbol::Coord(_, 1) | Symbol::Speed(_, 0) | Symbol::Const(_)
+            )
+        })
+}
+
+/// `e` with its hidden sums of rates written out, when that makes no more terms:
+/// −k q̇₁² + k (q̇₁ + q̇₂)² is k (2 q̇₁ q̇₂ + q̇₂²), as a textbook simplifies it.
+fn rate_sums_inlined(e: &Expr) -> Expr {
+    let hidden = |s: &Symbol| matches!(s, Symbol::Defined(d) if is_hidden_rate_sum(d));
+    if !e.any_symbol(&hidden) {
+        return e.clone();
+    }
+    let inlined = super::simplify::simplify(&super::subst::substitute(e, &|s| match s {
+        Symbol::Defined(d) if is_hidden_rate_sum(d) => Some(d.value().clone()),
+        _ => None,
+    }));
+    if inlined.terms().len() <= e.terms().len() {
+        inlined
+    } else {
+        e.clone()
+    }
+}
+
+/// The groups of rates whose coefficients are one coefficient times numbers merged into
+/// the first of them as that coefficient times their weighted sum: k q̇₁ q̇₂ + 2k q̇₂² →
+/// k (q̇₁ q̇₂ + 2 q̇₂²).
+fn proportional_rates(groups: Vec<Squared>) -> Vec<Squared> {
+    let single_rate = |(kind, keys, _, square): &Squared| {
+        *kind == Some(Kind::Rate) && keys.len() == 1 && square.is_none()
+    };
+    let totals: Vec<Expr> = groups
+        .iter()
+        .map(|(_, _, coefficients, _)| add(coefficients.iter().cloned()))
+        .collect();
+    let mut weights: Vec<Option<(usize, Number)>> = vec![None; groups.len()];
+    for i in 0..groups.len() {
+        if !single_rate(&groups[i]) || weights[i].is_some() || totals[i].is_zero() {
+            continue;
+        }
+        for j in i + 1..groups.len() {
+            if weights[j].is_none() && single_rate(&groups[j]) {
+                if let Some(r) = multiple_of(&totals[j], &totals[i]) {
+                    weights[j] = Some((i, r));
+                }
+            }
+        }
+    }
+    let mut out: Vec<Squared> = Vec::new();
+    let mut place = vec![usize::MAX; groups.len()];
+    for (i, group) in groups.into_iter().enumerate() {
+        match weights[i] {
+            Some((first, r)) => {
+                let (_, keys, _, _) = &mut out[place[first]];
+                keys[0] = add([keys[0].clone(), mul([Expr::num(r), group.1[0].clone()])]);
+            }
+            None => {
+                place[i] = out.len();
+                out.push(group);
+            }
+        }
+    }
+    out
 }
 
 /// `e` (a canonical sum) in LaTeX as it is, but for the terms whose rates make the square
@@ -246,6 +320,7 @@ fn squares_of_rates(groups: Vec<Shared>) -> Vec<Squared> {
 /// One key as it is, several as their sum in parentheses, a run by its ends.
 fn keys_tex(keys: &[Expr]) -> String {
     match keys {
+        [key] if key.terms().len() > 1 => format!("\\left({}\\right)", latex(key)),
         [key] => latex(key),
         _ => {
             let items: Vec<String> = keys.iter().map(latex).collect();

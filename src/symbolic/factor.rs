@@ -105,10 +105,19 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
         }
     }
     let mut factors = vec![Expr::num(number)];
-    factors.extend(common.into_iter().map(|(base, n)| pow(base, Expr::int(n))));
+    factors.extend(
+        common
+            .iter()
+            .map(|(base, n)| pow(base.clone(), Expr::int(*n))),
+    );
+    // Each term divided factor by factor: a power of a sum taken out must meet its own
+    // power in the term, not be multiplied out first.
+    let mut inverse = vec![Expr::num(number.recip().unwrap_or(Number::ONE))];
+    inverse.extend(common.into_iter().map(|(base, n)| pow(base, Expr::int(-n))));
     let common = mul(factors);
-    let inverse = pow(common.clone(), Expr::int(-1));
-    let inner = add(terms.iter().map(|t| mul([t.clone(), inverse.clone()])));
+    let inner = add(terms
+        .iter()
+        .map(|t| mul(std::iter::once(t.clone()).chain(inverse.iter().cloned()))));
     (common, inner)
 }
 

@@ -3,6 +3,7 @@
 
 pub mod budget;
 pub mod build;
+pub mod cancel;
 pub mod collect;
 mod collect_constants;
 pub mod compile;

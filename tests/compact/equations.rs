@@ -240,8 +240,8 @@ fn the_rolling_coin_has_no_root_of_a_square() {
     let step2 = markdown.find("## Step 2").expect("step 2");
     assert!(abbreviations < table && table < step2);
     // The velocity constraint along N.x, by hand, ẋ = R c_ψ (φ̇ + ψ̇ s_θ) + R θ̇ s_ψ c_θ,
-    // differentiated in time:
-    let expected = "-R c_{\\psi} \\ddot{\\phi} - R s_{\\theta} c_{\\psi} \\ddot{\\psi} - R s_{\\psi} c_{\\theta} \\ddot{\\theta} + \\ddot{x} + R s_{\\psi} s_{\\theta} \\dot{\\psi}^{2} + R s_{\\psi} s_{\\theta} \\dot{\\theta}^{2} + R s_{\\psi} \\dot{\\phi} \\dot{\\psi} - 2 R c_{\\psi} c_{\\theta} \\dot{\\psi} \\dot{\\theta}";
+    // differentiated in time, the rates of one coefficient together:
+    let expected = "-R c_{\\psi} \\ddot{\\phi} - R s_{\\theta} c_{\\psi} \\ddot{\\psi} - R s_{\\psi} c_{\\theta} \\ddot{\\theta} + \\ddot{x} + R s_{\\psi} s_{\\theta} \\left(\\dot{\\psi}^{2} + \\dot{\\theta}^{2}\\right) + R s_{\\psi} \\dot{\\phi} \\dot{\\psi} - 2 R c_{\\psi} c_{\\theta} \\dot{\\psi} \\dot{\\theta}";
     assert!(simplified_equations(&markdown)
         .iter()
         .any(|e| e == expected));

@@ -60,7 +60,8 @@ class Kin:
                 for axis, a in zip(j.sequence, angles):
                     rot = jm_mul(rot, jet_rotation(UNIT[axis], a))
             point = jv_add(op, jm_apply(rp, jv_add(jv_const(j.at), trans)))
-            rc = jm_mul(rp, rot)
+            # An absolute angle turns the child from N itself (the axis is N's normal in 2D).
+            rc = rot if j.absolute else jm_mul(rp, rot)
             oc = jv_sub(point, jm_apply(rc, jv_const(j.child_at)))
             self.frames[j.child] = (rc, oc)
 

@@ -60,6 +60,7 @@ class Joint:
         self.sequence = []        # 0 1 2 for x y z
         self.at = [0.0] * 3
         self.child_at = [0.0] * 3
+        self.absolute = False     # a 2D revolute angle measured from N
 
 
 class Problem:
@@ -188,7 +189,7 @@ class Problem:
         for i, j in enumerate(joints):
             path = f"joints[{i}]"
             _keys(j, path, {"name", "type", "parent", "child"},
-                  {"coordinates", "axis", "sequence", "at", "child_at"})
+                  {"coordinates", "axis", "sequence", "at", "child_at", "angle_from"})
             jt = j["type"]
             if jt not in JOINT_DOF:
                 raise ProblemError(f"{path}.type: unknown joint type {jt!r}")
@@ -225,6 +226,10 @@ class Problem:
                 joint.sequence = ["xyz".index(c) for c in seq]
             elif "sequence" in j:
                 raise ProblemError(f"{path}.sequence: not used by a {jt} joint")
+            # A planar revolute angle measured from N's axes rather than the parent's.
+            joint.absolute = j.get("angle_from", joint.parent) == "N" and joint.parent != "N"
+            if joint.absolute and (jt != "revolute" or self.dimension != 2):
+                raise ProblemError(f"{path}.angle_from: only a 2D revolute angle is measured from N")
             joint.at = self.local_vector(j.get("at"), joint.parent, path + ".at")
             joint.child_at = self.local_vector(j.get("child_at"), joint.child, path + ".child_at")
             by_child[joint.child] = joint

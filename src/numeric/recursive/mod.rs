@@ -91,7 +91,10 @@ impl Recursive {
     pub fn new(derivation: &Derivation) -> Option<Recursive> {
         let model = &derivation.model;
         let problem = model.problem;
+        // The passes take each joint's coordinate as its relative motion: an absolute angle
+        // is not one.
         let plain = problem.closures.is_empty()
+            && problem.joints.iter().all(|j| j.angle_from.is_none())
             && problem.constraints.is_empty()
             && problem.speeds.is_empty()
             && model.speeds.is_none()

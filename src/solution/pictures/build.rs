@@ -402,13 +402,13 @@ impl Setting<'_, '_, '_> {
                         unit(direction)?;
                         let symbol = c.unknown(&joint.name);
                         // Plain as the joint is named: `F^P2_x` for `F^{P_{2}}_{x}`.
+                        let plain = if c.axis == crate::symbolic::Axis::Member {
+                            format!("T^{}", joint.name)
+                        } else {
+                            format!("{}^{}_{}", c.kind.letter(), joint.name, c.axis.subscript())
+                        };
                         let label = Label {
-                            plain: format!(
-                                "{}^{}_{}",
-                                c.kind.letter(),
-                                joint.name,
-                                c.axis.subscript()
-                            ),
+                            plain,
                             tex: latex(&Expr::sym(symbol)),
                         };
                         Some(arrow(Kind::Reaction, label, direction))

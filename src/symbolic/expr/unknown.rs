@@ -40,6 +40,8 @@ pub enum Axis {
     Tangent(u8),
     /// A unit vector of the frame the reaction is given in: 0, 1, 2 for x, y, z.
     Unit(u8),
+    /// Along a two-force member, toward its joint: the member's tension.
+    Member,
 }
 
 impl Axis {
@@ -54,6 +56,7 @@ impl Axis {
                 .copied()
                 .unwrap_or("?")
                 .into(),
+            Axis::Member => String::new(),
         }
     }
 }
@@ -69,6 +72,9 @@ pub struct Component {
 
 impl fmt::Display for Component {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.axis == Axis::Member {
+            return write!(f, "T");
+        }
         write!(f, "{}{}", self.kind.letter(), self.axis.subscript())
     }
 }
@@ -112,6 +118,9 @@ impl Unknown {
     pub fn latex(&self) -> String {
         use crate::symbolic::tex_name::{latex_name, latex_name_plain};
         match self {
+            Unknown::Reaction { site, component } if component.axis == Axis::Member => {
+                format!("T^{{{}}}", latex_name(site))
+            }
             Unknown::Reaction { site, component } => format!(
                 "{}^{{{}}}_{{{}}}",
                 component.kind.letter(),

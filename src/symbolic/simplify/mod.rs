@@ -71,12 +71,14 @@ pub fn simplify_with_steps(e: &Expr) -> (Expr, Vec<Step>) {
 
 /// `e` simplified with `options`, pushing each step onto `steps` when given.
 pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>) -> Expr {
-    Simplifier {
+    let simpler = Simplifier {
         options,
         steps,
         memo: KeyMap::default(),
     }
-    .expr(e)
+    .expr(e);
+    // A sum over its own power, (r_A + r_B)² sin q / (r_A + r_B)², is cancelled.
+    super::cancel::cancel_sums(&simpler)
 }
 
 /// The index of the shortest of `candidates` by `Expr::operation_count`, the first on a
