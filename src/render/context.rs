@@ -390,6 +390,9 @@ pub struct Equation {
     pub active_tex: Math,
     /// Kane's rows: the generalized inertia force, e.g. `F^{*}_{1} = -m L^{2} \ddot{q}_{1}`.
     pub inertia_tex: Math,
+    /// Kane's row of an auxiliary speed that holds one reaction: solved for it,
+    /// `T^{O} = …` (empty otherwise).
+    pub solved_tex: Math,
 }
 
 /// One line of Kane's table of partial velocities: a generalized speed and a body.

@@ -341,6 +341,7 @@ fn equations() -> Vec<Equation> {
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
+            solved_tex: Math::from(String::new()),
         },
         Equation {
             label_tex: Math::from(format!("B\\colon \\sum \\mathbf{{M}}_{{P}} \\cdot {A}_{{z}}")),
@@ -358,6 +359,7 @@ fn equations() -> Vec<Equation> {
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
+            solved_tex: Math::from(String::new()),
         },
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{x}}")),
@@ -372,6 +374,7 @@ fn equations() -> Vec<Equation> {
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
+            solved_tex: Math::from(String::new()),
         },
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{y}}")),
@@ -386,6 +389,7 @@ fn equations() -> Vec<Equation> {
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
+            solved_tex: Math::from(String::new()),
         },
     ]
 }

@@ -85,7 +85,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     let motion = if reaction.axis == Axis::Member {
         let member = latex_name(problem.body_name(problem.joints[j].child));
         format!(
-            "${member}$ is a two-force member: a particle on a light rod, every other force on it acting at ${member}^*$, so the moment about ${member}^*$ of the force at ${point}$ is zero and that force lies along the rod, $\\mathbf{{F}}^{{{point}}} = {unknown}\\, {d}$: one unknown, the rod's tension (positive when the rod pulls). {motion}"
+            "The light rod from ${point}$ to the particle ${member}$, with the particle, is a two-force member: every other force on it acts at ${member}$, so the moment about ${member}$ of the force at ${point}$ is zero and that force lies along the rod, $\\mathbf{{F}}^{{{point}}} = {unknown}\\, {d}$: one unknown, the rod's tension (positive when the rod pulls). {motion}"
         )
     } else {
         motion

@@ -8,6 +8,7 @@ use crate::plan::rows::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
 use crate::render::text::Math;
 use crate::symbolic::collect::latex_collected;
+use crate::symbolic::linear::linear_split;
 use crate::symbolic::named::as_shown;
 use crate::symbolic::print::latex;
 use crate::symbolic::roots::roots_of_squares;
@@ -103,6 +104,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     };
     let (mut active_tex, mut inertia_tex) = (String::new(), String::new());
     let mut augmented_note = String::new();
+    let mut solved_tex = String::new();
     if let (Sum::Generalized { .. }, Some(r)) = (&row.sum, super::kane::row_number(derivation, row))
     {
         // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
@@ -155,6 +157,9 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 .filter(|u| matches!(u, Symbol::Unknown(_)))
                 .cloned()
                 .collect();
+            if !by_name {
+                solved_tex = solved_for_reaction(&simplified, &reactions);
+            }
             (
                 format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&reactions)),
                 format!(
@@ -189,5 +194,33 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         by_name,
         active_tex: Math::from(active_tex),
         inertia_tex: Math::from(inertia_tex),
+        solved_tex: Math::from(solved_tex),
+    }
+}
+
+/// An auxiliary speed's row holds one reaction: solved for it, `T^{O} = …`, with the
+/// second derivatives of the rows before it known (empty when it holds more, or the
+/// solved form would be too long to read).
+fn solved_for_reaction(row: &Expr, reactions: &[Symbol]) -> String {
+    let [reaction] = reactions else {
+        return String::new();
+    };
+    let Ok((coefficients, rest)) = linear_split(row, std::slice::from_ref(reaction)) else {
+        return String::new();
+    };
+    let coefficient = &coefficients[0];
+    if coefficient.is_zero() {
+        return String::new();
+    }
+    let value = simplify(&(-rest / coefficient.clone()));
+    let tex = format!(
+        "{} = {}",
+        latex(&Expr::sym(reaction.clone())),
+        latex_collected(&value)
+    );
+    if tex.len() > LONG_EQUATION {
+        String::new()
+    } else {
+        tex
     }
 }

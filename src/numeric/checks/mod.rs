@@ -109,7 +109,7 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
             .fold((0.0, 0.0), |best, x| if x.0 > best.0 { x } else { best });
         let value = worst / scale;
         let detail = format!(
-            "the total energy changes by at most {} J (at t = {} s) on an energy scale of {} J",
+            "the total energy changes by at most {} J (at t = {} s) on an energy scale of {} J (the larger of the largest kinetic energy and the range of the potential energy)",
             fixed(worst),
             fixed(at),
             fixed(scale)
@@ -217,7 +217,7 @@ pub fn method_agreement(
             indices.len()
         ),
         false => format!(
-            "at {} states along the run; the largest difference is in {}",
+            "the other methods' equations (derived as well, not shown here) evaluated at {} states along the run; the largest difference is in {}",
             indices.len(),
             worst.1
         ),
