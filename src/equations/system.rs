@@ -7,7 +7,7 @@ use crate::mechanics::{MechanicsError, Model};
 use crate::plan::forces::Action;
 use crate::plan::planner::{self, Rejected};
 pub use crate::plan::rows::Form;
-use crate::plan::rows::{Equation, Inertia};
+use crate::plan::rows::{Equation, Inertia, LazyInertia};
 use crate::plan::FreeBodies;
 use crate::problem::Problem;
 use crate::symbolic::budget;
@@ -69,8 +69,8 @@ pub struct Derivation<'p> {
     pub method: Method,
     /// Every force and couple, reactions included.
     pub actions: Vec<Action>,
-    /// The inertia forces and torques.
-    pub inertia: Inertia,
+    /// The inertia forces and torques ([`Self::inertia`]), written when first read.
+    lazy_inertia: LazyInertia,
     /// The chosen rows; none where only the numbers were asked for and Kane's system was
     /// built by composite bodies alone ([`Rows::Compiled`], [`Rows::Fastest`]).
     pub rows: Vec<Equation>,
@@ -98,6 +98,13 @@ pub struct Derivation<'p> {
     /// Kane's method on a constrained system whose rows keep the constraint forces as
     /// unknowns: why the independent speeds are not taken alone.
     pub kept_forces: Option<KeptForces>,
+}
+
+impl Derivation<'_> {
+    /// The inertia forces and torques of step 2.
+    pub fn inertia(&self) -> &Inertia {
+        self.lazy_inertia.get(&self.model)
+    }
 }
 
 pub use crate::mechanics::sites::reaction_unknowns;
@@ -233,7 +240,7 @@ pub fn write_equations<'p>(
             model,
             method,
             actions,
-            inertia,
+            lazy_inertia: inertia,
             rows: Vec::new(),
             rejected: Vec::new(),
             system,
@@ -244,6 +251,7 @@ pub fn write_equations<'p>(
             kept_forces: None,
         });
     }
+    let inertia = inertia.into_written(&model);
     // With constraints, Kane's rows are formed with the independent speeds, and no
     // constraint force is an unknown but those asked for.
     let written = match method {
@@ -456,7 +464,7 @@ fn finish<'p>(
         model,
         method,
         actions,
-        inertia,
+        lazy_inertia: LazyInertia::written(inertia),
         rows,
         rejected,
         system,

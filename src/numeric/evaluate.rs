@@ -41,7 +41,9 @@ pub struct Compiled {
     massless: Vec<Option<String>>,
     constants: Vec<f64>,
     unknowns: usize,
-    program: Program,
+    /// A and b (and the reactions' directions); compiled when first run where the
+    /// articulated-body algorithm gives the q'' and it is only the fallback.
+    program: Lazy,
     reactions: Vec<ReactionSlot>,
     /// The kinetic and potential energies, compiled when first asked: `solve` never asks.
     energy: Lazy,
@@ -94,7 +96,7 @@ pub struct StateSolution {
 #[derive(Clone, Debug)]
 struct Lazy {
     inputs: Vec<Symbol>,
-    outputs: [Expr; 2],
+    outputs: Vec<Expr>,
     program: std::cell::OnceCell<Program>,
 }
 
@@ -103,6 +105,15 @@ impl Lazy {
         self.program
             .get_or_init(|| Program::compile(&self.inputs, &self.outputs))
     }
+
+    /// Compiled already.
+    fn compiled(program: Program) -> Lazy {
+        Lazy {
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            program: std::cell::OnceCell::from(program),
+        }
+    }
 }
 
 impl Compiled {
@@ -110,6 +121,13 @@ impl Compiled {
     /// system by composite bodies where the derivation has it, unless it is small and the
     /// rows as formed compile shorter (see [`SMALL_PROGRAM`]).
     pub fn new(derivation: &Derivation) -> Compiled {
+        Compiled::build(derivation, false)
+    }
+
+    /// As [`Compiled::new`]; with `recursive_if_faster`, the q'' by the articulated-body
+    /// algorithm where it applies and is the faster ([`Compiled::fastest`]), and then the
+    /// dense program, only a fallback, compiled when first run.
+    fn build(derivation: &Derivation, recursive_if_faster: bool) -> Compiled {
         let model = &derivation.model;
         let problem = model.problem;
         let formed = &derivation.system;
@@ -138,13 +156,39 @@ impl Compiled {
             });
         }
         let inputs = input_symbols(problem);
-        let compile = |system: &crate::equations::LinearSystem| {
+        let outputs_of = |system: &crate::equations::LinearSystem| {
             let mut outputs: Vec<Expr> = system.a.iter().flatten().cloned().collect();
             outputs.extend(system.b.iter().cloned());
             outputs.extend(directions.iter().cloned());
-            Program::compile(&inputs, &outputs)
+            outputs
         };
-        let program = match &derivation.composite_system {
+        let compile = |system: &crate::equations::LinearSystem| {
+            Program::compile(&inputs, &outputs_of(system))
+        };
+        let assembly = super::assemble::Assembly::new(model);
+        let speeds = SpeedProgram::new(problem);
+        let friction = super::friction::Friction::new(derivation, &inputs);
+        // The articulated-body algorithm takes a tree of joints, bodies, gravity and loads:
+        // no reactions asked, drives, friction, declared speeds or constraints.
+        let plain = reactions.is_empty()
+            && model.constraints.prescribed.is_empty()
+            && friction.is_none()
+            && speeds.is_none()
+            && assembly.is_none();
+        let recursive = (recursive_if_faster
+            && plain
+            && super::recursive::is_faster(problem.coordinates.len(), model.is_planar()))
+        .then(|| super::recursive::Recursive::new(derivation))
+        .flatten();
+        let program = if recursive.is_some() {
+            let system = derivation.composite_system.as_ref().unwrap_or(formed);
+            Lazy {
+                inputs: inputs.clone(),
+                outputs: outputs_of(system),
+                program: std::cell::OnceCell::new(),
+            }
+        } else {
+            Lazy::compiled(match &derivation.composite_system {
             None => compile(formed),
             Some(composite) => {
                 let by_composite = compile(composite);
@@ -159,12 +203,12 @@ impl Compiled {
                     by_composite
                 }
             }
+        })
         };
         // The energies are a program of their own: they are not part of A and b.
-        let friction = super::friction::Friction::new(derivation, &inputs);
         let energy = Lazy {
             inputs,
-            outputs: [energy::kinetic(model), energy::potential(model)],
+            outputs: vec![energy::kinetic(model), energy::potential(model)],
             program: std::cell::OnceCell::new(),
         };
         let drives = model
@@ -188,9 +232,9 @@ impl Compiled {
                 || r.position.as_ref().is_some_and(|p| p.contains(&time))
         });
         Compiled {
-            recursive: None,
+            recursive,
             friction,
-            assembly: super::assemble::Assembly::new(model),
+            assembly,
             drives,
             method: derivation.method,
             coordinates: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
@@ -207,7 +251,7 @@ impl Compiled {
             energy,
             outputs: n * n + n + directions.len(),
             scratch: std::cell::RefCell::new(Vec::new()),
-            speeds: SpeedProgram::new(problem),
+            speeds,
             conservative: !drives_work
                 && model.constraints.friction.is_empty()
                 && problem.loads.iter().all(|l| is_conservative(&l.kind)),
@@ -225,13 +269,7 @@ impl Compiled {
     /// ([`super::recursive::is_faster`]). The numbers of `solve` and `simulate`; the confirmation
     /// checks compile each method's own rows with [`Compiled::new`].
     pub fn fastest(derivation: &Derivation) -> Compiled {
-        let compiled = Compiled::new(derivation);
-        let planar = derivation.model.is_planar();
-        if super::recursive::is_faster(compiled.coordinates.len(), planar) {
-            compiled.with_recursive(derivation)
-        } else {
-            compiled
-        }
+        Compiled::build(derivation, true)
     }
 
     /// As [`Compiled::new`], with the q'' by the articulated-body algorithm wherever it
@@ -265,7 +303,7 @@ impl Compiled {
 
     /// The number of operations to evaluate `A` and `b` once (with the reaction directions).
     pub fn operation_count(&self) -> usize {
-        self.program.operation_count()
+        self.program.program().operation_count()
     }
 
     /// Solves for the q'' and the requested reactions at time `t`, coordinates `q`, rates `rates`.
@@ -371,7 +409,7 @@ impl Compiled {
         let inputs = self.inputs(t, q, rates);
         let mut scratch = self.scratch.take();
         let mut values = vec![0.0; self.outputs];
-        self.program.run(&inputs, &mut scratch, &mut values);
+        self.program.program().run(&inputs, &mut scratch, &mut values);
         self.scratch.replace(scratch);
         let n = self.unknowns;
         let state = || describe_state(t, &self.coordinates, q, rates);

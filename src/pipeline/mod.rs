@@ -79,8 +79,11 @@ fn most_compact<'p>(
     numeric: Derivation<'p>,
 ) -> Result<Derivation<'p>, crate::mechanics::MechanicsError> {
     let method = numeric.method;
-    let named = numeric.inertia.compact.iter().any(|&c| c);
-    if method != Method::MotionLaw || !numeric.model.is_planar() || !named {
+    // Asked last: reading the inertia forces writes them.
+    if method != Method::MotionLaw
+        || !numeric.model.is_planar()
+        || !numeric.inertia().compact.iter().any(|&c| c)
+    {
         return Ok(numeric);
     }
     // The Motion Law's moments multiply each lever arm out against the named parts,

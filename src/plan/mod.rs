@@ -9,7 +9,7 @@ mod span;
 
 use crate::mechanics::{Form, MechanicsError, Model};
 use forces::Action;
-use rows::Inertia;
+use rows::LazyInertia;
 
 /// Step 2: what the free-body diagrams show, every force and couple on every body
 /// (reactions included), and what the kinetic diagrams show, their inertia forces and
@@ -18,8 +18,8 @@ use rows::Inertia;
 pub struct FreeBodies {
     /// Every force and couple.
     pub actions: Vec<Action>,
-    /// The inertia forces and torques.
-    pub inertia: Inertia,
+    /// The inertia forces and torques, written when first read.
+    pub inertia: LazyInertia,
 }
 
 /// Step 2 for `model`, its expressions in `form`.
@@ -29,6 +29,6 @@ pub struct FreeBodies {
 pub fn free_bodies(model: &Model, form: Form) -> Result<FreeBodies, MechanicsError> {
     Ok(FreeBodies {
         actions: forces::actions(model)?,
-        inertia: Inertia::of(model, form),
+        inertia: LazyInertia::new(form),
     })
 }

@@ -162,6 +162,46 @@ impl Inertia {
     }
 }
 
+/// Step 2's inertia forces and torques, written the first time they are read: a system by
+/// composite bodies (the numbers of a large tree) never reads them, and for a long chain in
+/// space naming their parts is most of the derivation's time.
+#[derive(Debug)]
+pub struct LazyInertia {
+    form: Form,
+    written: std::cell::OnceCell<Inertia>,
+}
+
+impl LazyInertia {
+    /// Not yet written; to be written for `form`.
+    pub fn new(form: Form) -> LazyInertia {
+        LazyInertia {
+            form,
+            written: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// Already written.
+    pub fn written(inertia: Inertia) -> LazyInertia {
+        LazyInertia {
+            form: inertia.form,
+            written: std::cell::OnceCell::from(inertia),
+        }
+    }
+
+    /// The inertia forces and torques of `model`, written now if they were not.
+    pub fn get(&self, model: &Model) -> &Inertia {
+        self.written.get_or_init(|| Inertia::of(model, self.form))
+    }
+
+    /// As [`Self::get`], owned.
+    pub fn into_written(self, model: &Model) -> Inertia {
+        let form = self.form;
+        self.written
+            .into_inner()
+            .unwrap_or_else(|| Inertia::of(model, form))
+    }
+}
+
 /// The Motion Law's groups of one scalar equation; their sum is zero.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Groups {

@@ -103,12 +103,16 @@ def aba(kind, n, spec):
 def ours(path):
     """Per method: (µs of one evaluate-and-solve, operations, q'') from the evaluate bench."""
     out = run(["cargo", "bench", "--quiet", "--bench", "evaluate", "--", path]).stdout
-    rows = {}
+    rows, header = {}, None
     for line in out.splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) == 5 and cells[0] in METHODS:
-            rows[cells[0]] = (float(cells[3]), int(cells[2]),
-                              [float(x) for x in cells[4].split()])
+        if cells and cells[0] == "method":
+            # Columns by their headings: the bench may print more than these.
+            header = {name: i for i, name in enumerate(cells)}
+        elif header and cells and cells[0] in METHODS:
+            rows[cells[0]] = (float(cells[header["evaluate and solve (µs)"]]),
+                              int(cells[header["operations"]]),
+                              [float(x) for x in cells[header["q''"]].split()])
     return rows
 
 
@@ -144,15 +148,26 @@ def chains_table():
 
 
 def timed(args):
-    """CPU seconds and peak MB of one run of the release binary."""
+    """CPU seconds and peak MB of one run of the release binary. The CPU time comes from
+    the kernel's accounting of the child (to the microsecond): /usr/bin/time rounds to
+    0.01 s, coarser than a 5-body chain's whole run."""
+    import resource
     binary = os.path.join(ROOT, "target/release/mbd-tutor")
-    err = run(["/usr/bin/time", "-f", "%U %S %M", binary, *args]).stderr.split()
-    return float(err[-3]) + float(err[-2]), float(err[-1]) / 1024
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    err = run(["/usr/bin/time", "-f", "%M", binary, *args]).stderr.split()
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return cpu, float(err[-1]) / 1024
 
 
 def median_of_3(args):
     runs = sorted(timed(args) for _ in range(3))
     return runs[1]
+
+
+def median_of_5(args):
+    runs = sorted(timed(args) for _ in range(5))
+    return runs[2]
 
 
 def bicycle():
@@ -173,13 +188,13 @@ def growth():
         with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
             json.dump(problem("spherical", n), f)
         for method in METHODS:
-            times[(n, method)] = median_of_3(["solve", f.name, "--method", method])
+            times[(n, method)] = median_of_5(["solve", f.name, "--method", method])
         os.unlink(f.name)
     print("\n| `solve`, spherical chain | " + " | ".join(METHODS) + " |")
     print("|---|" + "---|" * len(METHODS))
     for n in (5, 10, 20):
         print(f"| {n} bodies | " + " | ".join(
-            f"{times[(n, m)][0]:.2f} s, {times[(n, m)][1]:.0f} MB" for m in METHODS) + " |")
+            f"{times[(n, m)][0]:.3f} s, {times[(n, m)][1]:.0f} MB" for m in METHODS) + " |")
     print("| exponent 5 → 20 | " + " | ".join(
         f"{math.log(times[(20, m)][0] / times[(5, m)][0]) / math.log(4):.2f}"
         for m in METHODS) + " |")
