@@ -54,6 +54,12 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
         latex_unit_vector("B", 1),
         latex_unit_vector("B", 2),
     );
+    // Step 4 places each uniform rod's mass centre from its pin: halfway down the rod,
+    // along minus the rod's y axis (the rods hang along −y at zero angle).
+    let step4 = section(&text, "## Step 4", "## Step 5");
+    let a_y = latex_unit_vector("A", 1);
+    assert!(step4.contains(&format!("\\mathbf{{r}}^{{O A^*}} = -\\frac{{L_{{1}}}}{{2}} {a_y}")));
+    assert!(step4.contains(&format!("\\mathbf{{r}}^{{P B^*}} = -\\frac{{L_{{2}}}}{{2}} {b_y}")));
     // The table: one line per speed and body that moves with it, the speed on its first.
     let table: Vec<&str> = step5
         .lines()
@@ -203,6 +209,8 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
 #[test]
 fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
     let text = markdown("simple-pendulum.json");
+    // A bob has no central inertia: step 4 heads it as the particle it is.
+    assert!(section(&text, "## Step 4", "## Step 5").contains("**Particle "));
     let step5 = section(&text, "## Step 5", "## Step 6");
     assert!(
         step5.contains("u_{2} \\to T^{O}$"),

@@ -349,6 +349,11 @@ impl Plan {
 pub struct Kinematics {
     /// The body's name.
     pub body: String,
+    /// Whether it is a particle (no central inertia): headed so, not as a body.
+    pub particle: bool,
+    /// Its mass centre's place from the pin that holds it, e.g.
+    /// `\mathbf{r}^{O A^*} = -\frac{L}{2} \hat{\mathbf{a}}_{y}` (empty without one).
+    pub position_tex: Math,
     /// Its angular velocity in N, e.g. `{}^{N}\boldsymbol{\omega}^{A} = \dot{q}_{1} \hat{\mathbf{n}}_{z}`.
     pub omega_tex: Math,
     /// Its angular acceleration in N.

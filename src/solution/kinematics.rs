@@ -99,6 +99,12 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             };
             Kinematics {
                 body: name.to_string(),
+                particle: super::independent::is_particle(model, body),
+                position_tex: Math::from(if model.order.len() <= MOST_BODIES_PLACED {
+                    position_line(model, body)
+                } else {
+                    String::new()
+                }),
                 omega_tex: Math::from(omega_tex),
                 alpha_tex: Math::from(alpha_tex),
                 pin_velocity_tex: Math::from(pin_velocity_tex),
@@ -109,6 +115,42 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
         })
         .collect();
     (views, by_partials)
+}
+
+/// The most bodies whose mass centres step 4 places from their pins: a long chain's
+/// places are its links' lengths over again, and would add pages.
+const MOST_BODIES_PLACED: usize = 4;
+
+/// The mass centre's place from the pin that holds `body` (its joint to its parent at a
+/// point fixed in both), in the body's unit vectors, `\mathbf{r}^{O A^*} = -L \hat{…}_y`;
+/// empty when the body is held otherwise or its mass centre is at the pin.
+fn position_line(model: &Model, body: BodyId) -> String {
+    use crate::mechanics::sites::SiteKind;
+    use crate::mechanics::Vector;
+    use crate::problem::JointKind;
+    let Some(site) = model.sites.iter().find(|site| {
+        site.child == body
+            && matches!(site.kind, SiteKind::Joint(j) if matches!(
+                model.problem.joints[j].kind,
+                JointKind::Revolute | JointKind::Universal | JointKind::Spherical | JointKind::Weld
+            ))
+    }) else {
+        return String::new();
+    };
+    let centre = &model.bodies[body.0].center_offset;
+    let from_pin = Vector::new(
+        body,
+        std::array::from_fn(|k| simplify(&(&centre[k] - &site.child_offset[k]))),
+    );
+    if from_pin.is_zero() {
+        return String::new();
+    }
+    format!(
+        "\\mathbf{{r}}^{{{} {}^*}} = {}",
+        latex_name(&site.name),
+        latex_name(model.problem.body_name(body)),
+        super::tex::vector_tex(model, &from_pin)
+    )
 }
 
 /// The where list's entry for accelerations written by the partial velocities.
