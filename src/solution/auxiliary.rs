@@ -67,8 +67,11 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
             } else {
                 ", its partial angular velocities zero".to_string()
             };
+            let written = augmented_centres(derivation, &subtree, &format!("{u}\\, {d}"))
+                .map(|v| format!(" (${v}$)"))
+                .unwrap_or_default();
             format!(
-                "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before: the partial velocities of ${u}$ are ${partials} = {d}${angular}."
+                "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}${written} and its bodies turn as before: the partial velocities of ${u}$ are ${partials} = {d}${angular}."
             )
         }
         (ComponentKind::Moment, None) => {
@@ -104,6 +107,29 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     Some(format!(
         "{motion} Only ${unknown}$ and the other forces on ${bodies}$ from outside do work with them.{inside} The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe."
     ))
+}
+
+/// The mass centres' velocities of `bodies` with `gain` added, as step 4 writes them,
+/// `{}^{N}\mathbf{v}^{P_1^*} = L_1 \dot{q}_1 \hat{…}_x + u_3\, \hat{…}_y, …`; `None` when one
+/// would take more than a line.
+fn augmented_centres(derivation: &Derivation, bodies: &[BodyId], gain: &str) -> Option<String> {
+    let model = &derivation.model;
+    let mut written = Vec::new();
+    for &b in bodies {
+        let v = &model.bodies[b.0].center.velocity;
+        let name = latex_name(model.problem.body_name(b));
+        let text = if v.is_zero() {
+            format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {gain}")
+        } else {
+            let own = super::tex::shortest_tex(model, v, b);
+            format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {own} + {gain}")
+        };
+        if crate::render::math_width::printed_width(&text) as f64 > crate::render::line_break::LINE_SYMBOLS {
+            return None;
+        }
+        written.push(text);
+    }
+    Some(written.join(",\\; "))
 }
 
 /// The number of Kane's first auxiliary row (1-based) that brings in a reaction of the

@@ -291,7 +291,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
 /// The named quantities of steps 4 and 5 that the forces do not already define: each
 /// body's named acceleration parts and what the rows use.
 fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
-    let inertia = &derivation.inertia();
+    let inertia = derivation.inertia();
     let parts = inertia
         .acceleration
         .iter()

@@ -47,7 +47,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     let rates: Vec<Symbol> = problem.speed_symbols(1);
     let accelerations: Vec<Symbol> = problem.speed_symbols(2);
     let states = sample_states(model);
-    let inertia = &derivation.inertia();
+    let inertia = derivation.inertia();
     let per_body: Vec<_> = model
         .order
         .iter()

@@ -19,7 +19,7 @@ use crate::symbolic::{add, Expr};
 /// velocities (`Σ_r ᴺv_r q̈_r + ᴺã`), which the where list then defines.
 pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
     let model = &derivation.model;
-    let inertia = &derivation.inertia();
+    let inertia = derivation.inertia();
     // The shorter of the vector multiplied out and as the equations use it (named parts).
     let shorter = |expanded: &Vector, named: &Vector, body: BodyId| {
         let b = shortest_tex(model, named, body);

@@ -115,7 +115,7 @@ fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
     kane::equations(
         &derivation.model,
         &derivation.actions,
-        &derivation.inertia(),
+        derivation.inertia(),
         &accelerations,
         &[],
     )

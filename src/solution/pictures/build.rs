@@ -477,7 +477,7 @@ impl Setting<'_, '_, '_> {
         }
         let n = self.numbers;
         let model = &self.derivation.model;
-        let inertia = &self.derivation.inertia();
+        let inertia = self.derivation.inertia();
         let name = latex_name(self.problem().body_name(body));
         let at = n.vector(&model.bodies[body.0].center.position);
         let at_id = point_id(self.problem(), PointRef::MassCenter(body));
