@@ -6,9 +6,28 @@
 //! taken, so that it stays put as far as the motion lets it.
 
 use super::motion::{Motion, TITLE_STRIP};
-use super::motion_svg::Lines;
 use super::picture::P2;
 use super::place::{text_size, Box2, Obstacles};
+
+/// Everything of the motion drawn in lines besides the bodies, in the picture: what is
+/// written, and what the labels keep clear of.
+pub(super) struct Lines {
+    pub(super) floors: Vec<super::motion_marks::Floor>,
+    pub(super) ground: Ground,
+    /// Per spring, per frame: its zig-zag.
+    pub(super) springs: Vec<Vec<Vec<P2>>>,
+    /// Per damper, per frame: its pieces.
+    pub(super) dampers: Vec<Vec<Vec<Vec<P2>>>>,
+    /// Per coordinate's mark, per frame.
+    pub(super) marks: Vec<Vec<super::motion_marks::Drawn>>,
+}
+
+/// The fixed ground: each support's pieces (whether each closes), and each rolling
+/// contact's track.
+pub(super) struct Ground {
+    pub(super) supports: Vec<Vec<(Vec<P2>, bool)>>,
+    pub(super) tracks: Vec<Vec<P2>>,
+}
 
 /// Each label's centre per frame: the marks' labels, then the points' captions (`None`
 /// for a point without one).

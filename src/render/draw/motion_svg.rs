@@ -2,6 +2,7 @@
 //! `<animateTransform>`), looping, no script.
 
 use super::motion::{Motion, TITLE_STRIP};
+use super::motion_labels::{Ground, Lines};
 use super::motion_timing::{color, fine, num, polyline, Timing};
 use super::picture::{Ink, P2};
 use super::strokes::in_lane;
@@ -68,26 +69,6 @@ pub fn export(motion: &Motion) -> String {
     points(&mut out, motion, &timing, &labels.captions);
     out.push_str("</svg>\n");
     out
-}
-
-/// Everything of the motion drawn in lines besides the bodies, in the picture: what is
-/// written, and what the labels keep clear of.
-pub(super) struct Lines {
-    pub(super) floors: Vec<super::motion_marks::Floor>,
-    pub(super) ground: Ground,
-    /// Per spring, per frame: its zig-zag.
-    pub(super) springs: Vec<Vec<Vec<P2>>>,
-    /// Per damper, per frame: its pieces.
-    pub(super) dampers: Vec<Vec<Vec<Vec<P2>>>>,
-    /// Per coordinate's mark, per frame.
-    pub(super) marks: Vec<Vec<super::motion_marks::Drawn>>,
-}
-
-/// The fixed ground: each support's pieces (whether each closes), and each rolling
-/// contact's track.
-pub(super) struct Ground {
-    pub(super) supports: Vec<Vec<(Vec<P2>, bool)>>,
-    pub(super) tracks: Vec<Vec<P2>>,
 }
 
 /// Supports under the joints on `N`, and the track of each rolling contact.
