@@ -186,6 +186,12 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
     assert!(row3.contains(&format!(
         "the joint $O$ is let give way with speed $u_{{3}}$ along ${n_x}$"
     )));
+    // The augmented velocity written out: A's centre, half a rod from O, moves at
+    // (L₁/2) q̇₁ â_x by step 4, plus the give-way u₃ n̂_x.
+    let a_x = latex_unit_vector("A", 0);
+    assert!(row3.contains(&format!(
+        "{{}}^{{N}}\\mathbf{{v}}^{{A^*}} = \\frac{{L_{{1}} \\dot{{q}}_{{1}}}}{{2}} {a_x} + u_{{3}}\\, {n_x}"
+    )));
     assert!(row3.contains(&format!(
         "$\\mathbf{{v}}^{{A^*}}_{{3}} = \\mathbf{{v}}^{{B^*}}_{{3}} = {n_x}$, its partial angular velocities zero"
     )));

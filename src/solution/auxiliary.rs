@@ -68,10 +68,10 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
                 ", its partial angular velocities zero".to_string()
             };
             let written = augmented_centres(derivation, &subtree, &format!("{u}\\, {d}"))
-                .map(|v| format!(" (${v}$)"))
-                .unwrap_or_default();
+                .map(|v| format!(": ${v}$. The"))
+                .unwrap_or_else(|| ": the".to_string());
             format!(
-                "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}${written} and its bodies turn as before: the partial velocities of ${u}$ are ${partials} = {d}${angular}."
+                "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before{written} partial velocities of ${u}$ are ${partials} = {d}${angular}."
             )
         }
         (ComponentKind::Moment, None) => {
