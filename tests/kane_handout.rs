@@ -58,8 +58,12 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
     // along minus the rod's y axis (the rods hang along −y at zero angle).
     let step4 = section(&text, "## Step 4", "## Step 5");
     let a_y = latex_unit_vector("A", 1);
-    assert!(step4.contains(&format!("\\mathbf{{r}}^{{O A^*}} = -\\frac{{L_{{1}}}}{{2}} {a_y}")));
-    assert!(step4.contains(&format!("\\mathbf{{r}}^{{P B^*}} = -\\frac{{L_{{2}}}}{{2}} {b_y}")));
+    assert!(step4.contains(&format!(
+        "\\mathbf{{r}}^{{O A^*}} = -\\frac{{L_{{1}}}}{{2}} {a_y}"
+    )));
+    assert!(step4.contains(&format!(
+        "\\mathbf{{r}}^{{P B^*}} = -\\frac{{L_{{2}}}}{{2}} {b_y}"
+    )));
     // The table: one line per speed and body that moves with it, the speed on its first.
     let table: Vec<&str> = step5
         .lines()
@@ -237,4 +241,26 @@ fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
         (value - tension).abs() < 1e-5 * tension,
         "{value} against {tension}"
     );
+}
+
+/// The double pendulum of particles as Kane and Levinson augment it: letting O give way
+/// along rod 1 adds u₃ p̂₁ᵧ to every point of both bobs, so by hand
+/// ᴺv^{P1} = L₁ q̇₁ p̂₁ₓ + u₃ p̂₁ᵧ and ᴺv^{P2} = ᴺv^{P1} + L₂ q̇₂ p̂₂ₓ; letting Q give way
+/// along rod 2 moves the second bob alone, ᴺv^{P2} = ᴺv^{P1} + L₂ q̇₂ p̂₂ₓ + u₄ p̂₂ᵧ.
+/// Each row then gives its rod's tension.
+#[test]
+fn the_particles_augmented_velocities_are_written_as_equations() {
+    let text = markdown("validation/double-pendulum-particles-absolute.json");
+    let (p1x, p1y) = (latex_unit_vector("P1", 0), latex_unit_vector("P1", 1));
+    let (p2x, p2y) = (latex_unit_vector("P2", 0), latex_unit_vector("P2", 1));
+    let (v1, v2) = ("{}^{N}\\mathbf{v}^{P_{1}^*}", "{}^{N}\\mathbf{v}^{P_{2}^*}");
+    let row3 = section(&text, "**3. ", "**4. ");
+    assert!(row3.contains(&format!(
+        "{v1} = L_{{1}} \\dot{{q}}_{{1}} {p1x} + u_{{3}}\\, {p1y},\\; {v2} = {v1} + L_{{2}} \\dot{{q}}_{{2}} {p2x}$"
+    )));
+    assert!(row3.contains("Solved for its reaction"));
+    let row4 = section(&text, "**4. ", "In matrix form");
+    assert!(row4.contains(&format!(
+        "{v2} = {v1} + L_{{2}} \\dot{{q}}_{{2}} {p2x} + u_{{4}}\\, {p2y}$"
+    )));
 }

@@ -189,21 +189,21 @@ impl Compiled {
             }
         } else {
             Lazy::compiled(match &derivation.composite_system {
-            None => compile(formed),
-            Some(composite) => {
-                let by_composite = compile(composite);
-                if by_composite.operation_count() < SMALL_PROGRAM {
-                    let as_formed = compile(formed);
-                    if as_formed.operation_count() < by_composite.operation_count() {
-                        as_formed
+                None => compile(formed),
+                Some(composite) => {
+                    let by_composite = compile(composite);
+                    if by_composite.operation_count() < SMALL_PROGRAM {
+                        let as_formed = compile(formed);
+                        if as_formed.operation_count() < by_composite.operation_count() {
+                            as_formed
+                        } else {
+                            by_composite
+                        }
                     } else {
                         by_composite
                     }
-                } else {
-                    by_composite
                 }
-            }
-        })
+            })
         };
         // The energies are a program of their own: they are not part of A and b.
         let energy = Lazy {
@@ -409,7 +409,9 @@ impl Compiled {
         let inputs = self.inputs(t, q, rates);
         let mut scratch = self.scratch.take();
         let mut values = vec![0.0; self.outputs];
-        self.program.program().run(&inputs, &mut scratch, &mut values);
+        self.program
+            .program()
+            .run(&inputs, &mut scratch, &mut values);
         self.scratch.replace(scratch);
         let n = self.unknowns;
         let state = || describe_state(t, &self.coordinates, q, rates);

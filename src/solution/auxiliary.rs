@@ -110,21 +110,34 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
 }
 
 /// The mass centres' velocities of `bodies` with `gain` added, as step 4 writes them,
-/// `{}^{N}\mathbf{v}^{P_1^*} = L_1 \dot{q}_1 \hat{…}_x + u_3\, \hat{…}_y, …`; `None` when one
-/// would take more than a line.
+/// `{}^{N}\mathbf{v}^{P_1^*} = L_1 \dot{q}_1 \hat{…}_x + u_3\, \hat{…}_y`, and a bob's
+/// chained from the centre before it as step 4 chains it; `None` when one would take more
+/// than a line.
 fn augmented_centres(derivation: &Derivation, bodies: &[BodyId], gain: &str) -> Option<String> {
     let model = &derivation.model;
     let mut written = Vec::new();
     for &b in bodies {
         let v = &model.bodies[b.0].center.velocity;
         let name = latex_name(model.problem.body_name(b));
-        let text = if v.is_zero() {
+        // Chained from its parent's centre as step 4 writes it: from a centre written
+        // before it, which has the give-way already, or from one that does not move with it.
+        let text = if let Some((parent, chained)) =
+            super::kinematics::velocity_from_parent_centre(model, b)
+        {
+            if bodies.contains(&parent) {
+                format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {chained}")
+            } else {
+                format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {chained} + {gain}")
+            }
+        } else if v.is_zero() {
             format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {gain}")
         } else {
             let own = super::tex::shortest_tex(model, v, b);
             format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {own} + {gain}")
         };
-        if crate::render::math_width::printed_width(&text) as f64 > crate::render::line_break::LINE_SYMBOLS {
+        if crate::render::math_width::printed_width(&text) as f64
+            > crate::render::line_break::LINE_SYMBOLS
+        {
             return None;
         }
         written.push(text);

@@ -312,6 +312,23 @@ fn plus_difference(model: &Model, reference: String, difference: &Vector) -> Str
     text
 }
 
+/// The mass centre's velocity of `body` as step 4 chains it from a pin at its parent's
+/// mass centre (a bob's), `{}^{N}\mathbf{v}^{A^*} + L_2 \dot{q}_2 \hat{…}_x`, with the
+/// parent's name; `None` for a body held otherwise.
+pub(super) fn velocity_from_parent_centre(model: &Model, body: BodyId) -> Option<(BodyId, String)> {
+    let site = pin_of(model, body)?;
+    if !at_parent_centre(model, site) {
+        return None;
+    }
+    let relative =
+        model.bodies[body.0]
+            .center
+            .velocity
+            .minus(&pin_motion(model, site, Motion::Velocity));
+    let text = plus_difference(model, pin_symbol(model, site, Motion::Velocity), &relative);
+    Some((model.sites[site].parent, text))
+}
+
 /// The joint that holds `body` to a moving parent at a moving point fixed in both (a pin: a
 /// revolute, universal, spherical joint or a weld), as an index of `Model::sites`. Step 4
 /// goes through it as a textbook does: the pin's velocity first, then the mass centre's

@@ -45,7 +45,13 @@ fn problems() -> Vec<PathBuf> {
 /// Draws `problem` into `dir` and returns the page holding its pictures.
 fn page(problem: &Path, dir: &Path) -> String {
     let p = problem.to_string_lossy().into_owned();
-    let out = run(&["draw", p.as_str(), "--animate", "-o", &dir.to_string_lossy()]);
+    let out = run(&[
+        "draw",
+        p.as_str(),
+        "--animate",
+        "-o",
+        &dir.to_string_lossy(),
+    ]);
     assert!(
         out.status.success(),
         "{p}: {}",

@@ -321,10 +321,7 @@ mod tests {
             to: [x, 0.0, 0.0],
             along: [1.0, 0.0, 0.0],
         };
-        let (plus, minus) = (
-            drawn(&p, &at(0.5)),
-            drawn(&p, &at(-0.5)),
-        );
+        let (plus, minus) = (drawn(&p, &at(0.5)), drawn(&p, &at(-0.5)));
         assert_eq!(plus.line[0][1], minus.line[0][1]);
         assert_eq!(plus.anchor[1], minus.anchor[1]);
         assert_eq!(plus.toward, minus.toward);

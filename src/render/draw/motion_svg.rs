@@ -312,7 +312,10 @@ fn points(out: &mut String, motion: &Motion, timing: &Timing, captions: &[Option
         let (class, fill) = if *center {
             ("label", String::new())
         } else {
-            ("label coordinate", format!(" fill=\"{}\"", color(Ink::Grey)))
+            (
+                "label coordinate",
+                format!(" fill=\"{}\"", color(Ink::Grey)),
+            )
         };
         let _ = writeln!(
             out,
