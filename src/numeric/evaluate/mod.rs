@@ -1,18 +1,16 @@
 //! Evaluating a derivation at a state: the compiled program for `A`, `b`, the reaction
-//! directions and the energies, then the linear solve (see [`super::linear`]).
+//! directions and the energies (compiled in [`build`]), then the linear solve (see
+//! [`super::linear`]).
 
-use super::inputs::input_symbols;
+mod build;
+
 use super::linear::solve_linear_owned;
 use super::recursive::Recursive;
 use super::speeds::SpeedProgram;
 use super::system::{describe_state, Evaluation, ReactionColumn, System};
 use super::SolveError;
-use crate::equations::composite::SMALL_PROGRAM;
-use crate::equations::{energy, Derivation, Method};
-use crate::mechanics::joints::ComponentKind;
-use crate::problem::LoadKind;
-use crate::symbolic::compile::Program;
-use crate::symbolic::{Expr, Symbol};
+use crate::equations::Method;
+use build::Lazy;
 use nalgebra::{DMatrix, DVector};
 
 /// Where one reaction component sits: its unknown's index and its direction's outputs.
@@ -92,204 +90,7 @@ pub struct StateSolution {
     pub friction: Vec<super::friction::SiteState>,
 }
 
-/// A program compiled on its first run.
-#[derive(Clone, Debug)]
-struct Lazy {
-    inputs: Vec<Symbol>,
-    outputs: Vec<Expr>,
-    program: std::cell::OnceCell<Program>,
-}
-
-impl Lazy {
-    fn program(&self) -> &Program {
-        self.program
-            .get_or_init(|| Program::compile(&self.inputs, &self.outputs))
-    }
-
-    /// Compiled already.
-    fn compiled(program: Program) -> Lazy {
-        Lazy {
-            inputs: Vec::new(),
-            outputs: Vec::new(),
-            program: std::cell::OnceCell::from(program),
-        }
-    }
-}
-
 impl Compiled {
-    /// Compiles the system, the requested reactions and the energies of a derivation: the
-    /// system by composite bodies where the derivation has it, unless it is small and the
-    /// rows as formed compile shorter (see [`SMALL_PROGRAM`]).
-    pub fn new(derivation: &Derivation) -> Compiled {
-        Compiled::build(derivation, false)
-    }
-
-    /// As [`Compiled::new`]; with `recursive_if_faster`, the q'' by the articulated-body
-    /// algorithm where it applies and is the faster ([`Compiled::fastest`]), and then the
-    /// dense program, only a fallback, compiled when first run.
-    fn build(derivation: &Derivation, recursive_if_faster: bool) -> Compiled {
-        let model = &derivation.model;
-        let problem = model.problem;
-        let formed = &derivation.system;
-        let n = formed.unknowns.len();
-        // The reaction directions come after A and b, whichever system gives those.
-        let mut directions: Vec<Expr> = Vec::new();
-        let mut reactions = Vec::new();
-        for &j in &problem.find_reactions {
-            let joint = &model.sites[j];
-            let mut components = Vec::new();
-            for component in &joint.reactions {
-                let symbol = component.unknown(&joint.name);
-                let direction = component
-                    .direction
-                    .components_in(joint.parent, &model.frames);
-                components.push(ReactionComponentSlot {
-                    is_force: component.kind == ComponentKind::Force,
-                    unknown: formed.unknowns.iter().position(|u| *u == symbol),
-                    direction_output: n * n + n + directions.len(),
-                });
-                directions.extend(direction);
-            }
-            reactions.push(ReactionSlot {
-                joint: joint.name.clone(),
-                components,
-            });
-        }
-        let inputs = input_symbols(problem);
-        let outputs_of = |system: &crate::equations::LinearSystem| {
-            let mut outputs: Vec<Expr> = system.a.iter().flatten().cloned().collect();
-            outputs.extend(system.b.iter().cloned());
-            outputs.extend(directions.iter().cloned());
-            outputs
-        };
-        let compile = |system: &crate::equations::LinearSystem| {
-            Program::compile(&inputs, &outputs_of(system))
-        };
-        let assembly = super::assemble::Assembly::new(model);
-        let speeds = SpeedProgram::new(problem);
-        let friction = super::friction::Friction::new(derivation, &inputs);
-        // The articulated-body algorithm takes a tree of joints, bodies, gravity and loads:
-        // no reactions asked, drives, friction, declared speeds or constraints.
-        let plain = reactions.is_empty()
-            && model.constraints.prescribed.is_empty()
-            && friction.is_none()
-            && speeds.is_none()
-            && assembly.is_none();
-        let recursive = (recursive_if_faster
-            && plain
-            && super::recursive::is_faster(problem.coordinates.len(), model.is_planar()))
-        .then(|| super::recursive::Recursive::new(derivation))
-        .flatten();
-        let program = if recursive.is_some() {
-            let system = derivation.composite_system.as_ref().unwrap_or(formed);
-            Lazy {
-                inputs: inputs.clone(),
-                outputs: outputs_of(system),
-                program: std::cell::OnceCell::new(),
-            }
-        } else {
-            Lazy::compiled(match &derivation.composite_system {
-                None => compile(formed),
-                Some(composite) => {
-                    let by_composite = compile(composite);
-                    if by_composite.operation_count() < SMALL_PROGRAM {
-                        let as_formed = compile(formed);
-                        if as_formed.operation_count() < by_composite.operation_count() {
-                            as_formed
-                        } else {
-                            by_composite
-                        }
-                    } else {
-                        by_composite
-                    }
-                }
-            })
-        };
-        // The energies are a program of their own: they are not part of A and b.
-        let energy = Lazy {
-            inputs,
-            outputs: vec![energy::kinetic(model), energy::potential(model)],
-            program: std::cell::OnceCell::new(),
-        };
-        let drives = model
-            .constraints
-            .prescribed
-            .iter()
-            .map(|&p| {
-                let name = problem.coordinates[p].name.clone();
-                let symbol = crate::mechanics::constraints::drive_symbol(problem, p);
-                (name, formed.unknowns.iter().position(|u| *u == symbol))
-            })
-            .collect();
-        // Drives, and constraints that change with time, do work: a prescribed `w*t` has
-        // the rate row `q' - w`, free of t, so the position row and the origin are asked too.
-        let time = crate::symbolic::Symbol::Time;
-        let drives_work = model.constraints.rows.iter().any(|r| {
-            matches!(
-                r.origin,
-                crate::mechanics::constraints::RowOrigin::Prescribed(_)
-            ) || r.velocity.contains(&time)
-                || r.position.as_ref().is_some_and(|p| p.contains(&time))
-        });
-        Compiled {
-            recursive,
-            friction,
-            assembly,
-            drives,
-            method: derivation.method,
-            coordinates: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
-            massless: (0..problem.coordinates.len())
-                .map(|i| {
-                    crate::mechanics::massless::massless_body_moved_by(model, i)
-                        .map(|b| problem.body_name(b).to_string())
-                })
-                .collect(),
-            constants: problem.constants.iter().map(|c| c.value).collect(),
-            unknowns: n,
-            program,
-            reactions,
-            energy,
-            outputs: n * n + n + directions.len(),
-            scratch: std::cell::RefCell::new(Vec::new()),
-            speeds,
-            conservative: !drives_work
-                && model.constraints.friction.is_empty()
-                && problem.loads.iter().all(|l| is_conservative(&l.kind)),
-            dissipative_only: !drives_work
-                && problem
-                    .loads
-                    .iter()
-                    .all(|l| is_conservative(&l.kind) || is_dissipative(&l.kind)),
-        }
-    }
-
-    /// As [`Compiled::new`], with the q'' by the articulated-body algorithm where it
-    /// applies and is the faster: an unconstrained tree of joints, bodies, gravity and
-    /// loads, no reactions asked, with as many coordinates as make it the faster
-    /// ([`super::recursive::is_faster`]). The numbers of `solve` and `simulate`; the confirmation
-    /// checks compile each method's own rows with [`Compiled::new`].
-    pub fn fastest(derivation: &Derivation) -> Compiled {
-        Compiled::build(derivation, true)
-    }
-
-    /// As [`Compiled::new`], with the q'' by the articulated-body algorithm wherever it
-    /// applies, whatever the number of coordinates: the benchmarks time both forms with it.
-    pub fn recursive(derivation: &Derivation) -> Compiled {
-        Compiled::new(derivation).with_recursive(derivation)
-    }
-
-    fn with_recursive(mut self, derivation: &Derivation) -> Compiled {
-        let plain = self.reactions.is_empty()
-            && self.drives.is_empty()
-            && self.friction.is_none()
-            && self.speeds.is_none()
-            && self.assembly.is_none();
-        if plain {
-            self.recursive = Recursive::new(derivation);
-        }
-        self
-    }
-
     /// The operations of one evaluation of the loads' generalized forces where the q'' come
     /// from the articulated-body algorithm (zero without loads); `None` where they do not.
     pub fn load_operation_count(&self) -> Option<usize> {
@@ -528,16 +329,6 @@ impl Compiled {
         (0..self.coordinates.len().min(null.len()))
             .find(|&i| self.massless[i].is_some() && null[i].abs() > 1e-6 * size)
     }
-}
-
-/// Whether a load keeps the total (kinetic + potential) energy constant: springs do, since
-/// their energy is in the potential; applied forces, torques and actuators do work.
-fn is_conservative(kind: &LoadKind) -> bool {
-    matches!(kind, LoadKind::Spring { .. } | LoadKind::JointSpring { .. })
-}
-
-fn is_dissipative(kind: &LoadKind) -> bool {
-    matches!(kind, LoadKind::Damper { .. } | LoadKind::JointDamper { .. })
 }
 
 impl System for Compiled {
