@@ -280,6 +280,7 @@ fn kinematics() -> Vec<Kinematics> {
         Kinematics {
             body: s("A"),
             particle: false,
+            light: false,
             position_tex: Math::from(format!("\\mathbf{{r}}^{{O A^{{*}}}} = -\\frac{{L}}{{2}} {A}_{{y}}")),
             omega_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{A}} = \\dot{{q}}_{{1}} {N}_{{z}}")),
             alpha_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{A}} = \\ddot{{q}}_{{1}} {N}_{{z}}")),
@@ -293,6 +294,7 @@ fn kinematics() -> Vec<Kinematics> {
         Kinematics {
             body: s("B"),
             particle: false,
+            light: false,
             position_tex: Math::from(format!("\\mathbf{{r}}^{{P B^{{*}}}} = -\\frac{{L}}{{2}} {B}_{{y}}")),
             omega_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{B}} = {rates} {N}_{{z}}")),
             alpha_tex: Math::from(format!("{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{B}} = {accelerations} {N}_{{z}}")),

@@ -69,16 +69,23 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                     by_partials = true;
                 }
             }
-            let (omega_tex, alpha_tex) = one_line_if_short(
-                format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
-                    shorter(&state.omega, &state.omega_named, body)
-                ),
-                format!(
-                    "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
-                    shorter(&state.alpha, &inertia.alpha[body.0], body)
-                ),
-            );
+            let light = crate::mechanics::massless::is_massless(model, body);
+            let particle = !light && super::independent::is_particle(model, body);
+            // A particle's turning carries no inertia: a textbook gives it no ω or α.
+            let (omega_tex, alpha_tex) = if particle {
+                (String::new(), String::new())
+            } else {
+                one_line_if_short(
+                    format!(
+                        "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}} = {}",
+                        shorter(&state.omega, &state.omega_named, body)
+                    ),
+                    format!(
+                        "{{}}^{{N}}\\boldsymbol{{\\alpha}}^{{{symbol}}} = {}",
+                        shorter(&state.alpha, &inertia.alpha[body.0], body)
+                    ),
+                )
+            };
             let velocity = match pin {
                 Some(site) => from_pin(model, body, site, Motion::Velocity, direct_velocity),
                 None => from_parent(model, body, Motion::Velocity, direct_velocity),
@@ -99,7 +106,8 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             };
             Kinematics {
                 body: name.to_string(),
-                particle: super::independent::is_particle(model, body),
+                particle,
+                light,
                 position_tex: Math::from(if model.order.len() <= MOST_BODIES_PLACED {
                     position_line(model, body)
                 } else {

@@ -326,8 +326,11 @@ impl Plan {
 pub struct Kinematics {
     /// The body's name.
     pub body: String,
-    /// Whether it is a particle (no central inertia): headed so, not as a body.
+    /// Whether it is a particle (mass, no central inertia): headed so, not as a body,
+    /// and given no angular velocity or acceleration.
     pub particle: bool,
+    /// Whether it is massless (a light link or slider): headed "Light body".
+    pub light: bool,
     /// Its mass centre's place from the pin that holds it, e.g.
     /// `\mathbf{r}^{O A^*} = -\frac{L}{2} \hat{\mathbf{a}}_{y}` (empty without one).
     pub position_tex: Math,
