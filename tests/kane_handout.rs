@@ -264,3 +264,85 @@ fn the_particles_augmented_velocities_are_written_as_equations() {
         "{v2} = {v1} + L_{{2}} \\dot{{q}}_{{2}} {p2x} + u_{{4}}\\, {p2y}$"
     )));
 }
+
+#[test]
+fn a_particle_has_no_angular_velocity_and_a_light_link_is_headed_so() {
+    // A particle's turning carries no inertia: step 4 gives its velocity and acceleration
+    // alone, as a textbook does for the bobs of a double pendulum.
+    let text = markdown("validation/double-pendulum-particles-absolute.json");
+    let step4 = section(&text, "## Step 4", "## Step 5");
+    assert!(step4.contains("**Particle P1**"), "{step4}");
+    assert!(!step4.contains("\\boldsymbol{\\omega}"), "{step4}");
+    assert!(!step4.contains("\\boldsymbol{\\alpha}"), "{step4}");
+    // The light connecting rod of a slider-crank is no particle: it turns, as the loop says.
+    let text = markdown("slider-crank-light-rod.json");
+    let step4 = section(&text, "## Step 4", "## Step 5");
+    assert!(step4.contains("**Light body B**"), "{step4}");
+    assert!(step4.contains(
+        "{}^{N}\\boldsymbol{\\omega}^{B} = \\left(\\dot{q}_{1} + \\dot{q}_{2}\\right) \\hat{\\mathbf{b}}_{z}"
+    ));
+}
+
+/// The four-bar's loop closed at the crank angle `q1`: (q2, q3) by Newton's method from
+/// the problem's guess, for a = 0.1, b = 0.3, c = 0.25, d = 0.3.
+fn four_bar_closed(q1: f64) -> (f64, f64) {
+    let (a, b, c, d) = (0.1, 0.3, 0.25, 0.3);
+    let (mut q2, mut q3) = (-0.65f64, 1.6f64);
+    for _ in 0..50 {
+        // a e(q1) + b e(q1 + q2) - c e(q3) - d n_x = 0, e(θ) = (cos θ, sin θ).
+        let f = [
+            a * q1.cos() + b * (q1 + q2).cos() - c * q3.cos() - d,
+            a * q1.sin() + b * (q1 + q2).sin() - c * q3.sin(),
+        ];
+        let j = [
+            [-b * (q1 + q2).sin(), c * q3.sin()],
+            [b * (q1 + q2).cos(), -c * q3.cos()],
+        ];
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        q2 -= (f[0] * j[1][1] - f[1] * j[0][1]) / det;
+        q3 -= (j[0][0] * f[1] - j[1][0] * f[0]) / det;
+    }
+    (q2, q3)
+}
+
+#[test]
+fn the_four_bars_dependent_rates_share_one_named_denominator() {
+    let text = markdown("four-bar.json");
+    // As a textbook writes it: Δ defined once, the dependent rates over it.
+    assert!(text.contains(
+        "- $\\Delta = a \\sin\\left(q_{1} - q_{3}\\right) + d s_{3}$: the common denominator of the dependent rates"
+    ));
+    assert!(text.contains("\\dot{q}_{2} &= -\\frac{d \\sin(q_{3})}{\\Delta} \\dot{q}_{1}"));
+    assert!(text.contains(
+        "\\dot{q}_{3} &= \\frac{a}{\\Delta} \\left(\\sin\\left(q_{1} - q_{3}\\right) + \\frac{d \\sin(q_{1})}{c}\\right) \\dot{q}_{1}"
+    ));
+    // By hand: the velocity loop a q1' e⊥(q1) + b (q1' + q2') e⊥(q1 + q2) = c q3' e⊥(q3),
+    // solved for q2' and q3' with q1' = 1 at a closed state, against the printed relation.
+    let (a, b, c, d) = (0.1, 0.3, 0.25, 0.3);
+    for q1 in [1.0f64, 1.2, 1.4] {
+        let (q2, q3) = four_bar_closed(q1);
+        let q12 = q1 + q2;
+        // [-b s12, c s3; b c12, -c c3] (q2', q3') = (a s1 + b s12, -a c1 - b c12)
+        let m = [
+            [-b * q12.sin(), c * q3.sin()],
+            [b * q12.cos(), -c * q3.cos()],
+        ];
+        let r = [a * q1.sin() + b * q12.sin(), -a * q1.cos() - b * q12.cos()];
+        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        let rate2 = (r[0] * m[1][1] - m[0][1] * r[1]) / det;
+        let rate3 = (m[0][0] * r[1] - m[1][0] * r[0]) / det;
+        let delta = a * (q1 - q3).sin() + d * q3.sin();
+        // On the motion Δ is the determinant of the loop's columns of q2', q3' over b c.
+        assert!((delta + b * (q12 - q3).sin()).abs() < 1e-9);
+        let printed2 = -d * q3.sin() / delta;
+        let printed3 = a / delta * ((q1 - q3).sin() + d * q1.sin() / c);
+        assert!(
+            (rate2 - printed2).abs() < 1e-9,
+            "q2' {rate2} against {printed2}"
+        );
+        assert!(
+            (rate3 - printed3).abs() < 1e-9,
+            "q3' {rate3} against {printed3}"
+        );
+    }
+}

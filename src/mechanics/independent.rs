@@ -162,7 +162,7 @@ impl DependentSpeeds {
                 })
                 .collect()
         };
-        let rest = (0..dependent.len())
+        let rest: Vec<Expr> = (0..dependent.len())
             .map(|s| {
                 simplify(&-add(beta
                     .iter()
@@ -170,7 +170,18 @@ impl DependentSpeeds {
                     .map(|(k, b)| &violation[s][k] * b)))
             })
             .collect();
-        let c = map(&independent);
+        let mut c = map(&independent);
+        let mut c_prescribed = map(&prescribed);
+        let (mut rest, mut violation) = (rest, violation);
+        // One name for the sum the dependent rates are divided by, as a textbook writes it.
+        let mut entries: Vec<&mut Expr> = c
+            .iter_mut()
+            .chain(c_prescribed.iter_mut())
+            .chain(violation.iter_mut())
+            .flatten()
+            .chain(rest.iter_mut())
+            .collect();
+        super::denominator::name_denominators(&mut entries);
         if c.iter()
             .flatten()
             .any(|e| e.operation_count_capped(LONGEST_ENTRY_OF_C) > LONGEST_ENTRY_OF_C)
@@ -180,7 +191,7 @@ impl DependentSpeeds {
         Ok(Some(DependentSpeeds {
             rest,
             c,
-            c_prescribed: map(&prescribed),
+            c_prescribed,
             independent,
             dependent,
             prescribed,

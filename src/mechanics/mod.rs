@@ -6,6 +6,7 @@ pub mod compact;
 pub mod components;
 pub mod constraint_rows;
 pub mod constraints;
+pub mod denominator;
 pub mod dependent;
 pub mod dot_sum;
 pub mod error;
