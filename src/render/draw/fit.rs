@@ -8,7 +8,7 @@ use super::scene::{Scene, Shape};
 
 /// The room around the system for arrows and labels.
 pub const MARGIN: f64 = 90.0;
-/// The largest extent of the system in the picture.
+/// The largest extent of the system in the picture, unless the scene asks for less.
 pub const CONTENT: f64 = 300.0;
 /// Room for the caption above.
 pub const TITLE: f64 = 26.0;
@@ -60,7 +60,7 @@ pub fn fit(scene: &Scene, view: View) -> (Projection, P2) {
     let rows = if scene.planar {
         planar_rows(scene.down)
     } else {
-        view.rows(false)
+        view.rows_up(scene.down.map(|g| [-g[0], -g[1], -g[2]]))
     };
     let mut points: Vec<P3> = scene.shapes.iter().flat_map(shape_points).collect();
     points.extend(scene.markers.iter().map(|m| m.at));
@@ -82,7 +82,7 @@ pub fn fit(scene: &Scene, view: View) -> (Projection, P2) {
     }
     let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
     let s = if extent > 1e-12 {
-        CONTENT / extent
+        scene.content / extent
     } else {
         100.0
     };

@@ -9,7 +9,8 @@ pub type P2 = [f64; 2];
 /// How a spatial system is viewed (planar ones are always drawn in their plane).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum View {
-    /// Looking along −(1, 1, 1) of `N`, `N.z` up.
+    /// Looking along −(1, 1, 1) of `N`, `N.z` up; with gravity, against it up (see
+    /// [`View::rows_up`]).
     Isometric,
     /// Looking along this direction of `N`; `N.z` up (or `N.y`, looking along `N.z`).
     Along(P3),
@@ -59,10 +60,34 @@ impl View {
         } else {
             [0.0, 0.0, 1.0]
         };
-        let right = unit(cross(look, up)).unwrap_or([1.0, 0.0, 0.0]);
-        let true_up = cross(right, look);
-        [right, [-true_up[0], -true_up[1], -true_up[2]]]
+        rows_looking(look, up)
     }
+
+    /// The rows for a spatial system with `up` (against gravity, where there is gravity) up
+    /// the page in the isometric view: it looks down on the system from between the two
+    /// other axes of `N`, as it does along −(1, 1, 1) when `N.z` is up, so that a bicycle
+    /// whose `N.z` points down stands on its wheels. A view along a direction is as asked.
+    pub fn rows_up(self, up: Option<P3>) -> [P3; 2] {
+        match (self, up.and_then(unit)) {
+            (View::Isometric, Some(u)) => {
+                let nearest = (0..3)
+                    .max_by(|&a, &b| u[a].abs().total_cmp(&u[b].abs()))
+                    .unwrap_or(2);
+                let mut look = [-u[0], -u[1], -u[2]];
+                look[(nearest + 1) % 3] -= 1.0;
+                look[(nearest + 2) % 3] -= 1.0;
+                rows_looking(unit(look).unwrap_or([-1.0, -1.0, -1.0]), u)
+            }
+            _ => self.rows(false),
+        }
+    }
+}
+
+/// The rows of a view along the unit `look` with `up` (not along it) up the page.
+fn rows_looking(look: P3, up: P3) -> [P3; 2] {
+    let right = unit(cross(look, up)).unwrap_or([1.0, 0.0, 0.0]);
+    let true_up = cross(right, look);
+    [right, [-true_up[0], -true_up[1], -true_up[2]]]
 }
 
 /// The affine map from `N` coordinates to picture coordinates.
@@ -284,4 +309,29 @@ pub struct Legend {
     pub lines: usize,
     /// The strip's height.
     pub height: f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{dot, View};
+
+    #[test]
+    fn gravity_points_down_the_page_in_the_isometric_view() {
+        for g in [
+            [0.0, 0.0, -1.0],
+            [0.0, 0.0, 1.0],
+            [0.0, -1.0, 0.0],
+            [1.0, 0.0, 0.0],
+        ] {
+            let rows = View::Isometric.rows_up(Some([-g[0], -g[1], -g[2]]));
+            // The picture's y points down: gravity along it, none of it across the page.
+            assert!(dot(rows[1], g) > 0.8, "{g:?}: {rows:?}");
+            assert!(dot(rows[0], g).abs() < 1e-12, "{g:?}: {rows:?}");
+        }
+        // With N.z up the view is the one it always was.
+        assert_eq!(
+            View::Isometric.rows_up(Some([0.0, 0.0, 1.0])),
+            View::Isometric.rows(false)
+        );
+    }
 }

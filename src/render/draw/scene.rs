@@ -297,10 +297,14 @@ pub struct Scene {
     pub arrows: Vec<Arrow>,
     /// The kinetic diagram drawn beside it: its shapes and arrows.
     pub kinetic: Option<(Vec<Shape>, Vec<Arrow>)>,
-    /// Gravity's direction in a planar picture, drawn straight down the page.
+    /// Gravity's direction: straight down the page in a planar picture, and down the
+    /// page in the isometric view of a spatial one.
     pub down: Option<P3>,
     /// A line under the picture saying how arrows are scaled.
     pub legend: String,
+    /// The largest extent of the system in the picture, in px ([`super::fit::CONTENT`]
+    /// unless the handout has many pictures of this kind to keep short).
+    pub content: f64,
 }
 
 #[cfg(test)]

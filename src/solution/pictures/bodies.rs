@@ -444,11 +444,9 @@ pub fn patch(points: &[P3], up: P3, pad: f64) -> [P3; 4] {
     ]
 }
 
-/// Gravity's direction in a planar problem, which the pictures draw down the page.
+/// Gravity's direction, which the pictures draw down the page (in 3D, in the isometric view).
 pub fn down(n: &Numbers) -> Option<P3> {
     let gravity = n.model.problem.gravity.as_ref()?;
     let g = n.local(&own_components(gravity, BodyId::GROUND));
-    (n.model.is_planar() && g.iter().all(|x| x.is_finite()))
-        .then(|| unit(g))
-        .flatten()
+    g.iter().all(|x| x.is_finite()).then(|| unit(g)).flatten()
 }

@@ -239,11 +239,13 @@ impl Setting<'_, '_, '_> {
             kinetic: None,
             down: super::bodies::down(self.numbers),
             legend: String::new(),
+            content: crate::render::draw::fit::CONTENT,
         }
     }
 
-    /// The free-body diagram of `set` with its kinetic diagram.
-    pub fn free_body(&self, set: &[BodyId], title: String) -> Scene {
+    /// The free-body diagram of `set` with its kinetic diagram, the system `content` px
+    /// across at most.
+    pub fn free_body(&self, set: &[BodyId], title: String, content: f64) -> Scene {
         let problem = self.problem();
         let mut shapes = Vec::new();
         for &b in set {
@@ -285,6 +287,7 @@ impl Setting<'_, '_, '_> {
             kinetic: Some((body_shapes, kinetic)),
             down: super::bodies::down(self.numbers),
             legend: FREE_BODY_LEGEND.into(),
+            content,
         }
     }
 

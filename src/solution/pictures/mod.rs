@@ -40,6 +40,21 @@ pub fn free_body_sets(derivation: &Derivation) -> Vec<Vec<BodyId>> {
     sets
 }
 
+/// How far across a free body is drawn: as the configuration for a few, smaller for a
+/// long chain's many, whose step 2 would otherwise take two pictures a page (the labels
+/// keep their size; only the bodies and their arrows' spacing shrink).
+fn free_body_content(free_bodies: usize) -> f64 {
+    /// The most free bodies drawn at the configuration's size.
+    const MOST_AT_FULL_SIZE: usize = 3;
+    /// A long chain's free body: a link about 4 cm long on the page.
+    const MANY: f64 = 170.0;
+    if free_bodies <= MOST_AT_FULL_SIZE {
+        crate::render::draw::fit::CONTENT
+    } else {
+        MANY
+    }
+}
+
 /// The plan table's name of a free body, e.g. `A + B`.
 pub fn free_body_name(problem: &crate::problem::Problem, set: &[BodyId]) -> String {
     set.iter()
@@ -141,10 +156,12 @@ pub fn draw(
         free_body: String::new(),
         picture: layout::lay_out(&scene, view),
     }];
-    for set in free_body_sets(derivation) {
+    let sets = free_body_sets(derivation);
+    let content = free_body_content(sets.len());
+    for set in sets {
         let name = free_body_name(problem, &set);
         let title = format!("Free body {name}");
-        let scene = setting.free_body(&set, title.clone());
+        let scene = setting.free_body(&set, title.clone(), content);
         out.push(Drawing {
             name: format!("fbd-{}", name.replace(' ', "")),
             title,
