@@ -111,9 +111,15 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
             .map(|(base, n)| pow(base.clone(), Expr::int(*n))),
     );
     // Each term divided factor by factor: a power of a sum taken out must meet its own
-    // power in the term, not be multiplied out first.
+    // power in the term, not be multiplied out first, so a sum taken out of denominators
+    // comes back as the sum itself, once per power (`pow` would expand (R − r)²).
     let mut inverse = vec![Expr::num(number.recip().unwrap_or(Number::ONE))];
-    inverse.extend(common.into_iter().map(|(base, n)| pow(base, Expr::int(-n))));
+    for (base, n) in common {
+        match base.node() {
+            Node::Add(_) if n < 0 => inverse.extend(std::iter::repeat_n(base, (-n) as usize)),
+            _ => inverse.push(pow(base, Expr::int(-n))),
+        }
+    }
     let common = mul(factors);
     let inner = add(terms
         .iter()
@@ -167,4 +173,21 @@ pub(super) fn square_root_of_sum(sum: &Expr) -> Option<Expr> {
         }));
         (mul([root.clone(), root.clone()]) == *sum).then_some(root)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sum_taken_out_of_the_denominators_leaves_the_numerators_as_they_were() {
+        let (x, y) = (Expr::coord("x", 0), Expr::coord("y", 0));
+        let (r, big) = (Expr::constant("r"), Expr::constant("R"));
+        let below = pow(add([big, -r.clone()]), Expr::int(-2));
+        let term = |q: &Expr| mul([r.clone(), pow(q.clone(), Expr::int(2)), below.clone()]);
+        let (common, inner) = pull_common_factor(&add([term(&x), term(&y)]));
+        assert_eq!(common, mul([r.clone(), below.clone()]));
+        // x² + y², not (R − r)² multiplied out over (R − r)².
+        assert_eq!(inner, add([pow(x, Expr::int(2)), pow(y, Expr::int(2))]));
+    }
 }
