@@ -2,7 +2,7 @@
 //! term after others: the pieces both ways of collecting a sum for display use.
 
 use super::build::{add, mul, pow};
-use super::expr::{Expr, Node};
+use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::{latex, latex_term};
 use std::ops::{Mul as _, Neg as _};
@@ -124,7 +124,45 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
     let inner = add(terms
         .iter()
         .map(|t| mul(std::iter::once(t.clone()).chain(inverse.iter().cloned()))));
-    (common, inner)
+    over_constant_denominator(common, inner)
+}
+
+/// The constants that some terms of `inner` divide by moved out with `common`, when a term
+/// of `inner` is a number and the sum left is then free of fractions and shorter:
+/// 1/y (R/r − 1) becomes 1/(r y) (R − r), as a textbook writes (R − r)/(r y). A sum that
+/// divides by anything else stays, and so does one without a number beside its fractions
+/// (r/σ (a + b/σ), a named divisor that only some terms have).
+fn over_constant_denominator(common: Expr, inner: Expr) -> (Expr, Expr) {
+    if !inner.terms().iter().any(|t| t.as_number().is_some()) {
+        return (common, inner);
+    }
+    let mut below: Vec<(Expr, i64)> = Vec::new();
+    for f in inner.terms().iter().flat_map(Expr::factors) {
+        let (base, n) = base_and_exponent(f);
+        if n >= 0 {
+            continue;
+        }
+        if !matches!(base.node(), Node::Sym(Symbol::Const(_))) {
+            return (common, inner);
+        }
+        match below.iter_mut().find(|(b, _)| *b == base) {
+            Some((_, k)) => *k = (*k).max(-n),
+            None => below.push((base, -n)),
+        }
+    }
+    if below.is_empty() || inner.terms().len() < 2 {
+        return (common, inner);
+    }
+    let denominator = mul(below.into_iter().map(|(b, k)| pow(b, Expr::int(k))));
+    let cleared = mul([inner.clone(), denominator.clone()]);
+    let fractions = cleared.terms().iter().any(|t| {
+        let (c, rest) = t.split_coefficient();
+        c.as_integer().is_none() || rest.factors().iter().any(|f| base_and_exponent(f).1 < 0)
+    });
+    if fractions || cleared.operation_count() >= inner.operation_count() {
+        return (common, inner);
+    }
+    (mul([common, pow(denominator, Expr::int(-1))]), cleared)
 }
 
 pub(super) fn gcd(a: i64, b: i64) -> i64 {
@@ -189,5 +227,20 @@ mod tests {
         assert_eq!(common, mul([r.clone(), below.clone()]));
         // x² + y², not (R − r)² multiplied out over (R − r)².
         assert_eq!(inner, add([pow(x, Expr::int(2)), pow(y, Expr::int(2))]));
+    }
+
+    #[test]
+    fn a_number_beside_a_ratio_of_constants_goes_over_their_denominator() {
+        let y = Expr::coord("y", 0);
+        let (r, big) = (Expr::constant("r"), Expr::constant("R"));
+        let over_y = pow(y, Expr::int(-1));
+        // R/(r y) − 1/y = (1/(r y)) (R − r).
+        let sum = add([
+            mul([big.clone(), pow(r.clone(), Expr::int(-1)), over_y.clone()]),
+            -over_y.clone(),
+        ]);
+        let (common, inner) = pull_common_factor(&sum);
+        assert_eq!(common, mul([pow(r.clone(), Expr::int(-1)), over_y]));
+        assert_eq!(inner, add([big, -r]));
     }
 }
