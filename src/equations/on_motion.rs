@@ -3,11 +3,12 @@
 //! [`crate::mechanics::constraints::Constraints::relations`]). The rows are evaluated
 //! only there, so they give the same numbers, and read as a textbook writes them: Kane's
 //! row of a disc rolling inside a ring with `(3m/2) (R − r)² ẍ/y²`, not
-//! `m (1 + x²/y²) ẍ + (m/2) (R − r)² ẍ/y²`.
+//! `m (1 + x²/y²) ẍ + (m/2) (R − r)² ẍ/y²`, and its Euler equation with `r F`, not
+//! `r (x² + y²)/(R − r)² F`.
 
 use crate::mechanics::Model;
-use crate::plan::rows::Groups;
-use crate::symbolic::{add, simplify, Expr};
+use crate::plan::rows::{unknowns_in, Equation, Groups};
+use crate::symbolic::{add, simplify, Expr, Symbol};
 
 /// `e` simplified and rewritten with `model`'s relations, if that shortens it.
 fn reduced(model: &Model, e: &Expr) -> Option<Expr> {
@@ -36,4 +37,17 @@ pub(crate) fn groups(model: &Model, groups: Groups) -> Groups {
         (out.inertia_force, out.inertia_torque) = (inertia, Expr::zero());
     }
     out
+}
+
+/// A row's whole expression with the relations; its groups stay as formed, so the
+/// worked solution shows the relation used where the row is simplified.
+pub(crate) fn row(model: &Model, row: Equation, unknowns: &[Symbol]) -> Equation {
+    match reduced(model, &row.expression) {
+        Some(expression) => Equation {
+            unknowns: unknowns_in(&expression, unknowns),
+            expression,
+            ..row
+        },
+        None => row,
+    }
 }
