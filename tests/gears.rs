@@ -3,6 +3,14 @@
 //! worked by hand below.
 
 use crate::support::{assert_close, column, problem, run_json, simulate, solve_all, METHODS};
+use mbd_tutor::equations::rows::Sum;
+use mbd_tutor::equations::Method;
+use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::system::System;
+use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::problem::load_file;
+use mbd_tutor::symbolic::linear::linear_split;
+use mbd_tutor::symbolic::{add, mul, pow, Expr, Symbol};
 
 /// `problems/gear-pair-torque.json`.
 const RA: f64 = 0.05;
@@ -127,6 +135,99 @@ fn the_disc_inside_a_cylinder_oscillates_with_the_textbook_period() {
             .fold(0.0f64, f64::max);
         assert_close(largest, omega, 1e-7, 1.0, &format!("{method}: ω"));
     }
+}
+
+/// Kane's method with the disc's one independent speed x' (y' and θ' follow from the
+/// contact): one row for x', one auxiliary row for each of the contact's two requested force
+/// components, then the two constraint rows, and no other constraint force an unknown. The
+/// no-slip row reads r θ' (the line of centres is a unit vector on the motion), and with it
+/// θ' = (R − r)/(r y) x'.
+///
+/// By hand, with φ the angle of the line of centres from the bottom, x = (R − r) sin φ and
+/// y = −(R − r) cos φ, (3/2)(R − r) φ'' = −g sin φ; released at rest, x'' = (R − r) cos φ φ''.
+#[test]
+fn the_disc_inside_a_cylinder_has_kanes_rows_of_its_one_independent_speed() {
+    let path = problem("disc-in-cylinder");
+    let disc = load_file(&path).expect("valid");
+    let kane = derive_rows(&disc, Method::Kane).expect("derives");
+    assert!(kane.kept_forces.is_none(), "{:?}", kane.kept_forces);
+    let speeds = kane.dependent_speeds.as_ref().expect("independent speeds");
+    let index = |name: &str| {
+        disc.coordinates
+            .iter()
+            .position(|c| c.name == name)
+            .unwrap()
+    };
+    assert_eq!(speeds.independent, [index("x")]);
+    let rows: Vec<String> = kane
+        .rows
+        .iter()
+        .map(|row| match &row.sum {
+            Sum::Generalized { speed } => speed.clone(),
+            Sum::Constraint { name } => name.clone(),
+            other => panic!("not one of Kane's rows: {other:?}"),
+        })
+        .collect();
+    assert_eq!(
+        rows,
+        [
+            "x'",
+            "u(contact.Ft1)",
+            "u(contact.Fn)",
+            "contact.Ft1",
+            "contact.Fn"
+        ]
+    );
+    let x_dd = Symbol::Coord("x".into(), 2);
+    assert_eq!(kane.rows[0].unknowns, [x_dd], "x' row: no constraint force");
+    // r θ' in the no-slip row; θ' = (R − r)/(r y) x'.
+    let (r, big, y) = (
+        Expr::constant("r"),
+        Expr::constant("R"),
+        Expr::coord("y", 0),
+    );
+    let slip = &kane.model.constraints.rows[0];
+    let rates: Vec<Symbol> = ["x", "y", "theta"]
+        .map(|q| Symbol::Coord(q.into(), 1))
+        .to_vec();
+    let (coefficients, _) = linear_split(&slip.velocity, &rates).expect("linear");
+    assert_eq!(coefficients[2], r, "no-slip row: {}", slip.velocity);
+    let spin = speeds
+        .dependent
+        .iter()
+        .position(|&d| d == index("theta"))
+        .unwrap();
+    let expected = mul([
+        add([big, -r.clone()]),
+        pow(r, Expr::int(-1)),
+        pow(y, Expr::int(-1)),
+    ]);
+    assert_eq!(speeds.c[spin][0], expected);
+    // x'' at the initial state, released at rest.
+    let compiled = Compiled::new(&kane);
+    let mut q: Vec<f64> = disc.coordinates.iter().map(|c| c.initial).collect();
+    let mut rates = vec![0.0; q.len()];
+    compiled
+        .assemble(0.0, &mut q, &mut rates)
+        .expect("assembles");
+    let arm = R_CYL - R_DISC;
+    assert_close(
+        q[index("y")],
+        -(arm * arm - 0.05f64.powi(2)).sqrt(),
+        1e-12,
+        1.0,
+        "y",
+    );
+    let phi = (0.05 / arm).asin();
+    let phi_dd = -G * phi.sin() / (1.5 * arm);
+    let ours = compiled.solve(0.0, &q, &rates).expect("solves");
+    assert_close(
+        ours.accelerations[index("x")],
+        arm * phi.cos() * phi_dd,
+        1e-12,
+        1.0,
+        "x''",
+    );
 }
 
 /// `problems/rack-and-pinion.json`: the pinion's pitch circle rolls on the moving rack,

@@ -7,6 +7,7 @@ pub mod energy;
 pub mod friction;
 pub mod kane;
 pub mod newton_euler;
+mod on_motion;
 /// The rows of equations, which the planner writes out in step 3 (see [`crate::plan::rows`]).
 pub use crate::plan::rows;
 pub mod system;

@@ -422,6 +422,12 @@ fn finish<'p>(
             .collect(),
         None => rows,
     };
+    // Written with what holds on the motion (a gear's unit line of centres), where the
+    // rows are evaluated.
+    let rows: Vec<Equation> = rows
+        .into_iter()
+        .map(|row| super::on_motion::row(&model, row, &unknowns))
+        .collect();
     if rows.len() != unknowns.len() {
         let mut message = format!(
             "{} found {} independent equations for {} unknowns",

@@ -6,6 +6,7 @@ use super::error::MechanicsError;
 use crate::problem::{CoordinateKind, Problem};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::print::latex_name;
+use crate::symbolic::relation::Relation;
 use crate::symbolic::{Expr, Symbol, Unknown};
 
 /// What imposes a constraint row.
@@ -84,6 +85,10 @@ pub struct Constraints {
     /// Each rolling contact's name and the sine of the angle between its axle and the
     /// plane's normal, which must not vanish.
     pub tilts: Vec<(String, Expr)>,
+    /// Each contact whose rows are written with a relation that holds on the motion (a
+    /// gear's unit line of centres has unit length there), with the relation; the
+    /// dependent speeds and Kane's rows are written with it too.
+    pub relations: Vec<(String, Relation)>,
 }
 
 impl Constraints {

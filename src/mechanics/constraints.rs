@@ -18,7 +18,7 @@ use crate::problem::{BodyId, ConstraintKind, JointKind};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{simplify, Expr, Symbol};
 
 fn unit(axis: usize) -> Components {
     let mut c = zero3();
@@ -38,6 +38,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let mut rows = Vec::new();
     let mut dropped = Vec::new();
     let mut tilts = Vec::new();
+    let mut relations = Vec::new();
     let mut friction: Vec<FrictionSite> = Vec::new();
     for (j, site) in sites.iter().enumerate() {
         friction.extend(super::friction::joint_site(model, j, site)?);
@@ -100,6 +101,15 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                         )
                     });
                 }
+                // Written with what holds where the contact does (a unit line of centres):
+                // equal on the motion, where the rows are used.
+                let written = |row: Expr| match &contact.on_motion {
+                    Some(relation) => relation.reduce(&simplify(&row)),
+                    None => row,
+                };
+                if let Some(relation) = &contact.on_motion {
+                    relations.push((site.name.clone(), relation.clone()));
+                }
                 let mut site_rows = Vec::new();
                 for (component, reaction) in site.reactions.iter().enumerate() {
                     let is_normal = !keeps_height && component + 1 == site.reactions.len();
@@ -110,7 +120,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                         },
                         name: format!("{}.{}", site.name, reaction.component()),
                         position: is_normal.then(|| contact.height.clone()),
-                        velocity: velocity.dot(&reaction.direction, &model.frames),
+                        velocity: written(velocity.dot(&reaction.direction, &model.frames)),
                         unknown: reaction.unknown(&site.name),
                         loop_acceleration: None,
                     });
@@ -189,6 +199,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
         dropped,
         prescribed,
         tilts,
+        relations,
         ..Constraints::default()
     };
     super::dependent::choose(model, &mut constraints, &values)?;

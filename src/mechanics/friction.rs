@@ -69,6 +69,7 @@ pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), Me
         normal: n_vec,
         tangents,
         tilt: Expr::one(),
+        on_motion: None,
     };
     Ok(contact_site_of(
         model,

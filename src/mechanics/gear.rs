@@ -11,7 +11,8 @@ use super::site::{Contact, Site};
 use super::sites::{contact_site_of, offset_on, unit_direction};
 use super::vector::{dot3, zero3, Components, Vector};
 use crate::problem::{BodyId, ConstraintKind};
-use crate::symbolic::{pow, sqrt, Expr};
+use crate::symbolic::relation::Relation;
+use crate::symbolic::{pow, simplify, sqrt, Expr};
 
 /// The site of gear contact `k` and its geometry (the "height" is the distance between the
 /// centres minus what the radii allow; the "normal" the unit line of centres, from `on`'s
@@ -77,6 +78,11 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     let sign = if *internal { Expr::one() } else { -Expr::one() };
     let offset: Components =
         std::array::from_fn(|i| &body_center[i] + &(&(&sign * radius) * &line_in_body[i]));
+    // Where the distance row holds, the line of centres is a unit vector: the rows are
+    // written with that, as a textbook writes them. Where the joints keep the distance, the
+    // squared length is the constant it should be already.
+    let square = simplify(&dot3(&between, &between));
+    let on_motion = (!square.is_constant()).then(|| Relation::new(square, allowed.clone()));
     let gap = &distance - &allowed;
     let reactions = vec![
         ReactionComponent {
@@ -96,6 +102,7 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
         normal: line,
         tangents: vec![tangent],
         tilt: Expr::one(),
+        on_motion,
     };
     Ok(contact_site_of(
         model,

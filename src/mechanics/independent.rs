@@ -22,8 +22,9 @@ const LARGEST_INVERSE: usize = 4_000;
 
 /// The most operations an entry of `C` may have once simplified. Past it the relation
 /// `u_D = C u_I` no longer reads as a textbook writes it (nested fractions the simplifier
-/// cannot cancel, e.g. a gear pair's `−r_A/r_B` written over `(r_A + r_B)²`), and Kane's
-/// rows keep the constraint forces instead, which reads better.
+/// cannot cancel, e.g. a no-slip row written by hand with a spin coefficient that is 1
+/// only on the motion, `(x² + y²)²/(R − r)⁴`), and Kane's rows keep the constraint forces
+/// instead, which reads better.
 const LONGEST_ENTRY_OF_C: usize = 30;
 
 /// The most dependent rates solved together symbolically (one block of `A_D`).
@@ -146,6 +147,18 @@ impl DependentSpeeds {
                 return Err(KeptForces::LargeBlock);
             }
         }
+        // Written with what holds on the motion, where the map is used: inside a ring,
+        // θ̇ = (R − r)/(r y) ẋ rather than (x² + y²)/((R − r) r y) ẋ.
+        let on_motion = |e: Expr| {
+            constraints
+                .relations
+                .iter()
+                .fold(e, |e, (_, relation)| relation.reduce(&e))
+        };
+        let violation: Vec<Vec<Expr>> = violation
+            .into_iter()
+            .map(|row| row.into_iter().map(on_motion).collect())
+            .collect();
         let map = |columns: &[usize]| -> Vec<Vec<Expr>> {
             (0..dependent.len())
                 .map(|s| {
@@ -156,7 +169,7 @@ impl DependentSpeeds {
                                 .iter()
                                 .enumerate()
                                 .map(|(k, _)| &violation[s][k] * &a[k][r]);
-                            simplify(&-add(terms))
+                            on_motion(simplify(&-add(terms)))
                         })
                         .collect()
                 })
@@ -164,10 +177,10 @@ impl DependentSpeeds {
         };
         let rest: Vec<Expr> = (0..dependent.len())
             .map(|s| {
-                simplify(&-add(beta
+                on_motion(simplify(&-add(beta
                     .iter()
                     .enumerate()
-                    .map(|(k, b)| &violation[s][k] * b)))
+                    .map(|(k, b)| &violation[s][k] * b))))
             })
             .collect();
         let mut c = map(&independent);

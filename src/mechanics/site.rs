@@ -6,6 +6,7 @@ use super::joints::ReactionComponent;
 use super::point::PointMotion;
 use super::vector::{Components, Vector};
 use crate::problem::BodyId;
+use crate::symbolic::relation::Relation;
 use crate::symbolic::Expr;
 
 /// What a site is.
@@ -56,4 +57,10 @@ pub struct Contact {
     /// `|n − (n·a) a|`, the sine of the angle between the axle and the normal: the contact
     /// is undefined where it is zero.
     pub tilt: Expr,
+    /// A relation the contact's rows are written with, which holds wherever its height is
+    /// zero: a gear's unit line of centres has unit length there (`x² + y² = (R − r)²`
+    /// inside a ring), so its no-slip row reads `r θ̇` rather than
+    /// `r (x² + y²)/(R − r)² θ̇`. `None` for a plane's contact, whose normal is a unit
+    /// vector everywhere.
+    pub on_motion: Option<Relation>,
 }

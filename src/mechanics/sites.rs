@@ -199,6 +199,7 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
         normal: n_vec,
         tangents,
         tilt,
+        on_motion: None,
     };
     Ok(contact_site_of(
         model,

@@ -148,8 +148,25 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
             .join(" \\\\ ")
     );
     let independent = rates(&speeds.independent);
+    // What holds on the motion and not identically, which C and the rows use.
+    let relations: Vec<String> = (derivation.model.constraints.relations.iter())
+        .map(|(_, relation)| format!("${}$", super::constrained::relation_tex(relation)))
+        .collect();
+    let using = if relations.is_empty() {
+        String::new()
+    } else {
+        let hold = if relations.len() == 1 {
+            "holds"
+        } else {
+            "hold"
+        };
+        format!(
+            " (here and in the rows below written with {}, which {hold} on the motion)",
+            words(&relations)
+        )
+    };
     let mut paragraphs = vec![format!(
-        "The constraints fix the rates {} once the others are known, so Kane's method takes as generalized speeds only the rates that stay free, the independent speeds {}{}. The velocity constraints, solved for the dependent rates, give $\\dot{{q}}_D = C\\,\\dot{{q}}_I$:",
+        "The constraints fix the rates {} once the others are known, so Kane's method takes as generalized speeds only the rates that stay free, the independent speeds {}{}. The velocity constraints, solved for the dependent rates, give $\\dot{{q}}_D = C\\,\\dot{{q}}_I${using}:",
         listed(&speeds.dependent),
         listed(&speeds.independent),
         if speeds.prescribed.is_empty() {

@@ -2,7 +2,7 @@
 //! term after others: the pieces both ways of collecting a sum for display use.
 
 use super::build::{add, mul, pow};
-use super::expr::{Expr, Node};
+use super::expr::{Expr, Node, Symbol};
 use super::number::Number;
 use super::print::{latex, latex_term};
 use std::ops::{Mul as _, Neg as _};
@@ -111,14 +111,58 @@ pub fn pull_common_factor(sum: &Expr) -> (Expr, Expr) {
             .map(|(base, n)| pow(base.clone(), Expr::int(*n))),
     );
     // Each term divided factor by factor: a power of a sum taken out must meet its own
-    // power in the term, not be multiplied out first.
+    // power in the term, not be multiplied out first, so a sum taken out of denominators
+    // comes back as the sum itself, once per power (`pow` would expand (R − r)²).
     let mut inverse = vec![Expr::num(number.recip().unwrap_or(Number::ONE))];
-    inverse.extend(common.into_iter().map(|(base, n)| pow(base, Expr::int(-n))));
+    for (base, n) in common {
+        match base.node() {
+            Node::Add(_) if n < 0 => inverse.extend(std::iter::repeat_n(base, (-n) as usize)),
+            _ => inverse.push(pow(base, Expr::int(-n))),
+        }
+    }
     let common = mul(factors);
     let inner = add(terms
         .iter()
         .map(|t| mul(std::iter::once(t.clone()).chain(inverse.iter().cloned()))));
-    (common, inner)
+    over_constant_denominator(common, inner)
+}
+
+/// The constants that some terms of `inner` divide by moved out with `common`, when a term
+/// of `inner` is a number and the sum left is then free of fractions and shorter:
+/// 1/y (R/r − 1) becomes 1/(r y) (R − r), as a textbook writes (R − r)/(r y). A sum that
+/// divides by anything else stays, and so does one without a number beside its fractions
+/// (r/σ (a + b/σ), a named divisor that only some terms have).
+fn over_constant_denominator(common: Expr, inner: Expr) -> (Expr, Expr) {
+    if !inner.terms().iter().any(|t| t.as_number().is_some()) {
+        return (common, inner);
+    }
+    let mut below: Vec<(Expr, i64)> = Vec::new();
+    for f in inner.terms().iter().flat_map(Expr::factors) {
+        let (base, n) = base_and_exponent(f);
+        if n >= 0 {
+            continue;
+        }
+        if !matches!(base.node(), Node::Sym(Symbol::Const(_))) {
+            return (common, inner);
+        }
+        match below.iter_mut().find(|(b, _)| *b == base) {
+            Some((_, k)) => *k = (*k).max(-n),
+            None => below.push((base, -n)),
+        }
+    }
+    if below.is_empty() || inner.terms().len() < 2 {
+        return (common, inner);
+    }
+    let denominator = mul(below.into_iter().map(|(b, k)| pow(b, Expr::int(k))));
+    let cleared = mul([inner.clone(), denominator.clone()]);
+    let fractions = cleared.terms().iter().any(|t| {
+        let (c, rest) = t.split_coefficient();
+        c.as_integer().is_none() || rest.factors().iter().any(|f| base_and_exponent(f).1 < 0)
+    });
+    if fractions || cleared.operation_count() >= inner.operation_count() {
+        return (common, inner);
+    }
+    (mul([common, pow(denominator, Expr::int(-1))]), cleared)
 }
 
 pub(super) fn gcd(a: i64, b: i64) -> i64 {
@@ -167,4 +211,36 @@ pub(super) fn square_root_of_sum(sum: &Expr) -> Option<Expr> {
         }));
         (mul([root.clone(), root.clone()]) == *sum).then_some(root)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sum_taken_out_of_the_denominators_leaves_the_numerators_as_they_were() {
+        let (x, y) = (Expr::coord("x", 0), Expr::coord("y", 0));
+        let (r, big) = (Expr::constant("r"), Expr::constant("R"));
+        let below = pow(add([big, -r.clone()]), Expr::int(-2));
+        let term = |q: &Expr| mul([r.clone(), pow(q.clone(), Expr::int(2)), below.clone()]);
+        let (common, inner) = pull_common_factor(&add([term(&x), term(&y)]));
+        assert_eq!(common, mul([r.clone(), below.clone()]));
+        // x² + y², not (R − r)² multiplied out over (R − r)².
+        assert_eq!(inner, add([pow(x, Expr::int(2)), pow(y, Expr::int(2))]));
+    }
+
+    #[test]
+    fn a_number_beside_a_ratio_of_constants_goes_over_their_denominator() {
+        let y = Expr::coord("y", 0);
+        let (r, big) = (Expr::constant("r"), Expr::constant("R"));
+        let over_y = pow(y, Expr::int(-1));
+        // R/(r y) − 1/y = (1/(r y)) (R − r).
+        let sum = add([
+            mul([big.clone(), pow(r.clone(), Expr::int(-1)), over_y.clone()]),
+            -over_y.clone(),
+        ]);
+        let (common, inner) = pull_common_factor(&sum);
+        assert_eq!(common, mul([pow(r.clone(), Expr::int(-1)), over_y]));
+        assert_eq!(inner, add([big, -r]));
+    }
 }

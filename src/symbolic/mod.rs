@@ -23,6 +23,7 @@ pub mod natural;
 pub mod number;
 pub mod parse;
 pub mod print;
+pub mod relation;
 pub mod roots;
 mod runs;
 mod schedule;

@@ -9,6 +9,7 @@
 //! constraint forces; the one unknown force a row is for is added with its unit weight.
 
 use super::{auxiliary_rows, generalized_groups, generalized_row, Workless};
+use crate::equations::on_motion;
 use crate::mechanics::constraints::{drive_symbol, RowOrigin};
 use crate::mechanics::independent::DependentSpeeds;
 use crate::mechanics::Model;
@@ -49,7 +50,14 @@ pub fn equations(
     let speeds = request.speeds;
     let raw = generalized_groups(model, actions, inertia, Workless::EveryConstraintForce);
     let written = Written::new(model, speeds);
-    let row = |name: String, groups: Groups| generalized_row(model, name, groups, request.unknowns);
+    let row = |name: String, groups: Groups| {
+        generalized_row(
+            model,
+            name,
+            on_motion::groups(model, groups),
+            request.unknowns,
+        )
+    };
     let mut rows = Vec::new();
     for (r, &i) in speeds.independent.iter().enumerate() {
         // The rows an auxiliary speed adds are solved with every q'' known: they keep the
