@@ -42,6 +42,10 @@ pub fn name_denominators(entries: &mut [&mut Expr]) {
     }
 }
 
+/// The fewest operations a sum must have to be named: one read at a glance, as the
+/// slider-crank's `x − r cos q₁`, stays as it is.
+const SHORTEST_NAMED: usize = 5;
+
 /// The sums with a coordinate in them that `e` divides by, added to `out` once each.
 fn denominators(e: &Expr, out: &mut Vec<Expr>) {
     match e.node() {
@@ -51,6 +55,7 @@ fn denominators(e: &Expr, out: &mut Vec<Expr>) {
             if negative
                 && matches!(base.node(), Node::Add(_))
                 && of_coordinates
+                && base.operation_count_capped(SHORTEST_NAMED) >= SHORTEST_NAMED
                 && !out.contains(base)
             {
                 out.push(base.clone());
@@ -86,9 +91,12 @@ mod tests {
 
     #[test]
     fn a_sum_of_the_coordinates_under_a_fraction_is_named_once() {
+        // The four-bar's a sin(q1 − q3) + d sin(q3).
         let q1 = Expr::sym(Symbol::Coord("q1".into(), 0));
+        let q3 = Expr::sym(Symbol::Coord("q3".into(), 0));
+        let a = Expr::sym(Symbol::Const("a".into()));
         let d = Expr::sym(Symbol::Const("d".into()));
-        let sum = &sin(q1.clone()) + &d;
+        let sum = &(&a * &sin(&q1 - &q3)) + &(&d * &sin(q3.clone()));
         let mut first = &d / &sum;
         let mut second = &(&q1 * &d) / &sum;
         name_denominators(&mut [&mut first, &mut second]);
@@ -104,7 +112,13 @@ mod tests {
     }
 
     #[test]
-    fn a_constant_denominator_stays_as_it_is() {
+    fn a_short_or_constant_denominator_stays_as_it_is() {
+        let x = Expr::sym(Symbol::Coord("x".into(), 0));
+        let r = Expr::sym(Symbol::Const("r".into()));
+        let mut short = &r / &(&x - &(&r * &crate::symbolic::build::cos(x.clone())));
+        let before = short.clone();
+        name_denominators(&mut [&mut short]);
+        assert_eq!(short, before);
         let r = Expr::sym(Symbol::Const("r".into()));
         let big = Expr::sym(Symbol::Const("R".into()));
         let mut entry = &r / &(&big - &r);
