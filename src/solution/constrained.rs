@@ -13,7 +13,6 @@ use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_collected;
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::relation::Relation;
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::{simplify, Symbol};
 
@@ -99,19 +98,10 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
     notes.extend(constraints.relations.iter().map(|(name, relation)| {
         format!(
             "Wherever the distance constraint of {name} holds, ${}$: its line of centres is a unit vector. Its rows, and the equations below where that shortens them, are written with it.",
-            relation_tex(relation)
+            relation.latex()
         )
     }));
     (views, notes)
-}
-
-/// `x^{2} + y^{2} = \left(R - r\right)^{2}`: a relation the rows are written with.
-pub fn relation_tex(relation: &Relation) -> String {
-    format!(
-        "{} = \\left({}\\right)^{{2}}",
-        latex(&relation.square),
-        latex(&relation.root)
-    )
 }
 
 /// The velocity of the child's material point at a contact as a textbook forms it, from

@@ -150,7 +150,7 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
     let independent = rates(&speeds.independent);
     // What holds on the motion and not identically, which C and the rows use.
     let relations: Vec<String> = (derivation.model.constraints.relations.iter())
-        .map(|(_, relation)| format!("${}$", super::constrained::relation_tex(relation)))
+        .map(|(_, relation)| format!("${}$", relation.latex()))
         .collect();
     let using = if relations.is_empty() {
         String::new()

@@ -27,6 +27,15 @@ impl Relation {
         Relation { square, root }
     }
 
+    /// As the handout writes it: `x^{2} + y^{2} = \left(R - r\right)^{2}`.
+    pub fn latex(&self) -> String {
+        format!(
+            "{} = \\left({}\\right)^{{2}}",
+            super::print::latex(&self.square),
+            super::print::latex(&self.root)
+        )
+    }
+
     /// `e` (a canonical sum) with each group of terms `a (square) M` replaced by
     /// `a root² M`, where that makes it shorter (fewer operations): `r x² θ̇/(R − r)² +
     /// r y² θ̇/(R − r)² → r θ̇`. A group must hold every term of `square` in proportion;
