@@ -74,6 +74,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         }
         solution.kinematic_definitions = crate::render::where_list::grouped(definitions);
         solution.speeds = super::speeds::speeds(derivation);
+        // Written with the same abbreviations as the rows it stands beside.
+        solution.dependent_speeds =
+            super::constrained::dependent_speeds(derivation, &worked.q0, &worked.rates0);
     });
     // Only those the solution prints: a text formed and then given up (an entry given by
     // value, a row too long to write whole) records its abbreviations too.
@@ -92,7 +95,6 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
-    solution.dependent_speeds = super::constrained::dependent_speeds(derivation, q0, rates0);
     solution.initial_values = problem
         .coordinates
         .iter()

@@ -372,10 +372,10 @@ fn kane_shows_the_coins_dependent_speeds() {
     let text = String::from_utf8_lossy(&out.stdout);
     // By hand: the contact point P = C − R b₃ is at rest, so ż = −R sin θ θ' and the
     // centre's horizontal velocity is R (φ' + ψ' sin θ) along the rolling direction
-    // (cos ψ, sin ψ) plus R cos θ θ' across it.
+    // (cos ψ, sin ψ) plus R cos θ θ' across it; written with the rows' abbreviations.
     for want in [
-        "\\dot{z} &= -R \\sin(\\theta) \\dot{\\theta}",
-        "\\dot{x} &= R \\cos(\\psi) \\dot{\\phi} + R \\sin(\\theta) \\cos(\\psi) \\dot{\\psi} + R \\sin(\\psi) \\cos(\\theta) \\dot{\\theta}",
+        "\\dot{z} &= -R s_{\\theta} \\dot{\\theta}",
+        "\\dot{x} &= R c_{\\psi} \\dot{\\phi} + R s_{\\theta} c_{\\psi} \\dot{\\psi} + R s_{\\psi} c_{\\theta} \\dot{\\theta}",
         "{}^{N}\\tilde{\\mathbf{v}}^{D^*}_{3}",
         "{}^{N}\\tilde{\\boldsymbol{\\omega}}^{D}_{3} = \\hat{\\mathbf{d}}_{y}",
     ] {
