@@ -371,6 +371,26 @@ pub(crate) fn number_literal_end(chars: &[char], start: usize) -> usize {
     i
 }
 
+/// For tests of the algebra: `text` parsed with the names `coordinate` accepts (and any
+/// name with primes) as coordinates, every other name a constant, and no unit vectors.
+#[cfg(test)]
+pub(crate) fn parse_scalar(text: &str, coordinate: fn(&str) -> bool) -> Expr {
+    struct Scalars(fn(&str) -> bool);
+    impl Resolve for Scalars {
+        fn name(&self, name: &str, primes: u8, _: usize) -> Result<Expr, ParseError> {
+            Ok(if (self.0)(name) || primes > 0 {
+                Expr::coord(name, primes)
+            } else {
+                Expr::constant(name)
+            })
+        }
+        fn unit_vector(&self, _: &str, _: &str, column: usize) -> Result<Expr, ParseError> {
+            Err(ParseError::new(column, "no vectors here"))
+        }
+    }
+    parse(text, &Scalars(coordinate)).unwrap_or_else(|e| panic!("`{text}`: {e}"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

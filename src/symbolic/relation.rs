@@ -105,25 +105,9 @@ impl Relation {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::symbolic::parse::{parse, ParseError, Resolve};
-
     /// `x`, `y` are coordinates, a name with primes a rate, anything else a constant.
-    struct Names;
-    impl Resolve for Names {
-        fn name(&self, name: &str, primes: u8, _: usize) -> Result<Expr, ParseError> {
-            Ok(if name == "x" || name == "y" || primes > 0 {
-                Expr::coord(name, primes)
-            } else {
-                Expr::constant(name)
-            })
-        }
-        fn unit_vector(&self, _: &str, _: &str, column: usize) -> Result<Expr, ParseError> {
-            Err(ParseError::new(column, "no vectors here"))
-        }
-    }
-
     fn p(text: &str) -> Expr {
-        parse(text, &Names).unwrap_or_else(|e| panic!("`{text}`: {e}"))
+        crate::symbolic::parse::parse_scalar(text, |name| name == "x" || name == "y")
     }
 
     /// `text` times (R − r)^k, built as the mechanics builds it: the parser would square

@@ -6,31 +6,12 @@ use super::{shortest_of, simplify, simplify_with, simplify_with_steps, Options};
 use crate::symbolic::build::{add, cos, mul, sin};
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::expr::{Expr, Symbol};
-use crate::symbolic::parse::{parse, ParseError, Resolve};
 
 /// `q1`, `q2`, ... are coordinates, a name with primes is a rate, anything else a constant.
-struct Names;
-impl Resolve for Names {
-    fn name(&self, name: &str, primes: u8, _: usize) -> Result<Expr, ParseError> {
-        let coordinate = name.starts_with('q')
-            && name.len() > 1
-            && name[1..].chars().all(|c| c.is_ascii_digit());
-        Ok(if coordinate || primes > 0 {
-            Expr::coord(name, primes)
-        } else {
-            Expr::constant(name)
-        })
-    }
-    fn unit_vector(&self, _: &str, _: &str, column: usize) -> Result<Expr, ParseError> {
-        Err(ParseError::new(column, "no vectors here"))
-    }
-}
-
 fn p(text: &str) -> Expr {
-    match parse(text, &Names) {
-        Ok(e) => e,
-        Err(err) => panic!("`{text}`: {err}"),
-    }
+    crate::symbolic::parse::parse_scalar(text, |name| {
+        name.starts_with('q') && name.len() > 1 && name[1..].chars().all(|c| c.is_ascii_digit())
+    })
 }
 
 /// A small xorshift generator, so the points are the same on every run.
