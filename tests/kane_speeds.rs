@@ -4,6 +4,7 @@
 //! rolling coin's three equations against a derivation by hand.
 
 use mbd_tutor::equations::rows::Sum;
+use mbd_tutor::equations::friction::{friction_forces, normal_forces};
 use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::mechanics::independent::KeptForces;
 use mbd_tutor::numeric::evaluate::Compiled;
@@ -15,8 +16,8 @@ use mbd_tutor::symbolic::Symbol;
 
 use crate::support::Lcg;
 
-/// Whether a problem has a contact with Coulomb friction: there the normal force must be an
-/// unknown (the friction is μ|N|), and Kane's rows keep the contact's forces.
+/// Whether a problem has a contact with Coulomb friction: there the friction forces work
+/// with the slip rates and stay in the rows, and each normal force gets an auxiliary row.
 fn has_friction(problem: &Problem) -> bool {
     problem.constraints.iter().any(|c| c.friction.is_some())
         || (problem.joints.iter())
@@ -24,20 +25,20 @@ fn has_friction(problem: &Problem) -> bool {
             .any(|j| j.friction.is_some())
 }
 
-/// Every bundled problem with a closure, a constraint or a prescribed coordinate, without
-/// friction (see [`has_friction`]).
+/// Every bundled problem (and validation problem) with a closure, a constraint or a
+/// prescribed coordinate.
 fn constrained() -> Vec<(String, Problem)> {
-    let mut paths: Vec<_> = std::fs::read_dir("problems")
-        .expect("problems/")
-        .flatten()
+    let mut paths: Vec<_> = ["problems", "problems/validation"]
+        .iter()
+        .flat_map(|dir| std::fs::read_dir(dir).expect("problems/").flatten())
         .map(|e| e.path())
         .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .filter(|p| !p.ends_with("whipple-bicycle.json"))
         .collect();
     paths.sort();
     let list: Vec<(String, Problem)> = paths
         .iter()
         .map(|p| (p.display().to_string(), load_file(p).expect("valid")))
-        .filter(|(_, problem)| !has_friction(problem))
         .filter(|(_, problem)| {
             !problem.closures.is_empty()
                 || !problem.constraints.is_empty()
@@ -45,6 +46,10 @@ fn constrained() -> Vec<(String, Problem)> {
         })
         .collect();
     assert!(list.len() >= 11, "only {} constrained problems", list.len());
+    assert!(
+        list.iter().filter(|(_, p)| has_friction(p)).count() >= 6,
+        "too few constrained problems with friction"
+    );
     list
 }
 
@@ -56,19 +61,20 @@ fn generalized_rows(derivation: &Derivation) -> usize {
         .count()
 }
 
-/// The reaction components of the requested sites.
-fn requested_components(derivation: &Derivation) -> usize {
+/// The reaction components of the requested sites that an auxiliary speed brings in: every
+/// one but a friction force (its stick row or sliding law gives it).
+fn requested_components(derivation: &Derivation) -> Vec<Symbol> {
     let model = &derivation.model;
-    model
-        .problem
-        .find_reactions
-        .iter()
-        .map(|&j| model.sites[j].reactions.len())
-        .sum()
+    let friction = friction_forces(model);
+    let sites = &model.problem.find_reactions;
+    let asked = mbd_tutor::equations::system::reaction_unknowns(model, sites);
+    asked.into_iter().filter(|u| !friction.contains(u)).collect()
 }
 
-/// Kane's plan: a row per independent speed, per drive and per requested component, and
-/// no unknown but the q'', those components and the drives.
+/// Kane's plan: a row per independent speed, per drive, per requested component and per
+/// normal force at a rough contact; no unknown but the q'', those components and forces,
+/// the friction forces and the drives; and in the rows of the independent speeds no force
+/// but friction.
 fn check_plan(name: &str, kane: &Derivation) {
     let speeds = kane
         .dependent_speeds
@@ -76,15 +82,21 @@ fn check_plan(name: &str, kane: &Derivation) {
         .unwrap_or_else(|| panic!("{name}: no independent speeds"));
     let n = kane.model.problem.coordinates.len();
     let drives = speeds.prescribed.len();
-    let asked = requested_components(kane);
+    let mut forces = requested_components(kane);
+    for normal in normal_forces(&kane.model) {
+        if !forces.contains(&normal) {
+            forces.push(normal);
+        }
+    }
+    let friction = friction_forces(&kane.model);
     assert_eq!(
         generalized_rows(kane),
-        speeds.independent.len() + drives + asked,
+        speeds.independent.len() + drives + forces.len(),
         "{name}: Kane's rows"
     );
     assert_eq!(
         kane.system.unknowns.len(),
-        n + drives + asked,
+        n + drives + forces.len() + friction.len(),
         "{name}: unknowns {:?}",
         kane.system.unknowns
     );
@@ -92,7 +104,7 @@ fn check_plan(name: &str, kane: &Derivation) {
         assert!(
             row.unknowns
                 .iter()
-                .all(|u| matches!(u, Symbol::Coord(_, 2))),
+                .all(|u| matches!(u, Symbol::Coord(_, 2)) || friction.contains(u)),
             "{name}: a constraint force in {:?}: {:?}",
             row.sum,
             row.unknowns
@@ -173,7 +185,11 @@ fn kane_without_requested_reactions_has_only_the_accelerations_and_drives_as_unk
         check_plan(&name, &kane);
         let speeds = kane.dependent_speeds.as_ref().expect("speeds");
         let n = problem.coordinates.len();
-        assert_eq!(kane.system.unknowns.len(), n + speeds.prescribed.len());
+        let rough = friction_forces(&kane.model).len() + normal_forces(&kane.model).len();
+        assert_eq!(
+            kane.system.unknowns.len(),
+            n + speeds.prescribed.len() + rough
+        );
         check_numbers(&name, &problem, &kane);
     }
 }
@@ -316,28 +332,34 @@ fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     }
 }
 
+/// With friction, Kane's rows are those of the independent speeds (the friction forces work
+/// in them) and one auxiliary row per normal force; no reason to keep the constraint forces
+/// is given. The bowling ball: ẋ and θ' give m ẍ = F and (2/5) m R² θ̈ = R F, the normal
+/// force's row N − m g − m ÿ = 0, three rows.
 #[test]
-fn with_friction_kane_keeps_the_contact_forces_and_agrees_with_newton_euler() {
+fn with_friction_kane_takes_the_independent_speeds_and_an_auxiliary_row_per_normal_force() {
     let mut seen = 0;
-    for entry in std::fs::read_dir("problems").expect("problems/").flatten() {
-        let path = entry.path();
-        if path.extension().is_none_or(|e| e != "json") {
-            continue;
-        }
-        let problem = load_file(&path).expect("valid");
+    for (name, problem) in constrained() {
         if !has_friction(&problem) {
             continue;
         }
         seen += 1;
-        let name = path.display().to_string();
         let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
-        assert!(
-            kane.dependent_speeds.is_none(),
-            "{name}: the normal force must stay"
-        );
-        check_numbers(&name, &problem, &kane);
+        assert!(kane.kept_forces.is_none(), "{name}: {:?}", kane.kept_forces);
+        for normal in normal_forces(&kane.model) {
+            assert!(
+                kane.rows
+                    .iter()
+                    .skip(kane.dependent_speeds.as_ref().expect("speeds").independent.len())
+                    .any(|r| matches!(r.sum, Sum::Generalized { .. }) && r.unknowns.contains(&normal)),
+                "{name}: no auxiliary row brings in {normal:?}"
+            );
+        }
     }
-    assert!(seen >= 3, "only {seen} problems with friction");
+    assert!(seen >= 6, "only {seen} constrained problems with friction");
+    let ball = load_file(std::path::Path::new("problems/bowling-ball.json")).expect("valid");
+    let kane = derive_rows(&ball, Method::Kane).expect("derives");
+    assert_eq!(generalized_rows(&kane), 3);
 }
 
 /// A disc inside a cylinder with its contact written by hand as constraint entries, the

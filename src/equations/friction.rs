@@ -9,7 +9,8 @@ use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};
 
 /// Adds every friction site to the sites whose reactions are unknowns: friction is
-/// proportional to the normal force, so no method may leave it out.
+/// proportional to the normal force, so neither Newton–Euler nor the Motion Law may leave
+/// it out (Kane's rows keep the friction and normal forces alone, [`kept_forces`]).
 pub fn require_sites(model: &Model, reaction_sites: &mut Vec<usize>) {
     for f in &model.constraints.friction {
         if !reaction_sites.contains(&f.site) {
@@ -78,17 +79,19 @@ pub fn stick_rows_back(rows: Vec<Equation>, given: &[Equation]) -> Vec<Equation>
         .collect()
 }
 
-/// Adds to `q`, one generalized force per coordinate, the friction of each rough prismatic
-/// joint of the tree: its force `F` along the axis, whose stick row is the slip velocity
-/// `±q'`, gives `F ∂(±q')/∂q'` (Kane's rows leave the rest of a tree joint's reaction out,
-/// as it does no work).
-pub fn add_slider_forces(model: &Model, q: &mut [Expr]) {
+/// Adds to `q`, one generalized force per coordinate, the friction force of each site (of
+/// each rough prismatic joint of the tree alone, when `tree_only`): a component `F` whose
+/// stick row is the slip velocity `v_t` gives `F ∂v_t/∂q'` (a rough slider's `F ∂(±q')/∂q'`).
+/// Kane's rows leave the rest of a reaction out, as it does no work; with the
+/// coordinates' rates as speeds the reactions at closures and contacts are taken whole
+/// instead (`tree_only`).
+pub fn add_friction_forces(model: &Model, q: &mut [Expr], tree_only: bool) {
     let problem = model.problem;
     let rates: Vec<Symbol> = (0..problem.coordinates.len())
         .map(|i| problem.coordinate_symbol(i, 1))
         .collect();
     for f in &model.constraints.friction {
-        if f.site >= problem.joints.len() {
+        if tree_only && f.site >= problem.joints.len() {
             continue;
         }
         for row in &f.stick {
@@ -112,4 +115,32 @@ pub fn is_slider_friction(model: &Model, j: usize, unknown: &Symbol) -> bool {
             .friction
             .iter()
             .any(|f| f.site == j && f.stick.iter().any(|r| r.unknown == *unknown))
+}
+
+/// The friction and normal forces of every site, but those among `asked` (the unknowns of
+/// requested reactions): the unknowns Kane's rows keep though no reaction is asked for.
+/// The friction force does work while the site slips; the normal force gets an auxiliary
+/// speed along it.
+pub fn kept_forces(model: &Model, asked: &[Symbol]) -> Vec<Symbol> {
+    let mut kept: Vec<Symbol> = Vec::new();
+    for unknown in friction_forces(model).into_iter().chain(normal_forces(model)) {
+        if !asked.contains(&unknown) && !kept.contains(&unknown) {
+            kept.push(unknown);
+        }
+    }
+    kept
+}
+
+/// The friction forces' unknowns of every site: the stick rows' unknowns.
+pub fn friction_forces(model: &Model) -> Vec<Symbol> {
+    let sites = model.constraints.friction.iter();
+    sites
+        .flat_map(|f| f.stick.iter().map(|r| r.unknown.clone()))
+        .collect()
+}
+
+/// The normal forces' unknowns of every friction site.
+pub fn normal_forces(model: &Model) -> Vec<Symbol> {
+    let sites = model.constraints.friction.iter();
+    sites.flat_map(|f| f.normal.iter().cloned()).collect()
 }

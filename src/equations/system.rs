@@ -211,8 +211,11 @@ pub fn write_equations<'p>(
         Method::Kane => kane_reaction_joints(problem, &loop_sites),
         Method::MotionLaw => problem.find_reactions.clone(),
     };
-    // Friction is proportional to a normal force: every method solves for it.
-    super::friction::require_sites(&model, &mut reaction_joints);
+    // Friction is proportional to a normal force: every method solves for it, Kane's
+    // rows for it and the friction force alone (`kept`).
+    if method != Method::Kane {
+        super::friction::require_sites(&model, &mut reaction_joints);
+    }
     let unknowns_of = |sites: &[usize]| -> Vec<Symbol> {
         accelerations
             .iter()
@@ -222,6 +225,13 @@ pub fn write_equations<'p>(
             .collect()
     };
     let mut unknowns = unknowns_of(&reaction_joints);
+    let kept = match method {
+        Method::Kane => {
+            super::friction::kept_forces(&model, &reaction_unknowns(&model, &reaction_joints))
+        }
+        _ => Vec::new(),
+    };
+    unknowns.extend(kept.iter().cloned());
     let mut given = constraint_equations(model.constraints.rows.iter(), &every_unknown)?;
     given.extend(super::friction::stick_equations(&model, &every_unknown)?);
     let composite_alone = match (method, form, wanted) {
@@ -255,11 +265,6 @@ pub fn write_equations<'p>(
     // With constraints, Kane's rows are formed with the independent speeds, and no
     // constraint force is an unknown but those asked for.
     let written = match method {
-        // A friction site's normal force must stay an unknown (its friction is μ|N|):
-        // there Kane keeps the constraint forces as unknowns.
-        Method::Kane if !model.constraints.is_empty() && !model.constraints.friction.is_empty() => {
-            Err(KeptForces::Friction)
-        }
         Method::Kane if !model.constraints.is_empty() => {
             budget::step("writing the dependent speeds u_D = C u_I (step 3)");
             DependentSpeeds::written(&model)
@@ -273,7 +278,8 @@ pub fn write_equations<'p>(
     if let Some(speeds) = &dependent_speeds {
         budget::step("writing Kane's equations with independent speeds (step 3)");
         reaction_joints = problem.find_reactions.clone();
-        let kept: Vec<Symbol> = Vec::new();
+        let asked = reaction_unknowns(&model, &reaction_joints);
+        let kept = super::friction::kept_forces(&model, &asked);
         unknowns =
             super::kane::constrained::unknowns(&model, &accelerations, &reaction_joints, &kept);
         let request = super::kane::constrained::Request {
@@ -283,7 +289,8 @@ pub fn write_equations<'p>(
             unknowns: &unknowns,
         };
         let rows = super::kane::constrained::equations(&model, &actions, &inertia, &request);
-        let given = constraint_equations(model.constraints.rows.iter(), &unknowns)?;
+        let mut given = constraint_equations(model.constraints.rows.iter(), &unknowns)?;
+        given.extend(super::friction::stick_equations(&model, &unknowns)?);
         let rows: Vec<Equation> = rows.into_iter().chain(given).collect();
         return finish(
             model,
@@ -309,7 +316,13 @@ pub fn write_equations<'p>(
                 .filter(|&j| j < problem.joints.len())
                 .collect();
             (
-                super::kane::equations(&model, &actions, &inertia, &every_unknown, &tree_requested),
+                super::kane::equations(
+                    &model,
+                    &actions,
+                    &inertia,
+                    &every_unknown,
+                    (&tree_requested, &kept),
+                ),
                 vec![],
             )
         }
@@ -498,7 +511,7 @@ fn massless_coordinate(
     inertia: &Inertia,
     accelerations: &[Symbol],
 ) -> Option<usize> {
-    let rows = super::kane::equations(model, actions, inertia, accelerations, &[]);
+    let rows = super::kane::equations(model, actions, inertia, accelerations, (&[], &[]));
     let states = planner::sample_states(model);
     let coefficients: Vec<Vec<f64>> = rows
         .iter()

@@ -34,8 +34,6 @@ const LARGEST_BLOCK: usize = 6;
 /// speeds alone: said in the handout, since a student expects the independent speeds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum KeptForces {
-    /// A contact with Coulomb friction: its normal force must be an unknown.
-    Friction,
     /// The constraints are not linear in the rates with coefficients free of them, or do
     /// not fix as many dependent rates as they have rows.
     NotSolvable,
@@ -49,9 +47,6 @@ impl KeptForces {
     /// The reason, in words that end a sentence.
     pub fn reason(self) -> &'static str {
         match self {
-            KeptForces::Friction => {
-                "a contact has Coulomb friction, whose force $\\mu |N|$ needs the normal force $N$ as an unknown"
-            }
             KeptForces::NotSolvable => {
                 "the velocity constraints do not give the dependent rates as a linear map of the others"
             }

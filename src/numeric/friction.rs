@@ -497,19 +497,51 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 
 /// Along the one free direction `v` of the forces, from the solution `x`, the point that
 /// keeps the sites (each with one friction and one normal component, and its μ) farthest
-/// from slipping: the least r with |F| ≤ r μ N and N ≥ 0 at every site (N's sign as in `x`),
-/// by bisection on r. `x` itself when no point has every N on its side.
+/// from slipping: the least r with |F| ≤ r μ N and N ≥ 0 at every site, by bisection on r.
+/// N's sign is as in `x`; where `x` has N at zero (to rounding) both signs are tried, and
+/// the one that holds with the least r kept. `x` itself when no point has every N on its
+/// side.
 fn farthest_from_slipping(
     x: &DVector<f64>,
     v: &DVector<f64>,
     sites: &[(&Slot, f64)],
 ) -> DVector<f64> {
+    let scale = x.amax();
+    let open: Vec<usize> = (0..sites.len())
+        .filter(|&k| x[sites[k].0.normal[0]].abs() <= 1e-9 * scale)
+        .collect();
+    let mut best: Option<(DVector<f64>, f64)> = None;
+    for choice in 0..1usize << open.len() {
+        let signs: Vec<f64> = (0..sites.len())
+            .map(|k| match open.iter().position(|&o| o == k) {
+                Some(bit) if choice >> bit & 1 == 1 => -1.0,
+                Some(_) => 1.0,
+                None if x[sites[k].0.normal[0]] < 0.0 => -1.0,
+                None => 1.0,
+            })
+            .collect();
+        if let Some((point, r)) = farthest_with_signs(x, v, sites, &signs) {
+            if best.as_ref().is_none_or(|(_, least)| r < *least) {
+                best = Some((point, r));
+            }
+        }
+    }
+    best.map_or_else(|| x.clone(), |(point, _)| point)
+}
+
+/// [`farthest_from_slipping`] with each site's N on the side of `signs`: the point and its
+/// r, or `None` when no point has every N on its side.
+fn farthest_with_signs(
+    x: &DVector<f64>,
+    v: &DVector<f64>,
+    sites: &[(&Slot, f64)],
+    signs: &[f64],
+) -> Option<(DVector<f64>, f64)> {
     // Each condition as `c0 + c1 t ≤ 0` on x + t v.
     let conditions = |r: f64| -> Vec<(f64, f64)> {
         let mut out = Vec::new();
-        for (slot, mu) in sites {
+        for ((slot, mu), sign) in sites.iter().zip(signs) {
             let (f, n) = (slot.tangential[0], slot.normal[0]);
-            let sign = if x[n] < 0.0 { -1.0 } else { 1.0 };
             let (n0, n1) = (sign * x[n], sign * v[n]);
             out.push((-n0, -n1));
             out.push((x[f] - r * mu * n0, v[f] - r * mu * n1));
@@ -538,7 +570,7 @@ fn farthest_from_slipping(
     while interval(high).is_none() {
         high *= 2.0;
         if high > 1e12 {
-            return x.clone();
+            return None;
         }
     }
     let mut low = 0.0;
@@ -550,10 +582,11 @@ fn farthest_from_slipping(
             low = middle;
         }
     }
-    match interval(high) {
-        Some((from, to)) if from.is_finite() && to.is_finite() => at(0.5 * (from + to)),
-        Some((from, _)) if from.is_finite() => at(from),
-        Some((_, to)) if to.is_finite() => at(to),
-        _ => x.clone(),
-    }
+    let point = match interval(high)? {
+        (from, to) if from.is_finite() && to.is_finite() => at(0.5 * (from + to)),
+        (from, _) if from.is_finite() => at(from),
+        (_, to) if to.is_finite() => at(to),
+        _ => return None,
+    };
+    Some((point, high))
 }

@@ -271,7 +271,16 @@ pub fn plan(derivation: &Derivation) -> Plan {
             note
         }
         Method::Kane => {
-            let mut note = "One row per generalized speed, and one per requested reaction component through an auxiliary speed.".to_string();
+            let speeds = if derivation.dependent_speeds.is_some() {
+                "independent speed"
+            } else {
+                "generalized speed"
+            };
+            let mut note = if derivation.model.constraints.friction.is_empty() {
+                format!("One row per {speeds}, and one per requested reaction component through an auxiliary speed.")
+            } else {
+                format!("One row per {speeds}, one per requested reaction component and one per normal force at a rough contact through an auxiliary speed; each rough contact's friction force from its no-slip row (or, while it slips, the sliding law).")
+            };
             if let Some(order) = super::kane::solve_order_note(derivation) {
                 note = format!("{note} {order}");
             }

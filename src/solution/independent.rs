@@ -203,9 +203,13 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
     let mut out = vec![
         "The reactions of the joints, closures and contacts, and whatever enforces the other constraints, drop out of these equations: where such a force acts, the two bodies it joins move alike along it in every constrained motion, so $\\tilde{\\mathbf{v}}_r$ of its point relative to the other body has no component along it, and it does no work. No constraint force is an unknown unless it is asked for.".to_string(),
     ];
+    let friction = &model.constraints.friction;
     let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
-    if asked {
+    if asked || !friction.is_empty() {
         out.push("A force that is asked for is brought in by an auxiliary speed along it (Kane and Levinson, ch. 5): the constraint that force enforces is relaxed by a speed $u$ along it, so that the augmented velocity of each body is its velocity plus $u$ times a partial velocity that moves the body along the force (the dependent rates still keep every other constraint). The partial velocities of the auxiliary speed are those; only that force does work with them, and the row is written with the accelerations taken at $u = 0$, so the motion is the one above. A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.".to_string());
+    }
+    if !friction.is_empty() {
+        out.push(friction_note(derivation));
     }
     let n = problem.coordinates.len();
     let constraint_rows = model.constraints.rows.len();
@@ -236,8 +240,44 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
     } else {
         solve.push('.');
     }
-    out.push(solve);
+    if friction.is_empty() {
+        out.push(solve);
+    } else {
+        // The friction forces are in the rows of the speeds: nothing is solved first.
+        out.push(format!(
+            "Solving: the {} rows hold the $\\ddot{{q}}$, the friction and the normal forces together, and are solved as one system.",
+            derivation.system.unknowns.len()
+        ));
+    }
     out
+}
+
+/// Why the friction forces stay in Kane's rows and how the normal forces come in.
+fn friction_note(derivation: &Derivation) -> String {
+    let model = &derivation.model;
+    let friction = crate::equations::friction::friction_forces(model);
+    let normals = crate::equations::friction::normal_forces(model);
+    let tex = |list: &[Symbol]| -> String {
+        let each: Vec<String> = (list.iter())
+            .map(|u| format!("${}$", latex(&Expr::sym(u.clone()))))
+            .collect();
+        words(&each)
+    };
+    let sites: Vec<String> = (model.constraints.friction.iter())
+        .map(|f| format!("${}$", latex_name(&f.name)))
+        .collect();
+    let (is, does) = if friction.len() == 1 {
+        ("is", "does")
+    } else {
+        ("are", "do")
+    };
+    format!(
+        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds; the friction force {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (below, after the equations). The normal force {} that the law is written with {} brought in by an auxiliary speed along it, as a force asked for is.",
+        tex(&friction),
+        words(&sites),
+        tex(&normals),
+        if normals.len() == 1 { "is" } else { "are" },
+    )
 }
 
 /// `a`, `a and b`, `a, b and c`.

@@ -130,15 +130,28 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 "(an independent speed)".to_string(),
             )
         } else if independent.is_some() {
+            // The force the row is for: a friction force, which works with the slip rates,
+            // may be in it too.
+            let friction = crate::equations::friction::friction_forces(&derivation.model);
             let forces: Vec<Symbol> = row
                 .unknowns
                 .iter()
-                .filter(|u| matches!(u, Symbol::Unknown(_)))
+                .filter(|u| matches!(u, Symbol::Unknown(_)) && !friction.contains(u))
                 .cloned()
                 .collect();
+            let normals = crate::equations::friction::normal_forces(&derivation.model);
+            let asked = crate::equations::system::reaction_unknowns(
+                &derivation.model,
+                &problem.find_reactions,
+            );
+            let why = if forces.iter().all(|f| normals.contains(f) && !asked.contains(f)) {
+                "(an auxiliary speed along the normal force, which the friction force $\\mu |N|$ is written with: it relaxes the one constraint that force enforces, and brings in that force, and the friction that works along the motion)"
+            } else {
+                "(an auxiliary speed along the force asked for: it relaxes the one constraint that force enforces, and brings in that force alone)"
+            };
             (
                 format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
-                "(an auxiliary speed along the force asked for: it relaxes the one constraint that force enforces, and brings in that force alone)".to_string(),
+                why.to_string(),
             )
         } else if r <= problem.coordinates.len() {
             (

@@ -25,9 +25,10 @@ pub struct Request<'a> {
     pub speeds: &'a DependentSpeeds,
     /// The sites whose reactions are asked for (tree joints, closures and contacts).
     pub reactions: &'a [usize],
-    /// Forces that enforce a constraint and must stay unknowns though not asked for (the
-    /// normal force at a contact with friction, which the friction force is written
-    /// with): each gets its auxiliary row, as a requested reaction component does.
+    /// Forces that must stay unknowns though not asked for: at a site with friction, the
+    /// normal force, which the friction force is written with, gets its auxiliary row as
+    /// a requested reaction component does; the friction force does work with the slip
+    /// rates (speeds) and is found by the site's stick row or sliding law.
     pub kept: &'a [Symbol],
     /// The unknowns of the system, for each row's list of those it holds.
     pub unknowns: &'a [Symbol],
@@ -75,13 +76,20 @@ pub fn equations(
         groups.contact = &groups.contact + &Expr::sym(drive_symbol(model.problem, i));
         rows.push(row(auxiliary_name(&format!("{name} drive")), groups));
     }
-    for &j in request.reactions {
-        if j < model.problem.joints.len() {
-            for aux in auxiliary_rows(model, actions, inertia, request.unknowns, j) {
+    let tree = model.problem.joints.len();
+    let kept_joints = super::kept_joints(model, request.reactions, request.kept);
+    let whole = request.reactions.iter().map(|&j| (j, None));
+    let kept_components = kept_joints.iter().map(|&j| (j, Some(request.kept)));
+    for (j, only) in whole.chain(kept_components) {
+        if j < tree {
+            for aux in auxiliary_rows(model, actions, inertia, request.unknowns, (j, only)) {
                 let name = aux_speed(&aux);
                 let groups = without_constraint_forces(model, speeds, &raw, aux.groups);
                 rows.push(row(name, groups));
             }
+            continue;
+        }
+        if only.is_some() {
             continue;
         }
         let site = &model.sites[j];

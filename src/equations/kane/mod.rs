@@ -69,13 +69,15 @@ fn own_partials(
 }
 
 /// Kane's rows, one per coordinate, and one per requested reaction component (the
-/// augmented form: with constraints, their forces are unknowns of every row).
+/// augmented form: with constraints, their forces are unknowns of every row), and one per
+/// `kept` component of a tree joint's reaction not requested (a rough slider's normal
+/// force, which its friction is written with).
 pub fn equations(
     model: &Model,
     actions: &[Action],
     inertia: &Inertia,
     unknowns: &[Symbol],
-    reaction_joints: &[usize],
+    (reaction_joints, kept): (&[usize], &[Symbol]),
 ) -> Vec<Equation> {
     let groups = generalized_groups(model, actions, inertia, Workless::TreeReactions);
     let rates: Vec<Symbol> = model.problem.speed_symbols(1);
@@ -85,9 +87,23 @@ pub fn equations(
         .map(|(groups, rate)| generalized_row(model, rate.to_string(), groups, unknowns))
         .collect();
     for &j in reaction_joints {
-        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, j));
+        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, (j, None)));
+    }
+    for j in kept_joints(model, reaction_joints, kept) {
+        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, (j, Some(kept))));
     }
     rows
+}
+
+/// The tree joints, not among `requested`, with a reaction component in `kept`.
+pub(crate) fn kept_joints(model: &Model, requested: &[usize], kept: &[Symbol]) -> Vec<usize> {
+    (0..model.problem.joints.len())
+        .filter(|j| !requested.contains(j))
+        .filter(|&j| {
+            let site = &model.sites[j];
+            (site.reactions.iter()).any(|c| kept.contains(&c.unknown(&site.name)))
+        })
+        .collect()
 }
 
 /// Kane's row of `groups` for the speed named `speed`: every body in it.
@@ -152,10 +168,15 @@ pub(crate) fn generalized_groups(
             let mut q = joint_load_generalized_forces(model);
             // A rough slider's friction is the one part of a tree joint's reaction that
             // does work with the coordinates' rates.
-            crate::equations::friction::add_slider_forces(model, &mut q);
+            crate::equations::friction::add_friction_forces(model, &mut q, true);
             q
         }
-        Workless::EveryConstraintForce => load_generalized_forces(model),
+        Workless::EveryConstraintForce => {
+            let mut q = load_generalized_forces(model);
+            // Friction does work wherever its site slips: the slip rates stay speeds.
+            crate::equations::friction::add_friction_forces(model, &mut q, false);
+            q
+        }
     };
     let generalized_joint_loads = speeds_forces(model, joint_loads);
     let all_bodies: Vec<_> = model.order.clone();
@@ -237,14 +258,15 @@ fn speeds_forces(model: &Model, q: Vec<Expr>) -> Vec<Expr> {
         .collect()
 }
 
-/// Rows for an auxiliary speed along each reaction component of joint `j`: the subtree
-/// outboard of the joint moves rigidly along (or about) the component's direction.
+/// Rows for an auxiliary speed along each reaction component of joint `j` (those in
+/// `only`, where given): the subtree outboard of the joint moves rigidly along (or about)
+/// the component's direction.
 pub(crate) fn auxiliary_rows(
     model: &Model,
     actions: &[Action],
     inertia: &Inertia,
     unknowns: &[Symbol],
-    j: usize,
+    (j, only): (usize, Option<&[Symbol]>),
 ) -> Vec<Equation> {
     let frames = &model.frames;
     let joint = &model.problem.joints[j];
@@ -253,8 +275,11 @@ pub(crate) fn auxiliary_rows(
     let mut rows = Vec::new();
     let site = &model.sites[j];
     for component in &site.reactions {
-        if crate::equations::friction::is_slider_friction(model, j, &component.unknown(&site.name))
-        {
+        let unknown = component.unknown(&site.name);
+        if only.is_some_and(|only| !only.contains(&unknown)) {
+            continue;
+        }
+        if crate::equations::friction::is_slider_friction(model, j, &unknown) {
             // Along the axis the auxiliary speed would be the joint's own: the row is the
             // coordinate's.
             continue;

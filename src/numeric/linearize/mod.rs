@@ -117,7 +117,7 @@ fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
         &derivation.actions,
         derivation.inertia(),
         &accelerations,
-        &[],
+        (&[], &[]),
     )
     .into_iter()
     .map(|row| row.expression)
