@@ -253,7 +253,8 @@ fn the_particles_augmented_velocities_are_written_as_equations() {
     let text = markdown("validation/double-pendulum-particles-absolute.json");
     let (p1x, p1y) = (latex_unit_vector("P1", 0), latex_unit_vector("P1", 1));
     let (p2x, p2y) = (latex_unit_vector("P2", 0), latex_unit_vector("P2", 1));
-    let (v1, v2) = ("{}^{N}\\mathbf{v}^{P_{1}^*}", "{}^{N}\\mathbf{v}^{P_{2}^*}");
+    // A particle is a point, named without the mass centre's star.
+    let (v1, v2) = ("{}^{N}\\mathbf{v}^{P_{1}}", "{}^{N}\\mathbf{v}^{P_{2}}");
     let row3 = section(&text, "**3. ", "**4. ");
     assert!(row3.contains(&format!(
         "{v1} = L_{{1}} \\dot{{q}}_{{1}} {p1x} + u_{{3}}\\, {p1y},\\; {v2} = {v1} + L_{{2}} \\dot{{q}}_{{2}} {p2x}$"

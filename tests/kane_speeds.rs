@@ -3,8 +3,8 @@
 //! constraint force among the unknowns unless asked for, and the q'' of Newton–Euler; the
 //! rolling coin's three equations against a derivation by hand.
 
-use mbd_tutor::equations::rows::Sum;
 use mbd_tutor::equations::friction::{friction_forces, normal_forces};
+use mbd_tutor::equations::rows::Sum;
 use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::mechanics::independent::KeptForces;
 use mbd_tutor::numeric::evaluate::Compiled;
@@ -68,7 +68,10 @@ fn requested_components(derivation: &Derivation) -> Vec<Symbol> {
     let friction = friction_forces(model);
     let sites = &model.problem.find_reactions;
     let asked = mbd_tutor::equations::system::reaction_unknowns(model, sites);
-    asked.into_iter().filter(|u| !friction.contains(u)).collect()
+    asked
+        .into_iter()
+        .filter(|u| !friction.contains(u))
+        .collect()
 }
 
 /// Kane's plan: a row per independent speed, per drive, per requested component and per
@@ -350,8 +353,15 @@ fn with_friction_kane_takes_the_independent_speeds_and_an_auxiliary_row_per_norm
             assert!(
                 kane.rows
                     .iter()
-                    .skip(kane.dependent_speeds.as_ref().expect("speeds").independent.len())
-                    .any(|r| matches!(r.sum, Sum::Generalized { .. }) && r.unknowns.contains(&normal)),
+                    .skip(
+                        kane.dependent_speeds
+                            .as_ref()
+                            .expect("speeds")
+                            .independent
+                            .len()
+                    )
+                    .any(|r| matches!(r.sum, Sum::Generalized { .. })
+                        && r.unknowns.contains(&normal)),
                 "{name}: no auxiliary row brings in {normal:?}"
             );
         }

@@ -123,7 +123,10 @@ pub fn is_slider_friction(model: &Model, j: usize, unknown: &Symbol) -> bool {
 /// speed along it.
 pub fn kept_forces(model: &Model, asked: &[Symbol]) -> Vec<Symbol> {
     let mut kept: Vec<Symbol> = Vec::new();
-    for unknown in friction_forces(model).into_iter().chain(normal_forces(model)) {
+    for unknown in friction_forces(model)
+        .into_iter()
+        .chain(normal_forces(model))
+    {
         if !asked.contains(&unknown) && !kept.contains(&unknown) {
             kept.push(unknown);
         }

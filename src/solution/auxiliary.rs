@@ -42,7 +42,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     let centres = |separator: &str, each: &dyn Fn(&str) -> String| -> String {
         subtree
             .iter()
-            .map(|&b| each(&latex_name(problem.body_name(b))))
+            .map(|&b| each(&super::tex::centre_tex(&derivation.model, b)))
             .collect::<Vec<_>>()
             .join(separator)
     };
@@ -50,7 +50,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     let first = first_row_at(derivation, row, site, reaction.kind).filter(|&first| first < r);
     let motion = match (reaction.kind, first) {
         (ComponentKind::Force, Some(first)) => {
-            let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}^*}}_{{{r}}}"));
+            let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}}}_{{{r}}}"));
             return Some(format!(
                 "As in row {first}, along ${d}$: the partial velocities of ${u}$ are ${partials} = {d}$, and only ${unknown}$ and the forces on ${bodies}$ from outside do work with them."
             ));
@@ -61,7 +61,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
             ));
         }
         (ComponentKind::Force, None) => {
-            let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}^*}}_{{{r}}}"));
+            let partials = centres(" = ", &|b| format!("\\mathbf{{v}}^{{{b}}}_{{{r}}}"));
             let angular = if particles_only {
                 String::new()
             } else {
@@ -76,9 +76,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
         }
         (ComponentKind::Moment, None) => {
             let partials = centres(", ", &|b| {
-                format!(
-                    "\\mathbf{{v}}^{{{b}^*}}_{{{r}}} = {d} \\times \\mathbf{{r}}^{{{point} {b}^*}}"
-                )
+                format!("\\mathbf{{v}}^{{{b}}}_{{{r}}} = {d} \\times \\mathbf{{r}}^{{{point} {b}}}")
             });
             format!(
                 "Augmented velocities: ${bodies}$ is let turn about ${point}$ with angular speed ${u}$ about ${d}$, so each of its bodies gains ${u}\\, {d}$ and each point $X$ of it ${u}\\, {d} \\times \\mathbf{{r}}^{{{point} X}}$: the partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
@@ -118,22 +116,22 @@ fn augmented_centres(derivation: &Derivation, bodies: &[BodyId], gain: &str) -> 
     let mut written = Vec::new();
     for &b in bodies {
         let v = &model.bodies[b.0].center.velocity;
-        let name = latex_name(model.problem.body_name(b));
+        let name = super::tex::centre_tex(model, b);
         // Chained from its parent's centre as step 4 writes it: from a centre written
         // before it, which has the give-way already, or from one that does not move with it.
         let text = if let Some((parent, chained)) =
             super::kinematics::velocity_from_parent_centre(model, b)
         {
             if bodies.contains(&parent) {
-                format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {chained}")
+                format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}}} = {chained}")
             } else {
-                format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {chained} + {gain}")
+                format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}}} = {chained} + {gain}")
             }
         } else if v.is_zero() {
-            format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {gain}")
+            format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}}} = {gain}")
         } else {
             let own = super::tex::shortest_tex(model, v, b);
-            format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} = {own} + {gain}")
+            format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}}} = {own} + {gain}")
         };
         if crate::render::math_width::printed_width(&text) as f64
             > crate::render::line_break::LINE_SYMBOLS

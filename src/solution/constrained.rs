@@ -115,9 +115,10 @@ fn contact_velocity_tex(model: &Model, site: usize) -> String {
         Vector::unit(body, axis).scaled(&(&contact.child_offset[axis] - &center[axis]))
     }));
     let name = latex_name(model.problem.body_name(body));
+    let centre = super::tex::centre_tex(model, body);
     let point = latex_name(&contact.name);
     format!(
-        "{} = {{}}^{{N}}\\mathbf{{v}}^{{{name}^*}} + {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} \\times \\mathbf{{r}}^{{{name}^* {point}}}, \\quad \\mathbf{{r}}^{{{name}^* {point}}} = {}",
+        "{} = {{}}^{{N}}\\mathbf{{v}}^{{{centre}}} + {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} \\times \\mathbf{{r}}^{{{centre} {point}}}, \\quad \\mathbf{{r}}^{{{centre} {point}}} = {}",
         point_velocity_tex(model, site),
         super::tex::vector_tex(model, &arm)
     )
@@ -208,7 +209,7 @@ pub fn dependent_speeds(
                 std::array::from_fn(|k| crate::symbolic::eval::eval(&c[k], &values))
             })
             .collect();
-        let name = latex_name(problem.body_name(body));
+        let centre = super::tex::centre_tex(model, body);
         for (k, &r) in reducer.rates.iter().enumerate() {
             let mut v = numbers[r];
             for (d, &s) in dependent.iter().enumerate() {
@@ -222,7 +223,7 @@ pub fn dependent_speeds(
                 .map(|(axis, x)| (x, format!("\\hat{{\\mathbf{{n}}}}_{{{axis}}}")));
             let terms = numeric_sum(units, 1e-13).unwrap_or("\\mathbf{0}".into());
             reduced.push(format!(
-                "\\tilde{{\\mathbf{{v}}}}^{{{name}^*}}_{{{}}} = {terms}",
+                "\\tilde{{\\mathbf{{v}}}}^{{{centre}}}_{{{}}} = {terms}",
                 rate(r)
             ));
         }

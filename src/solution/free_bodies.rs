@@ -104,11 +104,12 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
     let name = model.problem.body_name(body);
     // In math a name is set as a symbol (`rod_a` would be a double subscript).
     let symbol = latex_name(name);
+    let centre = super::tex::centre_tex(model, body);
     let mass = latex(&model.bodies[body.0].mass);
     view.inertia.push(Force {
         label: format!("inertia force of {name}"),
-        vector_tex: Math::from(format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}}")),
-        point_tex: Math::from(format!("\\text{{at }} {symbol}^*")),
+        vector_tex: Math::from(format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{centre}}}")),
+        point_tex: Math::from(format!("\\text{{at }} {centre}")),
     });
     if is_particle(model, body) {
         // A particle has no rotational inertia: no inertia torque to write.

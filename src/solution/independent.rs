@@ -91,7 +91,8 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
                 },
                 body: problem.body_name(*body).to_string(),
                 velocity_tex: Math::from(format!(
-                    "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{symbol}^*}}_{{{}}} = {v_tex}",
+                    "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
+                    super::tex::centre_tex(model, *body),
                     r + 1
                 )),
                 omega_tex: if particle {

@@ -99,7 +99,8 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
                 },
                 body: name.to_string(),
                 velocity_tex: Math::from(format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}}_{{{}}} = {v_tex}",
+                    "{{}}^{{N}}\\mathbf{{v}}^{{{}}}_{{{}}} = {v_tex}",
+                    super::tex::centre_tex(&derivation.model, *body),
                     r + 1
                 )),
                 // A particle has no inertia torque: its partial angular velocity does nothing.

@@ -43,6 +43,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             let state = &model.bodies[body.0];
             let name = model.problem.body_name(body);
             let symbol = latex_name(name);
+            let centre = super::tex::centre_tex(model, body);
             let partials = by_partial_velocities(model, &inertia.acceleration[body.0], body);
             let direct_velocity = match &partials {
                 Some(named) => shorter(&state.center.velocity, named, body),
@@ -63,7 +64,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             // Written out over lines, the acceleration repeats the velocity's coefficients;
             // by the rule it is one line when its rest is named.
             if partials.is_some() && printed_width(&acceleration) > LINE {
-                let rule = by_the_rule(model, &inertia.acceleration[body.0], body, &symbol);
+                let rule = by_the_rule(model, &inertia.acceleration[body.0], body, &centre);
                 if let Some(rule) = rule.filter(|r| printed_width(r) <= LINE) {
                     acceleration = rule;
                     by_partials = true;
@@ -91,8 +92,8 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                 None => from_parent(model, body, Motion::Velocity, direct_velocity),
             };
             let (velocity_tex, acceleration_tex) = one_line_if_short(
-                format!("{{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}} = {velocity}"),
-                format!("{{}}^{{N}}\\mathbf{{a}}^{{{symbol}^*}} = {acceleration}"),
+                format!("{{}}^{{N}}\\mathbf{{v}}^{{{centre}}} = {velocity}"),
+                format!("{{}}^{{N}}\\mathbf{{a}}^{{{centre}}} = {acceleration}"),
             );
             let (pin_velocity_tex, pin_acceleration_tex) = match pin {
                 // A pin at the parent's mass centre (a bob's) has that centre's motion,
@@ -154,9 +155,9 @@ fn position_line(model: &Model, body: BodyId) -> String {
         return String::new();
     }
     format!(
-        "\\mathbf{{r}}^{{{} {}^*}} = {}",
+        "\\mathbf{{r}}^{{{} {}}} = {}",
         latex_name(&site.name),
-        latex_name(model.problem.body_name(body)),
+        super::tex::centre_tex(model, body),
         super::tex::vector_tex(model, &from_pin)
     )
 }
@@ -229,7 +230,7 @@ const LINE: usize = crate::render::line_break::LINE_SYMBOLS as usize;
 /// A long acceleration as Kane writes it, `Σ_r ᴺv_r q̈_r + ᴺã`: the q̈ coefficients are the
 /// partial velocities the velocity above is written with (∂a/∂q̈_r = ∂v/∂q̇_r), so only the
 /// rest, ã, is new. `None` when no rest is left to write.
-fn by_the_rule(model: &Model, acceleration: &Vector, body: BodyId, symbol: &str) -> Option<String> {
+fn by_the_rule(model: &Model, acceleration: &Vector, body: BodyId, centre: &str) -> Option<String> {
     let problem = model.problem;
     let accelerations = problem.speed_symbols(2);
     let mut rest = Vec::with_capacity(3);
@@ -247,7 +248,7 @@ fn by_the_rule(model: &Model, acceleration: &Vector, body: BodyId, symbol: &str)
     (!rest_tex.is_empty()).then(|| {
         let sign = if rest_tex.starts_with('-') { "" } else { "+ " };
         format!(
-            "\\sum_{{r}} {{}}^{{N}}\\mathbf{{v}}^{{{symbol}^*}}_{{r}}\\, {speed} {sign}{rest_tex}"
+            "\\sum_{{r}} {{}}^{{N}}\\mathbf{{v}}^{{{centre}}}_{{r}}\\, {speed} {sign}{rest_tex}"
         )
     })
 }
@@ -284,11 +285,11 @@ fn from_parent(model: &Model, body: BodyId, motion: Motion, direct: String) -> S
             Motion::Velocity => "v",
             Motion::Acceleration => "a",
         },
-        latex_name(model.problem.body_name(parent)),
+        super::tex::centre_tex(model, parent),
     );
     let text = plus_difference(
         model,
-        format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{parent_name}^*}}"),
+        format!("{{}}^{{N}}\\mathbf{{{letter}}}^{{{parent_name}}}"),
         &difference,
     );
     if text.len() < direct.len() {
@@ -383,7 +384,7 @@ fn pin_symbol(model: &Model, site: usize, motion: Motion) -> String {
     };
     let point = if at_parent_centre(model, site) {
         let parent = model.sites[site].parent;
-        format!("{}^*", latex_name(model.problem.body_name(parent)))
+        super::tex::centre_tex(model, parent)
     } else {
         latex_name(&model.sites[site].name)
     };

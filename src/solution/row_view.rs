@@ -144,7 +144,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 &derivation.model,
                 &problem.find_reactions,
             );
-            let why = if forces.iter().all(|f| normals.contains(f) && !asked.contains(f)) {
+            let why = if forces
+                .iter()
+                .all(|f| normals.contains(f) && !asked.contains(f))
+            {
                 "(an auxiliary speed along the normal force, which the friction force $\\mu |N|$ is written with: it relaxes the one constraint that force enforces, and brings in that force, and the friction that works along the motion)"
             } else {
                 "(an auxiliary speed along the force asked for: it relaxes the one constraint that force enforces, and brings in that force alone)"

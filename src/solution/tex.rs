@@ -155,6 +155,18 @@ pub(super) fn unknowns_tex(unknowns: &[Symbol]) -> String {
     list_by_runs(&items, ", ", "\\dots")
 }
 
+/// A body's mass centre as LaTeX, `B^*`; a particle (a body with mass and no moment of
+/// inertia) is a point, named as the body, `P_{1}`, as textbooks name a particle.
+pub fn centre_tex(model: &Model, body: BodyId) -> String {
+    let name = latex_name(model.problem.body_name(body));
+    let light = crate::mechanics::massless::is_massless(model, body);
+    if !light && super::independent::is_particle(model, body) {
+        name
+    } else {
+        format!("{name}^*")
+    }
+}
+
 /// A moment point as LaTeX: `O`, or `A^{*}` for the mass centre `A*`.
 pub fn point_tex(point: &str) -> String {
     match point.strip_suffix('*') {

@@ -95,6 +95,26 @@ pub fn latex_collected(e: &Expr) -> String {
         if coefficient.is_zero() {
             continue;
         }
+        // Keyed by a coordinate it only divides by (1/y): a fraction of the whole, not a
+        // trailing `\frac{1}{y}`.
+        let divides = square.is_none()
+            && (keys.iter().flat_map(|k| k.factors().to_vec()))
+                .all(|f| super::collect_constants::is_divisor(&f));
+        if divides {
+            let whole = mul(std::iter::once(coefficient.clone()).chain(keys.iter().cloned()));
+            let text = if coefficient.terms().len() == 1 {
+                signed_term(&whole, "").trim_end().to_string()
+            } else {
+                let (common, inner) = pull_common_factor(&coefficient);
+                factored(
+                    &mul(std::iter::once(common).chain(keys.iter().cloned())),
+                    &inner,
+                    "",
+                )
+            };
+            push_signed(&mut out, text);
+            continue;
+        }
         let key_text = square.as_ref().map_or_else(|| keys_tex(keys), square_tex);
         let text = if coefficient.terms().len() == 1 {
             signed_term(&coefficient, &key_text)

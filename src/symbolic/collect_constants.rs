@@ -87,6 +87,16 @@ pub(super) fn constants_collected_terms(e: &Expr) -> Option<Vec<String>> {
 /// A sum of constants times a sum of varying parts: `(c + w − x_H) (ω_y² + ω_z²)`.
 fn collected_text(constant: &Expr, varying: &Expr) -> String {
     let (common, sum) = pull_common_factor(constant);
+    // A varying part that only divides joins the common factor's fraction, `\frac{g m}{y}
+    // (r − R)`, rather than trailing as `(r − R) \frac{1}{y}`.
+    if !varying.is_one() && varying.factors().iter().all(is_divisor) {
+        let common = mul([common, varying.clone()]);
+        return if sum.terms().len() > 1 {
+            factored(&common, &sum, "")
+        } else {
+            signed_term(&mul([common, sum]), "")
+        };
+    }
     let key = if varying.is_one() {
         String::new()
     } else if varying.terms().len() > 1 {
@@ -99,6 +109,12 @@ fn collected_text(constant: &Expr, varying: &Expr) -> String {
     } else {
         signed_term(&mul([common, sum]), &key)
     }
+}
+
+/// Whether `factor` is a power with a negative exponent: it only divides.
+pub(super) fn is_divisor(factor: &Expr) -> bool {
+    matches!(factor.node(), Node::Pow(_, exponent)
+        if exponent.as_number().is_some_and(Number::is_negative))
 }
 
 /// The length of LaTeX as a reader sees it: `\left(` and `\right)` are one character each.

@@ -178,7 +178,9 @@ pub fn to_text(problem: &Problem, method: &str, l: &Linearization) -> String {
                 fixed(m.natural_frequency_hz),
                 fixed(m.damped_frequency_hz),
                 fixed(m.damping_ratio),
-                shape_text(&names, &m.shape)
+                // The shape's entries are the state's coordinates, which with constraints
+                // are the independent ones (`x`, `θ`), not the first of every coordinate.
+                shape_text(&l.variables, &m.shape)
             ));
         }
     }

@@ -90,7 +90,13 @@ pub fn equations(
         rows.extend(auxiliary_rows(model, actions, inertia, unknowns, (j, None)));
     }
     for j in kept_joints(model, reaction_joints, kept) {
-        rows.extend(auxiliary_rows(model, actions, inertia, unknowns, (j, Some(kept))));
+        rows.extend(auxiliary_rows(
+            model,
+            actions,
+            inertia,
+            unknowns,
+            (j, Some(kept)),
+        ));
     }
     rows
 }

@@ -67,13 +67,44 @@ impl Label {
     }
 }
 
-/// The plain form of simple LaTeX math: `F^{\mathrm{hub}}_{x}` -> `F^hub_x`.
+/// The plain form of simple LaTeX math: `F^{\mathrm{hub}}_{x}` -> `F^hub_x`. A script
+/// with a script inside (a site named `rear_contact`) keeps its braces, read as one run:
+/// `F^{\mathrm{rear}_{\mathrm{contact}}}_{n}` -> `F^{rear_contact}_n`.
 pub fn plain_of(tex: &str) -> String {
     let mut out = String::new();
     let mut chars = tex.chars().peekable();
+    // Open groups, whether each is a script's; where the outermost script group opened in
+    // `out`, and whether a script was nested in it.
+    let mut groups: Vec<bool> = Vec::new();
+    let mut script_next = false;
+    let mut outermost: Option<(usize, bool)> = None;
     while let Some(c) = chars.next() {
         match c {
-            '{' | '}' => {}
+            '^' | '_' => {
+                if let Some((_, nested)) = outermost.as_mut() {
+                    *nested = true;
+                }
+                script_next = true;
+                out.push(c);
+                continue;
+            }
+            '{' => {
+                if script_next && outermost.is_none() {
+                    outermost = Some((out.len(), false));
+                }
+                groups.push(script_next);
+            }
+            '}' => {
+                groups.pop();
+                let closes = outermost.is_some() && !groups.iter().any(|&script| script);
+                if let (true, Some((start, nested))) = (closes, outermost) {
+                    if nested {
+                        out.insert(start, '{');
+                        out.push('}');
+                    }
+                    outermost = None;
+                }
+            }
             '\\' => {
                 let mut command = String::new();
                 while let Some(&n) = chars.peek() {
@@ -101,6 +132,7 @@ pub fn plain_of(tex: &str) -> String {
             }
             _ => out.push(c),
         }
+        script_next = false;
     }
     out.split_whitespace().collect::<Vec<_>>().join(" ")
 }
@@ -317,5 +349,9 @@ mod tests {
         assert_eq!(plain_of("M^{\\mathrm{hub}}_{2}"), "M^hub_2");
         assert_eq!(plain_of("m_{1} g"), "m_1 g");
         assert_eq!(plain_of("I^{A} \\alpha^{A}"), "I^A α^A");
+        assert_eq!(
+            plain_of("F^{\\mathrm{rear}_{\\mathrm{contact}}}_{n}"),
+            "F^{rear_contact}_n"
+        );
     }
 }

@@ -234,8 +234,13 @@ pub(super) fn label_spans(label: &Label) -> String {
     let plain = label.plain.as_str();
     // Words (a load's name) are not scripts.
     let words = label.tex.starts_with("\\text{");
+    // Inside braces (a script with a script inside), every character is the script's.
+    let mut braced = 0usize;
     for c in plain.chars() {
         match c {
+            '{' if !words => braced += 1,
+            '}' if !words && braced > 0 => braced -= 1,
+            _ if braced > 0 => run.push(c),
             '^' if !words => {
                 flush(&mut out, &mut run, &mut shift, script);
                 script = -5.0;

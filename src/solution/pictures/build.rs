@@ -56,7 +56,7 @@ impl Setting<'_, '_, '_> {
             PointRef::Named(i) => (Role::Point, latex_name(&problem.points[i].name)),
             PointRef::MassCenter(b) => (
                 Role::Center,
-                format!("{}^{{*}}", latex_name(problem.body_name(b))),
+                crate::solution::tex::centre_tex(&self.derivation.model, b),
             ),
             PointRef::Origin(b) => (
                 Role::Point,
@@ -405,10 +405,16 @@ impl Setting<'_, '_, '_> {
                         unit(direction)?;
                         let symbol = c.unknown(&joint.name);
                         // Plain as the joint is named: `F^P2_x` for `F^{P_{2}}_{x}`.
-                        let plain = if c.axis == crate::symbolic::Axis::Member {
-                            format!("T^{}", joint.name)
+                        // A name with an underscore (`rear_contact`) is braced, one run.
+                        let name = if joint.name.contains('_') {
+                            format!("{{{}}}", joint.name)
                         } else {
-                            format!("{}^{}_{}", c.kind.letter(), joint.name, c.axis.subscript())
+                            joint.name.clone()
+                        };
+                        let plain = if c.axis == crate::symbolic::Axis::Member {
+                            format!("T^{name}")
+                        } else {
+                            format!("{}^{name}_{}", c.kind.letter(), c.axis.subscript())
                         };
                         let label = Label {
                             plain,
@@ -495,7 +501,10 @@ impl Setting<'_, '_, '_> {
         if unit(force).is_some() && norm(force) > 1e-9 * scale_of {
             out.push(Arrow {
                 kind: Kind::Inertia,
-                label: Label::from_tex(&format!("{mass} \\mathbf{{a}}^{{{name}^{{*}}}}")),
+                label: Label::from_tex(&format!(
+                    "{mass} \\mathbf{{a}}^{{{}}}",
+                    crate::solution::tex::centre_tex(model, body)
+                )),
                 at_id: at_id.clone(),
                 at,
                 direction: force,
