@@ -95,11 +95,14 @@ pub fn latex_collected(e: &Expr) -> String {
         if coefficient.is_zero() {
             continue;
         }
-        // Keyed by a coordinate it only divides by (1/y): a fraction of the whole, not a
-        // trailing `\frac{1}{y}`.
+        // Keyed by a coordinate it divides by (1/y, s₁c₃/Δ): one fraction of the whole,
+        // `\frac{a d g m s_{1} c_{3}}{2 Δ}`, not a fraction times a fraction or a trailing
+        // `\frac{1}{y}`.
+        let key_factors: Vec<Expr> = keys.iter().flat_map(|k| k.factors().to_vec()).collect();
+        let divisor = |f: &Expr| super::collect_constants::is_divisor(f);
         let divides = square.is_none()
-            && (keys.iter().flat_map(|k| k.factors().to_vec()))
-                .all(|f| super::collect_constants::is_divisor(&f));
+            && (key_factors.iter().all(divisor)
+                || (coefficient.terms().len() == 1 && key_factors.iter().any(divisor)));
         if divides {
             let whole = mul(std::iter::once(coefficient.clone()).chain(keys.iter().cloned()));
             let text = if coefficient.terms().len() == 1 {
