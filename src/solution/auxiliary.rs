@@ -1,4 +1,4 @@
-//! Kane's auxiliary speeds as Kane and Levinson teach them (ch. 5): for a reaction asked
+//! Kane's auxiliary speeds as Kane and Levinson teach them (ch. 4): for a reaction asked
 //! for, the augmented velocities that let the joint give way along it, their partial
 //! velocities, which forces drop out and why, and the accelerations at the speed zero.
 

@@ -279,7 +279,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
             let mut note = if derivation.model.constraints.friction.is_empty() {
                 format!("One row per {speeds}, and one per requested reaction component through an auxiliary speed.")
             } else {
-                format!("One row per {speeds}, one per requested reaction component and one per normal force at a rough contact through an auxiliary speed; each rough contact's friction force from its no-slip row (or, while it slips, the sliding law).")
+                format!("One row per {speeds}; one per auxiliary speed (each normal force at a rough contact, and each other reaction component asked for); the constraints, differentiated; and one per rough contact for its friction force: its no-slip row while it sticks, the sliding law while it slips.")
             };
             if let Some(order) = super::kane::solve_order_note(derivation) {
                 note = format!("{note} {order}");

@@ -167,9 +167,13 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
         )
     };
     let mut paragraphs = vec![format!(
-        "The constraints fix the rates {} once the others are known, so Kane's method takes as generalized speeds only the rates that stay free, the independent speeds {}{}. The velocity constraints, solved for the dependent rates, give $\\dot{{q}}_D = C\\,\\dot{{q}}_I${using}:",
+        "The constraints fix the rates {} once the others are known, so Kane's method takes as generalized speeds only the rates that stay free, {}{}. The velocity constraints, solved for the dependent rates, give $\\dot{{q}}_D = C\\,\\dot{{q}}_I${using}:",
         listed(&speeds.dependent),
-        listed(&speeds.independent),
+        if speeds.independent.len() == 1 {
+            format!("the independent speed {}", listed(&speeds.independent))
+        } else {
+            format!("the independent speeds {}", listed(&speeds.independent))
+        },
         if speeds.prescribed.is_empty() {
             String::new()
         } else {
@@ -201,16 +205,25 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
 fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
     let model = &derivation.model;
     let problem = model.problem;
-    let mut out = vec![
-        "The reactions of the joints, closures and contacts, and whatever enforces the other constraints, drop out of these equations: where such a force acts, the two bodies it joins move alike along it in every constrained motion, so $\\tilde{\\mathbf{v}}_r$ of its point relative to the other body has no component along it, and it does no work. No constraint force is an unknown unless it is asked for.".to_string(),
-    ];
     let friction = &model.constraints.friction;
-    let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
-    if asked || !friction.is_empty() {
-        out.push("A force that is asked for is brought in by an auxiliary speed along it (Kane and Levinson, ch. 5): the constraint that force enforces is relaxed by a speed $u$ along it, so that the augmented velocity of each body is its velocity plus $u$ times a partial velocity that moves the body along the force (the dependent rates still keep every other constraint). The partial velocities of the auxiliary speed are those; only that force does work with them, and the row is written with the accelerations taken at $u = 0$, so the motion is the one above. A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.".to_string());
-    }
+    let unless = if friction.is_empty() {
+        "No constraint force is an unknown unless it is asked for."
+    } else {
+        "No other constraint force is an unknown unless it is asked for or, at a rough contact, is the normal force (below)."
+    };
+    let mut out = vec![format!(
+        "The reactions of the joints, closures and contacts, and whatever enforces the other constraints, drop out of these equations: where such a force acts, the two bodies it joins move alike along it in every constrained motion, so $\\tilde{{\\mathbf{{v}}}}_r$ of its point relative to the other body has no component along it, and it does no work. {unless}"
+    )];
     if !friction.is_empty() {
         out.push(friction_note(derivation));
+    }
+    let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
+    if asked || !friction.is_empty() {
+        let mut text = "A force that is asked for, or that the sliding law needs, is brought in by an auxiliary speed along it (Kane and Levinson, ch. 4, bringing noncontributing forces into evidence): the constraint that force enforces is relaxed by a speed $u$ along it, so that the augmented velocity of each body is its velocity plus $u$ times a partial velocity that moves the body along the force (the dependent rates still keep every other constraint). The partial velocities of the auxiliary speed are those; only that force (and a friction force, where that motion slides) does work with them, and the row is written with the accelerations taken at $u = 0$, so the motion is the one above.".to_string();
+        if !speeds.prescribed.is_empty() {
+            text.push_str(" A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.");
+        }
+        out.push(text);
     }
     let n = problem.coordinates.len();
     let constraint_rows = model.constraints.rows.len();
@@ -245,9 +258,12 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
         out.push(solve);
     } else {
         // The friction forces are in the rows of the speeds: nothing is solved first.
+        let forces = |k: usize, one: &str, many: &str| if k == 1 { one } else { many }.to_string();
+        let normals = crate::equations::friction::normal_forces(model).len();
         out.push(format!(
-            "Solving: the {} rows hold the $\\ddot{{q}}$, the friction and the normal forces together, and are solved as one system.",
-            derivation.system.unknowns.len()
+            "Solving: the rows of the speeds and the auxiliary speeds and the differentiated constraints, with each rough contact's no-slip row while it sticks or the sliding law in its place while it slips (said after the equations), are solved as one system for the $\\ddot{{q}}$, the {} and the {}.",
+            forces(friction.len(), "friction force", "friction forces"),
+            forces(normals, "normal force", "normal forces"),
         ));
     }
     out
@@ -267,17 +283,22 @@ fn friction_note(derivation: &Derivation) -> String {
     let sites: Vec<String> = (model.constraints.friction.iter())
         .map(|f| format!("${}$", latex_name(&f.name)))
         .collect();
-    let (is, does) = if friction.len() == 1 {
-        ("is", "does")
+    let one = friction.len() == 1;
+    let (force, is, does) = if one {
+        ("force", "is", "does")
     } else {
-        ("are", "do")
+        ("forces", "are", "do")
+    };
+    let (normal, does_no, not_in, each) = if normals.len() == 1 {
+        ("force", "does", "it is", "it is")
+    } else {
+        ("forces", "do", "they are", "each is")
     };
     format!(
-        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds; the friction force {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (below, after the equations). The normal force {} that the law is written with {} brought in by an auxiliary speed along it, as a force asked for is.",
+        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds: the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} that the law is written with {does_no} no work in any motion the constraints allow, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
         tex(&friction),
         words(&sites),
         tex(&normals),
-        if normals.len() == 1 { "is" } else { "are" },
     )
 }
 

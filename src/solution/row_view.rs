@@ -140,21 +140,23 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 .cloned()
                 .collect();
             let normals = crate::equations::friction::normal_forces(&derivation.model);
-            let asked = crate::equations::system::reaction_unknowns(
-                &derivation.model,
-                &problem.find_reactions,
-            );
-            let why = if forces
-                .iter()
-                .all(|f| normals.contains(f) && !asked.contains(f))
-            {
-                "(an auxiliary speed along the normal force, which the friction force $\\mu |N|$ is written with: it relaxes the one constraint that force enforces, and brings in that force, and the friction that works along the motion)"
+            let along = if forces.iter().all(|f| normals.contains(f)) {
+                "the normal force, which the sliding law needs"
             } else {
-                "(an auxiliary speed along the force asked for: it relaxes the one constraint that force enforces, and brings in that force alone)"
+                "the force asked for"
             };
+            let slides = row.unknowns.iter().any(|u| friction.contains(u));
+            let brings = if slides {
+                "and brings in that force, with the friction forces that work in that motion"
+            } else {
+                "and brings in that force alone"
+            };
+            let why = format!(
+                "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
+            );
             (
                 format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
-                why.to_string(),
+                why,
             )
         } else if r <= problem.coordinates.len() {
             (

@@ -2,7 +2,7 @@
 //! `F̃_r + F̃*_r = 0` per independent speed, formed with the constrained partial velocities
 //! `ṽ_r = v_r + Σ_s C_sr v_s`, in which no constraint or contact force appears; one row per
 //! prescribed coordinate for its drive; one per requested reaction component, through an
-//! auxiliary speed along it (ch. 5). The differentiated constraints give the dependent q''.
+//! auxiliary speed along it (ch. 4). The differentiated constraints give the dependent q''.
 //!
 //! Since `F̃_r = Σ F · ṽ_r = F_r + Σ_s C_sr F_s`, each row is the combination of the rows of
 //! the coordinates' rates that the motion of its speed weighs them by, formed without the
