@@ -145,6 +145,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             } else {
                 "the force asked for"
             };
+            if !by_name {
+                // One force in the row: solved for it, as a textbook ends an auxiliary row.
+                solved_tex = solved_for_reaction(&simplified, &forces);
+            }
             let slides = row.unknowns.iter().any(|u| friction.contains(u));
             let brings = if slides {
                 "and brings in that force, with the friction forces that work in that motion"
