@@ -19,6 +19,16 @@ pub fn is_massless(model: &Model, body: BodyId) -> bool {
     body != BodyId::GROUND && eval(&model.problem.body(body).mass, &model.values) == 0.0
 }
 
+/// Whether a body is a particle: no central moment of inertia, so no inertia torque and
+/// no partial angular velocity worth printing.
+pub fn is_particle(model: &Model, body: BodyId) -> bool {
+    model.bodies[body.0]
+        .inertia
+        .iter()
+        .flatten()
+        .all(crate::symbolic::Expr::is_zero)
+}
+
 /// A massless body that coordinate `i` moves (its joint's child or a body outboard of it).
 pub fn massless_body_moved_by(model: &Model, i: usize) -> Option<BodyId> {
     let j = model

@@ -38,7 +38,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     let u = format!("u_{{{r}}}");
     let particles_only = subtree
         .iter()
-        .all(|&b| super::independent::is_particle(&derivation.model, b));
+        .all(|&b| crate::mechanics::massless::is_particle(&derivation.model, b));
     let centres = |separator: &str, each: &dyn Fn(&str) -> String| -> String {
         subtree
             .iter()

@@ -1,9 +1,9 @@
 //! Step 2's free bodies: each with the forces and couples that act on it from outside, the
 //! distance forces, and the inertia forces and torques of its bodies.
 
-use super::independent::is_particle;
 use super::tex::{bodies_name, bodies_tex, initial_sign, vector_tex};
 use crate::equations::Derivation;
+use crate::mechanics::massless::is_particle;
 use crate::mechanics::model::vector_of;
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{ActionKind, Category, Source};

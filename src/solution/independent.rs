@@ -6,13 +6,15 @@
 use crate::equations::kane::partials;
 use crate::equations::Derivation;
 use crate::mechanics::independent::DependentSpeeds as Speeds;
+use crate::mechanics::massless::is_particle;
 use crate::mechanics::{Model, Vector};
 use crate::render::context::{DependentSpeeds, PartialVelocity};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_collected;
+use crate::symbolic::linear::linear_split;
 use crate::symbolic::print::{latex, latex_name};
 use crate::symbolic::roots::roots_of_squares;
-use crate::symbolic::{simplify, Expr, Symbol};
+use crate::symbolic::{add, simplify, Expr, Symbol};
 
 /// `u_k = \dot{q}` of independent speed `r` (0-based).
 pub fn speed_tex(derivation: &Derivation, speeds: &Speeds, r: usize) -> String {
@@ -23,16 +25,6 @@ pub fn speed_tex(derivation: &Derivation, speeds: &Speeds, r: usize) -> String {
             .coordinate_expr(speeds.independent[r], 1),
     );
     format!("u_{{{}}} = {rate}", r + 1)
-}
-
-/// Whether a body is a particle: no central moment of inertia, so no inertia torque and
-/// no partial angular velocity worth printing.
-pub fn is_particle(model: &Model, body: crate::problem::BodyId) -> bool {
-    model.bodies[body.0]
-        .inertia
-        .iter()
-        .flatten()
-        .all(Expr::is_zero)
 }
 
 /// The constrained partial velocities and partial angular velocities of every body, one
@@ -103,8 +95,62 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
                         r + 1
                     ))
                 },
+                point: false,
             });
         }
+        out.extend(slip_partials(model, &weights, r));
+    }
+    out
+}
+
+/// The constrained partial velocities of each rough contact point along its tangents (the
+/// slip's): what the friction force there is dotted with in `F̃_r`, so that a student can
+/// check its term (the bowling ball's ṽ^{lane}_2 = R n̂_x gives R F_x).
+fn slip_partials(model: &Model, weights: &[Expr], r: usize) -> Vec<PartialVelocity> {
+    let problem = model.problem;
+    let rates: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 1))
+        .collect();
+    let mut out = Vec::new();
+    for f in &model.constraints.friction {
+        let site = &model.sites[f.site];
+        let mut v = Vector::zero();
+        for row in &f.stick {
+            let Ok((a, _)) = linear_split(&row.velocity, &rates) else {
+                continue;
+            };
+            let along = site
+                .reactions
+                .iter()
+                .find(|c| c.unknown(&site.name) == row.unknown);
+            let Some(component) = along else {
+                continue;
+            };
+            let weight = simplify(&add(a.iter().zip(weights).map(|(a, w)| a * w)));
+            v = v.plus(&component.direction.scaled(&weight));
+        }
+        let v_tex = super::tex::shortest_tex(model, &v.map(simplify), site.child);
+        if v_tex == "\\mathbf{0}" {
+            continue;
+        }
+        // Relative to what it slides on: N's, or a moving body's.
+        let frame = if site.parent == crate::problem::BodyId::GROUND {
+            "N".to_string()
+        } else {
+            latex_name(problem.body_name(site.parent))
+        };
+        out.push(PartialVelocity {
+            r: r + 1,
+            speed_tex: Math::from(String::new()),
+            body: format!("{} at {}", problem.body_name(site.child), site.name),
+            velocity_tex: Math::from(format!(
+                "{{}}^{{{frame}}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
+                latex_name(&site.name),
+                r + 1
+            )),
+            omega_tex: Math::from(String::new()),
+            point: true,
+        });
     }
     out
 }
@@ -295,7 +341,7 @@ fn friction_note(derivation: &Derivation) -> String {
         ("forces", "do", "they are", "each is")
     };
     format!(
-        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds: the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} that the law is written with {does_no} no work in any motion the constraints allow, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
+        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds: the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$, dotted with the partial velocities of the contact points along the surface (the rows of the contact points in the table above). While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} that the law is written with {does_no} no work in any motion the constraints allow, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
         tex(&friction),
         words(&sites),
         tex(&normals),

@@ -89,7 +89,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
-            let particle = super::independent::is_particle(&derivation.model, *body);
+            let particle = crate::mechanics::massless::is_particle(&derivation.model, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
@@ -112,6 +112,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
                         r + 1
                     ))
                 },
+                point: false,
             });
         }
     }

@@ -71,7 +71,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                 }
             }
             let light = crate::mechanics::massless::is_massless(model, body);
-            let particle = !light && super::independent::is_particle(model, body);
+            let particle = !light && crate::mechanics::massless::is_particle(model, body);
             // A particle's turning carries no inertia: a textbook gives it no ω or α.
             let (omega_tex, alpha_tex) = if particle {
                 (String::new(), String::new())

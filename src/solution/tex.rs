@@ -160,7 +160,7 @@ pub(super) fn unknowns_tex(unknowns: &[Symbol]) -> String {
 pub fn centre_tex(model: &Model, body: BodyId) -> String {
     let name = latex_name(model.problem.body_name(body));
     let light = crate::mechanics::massless::is_massless(model, body);
-    if !light && super::independent::is_particle(model, body) {
+    if !light && crate::mechanics::massless::is_particle(model, body) {
         name
     } else {
         format!("{name}^*")

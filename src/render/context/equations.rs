@@ -53,6 +53,8 @@ pub struct PartialVelocity {
     pub velocity_tex: Math,
     /// Its partial angular velocity, e.g. `{}^{N}\boldsymbol{\omega}^{A}_{1} = \hat{\mathbf{n}}_{z}`.
     pub omega_tex: Math,
+    /// A point's line (a rough contact point), which has no angular velocity to give.
+    pub point: bool,
 }
 
 /// The dependent rates as a linear map of the independent ones at the initial state, and
