@@ -415,3 +415,24 @@ fn negative_friction_and_a_zero_normal_are_refused_with_their_paths() {
         "constraints[0].slope",
     );
 }
+
+/// The worked solution says when the ball starts to roll, the statement's third question:
+/// step 6 names the switch at 2v₀/(7μg), as `simulate` reports it.
+#[test]
+fn the_bowling_ball_handout_says_when_it_starts_to_roll() {
+    let text = crate::support::explain("bowling-ball", &["--method", "kane"]);
+    let step6 = &text[text.find("## Step 6").expect("step 6")..];
+    let line = step6
+        .lines()
+        .find(|l| l.contains("Friction changed its mode"))
+        .expect("the switch in step 6");
+    let switches = line.split("tolerance): ").nth(1).expect("the switches");
+    let t = switch_time(switches, "lane stops slipping (rolls)");
+    assert_close(
+        t,
+        2.0 * V0 / (7.0 * BALL_MU * G),
+        1e-6,
+        1.0,
+        "the instant it rolls",
+    );
+}

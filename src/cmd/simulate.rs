@@ -3,7 +3,7 @@
 use crate::cli::{SimulateArgs, SimulateFormat};
 use crate::numeric::checks::Check;
 use crate::numeric::format::fixed;
-use crate::numeric::simulate::{output_times, simulate_with_limits, Limits, Switch};
+use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
 use crate::numeric::SolveError;
 use crate::pipeline::derive;
 use crate::problem::{ProblemError, ProblemErrors};
@@ -51,7 +51,7 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
         }
     }
     for switch in &trajectory.switches {
-        eprintln!("{}", switch_line(&problem, switch));
+        eprintln!("{}", switch.describe(&problem));
     }
     let text = match args.format {
         SimulateFormat::Csv => trajectory.to_csv(),
@@ -68,37 +68,6 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
             Ok(())
         }
     }
-}
-
-/// A friction site's switch in words: `t = 0.2912 s: contact lane stops slipping (rolls)`,
-/// `slider slope` for a rough prismatic joint or closure.
-pub fn switch_line(problem: &crate::problem::Problem, switch: &Switch) -> String {
-    use crate::numeric::friction::Mode;
-    let rolls = problem.constraints.iter().any(|c| {
-        c.name == switch.site
-            && matches!(
-                c.kind,
-                crate::problem::ConstraintKind::Rolling { .. }
-                    | crate::problem::ConstraintKind::Gear { .. }
-            )
-    });
-    let what = match (switch.from, switch.to) {
-        (Mode::Slip, Mode::Stick) if rolls => "stops slipping (rolls)",
-        (Mode::Slip, Mode::Stick) => "stops slipping (sticks)",
-        (Mode::Stick, Mode::Slip) => "starts to slip",
-        (Mode::Slip, Mode::Slip) => "stops, and slips the other way",
-        (Mode::Stick, Mode::Stick) => "sticks again",
-    };
-    // A rough prismatic joint or closure is a slider, the rest contacts.
-    let slider = problem
-        .joints
-        .iter()
-        .chain(&problem.closures)
-        .any(|j| j.name == switch.site && j.friction.is_some());
-    let kind = if slider { "slider" } else { "contact" };
-    // Ten significant digits: the instant is located to the integration tolerance.
-    let t: f64 = format!("{:.9e}", switch.t).parse().unwrap_or(switch.t);
-    format!("t = {t} s: {kind} {} {what}", switch.site)
 }
 
 /// The checks as lines for standard error (the table itself goes to the output).

@@ -25,9 +25,21 @@ pub fn simulation(
             return;
         }
     };
+    let mut notes = Vec::new();
     if let Some(reason) = &trajectory.stopped {
-        solution.simulation.note = format!("The simulation stopped early: {reason}");
+        notes.push(format!("The simulation stopped early: {reason}"));
     }
+    if !trajectory.switches.is_empty() {
+        // Where friction changed its mode: a statement's "when does it roll" is read here.
+        let lines: Vec<String> = (trajectory.switches.iter())
+            .map(|s| s.describe(problem))
+            .collect();
+        notes.push(format!(
+            "Friction changed its mode during the run (each instant located to the integration tolerance): {}.",
+            lines.join("; ")
+        ));
+    }
+    solution.simulation.note = notes.join(" ");
     solution.simulation.checks = checks
         .iter()
         .map(|c| Check {

@@ -26,6 +26,39 @@ pub struct Switch {
     pub to: Mode,
 }
 
+impl Switch {
+    /// A friction site's switch in words: `t = 0.2912 s: contact lane stops slipping (rolls)`,
+    /// `slider slope` for a rough prismatic joint or closure.
+    pub fn describe(&self, problem: &crate::problem::Problem) -> String {
+        let switch = self;
+        let rolls = problem.constraints.iter().any(|c| {
+            c.name == switch.site
+                && matches!(
+                    c.kind,
+                    crate::problem::ConstraintKind::Rolling { .. }
+                        | crate::problem::ConstraintKind::Gear { .. }
+                )
+        });
+        let what = match (switch.from, switch.to) {
+            (Mode::Slip, Mode::Stick) if rolls => "stops slipping (rolls)",
+            (Mode::Slip, Mode::Stick) => "stops slipping (sticks)",
+            (Mode::Stick, Mode::Slip) => "starts to slip",
+            (Mode::Slip, Mode::Slip) => "stops, and slips the other way",
+            (Mode::Stick, Mode::Stick) => "sticks again",
+        };
+        // A rough prismatic joint or closure is a slider, the rest contacts.
+        let slider = problem
+            .joints
+            .iter()
+            .chain(&problem.closures)
+            .any(|j| j.name == switch.site && j.friction.is_some());
+        let kind = if slider { "slider" } else { "contact" };
+        // Ten significant digits: the instant is located to the integration tolerance.
+        let t: f64 = format!("{:.9e}", switch.t).parse().unwrap_or(switch.t);
+        format!("t = {t} s: {kind} {} {what}", switch.site)
+    }
+}
+
 /// The derivative `dy` at `(t, y)`, each friction site held as `held`.
 pub type HeldDerivative<'a> =
     dyn FnMut(f64, &[f64], &mut [f64], &[Held]) -> Result<(), SolveError> + 'a;
