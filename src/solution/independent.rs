@@ -98,7 +98,7 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
                 point: false,
             });
         }
-        out.extend(slip_partials(model, &weights, r));
+        out.extend(slip_partials(model, &rates, &weights, r));
     }
     out
 }
@@ -106,17 +106,19 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
 /// The constrained partial velocities of each rough contact point along its tangents (the
 /// slip's): what the friction force there is dotted with in `F̃_r`, so that a student can
 /// check its term (the bowling ball's ṽ^{lane}_2 = R n̂_x gives R F_x).
-fn slip_partials(model: &Model, weights: &[Expr], r: usize) -> Vec<PartialVelocity> {
+fn slip_partials(
+    model: &Model,
+    rates: &[Symbol],
+    weights: &[Expr],
+    r: usize,
+) -> Vec<PartialVelocity> {
     let problem = model.problem;
-    let rates: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 1))
-        .collect();
     let mut out = Vec::new();
     for f in &model.constraints.friction {
         let site = &model.sites[f.site];
         let mut v = Vector::zero();
         for row in &f.stick {
-            let Ok((a, _)) = linear_split(&row.velocity, &rates) else {
+            let Ok((a, _)) = linear_split(&row.velocity, rates) else {
                 continue;
             };
             let along = site

@@ -103,27 +103,19 @@ pub fn latex_collected(e: &Expr) -> String {
         let divides = square.is_none()
             && (key_factors.iter().all(divisor)
                 || (coefficient.terms().len() == 1 && key_factors.iter().any(divisor)));
-        if divides {
-            let whole = mul(std::iter::once(coefficient.clone()).chain(keys.iter().cloned()));
-            let text = if coefficient.terms().len() == 1 {
-                signed_term(&whole, "").trim_end().to_string()
-            } else {
-                let (common, inner) = pull_common_factor(&coefficient);
-                factored(
-                    &mul(std::iter::once(common).chain(keys.iter().cloned())),
-                    &inner,
-                    "",
-                )
-            };
-            push_signed(&mut out, text);
-            continue;
-        }
-        let key_text = square.as_ref().map_or_else(|| keys_tex(keys), square_tex);
+        // Where it divides, the whole key joins the coefficient as one fraction.
+        let (divisor_part, key_text) = if divides {
+            (mul(keys.iter().cloned()), String::new())
+        } else {
+            let key = square.as_ref().map_or_else(|| keys_tex(keys), square_tex);
+            (Expr::one(), key)
+        };
         let text = if coefficient.terms().len() == 1 {
-            signed_term(&coefficient, &key_text)
+            let whole = mul([coefficient.clone(), divisor_part]);
+            signed_term(&whole, &key_text).trim_end().to_string()
         } else {
             let (common, inner) = pull_common_factor(&coefficient);
-            factored(&common, &inner, &key_text)
+            factored(&mul([common, divisor_part]), &inner, &key_text)
         };
         push_signed(&mut out, text);
     }

@@ -89,15 +89,13 @@ fn collected_text(constant: &Expr, varying: &Expr) -> String {
     let (common, sum) = pull_common_factor(constant);
     // A varying part that only divides joins the common factor's fraction, `\frac{g m}{y}
     // (r − R)`, rather than trailing as `(r − R) \frac{1}{y}`.
-    if !varying.is_one() && varying.factors().iter().all(is_divisor) {
-        let common = mul([common, varying.clone()]);
-        return if sum.terms().len() > 1 {
-            factored(&common, &sum, "")
-        } else {
-            signed_term(&mul([common, sum]), "")
-        };
-    }
-    let key = if varying.is_one() {
+    let divides = !varying.is_one() && varying.factors().iter().all(is_divisor);
+    let common = if divides {
+        mul([common, varying.clone()])
+    } else {
+        common
+    };
+    let key = if varying.is_one() || divides {
         String::new()
     } else if varying.terms().len() > 1 {
         format!("\\left({}\\right)", latex(varying))

@@ -89,9 +89,7 @@ pub fn equations(
             }
             continue;
         }
-        if only.is_some() {
-            continue;
-        }
+        // Closures and contacts come whole: `kept_joints` holds tree joints alone.
         let site = &model.sites[j];
         for component in &site.reactions {
             let unknown = component.unknown(&site.name);

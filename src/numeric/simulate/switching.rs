@@ -30,16 +30,15 @@ impl Switch {
     /// A friction site's switch in words: `t = 0.2912 s: contact lane stops slipping (rolls)`,
     /// `slider slope` for a rough prismatic joint or closure.
     pub fn describe(&self, problem: &crate::problem::Problem) -> String {
-        let switch = self;
         let rolls = problem.constraints.iter().any(|c| {
-            c.name == switch.site
+            c.name == self.site
                 && matches!(
                     c.kind,
                     crate::problem::ConstraintKind::Rolling { .. }
                         | crate::problem::ConstraintKind::Gear { .. }
                 )
         });
-        let what = match (switch.from, switch.to) {
+        let what = match (self.from, self.to) {
             (Mode::Slip, Mode::Stick) if rolls => "stops slipping (rolls)",
             (Mode::Slip, Mode::Stick) => "stops slipping (sticks)",
             (Mode::Stick, Mode::Slip) => "starts to slip",
@@ -51,11 +50,11 @@ impl Switch {
             .joints
             .iter()
             .chain(&problem.closures)
-            .any(|j| j.name == switch.site && j.friction.is_some());
+            .any(|j| j.name == self.site && j.friction.is_some());
         let kind = if slider { "slider" } else { "contact" };
         // Ten significant digits: the instant is located to the integration tolerance.
-        let t: f64 = format!("{:.9e}", switch.t).parse().unwrap_or(switch.t);
-        format!("t = {t} s: {kind} {} {what}", switch.site)
+        let t: f64 = format!("{:.9e}", self.t).parse().unwrap_or(self.t);
+        format!("t = {t} s: {kind} {} {what}", self.site)
     }
 }
 
