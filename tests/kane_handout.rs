@@ -126,10 +126,10 @@ fn the_other_methods_show_no_partial_velocities() {
 #[test]
 fn a_long_partial_velocity_is_written_by_the_names_of_step_4() {
     // The bicycle's handlebar H: step 4 writes a^{H*} = Σ v_r q̈_r + ã with each partial
-    // velocity's components named (∂a/∂q̈_r = ∂v/∂q̇_r), so the table gives v_4^{H*} by those
+    // velocity's components named (∂a/∂q̈_r = ∂v/∂q̇_r), so the table gives the yaw rate's v^{H*} by those
     // names rather than multiplied out over a line and more, and defines each name once.
     let text = markdown("validation/whipple-bicycle.json");
-    let row = "${}^{N}\\mathbf{v}^{H^*}_{4} = v^{H^{*}}_{\\psi,x} \\hat{\\mathbf{h}}_{x} + v^{H^{*}}_{\\psi,y} \\hat{\\mathbf{h}}_{y} + v^{H^{*}}_{\\psi,z} \\hat{\\mathbf{h}}_{z}$";
+    let row = "${}^{N}\\mathbf{v}^{H^*}_{\\dot{\\psi}} = v^{H^{*}}_{\\psi,x} \\hat{\\mathbf{h}}_{x} + v^{H^{*}}_{\\psi,y} \\hat{\\mathbf{h}}_{y} + v^{H^{*}}_{\\psi,z} \\hat{\\mathbf{h}}_{z}$";
     assert!(text.contains(row), "no table entry {row}");
     for axis in ["x", "y", "z"] {
         let name = format!("v^{{H^{{*}}}}_{{\\psi,{axis}}} = ");

@@ -6,7 +6,6 @@
 use mbd_tutor::equations::friction::{friction_forces, normal_forces};
 use mbd_tutor::equations::rows::Sum;
 use mbd_tutor::equations::{Derivation, Method};
-use mbd_tutor::mechanics::independent::KeptForces;
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::numeric::system::System;
 use mbd_tutor::pipeline::derive_rows;
@@ -33,7 +32,6 @@ fn constrained() -> Vec<(String, Problem)> {
         .flat_map(|dir| std::fs::read_dir(dir).expect("problems/").flatten())
         .map(|e| e.path())
         .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .filter(|p| !p.ends_with("whipple-bicycle.json"))
         .collect();
     paths.sort();
     let list: Vec<(String, Problem)> = paths
@@ -374,17 +372,34 @@ fn with_friction_kane_takes_the_independent_speeds_and_an_auxiliary_row_per_norm
 
 /// A disc inside a cylinder with its contact written by hand as constraint entries, the
 /// spin's coefficient `r (x² + y²)²/(R − r)⁴` (which is r only on the motion, a relation
-/// no entry states): θ' = C x' would be a fraction within fractions, so Kane's rows keep
-/// the constraint forces, and agree.
+/// no entry states): θ' = C x' would be a fraction within fractions, so C is named and
+/// evaluated at each state; Kane's rows are still one per independent speed, and agree.
 #[test]
-fn where_c_would_not_read_well_kane_keeps_the_constraint_forces_and_agrees() {
+fn where_c_would_not_read_well_it_is_evaluated_at_each_state_and_agrees() {
     let name = "tests/kane_speeds/disc-by-constraint-entries.json";
     let problem = load_file(std::path::Path::new(name)).expect("valid");
     let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
-    assert!(
-        kane.dependent_speeds.is_none(),
-        "{name}: written with u_D = C u_I"
-    );
-    assert_eq!(kane.kept_forces, Some(KeptForces::LongRelation));
+    let speeds = kane.dependent_speeds.as_ref().expect("u_D = C u_I");
+    assert!(speeds.at_each_state, "{name}: C written out");
+    assert_eq!(kane.kept_forces, None);
+    assert_eq!(generalized_rows(&kane), speeds.independent.len());
+    check_numbers(name, &problem, &kane);
+}
+
+/// The Whipple bicycle: six dependent rates coupled through both contacts, C evaluated at
+/// each state; three rows, for the lean, the rear wheel and the steer, and their q'' those
+/// of Newton–Euler's rows, which keep every contact force.
+#[test]
+fn the_bicycle_takes_its_three_independent_speeds() {
+    let name = "problems/validation/whipple-bicycle.json";
+    let problem = load_file(std::path::Path::new(name)).expect("valid");
+    let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let speeds = kane.dependent_speeds.as_ref().expect("u_D = C u_I");
+    assert!(speeds.at_each_state);
+    let names: Vec<&str> = (speeds.independent.iter())
+        .map(|&i| problem.coordinates[i].name.as_str())
+        .collect();
+    assert_eq!(names, ["phi", "thetaR", "delta"]);
+    assert_eq!(generalized_rows(&kane), 3);
     check_numbers(name, &problem, &kane);
 }

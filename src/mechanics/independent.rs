@@ -17,17 +17,18 @@ use crate::symbolic::subst::substitute;
 use crate::symbolic::{add, simplify, Expr, Symbol};
 
 /// The most expression nodes `A_D⁻¹` may hold: beyond it the dependent speeds are not
-/// written out (a long chain of contacts), and Kane's rows keep the constraint forces.
+/// written out (a long chain of contacts), and `C` is named, evaluated at each state.
 const LARGEST_INVERSE: usize = 4_000;
 
 /// The most operations an entry of `C` may have once simplified. Past it the relation
 /// `u_D = C u_I` no longer reads as a textbook writes it (nested fractions the simplifier
 /// cannot cancel, e.g. a no-slip row written by hand with a spin coefficient that is 1
-/// only on the motion, `(x² + y²)²/(R − r)⁴`), and Kane's rows keep the constraint forces
-/// instead, which reads better.
+/// only on the motion, `(x² + y²)²/(R − r)⁴`), and `C` is named instead, evaluated at each
+/// state.
 const LONGEST_ENTRY_OF_C: usize = 30;
 
-/// The most dependent rates solved together symbolically (one block of `A_D`).
+/// The most dependent rates solved together in symbols (one block of `A_D`); a larger
+/// block is solved at each state.
 const LARGEST_BLOCK: usize = 6;
 
 /// Why Kane's rows keep the constraint forces as unknowns instead of taking the independent
@@ -37,10 +38,8 @@ pub enum KeptForces {
     /// The constraints are not linear in the rates with coefficients free of them, or do
     /// not fix as many dependent rates as they have rows.
     NotSolvable,
-    /// `A_D` has a block too large, or its elimination grows past what can be written.
+    /// `A_D` has a block too large even to solve at each state by minors.
     LargeBlock,
-    /// An entry of `C` would not read as a textbook writes it.
-    LongRelation,
 }
 
 impl KeptForces {
@@ -51,10 +50,7 @@ impl KeptForces {
                 "the velocity constraints do not give the dependent rates as a linear map of the others"
             }
             KeptForces::LargeBlock => {
-                "the dependent rates are coupled in a block too large to solve for in symbols that a reader could follow"
-            }
-            KeptForces::LongRelation => {
-                "solved in symbols, the dependent rates would be fractions within fractions, longer than the rows they would save"
+                "the dependent rates are coupled in a block too large to solve for at each state"
             }
         }
     }
@@ -82,6 +78,9 @@ pub struct DependentSpeeds {
     /// `d_s = −Σ_k A_D⁻¹[s][k] β_k`: what the dependent rate `s` has besides the speeds
     /// (terms of time in a constraint, e.g. a moving support).
     pub rest: Vec<Expr>,
+    /// Whether the entries of `C`, `C_P`, `A_D⁻¹` and `d` are named quantities evaluated at
+    /// each state (a block too large to write out in symbols) rather than written out.
+    pub at_each_state: bool,
 }
 
 impl DependentSpeeds {
@@ -129,19 +128,93 @@ impl DependentSpeeds {
             .iter()
             .map(|row| dependent.iter().map(|&s| row[s].clone()).collect())
             .collect();
-        if super::speeds::largest_block(&a_d) > LARGEST_BLOCK {
-            return Err(KeptForces::LargeBlock);
+        let split = Split {
+            model,
+            rows,
+            dependent,
+            independent,
+            prescribed,
+            a,
+            beta,
+        };
+        let in_symbols = if super::speeds::largest_block(&a_d) > LARGEST_BLOCK {
+            None
+        } else {
+            super::speeds::inverse_within(&a_d, Some(LARGEST_INVERSE))
+                .filter(|inverse| fits(inverse))
+                .and_then(|inverse| split.in_symbols(inverse))
+        };
+        match in_symbols {
+            Some(speeds) => Ok(Some(speeds)),
+            None => split.at_each_state(&a_d).map(Some),
         }
-        // `inverse` maps the rows' values back to the columns: [s][k].
-        let violation = super::speeds::inverse_within(&a_d, Some(LARGEST_INVERSE))
-            .ok_or(KeptForces::LargeBlock)?;
-        let mut size = 0;
-        for entry in violation.iter().flatten() {
-            size += entry.operation_count_capped(LARGEST_INVERSE);
-            if size > LARGEST_INVERSE {
-                return Err(KeptForces::LargeBlock);
-            }
+    }
+}
+
+/// Whether `A_D⁻¹` is short enough to be written in symbols.
+fn fits(inverse: &[Vec<Expr>]) -> bool {
+    let mut size = 0;
+    for entry in inverse.iter().flatten() {
+        size += entry.operation_count_capped(LARGEST_INVERSE);
+        if size > LARGEST_INVERSE {
+            return false;
         }
+    }
+    true
+}
+
+/// The velocity constraints split by columns, before `A_D` is inverted.
+struct Split<'m> {
+    model: &'m Model<'m>,
+    rows: Vec<usize>,
+    dependent: Vec<usize>,
+    independent: Vec<usize>,
+    prescribed: Vec<usize>,
+    /// `A`: a row per constraint row solved, a column per coordinate's rate.
+    a: Vec<Vec<Expr>>,
+    /// `β`: what each row has besides the rates.
+    beta: Vec<Expr>,
+}
+
+impl Split<'_> {
+    /// `−A_D⁻¹ A_X` for the columns `columns`, each entry passed through `finish`.
+    fn map(
+        &self,
+        violation: &[Vec<Expr>],
+        columns: &[usize],
+        finish: &dyn Fn(Expr) -> Expr,
+    ) -> Vec<Vec<Expr>> {
+        (0..self.dependent.len())
+            .map(|s| {
+                columns
+                    .iter()
+                    .map(|&r| {
+                        let terms = (0..self.rows.len()).map(|k| &violation[s][k] * &self.a[k][r]);
+                        finish(-add(terms))
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// `d = −A_D⁻¹ β`, each entry passed through `finish`.
+    fn rest(&self, violation: &[Vec<Expr>], finish: &dyn Fn(Expr) -> Expr) -> Vec<Expr> {
+        (0..self.dependent.len())
+            .map(|s| {
+                let terms = self
+                    .beta
+                    .iter()
+                    .enumerate()
+                    .map(|(k, b)| &violation[s][k] * b);
+                finish(-add(terms))
+            })
+            .collect()
+    }
+
+    /// The map in symbols from `A_D⁻¹` in symbols, or `None` when an entry of `C` would not
+    /// read as a textbook writes it.
+    fn in_symbols(&self, violation: Vec<Vec<Expr>>) -> Option<DependentSpeeds> {
+        let constraints = &self.model.constraints;
         // Written with what holds on the motion, where the map is used: inside a ring,
         // θ̇ = (R − r)/(r y) ẋ rather than (x² + y²)/((R − r) r y) ẋ.
         let on_motion = |e: Expr| {
@@ -150,37 +223,14 @@ impl DependentSpeeds {
                 .iter()
                 .fold(e, |e, (_, relation)| relation.reduce(&e))
         };
-        let violation: Vec<Vec<Expr>> = violation
+        let mut violation: Vec<Vec<Expr>> = violation
             .into_iter()
             .map(|row| row.into_iter().map(on_motion).collect())
             .collect();
-        let map = |columns: &[usize]| -> Vec<Vec<Expr>> {
-            (0..dependent.len())
-                .map(|s| {
-                    columns
-                        .iter()
-                        .map(|&r| {
-                            let terms = rows
-                                .iter()
-                                .enumerate()
-                                .map(|(k, _)| &violation[s][k] * &a[k][r]);
-                            on_motion(simplify(&-add(terms)))
-                        })
-                        .collect()
-                })
-                .collect()
-        };
-        let rest: Vec<Expr> = (0..dependent.len())
-            .map(|s| {
-                on_motion(simplify(&-add(beta
-                    .iter()
-                    .enumerate()
-                    .map(|(k, b)| &violation[s][k] * b))))
-            })
-            .collect();
-        let mut c = map(&independent);
-        let mut c_prescribed = map(&prescribed);
-        let (mut rest, mut violation) = (rest, violation);
+        let finish = |e: Expr| on_motion(simplify(&e));
+        let mut c = self.map(&violation, &self.independent, &finish);
+        let mut c_prescribed = self.map(&violation, &self.prescribed, &finish);
+        let mut rest = self.rest(&violation, &finish);
         // One name for the sum the dependent rates are divided by, as a textbook writes it.
         let mut entries: Vec<&mut Expr> = c
             .iter_mut()
@@ -194,20 +244,78 @@ impl DependentSpeeds {
             .flatten()
             .any(|e| e.operation_count_capped(LONGEST_ENTRY_OF_C) > LONGEST_ENTRY_OF_C)
         {
-            return Err(KeptForces::LongRelation);
+            return None;
         }
-        Ok(Some(DependentSpeeds {
+        Some(self.speeds(c, c_prescribed, violation, rest, false))
+    }
+
+    /// The map with each entry of `A_D⁻¹`, `C`, `C_P` and `d` a named quantity evaluated at
+    /// each state, as a computer, not a reader, solves a large block (PyDy does likewise).
+    fn at_each_state(&self, a_d: &[Vec<Expr>]) -> Result<DependentSpeeds, KeptForces> {
+        let inverse = super::inverse_by_minors::inverse_by_minors(a_d, "A_D^-1")
+            .ok_or(KeptForces::LargeBlock)?;
+        let named = |matrix: Vec<Vec<Expr>>, name: &str, latex: &str, note: &str| {
+            let many = matrix.len() > 9 || matrix.first().is_some_and(|row| row.len() > 9);
+            (matrix.into_iter().enumerate())
+                .map(|(i, row)| {
+                    (row.into_iter().enumerate())
+                        .map(|(j, value)| {
+                            let index = if many {
+                                format!("{},{}", i + 1, j + 1)
+                            } else {
+                                format!("{}{}", i + 1, j + 1)
+                            };
+                            let latex = format!("{latex}_{{{index}}}");
+                            Expr::evaluated(&format!("{name}[{index}]"), &latex, note, value)
+                        })
+                        .collect()
+                })
+                .collect::<Vec<Vec<Expr>>>()
+        };
+        let plain = |e: Expr| e;
+        let c = self.map(&inverse, &self.independent, &plain);
+        let c_prescribed = self.map(&inverse, &self.prescribed, &plain);
+        let rest = self.rest(&inverse, &plain);
+        let note = "evaluated at each state";
+        let c = named(c, "C", "C", note);
+        let c_prescribed = named(c_prescribed, "C_P", "C^{P}", note);
+        let violation = named(inverse, "A_D^-1", "\\left(A_D^{-1}\\right)", note);
+        let rest = (rest.into_iter().enumerate())
+            .map(|(s, value)| {
+                Expr::evaluated(
+                    &format!("d[{}]", s + 1),
+                    &format!("d_{{{}}}", s + 1),
+                    note,
+                    value,
+                )
+            })
+            .collect();
+        Ok(self.speeds(c, c_prescribed, violation, rest, true))
+    }
+
+    fn speeds(
+        &self,
+        c: Vec<Vec<Expr>>,
+        c_prescribed: Vec<Vec<Expr>>,
+        violation: Vec<Vec<Expr>>,
+        rest: Vec<Expr>,
+        at_each_state: bool,
+    ) -> DependentSpeeds {
+        DependentSpeeds {
             rest,
             c,
             c_prescribed,
-            independent,
-            dependent,
-            prescribed,
-            rows,
+            independent: self.independent.clone(),
+            dependent: self.dependent.clone(),
+            prescribed: self.prescribed.clone(),
+            rows: self.rows.clone(),
             violation,
-        }))
+            at_each_state,
+        }
     }
+}
 
+impl DependentSpeeds {
     /// The weights of the coordinates' rates in the motion of independent speed `r`
     /// (index into `independent`): one on its own rate, `C[s][r]` on each dependent one.
     pub fn independent_weights(&self, r: usize, n: usize) -> Vec<Expr> {

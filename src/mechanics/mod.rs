@@ -14,6 +14,7 @@ pub mod frames;
 pub mod friction;
 pub mod gear;
 pub mod independent;
+pub mod inverse_by_minors;
 pub mod joints;
 pub mod massless;
 pub mod model;

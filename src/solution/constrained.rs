@@ -140,7 +140,9 @@ pub fn dependent_speeds(
     rates: &[f64],
 ) -> Option<DependentSpeeds> {
     if let Some(speeds) = &derivation.dependent_speeds {
-        return Some(super::independent::dependent_speeds(derivation, speeds));
+        return Some(super::independent::dependent_speeds(
+            derivation, speeds, q, rates,
+        ));
     }
     let model = &derivation.model;
     let problem = model.problem;

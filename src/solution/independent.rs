@@ -159,7 +159,12 @@ fn slip_partials(
 
 /// `u_D = C u_I` in symbols, Kane's equations with these speeds, and the paragraphs that
 /// say what was chosen, what drops out, and how the system is solved.
-pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSpeeds {
+pub fn dependent_speeds(
+    derivation: &Derivation,
+    speeds: &Speeds,
+    q: &[f64],
+    q_rates: &[f64],
+) -> DependentSpeeds {
     let problem = derivation.model.problem;
     let sign = super::tex::initial_sign(&derivation.model);
     let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
@@ -184,11 +189,27 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
                             &speeds.c_prescribed[s][p] * &problem.coordinate_expr(i, 1)
                         }))
                         .chain(std::iter::once(speeds.rest[s].clone()));
+                if speeds.at_each_state {
+                    // Named entries, in the order of the speeds: C_{s1} u_1 + C_{s2} u_2 + ….
+                    let pairs = (speeds.independent.iter().zip(&speeds.c[s]))
+                        .chain(speeds.prescribed.iter().zip(&speeds.c_prescribed[s]));
+                    let each: Vec<String> = pairs
+                        .filter(|(_, c)| !c.is_zero())
+                        .map(|(&i, c)| format!("{} {}", latex(c), rate(i)))
+                        .chain(Some(&speeds.rest[s]).filter(|d| !d.is_zero()).map(latex))
+                        .collect();
+                    let sum = if each.is_empty() {
+                        "0".to_string()
+                    } else {
+                        each.join(" + ")
+                    };
+                    return format!("{} = {sum}", rate(d));
+                }
                 let sum = roots_of_squares(&simplify(&crate::symbolic::add(terms)), &sign);
                 format!("{} = {}", rate(d), latex_collected(&sum))
             })
             .collect();
-    let relation_tex = format!(
+    let mut relation_tex = format!(
         "\\begin{{aligned}} {} \\end{{aligned}}",
         relations_tex
             .iter()
@@ -196,6 +217,9 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
             .collect::<Vec<_>>()
             .join(" \\\\ ")
     );
+    if speeds.at_each_state {
+        relation_tex.push_str(&initial_c(derivation, speeds, q, q_rates));
+    }
     let independent = rates(&speeds.independent);
     // What holds on the motion and not identically, which C and the rows use.
     let relations: Vec<String> = (derivation.model.constraints.relations.iter())
@@ -231,9 +255,21 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
             )
         }
     )];
-    paragraphs.push(
-        "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints:".to_string(),
-    );
+    if speeds.at_each_state {
+        if let Some(head) = paragraphs[0].strip_suffix(':') {
+            paragraphs[0] = format!(
+                "{head}. Solved in symbols, the entries of $C = -A_D^{{-1}} A_I$ would run to pages, since the {} dependent rates are coupled through every constraint; they are named instead, $C_{{sr}}$, and evaluated at each state from $A_D$ and $A_I$, the coefficients of the dependent and the independent rates in the velocity constraints:",
+                speeds.dependent.len()
+            );
+        }
+        paragraphs.push(
+            "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{F}_r = F_r + \\sum_s C_{sr} F_s$ and $\\tilde{F}^*_r = F^*_r + \\sum_s C_{sr} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:".to_string(),
+        );
+    } else {
+        paragraphs.push(
+            "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints:".to_string(),
+        );
+    }
     let kane_tex = format!(
         "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0, \\quad \\tilde{{F}}_r = \\sum_{{P}} \\tilde{{\\mathbf{{v}}}}^{{P}}_r \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\tilde{{\\boldsymbol{{\\omega}}}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}} = F_r + \\sum_s C_{{sr}} F_s \\quad (r = {})",
         independent.join(", ")
@@ -247,6 +283,25 @@ pub fn dependent_speeds(derivation: &Derivation, speeds: &Speeds) -> DependentSp
         kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds)),
         kane_kept_note: MarkupLine::from(String::new()),
     }
+}
+
+/// `C` in numbers at the initial state, beside the relations that name its entries: what
+/// a reader can check against the velocity constraints.
+fn initial_c(derivation: &Derivation, speeds: &Speeds, q: &[f64], rates: &[f64]) -> String {
+    let values = derivation.model.values_at(0.0, q, rates);
+    let rows: Vec<String> = (speeds.c.iter())
+        .map(|row| {
+            let each = row.iter().map(|c| {
+                let x = crate::symbolic::eval::eval(c, &values);
+                crate::symbolic::format::fixed(if x.abs() < 1e-13 { 0.0 } else { x })
+            });
+            each.collect::<Vec<_>>().join(" & ")
+        })
+        .collect();
+    format!(
+        " \\qquad C = \\begin{{bmatrix}} {} \\end{{bmatrix}} \\ \\text{{at the start}}",
+        rows.join(" \\\\ ")
+    )
 }
 
 /// What drops out and why, the auxiliary speeds, and the order of the solve.

@@ -33,13 +33,25 @@ pub fn speed_tex(derivation: &Derivation, r: usize) -> String {
     )
 }
 
+/// The rate of coordinate `r`, `\\dot{x}`: what a partial velocity is taken with when the
+/// rows combine the coordinates' rates by `C` evaluated at each state.
+fn rate_tex(derivation: &Derivation, r: usize) -> String {
+    latex(&derivation.model.problem.coordinate_expr(r, 1))
+}
+
 /// The table of partial velocities (empty unless the method is Kane's): for each speed, one
 /// line per body whose partial velocity or partial angular velocity is not zero, in `N`.
 pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     if derivation.method != Method::Kane {
         return Vec::new();
     }
-    if let Some(speeds) = &derivation.dependent_speeds {
+    // With C evaluated at each state, the rows combine the generalized forces of the
+    // coordinates' rates by name: the table gives those rates' partial velocities.
+    let by_rate = derivation
+        .dependent_speeds
+        .as_ref()
+        .is_some_and(|speeds| speeds.at_each_state);
+    if let Some(speeds) = derivation.dependent_speeds.as_ref().filter(|_| !by_rate) {
         return super::independent::partial_velocities(derivation, speeds);
     }
     let model = &derivation.model;
@@ -89,27 +101,34 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
+            let index = if by_rate {
+                rate_tex(derivation, r)
+            } else {
+                (r + 1).to_string()
+            };
             let particle = crate::mechanics::massless::is_particle(&derivation.model, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
-                    Math::from(speed_tex(derivation, r))
+                    Math::from(if by_rate {
+                        rate_tex(derivation, r)
+                    } else {
+                        speed_tex(derivation, r)
+                    })
                 } else {
                     Math::from(String::new())
                 },
                 body: name.to_string(),
                 velocity_tex: Math::from(format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{}}}_{{{}}} = {v_tex}",
+                    "{{}}^{{N}}\\mathbf{{v}}^{{{}}}_{{{index}}} = {v_tex}",
                     super::tex::centre_tex(&derivation.model, *body),
-                    r + 1
                 )),
                 // A particle has no inertia torque: its partial angular velocity does nothing.
                 omega_tex: if particle {
                     Math::from(String::new())
                 } else {
                     Math::from(format!(
-                        "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}}_{{{}}} = {w_tex}",
-                        r + 1
+                        "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}}_{{{index}}} = {w_tex}",
                     ))
                 },
                 point: false,

@@ -27,6 +27,8 @@ fn collect(
     }
     match e.node() {
         Node::Num(_) => {}
+        // Said in words where it is used, never written out.
+        Node::Sym(Symbol::Defined(d)) if d.is_evaluated() => {}
         Node::Sym(Symbol::Defined(d)) => {
             if d.is_named() && !found.contains(d) {
                 found.push(d.clone());

@@ -132,7 +132,13 @@ impl<'m> Written<'m> {
             model,
             speeds,
             rates: speeds.dependent_rates(model),
-            accelerations: speeds.dependent_accelerations(model).ok(),
+            // A `C` evaluated at each state has no derivative a reader could follow: the
+            // rows keep the dependent rates and q''.
+            accelerations: if speeds.at_each_state {
+                None
+            } else {
+                speeds.dependent_accelerations(model).ok()
+            },
         }
     }
 

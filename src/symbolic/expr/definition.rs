@@ -25,6 +25,8 @@ struct DefinitionData {
     /// What the worked solution shows instead, when that holds only near the initial
     /// state (`a₁ + x₁` for `|a₁ + x₁|` while `a₁ + x₁ > 0`); the numbers use `value`.
     shown: Option<Expr>,
+    /// Computed at each state and never written out (see [`Definition::is_evaluated`]).
+    evaluated: bool,
     /// Its time derivative when that has a name of its own (`ℓ̇₁` for `ℓ₁`). Weak, since
     /// the rate's definition may refer back to this one; once the rate is gone d/dt falls
     /// back to differentiating the value.
@@ -51,9 +53,31 @@ impl Definition {
             latex: latex.map(Into::into),
             note: note.into(),
             shown,
+            evaluated: false,
             rate: OnceCell::new(),
             inside: OnceCell::new(),
         }))
+    }
+
+    /// As [`Definition::new`], for a quantity the worked solution names but does not write
+    /// out: its value (an entry of a matrix inverse, formed through named minors) is only
+    /// for the numbers, and what it is is said in words beside it.
+    pub(super) fn evaluated(name: &str, value: Expr, latex: &str, note: &str) -> Definition {
+        Definition(Rc::new(DefinitionData {
+            name: name.into(),
+            value,
+            latex: Some(latex.into()),
+            note: note.into(),
+            shown: None,
+            evaluated: true,
+            rate: OnceCell::new(),
+            inside: OnceCell::new(),
+        }))
+    }
+
+    /// Whether the value is for the numbers alone: no "where" list writes it out.
+    pub fn is_evaluated(&self) -> bool {
+        self.0.evaluated
     }
 
     /// The unique name, e.g. `B.w.z`.

@@ -244,6 +244,17 @@ impl Expr {
         Expr::named_with(name, latex, note, value, Some(shown))
     }
 
+    /// `value` under the name `name`, printed in LaTeX as `latex`, for the numbers alone:
+    /// the worked solution never writes the value out (see [`Definition::is_evaluated`]).
+    pub fn evaluated(name: &str, latex: &str, note: &str, value: Expr) -> Expr {
+        if matches!(value.node(), Node::Num(_)) {
+            return value;
+        }
+        Expr::sym(Symbol::Defined(Definition::evaluated(
+            name, value, latex, note,
+        )))
+    }
+
     fn named_with(name: &str, latex: &str, note: &str, value: Expr, shown: Option<Expr>) -> Expr {
         if matches!(value.node(), Node::Num(_) | Node::Sym(_)) {
             return value;
