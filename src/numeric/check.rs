@@ -24,6 +24,9 @@ pub enum CheckKind {
     ConstraintDrift,
     /// With prescribed motion, the energy changes by the drives' work.
     EnergyBalanceWithDrives,
+    /// Every rough contact's normal force presses (a contact is two-sided in the model,
+    /// where a real one would separate).
+    ContactsPress,
 }
 
 impl CheckKind {
@@ -36,6 +39,7 @@ impl CheckKind {
             CheckKind::SmallOscillationPeriod => "small-oscillation period",
             CheckKind::ConstraintDrift => "constraint drift",
             CheckKind::EnergyBalanceWithDrives => "energy balance with the drives' work",
+            CheckKind::ContactsPress => "contacts press",
         }
     }
 }

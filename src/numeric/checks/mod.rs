@@ -29,6 +29,9 @@ pub fn confirm(
         problem, primary.1, trajectory,
     ));
     checks.extend(super::constraint_checks::drift_check(primary.1, trajectory));
+    checks.extend(super::constraint_checks::contact_check(
+        problem, primary.1, trajectory,
+    ));
     checks
 }
 
