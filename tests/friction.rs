@@ -436,3 +436,68 @@ fn the_bowling_ball_handout_says_when_it_starts_to_roll() {
         "the instant it rolls",
     );
 }
+
+/// `"at": { "switch": "lane" }`: the bowling ball's answers at the instant it starts to
+/// roll are that instant, 2v₀/(7μg), and the speed then, 5v₀/7 (friction −μmg slows the
+/// centre, its moment μmgR spins the ball up, until v = −Rθ̇).
+#[test]
+fn the_answers_say_when_the_ball_rolls_and_how_fast_it_moves_then() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/bowling-ball.json");
+    let out = run(&[
+        "answer".as_ref(),
+        path.as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let answers = json["answers"].as_array().expect("answers");
+    let at_switch: Vec<&Value> = answers.iter().filter(|a| a["switch"] == "lane").collect();
+    assert_eq!(at_switch.len(), 2);
+    let t_roll = 2.0 * V0 / (7.0 * BALL_MU * G);
+    assert_close(
+        number(at_switch[0], "value"),
+        t_roll,
+        1e-7,
+        1.0,
+        "t at rolling",
+    );
+    let speed = 5.0 * V0 / 7.0;
+    assert_close(
+        number(at_switch[1], "value"),
+        speed,
+        1e-7,
+        1.0,
+        "v at rolling",
+    );
+    assert_close(
+        number(at_switch[1], "time"),
+        t_roll,
+        1e-7,
+        1.0,
+        "its instant",
+    );
+}
+
+/// A switch asked of a site without friction is refused with the question's path.
+#[test]
+fn a_switch_of_a_smooth_site_is_refused_with_its_path() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/cylinder-on-incline.json");
+    let mut json: Value =
+        serde_json::from_str(&std::fs::read_to_string(path).expect("reads")).expect("JSON");
+    let site = json["constraints"][0]["name"].clone();
+    json["find"]["questions"] = serde_json::json!([{ "value": "t", "at": { "switch": site } }]);
+    let file = std::env::temp_dir().join(format!("smooth-switch-{}.json", std::process::id()));
+    std::fs::write(&file, json.to_string()).expect("writes");
+    let out = run(&["answer".as_ref(), file.as_os_str()]);
+    let _ = std::fs::remove_file(&file);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("find.questions[0].at.switch"), "{stderr}");
+    assert!(stderr.contains("hint"), "{stderr}");
+}

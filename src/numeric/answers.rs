@@ -5,6 +5,8 @@
 //!   assembled (constraints) and the system evaluated there.
 //! - At a time alone: the motion is simulated from the initial state up to that time, with
 //!   the problem's tolerance, and the state reached is evaluated.
+//! - At a switch (`at.switch`, a site with friction): simulated likewise up to the first
+//!   instant that site switches between sticking and slipping (a skidding ball rolls).
 //! - A drive: the generalized force of a prescribed coordinate's motion, solved with the
 //!   reactions.
 //! - A steady motion: Newton's method (Gauss-Newton where there are more second derivatives
@@ -92,7 +94,6 @@ pub fn answer(
     system: &dyn System,
     question: &Question,
 ) -> Result<Answer, ProblemError> {
-    let t = question.at.time.unwrap_or(0.0);
     let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let solve_failed = |e: super::SolveError| {
@@ -101,6 +102,10 @@ pub fn answer(
             format!("cannot answer: {e}"),
             "ask at another state, or check the problem's initial state",
         )
+    };
+    let t = match question.at.switch {
+        Some(site) => first_switch(problem, system, question, site, &q, &rates)?,
+        None => question.at.time.unwrap_or(0.0),
     };
     let simulated = question.at.state.is_none() && t > 0.0;
     if let Some(state) = &question.at.state {
@@ -412,6 +417,60 @@ pub fn entry_name(problem: &Problem, e: &StateEntry) -> String {
     } else {
         format!("{name}'")
     }
+}
+
+/// The first instant that friction site `site` switches between sticking and slipping,
+/// simulating from the initial state over the problem's `simulate.duration`.
+fn first_switch(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    site: usize,
+    q: &[f64],
+    rates: &[f64],
+) -> Result<f64, ProblemError> {
+    let name = problem.site_name(site);
+    let path = format!("{}.at.switch", question.path);
+    let fail = |message: String, hint: String| ProblemError {
+        path: path.clone(),
+        column: None,
+        message,
+        hint: Some(hint),
+    };
+    let sites = system.friction_sites();
+    if !sites.iter().any(|s| s == name) {
+        return Err(fail(
+            format!("`{name}` has no friction to switch"),
+            match sites.is_empty() {
+                true => "give a site a `friction` coefficient, or ask at a `time`".into(),
+                false => format!("name a site with friction: {}", sites.join(", ")),
+            },
+        ));
+    }
+    let duration = problem.simulate.duration;
+    let settings = SimulateSettings {
+        duration,
+        output_step: duration,
+        tolerance: problem.simulate.tolerance,
+    };
+    let trajectory = simulate(system, q, rates, &settings).map_err(|e| {
+        fail(
+            format!("cannot simulate to find the switch: {e}"),
+            "check the problem's initial state".into(),
+        )
+    })?;
+    (trajectory.switches.iter())
+        .find(|s| s.site == name)
+        .map(|s| s.t)
+        .ok_or_else(|| {
+            fail(
+                format!(
+                    "`{name}` does not switch between sticking and slipping within the simulation's {} s",
+                    crate::symbolic::format::fixed(duration)
+                ),
+                "lengthen simulate.duration, or ask at a `time`".into(),
+            )
+        })
 }
 
 /// The unit of coordinate `i` differentiated `order` times: its `unit`, else rad or m.

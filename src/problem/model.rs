@@ -532,6 +532,10 @@ pub struct QuestionAt {
     /// Values given; the others are the initial ones. `None`: no `state` key, so a `time`
     /// is reached by simulating from the initial state.
     pub state: Option<Vec<(StateEntry, f64)>>,
+    /// A site with friction (its index as `find.reactions` counts sites): the question is
+    /// asked at the first instant, simulating from the initial state, that the site
+    /// switches between sticking and slipping (a skidding ball starts to roll).
+    pub switch: Option<usize>,
 }
 
 /// One entry of `find.questions`.

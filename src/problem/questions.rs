@@ -13,7 +13,8 @@
 //!   spin held, `"phi' + psi'*cos(theta) - 150"`,
 //!
 //! `at` a state (`state`, with `time`, default 0), or at a time reached by simulating from
-//! the initial state (`time` alone). Without `at`, the initial state at t = 0.
+//! the initial state (`time` alone), or where a friction site first switches between
+//! sticking and slipping (`switch`). Without `at`, the initial state at t = 0.
 
 use super::expressions::{self, Context};
 use super::json::{self, check_keys, index_path, key_path, number, object, string};
@@ -86,7 +87,7 @@ impl Reader {
             return None;
         }
         let at = match fields.get("at") {
-            Some(v) => self.question_at(v, &key_path(path, "at"))?,
+            Some(v) => self.question_at(v, &key_path(path, "at"), constraints)?,
             None => QuestionAt::default(),
         };
         let kind = match asked[0] {
@@ -159,10 +160,28 @@ impl Reader {
         })
     }
 
-    fn question_at(&mut self, value: &Value, path: &str) -> Option<QuestionAt> {
+    fn question_at(
+        &mut self,
+        value: &Value,
+        path: &str,
+        constraints: &[Value],
+    ) -> Option<QuestionAt> {
         let fields = object(value, path, &mut self.diag)?;
-        check_keys(fields, path, &["time", "state"], &mut self.diag);
+        check_keys(fields, path, &["time", "state", "switch"], &mut self.diag);
         let mut at = QuestionAt::default();
+        if let Some(v) = fields.get("switch") {
+            let spath = key_path(path, "switch");
+            if fields.contains_key("time") || fields.contains_key("state") {
+                self.diag.hint(
+                    &spath,
+                    "a switch sets its own instant and state",
+                    "give `switch` alone: the question is asked where the site first switches, simulating from the initial state",
+                );
+                return None;
+            }
+            at.switch = Some(self.site_ref(v, &spath, constraints)?);
+            return Some(at);
+        }
         if let Some(v) = fields.get("time") {
             let tpath = key_path(path, "time");
             let t = number(v, &tpath, &mut self.diag)?;

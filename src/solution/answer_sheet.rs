@@ -109,6 +109,10 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
     }
     out.insert("state".into(), Value::Object(state(problem, answer)));
     out.insert("time".into(), number(answer.time));
+    if let Some(site) = question.at.switch {
+        // The instant was found, not given: say where it comes from.
+        out.insert("switch".into(), Value::from(problem.site_name(site)));
+    }
     Value::Object(out)
 }
 
@@ -143,10 +147,13 @@ pub fn json(problem: &Problem, answers: &[Answer]) -> String {
 pub fn text(problem: &Problem, answers: &[Answer]) -> String {
     let mut out = String::new();
     for (i, (question, answer)) in problem.questions.iter().zip(answers).enumerate() {
-        let how = if answer.simulated {
-            ", simulated from the initial state"
-        } else {
-            ""
+        let how = match question.at.switch {
+            Some(site) => format!(
+                ", where {} first switches between sticking and slipping, simulated from the initial state",
+                problem.site_name(site)
+            ),
+            None if answer.simulated => ", simulated from the initial state".into(),
+            None => String::new(),
         };
         let _ = writeln!(
             out,

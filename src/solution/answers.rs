@@ -19,6 +19,13 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
         .zip(answers)
         .map(|(question, answer)| {
             let mut view = blank_one(problem, question);
+            if let Some(site) = question.at.switch {
+                view.at_tex = Math::from(format!("t = {}\\ \\mathrm{{s}}", fixed(answer.time)));
+                view.at_note = format!(
+                    "{}, simulated from the initial state",
+                    switch_note(problem, site)
+                );
+            }
             // A reaction's moment about a free axis is no unknown at all: exactly 0, and not
             // worth a line; the note says the others are zero.
             let shown: Vec<&(Quantity, f64)> = answer
@@ -105,7 +112,15 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
 }
 
 fn at(problem: &Problem, question: &Question) -> (String, String) {
-    let QuestionAt { time, state } = &question.at;
+    let QuestionAt {
+        time,
+        state,
+        switch,
+    } = &question.at;
+    if let Some(site) = switch {
+        // The instant is what the student finds: the blank handout names it `t`.
+        return ("t".into(), switch_note(problem, *site));
+    }
     let t = time.unwrap_or(0.0);
     let time_tex = format!("t = {}\\ \\mathrm{{s}}", fixed(t));
     match state {
@@ -130,6 +145,14 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
             (parts.join(",\\ "), note.into())
         }
     }
+}
+
+/// The instant a `switch` question is asked at, in words.
+fn switch_note(problem: &Problem, site: usize) -> String {
+    format!(
+        "the instant the friction at {} first switches between sticking and slipping",
+        problem.site_name(site)
+    )
 }
 
 fn number_tex(x: f64) -> String {
