@@ -403,3 +403,24 @@ fn the_bicycle_takes_its_three_independent_speeds() {
     assert_eq!(generalized_rows(&kane), 3);
     check_numbers(name, &problem, &kane);
 }
+
+/// The slider-crank's light connecting rod is a two-force member: Kane's rows bring in the
+/// force at its closure Q as one unknown along the rod, the tension T^Q, through one
+/// auxiliary speed; the crank pin P's two components asked for come as before.
+#[test]
+fn a_light_rod_s_closure_carries_its_tension_alone() {
+    let name = "problems/slider-crank-light-rod.json";
+    let problem = load_file(std::path::Path::new(name)).expect("valid");
+    let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let unknowns: Vec<String> = (kane.system.unknowns.iter())
+        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
+        .collect();
+    assert!(unknowns.contains(&"T^{Q}".to_string()), "{unknowns:?}");
+    assert!(
+        !unknowns.iter().any(|u| u.starts_with("F^{Q}")),
+        "{unknowns:?}"
+    );
+    // q̈₁'s row, the tension's, and P's two components.
+    assert_eq!(generalized_rows(&kane), 4);
+    check_numbers(name, &problem, &kane);
+}

@@ -16,6 +16,7 @@ pub mod gear;
 pub mod independent;
 pub mod inverse_by_minors;
 pub mod joints;
+pub mod light_rod;
 pub mod massless;
 pub mod model;
 pub mod on_parent;

@@ -80,7 +80,7 @@ fn member_direction(model: &Model, s: usize) -> Option<Vector> {
 }
 
 /// Whether a load acts on `body` or on joint `j` (then more than the member's forces act).
-fn loaded(problem: &Problem, body: BodyId, j: usize) -> bool {
+pub(crate) fn loaded(problem: &Problem, body: BodyId, j: usize) -> bool {
     let on_body = |p: &PointRef| match *p {
         PointRef::Named(i) => problem.points[i].on == body,
         PointRef::MassCenter(b) | PointRef::Origin(b) => b == body,

@@ -23,6 +23,8 @@ pub fn derive_for<'p>(
     if method == Method::Kane {
         // Kane's auxiliary speed along a light rod brings in its tension alone.
         crate::mechanics::two_force::along_members(&mut model);
+        // And a light rod's closure, its tension alone.
+        crate::mechanics::light_rod::closures_along_rods(&mut model);
     }
     budget::step("writing the forces, the inertia forces and torques (step 2)");
     let free_bodies = plan::free_bodies(&model, request.form)?;

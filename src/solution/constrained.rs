@@ -48,14 +48,16 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 // Multiplied out, a contact's velocity across a chain of frames is long;
                 // as the contact point's velocity along the reaction's direction it reads
                 // as a textbook writes the constraint.
-                let reaction = &model.sites[*site].reactions[*component];
-                equation_tex = format!(
-                    "{} \\cdot {} = 0",
-                    point_velocity_tex(model, *site),
-                    super::tex::vector_tex(model, &reaction.direction)
-                );
-                if !velocities.contains(site) {
-                    velocities.push(*site);
+                // (A light rod's row across it has no reaction component: left as it is.)
+                if let Some(reaction) = model.sites[*site].reactions.get(*component) {
+                    equation_tex = format!(
+                        "{} \\cdot {} = 0",
+                        point_velocity_tex(model, *site),
+                        super::tex::vector_tex(model, &reaction.direction)
+                    );
+                    if !velocities.contains(site) {
+                        velocities.push(*site);
+                    }
                 }
             }
             ConstraintView {

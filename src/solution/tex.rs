@@ -228,7 +228,7 @@ pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
     }
 }
 
-/// What a constraint row constrains, in LaTeX: `\text{rolling constraint at floor}`, or
+/// What a constraint row constrains, in LaTeX: `\text{no slip at floor}`, or
 /// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
 pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
     use crate::mechanics::sites::SiteKind;
@@ -252,13 +252,26 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
     match row.map(|r| &r.origin) {
         Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
             Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
-                // A point that slides on a plane (`contact`) does not roll.
-                let slides = matches!(s.kind, SiteKind::Contact(k) if matches!(
-                    problem.constraints.get(k).map(|c| &c.kind),
-                    Some(crate::problem::ConstraintKind::Contact { .. })
-                ));
-                let what = if slides { "contact" } else { "rolling" };
-                text(format!("{what} constraint at {}", s.name))
+                let kind = match s.kind {
+                    SiteKind::Contact(k) => problem.constraints.get(k).map(|c| &c.kind),
+                    _ => None,
+                };
+                let on_a_surface = matches!(
+                    kind,
+                    Some(
+                        crate::problem::ConstraintKind::Contact { .. }
+                            | crate::problem::ConstraintKind::Rolling { .. }
+                    )
+                );
+                // The normal force is the contact's last component: its row keeps the body
+                // on the surface; the others keep its point from slipping.
+                let normal = matches!(row.map(|r| &r.origin),
+                    Some(RowOrigin::Site { component, .. }) if *component + 1 == s.reactions.len());
+                match (on_a_surface, normal) {
+                    (true, true) => text(format!("no penetration at {}", s.name)),
+                    (true, false) => text(format!("no slip at {}", s.name)),
+                    (false, _) => text(format!("rolling constraint at {}", s.name)),
+                }
             }
             Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
                 text(format!("loop closure at {}", s.name))
@@ -283,6 +296,15 @@ pub const ACCELERATION_LEVEL: &str = "(differentiated to the acceleration level)
 /// The direction of a closure's or a contact's constraint row: that of the reaction
 /// component that enforces it (the row is the relative motion along it).
 pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
+    // A no-slip row of a friction site: along the tangent its friction component takes.
+    for friction in &model.constraints.friction {
+        if let Some(row) = friction.stick.iter().find(|r| r.name == name) {
+            let site = model.sites.get(friction.site)?;
+            let component =
+                (site.reactions.iter()).find(|c| c.unknown(&site.name) == row.unknown)?;
+            return Some(super::tex::vector_tex(model, &component.direction));
+        }
+    }
     let row = model.constraints.rows.iter().find(|r| r.name == name)?;
     let RowOrigin::Site { site, component } = row.origin else {
         return None;
