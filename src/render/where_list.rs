@@ -51,7 +51,11 @@ fn each_value_once(list: Vec<Named>) -> Vec<Named> {
     };
     let cosine = |n: &Named| n.note.starts_with("the direction cosine ");
     let mut first: Vec<(String, String)> = Vec::new();
-    for n in list.iter().filter(|n| cosine(n)).chain(list.iter().filter(|n| !cosine(n))) {
+    for n in list
+        .iter()
+        .filter(|n| cosine(n))
+        .chain(list.iter().filter(|n| !cosine(n)))
+    {
         if let Some((name, value)) = split(n) {
             if value.len() > name.len() && !first.iter().any(|(_, v)| *v == value) {
                 first.push((name, value));
@@ -122,9 +126,15 @@ mod tests {
     fn a_value_two_names_share_is_written_once() {
         let named = |d: &str, note: &str| Named::new(d.to_string(), note);
         let list = each_value_once(vec![
-            named("v_{x} = c_{1} c_{2} - s_{1}", "partial velocity of B* for x, along B.x"),
+            named(
+                "v_{x} = c_{1} c_{2} - s_{1}",
+                "partial velocity of B* for x, along B.x",
+            ),
             named("C_{13} = s_{1} c_{2}", "the direction cosine A.x · B.z"),
-            named("C_{11} = c_{1} c_{2} - s_{1}", "the direction cosine A.x · B.x"),
+            named(
+                "C_{11} = c_{1} c_{2} - s_{1}",
+                "the direction cosine A.x · B.x",
+            ),
             named("C_{31} = s_{1} c_{2}", "the direction cosine A.z · B.x"),
             named("w_{1} = a", "short"),
             named("w_{2} = a", "short"),
