@@ -18,7 +18,7 @@ fn the_heavy_tops_moment_of_inertia_about_the_vertical_is_collected() {
     prints(
         "heavy-symmetric-top",
         "kane",
-        r"\left(I_{3} c_{\theta}^{2} + \left(I_{t} + h^{2} m\right) s_{\theta}^{2}\right) \ddot{\psi}",
+        r"(I_{3} c_{\theta}^{2} + (I_{t} + h^{2} m) s_{\theta}^{2}) \ddot{\psi}",
     );
 }
 
@@ -28,8 +28,8 @@ fn a_joint_points_acceleration_groups_the_offsets_as_the_rigid_body_formula_does
     // in H. Its x component: a^{H*}_x + r_z (α_y + ω_x ω_z) − r_x (ω_y² + ω_z²).
     let expected = [
         r"\tilde{a}^{\mathrm{front}_{\mathrm{hub}}}_{x} = \tilde{a}^{H^{*}}_{x}",
-        r" - \left(r_{F} + z_{H}\right) \left(\tilde{\alpha}^{H}_{y} + \omega^{H}_{x} \omega^{H}_{z}\right)",
-        r" + \left(x_{H} - w\right) \left({\omega^{H}_{y}}^{2} + {\omega^{H}_{z}}^{2}\right)$",
+        r" - (r_{F} + z_{H}) (\tilde{\alpha}^{H}_{y} + \omega^{H}_{x} \omega^{H}_{z})",
+        r" + (x_{H} - w) ({\omega^{H}_{y}}^{2} + {\omega^{H}_{z}}^{2})$",
     ]
     .concat();
     prints("validation/whipple-bicycle", "kane", &expected);
@@ -39,7 +39,7 @@ fn a_joint_points_acceleration_groups_the_offsets_as_the_rigid_body_formula_does
 fn eulers_equations_write_the_difference_of_inertias_positive_first() {
     // I₂ u̇₂ = (I₃ − I₁) u₃ u₁, as Euler wrote it; the handout writes Kane's row with the
     // mass matrix positive, I₂ u̇₂ + (I₁ − I₃) u₁ u₃ = 0.
-    let euler = r"I_{2} \dot{u}_{2} + \left(I_{1} - I_{3}\right) u_{1} u_{3} = 0";
+    let euler = r"I_{2} \dot{u}_{2} + (I_{1} - I_{3}) u_{1} u_{3} = 0";
     prints("torque-free-body-speeds", "kane", euler);
 }
 
@@ -89,7 +89,7 @@ fn sums_that_share_a_factor_of_constants_write_it_once() {
     prints(
         "two-wheeled-cart",
         "motion-law",
-        r"c_{\psi} \left(m_{C} + 2 m_{W}\right) \left(R s_{\theta} + b c_{\theta}\right) \ddot{x}",
+        r"c_{\psi} (m_{C} + 2 m_{W}) (R s_{\theta} + b c_{\theta}) \ddot{x}",
     );
 }
 
@@ -101,6 +101,6 @@ fn a_vectors_component_that_would_lead_with_a_minus_puts_its_positive_terms_firs
     prints(
         "two-link-robot-arm",
         "newton-euler",
-        r"| contact: elbow motor | $\left(k_{d2} \dot{q}_{2} + k_{p2} q_{2} - \tau_{2} - k_{p2} r_{2}\right) \hat{\mathbf{a}}_{z}$",
+        r"| contact: elbow motor | $(k_{d2} \dot{q}_{2} + k_{p2} q_{2} - \tau_{2} - k_{p2} r_{2}) \hat{\mathbf{a}}_{z}$",
     );
 }

@@ -28,7 +28,7 @@ fn a_long_inertia_force_is_written_by_the_acceleration_of_step_4() {
         "**19. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "\\left[-F^{P_{8}}_{x} + F^{P_{7}}_{x} c_{7} + F^{P_{7}}_{y} s_{7}\\right] - g m s_{1\\ldots 7} - m\\, {}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}} = 0"
+        "[-F^{P_{8}}_{x} + F^{P_{7}}_{x} c_{7} + F^{P_{7}}_{y} s_{7}] - g m s_{1\\ldots 7} - m\\, {}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}} = 0"
     );
     assert!(
         markdown.contains("{}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} = "),
@@ -44,7 +44,7 @@ fn a_short_inertia_force_stays_multiplied_out() {
         "**1. $\\mathrm{link}_{1}\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "\\left[-F^{P_{2}}_{x} + F^{O}_{x} c_{1} + F^{O}_{y} s_{1}\\right] - g m s_{1} - \\frac{L m \\ddot{q}_{1}}{2} = 0"
+        "[-F^{P_{2}}_{x} + F^{O}_{x} c_{1} + F^{O}_{y} s_{1}] - g m s_{1} - \\frac{L m \\ddot{q}_{1}}{2} = 0"
     );
 }
 
@@ -55,14 +55,14 @@ fn a_planar_inertia_torque_is_alpha_dot_i_alone() {
     let heading = "**21. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{M}_{\\mathrm{link}_{7}^{*}} \\cdot \\hat{\\mathbf{n}}_{z}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - \\left( \\boldsymbol{\\alpha}^{\\mathrm{link}_{7}} \\cdot \\mathbf{I}^{\\mathrm{link}_{7}} \\right) \\cdot \\hat{\\mathbf{n}}_{z} = 0"
+        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - ( \\boldsymbol{\\alpha}^{\\mathrm{link}_{7}} \\cdot \\mathbf{I}^{\\mathrm{link}_{7}} ) \\cdot \\hat{\\mathbf{n}}_{z} = 0"
     );
 }
 
 #[test]
 fn a_spatial_inertia_torque_keeps_the_gyroscopic_term() {
     let markdown = explain("validation/all-joints-3d", "newton-euler", "markdown");
-    let torque = "- \\left( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} \\right) \\cdot \\hat{\\mathbf{d}}_{x} = 0";
+    let torque = "- ( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{x} = 0";
     assert!(markdown.contains(torque), "no row ends in {torque}");
 }
 
@@ -72,7 +72,7 @@ fn a_group_names_its_inertia_forces_by_a_sum_over_its_bodies() {
     // The Motion Law's free body link7 + … + link10 about P7: the moments of the four
     // bodies' inertia forces, each r × m a* with its a* from step 4.
     let named = "- \\sum_{k \\in \\{";
-    let moment = "\\left( \\mathbf{r}^{P_{7} k^*} \\times m_{k}\\, {}^{N}\\mathbf{a}^{k^*} \\right) \\cdot \\hat{\\mathbf{n}}_{z}";
+    let moment = "( \\mathbf{r}^{P_{7} k^*} \\times m_{k}\\, {}^{N}\\mathbf{a}^{k^*} ) \\cdot \\hat{\\mathbf{n}}_{z}";
     assert!(
         markdown
             .lines()
@@ -109,7 +109,7 @@ fn second_derivatives_sharing_a_coefficient_are_written_once_with_their_sum() {
     let heading = "**30. $\\mathrm{link}_{10}\\colon \\sum \\mathbf{M}";
     assert_eq!(
         row_simplified(&markdown, heading),
-        "-\\frac{L^{2} m}{12} \\left(\\ddot{q}_{1} + \\cdots + \\ddot{q}_{10}\\right) - \\frac{L c_{10}}{2} F^{P_{10}}_{x} - \\frac{L s_{10}}{2} F^{P_{10}}_{y} = 0"
+        "-\\frac{L^{2} m}{12} (\\ddot{q}_{1} + \\cdots + \\ddot{q}_{10}) - \\frac{L c_{10}}{2} F^{P_{10}}_{x} - \\frac{L s_{10}}{2} F^{P_{10}}_{y} = 0"
     );
 }
 
@@ -130,7 +130,7 @@ fn a_contact_group_is_written_with_sin_squared_plus_cos_squared_as_one() {
     let heading = "**24. $D\\colon \\sum \\mathbf{M}_{D^{*}} \\cdot \\hat{\\mathbf{d}}_{z}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "M^{U}_{1} c_{q_{D2}} - \\left( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} \\right) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
+        "M^{U}_{1} c_{q_{D2}} - ( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
     );
 }
 

@@ -134,9 +134,9 @@ fn torque_free_body_with_body_frame_speeds_gives_eulers_equations() {
     ]);
     let text = String::from_utf8_lossy(&out.stdout);
     for line in [
-        r"I_{1} \dot{u}_{1} + \left(I_{3} - I_{2}\right) u_{2} u_{3} = 0",
-        r"I_{2} \dot{u}_{2} + \left(I_{1} - I_{3}\right) u_{1} u_{3} = 0",
-        r"I_{3} \dot{u}_{3} + \left(I_{2} - I_{1}\right) u_{1} u_{2} = 0",
+        r"I_{1} \dot{u}_{1} + (I_{3} - I_{2}) u_{2} u_{3} = 0",
+        r"I_{2} \dot{u}_{2} + (I_{1} - I_{3}) u_{1} u_{3} = 0",
+        r"I_{3} \dot{u}_{3} + (I_{2} - I_{1}) u_{1} u_{2} = 0",
     ] {
         assert!(text.contains(line), "the handout lacks {line}");
     }

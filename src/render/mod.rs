@@ -12,6 +12,7 @@ pub mod context;
 pub mod draw;
 pub mod escape;
 pub mod figure;
+mod flat_brackets;
 pub mod line_break;
 pub mod markup;
 pub mod math_width;

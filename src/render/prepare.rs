@@ -70,7 +70,9 @@ fn typed(text: &str, kind: &str, format: Format) -> String {
             let math = text.split_whitespace().collect::<Vec<_>>().join(" ");
             match format {
                 // `|` would end a Markdown table cell, even inside `$…$` on GitHub.
-                Format::Markdown => math.replace("\\|", "\\Vert ").replace('|', "\\vert "),
+                Format::Markdown => super::flat_brackets::flat_brackets(&math)
+                    .replace("\\|", "\\Vert ")
+                    .replace('|', "\\vert "),
                 Format::Latex | Format::Html => math,
             }
         }

@@ -7,6 +7,7 @@ use super::context::{Named, WhereEntry};
 /// `list` grouped by [`kind`], each group where its first member stood; a group of one
 /// keeps its own note.
 pub fn grouped(list: Vec<Named>) -> Vec<WhereEntry> {
+    let list = each_value_once(list);
     let mut groups: Vec<(String, Vec<Named>)> = Vec::new();
     for named in list {
         let key = kind(&named.note);
@@ -33,6 +34,45 @@ pub fn grouped(list: Vec<Named>) -> Vec<WhereEntry> {
                 definitions_tex: members.into_iter().map(|m| m.definition_tex).collect(),
                 note: key,
                 grouped: true,
+            }
+        })
+        .collect()
+}
+
+/// `list` with a value that two names stand for written out once: the second name is
+/// defined as the first (`{}^{B}C^{H}_{31} = {}^{B}C^{H}_{13}`), a direction cosine being
+/// the first wherever one has the value (a body's partial velocity along `x` is a
+/// direction cosine). A value no longer than its name is left as it is.
+fn each_value_once(list: Vec<Named>) -> Vec<Named> {
+    let split = |n: &Named| {
+        n.definition_tex
+            .split_once(" = ")
+            .map(|(name, value)| (name.to_string(), value.to_string()))
+    };
+    let cosine = |n: &Named| n.note.starts_with("the direction cosine ");
+    let mut first: Vec<(String, String)> = Vec::new();
+    for n in list
+        .iter()
+        .filter(|n| cosine(n))
+        .chain(list.iter().filter(|n| !cosine(n)))
+    {
+        if let Some((name, value)) = split(n) {
+            if value.len() > name.len() && !first.iter().any(|(_, v)| *v == value) {
+                first.push((name, value));
+            }
+        }
+    }
+    list.into_iter()
+        .map(|n| {
+            let Some((name, value)) = split(&n) else {
+                return n;
+            };
+            match first.iter().find(|(_, v)| *v == value) {
+                Some((earlier, _)) if *earlier != name => Named {
+                    definition_tex: format!("{name} = {earlier}").into(),
+                    note: n.note,
+                },
+                _ => n,
             }
         })
         .collect()
@@ -81,6 +121,37 @@ fn kind(note: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_value_two_names_share_is_written_once() {
+        let named = |d: &str, note: &str| Named::new(d.to_string(), note);
+        let list = each_value_once(vec![
+            named(
+                "v_{x} = c_{1} c_{2} - s_{1}",
+                "partial velocity of B* for x, along B.x",
+            ),
+            named("C_{13} = s_{1} c_{2}", "the direction cosine A.x · B.z"),
+            named(
+                "C_{11} = c_{1} c_{2} - s_{1}",
+                "the direction cosine A.x · B.x",
+            ),
+            named("C_{31} = s_{1} c_{2}", "the direction cosine A.z · B.x"),
+            named("w_{1} = a", "short"),
+            named("w_{2} = a", "short"),
+        ]);
+        let texts: Vec<&str> = list.iter().map(|n| n.definition_tex.as_str()).collect();
+        assert_eq!(
+            texts,
+            [
+                "v_{x} = C_{11}",
+                "C_{13} = s_{1} c_{2}",
+                "C_{11} = c_{1} c_{2} - s_{1}",
+                "C_{31} = C_{13}",
+                "w_{1} = a",
+                "w_{2} = a"
+            ]
+        );
+    }
 
     #[test]
     fn a_kind_drops_the_component_and_the_speed() {

@@ -68,8 +68,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         let mut definitions = kinematic_definitions(derivation);
-        if by_partials {
-            let rule = super::kinematics::partial_velocity_definition(derivation);
+        if by_partials != super::kinematics::ByPartials::None {
+            let rule = super::kinematics::partial_velocity_definition(derivation, by_partials);
             definitions.insert(0, rule);
         }
         solution.kinematic_definitions = crate::render::where_list::grouped(definitions);

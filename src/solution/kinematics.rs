@@ -16,8 +16,9 @@ use crate::symbolic::simplify::simplify;
 use crate::symbolic::{add, Expr};
 
 /// Step 4's vectors, body by body, and whether an acceleration is written by the partial
-/// velocities (`Σ_r ᴺv_r q̈_r + ᴺã`), which the where list then defines.
-pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
+/// velocities (`Σ_r ᴺv_r q̈_r + ᴺã`), which the where list then defines: of mass centres
+/// only, or of joint points too.
+pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartials) {
     let model = &derivation.model;
     let inertia = derivation.inertia();
     // The shorter of the vector multiplied out and as the equations use it (named parts).
@@ -36,6 +37,18 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
         }
     };
     let mut by_partials = false;
+    // The joint points' named accelerations without the q'' (`ã^{head}`), which the where
+    // list defines when a child's acceleration is built on them: a long pin acceleration
+    // is then written by the rule with them, not multiplied out a second time.
+    let joint_rests = crate::symbolic::named::named_definitions(
+        inertia
+            .acceleration
+            .iter()
+            .flat_map(|v| v.parts())
+            .flat_map(|(_, c)| c.iter()),
+    );
+    let states = sample_states(model);
+    let mut pins_by_partials = false;
     let views = model
         .order
         .iter()
@@ -99,10 +112,19 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
                 // A pin at the parent's mass centre (a bob's) has that centre's motion,
                 // written above: v^{B*} follows from v^{A*}.
                 Some(site) if at_parent_centre(model, site) => (String::new(), String::new()),
-                Some(site) => one_line_if_short(
-                    pin_line(model, site, Motion::Velocity),
-                    pin_line(model, site, Motion::Acceleration),
-                ),
+                Some(site) => {
+                    let mut acceleration = pin_line(model, site, Motion::Acceleration);
+                    if printed_width(&acceleration) > LINE {
+                        let rule = pin_by_the_rule(model, site, &joint_rests, &states);
+                        if let Some(rule) =
+                            rule.filter(|r| printed_width(r) < printed_width(&acceleration))
+                        {
+                            acceleration = rule;
+                            (by_partials, pins_by_partials) = (true, true);
+                        }
+                    }
+                    one_line_if_short(pin_line(model, site, Motion::Velocity), acceleration)
+                }
                 None => (String::new(), String::new()),
             };
             Kinematics {
@@ -123,7 +145,75 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, bool) {
             }
         })
         .collect();
-    (views, by_partials)
+    let by = match (by_partials, pins_by_partials) {
+        (false, _) => ByPartials::None,
+        (true, false) => ByPartials::MassCentres,
+        (true, true) => ByPartials::AndJointPoints,
+    };
+    (views, by)
+}
+
+/// Which accelerations of step 4 are written by the partial velocities.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum ByPartials {
+    /// None: the where list needs no rule.
+    None,
+    /// Mass centres' only.
+    MassCentres,
+    /// Joint points' as well.
+    AndJointPoints,
+}
+
+/// A long acceleration of the pin `site` by the rule, `Σ_r ᴺv^P_r q̈_r + ã^P`, its rest by
+/// the names the where list already gives it (each checked by value at `states`), else
+/// written out; `None` when no rest is named.
+fn pin_by_the_rule(
+    model: &Model,
+    site: usize,
+    named: &[crate::symbolic::Definition],
+    states: &[crate::symbolic::eval::Values],
+) -> Option<String> {
+    use crate::mechanics::sites::SiteKind;
+    let pin = &model.sites[site];
+    let SiteKind::Joint(j) = pin.kind else {
+        return None;
+    };
+    let joint = &model.problem.joints[j].name;
+    let accelerations = model.problem.speed_symbols(2);
+    let components =
+        pin_motion(model, site, Motion::Acceleration).components_in(pin.parent, &model.frames);
+    let mut any_named = false;
+    let mut rest = Vec::with_capacity(3);
+    for (axis, a) in components.iter().enumerate() {
+        let (_, without) = linear_split(&simplify(a), &accelerations).ok()?;
+        let key = format!("{joint}.a.{}", crate::mechanics::compact::AXES[axis]);
+        let name = named
+            .iter()
+            .find(|d| d.name() == key && same_at(d.value(), &without, states));
+        rest.push(match name {
+            Some(d) => {
+                any_named = true;
+                Expr::sym(crate::symbolic::Symbol::Defined(d.clone()))
+            }
+            None => without,
+        });
+    }
+    if !any_named {
+        return None;
+    }
+    let rest = Vector::new(pin.parent, rest.try_into().ok()?);
+    let rest_tex = vector_tex_by(model, &rest, component_term);
+    let point = latex_name(&pin.name);
+    let speed = if model.problem.has_speeds() {
+        "\\dot{u}_{r}"
+    } else {
+        "\\ddot{q}_{r}"
+    };
+    let sign = if rest_tex.starts_with('-') { "" } else { "+ " };
+    Some(format!(
+        "{} = \\sum_{{r}} {{}}^{{N}}\\mathbf{{v}}^{{{point}}}_{{r}}\\, {speed} {sign}{rest_tex}",
+        pin_symbol(model, site, Motion::Acceleration)
+    ))
 }
 
 /// The most bodies whose mass centres step 4 places from their pins: a long chain's
@@ -162,16 +252,21 @@ fn position_line(model: &Model, body: BodyId) -> String {
     )
 }
 
-/// The where list's entry for accelerations written by the partial velocities.
-pub(super) fn partial_velocity_definition(derivation: &Derivation) -> Named {
+/// The where list's entry for accelerations written by the partial velocities, of mass
+/// centres (`k^*`) or of points (`P`) when joint points are written so too.
+pub(super) fn partial_velocity_definition(derivation: &Derivation, by: ByPartials) -> Named {
     let rate = if derivation.model.problem.has_speeds() {
         "u_{r}"
     } else {
         "\\dot{q}_{r}"
     };
+    let (point, whose) = match by {
+        ByPartials::AndJointPoints => ("P", "each mass centre and joint point"),
+        _ => ("k^*", "each mass centre"),
+    };
     Named::new(
-        format!("{{}}^{{N}}\\mathbf{{v}}^{{k^*}}_{{r}} = \\partial\\, {{}}^{{N}}\\mathbf{{v}}^{{k^*}} / \\partial {rate}"),
-        "the partial velocities of each mass centre: the coefficient of each rate in its velocity above, and of the rate's derivative in its acceleration",
+        format!("{{}}^{{N}}\\mathbf{{v}}^{{{point}}}_{{r}} = \\partial\\, {{}}^{{N}}\\mathbf{{v}}^{{{point}}} / \\partial {rate}"),
+        format!("the partial velocities of {whose}: the coefficient of each rate in its velocity above, and of the rate's derivative in its acceleration"),
     )
 }
 

@@ -21,10 +21,11 @@ pub const BESIDE_A_TABLE: Size = Size {
     height: 300.0,
 };
 
-/// The largest a free body may be above its table of forces.
+/// The largest a free body may be above its table of forces: a third of the text's height,
+/// so that a picture and its table leave room on the page for the next free body's.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 300.0,
+    height: 250.0,
 };
 
 /// The room a picture may take on the page, in points.

@@ -46,8 +46,9 @@ pub fn free_body_sets(derivation: &Derivation) -> Vec<Vec<BodyId>> {
 fn free_body_content(free_bodies: usize) -> f64 {
     /// The most free bodies drawn at the configuration's size.
     const MOST_AT_FULL_SIZE: usize = 3;
-    /// A long chain's free body: a link about 4 cm long on the page.
-    const MANY: f64 = 170.0;
+    /// A long chain's free body: a link about 3 cm long on the page, narrow enough
+    /// upright for its table of forces beside it.
+    const MANY: f64 = 140.0;
     if free_bodies <= MOST_AT_FULL_SIZE {
         crate::render::draw::fit::CONTENT
     } else {
