@@ -11,7 +11,7 @@
 //! some state unless `A_D` itself is singular there.
 
 use crate::symbolic::fast_hash::FastMap;
-use crate::symbolic::{add, simplify, Expr};
+use crate::symbolic::{add, Expr};
 
 /// The most columns left after the numeric pivots that the minors may expand: `2ⁿ` row
 /// sets by `2ⁿ` column sets at worst.
@@ -37,21 +37,7 @@ pub fn inverse_by_minors(a: &[Vec<Expr>], prefix: &str) -> Option<Vec<Vec<Expr>>
         };
         used[p] = true;
         pivot_row[col] = Some(p);
-        let lead = m[p][col].clone();
-        for j in 0..n {
-            m[p][j] = simplify(&(&m[p][j] / &lead));
-            e[p][j] = simplify(&(&e[p][j] / &lead));
-        }
-        for r in 0..n {
-            if r == p || m[r][col].is_zero() {
-                continue;
-            }
-            let factor = m[r][col].clone();
-            for j in 0..n {
-                m[r][j] = simplify(&(&m[r][j] - &(&factor * &m[p][j])));
-                e[r][j] = simplify(&(&e[r][j] - &(&factor * &e[p][j])));
-            }
-        }
+        super::speeds::pivot_on(&mut m, &mut e, (p, col), &|_| false);
     }
     let rest_rows: Vec<usize> = (0..n).filter(|&r| !used[r]).collect();
     let rest_columns: Vec<usize> = (0..n).filter(|&c| pivot_row[c].is_none()).collect();

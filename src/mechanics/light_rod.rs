@@ -8,7 +8,7 @@
 
 use super::joints::ReactionComponent;
 use super::site::SiteKind;
-use super::vector::{zero3, Components, Vector};
+use super::vector::Vector;
 use super::Model;
 use crate::problem::BodyId;
 use crate::symbolic::eval::eval;
@@ -107,14 +107,8 @@ fn rod_direction(model: &Model, s: usize) -> Option<Vector> {
     }
     let number = |e: &Expr| eval(e, &model.values);
     // From this closure to the pin, in the rod's unit vectors.
-    let reach: Vec<f64> = (0..3)
-        .map(|k| number(&(&model.sites[pin].child_offset[k] - &site.parent_offset[k])))
-        .collect();
-    let along: Vec<usize> = (0..3).filter(|&k| reach[k].abs() > 1e-12).collect();
-    let [k] = along[..] else {
-        return None;
-    };
-    let mut unit: Components = zero3();
-    unit[k] = Expr::int(if reach[k] > 0.0 { 1 } else { -1 });
-    Some(Vector::new(rod, unit))
+    let reach: [f64; 3] = std::array::from_fn(|k| {
+        number(&(&model.sites[pin].child_offset[k] - &site.parent_offset[k]))
+    });
+    super::two_force::unit_along(rod, reach)
 }

@@ -270,24 +270,40 @@ fn eliminate(m: &[Vec<Expr>], largest: Option<usize>) -> Option<Vec<Vec<Expr>>> 
         let Some(p) = pivot else { continue };
         a.swap(col, p);
         inv.swap(col, p);
-        let lead = a[col][col].clone();
-        for j in 0..n {
-            a[col][j] = simplify(&(&a[col][j] / &lead));
-            inv[col][j] = simplify(&(&inv[col][j] / &lead));
-        }
-        for r in 0..n {
-            if r == col || a[r][col].is_zero() {
-                continue;
-            }
-            let factor = a[r][col].clone();
-            for j in 0..n {
-                a[r][j] = simplify(&(&a[r][j] - &(&factor * &a[col][j])));
-                inv[r][j] = simplify(&(&inv[r][j] - &(&factor * &inv[col][j])));
-                if too_long(&a[r][j]) || too_long(&inv[r][j]) {
-                    return None;
-                }
-            }
+        if !pivot_on(&mut a, &mut inv, (col, col), &too_long) {
+            return None;
         }
     }
     Some(inv)
+}
+
+/// One Gauss–Jordan step on `a` and the row operations `e` applied alongside: row `p`
+/// scaled to a unit at `col`, then `col` cleared from every other row. `false`, the step
+/// left unfinished, as soon as an entry is `too_long`.
+pub(crate) fn pivot_on(
+    a: &mut [Vec<Expr>],
+    e: &mut [Vec<Expr>],
+    (p, col): (usize, usize),
+    too_long: &dyn Fn(&Expr) -> bool,
+) -> bool {
+    let n = a.len();
+    let lead = a[p][col].clone();
+    for j in 0..n {
+        a[p][j] = simplify(&(&a[p][j] / &lead));
+        e[p][j] = simplify(&(&e[p][j] / &lead));
+    }
+    for r in 0..n {
+        if r == p || a[r][col].is_zero() {
+            continue;
+        }
+        let factor = a[r][col].clone();
+        for j in 0..n {
+            a[r][j] = simplify(&(&a[r][j] - &(&factor * &a[p][j])));
+            e[r][j] = simplify(&(&e[r][j] - &(&factor * &e[p][j])));
+            if too_long(&a[r][j]) || too_long(&e[r][j]) {
+                return false;
+            }
+        }
+    }
+    true
 }

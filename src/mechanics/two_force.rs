@@ -67,9 +67,14 @@ fn member_direction(model: &Model, s: usize) -> Option<Vector> {
         return None;
     }
     // Along one unit vector of the body, from the particle to the joint.
-    let reach: Vec<f64> = (0..3)
-        .map(|k| number(&(&site.child_offset[k] - &state.center_offset[k])))
-        .collect();
+    let reach: [f64; 3] =
+        std::array::from_fn(|k| number(&(&site.child_offset[k] - &state.center_offset[k])));
+    unit_along(body, reach)
+}
+
+/// The unit vector of `body` that `reach` (in its unit vectors) points along, when it
+/// points along one.
+pub(crate) fn unit_along(body: BodyId, reach: [f64; 3]) -> Option<Vector> {
     let along: Vec<usize> = (0..3).filter(|&k| reach[k].abs() > 1e-12).collect();
     let [k] = along[..] else {
         return None;
