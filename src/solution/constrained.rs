@@ -255,7 +255,10 @@ pub fn dependent_speeds(
 
 /// `Σ x_k symbol_k` with numbers written to the digits of the tables and a coefficient of
 /// one left out; `None` when every `|x_k|` is at most `zero`.
-fn numeric_sum(terms: impl IntoIterator<Item = (f64, String)>, zero: f64) -> Option<String> {
+pub(super) fn numeric_sum(
+    terms: impl IntoIterator<Item = (f64, String)>,
+    zero: f64,
+) -> Option<String> {
     let mut sum = String::new();
     for (x, symbol) in terms {
         if x.abs() <= zero {

@@ -173,6 +173,7 @@ pub fn dependent_speeds(
         let all: Vec<String> = rates(list).iter().map(|r| format!("${r}$")).collect();
         words(&all)
     };
+    let start = derivation.model.values_at(0.0, q, q_rates);
     let relations_tex: Vec<String> =
         speeds
             .dependent
@@ -203,13 +204,24 @@ pub fn dependent_speeds(
                     } else {
                         each.join(" + ")
                     };
-                    return format!("{} = {sum}", rate(d));
+                    // Beside it, what the row is at the start, which a reader can check
+                    // against the velocity constraints.
+                    let number = |c: &Expr| crate::symbolic::eval::eval(c, &start);
+                    let numbers = (speeds.independent.iter().zip(&speeds.c[s]))
+                        .chain(speeds.prescribed.iter().zip(&speeds.c_prescribed[s]))
+                        .map(|(&i, c)| (number(c), rate(i)));
+                    let at_start = super::constrained::numeric_sum(numbers, 1e-13)
+                        .unwrap_or_else(|| "0".into());
+                    return format!(
+                        "{} = {sum} \\qquad \\left(= {at_start} \\text{{ at the start}}\\right)",
+                        rate(d)
+                    );
                 }
                 let sum = roots_of_squares(&simplify(&crate::symbolic::add(terms)), &sign);
                 format!("{} = {}", rate(d), latex_collected(&sum))
             })
             .collect();
-    let mut relation_tex = format!(
+    let relation_tex = format!(
         "\\begin{{aligned}} {} \\end{{aligned}}",
         relations_tex
             .iter()
@@ -217,9 +229,6 @@ pub fn dependent_speeds(
             .collect::<Vec<_>>()
             .join(" \\\\ ")
     );
-    if speeds.at_each_state {
-        relation_tex.push_str(&initial_c(derivation, speeds, q, q_rates));
-    }
     let independent = rates(&speeds.independent);
     // What holds on the motion and not identically, which C and the rows use.
     let relations: Vec<String> = (derivation.model.constraints.relations.iter())
@@ -283,25 +292,6 @@ pub fn dependent_speeds(
         kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds)),
         kane_kept_note: MarkupLine::from(String::new()),
     }
-}
-
-/// `C` in numbers at the initial state, beside the relations that name its entries: what
-/// a reader can check against the velocity constraints.
-fn initial_c(derivation: &Derivation, speeds: &Speeds, q: &[f64], rates: &[f64]) -> String {
-    let values = derivation.model.values_at(0.0, q, rates);
-    let rows: Vec<String> = (speeds.c.iter())
-        .map(|row| {
-            let each = row.iter().map(|c| {
-                let x = crate::symbolic::eval::eval(c, &values);
-                crate::symbolic::format::fixed(if x.abs() < 1e-13 { 0.0 } else { x })
-            });
-            each.collect::<Vec<_>>().join(" & ")
-        })
-        .collect();
-    format!(
-        " \\qquad C = \\begin{{bmatrix}} {} \\end{{bmatrix}} \\ \\text{{at the start}}",
-        rows.join(" \\\\ ")
-    )
 }
 
 /// What drops out and why, the auxiliary speeds, and the order of the solve.
