@@ -20,7 +20,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
         .map(|(question, answer)| {
             let mut view = blank_one(problem, question);
             if let Some(site) = question.at.switch {
-                view.at_tex = Math::from(format!("t = {}\\ \\mathrm{{s}}", fixed(answer.time)));
+                view.at_tex = Math::from(time_tex(answer.time));
                 view.at_note = format!(
                     "{}, simulated from the initial state",
                     switch_note(problem, site)
@@ -122,7 +122,7 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
         return ("t".into(), switch_note(problem, *site));
     }
     let t = time.unwrap_or(0.0);
-    let time_tex = format!("t = {}\\ \\mathrm{{s}}", fixed(t));
+    let time_tex = time_tex(t);
     match state {
         None if t > 0.0 => (time_tex, "simulated from the initial state".into()),
         None => (time_tex, "the initial state".into()),
@@ -145,6 +145,11 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
             (parts.join(",\\ "), note.into())
         }
     }
+}
+
+/// `t = 1.2\ \mathrm{s}`.
+fn time_tex(t: f64) -> String {
+    format!("t = {}\\ \\mathrm{{s}}", fixed(t))
 }
 
 /// The instant a `switch` question is asked at, in words.

@@ -174,53 +174,21 @@ pub fn dependent_speeds(
         words(&all)
     };
     let start = derivation.model.values_at(0.0, q, q_rates);
-    let relations_tex: Vec<String> =
-        speeds
-            .dependent
-            .iter()
-            .enumerate()
-            .map(|(s, &d)| {
-                let terms =
-                    speeds
-                        .independent
-                        .iter()
-                        .enumerate()
-                        .map(|(r, &i)| &speeds.c[s][r] * &problem.coordinate_expr(i, 1))
-                        .chain(speeds.prescribed.iter().enumerate().map(|(p, &i)| {
-                            &speeds.c_prescribed[s][p] * &problem.coordinate_expr(i, 1)
-                        }))
-                        .chain(std::iter::once(speeds.rest[s].clone()));
-                if speeds.at_each_state {
-                    // Named entries, in the order of the speeds: C_{s1} u_1 + C_{s2} u_2 + ….
-                    let pairs = (speeds.independent.iter().zip(&speeds.c[s]))
-                        .chain(speeds.prescribed.iter().zip(&speeds.c_prescribed[s]));
-                    let each: Vec<String> = pairs
-                        .filter(|(_, c)| !c.is_zero())
-                        .map(|(&i, c)| format!("{} {}", latex(c), rate(i)))
-                        .chain(Some(&speeds.rest[s]).filter(|d| !d.is_zero()).map(latex))
-                        .collect();
-                    let sum = if each.is_empty() {
-                        "0".to_string()
-                    } else {
-                        each.join(" + ")
-                    };
-                    // Beside it, what the row is at the start, which a reader can check
-                    // against the velocity constraints.
-                    let number = |c: &Expr| crate::symbolic::eval::eval(c, &start);
-                    let numbers = (speeds.independent.iter().zip(&speeds.c[s]))
-                        .chain(speeds.prescribed.iter().zip(&speeds.c_prescribed[s]))
-                        .map(|(&i, c)| (number(c), rate(i)));
-                    let at_start = super::constrained::numeric_sum(numbers, 1e-13)
-                        .unwrap_or_else(|| "0".into());
-                    return format!(
-                        "{} = {sum} \\qquad \\left(= {at_start} \\text{{ at the start}}\\right)",
-                        rate(d)
-                    );
-                }
-                let sum = roots_of_squares(&simplify(&crate::symbolic::add(terms)), &sign);
-                format!("{} = {}", rate(d), latex_collected(&sum))
-            })
-            .collect();
+    let relations_tex: Vec<String> = (speeds.dependent.iter().enumerate())
+        .map(|(s, &d)| {
+            // Each speed's rate with its entry of C (or C_P), in the order of the speeds.
+            let pairs = (speeds.independent.iter().zip(&speeds.c[s]))
+                .chain(speeds.prescribed.iter().zip(&speeds.c_prescribed[s]));
+            if speeds.at_each_state {
+                return evaluated_relation(rate(d), pairs, &speeds.rest[s], &rate, &start);
+            }
+            let terms = pairs
+                .map(|(&i, c)| c * &problem.coordinate_expr(i, 1))
+                .chain(std::iter::once(speeds.rest[s].clone()));
+            let sum = roots_of_squares(&simplify(&crate::symbolic::add(terms)), &sign);
+            format!("{} = {}", rate(d), latex_collected(&sum))
+        })
+        .collect();
     let relation_tex = format!(
         "\\begin{{aligned}} {} \\end{{aligned}}",
         relations_tex
@@ -271,14 +239,13 @@ pub fn dependent_speeds(
                 speeds.dependent.len()
             );
         }
-        paragraphs.push(
-            "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{F}_r = F_r + \\sum_s C_{sr} F_s$ and $\\tilde{F}^*_r = F^*_r + \\sum_s C_{sr} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:".to_string(),
-        );
-    } else {
-        paragraphs.push(
-            "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints:".to_string(),
-        );
     }
+    let partials = "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints";
+    paragraphs.push(if speeds.at_each_state {
+        format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
+    } else {
+        format!("{partials}:")
+    });
     let kane_tex = format!(
         "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0, \\quad \\tilde{{F}}_r = \\sum_{{P}} \\tilde{{\\mathbf{{v}}}}^{{P}}_r \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\tilde{{\\boldsymbol{{\\omega}}}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}} = F_r + \\sum_s C_{{sr}} F_s \\quad (r = {})",
         independent.join(", ")
@@ -361,6 +328,31 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
         ));
     }
     out
+}
+
+/// A dependent rate `rate` with its entries of `C` named, `C_{s1} u_1 + C_{s2} u_2 + …`
+/// (and `d_s`), and beside it what it is at the start, `start`, which a reader can check
+/// against the velocity constraints.
+fn evaluated_relation<'a>(
+    rate: String,
+    pairs: impl Iterator<Item = (&'a usize, &'a Expr)> + Clone,
+    rest: &Expr,
+    rate_of: &dyn Fn(usize) -> String,
+    start: &crate::symbolic::eval::Values,
+) -> String {
+    let each: Vec<String> = (pairs.clone())
+        .filter(|(_, c)| !c.is_zero())
+        .map(|(&i, c)| format!("{} {}", latex(c), rate_of(i)))
+        .chain(Some(rest).filter(|d| !d.is_zero()).map(latex))
+        .collect();
+    let sum = if each.is_empty() {
+        "0".to_string()
+    } else {
+        each.join(" + ")
+    };
+    let numbers = pairs.map(|(&i, c)| (crate::symbolic::eval::eval(c, start), rate_of(i)));
+    let at_start = super::constrained::numeric_sum(numbers, 1e-13).unwrap_or_else(|| "0".into());
+    format!("{rate} = {sum} \\qquad \\left(= {at_start} \\text{{ at the start}}\\right)")
 }
 
 /// Each light rod whose closure carries its tension alone, and why (see

@@ -79,6 +79,13 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
     let mut out = Vec::new();
     for r in 0..rates.len() {
         let mut first = true;
+        // The speed's label and the partials' subscript: `u_1 = q̇_1` and 1, or the rate
+        // itself where the rows combine the coordinates' rates.
+        let (speed, index) = if by_rate {
+            (rate_tex(derivation, r), rate_tex(derivation, r))
+        } else {
+            (speed_tex(derivation, r), (r + 1).to_string())
+        };
         for (body, v, w, named_v, named_w) in &per_body {
             // Plain brackets, so that TeX can break a long entry inside its table cell.
             let plain = |t: String| {
@@ -101,20 +108,11 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
-            let index = if by_rate {
-                rate_tex(derivation, r)
-            } else {
-                (r + 1).to_string()
-            };
             let particle = crate::mechanics::massless::is_particle(&derivation.model, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
-                    Math::from(if by_rate {
-                        rate_tex(derivation, r)
-                    } else {
-                        speed_tex(derivation, r)
-                    })
+                    Math::from(speed.clone())
                 } else {
                     Math::from(String::new())
                 },
