@@ -423,4 +423,23 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
     // q̈₁'s row, the tension's, and P's two components.
     assert_eq!(generalized_rows(&kane), 4);
     check_numbers(name, &problem, &kane);
+    // The Motion Law takes the tension as the unknown too: the crank and rod about O, the
+    // piston along its slide, the loop's two rows and the rod's two for P, and no row
+    // of the rod's moments, which would say only that nothing acts across it.
+    let motion_law = derive_rows(&problem, Method::MotionLaw).unwrap_or_else(|e| panic!("{e}"));
+    let unknowns: Vec<String> = (motion_law.system.unknowns.iter())
+        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
+        .collect();
+    assert_eq!(
+        unknowns,
+        [
+            "\\ddot{q}_{1}",
+            "\\ddot{q}_{2}",
+            "\\ddot{x}",
+            "T^{Q}",
+            "F^{P}_{x}",
+            "F^{P}_{y}"
+        ],
+        "{unknowns:?}"
+    );
 }

@@ -261,6 +261,7 @@ fn placeholder(model: &Model, index: usize) -> Site {
         parent_offset: zero3(),
         point: Default::default(),
         reactions: Vec::new(),
+        across: Vec::new(),
     }
 }
 

@@ -47,6 +47,14 @@ pub fn closures_along_rods(model: &mut Model) -> Vec<String> {
             continue;
         };
         let name = site.name.clone();
+        // The tension is the site's one reaction, index 0; the rows across the rod follow,
+        // 1, 2, …, each with the direction no force has.
+        let others: Vec<usize> = (0..site.reactions.len())
+            .filter(|&k| k != component)
+            .collect();
+        let across = (others.iter().enumerate())
+            .map(|(i, &k)| (i + 1, site.reactions[k].direction.clone()))
+            .collect();
         for row in &mut model.constraints.rows {
             let super::constraints::RowOrigin::Site {
                 site: at,
@@ -55,7 +63,11 @@ pub fn closures_along_rods(model: &mut Model) -> Vec<String> {
             else {
                 continue;
             };
-            if *at != s || *k != component {
+            if *at != s {
+                continue;
+            }
+            if *k != component {
+                *k = 1 + others.iter().position(|o| o == k).unwrap_or(others.len());
                 continue;
             }
             *k = 0;
@@ -66,6 +78,7 @@ pub fn closures_along_rods(model: &mut Model) -> Vec<String> {
                 row.loop_acceleration = row.loop_acceleration.take().map(|a| -a);
             }
         }
+        model.sites[s].across = across;
         model.sites[s].reactions = vec![member];
         changed.push(name);
     }

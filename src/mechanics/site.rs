@@ -40,6 +40,9 @@ pub struct Site {
     pub point: PointMotion,
     /// The reaction components, each an unknown of the site (`O.Fx`).
     pub reactions: Vec<ReactionComponent>,
+    /// The directions of the loop rows that no reaction enforces (across a light rod, see
+    /// [`super::light_rod`]), by the rows' component index.
+    pub across: Vec<(usize, Vector)>,
 }
 
 /// The geometry of a rolling contact: where it is and which ways it holds the disc.

@@ -27,6 +27,18 @@ impl Site {
             parent_offset: std::array::from_fn(|i| &jm.at[i] + &jm.motion.translation[i]),
             point: jm.point.clone(),
             reactions: jm.reactions.clone(),
+            across: Vec::new(),
+        }
+    }
+
+    /// The direction of the site's constraint row `component`: its reaction component's,
+    /// or, across a light rod, the direction no force has.
+    pub fn row_direction(&self, component: usize) -> Option<&Vector> {
+        match self.reactions.get(component) {
+            Some(reaction) => Some(&reaction.direction),
+            None => (self.across.iter())
+                .find(|(k, _)| *k == component)
+                .map(|(_, d)| d),
         }
     }
 }
@@ -99,6 +111,7 @@ pub fn closure_site(model: &Model, c: usize) -> Result<Site, MechanicsError> {
         parent_offset,
         point,
         reactions,
+        across: Vec::new(),
     })
 }
 
@@ -288,6 +301,7 @@ pub(super) fn contact_site_of(
         parent_offset: parent_offset(&point),
         point,
         reactions,
+        across: Vec::new(),
     };
     (site, contact)
 }

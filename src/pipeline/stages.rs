@@ -23,7 +23,11 @@ pub fn derive_for<'p>(
     if method == Method::Kane {
         // Kane's auxiliary speed along a light rod brings in its tension alone.
         crate::mechanics::two_force::along_members(&mut model);
-        // And a light rod's closure, its tension alone.
+    }
+    if method != Method::NewtonEuler {
+        // A light rod's closure carries its tension alone. Newton–Euler keeps both
+        // components: there every body is a free body, the rod's rows finding the
+        // component across it zero.
         crate::mechanics::light_rod::closures_along_rods(&mut model);
     }
     budget::step("writing the forces, the inertia forces and torques (step 2)");

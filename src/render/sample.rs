@@ -269,7 +269,7 @@ fn plan() -> Plan {
         rejected_all: vec![],
         equations_count: 4,
         unknowns_count: 4,
-        note: s("The system is square: one equation for each unknown."),
+        note: MarkupLine::from("The system is square: one equation for each unknown."),
     }
 }
 

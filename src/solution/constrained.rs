@@ -48,12 +48,11 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 // Multiplied out, a contact's velocity across a chain of frames is long;
                 // as the contact point's velocity along the reaction's direction it reads
                 // as a textbook writes the constraint.
-                // (A light rod's row across it has no reaction component: left as it is.)
-                if let Some(reaction) = model.sites[*site].reactions.get(*component) {
+                if let Some(direction) = model.sites[*site].row_direction(*component) {
                     equation_tex = format!(
                         "{} \\cdot {} = 0",
                         point_velocity_tex(model, *site),
-                        super::tex::vector_tex(model, &reaction.direction)
+                        super::tex::vector_tex(model, direction)
                     );
                     if !velocities.contains(site) {
                         velocities.push(*site);

@@ -268,6 +268,9 @@ pub fn plan(derivation: &Derivation) -> Plan {
             if !order.is_empty() {
                 note = format!("{note} {order}");
             }
+            for rod in super::light_rods::notes(derivation).into_iter().rev() {
+                note = format!("{rod} {note}");
+            }
             note
         }
         Method::Kane => {
@@ -295,7 +298,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         rejected_all,
         equations_count: derivation.rows.len(),
         unknowns_count: derivation.system.unknowns.len(),
-        note,
+        note: MarkupLine::from(note),
     }
 }
 

@@ -277,7 +277,7 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
     if !friction.is_empty() {
         out.push(friction_note(derivation));
     }
-    out.extend(light_rods(derivation));
+    out.extend(super::light_rods::notes(derivation));
     let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
     if asked || !friction.is_empty() {
         let mut text = "A force that is asked for, or that the sliding law needs, is brought in by an auxiliary speed along it (Kane and Levinson, ch. 4, bringing noncontributing forces into evidence): the constraint that force enforces is relaxed by a speed $u$ along it, so that the augmented velocity of each body is its velocity plus $u$ times a partial velocity that moves the body along the force (the dependent rates still keep every other constraint). The partial velocities of the auxiliary speed are those; only that force (and a friction force, where that motion slides) does work with them, and the row is written with the accelerations taken at $u = 0$, so the motion is the one above.".to_string();
@@ -353,27 +353,6 @@ fn evaluated_relation<'a>(
     let numbers = pairs.map(|(&i, c)| (crate::symbolic::eval::eval(c, start), rate_of(i)));
     let at_start = super::constrained::numeric_sum(numbers, 1e-13).unwrap_or_else(|| "0".into());
     format!("{rate} = {sum} \\qquad \\left(= {at_start} \\text{{ at the start}}\\right)")
-}
-
-/// Each light rod whose closure carries its tension alone, and why (see
-/// [`crate::mechanics::light_rod`]).
-fn light_rods(derivation: &Derivation) -> Vec<String> {
-    let model = &derivation.model;
-    let problem = model.problem;
-    let closures = model.sites.iter().skip(problem.joints.len());
-    closures
-        .filter_map(|site| {
-            let member = (site.reactions.iter()).find(|c| c.axis == crate::symbolic::Axis::Member)?;
-            let rod = latex_name(problem.body_name(site.parent));
-            let pin = model.sites.iter().find(|other| other.child == site.parent)?;
-            let (at, from) = (latex_name(&site.name), latex_name(&pin.name));
-            let unknown = Expr::sym(member.unknown(&site.name));
-            let force = super::tex::vector_tex(model, &member.direction.scaled(&unknown));
-            Some(format!(
-                "The light rod ${rod}$, pinned at ${from}$ and ${at}$ with no mass and no load, is a two-force member: its moment balance about ${from}$ leaves no force across it, so the force at ${at}$ lies along the rod, $\\mathbf{{F}}^{{{at}}} = {force}$: one unknown, the rod's tension (positive when the rod pulls), instead of two components."
-            ))
-        })
-        .collect()
 }
 
 /// Why the friction forces stay in Kane's rows and how the normal forces come in.

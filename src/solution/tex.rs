@@ -309,6 +309,6 @@ pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<Stri
     let RowOrigin::Site { site, component } = row.origin else {
         return None;
     };
-    let component = model.sites.get(site)?.reactions.get(component)?;
-    Some(super::tex::vector_tex(model, &component.direction))
+    let direction = model.sites.get(site)?.row_direction(component)?;
+    Some(super::tex::vector_tex(model, direction))
 }

@@ -419,11 +419,12 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
             let (letter, rest) = (c.kind.letter(), c.axis.subscript());
             let sign = if child { 1.0 } else { -1.0 };
             let dir = in_n(d, &c.direction, values).map(|x| x * sign);
-            expected.push((
-                format!("{letter}^{}_{rest}", joint.name),
-                format!("joint-{}", joint.name),
-                dir,
-            ));
+            // A light rod's tension is one unknown, T^Q, without a subscript.
+            let label = match c.axis {
+                mbd_tutor::symbolic::Axis::Member => format!("T^{}", joint.name),
+                _ => format!("{letter}^{}_{rest}", joint.name),
+            };
+            expected.push((label, format!("joint-{}", joint.name), dir));
         }
     }
     let mut drawn: Vec<(String, String)> = Vec::new();

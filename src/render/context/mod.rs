@@ -268,8 +268,8 @@ pub struct Plan {
     pub equations_count: usize,
     /// How many unknowns they contain.
     pub unknowns_count: usize,
-    /// A sentence about the count (plain text; may be empty).
-    pub note: String,
+    /// A sentence about the count, and what the unknowns are (markup; may be empty).
+    pub note: MarkupLine,
     /// The widths of the table's columns in LaTeX.
     pub columns: PlanColumns,
 }
