@@ -57,6 +57,43 @@ pub struct Check {
     pub passed: bool,
     /// One sentence with the numbers behind `value`, for the worked solution.
     pub detail: String,
+    /// The same sentence in pieces, where it names coordinates (which the worked solution
+    /// writes in its notation); empty where it names none.
+    pub phrases: Vec<Phrase>,
+}
+
+/// A piece of a check's sentence.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Phrase {
+    /// Words and numbers.
+    Text(String),
+    /// A coordinate by its name, differentiated `order` times (`q1''` in plain text).
+    Coordinate { name: String, order: usize },
+}
+
+impl Phrase {
+    /// Words.
+    pub fn text(text: impl Into<String>) -> Phrase {
+        Phrase::Text(text.into())
+    }
+
+    /// Coordinate `name` differentiated `order` times.
+    pub fn coordinate(name: &str, order: usize) -> Phrase {
+        Phrase::Coordinate {
+            name: name.to_string(),
+            order,
+        }
+    }
+
+    /// As plain text: a coordinate as its name with a prime per derivative.
+    pub fn plain(phrases: &[Phrase]) -> String {
+        (phrases.iter())
+            .map(|p| match p {
+                Phrase::Text(text) => text.clone(),
+                Phrase::Coordinate { name, order } => format!("{name}{}", "'".repeat(*order)),
+            })
+            .collect()
+    }
 }
 
 impl Check {
@@ -68,6 +105,20 @@ impl Check {
             tolerance,
             passed: value < tolerance,
             detail,
+            phrases: Vec::new(),
+        }
+    }
+
+    /// As [`Check::new`], with a sentence that names coordinates.
+    pub(crate) fn phrased(
+        kind: CheckKind,
+        value: f64,
+        tolerance: f64,
+        phrases: Vec<Phrase>,
+    ) -> Self {
+        Check {
+            phrases: phrases.clone(),
+            ..Check::new(kind, value, tolerance, Phrase::plain(&phrases))
         }
     }
 

@@ -28,6 +28,7 @@ pub fn drift_check(system: &dyn System, trajectory: &Trajectory) -> Option<Check
         value: worst,
         tolerance: DRIFT_TOLERANCE,
         passed: worst < DRIFT_TOLERANCE,
+        phrases: Vec::new(),
         detail: format!(
             "the largest residual of the constraints is {} (at t = {} s); the dependent coordinates and rates are solved from the independent ones at every step",
             fixed(worst),
@@ -203,6 +204,7 @@ pub fn drive_energy_check(
         value: worst / scale,
         tolerance: ENERGY_TOLERANCE,
         passed: worst / scale < ENERGY_TOLERANCE,
+        phrases: Vec::new(),
         detail: format!(
             "the total energy differs from its initial value plus the drives' work by at most {} J (at t = {} s) on an energy scale of {} J",
             fixed(worst),

@@ -155,7 +155,7 @@ pub fn confirm(
         .iter()
         .map(|(m, s)| {
             (
-                m.name(),
+                m.title(),
                 s.as_ref().map(|s| s as &dyn System).map_err(Clone::clone),
             )
         })
@@ -166,11 +166,12 @@ pub fn confirm(
         None => solver,
         Some(Ok(own)) => own,
         Some(Err(e)) => {
-            others.push((method.name(), Err(e.to_string())));
+            others.push((method.title(), Err(e.to_string())));
             solver
         }
     };
-    checks::confirm(problem, (method.name(), primary), &others, trajectory, q0)
+    // The checks name each method as a course writes it: "from the Motion Law (…)".
+    checks::confirm(problem, (method.title(), primary), &others, trajectory, q0)
 }
 
 /// Everything the worked solution shows, from every stage: the derivation, its solver, the

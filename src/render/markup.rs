@@ -269,6 +269,29 @@ pub fn render_blocks(text: &str, format: Format) -> String {
     rendered.join(separator)
 }
 
+/// `text` as markup that reads as those characters: each character that would start markup
+/// after a backslash.
+pub fn literal(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if matches!(c, '\\' | '$' | '`' | '*' | '_') {
+            out.push('\\');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// As [`literal`], with each number in scientific notation (`1e-9`) as math, as print
+/// writes it ($1 \\times 10^{-9}$).
+pub fn literal_with_numbers(text: &str) -> String {
+    super::numbers::with_numbers(
+        text,
+        |n| format!("${}$", super::numbers::math_number(n)),
+        literal,
+    )
+}
+
 /// One line of text (a question) written for `format`, without paragraphs or lists.
 pub fn render_line(text: &str, format: Format) -> String {
     render(&inlines(&collapse(text)), format)

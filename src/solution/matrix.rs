@@ -31,13 +31,6 @@ const SHORT_ENTRY: usize = 400;
 /// after another.
 const MOST_LISTED: usize = 16;
 
-/// What names row `i` of the system: its number in step 5 and its equation, e.g.
-/// `(2)\; B\colon \sum \mathbf{M}_{P} \cdot \hat{\mathbf{a}}_{z}` or, for Kane's rows,
-/// `(1)\; F_{1} + F^{*}_{1}`.
-pub fn row_label_tex(derivation: &Derivation, i: usize) -> String {
-    format!("({})\\; {}", i + 1, row_heading_tex(derivation, i))
-}
-
 /// Step 5's `A x = b`; `by_name[i]` tells whether step 5 writes row `i` with the entries'
 /// names, and then they are listed one by one: the rows step 5 writes out in full are read
 /// off there and not repeated. `initial` evaluates an entry at the initial state, for the
@@ -58,7 +51,10 @@ pub fn matrix(
         .map(|row| row.iter().map(&shown).collect())
         .collect();
     let b: Vec<Expr> = system.b.iter().map(&shown).collect();
-    let labels: Vec<String> = (0..a.len()).map(|i| row_label_tex(derivation, i)).collect();
+    // Each row by its equation in step 5, beside its number ("Row 2, B: ΣM_P · â_z").
+    let labels: Vec<String> = (0..a.len())
+        .map(|i| row_heading_tex(derivation, i))
+        .collect();
     let x: Vec<String> = system
         .unknowns
         .iter()

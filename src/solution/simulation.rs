@@ -1,14 +1,15 @@
 //! Step 6 of the worked solution: the simulation, its confirmation checks and its plots.
 
-use crate::numeric::checks::{self, CheckKind};
+use crate::numeric::checks::{self, CheckKind, Phrase};
 use crate::numeric::simulate::Trajectory;
 use crate::numeric::SolveError;
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{Check, Plot, Solution};
+use crate::render::markup::{literal, literal_with_numbers};
 use crate::render::plot::{line_plot, pgfplots, Label, Series};
-use crate::render::text::{FileName, LatexCode, SvgDocument};
+use crate::render::text::{FileName, LatexCode, MarkupLine, SvgDocument};
 use crate::symbolic::format::fixed;
-use crate::symbolic::print::latex_name;
+use crate::symbolic::print::{latex, latex_name};
 
 /// Fills step 6 of `solution` from the simulation from the (assembled) initial state and its
 /// confirmation checks; a run that could not start or stopped early is said in the step's
@@ -47,7 +48,7 @@ pub fn simulation(
             value: fixed(c.value),
             tolerance: fixed(c.tolerance),
             passed: c.passed,
-            detail: c.detail.clone(),
+            detail: detail(problem, c),
         })
         .collect();
     // One quantity per axis: angles and distances on plots of their own.
@@ -170,4 +171,24 @@ fn energy_drift(
             points: drift,
         }],
     ))
+}
+
+/// What `check` compared, in markup: its coordinates in the solution's notation (`q̈₁` for
+/// the plain `q1''`).
+fn detail(problem: &Problem, check: &checks::Check) -> MarkupLine {
+    if check.phrases.is_empty() {
+        return MarkupLine::from(literal_with_numbers(&check.detail));
+    }
+    let pieces: Vec<String> = (check.phrases.iter())
+        .map(|phrase| match phrase {
+            Phrase::Text(text) => literal_with_numbers(text),
+            Phrase::Coordinate { name, order } => {
+                match (problem.coordinates.iter()).position(|c| &c.name == name) {
+                    Some(i) => format!("${}$", latex(&problem.coordinate_expr(i, *order as u8))),
+                    None => literal(&Phrase::plain(std::slice::from_ref(phrase))),
+                }
+            }
+        })
+        .collect();
+    MarkupLine::from(pieces.concat())
 }

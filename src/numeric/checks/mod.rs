@@ -3,7 +3,9 @@
 
 mod oscillation;
 
-pub use super::check::{Check, CheckKind, AGREEMENT_TOLERANCE, ENERGY_TOLERANCE, PERIOD_TOLERANCE};
+pub use super::check::{
+    Check, CheckKind, Phrase, AGREEMENT_TOLERANCE, ENERGY_TOLERANCE, PERIOD_TOLERANCE,
+};
 pub use oscillation::{downward_crossings, modes, small_oscillation, Modes, MODES_CHECKED};
 
 use super::format::fixed;
@@ -50,21 +52,22 @@ pub fn confirm_systems(
         match system {
             Ok(system) => systems.push((name, *system)),
             Err(reason) => missing.push(format!(
-                "the {name} equations could not be derived: {reason}"
+                "the equations of {name} could not be derived: {reason}"
             )),
         }
     }
     let mut agreement = method_agreement(&systems, trajectory, 10);
     if !missing.is_empty() {
-        let mut detail = missing.join("; ");
+        let mut phrases = vec![Phrase::text(missing.join("; "))];
         if let Some(check) = &agreement {
-            detail.push_str(&format!("; among the others, {}", check.detail));
+            phrases.push(Phrase::text("; among the others, "));
+            phrases.extend(check.phrases.iter().cloned());
         }
-        agreement = Some(Check::new(
+        agreement = Some(Check::phrased(
             CheckKind::MethodAgreement,
             f64::INFINITY,
             AGREEMENT_TOLERANCE,
-            detail,
+            phrases,
         ));
     }
     [
@@ -179,7 +182,7 @@ pub fn method_agreement(
     };
     if let Some((other, _)) = others.iter().find(|(_, s)| s.coordinate_names() != names) {
         return fail(format!(
-            "the {other} equations use other coordinates than the {reference_name} ones"
+            "the equations of {other} use other coordinates than those of {reference_name}"
         ));
     }
     let count = samples.clamp(1, rows.len());
@@ -187,49 +190,53 @@ pub fn method_agreement(
         .map(|i| i * (rows.len() - 1) / (count - 1).max(1))
         .collect();
     indices.dedup();
-    let mut worst = (0.0, String::new());
+    let mut worst: (f64, Vec<Phrase>) = (0.0, Vec::new());
     for &index in &indices {
         let row = &rows[index];
         let (t, q, rates) = (row[0], &row[1..=n], &row[n + 1..=2 * n]);
         let expected = match reference.evaluate(t, q, rates) {
             Ok(e) => e.accelerations,
-            Err(e) => return fail(format!("the {reference_name} equations failed: {e}")),
+            Err(e) => return fail(format!("the equations of {reference_name} failed: {e}")),
         };
         for (other_name, other) in others {
             let got = match other.evaluate(t, q, rates) {
                 Ok(e) => e.accelerations,
-                Err(e) => return fail(format!("the {other_name} equations failed: {e}")),
+                Err(e) => return fail(format!("the equations of {other_name} failed: {e}")),
             };
             for ((name, a), b) in names.iter().zip(&expected).zip(&got) {
                 let difference = (a - b).abs() / a.abs().max(1.0);
                 if difference > worst.0 || difference.is_nan() {
-                    let where_ = format!(
-                        "{name}'' from {other_name} ({}) and {reference_name} ({}) at t = {} s",
-                        fixed(*b),
-                        fixed(*a),
-                        fixed(t)
-                    );
+                    let where_ = vec![
+                        Phrase::coordinate(name, 2),
+                        Phrase::text(format!(
+                            " from {other_name} ({}) and {reference_name} ({}) at t = {} s",
+                            fixed(*b),
+                            fixed(*a),
+                            fixed(t)
+                        )),
+                    ];
                     worst = (difference, where_);
                 }
             }
         }
     }
-    let detail = match worst.1.is_empty() {
-        true => format!(
-            "the q'' of every method are identical at {} states along the run",
+    let phrases = match worst.1.is_empty() {
+        true => vec![Phrase::text(format!(
+            "the second derivatives of every method are identical at {} states along the run",
             indices.len()
-        ),
-        false => format!(
-            "the other methods' equations (derived as well, not shown here) evaluated at {} states along the run; the largest difference is in {}",
+        ))],
+        false => std::iter::once(Phrase::text(format!(
+            "the other methods' equations (derived as well, not shown here) evaluated at {} states along the run; the largest difference is in ",
             indices.len(),
-            worst.1
-        ),
+        )))
+        .chain(worst.1)
+        .collect(),
     };
-    Some(Check::new(
+    Some(Check::phrased(
         CheckKind::MethodAgreement,
         worst.0,
         AGREEMENT_TOLERANCE,
-        detail,
+        phrases,
     ))
 }
 
@@ -353,7 +360,7 @@ mod tests {
         assert!(!agreement.passed, "{agreement:?}");
         assert!(
             agreement.detail.starts_with(&format!(
-                "the kane equations could not be derived: {reason}"
+                "the equations of kane could not be derived: {reason}"
             )),
             "{}",
             agreement.detail

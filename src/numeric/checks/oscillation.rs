@@ -8,7 +8,7 @@
 //! from a small displacement along one mode, and the period measured on the motion. If the
 //! equations are wrong (a sign, a factor, a missing term) the two periods differ.
 
-use crate::numeric::check::{Check, CheckKind, PERIOD_TOLERANCE};
+use crate::numeric::check::{Check, CheckKind, Phrase, PERIOD_TOLERANCE};
 use crate::numeric::format::fixed;
 use crate::numeric::integrate::{integrate, Options};
 use crate::numeric::system::System;
@@ -219,16 +219,21 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
     if !conservative && too_damped(system, &modes) {
         return None;
     }
-    let at = names
-        .iter()
-        .zip(&modes.equilibrium)
+    let mut at: Vec<Phrase> = Vec::new();
+    for (k, (name, &value)) in names.iter().zip(&modes.equilibrium).enumerate() {
         // What the search leaves of an equilibrium at zero is rounding: print it as 0.
-        .map(|(name, &value)| {
-            let value = if value.abs() < 1e-7 { 0.0 } else { value };
-            format!("{name} = {}", fixed(value))
-        })
-        .collect::<Vec<_>>()
-        .join(", ");
+        let value = if value.abs() < 1e-7 { 0.0 } else { value };
+        let comma = if k == 0 { "" } else { ", " };
+        at.push(Phrase::text(comma));
+        at.push(Phrase::coordinate(name, 0));
+        at.push(Phrase::text(format!(" = {}", fixed(value))));
+    }
+    let about = |rest: Vec<Phrase>| -> Vec<Phrase> {
+        std::iter::once(Phrase::text("about the equilibrium "))
+            .chain(at.iter().cloned())
+            .chain(rest)
+            .collect()
+    };
     let checked = modes.omegas.len().min(MODES_CHECKED);
     let mut worst: Option<(f64, usize, Measured)> = None;
     for mode in 0..checked {
@@ -236,16 +241,15 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
             Ok(measured) => measured,
             Err(why) => {
                 let detail = format!(
-                    "about the equilibrium {at}, the small oscillation in mode {} (ω = {} \
-                     rad/s from the energies) {why}",
+                    ", the small oscillation in mode {} (ω = {} rad/s from the energies) {why}",
                     mode + 1,
                     fixed(modes.omegas[mode])
                 );
-                return Some(Check::new(
+                return Some(Check::phrased(
                     CheckKind::SmallOscillationPeriod,
                     f64::INFINITY,
                     PERIOD_TOLERANCE,
-                    detail,
+                    about(vec![Phrase::text(detail)]),
                 ));
             }
         };
@@ -269,40 +273,46 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
             fixed(measured.period)
         ),
     };
-    let detail = if names.len() == 1 {
-        format!(
-            "about the equilibrium {at}, the energies give m = {} (T = m {}'²/2) and k = {} \
-             (V ≈ k δ{}²/2), so ω = {} rad/s and T = 2π/ω = {} s; a small oscillation of the \
-             equations of motion (amplitude {}) over {} periods {motion}",
-            fixed(modes.mass[(0, 0)]),
-            names[0],
-            fixed(modes.stiffness[(0, 0)]),
-            names[0],
-            fixed(omega),
-            fixed(expected),
-            fixed(AMPLITUDE),
-            measured.periods,
-        )
+    let phrases = if names.len() == 1 {
+        about(vec![
+            Phrase::text(format!(
+                ", the energies give m = {} (T = m ",
+                fixed(modes.mass[(0, 0)])
+            )),
+            Phrase::coordinate(&names[0], 1),
+            Phrase::text(format!(
+                "²/2) and k = {} (V ≈ k δ",
+                fixed(modes.stiffness[(0, 0)])
+            )),
+            Phrase::coordinate(&names[0], 0),
+            Phrase::text(format!(
+                "²/2), so ω = {} rad/s and T = 2π/ω = {} s; a small oscillation of the \
+                 equations of motion (amplitude {}) over {} periods {motion}",
+                fixed(omega),
+                fixed(expected),
+                fixed(AMPLITUDE),
+                measured.periods,
+            )),
+        ])
     } else {
-        format!(
-            "about the equilibrium {at}, the energies give {} modes (ω² the eigenvalues of \
-             M^-1 K, M from the kinetic energy, K the Hessian of the potential); of the {checked} \
-             slowest, mode {} differs most: ω = {} rad/s and T = 2π/ω = {} s, and a small \
-             oscillation of the equations of motion along it (largest component {}) over {} \
-             periods {motion}",
+        about(vec![Phrase::text(format!(
+            ", the energies give {} modes (ω² the eigenvalues of M^-1 K, M from the kinetic \
+             energy, K the Hessian of the potential); of the {checked} slowest, mode {} \
+             differs most: ω = {} rad/s and T = 2π/ω = {} s, and a small oscillation of the \
+             equations of motion along it (largest component {}) over {} periods {motion}",
             modes.omegas.len(),
             mode + 1,
             fixed(omega),
             fixed(expected),
             fixed(AMPLITUDE),
             measured.periods,
-        )
+        ))])
     };
-    Some(Check::new(
+    Some(Check::phrased(
         CheckKind::SmallOscillationPeriod,
         error,
         PERIOD_TOLERANCE,
-        detail,
+        phrases,
     ))
 }
 

@@ -383,7 +383,7 @@ pub struct Check {
     /// Whether it passed.
     pub passed: bool,
     /// What was compared with what, with the numbers behind the value.
-    pub detail: String,
+    pub detail: MarkupLine,
 }
 
 /// One plot, as an SVG file (Markdown, HTML) and as a pgfplots picture (LaTeX).
