@@ -190,7 +190,7 @@ pub fn dependent_speeds(
             format!(
                 "{} = {}",
                 rate(s),
-                numeric_sum(terms, 0.0).unwrap_or("0".into())
+                super::tex::numeric_sum(terms, 0.0).unwrap_or("0".into())
             )
         })
         .map(Math::from)
@@ -224,7 +224,7 @@ pub fn dependent_speeds(
                 .iter()
                 .zip(v)
                 .map(|(axis, x)| (x, format!("\\hat{{\\mathbf{{n}}}}_{{{axis}}}")));
-            let terms = numeric_sum(units, 1e-13).unwrap_or("\\mathbf{0}".into());
+            let terms = super::tex::numeric_sum(units, 1e-13).unwrap_or("\\mathbf{0}".into());
             reduced.push(format!(
                 "\\tilde{{\\mathbf{{v}}}}^{{{centre}}}_{{{}}} = {terms}",
                 rate(r)
@@ -250,33 +250,6 @@ pub fn dependent_speeds(
         ),
         ..DependentSpeeds::default()
     })
-}
-
-/// `Σ x_k symbol_k` with numbers written to the digits of the tables and a coefficient of
-/// one left out; `None` when every `|x_k|` is at most `zero`.
-pub(super) fn numeric_sum(
-    terms: impl IntoIterator<Item = (f64, String)>,
-    zero: f64,
-) -> Option<String> {
-    let mut sum = String::new();
-    for (x, symbol) in terms {
-        if x.abs() <= zero {
-            continue;
-        }
-        let sign = match (sum.is_empty(), x < 0.0) {
-            (true, true) => "-",
-            (true, false) => "",
-            (false, true) => " - ",
-            (false, false) => " + ",
-        };
-        let size = if x.abs() == 1.0 {
-            String::new()
-        } else {
-            format!("{} ", fixed(x.abs()))
-        };
-        sum.push_str(&format!("{sign}{size}{symbol}"));
-    }
-    (!sum.is_empty()).then_some(sum)
 }
 
 /// `text` with each `q1` or `x'` between backquotes written as the math of that coordinate

@@ -351,7 +351,7 @@ fn evaluated_relation<'a>(
         each.join(" + ")
     };
     let numbers = pairs.map(|(&i, c)| (crate::symbolic::eval::eval(c, start), rate_of(i)));
-    let at_start = super::constrained::numeric_sum(numbers, 1e-13).unwrap_or_else(|| "0".into());
+    let at_start = super::tex::numeric_sum(numbers, 1e-13).unwrap_or_else(|| "0".into());
     format!("{rate} = {sum} \\qquad \\left(= {at_start} \\text{{ at the start}}\\right)")
 }
 

@@ -312,3 +312,30 @@ pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<Stri
     let direction = model.sites.get(site)?.row_direction(component)?;
     Some(super::tex::vector_tex(model, direction))
 }
+
+/// `Σ x_k symbol_k` with numbers written to the digits of the tables and a coefficient of
+/// one left out; `None` when every `|x_k|` is at most `zero`.
+pub(super) fn numeric_sum(
+    terms: impl IntoIterator<Item = (f64, String)>,
+    zero: f64,
+) -> Option<String> {
+    let mut sum = String::new();
+    for (x, symbol) in terms {
+        if x.abs() <= zero {
+            continue;
+        }
+        let sign = match (sum.is_empty(), x < 0.0) {
+            (true, true) => "-",
+            (true, false) => "",
+            (false, true) => " - ",
+            (false, false) => " + ",
+        };
+        let size = if x.abs() == 1.0 {
+            String::new()
+        } else {
+            format!("{} ", crate::symbolic::format::fixed(x.abs()))
+        };
+        sum.push_str(&format!("{sign}{size}{symbol}"));
+    }
+    (!sum.is_empty()).then_some(sum)
+}
