@@ -412,9 +412,7 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
     let name = "problems/slider-crank-light-rod.json";
     let problem = load_file(std::path::Path::new(name)).expect("valid");
     let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
-    let unknowns: Vec<String> = (kane.system.unknowns.iter())
-        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
-        .collect();
+    let unknowns = unknowns_tex(&kane);
     assert!(unknowns.contains(&"T^{Q}".to_string()), "{unknowns:?}");
     assert!(
         !unknowns.iter().any(|u| u.starts_with("F^{Q}")),
@@ -427,9 +425,7 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
     // piston along its slide, the loop's two rows and the rod's two for P, and no row
     // of the rod's moments, which would say only that nothing acts across it.
     let motion_law = derive_rows(&problem, Method::MotionLaw).unwrap_or_else(|e| panic!("{e}"));
-    let unknowns: Vec<String> = (motion_law.system.unknowns.iter())
-        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
-        .collect();
+    let unknowns = unknowns_tex(&motion_law);
     assert_eq!(
         unknowns,
         [
@@ -442,4 +438,11 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
         ],
         "{unknowns:?}"
     );
+}
+
+/// The unknowns of `derivation`'s system as the handout writes them: `T^{Q}`, `F^{P}_{x}`.
+fn unknowns_tex(derivation: &Derivation) -> Vec<String> {
+    (derivation.system.unknowns.iter())
+        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
+        .collect()
 }

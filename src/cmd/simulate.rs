@@ -84,7 +84,7 @@ fn report(method: &str, checks: &[Check]) -> String {
             if check.passed { "<" } else { ">=" },
             fixed(check.tolerance),
             if check.passed { "pass" } else { "FAIL" },
-            check.detail
+            check.detail()
         ));
     }
     text

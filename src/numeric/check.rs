@@ -55,10 +55,8 @@ pub struct Check {
     pub tolerance: f64,
     /// `value < tolerance`.
     pub passed: bool,
-    /// One sentence with the numbers behind `value`, for the worked solution.
-    pub detail: String,
-    /// The same sentence in pieces, where it names coordinates (which the worked solution
-    /// writes in its notation); empty where it names none.
+    /// One sentence with the numbers behind `value`, in pieces: the worked solution writes
+    /// the coordinates it names in its notation ([`Check::detail`] is the plain text).
     pub phrases: Vec<Phrase>,
 }
 
@@ -99,14 +97,7 @@ impl Phrase {
 impl Check {
     /// A check of `value` against `tolerance`: passed when below it.
     pub(crate) fn new(kind: CheckKind, value: f64, tolerance: f64, detail: String) -> Self {
-        Check {
-            kind,
-            value,
-            tolerance,
-            passed: value < tolerance,
-            detail,
-            phrases: Vec::new(),
-        }
+        Check::phrased(kind, value, tolerance, vec![Phrase::Text(detail)])
     }
 
     /// As [`Check::new`], with a sentence that names coordinates.
@@ -117,9 +108,17 @@ impl Check {
         phrases: Vec<Phrase>,
     ) -> Self {
         Check {
-            phrases: phrases.clone(),
-            ..Check::new(kind, value, tolerance, Phrase::plain(&phrases))
+            kind,
+            value,
+            tolerance,
+            passed: value < tolerance,
+            phrases,
         }
+    }
+
+    /// The sentence with the numbers behind `value`, as plain text (`q1''`).
+    pub fn detail(&self) -> String {
+        Phrase::plain(&self.phrases)
     }
 
     /// What was checked, e.g. `energy conservation`.

@@ -23,18 +23,16 @@ pub fn drift_check(system: &dyn System, trajectory: &Trajectory) -> Option<Check
             (worst, at) = (drift, row[0]);
         }
     }
-    Some(Check {
-        kind: CheckKind::ConstraintDrift,
-        value: worst,
-        tolerance: DRIFT_TOLERANCE,
-        passed: worst < DRIFT_TOLERANCE,
-        phrases: Vec::new(),
-        detail: format!(
+    Some(Check::new(
+        CheckKind::ConstraintDrift,
+        worst,
+        DRIFT_TOLERANCE,
+        format!(
             "the largest residual of the constraints is {} (at t = {} s); the dependent coordinates and rates are solved from the independent ones at every step",
             fixed(worst),
             fixed(at)
         ),
-    })
+    ))
 }
 
 /// The most a rough contact's normal force may pull, over the largest normal force of the
@@ -199,19 +197,17 @@ pub fn drive_energy_check(
             (worst, at) = (error, row[0]);
         }
     }
-    Some(Check {
-        kind: CheckKind::EnergyBalanceWithDrives,
-        value: worst / scale,
-        tolerance: ENERGY_TOLERANCE,
-        passed: worst / scale < ENERGY_TOLERANCE,
-        phrases: Vec::new(),
-        detail: format!(
+    Some(Check::new(
+        CheckKind::EnergyBalanceWithDrives,
+        worst / scale,
+        ENERGY_TOLERANCE,
+        format!(
             "the total energy differs from its initial value plus the drives' work by at most {} J (at t = {} s) on an energy scale of {} J",
             fixed(worst),
             fixed(at),
             fixed(scale)
         ),
-    })
+    ))
 }
 
 /// Three-point Gauss–Legendre on [0, 1]: (node, weight), exact for polynomials of degree 5.

@@ -268,10 +268,10 @@ pub fn plan(derivation: &Derivation) -> Plan {
             if !order.is_empty() {
                 note = format!("{note} {order}");
             }
-            for rod in super::light_rods::notes(derivation).into_iter().rev() {
-                note = format!("{rod} {note}");
-            }
-            note
+            // Why a light rod's closure carries one unknown, before the rows that use it.
+            let mut sentences = super::light_rods::notes(derivation);
+            sentences.push(note);
+            sentences.join(" ")
         }
         Method::Kane => {
             let speeds = if derivation.dependent_speeds.is_some() {

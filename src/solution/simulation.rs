@@ -176,9 +176,6 @@ fn energy_drift(
 /// What `check` compared, in markup: its coordinates in the solution's notation (`q̈₁` for
 /// the plain `q1''`).
 fn detail(problem: &Problem, check: &checks::Check) -> MarkupLine {
-    if check.phrases.is_empty() {
-        return MarkupLine::from(literal_with_numbers(&check.detail));
-    }
     let pieces: Vec<String> = (check.phrases.iter())
         .map(|phrase| match phrase {
             Phrase::Text(text) => literal_with_numbers(text),
