@@ -289,6 +289,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
             }
             note
         }
+        Method::Lagrange => super::lagrange::plan_note(derivation),
     };
     Plan {
         columns: crate::render::plan_table::columns(&rows),
