@@ -6,6 +6,7 @@
 use mbd_tutor::equations::lagrange::{coordinate_terms, energy};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::evaluate::{Compiled, StateSolution};
+use mbd_tutor::numeric::system::System;
 use mbd_tutor::pipeline::{derive_for_handout, derive_rows};
 use mbd_tutor::problem::{load_file, Problem};
 use mbd_tutor::symbolic::eval::{eval, Values};

@@ -158,9 +158,24 @@ pub fn potential(model: &Model) -> Expr {
 /// # Errors
 /// When a velocity or a spring holds a function without a derivative.
 pub fn derivatives(model: &Model, simplified: bool) -> Result<Vec<EnergyTerms>, MechanicsError> {
-    let problem = model.problem;
     let bodies = bodies(model);
     let v = potential(model);
+    (0..model.problem.coordinates.len())
+        .map(|r| derivative(model, (&bodies, &v), r, simplified))
+        .collect()
+}
+
+/// The derivatives of `T` (of `bodies`) and `V` for coordinate `r` (see [`derivatives`]).
+///
+/// # Errors
+/// As for [`derivatives`].
+pub fn derivative(
+    model: &Model,
+    (bodies, v): (&[BodyMotion], &Expr),
+    r: usize,
+    simplified: bool,
+) -> Result<EnergyTerms, MechanicsError> {
+    let problem = model.problem;
     let failed = |e: DiffError| MechanicsError {
         path: "bodies".into(),
         message: e.to_string(),
@@ -170,24 +185,20 @@ pub fn derivatives(model: &Model, simplified: bool) -> Result<Vec<EnergyTerms>, 
         ),
     };
     let tidy = |e: Expr| if simplified { simplify(&e) } else { e };
-    (0..problem.coordinates.len())
-        .map(|r| {
-            let q = problem.coordinate_symbol(r, 0);
-            let rate = problem.coordinate_symbol(r, 1);
-            let sum = |f: &dyn Fn(&BodyMotion) -> Result<Expr, DiffError>| {
-                let terms: Result<Vec<Expr>, DiffError> = bodies.iter().map(f).collect();
-                terms.map(|t| tidy(add(t))).map_err(failed)
-            };
-            let momentum = sum(&|b| b.partial_rate(&rate))?;
-            let momentum_rate = tidy(time_derivative(&momentum).map_err(failed)?);
-            let kinetic_partial = sum(&|b| b.partial_coordinate(&q))?;
-            let potential_partial = tidy(partial(&v, &q).map_err(failed)?);
-            Ok(EnergyTerms {
-                momentum,
-                momentum_rate,
-                kinetic_partial,
-                potential_partial,
-            })
-        })
-        .collect()
+    let q = problem.coordinate_symbol(r, 0);
+    let rate = problem.coordinate_symbol(r, 1);
+    let sum = |f: &dyn Fn(&BodyMotion) -> Result<Expr, DiffError>| {
+        let terms: Result<Vec<Expr>, DiffError> = bodies.iter().map(f).collect();
+        terms.map(|t| tidy(add(t))).map_err(failed)
+    };
+    let momentum = sum(&|b| b.partial_rate(&rate))?;
+    let momentum_rate = tidy(time_derivative(&momentum).map_err(failed)?);
+    let kinetic_partial = sum(&|b| b.partial_coordinate(&q))?;
+    let potential_partial = tidy(partial(v, &q).map_err(failed)?);
+    Ok(EnergyTerms {
+        momentum,
+        momentum_rate,
+        kinetic_partial,
+        potential_partial,
+    })
 }
