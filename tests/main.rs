@@ -17,6 +17,7 @@ mod invalid;
 mod kane_handout;
 mod kane_speeds;
 mod kinematics;
+mod lagrange;
 mod library;
 mod linearize;
 mod long_rows;

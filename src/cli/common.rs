@@ -21,6 +21,8 @@ pub enum MethodArg {
     NewtonEuler,
     /// Generalized active plus inertia forces.
     Kane,
+    /// Lagrange's equations, with multipliers for the constraints.
+    Lagrange,
 }
 
 /// Options shared by the commands that read a problem.

@@ -41,6 +41,7 @@ pub fn method(arg: crate::cli::MethodArg) -> crate::equations::Method {
         crate::cli::MethodArg::MotionLaw => crate::equations::Method::MotionLaw,
         crate::cli::MethodArg::NewtonEuler => crate::equations::Method::NewtonEuler,
         crate::cli::MethodArg::Kane => crate::equations::Method::Kane,
+        crate::cli::MethodArg::Lagrange => crate::equations::Method::Lagrange,
     }
 }
 

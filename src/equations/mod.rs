@@ -1,4 +1,4 @@
-//! Step 5: Newton-Euler, the Motion Law and Kane's method -> a linear system in the q''
+//! Step 5: Newton-Euler, the Motion Law, Kane's method and Lagrange's equations -> a linear system in the q''
 //! and the reactions.
 
 pub mod composite;
@@ -6,6 +6,7 @@ mod constraint_rows;
 pub mod energy;
 pub mod friction;
 pub mod kane;
+pub mod lagrange;
 pub mod newton_euler;
 mod on_motion;
 /// The rows of equations, which the planner writes out in step 3 (see [`crate::plan::rows`]).

@@ -24,11 +24,18 @@ pub enum Method {
     NewtonEuler,
     /// Generalized active plus inertia forces.
     Kane,
+    /// Lagrange's equations: `d/dt(∂L/∂q̇_r) − ∂L/∂q_r = Q_r`, with multipliers.
+    Lagrange,
 }
 
 impl Method {
     /// Every method.
-    pub const ALL: [Method; 3] = [Method::MotionLaw, Method::NewtonEuler, Method::Kane];
+    pub const ALL: [Method; 4] = [
+        Method::MotionLaw,
+        Method::NewtonEuler,
+        Method::Kane,
+        Method::Lagrange,
+    ];
 
     /// The name used on the command line and in JSON.
     pub fn name(self) -> &'static str {
@@ -36,6 +43,7 @@ impl Method {
             Method::MotionLaw => "motion-law",
             Method::NewtonEuler => "newton-euler",
             Method::Kane => "kane",
+            Method::Lagrange => "lagrange",
         }
     }
 
@@ -45,6 +53,7 @@ impl Method {
             Method::MotionLaw => "the Motion Law",
             Method::NewtonEuler => "Newton–Euler",
             Method::Kane => "Kane's method",
+            Method::Lagrange => "Lagrange's equations",
         }
     }
 }
@@ -186,6 +195,7 @@ pub fn write_equations<'p>(
         Method::MotionLaw => "writing the Motion Law's candidate rows (step 3)",
         Method::NewtonEuler => "writing the Newton–Euler rows (step 3)",
         Method::Kane => "writing Kane's generalized forces (step 3)",
+        Method::Lagrange => "writing Lagrange's equations (step 3)",
     });
     // The q'' — or the u' of declared speeds.
     let accelerations: Vec<Symbol> = problem.speed_symbols(2);
@@ -208,12 +218,12 @@ pub fn write_equations<'p>(
         .collect();
     let mut reaction_joints: Vec<usize> = match method {
         Method::NewtonEuler => all_sites.clone(),
-        Method::Kane => kane_reaction_joints(problem, &loop_sites),
+        Method::Kane | Method::Lagrange => kane_reaction_joints(problem, &loop_sites),
         Method::MotionLaw => problem.find_reactions.clone(),
     };
     // Friction is proportional to a normal force: every method solves for it, Kane's
     // rows for it and the friction force alone (`kept`).
-    if method != Method::Kane {
+    if !matches!(method, Method::Kane | Method::Lagrange) {
         super::friction::require_sites(&model, &mut reaction_joints);
     }
     let unknowns_of = |sites: &[usize]| -> Vec<Symbol> {
@@ -226,7 +236,7 @@ pub fn write_equations<'p>(
     };
     let mut unknowns = unknowns_of(&reaction_joints);
     let kept = match method {
-        Method::Kane => {
+        Method::Kane | Method::Lagrange => {
             super::friction::kept_forces(&model, &reaction_unknowns(&model, &reaction_joints))
         }
         _ => Vec::new(),
@@ -325,6 +335,21 @@ pub fn write_equations<'p>(
                 ),
                 vec![],
             )
+        }
+        Method::Lagrange => {
+            let tree_requested: Vec<usize> = reaction_joints
+                .iter()
+                .copied()
+                .filter(|&j| j < problem.joints.len())
+                .collect();
+            let rows = super::lagrange::equations(
+                &model,
+                &actions,
+                &inertia,
+                &every_unknown,
+                (&tree_requested, &kept),
+            )?;
+            (rows, vec![])
         }
         Method::MotionLaw => {
             let reactions = reaction_unknowns(&model, &all_sites);

@@ -20,8 +20,8 @@ pub fn derive_for<'p>(
 ) -> Result<Derivation<'p>, MechanicsError> {
     budget::step("computing the kinematics (step 4)");
     let mut model = Model::build_for(problem, request.form)?;
-    if method == Method::Kane {
-        // Kane's auxiliary speed along a light rod brings in its tension alone.
+    if matches!(method, Method::Kane | Method::Lagrange) {
+        // Kane's auxiliary speed (and Lagrange's relaxed joint) along a light rod brings in its tension alone.
         crate::mechanics::two_force::along_members(&mut model);
     }
     if method != Method::NewtonEuler {

@@ -69,6 +69,7 @@ pub fn sample() -> Solution {
         equations: equations(),
         dependent_speeds: None,
         partial_velocities: Vec::new(),
+        lagrange: None,
         matrix: matrix(),
         initial_values: vec![
             value("\\ddot{q}_{1}", "-12.0939", "\\mathrm{rad/s^{2}}"),
@@ -348,6 +349,7 @@ fn equations() -> Vec<Equation> {
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
             solved_tex: Math::from(String::new()),
+            lagrange_tex: Vec::new(),
         },
         Equation {
             label_tex: Math::from(format!("B\\colon \\sum \\mathbf{{M}}_{{P}} \\cdot {A}_{{z}}")),
@@ -366,6 +368,7 @@ fn equations() -> Vec<Equation> {
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
             solved_tex: Math::from(String::new()),
+            lagrange_tex: Vec::new(),
         },
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{x}}")),
@@ -381,6 +384,7 @@ fn equations() -> Vec<Equation> {
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
             solved_tex: Math::from(String::new()),
+            lagrange_tex: Vec::new(),
         },
         Equation {
             label_tex: Math::from(format!("A + B\\colon \\sum \\mathbf{{F}} \\cdot {N}_{{y}}")),
@@ -396,6 +400,7 @@ fn equations() -> Vec<Equation> {
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
             solved_tex: Math::from(String::new()),
+            lagrange_tex: Vec::new(),
         },
     ]
 }

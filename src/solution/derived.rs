@@ -40,6 +40,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
         solution.constraint_notes = MarkupLine::all(constraint_notes);
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
+        solution.lagrange = super::lagrange::view(derivation);
         solution.force_definitions =
             crate::render::where_list::grouped(force_definitions(derivation));
         let by_partials;
@@ -243,6 +244,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
                     super::tex::constraint_direction_tex(&derivation.model, name)
                         .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into()),
                 ),
+                (None, _) if derivation.method == Method::Lagrange => Math::from(String::new()),
                 (None, _) => "\\text{partial velocities}".into(),
             },
             unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),
@@ -289,6 +291,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
             }
             note
         }
+        Method::Lagrange => super::lagrange::plan_note(derivation),
     };
     Plan {
         columns: crate::render::plan_table::columns(&rows),

@@ -22,7 +22,7 @@ const MOST_BODIES_LISTED: usize = 2;
 /// Where a force acts, as a textbook's table says it: a reaction at its joint's (or
 /// closure's, or contact's) point by name, `at O`; another force at the body's mass centre
 /// or origin as that; anything else by its position from the body's origin.
-fn acts_at(model: &Model, action: &crate::plan::forces::Action, at: &Vector) -> String {
+pub(super) fn acts_at(model: &Model, action: &crate::plan::forces::Action, at: &Vector) -> String {
     if let Source::Reaction(site) = action.source {
         let name = model.problem.site_name(site);
         return format!("\\text{{at }} {}", latex_name(name));

@@ -144,7 +144,7 @@ pub fn sign_changed(derivation: &Derivation, i: usize) -> bool {
     let Some(row) = derivation.rows.get(i) else {
         return false;
     };
-    derivation.method == Method::Kane
+    matches!(derivation.method, Method::Kane | Method::Lagrange)
         && matches!(row.sum, Sum::Generalized { .. })
         && row_number(derivation, row).is_some_and(|r| r <= speed_rows(derivation))
 }

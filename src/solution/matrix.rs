@@ -79,7 +79,7 @@ pub fn matrix(
         .collect();
     // In the table a row is labelled by its number: step 5 heads each equation with it.
     let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
-    if derivation.method == Method::Kane && !by_entries {
+    if matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries {
         // Kane's rows stand whole in step 5, each written once, its mass matrix positive:
         // the matrix form shows only where its entries are (the structure of the solve),
         // and a single row is its own solution.

@@ -21,6 +21,7 @@ mod handout;
 mod independent;
 mod kane;
 mod kinematics;
+mod lagrange;
 mod light_rods;
 pub mod linearization;
 mod long;

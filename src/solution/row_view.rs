@@ -191,6 +191,16 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             )
         };
     }
+    let mut lagrange_tex = Vec::new();
+    if let Some(text) = super::lagrange::row_text(derivation, row, &shown) {
+        // Lagrange's row: the derivatives of L and the generalized force, then the row.
+        (label_tex, label, lagrange_tex) = (text.label_tex, text.label, text.lines);
+        (grouped_tex, active_tex, inertia_tex) = (String::new(), String::new(), String::new());
+        augmented_note = String::new();
+        if !by_name {
+            simplified_note = text.note;
+        }
+    }
     if matches!(row.sum, Sum::Constraint { .. }) && !by_name {
         // A constraint differentiated is one sum with no groups: as formed it is the
         // simplified row in another order, so it is written once; a closure's is the
@@ -217,6 +227,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         active_tex: Math::from(active_tex),
         inertia_tex: Math::from(inertia_tex),
         solved_tex: Math::from(solved_tex),
+        lagrange_tex: Math::all(lagrange_tex),
     }
 }
 

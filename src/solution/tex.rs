@@ -201,6 +201,9 @@ pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
     match sum {
         Sum::Force => "\\sum \\mathbf{F}".into(),
         Sum::Moment { point, .. } => format!("\\sum \\mathbf{{M}}_{{{}}}", point_tex(point)),
+        Sum::Generalized { .. } if derivation.method == crate::equations::Method::Lagrange => {
+            super::lagrange::equation_tex(derivation, sum).unwrap_or_default()
+        }
         Sum::Generalized { .. } => {
             let r = derivation
                 .rows

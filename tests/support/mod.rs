@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 
 /// The three equation-forming methods, as the command line names them.
-pub const METHODS: [&str; 3] = ["motion-law", "newton-euler", "kane"];
+pub const METHODS: [&str; 4] = ["motion-law", "newton-euler", "kane", "lagrange"];
 
 /// The path of `problems/NAME.json`.
 pub fn problem(name: &str) -> PathBuf {

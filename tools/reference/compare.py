@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compares `mbd-tutor solve` with the independent reference at random states.
 
-    python3 tools/reference/compare.py [--methods motion-law,newton-euler,kane]
+    python3 tools/reference/compare.py [--methods motion-law,newton-euler,kane,lagrange]
         [--states K] [--seed S] [--bin target/release/mbd-tutor] [--tol 1e-6]
         [--time T] [--set NAME=VALUE,...] PROBLEM.json...
 
@@ -124,7 +124,7 @@ def is_constrained(path):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("problems", nargs="+")
-    ap.add_argument("--methods", default="motion-law,newton-euler,kane")
+    ap.add_argument("--methods", default="motion-law,newton-euler,kane,lagrange")
     ap.add_argument("--states", type=int, default=5)
     ap.add_argument("--seed", type=int, default=12345)
     ap.add_argument("--bin", default="target/release/mbd-tutor")

@@ -33,6 +33,9 @@ pub struct Equation {
     pub active_tex: Math,
     /// Kane's rows: the generalized inertia force, e.g. `F^{*}_{1} = -m L^{2} \ddot{q}_{1}`.
     pub inertia_tex: Math,
+    /// Lagrange's row of a coordinate: ∂L/∂q̇_r, its time derivative, ∂L/∂q_r and Q_r, one
+    /// equation each, before the collected equation (empty for the other methods).
+    pub lagrange_tex: Vec<Math>,
     /// Kane's row of an auxiliary speed that holds one reaction: solved for it,
     /// `T^{O} = …` (empty otherwise).
     pub solved_tex: Math,

@@ -24,6 +24,7 @@ use super::text::{FileName, InlineSvg, LatexCode, Markup, MarkupLine, Math, SvgD
 use serde::Serialize;
 
 mod equations;
+mod lagrange;
 mod named;
 
 pub use super::figure::Figure;
@@ -32,6 +33,7 @@ pub use equations::{
     DependentSpeeds, Equation, FrictionStep, FrictionView, InitialValue, MatrixEntry, MatrixForm,
     PartialVelocity, Reaction, WholeMatrix,
 };
+pub use lagrange::{GeneralizedForceRow, LagrangeView};
 pub use named::{Named, WhereEntry};
 
 /// The worked solution of one problem by one method: the six steps.
@@ -89,6 +91,9 @@ pub struct Solution {
     /// Step 4: the named kinematic quantities that steps 4 and 5 use (the direction cosines
     /// of long chains, partial velocities, accelerations without the q''), each defined once.
     pub kinematic_definitions: Vec<WhereEntry>,
+    /// Step 2 by Lagrange's equations: the energies, the generalized forces and the
+    /// multipliers (`None` for the other methods).
+    pub lagrange: Option<LagrangeView>,
     /// Step 3: the planner's table.
     pub plan: Plan,
     /// Step 4: angular velocity and acceleration of each body, velocity and acceleration of

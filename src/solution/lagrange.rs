@@ -1,0 +1,389 @@
+//! Lagrange's equations as a course teaches them: the kinetic energy of every body, the
+//! potential energy and the Lagrangian; the generalized forces of the loads without a
+//! potential by virtual work; then per coordinate ∂L/∂q̇_r, its time derivative and ∂L/∂q_r
+//! before the collected equation, and the multipliers with the reactions they are.
+
+use super::long::LONG_EQUATION;
+use crate::equations::lagrange::{energy, forces};
+use crate::equations::rows::{Equation, Sum};
+use crate::equations::{Derivation, Method};
+use crate::mechanics::constraints::RowOrigin;
+use crate::mechanics::{Model, Vector};
+use crate::plan::forces::{constraint_generalized_forces, ActionKind};
+use crate::render::context::{GeneralizedForceRow, LagrangeView};
+use crate::render::text::{MarkupLine, Math};
+use crate::symbolic::collect::latex_collected;
+use crate::symbolic::print::latex;
+use crate::symbolic::simplify::simplify;
+use crate::symbolic::Expr;
+
+/// The plan's note: what the rows are and where the reactions come from.
+pub fn plan_note(derivation: &Derivation) -> String {
+    let model = &derivation.model;
+    let mut note = "One equation per coordinate, d/dt(∂L/∂q̇_r) − ∂L/∂q_r = Q_r, with L = T − V and Q_r the generalized forces of the loads without a potential.".to_string();
+    if !model.constraints.rows.is_empty() {
+        note.push_str(" Each constraint row brings a multiplier λ_k into every coordinate's equation (Σ_k λ_k ∂f_k/∂q_r, or λ_k times the row's coefficient of q̇_r); a multiplier is the reaction component along the row, and the constraint rows, differentiated, close the system.");
+    }
+    if derivation
+        .reaction_joints
+        .iter()
+        .any(|&j| j < model.problem.joints.len())
+    {
+        note.push_str(" A reaction at a joint of the tree does no work: the joint is relaxed along each component asked for (an auxiliary coordinate, zero in the motion), and that coordinate's equation gives the component.");
+    }
+    note
+}
+
+/// The coordinate whose equation `row` is (by Lagrange's equations), if it is one.
+fn coordinate_of(model: &Model, row: &Equation) -> Option<usize> {
+    let Sum::Generalized { speed } = &row.sum else {
+        return None;
+    };
+    let problem = model.problem;
+    (0..problem.coordinates.len()).find(|&r| problem.coordinate_symbol(r, 1).to_string() == *speed)
+}
+
+/// `\dot{q}_{1}` and `q_{1}` of coordinate `r`.
+fn names(model: &Model, r: usize) -> (String, String) {
+    let problem = model.problem;
+    (
+        latex(&problem.coordinate_expr(r, 1)),
+        latex(&problem.coordinate_expr(r, 0)),
+    )
+}
+
+/// The plan table's equation of a coordinate's row, `d/dt(∂L/∂q̇_r) − ∂L/∂q_r = Q_r`; of a
+/// relaxed joint's row, the component it brings in.
+pub fn equation_tex(derivation: &Derivation, sum: &Sum) -> Option<String> {
+    if derivation.method != Method::Lagrange {
+        return None;
+    }
+    let row = derivation.rows.iter().find(|row| row.sum == *sum)?;
+    let model = &derivation.model;
+    match coordinate_of(model, row) {
+        Some(r) => Some(lagrange_tex(model, r)),
+        None => Some(relaxed_tex(row)),
+    }
+}
+
+/// A relaxed joint's row: the reaction component it brings in, `u \to F^{O}_{x}`.
+fn relaxed_tex(row: &Equation) -> String {
+    let reactions: Vec<crate::symbolic::Symbol> = row
+        .unknowns
+        .iter()
+        .filter(|u| matches!(u, crate::symbolic::Symbol::Unknown(_)))
+        .cloned()
+        .collect();
+    format!(
+        "\\text{{relaxed along }} {}",
+        super::tex::unknowns_tex(&reactions)
+    )
+}
+
+/// `\frac{d}{dt} \frac{∂L}{∂\dot{q}_r} - \frac{∂L}{∂q_r} = Q_r`.
+fn lagrange_tex(model: &Model, r: usize) -> String {
+    let (rate, q) = names(model, r);
+    format!(
+        "\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}} \\frac{{\\partial L}}{{\\partial {rate}}} - \\frac{{\\partial L}}{{\\partial {q}}} = Q_{{{}}}",
+        r + 1
+    )
+}
+
+/// What step 5 writes of one of Lagrange's rows.
+pub struct RowText {
+    /// The heading.
+    pub label_tex: String,
+    /// Plain words after it.
+    pub label: String,
+    /// The derivatives, one equation each, before the collected equation.
+    pub lines: Vec<String>,
+    /// What introduces the collected equation.
+    pub note: String,
+}
+
+/// Step 5's text of `row` when it is a coordinate's (by Lagrange's equations), each
+/// expression written as `shown` gives it; `None` for any other row.
+pub fn row_text(
+    derivation: &Derivation,
+    row: &Equation,
+    shown: &dyn Fn(&Expr) -> Expr,
+) -> Option<RowText> {
+    if derivation.method != Method::Lagrange {
+        return None;
+    }
+    let model = &derivation.model;
+    let Some(r) = coordinate_of(model, row) else {
+        return Some(RowText {
+            label_tex: relaxed_tex(row),
+            label: "(the joint let give way along the reaction component: an auxiliary coordinate, zero in the motion, whose equation is the balance of the bodies it moves along that component)".into(),
+            lines: Vec::new(),
+            note: "Its equation at zero auxiliary coordinate and rate, simplified:".into(),
+        });
+    };
+    let bodies = energy::bodies(model);
+    let v = energy::potential(model);
+    let terms = energy::derivative(model, (&bodies, &v), r, true).ok()?;
+    let (q_r, multipliers) = forces::generalized_forces(model, &derivation.actions)
+        .into_iter()
+        .nth(r)?;
+    let (rate, q) = names(model, r);
+    let tex = |e: &Expr| latex_collected(&shown(&simplify(e)));
+    let fits = |definition: String, value: String| {
+        if value.len() > LONG_EQUATION {
+            definition
+        } else {
+            format!("{definition} = {value}")
+        }
+    };
+    let partial_l_rate = format!("\\frac{{\\partial L}}{{\\partial {rate}}}");
+    let mut lines = vec![
+        fits(
+            format!("{partial_l_rate} = \\frac{{\\partial T}}{{\\partial {rate}}}"),
+            tex(&terms.momentum),
+        ),
+        fits(
+            format!("\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}} {partial_l_rate}"),
+            tex(&terms.momentum_rate),
+        ),
+        fits(
+            format!(
+                "\\frac{{\\partial L}}{{\\partial {q}}} = \\frac{{\\partial T}}{{\\partial {q}}} - \\frac{{\\partial V}}{{\\partial {q}}}"
+            ),
+            tex(&(&terms.kinetic_partial - &terms.potential_partial)),
+        ),
+        fits(format!("Q_{{{}}}", r + 1), tex(&q_r)),
+    ];
+    if !multipliers.is_zero() {
+        lines.push(fits(
+            format!(
+                "\\sum_{{k}} \\lambda_{{k}} \\frac{{\\partial \\dot{{f}}_{{k}}}}{{\\partial {rate}}}"
+            ),
+            tex(&multipliers),
+        ));
+    }
+    let with = if multipliers.is_zero() {
+        ""
+    } else {
+        " plus the multipliers' terms"
+    };
+    Some(RowText {
+        label_tex: format!("{q}\\colon\\; {}", lagrange_tex(model, r)),
+        label: "(Lagrange's equation of the coordinate)".into(),
+        lines,
+        note: format!(
+            "Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q − Q{with} = 0, collected by the second derivatives:"
+        ),
+    })
+}
+
+/// Step 2 by Lagrange's equations: every body's kinetic energy, `T`, `V` and `L`; the
+/// generalized forces of the loads without a potential; the multipliers.
+pub fn view(derivation: &Derivation) -> Option<LagrangeView> {
+    if derivation.method != Method::Lagrange {
+        return None;
+    }
+    let model = &derivation.model;
+    Some(LagrangeView {
+        energy_tex: Math::all(energies(model)),
+        forces: force_rows(derivation),
+        forces_note: MarkupLine::from(forces_note(derivation)),
+        multipliers_note: MarkupLine::from(multipliers_note(derivation)),
+    })
+}
+
+fn energies(model: &Model) -> Vec<String> {
+    let sign = super::tex::initial_sign(model);
+    let tex = |e: &Expr| {
+        latex_collected(&crate::symbolic::roots::roots_of_squares(
+            &simplify(e),
+            &sign,
+        ))
+    };
+    let mut lines = Vec::new();
+    let mut names = Vec::new();
+    for body in energy::bodies(model) {
+        let name = crate::symbolic::print::latex_name(model.problem.body_name(body.body));
+        let centre = super::tex::centre_tex(model, body.body);
+        let v = format!("{{}}^{{N}}\\mathbf{{v}}^{{{centre}}}");
+        let w = format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}}");
+        let moves = !body.velocity.map(simplify).is_zero();
+        let turns = !body.omega.iter().all(|c| simplify(c).is_zero());
+        let mut terms = Vec::new();
+        if moves && !body.mass.is_zero() {
+            terms.push(format!(
+                "\\frac{{1}}{{2}} {} \\, {v} \\cdot {v}",
+                latex(&body.mass)
+            ));
+        }
+        if turns && !body.inertia.iter().flatten().all(Expr::is_zero) {
+            terms.push(format!(
+                "\\frac{{1}}{{2}} {w} \\cdot \\mathbf{{I}}^{{{name}}} \\cdot {w}"
+            ));
+        }
+        if terms.is_empty() {
+            continue;
+        }
+        let definition = format!("T_{{{name}}} = {}", terms.join(" + "));
+        let value = tex(&body.kinetic());
+        lines.push(if value.len() > LONG_EQUATION {
+            definition
+        } else {
+            format!("{definition} = {value}")
+        });
+        names.push(format!("T_{{{name}}}"));
+    }
+    if !names.is_empty() {
+        lines.push(format!("T = {}", names.join(" + ")));
+    }
+    let v = tex(&energy::potential(model));
+    lines.push(format!("V = {v}"));
+    lines.push("L = T - V".into());
+    lines
+}
+
+fn forces_note(derivation: &Derivation) -> String {
+    if force_rows(derivation).is_empty() {
+        return "Gravity and the springs have a potential, in $V$; no other load does work: $Q_r = 0$ for every coordinate.".into();
+    }
+    let model = &derivation.model;
+    let constrained = derivation
+        .actions
+        .iter()
+        .any(|a| forces::role(model, a) == forces::Role::Multiplier)
+        || !constraint_generalized_forces(model)
+            .iter()
+            .all(|(c, _)| c.is_empty());
+    let multipliers = if constrained {
+        " (and of the constraint forces, whose components are the multipliers)"
+    } else {
+        ""
+    };
+    format!(
+        "The generalized forces of the loads without a potential{multipliers}, by virtual work:{}",
+        " a force $\\mathbf{F}$ at a point $P$ adds $\\mathbf{F} \\cdot \\partial \\mathbf{v}^{P} / \\partial \\dot{q}_r$ to $Q_r$, a couple $\\mathbf{T}$ on a body $B$ adds $\\mathbf{T} \\cdot \\partial \\boldsymbol{\\omega}^{B} / \\partial \\dot{q}_r$; gravity and the springs are in $V$."
+    )
+}
+
+/// The table of generalized forces: a line per load and coordinate it does work with.
+fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let tex = |e: &Expr| latex_collected(&simplify(e));
+    let mut rows = Vec::new();
+    for action in &derivation.actions {
+        if !matches!(
+            forces::role(model, action),
+            forces::Role::Load | forces::Role::Multiplier
+        ) {
+            continue;
+        }
+        let partials = forces::partial_velocities(model, action);
+        let work = forces::virtual_work(model, action);
+        let (point, of) = match &action.kind {
+            ActionKind::Force { offset, .. } => {
+                let at = Vector::new(action.body, offset.clone());
+                let point = super::free_bodies::acts_at(model, action, &at);
+                // The point by its name where the table has one: `\mathbf{v}^{B^*}`.
+                let named = point
+                    .strip_prefix("\\text{at } ")
+                    .filter(|p| !p.contains("\\text") && !p.contains("\\hat"))
+                    .unwrap_or("P");
+                (point.clone(), format!("\\mathbf{{v}}^{{{named}}}"))
+            }
+            ActionKind::Couple { .. } => (
+                "\\text{couple}".to_string(),
+                format!(
+                    "\\boldsymbol{{\\omega}}^{{{}}}",
+                    crate::symbolic::print::latex_name(problem.body_name(action.body))
+                ),
+            ),
+        };
+        let mut first = true;
+        for (r, (partial, work)) in partials.iter().zip(&work).enumerate() {
+            if simplify(work).is_zero() {
+                continue;
+            }
+            let (rate, _) = names(model, r);
+            rows.push(GeneralizedForceRow {
+                load: if std::mem::take(&mut first) {
+                    action.label.clone()
+                } else {
+                    String::new()
+                },
+                point_tex: Math::from(point.clone()),
+                partial_tex: Math::from(format!(
+                    "\\frac{{\\partial {of}}}{{\\partial {rate}}} = {}",
+                    super::tex::shortest_tex(model, partial, action.body)
+                )),
+                q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", r + 1, tex(work))),
+            });
+        }
+    }
+    // On the coordinates directly: joint dampers and actuators, a rough slider's friction,
+    // and the multipliers of the rows without a site.
+    let joint = forces::joint_generalized_forces(model);
+    for (r, q) in joint.iter().enumerate() {
+        if simplify(q).is_zero() {
+            continue;
+        }
+        rows.push(GeneralizedForceRow {
+            load: format!("loads on the coordinate {}", problem.coordinates[r].name),
+            point_tex: Math::from("\\text{joint}".to_string()),
+            partial_tex: Math::from(String::new()),
+            q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", r + 1, tex(q))),
+        });
+    }
+    for (row, (coordinates, values)) in model
+        .constraints
+        .rows
+        .iter()
+        .zip(constraint_generalized_forces(model))
+    {
+        for (c, value) in coordinates.into_iter().zip(values) {
+            rows.push(GeneralizedForceRow {
+                load: format!("multiplier of {}", row.name),
+                point_tex: Math::from("\\text{joint}".to_string()),
+                partial_tex: Math::from(String::new()),
+                q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", c + 1, tex(&value))),
+            });
+        }
+    }
+    rows
+}
+
+/// Which reaction component each multiplier is.
+fn multipliers_note(derivation: &Derivation) -> String {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let mut parts = Vec::new();
+    for &j in &derivation.reaction_joints {
+        if j < problem.joints.len() {
+            continue;
+        }
+        let site = &model.sites[j];
+        let unknowns: Vec<String> = site
+            .reactions
+            .iter()
+            .map(|c| format!("${}$", latex(&Expr::sym(c.unknown(&site.name)))))
+            .collect();
+        if !unknowns.is_empty() {
+            parts.push(format!("{} at {}", unknowns.join(", "), site.name));
+        }
+    }
+    for row in &model.constraints.rows {
+        if !matches!(row.origin, RowOrigin::Site { .. }) {
+            parts.push(format!(
+                "${}$ for {}",
+                latex(&Expr::sym(row.unknown.clone())),
+                row.name
+            ));
+        }
+    }
+    if parts.is_empty() {
+        return String::new();
+    }
+    format!(
+        "The constraints enter with one multiplier per row, and each multiplier is the reaction component that enforces the row: {}. Their terms in each equation, $\\sum_k \\lambda_k\\, \\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r$ (for a holonomic row $\\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r = \\partial f_k / \\partial q_r$; for a nonholonomic one, the row's coefficient of $\\dot{{q}}_r$), are the virtual work of those components, and the constraint rows, differentiated, close the system; the reactions asked for are these multipliers.",
+        parts.join("; ")
+    )
+}
