@@ -16,6 +16,7 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod stages;
+pub mod statics;
 mod sweep;
 
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};

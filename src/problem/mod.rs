@@ -24,6 +24,7 @@ mod expressions;
 mod friction;
 mod gear;
 mod graph;
+mod held;
 mod initial;
 mod joints;
 mod json;

@@ -77,6 +77,9 @@ pub struct Coordinate {
     pub motion: Option<Expr>,
     /// The name its drive goes by in the statement (`drive.symbol`, e.g. `tau_m`).
     pub drive_symbol: Option<String>,
+    /// Marked `held`: kept at its initial value by a support (then `motion` is that
+    /// constant value, and the support's generalized force is its drive).
+    pub held: bool,
 }
 
 /// The central inertia of a body.
