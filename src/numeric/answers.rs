@@ -136,6 +136,13 @@ pub fn answer(
         q.copy_from_slice(&last[1..=n]);
         rates.copy_from_slice(&last[n + 1..=2 * n]);
     }
+    if question.kind.is_static() {
+        return Err(failure(
+            question,
+            "a question of statics is answered at rest, with the friction sites sticking".into(),
+            "ask it through the answers of the problem (`mbd-tutor answer`)",
+        ));
+    }
     let mut residual = None;
     if let QuestionKind::Steady { unknowns, zero } = &question.kind {
         let found = steady(problem, system, t, &mut q, &mut rates, unknowns, zero)
@@ -218,6 +225,10 @@ pub fn answer(
                 }
             })
             .collect(),
+        // Answered by statics before this point.
+        QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. } => {
+            Vec::new()
+        }
     };
     Ok(Answer {
         values,
@@ -358,6 +369,12 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
                 });
             coordinate_unit(problem, entry.coordinate, entry.order)
         }
+        QuestionKind::Slips { .. } => String::new(),
+        QuestionKind::Tips { .. } => "N".into(),
+        QuestionKind::Impending { constant, .. } => problem.constants[*constant]
+            .unit
+            .clone()
+            .unwrap_or_default(),
     }
 }
 

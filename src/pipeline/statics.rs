@@ -19,7 +19,7 @@ use crate::numeric::system::System;
 use crate::numeric::SolveError;
 use crate::problem::{Problem, ProblemError, ProblemErrors};
 use crate::Error;
-use nalgebra::DVector;
+use nalgebra::{Complex, DMatrix, DVector};
 
 /// How an equilibrium responds to a small disturbance, from its linearization.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,11 +79,33 @@ impl Solver<'_> {
     }
 }
 
+impl Solver<'_> {
+    /// The same equations for `problem`: the problem derived from, with other values of its
+    /// constants.
+    fn with_problem<'q>(&self, problem: &'q Problem) -> Solver<'q> {
+        let constants: Vec<f64> = problem.constants.iter().map(|c| c.value).collect();
+        let plans = (self.plans.plans.borrow().iter())
+            .map(|c| c.with_constants(&constants))
+            .collect();
+        Solver {
+            problem,
+            plans: super::Plans {
+                method: self.plans.method,
+                replans: self.plans.replans,
+                own: self.plans.own,
+                plans: std::cell::RefCell::new(plans),
+            },
+        }
+    }
+}
+
 /// The equations of a problem at rest, ready to find equilibria.
 pub struct Statics<'p> {
     problem: &'p Problem,
     solver: Solver<'p>,
-    linearizer: Linearizer,
+    /// `None` for the same equations with other values of the constants, whose equilibria
+    /// are found without their stability.
+    linearizer: Option<Linearizer>,
     /// The coordinates Newton's method moves: neither dependent nor prescribed nor held.
     free: Vec<usize>,
 }
@@ -102,14 +124,30 @@ impl<'p> Statics<'p> {
         Ok(Statics {
             problem,
             solver: Solver::new(problem, &derivation),
-            linearizer: Linearizer::new(&derivation),
+            linearizer: Some(Linearizer::new(&derivation)),
             free,
         })
+    }
+
+    /// The same equations for `problem`, the problem derived from with other values of its
+    /// constants; its equilibria come without their stability.
+    pub fn with_problem<'q>(&self, problem: &'q Problem) -> Statics<'q> {
+        Statics {
+            problem,
+            solver: self.solver.with_problem(problem),
+            linearizer: None,
+            free: self.free.clone(),
+        }
     }
 
     /// The coordinates that are free to find, by index.
     pub fn free(&self) -> &[usize] {
         &self.free
+    }
+
+    /// The names of the sites with friction.
+    pub fn friction_sites(&self) -> Vec<String> {
+        self.solver.friction_sites()
     }
 
     /// The solver of the equations (with every friction site sticking at rest).
@@ -150,9 +188,9 @@ impl<'p> Statics<'p> {
             .map_err(|failure| self.not_found(failure, from))?;
         let (q, rates) = self.at(&set(&root.u))?;
         let motion = self.solver.at_rest(0.0, &q, &rates)?;
-        let stability = match self.free.is_empty() {
-            true => None,
-            false => Some(self.stability(&q, &rates)?),
+        let stability = match (&self.linearizer, self.free.is_empty()) {
+            (Some(linearizer), false) => Some(self.stability(linearizer, &q, &rates)?),
+            _ => None,
         };
         Ok(Equilibrium {
             q,
@@ -185,18 +223,68 @@ impl<'p> Statics<'p> {
         Error::Problem(ProblemErrors(vec![error]))
     }
 
-    /// The stability of the equilibrium at `q`, `rates`.
-    fn stability(&self, q: &[f64], rates: &[f64]) -> Result<Stability, Error> {
-        let linear = self.linearizer.at(self.problem, 0.0, q, rates)?;
-        let eigenvalues: Vec<(f64, f64)> = linear
-            .eigen
-            .iter()
-            .map(|e| (clean(e.value.re), clean(e.value.im)))
-            .collect();
+    /// The stability of the equilibrium at `q`, `rates`: from the exact linearization, or,
+    /// where its equations are singular (rough contacts whose forces statics does not
+    /// split), from central differences of the free coordinates' q'' at rest.
+    fn stability(
+        &self,
+        linearizer: &Linearizer,
+        q: &[f64],
+        rates: &[f64],
+    ) -> Result<Stability, Error> {
+        let values: Vec<Complex<f64>> = match linearizer.at(self.problem, 0.0, q, rates) {
+            Ok(linear) => linear.eigen.iter().map(|e| e.value).collect(),
+            Err(error) => {
+                let a = self.state_matrix(q).ok_or(error)?;
+                let mut values =
+                    crate::numeric::linearize::hqr::eigenvalues(&a).unwrap_or_default();
+                crate::numeric::linearize::modes::sort(&mut values);
+                values
+            }
+        };
+        let eigenvalues: Vec<(f64, f64)> =
+            values.iter().map(|v| (clean(v.re), clean(v.im))).collect();
         Ok(Stability {
             kind: classify(&eigenvalues),
             eigenvalues,
         })
+    }
+
+    /// The state matrix of the free coordinates and their rates at rest at `q`, by central
+    /// differences of [`Solver::at_rest`] (the dependent coordinates and rates assembled).
+    fn state_matrix(&self, q: &[f64]) -> Option<DMatrix<f64>> {
+        let n = self.free.len();
+        let accelerations = |z: &[f64]| -> Option<Vec<f64>> {
+            let (mut q, mut rates) = (q.to_vec(), vec![0.0; q.len()]);
+            for (k, &i) in self.free.iter().enumerate() {
+                q[i] = z[k];
+                rates[i] = z[n + k];
+            }
+            self.solver.assemble(0.0, &mut q, &mut rates).ok()?;
+            let a = self.solver.at_rest(0.0, &q, &rates).ok()?.accelerations;
+            Some(self.free.iter().map(|&i| a[i]).collect())
+        };
+        let z0: Vec<f64> = self
+            .free
+            .iter()
+            .map(|&i| q[i])
+            .chain(vec![0.0; n])
+            .collect();
+        let mut a = DMatrix::zeros(2 * n, 2 * n);
+        for k in 0..n {
+            a[(k, n + k)] = 1.0;
+        }
+        for j in 0..2 * n {
+            let h = 1e-6 * z0[j].abs().max(1.0);
+            let (mut up, mut down) = (z0.clone(), z0.clone());
+            up[j] += h;
+            down[j] -= h;
+            let (plus, minus) = (accelerations(&up)?, accelerations(&down)?);
+            for k in 0..n {
+                a[(n + k, j)] = (plus[k] - minus[k]) / (2.0 * h);
+            }
+        }
+        Some(a)
     }
 }
 

@@ -38,6 +38,7 @@ pub mod schema;
 mod settings;
 mod shapes;
 mod speeds;
+mod static_questions;
 mod validate;
 pub mod variant;
 pub mod vary;
