@@ -242,8 +242,11 @@ impl<'p> Statics<'p> {
                 values
             }
         };
+        // Parts within the tolerance of zero are zero: round-off, not motion.
+        let tolerance = zero_tolerance(values.iter().map(|v| v.norm()).fold(0.0, f64::max));
+        let snap = |x: f64| if x.abs() <= tolerance { 0.0 } else { x };
         let eigenvalues: Vec<(f64, f64)> =
-            values.iter().map(|v| (clean(v.re), clean(v.im))).collect();
+            values.iter().map(|v| (snap(v.re), snap(v.im))).collect();
         Ok(Stability {
             kind: classify(&eigenvalues),
             eigenvalues,
@@ -288,13 +291,9 @@ impl<'p> Statics<'p> {
     }
 }
 
-/// −0 written as 0.
-fn clean(x: f64) -> f64 {
-    if x == 0.0 {
-        0.0
-    } else {
-        x
-    }
+/// What is zero among eigenvalues whose largest |λ| is `scale`.
+fn zero_tolerance(scale: f64) -> f64 {
+    (1e-7 * scale).max(1e-6)
 }
 
 /// Unstable when an eigenvalue's real part is positive, neutral when an eigenvalue is zero,
@@ -307,7 +306,7 @@ pub fn classify(eigenvalues: &[(f64, f64)]) -> StabilityKind {
         .iter()
         .map(|(re, im)| re.hypot(*im))
         .fold(0.0, f64::max);
-    let tolerance = (1e-7 * scale).max(1e-6);
+    let tolerance = zero_tolerance(scale);
     if eigenvalues.iter().any(|(re, _)| *re > tolerance) {
         StabilityKind::Unstable
     } else if eigenvalues

@@ -43,10 +43,12 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .map(|(found, value)| value_tex(problem, question, found, *value))
                 .map(Math::from).collect();
             if question.kind.is_static() {
+                view.at_note = "at rest, every friction site sticking".into();
                 let index = problem.questions.iter().position(|q| std::ptr::eq(q, question));
-                view.values_tex = vec![Math::from(super::static_answers::value_tex(
-                    problem, question, answer,
-                ))];
+                view.values_tex = vec![
+                    Math::from(super::static_answers::value_tex(problem, question, answer)),
+                    Math::from(super::static_answers::verdict_tex(problem, question, answer)),
+                ];
                 view.note = index
                     .map(|i| super::static_answers::note(problem, i, answers))
                     .unwrap_or_default();

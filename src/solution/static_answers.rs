@@ -131,20 +131,51 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
     }
 }
 
-/// The note under a statics answer: what the number decides, and for an impending motion,
-/// of those found for the same constant on the same side of its value, which comes first.
-pub fn note(problem: &Problem, index: usize, answers: &[Answer]) -> String {
-    let question = &problem.questions[index];
-    let answer = &answers[index];
+/// What the number decides, as a line of math in words: "it does not slip".
+pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> String {
+    let site = |i: usize| problem.site_name(i).replace('_', "\\_");
     match &question.kind {
-        QuestionKind::Slips { site } => match slips(answer) {
-            false => format!("Friction at {} needs no more than μ|N| to hold the system at rest: it does not slip.", problem.site_name(*site)),
-            true => format!("Rest would need more friction at {} than μ|N|: it slips.", problem.site_name(*site)),
+        QuestionKind::Slips { site: i } => match slips(answer) {
+            false => format!(
+                "\\text{{friction at {} can hold it: it does not slip}}",
+                site(*i)
+            ),
+            true => format!(
+                "\\text{{rest needs more friction at {} than }} \\mu |N| \\text{{: it slips}}",
+                site(*i)
+            ),
         },
-        QuestionKind::Tips { site } => match tips(answer) {
-            false => format!("The normal force at {} pushes: the contact holds and the body does not tip.", problem.site_name(*site)),
-            true => format!("Rest would need the contact at {} to pull: the body tips off it.", problem.site_name(*site)),
+        QuestionKind::Tips { site: i } => match tips(answer) {
+            false => format!(
+                "\\text{{the contact at {} pushes: it does not tip}}",
+                site(*i)
+            ),
+            true => format!(
+                "\\text{{rest needs the contact at {} to pull: it tips}}",
+                site(*i)
+            ),
         },
+        QuestionKind::Impending {
+            site: i,
+            tips: true,
+            ..
+        } => {
+            format!(
+                "\\text{{the normal force at {} falls to zero: tipping impends}}",
+                site(*i)
+            )
+        }
+        QuestionKind::Impending { site: i, .. } => {
+            format!("|F| = \\mu |N| \\text{{ at {}: slip impends}}", site(*i))
+        }
+        _ => String::new(),
+    }
+}
+
+/// The note under a statics answer: for an impending motion, of those found for the same
+/// constant on the same side of its value, which comes first (empty otherwise).
+pub fn note(problem: &Problem, index: usize, answers: &[Answer]) -> String {
+    match &problem.questions[index].kind {
         QuestionKind::Impending { constant, .. } => first(problem, index, *constant, answers),
         _ => String::new(),
     }
