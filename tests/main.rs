@@ -38,6 +38,7 @@ mod separation;
 mod slider_friction;
 mod snapshots_by_problem;
 mod speeds;
+mod statics;
 mod support;
 mod svg_reader;
 mod validation;

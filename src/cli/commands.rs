@@ -251,6 +251,22 @@ pub struct SolveArgs {
     pub at: AtState,
 }
 
+// `statics`
+
+/// Arguments of `mbd-tutor statics`.
+#[derive(clap::Args, Debug)]
+pub struct StaticsArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: SolveFormat,
+    /// A starting guess for Newton's method, q1=V,q2=V (the others initial); repeat for
+    /// several equilibria. Without it: the initial configuration.
+    #[arg(long, value_name = "NAME=VALUE,...")]
+    pub near: Vec<String>,
+}
+
 // `variants`
 
 /// Arguments of `mbd-tutor variants`.

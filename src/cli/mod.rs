@@ -40,6 +40,8 @@ pub enum Command {
     Variants(VariantsArgs),
     /// Serve the HTML worked solution on a local web server, rebuilt when the file changes.
     Serve(ServeArgs),
+    /// Equilibria at rest: reactions, holding forces, stability and friction ratios.
+    Statics(StaticsArgs),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

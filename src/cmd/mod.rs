@@ -9,6 +9,7 @@ pub mod schema;
 pub mod serve;
 pub mod simulate;
 pub mod solve;
+pub mod statics;
 pub mod variants;
 
 use crate::cli::Command;
@@ -32,6 +33,7 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Answer(args) => answer::run(args),
         Command::Variants(args) => variants::run(args),
         Command::Serve(args) => serve::run(args),
+        Command::Statics(args) => statics::run(args),
     }
 }
 

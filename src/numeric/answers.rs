@@ -22,10 +22,7 @@ use crate::problem::{
 };
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::{ComponentKind, Expr, Symbol};
-use nalgebra::{DMatrix, DVector};
-
-/// The most Newton iterations for a steady motion.
-const MAX_ITERATIONS: usize = 100;
+use nalgebra::DVector;
 
 /// What an answer found.
 #[derive(Clone, Debug, PartialEq)]
@@ -139,6 +136,13 @@ pub fn answer(
         q.copy_from_slice(&last[1..=n]);
         rates.copy_from_slice(&last[n + 1..=2 * n]);
     }
+    if question.kind.is_static() {
+        return Err(failure(
+            question,
+            "a question of statics is answered at rest, with the friction sites sticking".into(),
+            "ask it through the answers of the problem (`mbd-tutor answer`)",
+        ));
+    }
     let mut residual = None;
     if let QuestionKind::Steady { unknowns, zero } = &question.kind {
         let found = steady(problem, system, t, &mut q, &mut rates, unknowns, zero)
@@ -221,6 +225,10 @@ pub fn answer(
                 }
             })
             .collect(),
+        // Answered by statics before this point.
+        QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. } => {
+            Vec::new()
+        }
     };
     Ok(Answer {
         values,
@@ -289,62 +297,17 @@ fn steady(
             rates[e.coordinate]
         }
     };
-    let mut u = DVector::from_iterator(unknowns.len(), unknowns.iter().map(|e| get(q, rates, e)));
+    let u = DVector::from_iterator(unknowns.len(), unknowns.iter().map(|e| get(q, rates, e)));
     let (q0, rates0) = (q.to_vec(), rates.to_vec());
     let f = |u: &DVector<f64>| residual(problem, system, t, (&q0, &rates0), unknowns, zero, u);
-    let not_solvable = || {
-        (
+    let root = super::newton::solve(f, u).map_err(|failure| match failure {
+        super::newton::NewtonFailure::NotSolvable => (
             "the equations cannot be solved at the starting guess".to_string(),
             "start from another guess in `at.state`",
-        )
-    };
-    let mut r = f(&u).ok_or_else(not_solvable)?;
-    let scale = r.amax().max(1.0);
-    let tolerance = 1e-10 * scale;
-    let mut iterations = 0;
-    while r.amax() > tolerance {
-        if iterations == MAX_ITERATIONS {
-            return Err(no_root(r.amax(), iterations));
-        }
-        iterations += 1;
-        let mut jacobian = DMatrix::zeros(zero.len(), unknowns.len());
-        for k in 0..unknowns.len() {
-            let h = 1e-6 * u[k].abs().max(1.0);
-            let (mut up, mut down) = (u.clone(), u.clone());
-            up[k] += h;
-            down[k] -= h;
-            let (Some(rp), Some(rd)) = (f(&up), f(&down)) else {
-                return Err(not_solvable());
-            };
-            jacobian.set_column(k, &((rp - rd) / (2.0 * h)));
-        }
-        let step = jacobian
-            .svd(true, true)
-            .solve(&(-&r), 1e-14 * scale)
-            .map_err(|_| no_root(r.amax(), iterations))?;
-        // Halve the step until the residual decreases.
-        let mut lambda = 1.0;
-        let mut accepted = None;
-        for _ in 0..30 {
-            let trial = &u + &step * lambda;
-            if let Some(rt) = f(&trial) {
-                if rt.norm() < r.norm() {
-                    accepted = Some((trial, rt));
-                    break;
-                }
-            }
-            lambda /= 2.0;
-        }
-        let Some((next, rn)) = accepted else {
-            // No decrease: a root is reached to rounding, or there is none near.
-            if r.amax() <= 1e-7 * scale {
-                break;
-            }
-            return Err(no_root(r.amax(), iterations));
-        };
-        u = next;
-        r = rn;
-    }
+        ),
+        super::newton::NewtonFailure::NoRoot { left, iterations } => no_root(left, iterations),
+    })?;
+    let (u, left, iterations) = (root.u, root.left, root.iterations);
     for (e, &x) in unknowns.iter().zip(u.iter()) {
         if e.order == 0 {
             q[e.coordinate] = x;
@@ -352,7 +315,7 @@ fn steady(
             rates[e.coordinate] = x;
         }
     }
-    Ok((r.amax(), iterations))
+    Ok((left, iterations))
 }
 
 fn no_root(left: f64, iterations: usize) -> Failure {
@@ -406,6 +369,12 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
                 });
             coordinate_unit(problem, entry.coordinate, entry.order)
         }
+        QuestionKind::Slips { .. } => String::new(),
+        QuestionKind::Tips { .. } => "N".into(),
+        QuestionKind::Impending { constant, .. } => problem.constants[*constant]
+            .unit
+            .clone()
+            .unwrap_or_default(),
     }
 }
 

@@ -16,6 +16,8 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod stages;
+pub mod statics;
+mod statics_answers;
 mod sweep;
 
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
@@ -231,8 +233,19 @@ pub fn answers(
 ) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
     let derivation = derive(problem, method)?;
     let solver = Solver::fastest(problem, &derivation);
-    crate::numeric::answers::answer_all(problem, &solver)
-        .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
+    if !problem.questions.iter().any(|q| q.kind.is_static()) {
+        return crate::numeric::answers::answer_all(problem, &solver)
+            .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])));
+    }
+    // The questions of statics are answered at rest, every friction site sticking.
+    let statics = statics::Statics::new(problem, method)?;
+    (problem.questions.iter())
+        .map(|question| match question.kind.is_static() {
+            true => statics_answers::answer(&statics, problem, question),
+            false => crate::numeric::answers::answer(problem, &solver, question)
+                .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e]))),
+        })
+        .collect()
 }
 
 /// What is compiled from a derivation's plan, and from the plans made again for special

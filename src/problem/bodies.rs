@@ -82,6 +82,7 @@ impl super::read::Reader {
                 dependent_rate: false,
                 motion: None,
                 drive_symbol: None,
+                held: false,
             })
             .collect();
         let Some(map) = value.and_then(|v| object(v, "coordinates", &mut self.diag)) else {
@@ -117,6 +118,7 @@ impl super::read::Reader {
                     "dependent_rate",
                     "motion",
                     "drive",
+                    "held",
                 ],
                 &mut self.diag,
             );
@@ -128,6 +130,7 @@ impl super::read::Reader {
             (entry.rate, entry.rate_expr) = (rate, rate_expr);
             entry.unit = optional_string(fields, "unit", &path, &mut self.diag);
             entry.description = optional_string(fields, "description", &path, &mut self.diag);
+            self.held_key(fields, &path, &mut out[index]);
         }
         out
     }

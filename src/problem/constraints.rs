@@ -461,11 +461,13 @@ impl Reader {
             }
         }
         let Some(v) = fields.get("motion") else {
-            if fields.contains_key("drive") {
+            if super::held::is_held(fields) {
+                entry.drive_symbol = self.drive_symbol(fields, path);
+            } else if fields.contains_key("drive") {
                 self.diag.hint(
                     &key_path(path, "drive"),
                     "only a prescribed coordinate has a drive",
-                    "give the coordinate a `motion`, or remove `drive`",
+                    "give the coordinate a `motion` or `\"held\": true`, or remove `drive`",
                 );
             }
             return;

@@ -77,6 +77,9 @@ pub struct Coordinate {
     pub motion: Option<Expr>,
     /// The name its drive goes by in the statement (`drive.symbol`, e.g. `tau_m`).
     pub drive_symbol: Option<String>,
+    /// Marked `held`: kept at its initial value by a support (then `motion` is that
+    /// constant value, and the support's generalized force is its drive).
+    pub held: bool,
 }
 
 /// The central inertia of a body.
@@ -522,6 +525,31 @@ pub enum QuestionKind {
         unknowns: Vec<StateEntry>,
         zero: Vec<(Expr, String)>,
     },
+    /// Whether friction at a site (a site index) fails to hold the question's state at
+    /// rest: the ratio |F|/(μ|N|) decides.
+    Slips { site: usize },
+    /// Whether a contact (a site index) loses contact at the question's state at rest: its
+    /// normal force decides.
+    Tips { site: usize },
+    /// The value of a constant (an index into [`Problem::constants`]) at which, at rest,
+    /// slip impends at a site (|F| = μ|N|), or with `tips` its normal force falls to zero;
+    /// `guess` starts Newton's method (default: the constant's value).
+    Impending {
+        constant: usize,
+        site: usize,
+        tips: bool,
+        guess: Option<f64>,
+    },
+}
+
+impl QuestionKind {
+    /// Whether statics answers it (`slips`, `tips`, `impending`).
+    pub fn is_static(&self) -> bool {
+        matches!(
+            self,
+            QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. }
+        )
+    }
 }
 
 /// Where a question is asked.

@@ -23,8 +23,18 @@ use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 8] = [
-    "text", "value", "reaction", "drive", "steady", "at", "unit", "symbol",
+const KEYS: [&str; 11] = [
+    "text",
+    "value",
+    "reaction",
+    "drive",
+    "steady",
+    "at",
+    "unit",
+    "symbol",
+    "slips",
+    "tips",
+    "impending",
 ];
 
 impl Reader {
@@ -69,10 +79,18 @@ impl Reader {
             .get("symbol")
             .and_then(|v| string(v, &key_path(path, "symbol"), &mut self.diag))
             .map(str::to_string);
-        let asked: Vec<&str> = ["value", "reaction", "drive", "steady"]
-            .into_iter()
-            .filter(|k| fields.contains_key(*k))
-            .collect();
+        let asked: Vec<&str> = [
+            "value",
+            "reaction",
+            "drive",
+            "steady",
+            "slips",
+            "tips",
+            "impending",
+        ]
+        .into_iter()
+        .filter(|k| fields.contains_key(*k))
+        .collect();
         if asked.len() != 1 {
             let message = if asked.is_empty() {
                 "the question asks for nothing".to_string()
@@ -82,7 +100,7 @@ impl Reader {
             self.diag.hint(
                 path,
                 message,
-                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed coordinate) or `steady`",
+                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed or held coordinate), `steady`, `slips`, `tips` or `impending`",
             );
             return None;
         }
@@ -137,7 +155,8 @@ impl Reader {
                     coordinate: entry.coordinate,
                 }
             }
-            _ => self.steady(&fields["steady"], &key_path(path, "steady"))?,
+            "steady" => self.steady(&fields["steady"], &key_path(path, "steady"))?,
+            key => self.static_question(key, &fields[key], path, constraints)?,
         };
         if matches!(kind, QuestionKind::Steady { .. })
             && at.state.is_none()

@@ -17,11 +17,14 @@ fn kind_name(question: &Question) -> &'static str {
         QuestionKind::Reaction { .. } => "reaction",
         QuestionKind::Drive { .. } => "drive",
         QuestionKind::Steady { .. } => "steady",
+        QuestionKind::Slips { .. } => "slips",
+        QuestionKind::Tips { .. } => "tips",
+        QuestionKind::Impending { .. } => "impending",
     }
 }
 
 /// `x` as JSON: a number, or `null` when not finite (never, for an answer).
-fn number(x: f64) -> Value {
+pub(super) fn number(x: f64) -> Value {
     serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
 }
 
@@ -106,6 +109,9 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
                 out.insert("iterations".into(), iterations.into());
             }
         }
+        QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. } => {
+            super::static_answers::record(problem, question, answer, &mut out);
+        }
     }
     out.insert("state".into(), Value::Object(state(problem, answer)));
     out.insert("time".into(), number(answer.time));
@@ -189,6 +195,8 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
                     (false, axis) => format!("{base}.{axis}"),
                 },
                 QuestionKind::Steady { .. } => format!("{base}.{found}"),
+                QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => format!("{base}.{found}"),
+                QuestionKind::Impending { .. } => base.clone(),
             };
             columns.push((column, x));
         }

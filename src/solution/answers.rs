@@ -42,6 +42,17 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .iter()
                 .map(|(found, value)| value_tex(problem, question, found, *value))
                 .map(Math::from).collect();
+            if question.kind.is_static() {
+                view.at_note = "at rest, every friction site sticking".into();
+                let index = problem.questions.iter().position(|q| std::ptr::eq(q, question));
+                view.values_tex = vec![
+                    Math::from(super::static_answers::value_tex(problem, question, answer)),
+                    Math::from(super::static_answers::verdict_tex(problem, question, answer)),
+                ];
+                view.note = index
+                    .map(|i| super::static_answers::note(problem, i, answers))
+                    .unwrap_or_default();
+            }
             if let Some((left, iterations)) = answer.residual {
                 let plural = if iterations == 1 { "" } else { "s" };
                 view.note = format!(
@@ -108,6 +119,7 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
                 zero.join(" = ")
             )
         }
+        _ => super::static_answers::asked(problem, question),
     }
 }
 
@@ -224,6 +236,8 @@ fn value_tex(problem: &Problem, question: &Question, found: &Quantity, value: f6
                 });
             latex(&problem.coordinate_expr(entry.coordinate, entry.order))
         }
+        // Written by the statics answers.
+        _ => String::new(),
     };
     // Round-off of a zero (1e-13 rad/s²) is answered as the zero it is.
     let value = if value.abs() < ROUND_OFF { 0.0 } else { value };

@@ -34,6 +34,7 @@ pub mod row_view;
 mod simulation;
 mod speeds;
 mod spin_frames;
+mod static_answers;
 mod tex;
 
 pub use build::{setup, solution as worked};

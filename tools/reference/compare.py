@@ -112,10 +112,10 @@ def run_binary(binary, path, method, state, time, overrides):
 
 def is_constrained(path):
     """Whether the problem uses the constraint extension (closures, constraints, prescribed
-    motion, Coulomb friction on a joint), which the reference lacks."""
+    motion or held coordinates, Coulomb friction on a joint), which the reference lacks."""
     with open(path, encoding="utf-8") as f:
         raw = json.load(f)
-    motion = any(isinstance(c, dict) and "motion" in c
+    motion = any(isinstance(c, dict) and ("motion" in c or c.get("held"))
                  for c in raw.get("coordinates", {}).values())
     rough = any(isinstance(j, dict) and "friction" in j for j in raw.get("joints", []))
     return bool(raw.get("closures") or raw.get("constraints") or motion or rough)

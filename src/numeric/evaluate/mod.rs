@@ -97,6 +97,15 @@ impl Compiled {
         self.recursive.as_ref().map(Recursive::load_operation_count)
     }
 
+    /// The same equations with other values of the constants (in the problem's order):
+    /// what statics evaluates at each trial value of a constant it seeks.
+    pub fn with_constants(&self, constants: &[f64]) -> Compiled {
+        Compiled {
+            constants: constants.to_vec(),
+            ..self.clone()
+        }
+    }
+
     /// Whether the q'' come from the articulated-body algorithm, not the compiled rows.
     pub fn is_recursive(&self) -> bool {
         self.recursive.is_some()

@@ -1,0 +1,225 @@
+//! The answers of the questions of statics (`slips`, `tips`, `impending`): their JSON for
+//! `answer`, and their lines and notes in the handout's Answers, which say in words what
+//! the numbers decide and, of several impending motions, which happens first.
+
+use crate::numeric::answers::Answer;
+use crate::problem::{Problem, Question, QuestionKind};
+use crate::symbolic::format::fixed;
+use serde_json::{Map, Value};
+
+/// The one value of a statics answer (the ratio, the normal force, the constant).
+fn value(answer: &Answer) -> f64 {
+    answer.values.first().map_or(f64::NAN, |(_, x)| *x)
+}
+
+/// Whether a `slips` answer slips: |F| > μ|N|.
+pub fn slips(answer: &Answer) -> bool {
+    value(answer) > 1.0
+}
+
+/// Whether a `tips` answer tips: the normal force would have to pull.
+pub fn tips(answer: &Answer) -> bool {
+    value(answer) < 0.0
+}
+
+/// `answer --format json`'s fields of a statics answer, added to `out`.
+pub fn record(
+    problem: &Problem,
+    question: &Question,
+    answer: &Answer,
+    out: &mut Map<String, Value>,
+) {
+    let number = super::answer_sheet::number;
+    match &question.kind {
+        QuestionKind::Slips { site } => {
+            out.insert("value".into(), slips(answer).into());
+            out.insert("ratio".into(), number(value(answer)));
+            out.insert("site".into(), problem.site_name(*site).into());
+        }
+        QuestionKind::Tips { site } => {
+            out.insert("value".into(), tips(answer).into());
+            out.insert("normal".into(), number(value(answer)));
+            out.insert("unit".into(), "N".into());
+            out.insert("site".into(), problem.site_name(*site).into());
+        }
+        QuestionKind::Impending {
+            site,
+            tips,
+            constant,
+            ..
+        } => {
+            out.insert("value".into(), number(value(answer)));
+            let unit = problem.constants[*constant]
+                .unit
+                .clone()
+                .unwrap_or_default();
+            out.insert("unit".into(), unit.into());
+            out.insert(
+                "constant".into(),
+                problem.constants[*constant].name.clone().into(),
+            );
+            out.insert("site".into(), problem.site_name(*site).into());
+            out.insert("impends".into(), if *tips { "tip" } else { "slip" }.into());
+        }
+        _ => {}
+    }
+}
+
+/// The question made from what it asks, when it has no `text`.
+pub fn asked(problem: &Problem, question: &Question) -> String {
+    match &question.kind {
+        QuestionKind::Slips { site } => format!(
+            "Can friction at {} hold the system at rest?",
+            problem.site_name(*site)
+        ),
+        QuestionKind::Tips { site } => format!(
+            "Does the contact at {} hold at rest, or does the body tip off it?",
+            problem.site_name(*site)
+        ),
+        QuestionKind::Impending {
+            constant,
+            site,
+            tips,
+            ..
+        } => format!(
+            "Find the value of ${}$ at which {} impends at {}.",
+            constant_tex(problem, *constant),
+            if *tips { "tipping" } else { "slip" },
+            problem.site_name(*site)
+        ),
+        _ => String::new(),
+    }
+}
+
+fn constant_tex(problem: &Problem, constant: usize) -> String {
+    crate::symbolic::print::latex(&crate::symbolic::Expr::constant(
+        &problem.constants[constant].name,
+    ))
+}
+
+/// The answer's line of math.
+pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> String {
+    let x = value(answer);
+    let number = |x: f64| {
+        if x.is_finite() {
+            fixed(x)
+        } else {
+            "\\infty".into()
+        }
+    };
+    match &question.kind {
+        QuestionKind::Slips { .. } => format!(
+            "\\frac{{|F|}}{{\\mu |N|}} = {} {} 1",
+            number(x),
+            if slips(answer) { ">" } else { "\\le" }
+        ),
+        QuestionKind::Tips { .. } => format!("N = {}\\ \\mathrm{{N}}", number(x)),
+        QuestionKind::Impending { constant, .. } => {
+            let unit = problem.constants[*constant]
+                .unit
+                .clone()
+                .unwrap_or_default();
+            let unit = crate::render::units::unit_tex(&unit);
+            let unit = if unit.is_empty() {
+                unit
+            } else {
+                format!("\\ {unit}")
+            };
+            format!("{} = {}{unit}", constant_tex(problem, *constant), number(x))
+        }
+        _ => String::new(),
+    }
+}
+
+/// What the number decides, as a line of math in words: "it does not slip".
+pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> String {
+    let site = |i: usize| problem.site_name(i).replace('_', "\\_");
+    match &question.kind {
+        QuestionKind::Slips { site: i } => match slips(answer) {
+            false => format!(
+                "\\text{{friction at {} can hold it: it does not slip}}",
+                site(*i)
+            ),
+            true => format!(
+                "\\text{{rest needs more friction at {} than }} \\mu |N| \\text{{: it slips}}",
+                site(*i)
+            ),
+        },
+        QuestionKind::Tips { site: i } => match tips(answer) {
+            false => format!(
+                "\\text{{the contact at {} pushes: it does not tip}}",
+                site(*i)
+            ),
+            true => format!(
+                "\\text{{rest needs the contact at {} to pull: it tips}}",
+                site(*i)
+            ),
+        },
+        QuestionKind::Impending {
+            site: i,
+            tips: true,
+            ..
+        } => {
+            format!(
+                "\\text{{the normal force at {} falls to zero: tipping impends}}",
+                site(*i)
+            )
+        }
+        QuestionKind::Impending { site: i, .. } => {
+            format!("|F| = \\mu |N| \\text{{ at {}: slip impends}}", site(*i))
+        }
+        _ => String::new(),
+    }
+}
+
+/// The note under a statics answer: for an impending motion, of those found for the same
+/// constant on the same side of its value, which comes first (empty otherwise).
+pub fn note(problem: &Problem, index: usize, answers: &[Answer]) -> String {
+    match &problem.questions[index].kind {
+        QuestionKind::Impending { constant, .. } => first(problem, index, *constant, answers),
+        _ => String::new(),
+    }
+}
+
+/// "As P grows from 10 N, tipping at back impends first (P = 19.62 N), before slip at
+/// front (P = 39.24 N)."; empty when this is the only impending motion on its side.
+fn first(problem: &Problem, index: usize, constant: usize, answers: &[Answer]) -> String {
+    let c = &problem.constants[constant];
+    let given = c.value;
+    let mine = value(&answers[index]);
+    let rising = mine >= given;
+    let mut found: Vec<(f64, String)> = (problem.questions.iter().zip(answers))
+        .filter_map(|(q, a)| match q.kind {
+            QuestionKind::Impending {
+                constant: k,
+                site,
+                tips,
+                ..
+            } if k == constant => {
+                let x = value(a);
+                let what = if tips { "tipping" } else { "slip" };
+                (x.is_finite() && (x >= given) == rising)
+                    .then(|| (x, format!("{what} at {}", problem.site_name(site))))
+            }
+            _ => None,
+        })
+        .collect();
+    if found.len() < 2 {
+        return String::new();
+    }
+    found.sort_by(|a, b| match rising {
+        true => a.0.total_cmp(&b.0),
+        false => b.0.total_cmp(&a.0),
+    });
+    let unit = c.unit.clone().map(|u| format!(" {u}")).unwrap_or_default();
+    let at = |(x, what): &(f64, String)| format!("{what} ({} = {}{unit})", c.name, fixed(*x));
+    let rest: Vec<String> = found[1..].iter().map(at).collect();
+    format!(
+        "As {} {} from {}{unit}, {} impends first, before {}.",
+        c.name,
+        if rising { "grows" } else { "falls" },
+        fixed(given),
+        at(&found[0]),
+        rest.join(", ")
+    )
+}
