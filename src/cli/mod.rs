@@ -40,6 +40,9 @@ pub enum Command {
     Variants(VariantsArgs),
     /// Serve the HTML worked solution on a local web server, rebuilt when the file changes.
     Serve(ServeArgs),
+    /// The rates just after the problem's impact, its impulses and the kinetic energy
+    /// before and after.
+    Impact(ImpactArgs),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

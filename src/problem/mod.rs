@@ -24,6 +24,8 @@ mod expressions;
 mod friction;
 mod gear;
 mod graph;
+mod impact;
+mod impulsive;
 mod initial;
 mod joints;
 mod json;
@@ -42,6 +44,8 @@ pub mod variant;
 pub mod vary;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
+pub use impact::{Collision, Impact, Impulse};
+pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
 pub use model::*;
 
