@@ -156,7 +156,7 @@ fn collision(problem: &Problem, s: &ImpactSolution, values: &Values) -> Vec<Impa
     let planar = problem.dimension == crate::problem::Dimension::Two;
     let mut steps = vec![ImpactStep {
         text: format!(
-            "The collision at {name}: along the normal, Newton's law of restitution makes the struck point's velocity relative to {on} after the impact −e times the one before (e = {}), which fixes the normal impulse P_n.",
+            "The collision at {name}: along the normal, Newton's law of restitution makes the struck point's velocity relative to {on} after the impact −e times the one before (e = {}), which fixes the normal impulse.",
             fixed(eval(&c.restitution, values))
         ),
         math_tex: Math("v_{n}^{+} = -e\\, v_{n}^{-}".into()),
@@ -165,12 +165,12 @@ fn collision(problem: &Problem, s: &ImpactSolution, values: &Values) -> Vec<Impa
     let law = match p.mode {
         Mode::Smooth => "The surface is smooth: the impulse has no tangential part.".to_string(),
         Mode::Stick => format!(
-            "Stopping the point's slip needs a tangential impulse of {} N s, within μ P_n = {} N s: the point sticks, and leaves the impact without slipping.",
+            "Stopping the point's slip needs a tangential impulse of {} N s, within μ times the normal impulse, {} N s: the point sticks, and leaves the impact without slipping.",
             fixed(p.tangential),
             fixed(c.friction.as_ref().map_or(0.0, |mu| eval(mu, values) * p.normal))
         ),
         Mode::Slide => format!(
-            "Stopping the point's slip would need more than μ P_n = {} N s: the point slides through the impact, and the tangential impulse is μ P_n against the slip.",
+            "Stopping the point's slip would need more than μ times the normal impulse: the point slides through the impact, and the tangential impulse is μ times the normal one, {} N s, against the slip.",
             fixed(p.tangential)
         ),
         Mode::Separate => "The blows carry the point off the surface: the collision gives no impulse.".to_string(),
