@@ -123,7 +123,7 @@ fn after_rate(s: &Value, rate: &str) -> f64 {
 /// lowest point: the slip before is s = u + R ω₀; P_n = m (1 + e) w; to stop the slip
 /// P_t = −m s / 3; sliding, P_t = −μ P_n sign(s).
 fn disc_after(mu: f64) -> (f64, f64, f64, f64, bool) {
-    let (m, r, u, w, w0, e) = (1.5, 0.2, 3.0, 5.0, 10.0, 0.6);
+    let (m, r, u, w, w0, e): (f64, f64, f64, f64, f64, f64) = (1.5, 0.2, 3.0, 5.0, 10.0, 0.6);
     let slip = u + r * w0;
     let normal = m * (1.0 + e) * w;
     let stick = -m * slip / 3.0;

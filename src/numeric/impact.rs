@@ -70,8 +70,8 @@ fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 fn combo(terms: &[(f64, &[f64; 3])]) -> [f64; 3] {
     let mut out = [0.0; 3];
     for (s, v) in terms {
-        for k in 0..3 {
-            out[k] += s * v[k];
+        for (o, x) in out.iter_mut().zip(v.iter()) {
+            *o += s * x;
         }
     }
     out

@@ -125,10 +125,13 @@ fn combine(base: &Motion, parts: &[(f64, Motion)]) -> Motion {
             .iter_mut()
             .zip(part.reactions.iter().zip(&base.reactions))
         {
-            for k in 0..3 {
-                o.1[k] += s * (x.1[k] - b.1[k]);
-                o.2[k] += s * (x.2[k] - b.2[k]);
-            }
+            let add = |out: &mut [f64; 3], x: &[f64; 3], b: &[f64; 3]| {
+                for (o, (x, b)) in out.iter_mut().zip(x.iter().zip(b)) {
+                    *o += s * (x - b);
+                }
+            };
+            add(&mut o.1, &x.1, &b.1);
+            add(&mut o.2, &x.2, &b.2);
         }
         for (o, (x, b)) in out
             .drives
@@ -246,10 +249,22 @@ fn collide(
     };
     let size = normal_raw.iter().map(|x| x * x).sum::<f64>().sqrt();
     let normal = normal_raw.map(|x| x / size);
+    let restitution = value(&c.restitution);
+    if !(0.0..=1.0).contains(&restitution) {
+        // Read in range; a `--set` may have moved it.
+        return Err(refused(
+            &format!("{}.restitution", c.path),
+            format!(
+                "the coefficient of restitution must lie in [0, 1]; it is {}",
+                crate::symbolic::format::fixed(restitution)
+            ),
+            "give 0 for a plastic impact (the point stays on the surface), 1 for an elastic one",
+        ));
+    }
     let v_before = numbers(velocity, values);
     let approach: f64 = (0..3).map(|k| normal[k] * v_before[k]).sum();
     let scale = v_before.iter().map(|x| x.abs()).fold(0.0, f64::max);
-    if !(approach < -1e-12 * scale) {
+    if approach.is_nan() || approach >= -1e-12 * scale {
         return Err(refused(
             &c.path,
             format!(
@@ -282,7 +297,7 @@ fn collide(
         before: v_before,
         applied,
         response,
-        restitution: value(&c.restitution),
+        restitution,
         friction: c.friction.as_ref().map(value),
     };
     contact.solve().ok_or_else(|| {

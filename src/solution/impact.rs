@@ -115,9 +115,10 @@ fn rows(derivation: &Derivation) -> Vec<ImpactStep> {
         for (shown, jump) in &names {
             tex = tex.replace(shown.as_str(), jump);
         }
-        let heading_tex = match i < derivation.rows.len() {
-            true => Math(row_heading_tex(derivation, i)),
-            false => Math::default(),
+        let heading_tex = if i < derivation.rows.len() {
+            Math(row_heading_tex(derivation, i))
+        } else {
+            Math::default()
         };
         steps.push(ImpactStep {
             text: format!("Row {},", i + 1),
