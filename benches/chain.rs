@@ -99,6 +99,7 @@ pub fn planar_chain(n: usize) -> Problem {
         simulate: SimulateSettings::default(),
         speeds: vec![],
         decimals: vec![],
+        impact: None,
     }
 }
 

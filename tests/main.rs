@@ -13,6 +13,7 @@ mod constraints;
 mod draw;
 mod friction;
 mod gears;
+mod impact;
 mod invalid;
 mod kane_handout;
 mod kane_speeds;

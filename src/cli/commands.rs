@@ -267,6 +267,18 @@ pub struct StaticsArgs {
     pub near: Vec<String>,
 }
 
+// `impact`
+
+/// Arguments of `mbd-tutor impact`.
+#[derive(clap::Args, Debug)]
+pub struct ImpactArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: SolveFormat,
+}
+
 // `variants`
 
 /// Arguments of `mbd-tutor variants`.

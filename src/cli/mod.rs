@@ -42,6 +42,9 @@ pub enum Command {
     Serve(ServeArgs),
     /// Equilibria at rest: reactions, holding forces, stability and friction ratios.
     Statics(StaticsArgs),
+    /// The rates just after the problem's impact, its impulses and the kinetic energy
+    /// before and after.
+    Impact(ImpactArgs),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

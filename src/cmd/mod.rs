@@ -4,6 +4,7 @@ pub mod answer;
 pub mod check;
 pub mod draw;
 pub mod explain;
+pub mod impact;
 pub mod linearize;
 pub mod schema;
 pub mod serve;
@@ -34,6 +35,7 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Variants(args) => variants::run(args),
         Command::Serve(args) => serve::run(args),
         Command::Statics(args) => statics::run(args),
+        Command::Impact(args) => impact::run(args),
     }
 }
 

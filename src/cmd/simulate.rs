@@ -35,8 +35,14 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     let derivation = derive(&problem, super::method(args.common.method))?;
     super::report_constraints(&derivation.model, &[]);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
-    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    if problem.impact.is_some() {
+        // The motion after the impact: from its configuration, with the rates just after.
+        let impact = crate::pipeline::impact_at_start(&problem, &derivation.model, &solver)?;
+        eprintln!("The run starts just after the impact at t = 0.");
+        (q0, rates0) = (impact.q, impact.after);
+    }
     let limits = Limits {
         max_rows: args.max_rows,
         ..Limits::default()

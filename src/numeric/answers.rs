@@ -65,10 +65,24 @@ pub struct Answer {
 /// # Errors
 /// The first question that cannot be answered, with its JSON path and a hint.
 pub fn answer_all(problem: &Problem, system: &dyn System) -> Result<Vec<Answer>, ProblemError> {
+    answer_all_after(problem, system, None)
+}
+
+/// As [`answer_all`], for a problem with an impact whose rates just after it are `after`:
+/// questions asked after the impact (`at.after_impact`), or at a time or a switch reached
+/// by simulating, start from them; the others keep the initial state, before the impact.
+///
+/// # Errors
+/// As for [`answer_all`].
+pub fn answer_all_after(
+    problem: &Problem,
+    system: &dyn System,
+    after: Option<&[f64]>,
+) -> Result<Vec<Answer>, ProblemError> {
     problem
         .questions
         .iter()
-        .map(|q| answer(problem, system, q))
+        .map(|q| answer_after(problem, system, q, after))
         .collect()
 }
 
@@ -91,8 +105,36 @@ pub fn answer(
     system: &dyn System,
     question: &Question,
 ) -> Result<Answer, ProblemError> {
+    answer_after(problem, system, question, None)
+}
+
+/// As [`answer`], with the rates just after the problem's impact, if any (see
+/// [`answer_all_after`]).
+///
+/// # Errors
+/// As for [`answer`].
+pub fn answer_after(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    after: Option<&[f64]>,
+) -> Result<Answer, ProblemError> {
     let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let at = &question.at;
+    let from_after = at.after_impact
+        || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));
+    match after {
+        Some(after) if from_after => rates.copy_from_slice(after),
+        None if at.after_impact => {
+            return Err(failure(
+                question,
+                "the question is asked after the impact, but the problem has no `impact`".into(),
+                "remove `after_impact`, or give the problem an `impact`",
+            ))
+        }
+        _ => {}
+    }
     let solve_failed = |e: super::SolveError| {
         failure(
             question,

@@ -8,6 +8,7 @@ pub mod checks;
 pub mod constraint_checks;
 pub mod evaluate;
 pub mod friction;
+pub mod impact;
 pub mod inputs;
 /// Fixed-precision numbers for text (see [`crate::symbolic::format`]).
 pub use crate::symbolic::format;

@@ -15,11 +15,13 @@
 //! at which the system is not (a row's reaction term vanishing there), the solver and the
 //! linearizer plan again for that state and go on, for every command alike.
 
+mod impact;
 mod stages;
 pub mod statics;
 mod statics_answers;
 mod sweep;
 
+pub use impact::{impact, impact_at_start, ImpactSolution};
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
 pub use sweep::{sweep, Sweep, Swept};
 
@@ -192,6 +194,9 @@ pub struct Worked<'p> {
     pub initial: StateSolution,
     /// The simulation and its checks, or why it could not start.
     pub simulation: Result<(Trajectory, Vec<Check>), SolveError>,
+    /// The impact at the initial state, if the problem has one: the simulation starts
+    /// just after it.
+    pub impact: Option<ImpactSolution>,
 }
 
 /// Runs every stage for the worked solution of `problem` by `method` (see [`Worked`]).
@@ -207,7 +212,19 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     solver.assemble(0.0, &mut q0, &mut rates0)?;
     let initial = solver.solve(0.0, &q0, &rates0)?;
-    let simulation = simulate(&solver, &q0, &rates0, &problem.simulate).map(|trajectory| {
+    let impact = match &problem.impact {
+        Some(_) => Some(impact(
+            problem,
+            &derivation.model,
+            method,
+            &q0,
+            &rates0,
+            &solver,
+        )?),
+        None => None,
+    };
+    let start = impact.as_ref().map_or(&rates0, |i| &i.after);
+    let simulation = simulate(&solver, &q0, start, &problem.simulate).map(|trajectory| {
         let checks = confirm(problem, &solver, &trajectory, &q0);
         (trajectory, checks)
     });
@@ -218,6 +235,7 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
         rates0,
         initial,
         simulation,
+        impact,
     })
 }
 
@@ -233,17 +251,24 @@ pub fn answers(
 ) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
     let derivation = derive(problem, method)?;
     let solver = Solver::fastest(problem, &derivation);
+    let after = match &problem.impact {
+        Some(_) => Some(impact_at_start(problem, &derivation.model, &solver)?.after),
+        None => None,
+    };
+    let problem_error = |e| Error::Problem(crate::problem::ProblemErrors(vec![e]));
     if !problem.questions.iter().any(|q| q.kind.is_static()) {
-        return crate::numeric::answers::answer_all(problem, &solver)
-            .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])));
+        return crate::numeric::answers::answer_all_after(problem, &solver, after.as_deref())
+            .map_err(problem_error);
     }
     // The questions of statics are answered at rest, every friction site sticking.
     let statics = statics::Statics::new(problem, method)?;
     (problem.questions.iter())
         .map(|question| match question.kind.is_static() {
             true => statics_answers::answer(&statics, problem, question),
-            false => crate::numeric::answers::answer(problem, &solver, question)
-                .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e]))),
+            false => {
+                crate::numeric::answers::answer_after(problem, &solver, question, after.as_deref())
+                    .map_err(problem_error)
+            }
         })
         .collect()
 }

@@ -324,7 +324,7 @@ impl Reader {
     }
 
     /// Where a force acts: a point fixed on `on`, or a position from `on`'s origin.
-    fn force_point(
+    pub(super) fn force_point(
         &mut self,
         value: &Value,
         path: &str,

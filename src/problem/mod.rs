@@ -25,6 +25,8 @@ mod friction;
 mod gear;
 mod graph;
 mod held;
+mod impact;
+mod impulsive;
 mod initial;
 mod joints;
 mod json;
@@ -44,6 +46,8 @@ pub mod variant;
 pub mod vary;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
+pub use impact::{Collision, Impact, Impulse};
+pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
 pub use model::*;
 

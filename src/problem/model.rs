@@ -338,6 +338,8 @@ pub struct Problem {
     /// The fractions the expressions write as decimals, with the decimal (`2/5`, `0.4`):
     /// the worked solution prints them as written; the arithmetic stays exact.
     pub decimals: Vec<(crate::symbolic::Number, String)>,
+    /// An impact at the initial state (`impact`), if any.
+    pub impact: Option<super::impact::Impact>,
 }
 
 /// Where a disc's centre is on its body.
@@ -564,6 +566,8 @@ pub struct QuestionAt {
     /// asked at the first instant, simulating from the initial state, that the site
     /// switches between sticking and slipping (a skidding ball starts to roll).
     pub switch: Option<usize>,
+    /// Asked at the state just after the problem's impact (`after_impact`).
+    pub after_impact: bool,
 }
 
 /// One entry of `find.questions`.

@@ -186,8 +186,16 @@ impl Reader {
         constraints: &[Value],
     ) -> Option<QuestionAt> {
         let fields = object(value, path, &mut self.diag)?;
-        check_keys(fields, path, &["time", "state", "switch"], &mut self.diag);
+        check_keys(
+            fields,
+            path,
+            &["time", "state", "switch", "after_impact"],
+            &mut self.diag,
+        );
         let mut at = QuestionAt::default();
+        if let Some(v) = fields.get("after_impact") {
+            at.after_impact = self.after_impact(v, &key_path(path, "after_impact"))?;
+        }
         if let Some(v) = fields.get("switch") {
             let spath = key_path(path, "switch");
             if fields.contains_key("time") || fields.contains_key("state") {
@@ -220,6 +228,21 @@ impl Reader {
             at.state = Some(self.state_entries(entries, &spath)?);
         }
         Some(at)
+    }
+
+    /// `after_impact`: a boolean; `true` asks at the state just after the problem's impact.
+    fn after_impact(&mut self, value: &Value, path: &str) -> Option<bool> {
+        match value.as_bool() {
+            Some(b) => Some(b),
+            None => {
+                self.diag.hint(
+                    path,
+                    "`after_impact` is true or false",
+                    "give \"after_impact\": true to ask at the state just after the impact",
+                );
+                None
+            }
+        }
     }
 
     fn state_entries(

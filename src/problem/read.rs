@@ -17,7 +17,7 @@ use super::validate;
 use crate::symbolic::Expr;
 use serde_json::Value;
 
-const TOP_KEYS: [&str; 16] = [
+const TOP_KEYS: [&str; 17] = [
     "format",
     "title",
     "statement",
@@ -34,6 +34,7 @@ const TOP_KEYS: [&str; 16] = [
     "closures",
     "constraints",
     "speeds",
+    "impact",
 ];
 
 /// What a load needs to know of the rest of the problem.
@@ -147,6 +148,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
             )
         })
         .unwrap_or_default();
+    let impact = top.get("impact").and_then(|v| r.impact(v, &known));
     r.check_sliders(&joints, &coordinates);
 
     if !r.diag.is_empty() {
@@ -170,6 +172,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
         simulate,
         speeds,
         decimals: decimals_written(root),
+        impact,
     })
 }
 

@@ -13,6 +13,7 @@ pub mod draw;
 pub mod escape;
 pub mod figure;
 mod flat_brackets;
+pub mod impact;
 pub mod line_break;
 pub mod markup;
 pub mod math_width;

@@ -85,6 +85,7 @@ pub fn sample() -> Solution {
             force_tex: Math::from(format!("\\left(-7.07557 {N}_{{x}} + 15.7546 {N}_{{y}}\\right) \\mathrm{{N}}")),
             moment_tex: Math::from(s("\\mathbf{0} \\; \\mathrm{N\\,m}")),
         }],
+        impact: None,
         simulation: simulation(),
         linearization: None,
         answers: vec![super::sections::AnswerView {

@@ -128,6 +128,7 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
         time,
         state,
         switch,
+        after_impact,
     } = &question.at;
     if let Some(site) = switch {
         // The instant is what the student finds: the blank handout names it `t`.
@@ -136,7 +137,12 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
     let t = time.unwrap_or(0.0);
     let time_tex = time_tex(t);
     match state {
+        None if t > 0.0 && problem.impact.is_some() => (
+            time_tex,
+            "simulated from the state just after the impact".into(),
+        ),
         None if t > 0.0 => (time_tex, "simulated from the initial state".into()),
+        None if *after_impact => (time_tex, "just after the impact".into()),
         None => (time_tex, "the initial state".into()),
         Some(entries) => {
             let mut parts = vec![time_tex];

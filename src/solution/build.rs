@@ -20,7 +20,8 @@ pub fn solution(worked: &crate::pipeline::Worked) -> Solution {
     let problem = derivation.model.problem;
     let mut solution = setup(problem, derivation.method);
     crate::symbolic::style::with_style(style_of(problem), || {
-        super::derived::fill(&mut solution, worked)
+        super::derived::fill(&mut solution, worked);
+        solution.impact = super::impact::section(worked);
     });
     solution
 }

@@ -18,6 +18,7 @@ mod frames;
 mod free_bodies;
 mod friction;
 mod handout;
+mod impact;
 mod independent;
 mod kane;
 mod kinematics;

@@ -69,9 +69,10 @@ class Problem:
     def __init__(self, data, overrides=None):
         _keys(data, "$", {"title", "dimension", "bodies", "joints"},
               {"format", "statement", "constants", "coordinates", "gravity", "points",
-               "loads", "find", "simulate", "speeds"})
+               "loads", "find", "simulate", "speeds", "impact"})
         # Declared generalized speeds change how the equations are written, not the motion:
-        # the q'' compared here are the same, so `speeds` is read past.
+        # the q'' compared here are the same, so `speeds` is read past. An `impact` changes
+        # the rates after it, not the q'' at a state, so it is read past too.
         self.dimension = data["dimension"]
         if self.dimension not in (2, 3):
             raise ProblemError("$.dimension: expected 2 or 3")

@@ -111,6 +111,14 @@ impl Compiled {
         self.recursive.is_some()
     }
 
+    /// Sets constant `index` (in the problem's order) to `value`: the same equations for
+    /// another value of it (an impact's impulse, one component at a time).
+    pub fn set_constant(&mut self, index: usize, value: f64) {
+        if let Some(c) = self.constants.get_mut(index) {
+            *c = value;
+        }
+    }
+
     /// The number of operations to evaluate `A` and `b` once (with the reaction directions).
     pub fn operation_count(&self) -> usize {
         self.program.program().operation_count()

@@ -116,6 +116,8 @@ pub struct Solution {
     pub reactions: Vec<Reaction>,
     /// Step 5: each friction site at the initial state, sticking or sliding, and why.
     pub friction: Vec<FrictionView>,
+    /// The impact at the initial state, after step 5 (problems with `impact`).
+    pub impact: Option<super::impact::ImpactSection>,
     /// Step 6: the simulation and its checks.
     pub simulation: Simulation,
     /// Small motions about a state (`explain --linearize`).
