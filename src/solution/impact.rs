@@ -54,10 +54,16 @@ fn text(sentence: String) -> ImpactStep {
 /// What the chosen method's rows become over the impact.
 fn intro(method: Method) -> String {
     let common = "The impact lasts an instant: the configuration does not change and the finite forces (the weights, the springs) give no impulse. Integrated over that instant, each row of step 5 becomes an impulse–momentum equation: each second derivative becomes the jump Δ of its rate (after less before), each reaction its impulse (a hat marks an impulse), each blow and the collision its impulse, and the velocity terms drop out.";
-    let own = match method {
-        Method::MotionLaw => " By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; about a point where the impulsive reactions meet (a pin of a struck pendulum) no reaction appears, and the jumps come from the blows alone.",
-        Method::NewtonEuler => " By Newton–Euler, the linear impulse on every body equals the jump m Δv* of its momentum, and the angular impulse about its mass centre the jump of its angular momentum.",
-        Method::Kane => " By Kane's method, each generalized impulse (every impulse dotted with its partial velocity) equals the jump of the generalized momentum, the generalized inertia forces with each second derivative read as the jump of its rate.",
+    // Every other method's rows are generalized ones: a generalized impulse equals the jump
+    // of the generalized momentum ∂T/∂q̇ (Lagrange's jump of ∂L/∂q̇).
+    let own = if method == Method::MotionLaw {
+        " By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; about a point where the impulsive reactions meet (a pin of a struck pendulum) no reaction appears, and the jumps come from the blows alone."
+    } else if method == Method::NewtonEuler {
+        " By Newton–Euler, the linear impulse on every body equals the jump m Δv* of its momentum, and the angular impulse about its mass centre the jump of its angular momentum."
+    } else if method == Method::Kane {
+        " By Kane's method, each generalized impulse (every impulse dotted with its partial velocity) equals the jump of the generalized momentum, the generalized inertia forces with each second derivative read as the jump of its rate."
+    } else {
+        " Each generalized impulse (every impulse dotted with its partial velocity) equals the jump of the generalized momentum, the derivative of the kinetic energy with respect to the rate."
     };
     format!("{common}{own}")
 }
