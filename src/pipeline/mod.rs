@@ -238,10 +238,12 @@ pub fn answers(
             .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])));
     }
     // The questions of statics are answered at rest, every friction site sticking.
-    let statics = statics::Statics::new(problem, method)?;
+    // At rest the speeds are zero with the rates: the equations in the rates serve.
+    let in_rates = problem.without_speeds();
+    let statics = statics::Statics::new(&in_rates, method)?;
     (problem.questions.iter())
         .map(|question| match question.kind.is_static() {
-            true => statics_answers::answer(&statics, problem, question),
+            true => statics_answers::answer(&statics, &in_rates, question),
             false => crate::numeric::answers::answer(problem, &solver, question)
                 .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e]))),
         })
