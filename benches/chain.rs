@@ -77,6 +77,7 @@ pub fn planar_chain(n: usize) -> Problem {
             dependent_rate: false,
             motion: None,
             drive_symbol: None,
+            held: false,
         })
         .collect();
     Problem {

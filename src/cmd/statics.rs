@@ -16,7 +16,8 @@ use serde_json::{json, Map, Value};
 /// An invalid problem or `--near`, equations that cannot be derived, or no equilibrium
 /// near a guess.
 pub fn run(args: StaticsArgs) -> Result<(), Error> {
-    let problem = super::load_with_overrides(&args.common)?;
+    // At rest the speeds are zero with the rates: the equations in the rates serve.
+    let problem = super::load_with_overrides(&args.common)?.without_speeds();
     let method = super::method(args.common.method);
     let guesses = guesses(&problem, &args.near)?;
     let statics = Statics::new(&problem, method)?;

@@ -261,10 +261,12 @@ pub fn answers(
             .map_err(problem_error);
     }
     // The questions of statics are answered at rest, every friction site sticking.
-    let statics = statics::Statics::new(problem, method)?;
+    // At rest the speeds are zero with the rates: the equations in the rates serve.
+    let in_rates = problem.without_speeds();
+    let statics = statics::Statics::new(&in_rates, method)?;
     (problem.questions.iter())
         .map(|question| match question.kind.is_static() {
-            true => statics_answers::answer(&statics, problem, question),
+            true => statics_answers::answer(&statics, &in_rates, question),
             false => {
                 crate::numeric::answers::answer_after(problem, &solver, question, after.as_deref())
                     .map_err(problem_error)
