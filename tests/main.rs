@@ -1,6 +1,7 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod agreement;
+mod answer_frames;
 mod answer_json;
 mod answers;
 mod bicycle;
@@ -13,6 +14,7 @@ mod constraints;
 mod draw;
 mod friction;
 mod gears;
+mod initial_state;
 mod invalid;
 mod kane_handout;
 mod kane_speeds;

@@ -23,8 +23,8 @@ use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 8] = [
-    "text", "value", "reaction", "drive", "steady", "at", "unit", "symbol",
+const KEYS: [&str; 9] = [
+    "text", "value", "reaction", "drive", "steady", "at", "unit", "symbol", "in",
 ];
 
 impl Reader {
@@ -139,6 +139,10 @@ impl Reader {
             }
             _ => self.steady(&fields["steady"], &key_path(path, "steady"))?,
         };
+        let frame = match fields.get("in") {
+            Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
+            None => None,
+        };
         if matches!(kind, QuestionKind::Steady { .. })
             && at.state.is_none()
             && at.time.is_some_and(|t| t != 0.0)
@@ -156,8 +160,27 @@ impl Reader {
             at,
             unit,
             symbol,
+            frame,
             path: path.to_string(),
         })
+    }
+
+    /// `in`: the frame whose unit vectors a reaction's components are given in.
+    fn answer_frame(
+        &mut self,
+        value: &Value,
+        path: &str,
+        kind: &QuestionKind,
+    ) -> Option<crate::problem::BodyId> {
+        if !matches!(kind, QuestionKind::Reaction { .. }) {
+            self.diag.hint(
+                path,
+                "only a vector answer has components to give in a frame",
+                "give `in` with a `reaction` question, or remove it",
+            );
+            return None;
+        }
+        self.body_ref(value, path)
     }
 
     fn question_at(
