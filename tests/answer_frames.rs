@@ -198,8 +198,8 @@ fn the_key_and_the_handout_name_the_frame() {
     ]);
     let text = String::from_utf8_lossy(&handout.stdout);
     let answers = &text[text.rfind("Answers").expect("the Answers")..];
-    assert!(answers.contains("\\hat{\\mathbf{a}}_x"), "{answers}");
-    assert!(!answers.contains("\\hat{\\mathbf{n}}_x"), "{answers}");
+    assert!(answers.contains("\\hat{\\mathbf{a}}_{x}"), "{answers}");
+    assert!(!answers.contains("\\hat{\\mathbf{n}}_{x}"), "{answers}");
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -27,6 +27,7 @@ mod massless;
 mod mathml;
 mod matrix_pattern;
 mod methods;
+mod names_render;
 mod pipeline;
 mod planner;
 mod recursive;
