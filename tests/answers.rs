@@ -118,7 +118,12 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
         .values_tex
         .iter()
         .all(|v| v.starts_with("\\mathbf{F}")));
-    assert_eq!(views[0].note, "The components not listed are zero.");
+    // F_y = m g > 0 holds the weight as drawn; F_x is zero and not judged.
+    assert_eq!(
+        views[0].note,
+        "The components not listed are zero. The free bodies draw each unknown component \
+         along its positive unit vector: the force along y is positive, so it acts as drawn."
+    );
 }
 
 fn fixed(x: f64) -> String {

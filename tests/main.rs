@@ -1,6 +1,7 @@
 //! The integration tests, as one binary so that the suite links once.
 
 mod agreement;
+mod answer_frames;
 mod answer_json;
 mod answers;
 mod bicycle;
@@ -14,6 +15,7 @@ mod draw;
 mod friction;
 mod gears;
 mod impact;
+mod initial_state;
 mod invalid;
 mod kane_handout;
 mod kane_speeds;
@@ -27,6 +29,7 @@ mod massless;
 mod mathml;
 mod matrix_pattern;
 mod methods;
+mod names_render;
 mod pipeline;
 mod planner;
 mod recursive;

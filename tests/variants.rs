@@ -108,8 +108,8 @@ fn twenty_variants_draw_on_their_grids_and_the_key_is_what_answer_gives() {
             "L",
             "g",
             "\\ddot{\\theta}",
-            "1.x",
-            "1.y",
+            "1.x@N",
+            "1.y@N",
             "2"
         ]
     );

@@ -90,7 +90,9 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
     })?;
     for drawing in &drawings {
         let path = directory.join(format!("{}.svg", drawing.name));
-        crate::output::write_output(Some(&path), drawing.svg("").as_bytes())?;
+        // Names in words (`push_1`) with their subscripts, as the handout writes them.
+        let svg = crate::render::word_scripts::subscripts_in_words(&drawing.svg(""));
+        crate::output::write_output(Some(&path), svg.as_bytes())?;
         if args.tikz {
             let path = directory.join(format!("{}.tex", drawing.name));
             crate::output::write_output(Some(&path), drawing.tikz().as_bytes())?;

@@ -118,10 +118,12 @@ pub fn rendered(
         every_rejected: args.verbose,
     };
     let mut solution = solution::handout(&problem, super::method(args.common.method), &settings)?;
+    // Only Markdown refers to plot files: the HTML handout holds its plots (one file), the
+    // LaTeX draws them. On standard output there is nowhere to put them either.
+    let beside = output.filter(|_| args.format == FormatArg::Markdown);
     for plot in &mut solution.simulation.plots {
-        // On standard output there is nowhere to put plot files, so nothing refers to one.
         plot.svg_file = FileName::from(
-            output
+            beside
                 .map(|path| format!("{}-{}.svg", file_stem(path), plot.kind))
                 .unwrap_or_default(),
         );

@@ -74,7 +74,7 @@ pub fn run(args: SolveArgs) -> Result<(), Error> {
             text
         }
         SolveFormat::Text => to_text(
-            &problem.title,
+            &problem,
             method.title(),
             args.at.given.time,
             &coordinates,
@@ -168,7 +168,7 @@ pub fn to_json(
 }
 
 fn to_text(
-    title: &str,
+    problem: &crate::problem::Problem,
     method: &str,
     time: f64,
     names: &[String],
@@ -176,7 +176,7 @@ fn to_text(
     rates: &[f64],
     s: &StateSolution,
 ) -> String {
-    let mut out = format!("{title}\nby {method}, at t = {}\n\n", fixed(time));
+    let mut out = format!("{}\nby {method}, at t = {}\n\n", problem.title, fixed(time));
     out.push_str("coordinate        value         rate  second derivative\n");
     for (i, name) in names.iter().enumerate() {
         out.push_str(&format!(
@@ -187,12 +187,15 @@ fn to_text(
         ));
     }
     if !s.reactions.is_empty() {
-        out.push_str(
-            "\nreaction (parent on child, parent's unit vectors; moment about the joint point)\n",
-        );
+        out.push_str("\nreaction (parent on child; moment about the joint point)\n");
         for (joint, f, m) in &s.reactions {
             let v = |x: &[f64; 3]| format!("[{}, {}, {}]", fixed(x[0]), fixed(x[1]), fixed(x[2]));
-            out.push_str(&format!("{joint}: force {}  moment {}\n", v(f), v(m)));
+            let frame = crate::numeric::answer_frame::reaction_frame_named(problem, joint);
+            out.push_str(&format!(
+                "{joint}: force {}  moment {}  ({frame}'s unit vectors)\n",
+                v(f),
+                v(m)
+            ));
         }
     }
     if !s.drives.is_empty() {

@@ -19,7 +19,7 @@ use crate::symbolic::{pow, simplify, sqrt, Expr};
 /// centre toward `body`'s).
 ///
 /// # Errors
-/// A 3D axle that is zero.
+/// A 3D axle that is zero, or one that turns relative to `on` (axles not parallel).
 pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsError> {
     let constraint = &model.problem.constraints[k];
     let ConstraintKind::Gear {
@@ -71,6 +71,21 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
             })?,
         ),
     };
+    if axis.is_some() && !fixed_in(model, &axle, on) {
+        return Err(MechanicsError {
+            path: constraint.path.clone(),
+            message: format!(
+                "the axles of {} and {} are not parallel: the common axle, fixed in {}, turns relative to {}",
+                model.problem.body_name(body),
+                model.problem.body_name(on),
+                model.problem.body_name(body),
+                model.problem.body_name(on)
+            ),
+            hint: Some(
+                "spur gears and friction wheels need parallel axles: give both wheels' joints axes parallel to the gear's `axis`".into(),
+            ),
+        });
+    }
     let tangent = axle.cross(&line, frames);
     // The contact point on the line of centres, `radius` from the disc's centre: toward
     // `on`'s centre outside it, away from it inside a ring.
@@ -117,4 +132,19 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
                 .components_in(on, frames)
         },
     ))
+}
+
+/// Whether `axle` keeps the same components in `on`'s unit vectors at the sample states:
+/// the two wheels' axles stay parallel whatever the coordinates.
+fn fixed_in(model: &Model, axle: &Vector, on: BodyId) -> bool {
+    let in_on = axle.components_in(on, &model.frames);
+    let states = super::model::sample_states(model);
+    let Some(first) = states.first() else {
+        return true;
+    };
+    let eval = crate::symbolic::eval::eval;
+    in_on.iter().all(|c| {
+        let reference = eval(c, first);
+        (states.iter()).all(|state| (eval(c, state) - reference).abs() <= 1e-9)
+    })
 }

@@ -15,6 +15,7 @@
 //!   on the guess: the slow and the fast precession of a top are two questions with two
 //!   guesses.
 
+use super::answer_frame;
 use super::simulate::simulate;
 use super::system::{ReactionColumn, System};
 use crate::problem::{
@@ -58,6 +59,9 @@ pub struct Answer {
     /// A steady motion: the largest |q''| of the `zero` coordinates left, and the
     /// iterations taken.
     pub residual: Option<(f64, usize)>,
+    /// The frame whose unit vectors a vector answer's components are along (a reaction's:
+    /// its site's parent's, or the question's `in`); `None` for a scalar.
+    pub frame: Option<String>,
 }
 
 /// Answers every question of `problem` with `system`, in order.
@@ -196,6 +200,7 @@ pub fn answer_after(
         .map_err(solve_failed)?;
     let evaluation = system.evaluate(t, &q, &rates).map_err(solve_failed)?;
     let names = system.coordinate_names();
+    let mut frame = None;
     let values = match &question.kind {
         QuestionKind::Value { expression, text } => {
             let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
@@ -209,8 +214,8 @@ pub fn answer_after(
             }
             vec![(Quantity::Named(text.clone()), x)]
         }
-        QuestionKind::Reaction { site } => {
-            let site = problem.site_name(*site);
+        QuestionKind::Reaction { site: index } => {
+            let site = problem.site_name(*index);
             let planar = problem.dimension == crate::problem::Dimension::Two;
             // In the plane: the force along x and y, the moment about z.
             let in_plane = |column: &ReactionColumn| {
@@ -227,13 +232,34 @@ pub fn answer_after(
                     }
                 )
             };
-            system
+            let mut found: Vec<(ReactionColumn, f64)> = system
                 .reaction_columns()
                 .into_iter()
-                .zip(&evaluation.reactions)
+                .zip(evaluation.reactions.iter().copied())
                 .filter(|(column, _)| column.site() == Some(site))
+                .collect();
+            let own = answer_frame::reaction_frame(problem, *index);
+            let to = question.frame.unwrap_or(own);
+            if to != own {
+                let m = answer_frame::rotation_between(problem, (to, own), t, &q, &rates).map_err(
+                    |e| {
+                        failure(
+                            question,
+                            format!(
+                                "cannot rotate the reaction into {}: {e}",
+                                problem.body_name(to)
+                            ),
+                            "ask for the reaction in its parent's unit vectors (remove `in`)",
+                        )
+                    },
+                )?;
+                answer_frame::rotate_columns(&m, &mut found);
+            }
+            frame = Some(problem.body_name(to).to_string());
+            found
+                .into_iter()
                 .filter(|(column, _)| !planar || in_plane(column))
-                .map(|(column, &x)| (Quantity::Reaction(column), x))
+                .map(|(column, x)| (Quantity::Reaction(column), x))
                 .collect()
         }
         QuestionKind::Drive { coordinate } => {
@@ -279,6 +305,7 @@ pub fn answer_after(
         rates,
         simulated,
         residual,
+        frame,
     })
 }
 

@@ -1,6 +1,7 @@
 //! Numbers: evaluation, the linear solve, integration and the confirmation checks
 //! (steps 5 and 6).
 
+pub mod answer_frame;
 pub mod answers;
 pub mod assemble;
 pub mod check;

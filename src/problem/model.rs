@@ -581,6 +581,9 @@ pub struct Question {
     pub unit: Option<String>,
     /// The symbol a `value` is answered by (LaTeX math), if given.
     pub symbol: Option<String>,
+    /// `in`: the frame a reaction's components are given in, when the question chooses
+    /// one (otherwise its site's parent's).
+    pub frame: Option<BodyId>,
     /// The JSON path, e.g. `find.questions[0]`.
     pub path: String,
 }

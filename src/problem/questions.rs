@@ -23,7 +23,7 @@ use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 11] = [
+const KEYS: [&str; 12] = [
     "text",
     "value",
     "reaction",
@@ -35,6 +35,7 @@ const KEYS: [&str; 11] = [
     "slips",
     "tips",
     "impending",
+    "in",
 ];
 
 impl Reader {
@@ -158,6 +159,10 @@ impl Reader {
             "steady" => self.steady(&fields["steady"], &key_path(path, "steady"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };
+        let frame = match fields.get("in") {
+            Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
+            None => None,
+        };
         if matches!(kind, QuestionKind::Steady { .. })
             && at.state.is_none()
             && at.time.is_some_and(|t| t != 0.0)
@@ -175,8 +180,27 @@ impl Reader {
             at,
             unit,
             symbol,
+            frame,
             path: path.to_string(),
         })
+    }
+
+    /// `in`: the frame whose unit vectors a reaction's components are given in.
+    fn answer_frame(
+        &mut self,
+        value: &Value,
+        path: &str,
+        kind: &QuestionKind,
+    ) -> Option<crate::problem::BodyId> {
+        if !matches!(kind, QuestionKind::Reaction { .. }) {
+            self.diag.hint(
+                path,
+                "only a vector answer has components to give in a frame",
+                "give `in` with a `reaction` question, or remove it",
+            );
+            return None;
+        }
+        self.body_ref(value, path)
     }
 
     fn question_at(

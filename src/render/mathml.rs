@@ -72,10 +72,21 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
     push_mathml(&mut out, events.into_iter(), config).map_err(|e| error(e.to_string()))?;
     // Our `mover`s are accents (`\hat`, `\dot`, `\ddot`): marked so, they sit close to the letter.
     let out = out.replace("<mover>", "<mover accent=\"true\">");
+    let out = accents_as_operators(&out);
     // `pulldown-latex` writes the space of `\ ` as an escaped entity, which a browser would
     // print as the six characters `&nbsp;`.
     let out = out.replace("&amp;nbsp;", "&#160;");
     Ok(sanitize(&spaces_out_of_scripts(&out)))
+}
+
+/// The accents of `\hat`, `\dot` and `\ddot` as the operators MathML Core places as
+/// accents (`<mo>`, not an italic identifier), the hat as the combining circumflex: a
+/// browser sets the spacing circumflex `^` as the literal caret it is.
+fn accents_as_operators(mathml: &str) -> String {
+    mathml
+        .replace("<mi>^</mi></mover>", "<mo>\u{302}</mo></mover>")
+        .replace("<mi>\u{2d9}</mi></mover>", "<mo>\u{2d9}</mo></mover>")
+        .replace("<mi>\u{a8}</mi></mover>", "<mo>\u{a8}</mo></mover>")
 }
 
 /// `latex` with `\_` inside `\text{…}` written `_`: the parser ends the text there and
@@ -263,7 +274,12 @@ mod tests {
         );
         check(
             "\\hat{\\mathbf{a}}_{x}",
-            &["<msub><mover accent=\"true\">", "𝐚", "^", "<mi>x</mi>"],
+            &[
+                "<msub><mover accent=\"true\">",
+                "𝐚",
+                "<mo>\u{302}</mo>",
+                "<mi>x</mi>",
+            ],
         );
         check(
             "\\frac{L^{2} m}{12}",

@@ -30,6 +30,7 @@ pub mod tex_wrap;
 pub mod text;
 pub mod units;
 pub mod where_list;
+pub mod word_scripts;
 
 pub use context::Solution;
 
@@ -161,6 +162,7 @@ pub fn render(
     let text = tera.render(name, &context).map_err(tera_error)?;
     Ok(match format {
         Format::Latex => tex_wrap::short_source_lines(&text),
-        Format::Markdown | Format::Html => text,
+        Format::Html => word_scripts::subscripts_in_words(&text),
+        Format::Markdown => text,
     })
 }

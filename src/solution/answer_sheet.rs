@@ -90,6 +90,9 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
                 out.insert("moment_unit".into(), "N m".into());
             }
             out.insert("components".into(), Value::Object(components));
+            if let Some(frame) = &answer.frame {
+                out.insert("frame".into(), frame.as_str().into());
+            }
         }
         QuestionKind::Steady { .. } => {
             let unknowns = answer
@@ -172,6 +175,9 @@ pub fn text(problem: &Problem, answers: &[Answer]) -> String {
             .clone()
             .unwrap_or_else(|| super::answers::asked(problem, question));
         let _ = writeln!(out, "    {}", text.replace('\n', " "));
+        if let Some(frame) = &answer.frame {
+            let _ = writeln!(out, "    components along {frame}'s unit vectors");
+        }
         for (found, x) in reported(question, answer) {
             let unit = answers::unit(problem, question, found);
             let _ = writeln!(out, "    {found} = {} {unit}", full(x));
@@ -181,8 +187,9 @@ pub fn text(problem: &Problem, answers: &[Answer]) -> String {
 }
 
 /// The key's answer columns of one problem: each question's values named by its `symbol`,
-/// else its index; a reaction's components as `NAME.x`, `NAME.moment.z`, a steady
-/// motion's unknowns as `NAME.psi'`. The same numbers as [`json`] gives.
+/// else its index; a reaction's components as `NAME.x@A`, `NAME.moment.z@A` (`A` the frame
+/// whose unit vectors they are along), a steady motion's unknowns as `NAME.psi'`. The same
+/// numbers as [`json`] gives.
 pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> {
     let mut columns = Vec::new();
     for (i, (question, answer)) in problem.questions.iter().zip(answers).enumerate() {
@@ -190,10 +197,13 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
         for (found, x) in reported(question, answer) {
             let column = match &question.kind {
                 QuestionKind::Value { .. } | QuestionKind::Drive { .. } => base.clone(),
-                QuestionKind::Reaction { .. } => match reaction_part(found) {
-                    (true, axis) => format!("{base}.moment.{axis}"),
-                    (false, axis) => format!("{base}.{axis}"),
-                },
+                QuestionKind::Reaction { .. } => {
+                    let at = answer.frame.as_deref().unwrap_or("N");
+                    match reaction_part(found) {
+                        (true, axis) => format!("{base}.moment.{axis}@{at}"),
+                        (false, axis) => format!("{base}.{axis}@{at}"),
+                    }
+                }
                 QuestionKind::Steady { .. } => format!("{base}.{found}"),
                 QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => format!("{base}.{found}"),
                 QuestionKind::Impending { .. } => base.clone(),

@@ -38,9 +38,17 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             if shown.len() < answer.values.len() {
                 view.note = "The components not listed are zero.".into();
             }
+            if question.frame.is_none() {
+                if let Some(sense) = sense_note(question, &shown) {
+                    view.note = [view.note.as_str(), sense.as_str()]
+                        .join(" ")
+                        .trim()
+                        .to_string();
+                }
+            }
             view.values_tex = shown
                 .iter()
-                .map(|(found, value)| value_tex(problem, question, found, *value))
+                .map(|(found, value)| value_tex(problem, question, answer, found, *value))
                 .map(Math::from).collect();
             if question.kind.is_static() {
                 view.at_note = "at rest, every friction site sticking".into();
@@ -197,7 +205,13 @@ fn unit_tex(unit: &str) -> String {
     }
 }
 
-fn value_tex(problem: &Problem, question: &Question, found: &Quantity, value: f64) -> String {
+fn value_tex(
+    problem: &Problem,
+    question: &Question,
+    answer: &Answer,
+    found: &Quantity,
+    value: f64,
+) -> String {
     let unit = crate::numeric::answers::unit(problem, question, found);
     let symbol = match &question.kind {
         QuestionKind::Value { expression, .. } => {
@@ -215,17 +229,21 @@ fn value_tex(problem: &Problem, question: &Question, found: &Quantity, value: f6
             }
         }
         QuestionKind::Reaction { site } => {
-            // `O.force.x`: the component along the parent's unit vector.
+            // `O.force.x`: the component along a unit vector of the answer's frame.
             let (kind, axis_index) = match found {
                 Quantity::Reaction(ReactionColumn::Component { kind, axis, .. }) => (*kind, *axis),
                 _ => (ComponentKind::Force, 0),
             };
-            let parent = reaction_parent(problem, *site);
+            let frame = answer.frame.clone().unwrap_or_else(|| {
+                problem
+                    .body_name(crate::numeric::answer_frame::reaction_frame(problem, *site))
+                    .to_string()
+            });
             let letter = kind.letter();
             format!(
                 "\\mathbf{{{letter}}}^{{\\mathrm{{{}}}}} \\cdot {}",
                 problem.site_name(*site).replace('_', "\\_"),
-                latex_unit_vector(&parent, axis_index as u8)
+                latex_unit_vector(&frame, axis_index as u8)
             )
         }
         QuestionKind::Drive { coordinate } => drive_tex(problem, *coordinate),
@@ -267,16 +285,37 @@ fn drive_tex(problem: &Problem, i: usize) -> String {
     ))
 }
 
-/// The name of the body whose unit vectors a site's reaction is written in.
-fn reaction_parent(problem: &Problem, site: usize) -> String {
-    let (j, c) = (problem.joints.len(), problem.closures.len());
-    if site < j {
-        problem.body_name(problem.joints[site].parent).to_string()
-    } else if site < j + c {
-        problem
-            .body_name(problem.closures[site - j].parent)
-            .to_string()
-    } else {
-        "N".into()
+/// Whether each reaction component came out as the free bodies draw it: an unknown is
+/// drawn along its positive unit vector, so a positive component acts as drawn and a
+/// negative one the other way (a push where the arrow pulls). `None` for other questions.
+fn sense_note(question: &Question, shown: &[&(Quantity, f64)]) -> Option<String> {
+    if !matches!(question.kind, QuestionKind::Reaction { .. }) {
+        return None;
     }
+    let parts: Vec<String> = shown
+        .iter()
+        .filter(|(_, value)| value.abs() >= ROUND_OFF)
+        .filter_map(|(found, value)| {
+            let Quantity::Reaction(ReactionColumn::Component { kind, axis, .. }) = found else {
+                return None;
+            };
+            let what = match kind {
+                ComponentKind::Force => "force",
+                ComponentKind::Moment => "moment",
+            };
+            let axis = ["x", "y", "z"].get(*axis).copied().unwrap_or("x");
+            let sense = if *value > 0.0 {
+                "positive, so it acts as drawn"
+            } else {
+                "negative, so it acts opposite to the arrow drawn"
+            };
+            Some(format!("the {what} along {axis} is {sense}"))
+        })
+        .collect();
+    (!parts.is_empty()).then(|| {
+        format!(
+            "The free bodies draw each unknown component along its positive unit vector: {}.",
+            parts.join("; ")
+        )
+    })
 }

@@ -96,6 +96,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
+    super::initial_state::assembled(&mut solution.coordinates, problem, q0, rates0);
+    (solution.constraint_notes).extend(MarkupLine::all(super::initial_state::branches(
+        model, q0, rates0,
+    )));
     solution.initial_values = problem
         .coordinates
         .iter()

@@ -9,7 +9,7 @@ use crate::mechanics::constraints::RowOrigin;
 use crate::plan::rows::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
 use crate::render::text::Math;
-use crate::symbolic::print::latex_name;
+use crate::symbolic::print::latex_name_of;
 
 /// What the note says where a row is the loop's component.
 const COMPONENT: &str = "The loop's component along this row's direction, simplified:";
@@ -32,11 +32,10 @@ pub(super) fn closure_loop_tex(derivation: &Derivation, row: &Equation) -> Optio
     let on_parent = model
         .point_on(site.parent, &site.parent_offset)
         .acceleration;
-    let point = latex_name(&site.name);
     let side = |body| {
         format!(
-            "{{}}^{{N}}\\mathbf{{a}}^{{{point}_{{{}}}}}",
-            latex_name(model.problem.body_name(body))
+            "{{}}^{{N}}\\mathbf{{a}}^{{{}}}",
+            latex_name_of(&site.name, model.problem.body_name(body))
         )
     };
     Some(format!(

@@ -259,21 +259,16 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
                     SiteKind::Contact(k) => problem.constraints.get(k).map(|c| &c.kind),
                     _ => None,
                 };
-                let on_a_surface = matches!(
-                    kind,
-                    Some(
-                        crate::problem::ConstraintKind::Contact { .. }
-                            | crate::problem::ConstraintKind::Rolling { .. }
-                    )
-                );
-                // The normal force is the contact's last component: its row keeps the body
-                // on the surface; the others keep its point from slipping.
-                let normal = matches!(row.map(|r| &r.origin),
-                    Some(RowOrigin::Site { component, .. }) if *component + 1 == s.reactions.len());
-                match (on_a_surface, normal) {
-                    (true, true) => text(format!("no penetration at {}", s.name)),
+                // A position-level row holds the body on the surface (the normal) or,
+                // for a gear, the distance between the centres; a velocity-level row is
+                // the no-slip condition along the contact's tangent (a gear's meshing).
+                let holonomic = row.is_some_and(|r| r.position.is_some());
+                let gear = matches!(kind, Some(crate::problem::ConstraintKind::Gear { .. }));
+                match (gear, holonomic) {
+                    (false, true) => text(format!("no penetration at {}", s.name)),
+                    (false, false) => text(format!("no slip at {}", s.name)),
+                    (true, true) => text(format!("distance between the centres at {}", s.name)),
                     (true, false) => text(format!("no slip at {}", s.name)),
-                    (false, _) => text(format!("rolling constraint at {}", s.name)),
                 }
             }
             Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
@@ -305,7 +300,7 @@ pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<Stri
             let site = model.sites.get(friction.site)?;
             let component =
                 (site.reactions.iter()).find(|c| c.unknown(&site.name) == row.unknown)?;
-            return Some(super::tex::vector_tex(model, &component.direction));
+            return Some(super::direction::simplest_tex(model, &component.direction));
         }
     }
     let row = model.constraints.rows.iter().find(|r| r.name == name)?;
@@ -313,7 +308,7 @@ pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<Stri
         return None;
     };
     let direction = model.sites.get(site)?.row_direction(component)?;
-    Some(super::tex::vector_tex(model, direction))
+    Some(super::direction::simplest_tex(model, direction))
 }
 
 /// `Σ x_k symbol_k` with numbers written to the digits of the tables and a coefficient of

@@ -3,7 +3,7 @@
 use super::expr::{Expr, Func, Node, Symbol};
 use super::number::Number;
 use super::style::abbreviation;
-pub use super::tex_name::latex_name;
+pub use super::tex_name::{latex_name, latex_name_of};
 use std::ops::Neg;
 
 /// Plain text in the grammar of the problem format, e.g. `-m*L^2*sin(q1)/12`.

@@ -77,3 +77,58 @@ pub(crate) fn latex_name_plain(sub: &str) -> String {
         sub.replace('_', ",")
     }
 }
+
+/// A two-part name, point `name` of body `of`, with one subscript group: `J4` of `L4` is
+/// `J_{4,L_{4}}`, `P` of `C` is `P_{C}`; never a double subscript (`J_{4}_{L_{4}}`).
+pub fn latex_name_of(name: &str, of: &str) -> String {
+    let first = latex_name(name);
+    let second = latex_name(of);
+    // The last top-level subscript group of `first`, if it ends the name.
+    let mut depth = 0usize;
+    let mut group = None;
+    for (i, c) in first.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth = depth.saturating_sub(1),
+            '_' if depth == 0 && first[i + 1..].starts_with('{') => group = Some(i),
+            _ => {}
+        }
+    }
+    match group {
+        Some(i) if first.ends_with('}') && closes_at_end(&first[i + 1..]) => {
+            format!("{},{second}}}", &first[..first.len() - 1])
+        }
+        _ => format!("{first}_{{{second}}}"),
+    }
+}
+
+/// Whether the brace group that opens `text` closes at its last character.
+fn closes_at_end(text: &str) -> bool {
+    let mut depth = 0usize;
+    for (i, c) in text.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth = depth.saturating_sub(1);
+                if depth == 0 {
+                    return i + 1 == text.len();
+                }
+            }
+            _ => {}
+        }
+    }
+    false
+}
+
+#[cfg(test)]
+mod two_part_tests {
+    use super::latex_name_of;
+
+    #[test]
+    fn one_subscript_group() {
+        assert_eq!(latex_name_of("J4", "L4"), "J_{4,L_{4}}");
+        assert_eq!(latex_name_of("P", "C"), "P_{C}");
+        assert_eq!(latex_name_of("P4", "C"), "P_{4,C}");
+        assert_eq!(latex_name_of("link_1", "B0"), "\\mathrm{link}_{1,B_{0}}");
+    }
+}

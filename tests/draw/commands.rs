@@ -273,3 +273,42 @@ fn explain_latex_with_tikz_pictures_compiles() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The bowling ball skids forward at release: the lane's friction on it, μ times the
+/// normal force, is drawn backward (−n̂_x), against the slip, in `draw`'s free body.
+#[test]
+fn the_bowling_balls_friction_points_against_the_slip() {
+    let dir = scratch("bowling").join("out");
+    let p = problem_path("bowling-ball");
+    let out = run(&[
+        std::ffi::OsStr::new("draw"),
+        p.as_os_str(),
+        "-o".as_ref(),
+        dir.as_os_str(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg = std::fs::read_to_string(dir.join("fbd-B.svg")).expect("written");
+    let r = read("bowling", &svg);
+    let (g, m) = r
+        .arrows
+        .iter()
+        .find(|(g, _)| g.attr("data-label").is_some_and(|l| l.starts_with('μ')))
+        .expect("the friction arrow");
+    assert_eq!(g.attr("data-kind"), Some("load"));
+    let (tail, head) = super::line(g, *m).expect("straight");
+    let back = r.project_direction([-1.0, 0.0, 0.0]);
+    let got = [head[0] - tail[0], head[1] - tail[1]];
+    assert!(
+        super::angle_between(got, back) < 1e-3,
+        "friction drawn along {got:?}"
+    );
+    // The kinetic diagram's m a^{B*}: the star raised with its letters, not printed.
+    assert!(
+        !svg.contains(">*<") && !svg.contains("^*<"),
+        "a literal ^* in the SVG"
+    );
+}

@@ -296,7 +296,7 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
         ])
     } else {
         about(vec![Phrase::text(format!(
-            ", the energies give {} modes (ω² the eigenvalues of M^-1 K, M from the kinetic \
+            ", the energies give {} modes (ω² the eigenvalues of M⁻¹K, M from the kinetic \
              energy, K the Hessian of the potential); of the {checked} slowest, mode {} \
              differs most: ω = {} rad/s and T = 2π/ω = {} s, and a small oscillation of the \
              equations of motion along it (largest component {}) over {} periods {motion}",

@@ -78,6 +78,9 @@ pub fn plain_of(tex: &str) -> String {
     let mut groups: Vec<bool> = Vec::new();
     let mut script_next = false;
     let mut outermost: Option<(usize, bool)> = None;
+    // An accent (`\dot`, `\ddot`, `\hat`) waiting for its letter: set as the combining
+    // mark after it, so that Ḣ keeps its dot.
+    let mut accent: Option<char> = None;
     while let Some(c) = chars.next() {
         match c {
             '^' | '_' => {
@@ -124,13 +127,28 @@ pub fn plain_of(tex: &str) -> String {
                     continue;
                 }
                 match greek(&command) {
-                    Some(letter) => out.push(letter),
+                    Some(letter) => {
+                        out.push(letter);
+                        out.extend(accent.take());
+                    }
+                    None if matches!(command.as_str(), "dot" | "ddot" | "hat") => {
+                        accent = Some(match command.as_str() {
+                            "dot" => '\u{307}',
+                            "ddot" => '\u{308}',
+                            _ => '\u{302}',
+                        });
+                    }
                     None if matches!(command.as_str(), "cdot" | "times") => out.push(' '),
                     // \mathrm, \mathbf, \hat, \left, \right, \text: only shape the text.
                     None => {}
                 }
             }
-            _ => out.push(c),
+            _ => {
+                out.push(c);
+                if !c.is_whitespace() {
+                    out.extend(accent.take());
+                }
+            }
         }
         script_next = false;
     }
@@ -353,5 +371,7 @@ mod tests {
             plain_of("F^{\\mathrm{rear}_{\\mathrm{contact}}}_{n}"),
             "F^{rear_contact}_n"
         );
+        // An overdot stays on its letter.
+        assert_eq!(plain_of("\\dot{\\mathbf{H}}^{O}"), "H\u{307}^O");
     }
 }

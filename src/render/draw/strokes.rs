@@ -115,12 +115,12 @@ pub fn ellipse_of(du: P2, dv: P2) -> (f64, f64, f64) {
 }
 
 /// How many arrows were drawn before this one at the same point along the same line on
-/// the page (within 8°, so that two forces that only look collinear in a 3D view are
-/// staggered too); 2D couples, arcs (`u` none), count apart. Records this one.
+/// the page (within 25°, so that two forces that only look collinear in a 3D view, or that would
+/// overlap near their tail, are staggered too); 2D couples, arcs (`u` none), count apart. Records this one.
 pub fn stack_of(drawn: &mut Vec<(String, Option<P2>)>, at_id: &str, u: Option<P2>) -> usize {
     let alike = |v: &Option<P2>| match (v, u) {
         (None, None) => true,
-        (Some(a), Some(b)) => a[0] * b[0] + a[1] * b[1] > 8f64.to_radians().cos(),
+        (Some(a), Some(b)) => a[0] * b[0] + a[1] * b[1] > 25f64.to_radians().cos(),
         _ => false,
     };
     let count = drawn

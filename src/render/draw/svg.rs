@@ -236,10 +236,20 @@ pub(super) fn label_spans(label: &Label) -> String {
     let words = label.tex.starts_with("\\text{");
     // Inside braces (a script with a script inside), every character is the script's.
     let mut braced = 0usize;
-    for c in plain.chars() {
+    let mut chars = plain.chars().peekable();
+    while let Some(c) = chars.next() {
         match c {
             '{' if !words => braced += 1,
             '}' if !words && braced > 0 => braced -= 1,
+            // A script inside a script (the star of a^{A^*}, the 4 of J_4) is set in the
+            // same run: the picture has one script size, and a literal `^` or `_` would
+            // print. Before a word, a comma keeps the parts apart (rear,contact).
+            '^' if !words && braced > 0 => {}
+            '_' if !words && braced > 0 => {
+                if chars.peek().is_some_and(|n| !n.is_ascii_digit()) {
+                    run.push(',');
+                }
+            }
             _ if braced > 0 => run.push(c),
             '^' if !words => {
                 flush(&mut out, &mut run, &mut shift, script);

@@ -15,6 +15,7 @@ pub fn body(n: &Numbers, body: BodyId, size: f64) -> Shape {
     let (kind, parts) = declared(n, body, size)
         .or_else(|| wheel(n, body, size))
         .or_else(|| uniform_rod(n, body))
+        .or_else(|| super::carriers::carrier(n, body, size))
         .or_else(|| particle(n, body, size))
         .unwrap_or_else(|| outline(n, body, size));
     Shape::Body {

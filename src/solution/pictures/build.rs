@@ -169,7 +169,9 @@ impl Setting<'_, '_, '_> {
                     (n.in_ground(frame, &e), Label::from_tex(&tex))
                 })
                 .collect();
-            let origin = n.vector(&self.derivation.model.bodies[frame.0].origin.position);
+            let origin = super::triads::beside(n, frame, self.size).unwrap_or_else(|| {
+                n.vector(&self.derivation.model.bodies[frame.0].origin.position)
+            });
             shapes.push(Shape::Triad {
                 origin: (frame != BodyId::GROUND).then_some(origin),
                 axes,
@@ -277,7 +279,11 @@ impl Setting<'_, '_, '_> {
         // not marked and named as a point forces act at.
         let inside = self.joints_inside(set);
         let acted_at = |id: &String| arrows.iter().chain(&kinetic).any(|a| &a.at_id == id);
-        markers.retain(|m| !inside.contains(&m.id) || acted_at(&m.id));
+        // A joint of a body in the group that carries nothing on it (a planar joint's)
+        // would be a stray name: only joints where arrows act are marked.
+        markers.retain(|m| {
+            acted_at(&m.id) || !(inside.contains(&m.id) || matches!(m.role, Role::Joint))
+        });
         Scene {
             title,
             planar: self.derivation.model.is_planar(),
@@ -401,6 +407,12 @@ impl Setting<'_, '_, '_> {
                     .iter()
                     .filter(|c| (c.kind == ComponentKind::Moment) == couple)
                     .filter_map(|c| {
+                        if let Some((along, label)) = super::sliding::sliding(model, n, j, c) {
+                            // Sliding friction is known: drawn the way it acts.
+                            let direction = scale(along, sign);
+                            unit(direction)?;
+                            return Some(arrow(Kind::Load, label, direction));
+                        }
                         let direction = scale(n.vector(&c.direction), sign);
                         unit(direction)?;
                         let symbol = c.unknown(&joint.name);

@@ -4,12 +4,15 @@
 
 pub mod bodies;
 pub mod build;
+mod carriers;
 pub mod gauges;
 pub mod lanes;
 pub mod motion;
 pub mod numbers;
 pub mod shapes;
 pub mod sheets;
+mod sliding;
+mod triads;
 
 use crate::equations::Derivation;
 use crate::problem::BodyId;

@@ -1,0 +1,109 @@
+//! Step 1's coordinate table at the assembled initial state: a dependent coordinate's
+//! value and a dependent rate as solved from the constraints (the problem's value of a
+//! dependent coordinate is only the guess the solution starts from), a prescribed
+//! coordinate's from its motion, each marked so and beside what the problem gave.
+
+use super::pictures::numbers::{Numbers, P3};
+use crate::mechanics::Model;
+use crate::problem::{Coordinate, Dimension, JointKind, Problem};
+use crate::render::context::Coordinate as CoordinateView;
+use crate::symbolic::format::fixed;
+
+/// A value smaller than this is round-off of zero in a teaching problem's SI units.
+const ROUND_OFF: f64 = 1e-12;
+
+/// Rewrites the initial values and rates of `rows` (one per coordinate of `problem`) with
+/// the assembled state `q0`, `rates0`.
+pub fn assembled(rows: &mut [CoordinateView], problem: &Problem, q0: &[f64], rates0: &[f64]) {
+    for (i, (row, c)) in rows.iter_mut().zip(&problem.coordinates).enumerate() {
+        if let Some(&q) = q0.get(i) {
+            let word = if c.motion.is_some() { "given" } else { "guess" };
+            row.initial = value_cell(q, c.initial, solved(c, c.dependent), word);
+        }
+        if let Some(&rate) = rates0.get(i) {
+            let how = solved(c, c.dependent || c.dependent_rate);
+            row.initial_rate = value_cell(rate, c.rate, how, "given");
+        }
+    }
+}
+
+/// Where a value comes from when not from the problem: a prescribed coordinate's motion,
+/// or the constraints (a coordinate or rate marked dependent, or one the assembly moved).
+fn solved(c: &Coordinate, dependent: bool) -> Option<&'static str> {
+    if c.motion.is_some() {
+        Some("from its motion")
+    } else if dependent {
+        Some("from the constraints")
+    } else {
+        None
+    }
+}
+
+/// `-0.65053 (from the constraints; guess -0.65)`, or the value alone when the problem's
+/// value stands. A value the assembly moved is from the constraints even when unmarked;
+/// a rate the problem left at 0 has no "given" beside it.
+fn value_cell(value: f64, given: f64, how: Option<&str>, word: &str) -> String {
+    // Round-off of a zero (1e-16 m/s) is the zero it is.
+    let shown = fixed(if value.abs() < ROUND_OFF { 0.0 } else { value });
+    let written = fixed(given);
+    let how = match how {
+        Some(how) => how,
+        None if written == shown => return shown,
+        None => "from the constraints",
+    };
+    if written == shown || (given == 0.0 && word == "given") {
+        return format!("{shown} ({how})");
+    }
+    format!("{shown} ({how}; {word} {written})")
+}
+
+/// For each revolute closure of a plane loop whose two bodies hang from revolute joints
+/// (a four-bar's coupler and rocker): which of the loop's two assemblies the initial state
+/// took, named by the side of the line between those joints that the closure's point is
+/// on. The constraints hold for its mirror image across that line as well; the solution
+/// follows the one nearest the problem's starting values.
+pub fn branches(model: &Model, q0: &[f64], rates0: &[f64]) -> Vec<String> {
+    let problem = model.problem;
+    if problem.dimension != Dimension::Two || !problem.coordinates.iter().any(|c| c.dependent) {
+        return Vec::new();
+    }
+    let numbers = Numbers::new(model, 0.0, q0, rates0);
+    let n = problem.joints.len();
+    let revolute_joint = |body| {
+        problem
+            .joint_of(body)
+            .filter(|&j| problem.joints[j].kind == JointKind::Revolute)
+    };
+    (problem.closures.iter().enumerate())
+        .filter(|(_, closure)| closure.kind == JointKind::Revolute)
+        .filter_map(|(k, closure)| {
+            let (p, q) = (revolute_joint(closure.parent)?, revolute_joint(closure.child)?);
+            let at = |j: usize| numbers.vector(&model.joints[j].point.position);
+            let r = numbers.vector(&model.sites.get(n + k)?.point.position);
+            let side = side_of(at(p), at(q), r)?;
+            Some(format!(
+                "The loop closes at {} {side} the line from {} to {}: the assembly nearest the starting values (its mirror image across that line meets the constraints too).",
+                closure.name, problem.joints[p].name, problem.joints[q].name
+            ))
+        })
+        .collect()
+}
+
+/// Where `r` lies from the line through `p` and `q`: above or below it when the line is
+/// nearer the horizontal, to its right or left when nearer the vertical; `None` on it.
+fn side_of(p: P3, q: P3, r: P3) -> Option<&'static str> {
+    let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+    if dx.abs() >= dy.abs() {
+        let on_line = p[1] + (r[0] - p[0]) * dy / dx;
+        let gap = r[1] - on_line;
+        (gap.abs() > 1e-9).then_some(if gap > 0.0 { "above" } else { "below" })
+    } else {
+        let on_line = p[0] + (r[1] - p[1]) * dx / dy;
+        let gap = r[0] - on_line;
+        (gap.abs() > 1e-9).then_some(if gap > 0.0 {
+            "to the right of"
+        } else {
+            "to the left of"
+        })
+    }
+}

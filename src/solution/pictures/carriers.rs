@@ -1,0 +1,48 @@
+//! A body that carries the surface another rolls or rests on (a cart under a disc, a rack
+//! under a pinion): drawn as a block whose face is that surface, the length of the body's
+//! points along it and at least a good part of the picture, not as a particle on a line.
+
+use super::numbers::{add, cross, dot, scale, unit, Numbers};
+use super::shapes;
+use crate::mechanics::model::own_components;
+use crate::problem::{BodyId, ConstraintKind};
+use crate::render::draw::scene::{BodyKind, Shape};
+
+/// The block of a planar body that is the `on` of a rolling contact or a contact, with its
+/// face in the contact's plane; `None` for any other body.
+pub fn carrier(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Shape>)> {
+    if body == BodyId::GROUND || !n.model.is_planar() {
+        return None;
+    }
+    let (normal, offset) = n
+        .model
+        .problem
+        .constraints
+        .iter()
+        .find_map(|c| match &c.kind {
+            ConstraintKind::Rolling {
+                on, normal, offset, ..
+            }
+            | ConstraintKind::Contact {
+                on, normal, offset, ..
+            } if *on == body => Some((normal, offset)),
+            _ => None,
+        })?;
+    let up = unit(n.in_ground(body, &n.local(&own_components(normal, body))))?;
+    let along = unit(cross(up, [0.0, 0.0, 1.0]))?;
+    let origin = n.point_on(body, &[0.0; 3]);
+    let face = add(origin, scale(up, n.scalar(offset)));
+    // The body's points along the face, and the middle of them.
+    let reach: Vec<f64> = shapes::key_points(n, body)
+        .iter()
+        .map(|p| dot(add(n.point_on(body, p), scale(face, -1.0)), along))
+        .collect();
+    let lo = reach.iter().copied().fold(0.0, f64::min);
+    let hi = reach.iter().copied().fold(0.0, f64::max);
+    let middle = 0.5 * (lo + hi);
+    let half = (0.5 * (hi - lo) + 0.05 * size).max(0.3 * size);
+    let depth = 0.12 * size;
+    let at = |s: f64, d: f64| add(face, add(scale(along, middle + s * half), scale(up, -d)));
+    let corners = vec![at(-1.0, 0.0), at(1.0, 0.0), at(1.0, depth), at(-1.0, depth)];
+    Some((BodyKind::Block, vec![Shape::Polygon(corners)]))
+}

@@ -1,0 +1,259 @@
+//! Answers say their frame: a reaction's components are along its site's parent's unit
+//! vectors (a gear's along its `on` wheel's) and `answer --format json` names that frame;
+//! `"in": "N"` rotates them into N. Each checked against components written by hand: the
+//! gear pair's tooth force, the double pendulum's elbow by Newton's law for the lower rod,
+//! the four-bar's closure by the rocker's moment equation about its ground pin.
+
+use crate::support::{problem, run, run_json};
+use serde_json::{json, Value};
+
+fn scratch(name: &str, problem: &Value) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("mbd-answer-frames-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch");
+    let path = dir.join(format!("{name}.json"));
+    std::fs::write(&path, serde_json::to_string_pretty(problem).expect("json")).expect("write");
+    path
+}
+
+fn read(name: &str) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(problem(name)).expect("read")).expect("json")
+}
+
+fn answers(path: &std::path::Path) -> Vec<Value> {
+    let out = run_json(&[
+        "answer".as_ref(),
+        path.as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
+    out["answers"].as_array().expect("answers").clone()
+}
+
+fn close(found: f64, expected: f64, what: &str) {
+    assert!(
+        (found - expected).abs() <= 1e-6 * expected.abs().max(1.0),
+        "{what}: {found} against {expected}"
+    );
+}
+
+fn component(answer: &Value, axis: &str) -> f64 {
+    answer["components"][axis].as_f64().unwrap_or(0.0)
+}
+
+fn state(answer: &Value, name: &str) -> f64 {
+    answer["state"][name].as_f64().expect("state value")
+}
+
+/// The tooth force on the gear is tangential, +15 N along n̂_y: I_B |q̈_B| / r_B with
+/// q̈_A = T / (I_A + I_B (r_A/r_B)²) = 225 rad/s², q̈_B = −75 rad/s². Along the pinion's
+/// â (turned by q_A = 0.3) it is (15 sin 0.3, 15 cos 0.3).
+#[test]
+fn the_gear_pairs_tooth_force_names_the_pinions_frame_and_turns_into_n() {
+    let mut p = read("gear-pair-torque");
+    p["find"]["questions"]
+        .as_array_mut()
+        .expect("questions")
+        .push(json!({ "reaction": "mesh", "in": "N" }));
+    let found = answers(&scratch("gear", &p));
+    let (own, in_n) = (&found[1], &found[2]);
+    let force = 0.03 * (1.2 / (0.002 + 0.03 / 9.0)) / 3.0 / 0.15;
+    close(force, 15.0, "the tooth force by hand");
+    assert_eq!(own["frame"], "A");
+    close(component(own, "x"), force * 0.3f64.sin(), "â_x");
+    close(component(own, "y"), force * 0.3f64.cos(), "â_y");
+    assert_eq!(in_n["frame"], "N");
+    close(component(in_n, "x"), 0.0, "n̂_x");
+    close(component(in_n, "y"), force, "n̂_y");
+}
+
+/// The elbow P of the double pendulum: the force of rod A on rod B, in A's unit vectors by
+/// default, in N's when asked. By hand in N: m₂ a_B* = F + m₂ g, with B's centre at
+/// L₁ (sin q₁, −cos q₁) + L₂/2 (sin q₁₂, −cos q₁₂), q₁₂ = q₁ + q₂.
+#[test]
+fn the_double_pendulums_elbow_in_a_and_in_n() {
+    let mut p = read("double-pendulum-rods");
+    p["find"]["reactions"] = json!(["O", "P"]);
+    p["find"]["questions"] = json!([
+        { "value": "q1''" },
+        { "value": "q2''" },
+        { "reaction": "P" },
+        { "reaction": "P", "in": "N" }
+    ]);
+    let found = answers(&scratch("elbow", &p));
+    let constant = |name: &str| p["constants"][name]["value"].as_f64().expect("constant");
+    let (l1, l2, m2, g) = (
+        constant("L1"),
+        constant("L2"),
+        constant("m2"),
+        constant("g"),
+    );
+    let (q1, q2) = (state(&found[0], "q1"), state(&found[0], "q2"));
+    let (u1, u2) = (state(&found[0], "q1'"), state(&found[0], "q2'"));
+    let (a1, a2) = (
+        found[0]["value"].as_f64().expect("q1''"),
+        found[1]["value"].as_f64().expect("q2''"),
+    );
+    let (q12, u12, a12) = (q1 + q2, u1 + u2, a1 + a2);
+    // a_B* = d²/dt² of the centre's position, term by term.
+    let ax = l1 * (a1 * q1.cos() - u1 * u1 * q1.sin())
+        + l2 / 2.0 * (a12 * q12.cos() - u12 * u12 * q12.sin());
+    let ay = l1 * (a1 * q1.sin() + u1 * u1 * q1.cos())
+        + l2 / 2.0 * (a12 * q12.sin() + u12 * u12 * q12.cos());
+    let (fx, fy) = (m2 * ax, m2 * ay + m2 * g);
+    let (own, in_n) = (&found[2], &found[3]);
+    assert_eq!(own["frame"], "A");
+    assert_eq!(in_n["frame"], "N");
+    close(component(in_n, "x"), fx, "elbow n̂_x");
+    close(component(in_n, "y"), fy, "elbow n̂_y");
+    // â_x = (cos q₁, sin q₁), â_y = (−sin q₁, cos q₁).
+    close(
+        component(own, "x"),
+        fx * q1.cos() + fy * q1.sin(),
+        "elbow â_x",
+    );
+    close(
+        component(own, "y"),
+        -fx * q1.sin() + fy * q1.cos(),
+        "elbow â_y",
+    );
+}
+
+/// The four-bar's closure R: the coupler's force on the rocker, in the coupler's unit
+/// vectors by default. In N it satisfies the rocker's moment equation about its ground pin
+/// Q: (m c²/3) q̈₃ = c (cos q₃ F_y − sin q₃ F_x) − m g (c/2) cos q₃.
+#[test]
+fn the_four_bars_closure_in_b_and_in_n() {
+    let mut p = read("four-bar");
+    p["find"]["questions"] = json!([
+        { "value": "q3''" },
+        { "reaction": "R" },
+        { "reaction": "R", "in": "N" }
+    ]);
+    let found = answers(&scratch("four-bar", &p));
+    let constant = |name: &str| p["constants"][name]["value"].as_f64().expect("constant");
+    let (c, m, g) = (constant("c"), constant("m"), constant("g"));
+    let (q1, q2, q3) = (
+        state(&found[0], "q1"),
+        state(&found[0], "q2"),
+        state(&found[0], "q3"),
+    );
+    let a3 = found[0]["value"].as_f64().expect("q3''");
+    let (own, in_n) = (&found[1], &found[2]);
+    assert_eq!(own["frame"], "B");
+    assert_eq!(in_n["frame"], "N");
+    let (fx, fy) = (component(in_n, "x"), component(in_n, "y"));
+    close(
+        m * c * c / 3.0 * a3,
+        c * (q3.cos() * fy - q3.sin() * fx) - m * g * c / 2.0 * q3.cos(),
+        "the rocker's moments about Q",
+    );
+    // B is turned by q₁ + q₂ from N.
+    let b = q1 + q2;
+    close(
+        component(own, "x"),
+        fx * b.cos() + fy * b.sin(),
+        "R along b̂_x",
+    );
+    close(
+        component(own, "y"),
+        -fx * b.sin() + fy * b.cos(),
+        "R along b̂_y",
+    );
+}
+
+/// The key's columns name the frame; the handout's Answers write its unit vectors.
+#[test]
+fn the_key_and_the_handout_name_the_frame() {
+    let dir = std::env::temp_dir().join(format!("mbd-frames-key-{}", std::process::id()));
+    let mut p = read("gear-pair-torque");
+    p["constants"]["T"]["vary"] = json!([1.0, 1.4]);
+    p["constants"]["T"]["step"] = json!(0.1);
+    let varied = scratch("varied", &p);
+    let out = run(&[
+        "variants".as_ref(),
+        varied.as_os_str(),
+        "--count".as_ref(),
+        "1".as_ref(),
+        "--seed".as_ref(),
+        "3".as_ref(),
+        "-o".as_ref(),
+        dir.as_os_str(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let key = std::fs::read_to_string(dir.join("key.csv")).expect("key.csv");
+    let header = key.lines().next().expect("header");
+    assert!(
+        header.contains("1.x@A") && header.contains("1.y@A"),
+        "{header}"
+    );
+    let handout = run(&[
+        "explain".as_ref(),
+        problem("gear-pair-torque").as_os_str(),
+        "--format".as_ref(),
+        "latex".as_ref(),
+    ]);
+    let text = String::from_utf8_lossy(&handout.stdout);
+    let answers = &text[text.rfind("Answers").expect("the Answers")..];
+    assert!(answers.contains("\\hat{\\mathbf{a}}_{x}"), "{answers}");
+    assert!(!answers.contains("\\hat{\\mathbf{n}}_{x}"), "{answers}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `in` is for a vector answer and names a frame of the problem.
+#[test]
+fn in_is_refused_on_a_scalar_and_for_an_unknown_frame() {
+    for (question, path) in [
+        (
+            json!({ "value": "qA''", "in": "N" }),
+            "find.questions[2].in",
+        ),
+        (
+            json!({ "reaction": "mesh", "in": "Z" }),
+            "find.questions[2].in",
+        ),
+    ] {
+        let mut p = read("gear-pair-torque");
+        p["find"]["questions"]
+            .as_array_mut()
+            .expect("questions")
+            .push(question);
+        let out = run(&["answer".as_ref(), scratch("bad-in", &p).as_os_str()]);
+        assert_eq!(out.status.code(), Some(1));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(path) && err.contains("hint"), "{err}");
+    }
+}
+
+/// External gears need parallel axles: a gear whose axle turns against its mate's is
+/// refused by `check` and `solve` at the gear's path.
+#[test]
+fn a_gear_pair_with_crossed_axles_is_refused() {
+    let mut p = read("gear-pair-torque");
+    p["dimension"] = 3.into();
+    p["bodies"]["A"]["inertia"] = json!({ "xx": "IA/2", "yy": "IA/2", "zz": "IA" });
+    p["bodies"]["B"]["inertia"] = json!({ "xx": "IB/2", "yy": "IB/2", "zz": "IB" });
+    p["constraints"][0]["axis"] = "B.z".into();
+    p["joints"][0]["axis"] = "N.x".into();
+    let path = scratch("crossed", &p);
+    for command in ["check", "solve"] {
+        let out = run(&[command.as_ref(), path.as_os_str()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{command}: {err}");
+        assert!(
+            err.contains("constraints[0]") && err.contains("parallel") && err.contains("hint"),
+            "{command}: {err}"
+        );
+    }
+    // Parallel axles (both along N.z) are accepted.
+    p["joints"][0]["axis"] = "N.z".into();
+    let out = run(&["check".as_ref(), scratch("parallel", &p).as_os_str()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

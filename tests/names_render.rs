@@ -1,0 +1,195 @@
+//! Every name renders: a loop closed at J4 on a body L4, a point P4C of a body C, bodies B0
+//! and link_1 give LaTeX that pdflatex compiles by every method (no double subscript), and
+//! no HTML handout or `draw` SVG prints a literal `^`, `_` or `ˆ` in a text node.
+
+use crate::support::{all_problems, pdflatex_present, run, METHODS};
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mbd-names-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch");
+    dir
+}
+
+/// tests/draw/names.json with a body L4 on B0 and a body C on link_1, their loop closed at
+/// J4, a point P4C of C pushed along n̂_x.
+fn names_with_a_loop(dir: &Path) -> PathBuf {
+    let base = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/draw/names.json");
+    let mut p: Value =
+        serde_json::from_str(&std::fs::read_to_string(base).expect("read")).expect("json");
+    p["title"] = "Bodies named B0, B1, B2, L4, C and link_1, a loop closed at J4".into();
+    p["coordinates"]["q4"] = json!({ "initial": 0.5, "rate": 0.3, "unit": "rad" });
+    p["coordinates"]["q5"] = json!({ "initial": -0.45, "dependent": true, "unit": "rad" });
+    p["coordinates"]["x3"] = json!({ "initial": -0.7, "dependent": true, "unit": "m" });
+    p["bodies"]["L4"] = json!({ "mass": "m", "center": "-L/2*L4.y", "inertia": "m*L^2/12" });
+    p["bodies"]["C"] = json!({ "mass": "m", "center": "-L/2*C.y", "inertia": "m*L^2/12" });
+    let joints = p["joints"].as_array_mut().expect("joints");
+    joints.push(
+        json!({ "name": "P4", "type": "revolute", "parent": "B0", "child": "L4",
+        "axis": "B0.z", "coordinates": ["q4"] }),
+    );
+    joints.push(
+        json!({ "name": "P5", "type": "revolute", "parent": "link_1", "child": "C",
+        "axis": "link_1.z", "coordinates": ["q5"] }),
+    );
+    p["closures"] = json!([{ "name": "J4", "type": "revolute", "parent": "L4", "child": "C",
+        "axis": "L4.z", "at": "-L*L4.y", "child_at": "-L*C.y" }]);
+    p["points"]["P4C"] = json!({ "on": "C", "at": "-L/2*C.y" });
+    p["loads"].as_array_mut().expect("loads").push(
+        json!({ "name": "push_1", "type": "force", "on": "C", "at": "P4C", "vector": "2*N.x" }),
+    );
+    p["find"] = json!({ "reactions": ["rail0", "P1", "J4"],
+        "questions": [{ "reaction": "J4" }, { "reaction": "J4", "in": "N" }] });
+    let path = dir.join("names-loop.json");
+    std::fs::write(&path, p.to_string()).expect("write");
+    path
+}
+
+fn pdflatex(dir: &Path, name: &str) {
+    let output = Command::new("pdflatex")
+        .args([
+            "-interaction=nonstopmode",
+            "-halt-on-error",
+            "-no-shell-escape",
+        ])
+        .arg(format!("{name}.tex"))
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .output()
+        .expect("pdflatex runs");
+    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
+    let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
+    assert!(
+        output.status.success() && errors.is_empty(),
+        "{name}.tex does not compile: {errors:?}"
+    );
+}
+
+#[test]
+fn two_part_names_compile_by_every_method() {
+    if !pdflatex_present("the names' handouts") {
+        return;
+    }
+    let dir = scratch("latex");
+    let problem = names_with_a_loop(&dir);
+    for method in METHODS {
+        let tex = dir.join(format!("{method}.tex"));
+        let out = run(&[
+            "explain".as_ref(),
+            problem.as_os_str(),
+            "--method".as_ref(),
+            method.as_ref(),
+            "--format".as_ref(),
+            "latex".as_ref(),
+            "-o".as_ref(),
+            tex.as_os_str(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let source = std::fs::read_to_string(&tex).expect("written");
+        assert!(
+            !source.contains("}_{L_{4}}"),
+            "{method}: a double subscript"
+        );
+        assert!(
+            source.contains("J_{4,L_{4}}"),
+            "{method}: J4 of L4 in one group"
+        );
+        pdflatex(&dir, method);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The text nodes of an HTML or SVG document that hold `^`, `_` or `ˆ`, outside scripts
+/// and styles (their code), and outside the user's own statement and title.
+fn literal_scripts(markup: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut rest = markup;
+    let mut skip = 0usize;
+    while let Some(open) = rest.find('<') {
+        let text = &rest[..open];
+        if skip == 0 && text.contains(['^', '_', 'ˆ']) {
+            found.push(text.trim().chars().take(80).collect());
+        }
+        let close = rest[open..].find('>').map_or(rest.len(), |i| open + i + 1);
+        let tag = &rest[open..close];
+        let name: String = tag
+            .trim_start_matches(['<', '/'])
+            .chars()
+            .take_while(char::is_ascii_alphanumeric)
+            .collect();
+        if matches!(name.as_str(), "script" | "style" | "title" | "h1") && !tag.ends_with("/>") {
+            if tag.starts_with("</") {
+                skip = skip.saturating_sub(1);
+            } else {
+                skip += 1;
+            }
+        }
+        rest = &rest[close..];
+    }
+    found
+}
+
+#[test]
+fn no_html_handout_or_picture_prints_a_literal_script() {
+    let dir = scratch("html");
+    let mut problems = all_problems();
+    problems.push(names_with_a_loop(&dir));
+    for path in &problems {
+        let html = dir.join("page.html");
+        let out = run(&[
+            "explain".as_ref(),
+            path.as_os_str(),
+            "--format".as_ref(),
+            "html".as_ref(),
+            "-o".as_ref(),
+            html.as_os_str(),
+        ]);
+        assert!(out.status.success(), "{}", path.display());
+        let page = std::fs::read_to_string(&html).expect("written");
+        // The statement is the user's text, as written.
+        let page = match page.find("<div class=\"statement\"") {
+            Some(a) => match page[a..].find("</div>") {
+                Some(b) => format!("{}{}", &page[..a], &page[a + b..]),
+                None => page,
+            },
+            None => page,
+        };
+        let literal = literal_scripts(&page);
+        assert!(literal.is_empty(), "{}: {literal:?}", path.display());
+        let files: Vec<_> = std::fs::read_dir(&dir)
+            .expect("dir")
+            .filter_map(|e| e.ok())
+            .filter(|e| e.path().extension().is_some_and(|x| x == "svg"))
+            .collect();
+        assert!(
+            files.is_empty(),
+            "{}: the HTML wrote files beside itself",
+            path.display()
+        );
+    }
+    let drawn = dir.join("drawn");
+    let out = run(&[
+        "draw".as_ref(),
+        problems.last().expect("names").as_os_str(),
+        "-o".as_ref(),
+        drawn.as_os_str(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for entry in std::fs::read_dir(&drawn).expect("drawn") {
+        let svg = std::fs::read_to_string(entry.expect("entry").path()).expect("svg");
+        let literal = literal_scripts(&svg);
+        assert!(literal.is_empty(), "draw: {literal:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
