@@ -13,6 +13,7 @@ mod constraints;
 mod draw;
 mod friction;
 mod gears;
+mod grade;
 mod invalid;
 mod kane_handout;
 mod kane_speeds;

@@ -40,6 +40,9 @@ pub enum Command {
     Variants(VariantsArgs),
     /// Serve the HTML worked solution on a local web server, rebuilt when the file changes.
     Serve(ServeArgs),
+    /// Check a student's submission against the worked solution, item by item, with a
+    /// diagnosis of each mistake; `--batch` grades a class into one gradebook (CSV).
+    Grade(GradeArgs),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

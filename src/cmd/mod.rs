@@ -4,6 +4,7 @@ pub mod answer;
 pub mod check;
 pub mod draw;
 pub mod explain;
+pub mod grade;
 pub mod linearize;
 pub mod schema;
 pub mod serve;
@@ -32,6 +33,7 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Answer(args) => answer::run(args),
         Command::Variants(args) => variants::run(args),
         Command::Serve(args) => serve::run(args),
+        Command::Grade(args) => grade::run(args),
     }
 }
 
