@@ -346,3 +346,20 @@ fn json_shape_determinism_and_unreadable_submissions() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn equations_that_say_nothing_or_have_no_value_are_wrong() {
+    let problem = mbd_tutor::problem::load_file(&problem("compound-pendulum")).expect("loads");
+    let reference = Reference::new(&problem, Method::MotionLaw).expect("derived");
+    let text = r#"{ "equations": ["0 = 0", "1/(L - L)*theta'' = 0", "sqrt(-L)*theta'' = 1", "sin(theta'') = 0"],
+                    "accelerations": { "theta": "sqrt(-g)" } }"#;
+    let report = grade(&reference, &read(text).expect("a submission"));
+    wrong_saying(&report, "equations[0]", &["0 = 0"]);
+    for name in ["equations[1]", "equations[2]", "accelerations.theta"] {
+        let i = item(&report, name);
+        assert_ne!(i.verdict, Verdict::Right, "{}", report.text());
+    }
+    wrong_saying(&report, "equations[3]", &["linear"]);
+    // None of them determines θ'': one more equation is asked for.
+    assert_eq!(item(&report, "equations[4]").verdict, Verdict::Missing);
+}

@@ -112,13 +112,33 @@ fn read(
     let names = Names::new(reference.problem, &reference.reactions, false);
     let residual = parse_equation(&names, text)
         .map_err(|e| Item::invalid(String::new(), parse_message(&e)))?;
+    if residual.is_zero() {
+        return Ok(Err("it says 0 = 0".into()));
+    }
     let Ok((coefficients, rest)) = linear_split(&residual, unknowns) else {
         return Ok(Err("an equation of motion is linear in the second derivatives and the reactions; this one is not".into()));
     };
+    if !real_everywhere(reference, &coefficients, &rest) {
+        return Ok(Err(NOT_REAL.into()));
+    }
     Ok(Ok(Written {
         holds: holds(reference, &coefficients, &rest, unknowns),
         residual,
     }))
+}
+
+/// Why an expression with no value at a sampled state is wrong.
+pub(super) const NOT_REAL: &str =
+    "it has no real value at some states of the motion (a division by zero or the root of a negative number)";
+
+/// Whether the coefficients and the rest of an equation have finite values at every
+/// sampled state.
+fn real_everywhere(reference: &Reference, coefficients: &[Expr], rest: &Expr) -> bool {
+    reference.samples.iter().all(|sample| {
+        std::iter::once(rest)
+            .chain(coefficients)
+            .all(|e| eval(e, &sample.motion).is_finite())
+    })
 }
 
 /// The parser's message with its column and hint.

@@ -47,6 +47,9 @@ pub(super) fn differ(
     if close(&g, &e, 0.0) {
         return None;
     }
+    if !g.iter().all(|x| x.is_finite()) {
+        return Some(super::equations::NOT_REAL.into());
+    }
     let expected = simplify(&unfold(expected));
     if let Some(all) = whole(&g, &e) {
         return Some(format!("{all}: {given} where {expected} was expected"));
@@ -94,13 +97,52 @@ pub(super) fn accelerations(reference: &Reference, given: &Named<Value>) -> Vec<
         };
         // A row with this q'' alone gives it in closed form; otherwise its values.
         let symbol = &reference.accelerations[i];
-        let expected = closed_form(reference, symbol).unwrap_or_else(|| Expr::sym(symbol.clone()));
-        items.push(match differ(reference, &written, &expected, false) {
+        let verdict = match closed_form(reference, symbol) {
+            Some(expected) => differ(reference, &written, &expected, false),
+            None => differ_in_value(reference, &written, symbol),
+        };
+        items.push(match verdict {
             None => Item::right(name, ""),
             Some(why) => Item::wrong(name, why),
         });
     }
     items
+}
+
+/// What is wrong with `given` against the values of the q'' `symbol` (no closed form
+/// written), or `None` when they agree at every sampled state.
+fn differ_in_value(reference: &Reference, given: &Expr, symbol: &Symbol) -> Option<String> {
+    let samples = &reference.samples;
+    let g = values(given, samples, false);
+    let e: Vec<f64> = samples.iter().map(|s| s.motion.get(symbol)).collect();
+    if close(&g, &e, 0.0) {
+        return None;
+    }
+    if !g.iter().all(|x| x.is_finite()) {
+        return Some(super::equations::NOT_REAL.into());
+    }
+    if let Some(all) = whole(&g, &e) {
+        return Some(all);
+    }
+    let first = samples.first()?;
+    let state: Vec<String> = reference
+        .problem
+        .coordinates
+        .iter()
+        .enumerate()
+        .flat_map(|(i, c)| {
+            [
+                format!("{} = {:.4}", c.name, first.q[i]),
+                format!("{}' = {:.4}", c.name, first.rates[i]),
+            ]
+        })
+        .collect();
+    Some(format!(
+        "at {} it gives {:.6} where the equations of motion give {:.6}",
+        state.join(", "),
+        g[0],
+        e[0]
+    ))
 }
 
 /// The q'' `symbol` from a row of the worked solution in which it is the only unknown.
