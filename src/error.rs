@@ -28,6 +28,8 @@ pub enum Error {
         /// The method that was deriving.
         method: crate::equations::Method,
     },
+    /// A submission to `grade` cannot be read: its JSON path and a hint.
+    Submission(crate::grade::SubmissionError),
     /// Some problems of a directory failed (`explain DIR`); the others were written.
     Batch(BatchError),
 }
@@ -68,6 +70,7 @@ impl fmt::Display for Error {
             Error::Solve(e) => write!(f, "{e}"),
             Error::Render(e) => write!(f, "{e}"),
             Error::Batch(e) => write!(f, "{e}"),
+            Error::Submission(e) => write!(f, "{e}"),
             Error::TooMuchWork { overrun, method } => {
                 let raise = format!(
                     "raise the limit with --max-work {}",
@@ -97,6 +100,7 @@ impl std::error::Error for Error {
             Error::Solve(e) => e.source(),
             Error::Render(e) => e.source(),
             Error::Batch(e) => e.source(),
+            Error::Submission(_) => None,
             Error::TooMuchWork { .. } => None,
         }
     }

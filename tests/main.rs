@@ -14,6 +14,7 @@ mod constraints;
 mod draw;
 mod friction;
 mod gears;
+mod grade;
 mod impact;
 mod initial_state;
 mod invalid;

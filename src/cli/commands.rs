@@ -143,6 +143,45 @@ pub struct ExplainArgs {
     pub verbose: bool,
 }
 
+// `grade`
+
+/// The output format of `grade`.
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GradeFormat {
+    /// The total, then one line per item with its verdict and diagnosis.
+    #[default]
+    Text,
+    /// `{ "student", "items": [ … ], "score", "out_of" }`.
+    Json,
+}
+
+/// Arguments of `mbd-tutor grade`.
+#[derive(clap::Args, Debug)]
+pub struct GradeArgs {
+    /// The problem file (JSON): the student's variant, for homework from `variants`.
+    #[arg(required_unless_present = "batch")]
+    pub problem: Option<PathBuf>,
+    /// The student's submission (JSON).
+    #[arg(required_unless_present = "batch")]
+    pub submission: Option<PathBuf>,
+    /// Grade every submission (*.json) in this directory, each against the variant it
+    /// names, into one CSV gradebook.
+    #[arg(long, value_name = "DIR", requires = "key", conflicts_with_all = ["problem", "submission"])]
+    pub batch: Option<PathBuf>,
+    /// With --batch: the key.csv written by `variants`; the variant files are beside it.
+    #[arg(long, value_name = "KEY.csv")]
+    pub key: Option<PathBuf>,
+    /// Output format (a single submission).
+    #[arg(long, value_enum, default_value_t)]
+    pub format: GradeFormat,
+    /// Which method's worked solution the equations are matched against.
+    #[arg(long, value_enum, default_value_t)]
+    pub method: MethodArg,
+    /// Write there instead of standard output.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+}
+
 // `linearize`
 
 /// Arguments of `mbd-tutor linearize`.

@@ -45,6 +45,9 @@ pub enum Command {
     /// The rates just after the problem's impact, its impulses and the kinetic energy
     /// before and after.
     Impact(ImpactArgs),
+    /// Check a student's submission against the worked solution, item by item, with a
+    /// diagnosis of each mistake; `--batch` grades a class into one gradebook (CSV).
+    Grade(GradeArgs),
 }
 
 /// Parses `NAME=VALUE,...` lists (repeatable flags are joined).

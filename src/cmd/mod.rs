@@ -4,6 +4,7 @@ pub mod answer;
 pub mod check;
 pub mod draw;
 pub mod explain;
+pub mod grade;
 pub mod impact;
 pub mod linearize;
 pub mod schema;
@@ -36,6 +37,7 @@ pub fn run(command: Command) -> Result<(), Error> {
         Command::Serve(args) => serve::run(args),
         Command::Statics(args) => statics::run(args),
         Command::Impact(args) => impact::run(args),
+        Command::Grade(args) => grade::run(args),
     }
 }
 

@@ -1,0 +1,220 @@
+//! What a submission is graded against, derived once per problem (once per variant in a
+//! batch): the worked solution's equations, the answers, and the motion at a few random
+//! states (the q'' and every reaction component there), at which every expression of a
+//! submission is compared.
+
+use crate::equations::{Derivation, Method};
+use crate::numeric::answers::Answer;
+use crate::numeric::system::System;
+use crate::pipeline::Solver;
+use crate::problem::Problem;
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::Symbol;
+use crate::Error;
+use nalgebra::{DMatrix, DVector};
+use std::cell::OnceCell;
+
+/// How many random states an expression is compared at.
+const SAMPLES: usize = 4;
+
+/// One random state of the motion.
+#[derive(Clone, Debug)]
+pub struct Sample {
+    /// Time, coordinates and rates.
+    pub t: f64,
+    pub q: Vec<f64>,
+    pub rates: Vec<f64>,
+    /// The constants, the state, the q'' of the equations of motion and every reaction
+    /// component of every site there.
+    pub motion: Values,
+    /// The constants and the state with the q'' drawn at random: kinematics and the
+    /// generalized inertia forces hold for any q''.
+    pub free: Values,
+}
+
+/// The worked solution of one problem, as the grader reads it.
+pub struct Reference<'p> {
+    /// The problem.
+    pub problem: &'p Problem,
+    /// The equations of the chosen method, as the worked solution writes them.
+    pub derivation: Derivation<'p>,
+    /// Newton–Euler's rows (every reaction an unknown), for matching a student's row.
+    pub newton_euler: Option<Derivation<'p>>,
+    /// Kane's rows, for the generalized forces; derived when first asked for.
+    kane: OnceCell<Option<Derivation<'p>>>,
+    /// The answers of `find.questions`, or why they could not be found.
+    pub answers: Result<Vec<Answer>, String>,
+    /// The random states.
+    pub samples: Vec<Sample>,
+    /// Every reaction component of every site.
+    pub reactions: Vec<Symbol>,
+    /// The q'' of every coordinate.
+    pub accelerations: Vec<Symbol>,
+    /// The rates of every coordinate.
+    pub rates: Vec<Symbol>,
+}
+
+impl<'p> Reference<'p> {
+    /// Derives the worked solution of `problem` by `method` and samples its motion.
+    ///
+    /// # Errors
+    /// When the equations cannot be derived or solved at any random state.
+    pub fn new(problem: &'p Problem, method: Method) -> Result<Reference<'p>, Error> {
+        let derivation = crate::pipeline::derive_for_handout(problem, method)?;
+        let newton_euler = match method {
+            Method::NewtonEuler => None,
+            _ => crate::pipeline::derive_for_handout(problem, Method::NewtonEuler).ok(),
+        };
+        let solver = Solver::new(problem, &derivation);
+        let answers = match problem.questions.is_empty() {
+            true => Ok(Vec::new()),
+            false => {
+                crate::numeric::answers::answer_all(problem, &solver).map_err(|e| e.to_string())
+            }
+        };
+        let model = &derivation.model;
+        let sites: Vec<usize> = (0..model.sites.len()).collect();
+        let reactions = crate::equations::system::reaction_unknowns(model, &sites);
+        let full = newton_euler.as_ref().unwrap_or(&derivation);
+        let samples = sample(problem, &solver, full, &derivation)?;
+        let count = problem.coordinates.len();
+        Ok(Reference {
+            problem,
+            accelerations: (0..count)
+                .map(|i| problem.coordinate_symbol(i, 2))
+                .collect(),
+            rates: (0..count)
+                .map(|i| problem.coordinate_symbol(i, 1))
+                .collect(),
+            derivation,
+            newton_euler,
+            kane: OnceCell::new(),
+            answers,
+            samples,
+            reactions,
+        })
+    }
+
+    /// Kane's rows, derived on first use (`None` when they cannot be).
+    pub fn kane(&self) -> Option<&Derivation<'p>> {
+        self.kane
+            .get_or_init(|| match self.derivation.method {
+                Method::Kane => None,
+                _ => crate::pipeline::derive_for_handout(self.problem, Method::Kane).ok(),
+            })
+            .as_ref()
+            .or((self.derivation.method == Method::Kane).then_some(&self.derivation))
+    }
+
+    /// The number of coordinates whose q'' the equations must determine.
+    pub fn degrees_of_freedom(&self) -> usize {
+        let constraints = &self.derivation.model.constraints;
+        self.problem
+            .coordinates
+            .iter()
+            .enumerate()
+            .filter(|(i, c)| c.motion.is_none() && !constraints.dependent.contains(i))
+            .count()
+    }
+}
+
+/// A generator of numbers in [-1, 1), seeded so that a grade is the same every run.
+struct Draw(u64);
+
+impl Draw {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    }
+}
+
+/// The random states, each with the q'' of `solver` and the reactions of `full` (a
+/// derivation in which every reaction is an unknown).
+fn sample(
+    problem: &Problem,
+    solver: &Solver,
+    full: &Derivation,
+    derivation: &Derivation,
+) -> Result<Vec<Sample>, Error> {
+    let mut draw = Draw(0x2545_F491_4F6C_DD1D);
+    let mut samples = Vec::new();
+    let mut last_error = None;
+    for _ in 0..SAMPLES * 5 {
+        if samples.len() == SAMPLES {
+            break;
+        }
+        let t = 0.5 + 0.5 * draw.next();
+        let mut q: Vec<f64> = problem
+            .coordinates
+            .iter()
+            .map(|c| c.initial + 1.2 * draw.next())
+            .collect();
+        let mut rates: Vec<f64> = problem
+            .coordinates
+            .iter()
+            .map(|c| c.rate + 1.5 * draw.next())
+            .collect();
+        let random: Vec<f64> = problem
+            .coordinates
+            .iter()
+            .map(|_| 3.0 * draw.next())
+            .collect();
+        if let Err(e) = solver.assemble(t, &mut q, &mut rates) {
+            last_error = Some(e);
+            continue;
+        }
+        let solution = match solver.solve(t, &q, &rates) {
+            Ok(s) => s,
+            Err(e) => {
+                last_error = Some(e);
+                continue;
+            }
+        };
+        let base = derivation.model.values_at(t, &q, &rates);
+        let mut motion = base.clone();
+        let mut free = base;
+        for (i, (a, r)) in solution.accelerations.iter().zip(&random).enumerate() {
+            motion.set(problem.coordinate_symbol(i, 2), *a);
+            free.set(problem.coordinate_symbol(i, 2), *r);
+        }
+        for (symbol, value) in reactions_at(full, &motion) {
+            motion.set(symbol, value);
+        }
+        samples.push(Sample {
+            t,
+            q,
+            rates,
+            motion,
+            free,
+        });
+    }
+    match (samples.is_empty(), last_error) {
+        (true, Some(e)) => Err(Error::Solve(e)),
+        _ => Ok(samples),
+    }
+}
+
+/// Every reaction unknown of `full` at the state of `values` (with its q'' set): its
+/// linear system solved there. Empty when the system is not square or is singular.
+fn reactions_at(full: &Derivation, values: &Values) -> Vec<(Symbol, f64)> {
+    let system = &full.system;
+    let n = system.unknowns.len();
+    if system.a.len() != n || system.b.len() != n {
+        return Vec::new();
+    }
+    let a = DMatrix::from_fn(n, n, |i, j| eval(&system.a[i][j], values));
+    let b = DVector::from_fn(n, |i, _| eval(&system.b[i], values));
+    let Some(x) = crate::numeric::linear::solve_linear(&a, &b) else {
+        return Vec::new();
+    };
+    system
+        .unknowns
+        .iter()
+        .zip(x.iter())
+        .filter(|(s, _)| matches!(s, Symbol::Unknown(_)))
+        .map(|(s, v)| (s.clone(), *v))
+        .collect()
+}
