@@ -40,6 +40,7 @@ pub mod cli;
 pub mod cmd;
 pub mod equations;
 mod error;
+pub mod input;
 pub mod mechanics;
 pub mod numeric;
 pub mod output;

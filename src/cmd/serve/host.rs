@@ -84,7 +84,9 @@ impl Served {
         }
         let bound = self.address.ip();
         match name.parse::<IpAddr>() {
-            Ok(ip) => ip == bound || bound.is_unspecified() || (bound.is_loopback() && ip.is_loopback()),
+            Ok(ip) => {
+                ip == bound || bound.is_unspecified() || (bound.is_loopback() && ip.is_loopback())
+            }
             Err(_) => name == "localhost" && (bound.is_loopback() || bound.is_unspecified()),
         }
     }
@@ -129,7 +131,12 @@ mod tests {
     #[test]
     fn loopback_accepts_its_own_names_and_nothing_else() {
         let s = served("127.0.0.1", "127.0.0.1:7070");
-        for good in ["127.0.0.1:7070", "localhost:7070", "LOCALHOST:7070", "[::1]:7070"] {
+        for good in [
+            "127.0.0.1:7070",
+            "localhost:7070",
+            "LOCALHOST:7070",
+            "[::1]:7070",
+        ] {
             assert!(s.accepts(good), "{good}");
         }
         for bad in [
