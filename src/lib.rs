@@ -41,6 +41,7 @@ pub mod cmd;
 pub mod equations;
 mod error;
 pub mod grade;
+pub mod input;
 pub mod mechanics;
 pub mod numeric;
 pub mod output;

@@ -6,11 +6,14 @@ mod escaping;
 mod generate;
 mod harness;
 mod hostile;
+mod injection;
 mod limits;
 mod mutate;
 mod output;
 mod physics;
 mod properties;
+mod serve;
+mod targets;
 
 use std::path::PathBuf;
 

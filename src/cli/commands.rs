@@ -36,6 +36,15 @@ pub struct CheckArgs {
     /// Override constants: NAME=VALUE,... (the checks that depend on values run again).
     #[arg(long, value_name = "NAME=VALUE,...")]
     pub set: Vec<String>,
+    /// Refuse problems with more bodies than this, as `solve` does.
+    #[arg(long, value_name = "N", default_value_t = crate::cli::MAX_BODIES)]
+    pub max_bodies: usize,
+    /// Refuse problems with more coordinates than this, as `solve` does.
+    #[arg(long, value_name = "N", default_value_t = crate::cli::MAX_COORDINATES)]
+    pub max_coordinates: usize,
+    /// Refuse a check whose symbolic work passes this many million expression terms.
+    #[arg(long, value_name = "MILLIONS", default_value_t = crate::symbolic::budget::DEFAULT_LIMIT / 1_000_000)]
+    pub max_work: u64,
 }
 
 // `draw`, `solve` and `linearize`

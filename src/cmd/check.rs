@@ -8,11 +8,16 @@ use crate::Error;
 ///
 /// # Errors
 /// [`Error::Problem`] with every error found; [`Error::Io`] when the file cannot be read;
-/// [`Error::Usage`] for a malformed `--set`.
+/// [`Error::Usage`] for a malformed `--set`; [`Error::Problem`] naming the limit for a problem
+/// beyond `--max-bodies` or `--max-coordinates`.
 pub fn run(args: CheckArgs) -> Result<(), Error> {
     let overrides = crate::cli::parse_assignments(&args.set)?;
     let mut problem = problem::load_file(&args.problem)?;
     problem::apply_overrides(&mut problem, &overrides)?;
+    // The same limits as `solve`, before the model is built: a chain of thousands of links
+    // is refused at once rather than built for minutes.
+    super::check_size(&problem, args.max_bodies, args.max_coordinates)?;
+    crate::symbolic::budget::set_limit(args.max_work.saturating_mul(1_000_000));
     structure(&problem)?;
     println!("{}", summary(&problem));
     Ok(())

@@ -84,17 +84,33 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
     } else {
         None
     };
+    let mut planned: Vec<String> = Vec::new();
+    for drawing in &drawings {
+        let stem = crate::output::names::short_stem(&drawing.name);
+        planned.push(format!("{stem}.svg"));
+        if args.tikz {
+            planned.push(format!("{stem}.tex"));
+        }
+    }
+    if motion.is_some() {
+        planned.push("motion.svg".into());
+    }
+    // Nothing is written when one of the pictures would replace the problem file.
+    crate::output::refuse_input_in(&args.common.problem, &directory, |name| {
+        planned.iter().any(|p| p == name)
+    })?;
     std::fs::create_dir_all(&directory).map_err(|source| Error::Io {
         path: directory.clone(),
         source,
     })?;
     for drawing in &drawings {
-        let path = directory.join(format!("{}.svg", drawing.name));
+        let stem = crate::output::names::short_stem(&drawing.name);
+        let path = directory.join(format!("{stem}.svg"));
         // Names in words (`push_1`) with their subscripts, as the handout writes them.
         let svg = crate::render::word_scripts::subscripts_in_words(&drawing.svg(""));
         crate::output::write_output(Some(&path), svg.as_bytes())?;
         if args.tikz {
-            let path = directory.join(format!("{}.tex", drawing.name));
+            let path = directory.join(format!("{stem}.tex"));
             crate::output::write_output(Some(&path), drawing.tikz().as_bytes())?;
         }
     }

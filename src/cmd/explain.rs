@@ -49,6 +49,9 @@ pub fn explain_file(
     problem_path: &Path,
     output: Option<&Path>,
 ) -> Result<(), Error> {
+    if let Some(output) = output {
+        refuse_overwriting_input(problem_path, output)?;
+    }
     if !args.both {
         return explain_version(args, problem_path, output, args.student);
     }
@@ -59,6 +62,25 @@ pub fn explain_file(
     };
     explain_version(args, problem_path, Some(output), false)?;
     explain_version(args, problem_path, Some(&student_path(output)), true)
+}
+
+/// A usage error, before anything is written, when a file this explanation would write (the
+/// handout, the student's beside it, a plot `STEM-KIND.svg`) is the problem file.
+fn refuse_overwriting_input(problem_path: &Path, output: &Path) -> Result<(), Error> {
+    let student = student_path(output);
+    crate::output::refuse_input(problem_path, &[output, &student])?;
+    let Some(directory) = output.parent() else {
+        return Ok(());
+    };
+    let directory = if directory.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        directory
+    };
+    let plots = format!("{}-", file_stem(output));
+    crate::output::refuse_input_in(problem_path, directory, |name| {
+        name.starts_with(&plots) && name.ends_with(".svg")
+    })
 }
 
 /// Explains one problem into `output` (standard output when `None`); plots go beside it

@@ -95,7 +95,7 @@ pub fn load_with_overrides(common: &crate::cli::Common) -> Result<crate::problem
     let mut problem = crate::pipeline::load(&common.problem)?;
     let overrides = crate::cli::parse_assignments(&common.set)?;
     crate::problem::apply_overrides(&mut problem, &overrides)?;
-    check_size(&problem, common)?;
+    check_size(&problem, common.max_bodies, common.max_coordinates)?;
     // Every derivation of this command is counted against the limit (see `budget`).
     crate::symbolic::budget::set_limit(common.max_work.saturating_mul(1_000_000));
     Ok(problem)
@@ -110,7 +110,7 @@ pub fn refuse_overwriting(problem: &Path, output: Option<&Path>) -> Result<(), E
     let Some(output) = output else {
         return Ok(());
     };
-    if same_file(problem, output) {
+    if crate::output::inputs::same_file(problem, output) {
         return Err(Error::Usage(format!(
             "refusing to overwrite the problem file {} with the output: name another file with -o",
             output.display()
@@ -119,40 +119,29 @@ pub fn refuse_overwriting(problem: &Path, output: Option<&Path>) -> Result<(), E
     Ok(())
 }
 
-fn same_file(a: &Path, b: &Path) -> bool {
-    // An output that does not exist yet cannot be the problem.
-    let (Ok(ca), Ok(cb)) = (a.canonicalize(), b.canonicalize()) else {
-        return false;
-    };
-    if ca == cb {
-        return true;
-    }
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        if let (Ok(ma), Ok(mb)) = (std::fs::metadata(&ca), std::fs::metadata(&cb)) {
-            return ma.dev() == mb.dev() && ma.ino() == mb.ino();
-        }
-    }
-    false
-}
-
 /// An error naming the limit and the flag that raises it, for a problem beyond
 /// `--max-bodies` or `--max-coordinates`.
-fn check_size(problem: &crate::problem::Problem, common: &crate::cli::Common) -> Result<(), Error> {
+///
+/// # Errors
+/// [`Error::Problem`] naming each limit passed and the flag that raises it.
+pub fn check_size(
+    problem: &crate::problem::Problem,
+    max_bodies: usize,
+    max_coordinates: usize,
+) -> Result<(), Error> {
     let limits = [
         (
             "bodies",
             "bodies",
             problem.bodies.len(),
-            common.max_bodies,
+            max_bodies,
             "--max-bodies",
         ),
         (
             "joints",
             "coordinates",
             problem.coordinates.len(),
-            common.max_coordinates,
+            max_coordinates,
             "--max-coordinates",
         ),
     ];

@@ -88,6 +88,14 @@ pub fn run(args: VariantsArgs) -> Result<(), Error> {
         let path = path.to_path_buf();
         move |source| Error::Io { path, source }
     };
+    // Nothing is written when one of the files about to be written is the problem itself.
+    crate::output::refuse_input_in(&args.problem, &args.output, |name| {
+        name == "key.csv"
+            || variants.iter().any(|v| {
+                name.strip_prefix(v.stem.as_str())
+                    .is_some_and(|rest| rest.starts_with('.') || rest.starts_with('-'))
+            })
+    })?;
     std::fs::create_dir_all(&args.output).map_err(io(&args.output))?;
     let format: crate::render::Format = args.format.into();
     for v in &variants {
@@ -105,10 +113,12 @@ pub fn run(args: VariantsArgs) -> Result<(), Error> {
 /// The problem, validated, and its JSON as written.
 fn read(path: &Path) -> Result<(Problem, serde_json::Value), Error> {
     let problem = crate::pipeline::load(path)?;
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let text = crate::input::read_text_bounded(path, crate::input::MAX_PROBLEM_BYTES).map_err(
+        |source| Error::Io {
+            path: path.to_path_buf(),
+            source,
+        },
+    )?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let raw = serde_json::from_str(text)
         .map_err(|e| Error::Problem(ProblemErrors(vec![ProblemError::file(e.to_string())])))?;

@@ -66,13 +66,17 @@ fn name_joints(errors: &mut [ProblemError], value: &serde_json::Value) {
 /// Reads and validates the problem in the file at `path`.
 ///
 /// # Errors
-/// [`LoadError::Io`] when the file cannot be read; [`LoadError::Invalid`] when it is not
-/// UTF-8 text, not JSON, or not a valid problem.
+/// [`LoadError::Io`] when the file cannot be read, is not a regular file or is longer than
+/// [`crate::input::MAX_PROBLEM_BYTES`]; [`LoadError::Invalid`] when it is not UTF-8 text,
+/// not JSON, or not a valid problem.
 pub fn load_file(path: &Path) -> Result<Problem, LoadError> {
-    let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let bytes =
+        crate::input::read_bounded(path, crate::input::MAX_PROBLEM_BYTES).map_err(|source| {
+            LoadError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
+        })?;
     let text = String::from_utf8(bytes).map_err(|e| {
         let offset = e.utf8_error().valid_up_to();
         ProblemErrors(vec![ProblemError::file(format!(

@@ -39,6 +39,22 @@ const KEYS: [&str; 12] = [
 ];
 
 impl Reader {
+    /// Whether a question's `symbol` is math every format can set: it is written inside
+    /// `$…$` in every handout and names a column of key.csv. An error at `path` otherwise.
+    fn typesettable(&mut self, symbol: &str, path: &str) -> bool {
+        if crate::render::safe_math::checked(symbol).is_some() && !symbol.contains(['<', '>']) {
+            return true;
+        }
+        let shown: String = symbol.chars().take(40).collect();
+        self.diag.hint(
+            path,
+            format!("the symbol `{shown}` is not math that can be typeset"),
+            "write it as LaTeX math without dollars, from letters, digits, _ ^ { } and commands \
+             such as \\omega or \\dot{x}: e.g. \"F_{max}\"",
+        );
+        false
+    }
+
     /// Reads `find.questions`; `reactions` are the sites `find.reactions` requested.
     pub(super) fn questions(
         &mut self,
@@ -79,6 +95,7 @@ impl Reader {
         let symbol = fields
             .get("symbol")
             .and_then(|v| string(v, &key_path(path, "symbol"), &mut self.diag))
+            .filter(|symbol| self.typesettable(symbol, &key_path(path, "symbol")))
             .map(str::to_string);
         let asked: Vec<&str> = [
             "value",

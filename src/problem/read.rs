@@ -17,6 +17,10 @@ use super::validate;
 use crate::symbolic::Expr;
 use serde_json::Value;
 
+/// The most constants a problem may declare: a course's problems use a few dozen, a chain
+/// of a thousand links with full inertia ten thousand; each is a line of the handout.
+pub const MAX_CONSTANTS: usize = 100_000;
+
 const TOP_KEYS: [&str; 17] = [
     "format",
     "title",
@@ -81,6 +85,22 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
     let statement = optional_string(top, "statement", "", &mut r.diag);
     r.dimension = required(top, "dimension", "", &mut r.diag).and_then(|v| r.read_dimension(v));
 
+    // Too many constants: that one error, before anything is read.
+    if let Some(count) = top
+        .get("constants")
+        .and_then(Value::as_object)
+        .map(serde_json::Map::len)
+        .filter(|&count| count > MAX_CONSTANTS)
+    {
+        r.diag.hint(
+            "constants",
+            format!(
+                "the problem declares {count} constants, more than the limit of {MAX_CONSTANTS}"
+            ),
+            "a problem needs a few dozen constants: give repeated values one name and use it",
+        );
+        return Err(r.diag.errors);
+    }
     let constants = top
         .get("constants")
         .map(|v| r.constants(v))

@@ -136,7 +136,7 @@ pub fn render(
         .filter(|path| path.is_file());
     let (source, shown_name) = match &override_path {
         Some(path) => {
-            let source = std::fs::read_to_string(path)
+            let source = crate::input::read_text_bounded(path, crate::input::MAX_TEMPLATE_BYTES)
                 .map_err(|e| error(format!("cannot read {}: {e}", path.display())))?;
             (source, path.display().to_string())
         }

@@ -229,6 +229,16 @@ pub fn checked(source: &str) -> Option<String> {
                 depth = depth.checked_sub(1)?;
                 out.push(c);
             }
+            // A script needs its argument: `a^'`, `a^^b`, `a_}` and a dangling `a^` stop TeX.
+            '^' | '_' if chars.peek().is_none_or(|n| "'^_}".contains(*n)) => return None,
+            // `<` before a letter or `/`, `!`, `?` reads as an HTML tag in a Markdown
+            // renderer: as a relation it is written with a space (`a < b`).
+            '<' if chars
+                .peek()
+                .is_some_and(|n| n.is_ascii_alphabetic() || "/!?".contains(*n)) =>
+            {
+                return None
+            }
             _ if c.is_ascii_alphanumeric() || PLAIN.contains(c) => out.push(c),
             '\t' | '\n' | '\r' => out.push(' '),
             _ => {
@@ -302,6 +312,13 @@ mod tests {
             "\\$",
             "\\left( a",
             "\\text{x}",
+            "a^'",
+            "a^^b",
+            "a_}",
+            "x^",
+            "<img src=x onerror=alert(1)>",
+            "a<b",
+            "</script>",
             "😀",
             "",
             "  ",

@@ -1,5 +1,7 @@
 //! Units as mathematics: `m/s^2` is set as \(\mathrm{m/s^{2}}\), `kg*m^2` as
-//! \(\mathrm{kg\,m^{2}}\). A unit with anything else in it is set as escaped text.
+//! \(\mathrm{kg\,m^{2}}\), `μm`, `Ω` and `°` with their LaTeX symbols (\(\mu\),
+//! \(\Omega\), \(^{\circ}\)), so that pdflatex needs no Unicode. A unit with anything
+//! else in it is set as text of its ASCII letters, digits and `/ . -` only.
 
 /// `unit` (the problem's text) in LaTeX math; empty for an empty unit.
 pub fn unit_tex(unit: &str) -> String {
@@ -7,11 +9,12 @@ pub fn unit_tex(unit: &str) -> String {
     if unit.is_empty() {
         return String::new();
     }
-    let allowed = |c: char| c.is_ascii_alphanumeric() || "/*^.-() ·".contains(c);
+    let allowed =
+        |c: char| c.is_ascii_alphanumeric() || "/*^.-() ·".contains(c) || symbol(c).is_some();
     if !unit.chars().all(allowed) {
         let escaped: String = unit
             .chars()
-            .filter(|c| c.is_alphanumeric() || " /.-".contains(*c))
+            .filter(|c| c.is_ascii_alphanumeric() || " /.-".contains(*c))
             .collect();
         return format!("\\text{{{escaped}}}");
     }
@@ -44,11 +47,30 @@ pub fn unit_tex(unit: &str) -> String {
                     out.push_str("\\,");
                 }
             }
-            _ => out.push(c),
+            _ => match symbol(c) {
+                Some(command) => {
+                    out.push_str(command);
+                    if chars.get(i + 1).is_some_and(char::is_ascii_alphabetic) {
+                        out.push(' ');
+                    }
+                }
+                None => out.push(c),
+            },
         }
         i += 1;
     }
     format!("\\mathrm{{{}}}", out.trim_end_matches("\\,"))
+}
+
+/// The LaTeX of a unit's letter or sign that is not ASCII: micro (Greek mu or the micro
+/// sign), ohm (Greek Omega or the ohm sign) and the degree.
+fn symbol(c: char) -> Option<&'static str> {
+    match c {
+        'μ' | 'µ' => Some("\\mu"),
+        'Ω' | 'Ω' => Some("\\Omega"),
+        '°' => Some("^{\\circ}"),
+        _ => None,
+    }
 }
 
 #[cfg(test)]
@@ -70,5 +92,15 @@ mod tests {
     fn anything_else_is_text_with_the_markup_taken_out() {
         assert_eq!(unit_tex("\\input{x}"), "\\text{inputx}");
         assert_eq!(unit_tex("m$"), "\\text{m}");
+        assert_eq!(unit_tex("Жm{"), "\\text{m}");
+    }
+
+    #[test]
+    fn micro_ohm_and_degree_are_latex_symbols() {
+        assert_eq!(unit_tex("μm"), "\\mathrm{\\mu m}");
+        assert_eq!(unit_tex("µs"), "\\mathrm{\\mu s}");
+        assert_eq!(unit_tex("kΩ"), "\\mathrm{k\\Omega}");
+        assert_eq!(unit_tex("°/s"), "\\mathrm{^{\\circ}/s}");
+        assert!(unit_tex("μm").is_ascii());
     }
 }

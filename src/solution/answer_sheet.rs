@@ -214,8 +214,15 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
     columns
 }
 
-/// A CSV cell: quoted when it holds a comma, a quote or a line break (RFC 4180).
+/// A CSV cell: quoted when it holds a comma, a quote or a line break (RFC 4180); a text
+/// that a spreadsheet would take for a formula (beginning with `=`, `+`, `-`, `@`, a tab or
+/// a carriage return, and not a number) begins with `'`, as spreadsheets expect.
 pub fn csv_cell(text: &str) -> String {
+    let formula =
+        text.starts_with(['=', '+', '-', '@', '\t', '\r']) && text.parse::<f64>().is_err();
+    if formula {
+        return csv_cell(&format!("'{text}"));
+    }
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {

@@ -103,9 +103,10 @@ fn too_many_bodies_are_refused_naming_the_flag() {
     let dir = scratch("too-many-bodies");
     let big = chain(&dir, 31);
     let big = big.to_str().expect("UTF-8 path");
-    // check only validates, so it accepts the problem.
-    assert!(succeeds(&["check", big]).contains("31 bodies, 31 joints, 31 coordinates"));
-    for command in ["solve", "simulate", "explain"] {
+    // check applies the same limits, and the same flag raises them.
+    assert!(succeeds(&["check", big, "--max-bodies", "31"])
+        .contains("31 bodies, 31 joints, 31 coordinates"));
+    for command in ["check", "solve", "simulate", "explain"] {
         let stderr = refused(&[command, big]);
         assert!(
             stderr.contains("bodies: the problem has 31 bodies, more than the limit of 30"),
