@@ -18,8 +18,9 @@ use crate::symbolic::Expr;
 use serde_json::Value;
 
 /// The most constants a problem may declare: a course's problems use a few dozen, a chain
-/// of a thousand links with full inertia ten thousand; each is a line of the handout.
-pub const MAX_CONSTANTS: usize = 100_000;
+/// of a thousand links with full inertia ten thousand; each is a line of the handout, and
+/// reading 20,000 takes about a second.
+pub const MAX_CONSTANTS: usize = 20_000;
 
 const TOP_KEYS: [&str; 17] = [
     "format",

@@ -257,7 +257,7 @@ fn problems_that_are_not_regular_files_or_too_large_are_refused_at_once() {
     assert_eq!(output.status.code(), Some(1));
     let message = stderr(&output);
     assert!(
-        message.contains("200001 constants, more than the limit"),
+        message.contains("200001 constants, more than the limit of 20000"),
         "{message:.500}"
     );
     assert!(message.lines().count() < 5, "one error: {message:.500}");
@@ -282,11 +282,30 @@ fn check_of_a_chain_of_three_thousand_rods_is_refused_within_ten_seconds() {
     let (output, took) = run_bounded(&["check".as_ref(), chain.as_os_str()]);
     assert!(took < Duration::from_secs(10), "{took:?}");
     assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    // Its 30,001 constants are refused first, before any body is read.
     let message = stderr(&output);
     assert!(
-        message.contains("3000 bodies, more than the limit of 30"),
+        message.contains("30001 constants, more than the limit of 20000"),
         "{message:.500}"
     );
-    assert!(message.contains("--max-bodies 3000"), "{message:.500}");
+    assert!(message.lines().count() < 5, "one error: {message:.500}");
+    // A thousand rods (10,001 constants): the bodies are over `--max-bodies`, as for `solve`.
+    let written = Command::new("python3")
+        .arg(&script)
+        .args(["write", "revolute", "1000"])
+        .arg(&chain)
+        .status();
+    assert!(
+        written.is_ok_and(|s| s.success()),
+        "tools/bench/chains.py writes the chain"
+    );
+    let (output, took) = run_bounded(&["check".as_ref(), chain.as_os_str()]);
+    assert!(took < Duration::from_secs(10), "{took:?}");
+    let message = stderr(&output);
+    assert!(
+        message.contains("1000 bodies, more than the limit of 30"),
+        "{message:.500}"
+    );
+    assert!(message.contains("--max-bodies 1000"), "{message:.500}");
     let _ = std::fs::remove_dir_all(&dir);
 }
