@@ -110,7 +110,9 @@ fn one(
 ) -> Result<Option<String>, String> {
     let question = &reference.problem.questions[i];
     match &question.kind {
-        QuestionKind::Value { .. } | QuestionKind::Drive { .. } => {
+        QuestionKind::Value { .. }
+        | QuestionKind::Drive { .. }
+        | QuestionKind::Impending { .. } => {
             let given = number(value).ok_or("expected a number")?;
             let expected = answer.values.first().map_or(f64::NAN, |(_, x)| *x);
             Ok(scalar(given, expected))
@@ -130,7 +132,38 @@ fn one(
             Ok((!wrong.is_empty()).then(|| wrong.join("; ")))
         }
         QuestionKind::Reaction { site } => reaction(reference, *site, answer, value),
+        QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => {
+            yes_or_no(&question.kind, answer, value)
+        }
     }
+}
+
+/// A yes/no question of statics: `true`/`false` (or "yes"/"no") against the decision, or
+/// the deciding number (the ratio |F|/(μ|N|), the normal force) within 0.5 %.
+fn yes_or_no(
+    kind: &QuestionKind,
+    answer: &Answer,
+    value: &Value,
+) -> Result<Option<String>, String> {
+    let deciding = answer.values.first().map_or(f64::NAN, |(_, x)| *x);
+    if let Some(given) = number(value) {
+        return Ok(scalar(given, deciding));
+    }
+    let given = match value {
+        Value::Bool(b) => *b,
+        Value::String(s) if s.eq_ignore_ascii_case("yes") => true,
+        Value::String(s) if s.eq_ignore_ascii_case("no") => false,
+        _ => return Err("expected yes or no (true or false), or the deciding number".into()),
+    };
+    let expected = match kind {
+        // As `answer` decides: slip where friction would need more than μ|N|, tipping where
+        // the normal force would have to pull.
+        QuestionKind::Tips { .. } => deciding < 0.0,
+        _ => deciding > 1.0,
+    };
+    let word = |b: bool| if b { "yes" } else { "no" };
+    Ok((given != expected)
+        .then(|| format!("{} where {} was expected", word(given), word(expected))))
 }
 
 /// A reaction's components, force then moment, in the frame the answer gives them in.

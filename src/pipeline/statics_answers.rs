@@ -118,6 +118,7 @@ pub fn answer(statics: &Statics, problem: &Problem, question: &Question) -> Resu
         rates,
         simulated: false,
         residual: None,
+        frame: None,
     })
 }
 
