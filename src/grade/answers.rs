@@ -223,7 +223,10 @@ fn reaction(
         );
     };
     let model = &reference.derivation.model;
-    let home = model.sites[site].parent;
+    // The frame `answer` gives the components in: the question's `in`, else the site's.
+    let home = (answer.frame.as_deref())
+        .and_then(|name| frame_id(reference, name))
+        .unwrap_or(model.sites[site].parent);
     let frame_name = match map.get("frame") {
         None => model.frames.name(home).to_string(),
         Some(Value::String(s)) => s.clone(),
