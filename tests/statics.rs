@@ -233,7 +233,7 @@ fn a_tall_block_tips_at_m_g_b_over_2h_before_it_slides_at_mu_m_g() {
     let slide = mu * m * G;
     assert!(tip < slide, "the case tips first");
     for method in METHODS {
-        let a = answers("statics-tall-block", method);
+        let a = answers("validation/statics-tall-block", method);
         assert_eq!(a[0]["value"], false, "no slip at P = 10 N");
         assert_close(num(&a[0]["ratio"]), p / (mu * m * G), 1e-9, 1.0, "ratio");
         // Moments about the front edge: N_back b = m g b/2 − P h.
@@ -248,7 +248,7 @@ fn a_tall_block_tips_at_m_g_b_over_2h_before_it_slides_at_mu_m_g() {
         assert_close(num(&a[2]["value"]), slide, 1e-7, 1.0, "slide");
         assert_close(num(&a[3]["value"]), tip, 1e-7, 1.0, "tip");
     }
-    let handout = crate::support::explain("statics-tall-block", &[]);
+    let handout = crate::support::explain("validation/statics-tall-block", &[]);
     assert!(
         handout.contains(
             "tipping at back (P = 19.62 N) impends first, before slip at front (P = 39.24 N)"
