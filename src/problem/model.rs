@@ -454,6 +454,18 @@ impl Problem {
         }
     }
 
+    /// Whether reaction site `site` has Coulomb friction (a rough slider, closure or contact).
+    pub fn site_is_rough(&self, site: usize) -> bool {
+        let (j, c) = (self.joints.len(), self.closures.len());
+        if site < j {
+            self.joints[site].friction.is_some()
+        } else if site < j + c {
+            self.closures[site - j].friction.is_some()
+        } else {
+            self.constraints[site - j - c].friction.is_some()
+        }
+    }
+
     /// Whether the problem has closures, constraints or prescribed coordinates.
     pub fn is_constrained(&self) -> bool {
         !self.closures.is_empty()

@@ -39,7 +39,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 view.note = "The components not listed are zero.".into();
             }
             if question.frame.is_none() {
-                if let Some(sense) = sense_note(question, &shown) {
+                if let Some(sense) = sense_note(problem, question, &shown) {
                     view.note = [view.note.as_str(), sense.as_str()]
                         .join(" ")
                         .trim()
@@ -287,9 +287,18 @@ fn drive_tex(problem: &Problem, i: usize) -> String {
 
 /// Whether each reaction component came out as the free bodies draw it: an unknown is
 /// drawn along its positive unit vector, so a positive component acts as drawn and a
-/// negative one the other way (a push where the arrow pulls). `None` for other questions.
-fn sense_note(question: &Question, shown: &[&(Quantity, f64)]) -> Option<String> {
-    if !matches!(question.kind, QuestionKind::Reaction { .. }) {
+/// negative one the other way (a push where the arrow pulls). `None` for other questions,
+/// and for a rough site, whose friction the free bodies draw against the slip where it
+/// slides (a known force, not an unknown along its positive sense).
+fn sense_note(
+    problem: &Problem,
+    question: &Question,
+    shown: &[&(Quantity, f64)],
+) -> Option<String> {
+    let QuestionKind::Reaction { site } = question.kind else {
+        return None;
+    };
+    if problem.site_is_rough(site) {
         return None;
     }
     let parts: Vec<String> = shown
