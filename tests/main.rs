@@ -27,6 +27,7 @@ mod matrix_pattern;
 mod methods;
 mod pipeline;
 mod planner;
+mod questions;
 mod recursive;
 mod render;
 mod resal;

@@ -61,6 +61,23 @@ pub struct Answer {
     /// A steady motion: the largest |q''| of the `zero` coordinates left, and the
     /// iterations taken.
     pub residual: Option<(f64, usize)>,
+    /// A `period` question: the oscillation found.
+    pub period: Option<super::period::Period>,
+}
+
+/// What answering one question may draw on: the answers of the steady motions (for
+/// `about`) and the linearization (for `period`).
+#[derive(Clone, Copy, Default)]
+pub struct Context<'a> {
+    /// The answers found so far, by question index.
+    pub earlier: &'a [Option<Answer>],
+    /// The linearization about a state; without it a `period` cannot be answered.
+    pub linearize: Option<&'a super::period::Linearize<'a>>,
+}
+
+/// Whether the two sides of a `show` agree: to 1e-6 of the larger, or both below 1e-9.
+pub fn holds(lhs: f64, rhs: f64) -> bool {
+    (lhs - rhs).abs() <= 1e-6 * lhs.abs().max(rhs.abs()).max(1e-3)
 }
 
 /// Answers every question of `problem` with `system`, in order.
@@ -68,11 +85,35 @@ pub struct Answer {
 /// # Errors
 /// The first question that cannot be answered, with its JSON path and a hint.
 pub fn answer_all(problem: &Problem, system: &dyn System) -> Result<Vec<Answer>, ProblemError> {
-    problem
-        .questions
-        .iter()
-        .map(|q| answer(problem, system, q))
-        .collect()
+    answer_all_with(problem, system, None)
+}
+
+/// As [`answer_all`], with the linearization that `period` questions need.
+///
+/// # Errors
+/// As for [`answer_all`].
+pub fn answer_all_with(
+    problem: &Problem,
+    system: &dyn System,
+    linearize: Option<&super::period::Linearize>,
+) -> Result<Vec<Answer>, ProblemError> {
+    // The questions without `about` first: those with it are asked at a steady motion
+    // that another question finds, before or after them.
+    let mut answers: Vec<Option<Answer>> = vec![None; problem.questions.len()];
+    for pass in [false, true] {
+        for (i, q) in problem.questions.iter().enumerate() {
+            if q.about.is_some() != pass {
+                continue;
+            }
+            let context = Context {
+                earlier: &answers,
+                linearize,
+            };
+            let found = answer_in(problem, system, q, context)?;
+            answers[i] = Some(found);
+        }
+    }
+    Ok(answers.into_iter().flatten().collect())
 }
 
 fn failure(question: &Question, message: String, hint: &str) -> ProblemError {
@@ -94,6 +135,20 @@ pub fn answer(
     system: &dyn System,
     question: &Question,
 ) -> Result<Answer, ProblemError> {
+    answer_in(problem, system, question, Context::default())
+}
+
+/// Answers one question with what it may draw on (see [`Context`]).
+///
+/// # Errors
+/// As for [`answer`]; also a `period` without the linearization, about an unstable state
+/// or one where nothing oscillates.
+pub fn answer_in(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    context: Context,
+) -> Result<Answer, ProblemError> {
     let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let solve_failed = |e: super::SolveError| {
@@ -103,11 +158,23 @@ pub fn answer(
             "ask at another state, or check the problem's initial state",
         )
     };
-    let t = match question.at.switch {
-        Some(site) => first_switch(problem, system, question, site, &q, &rates)?,
-        None => question.at.time.unwrap_or(0.0),
+    let t = match (question.about, question.at.switch) {
+        (Some(k), _) => {
+            let Some(Some(steady)) = context.earlier.get(k) else {
+                return Err(failure(
+                    question,
+                    format!("question {k} does not find a steady motion to ask about"),
+                    "`about` names a `steady` question of find.questions, by its index from 0",
+                ));
+            };
+            q.clone_from(&steady.q);
+            rates.clone_from(&steady.rates);
+            steady.time
+        }
+        (None, Some(site)) => first_switch(problem, system, question, site, &q, &rates)?,
+        (None, None) => question.at.time.unwrap_or(0.0),
     };
-    let simulated = question.at.state.is_none() && t > 0.0;
+    let simulated = question.about.is_none() && question.at.state.is_none() && t > 0.0;
     if let Some(state) = &question.at.state {
         for (entry, value) in state {
             let target = if entry.order == 0 { &mut q } else { &mut rates };
@@ -150,6 +217,7 @@ pub fn answer(
         .map_err(solve_failed)?;
     let evaluation = system.evaluate(t, &q, &rates).map_err(solve_failed)?;
     let names = system.coordinate_names();
+    let mut period = None;
     let values = match &question.kind {
         QuestionKind::Value { expression, text } => {
             let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
@@ -221,6 +289,30 @@ pub fn answer(
                 }
             })
             .collect(),
+        QuestionKind::Period { coordinate } => {
+            let coordinate = coordinate.map(|i| names[i].as_str());
+            let found =
+                super::period::asked(question, context.linearize, (t, &q, &rates), coordinate)?;
+            let value = found.period;
+            period = Some(found);
+            vec![(Quantity::Named("T".into()), value)]
+        }
+        QuestionKind::Show { lhs, rhs, text } => {
+            let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
+            let (l, r) = (eval(lhs, &v), eval(rhs, &v));
+            if !(l.is_finite() && r.is_finite()) {
+                return Err(failure(
+                    question,
+                    format!("`{text}` is not finite at this state"),
+                    "ask at a state where both sides are defined",
+                ));
+            }
+            let (left, right) = text.split_once('=').unwrap_or((text, ""));
+            vec![
+                (Quantity::Named(left.trim().into()), l),
+                (Quantity::Named(right.trim().into()), r),
+            ]
+        }
     };
     Ok(Answer {
         values,
@@ -229,6 +321,7 @@ pub fn answer(
         rates,
         simulated,
         residual,
+        period,
     })
 }
 
@@ -395,6 +488,8 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
             CoordinateKind::Angle => "N m".into(),
             CoordinateKind::Distance => "N".into(),
         },
+        QuestionKind::Period { .. } => "s".into(),
+        QuestionKind::Show { .. } => question.unit.clone().unwrap_or_default(),
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()

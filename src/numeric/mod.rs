@@ -14,6 +14,7 @@ pub use crate::symbolic::format;
 pub mod integrate;
 pub mod linear;
 pub mod linearize;
+pub mod period;
 pub mod recursive;
 pub mod reduce;
 pub mod simulate;

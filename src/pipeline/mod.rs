@@ -231,7 +231,19 @@ pub fn answers(
 ) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
     let derivation = derive(problem, method)?;
     let solver = Solver::fastest(problem, &derivation);
-    crate::numeric::answers::answer_all(problem, &solver)
+    let asks_period = (problem.questions.iter())
+        .any(|q| matches!(q.kind, crate::problem::QuestionKind::Period { .. }));
+    // Small motions are about the coordinates and their rates, whatever the speeds.
+    let in_rates = problem.without_speeds();
+    let linearizer = match asks_period {
+        true => Some(Linearizer::new(&derive(&in_rates, method)?)),
+        false => None,
+    };
+    let linearize = |t: f64, q: &[f64], rates: &[f64]| match &linearizer {
+        Some(l) => l.at(&in_rates, t, q, rates).map_err(|e| e.to_string()),
+        None => Err("no linearization".to_string()),
+    };
+    crate::numeric::answers::answer_all_with(problem, &solver, Some(&linearize))
         .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
 }
 

@@ -31,6 +31,7 @@ mod load;
 mod loads;
 pub mod model;
 mod names;
+mod question_kinds;
 mod questions;
 mod read;
 pub mod schema;

@@ -522,6 +522,13 @@ pub enum QuestionKind {
         unknowns: Vec<StateEntry>,
         zero: Vec<(Expr, String)>,
     },
+    /// The period of small oscillations about the question's state, from the
+    /// linearization; `coordinate` (by index) picks the mode it moves most, else the
+    /// slowest oscillation.
+    Period { coordinate: Option<usize> },
+    /// An identity `lhs = rhs` to derive from the equations of motion and check at the
+    /// question's state, with its text as written.
+    Show { lhs: Expr, rhs: Expr, text: String },
 }
 
 /// Where a question is asked.
@@ -551,4 +558,10 @@ pub struct Question {
     pub symbol: Option<String>,
     /// The JSON path, e.g. `find.questions[0]`.
     pub path: String,
+    /// `about`: the index of an earlier `steady` question whose state this one is asked
+    /// at (a period about a steady precession).
+    pub about: Option<usize>,
+    /// `item`: the number of the statement's item this question answers; `None` follows
+    /// the question before (the first: item 1, or its place when no question has one).
+    pub item: Option<u32>,
 }

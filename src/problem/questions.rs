@@ -10,7 +10,8 @@
 //! - `steady`: the values of some coordinates and rates (`unknowns`) that make the
 //!   expressions in `zero` vanish (default: every second derivative `q1''`), the rest of the
 //!   state held: a steady motion or an equilibrium; `zero` may add conditions such as a
-//!   spin held, `"phi' + psi'*cos(theta) - 150"`,
+//!   spin held, `"phi' + psi'*cos(theta) - 150"`;
+//! - `period` and `show` (see [`super::question_kinds`]),
 //!
 //! `at` a state (`state`, with `time`, default 0), or at a time reached by simulating from
 //! the initial state (`time` alone), or where a friction site first switches between
@@ -23,9 +24,13 @@ use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 8] = [
-    "text", "value", "reaction", "drive", "steady", "at", "unit", "symbol",
+const KEYS: [&str; 12] = [
+    "text", "value", "reaction", "drive", "steady", "period", "show", "at", "about", "item",
+    "unit", "symbol",
 ];
+
+/// The keys that say what a question asks for; a question has exactly one.
+const ASKED: [&str; 6] = ["value", "reaction", "drive", "steady", "period", "show"];
 
 impl Reader {
     /// Reads `find.questions`; `reactions` are the sites `find.reactions` requested.
@@ -41,7 +46,7 @@ impl Reader {
         let mut out = Vec::new();
         for (i, item) in items.iter().enumerate() {
             let path = index_path("find.questions", i);
-            if let Some(q) = self.question(item, &path, reactions, constraints) {
+            if let Some(q) = self.question(item, &path, (reactions, constraints), items) {
                 out.push(q);
             }
         }
@@ -52,8 +57,8 @@ impl Reader {
         &mut self,
         value: &Value,
         path: &str,
-        reactions: &[usize],
-        constraints: &[Value],
+        (reactions, constraints): (&[usize], &[Value]),
+        all: &[Value],
     ) -> Option<Question> {
         let fields = object(value, path, &mut self.diag)?;
         check_keys(fields, path, &KEYS, &mut self.diag);
@@ -69,7 +74,7 @@ impl Reader {
             .get("symbol")
             .and_then(|v| string(v, &key_path(path, "symbol"), &mut self.diag))
             .map(str::to_string);
-        let asked: Vec<&str> = ["value", "reaction", "drive", "steady"]
+        let asked: Vec<&str> = ASKED
             .into_iter()
             .filter(|k| fields.contains_key(*k))
             .collect();
@@ -82,13 +87,29 @@ impl Reader {
             self.diag.hint(
                 path,
                 message,
-                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed coordinate) or `steady`",
+                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed coordinate), `steady`, `period` or `show`",
             );
             return None;
         }
         let at = match fields.get("at") {
             Some(v) => self.question_at(v, &key_path(path, "at"), constraints)?,
             None => QuestionAt::default(),
+        };
+        let about = match fields.get("about") {
+            Some(_) if fields.contains_key("at") => {
+                self.diag.hint(
+                    &key_path(path, "about"),
+                    "`about` and `at` both say where the question is asked",
+                    "give `about` (an earlier steady question's state) or `at`, not both",
+                );
+                return None;
+            }
+            Some(v) => Some(self.about(v, &key_path(path, "about"), all)?),
+            None => None,
+        };
+        let item = match fields.get("item") {
+            Some(v) => Some(self.item(v, &key_path(path, "item"))?),
+            None => None,
         };
         let kind = match asked[0] {
             "value" => {
@@ -137,6 +158,8 @@ impl Reader {
                     coordinate: entry.coordinate,
                 }
             }
+            "period" => self.period(&fields["period"], &key_path(path, "period"))?,
+            "show" => self.show(&fields["show"], &key_path(path, "show"))?,
             _ => self.steady(&fields["steady"], &key_path(path, "steady"))?,
         };
         if matches!(kind, QuestionKind::Steady { .. })
@@ -157,6 +180,8 @@ impl Reader {
             unit,
             symbol,
             path: path.to_string(),
+            about,
+            item,
         })
     }
 
@@ -223,7 +248,7 @@ impl Reader {
     }
 
     /// `q1` or `q1'`, as a coordinate or its rate.
-    fn state_name(&mut self, name: &str, path: &str) -> Option<StateEntry> {
+    pub(super) fn state_name(&mut self, name: &str, path: &str) -> Option<StateEntry> {
         let trimmed = name.trim();
         let (base, order) = match trimmed.strip_suffix('\'') {
             Some(base) => (base, 1),
