@@ -148,7 +148,7 @@ fn a_period_about_an_unstable_state_is_refused_with_its_path() {
         "joints": [ { "name": "O", "type": "revolute", "parent": "N", "child": "bob",
                       "axis": "N.z", "child_at": "L*bob.y", "coordinates": ["theta"] } ],
         "find": { "questions": [ { "value": "theta''" },
-            { "period": {}, "at": { "state": { "theta": 3.141592653589793, "theta'": 0 } } } ] }
+            { "period": {}, "at": { "state": { "theta": PI, "theta'": 0 } } } ] }
     });
     let path = scratch("inverted", &p);
     let out = run(&["answer".as_ref(), path.as_os_str()]);

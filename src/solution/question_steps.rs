@@ -183,7 +183,8 @@ fn one_freedom(
     let (m0, k0) = (zeroed(m, &zero), zeroed(&k_full, &zero));
     let omega2 = simplify(&(&k0 / &m0));
     let value = eval(&omega2, &v);
-    if !((value - natural * natural).abs() <= 1e-6 * value.abs()) || k0.is_zero() {
+    let agrees = (value - natural * natural).abs() <= 1e-6 * value.abs();
+    if !agrees || k0.is_zero() {
         return None;
     }
     let qdd_tex = latex(&Expr::sym(qdd.clone()));
