@@ -40,7 +40,7 @@ fn top_precession_rates_are_the_roots_of_the_steady_quadratic() {
     let (a, b, c) = (i1 * theta.cos(), -i3 * spin, m * g * h);
     let root = (b * b - 4.0 * a * c).sqrt();
     let (slow, fast) = ((-b - root) / (2.0 * a), (-b + root) / (2.0 * a));
-    for (index, rate) in [(0, slow), (1, fast)] {
+    for (index, rate) in [(1, slow), (2, fast)] {
         let answer = &found[index];
         assert_eq!(answer["kind"], "steady");
         assert_eq!(answer["units"]["psi'"], "rad/s");
@@ -53,16 +53,24 @@ fn top_precession_rates_are_the_roots_of_the_steady_quadratic() {
         assert_eq!(answer["state"]["theta"].as_f64(), Some(theta));
         assert_eq!(answer["time"].as_f64(), Some(0.0));
     }
-    // The statement's "show that": at the slow rate (rounded to 6 digits) the right side
-    // Ω (I3 ω3 − I1 Ω cos θ) is the gravity moment m g h.
-    let shown = &found[2];
-    assert_eq!(shown["kind"], "value");
+    // The statement's "show that", at the slow steady precession found: both sides equal
+    // m g h there, and the handout derives it.
+    let shown = &found[0];
+    assert_eq!(shown["kind"], "show");
+    assert_eq!(shown["holds"], true);
     close(
-        shown["value"].as_f64().expect("value"),
+        shown["lhs"].as_f64().expect("lhs"),
         m * g * h,
-        1e-5,
+        1e-12,
         "m g h",
     );
+    close(
+        shown["rhs"].as_f64().expect("rhs"),
+        m * g * h,
+        1e-9,
+        "right side",
+    );
+    assert_eq!(shown["state"]["psi'"], found[1]["unknowns"]["psi'"]);
     // The reaction at the tip: the force components only (a spherical joint takes no
     // moment); its vertical component carries the weight, the top not rising.
     let tip = &found[3];
@@ -76,7 +84,7 @@ fn top_precession_rates_are_the_roots_of_the_steady_quadratic() {
         "weight",
     );
     // The horizontal one turns the mass centre on its circle: m h sin θ ψ'² inward.
-    let psi = 3.45313f64;
+    let psi = slow;
     close(
         tip["components"]["y"].as_f64().expect("y").abs(),
         m * h * theta.sin() * psi * psi,

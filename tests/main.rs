@@ -33,6 +33,7 @@ mod methods;
 mod names_render;
 mod pipeline;
 mod planner;
+mod questions;
 mod recursive;
 mod render;
 mod resal;

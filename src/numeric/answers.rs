@@ -62,6 +62,25 @@ pub struct Answer {
     /// The frame whose unit vectors a vector answer's components are along (a reaction's:
     /// its site's parent's, or the question's `in`); `None` for a scalar.
     pub frame: Option<String>,
+    /// A `period` question: the oscillation found.
+    pub period: Option<super::period::Period>,
+}
+
+/// What answering one question may draw on: the answers of the steady motions (for
+/// `about`) and the linearization (for `period`).
+#[derive(Clone, Copy, Default)]
+pub struct Context<'a> {
+    /// The answers found so far, by question index.
+    pub earlier: &'a [Option<Answer>],
+    /// The linearization about a state; without it a `period` cannot be answered.
+    pub linearize: Option<&'a super::period::Linearize<'a>>,
+    /// The rates just after the problem's impact, if it has one (see [`answer_all_after`]).
+    pub after: Option<&'a [f64]>,
+}
+
+/// Whether the two sides of a `show` agree: to 1e-6 of the larger, or both below 1e-9.
+pub fn holds(lhs: f64, rhs: f64) -> bool {
+    (lhs - rhs).abs() <= 1e-6 * lhs.abs().max(rhs.abs()).max(1e-3)
 }
 
 /// Answers every question of `problem` with `system`, in order.
@@ -69,7 +88,7 @@ pub struct Answer {
 /// # Errors
 /// The first question that cannot be answered, with its JSON path and a hint.
 pub fn answer_all(problem: &Problem, system: &dyn System) -> Result<Vec<Answer>, ProblemError> {
-    answer_all_after(problem, system, None)
+    answer_all_with(problem, system, None, None, Vec::new())
 }
 
 /// As [`answer_all`], for a problem with an impact whose rates just after it are `after`:
@@ -83,11 +102,41 @@ pub fn answer_all_after(
     system: &dyn System,
     after: Option<&[f64]>,
 ) -> Result<Vec<Answer>, ProblemError> {
-    problem
-        .questions
-        .iter()
-        .map(|q| answer_after(problem, system, q, after))
-        .collect()
+    answer_all_with(problem, system, None, after, Vec::new())
+}
+
+/// As [`answer_all`], with the linearization that `period` questions need, the rates just
+/// after an impact, and the answers `given` already (by question index: the questions of
+/// statics, answered at rest), which are kept as they are.
+///
+/// # Errors
+/// As for [`answer_all`].
+pub fn answer_all_with(
+    problem: &Problem,
+    system: &dyn System,
+    linearize: Option<&super::period::Linearize>,
+    after: Option<&[f64]>,
+    given: Vec<Option<Answer>>,
+) -> Result<Vec<Answer>, ProblemError> {
+    // The questions without `about` first: those with it are asked at a steady motion
+    // that another question finds, before or after them.
+    let mut answers = given;
+    answers.resize(problem.questions.len(), None);
+    for pass in [false, true] {
+        for (i, q) in problem.questions.iter().enumerate() {
+            if q.about.is_some() != pass || answers[i].is_some() {
+                continue;
+            }
+            let context = Context {
+                earlier: &answers,
+                linearize,
+                after,
+            };
+            let found = answer_in(problem, system, q, context)?;
+            answers[i] = Some(found);
+        }
+    }
+    Ok(answers.into_iter().flatten().collect())
 }
 
 fn failure(question: &Question, message: String, hint: &str) -> ProblemError {
@@ -109,7 +158,7 @@ pub fn answer(
     system: &dyn System,
     question: &Question,
 ) -> Result<Answer, ProblemError> {
-    answer_after(problem, system, question, None)
+    answer_in(problem, system, question, Context::default())
 }
 
 /// As [`answer`], with the rates just after the problem's impact, if any (see
@@ -123,12 +172,30 @@ pub fn answer_after(
     question: &Question,
     after: Option<&[f64]>,
 ) -> Result<Answer, ProblemError> {
+    let context = Context {
+        after,
+        ..Context::default()
+    };
+    answer_in(problem, system, question, context)
+}
+
+/// Answers one question with what it may draw on (see [`Context`]).
+///
+/// # Errors
+/// As for [`answer`]; also a `period` without the linearization, about an unstable state
+/// or one where nothing oscillates.
+pub fn answer_in(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    context: Context,
+) -> Result<Answer, ProblemError> {
     let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let at = &question.at;
     let from_after = at.after_impact
         || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));
-    match after {
+    match context.after {
         Some(after) if from_after => rates.copy_from_slice(after),
         None if at.after_impact => {
             return Err(failure(
@@ -146,11 +213,23 @@ pub fn answer_after(
             "ask at another state, or check the problem's initial state",
         )
     };
-    let t = match question.at.switch {
-        Some(site) => first_switch(problem, system, question, site, &q, &rates)?,
-        None => question.at.time.unwrap_or(0.0),
+    let t = match (question.about, question.at.switch) {
+        (Some(k), _) => {
+            let Some(Some(steady)) = context.earlier.get(k) else {
+                return Err(failure(
+                    question,
+                    format!("question {k} does not find a steady motion to ask about"),
+                    "`about` names a `steady` question of find.questions, by its index from 0",
+                ));
+            };
+            q.clone_from(&steady.q);
+            rates.clone_from(&steady.rates);
+            steady.time
+        }
+        (None, Some(site)) => first_switch(problem, system, question, site, &q, &rates)?,
+        (None, None) => question.at.time.unwrap_or(0.0),
     };
-    let simulated = question.at.state.is_none() && t > 0.0;
+    let simulated = question.about.is_none() && question.at.state.is_none() && t > 0.0;
     if let Some(state) = &question.at.state {
         for (entry, value) in state {
             let target = if entry.order == 0 { &mut q } else { &mut rates };
@@ -201,6 +280,7 @@ pub fn answer_after(
     let evaluation = system.evaluate(t, &q, &rates).map_err(solve_failed)?;
     let names = system.coordinate_names();
     let mut frame = None;
+    let mut period = None;
     let values = match &question.kind {
         QuestionKind::Value { expression, text } => {
             let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
@@ -297,6 +377,30 @@ pub fn answer_after(
         QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. } => {
             Vec::new()
         }
+        QuestionKind::Period { coordinate } => {
+            let coordinate = coordinate.map(|i| names[i].as_str());
+            let found =
+                super::period::asked(question, context.linearize, (t, &q, &rates), coordinate)?;
+            let value = found.period;
+            period = Some(found);
+            vec![(Quantity::Named("T".into()), value)]
+        }
+        QuestionKind::Show { lhs, rhs, text } => {
+            let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
+            let (l, r) = (eval(lhs, &v), eval(rhs, &v));
+            if !(l.is_finite() && r.is_finite()) {
+                return Err(failure(
+                    question,
+                    format!("`{text}` is not finite at this state"),
+                    "ask at a state where both sides are defined",
+                ));
+            }
+            let (left, right) = text.split_once('=').unwrap_or((text, ""));
+            vec![
+                (Quantity::Named(left.trim().into()), l),
+                (Quantity::Named(right.trim().into()), r),
+            ]
+        }
     };
     Ok(Answer {
         values,
@@ -306,6 +410,7 @@ pub fn answer_after(
         simulated,
         residual,
         frame,
+        period,
     })
 }
 
@@ -427,6 +532,8 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
             CoordinateKind::Angle => "N m".into(),
             CoordinateKind::Distance => "N".into(),
         },
+        QuestionKind::Period { .. } => "s".into(),
+        QuestionKind::Show { .. } => question.unit.clone().unwrap_or_default(),
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()

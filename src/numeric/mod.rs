@@ -17,6 +17,7 @@ pub mod integrate;
 pub mod linear;
 pub mod linearize;
 pub mod newton;
+pub mod period;
 pub mod recursive;
 pub mod reduce;
 pub mod simulate;

@@ -255,24 +255,37 @@ pub fn answers(
         Some(_) => Some(impact_at_start(problem, &derivation.model, &solver)?.after),
         None => None,
     };
-    let problem_error = |e| Error::Problem(crate::problem::ProblemErrors(vec![e]));
-    if !problem.questions.iter().any(|q| q.kind.is_static()) {
-        return crate::numeric::answers::answer_all_after(problem, &solver, after.as_deref())
-            .map_err(problem_error);
-    }
-    // The questions of statics are answered at rest, every friction site sticking.
-    // At rest the speeds are zero with the rates: the equations in the rates serve.
+    // At rest, and for small motions, the speeds are the rates: the equations in the
+    // rates serve.
     let in_rates = problem.without_speeds();
-    let statics = statics::Statics::new(&in_rates, method)?;
-    (problem.questions.iter())
-        .map(|question| match question.kind.is_static() {
-            true => statics_answers::answer(&statics, &in_rates, question),
-            false => {
-                crate::numeric::answers::answer_after(problem, &solver, question, after.as_deref())
-                    .map_err(problem_error)
+    // The questions of statics are answered at rest, every friction site sticking.
+    let mut given = vec![None; problem.questions.len()];
+    if problem.questions.iter().any(|q| q.kind.is_static()) {
+        let statics = statics::Statics::new(&in_rates, method)?;
+        for (i, question) in problem.questions.iter().enumerate() {
+            if question.kind.is_static() {
+                given[i] = Some(statics_answers::answer(&statics, &in_rates, question)?);
             }
-        })
-        .collect()
+        }
+    }
+    let asks_period = (problem.questions.iter())
+        .any(|q| matches!(q.kind, crate::problem::QuestionKind::Period { .. }));
+    let linearizer = match asks_period {
+        true => Some(Linearizer::new(&derive(&in_rates, method)?)),
+        false => None,
+    };
+    let linearize = |t: f64, q: &[f64], rates: &[f64]| match &linearizer {
+        Some(l) => l.at(&in_rates, t, q, rates).map_err(|e| e.to_string()),
+        None => Err("no linearization".to_string()),
+    };
+    crate::numeric::answers::answer_all_with(
+        problem,
+        &solver,
+        Some(&linearize),
+        after.as_deref(),
+        given,
+    )
+    .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
 }
 
 /// What is compiled from a derivation's plan, and from the plans made again for special

@@ -34,6 +34,7 @@ mod load;
 mod loads;
 pub mod model;
 mod names;
+mod question_kinds;
 mod questions;
 mod read;
 pub mod schema;

@@ -554,6 +554,13 @@ pub enum QuestionKind {
         tips: bool,
         guess: Option<f64>,
     },
+    /// The period of small oscillations about the question's state, from the
+    /// linearization; `coordinate` (by index) picks the mode it moves most, else the
+    /// slowest oscillation.
+    Period { coordinate: Option<usize> },
+    /// An identity `lhs = rhs` to derive from the equations of motion and check at the
+    /// question's state, with its text as written.
+    Show { lhs: Expr, rhs: Expr, text: String },
 }
 
 impl QuestionKind {
@@ -598,4 +605,10 @@ pub struct Question {
     pub frame: Option<BodyId>,
     /// The JSON path, e.g. `find.questions[0]`.
     pub path: String,
+    /// `about`: the index of an earlier `steady` question whose state this one is asked
+    /// at (a period about a steady precession).
+    pub about: Option<usize>,
+    /// `item`: the number of the statement's item this question answers; `None` follows
+    /// the question before (the first: item 1, or its place when no question has one).
+    pub item: Option<u32>,
 }

@@ -10,7 +10,8 @@
 //! - `steady`: the values of some coordinates and rates (`unknowns`) that make the
 //!   expressions in `zero` vanish (default: every second derivative `q1''`), the rest of the
 //!   state held: a steady motion or an equilibrium; `zero` may add conditions such as a
-//!   spin held, `"phi' + psi'*cos(theta) - 150"`,
+//!   spin held, `"phi' + psi'*cos(theta) - 150"`;
+//! - `period` and `show` (see [`super::question_kinds`]),
 //!
 //! `at` a state (`state`, with `time`, default 0), or at a time reached by simulating from
 //! the initial state (`time` alone), or where a friction site first switches between
@@ -23,19 +24,36 @@ use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 12] = [
+const KEYS: [&str; 16] = [
     "text",
     "value",
     "reaction",
     "drive",
     "steady",
+    "period",
+    "show",
     "at",
+    "about",
+    "item",
     "unit",
     "symbol",
     "slips",
     "tips",
     "impending",
     "in",
+];
+
+/// The keys that say what a question asks for; a question has exactly one.
+const ASKED: [&str; 9] = [
+    "value",
+    "reaction",
+    "drive",
+    "steady",
+    "period",
+    "show",
+    "slips",
+    "tips",
+    "impending",
 ];
 
 impl Reader {
@@ -68,7 +86,7 @@ impl Reader {
         let mut out = Vec::new();
         for (i, item) in items.iter().enumerate() {
             let path = index_path("find.questions", i);
-            if let Some(q) = self.question(item, &path, reactions, constraints) {
+            if let Some(q) = self.question(item, &path, (reactions, constraints), items) {
                 out.push(q);
             }
         }
@@ -79,8 +97,8 @@ impl Reader {
         &mut self,
         value: &Value,
         path: &str,
-        reactions: &[usize],
-        constraints: &[Value],
+        (reactions, constraints): (&[usize], &[Value]),
+        all: &[Value],
     ) -> Option<Question> {
         let fields = object(value, path, &mut self.diag)?;
         check_keys(fields, path, &KEYS, &mut self.diag);
@@ -97,18 +115,10 @@ impl Reader {
             .and_then(|v| string(v, &key_path(path, "symbol"), &mut self.diag))
             .filter(|symbol| self.typesettable(symbol, &key_path(path, "symbol")))
             .map(str::to_string);
-        let asked: Vec<&str> = [
-            "value",
-            "reaction",
-            "drive",
-            "steady",
-            "slips",
-            "tips",
-            "impending",
-        ]
-        .into_iter()
-        .filter(|k| fields.contains_key(*k))
-        .collect();
+        let asked: Vec<&str> = ASKED
+            .into_iter()
+            .filter(|k| fields.contains_key(*k))
+            .collect();
         if asked.len() != 1 {
             let message = if asked.is_empty() {
                 "the question asks for nothing".to_string()
@@ -118,13 +128,29 @@ impl Reader {
             self.diag.hint(
                 path,
                 message,
-                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed or held coordinate), `steady`, `slips`, `tips` or `impending`",
+                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed or held coordinate), `steady`, `period`, `show`, `slips`, `tips` or `impending`",
             );
             return None;
         }
         let at = match fields.get("at") {
             Some(v) => self.question_at(v, &key_path(path, "at"), constraints)?,
             None => QuestionAt::default(),
+        };
+        let about = match fields.get("about") {
+            Some(_) if fields.contains_key("at") => {
+                self.diag.hint(
+                    &key_path(path, "about"),
+                    "`about` and `at` both say where the question is asked",
+                    "give `about` (an earlier steady question's state) or `at`, not both",
+                );
+                return None;
+            }
+            Some(v) => Some(self.about(v, &key_path(path, "about"), all)?),
+            None => None,
+        };
+        let item = match fields.get("item") {
+            Some(v) => Some(self.item(v, &key_path(path, "item"))?),
+            None => None,
         };
         let kind = match asked[0] {
             "value" => {
@@ -174,6 +200,8 @@ impl Reader {
                 }
             }
             "steady" => self.steady(&fields["steady"], &key_path(path, "steady"))?,
+            "period" => self.period(&fields["period"], &key_path(path, "period"))?,
+            "show" => self.show(&fields["show"], &key_path(path, "show"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };
         let frame = match fields.get("in") {
@@ -199,6 +227,8 @@ impl Reader {
             symbol,
             frame,
             path: path.to_string(),
+            about,
+            item,
         })
     }
 
@@ -306,7 +336,7 @@ impl Reader {
     }
 
     /// `q1` or `q1'`, as a coordinate or its rate.
-    fn state_name(&mut self, name: &str, path: &str) -> Option<StateEntry> {
+    pub(super) fn state_name(&mut self, name: &str, path: &str) -> Option<StateEntry> {
         let trimmed = name.trim();
         let (base, order) = match trimmed.strip_suffix('\'') {
             Some(base) => (base, 1),

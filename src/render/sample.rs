@@ -94,6 +94,8 @@ pub fn sample() -> Solution {
             at_note: s("the initial state"),
             values_tex: vec![Math::from(s("\\ddot{q}_{1} = -12.0939\\ \\mathrm{rad}/\\mathrm{s}^{2}"))],
             note: String::new(),
+            label: s("1"),
+            steps: Vec::new(),
         }],
     }
 }

@@ -19,6 +19,22 @@ pub struct AnswerView {
     pub values_tex: Vec<Math>,
     /// A steady motion: the second derivatives left and the iterations (plain text).
     pub note: String,
+    /// The number of the statement's item the question answers (`2`), or empty where it
+    /// goes on the item of the question before.
+    pub label: String,
+    /// The working that leads to the answer: a derivation of a `show`, ω² = K/M of a
+    /// `period`; empty in the student's handout.
+    pub steps: Vec<AnswerStep>,
+}
+
+/// One step of an answer's working: a sentence, then a displayed equation (either may be
+/// empty).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct AnswerStep {
+    /// The sentence (the problem's markup, one line: `$…$` for inline math).
+    pub text: MarkupLine,
+    /// The equation displayed after it (LaTeX math).
+    pub math: Math,
 }
 
 /// Small motions about a state.

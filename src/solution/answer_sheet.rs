@@ -20,6 +20,8 @@ fn kind_name(question: &Question) -> &'static str {
         QuestionKind::Slips { .. } => "slips",
         QuestionKind::Tips { .. } => "tips",
         QuestionKind::Impending { .. } => "impending",
+        QuestionKind::Period { .. } => "period",
+        QuestionKind::Show { .. } => "show",
     }
 }
 
@@ -115,6 +117,25 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
         QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. } => {
             super::static_answers::record(problem, question, answer, &mut out);
         }
+        QuestionKind::Period { .. } => {
+            if let Some(found) = &answer.period {
+                out.insert("value".into(), number(found.period));
+                out.insert("unit".into(), "s".into());
+                out.insert("angular_frequency".into(), number(found.damped));
+                out.insert("natural_frequency".into(), number(found.natural));
+                out.insert("damping_ratio".into(), number(found.damping_ratio));
+            }
+        }
+        QuestionKind::Show { .. } => {
+            if let [(_, lhs), (_, rhs)] = answer.values[..] {
+                out.insert("holds".into(), answers::holds(lhs, rhs).into());
+                out.insert("lhs".into(), number(lhs));
+                out.insert("rhs".into(), number(rhs));
+                if let Some(unit) = &question.unit {
+                    out.insert("unit".into(), unit.as_str().into());
+                }
+            }
+        }
     }
     out.insert("state".into(), Value::Object(state(problem, answer)));
     out.insert("time".into(), number(answer.time));
@@ -196,7 +217,10 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
         let base = question.symbol.clone().unwrap_or_else(|| i.to_string());
         for (found, x) in reported(question, answer) {
             let column = match &question.kind {
-                QuestionKind::Value { .. } | QuestionKind::Drive { .. } => base.clone(),
+                QuestionKind::Value { .. }
+                | QuestionKind::Drive { .. }
+                | QuestionKind::Period { .. } => base.clone(),
+                QuestionKind::Show { .. } => format!("{base}.{found}"),
                 QuestionKind::Reaction { .. } => {
                     let at = answer.frame.as_deref().unwrap_or("N");
                     match reaction_part(found) {

@@ -13,12 +13,18 @@ use crate::symbolic::ComponentKind;
 
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
+    let labels = labels(problem);
     problem
         .questions
         .iter()
         .zip(answers)
-        .map(|(question, answer)| {
+        .zip(labels)
+        .map(|((question, answer), label)| {
             let mut view = blank_one(problem, question);
+            view.label = label;
+            if question.about.is_some() {
+                view.at_tex = Math::from(found_state_tex(problem, answer));
+            }
             if let Some(site) = question.at.switch {
                 view.at_tex = Math::from(time_tex(answer.time));
                 view.at_note = format!(
@@ -61,6 +67,9 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                     .map(|i| super::static_answers::note(problem, i, answers))
                     .unwrap_or_default();
             }
+            if let Some(words) = super::question_answers::note(problem, question, answer) {
+                view.note = words;
+            }
             if let Some((left, iterations)) = answer.residual {
                 let plural = if iterations == 1 { "" } else { "s" };
                 view.note = format!(
@@ -75,11 +84,49 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
 
 /// The questions without answers, for the student's handout.
 pub fn blank(problem: &Problem) -> Vec<AnswerView> {
-    problem
-        .questions
-        .iter()
-        .map(|q| blank_one(problem, q))
+    (problem.questions.iter())
+        .zip(labels(problem))
+        .map(|(q, label)| AnswerView {
+            label,
+            ..blank_one(problem, q)
+        })
         .collect()
+}
+
+/// Each question's number in the Answers: the statement's item it answers, written on the
+/// first question of each item and left empty on the others of the same item. Without any
+/// `item`, the questions are numbered in order.
+pub fn labels(problem: &Problem) -> Vec<String> {
+    let numbered = problem.questions.iter().any(|q| q.item.is_some());
+    let mut previous = None;
+    let mut out = Vec::new();
+    for (i, q) in problem.questions.iter().enumerate() {
+        let item = match numbered {
+            true => q.item.or(previous).unwrap_or(1),
+            false => i as u32 + 1,
+        };
+        out.push(match previous == Some(item) {
+            true => String::new(),
+            false => item.to_string(),
+        });
+        previous = Some(item);
+    }
+    out
+}
+
+/// The state a question `about` a steady motion is asked at: the time, then every
+/// coordinate and rate of the steady motion found.
+fn found_state_tex(problem: &Problem, answer: &Answer) -> String {
+    let mut parts = vec![time_tex(answer.time)];
+    for i in 0..problem.coordinates.len() {
+        for (order, x) in [(0, answer.q[i]), (1, answer.rates[i])] {
+            let symbol = latex(&problem.coordinate_expr(i, order));
+            let unit = coordinate_unit(problem, i, order);
+            let x = if x.abs() < ROUND_OFF { 0.0 } else { x };
+            parts.push(format!("{symbol} = {}{}", number_tex(x), unit_tex(&unit)));
+        }
+    }
+    parts.join(",\\ ")
 }
 
 fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
@@ -95,6 +142,8 @@ fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
         at_note,
         values_tex: Vec::new(),
         note: String::new(),
+        label: String::new(),
+        steps: Vec::new(),
     }
 }
 
@@ -110,6 +159,9 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
             drive_tex(problem, *coordinate),
             latex(&problem.coordinate_expr(*coordinate, 0))
         ),
+        QuestionKind::Period { .. } | QuestionKind::Show { .. } => {
+            super::question_answers::asked(problem, question)
+        }
         QuestionKind::Steady { unknowns, zero } => {
             let unknowns: Vec<String> = unknowns
                 .iter()
@@ -141,6 +193,12 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
     if let Some(site) = switch {
         // The instant is what the student finds: the blank handout names it `t`.
         return ("t".into(), switch_note(problem, *site));
+    }
+    if let Some(k) = question.about {
+        return (
+            time_tex(0.0),
+            super::question_answers::about_note(problem, k),
+        );
     }
     let t = time.unwrap_or(0.0);
     let time_tex = time_tex(t);
@@ -174,7 +232,7 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
 }
 
 /// `t = 1.2\ \mathrm{s}`.
-fn time_tex(t: f64) -> String {
+pub(super) fn time_tex(t: f64) -> String {
     format!("t = {}\\ \\mathrm{{s}}", fixed(t))
 }
 
@@ -186,7 +244,7 @@ fn switch_note(problem: &Problem, site: usize) -> String {
     )
 }
 
-fn number_tex(x: f64) -> String {
+pub(super) fn number_tex(x: f64) -> String {
     let text = fixed(x);
     match text.split_once('e') {
         Some((mantissa, exponent)) => format!(
@@ -198,7 +256,7 @@ fn number_tex(x: f64) -> String {
 }
 
 /// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
-fn unit_tex(unit: &str) -> String {
+pub(super) fn unit_tex(unit: &str) -> String {
     match crate::render::units::unit_tex(unit) {
         tex if tex.is_empty() => tex,
         tex => format!("\\ {tex}"),
@@ -247,6 +305,11 @@ fn value_tex(
             )
         }
         QuestionKind::Drive { coordinate } => drive_tex(problem, *coordinate),
+        QuestionKind::Period { .. } => "T".into(),
+        QuestionKind::Show { .. } => match found {
+            Quantity::Named(text) => super::question_answers::side_tex(question, text),
+            Quantity::Reaction(_) => String::new(),
+        },
         QuestionKind::Steady { unknowns, .. } => {
             let entry = unknowns
                 .iter()

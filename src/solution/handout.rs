@@ -28,15 +28,19 @@ pub struct Handout {
 /// Whatever stops the worked solution: an invalid problem, equations that cannot be
 /// derived or solved, a linearization or an answer that fails.
 pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<Solution, Error> {
-    let mut solution = if settings.student {
-        student(problem, method)
-    } else {
-        let worked = pipeline::work(problem, method)?;
-        let mut solution = super::worked(&worked);
-        if settings.motion {
-            with_motion(&mut solution, problem, &worked.derivation);
+    let worked = match settings.student {
+        true => None,
+        false => Some(pipeline::work(problem, method)?),
+    };
+    let mut solution = match &worked {
+        None => student(problem, method),
+        Some(worked) => {
+            let mut solution = super::worked(worked);
+            if settings.motion {
+                with_motion(&mut solution, problem, &worked.derivation);
+            }
+            solution
         }
-        solution
     };
     if settings.every_rejected {
         solution.plan.show_every_rejected();
@@ -49,10 +53,14 @@ pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<
         solution.linearization = Some(super::linearization::section(problem, &l));
     }
     if !problem.questions.is_empty() {
-        solution.answers = if settings.student {
-            super::answers::blank(problem)
-        } else {
-            super::answers::section(problem, &pipeline::answers(problem, method)?)
+        solution.answers = match &worked {
+            None => super::answers::blank(problem),
+            Some(worked) => {
+                let answers = pipeline::answers(problem, method)?;
+                let mut views = super::answers::section(problem, &answers);
+                super::question_steps::attach(problem, &worked.derivation, &answers, &mut views);
+                views
+            }
         };
     }
     Ok(solution)

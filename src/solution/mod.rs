@@ -32,6 +32,8 @@ mod loops;
 mod matrix;
 mod mode_shape;
 pub mod pictures;
+mod question_answers;
+mod question_steps;
 mod rejected;
 pub mod row_view;
 mod simulation;

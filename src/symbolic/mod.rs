@@ -36,5 +36,6 @@ pub use build::{add, cos, func, mul, pow, sin, sqrt};
 pub use expr::{
     Axis, Component, ComponentKind, Definition, Expr, Func, Name, Node, Symbol, Unknown,
 };
+pub use factor::pull_common_factor;
 pub use number::Number;
 pub use simplify::simplify;

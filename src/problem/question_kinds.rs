@@ -1,0 +1,93 @@
+//! The kinds of question added to `find.questions` beside `value`, `reaction`, `drive`
+//! and `steady`: `period` (of small oscillations, from the linearization) and `show` (an
+//! identity derived from the equations of motion), with `about` (the state of an earlier
+//! `steady` question) and `item` (the statement's item a question answers).
+
+use super::expressions::{self, Context};
+use super::json::{check_keys, key_path, number, object, string};
+use super::model::QuestionKind;
+use super::read::Reader;
+use serde_json::Value;
+
+impl Reader {
+    /// `"period": {}` or `{ "coordinate": "theta" }`.
+    pub(super) fn period(&mut self, value: &Value, path: &str) -> Option<QuestionKind> {
+        let fields = object(value, path, &mut self.diag)?;
+        check_keys(fields, path, &["coordinate"], &mut self.diag);
+        let Some(v) = fields.get("coordinate") else {
+            return Some(QuestionKind::Period { coordinate: None });
+        };
+        let cpath = key_path(path, "coordinate");
+        let name = string(v, &cpath, &mut self.diag)?;
+        let entry = self.state_name(name, &cpath)?;
+        if entry.order != 0 {
+            self.diag.hint(
+                &cpath,
+                format!("`{}` is a rate, not a coordinate", name.trim()),
+                "name the coordinate whose oscillation is asked, e.g. \"theta\"",
+            );
+            return None;
+        }
+        Some(QuestionKind::Period {
+            coordinate: Some(entry.coordinate),
+        })
+    }
+
+    /// `"show": "LHS = RHS"`: two expressions of constants, coordinates, rates and second
+    /// rates, split at the one `=`.
+    pub(super) fn show(&mut self, value: &Value, path: &str) -> Option<QuestionKind> {
+        let text = string(value, path, &mut self.diag)?.trim().to_string();
+        let sides: Vec<&str> = text.split('=').collect();
+        let [lhs, rhs] = sides[..] else {
+            self.diag.hint(
+                path,
+                format!("`{text}` is not one identity"),
+                "write two expressions with one `=` between them, e.g. \"m*g*h = psi'*I3*w3\"",
+            );
+            return None;
+        };
+        let side = |reader: &mut Reader, s: &str| {
+            expressions::scalar(
+                &Value::from(s.trim()),
+                path,
+                &reader.names,
+                Context::question("a side of the identity to show"),
+                &mut reader.diag,
+            )
+        };
+        let lhs = side(self, lhs)?;
+        let rhs = side(self, rhs)?;
+        Some(QuestionKind::Show { lhs, rhs, text })
+    }
+
+    /// `"item": N`, a positive whole number.
+    pub(super) fn item(&mut self, value: &Value, path: &str) -> Option<u32> {
+        let x = number(value, path, &mut self.diag)?;
+        if x < 1.0 || x.fract() != 0.0 || x > 1000.0 {
+            self.diag.hint(
+                path,
+                format!("`{}` is not an item of the statement", value),
+                "give the number of the statement's item this question answers: 1, 2, …",
+            );
+            return None;
+        }
+        Some(x as u32)
+    }
+
+    /// `"about": INDEX`: a question of `items` (all of find.questions) that asks for a
+    /// steady motion, itself asked `at` a state.
+    pub(super) fn about(&mut self, value: &Value, path: &str, items: &[Value]) -> Option<usize> {
+        let x = number(value, path, &mut self.diag)?;
+        let listed = x >= 0.0 && x.fract() == 0.0 && (x as usize) < items.len();
+        let index = x as usize;
+        if !listed || items[index].get("steady").is_none() || items[index].get("about").is_some() {
+            self.diag.hint(
+                path,
+                format!("`{value}` is not a `steady` question of find.questions"),
+                "give the index (from 0) of a question of find.questions that asks for a steady motion at a state (`at`, not `about`)",
+            );
+            return None;
+        }
+        Some(index)
+    }
+}

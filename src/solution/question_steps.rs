@@ -1,0 +1,454 @@
+//! The working of a `period` and of a `show` in the Answers.
+//!
+//! - A period with one degree of freedom left: the equation of motion of that coordinate
+//!   free of the reactions (Kane's equation for its speed), `M q'' = f`, linearized about
+//!   the state: M the coefficient of q'' there, K = −∂f/∂q there, ω² = K/M in symbols,
+//!   then its number; written only when it agrees with the linearization's eigenvalue.
+//!   Every period ends with ω and T = 2π/ω.
+//! - A show: the equation of step 5 that the identity comes from, the conditions of the
+//!   state substituted (the second rates that vanish there, the rates that are zero), the
+//!   factor free of rates taken out, and the identity as stated. The equation is found by
+//!   sampling: with the coordinates and constants held, the equation with the conditions
+//!   substituted is a rate-free multiple of LHS − RHS at every set of rates tried.
+
+use crate::equations::{Derivation, Method};
+use crate::numeric::answers::Answer;
+use crate::problem::{Problem, QuestionKind};
+use crate::render::sections::{AnswerStep, AnswerView};
+use crate::symbolic::collect::{latex_collected, latex_factored as factored};
+use crate::symbolic::diff::partial;
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::print::latex;
+use crate::symbolic::subst::substitute;
+use crate::symbolic::{pull_common_factor, simplify, Expr, Node, Symbol};
+
+/// Adds the working of every `period` and `show` question to its view; `derivation` is
+/// the handout's, whose step 5 a `show` refers to.
+pub fn attach(
+    problem: &Problem,
+    derivation: &Derivation,
+    answers: &[Answer],
+    views: &mut [AnswerView],
+) {
+    // Written as step 5 writes: s_θ for sin θ, the problem's decimals.
+    let angles: Vec<&str> = (problem.coordinates.iter())
+        .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
+        .map(|c| c.name.as_str())
+        .collect();
+    let style = super::tex::style_of(problem).with_coordinates(&angles);
+    crate::symbolic::style::with_style(style, || {
+        for ((question, answer), view) in problem.questions.iter().zip(answers).zip(views) {
+            view.steps = match &question.kind {
+                QuestionKind::Period { .. } => period_steps(problem, answer),
+                QuestionKind::Show { lhs, rhs, .. } => {
+                    show_steps(problem, derivation, answer, (lhs, rhs))
+                }
+                _ => Vec::new(),
+            };
+        }
+    });
+}
+
+fn step(text: impl Into<String>, math: impl Into<String>) -> AnswerStep {
+    AnswerStep {
+        text: text.into().into(),
+        math: math.into().into(),
+    }
+}
+
+/// The constants, and the coordinates, rates and second rates of the state.
+fn values(problem: &Problem, answer: &Answer, accelerations: &[f64]) -> Values {
+    let mut v = Values::new();
+    for c in &problem.constants {
+        v.set(Symbol::Const(c.name.as_str().into()), c.value);
+    }
+    for (i, c) in problem.coordinates.iter().enumerate() {
+        let s = |order| Symbol::Coord(c.name.as_str().into(), order);
+        v.set(s(0), answer.q[i]);
+        v.set(s(1), answer.rates[i]);
+        v.set(s(2), accelerations.get(i).copied().unwrap_or(0.0));
+    }
+    v.set(Symbol::Time, answer.time);
+    v
+}
+
+/// `e` with the symbols of `zero` set to 0.
+fn zeroed(e: &Expr, zero: &[Symbol]) -> Expr {
+    simplify(&substitute(e, &|s| zero.contains(s).then(Expr::zero)))
+}
+
+fn number(x: f64) -> String {
+    super::answers::number_tex(x)
+}
+
+/// The rates (and coordinates) that are zero at the state, as symbols.
+fn zero_at_state(problem: &Problem, answer: &Answer, order: u8) -> Vec<Symbol> {
+    let list = if order == 0 { &answer.q } else { &answer.rates };
+    (0..problem.coordinates.len())
+        .filter(|&i| list[i].abs() < 1e-12)
+        .map(|i| problem.coordinate_symbol(i, order))
+        .collect()
+}
+
+fn period_steps(problem: &Problem, answer: &Answer) -> Vec<AnswerStep> {
+    let Some(found) = &answer.period else {
+        return Vec::new();
+    };
+    let mut steps = match found.coordinates.as_slice() {
+        [one] => one_freedom(problem, answer, one, found.natural).unwrap_or_default(),
+        _ => Vec::new(),
+    };
+    let (which, omega) = match (found.mode.1, found.damping_ratio > 0.0) {
+        (1, false) => ("The oscillation", "\\omega"),
+        (1, true) => ("The damped oscillation", "\\omega_d"),
+        (_, false) => (
+            "Of the oscillations of the linearization, the one asked",
+            "\\omega",
+        ),
+        (_, true) => (
+            "Of the damped oscillations of the linearization, the one asked",
+            "\\omega_d",
+        ),
+    };
+    let mut text = format!("{which} has the angular frequency ${omega}$ (the imaginary part of its eigenvalues), and the period is");
+    if found.damping_ratio > 0.0 {
+        text = format!(
+            "{text} that of the damped motion (damping ratio {}):",
+            crate::symbolic::format::fixed(found.damping_ratio)
+        );
+    } else {
+        text.push(':');
+    }
+    steps.push(step(
+        text,
+        format!(
+            "{omega} = {}\\ \\mathrm{{rad/s}}, \\qquad T = \\frac{{2\\pi}}{{{omega}}} = {}\\ \\mathrm{{s}}",
+            number(found.damped),
+            number(found.period)
+        ),
+    ));
+    steps
+}
+
+/// ω² = K/M in symbols for the one coordinate `name` left free, from Kane's equation for
+/// it; `None` where that equation is not at hand or does not give the linearization's
+/// `natural` frequency.
+fn one_freedom(
+    problem: &Problem,
+    answer: &Answer,
+    name: &str,
+    natural: f64,
+) -> Option<Vec<AnswerStep>> {
+    let k = problem.coordinates.iter().position(|c| c.name == name)?;
+    let in_rates = problem.without_speeds();
+    let derivation = crate::pipeline::derive_for_handout(&in_rates, Method::Kane).ok()?;
+    let system = &derivation.system;
+    let qdd = problem.coordinate_symbol(k, 2);
+    let row = (0..system.b.len()).find(|&i| {
+        let nonzero: Vec<usize> = (0..system.unknowns.len())
+            .filter(|&j| !system.a[i][j].is_zero())
+            .collect();
+        nonzero.len() == 1 && system.unknowns[nonzero[0]] == qdd
+    })?;
+    let j = system.unknowns.iter().position(|u| *u == qdd)?;
+    let v = values(problem, answer, &[]);
+    // The mass positive: the row's signs changed where it is not.
+    let (m, f) = match eval(&system.a[row][j], &v) < 0.0 {
+        true => (-&system.a[row][j], -&system.b[row]),
+        false => (system.a[row][j].clone(), system.b[row].clone()),
+    };
+    let (m, f) = (&m, &f);
+    let mut zero = zero_at_state(problem, answer, 1);
+    zero.extend(zero_at_state(problem, answer, 0));
+    zero.retain(|s| m.contains(s) || f.contains(s));
+    let q = problem.coordinate_symbol(k, 0);
+    let k_full = -partial(f, &q).ok()?;
+    // The other coordinates follow q through the constraints; their terms must vanish here.
+    for (i, _) in problem
+        .coordinates
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| *i != k)
+    {
+        let d = partial(f, &problem.coordinate_symbol(i, 0)).ok()?;
+        if eval(&d, &v).abs() > 1e-9 * eval(&k_full, &v).abs() {
+            return None;
+        }
+    }
+    // Damping: no K/M form of the period.
+    let c = partial(f, &problem.coordinate_symbol(k, 1)).ok()?;
+    if eval(&c, &v).abs() > 1e-12 {
+        return None;
+    }
+    let (m0, k0) = (zeroed(m, &zero), zeroed(&k_full, &zero));
+    let omega2 = simplify(&(&k0 / &m0));
+    let value = eval(&omega2, &v);
+    let agrees = (value - natural * natural).abs() <= 1e-6 * value.abs();
+    if !agrees || k0.is_zero() {
+        return None;
+    }
+    let qdd_tex = latex(&Expr::sym(qdd.clone()));
+    let q_tex = latex(&Expr::sym(q.clone()));
+    let zero_tex: Vec<String> = zero
+        .iter()
+        .map(|s| format!("{} = 0", latex(&Expr::sym(s.clone()))))
+        .collect();
+    let others = others_tex(problem, answer, &omega2, k);
+    Some(vec![
+        step(
+            format!("One degree of freedom is left, ${q_tex}$. Its equation of motion free of the reactions (Kane's equation for its speed) is"),
+            format!("{} \\, {qdd_tex} = {}", factored(m), latex_collected(f)),
+        ),
+        step(
+            format!(
+                "Linearized about the state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$: $M$ is the coefficient of ${qdd_tex}$ and $K$ minus the derivative of the right side with respect to ${q_tex}$, both with {} there:",
+                if zero_tex.is_empty() { "the values".to_string() } else { format!("${}$", zero_tex.join(",\\ ")) }
+            ),
+            format!("M = {}, \\qquad K = {}", factored(&m0), factored(&k0)),
+        ),
+        step(
+            format!("so that{others}"),
+            format!("\\omega^{{2}} = \\frac{{K}}{{M}} = {} = {}\\ \\mathrm{{s^{{-2}}}}", ratio_tex(&k0, &m0), number(value)),
+        ),
+    ])
+}
+
+/// K/M written with M's common factor cancelled against K and the sum left in M kept
+/// whole, `\frac{-2 g y}{3 (R - r)^{2}}`, where K is one term; else K/M simplified.
+fn ratio_tex(k: &Expr, m: &Expr) -> String {
+    let (common, inner) = match m.node() {
+        Node::Add(_) => pull_common_factor(m),
+        _ => (m.clone(), Expr::one()),
+    };
+    let quotient = simplify(&(k / &common));
+    if inner.is_one() || matches!(k.node(), Node::Add(_)) {
+        return latex(&simplify(&(k / m)));
+    }
+    let (coefficient, rest) = quotient.split_coefficient();
+    match coefficient {
+        crate::symbolic::Number::Ratio(n, d) => {
+            let top = latex(&(&Expr::int(n) * &rest));
+            let sum = square_tex(&inner).unwrap_or_else(|| factored(&inner));
+            let sum = match sum.starts_with('(') || sum.starts_with("\\left(") {
+                true => sum,
+                false => format!("\\left({sum}\\right)"),
+            };
+            let bottom = match d {
+                1 => sum,
+                _ => format!("{d} {sum}"),
+            };
+            format!("\\frac{{{top}}}{{{bottom}}}")
+        }
+        _ => latex(&simplify(&(k / m))),
+    }
+}
+
+/// A sum `a² + b² ± 2ab` written `(a ± b)²`.
+fn square_tex(sum: &Expr) -> Option<String> {
+    let squares: Vec<Expr> = (sum.terms().iter())
+        .filter_map(|t| match t.node() {
+            Node::Pow(base, two)
+                if two.as_number() == Some(crate::symbolic::Number::Ratio(2, 1)) =>
+            {
+                Some(base.clone())
+            }
+            _ => None,
+        })
+        .collect();
+    let [a, b] = squares.as_slice() else {
+        return None;
+    };
+    [a - b, a + b].into_iter().find_map(|root| {
+        let left = simplify(&(sum - &(&root * &root)));
+        left.is_zero()
+            .then(|| format!("\\left({}\\right)^{{2}}", latex(&root)))
+    })
+}
+
+/// `, with y = −0.4 m,`: the values of the coordinates other than `k` left in `e`.
+fn others_tex(problem: &Problem, answer: &Answer, e: &Expr, k: usize) -> String {
+    let parts: Vec<String> = (0..problem.coordinates.len())
+        .filter(|&i| i != k && e.contains(&problem.coordinate_symbol(i, 0)))
+        .map(|i| {
+            let unit = crate::numeric::answers::coordinate_unit(problem, i, 0);
+            format!(
+                "${} = {}{}$",
+                latex(&problem.coordinate_expr(i, 0)),
+                number(answer.q[i]),
+                super::answers::unit_tex(&unit)
+            )
+        })
+        .collect();
+    match parts.is_empty() {
+        true => String::new(),
+        false => format!(", with {} at the state,", parts.join(", ")),
+    }
+}
+
+/// Whether `e` holds a rate (first derivative) of a coordinate.
+fn has_rates(e: &Expr) -> bool {
+    e.any_symbol(&|s| matches!(s, Symbol::Coord(_, 1) | Symbol::Speed(_, 0)))
+}
+
+fn show_steps(
+    problem: &Problem,
+    derivation: &Derivation,
+    answer: &Answer,
+    (lhs, rhs): (&Expr, &Expr),
+) -> Vec<AnswerStep> {
+    derive_identity(problem, derivation, answer, (lhs, rhs)).unwrap_or_else(|| {
+        vec![step(
+            "No single equation of step 5 reduces to this identity once the conditions of the state are put in; it is checked at the state only.",
+            String::new(),
+        )]
+    })
+}
+
+/// The steps from an equation of step 5 to `lhs = rhs`, or `None` when no equation gives it.
+fn derive_identity(
+    problem: &Problem,
+    derivation: &Derivation,
+    answer: &Answer,
+    (lhs, rhs): (&Expr, &Expr),
+) -> Option<Vec<AnswerStep>> {
+    let system = &derivation.system;
+    let solver = crate::pipeline::Solver::new(problem, derivation);
+    let accelerations = solver
+        .solve(answer.time, &answer.q, &answer.rates)
+        .ok()?
+        .accelerations;
+    let v = values(problem, answer, &accelerations);
+    let scale = accelerations.iter().fold(1.0f64, |s, a| s.max(a.abs()));
+    // The conditions: second rates that vanish at the state, rates that are zero there.
+    let mut zero: Vec<Symbol> = (0..problem.coordinates.len())
+        .filter(|&i| accelerations[i].abs() < 1e-9 * scale)
+        .map(|i| problem.coordinate_symbol(i, 2))
+        .collect();
+    zero.extend(zero_at_state(problem, answer, 1));
+    let difference = lhs - rhs;
+    for i in 0..system.b.len() {
+        let mut terms: Vec<Expr> = (0..system.unknowns.len())
+            .map(|j| &system.a[i][j] * &Expr::sym(system.unknowns[j].clone()))
+            .collect();
+        terms.push(-&system.b[i]);
+        let row = crate::symbolic::add(terms);
+        let reduced = zeroed(&row, &zero);
+        // Another unknown left (a reaction, a second rate that does not vanish): not this row.
+        if system.unknowns.iter().any(|u| reduced.contains(u)) || reduced.is_zero() {
+            continue;
+        }
+        if !proportional(problem, &v, (&reduced, &difference), &zero) {
+            continue;
+        }
+        return Some(identity_steps(
+            problem,
+            answer,
+            i,
+            (&row, &reduced),
+            &zero,
+            (lhs, rhs),
+        ));
+    }
+    None
+}
+
+/// Whether `e` is a multiple of `d` by a factor free of rates: at several sets of rates,
+/// the coordinates and constants held, e/d is the same nonzero number.
+fn proportional(problem: &Problem, v: &Values, (e, d): (&Expr, &Expr), zero: &[Symbol]) -> bool {
+    let mut ratios = Vec::new();
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    for _ in 0..4 {
+        let mut w = v.clone();
+        for i in 0..problem.coordinates.len() {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let x = (seed % 10_000) as f64 / 1000.0 - 5.0;
+            let rate = problem.coordinate_symbol(i, 1);
+            let held = zero.contains(&rate);
+            w.set(rate, if held { 0.0 } else { x });
+        }
+        let (a, b) = (eval(e, &w), eval(d, &w));
+        if !(a.is_finite() && b.is_finite()) || b.abs() < 1e-12 {
+            return false;
+        }
+        ratios.push(a / b);
+    }
+    let first = ratios[0];
+    first.abs() > 1e-12
+        && ratios
+            .iter()
+            .all(|r| (r - first).abs() <= 1e-8 * first.abs())
+}
+
+/// The factors of `e` free of rates, and the rest.
+fn split_factor(e: &Expr) -> (Expr, Expr) {
+    let (common, inner) = match e.node() {
+        Node::Add(_) => pull_common_factor(e),
+        _ => (Expr::one(), e.clone()),
+    };
+    let mut outer = vec![common];
+    let mut rest = Vec::new();
+    for f in inner.factors() {
+        if has_rates(f) {
+            rest.push(f.clone());
+        } else {
+            outer.push(f.clone());
+        }
+    }
+    (crate::symbolic::mul(outer), crate::symbolic::mul(rest))
+}
+
+fn identity_steps(
+    problem: &Problem,
+    answer: &Answer,
+    i: usize,
+    (row, reduced): (&Expr, &Expr),
+    zero: &[Symbol],
+    (lhs, rhs): (&Expr, &Expr),
+) -> Vec<AnswerStep> {
+    let present: Vec<String> = zero
+        .iter()
+        .map(|s| format!("{} = 0", latex(&Expr::sym(s.clone()))))
+        .collect();
+    let mut steps = vec![step(
+        format!("Equation ({}) of step 5:", i + 1),
+        format!("{} = 0", latex_collected(&simplify(row))),
+    )];
+    steps.push(step(
+        format!(
+            "At this state ${}$; put in, the equation becomes",
+            present.join(",\\ ")
+        ),
+        format!("{} = 0", latex_collected(reduced)),
+    ));
+    let (outer, rest) = split_factor(reduced);
+    if !outer.is_one() && outer.as_number().is_none() {
+        let held: Vec<String> = (0..problem.coordinates.len())
+            .filter(|&k| outer.contains(&problem.coordinate_symbol(k, 0)))
+            .map(|k| {
+                format!(
+                    "${} = {}$",
+                    latex(&problem.coordinate_expr(k, 0)),
+                    number(answer.q[k])
+                )
+            })
+            .collect();
+        let at = match held.is_empty() {
+            true => String::new(),
+            false => format!(" at {}", held.join(", ")),
+        };
+        steps.push(step(
+            format!(
+                "The factor ${}$ is not zero{at}; divided by it,",
+                latex(&outer)
+            ),
+            format!("{} = 0", latex_collected(&rest)),
+        ));
+    }
+    steps.push(step(
+        "which, the terms rearranged, is the identity asked, its right side multiplied out:",
+        format!("{} = {}", latex(lhs), latex(rhs)),
+    ));
+    steps
+}
