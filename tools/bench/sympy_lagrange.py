@@ -4,8 +4,8 @@ derivation-time comparison with `derive_own` (benches/derive_own.rs): the Lagran
 same bodies (gravity as each body's potential energy), Lagrange's equations formed, and
 their q'' at the initial state as a cross-check.
 
-  python3 tools/bench/sympy_lagrange.py KIND N
-prints: derive_seconds q''(initial state)
+  python3 tools/bench/sympy_lagrange.py KIND N [--derive-only]
+prints: derive_seconds q''(initial state; left out with --derive-only)
 """
 import sys
 import time
@@ -72,6 +72,9 @@ def main():
     mass, forcing = method.mass_matrix, method.forcing
     seconds = time.perf_counter() - start
     print(f"{seconds:.2f}", end=" ", flush=True)
+    if "--derive-only" in sys.argv[3:]:
+        print()
+        return
     spec = problem(kind, n)
     state = {}
     for qi, c in zip(q, spec["coordinates"].values()):
