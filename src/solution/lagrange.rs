@@ -68,10 +68,19 @@ pub fn equation_tex(derivation: &Derivation, sum: &Sum) -> Option<String> {
 
 /// A relaxed joint's row: the reaction component it brings in, `u \to F^{O}_{x}`.
 fn relaxed_tex(row: &Equation) -> String {
+    // The row of `u(O.Fx)` brings in the joint's own component; the multipliers of the
+    // closures and contacts it also holds are not what it is written for.
+    let joint = match &row.sum {
+        Sum::Generalized { speed } => speed
+            .strip_prefix("u(")
+            .and_then(|s| s.split('.').next())
+            .unwrap_or_default(),
+        _ => "",
+    };
     let reactions: Vec<crate::symbolic::Symbol> = row
         .unknowns
         .iter()
-        .filter(|u| matches!(u, crate::symbolic::Symbol::Unknown(_)))
+        .filter(|u| matches!(u, crate::symbolic::Symbol::Unknown(k) if k.site() == Some(joint)))
         .cloned()
         .collect();
     format!(
