@@ -78,6 +78,7 @@ fn student(problem: &Problem, method: Method) -> Solution {
         let full = super::worked(&worked);
         setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
         setup.plan.rows = vec![Default::default(); full.plan.rows.len()];
+        setup.lagrange = full.lagrange.map(super::lagrange::blank);
     }
     setup
 }

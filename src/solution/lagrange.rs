@@ -20,9 +20,9 @@ use crate::symbolic::Expr;
 /// The plan's note: what the rows are and where the reactions come from.
 pub fn plan_note(derivation: &Derivation) -> String {
     let model = &derivation.model;
-    let mut note = "One equation per coordinate, d/dt(∂L/∂q̇_r) − ∂L/∂q_r = Q_r, with L = T − V and Q_r the generalized forces of the loads without a potential.".to_string();
+    let mut note = "One equation per coordinate, Lagrange's equation, with the Lagrangian and the generalized forces of step 2.".to_string();
     if !model.constraints.rows.is_empty() {
-        note.push_str(" Each constraint row brings a multiplier λ_k into every coordinate's equation (Σ_k λ_k ∂f_k/∂q_r, or λ_k times the row's coefficient of q̇_r); a multiplier is the reaction component along the row, and the constraint rows, differentiated, close the system.");
+        note.push_str(" Each constraint row brings a multiplier into every coordinate's equation; the multiplier is the reaction component that enforces the row, and the constraint rows, differentiated, close the system.");
     }
     if derivation
         .reaction_joints
@@ -68,10 +68,19 @@ pub fn equation_tex(derivation: &Derivation, sum: &Sum) -> Option<String> {
 
 /// A relaxed joint's row: the reaction component it brings in, `u \to F^{O}_{x}`.
 fn relaxed_tex(row: &Equation) -> String {
+    // The row of `u(O.Fx)` brings in the joint's own component; the multipliers of the
+    // closures and contacts it also holds are not what it is written for.
+    let joint = match &row.sum {
+        Sum::Generalized { speed } => speed
+            .strip_prefix("u(")
+            .and_then(|s| s.split('.').next())
+            .unwrap_or_default(),
+        _ => "",
+    };
     let reactions: Vec<crate::symbolic::Symbol> = row
         .unknowns
         .iter()
-        .filter(|u| matches!(u, crate::symbolic::Symbol::Unknown(_)))
+        .filter(|u| matches!(u, crate::symbolic::Symbol::Unknown(k) if k.site() == Some(joint)))
         .cloned()
         .collect();
     format!(
@@ -115,7 +124,7 @@ pub fn row_text(
     let Some(r) = coordinate_of(model, row) else {
         return Some(RowText {
             label_tex: relaxed_tex(row),
-            label: "(the joint let give way along the reaction component: an auxiliary coordinate, zero in the motion, whose equation is the balance of the bodies it moves along that component)".into(),
+            label: "(the joint relaxed: an auxiliary coordinate along the component, zero in the motion)".into(),
             lines: Vec::new(),
             note: "Its equation at zero auxiliary coordinate and rate, simplified:".into(),
         });
@@ -164,15 +173,13 @@ pub fn row_text(
     let with = if multipliers.is_zero() {
         ""
     } else {
-        " plus the multipliers' terms"
+        " with the multipliers' terms"
     };
     Some(RowText {
         label_tex: format!("{q}\\colon\\; {}", lagrange_tex(model, r)),
         label: "(Lagrange's equation of the coordinate)".into(),
         lines,
-        note: format!(
-            "Lagrange's equation, d/dt(∂L/∂q̇) − ∂L/∂q − Q{with} = 0, collected by the second derivatives:"
-        ),
+        note: format!("Lagrange's equation{with}, collected by the second derivatives:"),
     })
 }
 
@@ -298,6 +305,13 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
                 ),
             ),
         };
+        // An action and its reaction at a closure act on two bodies: each is named by its body.
+        let label = match forces::role(model, action) {
+            forces::Role::Multiplier => {
+                format!("{} on {}", action.label, problem.body_name(action.body))
+            }
+            _ => action.label.clone(),
+        };
         let mut first = true;
         for (r, (partial, work)) in partials.iter().zip(&work).enumerate() {
             if simplify(work).is_zero() {
@@ -306,7 +320,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
             let (rate, _) = names(model, r);
             rows.push(GeneralizedForceRow {
                 load: if std::mem::take(&mut first) {
-                    action.label.clone()
+                    label.clone()
                 } else {
                     String::new()
                 },
@@ -386,4 +400,32 @@ fn multipliers_note(derivation: &Derivation) -> String {
         "The constraints enter with one multiplier per row, and each multiplier is the reaction component that enforces the row: {}. Their terms in each equation, $\\sum_k \\lambda_k\\, \\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r$ (for a holonomic row $\\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r = \\partial f_k / \\partial q_r$; for a nonholonomic one, the row's coefficient of $\\dot{{q}}_r$), are the virtual work of those components, and the constraint rows, differentiated, close the system; the reactions asked for are these multipliers.",
         parts.join("; ")
     )
+}
+
+/// The student's handout: the energies' left sides and the loads of the table, the rest
+/// left blank.
+pub fn blank(view: LagrangeView) -> LagrangeView {
+    let left = |x: &Math| {
+        Math::from(
+            x.as_str()
+                .split(" = ")
+                .next()
+                .unwrap_or_default()
+                .to_string(),
+        )
+    };
+    LagrangeView {
+        energy_tex: view.energy_tex.iter().map(left).collect(),
+        forces: view
+            .forces
+            .into_iter()
+            .map(|f| GeneralizedForceRow {
+                partial_tex: Math::default(),
+                q_tex: Math::default(),
+                ..f
+            })
+            .collect(),
+        forces_note: MarkupLine::default(),
+        multipliers_note: MarkupLine::default(),
+    }
 }
