@@ -112,7 +112,8 @@ fn one(
     match &question.kind {
         QuestionKind::Value { .. }
         | QuestionKind::Drive { .. }
-        | QuestionKind::Impending { .. } => {
+        | QuestionKind::Impending { .. }
+        | QuestionKind::Period { .. } => {
             let given = number(value).ok_or("expected a number")?;
             let expected = answer.values.first().map_or(f64::NAN, |(_, x)| *x);
             Ok(scalar(given, expected))
@@ -135,6 +136,21 @@ fn one(
         QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => {
             yes_or_no(&question.kind, answer, value)
         }
+        QuestionKind::Show { .. } => shown(answer, value),
+    }
+}
+
+/// A `show`: `true` (or "yes") when the identity holds, or the common value of its sides
+/// within 0.5 %.
+fn shown(answer: &Answer, value: &Value) -> Result<Option<String>, String> {
+    let lhs = answer.values.first().map_or(f64::NAN, |(_, x)| *x);
+    match value {
+        Value::Bool(true) => Ok(None),
+        Value::String(s) if s.eq_ignore_ascii_case("yes") => Ok(None),
+        Value::Bool(false) => Ok(Some("the identity holds: both sides are equal".into())),
+        _ => number(value)
+            .map(|given| scalar(given, lhs))
+            .ok_or_else(|| "expected true (the identity holds) or the sides' value".into()),
     }
 }
 

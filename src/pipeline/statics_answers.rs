@@ -119,6 +119,7 @@ pub fn answer(statics: &Statics, problem: &Problem, question: &Question) -> Resu
         simulated: false,
         residual: None,
         frame: None,
+        period: None,
     })
 }
 
