@@ -224,7 +224,7 @@ fn statement_items(statement: &str) -> Vec<u32> {
 
 /// Items a worked solution answers in its steps, not by a number: equations to write,
 /// a simulation to run, a sweep to make.
-const ANSWERED_BY_THE_STEPS: [(&str, u32); 9] = [
+const ANSWERED_BY_THE_STEPS: [(&str, u32); 16] = [
     ("five-link-chain", 1),
     ("spherical-pendulum", 1),
     ("torque-free-body-speeds", 1),
@@ -234,6 +234,15 @@ const ANSWERED_BY_THE_STEPS: [(&str, u32); 9] = [
     ("sleeping-top", 2),
     ("block-on-rough-slide", 3),
     ("slider-crank-light-rod", 2),
+    // The impact's step: its impulses, the energy lost, how the contact point moves.
+    ("impact-double-pendulum", 2),
+    ("impact-falling-plank", 2),
+    ("impact-spinning-disc", 1),
+    ("impact-struck-pendulum", 2),
+    ("impact-struck-rod", 2),
+    // The statics: the stability of each rest, the forces at both edges.
+    ("statics-torsion-pendulum", 2),
+    ("statics-tall-block", 1),
 ];
 
 /// Every bundled problem: the Answers' numbers are the statement's items, in order, each
