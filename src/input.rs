@@ -2,8 +2,40 @@
 //! a device, a directory or a link to one is refused without waiting on it), at most a
 //! given size, with a message that names the limit.
 
+use std::collections::HashSet;
+use std::fs::Metadata;
 use std::io::Read;
 use std::path::Path;
+use std::sync::Mutex;
+
+/// The files this run read, by identity (device and inode, which a hard link or a symbolic
+/// link shares), so that no output of the run is ever one of them.
+static READ: Mutex<Option<HashSet<(u64, u64)>>> = Mutex::new(None);
+
+fn identity(meta: &Metadata) -> (u64, u64) {
+    use std::os::unix::fs::MetadataExt;
+    (meta.dev(), meta.ino())
+}
+
+/// Records a file this run read.
+fn record(meta: &Metadata) {
+    let mut read = READ.lock().unwrap_or_else(|e| e.into_inner());
+    read.get_or_insert_with(HashSet::new).insert(identity(meta));
+}
+
+/// Whether the file of `meta` was read by this run.
+pub fn was_read(meta: &Metadata) -> bool {
+    let read = READ.lock().unwrap_or_else(|e| e.into_inner());
+    read.as_ref().is_some_and(|r| r.contains(&identity(meta)))
+}
+
+/// Whether `a` and `b` name one file (by any path, hard link or symbolic link).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(ma), Ok(mb)) => identity(&ma) == identity(&mb),
+        _ => false,
+    }
+}
 
 /// The largest problem file read: a problem at the limits (30 bodies, 60 coordinates) with
 /// every description written out takes well under 1 MB.
@@ -27,7 +59,7 @@ pub fn read_bounded(path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
         .open(path)?;
     let meta = file.metadata()?;
     // Recorded before anything else, so that no output of this run is ever this file.
-    crate::output::inputs::record(&meta);
+    record(&meta);
     if !meta.is_file() {
         return Err(refused(format!(
             "{} is not a regular file: only a file's contents can be read",

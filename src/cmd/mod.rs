@@ -110,7 +110,7 @@ pub fn refuse_overwriting(problem: &Path, output: Option<&Path>) -> Result<(), E
     let Some(output) = output else {
         return Ok(());
     };
-    if crate::output::inputs::same_file(problem, output) {
+    if crate::input::same_file(problem, output) {
         return Err(Error::Usage(format!(
             "refusing to overwrite the problem file {} with the output: name another file with -o",
             output.display()

@@ -1,39 +1,9 @@
-//! The files a run reads, so that none of them is ever written: every file read through
-//! [`crate::input::read_bounded`] is recorded by its identity (device and inode, which a
-//! hard link or a symbolic link shares), and every output is compared with them.
+//! No output is ever an input: the refusals of a command about to write over the file it
+//! read (the files read are recorded by [`crate::input`]).
 
+use crate::input::same_file;
 use crate::Error;
-use std::collections::HashSet;
-use std::fs::Metadata;
 use std::path::Path;
-use std::sync::Mutex;
-
-static READ: Mutex<Option<HashSet<(u64, u64)>>> = Mutex::new(None);
-
-fn identity(meta: &Metadata) -> (u64, u64) {
-    use std::os::unix::fs::MetadataExt;
-    (meta.dev(), meta.ino())
-}
-
-/// Records a file this run read.
-pub fn record(meta: &Metadata) {
-    let mut read = READ.lock().unwrap_or_else(|e| e.into_inner());
-    read.get_or_insert_with(HashSet::new).insert(identity(meta));
-}
-
-/// Whether the file of `meta` was read by this run.
-pub fn was_read(meta: &Metadata) -> bool {
-    let read = READ.lock().unwrap_or_else(|e| e.into_inner());
-    read.as_ref().is_some_and(|r| r.contains(&identity(meta)))
-}
-
-/// Whether `a` and `b` name one file (by any path, hard link or symbolic link).
-pub fn same_file(a: &Path, b: &Path) -> bool {
-    match (std::fs::metadata(a), std::fs::metadata(b)) {
-        (Ok(ma), Ok(mb)) => identity(&ma) == identity(&mb),
-        _ => false,
-    }
-}
 
 fn refusal(input: &Path, output: &Path) -> Error {
     Error::Usage(format!(

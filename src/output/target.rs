@@ -55,7 +55,7 @@ impl Target {
                 return refuse("it is read-only".into());
             }
         }
-        if super::inputs::was_read(&meta) {
+        if crate::input::was_read(&meta) {
             return refuse("it is a file this command reads".into());
         }
         let real = std::fs::canonicalize(path).map_err(|source| Error::Io {
