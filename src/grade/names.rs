@@ -113,20 +113,7 @@ impl Resolve for Names<'_> {
             )
             .with_hint(hint));
         }
-        let index = match axis {
-            "x" => 0u8,
-            "y" => 1,
-            "z" => 2,
-            _ => {
-                return Err(ParseError::new(
-                    column,
-                    format!("`{frame}.{axis}`: unknown axis `{axis}`"),
-                )
-                .with_hint(format!(
-                    "the unit vectors are {frame}.x, {frame}.y, {frame}.z"
-                )))
-            }
-        };
+        let index = crate::problem::axis_index(frame, axis, column)?;
         if !self.vectors {
             return Err(ParseError::new(
                 column,

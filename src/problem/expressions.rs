@@ -176,29 +176,7 @@ impl Resolve for Scope<'_> {
                 "frames",
             )));
         };
-        let index = match axis {
-            "x" => 0u8,
-            "y" => 1,
-            "z" => 2,
-            "o" => {
-                return Err(ParseError::new(
-                    column,
-                    format!("`{frame}.o` is a point, not a unit vector"),
-                )
-                .with_hint(format!(
-                    "the unit vectors are {frame}.x, {frame}.y, {frame}.z"
-                )))
-            }
-            _ => {
-                return Err(ParseError::new(
-                    column,
-                    format!("`{frame}.{axis}`: unknown axis `{axis}`"),
-                )
-                .with_hint(format!(
-                    "the unit vectors are {frame}.x, {frame}.y, {frame}.z"
-                )))
-            }
-        };
+        let index = axis_index(frame, axis, column)?;
         if !self.vectors {
             return Err(ParseError::new(
                 column,
@@ -208,6 +186,28 @@ impl Resolve for Scope<'_> {
         }
         self.seen.borrow_mut().push((body, index));
         Ok(Expr::sym(Symbol::UnitVector(frame.into(), index)))
+    }
+}
+
+/// The index (0, 1, 2 for x, y, z) of the unit vector `frame.axis`, or an error a student
+/// can act on: `frame.o` is a point, any other axis unknown.
+///
+/// # Errors
+/// An axis other than `x`, `y`, `z`, at `column`.
+pub fn axis_index(frame: &str, axis: &str, column: usize) -> Result<u8, ParseError> {
+    let hint = || format!("the unit vectors are {frame}.x, {frame}.y, {frame}.z");
+    match axis {
+        "x" => Ok(0),
+        "y" => Ok(1),
+        "z" => Ok(2),
+        "o" => Err(
+            ParseError::new(column, format!("`{frame}.o` is a point, not a unit vector"))
+                .with_hint(hint()),
+        ),
+        _ => Err(
+            ParseError::new(column, format!("`{frame}.{axis}`: unknown axis `{axis}`"))
+                .with_hint(hint()),
+        ),
     }
 }
 

@@ -47,6 +47,7 @@ pub mod variant;
 pub mod vary;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
+pub use expressions::axis_index;
 pub use impact::{Collision, Impact, Impulse};
 pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
