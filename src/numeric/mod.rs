@@ -22,6 +22,7 @@ pub mod recursive;
 pub mod reduce;
 pub mod simulate;
 pub mod speeds;
+mod steady;
 pub mod system;
 
 use std::fmt;

@@ -467,47 +467,6 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
     assert_eq!(drawn, want, "{}: the reactions at the cut", r.name);
 }
 
-/// The slip velocity along reaction component `c` of `site`, when it is the friction of a
-/// site that slips at this state (none while it sticks or has no friction).
-fn slip_along(
-    d: &Derivation,
-    site: &mbd_tutor::mechanics::site::Site,
-    c: &mbd_tutor::mechanics::joints::ReactionComponent,
-    values: &Values,
-) -> Option<f64> {
-    let friction = d
-        .model
-        .constraints
-        .friction
-        .iter()
-        .find(|f| f.name == site.name)?;
-    let row = friction
-        .stick
-        .iter()
-        .find(|r| r.unknown == c.unknown(&site.name))?;
-    let slip = eval(&row.velocity, values);
-    (slip.abs() > 1e-9).then_some(slip)
-}
-
-/// A sliding friction arrow at `at`: a known force, labelled μ times the normal force,
-/// drawn along `against` (against the slip).
-fn check_sliding(r: &Read, at: &str, against: [f64; 3]) {
-    let found = r.arrows.iter().find(|(g, _)| {
-        g.attr("data-kind") == Some("load")
-            && g.attr("data-at") == Some(at)
-            && g.attr("data-label").is_some_and(|l| l.starts_with('μ'))
-    });
-    let (g, m) = found.unwrap_or_else(|| panic!("{}: no sliding friction at {at}", r.name));
-    let (tail, head) = line(g, *m).expect("a straight arrow");
-    let got = [head[0] - tail[0], head[1] - tail[1]];
-    let want = r.project_direction(against);
-    assert!(
-        angle_between(got, want) < 1e-3,
-        "{}: friction at {at} drawn along {got:?}, not against the slip {want:?}",
-        r.name
-    );
-}
-
 fn check_problem(path: &std::path::Path, method: Method) {
     let problem = mbd_tutor::problem::load_file(path).expect("a bundled problem");
     let (derivation, pictures, state) = drawings(&problem, method, View::Isometric);
@@ -629,3 +588,6 @@ fn pictures_are_the_same_every_time() {
 mod browser;
 mod commands;
 mod handouts;
+mod sliding;
+
+use sliding::{check_sliding, slip_along};

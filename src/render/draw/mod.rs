@@ -22,6 +22,7 @@ pub mod scene;
 
 pub mod strokes;
 pub mod svg;
+mod svg_path;
 pub mod tikz;
 
 pub use picture::{Picture, View};
