@@ -3,7 +3,7 @@
 //! (the four-bar's closure, the rolling coin's floor), and its q'' against the other three
 //! methods at random states of the validation problems.
 
-use mbd_tutor::equations::lagrange::{coordinate_terms, energy};
+use mbd_tutor::equations::lagrange::{coordinate_terms, energy, kinetic};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::evaluate::{Compiled, StateSolution};
 use mbd_tutor::numeric::system::System;
@@ -283,6 +283,52 @@ fn lagrange_agrees_with_the_other_methods_on_the_validation_problems() {
                 checked += 1;
             }
             assert!(checked > 0, "{name}: no state solved by {}", method.name());
+        }
+    }
+}
+
+/// For the numbers, `d/dt(∂T/∂q̇_r) − ∂T/∂q_r` is formed from the accelerations of step 4
+/// (`Σ m a*·∂v*/∂q̇_r + (I·α + ω×I·ω)·∂ω/∂q̇_r`); the worked solution differentiates `T`.
+/// The two must be the same function of q, q̇ and q̈ at every state, for planar and spatial
+/// problems, trees and closed loops.
+#[test]
+fn the_kinetic_terms_for_the_numbers_are_those_of_differentiating_t() {
+    for name in [
+        "problems/double-pendulum-rods.json",
+        "problems/four-bar.json",
+        "problems/rolling-coin.json",
+        "problems/validation/all-joints-3d.json",
+        "problems/validation/sleeping-top.json",
+        "problems/validation/spherical-chain-3.json",
+    ] {
+        let problem = load_file(std::path::Path::new(name)).unwrap_or_else(|e| panic!("{e}"));
+        let derivation = derive_rows(&problem, Method::Lagrange).expect("derives");
+        let model = &derivation.model;
+        assert!(model.speeds.is_none(), "{name}: declared speeds");
+        let fast = kinetic::inertia_terms(model, derivation.inertia());
+        let by_differentiating =
+            coordinate_terms(model, &derivation.actions, false).expect("terms");
+        let mut random = Lcg(7);
+        for _ in 0..5 {
+            let mut values = Values::new();
+            for c in &problem.constants {
+                values.set(Symbol::Const(c.name.as_str().into()), c.value);
+            }
+            for i in 0..problem.coordinates.len() {
+                for order in 0..3 {
+                    values.set(problem.coordinate_symbol(i, order), random.next());
+                }
+            }
+            for (r, ((translation, rotation), t)) in
+                fast.iter().zip(&by_differentiating).enumerate()
+            {
+                let got = -(eval(translation, &values) + eval(rotation, &values));
+                let want = eval(&t.momentum_rate, &values) - eval(&t.kinetic_partial, &values);
+                assert!(
+                    (got - want).abs() <= 1e-9 * want.abs().max(1.0),
+                    "{name}, coordinate {r}: {got} from the accelerations, {want} by differentiating T"
+                );
+            }
         }
     }
 }

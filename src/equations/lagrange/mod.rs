@@ -17,6 +17,7 @@
 
 pub mod energy;
 pub mod forces;
+pub mod kinetic;
 
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Form, MechanicsError, Model};
@@ -73,6 +74,8 @@ pub fn coordinate_terms(
 ///
 /// The groups of a row: `contact` the generalized forces `Q_r` and the multipliers' terms,
 /// `distance` `−∂V/∂q_r`, `inertia_force` `−(d/dt(∂T/∂q̇_r) − ∂T/∂q_r)`; their sum is zero.
+/// For the numbers the kinetic terms come from [`kinetic`], the translation in
+/// `inertia_force` and the rotation in `inertia_torque`.
 ///
 /// # Errors
 /// As for [`coordinate_terms`].
@@ -83,18 +86,24 @@ pub fn equations(
     unknowns: &[Symbol],
     (reaction_joints, kept): (&[usize], &[Symbol]),
 ) -> Result<Vec<Equation>, MechanicsError> {
-    let terms = coordinate_terms(model, actions, inertia.form == Form::Handout)?;
+    let all_groups = if kinetic::applies(model, inertia) {
+        kinetic::numeric_groups(model, actions, inertia)?
+    } else {
+        coordinate_terms(model, actions, inertia.form == Form::Handout)?
+            .into_iter()
+            .map(|t| Groups {
+                contact: &t.generalized_force + &t.multipliers,
+                distance: -t.potential_partial,
+                inertia_force: -(&t.momentum_rate - &t.kinetic_partial),
+                inertia_torque: Expr::zero(),
+            })
+            .collect()
+    };
     let problem = model.problem;
     let mut states = None;
     let second_rates = energy::second_rates_as_speeds(model);
-    let mut rows = Vec::with_capacity(terms.len());
-    for (r, t) in terms.into_iter().enumerate() {
-        let groups = Groups {
-            contact: &t.generalized_force + &t.multipliers,
-            distance: -t.potential_partial,
-            inertia_force: -(&t.momentum_rate - &t.kinetic_partial),
-            inertia_torque: Expr::zero(),
-        };
+    let mut rows = Vec::with_capacity(all_groups.len());
+    for (r, groups) in all_groups.into_iter().enumerate() {
         let groups = match &second_rates {
             Some(replace) => Groups {
                 contact: replace(&groups.contact),
