@@ -248,7 +248,9 @@ pub fn plan(derivation: &Derivation) -> Plan {
                     super::tex::constraint_direction_tex(&derivation.model, name)
                         .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into()),
                 ),
-                (None, _) if derivation.method == Method::Lagrange => Math::from(String::new()),
+                (None, _) if derivation.method == Method::Lagrange => {
+                    Math::from(super::lagrange::direction_tex(derivation, row))
+                }
                 (None, _) => "\\text{partial velocities}".into(),
             },
             unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),

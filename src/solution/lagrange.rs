@@ -66,6 +66,44 @@ pub fn equation_tex(derivation: &Derivation, sum: &Sum) -> Option<String> {
     }
 }
 
+/// The plan table's direction of one of Lagrange's rows: the coordinate whose equation it
+/// is (`\delta q_{1}`, the variation the virtual work is taken along), or for a relaxed
+/// joint's row the direction the joint is let give way (or turn) along.
+pub fn direction_tex(derivation: &Derivation, row: &Equation) -> String {
+    let model = &derivation.model;
+    if let Some(r) = coordinate_of(model, row) {
+        let (_, q) = names(model, r);
+        return format!("\\delta {q}");
+    }
+    relaxed_direction(derivation, row).unwrap_or_default()
+}
+
+/// `\text{along } \hat{x}` (a force) or `\text{about } \hat{z}` (a moment) of the
+/// reaction component a relaxed joint's row brings in.
+fn relaxed_direction(derivation: &Derivation, row: &Equation) -> Option<String> {
+    use crate::symbolic::{ComponentKind, Symbol, Unknown};
+    let model = &derivation.model;
+    // The row of `u(O.Fx)` brings in the joint's own component; the multipliers of the
+    // closures and contacts it also holds are not what it is written for.
+    let Sum::Generalized { speed } = &row.sum else {
+        return None;
+    };
+    let joint = speed.strip_prefix("u(")?.split('.').next()?;
+    let (site, component) = row.unknowns.iter().find_map(|u| match u {
+        Symbol::Unknown(Unknown::Reaction { site, component }) if &**site == joint => {
+            Some((site, component))
+        }
+        _ => None,
+    })?;
+    let j = (model.problem.joints.iter()).position(|joint| joint.name.as_str() == &**site)?;
+    let reaction = (model.sites[j].reactions.iter()).find(|c| c.component() == *component)?;
+    let d = super::tex::vector_tex(model, &reaction.direction);
+    Some(match reaction.kind {
+        ComponentKind::Force => format!("\\text{{along }} {d}"),
+        ComponentKind::Moment => format!("\\text{{about }} {d}"),
+    })
+}
+
 /// A relaxed joint's row: the reaction component it brings in, `u \to F^{O}_{x}`.
 fn relaxed_tex(row: &Equation) -> String {
     // The row of `u(O.Fx)` brings in the joint's own component; the multipliers of the
