@@ -286,9 +286,29 @@ fn energies(model: &Model) -> Vec<String> {
     lines
 }
 
+/// Whether gravity and whether any spring acts: what has a potential, in `V`.
+fn potential_sources(derivation: &Derivation) -> (bool, bool) {
+    use crate::plan::forces::Source;
+    use crate::problem::LoadKind;
+    let gravity = (derivation.actions.iter()).any(|a| a.source == Source::Gravity);
+    let springs = (derivation.model.problem.loads.iter()).any(|l| {
+        matches!(
+            l.kind,
+            LoadKind::Spring { .. } | LoadKind::JointSpring { .. }
+        )
+    });
+    (gravity, springs)
+}
+
 fn forces_note(derivation: &Derivation) -> String {
     if force_rows(derivation).is_empty() {
-        return "Gravity and the springs have a potential, in $V$; no other load does work: $Q_r = 0$ for every coordinate.".into();
+        let what = match potential_sources(derivation) {
+            (true, true) => "Gravity and the springs have a potential, in $V$",
+            (true, false) => "Gravity has a potential, in $V$",
+            (false, true) => "The springs have a potential, in $V$",
+            (false, false) => "No load has a potential ($V = 0$)",
+        };
+        return format!("{what}; no other load does work: $Q_r = 0$ for every coordinate.");
     }
     let model = &derivation.model;
     let constrained = derivation
@@ -303,9 +323,15 @@ fn forces_note(derivation: &Derivation) -> String {
     } else {
         ""
     };
+    let in_v = match potential_sources(derivation) {
+        (true, true) => "; gravity and the springs are in $V$",
+        (true, false) => "; gravity is in $V$",
+        (false, true) => "; the springs are in $V$",
+        (false, false) => "",
+    };
     format!(
-        "The generalized forces of the loads without a potential{multipliers}, by virtual work:{}",
-        " a force $\\mathbf{F}$ at a point $P$ adds $\\mathbf{F} \\cdot \\partial \\mathbf{v}^{P} / \\partial \\dot{q}_r$ to $Q_r$, a couple $\\mathbf{T}$ on a body $B$ adds $\\mathbf{T} \\cdot \\partial \\boldsymbol{\\omega}^{B} / \\partial \\dot{q}_r$; gravity and the springs are in $V$."
+        "The generalized forces of the loads without a potential{multipliers}, by virtual work:{}{in_v}.",
+        " a force $\\mathbf{F}$ at a point $P$ adds $\\mathbf{F} \\cdot \\partial \\mathbf{v}^{P} / \\partial \\dot{q}_r$ to $Q_r$, a couple $\\mathbf{T}$ on a body $B$ adds $\\mathbf{T} \\cdot \\partial \\boldsymbol{\\omega}^{B} / \\partial \\dot{q}_r$"
     )
 }
 
