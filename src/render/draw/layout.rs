@@ -36,6 +36,14 @@ impl Painter {
         p2add(self.projection.point(p), self.shift)
     }
 
+    /// Where `arrow` acts on the page, to the pixel: two arrows at one spot are staggered
+    /// whatever points they are named for (a slider's pin and its guide, a pendulum's
+    /// centre and the rod's end drawn there).
+    fn spot_of(&self, arrow: &Arrow) -> String {
+        let [x, y] = self.at(arrow.at);
+        format!("{:.0},{:.0}", x + 0.0, y + 0.0)
+    }
+
     pub(super) fn stroke(
         &mut self,
         points: Vec<P2>,
@@ -493,7 +501,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     let mut drawn_at = Vec::new();
     for arrow in &scene.arrows {
         let u = painter.page_direction(arrow, scene.planar);
-        let stack = stack_of(&mut drawn_at, &arrow.at_id, u);
+        let stack = stack_of(&mut drawn_at, &painter.spot_of(arrow), u);
         let index = arrows.len();
         arrows.push(painter.arrow(arrow, scene.planar, stack, index));
     }
@@ -536,7 +544,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         let mut drawn_at = Vec::new();
         for arrow in inertia {
             let u = painter.page_direction(arrow, scene.planar);
-            let stack = stack_of(&mut drawn_at, &arrow.at_id, u);
+            let stack = stack_of(&mut drawn_at, &painter.spot_of(arrow), u);
             let index = arrows.len();
             arrows.push(painter.arrow(arrow, scene.planar, stack, index));
         }
