@@ -15,6 +15,7 @@ mod draw;
 mod friction;
 mod gears;
 mod grade;
+mod handouts_in_browser;
 mod impact;
 mod initial_state;
 mod invalid;

@@ -144,7 +144,7 @@ fn html_is_self_contained_mathml_without_script() {
     );
     // The 4x4 matrix is a MathML table, and q-double-dot is an accent under its subscript.
     assert!(html.contains("<mtable"));
-    assert!(html.contains("<msub><mover accent=\"true\"><mrow><mi>q</mi></mrow><mo>¨</mo></mover><mrow><mn>1</mn></mrow></msub>"));
+    assert!(html.contains("<msub><mover accent=\"true\"><mrow><mi>q</mi></mrow><mo class=\"dot\">¨</mo></mover><mrow><mn>1</mn></mrow></msub>"));
     // Plots are inlined as data URIs.
     assert!(
         html.contains("<img alt=\"The coordinates against time\" src=\"data:image/svg+xml;base64,")

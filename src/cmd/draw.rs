@@ -115,6 +115,7 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
         }
     }
     if let Some(svg) = motion {
+        let svg = crate::render::word_scripts::subscripts_in_words(&svg);
         crate::output::write_output(Some(&directory.join("motion.svg")), svg.as_bytes())?;
     }
     Ok(())

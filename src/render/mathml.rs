@@ -81,12 +81,20 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
 
 /// The accents of `\hat`, `\dot` and `\ddot` as the operators MathML Core places as
 /// accents (`<mo>`, not an italic identifier), the hat as the combining circumflex: a
-/// browser sets the spacing circumflex `^` as the literal caret it is.
+/// browser sets the spacing circumflex `^` as the literal caret it is. The dots are of
+/// class `dot`, which the page's style sets larger than the font's, whose dots over a
+/// letter in a fraction are a pixel across at 100 %.
 fn accents_as_operators(mathml: &str) -> String {
     mathml
         .replace("<mi>^</mi></mover>", "<mo>\u{302}</mo></mover>")
-        .replace("<mi>\u{2d9}</mi></mover>", "<mo>\u{2d9}</mo></mover>")
-        .replace("<mi>\u{a8}</mi></mover>", "<mo>\u{a8}</mo></mover>")
+        .replace(
+            "<mi>\u{2d9}</mi></mover>",
+            "<mo class=\"dot\">\u{2d9}</mo></mover>",
+        )
+        .replace(
+            "<mi>\u{a8}</mi></mover>",
+            "<mo class=\"dot\">\u{a8}</mo></mover>",
+        )
 }
 
 /// `latex` with `\_` inside `\text{…}` written `_`: the parser ends the text there and

@@ -8,12 +8,15 @@
 pub fn subscripts_in_words(html: &str) -> String {
     let mut out = String::with_capacity(html.len());
     let mut rest = html;
-    // How deep inside `<math>`, `<script>`, `<style>` (left alone) and `<svg>`.
-    let (mut skip, mut svg) = (0usize, 0usize);
+    // How deep inside `<math>`, `<script>`, `<style>` (left alone), `<title>` (plain text
+    // only) and `<svg>`.
+    let (mut skip, mut svg, mut title) = (0usize, 0usize, 0usize);
     while let Some(open) = rest.find('<') {
         let (text, tag_on) = rest.split_at(open);
         if skip == 0 {
             out.push_str(&scripts(text, svg > 0));
+        } else if skip == title {
+            out.push_str(&plain_scripts(text));
         } else {
             out.push_str(text);
         }
@@ -31,6 +34,13 @@ pub fn subscripts_in_words(html: &str) -> String {
             "svg" => Some(&mut svg),
             _ => None,
         };
+        if name == "title" && !alone {
+            title = if closing {
+                title.saturating_sub(1)
+            } else {
+                title + 1
+            };
+        }
         if let (Some(counter), false) = (counter, alone) {
             if closing {
                 *counter = counter.saturating_sub(1);
@@ -45,6 +55,30 @@ pub fn subscripts_in_words(html: &str) -> String {
         out.push_str(&scripts(rest, svg > 0));
     } else {
         out.push_str(rest);
+    }
+    out
+}
+
+/// A `<title>`'s text, which holds no markup: `word_12` as `word₁₂`, another `word_sub`
+/// joined, `wordsub`.
+fn plain_scripts(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    for (i, &c) in chars.iter().enumerate() {
+        let before = i > 0 && chars[i - 1].is_alphanumeric();
+        let after = chars.get(i + 1).is_some_and(|n| n.is_alphanumeric());
+        if c == '_' && before && after {
+            continue;
+        }
+        let lowered = chars[..i]
+            .iter()
+            .rev()
+            .take_while(|p| p.is_ascii_digit() || **p == '_')
+            .any(|p| *p == '_');
+        match c.to_digit(10).filter(|_| lowered) {
+            Some(d) => out.extend(char::from_u32(0x2080 + d)),
+            None => out.push(c),
+        }
     }
     out
 }

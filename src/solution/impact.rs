@@ -58,7 +58,7 @@ fn intro(method: Method) -> String {
         Method::MotionLaw => " By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; about a point where the impulsive reactions meet (a pin of a struck pendulum) no reaction appears, and the jumps come from the blows alone.",
         Method::NewtonEuler => " By Newton–Euler, the linear impulse on every body equals the jump m Δv* of its momentum, and the angular impulse about its mass centre the jump of its angular momentum.",
         Method::Kane => " By Kane's method, each generalized impulse (every impulse dotted with its partial velocity) equals the jump of the generalized momentum, the generalized inertia forces with each second derivative read as the jump of its rate.",
-        Method::Lagrange => " By Lagrange's equations, the jump of each generalized momentum ∂L/∂q̇_r equals the generalized impulse of the blows and the collision (each impulse dotted with ∂v/∂q̇_r), the multipliers read as the constraints' impulses.",
+        Method::Lagrange => " By Lagrange's equations, the jump of each generalized momentum (the derivative of L with respect to a coordinate's rate) equals the generalized impulse of the blows and the collision (each impulse dotted with its partial velocity), the multipliers read as the constraints' impulses.",
     };
     format!("{common}{own}")
 }

@@ -9,11 +9,10 @@ use super::picture::{
 use super::place::{text_size, Obstacles};
 use super::scene::{Arrow, Label, Role, Scene, Shape};
 use super::strokes::{
-    dashpot, ellipse_of, head, in_lane, p2add, p2norm, p2scale, p2unit, stack_of, wrap, zigzag,
+    arrow_length, clear_of_tips, dashpot, ellipse_of, head, in_lane, p2add, p2norm, p2scale,
+    p2unit, stack_of, tips_of, wrap, zigzag,
 };
 
-/// The length of every force arrow.
-const ARROW: f64 = 44.0;
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
 
@@ -88,9 +87,10 @@ impl Painter {
     fn place_labels(&mut self, arrows: &mut [DrawnArrow]) {
         for (anchor, toward, label, ink, arrow) in std::mem::take(&mut self.pending) {
             let size = text_size(&label.plain);
+            let tips = tips_of(arrows);
             let pushed = arrow
                 .and_then(|k| arrows.get_mut(k))
-                .and_then(|a| self.push_apart(a, toward, size));
+                .and_then(|a| self.push_apart(a, toward, size, &tips));
             let at = match pushed {
                 Some(at) => at,
                 None => self.obstacles.place(anchor, toward, size),
@@ -101,8 +101,17 @@ impl Painter {
 
     /// The place of a straight arrow's label of `size` close beside its tip; when there is
     /// none, the arrow is made longer along its own line, a step at a time, until there is
-    /// (its new end crossing no label). `None` when neither serves.
-    fn push_apart(&mut self, arrow: &mut DrawnArrow, toward: f64, size: P2) -> Option<P2> {
+    /// (its new end crossing no label, nor within a head's length of another arrow's tip,
+    /// `tips`). `None` when neither serves.
+    fn push_apart(
+        &mut self,
+        arrow: &mut DrawnArrow,
+        toward: f64,
+        size: P2,
+        tips: &[P2],
+    ) -> Option<P2> {
+        /// The least distance between two tips, a head's length and a little.
+        const APART: f64 = 12.0;
         const NEAR: [f64; 3] = [4.0, 12.0, 22.0];
         if arrow.arc.is_some() {
             return None;
@@ -115,6 +124,12 @@ impl Painter {
             let tip = p2add(arrow.head, p2scale(u, step));
             if self.obstacles.crosses_label(arrow.head, tip) {
                 return None;
+            }
+            if tips
+                .iter()
+                .any(|t| p2norm([t[0] - tip[0], t[1] - tip[1]]) < APART)
+            {
+                continue;
             }
             // The longer arrow first, so that its label keeps clear of it too.
             let mut heads = vec![head(tip, u)];
@@ -420,7 +435,7 @@ impl Painter {
             );
             return drawn;
         }
-        let length = ARROW + 22.0 * stack as f64;
+        let length = arrow_length(stack);
         let tip = p2add(at, p2scale(u, length));
         drawn.head = tip;
         drawn.heads.push(head(tip, u));
@@ -435,6 +450,20 @@ impl Painter {
         self.pending
             .push((tip, u[1].atan2(u[0]), arrow.label.clone(), ink, Some(index)));
         drawn
+    }
+
+    /// How many steps longer than the least `arrow` is drawn: one for each arrow drawn
+    /// before it at its spot along its line, more while its heads would meet another's.
+    fn stack(
+        &self,
+        drawn_at: &mut Vec<(P2, Option<P2>)>,
+        arrows: &[DrawnArrow],
+        arrow: &Arrow,
+        planar: bool,
+    ) -> usize {
+        let (at, u) = (self.at(arrow.at), self.page_direction(arrow, planar));
+        let stack = stack_of(drawn_at, at, u);
+        clear_of_tips(at, u, stack, &tips_of(arrows), arrow_length, 7.0)
     }
 
     /// The direction an arrow points on the page (a 2D couple, an arc: none).
@@ -492,8 +521,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     let mut arrows = Vec::new();
     let mut drawn_at = Vec::new();
     for arrow in &scene.arrows {
-        let u = painter.page_direction(arrow, scene.planar);
-        let stack = stack_of(&mut drawn_at, &arrow.at_id, u);
+        let stack = painter.stack(&mut drawn_at, &arrows, arrow, scene.planar);
         let index = arrows.len();
         arrows.push(painter.arrow(arrow, scene.planar, stack, index));
     }
@@ -535,8 +563,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         }
         let mut drawn_at = Vec::new();
         for arrow in inertia {
-            let u = painter.page_direction(arrow, scene.planar);
-            let stack = stack_of(&mut drawn_at, &arrow.at_id, u);
+            let stack = painter.stack(&mut drawn_at, &arrows, arrow, scene.planar);
             let index = arrows.len();
             arrows.push(painter.arrow(arrow, scene.planar, stack, index));
         }

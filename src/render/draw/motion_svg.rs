@@ -24,7 +24,11 @@ pub fn export(motion: &Motion) -> String {
         w = num(width),
         h = num(height),
     );
-    let _ = writeln!(out, "<title>Motion of {}</title>", xml(&motion.title));
+    let _ = writeln!(
+        out,
+        "<title>Motion of {}</title>",
+        xml(&super::svg::title_text(&motion.title))
+    );
     out.push_str(super::svg::SCRIPT_STYLE);
     out.push('\n');
     let _ = writeln!(

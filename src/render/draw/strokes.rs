@@ -2,7 +2,7 @@
 //! springs and dashpots, the ellipse a disc projects to, arrows stacked at one point, and
 //! words wrapped into lines.
 
-use super::picture::P2;
+use super::picture::{DrawnArrow, P2};
 use super::place::text_size;
 
 pub fn p2add(a: P2, b: P2) -> P2 {
@@ -114,10 +114,14 @@ pub fn ellipse_of(du: P2, dv: P2) -> (f64, f64, f64) {
     (rx, ry, angle)
 }
 
-/// How many arrows were drawn before this one at the same point along the same line on
-/// the page (within 25°, so that two forces that only look collinear in a 3D view, or that would
-/// overlap near their tail, are staggered too); 2D couples, arcs (`u` none), count apart. Records this one.
-pub fn stack_of(drawn: &mut Vec<(String, Option<P2>)>, at_id: &str, u: Option<P2>) -> usize {
+/// How many arrows were drawn before this one at (or within a head's length of) the same
+/// spot of the page along the same line (within 25°, so that two forces that only look
+/// collinear in a 3D view, or that would overlap near their tail, are staggered too),
+/// whatever points they are named for; 2D couples, arcs (`u` none), count apart. Records
+/// this one.
+pub fn stack_of(drawn: &mut Vec<(P2, Option<P2>)>, at: P2, u: Option<P2>) -> usize {
+    /// Anchors closer than this on the page count as one spot.
+    const SAME_SPOT: f64 = 16.0;
     let alike = |v: &Option<P2>| match (v, u) {
         (None, None) => true,
         (Some(a), Some(b)) => a[0] * b[0] + a[1] * b[1] > 25f64.to_radians().cos(),
@@ -125,10 +129,54 @@ pub fn stack_of(drawn: &mut Vec<(String, Option<P2>)>, at_id: &str, u: Option<P2
     };
     let count = drawn
         .iter()
-        .filter(|(id, v)| id == at_id && alike(v))
+        .filter(|(p, v)| p2norm([p[0] - at[0], p[1] - at[1]]) < SAME_SPOT && alike(v))
         .count();
-    drawn.push((at_id.to_string(), u));
+    drawn.push((at, u));
     count
+}
+
+/// The length of a straight force arrow with `stack` drawn before it along its line at its
+/// spot: every arrow has one length, a stacked one a step longer for each.
+pub fn arrow_length(stack: usize) -> f64 {
+    /// The length of every force arrow.
+    const ARROW: f64 = 44.0;
+    ARROW + 22.0 * stack as f64
+}
+
+/// The points of every straight arrowhead drawn (a moment vector has two), which a new
+/// arrow's heads keep clear of.
+pub fn tips_of(arrows: &[DrawnArrow]) -> Vec<P2> {
+    arrows
+        .iter()
+        .filter(|a| a.arc.is_none())
+        .flat_map(|a| a.heads.iter().map(|h| h[0]))
+        .collect()
+}
+
+/// `stack` raised, a step at a time, until a straight arrow from `at` along `u`, of length
+/// `length(stack)`, has its heads (the tip, and a moment vector's second head `second`
+/// back) a head's length from every point of `tips`; an arc (`u` none) keeps `stack`.
+pub fn clear_of_tips(
+    at: P2,
+    u: Option<P2>,
+    stack: usize,
+    tips: &[P2],
+    length: impl Fn(usize) -> f64,
+    second: f64,
+) -> usize {
+    /// The least distance between two arrowheads' points: a head's length and a little.
+    const APART: f64 = 12.0;
+    let Some(u) = u else { return stack };
+    let near = |p: P2| {
+        tips.iter()
+            .any(|t| p2norm([t[0] - p[0], t[1] - p[1]]) < APART)
+    };
+    (stack..stack + 6)
+        .find(|&k| {
+            let tip = p2add(at, p2scale(u, length(k)));
+            !near(tip) && !near(p2add(tip, p2scale(u, -second)))
+        })
+        .unwrap_or(stack)
 }
 
 /// Words broken into lines that fit `width`.

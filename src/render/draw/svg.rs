@@ -317,6 +317,16 @@ fn text(out: &mut String, item: &Item, coloured: bool) {
 pub(super) const SCRIPT_STYLE: &str =
     "<style type=\"text/css\">.mbd tspan{font-size:9px}.mbd tspan.b{font-size:13px}</style>";
 
+/// A title as the `<title>` element's plain text, read aloud or shown as a tooltip: its
+/// scripts follow their letter without the `_` and `^` that the drawn title sets as
+/// tspans (`q_A` reads `qA`).
+pub(super) fn title_text(title: &str) -> String {
+    title
+        .chars()
+        .filter(|c| !matches!(c, '_' | '^' | '{' | '}'))
+        .collect()
+}
+
 /// The picture as an SVG document; every id (and `data-at`) starts with `prefix`.
 pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     let mut out = String::new();
@@ -333,7 +343,7 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
         w = num(picture.width),
         h = num(picture.height),
     );
-    let _ = writeln!(out, "<title>{}</title>", xml(title));
+    let _ = writeln!(out, "<title>{}</title>", xml(&title_text(title)));
     out.push_str(SCRIPT_STYLE);
     out.push('\n');
     let _ = writeln!(

@@ -1,0 +1,249 @@
+// Headless Chromium reads the handouts and pictures as a student sees them. Run by
+// tests/browser_handouts.rs:  node handouts.js MODE ARGS...; exits 0 when every check passes
+// and prints what failed otherwise.
+//   texts FILE...             no text node of any page (HTML or SVG) shows a literal ^, _ or ˆ
+//   overdots HTML...          every dot over a letter is inked, above its letter and unclipped,
+//                             and q, q̇, q̈ differ where they stand in fractions and brackets
+//   friction EXPECTED FILE... the arrow labelled EXPECTED.label points along EXPECTED.page
+//                             (a unit vector on the page, y downward) in every picture of FILE
+//   arrows FILE...            no two force arrows of a picture lie on top of each other: their
+//                             heads apart, and two along one line of different lengths
+'use strict';
+const { chromium } = require('playwright-core');
+
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const failures = [];
+function check(ok, what) {
+  if (!ok) failures.push(what);
+  if (!ok || process.env.VERBOSE) console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+}
+
+async function browser() {
+  return chromium.launch({
+    executablePath: CHROMIUM,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+}
+
+// Opens each file in turn in one page at 100 % zoom and calls `visit(page, file)`.
+async function each(files, visit) {
+  const b = await browser();
+  const page = await b.newPage({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+  for (const file of files) {
+    await page.goto('file://' + file);
+    await visit(page, file);
+  }
+  await b.close();
+}
+
+// Every text node outside scripts and styles, with the characters a reader must not see.
+async function texts(files) {
+  await each(files, async (page, file) => {
+    const bad = await page.evaluate(() => {
+      const found = [];
+      const walker = document.createTreeWalker(document.documentElement, NodeFilter.SHOW_TEXT);
+      for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+        const parent = n.parentNode ? n.parentNode.nodeName.toLowerCase() : '';
+        if (parent === 'script' || parent === 'style') continue;
+        if (/[\^_ˆ]/.test(n.nodeValue)) found.push(`<${parent}> ${n.nodeValue.trim().slice(0, 80)}`);
+      }
+      return found;
+    });
+    check(bad.length === 0, `${file}: no literal ^, _ or ˆ in its text (${bad.length} found) ${bad.slice(0, 5).join(' | ')}`);
+  });
+}
+
+// The overdots of a page: for each <mover> whose accent is a dot, the boxes of the dot and
+// its letter, whether an ancestor that clips (overflow not visible) cuts the dot, where it
+// stands (in a fraction, in brackets), and a key naming the letter and its dots.
+function measureDots() {
+  const DOTS = { '˙': 1, '¨': 2, '\u0307': 1, '\u0308': 2, '\u20db': 3 };
+  const found = [];
+  for (const mover of document.querySelectorAll('mover')) {
+    const [base, accent] = mover.children;
+    if (!base || !accent) continue;
+    const dots = DOTS[accent.textContent.trim()];
+    if (!dots) continue;
+    const a = accent.getBoundingClientRect();
+    const q = base.getBoundingClientRect();
+    let clipped = false;
+    for (let e = mover.parentElement; e; e = e.parentElement) {
+      const style = getComputedStyle(e);
+      if (style.overflowX === 'visible' && style.overflowY === 'visible') continue;
+      const c = e.getBoundingClientRect();
+      if (a.top < c.top - 0.5 || a.bottom > c.bottom + 0.5 || a.left < c.left - 0.5 || a.right > c.right + 0.5) clipped = true;
+    }
+    const inFraction = mover.closest('mfrac') !== null;
+    let bracketed = false;
+    for (let e = mover.parentElement; e && !bracketed; e = e.parentElement) {
+      for (const mo of e.children) {
+        if (mo.nodeName.toLowerCase() === 'mo' && /[([{]/.test(mo.textContent)) bracketed = true;
+      }
+      if (e.nodeName.toLowerCase() === 'math') break;
+    }
+    found.push({ letter: base.textContent.trim(), dots, inFraction, bracketed, clipped,
+      dot: [a.left, a.top, a.width, a.height], base: [q.left, q.top, q.width, q.height] });
+  }
+  return found;
+}
+
+// The share of dark pixels in each box of `boxes` (x, y, w, h in the page) of the page's
+// screenshot, read back through a canvas.
+async function ink(page, boxes) {
+  const shots = [];
+  for (const [x, y, w, h] of boxes) {
+    const clip = { x: Math.max(0, x - 1), y: Math.max(0, y - 1), width: Math.max(1, w + 2), height: Math.max(1, h + 2) };
+    const png = await page.screenshot({ clip, fullPage: true });
+    shots.push(png.toString('base64'));
+  }
+  const shares = await page.evaluate(async (images) => {
+    const out = [];
+    for (const data of images) {
+      const img = new Image();
+      img.src = 'data:image/png;base64,' + data;
+      await img.decode();
+      const canvas = document.createElement('canvas');
+      canvas.width = img.width; canvas.height = img.height;
+      const ctx = canvas.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const px = ctx.getImageData(0, 0, img.width, img.height).data;
+      let dark = 0;
+      for (let k = 0; k < px.length; k += 4) if (px[k] + px[k + 1] + px[k + 2] < 3 * 160) dark += 1;
+      out.push(dark);
+    }
+    return out;
+  }, shots);
+  return shares;
+}
+
+async function overdots(files) {
+  await each(files, async (page, file) => {
+    const dots = await page.evaluate(measureDots);
+    check(dots.length > 0, `${file}: has dotted letters`);
+    const hard = dots.filter((d) => d.inFraction || d.bracketed);
+    check(hard.length > 0, `${file}: has dotted letters in fractions or brackets`);
+    let faults = 0;
+    for (const d of dots) {
+      const [x, y, w, h] = d.dot;
+      const where = `${d.letter}${'\u0307'.repeat(d.dots)}${d.inFraction ? ' in a fraction' : ''}${d.bracketed ? ' in brackets' : ''}`;
+      const fine = w >= 1 && h >= 1 && !d.clipped && y + h / 2 <= d.base[1] + 0.25 * d.base[3];
+      if (!fine) {
+        faults += 1;
+        if (faults <= 5) check(false, `${file}: the dot of ${where} at ${d.dot.map((v) => v.toFixed(1))} over ${d.base.map((v) => v.toFixed(1))}${d.clipped ? ' is clipped' : ''}`);
+      }
+    }
+    check(faults === 0, `${file}: ${dots.length} dots drawn above their letters, none clipped (${faults} not)`);
+    // The dots seen: the box above each letter has ink, and two dots more ink than one.
+    const sample = [];
+    for (const n of [1, 2]) {
+      const some = hard.filter((d) => d.dots === n).slice(0, 6);
+      sample.push(...some);
+    }
+    const shares = await ink(page, sample.map((d) => d.dot));
+    sample.forEach((d, k) => check(shares[k] >= d.dots, `${file}: the dot of ${d.letter} (${d.dots}) has ink: ${shares[k]} dark pixels`));
+    const mean = (n) => {
+      const s = sample.map((d, k) => [d, shares[k]]).filter(([d]) => d.dots === n).map(([, v]) => v);
+      return s.length ? s.reduce((x, y) => x + y, 0) / s.length : null;
+    };
+    const [one, two] = [mean(1), mean(2)];
+    if (one !== null && two !== null) check(two > one, `${file}: two dots have more ink than one (${two} > ${one})`);
+  });
+}
+
+// Every straight force arrow of the page: its label, its tail and head on the page (through
+// the element's screen transform), the box of its head and its picture.
+function measureArrows() {
+  const out = [];
+  const pictures = [...document.querySelectorAll('svg')];
+  pictures.forEach((svg, k) => {
+    for (const g of svg.querySelectorAll('g.force')) {
+      const line = g.querySelector('line');
+      const path = g.querySelector('path:last-of-type');
+      const box = (e) => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; };
+      const item = { picture: k, title: (svg.querySelector('title') || {}).textContent || '', label: g.getAttribute('data-label'), kind: g.getAttribute('data-kind'), head: path ? box(path) : null, box: box(g) };
+      if (line) {
+        const m = line.getScreenCTM();
+        const at = (x, y) => { const p = new DOMPoint(x, y).matrixTransform(m); return [p.x, p.y]; };
+        item.tail = at(line.x1.baseVal.value, line.y1.baseVal.value);
+        item.tip = at(line.x2.baseVal.value, line.y2.baseVal.value);
+      }
+      out.push(item);
+    }
+  });
+  return out;
+}
+
+async function friction(expectedPath, files) {
+  const expected = JSON.parse(require('fs').readFileSync(expectedPath, 'utf8'));
+  await each(files, async (page, file) => {
+    const arrows = (await page.evaluate(measureArrows)).filter((a) => a.label === expected.label);
+    check(arrows.length > 0, `${file}: an arrow labelled ${expected.label}`);
+    for (const a of arrows) {
+      const d = [a.tip[0] - a.tail[0], a.tip[1] - a.tail[1]];
+      const n = Math.hypot(d[0], d[1]);
+      const along = (d[0] * expected.page[0] + d[1] * expected.page[1]) / n;
+      const headCentre = [(a.head[0] + a.head[2]) / 2, (a.head[1] + a.head[3]) / 2];
+      const headAtTip = Math.hypot(headCentre[0] - a.tip[0], headCentre[1] - a.tip[1]) < Math.hypot(headCentre[0] - a.tail[0], headCentre[1] - a.tail[1]);
+      check(along > 0.999 && headAtTip, `${file} (${a.title}): ${expected.label} drawn along ${d.map((v) => (v / n).toFixed(3))} with its head at the tip, against the slip (${expected.page})`);
+    }
+  });
+}
+
+// Whether two straight arrows share their line over more than a few pixels in one sense.
+function alongEachOther(a, b) {
+  if (!a.tail || !b.tail) return false;
+  const u = [a.tip[0] - a.tail[0], a.tip[1] - a.tail[1]];
+  const v = [b.tip[0] - b.tail[0], b.tip[1] - b.tail[1]];
+  const lu = Math.hypot(u[0], u[1]); const lv = Math.hypot(v[0], v[1]);
+  if (lu < 1 || lv < 1) return false;
+  const cos = (u[0] * v[0] + u[1] * v[1]) / (lu * lv);
+  if (cos < 0.995) return false;
+  const w = [b.tail[0] - a.tail[0], b.tail[1] - a.tail[1]];
+  const off = Math.abs(u[0] * w[1] - u[1] * w[0]) / lu;
+  if (off > 3) return false;
+  const s0 = (w[0] * u[0] + w[1] * u[1]) / lu;
+  const s1 = s0 + lv * cos;
+  return Math.min(lu, Math.max(s0, s1)) - Math.max(0, Math.min(s0, s1)) > 3;
+}
+
+function boxesMeet(p, q) {
+  return p && q && p[0] < q[2] - 0.5 && q[0] < p[2] - 0.5 && p[1] < q[3] - 0.5 && q[1] < p[3] - 0.5;
+}
+
+async function arrows(files) {
+  let total = 0;
+  await each(files, async (page, file) => {
+    const all = await page.evaluate(measureArrows);
+    total += all.length;
+    for (let i = 0; i < all.length; i += 1) {
+      for (let j = i + 1; j < all.length; j += 1) {
+        const [a, b] = [all[i], all[j]];
+        if (a.picture !== b.picture) continue;
+        const heads = boxesMeet(a.head, b.head);
+        // A longer arrow may share its line with a shorter one (the pictures' caption says
+        // so): on top of each other only when their tips meet too.
+        const along = alongEachOther(a, b) && Math.hypot(a.tip[0] - b.tip[0], a.tip[1] - b.tip[1]) < 8;
+        check(!heads && !along, `${file} (${a.title}): ${a.label} and ${b.label} ${heads ? 'heads meet' : along ? 'lie along each other' : 'apart'}`);
+      }
+    }
+  });
+  // A torque-free body has none; the pictures as a whole have many.
+  check(total > files.length, `${files.length} pictures hold ${total} force arrows`);
+}
+
+(async () => {
+  const [mode, ...args] = process.argv.slice(2);
+  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows };
+  if (!modes[mode]) { console.log(`unknown mode ${mode}`); process.exit(2); }
+  try {
+    await modes[mode](args);
+  } catch (e) {
+    check(false, `${mode}: ${e.stack || e}`);
+  }
+  if (failures.length) {
+    console.log(`${failures.length} failed`);
+    process.exit(1);
+  }
+  console.log('all passed');
+})();
