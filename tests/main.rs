@@ -9,6 +9,8 @@ mod browser;
 mod checks;
 mod collected_constants;
 mod compact;
+mod course_answers;
+mod course_words;
 mod composite;
 mod constraints;
 mod draw;
