@@ -31,7 +31,7 @@ fn bundled() -> Vec<PathBuf> {
     crate::support::all_problems()
 }
 
-/// The signed terms of a line of math, split at ` + ` and ` - ` outside braces, with any
+/// The signed terms of a line of math, split at ` + `, ` - ` and ` = ` outside braces, with any
 /// brackets around a term taken off.
 fn terms(line: &str) -> Vec<(char, String)> {
     let mut out = Vec::new();
@@ -48,11 +48,16 @@ fn terms(line: &str) -> Vec<(char, String)> {
         let split = depth <= 1
             && i + 2 < chars.len()
             && chars[i] == ' '
-            && matches!(chars[i + 1], '+' | '-')
+            && matches!(chars[i + 1], '+' | '-' | '=')
             && chars[i + 2] == ' ';
         if split {
             out.push((sign, current.clone()));
-            sign = chars[i + 1];
+            // Each side of an equation starts with a term of its own.
+            sign = if chars[i + 1] == '=' {
+                '+'
+            } else {
+                chars[i + 1]
+            };
             current.clear();
             i += 3;
             continue;
@@ -63,7 +68,10 @@ fn terms(line: &str) -> Vec<(char, String)> {
     out.push((sign, current));
     out.into_iter()
         .map(|(s, t)| {
-            let t = t.trim().trim_start_matches(['[', '(']).trim_end_matches([']', ')']);
+            let t = t
+                .trim()
+                .trim_start_matches(['[', '('])
+                .trim_end_matches([']', ')']);
             (s, t.to_string())
         })
         .collect()

@@ -16,9 +16,9 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod impact;
+pub mod stability;
 mod stages;
 pub mod statics;
-pub mod stability;
 mod statics_answers;
 mod sweep;
 

@@ -27,7 +27,11 @@ pub struct Edge {
 /// The name of an edge among an answer's values: `stable` or `unstable` (beyond it),
 /// with `~` where it oscillates.
 fn name(edge: &Edge) -> String {
-    let side = if edge.stable_above { "stable" } else { "unstable" };
+    let side = if edge.stable_above {
+        "stable"
+    } else {
+        "unstable"
+    };
     match edge.oscillates {
         true => format!("{side}~"),
         false => side.into(),
@@ -105,16 +109,18 @@ pub fn answer(
     if found.edges.is_empty() {
         return Err(failure(
             question,
-            format!(
-                "the stability does not change for {constant_name} from {from} to {to}"
-            ),
+            format!("the stability does not change for {constant_name} from {from} to {to}"),
         ));
     }
     let mut values = Vec::new();
     for &(value, stable_above) in &found.edges {
         // On the unstable side, just beyond: the eigenvalue with the largest real part.
         let step = 1e-3 * value.abs().max(1e-3);
-        let beside = if stable_above { value - step } else { value + step };
+        let beside = if stable_above {
+            value - step
+        } else {
+            value + step
+        };
         let mut p = problem.clone();
         crate::problem::apply_overrides(&mut p, &[(constant_name.clone(), beside)])?;
         let (q, rates) = state_of(question, &p);

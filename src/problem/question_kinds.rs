@@ -95,7 +95,12 @@ impl Reader {
     /// constant `vary` goes from `from` to `to`, the question's state changes stability.
     pub(super) fn stability(&mut self, value: &Value, path: &str) -> Option<QuestionKind> {
         let fields = object(value, path, &mut self.diag)?;
-        check_keys(fields, path, &["vary", "from", "to", "count"], &mut self.diag);
+        check_keys(
+            fields,
+            path,
+            &["vary", "from", "to", "count"],
+            &mut self.diag,
+        );
         let vpath = key_path(path, "vary");
         let Some(name) = fields.get("vary") else {
             self.diag.hint(

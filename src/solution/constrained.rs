@@ -90,16 +90,11 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         .iter()
         .map(|n| quoted_as_math(problem, n))
         .collect();
-    notes.extend(
-        constraints
-            .dropped
-            .iter()
-            .map(|(row, why)| {
-                // `teeth.height`: the height constraint of the contact teeth.
-                let (site, what) = row.split_once('.').unwrap_or((row.as_str(), "position"));
-                format!("The {what} constraint at {site} is left out: {why}.").replace('`', "")
-            }),
-    );
+    notes.extend(constraints.dropped.iter().map(|(row, why)| {
+        // `teeth.height`: the height constraint of the contact teeth.
+        let (site, what) = row.split_once('.').unwrap_or((row.as_str(), "position"));
+        format!("The {what} constraint at {site} is left out: {why}.").replace('`', "")
+    }));
     notes.extend(constraints.relations.iter().map(|(name, relation)| {
         format!(
             "Wherever the distance constraint of {name} holds, ${}$: its line of centres is a unit vector. Its rows, and the equations below where that shortens them, are written with it.",

@@ -52,7 +52,7 @@ pub fn in_symbols(
             }
         }
         let sum = simplify(&add(
-            (columns.iter().zip(rates)).map(|(column, &k)| &column[d] * &rate(k)),
+            (columns.iter().zip(rates)).map(|(column, &k)| &column[d] * &rate(k))
         ));
         let text = format!("{} = {}", latex(&rate(s)), latex(&sum));
         if text.len() > LONGEST {

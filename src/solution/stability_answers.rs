@@ -82,7 +82,12 @@ pub fn note(problem: &Problem, question: &Question, answer: &Answer) -> String {
 
 /// `answer --format json`'s fields: `"edges": [ { "value": 4.29, "stable_above": true,
 /// "oscillates": true } ]` and the unit.
-pub fn record(problem: &Problem, question: &Question, answer: &Answer, out: &mut Map<String, Value>) {
+pub fn record(
+    problem: &Problem,
+    question: &Question,
+    answer: &Answer,
+    out: &mut Map<String, Value>,
+) {
     let Some(constant) = constant_of(question) else {
         return;
     };

@@ -103,7 +103,11 @@ fn moves(e: &Expr) -> bool {
 }
 
 /// The motion until `friction` rolls, when the equations give constant accelerations.
-fn closed_form(problem: &Problem, derivation: &Derivation, friction: &FrictionSite) -> Option<Closed> {
+fn closed_form(
+    problem: &Problem,
+    derivation: &Derivation,
+    friction: &FrictionSite,
+) -> Option<Closed> {
     let stick = &friction.stick[0];
     let system = &derivation.system;
     let n = system.b.len();
@@ -271,8 +275,8 @@ fn steps_for(
         ));
     }
     if let QuestionKind::Value { expression, .. } = &question.kind {
-        let Some(k) = (0..problem.coordinates.len())
-            .find(|&k| *expression == problem.coordinate_expr(k, 1))
+        let Some(k) =
+            (0..problem.coordinates.len()).find(|&k| *expression == problem.coordinate_expr(k, 1))
         else {
             return steps;
         };
@@ -290,7 +294,11 @@ fn steps_for(
             &crate::numeric::answers::Quantity::Named(String::new()),
         );
         let unit = crate::render::units::unit_tex(&unit);
-        let unit = if unit.is_empty() { unit } else { format!("\\ {unit}") };
+        let unit = if unit.is_empty() {
+            unit
+        } else {
+            format!("\\ {unit}")
+        };
         steps.push(step(
             "At that instant the rate has grown from its start by the constant acceleration times the time:",
             format!(
