@@ -135,7 +135,11 @@ impl Reader {
             Some(v) => number(v, &key_path(path, "count"), &mut self.diag)?,
             None => 19.0,
         };
-        if !(from < to) || count < 2.0 || count > 1000.0 || count.fract() != 0.0 {
+        if from.partial_cmp(&to) != Some(std::cmp::Ordering::Less)
+            || count < 2.0
+            || count > 1000.0
+            || count.fract() != 0.0
+        {
             self.diag.hint(
                 path,
                 "the range is empty or the count is not a whole number from 2 to 1000",

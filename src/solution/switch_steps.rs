@@ -120,7 +120,7 @@ fn closed_form(
     let (f, normal) = (column(&stick.unknown)?, column(&friction.normal[0])?);
     let v = initial_values(problem);
     let slip0 = eval(&stick.velocity, &v);
-    if !(slip0.abs() > 1e-9) {
+    if slip0.is_nan() || slip0.abs() <= 1e-9 {
         return None;
     }
     // The sliding law, F = −σ μ N, σ the sign that opposes the slip with N pressing.
@@ -194,7 +194,7 @@ pub(super) fn eliminate(mut a: Vec<Vec<Expr>>, mut b: Vec<Expr>, v: &Values) -> 
             .filter(|&r| !used[r])
             .map(|r| (r, eval(&a[r][col], v).abs()))
             .max_by(|x, y| x.1.total_cmp(&y.1))?;
-        if !(size > 1e-12) {
+        if size.is_nan() || size <= 1e-12 {
             return None;
         }
         used[row] = true;
