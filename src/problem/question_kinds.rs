@@ -136,8 +136,7 @@ impl Reader {
             None => 19.0,
         };
         if from.partial_cmp(&to) != Some(std::cmp::Ordering::Less)
-            || count < 2.0
-            || count > 1000.0
+            || !(2.0..=1000.0).contains(&count)
             || count.fract() != 0.0
         {
             self.diag.hint(

@@ -203,9 +203,10 @@ pub(super) fn eliminate(mut a: Vec<Vec<Expr>>, mut b: Vec<Expr>, v: &Values) -> 
                 continue;
             }
             let factor = simplify(&(&a[r][col] / &a[row][col]));
-            for c in 0..n {
-                if !a[row][c].is_zero() {
-                    a[r][c] = simplify(&(&a[r][c] - &(&factor * &a[row][c])));
+            let pivot_row = a[row].clone();
+            for (entry, p) in a[r].iter_mut().zip(&pivot_row) {
+                if !p.is_zero() {
+                    *entry = simplify(&(&*entry - &(&factor * p)));
                 }
             }
             b[r] = simplify(&(&b[r] - &(&factor * &b[row])));
