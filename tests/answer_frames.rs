@@ -46,16 +46,17 @@ fn state(answer: &Value, name: &str) -> f64 {
 
 /// The tooth force on the gear is tangential, +15 N along n̂_y: I_B |q̈_B| / r_B with
 /// q̈_A = T / (I_A + I_B (r_A/r_B)²) = 225 rad/s², q̈_B = −75 rad/s². Along the pinion's
-/// â (turned by q_A = 0.3) it is (15 sin 0.3, 15 cos 0.3).
+/// â (turned by q_A = 0.3) it is (15 sin 0.3, 15 cos 0.3). The bundled question asks for
+/// it in N, as its statement does; without `in` it is in the pinion's frame.
 #[test]
 fn the_gear_pairs_tooth_force_names_the_pinions_frame_and_turns_into_n() {
     let mut p = read("gear-pair-torque");
     p["find"]["questions"]
         .as_array_mut()
         .expect("questions")
-        .push(json!({ "reaction": "mesh", "in": "N" }));
+        .push(json!({ "reaction": "mesh" }));
     let found = answers(&scratch("gear", &p));
-    let (own, in_n) = (&found[1], &found[2]);
+    let (own, in_n) = (&found[2], &found[1]);
     let force = 0.03 * (1.2 / (0.002 + 0.03 / 9.0)) / 3.0 / 0.15;
     close(force, 15.0, "the tooth force by hand");
     assert_eq!(own["frame"], "A");
@@ -187,7 +188,7 @@ fn the_key_and_the_handout_name_the_frame() {
     let key = std::fs::read_to_string(dir.join("key.csv")).expect("key.csv");
     let header = key.lines().next().expect("header");
     assert!(
-        header.contains("1.x@A") && header.contains("1.y@A"),
+        header.contains("1.x@N") && header.contains("1.y@N"),
         "{header}"
     );
     let handout = run(&[
@@ -198,8 +199,8 @@ fn the_key_and_the_handout_name_the_frame() {
     ]);
     let text = String::from_utf8_lossy(&handout.stdout);
     let answers = &text[text.rfind("Answers").expect("the Answers")..];
-    assert!(answers.contains("\\hat{\\mathbf{a}}_{x}"), "{answers}");
-    assert!(!answers.contains("\\hat{\\mathbf{n}}_{x}"), "{answers}");
+    assert!(answers.contains("\\hat{\\mathbf{n}}_{y}"), "{answers}");
+    assert!(!answers.contains("\\hat{\\mathbf{a}}_{x}"), "{answers}");
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -233,7 +233,9 @@ fn the_answers_match_the_published_linear_equations() {
         "json",
     ]);
     let answers = out["answers"].as_array().expect("answers");
-    assert_eq!(answers.len(), 4);
+    // Four accelerations, then the weave and capsize speeds (tests/course_answers.rs).
+    assert_eq!(answers.len(), 5);
+    assert_eq!(answers[4]["kind"], "stability");
     let v = 5.0;
     let (kq, kr) = published_jacobians(v);
     let lean = kq * Vector2::new(1e-3, 0.0);

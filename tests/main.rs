@@ -11,6 +11,8 @@ mod collected_constants;
 mod compact;
 mod composite;
 mod constraints;
+mod course_answers;
+mod course_words;
 mod draw;
 mod friction;
 mod gears;

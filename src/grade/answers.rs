@@ -137,7 +137,29 @@ fn one(
             yes_or_no(&question.kind, answer, value)
         }
         QuestionKind::Show { .. } => shown(answer, value),
+        QuestionKind::Stability { .. } => stability(answer, value),
     }
+}
+
+/// A `stability`: the values where the stability changes, in order, each within 0.5 %.
+fn stability(answer: &Answer, value: &Value) -> Result<Option<String>, String> {
+    let given: Vec<f64> = match value {
+        Value::Array(items) => items.iter().map(number).collect::<Option<_>>(),
+        other => number(other).map(|x| vec![x]),
+    }
+    .ok_or("expected the values where the stability changes, e.g. [4.29, 6.02]")?;
+    let expected: Vec<f64> = answer.values.iter().map(|(_, x)| *x).collect();
+    if given.len() != expected.len() {
+        return Ok(Some(format!(
+            "{} values where {} were expected",
+            given.len(),
+            expected.len()
+        )));
+    }
+    let wrong: Vec<String> = (given.iter().zip(&expected))
+        .filter_map(|(g, e)| scalar(*g, *e))
+        .collect();
+    Ok((!wrong.is_empty()).then(|| wrong.join("; ")))
 }
 
 /// A `show`: `true` (or "yes") when the identity holds, or the common value of its sides
@@ -175,7 +197,11 @@ fn yes_or_no(
         // As `answer` decides: slip where friction would need more than μ|N|, tipping where
         // the normal force would have to pull.
         QuestionKind::Tips { .. } => deciding < 0.0,
-        _ => deciding > 1.0,
+        // In motion, a contact point that slides slips (friction is then μ|N|).
+        _ => {
+            crate::numeric::moving_slip::slip_speed(&answer.values).is_some_and(|s| s > 0.0)
+                || deciding > 1.0
+        }
     };
     let word = |b: bool| if b { "yes" } else { "no" };
     Ok((given != expected)

@@ -98,7 +98,7 @@ pub fn choose(
         );
         if !chosen.is_empty() {
             note.push_str(&format!(
-                "; {} chosen by pivoting on the constraint Jacobian at the initial configuration, where their columns give the largest pivots",
+                "; {} taken as the dependent ones because the position constraints are best solved for them at the initial configuration",
                 names(&chosen)
             ));
         }
@@ -136,7 +136,7 @@ pub fn choose(
         );
         if !chosen.is_empty() {
             note.push_str(&format!(
-                "; {} chosen by pivoting on the velocity-constraint matrix at the initial state",
+                "; {} taken as the dependent ones because the velocity constraints can be solved for them at the initial state",
                 names(&chosen)
             ));
         }

@@ -261,7 +261,7 @@ pub fn answer_in(
         q.copy_from_slice(&last[1..=n]);
         rates.copy_from_slice(&last[n + 1..=2 * n]);
     }
-    if question.kind.is_static() {
+    if question.kind.is_static() && !super::moving_slip::asked(problem, question) {
         return Err(failure(
             question,
             "a question of statics is answered at rest, with the friction sites sticking".into(),
@@ -373,10 +373,15 @@ pub fn answer_in(
                 }
             })
             .collect(),
-        // Answered by statics before this point.
-        QuestionKind::Slips { .. } | QuestionKind::Tips { .. } | QuestionKind::Impending { .. } => {
-            Vec::new()
+        // In motion: whether the site slides there.
+        QuestionKind::Slips { site } => {
+            super::moving_slip::values(problem, system, *site, (t, &q[..], &rates[..]))
+                .map_err(|(message, hint)| failure(question, message, &hint))?
         }
+        // Answered by statics, or over the constant's range, before this point.
+        QuestionKind::Tips { .. }
+        | QuestionKind::Impending { .. }
+        | QuestionKind::Stability { .. } => Vec::new(),
         QuestionKind::Period { coordinate } => {
             let coordinate = coordinate.map(|i| names[i].as_str());
             let found =
@@ -459,10 +464,12 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
         }
         QuestionKind::Slips { .. } => String::new(),
         QuestionKind::Tips { .. } => "N".into(),
-        QuestionKind::Impending { constant, .. } => problem.constants[*constant]
-            .unit
-            .clone()
-            .unwrap_or_default(),
+        QuestionKind::Impending { constant, .. } | QuestionKind::Stability { constant, .. } => {
+            problem.constants[*constant]
+                .unit
+                .clone()
+                .unwrap_or_default()
+        }
     }
 }
 

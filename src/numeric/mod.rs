@@ -16,6 +16,7 @@ pub use crate::symbolic::format;
 pub mod integrate;
 pub mod linear;
 pub mod linearize;
+pub mod moving_slip;
 pub mod newton;
 pub mod period;
 pub mod recursive;

@@ -16,6 +16,7 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod impact;
+pub mod stability;
 mod stages;
 pub mod statics;
 mod statics_answers;
@@ -258,22 +259,36 @@ pub fn answers(
     // At rest, and for small motions, the speeds are the rates: the equations in the
     // rates serve.
     let in_rates = problem.without_speeds();
-    // The questions of statics are answered at rest, every friction site sticking.
+    // The questions of statics are answered at rest, every friction site sticking; a
+    // `slips` asked of a moving state is answered with the motion.
+    let at_rest = |q: &crate::problem::Question| {
+        q.kind.is_static() && !crate::numeric::moving_slip::asked(problem, q)
+    };
     let mut given = vec![None; problem.questions.len()];
-    if problem.questions.iter().any(|q| q.kind.is_static()) {
+    if problem.questions.iter().any(at_rest) {
         let statics = statics::Statics::new(&in_rates, method)?;
         for (i, question) in problem.questions.iter().enumerate() {
-            if question.kind.is_static() {
+            if at_rest(question) {
                 given[i] = Some(statics_answers::answer(&statics, &in_rates, question)?);
             }
         }
     }
-    let asks_period = (problem.questions.iter())
-        .any(|q| matches!(q.kind, crate::problem::QuestionKind::Period { .. }));
+    let asks_period = (problem.questions.iter()).any(|q| {
+        use crate::problem::QuestionKind::{Period, Stability};
+        matches!(q.kind, Period { .. } | Stability { .. })
+    });
     let linearizer = match asks_period {
         true => Some(Linearizer::new(&derive(&in_rates, method)?)),
         false => None,
     };
+    // Where the stability changes, from the linearizations over the constant's range.
+    for (i, question) in problem.questions.iter().enumerate() {
+        if let (crate::problem::QuestionKind::Stability { .. }, Some(l)) =
+            (&question.kind, &linearizer)
+        {
+            given[i] = Some(stability::answer(&in_rates, l, question)?);
+        }
+    }
     let linearize = |t: f64, q: &[f64], rates: &[f64]| match &linearizer {
         Some(l) => l.at(&in_rates, t, q, rates).map_err(|e| e.to_string()),
         None => Err("no linearization".to_string()),

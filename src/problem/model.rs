@@ -561,6 +561,15 @@ pub enum QuestionKind {
     /// An identity `lhs = rhs` to derive from the equations of motion and check at the
     /// question's state, with its text as written.
     Show { lhs: Expr, rhs: Expr, text: String },
+    /// The values of a constant (an index into [`Problem::constants`]) between `from` and
+    /// `to` where the question's state changes stability (a bicycle's weave and capsize
+    /// speeds), from the linearization at `count` values and bisection between them.
+    Stability {
+        constant: usize,
+        from: f64,
+        to: f64,
+        count: usize,
+    },
 }
 
 impl QuestionKind {

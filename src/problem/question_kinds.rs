@@ -90,4 +90,67 @@ impl Reader {
         }
         Some(index)
     }
+
+    /// `"stability": { "vary": "v", "from": 1, "to": 10, "count": 19 }`: where, as the
+    /// constant `vary` goes from `from` to `to`, the question's state changes stability.
+    pub(super) fn stability(&mut self, value: &Value, path: &str) -> Option<QuestionKind> {
+        let fields = object(value, path, &mut self.diag)?;
+        check_keys(
+            fields,
+            path,
+            &["vary", "from", "to", "count"],
+            &mut self.diag,
+        );
+        let vpath = key_path(path, "vary");
+        let Some(name) = fields.get("vary") else {
+            self.diag.hint(
+                path,
+                "the constant to vary is missing",
+                "give `vary`, the name of a constant, e.g. \"v\"",
+            );
+            return None;
+        };
+        let name = string(name, &vpath, &mut self.diag)?.trim().to_string();
+        let Some(constant) = self.names.constants.iter().position(|c| *c == name) else {
+            self.diag.hint(
+                &vpath,
+                format!("`{name}` is not a constant of the problem"),
+                "name a constant of `constants`",
+            );
+            return None;
+        };
+        let mut bound = |key: &str| -> Option<f64> {
+            let Some(v) = fields.get(key) else {
+                self.diag.hint(
+                    path,
+                    format!("`{key}` is missing"),
+                    "give the range as `from` and `to`, numbers in the constant's unit",
+                );
+                return None;
+            };
+            number(v, &key_path(path, key), &mut self.diag)
+        };
+        let (from, to) = (bound("from")?, bound("to")?);
+        let count = match fields.get("count") {
+            Some(v) => number(v, &key_path(path, "count"), &mut self.diag)?,
+            None => 19.0,
+        };
+        if from.partial_cmp(&to) != Some(std::cmp::Ordering::Less)
+            || !(2.0..=1000.0).contains(&count)
+            || count.fract() != 0.0
+        {
+            self.diag.hint(
+                path,
+                "the range is empty or the count is not a whole number from 2 to 1000",
+                "give `from` below `to`, and `count` (default 19) values to try between them",
+            );
+            return None;
+        }
+        Some(QuestionKind::Stability {
+            constant,
+            from,
+            to,
+            count: count as usize,
+        })
+    }
 }

@@ -24,7 +24,7 @@ use super::read::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 16] = [
+const KEYS: [&str; 17] = [
     "text",
     "value",
     "reaction",
@@ -41,10 +41,11 @@ const KEYS: [&str; 16] = [
     "tips",
     "impending",
     "in",
+    "stability",
 ];
 
 /// The keys that say what a question asks for; a question has exactly one.
-const ASKED: [&str; 9] = [
+const ASKED: [&str; 10] = [
     "value",
     "reaction",
     "drive",
@@ -54,6 +55,7 @@ const ASKED: [&str; 9] = [
     "slips",
     "tips",
     "impending",
+    "stability",
 ];
 
 impl Reader {
@@ -202,6 +204,7 @@ impl Reader {
             "steady" => self.steady(&fields["steady"], &key_path(path, "steady"))?,
             "period" => self.period(&fields["period"], &key_path(path, "period"))?,
             "show" => self.show(&fields["show"], &key_path(path, "show"))?,
+            "stability" => self.stability(&fields["stability"], &key_path(path, "stability"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };
         let frame = match fields.get("in") {

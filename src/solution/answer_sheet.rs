@@ -22,6 +22,7 @@ fn kind_name(question: &Question) -> &'static str {
         QuestionKind::Impending { .. } => "impending",
         QuestionKind::Period { .. } => "period",
         QuestionKind::Show { .. } => "show",
+        QuestionKind::Stability { .. } => "stability",
     }
 }
 
@@ -136,6 +137,9 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
                 }
             }
         }
+        QuestionKind::Stability { .. } => {
+            super::stability_answers::record(problem, question, answer, &mut out);
+        }
     }
     out.insert("state".into(), Value::Object(state(problem, answer)));
     out.insert("time".into(), number(answer.time));
@@ -231,6 +235,7 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
                 QuestionKind::Steady { .. } => format!("{base}.{found}"),
                 QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => format!("{base}.{found}"),
                 QuestionKind::Impending { .. } => base.clone(),
+                QuestionKind::Stability { .. } => format!("{base}.{found}"),
             };
             columns.push((column, x));
         }

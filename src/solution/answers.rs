@@ -57,7 +57,9 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .map(|(found, value)| value_tex(problem, question, answer, found, *value))
                 .map(Math::from).collect();
             if question.kind.is_static() {
-                view.at_note = "at rest, every friction site sticking".into();
+                if super::static_answers::slip_speed(answer).is_none() {
+                    view.at_note = "at rest, every friction site sticking".into();
+                }
                 let index = problem.questions.iter().position(|q| std::ptr::eq(q, question));
                 view.values_tex = vec![
                     Math::from(super::static_answers::value_tex(problem, question, answer)),
@@ -67,13 +69,16 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                     .map(|i| super::static_answers::note(problem, i, answers))
                     .unwrap_or_default();
             }
+            if matches!(question.kind, QuestionKind::Stability { .. }) {
+                view.values_tex = super::stability_answers::values_tex(problem, question, answer);
+                view.note = super::stability_answers::note(problem, question, answer);
+            }
             if let Some(words) = super::question_answers::note(problem, question, answer) {
                 view.note = words;
             }
-            if let Some((left, iterations)) = answer.residual {
-                let plural = if iterations == 1 { "" } else { "s" };
+            if let Some((left, _)) = answer.residual {
                 view.note = format!(
-                    "Newton's method: {iterations} iteration{plural}; every condition of the steady motion (the second derivatives asked to vanish, and any other) holds there to {}.",
+                    "Every condition of the steady motion (the second derivatives asked to vanish, and any other) holds there to {}.",
                     fixed(left)
                 );
             }
@@ -222,7 +227,7 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
                 ));
             }
             let note = if matches!(question.kind, QuestionKind::Steady { .. }) {
-                "starting guess; the other values held at the initial ones"
+                "where the search for the steady motion starts; the other values held at the initial ones"
             } else {
                 "the other values initial"
             };

@@ -90,12 +90,11 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         .iter()
         .map(|n| quoted_as_math(problem, n))
         .collect();
-    notes.extend(
-        constraints
-            .dropped
-            .iter()
-            .map(|(row, why)| format!("Constraint {row} left out: {why}.").replace('`', "")),
-    );
+    notes.extend(constraints.dropped.iter().map(|(row, why)| {
+        // `teeth.height`: the height constraint of the contact teeth.
+        let (site, what) = row.split_once('.').unwrap_or((row.as_str(), "position"));
+        format!("The {what} constraint at {site} is left out: {why}.").replace('`', "")
+    }));
     notes.extend(constraints.relations.iter().map(|(name, relation)| {
         format!(
             "Wherever the distance constraint of {name} holds, ${}$: its line of centres is a unit vector. Its rows, and the equations below where that shortens them, are written with it.",
@@ -177,7 +176,10 @@ pub fn dependent_speeds(
         rows.join(" \\\\ "),
         column(&reducer.rates)
     );
-    // The same map as equations, ẋ = −0.3 θ̇_R, for the handouts that need no C by name.
+    // The same map as equations, in symbols where they are short (θ̇ = ẋ/r), else in
+    // numbers, ẋ = −0.3 θ̇_R, for the handouts that need no C by name.
+    let values = model.values_at(0.0, q, rates);
+    let symbolic = super::relations::in_symbols(model, &dependent, &reducer.rates, &c, &values);
     let relations_tex = dependent
         .iter()
         .enumerate()
@@ -195,9 +197,12 @@ pub fn dependent_speeds(
         })
         .map(Math::from)
         .collect();
+    let relations_tex = match symbolic {
+        Some(written) => written.into_iter().map(Math::from).collect(),
+        None => relations_tex,
+    };
     let kane_tex = "\\left(F_r + F_r^*\\right) + \\sum_{s} C_{sr} \\left(F_s + F_s^*\\right) = 0, \\quad r \\text{ independent}, \\; s \\text{ dependent}".to_string();
     // Reduced partial velocities: ṽ_r = v_r + Σ_s C_sr v_s for each mass centre.
-    let values = model.values_at(0.0, q, rates);
     let all_rates: Vec<Symbol> = (0..problem.coordinates.len())
         .map(|i| problem.coordinate_symbol(i, 1))
         .collect();

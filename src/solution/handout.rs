@@ -59,6 +59,7 @@ pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<
                 let answers = pipeline::answers(problem, method)?;
                 let mut views = super::answers::section(problem, &answers);
                 super::question_steps::attach(problem, &worked.derivation, &answers, &mut views);
+                super::switch_steps::attach(problem, &worked.derivation, &answers, &mut views);
                 views
             }
         };

@@ -216,7 +216,7 @@ fn reactions(s: &ImpactSolution) -> Vec<ImpactStep> {
         .map(|(site, f, m)| {
             let name = latex_name(site);
             ImpactStep {
-                text: format!("The impulse of the reaction at {site} (on the child, in the parent's unit vectors; N s and N m s):"),
+                text: format!("The impulse of the reaction at {site} (on the body the joint carries, in the unit vectors of the body it is mounted on; N s and N m s):"),
                 math_tex: Math(format!(
                     "\\hat{{\\mathbf{{F}}}}^{{{name}}} = {},\\quad \\hat{{\\mathbf{{M}}}}^{{{name}}} = {}",
                     vector_tex(f, false),

@@ -17,7 +17,11 @@ const ROUND_OFF: f64 = 1e-12;
 pub fn assembled(rows: &mut [CoordinateView], problem: &Problem, q0: &[f64], rates0: &[f64]) {
     for (i, (row, c)) in rows.iter_mut().zip(&problem.coordinates).enumerate() {
         if let Some(&q) = q0.get(i) {
-            let word = if c.motion.is_some() { "given" } else { "guess" };
+            let word = if c.motion.is_some() {
+                "given"
+            } else {
+                "started from"
+            };
             row.initial = value_cell(q, c.initial, solved(c, c.dependent), word);
         }
         if let Some(&rate) = rates0.get(i) {
@@ -39,7 +43,7 @@ fn solved(c: &Coordinate, dependent: bool) -> Option<&'static str> {
     }
 }
 
-/// `-0.65053 (from the constraints; guess -0.65)`, or the value alone when the problem's
+/// `-0.65053 (from the constraints; started from -0.65)`, or the value alone when the problem's
 /// value stands. A value the assembly moved is from the constraints even when unmarked;
 /// a rate the problem left at 0 has no "given" beside it.
 fn value_cell(value: f64, given: f64, how: Option<&str>, word: &str) -> String {

@@ -53,6 +53,13 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             if simpler.len() < written.len() {
                 written = simpler;
             }
+        } else {
+            // An inertia group keeps its terms as formed, unless an identity merges some
+            // (R m ẍ s²_θ + R m ẍ c²_θ is R m ẍ): then it is written with it applied.
+            let simpler = simplify(e);
+            if simpler.terms().len() < e.terms().len() {
+                written = group_tex(&simpler);
+            }
         }
         let named = (inertia && e.terms().len() > MOST_INERTIA_TERMS)
             .then(|| named_inertia_group(derivation, row, k == 3))
@@ -69,7 +76,12 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         grouped = "0".into();
     }
     let mut grouped_tex = format!("{grouped} = 0");
-    let mut simplified = shown(&simplify(&row.expression));
+    // On the motion: a coordinate a constraint holds (h = R) written as its value.
+    let held = super::on_constraint::held_coordinates(&derivation.model);
+    let mut simplified = shown(&super::on_constraint::on_the_constraints(
+        &simplify(&row.expression),
+        &held,
+    ));
     let mut simplified_note = String::new();
     let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
     if index.is_some_and(|i| super::kane::sign_changed(derivation, i)) {

@@ -12,9 +12,15 @@ fn value(answer: &Answer) -> f64 {
     answer.values.first().map_or(f64::NAN, |(_, x)| *x)
 }
 
-/// Whether a `slips` answer slips: |F| > μ|N|.
+/// Whether a `slips` answer slips: in motion, a slip speed that is not zero; else (and
+/// at rest) |F| > μ|N|.
 pub fn slips(answer: &Answer) -> bool {
-    value(answer) > 1.0
+    slip_speed(answer).is_some_and(|s| s > 0.0) || value(answer) > 1.0
+}
+
+/// The slip speed of a `slips` answer asked in motion; `None` at rest.
+pub fn slip_speed(answer: &Answer) -> Option<f64> {
+    crate::numeric::moving_slip::slip_speed(&answer.values)
 }
 
 /// Whether a `tips` answer tips: the normal force would have to pull.
@@ -34,6 +40,9 @@ pub fn record(
         QuestionKind::Slips { site } => {
             out.insert("value".into(), slips(answer).into());
             out.insert("ratio".into(), number(value(answer)));
+            if let Some(speed) = slip_speed(answer) {
+                out.insert("slip_speed".into(), number(speed));
+            }
             out.insert("site".into(), problem.site_name(*site).into());
         }
         QuestionKind::Tips { site } => {
@@ -108,6 +117,10 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
         }
     };
     match &question.kind {
+        QuestionKind::Slips { .. } if slip_speed(answer).is_some_and(|s| s > 0.0) => format!(
+            "v_{{\\mathrm{{slip}}}} = {}\\ \\mathrm{{m/s}} \\neq 0",
+            number(slip_speed(answer).unwrap_or(0.0))
+        ),
         QuestionKind::Slips { .. } => format!(
             "\\frac{{|F|}}{{\\mu |N|}} = {} {} 1",
             number(x),
@@ -135,6 +148,9 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
 pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> String {
     let site = |i: usize| problem.site_name(i).replace('_', "\\_");
     match &question.kind {
+        QuestionKind::Slips { site: i } if slip_speed(answer).is_some() => {
+            moving_verdict(&site(*i), answer)
+        }
         QuestionKind::Slips { site: i } => match slips(answer) {
             false => format!(
                 "\\text{{friction at {} can hold it: it does not slip}}",
@@ -169,6 +185,22 @@ pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> S
             format!("|F| = \\mu |N| \\text{{ at {}: slip impends}}", site(*i))
         }
         _ => String::new(),
+    }
+}
+
+/// What decides a `slips` asked in motion: the contact point slides (yes), or it does not
+/// and friction can hold it (no), or sticking would need more than μ|N| (yes).
+fn moving_verdict(site: &str, answer: &Answer) -> String {
+    match (slip_speed(answer).is_some_and(|s| s > 0.0), slips(answer)) {
+        (true, _) => format!(
+            "\\text{{yes: the contact point at {site} slides, so friction is }} \\mu |N| \\text{{ against the slip}}"
+        ),
+        (false, false) => format!(
+            "\\text{{no: the contact point at {site} does not slide, and }} |F| \\le \\mu |N|"
+        ),
+        (false, true) => format!(
+            "\\text{{yes: rolling at {site} would need }} |F| > \\mu |N|"
+        ),
     }
 }
 

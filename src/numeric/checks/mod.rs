@@ -135,11 +135,13 @@ pub fn energy_check(system: &dyn System, trajectory: &Trajectory) -> Option<Chec
                 (worst, at) = (row[total] - lowest, row[0]);
             }
         }
-        // Coulomb friction, like a damper, only takes energy away.
+        // Coulomb friction, like a damper, only takes energy away. Without friction the
+        // only elements that are not conservative are dampers; with it, dampers may or may
+        // not be there, so only friction is named.
         let who = if system.friction_sites().is_empty() {
             "the dampers only remove"
         } else {
-            "the dampers and friction only remove"
+            "sliding friction only removes"
         };
         let detail = format!(
             "{who} energy: it rises by at most {} J (at t = {} s) on an energy scale of {} J",

@@ -295,13 +295,18 @@ pub fn small_oscillation(system: &dyn System, q0: &[f64]) -> Option<Check> {
             )),
         ])
     } else {
+        // Which modes were checked, in words that fit their number.
+        let which = match (checked == modes.omegas.len(), checked) {
+            (true, 2) => format!("of the two, mode {} differs more", mode + 1),
+            (true, _) => format!("of them, mode {} differs most", mode + 1),
+            (false, _) => format!("of the {checked} slowest, mode {} differs most", mode + 1),
+        };
         about(vec![Phrase::text(format!(
             ", the energies give {} modes (ω² the eigenvalues of M⁻¹K, M from the kinetic \
-             energy, K the Hessian of the potential); of the {checked} slowest, mode {} \
-             differs most: ω = {} rad/s and T = 2π/ω = {} s, and a small oscillation of the \
-             equations of motion along it (largest component {}) over {} periods {motion}",
+             energy, K the Hessian of the potential); {which}: ω = {} rad/s and \
+             T = 2π/ω = {} s, and a small oscillation of the equations of motion along it \
+             (largest component {}) over {} periods {motion}",
             modes.omegas.len(),
-            mode + 1,
             fixed(omega),
             fixed(expected),
             fixed(AMPLITUDE),

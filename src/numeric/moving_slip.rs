@@ -1,0 +1,80 @@
+//! A `slips` question asked of a moving state (a ball released skidding): whether the
+//! friction site slides there. Statics answers a `slips` question at rest; in motion the
+//! contact point's velocity along the surface decides first (a slip velocity that is not
+//! zero is sliding, whatever the forces), and where it is zero the ratio |F|/(μ|N|) that
+//! sticking needs decides, as at rest.
+
+use super::answers::Quantity;
+use super::system::System;
+use crate::problem::{Problem, Question, QuestionKind};
+
+/// The name of the slip speed among a moving `slips` answer's values.
+pub const SLIP: &str = "slip";
+
+/// The name of the ratio |F|/(μ|N|) among a `slips` answer's values.
+pub const RATIO: &str = "ratio";
+
+/// A slip speed below this (m/s) is no slip.
+const STILL: f64 = 1e-9;
+
+/// Whether `question` is a `slips` question asked of a moving state: at a time, at a
+/// switch, after an impact, or at a state where some rate is not zero.
+pub fn asked(problem: &Problem, question: &Question) -> bool {
+    if !matches!(question.kind, QuestionKind::Slips { .. }) {
+        return false;
+    }
+    let at = &question.at;
+    if at.time.is_some_and(|t| t > 0.0) || at.switch.is_some() || at.after_impact {
+        return true;
+    }
+    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    for (entry, value) in at.state.iter().flatten() {
+        if entry.order == 1 {
+            rates[entry.coordinate] = *value;
+        }
+    }
+    rates.iter().any(|r| r.abs() > 0.0)
+}
+
+/// The ratio |F|/(μ|N|) and the slip speed of the site `site` of `problem` at the state:
+/// the values of a moving `slips` answer. Sliding, the ratio is 1 (friction is μ|N|).
+///
+/// # Errors
+/// A site without friction, or a state where the equations cannot be solved; in words.
+pub fn values(
+    problem: &Problem,
+    system: &dyn System,
+    site: usize,
+    (t, q, rates): (f64, &[f64], &[f64]),
+) -> Result<Vec<(Quantity, f64)>, (String, String)> {
+    let name = problem.site_name(site);
+    let (states, _) = system
+        .friction_at(t, q, rates, None)
+        .map_err(|e| (format!("cannot answer: {e}"), "ask at another state".into()))?;
+    let Some(state) = states.iter().find(|s| s.name == name) else {
+        return Err((
+            format!("`{name}` has no friction, so whether it slips cannot be asked"),
+            "give the site a `friction` coefficient".into(),
+        ));
+    };
+    let slip = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let force = state.friction();
+    let ratio = match (state.limit > 0.0, force == 0.0) {
+        (true, _) => force / state.limit,
+        (false, true) => 0.0,
+        (false, false) => f64::INFINITY,
+    };
+    let slip = if slip > STILL { slip } else { 0.0 };
+    Ok(vec![
+        (Quantity::Named(RATIO.into()), ratio),
+        (Quantity::Named(SLIP.into()), slip),
+    ])
+}
+
+/// The slip speed of a moving `slips` answer's values, `None` for one answered at rest.
+pub fn slip_speed(values: &[(Quantity, f64)]) -> Option<f64> {
+    values
+        .iter()
+        .find(|(q, _)| matches!(q, Quantity::Named(n) if n == SLIP))
+        .map(|(_, x)| *x)
+}

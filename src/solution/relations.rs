@@ -1,0 +1,64 @@
+//! The dependent rates in symbols, `θ̇ = ẋ/r` rather than `θ̇ = 25 ẋ`: the velocity
+//! constraints solved for the dependent rates by elimination in symbols, each relation
+//! kept only where it is short and equals the numbers of `C` at the initial state.
+
+use crate::mechanics::constraint_rows::RowOrigin;
+use crate::mechanics::Model;
+use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::linear::linear_split;
+use crate::symbolic::print::latex;
+use crate::symbolic::{add, simplify, Expr};
+use nalgebra::DMatrix;
+
+/// The longest relation written in symbols (characters of LaTeX).
+const LONGEST: usize = 80;
+
+/// One `q̇_s = Σ C_sk q̇_k` per dependent rate `dependent[d]`, over the independent
+/// `rates`, in symbols; `None` unless the velocity constraints are as many as the
+/// dependent rates, every relation is short, and each equals `c` at `values`.
+pub fn in_symbols(
+    model: &Model,
+    dependent: &[usize],
+    rates: &[usize],
+    c: &DMatrix<f64>,
+    values: &Values,
+) -> Option<Vec<String>> {
+    let problem = model.problem;
+    let n = problem.coordinates.len();
+    let symbols: Vec<_> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    let rows: Vec<Vec<Expr>> = (model.constraints.rows.iter())
+        .filter(|r| !matches!(r.origin, RowOrigin::Prescribed(_)))
+        .map(|r| linear_split(&r.velocity, &symbols).ok().map(|(c, _)| c))
+        .collect::<Option<_>>()?;
+    if rows.len() != dependent.len() || dependent.is_empty() {
+        return None;
+    }
+    let a_d: Vec<Vec<Expr>> = (rows.iter())
+        .map(|row| dependent.iter().map(|&s| row[s].clone()).collect())
+        .collect();
+    // Column k of C: A_D x = −(column of the independent rate k).
+    let mut columns = Vec::new();
+    for &k in rates {
+        let b: Vec<Expr> = rows.iter().map(|row| simplify(&(-&row[k]))).collect();
+        columns.push(super::switch_steps::eliminate(a_d.clone(), b, values)?);
+    }
+    let rate = |i: usize| problem.coordinate_expr(i, 1);
+    let mut written = Vec::new();
+    for (d, &s) in dependent.iter().enumerate() {
+        for (k, column) in columns.iter().enumerate() {
+            let x = eval(&column[d], values);
+            if (x - c[(d, k)]).abs() > 1e-9 * c[(d, k)].abs().max(1.0) {
+                return None;
+            }
+        }
+        let sum = simplify(&add(
+            (columns.iter().zip(rates)).map(|(column, &k)| &column[d] * &rate(k))
+        ));
+        let text = format!("{} = {}", latex(&rate(s)), latex(&sum));
+        if text.len() > LONGEST {
+            return None;
+        }
+        written.push(text);
+    }
+    Some(written)
+}
