@@ -38,6 +38,7 @@ mod rejected;
 pub mod row_view;
 mod simulation;
 mod speeds;
+pub mod statics;
 mod spin_frames;
 mod static_answers;
 mod tex;
