@@ -85,7 +85,10 @@ fn no_statics_handout_writes_an_inertia_term() {
                     "{name} by {method}: the statics handout writes `{word}`"
                 );
             }
-            assert!(text.contains("## Step 5. Equilibrium equations"), "{name} {method}");
+            assert!(
+                text.contains("## Step 5. Equilibrium equations"),
+                "{name} {method}"
+            );
             assert!(text.contains("## Step 6. At rest"), "{name} {method}");
         }
     }
@@ -99,15 +102,27 @@ fn the_statics_handout_writes_the_numbers_of_statics() {
             let json = statics_json(name, method);
             let e = &json["equilibria"][0];
             for (coordinate, q) in e["state"].as_object().unwrap() {
-                writes(&text, q.as_f64().unwrap(), &format!("{name} {method} {coordinate}"));
+                writes(
+                    &text,
+                    q.as_f64().unwrap(),
+                    &format!("{name} {method} {coordinate}"),
+                );
             }
             for (site, r) in e["reactions"].as_object().unwrap() {
                 for x in r["force"].as_array().unwrap() {
-                    writes(&text, x.as_f64().unwrap(), &format!("{name} {method} {site}"));
+                    writes(
+                        &text,
+                        x.as_f64().unwrap(),
+                        &format!("{name} {method} {site}"),
+                    );
                 }
             }
             for (held, x) in e["held"].as_object().unwrap() {
-                writes(&text, x.as_f64().unwrap(), &format!("{name} {method} {held}"));
+                writes(
+                    &text,
+                    x.as_f64().unwrap(),
+                    &format!("{name} {method} {held}"),
+                );
             }
             if let Some(friction) = e["friction"].as_object() {
                 for (site, f) in friction {
@@ -165,7 +180,10 @@ fn the_torsion_pendulum_rests_where_k_theta_equals_m_g_d_sin_theta() {
     // Stable: the stiffness k − m g d cos θ is positive there.
     assert!(k - m * G * d * theta.cos() > 0.0);
     for method in METHODS {
-        let text = explain("statics-torsion-pendulum", &["--statics", "--method", method]);
+        let text = explain(
+            "statics-torsion-pendulum",
+            &["--statics", "--method", method],
+        );
         writes(&text, theta, "θ");
         assert!(text.contains("Newton's method"), "{method}");
         assert!(text.contains("The equilibrium is stable"), "{method}");
@@ -177,7 +195,9 @@ fn the_torsion_pendulum_rests_where_k_theta_equals_m_g_d_sin_theta() {
 /// The plan table's rows of the Motion Law's handout: (free body, equation) cells.
 fn plan_rows(text: &str) -> Vec<(String, String)> {
     let start = text.find("## Step 3. The plan").expect("step 3");
-    let end = text[start..].find("## Step 4").map_or(text.len(), |e| start + e);
+    let end = text[start..]
+        .find("## Step 4")
+        .map_or(text.len(), |e| start + e);
     text[start..end]
         .lines()
         .filter(|l| l.starts_with("| $"))
@@ -193,14 +213,21 @@ fn the_planner_takes_moments_about_the_ladder_foot_and_the_four_bar_pins() {
     let ladder = explain("statics-ladder", &["--statics"]);
     let rows = plan_rows(&ladder);
     assert!(
-        rows.iter().any(|(_, e)| e.contains("\\mathbf{M}_{\\mathrm{floor}}")),
+        rows.iter()
+            .any(|(_, e)| e.contains("\\mathbf{M}_{\\mathrm{floor}}")),
         "the ladder's moments about its foot: {rows:?}"
     );
     let four_bar = explain("statics-four-bar-held", &["--statics"]);
     let rows = plan_rows(&four_bar);
     // Each link about a pin: the coupler about one of its pins, the rocker about Q.
-    let about = |pin: &str| rows.iter().any(|(_, e)| e.contains(&format!("\\mathbf{{M}}_{{{pin}}}")));
-    assert!(about("Q") || about("R"), "the four-bar's moments about its pins: {rows:?}");
+    let about = |pin: &str| {
+        rows.iter()
+            .any(|(_, e)| e.contains(&format!("\\mathbf{{M}}_{{{pin}}}")))
+    };
+    assert!(
+        about("Q") || about("R"),
+        "the four-bar's moments about its pins: {rows:?}"
+    );
 }
 
 #[test]
@@ -212,7 +239,10 @@ fn the_student_statics_handout_leaves_the_work_blank() {
                 assert!(!text.contains(word), "{name} {method}: writes `{word}`");
             }
             assert!(text.contains("## Step 6. At rest"));
-            assert!(!text.contains("Newton's method"), "{name} {method}: the solution is given");
+            assert!(
+                !text.contains("Newton's method"),
+                "{name} {method}: the solution is given"
+            );
         }
     }
     // The torsion pendulum's equilibrium is the answer: the student's page does not give it.
@@ -245,10 +275,18 @@ fn every_statics_handout_compiles_in_latex() {
                 "-o".as_ref(),
                 file.as_os_str(),
             ]);
-            assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
             for tex in [file.clone(), dir.join(format!("{stem}-student.tex"))] {
                 let ok = std::process::Command::new("pdflatex")
-                    .args(["-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape"])
+                    .args([
+                        "-interaction=nonstopmode",
+                        "-halt-on-error",
+                        "-no-shell-escape",
+                    ])
                     .arg(tex.file_name().unwrap())
                     .current_dir(&dir)
                     .stdin(std::process::Stdio::null())

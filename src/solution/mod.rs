@@ -38,9 +38,9 @@ mod rejected;
 pub mod row_view;
 mod simulation;
 mod speeds;
-pub mod statics;
 mod spin_frames;
 mod static_answers;
+pub mod statics;
 mod tex;
 
 pub use build::{setup, solution as worked};

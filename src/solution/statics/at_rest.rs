@@ -7,42 +7,54 @@ use crate::pipeline::Worked;
 use crate::problem::Problem;
 use crate::render::context::{Kinematics, Simulation, StaticsView};
 use crate::render::draw::View;
-use crate::render::text::{Math, MarkupLine};
+use crate::render::text::{MarkupLine, Math};
 use crate::render::Solution;
 use crate::symbolic::subst::substitute;
 use crate::symbolic::{Expr, Symbol};
 
-/// The rows of `derivation` at rest: every rate and second derivative zero, so that no
-/// inertia force or torque is left in them. The q'' of a free coordinate gives way to the
-/// coordinate itself among a row's unknowns: at rest the equilibrium configuration is what
-/// the row finds. Returns, row by row, whether it is then identically zero (a constraint
-/// differentiated in time), which says nothing at rest: [`strip`] leaves those out of the
-/// handout (the rows stay, numbered as the system's).
-pub fn rows(derivation: &mut Derivation, free: &[usize]) -> Vec<bool> {
-    let problem = derivation.model.problem;
-    let free_names: Vec<String> = free
-        .iter()
-        .map(|&i| problem.coordinates[i].name.clone())
-        .collect();
+/// `e` at rest: every rate and second derivative zero.
+pub fn at_rest(e: &Expr) -> Expr {
     let rest = |s: &Symbol| match s {
         Symbol::Coord(_, order) if *order > 0 => Some(Expr::zero()),
         Symbol::Speed(..) => Some(Expr::zero()),
         _ => None,
     };
+    substitute(e, &rest)
+}
+
+/// Whether `e` vanishes at rest (a constraint differentiated in time, an inertia term).
+pub fn is_zero_at_rest(e: &Expr) -> bool {
+    crate::symbolic::simplify(&at_rest(e)).is_zero()
+}
+
+/// The rows of `derivation` at rest: every rate and second derivative zero, so that no
+/// inertia force or torque is left in them. Among a row's unknowns the q'' of a coordinate
+/// `found` gives way to the coordinate itself (its equilibrium value is what the row
+/// finds), and the other q'' go. Returns, row by row, whether it is then identically zero,
+/// which says nothing at rest: [`strip`] leaves those out of the handout (the rows stay,
+/// numbered as the system's).
+pub fn rows(derivation: &mut Derivation, found: &[usize]) -> Vec<bool> {
+    let problem = derivation.model.problem;
+    let found: Vec<Symbol> = found
+        .iter()
+        .map(|&i| problem.coordinate_symbol(i, 2))
+        .collect();
     let rows = std::mem::take(&mut derivation.rows);
     derivation.rows = rows
         .into_iter()
-        .map(|row| row.map_expressions(|e| substitute(e, &rest)))
+        .map(|row| row.map_expressions(at_rest))
         .map(|mut row| {
             let mut unknowns = Vec::new();
             for u in &row.unknowns {
                 let u = match u {
-                    Symbol::Coord(name, 2) if free_names.iter().any(|f| **f == **name) => {
-                        Symbol::Coord(name.clone(), 0)
-                    }
-                    Symbol::Coord(_, _) | Symbol::Speed(..) => continue,
+                    Symbol::Coord(name, 2) if found.contains(u) => Symbol::Coord(name.clone(), 0),
+                    Symbol::Coord(..) | Symbol::Speed(..) => continue,
                     other => other.clone(),
                 };
+                // A row at rest may have lost it with the inertia terms.
+                if !row.expression.contains(&u) {
+                    continue;
+                }
                 if !unknowns.contains(&u) {
                     unknowns.push(u);
                 }
@@ -87,9 +99,16 @@ fn keep_rows(solution: &mut Solution, derivation: &Derivation, zero: &[bool]) {
 /// Whether a line of math speaks of motion: a rate, a second derivative, an acceleration,
 /// an angular velocity or acceleration, a kinetic energy.
 pub fn speaks_of_motion(tex: &str) -> bool {
-    ["\\dot", "\\ddot", "\\mathbf{a}", "\\boldsymbol{\\alpha}", "\\mathbf{v}^{", "\\omega"]
-        .iter()
-        .any(|word| tex.contains(word))
+    [
+        "\\dot",
+        "\\ddot",
+        "\\mathbf{a}",
+        "\\boldsymbol{\\alpha}",
+        "\\mathbf{v}^{",
+        "\\omega",
+    ]
+    .iter()
+    .any(|word| tex.contains(word))
 }
 
 /// Takes out of `solution` what a body at rest does not have: inertia forces, velocities
@@ -97,6 +116,18 @@ pub fn speaks_of_motion(tex: &str) -> bool {
 /// Lagrange's kinetic energy and its derivatives, the simulation.
 pub fn strip(solution: &mut Solution, derivation: &Derivation, zero: &[bool]) {
     keep_rows(solution, derivation, zero);
+    for row in &mut solution.plan.rows {
+        row.equation_tex = Math::from(label_at_rest(row.equation_tex.as_str()));
+    }
+    for equation in &mut solution.equations {
+        equation.label_tex = Math::from(label_at_rest(equation.label_tex.as_str()));
+        if equation
+            .simplified_note
+            .contains("collected by the second derivatives")
+        {
+            equation.simplified_note = "At rest, with the kinetic energy zero:".into();
+        }
+    }
     for body in &mut solution.free_bodies {
         body.inertia.clear();
     }
@@ -187,4 +218,54 @@ pub fn student(problem: &Problem, method: Method, full: &Solution) -> Solution {
         ..StaticsView::default()
     });
     setup
+}
+
+/// A row's name at rest: Kane's `F_{r} + F^{*}_{r}` as `F_{r} = 0`, Lagrange's
+/// `d/dt ∂L/∂q̇ − ∂L/∂q = Q` as `∂V/∂q = Q`.
+pub fn label_at_rest(tex: &str) -> String {
+    let mut out = tex.to_string();
+    for inertia in [" + \\tilde{F}^{*}_{", " + F^{*}_{"] {
+        if let Some(start) = out.find(inertia) {
+            let end = out[start + inertia.len()..]
+                .find('}')
+                .map_or(out.len(), |e| start + inertia.len() + e + 1);
+            out.replace_range(start..end, " = 0");
+        }
+    }
+    const D_DT: &str = "\\frac{\\mathrm{d}}{\\mathrm{d}t} \\frac{\\partial L}{\\partial \\dot{";
+    while let Some(start) = out.find(D_DT) {
+        let rest = &out[start + D_DT.len()..];
+        let Some(close) = matching_brace(rest) else {
+            break;
+        };
+        let q = rest[..close].to_string();
+        let tail = format!("}}}} - \\frac{{\\partial L}}{{\\partial {q}}}");
+        if !rest[close..].starts_with(&tail) {
+            break;
+        }
+        let end = start + D_DT.len() + close + tail.len();
+        out.replace_range(
+            start..end,
+            &format!("\\frac{{\\partial V}}{{\\partial {q}}}"),
+        );
+    }
+    out
+}
+
+/// Where the brace closes that was opened just before `text`.
+fn matching_brace(text: &str) -> Option<usize> {
+    let mut depth = 1;
+    for (i, c) in text.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }

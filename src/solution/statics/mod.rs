@@ -11,6 +11,7 @@
 //! `statics` command's ([`crate::pipeline::statics`]).
 
 mod at_rest;
+mod plan;
 mod view;
 
 use super::Handout;
@@ -20,6 +21,7 @@ use crate::numeric::SolveError;
 use crate::pipeline::statics::{Equilibrium, Statics};
 use crate::pipeline::{self, Solver, Worked};
 use crate::problem::Problem;
+use crate::render::sections::AnswerView;
 use crate::render::Solution;
 use crate::Error;
 
@@ -37,11 +39,11 @@ pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<
     let equilibrium = statics.equilibrium(&guess, "the initial configuration")?;
     let at = at_equilibrium(&problem, &equilibrium);
     let free = statics.free().to_vec();
-    let (worked, zero) = worked_at_rest(&at, method, &equilibrium, &free)?;
+    let (worked, zero, found) = worked_at_rest(&at, method, &equilibrium, &free)?;
     let mut solution = super::worked(&worked);
     at_rest::strip(&mut solution, &worked.derivation, &zero);
     at_rest::draw(&mut solution, &worked);
-    solution.statics = Some(view::section(&at, &equilibrium, &free));
+    solution.statics = Some(view::section(&at, &equilibrium, &found));
     if settings.every_rejected {
         solution.plan.show_every_rejected();
     }
@@ -51,12 +53,7 @@ pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<
     if !problem.questions.is_empty() {
         solution.answers = match settings.student {
             true => super::answers::blank(&problem),
-            false => {
-                let answers = pipeline::answers(&problem, method)?;
-                let mut views = super::answers::section(&problem, &answers);
-                super::question_steps::attach(&problem, &worked.derivation, &answers, &mut views);
-                views
-            }
+            false => answers(&at, method, &worked)?,
         };
     }
     Ok(solution)
@@ -80,21 +77,23 @@ fn at_equilibrium(problem: &Problem, equilibrium: &Equilibrium) -> Problem {
 
 /// What the stages give at rest: the equations, the state (the equilibrium) and the
 /// solution there with every friction site sticking; no simulation. The rows are those
-/// at rest ([`at_rest::rows`]), with which of them are identically zero; the solver keeps
-/// the whole equations.
+/// at rest ([`at_rest::rows`]), with which of them are identically zero, and the free
+/// coordinates whose equilibrium value they find; the solver keeps the whole equations.
 fn worked_at_rest<'p>(
     at: &'p Problem,
     method: Method,
     equilibrium: &Equilibrium,
     free: &[usize],
-) -> Result<(Worked<'p>, Vec<bool>), Error> {
+) -> Result<(Worked<'p>, Vec<bool>, Vec<usize>), Error> {
     let mut derivation = pipeline::derive_for_handout(at, method)?;
     let solver = Solver::new(at, &derivation);
-    let zero = at_rest::rows(&mut derivation, free);
+    let found = plan::to_find(&derivation, free);
+    plan::replan(&mut derivation, &equilibrium.q, &equilibrium.rates, &found);
+    let zero = at_rest::rows(&mut derivation, &found);
     let motion = &equilibrium.motion;
     let initial = StateSolution {
         accelerations: motion.accelerations.clone(),
-        reactions: motion.reactions.clone(),
+        reactions: motion.reactions.iter().map(without_roundoff).collect(),
         drives: motion.drives.clone(),
         speeds: Vec::new(),
         friction: motion.friction.clone(),
@@ -110,5 +109,32 @@ fn worked_at_rest<'p>(
         }),
         impact: None,
     };
-    Ok((worked, zero))
+    Ok((worked, zero, found))
+}
+
+/// The Answers at the equilibrium, at rest: the questions answered as `answer` answers
+/// them, for the problem placed at the equilibrium.
+fn answers(at: &Problem, method: Method, worked: &Worked) -> Result<Vec<AnswerView>, Error> {
+    let answers = pipeline::answers(at, method)?;
+    let mut views = super::answers::section(at, &answers);
+    super::question_steps::attach(at, &worked.derivation, &answers, &mut views);
+    for view in &mut views {
+        if view.at_note == "the initial state" {
+            view.at_note = "at rest, at the equilibrium".into();
+        }
+    }
+    Ok(views)
+}
+
+/// A reaction with the round-off of its solution (a component 1e-12 times the largest or
+/// less) written as the zero it is.
+fn without_roundoff(
+    (name, force, moment): &(String, [f64; 3], [f64; 3]),
+) -> (String, [f64; 3], [f64; 3]) {
+    let scale = force
+        .iter()
+        .chain(moment)
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let clean = |v: &[f64; 3]| v.map(|x| if x.abs() <= 1e-12 * scale { 0.0 } else { x });
+    (name.clone(), clean(force), clean(moment))
 }

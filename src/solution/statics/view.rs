@@ -10,10 +10,11 @@ use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::latex;
 
-/// The statics of the handout of `problem` at `equilibrium`, `free` the coordinates found.
+/// The statics of the handout of `problem` at `equilibrium`, `free` the coordinates whose
+/// equilibrium value the equations find.
 pub fn section(problem: &Problem, equilibrium: &Equilibrium, free: &[usize]) -> StaticsView {
     StaticsView {
-        sought: MarkupLine::from(sought(problem, free)),
+        sought: MarkupLine::from(sought(problem, free, !equilibrium.motion.drives.is_empty())),
         kinematics_note: MarkupLine::from(
             "At rest every velocity and every acceleration is zero, so no body has an inertia force or torque: statics needs only the positions of the points where the forces act, with which step 2 writes them.",
         ),
@@ -37,7 +38,7 @@ pub fn section(problem: &Problem, equilibrium: &Equilibrium, free: &[usize]) -> 
             equilibrium
                 .stability
                 .as_ref()
-                .map(stability_words)
+                .map(|s| stability_words(s, free.is_empty()))
                 .unwrap_or_default(),
         ),
         eigenvalues_tex: equilibrium
@@ -81,9 +82,13 @@ fn names_tex(problem: &Problem, indices: &[usize]) -> String {
     names.join(", ")
 }
 
-fn sought(problem: &Problem, free: &[usize]) -> String {
+fn sought(problem: &Problem, free: &[usize], held: bool) -> String {
     if free.is_empty() {
-        return "The system is at rest, and every coordinate is held, prescribed or fixed by the constraints: the configuration is known, and what is sought are the forces that keep the system there: the reactions and the holding forces of the supports.".into();
+        let what = match held {
+            true => "the reactions and the holding forces of the supports",
+            false => "the reactions",
+        };
+        return format!("The system is at rest in the configuration given, which its supports, constraints and friction fix: what is sought are the forces that keep it there, {what}.");
     }
     format!(
         "The system is at rest: every coordinate keeps its value. Sought: the equilibrium configuration (the value of {} at which the forces on every body balance), the reactions there and whether the equilibrium is stable.",
@@ -93,7 +98,7 @@ fn sought(problem: &Problem, free: &[usize]) -> String {
 
 fn found(problem: &Problem, equilibrium: &Equilibrium, free: &[usize]) -> String {
     if free.is_empty() {
-        return "Every coordinate is held or fixed, so the configuration is the one given, and the equations of step 5 are linear in the reactions and holding forces; solved for them:".into();
+        return "The configuration is the one given, so the equations of step 5 are linear in the reactions and holding forces; solved for them, at".into();
     }
     let names = names_tex(problem, free);
     match equilibrium.iterations {
@@ -146,7 +151,15 @@ fn friction(equilibrium: &Equilibrium) -> Vec<StaticFriction> {
         .collect()
 }
 
-fn stability_words(stability: &Stability) -> String {
+/// The stability in words; `fixed` when friction and the constraints fix the configuration.
+fn stability_words(stability: &Stability, fixed: bool) -> String {
+    let all_zero = stability
+        .eigenvalues
+        .iter()
+        .all(|&(re, im)| re == 0.0 && im == 0.0);
+    if fixed && all_zero {
+        return "While friction holds, no coordinate can move: every eigenvalue of the linearized equations is zero, and there is no motion near the equilibrium to call stable or unstable.".into();
+    }
     match stability.kind {
         StabilityKind::Stable => "The equilibrium is stable: no eigenvalue of the equations linearized about it has a positive real part, and none is zero, so a small disturbance leaves the system oscillating about the equilibrium or returning to it.",
         StabilityKind::Unstable => "The equilibrium is unstable: an eigenvalue of the equations linearized about it has a positive real part, so a small disturbance grows and the system moves away.",
