@@ -48,6 +48,7 @@ mod slider_friction;
 mod snapshots_by_problem;
 mod speeds;
 mod statics;
+mod statics_explain;
 mod support;
 mod svg_reader;
 mod validation;

@@ -150,6 +150,10 @@ pub struct ExplainArgs {
     /// not only the few that show why the plan is what it is.
     #[arg(long)]
     pub verbose: bool,
+    /// The worked solution of the problem at rest: the equilibrium, its reactions, holding
+    /// forces, friction ratios and stability, with no inertia forces.
+    #[arg(long, conflicts_with = "linearize")]
+    pub statics: bool,
 }
 
 // `grade`

@@ -139,7 +139,11 @@ pub fn rendered(
         motion: args.format == FormatArg::Html,
         every_rejected: args.verbose,
     };
-    let mut solution = solution::handout(&problem, super::method(args.common.method), &settings)?;
+    let method = super::method(args.common.method);
+    let mut solution = match args.statics {
+        true => solution::statics::handout(&problem, method, &settings)?,
+        false => solution::handout(&problem, method, &settings)?,
+    };
     // Only Markdown refers to plot files: the HTML handout holds its plots (one file), the
     // LaTeX draws them. On standard output there is nowhere to put them either.
     let beside = output.filter(|_| args.format == FormatArg::Markdown);

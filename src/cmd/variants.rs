@@ -216,6 +216,7 @@ fn explain_args(args: &VariantsArgs, file: &Path) -> ExplainArgs {
         both: true,
         linearize: None,
         verbose: false,
+        statics: false,
     }
 }
 

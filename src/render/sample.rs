@@ -97,6 +97,7 @@ pub fn sample() -> Solution {
             label: s("1"),
             steps: Vec::new(),
         }],
+        statics: None,
     }
 }
 

@@ -43,6 +43,7 @@ mod speeds;
 mod spin_frames;
 mod stability_answers;
 mod static_answers;
+pub mod statics;
 mod switch_steps;
 mod tex;
 

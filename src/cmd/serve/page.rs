@@ -27,6 +27,7 @@ pub(crate) fn page(path: &Path, method: MethodArg) -> String {
         both: false,
         linearize: None,
         verbose: false,
+        statics: false,
     };
     // A panic deep in a rebuild must not take the server down with it.
     let built = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {

@@ -26,6 +26,7 @@ use serde::Serialize;
 mod equations;
 mod lagrange;
 mod named;
+mod statics;
 
 pub use super::figure::Figure;
 pub use super::sample::sample;
@@ -35,6 +36,7 @@ pub use equations::{
 };
 pub use lagrange::{GeneralizedForceRow, LagrangeView};
 pub use named::{Named, WhereEntry};
+pub use statics::{StaticFriction, StaticsView};
 
 /// The worked solution of one problem by one method: the six steps.
 #[derive(Clone, Debug, Default, Serialize)]
@@ -124,6 +126,9 @@ pub struct Solution {
     pub linearization: Option<super::sections::LinearizationSection>,
     /// The answers to the problem's `find.questions` (blank in the student's handout).
     pub answers: Vec<super::sections::AnswerView>,
+    /// The problem at rest (`explain --statics`): steps 4 to 6 say this in place of the
+    /// kinematics, the equations of motion and the simulation.
+    pub statics: Option<StaticsView>,
 }
 
 /// One constraint row as step 1 shows it.

@@ -126,6 +126,24 @@ pub fn draw(
     accelerations: Option<&[f64]>,
     view: View,
 ) -> Vec<Drawing> {
+    drawings(derivation, t, q, rates, accelerations, view, true)
+}
+
+/// The pictures of [`draw`] for a system at rest at `q`: the free bodies without kinetic
+/// diagrams (there are no inertia forces to draw).
+pub fn draw_at_rest(derivation: &Derivation, q: &[f64], rates: &[f64], view: View) -> Vec<Drawing> {
+    drawings(derivation, 0.0, q, rates, None, view, false)
+}
+
+fn drawings(
+    derivation: &Derivation,
+    t: f64,
+    q: &[f64],
+    rates: &[f64],
+    accelerations: Option<&[f64]>,
+    view: View,
+    kinetic: bool,
+) -> Vec<Drawing> {
     let model = &derivation.model;
     let problem = model.problem;
     let mut numbers = Numbers::new(model, t, q, rates);
@@ -165,7 +183,10 @@ pub fn draw(
     for set in sets {
         let name = free_body_name(problem, &set);
         let title = format!("Free body {name}");
-        let scene = setting.free_body(&set, title.clone(), content);
+        let mut scene = setting.free_body(&set, title.clone(), content);
+        if !kinetic {
+            scene.kinetic = None;
+        }
         out.push(Drawing {
             name: format!("fbd-{}", name.replace(' ', "")),
             title,
