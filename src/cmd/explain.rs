@@ -91,8 +91,10 @@ fn explain_version(
     output: Option<&Path>,
     student: bool,
 ) -> Result<(), Error> {
-    let (text, solution) = rendered(args, problem_path, output, student)?;
-    if let Some(path) = output {
+    let (text, mut solution) = rendered(args, problem_path, output, student)?;
+    if let Some(path) = output.filter(|_| args.format == FormatArg::Markdown) {
+        // Only Markdown refers to plot files.
+        render::plot::draw(&mut solution.simulation.plots, Format::Markdown);
         // The plots first, so that a document never refers to a plot that is not there.
         let directory = path.parent().unwrap_or(Path::new(""));
         for plot in solution
@@ -133,13 +135,23 @@ pub fn rendered(
         )?),
         None => None,
     };
-    let settings = solution::Handout {
+    let job = crate::Job {
+        method: super::method(args.common.method),
         student,
         linearize_at,
         motion: args.format == FormatArg::Html,
+    };
+    let settings = solution::Handout {
         every_rejected: args.verbose,
     };
-    let mut solution = solution::handout(&problem, super::method(args.common.method), &settings)?;
+    // Every stage runs here, once; the handout is written from what they gave.
+    let worked = crate::pipeline::run(&problem, &job);
+    let mut solution = match (student, worked) {
+        // The student's version is the statement and the set-up even where the equations
+        // cannot be derived or solved.
+        (true, worked) => solution::student(&problem, job.method, worked.ok().as_ref(), &settings),
+        (false, worked) => solution::handout(&worked?, &settings),
+    };
     // Only Markdown refers to plot files: the HTML handout holds its plots (one file), the
     // LaTeX draws them. On standard output there is nowhere to put them either.
     let beside = output.filter(|_| args.format == FormatArg::Markdown);

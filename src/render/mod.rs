@@ -158,6 +158,17 @@ pub fn render(
     tera.autoescape_on(vec![".html.tera"]);
     prepare::register_filters(&mut tera);
     tera.add_raw_template(name, &source).map_err(tera_error)?;
+    // The plots given as data are drawn here, in the format asked.
+    let drawn;
+    let solution = match solution.simulation.plots.iter().any(|p| p.data.is_some()) {
+        true => {
+            let mut copy = solution.clone();
+            plot::draw(&mut copy.simulation.plots, format);
+            drawn = copy;
+            &drawn
+        }
+        false => solution,
+    };
     let context = prepare::context(solution, format, student).map_err(|e| error(e.to_string()))?;
     let text = tera.render(name, &context).map_err(tera_error)?;
     Ok(match format {
