@@ -158,9 +158,11 @@ pub fn render(
     tera.autoescape_on(vec![".html.tera"]);
     prepare::register_filters(&mut tera);
     tera.add_raw_template(name, &source).map_err(tera_error)?;
-    // The plots given as data are drawn here, in the format asked.
+    // The plots given as data are drawn here, in the format asked: the Markdown refers to
+    // their files, which `explain` writes beside it.
     let drawn;
-    let solution = match solution.simulation.plots.iter().any(|p| p.data.is_some()) {
+    let to_draw = format != Format::Markdown;
+    let solution = match to_draw && solution.simulation.plots.iter().any(|p| p.data.is_some()) {
         true => {
             let mut copy = solution.clone();
             plot::draw(&mut copy.simulation.plots, format);
