@@ -24,7 +24,7 @@
 //! 5. [`numeric`]: the equations compiled for numbers, the constraints' assembly, the
 //!    linear solve, integration and its checks (steps 5, 6), and linearization.
 //! 6. [`solution`]: the worked solution's content from what the stages gave
-//!    ([`pipeline::Worked`]): each step's rows, tables, where-lists and reasons, the
+//!    ([`Worked`]): each step's rows, tables, where-lists and reasons, the
 //!    pictures' scenes (`solution::pictures`: the configuration, the free-body diagrams and
 //!    the motion), the answers and the checks.
 //! 7. [`render`]: writes that content as Markdown, LaTeX or HTML through Tera templates,
@@ -33,7 +33,7 @@
 //! [`pipeline`] runs the stages for the commands in [`cmd`] (one thin file each):
 //! `load`, `derive`, the [`Solver`](pipeline::Solver) and the [`Linearizer`](pipeline::Linearizer)
 //! with the one place where a singular plan is planned again, the confirmation checks, and
-//! [`work`](pipeline::work) for `explain`. [`symbolic`] is the computer-algebra core under
+//! [`run`](pipeline::run), the one orchestrator of a handout (`explain`, `serve`, `variants`). [`symbolic`] is the computer-algebra core under
 //! all of them.
 
 pub mod cli;
@@ -53,3 +53,6 @@ pub mod solution;
 pub mod symbolic;
 
 pub use error::{BatchError, Error};
+/// What a run of the stages gives the handout ([`pipeline::run`]): the worked solution's
+/// data, which [`solution`] writes out.
+pub use pipeline::{ImpactSolution, ImpactWorked, Job, Worked};

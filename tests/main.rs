@@ -34,6 +34,7 @@ mod mathml;
 mod matrix_pattern;
 mod methods;
 mod names_render;
+mod orchestrator;
 mod pipeline;
 mod planner;
 mod questions;

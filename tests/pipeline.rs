@@ -88,7 +88,7 @@ fn a_linearization_where_the_plan_is_singular_is_made_with_a_new_plan() {
     }
 }
 
-/// `explain`'s stages (`pipeline::work`) on the spherical pendulum started at the special
+/// `explain`'s stages (`pipeline::run`) on the spherical pendulum started at the special
 /// state: the worked solution's q'' there are Newton–Euler's, and its simulation, which
 /// runs through the Motion Law solver with the recovery, ends normally with every check
 /// passing.
@@ -113,7 +113,11 @@ fn the_worked_solution_is_made_at_a_state_where_the_first_plan_is_singular() {
     {
         assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{a} against {b}");
     }
-    let (trajectory, checks) = worked.simulation.as_ref().expect("the simulation runs");
+    let simulated = worked
+        .simulation
+        .as_ref()
+        .expect("the worked solution simulates");
+    let (trajectory, checks) = simulated.as_ref().expect("the simulation runs");
     assert!(trajectory.stopped.is_none(), "{:?}", trajectory.stopped);
     assert!(!checks.is_empty());
     assert!(checks.iter().all(|c| c.passed), "{checks:?}");

@@ -141,7 +141,7 @@ pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
     motion::frame_count(duration, args.fps)?;
     let derivation =
         crate::pipeline::derive_for_handout(&problem, super::method(args.common.method))?;
-    let frames = motion::frames(&problem, &derivation, duration, args.fps)?;
+    let frames = crate::pipeline::frames(&problem, &derivation, duration, args.fps)?;
     Ok(motion_svg::export(&motion::motion(
         &derivation,
         &frames,

@@ -91,8 +91,10 @@ fn explain_version(
     output: Option<&Path>,
     student: bool,
 ) -> Result<(), Error> {
-    let (text, solution) = rendered(args, problem_path, output, student)?;
-    if let Some(path) = output {
+    let (text, mut solution) = rendered(args, problem_path, output, student)?;
+    if let Some(path) = output.filter(|_| args.format == FormatArg::Markdown) {
+        // Only Markdown refers to plot files.
+        render::plot::draw(&mut solution.simulation.plots, Format::Markdown);
         // The plots first, so that a document never refers to a plot that is not there.
         let directory = path.parent().unwrap_or(Path::new(""));
         for plot in solution
@@ -133,16 +135,27 @@ pub fn rendered(
         )?),
         None => None,
     };
-    let settings = solution::Handout {
+    let job = crate::Job {
+        method: super::method(args.common.method),
         student,
         linearize_at,
         motion: args.format == FormatArg::Html,
+    };
+    let settings = solution::Handout {
         every_rejected: args.verbose,
     };
-    let method = super::method(args.common.method);
-    let mut solution = match args.statics {
-        true => solution::statics::handout(&problem, method, &settings)?,
-        false => solution::handout(&problem, method, &settings)?,
+    let mut solution = if args.statics {
+        solution::statics::handout(&problem, job.method, student, &settings)?
+    } else {
+        // Every stage runs here, once; the handout is written from what they gave.
+        match (student, crate::pipeline::run(&problem, &job)) {
+            // The student's version is the statement and the set-up even where the
+            // equations cannot be derived or solved.
+            (true, worked) => {
+                solution::student(&problem, job.method, worked.ok().as_ref(), &settings)
+            }
+            (false, worked) => solution::handout(&worked?, &settings),
+        }
     };
     // Only Markdown refers to plot files: the HTML handout holds its plots (one file), the
     // LaTeX draws them. On standard output there is nowhere to put them either.

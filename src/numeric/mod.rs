@@ -8,6 +8,7 @@ pub mod check;
 pub mod checks;
 pub mod constraint_checks;
 pub mod evaluate;
+pub mod frame;
 pub mod friction;
 pub mod impact;
 pub mod inputs;
@@ -25,6 +26,9 @@ pub mod simulate;
 pub mod speeds;
 mod steady;
 pub mod system;
+
+pub use frame::Frame;
+pub use simulate::Trajectory;
 
 use std::fmt;
 

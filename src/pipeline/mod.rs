@@ -7,8 +7,8 @@
 //! 3. [`Solver::new`]: the equations compiled for numbers, with the constraints' assembly;
 //!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
 //!    their exact partial derivatives, for the small motions about any state;
-//! 4. [`confirm`] checks a simulation against the other methods, and [`work`] runs every
-//!    stage for a worked solution;
+//! 4. [`confirm`] checks a simulation against the other methods, and [`run`] runs each
+//!    stage once for a handout, only what its [`Job`] asks (the one orchestrator);
 //! 5. the renderers and exporters read what the stages before them produced.
 //!
 //! Recovery lives here and nowhere else: where the Motion Law's plan is singular at a state
@@ -16,6 +16,8 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod impact;
+mod motion;
+mod run;
 pub mod stability;
 mod stages;
 pub mod statics;
@@ -23,6 +25,8 @@ mod statics_answers;
 mod sweep;
 
 pub use impact::{impact, impact_at_start, ImpactSolution};
+pub use motion::frames;
+pub use run::{run, ImpactWorked, Job, Worked};
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
 pub use sweep::{sweep, Sweep, Swept};
 
@@ -31,7 +35,7 @@ use crate::mechanics::Form;
 use crate::numeric::checks::{self, Check};
 use crate::numeric::evaluate::{Compiled, StateSolution};
 use crate::numeric::linearize::{self, Linearization};
-use crate::numeric::simulate::{simulate, Trajectory};
+use crate::numeric::simulate::Trajectory;
 use crate::numeric::system::{Evaluation, System};
 use crate::numeric::SolveError;
 use crate::problem::Problem;
@@ -179,65 +183,13 @@ pub fn confirm(
     checks::confirm(problem, (method.title(), primary), &others, trajectory, q0)
 }
 
-/// Everything the worked solution shows, from every stage: the derivation, its solver, the
-/// initial state (made to meet the constraints) and the solution there, and the simulation
-/// from it with its confirmation checks.
-pub struct Worked<'p> {
-    /// The equations.
-    pub derivation: Derivation<'p>,
-    /// The equations compiled, with the recovery.
-    pub solver: Solver<'p>,
-    /// The initial coordinates, assembled.
-    pub q0: Vec<f64>,
-    /// The initial rates, assembled.
-    pub rates0: Vec<f64>,
-    /// The q'', reactions, drives and energies at the initial state.
-    pub initial: StateSolution,
-    /// The simulation and its checks, or why it could not start.
-    pub simulation: Result<(Trajectory, Vec<Check>), SolveError>,
-    /// The impact at the initial state, if the problem has one: the simulation starts
-    /// just after it.
-    pub impact: Option<ImpactSolution>,
-}
-
-/// Runs every stage for the worked solution of `problem` by `method` (see [`Worked`]).
+/// Runs every stage for the worked solution of `problem` by `method`: [`run`] with
+/// [`Job::worked`].
 ///
 /// # Errors
-/// When the equations cannot be derived, the constraints cannot be met at the initial
-/// state, or the system cannot be solved there. A simulation that cannot run is not an
-/// error: the worked solution says so.
+/// As for [`run`].
 pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
-    let derivation = derive_for_handout(problem, method)?;
-    let solver = Solver::new(problem, &derivation);
-    let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    solver.assemble(0.0, &mut q0, &mut rates0)?;
-    let initial = solver.solve(0.0, &q0, &rates0)?;
-    let impact = match &problem.impact {
-        Some(_) => Some(impact(
-            problem,
-            &derivation.model,
-            method,
-            &q0,
-            &rates0,
-            &solver,
-        )?),
-        None => None,
-    };
-    let start = impact.as_ref().map_or(&rates0, |i| &i.after);
-    let simulation = simulate(&solver, &q0, start, &problem.simulate).map(|trajectory| {
-        let checks = confirm(problem, &solver, &trajectory, &q0);
-        (trajectory, checks)
-    });
-    Ok(Worked {
-        derivation,
-        solver,
-        q0,
-        rates0,
-        initial,
-        simulation,
-        impact,
-    })
+    run(problem, &Job::worked(method))
 }
 
 /// The answers to the questions of `problem` (`find.questions`), in order, with the

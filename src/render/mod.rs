@@ -158,6 +158,19 @@ pub fn render(
     tera.autoescape_on(vec![".html.tera"]);
     prepare::register_filters(&mut tera);
     tera.add_raw_template(name, &source).map_err(tera_error)?;
+    // The plots given as data are drawn here, in the format asked: the Markdown refers to
+    // their files, which `explain` writes beside it.
+    let drawn;
+    let to_draw = format != Format::Markdown;
+    let solution = match to_draw && solution.simulation.plots.iter().any(|p| p.data.is_some()) {
+        true => {
+            let mut copy = solution.clone();
+            plot::draw(&mut copy.simulation.plots, format);
+            drawn = copy;
+            &drawn
+        }
+        false => solution,
+    };
     let context = prepare::context(solution, format, student).map_err(|e| error(e.to_string()))?;
     let text = tera.render(name, &context).map_err(tera_error)?;
     Ok(match format {

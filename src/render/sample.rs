@@ -522,5 +522,6 @@ fn plot(kind: &str, title: &str, first: &str, second: &str, unit: &str) -> Plot 
         svg_file: FileName::from(format!("{kind}.svg")),
         image_svg: SvgDocument::from(s(svg)),
         pgfplots_latex: LatexCode::from(pgfplots),
+        data: None,
     }
 }

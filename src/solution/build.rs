@@ -12,10 +12,10 @@ use crate::render::text::{Markup, MarkupLine, Math};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
 
-/// The whole worked solution from what the stages gave (`pipeline::work`): step 1 from
-/// the problem, steps 2 to 6 from the derivation, the solution at the initial state and
-/// the simulation.
-pub fn solution(worked: &crate::pipeline::Worked) -> Solution {
+/// The whole worked solution from what the stages gave (their run, [`crate::Worked`]):
+/// step 1 from the problem, steps 2 to 6 from the derivation, the solution at the initial
+/// state and the simulation.
+pub fn solution(worked: &crate::Worked) -> Solution {
     let derivation = &worked.derivation;
     let problem = derivation.model.problem;
     let mut solution = setup(problem, derivation.method);

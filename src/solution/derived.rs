@@ -4,7 +4,6 @@
 use super::long::LONG_EQUATION;
 use super::tex::{action_components, bodies_tex, initial_sign, unknowns_tex, uses_shown};
 use crate::equations::{Derivation, Method};
-use crate::pipeline::Worked;
 use crate::plan::rows::Sum;
 use crate::problem::BodyId;
 use crate::render::context::{
@@ -18,6 +17,7 @@ use crate::symbolic::print::{latex, latex_unit_vector};
 use crate::symbolic::roots::roots_of_squares;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Definition, Expr};
+use crate::Worked;
 
 /// Fills steps 2 to 6 of `solution` from what the stages gave (see [`Worked`]).
 pub fn fill(solution: &mut Solution, worked: &Worked) {
@@ -26,15 +26,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let model = &derivation.model;
     solution.plan = plan(derivation);
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
-    // s_1, c_12, listed once where they are first used. Only angles are indexed, so that a
-    // slider's distance `x` beside the angles `q1`, `q2` leaves them `s_1`, `c_12`.
-    let names: Vec<&str> = problem
-        .coordinates
-        .iter()
-        .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
-        .map(|c| c.name.as_str())
-        .collect();
-    let style = super::tex::style_of(problem).with_coordinates(&names);
+    // s_1, c_12, listed once where they are first used.
+    let style = coordinates_style(problem);
     let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
         let constraint_notes;
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
@@ -169,7 +162,38 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             };
         }
     }
-    super::simulation::simulation(solution, problem, &worked.simulation);
+    if let Some(simulated) = &worked.simulation {
+        super::simulation::simulation(solution, problem, simulated);
+    }
+}
+
+/// What the student's blank tables count: the free bodies and the rows of step 5 of the
+/// worked solution, and Lagrange's energies and generalized forces (written in the same
+/// style as the worked solution writes them, for the blank to keep their left sides).
+pub fn blanks(
+    derivation: &Derivation,
+) -> (usize, usize, Option<crate::render::context::LagrangeView>) {
+    let problem = derivation.model.problem;
+    let rows = plan(derivation).rows.len();
+    let style = coordinates_style(problem);
+    let ((free_bodies, lagrange), _) = crate::symbolic::style::with_style(style, || {
+        let free_bodies = super::free_bodies::free_bodies(derivation).len();
+        (free_bodies, super::lagrange::view(derivation))
+    });
+    (free_bodies, rows, lagrange)
+}
+
+/// The style of steps 1 to 5: sines and cosines of the angles written `s_1`, `c_12`.
+fn coordinates_style(problem: &crate::problem::Problem) -> crate::symbolic::style::Style {
+    // Only angles are indexed, so that a slider's distance `x` beside the angles `q1`,
+    // `q2` leaves them `s_1`, `c_12`.
+    let names: Vec<&str> = problem
+        .coordinates
+        .iter()
+        .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
+        .map(|c| c.name.as_str())
+        .collect();
+    super::tex::style_of(problem).with_coordinates(&names)
 }
 
 fn triple(v: &[f64; 3]) -> String {

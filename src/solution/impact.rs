@@ -5,7 +5,6 @@
 use super::tex::row_heading_tex;
 use crate::equations::{Derivation, Method};
 use crate::numeric::impact::Mode;
-use crate::pipeline::{derive_for_handout, ImpactSolution, Worked};
 use crate::problem::Problem;
 use crate::render::impact::{ImpactSection, ImpactStep};
 use crate::render::text::Math;
@@ -16,22 +15,21 @@ use crate::symbolic::print::latex;
 use crate::symbolic::print::latex_name;
 use crate::symbolic::subst::substitute;
 use crate::symbolic::{Expr, Symbol};
+use crate::{ImpactSolution, Worked};
 
 /// The impact's section of the worked solution, or `None` without an impact.
 pub fn section(worked: &Worked) -> Option<ImpactSection> {
-    let solution = worked.impact.as_ref()?;
+    let impact = worked.impact.as_ref()?;
+    let solution = &impact.solution;
     let problem = worked.derivation.model.problem;
     let method = worked.derivation.method;
     let mut steps = vec![text(intro(method))];
-    match problem.impulsive(&worked.q0, None) {
-        Some(impulsive) => match derive_for_handout(&impulsive.problem, method) {
-            Ok(derivation) => steps.extend(rows(&derivation)),
-            Err(e) => steps.push(text(format!(
-                "The impulse–momentum equations could not be written out: {}",
-                e.one_line()
-            ))),
-        },
-        None => return None,
+    match impact.equations.as_ref()? {
+        Ok(derivation) => steps.extend(rows(derivation)),
+        Err(e) => steps.push(text(format!(
+            "The impulse–momentum equations could not be written out: {}",
+            e.one_line()
+        ))),
     }
     steps.extend(collision(
         problem,

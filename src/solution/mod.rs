@@ -1,6 +1,7 @@
 //! The worked solution's content (step by step, as a textbook prints it), prepared from what
 //! the stages before gave: the problem, the model, the plan, the equations, the solution at
-//! the initial state, the simulation and its checks ([`crate::pipeline::Worked`]).
+//! the initial state, the simulation and its checks ([`crate::Worked`]): a pure function of
+//! them, deriving, solving and simulating nothing.
 //!
 //! [`worked`] fills a [`Solution`](crate::render::Solution): each step's rows as formed and simplified with their
 //! headings, the where-lists, the rejections chosen to show, the tables, the pictures'
@@ -48,5 +49,5 @@ mod switch_steps;
 mod tex;
 
 pub use build::{setup, solution as worked};
-pub use handout::{handout, Handout};
+pub use handout::{handout, student, Handout};
 pub use tex::style_of;

@@ -11,7 +11,7 @@
 //!   sampling: with the coordinates and constants held, the equation with the conditions
 //!   substituted is a rate-free multiple of LHS − RHS at every set of rates tried.
 
-use crate::equations::{Derivation, Method};
+use crate::equations::{Derivation, LinearSystem};
 use crate::numeric::answers::Answer;
 use crate::problem::{Problem, QuestionKind};
 use crate::render::sections::{AnswerStep, AnswerView};
@@ -21,27 +21,29 @@ use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::print::latex;
 use crate::symbolic::subst::substitute;
 use crate::symbolic::{pull_common_factor, simplify, Expr, Node, Symbol};
+use crate::Worked;
 
-/// Adds the working of every `period` and `show` question to its view; `derivation` is
-/// the handout's, whose step 5 a `show` refers to.
-pub fn attach(
-    problem: &Problem,
-    derivation: &Derivation,
-    answers: &[Answer],
-    views: &mut [AnswerView],
-) {
+/// Adds the working of every `period` and `show` question to its view, from the run of
+/// the stages: a `show` refers to step 5 of the handout's derivation.
+pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
+    let derivation = &worked.derivation;
+    let problem = derivation.model.problem;
     // Written as step 5 writes: s_θ for sin θ, the problem's decimals.
     let angles: Vec<&str> = (problem.coordinates.iter())
         .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
         .map(|c| c.name.as_str())
         .collect();
     let style = super::tex::style_of(problem).with_coordinates(&angles);
+    let solved = |i: usize| worked.show_accelerations.get(i).and_then(Option::as_deref);
     crate::symbolic::style::with_style(style, || {
-        for ((question, answer), view) in problem.questions.iter().zip(answers).zip(views) {
+        let questions = problem.questions.iter().zip(answers).zip(views);
+        for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
-                QuestionKind::Period { .. } => period_steps(problem, answer),
+                QuestionKind::Period { .. } => {
+                    period_steps(problem, worked.period_system.as_ref(), answer)
+                }
                 QuestionKind::Show { lhs, rhs, .. } => {
-                    show_steps(problem, derivation, answer, (lhs, rhs))
+                    show_steps(problem, derivation, solved(i), answer, (lhs, rhs))
                 }
                 _ => Vec::new(),
             };
@@ -90,12 +92,18 @@ fn zero_at_state(problem: &Problem, answer: &Answer, order: u8) -> Vec<Symbol> {
         .collect()
 }
 
-fn period_steps(problem: &Problem, answer: &Answer) -> Vec<AnswerStep> {
+fn period_steps(
+    problem: &Problem,
+    kane: Option<&LinearSystem>,
+    answer: &Answer,
+) -> Vec<AnswerStep> {
     let Some(found) = &answer.period else {
         return Vec::new();
     };
     let mut steps = match found.coordinates.as_slice() {
-        [one] => one_freedom(problem, answer, one, found.natural).unwrap_or_default(),
+        [one] => kane
+            .and_then(|system| one_freedom(problem, system, answer, one, found.natural))
+            .unwrap_or_default(),
         _ => Vec::new(),
     };
     let (which, omega) = match (found.mode.1, found.damping_ratio > 0.0) {
@@ -131,18 +139,16 @@ fn period_steps(problem: &Problem, answer: &Answer) -> Vec<AnswerStep> {
 }
 
 /// ω² = K/M in symbols for the one coordinate `name` left free, from Kane's equation for
-/// it; `None` where that equation is not at hand or does not give the linearization's
-/// `natural` frequency.
+/// it (`system`: Kane's equations of the problem in its rates); `None` where that equation
+/// is not at hand or does not give the linearization's `natural` frequency.
 fn one_freedom(
     problem: &Problem,
+    system: &LinearSystem,
     answer: &Answer,
     name: &str,
     natural: f64,
 ) -> Option<Vec<AnswerStep>> {
     let k = problem.coordinates.iter().position(|c| c.name == name)?;
-    let in_rates = problem.without_speeds();
-    let derivation = crate::pipeline::derive_for_handout(&in_rates, Method::Kane).ok()?;
-    let system = &derivation.system;
     let qdd = problem.coordinate_symbol(k, 2);
     let row = (0..system.b.len()).find(|&i| {
         let nonzero: Vec<usize> = (0..system.unknowns.len())
@@ -293,10 +299,13 @@ fn has_rates(e: &Expr) -> bool {
 fn show_steps(
     problem: &Problem,
     derivation: &Derivation,
+    accelerations: Option<&[f64]>,
     answer: &Answer,
     (lhs, rhs): (&Expr, &Expr),
 ) -> Vec<AnswerStep> {
-    derive_identity(problem, derivation, answer, (lhs, rhs)).unwrap_or_else(|| {
+    let identity =
+        accelerations.and_then(|a| derive_identity(problem, derivation, a, answer, (lhs, rhs)));
+    identity.unwrap_or_else(|| {
         vec![step(
             "No single equation of step 5 reduces to this identity once the conditions of the state are put in; it is checked at the state only.",
             String::new(),
@@ -304,20 +313,17 @@ fn show_steps(
     })
 }
 
-/// The steps from an equation of step 5 to `lhs = rhs`, or `None` when no equation gives it.
+/// The steps from an equation of step 5 to `lhs = rhs`, or `None` when no equation gives
+/// it; `accelerations` are the q'' at the answer's state by those equations.
 fn derive_identity(
     problem: &Problem,
     derivation: &Derivation,
+    accelerations: &[f64],
     answer: &Answer,
     (lhs, rhs): (&Expr, &Expr),
 ) -> Option<Vec<AnswerStep>> {
     let system = &derivation.system;
-    let solver = crate::pipeline::Solver::new(problem, derivation);
-    let accelerations = solver
-        .solve(answer.time, &answer.q, &answer.rates)
-        .ok()?
-        .accelerations;
-    let v = values(problem, answer, &accelerations);
+    let v = values(problem, answer, accelerations);
     let scale = accelerations.iter().fold(1.0f64, |s, a| s.max(a.abs()));
     // The conditions: second rates that vanish at the state, rates that are zero there.
     let mut zero: Vec<Symbol> = (0..problem.coordinates.len())

@@ -1,12 +1,12 @@
 //! Step 6 of the worked solution: the simulation, its confirmation checks and its plots.
 
 use crate::numeric::checks::{self, CheckKind, Phrase};
-use crate::numeric::simulate::Trajectory;
 use crate::numeric::SolveError;
+use crate::numeric::Trajectory;
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{Check, Plot, Solution};
 use crate::render::markup::{literal, literal_with_numbers};
-use crate::render::plot::{line_plot, pgfplots, Label, Series};
+use crate::render::plot::{Label, PlotData, Series};
 use crate::render::text::{FileName, LatexCode, MarkupLine, SvgDocument};
 use crate::symbolic::format::fixed;
 use crate::symbolic::print::{latex, latex_name};
@@ -117,13 +117,19 @@ pub fn simulation(
     let plots_in_row = if plots.len() == 4 { 4 } else { 3 };
     solution.simulation.plots_in_row = plots_in_row;
     for (kind, title, y_label, series) in plots {
-        let svg = line_plot(title, &time, &y_label, &series).unwrap_or_default();
+        // Drawn by the renderer, in the format asked.
         solution.simulation.plots.push(Plot {
             kind: kind.into(),
             title: title.into(),
             svg_file: FileName::from(String::new()),
-            image_svg: SvgDocument::from(svg),
-            pgfplots_latex: LatexCode::from(pgfplots(&time, &y_label, &series, plots_in_row)),
+            image_svg: SvgDocument::default(),
+            pgfplots_latex: LatexCode::default(),
+            data: Some(PlotData {
+                x_label: time.clone(),
+                y_label,
+                series,
+                plots_in_row,
+            }),
         });
     }
 }

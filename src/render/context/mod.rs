@@ -412,4 +412,8 @@ pub struct Plot {
     pub image_svg: SvgDocument,
     /// A `tikzpicture` with a pgfplots `axis`, for LaTeX.
     pub pgfplots_latex: LatexCode,
+    /// What is plotted, from which the renderer draws [`Plot::image_svg`] and
+    /// [`Plot::pgfplots_latex`] for the format asked ([`crate::render::plot::draw`]).
+    #[serde(skip)]
+    pub data: Option<crate::render::plot::PlotData>,
 }

@@ -1,9 +1,10 @@
 //! `draw --animate`: the configuration over the simulated motion (step 6), as an SVG
 //! animated with SMIL, no script.
 //!
-//! The motion is sampled at the frame rate from the same integration as `simulate`. Each
-//! body is drawn once on a *sheet*, a plane fixed in the body (its plane of motion in 2D,
-//! a disc's plane, or the plane of its points in 3D), in metres. The orthographic picture
+//! The motion is sampled at the frame rate from the same integration as `simulate` (the
+//! frames are given, [`Frame`]). Each body is drawn once on a *sheet*, a plane fixed in
+//! the body (its plane of motion in 2D, a disc's plane, or the plane of its points in 3D),
+//! in metres. The orthographic picture
 //! of a plane moving rigidly is an affine map of it, so each frame's map of the sheet is
 //! exact, and [`crate::render::draw::motion_svg`] writes it as four `animateTransform`s. The points
 //! (`cm-B`, `joint-J`) are circles outside the bodies' groups, moved by `<animate>` of
@@ -13,99 +14,11 @@ use super::numbers::{add, dot, norm, scale, sub, unit, Numbers, P3};
 use super::sheets;
 use crate::equations::Derivation;
 use crate::mechanics::sites::SiteKind;
-use crate::numeric::simulate::{simulate_with_limits, Limits};
-use crate::pipeline::Solver;
+pub use crate::numeric::frame::{frame_count, Frame, DEFAULT_FPS, MAX_FRAMES};
 use crate::problem::{BodyId, JointKind, LoadKind, Problem};
 use crate::render::draw::motion::{Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
 use crate::render::draw::picture::{Projection, View};
 use crate::render::draw::scene::Label;
-use crate::Error;
-
-/// The most frames a motion may have (400 s at 25 frames per second): each frame adds a
-/// value to every animation of the picture, and more would make a file no viewer plays.
-pub const MAX_FRAMES: usize = 10_000;
-
-/// Frames per second unless `--fps` says otherwise.
-pub const DEFAULT_FPS: f64 = 25.0;
-
-/// One sampled state.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Frame {
-    /// The time.
-    pub t: f64,
-    /// The coordinates.
-    pub q: Vec<f64>,
-    /// Their rates.
-    pub rates: Vec<f64>,
-}
-
-/// The number of frames of `duration` seconds at `fps`, or a usage error when the numbers
-/// are not usable or give more than [`MAX_FRAMES`]; checked before any work.
-///
-/// # Errors
-/// [`Error::Usage`] naming the flag.
-pub fn frame_count(duration: f64, fps: f64) -> Result<usize, Error> {
-    if !(duration.is_finite() && duration > 0.0) {
-        return Err(Error::Usage(
-            "--duration must be a positive number of seconds".into(),
-        ));
-    }
-    if !(fps.is_finite() && fps > 0.0) {
-        return Err(Error::Usage(
-            "--fps must be a positive number of frames per second".into(),
-        ));
-    }
-    let frames = (duration * fps).ceil() + 1.0;
-    if frames > MAX_FRAMES as f64 {
-        return Err(Error::Usage(format!(
-            "{duration} s at {fps} frames per second is {frames} frames, more than {MAX_FRAMES}: shorten --duration or lower --fps"
-        )));
-    }
-    Ok(frames as usize)
-}
-
-/// The motion from the problem's initial state over `duration` seconds, sampled every
-/// `1/fps` s by the integrator's dense output, as `simulate` integrates it. A run that stops
-/// early gives the frames up to then.
-///
-/// # Errors
-/// Unusable `duration` or `fps` (see [`frame_count`]); a simulation that cannot start.
-pub fn frames(
-    problem: &Problem,
-    derivation: &Derivation,
-    duration: f64,
-    fps: f64,
-) -> Result<Vec<Frame>, Error> {
-    let count = frame_count(duration, fps)?;
-    let solver = Solver::new(problem, derivation);
-    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let settings = crate::problem::SimulateSettings {
-        duration,
-        output_step: 1.0 / fps,
-        ..problem.simulate.clone()
-    };
-    let limits = Limits {
-        max_rows: count + 1,
-        ..Limits::default()
-    };
-    let run =
-        simulate_with_limits(&solver, &q0, &rates0, &settings, &limits).map_err(Error::Solve)?;
-    let n = run.coordinates;
-    let frames: Vec<Frame> = run
-        .rows
-        .iter()
-        .map(|row| Frame {
-            t: row[0],
-            q: row[1..=n].to_vec(),
-            rates: row[n + 1..=2 * n].to_vec(),
-        })
-        .collect();
-    match (frames.len(), run.stopped) {
-        (0 | 1, Some(reason)) => Err(Error::Solve(reason)),
-        _ => Ok(frames),
-    }
-}
 
 /// The longest side of the motion's picture, and the room around it.
 const LONGEST_SIDE: f64 = 520.0;

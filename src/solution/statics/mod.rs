@@ -31,7 +31,12 @@ use crate::Error;
 /// # Errors
 /// An invalid problem, equations that cannot be derived, no equilibrium near the initial
 /// configuration, or an answer that fails.
-pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<Solution, Error> {
+pub fn handout(
+    problem: &Problem,
+    method: Method,
+    student: bool,
+    settings: &Handout,
+) -> Result<Solution, Error> {
     // At rest the speeds are zero with the rates: the equations in the rates serve.
     let problem = problem.without_speeds();
     let statics = Statics::new(&problem, method)?;
@@ -47,11 +52,11 @@ pub fn handout(problem: &Problem, method: Method, settings: &Handout) -> Result<
     if settings.every_rejected {
         solution.plan.show_every_rejected();
     }
-    if settings.student {
+    if student {
         solution = at_rest::student(&problem, method, &solution);
     }
     if !problem.questions.is_empty() {
-        solution.answers = match settings.student {
+        solution.answers = match student {
             true => super::answers::blank(&problem),
             false => answers(&at, method, &worked)?,
         };

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Times `explain` against `solve` of the same problem by the same method.
+
+    python3 tools/bench/explain_speed.py [BIN] [--runs N] [--all]
+
+For the Whipple bicycle, the ten-link chain, all-joints-3d and the rolling coin, by Kane
+and the Motion Law: the fastest of N runs (default 3) of `explain` (Markdown, to a null
+output) and of `solve`, each as wall seconds and as CPU seconds (user + system, the
+operating system's accounting of the finished child, which a loaded machine moves less),
+and the ratio explain / max(solve, 0.1 s) against the target of 3. With --all, every
+bundled handout (problems/*.json and problems/validation/*.json, every method, worked
+and student) once, the slowest listed against the target of 0.5 s.
+"""
+import os
+import resource
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PROBLEMS = [
+    "problems/validation/whipple-bicycle.json",
+    "problems/validation/ten-link-chain.json",
+    "problems/validation/all-joints-3d.json",
+    "problems/rolling-coin.json",
+]
+METHODS = ["kane", "motion-law"]
+
+
+def timed(argv):
+    """Wall and CPU seconds of one run of argv, its output thrown away."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu
+
+
+def fastest(argv, runs):
+    """The least wall and the least CPU seconds over `runs` runs."""
+    times = [timed(argv) for _ in range(runs)]
+    return min(t[0] for t in times), min(t[1] for t in times)
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    binary = os.path.abspath(args[0]) if args else os.path.join(ROOT, "target/release/mbd-tutor")
+    runs = 3
+    if "--runs" in sys.argv:
+        runs = int(sys.argv[sys.argv.index("--runs") + 1])
+        args = [a for a in args if a != str(runs)]
+    print(f"explain against solve, fastest of {runs} runs, seconds (wall / cpu); "
+          "target explain <= max(3 x solve, 0.3 s)")
+    print("| problem | method | solve wall | solve cpu | explain wall | explain cpu | "
+          "cpu ratio | within |")
+    print("|---|---|---|---|---|---|---|---|")
+    for problem in PROBLEMS:
+        for method in METHODS:
+            solve = fastest([binary, "solve", problem, "--method", method], runs)
+            explain = fastest([binary, "explain", problem, "--method", method], runs)
+            bound = max(3 * solve[1], 0.3)
+            ratio = explain[1] / max(solve[1], 0.1)
+            name = os.path.basename(problem)[:-5]
+            print(f"| {name} | {method} | {solve[0]:.3f} | {solve[1]:.3f} | "
+                  f"{explain[0]:.3f} | {explain[1]:.3f} | {ratio:.1f} | "
+                  f"{'yes' if explain[1] <= bound else 'no'} |")
+    if "--all" not in sys.argv:
+        return
+    handouts = []
+    for folder in ["problems", "problems/validation"]:
+        for name in sorted(os.listdir(os.path.join(ROOT, folder))):
+            if not name.endswith(".json"):
+                continue
+            path = f"{folder}/{name}"
+            for method in ["motion-law", "newton-euler", "kane"]:
+                for student in [[], ["--student"]]:
+                    argv = [binary, "explain", path, "--method", method] + student
+                    handouts.append((timed(argv), path, method, bool(student)))
+    handouts.sort(key=lambda h: -h[0][1])
+    over = [h for h in handouts if h[0][1] > 0.5]
+    print(f"\n{len(handouts)} handouts, {len(over)} over 0.5 s of CPU; the slowest ten (wall / cpu):")
+    for (wall, cpu), path, method, student in handouts[:10]:
+        version = "student" if student else "worked"
+        print(f"  {cpu:6.3f} cpu {wall:6.3f} wall  {path} {method} {version}")
+
+
+if __name__ == "__main__":
+    main()
