@@ -109,10 +109,15 @@ fn worked_at_rest<'p>(
         q0: equilibrium.q.clone(),
         rates0: equilibrium.rates.clone(),
         initial,
-        simulation: Err(SolveError::BadSimulation {
+        simulation: Some(Err(SolveError::BadSimulation {
             what: "the system is at rest".into(),
-        }),
+        })),
         impact: None,
+        answers: None,
+        period_system: None,
+        show_accelerations: Vec::new(),
+        linearization: None,
+        frames: None,
     };
     Ok((worked, zero, found))
 }
@@ -122,7 +127,7 @@ fn worked_at_rest<'p>(
 fn answers(at: &Problem, method: Method, worked: &Worked) -> Result<Vec<AnswerView>, Error> {
     let answers = pipeline::answers(at, method)?;
     let mut views = super::answers::section(at, &answers);
-    super::question_steps::attach(at, &worked.derivation, &answers, &mut views);
+    super::question_steps::attach(worked, &answers, &mut views);
     for view in &mut views {
         if view.at_note == "the initial state" {
             view.at_note = "at rest, at the equilibrium".into();
