@@ -68,6 +68,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
+        solution.kane_theory = super::kane_theory::theory(derivation);
         let mut definitions = kinematic_definitions(derivation);
         if by_partials != super::kinematics::ByPartials::None {
             let rule = super::kinematics::partial_velocity_definition(derivation, by_partials);

@@ -78,6 +78,15 @@ fn student(problem: &Problem, method: Method) -> Solution {
         let full = super::worked(&worked);
         setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
         setup.plan.rows = vec![Default::default(); full.plan.rows.len()];
+        // Kane's worksheet: one line per speed and body of the partial-velocity table, to fill in.
+        setup.partial_velocities = (full.partial_velocities.iter())
+            .map(|p| crate::render::context::PartialVelocity {
+                velocity_tex: Default::default(),
+                omega_tex: Default::default(),
+                ..p.clone()
+            })
+            .collect();
+        setup.kane_theory = full.kane_theory.clone();
         setup.lagrange = full.lagrange.map(super::lagrange::blank);
     }
     setup

@@ -23,6 +23,8 @@ mod impact;
 mod independent;
 mod initial_state;
 mod kane;
+mod kane_bodies;
+mod kane_theory;
 mod kinematics;
 mod lagrange;
 mod light_rods;
