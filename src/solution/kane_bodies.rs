@@ -11,6 +11,10 @@ use crate::symbolic::print::latex_name;
 use crate::symbolic::simplify::simplify;
 use crate::symbolic::{Expr, Symbol};
 
+/// The most bodies whose contributions are written apart: a longer chain's are long, and
+/// its rows are read by the names of step 4.
+const MOST_BODIES: usize = 4;
+
 /// `F^*_r` (or `F̃^*_r` with independent speeds) of Kane's speed row `r` (1-based) as the
 /// sum of each body's contribution, then each contribution, as an `aligned` block; `whole`
 /// is the row's `F^*_r = …` as written so far, kept as the last line when it is a formula.
@@ -23,6 +27,9 @@ pub fn inertia_by_body(
     shown: &dyn Fn(&Expr) -> Expr,
 ) -> Option<String> {
     let model = &derivation.model;
+    if model.order.len() > MOST_BODIES {
+        return None;
+    }
     let problem = model.problem;
     let frames = &model.frames;
     let inertia = derivation.inertia();
@@ -77,7 +84,8 @@ pub fn inertia_by_body(
         lines.push(format!("{name} &= {text}"));
         names.push(name);
     }
-    if names.len() < 2 {
+    let total: usize = lines.iter().map(String::len).sum();
+    if names.len() < 2 || total > LONG_EQUATION * 2 {
         return None;
     }
     let mut out = vec![format!("{tilde}^{{*}}_{{{r}}} &= {}", names.join(" + "))];

@@ -11,6 +11,7 @@ pub mod answer_sheet;
 pub mod answers;
 mod auxiliary;
 mod build;
+mod closure_loops;
 mod constrained;
 pub mod derived;
 mod direction;
