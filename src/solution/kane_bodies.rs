@@ -2,7 +2,6 @@
 //! `F^*_r = F^*_{r,A} + F^*_{r,B} + …` with `F^*_{r,B} = v^{B*}_r · R^*_B + ω^B_r · T^*_B`:
 //! what a student sums, where the whole would be too long to read beside the row's sum.
 
-use super::long::LONG_EQUATION;
 use crate::equations::kane::partials;
 use crate::equations::Derivation;
 use crate::mechanics::Vector;
@@ -14,6 +13,10 @@ use crate::symbolic::{Expr, Symbol};
 /// The most bodies whose contributions are written apart: a longer chain's are long, and
 /// its rows are read by the names of step 4.
 const MOST_BODIES: usize = 4;
+
+/// The most characters of LaTeX a line of the block may take: the block's lines are not
+/// broken, and a longer one would stick out of the page's margin.
+const LONGEST_LINE: usize = 360;
 
 /// `F^*_r` (or `F̃^*_r` with independent speeds) of Kane's speed row `r` (1-based) as the
 /// sum of each body's contribution, then each contribution, as an `aligned` block; `whole`
@@ -62,6 +65,13 @@ pub fn inertia_by_body(
     } else {
         "F"
     };
+    // With the rates as speeds the block stands where the whole was too long: a shorter
+    // line, as a body's part of a long sum is itself long.
+    let longest = if derivation.dependent_speeds.is_some() {
+        LONGEST_LINE
+    } else {
+        LONGEST_LINE * 2 / 3
+    };
     let mut names = Vec::new();
     let mut lines = Vec::new();
     for &body in &model.order {
@@ -78,22 +88,20 @@ pub fn inertia_by_body(
             latex_name(problem.body_name(body))
         );
         let text = latex_collected(&term);
-        if text.len() > LONG_EQUATION {
+        if text.len() > longest {
             return None;
         }
         lines.push(format!("{name} &= {text}"));
         names.push(name);
     }
-    let total: usize = lines.iter().map(String::len).sum();
-    if names.len() < 2 || total > LONG_EQUATION * 2 {
+    if names.len() < 2 {
         return None;
     }
     let mut out = vec![format!("{tilde}^{{*}}_{{{r}}} &= {}", names.join(" + "))];
     out.extend(lines);
     // The whole, when the row wrote it as a formula: what the contributions sum to.
-    if let Some((_, formula)) = whole
-        .split_once(" = ")
-        .filter(|_| !whole.contains("\\text{"))
+    let formula = whole.split_once(" = ").map(|(_, f)| f);
+    if let Some(formula) = formula.filter(|f| !whole.contains("\\text{") && f.len() <= LONGEST_LINE)
     {
         out.push(format!("{tilde}^{{*}}_{{{r}}} &= {formula}"));
     }
