@@ -40,6 +40,7 @@ mod planner;
 mod questions;
 mod recursive;
 mod render;
+mod repetition;
 mod resal;
 mod robustness;
 mod rolling_on_body;

@@ -69,6 +69,7 @@ pub fn sample() -> Solution {
         equations: equations(),
         dependent_speeds: None,
         partial_velocities: Vec::new(),
+        kane_theory: None,
         lagrange: None,
         matrix: matrix(),
         initial_values: vec![

@@ -92,12 +92,16 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
         motion
     };
     let inside = joints_inside(derivation, &subtree);
-    let inside = match inside.as_slice() {
-        [] => String::new(),
-        [one] => format!(
+    // Said once for the bodies: a later row of the same bodies refers to the first.
+    let said = first_row_inside(derivation, &subtree).filter(|&first| first < r);
+    let inside = match (inside.as_slice(), said) {
+        ([], _) => String::new(),
+        (_, Some(first)) => format!(" The reactions inside drop out, as in row {first}."),
+        ([one], None) => format!(
+
             " The reaction at ${one}$, inside ${bodies}$, drops out: its two equal and opposite forces act at one point, which moves the same on both sides."
         ),
-        many => format!(
+        (many, None) => format!(
             " The reactions at ${}$, inside ${bodies}$, drop out: each pair of equal and opposite forces acts at one point, which moves the same on both sides.",
             many.join(", ")
         ),
@@ -105,6 +109,19 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     Some(format!(
         "{motion} Only ${unknown}$ and the other forces on ${bodies}$ from outside do work with them.{inside} The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe."
     ))
+}
+
+/// The first of Kane's rows (1-based) that moves `bodies` together as an auxiliary speed
+/// of the tree, where the reactions inside them are first said to drop out.
+fn first_row_inside(derivation: &Derivation, bodies: &[BodyId]) -> Option<usize> {
+    let rows = derivation.rows.iter();
+    let generalized =
+        rows.filter(|row| matches!(row.sum, crate::plan::rows::Sum::Generalized { .. }));
+    let speeds = super::kane::speed_rows(derivation);
+    generalized
+        .enumerate()
+        .find(|(k, row)| *k >= speeds && row.free_body == bodies)
+        .map(|(k, _)| k + 1)
 }
 
 /// The mass centres' velocities of `bodies` with `gain` added, as step 4 writes them,

@@ -32,6 +32,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let constraint_notes;
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
         solution.constraint_notes = MarkupLine::all(constraint_notes);
+        (solution.constraint_notes)
+            .extend(MarkupLine::all(super::closure_loops::notes(derivation)));
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);
         solution.force_definitions =
@@ -61,6 +63,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
+        solution.kane_theory = super::kane_theory::theory(derivation);
         let mut definitions = kinematic_definitions(derivation);
         if by_partials != super::kinematics::ByPartials::None {
             let rule = super::kinematics::partial_velocity_definition(derivation, by_partials);
@@ -250,6 +253,29 @@ pub fn named_list(definitions: Vec<Definition>) -> Vec<Named> {
         .collect()
 }
 
+/// What Kane's rows are, without friction: one per speed, and only what the problem has
+/// besides: the auxiliary speeds of the reactions asked for, the constraints differentiated.
+fn kane_rows_note(derivation: &Derivation, speeds: &str) -> String {
+    let auxiliary = (derivation.rows.iter())
+        .filter(|row| matches!(row.sum, Sum::Generalized { .. }))
+        .count()
+        > super::kane::speed_rows(derivation);
+    let constraints = (derivation.rows.iter()).any(|row| matches!(row.sum, Sum::Constraint { .. }));
+    let mut parts = vec![format!("One row per {speeds}")];
+    if auxiliary {
+        parts.push("one per requested reaction component through an auxiliary speed".into());
+    }
+    if constraints {
+        parts.push("one per scalar constraint, differentiated".into());
+    }
+    let last = parts.pop().unwrap_or_default();
+    if parts.is_empty() {
+        format!("{last}.")
+    } else {
+        format!("{}, and {last}.", parts.join(", "))
+    }
+}
+
 /// Step 3: the planner's table, the rejected candidates and the counts.
 pub fn plan(derivation: &Derivation) -> Plan {
     let problem = derivation.model.problem;
@@ -312,7 +338,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
                 "generalized speed"
             };
             let mut note = if derivation.model.constraints.friction.is_empty() {
-                format!("One row per {speeds}, and one per requested reaction component through an auxiliary speed.")
+                kane_rows_note(derivation, speeds)
             } else {
                 format!("One row per {speeds}; one per auxiliary speed (each normal force at a rough contact, and each other reaction component asked for); the constraints, differentiated; and one per rough contact for its friction force: its no-slip row while it sticks, the sliding law while it slips.")
             };

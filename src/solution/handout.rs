@@ -59,6 +59,9 @@ pub fn student(
         setup.free_bodies = vec![Default::default(); free_bodies];
         setup.plan.rows = vec![Default::default(); rows];
         setup.lagrange = lagrange.map(super::lagrange::blank);
+        if method == Method::Kane {
+            kane_worksheet(&mut setup, worked);
+        }
     }
     if settings.every_rejected {
         setup.plan.show_every_rejected();
@@ -94,4 +97,18 @@ fn with_motion(
             }
         }
     }
+}
+
+/// Kane's worksheet: one line per speed and body of the partial-velocity table to fill in,
+/// and the theory said as the worked solution says it.
+fn kane_worksheet(setup: &mut Solution, worked: &Worked) {
+    let full = super::worked(worked);
+    setup.partial_velocities = (full.partial_velocities.iter())
+        .map(|p| crate::render::context::PartialVelocity {
+            velocity_tex: Default::default(),
+            omega_tex: Default::default(),
+            ..p.clone()
+        })
+        .collect();
+    setup.kane_theory = full.kane_theory;
 }

@@ -251,19 +251,20 @@ pub fn dependent_speeds(
         "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0, \\quad \\tilde{{F}}_r = \\sum_{{P}} \\tilde{{\\mathbf{{v}}}}^{{P}}_r \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\tilde{{\\boldsymbol{{\\omega}}}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}} = F_r + \\sum_s C_{{sr}} F_s \\quad (r = {})",
         independent.join(", ")
     );
+    let delta = relation_tex.contains("\\Delta");
     DependentSpeeds {
         relation_tex: Math::from(relation_tex),
         relations_tex: Math::all(relations_tex),
         kane_tex: Math::from(kane_tex),
         reduced_tex: Vec::new(),
         kane_speeds_notes: MarkupLine::all(paragraphs),
-        kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds)),
+        kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds, delta)),
         kane_kept_note: MarkupLine::from(String::new()),
     }
 }
 
 /// What drops out and why, the auxiliary speeds, and the order of the solve.
-fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
+fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<String> {
     let model = &derivation.model;
     let problem = model.problem;
     let friction = &model.constraints.friction;
@@ -315,6 +316,10 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds) -> Vec<String> {
         solve.push_str("; then each force asked for from its own auxiliary row, with the $\\ddot{q}$ known, one unknown per row.");
     } else {
         solve.push('.');
+    }
+    if delta {
+        // Where the constraints cannot be solved for the dependent rates.
+        solve.push_str(" The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0$ the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.");
     }
     if friction.is_empty() {
         out.push(solve);

@@ -208,16 +208,16 @@ pub fn row_text(
             tex(&multipliers),
         ));
     }
-    let with = if multipliers.is_zero() {
-        ""
+    let note = if multipliers.is_zero() {
+        "Lagrange's equation, collected by the second derivatives:"
     } else {
-        " with the multipliers' terms"
+        "With the multipliers' terms, collected by the second derivatives:"
     };
     Some(RowText {
         label_tex: format!("{q}\\colon\\; {}", lagrange_tex(model, r)),
         label: "(Lagrange's equation of the coordinate)".into(),
         lines,
-        note: format!("Lagrange's equation{with}, collected by the second derivatives:"),
+        note: note.to_string(),
     })
 }
 

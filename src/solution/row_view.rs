@@ -27,6 +27,14 @@ fn group_tex(e: &Expr) -> String {
     }
 }
 
+/// How many of Kane's rows are the independent speeds' (before the auxiliary speeds').
+fn speeds_of(derivation: &Derivation) -> usize {
+    derivation
+        .dependent_speeds
+        .as_ref()
+        .map_or(0, |speeds| speeds.independent.len())
+}
+
 /// Step 5: one row, grouped as the Motion Law groups it and simplified.
 pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let problem = derivation.model.problem;
@@ -88,9 +96,15 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         // F*_r is minus the mass matrix times q̈: written with the signs changed, the
         // equation reads M q̈ = …, with the mass matrix positive.
         simplified = -simplified;
-        simplified_note =
+        // Said in full once; the rows after it refer to it.
+        let first =
+            index.is_some_and(|i| !(0..i).any(|k| super::kane::sign_changed(derivation, k)));
+        simplified_note = if first {
             "Their sum, simplified, and its signs changed so that the mass matrix is positive:"
-                .into();
+        } else {
+            "Their sum, simplified, its signs changed likewise:"
+        }
+        .into();
     }
     let mut simplified_tex = format!("{} = 0", latex_collected(&simplified));
     let mut by_name = false;
@@ -132,6 +146,15 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             };
             (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
         }
+        if inertia_tex.contains("\\text{") || independent.is_some() {
+            // Each body's contribution apart: what a student sums, where the whole is too
+            // long beside the row's sum or is formed with the constrained partial velocities.
+            if let Some(by_body) =
+                super::kane_bodies::inertia_by_body(derivation, r, &inertia_tex, &shown)
+            {
+                inertia_tex = by_body;
+            }
+        }
         (label_tex, label) = if let Some(speeds) = independent.filter(|s| r <= s.independent.len())
         {
             (
@@ -167,9 +190,17 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             } else {
                 "and brings in that force alone"
             };
-            let why = format!(
-                "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
-            );
+            // Said in full at the first auxiliary speed; the later ones refer to it.
+            let first = speeds_of(derivation) + 1;
+            let why = if r == first {
+                format!(
+                    "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
+                )
+            } else if slides {
+                format!("(an auxiliary speed, as in row {first}; friction works with it too)")
+            } else {
+                format!("(an auxiliary speed, as in row {first})")
+            };
             (
                 format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
                 why,

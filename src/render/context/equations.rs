@@ -60,6 +60,16 @@ pub struct PartialVelocity {
     pub point: bool,
 }
 
+/// Kane's method as step 5 states it once: the generalized active and inertia forces, with
+/// only the terms that apply to the problem.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct KaneTheory {
+    /// `F_r = …, F^*_r = …`, display math.
+    pub forces_tex: Math,
+    /// What each symbol of `forces_tex` is, in markup.
+    pub note: MarkupLine,
+}
+
 /// The dependent rates as a linear map of the independent ones at the initial state, and
 /// Kane's equations with dependent speeds.
 #[derive(Clone, Debug, Default, Serialize)]

@@ -31,8 +31,8 @@ mod statics;
 pub use super::figure::Figure;
 pub use super::sample::sample;
 pub use equations::{
-    DependentSpeeds, Equation, FrictionStep, FrictionView, InitialValue, MatrixEntry, MatrixForm,
-    PartialVelocity, Reaction, WholeMatrix,
+    DependentSpeeds, Equation, FrictionStep, FrictionView, InitialValue, KaneTheory, MatrixEntry,
+    MatrixForm, PartialVelocity, Reaction, WholeMatrix,
 };
 pub use lagrange::{GeneralizedForceRow, LagrangeView};
 pub use named::{Named, WhereEntry};
@@ -105,6 +105,9 @@ pub struct Solution {
     /// angular velocities of the bodies, for each generalized speed (empty for the other
     /// methods).
     pub partial_velocities: Vec<PartialVelocity>,
+    /// Step 5 by Kane's method: the generalized forces defined once (`None` for the other
+    /// methods).
+    pub kane_theory: Option<KaneTheory>,
     /// Step 5: each equation, as formed and as simplified.
     pub equations: Vec<Equation>,
     /// Step 5: how the dependent rates follow from the independent ones (constrained
