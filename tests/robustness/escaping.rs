@@ -227,3 +227,155 @@ fn unescape(markdown: &str) -> String {
 fn unescape_follows_commonmark() {
     assert_eq!(unescape(r"\{\{ x \}\} \_a\\b c\d"), r"{{ x }} _a\b c\d");
 }
+
+/// The elements a CommonMark renderer makes from Markdown itself, and those of the
+/// free-body diagrams the handout writes inline as SVG.
+const MARKDOWN_ELEMENTS: [&str; 39] = [
+    "svg",
+    "g",
+    "path",
+    "line",
+    "circle",
+    "rect",
+    "text",
+    "tspan",
+    "title",
+    "style",
+    "defs",
+    "marker",
+    "polygon",
+    "polyline",
+    "p",
+    "em",
+    "strong",
+    "h1",
+    "h2",
+    "h3",
+    "h4",
+    "h5",
+    "h6",
+    "ul",
+    "ol",
+    "li",
+    "code",
+    "pre",
+    "blockquote",
+    "hr",
+    "br",
+    "img",
+    "a",
+    "table",
+    "thead",
+    "tbody",
+    "tr",
+    "th",
+    "td",
+];
+
+/// What a reader of the Markdown handout sees: the file rendered by a CommonMark renderer
+/// with its defaults (raw HTML passes through, as on most sites that show Markdown).
+#[test]
+fn markdown_rendered_by_a_commonmark_renderer_runs_nothing() {
+    let dir = scratch("hostile-commonmark");
+    let problem = hostile_problem(&dir);
+    for (name, student) in [("solution", false), ("handout", true)] {
+        let source = explain(
+            &problem,
+            "markdown",
+            &dir.join(format!("{name}.md")),
+            student,
+        );
+        let mut page = String::new();
+        pulldown_cmark::html::push_html(&mut page, pulldown_cmark::Parser::new(&source));
+        // Escaped text never holds `<`: every `<` in the page opens an element the
+        // renderer made from Markdown, and only Markdown's own elements may appear.
+        for tag in page
+            .split('<')
+            .skip(1)
+            .map(|rest| &rest[..rest.find('>').unwrap_or(rest.len())])
+        {
+            let element = tag
+                .trim_start_matches('/')
+                .split([' ', '/'])
+                .next()
+                .unwrap_or("");
+            assert!(
+                MARKDOWN_ELEMENTS.contains(&element.to_lowercase().as_str()),
+                "{name}: an element Markdown does not make: <{tag}>"
+            );
+            let lower = tag.to_lowercase();
+            assert!(
+                !lower.contains(" on") && !lower.contains("javascript:"),
+                "{name}: an active attribute: <{tag}>"
+            );
+            if element == "img" {
+                assert!(
+                    tag.starts_with(&format!("img src=\"{name}-")) && tag.contains(".svg\""),
+                    "{name}: an image that is not one of its plots: <{tag}>"
+                );
+            }
+        }
+        // The hostile text is shown, escaped, not dropped.
+        assert!(
+            page.contains("&lt;script&gt;alert(1)&lt;/script&gt;"),
+            "{name}: the script text is not shown as text"
+        );
+        assert!(page.contains("{{ x }}"), "{name}: template text lost");
+    }
+    std::fs::remove_dir_all(&dir).expect("removed");
+}
+
+/// The pictures of `draw` (SVG), with every text field of the problem hostile: nothing in
+/// them can act in a browser, and every `&` starts an entity.
+#[test]
+fn svg_pictures_hold_no_markup_from_the_problem() {
+    let dir = scratch("hostile-svg");
+    let problem = hostile_problem(&dir);
+    let out = dir.join("pictures");
+    let output = Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
+        .arg("draw")
+        .arg(&problem)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .expect("the binary runs");
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "draw: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let mut seen = 0;
+    for entry in std::fs::read_dir(&out).expect("pictures written") {
+        let path = entry.expect("entry").path();
+        if path.extension().and_then(|e| e.to_str()) != Some("svg") {
+            continue;
+        }
+        seen += 1;
+        let svg = std::fs::read_to_string(&path).expect("read");
+        let lower = svg.to_lowercase();
+        for active in [
+            "<script",
+            "<img",
+            "<iframe",
+            "<foreignobject",
+            "javascript:",
+            "onerror=",
+        ] {
+            assert!(!lower.contains(active), "{}: `{active}`", path.display());
+        }
+        for (at, _) in svg.match_indices('&') {
+            let entity = &svg[at..svg.len().min(at + 10)];
+            assert!(
+                entity.find(';').is_some_and(|end| end > 1
+                    && entity[1..end]
+                        .chars()
+                        .all(|c| c.is_ascii_alphanumeric() || c == '#')),
+                "{}: a bare `&` at byte {at}: {entity:?}",
+                path.display()
+            );
+        }
+    }
+    assert!(seen > 0, "draw wrote no SVG");
+    std::fs::remove_dir_all(&dir).expect("removed");
+}

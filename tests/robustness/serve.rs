@@ -291,3 +291,31 @@ fn serve_on_the_ipv6_loopback_writes_its_address_in_brackets() {
     assert!(line.starts_with("serving http://[::1]:"), "{line}");
     ends_on_sigterm(Server { child, port: 0 }, "on [::1]");
 }
+
+#[test]
+fn serve_beyond_loopback_warns_on_standard_error() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
+        .arg("serve")
+        .arg(bundled("problems/simple-pendulum.json"))
+        .args(["--port", "0", "--host", "0.0.0.0"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("serve starts");
+    let stderr = child.stderr.take().expect("its standard error");
+    let (send, receive) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut line = String::new();
+        let _ = BufReader::new(stderr).read_line(&mut line);
+        let _ = send.send(line);
+    });
+    let line = receive
+        .recv_timeout(Duration::from_secs(60))
+        .expect("a line on standard error within 60 s");
+    assert!(
+        line.starts_with("warning: listening on http://0.0.0.0:")
+            && line.contains("other machines can reach"),
+        "{line}"
+    );
+    ends_on_sigterm(Server { child, port: 0 }, "on 0.0.0.0");
+}
