@@ -52,4 +52,4 @@ pub mod render;
 pub mod solution;
 pub mod symbolic;
 
-pub use error::{BatchError, Error};
+pub use error::{BatchError, Error, SubmissionError};

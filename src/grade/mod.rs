@@ -31,7 +31,7 @@ mod vectors;
 
 pub use reference::{Reference, Sample};
 pub use report::{Item, Report, Verdict};
-pub use submission::{read, Submission, SubmissionError};
+pub use submission::{read, Submission};
 
 /// Grades `submission` against the worked solution `reference`: its answers, q'',
 /// equations, kinematics, partial velocities and generalized forces, in that order.
