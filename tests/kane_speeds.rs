@@ -285,7 +285,7 @@ fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     let (m, r, g) = (0.5, 0.1, 9.81);
     let mut random = Lcg(3);
     for _ in 0..8 {
-        let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+        let mut q: Vec<f64> = problem.initial_coordinates();
         let mut rates = vec![0.0; q.len()];
         q[index("theta")] = 0.3 + 0.8 * random.next();
         q[index("psi")] = 2.0 * random.next();

@@ -190,7 +190,7 @@ pub fn answer_in(
     question: &Question,
     context: Context,
 ) -> Result<Answer, ProblemError> {
-    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut q: Vec<f64> = problem.initial_coordinates();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let at = &question.at;
     let from_after = at.after_impact

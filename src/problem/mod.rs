@@ -1,4 +1,4 @@
-//! Step 0: JSON -> a validated [`Problem`](model::Problem).
+//! Step 0: JSON -> a validated [`Problem`].
 //!
 //! [`load`] reads the text into a JSON value (noting repeated keys), declares every name,
 //! then reads each section, collecting every error with its JSON path, the column inside
@@ -37,12 +37,14 @@ mod names;
 mod question_kinds;
 mod questions;
 mod read;
+mod reader;
 pub mod schema;
 mod settings;
 mod shapes;
 mod speeds;
 mod static_questions;
 mod validate;
+mod validated;
 pub mod variant;
 pub mod vary;
 
@@ -52,6 +54,7 @@ pub use impact::{Collision, Impact, Impulse};
 pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
 pub use model::*;
+pub use validated::Problem;
 
 #[cfg(test)]
 mod tests;

@@ -8,7 +8,7 @@
 //! of this program, which a key that must be drawn again identically needs. A crate's
 //! generator may change its stream between versions (`rand`'s `StdRng` says so).
 
-use super::model::Problem;
+use super::validated::Problem;
 use super::vary::Grid;
 use serde_json::Value;
 

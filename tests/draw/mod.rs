@@ -152,7 +152,7 @@ fn drawings(
 ) -> (Derivation<'_>, Vec<Drawing>, State) {
     let mut state = State {
         t: 0.0,
-        q: problem.coordinates.iter().map(|c| c.initial).collect(),
+        q: problem.initial_coordinates(),
         rates: problem.coordinates.iter().map(|c| c.rate).collect(),
     };
     let (derivation, accelerations) =
