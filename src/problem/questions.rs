@@ -152,7 +152,44 @@ impl Reader {
             Some(v) => Some(self.item(v, &key_path(path, "item"))?),
             None => None,
         };
-        let kind = match asked[0] {
+        let kind = self.asked(asked[0], fields, path, (reactions, constraints))?;
+        let frame = match fields.get("in") {
+            Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
+            None => None,
+        };
+        if matches!(kind, QuestionKind::Steady { .. })
+            && at.state.is_none()
+            && at.time.is_some_and(|t| t != 0.0)
+        {
+            self.diag.hint(
+                &key_path(path, "at"),
+                "a steady motion is sought at a state, not after a simulation",
+                "give `at.state` (the starting guess and the values held); `time` then only sets t",
+            );
+            return None;
+        }
+        Some(Question {
+            text,
+            kind,
+            at,
+            unit,
+            symbol,
+            frame,
+            path: path.to_string(),
+            about,
+            item,
+        })
+    }
+
+    /// What question `key` asks for, read from its entry in `fields`.
+    fn asked(
+        &mut self,
+        key: &str,
+        fields: &serde_json::Map<String, Value>,
+        path: &str,
+        (reactions, constraints): (&[usize], &[Value]),
+    ) -> Option<QuestionKind> {
+        let kind = match key {
             "value" => {
                 let vpath = key_path(path, "value");
                 let v = &fields["value"];
@@ -204,32 +241,7 @@ impl Reader {
             "show" => self.show(&fields["show"], &key_path(path, "show"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };
-        let frame = match fields.get("in") {
-            Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
-            None => None,
-        };
-        if matches!(kind, QuestionKind::Steady { .. })
-            && at.state.is_none()
-            && at.time.is_some_and(|t| t != 0.0)
-        {
-            self.diag.hint(
-                &key_path(path, "at"),
-                "a steady motion is sought at a state, not after a simulation",
-                "give `at.state` (the starting guess and the values held); `time` then only sets t",
-            );
-            return None;
-        }
-        Some(Question {
-            text,
-            kind,
-            at,
-            unit,
-            symbol,
-            frame,
-            path: path.to_string(),
-            about,
-            item,
-        })
+        Some(kind)
     }
 
     /// `in`: the frame whose unit vectors a reaction's components are given in.

@@ -63,19 +63,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
     r.dimension = required(top, "dimension", "", &mut r.diag).and_then(|v| r.read_dimension(v));
 
     // Too many constants: that one error, before anything is read.
-    if let Some(count) = top
-        .get("constants")
-        .and_then(Value::as_object)
-        .map(serde_json::Map::len)
-        .filter(|&count| count > MAX_CONSTANTS)
-    {
-        r.diag.hint(
-            "constants",
-            format!(
-                "the problem declares {count} constants, more than the limit of {MAX_CONSTANTS}"
-            ),
-            "a problem needs a few dozen constants: give repeated values one name and use it",
-        );
+    if r.too_many_constants(top.get("constants")) {
         return Err(r.diag.errors);
     }
     let constants = top
@@ -83,17 +71,7 @@ pub fn read(root: &Value) -> Result<Problem, Vec<super::error::ProblemError>> {
         .map(|v| r.constants(v))
         .unwrap_or_default();
     let body_entries = r.declare_bodies(top.get("bodies"));
-    let joint_values: &[Value] = match top.get("joints") {
-        Some(v) => json::array(v, "joints", &mut r.diag).unwrap_or(&[]),
-        None => {
-            r.diag.hint(
-                "joints",
-                "`joints` is required",
-                "every body needs a joint to its parent, e.g. a revolute joint to N",
-            );
-            &[]
-        }
-    };
+    let joint_values = r.joint_list(top.get("joints"));
     let (heads, owners) = r.declare_joints(joint_values);
     let closure_values = r.list(top, "closures");
     let constraint_values = r.list(top, "constraints");
@@ -203,6 +181,39 @@ fn decimals_written(value: &Value) -> Vec<(crate::symbolic::Number, String)> {
 }
 
 impl Reader {
+    /// Records the one error of more constants than [`MAX_CONSTANTS`]; whether there are.
+    fn too_many_constants(&mut self, value: Option<&Value>) -> bool {
+        let count = value
+            .and_then(Value::as_object)
+            .map_or(0, serde_json::Map::len);
+        if count <= MAX_CONSTANTS {
+            return false;
+        }
+        self.diag.hint(
+            "constants",
+            format!(
+                "the problem declares {count} constants, more than the limit of {MAX_CONSTANTS}"
+            ),
+            "a problem needs a few dozen constants: give repeated values one name and use it",
+        );
+        true
+    }
+
+    /// The entries of `joints`, which is required.
+    fn joint_list<'v>(&mut self, value: Option<&'v Value>) -> &'v [Value] {
+        match value {
+            Some(v) => json::array(v, "joints", &mut self.diag).unwrap_or(&[]),
+            None => {
+                self.diag.hint(
+                    "joints",
+                    "`joints` is required",
+                    "every body needs a joint to its parent, e.g. a revolute joint to N",
+                );
+                &[]
+            }
+        }
+    }
+
     fn format(&mut self, value: Option<&Value>) {
         let Some(value) = value else { return };
         match value.as_u64() {
