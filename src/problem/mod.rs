@@ -32,13 +32,13 @@ mod joints;
 mod json;
 mod load;
 mod loads;
-pub mod model;
+mod model;
 mod names;
 mod question_kinds;
 mod questions;
 mod read;
 mod reader;
-pub mod schema;
+mod schema;
 mod settings;
 mod shapes;
 mod speeds;
@@ -46,7 +46,7 @@ mod static_questions;
 mod validate;
 mod validated;
 pub mod variant;
-pub mod vary;
+mod vary;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
 pub use expressions::axis_index;
@@ -54,7 +54,9 @@ pub use impact::{Collision, Impact, Impulse};
 pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
 pub use model::*;
+pub use schema::SCHEMA;
 pub use validated::Problem;
+pub use vary::{Grid, Vary};
 
 #[cfg(test)]
 mod tests;
