@@ -12,7 +12,9 @@ pub enum Error {
     Usage(String),
     /// A file could not be read or written.
     Io {
+        /// The file.
         path: PathBuf,
+        /// The system's reason.
         source: std::io::Error,
     },
     /// The problem is invalid: every error found, each with its JSON path.

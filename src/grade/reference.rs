@@ -22,7 +22,9 @@ const SAMPLES: usize = 4;
 pub struct Sample {
     /// Time, coordinates and rates.
     pub t: f64,
+    /// The coordinates.
     pub q: Vec<f64>,
+    /// Their rates.
     pub rates: Vec<f64>,
     /// The constants, the state, the q'' of the equations of motion and every reaction
     /// component of every site there.

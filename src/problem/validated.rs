@@ -12,16 +12,25 @@ use crate::symbolic::{Expr, Symbol};
 /// A validated problem.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Problem {
+    /// The title, as the handout's heading.
     pub title: String,
+    /// The statement, as written for the student, if given.
     pub statement: Option<String>,
+    /// Planar or spatial.
     pub dimension: Dimension,
+    /// The named constants, in file order.
     pub constants: Vec<Constant>,
+    /// The generalized coordinates, in the order the joints first name them.
     pub coordinates: Vec<Coordinate>,
+    /// The acceleration of gravity, if any.
     pub gravity: Option<VectorExpr>,
     /// The declared bodies; `BodyId(i + 1)` is `bodies[i]`.
     pub bodies: Vec<Body>,
+    /// The joints of the tree, one per declared body.
     pub joints: Vec<Joint>,
+    /// The declared points.
     pub points: Vec<PointDef>,
+    /// The applied loads, in file order.
     pub loads: Vec<Load>,
     /// Loop-closing joints: they add no coordinates and remove the motion their type forbids.
     pub closures: Vec<Joint>,
@@ -31,6 +40,7 @@ pub struct Problem {
     pub find_reactions: Vec<usize>,
     /// The questions of `find.questions`, answered in the handout's "Answers".
     pub questions: Vec<Question>,
+    /// How long and how finely to simulate.
     pub simulate: SimulateSettings,
     /// The declared generalized speeds, as many as the coordinates; empty when the speeds
     /// are the coordinates' rates (the default).

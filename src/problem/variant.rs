@@ -19,6 +19,7 @@ pub struct SplitMix64 {
 }
 
 impl SplitMix64 {
+    /// The generator started from `seed`.
     pub fn new(seed: u64) -> SplitMix64 {
         SplitMix64 { state: seed }
     }
