@@ -190,38 +190,7 @@ pub fn answer_in(
     question: &Question,
     context: Context,
 ) -> Result<Answer, ProblemError> {
-    let mut q: Vec<f64> = problem.initial_coordinates();
-    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let at = &question.at;
-    let from_after = at.after_impact
-        || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));
-    match context.after {
-        Some(after) if from_after => rates.copy_from_slice(after),
-        None if at.after_impact => {
-            return Err(failure(
-                question,
-                "the question is asked after the impact, but the problem has no `impact`".into(),
-                "remove `after_impact`, or give the problem an `impact`",
-            ))
-        }
-        _ => {}
-    }
-    let t = match (question.about, question.at.switch) {
-        (Some(k), _) => {
-            let Some(Some(steady)) = context.earlier.get(k) else {
-                return Err(failure(
-                    question,
-                    format!("question {k} does not find a steady motion to ask about"),
-                    "`about` names a `steady` question of find.questions, by its index from 0",
-                ));
-            };
-            q.clone_from(&steady.q);
-            rates.clone_from(&steady.rates);
-            steady.time
-        }
-        (None, Some(site)) => first_switch(problem, system, question, site, &q, &rates)?,
-        (None, None) => question.at.time.unwrap_or(0.0),
-    };
+    let (t, mut q, mut rates) = starting_state(problem, system, question, &context)?;
     let simulated = question.about.is_none() && question.at.state.is_none() && t > 0.0;
     if let Some(state) = &question.at.state {
         for (entry, value) in state {
@@ -331,6 +300,51 @@ pub fn answer_in(
         frame,
         period,
     })
+}
+
+/// The time and state a question starts from, before its own `state` and any simulation:
+/// the initial state (the rates just after the impact where it is asked after it), or an
+/// earlier steady question's state (`about`), at the time asked or at the first switch of
+/// a friction site.
+fn starting_state(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    context: &Context,
+) -> Result<(f64, Vec<f64>, Vec<f64>), ProblemError> {
+    let mut q: Vec<f64> = problem.initial_coordinates();
+    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let at = &question.at;
+    let from_after = at.after_impact
+        || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));
+    match context.after {
+        Some(after) if from_after => rates.copy_from_slice(after),
+        None if at.after_impact => {
+            return Err(failure(
+                question,
+                "the question is asked after the impact, but the problem has no `impact`".into(),
+                "remove `after_impact`, or give the problem an `impact`",
+            ))
+        }
+        _ => {}
+    }
+    let t = match (question.about, question.at.switch) {
+        (Some(k), _) => {
+            let Some(Some(steady)) = context.earlier.get(k) else {
+                return Err(failure(
+                    question,
+                    format!("question {k} does not find a steady motion to ask about"),
+                    "`about` names a `steady` question of find.questions, by its index from 0",
+                ));
+            };
+            q.clone_from(&steady.q);
+            rates.clone_from(&steady.rates);
+            steady.time
+        }
+        (None, Some(site)) => first_switch(problem, system, question, site, &q, &rates)?,
+        (None, None) => question.at.time.unwrap_or(0.0),
+    };
+    Ok((t, q, rates))
 }
 
 /// The state at `t`, simulated from the state in `q` and `rates`, written into them.

@@ -13,8 +13,8 @@
 //! force that sticking needed (it opposes the motion that would start).
 
 use super::linear::solve_linear;
-use crate::equations::rows::Sum;
 use crate::equations::Derivation;
+use crate::plan::rows::Sum;
 use crate::symbolic::compile::Program;
 use crate::symbolic::Expr;
 use nalgebra::{DMatrix, DVector};
@@ -233,7 +233,8 @@ impl Friction {
         a: &mut DMatrix<f64>,
         b: &mut DVector<f64>,
         modes: &[Held],
-        (signs, run): (&[Vec<f64>], &[(f64, Vec<f64>)]),
+        signs: &[Vec<f64>],
+        run: &[(f64, Vec<f64>)],
     ) {
         for ((slot, mode), (sign, (mu, slip))) in
             self.slots.iter().zip(modes).zip(signs.iter().zip(run))
@@ -294,7 +295,7 @@ impl Friction {
         // direction until it stands still.
         for _ in 0..=2 * self.slots.len() + 2 + DIRECTION_PASSES {
             let (mut a, mut b) = (a.clone(), b.clone());
-            self.slip_rows(&mut a, &mut b, &modes, (&signs, &run));
+            self.slip_rows(&mut a, &mut b, &modes, &signs, &run);
             let solved = solve_linear(&a, &b);
             // Whether this pass takes the split of forces that statics leaves free.
             let shared = solved.is_none();
