@@ -1,7 +1,7 @@
 //! `mbd-tutor draw`: the configuration and every free-body diagram as SVG files.
 
 use crate::cli::{Common, DrawArgs};
-use crate::equations::system::State;
+use crate::equations::State;
 use crate::equations::{Derivation, Method};
 use crate::numeric::system::System;
 use crate::render::draw::{Drawing, View};

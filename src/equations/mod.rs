@@ -11,17 +11,16 @@ pub mod composite;
 mod constraint_rows;
 mod derive;
 pub mod energy;
-pub mod friction;
+mod friction;
 pub mod kane;
 pub mod lagrange;
 mod motion_law;
-pub mod newton_euler;
+mod newton_euler;
 mod on_motion;
-/// The rows of equations, which the planner writes out in step 3 (see [`crate::plan::rows`]).
-pub use crate::plan::rows;
-pub mod system;
+mod system;
 mod unknowns;
 mod write;
 
 pub use derive::derive;
+pub use friction::{friction_forces, normal_forces};
 pub use system::{Derivation, LinearSystem, Method, Request, Rows, State};

@@ -5,7 +5,7 @@ use crate::mechanics::independent::{DependentSpeeds, KeptForces};
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
 use crate::plan::planner::Rejected;
-pub use crate::plan::rows::Form;
+use crate::plan::rows::Form;
 use crate::plan::rows::{Equation, Inertia, LazyInertia};
 use crate::symbolic::{Expr, Symbol};
 
@@ -109,8 +109,6 @@ impl Derivation<'_> {
         self.lazy_inertia.get(&self.model)
     }
 }
-
-pub use crate::mechanics::sites::reaction_unknowns;
 
 /// A state the equations will be solved at: time, coordinates and rates in coordinate order.
 #[derive(Clone, Debug, PartialEq)]

@@ -76,7 +76,7 @@ impl<'p> Reference<'p> {
         };
         let model = &derivation.model;
         let sites: Vec<usize> = (0..model.sites.len()).collect();
-        let reactions = crate::equations::system::reaction_unknowns(model, &sites);
+        let reactions = crate::mechanics::sites::reaction_unknowns(model, &sites);
         let full = newton_euler.as_ref().unwrap_or(&derivation);
         let samples = sample(problem, &solver, full, &derivation)?;
         let count = problem.coordinates.len();
