@@ -4,8 +4,8 @@
 
 use crate::support::{all_problems, problem as problem_path};
 use crate::svg_reader::{apply, parse, Element};
-use mbd_tutor::cmd::draw::derivation_at;
-use mbd_tutor::equations::system::State;
+use mbd_tutor::cmd::derivation_at;
+use mbd_tutor::equations::State;
 use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::mechanics::Vector;
 use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem};
