@@ -1,7 +1,7 @@
 //! Steps 3 and 5: Newton–Euler, the Motion Law, Kane's method and Lagrange's equations ->
 //! a linear system in the q'' and the reactions.
 //!
-//! The entry is [`derive`]`(problem, method, `[`Request`]`)` -> [`Derivation`]. Each method
+//! The entry is [`derive()`]`(problem, method, `[`Request`]`)` -> [`Derivation`]. Each method
 //! is a module behind one signature (its view of the model, then its rows and their
 //! unknowns): `newton_euler`, `motion_law` (which calls the planner of [`crate::plan`]),
 //! `kane`, `lagrange`; the unknowns common to all and the assembly of `A x = b` are

@@ -7,7 +7,7 @@
 //! the target; the target keeps its permissions. A target that is not a regular file (a
 //! FIFO, a device, a directory, a link to one) or is read-only is refused, and so is any
 //! file this run has read ([`refuse_input`]). The temporary file is removed on every failure,
-//! and on SIGINT or SIGTERM while it is written ([`cleanup`]).
+//! and on SIGINT or SIGTERM while it is written (`cleanup`).
 
 mod cleanup;
 mod inputs;
