@@ -1,4 +1,6 @@
-//! The one top-level error that wraps each stage's own.
+//! The one top-level error that wraps each stage's own, and the two errors that belong to
+//! no one stage: a batch of problems of which some failed, and a submission to `grade`
+//! that cannot be read (defined here so that this file imports no stage above it).
 
 use std::fmt;
 use std::path::PathBuf;
@@ -10,7 +12,9 @@ pub enum Error {
     Usage(String),
     /// A file could not be read or written.
     Io {
+        /// The file.
         path: PathBuf,
+        /// The system's reason.
         source: std::io::Error,
     },
     /// The problem is invalid: every error found, each with its JSON path.
@@ -29,7 +33,7 @@ pub enum Error {
         method: crate::equations::Method,
     },
     /// A submission to `grade` cannot be read: its JSON path and a hint.
-    Submission(crate::grade::SubmissionError),
+    Submission(SubmissionError),
     /// Some problems of a directory failed (`explain DIR`); the others were written.
     Batch(BatchError),
 }
@@ -207,3 +211,46 @@ impl fmt::Display for BatchError {
 }
 
 impl std::error::Error for BatchError {}
+
+/// A submission whose JSON cannot be graded at all: not JSON, not an object, a section of
+/// the wrong type or an unknown key.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubmissionError {
+    /// The JSON path of the offending value, e.g. `equations`; empty for the whole file.
+    pub path: String,
+    /// What is wrong.
+    pub message: String,
+    /// What to do about it.
+    pub hint: Option<String>,
+}
+
+impl SubmissionError {
+    pub(crate) fn new(
+        path: &str,
+        message: impl Into<String>,
+        hint: impl Into<String>,
+    ) -> SubmissionError {
+        SubmissionError {
+            path: path.to_string(),
+            message: message.into(),
+            hint: Some(hint.into()),
+        }
+    }
+}
+
+impl fmt::Display for SubmissionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if !self.path.is_empty() {
+            write!(f, "submission at {}: ", self.path)?;
+        } else {
+            write!(f, "submission: ")?;
+        }
+        write!(f, "{}", self.message)?;
+        if let Some(hint) = &self.hint {
+            write!(f, "\n  hint: {hint}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for SubmissionError {}

@@ -1,3 +1,6 @@
+//! The `mbd-tutor` command: parses the command line and runs the command (see the
+//! library, `mbd_tutor`).
+
 use clap::Parser;
 use std::process::ExitCode;
 

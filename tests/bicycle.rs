@@ -85,7 +85,7 @@ impl Bicycle {
         let derivation = derive_rows(&problem, method).expect("the bicycle derives");
         Bicycle {
             names: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
-            initial_q: problem.coordinates.iter().map(|c| c.initial).collect(),
+            initial_q: problem.initial_coordinates(),
             initial_rates: problem.coordinates.iter().map(|c| c.rate).collect(),
             compiled: Compiled::new(&derivation),
         }

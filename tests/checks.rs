@@ -14,7 +14,7 @@ fn problem(name: &str) -> Problem {
 }
 
 fn initial(problem: &Problem) -> Vec<f64> {
-    problem.coordinates.iter().map(|c| c.initial).collect()
+    problem.initial_coordinates()
 }
 
 /// The equations of `inner` with their evaluation changed by `change`, which is given the

@@ -3,11 +3,11 @@
 //! worked by hand below.
 
 use crate::support::{assert_close, column, problem, run_json, simulate, solve_all, METHODS};
-use mbd_tutor::equations::rows::Sum;
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::numeric::system::System;
 use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::plan::rows::Sum;
 use mbd_tutor::problem::load_file;
 use mbd_tutor::symbolic::linear::linear_split;
 use mbd_tutor::symbolic::{add, mul, pow, Expr, Symbol};
@@ -205,7 +205,7 @@ fn the_disc_inside_a_cylinder_has_kanes_rows_of_its_one_independent_speed() {
     assert_eq!(speeds.c[spin][0], expected);
     // x'' at the initial state, released at rest.
     let compiled = Compiled::new(&kane);
-    let mut q: Vec<f64> = disc.coordinates.iter().map(|c| c.initial).collect();
+    let mut q: Vec<f64> = disc.initial_coordinates();
     let mut rates = vec![0.0; q.len()];
     compiled
         .assemble(0.0, &mut q, &mut rates)

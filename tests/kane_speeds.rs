@@ -3,12 +3,12 @@
 //! constraint force among the unknowns unless asked for, and the q'' of Newton–Euler; the
 //! rolling coin's three equations against a derivation by hand.
 
-use mbd_tutor::equations::friction::{friction_forces, normal_forces};
-use mbd_tutor::equations::rows::Sum;
+use mbd_tutor::equations::{friction_forces, normal_forces};
 use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::numeric::evaluate::Compiled;
 use mbd_tutor::numeric::system::System;
 use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::plan::rows::Sum;
 use mbd_tutor::problem::{load_file, Problem};
 use mbd_tutor::symbolic::eval::eval;
 use mbd_tutor::symbolic::Symbol;
@@ -65,7 +65,7 @@ fn requested_components(derivation: &Derivation) -> Vec<Symbol> {
     let model = &derivation.model;
     let friction = friction_forces(model);
     let sites = &model.problem.find_reactions;
-    let asked = mbd_tutor::equations::system::reaction_unknowns(model, sites);
+    let asked = mbd_tutor::mechanics::sites::reaction_unknowns(model, sites);
     asked
         .into_iter()
         .filter(|u| !friction.contains(u))
@@ -285,7 +285,7 @@ fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     let (m, r, g) = (0.5, 0.1, 9.81);
     let mut random = Lcg(3);
     for _ in 0..8 {
-        let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+        let mut q: Vec<f64> = problem.initial_coordinates();
         let mut rates = vec![0.0; q.len()];
         q[index("theta")] = 0.3 + 0.8 * random.next();
         q[index("psi")] = 2.0 * random.next();

@@ -2,12 +2,12 @@
 //! unknowns at a time, and the rejected candidates the worked solution shows.
 
 use crate::support::{problem, run};
-use mbd_tutor::equations::rows::{Equation, Sum};
-use mbd_tutor::equations::system::reaction_unknowns;
 use mbd_tutor::equations::{Derivation, Method};
+use mbd_tutor::mechanics::sites::reaction_unknowns;
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::plan::choose::blocks;
 use mbd_tutor::plan::rejection::{Reason, SHOWN};
+use mbd_tutor::plan::rows::{Equation, Sum};
 use mbd_tutor::problem::load_file;
 use mbd_tutor::solution::derived::plan;
 

@@ -48,7 +48,7 @@ fn bundled_problems_keep_their_numbers_with_the_recursive_form() {
             assert!(!fastest.is_own(), "the checks must derive their own rows");
             let dense = Solver::new(&problem, &derivation);
             let what = format!("{} by {}", path.display(), method.name());
-            let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+            let q: Vec<f64> = problem.initial_coordinates();
             let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
             let ours = fastest.solve(0.0, &q, &rates).expect("solves");
             let theirs = dense.solve(0.0, &q, &rates).expect("solves");
@@ -69,7 +69,7 @@ fn without_find(path: &str) -> Problem {
 
 /// The first second of the simulations of `ours` and `theirs` from the initial state.
 fn first_second_agrees(problem: &Problem, ours: &dyn System, theirs: &dyn System, what: &str) {
-    let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let q: Vec<f64> = problem.initial_coordinates();
     let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let ours = simulate(ours, &q, &rates, &problem.simulate).expect("simulates");
     let theirs = simulate(theirs, &q, &rates, &problem.simulate).expect("simulates");

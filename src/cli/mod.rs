@@ -1,4 +1,4 @@
-//! The command line: clap types, converted into a plain [`Config`] before any work.
+//! The command line: clap types, converted into a plain `Config` before any work.
 
 mod commands;
 mod common;

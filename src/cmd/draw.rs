@@ -1,7 +1,7 @@
 //! `mbd-tutor draw`: the configuration and every free-body diagram as SVG files.
 
 use crate::cli::{Common, DrawArgs};
-use crate::equations::system::State;
+use crate::equations::State;
 use crate::equations::{Derivation, Method};
 use crate::numeric::system::System;
 use crate::render::draw::{Drawing, View};
@@ -86,7 +86,7 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
     };
     let mut planned: Vec<String> = Vec::new();
     for drawing in &drawings {
-        let stem = crate::output::names::short_stem(&drawing.name);
+        let stem = crate::output::short_stem(&drawing.name);
         planned.push(format!("{stem}.svg"));
         if args.tikz {
             planned.push(format!("{stem}.tex"));
@@ -104,7 +104,7 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
         source,
     })?;
     for drawing in &drawings {
-        let stem = crate::output::names::short_stem(&drawing.name);
+        let stem = crate::output::short_stem(&drawing.name);
         let path = directory.join(format!("{stem}.svg"));
         // Names in words (`push_1`) with their subscripts, as the handout writes them.
         let svg = crate::render::word_scripts::subscripts_in_words(&drawing.svg(""));

@@ -219,6 +219,8 @@ fn run_directory(args: &ExplainArgs) -> Result<(), Error> {
     }
 }
 
+/// The name of the file `path` without its extension (`solution` when it has none): the
+/// stem of the written handout.
 pub fn file_stem(path: &Path) -> String {
     path.file_stem()
         .map(|s| s.to_string_lossy().into_owned())

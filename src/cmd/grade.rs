@@ -17,7 +17,7 @@ pub fn run(args: GradeArgs) -> Result<(), Error> {
         let key = args.key.as_deref().ok_or_else(|| {
             Error::Usage("--batch needs --key KEY.csv (written by `variants`)".into())
         })?;
-        let csv = crate::grade::batch::grade_batch(dir, key, method)?;
+        let csv = crate::grade::grade_batch(dir, key, method)?;
         return write_output(args.output.as_deref(), csv.as_bytes());
     }
     let (Some(problem_path), Some(submission_path)) = (&args.problem, &args.submission) else {

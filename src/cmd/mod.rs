@@ -1,18 +1,21 @@
-//! One file per subcommand; each turns its arguments into work on the pipeline.
+//! One file per subcommand; each turns its arguments into work on the pipeline. The
+//! entry is [`run`]; [`derivation_at`] serves the drawings' tests.
 
-pub mod answer;
-pub mod check;
-pub mod draw;
-pub mod explain;
-pub mod grade;
-pub mod impact;
-pub mod linearize;
-pub mod schema;
-pub mod serve;
-pub mod simulate;
-pub mod solve;
-pub mod statics;
-pub mod variants;
+mod answer;
+mod check;
+mod draw;
+mod explain;
+mod grade;
+mod impact;
+mod linearize;
+mod schema;
+mod serve;
+mod simulate;
+mod solve;
+mod statics;
+mod variants;
+
+pub use draw::derivation_at;
 
 use crate::cli::Command;
 use crate::problem::{ProblemError, ProblemErrors};

@@ -8,8 +8,5 @@ use crate::Error;
 /// # Errors
 /// [`Error::Io`] when the output cannot be written.
 pub fn run(args: SchemaArgs) -> Result<(), Error> {
-    crate::output::write_output(
-        args.output.as_deref(),
-        crate::problem::schema::SCHEMA.as_bytes(),
-    )
+    crate::output::write_output(args.output.as_deref(), crate::problem::SCHEMA.as_bytes())
 }

@@ -35,7 +35,7 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     let derivation = derive(&problem, super::method(args.common.method))?;
     super::report_constraints(&derivation.model, &[]);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
-    let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut q0: Vec<f64> = problem.initial_coordinates();
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     if problem.impact.is_some() {
         // The motion after the impact: from its configuration, with the rates just after.

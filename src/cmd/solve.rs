@@ -15,7 +15,7 @@ pub fn initial_state(
     problem: &crate::problem::Problem,
     assignments: &[String],
 ) -> Result<(Vec<f64>, Vec<f64>), Error> {
-    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut q: Vec<f64> = problem.initial_coordinates();
     let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     for (name, value) in parse_assignments(assignments)? {
         let (base, is_rate) = match name.strip_suffix('\'') {

@@ -44,7 +44,7 @@ pub fn run(args: StaticsArgs) -> Result<(), Error> {
 /// # Errors
 /// A usage error for a name that is not a free or dependent coordinate.
 pub fn guesses(problem: &Problem, near: &[String]) -> Result<Vec<(Vec<f64>, String)>, Error> {
-    let initial: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let initial: Vec<f64> = problem.initial_coordinates();
     if near.is_empty() {
         return Ok(vec![(initial, "the initial configuration".into())]);
     }

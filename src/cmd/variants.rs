@@ -139,7 +139,7 @@ fn no_range() -> Error {
 struct Drawn<'a> {
     problem: &'a Problem,
     raw: &'a serde_json::Value,
-    varied: &'a [(String, crate::problem::vary::Grid)],
+    varied: &'a [(String, crate::problem::Grid)],
     earlier: &'a [Variant],
 }
 
@@ -222,7 +222,7 @@ fn explain_args(args: &VariantsArgs, file: &Path) -> ExplainArgs {
 
 /// `key.csv`: a header, then one row per variant: its file, its seed, its redraws, the
 /// constants drawn, then every answer.
-fn key(varied: &[(String, crate::problem::vary::Grid)], variants: &[Variant]) -> String {
+fn key(varied: &[(String, crate::problem::Grid)], variants: &[Variant]) -> String {
     let mut header: Vec<String> = ["file", "seed", "redraws"].map(String::from).to_vec();
     header.extend(varied.iter().map(|(name, _)| name.clone()));
     if let Some(first) = variants.first() {

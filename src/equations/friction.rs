@@ -3,8 +3,8 @@
 //! that say so are named after the site's tangential components, so that the numbers can
 //! exchange them for the sliding law where the site slips ([`crate::numeric::friction`]).
 
-use super::rows::{Equation, Sum};
 use crate::mechanics::{MechanicsError, Model};
+use crate::plan::rows::{Equation, Sum};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};
 

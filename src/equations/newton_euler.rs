@@ -1,6 +1,7 @@
 //! Newton–Euler: every body is a free body, with F along each axis in play and M about its
 //! mass center. The unknowns are every q'' and every reaction component.
 
+use super::unknowns::{Inputs, MethodRows, Setup};
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
 use crate::plan::rows::{resultant, unit_direction, unknowns_in, Equation, Inertia, Sum};
@@ -82,4 +83,16 @@ pub fn equations(
         }
     }
     rows
+}
+
+/// Newton–Euler's rows: every body's, then the constraint rows; every reaction unknown.
+pub(super) fn rows(inputs: &Inputs, setup: Setup) -> MethodRows {
+    let Inputs {
+        model,
+        actions,
+        inertia,
+        ..
+    } = *inputs;
+    let rows = equations(model, actions, inertia, &setup.every_unknown);
+    setup.with_given(rows)
 }

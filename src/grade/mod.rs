@@ -13,10 +13,10 @@
 //! - the q'', the kinematics, the partial velocities and the generalized forces by their
 //!   values at the sampled states, vectors compared in N.
 //!
-//! [`batch`] grades a class's submissions, each against its own variant, into a gradebook.
+//! [`grade_batch`] grades a class's submissions, each against its own variant, into a gradebook.
 
 mod answers;
-pub mod batch;
+mod batch;
 mod contributions;
 mod diagnose;
 mod equations;
@@ -29,9 +29,10 @@ mod scalars;
 mod submission;
 mod vectors;
 
+pub use batch::grade_batch;
 pub use reference::{Reference, Sample};
 pub use report::{Item, Report, Verdict};
-pub use submission::{read, Submission, SubmissionError};
+pub use submission::{read, Submission};
 
 /// Grades `submission` against the worked solution `reference`: its answers, q'',
 /// equations, kinematics, partial velocities and generalized forces, in that order.

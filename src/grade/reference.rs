@@ -22,7 +22,9 @@ const SAMPLES: usize = 4;
 pub struct Sample {
     /// Time, coordinates and rates.
     pub t: f64,
+    /// The coordinates.
     pub q: Vec<f64>,
+    /// Their rates.
     pub rates: Vec<f64>,
     /// The constants, the state, the q'' of the equations of motion and every reaction
     /// component of every site there.
@@ -74,7 +76,7 @@ impl<'p> Reference<'p> {
         };
         let model = &derivation.model;
         let sites: Vec<usize> = (0..model.sites.len()).collect();
-        let reactions = crate::equations::system::reaction_unknowns(model, &sites);
+        let reactions = crate::mechanics::sites::reaction_unknowns(model, &sites);
         let full = newton_euler.as_ref().unwrap_or(&derivation);
         let samples = sample(problem, &solver, full, &derivation)?;
         let count = problem.coordinates.len();

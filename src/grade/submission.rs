@@ -1,47 +1,8 @@
 //! A student's submission read from JSON: every section optional, each entry kept as
 //! written so that one unparsable expression is graded invalid and the rest still graded.
 
+use crate::SubmissionError;
 use serde_json::Value;
-use std::fmt;
-
-/// A submission whose JSON cannot be graded at all: not JSON, not an object, a section of
-/// the wrong type or an unknown key.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SubmissionError {
-    /// The JSON path of the offending value, e.g. `equations`; empty for the whole file.
-    pub path: String,
-    /// What is wrong.
-    pub message: String,
-    /// What to do about it.
-    pub hint: Option<String>,
-}
-
-impl SubmissionError {
-    fn new(path: &str, message: impl Into<String>, hint: impl Into<String>) -> SubmissionError {
-        SubmissionError {
-            path: path.to_string(),
-            message: message.into(),
-            hint: Some(hint.into()),
-        }
-    }
-}
-
-impl fmt::Display for SubmissionError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if !self.path.is_empty() {
-            write!(f, "submission at {}: ", self.path)?;
-        } else {
-            write!(f, "submission: ")?;
-        }
-        write!(f, "{}", self.message)?;
-        if let Some(hint) = &self.hint {
-            write!(f, "\n  hint: {hint}")?;
-        }
-        Ok(())
-    }
-}
-
-impl std::error::Error for SubmissionError {}
 
 /// A list of named entries in the order written.
 pub type Named<T> = Vec<(String, T)>;

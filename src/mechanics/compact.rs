@@ -95,6 +95,8 @@ fn same_value(a: &Expr, b: &Expr, states: &[Values]) -> bool {
     })
 }
 
+/// `value` (a component of `quantity` along `axis`, or with `rate` its part for that
+/// speed) under a name when it has two terms or more, itself otherwise.
 pub fn name_part(value: &Expr, quantity: &Quantity, axis: usize, rate: Option<&Symbol>) -> Expr {
     if value.terms().len() < 2 {
         return value.clone();

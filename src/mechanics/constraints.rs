@@ -18,6 +18,7 @@ use crate::problem::{BodyId, ConstraintKind, JointKind};
 use crate::symbolic::diff::time_derivative;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
+use crate::symbolic::relation::Relation;
 use crate::symbolic::{simplify, Expr, Symbol};
 
 fn unit(axis: usize) -> Components {
@@ -35,13 +36,11 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     let mut sites: Vec<Site> = (0..problem.joints.len())
         .map(|j| Site::of_joint(model, j))
         .collect();
-    let mut rows = Vec::new();
-    let mut dropped = Vec::new();
-    let mut tilts = Vec::new();
-    let mut relations = Vec::new();
-    let mut friction: Vec<FrictionSite> = Vec::new();
+    let mut found = Gathered::default();
     for (j, site) in sites.iter().enumerate() {
-        friction.extend(super::friction::joint_site(model, j, site)?);
+        found
+            .friction
+            .extend(super::friction::joint_site(model, j, site)?);
     }
     for c in 0..problem.closures.len() {
         let site = closure_site(model, c)?;
@@ -49,8 +48,8 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
         let closure = closure_rows(model, &site, index)?;
         let (kept, frictional) =
             super::friction::split_closure_rows(model, c, (&site, index), closure);
-        rows.extend(kept);
-        friction.extend(frictional);
+        found.rows.extend(kept);
+        found.friction.extend(frictional);
         sites.push(site);
     }
     let values = initial_values(model);
@@ -58,86 +57,14 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
         match &constraint.kind {
             ConstraintKind::Rolling { .. }
             | ConstraintKind::Gear { .. }
-            | ConstraintKind::Contact { .. } => {
-                let gear = matches!(constraint.kind, ConstraintKind::Gear { .. });
-                let point = matches!(constraint.kind, ConstraintKind::Contact { .. });
-                let (mut site, contact) = if gear {
-                    super::gear::gear_site(model, k)?
-                } else if point {
-                    super::friction::contact_point_site(model, k)?
-                } else {
-                    contact_site(model, k)?
-                };
-                let index = problem.joints.len() + problem.closures.len() + k;
-                while sites.len() < index {
-                    // Keep site indices aligned with `Problem::site_name` for entries that are
-                    // not contacts: they carry no reaction.
-                    sites.push(placeholder(model, sites.len()));
-                }
-                if !point {
-                    tilts.push((site.name.clone(), contact.tilt.clone()));
-                }
-                // No slip is relative: the disc's material point at the contact moves as
-                // the material point of `on` there (at rest when `on` is N).
-                let velocity = &match site.parent {
-                    BodyId::GROUND => site.point.velocity.clone(),
-                    on => site
-                        .point
-                        .velocity
-                        .minus(&model.point_on(on, &site.parent_offset).velocity),
-                };
-                let keeps_height = identically_zero(&contact.height, model);
-                if keeps_height {
-                    site.reactions.pop();
-                    dropped.push(if gear {
-                        (
-                            format!("{}.distance", site.name),
-                            "the joints already keep the centres at the pitch radii's distance, so the distance constraint holds identically and the joints carry the push along the line of centres".to_string(),
-                        )
-                    } else {
-                        (
-                            format!("{}.height", site.name),
-                            "the joints already keep the disc on the plane, so its height constraint holds identically and the joints carry the normal load".to_string(),
-                        )
-                    });
-                }
-                // Written with what holds where the contact does (a unit line of centres):
-                // equal on the motion, where the rows are used.
-                let written = |row: Expr| match &contact.on_motion {
-                    Some(relation) => relation.reduce(&simplify(&row)),
-                    None => row,
-                };
-                if let Some(relation) = &contact.on_motion {
-                    relations.push((site.name.clone(), relation.clone()));
-                }
-                let mut site_rows = Vec::new();
-                for (component, reaction) in site.reactions.iter().enumerate() {
-                    let is_normal = !keeps_height && component + 1 == site.reactions.len();
-                    site_rows.push(ConstraintRow {
-                        origin: RowOrigin::Site {
-                            site: index,
-                            component,
-                        },
-                        name: format!("{}.{}", site.name, reaction.component()),
-                        position: is_normal.then(|| contact.height.clone()),
-                        velocity: written(velocity.dot(&reaction.direction, &model.frames)),
-                        unknown: reaction.unknown(&site.name),
-                        loop_acceleration: None,
-                    });
-                }
-                let (kept, frictional) =
-                    super::friction::split_rows(model, k, index, site_rows, keeps_height)?;
-                rows.extend(kept);
-                friction.extend(frictional);
-                sites.push(site);
-            }
+            | ConstraintKind::Contact { .. } => contact(model, k, &mut sites, &mut found)?,
             ConstraintKind::Position { expression } => {
                 let velocity = time_derivative(expression).map_err(|e| MechanicsError {
                     path: constraint.path.clone(),
                     message: e.to_string(),
                     hint: None,
                 })?;
-                rows.push(ConstraintRow {
+                found.rows.push(ConstraintRow {
                     origin: RowOrigin::Position(k),
                     name: constraint.name.clone(),
                     position: Some(expression.clone()),
@@ -146,7 +73,7 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
                     loop_acceleration: None,
                 });
             }
-            ConstraintKind::Velocity { expression } => rows.push(ConstraintRow {
+            ConstraintKind::Velocity { expression } => found.rows.push(ConstraintRow {
                 origin: RowOrigin::Velocity(k),
                 name: constraint.name.clone(),
                 position: None,
@@ -160,28 +87,14 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     while sites.len() < total {
         sites.push(placeholder(model, sites.len()));
     }
-    let mut prescribed = Vec::new();
-    for (i, coordinate) in problem.coordinates.iter().enumerate() {
-        let Some(motion) = &coordinate.motion else {
-            continue;
-        };
-        prescribed.push(i);
-        let q = problem.coordinate_expr(i, 0);
-        let position = &q - motion;
-        let velocity = time_derivative(&position).map_err(|e| MechanicsError {
-            path: format!("coordinates.{}.motion", coordinate.name),
-            message: e.to_string(),
-            hint: None,
-        })?;
-        rows.push(ConstraintRow {
-            origin: RowOrigin::Prescribed(i),
-            name: format!("{} prescribed", coordinate.name),
-            position: Some(position),
-            velocity,
-            unknown: drive_symbol(problem, i),
-            loop_acceleration: None,
-        });
-    }
+    let prescribed = prescribed_rows(model, &mut found.rows)?;
+    let Gathered {
+        rows,
+        mut dropped,
+        tilts,
+        relations,
+        mut friction,
+    } = found;
     let mut rows = drop_redundant(model, rows, &values, &mut dropped);
     // A friction site's stick rows enforce its tangential reactions as the rows do theirs.
     let kept = rows.len();
@@ -204,6 +117,136 @@ pub fn build(model: &Model) -> Result<(Vec<Site>, Constraints), MechanicsError> 
     };
     super::dependent::choose(model, &mut constraints, &values)?;
     Ok((sites, constraints))
+}
+
+/// What the sites' constraints add up to as they are read, before the redundant rows are
+/// dropped.
+#[derive(Default)]
+struct Gathered {
+    rows: Vec<ConstraintRow>,
+    /// The rows dropped, with the reason.
+    dropped: Vec<(String, String)>,
+    /// Each contact's tilt of its disc, by site name.
+    tilts: Vec<(String, Expr)>,
+    /// What holds on the motion at a contact, by site name.
+    relations: Vec<(String, Relation)>,
+    friction: Vec<FrictionSite>,
+}
+
+/// The site and rows of contact `k` (`rolling`, `gear` or `contact`): no slip at the
+/// contact, and the height (or the distance of the centres) kept, where the joints do not
+/// already keep it.
+fn contact(
+    model: &Model,
+    k: usize,
+    sites: &mut Vec<Site>,
+    found: &mut Gathered,
+) -> Result<(), MechanicsError> {
+    let problem = model.problem;
+    let constraint = &problem.constraints[k];
+    let gear = matches!(constraint.kind, ConstraintKind::Gear { .. });
+    let point = matches!(constraint.kind, ConstraintKind::Contact { .. });
+    let (mut site, contact) = if gear {
+        super::gear::gear_site(model, k)?
+    } else if point {
+        super::friction::contact_point_site(model, k)?
+    } else {
+        contact_site(model, k)?
+    };
+    let index = problem.joints.len() + problem.closures.len() + k;
+    while sites.len() < index {
+        // Keep site indices aligned with `Problem::site_name` for entries that are
+        // not contacts: they carry no reaction.
+        sites.push(placeholder(model, sites.len()));
+    }
+    if !point {
+        found.tilts.push((site.name.clone(), contact.tilt.clone()));
+    }
+    // No slip is relative: the disc's material point at the contact moves as
+    // the material point of `on` there (at rest when `on` is N).
+    let velocity = &match site.parent {
+        BodyId::GROUND => site.point.velocity.clone(),
+        on => site
+            .point
+            .velocity
+            .minus(&model.point_on(on, &site.parent_offset).velocity),
+    };
+    let keeps_height = identically_zero(&contact.height, model);
+    if keeps_height {
+        site.reactions.pop();
+        found.dropped.push(if gear {
+            (
+                format!("{}.distance", site.name),
+                "the joints already keep the centres at the pitch radii's distance, so the distance constraint holds identically and the joints carry the push along the line of centres".to_string(),
+            )
+        } else {
+            (
+                format!("{}.height", site.name),
+                "the joints already keep the disc on the plane, so its height constraint holds identically and the joints carry the normal load".to_string(),
+            )
+        });
+    }
+    // Written with what holds where the contact does (a unit line of centres):
+    // equal on the motion, where the rows are used.
+    let written = |row: Expr| match &contact.on_motion {
+        Some(relation) => relation.reduce(&simplify(&row)),
+        None => row,
+    };
+    if let Some(relation) = &contact.on_motion {
+        found.relations.push((site.name.clone(), relation.clone()));
+    }
+    let mut site_rows = Vec::new();
+    for (component, reaction) in site.reactions.iter().enumerate() {
+        let is_normal = !keeps_height && component + 1 == site.reactions.len();
+        site_rows.push(ConstraintRow {
+            origin: RowOrigin::Site {
+                site: index,
+                component,
+            },
+            name: format!("{}.{}", site.name, reaction.component()),
+            position: is_normal.then(|| contact.height.clone()),
+            velocity: written(velocity.dot(&reaction.direction, &model.frames)),
+            unknown: reaction.unknown(&site.name),
+            loop_acceleration: None,
+        });
+    }
+    let (kept, frictional) = super::friction::split_rows(model, k, index, site_rows, keeps_height)?;
+    found.rows.extend(kept);
+    found.friction.extend(frictional);
+    sites.push(site);
+    Ok(())
+}
+
+/// The rows of the prescribed coordinates, `q − motion(t) = 0` each, added to `rows`;
+/// the prescribed coordinates' indices.
+fn prescribed_rows(
+    model: &Model,
+    rows: &mut Vec<ConstraintRow>,
+) -> Result<Vec<usize>, MechanicsError> {
+    let problem = model.problem;
+    let mut prescribed = Vec::new();
+    for (i, coordinate) in problem.coordinates.iter().enumerate() {
+        let Some(motion) = &coordinate.motion else {
+            continue;
+        };
+        prescribed.push(i);
+        let q = problem.coordinate_expr(i, 0);
+        let position = &q - motion;
+        let velocity = time_derivative(&position).map_err(|e| MechanicsError {
+            path: format!("coordinates.{}.motion", coordinate.name),
+            message: e.to_string(),
+            hint: None,
+        })?;
+        rows.push(ConstraintRow {
+            origin: RowOrigin::Prescribed(i),
+            name: format!("{} prescribed", coordinate.name),
+            position: Some(position),
+            velocity,
+            unknown: drive_symbol(problem, i),
+            loop_acceleration: None,
+        });
+    }
+    Ok(prescribed)
 }
 
 /// A closure's or contact's reaction components whose rows were dropped are not unknowns:

@@ -19,7 +19,7 @@ const LARGEST_REMAINDER: usize = 8;
 
 /// `A⁻¹[s][k]` of the square matrix `a` (rows `k`, columns `s`), each entry a named
 /// quantity (`prefix` keeps the names apart from any other), or `None` when the block left
-/// after the numeric pivots is larger than [`LARGEST_REMAINDER`].
+/// after the numeric pivots is larger than `LARGEST_REMAINDER`.
 pub fn inverse_by_minors(a: &[Vec<Expr>], prefix: &str) -> Option<Vec<Vec<Expr>>> {
     let n = a.len();
     let mut m: Vec<Vec<Expr>> = a.to_vec();

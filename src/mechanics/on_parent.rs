@@ -23,7 +23,7 @@ use crate::symbolic::print::latex_name;
 use crate::symbolic::{add, simplify, Expr, Symbol};
 
 /// The angular acceleration of `body` from its parent's as `alphas` names them (in each
-/// body's own unit vectors). `None` as for [`parent_in_chain`].
+/// body's own unit vectors). `None` as for `parent_in_chain`.
 pub fn angular(model: &Model, body: BodyId, alphas: &[Components]) -> Option<Built> {
     let parent = parent_in_chain(model, body)?;
     let (accelerations, rates) = symbols(model);

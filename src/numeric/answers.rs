@@ -18,7 +18,7 @@
 use super::answer_frame;
 use super::simulate::simulate;
 use super::steady::{state_values, steady};
-use super::system::{ReactionColumn, System};
+use super::system::{Evaluation, ReactionColumn, System};
 use crate::problem::{
     CoordinateKind, Problem, ProblemError, Question, QuestionKind, SimulateSettings, StateEntry,
 };
@@ -190,45 +190,7 @@ pub fn answer_in(
     question: &Question,
     context: Context,
 ) -> Result<Answer, ProblemError> {
-    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let at = &question.at;
-    let from_after = at.after_impact
-        || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));
-    match context.after {
-        Some(after) if from_after => rates.copy_from_slice(after),
-        None if at.after_impact => {
-            return Err(failure(
-                question,
-                "the question is asked after the impact, but the problem has no `impact`".into(),
-                "remove `after_impact`, or give the problem an `impact`",
-            ))
-        }
-        _ => {}
-    }
-    let solve_failed = |e: super::SolveError| {
-        failure(
-            question,
-            format!("cannot answer: {e}"),
-            "ask at another state, or check the problem's initial state",
-        )
-    };
-    let t = match (question.about, question.at.switch) {
-        (Some(k), _) => {
-            let Some(Some(steady)) = context.earlier.get(k) else {
-                return Err(failure(
-                    question,
-                    format!("question {k} does not find a steady motion to ask about"),
-                    "`about` names a `steady` question of find.questions, by its index from 0",
-                ));
-            };
-            q.clone_from(&steady.q);
-            rates.clone_from(&steady.rates);
-            steady.time
-        }
-        (None, Some(site)) => first_switch(problem, system, question, site, &q, &rates)?,
-        (None, None) => question.at.time.unwrap_or(0.0),
-    };
+    let (t, mut q, mut rates) = starting_state(problem, system, question, &context)?;
     let simulated = question.about.is_none() && question.at.state.is_none() && t > 0.0;
     if let Some(state) = &question.at.state {
         for (entry, value) in state {
@@ -237,29 +199,7 @@ pub fn answer_in(
         }
     }
     if simulated {
-        let settings = SimulateSettings {
-            duration: t,
-            output_step: t,
-            tolerance: problem.simulate.tolerance,
-        };
-        let trajectory = simulate(system, &q, &rates, &settings).map_err(solve_failed)?;
-        if let Some(stopped) = trajectory.stopped {
-            return Err(failure(
-                question,
-                format!("the simulation stopped before t = {t}: {stopped}"),
-                "ask at an earlier time",
-            ));
-        }
-        let n = q.len();
-        let Some(last) = trajectory.rows.last().filter(|r| r[0] == t) else {
-            return Err(failure(
-                question,
-                format!("the simulation did not reach t = {t}"),
-                "ask at an earlier time",
-            ));
-        };
-        q.copy_from_slice(&last[1..=n]);
-        rates.copy_from_slice(&last[n + 1..=2 * n]);
+        simulate_to(problem, system, question, t, (&mut q, &mut rates))?;
     }
     if question.kind.is_static() && !super::moving_slip::asked(problem, question) {
         return Err(failure(
@@ -276,8 +216,10 @@ pub fn answer_in(
     }
     system
         .assemble(t, &mut q, &mut rates)
-        .map_err(solve_failed)?;
-    let evaluation = system.evaluate(t, &q, &rates).map_err(solve_failed)?;
+        .map_err(|e| solve_failed(question, e))?;
+    let evaluation = system
+        .evaluate(t, &q, &rates)
+        .map_err(|e| solve_failed(question, e))?;
     let names = system.coordinate_names();
     let mut frame = None;
     let mut period = None;
@@ -295,72 +237,18 @@ pub fn answer_in(
             vec![(Quantity::Named(text.clone()), x)]
         }
         QuestionKind::Reaction { site: index } => {
-            let site = problem.site_name(*index);
-            let planar = problem.dimension == crate::problem::Dimension::Two;
-            // In the plane: the force along x and y, the moment about z.
-            let in_plane = |column: &ReactionColumn| {
-                matches!(
-                    column,
-                    ReactionColumn::Component {
-                        kind: ComponentKind::Force,
-                        axis: 0 | 1,
-                        ..
-                    } | ReactionColumn::Component {
-                        kind: ComponentKind::Moment,
-                        axis: 2,
-                        ..
-                    }
-                )
-            };
-            let mut found: Vec<(ReactionColumn, f64)> = system
-                .reaction_columns()
-                .into_iter()
-                .zip(evaluation.reactions.iter().copied())
-                .filter(|(column, _)| column.site() == Some(site))
-                .collect();
-            let own = answer_frame::reaction_frame(problem, *index);
-            let to = question.frame.unwrap_or(own);
-            if to != own {
-                let m = answer_frame::rotation_between(problem, (to, own), t, &q, &rates).map_err(
-                    |e| {
-                        failure(
-                            question,
-                            format!(
-                                "cannot rotate the reaction into {}: {e}",
-                                problem.body_name(to)
-                            ),
-                            "ask for the reaction in its parent's unit vectors (remove `in`)",
-                        )
-                    },
-                )?;
-                answer_frame::rotate_columns(&m, &mut found);
-            }
-            frame = Some(problem.body_name(to).to_string());
+            let (found, to) = reaction_values(
+                problem,
+                system,
+                question,
+                &evaluation,
+                (*index, t, &q, &rates),
+            )?;
+            frame = Some(to);
             found
-                .into_iter()
-                .filter(|(column, _)| !planar || in_plane(column))
-                .map(|(column, x)| (Quantity::Reaction(column), x))
-                .collect()
         }
         QuestionKind::Drive { coordinate } => {
-            let name = &problem.coordinates[*coordinate].name;
-            let column = ReactionColumn::Drive {
-                coordinate: name.clone(),
-            };
-            let found = system
-                .reaction_columns()
-                .iter()
-                .zip(&evaluation.reactions)
-                .find(|(c, _)| **c == column)
-                .map(|(_, &x)| x);
-            let Some(x) = found else {
-                return Err(failure(
-                    question,
-                    format!("`{name}` is not prescribed, so nothing drives it"),
-                    "ask for the drive of a coordinate with a `motion`; a joint load's value is a `value` question",
-                ));
-            };
-            vec![(Quantity::Reaction(column), x)]
+            drive_values(problem, system, question, &evaluation, *coordinate)?
         }
         QuestionKind::Steady { unknowns, .. } => unknowns
             .iter()
@@ -417,6 +305,178 @@ pub fn answer_in(
         frame,
         period,
     })
+}
+
+/// The time and state a question starts from, before its own `state` and any simulation:
+/// the initial state (the rates just after the impact where it is asked after it), or an
+/// earlier steady question's state (`about`), at the time asked or at the first switch of
+/// a friction site.
+fn starting_state(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    context: &Context,
+) -> Result<(f64, Vec<f64>, Vec<f64>), ProblemError> {
+    let mut q: Vec<f64> = problem.initial_coordinates();
+    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let at = &question.at;
+    let from_after = at.after_impact
+        || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));
+    match context.after {
+        Some(after) if from_after => rates.copy_from_slice(after),
+        None if at.after_impact => {
+            return Err(failure(
+                question,
+                "the question is asked after the impact, but the problem has no `impact`".into(),
+                "remove `after_impact`, or give the problem an `impact`",
+            ))
+        }
+        _ => {}
+    }
+    let t = match (question.about, question.at.switch) {
+        (Some(k), _) => {
+            let Some(Some(steady)) = context.earlier.get(k) else {
+                return Err(failure(
+                    question,
+                    format!("question {k} does not find a steady motion to ask about"),
+                    "`about` names a `steady` question of find.questions, by its index from 0",
+                ));
+            };
+            q.clone_from(&steady.q);
+            rates.clone_from(&steady.rates);
+            steady.time
+        }
+        (None, Some(site)) => first_switch(problem, system, question, site, &q, &rates)?,
+        (None, None) => question.at.time.unwrap_or(0.0),
+    };
+    Ok((t, q, rates))
+}
+
+/// The state at `t`, simulated from the state in `q` and `rates`, written into them.
+fn simulate_to(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    t: f64,
+    (q, rates): (&mut [f64], &mut [f64]),
+) -> Result<(), ProblemError> {
+    let settings = SimulateSettings {
+        duration: t,
+        output_step: t,
+        tolerance: problem.simulate.tolerance,
+    };
+    let trajectory =
+        simulate(system, q, rates, &settings).map_err(|e| solve_failed(question, e))?;
+    if let Some(stopped) = trajectory.stopped {
+        return Err(failure(
+            question,
+            format!("the simulation stopped before t = {t}: {stopped}"),
+            "ask at an earlier time",
+        ));
+    }
+    let n = q.len();
+    let Some(last) = trajectory.rows.last().filter(|r| r[0] == t) else {
+        return Err(failure(
+            question,
+            format!("the simulation did not reach t = {t}"),
+            "ask at an earlier time",
+        ));
+    };
+    q.copy_from_slice(&last[1..=n]);
+    rates.copy_from_slice(&last[n + 1..=2 * n]);
+    Ok(())
+}
+
+/// The components of the reaction at site `index`, in the frame the question asks for
+/// (the parent's unless `in` says otherwise), with that frame's name.
+fn reaction_values(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    evaluation: &Evaluation,
+    (index, t, q, rates): (usize, f64, &[f64], &[f64]),
+) -> Result<(Vec<(Quantity, f64)>, String), ProblemError> {
+    let site = problem.site_name(index);
+    let planar = problem.dimension == crate::problem::Dimension::Two;
+    // In the plane: the force along x and y, the moment about z.
+    let in_plane = |column: &ReactionColumn| {
+        matches!(
+            column,
+            ReactionColumn::Component {
+                kind: ComponentKind::Force,
+                axis: 0 | 1,
+                ..
+            } | ReactionColumn::Component {
+                kind: ComponentKind::Moment,
+                axis: 2,
+                ..
+            }
+        )
+    };
+    let mut found: Vec<(ReactionColumn, f64)> = system
+        .reaction_columns()
+        .into_iter()
+        .zip(evaluation.reactions.iter().copied())
+        .filter(|(column, _)| column.site() == Some(site))
+        .collect();
+    let own = answer_frame::reaction_frame(problem, index);
+    let to = question.frame.unwrap_or(own);
+    if to != own {
+        let m = answer_frame::rotation_between(problem, (to, own), t, q, rates).map_err(|e| {
+            failure(
+                question,
+                format!(
+                    "cannot rotate the reaction into {}: {e}",
+                    problem.body_name(to)
+                ),
+                "ask for the reaction in its parent's unit vectors (remove `in`)",
+            )
+        })?;
+        answer_frame::rotate_columns(&m, &mut found);
+    }
+    let found = found
+        .into_iter()
+        .filter(|(column, _)| !planar || in_plane(column))
+        .map(|(column, x)| (Quantity::Reaction(column), x))
+        .collect();
+    Ok((found, problem.body_name(to).to_string()))
+}
+
+/// The generalized force that drives prescribed coordinate `coordinate`.
+fn drive_values(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    evaluation: &Evaluation,
+    coordinate: usize,
+) -> Result<Vec<(Quantity, f64)>, ProblemError> {
+    let name = &problem.coordinates[coordinate].name;
+    let column = ReactionColumn::Drive {
+        coordinate: name.clone(),
+    };
+    let found = system
+        .reaction_columns()
+        .iter()
+        .zip(&evaluation.reactions)
+        .find(|(c, _)| **c == column)
+        .map(|(_, &x)| x);
+    let Some(x) = found else {
+        return Err(failure(
+            question,
+            format!("`{name}` is not prescribed, so nothing drives it"),
+            "ask for the drive of a coordinate with a `motion`; a joint load's value is a `value` question",
+        ));
+    };
+    Ok(vec![(Quantity::Reaction(column), x)])
+}
+
+/// A question that cannot be answered because the equations failed at its state.
+fn solve_failed(question: &Question, e: super::SolveError) -> ProblemError {
+    failure(
+        question,
+        format!("cannot answer: {e}"),
+        "ask at another state, or check the problem's initial state",
+    )
 }
 
 /// The unit of the value `name` of `answer`'s question: what the handout prints after the

@@ -13,8 +13,8 @@
 //! force that sticking needed (it opposes the motion that would start).
 
 use super::linear::solve_linear;
-use crate::equations::rows::Sum;
 use crate::equations::Derivation;
+use crate::plan::rows::Sum;
 use crate::symbolic::compile::Program;
 use crate::symbolic::Expr;
 use nalgebra::{DMatrix, DVector};
@@ -226,6 +226,42 @@ impl Friction {
             .collect()
     }
 
+    /// Each sliding site's rows of `a x = b` replaced by the sliding law: the friction
+    /// force μ|N| against the slip, or along the direction held at rest.
+    fn slip_rows(
+        &self,
+        a: &mut DMatrix<f64>,
+        b: &mut DVector<f64>,
+        modes: &[Held],
+        signs: &[Vec<f64>],
+        run: &[(f64, Vec<f64>)],
+    ) {
+        for ((slot, mode), (sign, (mu, slip))) in
+            self.slots.iter().zip(modes).zip(signs.iter().zip(run))
+        {
+            if let Held::Slip(held_direction) = mode {
+                // Against the slip while there is one (it turns in 3D), as held at rest
+                // and past it: a slip that overshoots zero within a step must not turn
+                // the friction round, or the step would straddle a jump.
+                let speed = norm(slip);
+                let against: Vec<f64> = slip.iter().map(|v| -v / speed).collect();
+                let direction = if speed > REST && dot(&against, held_direction) > 0.0 {
+                    against
+                } else {
+                    held_direction.clone()
+                };
+                for (k, &row) in slot.rows.iter().enumerate() {
+                    a.row_mut(row).fill(0.0);
+                    a[(row, slot.tangential[k])] = 1.0;
+                    for (&n, e) in slot.normal.iter().zip(sign) {
+                        a[(row, n)] -= mu * e * direction[k];
+                    }
+                    b[row] = 0.0;
+                }
+            }
+        }
+    }
+
     /// Solves `a x = b` with each site `held` as given; where a site is to be decided,
     /// sticking first and sliding if the check fails. `None` when a system is singular.
     pub fn solve(
@@ -259,30 +295,7 @@ impl Friction {
         // direction until it stands still.
         for _ in 0..=2 * self.slots.len() + 2 + DIRECTION_PASSES {
             let (mut a, mut b) = (a.clone(), b.clone());
-            for ((slot, mode), (sign, (mu, slip))) in
-                self.slots.iter().zip(&modes).zip(signs.iter().zip(&run))
-            {
-                if let Held::Slip(held_direction) = mode {
-                    // Against the slip while there is one (it turns in 3D), as held at rest
-                    // and past it: a slip that overshoots zero within a step must not turn
-                    // the friction round, or the step would straddle a jump.
-                    let speed = norm(slip);
-                    let against: Vec<f64> = slip.iter().map(|v| -v / speed).collect();
-                    let direction = if speed > REST && dot(&against, held_direction) > 0.0 {
-                        against
-                    } else {
-                        held_direction.clone()
-                    };
-                    for (k, &row) in slot.rows.iter().enumerate() {
-                        a.row_mut(row).fill(0.0);
-                        a[(row, slot.tangential[k])] = 1.0;
-                        for (&n, e) in slot.normal.iter().zip(sign) {
-                            a[(row, n)] -= mu * e * direction[k];
-                        }
-                        b[row] = 0.0;
-                    }
-                }
-            }
+            self.slip_rows(&mut a, &mut b, &modes, &signs, &run);
             let solved = solve_linear(&a, &b);
             // Whether this pass takes the split of forces that statics leaves free.
             let shared = solved.is_none();

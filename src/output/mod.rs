@@ -1,15 +1,17 @@
-//! Output that is never lost, never misdirected and never the input.
+//! Output that is never lost, never misdirected and never the input. The entry is
+//! [`write_output`]; [`refuse_input`] and [`short_stem`] serve the commands that name
+//! their outputs.
 //!
 //! A file is written to a temporary file beside it, created exclusively (a file or link
 //! planted under the temporary name is never followed nor overwritten), then renamed over
 //! the target; the target keeps its permissions. A target that is not a regular file (a
 //! FIFO, a device, a directory, a link to one) or is read-only is refused, and so is any
-//! file this run has read ([`inputs`]). The temporary file is removed on every failure,
-//! and on SIGINT or SIGTERM while it is written ([`cleanup`]).
+//! file this run has read ([`refuse_input`]). The temporary file is removed on every failure,
+//! and on SIGINT or SIGTERM while it is written (`cleanup`).
 
 mod cleanup;
-pub mod inputs;
-pub mod names;
+mod inputs;
+mod names;
 mod target;
 
 use crate::Error;
@@ -17,6 +19,7 @@ use std::io::Write;
 use std::path::Path;
 
 pub use inputs::{refuse_input, refuse_input_in};
+pub use names::short_stem;
 
 /// Writes `bytes` to `path` atomically, or to standard output when `path` is `None` or `-`.
 ///

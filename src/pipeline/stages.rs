@@ -2,37 +2,20 @@
 //! free bodies (step 2), then the equations of one method (steps 3 and 5).
 
 use crate::equations::{self, Derivation, Method, Request, Rows, State};
-use crate::mechanics::{Form, MechanicsError, Model};
-use crate::plan;
+use crate::mechanics::{Form, MechanicsError};
 use crate::problem::Problem;
-use crate::symbolic::budget;
 
-/// Derives the equations of `problem` by `method` for `request`: the model, then the free
-/// bodies, then the method's rows and their linear system.
+/// Derives the equations of `problem` by `method` for `request` (see
+/// [`equations::derive`]).
 ///
 /// # Errors
-/// When the model cannot be built, a load cannot be written, the planner finds no complete
-/// set of rows, or an unknown appears nonlinearly.
+/// As for [`equations::derive`].
 pub fn derive_for<'p>(
     problem: &'p Problem,
     method: Method,
     request: Request<'_>,
 ) -> Result<Derivation<'p>, MechanicsError> {
-    budget::step("computing the kinematics (step 4)");
-    let mut model = Model::build_for(problem, request.form)?;
-    if matches!(method, Method::Kane | Method::Lagrange) {
-        // Kane's auxiliary speed (and Lagrange's relaxed joint) along a light rod brings in its tension alone.
-        crate::mechanics::two_force::along_members(&mut model);
-    }
-    if method != Method::NewtonEuler {
-        // A light rod's closure carries its tension alone. Newton–Euler keeps both
-        // components: there every body is a free body, the rod's rows finding the
-        // component across it zero.
-        crate::mechanics::light_rod::closures_along_rods(&mut model);
-    }
-    budget::step("writing the forces, the inertia forces and torques (step 2)");
-    let free_bodies = plan::free_bodies(&model, request.form)?;
-    equations::write_equations(model, free_bodies, method, request)
+    equations::derive(problem, method, request)
 }
 
 /// Every row `method` writes for `problem`, for numbers ([`Form::Numeric`]): what the

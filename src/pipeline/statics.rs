@@ -114,7 +114,7 @@ impl<'p> Statics<'p> {
     /// Derives the equations of `problem` by `method`.
     ///
     /// # Errors
-    /// As for [`derive`].
+    /// As for [`derive()`].
     pub fn new(problem: &'p Problem, method: Method) -> Result<Statics<'p>, Error> {
         let derivation = derive(problem, method)?;
         let dependent = &derivation.model.constraints.dependent;

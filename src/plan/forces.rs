@@ -41,9 +41,17 @@ pub enum Source {
 #[derive(Clone, Debug)]
 pub enum ActionKind {
     /// A force applied at `offset` from the body's origin (body's unit vectors).
-    Force { offset: Components, force: Vector },
+    Force {
+        /// Where it acts, from the body's origin.
+        offset: Components,
+        /// The force.
+        force: Vector,
+    },
     /// A couple.
-    Couple { torque: Vector },
+    Couple {
+        /// Its moment.
+        torque: Vector,
+    },
 }
 
 /// One force or couple acting on one body.
@@ -212,6 +220,28 @@ fn push_pair(
     }
 }
 
+/// Where a force on `on` acts, from `on`'s origin; the message when the point is on
+/// another body.
+fn force_offset(model: &Model, on: BodyId, at: &ForcePoint) -> Result<Components, String> {
+    match at {
+        ForcePoint::Point(point) => {
+            let (body, offset) = model.locate(*point);
+            if body != on {
+                let problem = model.problem;
+                return Err(format!(
+                    "the point is on `{}`, not on `{}`",
+                    problem.body_name(body),
+                    problem.body_name(on)
+                ));
+            }
+            Ok(offset)
+        }
+        ForcePoint::Offset(v) => {
+            Ok(crate::mechanics::model::vector_of(v).components_in(on, &model.frames))
+        }
+    }
+}
+
 fn load_actions(
     model: &Model,
     index: usize,
@@ -239,25 +269,12 @@ fn load_actions(
     };
     match kind {
         LoadKind::Force { on, at, vector } => {
-            let offset = match at {
-                ForcePoint::Point(point) => {
-                    let (body, offset) = model.locate(*point);
-                    if body != *on {
-                        return Err(error(
-                            format!(
-                                "the point is on `{}`, not on `{}`",
-                                problem.body_name(body),
-                                problem.body_name(*on)
-                            ),
-                            "a force acts at a point of the body it is applied to",
-                        ));
-                    }
-                    offset
-                }
-                ForcePoint::Offset(v) => {
-                    crate::mechanics::model::vector_of(v).components_in(*on, &model.frames)
-                }
-            };
+            let offset = force_offset(model, *on, at).map_err(|message| {
+                error(
+                    message,
+                    "a force acts at a point of the body it is applied to",
+                )
+            })?;
             let force = crate::mechanics::model::vector_of(vector);
             if *on != BodyId::GROUND {
                 out.push(contact(

@@ -6,12 +6,12 @@ use super::expressions::Context;
 use super::json::{check_keys, key_path, kind, object, optional_string, required};
 use super::model::*;
 use super::names::Kind;
-use super::read::Owners;
+use super::reader::Owners;
 use super::validate;
 use crate::symbolic::Expr;
 use serde_json::Value;
 
-impl super::read::Reader {
+impl super::reader::Reader {
     pub(super) fn declare_bodies<'v>(
         &mut self,
         value: Option<&'v Value>,

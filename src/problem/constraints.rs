@@ -6,7 +6,7 @@ use super::joints::{has_axis, has_friction, has_sequence, NO_FRICTION_HINT};
 use super::json::{array, check_keys, index_path, key_path, kind, object, required, string};
 use super::model::*;
 use super::names::Kind;
-use super::read::Reader;
+use super::reader::Reader;
 use super::validate;
 use crate::symbolic::{Expr, Symbol};
 use serde_json::{Map, Value};

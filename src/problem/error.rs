@@ -88,7 +88,9 @@ impl ProblemError {
 pub enum LoadError {
     /// The file could not be read.
     Io {
+        /// The file.
         path: std::path::PathBuf,
+        /// The system's reason.
         source: std::io::Error,
     },
     /// The file is not UTF-8 text, not JSON, or not a valid problem.

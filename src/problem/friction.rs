@@ -6,7 +6,7 @@
 use super::expressions::{ConstantValues, Context};
 use super::json::{check_keys, key_path, required, Diagnostics};
 use super::model::*;
-use super::read::Reader;
+use super::reader::Reader;
 use super::validate;
 use crate::symbolic::format::fixed;
 use crate::symbolic::Expr;

@@ -4,7 +4,7 @@
 use super::expressions::Context;
 use super::json::{check_keys, key_path, kind, required};
 use super::model::*;
-use super::read::Reader;
+use super::reader::Reader;
 use super::validate;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};

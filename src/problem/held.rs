@@ -6,7 +6,7 @@
 use super::expressions::Context;
 use super::json::key_path;
 use super::model::Coordinate;
-use super::read::Reader;
+use super::reader::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 

@@ -7,7 +7,7 @@
 use super::expressions::Context;
 use super::json::{self, check_keys, index_path, key_path, object, required, string};
 use super::model::*;
-use super::read::{Known, Reader};
+use super::reader::{Known, Reader};
 use super::validate;
 use crate::symbolic::format::fixed;
 use crate::symbolic::Expr;

@@ -10,6 +10,7 @@
 
 use super::impact::Impact;
 use super::model::*;
+use super::validated::Problem;
 use crate::symbolic::Expr;
 
 /// The impulsive problem and where the collision's impulse enters it.

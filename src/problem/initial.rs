@@ -3,9 +3,9 @@
 
 use super::expressions::{ConstantValues, Context};
 use super::json::{key_path, number};
-use super::model::Problem;
-use super::read::Reader;
+use super::reader::Reader;
 use super::validate;
+use super::validated::Problem;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 

@@ -6,7 +6,7 @@ use super::graph::{self, Link, Orientation};
 use super::json::{array, check_keys, index_path, key_path, object, required, string};
 use super::model::*;
 use super::names::{suggest, Kind};
-use super::read::{Owners, Reader};
+use super::reader::{Owners, Reader};
 use super::validate;
 use serde_json::Value;
 

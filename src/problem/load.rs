@@ -5,7 +5,8 @@
 use super::error::{LoadError, ProblemError, ProblemErrors};
 use super::expressions::ConstantValues;
 use super::json::{self, key_path, Diagnostics};
-use super::model::{LoadKind, Problem};
+use super::model::LoadKind;
+use super::validated::Problem;
 use super::{initial, names, read, validate};
 use crate::symbolic::Expr;
 use std::path::Path;

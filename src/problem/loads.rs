@@ -7,7 +7,7 @@ use super::json::{
 };
 use super::model::*;
 use super::names::{is_valid, suggest};
-use super::read::{Known, Reader};
+use super::reader::{Known, Reader};
 use super::validate;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};

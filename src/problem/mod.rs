@@ -1,4 +1,4 @@
-//! Step 0: JSON -> a validated [`Problem`](model::Problem).
+//! Step 0: JSON -> a validated [`Problem`].
 //!
 //! [`load`] reads the text into a JSON value (noting repeated keys), declares every name,
 //! then reads each section, collecting every error with its JSON path, the column inside
@@ -32,19 +32,21 @@ mod joints;
 mod json;
 mod load;
 mod loads;
-pub mod model;
+mod model;
 mod names;
 mod question_kinds;
 mod questions;
 mod read;
-pub mod schema;
+mod reader;
+mod schema;
 mod settings;
 mod shapes;
 mod speeds;
 mod static_questions;
 mod validate;
+mod validated;
 pub mod variant;
-pub mod vary;
+mod vary;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
 pub use expressions::axis_index;
@@ -52,6 +54,9 @@ pub use impact::{Collision, Impact, Impulse};
 pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
 pub use model::*;
+pub use schema::SCHEMA;
+pub use validated::Problem;
+pub use vary::{Grid, Vary};
 
 #[cfg(test)]
 mod tests;

@@ -3,7 +3,7 @@
 //! Everything here has passed validation, so later stages can index without checks.
 //! Each item keeps the JSON path it came from, so later stages can still point at it.
 
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::Expr;
 
 /// A body, as an index: `BodyId::GROUND` is `N`, the declared bodies follow in file order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -33,9 +33,13 @@ pub struct VectorExpr {
 /// A named constant with its value (before any `--set`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Constant {
+    /// The name expressions use.
     pub name: String,
+    /// The value, in the problem's units.
     pub value: f64,
+    /// The unit as written (`m/s^2`), if given.
     pub unit: Option<String>,
+    /// What it is, in the statement's words, if given.
     pub description: Option<String>,
     /// The range a randomized variant draws the value from.
     pub vary: Option<super::vary::Vary>,
@@ -53,6 +57,7 @@ pub enum CoordinateKind {
 /// A generalized coordinate, in the order the joints first name them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Coordinate {
+    /// The name expressions use (`theta`; its rates `theta'`, `theta''`).
     pub name: String,
     /// Initial value (default 0).
     pub initial: f64,
@@ -62,12 +67,15 @@ pub struct Coordinate {
     pub initial_expr: Option<Expr>,
     /// `rate` when written as an expression of constants; `--set` evaluates it again.
     pub rate_expr: Option<Expr>,
+    /// The unit as written, if given.
     pub unit: Option<String>,
+    /// What it measures, in the statement's words, if given.
     pub description: Option<String>,
-    /// The joint that owns it, as an index into [`Problem::joints`].
+    /// The joint that owns it, as an index into [`Problem::joints`](super::Problem::joints).
     pub joint: usize,
     /// Its position among that joint's coordinates.
     pub index_in_joint: usize,
+    /// An angle or a distance, from the joint's type.
     pub kind: CoordinateKind,
     /// Marked `dependent`: solved from the position constraints (its `initial` is a guess).
     pub dependent: bool,
@@ -95,11 +103,15 @@ pub enum Inertia {
 /// A rigid body.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Body {
+    /// The name, also its frame's (`A.x`) and its mass centre's (`A*`).
     pub name: String,
+    /// The mass, a scalar of constants.
     pub mass: Expr,
     /// The mass center from the body's origin, in the body's unit vectors.
     pub center: VectorExpr,
+    /// The central inertia.
     pub inertia: Inertia,
+    /// What it is, in the statement's words, if given.
     pub description: Option<String>,
     /// How pictures draw it (`shape`); the mechanics never read it.
     pub shape: Option<BodyShape>,
@@ -112,31 +124,55 @@ pub struct Body {
 #[derive(Clone, Debug, PartialEq)]
 pub enum BodyShape {
     /// A bar between two points.
-    Rod { from: VectorExpr, to: VectorExpr },
+    Rod {
+        /// One end.
+        from: VectorExpr,
+        /// The other end.
+        to: VectorExpr,
+    },
     /// A disc seen end-on; `center` defaults to the mass centre, `axis` to the body's z.
     Disc {
+        /// The radius, a scalar of constants.
         radius: Expr,
+        /// The centre, if not the mass centre.
         center: Option<VectorExpr>,
+        /// The axle, if not the body's z.
         axis: Option<VectorExpr>,
     },
     /// A rectangle (a box in 3D) with sides along the body's x, y (and z).
-    Block { size: Vec<Expr>, center: VectorExpr },
+    Block {
+        /// The side lengths along x, y (and z).
+        size: Vec<Expr>,
+        /// The centre.
+        center: VectorExpr,
+    },
     /// A ball at the mass centre.
     Particle,
     /// A plate through the points.
-    Polygon { points: Vec<VectorExpr> },
+    Polygon {
+        /// The corners, in order around the plate.
+        points: Vec<VectorExpr>,
+    },
 }
 
 /// The joint types of the format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum JointKind {
+    /// A turn about a fixed axis: one angle.
     Revolute,
+    /// A slide along a fixed axis: one distance.
     Prismatic,
+    /// A slide along and a turn about one axis: a distance, then an angle.
     Cylindrical,
+    /// In-plane motion: two distances and an angle.
     Planar,
+    /// Two successive turns about body-fixed axes (`sequence`): two angles.
     Universal,
+    /// Three successive turns about body-fixed axes (`sequence`): three angles.
     Spherical,
+    /// Three distances, then three successive turns: six coordinates.
     Free,
+    /// No relative motion: no coordinate.
     Weld,
 }
 
@@ -170,11 +206,15 @@ impl JointKind {
 /// A joint between a parent and its outboard child.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Joint {
+    /// The name, also its point on the child.
     pub name: String,
+    /// The type.
     pub kind: JointKind,
+    /// The inboard body (`N` for the ground).
     pub parent: BodyId,
+    /// The outboard body, which the joint's coordinates move.
     pub child: BodyId,
-    /// Indices into [`Problem::coordinates`], in the joint's order.
+    /// Indices into [`Problem::coordinates`](super::Problem::coordinates), in the joint's order.
     pub coordinates: Vec<usize>,
     /// Revolute, prismatic, cylindrical: the axis as written (not yet normalized), in any frame.
     pub axis: Option<VectorExpr>,
@@ -197,7 +237,7 @@ pub struct Joint {
 /// A point that a load or a point definition can name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PointRef {
-    /// A declared point, as an index into [`Problem::points`].
+    /// A declared point, as an index into [`Problem::points`](super::Problem::points).
     Named(usize),
     /// `A*`, the mass center of a body.
     MassCenter(BodyId),
@@ -210,7 +250,9 @@ pub enum PointRef {
 /// A point fixed on a body.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PointDef {
+    /// The name forces and springs use.
     pub name: String,
+    /// The body it is fixed on.
     pub on: BodyId,
     /// From the body's origin, in its unit vectors.
     pub at: VectorExpr,
@@ -228,40 +270,68 @@ pub enum ForcePoint {
 /// What a load does.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LoadKind {
+    /// A force applied at a point of a body.
     Force {
+        /// The body it acts on.
         on: BodyId,
+        /// Where it acts.
         at: ForcePoint,
+        /// The force.
         vector: VectorExpr,
     },
+    /// A couple on a body, and its opposite on `reaction_on` if given.
     Torque {
+        /// The body it acts on.
         on: BodyId,
+        /// The couple's moment.
         vector: VectorExpr,
+        /// The body that takes the opposite couple, if any.
         reaction_on: Option<BodyId>,
     },
+    /// A linear spring between two points.
     Spring {
+        /// Its ends.
         between: [PointRef; 2],
+        /// Its stiffness k.
         stiffness: Expr,
+        /// Its free length.
         free_length: Expr,
     },
+    /// A linear damper between two points.
     Damper {
+        /// Its ends.
         between: [PointRef; 2],
+        /// Its damping coefficient c.
         coefficient: Expr,
     },
-    /// `coordinate` indexes [`Problem::coordinates`].
+    /// A spring along one coordinate of a joint; `coordinate` indexes
+    /// [`Problem::coordinates`](super::Problem::coordinates).
     JointSpring {
+        /// The joint, by index.
         joint: usize,
+        /// The coordinate it acts along, by index.
         coordinate: usize,
+        /// Its stiffness.
         stiffness: Expr,
+        /// The coordinate's value at which it is relaxed.
         rest: Expr,
     },
+    /// A damper along one coordinate of a joint.
     JointDamper {
+        /// The joint, by index.
         joint: usize,
+        /// The coordinate it acts along, by index.
         coordinate: usize,
+        /// Its damping coefficient.
         coefficient: Expr,
     },
+    /// A given generalized force along one coordinate of a joint (a motor's torque).
     JointActuator {
+        /// The joint, by index.
         joint: usize,
+        /// The coordinate it acts along, by index.
         coordinate: usize,
+        /// The force or torque, of constants, coordinates, rates and `t`.
         value: Expr,
     },
 }
@@ -269,7 +339,9 @@ pub enum LoadKind {
 /// A load with its optional name.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Load {
+    /// The name, if given.
     pub name: Option<String>,
+    /// What it does.
     pub kind: LoadKind,
     /// The JSON path, e.g. `loads[2]`.
     pub path: String,
@@ -300,46 +372,16 @@ impl Default for SimulateSettings {
 /// coefficients of constants and coordinates (a row of `W` in `u = W(q) q'`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Speed {
+    /// The name (`u1`; its rate `u1'`).
     pub name: String,
     /// The speed as a combination of the coordinates' first rates.
     pub equals: Expr,
+    /// The unit as written, if given.
     pub unit: Option<String>,
+    /// What it measures, in the statement's words, if given.
     pub description: Option<String>,
     /// The JSON path, e.g. `speeds.u1`.
     pub path: String,
-}
-
-/// A validated problem.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Problem {
-    pub title: String,
-    pub statement: Option<String>,
-    pub dimension: Dimension,
-    pub constants: Vec<Constant>,
-    pub coordinates: Vec<Coordinate>,
-    pub gravity: Option<VectorExpr>,
-    /// The declared bodies; `BodyId(i + 1)` is `bodies[i]`.
-    pub bodies: Vec<Body>,
-    pub joints: Vec<Joint>,
-    pub points: Vec<PointDef>,
-    pub loads: Vec<Load>,
-    /// Loop-closing joints: they add no coordinates and remove the motion their type forbids.
-    pub closures: Vec<Joint>,
-    /// Rolling contacts and general position and velocity constraints.
-    pub constraints: Vec<Constraint>,
-    /// Reactions requested, as site indices (see [`Problem::site_name`]).
-    pub find_reactions: Vec<usize>,
-    /// The questions of `find.questions`, answered in the handout's "Answers".
-    pub questions: Vec<Question>,
-    pub simulate: SimulateSettings,
-    /// The declared generalized speeds, as many as the coordinates; empty when the speeds
-    /// are the coordinates' rates (the default).
-    pub speeds: Vec<Speed>,
-    /// The fractions the expressions write as decimals, with the decimal (`2/5`, `0.4`):
-    /// the worked solution prints them as written; the arithmetic stays exact.
-    pub decimals: Vec<(crate::symbolic::Number, String)>,
-    /// An impact at the initial state (`impact`), if any.
-    pub impact: Option<super::impact::Impact>,
 }
 
 /// Where a disc's centre is on its body.
@@ -348,9 +390,11 @@ pub enum ConstraintKind {
     /// A thin disc on `body` rolling without slipping on a plane fixed in `on` (`N` or a
     /// moving body).
     Rolling {
+        /// The disc's body.
         body: BodyId,
         /// The body the plane is fixed in.
         on: BodyId,
+        /// The disc's radius.
         radius: Expr,
         /// The axle, fixed in the body (as written, not yet normalized).
         axis: VectorExpr,
@@ -364,18 +408,26 @@ pub enum ConstraintKind {
     /// Two discs with parallel axles rolling on each other without slipping: `body`'s disc
     /// on `on`'s, outside it or (`internal`) inside it.
     Gear {
+        /// The body of the disc that rolls.
         body: BodyId,
+        /// Its pitch radius.
         radius: Expr,
+        /// Its centre.
         center: ForcePoint,
+        /// The body of the disc it rolls on.
         on: BodyId,
+        /// That disc's pitch radius.
         on_radius: Expr,
+        /// That disc's centre.
         on_center: ForcePoint,
+        /// Inside `on`'s disc (a ring gear) rather than outside it.
         internal: bool,
         /// The common axle, fixed in `body` (as written); `None` in 2D (N.z).
         axis: Option<VectorExpr>,
     },
     /// A point of `body` that stays on a plane fixed in `on` and may slide on it.
     Contact {
+        /// The body that touches the plane.
         body: BodyId,
         /// The point that touches the plane.
         point: ForcePoint,
@@ -387,15 +439,23 @@ pub enum ConstraintKind {
         offset: Expr,
     },
     /// `expression = 0`, of constants, coordinates and `t`.
-    Position { expression: Expr },
+    Position {
+        /// The expression that stays zero.
+        expression: Expr,
+    },
     /// `expression = 0`, affine in the first rates.
-    Velocity { expression: Expr },
+    Velocity {
+        /// The expression that stays zero.
+        expression: Expr,
+    },
 }
 
 /// An entry of `constraints`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Constraint {
+    /// The name, also its site's.
     pub name: String,
+    /// What it constrains.
     pub kind: ConstraintKind,
     /// The coefficient of Coulomb friction μ ≥ 0 (a `rolling`, `gear` or `contact`), a
     /// scalar of constants; `None` for a contact that never slips (`rolling`, `gear`) or
@@ -405,120 +465,13 @@ pub struct Constraint {
     pub path: String,
 }
 
-impl Problem {
-    /// The name of a body, `N` for the ground.
-    pub fn body_name(&self, id: BodyId) -> &str {
-        if id == BodyId::GROUND {
-            "N"
-        } else {
-            &self.bodies[id.0 - 1].name
-        }
-    }
-
-    /// The body ids of the declared bodies, in file order.
-    pub fn body_ids(&self) -> impl Iterator<Item = BodyId> {
-        (1..=self.bodies.len()).map(BodyId)
-    }
-
-    /// The declared body behind `id` (not `N`).
-    pub fn body(&self, id: BodyId) -> &Body {
-        &self.bodies[id.0 - 1]
-    }
-
-    /// The joint whose child is `body`, if any (every declared body has exactly one).
-    pub fn joint_of(&self, body: BodyId) -> Option<usize> {
-        self.joints.iter().position(|j| j.child == body)
-    }
-
-    /// The name of reaction site `site`: the joints first, then the closures, then the
-    /// constraints (the indices of [`Problem::find_reactions`]).
-    pub fn site_name(&self, site: usize) -> &str {
-        self.site_name_and_path(site).0
-    }
-
-    /// The JSON path of reaction site `site`'s entry, e.g. `closures[0]`.
-    pub fn site_path(&self, site: usize) -> &str {
-        self.site_name_and_path(site).1
-    }
-
-    fn site_name_and_path(&self, site: usize) -> (&str, &str) {
-        let (j, c) = (self.joints.len(), self.closures.len());
-        if site < j {
-            (&self.joints[site].name, &self.joints[site].path)
-        } else if site < j + c {
-            let closure = &self.closures[site - j];
-            (&closure.name, &closure.path)
-        } else {
-            let constraint = &self.constraints[site - j - c];
-            (&constraint.name, &constraint.path)
-        }
-    }
-
-    /// Whether reaction site `site` has Coulomb friction (a rough slider, closure or contact).
-    pub fn site_is_rough(&self, site: usize) -> bool {
-        let (j, c) = (self.joints.len(), self.closures.len());
-        if site < j {
-            self.joints[site].friction.is_some()
-        } else if site < j + c {
-            self.closures[site - j].friction.is_some()
-        } else {
-            self.constraints[site - j - c].friction.is_some()
-        }
-    }
-
-    /// Whether the problem has closures, constraints or prescribed coordinates.
-    pub fn is_constrained(&self) -> bool {
-        !self.closures.is_empty()
-            || !self.constraints.is_empty()
-            || self.coordinates.iter().any(|c| c.motion.is_some())
-    }
-
-    /// The symbol of coordinate `index` differentiated `order` times.
-    pub fn coordinate_symbol(&self, index: usize, order: u8) -> Symbol {
-        Symbol::Coord(self.coordinates[index].name.as_str().into(), order)
-    }
-
-    /// The generalized speed `r` (`order` 1) or its rate (`order` 2): the declared speed
-    /// when the problem has `speeds`, the coordinate's rate otherwise.
-    pub fn speed_symbol(&self, r: usize, order: u8) -> Symbol {
-        match self.speeds.get(r) {
-            Some(speed) => Symbol::Speed(speed.name.as_str().into(), order.saturating_sub(1)),
-            None => self.coordinate_symbol(r, order),
-        }
-    }
-
-    /// Every generalized speed (`order` 1) or every speed's rate (`order` 2), in order.
-    pub fn speed_symbols(&self, order: u8) -> Vec<Symbol> {
-        (0..self.coordinates.len())
-            .map(|r| self.speed_symbol(r, order))
-            .collect()
-    }
-
-    /// The same problem with the coordinates' rates as its speeds: the same motion, derived
-    /// in `q''` (the state matrix of `linearize` is about `q` and `q'` either way).
-    pub fn without_speeds(&self) -> Problem {
-        Problem {
-            speeds: Vec::new(),
-            ..self.clone()
-        }
-    }
-
-    /// Whether the problem declares its own generalized speeds.
-    pub fn has_speeds(&self) -> bool {
-        !self.speeds.is_empty()
-    }
-
-    /// The expression of coordinate `index` differentiated `order` times.
-    pub fn coordinate_expr(&self, index: usize, order: u8) -> Expr {
-        Expr::sym(self.coordinate_symbol(index, order))
-    }
-}
-
 /// A coordinate's value (`order` 0) or rate (`order` 1), by index into
-/// [`Problem::coordinates`](Problem::coordinates).
+/// [`Problem::coordinates`](super::Problem::coordinates).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StateEntry {
+    /// The coordinate, by index.
     pub coordinate: usize,
+    /// 0 for the value, 1 for the rate.
     pub order: u8,
 }
 
@@ -526,48 +479,85 @@ pub struct StateEntry {
 #[derive(Clone, Debug, PartialEq)]
 pub enum QuestionKind {
     /// A scalar expression, with its text as written.
-    Value { expression: Expr, text: String },
-    /// A reaction, as a site index (see [`Problem::site_name`](Problem::site_name)).
-    Reaction { site: usize },
+    Value {
+        /// The expression.
+        expression: Expr,
+        /// Its text as written.
+        text: String,
+    },
+    /// A reaction, as a site index (see [`Problem::site_name`](super::Problem::site_name)).
+    Reaction {
+        /// The site.
+        site: usize,
+    },
     /// The generalized force that drives a prescribed coordinate, by index into
-    /// [`Problem::coordinates`](Problem::coordinates). Whether the coordinate is
+    /// [`Problem::coordinates`](super::Problem::coordinates). Whether the coordinate is
     /// prescribed is checked when the question is answered.
-    Drive { coordinate: usize },
+    Drive {
+        /// The coordinate.
+        coordinate: usize,
+    },
     /// The `unknowns` that make the `zero` expressions vanish (default: every q''), each
     /// with its text.
     Steady {
+        /// The values and rates solved for.
         unknowns: Vec<StateEntry>,
+        /// The expressions that vanish, each with its text.
         zero: Vec<(Expr, String)>,
     },
     /// Whether friction at a site (a site index) fails to hold the question's state at
     /// rest: the ratio |F|/(μ|N|) decides.
-    Slips { site: usize },
+    Slips {
+        /// The site.
+        site: usize,
+    },
     /// Whether a contact (a site index) loses contact at the question's state at rest: its
     /// normal force decides.
-    Tips { site: usize },
-    /// The value of a constant (an index into [`Problem::constants`]) at which, at rest,
+    Tips {
+        /// The site.
+        site: usize,
+    },
+    /// The value of a constant (an index into [`Problem::constants`](super::Problem::constants)) at which, at rest,
     /// slip impends at a site (|F| = μ|N|), or with `tips` its normal force falls to zero;
     /// `guess` starts Newton's method (default: the constant's value).
     Impending {
+        /// The constant solved for, by index.
         constant: usize,
+        /// The site.
         site: usize,
+        /// Contact lost (the normal force zero) rather than slip.
         tips: bool,
+        /// Where Newton's method starts, if given.
         guess: Option<f64>,
     },
     /// The period of small oscillations about the question's state, from the
     /// linearization; `coordinate` (by index) picks the mode it moves most, else the
     /// slowest oscillation.
-    Period { coordinate: Option<usize> },
+    Period {
+        /// The coordinate whose mode is meant, if given.
+        coordinate: Option<usize>,
+    },
     /// An identity `lhs = rhs` to derive from the equations of motion and check at the
     /// question's state, with its text as written.
-    Show { lhs: Expr, rhs: Expr, text: String },
+    Show {
+        /// The left-hand side.
+        lhs: Expr,
+        /// The right-hand side.
+        rhs: Expr,
+        /// The identity as written.
+        text: String,
+    },
     /// The values of a constant (an index into [`Problem::constants`]) between `from` and
     /// `to` where the question's state changes stability (a bicycle's weave and capsize
     /// speeds), from the linearization at `count` values and bisection between them.
     Stability {
+        /// The constant varied.
         constant: usize,
+        /// The lowest value tried.
         from: f64,
+        /// The highest value tried.
         to: f64,
+        /// How many values are tried before bisection.
         count: usize,
     },
 }
@@ -603,7 +593,9 @@ pub struct QuestionAt {
 pub struct Question {
     /// The question as worded for the student (user text), if given.
     pub text: Option<String>,
+    /// What it asks for.
     pub kind: QuestionKind,
+    /// Where it is asked.
     pub at: QuestionAt,
     /// The unit of a `value` (user text), if given.
     pub unit: Option<String>,

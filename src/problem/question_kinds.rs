@@ -6,7 +6,7 @@
 use super::expressions::{self, Context};
 use super::json::{check_keys, key_path, number, object, string};
 use super::model::QuestionKind;
-use super::read::Reader;
+use super::reader::Reader;
 use serde_json::Value;
 
 impl Reader {

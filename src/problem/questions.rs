@@ -20,7 +20,7 @@
 use super::expressions::{self, Context};
 use super::json::{self, check_keys, index_path, key_path, number, object, string};
 use super::model::{Question, QuestionAt, QuestionKind, StateEntry};
-use super::read::Reader;
+use super::reader::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
@@ -154,7 +154,44 @@ impl Reader {
             Some(v) => Some(self.item(v, &key_path(path, "item"))?),
             None => None,
         };
-        let kind = match asked[0] {
+        let kind = self.asked(asked[0], fields, path, (reactions, constraints))?;
+        let frame = match fields.get("in") {
+            Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
+            None => None,
+        };
+        if matches!(kind, QuestionKind::Steady { .. })
+            && at.state.is_none()
+            && at.time.is_some_and(|t| t != 0.0)
+        {
+            self.diag.hint(
+                &key_path(path, "at"),
+                "a steady motion is sought at a state, not after a simulation",
+                "give `at.state` (the starting guess and the values held); `time` then only sets t",
+            );
+            return None;
+        }
+        Some(Question {
+            text,
+            kind,
+            at,
+            unit,
+            symbol,
+            frame,
+            path: path.to_string(),
+            about,
+            item,
+        })
+    }
+
+    /// What question `key` asks for, read from its entry in `fields`.
+    fn asked(
+        &mut self,
+        key: &str,
+        fields: &serde_json::Map<String, Value>,
+        path: &str,
+        (reactions, constraints): (&[usize], &[Value]),
+    ) -> Option<QuestionKind> {
+        let kind = match key {
             "value" => {
                 let vpath = key_path(path, "value");
                 let v = &fields["value"];
@@ -207,32 +244,7 @@ impl Reader {
             "stability" => self.stability(&fields["stability"], &key_path(path, "stability"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };
-        let frame = match fields.get("in") {
-            Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
-            None => None,
-        };
-        if matches!(kind, QuestionKind::Steady { .. })
-            && at.state.is_none()
-            && at.time.is_some_and(|t| t != 0.0)
-        {
-            self.diag.hint(
-                &key_path(path, "at"),
-                "a steady motion is sought at a state, not after a simulation",
-                "give `at.state` (the starting guess and the values held); `time` then only sets t",
-            );
-            return None;
-        }
-        Some(Question {
-            text,
-            kind,
-            at,
-            unit,
-            symbol,
-            frame,
-            path: path.to_string(),
-            about,
-            item,
-        })
+        Some(kind)
     }
 
     /// `in`: the frame whose unit vectors a reaction's components are given in.

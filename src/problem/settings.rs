@@ -2,7 +2,7 @@
 
 use super::json::{self, check_keys, key_path, number, object, Diagnostics};
 use super::model::SimulateSettings;
-use super::read::Reader;
+use super::reader::Reader;
 use serde_json::Value;
 
 impl Reader {

@@ -11,7 +11,7 @@ use serde_json::{Map, Value};
 
 const TYPES: &str = "rod, disc, block, particle or polygon";
 
-impl super::read::Reader {
+impl super::reader::Reader {
     /// The `shape` of body `id` at `path`, or `None` after recording what is wrong.
     pub(super) fn shape(&mut self, value: &Value, path: &str, id: BodyId) -> Option<BodyShape> {
         let fields = object(value, path, &mut self.diag)?;

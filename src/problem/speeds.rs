@@ -5,7 +5,7 @@ use super::expressions::Context;
 use super::json::{check_keys, key_path, object, optional_string, required};
 use super::model::*;
 use super::names::Kind;
-use super::read::Reader;
+use super::reader::Reader;
 use crate::symbolic::eval::{eval, Values};
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{Expr, Symbol};

@@ -8,7 +8,7 @@
 //! of this program, which a key that must be drawn again identically needs. A crate's
 //! generator may change its stream between versions (`rand`'s `StdRng` says so).
 
-use super::model::Problem;
+use super::validated::Problem;
 use super::vary::Grid;
 use serde_json::Value;
 
@@ -19,6 +19,7 @@ pub struct SplitMix64 {
 }
 
 impl SplitMix64 {
+    /// The generator started from `seed`.
     pub fn new(seed: u64) -> SplitMix64 {
         SplitMix64 { state: seed }
     }

@@ -13,7 +13,9 @@ use serde_json::{Map, Value};
 /// The range and grid of a constant that varies.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Vary {
+    /// The least value drawn.
     pub low: f64,
+    /// The greatest value drawn.
     pub high: f64,
     /// As written; `None` draws 3 significant digits (see [`Vary::grid`]).
     pub step: Option<f64>,
@@ -22,8 +24,11 @@ pub struct Vary {
 /// The values a draw picks from, uniformly: `origin + k step` for k in `0..=count - 1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Grid {
+    /// The first value.
     pub origin: f64,
+    /// The spacing of the values.
     pub step: f64,
+    /// How many values.
     pub count: u64,
     /// Decimals that print every value of the grid exactly as meant (0.1 + 0.2 is 0.3).
     pub decimals: usize,

@@ -58,7 +58,7 @@ fn break_lines(latex: &str, width: f64) -> String {
     break_into_lines(latex, width).join(" \\\\ ")
 }
 
-/// The lines of [`break_lines`], each whole: a `\left` left open at a break is closed by
+/// The lines of `break_lines`, each whole: a `\left` left open at a break is closed by
 /// `\right.` and reopened by `\left.` on the next line.
 ///
 /// It never breaks inside braces (`\frac{…}{…}`) or environments (`bmatrix`), where a `\\`

@@ -194,7 +194,7 @@ const ELEMENTS: [&str; 22] = [
     "merror",
 ];
 
-/// Keeps the tags of [`ELEMENTS`] (with attributes free of `<` and quotes balanced) and
+/// Keeps the tags of `ELEMENTS` (with attributes free of `<` and quotes balanced) and
 /// escapes every other `<`, `>` and stray `&`, so that nothing but MathML can come out.
 pub fn sanitize(markup: &str) -> String {
     let mut out = String::with_capacity(markup.len());

@@ -27,7 +27,7 @@ pub fn value_tex(initial: &impl Fn(&Expr) -> f64, e: &Expr) -> String {
 }
 
 /// Where `A` and `b` are not zero, a dot in a table for each, columns by number (in blocks
-/// of at most [`MOST_PATTERN_COLUMNS`]), rows by their number in step 5: the shape of the
+/// of at most `MOST_PATTERN_COLUMNS`), rows by their number in step 5: the shape of the
 /// system, such as Newton–Euler's reactions shared by two bodies' rows.
 pub fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> Vec<String> {
     let dot = |e: &Expr| {
@@ -60,7 +60,7 @@ pub fn pattern_tables(labels: &[String], a: &[Vec<Expr>], b: &[Expr]) -> Vec<Str
 }
 
 /// `A` and `b` at the initial state as tables laid out as [`whole`] lays out the formulas,
-/// in blocks of at most [`MOST_VALUE_COLUMNS`] columns of about equal width, `b` in the
+/// in blocks of at most `MOST_VALUE_COLUMNS` columns of about equal width, `b` in the
 /// last. A block leaves out the rows that are zero in all its columns, as a printed sparse
 /// matrix does: a floating body's rows are zero under a chain's q̈, and a reaction's column
 /// is zero but in the rows of the bodies it acts on.

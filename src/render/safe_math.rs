@@ -2,7 +2,7 @@
 //! browser or a Markdown renderer.
 //!
 //! Only a small, harmless part of LaTeX passes: letters, digits, operators, the commands
-//! of [`COMMANDS`] (Greek letters, `\frac`, `\sqrt`, accents, functions, relations) and
+//! of `COMMANDS` (Greek letters, `\frac`, `\sqrt`, accents, functions, relations) and
 //! balanced braces, and only if the MathML converter can also parse it, so that a span is
 //! math in every format or text in every format. Anything else (`\input`, `\write18`,
 //! `\def`, `#`, `%`, `&`, an unbalanced brace) makes the whole span plain text, which the

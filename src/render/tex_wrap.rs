@@ -10,7 +10,7 @@
 /// The longest source line [`short_source_lines`] leaves, in bytes.
 const LONGEST_SOURCE_LINE: usize = 200;
 
-/// `tex` with every source line longer than [`LONGEST_SOURCE_LINE`] broken at spaces. TeX
+/// `tex` with every source line longer than `LONGEST_SOURCE_LINE` broken at spaces. TeX
 /// reads a single line end as a space, so the pages are the same, and an editor or a diff
 /// copes with the source. A line with a comment is left whole (a break before the `%` would
 /// be safe, one after it would not), and so is a space after a backslash (a control space).

@@ -1,5 +1,5 @@
 //! The kinds of string the worked solution holds, each a type of its own, so that the
-//! renderer treats a string by what it is (see [`super::prepare`]) and not by its field's
+//! renderer treats a string by what it is (see `render::prepare`) and not by its field's
 //! name. A plain `String` in the content is plain text: user text, names, numbers.
 //!
 //! Each kind serializes as a one-entry map whose key names the kind (a key no field and no

@@ -4,7 +4,7 @@
 
 use super::context::{Named, WhereEntry};
 
-/// `list` grouped by [`kind`], each group where its first member stood; a group of one
+/// `list` grouped by `kind`, each group where its first member stood; a group of one
 /// keeps its own note.
 pub fn grouped(list: Vec<Named>) -> Vec<WhereEntry> {
     let list = each_value_once(list);

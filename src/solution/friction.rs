@@ -3,9 +3,9 @@
 //! the assumption that it sticks, the solution, the check `|F| ≤ μ|N|` and, when the check
 //! fails, the solution again with sliding friction.
 
-use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::numeric::friction::{Mode, SiteState};
+use crate::plan::rows::Sum;
 use crate::render::context::{FrictionStep, FrictionView};
 use crate::render::text::Math;
 use crate::symbolic::format::fixed;

@@ -326,7 +326,7 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<Stri
     } else {
         // The friction forces are in the rows of the speeds: nothing is solved first.
         let forces = |k: usize, one: &str, many: &str| if k == 1 { one } else { many }.to_string();
-        let normals = crate::equations::friction::normal_forces(model).len();
+        let normals = crate::equations::normal_forces(model).len();
         out.push(format!(
             "Solving: the rows of the speeds and the auxiliary speeds and the differentiated constraints, with each rough contact's no-slip row while it sticks or the sliding law in its place while it slips (said after the equations), are solved as one system for the $\\ddot{{q}}$, the {} and the {}.",
             forces(friction.len(), "friction force", "friction forces"),
@@ -364,8 +364,8 @@ fn evaluated_relation<'a>(
 /// Why the friction forces stay in Kane's rows and how the normal forces come in.
 fn friction_note(derivation: &Derivation) -> String {
     let model = &derivation.model;
-    let friction = crate::equations::friction::friction_forces(model);
-    let normals = crate::equations::friction::normal_forces(model);
+    let friction = crate::equations::friction_forces(model);
+    let normals = crate::equations::normal_forces(model);
     let tex = |list: &[Symbol]| -> String {
         let each: Vec<String> = (list.iter())
             .map(|u| format!("${}$", latex(&Expr::sym(u.clone()))))

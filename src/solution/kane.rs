@@ -6,10 +6,10 @@
 use super::long::LONG_EQUATION;
 use super::tex::shortest_tex;
 use crate::equations::kane::partials;
-use crate::equations::rows::{Equation, Groups, Sum};
 use crate::equations::{Derivation, Method};
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Model, Vector};
+use crate::plan::rows::{Equation, Groups, Sum};
 use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
 use crate::render::text::Math;

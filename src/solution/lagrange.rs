@@ -5,11 +5,11 @@
 
 use super::long::LONG_EQUATION;
 use crate::equations::lagrange::{energy, forces};
-use crate::equations::rows::{Equation, Sum};
 use crate::equations::{Derivation, Method};
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{constraint_generalized_forces, ActionKind};
+use crate::plan::rows::{Equation, Sum};
 use crate::render::context::{GeneralizedForceRow, LagrangeView};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::collect::latex_collected;

@@ -4,8 +4,8 @@
 
 use super::long::{by_rates, LONG_EQUATION};
 use super::tex::row_heading_tex;
-use crate::equations::rows::Sum;
 use crate::equations::{Derivation, Method};
+use crate::plan::rows::Sum;
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
 use crate::render::math_width::printed_width;
 use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};

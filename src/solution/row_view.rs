@@ -167,14 +167,14 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         } else if independent.is_some() {
             // The force the row is for: a friction force, which works with the slip rates,
             // may be in it too.
-            let friction = crate::equations::friction::friction_forces(&derivation.model);
+            let friction = crate::equations::friction_forces(&derivation.model);
             let forces: Vec<Symbol> = row
                 .unknowns
                 .iter()
                 .filter(|u| matches!(u, Symbol::Unknown(_)) && !friction.contains(u))
                 .cloned()
                 .collect();
-            let normals = crate::equations::friction::normal_forces(&derivation.model);
+            let normals = crate::equations::normal_forces(&derivation.model);
             let along = if forces.iter().all(|f| normals.contains(f)) {
                 "the normal force, which the sliding law needs"
             } else {

@@ -2,11 +2,11 @@
 //! bodies, a row's heading and its sum, a constraint's label, the sign a term has at the
 //! initial state, and how the problem's numbers print.
 
-use crate::equations::rows::Sum;
 use crate::equations::Derivation;
 use crate::mechanics::constraints::RowOrigin;
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::ActionKind;
+use crate::plan::rows::Sum;
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::collect::{self};
 use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};

@@ -5,7 +5,7 @@
 //!
 //! A [`Style`] is set for the steps that use it with [`with_style`]; the LaTeX printer
 //! reads it and records every abbreviation it prints, so that the step that introduces
-//! them can list exactly those (see [`Style::used`]). Only the display changes: the
+//! them can list exactly those (see `Style::used`). Only the display changes: the
 //! expressions, their canonical form and the numbers stay as they are. Outside
 //! [`with_style`] the printer prints as it always did.
 

@@ -167,6 +167,7 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
 }
 
 /// What the pictures of one problem get wrong.
+#[allow(clippy::too_many_lines)] // one check after another, each a few lines
 fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
     let problem: Problem = mbd_tutor::problem::load_file(problem_file).expect("a valid problem");
     let name = problem_file

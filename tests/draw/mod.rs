@@ -4,8 +4,8 @@
 
 use crate::support::{all_problems, problem as problem_path};
 use crate::svg_reader::{apply, parse, Element};
-use mbd_tutor::cmd::draw::derivation_at;
-use mbd_tutor::equations::system::State;
+use mbd_tutor::cmd::derivation_at;
+use mbd_tutor::equations::State;
 use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::mechanics::Vector;
 use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem};
@@ -152,7 +152,7 @@ fn drawings(
 ) -> (Derivation<'_>, Vec<Drawing>, State) {
     let mut state = State {
         t: 0.0,
-        q: problem.coordinates.iter().map(|c| c.initial).collect(),
+        q: problem.initial_coordinates(),
         rates: problem.coordinates.iter().map(|c| c.rate).collect(),
     };
     let (derivation, accelerations) =

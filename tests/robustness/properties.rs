@@ -212,7 +212,7 @@ fn pipeline_on_mutated_small_problems() {
             DERIVED.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
             let method = [Method::MotionLaw, Method::NewtonEuler, Method::Kane][which % 3];
             if let Ok(derivation) = derive_rows(&problem, method) {
-                let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+                let q: Vec<f64> = problem.initial_coordinates();
                 let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
                 let _ = Compiled::new(&derivation).solve(0.0, &q, &rates);
             }

@@ -13,8 +13,11 @@ use crate::plan::rows::{is_external, Equation, Groups, Inertia, Sum};
 
 pub mod constrained;
 pub mod loads;
+mod rows;
+
 use crate::symbolic::linear::linear_split;
 use crate::symbolic::{add, Expr, Symbol};
+pub(super) use rows::{rows, view};
 
 /// The partial velocities of a vector linear in the rates: one vector per rate.
 pub fn partials(v: &Vector, rates: &[Symbol]) -> Vec<Vector> {

@@ -19,6 +19,7 @@ pub mod energy;
 pub mod forces;
 pub mod kinetic;
 
+use super::unknowns::{Inputs, MethodRows, Setup};
 use crate::mechanics::model::{same_at, sample_states};
 use crate::mechanics::{Form, MechanicsError, Model};
 use crate::plan::forces::Action;
@@ -142,4 +143,29 @@ pub fn equations(
         rows.extend(relaxed(j, Some(kept)));
     }
     Ok(rows)
+}
+
+/// Lagrange's view of the model: along a light rod the relaxed joint brings in its tension
+/// alone, and a light rod's closure carries its tension alone.
+pub(super) fn view(model: &mut Model) {
+    crate::mechanics::two_force::along_members(model);
+    crate::mechanics::light_rod::closures_along_rods(model);
+}
+
+/// Lagrange's rows: one per coordinate and one per requested reaction of a tree joint,
+/// then the constraint rows.
+///
+/// # Errors
+/// As for [`equations`].
+pub(super) fn rows(inputs: &Inputs, setup: Setup) -> Result<MethodRows, MechanicsError> {
+    let model = inputs.model;
+    let tree_requested = setup.tree_requested(model.problem);
+    let rows = equations(
+        model,
+        inputs.actions,
+        inputs.inertia,
+        &setup.every_unknown,
+        (&tree_requested, &setup.kept),
+    )?;
+    Ok(setup.with_given(rows))
 }

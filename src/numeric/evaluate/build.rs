@@ -63,28 +63,7 @@ impl Compiled {
         let formed = &derivation.system;
         let n = formed.unknowns.len();
         // The reaction directions come after A and b, whichever system gives those.
-        let mut directions: Vec<Expr> = Vec::new();
-        let mut reactions = Vec::new();
-        for &j in &problem.find_reactions {
-            let joint = &model.sites[j];
-            let mut components = Vec::new();
-            for component in &joint.reactions {
-                let symbol = component.unknown(&joint.name);
-                let direction = component
-                    .direction
-                    .components_in(joint.parent, &model.frames);
-                components.push(ReactionComponentSlot {
-                    is_force: component.kind == ComponentKind::Force,
-                    unknown: formed.unknowns.iter().position(|u| *u == symbol),
-                    direction_output: n * n + n + directions.len(),
-                });
-                directions.extend(direction);
-            }
-            reactions.push(ReactionSlot {
-                joint: joint.name.clone(),
-                components,
-            });
-        }
+        let (reactions, directions) = reaction_slots(derivation);
         let inputs = input_symbols(problem);
         let outputs_of = |system: &crate::equations::LinearSystem| {
             let mut outputs: Vec<Expr> = system.a.iter().flatten().cloned().collect();
@@ -156,16 +135,7 @@ impl Compiled {
                 (name, formed.unknowns.iter().position(|u| *u == symbol))
             })
             .collect();
-        // Drives, and constraints that change with time, do work: a prescribed `w*t` has
-        // the rate row `q' - w`, free of t, so the position row and the origin are asked too.
-        let time = crate::symbolic::Symbol::Time;
-        let drives_work = model.constraints.rows.iter().any(|r| {
-            matches!(
-                r.origin,
-                crate::mechanics::constraints::RowOrigin::Prescribed(_)
-            ) || r.velocity.contains(&time)
-                || r.position.as_ref().is_some_and(|p| p.contains(&time))
-        });
+        let drives_work = drives_work(model);
         Compiled {
             recursive,
             friction,
@@ -222,4 +192,48 @@ fn is_conservative(kind: &LoadKind) -> bool {
 
 fn is_dissipative(kind: &LoadKind) -> bool {
     matches!(kind, LoadKind::Damper { .. } | LoadKind::JointDamper { .. })
+}
+
+/// The slots of the requested reactions' components, and their directions in the parent's
+/// unit vectors, output after `A` and `b`.
+fn reaction_slots(derivation: &Derivation) -> (Vec<ReactionSlot>, Vec<Expr>) {
+    let model = &derivation.model;
+    let formed = &derivation.system;
+    let n = formed.unknowns.len();
+    let mut directions: Vec<Expr> = Vec::new();
+    let mut reactions = Vec::new();
+    for &j in &model.problem.find_reactions {
+        let joint = &model.sites[j];
+        let mut components = Vec::new();
+        for component in &joint.reactions {
+            let symbol = component.unknown(&joint.name);
+            let direction = component
+                .direction
+                .components_in(joint.parent, &model.frames);
+            components.push(ReactionComponentSlot {
+                is_force: component.kind == ComponentKind::Force,
+                unknown: formed.unknowns.iter().position(|u| *u == symbol),
+                direction_output: n * n + n + directions.len(),
+            });
+            directions.extend(direction);
+        }
+        reactions.push(ReactionSlot {
+            joint: joint.name.clone(),
+            components,
+        });
+    }
+    (reactions, directions)
+}
+
+/// Whether drives, or constraints that change with time, do work: a prescribed `w*t` has
+/// the rate row `q' - w`, free of t, so the position row and the origin are asked too.
+fn drives_work(model: &crate::mechanics::Model) -> bool {
+    let time = crate::symbolic::Symbol::Time;
+    model.constraints.rows.iter().any(|r| {
+        matches!(
+            r.origin,
+            crate::mechanics::constraints::RowOrigin::Prescribed(_)
+        ) || r.velocity.contains(&time)
+            || r.position.as_ref().is_some_and(|p| p.contains(&time))
+    })
 }

@@ -1,5 +1,5 @@
 //! Evaluating a derivation at a state: the compiled program for `A`, `b`, the reaction
-//! directions and the energies (compiled in [`build`]), then the linear solve (see
+//! directions and the energies (compiled in `build`), then the linear solve (see
 //! [`super::linear`]).
 
 mod build;

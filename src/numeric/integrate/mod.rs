@@ -198,6 +198,9 @@ where
 /// `events(t, y)` falls from positive to zero or below: located on the step's dense output
 /// by bisection (to about 1e-13 of the step's time), and kept in [`Solution::event`] with
 /// the rows up to it. An empty list from `events` means none can fall.
+// A numerical recipe, kept as one loop as its sources write it: Dormand–Prince 5(4) with
+// Hairer's step-size control (Hairer, Nørsett & Wanner, Solving ODEs I, II.4 and II.6).
+#[allow(clippy::too_many_lines)]
 pub fn integrate_until<E, F, G>(
     mut f: F,
     mut events: G,

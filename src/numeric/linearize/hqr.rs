@@ -134,7 +134,8 @@ fn sign(a: f64, b: f64) -> f64 {
 }
 
 /// The eigenvalues of an upper Hessenberg matrix (destroyed).
-#[allow(clippy::many_single_char_names)]
+// A numerical recipe port (EISPACK's hqr, as in Numerical Recipes §11.6), kept whole.
+#[allow(clippy::many_single_char_names, clippy::too_many_lines)]
 fn hqr(a: &mut [Vec<f64>], n: usize) -> Option<Vec<Complex<f64>>> {
     let mut wr = vec![0.0; n + 1];
     let mut wi = vec![0.0; n + 1];

@@ -4,7 +4,7 @@
 //! at the interpolated state for q'', the energies and the reactions.
 
 use super::friction::Held;
-use super::integrate::{integrate, Options, Stop};
+use super::integrate::{integrate, Options, Solution, Stop};
 use super::system::{describe_state, ReactionColumn, System};
 use super::SolveError;
 use crate::problem::SimulateSettings;
@@ -92,26 +92,8 @@ pub fn simulate_with_limits(
 ) -> Result<Trajectory, SolveError> {
     let names = system.coordinate_names();
     let n = names.len();
-    if q0.len() != n || rates0.len() != n {
-        return Err(SolveError::BadSimulation {
-            what: format!(
-                "{n} coordinates but {} initial values and {} initial rates",
-                q0.len(),
-                rates0.len()
-            ),
-        });
-    }
-    if q0.iter().chain(rates0).any(|v| !v.is_finite()) {
-        return Err(SolveError::BadSimulation {
-            what: "the initial state is not finite".into(),
-        });
-    }
+    check_start(n, q0, rates0, settings.tolerance)?;
     let tolerance = settings.tolerance;
-    if !(tolerance > 0.0 && tolerance < 1.0) {
-        return Err(SolveError::BadSimulation {
-            what: format!("`tolerance` must be between 0 and 1, not {tolerance}"),
-        });
-    }
     let times = output_times(settings.duration, settings.output_step, limits.max_rows)?;
     let reactions = system.reaction_columns();
     let mut trajectory = Trajectory {
@@ -199,20 +181,67 @@ pub fn simulate_with_limits(
         solution
     };
 
+    if !record(
+        system,
+        &solution,
+        (potential0, reactions.len()),
+        &mut trajectory,
+    ) {
+        return Ok(trajectory);
+    }
+    trajectory.stopped = solution.stop.map(|stop| stop_error(stop, &names));
+    Ok(trajectory)
+}
+
+/// Refuses an initial state of the wrong length or not finite, and a tolerance outside
+/// (0, 1).
+fn check_start(n: usize, q0: &[f64], rates0: &[f64], tolerance: f64) -> Result<(), SolveError> {
+    if q0.len() != n || rates0.len() != n {
+        return Err(SolveError::BadSimulation {
+            what: format!(
+                "{n} coordinates but {} initial values and {} initial rates",
+                q0.len(),
+                rates0.len()
+            ),
+        });
+    }
+    if q0.iter().chain(rates0).any(|v| !v.is_finite()) {
+        return Err(SolveError::BadSimulation {
+            what: "the initial state is not finite".into(),
+        });
+    }
+    if !(tolerance > 0.0 && tolerance < 1.0) {
+        return Err(SolveError::BadSimulation {
+            what: format!("`tolerance` must be between 0 and 1, not {tolerance}"),
+        });
+    }
+    Ok(())
+}
+
+/// Writes a row of `trajectory` for each output time of `solution`: the state, the
+/// accelerations, the energies (the potential from its value at the start) and the
+/// reactions. False when an evaluation failed: the run stops there, its error kept.
+fn record(
+    system: &dyn System,
+    solution: &Solution<SolveError>,
+    (potential0, reaction_count): (f64, usize),
+    trajectory: &mut Trajectory,
+) -> bool {
+    let n = trajectory.coordinates;
     for (&t, y) in solution.times.iter().zip(&solution.states) {
         let mut y = y.clone();
         let (q, rates) = y.split_at_mut(n);
         if let Err(e) = system.assemble(t, q, rates) {
             trajectory.stopped = Some(e);
-            return Ok(trajectory);
+            return false;
         }
         let (q, rates) = (&*q, &*rates);
         let evaluation = match system.evaluate(t, q, rates) {
             Ok(e) if e.accelerations.len() != n => {
                 Err(mismatch("accelerations", n, e.accelerations.len()))
             }
-            Ok(e) if e.reactions.len() != reactions.len() => {
-                Err(mismatch("reactions", reactions.len(), e.reactions.len()))
+            Ok(e) if e.reactions.len() != reaction_count => {
+                Err(mismatch("reactions", reaction_count, e.reactions.len()))
             }
             other => other,
         };
@@ -220,7 +249,7 @@ pub fn simulate_with_limits(
             Ok(evaluation) => evaluation,
             Err(e) => {
                 trajectory.stopped = Some(e);
-                return Ok(trajectory);
+                return false;
             }
         };
         let potential = evaluation.potential - potential0;
@@ -236,23 +265,28 @@ pub fn simulate_with_limits(
         row.extend_from_slice(&evaluation.reactions);
         trajectory.rows.push(row);
     }
-    trajectory.stopped = solution.stop.map(|stop| match stop {
+    true
+}
+
+/// The error that ended the integration early, with the state it stopped at.
+fn stop_error(stop: Stop<SolveError>, names: &[String]) -> SolveError {
+    let n = names.len();
+    match stop {
         Stop::Derivative(e) => e,
         Stop::StepUnderflow { t, y, step } => SolveError::StepSizeUnderflow {
-            state: describe_state(t, &names, &y[..n], &y[n..]),
+            state: describe_state(t, names, &y[..n], &y[n..]),
             step,
         },
         Stop::TooManySteps { t, y, steps } => SolveError::TooManySteps {
-            state: describe_state(t, &names, &y[..n], &y[n..]),
+            state: describe_state(t, names, &y[..n], &y[n..]),
             steps,
         },
         Stop::NotFinite { t, y } => SolveError::NotFinite {
-            state: describe_state(t, &names, &y[..n], &y[n..]),
+            state: describe_state(t, names, &y[..n], &y[n..]),
             what: "an acceleration".into(),
         },
         Stop::BadArguments(what) => SolveError::BadSimulation { what: what.into() },
-    });
-    Ok(trajectory)
+    }
 }
 
 fn mismatch(what: &str, expected: usize, got: usize) -> SolveError {

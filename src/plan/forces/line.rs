@@ -169,7 +169,7 @@ fn along_one_axis(
     (number, from, to): (usize, &str, &str),
 ) -> Result<(Expr, Vector, Expr), MechanicsError> {
     let problem = model.problem;
-    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let q0: Vec<f64> = problem.initial_coordinates();
     let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let initial = eval(c, &model.values_at(0.0, &q0, &rates0));
     let c_rate = time_derivative(c).map_err(|e| MechanicsError {
