@@ -90,14 +90,7 @@ fn clean(x: f64) -> f64 {
 
 /// |F| / (μ|N|): `None` where μ|N| is zero and friction is needed.
 pub fn ratio(site: &SiteState) -> Option<f64> {
-    let force = site.friction();
-    if site.limit > 0.0 {
-        Some(force / site.limit)
-    } else if force == 0.0 {
-        Some(0.0)
-    } else {
-        None
-    }
+    site.friction_ratio()
 }
 
 /// The JSON object of the command-line contract.

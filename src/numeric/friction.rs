@@ -95,6 +95,18 @@ impl SiteState {
         norm(&self.tangential)
     }
 
+    /// |F| / (μ|N|): `None` where μ|N| is zero and friction is needed.
+    pub fn friction_ratio(&self) -> Option<f64> {
+        let force = self.friction();
+        if self.limit > 0.0 {
+            Some(force / self.limit)
+        } else if force == 0.0 {
+            Some(0.0)
+        } else {
+            None
+        }
+    }
+
     /// How to hold the site from here on: sticking, or sliding with its friction force's
     /// direction.
     pub fn held(&self) -> Held {

@@ -13,6 +13,12 @@ use nalgebra::DMatrix;
 /// The longest relation written in symbols (characters of LaTeX).
 const LONGEST: usize = 80;
 
+/// The most dependent rates solved in symbols, and the most operations in the
+/// constraints' coefficients: past them the relations are long (and the elimination
+/// in symbols grows past what a handout can print, as the bicycle's six would).
+const MOST_DEPENDENT: usize = 3;
+const MOST_OPERATIONS: usize = 120;
+
 /// One `q̇_s = Σ C_sk q̇_k` per dependent rate `dependent[d]`, over the independent
 /// `rates`, in symbols; `None` unless the velocity constraints are as many as the
 /// dependent rates, every relation is short, and each equals `c` at `values`.
@@ -30,7 +36,12 @@ pub fn in_symbols(
         .filter(|r| !matches!(r.origin, RowOrigin::Prescribed(_)))
         .map(|r| linear_split(&r.velocity, &symbols).ok().map(|(c, _)| c))
         .collect::<Option<_>>()?;
-    if rows.len() != dependent.len() || dependent.is_empty() {
+    if rows.len() != dependent.len() || dependent.is_empty() || dependent.len() > MOST_DEPENDENT
+    {
+        return None;
+    }
+    let operations: usize = rows.iter().flatten().map(Expr::operation_count).sum();
+    if operations > MOST_OPERATIONS {
         return None;
     }
     let a_d: Vec<Vec<Expr>> = (rows.iter())

@@ -6,7 +6,7 @@
 //! Written in the Answers of the questions asked at that switch, and only where the
 //! numbers agree with the simulation's to 1e-6.
 
-use crate::equations::rows::Sum;
+use crate::plan::rows::Sum;
 use crate::equations::Derivation;
 use crate::mechanics::constraint_rows::FrictionSite;
 use crate::numeric::answers::Answer;

@@ -2,7 +2,6 @@
 //! step 4 needs only positions, the equilibrium found with what holds it there (step 5),
 //! its stability, and that the system stays at rest (step 6).
 
-use crate::cmd::statics::ratio;
 use crate::pipeline::statics::{Equilibrium, Stability, StabilityKind};
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{StaticFriction, StaticsView};
@@ -136,7 +135,7 @@ fn friction(equilibrium: &Equilibrium) -> Vec<StaticFriction> {
         .friction
         .iter()
         .map(|site| {
-            let r = ratio(site);
+            let r = site.friction_ratio();
             StaticFriction {
                 site: site.name.clone(),
                 normal: number(site.normal),
@@ -190,7 +189,7 @@ fn rest(equilibrium: &Equilibrium) -> String {
         .motion
         .friction
         .iter()
-        .any(|site| ratio(site).is_none_or(|r| r > 1.0));
+        .any(|site| site.friction_ratio().is_none_or(|r| r > 1.0));
     let unstable = equilibrium
         .stability
         .as_ref()
