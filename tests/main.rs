@@ -55,3 +55,4 @@ mod support;
 mod svg_reader;
 mod validation;
 mod variants;
+mod whole_handouts;

@@ -16,7 +16,7 @@ const MOST_BODIES: usize = 4;
 
 /// The most characters of LaTeX a line of the block may take: the block's lines are not
 /// broken, and a longer one would stick out of the page's margin.
-const LONGEST_LINE: usize = 420;
+const LONGEST_LINE: usize = 360;
 
 /// `F^*_r` (or `F̃^*_r` with independent speeds) of Kane's speed row `r` (1-based) as the
 /// sum of each body's contribution, then each contribution, as an `aligned` block; `whole`

@@ -36,8 +36,7 @@ pub fn in_symbols(
         .filter(|r| !matches!(r.origin, RowOrigin::Prescribed(_)))
         .map(|r| linear_split(&r.velocity, &symbols).ok().map(|(c, _)| c))
         .collect::<Option<_>>()?;
-    if rows.len() != dependent.len() || dependent.is_empty() || dependent.len() > MOST_DEPENDENT
-    {
+    if rows.len() != dependent.len() || dependent.is_empty() || dependent.len() > MOST_DEPENDENT {
         return None;
     }
     let operations: usize = rows.iter().flatten().map(Expr::operation_count).sum();

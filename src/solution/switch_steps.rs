@@ -6,10 +6,10 @@
 //! Written in the Answers of the questions asked at that switch, and only where the
 //! numbers agree with the simulation's to 1e-6.
 
-use crate::plan::rows::Sum;
 use crate::equations::Derivation;
 use crate::mechanics::constraint_rows::FrictionSite;
 use crate::numeric::answers::Answer;
+use crate::plan::rows::Sum;
 use crate::problem::{Problem, QuestionKind};
 use crate::render::sections::{AnswerStep, AnswerView};
 use crate::symbolic::diff::partial;
