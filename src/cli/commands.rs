@@ -116,6 +116,8 @@ pub enum FormatArg {
 }
 
 /// Arguments of `mbd-tutor explain`.
+// Each bool is a command-line switch of its own, as clap reads it.
+#[allow(clippy::struct_excessive_bools)]
 #[derive(clap::Args, Debug)]
 pub struct ExplainArgs {
     /// A problem file, or a directory of them (then `-o` names the output directory).

@@ -547,7 +547,7 @@ pub enum QuestionKind {
         /// The identity as written.
         text: String,
     },
-    /// The values of a constant (an index into [`Problem::constants`]) between `from` and
+    /// The values of a constant (an index into `Problem::constants`) between `from` and
     /// `to` where the question's state changes stability (a bicycle's weave and capsize
     /// speeds), from the linearization at `count` values and bisection between them.
     Stability {
