@@ -94,7 +94,7 @@ fn explain_version(
     let (text, mut solution) = rendered(args, problem_path, output, student)?;
     if let Some(path) = output.filter(|_| args.format == FormatArg::Markdown) {
         // Only Markdown refers to plot files.
-        render::plot::draw(&mut solution.simulation.plots, Format::Markdown);
+        render::plots_drawn::draw(&mut solution.simulation.plots, Format::Markdown);
         // The plots first, so that a document never refers to a plot that is not there.
         let directory = path.parent().unwrap_or(Path::new(""));
         for plot in solution

@@ -20,10 +20,12 @@ pub mod linearize;
 pub mod moving_slip;
 pub mod newton;
 pub mod period;
+mod quantity;
 pub mod recursive;
 pub mod reduce;
 pub mod simulate;
 pub mod speeds;
+pub mod stability_edge;
 mod steady;
 pub mod system;
 

@@ -4,7 +4,7 @@
 //! zero is sliding, whatever the forces), and where it is zero the ratio |F|/(μ|N|) that
 //! sticking needs decides, as at rest.
 
-use super::answers::Quantity;
+use super::quantity::Quantity;
 use super::system::System;
 use crate::problem::{Problem, Question, QuestionKind};
 

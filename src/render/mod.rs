@@ -22,6 +22,7 @@ pub mod matrix_tables;
 pub mod numbers;
 pub mod plan_table;
 pub mod plot;
+pub mod plots_drawn;
 mod prepare;
 pub mod safe_math;
 pub mod sample;
@@ -165,7 +166,7 @@ pub fn render(
     let solution = match to_draw && solution.simulation.plots.iter().any(|p| p.data.is_some()) {
         true => {
             let mut copy = solution.clone();
-            plot::draw(&mut copy.simulation.plots, format);
+            plots_drawn::draw(&mut copy.simulation.plots, format);
             drawn = copy;
             &drawn
         }

@@ -515,26 +515,3 @@ pub struct PlotData {
     /// How many plots share a row of the page (LaTeX).
     pub plots_in_row: usize,
 }
-
-/// Writes each plot of `plots` that has its data as `format` shows it: the SVG document for
-/// HTML and Markdown (its file), the pgfplots picture for LaTeX.
-pub fn draw(plots: &mut [crate::render::context::Plot], format: crate::render::Format) {
-    use crate::render::text::{LatexCode, SvgDocument};
-    for plot in plots {
-        let Some(data) = &plot.data else { continue };
-        match format {
-            crate::render::Format::Latex => {
-                plot.pgfplots_latex = LatexCode::from(pgfplots(
-                    &data.x_label,
-                    &data.y_label,
-                    &data.series,
-                    data.plots_in_row,
-                ));
-            }
-            crate::render::Format::Html | crate::render::Format::Markdown => {
-                let svg = line_plot(&plot.title, &data.x_label, &data.y_label, &data.series);
-                plot.image_svg = SvgDocument::from(svg.unwrap_or_default());
-            }
-        }
-    }
-}

@@ -3,7 +3,7 @@
 //! how the motion grows on the unstable side) and in `answer --format json`.
 
 use crate::numeric::answers::Answer;
-use crate::pipeline::stability::{edges, Edge};
+use crate::numeric::stability_edge::{edges, Edge};
 use crate::problem::{Problem, Question, QuestionKind};
 use crate::render::text::Math;
 use serde_json::{Map, Value};

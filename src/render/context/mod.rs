@@ -416,7 +416,7 @@ pub struct Plot {
     /// A `tikzpicture` with a pgfplots `axis`, for LaTeX.
     pub pgfplots_latex: LatexCode,
     /// What is plotted, from which the renderer draws [`Plot::image_svg`] and
-    /// [`Plot::pgfplots_latex`] for the format asked ([`crate::render::plot::draw`]).
+    /// [`Plot::pgfplots_latex`] for the format asked ([`crate::render::plots_drawn::draw`]).
     #[serde(skip)]
     pub data: Option<crate::render::plot::PlotData>,
 }
