@@ -12,6 +12,7 @@
 //! when `|F| ≤ μ |N|`, and otherwise solved again sliding, the friction force along the
 //! force that sticking needed (it opposes the motion that would start).
 
+use super::friction_vectors::{direction_of, dot, first_unit, norm, same_direction, signed_normal};
 use super::linear::solve_linear;
 use crate::equations::Derivation;
 use crate::plan::rows::Sum;
@@ -476,49 +477,6 @@ impl Friction {
 /// Passes allowed, beyond those that settle modes and signs, for N's direction to settle
 /// where N has two components.
 const DIRECTION_PASSES: usize = 60;
-
-/// N as reported: its one component, signed; the magnitude of two.
-fn signed_normal(components: &[f64]) -> f64 {
-    match components {
-        [n] => *n,
-        _ => norm(components),
-    }
-}
-
-/// N's unit direction among its components; `held` where N is zero. With one component,
-/// its sign (zero counts as positive, as the first guess).
-fn direction_of(components: &[f64], held: &[f64]) -> Vec<f64> {
-    if let [n] = components {
-        return vec![if *n < 0.0 { -1.0 } else { 1.0 }];
-    }
-    let size = norm(components);
-    if size > 0.0 {
-        components.iter().map(|c| c / size).collect()
-    } else {
-        held.to_vec()
-    }
-}
-
-/// Whether two unit directions agree: exactly for a sign, to rounding for two components.
-fn same_direction(a: &[f64], b: &[f64]) -> bool {
-    match (a, b) {
-        ([x], [y]) => x == y,
-        _ => a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-13),
-    }
-}
-
-/// The first unit vector among `n` components, the first guess of N's direction.
-fn first_unit(n: usize) -> Vec<f64> {
-    (0..n).map(|i| if i == 0 { 1.0 } else { 0.0 }).collect()
-}
-
-fn norm(v: &[f64]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
-}
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
 
 /// Along the one free direction `v` of the forces, from the solution `x`, the point that
 /// keeps the sites (each with one friction and one normal component, and its μ) farthest

@@ -2,6 +2,7 @@
 //! (steps 5 and 6).
 
 pub mod answer_frame;
+mod answer_units;
 pub mod answers;
 pub mod assemble;
 pub mod check;
@@ -10,6 +11,7 @@ pub mod constraint_checks;
 pub mod evaluate;
 pub mod frame;
 pub mod friction;
+mod friction_vectors;
 pub mod impact;
 pub mod inputs;
 /// Fixed-precision numbers for text (see [`crate::symbolic::format`]).

@@ -5,7 +5,7 @@
 
 use super::expressions::{self, Context};
 use super::json::{check_keys, key_path, number, object, string};
-use super::model::QuestionKind;
+use super::question_model::QuestionKind;
 use super::reader::Reader;
 use serde_json::Value;
 

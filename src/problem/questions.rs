@@ -19,7 +19,7 @@
 
 use super::expressions::{self, Context};
 use super::json::{self, check_keys, index_path, key_path, number, object, string};
-use super::model::{Question, QuestionAt, QuestionKind, StateEntry};
+use super::question_model::{Question, QuestionAt, QuestionKind, StateEntry};
 use super::reader::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};

@@ -11,7 +11,7 @@ impl Reader {
         &mut self,
         value: &Value,
         constraints: &[Value],
-    ) -> (Vec<usize>, Vec<super::model::Question>) {
+    ) -> (Vec<usize>, Vec<super::question_model::Question>) {
         let Some(fields) = object(value, "find", &mut self.diag) else {
             return (Vec::new(), Vec::new());
         };

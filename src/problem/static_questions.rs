@@ -4,7 +4,7 @@
 //! when the question is answered, where the friction sites are known.
 
 use super::json::{check_keys, key_path, number, object, string};
-use super::model::QuestionKind;
+use super::question_model::QuestionKind;
 use super::reader::Reader;
 use serde_json::Value;
 

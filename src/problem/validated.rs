@@ -4,9 +4,10 @@
 
 use super::impact::Impact;
 use super::model::{
-    Body, BodyId, Constant, Constraint, Coordinate, Dimension, Joint, Load, PointDef, Question,
+    Body, BodyId, Constant, Constraint, Coordinate, Dimension, Joint, Load, PointDef,
     SimulateSettings, Speed, VectorExpr,
 };
+use super::question_model::Question;
 use crate::symbolic::{Expr, Symbol};
 
 /// A validated problem.
