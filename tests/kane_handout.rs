@@ -88,18 +88,25 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
     let forces = [
         "F_{1} = -\\frac{L_{1} g}{2} (m_{1} + 2 m_{2}) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}",
         "F_{2} = -\\frac{L_{2} g m_{2}}{2} s_{12}",
-        "F^{*}_{2} = -\\frac{L_{2} m_{2}}{6} (2 L_{2} + 3 L_{1} c_{2}) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2}",
         "F_{3} = F^{O}_{x}",
         "F_{4} = F^{O}_{y} - g (m_{1} + m_{2})",
     ];
     for f in forces {
         assert!(step5.contains(&shown(f)), "missing {f}\n{step5}");
     }
+    // F_2* body by body: B alone moves with u_2, its dot products multiplied out along b̂
+    // (v_2^{B*} = (L2/2) b_x, ω_2^B = b_z), then the term found by hand above.
+    let inertia_2 = "\\begin{aligned} F^{*}_{2} &= F^{*}_{2,B} \\\\ F^{*}_{2,B} &= \\mathbf{v}^{B^*}_{2} \\cdot \\mathbf{R}^{*}_{B} + \\boldsymbol{\\omega}^{B}_{2} \\cdot \\mathbf{T}^{*}_{B} \\\\ &= \\frac{L_{2}}{2}\\, \\left(";
+    assert!(step5.contains(inertia_2), "F_2* written out\n{step5}");
+    let by_hand = "&= -\\frac{L_{2} m_{2}}{6} (2 L_{2} + 3 L_{1} c_{2}) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} \\end{aligned}";
+    assert!(step5.contains(by_hand), "F_2* as by hand\n{step5}");
+    assert!(step5.contains(&format!("(along }} {b_x}, {b_z}\\text{{)}}")));
     // In the order a textbook gives them: F_r, then F_r*, then the sum.
     for r in 1..=4 {
         let active = step5.find(&format!("$$\nF_{{{r}}} = ")).expect("F_r");
         let inertia = step5
             .find(&format!("$$\nF^{{*}}_{{{r}}} = "))
+            .or_else(|| step5.find(&format!("\\begin{{aligned}} F^{{*}}_{{{r}}} &= ")))
             .expect("F_r*");
         let sum = step5[inertia..].find("Their sum").expect("the sum") + inertia;
         assert!(active < inertia && inertia < sum, "r = {r}");

@@ -26,6 +26,7 @@ mod independent;
 mod initial_state;
 mod kane;
 mod kane_bodies;
+mod kane_dots;
 mod kane_theory;
 mod kinematics;
 mod lagrange;

@@ -146,7 +146,12 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             };
             (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
         }
-        if inertia_tex.contains("\\text{") || independent.is_some() {
+        if let Some(products) =
+            super::kane_dots::inertia_dot_products(derivation, r, &inertia_tex, &shown)
+        {
+            // Each body's dot products multiplied out: what a student writes.
+            inertia_tex = products;
+        } else if inertia_tex.contains("\\text{") || independent.is_some() {
             // Each body's contribution apart: what a student sums, where the whole is too
             // long beside the row's sum or is formed with the constrained partial velocities.
             if let Some(by_body) =

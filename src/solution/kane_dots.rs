@@ -1,0 +1,260 @@
+//! Kane's generalized inertia force of one speed as a student multiplies it out: body by
+//! body, `F^*_{r,B} = v^{B*}_r · R^*_B + ω^B_r · T^*_B`, each dot product written as the
+//! products of its components in one frame's unit vectors, then the body's term simplified,
+//! then their sum.
+
+use super::tex::centre_tex;
+use crate::equations::kane::partials;
+use crate::equations::Derivation;
+use crate::mechanics::massless::is_particle;
+use crate::mechanics::{Model, Vector};
+use crate::problem::BodyId;
+use crate::symbolic::collect::latex_collected;
+use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::simplify::simplify;
+use crate::symbolic::{add, Expr, Node, Symbol};
+
+/// The most bodies whose dot products are written out: past three, the products of a
+/// chain's outer bodies run over several lines each, and its rows are read by step 4's
+/// names instead.
+const MOST_BODIES: usize = 3;
+
+/// The most characters of LaTeX one line of products may take: a longer one would stick
+/// out of the page's margin, and the body's term is then written without its products.
+const LONGEST_PRODUCTS: usize = 300;
+
+/// One dot product `a · b` written in one frame: the pairs of components that multiply,
+/// in axis order, and the frame's unit vectors they are along.
+struct DotProduct {
+    /// `(a_i, b_i)` for each axis where neither is zero.
+    pairs: Vec<(Expr, Expr)>,
+    /// The unit vectors of those axes, `\hat{\mathbf{b}}_{x}`.
+    units: Vec<String>,
+}
+
+impl DotProduct {
+    /// `a · b` in whichever of `frames` writes both the shortest.
+    fn shortest(a: &Vector, b: &Vector, frames: &[BodyId], model: &Model) -> DotProduct {
+        let written = |frame: BodyId| {
+            let a = a.components_in(frame, &model.frames).map(|c| simplify(&c));
+            let b = b.components_in(frame, &model.frames).map(|c| simplify(&c));
+            let cost: usize = a.iter().chain(&b).map(|c| latex(c).len()).sum();
+            (cost, frame, a, b)
+        };
+        let (_, frame, a, b) = frames
+            .iter()
+            .map(|&f| written(f))
+            .min_by_key(|(cost, ..)| *cost)
+            .unwrap_or_else(|| written(BodyId::GROUND));
+        let mut pairs = Vec::new();
+        let mut units = Vec::new();
+        for axis in 0..3 {
+            if !a[axis].is_zero() && !b[axis].is_zero() {
+                pairs.push((a[axis].clone(), b[axis].clone()));
+                units.push(latex_unit_vector(model.frames.name(frame), axis as u8));
+            }
+        }
+        DotProduct { pairs, units }
+    }
+
+    /// `Σ a_i b_i` as an expression.
+    fn value(&self) -> Expr {
+        add(self.pairs.iter().map(|(a, b)| a * b))
+    }
+}
+
+/// A factor of a product: in brackets when it is a sum or starts with a sign.
+fn factor_tex(e: &Expr) -> String {
+    let text = latex(e);
+    if matches!(e.node(), Node::Add(_)) || text.starts_with('-') {
+        format!("\\left({text}\\right)")
+    } else {
+        text
+    }
+}
+
+/// The products of dot products, `(a_x)(b_x) + (a_y)(b_y)`, with the unit vectors they
+/// are along said after them: on one line, or one product a line where that is too long.
+/// Empty where a product alone would stick out of the margin.
+fn products_lines(dots: &[&DotProduct]) -> Vec<String> {
+    let terms: Vec<String> = dots
+        .iter()
+        .flat_map(|d| d.pairs.iter())
+        .map(|(a, b)| match a {
+            a if a.is_one() => factor_tex(b),
+            _ => format!("{}\\, {}", factor_tex(a), factor_tex(b)),
+        })
+        .collect();
+    let mut units: Vec<&String> = dots.iter().flat_map(|d| d.units.iter()).collect();
+    units.dedup();
+    let along = units
+        .iter()
+        .map(|u| u.as_str())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let along = format!("\\quad \\text{{(along }} {along}\\text{{)}}");
+    let one_line = format!("&= {} {along}", terms.join(" + "));
+    if one_line.len() <= LONGEST_PRODUCTS {
+        return vec![one_line];
+    }
+    if terms.iter().any(|t| t.len() > LONGEST_PRODUCTS) {
+        return Vec::new();
+    }
+    let mut lines: Vec<String> = terms
+        .iter()
+        .enumerate()
+        .map(|(i, t)| match i {
+            0 => format!("&= {t}"),
+            _ => format!("&\\quad + {t}"),
+        })
+        .collect();
+    if let Some(last) = lines.last_mut() {
+        last.push_str(&format!(" {along}"));
+    }
+    lines
+}
+
+/// The frames a body's products may be written in: its own, its parent's and `N`.
+fn candidate_frames(model: &Model, body: BodyId) -> Vec<BodyId> {
+    let mut frames = vec![model.bodies[body.0].frame, body, BodyId::GROUND];
+    if let Some(parent) = model.frames.info(body).parent {
+        frames.push(parent);
+    }
+    frames.dedup();
+    frames
+}
+
+/// The lines of one body's term of `F^*_r`: its definition with the products written
+/// out, then the term simplified. `None` when the body's partials are both zero.
+fn body_lines(
+    derivation: &Derivation,
+    body: BodyId,
+    r: usize,
+    rates: &[Symbol],
+    shown: &dyn Fn(&Expr) -> Expr,
+) -> Option<(String, Vec<String>)> {
+    let model = &derivation.model;
+    let state = &model.bodies[body.0];
+    let v = partials(&state.center.velocity, rates).swap_remove(r - 1);
+    let w = partials(&state.omega, rates).swap_remove(r - 1);
+    let inertia = derivation.inertia();
+    let particle = is_particle(model, body);
+    let frames = candidate_frames(model, body);
+    let translation = DotProduct::shortest(&v, &inertia.force[body.0], &frames, model);
+    let rotation =
+        (!particle).then(|| DotProduct::shortest(&w, &inertia.torque[body.0], &frames, model));
+    let dots: Vec<&DotProduct> = std::iter::once(&translation).chain(&rotation).collect();
+    let term = shown(&simplify(&add(dots.iter().map(|d| d.value()))));
+    if term.is_zero() {
+        return None;
+    }
+    let symbol = latex_name(model.problem.body_name(body));
+    let name = format!("F^{{*}}_{{{r},{symbol}}}");
+    let mut definition = format!(
+        "\\mathbf{{v}}^{{{}}}_{{{r}}} \\cdot \\mathbf{{R}}^{{*}}_{{{symbol}}}",
+        centre_tex(model, body)
+    );
+    if !particle {
+        definition.push_str(&format!(
+            " + \\boldsymbol{{\\omega}}^{{{symbol}}}_{{{r}}} \\cdot \\mathbf{{T}}^{{*}}_{{{symbol}}}"
+        ));
+    }
+    let mut lines = vec![format!("{name} &= {definition}")];
+    lines.extend(products_lines(&dots));
+    lines.push(format!("&= {}", latex_collected(&term)));
+    Some((name, lines))
+}
+
+/// `F^*_r` of Kane's speed row `r` (1-based) with each body's dot products multiplied out,
+/// as an `aligned` block ending in `whole`'s formula; `None` for more than three bodies,
+/// for speeds combined by dependent-speed weights (written by
+/// [`super::kane_bodies::inertia_by_body`]) and where fewer than one body contributes.
+pub fn inertia_dot_products(
+    derivation: &Derivation,
+    r: usize,
+    whole: &str,
+    shown: &dyn Fn(&Expr) -> Expr,
+) -> Option<String> {
+    let model = &derivation.model;
+    if model.order.len() > MOST_BODIES || derivation.dependent_speeds.is_some() {
+        return None;
+    }
+    let rates = model.problem.speed_symbols(1);
+    if r == 0 || r > rates.len() {
+        return None;
+    }
+    let mut names = Vec::new();
+    let mut lines = Vec::new();
+    for &body in &model.order {
+        if let Some((name, body_lines)) = body_lines(derivation, body, r, &rates, shown) {
+            names.push(name);
+            lines.extend(body_lines);
+        }
+    }
+    if names.is_empty() {
+        return None;
+    }
+    let mut out = vec![format!("F^{{*}}_{{{r}}} &= {}", names.join(" + "))];
+    out.extend(lines);
+    let formula = whole
+        .split_once(" = ")
+        .map(|(_, f)| f)
+        .filter(|_| !whole.contains("\\text{"));
+    if let (Some(formula), true) = (formula, names.len() > 1) {
+        out.push(format!("F^{{*}}_{{{r}}} &= {formula}"));
+    }
+    Some(format!(
+        "\\begin{{aligned}} {} \\end{{aligned}}",
+        out.join(" \\\\ ")
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DotProduct;
+    use crate::equations::kane::partials;
+    use crate::equations::{derive, Method, Request, Rows};
+    use crate::mechanics::model::Form;
+    use crate::symbolic::eval::eval;
+    use crate::symbolic::{add, Expr};
+
+    /// The double pendulum of two uniform rods: body B's part of `F^*_1`, written out by
+    /// hand from `v^{B*}_1 = (L₂/2 + L₁ c₂) b̂_x − L₁ s₂ b̂_y`, `ω^B_1 = b̂_z` and Lagrange's
+    /// `∂T/∂q̇₁` of B alone, equals the sum of the products the handout writes.
+    #[test]
+    fn the_second_rods_products_sum_to_its_term_written_by_hand() {
+        let text = std::fs::read_to_string("problems/double-pendulum-rods.json").unwrap();
+        let problem = crate::problem::load(&text).unwrap();
+        let request = Request {
+            form: Form::Handout,
+            rows: Rows::Formed,
+            states: &[],
+        };
+        let derivation = derive(&problem, Method::Kane, request).unwrap();
+        let model = &derivation.model;
+        let body = model.order[1];
+        let rates = problem.speed_symbols(1);
+        let v = partials(&model.bodies[body.0].center.velocity, &rates).swap_remove(0);
+        let w = partials(&model.bodies[body.0].omega, &rates).swap_remove(0);
+        let inertia = derivation.inertia();
+        let frames = super::candidate_frames(model, body);
+        let sum = add(vec![
+            DotProduct::shortest(&v, &inertia.force[body.0], &frames, model).value(),
+            DotProduct::shortest(&w, &inertia.torque[body.0], &frames, model).value(),
+        ]);
+        let (q2, u1, u2, a1, a2) = (0.4_f64, 1.1, -0.6, 2.0, -3.0);
+        let mut values = model.values_at(0.0, &[0.3, q2], &[u1, u2]);
+        values.set(problem.coordinate_symbol(0, 2), a1);
+        values.set(problem.coordinate_symbol(1, 2), a2);
+        // The problem's L₁, L₂ and m₂.
+        let (l1, l2, m2) = (0.6, 0.4, 0.8);
+        // −∂/∂q̇₁ of B's kinetic energy, differentiated in time, plus ∂T_B/∂q₁ (zero).
+        let (c2, s2) = (q2.cos(), q2.sin());
+        let by_hand = -m2 * (l1 * l1 + l2 * l2 / 3.0 + l1 * l2 * c2) * a1
+            - m2 * (l2 * l2 / 3.0 + l1 * l2 * c2 / 2.0) * a2
+            + m2 * l1 * l2 * s2 * (2.0 * u1 * u2 + u2 * u2) / 2.0;
+        let value = eval(&sum, &values);
+        assert!((value - by_hand).abs() < 1e-12, "{value} vs {by_hand}");
+        assert!(!Expr::is_zero(&sum));
+    }
+}
