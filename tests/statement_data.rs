@@ -103,10 +103,15 @@ fn missing(problem: &Value) -> Vec<String> {
         .map(|c| c.keys().collect())
         .unwrap_or_default();
     let by_symbol = |name: &str| symbols(name).iter().any(|s| stands_alone(&math, s));
-    let given = |name: &str, value: &Value| match value {
+    // A coordinate's value is given by its number: its symbol is in any statement that
+    // names the coordinate. A constant's may be given by its symbol.
+    let given = |name: Option<&str>, value: &Value| match value {
         Value::Number(n) => {
             let v = n.as_f64().unwrap_or(f64::NAN);
-            numbers(v).iter().any(|w| number_alone(&flat, w)) || by_symbol(name)
+            // A zero is given by "at rest", "no", "from rest".
+            v == 0.0
+                || numbers(v).iter().any(|w| number_alone(&flat, w))
+                || name.is_some_and(by_symbol)
         }
         // An expression of constants is given with them (each checked as a constant).
         Value::String(text) => text
@@ -118,7 +123,7 @@ fn missing(problem: &Value) -> Vec<String> {
     };
     let mut out = Vec::new();
     for (name, entry) in problem["constants"].as_object().into_iter().flatten() {
-        if let Some(value) = value_of(entry, "value").filter(|v| !given(name, v)) {
+        if let Some(value) = value_of(entry, "value").filter(|v| !given(Some(name), v)) {
             out.push(format!("{name} = {value}"));
         }
     }
@@ -131,7 +136,7 @@ fn missing(problem: &Value) -> Vec<String> {
             let zero = value.as_f64() == Some(0.0);
             // A rate solved from the constraints is not given.
             let solved = key == "rate" && entry["dependent_rate"] == true;
-            if !zero && !solved && !given(name, &value) {
+            if !zero && !solved && !given(None, &value) {
                 out.push(format!("{name} {key} = {value}"));
             }
         }
@@ -170,4 +175,26 @@ fn every_bundled_statement_gives_every_value_of_its_problem() {
         "not in the statement:\n{}",
         wrong.join("\n")
     );
+}
+
+/// A question whose value is an expression (`x'' + s''`) names its unit: the answer is
+/// printed with it (`1.09091 m/s²`), which the program cannot tell from a sum alone.
+#[test]
+fn every_bundled_question_of_an_expression_names_its_unit() {
+    let mut wrong = Vec::new();
+    for path in all_problems() {
+        let text = std::fs::read_to_string(&path).expect("readable");
+        let problem: Value = serde_json::from_str(&text).expect("json");
+        let questions = problem["find"]["questions"].as_array().cloned();
+        for question in questions.unwrap_or_default() {
+            let Some(value) = question["value"].as_str() else {
+                continue;
+            };
+            let expression = value.contains([' ', '+', '-', '*', '/', '^']);
+            if expression && question.get("unit").is_none() {
+                wrong.push(format!("{}: {value}", path.display()));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "no unit:\n{}", wrong.join("\n"));
 }

@@ -242,6 +242,8 @@ fn small_oscillation(problem: &Problem, check: &Check) -> Option<String> {
             Phrase::Text(text) => {
                 equilibrium.push_str(text.trim_start_matches("about the equilibrium "))
             }
+            // The coordinates after the equilibrium belong to the energies' sentence.
+            Phrase::Coordinate { .. } if !rest.is_empty() => {}
             Phrase::Coordinate { name, order } => {
                 let i = problem.coordinates.iter().position(|c| &c.name == name)?;
                 equilibrium.push_str(&latex(&problem.coordinate_expr(i, *order as u8)));
