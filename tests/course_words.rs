@@ -1,8 +1,9 @@
-//! Every bundled handout, by every method, in the words of a course and with its algebra
-//! finished: no name of the program's own (a generated constraint's `teeth.height`), no
-//! word of its algorithms (pivoting, Newton's iterations, a starting guess, a command
-//! line), no child or parent for the bodies a joint connects, and no s² + c² of one angle
-//! left unsimplified in a sum.
+//! Every bundled handout, by every method and in every format, in the words of a course
+//! and with its algebra finished: no name of the program's own (a generated constraint's
+//! `teeth.height`), no word of its algorithms (pivoting, Newton's iterations, a starting
+//! guess, a command line, a check's tolerance and verdict), no child or parent for the
+//! bodies a joint connects, no s² + c² of one angle left unsimplified in a sum, and a unit
+//! beside every initial value and rate of step 1.
 
 use crate::support::run;
 use std::path::PathBuf;
@@ -24,6 +25,33 @@ const NOT_COURSE_WORDS: [&str; 12] = [
     "of the 2 slowest",
     "iterations;",
 ];
+
+/// What a program's report says and a textbook does not: a check's tolerance and verdict,
+/// one method's numbers beside another's, how many candidates were tried, where a search
+/// or an iteration started, and the algorithms of linear algebra.
+const NOT_TEXTBOOK_WORDS: [&str; 18] = [
+    "tolerance",
+    "Tolerance",
+    "| pass",
+    ">pass<",
+    "& pass",
+    "constraint drift",
+    "agreement between methods",
+    "Candidates not used",
+    "; started from",
+    "As formed, already simplified",
+    "too long to print whole",
+    "the search",
+    "Cramer",
+    "where a pivot",
+    "Hessian",
+    "differs more",
+    "differs most",
+    "What each check compared",
+];
+
+/// The formats a handout is written in.
+const FORMATS: [&str; 3] = ["markdown", "latex", "html"];
 
 /// Every bundled problem (`problems/*.json`; the validation problems, some of which take
 /// minutes a handout, are checked against their references elsewhere).
@@ -124,12 +152,13 @@ fn the_pythagorean_pair_is_found_and_only_it() {
     }
 }
 
-/// Every handout in Markdown, two problems at a time.
+/// Every handout in every format, two at a time.
 #[test]
 fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
     let paths = bundled();
-    let jobs: Vec<(PathBuf, &str)> = (paths.iter())
+    let jobs: Vec<(PathBuf, &str, &str)> = (paths.iter())
         .flat_map(|p| METHODS.iter().map(move |m| (p.clone(), *m)))
+        .flat_map(|(p, m)| FORMATS.iter().map(move |f| (p.clone(), m, *f)))
         .collect();
     let found = std::sync::Mutex::new(Vec::new());
     let next = std::sync::atomic::AtomicUsize::new(0);
@@ -137,7 +166,7 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
         for _ in 0..2 {
             scope.spawn(|| loop {
                 let k = next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
-                let Some((path, method)) = jobs.get(k) else {
+                let Some((path, method, format)) = jobs.get(k) else {
                     break;
                 };
                 let out = run(&[
@@ -146,28 +175,111 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
                     "--method".as_ref(),
                     method.as_ref(),
                     "--format".as_ref(),
-                    "markdown".as_ref(),
+                    format.as_ref(),
                 ]);
                 if !out.status.success() {
                     // A method a problem cannot take is refused; other tests see to it.
                     continue;
                 }
                 let text = String::from_utf8_lossy(&out.stdout);
+                let text = match *format {
+                    "html" => visible(&text),
+                    _ => text.into_owned(),
+                };
                 let name = path.file_stem().unwrap_or_default().to_string_lossy();
                 let mut wrong = found.lock().expect("lock");
-                for word in NOT_COURSE_WORDS {
+                for word in NOT_COURSE_WORDS.iter().chain(&NOT_TEXTBOOK_WORDS) {
                     if let Some(line) = text.lines().find(|l| l.contains(word)) {
-                        wrong.push(format!("{name} ({method}): `{word}` in: {line}"));
+                        let line: String = line.chars().take(200).collect();
+                        wrong.push(format!("{name} ({method}, {format}): `{word}` in: {line}"));
                     }
+                }
+                if *format != "markdown" {
+                    continue;
                 }
                 for line in text.lines() {
                     if let Some(pair) = pythagorean_pair(line) {
                         wrong.push(format!("{name} ({method}): s² + c² left: {pair}"));
                     }
                 }
+                wrong.extend(unitless_rows(&text).map(|row| format!("{name} ({method}): {row}")));
+                if let Some(words) = underscored_words(&text) {
+                    wrong.push(format!(
+                        "{name} ({method}): a name with `_` in words: {words}"
+                    ));
+                }
             });
         }
     });
     let wrong = found.into_inner().expect("lock");
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// The text an HTML page shows: without its style sheet, its script and its tags.
+fn visible(html: &str) -> String {
+    let mut out = String::with_capacity(html.len());
+    let mut rest = html;
+    while let Some(at) = rest.find('<') {
+        out.push_str(&rest[..at]);
+        rest = &rest[at..];
+        // The index just past the tag, or past the whole style sheet or script.
+        let end = match ["<style", "<script"].iter().find(|o| rest.starts_with(**o)) {
+            Some(open) => {
+                let close = format!("</{}>", &open[1..]);
+                rest.find(&close).map(|i| i + close.len())
+            }
+            None => rest.find('>').map(|i| i + 1),
+        };
+        rest = end.map_or("", |end| &rest[end..]);
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Words in math (`\\text{no slip at rear\\_contact}`) with a name's underscore in them:
+/// a course writes "rear contact".
+fn underscored_words(markdown: &str) -> Option<String> {
+    markdown.match_indices("\\text{").find_map(|(at, _)| {
+        let rest = &markdown[at + 6..];
+        let words = &rest[..rest.find('}')?];
+        words.contains("\\_").then(|| words.to_string())
+    })
+}
+
+/// Step 1's coordinate rows whose initial value or rate has no unit: every coordinate is
+/// an angle or a distance, so each carries one (`0.7 rad`, `1 rad/s`).
+fn unitless_rows(markdown: &str) -> impl Iterator<Item = String> + '_ {
+    let table = markdown
+        .find("| Coordinate |")
+        .map_or("", |at| &markdown[at..]);
+    (table.lines().skip(2))
+        .take_while(|l| l.starts_with('|'))
+        .filter(|row| {
+            let cells: Vec<&str> = row.trim_matches('|').split(" | ").collect();
+            let n = cells.len();
+            n < 2 || cells[n - 2..].iter().any(|cell| !has_unit(cell))
+        })
+        .map(|row| format!("a value without its unit in step 1: {row}"))
+}
+
+/// Whether a value cell names its unit after the number: `0.7 rad`, `-2 rad/s (from ...)`.
+fn has_unit(cell: &str) -> bool {
+    let mut words = cell.split_whitespace();
+    words.next().is_some_and(|n| n.parse::<f64>().is_ok())
+        && words
+            .next()
+            .is_some_and(|u| u.starts_with(|c: char| c.is_alphabetic()))
+}
+
+#[test]
+fn a_value_without_its_unit_is_found() {
+    assert!(has_unit("0.7 rad") && has_unit("-0.65053 rad (from the loop's closure)"));
+    assert!(!has_unit("8") && !has_unit("0.829552 (from the constraints)"));
+    let table = "| Coordinate | Unit | Initial value | Initial rate |\n|---|---|---|---|\n| $x$ | m | 0 m | 8 |\n| $y$ | m | 0 m | 1 m/s |\n";
+    assert_eq!(unitless_rows(table).count(), 1);
+    assert!(underscored_words("$\\text{no slip at rear\\_contact}$").is_some());
+    assert!(underscored_words("$\\text{no slip at rear contact} x_{1}$").is_none());
+    let page =
+        "<style>td:first-child { }</style><p class=\"parent\">a <em>b</em></p><script>x</script>c";
+    assert_eq!(visible(page), "a bc");
 }

@@ -49,6 +49,7 @@ mod separation;
 mod slider_friction;
 mod snapshots_by_problem;
 mod speeds;
+mod statement_data;
 mod statics;
 mod statics_explain;
 mod support;

@@ -116,7 +116,8 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
                 moment = moment.plus(&part);
             }
         }
-        let label = format!("reaction at {}", site.name);
+        // The site in words: `rear_contact` is the rear contact.
+        let label = format!("reaction at {}", site.name.replace('_', " "));
         push_pair(
             &mut out,
             site,

@@ -458,28 +458,28 @@ fn matrix() -> MatrixForm {
 
 fn simulation() -> Simulation {
     Simulation {
-        settings: s("5 s, output every 0.01 s, tolerance 1e-9"),
+        settings: MarkupLine::from(s("The equations of step 5 are integrated in time from the initial state of step 1 for 5 s by a fifth-order Runge–Kutta method; the plots show the state every 0.01 s.")),
         checks: vec![
             Check {
                 name: s("energy drift (relative)"),
                 value: s("3.1e-10"),
                 tolerance: s("1e-6"),
                 passed: true,
-                detail: MarkupLine::from(super::markup::literal_with_numbers("the total energy changes by at most 2.3e-10 J (at t = 4.2 s) on an energy scale of 0.74 J")),
+                detail: MarkupLine::from(super::markup::literal_with_numbers("Every force that does work has a potential, so the total energy stays constant: E(t) − E(0) stays below 1e-9 J while 0.74 J is traded between T and V.")),
             },
             Check {
                 name: s("agreement with Kane's method"),
                 value: s("4.4e-15"),
                 tolerance: s("1e-9"),
                 passed: true,
-                detail: MarkupLine::from(super::markup::literal_with_numbers("at 10 states along the run; the largest difference is in q1'' from Kane's method")),
+                detail: MarkupLine::from(super::markup::literal_with_numbers("Newton–Euler and Kane's method give the same second derivatives at every state compared along the motion.")),
             },
             Check {
                 name: s("small-oscillation period, slow mode (s)"),
                 value: s("1.65772"),
                 tolerance: s("1.65772 ± 0.1%"),
                 passed: true,
-                detail: MarkupLine::from(super::markup::literal_with_numbers("the period of a small oscillation of the equations of motion against 2π/ω of the slow mode")),
+                detail: MarkupLine::from(super::markup::literal_with_numbers("Started a little away from its equilibrium, the motion oscillates with the period 2π/ω = 1.65772 s that the linearized equations give.")),
             },
         ],
         plots_in_row: 3,

@@ -76,11 +76,8 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             if let Some(words) = super::question_answers::note(problem, question, answer) {
                 view.note = words;
             }
-            if let Some((left, _)) = answer.residual {
-                view.note = format!(
-                    "Every condition of the steady motion (the second derivatives asked to vanish, and any other) holds there to {}.",
-                    fixed(left)
-                );
+            if answer.residual.is_some() {
+                view.note = "There every condition of the steady motion holds: the second derivatives asked to vanish are zero.".into();
             }
             view
         })
@@ -227,9 +224,9 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
                 ));
             }
             let note = if matches!(question.kind, QuestionKind::Steady { .. }) {
-                "where the search for the steady motion starts; the other values held at the initial ones"
+                "the steady motion nearest these values; the other coordinates and rates as at the start"
             } else {
-                "the other values initial"
+                "the other coordinates and rates as at the start"
             };
             (parts.join(",\\ "), note.into())
         }

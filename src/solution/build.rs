@@ -6,7 +6,7 @@
 
 use super::tex::style_of;
 use crate::equations::Method;
-use crate::problem::{CoordinateKind, Dimension, JointKind, Problem};
+use crate::problem::{Dimension, JointKind, Problem};
 use crate::render::context::{Constant, Coordinate, Named, Plan, Simulation, Solution};
 use crate::render::text::{Markup, MarkupLine, Math};
 use crate::symbolic::format::fixed;
@@ -48,12 +48,10 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         constants: constants(problem),
         plan: Plan::default(),
         simulation: Simulation {
-            settings: format!(
-                "{} s, output every {} s, tolerance {}",
-                fixed(problem.simulate.duration),
-                fixed(problem.simulate.output_step),
-                fixed(problem.simulate.tolerance)
-            ),
+            settings: MarkupLine::from(super::confirmation::integration(
+                problem,
+                &problem.simulate,
+            )),
             ..Simulation::default()
         },
         ..Solution::default()
@@ -96,19 +94,17 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
         .enumerate()
         .map(|(i, c)| {
             let joint = &problem.joints[c.joint];
-            let unit = match (&c.unit, c.kind) {
-                (Some(unit), _) => unit.clone(),
-                (None, CoordinateKind::Angle) => "rad".into(),
-                (None, CoordinateKind::Distance) => String::new(),
-            };
+            let unit = crate::numeric::answers::coordinate_unit(problem, i, 0);
+            let rate_unit = crate::numeric::answers::coordinate_unit(problem, i, 1);
+            let with_unit = super::initial_state::with_unit;
             Coordinate {
                 name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
-                joint: format!("{} ({})", joint.name, joint.kind.name()),
+                joint: format!("{} ({})", joint.name.replace('_', " "), joint.kind.name()),
                 unit_tex: Math::from(crate::render::units::unit_tex(&unit)),
-                initial: fixed(c.initial),
-                initial_rate: fixed(c.rate),
+                initial: with_unit(&fixed(c.initial), &unit),
+                initial_rate: with_unit(&fixed(c.rate), &rate_unit),
             }
         })
         .collect()

@@ -390,7 +390,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
             let name = named.definition_tex.split(" = ").next().unwrap_or_default();
             Named {
                 definition_tex: Math::from(name.to_string()),
-                note: format!("{}; too long to print whole", named.note),
+                note: format!("{}; a long expression, not written out", named.note),
             }
         })
         .collect()

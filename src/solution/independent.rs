@@ -235,7 +235,7 @@ pub fn dependent_speeds(
     if speeds.at_each_state {
         if let Some(head) = paragraphs[0].strip_suffix(':') {
             paragraphs[0] = format!(
-                "{head}. Solved in symbols, the entries of $C = -A_D^{{-1}} A_I$ would run to pages, since the {d} dependent rates are coupled through every constraint; they are named instead, $C_{{sr}}$, and evaluated at each state from $A_D$ (${d} \\times {d}$) and $A_I$ (${d} \\times {i}$), the coefficients of the dependent and the independent rates in the velocity constraints, by elimination where a pivot is a number and Cramer's rule for the rest:",
+                "{head}. Solved in symbols, the entries of $C = -A_D^{{-1}} A_I$ would run to pages, since the {d} dependent rates are coupled through every constraint; they are named instead, $C_{{sr}}$, and evaluated at each state from $A_D$ (${d} \\times {d}$) and $A_I$ (${d} \\times {i}$), the coefficients of the dependent and the independent rates in the velocity constraints, by solving those constraints for the dependent rates:",
                 d = speeds.dependent.len(),
                 i = speeds.independent.len(),
             );

@@ -1,10 +1,10 @@
 //! Step 1's coordinate table at the assembled initial state: a dependent coordinate's
-//! value and a dependent rate as solved from the constraints (the problem's value of a
-//! dependent coordinate is only the guess the solution starts from), a prescribed
-//! coordinate's from its motion, each marked so and beside what the problem gave.
+//! value and a dependent rate as solved from the constraints, a prescribed coordinate's
+//! from its motion, each marked so and with its unit.
 
 use super::pictures::numbers::{Numbers, P3};
 use crate::mechanics::Model;
+use crate::numeric::answers::coordinate_unit;
 use crate::problem::{Coordinate, Dimension, JointKind, Problem};
 use crate::render::context::Coordinate as CoordinateView;
 use crate::symbolic::format::fixed;
@@ -13,52 +13,70 @@ use crate::symbolic::format::fixed;
 const ROUND_OFF: f64 = 1e-12;
 
 /// Rewrites the initial values and rates of `rows` (one per coordinate of `problem`) with
-/// the assembled state `q0`, `rates0`.
+/// the assembled state `q0`, `rates0`, each with its unit.
 pub fn assembled(rows: &mut [CoordinateView], problem: &Problem, q0: &[f64], rates0: &[f64]) {
+    let source = source_of(problem);
     for (i, (row, c)) in rows.iter_mut().zip(&problem.coordinates).enumerate() {
         if let Some(&q) = q0.get(i) {
-            let word = if c.motion.is_some() {
-                "given"
-            } else {
-                "started from"
-            };
-            row.initial = value_cell(q, c.initial, solved(c, c.dependent), word);
+            let unit = coordinate_unit(problem, i, 0);
+            row.initial = value_cell(q, c.initial, solved(c, c.dependent, source), &unit);
         }
         if let Some(&rate) = rates0.get(i) {
-            let how = solved(c, c.dependent || c.dependent_rate);
-            row.initial_rate = value_cell(rate, c.rate, how, "given");
+            let unit = coordinate_unit(problem, i, 1);
+            let how = solved(c, c.dependent || c.dependent_rate, source);
+            row.initial_rate = value_cell(rate, c.rate, how, &unit);
         }
     }
 }
 
+/// What a dependent value satisfies: the loop's closure when the constraints are closures
+/// only, else the constraints.
+fn source_of(problem: &Problem) -> &'static str {
+    if problem.constraints.is_empty() && !problem.closures.is_empty() {
+        "from the loop's closure"
+    } else {
+        "from the constraints"
+    }
+}
+
 /// Where a value comes from when not from the problem: a prescribed coordinate's motion,
-/// or the constraints (a coordinate or rate marked dependent, or one the assembly moved).
-fn solved(c: &Coordinate, dependent: bool) -> Option<&'static str> {
+/// or what it satisfies (a coordinate or rate marked dependent, or one the assembly moved).
+fn solved(c: &Coordinate, dependent: bool, source: &'static str) -> Option<&'static str> {
     if c.motion.is_some() {
         Some("from its motion")
     } else if dependent {
-        Some("from the constraints")
+        Some(source)
     } else {
         None
     }
 }
 
-/// `-0.65053 (from the constraints; started from -0.65)`, or the value alone when the problem's
-/// value stands. A value the assembly moved is from the constraints even when unmarked;
-/// a rate the problem left at 0 has no "given" beside it.
-fn value_cell(value: f64, given: f64, how: Option<&str>, word: &str) -> String {
+/// `-0.65053 rad (from the loop's closure)`, or the value and its unit alone when the
+/// problem's value stands. A value the assembly moved is from the constraints even when
+/// unmarked.
+fn value_cell(value: f64, given: f64, how: Option<&str>, unit: &str) -> String {
     // Round-off of a zero (1e-16 m/s) is the zero it is.
-    let shown = fixed(if value.abs() < ROUND_OFF { 0.0 } else { value });
-    let written = fixed(given);
+    let shown = with_unit(
+        &fixed(if value.abs() < ROUND_OFF { 0.0 } else { value }),
+        unit,
+    );
     let how = match how {
         Some(how) => how,
-        None if written == shown => return shown,
+        None if fixed(given) == fixed(value) || (value.abs() < ROUND_OFF && given == 0.0) => {
+            return shown
+        }
         None => "from the constraints",
     };
-    if written == shown || (given == 0.0 && word == "given") {
-        return format!("{shown} ({how})");
+    format!("{shown} ({how})")
+}
+
+/// `0.7 rad`, `1 rad/s`: a value and its unit as step 1's tables print them.
+pub fn with_unit(value: &str, unit: &str) -> String {
+    if unit.is_empty() {
+        value.to_string()
+    } else {
+        format!("{value} {}", unit.replace("^2", "²"))
     }
-    format!("{shown} ({how}; {word} {written})")
 }
 
 /// For each revolute closure of a plane loop whose two bodies hang from revolute joints
@@ -86,7 +104,7 @@ pub fn branches(model: &Model, q0: &[f64], rates0: &[f64]) -> Vec<String> {
             let r = numbers.vector(&model.sites.get(n + k)?.point.position);
             let side = side_of(at(p), at(q), r)?;
             Some(format!(
-                "The loop closes at {} {side} the line from {} to {}: the assembly nearest the starting values (its mirror image across that line meets the constraints too).",
+                "The loop closes at {} {side} the line from {} to {}: the assembly drawn in the figure (its mirror image across that line closes the loop too).",
                 closure.name, problem.joints[p].name, problem.joints[q].name
             ))
         })

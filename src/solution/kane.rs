@@ -256,7 +256,7 @@ pub fn generalized_forces(
     let written = |e: &Expr, name: String| {
         let text = crate::symbolic::collect::latex_collected(e);
         if text.len() > LONG_EQUATION {
-            format!("{name}\\ \\text{{too long to print whole}}")
+            format!("{name}\\ \\text{{(a long expression, not written out)}}")
         } else if sum_written_out && text.len() > LONGEST_BESIDE_THE_SUM {
             format!("{name}\\ \\text{{collected in their sum below}}")
         } else {

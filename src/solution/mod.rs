@@ -13,6 +13,7 @@ pub mod answers;
 mod auxiliary;
 mod build;
 mod closure_loops;
+mod confirmation;
 mod constrained;
 pub mod derived;
 mod direction;

@@ -64,7 +64,7 @@ pub fn note(_problem: &Problem, question: &Question, answer: &Answer) -> Option<
         return None;
     };
     Some(match holds(lhs, rhs) {
-        true => "The two sides agree to 1e-6: the identity holds at this state.".into(),
+        true => "The two sides are equal: the identity holds at this state.".into(),
         false => "The two sides differ: the identity does not hold at this state.".into(),
     })
 }

@@ -262,7 +262,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     if grouped_tex == simplified_tex && simplified_note.is_empty() {
         // Formed already in its simplest form: written once.
         grouped_tex.clear();
-        simplified_note = "As formed, already simplified:".into();
+        simplified_note = "Already in its simplest form:".into();
     }
     EquationView {
         label,

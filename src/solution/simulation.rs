@@ -36,19 +36,26 @@ pub fn simulation(
             .map(|s| s.describe(problem))
             .collect();
         notes.push(format!(
-            "Friction changed its mode during the run (each instant located to the integration tolerance): {}.",
+            "Friction changes its mode during the motion: {}.",
             lines.join("; ")
         ));
     }
     solution.simulation.note = notes.join(" ");
     solution.simulation.checks = checks
         .iter()
-        .map(|c| Check {
-            name: c.name().to_string(),
-            value: fixed(c.value),
-            tolerance: fixed(c.tolerance),
-            passed: c.passed,
-            detail: detail(problem, c),
+        .map(|c| {
+            // Said as physics, in the course's words; the check's own sentence only where
+            // the motion does not hold it.
+            let own = detail(problem, c);
+            let method = solution.method.as_str();
+            let said = super::confirmation::sentence(problem, method, c, trajectory, own.as_str());
+            Check {
+                name: c.name().to_string(),
+                value: fixed(c.value),
+                tolerance: fixed(c.tolerance),
+                passed: c.passed,
+                detail: MarkupLine::from(said),
+            }
         })
         .collect();
     // One quantity per axis: angles and distances on plots of their own.

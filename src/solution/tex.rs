@@ -236,10 +236,14 @@ pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
 pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
     use crate::mechanics::sites::SiteKind;
     let problem = model.problem;
+    // A site's name in words: `rear_contact` is the rear contact.
     let text = |words: String| {
         format!(
             "\\text{{{}}}",
-            crate::render::escape::latex(&words, crate::render::escape::Lines::One)
+            crate::render::escape::latex(
+                &words.replace('_', " "),
+                crate::render::escape::Lines::One
+            )
         )
     };
     let sticking = model

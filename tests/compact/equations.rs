@@ -323,7 +323,7 @@ fn a_row_formed_already_simplified_is_written_once() {
     let markdown = explain("two-mass-spring-damper", "markdown");
     // Cart A along N.y, by hand: the track's reaction holds its weight, F_y - m1 g = 0, as
     // formed; written once, not again as "simplified".
-    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAs formed, already simplified:\n\n$$\nF^{\\mathrm{trackA}}_{y} - g m_{1} = 0\n$$\n\n**4.";
+    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAlready in its simplest form:\n\n$$\nF^{\\mathrm{trackA}}_{y} - g m_{1} = 0\n$$\n\n**4.";
     assert!(markdown.contains(row), "row 3 is not written once");
 }
 

@@ -95,7 +95,7 @@ fn simplified_equations(markdown: &str) -> Vec<String> {
         let introduced = [
             "Simplified",
             "With the coefficients",
-            "As formed, already simplified",
+            "Already in its simplest form",
         ];
         if introduced.iter().any(|s| line.starts_with(s)) {
             let body = lines[i + 1..]

@@ -366,8 +366,8 @@ pub struct Kinematics {
 /// Step 6: the simulation that confirms the equations.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Simulation {
-    /// How it was run, e.g. `5 s, output every 0.01 s, tolerance 1e-9` (plain text).
-    pub settings: String,
+    /// How the equations are integrated: the state, the start, the time, the step (markup).
+    pub settings: MarkupLine,
     /// The checks.
     pub checks: Vec<Check>,
     /// The plots.

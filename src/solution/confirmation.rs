@@ -1,0 +1,301 @@
+//! Step 6 in a course's words: how the equations of motion are integrated, and for each
+//! confirmation check one sentence of physics saying what confirms the motion (energy
+//! constant where only conservative forces do work, the constraints held, the other methods'
+//! second derivatives the same). The checks are computed as before; only their report is
+//! written here, without their thresholds or a verdict.
+
+use crate::equations::Method;
+use crate::numeric::checks::{Check, CheckKind, Phrase};
+use crate::numeric::Trajectory;
+use crate::problem::{Problem, SimulateSettings};
+use crate::render::markup::literal_with_numbers;
+use crate::symbolic::format::fixed;
+use crate::symbolic::print::latex;
+
+/// How step 6 integrates the equations: the first-order system, its state, where it starts,
+/// over how long, the integration method and its step, as markup.
+pub fn integration(problem: &Problem, settings: &SimulateSettings) -> String {
+    let coordinates = &problem.coordinates;
+    // A prescribed coordinate follows its motion; a dependent one, or a dependent rate,
+    // follows from the constraints: neither is integrated.
+    let free = |i: &usize| coordinates[*i].motion.is_none() && !coordinates[*i].dependent;
+    let names = |order: u8, rate: bool| -> Vec<String> {
+        (0..coordinates.len())
+            .filter(free)
+            .filter(|&i| !(rate && coordinates[i].dependent_rate))
+            .map(|i| latex(&problem.coordinate_expr(i, order)))
+            .collect()
+    };
+    let state = [names(0, false), names(1, true)].concat().join(", ");
+    let follows = (coordinates.iter()).any(|c| c.dependent || c.dependent_rate);
+    let dependent = match (follows, coordinates.iter().any(|c| c.motion.is_some())) {
+        (true, true) => {
+            " The driven coordinates follow their prescribed motion, and the \
+                         dependent coordinates and rates are solved from the constraints at \
+                         every step."
+        }
+        (true, false) => {
+            " The dependent coordinates and rates are solved from the \
+                          constraints at every step."
+        }
+        (false, true) => " The driven coordinates follow their prescribed motion.",
+        (false, false) => "",
+    };
+    if state.is_empty() {
+        return format!(
+            "The drive prescribes the motion: at every instant the coordinates and rates \
+             follow from it and the constraints, over {} s; the plots show them every {} s.",
+            num(settings.duration),
+            num(settings.output_step),
+        );
+    }
+    let start = if problem.impact.is_some() {
+        "the state just after the impact"
+    } else {
+        "the initial state of step 1"
+    };
+    format!(
+        "The equations of step 5 are integrated in time as first-order equations in the \
+         state $({state})$: the rates are the derivatives of the coordinates, and step 5 \
+         gives the derivatives of the rates.{dependent} The motion starts from {start} and \
+         is followed for {} s by a fifth-order Runge–Kutta method (Dormand–Prince), whose \
+         step adapts so that each step's estimated error stays below {}; the plots show \
+         the state every {} s.",
+        num(settings.duration),
+        power_of_ten(settings.tolerance),
+        num(settings.output_step),
+    )
+}
+
+/// One sentence of physics for `check`, as markup: what must hold and how the motion
+/// holds it, with the numbers a student can read off the plots. `fallback` is the check's
+/// own sentence, said when the motion does not hold it.
+pub fn sentence(
+    problem: &Problem,
+    method: &str,
+    check: &Check,
+    trajectory: &Trajectory,
+    fallback: &str,
+) -> String {
+    let said = match check.kind {
+        CheckKind::EnergyConservation => energy_constant(trajectory, check.passed),
+        CheckKind::EnergyNeverRises => energy_falls(trajectory, check),
+        CheckKind::MethodAgreement if check.passed => Some(same_accelerations(problem, method)),
+        CheckKind::SmallOscillationPeriod if check.passed => small_oscillation(problem, check),
+        CheckKind::ConstraintDrift if check.passed => Some(
+            "The constraints of step 1 hold along the whole motion: the dependent coordinates \
+             and rates, solved from them at every step, keep each one satisfied to rounding."
+                .to_string(),
+        ),
+        CheckKind::EnergyBalanceWithDrives if check.passed => Some(
+            "The drives do work on the system, so its total energy changes by exactly that \
+             work: $E(t) - E(0)$ equals the work of the drives' forces over the same time, \
+             all along the motion."
+                .to_string(),
+        ),
+        CheckKind::ContactsPress if check.passed => Some(
+            "Every contact presses on its surface along the whole motion (its normal force \
+             stays positive), so the body never leaves it and the contact's equations hold \
+             throughout."
+                .to_string(),
+        ),
+        _ => None,
+    };
+    said.unwrap_or_else(|| fallback.to_string())
+}
+
+/// `x` as [`fixed`] writes it, as markup: a number in scientific notation as math.
+fn num(x: f64) -> String {
+    literal_with_numbers(&fixed(x))
+}
+
+/// `10^{-9}` for 1e-9; the next power of ten above any other `x`, as math.
+fn power_of_ten(x: f64) -> String {
+    if !(x.is_finite() && x > 0.0) {
+        return format!("${}$", fixed(x));
+    }
+    let exponent = x.log10().ceil() as i32;
+    match exponent {
+        0 => "$1$".into(),
+        1 => "$10$".into(),
+        e => format!("$10^{{{e}}}$"),
+    }
+}
+
+/// The energy's columns: E relative to the start, and the largest energy the motion trades
+/// between T and V (the larger of the largest T and the range of V).
+fn energies(trajectory: &Trajectory) -> Option<(Vec<(f64, f64)>, f64)> {
+    let total = trajectory.series("total")?;
+    let kinetic = trajectory.series("kinetic")?;
+    let potential = trajectory.series("potential")?;
+    let largest_t = kinetic.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+    let (low, high) = (potential.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+        (l.min(p.1), h.max(p.1))
+    });
+    let first = total.first()?.1;
+    let change = total.iter().map(|&(t, e)| (t, e - first)).collect();
+    Some((change, largest_t.max(high - low)))
+}
+
+/// Energy constant: every force that does work has a potential.
+fn energy_constant(trajectory: &Trajectory, held: bool) -> Option<String> {
+    let (change, traded) = energies(trajectory)?;
+    let (at, worst) = (change.iter()).fold((0.0, 0.0f64), |best, &(t, d)| {
+        if d.abs() > best.1 {
+            (t, d.abs())
+        } else {
+            best
+        }
+    });
+    let head = "Every force that does work on the system has a potential, so its total energy \
+                $E = T + V$ must stay constant";
+    if !held {
+        return Some(format!(
+            "{head}; along the motion, however, $E(t) - E(0)$ reaches {} J at $t = {}$ s, \
+             against {} J traded between $T$ and $V$: these equations do not keep it.",
+            num(worst),
+            fixed(at),
+            num(traded)
+        ));
+    }
+    let bound = if worst == 0.0 {
+        "is 0 at every instant plotted".to_string()
+    } else {
+        format!("stays below {} J in size", power_of_ten(worst))
+    };
+    Some(format!(
+        "{head}: along the motion $E(t) - E(0)$ {bound}, while {} J is traded between $T$ \
+         and $V$ (the energy plots).",
+        num(traded)
+    ))
+}
+
+/// Energy never rising: dampers and sliding friction only take energy away.
+fn energy_falls(trajectory: &Trajectory, check: &Check) -> Option<String> {
+    let (change, _) = energies(trajectory)?;
+    let who = if check.detail().starts_with("sliding friction") {
+        "Sliding friction only takes energy away"
+    } else {
+        "The dampers only take energy away"
+    };
+    let (end_t, end) = *change.last()?;
+    let mut lowest = 0.0f64;
+    let (mut rise, mut at) = (0.0f64, 0.0);
+    for &(t, e) in &change {
+        lowest = lowest.min(e);
+        if e - lowest > rise {
+            (rise, at) = (e - lowest, t);
+        }
+    }
+    let how = if check.passed {
+        "it never rises".to_string()
+    } else {
+        format!(
+            "yet it rises by {} J at $t = {}$ s, which no damper or friction can do",
+            num(rise),
+            fixed(at)
+        )
+    };
+    let change = if end < 0.0 {
+        format!("fallen by {} J", num(-end))
+    } else {
+        format!("changed by {} J", num(end))
+    };
+    Some(format!(
+        "{who}, so the total energy $E = T + V$ can only fall: by $t = {}$ s it has \
+         {change}, and {how} (the energy plots).",
+        fixed(end_t),
+    ))
+}
+
+/// The other methods' second derivatives, the same as this method's.
+fn same_accelerations(problem: &Problem, method: &str) -> String {
+    let others: Vec<&str> = (Method::ALL.iter())
+        .map(|m| m.title())
+        .filter(|title| *title != method)
+        .collect();
+    let names = match others.split_last() {
+        Some((last, [])) => last.to_string(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+        None => String::new(),
+    };
+    let accelerations: Vec<String> = (0..problem.coordinates.len())
+        .map(|i| latex(&problem.coordinate_expr(i, 2)))
+        .collect();
+    format!(
+        "The equations of motion derived by {names} give the same \
+         ${}$ at every state compared along the motion.",
+        accelerations.join(", ")
+    )
+}
+
+/// The small oscillation about an equilibrium has the period the linearized equations
+/// give: the equilibrium from the check's own words, the period from its numbers.
+fn small_oscillation(problem: &Problem, check: &Check) -> Option<String> {
+    let mut equilibrium = String::new();
+    let mut rest = String::new();
+    for phrase in &check.phrases {
+        match phrase {
+            Phrase::Text(text) if !rest.is_empty() || text.starts_with(", the energies") => {
+                rest.push_str(text)
+            }
+            Phrase::Text(text) => {
+                equilibrium.push_str(text.trim_start_matches("about the equilibrium "))
+            }
+            // The coordinates after the equilibrium belong to the energies' sentence.
+            Phrase::Coordinate { .. } if !rest.is_empty() => {}
+            Phrase::Coordinate { name, order } => {
+                let i = problem.coordinates.iter().position(|c| &c.name == name)?;
+                equilibrium.push_str(&latex(&problem.coordinate_expr(i, *order as u8)));
+            }
+        }
+    }
+    let period = number_after(&rest, "T = 2π/ω = ")?;
+    let omega = number_after(&rest, "ω = ")?;
+    let mode = match number_after(&rest, "mode ").as_deref() {
+        Some("1") => " along its slowest mode",
+        Some("2") => " along its second mode",
+        Some("3") => " along its third mode",
+        Some(_) => " along one of its modes",
+        None => "",
+    };
+    Some(format!(
+        "Started a little away from the equilibrium ${equilibrium}${mode}, the motion \
+         oscillates with the period that the linearized equations give, \
+         $T = 2\\pi/\\omega = {period}$ s ($\\omega = {omega}$ rad/s)."
+    ))
+}
+
+/// The number that follows `label` in `text`, as written.
+fn number_after(text: &str, label: &str) -> Option<String> {
+    let at = text.find(label)? + label.len();
+    let number: String = text[at..]
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | '-'))
+        .collect();
+    (!number.is_empty()).then_some(number)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn powers_of_ten_round_up() {
+        assert_eq!(power_of_ten(1e-9), "$10^{-9}$");
+        assert_eq!(power_of_ten(2.3e-10), "$10^{-9}$");
+        assert_eq!(power_of_ten(0.5), "$1$");
+        assert_eq!(power_of_ten(7.0), "$10$");
+    }
+
+    #[test]
+    fn a_number_is_read_after_its_label() {
+        let text = ", so ω = 9.86414 rad/s and T = 2π/ω = 0.636972 s; measures T = 0.64 s";
+        assert_eq!(number_after(text, "ω = ").as_deref(), Some("9.86414"));
+        assert_eq!(
+            number_after(text, "T = 2π/ω = ").as_deref(),
+            Some("0.636972")
+        );
+        assert_eq!(number_after(text, "x = "), None);
+    }
+}
