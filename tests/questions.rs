@@ -44,7 +44,7 @@ fn the_disc_in_the_cylinder_oscillates_with_the_closed_form_period() {
     let expected = 2.0 * PI * (3.0 * (big_r - r) / (2.0 * g)).sqrt();
     for method in Method::ALL {
         let found = answers(&problem("disc-in-cylinder"), method);
-        let period = &found[1];
+        let period = &found[3];
         assert_eq!(period["kind"], "period", "{}", method.name());
         assert_eq!(period["unit"], "s");
         close(
@@ -63,6 +63,29 @@ fn the_disc_in_the_cylinder_oscillates_with_the_closed_form_period() {
         "{answers}"
     );
     assert!(answers.contains("16.35\\ \\mathrm{s^{-2}}"), "{answers}");
+    // The bottom put in by the constraint, in symbols: y = −(R − r), so that
+    // ω² = g m/(R − r) / (3m/2) = 2g/(3(R − r)) and T = 2π √(3(R − r)/(2g)).
+    assert!(answers.contains("y = -\\left(R - r\\right)"), "{answers}");
+    assert!(answers.contains("\\frac{2 g}{3 (R - r)}"), "{answers}");
+    assert!(!answers.contains("Kane's equation"), "{answers}");
+    assert!(!answers.contains("the other values initial"), "{answers}");
+    // Every acceleration asked: ÿ and θ̈ as well as ẍ, against energy: with the disc at
+    // angle φ from the bottom, x = (R − r) sin φ, y = −(R − r) cos φ, released from rest,
+    // φ̈ = −2g sin φ/(3(R − r)); ÿ = (R − r) sin φ φ̈, θ̈ = −(R − r) φ̈/r.
+    let found = crate::questions::answers(&problem("disc-in-cylinder"), Method::MotionLaw);
+    let phi = (0.05f64 / (big_r - r)).asin();
+    let phidd = -2.0 * g * phi.sin() / (3.0 * (big_r - r));
+    let xdd = (big_r - r) * phi.cos() * phidd;
+    let ydd = (big_r - r) * phi.sin() * phidd;
+    let thdd = -(big_r - r) * phidd / r;
+    for (k, expected) in [(0, xdd), (1, ydd), (2, thdd)] {
+        close(
+            found[k]["value"].as_f64().expect("value"),
+            expected,
+            1e-6,
+            "acceleration",
+        );
+    }
 }
 
 /// A particle pendulum with a torsional spring at the pivot, about θ = 0:
@@ -170,6 +193,7 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
     let i1 = it + m * h * h;
     let (a, b, c) = (i1 * theta.cos(), -i3 * spin, m * g * h);
     let slow = (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+    let fast = (-b + (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
     let nutation = (slow * slow * theta.sin().powi(2)
         + ((i3 * spin - 2.0 * i1 * slow * theta.cos()) / i1).powi(2))
     .sqrt();
@@ -184,7 +208,22 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
             1e-9,
             "right side",
         );
-        let period = &found[4];
+        // The force at the tip, both precessions: m h sin θ Ω² toward the axis, m g up.
+        for (k, rate) in [(3, slow), (4, fast)] {
+            let force = &found[k]["components"];
+            let (x, y) = (
+                force["x"].as_f64().expect("x"),
+                force["y"].as_f64().expect("y"),
+            );
+            let horizontal = x.hypot(y);
+            close(
+                horizontal,
+                m * h * theta.sin() * rate * rate,
+                1e-6,
+                "toward the axis",
+            );
+        }
+        let period = &found[5];
         assert_eq!(period["kind"], "period");
         close(
             period["angular_frequency"].as_f64().expect("w"),
@@ -206,9 +245,18 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
         "\\ddot{\\theta} = 0",
         "is not zero at $\\theta = 0.5$",
         "the identity holds",
+        // In the statement's names, the spin put in, to the stated form.
+        "\\dot{\\phi} = \\omega_{3} - \\Omega c_{\\theta}",
+        "g h m = \\Omega (I_{3} \\omega_{3} - I_{1} \\Omega c_{\\theta})",
+        // The rates from the quadratic, in closed form, not by a search.
+        "\\mp \\sqrt{I_{3}^{2} \\omega_{3}^{2} - 4 I_{1} g h m c_{\\theta}}",
+        &format!("{slow:.5}"),
+        "yes, the motion is steady",
     ] {
         assert!(answers.contains(needed), "{needed}: {answers}");
     }
+    assert!(!answers.contains("search"), "{answers}");
+    assert!(!answers.contains("holds there to"), "{answers}");
 }
 
 /// The numbered items of a statement: lines that start with `N.`.

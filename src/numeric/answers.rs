@@ -260,7 +260,7 @@ pub fn answer_in(
             period = Some(found);
             vec![(Quantity::Named("T".into()), value)]
         }
-        QuestionKind::Show { lhs, rhs, text } => {
+        QuestionKind::Show { lhs, rhs, text, .. } => {
             let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
             let (l, r) = (eval(lhs, &v), eval(rhs, &v));
             if !(l.is_finite() && r.is_finite()) {

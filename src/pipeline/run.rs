@@ -188,7 +188,16 @@ fn frames(problem: &Problem, worked: &Worked) -> Result<Vec<Frame>, Error> {
 fn period_system(problem: &Problem, answers: &[Answer]) -> Option<LinearSystem> {
     let one_left =
         (answers.iter().filter_map(|a| a.period.as_ref())).any(|p| p.coordinates.len() == 1);
-    if !one_left {
+    // A second rate asked of a problem with one degree of freedom: q̈ = b/a in symbols.
+    let acceleration = (problem.questions.iter()).any(|q| {
+        matches!(&q.kind, QuestionKind::Value { expression, .. }
+            if matches!(expression.as_symbol(), Some(crate::symbolic::Symbol::Coord(_, 2))))
+    });
+    let free = (problem.coordinates.iter())
+        .filter(|c| !c.dependent && !c.dependent_rate && c.motion.is_none())
+        .count();
+    let one_freedom = free == 1;
+    if !(one_left || acceleration && one_freedom) {
         return None;
     }
     let in_rates = problem.without_speeds();

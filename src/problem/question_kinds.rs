@@ -57,7 +57,56 @@ impl Reader {
         };
         let lhs = side(self, lhs)?;
         let rhs = side(self, rhs)?;
-        Some(QuestionKind::Show { lhs, rhs, text })
+        Some(QuestionKind::Show {
+            lhs,
+            rhs,
+            text,
+            names: Vec::new(),
+        })
+    }
+
+    /// `"where": { "Omega": "psi'", "I1": "It + m*h^2" }` of a `show`: the names its
+    /// statement gives quantities of the identity, each an expression of the problem's
+    /// names. The handout derives the identity in these names.
+    pub(super) fn show_names(
+        &mut self,
+        kind: QuestionKind,
+        value: &Value,
+        path: &str,
+    ) -> Option<QuestionKind> {
+        let fields = object(value, path, &mut self.diag)?;
+        let mut names = Vec::new();
+        for (name, v) in fields {
+            let npath = key_path(path, name);
+            let fresh = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
+                && name.chars().all(|c| c.is_ascii_alphanumeric())
+                && self.names.kind_of(name).is_none();
+            if !fresh {
+                self.diag.hint(
+                    &npath,
+                    format!("`{name}` is not a new name"),
+                    "name each quantity with letters and digits not used by the problem, e.g. \"Omega\"",
+                );
+                return None;
+            }
+            let e = expressions::scalar(
+                v,
+                &npath,
+                &self.names,
+                Context::question("a quantity the identity names"),
+                &mut self.diag,
+            )?;
+            names.push((name.clone(), e));
+        }
+        match kind {
+            QuestionKind::Show { lhs, rhs, text, .. } => Some(QuestionKind::Show {
+                lhs,
+                rhs,
+                text,
+                names,
+            }),
+            other => Some(other),
+        }
     }
 
     /// `"item": N`, a positive whole number.

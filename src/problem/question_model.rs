@@ -84,6 +84,9 @@ pub enum QuestionKind {
         rhs: Expr,
         /// The identity as written.
         text: String,
+        /// The statement's names for quantities of the identity (`where`), each with what
+        /// it stands for: `Omega` for `psi'`, `I1` for `It + m*h^2`.
+        names: Vec<(String, Expr)>,
     },
     /// The values of a constant (an index into `Problem::constants`) between `from` and
     /// `to` where the question's state changes stability (a bicycle's weave and capsize

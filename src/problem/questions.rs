@@ -24,7 +24,7 @@ use super::reader::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 17] = [
+const KEYS: [&str; 18] = [
     "text",
     "value",
     "reaction",
@@ -42,6 +42,7 @@ const KEYS: [&str; 17] = [
     "impending",
     "in",
     "stability",
+    "where",
 ];
 
 /// The keys that say what a question asks for; a question has exactly one.
@@ -155,6 +156,14 @@ impl Reader {
             None => None,
         };
         let kind = self.asked(asked[0], fields, path, (reactions, constraints))?;
+        if fields.contains_key("where") && !matches!(kind, QuestionKind::Show { .. }) {
+            self.diag.hint(
+                &key_path(path, "where"),
+                "only a `show` names the quantities of its identity",
+                "remove `where`, or ask a `show`",
+            );
+            return None;
+        }
         let frame = match fields.get("in") {
             Some(v) => Some(self.answer_frame(v, &key_path(path, "in"), &kind)?),
             None => None,
@@ -240,7 +249,13 @@ impl Reader {
             }
             "steady" => self.steady(&fields["steady"], &key_path(path, "steady"))?,
             "period" => self.period(&fields["period"], &key_path(path, "period"))?,
-            "show" => self.show(&fields["show"], &key_path(path, "show"))?,
+            "show" => {
+                let kind = self.show(&fields["show"], &key_path(path, "show"))?;
+                match fields.get("where") {
+                    Some(v) => self.show_names(kind, v, &key_path(path, "where"))?,
+                    None => kind,
+                }
+            }
             "stability" => self.stability(&fields["stability"], &key_path(path, "stability"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };

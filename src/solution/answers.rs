@@ -26,11 +26,13 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 view.at_tex = Math::from(found_state_tex(problem, answer));
             }
             if let Some(site) = question.at.switch {
-                view.at_tex = Math::from(time_tex(answer.time));
-                view.at_note = format!(
-                    "{}, simulated from the initial state",
-                    switch_note(problem, site)
-                );
+                // The instant itself asked: its value is the answer, not where it is asked.
+                let instant = matches!(&question.kind, QuestionKind::Value { expression, .. }
+                    if matches!(expression.as_symbol(), Some(crate::symbolic::Symbol::Time)));
+                if !instant {
+                    view.at_tex = Math::from(time_tex(answer.time));
+                }
+                view.at_note = switch_note(problem, site);
             }
             // A reaction's moment about a free axis is no unknown at all: exactly 0, and not
             // worth a line; the note says the others are zero.
@@ -55,15 +57,21 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             view.values_tex = shown
                 .iter()
                 .map(|(found, value)| value_tex(problem, question, answer, found, *value))
-                .map(Math::from).collect();
+                .map(Math::from)
+                .collect();
             if question.kind.is_static() {
                 if super::static_answers::slip_speed(answer).is_none() {
                     view.at_note = "at rest, every friction site sticking".into();
                 }
-                let index = problem.questions.iter().position(|q| std::ptr::eq(q, question));
+                let index = problem
+                    .questions
+                    .iter()
+                    .position(|q| std::ptr::eq(q, question));
                 view.values_tex = vec![
                     Math::from(super::static_answers::value_tex(problem, question, answer)),
-                    Math::from(super::static_answers::verdict_tex(problem, question, answer)),
+                    Math::from(super::static_answers::verdict_tex(
+                        problem, question, answer,
+                    )),
                 ];
                 view.note = index
                     .map(|i| super::static_answers::note(problem, i, answers))
@@ -76,12 +84,25 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             if let Some(words) = super::question_answers::note(problem, question, answer) {
                 view.note = words;
             }
-            if answer.residual.is_some() {
-                view.note = "There every condition of the steady motion holds: the second derivatives asked to vanish are zero.".into();
+            if let Some((left, _)) = answer.residual {
+                view.note = steady_check(question, left);
             }
             view
         })
-        .collect()
+        .collect::<Vec<AnswerView>>()
+        .into_iter()
+        .enumerate()
+        .fold(Vec::new(), |mut done, (i, mut view)| {
+            // A second steady motion held at the same values is another state.
+            let steady = matches!(problem.questions[i].kind, QuestionKind::Steady { .. });
+            let seen = (done.iter())
+                .any(|v: &AnswerView| v.at_tex == view.at_tex && v.at_note == view.at_note);
+            if steady && seen {
+                view.at_note = format!("{}, as above", view.at_note);
+            }
+            done.push(view);
+            done
+        })
 }
 
 /// The questions without answers, for the student's handout.
@@ -213,8 +234,16 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
         None if *after_impact => (time_tex, "just after the impact".into()),
         None => (time_tex, "the initial state".into()),
         Some(entries) => {
-            let mut parts = vec![time_tex];
-            for (e, value) in entries {
+            let steady = match &question.kind {
+                QuestionKind::Steady { unknowns, .. } => unknowns.as_slice(),
+                _ => &[],
+            };
+            // The time only where it matters (a forced or time-varying problem).
+            let mut parts = Vec::new();
+            if t != 0.0 || entries.iter().all(|(e, _)| steady.contains(e)) {
+                parts.push(time_tex);
+            }
+            for (e, value) in entries.iter().filter(|(e, _)| !steady.contains(e)) {
                 let symbol = latex(&problem.coordinate_expr(e.coordinate, e.order));
                 let unit = coordinate_unit(problem, e.coordinate, e.order);
                 parts.push(format!(
@@ -223,14 +252,32 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
                     unit_tex(&unit)
                 ));
             }
-            let note = if matches!(question.kind, QuestionKind::Steady { .. }) {
-                "the steady motion nearest these values; the other coordinates and rates as at the start"
-            } else {
-                "the other coordinates and rates as at the start"
+            let note = match question.kind {
+                QuestionKind::Steady { .. } => "held",
+                QuestionKind::Period { .. } => "the state the small oscillations are about",
+                _ => "the other coordinates and rates as at the start",
             };
             (parts.join(",\\ "), note.into())
         }
     }
+}
+
+/// The check of a steady motion found: the second rates asked to vanish do, to `left`.
+fn steady_check(question: &Question, left: f64) -> String {
+    let QuestionKind::Steady { zero, .. } = &question.kind else {
+        return String::new();
+    };
+    let second: Vec<String> = (zero.iter())
+        .filter(|(e, _)| matches!(e.as_symbol(), Some(crate::symbolic::Symbol::Coord(_, 2))))
+        .map(|(e, _)| latex(e))
+        .collect();
+    if second.is_empty() || left > 1e-6 {
+        return String::new();
+    }
+    format!(
+        "Check: with these rates the equations of step 5 give ${} = 0$: yes, the motion is steady.",
+        second.join(" = ")
+    )
 }
 
 /// `t = 1.2\ \mathrm{s}`.

@@ -36,19 +36,57 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let style = super::tex::style_of(problem).with_coordinates(&angles);
     let solved = |i: usize| worked.show_accelerations.get(i).and_then(Option::as_deref);
     crate::symbolic::style::with_style(style, || {
-        let questions = problem.questions.iter().zip(answers).zip(views);
+        let questions = problem.questions.iter().zip(answers).zip(views.iter_mut());
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
-                    period_steps(problem, worked.period_system.as_ref(), answer)
+                    period_steps(derivation, worked.period_system.as_ref(), answer)
                 }
-                QuestionKind::Show { lhs, rhs, .. } => {
-                    show_steps(problem, derivation, solved(i), answer, (lhs, rhs))
+                QuestionKind::Show {
+                    lhs, rhs, names, ..
+                } => {
+                    let shown = (lhs, rhs, names.as_slice());
+                    let steps = show_steps(problem, derivation, solved(i), answer, shown);
+                    check_last(view, steps)
+                }
+                QuestionKind::Steady { .. } => {
+                    let v = values(problem, answer, &[]);
+                    let mut steps = super::named_identity::steady_steps(problem, i, answer, &v)
+                        .unwrap_or_default();
+                    // The check that the motion is steady ends the answer.
+                    if !view.note.is_empty() {
+                        steps.push(step(std::mem::take(&mut view.note), String::new()));
+                    }
+                    steps
+                }
+                QuestionKind::Value { .. } => {
+                    super::closed_form::value_steps(worked, question, answer).unwrap_or_default()
                 }
                 _ => Vec::new(),
             };
         }
     });
+    super::constancy::attach(worked, answers, views);
+}
+
+/// A derived `show` checked after its derivation: the values of its two sides and
+/// whether they agree move from the head of the answer to its last step.
+fn check_last(view: &mut AnswerView, mut steps: Vec<AnswerStep>) -> Vec<AnswerStep> {
+    let derived = steps
+        .first()
+        .is_some_and(|s| s.text.as_str().starts_with("Equation"));
+    if !derived || view.values_tex.is_empty() {
+        return steps;
+    }
+    let sides: Vec<&str> = view.values_tex.iter().map(|m| m.as_str()).collect();
+    steps.push(step(
+        "Checked with the numbers of this state:",
+        sides.join(", \\qquad "),
+    ));
+    steps.push(step(view.note.clone(), String::new()));
+    view.values_tex.clear();
+    view.note.clear();
+    steps
 }
 
 fn step(text: impl Into<String>, math: impl Into<String>) -> AnswerStep {
@@ -93,7 +131,7 @@ fn zero_at_state(problem: &Problem, answer: &Answer, order: u8) -> Vec<Symbol> {
 }
 
 fn period_steps(
-    problem: &Problem,
+    derivation: &Derivation,
     kane: Option<&LinearSystem>,
     answer: &Answer,
 ) -> Vec<AnswerStep> {
@@ -102,7 +140,7 @@ fn period_steps(
     };
     let mut steps = match found.coordinates.as_slice() {
         [one] => kane
-            .and_then(|system| one_freedom(problem, system, answer, one, found.natural))
+            .and_then(|system| one_freedom(derivation, system, answer, one, found.natural))
             .unwrap_or_default(),
         _ => Vec::new(),
     };
@@ -142,12 +180,13 @@ fn period_steps(
 /// it (`system`: Kane's equations of the problem in its rates); `None` where that equation
 /// is not at hand or does not give the linearization's `natural` frequency.
 fn one_freedom(
-    problem: &Problem,
+    derivation: &Derivation,
     system: &LinearSystem,
     answer: &Answer,
     name: &str,
     natural: f64,
 ) -> Option<Vec<AnswerStep>> {
+    let problem = derivation.model.problem;
     let k = problem.coordinates.iter().position(|c| c.name == name)?;
     let qdd = problem.coordinate_symbol(k, 2);
     let row = (0..system.b.len()).find(|&i| {
@@ -199,22 +238,41 @@ fn one_freedom(
         .iter()
         .map(|s| format!("{} = 0", latex(&Expr::sym(s.clone()))))
         .collect();
-    let others = others_tex(problem, answer, &omega2, k);
+    let settled = super::settled::on_constraints(derivation, answer, &omega2, k, value);
+    let (m1, k1) = match &settled {
+        Some(s) => (s.apply(&m0), s.apply(&k0)),
+        None => (m0.clone(), k0.clone()),
+    };
+    let others = match &settled {
+        Some(s) => format!(", with {},", s.sentence()),
+        None => others_tex(problem, answer, &omega2, k),
+    };
+    let words = match derivation.method {
+        crate::equations::Method::Kane => "Kane's equation for its speed",
+        _ => "the equations of step 5 with the reactions and the other accelerations eliminated",
+    };
+    let period = simplify(&(&m1 / &k1));
     Some(vec![
         step(
-            format!("One degree of freedom is left, ${q_tex}$. Its equation of motion free of the reactions (Kane's equation for its speed) is"),
+            format!("One degree of freedom is left, ${q_tex}$. Its equation of motion free of the reactions ({words}) is"),
             format!("{} \\, {qdd_tex} = {}", factored(m), latex_collected(f)),
         ),
         step(
             format!(
-                "Linearized about the state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$: $M$ is the coefficient of ${qdd_tex}$ and $K$ minus the derivative of the right side with respect to ${q_tex}$, both with {} there:",
-                if zero_tex.is_empty() { "the values".to_string() } else { format!("${}$", zero_tex.join(",\\ ")) }
+                "Linearized about the state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$: $M$ is the coefficient of ${qdd_tex}$ and $K$ minus the derivative of the right side with respect to ${q_tex}$, both with {} there{}:",
+                if zero_tex.is_empty() { "the values".to_string() } else { format!("${}$", zero_tex.join(",\\ ")) },
+                others.trim_end_matches(',')
             ),
-            format!("M = {}, \\qquad K = {}", factored(&m0), factored(&k0)),
+            format!("M = {}, \\qquad K = {}", factored(&m1), factored(&k1)),
         ),
         step(
-            format!("so that{others}"),
-            format!("\\omega^{{2}} = \\frac{{K}}{{M}} = {} = {}\\ \\mathrm{{s^{{-2}}}}", ratio_tex(&k0, &m0), number(value)),
+            "so that".to_string(),
+            format!(
+                "\\omega^{{2}} = \\frac{{K}}{{M}} = {} = {}\\ \\mathrm{{s^{{-2}}}}, \\qquad T = 2\\pi \\sqrt{{\\frac{{M}}{{K}}}} = 2\\pi \\sqrt{{{}}}",
+                ratio_tex(&k1, &m1),
+                number(value),
+                factored(&period)
+            ),
         ),
     ])
 }
@@ -301,10 +359,10 @@ fn show_steps(
     derivation: &Derivation,
     accelerations: Option<&[f64]>,
     answer: &Answer,
-    (lhs, rhs): (&Expr, &Expr),
+    (lhs, rhs, names): (&Expr, &Expr, &[(String, Expr)]),
 ) -> Vec<AnswerStep> {
-    let identity =
-        accelerations.and_then(|a| derive_identity(problem, derivation, a, answer, (lhs, rhs)));
+    let identity = accelerations
+        .and_then(|a| derive_identity(problem, derivation, a, answer, (lhs, rhs, names)));
     identity.unwrap_or_else(|| {
         vec![step(
             "No single equation of step 5 reduces to this identity once the conditions of the state are put in; it is checked at the state only.",
@@ -320,7 +378,7 @@ fn derive_identity(
     derivation: &Derivation,
     accelerations: &[f64],
     answer: &Answer,
-    (lhs, rhs): (&Expr, &Expr),
+    (lhs, rhs, names): (&Expr, &Expr, &[(String, Expr)]),
 ) -> Option<Vec<AnswerStep>> {
     let system = &derivation.system;
     let v = values(problem, answer, accelerations);
@@ -346,14 +404,17 @@ fn derive_identity(
         if !proportional(problem, &v, (&reduced, &difference), &zero) {
             continue;
         }
-        return Some(identity_steps(
-            problem,
-            answer,
-            i,
-            (&row, &reduced),
-            &zero,
-            (lhs, rhs),
-        ));
+        let mut steps = identity_steps(problem, answer, i, (&row, &reduced), &zero);
+        let (_, rest) = split_factor(&reduced);
+        let named = super::named_identity::Renaming::of(names)
+            .and_then(|r| super::named_identity::identity_steps(&r, &rest, (lhs, rhs), &v));
+        steps.extend(named.unwrap_or_else(|| {
+            vec![step(
+                "which, the terms rearranged, is the identity asked, its right side multiplied out:",
+                format!("{} = {}", latex(lhs), latex(rhs)),
+            )]
+        }));
+        return Some(steps);
     }
     None
 }
@@ -411,7 +472,6 @@ fn identity_steps(
     i: usize,
     (row, reduced): (&Expr, &Expr),
     zero: &[Symbol],
-    (lhs, rhs): (&Expr, &Expr),
 ) -> Vec<AnswerStep> {
     let present: Vec<String> = zero
         .iter()
@@ -452,9 +512,5 @@ fn identity_steps(
             format!("{} = 0", latex_collected(&rest)),
         ));
     }
-    steps.push(step(
-        "which, the terms rearranged, is the identity asked, its right side multiplied out:",
-        format!("{} = {}", latex(lhs), latex(rhs)),
-    ));
     steps
 }

@@ -47,6 +47,7 @@ pub fn attach(
     let style = super::tex::style_of(problem).with_coordinates(&angles);
     crate::symbolic::style::with_style(style, || {
         let mut done: Vec<usize> = Vec::new();
+        let mut sliding: Option<(String, Closed)> = None;
         for (i, question) in problem.questions.iter().enumerate() {
             let Some(site) = question.at.switch else {
                 continue;
@@ -71,9 +72,59 @@ pub fn attach(
             if !steps.is_empty() {
                 views[i].steps = steps;
                 done.push(site);
+                sliding.get_or_insert((name.to_string(), closed));
             }
         }
+        if let Some((site, closed)) = sliding {
+            constant_at_start(problem, answers, views, &site, &closed);
+        }
     });
+}
+
+/// A second rate asked at the start, while the site slides: constant until it rolls, in
+/// closed form, where that agrees with the answer.
+fn constant_at_start(
+    problem: &Problem,
+    answers: &[Answer],
+    views: &mut [AnswerView],
+    site: &str,
+    closed: &Closed,
+) {
+    let v = initial_values(problem);
+    for (i, question) in problem.questions.iter().enumerate() {
+        let QuestionKind::Value { expression, .. } = &question.kind else {
+            continue;
+        };
+        if question.at != crate::problem::QuestionAt::default() {
+            continue;
+        }
+        let Some(k) =
+            (0..problem.coordinates.len()).find(|&k| *expression == problem.coordinate_expr(k, 2))
+        else {
+            continue;
+        };
+        let asked = answers
+            .get(i)
+            .and_then(|a| a.values.first())
+            .map_or(f64::NAN, |x| x.1);
+        if !agrees(eval(&closed.accelerations[k], &v), asked) {
+            continue;
+        }
+        let unit = crate::numeric::answers::coordinate_unit(problem, k, 2);
+        views[i].steps.push(step(
+            format!(
+                "While the contact at {} slides it stays constant (the sliding law in place of the no-slip row, worked out below):",
+                site.replace('_', "\\_")
+            ),
+            format!(
+                "{} = {} = {}{}",
+                latex(&problem.coordinate_expr(k, 2)),
+                latex(&closed.accelerations[k]),
+                super::answers::number_tex(asked),
+                super::answers::unit_tex(&unit)
+            ),
+        ));
+    }
 }
 
 fn step(text: impl Into<String>, math: impl Into<String>) -> AnswerStep {
@@ -273,6 +324,10 @@ fn steps_for(
                 latex(&closed.instant),
                 number(instant)
             ),
+        ));
+        steps.push(step(
+            "The simulation from the initial state reaches the same instant.",
+            String::new(),
         ));
     }
     if let QuestionKind::Value { expression, .. } = &question.kind {
