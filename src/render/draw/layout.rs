@@ -420,7 +420,13 @@ impl Painter {
             return drawn;
         }
         let length = arrow_length(stack);
-        let at = self.beside_bodies(at, u);
+        // A force starts at its point (the pictures' contract); an inertia force, drawn at
+        // the mass centre, may stand beside a bar or another arrow.
+        let at = if arrow.kind == super::scene::Kind::Inertia {
+            self.beside_bodies(at, u)
+        } else {
+            at
+        };
         drawn.tail = at;
         let tip = p2add(at, p2scale(u, length));
         self.lines.push((at, tip));

@@ -1,5 +1,5 @@
-//! A force along a bar is drawn beside the bar, not inside it: an arrow whose line would
-//! run within a body's outline (a rod's stroke, a block's polygon, a disc) is moved across
+//! An inertia force along a bar is drawn beside the bar, not inside it: an arrow whose
+//! line would run within a body's outline (a rod's stroke, a block's polygon, a disc) is moved across
 //! its own line, just clear of the body, keeping its direction and its place along the
 //! line. Likewise an arrow that would lie on an earlier one of another direction (a top's
 //! Ḣ on its m a*): arrows of one line stay stacked by length.
