@@ -2,7 +2,8 @@
 //! playwright-core, `tests/browser/handouts.js`): no text shows a literal `^`, `_` or `ˆ`;
 //! the dots of q̇ and q̈ are drawn, above their letters, unclipped, inked, inside fractions
 //! and brackets; the bowling ball's sliding friction points against the slip; no two force
-//! arrows of a free body lie on top of each other. Skipped with a notice when Chromium,
+//! arrows of a free body lie on top of each other; unit vectors stand clear of bodies and
+//! pins; no two labels overlap. Skipped with a notice when Chromium,
 //! node or `tests/browser/node_modules` is missing and `CI` is unset.
 
 use crate::support::{all_problems, problem, run, METHODS};
@@ -222,5 +223,43 @@ fn no_two_force_arrows_of_a_free_body_lie_on_top_of_each_other() {
         }
     }
     node("arrows", &pictures_drawn);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every configuration `draw` writes (and so every handout's step 1): each frame's unit
+/// vectors clear of every body's outline and every pin.
+#[test]
+fn unit_vectors_stand_clear_of_bodies_and_pins() {
+    if !ready("triads") {
+        return;
+    }
+    let dir = scratch("triads");
+    let mut configurations = Vec::new();
+    for file in problems() {
+        configurations.extend(
+            pictures(&file, METHODS[0], &dir, false)
+                .into_iter()
+                .filter(|p| p.ends_with("configuration.svg")),
+        );
+    }
+    node("triads", &configurations);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// No label of a configuration or a free body lies on another (a weight's "m g" on a
+/// reaction's name, a top's Ḣ on its m a*).
+#[test]
+fn no_two_labels_of_a_picture_overlap() {
+    if !ready("labels") {
+        return;
+    }
+    let dir = scratch("labels");
+    let mut drawn = Vec::new();
+    for file in problems() {
+        for method in METHODS {
+            drawn.extend(pictures(&file, method, &dir, false));
+        }
+    }
+    node("labels", &drawn);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -133,10 +133,9 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
             let row = &model.constraints.rows[r];
             // A prescribed coordinate's row is enforced by its drive, at its joint.
             let label = match row.origin {
-                crate::mechanics::constraints::RowOrigin::Prescribed(i) => format!(
-                    "drive at {} ({} prescribed)",
-                    problem.joints[problem.coordinates[i].joint].name, problem.coordinates[i].name
-                ),
+                crate::mechanics::constraints::RowOrigin::Prescribed(i) => {
+                    drive_label(problem, &problem.coordinates[i])
+                }
                 _ => format!("enforcing {}", row.name),
             };
             joint_load(
@@ -163,6 +162,25 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
         )?;
     }
     Ok(out)
+}
+
+/// A drive named as a course names it: the motor's torque that holds an angle (or turns it
+/// as prescribed), the actuator's force that holds a distance.
+fn drive_label(
+    problem: &crate::problem::Problem,
+    coordinate: &crate::problem::Coordinate,
+) -> String {
+    let (agent, at) = match coordinate.kind {
+        crate::problem::CoordinateKind::Angle => ("the motor's torque", "at"),
+        crate::problem::CoordinateKind::Distance => ("the actuator's force", "along"),
+    };
+    let joint = &problem.joints[coordinate.joint].name;
+    let name = &coordinate.name;
+    if coordinate.held {
+        format!("{agent} {at} {joint} holding {name}")
+    } else {
+        format!("{agent} {at} {joint} driving {name} as prescribed")
+    }
 }
 
 /// A force through a site's point and a couple on the child, and their opposites on the parent.

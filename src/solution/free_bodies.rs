@@ -1,6 +1,7 @@
 //! Step 2's free bodies: each with the forces and couples that act on it from outside, the
 //! distance forces, and the inertia forces and torques of its bodies.
 
+use super::direction::simplest_tex;
 use super::tex::{bodies_name, bodies_tex, initial_sign, vector_tex};
 use crate::equations::Derivation;
 use crate::mechanics::massless::is_particle;
@@ -68,7 +69,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                         let at = Vector::new(action.body, offset.clone())
                             .map(|e| roots_of_squares(e, &sign));
                         let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
-                        (vector_tex(model, &force), acts_at(model, action, &at))
+                        (simplest_tex(model, &force), acts_at(model, action, &at))
                     }
                     ActionKind::Couple { torque } => {
                         (vector_tex(model, torque), "\\text{couple}".into())

@@ -283,10 +283,14 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
         },
         Some(RowOrigin::Position(_)) => text(format!("position constraint {name}")),
         Some(RowOrigin::Velocity(_)) => text(format!("velocity constraint {name}")),
-        Some(RowOrigin::Prescribed(c)) if *c < problem.coordinates.len() => format!(
-            "\\text{{prescribed motion of }} {}",
-            latex(&problem.coordinate_expr(*c, 0))
-        ),
+        Some(RowOrigin::Prescribed(c)) if *c < problem.coordinates.len() => {
+            let symbol = latex(&problem.coordinate_expr(*c, 0));
+            if problem.coordinates[*c].held {
+                format!("{symbol} \\text{{ held by its support}}")
+            } else {
+                format!("\\text{{prescribed motion of }} {symbol}")
+            }
+        }
         Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
         None => text(format!("constraint {name}")),
     }

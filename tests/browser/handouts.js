@@ -8,6 +8,9 @@
 //                             (a unit vector on the page, y downward) in every picture of FILE
 //   arrows FILE...            no two force arrows of a picture lie on top of each other: their
 //                             heads apart, and two along one line of different lengths
+//   triads SVG...             each frame's unit vectors (g.triad) clear of every body's
+//                             outline and every pin
+//   labels SVG...             no label of a picture overlaps another
 'use strict';
 const { chromium } = require('playwright-core');
 
@@ -232,9 +235,85 @@ async function arrows(files) {
   check(total > files.length, `${files.length} pictures hold ${total} force arrows`);
 }
 
+// Each triad's box (its arrows and heads, in the picture's units) against the bodies'
+// outlines (a grid of points in the box tried on every body's strokes: a large disc may
+// hold its unit vectors inside) and the pins (the joints' circles).
+function measureTriads() {
+  const out = [];
+  for (const svg of document.querySelectorAll('svg')) {
+    const title = (svg.querySelector('title') || {}).textContent || '';
+    const shapes = [...svg.querySelectorAll('g.body path, g.body circle, g.body ellipse, g.body polygon')];
+    const pins = [...svg.querySelectorAll('circle.joint')];
+    svg.querySelectorAll('g.triad').forEach((g, k) => {
+      const b = g.getBBox();
+      const hits = [];
+      const point = svg.createSVGPoint();
+      for (let i = 0; i <= 12; i += 1) {
+        for (let j = 0; j <= 12; j += 1) {
+          point.x = b.x + (b.width * i) / 12;
+          point.y = b.y + (b.height * j) / 12;
+          for (const s of shapes) {
+            // Into the shape's own units (a disc seen obliquely is a turned ellipse).
+            const local = point.matrixTransform(s.getScreenCTM().inverse().multiply(svg.getScreenCTM()));
+            if (s.isPointInStroke(local)) {
+              hits.push(`${s.parentNode.id} at ${point.x.toFixed(1)},${point.y.toFixed(1)}`);
+            }
+          }
+        }
+      }
+      for (const c of pins) {
+        const [cx, cy, r] = ['cx', 'cy', 'r'].map((a) => Number(c.getAttribute(a)));
+        const nx = Math.max(b.x, Math.min(cx, b.x + b.width));
+        const ny = Math.max(b.y, Math.min(cy, b.y + b.height));
+        if (Math.hypot(nx - cx, ny - cy) < r + 1) hits.push(c.id);
+      }
+      out.push({ title, k, hits: [...new Set(hits)].slice(0, 4) });
+    });
+  }
+  return out;
+}
+
+async function triads(files) {
+  let total = 0;
+  await each(files, async (page, file) => {
+    for (const t of await page.evaluate(measureTriads)) {
+      total += 1;
+      check(t.hits.length === 0, `${file} (${t.title}): unit vectors ${t.k} clear of bodies and pins (${t.hits.join(', ')})`);
+    }
+  });
+  check(total > 0, `${files.length} pictures hold ${total} triads`);
+}
+
+// Every label of a picture (its <text> but the caption) against every other.
+async function labels(files) {
+  await each(files, async (page, file) => {
+    const found = await page.evaluate(() => {
+      const out = [];
+      for (const svg of document.querySelectorAll('svg')) {
+        const title = (svg.querySelector('title') || {}).textContent || '';
+        const boxes = [...svg.querySelectorAll('g.labels text')].slice(1).map((t) => {
+          const r = t.getBoundingClientRect();
+          return { text: t.textContent, box: [r.left, r.top, r.right, r.bottom] };
+        });
+        for (let i = 0; i < boxes.length; i += 1) {
+          for (let j = i + 1; j < boxes.length; j += 1) {
+            const [p, q] = [boxes[i].box, boxes[j].box];
+            // Glyph boxes hold the line's leading: 2 pixels of it may touch.
+            if (p[0] < q[2] - 2 && q[0] < p[2] - 2 && p[1] < q[3] - 2 && q[1] < p[3] - 2) {
+              out.push(`${title}: ${boxes[i].text} on ${boxes[j].text}`);
+            }
+          }
+        }
+      }
+      return out;
+    });
+    check(found.length === 0, `${file}: no two labels overlap (${found.join(' | ')})`);
+  });
+}
+
 (async () => {
   const [mode, ...args] = process.argv.slice(2);
-  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows };
+  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels };
   if (!modes[mode]) { console.log(`unknown mode ${mode}`); process.exit(2); }
   try {
     await modes[mode](args);

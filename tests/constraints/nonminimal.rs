@@ -391,7 +391,9 @@ fn the_energy_check_does_not_fail_where_a_constraint_does_work() {
 #[test]
 fn a_drive_is_written_as_the_statement_names_it() {
     let markdown = crate::support::explain("slider-crank-driven", &["--method", "motion-law"]);
-    assert!(markdown.contains("drive at O (q1 prescribed) | $\\tau \\hat{\\mathbf{n}}_{z}$"));
+    assert!(markdown.contains(
+        "the motor's torque at O driving q1 as prescribed | $\\tau \\hat{\\mathbf{n}}_{z}$"
+    ));
     assert!(!markdown.contains("Q_{q_{1}}"), "the drive is still Q");
     let mut problem: serde_json::Value = serde_json::from_str(
         &std::fs::read_to_string(crate::support::problem("slider-crank-driven")).expect("read"),

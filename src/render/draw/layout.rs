@@ -13,6 +13,9 @@ use super::strokes::{
     p2unit, stack_of, tips_of, wrap, zigzag,
 };
 
+mod beside;
+mod triad;
+
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
 
@@ -28,6 +31,8 @@ pub(super) struct Painter {
     /// Labels wait until every line of their panel is drawn, so that none crosses them;
     /// an arrow's label knows its arrow (an index into the picture's arrows).
     pending: Vec<(P2, f64, Label, Ink, Option<usize>)>,
+    /// The straight arrows drawn so far, tail to tip: a later one keeps off their lines.
+    lines: Vec<(P2, P2)>,
 }
 
 impl Painter {
@@ -359,27 +364,6 @@ impl Painter {
         }
     }
 
-    fn triad(&mut self, origin: Option<P3>, axes: &[(P3, Label)]) {
-        let o = match origin {
-            Some(p) => self.at(p),
-            None => [
-                self.shift[0] + 22.0,
-                self.obstacles.bounds.map_or(300.0, |b| b.1[1]) - 30.0,
-            ],
-        };
-        for (direction, label) in axes {
-            let d = p2scale(self.projection.direction(*direction), 1.0 / self.scale);
-            if p2norm(d) < 0.2 {
-                continue;
-            }
-            let tip = p2add(o, p2scale(d, 24.0));
-            let u = p2scale(d, 1.0 / p2norm(d));
-            self.stroke(vec![o, tip], 0.9, Ink::Grey, None, false);
-            self.stroke(head(tip, u).to_vec(), 0.6, Ink::Grey, Some(Ink::Grey), true);
-            self.label(tip, u[1].atan2(u[0]), label, Ink::Grey);
-        }
-    }
-
     /// An arrow of fixed size at its point; `stack` counts arrows already drawn there along
     /// its line; `index` is its place among the picture's arrows.
     fn arrow(&mut self, arrow: &Arrow, planar: bool, stack: usize, index: usize) -> DrawnArrow {
@@ -436,7 +420,16 @@ impl Painter {
             return drawn;
         }
         let length = arrow_length(stack);
+        // A force starts at its point (the pictures' contract); an inertia force, drawn at
+        // the mass centre, may stand beside a bar or another arrow.
+        let at = if arrow.kind == super::scene::Kind::Inertia {
+            self.beside_bodies(at, u)
+        } else {
+            at
+        };
+        drawn.tail = at;
         let tip = p2add(at, p2scale(u, length));
+        self.lines.push((at, tip));
         drawn.head = tip;
         drawn.heads.push(head(tip, u));
         if arrow.couple {
@@ -500,6 +493,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         scale,
         body_prefix: "",
         pending: Vec::new(),
+        lines: Vec::new(),
     };
     for shape in scene
         .shapes

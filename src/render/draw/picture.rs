@@ -208,6 +208,11 @@ pub enum Item {
     },
     /// Text: a label centered at `at`.
     Text { at: P2, label: Label, ink: Ink },
+    /// Items drawn as one, such as a frame's unit vectors: a group of that class.
+    Group {
+        class: &'static str,
+        items: Vec<Item>,
+    },
     /// One body's items, as a group with its id (`body-A`) and its shape's kind.
     Body {
         id: String,

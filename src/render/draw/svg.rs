@@ -276,6 +276,11 @@ fn item(out: &mut String, item: &Item) {
         }
         Item::Text { .. } => text(out, item, true),
         Item::Body { .. } => body(out, item, ""),
+        Item::Group { class, items } => {
+            let _ = writeln!(out, "<g class=\"{class}\">");
+            shapes(out, items, "");
+            out.push_str("</g>\n");
+        }
     }
 }
 

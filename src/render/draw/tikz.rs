@@ -118,7 +118,7 @@ fn item(out: &mut String, item: &Item, unit: f64) {
                 num(*ry)
             );
         }
-        Item::Body { items, .. } => {
+        Item::Body { items, .. } | Item::Group { items, .. } => {
             for inner in items {
                 self::item(out, inner, unit);
             }
