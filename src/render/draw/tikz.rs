@@ -25,7 +25,7 @@ pub const BESIDE_A_TABLE: Size = Size {
 /// height, so that a one- or two-body handout keeps within four pages.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 200.0,
+    height: 170.0,
 };
 
 /// The largest the system's picture may be at the head of a handout: under half the text's
