@@ -15,10 +15,10 @@ pub const PAGE_SIZE: Size = Size {
     height: 380.0,
 };
 /// The largest a free body may be beside its table of forces: the handout puts it above
-/// the table when the two are wider than the line.
+/// the table when the two are wider than the line, so no higher than there.
 pub const BESIDE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 300.0,
+    height: 180.0,
 };
 
 /// The largest a free body may be above its table of forces: about a quarter of the text's
