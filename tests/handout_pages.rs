@@ -13,6 +13,18 @@ use std::sync::Mutex;
 /// The most pages a one- or two-body handout may take.
 const MOST_PAGES: usize = 4;
 
+/// Handouts still longer than [`MOST_PAGES`], each with the most pages it may take until
+/// its text is made shorter: none may grow, and none other may pass 4 pages.
+const STILL_LONGER: &[(&str, usize)] = &[];
+
+/// The most pages the handout `name` may take.
+fn most_pages(name: &str) -> usize {
+    STILL_LONGER
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map_or(MOST_PAGES, |&(_, pages)| pages)
+}
+
 /// The widest a line may stick out of the margin, in points: a display's last symbol.
 const MOST_OVERFULL: f64 = 4.0;
 
@@ -147,7 +159,7 @@ fn one_and_two_body_handouts_fit_four_pages_within_the_margins() {
                 let mut found = faults.lock().expect("faults");
                 if m.pages == 0 {
                     found.push(format!("{name}: pdflatex wrote no pages"));
-                } else if m.pages > MOST_PAGES {
+                } else if m.pages > most_pages(&name) {
                     found.push(format!("{name}: {} pages", m.pages));
                 }
                 if m.widest_overfull > MOST_OVERFULL {
