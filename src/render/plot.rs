@@ -336,7 +336,7 @@ pub fn pgfplots(
     // Three or four plots side by side on the page, each with its legend under it, small:
     // the rows of a legend are lower than a second row of plots. The width is the page's
     // to set (`\pgfplotsset{width=…}`), by how many plots share the row.
-    text.push_str("  height=3.3cm, grid=major,\n");
+    text.push_str("  height=2.9cm, grid=major,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
         "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.48)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",

@@ -97,6 +97,7 @@ pub fn sample() -> Solution {
             note: String::new(),
             label: s("1"),
             steps: Vec::new(),
+            blank_lines: 0,
         }],
         statics: None,
     }

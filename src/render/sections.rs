@@ -25,6 +25,9 @@ pub struct AnswerView {
     /// The working that leads to the answer: a derivation of a `show`, ω² = K/M of a
     /// `period`; empty in the student's handout.
     pub steps: Vec<AnswerStep>,
+    /// The student's handout: how many lines the answer takes (a value one, a reaction one
+    /// per component, a steady motion one per unknown), or 0 for a box to work in (a `show`).
+    pub blank_lines: usize,
 }
 
 /// One step of an answer's working: a sentence, then a displayed equation (either may be

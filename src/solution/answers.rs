@@ -4,7 +4,7 @@
 
 use crate::numeric::answers::{coordinate_unit, Answer, Quantity};
 use crate::numeric::system::ReactionColumn;
-use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
+use crate::problem::{Dimension, Problem, Question, QuestionAt, QuestionKind, StateEntry};
 use crate::render::sections::AnswerView;
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::format::fixed;
@@ -167,6 +167,21 @@ fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
         note: String::new(),
         label: String::new(),
         steps: Vec::new(),
+        blank_lines: blank_lines(problem, &question.kind),
+    }
+}
+
+/// The lines a student's answer takes: one a value, one a component of a reaction (two in
+/// a plane, three in space), one an unknown of a steady motion; 0 (a box to work in) for a
+/// derivation.
+fn blank_lines(problem: &Problem, kind: &QuestionKind) -> usize {
+    match kind {
+        QuestionKind::Show { .. } => 0,
+        QuestionKind::Reaction { .. } if problem.dimension == Dimension::Two => 2,
+        QuestionKind::Reaction { .. } => 3,
+        QuestionKind::Steady { unknowns, .. } => unknowns.len().max(1),
+        QuestionKind::Stability { .. } => 2,
+        _ => 1,
     }
 }
 

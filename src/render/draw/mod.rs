@@ -54,7 +54,7 @@ impl Drawing {
     /// The picture to embed in a page: its ids prefixed by its name, so that a page of
     /// several pictures keeps them unique.
     pub fn figure(&self) -> crate::render::context::Figure {
-        self.figure_in(tikz::PAGE_SIZE)
+        self.figure_in(tikz::CONFIGURATION)
     }
 
     /// The picture to embed in a page beside a narrow table, a little smaller (see

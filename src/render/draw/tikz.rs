@@ -15,18 +15,29 @@ pub const PAGE_SIZE: Size = Size {
     height: 380.0,
 };
 /// The largest a free body may be beside its table of forces: the handout puts it above
-/// the table when the two are wider than the line.
+/// the table when the two are wider than the line, so no higher than there.
 pub const BESIDE_A_TABLE: Size = Size {
+    width: 500.0,
+    height: 180.0,
+};
+
+/// The largest a free body may be above its table of forces: about a quarter of the text's
+/// height, so that a one- or two-body handout keeps within four pages.
+pub const ABOVE_A_TABLE: Size = Size {
+    width: 500.0,
+    height: 170.0,
+};
+
+/// The largest the system's picture may be at the head of a handout: under half the text's
+/// height (a narrow one is set beside the first tables).
+pub const CONFIGURATION: Size = Size {
     width: 500.0,
     height: 300.0,
 };
 
-/// The largest a free body may be above its table of forces: a third of the text's height,
-/// so that a picture and its table leave room on the page for the next free body's.
-pub const ABOVE_A_TABLE: Size = Size {
-    width: 500.0,
-    height: 250.0,
-};
+/// The scale under which labels print a size smaller (`\scriptsize`, 7 pt), so that they
+/// keep about the room the layout gave them.
+const SMALL_LABELS: f64 = 7.5 / 13.0;
 
 /// The room a picture may take on the page, in points.
 #[derive(Clone, Copy, Debug)]
@@ -126,8 +137,13 @@ fn item(out: &mut String, item: &Item, unit: f64) {
         Item::Text { at, label, ink } => {
             let _ = writeln!(
                 out,
-                "\\node[text={},font=\\footnotesize,inner sep=0pt] at ({},{}) {{${}$}};",
+                "\\node[text={},font=\\{},inner sep=0pt] at ({},{}) {{${}$}};",
                 color(*ink),
+                if unit < SMALL_LABELS {
+                    "scriptsize"
+                } else {
+                    "footnotesize"
+                },
                 num(at[0]),
                 num(at[1]),
                 label.tex
