@@ -16,6 +16,7 @@
 //! linearizer plan again for that state and go on, for every command alike.
 
 mod impact;
+mod memo;
 mod motion;
 mod run;
 pub mod stability;
@@ -202,8 +203,23 @@ pub fn answers(
     problem: &Problem,
     method: Method,
 ) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
-    let derivation = derive(problem, method)?;
-    let solver = Solver::fastest(problem, &derivation);
+    memo::answers(problem, method, || {
+        answers_from(problem, method, &derive(problem, method)?)
+    })
+}
+
+/// As [`answers`], from `derivation`: the equations of `problem` by `method` as
+/// [`derive()`] gives them, derived once for the answers, the small motions and the
+/// stability alike where the problem declares no speeds of its own.
+///
+/// # Errors
+/// As for [`answers`].
+pub fn answers_from(
+    problem: &Problem,
+    method: Method,
+    derivation: &Derivation,
+) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
+    let solver = Solver::fastest(problem, derivation);
     let after = match &problem.impact {
         Some(_) => Some(impact_at_start(problem, &derivation.model, &solver)?.after),
         None => None,
@@ -229,9 +245,11 @@ pub fn answers(
         use crate::problem::QuestionKind::{Period, Stability};
         matches!(q.kind, Period { .. } | Stability { .. })
     });
-    let linearizer = match asks_period {
-        true => Some(Linearizer::new(&derive(&in_rates, method)?)),
-        false => None,
+    let linearizer = match (asks_period, problem.has_speeds()) {
+        (true, true) => Some(Linearizer::new(&derive(&in_rates, method)?)),
+        // Without declared speeds the problem in its rates is the problem itself.
+        (true, false) => Some(Linearizer::new(derivation)),
+        (false, _) => None,
     };
     // Where the stability changes, from the linearizations over the constant's range.
     for (i, question) in problem.questions.iter().enumerate() {

@@ -2,7 +2,9 @@
 //! for what the handout asks ([`Job`]). The worked solution and the student's version are
 //! written from its [`Worked`] alone.
 
-use super::{answers, confirm, derive, derive_for_handout, impact, Linearizer, Solver};
+use super::{
+    answers, answers_from, confirm, derive, derive_for_handout, impact, memo, Linearizer, Solver,
+};
 use crate::equations::LinearSystem;
 use crate::equations::{Derivation, Method};
 use crate::numeric::answers::Answer;
@@ -148,15 +150,26 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
     if job.motion {
         worked.frames = Some(frames(problem, &worked));
     }
+    // For numbers, derived once for the small motions and the answers where the problem
+    // declares no speeds (then the problem in its rates is the problem itself).
+    let mut numeric = None;
     if let Some((q, rates)) = &job.linearize_at {
         // Small motions are about the coordinates and their rates, whatever the speeds.
         let in_rates = problem.without_speeds();
-        let linearizer = Linearizer::new(&derive(&in_rates, method)?);
+        let linearizer = match problem.has_speeds() {
+            true => Linearizer::new(&derive(&in_rates, method)?),
+            false => Linearizer::new(numeric.insert(derive(problem, method)?)),
+        };
         worked.linearization = Some(linearizer.at(&in_rates, 0.0, q, rates)?);
     }
     if !problem.questions.is_empty() {
-        let found = answers(problem, method)?;
-        worked.period_system = period_system(problem, &found);
+        let found = match &numeric {
+            Some(numeric) => {
+                memo::answers(problem, method, || answers_from(problem, method, numeric))?
+            }
+            None => answers(problem, method)?,
+        };
+        worked.period_system = period_system(problem, &worked.derivation, &found);
         worked.show_accelerations = show_accelerations(problem, &worked.derivation, &found);
         worked.answers = Some(found);
     }
@@ -185,7 +198,12 @@ fn frames(problem: &Problem, worked: &Worked) -> Result<Vec<Frame>, Error> {
 
 /// Kane's linear system of the problem in its rates, where some period with one degree of
 /// freedom left is answered: its working writes that coordinate's equation.
-fn period_system(problem: &Problem, answers: &[Answer]) -> Option<LinearSystem> {
+/// The run's own derivation serves where it is Kane's of a problem without declared speeds.
+fn period_system(
+    problem: &Problem,
+    derivation: &Derivation,
+    answers: &[Answer],
+) -> Option<LinearSystem> {
     let one_left =
         (answers.iter().filter_map(|a| a.period.as_ref())).any(|p| p.coordinates.len() == 1);
     // A second rate asked of a problem with one degree of freedom: q̈ = b/a in symbols.
@@ -199,6 +217,9 @@ fn period_system(problem: &Problem, answers: &[Answer]) -> Option<LinearSystem> 
     let one_freedom = free == 1;
     if !(one_left || acceleration && one_freedom) {
         return None;
+    }
+    if derivation.method == Method::Kane && !problem.has_speeds() {
+        return Some(derivation.system.clone());
     }
     let in_rates = problem.without_speeds();
     derive_for_handout(&in_rates, Method::Kane)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Times `explain` against `solve` of the same problem by the same method.
 
-    python3 tools/bench/explain_speed.py [BIN] [--runs N] [--all]
+    python3 tools/bench/explain_speed.py [BIN] [--runs N] [--all] [--variants] [--grade]
 
 For the Whipple bicycle, the ten-link chain, all-joints-3d and the rolling coin, by Kane
 and the Motion Law: the fastest of N runs (default 3) of `explain` (Markdown, to a null
@@ -9,8 +9,12 @@ output) and of `solve`, each as wall seconds and as CPU seconds (user + system, 
 operating system's accounting of the finished child, which a loaded machine moves less),
 and the ratio explain / max(solve, 0.1 s) against the target of 3. With --all, every
 bundled handout (problems/*.json and problems/validation/*.json, every method, worked
-and student) once, the slowest listed against the target of 0.5 s.
+and student, Lagrange's too) once, the slowest listed against the target of 0.5 s. With
+--variants, `variants --count 30` of the heavy symmetric top (a worked solution and a
+student handout each, LaTeX) against 30 explains of it, worked and student. With --grade,
+`grade --batch` of a class of 300 (tools/bench/grade_class.py).
 """
+import tempfile
 import os
 import resource
 import subprocess
@@ -66,6 +70,11 @@ def main():
             print(f"| {name} | {method} | {solve[0]:.3f} | {solve[1]:.3f} | "
                   f"{explain[0]:.3f} | {explain[1]:.3f} | {ratio:.1f} | "
                   f"{'yes' if explain[1] <= bound else 'no'} |")
+    if "--variants" in sys.argv:
+        variants_against_explains(binary, runs)
+    if "--grade" in sys.argv:
+        subprocess.run([sys.executable, os.path.join(ROOT, "tools/bench/grade_class.py"),
+                        "--bin", binary], cwd=ROOT, check=True)
     if "--all" not in sys.argv:
         return
     handouts = []
@@ -74,7 +83,7 @@ def main():
             if not name.endswith(".json"):
                 continue
             path = f"{folder}/{name}"
-            for method in ["motion-law", "newton-euler", "kane"]:
+            for method in ["motion-law", "newton-euler", "kane", "lagrange"]:
                 for student in [[], ["--student"]]:
                     argv = [binary, "explain", path, "--method", method] + student
                     handouts.append((timed(argv), path, method, bool(student)))
@@ -84,6 +93,19 @@ def main():
     for (wall, cpu), path, method, student in handouts[:10]:
         version = "student" if student else "worked"
         print(f"  {cpu:6.3f} cpu {wall:6.3f} wall  {path} {method} {version}")
+
+
+def variants_against_explains(binary, runs):
+    """CPU seconds of `variants --count 30` of the heavy top against 30 explains of it."""
+    top = "problems/heavy-symmetric-top.json"
+    with tempfile.TemporaryDirectory() as out:
+        variants = min(timed([binary, "variants", top, "--count", "30", "--format", "latex",
+                              "-o", os.path.join(out, str(k))])[1] for k in range(runs))
+    worked = fastest([binary, "explain", top, "--format", "latex"], runs)[1]
+    student = fastest([binary, "explain", top, "--format", "latex", "--student"], runs)[1]
+    print(f"\nvariants --count 30 of the heavy top: {variants:.3f} s cpu; 30 explains "
+          f"{30 * worked:.3f} s (worked) and {30 * (worked + student):.3f} s (worked and "
+          f"student); ratio {variants / (30 * (worked + student)):.2f}")
 
 
 if __name__ == "__main__":
