@@ -9,6 +9,40 @@ use std::path::PathBuf;
 
 const METHODS: [&str; 4] = ["motion-law", "kane", "newton-euler", "lagrange"];
 
+/// Every format a handout is written in.
+const FORMATS: [&str; 3] = ["markdown", "latex", "html"];
+
+/// The text a reader sees: an HTML page without its scripts, styles and tags (a script's
+/// `parentNode` is no word of the handout's); Markdown and LaTeX whole.
+fn readable(text: &str, format: &str) -> String {
+    if format != "html" {
+        return text.to_string();
+    }
+    let mut out = text.to_string();
+    for (open, close) in [("<script", "</script>"), ("<style", "</style>")] {
+        while let Some(start) = out.find(open) {
+            let Some(length) = out[start..].find(close) else {
+                break;
+            };
+            out.replace_range(start..start + length + close.len(), " ");
+        }
+    }
+    let mut plain = String::with_capacity(out.len());
+    let mut in_tag = false;
+    for c in out.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' if in_tag => {
+                in_tag = false;
+                plain.push(' ');
+            }
+            _ if !in_tag => plain.push(c),
+            _ => {}
+        }
+    }
+    plain
+}
+
 /// Words a course does not use in a handout.
 const NOT_COURSE_WORDS: [&str; 12] = [
     "mesh.distance",
@@ -124,12 +158,13 @@ fn the_pythagorean_pair_is_found_and_only_it() {
     }
 }
 
-/// Every handout in Markdown, two problems at a time.
+/// Every handout in Markdown, LaTeX and HTML, two at a time.
 #[test]
 fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
     let paths = bundled();
-    let jobs: Vec<(PathBuf, &str)> = (paths.iter())
+    let jobs: Vec<(PathBuf, &str, &str)> = (paths.iter())
         .flat_map(|p| METHODS.iter().map(move |m| (p.clone(), *m)))
+        .flat_map(|(p, m)| FORMATS.iter().map(move |f| (p.clone(), m, *f)))
         .collect();
     let found = std::sync::Mutex::new(Vec::new());
     let next = std::sync::atomic::AtomicUsize::new(0);
@@ -137,7 +172,7 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
         for _ in 0..2 {
             scope.spawn(|| loop {
                 let k = next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
-                let Some((path, method)) = jobs.get(k) else {
+                let Some((path, method, format)) = jobs.get(k) else {
                     break;
                 };
                 let out = run(&[
@@ -146,23 +181,23 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
                     "--method".as_ref(),
                     method.as_ref(),
                     "--format".as_ref(),
-                    "markdown".as_ref(),
+                    format.as_ref(),
                 ]);
                 if !out.status.success() {
                     // A method a problem cannot take is refused; other tests see to it.
                     continue;
                 }
-                let text = String::from_utf8_lossy(&out.stdout);
+                let text = readable(&String::from_utf8_lossy(&out.stdout), format);
                 let name = path.file_stem().unwrap_or_default().to_string_lossy();
                 let mut wrong = found.lock().expect("lock");
                 for word in NOT_COURSE_WORDS {
                     if let Some(line) = text.lines().find(|l| l.contains(word)) {
-                        wrong.push(format!("{name} ({method}): `{word}` in: {line}"));
+                        wrong.push(format!("{name} ({method}, {format}): `{word}` in: {line}"));
                     }
                 }
                 for line in text.lines() {
                     if let Some(pair) = pythagorean_pair(line) {
-                        wrong.push(format!("{name} ({method}): s² + c² left: {pair}"));
+                        wrong.push(format!("{name} ({method}, {format}): s² + c² left: {pair}"));
                     }
                 }
             });
