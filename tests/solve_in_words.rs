@@ -17,12 +17,12 @@ fn the_four_bars_constraint_block_is_singular_with_coupler_and_rocker_in_line() 
     let derivation =
         mbd_tutor::pipeline::derive_for_handout(&p, Method::MotionLaw).expect("derives");
     let (_, _, det) = constraint_block(&derivation).expect("a block of the constraint rows");
-    let (b, c) = (0.3, 0.25);
+    let (b, c): (f64, f64) = (0.3, 0.25);
     let at = |q: [f64; 3]| {
         let values = derivation.model.values_at(0.0, &q, &[0.0; 3]);
         eval(&det, &values)
     };
-    for q in [[1.2, -0.65, 1.6], [0.3, 0.4, -0.2], [2.0, 1.0, 0.5]] {
+    for q in [[1.2_f64, -0.65, 1.6], [0.3, 0.4, -0.2], [2.0, 1.0, 0.5]] {
         let by_hand = b * c * (q[0] + q[1] - q[2]).sin();
         assert!(
             (at(q) - by_hand).abs() < 1e-12,

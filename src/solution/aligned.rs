@@ -6,7 +6,7 @@ use crate::render::line_break::break_into_lines;
 
 /// How many symbols (see [`crate::render::math_width`]) the right side of one line of an
 /// aligned display holds: the page's line less a short left side.
-const RIGHT_SYMBOLS: f64 = 52.0;
+const RIGHT_SYMBOLS: f64 = 46.0;
 
 /// `left &= right`, the right side broken over as many lines as it needs, each
 /// continuation `&\quad + …`; the lines joined by `\\`.

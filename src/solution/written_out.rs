@@ -27,7 +27,10 @@ const MOST_BODIES: usize = 3;
 const LONGEST_LINE: usize = 600;
 
 /// How many symbols (see [`symbols`]) a line holding both `r` and `m a*` may print.
-const ONE_LINE: f64 = 62.0;
+const ONE_LINE: f64 = 56.0;
+
+/// How many symbols one printed line of the display may take: the page's line.
+const WIDEST_LINE: f64 = 66.0;
 
 /// A row's inertia terms written out.
 #[derive(Clone, Debug)]
@@ -74,7 +77,13 @@ pub fn written_out(derivation: &Derivation, row: &Equation) -> Option<WrittenOut
     if let Some(line) = dots.line(direction) {
         lines.push(line);
     }
-    if lines.iter().any(|l| l.len() > LONGEST_LINE) {
+    // Every printed line within the page (a fraction too wide to break would stick out):
+    // otherwise the row keeps the names of step 4 alone.
+    let too_wide = lines
+        .iter()
+        .flat_map(|l| l.split(" \\\\ "))
+        .any(|l| symbols(l) > WIDEST_LINE);
+    if too_wide || lines.iter().any(|l| l.len() > LONGEST_LINE) {
         return None;
     }
     Some(WrittenOut {
@@ -112,7 +121,11 @@ impl Dots {
             .iter()
             .map(|(unit, value)| format!("{unit} \\cdot {} = {}", d.latex, latex(value)))
             .collect();
-        Some(format!("&\\text{{with }} {}", items.join(",\\quad ")))
+        let lines: Vec<String> = items.chunks(3).map(|c| c.join(",\\quad ")).collect();
+        Some(format!(
+            "&\\text{{with }} {}",
+            lines.join(", \\\\ &\\quad ")
+        ))
     }
 }
 
