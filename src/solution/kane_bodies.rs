@@ -106,5 +106,7 @@ pub fn inertia_by_body(
     {
         out.push(super::aligned::line(&whole_name, "=", formula));
     }
-    Some(super::aligned::display(&out))
+    let block = super::aligned::display(&out);
+    // One display holds at most what LaTeX sets unbroken (see `DISPLAY_LIMIT`).
+    (block.len() <= crate::render::line_break::DISPLAY_LIMIT).then_some(block)
 }
