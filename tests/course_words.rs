@@ -10,6 +10,9 @@ use std::path::PathBuf;
 
 const METHODS: [&str; 4] = ["motion-law", "kane", "newton-euler", "lagrange"];
 
+/// Every format a handout is written in.
+const FORMATS: [&str; 3] = ["markdown", "latex", "html"];
+
 /// Words a course does not use in a handout.
 const NOT_COURSE_WORDS: [&str; 12] = [
     "mesh.distance",
@@ -199,7 +202,7 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
                 }
                 for line in text.lines() {
                     if let Some(pair) = pythagorean_pair(line) {
-                        wrong.push(format!("{name} ({method}): s² + c² left: {pair}"));
+                        wrong.push(format!("{name} ({method}, {format}): s² + c² left: {pair}"));
                     }
                 }
                 wrong.extend(unitless_rows(&text).map(|row| format!("{name} ({method}): {row}")));

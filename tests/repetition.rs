@@ -122,7 +122,6 @@ fn kane_states_its_theory_once_with_only_what_applies() {
 }
 
 #[test]
-#[ignore = "the four-bar's body-B line (380 characters of LaTeX) is wider than the page and is left out until the block's lines break"]
 fn the_four_bars_inertia_force_is_shown_body_by_body() {
     // By hand: rod A (m, a) turns with q1 about its pin O, I_O = m a²/12 + m (a/2)² =
     // m a²/3, and its partial angular velocity for u1 = q1' is 1: F*_{1,A} = −(m a²/3) q1''.

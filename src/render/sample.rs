@@ -58,6 +58,9 @@ pub fn sample() -> Solution {
         speeds: None,
         constraints: Vec::new(),
         constraint_notes: Vec::new(),
+        closure_loops: Vec::new(),
+        solve_notes: Vec::new(),
+        matrix_names: Default::default(),
         free_bodies: free_bodies(),
         free_body_legend: String::new(),
         force_definitions: Vec::new(),
@@ -345,6 +348,7 @@ fn equations() -> Vec<Equation> {
                 loads("A"),
                 loads("B")
             )),
+            written_tex: Math::default(),
             simplified_tex: Math::from(format!(
                 "m L^{{2}} \\left(\\frac{{5}}{{3}} + \\cos(q_{{2}})\\right) \\ddot{{q}}_{{1}} + m L^{{2}} \\left(\\frac{{1}}{{3}} + \\frac{{\\cos(q_{{2}})}}{{2}}\\right) \\ddot{{q}}_{{2}} \
                  - \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\left(2 \\dot{{q}}_{{1}} \\dot{{q}}_{{2}} + \\dot{{q}}_{{2}}^{{2}}\\right) \
@@ -365,6 +369,7 @@ fn equations() -> Vec<Equation> {
                 "{A}_{{z}} \\cdot \\left(\\mathbf{{r}}^{{B^{{*}}/P}} \\times {} - \\frac{{m L^{{2}}}}{{12}} {accelerations} {N}_{{z}}\\right) = 0",
                 loads("B")
             )),
+            written_tex: Math::default(),
             simplified_tex: Math::from(format!(
                 "m L^{{2}} \\left(\\frac{{1}}{{3}} + \\frac{{\\cos(q_{{2}})}}{{2}}\\right) \\ddot{{q}}_{{1}} + \\frac{{m L^{{2}}}}{{3}} \\ddot{{q}}_{{2}} \
                  + \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\dot{{q}}_{{1}}^{{2}} + \\frac{{m g L}}{{2}} {s12} = 0"
@@ -381,6 +386,7 @@ fn equations() -> Vec<Equation> {
             label: String::new(),
             augmented_note: MarkupLine::default(),
             grouped_tex: Math::from(format!("{N}_{{x}} \\cdot \\left({sum_forces}\\right) = 0")),
+            written_tex: Math::default(),
             simplified_tex: Math::from(format!(
                 "F^{{O}}_{{x}} - m L \\left(\\frac{{3}}{{2}} \\left({c1} \\ddot{{q}}_{{1}} - {s1} \\dot{{q}}_{{1}}^{{2}}\\right) \
                  + \\frac{{1}}{{2}} \\left({c12} {accelerations} - {s12} {rates}^{{2}}\\right)\\right) = 0"
@@ -397,6 +403,7 @@ fn equations() -> Vec<Equation> {
             label: String::new(),
             augmented_note: MarkupLine::default(),
             grouped_tex: Math::from(format!("{N}_{{y}} \\cdot \\left({sum_forces}\\right) = 0")),
+            written_tex: Math::default(),
             simplified_tex: Math::from(format!(
                 "F^{{O}}_{{y}} - 2 m g - m L \\left(\\frac{{3}}{{2}} \\left({s1} \\ddot{{q}}_{{1}} + {c1} \\dot{{q}}_{{1}}^{{2}}\\right) \
                  + \\frac{{1}}{{2}} \\left({s12} {accelerations} + {c12} {rates}^{{2}}\\right)\\right) = 0"

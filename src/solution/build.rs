@@ -47,6 +47,7 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         axes: axes(problem),
         constants: constants(problem),
         plan: Plan::default(),
+        matrix_names: crate::problem::MatrixNames::of(problem),
         simulation: Simulation {
             settings: MarkupLine::from(super::confirmation::integration(
                 problem,

@@ -32,8 +32,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let constraint_notes;
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
         solution.constraint_notes = MarkupLine::all(constraint_notes);
-        (solution.constraint_notes)
-            .extend(MarkupLine::all(super::closure_loops::notes(derivation)));
+        solution.closure_loops = Math::all(super::closure_loops::loops(derivation));
+        solution.solve_notes = MarkupLine::all(super::solve_words::notes(derivation));
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);
         solution.force_definitions =
@@ -48,6 +48,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             .collect();
         super::long::refer_to_repeated_vector_forms(derivation, &mut solution.equations);
         super::loops::refer_to_repeated_loops(&mut solution.equations);
+        super::written_out::drop_repeated(&mut solution.equations);
         super::long::refer_to_the_first_auxiliary_row(&mut solution.equations);
         super::long::say_the_acceleration_level_once(&mut solution.equations);
         // The matrix is listed entry by entry whenever an equation refers to its entries.

@@ -252,6 +252,13 @@ pub fn dependent_speeds(
         independent.join(", ")
     );
     let delta = relation_tex.contains("\\Delta");
+    // The matrices of the dependent rates by names the problem does not use.
+    let names = crate::problem::MatrixNames::of(problem);
+    let paragraphs: Vec<String> = paragraphs
+        .iter()
+        .map(|p| renamed_matrices(p, &names))
+        .collect();
+    let kane_tex = renamed_matrices(&kane_tex, &names);
     DependentSpeeds {
         relation_tex: Math::from(relation_tex),
         relations_tex: Math::all(relations_tex),
@@ -401,4 +408,15 @@ fn words(list: &[String]) -> String {
         [one] => one.clone(),
         [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
     }
+}
+
+/// The prose's matrices `C`, `A_D` and `A_I` by the problem's free names (`C_{sr}`,
+/// `$C$`, `C = -A_D^{-1} A_I` are the only places these letters stand for them).
+fn renamed_matrices(text: &str, names: &crate::problem::MatrixNames) -> String {
+    let (a, c) = (names.a.as_str(), names.c.as_str());
+    text.replace("C_{sr}", &format!("{c}_{{sr}}"))
+        .replace("$C$", &format!("${c}$"))
+        .replace("$C = ", &format!("${c} = "))
+        .replace("A_D", &format!("{a}_D"))
+        .replace("A_I", &format!("{a}_I"))
 }

@@ -14,9 +14,9 @@ use crate::symbolic::{Expr, Symbol};
 /// its rows are read by the names of step 4.
 const MOST_BODIES: usize = 4;
 
-/// The most characters of LaTeX a line of the block may take: the block's lines are not
-/// broken, and a longer one would stick out of the page's margin.
-const LONGEST_LINE: usize = 360;
+/// The most characters of LaTeX one body's contribution may take, broken over lines (see
+/// [`super::aligned::line`]): a longer one is read better in the row's sum.
+const LONGEST_LINE: usize = 900;
 
 /// `F^*_r` (or `F̃^*_r` with independent speeds) of Kane's speed row `r` (1-based) as the
 /// sum of each body's contribution, then each contribution, as an `aligned` block; `whole`
@@ -91,22 +91,22 @@ pub fn inertia_by_body(
         if text.len() > longest {
             return None;
         }
-        lines.push(format!("{name} &= {text}"));
+        lines.push(super::aligned::line(&name, "=", &text));
         names.push(name);
     }
     if names.len() < 2 {
         return None;
     }
-    let mut out = vec![format!("{tilde}^{{*}}_{{{r}}} &= {}", names.join(" + "))];
+    let whole_name = format!("{tilde}^{{*}}_{{{r}}}");
+    let mut out = vec![super::aligned::line(&whole_name, "=", &names.join(" + "))];
     out.extend(lines);
     // The whole, when the row wrote it as a formula: what the contributions sum to.
     let formula = whole.split_once(" = ").map(|(_, f)| f);
     if let Some(formula) = formula.filter(|f| !whole.contains("\\text{") && f.len() <= LONGEST_LINE)
     {
-        out.push(format!("{tilde}^{{*}}_{{{r}}} &= {formula}"));
+        out.push(super::aligned::line(&whole_name, "=", formula));
     }
-    Some(format!(
-        "\\begin{{aligned}} {} \\end{{aligned}}",
-        out.join(" \\\\ ")
-    ))
+    let block = super::aligned::display(&out);
+    // One display holds at most what LaTeX sets unbroken (see `DISPLAY_LIMIT`).
+    (block.len() <= crate::render::line_break::DISPLAY_LIMIT).then_some(block)
 }

@@ -14,12 +14,16 @@ pub const LONG_EQUATION: usize = 1500;
 /// Row `i` of the system as `A_{i,1} x_1 + … = b_i`, with the nonzero coefficients.
 pub fn coefficient_form(derivation: &Derivation, i: usize) -> String {
     let system = &derivation.system;
+    let names = crate::problem::MatrixNames::of(derivation.model.problem);
     let terms: Vec<String> = system.a[i]
         .iter()
         .zip(&system.unknowns)
         .enumerate()
         .filter(|(_, (a, _))| !a.is_zero())
-        .map(|(j, (_, x))| format!("A_{{{},{}}} {}", i + 1, j + 1, latex(&Expr::sym(x.clone()))))
+        .map(|(j, (_, x))| {
+            let x = latex(&Expr::sym(x.clone()));
+            format!("{}_{{{},{}}} {x}", names.a, i + 1, j + 1)
+        })
         .collect();
     // A long row by its first two terms and its last, as a textbook writes row i of A x.
     const MOST_TERMS: usize = 4;
@@ -30,7 +34,7 @@ pub fn coefficient_form(derivation: &Derivation, i: usize) -> String {
         }
         _ => terms.join(" + "),
     };
-    format!("{left} = b_{{{}}}", i + 1)
+    format!("{left} = {}_{{{}}}", names.b, i + 1)
 }
 
 /// `e` as a sum over the products of rates its terms hold: (product of rates, its

@@ -6,6 +6,7 @@ use super::long::{by_rates, LONG_EQUATION};
 use super::tex::row_heading_tex;
 use crate::equations::{Derivation, Method};
 use crate::plan::rows::Sum;
+use crate::problem::MatrixNames;
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
 use crate::render::math_width::printed_width;
 use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
@@ -41,6 +42,19 @@ pub fn matrix(
     shown: impl Fn(&Expr) -> Expr,
     initial: impl Fn(&Expr) -> f64,
 ) -> MatrixForm {
+    let names = MatrixNames::of(derivation.model.problem);
+    // The tables head the right-hand side's column with its name.
+    let header = |t: &str| t.replace(" & \\mathbf{b}", &format!(" & \\mathbf{{{}}}", names.b));
+    let headed =
+        |tables: Vec<String>| -> Vec<String> { tables.iter().map(|t| header(t)).collect() };
+    let whole = |labels: &[String], x: &[String], a: &[Vec<String>], b: &[String]| {
+        whole(labels, x, a, b).map(|mut w| {
+            w.table_tex = Math::from(header(&w.table_tex));
+            w
+        })
+    };
+    let pattern_tables =
+        |labels: &[String], a: &[Vec<Expr>], b: &[Expr]| headed(pattern_tables(labels, a, b));
     let by_entries = by_name.iter().any(|&b| b);
     let listed = |i: usize| !by_entries || by_name.get(i).copied().unwrap_or(true);
     let system = &super::kane::shown_system(derivation);
@@ -92,7 +106,9 @@ pub fn matrix(
             ..MatrixForm::default()
         };
     }
-    let b_names: Vec<String> = (1..=a.len()).map(|i| format!("b_{{{i}}}")).collect();
+    let b_names: Vec<String> = (1..=a.len())
+        .map(|i| format!("{}_{{{i}}}", names.b))
+        .collect();
     let mut table_with_b_by_name = None;
     if n <= MOST_COLUMNS && !by_entries {
         if let Some(whole) = whole(&numbers, &x, &a_tex, &b_tex) {
@@ -106,7 +122,7 @@ pub fn matrix(
     }
     // Entries too wide as well: every entry longer than a symbol or two by name, as a
     // textbook writes a larger system, the names defined below the table.
-    let a_names = named_entries(&a, &a_tex);
+    let a_names = named_entries(&a, &a_tex, &names);
     // Wider still: the unknowns by column number, x_j, given below the table.
     let x_names: Vec<String> = (1..=n).map(|j| format!("x_{{{j}}}")).collect();
     let (table_by_name, unknowns_by_number) = if table_with_b_by_name.is_some() {
@@ -136,9 +152,14 @@ pub fn matrix(
                     .iter()
                     .enumerate()
                     .filter(|(_, e)| !e.is_zero())
-                    .map(|(j, e)| format!("A_{{{},{}}} = {}", i + 1, j + 1, value(e)))
+                    .map(|(j, e)| format!("{}_{{{},{}}} = {}", names.a, i + 1, j + 1, value(e)))
                     .collect();
-                values.push(format!("b_{{{}}} = {}", i + 1, value(&system.b[i])));
+                values.push(format!(
+                    "{}_{{{}}} = {}",
+                    names.b,
+                    i + 1,
+                    value(&system.b[i])
+                ));
                 MatrixEntry {
                     row: i + 1,
                     row_label_tex: Math::from(labels[i].clone()),
@@ -159,7 +180,9 @@ pub fn matrix(
         // A system this large is read by its numbers: A and b at the initial state as a
         // table, the rules saying what each entry is.
         return MatrixForm {
-            value_tables_tex: Math::all(value_tables(&numbers, &x, &system.a, &system.b, &initial)),
+            value_tables_tex: Math::all(headed(value_tables(
+                &numbers, &x, &system.a, &system.b, &initial,
+            ))),
             rules: coefficient_rules(derivation),
             ..MatrixForm::default()
         };
@@ -193,29 +216,29 @@ pub fn matrix(
             // A symmetric entry refers to the one above the diagonal, written once.
             let mirror = a.get(j).and_then(|r| r.get(i));
             let value = if j < i && mirror == Some(e) && listed(j) {
-                format!("A_{{{},{}}}", j + 1, i + 1)
+                format!("{}_{{{},{}}}", names.a, j + 1, i + 1)
             } else {
                 a_tex[i][j].clone()
             };
             entry(
                 (j + 1).to_string(),
                 x[j].clone(),
-                format!("A_{{{},{}}} = {value}", i + 1, j + 1),
+                format!("{}_{{{},{}}} = {value}", names.a, i + 1, j + 1),
             );
         }
         let groups = &b_groups[i];
-        let column_b = || "\\mathbf{b}".to_string();
+        let column_b = || format!("\\mathbf{{{}}}", names.b);
         if groups.len() < 2 {
             entry(
                 "b".into(),
                 column_b(),
-                format!("b_{{{}}} = {}", i + 1, b_tex[i]),
+                format!("{}_{{{}}} = {}", names.b, i + 1, b_tex[i]),
             );
             continue;
         }
         // Too long to read whole: b_i collected by the products of rates it holds, each
         // coefficient named and given after it.
-        let name = |k: usize| format!("B_{{{},{k}}}", i + 1);
+        let name = |k: usize| format!("{}_{{{},{k}}}", names.b, i + 1);
         let sum: Vec<String> = groups
             .iter()
             .enumerate()
@@ -230,7 +253,7 @@ pub fn matrix(
         entry(
             "b".into(),
             column_b(),
-            format!("b_{{{}}} = {}", i + 1, sum.join(" + ")),
+            format!("{}_{{{}}} = {}", names.b, i + 1, sum.join(" + ")),
         );
         for (k, (_, coefficient)) in groups.iter().enumerate() {
             entry(
@@ -244,7 +267,7 @@ pub fn matrix(
         let mut defined = Vec::new();
         for (i, row) in a_names.iter().enumerate() {
             for (j, name) in row.iter().enumerate() {
-                if *name == format!("A_{{{},{}}}", i + 1, j + 1) {
+                if *name == format!("{}_{{{},{}}}", names.a, i + 1, j + 1) {
                     defined.push(MatrixEntry {
                         row: i + 1,
                         column: (j + 1).to_string(),
@@ -350,7 +373,7 @@ fn rows_tex(rows: &[usize]) -> String {
 /// The entries of `A` as a table by name prints them: 0, a symbol or two as it is
 /// (`m`, `-1`), any other by its name `A_{i,j}`; an entry below the diagonal equal to its
 /// mirror by its mirror's name.
-fn named_entries(a: &[Vec<Expr>], a_tex: &[Vec<String>]) -> Vec<Vec<String>> {
+fn named_entries(a: &[Vec<Expr>], a_tex: &[Vec<String>], names: &MatrixNames) -> Vec<Vec<String>> {
     a_tex
         .iter()
         .enumerate()
@@ -364,9 +387,9 @@ fn named_entries(a: &[Vec<Expr>], a_tex: &[Vec<String>]) -> Vec<Vec<String>> {
                     } else if printed_width(text) <= INLINE_ENTRY {
                         text.clone()
                     } else if j < i && mirror == Some(&a[i][j]) {
-                        format!("A_{{{},{}}}", j + 1, i + 1)
+                        format!("{}_{{{},{}}}", names.a, j + 1, i + 1)
                     } else {
-                        format!("A_{{{},{}}}", i + 1, j + 1)
+                        format!("{}_{{{},{}}}", names.a, i + 1, j + 1)
                     }
                 })
                 .collect()
@@ -402,7 +425,16 @@ fn row_by_row(entries: Vec<MatrixEntry>) -> Vec<MatrixEntry> {
 /// What the coefficient of each kind of unknown is in each kind of row, in the partial
 /// velocities of the bodies `k` of the row's free body.
 fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
-    let rule = |note: &str, tex: &str| Named::new(tex, note);
+    let names = MatrixNames::of(derivation.model.problem);
+    let (a, b) = (names.a.as_str(), names.b.as_str());
+    let rule = |note: &str, tex: &str| {
+        let tex = match tex.split_once("_{") {
+            Some(("A", rest)) => format!("{a}_{{{rest}"),
+            Some(("b", rest)) => format!("{b}_{{{rest}"),
+            _ => tex.to_string(),
+        };
+        Named::new(&tex, note)
+    };
     let mut rules = Vec::new();
     let sums = |wanted: fn(&Sum) -> bool| derivation.rows.iter().any(|r| wanted(&r.sum));
     if sums(|s| matches!(s, Sum::Force)) {

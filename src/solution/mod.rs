@@ -8,6 +8,7 @@
 //! scenes (laid out, [`pictures`]), the answers and the checks. [`crate::render`] only writes
 //! it; this stage is the last one that reads the derivation.
 
+mod aligned;
 pub mod answer_sheet;
 pub mod answers;
 mod auxiliary;
@@ -49,6 +50,7 @@ mod relations;
 pub mod row_view;
 mod settled;
 mod simulation;
+pub mod solve_words;
 mod speeds;
 mod spin_frames;
 mod stability_answers;
@@ -56,6 +58,7 @@ mod static_answers;
 pub mod statics;
 mod switch_steps;
 mod tex;
+pub mod written_out;
 
 pub use build::{setup, solution as worked};
 pub use handout::{handout, student, Handout};

@@ -264,11 +264,17 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         grouped_tex.clear();
         simplified_note = "Already in its simplest form:".into();
     }
+    // The inertia terms written out, cross products and dot products, as a student does.
+    let written_tex = super::written_out::written_out(derivation, row)
+        .filter(|_| !grouped_tex.is_empty())
+        .map(|w| w.tex)
+        .unwrap_or_default();
     EquationView {
         label,
         augmented_note: augmented_note.into(),
         label_tex: Math::from(label_tex),
         grouped_tex: Math::from(grouped_tex),
+        written_tex: Math::from(written_tex),
         simplified_tex: Math::from(simplified_tex),
         simplified_note,
         by_name,

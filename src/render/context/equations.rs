@@ -19,6 +19,10 @@ pub struct Equation {
     pub augmented_note: MarkupLine,
     /// The equation as formed, forces grouped, e.g. `\hat{\mathbf{n}}_{z} \cdot (…) = 0`.
     pub grouped_tex: Math,
+    /// The Motion Law's inertia terms written out before the simplified form: each body's
+    /// cross product and inertia torque, or `m a*` dotted term by term (an `aligned`
+    /// display; empty otherwise).
+    pub written_tex: Math,
     /// The same equation simplified, `… = 0`; when that is too long to read, the same
     /// with the coefficients of the matrix form by name, `A_{1,1} \ddot{q}_{1} + … = b_{1}`.
     pub simplified_tex: Math,

@@ -74,6 +74,15 @@ pub struct Solution {
     /// Step 1: which coordinates and rates the constraints solve for and why, and which
     /// constraints were left out.
     pub constraint_notes: Vec<MarkupLine>,
+    /// Step 1: each closure's vector loop, segment by segment, and its time derivative, the
+    /// velocity constraints (aligned displays).
+    pub closure_loops: Vec<Math>,
+    /// Step 5: the solve said in words after the matrix form: what is solved first, and
+    /// where the constraint rows' block is singular.
+    pub solve_notes: Vec<MarkupLine>,
+    /// The names of the system matrix, its right-hand side and the dependent rates' matrix,
+    /// free of the problem's own names.
+    pub matrix_names: crate::problem::MatrixNames,
     /// Step 1: the picture of the system at the initial state (empty when not drawn).
     pub configuration: Figure,
     /// Step 2: the free bodies the planner uses.

@@ -1,0 +1,86 @@
+//! Names for the handout's matrices that no body, frame, point or constant of the problem
+//! uses: the system matrix and right-hand side `A x = b`, and the matrix of the dependent
+//! rates `q̇_D = C q̇_I`. A double pendulum's bodies A and B, or a four-bar's lengths b and
+//! c, would otherwise read as the matrix's name.
+
+use super::Problem;
+use serde::Serialize;
+
+/// The system matrix's names in order of preference: the first free one is taken.
+const SYSTEM: [&str; 6] = ["A", "S", "E", "H", "U", "Z"];
+
+/// The right-hand side's names in order of preference.
+const RIGHT_SIDE: [&str; 5] = ["b", "f", "h", "w", "z"];
+
+/// The dependent rates' matrix's names in order of preference.
+const DEPENDENT: [&str; 5] = ["C", "D", "G", "W", "Y"];
+
+/// The names of the three matrices, as LaTeX letters.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct MatrixNames {
+    /// The system matrix, `A` unless the problem uses it.
+    pub a: String,
+    /// The right-hand side, `b` unless the problem uses it.
+    pub b: String,
+    /// The matrix of the dependent rates, `C` unless the problem uses it.
+    pub c: String,
+}
+
+impl Default for MatrixNames {
+    fn default() -> Self {
+        MatrixNames {
+            a: SYSTEM[0].into(),
+            b: RIGHT_SIDE[0].into(),
+            c: DEPENDENT[0].into(),
+        }
+    }
+}
+
+impl MatrixNames {
+    /// The first names of each list that no one-letter name of `problem` uses, letters
+    /// compared without case (body B's unit vectors are b̂): the last of a list when all
+    /// are taken.
+    pub fn of(problem: &Problem) -> MatrixNames {
+        // A name prints as one letter (with any index, `B`, `b1`, `m_2`) or as a word
+        // (`bob`, upright): only a letter can be read as a matrix's.
+        let used: Vec<char> = used_names(problem)
+            .filter_map(|n| {
+                let stem: Vec<char> = n.chars().take_while(char::is_ascii_alphabetic).collect();
+                (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
+            })
+            .collect();
+        let free = |list: &[&str]| -> String {
+            let first = list.iter().find(|name| {
+                let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
+                !used.contains(&letter)
+            });
+            first
+                .or(list.last())
+                .copied()
+                .unwrap_or_default()
+                .to_string()
+        };
+        MatrixNames {
+            a: free(&SYSTEM),
+            b: free(&RIGHT_SIDE),
+            c: free(&DEPENDENT),
+        }
+    }
+}
+
+/// Every name a handout prints for the problem: bodies (and their frames), joints and
+/// closures (their points), declared points, constraints and constants.
+fn used_names(problem: &Problem) -> impl Iterator<Item = &str> {
+    let bodies = problem.bodies.iter().map(|b| b.name.as_str());
+    let joints = problem.joints.iter().map(|j| j.name.as_str());
+    let closures = problem.closures.iter().map(|j| j.name.as_str());
+    let points = problem.points.iter().map(|p| p.name.as_str());
+    let constants = problem.constants.iter().map(|c| c.name.as_str());
+    let constraints = problem.constraints.iter().map(|c| c.name.as_str());
+    bodies
+        .chain(joints)
+        .chain(closures)
+        .chain(points)
+        .chain(constants)
+        .chain(constraints)
+}
