@@ -10,8 +10,6 @@ use std::path::PathBuf;
 
 const METHODS: [&str; 4] = ["motion-law", "kane", "newton-euler", "lagrange"];
 
-/// Every format a handout is written in.
-const FORMATS: [&str; 3] = ["markdown", "latex", "html"];
 
 /// Words a course does not use in a handout.
 const NOT_COURSE_WORDS: [&str; 12] = [
