@@ -6,7 +6,7 @@
 //! Run: `cargo bench --bench chain` (add `-- 10` for one size).
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::Compiled;
 use mbd_tutor::pipeline::derive;
 use mbd_tutor::problem::{
     Body, BodyId, Constant, Coordinate, CoordinateKind, Dimension, Inertia, Joint, JointKind,

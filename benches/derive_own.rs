@@ -6,7 +6,7 @@
 //! problem's initial state.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::Compiled;
 use mbd_tutor::pipeline::derive_own;
 use std::time::Instant;
 

@@ -10,7 +10,7 @@
 //! Run: `cargo bench --bench evaluate -- PROBLEM.json [METHOD]`
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::Compiled;
 use mbd_tutor::pipeline::derive;
 use std::path::Path;
 use std::time::Instant;

@@ -19,7 +19,7 @@
 //!    [`Derivation`](equations::Derivation) with a linear system `A x = b` (step 5). Its
 //!    unknowns are the q'' (the u' of declared speeds) and typed [`Unknown`](symbolic::Unknown)s: reaction components
 //!    of sites, drives and multipliers, whose names and LaTeX come from the type. For the
-//!    numbers, Kane's rows are also rebuilt by composite bodies ([`equations::composite`]),
+//!    numbers, Kane's rows are also rebuilt by composite bodies (`equations::composite`),
 //!    and for a large tree built that way alone, never formed.
 //! 5. [`numeric`]: the equations compiled for numbers, the constraints' assembly, the
 //!    linear solve, integration and its checks (steps 5, 6), and linearization.

@@ -2,9 +2,7 @@
 //! and energy conservation over 10 s: checks that do not rest on any one method.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::simulate::simulate;
-use mbd_tutor::numeric::system::System;
+use mbd_tutor::numeric::{simulate, Compiled, System};
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::load_file;
 

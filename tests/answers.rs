@@ -5,7 +5,7 @@ mod bundled;
 
 use crate::support::{problem, run};
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::answers::{answer_all, Answer};
+use mbd_tutor::numeric::{answer_all, Answer};
 use mbd_tutor::pipeline::{derive, Solver};
 use mbd_tutor::problem::{load, Problem};
 use serde_json::{json, Value};
@@ -125,7 +125,7 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
 }
 
 fn fixed(x: f64) -> String {
-    mbd_tutor::numeric::format::fixed(x)
+    mbd_tutor::symbolic::fixed(x)
 }
 
 #[test]

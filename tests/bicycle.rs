@@ -7,8 +7,7 @@
 //! rate θR' = −v/rR, and compared with the paper's −M⁻¹(v C1 q' + (g K0 + v² K2) q).
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::System;
+use mbd_tutor::numeric::{Compiled, System};
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::load_file;
 use nalgebra::{Matrix2, Vector2};

@@ -2,10 +2,9 @@
 //! derive and fail on the same equations with one thing wrong.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::checks::{modes, small_oscillation};
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::{Evaluation, ReactionColumn, System};
-use mbd_tutor::numeric::SolveError;
+use mbd_tutor::numeric::{
+    modes, small_oscillation, Compiled, Evaluation, ReactionColumn, SolveError, System,
+};
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::{load_file, Problem};
 
@@ -118,9 +117,7 @@ fn a_body_free_to_turn_about_the_vertical_has_no_failing_oscillation() {
 /// torque 0.1 % off breaks that balance.
 #[test]
 fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() {
-    use mbd_tutor::numeric::checks::confirm;
-    use mbd_tutor::numeric::constraint_checks::drive_energy_check;
-    use mbd_tutor::numeric::simulate::simulate;
+    use mbd_tutor::numeric::{confirm, drive_energy_check, simulate};
     for name in ["slider-crank-driven", "collar-on-driven-rod"] {
         let problem = problem(name);
         let compiled = Compiled::new(&derive_rows(&problem, Method::MotionLaw).expect("derives"));
@@ -138,7 +135,7 @@ fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() 
         assert!(
             checks
                 .iter()
-                .all(|c| c.kind != mbd_tutor::numeric::check::CheckKind::EnergyConservation),
+                .all(|c| c.kind != mbd_tutor::numeric::CheckKind::EnergyConservation),
             "{name}: a driven system's energy is not conserved: {checks:?}"
         );
         let balance = drive_energy_check(&problem, &compiled, &run).expect("applies");

@@ -5,10 +5,10 @@
 use crate::support::problem;
 use mbd_tutor::equations::{Derivation, LinearSystem, Method};
 use mbd_tutor::mechanics::Form;
-use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::Compiled;
 use mbd_tutor::pipeline::derive_at;
 use mbd_tutor::problem::{load_file, Problem};
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::symbolic::{eval, Values};
 
 fn load(name: &str) -> Problem {
     load_file(&problem(name)).unwrap_or_else(|e| panic!("{name}: {e}"))

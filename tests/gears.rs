@@ -4,13 +4,11 @@
 
 use crate::support::{assert_close, column, problem, run_json, simulate, solve_all, METHODS};
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::System;
+use mbd_tutor::numeric::{Compiled, System};
 use mbd_tutor::pipeline::derive_rows;
-use mbd_tutor::plan::rows::Sum;
+use mbd_tutor::plan::Sum;
 use mbd_tutor::problem::load_file;
-use mbd_tutor::symbolic::linear::linear_split;
-use mbd_tutor::symbolic::{add, mul, pow, Expr, Symbol};
+use mbd_tutor::symbolic::{add, linear_split, mul, pow, Expr, Symbol};
 
 /// `problems/gear-pair-torque.json`.
 const RA: f64 = 0.05;

@@ -3,15 +3,12 @@
 //! constraint force among the unknowns unless asked for, and the q'' of Newton–Euler; the
 //! rolling coin's three equations against a derivation by hand.
 
-use mbd_tutor::equations::{friction_forces, normal_forces};
-use mbd_tutor::equations::{Derivation, Method};
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::System;
+use mbd_tutor::equations::{friction_forces, normal_forces, Derivation, Method};
+use mbd_tutor::numeric::{Compiled, System};
 use mbd_tutor::pipeline::derive_rows;
-use mbd_tutor::plan::rows::Sum;
+use mbd_tutor::plan::Sum;
 use mbd_tutor::problem::{load_file, Problem};
-use mbd_tutor::symbolic::eval::eval;
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol};
 
 use crate::support::Lcg;
 
@@ -65,7 +62,7 @@ fn requested_components(derivation: &Derivation) -> Vec<Symbol> {
     let model = &derivation.model;
     let friction = friction_forces(model);
     let sites = &model.problem.find_reactions;
-    let asked = mbd_tutor::mechanics::sites::reaction_unknowns(model, sites);
+    let asked = mbd_tutor::mechanics::reaction_unknowns(model, sites);
     asked
         .into_iter()
         .filter(|u| !friction.contains(u))
@@ -443,6 +440,6 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
 /// The unknowns of `derivation`'s system as the handout writes them: `T^{Q}`, `F^{P}_{x}`.
 fn unknowns_tex(derivation: &Derivation) -> Vec<String> {
     (derivation.system.unknowns.iter())
-        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
+        .map(|u| mbd_tutor::symbolic::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
         .collect()
 }

@@ -3,10 +3,9 @@
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::pipeline::derive_for_handout;
-use mbd_tutor::plan::rows::Sum;
+use mbd_tutor::plan::Sum;
 use mbd_tutor::problem::load_file;
-use mbd_tutor::symbolic::eval::{eval, Values};
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol, Values};
 
 /// The four-bar (crank a at angle q1 from N.x, coupler b at q1 + q2, rocker c at q3 from the
 /// ground pin Q): the acceleration of R as a point of C less that as a point of B, along

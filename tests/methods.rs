@@ -1,7 +1,7 @@
 //! The three methods against equations derived by hand here or taken from textbooks.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::{Compiled, StateSolution};
+use mbd_tutor::numeric::{Compiled, StateSolution};
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::load;
 

@@ -3,11 +3,9 @@
 
 use crate::support::{problem, run};
 use mbd_tutor::equations::{Derivation, Method};
-use mbd_tutor::mechanics::sites::reaction_unknowns;
+use mbd_tutor::mechanics::reaction_unknowns;
 use mbd_tutor::pipeline::derive_rows;
-use mbd_tutor::plan::choose::blocks;
-use mbd_tutor::plan::rejection::{Reason, SHOWN};
-use mbd_tutor::plan::rows::{Equation, Sum};
+use mbd_tutor::plan::{blocks, Equation, Reason, Sum, SHOWN};
 use mbd_tutor::problem::load_file;
 use mbd_tutor::solution::derived::plan;
 

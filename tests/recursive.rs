@@ -7,10 +7,7 @@
 //! are not compared.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::recursive::is_faster;
-use mbd_tutor::numeric::simulate::simulate;
-use mbd_tutor::numeric::system::System;
+use mbd_tutor::numeric::{is_faster, simulate, Compiled, System};
 use mbd_tutor::pipeline::{derive, Solver};
 use mbd_tutor::problem::{load, load_file, Problem};
 

@@ -6,8 +6,7 @@
 use mbd_tutor::equations::Method;
 use mbd_tutor::pipeline::derive_for_handout;
 use mbd_tutor::problem::load_file;
-use mbd_tutor::symbolic::eval::{eval, Values};
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol, Values};
 
 /// The heavy top about its tip O in the frame A after precession ψ and nutation θ, with
 /// I₁ = I_t + m h² (the transverse moment about O) and ω₃ = φ̇ + ψ̇ cos θ:

@@ -4,7 +4,7 @@
 
 use crate::support::{assert_close, column, problem, simulate};
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
+use mbd_tutor::numeric::Compiled;
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::problem::{load, Problem};
 use mbd_tutor::symbolic::{simplify, Expr, Symbol};
@@ -92,7 +92,7 @@ const TORQUE_FREE: &str = "torque-free-body-speeds";
 
 /// `e` with every named quantity replaced by its definition, nested ones too.
 fn written_out(e: &Expr) -> Expr {
-    mbd_tutor::symbolic::subst::substitute(e, &|s| match s {
+    mbd_tutor::symbolic::substitute(e, &|s| match s {
         Symbol::Defined(d) => Some(written_out(d.value())),
         _ => None,
     })

@@ -1,9 +1,8 @@
 //! `mbd-tutor draw`: the configuration and every free-body diagram as SVG files.
 
 use crate::cli::{Common, DrawArgs};
-use crate::equations::State;
-use crate::equations::{Derivation, Method};
-use crate::numeric::system::System;
+use crate::equations::{Derivation, Method, State};
+use crate::numeric::System;
 use crate::render::draw::{Drawing, View};
 use crate::solution::pictures::draw;
 use crate::Error;

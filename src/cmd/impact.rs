@@ -2,9 +2,9 @@
 //! collision and of the requested reactions, and the kinetic energy before and after.
 
 use crate::cli::{ImpactArgs, SolveFormat};
-use crate::numeric::format::fixed;
-use crate::numeric::system::System;
+use crate::numeric::System;
 use crate::pipeline::ImpactSolution;
+use crate::symbolic::fixed;
 use crate::Error;
 use serde_json::{json, Map, Value};
 

@@ -1,12 +1,11 @@
 //! `mbd-tutor simulate`: integrate the equations of motion and tabulate the motion.
 
 use crate::cli::{SimulateArgs, SimulateFormat};
-use crate::numeric::checks::Check;
-use crate::numeric::format::fixed;
-use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
-use crate::numeric::SolveError;
+use crate::numeric::Check;
+use crate::numeric::{output_times, simulate_with_limits, Limits, SolveError};
 use crate::pipeline::derive;
 use crate::problem::{ProblemError, ProblemErrors};
+use crate::symbolic::fixed;
 use crate::Error;
 
 /// Runs `mbd-tutor simulate`.

@@ -1,12 +1,10 @@
 //! What a derivation is and is asked for: the [`Method`], the [`Request`] ([`Rows`],
 //! [`State`]s), and the [`Derivation`] with its symbolic linear system `A x = b`.
 
-use crate::mechanics::independent::{DependentSpeeds, KeptForces};
-use crate::mechanics::Model;
-use crate::plan::forces::Action;
-use crate::plan::planner::Rejected;
-use crate::plan::rows::Form;
-use crate::plan::rows::{Equation, Inertia, LazyInertia};
+use crate::mechanics::Form;
+use crate::mechanics::{DependentSpeeds, KeptForces, Model};
+use crate::plan::{Action, Rejected};
+use crate::plan::{Equation, Inertia, LazyInertia};
 use crate::symbolic::{Expr, Symbol};
 
 /// The equation-forming method.

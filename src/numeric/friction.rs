@@ -15,9 +15,8 @@
 use super::friction_vectors::{direction_of, dot, first_unit, norm, same_direction, signed_normal};
 use super::linear::solve_linear;
 use crate::equations::Derivation;
-use crate::plan::rows::Sum;
-use crate::symbolic::compile::Program;
-use crate::symbolic::Expr;
+use crate::plan::Sum;
+use crate::symbolic::{Expr, Program};
 use nalgebra::{DMatrix, DVector};
 
 /// A slip speed at or below this (times the largest rate, plus one) is zero: the site is

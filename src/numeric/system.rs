@@ -3,9 +3,9 @@
 //! Whatever forms the equations (Newton-Euler, the Motion Law, Kane's method) implements
 //! [`System`]; the integrator, the simulation and the confirmation checks see only this.
 
-use super::format::fixed;
 use super::friction::{Held, SiteState};
 use super::SolveError;
+use crate::symbolic::fixed;
 use crate::symbolic::ComponentKind;
 use std::fmt;
 

@@ -8,13 +8,10 @@
 
 use super::derive_own;
 use crate::equations::Method;
-use crate::mechanics::vector::own_components;
-use crate::mechanics::Model;
-use crate::numeric::evaluate::{Compiled, Motion};
-use crate::numeric::impact::{CollisionImpulse, Contact};
-use crate::numeric::system::System;
+use crate::mechanics::{own_components, Model};
+use crate::numeric::{CollisionImpulse, Compiled, Contact, Motion, System};
 use crate::problem::{BodyId, Collision, ForcePoint, Problem, ProblemError, ProblemErrors};
-use crate::symbolic::eval::{eval, Values};
+use crate::symbolic::{eval, Values};
 use crate::Error;
 
 /// What the impact does.
@@ -244,7 +241,7 @@ fn collide(
 ) -> Result<CollisionImpulse, Error> {
     let value = |e: &crate::symbolic::Expr| eval(e, values);
     let normal_raw: [f64; 3] = {
-        let n = crate::mechanics::vector::vector_of(&c.normal).components_in(c.on, &model.frames);
+        let n = crate::mechanics::vector_of(&c.normal).components_in(c.on, &model.frames);
         numbers(&n, values)
     };
     let size = normal_raw.iter().map(|x| x * x).sum::<f64>().sqrt();
@@ -256,7 +253,7 @@ fn collide(
             &format!("{}.restitution", c.path),
             format!(
                 "the coefficient of restitution must lie in [0, 1]; it is {}",
-                crate::symbolic::format::fixed(restitution)
+                crate::symbolic::fixed(restitution)
             ),
             "give 0 for a plastic impact (the point stays on the surface), 1 for an elastic one",
         ));
@@ -270,7 +267,7 @@ fn collide(
             format!(
                 "the point of `{}` is not approaching the surface: its normal velocity before the impact is {} (it must be negative)",
                 problem.body_name(c.body),
-                crate::symbolic::format::fixed(approach)
+                crate::symbolic::fixed(approach)
             ),
             "give initial rates that carry the point into the surface, or check the normal's direction (it points out of the surface, towards the body)",
         ));

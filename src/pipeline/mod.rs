@@ -18,9 +18,9 @@
 mod impact;
 mod motion;
 mod run;
-pub mod stability;
+mod stability;
 mod stages;
-pub mod statics;
+mod statics;
 mod statics_answers;
 mod sweep;
 
@@ -28,16 +28,15 @@ pub use impact::{impact, impact_at_start, ImpactSolution};
 pub use motion::frames;
 pub use run::{run, ImpactWorked, Job, Worked};
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
+pub use statics::{Equilibrium, Stability, StabilityKind, Statics};
 pub use sweep::{sweep, Sweep, Swept};
 
 use crate::equations::{Derivation, Method, State};
 use crate::mechanics::Form;
-use crate::numeric::checks::{self, Check};
-use crate::numeric::evaluate::{Compiled, StateSolution};
-use crate::numeric::linearize::{self, Linearization};
-use crate::numeric::simulate::Trajectory;
-use crate::numeric::system::{Evaluation, System};
-use crate::numeric::SolveError;
+use crate::numeric::{
+    jacobian_of, Check, Compiled, Evaluation, Jacobian, Linearization, ModalAnalysis, SolveError,
+    StateSolution, System, Trajectory,
+};
 use crate::problem::Problem;
 use crate::symbolic::budget;
 use crate::Error;
@@ -129,7 +128,7 @@ fn within_budget<T>(
 }
 
 /// The confirmation checks of a run of `solver` from `q0` (see
-/// [`numeric::checks::confirm`](crate::numeric::checks::confirm)), the other two methods
+/// [`numeric::checks::confirm`](crate::numeric::confirm)), the other two methods
 /// derived and solved through this pipeline, with the same recovery. Every method is
 /// checked by its own rows ([`derive_own`]): where Kane's system by composite bodies stood
 /// in for `solver`'s method, that method's own rows are derived for the check.
@@ -180,7 +179,7 @@ pub fn confirm(
         }
     };
     // The checks name each method as a course writes it: "from the Motion Law (…)".
-    checks::confirm(problem, (method.title(), primary), &others, trajectory, q0)
+    crate::numeric::confirm(problem, (method.title(), primary), &others, trajectory, q0)
 }
 
 /// Runs every stage for the worked solution of `problem` by `method`: [`run`] with
@@ -198,10 +197,7 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
 ///
 /// # Errors
 /// When the equations cannot be derived, or the first question that cannot be answered.
-pub fn answers(
-    problem: &Problem,
-    method: Method,
-) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
+pub fn answers(problem: &Problem, method: Method) -> Result<Vec<crate::numeric::Answer>, Error> {
     let derivation = derive(problem, method)?;
     let solver = Solver::fastest(problem, &derivation);
     let after = match &problem.impact {
@@ -213,9 +209,8 @@ pub fn answers(
     let in_rates = problem.without_speeds();
     // The questions of statics are answered at rest, every friction site sticking; a
     // `slips` asked of a moving state is answered with the motion.
-    let at_rest = |q: &crate::problem::Question| {
-        q.kind.is_static() && !crate::numeric::moving_slip::asked(problem, q)
-    };
+    let at_rest =
+        |q: &crate::problem::Question| q.kind.is_static() && !crate::numeric::asked(problem, q);
     let mut given = vec![None; problem.questions.len()];
     if problem.questions.iter().any(at_rest) {
         let statics = statics::Statics::new(&in_rates, method)?;
@@ -245,14 +240,8 @@ pub fn answers(
         Some(l) => l.at(&in_rates, t, q, rates).map_err(|e| e.to_string()),
         None => Err("no linearization".to_string()),
     };
-    crate::numeric::answers::answer_all_with(
-        problem,
-        &solver,
-        Some(&linearize),
-        after.as_deref(),
-        given,
-    )
-    .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
+    crate::numeric::answer_all_with(problem, &solver, Some(&linearize), after.as_deref(), given)
+        .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
 }
 
 /// What is compiled from a derivation's plan, and from the plans made again for special
@@ -393,7 +382,7 @@ impl System for Solver<'_> {
         self.compiled().coordinate_names()
     }
 
-    fn reaction_columns(&self) -> Vec<crate::numeric::system::ReactionColumn> {
+    fn reaction_columns(&self) -> Vec<crate::numeric::ReactionColumn> {
         self.compiled().reaction_columns()
     }
 
@@ -438,7 +427,7 @@ impl System for Solver<'_> {
         t: f64,
         q: &[f64],
         rates: &[f64],
-        held: &[crate::numeric::friction::Held],
+        held: &[crate::numeric::Held],
     ) -> Result<Vec<f64>, SolveError> {
         self.with_plan(t, q, rates, |c| {
             c.motion_held(t, q, rates, Some(held))
@@ -451,8 +440,8 @@ impl System for Solver<'_> {
         t: f64,
         q: &[f64],
         rates: &[f64],
-        held: Option<&[crate::numeric::friction::Held]>,
-    ) -> Result<(Vec<crate::numeric::friction::SiteState>, Vec<f64>), SolveError> {
+        held: Option<&[crate::numeric::Held]>,
+    ) -> Result<(Vec<crate::numeric::SiteState>, Vec<f64>), SolveError> {
         self.with_plan(t, q, rates, |c| c.friction_at(t, q, rates, held))
     }
 }
@@ -461,16 +450,16 @@ impl System for Solver<'_> {
 /// [`Solver`]: where the Motion Law's plan is singular at the state, the state matrix comes
 /// from a plan made for it.
 pub struct Linearizer {
-    linear: linearize::ModalAnalysis,
-    jacobians: Plans<linearize::Jacobian>,
+    linear: ModalAnalysis,
+    jacobians: Plans<Jacobian>,
 }
 
 impl Linearizer {
     /// Compiles the equations of `derivation` for their partial derivatives.
     pub fn new(derivation: &Derivation) -> Linearizer {
         Linearizer {
-            linear: linearize::ModalAnalysis::new(derivation),
-            jacobians: Plans::new(derivation, linearize::jacobian_of(derivation)),
+            linear: ModalAnalysis::new(derivation),
+            jacobians: Plans::new(derivation, jacobian_of(derivation)),
         }
     }
 
@@ -497,7 +486,7 @@ impl Linearizer {
         let state = self.jacobians.run(
             problem,
             (t, &q, &rates),
-            |d| Some(linearize::jacobian_of(d)),
+            |d| Some(jacobian_of(d)),
             |jacobian| jacobian.at(problem, t, &q, &rates),
         )?;
         Ok(self.linear.at(problem, t, &q, &rates, state)?)

@@ -3,8 +3,7 @@
 
 use super::Solver;
 use crate::equations::Derivation;
-use crate::numeric::frame::{frame_count, Frame};
-use crate::numeric::simulate::{simulate_with_limits, Limits};
+use crate::numeric::{frame_count, simulate_with_limits, Frame, Limits};
 use crate::problem::Problem;
 use crate::Error;
 

@@ -3,16 +3,11 @@
 //! written from its [`Worked`] alone.
 
 use super::{answers, confirm, derive, derive_for_handout, impact, Linearizer, Solver};
-use crate::equations::LinearSystem;
-use crate::equations::{Derivation, Method};
-use crate::numeric::answers::Answer;
-use crate::numeric::checks::Check;
-use crate::numeric::evaluate::StateSolution;
-use crate::numeric::frame::{Frame, DEFAULT_FPS};
-use crate::numeric::linearize::Linearization;
-use crate::numeric::simulate::{simulate, Trajectory};
-use crate::numeric::system::System;
-use crate::numeric::SolveError;
+use crate::equations::{Derivation, LinearSystem, Method};
+use crate::numeric::{
+    simulate, Answer, Check, Frame, Linearization, SolveError, StateSolution, System, Trajectory,
+    DEFAULT_FPS,
+};
 use crate::problem::{Problem, QuestionKind};
 use crate::Error;
 

@@ -7,8 +7,7 @@
 //! capsize).
 
 use super::{sweep, Linearizer, Sweep};
-use crate::numeric::answers::{Answer, Quantity};
-use crate::numeric::stability_edge::{name, Edge};
+use crate::numeric::{edge_name as name, Answer, Edge, Quantity};
 use crate::problem::{Problem, ProblemError, ProblemErrors, Question, QuestionKind};
 use crate::Error;
 

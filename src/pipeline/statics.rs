@@ -12,11 +12,7 @@
 
 use super::{derive, Linearizer, Solver};
 use crate::equations::Method;
-use crate::numeric::evaluate::Motion;
-use crate::numeric::friction::Held;
-use crate::numeric::newton::{self, NewtonFailure};
-use crate::numeric::system::System;
-use crate::numeric::SolveError;
+use crate::numeric::{newton_solve, Held, Motion, NewtonFailure, SolveError, System};
 use crate::problem::{Problem, ProblemError, ProblemErrors};
 use crate::Error;
 use nalgebra::{Complex, DMatrix, DVector};
@@ -184,7 +180,7 @@ impl<'p> Statics<'p> {
             q
         };
         let u0 = DVector::from_iterator(self.free.len(), self.free.iter().map(|&i| guess[i]));
-        let root = newton::solve(|u| self.residual(&set(u)), u0)
+        let root = newton_solve(|u| self.residual(&set(u)), u0)
             .map_err(|failure| self.not_found(failure, from))?;
         let (q, rates) = self.at(&set(&root.u))?;
         let motion = self.solver.at_rest(0.0, &q, &rates)?;
@@ -208,7 +204,7 @@ impl<'p> Statics<'p> {
             }
             NewtonFailure::NoRoot { left, iterations } => format!(
                 "no equilibrium found near {from}: after {iterations} Newton iterations the largest second derivative of a free coordinate is still {}",
-                crate::numeric::format::fixed(left)
+                crate::symbolic::fixed(left)
             ),
         };
         let error = ProblemError {
@@ -236,9 +232,8 @@ impl<'p> Statics<'p> {
             Ok(linear) => linear.eigen.iter().map(|e| e.value).collect(),
             Err(error) => {
                 let a = self.state_matrix(q).ok_or(error)?;
-                let mut values =
-                    crate::numeric::linearize::hqr::eigenvalues(&a).unwrap_or_default();
-                crate::numeric::linearize::modes::sort(&mut values);
+                let mut values = crate::numeric::eigenvalues(&a).unwrap_or_default();
+                crate::numeric::sort_modes(&mut values);
                 values
             }
         };

@@ -301,7 +301,7 @@ impl Reader {
             if t < 0.0 {
                 self.diag.hint(
                     &tpath,
-                    format!("the time {} is negative", crate::symbolic::format::fixed(t)),
+                    format!("the time {} is negative", crate::symbolic::fixed(t)),
                     "simulations start at t = 0; give a time of 0 or more",
                 );
                 return None;

@@ -2,14 +2,11 @@
 //! its units (the numbers come from [`crate::numeric::answers`]). The student's handout
 //! restates the questions and leaves the answers blank.
 
-use crate::numeric::answers::{coordinate_unit, Answer, Quantity};
-use crate::numeric::system::ReactionColumn;
+use crate::numeric::{coordinate_unit, Answer, Quantity, ReactionColumn};
 use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
 use crate::render::sections::AnswerView;
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_unit_vector};
-use crate::symbolic::ComponentKind;
+use crate::symbolic::{fixed, latex, latex_unit_vector, ComponentKind};
 
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
@@ -38,7 +35,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .values
                 .iter()
                 .filter(|(found, value)| {
-                    !crate::numeric::answers::is_free_moment(question, found, *value)
+                    !crate::numeric::is_free_moment(question, found, *value)
                 })
                 .collect();
             if shown.len() < answer.values.len() {
@@ -275,7 +272,7 @@ fn value_tex(
     found: &Quantity,
     value: f64,
 ) -> String {
-    let unit = crate::numeric::answers::unit(problem, question, found);
+    let unit = crate::numeric::answer_unit(problem, question, found);
     let symbol = match &question.kind {
         QuestionKind::Value { expression, .. } => {
             // The question's own symbol, else the expression when it reads at a glance; a
@@ -299,7 +296,7 @@ fn value_tex(
             };
             let frame = answer.frame.clone().unwrap_or_else(|| {
                 problem
-                    .body_name(crate::numeric::answer_frame::reaction_frame(problem, *site))
+                    .body_name(crate::numeric::reaction_frame(problem, *site))
                     .to_string()
             });
             let letter = kind.letter();
@@ -319,7 +316,7 @@ fn value_tex(
             let entry = unknowns
                 .iter()
                 .find(|e| {
-                    matches!(found, Quantity::Named(name) if crate::numeric::answers::entry_name(problem, e) == *name)
+                    matches!(found, Quantity::Named(name) if crate::numeric::entry_name(problem, e) == *name)
                 })
                 .copied()
                 .unwrap_or(StateEntry {
@@ -348,9 +345,9 @@ const ROUND_OFF: f64 = 1e-10;
 
 /// The drive of prescribed coordinate `i`, `Q_{\theta}`, as step 5 writes it.
 fn drive_tex(problem: &Problem, i: usize) -> String {
-    latex(&crate::symbolic::Expr::sym(
-        crate::mechanics::constraints::drive_symbol(problem, i),
-    ))
+    latex(&crate::symbolic::Expr::sym(crate::mechanics::drive_symbol(
+        problem, i,
+    )))
 }
 
 /// Whether each reaction component came out as the free bodies draw it: an unknown is

@@ -9,8 +9,7 @@ use crate::equations::Method;
 use crate::problem::{CoordinateKind, Dimension, JointKind, Problem};
 use crate::render::context::{Constant, Coordinate, Named, Plan, Simulation, Solution};
 use crate::render::text::{Markup, MarkupLine, Math};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::{fixed, latex, latex_name};
 
 /// The whole worked solution from what the stages gave (their run, [`crate::Worked`]):
 /// step 1 from the problem, steps 2 to 6 from the derivation, the solution at the initial
@@ -19,7 +18,7 @@ pub fn solution(worked: &crate::Worked) -> Solution {
     let derivation = &worked.derivation;
     let problem = derivation.model.problem;
     let mut solution = setup(problem, derivation.method);
-    crate::symbolic::style::with_style(style_of(problem), || {
+    crate::symbolic::with_style(style_of(problem), || {
         super::derived::fill(&mut solution, worked);
         solution.impact = super::impact::section(worked);
     });
@@ -28,7 +27,7 @@ pub fn solution(worked: &crate::Worked) -> Solution {
 
 /// What the problem alone gives: title, statement and step 1 (also the student's handout).
 pub fn setup(problem: &Problem, method: Method) -> Solution {
-    crate::symbolic::style::with_style(style_of(problem), || setup_styled(problem, method)).0
+    crate::symbolic::with_style(style_of(problem), || setup_styled(problem, method)).0
 }
 
 fn setup_styled(problem: &Problem, method: Method) -> Solution {

@@ -4,8 +4,8 @@
 
 use super::tex::vector_tex;
 use crate::equations::Derivation;
-use crate::mechanics::constraints::RowOrigin;
-use crate::symbolic::print::latex_name_of;
+use crate::mechanics::RowOrigin;
+use crate::symbolic::latex_name_of;
 
 /// The most characters of LaTeX a side of a loop written in the text may take.
 const LONGEST_SIDE: usize = 90;
@@ -47,7 +47,7 @@ pub fn notes(derivation: &Derivation) -> Vec<String> {
             let [r_child, r_parent, v_child, v_parent] = sides;
             let name = |body| latex_name_of(&site.name, model.problem.body_name(body));
             let (child, parent) = (name(site.child), name(site.parent));
-            let point = crate::symbolic::print::latex_name(&site.name);
+            let point = crate::symbolic::latex_name(&site.name);
             Some(format!(
                 "The loop closes at ${point}$, reached through each chain of bodies: ${{}}^{{N}}\\mathbf{{r}}^{{{child}}} = {{}}^{{N}}\\mathbf{{r}}^{{{parent}}}$, that is ${} = {}$. Its components along the rows' directions are the position constraints above. Differentiated, ${{}}^{{N}}\\mathbf{{v}}^{{{child}}} = {{}}^{{N}}\\mathbf{{v}}^{{{parent}}}$, that is ${} = {}$: its components are the velocity constraints.",
                 r_child, r_parent, v_child, v_parent,

@@ -7,7 +7,7 @@ use super::pictures::numbers::{Numbers, P3};
 use crate::mechanics::Model;
 use crate::problem::{Coordinate, Dimension, JointKind, Problem};
 use crate::render::context::Coordinate as CoordinateView;
-use crate::symbolic::format::fixed;
+use crate::symbolic::fixed;
 
 /// A value smaller than this is round-off of zero in a teaching problem's SI units.
 const ROUND_OFF: f64 = 1e-12;

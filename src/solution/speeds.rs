@@ -4,8 +4,7 @@
 use crate::equations::Derivation;
 use crate::render::context::{SpeedRow, SpeedsView};
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::print::latex;
-use crate::symbolic::{add, Expr};
+use crate::symbolic::{add, latex, Expr};
 
 /// The view of the declared speeds, or `None` when the speeds are the rates.
 pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {

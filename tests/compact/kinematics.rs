@@ -70,7 +70,7 @@ fn a_spherical_links_acceleration_is_built_on_its_joint_points() {
 #[test]
 fn a_planar_chain_is_computed_by_names_and_printed_whole() {
     use mbd_tutor::equations::Method;
-    use mbd_tutor::numeric::evaluate::Compiled;
+    use mbd_tutor::numeric::Compiled;
     use mbd_tutor::pipeline::{derive, derive_for_handout};
     let chain = mbd_tutor::problem::load_file(&problem("validation/ten-link-chain")).unwrap();
     let q: Vec<f64> = (0..10).map(|i| 0.3 - 0.17 * f64::from(i)).collect();

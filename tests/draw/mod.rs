@@ -5,13 +5,12 @@
 use crate::support::{all_problems, problem as problem_path};
 use crate::svg_reader::{apply, parse, Element};
 use mbd_tutor::cmd::derivation_at;
-use mbd_tutor::equations::State;
-use mbd_tutor::equations::{Derivation, Method};
+use mbd_tutor::equations::{Derivation, Method, State};
 use mbd_tutor::mechanics::Vector;
 use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem};
 use mbd_tutor::render::draw::{Drawing, View};
 use mbd_tutor::solution::pictures::draw;
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::symbolic::{eval, Values};
 use nalgebra::DMatrix;
 use std::collections::BTreeMap;
 

@@ -7,8 +7,7 @@
 use super::generate::{self, CONSTANTS, COORDINATES, FRAMES};
 use super::harness::check;
 use super::{mutate, problem_texts};
-use mbd_tutor::symbolic::parse::{parse, ParseError, Resolve};
-use mbd_tutor::symbolic::{print, Expr, Symbol};
+use mbd_tutor::symbolic::{latex, parse, plain, Expr, ParseError, Resolve, Symbol};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use serde_json::Value;
@@ -48,8 +47,8 @@ impl Resolve for Scope {
 pub fn parses_or_says_where(text: &str) -> Result<(), TestCaseError> {
     match parse(text, &Scope) {
         Ok(e) => {
-            let _ = print::latex(&e);
-            let _ = print::plain(&e);
+            let _ = latex(&e);
+            let _ = plain(&e);
             Ok(())
         }
         Err(e) => {
@@ -189,7 +188,7 @@ const SMALL: [&str; 5] = [
 #[test]
 fn pipeline_on_mutated_small_problems() {
     use mbd_tutor::equations::Method;
-    use mbd_tutor::numeric::evaluate::Compiled;
+    use mbd_tutor::numeric::Compiled;
     use mbd_tutor::pipeline::derive_rows;
     let originals: Vec<Value> = problem_texts()
         .iter()
@@ -228,8 +227,7 @@ fn pipeline_on_mutated_small_problems() {
 /// A compiled program gives what walking the expression gives: the compiler's sharing,
 /// factoring and reordering change the order of additions, never the value.
 pub fn compiles_to_the_same_value(text: &str) -> Result<(), TestCaseError> {
-    use mbd_tutor::symbolic::compile::Program;
-    use mbd_tutor::symbolic::eval::{eval, Values};
+    use mbd_tutor::symbolic::{eval, Program, Values};
     let Ok(e) = parse(text, &Scope) else {
         return Ok(());
     };

@@ -138,7 +138,7 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
                         "unstable from"
                     },
                     sweep.name,
-                    crate::numeric::simulate::full_precision(*value),
+                    crate::numeric::full_precision(*value),
                 ));
             }
             text

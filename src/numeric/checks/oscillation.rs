@@ -9,10 +9,10 @@
 //! equations are wrong (a sign, a factor, a missing term) the two periods differ.
 
 use crate::numeric::check::{Check, CheckKind, Phrase, PERIOD_TOLERANCE};
-use crate::numeric::format::fixed;
 use crate::numeric::integrate::{integrate, Options};
 use crate::numeric::system::System;
 use crate::numeric::SolveError;
+use crate::symbolic::fixed;
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
 use std::f64::consts::PI;
 
@@ -498,6 +498,7 @@ fn crossings(times: &[f64], x: &[f64], v: &[f64]) -> Vec<Crossing> {
 /// The times where `x` crosses zero going down, found on the cubic Hermite interpolant of
 /// the samples `x` with derivatives `v` at `times` (accurate to the fourth power of the
 /// sample spacing, so the period is measured far more finely than the samples).
+#[cfg(test)]
 pub fn downward_crossings(times: &[f64], x: &[f64], v: &[f64]) -> Vec<f64> {
     crossings(times, x, v).into_iter().map(|c| c.time).collect()
 }

@@ -25,8 +25,7 @@ use crate::numeric::linear::solve_linear;
 use crate::numeric::system::describe_state;
 use crate::numeric::SolveError;
 use crate::problem::Problem;
-use crate::symbolic::compile::Program;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{Expr, Program, Symbol};
 use nalgebra::{DMatrix, DVector};
 
 /// The compiled system, ready to be differentiated at any state.

@@ -18,7 +18,7 @@
 //!
 //! So user text (titles, descriptions, the statement) is only ever a value in the context,
 //! never part of a template's source, and can never be evaluated by Tera or by TeX.
-//! Numbers are formatted before they get here, with [`crate::symbolic::format::fixed`].
+//! Numbers are formatted before they get here, with [`crate::symbolic::fixed`].
 
 use super::text::{FileName, InlineSvg, LatexCode, Markup, MarkupLine, Math, SvgDocument};
 use serde::Serialize;

@@ -6,7 +6,7 @@
 
 use super::numbers::{add, cross, dot, norm, scale, sub, unit, Numbers, P3};
 use super::shapes;
-use crate::mechanics::model::own_components;
+use crate::mechanics::own_components;
 use crate::problem::{BodyId, BodyShape, ConstraintKind, ForcePoint, Inertia, VectorExpr};
 use crate::render::draw::scene::{BodyKind, Shape};
 

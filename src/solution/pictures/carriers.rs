@@ -4,7 +4,7 @@
 
 use super::numbers::{add, cross, dot, scale, unit, Numbers};
 use super::shapes;
-use crate::mechanics::model::own_components;
+use crate::mechanics::own_components;
 use crate::problem::{BodyId, ConstraintKind};
 use crate::render::draw::scene::{BodyKind, Shape};
 

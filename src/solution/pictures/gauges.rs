@@ -7,7 +7,7 @@ use super::shapes;
 use crate::problem::{BodyId, JointKind};
 use crate::render::draw::motion::Gauge;
 use crate::render::draw::scene::Label;
-use crate::symbolic::print::latex;
+use crate::symbolic::latex;
 
 /// One coordinate's mark.
 #[derive(Clone, Debug, PartialEq)]

@@ -17,7 +17,7 @@ mod triads;
 use crate::equations::Derivation;
 use crate::problem::BodyId;
 use crate::render::draw::{layout, Drawing, View};
-use crate::symbolic::format::fixed;
+use crate::symbolic::fixed;
 pub use build::FREE_BODY_LEGEND;
 use numbers::{norm, sub, Numbers};
 
@@ -162,8 +162,7 @@ fn drawings(
         .iter()
         .zip(q)
         .map(|(c, v)| {
-            let symbol =
-                crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(&c.name));
+            let symbol = crate::render::plot::unicode_of(&crate::symbolic::latex_name(&c.name));
             format!("{symbol} = {}", fixed(*v))
         })
         .collect();

@@ -13,8 +13,8 @@
 use super::numbers::{add, dot, norm, scale, sub, unit, Numbers, P3};
 use super::sheets;
 use crate::equations::Derivation;
-use crate::mechanics::sites::SiteKind;
-pub use crate::numeric::frame::{frame_count, Frame, DEFAULT_FPS, MAX_FRAMES};
+use crate::mechanics::SiteKind;
+pub use crate::numeric::{frame_count, Frame, DEFAULT_FPS, MAX_FRAMES};
 use crate::problem::{BodyId, JointKind, LoadKind, Problem};
 use crate::render::draw::motion::{Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
 use crate::render::draw::picture::{Projection, View};
@@ -194,7 +194,7 @@ fn coordinates_of(problem: &Problem, joint: usize, marked: &[usize]) -> Option<S
         .iter()
         .filter(|c| !marked.contains(c))
         .map(|&c| {
-            crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(
+            crate::render::plot::unicode_of(&crate::symbolic::latex_name(
                 &problem.coordinates[c].name,
             ))
         })

@@ -9,8 +9,7 @@ use crate::render::context::{Kinematics, Simulation, StaticsView};
 use crate::render::draw::View;
 use crate::render::text::{MarkupLine, Math};
 use crate::render::Solution;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{substitute, Expr, Symbol};
 
 /// `e` at rest: every rate and second derivative zero.
 pub fn at_rest(e: &Expr) -> Expr {

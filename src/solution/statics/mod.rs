@@ -16,10 +16,9 @@ mod view;
 
 use super::Handout;
 use crate::equations::Method;
-use crate::numeric::evaluate::StateSolution;
-use crate::numeric::SolveError;
-use crate::pipeline::statics::{Equilibrium, Statics};
+use crate::numeric::{SolveError, StateSolution};
 use crate::pipeline::{self, Solver, Worked};
+use crate::pipeline::{Equilibrium, Statics};
 use crate::problem::Problem;
 use crate::render::sections::AnswerView;
 use crate::render::Solution;
