@@ -64,7 +64,7 @@ fn answers_name_a_value_by_its_symbol_and_never_print_round_off() {
         None,
     ));
     let answers = answers_of(&p);
-    let views = mbd_tutor::solution::answers::section(&p, &answers);
+    let views = mbd_tutor::solution::answers_section(&p, &answers);
     // E = m L² θ'²/2 − m g L cos θ at θ = 0.6, θ' = 0.5, by hand.
     let (m, l, g) = (0.5, 0.8, 9.81);
     let e = m * l * l * 0.25 / 2.0 - m * g * l * 0.6f64.cos();
@@ -102,7 +102,7 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
         None,
     ));
     let answers = answers_of(&p);
-    let views = mbd_tutor::solution::answers::section(&p, &answers);
+    let views = mbd_tutor::solution::answers_section(&p, &answers);
     // Hanging at rest: the pin holds the weight, F_y = m g = 4.905 N, F_x = 0.
     let fy = answers[0]
         .values

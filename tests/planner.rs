@@ -7,7 +7,7 @@ use mbd_tutor::mechanics::reaction_unknowns;
 use mbd_tutor::pipeline::derive_rows;
 use mbd_tutor::plan::{blocks, Equation, Reason, Sum, SHOWN};
 use mbd_tutor::problem::load_file;
-use mbd_tutor::solution::derived::plan;
+use mbd_tutor::solution::plan_view as plan;
 
 /// `(free body, equation, unknowns)` of each row, as the plan's table names them.
 fn rows(derivation: &Derivation) -> Vec<(String, String, Vec<String>)> {
@@ -236,7 +236,7 @@ fn explain_verbose_lists_every_rejected_candidate() {
 /// internal axis name such as `N.z` or a reaction's `O.Fx`.
 #[test]
 fn step_5_heads_each_equation_in_math() {
-    use mbd_tutor::solution::row_view::equation_view;
+    use mbd_tutor::solution::equation_view;
     for path in crate::support::all_problems() {
         let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         for method in Method::ALL {

@@ -4,8 +4,8 @@
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::pipeline::derive_for_handout;
-use mbd_tutor::solution::derived::plan;
-use mbd_tutor::solution::row_view::equation_view;
+use mbd_tutor::solution::equation_view;
+use mbd_tutor::solution::plan_view as plan;
 
 fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
     let mut out =

@@ -97,7 +97,7 @@ pub struct DrawArgs {
     #[arg(long, requires = "animate")]
     pub duration: Option<f64>,
     /// With --animate: frames per second.
-    #[arg(long, requires = "animate", default_value_t = crate::solution::pictures::motion::DEFAULT_FPS)]
+    #[arg(long, requires = "animate", default_value_t = crate::numeric::DEFAULT_FPS)]
     pub fps: f64,
 }
 

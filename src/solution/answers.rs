@@ -4,8 +4,8 @@
 
 use crate::numeric::{coordinate_unit, Answer, Quantity, ReactionColumn};
 use crate::problem::{Problem, Question, QuestionAt, QuestionKind, StateEntry};
-use crate::render::sections::AnswerView;
 use crate::render::text::{MarkupLine, Math};
+use crate::render::AnswerView;
 use crate::symbolic::{fixed, latex, latex_unit_vector, ComponentKind};
 
 /// The questions with their answers, in order.
@@ -259,7 +259,7 @@ pub(super) fn number_tex(x: f64) -> String {
 
 /// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
 pub(super) fn unit_tex(unit: &str) -> String {
-    match crate::render::units::unit_tex(unit) {
+    match crate::render::unit_tex(unit) {
         tex if tex.is_empty() => tex,
         tex => format!("\\ {tex}"),
     }
@@ -281,7 +281,7 @@ fn value_tex(
             match question
                 .symbol
                 .as_deref()
-                .and_then(crate::render::safe_math::checked)
+                .and_then(crate::render::checked_math)
             {
                 Some(symbol) => symbol,
                 None if written.len() <= LONGEST_RESTATED => written,

@@ -147,9 +147,7 @@ fn augmented_centres(derivation: &Derivation, bodies: &[BodyId], gain: &str) -> 
             let own = super::tex::shortest_tex(model, v, b);
             format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}}} = {own} + {gain}")
         };
-        if crate::render::math_width::printed_width(&text) as f64
-            > crate::render::line_break::LINE_SYMBOLS
-        {
+        if crate::render::printed_width(&text) as f64 > crate::render::LINE_SYMBOLS {
             return None;
         }
         written.push(text);

@@ -105,7 +105,7 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
                 joint: format!("{} ({})", joint.name, joint.kind.name()),
-                unit_tex: Math::from(crate::render::units::unit_tex(&unit)),
+                unit_tex: Math::from(crate::render::unit_tex(&unit)),
                 initial: fixed(c.initial),
                 initial_rate: fixed(c.rate),
             }
@@ -120,7 +120,7 @@ fn constants(problem: &Problem) -> Vec<Constant> {
         .map(|c| Constant {
             name_tex: Math::from(latex_name(&c.name)),
             value: fixed(c.value),
-            unit_tex: Math::from(crate::render::units::unit_tex(
+            unit_tex: Math::from(crate::render::unit_tex(
                 c.unit.as_deref().unwrap_or_default(),
             )),
             description: MarkupLine::from(c.description.clone().unwrap_or_default()),

@@ -68,10 +68,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         views.push(ConstraintView {
             name_tex: Math::from(format!(
                 "\\text{{the velocity of the contact point at {}}}",
-                crate::render::escape::latex(
-                    &model.sites[site].name,
-                    crate::render::escape::Lines::One
-                )
+                crate::render::escape_latex(&model.sites[site].name, crate::render::Lines::One)
             )),
             level: "definition".into(),
             below: equation_tex.len() > LONGEST_IN_TABLE,

@@ -34,7 +34,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);
         solution.force_definitions =
-            crate::render::where_list::grouped(force_definitions(derivation));
+            crate::render::grouped_definitions(force_definitions(derivation));
         let by_partials;
         (solution.kinematics, by_partials) = super::kinematics::kinematics(derivation);
         solution.spin_frames = super::spin_frames::spin_frames(derivation);
@@ -66,7 +66,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             let rule = super::kinematics::partial_velocity_definition(derivation, by_partials);
             definitions.insert(0, rule);
         }
-        solution.kinematic_definitions = crate::render::where_list::grouped(definitions);
+        solution.kinematic_definitions = crate::render::grouped_definitions(definitions);
         solution.speeds = super::speeds::speeds(derivation);
         // Written with the same abbreviations as the rows it stands beside.
         solution.dependent_speeds =
@@ -102,10 +102,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             value: fixed_or_zero(initial.accelerations[i]),
             unit_tex: match c.kind {
                 crate::problem::CoordinateKind::Angle => {
-                    Math::from(crate::render::units::unit_tex("rad/s^2"))
+                    Math::from(crate::render::unit_tex("rad/s^2"))
                 }
                 crate::problem::CoordinateKind::Distance => {
-                    Math::from(crate::render::units::unit_tex("m/s^2"))
+                    Math::from(crate::render::unit_tex("m/s^2"))
                 }
             },
         })
@@ -218,7 +218,7 @@ fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
 pub fn force_definitions(derivation: &Derivation) -> Vec<Named> {
     let components: Vec<Expr> = action_components(derivation).map(as_shown).collect();
     let (speeds, plain) = speed_indices(derivation);
-    crate::render::by_speed::merged(named_list(named_definitions(&components)), &speeds, &plain)
+    crate::render::merged_by_speed(named_list(named_definitions(&components)), &speeds, &plain)
 }
 
 /// The speeds as a name's index writes them (`q_{1}`, `\\phi`) and as a note does (`q1`).
@@ -347,7 +347,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         Method::Lagrange => super::lagrange::plan_note(derivation),
     };
     Plan {
-        columns: crate::render::plan_table::columns(&rows),
+        columns: crate::render::plan_columns(&rows),
         rows,
         rejected_total: rejected_all.len(),
         rejected,
@@ -376,7 +376,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .filter(|d| !forces.contains(d))
         .collect();
     let (speeds, plain) = speed_indices(derivation);
-    let merged = crate::render::by_speed::merged(named_list(used), &speeds, &plain);
+    let merged = crate::render::merged_by_speed(named_list(used), &speeds, &plain);
     // A definition too long to read is given by what it is; the numbers use the formula.
     merged
         .into_iter()
@@ -449,7 +449,7 @@ fn tensions(
         out.push(InitialValue {
             name_tex: Math::from(latex(&Expr::sym(member.unknown(&site.name)))),
             value: fixed_or_zero(tension),
-            unit_tex: Math::from(crate::render::units::unit_tex("N")),
+            unit_tex: Math::from(crate::render::unit_tex("N")),
         });
     }
     out

@@ -3,7 +3,7 @@
 //! style of [`crate::render::plot`].
 
 use crate::numeric::Linearization;
-use crate::render::plot::{axes, padded_range, unicode_of, PlotError};
+use crate::render::{axes, padded_range, unicode_of, PlotError};
 use crate::symbolic::latex_name;
 use plotters::prelude::*;
 

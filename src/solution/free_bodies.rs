@@ -166,13 +166,13 @@ fn times_mass(g: &str) -> String {
 }
 
 /// The most symbols a row of a free body's table may print in its vector and point columns
-/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](crate::render::draw::tikz::BESIDE_A_TABLE)
+/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](crate::render::draw::BESIDE_A_TABLE)
 /// in small type: a chain link's pin forces in two components.
 const NARROW_TABLE: usize = 36;
 
 /// Whether the free body's table of forces is narrow enough to sit beside its picture.
 pub fn table_is_narrow(body: &FreeBody) -> bool {
-    let width = |tex: &str| crate::render::math_width::printed_width(tex);
+    let width = |tex: &str| crate::render::printed_width(tex);
     let (vectors, points): (Vec<usize>, Vec<usize>) =
         [&body.contact, &body.distance, &body.inertia]
             .into_iter()

@@ -6,8 +6,8 @@ use super::tex::row_heading_tex;
 use crate::equations::{Derivation, Method};
 use crate::numeric::ImpactMode as Mode;
 use crate::problem::Problem;
-use crate::render::impact::{ImpactSection, ImpactStep};
 use crate::render::text::Math;
+use crate::render::{ImpactSection, ImpactStep};
 use crate::symbolic::{
     eval, fixed, latex, latex_collected, latex_name, substitute, Expr, Symbol, Values,
 };

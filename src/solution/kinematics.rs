@@ -6,7 +6,7 @@ use crate::equations::Derivation;
 use crate::mechanics::{same_at, sample_states, Model, Vector};
 use crate::problem::BodyId;
 use crate::render::context::{Kinematics, Named};
-use crate::render::math_width::printed_width;
+use crate::render::printed_width;
 use crate::render::text::Math;
 use crate::symbolic::{
     add, factored, latex_name, linear_split, pull_common_factor, simplify, Expr,
@@ -271,8 +271,7 @@ pub(super) fn partial_velocity_definition(derivation: &Derivation, by: ByPartial
 /// (the second's then empty here).
 fn one_line_if_short(first: String, second: String) -> (String, String) {
     const MOST_OF_A_LINE: usize = 60;
-    if crate::render::math_width::printed_width(&first)
-        + crate::render::math_width::printed_width(&second)
+    if crate::render::printed_width(&first) + crate::render::printed_width(&second)
         <= MOST_OF_A_LINE
     {
         (format!("{first}, \\qquad {second}"), String::new())
@@ -316,7 +315,7 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
 }
 
 /// How many symbols a line of a display holds.
-const LINE: usize = crate::render::line_break::LINE_SYMBOLS as usize;
+const LINE: usize = crate::render::LINE_SYMBOLS as usize;
 
 /// A long acceleration as Kane writes it, `Σ_r ᴺv_r q̈_r + ᴺã`: the q̈ coefficients are the
 /// partial velocities the velocity above is written with (∂a/∂q̈_r = ∂v/∂q̇_r), so only the

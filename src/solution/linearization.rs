@@ -4,8 +4,8 @@
 
 use crate::numeric::{is_stable, Linearization, Shape};
 use crate::problem::Problem;
-use crate::render::sections::{EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow};
 use crate::render::text::Math;
+use crate::render::{EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow};
 use crate::symbolic::{fixed, latex};
 use nalgebra::DMatrix;
 

@@ -7,9 +7,10 @@ use super::tex::row_heading_tex;
 use crate::equations::{Derivation, Method};
 use crate::plan::Sum;
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
-use crate::render::math_width::printed_width;
-use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
 use crate::render::text::Math;
+use crate::render::{
+    pattern_tables, printed_width, value_tables, value_tex, whole_matrix as whole,
+};
 use crate::symbolic::{latex, latex_collected, latex_factored, Expr};
 
 /// The most columns the whole table has.

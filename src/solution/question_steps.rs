@@ -14,7 +14,7 @@
 use crate::equations::{Derivation, LinearSystem};
 use crate::numeric::Answer;
 use crate::problem::{Problem, QuestionKind};
-use crate::render::sections::{AnswerStep, AnswerView};
+use crate::render::{AnswerStep, AnswerView};
 use crate::symbolic::{
     eval, latex, latex_collected, latex_factored as factored, partial, pull_common_factor,
     simplify, substitute, Expr, Node, Symbol, Values,

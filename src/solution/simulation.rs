@@ -3,9 +3,8 @@
 use crate::numeric::{CheckKind, Phrase, SolveError, Trajectory};
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{Check, Plot, Solution};
-use crate::render::markup::{literal, literal_with_numbers};
-use crate::render::plot::{Label, PlotData, Series};
 use crate::render::text::{FileName, LatexCode, MarkupLine, SvgDocument};
+use crate::render::{literal, literal_with_numbers, PlotData, PlotLabel as Label, Series};
 use crate::symbolic::{fixed, latex, latex_name};
 
 /// Fills step 6 of `solution` from the simulation from the (assembled) initial state and its

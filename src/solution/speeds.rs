@@ -19,7 +19,7 @@ pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
         .map(|(r, s)| SpeedRow {
             name_tex: Math::from(latex(&u(r))),
             definition_tex: Math::from(format!("{} = {}", latex(&u(r)), latex(&s.equals))),
-            unit_tex: Math::from(crate::render::units::unit_tex(
+            unit_tex: Math::from(crate::render::unit_tex(
                 s.unit.as_deref().unwrap_or_default(),
             )),
             description: MarkupLine::from(s.description.clone().unwrap_or_default()),

@@ -18,7 +18,7 @@ fn constant_of(question: &Question) -> Option<usize> {
 fn constant_tex(problem: &Problem, constant: usize) -> (String, String) {
     let c = &problem.constants[constant];
     let symbol = crate::symbolic::latex(&crate::symbolic::Expr::constant(&c.name));
-    let unit = crate::render::units::unit_tex(c.unit.as_deref().unwrap_or(""));
+    let unit = crate::render::unit_tex(c.unit.as_deref().unwrap_or(""));
     let unit = if unit.is_empty() {
         unit
     } else {

@@ -132,7 +132,7 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
                 .unit
                 .clone()
                 .unwrap_or_default();
-            let unit = crate::render::units::unit_tex(&unit);
+            let unit = crate::render::unit_tex(&unit);
             let unit = if unit.is_empty() {
                 unit
             } else {

@@ -11,7 +11,7 @@ use crate::mechanics::FrictionSite;
 use crate::numeric::Answer;
 use crate::plan::Sum;
 use crate::problem::{Problem, QuestionKind};
-use crate::render::sections::{AnswerStep, AnswerView};
+use crate::render::{AnswerStep, AnswerView};
 use crate::symbolic::{eval, latex, partial, simplify, Expr, Symbol, Values};
 
 /// The most unknowns the symbolic elimination takes on.
@@ -291,7 +291,7 @@ fn steps_for(
             question,
             &crate::numeric::Quantity::Named(String::new()),
         );
-        let unit = crate::render::units::unit_tex(&unit);
+        let unit = crate::render::unit_tex(&unit);
         let unit = if unit.is_empty() {
             unit
         } else {

@@ -238,7 +238,7 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
     let text = |words: String| {
         format!(
             "\\text{{{}}}",
-            crate::render::escape::latex(&words, crate::render::escape::Lines::One)
+            crate::render::escape_latex(&words, crate::render::Lines::One)
         )
     };
     let sticking = model

@@ -101,13 +101,8 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     let Swept { results, edges } =
         crate::pipeline::sweep(&problem, &linearizer, &sweep, args.at.given.time, &state_of)?;
     if let Some(path) = plot_path {
-        let svg = crate::solution::eigen_plot::sweep_plot(
-            &problem.title,
-            &sweep.name,
-            &sweep.values,
-            &results,
-        )
-        .map_err(|e| Error::Usage(e.to_string()))?;
+        let svg = crate::solution::sweep_plot(&problem.title, &sweep.name, &sweep.values, &results)
+            .map_err(|e| Error::Usage(e.to_string()))?;
         crate::output::write_output(Some(path), svg.as_bytes())?;
     }
     let text = match args.at.format {

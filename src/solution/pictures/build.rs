@@ -6,8 +6,7 @@ use crate::equations::Derivation;
 use crate::mechanics::ComponentKind;
 use crate::plan::{is_external, Action, ActionKind, Source};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
-use crate::render::draw::motion::Gauge;
-use crate::render::draw::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
+use crate::render::draw::{Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 
 /// What every free-body picture's arrows mean.
@@ -238,7 +237,7 @@ impl Setting<'_, '_, '_> {
             kinetic: None,
             down: super::bodies::down(self.numbers),
             legend: String::new(),
-            content: crate::render::draw::fit::CONTENT,
+            content: crate::render::draw::CONTENT,
         }
     }
 

@@ -5,7 +5,7 @@
 
 use super::numbers::{scale, Numbers, P3};
 use crate::mechanics::{Model, ReactionComponent};
-use crate::render::draw::scene::Label;
+use crate::render::draw::Label;
 use crate::symbolic::{latex, Expr};
 
 /// A slip speed below this (m/s) is sticking: the friction is an unknown of the plan.

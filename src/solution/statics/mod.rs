@@ -20,8 +20,7 @@ use crate::numeric::{SolveError, StateSolution};
 use crate::pipeline::{self, Solver, Worked};
 use crate::pipeline::{Equilibrium, Statics};
 use crate::problem::Problem;
-use crate::render::sections::AnswerView;
-use crate::render::Solution;
+use crate::render::{AnswerView, Solution};
 use crate::Error;
 
 /// The statics handout of `problem` by `method`: the worked solution at the equilibrium

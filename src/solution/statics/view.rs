@@ -69,7 +69,7 @@ fn unit_tex(problem: &Problem, i: usize, force: bool) -> String {
     if unit.is_empty() {
         return String::new();
     }
-    format!("\\ {}", crate::render::units::unit_tex(&unit))
+    format!("\\ {}", crate::render::unit_tex(&unit))
 }
 
 fn names_tex(problem: &Problem, indices: &[usize]) -> String {
