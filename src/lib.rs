@@ -14,7 +14,7 @@
 //!    the dependent coordinates and rates; declared generalized speeds, `u = W(q) q'` and
 //!    its inverse; the kinematics of every body (step 4), written with the speeds.
 //! 3. [`plan`]: every force and couple on every body (step 2, the free bodies), the rows
-//!    of equations ([`plan::rows`]), and the Motion Law planner's table (step 3).
+//!    of equations ([`plan::Equation`]), and the Motion Law planner's table (step 3).
 //! 4. [`equations`]: Newton–Euler, the Motion Law and Kane's method, each a
 //!    [`Derivation`](equations::Derivation) with a linear system `A x = b` (step 5). Its
 //!    unknowns are the q'' (the u' of declared speeds) and typed [`Unknown`](symbolic::Unknown)s: reaction components

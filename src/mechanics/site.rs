@@ -40,7 +40,7 @@ pub struct Site {
     /// The reaction components, each an unknown of the site (`O.Fx`).
     pub reactions: Vec<ReactionComponent>,
     /// The directions of the loop rows that no reaction enforces (across a light rod, see
-    /// [`super::light_rod`]), by the rows' component index.
+    /// `super::light_rod`), by the rows' component index.
     pub across: Vec<(usize, Vector)>,
 }
 

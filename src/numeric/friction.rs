@@ -85,7 +85,7 @@ pub struct SiteState {
     /// When the site was at rest and sticking failed its check: that first solution.
     pub failed_stick: Option<FailedStick>,
     /// Whether it sticks together with other sites whose forces statics does not split
-    /// (the split taken is the one farthest from slipping, see [`Friction::solve`]).
+    /// (the split taken is the one farthest from slipping, see `Friction::solve`).
     pub shared: bool,
 }
 

@@ -105,7 +105,7 @@ pub trait System {
     ///
     /// # Errors
     /// [`SolveError::SingularSystem`] when the equations cannot be solved there, or
-    /// [`SolveError::NotFinite`]; the error's `state` should come from [`describe_state`].
+    /// [`SolveError::NotFinite`]; the error's `state` should come from `describe_state`.
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError>;
 
     /// Only the accelerations, for the integrator, which calls this six times a step and

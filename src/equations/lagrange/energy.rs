@@ -161,10 +161,10 @@ pub fn derivatives(model: &Model, simplified: bool) -> Result<Vec<EnergyTerms>, 
         .collect()
 }
 
-/// The derivatives of `T` (of `bodies`) and `V` for coordinate `r` (see [`derivatives`]).
+/// The derivatives of `T` (of `bodies`) and `V` for coordinate `r` (see `derivatives`).
 ///
 /// # Errors
-/// As for [`derivatives`].
+/// As for `derivatives`.
 pub fn derivative(
     model: &Model,
     (bodies, v): (&[BodyMotion], &Expr),

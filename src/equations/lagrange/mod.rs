@@ -42,7 +42,7 @@ pub struct CoordinateTerms {
 }
 
 /// Every coordinate's terms, in coordinate order, with the coordinates' rates (with declared
-/// speeds, the rates are written with the speeds only in the rows, see [`equations`]).
+/// speeds, the rates are written with the speeds only in the rows, see `equations`).
 ///
 /// # Errors
 /// When a load or a velocity holds a function that has no derivative.

@@ -201,7 +201,7 @@ fn mass_matrix(t: &dyn Fn(&[f64]) -> Option<f64>, n: usize) -> Option<DMatrix<f6
 }
 
 /// The small-oscillation check: the period of the equations of motion about the stable
-/// equilibrium nearest `q0`, started along each of the [`MODES_CHECKED`] slowest modes,
+/// equilibrium nearest `q0`, started along each of the `MODES_CHECKED` slowest modes,
 /// against 2π/ω from the energies ([`modes`]). With dampers (one coordinate only) the
 /// motion's decay rate σ is measured too, and its undamped period 2π/sqrt(ω_d² + σ²)
 /// compared.

@@ -175,7 +175,7 @@ impl Compiled {
     }
 
     /// Each friction site at a state, held as `held` (decided when `None`), with the values
-    /// of its switching functions (see [`super::friction::Friction::switching`]).
+    /// of its switching functions (see `super::friction::Friction::switching`).
     ///
     /// # Errors
     /// As for [`Compiled::solve`].

@@ -47,7 +47,7 @@ pub const RECURSIVE_FROM_DOF: usize = 6;
 pub const RECURSIVE_FROM_DOF_PLANAR: usize = 14;
 
 /// Whether the recursive form is the faster for `dof` coordinates, in the plane or not
-/// (see [`RECURSIVE_FROM_DOF`] and [`RECURSIVE_FROM_DOF_PLANAR`]).
+/// (see `RECURSIVE_FROM_DOF` and `RECURSIVE_FROM_DOF_PLANAR`).
 pub fn is_faster(dof: usize, planar: bool) -> bool {
     let from = if planar {
         RECURSIVE_FROM_DOF_PLANAR

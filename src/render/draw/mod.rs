@@ -79,7 +79,7 @@ impl Drawing {
         self.figure_in(tikz::BESIDE_A_TABLE)
     }
 
-    /// The picture to embed in a page above a wide table (see [`tikz::ABOVE_A_TABLE`]).
+    /// The picture to embed in a page above a wide table (see `tikz::ABOVE_A_TABLE`).
     pub fn figure_above_a_table(&self) -> crate::render::context::Figure {
         self.figure_in(tikz::ABOVE_A_TABLE)
     }
