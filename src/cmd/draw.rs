@@ -126,7 +126,7 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
 /// A usage error for a bad `--duration`, `--fps` or `--view`, or too many frames (before
 /// any work); an invalid problem; a simulation that cannot start.
 pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
-    use crate::numeric::frame_count;
+    use crate::pipeline::frame_count;
     use crate::render::draw::motion_svg;
     use crate::solution::motion_picture;
     let view = match &args.view {

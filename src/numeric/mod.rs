@@ -41,7 +41,7 @@ pub use answers::{
 pub use checks::{confirm, modes, small_oscillation, Check, CheckKind, Phrase};
 pub use constraint_checks::drive_energy_check;
 pub use evaluate::{Compiled, Motion, StateSolution};
-pub use frame::{frame_count, Frame, DEFAULT_FPS, MAX_FRAMES};
+pub use frame::{Frame, DEFAULT_FPS};
 pub use friction::{Held, Mode as FrictionMode, SiteState};
 pub use impact::{CollisionImpulse, Contact, Mode as ImpactMode};
 pub use linear::solve_linear;

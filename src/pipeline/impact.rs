@@ -8,11 +8,11 @@
 
 use super::derive_own;
 use crate::equations::Method;
+use crate::error::Error;
 use crate::mechanics::{own_components, Model};
 use crate::numeric::{CollisionImpulse, Compiled, Contact, Motion, System};
 use crate::problem::{BodyId, Collision, ForcePoint, Problem, ProblemError, ProblemErrors};
 use crate::symbolic::{eval, Values};
-use crate::Error;
 
 /// What the impact does.
 #[derive(Clone, Debug, PartialEq)]

@@ -25,13 +25,14 @@ mod statics_answers;
 mod sweep;
 
 pub use impact::{impact, impact_at_start, ImpactSolution};
-pub use motion::frames;
+pub use motion::{frame_count, frames};
 pub use run::{run, ImpactWorked, Job, Worked};
 pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
 pub use statics::{Equilibrium, Stability, StabilityKind, Statics};
 pub use sweep::{sweep, Sweep, Swept};
 
 use crate::equations::{Derivation, Method, State};
+use crate::error::Error;
 use crate::mechanics::Form;
 use crate::numeric::{
     jacobian_of, Check, Compiled, Evaluation, Jacobian, Linearization, ModalAnalysis, SolveError,
@@ -39,7 +40,6 @@ use crate::numeric::{
 };
 use crate::problem::Problem;
 use crate::symbolic::budget;
-use crate::Error;
 use std::cell::RefCell;
 
 /// Reads and validates the problem file at `path`.

@@ -4,12 +4,12 @@
 
 use super::{answers, confirm, derive, derive_for_handout, impact, Linearizer, Solver};
 use crate::equations::{Derivation, LinearSystem, Method};
+use crate::error::Error;
 use crate::numeric::{
     simulate, Answer, Check, Frame, Linearization, SolveError, StateSolution, System, Trajectory,
     DEFAULT_FPS,
 };
 use crate::problem::{Problem, QuestionKind};
-use crate::Error;
 
 /// What a handout asks of the stages besides the derivation and the initial state.
 #[derive(Clone, Debug)]

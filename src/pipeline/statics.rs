@@ -12,9 +12,9 @@
 
 use super::{derive, Linearizer, Solver};
 use crate::equations::Method;
+use crate::error::Error;
 use crate::numeric::{newton_solve, Held, Motion, NewtonFailure, SolveError, System};
 use crate::problem::{Problem, ProblemError, ProblemErrors};
-use crate::Error;
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// How an equilibrium responds to a small disturbance, from its linearization.

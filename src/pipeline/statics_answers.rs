@@ -4,9 +4,9 @@
 //! each trial value's equilibrium found anew.
 
 use super::statics::Statics;
+use crate::error::Error;
 use crate::numeric::{newton_solve, Answer, NewtonFailure, Quantity, SiteState};
 use crate::problem::{Problem, ProblemError, ProblemErrors, Question, QuestionKind};
-use crate::Error;
 use nalgebra::DVector;
 
 /// The value a `slips` answer is named by: |F|/(μ|N|).

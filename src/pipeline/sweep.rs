@@ -2,9 +2,9 @@
 //! the values tried the stability changes, by bisection.
 
 use super::Linearizer;
+use crate::error::Error;
 use crate::numeric::{is_stable, Linearization, ROUND_OFF};
 use crate::problem::Problem;
-use crate::Error;
 
 /// `--sweep NAME=FROM:TO:COUNT`, parsed.
 #[derive(Clone, Debug, PartialEq)]

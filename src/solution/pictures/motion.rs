@@ -379,16 +379,3 @@ fn fit(
     };
     (projection, size)
 }
-
-#[cfg(test)]
-mod tests {
-    use crate::numeric::frame_count;
-
-    #[test]
-    fn absurd_frame_counts_are_refused_before_any_work() {
-        assert_eq!(frame_count(5.0, 25.0).ok(), Some(126));
-        assert!(frame_count(1e6, 25.0).is_err());
-        assert!(frame_count(5.0, 0.0).is_err());
-        assert!(frame_count(f64::NAN, 25.0).is_err());
-    }
-}
