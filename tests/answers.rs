@@ -6,7 +6,7 @@ mod bundled;
 use crate::support::{problem, run};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::{answer_all, Answer};
-use mbd_tutor::pipeline::{derive, Solver};
+use mbd_tutor::pipeline::{derive, Purpose, Solver};
 use mbd_tutor::problem::{load, Problem};
 use serde_json::{json, Value};
 use std::process::{Command, Stdio};
@@ -332,7 +332,7 @@ fn a_steady_motion_that_cannot_be_found_is_an_error_not_a_panic() {
         json!([{ "steady": { "unknowns": ["theta'"] }, "at": { "state": { "theta": 0.5 } } }]),
         None,
     ));
-    let derivation = derive(&p, Method::MotionLaw).expect("derives");
+    let derivation = derive(&p, Method::MotionLaw, Purpose::Numbers).expect("derives");
     let solver = Solver::new(&p, &derivation);
     let e = answer_all(&p, &solver).expect_err("no steady motion");
     assert_eq!(e.path, "find.questions[0]");
@@ -363,7 +363,7 @@ fn a_drive_is_the_torque_of_a_prescribed_motion_and_an_error_elsewhere() {
     );
     // A free coordinate has no drive.
     let free = load_value(&pendulum(json!([{ "drive": "theta" }]), None));
-    let derivation = derive(&free, Method::MotionLaw).expect("derives");
+    let derivation = derive(&free, Method::MotionLaw, Purpose::Numbers).expect("derives");
     let e = answer_all(&free, &Solver::new(&free, &derivation)).expect_err("not prescribed");
     assert_eq!(e.path, "find.questions[0]");
     assert!(e.message.contains("not prescribed"), "{}", e.message);

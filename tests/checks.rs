@@ -5,7 +5,7 @@ use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::{
     modes, small_oscillation, Compiled, Evaluation, ReactionColumn, SolveError, System,
 };
-use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::{load_file, Problem};
 
 fn problem(name: &str) -> Problem {
@@ -57,7 +57,8 @@ impl System for Tampered<'_> {
 #[test]
 fn the_energies_give_the_pendulum_by_hand() {
     let problem = problem("simple-pendulum");
-    let compiled = Compiled::new(&derive_rows(&problem, Method::MotionLaw).expect("derives"));
+    let compiled =
+        Compiled::new(&derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives"));
     let modes = modes(&compiled, &initial(&problem)).expect("a stable equilibrium");
     let (m, l, g) = (0.5, 0.8, 9.81);
     assert!((modes.mass[(0, 0)] - m * l * l).abs() < 1e-12, "{modes:?}");
@@ -80,7 +81,8 @@ fn right_equations_pass_and_a_wrong_sign_fails() {
         let problem = problem(name);
         let q0 = initial(&problem);
         for method in Method::ALL {
-            let compiled = Compiled::new(&derive_rows(&problem, method).expect("derives"));
+            let compiled =
+                Compiled::new(&derive(&problem, method, Purpose::Rows).expect("derives"));
             let check = small_oscillation(&compiled, &q0).expect("applies");
             assert!(check.passed, "{name}, {}: {check:?}", method.name());
             let last = q0.len() - 1;
@@ -106,7 +108,7 @@ fn a_body_free_to_turn_about_the_vertical_has_no_failing_oscillation() {
         .join("tests/checks/body-free-to-turn-about-the-vertical.json");
     let problem = load_file(&path).expect("the problem beside the test");
     let q0 = initial(&problem);
-    let compiled = Compiled::new(&derive_rows(&problem, Method::Kane).expect("derives"));
+    let compiled = Compiled::new(&derive(&problem, Method::Kane, Purpose::Rows).expect("derives"));
     if let Some(check) = small_oscillation(&compiled, &q0) {
         assert!(check.passed, "{check:?}");
     }
@@ -120,7 +122,8 @@ fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() 
     use mbd_tutor::numeric::{confirm, drive_energy_check, simulate};
     for name in ["slider-crank-driven", "collar-on-driven-rod"] {
         let problem = problem(name);
-        let compiled = Compiled::new(&derive_rows(&problem, Method::MotionLaw).expect("derives"));
+        let compiled =
+            Compiled::new(&derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives"));
         let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
         let run =
             simulate(&compiled, &initial(&problem), &rates, &problem.simulate).expect("simulates");

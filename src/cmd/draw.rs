@@ -19,7 +19,7 @@ pub fn derivation_at<'p>(
     method: Method,
     state: &mut State,
 ) -> Result<(Derivation<'p>, Option<Vec<f64>>), Error> {
-    let derivation = crate::pipeline::derive_for_handout(problem, method)?;
+    let derivation = crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)?;
     let solver = crate::pipeline::Solver::new(problem, &derivation);
     solver.assemble(state.t, &mut state.q, &mut state.rates)?;
     let accelerations = solver
@@ -139,8 +139,11 @@ pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
     })?;
     let duration = args.duration.unwrap_or(problem.simulate.duration);
     frame_count(duration, args.fps)?;
-    let derivation =
-        crate::pipeline::derive_for_handout(&problem, super::method(args.common.method))?;
+    let derivation = crate::pipeline::derive(
+        &problem,
+        super::method(args.common.method),
+        crate::pipeline::Purpose::Handout,
+    )?;
     let frames = crate::pipeline::frames(&problem, &derivation, duration, args.fps)?;
     Ok(motion_svg::export(&motion_picture(
         &derivation,

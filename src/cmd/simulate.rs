@@ -3,7 +3,7 @@
 use crate::cli::{SimulateArgs, SimulateFormat};
 use crate::numeric::Check;
 use crate::numeric::{output_times, simulate_with_limits, Limits, SolveError};
-use crate::pipeline::derive;
+use crate::pipeline::{derive, Purpose};
 use crate::problem::{ProblemError, ProblemErrors};
 use crate::symbolic::fixed;
 use crate::Error;
@@ -31,7 +31,11 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     ) {
         return Err(too_many_rows(e));
     }
-    let derivation = derive(&problem, super::method(args.common.method))?;
+    let derivation = derive(
+        &problem,
+        super::method(args.common.method),
+        Purpose::Numbers,
+    )?;
     super::report_constraints(&derivation.model, &[]);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     let mut q0: Vec<f64> = problem.initial_coordinates();

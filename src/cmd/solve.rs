@@ -53,7 +53,7 @@ pub fn run(args: SolveArgs) -> Result<(), Error> {
     let problem = super::load_with_overrides(&args.at.common)?;
     let (mut q, mut rates) = initial_state(&problem, &args.at.given.state)?;
     let method = super::method(args.at.common.method);
-    let derivation = crate::pipeline::derive(&problem, method)?;
+    let derivation = crate::pipeline::derive(&problem, method, crate::pipeline::Purpose::Numbers)?;
     super::report_constraints(&derivation.model, &args.at.given.state);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     solver.assemble(args.at.given.time, &mut q, &mut rates)?;

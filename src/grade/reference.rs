@@ -60,10 +60,16 @@ impl<'p> Reference<'p> {
     /// # Errors
     /// When the equations cannot be derived or solved at any random state.
     pub fn new(problem: &'p Problem, method: Method) -> Result<Reference<'p>, Error> {
-        let derivation = crate::pipeline::derive_for_handout(problem, method)?;
+        let derivation =
+            crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)?;
         let newton_euler = match method {
             Method::NewtonEuler => None,
-            _ => crate::pipeline::derive_for_handout(problem, Method::NewtonEuler).ok(),
+            _ => crate::pipeline::derive(
+                problem,
+                Method::NewtonEuler,
+                crate::pipeline::Purpose::Handout,
+            )
+            .ok(),
         };
         let solver = Solver::new(problem, &derivation);
         let answers = match problem.questions.is_empty() {
@@ -98,7 +104,12 @@ impl<'p> Reference<'p> {
         self.kane
             .get_or_init(|| match self.derivation.method {
                 Method::Kane => None,
-                _ => crate::pipeline::derive_for_handout(self.problem, Method::Kane).ok(),
+                _ => crate::pipeline::derive(
+                    self.problem,
+                    Method::Kane,
+                    crate::pipeline::Purpose::Handout,
+                )
+                .ok(),
             })
             .as_ref()
             .or((self.derivation.method == Method::Kane).then_some(&self.derivation))

@@ -6,7 +6,7 @@
 //! impulses alone and once more per component of the collision's impulse, and the
 //! collision law is solved on the struck point's velocity changes.
 
-use super::derive_own;
+use super::{derive, Purpose};
 use crate::equations::Method;
 use crate::error::Error;
 use crate::mechanics::{own_components, Model};
@@ -182,7 +182,7 @@ pub fn impact(
     let Some(impulsive) = problem.impulsive(q, on_vector) else {
         return Err(refused("impact", "the problem has no `impact`".into(), ""));
     };
-    let derivation = derive_own(&impulsive.problem, method)?;
+    let derivation = derive(&impulsive.problem, method, Purpose::Own)?;
     let mut compiled = Compiled::new(&derivation);
     let base = jumps(&compiled, q)?;
     let mut motion = base.clone();

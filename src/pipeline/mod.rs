@@ -3,7 +3,7 @@
 //! 1. [`load`]: the problem file → a validated [`Problem`] (the commands then apply `--set`
 //!    and their size limits);
 //! 2. [`derive()`]: the model (the kinematics), the free bodies, then the plan and the
-//!    equations of one method, each stage called in turn ([`derive_for`]) → a [`Derivation`];
+//!    equations of one method, each stage called in turn, for a [`Purpose`] → a [`Derivation`];
 //! 3. [`Solver::new`]: the equations compiled for numbers, with the constraints' assembly;
 //!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
 //!    their exact partial derivatives, for the small motions about any state;
@@ -27,7 +27,7 @@ mod sweep;
 pub use impact::{impact, impact_at_start, ImpactSolution};
 pub use motion::{frame_count, frames};
 pub use run::{run, ImpactWorked, Job, Worked};
-pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
+pub use stages::{derive, Purpose};
 pub use statics::{Equilibrium, Stability, StabilityKind, Statics};
 pub use sweep::{sweep, Sweep, Swept};
 
@@ -39,7 +39,6 @@ use crate::numeric::{
     StateSolution, System, Trajectory,
 };
 use crate::problem::Problem;
-use crate::symbolic::budget;
 use std::cell::RefCell;
 
 /// Reads and validates the problem file at `path`.
@@ -50,87 +49,10 @@ pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
     Ok(crate::problem::load_file(path)?)
 }
 
-/// Derives the equations for the numbers of `problem` by `method` in the fastest exact form
-/// ([`Form::Numeric`]): Kane's system by composite bodies wherever it stands in for the
-/// method's own rows ([`derive_fastest`]), the method's own rows elsewhere
-/// ([`derive_own`]). The q'' and the reactions are the same to rounding; the derivation
-/// keeps `method`, so what is printed names the method asked for.
-///
-/// # Errors
-/// When the model cannot be built or the method finds no complete set of equations.
-pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    within_budget(method, || {
-        let fastest = derive_fastest(problem, method)?;
-        if fastest.system_method != method {
-            return Ok(fastest);
-        }
-        most_compact(problem, fastest)
-    })
-}
-
-/// Derives the equations of `problem` by `method` itself, in their most compact form, for
-/// numbers ([`Form::Numeric`]), forming no row that is not compiled
-/// ([`derive_for_numbers`]): what the confirmation checks compare.
-///
-/// # Errors
-/// As for [`derive()`].
-pub fn derive_own(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    within_budget(method, || {
-        most_compact(problem, derive_for_numbers(problem, method, &[])?)
-    })
-}
-
-/// The Motion Law's planar rows whole or by names, whichever compiles shorter; any other
-/// derivation as it is.
-fn most_compact<'p>(
-    problem: &'p Problem,
-    numeric: Derivation<'p>,
-) -> Result<Derivation<'p>, crate::mechanics::MechanicsError> {
-    let method = numeric.method;
-    // Asked last: reading the inertia forces writes them.
-    if method != Method::MotionLaw
-        || !numeric.model.is_planar()
-        || !numeric.inertia().compact.iter().any(|&c| c)
-    {
-        return Ok(numeric);
-    }
-    // The Motion Law's moments multiply each lever arm out against the named parts,
-    // where whole the trigonometric identities collect them: a chain of equal links
-    // comes out smaller whole (3,911 operations against 8,380 for ten), one of unequal
-    // links smaller by names (11,837 against 17,559). Keep the smaller program.
-    let whole = derive_at(problem, method, &[], Form::Handout)?;
-    let size = |d: &Derivation| Compiled::new(d).operation_count();
-    Ok(if size(&whole) < size(&numeric) {
-        whole
-    } else {
-        numeric
-    })
-}
-
-/// As [`derive()`], in the form a worked solution prints ([`Form::Handout`]).
-///
-/// # Errors
-/// As for [`derive()`].
-pub fn derive_for_handout(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    within_budget(method, || derive_at(problem, method, &[], Form::Handout))
-}
-
-/// A derivation counted against the work limit ([`budget`]): past it, the overrun is the
-/// error, whatever the derivation returned.
-fn within_budget<T>(
-    method: Method,
-    derivation: impl FnOnce() -> Result<T, crate::mechanics::MechanicsError>,
-) -> Result<T, Error> {
-    budget::start();
-    let derived = derivation();
-    budget::settle().map_err(|overrun| Error::TooMuchWork { overrun, method })?;
-    Ok(derived?)
-}
-
 /// The confirmation checks of a run of `solver` from `q0` (see
 /// [`numeric::checks::confirm`](crate::numeric::confirm)), the other two methods
 /// derived and solved through this pipeline, with the same recovery. Every method is
-/// checked by its own rows ([`derive_own`]): where Kane's system by composite bodies stood
+/// checked by its own rows ([`Purpose::Own`]): where Kane's system by composite bodies stood
 /// in for `solver`'s method, that method's own rows are derived for the check.
 pub fn confirm(
     problem: &Problem,
@@ -141,12 +63,17 @@ pub fn confirm(
     let method = solver.method();
     let own = match solver.is_own() {
         true => None,
-        false => Some(derive_own(problem, method).map(|d| Solver::new(problem, &d))),
+        false => Some(derive(problem, method, Purpose::Own).map(|d| Solver::new(problem, &d))),
     };
     let derived: Vec<(Method, Result<Derivation, String>)> = Method::ALL
         .iter()
         .filter(|m| **m != method)
-        .map(|&m| (m, derive_own(problem, m).map_err(|e| e.to_string())))
+        .map(|&m| {
+            (
+                m,
+                derive(problem, m, Purpose::Own).map_err(|e| e.to_string()),
+            )
+        })
         .collect();
     let solvers: Vec<(Method, Result<Solver, String>)> = derived
         .iter()
@@ -198,7 +125,7 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
 /// # Errors
 /// When the equations cannot be derived, or the first question that cannot be answered.
 pub fn answers(problem: &Problem, method: Method) -> Result<Vec<crate::numeric::Answer>, Error> {
-    let derivation = derive(problem, method)?;
+    let derivation = derive(problem, method, Purpose::Numbers)?;
     let solver = Solver::fastest(problem, &derivation);
     let after = match &problem.impact {
         Some(_) => Some(impact_at_start(problem, &derivation.model, &solver)?.after),
@@ -225,7 +152,11 @@ pub fn answers(problem: &Problem, method: Method) -> Result<Vec<crate::numeric::
         matches!(q.kind, Period { .. } | Stability { .. })
     });
     let linearizer = match asks_period {
-        true => Some(Linearizer::new(&derive(&in_rates, method)?)),
+        true => Some(Linearizer::new(&derive(
+            &in_rates,
+            method,
+            Purpose::Numbers,
+        )?)),
         false => None,
     };
     // Where the stability changes, from the linearizations over the constant's range.
@@ -301,11 +232,10 @@ impl<T> Plans<T> {
             q: q.to_vec(),
             rates: rates.to_vec(),
         };
-        let Some(compiled) = within_budget(self.method, || {
-            derive_at(problem, self.method, &[state], Form::Numeric)
-        })
-        .ok()
-        .and_then(|derivation| compile(&derivation)) else {
+        let Some(compiled) = derive(problem, self.method, Purpose::At(&[state], Form::Numeric))
+            .ok()
+            .and_then(|derivation| compile(&derivation))
+        else {
             return first;
         };
         let result = f(&compiled);

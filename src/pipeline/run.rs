@@ -2,7 +2,7 @@
 //! for what the handout asks ([`Job`]). The worked solution and the student's version are
 //! written from its [`Worked`] alone.
 
-use super::{answers, confirm, derive, derive_for_handout, impact, Linearizer, Solver};
+use super::{answers, confirm, derive, impact, Linearizer, Purpose, Solver};
 use crate::equations::{Derivation, LinearSystem, Method};
 use crate::error::Error;
 use crate::numeric::{
@@ -91,7 +91,7 @@ pub struct ImpactWorked<'p> {
 /// solution says so.
 pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
     let method = job.method;
-    let derivation = derive_for_handout(problem, method)?;
+    let derivation = derive(problem, method, Purpose::Handout)?;
     let solver = Solver::new(problem, &derivation);
     let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
@@ -146,7 +146,7 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
     if let Some((q, rates)) = &job.linearize_at {
         // Small motions are about the coordinates and their rates, whatever the speeds.
         let in_rates = problem.without_speeds();
-        let linearizer = Linearizer::new(&derive(&in_rates, method)?);
+        let linearizer = Linearizer::new(&derive(&in_rates, method, Purpose::Numbers)?);
         worked.linearization = Some(linearizer.at(&in_rates, 0.0, q, rates)?);
     }
     if !problem.questions.is_empty() {
@@ -167,7 +167,7 @@ fn impulsive_equations<'p>(
 ) -> Option<Result<Derivation<'p>, Error>> {
     let impulsive = problem.impulsive(q0, None)?;
     let kept: &'p Problem = Box::leak(Box::new(impulsive.problem));
-    Some(derive_for_handout(kept, method))
+    Some(derive(kept, method, Purpose::Handout))
 }
 
 /// The frames of the motion over the simulation's duration at the default frame rate,
@@ -187,7 +187,7 @@ fn period_system(problem: &Problem, answers: &[Answer]) -> Option<LinearSystem> 
         return None;
     }
     let in_rates = problem.without_speeds();
-    derive_for_handout(&in_rates, Method::Kane)
+    derive(&in_rates, Method::Kane, Purpose::Handout)
         .ok()
         .map(|d| d.system.clone())
 }

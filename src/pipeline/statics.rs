@@ -10,7 +10,7 @@
 //! ([`super::Linearizer`]): unstable when an eigenvalue has a positive real part, neutral
 //! when one is zero (the linearization decides nothing), stable otherwise.
 
-use super::{derive, Linearizer, Solver};
+use super::{derive, Linearizer, Purpose, Solver};
 use crate::equations::Method;
 use crate::error::Error;
 use crate::numeric::{newton_solve, Held, Motion, NewtonFailure, SolveError, System};
@@ -112,7 +112,7 @@ impl<'p> Statics<'p> {
     /// # Errors
     /// As for [`derive()`].
     pub fn new(problem: &'p Problem, method: Method) -> Result<Statics<'p>, Error> {
-        let derivation = derive(problem, method)?;
+        let derivation = derive(problem, method, Purpose::Numbers)?;
         let dependent = &derivation.model.constraints.dependent;
         let free = (0..problem.coordinates.len())
             .filter(|i| !dependent.contains(i) && problem.coordinates[*i].motion.is_none())

@@ -189,7 +189,7 @@ const SMALL: [&str; 5] = [
 fn pipeline_on_mutated_small_problems() {
     use mbd_tutor::equations::Method;
     use mbd_tutor::numeric::Compiled;
-    use mbd_tutor::pipeline::derive_rows;
+    use mbd_tutor::pipeline::{derive, Purpose};
     let originals: Vec<Value> = problem_texts()
         .iter()
         .filter(|(name, _)| SMALL.iter().any(|s| name.ends_with(&format!("/{s}.json"))))
@@ -210,7 +210,7 @@ fn pipeline_on_mutated_small_problems() {
             };
             DERIVED.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
             let method = [Method::MotionLaw, Method::NewtonEuler, Method::Kane][which % 3];
-            if let Ok(derivation) = derive_rows(&problem, method) {
+            if let Ok(derivation) = derive(&problem, method, Purpose::Rows) {
                 let q: Vec<f64> = problem.initial_coordinates();
                 let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
                 let _ = Compiled::new(&derivation).solve(0.0, &q, &rates);

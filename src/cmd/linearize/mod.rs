@@ -5,7 +5,7 @@ mod report;
 
 use super::solve::initial_state;
 use crate::cli::{LinearizeArgs, SolveFormat as Format};
-use crate::pipeline::{derive, Linearizer, Sweep, Swept};
+use crate::pipeline::{derive, Linearizer, Purpose, Sweep, Swept};
 use crate::problem::Problem;
 use crate::Error;
 use report::{pretty, sweep_text, to_json, to_text};
@@ -82,7 +82,7 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     // Small motions are about the coordinates and their rates, whatever the speeds.
     let problem = super::load_with_overrides(&args.at.common)?.without_speeds();
     let method = super::method(args.at.common.method);
-    let linearizer = Linearizer::new(&derive(&problem, method)?);
+    let linearizer = Linearizer::new(&derive(&problem, method, Purpose::Numbers)?);
     let report_output = if svg_output.is_some() && args.plot.is_none() {
         None
     } else {

@@ -202,7 +202,9 @@ pub fn draw(solution: &mut Solution, worked: &Worked) {
 /// equations.
 pub fn student(problem: &Problem, method: Method, full: &Solution) -> Solution {
     let mut setup = crate::solution::setup(problem, method);
-    if let Ok(derivation) = crate::pipeline::derive_for_handout(problem, method) {
+    if let Ok(derivation) =
+        crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)
+    {
         if let Some(drawing) = crate::solution::pictures::initial_configuration(&derivation) {
             setup.configuration = drawing.figure();
         }

@@ -88,7 +88,7 @@ fn worked_at_rest<'p>(
     equilibrium: &Equilibrium,
     free: &[usize],
 ) -> Result<(Worked<'p>, Vec<bool>, Vec<usize>), Error> {
-    let mut derivation = pipeline::derive_for_handout(at, method)?;
+    let mut derivation = pipeline::derive(at, method, pipeline::Purpose::Handout)?;
     let solver = Solver::new(at, &derivation);
     let found = plan::to_find(&derivation, free);
     plan::replan(&mut derivation, &equilibrium.q, &equilibrium.rates, &found);
