@@ -45,10 +45,8 @@ mod error;
 pub mod grade;
 pub mod input;
 pub mod mechanics;
-#[allow(missing_docs)] // to document item by item
 pub mod numeric;
 pub mod output;
-#[allow(missing_docs)] // to document item by item
 pub mod pipeline;
 pub mod plan;
 pub mod problem;

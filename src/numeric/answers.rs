@@ -34,6 +34,7 @@ pub struct Answer {
     pub time: f64,
     /// The state where the answer holds (for a steady motion, the one found).
     pub q: Vec<f64>,
+    /// The rates at that state.
     pub rates: Vec<f64>,
     /// True when the state was reached by simulating from the initial state.
     pub simulated: bool,

@@ -17,12 +17,18 @@ pub enum ReactionColumn {
     /// The component along unit vector `axis` (0, 1, 2 for x, y, z) of the force or the
     /// moment of the joint or site named `site`.
     Component {
+        /// The joint's or site's name.
         site: String,
+        /// Force or moment.
         kind: ComponentKind,
+        /// The unit vector's index: 0, 1, 2 for x, y, z.
         axis: usize,
     },
     /// The drive of the prescribed coordinate named `coordinate`.
-    Drive { coordinate: String },
+    Drive {
+        /// The prescribed coordinate's name.
+        coordinate: String,
+    },
 }
 
 impl ReactionColumn {

@@ -42,6 +42,7 @@ impl StabilityKind {
 /// The stability of an equilibrium and the eigenvalues it is judged by.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stability {
+    /// Stable, unstable, or neutral (the linearization does not decide).
     pub kind: StabilityKind,
     /// The eigenvalues of the state matrix, (re, im), sorted as `linearize` sorts them.
     pub eigenvalues: Vec<(f64, f64)>,
