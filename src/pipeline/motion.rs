@@ -55,7 +55,7 @@ pub fn frames(
 pub const MAX_FRAMES: usize = 10_000;
 
 /// The number of frames of `duration` seconds at `fps`, or a usage error when the numbers
-/// are not usable or give more than [`MAX_FRAMES`]; checked before any work.
+/// are not usable or give more than `MAX_FRAMES` (10,000); checked before any work.
 ///
 /// # Errors
 /// [`Error::Usage`] naming the flag.
