@@ -6,8 +6,8 @@
 //! Run: `cargo bench --bench chain` (add `-- 10` for one size).
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::pipeline::derive;
+use mbd_tutor::numeric::Compiled;
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::{
     Body, BodyId, Constant, Coordinate, CoordinateKind, Dimension, Inertia, Joint, JointKind,
     Problem, SimulateSettings, VectorExpr,
@@ -124,7 +124,8 @@ fn main() {
             let mut last = None;
             for _ in 0..TRIES {
                 let start = Instant::now();
-                let derivation = derive(&problem, method).expect("the chain derives");
+                let derivation =
+                    derive(&problem, method, Purpose::Numbers).expect("the chain derives");
                 derive_ms = derive_ms.min(start.elapsed().as_secs_f64() * 1e3);
                 let start = Instant::now();
                 let compiled = Compiled::new(&derivation);

@@ -1,4 +1,4 @@
-//! The derivation of a method's own rows (`pipeline::derive_own`), for timing one method
+//! The derivation of a method's own rows (`pipeline::derive` for `Purpose::Own`), for timing one method
 //! against another, or against SymPy, as whole processes side by side.
 //!
 //! Run: `cargo bench --bench derive_own -- PROBLEM.json METHOD [TRIES]`: derives the rows
@@ -6,8 +6,8 @@
 //! problem's initial state.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::pipeline::derive_own;
+use mbd_tutor::numeric::Compiled;
+use mbd_tutor::pipeline::{derive, Purpose};
 use std::time::Instant;
 
 fn main() {
@@ -32,7 +32,7 @@ fn main() {
     let mut last = None;
     for _ in 0..tries.max(1) {
         let start = Instant::now();
-        let derivation = derive_own(&problem, method).unwrap_or_else(|e| {
+        let derivation = derive(&problem, method, Purpose::Own).unwrap_or_else(|e| {
             eprintln!("{e}");
             std::process::exit(1)
         });

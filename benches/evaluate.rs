@@ -10,8 +10,8 @@
 //! Run: `cargo bench --bench evaluate -- PROBLEM.json [METHOD]`
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::pipeline::derive;
+use mbd_tutor::numeric::Compiled;
+use mbd_tutor::pipeline::{derive, Purpose};
 use std::path::Path;
 use std::time::Instant;
 
@@ -46,7 +46,7 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|");
     for method in methods {
         let start = Instant::now();
-        let derivation = match derive(&problem, method) {
+        let derivation = match derive(&problem, method, Purpose::Numbers) {
             Ok(d) => d,
             Err(e) => {
                 println!("| {} | failed: {e} | | | |", method.name());

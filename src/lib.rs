@@ -14,12 +14,12 @@
 //!    the dependent coordinates and rates; declared generalized speeds, `u = W(q) q'` and
 //!    its inverse; the kinematics of every body (step 4), written with the speeds.
 //! 3. [`plan`]: every force and couple on every body (step 2, the free bodies), the rows
-//!    of equations ([`plan::rows`]), and the Motion Law planner's table (step 3).
+//!    of equations ([`plan::Equation`]), and the Motion Law planner's table (step 3).
 //! 4. [`equations`]: Newton–Euler, the Motion Law and Kane's method, each a
 //!    [`Derivation`](equations::Derivation) with a linear system `A x = b` (step 5). Its
 //!    unknowns are the q'' (the u' of declared speeds) and typed [`Unknown`](symbolic::Unknown)s: reaction components
 //!    of sites, drives and multipliers, whose names and LaTeX come from the type. For the
-//!    numbers, Kane's rows are also rebuilt by composite bodies ([`equations::composite`]),
+//!    numbers, Kane's rows are also rebuilt by composite bodies (`equations::composite`),
 //!    and for a large tree built that way alone, never formed.
 //! 5. [`numeric`]: the equations compiled for numbers, the constraints' assembly, the
 //!    linear solve, integration and its checks (steps 5, 6), and linearization.
@@ -45,10 +45,8 @@ mod error;
 pub mod grade;
 pub mod input;
 pub mod mechanics;
-#[allow(missing_docs)] // to document item by item
 pub mod numeric;
 pub mod output;
-#[allow(missing_docs)] // to document item by item
 pub mod pipeline;
 pub mod plan;
 pub mod problem;

@@ -2,10 +2,8 @@
 //! and energy conservation over 10 s: checks that do not rest on any one method.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::simulate::simulate;
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::numeric::{simulate, Compiled, System};
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::load_file;
 
 use crate::support::Lcg;
@@ -33,7 +31,8 @@ fn the_three_methods_agree_at_random_states_of_every_bundled_problem() {
             .iter()
             .map(|&m| {
                 Compiled::new(
-                    &derive_rows(&problem, m).unwrap_or_else(|e| panic!("{}: {e}", path.display())),
+                    &derive(&problem, m, Purpose::Rows)
+                        .unwrap_or_else(|e| panic!("{}: {e}", path.display())),
                 )
             })
             .collect();
@@ -103,7 +102,7 @@ fn energy_drift(name: &str, method: Method) -> f64 {
     problem.simulate.duration = 10.0;
     problem.simulate.output_step = 0.05;
     problem.simulate.tolerance = 1e-10;
-    let compiled = Compiled::new(&derive_rows(&problem, method).expect("derives"));
+    let compiled = Compiled::new(&derive(&problem, method, Purpose::Rows).expect("derives"));
     let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let r0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let run = simulate(&compiled, &q0, &r0, &problem.simulate).expect("runs");

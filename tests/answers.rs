@@ -5,8 +5,8 @@ mod bundled;
 
 use crate::support::{problem, run};
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::answers::{answer_all, Answer};
-use mbd_tutor::pipeline::{derive, Solver};
+use mbd_tutor::numeric::{answer_all, Answer};
+use mbd_tutor::pipeline::{derive, Purpose, Solver};
 use mbd_tutor::problem::{load, Problem};
 use serde_json::{json, Value};
 use std::process::{Command, Stdio};
@@ -64,7 +64,7 @@ fn answers_name_a_value_by_its_symbol_and_never_print_round_off() {
         None,
     ));
     let answers = answers_of(&p);
-    let views = mbd_tutor::solution::answers::section(&p, &answers);
+    let views = mbd_tutor::solution::answers_section(&p, &answers);
     // E = m L² θ'²/2 − m g L cos θ at θ = 0.6, θ' = 0.5, by hand.
     let (m, l, g) = (0.5, 0.8, 9.81);
     let e = m * l * l * 0.25 / 2.0 - m * g * l * 0.6f64.cos();
@@ -102,7 +102,7 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
         None,
     ));
     let answers = answers_of(&p);
-    let views = mbd_tutor::solution::answers::section(&p, &answers);
+    let views = mbd_tutor::solution::answers_section(&p, &answers);
     // Hanging at rest: the pin holds the weight, F_y = m g = 4.905 N, F_x = 0.
     let fy = answers[0]
         .values
@@ -125,7 +125,7 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
 }
 
 fn fixed(x: f64) -> String {
-    mbd_tutor::numeric::format::fixed(x)
+    mbd_tutor::symbolic::fixed(x)
 }
 
 #[test]
@@ -332,7 +332,7 @@ fn a_steady_motion_that_cannot_be_found_is_an_error_not_a_panic() {
         json!([{ "steady": { "unknowns": ["theta'"] }, "at": { "state": { "theta": 0.5 } } }]),
         None,
     ));
-    let derivation = derive(&p, Method::MotionLaw).expect("derives");
+    let derivation = derive(&p, Method::MotionLaw, Purpose::Numbers).expect("derives");
     let solver = Solver::new(&p, &derivation);
     let e = answer_all(&p, &solver).expect_err("no steady motion");
     assert_eq!(e.path, "find.questions[0]");
@@ -363,7 +363,7 @@ fn a_drive_is_the_torque_of_a_prescribed_motion_and_an_error_elsewhere() {
     );
     // A free coordinate has no drive.
     let free = load_value(&pendulum(json!([{ "drive": "theta" }]), None));
-    let derivation = derive(&free, Method::MotionLaw).expect("derives");
+    let derivation = derive(&free, Method::MotionLaw, Purpose::Numbers).expect("derives");
     let e = answer_all(&free, &Solver::new(&free, &derivation)).expect_err("not prescribed");
     assert_eq!(e.path, "find.questions[0]");
     assert!(e.message.contains("not prescribed"), "{}", e.message);

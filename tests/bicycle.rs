@@ -7,9 +7,8 @@
 //! rate θR' = −v/rR, and compared with the paper's −M⁻¹(v C1 q' + (g K0 + v² K2) q).
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::numeric::{Compiled, System};
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::load_file;
 use nalgebra::{Matrix2, Vector2};
 
@@ -82,7 +81,7 @@ impl Bicycle {
         let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("problems/validation/whipple-bicycle.json");
         let problem = load_file(&path).expect("the bicycle loads");
-        let derivation = derive_rows(&problem, method).expect("the bicycle derives");
+        let derivation = derive(&problem, method, Purpose::Rows).expect("the bicycle derives");
         Bicycle {
             names: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
             initial_q: problem.initial_coordinates(),

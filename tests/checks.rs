@@ -2,11 +2,10 @@
 //! derive and fail on the same equations with one thing wrong.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::checks::{modes, small_oscillation};
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::{Evaluation, ReactionColumn, System};
-use mbd_tutor::numeric::SolveError;
-use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::numeric::{
+    modes, small_oscillation, Compiled, Evaluation, ReactionColumn, SolveError, System,
+};
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::{load_file, Problem};
 
 fn problem(name: &str) -> Problem {
@@ -58,7 +57,8 @@ impl System for Tampered<'_> {
 #[test]
 fn the_energies_give_the_pendulum_by_hand() {
     let problem = problem("simple-pendulum");
-    let compiled = Compiled::new(&derive_rows(&problem, Method::MotionLaw).expect("derives"));
+    let compiled =
+        Compiled::new(&derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives"));
     let modes = modes(&compiled, &initial(&problem)).expect("a stable equilibrium");
     let (m, l, g) = (0.5, 0.8, 9.81);
     assert!((modes.mass[(0, 0)] - m * l * l).abs() < 1e-12, "{modes:?}");
@@ -81,7 +81,8 @@ fn right_equations_pass_and_a_wrong_sign_fails() {
         let problem = problem(name);
         let q0 = initial(&problem);
         for method in Method::ALL {
-            let compiled = Compiled::new(&derive_rows(&problem, method).expect("derives"));
+            let compiled =
+                Compiled::new(&derive(&problem, method, Purpose::Rows).expect("derives"));
             let check = small_oscillation(&compiled, &q0).expect("applies");
             assert!(check.passed, "{name}, {}: {check:?}", method.name());
             let last = q0.len() - 1;
@@ -107,7 +108,7 @@ fn a_body_free_to_turn_about_the_vertical_has_no_failing_oscillation() {
         .join("tests/checks/body-free-to-turn-about-the-vertical.json");
     let problem = load_file(&path).expect("the problem beside the test");
     let q0 = initial(&problem);
-    let compiled = Compiled::new(&derive_rows(&problem, Method::Kane).expect("derives"));
+    let compiled = Compiled::new(&derive(&problem, Method::Kane, Purpose::Rows).expect("derives"));
     if let Some(check) = small_oscillation(&compiled, &q0) {
         assert!(check.passed, "{check:?}");
     }
@@ -118,12 +119,11 @@ fn a_body_free_to_turn_about_the_vertical_has_no_failing_oscillation() {
 /// torque 0.1 % off breaks that balance.
 #[test]
 fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() {
-    use mbd_tutor::numeric::checks::confirm;
-    use mbd_tutor::numeric::constraint_checks::drive_energy_check;
-    use mbd_tutor::numeric::simulate::simulate;
+    use mbd_tutor::numeric::{confirm, drive_energy_check, simulate};
     for name in ["slider-crank-driven", "collar-on-driven-rod"] {
         let problem = problem(name);
-        let compiled = Compiled::new(&derive_rows(&problem, Method::MotionLaw).expect("derives"));
+        let compiled =
+            Compiled::new(&derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives"));
         let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
         let run =
             simulate(&compiled, &initial(&problem), &rates, &problem.simulate).expect("simulates");
@@ -138,7 +138,7 @@ fn driven_systems_balance_energy_with_the_drives_work_and_a_wrong_drive_fails() 
         assert!(
             checks
                 .iter()
-                .all(|c| c.kind != mbd_tutor::numeric::check::CheckKind::EnergyConservation),
+                .all(|c| c.kind != mbd_tutor::numeric::CheckKind::EnergyConservation),
             "{name}: a driven system's energy is not conserved: {checks:?}"
         );
         let balance = drive_energy_check(&problem, &compiled, &run).expect("applies");

@@ -5,10 +5,10 @@
 use crate::support::problem;
 use mbd_tutor::equations::{Derivation, LinearSystem, Method};
 use mbd_tutor::mechanics::Form;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::pipeline::derive_at;
+use mbd_tutor::numeric::Compiled;
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::{load_file, Problem};
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::symbolic::{eval, Values};
 
 fn load(name: &str) -> Problem {
     load_file(&problem(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
@@ -16,7 +16,7 @@ fn load(name: &str) -> Problem {
 
 /// Kane's equations for the numbers.
 fn kane(problem: &Problem) -> Derivation<'_> {
-    derive_at(problem, Method::Kane, &[], Form::Numeric).expect("Kane's method derives")
+    derive(problem, Method::Kane, Purpose::At(&[], Form::Numeric)).expect("Kane's method derives")
 }
 
 /// Three generic states: every coordinate and rate moved off its initial value by a
@@ -106,10 +106,10 @@ fn where_the_composite_rows_do_not_apply_the_rows_stay_as_formed() {
     // Nor does any method but Kane's, nor the handout's form.
     let chain = load("validation/spherical-chain-3");
     for method in [Method::MotionLaw, Method::NewtonEuler] {
-        let derivation = derive_at(&chain, method, &[], Form::Numeric).expect("derives");
+        let derivation = derive(&chain, method, Purpose::At(&[], Form::Numeric)).expect("derives");
         assert!(derivation.composite_system.is_none(), "{method:?}");
     }
-    let handout = derive_at(&chain, Method::Kane, &[], Form::Handout).expect("derives");
+    let handout = derive(&chain, Method::Kane, Purpose::At(&[], Form::Handout)).expect("derives");
     assert!(handout.composite_system.is_none());
 }
 
@@ -137,7 +137,7 @@ fn a_deep_chain_compiles_by_composite_bodies_and_a_small_system_as_formed() {
 
 #[test]
 fn every_methods_numbers_of_a_large_tree_are_kanes_composite_system_and_its_own_rows() {
-    use mbd_tutor::pipeline::{derive, derive_own, Solver};
+    use mbd_tutor::pipeline::{derive, Purpose, Solver};
     // A spherical chain, and every joint type with the reactions at O and W asked for.
     for name in ["validation/spherical-chain-3", "validation/all-joints-3d"] {
         let problem = load(name);
@@ -148,10 +148,10 @@ fn every_methods_numbers_of_a_large_tree_are_kanes_composite_system_and_its_own_
             .collect();
         let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate - 0.7).collect();
         for method in [Method::MotionLaw, Method::NewtonEuler] {
-            let fastest = derive(&problem, method).expect("derives");
+            let fastest = derive(&problem, method, Purpose::Numbers).expect("derives");
             assert_eq!(fastest.method, method, "{name}");
             assert_eq!(fastest.system_method, Method::Kane, "{name} {method:?}");
-            let own = derive_own(&problem, method).expect("derives");
+            let own = derive(&problem, method, Purpose::Own).expect("derives");
             assert_eq!(own.system_method, method, "{name} {method:?}");
             let stand_in = Solver::new(&problem, &fastest);
             assert!(!stand_in.is_own() && Solver::new(&problem, &own).is_own());

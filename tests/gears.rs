@@ -4,13 +4,11 @@
 
 use crate::support::{assert_close, column, problem, run_json, simulate, solve_all, METHODS};
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::derive_rows;
-use mbd_tutor::plan::rows::Sum;
+use mbd_tutor::numeric::{Compiled, System};
+use mbd_tutor::pipeline::{derive, Purpose};
+use mbd_tutor::plan::Sum;
 use mbd_tutor::problem::load_file;
-use mbd_tutor::symbolic::linear::linear_split;
-use mbd_tutor::symbolic::{add, mul, pow, Expr, Symbol};
+use mbd_tutor::symbolic::{add, linear_split, mul, pow, Expr, Symbol};
 
 /// `problems/gear-pair-torque.json`.
 const RA: f64 = 0.05;
@@ -149,7 +147,7 @@ fn the_disc_inside_a_cylinder_oscillates_with_the_textbook_period() {
 fn the_disc_inside_a_cylinder_has_kanes_rows_of_its_one_independent_speed() {
     let path = problem("disc-in-cylinder");
     let disc = load_file(&path).expect("valid");
-    let kane = derive_rows(&disc, Method::Kane).expect("derives");
+    let kane = derive(&disc, Method::Kane, Purpose::Rows).expect("derives");
     assert!(kane.kept_forces.is_none(), "{:?}", kane.kept_forces);
     let speeds = kane.dependent_speeds.as_ref().expect("independent speeds");
     let index = |name: &str| {

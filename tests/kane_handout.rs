@@ -23,7 +23,7 @@
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::render::{render, Format};
-use mbd_tutor::symbolic::print::latex_unit_vector;
+use mbd_tutor::symbolic::latex_unit_vector;
 use std::path::Path;
 
 fn markdown(name: &str) -> String {

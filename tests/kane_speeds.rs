@@ -3,15 +3,12 @@
 //! constraint force among the unknowns unless asked for, and the q'' of Newton–Euler; the
 //! rolling coin's three equations against a derivation by hand.
 
-use mbd_tutor::equations::{friction_forces, normal_forces};
-use mbd_tutor::equations::{Derivation, Method};
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::derive_rows;
-use mbd_tutor::plan::rows::Sum;
+use mbd_tutor::equations::{friction_forces, normal_forces, Derivation, Method};
+use mbd_tutor::numeric::{Compiled, System};
+use mbd_tutor::pipeline::{derive, Purpose};
+use mbd_tutor::plan::Sum;
 use mbd_tutor::problem::{load_file, Problem};
-use mbd_tutor::symbolic::eval::eval;
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol};
 
 use crate::support::Lcg;
 
@@ -65,7 +62,7 @@ fn requested_components(derivation: &Derivation) -> Vec<Symbol> {
     let model = &derivation.model;
     let friction = friction_forces(model);
     let sites = &model.problem.find_reactions;
-    let asked = mbd_tutor::mechanics::sites::reaction_unknowns(model, sites);
+    let asked = mbd_tutor::mechanics::reaction_unknowns(model, sites);
     asked
         .into_iter()
         .filter(|u| !friction.contains(u))
@@ -116,7 +113,8 @@ fn check_plan(name: &str, kane: &Derivation) {
 /// Kane's q'' (and reactions and drives) against Newton–Euler's at assembled states near
 /// the initial one.
 fn check_numbers(name: &str, problem: &Problem, kane: &Derivation) {
-    let newton = Compiled::new(&derive_rows(problem, Method::NewtonEuler).expect("derives"));
+    let newton =
+        Compiled::new(&derive(problem, Method::NewtonEuler, Purpose::Rows).expect("derives"));
     let kane = Compiled::new(kane);
     let mut random = Lcg(11);
     let mut checked = 0;
@@ -172,7 +170,8 @@ fn check_numbers(name: &str, problem: &Problem, kane: &Derivation) {
 #[test]
 fn kane_has_one_row_per_independent_speed_and_per_requested_component() {
     for (name, problem) in constrained() {
-        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane =
+            derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{name}: {e}"));
         check_plan(&name, &kane);
         check_numbers(&name, &problem, &kane);
     }
@@ -182,7 +181,8 @@ fn kane_has_one_row_per_independent_speed_and_per_requested_component() {
 fn kane_without_requested_reactions_has_only_the_accelerations_and_drives_as_unknowns() {
     for (name, mut problem) in constrained() {
         problem.find_reactions.clear();
-        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane =
+            derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{name}: {e}"));
         check_plan(&name, &kane);
         let speeds = kane.dependent_speeds.as_ref().expect("speeds");
         let n = problem.coordinates.len();
@@ -258,7 +258,7 @@ fn rolling_disc_by_hand(m: f64, r: f64, g: f64, theta: f64, rates: [f64; 3]) -> 
 #[test]
 fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     let problem = load_file(std::path::Path::new("problems/rolling-coin.json")).expect("valid");
-    let kane = derive_rows(&problem, Method::Kane).expect("derives");
+    let kane = derive(&problem, Method::Kane, Purpose::Rows).expect("derives");
     let speeds = kane.dependent_speeds.as_ref().expect("independent speeds");
     let names = |list: &[usize]| -> Vec<String> {
         let mut names: Vec<String> = list
@@ -272,7 +272,7 @@ fn the_rolling_coin_has_kane_and_levinsons_three_equations() {
     assert_eq!(names(&speeds.dependent), ["x", "y", "z"]);
     let mut plain = problem.clone();
     plain.find_reactions.clear();
-    let reduced = derive_rows(&plain, Method::Kane).expect("derives");
+    let reduced = derive(&plain, Method::Kane, Purpose::Rows).expect("derives");
     assert_eq!(generalized_rows(&reduced), 3);
     let compiled = Compiled::new(&reduced);
     let index = |name: &str| {
@@ -345,7 +345,8 @@ fn with_friction_kane_takes_the_independent_speeds_and_an_auxiliary_row_per_norm
             continue;
         }
         seen += 1;
-        let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let kane =
+            derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(kane.kept_forces.is_none(), "{name}: {:?}", kane.kept_forces);
         for normal in normal_forces(&kane.model) {
             assert!(
@@ -366,7 +367,7 @@ fn with_friction_kane_takes_the_independent_speeds_and_an_auxiliary_row_per_norm
     }
     assert!(seen >= 6, "only {seen} constrained problems with friction");
     let ball = load_file(std::path::Path::new("problems/bowling-ball.json")).expect("valid");
-    let kane = derive_rows(&ball, Method::Kane).expect("derives");
+    let kane = derive(&ball, Method::Kane, Purpose::Rows).expect("derives");
     assert_eq!(generalized_rows(&kane), 3);
 }
 
@@ -378,7 +379,8 @@ fn with_friction_kane_takes_the_independent_speeds_and_an_auxiliary_row_per_norm
 fn where_c_would_not_read_well_it_is_evaluated_at_each_state_and_agrees() {
     let name = "tests/kane_speeds/disc-by-constraint-entries.json";
     let problem = load_file(std::path::Path::new(name)).expect("valid");
-    let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let kane =
+        derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{name}: {e}"));
     let speeds = kane.dependent_speeds.as_ref().expect("u_D = C u_I");
     assert!(speeds.at_each_state, "{name}: C written out");
     assert_eq!(kane.kept_forces, None);
@@ -393,7 +395,8 @@ fn where_c_would_not_read_well_it_is_evaluated_at_each_state_and_agrees() {
 fn the_bicycle_takes_its_three_independent_speeds() {
     let name = "problems/validation/whipple-bicycle.json";
     let problem = load_file(std::path::Path::new(name)).expect("valid");
-    let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let kane =
+        derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{name}: {e}"));
     let speeds = kane.dependent_speeds.as_ref().expect("u_D = C u_I");
     assert!(speeds.at_each_state);
     let names: Vec<&str> = (speeds.independent.iter())
@@ -411,7 +414,8 @@ fn the_bicycle_takes_its_three_independent_speeds() {
 fn a_light_rod_s_closure_carries_its_tension_alone() {
     let name = "problems/slider-crank-light-rod.json";
     let problem = load_file(std::path::Path::new(name)).expect("valid");
-    let kane = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let kane =
+        derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{name}: {e}"));
     let unknowns = unknowns_tex(&kane);
     assert!(unknowns.contains(&"T^{Q}".to_string()), "{unknowns:?}");
     assert!(
@@ -424,7 +428,8 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
     // The Motion Law takes the tension as the unknown too: the crank and rod about O, the
     // piston along its slide, the loop's two rows and the rod's two for P, and no row
     // of the rod's moments, which would say only that nothing acts across it.
-    let motion_law = derive_rows(&problem, Method::MotionLaw).unwrap_or_else(|e| panic!("{e}"));
+    let motion_law =
+        derive(&problem, Method::MotionLaw, Purpose::Rows).unwrap_or_else(|e| panic!("{e}"));
     let unknowns = unknowns_tex(&motion_law);
     assert_eq!(
         unknowns,
@@ -443,6 +448,6 @@ fn a_light_rod_s_closure_carries_its_tension_alone() {
 /// The unknowns of `derivation`'s system as the handout writes them: `T^{Q}`, `F^{P}_{x}`.
 fn unknowns_tex(derivation: &Derivation) -> Vec<String> {
     (derivation.system.unknowns.iter())
-        .map(|u| mbd_tutor::symbolic::print::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
+        .map(|u| mbd_tutor::symbolic::latex(&mbd_tutor::symbolic::Expr::sym(u.clone())))
         .collect()
 }

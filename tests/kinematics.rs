@@ -2,8 +2,7 @@
 
 use mbd_tutor::mechanics::{Model, Vector};
 use mbd_tutor::problem::{load, BodyId, Problem};
-use mbd_tutor::symbolic::eval::{eval, Values};
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol, Values};
 
 /// Values of the constants and of q, q', q'' along q(t) = initial + a sin(w t + p) (and of
 /// the declared speeds and their rates, if any).
@@ -28,7 +27,7 @@ fn values_on_motion(problem: &Problem, t: f64, seed: u64) -> Values {
     values.set(Symbol::Time, t);
     // Declared speeds and their rates along the same motion: u = W(q) q' and its d/dt.
     for (r, speed) in problem.speeds.iter().enumerate() {
-        let du = mbd_tutor::symbolic::diff::time_derivative(&speed.equals).expect("d/dt");
+        let du = mbd_tutor::symbolic::time_derivative(&speed.equals).expect("d/dt");
         values.set(problem.speed_symbol(r, 1), eval(&speed.equals, &values));
         values.set(problem.speed_symbol(r, 2), eval(&du, &values));
     }

@@ -3,14 +3,13 @@
 //! (the four-bar's closure, the rolling coin's floor), and its q'' against the other three
 //! methods at random states of the validation problems.
 
-use mbd_tutor::equations::lagrange::{coordinate_terms, energy, kinetic};
-use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::{Compiled, StateSolution};
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::{derive_for_handout, derive_rows};
+use mbd_tutor::equations::{
+    coordinate_terms, energy_terms, inertia_terms, lagrange_potential, Method,
+};
+use mbd_tutor::numeric::{Compiled, StateSolution, System};
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::{load_file, Problem};
-use mbd_tutor::symbolic::eval::{eval, Values};
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol, Values};
 
 use crate::support::Lcg;
 
@@ -136,12 +135,12 @@ fn near(got: f64, want: f64, what: &str) {
 #[test]
 fn the_double_pendulums_energies_derivatives_and_equations_are_the_hand_derivations() {
     let problem = load_file(&crate::support::problem("double-pendulum-rods")).expect("problem");
-    let derivation = derive_for_handout(&problem, Method::Lagrange).expect("derives");
+    let derivation = derive(&problem, Method::Lagrange, Purpose::Handout).expect("derives");
     let model = &derivation.model;
     let terms = coordinate_terms(model, &derivation.actions, true).expect("terms");
-    let kinetic = mbd_tutor::symbolic::add(energy::bodies(model).iter().map(|b| b.kinetic()));
-    let potential = energy::potential(model);
-    let compiled = Compiled::new(&derive_rows(&problem, Method::Lagrange).expect("rows"));
+    let kinetic = mbd_tutor::symbolic::add(energy_terms(model).iter().map(|b| b.kinetic()));
+    let potential = lagrange_potential(model);
+    let compiled = Compiled::new(&derive(&problem, Method::Lagrange, Purpose::Rows).expect("rows"));
     let mut random = Lcg(59);
     for _ in 0..25 {
         let mut next = || 2.0 * random.next();
@@ -187,7 +186,7 @@ fn the_double_pendulums_energies_derivatives_and_equations_are_the_hand_derivati
 
 /// The solution of `problem` by `method` at a state near the initial one, on the constraints.
 fn solve_near(problem: &Problem, method: Method, random: &mut Lcg) -> Option<StateSolution> {
-    let compiled = Compiled::new(&derive_rows(problem, method).expect("derives"));
+    let compiled = Compiled::new(&derive(problem, method, Purpose::Rows).expect("derives"));
     let mut q: Vec<f64> = problem
         .coordinates
         .iter()
@@ -302,10 +301,10 @@ fn the_kinetic_terms_for_the_numbers_are_those_of_differentiating_t() {
         "problems/validation/spherical-chain-3.json",
     ] {
         let problem = load_file(std::path::Path::new(name)).unwrap_or_else(|e| panic!("{e}"));
-        let derivation = derive_rows(&problem, Method::Lagrange).expect("derives");
+        let derivation = derive(&problem, Method::Lagrange, Purpose::Rows).expect("derives");
         let model = &derivation.model;
         assert!(model.speeds.is_none(), "{name}: declared speeds");
-        let fast = kinetic::inertia_terms(model, derivation.inertia());
+        let fast = inertia_terms(model, derivation.inertia());
         let by_differentiating =
             coordinate_terms(model, &derivation.actions, false).expect("terms");
         let mut random = Lcg(7);

@@ -2,11 +2,10 @@
 //! acceleration loop written out by hand here, and the handout showing the loop first.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::pipeline::derive_for_handout;
-use mbd_tutor::plan::rows::Sum;
+use mbd_tutor::pipeline::{derive, Purpose};
+use mbd_tutor::plan::Sum;
 use mbd_tutor::problem::load_file;
-use mbd_tutor::symbolic::eval::{eval, Values};
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol, Values};
 
 /// The four-bar (crank a at angle q1 from N.x, coupler b at q1 + q2, rocker c at q3 from the
 /// ground pin Q): the acceleration of R as a point of C less that as a point of B, along
@@ -38,7 +37,7 @@ fn loop_by_hand(v: &Values) -> [f64; 2] {
 fn the_four_bars_closure_rows_are_its_acceleration_loop_along_the_couplers_axes() {
     let problem = load_file(&crate::support::problem("four-bar")).expect("problem");
     for method in Method::ALL {
-        let derivation = derive_for_handout(&problem, method).expect("derivation");
+        let derivation = derive(&problem, method, Purpose::Handout).expect("derivation");
         let rows: Vec<_> = derivation
             .rows
             .iter()

@@ -1,8 +1,8 @@
 //! The three methods against equations derived by hand here or taken from textbooks.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::{Compiled, StateSolution};
-use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::numeric::{Compiled, StateSolution};
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::load;
 
 fn solve_all(text: &str, q: &[f64], rates: &[f64]) -> Vec<(Method, StateSolution)> {
@@ -10,8 +10,8 @@ fn solve_all(text: &str, q: &[f64], rates: &[f64]) -> Vec<(Method, StateSolution
     Method::ALL
         .iter()
         .map(|&method| {
-            let derivation =
-                derive_rows(&problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
+            let derivation = derive(&problem, method, Purpose::Rows)
+                .unwrap_or_else(|e| panic!("{}: {e}", method.name()));
             let solution = Compiled::new(&derivation)
                 .solve(0.0, q, rates)
                 .unwrap_or_else(|e| panic!("{e}"));

@@ -2,9 +2,8 @@
 //! system is not, the solver plans again, for `solve`, `simulate` and `explain` alike.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::simulate::simulate;
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::{derive, Solver};
+use mbd_tutor::numeric::{simulate, System};
+use mbd_tutor::pipeline::{derive, Purpose, Solver};
 use mbd_tutor::problem::load_file;
 
 /// The spherical pendulum's Motion Law plan, chosen at its initial state, is singular with
@@ -15,10 +14,9 @@ fn a_plan_singular_at_a_state_is_made_again_there() {
     let problem = load_file(&crate::support::problem("spherical-pendulum")).expect("loads");
     let special = [std::f64::consts::FRAC_PI_2, 0.0, 0.0];
     let rates = [0.2, 1.0, 0.3];
-    let motion_law = derive(&problem, Method::MotionLaw).expect("derives");
+    let motion_law = derive(&problem, Method::MotionLaw, Purpose::Numbers).expect("derives");
     // The plan of the derivation alone fails there: that is what is being recovered from.
-    let direct =
-        mbd_tutor::numeric::evaluate::Compiled::new(&motion_law).solve(0.0, &special, &rates);
+    let direct = mbd_tutor::numeric::Compiled::new(&motion_law).solve(0.0, &special, &rates);
     assert!(
         direct.is_err(),
         "the first plan is expected to be singular there"
@@ -27,7 +25,7 @@ fn a_plan_singular_at_a_state_is_made_again_there() {
     let recovered = solver
         .solve(0.0, &special, &rates)
         .expect("the solver plans again");
-    let newton_euler = derive(&problem, Method::NewtonEuler).expect("derives");
+    let newton_euler = derive(&problem, Method::NewtonEuler, Purpose::Numbers).expect("derives");
     let reference = Solver::new(&problem, &newton_euler)
         .solve(0.0, &special, &rates)
         .expect("Newton-Euler has no plan to make");
@@ -48,13 +46,13 @@ fn a_plan_singular_at_a_state_is_made_again_there() {
 /// and its state matrix, eigenvalues and q'' are Kane's, which has no plan to make.
 #[test]
 fn a_linearization_where_the_plan_is_singular_is_made_with_a_new_plan() {
-    use mbd_tutor::numeric::linearize;
+    use mbd_tutor::numeric::jacobian_of;
     use mbd_tutor::pipeline::Linearizer;
     let problem = load_file(&crate::support::problem("spherical-pendulum")).expect("loads");
     let special = [std::f64::consts::FRAC_PI_2, 0.0, 0.0];
     let rates = [0.2, 1.0, 0.3];
-    let motion_law = derive(&problem, Method::MotionLaw).expect("derives");
-    let direct = linearize::jacobian_of(&motion_law).at(&problem, 0.0, &special, &rates);
+    let motion_law = derive(&problem, Method::MotionLaw, Purpose::Numbers).expect("derives");
+    let direct = jacobian_of(&motion_law).at(&problem, 0.0, &special, &rates);
     assert!(
         matches!(
             direct,
@@ -65,7 +63,7 @@ fn a_linearization_where_the_plan_is_singular_is_made_with_a_new_plan() {
     let recovered = Linearizer::new(&motion_law)
         .at(&problem, 0.0, &special, &rates)
         .expect("the linearizer plans again");
-    let kane = derive(&problem, Method::Kane).expect("derives");
+    let kane = derive(&problem, Method::Kane, Purpose::Numbers).expect("derives");
     let reference = Linearizer::new(&kane)
         .at(&problem, 0.0, &special, &rates)
         .expect("Kane's method has no plan to make");

@@ -3,13 +3,11 @@
 
 use crate::support::{problem, run};
 use mbd_tutor::equations::{Derivation, Method};
-use mbd_tutor::mechanics::sites::reaction_unknowns;
-use mbd_tutor::pipeline::derive_rows;
-use mbd_tutor::plan::choose::blocks;
-use mbd_tutor::plan::rejection::{Reason, SHOWN};
-use mbd_tutor::plan::rows::{Equation, Sum};
+use mbd_tutor::mechanics::reaction_unknowns;
+use mbd_tutor::pipeline::{derive, Purpose};
+use mbd_tutor::plan::{blocks, Equation, Reason, Sum, SHOWN};
 use mbd_tutor::problem::load_file;
-use mbd_tutor::solution::derived::plan;
+use mbd_tutor::solution::plan_view as plan;
 
 /// `(free body, equation, unknowns)` of each row, as the plan's table names them.
 fn rows(derivation: &Derivation) -> Vec<(String, String, Vec<String>)> {
@@ -58,7 +56,7 @@ fn reactions_at(derivation: &Derivation, name: &str) -> Vec<String> {
 #[test]
 fn the_double_pendulum_takes_both_rods_about_o_free_of_every_reaction() {
     let problem = motion_law("double-pendulum-rods");
-    let derivation = derive_rows(&problem, Method::MotionLaw).expect("derives");
+    let derivation = derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives");
     let rows = rows(&derivation);
     // Moments of A + B about O: the pin force at O has no moment there and the one at P
     // is internal, so only q1'' and q2'' remain.
@@ -83,7 +81,7 @@ fn the_double_pendulum_takes_both_rods_about_o_free_of_every_reaction() {
 #[test]
 fn the_four_bar_takes_crank_and_coupler_about_o() {
     let problem = motion_law("four-bar");
-    let derivation = derive_rows(&problem, Method::MotionLaw).expect("derives");
+    let derivation = derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives");
     let rows = rows(&derivation);
     let about_o = rows
         .iter()
@@ -114,7 +112,7 @@ fn the_four_bar_takes_crank_and_coupler_about_o() {
 #[test]
 fn the_spatial_arm_is_solved_one_unknown_per_row() {
     let problem = motion_law("arm-3d-rrp");
-    let derivation = derive_rows(&problem, Method::MotionLaw).expect("derives");
+    let derivation = derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives");
     let n = derivation.rows.len();
     assert_eq!(
         blocks(&derivation.rows, &derivation.system.unknowns),
@@ -147,7 +145,7 @@ fn internal_name(text: &str) -> Option<&str> {
 fn the_handout_shows_a_few_rejected_candidates_in_a_students_notation() {
     for path in crate::support::all_problems() {
         let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let derivation = derive_rows(&problem, Method::MotionLaw).expect("derives");
+        let derivation = derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives");
         let shown = plan(&derivation);
         assert!(
             shown.rejected.len() <= SHOWN,
@@ -183,7 +181,7 @@ fn the_handout_shows_a_few_rejected_candidates_in_a_students_notation() {
 #[test]
 fn the_rejected_reason_names_the_reaction_at_the_next_joint() {
     let problem = motion_law("double-pendulum-rods");
-    let derivation = derive_rows(&problem, Method::MotionLaw).expect("derives");
+    let derivation = derive(&problem, Method::MotionLaw, Purpose::Rows).expect("derives");
     let shown = plan(&derivation);
     let a_about_o = shown
         .rejected
@@ -218,7 +216,7 @@ fn explain_verbose_lists_every_rejected_candidate() {
         String::from_utf8_lossy(&verbose.stdout).into_owned(),
     );
     let problem = load_file(&p).expect("loads");
-    let total = derive_rows(&problem, Method::MotionLaw)
+    let total = derive(&problem, Method::MotionLaw, Purpose::Rows)
         .expect("derives")
         .rejected
         .len();
@@ -240,11 +238,11 @@ fn explain_verbose_lists_every_rejected_candidate() {
 /// internal axis name such as `N.z` or a reaction's `O.Fx`.
 #[test]
 fn step_5_heads_each_equation_in_math() {
-    use mbd_tutor::solution::row_view::equation_view;
+    use mbd_tutor::solution::equation_view;
     for path in crate::support::all_problems() {
         let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         for method in Method::ALL {
-            let derivation = derive_rows(&problem, method).expect("derives");
+            let derivation = derive(&problem, method, Purpose::Rows).expect("derives");
             for row in &derivation.rows {
                 let view = equation_view(&derivation, row);
                 assert!(!view.label_tex.is_empty(), "{}: {view:?}", path.display());

@@ -313,7 +313,7 @@ fn every_statement_item_has_an_answer_numbered_as_the_statement() {
             .to_string_lossy()
             .to_string();
         let items = statement_items(problem.statement.as_deref().unwrap_or(""));
-        let labels = mbd_tutor::solution::answers::labels(&problem);
+        let labels = mbd_tutor::solution::answer_labels(&problem);
         let numbers: Vec<u32> = labels.iter().filter_map(|l| l.parse().ok()).collect();
         if items.is_empty() {
             continue;

@@ -7,11 +7,8 @@
 //! are not compared.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::numeric::recursive::is_faster;
-use mbd_tutor::numeric::simulate::simulate;
-use mbd_tutor::numeric::system::System;
-use mbd_tutor::pipeline::{derive, Solver};
+use mbd_tutor::numeric::{is_faster, simulate, Compiled, System};
+use mbd_tutor::pipeline::{derive, Purpose, Solver};
 use mbd_tutor::problem::{load, load_file, Problem};
 
 fn close(a: &[f64], b: &[f64], tolerance: f64, what: &str) {
@@ -37,7 +34,7 @@ fn bundled_problems_keep_their_numbers_with_the_recursive_form() {
     for path in &paths {
         let problem = load_file(path).expect("valid");
         for method in Method::ALL {
-            let Ok(derivation) = derive(&problem, method) else {
+            let Ok(derivation) = derive(&problem, method, Purpose::Numbers) else {
                 continue;
             };
             let fastest = Solver::fastest(&problem, &derivation);
@@ -99,7 +96,7 @@ fn bundled_problems_with_loads_keep_their_numbers_with_the_recursive_form() {
     ] {
         let problem = without_find(path);
         for method in Method::ALL {
-            let derivation = derive(&problem, method).expect("derives");
+            let derivation = derive(&problem, method, Purpose::Numbers).expect("derives");
             let what = format!("{path} by {}", method.name());
             let ours = Compiled::recursive(&derivation);
             assert!(ours.is_recursive(), "{what}");

@@ -5,8 +5,7 @@ mod layout;
 mod plots;
 mod statement;
 
-use mbd_tutor::render::sample::sample;
-use mbd_tutor::render::{render, Format, Solution};
+use mbd_tutor::render::{render, sample, Format, Solution};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -177,7 +176,7 @@ fn hostile_sample() -> Solution {
         Some(format!("{HOSTILE}\n\n{{% include \"/etc/passwd\" %}} second paragraph").into());
     s.constants[0].description = HOSTILE.into();
     // A unit reaches the page only as `units::unit_tex` sets it.
-    s.constants[0].unit_tex = mbd_tutor::render::units::unit_tex(HOSTILE).into();
+    s.constants[0].unit_tex = mbd_tutor::render::unit_tex(HOSTILE).into();
     s.coordinates[0].description = HOSTILE.into();
     s.free_bodies[0].contact[0].label = HOSTILE.into();
     s.plan.rejected[0].reason = HOSTILE.into();

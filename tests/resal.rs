@@ -4,10 +4,9 @@
 //! of its handouts.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::pipeline::derive_for_handout;
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::load_file;
-use mbd_tutor::symbolic::eval::{eval, Values};
-use mbd_tutor::symbolic::Symbol;
+use mbd_tutor::symbolic::{eval, Symbol, Values};
 
 /// The heavy top about its tip O in the frame A after precession ψ and nutation θ, with
 /// I₁ = I_t + m h² (the transverse moment about O) and ω₃ = φ̇ + ψ̇ cos θ:
@@ -32,7 +31,7 @@ fn by_hand(v: &Values) -> [f64; 3] {
 #[test]
 fn the_heavy_tops_moments_about_its_tip_are_eulers_in_the_frame_that_does_not_spin() {
     let problem = load_file(&crate::support::problem("heavy-symmetric-top")).expect("problem");
-    let derivation = derive_for_handout(&problem, Method::MotionLaw).expect("derivation");
+    let derivation = derive(&problem, Method::MotionLaw, Purpose::Handout).expect("derivation");
     let rows = ["A.x", "A.y", "A.z"].map(|name| {
         derivation
             .rows

@@ -3,9 +3,9 @@
 //! nothing changed; the numbers are checked against references in `library` and `methods`.
 
 use mbd_tutor::equations::Method;
-use mbd_tutor::pipeline::derive_for_handout;
-use mbd_tutor::solution::derived::plan;
-use mbd_tutor::solution::row_view::equation_view;
+use mbd_tutor::pipeline::{derive, Purpose};
+use mbd_tutor::solution::equation_view;
+use mbd_tutor::solution::plan_view as plan;
 
 fn plan_markdown(p: &mbd_tutor::render::context::Plan) -> String {
     let mut out =
@@ -52,8 +52,8 @@ fn plan_tables_and_equations_of_every_problem() {
         let problem = mbd_tutor::problem::load_file(path).unwrap_or_else(|e| panic!("{stem}: {e}"));
         for method in Method::ALL {
             // The handout's form: these are the tables a worked solution prints.
-            let derivation =
-                derive_for_handout(&problem, method).unwrap_or_else(|e| panic!("{stem}: {e}"));
+            let derivation = derive(&problem, method, Purpose::Handout)
+                .unwrap_or_else(|e| panic!("{stem}: {e}"));
             insta::assert_snapshot!(
                 format!("plan-{stem}-{}", method.name()),
                 plan_markdown(&plan(&derivation))

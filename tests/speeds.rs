@@ -4,8 +4,8 @@
 
 use crate::support::{assert_close, column, problem, simulate};
 use mbd_tutor::equations::Method;
-use mbd_tutor::numeric::evaluate::Compiled;
-use mbd_tutor::pipeline::derive_rows;
+use mbd_tutor::numeric::Compiled;
+use mbd_tutor::pipeline::{derive, Purpose};
 use mbd_tutor::problem::{load, Problem};
 use mbd_tutor::symbolic::{simplify, Expr, Symbol};
 
@@ -31,7 +31,7 @@ fn accelerations(
     states: &[(Vec<f64>, Vec<f64>)],
 ) -> Vec<Vec<f64>> {
     let derivation =
-        derive_rows(problem, method).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
+        derive(problem, method, Purpose::Rows).unwrap_or_else(|e| panic!("{}: {e}", method.name()));
     let compiled = Compiled::new(&derivation);
     states
         .iter()
@@ -92,7 +92,7 @@ const TORQUE_FREE: &str = "torque-free-body-speeds";
 
 /// `e` with every named quantity replaced by its definition, nested ones too.
 fn written_out(e: &Expr) -> Expr {
-    mbd_tutor::symbolic::subst::substitute(e, &|s| match s {
+    mbd_tutor::symbolic::substitute(e, &|s| match s {
         Symbol::Defined(d) => Some(written_out(d.value())),
         _ => None,
     })
@@ -105,7 +105,8 @@ fn speed(name: &str, order: u8) -> Expr {
 #[test]
 fn torque_free_body_with_body_frame_speeds_gives_eulers_equations() {
     let problem = load(&read(TORQUE_FREE)).unwrap_or_else(|e| panic!("{e}"));
-    let derivation = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
+    let derivation =
+        derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{e}"));
     let i = |k: usize| Expr::constant(&format!("I{k}"));
     // Euler's equations by hand, F_r + F_r* = 0 with F_r = 0:
     // -I1 u1' + (I2 - I3) u2 u3, and cyclically.
@@ -218,7 +219,8 @@ fn double_pendulum_with_absolute_speeds_prints_the_textbook_form() {
     let text = read("double-pendulum-rods");
     let speeds = serde_json::json!({ "u1": { "equals": "q1'" }, "u2": { "equals": "q1' + q2'" } });
     let problem = with_speeds(&text, Some(speeds));
-    let derivation = derive_rows(&problem, Method::Kane).unwrap_or_else(|e| panic!("{e}"));
+    let derivation =
+        derive(&problem, Method::Kane, Purpose::Rows).unwrap_or_else(|e| panic!("{e}"));
     // The angular velocity of B is u2 itself, not u1 + (u2 - u1).
     let b = problem.body_ids().nth(1).expect("two bodies");
     let omega = derivation.model.bodies[b.0]

@@ -5,10 +5,10 @@
 
 use crate::support::{all_problems, explain, problem};
 use mbd_tutor::equations::Method;
-use mbd_tutor::plan::rows::Sum;
-use mbd_tutor::solution::written_out::written_out;
+use mbd_tutor::plan::Sum;
+use mbd_tutor::solution::written_out;
 use mbd_tutor::symbolic::add;
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::symbolic::{eval, Values};
 
 /// Values of the unknowns of a row, arbitrary but not special.
 fn unknown_value(i: usize) -> f64 {
@@ -41,7 +41,7 @@ fn the_written_terms_sum_to_each_row_of_every_bundled_problem() {
         let Ok(p) = mbd_tutor::problem::load(&text) else {
             continue;
         };
-        let Ok(derivation) = mbd_tutor::pipeline::derive_for_handout(&p, Method::MotionLaw) else {
+        let Ok(derivation) = mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout) else {
             continue;
         };
         let values = values_at_start(&derivation);
@@ -93,7 +93,7 @@ fn the_double_pendulums_moment_row_about_o_is_written_body_by_body() {
     let text = std::fs::read_to_string(problem("double-pendulum-rods")).expect("readable");
     let p = mbd_tutor::problem::load(&text).expect("valid");
     let derivation =
-        mbd_tutor::pipeline::derive_for_handout(&p, Method::MotionLaw).expect("derives");
+        mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout).expect("derives");
     let row = derivation
         .rows
         .iter()

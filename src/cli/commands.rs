@@ -97,7 +97,7 @@ pub struct DrawArgs {
     #[arg(long, requires = "animate")]
     pub duration: Option<f64>,
     /// With --animate: frames per second.
-    #[arg(long, requires = "animate", default_value_t = crate::solution::pictures::motion::DEFAULT_FPS)]
+    #[arg(long, requires = "animate", default_value_t = crate::numeric::DEFAULT_FPS)]
     pub fps: f64,
 }
 
@@ -266,7 +266,7 @@ pub struct SimulateArgs {
     #[arg(long, value_enum, default_value_t)]
     pub format: SimulateFormat,
     /// The most output rows before the run is refused (a guard against gigabytes of output).
-    #[arg(long, default_value_t = crate::numeric::simulate::MAX_ROWS)]
+    #[arg(long, default_value_t = crate::numeric::MAX_ROWS)]
     pub max_rows: usize,
     /// Skip the confirmation checks (energy, agreement of the three methods, period of small
     /// oscillations) that are otherwise reported on standard error.

@@ -2,7 +2,7 @@
 
 use crate::cli::{AnswerArgs, AnswerFormat};
 use crate::output::write_output;
-use crate::solution::answer_sheet;
+use crate::solution::{answer_sheet_json, answer_sheet_text};
 use crate::Error;
 
 /// Runs `mbd-tutor answer`.
@@ -24,8 +24,8 @@ pub fn run(args: AnswerArgs) -> Result<(), Error> {
     }
     let answers = crate::pipeline::answers(&problem, super::method(args.common.method))?;
     let text = match args.format {
-        AnswerFormat::Text => answer_sheet::text(&problem, &answers),
-        AnswerFormat::Json => answer_sheet::json(&problem, &answers),
+        AnswerFormat::Text => answer_sheet_text(&problem, &answers),
+        AnswerFormat::Json => answer_sheet_json(&problem, &answers),
     };
     write_output(args.common.output.as_deref(), text.as_bytes())
 }

@@ -1,11 +1,10 @@
 //! `mbd-tutor draw`: the configuration and every free-body diagram as SVG files.
 
 use crate::cli::{Common, DrawArgs};
-use crate::equations::State;
-use crate::equations::{Derivation, Method};
-use crate::numeric::system::System;
+use crate::equations::{Derivation, Method, State};
+use crate::numeric::System;
 use crate::render::draw::{Drawing, View};
-use crate::solution::pictures::draw;
+use crate::solution::draw_pictures as draw;
 use crate::Error;
 
 /// The derivation whose plan the pictures show and the q'' at the state, if solvable. The
@@ -20,7 +19,7 @@ pub fn derivation_at<'p>(
     method: Method,
     state: &mut State,
 ) -> Result<(Derivation<'p>, Option<Vec<f64>>), Error> {
-    let derivation = crate::pipeline::derive_for_handout(problem, method)?;
+    let derivation = crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)?;
     let solver = crate::pipeline::Solver::new(problem, &derivation);
     solver.assemble(state.t, &mut state.q, &mut state.rates)?;
     let accelerations = solver
@@ -107,7 +106,7 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
         let stem = crate::output::short_stem(&drawing.name);
         let path = directory.join(format!("{stem}.svg"));
         // Names in words (`push_1`) with their subscripts, as the handout writes them.
-        let svg = crate::render::word_scripts::subscripts_in_words(&drawing.svg(""));
+        let svg = crate::render::subscripts_in_words(&drawing.svg(""));
         crate::output::write_output(Some(&path), svg.as_bytes())?;
         if args.tikz {
             let path = directory.join(format!("{stem}.tex"));
@@ -115,7 +114,7 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
         }
     }
     if let Some(svg) = motion {
-        let svg = crate::render::word_scripts::subscripts_in_words(&svg);
+        let svg = crate::render::subscripts_in_words(&svg);
         crate::output::write_output(Some(&directory.join("motion.svg")), svg.as_bytes())?;
     }
     Ok(())
@@ -127,8 +126,9 @@ pub fn run(args: DrawArgs) -> Result<(), Error> {
 /// A usage error for a bad `--duration`, `--fps` or `--view`, or too many frames (before
 /// any work); an invalid problem; a simulation that cannot start.
 pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
+    use crate::pipeline::frame_count;
     use crate::render::draw::motion_svg;
-    use crate::solution::pictures::motion;
+    use crate::solution::motion_picture;
     let view = match &args.view {
         Some(text) => View::parse(text).map_err(Error::Usage)?,
         None => View::Isometric,
@@ -138,11 +138,14 @@ pub fn motion_svg(args: &DrawArgs) -> Result<String, Error> {
         ..args.common.clone()
     })?;
     let duration = args.duration.unwrap_or(problem.simulate.duration);
-    motion::frame_count(duration, args.fps)?;
-    let derivation =
-        crate::pipeline::derive_for_handout(&problem, super::method(args.common.method))?;
+    frame_count(duration, args.fps)?;
+    let derivation = crate::pipeline::derive(
+        &problem,
+        super::method(args.common.method),
+        crate::pipeline::Purpose::Handout,
+    )?;
     let frames = crate::pipeline::frames(&problem, &derivation, duration, args.fps)?;
-    Ok(motion_svg::export(&motion::motion(
+    Ok(motion_svg::export(&motion_picture(
         &derivation,
         &frames,
         view,

@@ -94,7 +94,7 @@ fn explain_version(
     let (text, mut solution) = rendered(args, problem_path, output, student)?;
     if let Some(path) = output.filter(|_| args.format == FormatArg::Markdown) {
         // Only Markdown refers to plot files.
-        render::plots_drawn::draw(&mut solution.simulation.plots, Format::Markdown);
+        render::draw_plots(&mut solution.simulation.plots, Format::Markdown);
         // The plots first, so that a document never refers to a plot that is not there.
         let directory = path.parent().unwrap_or(Path::new(""));
         for plot in solution
@@ -145,7 +145,7 @@ pub fn rendered(
         every_rejected: args.verbose,
     };
     let mut solution = if args.statics {
-        solution::statics::handout(&problem, job.method, student, &settings)?
+        solution::statics_handout(&problem, job.method, student, &settings)?
     } else {
         // Every stage runs here, once; the handout is written from what they gave.
         match (student, crate::pipeline::run(&problem, &job)) {

@@ -2,9 +2,9 @@
 //! collision and of the requested reactions, and the kinetic energy before and after.
 
 use crate::cli::{ImpactArgs, SolveFormat};
-use crate::numeric::format::fixed;
-use crate::numeric::system::System;
+use crate::numeric::System;
 use crate::pipeline::ImpactSolution;
+use crate::symbolic::fixed;
 use crate::Error;
 use serde_json::{json, Map, Value};
 
@@ -16,7 +16,7 @@ use serde_json::{json, Map, Value};
 pub fn run(args: ImpactArgs) -> Result<(), Error> {
     let problem = super::load_with_overrides(&args.common)?;
     let method = super::method(args.common.method);
-    let derivation = crate::pipeline::derive(&problem, method)?;
+    let derivation = crate::pipeline::derive(&problem, method, crate::pipeline::Purpose::Numbers)?;
     super::report_constraints(&derivation.model, &[]);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     let solution = crate::pipeline::impact_at_start(&problem, &derivation.model, &solver)?;

@@ -1,12 +1,11 @@
 //! `mbd-tutor simulate`: integrate the equations of motion and tabulate the motion.
 
 use crate::cli::{SimulateArgs, SimulateFormat};
-use crate::numeric::checks::Check;
-use crate::numeric::format::fixed;
-use crate::numeric::simulate::{output_times, simulate_with_limits, Limits};
-use crate::numeric::SolveError;
-use crate::pipeline::derive;
+use crate::numeric::Check;
+use crate::numeric::{output_times, simulate_with_limits, Limits, SolveError};
+use crate::pipeline::{derive, Purpose};
 use crate::problem::{ProblemError, ProblemErrors};
+use crate::symbolic::fixed;
 use crate::Error;
 
 /// Runs `mbd-tutor simulate`.
@@ -32,7 +31,11 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     ) {
         return Err(too_many_rows(e));
     }
-    let derivation = derive(&problem, super::method(args.common.method))?;
+    let derivation = derive(
+        &problem,
+        super::method(args.common.method),
+        Purpose::Numbers,
+    )?;
     super::report_constraints(&derivation.model, &[]);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     let mut q0: Vec<f64> = problem.initial_coordinates();

@@ -1,9 +1,9 @@
 //! `mbd-tutor solve`: the q'' and the requested reactions at one state.
 
 use crate::cli::{parse_assignments, SolveArgs, SolveFormat};
-use crate::numeric::evaluate::StateSolution;
-use crate::numeric::format::fixed;
-use crate::numeric::system::System;
+use crate::numeric::StateSolution;
+use crate::numeric::System;
+use crate::symbolic::fixed;
 use crate::Error;
 use serde_json::{json, Map, Value};
 
@@ -28,7 +28,7 @@ pub fn initial_state(
                 .iter()
                 .map(|c| c.name.as_str())
                 .collect();
-            let hint = crate::symbolic::hint::closest(base, names.iter().copied())
+            let hint = crate::symbolic::closest(base, names.iter().copied())
                 .map(|c| format!(" (did you mean `{c}`?)"))
                 .unwrap_or_else(|| format!(" (the coordinates are {})", names.join(", ")));
             return Err(Error::Usage(format!(
@@ -53,7 +53,7 @@ pub fn run(args: SolveArgs) -> Result<(), Error> {
     let problem = super::load_with_overrides(&args.at.common)?;
     let (mut q, mut rates) = initial_state(&problem, &args.at.given.state)?;
     let method = super::method(args.at.common.method);
-    let derivation = crate::pipeline::derive(&problem, method)?;
+    let derivation = crate::pipeline::derive(&problem, method, crate::pipeline::Purpose::Numbers)?;
     super::report_constraints(&derivation.model, &args.at.given.state);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
     solver.assemble(args.at.given.time, &mut q, &mut rates)?;
@@ -190,7 +190,7 @@ fn to_text(
         out.push_str("\nreaction (parent on child; moment about the joint point)\n");
         for (joint, f, m) in &s.reactions {
             let v = |x: &[f64; 3]| format!("[{}, {}, {}]", fixed(x[0]), fixed(x[1]), fixed(x[2]));
-            let frame = crate::numeric::answer_frame::reaction_frame_named(problem, joint);
+            let frame = crate::numeric::reaction_frame_named(problem, joint);
             out.push_str(&format!(
                 "{joint}: force {}  moment {}  ({frame}'s unit vectors)\n",
                 v(f),

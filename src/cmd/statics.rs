@@ -3,10 +3,10 @@
 //! site's |F|/(μ|N|).
 
 use crate::cli::{parse_assignments, SolveFormat, StaticsArgs};
-use crate::numeric::format::fixed;
-use crate::numeric::friction::SiteState;
-use crate::pipeline::statics::{Equilibrium, Statics};
+use crate::numeric::SiteState;
+use crate::pipeline::{Equilibrium, Statics};
 use crate::problem::Problem;
+use crate::symbolic::fixed;
 use crate::Error;
 use serde_json::{json, Map, Value};
 

@@ -12,7 +12,7 @@ use crate::cli::{Common, ExplainArgs, VariantsArgs};
 use crate::output::write_output;
 use crate::problem::variant::{self, SplitMix64};
 use crate::problem::{Problem, ProblemError, ProblemErrors};
-use crate::solution::answer_sheet::{csv_cell, full, key_columns};
+use crate::solution::{csv_cell, full_digits as full, key_columns};
 use crate::Error;
 use std::path::Path;
 

@@ -1,9 +1,8 @@
 //! The constraint rows (closures, contacts, prescribed motion, a friction site's sticking)
 //! at the acceleration level, as equations every method's system takes as given.
 
-use crate::mechanics::constraints::ConstraintRow;
-use crate::mechanics::MechanicsError;
-use crate::plan::rows::{Equation, Groups, Sum};
+use crate::mechanics::{ConstraintRow, MechanicsError};
+use crate::plan::{Equation, Groups, Sum};
 use crate::symbolic::{Expr, Symbol};
 
 /// The constraint rows at the acceleration level, as equations.
@@ -19,7 +18,7 @@ pub(super) fn constraint_equations<'r>(
                 name: row.name.clone(),
             },
             direction: None,
-            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
+            unknowns: crate::plan::unknowns_in(&expression, unknowns),
             groups: Groups {
                 contact: expression.clone(),
                 distance: Expr::zero(),

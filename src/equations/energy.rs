@@ -1,8 +1,6 @@
 //! Kinetic and potential energy, for the simulation's confirmation.
 
-use crate::mechanics::frames::apply;
-use crate::mechanics::vector::dot3;
-use crate::mechanics::Model;
+use crate::mechanics::{apply, dot3, Model};
 use crate::problem::{BodyId, LoadKind};
 use crate::symbolic::{add, pow, Expr};
 
@@ -39,7 +37,7 @@ pub fn potential(model: &Model) -> Expr {
     let half = Expr::ratio(1, 2);
     let mut terms = Vec::new();
     if let Some(g) = &problem.gravity {
-        let g = crate::mechanics::model::vector_of(g);
+        let g = crate::mechanics::vector_of(g);
         for &body in &model.order {
             let state = &model.bodies[body.0];
             terms.push(-(&state.mass * &g.dot(&state.center.position, &model.frames)));

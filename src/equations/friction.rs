@@ -4,9 +4,8 @@
 //! exchange them for the sliding law where the site slips ([`crate::numeric::friction`]).
 
 use crate::mechanics::{MechanicsError, Model};
-use crate::plan::rows::{Equation, Sum};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::plan::{Equation, Sum};
+use crate::symbolic::{linear_split, Expr, Symbol};
 
 /// Adds every friction site to the sites whose reactions are unknowns: friction is
 /// proportional to the normal force, so neither Newton–Euler nor the Motion Law may leave
@@ -56,7 +55,7 @@ pub fn sliding_stand_ins(model: &Model, given: &[Equation], unknowns: &[Symbol])
                 expression = &expression - &(&c * &Expr::sym(normal.clone()));
             }
             let equation = &mut stand_ins[at];
-            equation.unknowns = crate::plan::rows::unknowns_in(&expression, unknowns);
+            equation.unknowns = crate::plan::unknowns_in(&expression, unknowns);
             equation.groups.contact = expression.clone();
             equation.expression = expression;
         }

@@ -7,13 +7,13 @@
 //! `kane`, `lagrange`; the unknowns common to all and the assembly of `A x = b` are
 //! written once for them.
 
-pub mod composite;
+mod composite;
 mod constraint_rows;
 mod derive;
-pub mod energy;
+mod energy;
 mod friction;
-pub mod kane;
-pub mod lagrange;
+mod kane;
+mod lagrange;
 mod motion_law;
 mod newton_euler;
 mod on_motion;
@@ -21,6 +21,19 @@ mod system;
 mod unknowns;
 mod write;
 
+pub use composite::SMALL_PROGRAM;
 pub use derive::derive;
+pub use energy::{kinetic, potential};
 pub use friction::{friction_forces, normal_forces};
+pub use kane::loads::generalized_forces as kane_generalized_forces;
+pub use kane::{equations as kane_equations, partials};
+pub use lagrange::coordinate_terms;
+pub use lagrange::energy::{
+    bodies as energy_terms, derivative as energy_derivative, potential as lagrange_potential,
+};
+pub use lagrange::forces::{
+    generalized_forces as lagrange_generalized_forces, joint_generalized_forces,
+    partial_velocities, role, virtual_work, Role,
+};
+pub use lagrange::kinetic::inertia_terms;
 pub use system::{Derivation, LinearSystem, Method, Request, Rows, State};

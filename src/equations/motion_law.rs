@@ -4,16 +4,13 @@
 //! asks it for a complete set and widens the unknowns where none exists.
 
 use super::unknowns::{Inputs, MethodRows, Setup};
-use crate::mechanics::sites::reaction_unknowns;
-use crate::mechanics::Model;
-use crate::plan::planner::{self, Choice};
-use crate::plan::rows::Equation;
-use crate::symbolic::eval::Values;
-use crate::symbolic::Symbol;
+use crate::mechanics::{reaction_unknowns, Model};
+use crate::plan::{candidates, choose, Choice, Equation};
+use crate::symbolic::{Symbol, Values};
 
 /// The Motion Law's view of the model: a light rod's closure carries its tension alone.
 pub(super) fn view(model: &mut Model) {
-    crate::mechanics::light_rod::closures_along_rods(model);
+    crate::mechanics::closures_along_rods(model);
 }
 
 /// The Motion Law's rows: those its planner chooses, the constraint rows placed among them.
@@ -23,14 +20,14 @@ pub(super) fn rows(inputs: &Inputs, setup: Setup) -> MethodRows {
     let mut reaction_joints = setup.reaction_joints.clone();
     let mut unknowns = setup.unknowns.clone();
     let reactions = reaction_unknowns(model, all_sites);
-    let candidates = planner::candidates(model, inputs.actions, &reactions);
+    let candidates = candidates(model, inputs.actions, &reactions);
     let required: Vec<Values> = (inputs.states.iter())
         .map(|s| model.values_at(s.t, &s.q, &s.rates))
         .collect();
     // The plan for `wanted` unknowns, with `given` rows (the constraints).
     let plan = |wanted: &[Symbol], given: &[Equation]| {
         let candidates = candidates.clone();
-        planner::choose(
+        choose(
             model,
             inputs.actions,
             inputs.inertia,

@@ -3,8 +3,7 @@
 
 use super::unknowns::{Inputs, MethodRows, Setup};
 use crate::mechanics::Model;
-use crate::plan::forces::Action;
-use crate::plan::rows::{resultant, unit_direction, unknowns_in, Equation, Inertia, Sum};
+use crate::plan::{resultant, unit_direction, unknowns_in, Action, Equation, Inertia, Sum};
 use crate::problem::BodyId;
 use crate::symbolic::Symbol;
 
@@ -34,10 +33,9 @@ pub fn equations(
                 })
                 .collect::<Vec<_>>()
         });
-        let length =
-            |rows: &Vec<(crate::plan::rows::Direction, crate::plan::rows::Groups)>| -> usize {
-                rows.iter().map(|(_, g)| g.total().operation_count()).sum()
-            };
+        let length = |rows: &Vec<(crate::plan::Direction, crate::plan::Groups)>| -> usize {
+            rows.iter().map(|(_, g)| g.total().operation_count()).sum()
+        };
         let [in_ground, in_body] = candidates;
         let chosen = if length(&in_body) < length(&in_ground) {
             in_body

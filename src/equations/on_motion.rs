@@ -1,13 +1,13 @@
 //! Rows written with the relations that hold on the motion but not identically (a gear's
 //! unit line of centres has unit length wherever its distance constraint holds, see
-//! [`crate::mechanics::constraints::Constraints::relations`]). The rows are evaluated
+//! [`crate::mechanics::Constraints::relations`]). The rows are evaluated
 //! only there, so they give the same numbers, and read as a textbook writes them: Kane's
 //! row of a disc rolling inside a ring with `(3m/2) (R − r)² ẍ/y²`, not
 //! `m (1 + x²/y²) ẍ + (m/2) (R − r)² ẍ/y²`, and its Euler equation with `r F`, not
 //! `r (x² + y²)/(R − r)² F`.
 
 use crate::mechanics::Model;
-use crate::plan::rows::{unknowns_in, Equation, Groups};
+use crate::plan::{unknowns_in, Equation, Groups};
 use crate::symbolic::{add, simplify, Expr, Symbol};
 
 /// `e` simplified and rewritten with `model`'s relations, if that shortens it.

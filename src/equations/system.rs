@@ -1,12 +1,10 @@
 //! What a derivation is and is asked for: the [`Method`], the [`Request`] ([`Rows`],
 //! [`State`]s), and the [`Derivation`] with its symbolic linear system `A x = b`.
 
-use crate::mechanics::independent::{DependentSpeeds, KeptForces};
-use crate::mechanics::Model;
-use crate::plan::forces::Action;
-use crate::plan::planner::Rejected;
-use crate::plan::rows::Form;
-use crate::plan::rows::{Equation, Inertia, LazyInertia};
+use crate::mechanics::Form;
+use crate::mechanics::{DependentSpeeds, KeptForces, Model};
+use crate::plan::{Action, Rejected};
+use crate::plan::{Equation, Inertia, LazyInertia};
 use crate::symbolic::{Expr, Symbol};
 
 /// The equation-forming method.
@@ -85,7 +83,7 @@ pub struct Derivation<'p> {
     /// by composite bodies stands in for the numbers of another method ([`Rows::Fastest`]).
     pub system_method: Method,
     /// The same system with Kane's rows rebuilt by composite bodies, for evaluation (see
-    /// [`super::composite`]): equal numbers, the mass matrix for n² work where `system`'s
+    /// `super::composite`): equal numbers, the mass matrix for n² work where `system`'s
     /// rows take n³, the rest for n where they take n². Only for Kane's method in
     /// [`Form::Numeric`], where it applies. Derivatives are taken of `system`: these rows
     /// nest named quantities through the whole tree, and a derivative multiplies a named
@@ -146,7 +144,7 @@ pub enum Rows {
     Compiled,
     /// As `Compiled`, with Kane's system by composite bodies standing in for the rows of
     /// any method where it is built alone: an unconstrained tree large enough (see
-    /// [`super::composite::system_alone`]). The q'' and the reactions are the method's own
+    /// `super::composite::system_alone`). The q'' and the reactions are the method's own
     /// to rounding, and the composite system costs n² where the Motion Law's and
     /// Newton–Euler's rows cost n³ or more. The derivation keeps `method`; its
     /// `system_method` says whose equations its system holds.

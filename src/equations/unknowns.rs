@@ -3,13 +3,10 @@
 
 use super::constraint_rows::constraint_equations;
 use super::system::{Method, State};
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::independent::{DependentSpeeds, KeptForces};
-use crate::mechanics::sites::reaction_unknowns;
-use crate::mechanics::{MechanicsError, Model};
-use crate::plan::forces::Action;
-use crate::plan::planner::Rejected;
-use crate::plan::rows::{Equation, Inertia};
+use crate::mechanics::{
+    reaction_unknowns, DependentSpeeds, KeptForces, MechanicsError, Model, RowOrigin,
+};
+use crate::plan::{Action, Equation, Inertia, Rejected};
 use crate::problem::Problem;
 use crate::symbolic::Symbol;
 

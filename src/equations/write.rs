@@ -3,14 +3,11 @@
 
 use super::system::{Derivation, LinearSystem, Method, Request, Rows};
 use super::unknowns::{kane_reaction_joints, Inputs, MethodRows, Setup};
+use crate::mechanics::Form;
 use crate::mechanics::{MechanicsError, Model};
-use crate::plan::forces::Action;
-use crate::plan::planner;
-use crate::plan::rows::{Equation, Form, Inertia, LazyInertia};
-use crate::plan::FreeBodies;
-use crate::symbolic::budget;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::Symbol;
+use crate::plan::{coefficient_rows, Action};
+use crate::plan::{Equation, FreeBodies, Inertia, LazyInertia};
+use crate::symbolic::{budget, linear_split, Symbol};
 
 /// Steps 3 and 5: the equations of motion of `model` by `method`, from its free bodies
 /// (step 2): the method's rows (for the Motion Law, the rows its planner chooses),
@@ -170,12 +167,12 @@ fn too_few_rows(
     let mut path = "joints".to_string();
     if let Some(i) = massless_coordinate(model, actions, inertia, &accelerations) {
         let name = &model.problem.coordinates[i].name;
-        match crate::mechanics::massless::massless_body_moved_by(model, i) {
+        match crate::mechanics::massless_body_moved_by(model, i) {
             Some(body) => {
                 let body = model.problem.body(body);
                 path = format!("{}.mass", body.path);
                 message.push_str(": ");
-                message.push_str(&crate::mechanics::massless::undetermined(name, &body.name));
+                message.push_str(&crate::mechanics::undetermined(name, &body.name));
             }
             None => message.push_str(&format!(
                 ": the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined"
@@ -200,10 +197,10 @@ fn massless_coordinate(
     accelerations: &[Symbol],
 ) -> Option<usize> {
     let rows = super::kane::equations(model, actions, inertia, accelerations, (&[], &[]));
-    let states = planner::sample_states(model);
+    let states = crate::mechanics::sample_states(model);
     let coefficients: Vec<Vec<f64>> = rows
         .iter()
-        .flat_map(|row| planner::coefficient_rows(row, accelerations, &states))
+        .flat_map(|row| coefficient_rows(row, accelerations, &states))
         .collect();
     (0..accelerations.len()).find(|&i| coefficients.iter().all(|row| row[i].abs() < 1e-12))
 }

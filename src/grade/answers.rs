@@ -5,11 +5,9 @@ use super::numbers::{factor_text, percent};
 use super::reference::Reference;
 use super::report::Item;
 use super::submission::Named;
-use crate::numeric::answers::{Answer, Quantity};
-use crate::numeric::system::ReactionColumn;
+use crate::numeric::{Answer, Quantity, ReactionColumn};
 use crate::problem::{BodyId, QuestionKind};
-use crate::symbolic::eval::eval;
-use crate::symbolic::{ComponentKind, Expr};
+use crate::symbolic::{eval, ComponentKind, Expr};
 use serde_json::Value;
 
 /// The relative tolerance of an answer.
@@ -198,10 +196,7 @@ fn yes_or_no(
         // the normal force would have to pull.
         QuestionKind::Tips { .. } => deciding < 0.0,
         // In motion, a contact point that slides slips (friction is then μ|N|).
-        _ => {
-            crate::numeric::moving_slip::slip_speed(&answer.values).is_some_and(|s| s > 0.0)
-                || deciding > 1.0
-        }
+        _ => crate::numeric::slip_speed(&answer.values).is_some_and(|s| s > 0.0) || deciding > 1.0,
     };
     let word = |b: bool| if b { "yes" } else { "no" };
     Ok((given != expected)

@@ -4,7 +4,7 @@
 
 use super::{grade, read, Reference, Report};
 use crate::equations::Method;
-use crate::solution::answer_sheet::csv_cell;
+use crate::solution::csv_cell;
 use crate::Error;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -193,7 +193,7 @@ fn gradebook(graded: &[Graded]) -> String {
 }
 
 fn number(x: f64) -> String {
-    crate::solution::answer_sheet::full(x)
+    crate::solution::full_digits(x)
 }
 
 fn line(cells: &[String]) -> String {

@@ -4,8 +4,7 @@
 
 use super::reference::Reference;
 use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{Action, Source};
-use crate::plan::rows::{action_terms, inertia_terms, Equation, Inertia, Sum};
+use crate::plan::{action_terms, inertia_terms, Action, Equation, Inertia, Source, Sum};
 use crate::problem::BodyId;
 use crate::symbolic::{add, Expr};
 
@@ -131,7 +130,7 @@ fn subtree_rows(model: &Model, actions: &[Action], inertia: &Inertia) -> Vec<Row
         let point = (joint.name.clone(), model.joints[j].point.position.clone());
         for (about, list) in [(Some(point), axes), (None, forces)] {
             for &axis in list {
-                let direction = crate::plan::rows::unit_direction(model, BodyId::GROUND, axis);
+                let direction = crate::plan::unit_direction(model, BodyId::GROUND, axis);
                 let spec = Spec {
                     free_body: free_body.clone(),
                     about: about.clone(),
@@ -183,7 +182,7 @@ fn contributions(
     let (_, direction) = spec.direction;
     let mut out = Vec::new();
     for action in actions {
-        if !crate::plan::rows::is_external(action, &spec.free_body) {
+        if !crate::plan::is_external(action, &spec.free_body) {
             continue;
         }
         let (contact, distance) = action_terms(

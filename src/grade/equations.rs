@@ -9,10 +9,7 @@ use super::numbers::{close, factor_expr, factor_text, is_zero, ratio};
 use super::parts::{parts, scale, Key, Part};
 use super::reference::Reference;
 use super::report::Item;
-use crate::symbolic::eval::eval;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::parse::ParseError;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{eval, linear_split, Expr, ParseError, Symbol};
 use nalgebra::DMatrix;
 use serde_json::Value;
 use std::cmp::Reverse;
@@ -464,8 +461,8 @@ fn velocity_kind(reference: &Reference, e: &Expr) -> &'static str {
     };
     let n = rates.len();
     let second = |a: &Symbol, b: &Symbol| {
-        crate::symbolic::diff::partial(e, a)
-            .and_then(|d| crate::symbolic::diff::partial(&d, b))
+        crate::symbolic::partial(e, a)
+            .and_then(|d| crate::symbolic::partial(&d, b))
             .map_or(f64::NAN, |d| eval(&d, &sample.free))
     };
     let q: Vec<Vec<f64>> = rates

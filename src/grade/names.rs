@@ -3,8 +3,7 @@
 //! components as the worked solution names them in plain text (`O.Fx`, `P.My`).
 
 use crate::problem::Problem;
-use crate::symbolic::parse::{parse, ParseError, Resolve};
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{parse, Expr, ParseError, Resolve, Symbol};
 
 /// Resolves the names of one student expression.
 pub(super) struct Names<'a> {
@@ -76,7 +75,7 @@ impl Resolve for Names<'_> {
                     .with_hint("write `q1'` for a rate and `q1''` for a second rate"),
             );
         }
-        let hint = match crate::symbolic::hint::closest(name, self.allowed()) {
+        let hint = match crate::symbolic::closest(name, self.allowed()) {
             Some(c) => format!("did you mean `{c}`?"),
             None if self.is_frame(name) => {
                 format!("`{name}` is a frame: its unit vectors are {name}.x, {name}.y, {name}.z")

@@ -3,11 +3,9 @@
 //! (weights, springs, loads) and the terms with rates (centripetal, Coriolis, dampers).
 
 use super::reference::Sample;
-use crate::symbolic::build::{add, func, mul, pow};
-use crate::symbolic::eval::eval;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{simplify, Expr, Func, Node, Symbol};
+use crate::symbolic::{
+    add, eval, func, linear_split, mul, pow, simplify, substitute, Expr, Func, Node, Symbol,
+};
 
 /// Which part of an expression.
 #[derive(Clone, Debug, PartialEq)]

@@ -4,12 +4,10 @@
 //! submission is compared.
 
 use crate::equations::{Derivation, Method};
-use crate::numeric::answers::Answer;
-use crate::numeric::system::System;
+use crate::numeric::{Answer, System};
 use crate::pipeline::Solver;
 use crate::problem::Problem;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::Symbol;
+use crate::symbolic::{eval, Symbol, Values};
 use crate::Error;
 use nalgebra::{DMatrix, DVector};
 use std::cell::OnceCell;
@@ -62,21 +60,25 @@ impl<'p> Reference<'p> {
     /// # Errors
     /// When the equations cannot be derived or solved at any random state.
     pub fn new(problem: &'p Problem, method: Method) -> Result<Reference<'p>, Error> {
-        let derivation = crate::pipeline::derive_for_handout(problem, method)?;
+        let derivation =
+            crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)?;
         let newton_euler = match method {
             Method::NewtonEuler => None,
-            _ => crate::pipeline::derive_for_handout(problem, Method::NewtonEuler).ok(),
+            _ => crate::pipeline::derive(
+                problem,
+                Method::NewtonEuler,
+                crate::pipeline::Purpose::Handout,
+            )
+            .ok(),
         };
         let solver = Solver::new(problem, &derivation);
         let answers = match problem.questions.is_empty() {
             true => Ok(Vec::new()),
-            false => {
-                crate::numeric::answers::answer_all(problem, &solver).map_err(|e| e.to_string())
-            }
+            false => crate::numeric::answer_all(problem, &solver).map_err(|e| e.to_string()),
         };
         let model = &derivation.model;
         let sites: Vec<usize> = (0..model.sites.len()).collect();
-        let reactions = crate::mechanics::sites::reaction_unknowns(model, &sites);
+        let reactions = crate::mechanics::reaction_unknowns(model, &sites);
         let full = newton_euler.as_ref().unwrap_or(&derivation);
         let samples = sample(problem, &solver, full, &derivation)?;
         let count = problem.coordinates.len();
@@ -102,7 +104,12 @@ impl<'p> Reference<'p> {
         self.kane
             .get_or_init(|| match self.derivation.method {
                 Method::Kane => None,
-                _ => crate::pipeline::derive_for_handout(self.problem, Method::Kane).ok(),
+                _ => crate::pipeline::derive(
+                    self.problem,
+                    Method::Kane,
+                    crate::pipeline::Purpose::Handout,
+                )
+                .ok(),
             })
             .as_ref()
             .or((self.derivation.method == Method::Kane).then_some(&self.derivation))
@@ -209,7 +216,7 @@ fn reactions_at(full: &Derivation, values: &Values) -> Vec<(Symbol, f64)> {
     }
     let a = DMatrix::from_fn(n, n, |i, j| eval(&system.a[i][j], values));
     let b = DVector::from_fn(n, |i, _| eval(&system.b[i], values));
-    let Some(x) = crate::numeric::linear::solve_linear(&a, &b) else {
+    let Some(x) = crate::numeric::solve_linear(&a, &b) else {
         return Vec::new();
     };
     system

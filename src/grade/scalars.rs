@@ -9,9 +9,8 @@ use super::parts::{parts, scale, unfold, values};
 use super::reference::Reference;
 use super::report::Item;
 use super::submission::Named;
-use crate::plan::rows::Sum;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{simplify, Expr, Symbol};
+use crate::plan::Sum;
+use crate::symbolic::{linear_split, simplify, Expr, Symbol};
 use serde_json::Value;
 
 /// Parses one scalar entry, or the item that says why it cannot be read.

@@ -60,7 +60,7 @@ pub fn read(text: &str) -> Result<Submission, SubmissionError> {
     };
     for key in map.keys() {
         if !KEYS.contains(&key.as_str()) {
-            let hint = crate::symbolic::hint::closest(key, KEYS)
+            let hint = crate::symbolic::closest(key, KEYS)
                 .map(|k| format!("did you mean `{k}`?"))
                 .unwrap_or_else(|| format!("the sections are {}", KEYS.join(", ")));
             return Err(SubmissionError::new(

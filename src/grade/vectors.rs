@@ -13,8 +13,7 @@ use super::scalars::differ;
 use super::submission::Named;
 use crate::mechanics::{Model, Vector};
 use crate::problem::{BodyId, PointRef, Problem};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{linear_split, Expr, Symbol};
 use serde_json::Value;
 
 /// What a kinematics entry names.

@@ -20,9 +20,7 @@ use super::speeds::Speeds;
 use super::vector::{cross3, Components};
 use super::Vector;
 use crate::problem::{BodyId, Problem};
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::symbolic::{add, latex_name, time_derivative, Expr, Symbol};
 
 /// In spatial problems, an angular velocity component with more terms than this is kept
 /// whole in velocity products; shorter ones are multiplied out (see `omega_named`).

@@ -11,8 +11,7 @@ use super::point::PointMotion;
 use super::speeds::Speeds;
 use super::vector::{own_components, zero3, Components, Vector};
 use crate::problem::{BodyId, Dimension, Inertia, Problem};
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{eval, Expr, Symbol, Values};
 
 impl<'p> Model<'p> {
     /// Builds the frames and the kinematics of every body of `problem`.

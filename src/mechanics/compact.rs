@@ -7,10 +7,7 @@
 //! terms, the q'' stay visible for the linear system, and the numbers are unchanged.
 
 use crate::mechanics::vector::Components;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::{add, Expr, Symbol};
+use crate::symbolic::{add, eval, latex, latex_name, linear_split, Expr, Symbol, Values};
 
 /// Components with more terms than this are written with named parts; shorter ones are
 /// printed as they are.

@@ -4,10 +4,7 @@
 
 use super::error::MechanicsError;
 use crate::problem::{CoordinateKind, Problem};
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::relation::Relation;
-use crate::symbolic::{Expr, Symbol, Unknown};
+use crate::symbolic::{latex_name, time_derivative, Expr, Relation, Symbol, Unknown};
 
 /// What imposes a constraint row.
 #[derive(Clone, Debug, PartialEq)]

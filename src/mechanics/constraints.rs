@@ -15,11 +15,9 @@ use super::sites::{closure_site, contact_site};
 use super::vector::{cross3, zero3, Components, Vector};
 use crate::mechanics::joints::ComponentKind;
 use crate::problem::{BodyId, ConstraintKind, JointKind};
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::relation::Relation;
-use crate::symbolic::{simplify, Expr, Symbol};
+use crate::symbolic::{
+    eval, linear_split, simplify, time_derivative, Expr, Relation, Symbol, Values,
+};
 
 fn unit(axis: usize) -> Components {
     let mut c = zero3();

@@ -2,9 +2,7 @@
 //! four-bar's `q̇₂ = −(d s₃/Δ) q̇₁` with `Δ = a sin(q₁ − q₃) + d s₃` defined beside it, not the
 //! sum under every fraction of every Kane row, term by term.
 
-use crate::symbolic::build::{add, func, mul, pow};
-use crate::symbolic::expr::{Expr, Node, Symbol};
-use crate::symbolic::simplify;
+use crate::symbolic::{add, func, mul, pow, simplify, Expr, Node, Symbol};
 
 /// Each sum of the coordinates that divides some entry of `entries`, named `Δ` (`Δ₁`, `Δ₂`,
 /// … when there are several), and the entries written with the names.
@@ -86,8 +84,7 @@ fn replace_sums(e: &Expr, named: &[(Expr, Expr)]) -> Expr {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::symbolic::build::sin;
-    use crate::symbolic::print::latex;
+    use crate::symbolic::{latex, sin};
 
     #[test]
     fn a_sum_of_the_coordinates_under_a_fraction_is_named_once() {
@@ -115,7 +112,7 @@ mod tests {
     fn a_short_or_constant_denominator_stays_as_it_is() {
         let x = Expr::sym(Symbol::Coord("x".into(), 0));
         let r = Expr::sym(Symbol::Const("r".into()));
-        let mut short = &r / &(&x - &(&r * &crate::symbolic::build::cos(x.clone())));
+        let mut short = &r / &(&x - &(&r * &crate::symbolic::cos(x.clone())));
         let before = short.clone();
         name_denominators(&mut [&mut short]);
         assert_eq!(short, before);

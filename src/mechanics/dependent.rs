@@ -6,9 +6,7 @@
 use super::constraint_rows::{Constraints, RowOrigin};
 use super::error::MechanicsError;
 use super::model::Model;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::Symbol;
+use crate::symbolic::{eval, linear_split, Symbol, Values};
 
 /// A pivot smaller than this (relative to the row's largest entry) counts as zero.
 const PIVOT_TOLERANCE: f64 = 1e-9;

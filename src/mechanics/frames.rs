@@ -7,8 +7,7 @@
 
 use super::components::{cross3, dot3, Components};
 use crate::problem::BodyId;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::{add, cos, sin, Expr};
+use crate::symbolic::{add, cos, latex_name, sin, Expr};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -296,13 +295,13 @@ impl Frames {
     pub fn relative_angular_velocity(
         &self,
         frame: BodyId,
-    ) -> Result<Components, crate::symbolic::diff::DiffError> {
+    ) -> Result<Components, crate::symbolic::DiffError> {
         let rotations = &self.frames[frame.0].rotations;
         let mut omega: Components = std::array::from_fn(|_| Expr::zero());
         // Walk backwards: the last rotation's axis is already in this frame's components.
         let mut carry = identity();
         for r in rotations.iter().rev() {
-            let rate = crate::symbolic::diff::time_derivative(&r.angle)?;
+            let rate = crate::symbolic::time_derivative(&r.angle)?;
             let axis_here = apply(&carry, &r.axis);
             omega = std::array::from_fn(|i| &omega[i] + &(&rate * &axis_here[i]));
             carry = matmul(&carry, &transpose(&r.matrix()));

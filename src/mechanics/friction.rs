@@ -66,8 +66,6 @@ pub fn contact_point_site(model: &Model, k: usize) -> Result<(Site, Contact), Me
     let contact = Contact {
         offset: offset_c,
         height,
-        normal: n_vec,
-        tangents,
         tilt: Expr::one(),
         on_motion: None,
     };

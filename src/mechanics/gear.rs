@@ -11,8 +11,7 @@ use super::site::{Contact, Site};
 use super::sites::{contact_site_of, offset_on, unit_direction};
 use super::vector::{dot3, zero3, Components, Vector};
 use crate::problem::{BodyId, ConstraintKind};
-use crate::symbolic::relation::Relation;
-use crate::symbolic::{pow, simplify, sqrt, Expr};
+use crate::symbolic::{pow, simplify, sqrt, Expr, Relation};
 
 /// The site of gear contact `k` and its geometry (the "height" is the distance between the
 /// centres minus what the radii allow; the "normal" the unit line of centres, from `on`'s
@@ -114,8 +113,6 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     let contact = Contact {
         offset,
         height: gap,
-        normal: line,
-        tangents: vec![tangent],
         tilt: Expr::one(),
         on_motion,
     };
@@ -142,7 +139,7 @@ fn fixed_in(model: &Model, axle: &Vector, on: BodyId) -> bool {
     let Some(first) = states.first() else {
         return true;
     };
-    let eval = crate::symbolic::eval::eval;
+    let eval = crate::symbolic::eval;
     in_on.iter().all(|c| {
         let reference = eval(c, first);
         (states.iter()).all(|state| (eval(c, state) - reference).abs() <= 1e-9)

@@ -11,10 +11,7 @@
 
 use super::constraints::RowOrigin;
 use super::model::Model;
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{add, simplify, Expr, Symbol};
+use crate::symbolic::{add, linear_split, simplify, substitute, time_derivative, Expr, Symbol};
 
 /// The most expression nodes `A_D⁻¹` may hold: beyond it the dependent speeds are not
 /// written out (a long chain of contacts), and `C` is named, evaluated at each state.
@@ -374,7 +371,7 @@ impl DependentSpeeds {
     pub fn dependent_accelerations(
         &self,
         model: &Model,
-    ) -> Result<Vec<Expr>, crate::symbolic::diff::DiffError> {
+    ) -> Result<Vec<Expr>, crate::symbolic::DiffError> {
         let rates = self.dependent_rates(model);
         rates
             .iter()

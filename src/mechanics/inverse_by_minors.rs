@@ -10,8 +10,7 @@
 //! minors. No symbolic pivot is chosen, so no entry divides by something that vanishes at
 //! some state unless `A_D` itself is singular there.
 
-use crate::symbolic::fast_hash::FastMap;
-use crate::symbolic::{add, Expr};
+use crate::symbolic::{add, Expr, FastMap};
 
 /// The most columns left after the numeric pivots that the minors may expand: `2ⁿ` row
 /// sets by `2ⁿ` column sets at worst.
@@ -136,9 +135,7 @@ impl Minors<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::symbolic::build::{cos, sin};
-    use crate::symbolic::eval::{eval, Values};
-    use crate::symbolic::Symbol;
+    use crate::symbolic::{cos, eval, sin, Symbol, Values};
 
     #[test]
     fn matches_the_inverse_of_a_coupled_block_at_a_state() {

@@ -5,8 +5,7 @@ use super::error::MechanicsError;
 use super::frames::{dual_basis, Frames, Rotation};
 use super::vector::{cross3, zero3, Components, Vector};
 use crate::problem::{BodyId, Dimension, Joint, JointKind, Problem};
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::{pow, Expr};
+use crate::symbolic::{eval, pow, Expr, Values};
 
 /// The motion a joint allows, in the parent's frame.
 #[derive(Clone, Debug)]

@@ -11,8 +11,7 @@ use super::site::SiteKind;
 use super::vector::Vector;
 use super::Model;
 use crate::problem::BodyId;
-use crate::symbolic::eval::eval;
-use crate::symbolic::{Axis, ComponentKind, Expr};
+use crate::symbolic::{eval, Axis, ComponentKind, Expr};
 
 /// Gives each closure at the end of a light rod one force unknown along the rod (its
 /// tension, positive pulling the closure's other body toward the rod's pin); returns the

@@ -7,7 +7,7 @@
 use super::error::MechanicsError;
 use super::model::Model;
 use crate::problem::{BodyId, ConstraintKind};
-use crate::symbolic::eval::eval;
+use crate::symbolic::eval;
 
 /// `q3'' is undetermined: body C has no mass and nothing else fixes it`.
 pub fn undetermined(coordinate: &str, body: &str) -> String {

@@ -9,12 +9,10 @@ use super::joints::{JointMotion, LoadAxis, ReactionComponent};
 pub use super::point::PointMotion;
 use super::site::Site;
 use super::speeds::Speeds;
-pub use super::vector::{own_components, vector_of};
+pub use super::vector::own_components;
 use super::vector::{zero3, Components, Vector};
 use crate::problem::{BodyId, Dimension, PointRef, Problem};
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::eval::Values;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{time_derivative, Expr, Symbol, Values};
 
 /// Who reads the equations: how much of the kinematics is named depends on it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -213,7 +211,7 @@ impl<'p> Model<'p> {
         }
         values.set(Symbol::Time, t);
         for (r, speed) in problem.speeds.iter().enumerate() {
-            let u = crate::symbolic::eval::eval(&speed.equals, &values);
+            let u = crate::symbolic::eval(&speed.equals, &values);
             values.set(problem.speed_symbol(r, 1), u);
         }
         values
@@ -275,8 +273,8 @@ pub(super) fn rigid_point(
 pub fn same_at(a: &Expr, b: &Expr, states: &[Values]) -> bool {
     states.iter().all(|state| {
         let (x, y) = (
-            crate::symbolic::eval::eval(a, state),
-            crate::symbolic::eval::eval(b, state),
+            crate::symbolic::eval(a, state),
+            crate::symbolic::eval(b, state),
         );
         (x - y).abs() <= 1e-9 * (1.0 + y.abs())
     })

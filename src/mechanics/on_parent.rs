@@ -17,10 +17,7 @@ use crate::mechanics::frames::apply;
 use crate::mechanics::vector::{cross3, Components};
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::{add, simplify, Expr, Symbol};
+use crate::symbolic::{add, latex_name, linear_split, simplify, time_derivative, Expr, Symbol};
 
 /// The angular acceleration of `body` from its parent's as `alphas` names them (in each
 /// body's own unit vectors). `None` as for `parent_in_chain`.

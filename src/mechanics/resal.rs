@@ -16,8 +16,7 @@ use super::frames::{FrameInfo, Frames};
 use super::model::{rigid_point, Form, Model, SpinFrame};
 use super::vector::Vector;
 use crate::problem::{BodyId, Dimension, ForcePoint, LoadKind, PointRef, Problem};
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::{simplify, Expr};
+use crate::symbolic::{simplify, time_derivative, Expr};
 
 /// Writes every body that qualifies in its frame that does not spin (see the module).
 pub(super) fn write_without_spin(model: &mut Model, form: Form) {

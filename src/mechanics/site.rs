@@ -6,8 +6,7 @@ use super::joints::ReactionComponent;
 use super::point::PointMotion;
 use super::vector::{Components, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::relation::Relation;
-use crate::symbolic::Expr;
+use crate::symbolic::{Expr, Relation};
 
 /// What a site is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,7 +40,7 @@ pub struct Site {
     /// The reaction components, each an unknown of the site (`O.Fx`).
     pub reactions: Vec<ReactionComponent>,
     /// The directions of the loop rows that no reaction enforces (across a light rod, see
-    /// [`super::light_rod`]), by the rows' component index.
+    /// `super::light_rod`), by the rows' component index.
     pub across: Vec<(usize, Vector)>,
 }
 
@@ -53,10 +52,6 @@ pub struct Contact {
     /// The height of the centre above the plane minus what the disc's tilt allows; zero
     /// when the disc touches the plane.
     pub height: Expr,
-    /// The plane's unit normal, and two unit directions in the plane (one in 2D), in `N`.
-    pub normal: Vector,
-    /// Unit directions in the plane.
-    pub tangents: Vec<Vector>,
     /// `|n − (n·a) a|`, the sine of the angle between the axle and the normal: the contact
     /// is undefined where it is zero.
     pub tilt: Expr,

@@ -10,8 +10,7 @@ pub use super::site::{Contact, Site, SiteKind};
 use super::vector::{cross3, dot3, zero3, Components, Vector};
 use super::vector::{own_components, vector_of};
 use crate::problem::{BodyId, ConstraintKind, Dimension, ForcePoint, Joint, JointKind, VectorExpr};
-use crate::symbolic::eval::eval;
-use crate::symbolic::{pow, sqrt, Expr};
+use crate::symbolic::{eval, pow, sqrt, Expr};
 
 impl Site {
     /// The site of tree joint `j`.
@@ -145,7 +144,7 @@ fn tilt_named(body: &str, square: Expr) -> Expr {
     }
     Expr::named(
         &format!("{body}.tilt"),
-        &format!("\\sigma_{{{}}}", crate::symbolic::print::latex_name(body)),
+        &format!("\\sigma_{{{}}}", crate::symbolic::latex_name(body)),
         &format!("length of the normal's part in the plane of {body}: the cosine of its lean"),
         length,
     )
@@ -209,8 +208,6 @@ pub fn contact_site(model: &Model, k: usize) -> Result<(Site, Contact), Mechanic
     let contact = Contact {
         offset: offset_c,
         height,
-        normal: n_vec,
-        tangents,
         tilt,
         on_motion: None,
     };

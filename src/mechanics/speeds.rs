@@ -7,9 +7,7 @@
 
 use super::error::MechanicsError;
 use crate::problem::Problem;
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{add, simplify, Expr, Symbol};
+use crate::symbolic::{add, linear_split, simplify, time_derivative, Expr, Symbol};
 
 /// The kinematic differential equations of a problem with declared speeds.
 #[derive(Clone, Debug)]
@@ -78,7 +76,7 @@ impl Speeds {
         // Not linear in the rates: every rate replaced by its expression in the speeds.
         let substituted = || {
             let replaced = self.rates_as_speeds();
-            simplify(&crate::symbolic::subst::substitute(e, &|s| {
+            simplify(&crate::symbolic::substitute(e, &|s| {
                 self.rates
                     .iter()
                     .position(|r| r == s)
@@ -127,7 +125,7 @@ impl Speeds {
     ///
     /// # Errors
     /// As for [`time_derivative`].
-    pub fn dt(&self, e: &Expr) -> Result<Expr, crate::symbolic::diff::DiffError> {
+    pub fn dt(&self, e: &Expr) -> Result<Expr, crate::symbolic::DiffError> {
         Ok(self.to_speeds(&time_derivative(e)?))
     }
 }

@@ -9,8 +9,7 @@ use super::site::SiteKind;
 use super::vector::{zero3, Components, Vector};
 use super::Model;
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef, Problem};
-use crate::symbolic::eval::eval;
-use crate::symbolic::{Axis, ComponentKind, Expr};
+use crate::symbolic::{eval, Axis, ComponentKind, Expr};
 
 /// Gives every joint whose child is a two-force member one force unknown along the member
 /// (its tension, `T^O`) in place of its force components; returns the joints' names.

@@ -4,11 +4,9 @@
 //! (`"in": "N"`), when they are rotated into that frame at the answer's state.
 
 use super::system::ReactionColumn;
-use crate::mechanics::frames::Frames;
-use crate::mechanics::model::Model;
+use crate::mechanics::{Frames, Model};
 use crate::problem::{BodyId, ConstraintKind, Problem};
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::ComponentKind;
+use crate::symbolic::{eval, ComponentKind, Values};
 
 /// A rotation matrix of numbers, row-major.
 pub type Rotation = [[f64; 3]; 3];

@@ -20,8 +20,7 @@ use super::simulate::simulate;
 use super::steady::{state_values, steady};
 use super::system::{Evaluation, ReactionColumn, System};
 use crate::problem::{Problem, ProblemError, Question, QuestionKind, SimulateSettings};
-use crate::symbolic::eval::eval;
-use crate::symbolic::ComponentKind;
+use crate::symbolic::{eval, ComponentKind};
 
 pub use super::answer_units::{coordinate_unit, entry_name, is_free_moment, unit};
 pub use super::quantity::Quantity;
@@ -35,6 +34,7 @@ pub struct Answer {
     pub time: f64,
     /// The state where the answer holds (for a steady motion, the one found).
     pub q: Vec<f64>,
+    /// The rates at that state.
     pub rates: Vec<f64>,
     /// True when the state was reached by simulating from the initial state.
     pub simulated: bool,
@@ -56,7 +56,7 @@ pub struct Context<'a> {
     pub earlier: &'a [Option<Answer>],
     /// The linearization about a state; without it a `period` cannot be answered.
     pub linearize: Option<&'a super::period::Linearize<'a>>,
-    /// The rates just after the problem's impact, if it has one (see [`answer_all_after`]).
+    /// The rates just after the problem's impact, if it has one (see [`answer_all_with`]).
     pub after: Option<&'a [f64]>,
 }
 
@@ -71,20 +71,6 @@ pub fn holds(lhs: f64, rhs: f64) -> bool {
 /// The first question that cannot be answered, with its JSON path and a hint.
 pub fn answer_all(problem: &Problem, system: &dyn System) -> Result<Vec<Answer>, ProblemError> {
     answer_all_with(problem, system, None, None, Vec::new())
-}
-
-/// As [`answer_all`], for a problem with an impact whose rates just after it are `after`:
-/// questions asked after the impact (`at.after_impact`), or at a time or a switch reached
-/// by simulating, start from them; the others keep the initial state, before the impact.
-///
-/// # Errors
-/// As for [`answer_all`].
-pub fn answer_all_after(
-    problem: &Problem,
-    system: &dyn System,
-    after: Option<&[f64]>,
-) -> Result<Vec<Answer>, ProblemError> {
-    answer_all_with(problem, system, None, after, Vec::new())
 }
 
 /// As [`answer_all`], with the linearization that `period` questions need, the rates just
@@ -130,41 +116,11 @@ fn failure(question: &Question, message: String, hint: &str) -> ProblemError {
     }
 }
 
-/// Answers one question.
-///
-/// # Errors
-/// A system that cannot be solved at the state, a simulation that stops before the time,
-/// or a steady motion that Newton's method does not find; each names the question's path.
-pub fn answer(
-    problem: &Problem,
-    system: &dyn System,
-    question: &Question,
-) -> Result<Answer, ProblemError> {
-    answer_in(problem, system, question, Context::default())
-}
-
-/// As [`answer`], with the rates just after the problem's impact, if any (see
-/// [`answer_all_after`]).
-///
-/// # Errors
-/// As for [`answer`].
-pub fn answer_after(
-    problem: &Problem,
-    system: &dyn System,
-    question: &Question,
-    after: Option<&[f64]>,
-) -> Result<Answer, ProblemError> {
-    let context = Context {
-        after,
-        ..Context::default()
-    };
-    answer_in(problem, system, question, context)
-}
-
 /// Answers one question with what it may draw on (see [`Context`]).
 ///
 /// # Errors
-/// As for [`answer`]; also a `period` without the linearization, about an unstable state
+/// A system that cannot be solved at the state, a simulation that stops before the time,
+/// or a steady motion that Newton's method does not find, each naming the question's path; also a `period` without the linearization, about an unstable state
 /// or one where nothing oscillates.
 pub fn answer_in(
     problem: &Problem,
@@ -508,7 +464,7 @@ fn first_switch(
             fail(
                 format!(
                     "`{name}` does not switch between sticking and slipping within the simulation's {} s",
-                    crate::symbolic::format::fixed(duration)
+                    crate::symbolic::fixed(duration)
                 ),
                 "lengthen simulate.duration, or ask at a `time`".into(),
             )

@@ -4,12 +4,8 @@
 //! step, so the constraints hold to the Newton tolerance all along (coordinate partitioning).
 
 use super::SolveError;
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::Model;
-use crate::symbolic::compile::Program;
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::mechanics::{Model, RowOrigin};
+use crate::symbolic::{linear_split, time_derivative, Expr, Program, Symbol};
 use nalgebra::{DMatrix, DVector};
 
 /// Newton stops when every position residual is below this (metres or radians).
@@ -119,19 +115,6 @@ impl Assembly {
         inputs.extend_from_slice(rates);
         inputs.push(t);
         inputs
-    }
-
-    /// The prescribed coordinates' `q''` at time `t`, as `(coordinate, value)`.
-    pub fn prescribed_accelerations(&self, constants: &[f64], t: f64) -> Vec<(usize, f64)> {
-        let zeros = vec![0.0; self.coordinates];
-        let values = self
-            .motion
-            .eval(&Self::inputs(constants, t, &zeros, &zeros));
-        self.prescribed
-            .iter()
-            .enumerate()
-            .map(|(k, &p)| (p, values[3 * k + 2]))
-            .collect()
     }
 
     /// Sets the prescribed coordinates and rates at `t`, solves the dependent coordinates
@@ -286,8 +269,7 @@ impl Assembly {
 /// complete pivoting over `free` picks, in coordinate order.
 fn best_pivots(out: &[f64], n: usize, m: usize, free: &[usize]) -> Vec<usize> {
     let rows: Vec<Vec<f64>> = (0..m).map(|r| out[r * n..(r + 1) * n].to_vec()).collect();
-    let mut chosen =
-        crate::mechanics::dependent::pick(&rows, &[], free, &vec![1.0; n]).unwrap_or_default();
+    let mut chosen = crate::mechanics::pick(&rows, &[], free, &vec![1.0; n]).unwrap_or_default();
     chosen.sort_unstable();
     chosen
 }

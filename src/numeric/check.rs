@@ -66,7 +66,12 @@ pub enum Phrase {
     /// Words and numbers.
     Text(String),
     /// A coordinate by its name, differentiated `order` times (`q1''` in plain text).
-    Coordinate { name: String, order: usize },
+    Coordinate {
+        /// The coordinate's name.
+        name: String,
+        /// How many times it is differentiated.
+        order: usize,
+    },
 }
 
 impl Phrase {

@@ -2,10 +2,10 @@
 //! simulated motion, and the energy changes by exactly the work the drives do.
 
 use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
-use super::format::fixed;
 use super::simulate::Trajectory;
 use super::system::{ReactionColumn, System};
 use crate::problem::{LoadKind, Problem};
+use crate::symbolic::fixed;
 
 /// Largest constraint residual allowed along a simulation (metres, radians, m/s, rad/s).
 pub const DRIFT_TOLERANCE: f64 = 1e-8;

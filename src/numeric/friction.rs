@@ -15,9 +15,8 @@
 use super::friction_vectors::{direction_of, dot, first_unit, norm, same_direction, signed_normal};
 use super::linear::solve_linear;
 use crate::equations::Derivation;
-use crate::plan::rows::Sum;
-use crate::symbolic::compile::Program;
-use crate::symbolic::Expr;
+use crate::plan::Sum;
+use crate::symbolic::{Expr, Program};
 use nalgebra::{DMatrix, DVector};
 
 /// A slip speed at or below this (times the largest rate, plus one) is zero: the site is
@@ -86,7 +85,7 @@ pub struct SiteState {
     /// When the site was at rest and sticking failed its check: that first solution.
     pub failed_stick: Option<FailedStick>,
     /// Whether it sticks together with other sites whose forces statics does not split
-    /// (the split taken is the one farthest from slipping, see [`Friction::solve`]).
+    /// (the split taken is the one farthest from slipping, see `Friction::solve`).
     pub shared: bool,
 }
 

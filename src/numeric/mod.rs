@@ -1,38 +1,63 @@
 //! Numbers: evaluation, the linear solve, integration and the confirmation checks
 //! (steps 5 and 6).
+//!
+//! Entry: [`Compiled`] (a derivation compiled for numbers) and [`System`] (its solve at a
+//! state), [`simulate`], [`confirm`] (the checks), [`Linearization`], [`answer_all`]. The
+//! modules are private; what other stages use is re-exported here.
 
-pub mod answer_frame;
+mod answer_frame;
 mod answer_units;
-pub mod answers;
-pub mod assemble;
-pub mod check;
-pub mod checks;
-pub mod constraint_checks;
-pub mod evaluate;
-pub mod frame;
-pub mod friction;
+mod answers;
+mod assemble;
+mod check;
+mod checks;
+mod constraint_checks;
+mod evaluate;
+mod frame;
+mod friction;
 mod friction_vectors;
-pub mod impact;
-pub mod inputs;
-/// Fixed-precision numbers for text (see [`crate::symbolic::format`]).
-pub use crate::symbolic::format;
-pub mod integrate;
-pub mod linear;
-pub mod linearize;
-pub mod moving_slip;
-pub mod newton;
-pub mod period;
+mod impact;
+mod inputs;
+mod integrate;
+mod linear;
+mod linearize;
+mod moving_slip;
+mod newton;
+mod period;
 mod quantity;
-pub mod recursive;
-pub mod reduce;
-pub mod simulate;
-pub mod speeds;
-pub mod stability_edge;
+mod recursive;
+mod reduce;
+mod simulate;
+mod speeds;
+mod stability_edge;
 mod steady;
-pub mod system;
+mod system;
 
-pub use frame::Frame;
-pub use simulate::Trajectory;
+pub use answer_frame::{reaction_frame, reaction_frame_named};
+pub use answers::{
+    answer_all, answer_all_with, coordinate_unit, entry_name, holds, is_free_moment,
+    unit as answer_unit, Answer, Quantity,
+};
+pub use checks::{confirm, modes, small_oscillation, Check, CheckKind, Phrase};
+pub use constraint_checks::drive_energy_check;
+pub use evaluate::{Compiled, Motion, StateSolution};
+pub use frame::{Frame, DEFAULT_FPS};
+pub use friction::{Held, Mode as FrictionMode, SiteState};
+pub use impact::{CollisionImpulse, Contact, Mode as ImpactMode};
+pub use linear::solve_linear;
+pub use linearize::hqr::eigenvalues;
+pub use linearize::jacobian::input_values;
+pub use linearize::modes::{is_stable, sort as sort_modes, Shape, ROUND_OFF};
+pub use linearize::{jacobian_of, Jacobian, Linearization, ModalAnalysis};
+pub use moving_slip::{asked, slip_speed};
+pub use newton::{solve as newton_solve, NewtonFailure};
+pub use recursive::is_faster;
+pub use reduce::Reducer;
+pub use simulate::{
+    full_precision, output_times, simulate, simulate_with_limits, Limits, Trajectory, MAX_ROWS,
+};
+pub use stability_edge::{edges, name as edge_name, Edge};
+pub use system::{Evaluation, ReactionColumn, System};
 
 use std::fmt;
 

@@ -13,7 +13,12 @@ pub enum NewtonFailure {
     /// `f` could not be evaluated at the start or while forming a Jacobian.
     NotSolvable,
     /// The iteration stalled or ran out of iterations with `left` the largest |f|.
-    NoRoot { left: f64, iterations: usize },
+    NoRoot {
+        /// The largest |f| left.
+        left: f64,
+        /// The iterations made.
+        iterations: usize,
+    },
 }
 
 /// A root: the unknowns, the largest |f| left, and the iterations taken.

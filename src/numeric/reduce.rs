@@ -8,12 +8,8 @@
 //! (identity on the independent rates, `−B_R⁻¹ B_U` on the dependent ones), and
 //! `∂q'/∂q_I = E P` with `E = −B_R⁻¹ ∂(B q' + β)/∂q` on the dependent rates.
 
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::Model;
-use crate::symbolic::compile::Program;
-use crate::symbolic::diff::{partial, time_derivative};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::mechanics::{Model, RowOrigin};
+use crate::symbolic::{linear_split, partial, time_derivative, Expr, Program, Symbol};
 use nalgebra::DMatrix;
 
 /// What the reduction needs of a model's constraints, compiled.

@@ -4,8 +4,7 @@
 use super::inputs::state_symbols;
 use super::linear::solve_linear;
 use crate::problem::Problem;
-use crate::symbolic::compile::Program;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{Expr, Program, Symbol};
 use nalgebra::{DMatrix, DVector};
 
 /// The kinematic differential equations compiled: from the state, the speeds `u = W q'`,
@@ -29,10 +28,10 @@ impl SpeedProgram {
         let mut outputs: Vec<Expr> = problem.speeds.iter().map(|s| s.equals.clone()).collect();
         let mut derivatives = Vec::with_capacity(n);
         for speed in &problem.speeds {
-            let (row, _) = crate::symbolic::linear::linear_split(&speed.equals, &rates).ok()?;
+            let (row, _) = crate::symbolic::linear_split(&speed.equals, &rates).ok()?;
             outputs.extend(row);
-            let d = crate::symbolic::diff::time_derivative(&speed.equals).ok()?;
-            derivatives.push(crate::symbolic::subst::substitute(&d, &|s| {
+            let d = crate::symbolic::time_derivative(&speed.equals).ok()?;
+            derivatives.push(crate::symbolic::substitute(&d, &|s| {
                 matches!(s, Symbol::Coord(_, 2)).then(Expr::zero)
             }));
         }

@@ -3,8 +3,7 @@
 
 use super::system::System;
 use crate::problem::Problem;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{eval, Expr, Symbol, Values};
 use nalgebra::DVector;
 
 /// Why no steady motion was found, and a hint.
@@ -96,7 +95,7 @@ fn no_root(left: f64, iterations: usize) -> Failure {
     (
         format!(
             "no steady motion found: after {iterations} Newton iterations the largest of the expressions to make zero is still {}",
-            super::format::fixed(left)
+            crate::symbolic::fixed(left)
         ),
         "start nearer a solution in `at.state`, or check that the unknowns can make these second derivatives zero",
     )

@@ -3,9 +3,9 @@
 //! Whatever forms the equations (Newton-Euler, the Motion Law, Kane's method) implements
 //! [`System`]; the integrator, the simulation and the confirmation checks see only this.
 
-use super::format::fixed;
 use super::friction::{Held, SiteState};
 use super::SolveError;
+use crate::symbolic::fixed;
 use crate::symbolic::ComponentKind;
 use std::fmt;
 
@@ -17,12 +17,18 @@ pub enum ReactionColumn {
     /// The component along unit vector `axis` (0, 1, 2 for x, y, z) of the force or the
     /// moment of the joint or site named `site`.
     Component {
+        /// The joint's or site's name.
         site: String,
+        /// Force or moment.
         kind: ComponentKind,
+        /// The unit vector's index: 0, 1, 2 for x, y, z.
         axis: usize,
     },
     /// The drive of the prescribed coordinate named `coordinate`.
-    Drive { coordinate: String },
+    Drive {
+        /// The prescribed coordinate's name.
+        coordinate: String,
+    },
 }
 
 impl ReactionColumn {
@@ -105,7 +111,7 @@ pub trait System {
     ///
     /// # Errors
     /// [`SolveError::SingularSystem`] when the equations cannot be solved there, or
-    /// [`SolveError::NotFinite`]; the error's `state` should come from [`describe_state`].
+    /// [`SolveError::NotFinite`]; the error's `state` should come from `describe_state`.
     fn evaluate(&self, t: f64, q: &[f64], rates: &[f64]) -> Result<Evaluation, SolveError>;
 
     /// Only the accelerations, for the integrator, which calls this six times a step and

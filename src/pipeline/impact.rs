@@ -6,16 +6,13 @@
 //! impulses alone and once more per component of the collision's impulse, and the
 //! collision law is solved on the struck point's velocity changes.
 
-use super::derive_own;
+use super::{derive, Purpose};
 use crate::equations::Method;
-use crate::mechanics::vector::own_components;
-use crate::mechanics::Model;
-use crate::numeric::evaluate::{Compiled, Motion};
-use crate::numeric::impact::{CollisionImpulse, Contact};
-use crate::numeric::system::System;
+use crate::error::Error;
+use crate::mechanics::{own_components, Model};
+use crate::numeric::{CollisionImpulse, Compiled, Contact, Motion, System};
 use crate::problem::{BodyId, Collision, ForcePoint, Problem, ProblemError, ProblemErrors};
-use crate::symbolic::eval::{eval, Values};
-use crate::Error;
+use crate::symbolic::{eval, Values};
 
 /// What the impact does.
 #[derive(Clone, Debug, PartialEq)]
@@ -185,7 +182,7 @@ pub fn impact(
     let Some(impulsive) = problem.impulsive(q, on_vector) else {
         return Err(refused("impact", "the problem has no `impact`".into(), ""));
     };
-    let derivation = derive_own(&impulsive.problem, method)?;
+    let derivation = derive(&impulsive.problem, method, Purpose::Own)?;
     let mut compiled = Compiled::new(&derivation);
     let base = jumps(&compiled, q)?;
     let mut motion = base.clone();
@@ -244,7 +241,7 @@ fn collide(
 ) -> Result<CollisionImpulse, Error> {
     let value = |e: &crate::symbolic::Expr| eval(e, values);
     let normal_raw: [f64; 3] = {
-        let n = crate::mechanics::vector::vector_of(&c.normal).components_in(c.on, &model.frames);
+        let n = crate::mechanics::vector_of(&c.normal).components_in(c.on, &model.frames);
         numbers(&n, values)
     };
     let size = normal_raw.iter().map(|x| x * x).sum::<f64>().sqrt();
@@ -256,7 +253,7 @@ fn collide(
             &format!("{}.restitution", c.path),
             format!(
                 "the coefficient of restitution must lie in [0, 1]; it is {}",
-                crate::symbolic::format::fixed(restitution)
+                crate::symbolic::fixed(restitution)
             ),
             "give 0 for a plastic impact (the point stays on the surface), 1 for an elastic one",
         ));
@@ -270,7 +267,7 @@ fn collide(
             format!(
                 "the point of `{}` is not approaching the surface: its normal velocity before the impact is {} (it must be negative)",
                 problem.body_name(c.body),
-                crate::symbolic::format::fixed(approach)
+                crate::symbolic::fixed(approach)
             ),
             "give initial rates that carry the point into the surface, or check the normal's direction (it points out of the surface, towards the body)",
         ));

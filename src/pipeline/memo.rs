@@ -3,7 +3,7 @@
 //! worked solution, which answers the same problem by the same method.
 
 use crate::equations::Method;
-use crate::numeric::answers::Answer;
+use crate::numeric::Answer;
 use crate::problem::Problem;
 use crate::Error;
 use std::cell::RefCell;

@@ -3,7 +3,7 @@
 //! 1. [`load`]: the problem file → a validated [`Problem`] (the commands then apply `--set`
 //!    and their size limits);
 //! 2. [`derive()`]: the model (the kinematics), the free bodies, then the plan and the
-//!    equations of one method, each stage called in turn ([`derive_for`]) → a [`Derivation`];
+//!    equations of one method, each stage called in turn, for a [`Purpose`] → a [`Derivation`];
 //! 3. [`Solver::new`]: the equations compiled for numbers, with the constraints' assembly;
 //!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
 //!    their exact partial derivatives, for the small motions about any state;
@@ -19,29 +19,27 @@ mod impact;
 mod memo;
 mod motion;
 mod run;
-pub mod stability;
+mod stability;
 mod stages;
-pub mod statics;
+mod statics;
 mod statics_answers;
 mod sweep;
 
 pub use impact::{impact, impact_at_start, ImpactSolution};
-pub use motion::frames;
+pub use motion::{frame_count, frames};
 pub use run::{run, ImpactWorked, Job, Worked};
-pub use stages::{derive_at, derive_fastest, derive_for, derive_for_numbers, derive_rows};
+pub use stages::{derive, Purpose};
+pub use statics::{Equilibrium, Stability, StabilityKind, Statics};
 pub use sweep::{sweep, Sweep, Swept};
 
 use crate::equations::{Derivation, Method, State};
+use crate::error::Error;
 use crate::mechanics::Form;
-use crate::numeric::checks::{self, Check};
-use crate::numeric::evaluate::{Compiled, StateSolution};
-use crate::numeric::linearize::{self, Linearization};
-use crate::numeric::simulate::Trajectory;
-use crate::numeric::system::{Evaluation, System};
-use crate::numeric::SolveError;
+use crate::numeric::{
+    jacobian_of, Check, Compiled, Evaluation, Jacobian, Linearization, ModalAnalysis, SolveError,
+    StateSolution, System, Trajectory,
+};
 use crate::problem::Problem;
-use crate::symbolic::budget;
-use crate::Error;
 use std::cell::RefCell;
 
 /// Reads and validates the problem file at `path`.
@@ -52,87 +50,10 @@ pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
     Ok(crate::problem::load_file(path)?)
 }
 
-/// Derives the equations for the numbers of `problem` by `method` in the fastest exact form
-/// ([`Form::Numeric`]): Kane's system by composite bodies wherever it stands in for the
-/// method's own rows ([`derive_fastest`]), the method's own rows elsewhere
-/// ([`derive_own`]). The q'' and the reactions are the same to rounding; the derivation
-/// keeps `method`, so what is printed names the method asked for.
-///
-/// # Errors
-/// When the model cannot be built or the method finds no complete set of equations.
-pub fn derive(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    within_budget(method, || {
-        let fastest = derive_fastest(problem, method)?;
-        if fastest.system_method != method {
-            return Ok(fastest);
-        }
-        most_compact(problem, fastest)
-    })
-}
-
-/// Derives the equations of `problem` by `method` itself, in their most compact form, for
-/// numbers ([`Form::Numeric`]), forming no row that is not compiled
-/// ([`derive_for_numbers`]): what the confirmation checks compare.
-///
-/// # Errors
-/// As for [`derive()`].
-pub fn derive_own(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    within_budget(method, || {
-        most_compact(problem, derive_for_numbers(problem, method, &[])?)
-    })
-}
-
-/// The Motion Law's planar rows whole or by names, whichever compiles shorter; any other
-/// derivation as it is.
-fn most_compact<'p>(
-    problem: &'p Problem,
-    numeric: Derivation<'p>,
-) -> Result<Derivation<'p>, crate::mechanics::MechanicsError> {
-    let method = numeric.method;
-    // Asked last: reading the inertia forces writes them.
-    if method != Method::MotionLaw
-        || !numeric.model.is_planar()
-        || !numeric.inertia().compact.iter().any(|&c| c)
-    {
-        return Ok(numeric);
-    }
-    // The Motion Law's moments multiply each lever arm out against the named parts,
-    // where whole the trigonometric identities collect them: a chain of equal links
-    // comes out smaller whole (3,911 operations against 8,380 for ten), one of unequal
-    // links smaller by names (11,837 against 17,559). Keep the smaller program.
-    let whole = derive_at(problem, method, &[], Form::Handout)?;
-    let size = |d: &Derivation| Compiled::new(d).operation_count();
-    Ok(if size(&whole) < size(&numeric) {
-        whole
-    } else {
-        numeric
-    })
-}
-
-/// As [`derive()`], in the form a worked solution prints ([`Form::Handout`]).
-///
-/// # Errors
-/// As for [`derive()`].
-pub fn derive_for_handout(problem: &Problem, method: Method) -> Result<Derivation<'_>, Error> {
-    within_budget(method, || derive_at(problem, method, &[], Form::Handout))
-}
-
-/// A derivation counted against the work limit ([`budget`]): past it, the overrun is the
-/// error, whatever the derivation returned.
-fn within_budget<T>(
-    method: Method,
-    derivation: impl FnOnce() -> Result<T, crate::mechanics::MechanicsError>,
-) -> Result<T, Error> {
-    budget::start();
-    let derived = derivation();
-    budget::settle().map_err(|overrun| Error::TooMuchWork { overrun, method })?;
-    Ok(derived?)
-}
-
 /// The confirmation checks of a run of `solver` from `q0` (see
-/// [`numeric::checks::confirm`](crate::numeric::checks::confirm)), the other two methods
+/// [`numeric::checks::confirm`](crate::numeric::confirm)), the other two methods
 /// derived and solved through this pipeline, with the same recovery. Every method is
-/// checked by its own rows ([`derive_own`]): where Kane's system by composite bodies stood
+/// checked by its own rows ([`Purpose::Own`]): where Kane's system by composite bodies stood
 /// in for `solver`'s method, that method's own rows are derived for the check.
 pub fn confirm(
     problem: &Problem,
@@ -143,12 +64,17 @@ pub fn confirm(
     let method = solver.method();
     let own = match solver.is_own() {
         true => None,
-        false => Some(derive_own(problem, method).map(|d| Solver::new(problem, &d))),
+        false => Some(derive(problem, method, Purpose::Own).map(|d| Solver::new(problem, &d))),
     };
     let derived: Vec<(Method, Result<Derivation, String>)> = Method::ALL
         .iter()
         .filter(|m| **m != method)
-        .map(|&m| (m, derive_own(problem, m).map_err(|e| e.to_string())))
+        .map(|&m| {
+            (
+                m,
+                derive(problem, m, Purpose::Own).map_err(|e| e.to_string()),
+            )
+        })
         .collect();
     let solvers: Vec<(Method, Result<Solver, String>)> = derived
         .iter()
@@ -181,7 +107,7 @@ pub fn confirm(
         }
     };
     // The checks name each method as a course writes it: "from the Motion Law (…)".
-    checks::confirm(problem, (method.title(), primary), &others, trajectory, q0)
+    crate::numeric::confirm(problem, (method.title(), primary), &others, trajectory, q0)
 }
 
 /// Runs every stage for the worked solution of `problem` by `method`: [`run`] with
@@ -202,9 +128,9 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
 pub fn answers(
     problem: &Problem,
     method: Method,
-) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
+) -> Result<Vec<crate::numeric::Answer>, Error> {
     memo::answers(problem, method, || {
-        answers_from(problem, method, &derive(problem, method)?)
+        answers_from(problem, method, &derive(problem, method, Purpose::Numbers)?)
     })
 }
 
@@ -218,7 +144,7 @@ pub fn answers_from(
     problem: &Problem,
     method: Method,
     derivation: &Derivation,
-) -> Result<Vec<crate::numeric::answers::Answer>, Error> {
+) -> Result<Vec<crate::numeric::Answer>, Error> {
     let solver = Solver::fastest(problem, derivation);
     let after = match &problem.impact {
         Some(_) => Some(impact_at_start(problem, &derivation.model, &solver)?.after),
@@ -229,9 +155,8 @@ pub fn answers_from(
     let in_rates = problem.without_speeds();
     // The questions of statics are answered at rest, every friction site sticking; a
     // `slips` asked of a moving state is answered with the motion.
-    let at_rest = |q: &crate::problem::Question| {
-        q.kind.is_static() && !crate::numeric::moving_slip::asked(problem, q)
-    };
+    let at_rest =
+        |q: &crate::problem::Question| q.kind.is_static() && !crate::numeric::asked(problem, q);
     let mut given = vec![None; problem.questions.len()];
     if problem.questions.iter().any(at_rest) {
         let statics = statics::Statics::new(&in_rates, method)?;
@@ -246,7 +171,7 @@ pub fn answers_from(
         matches!(q.kind, Period { .. } | Stability { .. })
     });
     let linearizer = match (asks_period, problem.has_speeds()) {
-        (true, true) => Some(Linearizer::new(&derive(&in_rates, method)?)),
+        (true, true) => Some(Linearizer::new(&derive(&in_rates, method, Purpose::Numbers)?)),
         // Without declared speeds the problem in its rates is the problem itself.
         (true, false) => Some(Linearizer::new(derivation)),
         (false, _) => None,
@@ -263,14 +188,8 @@ pub fn answers_from(
         Some(l) => l.at(&in_rates, t, q, rates).map_err(|e| e.to_string()),
         None => Err("no linearization".to_string()),
     };
-    crate::numeric::answers::answer_all_with(
-        problem,
-        &solver,
-        Some(&linearize),
-        after.as_deref(),
-        given,
-    )
-    .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
+    crate::numeric::answer_all_with(problem, &solver, Some(&linearize), after.as_deref(), given)
+        .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
 }
 
 /// What is compiled from a derivation's plan, and from the plans made again for special
@@ -330,11 +249,10 @@ impl<T> Plans<T> {
             q: q.to_vec(),
             rates: rates.to_vec(),
         };
-        let Some(compiled) = within_budget(self.method, || {
-            derive_at(problem, self.method, &[state], Form::Numeric)
-        })
-        .ok()
-        .and_then(|derivation| compile(&derivation)) else {
+        let Some(compiled) = derive(problem, self.method, Purpose::At(&[state], Form::Numeric))
+            .ok()
+            .and_then(|derivation| compile(&derivation))
+        else {
             return first;
         };
         let result = f(&compiled);
@@ -411,7 +329,7 @@ impl System for Solver<'_> {
         self.compiled().coordinate_names()
     }
 
-    fn reaction_columns(&self) -> Vec<crate::numeric::system::ReactionColumn> {
+    fn reaction_columns(&self) -> Vec<crate::numeric::ReactionColumn> {
         self.compiled().reaction_columns()
     }
 
@@ -456,7 +374,7 @@ impl System for Solver<'_> {
         t: f64,
         q: &[f64],
         rates: &[f64],
-        held: &[crate::numeric::friction::Held],
+        held: &[crate::numeric::Held],
     ) -> Result<Vec<f64>, SolveError> {
         self.with_plan(t, q, rates, |c| {
             c.motion_held(t, q, rates, Some(held))
@@ -469,8 +387,8 @@ impl System for Solver<'_> {
         t: f64,
         q: &[f64],
         rates: &[f64],
-        held: Option<&[crate::numeric::friction::Held]>,
-    ) -> Result<(Vec<crate::numeric::friction::SiteState>, Vec<f64>), SolveError> {
+        held: Option<&[crate::numeric::Held]>,
+    ) -> Result<(Vec<crate::numeric::SiteState>, Vec<f64>), SolveError> {
         self.with_plan(t, q, rates, |c| c.friction_at(t, q, rates, held))
     }
 }
@@ -479,16 +397,16 @@ impl System for Solver<'_> {
 /// [`Solver`]: where the Motion Law's plan is singular at the state, the state matrix comes
 /// from a plan made for it.
 pub struct Linearizer {
-    linear: linearize::ModalAnalysis,
-    jacobians: Plans<linearize::Jacobian>,
+    linear: ModalAnalysis,
+    jacobians: Plans<Jacobian>,
 }
 
 impl Linearizer {
     /// Compiles the equations of `derivation` for their partial derivatives.
     pub fn new(derivation: &Derivation) -> Linearizer {
         Linearizer {
-            linear: linearize::ModalAnalysis::new(derivation),
-            jacobians: Plans::new(derivation, linearize::jacobian_of(derivation)),
+            linear: ModalAnalysis::new(derivation),
+            jacobians: Plans::new(derivation, jacobian_of(derivation)),
         }
     }
 
@@ -515,7 +433,7 @@ impl Linearizer {
         let state = self.jacobians.run(
             problem,
             (t, &q, &rates),
-            |d| Some(linearize::jacobian_of(d)),
+            |d| Some(jacobian_of(d)),
             |jacobian| jacobian.at(problem, t, &q, &rates),
         )?;
         Ok(self.linear.at(problem, t, &q, &rates, state)?)

@@ -3,10 +3,9 @@
 
 use super::Solver;
 use crate::equations::Derivation;
-use crate::numeric::frame::{frame_count, Frame};
-use crate::numeric::simulate::{simulate_with_limits, Limits};
+use crate::error::Error;
+use crate::numeric::{simulate_with_limits, Frame, Limits};
 use crate::problem::Problem;
-use crate::Error;
 
 /// The motion from the problem's initial state over `duration` seconds, sampled every
 /// `1/fps` s by the integrator's dense output, as `simulate` integrates it. A run that stops
@@ -48,5 +47,47 @@ pub fn frames(
     match (frames.len(), run.stopped) {
         (0 | 1, Some(reason)) => Err(Error::Solve(reason)),
         _ => Ok(frames),
+    }
+}
+
+/// The most frames a motion may have (400 s at 25 frames per second): each frame adds a
+/// value to every animation of the picture, and more would make a file no viewer plays.
+pub const MAX_FRAMES: usize = 10_000;
+
+/// The number of frames of `duration` seconds at `fps`, or a usage error when the numbers
+/// are not usable or give more than `MAX_FRAMES` (10,000); checked before any work.
+///
+/// # Errors
+/// [`Error::Usage`] naming the flag.
+pub fn frame_count(duration: f64, fps: f64) -> Result<usize, Error> {
+    if !(duration.is_finite() && duration > 0.0) {
+        return Err(Error::Usage(
+            "--duration must be a positive number of seconds".into(),
+        ));
+    }
+    if !(fps.is_finite() && fps > 0.0) {
+        return Err(Error::Usage(
+            "--fps must be a positive number of frames per second".into(),
+        ));
+    }
+    let frames = (duration * fps).ceil() + 1.0;
+    if frames > MAX_FRAMES as f64 {
+        return Err(Error::Usage(format!(
+            "{duration} s at {fps} frames per second is {frames} frames, more than {MAX_FRAMES}: shorten --duration or lower --fps"
+        )));
+    }
+    Ok(frames as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::frame_count;
+
+    #[test]
+    fn absurd_frame_counts_are_refused_before_any_work() {
+        assert_eq!(frame_count(5.0, 25.0).ok(), Some(126));
+        assert!(frame_count(1e6, 25.0).is_err());
+        assert!(frame_count(5.0, 0.0).is_err());
+        assert!(frame_count(f64::NAN, 25.0).is_err());
     }
 }

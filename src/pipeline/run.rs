@@ -2,21 +2,14 @@
 //! for what the handout asks ([`Job`]). The worked solution and the student's version are
 //! written from its [`Worked`] alone.
 
-use super::{
-    answers, answers_from, confirm, derive, derive_for_handout, impact, memo, Linearizer, Solver,
+use super::{answers, answers_from, confirm, derive, impact, memo, Linearizer, Purpose, Solver};
+use crate::equations::{Derivation, LinearSystem, Method};
+use crate::error::Error;
+use crate::numeric::{
+    simulate, Answer, Check, Frame, Linearization, SolveError, StateSolution, System, Trajectory,
+    DEFAULT_FPS,
 };
-use crate::equations::LinearSystem;
-use crate::equations::{Derivation, Method};
-use crate::numeric::answers::Answer;
-use crate::numeric::checks::Check;
-use crate::numeric::evaluate::StateSolution;
-use crate::numeric::frame::{Frame, DEFAULT_FPS};
-use crate::numeric::linearize::Linearization;
-use crate::numeric::simulate::{simulate, Trajectory};
-use crate::numeric::system::System;
-use crate::numeric::SolveError;
 use crate::problem::{Problem, QuestionKind};
-use crate::Error;
 
 /// What a handout asks of the stages besides the derivation and the initial state.
 #[derive(Clone, Debug)]
@@ -98,7 +91,7 @@ pub struct ImpactWorked<'p> {
 /// solution says so.
 pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
     let method = job.method;
-    let derivation = derive_for_handout(problem, method)?;
+    let derivation = derive(problem, method, Purpose::Handout)?;
     let solver = Solver::new(problem, &derivation);
     let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
@@ -157,8 +150,8 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
         // Small motions are about the coordinates and their rates, whatever the speeds.
         let in_rates = problem.without_speeds();
         let linearizer = match problem.has_speeds() {
-            true => Linearizer::new(&derive(&in_rates, method)?),
-            false => Linearizer::new(numeric.insert(derive(problem, method)?)),
+            true => Linearizer::new(&derive(&in_rates, method, Purpose::Numbers)?),
+            false => Linearizer::new(numeric.insert(derive(problem, method, Purpose::Numbers)?)),
         };
         worked.linearization = Some(linearizer.at(&in_rates, 0.0, q, rates)?);
     }
@@ -185,7 +178,7 @@ fn impulsive_equations<'p>(
 ) -> Option<Result<Derivation<'p>, Error>> {
     let impulsive = problem.impulsive(q0, None)?;
     let kept: &'p Problem = Box::leak(Box::new(impulsive.problem));
-    Some(derive_for_handout(kept, method))
+    Some(derive(kept, method, Purpose::Handout))
 }
 
 /// The frames of the motion over the simulation's duration at the default frame rate,
@@ -222,7 +215,7 @@ fn period_system(
         return Some(derivation.system.clone());
     }
     let in_rates = problem.without_speeds();
-    derive_for_handout(&in_rates, Method::Kane)
+    derive(&in_rates, Method::Kane, Purpose::Handout)
         .ok()
         .map(|d| d.system.clone())
 }

@@ -7,10 +7,9 @@
 //! capsize).
 
 use super::{sweep, Linearizer, Sweep};
-use crate::numeric::answers::{Answer, Quantity};
-use crate::numeric::stability_edge::{name, Edge};
+use crate::error::Error;
+use crate::numeric::{edge_name as name, Answer, Edge, Quantity};
 use crate::problem::{Problem, ProblemError, ProblemErrors, Question, QuestionKind};
-use crate::Error;
 
 /// The question's state for the problem with the constant set: the initial one, with the
 /// question's `at.state` entries.

@@ -1,68 +1,80 @@
-//! The stages that derive the equations, called in turn: the model (steps 1 and 4), the
-//! free bodies (step 2), then the equations of one method (steps 3 and 5).
+//! The one entry for a derivation: [`derive`] calls the stages in turn (the model, steps 1
+//! and 4; the free bodies, step 2; the equations of one method, steps 3 and 5) for what the
+//! caller needs ([`Purpose`]), counted against the work limit.
 
 use crate::equations::{self, Derivation, Method, Request, Rows, State};
+use crate::error::Error;
 use crate::mechanics::{Form, MechanicsError};
+use crate::numeric::Compiled;
 use crate::problem::Problem;
+use crate::symbolic::budget;
 
-/// Derives the equations of `problem` by `method` for `request` (see
-/// [`equations::derive`]).
+/// What a derivation is for, which says the rows formed and their form.
+#[derive(Clone, Copy, Debug)]
+pub enum Purpose<'s> {
+    /// The worked solution: every row as a student writes it ([`Form::Handout`]).
+    Handout,
+    /// The numbers, in the fastest exact form ([`Form::Numeric`]): Kane's system by
+    /// composite bodies wherever it stands in for the method's own rows ([`Rows::Fastest`]),
+    /// the method's own rows elsewhere, as for [`Purpose::Own`]. The q'' and the reactions
+    /// are the same to rounding; the derivation keeps the method, so what is printed names
+    /// the method asked for.
+    Numbers,
+    /// The method's own rows for numbers, forming no row that is not compiled
+    /// ([`Rows::Compiled`]), in their most compact form: what the confirmation checks
+    /// compare.
+    Own,
+    /// Every row the method writes, for numbers: what the comparisons between methods read.
+    Rows,
+    /// Every row the method writes in `form`, the Motion Law's plan nonsingular at `states`
+    /// where a plan can be: where the plan is made again at a singular state.
+    At(&'s [State], Form),
+}
+
+/// Derives the equations of `problem` by `method` for `purpose`.
 ///
 /// # Errors
-/// As for [`equations::derive`].
-pub fn derive_for<'p>(
+/// When the model cannot be built, the method finds no complete set of equations, or the
+/// work passes the limit ([`budget`]).
+pub fn derive<'p>(
     problem: &'p Problem,
     method: Method,
-    request: Request<'_>,
-) -> Result<Derivation<'p>, MechanicsError> {
-    equations::derive(problem, method, request)
+    purpose: Purpose<'_>,
+) -> Result<Derivation<'p>, Error> {
+    within_budget(method, || match purpose {
+        Purpose::Handout => formed(problem, method, &[], Form::Handout),
+        Purpose::Rows => formed(problem, method, &[], Form::Numeric),
+        Purpose::At(states, form) => formed(problem, method, states, form),
+        Purpose::Own => most_compact(problem, numeric(problem, method, Rows::Compiled)?),
+        Purpose::Numbers => {
+            let fastest = numeric(problem, method, Rows::Fastest)?;
+            if fastest.system_method != method {
+                return Ok(fastest);
+            }
+            most_compact(problem, fastest)
+        }
+    })
 }
 
-/// Every row `method` writes for `problem`, for numbers ([`Form::Numeric`]): what the
-/// comparisons between methods read.
-///
-/// # Errors
-/// As for [`derive_for`].
-pub fn derive_rows(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
-    derive_at(problem, method, &[], Form::Numeric)
-}
-
-/// Every row `method` writes for `problem` in `form`, the Motion Law's plan nonsingular at
-/// `states` where a plan can be.
-///
-/// # Errors
-/// As for [`derive_for`].
-pub fn derive_at<'p>(
+/// Every row in `form`, the plan nonsingular at `states`.
+fn formed<'p>(
     problem: &'p Problem,
     method: Method,
     states: &[State],
     form: Form,
 ) -> Result<Derivation<'p>, MechanicsError> {
     let rows = Rows::Formed;
-    derive_for(problem, method, Request { form, rows, states })
+    equations::derive(problem, method, Request { form, rows, states })
 }
 
-/// As [`derive_at`] for numbers, forming only what is compiled ([`Rows::Compiled`]).
-///
-/// # Errors
-/// As for [`derive_for`].
-pub fn derive_for_numbers<'p>(
-    problem: &'p Problem,
+/// The rows `rows` says, for numbers.
+fn numeric(
+    problem: &Problem,
     method: Method,
-    states: &[State],
-) -> Result<Derivation<'p>, MechanicsError> {
-    let (form, rows) = (Form::Numeric, Rows::Compiled);
-    derive_for(problem, method, Request { form, rows, states })
-}
-
-/// For numbers, Kane's system by composite bodies standing in for any method's rows where
-/// it is built alone ([`Rows::Fastest`]).
-///
-/// # Errors
-/// As for [`derive_for`].
-pub fn derive_fastest(problem: &Problem, method: Method) -> Result<Derivation<'_>, MechanicsError> {
-    let (form, rows) = (Form::Numeric, Rows::Fastest);
-    derive_for(
+    rows: Rows,
+) -> Result<Derivation<'_>, MechanicsError> {
+    let form = Form::Numeric;
+    equations::derive(
         problem,
         method,
         Request {
@@ -71,4 +83,43 @@ pub fn derive_fastest(problem: &Problem, method: Method) -> Result<Derivation<'_
             states: &[],
         },
     )
+}
+
+/// The Motion Law's planar rows whole or by names, whichever compiles shorter; any other
+/// derivation as it is.
+fn most_compact<'p>(
+    problem: &'p Problem,
+    numeric: Derivation<'p>,
+) -> Result<Derivation<'p>, MechanicsError> {
+    let method = numeric.method;
+    // Asked last: reading the inertia forces writes them.
+    if method != Method::MotionLaw
+        || !numeric.model.is_planar()
+        || !numeric.inertia().compact.iter().any(|&c| c)
+    {
+        return Ok(numeric);
+    }
+    // The Motion Law's moments multiply each lever arm out against the named parts,
+    // where whole the trigonometric identities collect them: a chain of equal links
+    // comes out smaller whole (3,911 operations against 8,380 for ten), one of unequal
+    // links smaller by names (11,837 against 17,559). Keep the smaller program.
+    let whole = formed(problem, method, &[], Form::Handout)?;
+    let size = |d: &Derivation| Compiled::new(d).operation_count();
+    Ok(if size(&whole) < size(&numeric) {
+        whole
+    } else {
+        numeric
+    })
+}
+
+/// A derivation counted against the work limit ([`budget`]): past it, the overrun is the
+/// error, whatever the derivation returned.
+fn within_budget<T>(
+    method: Method,
+    derivation: impl FnOnce() -> Result<T, MechanicsError>,
+) -> Result<T, Error> {
+    budget::start();
+    let derived = derivation();
+    budget::settle().map_err(|overrun| Error::TooMuchWork { overrun, method })?;
+    Ok(derived?)
 }

@@ -10,15 +10,11 @@
 //! ([`super::Linearizer`]): unstable when an eigenvalue has a positive real part, neutral
 //! when one is zero (the linearization decides nothing), stable otherwise.
 
-use super::{derive, Linearizer, Solver};
+use super::{derive, Linearizer, Purpose, Solver};
 use crate::equations::Method;
-use crate::numeric::evaluate::Motion;
-use crate::numeric::friction::Held;
-use crate::numeric::newton::{self, NewtonFailure};
-use crate::numeric::system::System;
-use crate::numeric::SolveError;
+use crate::error::Error;
+use crate::numeric::{newton_solve, Held, Motion, NewtonFailure, SolveError, System};
 use crate::problem::{Problem, ProblemError, ProblemErrors};
-use crate::Error;
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// How an equilibrium responds to a small disturbance, from its linearization.
@@ -46,6 +42,7 @@ impl StabilityKind {
 /// The stability of an equilibrium and the eigenvalues it is judged by.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stability {
+    /// Stable, unstable, or neutral (the linearization does not decide).
     pub kind: StabilityKind,
     /// The eigenvalues of the state matrix, (re, im), sorted as `linearize` sorts them.
     pub eigenvalues: Vec<(f64, f64)>,
@@ -116,7 +113,7 @@ impl<'p> Statics<'p> {
     /// # Errors
     /// As for [`derive()`].
     pub fn new(problem: &'p Problem, method: Method) -> Result<Statics<'p>, Error> {
-        let derivation = derive(problem, method)?;
+        let derivation = derive(problem, method, Purpose::Numbers)?;
         let dependent = &derivation.model.constraints.dependent;
         let free = (0..problem.coordinates.len())
             .filter(|i| !dependent.contains(i) && problem.coordinates[*i].motion.is_none())
@@ -184,7 +181,7 @@ impl<'p> Statics<'p> {
             q
         };
         let u0 = DVector::from_iterator(self.free.len(), self.free.iter().map(|&i| guess[i]));
-        let root = newton::solve(|u| self.residual(&set(u)), u0)
+        let root = newton_solve(|u| self.residual(&set(u)), u0)
             .map_err(|failure| self.not_found(failure, from))?;
         let (q, rates) = self.at(&set(&root.u))?;
         let motion = self.solver.at_rest(0.0, &q, &rates)?;
@@ -208,7 +205,7 @@ impl<'p> Statics<'p> {
             }
             NewtonFailure::NoRoot { left, iterations } => format!(
                 "no equilibrium found near {from}: after {iterations} Newton iterations the largest second derivative of a free coordinate is still {}",
-                crate::numeric::format::fixed(left)
+                crate::symbolic::fixed(left)
             ),
         };
         let error = ProblemError {
@@ -236,9 +233,8 @@ impl<'p> Statics<'p> {
             Ok(linear) => linear.eigen.iter().map(|e| e.value).collect(),
             Err(error) => {
                 let a = self.state_matrix(q).ok_or(error)?;
-                let mut values =
-                    crate::numeric::linearize::hqr::eigenvalues(&a).unwrap_or_default();
-                crate::numeric::linearize::modes::sort(&mut values);
+                let mut values = crate::numeric::eigenvalues(&a).unwrap_or_default();
+                crate::numeric::sort_modes(&mut values);
                 values
             }
         };

@@ -4,11 +4,9 @@
 //! each trial value's equilibrium found anew.
 
 use super::statics::Statics;
-use crate::numeric::answers::{Answer, Quantity};
-use crate::numeric::friction::SiteState;
-use crate::numeric::newton::{self, NewtonFailure};
+use crate::error::Error;
+use crate::numeric::{newton_solve, Answer, NewtonFailure, Quantity, SiteState};
 use crate::problem::{Problem, ProblemError, ProblemErrors, Question, QuestionKind};
-use crate::Error;
 use nalgebra::DVector;
 
 /// The value a `slips` answer is named by: |F|/(μ|N|).
@@ -183,16 +181,16 @@ fn impending(statics: &Statics, problem: &Problem, question: &Question) -> Resul
     };
     let start = guess.unwrap_or(problem.constants[constant].value);
     let what = if tips { "tipping" } else { "slip" };
-    let root = newton::solve(f, DVector::from_element(1, start)).map_err(|e| {
+    let root = newton_solve(f, DVector::from_element(1, start)).map_err(|e| {
         let message = match e {
             NewtonFailure::NotSolvable => format!(
                 "the forces at rest cannot be found with {name} = {}",
-                crate::numeric::format::fixed(start)
+                crate::symbolic::fixed(start)
             ),
             NewtonFailure::NoRoot { left, iterations } => format!(
                 "no value of {name} found at which {what} impends at {site_name}: after {iterations} Newton iterations {} is still {}",
                 if tips { "the normal force (N)" } else { "|F|/(μ|N|) − 1" },
-                crate::numeric::format::fixed(left)
+                crate::symbolic::fixed(left)
             ),
         };
         failure(

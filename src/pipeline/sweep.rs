@@ -2,10 +2,9 @@
 //! the values tried the stability changes, by bisection.
 
 use super::Linearizer;
-use crate::numeric::linearize::modes;
-use crate::numeric::linearize::Linearization;
+use crate::error::Error;
+use crate::numeric::{is_stable, Linearization, ROUND_OFF};
 use crate::problem::Problem;
-use crate::Error;
 
 /// `--sweep NAME=FROM:TO:COUNT`, parsed.
 #[derive(Clone, Debug, PartialEq)]
@@ -53,10 +52,7 @@ pub fn sweep(
         .iter()
         .map(|&value| at(value))
         .collect::<Result<Vec<_>, Error>>()?;
-    let stable: Vec<bool> = results
-        .iter()
-        .map(|l| modes::is_stable(&l.eigen, 0.0))
-        .collect();
+    let stable: Vec<bool> = results.iter().map(|l| is_stable(&l.eigen, 0.0)).collect();
     let mut edges = Vec::new();
     for i in 1..results.len() {
         if stable[i] != stable[i - 1] {
@@ -78,7 +74,7 @@ fn boundary(
     let raw = |value: f64| -> Result<Vec<nalgebra::Complex<f64>>, Error> {
         let l = at(value)?;
         let a = without_ignorable(&l.a);
-        let mut values = crate::numeric::linearize::hqr::eigenvalues(&a).unwrap_or_default();
+        let mut values = crate::numeric::eigenvalues(&a).unwrap_or_default();
         values.sort_by(|x, y| x.norm().total_cmp(&y.norm()));
         Ok(values)
     };
@@ -86,7 +82,7 @@ fn boundary(
         let scale = values.iter().map(|v| v.norm()).fold(0.0, f64::max);
         values
             .iter()
-            .filter(|v| v.norm() <= modes::ROUND_OFF * scale)
+            .filter(|v| v.norm() <= ROUND_OFF * scale)
             .count()
     };
     let (low, high) = (raw(a)?, raw(b)?);

@@ -8,9 +8,7 @@ use super::rejection::{self, Reason, Rejected, SpecialState};
 use super::rows::{Equation, Inertia};
 use crate::mechanics::Model;
 use crate::plan::forces::Action;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_coefficients;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{eval, linear_coefficients, Expr, Symbol, Values};
 use std::collections::HashMap;
 use std::f64::consts::FRAC_PI_2;
 

@@ -1,16 +1,11 @@
 //! Every force and couple in the system, each acting on one body, sorted as the Motion Law
 //! names them: contact forces and distance forces. (Inertia forces come from kinematics.)
 
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::joints::ComponentKind;
-use crate::mechanics::sites::Site;
-use crate::mechanics::vector::Components;
-use crate::mechanics::{MechanicsError, Model, Vector};
+use crate::mechanics::{ComponentKind, Components, MechanicsError, Model, RowOrigin, Site, Vector};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{linear_split, Expr, Symbol};
 
-pub mod line;
+pub(super) mod line;
 use line::Lines;
 
 /// Contact (touching) or distance (gravity) force, as the Motion Law sorts them.
@@ -81,7 +76,7 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
     let problem = model.problem;
     let mut out = Vec::new();
     if let Some(g) = &problem.gravity {
-        let g = crate::mechanics::model::vector_of(g);
+        let g = crate::mechanics::vector_of(g);
         for body in problem.body_ids() {
             let state = &model.bodies[body.0];
             if state.mass.is_zero() {
@@ -133,7 +128,7 @@ pub fn actions(model: &Model) -> Result<Vec<Action>, MechanicsError> {
             let row = &model.constraints.rows[r];
             // A prescribed coordinate's row is enforced by its drive, at its joint.
             let label = match row.origin {
-                crate::mechanics::constraints::RowOrigin::Prescribed(i) => {
+                crate::mechanics::RowOrigin::Prescribed(i) => {
                     drive_label(problem, &problem.coordinates[i])
                 }
                 _ => format!("enforcing {}", row.name),
@@ -256,7 +251,7 @@ fn force_offset(model: &Model, on: BodyId, at: &ForcePoint) -> Result<Components
             Ok(offset)
         }
         ForcePoint::Offset(v) => {
-            Ok(crate::mechanics::model::vector_of(v).components_in(on, &model.frames))
+            Ok(crate::mechanics::vector_of(v).components_in(on, &model.frames))
         }
     }
 }
@@ -294,7 +289,7 @@ fn load_actions(
                     "a force acts at a point of the body it is applied to",
                 )
             })?;
-            let force = crate::mechanics::model::vector_of(vector);
+            let force = crate::mechanics::vector_of(vector);
             if *on != BodyId::GROUND {
                 out.push(contact(
                     *on,
@@ -309,7 +304,7 @@ fn load_actions(
             vector,
             reaction_on,
         } => {
-            let torque = crate::mechanics::model::vector_of(vector);
+            let torque = crate::mechanics::vector_of(vector);
             let label = named(format!("torque on {}", problem.body_name(*on)));
             if *on != BodyId::GROUND {
                 out.push(contact(

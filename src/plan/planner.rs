@@ -11,9 +11,7 @@ use super::rows::{
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, Source};
 use crate::problem::{BodyId, JointKind};
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_coefficients;
-use crate::symbolic::Symbol;
+use crate::symbolic::{eval, linear_coefficients, Symbol, Values};
 
 /// Above this many bodies, connected groups other than subtrees are not tried.
 const MAX_BODIES_FOR_GROUPS: usize = 4;
@@ -32,7 +30,6 @@ pub struct Candidate {
 }
 
 pub use super::choose::{choose, Choice};
-pub use super::rejection::{Reason, Rejected};
 
 /// The free bodies worth trying: every outboard subtree, every single body, and (while the
 /// system is small) every connected group of bodies.
@@ -128,7 +125,7 @@ fn directions(
                 name: format!("axis of {}", joint.name),
                 latex: format!(
                     "\\hat{{\\mathbf{{e}}}}_{{{}}}",
-                    crate::symbolic::print::latex_name(&joint.name)
+                    crate::symbolic::latex_name(&joint.name)
                 ),
                 vector: Vector::new(joint.parent, axis.clone()),
             };
@@ -279,7 +276,7 @@ pub fn write_out(
     }
 }
 
-pub use crate::mechanics::model::sample_states;
+pub use crate::mechanics::sample_states;
 
 /// The coefficients of the unknowns in a row, at each of `states`.
 pub fn coefficient_rows(

@@ -3,8 +3,7 @@
 
 use super::planner::Candidate;
 use super::rows::Sum;
-use crate::mechanics::sites::reaction_unknowns;
-use crate::mechanics::Model;
+use crate::mechanics::{reaction_unknowns, Model};
 use crate::symbolic::Symbol;
 
 /// A state at which rows that are independent at generic states may fail together.

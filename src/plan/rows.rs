@@ -1,13 +1,11 @@
 //! One scalar equation of motion: a free body, a sum of forces or of moments about a point,
 //! dotted with a direction, its terms grouped as the Motion Law groups them.
 
-use crate::mechanics::compact::{named_components, Built, Kind, Quantity, MAX_EXPANDED_TERMS};
-use crate::mechanics::dot_sum::DotSum;
-use crate::mechanics::frames::{apply, Frames};
-use crate::mechanics::model::sample_states;
-use crate::mechanics::on_parent;
-use crate::mechanics::vector::{size, Components};
 pub use crate::mechanics::Form;
+use crate::mechanics::{
+    angular, apply, center, named_components, sample_states, size, Built, Components, DotSum,
+    Frames, Kind, Quantity, MAX_EXPANDED_TERMS,
+};
 use crate::mechanics::{Model, Vector};
 use crate::plan::forces::{Action, ActionKind, Category};
 use crate::problem::BodyId;
@@ -63,7 +61,7 @@ impl Inertia {
         let mut alphas: Vec<Components> =
             vec![std::array::from_fn(|_| Expr::zero()); model.bodies.len()];
         for &body in &model.order {
-            let built = on_parent::angular(model, body, &alphas);
+            let built = angular(model, body, &alphas);
             alphas[body.0] = named(
                 body,
                 &model.bodies[body.0].alpha,
@@ -98,7 +96,7 @@ impl Inertia {
                 continue;
             }
             compact[body.0] = true;
-            let built = on_parent::center(model, body, &centers, &alphas);
+            let built = center(model, body, &centers, &alphas);
             centers[body.0] = Vector::new(
                 state.frame,
                 named(
@@ -119,7 +117,7 @@ impl Inertia {
             let w = state.omega_named.components_in(state.frame, &model.frames);
             let a = alphas[index].clone();
             let iw = apply(&state.inertia, &w);
-            let gyro = crate::mechanics::vector::cross3(&w, &iw);
+            let gyro = crate::mechanics::cross3(&w, &iw);
             let t: Components = if form == Form::Numeric && !model.is_planar() {
                 torque_with_named_rest(
                     &state.inertia,
@@ -434,14 +432,14 @@ pub fn unit_direction(model: &Model, frame: BodyId, axis: usize) -> Direction {
     let name = model.frames.name(frame);
     Direction {
         name: format!("{name}.{}", ["x", "y", "z"][axis]),
-        latex: crate::symbolic::print::latex_unit_vector(name, axis as u8),
+        latex: crate::symbolic::latex_unit_vector(name, axis as u8),
         vector: Vector::unit(frame, axis),
     }
 }
 
 /// The inertia torque −(I·α + ω × I·ω), as the student writes it.
 fn torque_whole(
-    inertia: &crate::mechanics::frames::Matrix,
+    inertia: &crate::mechanics::Matrix,
     alpha: &Components,
     gyro: &Components,
 ) -> Components {
@@ -454,7 +452,7 @@ fn torque_whole(
 /// products, ω_r · T, where multiplied out against ω_r the gyroscopic part alone is some
 /// thirty monomials of the ω components for each body and row. For the numbers only.
 fn torque_with_named_rest(
-    inertia: &crate::mechanics::frames::Matrix,
+    inertia: &crate::mechanics::Matrix,
     alpha: &Components,
     gyro: &Components,
     accelerations: &[Symbol],
@@ -462,7 +460,7 @@ fn torque_with_named_rest(
 ) -> Components {
     let split: Option<Vec<(Vec<Expr>, Expr)>> = alpha
         .iter()
-        .map(|c| crate::symbolic::linear::linear_split(c, accelerations).ok())
+        .map(|c| crate::symbolic::linear_split(c, accelerations).ok())
         .collect();
     let Some(split) = split else {
         return torque_whole(inertia, alpha, gyro);
@@ -486,7 +484,7 @@ fn torque_with_named_rest(
                 &format!("{body}.T.{axis_name}"),
                 &format!(
                     "T^{{{}}}_{{{axis_name}}}",
-                    crate::symbolic::print::latex_name(body)
+                    crate::symbolic::latex_name(body)
                 ),
                 &format!("inertia torque of {body} without the q'', along {body}.{axis_name}"),
                 value,

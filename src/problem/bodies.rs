@@ -96,7 +96,7 @@ impl super::reader::Reader {
                     None => format!("no joint names the coordinate `{name}`"),
                 };
                 let known: Vec<&str> = self.names.coordinates.iter().map(String::as_str).collect();
-                let hint = match crate::symbolic::hint::closest(name, known.iter().copied()) {
+                let hint = match crate::symbolic::closest(name, known.iter().copied()) {
                     Some(close) => format!("did you mean `{close}`?"),
                     None => "coordinates are named by the joints' `coordinates` lists".to_string(),
                 };

@@ -423,13 +423,12 @@ impl Reader {
             .iter()
             .map(|c| Symbol::Coord(c.as_str().into(), 1))
             .collect();
-        let affine = crate::symbolic::linear::linear_split(&expression, &rates).is_ok_and(
-            |(coefficients, _)| {
+        let affine =
+            crate::symbolic::linear_split(&expression, &rates).is_ok_and(|(coefficients, _)| {
                 coefficients
                     .iter()
                     .all(|c| !c.any_symbol(&|s| matches!(s, Symbol::Coord(_, k) if *k > 0)))
-            },
-        );
+            });
         if !affine {
             self.diag.hint(
                 &expression_path,

@@ -7,10 +7,7 @@
 use super::json::{kind, Diagnostics};
 use super::model::{BodyId, VectorExpr};
 use super::names::{suggest, Kind, Names};
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::parse::{parse, ParseError, Resolve};
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{eval, linear_split, parse, Expr, ParseError, Resolve, Symbol, Values};
 use serde_json::Value;
 use std::cell::RefCell;
 use std::collections::HashSet;

@@ -8,8 +8,7 @@ use super::json::{check_keys, key_path, required, Diagnostics};
 use super::model::*;
 use super::reader::Reader;
 use super::validate;
-use crate::symbolic::format::fixed;
-use crate::symbolic::Expr;
+use crate::symbolic::{fixed, Expr};
 use serde_json::{Map, Value};
 
 const CONTACT_KEYS: [&str; 8] = [

@@ -9,8 +9,7 @@ use super::json::{self, check_keys, index_path, key_path, object, required, stri
 use super::model::*;
 use super::reader::{Known, Reader};
 use super::validate;
-use crate::symbolic::format::fixed;
-use crate::symbolic::Expr;
+use crate::symbolic::{fixed, Expr};
 use serde_json::{Map, Value};
 
 const IMPACT_KEYS: [&str; 2] = ["impulses", "collision"];

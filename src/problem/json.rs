@@ -150,7 +150,7 @@ pub fn check_keys(map: &Map<String, Value>, path: &str, allowed: &[&str], diag: 
         if allowed.contains(&key.as_str()) {
             continue;
         }
-        let hint = match crate::symbolic::hint::closest(key, allowed.iter().copied()) {
+        let hint = match crate::symbolic::closest(key, allowed.iter().copied()) {
             Some(close) => format!("did you mean `{close}`?"),
             None => format!("the keys here are {}", list(allowed)),
         };

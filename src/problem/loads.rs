@@ -447,7 +447,7 @@ impl Reader {
                 self.diag.hint(
                     &coordinate_path,
                     format!("unknown coordinate `{name}`"),
-                    match crate::symbolic::hint::closest(name, own.iter().copied()) {
+                    match crate::symbolic::closest(name, own.iter().copied()) {
                         Some(close) => format!("did you mean `{close}`?"),
                         None => hint,
                     },

@@ -3,7 +3,7 @@
 
 use super::json::Diagnostics;
 use super::model::BodyId;
-use crate::symbolic::hint::closest;
+use crate::symbolic::closest;
 use std::collections::HashMap;
 
 /// What a name stands for.

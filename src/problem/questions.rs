@@ -63,7 +63,7 @@ impl Reader {
     /// Whether a question's `symbol` is math every format can set: it is written inside
     /// `$…$` in every handout and names a column of key.csv. An error at `path` otherwise.
     fn typesettable(&mut self, symbol: &str, path: &str) -> bool {
-        if crate::render::safe_math::checked(symbol).is_some() && !symbol.contains(['<', '>']) {
+        if crate::render::checked_math(symbol).is_some() && !symbol.contains(['<', '>']) {
             return true;
         }
         let shown: String = symbol.chars().take(40).collect();
@@ -316,7 +316,7 @@ impl Reader {
             if t < 0.0 {
                 self.diag.hint(
                     &tpath,
-                    format!("the time {} is negative", crate::symbolic::format::fixed(t)),
+                    format!("the time {} is negative", crate::symbolic::fixed(t)),
                     "simulations start at t = 0; give a time of 0 or more",
                 );
                 return None;

@@ -161,7 +161,7 @@ fn decimals_written(value: &Value) -> Vec<(crate::symbolic::Number, String)> {
     while let Some(v) = walk.pop() {
         match v {
             Value::String(text) => {
-                for found in crate::symbolic::style::decimal_literals(text) {
+                for found in crate::symbolic::decimal_literals(text) {
                     if !out.contains(&found) {
                         out.push(found);
                     }

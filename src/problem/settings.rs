@@ -70,7 +70,7 @@ impl Reader {
                     &path,
                     format!(
                         "`{key}` must be positive, not {}",
-                        crate::symbolic::format::fixed(v)
+                        crate::symbolic::fixed(v)
                     ),
                 );
                 return default;
@@ -85,8 +85,8 @@ impl Reader {
                 "simulate.output_step",
                 format!(
                     "the output step {} is longer than the duration {}",
-                    crate::symbolic::format::fixed(settings.output_step),
-                    crate::symbolic::format::fixed(settings.duration)
+                    crate::symbolic::fixed(settings.output_step),
+                    crate::symbolic::fixed(settings.duration)
                 ),
                 "make the step smaller than the duration",
             );

@@ -6,9 +6,7 @@ use super::json::{check_keys, key_path, object, optional_string, required};
 use super::model::*;
 use super::names::Kind;
 use super::reader::Reader;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{eval, linear_split, Expr, Symbol, Values};
 use serde_json::Value;
 
 impl Reader {

@@ -81,7 +81,7 @@ impl Reader {
         let name = string(find, &fpath, &mut self.diag)?.trim();
         let Some(constant) = self.names.constants.iter().position(|c| c == name) else {
             let known: Vec<&str> = self.names.constants.iter().map(String::as_str).collect();
-            let hint = match crate::symbolic::hint::closest(name, known.iter().copied()) {
+            let hint = match crate::symbolic::closest(name, known.iter().copied()) {
                 Some(close) => format!("did you mean `{close}`?"),
                 None => format!("name one of the constants: {}", known.join(", ")),
             };

@@ -5,8 +5,7 @@
 use super::expressions::ConstantValues;
 use super::json::{key_path, Diagnostics};
 use super::model::{Inertia, VectorExpr};
-use crate::symbolic::format::fixed;
-use crate::symbolic::Expr;
+use crate::symbolic::{fixed, Expr};
 use nalgebra::{Matrix3, SymmetricEigen};
 
 /// The value of `e` if finite; records an error when it is not (`None` also when it

@@ -117,7 +117,7 @@ pub fn with_values(raw: &Value, values: &[(String, f64)]) -> Value {
 fn restated(text: &str, values: &[(String, f64, f64)]) -> String {
     let mut text = text.to_string();
     for (name, old, new) in values {
-        let printed = crate::symbolic::print::latex_name(name);
+        let printed = crate::symbolic::latex_name(name);
         let plain = printed.replace(['{', '}'], "");
         for symbol in [name.as_str(), printed.as_str(), plain.as_str()] {
             text = restate_one(&text, symbol, *old, *new);

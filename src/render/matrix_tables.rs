@@ -5,8 +5,7 @@ use super::context::WholeMatrix;
 use super::math_width::printed_width;
 use super::numbers::math_number;
 use super::text::Math;
-use crate::symbolic::format::fixed_or_zero;
-use crate::symbolic::Expr;
+use crate::symbolic::{fixed_or_zero, Expr};
 
 /// How many symbols the whole table may print across: about the width of the page.
 const TABLE_WIDTH: usize = 70;

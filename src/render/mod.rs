@@ -1,39 +1,63 @@
 //! Writing the worked solution: its content ([`Solution`], filled by the solution stage,
 //! `crate::solution`) through a Tera template into Markdown, LaTeX or HTML, its pictures'
-//! scenes into SVG and TikZ ([`draw`]), its plots into SVG and pgfplots ([`plot`]).
+//! scenes into SVG and TikZ ([`draw`]), its plots into SVG and pgfplots (`plot`).
 //!
 //! Nothing here derives, solves or simulates, and nothing here reads the stages before the
 //! solution: it writes what it is given. [`render`] puts a [`Solution`] through one of the
 //! templates in `templates/`, which are embedded in the binary; an instructor can restyle a
 //! handout by passing a directory of replacements.
+//!
+//! Entry: [`render()`] and the document it writes: [`Solution`] and its parts
+//! ([`context`]), typed text ([`text`]), pictures ([`draw`]). The other modules are
+//! private; what the solution uses is re-exported here.
 
-pub mod by_speed;
+mod by_speed;
 pub mod context;
 pub mod draw;
-pub mod escape;
-pub mod figure;
+mod escape;
+mod figure;
 mod flat_brackets;
-pub mod impact;
-pub mod line_break;
-pub mod markup;
-pub mod math_width;
-pub mod mathml;
-pub mod matrix_tables;
-pub mod numbers;
-pub mod plan_table;
-pub mod plot;
-pub mod plots_drawn;
+mod impact;
+mod line_break;
+mod markup;
+mod math_width;
+mod mathml;
+mod matrix_tables;
+mod numbers;
+mod plan_table;
+mod plot;
+mod plots_drawn;
 mod prepare;
-pub mod safe_math;
-pub mod sample;
-pub mod sections;
-pub mod tex_wrap;
+mod safe_math;
+mod sample;
+mod sections;
+mod tex_wrap;
 pub mod text;
-pub mod units;
-pub mod where_list;
-pub mod word_scripts;
+mod units;
+mod where_list;
+mod word_scripts;
 
+pub use by_speed::merged as merged_by_speed;
 pub use context::Solution;
+pub use escape::{html as escape_html, latex as escape_latex, Lines};
+pub use impact::{ImpactSection, ImpactStep};
+pub use line_break::{break_into_lines, DISPLAY_LIMIT, LINE_SYMBOLS};
+pub use markup::{blocks, inlines, literal, literal_with_numbers, Block, Inline};
+pub use math_width::{printed_width, symbols};
+pub use matrix_tables::{pattern_tables, value_tables, value_tex, whole as whole_matrix};
+pub use plan_table::columns as plan_columns;
+pub use plot::{
+    axes, padded_range, unicode_of, x_axis_span, Label as PlotLabel, PlotData, PlotError, Series,
+};
+pub use plots_drawn::draw as draw_plots;
+pub use safe_math::checked as checked_math;
+pub use sample::sample;
+pub use sections::{
+    AnswerStep, AnswerView, EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow,
+};
+pub use units::unit_tex;
+pub use where_list::grouped as grouped_definitions;
+pub use word_scripts::subscripts_in_words;
 
 use std::fmt;
 use std::path::Path;

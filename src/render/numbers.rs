@@ -110,7 +110,7 @@ pub(super) fn unicode_number(text: &str) -> String {
     }
 }
 
-/// Whether `text` is a number as [`crate::symbolic::format::fixed`] writes it.
+/// Whether `text` is a number as [`crate::symbolic::fixed`] writes it.
 pub(super) fn is_number(text: &str) -> bool {
     matches!(text, "NaN" | "inf" | "-inf")
         || (text.parse::<f64>().is_ok()

@@ -2,7 +2,7 @@
 //!
 //! Both are deterministic: the same data gives the same bytes.
 
-use crate::symbolic::format::fixed;
+use crate::symbolic::fixed;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::fmt;

@@ -8,7 +8,7 @@ use serde::Serialize;
 /// One question and its answer, as the templates show it.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct AnswerView {
-    /// The question as worded (user text in the markup of [`super::markup`], one line), or
+    /// The question as worded (user text in the markup of `super::markup`, one line), or
     /// one made from what it asks, its expressions as `$…$` math.
     pub question: MarkupLine,
     /// Where it is asked: `t = 2 \text{ s}, ...` (LaTeX math).

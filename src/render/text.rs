@@ -114,7 +114,7 @@ kind!(
 );
 kind!(
     /// The problem's own markup with its paragraphs (the statement: paragraphs, lists, emphasis, `$…$` math; see
-    /// [`super::markup`]): written out for each format.
+    /// `super::markup`): written out for each format.
     Markup,
     key::MARKUP,
     1

@@ -2,7 +2,7 @@
 //! `+` or `-` and continued on the next line, indented past the `=`, as a textbook breaks
 //! a long sum.
 
-use crate::render::line_break::break_into_lines;
+use crate::render::break_into_lines;
 
 /// How many symbols (see [`crate::render::math_width`]) the right side of one line of an
 /// aligned display holds: the page's line less a short left side.

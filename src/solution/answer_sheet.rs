@@ -3,8 +3,7 @@
 //! in full (the shortest text that reads back as the same f64), not rounded as a handout
 //! prints them.
 
-use crate::numeric::answers::{self, Answer, Quantity};
-use crate::numeric::system::ReactionColumn;
+use crate::numeric::{answer_unit, holds, is_free_moment, Answer, Quantity, ReactionColumn};
 use crate::problem::{Problem, Question, QuestionKind};
 use crate::symbolic::ComponentKind;
 use serde_json::{Map, Value};
@@ -56,7 +55,7 @@ fn reported<'a>(
     answer
         .values
         .iter()
-        .filter(|(found, x)| !answers::is_free_moment(question, found, *x))
+        .filter(|(found, x)| !is_free_moment(question, found, *x))
         .map(|(found, x)| (found, *x))
 }
 
@@ -70,7 +69,7 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
         .unwrap_or_else(|| super::answers::asked(problem, question));
     out.insert("text".into(), text.into());
     out.insert("kind".into(), kind_name(question).into());
-    let unit_of = |found: &Quantity| answers::unit(problem, question, found);
+    let unit_of = |found: &Quantity| answer_unit(problem, question, found);
     match &question.kind {
         QuestionKind::Value { .. } | QuestionKind::Drive { .. } => {
             if let Some((name, x)) = answer.values.first() {
@@ -129,7 +128,7 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
         }
         QuestionKind::Show { .. } => {
             if let [(_, lhs), (_, rhs)] = answer.values[..] {
-                out.insert("holds".into(), answers::holds(lhs, rhs).into());
+                out.insert("holds".into(), holds(lhs, rhs).into());
                 out.insert("lhs".into(), number(lhs));
                 out.insert("rhs".into(), number(rhs));
                 if let Some(unit) = &question.unit {
@@ -204,7 +203,7 @@ pub fn text(problem: &Problem, answers: &[Answer]) -> String {
             let _ = writeln!(out, "    components along {frame}'s unit vectors");
         }
         for (found, x) in reported(question, answer) {
-            let unit = answers::unit(problem, question, found);
+            let unit = answer_unit(problem, question, found);
             let _ = writeln!(out, "    {found} = {} {unit}", full(x));
         }
     }

@@ -2,14 +2,11 @@
 //! its units (the numbers come from [`crate::numeric::answers`]). The student's handout
 //! restates the questions and leaves the answers blank.
 
-use crate::numeric::answers::{coordinate_unit, Answer, Quantity};
-use crate::numeric::system::ReactionColumn;
+use crate::numeric::{coordinate_unit, Answer, Quantity, ReactionColumn};
 use crate::problem::{Dimension, Problem, Question, QuestionAt, QuestionKind, StateEntry};
-use crate::render::sections::AnswerView;
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_unit_vector};
-use crate::symbolic::ComponentKind;
+use crate::render::AnswerView;
+use crate::symbolic::{fixed, latex, latex_unit_vector, ComponentKind};
 
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
@@ -40,7 +37,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .values
                 .iter()
                 .filter(|(found, value)| {
-                    !crate::numeric::answers::is_free_moment(question, found, *value)
+                    !crate::numeric::is_free_moment(question, found, *value)
                 })
                 .collect();
             if shown.len() < answer.values.len() {
@@ -321,7 +318,7 @@ pub(super) fn number_tex(x: f64) -> String {
 
 /// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
 pub(super) fn unit_tex(unit: &str) -> String {
-    match crate::render::units::unit_tex(unit) {
+    match crate::render::unit_tex(unit) {
         tex if tex.is_empty() => tex,
         tex => format!("\\ {tex}"),
     }
@@ -334,7 +331,7 @@ fn value_tex(
     found: &Quantity,
     value: f64,
 ) -> String {
-    let unit = crate::numeric::answers::unit(problem, question, found);
+    let unit = crate::numeric::answer_unit(problem, question, found);
     let symbol = match &question.kind {
         QuestionKind::Value { expression, .. } => {
             // The question's own symbol, else the expression when it reads at a glance; a
@@ -343,7 +340,7 @@ fn value_tex(
             match question
                 .symbol
                 .as_deref()
-                .and_then(crate::render::safe_math::checked)
+                .and_then(crate::render::checked_math)
             {
                 Some(symbol) => symbol,
                 None if written.len() <= LONGEST_RESTATED => written,
@@ -358,7 +355,7 @@ fn value_tex(
             };
             let frame = answer.frame.clone().unwrap_or_else(|| {
                 problem
-                    .body_name(crate::numeric::answer_frame::reaction_frame(problem, *site))
+                    .body_name(crate::numeric::reaction_frame(problem, *site))
                     .to_string()
             });
             let letter = kind.letter();
@@ -378,7 +375,7 @@ fn value_tex(
             let entry = unknowns
                 .iter()
                 .find(|e| {
-                    matches!(found, Quantity::Named(name) if crate::numeric::answers::entry_name(problem, e) == *name)
+                    matches!(found, Quantity::Named(name) if crate::numeric::entry_name(problem, e) == *name)
                 })
                 .copied()
                 .unwrap_or(StateEntry {
@@ -407,9 +404,9 @@ const ROUND_OFF: f64 = 1e-10;
 
 /// The drive of prescribed coordinate `i`, `Q_{\theta}`, as step 5 writes it.
 fn drive_tex(problem: &Problem, i: usize) -> String {
-    latex(&crate::symbolic::Expr::sym(
-        crate::mechanics::constraints::drive_symbol(problem, i),
-    ))
+    latex(&crate::symbolic::Expr::sym(crate::mechanics::drive_symbol(
+        problem, i,
+    )))
 }
 
 /// Whether each reaction component came out as the free bodies draw it: an unknown is

@@ -4,10 +4,9 @@
 
 use super::tex::{bodies_tex, vector_tex};
 use crate::equations::Derivation;
-use crate::plan::rows::Equation;
+use crate::plan::Equation;
 use crate::problem::BodyId;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::{Axis, ComponentKind, Symbol, Unknown};
+use crate::symbolic::{latex_name, Axis, ComponentKind, Symbol, Unknown};
 
 /// The sentences that show how Kane's row `r` (an auxiliary speed of the tree, `row`)
 /// brings in its reaction, in the problem's markup; `None` for any other row.
@@ -30,15 +29,14 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     if subtree != row.free_body {
         return None;
     }
-    let unknown =
-        crate::symbolic::print::latex(&crate::symbolic::Expr::sym(reaction.unknown(site)));
+    let unknown = crate::symbolic::latex(&crate::symbolic::Expr::sym(reaction.unknown(site)));
     let bodies = bodies_tex(derivation, &subtree);
     let point = latex_name(site);
     let d = vector_tex(model, &reaction.direction);
     let u = format!("u_{{{r}}}");
     let particles_only = subtree
         .iter()
-        .all(|&b| crate::mechanics::massless::is_particle(&derivation.model, b));
+        .all(|&b| crate::mechanics::is_particle(&derivation.model, b));
     let centres = |separator: &str, each: &dyn Fn(&str) -> String| -> String {
         subtree
             .iter()
@@ -115,8 +113,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
 /// of the tree, where the reactions inside them are first said to drop out.
 fn first_row_inside(derivation: &Derivation, bodies: &[BodyId]) -> Option<usize> {
     let rows = derivation.rows.iter();
-    let generalized =
-        rows.filter(|row| matches!(row.sum, crate::plan::rows::Sum::Generalized { .. }));
+    let generalized = rows.filter(|row| matches!(row.sum, crate::plan::Sum::Generalized { .. }));
     let speeds = super::kane::speed_rows(derivation);
     generalized
         .enumerate()
@@ -150,9 +147,7 @@ fn augmented_centres(derivation: &Derivation, bodies: &[BodyId], gain: &str) -> 
             let own = super::tex::shortest_tex(model, v, b);
             format!("{{}}^{{N}}\\mathbf{{v}}^{{{name}}} = {own} + {gain}")
         };
-        if crate::render::math_width::printed_width(&text) as f64
-            > crate::render::line_break::LINE_SYMBOLS
-        {
+        if crate::render::printed_width(&text) as f64 > crate::render::LINE_SYMBOLS {
             return None;
         }
         written.push(text);
@@ -176,7 +171,7 @@ fn first_row_at(
     derivation
         .rows
         .iter()
-        .filter(|x| matches!(x.sum, crate::plan::rows::Sum::Generalized { .. }))
+        .filter(|x| matches!(x.sum, crate::plan::Sum::Generalized { .. }))
         .enumerate()
         .skip(speeds)
         .find(|(_, x)| x.free_body == row.free_body && x.unknowns.iter().any(brings_in))

@@ -9,8 +9,7 @@ use crate::equations::Method;
 use crate::problem::{Dimension, JointKind, Problem};
 use crate::render::context::{Constant, Coordinate, Named, Plan, Simulation, Solution};
 use crate::render::text::{Markup, MarkupLine, Math};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_name};
+use crate::symbolic::{fixed, latex, latex_name};
 
 /// The whole worked solution from what the stages gave (their run, [`crate::Worked`]):
 /// step 1 from the problem, steps 2 to 6 from the derivation, the solution at the initial
@@ -19,7 +18,7 @@ pub fn solution(worked: &crate::Worked) -> Solution {
     let derivation = &worked.derivation;
     let problem = derivation.model.problem;
     let mut solution = setup(problem, derivation.method);
-    crate::symbolic::style::with_style(style_of(problem), || {
+    crate::symbolic::with_style(style_of(problem), || {
         super::derived::fill(&mut solution, worked);
         solution.impact = super::impact::section(worked);
     });
@@ -28,7 +27,7 @@ pub fn solution(worked: &crate::Worked) -> Solution {
 
 /// What the problem alone gives: title, statement and step 1 (also the student's handout).
 pub fn setup(problem: &Problem, method: Method) -> Solution {
-    crate::symbolic::style::with_style(style_of(problem), || setup_styled(problem, method)).0
+    crate::symbolic::with_style(style_of(problem), || setup_styled(problem, method)).0
 }
 
 fn setup_styled(problem: &Problem, method: Method) -> Solution {
@@ -95,15 +94,15 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
         .enumerate()
         .map(|(i, c)| {
             let joint = &problem.joints[c.joint];
-            let unit = crate::numeric::answers::coordinate_unit(problem, i, 0);
-            let rate_unit = crate::numeric::answers::coordinate_unit(problem, i, 1);
+            let unit = crate::numeric::coordinate_unit(problem, i, 0);
+            let rate_unit = crate::numeric::coordinate_unit(problem, i, 1);
             let with_unit = super::initial_state::with_unit;
             Coordinate {
                 name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
                 joint: format!("{} ({})", joint.name.replace('_', " "), joint.kind.name()),
-                unit_tex: Math::from(crate::render::units::unit_tex(&unit)),
+                unit_tex: Math::from(crate::render::unit_tex(&unit)),
                 initial: with_unit(&fixed(c.initial), &unit),
                 initial_rate: with_unit(&fixed(c.rate), &rate_unit),
             }
@@ -118,7 +117,7 @@ fn constants(problem: &Problem) -> Vec<Constant> {
         .map(|c| Constant {
             name_tex: Math::from(latex_name(&c.name)),
             value: fixed(c.value),
-            unit_tex: Math::from(crate::render::units::unit_tex(
+            unit_tex: Math::from(crate::render::unit_tex(
                 c.unit.as_deref().unwrap_or_default(),
             )),
             description: MarkupLine::from(c.description.clone().unwrap_or_default()),

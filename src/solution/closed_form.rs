@@ -6,12 +6,12 @@
 //! constant coefficients (ẋ = r θ̇) gets its acceleration from that one.
 
 use crate::equations::{LinearSystem, Method};
-use crate::numeric::answers::{coordinate_unit, Answer};
+use crate::numeric::{coordinate_unit, Answer};
 use crate::problem::{Problem, Question, QuestionKind};
-use crate::render::sections::AnswerStep;
-use crate::symbolic::diff::partial;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::print::latex;
+use crate::render::AnswerStep;
+use crate::symbolic::partial;
+use crate::symbolic::{eval, Values};
+use crate::symbolic::latex;
 use crate::symbolic::{simplify, Expr, Symbol};
 use crate::Worked;
 

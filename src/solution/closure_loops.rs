@@ -5,16 +5,16 @@
 //! the velocity constraints, and how the dependent rates follow from them.
 
 use super::tex::vector_tex;
-use crate::equations::kane::partials;
+use crate::equations::partials;
 use crate::equations::Derivation;
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::site::SiteKind;
+use crate::mechanics::RowOrigin;
+use crate::mechanics::SiteKind;
 use crate::mechanics::{Model, PointMotion, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::simplify::simplify;
+use crate::symbolic::latex_collected;
+use crate::symbolic::linear_split;
+use crate::symbolic::{latex, latex_name};
+use crate::symbolic::simplify;
 use crate::symbolic::{Expr, Symbol};
 
 /// The most characters of LaTeX one side of the loop may take, broken over lines.

@@ -5,12 +5,12 @@
 //! written here, without their thresholds or a verdict.
 
 use crate::equations::Method;
-use crate::numeric::checks::{Check, CheckKind, Phrase};
+use crate::numeric::{Check, CheckKind, Phrase};
 use crate::numeric::Trajectory;
 use crate::problem::{Problem, SimulateSettings};
-use crate::render::markup::literal_with_numbers;
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::latex;
+use crate::render::literal_with_numbers;
+use crate::symbolic::fixed;
+use crate::symbolic::latex;
 
 /// How step 6 integrates the equations: the first-order system, its state, where it starts,
 /// over how long, the integration method and its step, as markup.

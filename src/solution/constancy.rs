@@ -3,11 +3,11 @@
 //! the second answer says whether it stayed constant, to how many parts, over the whole
 //! motion where the simulation's energy check measured it, and points to the plot.
 
-use crate::numeric::answers::Answer;
-use crate::numeric::check::CheckKind;
+use crate::numeric::Answer;
+use crate::numeric::CheckKind;
 use crate::problem::{Problem, QuestionKind};
-use crate::render::sections::AnswerView;
-use crate::symbolic::format::fixed;
+use crate::render::AnswerView;
+use crate::symbolic::fixed;
 use crate::Worked;
 
 /// `6 parts in 10¹⁰`: a small relative size to one significant digit.

@@ -4,17 +4,13 @@
 
 use super::tex::constraint_label_tex;
 use crate::equations::Derivation;
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::vector::Vector;
-use crate::mechanics::Model;
+use crate::mechanics::{Model, RowOrigin, Vector};
 use crate::problem::BodyId;
 use crate::render::context::{ConstraintView, DependentSpeeds};
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::roots::roots_of_squares;
-use crate::symbolic::{simplify, Symbol};
+use crate::symbolic::{
+    fixed, latex, latex_collected, latex_name, roots_of_squares, simplify, Symbol,
+};
 
 /// The longest equation (LaTeX characters) the constraint table's narrow column holds;
 /// a longer one, lines of a few terms each, would run over pages.
@@ -72,10 +68,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         views.push(ConstraintView {
             name_tex: Math::from(format!(
                 "\\text{{the velocity of the contact point at {}}}",
-                crate::render::escape::latex(
-                    &model.sites[site].name,
-                    crate::render::escape::Lines::One
-                )
+                crate::render::escape_latex(&model.sites[site].name, crate::render::Lines::One)
             )),
             level: "definition".into(),
             below: equation_tex.len() > LONGEST_IN_TABLE,
@@ -146,8 +139,8 @@ pub fn dependent_speeds(
     }
     let model = &derivation.model;
     let problem = model.problem;
-    let reducer = crate::numeric::reduce::Reducer::new(model);
-    let inputs = crate::numeric::linearize::jacobian::input_values(problem, 0.0, q, rates);
+    let reducer = crate::numeric::Reducer::new(model);
+    let inputs = crate::numeric::input_values(problem, 0.0, q, rates);
     let (dependent, c) = reducer.dependent_rate_map(&inputs);
     if dependent.is_empty() || reducer.rates.is_empty() {
         return None;
@@ -209,12 +202,12 @@ pub fn dependent_speeds(
     let mut reduced = Vec::new();
     for body in problem.body_ids() {
         let partials =
-            crate::equations::kane::partials(&model.bodies[body.0].center.velocity, &all_rates);
+            crate::equations::partials(&model.bodies[body.0].center.velocity, &all_rates);
         let numbers: Vec<[f64; 3]> = partials
             .iter()
             .map(|v| {
                 let c = v.components_in(BodyId::GROUND, &model.frames);
-                std::array::from_fn(|k| crate::symbolic::eval::eval(&c[k], &values))
+                std::array::from_fn(|k| crate::symbolic::eval(&c[k], &values))
             })
             .collect();
         let centre = super::tex::centre_tex(model, body);
@@ -270,8 +263,7 @@ fn quoted_as_math(problem: &crate::problem::Problem, text: &str) -> String {
         let name = &part[..part.len() - order];
         match problem.coordinates.iter().position(|c| c.name == name) {
             Some(c) if order <= 2 => {
-                let symbol =
-                    crate::symbolic::print::latex(&problem.coordinate_expr(c, order as u8));
+                let symbol = crate::symbolic::latex(&problem.coordinate_expr(c, order as u8));
                 out.push_str(&format!("${symbol}$"));
             }
             _ => out.push_str(part),

@@ -4,19 +4,16 @@
 use super::long::LONG_EQUATION;
 use super::tex::{action_components, bodies_tex, initial_sign, unknowns_tex, uses_shown};
 use crate::equations::{Derivation, Method};
-use crate::plan::rows::Sum;
+use crate::plan::Sum;
 use crate::problem::BodyId;
 use crate::render::context::{
     InitialValue, Named, Plan, PlanRow, Reaction, Rejected as RejectedView, Solution,
 };
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::collect::latex_with_squares;
-use crate::symbolic::format::{fixed, fixed_or_zero};
-use crate::symbolic::named::{as_shown, named_definitions};
-use crate::symbolic::print::{latex, latex_unit_vector};
-use crate::symbolic::roots::roots_of_squares;
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::{Definition, Expr};
+use crate::symbolic::{
+    as_shown, fixed, fixed_or_zero, latex, latex_unit_vector, latex_with_squares,
+    named_definitions, roots_of_squares, simplify, Definition, Expr,
+};
 use crate::Worked;
 
 /// Fills steps 2 to 6 of `solution` from what the stages gave (see [`Worked`]).
@@ -28,7 +25,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
     // s_1, c_12, listed once where they are first used.
     let style = coordinates_style(problem);
-    let (_, abbreviations) = crate::symbolic::style::with_style(style, || {
+    let (_, abbreviations) = crate::symbolic::with_style(style, || {
         let constraint_notes;
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
         solution.constraint_notes = MarkupLine::all(constraint_notes);
@@ -37,7 +34,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);
         solution.force_definitions =
-            crate::render::where_list::grouped(force_definitions(derivation));
+            crate::render::grouped_definitions(force_definitions(derivation));
         let by_partials;
         (solution.kinematics, by_partials) = super::kinematics::kinematics(derivation);
         solution.spin_frames = super::spin_frames::spin_frames(derivation);
@@ -61,7 +58,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             roots_of_squares(&e, &sign)
         };
         let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
-        let initial = |e: &Expr| crate::symbolic::eval::eval(e, &at_start);
+        let initial = |e: &Expr| crate::symbolic::eval(e, &at_start);
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kane_theory = super::kane_theory::theory(derivation);
@@ -70,7 +67,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             let rule = super::kinematics::partial_velocity_definition(derivation, by_partials);
             definitions.insert(0, rule);
         }
-        solution.kinematic_definitions = crate::render::where_list::grouped(definitions);
+        solution.kinematic_definitions = crate::render::grouped_definitions(definitions);
         solution.speeds = super::speeds::speeds(derivation);
         // Written with the same abbreviations as the rows it stands beside.
         solution.dependent_speeds =
@@ -106,10 +103,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             value: fixed_or_zero(initial.accelerations[i]),
             unit_tex: match c.kind {
                 crate::problem::CoordinateKind::Angle => {
-                    Math::from(crate::render::units::unit_tex("rad/s^2"))
+                    Math::from(crate::render::unit_tex("rad/s^2"))
                 }
                 crate::problem::CoordinateKind::Distance => {
-                    Math::from(crate::render::units::unit_tex("m/s^2"))
+                    Math::from(crate::render::unit_tex("m/s^2"))
                 }
             },
         })
@@ -180,7 +177,7 @@ pub fn blanks(
     let problem = derivation.model.problem;
     let rows = plan(derivation).rows.len();
     let style = coordinates_style(problem);
-    let ((free_bodies, lagrange), _) = crate::symbolic::style::with_style(style, || {
+    let ((free_bodies, lagrange), _) = crate::symbolic::with_style(style, || {
         let free_bodies = super::free_bodies::free_bodies(derivation).len();
         (free_bodies, super::lagrange::view(derivation))
     });
@@ -188,7 +185,7 @@ pub fn blanks(
 }
 
 /// The style of steps 1 to 5: sines and cosines of the angles written `s_1`, `c_12`.
-fn coordinates_style(problem: &crate::problem::Problem) -> crate::symbolic::style::Style {
+fn coordinates_style(problem: &crate::problem::Problem) -> crate::symbolic::Style {
     // Only angles are indexed, so that a slider's distance `x` beside the angles `q1`,
     // `q2` leaves them `s_1`, `c_12`.
     let names: Vec<&str> = problem
@@ -222,7 +219,7 @@ fn numeric_vector_tex(frame: &str, v: &[f64; 3], unit: &str) -> String {
 pub fn force_definitions(derivation: &Derivation) -> Vec<Named> {
     let components: Vec<Expr> = action_components(derivation).map(as_shown).collect();
     let (speeds, plain) = speed_indices(derivation);
-    crate::render::by_speed::merged(named_list(named_definitions(&components)), &speeds, &plain)
+    crate::render::merged_by_speed(named_list(named_definitions(&components)), &speeds, &plain)
 }
 
 /// The speeds as a name's index writes them (`q_{1}`, `\\phi`) and as a note does (`q1`).
@@ -312,7 +309,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         .iter()
         .map(|r| super::rejected::view(derivation, r))
         .collect();
-    let rejected = crate::plan::rejection::highlights(&derivation.model, &derivation.rejected)
+    let rejected = crate::plan::highlights(&derivation.model, &derivation.rejected)
         .into_iter()
         .map(|i| rejected_all[i].clone())
         .collect();
@@ -351,7 +348,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         Method::Lagrange => super::lagrange::plan_note(derivation),
     };
     Plan {
-        columns: crate::render::plan_table::columns(&rows),
+        columns: crate::render::plan_columns(&rows),
         rows,
         rejected_total: rejected_all.len(),
         rejected,
@@ -380,7 +377,7 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .filter(|d| !forces.contains(d))
         .collect();
     let (speeds, plain) = speed_indices(derivation);
-    let merged = crate::render::by_speed::merged(named_list(used), &speeds, &plain);
+    let merged = crate::render::merged_by_speed(named_list(used), &speeds, &plain);
     // A definition too long to read is given by what it is; the numbers use the formula.
     merged
         .into_iter()
@@ -448,12 +445,12 @@ fn tensions(
         };
         let along = member.direction.components_in(site.parent, &model.frames);
         let tension: f64 = (0..3)
-            .map(|k| force[k] * crate::symbolic::eval::eval(&along[k], &values))
+            .map(|k| force[k] * crate::symbolic::eval(&along[k], &values))
             .sum();
         out.push(InitialValue {
             name_tex: Math::from(latex(&Expr::sym(member.unknown(&site.name)))),
             value: fixed_or_zero(tension),
-            unit_tex: Math::from(crate::render::units::unit_tex("N")),
+            unit_tex: Math::from(crate::render::unit_tex("N")),
         });
     }
     out

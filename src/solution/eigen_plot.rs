@@ -2,9 +2,9 @@
 //! stability boundary Re λ = 0), the imaginary parts below. Deterministic SVG, in the
 //! style of [`crate::render::plot`].
 
-use crate::numeric::linearize::Linearization;
-use crate::render::plot::{axes, padded_range, unicode_of, PlotError};
-use crate::symbolic::print::latex_name;
+use crate::numeric::Linearization;
+use crate::render::{axes, padded_range, unicode_of, PlotError};
+use crate::symbolic::latex_name;
 use plotters::prelude::*;
 
 /// Size of the picture, in pixels.

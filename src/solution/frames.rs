@@ -4,7 +4,7 @@
 use crate::problem::{Joint, JointKind, Problem, VectorExpr};
 use crate::render::context::Frame;
 use crate::render::text::Math;
-use crate::symbolic::print::{latex, latex_unit_vector};
+use crate::symbolic::{latex, latex_unit_vector};
 
 /// `N`, then one frame per body in file order, oriented by the joint whose child it is.
 pub(super) fn frames(problem: &Problem) -> Vec<Frame> {

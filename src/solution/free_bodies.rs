@@ -4,17 +4,12 @@
 use super::direction::simplest_tex;
 use super::tex::{bodies_name, bodies_tex, initial_sign, vector_tex};
 use crate::equations::Derivation;
-use crate::mechanics::massless::is_particle;
-use crate::mechanics::model::vector_of;
-use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{ActionKind, Category, Source};
-use crate::plan::rows::is_external;
+use crate::mechanics::{is_particle, vector_of, Model, Vector};
+use crate::plan::{is_external, ActionKind, Category, Source};
 use crate::problem::BodyId;
 use crate::render::context::{Force, FreeBody};
 use crate::render::text::Math;
-use crate::symbolic::named::as_shown;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::roots::roots_of_squares;
+use crate::symbolic::{as_shown, latex, latex_name, roots_of_squares};
 
 /// A free body of more bodies than this lists gravity and the inertia forces once, for
 /// each body k, instead of body by body.
@@ -23,7 +18,7 @@ const MOST_BODIES_LISTED: usize = 2;
 /// Where a force acts, as a textbook's table says it: a reaction at its joint's (or
 /// closure's, or contact's) point by name, `at O`; another force at the body's mass centre
 /// or origin as that; anything else by its position from the body's origin.
-pub(super) fn acts_at(model: &Model, action: &crate::plan::forces::Action, at: &Vector) -> String {
+pub(super) fn acts_at(model: &Model, action: &crate::plan::Action, at: &Vector) -> String {
     if let Source::Reaction(site) = action.source {
         let name = model.problem.site_name(site);
         return format!("\\text{{at }} {}", latex_name(name));
@@ -172,13 +167,13 @@ fn times_mass(g: &str) -> String {
 }
 
 /// The most symbols a row of a free body's table may print in its vector and point columns
-/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](crate::render::draw::tikz::BESIDE_A_TABLE)
+/// for the table to fit beside a picture of [`BESIDE_A_TABLE`](crate::render::draw::BESIDE_A_TABLE)
 /// in small type: a chain link's pin forces in two components.
 const NARROW_TABLE: usize = 36;
 
 /// Whether the free body's table of forces is narrow enough to sit beside its picture.
 pub fn table_is_narrow(body: &FreeBody) -> bool {
-    let width = |tex: &str| crate::render::math_width::printed_width(tex);
+    let width = |tex: &str| crate::render::printed_width(tex);
     let (vectors, points): (Vec<usize>, Vec<usize>) =
         [&body.contact, &body.distance, &body.inertia]
             .into_iter()

@@ -4,13 +4,11 @@
 //! fails, the solution again with sliding friction.
 
 use crate::equations::Derivation;
-use crate::numeric::friction::{Mode, SiteState};
-use crate::plan::rows::Sum;
+use crate::numeric::{FrictionMode as Mode, SiteState};
+use crate::plan::Sum;
 use crate::render::context::{FrictionStep, FrictionView};
 use crate::render::text::Math;
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::latex;
-use crate::symbolic::Expr;
+use crate::symbolic::{fixed, latex, Expr};
 
 /// One view per friction site of `derivation`, from its state in `friction` (the solution
 /// at the initial state).

@@ -77,7 +77,7 @@ pub fn student(
 fn with_motion(
     solution: &mut Solution,
     worked: &Worked,
-    frames: &Result<Vec<super::pictures::motion::Frame>, crate::Error>,
+    frames: &Result<Vec<crate::numeric::Frame>, crate::Error>,
 ) {
     use super::pictures::motion;
     use crate::render::draw::{motion_svg, View};
@@ -88,7 +88,7 @@ fn with_motion(
             solution.simulation.motion_duration = frames.last().map_or(duration, |f| f.t);
             solution.simulation.motion_svg_inline =
                 InlineSvg::from(motion_svg::export(&drawn).trim_end().to_string());
-            solution.simulation.time_axis = crate::render::plot::x_axis_span();
+            solution.simulation.time_axis = crate::render::x_axis_span();
         }
         Err(e) => {
             let note = &mut solution.simulation.note;

@@ -4,17 +4,13 @@
 
 use super::tex::row_heading_tex;
 use crate::equations::{Derivation, Method};
-use crate::numeric::impact::Mode;
+use crate::numeric::ImpactMode as Mode;
 use crate::problem::Problem;
-use crate::render::impact::{ImpactSection, ImpactStep};
 use crate::render::text::Math;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::latex;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{Expr, Symbol};
+use crate::render::{ImpactSection, ImpactStep};
+use crate::symbolic::{
+    eval, fixed, latex, latex_collected, latex_name, substitute, Expr, Symbol, Values,
+};
 use crate::{ImpactSolution, Worked};
 
 /// The impact's section of the worked solution, or `None` without an impact.

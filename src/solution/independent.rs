@@ -3,18 +3,14 @@
 //! `ṽ_r = v_r + Σ_s C_sr v_s`, which forces drop out and why, the auxiliary speeds of the
 //! requested reactions and drives, and the order in which the system is solved.
 
-use crate::equations::kane::partials;
-use crate::equations::Derivation;
-use crate::mechanics::independent::DependentSpeeds as Speeds;
-use crate::mechanics::massless::is_particle;
-use crate::mechanics::{Model, Vector};
+use crate::equations::{partials, Derivation};
+use crate::mechanics::DependentSpeeds as Speeds;
+use crate::mechanics::{is_particle, Model, Vector};
 use crate::render::context::{DependentSpeeds, PartialVelocity};
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::roots::roots_of_squares;
-use crate::symbolic::{add, simplify, Expr, Symbol};
+use crate::symbolic::{
+    add, latex, latex_collected, latex_name, linear_split, roots_of_squares, simplify, Expr, Symbol,
+};
 
 /// `u_k = \dot{q}` of independent speed `r` (0-based).
 pub fn speed_tex(derivation: &Derivation, speeds: &Speeds, r: usize) -> String {
@@ -351,7 +347,7 @@ fn evaluated_relation<'a>(
     pairs: impl Iterator<Item = (&'a usize, &'a Expr)> + Clone,
     rest: &Expr,
     rate_of: &dyn Fn(usize) -> String,
-    start: &crate::symbolic::eval::Values,
+    start: &crate::symbolic::Values,
 ) -> String {
     let each: Vec<String> = (pairs.clone())
         .filter(|(_, c)| !c.is_zero())
@@ -363,7 +359,7 @@ fn evaluated_relation<'a>(
     } else {
         each.join(" + ")
     };
-    let numbers = pairs.map(|(&i, c)| (crate::symbolic::eval::eval(c, start), rate_of(i)));
+    let numbers = pairs.map(|(&i, c)| (crate::symbolic::eval(c, start), rate_of(i)));
     let at_start = super::tex::numeric_sum(numbers, 1e-13).unwrap_or_else(|| "0".into());
     format!("{rate} = {sum} \\qquad \\left(= {at_start} \\text{{ at the start}}\\right)")
 }

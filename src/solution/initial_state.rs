@@ -4,10 +4,10 @@
 
 use super::pictures::numbers::{Numbers, P3};
 use crate::mechanics::Model;
-use crate::numeric::answers::coordinate_unit;
+use crate::numeric::coordinate_unit;
 use crate::problem::{Coordinate, Dimension, JointKind, Problem};
 use crate::render::context::Coordinate as CoordinateView;
-use crate::symbolic::format::fixed;
+use crate::symbolic::fixed;
 
 /// A value smaller than this is round-off of zero in a teaching problem's SI units.
 const ROUND_OFF: f64 = 1e-12;

@@ -5,19 +5,13 @@
 
 use super::long::LONG_EQUATION;
 use super::tex::shortest_tex;
-use crate::equations::kane::partials;
-use crate::equations::{Derivation, Method};
-use crate::mechanics::model::{same_at, sample_states};
-use crate::mechanics::{Model, Vector};
-use crate::plan::rows::{Equation, Groups, Sum};
+use crate::equations::{partials, Derivation, Method};
+use crate::mechanics::{same_at, sample_states, Model, Vector};
+use crate::plan::{Equation, Groups, Sum};
 use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
 use crate::render::text::Math;
-use crate::symbolic::eval::Values;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::symbolic::{add, latex, latex_name, linear_split, simplify, Expr, Symbol, Values};
 
 /// The generalized speeds are the rates of the coordinates: `u_r = \dot{q}_r`; declared
 /// speeds are written by name (step 1 defines them).
@@ -108,7 +102,7 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
-            let particle = crate::mechanics::massless::is_particle(&derivation.model, *body);
+            let particle = crate::mechanics::is_particle(&derivation.model, *body);
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {
@@ -254,7 +248,7 @@ pub fn generalized_forces(
         groups.inertia_torque.clone(),
     ])));
     let written = |e: &Expr, name: String| {
-        let text = crate::symbolic::collect::latex_collected(e);
+        let text = crate::symbolic::latex_collected(e);
         if text.len() > LONG_EQUATION {
             format!("{name}\\ \\text{{(a long expression, not written out)}}")
         } else if sum_written_out && text.len() > LONGEST_BESIDE_THE_SUM {

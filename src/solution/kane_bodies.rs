@@ -2,13 +2,9 @@
 //! `F^*_r = F^*_{r,A} + F^*_{r,B} + …` with `F^*_{r,B} = v^{B*}_r · R^*_B + ω^B_r · T^*_B`:
 //! what a student sums, where the whole would be too long to read beside the row's sum.
 
-use crate::equations::kane::partials;
-use crate::equations::Derivation;
+use crate::equations::{partials, Derivation};
 use crate::mechanics::Vector;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{latex_collected, latex_name, simplify, Expr, Symbol};
 
 /// The most bodies whose contributions are written apart: a longer chain's are long, and
 /// its rows are read by the names of step 4.
@@ -108,5 +104,5 @@ pub fn inertia_by_body(
     }
     let block = super::aligned::display(&out);
     // One display holds at most what LaTeX sets unbroken (see `DISPLAY_LIMIT`).
-    (block.len() <= crate::render::line_break::DISPLAY_LIMIT).then_some(block)
+    (block.len() <= crate::render::DISPLAY_LIMIT).then_some(block)
 }

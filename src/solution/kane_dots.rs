@@ -4,14 +4,14 @@
 //! then their sum.
 
 use super::tex::centre_tex;
-use crate::equations::kane::partials;
+use crate::equations::partials;
 use crate::equations::Derivation;
-use crate::mechanics::massless::is_particle;
+use crate::mechanics::is_particle;
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
-use crate::symbolic::simplify::simplify;
+use crate::symbolic::latex_collected;
+use crate::symbolic::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::simplify;
 use crate::symbolic::{add, Expr, Node, Symbol};
 
 /// The most bodies whose dot products are written out: past three, the products of a
@@ -212,10 +212,10 @@ pub fn inertia_dot_products(
 #[cfg(test)]
 mod tests {
     use super::DotProduct;
-    use crate::equations::kane::partials;
+    use crate::equations::partials;
     use crate::equations::{derive, Method, Request, Rows};
-    use crate::mechanics::model::Form;
-    use crate::symbolic::eval::eval;
+    use crate::mechanics::Form;
+    use crate::symbolic::eval;
     use crate::symbolic::{add, Expr};
 
     /// The double pendulum of two uniform rods: body B's part of `F^*_1`, written out by

@@ -3,7 +3,7 @@
 //! where some body has rotational inertia.
 
 use crate::equations::{Derivation, Method};
-use crate::mechanics::massless::is_particle;
+use crate::mechanics::is_particle;
 use crate::render::context::KaneTheory;
 use crate::render::text::{MarkupLine, Math};
 

@@ -3,17 +3,14 @@
 
 use super::tex::{component_term, shortest_tex, vector_tex_by};
 use crate::equations::Derivation;
-use crate::mechanics::model::{same_at, sample_states};
-use crate::mechanics::{Model, Vector};
+use crate::mechanics::{same_at, sample_states, Model, Vector};
 use crate::problem::BodyId;
 use crate::render::context::{Kinematics, Named};
-use crate::render::math_width::printed_width;
+use crate::render::printed_width;
 use crate::render::text::Math;
-use crate::symbolic::collect::{factored, pull_common_factor};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::{add, Expr};
+use crate::symbolic::{
+    add, factored, latex_name, linear_split, pull_common_factor, simplify, Expr,
+};
 
 /// Step 4's vectors, body by body, and whether an acceleration is written by the partial
 /// velocities (`Σ_r ᴺv_r q̈_r + ᴺã`), which the where list then defines: of mass centres
@@ -40,7 +37,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartial
     // The joint points' named accelerations without the q'' (`ã^{head}`), which the where
     // list defines when a child's acceleration is built on them: a long pin acceleration
     // is then written by the rule with them, not multiplied out a second time.
-    let joint_rests = crate::symbolic::named::named_definitions(
+    let joint_rests = crate::symbolic::named_definitions(
         inertia
             .acceleration
             .iter()
@@ -83,8 +80,8 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartial
                     by_partials = true;
                 }
             }
-            let light = crate::mechanics::massless::is_massless(model, body);
-            let particle = !light && crate::mechanics::massless::is_particle(model, body);
+            let light = crate::mechanics::is_massless(model, body);
+            let particle = !light && crate::mechanics::is_particle(model, body);
             // A particle's turning carries no inertia: a textbook gives it no ω or α.
             let (omega_tex, alpha_tex) = if particle {
                 (String::new(), String::new())
@@ -171,9 +168,9 @@ fn pin_by_the_rule(
     model: &Model,
     site: usize,
     named: &[crate::symbolic::Definition],
-    states: &[crate::symbolic::eval::Values],
+    states: &[crate::symbolic::Values],
 ) -> Option<String> {
-    use crate::mechanics::sites::SiteKind;
+    use crate::mechanics::SiteKind;
     let pin = &model.sites[site];
     let SiteKind::Joint(j) = pin.kind else {
         return None;
@@ -186,7 +183,7 @@ fn pin_by_the_rule(
     let mut rest = Vec::with_capacity(3);
     for (axis, a) in components.iter().enumerate() {
         let (_, without) = linear_split(&simplify(a), &accelerations).ok()?;
-        let key = format!("{joint}.a.{}", crate::mechanics::compact::AXES[axis]);
+        let key = format!("{joint}.a.{}", crate::mechanics::AXES[axis]);
         let name = named
             .iter()
             .find(|d| d.name() == key && same_at(d.value(), &without, states));
@@ -224,8 +221,7 @@ const MOST_BODIES_PLACED: usize = 4;
 /// point fixed in both), in the body's unit vectors, `\mathbf{r}^{O A^*} = -L \hat{…}_y`;
 /// empty when the body is held otherwise or its mass centre is at the pin.
 fn position_line(model: &Model, body: BodyId) -> String {
-    use crate::mechanics::sites::SiteKind;
-    use crate::mechanics::Vector;
+    use crate::mechanics::{SiteKind, Vector};
     use crate::problem::JointKind;
     let Some(site) = model.sites.iter().find(|site| {
         site.child == body
@@ -275,8 +271,7 @@ pub(super) fn partial_velocity_definition(derivation: &Derivation, by: ByPartial
 /// (the second's then empty here).
 fn one_line_if_short(first: String, second: String) -> (String, String) {
     const MOST_OF_A_LINE: usize = 60;
-    if crate::render::math_width::printed_width(&first)
-        + crate::render::math_width::printed_width(&second)
+    if crate::render::printed_width(&first) + crate::render::printed_width(&second)
         <= MOST_OF_A_LINE
     {
         (format!("{first}, \\qquad {second}"), String::new())
@@ -320,7 +315,7 @@ fn by_partial_velocities(model: &Model, acceleration: &Vector, body: BodyId) -> 
 }
 
 /// How many symbols a line of a display holds.
-const LINE: usize = crate::render::line_break::LINE_SYMBOLS as usize;
+const LINE: usize = crate::render::LINE_SYMBOLS as usize;
 
 /// A long acceleration as Kane writes it, `Σ_r ᴺv_r q̈_r + ᴺã`: the q̈ coefficients are the
 /// partial velocities the velocity above is written with (∂a/∂q̈_r = ∂v/∂q̇_r), so only the
@@ -438,7 +433,7 @@ pub(super) fn velocity_from_parent_centre(model: &Model, body: BodyId) -> Option
 /// goes through it as a textbook does: the pin's velocity first, then the mass centre's
 /// from the pin, `v^{B*} = v^P + ω^B × r^{PB*}`.
 fn pin_of(model: &Model, body: BodyId) -> Option<usize> {
-    use crate::mechanics::sites::SiteKind;
+    use crate::mechanics::SiteKind;
     use crate::problem::JointKind;
     let parent = model.frames.info(body).parent?;
     if parent == BodyId::GROUND {
@@ -491,8 +486,7 @@ fn at_parent_centre(model: &Model, site: usize) -> bool {
     let site = &model.sites[site];
     let centre = &model.bodies[site.parent.0].center_offset;
     (0..3).all(|k| {
-        crate::symbolic::eval::eval(&(&site.parent_offset[k] - &centre[k]), &model.values).abs()
-            < 1e-12
+        crate::symbolic::eval(&(&site.parent_offset[k] - &centre[k]), &model.values).abs() < 1e-12
     })
 }
 

@@ -4,18 +4,15 @@
 //! before the collected equation, and the multipliers with the reactions they are.
 
 use super::long::LONG_EQUATION;
-use crate::equations::lagrange::{energy, forces};
-use crate::equations::{Derivation, Method};
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{constraint_generalized_forces, ActionKind};
-use crate::plan::rows::{Equation, Sum};
+use crate::equations::{
+    energy_derivative, energy_terms, joint_generalized_forces, lagrange_generalized_forces,
+    lagrange_potential, partial_velocities, role, virtual_work, Derivation, Method, Role,
+};
+use crate::mechanics::{Model, RowOrigin, Vector};
+use crate::plan::{constraint_generalized_forces, ActionKind, Equation, Sum};
 use crate::render::context::{GeneralizedForceRow, LagrangeView};
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::print::latex;
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::Expr;
+use crate::symbolic::{latex, latex_collected, simplify, Expr};
 
 /// The plan's note: what the rows are and where the reactions come from.
 pub fn plan_note(derivation: &Derivation) -> String {
@@ -167,10 +164,10 @@ pub fn row_text(
             note: "Its equation at zero auxiliary coordinate and rate, simplified:".into(),
         });
     };
-    let bodies = energy::bodies(model);
-    let v = energy::potential(model);
-    let terms = energy::derivative(model, (&bodies, &v), r, true).ok()?;
-    let (q_r, multipliers) = forces::generalized_forces(model, &derivation.actions)
+    let bodies = energy_terms(model);
+    let v = lagrange_potential(model);
+    let terms = energy_derivative(model, (&bodies, &v), r, true).ok()?;
+    let (q_r, multipliers) = lagrange_generalized_forces(model, &derivation.actions)
         .into_iter()
         .nth(r)?;
     let (rate, q) = names(model, r);
@@ -238,16 +235,11 @@ pub fn view(derivation: &Derivation) -> Option<LagrangeView> {
 
 fn energies(model: &Model) -> Vec<String> {
     let sign = super::tex::initial_sign(model);
-    let tex = |e: &Expr| {
-        latex_collected(&crate::symbolic::roots::roots_of_squares(
-            &simplify(e),
-            &sign,
-        ))
-    };
+    let tex = |e: &Expr| latex_collected(&crate::symbolic::roots_of_squares(&simplify(e), &sign));
     let mut lines = Vec::new();
     let mut names = Vec::new();
-    for body in energy::bodies(model) {
-        let name = crate::symbolic::print::latex_name(model.problem.body_name(body.body));
+    for body in energy_terms(model) {
+        let name = crate::symbolic::latex_name(model.problem.body_name(body.body));
         let centre = super::tex::centre_tex(model, body.body);
         let v = format!("{{}}^{{N}}\\mathbf{{v}}^{{{centre}}}");
         let w = format!("{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}}");
@@ -280,7 +272,7 @@ fn energies(model: &Model) -> Vec<String> {
     if !names.is_empty() {
         lines.push(format!("T = {}", names.join(" + ")));
     }
-    let v = tex(&energy::potential(model));
+    let v = tex(&lagrange_potential(model));
     lines.push(format!("V = {v}"));
     lines.push("L = T - V".into());
     lines
@@ -288,7 +280,7 @@ fn energies(model: &Model) -> Vec<String> {
 
 /// Whether gravity and whether any spring acts: what has a potential, in `V`.
 fn potential_sources(derivation: &Derivation) -> (bool, bool) {
-    use crate::plan::forces::Source;
+    use crate::plan::Source;
     use crate::problem::LoadKind;
     let gravity = (derivation.actions.iter()).any(|a| a.source == Source::Gravity);
     let springs = (derivation.model.problem.loads.iter()).any(|l| {
@@ -314,7 +306,7 @@ fn forces_note(derivation: &Derivation) -> String {
     let constrained = derivation
         .actions
         .iter()
-        .any(|a| forces::role(model, a) == forces::Role::Multiplier)
+        .any(|a| role(model, a) == Role::Multiplier)
         || !constraint_generalized_forces(model)
             .iter()
             .all(|(c, _)| c.is_empty());
@@ -342,14 +334,11 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
     let tex = |e: &Expr| latex_collected(&simplify(e));
     let mut rows = Vec::new();
     for action in &derivation.actions {
-        if !matches!(
-            forces::role(model, action),
-            forces::Role::Load | forces::Role::Multiplier
-        ) {
+        if !matches!(role(model, action), Role::Load | Role::Multiplier) {
             continue;
         }
-        let partials = forces::partial_velocities(model, action);
-        let work = forces::virtual_work(model, action);
+        let partials = partial_velocities(model, action);
+        let work = virtual_work(model, action);
         let (point, of) = match &action.kind {
             ActionKind::Force { offset, .. } => {
                 let at = Vector::new(action.body, offset.clone());
@@ -365,13 +354,13 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
                 "\\text{couple}".to_string(),
                 format!(
                     "\\boldsymbol{{\\omega}}^{{{}}}",
-                    crate::symbolic::print::latex_name(problem.body_name(action.body))
+                    crate::symbolic::latex_name(problem.body_name(action.body))
                 ),
             ),
         };
         // An action and its reaction at a closure act on two bodies: each is named by its body.
-        let label = match forces::role(model, action) {
-            forces::Role::Multiplier => {
+        let label = match role(model, action) {
+            Role::Multiplier => {
                 format!("{} on {}", action.label, problem.body_name(action.body))
             }
             _ => action.label.clone(),
@@ -399,7 +388,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
     }
     // On the coordinates directly: joint dampers and actuators, a rough slider's friction,
     // and the multipliers of the rows without a site.
-    let joint = forces::joint_generalized_forces(model);
+    let joint = joint_generalized_forces(model);
     for (r, q) in joint.iter().enumerate() {
         if simplify(q).is_zero() {
             continue;

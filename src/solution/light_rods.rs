@@ -2,8 +2,7 @@
 //! it (the Motion Law's plan and Kane's step 5 both write the tension as the unknown).
 
 use crate::equations::Derivation;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::Expr;
+use crate::symbolic::{latex_name, Expr};
 
 /// Each light rod whose closure carries its tension alone, and why (see
 /// [`crate::mechanics::light_rod`]).

@@ -2,13 +2,11 @@
 //! linearized equations `M δq'' + C δq' + K δq = 0`, the state matrix, the eigenvalues and
 //! a table of the modes. Strings are of the kinds of [`crate::render::text`].
 
-use crate::numeric::linearize::modes::{is_stable, Shape};
-use crate::numeric::linearize::Linearization;
+use crate::numeric::{is_stable, Linearization, Shape};
 use crate::problem::Problem;
-use crate::render::sections::{EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow};
 use crate::render::text::Math;
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::latex;
+use crate::render::{EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow};
+use crate::symbolic::{fixed, latex};
 use nalgebra::DMatrix;
 
 /// `amsmath` typesets at most this many columns in a `bmatrix`; larger matrices are not

@@ -2,10 +2,9 @@
 //! `A_{i,1} x_1 + … = b_i`, and a right-hand side collected by the products of rates.
 
 use crate::equations::Derivation;
-use crate::plan::rows::{Equation, Sum};
+use crate::plan::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
-use crate::symbolic::print::{latex, latex_name, list_by_runs};
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{latex, latex_name, list_by_runs, Expr, Symbol};
 
 /// The most characters of LaTeX an equation of step 5 is shown with; a longer one is shown
 /// with the coefficients of the matrix form by name (and, as formed, not at all).

@@ -5,11 +5,11 @@
 
 use super::tex::vector_tex;
 use crate::equations::Derivation;
-use crate::mechanics::constraints::RowOrigin;
-use crate::plan::rows::{Equation, Sum};
+use crate::mechanics::RowOrigin;
+use crate::plan::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
 use crate::render::text::Math;
-use crate::symbolic::print::latex_name_of;
+use crate::symbolic::latex_name_of;
 
 /// What the note says where a row is the loop's component.
 const COMPONENT: &str = "The loop's component along this row's direction, simplified:";

@@ -5,15 +5,14 @@
 use super::long::{by_rates, LONG_EQUATION};
 use super::tex::row_heading_tex;
 use crate::equations::{Derivation, Method};
-use crate::plan::rows::Sum;
+use crate::plan::Sum;
 use crate::problem::MatrixNames;
 use crate::render::context::{MatrixEntry, MatrixForm, Named};
-use crate::render::math_width::printed_width;
-use crate::render::matrix_tables::{pattern_tables, value_tables, value_tex, whole};
 use crate::render::text::Math;
-use crate::symbolic::collect::{latex_collected, latex_factored};
-use crate::symbolic::print::latex;
-use crate::symbolic::Expr;
+use crate::render::{
+    pattern_tables, printed_width, value_tables, value_tex, whole_matrix as whole,
+};
+use crate::symbolic::{latex, latex_collected, latex_factored, Expr};
 
 /// The most columns the whole table has.
 const MOST_COLUMNS: usize = 6;

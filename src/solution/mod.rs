@@ -5,12 +5,12 @@
 //!
 //! [`worked`] fills a [`Solution`](crate::render::Solution): each step's rows as formed and simplified with their
 //! headings, the where-lists, the rejections chosen to show, the tables, the pictures'
-//! scenes (laid out, [`pictures`]), the answers and the checks. [`crate::render`] only writes
+//! scenes (laid out, [`draw_pictures`]), the answers and the checks. [`crate::render`] only writes
 //! it; this stage is the last one that reads the derivation.
 
 mod aligned;
-pub mod answer_sheet;
-pub mod answers;
+mod answer_sheet;
+mod answers;
 mod auxiliary;
 mod build;
 mod closed_form;
@@ -18,9 +18,9 @@ mod closure_loops;
 mod confirmation;
 mod constancy;
 mod constrained;
-pub mod derived;
+mod derived;
 mod direction;
-pub mod eigen_plot;
+mod eigen_plot;
 mod frames;
 mod free_bodies;
 mod friction;
@@ -35,31 +35,44 @@ mod kane_theory;
 mod kinematics;
 mod lagrange;
 mod light_rods;
-pub mod linearization;
+mod linearization;
 mod long;
 mod loops;
 mod matrix;
 mod mode_shape;
 mod named_identity;
 mod on_constraint;
-pub mod pictures;
+mod pictures;
 mod question_answers;
 mod question_steps;
 mod rejected;
 mod relations;
-pub mod row_view;
+mod row_view;
 mod settled;
 mod simulation;
-pub mod solve_words;
+mod solve_words;
 mod speeds;
 mod spin_frames;
 mod stability_answers;
 mod static_answers;
-pub mod statics;
+mod statics;
 mod switch_steps;
 mod tex;
-pub mod written_out;
+mod written_out;
 
+pub use answer_sheet::{
+    csv_cell, full as full_digits, json as answer_sheet_json, key_columns,
+    text as answer_sheet_text,
+};
+pub use answers::{labels as answer_labels, section as answers_section};
 pub use build::{setup, solution as worked};
+pub use derived::plan as plan_view;
+pub use eigen_plot::sweep_plot;
 pub use handout::{handout, student, Handout};
+pub use pictures::motion::motion as motion_picture;
+pub use pictures::{draw as draw_pictures, free_body_sets, point_id};
+pub use row_view::equation_view;
+pub use statics::handout as statics_handout;
+pub use solve_words::constraint_block;
 pub use tex::style_of;
+pub use written_out::written_out;

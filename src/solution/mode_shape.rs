@@ -2,7 +2,7 @@
 //! share of the motion (the largest is 1), and for a complex shape its phase above it.
 //! The same bars as SVG for HTML and Markdown and as TikZ for LaTeX.
 
-use crate::numeric::linearize::modes::Shape;
+use crate::numeric::Shape;
 use crate::render::context::Figure;
 use crate::render::text::{InlineSvg, LatexCode};
 

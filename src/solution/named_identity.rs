@@ -3,14 +3,14 @@
 //! steady motion the identity governs is solved from it in closed form (the heavy top's
 //! precession rates, the roots of I₁ cos θ Ω² − I₃ ω₃ Ω + m g h = 0).
 
-use crate::numeric::answers::{coordinate_unit, Answer};
+use crate::numeric::{coordinate_unit, Answer};
 use crate::problem::{Problem, QuestionKind};
-use crate::render::sections::AnswerStep;
-use crate::symbolic::collect::{latex_collected, latex_factored};
-use crate::symbolic::diff::partial;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::print::latex;
-use crate::symbolic::subst::substitute;
+use crate::render::AnswerStep;
+use crate::symbolic::{latex_collected, latex_factored};
+use crate::symbolic::partial;
+use crate::symbolic::{eval, Values};
+use crate::symbolic::latex;
+use crate::symbolic::substitute;
 use crate::symbolic::{simplify, Expr, Symbol};
 
 /// How the problem's symbols are written in the statement's names: each replaced symbol
@@ -278,7 +278,7 @@ pub fn steady_steps(
     let quadratic = crate::symbolic::add(vec![&a * &(&n * &n), &b * &n, c.clone()]);
     let disc = simplify(&(&(&b * &b) - &(&(&Expr::int(4) * &a) * &c)));
     let name_tex = latex(&n);
-    let unit = crate::render::units::unit_tex(&coordinate_unit(problem, i, 1));
+    let unit = crate::render::unit_tex(&coordinate_unit(problem, i, 1));
     let sign = ["-", "+"][which];
     let mut steps = vec![
         step(
@@ -309,7 +309,7 @@ pub fn steady_steps(
     {
         let symbol = problem.coordinate_symbol(u.coordinate, 1);
         if let Some((_, e)) = renaming.replaced.iter().find(|(s, _)| *s == symbol) {
-            let unit = crate::render::units::unit_tex(&coordinate_unit(problem, u.coordinate, 1));
+            let unit = crate::render::unit_tex(&coordinate_unit(problem, u.coordinate, 1));
             steps.push(step(
                 "and the other rate follows from the names:".into(),
                 format!(
@@ -337,7 +337,7 @@ fn known_tex(
     for i in 0..problem.coordinates.len() {
         let s = problem.coordinate_symbol(i, 0);
         if e.contains(&s) {
-            let unit = crate::render::units::unit_tex(&coordinate_unit(problem, i, 0));
+            let unit = crate::render::unit_tex(&coordinate_unit(problem, i, 0));
             let x = eval(&Expr::sym(s.clone()), v);
             parts.push(format!(
                 "${} = {}\\ {unit}$",

@@ -4,9 +4,7 @@
 //! every motion the constraints allow, is not left in it.
 
 use crate::mechanics::Model;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{simplify, Expr, Symbol};
+use crate::symbolic::{linear_split, simplify, substitute, Expr, Symbol};
 
 /// Each coordinate a position constraint holds at a constant, with that constant.
 pub fn held_coordinates(model: &Model) -> Vec<(Symbol, Expr)> {

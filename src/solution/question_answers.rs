@@ -2,9 +2,9 @@
 //! what it asks, where it is asked (`about` a steady motion found above), and the sides of
 //! an identity as math. Their working is in [`super::question_steps`].
 
-use crate::numeric::answers::{holds, Answer};
+use crate::numeric::{holds, Answer};
 use crate::problem::{Problem, Question, QuestionKind};
-use crate::symbolic::print::latex;
+use crate::symbolic::latex;
 
 /// The question made from what it asks, when it has no `text`.
 pub fn asked(problem: &Problem, question: &Question) -> String {

@@ -12,15 +12,13 @@
 //!   substituted is a rate-free multiple of LHS − RHS at every set of rates tried.
 
 use crate::equations::{Derivation, LinearSystem};
-use crate::numeric::answers::Answer;
+use crate::numeric::Answer;
 use crate::problem::{Problem, QuestionKind};
-use crate::render::sections::{AnswerStep, AnswerView};
-use crate::symbolic::collect::{latex_collected, latex_factored as factored};
-use crate::symbolic::diff::partial;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::print::latex;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{pull_common_factor, simplify, Expr, Node, Symbol};
+use crate::render::{AnswerStep, AnswerView};
+use crate::symbolic::{
+    eval, latex, latex_collected, latex_factored as factored, partial, pull_common_factor,
+    simplify, substitute, Expr, Node, Symbol, Values,
+};
 use crate::Worked;
 
 /// Adds the working of every `period` and `show` question to its view, from the run of
@@ -35,7 +33,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         .collect();
     let style = super::tex::style_of(problem).with_coordinates(&angles);
     let solved = |i: usize| worked.show_accelerations.get(i).and_then(Option::as_deref);
-    crate::symbolic::style::with_style(style, || {
+    crate::symbolic::with_style(style, || {
         let questions = problem.questions.iter().zip(answers).zip(views.iter_mut());
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
@@ -160,7 +158,7 @@ fn period_steps(
     if found.damping_ratio > 0.0 {
         text = format!(
             "{text} that of the damped motion (damping ratio {}):",
-            crate::symbolic::format::fixed(found.damping_ratio)
+            crate::symbolic::fixed(found.damping_ratio)
         );
     } else {
         text.push(':');
@@ -334,7 +332,7 @@ fn others_tex(problem: &Problem, answer: &Answer, e: &Expr, k: usize) -> String 
     let parts: Vec<String> = (0..problem.coordinates.len())
         .filter(|&i| i != k && e.contains(&problem.coordinate_symbol(i, 0)))
         .map(|i| {
-            let unit = crate::numeric::answers::coordinate_unit(problem, i, 0);
+            let unit = crate::numeric::coordinate_unit(problem, i, 0);
             format!(
                 "${} = {}{}$",
                 latex(&problem.coordinate_expr(i, 0)),

@@ -2,12 +2,10 @@
 //! plan's table uses, and the sentence on the order in which the rows are solved.
 
 use crate::equations::Derivation;
-use crate::plan::planner::{Reason, Rejected};
-use crate::plan::rejection::SpecialState;
+use crate::plan::{Reason, Rejected, SpecialState};
 use crate::render::context::Rejected as RejectedView;
 use crate::render::text::Math;
-use crate::symbolic::print::latex;
-use crate::symbolic::Expr;
+use crate::symbolic::{latex, Expr};
 
 /// The rejected candidate as the worked solution prints it.
 pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
@@ -111,7 +109,7 @@ fn plain(text: &str) -> (String, String, String) {
 /// The sentence on the order in which the plan's rows are solved; empty when they must be
 /// solved all together.
 pub fn order_note(derivation: &Derivation) -> String {
-    let blocks = crate::plan::choose::blocks(&derivation.rows, &derivation.system.unknowns);
+    let blocks = crate::plan::blocks(&derivation.rows, &derivation.system.unknowns);
     let Some(blocks) = blocks.filter(|b| b.len() > 1) else {
         return String::new();
     };

@@ -2,12 +2,8 @@
 //! constraints solved for the dependent rates by elimination in symbols, each relation
 //! kept only where it is short and equals the numbers of `C` at the initial state.
 
-use crate::mechanics::constraint_rows::RowOrigin;
-use crate::mechanics::Model;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::print::latex;
-use crate::symbolic::{add, simplify, Expr};
+use crate::mechanics::{Model, RowOrigin};
+use crate::symbolic::{add, eval, latex, linear_split, simplify, Expr, Values};
 use nalgebra::DMatrix;
 
 /// The longest relation written in symbols (characters of LaTeX).

@@ -4,16 +4,12 @@
 use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
 use super::tex::{bodies_name, initial_sign, unknowns_tex, uses_shown, ACCELERATION_LEVEL};
 use crate::equations::Derivation;
-use crate::plan::rows::{Equation, Sum};
+use crate::plan::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
 use crate::render::text::Math;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::named::as_shown;
-use crate::symbolic::print::latex;
-use crate::symbolic::roots::roots_of_squares;
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{
+    as_shown, latex, latex_collected, linear_split, roots_of_squares, simplify, Expr, Symbol,
+};
 
 fn group_tex(e: &Expr) -> String {
     if e.is_zero() {

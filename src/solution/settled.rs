@@ -3,11 +3,11 @@
 //! reads ω² = 2g/(3(R − r)) rather than ω² = −2gy/(3(R − r)²) "with y = −0.4 m".
 
 use crate::equations::Derivation;
-use crate::numeric::answers::Answer;
-use crate::symbolic::diff::partial;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::print::latex;
-use crate::symbolic::subst::substitute;
+use crate::numeric::Answer;
+use crate::symbolic::partial;
+use crate::symbolic::{eval, Values};
+use crate::symbolic::latex;
+use crate::symbolic::substitute;
 use crate::symbolic::{simplify, Expr, Node, Number, Symbol};
 
 /// Coordinates written in symbols at a state, with the sentence that says why.

@@ -1,15 +1,11 @@
 //! Step 6 of the worked solution: the simulation, its confirmation checks and its plots.
 
-use crate::numeric::checks::{self, CheckKind, Phrase};
-use crate::numeric::SolveError;
-use crate::numeric::Trajectory;
+use crate::numeric::{CheckKind, Phrase, SolveError, Trajectory};
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{Check, Plot, Solution};
-use crate::render::markup::{literal, literal_with_numbers};
-use crate::render::plot::{Label, PlotData, Series};
 use crate::render::text::{FileName, LatexCode, MarkupLine, SvgDocument};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::{latex, latex_name};
+use crate::render::{literal, literal_with_numbers, PlotData, PlotLabel as Label, Series};
+use crate::symbolic::{fixed, latex, latex_name};
 
 /// Fills step 6 of `solution` from the simulation from the (assembled) initial state and its
 /// confirmation checks; a run that could not start or stopped early is said in the step's
@@ -17,7 +13,7 @@ use crate::symbolic::print::{latex, latex_name};
 pub fn simulation(
     solution: &mut Solution,
     problem: &Problem,
-    simulated: &Result<(Trajectory, Vec<checks::Check>), SolveError>,
+    simulated: &Result<(Trajectory, Vec<crate::numeric::Check>), SolveError>,
 ) {
     let (trajectory, checks) = match simulated {
         Ok(run) => run,
@@ -188,7 +184,7 @@ fn energy_drift(
 
 /// What `check` compared, in markup: its coordinates in the solution's notation (`q̈₁` for
 /// the plain `q1''`).
-fn detail(problem: &Problem, check: &checks::Check) -> MarkupLine {
+fn detail(problem: &Problem, check: &crate::numeric::Check) -> MarkupLine {
     let pieces: Vec<String> = (check.phrases.iter())
         .map(|phrase| match phrase {
             Phrase::Text(text) => literal_with_numbers(text),

@@ -6,12 +6,12 @@
 
 use crate::equations::Derivation;
 use crate::mechanics::Model;
-use crate::plan::rows::Sum;
+use crate::plan::Sum;
 use crate::problem::BodyId;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::print::{latex, latex_name};
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::subst::substitute;
+use crate::symbolic::latex_collected;
+use crate::symbolic::{latex, latex_name};
+use crate::symbolic::simplify;
+use crate::symbolic::substitute;
 use crate::symbolic::{Expr, Func, Node, Symbol};
 
 /// The most unknowns a block whose determinant is written may have.

@@ -4,8 +4,7 @@
 use crate::equations::Derivation;
 use crate::render::context::{SpeedRow, SpeedsView};
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::print::latex;
-use crate::symbolic::{add, Expr};
+use crate::symbolic::{add, latex, Expr};
 
 /// The view of the declared speeds, or `None` when the speeds are the rates.
 pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
@@ -20,7 +19,7 @@ pub fn speeds(derivation: &Derivation) -> Option<SpeedsView> {
         .map(|(r, s)| SpeedRow {
             name_tex: Math::from(latex(&u(r))),
             definition_tex: Math::from(format!("{} = {}", latex(&u(r)), latex(&s.equals))),
-            unit_tex: Math::from(crate::render::units::unit_tex(
+            unit_tex: Math::from(crate::render::unit_tex(
                 s.unit.as_deref().unwrap_or_default(),
             )),
             description: MarkupLine::from(s.description.clone().unwrap_or_default()),

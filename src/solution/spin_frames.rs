@@ -4,7 +4,7 @@
 use crate::problem::CoordinateKind;
 use crate::render::context::{Frame, SpinFrame};
 use crate::render::text::Math;
-use crate::symbolic::print::{latex, latex_unit_vector};
+use crate::symbolic::{latex, latex_unit_vector};
 
 /// The frames that do not spin (see [`crate::mechanics::resal`]), with what the handout
 /// says of each in step 1.

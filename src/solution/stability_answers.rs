@@ -2,8 +2,7 @@
 //! changes stability, in the handout's Answers (each value, what happens beyond it, and
 //! how the motion grows on the unstable side) and in `answer --format json`.
 
-use crate::numeric::answers::Answer;
-use crate::numeric::stability_edge::{edges, Edge};
+use crate::numeric::{edges, Answer, Edge};
 use crate::problem::{Problem, Question, QuestionKind};
 use crate::render::text::Math;
 use serde_json::{Map, Value};
@@ -18,8 +17,8 @@ fn constant_of(question: &Question) -> Option<usize> {
 /// The constant as math, and its unit as math after a thin space (or nothing).
 fn constant_tex(problem: &Problem, constant: usize) -> (String, String) {
     let c = &problem.constants[constant];
-    let symbol = crate::symbolic::print::latex(&crate::symbolic::Expr::constant(&c.name));
-    let unit = crate::render::units::unit_tex(c.unit.as_deref().unwrap_or(""));
+    let symbol = crate::symbolic::latex(&crate::symbolic::Expr::constant(&c.name));
+    let unit = crate::render::unit_tex(c.unit.as_deref().unwrap_or(""));
     let unit = if unit.is_empty() {
         unit
     } else {
@@ -66,7 +65,7 @@ pub fn note(problem: &Problem, question: &Question, answer: &Answer) -> String {
     let name = &problem.constants[constant].name;
     let unit = problem.constants[constant].unit.clone().unwrap_or_default();
     let found = edges(answer);
-    let number = |x: f64| crate::symbolic::format::fixed(x);
+    let number = |x: f64| crate::symbolic::fixed(x);
     let range = match &found[..] {
         [low, high] if low.stable_above && !high.stable_above => format!(
             "The state is stable for {name} between {} and {} {unit}. ",

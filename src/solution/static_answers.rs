@@ -2,9 +2,9 @@
 //! `answer`, and their lines and notes in the handout's Answers, which say in words what
 //! the numbers decide and, of several impending motions, which happens first.
 
-use crate::numeric::answers::Answer;
+use crate::numeric::Answer;
 use crate::problem::{Problem, Question, QuestionKind};
-use crate::symbolic::format::fixed;
+use crate::symbolic::fixed;
 use serde_json::{Map, Value};
 
 /// The one value of a statics answer (the ratio, the normal force, the constant).
@@ -20,7 +20,7 @@ pub fn slips(answer: &Answer) -> bool {
 
 /// The slip speed of a `slips` answer asked in motion; `None` at rest.
 pub fn slip_speed(answer: &Answer) -> Option<f64> {
-    crate::numeric::moving_slip::slip_speed(&answer.values)
+    crate::numeric::slip_speed(&answer.values)
 }
 
 /// Whether a `tips` answer tips: the normal force would have to pull.
@@ -101,7 +101,7 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
 }
 
 fn constant_tex(problem: &Problem, constant: usize) -> String {
-    crate::symbolic::print::latex(&crate::symbolic::Expr::constant(
+    crate::symbolic::latex(&crate::symbolic::Expr::constant(
         &problem.constants[constant].name,
     ))
 }
@@ -132,7 +132,7 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
                 .unit
                 .clone()
                 .unwrap_or_default();
-            let unit = crate::render::units::unit_tex(&unit);
+            let unit = crate::render::unit_tex(&unit);
             let unit = if unit.is_empty() {
                 unit
             } else {

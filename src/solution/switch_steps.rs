@@ -7,15 +7,12 @@
 //! numbers agree with the simulation's to 1e-6.
 
 use crate::equations::Derivation;
-use crate::mechanics::constraint_rows::FrictionSite;
-use crate::numeric::answers::Answer;
-use crate::plan::rows::Sum;
+use crate::mechanics::FrictionSite;
+use crate::numeric::Answer;
+use crate::plan::Sum;
 use crate::problem::{Problem, QuestionKind};
-use crate::render::sections::{AnswerStep, AnswerView};
-use crate::symbolic::diff::partial;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::print::latex;
-use crate::symbolic::{simplify, Expr, Symbol};
+use crate::render::{AnswerStep, AnswerView};
+use crate::symbolic::{eval, latex, partial, simplify, Expr, Symbol, Values};
 
 /// The most unknowns the symbolic elimination takes on.
 const LARGEST: usize = 8;
@@ -45,7 +42,7 @@ pub fn attach(
         .map(|c| c.name.as_str())
         .collect();
     let style = super::tex::style_of(problem).with_coordinates(&angles);
-    crate::symbolic::style::with_style(style, || {
+    crate::symbolic::with_style(style, || {
         let mut done: Vec<usize> = Vec::new();
         let mut sliding: Option<(String, Closed)> = None;
         for (i, question) in problem.questions.iter().enumerate() {
@@ -110,7 +107,7 @@ fn constant_at_start(
         if !agrees(eval(&closed.accelerations[k], &v), asked) {
             continue;
         }
-        let unit = crate::numeric::answers::coordinate_unit(problem, k, 2);
+        let unit = crate::numeric::coordinate_unit(problem, k, 2);
         views[i].steps.push(step(
             format!(
                 "While the contact at {} slides it stays constant (the sliding law in place of the no-slip row, worked out below):",
@@ -214,7 +211,7 @@ fn closed_form(
     let start: Vec<Expr> = (problem.coordinates.iter())
         .map(|c| c.rate_expr.clone().unwrap_or_else(|| Expr::real(c.rate)))
         .collect();
-    let at_start = crate::symbolic::subst::substitute(&stick.velocity, &|s| {
+    let at_start = crate::symbolic::substitute(&stick.velocity, &|s| {
         rates.iter().position(|r| r == s).map(|k| start[k].clone())
     });
     let (s0, s1) = (simplify(&at_start), simplify(&crate::symbolic::add(growth)));
@@ -344,12 +341,12 @@ fn steps_for(
             return steps;
         }
         let rate = latex(&problem.coordinate_expr(k, 1));
-        let unit = crate::numeric::answers::unit(
+        let unit = crate::numeric::answer_unit(
             problem,
             question,
-            &crate::numeric::answers::Quantity::Named(String::new()),
+            &crate::numeric::Quantity::Named(String::new()),
         );
-        let unit = crate::render::units::unit_tex(&unit);
+        let unit = crate::render::unit_tex(&unit);
         let unit = if unit.is_empty() {
             unit
         } else {

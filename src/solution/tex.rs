@@ -3,22 +3,21 @@
 //! initial state, and how the problem's numbers print.
 
 use crate::equations::Derivation;
-use crate::mechanics::constraints::RowOrigin;
-use crate::mechanics::{Model, Vector};
-use crate::plan::forces::ActionKind;
-use crate::plan::rows::Sum;
+use crate::mechanics::{Model, RowOrigin, Vector};
+use crate::plan::{ActionKind, Sum};
 use crate::problem::{BodyId, Problem};
-use crate::symbolic::collect::{self};
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector, list_by_runs};
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::{Expr, Node, Symbol};
+use crate::symbolic::{
+    latex, latex_name, latex_unit_vector, list_by_runs, simplify, sum_times, Expr, Node, Symbol,
+};
 
 /// How the worked solution of `problem` prints numbers: the decimals it wrote as decimals.
-pub fn style_of(problem: &Problem) -> crate::symbolic::style::Style {
-    problem.decimals.iter().fold(
-        crate::symbolic::style::Style::default(),
-        |style, (n, text)| style.with_decimal(*n, text),
-    )
+pub fn style_of(problem: &Problem) -> crate::symbolic::Style {
+    problem
+        .decimals
+        .iter()
+        .fold(crate::symbolic::Style::default(), |style, (n, text)| {
+            style.with_decimal(*n, text)
+        })
 }
 
 /// A vector as a sum of components times unit vectors, each component simplified.
@@ -59,7 +58,7 @@ pub(super) fn vector_tex_by(
 /// A component times its unit vector: a sum in brackets, ±1 left out.
 pub(super) fn component_term(c: &Expr, unit: &str) -> String {
     match c.node() {
-        Node::Add(_) => collect::sum_times(c, unit),
+        Node::Add(_) => sum_times(c, unit),
         _ if c.is_one() => unit.to_string(),
         _ if (-c).is_one() => format!("-{unit}"),
         _ => format!("{} {unit}", latex(c)),
@@ -123,7 +122,7 @@ pub fn initial_sign(model: &Model) -> impl Fn(&Expr) -> f64 {
     let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
     let values = model.values_at(0.0, &q0, &rates0);
-    move |e: &Expr| crate::symbolic::eval::eval(e, &values).signum()
+    move |e: &Expr| crate::symbolic::eval(e, &values).signum()
 }
 
 /// Every component of every force and couple.
@@ -159,8 +158,8 @@ pub(super) fn unknowns_tex(unknowns: &[Symbol]) -> String {
 /// inertia) is a point, named as the body, `P_{1}`, as textbooks name a particle.
 pub fn centre_tex(model: &Model, body: BodyId) -> String {
     let name = latex_name(model.problem.body_name(body));
-    let light = crate::mechanics::massless::is_massless(model, body);
-    if !light && crate::mechanics::massless::is_particle(model, body) {
+    let light = crate::mechanics::is_massless(model, body);
+    if !light && crate::mechanics::is_particle(model, body) {
         name
     } else {
         format!("{name}^*")
@@ -234,16 +233,13 @@ pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
 /// What a constraint row constrains, in LaTeX: `\text{no slip at floor}`, or
 /// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
 pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
-    use crate::mechanics::sites::SiteKind;
+    use crate::mechanics::SiteKind;
     let problem = model.problem;
     // A site's name in words: `rear_contact` is the rear contact.
     let text = |words: String| {
         format!(
             "\\text{{{}}}",
-            crate::render::escape::latex(
-                &words.replace('_', " "),
-                crate::render::escape::Lines::One
-            )
+            crate::render::escape_latex(&words.replace('_', " "), crate::render::Lines::One)
         )
     };
     let sticking = model
@@ -339,7 +335,7 @@ pub(super) fn numeric_sum(
         let size = if x.abs() == 1.0 {
             String::new()
         } else {
-            format!("{} ", crate::symbolic::format::fixed(x.abs()))
+            format!("{} ", crate::symbolic::fixed(x.abs()))
         };
         sum.push_str(&format!("{sign}{size}{symbol}"));
     }

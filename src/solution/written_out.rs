@@ -7,16 +7,16 @@
 
 use super::tex::centre_tex;
 use crate::equations::{Derivation, Method};
-use crate::mechanics::components::cross3;
+use crate::mechanics::cross3;
 use crate::mechanics::Vector;
-use crate::plan::rows::{Direction, Equation, Sum};
+use crate::plan::{Direction, Equation, Sum};
 use crate::problem::BodyId;
 use crate::render::context::Equation as EquationView;
-use crate::render::math_width::symbols;
+use crate::render::symbols;
 use crate::render::text::Math;
-use crate::symbolic::collect::latex_collected;
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
-use crate::symbolic::simplify::simplify;
+use crate::symbolic::latex_collected;
+use crate::symbolic::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::simplify;
 use crate::symbolic::{add, Expr};
 
 /// The most bodies of a free body whose terms are written out.

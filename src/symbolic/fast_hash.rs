@@ -50,5 +50,5 @@ impl Hasher for FastHasher {
     }
 }
 
-/// A `HashMap` with [`FastHasher`]: for lookups only, never iterated.
+/// A `HashMap` with `FastHasher`: for lookups only, never iterated.
 pub type FastMap<K, V> = HashMap<K, V, BuildHasherDefault<FastHasher>>;

@@ -3,7 +3,7 @@
 /// Significant digits used wherever a number reaches text that may be snapshotted.
 pub const SIGNIFICANT_DIGITS: usize = 6;
 
-/// `x` with [`SIGNIFICANT_DIGITS`] significant digits, trailing zeros removed,
+/// `x` with `SIGNIFICANT_DIGITS` significant digits, trailing zeros removed,
 /// scientific notation outside 1e-4 ..= 1e6, and no negative zero.
 pub fn fixed(x: f64) -> String {
     if !x.is_finite() {

@@ -5,7 +5,7 @@ use super::expr::{Definition, Expr, Node, Symbol};
 pub use super::natural::natural_cmp;
 
 /// Every named definition (one that prints as its name) that `exprs` use, also inside other
-/// definitions, each once, in [`natural_cmp`] order of their names.
+/// definitions, each once, in `natural_cmp` order of their names.
 pub fn named_definitions<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Vec<Definition> {
     let mut found: Vec<Definition> = Vec::new();
     let mut seen_nodes = std::collections::HashSet::new();

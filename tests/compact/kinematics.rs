@@ -70,8 +70,8 @@ fn a_spherical_links_acceleration_is_built_on_its_joint_points() {
 #[test]
 fn a_planar_chain_is_computed_by_names_and_printed_whole() {
     use mbd_tutor::equations::Method;
-    use mbd_tutor::numeric::evaluate::Compiled;
-    use mbd_tutor::pipeline::{derive, derive_for_handout};
+    use mbd_tutor::numeric::Compiled;
+    use mbd_tutor::pipeline::{derive, Purpose};
     let chain = mbd_tutor::problem::load_file(&problem("validation/ten-link-chain")).unwrap();
     let q: Vec<f64> = (0..10).map(|i| 0.3 - 0.17 * f64::from(i)).collect();
     let rates: Vec<f64> = (0..10).map(|i| 0.5 - 0.11 * f64::from(i)).collect();
@@ -79,8 +79,8 @@ fn a_planar_chain_is_computed_by_names_and_printed_whole() {
         // For numbers, the outer links' accelerations have named parts built on the parent's
         // (unless whole is smaller); the handout writes them whole. The q'' are the same to
         // rounding, and the program no larger.
-        let numeric = Compiled::new(&derive(&chain, method).unwrap());
-        let handout = Compiled::new(&derive_for_handout(&chain, method).unwrap());
+        let numeric = Compiled::new(&derive(&chain, method, Purpose::Numbers).unwrap());
+        let handout = Compiled::new(&derive(&chain, method, Purpose::Handout).unwrap());
         let (a, b) = (
             numeric.motion(0.0, &q, &rates).unwrap(),
             handout.motion(0.0, &q, &rates).unwrap(),

@@ -391,7 +391,7 @@ fn kane_shows_the_coins_dependent_speeds() {
 fn newton_euler_states_the_coins_dependent_rates_as_equations() {
     let text = crate::support::explain("rolling-coin", &["--method", "newton-euler"]);
     let (s, c) = 0.3f64.sin_cos();
-    let f = |x: f64| mbd_tutor::numeric::format::fixed(x);
+    let f = |x: f64| mbd_tutor::symbolic::fixed(x);
     let expected = format!(
         "at the initial state, $\\dot{{z}} = -{} \\dot{{\\theta}}$, $\\dot{{x}} = {} \\dot{{\\psi}} + {} \\dot{{\\phi}}$, $\\dot{{y}} = -{} \\dot{{\\theta}}$.",
         f(R_COIN * s),

@@ -8,7 +8,7 @@
 
 use crate::support::{all_problems, run};
 use mbd_tutor::problem::{ConstraintKind, Inertia, Problem};
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::symbolic::{eval, Values};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;

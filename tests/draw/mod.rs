@@ -5,13 +5,12 @@
 use crate::support::{all_problems, problem as problem_path};
 use crate::svg_reader::{apply, parse, Element};
 use mbd_tutor::cmd::derivation_at;
-use mbd_tutor::equations::State;
-use mbd_tutor::equations::{Derivation, Method};
+use mbd_tutor::equations::{Derivation, Method, State};
 use mbd_tutor::mechanics::Vector;
 use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem};
 use mbd_tutor::render::draw::{Drawing, View};
-use mbd_tutor::solution::pictures::draw;
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::solution::draw_pictures as draw;
+use mbd_tutor::symbolic::{eval, Values};
 use nalgebra::DMatrix;
 use std::collections::BTreeMap;
 
@@ -375,7 +374,7 @@ fn check_spring(d: &Derivation, r: &Read, g: &Element, drawn: [f64; 2], values: 
         }
         let ids: Vec<String> = between
             .iter()
-            .map(|p| mbd_tutor::solution::pictures::build::point_id(problem, *p))
+            .map(|p| mbd_tutor::solution::point_id(problem, *p))
             .collect();
         let Some(k) = ids.iter().position(|i| i == at) else {
             continue;
@@ -471,7 +470,7 @@ fn check_problem(path: &std::path::Path, method: Method) {
     let problem = mbd_tutor::problem::load_file(path).expect("a bundled problem");
     let (derivation, pictures, state) = drawings(&problem, method, View::Isometric);
     let values = values(&problem, &state.q, &state.rates);
-    let sets = mbd_tutor::solution::pictures::free_body_sets(&derivation);
+    let sets = mbd_tutor::solution::free_body_sets(&derivation);
     assert_eq!(pictures.len(), sets.len() + 1, "{}", path.display());
     assert_eq!(pictures[0].name, "configuration");
     for (k, picture) in pictures.iter().enumerate() {

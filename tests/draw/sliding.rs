@@ -3,14 +3,14 @@
 
 use super::{angle_between, line, Read};
 use mbd_tutor::equations::Derivation;
-use mbd_tutor::symbolic::eval::{eval, Values};
+use mbd_tutor::symbolic::{eval, Values};
 
 /// The slip velocity along reaction component `c` of `site`, when it is the friction of a
 /// site that slips at this state (none while it sticks or has no friction).
 pub(super) fn slip_along(
     d: &Derivation,
-    site: &mbd_tutor::mechanics::site::Site,
-    c: &mbd_tutor::mechanics::joints::ReactionComponent,
+    site: &mbd_tutor::mechanics::Site,
+    c: &mbd_tutor::mechanics::ReactionComponent,
     values: &Values,
 ) -> Option<f64> {
     let friction = d

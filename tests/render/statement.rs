@@ -2,9 +2,7 @@
 //! and `$…$` math in every format; math outside the allowed part of LaTeX shown as text.
 
 use super::{problem_files, rendered};
-use mbd_tutor::render::markup::{blocks, inlines, Block, Inline};
-use mbd_tutor::render::sample::sample;
-use mbd_tutor::render::Format;
+use mbd_tutor::render::{blocks, inlines, sample, Block, Format, Inline};
 
 /// Every piece of text in `pieces` that still holds a `$`: math that was refused.
 fn refused(pieces: &[Inline], out: &mut Vec<String>) {

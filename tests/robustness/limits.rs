@@ -248,11 +248,19 @@ fn cutting_a_derivation_short_anywhere_gives_the_overrun_and_never_a_panic() {
         let problem = mbd_tutor::problem::load_file(&path).expect("a bundled problem loads");
         for method in Method::ALL {
             budget::set_limit(u64::MAX);
-            let full = mbd_tutor::pipeline::derive(&problem, method);
+            let full = mbd_tutor::pipeline::derive(
+                &problem,
+                method,
+                mbd_tutor::pipeline::Purpose::Numbers,
+            );
             let needed = budget::spent();
             for fraction in [1, 10, 50, 90] {
                 budget::set_limit((needed * fraction / 100).max(1));
-                match mbd_tutor::pipeline::derive(&problem, method) {
+                match mbd_tutor::pipeline::derive(
+                    &problem,
+                    method,
+                    mbd_tutor::pipeline::Purpose::Numbers,
+                ) {
                     Err(mbd_tutor::Error::TooMuchWork { .. }) => {}
                     other => panic!(
                         "{} {} at {fraction}% of {needed}: {:?}",
@@ -263,7 +271,11 @@ fn cutting_a_derivation_short_anywhere_gives_the_overrun_and_never_a_panic() {
                 }
             }
             budget::set_limit(needed.saturating_add(1));
-            let again = mbd_tutor::pipeline::derive(&problem, method);
+            let again = mbd_tutor::pipeline::derive(
+                &problem,
+                method,
+                mbd_tutor::pipeline::Purpose::Numbers,
+            );
             assert_eq!(again.is_ok(), full.is_ok(), "{}", path.display());
         }
     }

@@ -7,8 +7,7 @@
 use super::generate::{self, CONSTANTS, COORDINATES, FRAMES};
 use super::harness::check;
 use super::{mutate, problem_texts};
-use mbd_tutor::symbolic::parse::{parse, ParseError, Resolve};
-use mbd_tutor::symbolic::{print, Expr, Symbol};
+use mbd_tutor::symbolic::{latex, parse, plain, Expr, ParseError, Resolve, Symbol};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use serde_json::Value;
@@ -48,8 +47,8 @@ impl Resolve for Scope {
 pub fn parses_or_says_where(text: &str) -> Result<(), TestCaseError> {
     match parse(text, &Scope) {
         Ok(e) => {
-            let _ = print::latex(&e);
-            let _ = print::plain(&e);
+            let _ = latex(&e);
+            let _ = plain(&e);
             Ok(())
         }
         Err(e) => {
@@ -189,8 +188,8 @@ const SMALL: [&str; 5] = [
 #[test]
 fn pipeline_on_mutated_small_problems() {
     use mbd_tutor::equations::Method;
-    use mbd_tutor::numeric::evaluate::Compiled;
-    use mbd_tutor::pipeline::derive_rows;
+    use mbd_tutor::numeric::Compiled;
+    use mbd_tutor::pipeline::{derive, Purpose};
     let originals: Vec<Value> = problem_texts()
         .iter()
         .filter(|(name, _)| SMALL.iter().any(|s| name.ends_with(&format!("/{s}.json"))))
@@ -211,7 +210,7 @@ fn pipeline_on_mutated_small_problems() {
             };
             DERIVED.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
             let method = [Method::MotionLaw, Method::NewtonEuler, Method::Kane][which % 3];
-            if let Ok(derivation) = derive_rows(&problem, method) {
+            if let Ok(derivation) = derive(&problem, method, Purpose::Rows) {
                 let q: Vec<f64> = problem.initial_coordinates();
                 let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
                 let _ = Compiled::new(&derivation).solve(0.0, &q, &rates);
@@ -228,8 +227,7 @@ fn pipeline_on_mutated_small_problems() {
 /// A compiled program gives what walking the expression gives: the compiler's sharing,
 /// factoring and reordering change the order of additions, never the value.
 pub fn compiles_to_the_same_value(text: &str) -> Result<(), TestCaseError> {
-    use mbd_tutor::symbolic::compile::Program;
-    use mbd_tutor::symbolic::eval::{eval, Values};
+    use mbd_tutor::symbolic::{eval, Program, Values};
     let Ok(e) = parse(text, &Scope) else {
         return Ok(());
     };

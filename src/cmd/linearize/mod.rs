@@ -5,7 +5,7 @@ mod report;
 
 use super::solve::initial_state;
 use crate::cli::{LinearizeArgs, SolveFormat as Format};
-use crate::pipeline::{derive, Linearizer, Sweep, Swept};
+use crate::pipeline::{derive, Linearizer, Purpose, Sweep, Swept};
 use crate::problem::Problem;
 use crate::Error;
 use report::{pretty, sweep_text, to_json, to_text};
@@ -82,7 +82,7 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     // Small motions are about the coordinates and their rates, whatever the speeds.
     let problem = super::load_with_overrides(&args.at.common)?.without_speeds();
     let method = super::method(args.at.common.method);
-    let linearizer = Linearizer::new(&derive(&problem, method)?);
+    let linearizer = Linearizer::new(&derive(&problem, method, Purpose::Numbers)?);
     let report_output = if svg_output.is_some() && args.plot.is_none() {
         None
     } else {
@@ -101,13 +101,8 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
     let Swept { results, edges } =
         crate::pipeline::sweep(&problem, &linearizer, &sweep, args.at.given.time, &state_of)?;
     if let Some(path) = plot_path {
-        let svg = crate::solution::eigen_plot::sweep_plot(
-            &problem.title,
-            &sweep.name,
-            &sweep.values,
-            &results,
-        )
-        .map_err(|e| Error::Usage(e.to_string()))?;
+        let svg = crate::solution::sweep_plot(&problem.title, &sweep.name, &sweep.values, &results)
+            .map_err(|e| Error::Usage(e.to_string()))?;
         crate::output::write_output(Some(path), svg.as_bytes())?;
     }
     let text = match args.at.format {
@@ -138,7 +133,7 @@ pub fn run(args: LinearizeArgs) -> Result<(), Error> {
                         "unstable from"
                     },
                     sweep.name,
-                    crate::numeric::simulate::full_precision(*value),
+                    crate::numeric::full_precision(*value),
                 ));
             }
             text

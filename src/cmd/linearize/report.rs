@@ -1,11 +1,10 @@
 //! What `mbd-tutor linearize` prints: the linearization as JSON or as text, and a
 //! sweep's table.
 
-use crate::numeric::format::fixed;
-use crate::numeric::linearize::modes::{self, Shape};
-use crate::numeric::linearize::Linearization;
+use crate::numeric::{is_stable, Linearization, Shape};
 use crate::pipeline::Sweep;
 use crate::problem::Problem;
+use crate::symbolic::fixed;
 use nalgebra::DMatrix;
 use serde_json::{json, Map, Value};
 
@@ -88,7 +87,7 @@ pub fn to_json(problem: &Problem, l: &Linearization) -> Value {
     object.insert("A".into(), matrix_json(&l.a));
     object.insert("eigenvalues".into(), Value::Array(eigenvalues));
     object.insert("modes".into(), Value::Array(modes));
-    object.insert("stable".into(), json!(modes::is_stable(&l.eigen, 0.0)));
+    object.insert("stable".into(), json!(is_stable(&l.eigen, 0.0)));
     if let Some(m) = &l.matrices {
         object.insert("M".into(), matrix_json(&m.m));
         object.insert("C".into(), matrix_json(&m.c));
@@ -161,7 +160,7 @@ pub fn to_text(problem: &Problem, method: &str, l: &Linearization) -> String {
     for e in &l.eigen {
         out.push_str(&format!("  {}\n", complex_text(e.value.re, e.value.im)));
     }
-    let stable = modes::is_stable(&l.eigen, 0.0);
+    let stable = is_stable(&l.eigen, 0.0);
     out.push_str(if stable {
         "no eigenvalue has a positive real part: stable to first order (marginally, where some are on the imaginary axis)\n"
     } else {
@@ -238,7 +237,7 @@ pub(super) fn sweep_text(
             "{:>12} {:>14} {:>9}  {}\n",
             fixed(*value),
             fixed(largest),
-            if modes::is_stable(&l.eigen, 0.0) {
+            if is_stable(&l.eigen, 0.0) {
                 "yes"
             } else {
                 "no"
@@ -252,12 +251,9 @@ pub(super) fn sweep_text(
 }
 
 /// The ranges of the swept values where every eigenvalue has Re λ ≤ 0 (up to round-off,
-/// [`modes::ROUND_OFF`] times the largest |λ|), as sentences.
+/// [`ROUND_OFF`](crate::numeric::ROUND_OFF) times the largest |λ|), as sentences.
 pub fn stable_ranges(name: &str, values: &[f64], results: &[Linearization]) -> String {
-    let stable: Vec<bool> = results
-        .iter()
-        .map(|l| modes::is_stable(&l.eigen, 0.0))
-        .collect();
+    let stable: Vec<bool> = results.iter().map(|l| is_stable(&l.eigen, 0.0)).collect();
     let mut ranges = Vec::new();
     let mut start = None;
     for (i, &s) in stable.iter().enumerate() {

@@ -45,7 +45,7 @@ pub(crate) fn page(path: &Path, method: MethodArg) -> String {
 
 /// The errors `check` gives, as a page: each with its JSON path, column and hint.
 fn error_page(path: &Path, error: &Error) -> String {
-    use crate::render::escape::html;
+    use crate::render::escape_html as html;
     let mut items = String::new();
     match error {
         Error::Problem(errors) => {

@@ -14,12 +14,8 @@ use super::kinematics::BodyMotion;
 use super::tree::{
     carried_by, carried_in, leaves_first, named_components, named_vector, sum, SpeedMotion,
 };
-use crate::mechanics::frames::apply;
-use crate::mechanics::vector::{cross3, Components};
-use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{
-    is_joint_load, joint_load_generalized_forces, Action, ActionKind, Source,
-};
+use crate::mechanics::{apply, cross3, Components, Model, Vector};
+use crate::plan::{is_joint_load, joint_load_generalized_forces, Action, ActionKind, Source};
 use crate::symbolic::{add, Expr};
 
 /// The forces on the bodies outboard of a joint: their resultant and their moment about the
@@ -121,9 +117,7 @@ fn inertia(model: &Model, j: usize, motion: &BodyMotion) -> (Components, Compone
         &cross3(w, &cross3(w, &rho)),
     ]
     .into_iter()
-    .fold(crate::mechanics::vector::zero3(), |total, part| {
-        sum(&total, part)
-    });
+    .fold(crate::mechanics::zero3(), |total, part| sum(&total, part));
     let name = model.frames.name(child);
     let what = format!("acceleration of {name}* with −g, without the q''");
     let center = named_components(model, child, ("ac", "\\tilde{a}^{*}", &what), center);

@@ -18,9 +18,7 @@
 //! carries its weight, `−m (a − g)`, and no body needs `g` in its own unit vectors.
 
 use super::tree::{apply, derivative, named_components, named_dcm, sum};
-use crate::mechanics::on_parent::split;
-use crate::mechanics::vector::{cross3, zero3, Components};
-use crate::mechanics::Model;
+use crate::mechanics::{cross3, split, zero3, Components, Model};
 use crate::problem::BodyId;
 use crate::symbolic::Expr;
 
@@ -42,7 +40,7 @@ pub fn body_motions(model: &Model) -> Option<Vec<BodyMotion>> {
     let problem = model.problem;
     let mut motions: Vec<Option<BodyMotion>> = vec![None; problem.joints.len()];
     let gravity = match &problem.gravity {
-        Some(g) => crate::mechanics::model::vector_of(g)
+        Some(g) => crate::mechanics::vector_of(g)
             .components_in(BodyId::GROUND, &model.frames)
             .map(|c| -c),
         None => zero3(),

@@ -18,12 +18,9 @@ use super::tree::{
     apply, carried_by, carried_in, leaves_first, named, named_components, named_dcm, named_vector,
     SpeedMotion, AXES,
 };
-use crate::mechanics::frames::Matrix;
-use crate::mechanics::vector::{cross3, dot3, Components};
-use crate::mechanics::{Model, Vector};
+use crate::mechanics::{cross3, dot3, Components, Matrix, Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::{add, Expr};
+use crate::symbolic::{add, latex_name, Expr};
 
 /// The bodies outboard of a joint as one rigid body, about the child's point at the joint,
 /// in the child's unit vectors.

@@ -21,19 +21,18 @@
 //! in its parent's unit vectors, where its axes are fixed: a free body's three translations
 //! then meet its mass as `m`, not as products of direction cosines that make up `m`.
 
-pub mod forces;
-pub mod kinematics;
-pub mod mass;
-pub mod reactions;
+pub(super) mod forces;
+pub(super) mod kinematics;
+pub(super) mod mass;
+pub(super) mod reactions;
 mod tree;
 
-pub use tree::{applies, speed_motions, SpeedMotion};
+pub use tree::{applies, speed_motions};
 
 use crate::equations::LinearSystem;
 use crate::mechanics::Model;
-use crate::plan::forces::Action;
-use crate::symbolic::compile::Program;
-use crate::symbolic::{Expr, Symbol};
+use crate::plan::Action;
+use crate::symbolic::{Expr, Program, Symbol};
 
 /// Below this many operations Kane's rows as formed may compile shorter than by composite
 /// bodies, and both are built to keep the shorter: a planar chain of two links writes its

@@ -15,12 +15,9 @@ use super::forces::{moments_about_joint, Resultant};
 use super::mass::{Composite, Momenta};
 use super::tree::SpeedMotion;
 use super::tree::{apply, in_frame, joint_offset, named_components, named_dcm, path_in, sum};
-use crate::mechanics::joints::ComponentKind;
-use crate::mechanics::vector::{cross3, Components};
-use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{is_joint_load, Action, Source};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::mechanics::{cross3, ComponentKind, Components, Model, Vector};
+use crate::plan::{is_joint_load, Action, Source};
+use crate::symbolic::{add, linear_split, Expr, Symbol};
 
 /// The speeds, the momenta and the resultants of a system by composite bodies.
 pub type Parts<'a> = (&'a [Vec<SpeedMotion>], &'a Momenta, &'a [Resultant]);

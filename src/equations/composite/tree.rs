@@ -3,14 +3,9 @@
 //! to the next one in, each component a named quantity so that every product is one of
 //! names.
 
-use crate::mechanics::frames::Matrix;
-use crate::mechanics::on_parent::split;
-use crate::mechanics::vector::{cross3, Components};
-use crate::mechanics::{Model, Vector};
+use crate::mechanics::{cross3, split, Components, Matrix, Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::print::latex_name;
-use crate::symbolic::Expr;
+use crate::symbolic::{latex_name, time_derivative, Expr};
 
 /// Whether every speed moves the bodies outboard of its joint rigidly: the speeds are the
 /// rates, and nothing but the tree's joints constrains the motion (no closure, contact,
@@ -161,9 +156,7 @@ pub(super) fn in_frame(model: &Model, v: &Vector, frame: BodyId) -> Components {
             model.frames.express(c, *from, frame)
         }
     });
-    parts.fold(crate::mechanics::vector::zero3(), |total, c| {
-        sum(&total, &c)
-    })
+    parts.fold(crate::mechanics::zero3(), |total, c| sum(&total, &c))
 }
 
 /// The direction cosines `to <- from` of one joint, each entry of more than one term named,
@@ -242,7 +235,7 @@ pub(super) fn named_in(
 }
 
 pub(super) fn apply(m: &Matrix, v: &Components) -> Components {
-    crate::mechanics::frames::apply(m, v)
+    crate::mechanics::apply(m, v)
 }
 
 pub(super) fn sum(a: &Components, b: &Components) -> Components {

@@ -10,14 +10,9 @@
 
 use super::{auxiliary_rows, generalized_groups, generalized_row, Workless};
 use crate::equations::on_motion;
-use crate::mechanics::constraints::{drive_symbol, RowOrigin};
-use crate::mechanics::independent::DependentSpeeds;
-use crate::mechanics::Model;
-use crate::plan::forces::Action;
-use crate::plan::rows::{Equation, Groups, Inertia};
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::mechanics::{drive_symbol, DependentSpeeds, Model, RowOrigin};
+use crate::plan::{Action, Equation, Groups, Inertia};
+use crate::symbolic::{add, linear_split, substitute, Expr, Symbol};
 
 /// What the constrained rows are formed for.
 pub struct Request<'a> {
@@ -175,7 +170,7 @@ impl<'m> Written<'m> {
 
 fn aux_speed(row: &Equation) -> String {
     match &row.sum {
-        crate::plan::rows::Sum::Generalized { speed } => speed.clone(),
+        crate::plan::Sum::Generalized { speed } => speed.clone(),
         _ => String::new(),
     }
 }
@@ -252,7 +247,7 @@ pub fn unknowns(
     accelerations
         .iter()
         .cloned()
-        .chain(crate::mechanics::sites::reaction_unknowns(model, reactions))
+        .chain(crate::mechanics::reaction_unknowns(model, reactions))
         .chain(drives)
         .chain(kept.iter().cloned())
         .collect()

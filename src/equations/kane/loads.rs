@@ -6,7 +6,7 @@
 
 use super::partials;
 use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{is_joint_load, load_generalized_forces, Action, ActionKind, Source};
+use crate::plan::{is_joint_load, load_generalized_forces, Action, ActionKind, Source};
 use crate::problem::BodyId;
 use crate::symbolic::{add, Expr, Symbol};
 

@@ -1,22 +1,17 @@
 //! Kane's method: one row per generalized speed, F_r + F_r* = 0, from the partial
 //! velocities and partial angular velocities; requested reactions through auxiliary speeds.
 
-use crate::mechanics::dot_sum::DotSum;
-use crate::mechanics::joints::ComponentKind;
-use crate::mechanics::vector::Components;
-use crate::mechanics::{Form, Model, Vector};
-use crate::plan::forces::{
-    is_joint_load, joint_load_generalized_forces, load_generalized_forces, Action, ActionKind,
-    Category, Source,
+use crate::mechanics::{ComponentKind, Components, DotSum, Form, Model, Vector};
+use crate::plan::{
+    is_external, is_joint_load, joint_load_generalized_forces, load_generalized_forces, Action,
+    ActionKind, Category, Equation, Groups, Inertia, Source, Sum,
 };
-use crate::plan::rows::{is_external, Equation, Groups, Inertia, Sum};
 
-pub mod constrained;
-pub mod loads;
+pub(super) mod constrained;
+pub(super) mod loads;
 mod rows;
 
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::symbolic::{add, linear_split, Expr, Symbol};
 pub(super) use rows::{rows, view};
 
 /// The partial velocities of a vector linear in the rates: one vector per rate.
@@ -127,7 +122,7 @@ pub(crate) fn generalized_row(
         free_body: model.order.clone(),
         sum: Sum::Generalized { speed },
         direction: None,
-        unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
+        unknowns: crate::plan::unknowns_in(&expression, unknowns),
         groups,
         expression,
     }
@@ -336,7 +331,7 @@ pub(crate) fn auxiliary_rows(
                 speed: format!("u({}.{})", joint.name, component.component()),
             },
             direction: None,
-            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
+            unknowns: crate::plan::unknowns_in(&expression, unknowns),
             groups,
             expression,
         });

@@ -5,16 +5,14 @@
 use super::super::constraint_rows::constraint_equations;
 use super::super::unknowns::{Inputs, MethodRows, Setup};
 use super::constrained;
-use crate::mechanics::independent::DependentSpeeds;
-use crate::mechanics::sites::reaction_unknowns;
-use crate::mechanics::{MechanicsError, Model};
+use crate::mechanics::{reaction_unknowns, DependentSpeeds, MechanicsError, Model};
 use crate::symbolic::budget;
 
 /// Kane's view of the model: an auxiliary speed along a light rod brings in its tension
 /// alone, and a light rod's closure carries its tension alone.
 pub(in crate::equations) fn view(model: &mut Model) {
-    crate::mechanics::two_force::along_members(model);
-    crate::mechanics::light_rod::closures_along_rods(model);
+    crate::mechanics::along_members(model);
+    crate::mechanics::closures_along_rods(model);
 }
 
 /// Kane's rows and their unknowns. With constraints, the rows are formed with the

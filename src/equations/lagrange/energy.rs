@@ -2,15 +2,11 @@
 //! velocities of step 4, `V` of gravity and springs, and per coordinate ∂T/∂q̇_r, its time
 //! derivative, ∂T/∂q_r and ∂V/∂q_r.
 
-use crate::mechanics::frames::apply;
-use crate::mechanics::frames::Frames;
-use crate::mechanics::vector::{dot3, Components};
-use crate::mechanics::Vector;
-use crate::mechanics::{MechanicsError, Model};
+use crate::mechanics::{apply, dot3, Components, Frames, MechanicsError, Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::diff::{partial, time_derivative, DiffError};
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{add, simplify, Expr, Symbol};
+use crate::symbolic::{
+    add, partial, simplify, substitute, time_derivative, DiffError, Expr, Symbol,
+};
 
 /// One body's velocity of its mass centre and angular velocity (in its own unit vectors),
 /// with the coordinates' rates, and its mass and central inertia.
@@ -24,7 +20,7 @@ pub struct BodyMotion<'m> {
     /// The mass.
     pub mass: Expr,
     /// The central inertia matrix, in the body's unit vectors.
-    pub inertia: crate::mechanics::frames::Matrix,
+    pub inertia: crate::mechanics::Matrix,
     frames: &'m Frames,
 }
 
@@ -165,10 +161,10 @@ pub fn derivatives(model: &Model, simplified: bool) -> Result<Vec<EnergyTerms>, 
         .collect()
 }
 
-/// The derivatives of `T` (of `bodies`) and `V` for coordinate `r` (see [`derivatives`]).
+/// The derivatives of `T` (of `bodies`) and `V` for coordinate `r` (see `derivatives`).
 ///
 /// # Errors
-/// As for [`derivatives`].
+/// As for `derivatives`.
 pub fn derivative(
     model: &Model,
     (bodies, v): (&[BodyMotion], &Expr),

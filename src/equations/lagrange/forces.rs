@@ -6,7 +6,7 @@
 use super::energy::rates_of;
 use crate::equations::kane::partials;
 use crate::mechanics::{Model, Vector};
-use crate::plan::forces::{
+use crate::plan::{
     constraint_generalized_forces, is_joint_load, joint_load_value, Action, ActionKind, Source,
 };
 use crate::problem::{BodyId, LoadKind};

@@ -17,12 +17,9 @@
 //! differentiation ([`super::energy`]); the two agree at every state (tested).
 
 use crate::equations::kane::partials;
-use crate::mechanics::dot_sum::DotSum;
-use crate::mechanics::{Form, MechanicsError, Model, Vector};
-use crate::plan::forces::Action;
-use crate::plan::rows::{Groups, Inertia};
-use crate::symbolic::diff::partial;
-use crate::symbolic::{add, Expr, Symbol};
+use crate::mechanics::{DotSum, Form, MechanicsError, Model, Vector};
+use crate::plan::{Action, Groups, Inertia};
+use crate::symbolic::{add, partial, Expr, Symbol};
 
 /// Whether the rows for `inertia`'s form are written with [`inertia_terms`]: for the
 /// numbers, where the coordinates' rates are the speeds (with declared speeds, the rows

@@ -15,15 +15,13 @@
 //! equation at zero auxiliary coordinate and rate is the subtree's balance along it
 //! (the same rows as Kane's auxiliary speeds).
 
-pub mod energy;
-pub mod forces;
-pub mod kinetic;
+pub(super) mod energy;
+pub(super) mod forces;
+pub(super) mod kinetic;
 
 use super::unknowns::{Inputs, MethodRows, Setup};
-use crate::mechanics::model::{same_at, sample_states};
-use crate::mechanics::{Form, MechanicsError, Model};
-use crate::plan::forces::Action;
-use crate::plan::rows::{Equation, Groups, Inertia, Sum};
+use crate::mechanics::{same_at, sample_states, Form, MechanicsError, Model};
+use crate::plan::{Action, Equation, Groups, Inertia, Sum};
 use crate::symbolic::{Expr, Symbol};
 
 /// What one coordinate's equation is made of, each term as the worked solution shows it.
@@ -44,7 +42,7 @@ pub struct CoordinateTerms {
 }
 
 /// Every coordinate's terms, in coordinate order, with the coordinates' rates (with declared
-/// speeds, the rates are written with the speeds only in the rows, see [`equations`]).
+/// speeds, the rates are written with the speeds only in the rows, see `equations`).
 ///
 /// # Errors
 /// When a load or a velocity holds a function that has no derivative.
@@ -128,7 +126,7 @@ pub fn equations(
                 speed: problem.coordinate_symbol(r, 1).to_string(),
             },
             direction: None,
-            unknowns: crate::plan::rows::unknowns_in(&expression, unknowns),
+            unknowns: crate::plan::unknowns_in(&expression, unknowns),
             groups,
             expression,
         });
@@ -148,8 +146,8 @@ pub fn equations(
 /// Lagrange's view of the model: along a light rod the relaxed joint brings in its tension
 /// alone, and a light rod's closure carries its tension alone.
 pub(super) fn view(model: &mut Model) {
-    crate::mechanics::two_force::along_members(model);
-    crate::mechanics::light_rod::closures_along_rods(model);
+    crate::mechanics::along_members(model);
+    crate::mechanics::closures_along_rods(model);
 }
 
 /// Lagrange's rows: one per coordinate and one per requested reaction of a tree joint,

@@ -3,15 +3,15 @@
 
 mod oscillation;
 
-pub use super::check::{
-    Check, CheckKind, Phrase, AGREEMENT_TOLERANCE, ENERGY_TOLERANCE, PERIOD_TOLERANCE,
-};
-pub use oscillation::{downward_crossings, modes, small_oscillation, Modes, MODES_CHECKED};
+pub use super::check::{Check, CheckKind, Phrase, AGREEMENT_TOLERANCE, ENERGY_TOLERANCE};
+#[cfg(test)]
+pub use oscillation::downward_crossings;
+pub use oscillation::{modes, small_oscillation};
 
-use super::format::fixed;
 use super::simulate::Trajectory;
 use super::system::System;
 use crate::problem::Problem;
+use crate::symbolic::fixed;
 
 /// Every confirmation check that applies to a run of `primary` (its method's name and its
 /// equations) on `problem`: energy, agreement with `others` (the other two methods, each with

@@ -9,10 +9,10 @@
 //! equations are wrong (a sign, a factor, a missing term) the two periods differ.
 
 use crate::numeric::check::{Check, CheckKind, Phrase, PERIOD_TOLERANCE};
-use crate::numeric::format::fixed;
 use crate::numeric::integrate::{integrate, Options};
 use crate::numeric::system::System;
 use crate::numeric::SolveError;
+use crate::symbolic::fixed;
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
 use std::f64::consts::PI;
 
@@ -201,7 +201,7 @@ fn mass_matrix(t: &dyn Fn(&[f64]) -> Option<f64>, n: usize) -> Option<DMatrix<f6
 }
 
 /// The small-oscillation check: the period of the equations of motion about the stable
-/// equilibrium nearest `q0`, started along each of the [`MODES_CHECKED`] slowest modes,
+/// equilibrium nearest `q0`, started along each of the `MODES_CHECKED` slowest modes,
 /// against 2π/ω from the energies ([`modes`]). With dampers (one coordinate only) the
 /// motion's decay rate σ is measured too, and its undamped period 2π/sqrt(ω_d² + σ²)
 /// compared.
@@ -498,6 +498,7 @@ fn crossings(times: &[f64], x: &[f64], v: &[f64]) -> Vec<Crossing> {
 /// The times where `x` crosses zero going down, found on the cubic Hermite interpolant of
 /// the samples `x` with derivatives `v` at `times` (accurate to the fourth power of the
 /// sample spacing, so the period is measured far more finely than the samples).
+#[cfg(test)]
 pub fn downward_crossings(times: &[f64], x: &[f64], v: &[f64]) -> Vec<f64> {
     crossings(times, x, v).into_iter().map(|c| c.time).collect()
 }

@@ -3,15 +3,13 @@
 //! gives the q''), the energies' program, and what the checks need to know of the loads.
 
 use super::{Compiled, ReactionComponentSlot, ReactionSlot};
-use crate::equations::composite::SMALL_PROGRAM;
-use crate::equations::{energy, Derivation};
-use crate::mechanics::joints::ComponentKind;
+use crate::equations::{kinetic, potential, Derivation, SMALL_PROGRAM};
+use crate::mechanics::ComponentKind;
 use crate::numeric::inputs::input_symbols;
 use crate::numeric::recursive::Recursive;
 use crate::numeric::speeds::SpeedProgram;
 use crate::problem::LoadKind;
-use crate::symbolic::compile::Program;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{Expr, Program, Symbol};
 
 /// A program compiled on its first run.
 #[derive(Clone, Debug)]
@@ -122,7 +120,7 @@ impl Compiled {
         // The energies are a program of their own: they are not part of A and b.
         let energy = Lazy {
             inputs,
-            outputs: vec![energy::kinetic(model), energy::potential(model)],
+            outputs: vec![kinetic(model), potential(model)],
             program: std::cell::OnceCell::new(),
         };
         let drives = model
@@ -131,7 +129,7 @@ impl Compiled {
             .iter()
             .map(|&p| {
                 let name = problem.coordinates[p].name.clone();
-                let symbol = crate::mechanics::constraints::drive_symbol(problem, p);
+                let symbol = crate::mechanics::drive_symbol(problem, p);
                 (name, formed.unknowns.iter().position(|u| *u == symbol))
             })
             .collect();
@@ -145,7 +143,7 @@ impl Compiled {
             coordinates: problem.coordinates.iter().map(|c| c.name.clone()).collect(),
             massless: (0..problem.coordinates.len())
                 .map(|i| {
-                    crate::mechanics::massless::massless_body_moved_by(model, i)
+                    crate::mechanics::massless_body_moved_by(model, i)
                         .map(|b| problem.body_name(b).to_string())
                 })
                 .collect(),
@@ -230,10 +228,8 @@ fn reaction_slots(derivation: &Derivation) -> (Vec<ReactionSlot>, Vec<Expr>) {
 fn drives_work(model: &crate::mechanics::Model) -> bool {
     let time = crate::symbolic::Symbol::Time;
     model.constraints.rows.iter().any(|r| {
-        matches!(
-            r.origin,
-            crate::mechanics::constraints::RowOrigin::Prescribed(_)
-        ) || r.velocity.contains(&time)
+        matches!(r.origin, crate::mechanics::RowOrigin::Prescribed(_))
+            || r.velocity.contains(&time)
             || r.position.as_ref().is_some_and(|p| p.contains(&time))
     })
 }

@@ -175,7 +175,7 @@ impl Compiled {
     }
 
     /// Each friction site at a state, held as `held` (decided when `None`), with the values
-    /// of its switching functions (see [`super::friction::Friction::switching`]).
+    /// of its switching functions (see `super::friction::Friction::switching`).
     ///
     /// # Errors
     /// As for [`Compiled::solve`].
@@ -316,7 +316,7 @@ impl Compiled {
         for (i, name) in self.coordinates.iter().enumerate() {
             if a.column(i).iter().all(|x| x.abs() <= 1e-12 * scale) {
                 return match &self.massless[i] {
-                    Some(body) => crate::mechanics::massless::undetermined(name, body),
+                    Some(body) => crate::mechanics::undetermined(name, body),
                     None => format!("the coordinate `{name}` moves nothing with mass or inertia, so `{name}''` is undetermined"),
                 };
             }
@@ -326,7 +326,7 @@ impl Compiled {
         // q'' is then part of the motion the equations do not fix.
         if let Some(i) = self.massless_left_free(a) {
             if let Some(body) = &self.massless[i] {
-                return crate::mechanics::massless::undetermined(&self.coordinates[i], body);
+                return crate::mechanics::undetermined(&self.coordinates[i], body);
             }
         }
         "the equations do not determine the unknowns here (a singular configuration, such as gimbal lock)".into()

@@ -25,8 +25,7 @@ use crate::numeric::linear::solve_linear;
 use crate::numeric::system::describe_state;
 use crate::numeric::SolveError;
 use crate::problem::Problem;
-use crate::symbolic::compile::Program;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{Expr, Program, Symbol};
 use nalgebra::{DMatrix, DVector};
 
 /// The compiled system, ready to be differentiated at any state.
@@ -231,7 +230,7 @@ impl SecondOrder {
     }
 }
 
-/// The values of the inputs of [`input_symbols`]: constants, coordinates, rates, time.
+/// The values of the inputs of `input_symbols`: constants, coordinates, rates, time.
 pub fn input_values(problem: &Problem, t: f64, q: &[f64], rates: &[f64]) -> Vec<f64> {
     let mut inputs: Vec<f64> = problem.constants.iter().map(|c| c.value).collect();
     inputs.extend_from_slice(q);

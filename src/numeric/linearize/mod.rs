@@ -3,11 +3,11 @@
 //! ([`modes`]). For a system without constraints, also the mass, damping and stiffness
 //! matrices of `M δq'' + C δq' + K δq = 0`.
 
-pub mod hqr;
-pub mod jacobian;
-pub mod modes;
+pub(super) mod hqr;
+pub(super) mod jacobian;
+pub(super) mod modes;
 
-use crate::equations::{kane, Derivation, Method};
+use crate::equations::{kane_equations, Derivation, Method};
 use crate::numeric::assemble::Assembly;
 use crate::numeric::reduce::Reducer;
 use crate::numeric::SolveError;
@@ -112,7 +112,7 @@ fn kane_rows(derivation: &Derivation) -> Vec<crate::symbolic::Expr> {
             })
             .collect();
     }
-    kane::equations(
+    kane_equations(
         &derivation.model,
         &derivation.actions,
         derivation.inertia(),

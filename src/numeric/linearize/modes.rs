@@ -66,7 +66,7 @@ pub fn eigen(a: &DMatrix<f64>) -> Option<Vec<Eigen>> {
     )
 }
 
-/// Sorts by real part ascending; real parts equal within [`TIE`] (relative) by imaginary
+/// Sorts by real part ascending; real parts equal within `TIE` (relative) by imaginary
 /// part ascending.
 pub fn sort(values: &mut [Complex<f64>]) {
     values.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));

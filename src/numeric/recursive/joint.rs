@@ -6,8 +6,7 @@
 use super::spatial::{join, Transform};
 use crate::mechanics::JointModel;
 use crate::problem::{Joint, JointKind};
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::Expr;
+use crate::symbolic::{eval, Expr, Values};
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 /// The most coordinates one joint has (a free joint).

@@ -1,12 +1,12 @@
 //! The loads as the articulated-body passes take them: their generalized active forces
-//! (see [`crate::equations::kane::loads`]), formed in symbols once and compiled into one
+//! (see Kane's generalized forces, [`crate::equations::kane_generalized_forces`]), formed in symbols once and compiled into one
 //! program of the constants, the coordinates, their rates and `t`, run at each state for
 //! the joint forces τ.
 
-use crate::equations::kane::loads::generalized_forces;
+use crate::equations::kane_generalized_forces as generalized_forces;
 use crate::equations::Derivation;
 use crate::numeric::inputs::state_symbols;
-use crate::symbolic::compile::Program;
+use crate::symbolic::Program;
 use std::cell::RefCell;
 
 /// The compiled generalized forces of a problem's loads.

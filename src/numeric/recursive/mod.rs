@@ -5,7 +5,7 @@
 //! Gravity is the ground's acceleration. The loads (springs, dampers, applied forces and
 //! torques, joint springs, dampers and actuators) enter as the joint forces τ: their
 //! generalized active forces `Q_r = Σ F · ∂v/∂q̇_r + T · ∂ω/∂q̇_r`, formed in symbols once
-//! from Kane's partial velocities ([`crate::equations::kane::loads`]) and compiled into one
+//! from Kane's partial velocities ([`crate::equations::kane_generalized_forces`]) and compiled into one
 //! program of the constants, q, q' and t, run before the passes at each state (`loads`).
 //!
 //! A problem with constraints, prescribed or dependent coordinates, declared speeds or
@@ -47,7 +47,7 @@ pub const RECURSIVE_FROM_DOF: usize = 6;
 pub const RECURSIVE_FROM_DOF_PLANAR: usize = 14;
 
 /// Whether the recursive form is the faster for `dof` coordinates, in the plane or not
-/// (see [`RECURSIVE_FROM_DOF`] and [`RECURSIVE_FROM_DOF_PLANAR`]).
+/// (see `RECURSIVE_FROM_DOF` and `RECURSIVE_FROM_DOF_PLANAR`).
 pub fn is_faster(dof: usize, planar: bool) -> bool {
     let from = if planar {
         RECURSIVE_FROM_DOF_PLANAR
@@ -156,11 +156,6 @@ impl Recursive {
         })
     }
 
-    /// The number of coordinates.
-    pub fn dof(&self) -> usize {
-        self.dof
-    }
-
     /// The number of operations of one evaluation of the loads' generalized forces (zero
     /// without loads).
     pub fn load_operation_count(&self) -> usize {
@@ -185,8 +180,8 @@ impl Recursive {
     }
 }
 
-fn constant(e: &crate::symbolic::Expr, values: &crate::symbolic::eval::Values) -> Option<f64> {
-    let x = crate::symbolic::eval::eval(e, values);
+fn constant(e: &crate::symbolic::Expr, values: &crate::symbolic::Values) -> Option<f64> {
+    let x = crate::symbolic::eval(e, values);
     (e.is_constant() && x.is_finite()).then_some(x)
 }
 

@@ -4,10 +4,21 @@
 //! that varies in time, and a damped pendulum driven by a torque.
 
 use super::Recursive;
-use crate::equations::Method;
+use crate::equations::{derive, Derivation, Method, Request, Rows};
+use crate::mechanics::Form;
 use crate::numeric::evaluate::Compiled;
-use crate::pipeline::derive_own;
 use crate::problem::{load, Problem};
+
+/// Kane's rows of `problem` for numbers, formed as `rows` says: `Compiled` for Kane's own
+/// rows, `Fastest` for the system by composite bodies where it stands alone.
+fn kane(problem: &Problem, rows: Rows) -> Derivation<'_> {
+    let request = Request {
+        form: Form::Numeric,
+        rows,
+        states: &[],
+    };
+    derive(problem, Method::Kane, request).expect("derives")
+}
 
 /// A repeatable stream of numbers in [-1, 1).
 struct Numbers(u64);
@@ -46,7 +57,7 @@ fn loaded(path: &str) -> Problem {
 /// The recursive q'' equal the dense form's on random states and times, relative to
 /// max(1, |q''|), to `tolerance`; the tree, for what else a test asks of it.
 fn agrees_to(problem: &Problem, seed: u64, tolerance: f64) -> Recursive {
-    let derivation = derive_own(problem, Method::Kane).expect("derives");
+    let derivation = kane(problem, Rows::Compiled);
     let tree = Recursive::new(&derivation).expect("a tree the recursive form takes");
     let dense = Compiled::new(&derivation);
     let n = problem.coordinates.len();
@@ -140,7 +151,7 @@ fn compound_pendulum_follows_its_equation_written_by_hand() {
     }"#,
     )
     .expect("valid problem");
-    let derivation = derive_own(&problem, Method::Kane).expect("derives");
+    let derivation = kane(&problem, Rows::Compiled);
     let tree = Recursive::new(&derivation).expect("a plain tree");
     let (m, g, d, i) = (2.0, 9.81, 0.4, 0.05);
     for theta in [-2.0, -0.3, 0.0, 0.7, 2.9] {
@@ -203,7 +214,7 @@ fn mass_on_a_spring_and_damper_follows_its_equation_written_by_hand() {
     }"#,
     )
     .expect("valid problem");
-    let derivation = derive_own(&problem, Method::Kane).expect("derives");
+    let derivation = kane(&problem, Rows::Compiled);
     let tree = Recursive::new(&derivation).expect("a tree with loads");
     let (m, k, c, f0, w) = (2.5, 40.0, 3.0, 7.0, 5.0);
     for t in [0.0, 0.4, 1.3] {
@@ -237,7 +248,7 @@ fn driven_damped_pendulum_follows_its_equation_written_by_hand() {
     }"#,
     )
     .expect("valid problem");
-    let derivation = derive_own(&problem, Method::Kane).expect("derives");
+    let derivation = kane(&problem, Rows::Compiled);
     let tree = Recursive::new(&derivation).expect("a tree with loads");
     let (m, g, d, i, c, t0, w) = (2.0, 9.81, 0.4, 0.05, 0.3, 1.2, 3.0);
     for t in [0.0, 0.5, 2.1] {
@@ -263,7 +274,7 @@ fn constraints_friction_and_declared_speeds_are_left_to_the_dense_form() {
         "problems/collar-on-driven-rod.json",
     ] {
         let problem = crate::problem::load_file(std::path::Path::new(path)).expect("valid");
-        let derivation = derive_own(&problem, Method::Kane).expect("derives");
+        let derivation = kane(&problem, Rows::Compiled);
         assert!(Recursive::new(&derivation).is_none(), "{path}");
     }
 }
@@ -272,7 +283,7 @@ fn constraints_friction_and_declared_speeds_are_left_to_the_dense_form() {
 fn gimbal_lock_is_left_to_the_dense_form_which_names_it() {
     // x-y-z angles with the second at a right angle: the first and third axes align.
     let problem = plain("problems/validation/spherical-chain-3.json");
-    let derivation = crate::pipeline::derive(&problem, Method::Kane).expect("derives");
+    let derivation = kane(&problem, Rows::Fastest);
     let compiled = Compiled::fastest(&derivation);
     assert!(compiled.is_recursive());
     let n = problem.coordinates.len();

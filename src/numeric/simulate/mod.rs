@@ -23,7 +23,7 @@ pub const MAX_STEPS: usize = 10_000_000;
 pub struct Limits {
     /// Most output rows; default [`MAX_ROWS`].
     pub max_rows: usize,
-    /// Most integration steps; default [`MAX_STEPS`].
+    /// Most integration steps; default `MAX_STEPS`.
     pub max_steps: usize,
 }
 

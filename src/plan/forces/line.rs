@@ -6,12 +6,9 @@
 //! points only ever differ along one unit vector, the length is that coordinate
 //! expression itself, with the sign it has at the initial state (`x₁`, not `√(x₁²)`).
 
-use crate::mechanics::vector::{dot3, Components};
-use crate::mechanics::{MechanicsError, Model, Vector};
+use crate::mechanics::{dot3, Components, MechanicsError, Model, Vector};
 use crate::problem::{BodyId, PointRef, Problem};
-use crate::symbolic::diff::time_derivative;
-use crate::symbolic::eval::eval;
-use crate::symbolic::{add, func, simplify, sqrt, Expr, Func};
+use crate::symbolic::{add, eval, func, simplify, sqrt, time_derivative, Expr, Func};
 
 /// The geometry of one spring or damper.
 #[derive(Clone, Debug)]

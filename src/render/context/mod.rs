@@ -9,7 +9,7 @@
 //! | [`LatexCode`] | LaTeX code (a pgfplots or TikZ picture) | removed | verbatim | removed |
 //! | [`SvgDocument`] | an SVG document | removed | removed | a `data:` URI for `<img src>` (use `\| safe`) |
 //! | [`InlineSvg`] | an SVG element to inline | verbatim | removed | verbatim (use `\| safe`) |
-//! | [`Markup`], [`MarkupLine`] | the problem's markup: paragraphs, lists, emphasis, `$…$` math (see [`super::markup`]) | Markdown, text escaped, math checked | LaTeX, the same | escaped HTML with MathML (use `\| safe`) |
+//! | [`Markup`], [`MarkupLine`] | the problem's markup: paragraphs, lists, emphasis, `$…$` math (see `super::markup`) | Markdown, text escaped, math checked | LaTeX, the same | escaped HTML with MathML (use `\| safe`) |
 //! | [`FileName`] | a file the Markdown links to | percent-encoded | as is | as is |
 //! | `String` | plain text: user text, names, numbers | escaped | escaped | escaped by Tera |
 //!
@@ -18,7 +18,7 @@
 //!
 //! So user text (titles, descriptions, the statement) is only ever a value in the context,
 //! never part of a template's source, and can never be evaluated by Tera or by TeX.
-//! Numbers are formatted before they get here, with [`crate::symbolic::format::fixed`].
+//! Numbers are formatted before they get here, with [`crate::symbolic::fixed`].
 
 use super::text::{FileName, InlineSvg, LatexCode, Markup, MarkupLine, Math, SvgDocument};
 use serde::Serialize;
@@ -44,7 +44,7 @@ pub struct Solution {
     /// The problem's title (user text, one line).
     pub title: String,
     /// The problem as given to the student (user text in the small Markdown of
-    /// [`super::markup`]: paragraphs, lists, emphasis, `$…$` math).
+    /// `super::markup`: paragraphs, lists, emphasis, `$…$` math).
     pub statement: Option<Markup>,
     /// `planar` or `spatial`.
     pub dimension: String,

@@ -1,31 +1,40 @@
 //! Pictures of steps 1 and 2: the configuration, and each free body of the plan with its
 //! kinetic diagram.
 //!
-//! One [`scene::Scene`] per picture, built in `N`'s coordinates by the solution stage
-//! (`crate::solution::pictures`), is laid out once into a [`picture::Picture`] ([`layout`]: projection,
-//! fixed-size arrows, label placement), and written by two exporters, [`svg`] and [`tikz`],
+//! One [`Scene`] per picture, built in `N`'s coordinates by the solution stage
+//! (`crate::solution::pictures`), is laid out once into a [`Picture`] ([`layout`]: projection,
+//! fixed-size arrows, label placement), and written by two exporters, `svg` and `tikz`,
 //! so the two never disagree.
+//!
+//! Entry: [`Drawing`] (a laid-out picture, written as SVG or TikZ) and the scene's types;
+//! [`motion_svg`] writes the motion. The other modules are private; what the solution
+//! uses is re-exported here.
 
-pub mod fit;
+mod fit;
 mod ground;
 pub mod layout;
-pub mod motion;
+mod motion;
 mod motion_bodies;
 mod motion_labels;
 mod motion_marks;
 pub mod motion_svg;
 mod motion_timing;
 pub mod numbers;
-pub mod picture;
-pub mod place;
-pub mod scene;
-
-pub mod strokes;
-pub mod svg;
+mod picture;
+mod place;
+mod scene;
+mod strokes;
+mod svg;
 mod svg_path;
-pub mod tikz;
+mod tikz;
 
-pub use picture::{Picture, View};
+pub use fit::CONTENT;
+pub use motion::{Body, Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
+pub use picture::{Picture, Projection, View};
+pub use place::text_size;
+pub use scene::{Arrow, BodyKind, Kind, Label, Marker, Role, Scene, Shape};
+pub use strokes::in_lane;
+pub use tikz::BESIDE_A_TABLE;
 
 /// One picture of a problem.
 #[derive(Clone, Debug)]
@@ -70,7 +79,7 @@ impl Drawing {
         self.figure_in(tikz::BESIDE_A_TABLE)
     }
 
-    /// The picture to embed in a page above a wide table (see [`tikz::ABOVE_A_TABLE`]).
+    /// The picture to embed in a page above a wide table (see `tikz::ABOVE_A_TABLE`).
     pub fn figure_above_a_table(&self) -> crate::render::context::Figure {
         self.figure_in(tikz::ABOVE_A_TABLE)
     }

@@ -6,9 +6,9 @@
 
 use super::numbers::{add, cross, dot, norm, scale, sub, unit, Numbers, P3};
 use super::shapes;
-use crate::mechanics::model::own_components;
+use crate::mechanics::own_components;
 use crate::problem::{BodyId, BodyShape, ConstraintKind, ForcePoint, Inertia, VectorExpr};
-use crate::render::draw::scene::{BodyKind, Shape};
+use crate::render::draw::{BodyKind, Shape};
 
 /// The group of `body`'s shapes; `size` is the picture's characteristic length.
 pub fn body(n: &Numbers, body: BodyId, size: f64) -> Shape {

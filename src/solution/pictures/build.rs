@@ -3,15 +3,11 @@
 use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
 use super::shapes;
 use crate::equations::Derivation;
-use crate::mechanics::joints::ComponentKind;
-use crate::plan::forces::{Action, ActionKind, Source};
-use crate::plan::rows::is_external;
+use crate::mechanics::ComponentKind;
+use crate::plan::{is_external, Action, ActionKind, Source};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
-use crate::render::draw::motion::Gauge;
-use crate::render::draw::scene::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
-use crate::symbolic::print::{latex, latex_name, latex_unit_vector};
-use crate::symbolic::simplify::simplify;
-use crate::symbolic::Expr;
+use crate::render::draw::{Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
+use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 
 /// What every free-body picture's arrows mean.
 pub const FREE_BODY_LEGEND: &str = "Not to scale: every arrow has one length (a longer one \
@@ -241,7 +237,7 @@ impl Setting<'_, '_, '_> {
             kinetic: None,
             down: super::bodies::down(self.numbers),
             legend: String::new(),
-            content: crate::render::draw::fit::CONTENT,
+            content: crate::render::draw::CONTENT,
         }
     }
 
@@ -366,15 +362,14 @@ impl Setting<'_, '_, '_> {
                     // A drive turns its coordinate's joint: drawn there, as a motor at its
                     // bearing; a multiplier's couple at the mass centre.
                     Source::Constraint(r) => match model.constraints.rows[r].origin {
-                        crate::mechanics::constraints::RowOrigin::Prescribed(i) => {
+                        crate::mechanics::RowOrigin::Prescribed(i) => {
                             let j = problem.coordinates[i].joint;
                             n.vector(&model.joints[j].point.position)
                         }
                         _ => n.vector(&model.bodies[action.body.0].center.position),
                     },
                     Source::Load(i) => {
-                        match crate::plan::forces::joint_load_value(problem, &problem.loads[i].kind)
-                        {
+                        match crate::plan::joint_load_value(problem, &problem.loads[i].kind) {
                             Some((j, _, _)) => n.vector(&model.joints[j].point.position),
                             None => n.vector(&model.bodies[action.body.0].center.position),
                         }
@@ -448,7 +443,7 @@ impl Setting<'_, '_, '_> {
                 // A drive or a multiplier: an unknown, drawn along its positive direction.
                 let unknown = &model.constraints.rows[r].unknown;
                 let along = value.map(|e| {
-                    crate::symbolic::subst::substitute(e, &|s| {
+                    crate::symbolic::substitute(e, &|s| {
                         (s == unknown).then(crate::symbolic::Expr::one)
                     })
                 });

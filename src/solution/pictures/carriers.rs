@@ -4,9 +4,9 @@
 
 use super::numbers::{add, cross, dot, scale, unit, Numbers};
 use super::shapes;
-use crate::mechanics::model::own_components;
+use crate::mechanics::own_components;
 use crate::problem::{BodyId, ConstraintKind};
-use crate::render::draw::scene::{BodyKind, Shape};
+use crate::render::draw::{BodyKind, Shape};
 
 /// The block of a planar body that is the `on` of a rolling contact or a contact, with its
 /// face in the contact's plane; `None` for any other body.

@@ -5,9 +5,8 @@
 use super::numbers::{add, dot, norm, rotate, scale, sub, unit, Numbers, P3};
 use super::shapes;
 use crate::problem::{BodyId, JointKind};
-use crate::render::draw::motion::Gauge;
-use crate::render::draw::scene::Label;
-use crate::symbolic::print::latex;
+use crate::render::draw::{Gauge, Label};
+use crate::symbolic::latex;
 
 /// One coordinate's mark.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,5 +1,5 @@
 //! Springs and dampers that share both ends (a spring and a damper in parallel) drawn side
-//! by side, each in its lane (see [`crate::render::draw::strokes::in_lane`]).
+//! by side, each in its lane (see [`crate::render::draw::in_lane`]).
 
 /// Per load of `loads`, its lane: 0 for a spring or damper alone between its two points,
 /// and for those that share both ends (a spring and a damper in parallel), steps of one

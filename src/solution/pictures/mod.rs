@@ -2,23 +2,23 @@
 //! each free body of the plan with its kinetic diagram, built in `N`'s coordinates from the
 //! model at a state ([`build`]) and laid out by [`crate::render::draw`], which writes them.
 
-pub mod bodies;
-pub mod build;
+pub(super) mod bodies;
+pub(super) mod build;
 mod carriers;
-pub mod gauges;
-pub mod lanes;
-pub mod motion;
-pub mod numbers;
-pub mod shapes;
-pub mod sheets;
+pub(super) mod gauges;
+pub(super) mod lanes;
+pub(super) mod motion;
+pub(super) mod numbers;
+pub(super) mod shapes;
+pub(super) mod sheets;
 mod sliding;
 mod triads;
 
 use crate::equations::Derivation;
 use crate::problem::BodyId;
 use crate::render::draw::{layout, Drawing, View};
-use crate::symbolic::format::fixed;
-pub use build::FREE_BODY_LEGEND;
+use crate::symbolic::fixed;
+pub use build::{point_id, FREE_BODY_LEGEND};
 use numbers::{norm, sub, Numbers};
 
 /// The configuration of the derivation's problem at its initial state, for the student's
@@ -53,7 +53,7 @@ fn free_body_content(free_bodies: usize) -> f64 {
     /// upright for its table of forces beside it.
     const MANY: f64 = 140.0;
     if free_bodies <= MOST_AT_FULL_SIZE {
-        crate::render::draw::fit::CONTENT
+        crate::render::draw::CONTENT
     } else {
         MANY
     }
@@ -162,8 +162,7 @@ fn drawings(
         .iter()
         .zip(q)
         .map(|(c, v)| {
-            let symbol =
-                crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(&c.name));
+            let symbol = crate::render::unicode_of(&crate::symbolic::latex_name(&c.name));
             format!("{symbol} = {}", fixed(*v))
         })
         .collect();

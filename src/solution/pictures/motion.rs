@@ -13,12 +13,12 @@
 use super::numbers::{add, dot, norm, scale, sub, unit, Numbers, P3};
 use super::sheets;
 use crate::equations::Derivation;
-use crate::mechanics::sites::SiteKind;
-pub use crate::numeric::frame::{frame_count, Frame, DEFAULT_FPS, MAX_FRAMES};
+use crate::mechanics::SiteKind;
+use crate::numeric::Frame;
 use crate::problem::{BodyId, JointKind, LoadKind, Problem};
-use crate::render::draw::motion::{Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
-use crate::render::draw::picture::{Projection, View};
-use crate::render::draw::scene::Label;
+use crate::render::draw::{
+    Gauge, Label, Motion, Part, Placed, Projection, Sheet, View, TITLE_STRIP,
+};
 
 /// The longest side of the motion's picture, and the room around it.
 const LONGEST_SIDE: f64 = 520.0;
@@ -87,7 +87,7 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         captions.push(Some(problem.body_name(b).to_string()));
     }
     let floors = floors(&numbers, &rolling, &placed, size);
-    let title = crate::render::draw::place::text_size(&problem.title)[0] + 2.0 * MARGIN;
+    let title = crate::render::draw::text_size(&problem.title)[0] + 2.0 * MARGIN;
     let (projection, size) = fit(still_rows, &sheets, &floors, &placed, title);
     let lanes = super::lanes::lanes(&problem.loads);
     let lanes_of = |spring: bool| -> Vec<f64> {
@@ -194,9 +194,7 @@ fn coordinates_of(problem: &Problem, joint: usize, marked: &[usize]) -> Option<S
         .iter()
         .filter(|c| !marked.contains(c))
         .map(|&c| {
-            crate::render::plot::unicode_of(&crate::symbolic::print::latex_name(
-                &problem.coordinates[c].name,
-            ))
+            crate::render::unicode_of(&crate::symbolic::latex_name(&problem.coordinates[c].name))
         })
         .collect();
     (!names.is_empty()).then(|| names.join(", "))
@@ -380,17 +378,4 @@ fn fit(
         ],
     };
     (projection, size)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn absurd_frame_counts_are_refused_before_any_work() {
-        assert_eq!(frame_count(5.0, 25.0).ok(), Some(126));
-        assert!(frame_count(1e6, 25.0).is_err());
-        assert!(frame_count(5.0, 0.0).is_err());
-        assert!(frame_count(f64::NAN, 25.0).is_err());
-    }
 }

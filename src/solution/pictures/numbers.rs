@@ -1,10 +1,8 @@
 //! The model at one state, as numbers: positions, directions and rotations in `N`.
 
-use crate::mechanics::vector::Components;
-use crate::mechanics::{Model, Vector};
+use crate::mechanics::{Components, Model, Vector};
 use crate::problem::BodyId;
-use crate::symbolic::eval::{eval, Values};
-use crate::symbolic::Expr;
+use crate::symbolic::{eval, Expr, Values};
 use std::cell::RefCell;
 
 pub use crate::render::draw::numbers::*;

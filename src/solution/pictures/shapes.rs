@@ -4,7 +4,7 @@
 
 use super::numbers::{add, circle, cross, dot, norm, scale, sub, unit, Numbers, P3};
 use crate::problem::{BodyId, Inertia, JointKind, LoadKind, PointRef};
-use crate::render::draw::scene::Shape;
+use crate::render::draw::Shape;
 
 /// The points of `body` that a picture must reach, in the body's own unit vectors: its
 /// joint points, declared points, load ends and mass center.

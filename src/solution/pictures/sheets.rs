@@ -6,8 +6,7 @@
 
 use super::numbers::{add, cross, dot, norm, scale, sub, unit, Numbers, P3};
 use crate::problem::BodyId;
-use crate::render::draw::motion::{Body, Part, Sheet};
-use crate::render::draw::scene::Shape;
+use crate::render::draw::{Body, Part, Shape, Sheet};
 
 /// A part in the body's unit vectors, before it is laid on a sheet.
 enum Piece {
@@ -58,7 +57,7 @@ pub fn body_sheets(
         Shape::Body { name, kind, parts } => (name, kind, parts),
         other => (
             n.model.problem.body_name(body).to_string(),
-            crate::render::draw::scene::BodyKind::Outline,
+            crate::render::draw::BodyKind::Outline,
             vec![other],
         ),
     };

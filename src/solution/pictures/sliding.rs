@@ -4,11 +4,9 @@
 //! unknown's positive sense as a sticking site's component is.
 
 use super::numbers::{scale, Numbers, P3};
-use crate::mechanics::joints::ReactionComponent;
-use crate::mechanics::Model;
-use crate::render::draw::scene::Label;
-use crate::symbolic::print::latex;
-use crate::symbolic::Expr;
+use crate::mechanics::{Model, ReactionComponent};
+use crate::render::draw::Label;
+use crate::symbolic::{latex, Expr};
 
 /// A slip speed below this (m/s) is sticking: the friction is an unknown of the plan.
 const STILL: f64 = 1e-9;

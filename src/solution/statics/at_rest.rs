@@ -9,8 +9,7 @@ use crate::render::context::{Kinematics, Simulation, StaticsView};
 use crate::render::draw::View;
 use crate::render::text::{MarkupLine, Math};
 use crate::render::Solution;
-use crate::symbolic::subst::substitute;
-use crate::symbolic::{Expr, Symbol};
+use crate::symbolic::{substitute, Expr, Symbol};
 
 /// `e` at rest: every rate and second derivative zero.
 pub fn at_rest(e: &Expr) -> Expr {
@@ -203,7 +202,9 @@ pub fn draw(solution: &mut Solution, worked: &Worked) {
 /// equations.
 pub fn student(problem: &Problem, method: Method, full: &Solution) -> Solution {
     let mut setup = crate::solution::setup(problem, method);
-    if let Ok(derivation) = crate::pipeline::derive_for_handout(problem, method) {
+    if let Ok(derivation) =
+        crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)
+    {
         if let Some(drawing) = crate::solution::pictures::initial_configuration(&derivation) {
             setup.configuration = drawing.figure();
         }

@@ -16,13 +16,11 @@ mod view;
 
 use super::Handout;
 use crate::equations::Method;
-use crate::numeric::evaluate::StateSolution;
-use crate::numeric::SolveError;
-use crate::pipeline::statics::{Equilibrium, Statics};
+use crate::numeric::{SolveError, StateSolution};
 use crate::pipeline::{self, Solver, Worked};
+use crate::pipeline::{Equilibrium, Statics};
 use crate::problem::Problem;
-use crate::render::sections::AnswerView;
-use crate::render::Solution;
+use crate::render::{AnswerView, Solution};
 use crate::Error;
 
 /// The statics handout of `problem` by `method`: the worked solution at the equilibrium
@@ -90,7 +88,7 @@ fn worked_at_rest<'p>(
     equilibrium: &Equilibrium,
     free: &[usize],
 ) -> Result<(Worked<'p>, Vec<bool>, Vec<usize>), Error> {
-    let mut derivation = pipeline::derive_for_handout(at, method)?;
+    let mut derivation = pipeline::derive(at, method, pipeline::Purpose::Handout)?;
     let solver = Solver::new(at, &derivation);
     let found = plan::to_find(&derivation, free);
     plan::replan(&mut derivation, &equilibrium.q, &equilibrium.rates, &found);

@@ -10,10 +10,9 @@
 
 use super::at_rest::is_zero_at_rest;
 use crate::equations::{Derivation, LinearSystem, Method};
-use crate::mechanics::sites::reaction_unknowns;
-use crate::plan::planner;
-use crate::symbolic::linear::linear_split;
-use crate::symbolic::Symbol;
+use crate::mechanics::reaction_unknowns;
+use crate::plan::{candidates, choose};
+use crate::symbolic::{linear_split, Symbol};
 
 /// The free coordinates whose equilibrium value the equations find: as many as the rows
 /// that do not vanish at rest outnumber the other unknowns (none where friction or the
@@ -53,9 +52,9 @@ pub fn replan(derivation: &mut Derivation, q: &[f64], rates: &[f64], found: &[us
         .filter(|&j| !model.sites[j].reactions.is_empty())
         .collect();
     let reactions = reaction_unknowns(model, &sites);
-    let candidates = planner::candidates(model, &derivation.actions, &reactions);
+    let candidates = candidates(model, &derivation.actions, &reactions);
     let required = vec![model.values_at(0.0, q, rates)];
-    let choice = planner::choose(
+    let choice = choose(
         model,
         &derivation.actions,
         derivation.inertia(),
@@ -76,7 +75,7 @@ pub fn replan(derivation: &mut Derivation, q: &[f64], rates: &[f64], found: &[us
 }
 
 /// `A x = b` of `rows` in `unknowns`, or `None` for a row not linear in them.
-fn system_of(rows: &[crate::plan::rows::Equation], unknowns: &[Symbol]) -> Option<LinearSystem> {
+fn system_of(rows: &[crate::plan::Equation], unknowns: &[Symbol]) -> Option<LinearSystem> {
     let mut a = Vec::new();
     let mut b = Vec::new();
     for row in rows {

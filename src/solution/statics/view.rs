@@ -2,12 +2,11 @@
 //! step 4 needs only positions, the equilibrium found with what holds it there (step 5),
 //! its stability, and that the system stays at rest (step 6).
 
-use crate::pipeline::statics::{Equilibrium, Stability, StabilityKind};
+use crate::pipeline::{Equilibrium, Stability, StabilityKind};
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{StaticFriction, StaticsView};
 use crate::render::text::{MarkupLine, Math};
-use crate::symbolic::format::fixed;
-use crate::symbolic::print::latex;
+use crate::symbolic::{fixed, latex};
 
 /// The statics of the handout of `problem` at `equilibrium`, `free` the coordinates whose
 /// equilibrium value the equations find.
@@ -70,7 +69,7 @@ fn unit_tex(problem: &Problem, i: usize, force: bool) -> String {
     if unit.is_empty() {
         return String::new();
     }
-    format!("\\ {}", crate::render::units::unit_tex(&unit))
+    format!("\\ {}", crate::render::unit_tex(&unit))
 }
 
 fn names_tex(problem: &Problem, indices: &[usize]) -> String {

@@ -20,7 +20,7 @@ pub type Name = Rc<str>;
 /// A symbol: what an expression can refer to.
 ///
 /// Symbols are ordered by kind in the order below, then by name as a reader counts
-/// (`q2` before `q10`, see [`natural_cmp`](super::natural::natural_cmp)), so that sums print
+/// (`q2` before `q10`, see `natural_cmp`), so that sums print
 /// `q1 + q2 + … + q10`.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Symbol {

@@ -22,7 +22,7 @@
 
 mod key;
 mod pythagoras;
-pub mod steps;
+pub(super) mod steps;
 mod terms;
 mod trig;
 
@@ -63,6 +63,7 @@ pub fn simplify(e: &Expr) -> Expr {
 }
 
 /// `e` simplified, with the identity used at each step, in the order they were used.
+#[cfg(test)]
 pub fn simplify_with_steps(e: &Expr) -> (Expr, Vec<Step>) {
     let mut steps = Vec::new();
     let result = simplify_with(e, &Options::default(), Some(&mut steps));
@@ -83,6 +84,7 @@ pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>)
 
 /// The index of the shortest of `candidates` by `Expr::operation_count`, the first on a
 /// tie; 0 for an empty slice.
+#[cfg(test)]
 pub fn shortest_of(candidates: &[Expr]) -> usize {
     candidates
         .iter()

@@ -3,7 +3,7 @@
 //! conservation of energy or momentum. None is a number copied from the program.
 
 use super::{bundled_answers, close};
-use mbd_tutor::numeric::answers::Answer;
+use mbd_tutor::numeric::Answer;
 use nalgebra::{Matrix2, Matrix3, Rotation3, Vector2, Vector3};
 use std::f64::consts::PI;
 

@@ -89,10 +89,14 @@ fn the_rolling_coin_keeps_its_energy_and_obeys_newton_and_euler() {
         &std::fs::read_to_string(crate::support::problem("rolling-coin")).expect("readable"),
     )
     .expect("valid");
-    let derivation =
-        mbd_tutor::pipeline::derive(&p, mbd_tutor::equations::Method::MotionLaw).expect("derives");
+    let derivation = mbd_tutor::pipeline::derive(
+        &p,
+        mbd_tutor::equations::Method::MotionLaw,
+        mbd_tutor::pipeline::Purpose::Numbers,
+    )
+    .expect("derives");
     let solver = mbd_tutor::pipeline::Solver::new(&p, &derivation);
-    use mbd_tutor::numeric::system::System;
+    use mbd_tutor::numeric::System;
     let qdd = solver
         .evaluate(0.0, &state.q, &state.rates)
         .expect("solves")
