@@ -129,6 +129,6 @@ fn the_bicycle_answers_its_weave_and_capsize_speeds() {
 #[test]
 fn friction_without_dampers_names_no_damper() {
     let text = explain("bowling-ball", &["--format", "markdown"]);
-    assert!(text.contains("sliding friction only removes energy"));
+    assert!(text.contains("Sliding friction only takes energy away"));
     assert!(!text.contains("dampers"), "a damper is named");
 }

@@ -10,7 +10,6 @@ use std::path::PathBuf;
 
 const METHODS: [&str; 4] = ["motion-law", "kane", "newton-euler", "lagrange"];
 
-
 /// Words a course does not use in a handout.
 const NOT_COURSE_WORDS: [&str; 12] = [
     "mesh.distance",

@@ -424,9 +424,9 @@ fn the_bowling_ball_handout_says_when_it_starts_to_roll() {
     let step6 = &text[text.find("## Step 6").expect("step 6")..];
     let line = step6
         .lines()
-        .find(|l| l.contains("Friction changed its mode"))
+        .find(|l| l.contains("Friction changes its mode"))
         .expect("the switch in step 6");
-    let switches = line.split("tolerance): ").nth(1).expect("the switches");
+    let switches = line.split("motion: ").nth(1).expect("the switches");
     let t = switch_time(switches, "lane stops slipping (rolls)");
     assert_close(
         t,

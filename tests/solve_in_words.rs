@@ -15,7 +15,8 @@ fn the_four_bars_constraint_block_is_singular_with_coupler_and_rocker_in_line() 
     let text = std::fs::read_to_string(problem("four-bar")).expect("readable");
     let p = mbd_tutor::problem::load(&text).expect("valid");
     let derivation =
-        mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout).expect("derives");
+        mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout)
+            .expect("derives");
     let (_, _, det) = constraint_block(&derivation).expect("a block of the constraint rows");
     let (b, c): (f64, f64) = (0.3, 0.25);
     let at = |q: [f64; 3]| {

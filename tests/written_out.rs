@@ -41,7 +41,11 @@ fn the_written_terms_sum_to_each_row_of_every_bundled_problem() {
         let Ok(p) = mbd_tutor::problem::load(&text) else {
             continue;
         };
-        let Ok(derivation) = mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout) else {
+        let Ok(derivation) = mbd_tutor::pipeline::derive(
+            &p,
+            Method::MotionLaw,
+            mbd_tutor::pipeline::Purpose::Handout,
+        ) else {
             continue;
         };
         let values = values_at_start(&derivation);
@@ -93,7 +97,8 @@ fn the_double_pendulums_moment_row_about_o_is_written_body_by_body() {
     let text = std::fs::read_to_string(problem("double-pendulum-rods")).expect("readable");
     let p = mbd_tutor::problem::load(&text).expect("valid");
     let derivation =
-        mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout).expect("derives");
+        mbd_tutor::pipeline::derive(&p, Method::MotionLaw, mbd_tutor::pipeline::Purpose::Handout)
+            .expect("derives");
     let row = derivation
         .rows
         .iter()

@@ -125,10 +125,7 @@ pub fn work(problem: &Problem, method: Method) -> Result<Worked<'_>, Error> {
 ///
 /// # Errors
 /// When the equations cannot be derived, or the first question that cannot be answered.
-pub fn answers(
-    problem: &Problem,
-    method: Method,
-) -> Result<Vec<crate::numeric::Answer>, Error> {
+pub fn answers(problem: &Problem, method: Method) -> Result<Vec<crate::numeric::Answer>, Error> {
     memo::answers(problem, method, || {
         answers_from(problem, method, &derive(problem, method, Purpose::Numbers)?)
     })
@@ -171,7 +168,11 @@ pub fn answers_from(
         matches!(q.kind, Period { .. } | Stability { .. })
     });
     let linearizer = match (asks_period, problem.has_speeds()) {
-        (true, true) => Some(Linearizer::new(&derive(&in_rates, method, Purpose::Numbers)?)),
+        (true, true) => Some(Linearizer::new(&derive(
+            &in_rates,
+            method,
+            Purpose::Numbers,
+        )?)),
         // Without declared speeds the problem in its rates is the problem itself.
         (true, false) => Some(Linearizer::new(derivation)),
         (false, _) => None,

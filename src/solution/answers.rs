@@ -36,9 +36,7 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             let shown: Vec<&(Quantity, f64)> = answer
                 .values
                 .iter()
-                .filter(|(found, value)| {
-                    !crate::numeric::is_free_moment(question, found, *value)
-                })
+                .filter(|(found, value)| !crate::numeric::is_free_moment(question, found, *value))
                 .collect();
             if shown.len() < answer.values.len() {
                 view.note = "The components not listed are zero.".into();
@@ -96,6 +94,10 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .any(|v: &AnswerView| v.at_tex == view.at_tex && v.at_note == view.at_note);
             if steady && seen {
                 view.at_note = format!("{}, as above", view.at_note);
+            }
+            // The same check said once: the second time, briefly.
+            if steady && !view.note.is_empty() && done.iter().any(|v| v.note == view.note) {
+                view.note = "The same check holds here: the motion is steady.".into();
             }
             done.push(view);
             done

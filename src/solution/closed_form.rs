@@ -9,9 +9,9 @@ use crate::equations::{LinearSystem, Method};
 use crate::numeric::{coordinate_unit, Answer};
 use crate::problem::{Problem, Question, QuestionKind};
 use crate::render::AnswerStep;
+use crate::symbolic::latex;
 use crate::symbolic::partial;
 use crate::symbolic::{eval, Values};
-use crate::symbolic::latex;
 use crate::symbolic::{simplify, Expr, Symbol};
 use crate::Worked;
 

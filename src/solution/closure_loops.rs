@@ -13,8 +13,8 @@ use crate::mechanics::{Model, PointMotion, Vector};
 use crate::problem::BodyId;
 use crate::symbolic::latex_collected;
 use crate::symbolic::linear_split;
-use crate::symbolic::{latex, latex_name};
 use crate::symbolic::simplify;
+use crate::symbolic::{latex, latex_name};
 use crate::symbolic::{Expr, Symbol};
 
 /// The most characters of LaTeX one side of the loop may take, broken over lines.

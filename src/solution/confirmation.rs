@@ -5,8 +5,8 @@
 //! written here, without their thresholds or a verdict.
 
 use crate::equations::Method;
-use crate::numeric::{Check, CheckKind, Phrase};
 use crate::numeric::Trajectory;
+use crate::numeric::{Check, CheckKind, Phrase};
 use crate::problem::{Problem, SimulateSettings};
 use crate::render::literal_with_numbers;
 use crate::symbolic::fixed;
@@ -224,8 +224,11 @@ fn same_accelerations(problem: &Problem, method: &str) -> String {
         .collect();
     format!(
         "The equations of motion derived by {names} give the same \
-         ${}$ at every state compared along the motion.",
-        accelerations.join(", ")
+         {} at every state compared along the motion.",
+        // Each in its own math, so that the line may break between them.
+        (accelerations.iter().map(|a| format!("${a}$")))
+            .collect::<Vec<_>>()
+            .join(", ")
     )
 }
 

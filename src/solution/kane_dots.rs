@@ -9,10 +9,11 @@ use crate::equations::Derivation;
 use crate::mechanics::is_particle;
 use crate::mechanics::{Model, Vector};
 use crate::problem::BodyId;
+use crate::render::symbols;
 use crate::symbolic::latex_collected;
-use crate::symbolic::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify;
 use crate::symbolic::{add, Expr, Node, Symbol};
+use crate::symbolic::{latex, latex_name, latex_unit_vector};
 
 /// The most bodies whose dot products are written out: past three, the products of a
 /// chain's outer bodies run over several lines each, and its rows are read by step 4's
@@ -22,6 +23,10 @@ const MOST_BODIES: usize = 3;
 /// The most characters of LaTeX one line of products may take: a longer one would stick
 /// out of the page's margin, and the body's term is then written without its products.
 const LONGEST_PRODUCTS: usize = 300;
+
+/// The most symbols one printed line may take: the page's line, as
+/// [`crate::render::symbols`] counts them.
+const WIDEST_LINE: f64 = 66.0;
 
 /// One dot product `a · b` written in one frame: the pairs of components that multiply,
 /// in axis order, and the frame's unit vectors they are along.
@@ -162,7 +167,17 @@ fn body_lines(
     let mut lines = vec![format!("{name} &= {definition}")];
     lines.extend(products_lines(&dots));
     lines.push(format!("&= {}", latex_collected(&term)));
-    Some((name, lines))
+    // Products that print wider than the page go; a term that does makes the block go.
+    let (term_line, products) = lines.split_last()?;
+    if symbols(term_line) > WIDEST_LINE {
+        return Some((name, Vec::new()));
+    }
+    let mut kept: Vec<String> = products.to_vec();
+    if kept.iter().any(|l| symbols(l) > WIDEST_LINE) {
+        kept.truncate(1);
+    }
+    kept.push(term_line.clone());
+    Some((name, kept))
 }
 
 /// `F^*_r` of Kane's speed row `r` (1-based) with each body's dot products multiplied out,
@@ -187,6 +202,9 @@ pub fn inertia_dot_products(
     let mut lines = Vec::new();
     for &body in &model.order {
         if let Some((name, body_lines)) = body_lines(derivation, body, r, &rates, shown) {
+            if body_lines.is_empty() {
+                return None;
+            }
             names.push(name);
             lines.extend(body_lines);
         }

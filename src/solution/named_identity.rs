@@ -6,11 +6,11 @@
 use crate::numeric::{coordinate_unit, Answer};
 use crate::problem::{Problem, QuestionKind};
 use crate::render::AnswerStep;
-use crate::symbolic::{latex_collected, latex_factored};
-use crate::symbolic::partial;
-use crate::symbolic::{eval, Values};
 use crate::symbolic::latex;
+use crate::symbolic::partial;
 use crate::symbolic::substitute;
+use crate::symbolic::{eval, Values};
+use crate::symbolic::{latex_collected, latex_factored};
 use crate::symbolic::{simplify, Expr, Symbol};
 
 /// How the problem's symbols are written in the statement's names: each replaced symbol

@@ -264,6 +264,9 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let written_tex = super::written_out::written_out(derivation, row)
         .filter(|_| !grouped_tex.is_empty())
         .map(|w| w.tex)
+        // Its components as the model writes them: a root of a square the row's own
+        // printing takes by the initial sign would show there; such a row goes without.
+        .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
     EquationView {
         label,

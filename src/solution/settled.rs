@@ -4,10 +4,10 @@
 
 use crate::equations::Derivation;
 use crate::numeric::Answer;
-use crate::symbolic::partial;
-use crate::symbolic::{eval, Values};
 use crate::symbolic::latex;
+use crate::symbolic::partial;
 use crate::symbolic::substitute;
+use crate::symbolic::{eval, Values};
 use crate::symbolic::{simplify, Expr, Node, Number, Symbol};
 
 /// Coordinates written in symbols at a state, with the sentence that says why.

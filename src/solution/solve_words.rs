@@ -9,9 +9,9 @@ use crate::mechanics::Model;
 use crate::plan::Sum;
 use crate::problem::BodyId;
 use crate::symbolic::latex_collected;
-use crate::symbolic::{latex, latex_name};
 use crate::symbolic::simplify;
 use crate::symbolic::substitute;
+use crate::symbolic::{latex, latex_name};
 use crate::symbolic::{Expr, Func, Node, Symbol};
 
 /// The most unknowns a block whose determinant is written may have.

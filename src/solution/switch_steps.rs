@@ -88,6 +88,7 @@ fn constant_at_start(
     closed: &Closed,
 ) {
     let v = initial_values(problem);
+    let mut said = false;
     for (i, question) in problem.questions.iter().enumerate() {
         let QuestionKind::Value { expression, .. } = &question.kind else {
             continue;
@@ -108,11 +109,15 @@ fn constant_at_start(
             continue;
         }
         let unit = crate::numeric::coordinate_unit(problem, k, 2);
-        views[i].steps.push(step(
-            format!(
+        let why = match std::mem::replace(&mut said, true) {
+            false => format!(
                 "While the contact at {} slides it stays constant (the sliding law in place of the no-slip row, worked out below):",
                 site.replace('_', "\\_")
             ),
+            true => "Constant too while it slides:".to_string(),
+        };
+        views[i].steps.push(step(
+            why,
             format!(
                 "{} = {} = {}{}",
                 latex(&problem.coordinate_expr(k, 2)),

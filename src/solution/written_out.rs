@@ -15,9 +15,9 @@ use crate::render::context::Equation as EquationView;
 use crate::render::symbols;
 use crate::render::text::Math;
 use crate::symbolic::latex_collected;
-use crate::symbolic::{latex, latex_name, latex_unit_vector};
 use crate::symbolic::simplify;
 use crate::symbolic::{add, Expr};
+use crate::symbolic::{latex, latex_name, latex_unit_vector};
 
 /// The most bodies of a free body whose terms are written out.
 const MOST_BODIES: usize = 3;

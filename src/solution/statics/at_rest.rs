@@ -153,6 +153,12 @@ pub fn strip(solution: &mut Solution, derivation: &Derivation, zero: &[bool]) {
     }
     solution.initial_values.clear();
     solution.matrix = Default::default();
+    // The solve in two stages is of accelerations and reactions; at rest step 5 says its own.
+    solution.solve_notes.clear();
+    // No inertia term to write out at rest.
+    for equation in &mut solution.equations {
+        equation.written_tex = Default::default();
+    }
     solution.dependent_speeds = None;
     solution.friction.clear();
     solution.simulation = Simulation::default();
