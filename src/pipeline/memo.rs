@@ -3,9 +3,9 @@
 //! worked solution, which answers the same problem by the same method.
 
 use crate::equations::Method;
+use crate::error::Error;
 use crate::numeric::Answer;
 use crate::problem::Problem;
-use crate::Error;
 use std::cell::RefCell;
 
 /// How many problems' answers are kept: a class's variants and more; the oldest go first.

@@ -46,7 +46,14 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         axes: axes(problem),
         constants: constants(problem),
         plan: Plan::default(),
-        matrix_names: crate::problem::MatrixNames::of(problem),
+        matrix_names: {
+            let names = crate::problem::MatrixNames::of(problem);
+            crate::render::context::MatrixLetters {
+                a: names.a,
+                b: names.b,
+                c: names.c,
+            }
+        },
         simulation: Simulation {
             settings: MarkupLine::from(super::confirmation::integration(
                 problem,

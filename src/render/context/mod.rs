@@ -82,7 +82,7 @@ pub struct Solution {
     pub solve_notes: Vec<MarkupLine>,
     /// The names of the system matrix, its right-hand side and the dependent rates' matrix,
     /// free of the problem's own names.
-    pub matrix_names: crate::problem::MatrixNames,
+    pub matrix_names: MatrixLetters,
     /// Step 1: the picture of the system at the initial state (empty when not drawn).
     pub configuration: Figure,
     /// Step 2: the free bodies the planner uses.
@@ -428,4 +428,27 @@ pub struct Plot {
     /// [`Plot::pgfplots_latex`] for the format asked ([`crate::render::plots_drawn::draw`]).
     #[serde(skip)]
     pub data: Option<crate::render::plot::PlotData>,
+}
+
+/// The letters the handout names its matrices by: the system matrix `a`, its right-hand
+/// side `b` and the dependent rates' matrix `c`, chosen by the solution free of the
+/// problem's own names.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct MatrixLetters {
+    /// The system matrix.
+    pub a: String,
+    /// The right-hand side.
+    pub b: String,
+    /// The matrix of the dependent rates.
+    pub c: String,
+}
+
+impl Default for MatrixLetters {
+    fn default() -> Self {
+        MatrixLetters {
+            a: "A".into(),
+            b: "b".into(),
+            c: "C".into(),
+        }
+    }
 }
