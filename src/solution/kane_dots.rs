@@ -183,7 +183,7 @@ fn body_lines(
 /// `F^*_r` of Kane's speed row `r` (1-based) with each body's dot products multiplied out,
 /// as an `aligned` block ending in `whole`'s formula; `None` for more than three bodies,
 /// for speeds combined by dependent-speed weights (written by
-/// [`super::kane_bodies::inertia_by_body`]) and where fewer than one body contributes.
+/// [`super::kane_bodies::inertia_by_body`]) and where no body contributes.
 pub fn inertia_dot_products(
     derivation: &Derivation,
     r: usize,
