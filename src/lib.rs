@@ -35,7 +35,8 @@
 //! with the one place where a singular plan is planned again, the confirmation checks, and
 //! [`run`](pipeline::run), the one orchestrator of a handout (`explain`, `serve`,
 //! `variants`). [`symbolic`] is the computer-algebra core under
-//! all of them.
+//! all of them; [`typeset`], the part of LaTeX math every format can set, is read by
+//! `problem` (a question's symbol) and `render` alike.
 
 #[allow(missing_docs)] // to document item by item
 pub mod cli;
@@ -50,14 +51,18 @@ pub mod output;
 pub mod pipeline;
 pub mod plan;
 pub mod problem;
-#[allow(missing_docs, clippy::too_many_lines)] // to document item by item; to split
+#[allow(clippy::too_many_lines)] // to split
 pub mod render;
 #[allow(clippy::too_many_lines)] // to split: matrix, row_view, derived, kinematics
 pub mod solution;
 #[allow(missing_docs)] // to document item by item
 pub mod symbolic;
+pub mod typeset;
 
 pub use error::{BatchError, Error, SubmissionError};
+/// The statics handout's run ([`pipeline::run_at_rest`]): the equilibrium and what the
+/// stages give there, which [`solution`] writes out.
+pub use pipeline::{Equilibrium, Stability, StabilityKind, WorkedAtRest};
 /// What a run of the stages gives the handout ([`pipeline::run`]): the worked solution's
 /// data, which [`solution`] writes out.
 pub use pipeline::{ImpactSolution, ImpactWorked, Job, Worked};

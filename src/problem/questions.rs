@@ -63,7 +63,7 @@ impl Reader {
     /// Whether a question's `symbol` is math every format can set: it is written inside
     /// `$…$` in every handout and names a column of key.csv. An error at `path` otherwise.
     fn typesettable(&mut self, symbol: &str, path: &str) -> bool {
-        if crate::render::checked_math(symbol).is_some() && !symbol.contains(['<', '>']) {
+        if crate::typeset::checked_math(symbol).is_some() && !symbol.contains(['<', '>']) {
             return true;
         }
         let shown: String = symbol.chars().take(40).collect();

@@ -91,17 +91,6 @@ const GREEK: [(char, &str); 40] = [
     ('ϱ', "varrho"),
 ];
 
-/// The name of the LaTeX command whose backslash `chars` has just read (`sin` of `\\sin`),
-/// read off `chars`; empty for a control symbol such as `\\,`, whose character stays.
-pub fn command_name(chars: &mut std::iter::Peekable<std::str::Chars>) -> String {
-    let mut name = String::new();
-    while let Some(&next) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
-        name.push(next);
-        chars.next();
-    }
-    name
-}
-
 /// The Greek letter LaTeX names `\name` (`theta` → θ), for text that cannot hold math.
 pub fn greek_letter(name: &str) -> Option<char> {
     GREEK.iter().find(|(_, n)| *n == name).map(|(c, _)| *c)

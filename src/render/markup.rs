@@ -9,16 +9,16 @@
 //! | `1. item`, `1) item` | a numbered list, from that number |
 //! | `*text*`, `_text_` / `**text**`, `__text__` | emphasis / strong emphasis |
 //! | `` `text` `` | code |
-//! | `$…$` / `$$…$$` | inline / displayed math, if [`safe_math::checked`] allows it |
+//! | `$…$` / `$$…$$` | inline / displayed math, if [`checked_math`] allows it |
 //! | `\*`, `\$`, … | the character itself |
 //!
 //! Everything else is text, escaped for the format, and so is math that is not allowed:
 //! `$\input{x}$` prints as those characters.
 
 use super::escape;
-use super::mathml::{self, Display};
-use super::safe_math;
+use super::mathml;
 use super::Format;
+use crate::typeset::{checked_math, for_markdown, Display};
 
 /// A piece of a line.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,7 +30,12 @@ pub enum Inline {
     /// `` `code` ``, unescaped.
     Code(String),
     /// Emphasis (`strong` false) or strong emphasis.
-    Emphasis { strong: bool, inner: Vec<Inline> },
+    Emphasis {
+        /// Strong emphasis (`**…**`) rather than emphasis (`*…*`).
+        strong: bool,
+        /// What is emphasized.
+        inner: Vec<Inline>,
+    },
 }
 
 /// A paragraph or a list.
@@ -40,7 +45,9 @@ pub enum Block {
     Paragraph(Vec<Inline>),
     /// A list; `start` is the first number of a numbered list, `None` for bullets.
     List {
+        /// The first number of a numbered list, `None` for bullets.
         start: Option<u32>,
+        /// The items, each a line of inline pieces.
         items: Vec<Vec<Inline>>,
     },
 }
@@ -188,7 +195,7 @@ fn closing(chars: &[char], from: usize, marker: &str) -> Option<usize> {
 
 /// Math at `start` (a `$`), as pandoc reads it: `$` then no space, and a closing `$` after
 /// no space and before no digit (so "$5 and $10" stays text); `$$…$$` is displayed.
-/// Math that [`safe_math::checked`] refuses is text, dollars and all.
+/// Math that [`checked_math`] refuses is text, dollars and all.
 fn math(chars: &[char], start: usize) -> Option<(Inline, usize)> {
     let display = chars.get(start + 1) == Some(&'$');
     let (open, marker) = if display { (2, "$$") } else { (1, "$") };
@@ -203,7 +210,7 @@ fn math(chars: &[char], start: usize) -> Option<(Inline, usize)> {
             return None;
         }
     }
-    let piece = match safe_math::checked(&inner) {
+    let piece = match checked_math(&inner) {
         Some(latex) => Inline::Math(latex, display),
         None => Inline::Text(chars[start..after].iter().collect()),
     };
@@ -357,10 +364,10 @@ fn render(pieces: &[Inline], format: Format) -> String {
             (Inline::Text(text), Format::Latex) => out.push_str(&escape::latex_inline(text)),
             (Inline::Text(text), Format::Html) => out.push_str(&escape::html(text)),
             (Inline::Math(math, false), Format::Markdown) => {
-                out.push_str(&format!("${}$", safe_math::for_markdown(math)));
+                out.push_str(&format!("${}$", for_markdown(math)));
             }
             (Inline::Math(math, true), Format::Markdown) => {
-                out.push_str(&format!("$${}$$", safe_math::for_markdown(math)));
+                out.push_str(&format!("$${}$$", for_markdown(math)));
             }
             (Inline::Math(math, false), Format::Latex) => out.push_str(&format!("${math}$")),
             (Inline::Math(math, true), Format::Latex) => out.push_str(&format!("\\[{math}\\]")),

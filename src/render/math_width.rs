@@ -261,7 +261,7 @@ pub fn printed_width(latex: &str) -> usize {
     while let Some(c) = chars.next() {
         match c {
             '\\' => {
-                let name = crate::render::escape::command_name(&mut chars);
+                let name = crate::typeset::command_name(&mut chars);
                 if name.is_empty() {
                     chars.next();
                     width += 1;

@@ -28,7 +28,6 @@ mod plan_table;
 mod plot;
 mod plots_drawn;
 mod prepare;
-mod safe_math;
 mod sample;
 mod sections;
 mod tex_wrap;
@@ -50,7 +49,6 @@ pub use plot::{
     axes, padded_range, unicode_of, x_axis_span, Label as PlotLabel, PlotData, PlotError, Series,
 };
 pub use plots_drawn::draw as draw_plots;
-pub use safe_math::checked as checked_math;
 pub use sample::sample;
 pub use sections::{
     AnswerStep, AnswerView, EigenvalueRow, LinearizationSection, MatrixEntries, ModeRow,

@@ -167,8 +167,6 @@ pub fn line_plot(
 pub type Chart<'a, 'b> =
     ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
-/// A chart on `area` with its axes drawn as every SVG plot draws them: no minor grid, tick
-/// labels at [`fixed`] precision, the axis descriptions `x_label` and `y_label`.
 /// The room around a plot, and the room for its y axis's labels, in pixels.
 const MARGIN: u32 = 12;
 const Y_LABEL_AREA: u32 = 70;
@@ -183,6 +181,8 @@ pub fn x_axis_span() -> [f64; 2] {
     ]
 }
 
+/// A chart on `area` with its axes drawn as every SVG plot draws them: no minor grid, tick
+/// labels at [`fixed`] precision, the axis descriptions `x_label` and `y_label`.
 pub fn axes<'a, 'b>(
     area: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
     x_label: &str,
@@ -251,7 +251,7 @@ pub fn unicode_of(math: &str) -> String {
     while let Some(c) = chars.next() {
         match c {
             '\\' => {
-                let command = crate::render::escape::command_name(&mut chars);
+                let command = crate::typeset::command_name(&mut chars);
                 match crate::render::escape::greek_letter(&command) {
                     Some(letter) => out.push(letter),
                     None if command == "mathrm" || command == "mathbf" => {}

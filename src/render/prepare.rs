@@ -7,10 +7,11 @@
 use super::escape::{self, Lines};
 use super::line_break::{break_into_lines, displays, HTML_WIDTH, LINE_SYMBOLS, MEASURED_AT_MOST};
 use super::markup;
-use super::mathml::{self, Display};
+use super::mathml;
 use super::numbers::{is_number, keeping_spaces, latex_number, unicode_number, with_numbers};
 use super::text::key;
 use super::{Format, Solution};
+use crate::typeset::Display;
 use serde_json::Value;
 use std::collections::HashMap;
 

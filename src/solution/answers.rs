@@ -342,7 +342,7 @@ fn value_tex(
             match question
                 .symbol
                 .as_deref()
-                .and_then(crate::render::checked_math)
+                .and_then(crate::typeset::checked_math)
             {
                 Some(symbol) => symbol,
                 None if written.len() <= LONGEST_RESTATED => written,

@@ -302,9 +302,13 @@ pub struct Plan {
 /// the unknowns the rest, so that a long list of unknowns takes one line where it can.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct PlanColumns {
+    /// The free-body column.
     pub free_body_cm: f64,
+    /// The equation column (the sum).
     pub equation_cm: f64,
+    /// The direction column.
     pub direction_cm: f64,
+    /// The unknowns' column: what the others leave of the line.
     pub unknowns_cm: f64,
 }
 

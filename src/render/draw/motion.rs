@@ -15,8 +15,11 @@ pub enum Part {
     /// A wheel: the disc of `radius` about `center`, lightly filled, with spokes, the dark
     /// one towards the unit `mark`, so that it is seen to turn.
     Wheel {
+        /// The centre.
         center: [f64; 2],
+        /// The radius.
         radius: f64,
+        /// The unit direction of the dark spoke.
         mark: [f64; 2],
     },
     /// A rod: a thick line through the points.
@@ -59,16 +62,28 @@ pub enum Gauge {
     /// An angle: an arc about `center` from the unit `from`, turning by `angle` about the
     /// unit `axis`, and a dashed reference line `reference` long along `from`.
     Angle {
+        /// The arc's centre.
         center: P3,
+        /// The unit direction the angle is measured from.
         from: P3,
+        /// The unit axis it turns about.
         axis: P3,
+        /// The angle, in radians.
         angle: f64,
+        /// The length of the dashed reference line.
         reference: f64,
     },
     /// A distance: a dimension line from `from` to `to`, drawn on the side of the unit
     /// `along` (the coordinate's own direction, so the line keeps its side when the
     /// distance passes zero).
-    Distance { from: P3, to: P3, along: P3 },
+    Distance {
+        /// Where the distance starts.
+        from: P3,
+        /// Where it ends.
+        to: P3,
+        /// The unit side the line is drawn on.
+        along: P3,
+    },
 }
 
 /// Where everything is at one frame, in `N`.
@@ -113,9 +128,10 @@ pub struct Motion {
     pub floors: Vec<[P3; 4]>,
     /// The coordinates' marks' labels, one per mark of [`Placed::gauges`].
     pub gauges: Vec<Label>,
-    /// Per spring, then per damper: its lane beside the others between the same points
-    /// (the solution stage gives each its lane).
+    /// Per spring: its lane beside the others between the same points (the solution
+    /// stage gives each its lane).
     pub spring_lanes: Vec<f64>,
+    /// Per damper: its lane, likewise.
     pub damper_lanes: Vec<f64>,
     /// The frames.
     pub frames: Vec<Placed>,

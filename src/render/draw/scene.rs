@@ -212,10 +212,15 @@ pub enum Role {
 /// What a body is drawn as (`data-shape` in the SVG).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BodyKind {
+    /// A slender body: a thick line.
     Rod,
+    /// A wheel or disc.
     Disc,
+    /// A block under a contact: a closed outline.
     Block,
+    /// A particle: a dot.
     Particle,
+    /// Any other body: its outline.
     Outline,
 }
 
@@ -237,39 +242,64 @@ impl BodyKind {
 pub enum Shape {
     /// One body's shapes, grouped so that a picture (or an animation) can find the body.
     Body {
+        /// The body's name.
         name: String,
+        /// What it is drawn as.
         kind: BodyKind,
+        /// Its shapes.
         parts: Vec<Shape>,
     },
     /// A wheel: the disc of `radius` about `center` perpendicular to the unit `normal`,
     /// lightly filled, with a spoke towards the unit `mark` (fixed in the body) that shows
     /// it turning.
     Wheel {
+        /// The centre.
         center: P3,
+        /// The unit normal of the disc's plane.
         normal: P3,
+        /// The radius.
         radius: f64,
+        /// The unit direction of the spoke, fixed in the body.
         mark: P3,
     },
     /// A massless link to a particle: a thin line.
-    LightRod { from: P3, to: P3 },
+    LightRod {
+        /// One end.
+        from: P3,
+        /// The other end.
+        to: P3,
+    },
     /// A surface a body rolls on: a line through `at` along `along` (a vector, its half
     /// length); when `fixed` in `N`, hatched on the side opposite the unit `up` as the
     /// ground is, else plain, the face of the body that carries it.
     Surface {
+        /// The line's middle.
         at: P3,
+        /// Half the line, as a vector.
         along: P3,
+        /// The unit side away from the hatching.
         up: P3,
+        /// Whether the surface is fixed in `N` (hatched).
         fixed: bool,
     },
     /// A patch of a floor fixed in `N` (3D) that bodies roll on: a parallelogram through
     /// the corners, lightly filled and hatched, seen from the side of the unit `up`.
-    Floor { corners: [P3; 4], up: P3 },
+    Floor {
+        /// The parallelogram's corners, in order.
+        corners: [P3; 4],
+        /// The unit side it is seen from.
+        up: P3,
+    },
     /// A circle fixed in `N` that a disc rolls on or, `inside`, in (a gear's fixed partner,
     /// a cylinder): hatched on the side away from the disc.
     Track {
+        /// The centre.
         center: P3,
+        /// The unit normal of the circle's plane.
         normal: P3,
+        /// The radius.
         radius: f64,
+        /// Whether the disc rolls inside it.
         inside: bool,
     },
     /// A rod: a thick line through the points.
@@ -283,36 +313,81 @@ pub enum Shape {
     /// A pin (revolute) joint: a hollow circle.
     Pin(P3),
     /// A slider (prismatic, cylindrical) joint: a sleeve along the unit `axis`.
-    Slider { at: P3, axis: P3 },
+    Slider {
+        /// The sleeve's middle.
+        at: P3,
+        /// The unit axis it slides along.
+        axis: P3,
+    },
     /// A ball (spherical, universal) joint.
     Ball(P3),
     /// A welded joint.
     Weld(P3),
     /// Ground at a point, on the side opposite the unit `up`: a rail of half length
     /// `along` (a vector), or a small support when `along` is zero.
-    Ground { at: P3, along: P3, up: P3 },
+    Ground {
+        /// The point supported.
+        at: P3,
+        /// Half the rail, as a vector (zero for a small support).
+        along: P3,
+        /// The unit side away from the ground.
+        up: P3,
+    },
     /// A spring as a zig-zag, `lane` steps to the side of the line between its ends when
     /// it shares them with others (the solution stage gives each its lane).
-    Spring { from: P3, to: P3, lane: f64 },
+    Spring {
+        /// One end.
+        from: P3,
+        /// The other end.
+        to: P3,
+        /// Its lane, in steps to the side.
+        lane: f64,
+    },
     /// A damper as a dashpot, likewise.
-    Damper { from: P3, to: P3, lane: f64 },
+    Damper {
+        /// One end.
+        from: P3,
+        /// The other end.
+        to: P3,
+        /// Its lane, in steps to the side.
+        lane: f64,
+    },
     /// Unit vectors at a frame's origin (`None`: in a corner of the picture), with labels.
     Triad {
+        /// The frame's origin, or `None` for a corner of the picture.
         origin: Option<P3>,
+        /// Each unit vector with its label.
         axes: Vec<(P3, Label)>,
     },
     /// An angle: an arc about `center` from unit `from`, turning by `angle` about unit `axis`.
     Angle {
+        /// The arc's centre.
         center: P3,
+        /// The unit direction the angle is measured from.
         from: P3,
+        /// The unit axis it turns about.
         axis: P3,
+        /// The angle, in radians.
         angle: f64,
+        /// The angle's name.
         label: Label,
     },
     /// A distance: a dimension line from `from` to `to`.
-    Distance { from: P3, to: P3, label: Label },
+    Distance {
+        /// Where the distance starts.
+        from: P3,
+        /// Where it ends.
+        to: P3,
+        /// The distance's name.
+        label: Label,
+    },
     /// A thin dashed line (a reference direction).
-    Dashed { from: P3, to: P3 },
+    Dashed {
+        /// One end.
+        from: P3,
+        /// The other end.
+        to: P3,
+    },
 }
 
 /// A force or couple to draw as an arrow.

@@ -8,6 +8,7 @@
 //! `\def`, `#`, `%`, `&`, an unbalanced brace) makes the whole span plain text, which the
 //! caller then escapes.
 
+use super::command_name;
 use super::mathml::{self, Display};
 
 /// The commands allowed in a problem's math: nothing here reads, writes, defines or
@@ -201,7 +202,7 @@ pub fn checked(source: &str) -> Option<String> {
     while let Some(c) = chars.next() {
         match c {
             '\\' => {
-                let name = crate::render::escape::command_name(&mut chars);
+                let name = command_name(&mut chars);
                 if name.is_empty() {
                     let next = chars.next().filter(|n| ESCAPED.contains(*n))?;
                     out.push('\\');
