@@ -1,8 +1,9 @@
 //! `mbd-tutor draw`: the configuration and every free-body diagram as SVG files.
 
 use crate::cli::{Common, DrawArgs};
-use crate::equations::{Derivation, Method, State};
+use crate::equations::{Derivation, Method};
 use crate::numeric::System;
+use crate::problem::State;
 use crate::render::draw::{Drawing, View};
 use crate::solution::draw_pictures as draw;
 use crate::Error;

@@ -38,8 +38,8 @@ pub fn run(args: SimulateArgs) -> Result<(), Error> {
     )?;
     super::report_constraints(&derivation.model, &[]);
     let solver = crate::pipeline::Solver::fastest(&problem, &derivation);
-    let mut q0: Vec<f64> = problem.initial_coordinates();
-    let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let initial = problem.initial_state();
+    let (mut q0, mut rates0) = (initial.q, initial.rates);
     if problem.impact.is_some() {
         // The motion after the impact: from its configuration, with the rates just after.
         let impact = crate::pipeline::impact_at_start(&problem, &derivation.model, &solver)?;

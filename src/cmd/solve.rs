@@ -15,8 +15,8 @@ pub fn initial_state(
     problem: &crate::problem::Problem,
     assignments: &[String],
 ) -> Result<(Vec<f64>, Vec<f64>), Error> {
-    let mut q: Vec<f64> = problem.initial_coordinates();
-    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let initial = problem.initial_state();
+    let (mut q, mut rates) = (initial.q, initial.rates);
     for (name, value) in parse_assignments(assignments)? {
         let (base, is_rate) = match name.strip_suffix('\'') {
             Some(base) => (base, true),

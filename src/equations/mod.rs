@@ -36,4 +36,4 @@ pub use lagrange::forces::{
     partial_velocities, role, virtual_work, Role,
 };
 pub use lagrange::kinetic::inertia_terms;
-pub use system::{Derivation, LinearSystem, Method, Request, Rows, State};
+pub use system::{Derivation, LinearSystem, Method, Request, Rows};

@@ -5,6 +5,7 @@ use crate::mechanics::Form;
 use crate::mechanics::{DependentSpeeds, KeptForces, Model};
 use crate::plan::{Action, Rejected};
 use crate::plan::{Equation, Inertia, LazyInertia};
+use crate::problem::State;
 use crate::symbolic::{Expr, Symbol};
 
 /// The equation-forming method.
@@ -106,17 +107,6 @@ impl Derivation<'_> {
     pub fn inertia(&self) -> &Inertia {
         self.lazy_inertia.get(&self.model)
     }
-}
-
-/// A state the equations will be solved at: time, coordinates and rates in coordinate order.
-#[derive(Clone, Debug, PartialEq)]
-pub struct State {
-    /// Time `t`.
-    pub t: f64,
-    /// The coordinates.
-    pub q: Vec<f64>,
-    /// Their rates.
-    pub rates: Vec<f64>,
 }
 
 /// What a derivation is for: the form its expressions take, which rows it forms, and the

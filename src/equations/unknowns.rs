@@ -2,12 +2,12 @@
 //! the constraint rows ([`Setup`]), and the rows a method hands back ([`MethodRows`]).
 
 use super::constraint_rows::constraint_equations;
-use super::system::{Method, State};
+use super::system::Method;
 use crate::mechanics::{
     reaction_unknowns, DependentSpeeds, KeptForces, MechanicsError, Model, RowOrigin,
 };
 use crate::plan::{Action, Equation, Inertia, Rejected};
-use crate::problem::Problem;
+use crate::problem::{Problem, State};
 use crate::symbolic::Symbol;
 
 /// What a method's rows are written from: the model, its free bodies (step 2), and the

@@ -255,8 +255,8 @@ fn starting_state(
     question: &Question,
     context: &Context,
 ) -> Result<(f64, Vec<f64>, Vec<f64>), ProblemError> {
-    let mut q: Vec<f64> = problem.initial_coordinates();
-    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let initial = problem.initial_state();
+    let (mut q, mut rates) = (initial.q, initial.rates);
     let at = &question.at;
     let from_after = at.after_impact
         || (at.state.is_none() && (at.switch.is_some() || at.time.is_some_and(|t| t > 0.0)));

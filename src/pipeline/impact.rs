@@ -46,10 +46,16 @@ pub fn impact_at_start(
     model: &Model,
     solver: &super::Solver,
 ) -> Result<ImpactSolution, Error> {
-    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let mut rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    solver.assemble(0.0, &mut q, &mut rates)?;
-    impact(problem, model, solver.method(), &q, &rates, solver)
+    let mut state = problem.initial_state();
+    solver.assemble(state.t, &mut state.q, &mut state.rates)?;
+    impact(
+        problem,
+        model,
+        solver.method(),
+        &state.q,
+        &state.rates,
+        solver,
+    )
 }
 
 /// The struck point's velocity relative to the surface body `on`, in `on`'s unit vectors,

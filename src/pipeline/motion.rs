@@ -21,8 +21,8 @@ pub fn frames(
 ) -> Result<Vec<Frame>, Error> {
     let count = frame_count(duration, fps)?;
     let solver = &Solver::new(problem, derivation);
-    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
+    let initial = problem.initial_state();
+    let (q0, rates0) = (initial.q, initial.rates);
     let settings = crate::problem::SimulateSettings {
         duration,
         output_step: 1.0 / fps,

@@ -14,8 +14,8 @@ use crate::problem::{Problem, ProblemError, ProblemErrors, Question, QuestionKin
 /// The question's state for the problem with the constant set: the initial one, with the
 /// question's `at.state` entries.
 fn state_of(question: &Question, p: &Problem) -> (Vec<f64>, Vec<f64>) {
-    let mut q: Vec<f64> = p.coordinates.iter().map(|c| c.initial).collect();
-    let mut rates: Vec<f64> = p.coordinates.iter().map(|c| c.rate).collect();
+    let initial = p.initial_state();
+    let (mut q, mut rates) = (initial.q, initial.rates);
     for (entry, value) in question.at.state.iter().flatten() {
         let target = if entry.order == 0 { &mut q } else { &mut rates };
         target[entry.coordinate] = *value;

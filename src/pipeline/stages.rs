@@ -2,11 +2,11 @@
 //! and 4; the free bodies, step 2; the equations of one method, steps 3 and 5) for what the
 //! caller needs ([`Purpose`]), counted against the work limit.
 
-use crate::equations::{self, Derivation, Method, Request, Rows, State};
+use crate::equations::{self, Derivation, Method, Request, Rows};
 use crate::error::Error;
 use crate::mechanics::{Form, MechanicsError};
 use crate::numeric::Compiled;
-use crate::problem::Problem;
+use crate::problem::{Problem, State};
 use crate::symbolic::budget;
 
 /// What a derivation is for, which says the rows formed and their form.

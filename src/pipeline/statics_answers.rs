@@ -26,7 +26,7 @@ fn failure(question: &Question, key: &str, message: String, hint: String) -> Err
 
 /// The question's configuration: the initial one with its `at.state` coordinates.
 fn configuration(problem: &Problem, question: &Question) -> Vec<f64> {
-    let mut q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
+    let mut q = problem.initial_state().q;
     for (entry, value) in question.at.state.iter().flatten() {
         if entry.order == 0 {
             q[entry.coordinate] = *value;

@@ -44,6 +44,7 @@ mod schema;
 mod settings;
 mod shapes;
 mod speeds;
+mod state;
 mod static_questions;
 mod validate;
 mod validated;
@@ -59,6 +60,7 @@ pub use matrix_names::MatrixNames;
 pub use model::*;
 pub use question_model::*;
 pub use schema::SCHEMA;
+pub use state::State;
 pub use validated::Problem;
 pub use vary::{Grid, Vary};
 

@@ -56,7 +56,7 @@ pub struct Problem {
 impl Problem {
     /// The coordinates' initial values `q(0)`, as written, in coordinate order.
     pub fn initial_coordinates(&self) -> Vec<f64> {
-        self.coordinates.iter().map(|c| c.initial).collect()
+        self.initial_state().q
     }
 
     /// The name of a body, `N` for the ground.

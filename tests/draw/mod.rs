@@ -5,8 +5,9 @@
 use crate::support::{all_problems, problem as problem_path};
 use crate::svg_reader::{apply, parse, Element};
 use mbd_tutor::cmd::derivation_at;
-use mbd_tutor::equations::{Derivation, Method, State};
+use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::mechanics::Vector;
+use mbd_tutor::problem::State;
 use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem};
 use mbd_tutor::render::draw::{Drawing, View};
 use mbd_tutor::solution::draw_pictures as draw;

@@ -166,9 +166,8 @@ fn along_one_axis(
     (number, from, to): (usize, &str, &str),
 ) -> Result<(Expr, Vector, Expr), MechanicsError> {
     let problem = model.problem;
-    let q0: Vec<f64> = problem.initial_coordinates();
-    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let initial = eval(c, &model.values_at(0.0, &q0, &rates0));
+    let state = problem.initial_state();
+    let initial = eval(c, &model.values_at(state.t, &state.q, &state.rates));
     let c_rate = time_derivative(c).map_err(|e| MechanicsError {
         path: path.to_string(),
         message: e.to_string(),

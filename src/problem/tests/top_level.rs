@@ -2,6 +2,27 @@
 
 use super::*;
 
+/// `t = 0` and each coordinate's `initial` and `rate` as written (a rate not written is
+/// zero), in the problem's coordinate order.
+#[test]
+fn the_initial_state_is_the_one_written() {
+    let mut written = base();
+    written["coordinates"] = json!({
+        "x": { "initial": 0.5 },
+        "q": { "initial": -0.25, "rate": 2.0 }
+    });
+    let problem = load(&written.to_string()).unwrap();
+    let state = problem.initial_state();
+    assert_eq!((state.t, state.q.len(), state.rates.len()), (0.0, 2, 2));
+    for (name, q, rate) in [("x", 0.5, 0.0), ("q", -0.25, 2.0)] {
+        let i = (problem.coordinates.iter())
+            .position(|c| c.name == name)
+            .unwrap();
+        assert_eq!((state.q[i], state.rates[i]), (q, rate), "{name}");
+    }
+    assert_eq!(problem.initial_coordinates(), state.q);
+}
+
 #[test]
 fn find_simulate_and_the_top_level() {
     rejects(

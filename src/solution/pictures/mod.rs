@@ -25,11 +25,17 @@ use numbers::{norm, sub, Numbers};
 /// handout.
 pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
     let problem = derivation.model.problem;
-    let q: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let rates: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    draw(derivation, 0.0, &q, &rates, None, View::Isometric)
-        .into_iter()
-        .next()
+    let state = problem.initial_state();
+    draw(
+        derivation,
+        state.t,
+        &state.q,
+        &state.rates,
+        None,
+        View::Isometric,
+    )
+    .into_iter()
+    .next()
 }
 
 /// The free bodies of the plan, in the order its rows first use them.
