@@ -145,7 +145,10 @@ pub fn rendered(
         every_rejected: args.verbose,
     };
     let mut solution = if args.statics {
-        solution::statics_handout(&problem, job.method, student, &settings)?
+        // The stages run at the equilibrium; the handout is written from what they gave.
+        let rest = crate::pipeline::rest(&problem, job.method)?;
+        let at_rest = crate::pipeline::run_at_rest(&rest, job.method, student)?;
+        solution::statics_handout(&at_rest, student, &settings)
     } else {
         // Every stage runs here, once; the handout is written from what they gave.
         match (student, crate::pipeline::run(&problem, &job)) {

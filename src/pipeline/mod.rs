@@ -8,7 +8,9 @@
 //!    a [`Solver`] is a [`System`] that solves, simulates and checks; [`Linearizer::new`]:
 //!    their exact partial derivatives, for the small motions about any state;
 //! 4. [`confirm`] checks a simulation against the other methods, and [`run`] runs each
-//!    stage once for a handout, only what its [`Job`] asks (the one orchestrator);
+//!    stage once for a handout, only what its [`Job`] asks (the one orchestrator); for
+//!    the statics handout, [`rest`] finds the equilibrium and [`run_at_rest`] runs the
+//!    stages there;
 //! 5. the renderers and exporters read what the stages before them produced.
 //!
 //! Recovery lives here and nowhere else: where the Motion Law's plan is singular at a state
@@ -18,11 +20,13 @@
 mod impact;
 mod memo;
 mod motion;
+mod rest_rows;
 mod run;
 mod stability;
 mod stages;
 mod statics;
 mod statics_answers;
+mod statics_handout;
 mod sweep;
 
 pub use impact::{impact, impact_at_start, ImpactSolution};
@@ -30,16 +34,17 @@ pub use motion::{frame_count, frames};
 pub use run::{run, ImpactWorked, Job, Worked};
 pub use stages::{derive, Purpose};
 pub use statics::{Equilibrium, Stability, StabilityKind, Statics};
+pub use statics_handout::{rest, run_at_rest, Rest, WorkedAtRest};
 pub use sweep::{sweep, Sweep, Swept};
 
-use crate::equations::{Derivation, Method, State};
+use crate::equations::{Derivation, Method};
 use crate::error::Error;
 use crate::mechanics::Form;
 use crate::numeric::{
     jacobian_of, Check, Compiled, Evaluation, Jacobian, Linearization, ModalAnalysis, SolveError,
     StateSolution, System, Trajectory,
 };
-use crate::problem::Problem;
+use crate::problem::{Problem, State};
 use std::cell::RefCell;
 
 /// Reads and validates the problem file at `path`.

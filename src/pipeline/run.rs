@@ -9,7 +9,7 @@ use crate::numeric::{
     simulate, Answer, Check, Frame, Linearization, SolveError, StateSolution, System, Trajectory,
     DEFAULT_FPS,
 };
-use crate::problem::{Problem, QuestionKind};
+use crate::problem::{Problem, QuestionKind, State};
 
 /// What a handout asks of the stages besides the derivation and the initial state.
 #[derive(Clone, Debug)]
@@ -73,6 +73,32 @@ pub struct Worked<'p> {
     pub frames: Option<Result<Vec<Frame>, Error>>,
 }
 
+impl<'p> Worked<'p> {
+    /// The derivation, its solver, the state (coordinates and rates, assembled) and the
+    /// solution there; nothing else yet.
+    pub(super) fn new(
+        derivation: Derivation<'p>,
+        solver: Solver<'p>,
+        (q0, rates0): (Vec<f64>, Vec<f64>),
+        initial: StateSolution,
+    ) -> Worked<'p> {
+        Worked {
+            derivation,
+            solver,
+            q0,
+            rates0,
+            initial,
+            simulation: None,
+            impact: None,
+            answers: None,
+            period_system: None,
+            show_accelerations: Vec::new(),
+            linearization: None,
+            frames: None,
+        }
+    }
+}
+
 /// The impact at the initial state, and the method's equations of the impulsive problem
 /// (or why they could not be written out).
 pub struct ImpactWorked<'p> {
@@ -93,10 +119,13 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
     let method = job.method;
     let derivation = derive(problem, method, Purpose::Handout)?;
     let solver = Solver::new(problem, &derivation);
-    let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    solver.assemble(0.0, &mut q0, &mut rates0)?;
-    let initial = solver.solve(0.0, &q0, &rates0)?;
+    let State {
+        t,
+        q: mut q0,
+        rates: mut rates0,
+    } = problem.initial_state();
+    solver.assemble(t, &mut q0, &mut rates0)?;
+    let initial = solver.solve(t, &q0, &rates0)?;
     let impact = match &problem.impact {
         Some(_) => Some(impact(
             problem,
@@ -108,20 +137,7 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
         )?),
         None => None,
     };
-    let mut worked = Worked {
-        derivation,
-        solver,
-        q0,
-        rates0,
-        initial,
-        simulation: None,
-        impact: None,
-        answers: None,
-        period_system: None,
-        show_accelerations: Vec::new(),
-        linearization: None,
-        frames: None,
-    };
+    let mut worked = Worked::new(derivation, solver, (q0, rates0), initial);
     if job.student {
         worked.impact = impact.map(|solution| ImpactWorked {
             solution,

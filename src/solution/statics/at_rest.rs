@@ -1,73 +1,15 @@
-//! The dynamic worked solution brought to rest: every rate and second derivative zero in
-//! the rows, no inertia forces on the free bodies, no kinetic diagrams, the kinematics
+//! The dynamic worked solution brought to rest: the rows at rest (the stages brought them
+//! there), no inertia forces on the free bodies, no kinetic diagrams, the kinematics
 //! reduced to positions, no matrix of q'' and no simulation.
 
 use crate::equations::{Derivation, Method};
-use crate::pipeline::Worked;
 use crate::problem::Problem;
 use crate::render::context::{Kinematics, Simulation, StaticsView};
 use crate::render::draw::View;
 use crate::render::text::{MarkupLine, Math};
 use crate::render::Solution;
-use crate::symbolic::{substitute, Expr, Symbol};
-
-/// `e` at rest: every rate and second derivative zero.
-pub fn at_rest(e: &Expr) -> Expr {
-    let rest = |s: &Symbol| match s {
-        Symbol::Coord(_, order) if *order > 0 => Some(Expr::zero()),
-        Symbol::Speed(..) => Some(Expr::zero()),
-        _ => None,
-    };
-    substitute(e, &rest)
-}
-
-/// Whether `e` vanishes at rest (a constraint differentiated in time, an inertia term).
-pub fn is_zero_at_rest(e: &Expr) -> bool {
-    crate::symbolic::simplify(&at_rest(e)).is_zero()
-}
-
-/// The rows of `derivation` at rest: every rate and second derivative zero, so that no
-/// inertia force or torque is left in them. Among a row's unknowns the q'' of a coordinate
-/// `found` gives way to the coordinate itself (its equilibrium value is what the row
-/// finds), and the other q'' go. Returns, row by row, whether it is then identically zero,
-/// which says nothing at rest: [`strip`] leaves those out of the handout (the rows stay,
-/// numbered as the system's).
-pub fn rows(derivation: &mut Derivation, found: &[usize]) -> Vec<bool> {
-    let problem = derivation.model.problem;
-    let found: Vec<Symbol> = found
-        .iter()
-        .map(|&i| problem.coordinate_symbol(i, 2))
-        .collect();
-    let rows = std::mem::take(&mut derivation.rows);
-    derivation.rows = rows
-        .into_iter()
-        .map(|row| row.map_expressions(at_rest))
-        .map(|mut row| {
-            let mut unknowns = Vec::new();
-            for u in &row.unknowns {
-                let u = match u {
-                    Symbol::Coord(name, 2) if found.contains(u) => Symbol::Coord(name.clone(), 0),
-                    Symbol::Coord(..) | Symbol::Speed(..) => continue,
-                    other => other.clone(),
-                };
-                // A row at rest may have lost it with the inertia terms.
-                if !row.expression.contains(&u) {
-                    continue;
-                }
-                if !unknowns.contains(&u) {
-                    unknowns.push(u);
-                }
-            }
-            row.unknowns = unknowns;
-            row
-        })
-        .collect();
-    derivation
-        .rows
-        .iter()
-        .map(|row| crate::symbolic::simplify(&row.expression).is_zero())
-        .collect()
-}
+use crate::symbolic::Symbol;
+use crate::Worked;
 
 /// Leaves out of step 3 and step 5 the rows that are identically zero at rest, and counts
 /// what the rest find.
@@ -204,16 +146,17 @@ pub fn draw(solution: &mut Solution, worked: &Worked) {
 }
 
 /// The student's statics handout: the set-up, the system drawn at its initial
-/// configuration, and as many blank rows as the worked solution has free bodies and
-/// equations.
-pub fn student(problem: &Problem, method: Method, full: &Solution) -> Solution {
+/// configuration (from `initial`, its equations there), and as many blank rows as the
+/// worked solution has free bodies and equations.
+pub fn student(
+    problem: &Problem,
+    method: Method,
+    initial: Option<&Derivation>,
+    full: &Solution,
+) -> Solution {
     let mut setup = crate::solution::setup(problem, method);
-    if let Ok(derivation) =
-        crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)
-    {
-        if let Some(drawing) = crate::solution::pictures::initial_configuration(&derivation) {
-            setup.configuration = drawing.figure();
-        }
+    if let Some(drawing) = initial.and_then(crate::solution::pictures::initial_configuration) {
+        setup.configuration = drawing.figure();
     }
     setup.free_bodies = vec![Default::default(); full.free_bodies.len()];
     setup.plan.rows = vec![Default::default(); full.plan.rows.len()];

@@ -2,11 +2,11 @@
 //! step 4 needs only positions, the equilibrium found with what holds it there (step 5),
 //! its stability, and that the system stays at rest (step 6).
 
-use crate::pipeline::{Equilibrium, Stability, StabilityKind};
 use crate::problem::{CoordinateKind, Problem};
 use crate::render::context::{StaticFriction, StaticsView};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::{fixed, latex};
+use crate::{Equilibrium, Stability, StabilityKind};
 
 /// The statics of the handout of `problem` at `equilibrium`, `free` the coordinates whose
 /// equilibrium value the equations find.

@@ -1,5 +1,6 @@
-//! Step 3 at rest: which coordinates the equilibrium equations find, and the Motion Law's
-//! rows planned again for the unknowns of statics.
+//! The equations brought to rest for the statics handout: every rate and second derivative
+//! zero in the rows, which free coordinates the rows find, and the Motion Law's rows
+//! planned again for the unknowns of statics.
 //!
 //! In dynamics the Motion Law chooses its moment points so that the reactions not asked
 //! for drop out of rows whose unknowns are the q'' and the reactions. At rest the q'' are
@@ -8,16 +9,73 @@
 //! picks, the ladder's moments about its foot, where the floor's two components meet, and
 //! a four-bar's links about their pins.
 
-use super::at_rest::is_zero_at_rest;
 use crate::equations::{Derivation, LinearSystem, Method};
 use crate::mechanics::reaction_unknowns;
 use crate::plan::{candidates, choose};
-use crate::symbolic::{linear_split, Symbol};
+use crate::symbolic::{linear_split, substitute, Expr, Symbol};
+
+/// `e` at rest: every rate and second derivative zero.
+fn at_rest(e: &Expr) -> Expr {
+    let rest = |s: &Symbol| match s {
+        Symbol::Coord(_, order) if *order > 0 => Some(Expr::zero()),
+        Symbol::Speed(..) => Some(Expr::zero()),
+        _ => None,
+    };
+    substitute(e, &rest)
+}
+
+/// Whether `e` vanishes at rest (a constraint differentiated in time, an inertia term).
+fn is_zero_at_rest(e: &Expr) -> bool {
+    crate::symbolic::simplify(&at_rest(e)).is_zero()
+}
+
+/// The rows of `derivation` at rest: every rate and second derivative zero, so that no
+/// inertia force or torque is left in them. Among a row's unknowns the q'' of a coordinate
+/// `found` gives way to the coordinate itself (its equilibrium value is what the row
+/// finds), and the other q'' go. Returns, row by row, whether it is then identically zero,
+/// which says nothing at rest: the handout leaves those out (the rows stay, numbered as the
+/// system's).
+pub(super) fn rows(derivation: &mut Derivation, found: &[usize]) -> Vec<bool> {
+    let problem = derivation.model.problem;
+    let found: Vec<Symbol> = found
+        .iter()
+        .map(|&i| problem.coordinate_symbol(i, 2))
+        .collect();
+    let rows = std::mem::take(&mut derivation.rows);
+    derivation.rows = rows
+        .into_iter()
+        .map(|row| row.map_expressions(at_rest))
+        .map(|mut row| {
+            let mut unknowns = Vec::new();
+            for u in &row.unknowns {
+                let u = match u {
+                    Symbol::Coord(name, 2) if found.contains(u) => Symbol::Coord(name.clone(), 0),
+                    Symbol::Coord(..) | Symbol::Speed(..) => continue,
+                    other => other.clone(),
+                };
+                // A row at rest may have lost it with the inertia terms.
+                if !row.expression.contains(&u) {
+                    continue;
+                }
+                if !unknowns.contains(&u) {
+                    unknowns.push(u);
+                }
+            }
+            row.unknowns = unknowns;
+            row
+        })
+        .collect();
+    derivation
+        .rows
+        .iter()
+        .map(|row| crate::symbolic::simplify(&row.expression).is_zero())
+        .collect()
+}
 
 /// The free coordinates whose equilibrium value the equations find: as many as the rows
 /// that do not vanish at rest outnumber the other unknowns (none where friction or the
 /// constraints fix the configuration given, as a ladder's sticking foot does).
-pub fn to_find(derivation: &Derivation, free: &[usize]) -> Vec<usize> {
+pub(super) fn to_find(derivation: &Derivation, free: &[usize]) -> Vec<usize> {
     let rows = (derivation.rows.iter())
         .filter(|row| !is_zero_at_rest(&row.expression))
         .count();
@@ -33,7 +91,7 @@ pub fn to_find(derivation: &Derivation, free: &[usize]) -> Vec<usize> {
 /// equations the rows give), at the state `q`, `rates`; the system is rebuilt from them so
 /// that its rows are the plan's. Left as derived when no plan is found, or for the other
 /// methods, which have no moment points to choose.
-pub fn replan(derivation: &mut Derivation, q: &[f64], rates: &[f64], found: &[usize]) {
+pub(super) fn replan(derivation: &mut Derivation, q: &[f64], rates: &[f64], found: &[usize]) {
     if derivation.method != Method::MotionLaw {
         return;
     }
