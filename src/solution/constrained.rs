@@ -2,7 +2,7 @@
 //! equations (step 1), the dependent rates as a map of the independent ones, Kane's
 //! equations with dependent speeds and the reduced partial velocities (step 5).
 
-use super::tex::constraint_label_tex;
+use super::row_names::constraint_label_tex;
 use crate::equations::Derivation;
 use crate::mechanics::{Model, RowOrigin, Vector};
 use crate::problem::BodyId;

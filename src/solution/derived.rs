@@ -287,13 +287,13 @@ pub fn plan(derivation: &Derivation) -> Plan {
             } else {
                 Math::from(bodies_tex(derivation, &row.free_body))
             },
-            equation_tex: Math::from(super::tex::sum_tex(derivation, &row.sum)),
+            equation_tex: Math::from(super::row_names::sum_tex(derivation, &row.sum)),
             direction_tex: match (&row.direction, &row.sum) {
                 (Some(d), _) => Math::from(d.latex.clone()),
                 // A contact's or a closure's row: along its reaction component; any other
                 // constraint differentiated in time, short enough for the table's column.
                 (None, Sum::Constraint { name }) => Math::from(
-                    super::tex::constraint_direction_tex(&derivation.model, name)
+                    super::row_names::constraint_direction_tex(&derivation.model, name)
                         .unwrap_or_else(|| "\\frac{\\mathrm{d}}{\\mathrm{d}t}".into()),
                 ),
                 (None, _) if derivation.method == Method::Lagrange => {

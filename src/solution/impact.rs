@@ -2,7 +2,7 @@
 //! the instant of the impact (the impulse–momentum equations), the collision's law, the
 //! rates just after, the impulses and the kinetic energy lost.
 
-use super::tex::row_heading_tex;
+use super::row_names::row_heading_tex;
 use crate::equations::{Derivation, Method};
 use crate::numeric::ImpactMode as Mode;
 use crate::problem::Problem;

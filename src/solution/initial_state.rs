@@ -2,11 +2,12 @@
 //! value and a dependent rate as solved from the constraints, a prescribed coordinate's
 //! from its motion, each marked so and with its unit.
 
-use super::pictures::numbers::{Numbers, P3};
+use super::pictures::numbers::Numbers;
 use crate::mechanics::Model;
 use crate::numeric::coordinate_unit;
 use crate::problem::{Coordinate, Dimension, JointKind, Problem};
 use crate::render::context::Coordinate as CoordinateView;
+use crate::render::draw::numbers::P3;
 use crate::symbolic::fixed;
 
 /// A value smaller than this is round-off of zero in a teaching problem's SI units.

@@ -3,7 +3,7 @@
 //! a long right-hand side collected by the products of rates.
 
 use super::long::{by_rates, LONG_EQUATION};
-use super::tex::row_heading_tex;
+use super::row_names::row_heading_tex;
 use crate::equations::{Derivation, Method};
 use crate::plan::Sum;
 use crate::problem::MatrixNames;

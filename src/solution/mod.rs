@@ -47,6 +47,7 @@ mod question_answers;
 mod question_steps;
 mod rejected;
 mod relations;
+mod row_names;
 mod row_view;
 mod settled;
 mod simulation;

@@ -40,7 +40,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         Reason::NoUnknown => plain("contains none of the unknowns"),
         Reason::Duplicate { row } if *row < derivation.rows.len() => (
             format!("says the same as row {} of the plan", row + 1),
-            super::tex::row_heading_tex(derivation, *row),
+            super::row_names::row_heading_tex(derivation, *row),
             String::new(),
         ),
         Reason::Duplicate { row } => {
@@ -69,7 +69,7 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
     };
     RejectedView {
         free_body_tex: Math::from(super::tex::bodies_tex(derivation, &candidate.free_body)),
-        equation_tex: Math::from(super::tex::sum_tex(derivation, &candidate.sum)),
+        equation_tex: Math::from(super::row_names::sum_tex(derivation, &candidate.sum)),
         direction_tex: Math::from(candidate.direction.latex.clone()),
         reason,
         reason_tex: Math::from(reason_tex),

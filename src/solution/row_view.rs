@@ -117,7 +117,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         grouped_tex = super::long::vector_form(derivation, row);
     }
     let mut label_tex = index
-        .map(|i| super::tex::row_heading_tex(derivation, i))
+        .map(|i| super::row_names::row_heading_tex(derivation, i))
         .unwrap_or_default();
     let mut label = if matches!(row.sum, Sum::Constraint { .. }) {
         ACCELERATION_LEVEL.to_string()

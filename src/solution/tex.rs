@@ -3,8 +3,8 @@
 //! initial state, and how the problem's numbers print.
 
 use crate::equations::Derivation;
-use crate::mechanics::{Model, RowOrigin, Vector};
-use crate::plan::{ActionKind, Sum};
+use crate::mechanics::{Model, Vector};
+use crate::plan::ActionKind;
 use crate::problem::{BodyId, Problem};
 use crate::symbolic::{
     latex, latex_name, latex_unit_vector, list_by_runs, simplify, sum_times, Expr, Node, Symbol,
@@ -118,10 +118,8 @@ pub(super) fn bodies_name(problem: &Problem, bodies: &[BodyId]) -> String {
 
 /// The sign an expression has at the initial state, for [`roots_of_squares`].
 pub fn initial_sign(model: &Model) -> impl Fn(&Expr) -> f64 {
-    let problem = model.problem;
-    let q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
-    let rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    let values = model.values_at(0.0, &q0, &rates0);
+    let state = model.problem.initial_state();
+    let values = model.values_at(state.t, &state.q, &state.rates);
     move |e: &Expr| crate::symbolic::eval(e, &values).signum()
 }
 
@@ -174,146 +172,8 @@ pub fn point_tex(point: &str) -> String {
     }
 }
 
-/// Row `i`'s equation as step 5 heads it: `B\colon \sum \mathbf{M}_{P} \cdot
-/// \hat{\mathbf{a}}_{z}`, `F_{1} + F^{*}_{1}`, or what a constraint row constrains.
-pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
-    let row = &derivation.rows[i];
-    let direction = row
-        .direction
-        .as_ref()
-        .map(|d| format!(" \\cdot {}", d.latex))
-        .unwrap_or_default();
-    match &row.sum {
-        Sum::Constraint { name } => constraint_label_tex(&derivation.model, name),
-        Sum::Generalized { .. } => sum_tex(derivation, &row.sum),
-        _ => format!(
-            "{}\\colon {}{direction}",
-            bodies_tex_short(derivation, &row.free_body),
-            sum_tex(derivation, &row.sum)
-        ),
-    }
-}
-
-/// A sum as an equation's column names it: `\sum \mathbf{F}`, `\sum \mathbf{M}_{O}`,
-/// `F_{r} + F^{*}_{r}` (r among Kane's rows), or what a constraint constrains.
-pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
-    match sum {
-        Sum::Force => "\\sum \\mathbf{F}".into(),
-        Sum::Moment { point, .. } => format!("\\sum \\mathbf{{M}}_{{{}}}", point_tex(point)),
-        Sum::Generalized { .. } if derivation.method == crate::equations::Method::Lagrange => {
-            super::lagrange::equation_tex(derivation, sum).unwrap_or_default()
-        }
-        Sum::Generalized { .. } => {
-            let r = derivation
-                .rows
-                .iter()
-                .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
-                .position(|x| x.sum == *sum)
-                .map_or("r".to_string(), |i| (i + 1).to_string());
-            if derivation.dependent_speeds.is_some() {
-                format!("\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}")
-            } else {
-                format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
-            }
-        }
-        Sum::Constraint { name } => constraint_what_tex(&derivation.model, name),
-    }
-}
-
-/// A constraint row's label in the matrix form: what it constrains and, for a site's row,
-/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
-pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
-    let what = constraint_what_tex(model, name);
-    match constraint_direction_tex(model, name) {
-        Some(direction) => format!("{what} \\cdot {direction}"),
-        None => what,
-    }
-}
-
-/// What a constraint row constrains, in LaTeX: `\text{no slip at floor}`, or
-/// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
-pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
-    use crate::mechanics::SiteKind;
-    let problem = model.problem;
-    // A site's name in words: `rear_contact` is the rear contact.
-    let text = |words: String| {
-        format!(
-            "\\text{{{}}}",
-            crate::render::escape_latex(&words.replace('_', " "), crate::render::Lines::One)
-        )
-    };
-    let sticking = model
-        .constraints
-        .friction
-        .iter()
-        .find(|f| f.stick.iter().any(|r| r.name == name));
-    if let Some(site) = sticking {
-        // A friction site's no-slip row holds only while it sticks (rolls).
-        return text(format!("no slip at {} while it sticks", site.name));
-    }
-    let row = model.constraints.rows.iter().find(|r| r.name == name);
-    match row.map(|r| &r.origin) {
-        Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
-            Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
-                let kind = match s.kind {
-                    SiteKind::Contact(k) => problem.constraints.get(k).map(|c| &c.kind),
-                    _ => None,
-                };
-                // A position-level row holds the body on the surface (the normal) or,
-                // for a gear, the distance between the centres; a velocity-level row is
-                // the no-slip condition along the contact's tangent (a gear's meshing).
-                let holonomic = row.is_some_and(|r| r.position.is_some());
-                let gear = matches!(kind, Some(crate::problem::ConstraintKind::Gear { .. }));
-                match (gear, holonomic) {
-                    (false, true) => text(format!("no penetration at {}", s.name)),
-                    (false, false) => text(format!("no slip at {}", s.name)),
-                    (true, true) => text(format!("distance between the centres at {}", s.name)),
-                    (true, false) => text(format!("no slip at {}", s.name)),
-                }
-            }
-            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
-                text(format!("loop closure at {}", s.name))
-            }
-            Some(s) => text(format!("constraint at {}", s.name)),
-            None => text(format!("constraint {name}")),
-        },
-        Some(RowOrigin::Position(_)) => text(format!("position constraint {name}")),
-        Some(RowOrigin::Velocity(_)) => text(format!("velocity constraint {name}")),
-        Some(RowOrigin::Prescribed(c)) if *c < problem.coordinates.len() => {
-            let symbol = latex(&problem.coordinate_expr(*c, 0));
-            if problem.coordinates[*c].held {
-                format!("{symbol} \\text{{ held by its support}}")
-            } else {
-                format!("\\text{{prescribed motion of }} {symbol}")
-            }
-        }
-        Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
-        None => text(format!("constraint {name}")),
-    }
-}
-
 /// What a constraint row's heading adds: the row is the constraint differentiated.
 pub const ACCELERATION_LEVEL: &str = "(differentiated to the acceleration level)";
-
-/// The direction of a closure's or a contact's constraint row: that of the reaction
-/// component that enforces it (the row is the relative motion along it).
-pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
-    // A no-slip row of a friction site: along the tangent its friction component takes.
-    for friction in &model.constraints.friction {
-        if let Some(row) = friction.stick.iter().find(|r| r.name == name) {
-            let site = model.sites.get(friction.site)?;
-            let component =
-                (site.reactions.iter()).find(|c| c.unknown(&site.name) == row.unknown)?;
-            return Some(super::direction::simplest_tex(model, &component.direction));
-        }
-    }
-    let row = model.constraints.rows.iter().find(|r| r.name == name)?;
-    let RowOrigin::Site { site, component } = row.origin else {
-        return None;
-    };
-    let direction = model.sites.get(site)?.row_direction(component)?;
-    Some(super::direction::simplest_tex(model, direction))
-}
 
 /// `Σ x_k symbol_k` with numbers written to the digits of the tables and a coefficient of
 /// one left out; `None` when every `|x_k|` is at most `zero`.

@@ -5,7 +5,11 @@ use crate::problem::BodyId;
 use crate::symbolic::{eval, Expr, Values};
 use std::cell::RefCell;
 
-pub use crate::render::draw::numbers::*;
+// The vector arithmetic of the scenes, which the pictures' files take from here with
+// `Numbers`.
+pub(super) use crate::render::draw::numbers::{
+    add, circle, cross, dot, norm, rotate, scale, sub, unit, P3,
+};
 
 /// Evaluates the model's vectors at one state.
 pub struct Numbers<'m, 'p> {

@@ -1,0 +1,148 @@
+//! How step 5 and the matrix name a row: the free body and the sum (`B\colon \sum
+//! \mathbf{M}_{P} \cdot \hat{\mathbf{a}}_{z}`), Kane's `F_{r} + F^{*}_{r}`, Lagrange's
+//! equation of a coordinate, or what a constraint row constrains and along which direction.
+
+use super::direction::simplest_tex;
+use super::tex::{bodies_tex_short, point_tex};
+use crate::equations::Derivation;
+use crate::mechanics::{Model, RowOrigin};
+use crate::plan::Sum;
+use crate::symbolic::latex;
+
+/// Row `i`'s equation as step 5 heads it: `B\colon \sum \mathbf{M}_{P} \cdot
+/// \hat{\mathbf{a}}_{z}`, `F_{1} + F^{*}_{1}`, or what a constraint row constrains.
+pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
+    let row = &derivation.rows[i];
+    let direction = row
+        .direction
+        .as_ref()
+        .map(|d| format!(" \\cdot {}", d.latex))
+        .unwrap_or_default();
+    match &row.sum {
+        Sum::Constraint { name } => constraint_label_tex(&derivation.model, name),
+        Sum::Generalized { .. } => sum_tex(derivation, &row.sum),
+        _ => format!(
+            "{}\\colon {}{direction}",
+            bodies_tex_short(derivation, &row.free_body),
+            sum_tex(derivation, &row.sum)
+        ),
+    }
+}
+
+/// A sum as an equation's column names it: `\sum \mathbf{F}`, `\sum \mathbf{M}_{O}`,
+/// `F_{r} + F^{*}_{r}` (r among Kane's rows), or what a constraint constrains.
+pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
+    match sum {
+        Sum::Force => "\\sum \\mathbf{F}".into(),
+        Sum::Moment { point, .. } => format!("\\sum \\mathbf{{M}}_{{{}}}", point_tex(point)),
+        Sum::Generalized { .. } if derivation.method == crate::equations::Method::Lagrange => {
+            super::lagrange::equation_tex(derivation, sum).unwrap_or_default()
+        }
+        Sum::Generalized { .. } => {
+            let r = derivation
+                .rows
+                .iter()
+                .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
+                .position(|x| x.sum == *sum)
+                .map_or("r".to_string(), |i| (i + 1).to_string());
+            if derivation.dependent_speeds.is_some() {
+                format!("\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}")
+            } else {
+                format!("F_{{{r}}} + F^{{*}}_{{{r}}}")
+            }
+        }
+        Sum::Constraint { name } => constraint_what_tex(&derivation.model, name),
+    }
+}
+
+/// A constraint row's label in the matrix form: what it constrains and, for a site's row,
+/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
+pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
+    let what = constraint_what_tex(model, name);
+    match constraint_direction_tex(model, name) {
+        Some(direction) => format!("{what} \\cdot {direction}"),
+        None => what,
+    }
+}
+
+/// What a constraint row constrains, in LaTeX: `\text{no slip at floor}`, or
+/// `\text{prescribed motion of } \theta` with the coordinate as a symbol.
+pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
+    use crate::mechanics::SiteKind;
+    let problem = model.problem;
+    // A site's name in words: `rear_contact` is the rear contact.
+    let text = |words: String| {
+        format!(
+            "\\text{{{}}}",
+            crate::render::escape_latex(&words.replace('_', " "), crate::render::Lines::One)
+        )
+    };
+    let sticking = model
+        .constraints
+        .friction
+        .iter()
+        .find(|f| f.stick.iter().any(|r| r.name == name));
+    if let Some(site) = sticking {
+        // A friction site's no-slip row holds only while it sticks (rolls).
+        return text(format!("no slip at {} while it sticks", site.name));
+    }
+    let row = model.constraints.rows.iter().find(|r| r.name == name);
+    match row.map(|r| &r.origin) {
+        Some(RowOrigin::Site { site, .. }) => match model.sites.get(*site) {
+            Some(s) if matches!(s.kind, SiteKind::Contact(_)) => {
+                let kind = match s.kind {
+                    SiteKind::Contact(k) => problem.constraints.get(k).map(|c| &c.kind),
+                    _ => None,
+                };
+                // A position-level row holds the body on the surface (the normal) or,
+                // for a gear, the distance between the centres; a velocity-level row is
+                // the no-slip condition along the contact's tangent (a gear's meshing).
+                let holonomic = row.is_some_and(|r| r.position.is_some());
+                let gear = matches!(kind, Some(crate::problem::ConstraintKind::Gear { .. }));
+                match (gear, holonomic) {
+                    (false, true) => text(format!("no penetration at {}", s.name)),
+                    (false, false) => text(format!("no slip at {}", s.name)),
+                    (true, true) => text(format!("distance between the centres at {}", s.name)),
+                    (true, false) => text(format!("no slip at {}", s.name)),
+                }
+            }
+            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
+                text(format!("loop closure at {}", s.name))
+            }
+            Some(s) => text(format!("constraint at {}", s.name)),
+            None => text(format!("constraint {name}")),
+        },
+        Some(RowOrigin::Position(_)) => text(format!("position constraint {name}")),
+        Some(RowOrigin::Velocity(_)) => text(format!("velocity constraint {name}")),
+        Some(RowOrigin::Prescribed(c)) if *c < problem.coordinates.len() => {
+            let symbol = latex(&problem.coordinate_expr(*c, 0));
+            if problem.coordinates[*c].held {
+                format!("{symbol} \\text{{ held by its support}}")
+            } else {
+                format!("\\text{{prescribed motion of }} {symbol}")
+            }
+        }
+        Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
+        None => text(format!("constraint {name}")),
+    }
+}
+
+/// The direction of a closure's or a contact's constraint row: that of the reaction
+/// component that enforces it (the row is the relative motion along it).
+pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<String> {
+    // A no-slip row of a friction site: along the tangent its friction component takes.
+    for friction in &model.constraints.friction {
+        if let Some(row) = friction.stick.iter().find(|r| r.name == name) {
+            let site = model.sites.get(friction.site)?;
+            let component =
+                (site.reactions.iter()).find(|c| c.unknown(&site.name) == row.unknown)?;
+            return Some(simplest_tex(model, &component.direction));
+        }
+    }
+    let row = model.constraints.rows.iter().find(|r| r.name == name)?;
+    let RowOrigin::Site { site, component } = row.origin else {
+        return None;
+    };
+    let direction = model.sites.get(site)?.row_direction(component)?;
+    Some(simplest_tex(model, direction))
+}
