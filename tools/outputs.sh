@@ -3,8 +3,9 @@
 # format, so that two builds can be compared byte for byte:
 #   tools/outputs.sh BIN DIR          e.g. tools/outputs.sh target/release/mbd-tutor /tmp/a
 #   diff -r /tmp/a /tmp/b             nothing printed: the outputs are byte-identical
-# Covers explain (markdown, latex, html; worked and student; with --linearize), draw (SVG,
-# TikZ, motion.svg), solve, answer and linearize as JSON.
+# Covers explain (markdown, latex, html; worked and student; with --linearize; at rest with
+# --statics by every method), draw (SVG, TikZ, motion.svg), solve, answer and linearize as
+# JSON.
 set -u
 bin=$(realpath "$1"); out=$2
 mkdir -p "$out"
@@ -20,6 +21,13 @@ for p in problems/*.json problems/validation/*.json; do
     "$bin" solve "$p" --method $m --format json >"$out/$name.$m.solve.json" 2>&1
     mkdir -p "$out/$name.$m.draw"
     "$bin" draw "$p" --method $m --tikz -o "$out/$name.$m.draw" >/dev/null 2>&1
+  done
+  for m in motion-law newton-euler kane lagrange; do
+    for f in markdown latex html; do
+      "$bin" explain "$p" --statics --method $m --format $f >"$out/$name.$m.statics.$f" 2>&1
+    done
+    "$bin" explain "$p" --statics --method $m --format markdown --student \
+      >"$out/$name.$m.statics.student.md" 2>&1
   done
   "$bin" explain "$p" --format latex --linearize >"$out/$name.linearize.tex" 2>&1
   "$bin" answer "$p" --format json >"$out/$name.answer.json" 2>&1
