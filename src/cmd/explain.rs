@@ -157,7 +157,11 @@ pub fn rendered(
             (true, worked) => {
                 solution::student(&problem, job.method, worked.ok().as_ref(), &settings)
             }
-            (false, worked) => solution::handout(&worked?, &settings),
+            // Its steps simplify the same sums again and again: each once.
+            (false, worked) => {
+                let worked = worked?;
+                crate::symbolic::with_simplify_memo(|| solution::handout(&worked, &settings))
+            }
         }
     };
     // Only Markdown refers to plot files: the HTML handout holds its plots (one file), the

@@ -12,6 +12,7 @@
 //! private; what the solution uses is re-exported here.
 
 mod by_speed;
+mod compiled;
 pub mod context;
 pub mod draw;
 mod escape;
@@ -161,9 +162,9 @@ pub fn render(
         Some(path) => {
             let source = crate::input::read_text_bounded(path, crate::input::MAX_TEMPLATE_BYTES)
                 .map_err(|e| error(format!("cannot read {}: {e}", path.display())))?;
-            (source, path.display().to_string())
+            (Some(source), path.display().to_string())
         }
-        None => (format.embedded().to_string(), name.to_string()),
+        None => (None, name.to_string()),
     };
     let error = |message: String| RenderError {
         template: shown_name.clone(),
@@ -175,12 +176,12 @@ pub fn render(
         message: e.to_string(),
         cause: Some(e),
     };
-    let mut tera = tera::Tera::default();
-    // The HTML template's name ends in `.tera`, so Tera's default (`.html` only) would not
-    // escape it.
-    tera.autoescape_on(vec![".html.tera"]);
-    prepare::register_filters(&mut tera);
-    tera.add_raw_template(name, &source).map_err(tera_error)?;
+    // Compiled once per process (see `compiled`): `variants` and `serve` render many.
+    let tera = match (&override_path, &source) {
+        (Some(path), Some(source)) => compiled::replacement(format, path, source),
+        _ => compiled::embedded(format),
+    }
+    .map_err(tera_error)?;
     // The plots given as data are drawn here, in the format asked: the Markdown refers to
     // their files, which `explain` writes beside it.
     let drawn;

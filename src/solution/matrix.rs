@@ -73,6 +73,21 @@ pub fn matrix(
         .iter()
         .map(|u| latex(&Expr::sym(u.clone())))
         .collect();
+    // In the table a row is labelled by its number: step 5 heads each equation with it.
+    let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
+    if matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries {
+        // Kane's rows stand whole in step 5, each written once, its mass matrix positive:
+        // the matrix form shows only where its entries are (the structure of the solve),
+        // and a single row is its own solution.
+        if a.len() < 2 {
+            return MatrixForm::default();
+        }
+        return MatrixForm {
+            pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
+            columns_tex: Math::all(columns(&x)),
+            ..MatrixForm::default()
+        };
+    }
     let a_tex: Vec<Vec<String>> = a
         .iter()
         .map(|row| row.iter().map(latex_factored).collect())
@@ -90,21 +105,6 @@ pub fn matrix(
             }
         })
         .collect();
-    // In the table a row is labelled by its number: step 5 heads each equation with it.
-    let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
-    if matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries {
-        // Kane's rows stand whole in step 5, each written once, its mass matrix positive:
-        // the matrix form shows only where its entries are (the structure of the solve),
-        // and a single row is its own solution.
-        if a.len() < 2 {
-            return MatrixForm::default();
-        }
-        return MatrixForm {
-            pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
-            columns_tex: Math::all(columns(&x)),
-            ..MatrixForm::default()
-        };
-    }
     let b_names: Vec<String> = (1..=a.len())
         .map(|i| format!("{}_{{{i}}}", names.b))
         .collect();

@@ -43,43 +43,15 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         };
         roots_of_squares(&e, &sign)
     };
-    let g = &row.groups;
-    let g = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].map(shown);
-    // Contact + distance + inertia forces + inertia torques, leaving out the empty groups;
-    // a long inertia group by the names of step 4; a force group with the identities
-    // (sin² + cos² = 1) applied when that is shorter, as the simplified row has them.
-    let mut grouped = String::new();
-    for (k, e) in g.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
-        let inertia = k >= 2;
-        let mut written = group_tex(e);
-        if !inertia {
-            let simpler = group_tex(&simplify(e));
-            if simpler.len() < written.len() {
-                written = simpler;
-            }
-        } else {
-            // An inertia group keeps its terms as formed, unless an identity merges some
-            // (R m ẍ s²_θ + R m ẍ c²_θ is R m ẍ): then it is written with it applied.
-            let simpler = simplify(e);
-            if simpler.terms().len() < e.terms().len() {
-                written = group_tex(&simpler);
-            }
-        }
-        let named = (inertia && e.terms().len() > MOST_INERTIA_TERMS)
-            .then(|| named_inertia_group(derivation, row, k == 3))
-            .flatten()
-            .filter(|named| named.len() < written.len());
-        let text = named.unwrap_or(written);
-        match (grouped.is_empty(), text.strip_prefix('-')) {
-            (true, _) => grouped = text,
-            (false, Some(rest)) => grouped.push_str(&format!(" - {rest}")),
-            (false, None) => grouped.push_str(&format!(" + {text}")),
-        }
-    }
-    if grouped.is_empty() {
-        grouped = "0".into();
-    }
-    let mut grouped_tex = format!("{grouped} = 0");
+    // Kane's rows write F_r and F*_r instead of the groups, Lagrange's the derivatives of
+    // L (see below): not formed.
+    let kane_row = matches!(row.sum, Sum::Generalized { .. })
+        && super::kane::row_number(derivation, row).is_some();
+    let lagrange_text = super::lagrange::row_text(derivation, row, &shown);
+    let mut grouped_tex = match kane_row || lagrange_text.is_some() {
+        true => String::new(),
+        false => grouped_row(derivation, row, &shown),
+    };
     // On the motion: a coordinate a constraint holds (h = R) written as its value.
     let held = super::on_constraint::held_coordinates(&derivation.model);
     let mut simplified = shown(&super::on_constraint::on_the_constraints(
@@ -111,10 +83,6 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             simplified_note = "With the coefficients of the matrix form below:".into();
             by_name = true;
         }
-    }
-    if grouped_tex.len() > LONG_EQUATION {
-        // Too long as formed: the same sum in vector form, in the quantities of steps 2 and 4.
-        grouped_tex = super::long::vector_form(derivation, row);
     }
     let mut label_tex = index
         .map(|i| super::row_names::row_heading_tex(derivation, i))
@@ -236,7 +204,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         };
     }
     let mut lagrange_tex = Vec::new();
-    if let Some(text) = super::lagrange::row_text(derivation, row, &shown) {
+    if let Some(text) = lagrange_text {
         // Lagrange's row: the derivatives of L and the generalized force, then the row.
         (label_tex, label, lagrange_tex) = (text.label_tex, text.label, text.lines);
         (grouped_tex, active_tex, inertia_tex) = (String::new(), String::new(), String::new());
@@ -282,6 +250,53 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         solved_tex: Math::from(solved_tex),
         lagrange_tex: Math::all(lagrange_tex),
     }
+}
+
+/// The row as formed: contact + distance + inertia forces + inertia torques, each group
+/// as it is shortest; too long, the same sum in vector form.
+fn grouped_row(derivation: &Derivation, row: &Equation, shown: &dyn Fn(&Expr) -> Expr) -> String {
+    let g = &row.groups;
+    let g = [&g.contact, &g.distance, &g.inertia_force, &g.inertia_torque].map(shown);
+    // Contact + distance + inertia forces + inertia torques, leaving out the empty groups;
+    // a long inertia group by the names of step 4; a force group with the identities
+    // (sin² + cos² = 1) applied when that is shorter, as the simplified row has them.
+    let mut grouped = String::new();
+    for (k, e) in g.iter().enumerate().filter(|(_, e)| !e.is_zero()) {
+        let inertia = k >= 2;
+        let mut written = group_tex(e);
+        if !inertia {
+            let simpler = group_tex(&simplify(e));
+            if simpler.len() < written.len() {
+                written = simpler;
+            }
+        } else {
+            // An inertia group keeps its terms as formed, unless an identity merges some
+            // (R m ẍ s²_θ + R m ẍ c²_θ is R m ẍ): then it is written with it applied.
+            let simpler = simplify(e);
+            if simpler.terms().len() < e.terms().len() {
+                written = group_tex(&simpler);
+            }
+        }
+        let named = (inertia && e.terms().len() > MOST_INERTIA_TERMS)
+            .then(|| named_inertia_group(derivation, row, k == 3))
+            .flatten()
+            .filter(|named| named.len() < written.len());
+        let text = named.unwrap_or(written);
+        match (grouped.is_empty(), text.strip_prefix('-')) {
+            (true, _) => grouped = text,
+            (false, Some(rest)) => grouped.push_str(&format!(" - {rest}")),
+            (false, None) => grouped.push_str(&format!(" + {text}")),
+        }
+    }
+    if grouped.is_empty() {
+        grouped = "0".into();
+    }
+    let grouped_tex = format!("{grouped} = 0");
+    if grouped_tex.len() > LONG_EQUATION {
+        // Too long as formed: the same sum in vector form, in the quantities of steps 2 and 4.
+        return super::long::vector_form(derivation, row);
+    }
+    grouped_tex
 }
 
 /// An auxiliary speed's row holds one reaction: solved for it, `T^{O} = …`, with the

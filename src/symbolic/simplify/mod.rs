@@ -21,6 +21,7 @@
 //! anyway.
 
 mod key;
+mod memo;
 mod pythagoras;
 pub(super) mod steps;
 mod terms;
@@ -29,6 +30,7 @@ mod trig;
 #[cfg(test)]
 mod tests;
 
+pub use memo::with_simplify_memo;
 pub use steps::Step;
 
 use crate::symbolic::build::{add, func, mul, pow};
@@ -58,8 +60,14 @@ impl Default for Options {
 }
 
 /// `e` simplified by the trigonometric identities, numerically equal to `e`.
+/// Inside [`with_simplify_memo`], an expression simplified before is not simplified again.
 pub fn simplify(e: &Expr) -> Expr {
-    simplify_with(e, &Options::default(), None)
+    if let Some(done) = memo::kept(e) {
+        return done;
+    }
+    let done = simplify_with(e, &Options::default(), None);
+    memo::keep(e, &done);
+    done
 }
 
 /// `e` simplified, with the identity used at each step, in the order they were used.
