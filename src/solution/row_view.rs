@@ -142,9 +142,20 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             };
             (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
         }
-        if let Some(products) =
+        let products = if independent.is_some() {
+            // Formed with the constrained partial velocities, the dependent accelerations
+            // replaced where they enter.
+            super::kane_tilde::inertia_dot_products(
+                derivation,
+                r,
+                &row.groups,
+                &inertia_tex,
+                &shown,
+            )
+        } else {
             super::kane_dots::inertia_dot_products(derivation, r, &inertia_tex, &shown)
-        {
+        };
+        if let Some(products) = products {
             // Each body's dot products multiplied out: what a student writes.
             inertia_tex = products;
         } else if inertia_tex.contains("\\text{") || independent.is_some() {
