@@ -272,11 +272,11 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         simplified_note = "Already in its simplest form:".into();
     }
     // The inertia terms written out, cross products and dot products, as a student does.
-    let written_tex = super::written_out::written_out(derivation, row)
+    let written_tex = super::written_out::written_out_shown(derivation, row, &shown)
         .filter(|_| !grouped_tex.is_empty())
         .map(|w| w.tex)
-        // Its components as the model writes them: a root of a square the row's own
-        // printing takes by the initial sign would show there; such a row goes without.
+        // Its components as the row prints them, a root of a square taken by the initial
+        // sign; one left (no sign to take it by) where the row has none goes without.
         .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
     EquationView {

@@ -2,9 +2,9 @@
 
 use super::{inertia_dot_products, parts, Elimination, Part};
 use crate::equations::{Derivation, Method};
+use crate::numeric::System;
 use crate::plan::{Groups, Sum};
 use crate::symbolic::{eval, roots_of_squares, Expr, Values};
-use crate::numeric::System;
 use nalgebra::{DMatrix, DVector};
 
 fn derivation_of(problem: &crate::problem::Problem) -> Option<Derivation<'_>> {
