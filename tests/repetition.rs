@@ -132,10 +132,13 @@ fn the_four_bars_inertia_force_is_shown_body_by_body() {
     assert!(text.contains(
         "\\tilde{F}^{*}_{1} &= \\tilde{F}^{*}_{1,A} + \\tilde{F}^{*}_{1,B} + \\tilde{F}^{*}_{1,C}"
     ));
-    assert!(text.contains("\\tilde{F}^{*}_{1,A} &= -\\frac{a^{2} m}{3} \\ddot{q}_{1}"));
+    // Each body's dot products multiplied out, then its term.
     assert!(text.contains(
-        "\\tilde{F}^{*}_{1,C} &= -\\frac{a c m}{3 \\Delta} (c \\sin(q_{1} - q_{3}) + d s_{1}) \\ddot{q}_{3}"
+        "\\tilde{F}^{*}_{1,A} &= \\tilde{\\mathbf{v}}^{A^*}_{1} \\cdot \\mathbf{R}^{*}_{A}"
     ));
+    assert!(text.contains("&= -\\frac{a^{2} m}{3} \\ddot{q}_{1} \\\\ \\tilde{F}^{*}_{1,B}"));
+    assert!(text
+        .contains("&= -\\frac{a c m}{3 \\Delta} (c \\sin(q_{1} - q_{3}) + d s_{1}) \\ddot{q}_{3}"));
     assert!(!text.contains("\\tilde{F}^{*}_{1}\\ \\text{collected"));
 }
 

@@ -161,3 +161,16 @@ fn the_double_pendulums_moment_row_about_o_is_written_body_by_body() {
     assert!(written_at < simplified_at);
     assert!(step5.contains("r_{x}\\, (m a)_{y} - r_{y}\\, (m a)_{x}"));
 }
+
+/// The rolling coin's moment row has components with `√(c²)` as the model writes them: the
+/// row prints them by the initial sign, and its written-out lines are printed alike.
+#[test]
+fn a_row_with_roots_of_squares_is_written_out_by_the_initial_sign() {
+    let text = explain("rolling-coin", &["--format", "markdown"]);
+    let step5 = &text[text.find("## Step 5").expect("step 5")..];
+    let written = step5.find("Written out:").expect("a row written out");
+    let block = &step5[written..];
+    let block = &block[..block.find("\n$$\n\n").expect("its display")];
+    assert!(block.contains("\\times"), "{block}");
+    assert!(!block.contains("\\sqrt"), "{block}");
+}

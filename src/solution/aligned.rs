@@ -34,3 +34,31 @@ pub fn display(lines: &[String]) -> String {
         lines.join(" \\\\ ")
     )
 }
+
+/// The most characters of LaTeX the whole sum may take as the last line of
+/// [`sum_of_parts`]: a longer one is read in the row's sum below it.
+const LONGEST_WHOLE: usize = 900;
+
+/// A generalized force as the sum of its bodies' parts, as one display: `name = parts…`,
+/// then `lines` (each part worked), then the whole as the row writes it (`whole`,
+/// `F^*_r = …`) last, where more than one part adds up to it and it is a formula short
+/// enough to read. `None` when the display would pass what one display holds (see
+/// [`crate::render::DISPLAY_LIMIT`]).
+pub fn sum_of_parts(
+    name: &str,
+    parts: &[String],
+    lines: Vec<String>,
+    whole: &str,
+) -> Option<String> {
+    let mut out = vec![line(name, "=", &parts.join(" + "))];
+    out.extend(lines);
+    let formula = whole
+        .split_once(" = ")
+        .map(|(_, f)| f)
+        .filter(|f| !whole.contains("\\text{") && f.len() <= LONGEST_WHOLE);
+    if let (Some(formula), true) = (formula, parts.len() > 1) {
+        out.push(line(name, "=", formula));
+    }
+    let block = display(&out);
+    (block.len() <= crate::render::DISPLAY_LIMIT).then_some(block)
+}

@@ -93,16 +93,5 @@ pub fn inertia_by_body(
     if names.len() < 2 {
         return None;
     }
-    let whole_name = format!("{tilde}^{{*}}_{{{r}}}");
-    let mut out = vec![super::aligned::line(&whole_name, "=", &names.join(" + "))];
-    out.extend(lines);
-    // The whole, when the row wrote it as a formula: what the contributions sum to.
-    let formula = whole.split_once(" = ").map(|(_, f)| f);
-    if let Some(formula) = formula.filter(|f| !whole.contains("\\text{") && f.len() <= LONGEST_LINE)
-    {
-        out.push(super::aligned::line(&whole_name, "=", formula));
-    }
-    let block = super::aligned::display(&out);
-    // One display holds at most what LaTeX sets unbroken (see `DISPLAY_LIMIT`).
-    (block.len() <= crate::render::DISPLAY_LIMIT).then_some(block)
+    super::aligned::sum_of_parts(&format!("{tilde}^{{*}}_{{{r}}}"), &names, lines, whole)
 }

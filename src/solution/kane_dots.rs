@@ -26,20 +26,20 @@ const LONGEST_PRODUCTS: usize = 300;
 
 /// The most symbols one printed line may take: the page's line, as
 /// [`crate::render::symbols`] counts them.
-const WIDEST_LINE: f64 = 66.0;
+pub(super) const WIDEST_LINE: f64 = 66.0;
 
 /// One dot product `a · b` written in one frame: the pairs of components that multiply,
 /// in axis order, and the frame's unit vectors they are along.
-struct DotProduct {
+pub(super) struct DotProduct {
     /// `(a_i, b_i)` for each axis where neither is zero.
-    pairs: Vec<(Expr, Expr)>,
+    pub(super) pairs: Vec<(Expr, Expr)>,
     /// The unit vectors of those axes, `\hat{\mathbf{b}}_{x}`.
     units: Vec<String>,
 }
 
 impl DotProduct {
     /// `a · b` in whichever of `frames` writes both the shortest.
-    fn shortest(a: &Vector, b: &Vector, frames: &[BodyId], model: &Model) -> DotProduct {
+    pub(super) fn shortest(a: &Vector, b: &Vector, frames: &[BodyId], model: &Model) -> DotProduct {
         let written = |frame: BodyId| {
             let a = a.components_in(frame, &model.frames).map(|c| simplify(&c));
             let b = b.components_in(frame, &model.frames).map(|c| simplify(&c));
@@ -63,7 +63,7 @@ impl DotProduct {
     }
 
     /// `Σ a_i b_i` as an expression.
-    fn value(&self) -> Expr {
+    pub(super) fn value(&self) -> Expr {
         add(self.pairs.iter().map(|(a, b)| a * b))
     }
 }
@@ -81,7 +81,7 @@ fn factor_tex(e: &Expr) -> String {
 /// The products of dot products, `(a_x)(b_x) + (a_y)(b_y)`, with the unit vectors they
 /// are along said after them: on one line, or one product a line where that is too long.
 /// Empty where a product alone would stick out of the margin.
-fn products_lines(dots: &[&DotProduct]) -> Vec<String> {
+pub(super) fn products_lines(dots: &[&DotProduct]) -> Vec<String> {
     let terms: Vec<String> = dots
         .iter()
         .flat_map(|d| d.pairs.iter())
@@ -120,7 +120,7 @@ fn products_lines(dots: &[&DotProduct]) -> Vec<String> {
 }
 
 /// The frames a body's products may be written in: its own, its parent's and `N`.
-fn candidate_frames(model: &Model, body: BodyId) -> Vec<BodyId> {
+pub(super) fn candidate_frames(model: &Model, body: BodyId) -> Vec<BodyId> {
     let mut frames = vec![model.bodies[body.0].frame, body, BodyId::GROUND];
     if let Some(parent) = model.frames.info(body).parent {
         frames.push(parent);
@@ -212,19 +212,7 @@ pub fn inertia_dot_products(
     if names.is_empty() {
         return None;
     }
-    let mut out = vec![format!("F^{{*}}_{{{r}}} &= {}", names.join(" + "))];
-    out.extend(lines);
-    let formula = whole
-        .split_once(" = ")
-        .map(|(_, f)| f)
-        .filter(|_| !whole.contains("\\text{"));
-    if let (Some(formula), true) = (formula, names.len() > 1) {
-        out.push(format!("F^{{*}}_{{{r}}} &= {formula}"));
-    }
-    Some(format!(
-        "\\begin{{aligned}} {} \\end{{aligned}}",
-        out.join(" \\\\ ")
-    ))
+    super::aligned::sum_of_parts(&format!("F^{{*}}_{{{r}}}"), &names, lines, whole)
 }
 
 #[cfg(test)]

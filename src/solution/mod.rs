@@ -32,6 +32,7 @@ mod kane;
 mod kane_bodies;
 mod kane_dots;
 mod kane_theory;
+mod kane_tilde;
 mod kinematics;
 mod lagrange;
 mod light_rods;

@@ -110,9 +110,20 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             };
             (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
         }
-        if let Some(products) =
+        let products = if independent.is_some() {
+            // Formed with the constrained partial velocities, the dependent accelerations
+            // replaced where they enter.
+            super::kane_tilde::inertia_dot_products(
+                derivation,
+                r,
+                &row.groups,
+                &inertia_tex,
+                &shown,
+            )
+        } else {
             super::kane_dots::inertia_dot_products(derivation, r, &inertia_tex, &shown)
-        {
+        };
+        if let Some(products) = products {
             // Each body's dot products multiplied out: what a student writes.
             inertia_tex = products;
         } else if inertia_tex.contains("\\text{") || independent.is_some() {
@@ -229,11 +240,11 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         simplified_note = "Already in its simplest form:".into();
     }
     // The inertia terms written out, cross products and dot products, as a student does.
-    let written_tex = super::written_out::written_out(derivation, row)
+    let written_tex = super::written_out::written_out_shown(derivation, row, &shown)
         .filter(|_| !grouped_tex.is_empty())
         .map(|w| w.tex)
-        // Its components as the model writes them: a root of a square the row's own
-        // printing takes by the initial sign would show there; such a row goes without.
+        // Its components as the row prints them, a root of a square taken by the initial
+        // sign; one left (no sign to take it by) where the row has none goes without.
         .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
     EquationView {

@@ -46,6 +46,16 @@ pub struct WrittenOut {
 /// another method or row, a free body of more than three bodies, a body whose acceleration
 /// step 4 writes by named parts, or a line too long for the page.
 pub fn written_out(derivation: &Derivation, row: &Equation) -> Option<WrittenOut> {
+    written_out_shown(derivation, row, &|e: &Expr| e.clone())
+}
+
+/// [`written_out`] with each component as `shown` prints it (the row's printing: a root of
+/// a square taken by the initial sign, `√(c²)` as `c`), so that the lines read as the row.
+pub fn written_out_shown(
+    derivation: &Derivation,
+    row: &Equation,
+    shown: &dyn Fn(&Expr) -> Expr,
+) -> Option<WrittenOut> {
     if derivation.method != Method::MotionLaw || row.free_body.len() > MOST_BODIES {
         return None;
     }
@@ -59,10 +69,14 @@ pub fn written_out(derivation: &Derivation, row: &Equation) -> Option<WrittenOut
     let mut dots = Dots::default();
     for &body in &row.free_body {
         let written = match &row.sum {
-            Sum::Force => force_lines(derivation, body, direction, &mut dots),
-            Sum::Moment { point, position } => {
-                moment_lines(derivation, body, (point, position), direction, &mut dots)
-            }
+            Sum::Force => force_lines(derivation, body, direction, &mut dots, shown),
+            Sum::Moment { point, position } => moment_lines(
+                derivation,
+                body,
+                (point, position),
+                direction,
+                (&mut dots, shown),
+            ),
             _ => return None,
         };
         let Some((body_lines, body_terms)) = written else {
@@ -162,6 +176,7 @@ fn force_lines(
     body: BodyId,
     direction: &Direction,
     dots: &mut Dots,
+    shown: &dyn Fn(&Expr) -> Expr,
 ) -> Option<(Vec<String>, Vec<Expr>)> {
     let model = &derivation.model;
     let mass = &model.bodies[body.0].mass;
@@ -177,7 +192,7 @@ fn force_lines(
                 continue;
             }
             let dot = dots.of(derivation, *frame, axis, direction);
-            let term = simplify(&(c * &dot));
+            let term = shown(&simplify(&(c * &dot)));
             if term.is_zero() {
                 continue;
             }
@@ -262,7 +277,7 @@ fn moment_lines(
     body: BodyId,
     (point, position): (&String, &Vector),
     direction: &Direction,
-    dots: &mut Dots,
+    (dots, shown): (&mut Dots, &dyn Fn(&Expr) -> Expr),
 ) -> Option<(Vec<String>, Vec<Expr>)> {
     let model = &derivation.model;
     let frames = &model.frames;
@@ -276,8 +291,10 @@ fn moment_lines(
         (0..3).all(|i| simplify(&r.components_in(BodyId::GROUND, frames)[i]).is_zero());
     if !state.mass.is_zero() && !about_centre {
         let frame = shortest_frame(derivation, &[&r, &m_a], direction);
-        let r_f = r.components_in(frame, frames).map(|c| simplify(&c));
-        let a_f = m_a.components_in(frame, frames).map(|c| simplify(&c));
+        let r_f = r.components_in(frame, frames).map(|c| shown(&simplify(&c)));
+        let a_f = m_a
+            .components_in(frame, frames)
+            .map(|c| shown(&simplify(&c)));
         let point = super::tex::point_tex(point);
         let frame_name = frames.name(frame);
         let units = [0u8, 1, 2]
@@ -305,11 +322,11 @@ fn moment_lines(
         }
         let cross = cross3(&r_f, &a_f);
         let (pattern, value) = match axis_of(derivation, frame, direction) {
-            Some(axis) => (determinant_row(axis), simplify(&cross[axis])),
+            Some(axis) => (determinant_row(axis), shown(&simplify(&cross[axis]))),
             None => {
                 let value =
                     add((0..3).map(|i| &cross[i] * &dots.of(derivation, frame, i, direction)));
-                ("".to_string(), simplify(&value))
+                ("".to_string(), shown(&simplify(&value)))
             }
         };
         let left = format!("({r_name} \\times {ma_name}) \\cdot {}", direction.latex);
@@ -317,7 +334,7 @@ fn moment_lines(
         lines.push(super::aligned::line(&left, "=", &right));
         terms.push(-value);
     }
-    if let Some((line, term)) = torque_line(derivation, body, direction, dots) {
+    if let Some((line, term)) = torque_line(derivation, body, direction, (dots, shown)) {
         lines.push(line);
         terms.push(term);
     }
@@ -340,7 +357,7 @@ fn torque_line(
     derivation: &Derivation,
     body: BodyId,
     direction: &Direction,
-    dots: &mut Dots,
+    (dots, shown): (&mut Dots, &dyn Fn(&Expr) -> Expr),
 ) -> Option<(String, Expr)> {
     let model = &derivation.model;
     let torque = &derivation.inertia().torque[body.0];
@@ -349,7 +366,7 @@ fn torque_line(
     let mut along_one = false;
     for (frame, components) in torque.parts() {
         for (axis, c) in components.iter().enumerate() {
-            let c = simplify(c);
+            let c = shown(&simplify(c));
             if c.is_zero() {
                 continue;
             }
@@ -365,7 +382,7 @@ fn torque_line(
     if value.is_empty() {
         return None;
     }
-    let value = simplify(&add(value));
+    let value = shown(&simplify(&add(value)));
     let k = latex_name(model.problem.body_name(body));
     let named = super::long::inertia_torque_terms(&k, model.is_planar())
         .iter()
@@ -383,13 +400,13 @@ fn torque_line(
         })
         .collect();
     let whole = joined(&components);
-    let shown = if parts.len() == 1 && along_one {
+    let dotted = if parts.len() == 1 && along_one {
         String::new()
     } else {
         format!("\\left( {whole} \\right) \\cdot {} = ", direction.latex)
     };
     let left = format!("\\left( {named} \\right) \\cdot {}", direction.latex);
-    let right = format!("{shown}{}", latex_collected(&value));
+    let right = format!("{dotted}{}", latex_collected(&value));
     let line = super::aligned::line(&left, "=", &right);
     Some((line, value))
 }
