@@ -89,9 +89,13 @@ pub fn choose(
             .copied()
             .filter(|i| !marked.contains(i))
             .collect();
+        // One constraint is "the position constraint", several "the 3 position constraints".
+        let from = match holonomic.len() {
+            1 => "the position constraint".to_string(),
+            n => format!("the {n} position constraints"),
+        };
         let mut note = format!(
-            "Dependent coordinates (solved from the {} position constraints): {}",
-            holonomic.len(),
+            "Dependent coordinates (solved from {from}): {}",
             names(&dependent)
         );
         if !chosen.is_empty() {

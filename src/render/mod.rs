@@ -31,6 +31,7 @@ mod prepare;
 mod safe_math;
 mod sample;
 mod sections;
+mod shown_names;
 mod tex_wrap;
 pub mod text;
 mod units;
