@@ -8,7 +8,7 @@
 //! - otherwise the word's first letter, else the first letter free of a list;
 //!
 //! never a letter the problem already uses (a constant, a coordinate, another body or
-//! point) nor one a handout gives a meaning of its own (N, the energies T, V, E, the
+//! point), nor a capital matrix's (A, C), nor one a handout gives a meaning of its own (N, the energies T, V, E, the
 //! Lagrangian L, forces F, moments M, inertia I, generalized forces Q). Prose keeps the
 //! problem's words; only the math changes, at rendering (see `render::prepare`).
 
@@ -47,6 +47,9 @@ pub fn shown_names(model: &Model) -> Vec<(String, String)> {
         .filter(|n| word(n).is_none())
         .map(latex_name)
         .collect();
+    // The handout's capital matrices: the system's A of A x = b, the C of q̇_D = C q̇_I.
+    let matrices = crate::problem::MatrixNames::of(problem);
+    taken.extend([matrices.a, matrices.c]);
     let mut out = Vec::new();
     let mut claim = |tex: String, candidates: Vec<String>, taken: &mut Vec<String>| {
         if out.iter().any(|(t, _)| *t == tex) {
