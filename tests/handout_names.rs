@@ -9,7 +9,11 @@ use crate::support::run;
 fn handout(name: &str, method: &str) -> String {
     let path = format!("{}/problems/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let out = run(&["explain", &path, "--method", method, "--format", "markdown"]);
-    assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
@@ -20,8 +24,14 @@ fn the_heavy_top_is_written_with_the_statements_point_o_and_a_letter() {
     assert!(text.contains("F^{O}_{x}"), "no F^O_x");
     assert!(text.contains("\\hat{\\mathbf{x}}_{B}"), "no x̂_B");
     assert!(text.contains("B^*") || text.contains("B^{*}"), "no B*");
-    assert!(text.contains("| the top (B) |"), "step 1 does not say that B is the top");
-    assert!(text.contains("| O (spherical) |"), "the joint is not named O");
+    assert!(
+        text.contains("| the top (B) |"),
+        "step 1 does not say that B is the top"
+    );
+    assert!(
+        text.contains("| O (spherical) |"),
+        "the joint is not named O"
+    );
     for word in ["\\mathrm{tip}", "\\mathrm{top}"] {
         assert!(!text.contains(word), "{word} is still printed");
     }
@@ -31,7 +41,10 @@ fn the_heavy_top_is_written_with_the_statements_point_o_and_a_letter() {
 fn a_contact_named_by_a_word_is_a_point_with_a_note() {
     let text = handout("bowling-ball", "motion-law");
     assert!(text.contains("P is the point of contact at the lane."));
-    assert!(text.contains("| contact force at P |"), "the force table's label");
+    assert!(
+        text.contains("| contact force at P |"),
+        "the force table's label"
+    );
     assert!(text.contains("| weight of B |"));
 }
 
@@ -39,7 +52,10 @@ fn a_contact_named_by_a_word_is_a_point_with_a_note() {
 fn the_four_bars_cosines_are_not_read_as_its_rocker_length() {
     // The rocker's length is c and a body is C: the sines and cosines are written out.
     let text = handout("four-bar", "motion-law");
-    assert!(!text.contains("c_{1} = "), "c₁ abbreviates a cosine beside the length c");
+    assert!(
+        !text.contains("c_{1} = "),
+        "c₁ abbreviates a cosine beside the length c"
+    );
     assert!(text.contains("c \\cos(q_{1} + q_{2} - q_{3})"));
 }
 

@@ -89,13 +89,9 @@ pub fn choose(
             .copied()
             .filter(|i| !marked.contains(i))
             .collect();
-        // One constraint is "the position constraint", several "the 3 position constraints".
-        let from = match holonomic.len() {
-            1 => "the position constraint".to_string(),
-            n => format!("the {n} position constraints"),
-        };
         let mut note = format!(
-            "Dependent coordinates (solved from {from}): {}",
+            "Dependent coordinates (solved from {}): {}",
+            position_constraints(holonomic.len()),
             names(&dependent)
         );
         if !chosen.is_empty() {
@@ -227,4 +223,13 @@ pub fn pick(
         }
     }
     Ok(chosen)
+}
+
+/// `n` position constraints counted as a sentence counts them: "the position constraint",
+/// "the 3 position constraints".
+fn position_constraints(n: usize) -> String {
+    match n {
+        1 => "the position constraint".to_string(),
+        n => format!("the {n} position constraints"),
+    }
 }
