@@ -2,8 +2,10 @@
 //! and with its algebra finished: no name of the program's own (a generated constraint's
 //! `teeth.height`), no word of its algorithms (pivoting, Newton's iterations, a starting
 //! guess, a command line, a check's tolerance and verdict), no child or parent for the
-//! bodies a joint connects, no s² + c² of one angle left unsimplified in a sum, and a unit
-//! beside every initial value and rate of step 1.
+//! bodies a joint connects, no category in front of a force's label ("contact:"), no s² + c²
+//! of one angle left unsimplified in a sum, a unit and a short mark (never words) beside
+//! every initial value and rate of step 1, counts that agree with their nouns, and no word
+//! of a body's or point's name as a subscript or superscript.
 
 use crate::support::run;
 use std::path::PathBuf;
@@ -11,7 +13,7 @@ use std::path::PathBuf;
 const METHODS: [&str; 4] = ["motion-law", "kane", "newton-euler", "lagrange"];
 
 /// Words a course does not use in a handout.
-const NOT_COURSE_WORDS: [&str; 12] = [
+const NOT_COURSE_WORDS: [&str; 14] = [
     "mesh.distance",
     "teeth.height",
     ".height left out",
@@ -24,6 +26,9 @@ const NOT_COURSE_WORDS: [&str; 12] = [
     "dampers and friction only remove",
     "of the 2 slowest",
     "iterations;",
+    // A force is labelled by what it is (weight of B), not by a category of forces.
+    "contact: ",
+    "distance: ",
 ];
 
 /// What a program's report says and a textbook does not: a check's tolerance and verdict,
@@ -203,6 +208,13 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
                     }
                 }
                 wrong.extend(unitless_rows(&text).map(|row| format!("{name} ({method}): {row}")));
+                wrong.extend(count_slips(&text).map(|slip| format!("{name} ({method}): `{slip}`")));
+                if let Some(clash) = cosine_clash(path, &text) {
+                    wrong.push(format!("{name} ({method}): {clash}"));
+                }
+                if let Some(word) = word_script(&text) {
+                    wrong.push(format!("{name} ({method}): a word as a script: {word}"));
+                }
                 if let Some(words) = underscored_words(&text) {
                     wrong.push(format!(
                         "{name} ({method}): a name with `_` in words: {words}"
@@ -246,6 +258,68 @@ fn underscored_words(markdown: &str) -> Option<String> {
     })
 }
 
+/// An abbreviation of a sine or cosine that reads as one of the problem's names: with a
+/// rocker length `c`, `c_{1} = \\cos(q_{1})` beside `c \\cos(…)`.
+fn cosine_clash(path: &std::path::Path, markdown: &str) -> Option<String> {
+    let problem: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    let named = |letter: &str| {
+        ["constants", "coordinates", "bodies"]
+            .iter()
+            .any(|key| problem[key].get(letter).is_some())
+    };
+    [("s", "\\sin"), ("c", "\\cos")]
+        .iter()
+        .filter(|(letter, _)| named(letter))
+        .find_map(|(letter, f)| {
+            let listed = format!("{letter}_{{");
+            markdown
+                .match_indices(&listed)
+                .find(|(at, _)| {
+                    let rest = &markdown[*at..];
+                    rest.find('}')
+                        .is_some_and(|end| rest[end..].starts_with(&format!("}} = {f}")))
+                })
+                .map(|_| format!("`{letter}` is a name of the problem and an abbreviation of {f}"))
+        })
+}
+
+/// Words a handout sets upright in its own math (`v_{\\mathrm{slip}}`, `\\mathrm{max}`).
+const OWN_SCRIPTS: [&str; 4] = ["slip", "max", "min", "loop"];
+
+/// A body's or point's name as a word in a script: `\\hat{\\mathbf{x}}_{\\mathrm{top}}`,
+/// `F^{\\mathrm{tip}}_{x}`, `\\mathrm{top}^*`; a textbook writes a letter there.
+fn word_script(markdown: &str) -> Option<String> {
+    markdown.match_indices("\\mathrm{").find_map(|(at, _)| {
+        let rest = &markdown[at + 8..];
+        let word = &rest[..rest.find('}')?];
+        let after = &rest[word.len() + 1..];
+        let before = &markdown[..at];
+        let word_like = word.len() > 1 && word.chars().all(|c| c.is_ascii_lowercase());
+        let scripted = ((before.ends_with("_{") || before.ends_with("^{"))
+            && after.starts_with('}'))
+            || after.starts_with("^*")
+            || after.starts_with("^{*}");
+        (word_like && scripted && !OWN_SCRIPTS.contains(&word))
+            .then(|| format!("\\mathrm{{{word}}}"))
+    })
+}
+
+#[test]
+fn a_word_as_a_script_is_found() {
+    assert!(word_script("$\\hat{\\mathbf{x}}_{\\mathrm{top}}$").is_some());
+    assert!(word_script("$F^{\\mathrm{tip}}_{x}$").is_some());
+    assert!(word_script("$\\mathrm{top}^*$").is_some());
+    for fine in [
+        "$v_{\\mathrm{slip}}$",
+        "$\\hat{\\mathbf{x}}_{B}, B^*$",
+        "$\\mathrm{link}_{7}^*$",
+        "$12\\ \\mathrm{kg}$",
+    ] {
+        assert_eq!(word_script(fine), None, "{fine}");
+    }
+}
+
 /// Step 1's coordinate rows whose initial value or rate has no unit: every coordinate is
 /// an angle or a distance, so each carries one (`0.7 rad`, `1 rad/s`).
 fn unitless_rows(markdown: &str) -> impl Iterator<Item = String> + '_ {
@@ -262,7 +336,7 @@ fn unitless_rows(markdown: &str) -> impl Iterator<Item = String> + '_ {
         .map(|row| format!("a value without its unit in step 1: {row}"))
 }
 
-/// Whether a value cell names its unit after the number: `0.7 rad`, `-2 rad/s (from ...)`.
+/// Whether a value cell names its unit after the number: `0.7 rad`, `-2 rad/s†`.
 fn has_unit(cell: &str) -> bool {
     let mut words = cell.split_whitespace();
     words.next().is_some_and(|n| n.parse::<f64>().is_ok())
@@ -271,10 +345,71 @@ fn has_unit(cell: &str) -> bool {
             .is_some_and(|u| u.starts_with(|c: char| c.is_alphabetic()))
 }
 
+/// Nouns a handout counts, singular and plural.
+const COUNTED: [(&str, &str); 16] = [
+    ("constraint", "constraints"),
+    ("coordinate", "coordinates"),
+    ("row", "rows"),
+    ("equation", "equations"),
+    ("speed", "speeds"),
+    ("body", "bodies"),
+    ("unknown", "unknowns"),
+    ("rate", "rates"),
+    ("reaction", "reactions"),
+    ("component", "components"),
+    ("mode", "modes"),
+    ("force", "forces"),
+    ("term", "terms"),
+    ("contact", "contacts"),
+    ("joint", "joints"),
+    ("question", "questions"),
+];
+
+/// Number and noun that disagree in a sentence: "the 1 position constraints", "the 2
+/// equation"; the noun may follow one adjective.
+fn count_slips(text: &str) -> impl Iterator<Item = String> + '_ {
+    let words: Vec<&str> = text.split_whitespace().collect();
+    let mut out = Vec::new();
+    for (i, w) in words.iter().enumerate() {
+        let Ok(n) = w.parse::<u32>() else { continue };
+        // A number inside math or a list of numbers is not a count.
+        if i == 0 || !matches!(words[i - 1], "the" | "The" | "of" | "from" | "all" | "are") {
+            continue;
+        }
+        for noun in words.iter().skip(i + 1).take(2) {
+            let noun = noun.trim_end_matches([',', '.', ':', ';', ')']);
+            let slip = COUNTED.iter().any(|(one, many)| {
+                (n == 1 && noun == *many) || (n > 1 && noun == *one && words[i - 1] == "the")
+            });
+            if slip {
+                out.push(words[i - 1..=i + 2.min(words.len() - i - 1)].join(" "));
+            }
+        }
+    }
+    out.into_iter()
+}
+
+#[test]
+fn a_number_and_its_noun_that_disagree_are_found() {
+    assert_eq!(
+        count_slips("solved from the 1 position constraints: y").count(),
+        1
+    );
+    assert_eq!(count_slips("the 2 equation of motion").count(), 1);
+    for fine in [
+        "solved from the position constraint",
+        "the 2 position constraints",
+        "row 1 equations",
+        "at t = 1 s the speeds",
+    ] {
+        assert_eq!(count_slips(fine).count(), 0, "{fine}");
+    }
+}
+
 #[test]
 fn a_value_without_its_unit_is_found() {
-    assert!(has_unit("0.7 rad") && has_unit("-0.65053 rad (from the loop's closure)"));
-    assert!(!has_unit("8") && !has_unit("0.829552 (from the constraints)"));
+    assert!(has_unit("0.7 rad") && has_unit("-0.65053 rad†"));
+    assert!(!has_unit("8") && !has_unit("0.829552†"));
     let table = "| Coordinate | Unit | Initial value | Initial rate |\n|---|---|---|---|\n| $x$ | m | 0 m | 8 |\n| $y$ | m | 0 m | 1 m/s |\n";
     assert_eq!(unitless_rows(table).count(), 1);
     assert!(underscored_words("$\\text{no slip at rear\\_contact}$").is_some());

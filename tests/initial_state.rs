@@ -1,6 +1,7 @@
 //! Step 1 gives the assembled initial state: for every bundled constrained problem, the
 //! coordinate table's values and rates are `solve --format json`'s state to the digits
-//! printed, a dependent one marked as solved from the constraints (or the loop's closure).
+//! printed, a dependent one marked † (solved from the constraints or the loop's closure),
+//! with a note under the table that says what the mark means.
 
 use crate::support::{all_problems, run, run_json};
 use serde_json::Value;
@@ -77,7 +78,8 @@ fn step_one_gives_the_assembled_state_of_every_constrained_problem() {
         ]);
         let out = run(&["explain".as_ref(), path.as_os_str()]);
         assert!(out.status.success(), "{}", path.display());
-        let rows = table(&String::from_utf8_lossy(&out.stdout));
+        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        let rows = table(&text);
         let names = names(&path);
         assert_eq!(rows.len(), names.len(), "{}", path.display());
         for (name, (value, rate)) in names.iter().zip(&rows) {
@@ -91,13 +93,15 @@ fn step_one_gives_the_assembled_state_of_every_constrained_problem() {
                 );
                 let dependent = problem["coordinates"][name]["dependent"] == true;
                 if dependent {
+                    assert!(cell.ends_with('†'), "{}: {cell}", path.display());
                     assert!(
-                        cell.contains("from the constraints")
-                            || cell.contains("from the loop's closure"),
-                        "{}: {cell}",
+                        text.contains("In the table of coordinates, †: solved from"),
+                        "{}: no note says what † means",
                         path.display()
                     );
                 }
+                // A mark, never words, after the unit: the narrow column does not wrap.
+                assert!(!cell.contains('('), "{}: {cell}", path.display());
             }
         }
         checked += 1;

@@ -17,6 +17,7 @@ mod draw;
 mod friction;
 mod gears;
 mod grade;
+mod handout_names;
 mod handout_pages;
 mod handouts_in_browser;
 mod impact;

@@ -216,7 +216,8 @@ fn the_planner_takes_moments_about_the_ladder_foot_and_the_four_bar_pins() {
     let rows = plan_rows(&ladder);
     assert!(
         rows.iter()
-            .any(|(_, e)| e.contains("\\mathbf{M}_{\\mathrm{floor}}")),
+            // The foot's contact with the floor, printed by its letter P.
+            .any(|(_, e)| e.contains("\\mathbf{M}_{P}")),
         "the ladder's moments about its foot: {rows:?}"
     );
     let four_bar = explain("statics-four-bar-held", &["--statics"]);

@@ -90,8 +90,8 @@ pub fn choose(
             .filter(|i| !marked.contains(i))
             .collect();
         let mut note = format!(
-            "Dependent coordinates (solved from the {} position constraints): {}",
-            holonomic.len(),
+            "Dependent coordinates (solved from {}): {}",
+            position_constraints(holonomic.len()),
             names(&dependent)
         );
         if !chosen.is_empty() {
@@ -223,4 +223,13 @@ pub fn pick(
         }
     }
     Ok(chosen)
+}
+
+/// `n` position constraints counted as a sentence counts them: "the position constraint",
+/// "the 3 position constraints".
+fn position_constraints(n: usize) -> String {
+    match n {
+        1 => "the position constraint".to_string(),
+        n => format!("the {n} position constraints"),
+    }
 }

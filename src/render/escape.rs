@@ -155,6 +155,8 @@ fn latex_char(c: char, out: &mut String) {
         '≠' => "$\\neq$",
         '→' => "$\\rightarrow$",
         '•' => "$\\bullet$",
+        '†' => "$^{\\dagger}$",
+        '‡' => "$^{\\ddagger}$",
         _ => {
             if c.is_ascii_graphic() || c == ' ' || LATEX_SAFE.contains(c) {
                 out.push(c);

@@ -31,6 +31,7 @@ mod plots_drawn;
 mod prepare;
 mod sample;
 mod sections;
+mod shown_names;
 mod tex_wrap;
 pub mod text;
 mod units;

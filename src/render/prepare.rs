@@ -25,6 +25,7 @@ pub fn context(
     student: bool,
 ) -> Result<tera::Context, tera::Error> {
     let mut value = serde_json::to_value(solution).map_err(tera::Error::json)?;
+    super::shown_names::rename(&mut value, &solution.shown_names);
     walk(&mut value, format);
     if let Value::Object(map) = &mut value {
         map.insert("student".into(), Value::Bool(student));

@@ -22,6 +22,7 @@ const B: &str = "\\hat{\\mathbf{b}}";
 pub fn sample() -> Solution {
     Solution {
         title: s("Double pendulum of two uniform rods"),
+        shown_names: Vec::new(),
         statement: Some(Markup::from(s("Two uniform rods A and B, each of mass m and length L, are pinned together at P; \
             rod A hangs from a fixed pin at O. The system is released from rest with q1 = 0.5 rad and q2 = 0.\n\n\
             Find the angular accelerations of the rods and the reaction at O at the instant of release."))),

@@ -22,6 +22,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let problem = derivation.model.problem;
     let model = &derivation.model;
     solution.plan = plan(derivation);
+    let shown = super::shown_names::shown_names(model);
+    super::shown_names::name_in_step_one(solution, &shown);
+    solution.shown_names = shown;
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
     // s_1, c_12, listed once where they are first used.
     let style = coordinates_style(problem);
@@ -90,7 +93,12 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .collect();
     (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
-    super::initial_state::assembled(&mut solution.coordinates, problem, q0, rates0);
+    let marks = super::initial_state::assembled(&mut solution.coordinates, problem, q0, rates0);
+    if let Some(note) = marks {
+        solution.constraint_notes.insert(0, MarkupLine::from(note));
+    }
+    let points = super::shown_names::point_notes(model, &solution.shown_names);
+    (solution.constraint_notes).extend(MarkupLine::all(points));
     (solution.constraint_notes).extend(MarkupLine::all(super::initial_state::branches(
         model, q0, rates0,
     )));
@@ -401,7 +409,9 @@ const MOST_ABBREVIATIONS_LISTED: usize = 12;
 /// The abbreviations to list and whether they are examples of the rule: the first, the first
 /// of a sum and the last (the longest sum), in the list's order.
 fn abbreviation_examples(all: Vec<Named>) -> (Vec<Named>, bool) {
-    if all.len() <= MOST_ABBREVIATIONS_LISTED {
+    // The rule's sentence names the letters s and c: other letters are listed one by one.
+    let lower = |n: &Named| n.definition_tex.starts_with(['s', 'c']);
+    if all.len() <= MOST_ABBREVIATIONS_LISTED || !all.iter().all(lower) {
         return (all, false);
     }
     let of_sum = |n: &Named| n.definition_tex.contains(" + ");

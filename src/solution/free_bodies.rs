@@ -43,6 +43,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
             sets.push(row.free_body.clone());
         }
     }
+    let shown = super::shown_names::shown_names(model);
     sets.iter()
         .map(|set| {
             let mut view = FreeBody {
@@ -71,7 +72,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                     }
                 };
                 let force = Force {
-                    label: action.label.clone(),
+                    label: super::force_labels::table_label(model, action, &shown),
                     vector_tex: Math::from(vector_tex),
                     point_tex: Math::from(point_tex),
                 };
@@ -84,7 +85,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                 group_rows(&mut view, derivation, set);
             } else {
                 for &body in set {
-                    inertia_rows(&mut view, model, body);
+                    inertia_rows(&mut view, model, body, &shown);
                 }
             }
             view
@@ -92,7 +93,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
         .collect()
 }
 
-fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
+fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId, shown: &[(String, String)]) {
     if model.bodies[body.0].mass.is_zero() {
         // A massless body's kinetic diagram is empty.
         return;
@@ -100,6 +101,7 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId) {
     let name = model.problem.body_name(body);
     // In math a name is set as a symbol (`rod_a` would be a double subscript).
     let symbol = latex_name(name);
+    let name = super::force_labels::shown_name(name, shown);
     let centre = super::tex::centre_tex(model, body);
     let mass = latex(&model.bodies[body.0].mass);
     view.inertia.push(Force {
@@ -136,7 +138,7 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
     if let Some(g) = &model.problem.gravity {
         let g = vector_of(g);
         view.distance.push(Force {
-            label: "gravity on each body k".into(),
+            label: "weight of each body k".into(),
             vector_tex: Math::from(times_mass(&vector_tex(model, &g))),
             point_tex: Math::from(at_center.clone()),
         });

@@ -1,6 +1,7 @@
 //! Step 1's coordinate table at the assembled initial state: a dependent coordinate's
 //! value and a dependent rate as solved from the constraints, a prescribed coordinate's
-//! from its motion, each marked so and with its unit.
+//! from its motion, each with its unit and a short mark (`0 m/s†`) that a note under the
+//! table explains, so that the narrow value columns do not wrap around words.
 
 use super::pictures::numbers::Numbers;
 use crate::mechanics::Model;
@@ -13,49 +14,86 @@ use crate::symbolic::fixed;
 /// A value smaller than this is round-off of zero in a teaching problem's SI units.
 const ROUND_OFF: f64 = 1e-12;
 
+/// The mark of a value solved from the constraints (or the loop's closure).
+pub const SOLVED_MARK: char = '†';
+/// The mark of a value that follows from a prescribed motion.
+pub const MOTION_MARK: char = '‡';
+
+/// Where a value of step 1's table comes from when not from the problem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Source {
+    /// Solved from the constraints at the start.
+    Solved,
+    /// From the coordinate's prescribed motion.
+    Motion,
+}
+
 /// Rewrites the initial values and rates of `rows` (one per coordinate of `problem`) with
-/// the assembled state `q0`, `rates0`, each with its unit.
-pub fn assembled(rows: &mut [CoordinateView], problem: &Problem, q0: &[f64], rates0: &[f64]) {
-    let source = source_of(problem);
+/// the assembled state `q0`, `rates0`, each with its unit and mark; returns the note that
+/// says what the marks mean, when any value is marked.
+pub fn assembled(
+    rows: &mut [CoordinateView],
+    problem: &Problem,
+    q0: &[f64],
+    rates0: &[f64],
+) -> Option<String> {
+    let mut marks = Vec::new();
     for (i, (row, c)) in rows.iter_mut().zip(&problem.coordinates).enumerate() {
         if let Some(&q) = q0.get(i) {
             let unit = coordinate_unit(problem, i, 0);
-            row.initial = value_cell(q, c.initial, solved(c, c.dependent, source), &unit);
+            row.initial = value_cell(q, c.initial, solved(c, c.dependent), &unit, &mut marks);
         }
         if let Some(&rate) = rates0.get(i) {
             let unit = coordinate_unit(problem, i, 1);
-            let how = solved(c, c.dependent || c.dependent_rate, source);
-            row.initial_rate = value_cell(rate, c.rate, how, &unit);
+            let how = solved(c, c.dependent || c.dependent_rate);
+            row.initial_rate = value_cell(rate, c.rate, how, &unit, &mut marks);
         }
     }
+    marks_note(problem, &marks)
 }
 
-/// What a dependent value satisfies: the loop's closure when the constraints are closures
-/// only, else the constraints.
-fn source_of(problem: &Problem) -> &'static str {
-    if problem.constraints.is_empty() && !problem.closures.is_empty() {
-        "from the loop's closure"
+/// The note under the table: what each mark used means.
+fn marks_note(problem: &Problem, marks: &[Source]) -> Option<String> {
+    // What a dependent value satisfies: the loop's closure when the constraints are
+    // closures only, else the constraints.
+    let satisfied = if problem.constraints.is_empty() && !problem.closures.is_empty() {
+        "the loop's closure"
     } else {
-        "from the constraints"
+        "the constraints"
+    };
+    let mut parts = Vec::new();
+    if marks.contains(&Source::Solved) {
+        parts.push(format!(
+            "{SOLVED_MARK}: solved from {satisfied} at the start"
+        ));
     }
+    if marks.contains(&Source::Motion) {
+        parts.push(format!("{MOTION_MARK}: from the prescribed motion"));
+    }
+    (!parts.is_empty()).then(|| format!("In the table of coordinates, {}.", parts.join("; ")))
 }
 
 /// Where a value comes from when not from the problem: a prescribed coordinate's motion,
 /// or what it satisfies (a coordinate or rate marked dependent, or one the assembly moved).
-fn solved(c: &Coordinate, dependent: bool, source: &'static str) -> Option<&'static str> {
+fn solved(c: &Coordinate, dependent: bool) -> Option<Source> {
     if c.motion.is_some() {
-        Some("from its motion")
+        Some(Source::Motion)
     } else if dependent {
-        Some(source)
+        Some(Source::Solved)
     } else {
         None
     }
 }
 
-/// `-0.65053 rad (from the loop's closure)`, or the value and its unit alone when the
-/// problem's value stands. A value the assembly moved is from the constraints even when
-/// unmarked.
-fn value_cell(value: f64, given: f64, how: Option<&str>, unit: &str) -> String {
+/// `-0.65053 rad†`, or the value and its unit alone when the problem's value stands. A
+/// value the assembly moved is solved from the constraints even when unmarked.
+fn value_cell(
+    value: f64,
+    given: f64,
+    how: Option<Source>,
+    unit: &str,
+    marks: &mut Vec<Source>,
+) -> String {
     // Round-off of a zero (1e-16 m/s) is the zero it is.
     let shown = with_unit(
         &fixed(if value.abs() < ROUND_OFF { 0.0 } else { value }),
@@ -66,9 +104,14 @@ fn value_cell(value: f64, given: f64, how: Option<&str>, unit: &str) -> String {
         None if fixed(given) == fixed(value) || (value.abs() < ROUND_OFF && given == 0.0) => {
             return shown
         }
-        None => "from the constraints",
+        None => Source::Solved,
     };
-    format!("{shown} ({how})")
+    marks.push(how);
+    let mark = match how {
+        Source::Solved => SOLVED_MARK,
+        Source::Motion => MOTION_MARK,
+    };
+    format!("{shown}{mark}")
 }
 
 /// `0.7 rad`, `1 rad/s`: a value and its unit as step 1's tables print them.

@@ -6,8 +6,9 @@ use crate::mechanics::{Model, RowOrigin};
 use crate::symbolic::{add, eval, latex, linear_split, simplify, Expr, Values};
 use nalgebra::DMatrix;
 
-/// The longest relation written in symbols (characters of LaTeX).
-const LONGEST: usize = 80;
+/// The longest relation written in symbols (characters of LaTeX, which spends about
+/// half of them on markup: `\dot{\theta} = \frac{(R - r) \dot{x}}{r y}` reads short).
+const LONGEST: usize = 110;
 
 /// The most dependent rates solved in symbols, and the most operations in the
 /// constraints' coefficients: past them the relations are long (and the elimination
@@ -16,8 +17,8 @@ const MOST_DEPENDENT: usize = 3;
 const MOST_OPERATIONS: usize = 120;
 
 /// One `q̇_s = Σ C_sk q̇_k` per dependent rate `dependent[d]`, over the independent
-/// `rates`, in symbols; `None` unless the velocity constraints are as many as the
-/// dependent rates, every relation is short, and each equals `c` at `values`.
+/// `rates`, in symbols, from as many independent velocity constraints as there are
+/// dependent rates; `None` unless every relation is short and each equals `c` at `values`.
 pub fn in_symbols(
     model: &Model,
     dependent: &[usize],
@@ -31,10 +32,15 @@ pub fn in_symbols(
     let rows: Vec<Vec<Expr>> = (model.constraints.rows.iter())
         .filter(|r| !matches!(r.origin, RowOrigin::Prescribed(_)))
         .map(|r| linear_split(&r.velocity, &symbols).ok().map(|(c, _)| c))
-        .collect::<Option<_>>()?;
-    if rows.len() != dependent.len() || dependent.is_empty() || dependent.len() > MOST_DEPENDENT {
+        .collect::<Option<Vec<Vec<Expr>>>>()?
+        .into_iter()
+        // A row without rates constrains none of them.
+        .filter(|row| row.iter().any(|c| !simplify(c).is_zero()))
+        .collect();
+    if dependent.is_empty() || dependent.len() > MOST_DEPENDENT {
         return None;
     }
+    let rows = independent_rows(rows, dependent, values)?;
     let operations: usize = rows.iter().flatten().map(Expr::operation_count).sum();
     if operations > MOST_OPERATIONS {
         return None;
@@ -67,4 +73,28 @@ pub fn in_symbols(
         written.push(text);
     }
     Some(written)
+}
+
+/// As many of `rows` as there are dependent rates, whose coefficients of those rates are
+/// independent at `values`: a row that repeats the others there adds nothing. `None` when
+/// there are too few.
+fn independent_rows(
+    rows: Vec<Vec<Expr>>,
+    dependent: &[usize],
+    values: &Values,
+) -> Option<Vec<Vec<Expr>>> {
+    let mut kept: Vec<Vec<Expr>> = Vec::new();
+    for row in rows {
+        if kept.len() == dependent.len() {
+            break;
+        }
+        let candidate: Vec<&Vec<Expr>> = kept.iter().chain(std::iter::once(&row)).collect();
+        let numbers = DMatrix::from_fn(candidate.len(), dependent.len(), |r, k| {
+            eval(&candidate[r][dependent[k]], values)
+        });
+        if numbers.rank(1e-9) == candidate.len() {
+            kept.push(row);
+        }
+    }
+    (kept.len() == dependent.len()).then_some(kept)
 }

@@ -10,14 +10,22 @@ use crate::symbolic::{
     latex, latex_name, latex_unit_vector, list_by_runs, simplify, sum_times, Expr, Node, Symbol,
 };
 
-/// How the worked solution of `problem` prints numbers: the decimals it wrote as decimals.
+/// How the worked solution of `problem` prints numbers (the decimals it wrote as
+/// decimals), and the letters of its sines and cosines, none of which the problem uses as a
+/// name of its own (see `Style::avoiding`).
 pub fn style_of(problem: &Problem) -> crate::symbolic::Style {
+    let taken: Vec<String> = (problem.constants.iter().map(|c| c.name.as_str()))
+        .chain(problem.coordinates.iter().map(|c| c.name.as_str()))
+        .chain(problem.body_ids().map(|b| problem.body_name(b)))
+        .map(latex_name)
+        .collect();
     problem
         .decimals
         .iter()
         .fold(crate::symbolic::Style::default(), |style, (n, text)| {
             style.with_decimal(*n, text)
         })
+        .avoiding(&taken)
 }
 
 /// A vector as a sum of components times unit vectors, each component simplified.

@@ -23,14 +23,24 @@ pub struct Style {
     indices: Vec<(String, String)>,
     /// The numbers the problem wrote as decimals, each with its text (`2/5 → 0.4`).
     decimals: BTreeMap<(i64, i64), String>,
+    /// The letters of the sine and the cosine (`S`, `C` when the problem names `s` or
+    /// `c`); `None`: the letters are `s`, `c`.
+    letters: Option<(&'static str, &'static str)>,
+    /// No abbreviations at all: the problem names both `s` or `c` and `S` or `C`.
+    spelled_out: bool,
 }
+
+/// The letters of the sine and the cosine to try, in order: the first pair of which the
+/// problem names neither letter is used; when it names a letter of each, `sin` and `cos`
+/// are written out.
+const LETTERS: [(&str, &str); 2] = [("s", "c"), ("S", "C")];
 
 /// One abbreviation printed: `s_{12} = \sin\left(q_{1} + q_{2}\right)`.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub struct Abbreviation {
     /// How many coordinates the argument adds, their positions in the problem, then sine
     /// (0) or cosine (1): the order of the list (`s₁, c₁, s₂, c₂, s₁₂`).
-    order: (usize, Vec<usize>, u8),
+    order: (usize, Vec<(usize, bool)>, u8),
     /// The abbreviation, e.g. `s_{12}`.
     pub name: String,
     /// What it stands for, e.g. `\sin\left(q_{1} + q_{2}\right)`.
@@ -74,6 +84,18 @@ impl Style {
         self
     }
 
+    /// Abbreviations that cannot be read as one of `taken` (the problem's names in LaTeX):
+    /// a rocker length `c` beside `c_1 = \cos q_1` would read as a cosine, so the letters
+    /// become `S`, `C`, or, when those are taken too, the sine and cosine are written out.
+    pub fn avoiding(mut self, taken: &[String]) -> Style {
+        let free = |(s, c): &(&str, &str)| !taken.iter().any(|t| t == s || t == c);
+        match LETTERS.iter().find(|pair| free(pair)) {
+            Some(&pair) => self.letters = (pair != LETTERS[0]).then_some(pair),
+            None => self.spelled_out = true,
+        }
+        self
+    }
+
     /// Prints `number` as `text` (a decimal the problem wrote, such as `0.4`).
     pub fn with_decimal(mut self, number: Number, text: &str) -> Style {
         if let Number::Ratio(n, d) = number {
@@ -99,7 +121,8 @@ pub fn with_style<R>(style: Style, f: impl FnOnce() -> R) -> (R, Vec<Abbreviatio
 }
 
 /// The abbreviation of `f(arg)` under the current style, if it has one: `f` is `sin` or
-/// `cos` and `arg` a coordinate or a sum of coordinates (each once, with coefficient 1).
+/// `cos` and `arg` a coordinate or a sum of coordinates, each once with coefficient 1 or
+/// −1, the first +1 (`c_{12-3} = \cos(q_1 + q_2 - q_3)`).
 /// Recorded as used, with its value written by `latex_argument` (the printer's, passed in
 /// so that the style stays below the printer).
 pub(crate) fn abbreviation(
@@ -107,35 +130,60 @@ pub(crate) fn abbreviation(
     arg: &Expr,
     latex_argument: impl FnOnce(&Expr) -> String,
 ) -> Option<String> {
-    let letter = match f {
-        Func::Sin => "s",
-        Func::Cos => "c",
-        _ => return None,
-    };
+    if !matches!(f, Func::Sin | Func::Cos) {
+        return None;
+    }
     let (name, positions) = CURRENT.with(|c| {
         let current = c.borrow();
         let (style, _) = current.as_ref()?;
-        if style.indices.is_empty() {
+        if style.indices.is_empty() || style.spelled_out {
             return None;
         }
+        let (sine, cosine) = style.letters.unwrap_or(LETTERS[0]);
+        let letter = if f == Func::Sin { sine } else { cosine };
+        // Each coordinate's position, and whether it is subtracted.
         let mut positions = Vec::new();
         for term in arg.terms() {
-            let Node::Sym(Symbol::Coord(name, 0)) = term.node() else {
+            let (coefficient, rest) = term.split_coefficient();
+            let minus = if coefficient.is_one() {
+                false
+            } else if matches!(coefficient, Number::Ratio(-1, 1)) {
+                true
+            } else {
                 return None;
             };
-            positions.push(style.indices.iter().position(|(c, _)| **c == **name)?);
+            let Node::Sym(Symbol::Coord(name, 0)) = rest.node() else {
+                return None;
+            };
+            let at = style.indices.iter().position(|(c, _)| **c == **name)?;
+            positions.push((at, minus));
         }
         positions.sort_unstable();
-        let indices: Vec<&str> = positions
+        // sin(−q₁ + q₂) would need a sign outside: written out.
+        if positions.first().is_some_and(|&(_, minus)| minus) {
+            return None;
+        }
+        let indices: Vec<String> = positions
             .iter()
-            .map(|&i| style.indices[i].1.as_str())
+            .map(|&(i, minus)| {
+                let index = &style.indices[i].1;
+                if minus {
+                    format!("-{index}")
+                } else {
+                    index.clone()
+                }
+            })
             .collect();
+        let indices: Vec<&str> = indices.iter().map(String::as_str).collect();
         // Single digits run together (`s_{12}`); anything longer is separated (`s_{1,10}`);
         // a long run of consecutive indices by its ends (`s_{2…10}`), as
         // q̇₂ + ⋯ + q̇₁₀ is written.
         let joined = if let Some((first, last)) = consecutive_run(&indices) {
             format!("{first}\\ldots {last}")
-        } else if indices.iter().all(|i| i.chars().count() == 1) {
+        } else if indices
+            .iter()
+            .all(|i| i.trim_start_matches('-').chars().count() == 1)
+        {
             indices.concat()
         } else {
             indices.join(",")
@@ -258,6 +306,27 @@ mod tests {
         );
         // Outside the style nothing changes.
         assert_eq!(latex(&sin(q(1))), "\\sin(q_{1})");
+    }
+
+    #[test]
+    fn a_difference_is_abbreviated_and_a_named_c_changes_the_letters() {
+        let diff = &(&q(1) + &q(2)) - &q(3);
+        let style = Style::default().with_coordinates(&["q1", "q2", "q3"]);
+        let (text, used) = with_style(style.clone(), || latex(&cos(diff.clone())));
+        assert_eq!(text, "c_{12-3}");
+        assert_eq!(used[0].value, "\\cos\\left(q_{1} + q_{2} - q_{3}\\right)");
+        // sin(q₂ − q₁) = −sin(q₁ − q₂): the sign comes out in front of s₁₋₂.
+        let back = &q(2) - &q(1);
+        let (text, _) = with_style(style.clone(), || latex(&sin(back.clone())));
+        assert_eq!(text, "-s_{1-2}");
+        // A rocker length c: the letters are S and C.
+        let taken = ["c".to_string(), "m".to_string()];
+        let (text, _) = with_style(style.clone().avoiding(&taken), || latex(&cos(q(1))));
+        assert_eq!(text, "C_{1}");
+        // c and C both named: written out.
+        let taken = ["c".to_string(), "C".to_string()];
+        let (text, _) = with_style(style.avoiding(&taken), || latex(&cos(q(1))));
+        assert_eq!(text, "\\cos(q_{1})");
     }
 
     #[test]

@@ -43,6 +43,10 @@ pub use statics::{StaticFriction, StaticsView};
 pub struct Solution {
     /// The problem's title (user text, one line).
     pub title: String,
+    /// The letter printed in math for each body and point named by a word,
+    /// `(\mathrm{top}, B)`; applied to every string at rendering.
+    #[serde(skip)]
+    pub shown_names: Vec<(String, String)>,
     /// The problem as given to the student (user text in the small Markdown of
     /// `super::markup`: paragraphs, lists, emphasis, `$…$` math).
     pub statement: Option<Markup>,

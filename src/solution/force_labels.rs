@@ -1,0 +1,66 @@
+//! The labels of step 2's tables of forces, as a textbook labels a force: by what it is
+//! (the weight of B, the reaction force at O, the contact force at the lane, a spring's
+//! force), never by a category of forces.
+
+use crate::mechanics::{Model, SiteKind};
+use crate::plan::{Action, ActionKind, Source};
+
+/// The label of `action` in its free body's table.
+pub(super) fn table_label(model: &Model, action: &Action, shown: &[(String, String)]) -> String {
+    let couple = matches!(action.kind, ActionKind::Couple { .. });
+    match action.source {
+        Source::Gravity => format!(
+            "weight of {}",
+            shown_name(model.problem.body_name(action.body), shown)
+        ),
+        Source::Reaction(site) => {
+            let site = &model.sites[site];
+            // A point named by a word is printed by its letter, as in the table's math.
+            let tex = crate::symbolic::latex_name(&site.name);
+            let place = match shown.iter().find(|(word, _)| *word == tex) {
+                Some((_, letter)) => letter.clone(),
+                None => place(&site.name),
+            };
+            match (&site.kind, couple) {
+                (_, true) => format!("reaction couple at {place}"),
+                (SiteKind::Contact(_), false) => format!("contact force at {place}"),
+                (_, false) => format!("reaction force at {place}"),
+            }
+        }
+        _ => action.label.clone(),
+    }
+}
+
+/// A body's name as the handout prints it: its letter when it is named by a word.
+pub(super) fn shown_name(name: &str, shown: &[(String, String)]) -> String {
+    let tex = crate::symbolic::latex_name(name);
+    match shown.iter().find(|(word, _)| *word == tex) {
+        Some((_, letter)) => letter.clone(),
+        None => name.to_string(),
+    }
+}
+
+/// A point's name in a sentence: a symbol as it is (`O`, `P2`), a word with its article
+/// (`the lane`, `the rear contact`).
+pub(super) fn place(name: &str) -> String {
+    let words = name.replace('_', " ");
+    let letters = name.chars().filter(char::is_ascii_alphabetic).count();
+    if letters <= 1 {
+        words
+    } else {
+        format!("the {words}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::place;
+
+    #[test]
+    fn a_symbol_stands_alone_and_a_word_takes_its_article() {
+        assert_eq!(place("O"), "O");
+        assert_eq!(place("P2"), "P2");
+        assert_eq!(place("lane"), "the lane");
+        assert_eq!(place("rear_contact"), "the rear contact");
+    }
+}

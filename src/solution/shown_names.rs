@@ -1,0 +1,179 @@
+//! The names a handout prints in math for a problem's bodies and points named by words. A
+//! problem may call its body `top` and the fixed point `tip`; a textbook writes x̂_B, B*
+//! and F^O, never a word as a subscript. Each body or point whose name is one word gets a
+//! capital letter, the same in every step and format:
+//!
+//! - a point the statement names (`point O`) keeps the statement's letter; a joint to the
+//!   ground at its origin is O;
+//! - otherwise the word's first letter, else the first letter free of a list;
+//!
+//! never a letter the problem already uses (a constant, a coordinate, another body or
+//! point), nor a capital matrix's (A, C), nor one a handout gives a meaning of its own (N, the energies T, V, E, the
+//! Lagrangian L, forces F, moments M, inertia I, generalized forces Q). Prose keeps the
+//! problem's words; only the math changes, at rendering (see `render::prepare`).
+
+use crate::mechanics::Model;
+use crate::problem::BodyId;
+use crate::render::context::Solution;
+use crate::symbolic::latex_name;
+
+/// Letters with a meaning of their own in a handout.
+const RESERVED: [&str; 10] = ["N", "T", "V", "E", "L", "F", "M", "I", "Q", "O"];
+
+/// Letters tried for a body after its word's first letter.
+const BODY_LETTERS: &str = "BDGHJKPRSUWXYZACO";
+
+/// Letters tried for a point after the statement's and its word's first letter.
+const POINT_LETTERS: &str = "PRSUWXYZABCDGHJK";
+
+/// Units and words the handout sets upright in math itself: never a name to replace.
+const OWN_WORDS: [&str; 8] = ["rad", "kg", "deg", "slip", "max", "min", "loop", "const"];
+
+/// Each word-named body and point as `(\mathrm{word}, letter)`, in the problem's order.
+pub fn shown_names(model: &Model) -> Vec<(String, String)> {
+    let problem = model.problem;
+    let word = |name: &str| -> Option<String> {
+        let tex = latex_name(name);
+        let inner = tex.strip_prefix("\\mathrm{")?.strip_suffix('}')?;
+        let plain = inner.chars().all(|c| c.is_ascii_lowercase());
+        (plain && !OWN_WORDS.contains(&inner)).then_some(tex)
+    };
+    let bodies: Vec<&str> = problem.body_ids().map(|b| problem.body_name(b)).collect();
+    let sites: Vec<&str> = model.sites.iter().map(|s| s.name.as_str()).collect();
+    let mut taken: Vec<String> = (problem.constants.iter().map(|c| c.name.as_str()))
+        .chain(problem.coordinates.iter().map(|c| c.name.as_str()))
+        .chain(bodies.iter().copied())
+        .chain(sites.iter().copied())
+        .filter(|n| word(n).is_none())
+        .map(latex_name)
+        .collect();
+    // The handout's capital matrices: the system's A of A x = b, the C of q̇_D = C q̇_I.
+    let matrices = crate::problem::MatrixNames::of(problem);
+    taken.extend([matrices.a, matrices.c]);
+    let mut out = Vec::new();
+    let mut claim = |tex: String, candidates: Vec<String>, taken: &mut Vec<String>| {
+        if out.iter().any(|(t, _)| *t == tex) {
+            return;
+        }
+        if let Some(letter) = candidates.into_iter().find(|c| !taken.contains(c)) {
+            taken.push(letter.clone());
+            out.push((tex, letter));
+        }
+    };
+    let free = |letters: &str, skip: &[&str]| -> Vec<String> {
+        (letters.chars().map(String::from))
+            .filter(|l| !skip.contains(&l.as_str()))
+            .collect()
+    };
+    let initial = |name: &str| name[..1].to_uppercase();
+    let statement = statement_points(problem.statement.as_deref().unwrap_or_default());
+    for (k, site) in model.sites.iter().enumerate() {
+        let Some(tex) = word(&site.name) else {
+            continue;
+        };
+        let mut candidates = Vec::new();
+        let at_origin =
+            site.parent == BodyId::GROUND && site.parent_offset.iter().all(|e| e.is_zero());
+        if at_origin && k < problem.joints.len() {
+            candidates.push("O".to_string());
+        }
+        candidates.extend(statement.iter().cloned());
+        candidates.push(initial(&site.name));
+        candidates.extend(free(POINT_LETTERS, &RESERVED));
+        candidates.retain(|c| c == "O" || !RESERVED.contains(&c.as_str()));
+        claim(tex, candidates, &mut taken);
+    }
+    for name in &bodies {
+        let Some(tex) = word(name) else { continue };
+        let mut candidates = vec![initial(name)];
+        candidates.extend(free(BODY_LETTERS, &RESERVED));
+        candidates.retain(|c| !RESERVED.contains(&c.as_str()));
+        claim(tex, candidates, &mut taken);
+    }
+    out
+}
+
+/// Step 1 says which letter stands for which word: the frame of the top is B, fixed in
+/// "the top (B)"; the joint at the tip is "O (spherical)", as the picture labels it.
+pub fn name_in_step_one(solution: &mut Solution, names: &[(String, String)]) {
+    let letter = |name: &str| {
+        let tex = latex_name(name);
+        names
+            .iter()
+            .find(|(w, _)| *w == tex)
+            .map(|(_, l)| l.clone())
+    };
+    for frame in &mut solution.frames {
+        if let Some(l) = letter(&frame.parent) {
+            frame.parent = l;
+        }
+        if let Some(l) = letter(&frame.name) {
+            frame.fixed_in = format!("the {} ({l})", frame.name);
+            frame.name = l;
+        }
+    }
+    for coordinate in &mut solution.coordinates {
+        // `tip (spherical)`: the joint's name, then its kind.
+        let Some((joint, kind)) = coordinate.joint.split_once(" (") else {
+            continue;
+        };
+        // The letter alone keeps the narrow column from wrapping; the picture of step 1
+        // labels the joint with it.
+        if let Some(l) = letter(joint) {
+            coordinate.joint = format!("{l} ({kind}");
+        }
+    }
+}
+
+/// A note for each point of a contact or closure printed by a letter (a joint's is named in
+/// the coordinate table): "P is the point of contact at the lane."
+pub fn point_notes(model: &Model, names: &[(String, String)]) -> Vec<String> {
+    let joints = model.problem.joints.len();
+    (model.sites.iter().enumerate())
+        .filter(|(k, _)| *k >= joints)
+        .filter_map(|(_, site)| {
+            let tex = latex_name(&site.name);
+            let (_, letter) = names.iter().find(|(w, _)| *w == tex)?;
+            let name = site.name.as_str();
+            Some(match site.kind {
+                crate::mechanics::SiteKind::Contact(_) if name == "contact" => {
+                    format!("{letter} is the point of contact.")
+                }
+                crate::mechanics::SiteKind::Contact(_) => {
+                    format!("{letter} is the point of contact at the {name}.")
+                }
+                _ => format!("{letter} is the point where the loop closes, the {name}."),
+            })
+        })
+        .collect()
+}
+
+/// The capital letters a statement names points by: `point O`, `point $O$`.
+fn statement_points(statement: &str) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for (at, _) in statement.match_indices("point ") {
+        let rest = statement[at + 6..].trim_start_matches('$');
+        let mut chars = rest.chars();
+        let (Some(letter), next) = (chars.next(), chars.next()) else {
+            continue;
+        };
+        let alone = next.is_none_or(|c| !c.is_alphanumeric());
+        if letter.is_ascii_uppercase() && alone && !out.contains(&letter.to_string()) {
+            out.push(letter.to_string());
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::statement_points;
+
+    #[test]
+    fn the_statement_names_its_points_by_letters() {
+        let text =
+            "spins on a fixed, frictionless point O on the floor; the point $A$ and a point Pa";
+        assert_eq!(statement_points(text), ["O", "A"]);
+        assert!(statement_points("the points of contact").is_empty());
+    }
+}
