@@ -59,10 +59,12 @@ fn the_disc_in_the_cylinder_oscillates_with_the_closed_form_period() {
     let answers = &text[text.find("## Answers").expect("Answers")..];
     assert!(answers.contains("\\omega^{2} = \\frac{K}{M}"), "{answers}");
     assert!(
-        answers.contains("T = \\frac{2\\pi}{\\omega} = 1.55389"),
+        answers.contains("\\tau = \\frac{2\\pi}{\\omega} = 1.55389"),
         "{answers}"
     );
     assert!(answers.contains("16.35\\ \\mathrm{s^{-2}}"), "{answers}");
+    // τ is the period: T stays the kinetic energy of step 6.
+    assert!(!answers.contains("T = \\frac{2\\pi}"), "{answers}");
     // The bottom put in by the constraint, in symbols: y = −(R − r), so that
     // ω² = g m/(R − r) / (3m/2) = 2g/(3(R − r)) and T = 2π √(3(R − r)/(2g)).
     assert!(answers.contains("y = -\\left(R - r\\right)"), "{answers}");

@@ -36,6 +36,9 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let solved = |i: usize| worked.show_accelerations.get(i).and_then(Option::as_deref);
     crate::symbolic::with_style(style, || {
         let questions = problem.questions.iter().zip(answers).zip(views.iter_mut());
+        // A steady motion solved from a `show`'s identity only where that identity was
+        // derived, not merely checked at the steady motion itself.
+        let mut shown_derived = true;
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
@@ -52,12 +55,15 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                         view.at_tex = super::show_conditions::conditions_tex(&assumed).into();
                         view.at_note = "the conditions of the motion asked, put in below".into();
                     }
+                    shown_derived &= derived(&steps);
                     let check = super::show_conditions::check_sentence(problem, i, answer);
                     check_last(view, steps, &check)
                 }
                 QuestionKind::Steady { .. } => {
                     let v = values(problem, answer, &[]);
-                    let mut steps = super::named_identity::steady_steps(problem, i, answer, &v)
+                    let mut steps = (shown_derived)
+                        .then(|| super::named_identity::steady_steps(problem, i, answer, &v))
+                        .flatten()
                         .unwrap_or_default();
                     // The check that the motion is steady ends the answer.
                     if !view.note.is_empty() {

@@ -217,9 +217,10 @@ fn detail(problem: &Problem, check: &crate::numeric::Check) -> MarkupLine {
     MarkupLine::from(pieces.concat())
 }
 
-/// The series of `series` whose span over the run is under a twentieth of the largest
-/// span, taken out of it: on the same axis they would look flat. `None` when there is none
-/// or every series would go.
+/// The series of `series` on the smallest scale, taken out of it where that scale is under
+/// a twentieth of the next larger one (a top's nutation beside its precession and spin): on
+/// the same axis they would look flat. Spans are sorted and cut at the last such gap;
+/// `None` where there is none. A series that does not move at all stays.
 fn small_moves(series: &mut Vec<Series>) -> Option<Vec<Series>> {
     let span = |s: &Series| {
         let (lo, hi) = (s.points.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
@@ -228,16 +229,16 @@ fn small_moves(series: &mut Vec<Series>) -> Option<Vec<Series>> {
         hi - lo
     };
     let largest = series.iter().map(span).fold(0.0, f64::max);
-    let small: Vec<bool> = (series.iter())
-        .map(|s| span(s) < largest / 20.0 && span(s) > largest * 1e-9)
+    let mut spans: Vec<f64> = (series.iter().map(span))
+        .filter(|x| *x > largest * 1e-9)
         .collect();
-    if !small.contains(&true) || !small.contains(&false) {
-        return None;
-    }
+    spans.sort_by(|a, b| b.total_cmp(a));
+    let cut = (spans.windows(2).rev()).find(|w| w[1] < w[0] / 20.0)?[1];
     let mut taken = Vec::new();
     let mut kept = Vec::new();
-    for (s, is_small) in series.drain(..).zip(small) {
-        match is_small {
+    for s in series.drain(..) {
+        let x = span(&s);
+        match x <= cut && x > largest * 1e-9 {
             true => taken.push(s),
             false => kept.push(s),
         }
