@@ -87,13 +87,12 @@ fn flat_point(c: &[f64; 6]) -> f64 {
     0.5 * (lo + hi)
 }
 
+/// The polynomial between two rows (the rows and the interval's length).
+type Interpolant = dyn Fn(&[f64], &[f64], f64) -> [f64; 6];
+
 /// The extremes of one column over the rows: `(least, greatest, times of the interior
 /// maxima)`, with the interpolant that `curve` builds for each interval.
-fn extremes(
-    rows: &[Vec<f64>],
-    curve: &dyn Fn(&[f64], &[f64], f64) -> [f64; 6],
-    column: usize,
-) -> (f64, f64, Vec<f64>) {
+fn extremes(rows: &[Vec<f64>], curve: &Interpolant, column: usize) -> (f64, f64, Vec<f64>) {
     let first = rows[0][column];
     let (mut least, mut greatest) = (first, first);
     let mut maxima = Vec::new();
@@ -139,7 +138,7 @@ pub fn describe_run(trajectory: &Trajectory, k: usize, others: &[usize]) -> Opti
         return None;
     }
     let (q, rate, second) = (1 + k, 1 + n + k, 1 + 2 * n + k);
-    let through = |a: &[f64], b: &[f64], h: f64| {
+    let through = move |a: &[f64], b: &[f64], h: f64| {
         quintic((a[q], a[rate], a[second]), (b[q], b[rate], b[second]), h)
     };
     let (minimum, maximum, maxima) = extremes(rows, &through, q);
@@ -150,7 +149,7 @@ pub fn describe_run(trajectory: &Trajectory, k: usize, others: &[usize]) -> Opti
     let rates = (others.iter())
         .map(|&j| {
             let (r, d) = (1 + n + j, 1 + 2 * n + j);
-            let through = |a: &[f64], b: &[f64], h: f64| cubic((a[r], a[d]), (b[r], b[d]), h);
+            let through = move |a: &[f64], b: &[f64], h: f64| cubic((a[r], a[d]), (b[r], b[d]), h);
             let (lo, hi, _) = extremes(rows, &through, r);
             (lo, hi)
         })
