@@ -13,6 +13,7 @@ mod composite;
 mod constraints;
 mod course_answers;
 mod course_words;
+mod describe;
 mod draw;
 mod friction;
 mod gears;

@@ -59,10 +59,12 @@ fn the_disc_in_the_cylinder_oscillates_with_the_closed_form_period() {
     let answers = &text[text.find("## Answers").expect("Answers")..];
     assert!(answers.contains("\\omega^{2} = \\frac{K}{M}"), "{answers}");
     assert!(
-        answers.contains("T = \\frac{2\\pi}{\\omega} = 1.55389"),
+        answers.contains("\\tau = \\frac{2\\pi}{\\omega} = 1.55389"),
         "{answers}"
     );
     assert!(answers.contains("16.35\\ \\mathrm{s^{-2}}"), "{answers}");
+    // τ is the period: T stays the kinetic energy of step 6.
+    assert!(!answers.contains("T = \\frac{2\\pi}"), "{answers}");
     // The bottom put in by the constraint, in symbols: y = −(R − r), so that
     // ω² = g m/(R − r) / (3m/2) = 2g/(3(R − r)) and T = 2π √(3(R − r)/(2g)).
     assert!(answers.contains("y = -\\left(R - r\\right)"), "{answers}");
@@ -223,7 +225,7 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
                 "toward the axis",
             );
         }
-        let period = &found[5];
+        let period = &found[6];
         assert_eq!(period["kind"], "period");
         close(
             period["angular_frequency"].as_f64().expect("w"),
@@ -242,8 +244,12 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
     let answers = &text[text.find("## Answers").expect("Answers")..];
     for needed in [
         "Equation (2) of step 5",
-        "\\ddot{\\theta} = 0",
-        "is not zero at $\\theta = 0.5$",
+        // The conditions of steady precession, stated and put in, in symbols.
+        "\\dot{\\theta} = 0,\\ \\ddot{\\theta} = 0,\\ \\ddot{\\psi} = 0,\\ \\ddot{\\phi} = 0",
+        "do not appear in it",
+        "Where $s_{\\theta} \\neq 0$, divided by it",
+        // Checked with numbers last, at a steady motion found below, said so.
+        "Checked with numbers at the steady motion found in answer 2 below",
         "the identity holds",
         // In the statement's names, the spin put in, to the stated form.
         "\\dot{\\phi} = \\omega_{3} - \\Omega c_{\\theta}",
@@ -254,6 +260,12 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
         "yes, the motion is steady",
     ] {
         assert!(answers.contains(needed), "{needed}: {answers}");
+    }
+    // The derivation is in symbols: no number of a state before the check.
+    let derivation = &answers[answers.find("Equation (2)").expect("derived")
+        ..answers.find("Checked with numbers").expect("checked")];
+    for number in ["0.5", "3.45", "146.9", "150"] {
+        assert!(!derivation.contains(number), "{number}: {derivation}");
     }
     assert!(!answers.contains("search"), "{answers}");
     assert!(!answers.contains("holds there to"), "{answers}");

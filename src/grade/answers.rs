@@ -116,7 +116,7 @@ fn one(
             let expected = answer.values.first().map_or(f64::NAN, |(_, x)| *x);
             Ok(scalar(given, expected))
         }
-        QuestionKind::Steady { .. } => {
+        QuestionKind::Steady { .. } | QuestionKind::Describe { .. } => {
             let Value::Object(map) = value else {
                 return Err("expected an object of the unknowns, e.g. { \"psi'\": 2.5 }".into());
             };

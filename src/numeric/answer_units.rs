@@ -47,6 +47,10 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
                 });
             coordinate_unit(problem, entry.coordinate, entry.order)
         }
+        QuestionKind::Describe { coordinate, .. } => match found {
+            Quantity::Named(name) => super::describe_answer::unit(problem, *coordinate, name),
+            _ => String::new(),
+        },
         QuestionKind::Slips { .. } => String::new(),
         QuestionKind::Tips { .. } => "N".into(),
         QuestionKind::Impending { constant, .. } | QuestionKind::Stability { constant, .. } => {

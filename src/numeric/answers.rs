@@ -129,6 +129,9 @@ pub fn answer_in(
     context: Context,
 ) -> Result<Answer, ProblemError> {
     let (t, mut q, mut rates) = starting_state(problem, system, question, &context)?;
+    if matches!(question.kind, QuestionKind::Describe { .. }) {
+        return described_answer(problem, system, question, (q, rates));
+    }
     let simulated = question.about.is_none() && question.at.state.is_none() && t > 0.0;
     if let Some(state) = &question.at.state {
         for (entry, value) in state {
@@ -207,7 +210,8 @@ pub fn answer_in(
         // Answered by statics, or over the constant's range, before this point.
         QuestionKind::Tips { .. }
         | QuestionKind::Impending { .. }
-        | QuestionKind::Stability { .. } => Vec::new(),
+        | QuestionKind::Stability { .. }
+        | QuestionKind::Describe { .. } => Vec::new(),
         QuestionKind::Period { coordinate } => {
             let coordinate = coordinate.map(|i| names[i].as_str());
             let found =
@@ -242,6 +246,27 @@ pub fn answer_in(
         residual,
         frame,
         period,
+    })
+}
+
+/// A `describe` question: the run from `(q, rates)` described (see [`super::describe`]).
+fn described_answer(
+    problem: &Problem,
+    system: &dyn System,
+    question: &Question,
+    (q, rates): (Vec<f64>, Vec<f64>),
+) -> Result<Answer, ProblemError> {
+    let values = super::describe_answer::values(problem, system, question, (&q, &rates))
+        .map_err(|(message, hint)| failure(question, message, hint))?;
+    Ok(Answer {
+        values,
+        time: 0.0,
+        q,
+        rates,
+        simulated: false,
+        residual: None,
+        frame: None,
+        period: None,
     })
 }
 

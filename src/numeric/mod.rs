@@ -12,6 +12,8 @@ mod assemble;
 mod check;
 mod checks;
 mod constraint_checks;
+mod describe;
+mod describe_answer;
 mod evaluate;
 mod frame;
 mod friction;
@@ -40,6 +42,8 @@ pub use answers::{
 };
 pub use checks::{confirm, modes, small_oscillation, Check, CheckKind, Phrase};
 pub use constraint_checks::drive_energy_check;
+pub use describe::{describe_run, Description};
+pub use describe_answer::described;
 pub use evaluate::{Compiled, Motion, StateSolution};
 pub use frame::{Frame, DEFAULT_FPS};
 pub use friction::{Held, Mode as FrictionMode, SiteState};

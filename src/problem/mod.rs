@@ -37,6 +37,7 @@ mod model;
 mod names;
 mod question_kinds;
 mod question_model;
+mod question_motion;
 mod questions;
 mod read;
 mod reader;

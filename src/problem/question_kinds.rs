@@ -62,6 +62,7 @@ impl Reader {
             rhs,
             text,
             names: Vec::new(),
+            assuming: Vec::new(),
         })
     }
 
@@ -99,11 +100,18 @@ impl Reader {
             names.push((name.clone(), e));
         }
         match kind {
-            QuestionKind::Show { lhs, rhs, text, .. } => Some(QuestionKind::Show {
+            QuestionKind::Show {
+                lhs,
+                rhs,
+                text,
+                assuming,
+                ..
+            } => Some(QuestionKind::Show {
                 lhs,
                 rhs,
                 text,
                 names,
+                assuming,
             }),
             other => Some(other),
         }

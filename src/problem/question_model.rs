@@ -87,6 +87,19 @@ pub enum QuestionKind {
         /// The statement's names for quantities of the identity (`where`), each with what
         /// it stands for: `Omega` for `psi'`, `I1` for `It + m*h^2`.
         names: Vec<(String, Expr)>,
+        /// The conditions of the motion the identity is asked of (`assuming`), each a
+        /// coordinate, rate or second rate and the value put in for it: `theta' = 0`.
+        /// Empty: the conditions are read from the question's state.
+        assuming: Vec<(Expr, Expr)>,
+    },
+    /// A coordinate's motion over a simulated run (from the initial state up to `at.time`,
+    /// default `simulate.duration`): its least, greatest and mean value, amplitude and
+    /// period, with the range of the rates of `rates` (coordinates by index).
+    Describe {
+        /// The coordinate described, by index.
+        coordinate: usize,
+        /// The coordinates whose rates' ranges are given too, by index.
+        rates: Vec<usize>,
     },
     /// The values of a constant (an index into `Problem::constants`) between `from` and
     /// `to` where the question's state changes stability (a bicycle's weave and capsize

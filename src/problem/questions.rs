@@ -24,7 +24,7 @@ use super::reader::Reader;
 use crate::symbolic::Expr;
 use serde_json::{Map, Value};
 
-const KEYS: [&str; 18] = [
+const KEYS: [&str; 20] = [
     "text",
     "value",
     "reaction",
@@ -43,10 +43,12 @@ const KEYS: [&str; 18] = [
     "in",
     "stability",
     "where",
+    "assuming",
+    "describe",
 ];
 
 /// The keys that say what a question asks for; a question has exactly one.
-const ASKED: [&str; 10] = [
+const ASKED: [&str; 11] = [
     "value",
     "reaction",
     "drive",
@@ -57,6 +59,7 @@ const ASKED: [&str; 10] = [
     "tips",
     "impending",
     "stability",
+    "describe",
 ];
 
 impl Reader {
@@ -131,7 +134,7 @@ impl Reader {
             self.diag.hint(
                 path,
                 message,
-                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed or held coordinate), `steady`, `period`, `show`, `slips`, `tips` or `impending`",
+                "give exactly one of `value` (an expression such as \"q1''\"), `reaction` (a joint in find.reactions), `drive` (a prescribed or held coordinate), `steady`, `period`, `show`, `describe`, `slips`, `tips` or `impending`",
             );
             return None;
         }
@@ -156,11 +159,14 @@ impl Reader {
             None => None,
         };
         let kind = self.asked(asked[0], fields, path, (reactions, constraints))?;
-        if fields.contains_key("where") && !matches!(kind, QuestionKind::Show { .. }) {
+        let own = ["where", "assuming"]
+            .into_iter()
+            .find(|k| fields.contains_key(*k));
+        if let (Some(key), false) = (own, matches!(kind, QuestionKind::Show { .. })) {
             self.diag.hint(
-                &key_path(path, "where"),
-                "only a `show` names the quantities of its identity",
-                "remove `where`, or ask a `show`",
+                &key_path(path, key),
+                format!("only a `show` has `{key}`: the names or conditions of its identity"),
+                format!("remove `{key}`, or ask a `show`"),
             );
             return None;
         }
@@ -250,13 +256,17 @@ impl Reader {
             "steady" => self.steady(&fields["steady"], &key_path(path, "steady"))?,
             "period" => self.period(&fields["period"], &key_path(path, "period"))?,
             "show" => {
-                let kind = self.show(&fields["show"], &key_path(path, "show"))?;
+                let mut kind = self.show(&fields["show"], &key_path(path, "show"))?;
+                if let Some(v) = fields.get("assuming") {
+                    kind = self.show_assuming(kind, v, &key_path(path, "assuming"))?;
+                }
                 match fields.get("where") {
                     Some(v) => self.show_names(kind, v, &key_path(path, "where"))?,
                     None => kind,
                 }
             }
             "stability" => self.stability(&fields["stability"], &key_path(path, "stability"))?,
+            "describe" => self.describe(&fields["describe"], &key_path(path, "describe"))?,
             key => self.static_question(key, &fields[key], path, constraints)?,
         };
         Some(kind)

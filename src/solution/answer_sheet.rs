@@ -22,6 +22,7 @@ fn kind_name(question: &Question) -> &'static str {
         QuestionKind::Period { .. } => "period",
         QuestionKind::Show { .. } => "show",
         QuestionKind::Stability { .. } => "stability",
+        QuestionKind::Describe { .. } => "describe",
     }
 }
 
@@ -139,6 +140,9 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
         QuestionKind::Stability { .. } => {
             super::stability_answers::record(problem, question, answer, &mut out);
         }
+        QuestionKind::Describe { .. } => {
+            super::describe_words::record(problem, question, answer, &mut out);
+        }
     }
     out.insert("state".into(), Value::Object(state(problem, answer)));
     out.insert("time".into(), number(answer.time));
@@ -234,7 +238,9 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
                 QuestionKind::Steady { .. } => format!("{base}.{found}"),
                 QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => format!("{base}.{found}"),
                 QuestionKind::Impending { .. } => base.clone(),
-                QuestionKind::Stability { .. } => format!("{base}.{found}"),
+                QuestionKind::Stability { .. } | QuestionKind::Describe { .. } => {
+                    format!("{base}.{found}")
+                }
             };
             columns.push((column, x));
         }

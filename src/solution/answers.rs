@@ -180,6 +180,7 @@ fn blank_lines(problem: &Problem, kind: &QuestionKind) -> usize {
         QuestionKind::Reaction { .. } => 3,
         QuestionKind::Steady { unknowns, .. } => unknowns.len().max(1),
         QuestionKind::Stability { .. } => 2,
+        QuestionKind::Describe { .. } => 4,
         _ => 1,
     }
 }
@@ -199,6 +200,10 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
         QuestionKind::Period { .. } | QuestionKind::Show { .. } => {
             super::question_answers::asked(problem, question)
         }
+        QuestionKind::Describe { coordinate, .. } => format!(
+            "Describe the motion of ${}$.",
+            latex(&problem.coordinate_expr(*coordinate, 0))
+        ),
         QuestionKind::Steady { unknowns, zero } => {
             let unknowns: Vec<String> = unknowns
                 .iter()
@@ -368,7 +373,8 @@ fn value_tex(
             )
         }
         QuestionKind::Drive { coordinate } => drive_tex(problem, *coordinate),
-        QuestionKind::Period { .. } => "T".into(),
+        // τ: T is the kinetic energy of step 6 (or a constant of the problem).
+        QuestionKind::Period { .. } => "\\tau".into(),
         QuestionKind::Show { .. } => match found {
             Quantity::Named(text) => super::question_answers::side_tex(question, text),
             Quantity::Reaction(_) => String::new(),

@@ -265,7 +265,7 @@ fn small_oscillation(problem: &Problem, check: &Check) -> Option<String> {
     Some(format!(
         "Started a little away from the equilibrium ${equilibrium}${mode}, the motion \
          oscillates with the period that the linearized equations give, \
-         $T = 2\\pi/\\omega = {period}$ s ($\\omega = {omega}$ rad/s)."
+         $\\tau = 2\\pi/\\omega = {period}$ s ($\\omega = {omega}$ rad/s)."
     ))
 }
 

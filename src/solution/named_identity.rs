@@ -211,11 +211,11 @@ fn named_has_names(e: &Expr, renaming: &Renaming) -> bool {
 
 /// The `show` question with `where` names whose identity holds at a steady motion with
 /// the same conditions as question `k`: its renaming and its two sides.
-fn governing_identity(problem: &Problem, k: usize) -> Option<(Renaming, Expr, Expr)> {
+fn governing_identity(problem: &Problem, k: usize) -> Option<(Renaming, Expr, Expr, usize)> {
     let QuestionKind::Steady { zero, .. } = &problem.questions.get(k)?.kind else {
         return None;
     };
-    problem.questions.iter().find_map(|q| {
+    problem.questions.iter().enumerate().find_map(|(index, q)| {
         let QuestionKind::Show {
             lhs, rhs, names, ..
         } = &q.kind
@@ -227,7 +227,7 @@ fn governing_identity(problem: &Problem, k: usize) -> Option<(Renaming, Expr, Ex
         if !same || names.is_empty() {
             return None;
         }
-        Some((Renaming::of(names)?, lhs.clone(), rhs.clone()))
+        Some((Renaming::of(names)?, lhs.clone(), rhs.clone(), index))
     })
 }
 
@@ -241,7 +241,14 @@ pub fn steady_steps(
     answer: &Answer,
     values: &Values,
 ) -> Option<Vec<AnswerStep>> {
-    let (renaming, lhs, rhs) = governing_identity(problem, k)?;
+    let (renaming, lhs, rhs, shown) = governing_identity(problem, k)?;
+    let labels = super::answers::labels(problem);
+    let item = labels[..=shown]
+        .iter()
+        .rev()
+        .find(|l| !l.is_empty())
+        .cloned();
+    let item = item.unwrap_or_else(|| "above".into());
     let QuestionKind::Steady { unknowns, .. } = &problem.questions[k].kind else {
         return None;
     };
@@ -280,9 +287,28 @@ pub fn steady_steps(
     let name_tex = latex(&n);
     let unit = crate::render::unit_tex(&coordinate_unit(problem, i, 1));
     let sign = ["-", "+"][which];
+    // A second root of the same quadratic: the quadratic is said once, above.
+    let same = |q: &crate::problem::Question| {
+        matches!((&q.kind, &problem.questions[k].kind),
+            (QuestionKind::Steady { zero: a, .. }, QuestionKind::Steady { zero: b, .. }) if a == b)
+    };
+    if problem.questions[..k].iter().any(same) {
+        let mut steps = vec![step(
+            format!(
+                "The other root of the quadratic above: with {}, the sign ${sign}$ gives",
+                known_tex(problem, &renaming, &(&a * &(&b * &c)), &v, &name)
+            ),
+            format!(
+                "{name_tex} = {}\\ {unit}",
+                super::answers::number_tex(roots[which])
+            ),
+        )];
+        steps.extend(other_rates(problem, &renaming, unknowns, i, answer));
+        return Some(steps);
+    }
     let mut steps = vec![
         step(
-            format!("The identity of answer 1, in the statement's names, is a quadratic in ${name_tex}$:"),
+            format!("The identity of answer {item}, in the statement's names, is a quadratic in ${name_tex}$:"),
             format!("{} = 0", latex_collected(&quadratic)),
         ),
         step(
@@ -303,6 +329,19 @@ pub fn steady_steps(
             format!("{name_tex} = {}\\ {unit}", super::answers::number_tex(roots[which])),
         ),
     ];
+    steps.extend(other_rates(problem, &renaming, unknowns, i, answer));
+    Some(steps)
+}
+
+/// Each other unknown rate from the names: φ̇ = ω₃ − Ω c_θ = … .
+fn other_rates(
+    problem: &Problem,
+    renaming: &Renaming,
+    unknowns: &[crate::problem::StateEntry],
+    i: usize,
+    answer: &Answer,
+) -> Vec<AnswerStep> {
+    let mut steps = Vec::new();
     for u in unknowns
         .iter()
         .filter(|u| u.coordinate != i && u.order == 1)
@@ -321,7 +360,7 @@ pub fn steady_steps(
             ));
         }
     }
-    Some(steps)
+    steps
 }
 
 /// `$\theta = 0.5$ rad, $\omega_{3} = 150$`: the values of the coordinates and names in

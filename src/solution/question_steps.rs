@@ -11,6 +11,7 @@
 //!   sampling: with the coordinates and constants held, the equation with the conditions
 //!   substituted is a rate-free multiple of LHS − RHS at every set of rates tried.
 
+use super::show_conditions::{put_in, Condition};
 use crate::equations::{Derivation, LinearSystem};
 use crate::numeric::Answer;
 use crate::problem::{Problem, QuestionKind};
@@ -35,6 +36,9 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let solved = |i: usize| worked.show_accelerations.get(i).and_then(Option::as_deref);
     crate::symbolic::with_style(style, || {
         let questions = problem.questions.iter().zip(answers).zip(views.iter_mut());
+        // A steady motion solved from a `show`'s identity only where that identity was
+        // derived, not merely checked at the steady motion itself.
+        let mut shown_derived = true;
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
@@ -44,12 +48,22 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     lhs, rhs, names, ..
                 } => {
                     let shown = (lhs, rhs, names.as_slice());
-                    let steps = show_steps(problem, derivation, solved(i), answer, shown);
-                    check_last(view, steps)
+                    let assumed = super::show_conditions::assumed(question);
+                    let steps =
+                        show_steps(problem, derivation, (solved(i), &assumed), answer, shown);
+                    if !assumed.is_empty() && derived(&steps) {
+                        view.at_tex = super::show_conditions::conditions_tex(&assumed).into();
+                        view.at_note = "the conditions of the motion asked, put in below".into();
+                    }
+                    shown_derived &= derived(&steps);
+                    let check = super::show_conditions::check_sentence(problem, i, answer);
+                    check_last(view, steps, &check)
                 }
                 QuestionKind::Steady { .. } => {
                     let v = values(problem, answer, &[]);
-                    let mut steps = super::named_identity::steady_steps(problem, i, answer, &v)
+                    let mut steps = (shown_derived)
+                        .then(|| super::named_identity::steady_steps(problem, i, answer, &v))
+                        .flatten()
                         .unwrap_or_default();
                     // The check that the motion is steady ends the answer.
                     if !view.note.is_empty() {
@@ -60,6 +74,9 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                 QuestionKind::Value { .. } => {
                     super::closed_form::value_steps(worked, question, answer).unwrap_or_default()
                 }
+                QuestionKind::Describe { .. } => {
+                    super::describe_words::fill(problem, question, answer, view)
+                }
                 _ => Vec::new(),
             };
         }
@@ -69,22 +86,21 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
 
 /// A derived `show` checked after its derivation: the values of its two sides and
 /// whether they agree move from the head of the answer to its last step.
-fn check_last(view: &mut AnswerView, mut steps: Vec<AnswerStep>) -> Vec<AnswerStep> {
-    let derived = steps
-        .first()
-        .is_some_and(|s| s.text.as_str().starts_with("Equation"));
-    if !derived || view.values_tex.is_empty() {
+fn check_last(view: &mut AnswerView, mut steps: Vec<AnswerStep>, check: &str) -> Vec<AnswerStep> {
+    if !derived(&steps) || view.values_tex.is_empty() {
         return steps;
     }
     let sides: Vec<&str> = view.values_tex.iter().map(|m| m.as_str()).collect();
-    steps.push(step(
-        "Checked with the numbers of this state:",
-        sides.join(", \\qquad "),
-    ));
+    steps.push(step(check, sides.join(", \\qquad ")));
     steps.push(step(view.note.clone(), String::new()));
     view.values_tex.clear();
     view.note.clear();
     steps
+}
+
+/// Whether the working of a `show` derives it (it starts from an equation of step 5).
+fn derived(steps: &[AnswerStep]) -> bool {
+    (steps.first()).is_some_and(|s| s.text.as_str().starts_with("Equation"))
 }
 
 fn step(text: impl Into<String>, math: impl Into<String>) -> AnswerStep {
@@ -117,6 +133,18 @@ fn zeroed(e: &Expr, zero: &[Symbol]) -> Expr {
 
 fn number(x: f64) -> String {
     super::answers::number_tex(x)
+}
+
+/// The conditions read from a state: the second rates that vanish there (by the step-5
+/// accelerations) and the rates that are zero there, each set to 0.
+fn state_conditions(problem: &Problem, accelerations: &[f64], answer: &Answer) -> Vec<Condition> {
+    let scale = accelerations.iter().fold(1.0f64, |s, a| s.max(a.abs()));
+    let mut zero: Vec<Symbol> = (0..problem.coordinates.len())
+        .filter(|&i| accelerations[i].abs() < 1e-9 * scale)
+        .map(|i| problem.coordinate_symbol(i, 2))
+        .collect();
+    zero.extend(zero_at_state(problem, answer, 1));
+    zero.into_iter().map(|s| (s, Expr::zero())).collect()
 }
 
 /// The rates (and coordinates) that are zero at the state, as symbols.
@@ -166,7 +194,7 @@ fn period_steps(
     steps.push(step(
         text,
         format!(
-            "{omega} = {}\\ \\mathrm{{rad/s}}, \\qquad T = \\frac{{2\\pi}}{{{omega}}} = {}\\ \\mathrm{{s}}",
+            "{omega} = {}\\ \\mathrm{{rad/s}}, \\qquad \\tau = \\frac{{2\\pi}}{{{omega}}} = {}\\ \\mathrm{{s}}",
             number(found.damped),
             number(found.period)
         ),
@@ -266,7 +294,7 @@ fn one_freedom(
         step(
             "so that".to_string(),
             format!(
-                "\\omega^{{2}} = \\frac{{K}}{{M}} = {} = {}\\ \\mathrm{{s^{{-2}}}}, \\qquad T = 2\\pi \\sqrt{{\\frac{{M}}{{K}}}} = 2\\pi \\sqrt{{{}}}",
+                "\\omega^{{2}} = \\frac{{K}}{{M}} = {} = {}\\ \\mathrm{{s^{{-2}}}}, \\qquad \\tau = 2\\pi \\sqrt{{\\frac{{M}}{{K}}}} = 2\\pi \\sqrt{{{}}}",
                 ratio_tex(&k1, &m1),
                 number(value),
                 factored(&period)
@@ -355,12 +383,13 @@ fn has_rates(e: &Expr) -> bool {
 fn show_steps(
     problem: &Problem,
     derivation: &Derivation,
-    accelerations: Option<&[f64]>,
+    (accelerations, assumed): (Option<&[f64]>, &[Condition]),
     answer: &Answer,
     (lhs, rhs, names): (&Expr, &Expr, &[(String, Expr)]),
 ) -> Vec<AnswerStep> {
-    let identity = accelerations
-        .and_then(|a| derive_identity(problem, derivation, a, answer, (lhs, rhs, names)));
+    let identity = accelerations.and_then(|a| {
+        derive_identity(problem, derivation, (a, assumed), answer, (lhs, rhs, names))
+    });
     identity.unwrap_or_else(|| {
         vec![step(
             "No single equation of step 5 reduces to this identity once the conditions of the state are put in; it is checked at the state only.",
@@ -374,19 +403,16 @@ fn show_steps(
 fn derive_identity(
     problem: &Problem,
     derivation: &Derivation,
-    accelerations: &[f64],
+    (accelerations, assumed): (&[f64], &[Condition]),
     answer: &Answer,
     (lhs, rhs, names): (&Expr, &Expr, &[(String, Expr)]),
 ) -> Option<Vec<AnswerStep>> {
     let system = &derivation.system;
     let v = values(problem, answer, accelerations);
-    let scale = accelerations.iter().fold(1.0f64, |s, a| s.max(a.abs()));
-    // The conditions: second rates that vanish at the state, rates that are zero there.
-    let mut zero: Vec<Symbol> = (0..problem.coordinates.len())
-        .filter(|&i| accelerations[i].abs() < 1e-9 * scale)
-        .map(|i| problem.coordinate_symbol(i, 2))
-        .collect();
-    zero.extend(zero_at_state(problem, answer, 1));
+    let zero = match assumed.is_empty() {
+        true => state_conditions(problem, accelerations, answer),
+        false => assumed.to_vec(),
+    };
     let difference = lhs - rhs;
     for i in 0..system.b.len() {
         let mut terms: Vec<Expr> = (0..system.unknowns.len())
@@ -394,7 +420,7 @@ fn derive_identity(
             .collect();
         terms.push(-&system.b[i]);
         let row = crate::symbolic::add(terms);
-        let reduced = zeroed(&row, &zero);
+        let reduced = put_in(&row, &zero);
         // Another unknown left (a reaction, a second rate that does not vanish): not this row.
         if system.unknowns.iter().any(|u| reduced.contains(u)) || reduced.is_zero() {
             continue;
@@ -402,7 +428,8 @@ fn derive_identity(
         if !proportional(problem, &v, (&reduced, &difference), &zero) {
             continue;
         }
-        let mut steps = identity_steps(problem, answer, i, (&row, &reduced), &zero);
+        let assumed = !assumed.is_empty();
+        let mut steps = identity_steps(problem, answer, i, (&row, &reduced), (&zero, assumed));
         let (_, rest) = split_factor(&reduced);
         let named = super::named_identity::Renaming::of(names)
             .and_then(|r| super::named_identity::identity_steps(&r, &rest, (lhs, rhs), &v));
@@ -419,7 +446,8 @@ fn derive_identity(
 
 /// Whether `e` is a multiple of `d` by a factor free of rates: at several sets of rates,
 /// the coordinates and constants held, e/d is the same nonzero number.
-fn proportional(problem: &Problem, v: &Values, (e, d): (&Expr, &Expr), zero: &[Symbol]) -> bool {
+fn proportional(problem: &Problem, v: &Values, (e, d): (&Expr, &Expr), zero: &[Condition]) -> bool {
+    let held = super::show_conditions::held_values(zero, v);
     let mut ratios = Vec::new();
     let mut seed = 0x2545_f491_4f6c_dd1du64;
     for _ in 0..4 {
@@ -430,8 +458,8 @@ fn proportional(problem: &Problem, v: &Values, (e, d): (&Expr, &Expr), zero: &[S
             seed ^= seed << 17;
             let x = (seed % 10_000) as f64 / 1000.0 - 5.0;
             let rate = problem.coordinate_symbol(i, 1);
-            let held = zero.contains(&rate);
-            w.set(rate, if held { 0.0 } else { x });
+            let value = held.iter().find(|(s, _)| *s == rate).map(|(_, x)| *x);
+            w.set(rate, value.unwrap_or(x));
         }
         let (a, b) = (eval(e, &w), eval(d, &w));
         if !(a.is_finite() && b.is_finite()) || b.abs() < 1e-12 {
@@ -469,25 +497,23 @@ fn identity_steps(
     answer: &Answer,
     i: usize,
     (row, reduced): (&Expr, &Expr),
-    zero: &[Symbol],
+    (zero, assumed): (&[Condition], bool),
 ) -> Vec<AnswerStep> {
-    let present: Vec<String> = zero
-        .iter()
-        .map(|s| format!("{} = 0", latex(&Expr::sym(s.clone()))))
-        .collect();
     let mut steps = vec![step(
         format!("Equation ({}) of step 5:", i + 1),
         format!("{} = 0", latex_collected(&simplify(row))),
     )];
     steps.push(step(
-        format!(
-            "At this state ${}$; put in, the equation becomes",
-            present.join(",\\ ")
-        ),
+        super::show_conditions::put_in_sentence(row, zero, assumed),
         format!("{} = 0", latex_collected(reduced)),
     ));
     let (outer, rest) = split_factor(reduced);
-    if !outer.is_one() && outer.as_number().is_none() {
+    if assumed && !outer.is_one() && outer.as_number().is_none() {
+        steps.push(step(
+            format!("Where ${} \\neq 0$, divided by it,", latex(&outer)),
+            format!("{} = 0", latex_collected(&rest)),
+        ));
+    } else if !outer.is_one() && outer.as_number().is_none() {
         let held: Vec<String> = (0..problem.coordinates.len())
             .filter(|&k| outer.contains(&problem.coordinate_symbol(k, 0)))
             .map(|k| {

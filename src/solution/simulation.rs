@@ -70,10 +70,16 @@ pub fn simulation(
     };
     // V and E from the problem's datum, as the answers give them, not from the start.
     let datum = trajectory.potential_at_start;
+    // T is the kinetic energy, unless the problem names a constant T (a drive torque).
+    let named_t = problem.constants.iter().any(|c| c.name == "T");
+    let (kinetic, total) = match named_t {
+        true => ("K", "E = K + V"),
+        false => ("T", "E = T + V"),
+    };
     let energy_series: Vec<Series> = [
-        ("kinetic", "T", 0.0),
+        ("kinetic", kinetic, 0.0),
         ("potential", "V", datum),
-        ("total", "E = T + V", datum),
+        ("total", total, datum),
     ]
     .iter()
     .filter_map(|&(part, symbol, shift)| {
@@ -97,6 +103,18 @@ pub fn simulation(
             series_of(CoordinateKind::Distance),
         ),
     ];
+    // An angle that moves little (a top's nutation beside its spin) on a plot of its own.
+    if let Some(small) = small_moves(&mut plots[0].3) {
+        plots.insert(
+            1,
+            (
+                "nutation",
+                "Angles that move little",
+                Label::words("angle (rad)"),
+                small,
+            ),
+        );
+    }
     if plots[0].3.is_empty() {
         // A system without angles: its positions are the coordinates' plot.
         let positions = plots.remove(1);
@@ -197,4 +215,34 @@ fn detail(problem: &Problem, check: &crate::numeric::Check) -> MarkupLine {
         })
         .collect();
     MarkupLine::from(pieces.concat())
+}
+
+/// The series of `series` on the smallest scale, taken out of it where that scale is under
+/// a twentieth of the next larger one (a top's nutation beside its precession and spin): on
+/// the same axis they would look flat. Spans are sorted and cut at the last such gap;
+/// `None` where there is none. A series that does not move at all stays.
+fn small_moves(series: &mut Vec<Series>) -> Option<Vec<Series>> {
+    let span = |s: &Series| {
+        let (lo, hi) = (s.points.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.1), hi.max(p.1))
+        });
+        hi - lo
+    };
+    let largest = series.iter().map(span).fold(0.0, f64::max);
+    let mut spans: Vec<f64> = (series.iter().map(span))
+        .filter(|x| *x > largest * 1e-9)
+        .collect();
+    spans.sort_by(|a, b| b.total_cmp(a));
+    let cut = (spans.windows(2).rev()).find(|w| w[1] < w[0] / 20.0)?[1];
+    let mut taken = Vec::new();
+    let mut kept = Vec::new();
+    for s in series.drain(..) {
+        let x = span(&s);
+        match x <= cut && x > largest * 1e-9 {
+            true => taken.push(s),
+            false => kept.push(s),
+        }
+    }
+    *series = kept;
+    Some(taken)
 }

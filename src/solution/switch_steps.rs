@@ -74,8 +74,53 @@ pub fn attach(
         }
         if let Some((site, closed)) = sliding {
             constant_at_start(problem, answers, views, &site, &closed);
+            slips_at_start(problem, answers, views, &site, &closed);
         }
     });
+}
+
+/// A `slips` asked of the site at the start: the quantity that decides it, the slip
+/// velocity of the contact point (the velocity rolling makes zero), in symbols and its
+/// number, where that agrees with the answer.
+fn slips_at_start(
+    problem: &Problem,
+    answers: &[Answer],
+    views: &mut [AnswerView],
+    site: &str,
+    closed: &Closed,
+) {
+    let v = initial_values(problem);
+    let at_start = simplify(&crate::symbolic::substitute(&closed.slip.1, &|s| {
+        (*s == Symbol::Time).then(Expr::zero)
+    }));
+    let speed = eval(&at_start, &v);
+    for (i, question) in problem.questions.iter().enumerate() {
+        let QuestionKind::Slips { site: k } = question.kind else {
+            continue;
+        };
+        let fresh =
+            question.at == crate::problem::QuestionAt::default() && question.about.is_none();
+        let slides = answers
+            .get(i)
+            .and_then(|a| crate::numeric::slip_speed(&a.values));
+        if problem.site_name(k) != site || !fresh || !slides.is_some_and(|s| agrees(s, speed.abs()))
+        {
+            continue;
+        }
+        views[i].steps.push(step(
+            "What decides it is the slip velocity of the contact point, the velocity that rolling makes zero, at the start:",
+            format!(
+                "v_{{\\mathrm{{slip}}}} = {} = {} = {}\\ \\mathrm{{m/s}} \\neq 0",
+                latex(&closed.slip.0),
+                latex(&at_start),
+                super::answers::number_tex(speed)
+            ),
+        ));
+        views[i].steps.push(step(
+            "It is not zero: yes, it slips, and friction is $\\mu N$ against the slip until the slip velocity falls to zero.",
+            String::new(),
+        ));
+    }
 }
 
 /// A second rate asked at the start, while the site slides: constant until it rolls, in
