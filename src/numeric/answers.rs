@@ -174,6 +174,31 @@ pub fn answer_in(
             }
             vec![(Quantity::Named(text.clone()), x)]
         }
+        QuestionKind::VectorValue { quantity, text } => {
+            let to = question.frame.unwrap_or(crate::problem::BodyId::GROUND);
+            let at = super::VectorAt {
+                t,
+                q: &q,
+                rates: &rates,
+                accelerations: &evaluation.accelerations,
+            };
+            let found = super::vector_components(problem, *quantity, to, at).map_err(|e| {
+                failure(
+                    question,
+                    format!("cannot find `{text}`: {e}"),
+                    "ask for the vector in N (remove `in`)",
+                )
+            })?;
+            frame = Some(problem.body_name(to).to_string());
+            vector_axes(problem, *quantity)
+                .map(|axis| {
+                    (
+                        Quantity::Named(format!("{text}.{}", AXES[axis])),
+                        found[axis],
+                    )
+                })
+                .collect()
+        }
         QuestionKind::Reaction { site: index } => {
             let (found, to) = reaction_values(
                 problem,
@@ -243,6 +268,23 @@ pub fn answer_in(
         frame,
         period,
     })
+}
+
+/// The names of the axes, as the components of a vector answer are named.
+pub const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// The axes a vector value has components along: in a plane, x and y for a point's
+/// position, velocity or acceleration and z alone for a body's angular velocity or
+/// acceleration; in space all three.
+pub fn vector_axes(
+    problem: &Problem,
+    quantity: crate::problem::VectorQuantity,
+) -> std::ops::Range<usize> {
+    match (problem.dimension, quantity.is_angular()) {
+        (crate::problem::Dimension::Two, false) => 0..2,
+        (crate::problem::Dimension::Two, true) => 2..3,
+        _ => 0..3,
+    }
 }
 
 /// The time and state a question starts from, before its own `state` and any simulation:

@@ -49,6 +49,7 @@ mod validate;
 mod validated;
 pub mod variant;
 mod vary;
+mod vector_value;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
 pub use expressions::axis_index;
@@ -61,6 +62,7 @@ pub use question_model::*;
 pub use schema::SCHEMA;
 pub use validated::Problem;
 pub use vary::{Grid, Vary};
+pub use vector_value::VectorQuantity;
 
 #[cfg(test)]
 mod tests;

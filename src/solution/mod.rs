@@ -58,6 +58,7 @@ mod static_answers;
 mod statics;
 mod switch_steps;
 mod tex;
+mod vector_answers;
 mod written_out;
 
 pub use answer_sheet::{
