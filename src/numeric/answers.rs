@@ -175,29 +175,15 @@ pub fn answer_in(
             vec![(Quantity::Named(text.clone()), x)]
         }
         QuestionKind::VectorValue { quantity, text } => {
-            let to = question.frame.unwrap_or(crate::problem::BodyId::GROUND);
             let at = super::VectorAt {
                 t,
                 q: &q,
                 rates: &rates,
                 accelerations: &evaluation.accelerations,
             };
-            let found = super::vector_components(problem, *quantity, to, at).map_err(|e| {
-                failure(
-                    question,
-                    format!("cannot find `{text}`: {e}"),
-                    "ask for the vector in N (remove `in`)",
-                )
-            })?;
-            frame = Some(problem.body_name(to).to_string());
-            vector_axes(problem, *quantity)
-                .map(|axis| {
-                    (
-                        Quantity::Named(format!("{text}.{}", AXES[axis])),
-                        found[axis],
-                    )
-                })
-                .collect()
+            let (found, to) = vector_values(problem, question, (*quantity, text), at)?;
+            frame = Some(to);
+            found
         }
         QuestionKind::Reaction { site: index } => {
             let (found, to) = reaction_values(
@@ -420,6 +406,33 @@ fn reaction_values(
         .map(|(column, x)| (Quantity::Reaction(column), x))
         .collect();
     Ok((found, problem.body_name(to).to_string()))
+}
+
+/// The components of a vector value along the unit vectors of the frame the question asks
+/// for (`N` unless `in` says otherwise), each named `v(P).x`, with that frame's name.
+fn vector_values(
+    problem: &Problem,
+    question: &Question,
+    (quantity, text): (crate::problem::VectorQuantity, &str),
+    at: super::VectorAt,
+) -> Result<(Vec<(Quantity, f64)>, String), ProblemError> {
+    let to = question.frame.unwrap_or(crate::problem::BodyId::GROUND);
+    let found = super::vector_components(problem, quantity, to, at).map_err(|e| {
+        failure(
+            question,
+            format!("cannot find `{text}`: {e}"),
+            "ask for the vector in N (remove `in`)",
+        )
+    })?;
+    let values = vector_axes(problem, quantity)
+        .map(|axis| {
+            (
+                Quantity::Named(format!("{text}.{}", AXES[axis])),
+                found[axis],
+            )
+        })
+        .collect();
+    Ok((values, problem.body_name(to).to_string()))
 }
 
 /// The generalized force that drives prescribed coordinate `coordinate`.

@@ -34,7 +34,9 @@ mod steady;
 mod system;
 mod vector_value;
 
-pub use answer_frame::{reaction_frame, reaction_frame_named};
+pub use answer_frame::{
+    reaction_frame, reaction_frame_named, rotation_between as answer_frame_rotation,
+};
 pub use answers::{
     answer_all, answer_all_with, coordinate_unit, entry_name, holds, is_free_moment,
     unit as answer_unit, vector_axes, Answer, Quantity,

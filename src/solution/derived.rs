@@ -119,23 +119,26 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .reactions
         .iter()
         .map(|(joint, f, m)| {
-            let parent = derivation
-                .model
-                .sites
-                .iter()
+            let (parent, child) = (derivation.model.sites.iter())
                 .find(|j| &j.name == joint)
-                .map(|j| j.parent)
-                .unwrap_or(BodyId::GROUND);
-            let frame = problem.body_name(parent);
+                .map_or((BodyId::GROUND, BodyId::GROUND), |j| (j.parent, j.child));
+            let written =
+                super::reaction_frames::simplest(problem, (parent, child), (*f, *m), (q0, rates0));
+            let frame = problem.body_name(written.frame);
             Reaction {
                 joint: joint.clone(),
-                force: triple(f),
-                moment: triple(m),
-                force_tex: Math::from(numeric_vector_tex(frame, f, "N")),
-                moment_tex: Math::from(numeric_vector_tex(frame, m, "N\\,m")),
+                force: triple(&written.force),
+                moment: triple(&written.moment),
+                force_tex: Math::from(numeric_vector_tex(frame, &written.force, "N")),
+                moment_tex: Math::from(numeric_vector_tex(frame, &written.moment, "N\\,m")),
             }
         })
         .collect();
+    (solution.solve_notes).extend(MarkupLine::all(super::normal_sense::notes(
+        &derivation.model,
+        (q0, rates0),
+        &initial.reactions,
+    )));
     // The pictures at the initial state, the configuration first.
     let drawings = crate::solution::pictures::draw(
         derivation,
