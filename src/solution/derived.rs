@@ -307,15 +307,18 @@ pub fn plan(derivation: &Derivation) -> Plan {
             unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),
         })
         .collect();
-    let rejected_all: Vec<RejectedView> = derivation
-        .rejected
-        .iter()
-        .map(|r| super::rejected::view(derivation, r))
+    // A candidate about the very point of a chosen row (ΣM_J where J is D*) is that row.
+    let views: Vec<Option<RejectedView>> = (derivation.rejected.iter())
+        .map(|r| {
+            (!super::rejected::repeats_the_same_point(derivation, r))
+                .then(|| super::rejected::view(derivation, r))
+        })
         .collect();
     let rejected = crate::plan::highlights(&derivation.model, &derivation.rejected)
         .into_iter()
-        .map(|i| rejected_all[i].clone())
+        .filter_map(|i| views[i].clone())
         .collect();
+    let rejected_all: Vec<RejectedView> = views.into_iter().flatten().collect();
     let note = match derivation.method {
         Method::NewtonEuler => format!(
             "Every body is a free body: {} equations per body; the unknowns are every second derivative and every reaction component.",
