@@ -175,12 +175,7 @@ pub fn answer_in(
             vec![(Quantity::Named(text.clone()), x)]
         }
         QuestionKind::VectorValue { quantity, text } => {
-            let at = super::VectorAt {
-                t,
-                q: &q,
-                rates: &rates,
-                accelerations: &evaluation.accelerations,
-            };
+            let at = (t, &q[..], &rates[..], &evaluation.accelerations[..]);
             let (found, to) = vector_values(problem, question, (*quantity, text), at)?;
             frame = Some(to);
             found
@@ -414,9 +409,15 @@ fn vector_values(
     problem: &Problem,
     question: &Question,
     (quantity, text): (crate::problem::VectorQuantity, &str),
-    at: super::VectorAt,
+    (t, q, rates, accelerations): (f64, &[f64], &[f64], &[f64]),
 ) -> Result<(Vec<(Quantity, f64)>, String), ProblemError> {
     let to = question.frame.unwrap_or(crate::problem::BodyId::GROUND);
+    let at = super::VectorAt {
+        t,
+        q,
+        rates,
+        accelerations,
+    };
     let found = super::vector_components(problem, quantity, to, at).map_err(|e| {
         failure(
             question,
