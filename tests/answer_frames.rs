@@ -258,3 +258,68 @@ fn a_gear_pair_with_crossed_axles_is_refused() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// Step 5's table of reactions writes each in the frame with the fewest components: the
+/// gear pair's tooth force, tangential, is I_B |q̈_B| / r_B = 15 N along n̂_y there, as the
+/// Answers give it, not along the turning pinion's â_x, â_y.
+#[test]
+fn the_reaction_table_writes_the_tooth_force_in_its_simplest_frame() {
+    let out = run(&[
+        "explain".as_ref(),
+        problem("gear-pair-torque").as_os_str(),
+        "--format".as_ref(),
+        "markdown".as_ref(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let row = text
+        .lines()
+        .find(|l| l.starts_with("| mesh |"))
+        .expect("the tooth force's row");
+    let force: f64 = 0.03 * (1.2 / (0.002 + 0.03 / 9.0)) / 3.0 / 0.15;
+    assert!((force - 15.0).abs() < 1e-9, "by hand: {force}");
+    assert!(
+        row.contains("15 \\hat{\\mathbf{n}}_{y}") && !row.contains("\\hat{\\mathbf{a}}"),
+        "{row}"
+    );
+}
+
+/// The disc in the cylinder, at rest at x = 0.05 m: the normal force at the contact, drawn
+/// along the line of centres (outward, away from the disc), comes out negative; by hand
+/// its size is m g cos φ = m g √((R − r)² − x²)/(R − r) = 9.73306 N, and the handout says
+/// it is a push on the disc.
+#[test]
+fn a_negative_normal_force_is_said_as_the_push_it_is() {
+    let out = run(&[
+        "explain".as_ref(),
+        problem("disc-in-cylinder").as_os_str(),
+        "--format".as_ref(),
+        "markdown".as_ref(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let (m, r_big, r, g, x) = (1.0f64, 0.5f64, 0.1f64, 9.81f64, 0.05f64);
+    let push = m * g * ((r_big - r).powi(2) - x * x).sqrt() / (r_big - r);
+    let said = text
+        .split("a push of ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|x| x.parse::<f64>().ok())
+        .expect("the handout says the push");
+    assert!(
+        (said - push).abs() <= 1e-5 * push,
+        "{said} against {push} by hand"
+    );
+    assert!(
+        text.contains("F^{\\mathrm{contact}}_{n} = -9.733"),
+        "the value, negative"
+    );
+}

@@ -61,5 +61,6 @@ mod support;
 mod svg_reader;
 mod validation;
 mod variants;
+mod vector_values;
 mod whole_handouts;
 mod written_out;

@@ -131,12 +131,37 @@ fn one(
             Ok((!wrong.is_empty()).then(|| wrong.join("; ")))
         }
         QuestionKind::Reaction { site } => reaction(reference, *site, answer, value),
+        QuestionKind::VectorValue { .. } => vector_value(answer, value),
         QuestionKind::Slips { .. } | QuestionKind::Tips { .. } => {
             yes_or_no(&question.kind, answer, value)
         }
         QuestionKind::Show { .. } => shown(answer, value),
         QuestionKind::Stability { .. } => stability(answer, value),
     }
+}
+
+/// A vector `value`: every component along the unit vectors of the frame `answer` gives
+/// them in, each within 0.5 %.
+fn vector_value(answer: &Answer, value: &Value) -> Result<Option<String>, String> {
+    let Value::Object(map) = value else {
+        return Err("expected the components, e.g. { \"x\": 0.5, \"y\": -1.2 }".into());
+    };
+    let frame = answer.frame.as_deref().unwrap_or("N");
+    if let Some(given) = map.get("frame") {
+        if given.as_str() != Some(frame) {
+            return Err(format!("give the components along {frame}'s unit vectors"));
+        }
+    }
+    let mut wrong = Vec::new();
+    for (found, expected) in &answer.values {
+        let name = found.to_string();
+        let axis = name.rsplit('.').next().unwrap_or("x");
+        match map.get(axis).and_then(number) {
+            None => wrong.push(format!("the {axis} component is missing")),
+            Some(g) => wrong.extend(scalar(g, *expected).map(|w| format!("{axis}: {w}"))),
+        }
+    }
+    Ok((!wrong.is_empty()).then(|| wrong.join("; ")))
 }
 
 /// A `stability`: the values where the stability changes, in order, each within 0.5 %.

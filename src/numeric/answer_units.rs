@@ -23,6 +23,10 @@ pub fn unit(problem: &Problem, question: &Question, found: &Quantity) -> String 
                 })
             })
             .unwrap_or_default(),
+        QuestionKind::VectorValue { quantity, .. } => question
+            .unit
+            .clone()
+            .unwrap_or_else(|| quantity.unit().into()),
         QuestionKind::Reaction { .. } => {
             if matches!(found, Quantity::Reaction(column) if column.is_moment()) {
                 "N m".into()

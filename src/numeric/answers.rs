@@ -177,6 +177,12 @@ pub fn answer_in(
             }
             vec![(Quantity::Named(text.clone()), x)]
         }
+        QuestionKind::VectorValue { quantity, text } => {
+            let at = (t, &q[..], &rates[..], &evaluation.accelerations[..]);
+            let (found, to) = vector_values(problem, question, (*quantity, text), at)?;
+            frame = Some(to);
+            found
+        }
         QuestionKind::Reaction { site: index } => {
             let (found, to) = reaction_values(
                 problem,
@@ -268,6 +274,23 @@ fn described_answer(
         frame: None,
         period: None,
     })
+}
+
+/// The names of the axes, as the components of a vector answer are named.
+pub const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// The axes a vector value has components along: in a plane, x and y for a point's
+/// position, velocity or acceleration and z alone for a body's angular velocity or
+/// acceleration; in space all three.
+pub fn vector_axes(
+    problem: &Problem,
+    quantity: crate::problem::VectorQuantity,
+) -> std::ops::Range<usize> {
+    match (problem.dimension, quantity.is_angular()) {
+        (crate::problem::Dimension::Two, false) => 0..2,
+        (crate::problem::Dimension::Two, true) => 2..3,
+        _ => 0..3,
+    }
 }
 
 /// The time and state a question starts from, before its own `state` and any simulation:
@@ -403,6 +426,39 @@ fn reaction_values(
         .map(|(column, x)| (Quantity::Reaction(column), x))
         .collect();
     Ok((found, problem.body_name(to).to_string()))
+}
+
+/// The components of a vector value along the unit vectors of the frame the question asks
+/// for (`N` unless `in` says otherwise), each named `v(P).x`, with that frame's name.
+fn vector_values(
+    problem: &Problem,
+    question: &Question,
+    (quantity, text): (crate::problem::VectorQuantity, &str),
+    (t, q, rates, accelerations): (f64, &[f64], &[f64], &[f64]),
+) -> Result<(Vec<(Quantity, f64)>, String), ProblemError> {
+    let to = question.frame.unwrap_or(crate::problem::BodyId::GROUND);
+    let at = super::VectorAt {
+        t,
+        q,
+        rates,
+        accelerations,
+    };
+    let found = super::vector_components(problem, quantity, to, at).map_err(|e| {
+        failure(
+            question,
+            format!("cannot find `{text}`: {e}"),
+            "ask for the vector in N (remove `in`)",
+        )
+    })?;
+    let values = vector_axes(problem, quantity)
+        .map(|axis| {
+            (
+                Quantity::Named(format!("{text}.{}", AXES[axis])),
+                found[axis],
+            )
+        })
+        .collect();
+    Ok((values, problem.body_name(to).to_string()))
 }
 
 /// The generalized force that drives prescribed coordinate `coordinate`.

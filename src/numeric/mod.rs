@@ -34,11 +34,14 @@ mod speeds;
 mod stability_edge;
 mod steady;
 mod system;
+mod vector_value;
 
-pub use answer_frame::{reaction_frame, reaction_frame_named};
+pub use answer_frame::{
+    reaction_frame, reaction_frame_named, rotation_between as answer_frame_rotation,
+};
 pub use answers::{
     answer_all, answer_all_with, coordinate_unit, entry_name, holds, is_free_moment,
-    unit as answer_unit, Answer, Quantity,
+    unit as answer_unit, vector_axes, Answer, Quantity,
 };
 pub use checks::{confirm, modes, small_oscillation, Check, CheckKind, Phrase};
 pub use constraint_checks::drive_energy_check;
@@ -62,6 +65,7 @@ pub use simulate::{
 };
 pub use stability_edge::{edges, name as edge_name, Edge};
 pub use system::{Evaluation, ReactionColumn, System};
+pub use vector_value::{components as vector_components, At as VectorAt};
 
 use std::fmt;
 

@@ -268,7 +268,7 @@ impl Reader {
     }
 
     /// A point name: declared point, `A*`, `A.o`, or a joint.
-    fn point_ref(&mut self, value: &Value, path: &str) -> Option<PointRef> {
+    pub(super) fn point_ref(&mut self, value: &Value, path: &str) -> Option<PointRef> {
         let text = string(value, path, &mut self.diag)?.trim();
         let star = text.strip_suffix('*').map(|b| (b, true));
         let origin = text.strip_suffix(".o").map(|b| (b, false));

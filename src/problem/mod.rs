@@ -51,6 +51,7 @@ mod validate;
 mod validated;
 pub mod variant;
 mod vary;
+mod vector_value;
 
 pub use error::{LoadError, ProblemError, ProblemErrors};
 pub use expressions::axis_index;
@@ -64,6 +65,7 @@ pub use schema::SCHEMA;
 pub use state::State;
 pub use validated::Problem;
 pub use vary::{Grid, Vary};
+pub use vector_value::VectorQuantity;
 
 #[cfg(test)]
 mod tests;

@@ -23,6 +23,14 @@ pub enum QuestionKind {
         /// Its text as written.
         text: String,
     },
+    /// A vector: the position, velocity or acceleration of a point, or the angular velocity
+    /// or acceleration of a body, in `N` (`v(P)`, `w(B)`), with its text as written.
+    VectorValue {
+        /// What it is, and of which point or body.
+        quantity: super::vector_value::VectorQuantity,
+        /// Its text as written.
+        text: String,
+    },
     /// A reaction, as a site index (see [`Problem::site_name`](super::Problem::site_name)).
     Reaction {
         /// The site.
@@ -155,8 +163,8 @@ pub struct Question {
     pub unit: Option<String>,
     /// The symbol a `value` is answered by (LaTeX math), if given.
     pub symbol: Option<String>,
-    /// `in`: the frame a reaction's components are given in, when the question chooses
-    /// one (otherwise its site's parent's).
+    /// `in`: the frame a reaction's or a vector value's components are given in, when the
+    /// question chooses one (otherwise its site's parent's, or `N`).
     pub frame: Option<BodyId>,
     /// The JSON path, e.g. `find.questions[0]`.
     pub path: String,

@@ -210,6 +210,10 @@ impl Reader {
             "value" => {
                 let vpath = key_path(path, "value");
                 let v = &fields["value"];
+                if let Some(found) = v.as_str().and_then(|s| self.vector_value(s, &vpath)) {
+                    let text = v.as_str().unwrap_or_default().trim().to_string();
+                    return found.map(|quantity| QuestionKind::VectorValue { quantity, text });
+                }
                 let expression = expressions::scalar(
                     v,
                     &vpath,
@@ -279,11 +283,14 @@ impl Reader {
         path: &str,
         kind: &QuestionKind,
     ) -> Option<crate::problem::BodyId> {
-        if !matches!(kind, QuestionKind::Reaction { .. }) {
+        if !matches!(
+            kind,
+            QuestionKind::Reaction { .. } | QuestionKind::VectorValue { .. }
+        ) {
             self.diag.hint(
                 path,
                 "only a vector answer has components to give in a frame",
-                "give `in` with a `reaction` question, or remove it",
+                "give `in` with a `reaction` or a vector `value` such as \"v(P)\", or remove it",
             );
             return None;
         }

@@ -12,7 +12,7 @@ use std::fmt::Write;
 /// What a question asks for, as `answer --format json` names it.
 fn kind_name(question: &Question) -> &'static str {
     match question.kind {
-        QuestionKind::Value { .. } => "value",
+        QuestionKind::Value { .. } | QuestionKind::VectorValue { .. } => "value",
         QuestionKind::Reaction { .. } => "reaction",
         QuestionKind::Drive { .. } => "drive",
         QuestionKind::Steady { .. } => "steady",
@@ -77,6 +77,9 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
                 out.insert("value".into(), number(*x));
                 out.insert("unit".into(), unit_of(name).into());
             }
+        }
+        QuestionKind::VectorValue { .. } => {
+            super::vector_answers::record(problem, question, answer, &mut out);
         }
         QuestionKind::Reaction { .. } => {
             let mut components = Map::new();
@@ -228,6 +231,10 @@ pub fn key_columns(problem: &Problem, answers: &[Answer]) -> Vec<(String, f64)> 
                 | QuestionKind::Drive { .. }
                 | QuestionKind::Period { .. } => base.clone(),
                 QuestionKind::Show { .. } => format!("{base}.{found}"),
+                QuestionKind::VectorValue { .. } => {
+                    let at = answer.frame.as_deref().unwrap_or("N");
+                    format!("{base}.{}@{at}", super::vector_answers::axis_of(found))
+                }
                 QuestionKind::Reaction { .. } => {
                     let at = answer.frame.as_deref().unwrap_or("N");
                     match reaction_part(found) {

@@ -178,6 +178,9 @@ fn blank_lines(problem: &Problem, kind: &QuestionKind) -> usize {
         QuestionKind::Show { .. } => 0,
         QuestionKind::Reaction { .. } if problem.dimension == Dimension::Two => 2,
         QuestionKind::Reaction { .. } => 3,
+        QuestionKind::VectorValue { quantity, .. } => {
+            crate::numeric::vector_axes(problem, *quantity).len()
+        }
         QuestionKind::Steady { unknowns, .. } => unknowns.len().max(1),
         QuestionKind::Stability { .. } => 2,
         QuestionKind::Describe { .. } => 4,
@@ -189,6 +192,7 @@ fn blank_lines(problem: &Problem, kind: &QuestionKind) -> usize {
 pub fn asked(problem: &Problem, question: &Question) -> String {
     match &question.kind {
         QuestionKind::Value { expression, .. } => format!("Find ${}$.", latex(expression)),
+        QuestionKind::VectorValue { .. } => super::vector_answers::asked(problem, question),
         QuestionKind::Reaction { site } => {
             format!("Find the reaction at {}.", problem.site_name(*site))
         }
@@ -353,6 +357,9 @@ fn value_tex(
                 None if written.len() <= LONGEST_RESTATED => written,
                 None => String::new(),
             }
+        }
+        QuestionKind::VectorValue { quantity, .. } => {
+            super::vector_answers::component_tex(problem, *quantity, answer, found)
         }
         QuestionKind::Reaction { site } => {
             // `O.force.x`: the component along a unit vector of the answer's frame.

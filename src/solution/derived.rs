@@ -127,23 +127,26 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .reactions
         .iter()
         .map(|(joint, f, m)| {
-            let parent = derivation
-                .model
-                .sites
-                .iter()
+            let (parent, child) = (derivation.model.sites.iter())
                 .find(|j| &j.name == joint)
-                .map(|j| j.parent)
-                .unwrap_or(BodyId::GROUND);
-            let frame = problem.body_name(parent);
+                .map_or((BodyId::GROUND, BodyId::GROUND), |j| (j.parent, j.child));
+            let written =
+                super::reaction_frames::simplest(problem, (parent, child), (*f, *m), (q0, rates0));
+            let frame = problem.body_name(written.frame);
             Reaction {
                 joint: joint.clone(),
-                force: triple(f),
-                moment: triple(m),
-                force_tex: Math::from(numeric_vector_tex(frame, f, "N")),
-                moment_tex: Math::from(numeric_vector_tex(frame, m, "N\\,m")),
+                force: triple(&written.force),
+                moment: triple(&written.moment),
+                force_tex: Math::from(numeric_vector_tex(frame, &written.force, "N")),
+                moment_tex: Math::from(numeric_vector_tex(frame, &written.moment, "N\\,m")),
             }
         })
         .collect();
+    (solution.solve_notes).extend(MarkupLine::all(super::normal_sense::notes(
+        &derivation.model,
+        (q0, rates0),
+        &initial.reactions,
+    )));
     // The pictures at the initial state, the configuration first.
     let drawings = crate::solution::pictures::draw(
         derivation,
@@ -312,15 +315,18 @@ pub fn plan(derivation: &Derivation) -> Plan {
             unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),
         })
         .collect();
-    let rejected_all: Vec<RejectedView> = derivation
-        .rejected
-        .iter()
-        .map(|r| super::rejected::view(derivation, r))
+    // A candidate about the very point of a chosen row (ΣM_J where J is D*) is that row.
+    let views: Vec<Option<RejectedView>> = (derivation.rejected.iter())
+        .map(|r| {
+            (!super::rejected::repeats_the_same_point(derivation, r))
+                .then(|| super::rejected::view(derivation, r))
+        })
         .collect();
     let rejected = crate::plan::highlights(&derivation.model, &derivation.rejected)
         .into_iter()
-        .map(|i| rejected_all[i].clone())
+        .filter_map(|i| views[i].clone())
         .collect();
+    let rejected_all: Vec<RejectedView> = views.into_iter().flatten().collect();
     let note = match derivation.method {
         Method::NewtonEuler => format!(
             "Every body is a free body: {} equations per body; the unknowns are every second derivative and every reaction component.",

@@ -44,10 +44,12 @@ mod loops;
 mod matrix;
 mod mode_shape;
 mod named_identity;
+mod normal_sense;
 mod on_constraint;
 mod pictures;
 mod question_answers;
 mod question_steps;
+mod reaction_frames;
 mod rejected;
 mod relations;
 mod row_names;
@@ -64,6 +66,7 @@ mod static_answers;
 mod statics;
 mod switch_steps;
 mod tex;
+mod vector_answers;
 mod written_out;
 
 pub use answer_sheet::{

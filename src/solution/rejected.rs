@@ -2,7 +2,7 @@
 //! plan's table uses, and the sentence on the order in which the rows are solved.
 
 use crate::equations::Derivation;
-use crate::plan::{Reason, Rejected, SpecialState};
+use crate::plan::{Reason, Rejected, SpecialState, Sum};
 use crate::render::context::Rejected as RejectedView;
 use crate::render::text::Math;
 use crate::symbolic::{latex, Expr};
@@ -75,6 +75,34 @@ pub fn view(derivation: &Derivation, rejected: &Rejected) -> RejectedView {
         reason_tex: Math::from(reason_tex),
         reason_after,
     }
+}
+
+/// Whether a candidate not used is a chosen row again, about the very same point: a joint
+/// at a body's mass centre makes ΣM_J and ΣM_{D*} one equation, said once, by the row.
+pub fn repeats_the_same_point(derivation: &Derivation, rejected: &Rejected) -> bool {
+    let Reason::Duplicate { row } = rejected.reason else {
+        return false;
+    };
+    let Some(chosen) = derivation.rows.get(row) else {
+        return false;
+    };
+    let (Sum::Moment { position: a, .. }, Sum::Moment { position: b, .. }) =
+        (&rejected.candidate.sum, &chosen.sum)
+    else {
+        return false;
+    };
+    if chosen.free_body != rejected.candidate.free_body {
+        return false;
+    }
+    let model = &derivation.model;
+    let apart = a
+        .minus(b)
+        .components_in(crate::problem::BodyId::GROUND, &model.frames);
+    crate::mechanics::sample_states(model).iter().all(|state| {
+        apart
+            .iter()
+            .all(|c| crate::symbolic::eval(c, state).abs() <= 1e-12)
+    })
 }
 
 /// Plan rows (indices from 0) as a sentence names them, from 1, a run of three or more by
