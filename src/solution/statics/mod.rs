@@ -59,6 +59,7 @@ pub fn handout(
             false => answers(&at, method, &worked)?,
         };
     }
+    super::concise::without_repeats(&mut solution, settings.every_rejected);
     Ok(solution)
 }
 
