@@ -1,6 +1,6 @@
 //! What a student need not read twice: the handout says each value once. An unknown's value
 //! at the initial state that an answer at that state already gives is left out of step 5's
-//! table of initial values, and step 3's candidate rows that the plan does not use are left
+//! tables of initial values and reactions, and step 3's candidate rows that the plan does not use are left
 //! out unless every one is asked for (`--verbose`); the rule by which a reaction's sign is
 //! read is said at the first answer that needs it.
 
@@ -15,6 +15,15 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
     sense_rule_once(&mut solution.answers);
     let said = said_at_start(solution);
     (solution.initial_values).retain(|v| !said.iter().any(|s| gives(s, v.name_tex.as_str())));
+    (solution.reactions).retain(|r| !said.iter().any(|s| gives_reaction(s, &r.joint)));
+}
+
+/// Whether an answer's value is a component of the reaction at `joint`, its force or moment.
+fn gives_reaction(value: &str, joint: &str) -> bool {
+    let name = crate::symbolic::latex_name(joint);
+    ["\\mathbf{F}^{", "\\mathbf{M}^{"]
+        .iter()
+        .any(|vector| value.starts_with(&format!("{vector}{name}}}")))
 }
 
 /// How a reaction's sign reads, said in full at the first answer and briefly after it.
@@ -69,5 +78,16 @@ mod tests {
         assert!(!gives("\\ddot{x}_{2} = 0.72", "\\ddot{x}"));
         assert!(!gives("\\ddot{\\theta} = 1", "\\ddot{x}"));
         assert!(!gives("x = 1", ""));
+    }
+
+    #[test]
+    fn a_reaction_is_given_by_its_components() {
+        let f = "\\mathbf{F}^{\\mathrm{floor}} \\cdot \\hat{\\mathbf{n}}_{y} = 56\\ \\mathrm{N}";
+        assert!(super::gives_reaction(f, "floor"));
+        assert!(!super::gives_reaction(f, "incline"));
+        assert!(super::gives_reaction(
+            "\\mathbf{M}^{O} \\cdot \\hat{\\mathbf{n}}_{z} = 1",
+            "O"
+        ));
     }
 }

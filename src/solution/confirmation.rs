@@ -140,8 +140,8 @@ fn energy_constant(trajectory: &Trajectory, held: bool) -> Option<String> {
         ));
     }
     Some(format!(
-        "{head}: along the motion $E$ stays constant, while {} J is traded between $T$ \
-         and $V$ (the energy plot).",
+        "{head}, and along the motion it does, while {} J is traded between $T$ and $V$ \
+         (the energy plot).",
         num(traded)
     ))
 }
