@@ -334,12 +334,14 @@ pub fn pgfplots(
     text.push_str(&format!("  xlabel={{{}}},\n", x_label.tex));
     text.push_str(&format!("  ylabel={{{}}},\n", y_label.tex));
     // Three or four plots side by side on the page, each with its legend under it, small:
-    // the rows of a legend are lower than a second row of plots. The width is the page's
+    // the rows of a legend are lower than a second row of plots. The legend hangs a fixed
+    // 31 pt under the axis, below its tick labels and the time's title, whatever the
+    // plot's height left the axis. The width is the page's
     // to set (`\pgfplotsset{width=…}`), by how many plots share the row.
     text.push_str("  height=2.9cm, grid=major,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
-        "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,-0.48)}}, anchor=north, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
+        "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,0)}}, anchor=north, yshift=-31pt, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
         legend_columns(series, plots_in_row)
     ));
     text.push_str("]\n");

@@ -104,8 +104,14 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
             many.join(", ")
         ),
     };
+    // Why the accelerations are step 4's is said once, at the first auxiliary speed.
+    let accelerations = if r == super::kane::speed_rows(derivation) + 1 {
+        format!(" The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe.")
+    } else {
+        String::new()
+    };
     Some(format!(
-        "{motion} Only ${unknown}$ and the other forces on ${bodies}$ from outside do work with them.{inside} The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe."
+        "{motion} Only ${unknown}$ and the other forces on ${bodies}$ from outside do work with them.{inside}{accelerations}"
     ))
 }
 

@@ -36,6 +36,7 @@ pub fn handout(worked: &Worked, settings: &Handout) -> Solution {
         super::switch_steps::attach(problem, &worked.derivation, answers, &mut views);
         solution.answers = views;
     }
+    super::concise::without_repeats(&mut solution, settings.every_rejected);
     solution
 }
 

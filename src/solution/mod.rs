@@ -15,6 +15,7 @@ mod auxiliary;
 mod build;
 mod closed_form;
 mod closure_loops;
+mod concise;
 mod confirmation;
 mod constancy;
 mod constrained;

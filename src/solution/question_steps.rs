@@ -182,7 +182,7 @@ fn period_steps(
             "\\omega_d",
         ),
     };
-    let mut text = format!("{which} has the angular frequency ${omega}$ (the imaginary part of its eigenvalues), and the period is");
+    let mut text = format!("{which} has the angular frequency ${omega}$ and the period is");
     if found.damping_ratio > 0.0 {
         text = format!(
             "{text} that of the damped motion (damping ratio {}):",

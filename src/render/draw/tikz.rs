@@ -18,21 +18,21 @@ pub const PAGE_SIZE: Size = Size {
 /// the table when the two are wider than the line, so no higher than there.
 pub const BESIDE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 180.0,
+    height: 160.0,
 };
 
-/// The largest a free body may be above its table of forces: about a quarter of the text's
+/// The largest a free body may be above its table of forces: under a fifth of the text's
 /// height, so that a one- or two-body handout keeps within four pages.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 170.0,
+    height: 140.0,
 };
 
 /// The largest the system's picture may be at the head of a handout: under half the text's
 /// height (a narrow one is set beside the first tables).
 pub const CONFIGURATION: Size = Size {
     width: 500.0,
-    height: 300.0,
+    height: 260.0,
 };
 
 /// The scale under which labels print a size smaller (`\scriptsize`, 7 pt), so that they

@@ -42,6 +42,7 @@ pub fn handout(at_rest: &WorkedAtRest, student: bool, settings: &Handout) -> Sol
             _ => super::answers::blank(problem),
         };
     }
+    super::concise::without_repeats(&mut solution, settings.every_rejected);
     solution
 }
 

@@ -1,0 +1,93 @@
+//! What a student need not read twice: the handout says each value once. An unknown's value
+//! at the initial state that an answer at that state already gives is left out of step 5's
+//! tables of initial values and reactions, and step 3's candidate rows that the plan does not use are left
+//! out unless every one is asked for (`--verbose`); the rule by which a reaction's sign is
+//! read is said at the first answer that needs it.
+
+use crate::render::Solution;
+
+/// Leaves out of `solution` what its Answers already say and, unless `every_rejected`, the
+/// rows step 3 does not use.
+pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
+    if !every_rejected {
+        solution.plan.rejected.clear();
+    }
+    sense_rule_once(&mut solution.answers);
+    let said = said_at_start(solution);
+    (solution.initial_values).retain(|v| !said.iter().any(|s| gives(s, v.name_tex.as_str())));
+    (solution.reactions).retain(|r| !said.iter().any(|s| gives_reaction(s, &r.joint)));
+}
+
+/// Whether an answer's value is a component of the reaction at `joint`, its force or moment.
+fn gives_reaction(value: &str, joint: &str) -> bool {
+    let name = crate::symbolic::latex_name(joint);
+    ["\\mathbf{F}^{", "\\mathbf{M}^{"]
+        .iter()
+        .any(|vector| value.starts_with(&format!("{vector}{name}}}")))
+}
+
+/// How a reaction's sign reads, said in full at the first answer and briefly after it.
+const SENSE_RULE: &str =
+    "The free bodies draw each unknown component along its positive unit vector: ";
+
+/// The sign rule of reactions in full at its first answer; later answers say only which
+/// components act as drawn.
+fn sense_rule_once(answers: &mut [crate::render::AnswerView]) {
+    let mut said = false;
+    for answer in answers {
+        let Some(at) = answer.note.find(SENSE_RULE) else {
+            continue;
+        };
+        if said {
+            let rest = answer.note[at + SENSE_RULE.len()..].to_string();
+            answer.note = format!("{}Here {rest}", &answer.note[..at]);
+        }
+        said = true;
+    }
+}
+
+/// The values the Answers give at the initial state: those of an answer said to be at it,
+/// and of every answer at the same state.
+fn said_at_start(solution: &Solution) -> Vec<String> {
+    let key = |a: &crate::render::AnswerView| format!("{}§{}", a.at_tex.as_str(), a.at_note);
+    let starts: Vec<String> = (solution.answers.iter())
+        .filter(|a| a.at_note.contains("initial state"))
+        .map(key)
+        .collect();
+    (solution.answers.iter())
+        .filter(|a| starts.contains(&key(a)))
+        .flat_map(|a| a.values_tex.iter().map(|v| v.as_str().to_string()))
+        .collect()
+}
+
+/// Whether the answer's value `value` (`\ddot{x} = 0.72\ \mathrm{m/s^{2}}`) gives `name`.
+fn gives(value: &str, name: &str) -> bool {
+    !name.is_empty()
+        && value
+            .strip_prefix(name)
+            .is_some_and(|rest| rest.trim_start().starts_with('='))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::gives;
+
+    #[test]
+    fn a_value_gives_the_name_it_opens_with() {
+        assert!(gives("\\ddot{x} = 0.72\\ \\mathrm{m/s^{2}}", "\\ddot{x}"));
+        assert!(!gives("\\ddot{x}_{2} = 0.72", "\\ddot{x}"));
+        assert!(!gives("\\ddot{\\theta} = 1", "\\ddot{x}"));
+        assert!(!gives("x = 1", ""));
+    }
+
+    #[test]
+    fn a_reaction_is_given_by_its_components() {
+        let f = "\\mathbf{F}^{\\mathrm{floor}} \\cdot \\hat{\\mathbf{n}}_{y} = 56\\ \\mathrm{N}";
+        assert!(super::gives_reaction(f, "floor"));
+        assert!(!super::gives_reaction(f, "incline"));
+        assert!(super::gives_reaction(
+            "\\mathbf{M}^{O} \\cdot \\hat{\\mathbf{n}}_{z} = 1",
+            "O"
+        ));
+    }
+}
