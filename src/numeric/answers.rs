@@ -167,15 +167,10 @@ pub fn answer_in(
     let values = match &question.kind {
         QuestionKind::Value { expression, text } => {
             let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
-            let x = eval(expression, &v);
-            if !x.is_finite() {
-                return Err(failure(
-                    question,
-                    format!("`{text}` is not finite at this state"),
-                    "ask at a state where the expression is defined",
-                ));
-            }
-            vec![(Quantity::Named(text.clone()), x)]
+            vec![(
+                Quantity::Named(text.clone()),
+                finite(question, text, eval(expression, &v))?,
+            )]
         }
         QuestionKind::VectorValue { quantity, text } => {
             let at = (t, &q[..], &rates[..], &evaluation.accelerations[..]);
@@ -228,14 +223,10 @@ pub fn answer_in(
         }
         QuestionKind::Show { lhs, rhs, text, .. } => {
             let v = state_values(problem, t, &q, &rates, &evaluation.accelerations);
-            let (l, r) = (eval(lhs, &v), eval(rhs, &v));
-            if !(l.is_finite() && r.is_finite()) {
-                return Err(failure(
-                    question,
-                    format!("`{text}` is not finite at this state"),
-                    "ask at a state where both sides are defined",
-                ));
-            }
+            let (l, r) = (
+                finite(question, text, eval(lhs, &v))?,
+                finite(question, text, eval(rhs, &v))?,
+            );
             let (left, right) = text.split_once('=').unwrap_or((text, ""));
             vec![
                 (Quantity::Named(left.trim().into()), l),
@@ -253,6 +244,18 @@ pub fn answer_in(
         frame,
         period,
     })
+}
+
+/// `x`, or an error naming the question when `text` is not finite at its state.
+fn finite(question: &Question, text: &str, x: f64) -> Result<f64, ProblemError> {
+    if x.is_finite() {
+        return Ok(x);
+    }
+    Err(failure(
+        question,
+        format!("`{text}` is not finite at this state"),
+        "ask at a state where the expression is defined",
+    ))
 }
 
 /// A `describe` question: the run from `(q, rates)` described (see [`super::describe`]).
