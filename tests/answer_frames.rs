@@ -276,14 +276,21 @@ fn the_reaction_table_writes_the_tooth_force_in_its_simplest_frame() {
         String::from_utf8_lossy(&out.stderr)
     );
     let text = String::from_utf8_lossy(&out.stdout);
-    let row = text
-        .lines()
-        .find(|l| l.starts_with("| mesh |"))
-        .expect("the tooth force's row");
+    // The reaction table leaves out a reaction the Answers give: then the answer's lines.
+    let row = match text.lines().find(|l| l.starts_with("| mesh |")) {
+        Some(row) => row.to_string(),
+        None => text
+            .lines()
+            .filter(|l| l.contains("\\mathbf{F}^{P} \\cdot"))
+            .collect::<Vec<_>>()
+            .join(" "),
+    };
     let force: f64 = 0.03 * (1.2 / (0.002 + 0.03 / 9.0)) / 3.0 / 0.15;
     assert!((force - 15.0).abs() < 1e-9, "by hand: {force}");
     assert!(
-        row.contains("15 \\hat{\\mathbf{n}}_{y}") && !row.contains("\\hat{\\mathbf{a}}"),
+        (row.contains("15 \\hat{\\mathbf{n}}_{y}")
+            || row.contains("\\hat{\\mathbf{n}}_{y} = 15\\ \\mathrm{N}"))
+            && !row.contains("\\hat{\\mathbf{a}}"),
         "{row}"
     );
 }
@@ -318,8 +325,5 @@ fn a_negative_normal_force_is_said_as_the_push_it_is() {
         (said - push).abs() <= 1e-5 * push,
         "{said} against {push} by hand"
     );
-    assert!(
-        text.contains("F^{\\mathrm{contact}}_{n} = -9.733"),
-        "the value, negative"
-    );
+    assert!(text.contains("F^{P}_{n} = -9.733"), "the value, negative");
 }

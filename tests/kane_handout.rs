@@ -316,11 +316,11 @@ fn the_four_bars_dependent_rates_share_one_named_denominator() {
     let text = markdown("four-bar.json");
     // As a textbook writes it: Δ defined once, the dependent rates over it.
     assert!(text.contains(
-        "- $\\Delta = a \\sin(q_{1} - q_{3}) + d s_{3}$: the common denominator of the dependent rates"
+        "- $\\Delta = a \\sin(q_{1} - q_{3}) + d \\sin(q_{3})$: the common denominator of the dependent rates"
     ));
-    assert!(text.contains("\\dot{q}_{2} &= -\\frac{d s_{3}}{\\Delta} \\dot{q}_{1}"));
+    assert!(text.contains("\\dot{q}_{2} &= -\\frac{d \\sin(q_{3})}{\\Delta} \\dot{q}_{1}"));
     assert!(text.contains(
-        "\\dot{q}_{3} &= \\frac{a}{\\Delta} \\left(\\sin(q_{1} - q_{3}) + \\frac{d s_{1}}{c}\\right) \\dot{q}_{1}"
+        "\\dot{q}_{3} &= \\frac{a}{\\Delta} \\left(\\sin(q_{1} - q_{3}) + \\frac{d \\sin(q_{1})}{c}\\right) \\dot{q}_{1}"
     ));
     // By hand: the velocity loop a q1' e⊥(q1) + b (q1' + q2') e⊥(q1 + q2) = c q3' e⊥(q3),
     // solved for q2' and q3' with q1' = 1 at a closed state, against the printed relation.

@@ -130,7 +130,7 @@ fn a_contact_group_is_written_with_sin_squared_plus_cos_squared_as_one() {
     let heading = "**24. $D\\colon \\sum \\mathbf{M}_{D^{*}} \\cdot \\hat{\\mathbf{d}}_{z}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "M^{U}_{1} c_{q_{D2}} - ( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
+        "M^{U}_{1} \\cos(q_{D2}) - ( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
     );
 }
 

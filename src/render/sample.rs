@@ -67,7 +67,7 @@ pub fn sample() -> Solution {
         force_definitions: Vec::new(),
         kinematic_definitions: Vec::new(),
         abbreviations: Vec::new(),
-        abbreviations_by_rule: false,
+        abbreviations_by_rule: Vec::new(),
         plan: plan(),
         kinematics: kinematics(),
         equations: equations(),

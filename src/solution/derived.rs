@@ -414,12 +414,15 @@ const MOST_ABBREVIATIONS_LISTED: usize = 12;
 
 /// The abbreviations to list and whether they are examples of the rule: the first, the first
 /// of a sum and the last (the longest sum), in the list's order.
-fn abbreviation_examples(all: Vec<Named>) -> (Vec<Named>, bool) {
-    // The rule's sentence names the letters s and c: other letters are listed one by one.
-    let lower = |n: &Named| n.definition_tex.starts_with(['s', 'c']);
-    if all.len() <= MOST_ABBREVIATIONS_LISTED || !all.iter().all(lower) {
-        return (all, false);
-    }
+fn abbreviation_examples(all: Vec<Named>) -> (Vec<Named>, Vec<String>) {
+    // The rule's sentence names the letters, s and c or S and C: others are listed one by one.
+    let starts = |n: &Named, letter: &str| n.definition_tex.starts_with(letter);
+    let letters = [["s", "c"], ["S", "C"]]
+        .into_iter()
+        .find(|[s, c]| all.iter().all(|n| starts(n, s) || starts(n, c)));
+    let Some(letters) = letters.filter(|_| all.len() > MOST_ABBREVIATIONS_LISTED) else {
+        return (all, Vec::new());
+    };
     let of_sum = |n: &Named| n.definition_tex.contains(" + ");
     let picks = [
         Some(0),
@@ -434,7 +437,7 @@ fn abbreviation_examples(all: Vec<Named>) -> (Vec<Named>, bool) {
         .filter(|(i, _)| keep.contains(i))
         .map(|(_, n)| n)
         .collect();
-    (examples, true)
+    (examples, letters.map(String::from).to_vec())
 }
 
 /// The tension of each two-force member at the initial state, from its joint's force:

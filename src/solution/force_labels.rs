@@ -44,8 +44,9 @@ pub(super) fn shown_name(name: &str, shown: &[(String, String)]) -> String {
 /// (`the lane`, `the rear contact`).
 pub(super) fn place(name: &str) -> String {
     let words = name.replace('_', " ");
-    let letters = name.chars().filter(char::is_ascii_alphabetic).count();
-    if letters <= 1 {
+    // A symbol is capitals and digits, with at most one small letter (O, OA, P2, Jb).
+    let small = name.chars().filter(char::is_ascii_lowercase).count();
+    if small <= 1 {
         words
     } else {
         format!("the {words}")
@@ -60,6 +61,7 @@ mod tests {
     fn a_symbol_stands_alone_and_a_word_takes_its_article() {
         assert_eq!(place("O"), "O");
         assert_eq!(place("P2"), "P2");
+        assert_eq!(place("OA"), "OA");
         assert_eq!(place("lane"), "the lane");
         assert_eq!(place("rear_contact"), "the rear contact");
     }

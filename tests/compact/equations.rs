@@ -134,10 +134,11 @@ fn indices_are_sorted_as_a_reader_counts() {
     // by their indices, a run of five or more by its ends. They are many, so the handout
     // states their rule with the first, the first of a sum and the longest as examples.
     let five = explain("five-link-chain", "markdown");
-    let rule = "Abbreviations: $s$ and $c$ are the sine and cosine of the coordinate their subscript names, or of the sum of the coordinates it lists, as in $s_{1} = \\sin(q_{1})$, $s_{12} = \\sin(q_{1} + q_{2})$, $s_{1\\ldots 5} = \\sin(q_{1} + \\cdots + q_{5})$.";
+    // The chain names a damping constant c: its abbreviations are S and C.
+    let rule = "Abbreviations: $S$ and $C$ are the sine and cosine of the coordinate their subscript names, or of the sum of the coordinates it lists, as in $S_{1} = \\sin(q_{1})$, $S_{12} = \\sin(q_{1} + q_{2})$, $S_{1\\ldots 5} = \\sin(q_{1} + \\cdots + q_{5})$.";
     assert!(five.lines().any(|l| l == rule), "no line {rule}");
     assert!(
-        five.contains("s_{23}"),
+        five.contains("S_{23}"),
         "s_{{23}} follows the rule unlisted"
     );
 }
@@ -151,7 +152,7 @@ fn a_few_abbreviations_are_listed_one_by_one() {
         .find(|l| l.starts_with("Abbreviations:"))
         .expect("abbreviations");
     assert!(
-        line.starts_with("Abbreviations: $s_{\\psi} = \\sin(\\psi)$, $c_{\\psi} = \\cos(\\psi)$")
+        line.starts_with("Abbreviations: $S_{\\psi} = \\sin(\\psi)$, $C_{\\psi} = \\cos(\\psi)$")
     );
     assert_eq!(line.matches(" = ").count(), 10, "{line}");
 }
@@ -179,7 +180,7 @@ fn a_long_equation_is_shown_with_the_matrix_entries_by_name() {
     assert!(markdown.contains("(2) & A_{1,2} &"));
     assert!(!markdown.contains("$A_{2,1} = "));
     // By hand, with the common factor L²m/6 out: A₁₂ = -(L²m/6)(44 + 21 c₂ + …).
-    assert!(markdown.contains("$A_{1,2} = -\\frac{L^{2} m}{6} (44 + 21 c_{2} + "));
+    assert!(markdown.contains("$A_{1,2} = -\\frac{L^{2} m}{6} (44 + 21 C_{2} + "));
     // The text's size: the pictures embedded as inline SVG are not equations.
     let mut text = markdown.clone();
     while let (Some(a), Some(b)) = (text.find("<svg"), text.find("</svg>")) {
@@ -255,7 +256,7 @@ fn decimals_the_problem_writes_stay_decimals() {
     // and the halves as fractions, as written.
     assert!(defines(
         &markdown,
-        "\\Delta_{1x} = 0.4 + x - \\frac{h s_{\\theta}}{2} - \\frac{w c_{\\theta}}{2}",
+        "\\Delta_{1x} = 0.4 + x - \\frac{h S_{\\theta}}{2} - \\frac{w C_{\\theta}}{2}",
         "of the vector from"
     ));
     assert!(!markdown.contains("\\frac{2}{5}"));
@@ -311,11 +312,13 @@ fn a_reaction_acts_at_its_joint_by_name() {
     // The free body link2 + … + link5 is cut at P2: the reaction of link1 on link2 acts at
     // the pin P2, which is also link2's origin, where an offset would read as 0.
     assert!(markdown.contains(
-        "| contact: reaction at P2 | $F^{P_{2}}_{x} \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}} + F^{P_{2}}_{y} \\hat{\\mathbf{y}}_{\\mathrm{link}_{1}}$ | $\\text{at } P_{2}$ |"
+        "| reaction force at P2 | $F^{P_{2}}_{x} \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}} + F^{P_{2}}_{y} \\hat{\\mathbf{y}}_{\\mathrm{link}_{1}}$ | $\\text{at } P_{2}$ |"
     ));
     assert!(!markdown.contains("$\\text{at } \\mathbf{0}$"));
     // Gravity acts at each link's mass centre, named as such (link5* alone on its own).
-    assert!(markdown.contains("| distance: gravity on link5 | $-g m \\hat{\\mathbf{n}}_{y}$ | $\\text{at } \\mathrm{link}_{5}^*$ |"));
+    assert!(markdown.contains(
+        "| weight of link5 | $-g m \\hat{\\mathbf{n}}_{y}$ | $\\text{at } \\mathrm{link}_{5}^*$ |"
+    ));
 }
 
 #[test]
@@ -365,10 +368,10 @@ fn a_right_hand_side_is_collected_by_the_rates() {
     // square of a link's angular velocity with its coefficient's factor L²m/2 out, gravity
     // last.
     assert!(markdown.contains(
-        "- $b_{1} = c \\dot{q}_{1} + \\frac{L^{2} m}{2} (7 s_{2} + 5 s_{23} + 3 s_{234} + s_{2345}) \\dot{q}_{1}^{2} + "
+        "- $b_{1} = c \\dot{q}_{1} + \\frac{L^{2} m}{2} (7 S_{2} + 5 S_{23} + 3 S_{234} + S_{2345}) \\dot{q}_{1}^{2} + "
     ));
     assert!(markdown
-        .contains("(\\dot{q}_{1} + \\cdots + \\dot{q}_{5})^{2} + \\frac{9 L g m}{2} s_{1} + "));
+        .contains("(\\dot{q}_{1} + \\cdots + \\dot{q}_{5})^{2} + \\frac{9 L g m}{2} S_{1} + "));
 }
 
 #[test]

@@ -21,7 +21,7 @@ fn a_chain_link_moves_with_its_pin_and_the_pin_with_the_one_before() {
     }
     // The free body of all ten links lists gravity once, for a link k: -m_k g n̂_y.
     assert!(markdown.contains(
-        "| distance: gravity on each body k | $-m_{k}\\, g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } k^*,\\; k \\in \\{\\mathrm{link}_{1}, "
+        "| weight of each body k | $-m_{k}\\, g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } k^*,\\; k \\in \\{\\mathrm{link}_{1}, "
     ));
     // link1 belongs to that free body only, so no row names it alone.
     assert!(!markdown.contains("gravity on link1 |"));
@@ -139,12 +139,12 @@ fn a_long_chain_of_rotations_is_composed_by_name() {
     // (ᴺC^D₁₂ = −sin(qA + qC) cos qD1 and ᴰC^E₃₁ = −sin qE3 cos qE2, one term each, unnamed).
     assert!(defines(
         &markdown,
-        "{}^{D}C^{E}_{11} = c_{q_{E1}} c_{q_{E3}} - s_{q_{E1}} s_{q_{E2}} s_{q_{E3}}",
+        "{}^{D}C^{E}_{11} = \\cos(q_{E1}) \\cos(q_{E3}) - \\sin(q_{E1}) \\sin(q_{E2}) \\sin(q_{E3})",
         "direction cosines:"
     ));
     assert!(defines(
         &markdown,
-        "{}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} s_{q_{A},q_{C}} c_{q_{D1}} - {}^{N}C^{D}_{13} s_{q_{E3}} c_{q_{E2}}",
+        "{}^{N}C^{E}_{11} = {}^{D}C^{E}_{11} {}^{N}C^{D}_{11} - {}^{D}C^{E}_{21} \\sin(q_{A} + q_{C}) \\cos(q_{D1}) - {}^{N}C^{D}_{13} \\sin(q_{E3}) \\cos(q_{E2})",
         "direction cosines:"
     ));
     // Step 2's forces on E use its partial angular velocities; for qA and qC, both turns
@@ -200,7 +200,7 @@ fn two_rates_that_turn_together_are_squared_as_one() {
         .find(|l| l.contains("\\tilde{a}^{K}_{x} = "))
         .expect("K's acceleration");
     assert!(definition.contains(
-        "+ \\frac{L s_{q_{D2}} c_{q_{D1}}^{2} c_{q_{D2}}}{2} (\\dot{q}_{A} + \\dot{q}_{C})^{2}"
+        "+ \\frac{L \\sin(q_{D2}) \\cos^{2}(q_{D1}) \\cos(q_{D2})}{2} (\\dot{q}_{A} + \\dot{q}_{C})^{2}"
     ));
 }
 
@@ -241,7 +241,8 @@ fn a_long_acceleration_is_written_by_the_partial_velocities() {
     );
     // The head's acceleration is long written out; its rest, ã^{head}, is named in the
     // where list (B's steer joint point), so step 4 writes it by the same rule.
-    let head = "{}^{N}\\mathbf{a}^{\\mathrm{head}} = \\sum_{r} {}^{N}\\mathbf{v}^{\\mathrm{head}}_{r}\\, \\ddot{q}_{r} + \\tilde{a}^{\\mathrm{head}}_{x} \\hat{\\mathbf{b}}_{x}";
+    // The point named by the word head is printed by a letter, P.
+    let head = "{}^{N}\\mathbf{a}^{P} = \\sum_{r} {}^{N}\\mathbf{v}^{P}_{r}\\, \\ddot{q}_{r} + \\tilde{a}^{P}_{x} \\hat{\\mathbf{b}}_{x}";
     assert!(markdown.contains(head), "no {head}");
 }
 

@@ -1,6 +1,6 @@
 //! The plots as `explain -o` writes them: one quantity per axis, legends and axis labels
-//! as symbols (Unicode in the SVG files, math in pgfplots), and the energy's drift on a
-//! plot of its own, checked against the conservation of energy.
+//! as symbols (Unicode in the SVG files, math in pgfplots), and the energy checked against
+//! its conservation (its drift plotted only where the check fails).
 
 use super::{binary, scratch};
 use std::path::Path;
@@ -53,7 +53,7 @@ fn pgfplots_series(tex: &str, label: &str) -> Vec<Vec<(f64, f64)>> {
 }
 
 #[test]
-fn a_conservative_double_pendulum_plots_its_energy_and_a_drift_within_the_check() {
+fn a_conservative_double_pendulum_plots_a_flat_energy_and_no_drift() {
     let dir = scratch("plots-pendulum");
     explain("double-pendulum-rods.json", &dir.join("dp.md"), "markdown");
     let angles = read(&dir.join("dp-coordinates.svg"));
@@ -64,11 +64,8 @@ fn a_conservative_double_pendulum_plots_its_energy_and_a_drift_within_the_check(
     for legend in ["T", "V", "E = T + V"] {
         assert!(prints(&energy, legend), "the energy plot lacks {legend}");
     }
-    let drift = read(&dir.join("dp-energy-drift.svg"));
-    assert!(
-        prints(&drift, "(E − E₀)/|E₀|"),
-        "the drift's axis is not E − E₀"
-    );
+    // The energy holds within the check: its drift is not plotted (it is when it fails).
+    assert!(!dir.join("dp-energy-drift.svg").exists());
 
     explain("double-pendulum-rods.json", &dir.join("dp.tex"), "latex");
     let tex = read(&dir.join("dp.tex"));
@@ -112,12 +109,7 @@ fn a_conservative_double_pendulum_plots_its_energy_and_a_drift_within_the_check(
         "E at the start is {e0} on the plot, {} from the datum",
         kinetic + potential
     );
-    let drift = pgfplots_series(&tex, "$(E - E_{0})/|E_{0}|$");
-    assert_eq!(drift[0][0], (0.0, 0.0));
-    assert!(
-        drift[0].iter().all(|(_, d)| d.abs() < 1e-6),
-        "the energy drifted"
-    );
+    assert!(!tex.contains("(E - E_{0})/|E_{0}|"));
 }
 
 #[test]

@@ -100,9 +100,10 @@ pub struct Solution {
     /// Step 4: the abbreviations of sines and cosines that steps 4 and 5 use
     /// (`s_{1} = \sin(q_{1})`), each defined once.
     pub abbreviations: Vec<Named>,
-    /// Whether the abbreviations are many, so that the handout states their rule and lists
-    /// only `abbreviations`' few examples of it.
-    pub abbreviations_by_rule: bool,
+    /// When the abbreviations are many, the letters of their sines and cosines (`s`, `c`, or
+    /// `S`, `C` where the problem names a constant s or c), so that the handout states their
+    /// rule and lists only `abbreviations`' few examples of it; else empty.
+    pub abbreviations_by_rule: Vec<String>,
     /// Step 4: the named kinematic quantities that steps 4 and 5 use (the direction cosines
     /// of long chains, partial velocities, accelerations without the q''), each defined once.
     pub kinematic_definitions: Vec<WhereEntry>,
