@@ -80,3 +80,17 @@ fn the_four_bars_loop_and_its_derivative_are_written() {
         );
     }
 }
+
+#[test]
+fn a_constant_determinant_names_no_singular_configuration() {
+    // By hand: the gear pair's meshing row r_A q̇_A + r_B q̇_B = 0 gives q̈_B with the
+    // coefficient −r_B, a pitch radius: no configuration makes it zero.
+    let handout = explain(
+        "gear-pair-torque",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    assert!(handout.contains(
+        "The constraint row (3) gives $\\ddot{q}_{B}$ from the other second derivatives: their block in these has the determinant $-r_{B}$, which no configuration makes zero."
+    ));
+    assert!(!handout.contains("singular configuration"));
+}

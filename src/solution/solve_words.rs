@@ -154,9 +154,17 @@ fn singular(derivation: &Derivation) -> Option<String> {
         return None;
     }
     let names: Vec<&Symbol> = columns.iter().map(|&j| &system.unknowns[j]).collect();
+    // A determinant of constants alone (a pitch radius) vanishes in no configuration.
+    if det.is_constant() {
+        return Some(format!(
+            "The constraint {} {} from the other second derivatives: their block in these has the determinant ${det_tex}$, which no configuration makes zero.",
+            rows_give(&rows),
+            unknown_list(&names),
+        ));
+    }
     let head = format!(
-        "The constraint rows {} give {} from the other second derivatives wherever their block in these has a nonzero determinant, ${det_tex}$.",
-        row_list(&rows),
+        "The constraint {} {} from the other second derivatives wherever their block in these has a nonzero determinant, ${det_tex}$.",
+        rows_give(&rows),
         unknown_list(&names),
     );
     let factors = det.factors();
@@ -182,6 +190,14 @@ fn singular(derivation: &Derivation) -> Option<String> {
         "{head} It is zero where ${} = 0${line}: a singular configuration, where the constraints no longer fix the dependent rates.",
         latex(factor)
     ))
+}
+
+/// "rows (4) and (5) give", or "row (3) gives" for one.
+fn rows_give(rows: &[usize]) -> String {
+    match rows.len() {
+        1 => format!("row {} gives", row_list(rows)),
+        _ => format!("rows {} give", row_list(rows)),
+    }
 }
 
 /// The absolute angle of a planar body, from its angular velocity with the rates replaced
