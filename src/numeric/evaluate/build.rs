@@ -227,9 +227,23 @@ fn reaction_slots(derivation: &Derivation) -> (Vec<ReactionSlot>, Vec<Expr>) {
 /// the rate row `q' - w`, free of t, so the position row and the origin are asked too.
 fn drives_work(model: &crate::mechanics::Model) -> bool {
     let time = crate::symbolic::Symbol::Time;
+    let problem = model.problem;
+    let rates: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 1))
+        .collect();
+    // A `velocity` entry with a term free of the rates (`x' - v0`) moves the system as a
+    // drive does: its force works.
+    let affine = |r: &crate::mechanics::ConstraintRow| {
+        matches!(r.origin, crate::mechanics::RowOrigin::Velocity(_))
+            && !matches!(
+                crate::symbolic::linear_split(&r.velocity, &rates),
+                Ok((_, rest)) if rest.is_zero()
+            )
+    };
     model.constraints.rows.iter().any(|r| {
         matches!(r.origin, crate::mechanics::RowOrigin::Prescribed(_))
             || r.velocity.contains(&time)
             || r.position.as_ref().is_some_and(|p| p.contains(&time))
+            || affine(r)
     })
 }
