@@ -74,7 +74,8 @@ impl<'p> Reference<'p> {
         let solver = Solver::new(problem, &derivation);
         let answers = match problem.questions.is_empty() {
             true => Ok(Vec::new()),
-            false => crate::numeric::answer_all(problem, &solver).map_err(|e| e.to_string()),
+            // As `answer` gives them: statics, impacts and periods included.
+            false => crate::pipeline::answers(problem, method).map_err(|e| e.to_string()),
         };
         let model = &derivation.model;
         let sites: Vec<usize> = (0..model.sites.len()).collect();
