@@ -142,7 +142,10 @@ pub fn answer_in(
     if simulated {
         simulate_to(problem, system, question, t, (&mut q, &mut rates))?;
     }
-    if question.kind.is_static() && !super::moving_slip::asked(problem, question) {
+    // A `slips` question at rest that statics left (no equilibrium near it) is answered as
+    // the motion starts, by the ratio that sticking needs there.
+    let slips = matches!(question.kind, QuestionKind::Slips { .. });
+    if question.kind.is_static() && !slips && !super::moving_slip::asked(problem, question) {
         return Err(failure(
             question,
             "a question of statics is answered at rest, with the friction sites sticking".into(),

@@ -58,9 +58,17 @@ pub fn values(
         ));
     };
     let slip = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
-    let force = state.friction();
-    let ratio = match (state.limit > 0.0, force == 0.0) {
-        (true, _) => force / state.limit,
+    // Still, but sticking failed its check (a hoop let go on a slope too steep for μ): the
+    // ratio is the one sticking needed, above 1, not the sliding friction's.
+    let (force, limit) = match &state.failed_stick {
+        Some(stick) if slip <= STILL => (
+            super::friction_vectors::norm(&stick.tangential),
+            stick.limit,
+        ),
+        _ => (state.friction(), state.limit),
+    };
+    let ratio = match (limit > 0.0, force == 0.0) {
+        (true, _) => force / limit,
         (false, true) => 0.0,
         (false, false) => f64::INFINITY,
     };
