@@ -79,8 +79,9 @@ pub fn choose(
             names(&marked_rates)
         ),
         hint: Some(format!(
-            "the problem has {} independent velocity constraints; mark at most that many `dependent_rate` coordinates, or mark none and let the tool choose",
-            all.len()
+            "the problem has {} independent velocity constraints; mark at most that many `dependent_rate` coordinates, or mark none and let the tool choose{}",
+            all.len(),
+            rough_sites(constraints)
         )),
     })?;
     if !dependent.is_empty() {
@@ -223,6 +224,25 @@ pub fn pick(
         }
     }
     Ok(chosen)
+}
+
+/// The hint's clause for rough sites, whose no-slip rows hold only while they stick and so
+/// make no rate dependent: empty when the problem has none.
+fn rough_sites(constraints: &Constraints) -> String {
+    if constraints.friction.is_empty() {
+        return String::new();
+    }
+    let sites: Vec<String> = (constraints.friction.iter())
+        .map(|f| format!("`{}`", f.name))
+        .collect();
+    let (has, sticks) = match sites.len() {
+        1 => ("has", "it sticks"),
+        _ => ("have", "they stick"),
+    };
+    format!(
+        " (the no-slip rows of {}, which {has} friction, hold only while {sticks}, so they make no rate dependent: leave those rates independent)",
+        sites.join(", ")
+    )
 }
 
 /// `n` position constraints counted as a sentence counts them: "the position constraint",
