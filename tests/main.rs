@@ -15,6 +15,7 @@ mod course_answers;
 mod course_words;
 mod describe;
 mod draw;
+mod fresh_problems;
 mod friction;
 mod gears;
 mod grade;
