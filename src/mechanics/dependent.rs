@@ -72,18 +72,15 @@ pub fn choose(
         .iter()
         .map(|c| if c.rate != 0.0 { 1e-3 } else { 1.0 })
         .collect();
-    let dependent_rates = pick(&all, &marked_rates, &free, &preference).map_err(|why| MechanicsError {
-        path: "coordinates".into(),
-        message: format!(
-            "the coordinates whose rates are dependent, {}, {why}",
-            names(&marked_rates)
-        ),
-        hint: Some(format!(
-            "the problem has {} independent velocity constraints; mark at most that many `dependent_rate` coordinates, or mark none and let the tool choose{}",
-            all.len(),
-            rough_sites(constraints)
-        )),
-    })?;
+    let dependent_rates =
+        pick(&all, &marked_rates, &free, &preference).map_err(|why| MechanicsError {
+            path: "coordinates".into(),
+            message: format!(
+                "the coordinates whose rates are dependent, {}, {why}",
+                names(&marked_rates)
+            ),
+            hint: Some(rate_hint(all.len(), constraints)),
+        })?;
     if !dependent.is_empty() {
         let chosen: Vec<usize> = dependent
             .iter()
@@ -226,12 +223,20 @@ pub fn pick(
     Ok(chosen)
 }
 
-/// The hint's clause for rough sites, whose no-slip rows hold only while they stick and so
-/// make no rate dependent: empty when the problem has none.
-fn rough_sites(constraints: &Constraints) -> String {
-    if constraints.friction.is_empty() {
-        return String::new();
+/// The hint for too many rates marked dependent, with a clause for rough sites, whose
+/// no-slip rows hold only while they stick and so make no rate dependent.
+fn rate_hint(rows: usize, constraints: &Constraints) -> String {
+    let mut hint = format!(
+        "the problem has {rows} independent velocity constraints; mark at most that many `dependent_rate` coordinates, or mark none and let the tool choose"
+    );
+    if !constraints.friction.is_empty() {
+        hint.push_str(&rough_sites(constraints));
     }
+    hint
+}
+
+/// The clause of [`rate_hint`] for the rough sites.
+fn rough_sites(constraints: &Constraints) -> String {
     let sites: Vec<String> = (constraints.friction.iter())
         .map(|f| format!("`{}`", f.name))
         .collect();
