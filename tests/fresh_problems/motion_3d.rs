@@ -182,20 +182,17 @@ fn the_skew_shafts_vectors_in_the_bodys_frame() {
         let frames = list.iter().map(|a| a["frame"].clone()).collect::<Vec<_>>();
         assert_eq!(frames, ["D", "N", "D", "D"], "{method}");
         let phi_acc = tau / ((a + c) / 2.0);
-        for i in 0..3 {
-            close(parts(0)[i], phi_rate * u[i], &format!("{method}: ω in D"));
-            close(parts(1)[i], phi_acc * u[i], &format!("{method}: α in N"));
-            close(parts(2)[i], s_rate * u[i], &format!("{method}: v* in D"));
+        let (omega, alpha, speed) = (parts(0), parts(1), parts(2));
+        for (i, along) in u.iter().enumerate() {
+            close(omega[i], phi_rate * along, &format!("{method}: ω in D"));
+            close(alpha[i], phi_acc * along, &format!("{method}: α in N"));
+            close(speed[i], s_rate * along, &format!("{method}: v* in D"));
         }
         let r = rotation(u, phi);
         let force = [-m * g / 2.0, 0.0, m * g / 2.0];
         let in_d: [f64; 3] = std::array::from_fn(|i| (0..3).map(|k| r[k][i] * force[k]).sum());
-        for i in 0..3 {
-            close(
-                parts(3)[i],
-                in_d[i],
-                &format!("{method}: the shaft's force in D"),
-            );
+        for (got, want) in parts(3).iter().zip(in_d) {
+            close(*got, want, &format!("{method}: the shaft's force in D"));
         }
     }
 }

@@ -194,3 +194,60 @@ fn a_rolling_hoop_struck_and_twisted_keeps_rolling() {
         );
     }
 }
+
+/// The held arm's collar struck by J n̂_y: the arm stays (its support takes the angular
+/// impulse −J s cos θ₀ about O, reported as its drive), the collar takes the part along
+/// the arm, ṡ⁺ = J sin θ₀ / m₂, and the pin the rest: m₂ ṡ⁺ â_x − J n̂_y.
+#[test]
+fn a_held_arms_collar_struck_the_support_takes_the_angular_impulse() {
+    let (th, m2, j, s) = (0.5f64, 0.8, 2.0, 0.5);
+    let rate = j * th.sin() / m2;
+    for method in METHODS {
+        let out = command("impact", "arm-held-collar-struck", method, &[]);
+        close(at(&out, &["after", "theta'"]), 0.0, method);
+        close(at(&out, &["after", "s'"]), rate, method);
+        close(at(&out, &["drives", "theta"]), -j * s * th.cos(), method);
+        let pin = triple(&out["impulses"]["O"]["force"]);
+        close(pin[0], m2 * rate * th.cos(), method);
+        close(pin[1], m2 * rate * th.sin() - j, method);
+        close(
+            at(&out, &["energy", "after"]),
+            0.5 * m2 * rate * rate,
+            method,
+        );
+    }
+}
+
+/// The bar under sideways gravity and a torque τ rests where m g L/2 cos θ + τ = 0: at
+/// θ = ±acos(−2τ/(m g L)), stable where sin θ > 0 (eigenvalues ±iω, ω² = (m g L/2 sin θ)
+/// /(m L²/3)), unstable at the other (±ω); the pin holds the weight, m g n̂_x.
+#[test]
+fn the_bar_rests_at_two_angles_one_stable_one_not() {
+    let (m, l, g, tau) = (1.5f64, 0.8, 9.81, 2.0);
+    let theta = (-2.0 * tau / (m * g * l)).acos();
+    let omega = ((m * g * l / 2.0 * theta.sin()) / (m * l * l / 3.0)).sqrt();
+    for method in METHODS {
+        let near = ["--near", "theta=2", "--near", "theta=-2"];
+        let s = command("statics", "bar-under-sideways-gravity", method, &near);
+        let list = s["equilibria"].as_array().expect("equilibria");
+        assert_eq!(list.len(), 2, "{method}: one equilibrium per start");
+        for (eq, sign, stability) in [(&list[0], 1.0, "stable"), (&list[1], -1.0, "unstable")] {
+            let what = format!("{method}, {stability}");
+            close(at(eq, &["state", "theta"]), sign * theta, &what);
+            assert_eq!(eq["stability"], stability, "{what}");
+            let force = triple(&eq["reactions"]["O"]["force"]);
+            close(force[0], m * g, &what);
+            close(force[1], 0.0, &what);
+            for pair in eq["eigenvalues"].as_array().expect("eigenvalues") {
+                let (re, im) = (pair[0].as_f64().expect("re"), pair[1].as_f64().expect("im"));
+                let (want_re, want_im) = if sign > 0.0 {
+                    (0.0, omega)
+                } else {
+                    (omega, 0.0)
+                };
+                close(re.abs(), want_re, &what);
+                close(im.abs(), want_im, &what);
+            }
+        }
+    }
+}
