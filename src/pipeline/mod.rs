@@ -167,9 +167,8 @@ pub fn answers_from(
                 match statics_answers::answer(&statics, &in_rates, question) {
                     Ok(found) => given[i] = Some(found),
                     // No equilibrium near a state at rest (a hoop let go on a slope): whether
-                    // the site slips is decided as it starts to move, below.
-                    Err(_)
-                        if matches!(question.kind, crate::problem::QuestionKind::Slips { .. }) => {}
+                    // a rough site slips is decided as it starts to move, below.
+                    Err(_) if rough_slips(&statics, &in_rates, question) => {}
                     Err(e) => return Err(e),
                 }
             }
@@ -203,6 +202,21 @@ pub fn answers_from(
     };
     crate::numeric::answer_all_with(problem, &solver, Some(&linearize), after.as_deref(), given)
         .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
+}
+
+/// Whether `question` asks `slips` of a site with friction.
+fn rough_slips(
+    statics: &statics::Statics,
+    problem: &Problem,
+    question: &crate::problem::Question,
+) -> bool {
+    match question.kind {
+        crate::problem::QuestionKind::Slips { site } => {
+            let name = problem.site_name(site);
+            statics.friction_sites().iter().any(|s| s == name)
+        }
+        _ => false,
+    }
 }
 
 /// What is compiled from a derivation's plan, and from the plans made again for special
