@@ -145,7 +145,7 @@ pub fn simulation(
             title: title.into(),
             svg_file: FileName::from(String::new()),
             image_svg: SvgDocument::default(),
-            pgfplots_latex: LatexCode::default(),
+            image_latex: LatexCode::default(),
             data: Some(PlotData {
                 x_label: time.clone(),
                 y_label,
