@@ -50,7 +50,6 @@ pub mod output;
 pub mod pipeline;
 pub mod plan;
 pub mod problem;
-#[allow(clippy::too_many_lines)] // to split
 pub mod render;
 #[allow(clippy::too_many_lines)] // to split: matrix, row_view, derived, kinematics
 pub mod solution;
