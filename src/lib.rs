@@ -51,7 +51,6 @@ pub mod pipeline;
 pub mod plan;
 pub mod problem;
 pub mod render;
-#[allow(clippy::too_many_lines)] // to split: matrix, row_view, derived, kinematics
 pub mod solution;
 pub mod symbolic;
 pub mod typeset;
