@@ -5,7 +5,6 @@
 //! [`Program`], the compiled form. The modules are private; what other stages use is
 //! re-exported here. [`budget`] stays a module: its calls read as `budget::start()`.
 
-/// The limit on the symbolic work of one derivation.
 pub mod budget;
 mod build;
 mod cancel;
