@@ -38,7 +38,6 @@
 //! all of them; [`typeset`], the part of LaTeX math every format can set, is read by
 //! `problem` (a question's symbol) and `render` alike.
 
-#[allow(missing_docs)] // to document item by item
 pub mod cli;
 pub mod cmd;
 pub mod equations;
@@ -51,11 +50,8 @@ pub mod output;
 pub mod pipeline;
 pub mod plan;
 pub mod problem;
-#[allow(clippy::too_many_lines)] // to split
 pub mod render;
-#[allow(clippy::too_many_lines)] // to split: matrix, row_view, derived, kinematics
 pub mod solution;
-#[allow(missing_docs)] // to document item by item
 pub mod symbolic;
 pub mod typeset;
 

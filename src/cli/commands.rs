@@ -19,6 +19,7 @@ pub enum AnswerFormat {
 /// Arguments of `mbd-tutor answer`.
 #[derive(clap::Args, Debug)]
 pub struct AnswerArgs {
+    /// The problem file, the method, the constants set and where the output goes.
     #[command(flatten)]
     pub common: Common,
     /// Output format.
@@ -81,6 +82,7 @@ pub struct DrawArgs {
     /// The problem; `-o` names the directory the pictures go to (created if missing).
     #[command(flatten)]
     pub common: Common,
+    /// The state and the time worked at.
     #[command(flatten)]
     pub given: GivenState,
     /// How a spatial system is seen: iso (default), front, side, top, or a direction
@@ -202,7 +204,7 @@ pub struct GradeArgs {
 /// Arguments of `mbd-tutor linearize`.
 #[derive(clap::Args, Debug)]
 pub struct LinearizeArgs {
-    // The problem, the state to linearize about, the output format.
+    /// The problem, the state to linearize about and the output format.
     #[command(flatten)]
     pub at: AtState,
     /// Repeat over COUNT evenly spaced values of a constant, both ends included.
@@ -257,6 +259,7 @@ pub enum SimulateFormat {
 /// Arguments of `mbd-tutor simulate`.
 #[derive(clap::Args, Debug)]
 pub struct SimulateArgs {
+    /// The problem file, the method, the constants set and where the output goes.
     #[command(flatten)]
     pub common: Common,
     /// Seconds to simulate; default the problem's `simulate.duration` (5 s).
@@ -289,8 +292,10 @@ pub enum SolveFormat {
 /// What `solve` and `linearize` share: the problem, one state and the output format.
 #[derive(clap::Args, Debug)]
 pub struct AtState {
+    /// The problem file, the method, the constants set and where the output goes.
     #[command(flatten)]
     pub common: Common,
+    /// The state and the time worked at.
     #[command(flatten)]
     pub given: GivenState,
     /// Output format.
@@ -301,6 +306,7 @@ pub struct AtState {
 /// Arguments of `mbd-tutor solve`.
 #[derive(clap::Args, Debug)]
 pub struct SolveArgs {
+    /// The problem, the state and the output format.
     #[command(flatten)]
     pub at: AtState,
 }
@@ -310,6 +316,7 @@ pub struct SolveArgs {
 /// Arguments of `mbd-tutor statics`.
 #[derive(clap::Args, Debug)]
 pub struct StaticsArgs {
+    /// The problem file, the method, the constants set and where the output goes.
     #[command(flatten)]
     pub common: Common,
     /// Output format.
@@ -326,6 +333,7 @@ pub struct StaticsArgs {
 /// Arguments of `mbd-tutor impact`.
 #[derive(clap::Args, Debug)]
 pub struct ImpactArgs {
+    /// The problem file, the method, the constants set and where the output goes.
     #[command(flatten)]
     pub common: Common,
     /// Output format.

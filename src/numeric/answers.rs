@@ -48,6 +48,27 @@ pub struct Answer {
     pub period: Option<super::period::Period>,
 }
 
+impl Answer {
+    /// The answer `values` at one state `(q, rates)` at time `time`, reached without
+    /// simulating: no steady motion's residual, no frame, no oscillation.
+    pub fn at_state(
+        values: Vec<(Quantity, f64)>,
+        time: f64,
+        (q, rates): (Vec<f64>, Vec<f64>),
+    ) -> Answer {
+        Answer {
+            values,
+            time,
+            q,
+            rates,
+            simulated: false,
+            residual: None,
+            frame: None,
+            period: None,
+        }
+    }
+}
+
 /// What answering one question may draw on: the answers of the steady motions (for
 /// `about`) and the linearization (for `period`).
 #[derive(Clone, Copy, Default)]
@@ -270,16 +291,7 @@ fn described_answer(
 ) -> Result<Answer, ProblemError> {
     let values = super::describe_answer::values(problem, system, question, (&q, &rates))
         .map_err(|(message, hint)| failure(question, message, hint))?;
-    Ok(Answer {
-        values,
-        time: 0.0,
-        q,
-        rates,
-        simulated: false,
-        residual: None,
-        frame: None,
-        period: None,
-    })
+    Ok(Answer::at_state(values, 0.0, (q, rates)))
 }
 
 /// The names of the axes, as the components of a vector answer are named.

@@ -5,8 +5,8 @@
 //! `period` (s; only where two maxima are reached) and `duration` (s), then for each rate
 //! asked `psi'.minimum` and `psi'.maximum`.
 
-use super::answers::Quantity;
 use super::describe::{describe, Description};
+use super::quantity::Quantity;
 use super::system::System;
 use crate::problem::{Problem, Question, QuestionKind, SimulateSettings};
 

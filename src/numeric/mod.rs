@@ -43,7 +43,7 @@ pub use answers::{
     answer_all, answer_all_with, coordinate_unit, entry_name, holds, is_free_moment,
     unit as answer_unit, vector_axes, Answer, Quantity,
 };
-pub use checks::{confirm, modes, small_oscillation, Check, CheckKind, Phrase};
+pub use checks::{confirm, modes, small_oscillation, Check, CheckKind, Derived, Phrase};
 pub use constraint_checks::drive_energy_check;
 pub use describe::{describe_run, Description};
 pub use describe_answer::described;

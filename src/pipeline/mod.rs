@@ -41,8 +41,8 @@ use crate::equations::{Derivation, Method};
 use crate::error::Error;
 use crate::mechanics::Form;
 use crate::numeric::{
-    jacobian_of, Check, Compiled, Evaluation, Jacobian, Linearization, ModalAnalysis, SolveError,
-    StateSolution, System, Trajectory,
+    jacobian_of, Check, Compiled, Derived, Evaluation, Jacobian, Linearization, ModalAnalysis,
+    SolveError, StateSolution, System, Trajectory,
 };
 use crate::problem::{Problem, State};
 use std::cell::RefCell;
@@ -71,34 +71,23 @@ pub fn confirm(
         true => None,
         false => Some(derive(problem, method, Purpose::Own).map(|d| Solver::new(problem, &d))),
     };
-    let derived: Vec<(Method, Result<Derivation, String>)> = Method::ALL
+    let derived: Vec<(Method, Result<Derivation, Error>)> = Method::ALL
         .iter()
         .filter(|m| **m != method)
-        .map(|&m| {
-            (
-                m,
-                derive(problem, m, Purpose::Own).map_err(|e| e.to_string()),
-            )
-        })
+        .map(|&m| (m, derive(problem, m, Purpose::Own)))
         .collect();
-    let solvers: Vec<(Method, Result<Solver, String>)> = derived
+    let solvers: Vec<(Method, Result<Solver, &Error>)> = derived
         .iter()
-        .map(|(m, d)| {
-            (
-                *m,
-                d.as_ref()
-                    .map(|d| Solver::new(problem, d))
-                    .map_err(Clone::clone),
-            )
-        })
+        .map(|(m, d)| (*m, d.as_ref().map(|d| Solver::new(problem, d))))
         .collect();
-    let mut others: Vec<(&str, Result<&dyn System, String>)> = solvers
+    let mut others: Vec<(&str, Derived)> = solvers
         .iter()
         .map(|(m, s)| {
-            (
-                m.title(),
-                s.as_ref().map(|s| s as &dyn System).map_err(Clone::clone),
-            )
+            let system = match s {
+                Ok(s) => Ok(s as &dyn System),
+                Err(e) => Err(*e as &dyn std::fmt::Display),
+            };
+            (m.title(), system)
         })
         .collect();
     // Without its own rows the method fails the agreement, with the reason, and the run's
@@ -107,7 +96,7 @@ pub fn confirm(
         None => solver,
         Some(Ok(own)) => own,
         Some(Err(e)) => {
-            others.push((method.title(), Err(e.to_string())));
+            others.push((method.title(), Err(e as &dyn std::fmt::Display)));
             solver
         }
     };

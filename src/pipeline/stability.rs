@@ -90,15 +90,5 @@ pub fn answer(
         };
         values.push((Quantity::Named(name(&edge)), value));
     }
-    let (q, rates) = state_of(question, problem);
-    Ok(Answer {
-        values,
-        time: t,
-        q,
-        rates,
-        simulated: false,
-        residual: None,
-        frame: None,
-        period: None,
-    })
+    Ok(Answer::at_state(values, t, state_of(question, problem)))
 }

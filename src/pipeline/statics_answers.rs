@@ -109,16 +109,7 @@ pub fn answer(statics: &Statics, problem: &Problem, question: &Question) -> Resu
             ))
         }
     };
-    Ok(Answer {
-        values: vec![value],
-        time: 0.0,
-        q,
-        rates,
-        simulated: false,
-        residual: None,
-        frame: None,
-        period: None,
-    })
+    Ok(Answer::at_state(vec![value], 0.0, (q, rates)))
 }
 
 type Found = ((Quantity, f64), Vec<f64>, Vec<f64>);

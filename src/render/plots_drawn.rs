@@ -13,7 +13,7 @@ pub fn draw(plots: &mut [Plot], format: Format) {
         let Some(data) = &plot.data else { continue };
         match format {
             Format::Latex => {
-                plot.pgfplots_latex = LatexCode::from(pgfplots(
+                plot.image_latex = LatexCode::from(pgfplots(
                     &data.x_label,
                     &data.y_label,
                     &data.series,

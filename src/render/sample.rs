@@ -531,7 +531,7 @@ fn plot(kind: &str, title: &str, first: &str, second: &str, unit: &str) -> Plot 
         title: s(title),
         svg_file: FileName::from(format!("{kind}.svg")),
         image_svg: SvgDocument::from(s(svg)),
-        pgfplots_latex: LatexCode::from(pgfplots),
+        image_latex: LatexCode::from(pgfplots),
         data: None,
     }
 }

@@ -123,8 +123,27 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .initial_values
         .extend(tensions(derivation, q0, rates0, &initial.reactions));
     solution.friction = super::friction::views(derivation, &initial.friction);
-    solution.reactions = initial
-        .reactions
+    solution.reactions = reactions(derivation, (q0, rates0), &initial.reactions);
+    (solution.solve_notes).extend(MarkupLine::all(super::normal_sense::notes(
+        &derivation.model,
+        (q0, rates0),
+        &initial.reactions,
+    )));
+    pictures(solution, derivation, (q0, rates0), &initial.accelerations);
+    if let Some(simulated) = &worked.simulation {
+        super::simulation::simulation(solution, problem, simulated);
+    }
+}
+
+/// The reactions at the joints at the initial state, each in the simplest frame to write
+/// it in.
+fn reactions(
+    derivation: &Derivation,
+    (q0, rates0): (&[f64], &[f64]),
+    reactions: &[(String, [f64; 3], [f64; 3])],
+) -> Vec<Reaction> {
+    let problem = derivation.model.problem;
+    reactions
         .iter()
         .map(|(joint, f, m)| {
             let (parent, child) = (derivation.model.sites.iter())
@@ -141,19 +160,24 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
                 moment_tex: Math::from(numeric_vector_tex(frame, &written.moment, "N\\,m")),
             }
         })
-        .collect();
-    (solution.solve_notes).extend(MarkupLine::all(super::normal_sense::notes(
-        &derivation.model,
-        (q0, rates0),
-        &initial.reactions,
-    )));
+        .collect()
+}
+
+/// The pictures at the initial state, the configuration first, each free body's beside or
+/// above its table.
+fn pictures(
+    solution: &mut Solution,
+    derivation: &Derivation,
+    (q0, rates0): (&[f64], &[f64]),
+    accelerations: &[f64],
+) {
     // The pictures at the initial state, the configuration first.
     let drawings = crate::solution::pictures::draw(
         derivation,
         0.0,
         q0,
         rates0,
-        Some(&initial.accelerations),
+        Some(accelerations),
         crate::render::draw::View::Isometric,
     );
     if drawings.len() > 1 {
@@ -173,9 +197,6 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
                 drawing.figure_above_a_table()
             };
         }
-    }
-    if let Some(simulated) = &worked.simulation {
-        super::simulation::simulation(solution, problem, simulated);
     }
 }
 

@@ -105,25 +105,11 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartial
                 format!("{{}}^{{N}}\\mathbf{{v}}^{{{centre}}} = {velocity}"),
                 format!("{{}}^{{N}}\\mathbf{{a}}^{{{centre}}} = {acceleration}"),
             );
-            let (pin_velocity_tex, pin_acceleration_tex) = match pin {
-                // A pin at the parent's mass centre (a bob's) has that centre's motion,
-                // written above: v^{B*} follows from v^{A*}.
-                Some(site) if at_parent_centre(model, site) => (String::new(), String::new()),
-                Some(site) => {
-                    let mut acceleration = pin_line(model, site, Motion::Acceleration);
-                    if printed_width(&acceleration) > LINE {
-                        let rule = pin_by_the_rule(model, site, &joint_rests, &states);
-                        if let Some(rule) =
-                            rule.filter(|r| printed_width(r) < printed_width(&acceleration))
-                        {
-                            acceleration = rule;
-                            (by_partials, pins_by_partials) = (true, true);
-                        }
-                    }
-                    one_line_if_short(pin_line(model, site, Motion::Velocity), acceleration)
-                }
-                None => (String::new(), String::new()),
-            };
+            let ((pin_velocity_tex, pin_acceleration_tex), pin_by_rule) =
+                pin_lines(model, pin, &joint_rests, &states);
+            if pin_by_rule {
+                (by_partials, pins_by_partials) = (true, true);
+            }
             Kinematics {
                 body: name.to_string(),
                 particle,
@@ -159,6 +145,37 @@ pub(super) enum ByPartials {
     MassCentres,
     /// Joint points' as well.
     AndJointPoints,
+}
+
+/// The velocity and acceleration of the joint point of `pin`, where a body is pinned to
+/// its parent, and whether the acceleration is written by the rule with the joint points'
+/// named accelerations `joint_rests`.
+fn pin_lines(
+    model: &Model,
+    pin: Option<usize>,
+    joint_rests: &[crate::symbolic::Definition],
+    states: &[crate::symbolic::Values],
+) -> ((String, String), bool) {
+    match pin {
+        // A pin at the parent's mass centre (a bob's) has that centre's motion,
+        // written above: v^{B*} follows from v^{A*}.
+        Some(site) if at_parent_centre(model, site) => ((String::new(), String::new()), false),
+        Some(site) => {
+            let mut acceleration = pin_line(model, site, Motion::Acceleration);
+            let mut by_rule = false;
+            if printed_width(&acceleration) > LINE {
+                let rule = pin_by_the_rule(model, site, joint_rests, states);
+                if let Some(rule) = rule.filter(|r| printed_width(r) < printed_width(&acceleration))
+                {
+                    acceleration = rule;
+                    by_rule = true;
+                }
+            }
+            let lines = one_line_if_short(pin_line(model, site, Motion::Velocity), acceleration);
+            (lines, by_rule)
+        }
+        None => ((String::new(), String::new()), false),
+    }
 }
 
 /// A long acceleration of the pin `site` by the rule, `Σ_r ᴺv^P_r q̈_r + ã^P`, its rest by

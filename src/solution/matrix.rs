@@ -4,10 +4,10 @@
 
 use super::long::{by_rates, LONG_EQUATION};
 use super::row_names::row_heading_tex;
-use crate::equations::{Derivation, Method};
+use crate::equations::{Derivation, LinearSystem, Method};
 use crate::plan::Sum;
 use crate::problem::MatrixNames;
-use crate::render::context::{MatrixEntry, MatrixForm, Named};
+use crate::render::context::{MatrixEntry, MatrixForm, Named, WholeMatrix};
 use crate::render::text::Math;
 use crate::render::{
     pattern_tables, printed_width, value_tables, value_tex, whole_matrix as whole,
@@ -94,17 +94,7 @@ pub fn matrix(
         .collect();
     // b collected by the products of rates, each coefficient's factor out, as step 5
     // writes an equation, when that is shorter.
-    let b_tex: Vec<String> = b
-        .iter()
-        .map(|e| {
-            let (factored, collected) = (latex_factored(e), latex_collected(e));
-            if collected.len() < factored.len() {
-                collected
-            } else {
-                factored
-            }
-        })
-        .collect();
+    let b_tex = b_texts(&b);
     let b_names: Vec<String> = (1..=a.len())
         .map(|i| format!("{}_{{{i}}}", names.b))
         .collect();
@@ -143,30 +133,7 @@ pub fn matrix(
         // state, the rest read off step 5, and the table of dots shows the whole. With more
         // rows by name, A and b by value are worth their space: a reader can solve them.
         let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
-        let value = |e: &Expr| value_tex(&initial, e);
-        let entries = (0..a.len())
-            .filter(|&i| listed(i))
-            .map(|i| {
-                let mut values: Vec<String> = system.a[i]
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, e)| !e.is_zero())
-                    .map(|(j, e)| format!("{}_{{{},{}}} = {}", names.a, i + 1, j + 1, value(e)))
-                    .collect();
-                values.push(format!(
-                    "{}_{{{}}} = {}",
-                    names.b,
-                    i + 1,
-                    value(&system.b[i])
-                ));
-                MatrixEntry {
-                    row: i + 1,
-                    row_label_tex: Math::from(labels[i].clone()),
-                    values_tex: Math::all(values),
-                    ..MatrixEntry::default()
-                }
-            })
-            .collect();
+        let entries = entries_by_value(system, &labels, &names, &listed, &initial);
         return MatrixForm {
             pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
             entries,
@@ -187,9 +154,123 @@ pub fn matrix(
         };
     }
     // b's entries too long to read whole, collected by the products of rates they hold.
-    let b_groups: Vec<Vec<(Expr, Expr)>> = b
-        .iter()
-        .zip(&b_tex)
+    let b_groups = b_groups(&b, &b_tex);
+    let entries = entries_of(
+        &a,
+        (&a_tex, &b_tex),
+        &b_groups,
+        &labels,
+        &x,
+        &names,
+        &listed,
+    );
+    if let Some(table) = table_by_name {
+        let entries = (entries, unknowns_by_number);
+        return by_name_form(table, &a_names, &a_tex, &x, &names, entries);
+    }
+    if let Some(table) = table_with_b_by_name {
+        return b_by_name_form(table, entries);
+    }
+    let pattern = || pattern_tables(&numbers, &a, &b);
+    listed_form(entries, (by_entries, &listed), a.len(), &x, pattern)
+}
+
+/// The entries listed one by one (of `rows` rows), the rows step 5 writes out in full, not
+/// `listed`, read off there; a long list gathered row by row. Where step 5 writes every
+/// row out (not `by_entries`) and the list is long, the table of dots (`pattern`) instead.
+fn listed_form(
+    mut entries: Vec<MatrixEntry>,
+    (by_entries, listed): (bool, &impl Fn(usize) -> bool),
+    rows: usize,
+    x: &[String],
+    pattern: impl FnOnce() -> Vec<String>,
+) -> MatrixForm {
+    let columns_tex = columns(x);
+    if !by_entries && entries.len() > MOST_LISTED {
+        // Step 5 writes every row out, collected by its unknowns: listing the entries again
+        // would repeat it. Where each row's unknowns are is the system's shape, which the
+        // rows one by one do not show.
+        return MatrixForm {
+            pattern_tex: Math::all(pattern()),
+            columns_tex: Math::all(columns_tex),
+            ..MatrixForm::default()
+        };
+    }
+    let read_off: Vec<usize> = (0..rows).filter(|&i| !listed(i)).collect();
+    entries.retain(|e| listed(e.row - 1));
+    let read_off_tex = rows_tex(&read_off);
+    if entries.len() <= MOST_LISTED {
+        return MatrixForm {
+            whole: None,
+            entries,
+            read_off_tex: Math::from(read_off_tex),
+            ..MatrixForm::default()
+        };
+    }
+    MatrixForm {
+        whole: None,
+        entries: row_by_row(entries),
+        columns_tex: Math::all(columns_tex),
+        read_off_tex: Math::from(read_off_tex),
+        ..MatrixForm::default()
+    }
+}
+
+/// Each listed row's nonzero entries of `A`, and its `b`, by their values at the initial
+/// state (`initial`), the row labelled by its equation.
+fn entries_by_value(
+    system: &LinearSystem,
+    labels: &[String],
+    names: &MatrixNames,
+    listed: &impl Fn(usize) -> bool,
+    initial: &impl Fn(&Expr) -> f64,
+) -> Vec<MatrixEntry> {
+    let value = |e: &Expr| value_tex(initial, e);
+    (0..system.a.len())
+        .filter(|&i| listed(i))
+        .map(|i| {
+            let mut values: Vec<String> = system.a[i]
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| !e.is_zero())
+                .map(|(j, e)| format!("{}_{{{},{}}} = {}", names.a, i + 1, j + 1, value(e)))
+                .collect();
+            values.push(format!(
+                "{}_{{{}}} = {}",
+                names.b,
+                i + 1,
+                value(&system.b[i])
+            ));
+            MatrixEntry {
+                row: i + 1,
+                row_label_tex: Math::from(labels[i].clone()),
+                values_tex: Math::all(values),
+                ..MatrixEntry::default()
+            }
+        })
+        .collect()
+}
+
+/// The entries of `b`: collected by the products of rates, each coefficient's factor out,
+/// as step 5 writes an equation, when that is shorter than factored.
+fn b_texts(b: &[Expr]) -> Vec<String> {
+    b.iter()
+        .map(|e| {
+            let (factored, collected) = (latex_factored(e), latex_collected(e));
+            if collected.len() < factored.len() {
+                collected
+            } else {
+                factored
+            }
+        })
+        .collect()
+}
+
+/// Each entry of `b` too long to read whole (its text in `b_tex`), collected by the
+/// products of rates it holds; empty for the others.
+fn b_groups(b: &[Expr], b_tex: &[String]) -> Vec<Vec<(Expr, Expr)>> {
+    b.iter()
+        .zip(b_tex)
         .map(|(e, text)| {
             if text.len() > 2 * LONG_EQUATION {
                 by_rates(e)
@@ -197,7 +278,20 @@ pub fn matrix(
                 Vec::new()
             }
         })
-        .collect();
+        .collect()
+}
+
+/// The entries listed one by one: each row's nonzero entries of `A` (a symmetric one by its
+/// mirror's name) and its `b`, a long `b` by the products of rates in `b_groups`.
+fn entries_of(
+    a: &[Vec<Expr>],
+    (a_tex, b_tex): (&[Vec<String>], &[String]),
+    b_groups: &[Vec<(Expr, Expr)>],
+    labels: &[String],
+    x: &[String],
+    names: &MatrixNames,
+    listed: &impl Fn(usize) -> bool,
+) -> Vec<MatrixEntry> {
     let mut entries = Vec::new();
     for (i, row) in a.iter().enumerate() {
         let mut label = labels[i].clone();
@@ -262,83 +356,68 @@ pub fn matrix(
             );
         }
     }
-    if let Some(table) = table_by_name {
-        let mut defined = Vec::new();
-        for (i, row) in a_names.iter().enumerate() {
-            for (j, name) in row.iter().enumerate() {
-                if *name == format!("{}_{{{},{}}}", names.a, i + 1, j + 1) {
-                    defined.push(MatrixEntry {
-                        row: i + 1,
-                        column: (j + 1).to_string(),
-                        value_tex: Math::from(format!("{name} = {}", a_tex[i][j])),
-                        column_tex: Math::from(x[j].clone()),
-                        ..MatrixEntry::default()
-                    });
-                }
+    entries
+}
+
+/// The whole table with the long entries by name (`a_names`), those of `A` defined below
+/// it and `b`'s entries after them; the unknowns listed by column where the table heads
+/// them by number.
+fn by_name_form(
+    table: WholeMatrix,
+    a_names: &[Vec<String>],
+    a_tex: &[Vec<String>],
+    x: &[String],
+    names: &MatrixNames,
+    (entries, unknowns_by_number): (Vec<MatrixEntry>, bool),
+) -> MatrixForm {
+    let mut defined = Vec::new();
+    for (i, row) in a_names.iter().enumerate() {
+        for (j, name) in row.iter().enumerate() {
+            if *name == format!("{}_{{{},{}}}", names.a, i + 1, j + 1) {
+                defined.push(MatrixEntry {
+                    row: i + 1,
+                    column: (j + 1).to_string(),
+                    value_tex: Math::from(format!("{name} = {}", a_tex[i][j])),
+                    column_tex: Math::from(x[j].clone()),
+                    ..MatrixEntry::default()
+                });
             }
         }
-        defined.extend(
-            entries
-                .into_iter()
-                .filter(|e| e.column == "b")
-                .map(|e| MatrixEntry {
-                    row_label_tex: Math::from(String::new()),
-                    ..e
-                }),
-        );
-        return MatrixForm {
-            whole: Some(table),
-            entries: defined,
-            columns_tex: if unknowns_by_number {
-                Math::all(columns(&x))
-            } else {
-                Vec::new()
-            },
-            ..MatrixForm::default()
-        };
     }
-    if let Some(table) = table_with_b_by_name {
-        let b_entries = entries
+    defined.extend(
+        entries
             .into_iter()
             .filter(|e| e.column == "b")
             .map(|e| MatrixEntry {
                 row_label_tex: Math::from(String::new()),
                 ..e
-            })
-            .collect();
-        return MatrixForm {
-            whole: Some(table),
-            entries: b_entries,
-            ..MatrixForm::default()
-        };
-    }
-    let columns_tex = columns(&x);
-    if !by_entries && entries.len() > MOST_LISTED {
-        // Step 5 writes every row out, collected by its unknowns: listing the entries again
-        // would repeat it. Where each row's unknowns are is the system's shape, which the
-        // rows one by one do not show.
-        return MatrixForm {
-            pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
-            columns_tex: Math::all(columns_tex),
-            ..MatrixForm::default()
-        };
-    }
-    let read_off: Vec<usize> = (0..a.len()).filter(|&i| !listed(i)).collect();
-    entries.retain(|e| listed(e.row - 1));
-    let read_off_tex = rows_tex(&read_off);
-    if entries.len() <= MOST_LISTED {
-        return MatrixForm {
-            whole: None,
-            entries,
-            read_off_tex: Math::from(read_off_tex),
-            ..MatrixForm::default()
-        };
-    }
+            }),
+    );
     MatrixForm {
-        whole: None,
-        entries: row_by_row(entries),
-        columns_tex: Math::all(columns_tex),
-        read_off_tex: Math::from(read_off_tex),
+        whole: Some(table),
+        entries: defined,
+        columns_tex: if unknowns_by_number {
+            Math::all(columns(x))
+        } else {
+            Vec::new()
+        },
+        ..MatrixForm::default()
+    }
+}
+
+/// The whole table with `b` by name, its entries below it.
+fn b_by_name_form(table: WholeMatrix, entries: Vec<MatrixEntry>) -> MatrixForm {
+    let b_entries = entries
+        .into_iter()
+        .filter(|e| e.column == "b")
+        .map(|e| MatrixEntry {
+            row_label_tex: Math::from(String::new()),
+            ..e
+        })
+        .collect();
+    MatrixForm {
+        whole: Some(table),
+        entries: b_entries,
         ..MatrixForm::default()
     }
 }

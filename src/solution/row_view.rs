@@ -31,9 +31,147 @@ fn speeds_of(derivation: &Derivation) -> usize {
         .map_or(0, |speeds| speeds.independent.len())
 }
 
+/// Kane's row `r`: `F_r` and `F*_r` apart (`F̃_r` and `F̃*_r` where formed with the
+/// constrained partial velocities), `F*_r` by each body's dot products or contribution
+/// where that is what a student writes.
+fn kane_forces(
+    derivation: &Derivation,
+    row: &Equation,
+    r: usize,
+    by_name: bool,
+    shown: &impl Fn(&Expr) -> Expr,
+) -> (String, String) {
+    let (mut active_tex, mut inertia_tex) =
+        super::kane::generalized_forces(&row.groups, r, !by_name, shown);
+    let independent = derivation.dependent_speeds.as_ref();
+    if independent.is_some() {
+        // Formed with the constrained partial velocities: F̃_r and F̃*_r.
+        let tilde = |t: String| {
+            t.replacen("F_{", "\\tilde{F}_{", 1)
+                .replacen("F^{*}_{", "\\tilde{F}^{*}_{", 1)
+        };
+        (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
+    }
+    let products = if independent.is_some() {
+        // Formed with the constrained partial velocities, the dependent accelerations
+        // replaced where they enter.
+        super::kane_tilde::inertia_dot_products(derivation, r, &row.groups, &inertia_tex, shown)
+    } else {
+        super::kane_dots::inertia_dot_products(derivation, r, &inertia_tex, shown)
+    };
+    if let Some(products) = products {
+        // Each body's dot products multiplied out: what a student writes.
+        inertia_tex = products;
+    } else if inertia_tex.contains("\\text{") || independent.is_some() {
+        // Each body's contribution apart: what a student sums, where the whole is too
+        // long beside the row's sum or is formed with the constrained partial velocities.
+        if let Some(by_body) =
+            super::kane_bodies::inertia_by_body(derivation, r, &inertia_tex, shown)
+        {
+            inertia_tex = by_body;
+        }
+    }
+    (active_tex, inertia_tex)
+}
+
+/// Kane's row `r`: its heading and the words beside it (which speed it is for), the row
+/// solved for its one force where an auxiliary speed brings that force in (`simplified`,
+/// not where the row is written `by_name`), and the note on an augmented row.
+fn kane_heading(
+    derivation: &Derivation,
+    row: &Equation,
+    r: usize,
+    simplified: &Expr,
+    by_name: bool,
+) -> ((String, String), String, String) {
+    let problem = derivation.model.problem;
+    let mut solved_tex = String::new();
+    let mut augmented_note = String::new();
+    let independent = derivation.dependent_speeds.as_ref();
+    let heading = if let Some(speeds) = independent.filter(|s| r <= s.independent.len()) {
+        (
+            format!(
+                "r = {r}\\colon\\; {}",
+                super::independent::speed_tex(derivation, speeds, r - 1)
+            ),
+            "(an independent speed)".to_string(),
+        )
+    } else if independent.is_some() {
+        // The force the row is for: a friction force, which works with the slip rates,
+        // may be in it too.
+        let friction = crate::equations::friction_forces(&derivation.model);
+        let forces: Vec<Symbol> = row
+            .unknowns
+            .iter()
+            .filter(|u| matches!(u, Symbol::Unknown(_)) && !friction.contains(u))
+            .cloned()
+            .collect();
+        let normals = crate::equations::normal_forces(&derivation.model);
+        let along = if forces.iter().all(|f| normals.contains(f)) {
+            "the normal force, which the sliding law needs"
+        } else {
+            "the force asked for"
+        };
+        if !by_name {
+            // One force in the row: solved for it, as a textbook ends an auxiliary row.
+            solved_tex = solved_for_reaction(simplified, &forces);
+        }
+        let slides = row.unknowns.iter().any(|u| friction.contains(u));
+        let brings = if slides {
+            "and brings in that force, with the friction forces that work in that motion"
+        } else {
+            "and brings in that force alone"
+        };
+        // Said in full at the first auxiliary speed; the later ones refer to it.
+        let first = speeds_of(derivation) + 1;
+        let why = if r == first {
+            format!(
+                "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
+            )
+        } else if slides {
+            format!("(an auxiliary speed, as in row {first}; friction works with it too)")
+        } else {
+            format!("(an auxiliary speed, as in row {first})")
+        };
+        (
+            format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
+            why,
+        )
+    } else if r <= problem.coordinates.len() {
+        (
+            format!(
+                "r = {r}\\colon\\; {}",
+                super::kane::speed_tex(derivation, r - 1)
+            ),
+            "(a generalized speed)".to_string(),
+        )
+    } else {
+        augmented_note = super::auxiliary::augmented_note(derivation, row, r).unwrap_or_default();
+        let reactions: Vec<Symbol> = row
+            .unknowns
+            .iter()
+            .filter(|u| matches!(u, Symbol::Unknown(_)))
+            .cloned()
+            .collect();
+        if !by_name {
+            solved_tex = solved_for_reaction(simplified, &reactions);
+        }
+        (
+            format!(
+                "r = {r}\\colon\\; u_{{{r}}} \\to {}",
+                unknowns_tex(&reactions)
+            ),
+            format!(
+                "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
+                bodies_name(problem, &row.free_body)
+            ),
+        )
+    };
+    (heading, solved_tex, augmented_note)
+}
+
 /// Step 5: one row, grouped as the Motion Law groups it and simplified.
 pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
-    let problem = derivation.model.problem;
     let sign = initial_sign(&derivation.model);
     let shown = |e: &Expr| {
         let e = if uses_shown(derivation) {
@@ -98,121 +236,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     if let (Sum::Generalized { .. }, Some(r)) = (&row.sum, super::kane::row_number(derivation, row))
     {
         // Kane's row: F_r and F_r* apart, then their sum, which is the row as formed.
-        (active_tex, inertia_tex) =
-            super::kane::generalized_forces(&row.groups, r, !by_name, shown);
+        (active_tex, inertia_tex) = kane_forces(derivation, row, r, by_name, &shown);
         grouped_tex = String::new();
-        let independent = derivation.dependent_speeds.as_ref();
-        if independent.is_some() {
-            // Formed with the constrained partial velocities: F̃_r and F̃*_r.
-            let tilde = |t: String| {
-                t.replacen("F_{", "\\tilde{F}_{", 1)
-                    .replacen("F^{*}_{", "\\tilde{F}^{*}_{", 1)
-            };
-            (active_tex, inertia_tex) = (tilde(active_tex), tilde(inertia_tex));
-        }
-        let products = if independent.is_some() {
-            // Formed with the constrained partial velocities, the dependent accelerations
-            // replaced where they enter.
-            super::kane_tilde::inertia_dot_products(
-                derivation,
-                r,
-                &row.groups,
-                &inertia_tex,
-                &shown,
-            )
-        } else {
-            super::kane_dots::inertia_dot_products(derivation, r, &inertia_tex, &shown)
-        };
-        if let Some(products) = products {
-            // Each body's dot products multiplied out: what a student writes.
-            inertia_tex = products;
-        } else if inertia_tex.contains("\\text{") || independent.is_some() {
-            // Each body's contribution apart: what a student sums, where the whole is too
-            // long beside the row's sum or is formed with the constrained partial velocities.
-            if let Some(by_body) =
-                super::kane_bodies::inertia_by_body(derivation, r, &inertia_tex, &shown)
-            {
-                inertia_tex = by_body;
-            }
-        }
-        (label_tex, label) = if let Some(speeds) = independent.filter(|s| r <= s.independent.len())
-        {
-            (
-                format!(
-                    "r = {r}\\colon\\; {}",
-                    super::independent::speed_tex(derivation, speeds, r - 1)
-                ),
-                "(an independent speed)".to_string(),
-            )
-        } else if independent.is_some() {
-            // The force the row is for: a friction force, which works with the slip rates,
-            // may be in it too.
-            let friction = crate::equations::friction_forces(&derivation.model);
-            let forces: Vec<Symbol> = row
-                .unknowns
-                .iter()
-                .filter(|u| matches!(u, Symbol::Unknown(_)) && !friction.contains(u))
-                .cloned()
-                .collect();
-            let normals = crate::equations::normal_forces(&derivation.model);
-            let along = if forces.iter().all(|f| normals.contains(f)) {
-                "the normal force, which the sliding law needs"
-            } else {
-                "the force asked for"
-            };
-            if !by_name {
-                // One force in the row: solved for it, as a textbook ends an auxiliary row.
-                solved_tex = solved_for_reaction(&simplified, &forces);
-            }
-            let slides = row.unknowns.iter().any(|u| friction.contains(u));
-            let brings = if slides {
-                "and brings in that force, with the friction forces that work in that motion"
-            } else {
-                "and brings in that force alone"
-            };
-            // Said in full at the first auxiliary speed; the later ones refer to it.
-            let first = speeds_of(derivation) + 1;
-            let why = if r == first {
-                format!(
-                    "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
-                )
-            } else if slides {
-                format!("(an auxiliary speed, as in row {first}; friction works with it too)")
-            } else {
-                format!("(an auxiliary speed, as in row {first})")
-            };
-            (
-                format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
-                why,
-            )
-        } else if r <= problem.coordinates.len() {
-            (
-                format!(
-                    "r = {r}\\colon\\; {}",
-                    super::kane::speed_tex(derivation, r - 1)
-                ),
-                "(a generalized speed)".to_string(),
-            )
-        } else {
-            augmented_note =
-                super::auxiliary::augmented_note(derivation, row, r).unwrap_or_default();
-            let reactions: Vec<Symbol> = row
-                .unknowns
-                .iter()
-                .filter(|u| matches!(u, Symbol::Unknown(_)))
-                .cloned()
-                .collect();
-            if !by_name {
-                solved_tex = solved_for_reaction(&simplified, &reactions);
-            }
-            (
-                format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&reactions)),
-                format!(
-                    "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
-                    bodies_name(problem, &row.free_body)
-                ),
-            )
-        };
+        ((label_tex, label), solved_tex, augmented_note) =
+            kane_heading(derivation, row, r, &simplified, by_name);
     }
     let mut lagrange_tex = Vec::new();
     if let Some(text) = lagrange_text {

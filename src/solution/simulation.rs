@@ -37,23 +37,7 @@ pub fn simulation(
         ));
     }
     solution.simulation.note = notes.join(" ");
-    solution.simulation.checks = checks
-        .iter()
-        .map(|c| {
-            // Said as physics, in the course's words; the check's own sentence only where
-            // the motion does not hold it.
-            let own = detail(problem, c);
-            let method = solution.method.as_str();
-            let said = super::confirmation::sentence(problem, method, c, trajectory, own.as_str());
-            Check {
-                name: c.name().to_string(),
-                value: fixed(c.value),
-                tolerance: fixed(c.tolerance),
-                passed: c.passed,
-                detail: MarkupLine::from(said),
-            }
-        })
-        .collect();
+    solution.simulation.checks = checks_said(&solution.method, problem, checks, trajectory);
     // One quantity per axis: angles and distances on plots of their own.
     let series_of = |kind: CoordinateKind| -> Vec<Series> {
         problem
@@ -68,27 +52,7 @@ pub fn simulation(
             })
             .collect()
     };
-    // V and E from the problem's datum, as the answers give them, not from the start.
-    let datum = trajectory.potential_at_start;
-    // T is the kinetic energy, unless the problem names a constant T (a drive torque).
-    let named_t = problem.constants.iter().any(|c| c.name == "T");
-    let (kinetic, total) = match named_t {
-        true => ("K", "E = K + V"),
-        false => ("T", "E = T + V"),
-    };
-    let energy_series: Vec<Series> = [
-        ("kinetic", kinetic, 0.0),
-        ("potential", "V", datum),
-        ("total", total, datum),
-    ]
-    .iter()
-    .filter_map(|&(part, symbol, shift)| {
-        trajectory.series(part).map(|points| Series {
-            name: Label::math(symbol, ""),
-            points: points.into_iter().map(|(t, e)| (t, e + shift)).collect(),
-        })
-    })
-    .collect();
+    let energy_series = energy_series(problem, trajectory);
     let mut plots = vec![
         (
             "coordinates",
@@ -145,7 +109,7 @@ pub fn simulation(
             title: title.into(),
             svg_file: FileName::from(String::new()),
             image_svg: SvgDocument::default(),
-            pgfplots_latex: LatexCode::default(),
+            image_latex: LatexCode::default(),
             data: Some(PlotData {
                 x_label: time.clone(),
                 y_label,
@@ -154,6 +118,57 @@ pub fn simulation(
             }),
         });
     }
+}
+
+/// The confirmation checks of the run by `method`, each said as physics, in the course's
+/// words.
+fn checks_said(
+    method: &str,
+    problem: &Problem,
+    checks: &[crate::numeric::Check],
+    trajectory: &Trajectory,
+) -> Vec<Check> {
+    checks
+        .iter()
+        .map(|c| {
+            // Said as physics, in the course's words; the check's own sentence only where
+            // the motion does not hold it.
+            let own = detail(problem, c);
+            let said = super::confirmation::sentence(problem, method, c, trajectory, own.as_str());
+            Check {
+                name: c.name().to_string(),
+                value: fixed(c.value),
+                tolerance: fixed(c.tolerance),
+                passed: c.passed,
+                detail: MarkupLine::from(said),
+            }
+        })
+        .collect()
+}
+
+/// The kinetic, potential and total energy against time, for the energy's plot.
+fn energy_series(problem: &Problem, trajectory: &Trajectory) -> Vec<Series> {
+    // V and E from the problem's datum, as the answers give them, not from the start.
+    let datum = trajectory.potential_at_start;
+    // T is the kinetic energy, unless the problem names a constant T (a drive torque).
+    let named_t = problem.constants.iter().any(|c| c.name == "T");
+    let (kinetic, total) = match named_t {
+        true => ("K", "E = K + V"),
+        false => ("T", "E = T + V"),
+    };
+    [
+        ("kinetic", kinetic, 0.0),
+        ("potential", "V", datum),
+        ("total", total, datum),
+    ]
+    .iter()
+    .filter_map(|&(part, symbol, shift)| {
+        trajectory.series(part).map(|points| Series {
+            name: Label::math(symbol, ""),
+            points: points.into_iter().map(|(t, e)| (t, e + shift)).collect(),
+        })
+    })
+    .collect()
 }
 
 /// The total energy's change, (E − E₀)/|E₀|, on an axis of its own, since beside the

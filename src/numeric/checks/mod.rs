@@ -22,7 +22,7 @@ use crate::symbolic::fixed;
 pub fn confirm(
     problem: &Problem,
     primary: (&str, &dyn System),
-    others: &[(&str, Result<&dyn System, String>)],
+    others: &[(&str, Derived)],
     trajectory: &Trajectory,
     q0: &[f64],
 ) -> Vec<Check> {
@@ -37,12 +37,16 @@ pub fn confirm(
     checks
 }
 
+/// Another method's equations for the checks, or why they could not be derived (the
+/// derivation's own error, written into the agreement check as it reads).
+pub type Derived<'a> = Result<&'a dyn System, &'a dyn std::fmt::Display>;
+
 /// [`confirm`] on systems already at hand: `primary` is the one that was simulated, `others`
 /// the other methods, each with its equations or why they could not be had. A method in
 /// `others` that is an `Err` makes the agreement check fail, with its reason.
 pub fn confirm_systems(
     primary: (&str, &dyn System),
-    others: &[(&str, Result<&dyn System, String>)],
+    others: &[(&str, Derived)],
     trajectory: &Trajectory,
     q0: &[f64],
 ) -> Vec<Check> {
@@ -349,7 +353,7 @@ mod tests {
         let reason = "the planner found 1 independent equations for 2 unknowns".to_string();
         let checks = confirm_systems(
             ("motion-law", &a),
-            &[("newton-euler", Ok(&b)), ("kane", Err(reason.clone()))],
+            &[("newton-euler", Ok(&b)), ("kane", Err(&reason))],
             &trajectory,
             &[1.0],
         );
@@ -379,7 +383,7 @@ mod tests {
         // Every other method failing: still reported.
         let alone = confirm_systems(
             ("motion-law", &a),
-            &[("kane", Err(reason.clone()))],
+            &[("kane", Err(&reason))],
             &trajectory,
             &[1.0],
         );

@@ -432,9 +432,9 @@ pub struct Plot {
     /// The SVG document, inlined into HTML.
     pub image_svg: SvgDocument,
     /// A `tikzpicture` with a pgfplots `axis`, for LaTeX.
-    pub pgfplots_latex: LatexCode,
+    pub image_latex: LatexCode,
     /// What is plotted, from which the renderer draws [`Plot::image_svg`] and
-    /// [`Plot::pgfplots_latex`] for the format asked ([`crate::render::plots_drawn::draw`]).
+    /// [`Plot::image_latex`] for the format asked ([`crate::render::plots_drawn::draw`]).
     #[serde(skip)]
     pub data: Option<crate::render::plot::PlotData>,
 }

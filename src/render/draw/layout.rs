@@ -14,6 +14,7 @@ use super::strokes::{
 };
 
 mod beside;
+mod marks;
 mod triad;
 
 /// The radius of a 2D couple's arc.
@@ -243,18 +244,7 @@ impl Painter {
                 radius,
                 inside,
             } => self.track(*center, *normal, *radius, *inside),
-            Shape::Bar(points) => {
-                let points: Vec<P2> = points.iter().map(|p| self.at(*p)).collect();
-                self.stroke(points.clone(), 7.0, Ink::Black, None, false);
-                self.items.push(Item::Stroke(Stroke {
-                    points,
-                    closed: false,
-                    width: 4.6,
-                    ink: Ink::Body,
-                    fill: None,
-                    dashed: false,
-                }));
-            }
+            Shape::Bar(points) => self.bar(points),
             Shape::Polygon(points) | Shape::Outline(points) => {
                 let points: Vec<P2> = points.iter().map(|p| self.at(*p)).collect();
                 self.stroke(points, 1.4, Ink::Black, Some(Ink::Body), true);
@@ -271,26 +261,8 @@ impl Painter {
                 let c = self.at(*p);
                 self.circle(c, 6.0, Ink::Black, Ink::Body);
             }
-            Shape::Weld(p) => {
-                let c = self.at(*p);
-                let square = [[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]
-                    .map(|d| p2add(c, d))
-                    .to_vec();
-                self.stroke(square, 1.0, Ink::Black, Some(Ink::Black), true);
-            }
-            Shape::Slider { at, axis } => {
-                let c = self.at(*at);
-                let u = p2unit(self.projection.direction(*axis)).unwrap_or([1.0, 0.0]);
-                let n = [-u[1], u[0]];
-                let corner = |a: f64, b: f64| p2add(c, p2add(p2scale(u, a), p2scale(n, b)));
-                let sleeve = vec![
-                    corner(-13.0, -6.0),
-                    corner(13.0, -6.0),
-                    corner(13.0, 6.0),
-                    corner(-13.0, 6.0),
-                ];
-                self.stroke(sleeve, 1.2, Ink::Black, None, true);
-            }
+            Shape::Weld(p) => self.weld(*p),
+            Shape::Slider { at, axis } => self.slider(*at, *axis),
             Shape::Ground { at, along, up } => self.ground(*at, *along, *up),
             Shape::Spring { from, to, lane } => {
                 let (a, b) = (self.at(*from), self.at(*to));
@@ -314,49 +286,8 @@ impl Painter {
                 axis,
                 angle,
                 label,
-            } => {
-                let r = 30.0 / self.scale;
-                let v = cross(*axis, *from);
-                let steps = 24;
-                let points: Vec<P2> = (0..=steps)
-                    .map(|k| {
-                        let t = angle * k as f64 / steps as f64;
-                        let d = add(scale(*from, t.cos()), scale(v, t.sin()));
-                        self.at(add(*center, scale(d, r)))
-                    })
-                    .collect();
-                let n = points.len();
-                if let Some(u) = p2unit([
-                    points[n - 1][0] - points[n - 2][0],
-                    points[n - 1][1] - points[n - 2][1],
-                ]) {
-                    if angle.abs() > 0.15 {
-                        let h = head(points[n - 1], u);
-                        self.stroke(h.to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
-                    }
-                }
-                let middle = points[n / 2];
-                let c = self.at(*center);
-                let toward = (middle[1] - c[1]).atan2(middle[0] - c[0]);
-                self.stroke(points, 1.0, Ink::Grey, None, false);
-                self.label(middle, toward, label, Ink::Black);
-            }
-            Shape::Distance { from, to, label } => {
-                let (a, b) = (self.at(*from), self.at(*to));
-                let Some(u) = p2unit([b[0] - a[0], b[1] - a[1]]) else {
-                    return;
-                };
-                let n = [-u[1], u[0]];
-                let (a2, b2) = (p2add(a, p2scale(n, 14.0)), p2add(b, p2scale(n, 14.0)));
-                self.thin_dashed(a, p2add(a, p2scale(n, 18.0)));
-                self.thin_dashed(b, p2add(b, p2scale(n, 18.0)));
-                self.stroke(vec![a2, b2], 0.9, Ink::Grey, None, false);
-                for (tip, d) in [(b2, u), (a2, p2scale(u, -1.0))] {
-                    self.stroke(head(tip, d).to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
-                }
-                let middle = p2scale(p2add(a2, b2), 0.5);
-                self.label(middle, n[1].atan2(n[0]), label, Ink::Black);
-            }
+            } => self.angle(*center, (*from, *axis), *angle, label),
+            Shape::Distance { from, to, label } => self.distance(*from, *to, label),
             Shape::Dashed { from, to } => {
                 let (a, b) = (self.at(*from), self.at(*to));
                 self.thin_dashed(a, b);
@@ -564,19 +495,12 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         painter.fixed_text(equals, Label::from_tex("="), Ink::Black);
         painter.place_labels(&mut arrows);
     }
-    let mut texts = vec![Item::Text {
-        at: [width / 2.0, 16.0],
-        label: Label::text(&scene.title),
-        ink: Ink::Black,
-    }];
-    texts.append(&mut painter.texts);
-    for (k, line) in legend_lines.iter().enumerate() {
-        texts.push(Item::Text {
-            at: [width / 2.0, height - legend + 14.0 + 18.0 * k as f64],
-            label: Label::text(line),
-            ink: Ink::Grey,
-        });
-    }
+    let texts = texts(
+        &scene.title,
+        std::mem::take(&mut painter.texts),
+        &legend_lines,
+        [width, height, legend],
+    );
     Picture {
         width,
         height,
@@ -590,4 +514,28 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
             height: legend,
         },
     }
+}
+
+/// The picture's texts: its title above, the labels `placed`, the legend's lines below;
+/// `width`, `height` and the `legend`'s height are the picture's.
+fn texts(
+    title: &str,
+    mut placed: Vec<Item>,
+    legend_lines: &[String],
+    [width, height, legend]: [f64; 3],
+) -> Vec<Item> {
+    let mut texts = vec![Item::Text {
+        at: [width / 2.0, 16.0],
+        label: Label::text(title),
+        ink: Ink::Black,
+    }];
+    texts.append(&mut placed);
+    for (k, line) in legend_lines.iter().enumerate() {
+        texts.push(Item::Text {
+            at: [width / 2.0, height - legend + 14.0 + 18.0 * k as f64],
+            label: Label::text(line),
+            ink: Ink::Grey,
+        });
+    }
+    texts
 }

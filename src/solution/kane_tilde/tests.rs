@@ -1,14 +1,21 @@
 //! The parts of `F̃^*_r` against the method's numbers and a hand derivation.
 
 use super::{inertia_dot_products, parts, Elimination, Part};
-use crate::equations::{Derivation, Method};
-use crate::numeric::System;
+use crate::equations::{Derivation, Method, Request, Rows};
+use crate::mechanics::Form;
+use crate::numeric::{Compiled, System};
 use crate::plan::{Groups, Sum};
 use crate::symbolic::{eval, roots_of_squares, Expr, Values};
 use nalgebra::{DMatrix, DVector};
 
+/// Kane's rows as the handout writes them, from the equations' own entry.
 fn derivation_of(problem: &crate::problem::Problem) -> Option<Derivation<'_>> {
-    crate::pipeline::derive(problem, Method::Kane, crate::pipeline::Purpose::Handout).ok()
+    let request = Request {
+        form: Form::Handout,
+        rows: Rows::Formed,
+        states: &[],
+    };
+    crate::equations::derive(problem, Method::Kane, request).ok()
 }
 
 /// Kane's row of independent speed `r` (1-based).
@@ -29,7 +36,7 @@ fn solved_state(derivation: &Derivation) -> Values {
     let problem = model.problem;
     let mut q0: Vec<f64> = problem.coordinates.iter().map(|c| c.initial).collect();
     let mut rates0: Vec<f64> = problem.coordinates.iter().map(|c| c.rate).collect();
-    crate::pipeline::Solver::new(problem, derivation)
+    Compiled::new(derivation)
         .assemble(0.0, &mut q0, &mut rates0)
         .expect("the constraints are met at the start");
     let mut values = model.values_at(0.0, &q0, &rates0);

@@ -87,19 +87,33 @@ impl PartialOrd for Symbol {
 /// The functions of the problem format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Func {
+    /// sin x.
     Sin,
+    /// cos x.
     Cos,
+    /// tan x.
     Tan,
+    /// `asin x`, in `[−π/2, π/2]`.
     Asin,
+    /// `acos x`, in `[0, π]`.
     Acos,
+    /// atan x, in (−π/2, π/2).
     Atan,
+    /// `atan2(y, x)`, the angle of the point (x, y), in `[−π, π]`.
     Atan2,
+    /// The square root.
     Sqrt,
+    /// e to the power x.
     Exp,
+    /// The natural logarithm.
     Ln,
+    /// |x|.
     Abs,
+    /// The sign of x: −1, 0 or 1.
     Sign,
+    /// The smaller of two.
     Min,
+    /// The larger of two.
     Max,
 }
 
@@ -148,7 +162,9 @@ impl Func {
 /// One node of an expression.
 #[derive(Debug, PartialEq)]
 pub enum Node {
+    /// A number.
     Num(Number),
+    /// A symbol: a constant, a coordinate or its rate, an unknown, a named quantity.
     Sym(Symbol),
     /// Two or more terms, sorted, like terms collected, a number term first if any.
     Add(Vec<Expr>),
@@ -156,6 +172,7 @@ pub enum Node {
     Mul(Vec<Expr>),
     /// A power that could not be folded: base and exponent.
     Pow(Expr, Expr),
+    /// A function applied to its arguments.
     Func(Func, Vec<Expr>),
 }
 

@@ -1,0 +1,96 @@
+//! The marks of a picture that are not bodies' outlines: a bar, a weld, a slider's
+//! sleeve, and the dimension marks (an angle's arc, a distance's arrows).
+
+use super::super::numbers::{add, cross, scale, P3};
+use super::super::picture::{Ink, Item, Stroke, P2};
+use super::super::scene::Label;
+use super::super::strokes::{head, p2add, p2scale, p2unit};
+use super::Painter;
+
+impl Painter {
+    /// A bar through `points`: a black line with the body's colour inside.
+    pub(super) fn bar(&mut self, points: &[P3]) {
+        let points: Vec<P2> = points.iter().map(|p| self.at(*p)).collect();
+        self.stroke(points.clone(), 7.0, Ink::Black, None, false);
+        self.items.push(Item::Stroke(Stroke {
+            points,
+            closed: false,
+            width: 4.6,
+            ink: Ink::Body,
+            fill: None,
+            dashed: false,
+        }));
+    }
+
+    /// A weld at `p`: a small filled square.
+    pub(super) fn weld(&mut self, p: P3) {
+        let c = self.at(p);
+        let square = [[-4.0, -4.0], [4.0, -4.0], [4.0, 4.0], [-4.0, 4.0]]
+            .map(|d| p2add(c, d))
+            .to_vec();
+        self.stroke(square, 1.0, Ink::Black, Some(Ink::Black), true);
+    }
+
+    /// A slider's sleeve at `at`, along `axis`.
+    pub(super) fn slider(&mut self, at: P3, axis: P3) {
+        let c = self.at(at);
+        let u = p2unit(self.projection.direction(axis)).unwrap_or([1.0, 0.0]);
+        let n = [-u[1], u[0]];
+        let corner = |a: f64, b: f64| p2add(c, p2add(p2scale(u, a), p2scale(n, b)));
+        let sleeve = vec![
+            corner(-13.0, -6.0),
+            corner(13.0, -6.0),
+            corner(13.0, 6.0),
+            corner(-13.0, 6.0),
+        ];
+        self.stroke(sleeve, 1.2, Ink::Black, None, true);
+    }
+
+    /// An angle's arc about `center` from the direction `from`, turning about `axis` by
+    /// `angle`, with its head and its label.
+    pub(super) fn angle(&mut self, center: P3, (from, axis): (P3, P3), angle: f64, label: &Label) {
+        let r = 30.0 / self.scale;
+        let v = cross(axis, from);
+        let steps = 24;
+        let points: Vec<P2> = (0..=steps)
+            .map(|k| {
+                let t = angle * k as f64 / steps as f64;
+                let d = add(scale(from, t.cos()), scale(v, t.sin()));
+                self.at(add(center, scale(d, r)))
+            })
+            .collect();
+        let n = points.len();
+        if let Some(u) = p2unit([
+            points[n - 1][0] - points[n - 2][0],
+            points[n - 1][1] - points[n - 2][1],
+        ]) {
+            if angle.abs() > 0.15 {
+                let h = head(points[n - 1], u);
+                self.stroke(h.to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
+            }
+        }
+        let middle = points[n / 2];
+        let c = self.at(center);
+        let toward = (middle[1] - c[1]).atan2(middle[0] - c[0]);
+        self.stroke(points, 1.0, Ink::Grey, None, false);
+        self.label(middle, toward, label, Ink::Black);
+    }
+
+    /// A distance from `from` to `to`: its extension lines, the arrows and the label.
+    pub(super) fn distance(&mut self, from: P3, to: P3, label: &Label) {
+        let (a, b) = (self.at(from), self.at(to));
+        let Some(u) = p2unit([b[0] - a[0], b[1] - a[1]]) else {
+            return;
+        };
+        let n = [-u[1], u[0]];
+        let (a2, b2) = (p2add(a, p2scale(n, 14.0)), p2add(b, p2scale(n, 14.0)));
+        self.thin_dashed(a, p2add(a, p2scale(n, 18.0)));
+        self.thin_dashed(b, p2add(b, p2scale(n, 18.0)));
+        self.stroke(vec![a2, b2], 0.9, Ink::Grey, None, false);
+        for (tip, d) in [(b2, u), (a2, p2scale(u, -1.0))] {
+            self.stroke(head(tip, d).to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
+        }
+        let middle = p2scale(p2add(a2, b2), 0.5);
+        self.label(middle, n[1].atan2(n[0]), label, Ink::Black);
+    }
+}
