@@ -166,16 +166,14 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             }
             let slides = row.unknowns.iter().any(|u| friction.contains(u));
             let brings = if slides {
-                "and brings in that force, with the friction forces that work in that motion"
+                "bringing in that force and the friction forces that work with it"
             } else {
-                "and brings in that force alone"
+                "bringing in that force alone"
             };
             // Said in full at the first auxiliary speed; the later ones refer to it.
             let first = speeds_of(derivation) + 1;
             let why = if r == first {
-                format!(
-                    "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
-                )
+                format!("(an auxiliary speed along {along}, {brings})")
             } else if slides {
                 format!("(an auxiliary speed, as in row {first}; friction works with it too)")
             } else {
@@ -206,9 +204,12 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                 solved_tex = solved_for_reaction(&simplified, &reactions);
             }
             (
-                format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&reactions)),
                 format!(
-                    "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
+                    "r = {r}\\colon\\; u_{{{r}}} \\to {}",
+                    unknowns_tex(&reactions)
+                ),
+                format!(
+                    "(an auxiliary speed: it moves {} and brings in the reaction)",
                     bodies_name(problem, &row.free_body)
                 ),
             )
