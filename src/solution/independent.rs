@@ -250,7 +250,7 @@ pub fn dependent_speeds(
         format!("{partials}:")
     });
     let kane_tex = format!(
-        "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0, \\quad \\tilde{{F}}_r = \\sum_{{P}} \\tilde{{\\mathbf{{v}}}}^{{P}}_r \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\tilde{{\\boldsymbol{{\\omega}}}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}} = F_r + \\sum_s C_{{sr}} F_s \\quad (r = {})",
+        "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0 \\; (r = {})",
         independent.join(", ")
     );
     let delta = relation_tex.contains("\\Delta");
@@ -295,41 +295,14 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<Stri
         }
         out.push(text);
     }
-    let n = problem.coordinates.len();
-    let constraint_rows = model.constraints.rows.len();
-    let count = |k: usize, one: &str, many: &str| {
-        if k == 1 {
-            format!("the {one}")
-        } else {
-            format!("the {k} {many}")
-        }
-    };
-    let mut solve = format!(
-        "Solving: {} and {} are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
-        count(
-            speeds.independent.len(),
-            "equation of the independent speed",
-            "equations of the independent speeds"
-        ),
-        count(
-            constraint_rows,
-            "differentiated constraint",
-            "differentiated constraints"
-        ),
-        speeds.independent.len() + constraint_rows,
-        n
-    );
-    if asked {
-        solve.push_str("; then each force asked for from its own auxiliary row, with the $\\ddot{q}$ known, one unknown per row.");
-    } else {
-        solve.push('.');
-    }
-    if delta {
-        // Where the constraints cannot be solved for the dependent rates.
-        solve.push_str(" The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0$ the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.");
-    }
+    // Where the constraints cannot be solved for the dependent rates.
+    let singular = "The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0$ the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.";
     if friction.is_empty() {
-        out.push(solve);
+        // The order of the solve is said after the matrix form; only the singular
+        // configuration of the dependent rates is said here.
+        if delta {
+            out.push(singular.to_string());
+        }
     } else {
         // The friction forces are in the rows of the speeds: nothing is solved first.
         let forces = |k: usize, one: &str, many: &str| if k == 1 { one } else { many }.to_string();
@@ -394,7 +367,7 @@ fn friction_note(derivation: &Derivation) -> String {
         ("forces", "do", "they are", "each is")
     };
     format!(
-        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds: the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$, dotted with the partial velocities of the contact points along the surface (the rows of the contact points in the table above). While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} that the law is written with {does_no} no work in any motion the constraints allow, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
+        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
         tex(&friction),
         words(&sites),
         tex(&normals),

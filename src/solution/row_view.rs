@@ -209,7 +209,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                     unknowns_tex(&reactions)
                 ),
                 format!(
-                    "(an auxiliary speed: it moves {} and brings in the reaction)",
+                    "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
                     bodies_name(problem, &row.free_body)
                 ),
             )
