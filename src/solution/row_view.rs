@@ -166,14 +166,14 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             }
             let slides = row.unknowns.iter().any(|u| friction.contains(u));
             let brings = if slides {
-                "bringing in that force and the friction forces that work with it"
+                "; friction works with it too"
             } else {
-                "bringing in that force alone"
+                ""
             };
             // Said in full at the first auxiliary speed; the later ones refer to it.
             let first = speeds_of(derivation) + 1;
             let why = if r == first {
-                format!("(an auxiliary speed along {along}, {brings})")
+                format!("(an auxiliary speed along {along}{brings})")
             } else if slides {
                 format!("(an auxiliary speed, as in row {first}; friction works with it too)")
             } else {
@@ -209,7 +209,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
                     unknowns_tex(&reactions)
                 ),
                 format!(
-                    "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
+                    "(an auxiliary speed: it moves {} against the joint)",
                     bodies_name(problem, &row.free_body)
                 ),
             )
