@@ -147,8 +147,8 @@ fn a_long_partial_velocity_is_written_by_the_names_of_step_4() {
 /// The mass matrix by hand, from the kinetic energy T = ½ q̇ᵀ M q̇ of the two rods:
 /// M11 = m1 L1²/3 + m2 (L1² + L2²/3 + L1 L2 cos q2), M12 = m2 (L2²/3 + L1 L2 cos q2 / 2),
 /// M22 = m2 L2²/3, all positive. Kane's rows of the speeds are −(M q̈ + …) = 0, so the
-/// handout writes them with the signs changed, each once: the matrix form shows only
-/// where the entries are, read off the rows.
+/// handout writes them with the signs changed, and the matrix form writes S out with
+/// these entries.
 #[test]
 fn kanes_rows_of_the_speeds_are_written_with_the_mass_matrix_positive() {
     let text = markdown("double-pendulum-rods.json");
@@ -180,12 +180,45 @@ fn kanes_rows_of_the_speeds_are_written_with_the_mass_matrix_positive() {
     // An auxiliary row's sum F_3 + F*_3 = 0 holds F^O_x alone: it is solved for it.
     assert!(row(3).starts_with("F^{O}_{x} = "), "{}", row(3));
     assert!(step5.contains("its signs changed so that the mass matrix is positive"));
-    // Each equation once: no list of the matrix's entries repeats the rows.
-    assert!(!step5.contains("- $A_{1,1} = "));
-    assert!(step5.contains("so the entries are read off there"));
 }
 
-/// Kane and Levinson's auxiliary speed along F^O_x: O gives way along n_x, every point of
+/// A two-degree-of-freedom Kane handout writes its matrix S out with its entries, as a
+/// student solves it, and no pattern of dots: by hand (see above) S₁₁ = M11, S₁₂ = S₂₁ =
+/// M12, S₂₂ = M22, and the auxiliary rows F^O = … hold their reaction with coefficient 1.
+/// The right-hand side of row 2 is −(L₂ m₂/2)(g sin(q1 + q2) + L₁ q̇₁² sin q2), from F₂ and
+/// the velocity terms of F₂* by hand.
+#[test]
+fn a_two_dof_kane_handout_writes_its_matrix_with_entries_and_no_dots() {
+    let text = markdown("double-pendulum-rods.json");
+    let matrix = section(&text, "In matrix form", "## Step 6");
+    assert!(!matrix.contains("\\bullet"), "{matrix}");
+    assert!(!text.contains("\\bullet"));
+    let entries = [
+        "S_{1,1} = \\frac{L_{1}^{2} m_{1}}{3} + L_{1}^{2} m_{2} + \\frac{L_{2}^{2} m_{2}}{3} + L_{1} L_{2} m_{2} c_{2}",
+        "S_{1,2} = \\frac{L_{2} m_{2}}{6} (2 L_{2} + 3 L_{1} c_{2})",
+        "S_{2,2} = \\frac{L_{2}^{2} m_{2}}{3}",
+        "f_{2} = -\\frac{L_{2} m_{2}}{2} (g s_{12} + L_{1} \\dot{q}_{1}^{2} s_{2})",
+    ];
+    for entry in entries {
+        assert!(matrix.contains(entry), "no {entry} in {matrix}");
+    }
+    // The symmetric entry below the diagonal refers to the one above, and each auxiliary
+    // row carries its reaction alone, with coefficient one.
+    assert!(
+        matrix.contains("(2) & S_{1,2} & S_{2,2} & 0 & 0 & f_{2}"),
+        "{matrix}"
+    );
+    assert!(
+        matrix.contains("(3) & S_{3,1} & S_{3,2} & 1 & 0 & f_{3}"),
+        "{matrix}"
+    );
+    assert!(
+        matrix.contains("(4) & S_{4,1} & S_{4,2} & 0 & 1 & f_{4}"),
+        "{matrix}"
+    );
+}
+
+/// Kane and Levinson's auxiliary speed along F^O_x: O slides along n_x, every point of
 /// A + B gains u₃ n_x, so v₃^{A*} = v₃^{B*} = n_x and ω₃ = 0; the pin P inside A + B does
 /// no work; the system is block-triangular (q̈ from rows 1–2, then one force a row).
 #[test]
@@ -193,9 +226,7 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
     let text = markdown("double-pendulum-rods.json");
     let n_x = latex_unit_vector("N", 0);
     let row3 = section(&text, "**3. ", "**4. ");
-    assert!(row3.contains(&format!(
-        "the joint $O$ is let give way with speed $u_{{3}}$ along ${n_x}$"
-    )));
+    assert!(row3.contains(&format!("Let $O$ slide with speed $u_{{3}}$ along ${n_x}$")));
     // The augmented velocity written out: A's centre, half a rod from O, moves at
     // (L₁/2) q̇₁ â_x by step 4, plus the give-way u₃ n̂_x.
     let a_x = latex_unit_vector("A", 0);
@@ -206,7 +237,7 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
         "$\\mathbf{{v}}^{{A^*}}_{{3}} = \\mathbf{{v}}^{{B^*}}_{{3}} = {n_x}$, its partial angular velocities zero"
     )));
     assert!(row3.contains("The reaction at $P$, inside $A + B$, drops out"));
-    assert!(row3.contains("with $u_{3} = 0$"));
+    assert!(row3.contains("at $u_{3} = 0$"));
     // The second component at O is told in short, referring to the first.
     let n_y = latex_unit_vector("N", 1);
     let row4 = section(&text, "**4. ", "In matrix form");

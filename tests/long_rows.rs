@@ -109,7 +109,7 @@ fn an_auxiliary_row_after_the_first_at_a_joint_refers_to_it() {
     // Kane's rows 16 to 20 bring in the five reactions at O through auxiliary speeds that
     // each move the whole chain A…G against the joint: said at row 16, referred to after.
     let markdown = all_joints("kane", "markdown");
-    let full = "(an auxiliary speed: it moves A + B + C + D + E + G against the joint and brings in the reaction)";
+    let full = "(an auxiliary speed: it moves A + B + C + D + E + G against the joint)";
     assert_eq!(markdown.matches(full).count(), 1);
     assert!(markdown.contains(&format!(
         "$r = 16\\colon\\; u_{{16}} \\to F^{{O}}_{{x}}$ {full}"

@@ -1,5 +1,5 @@
 //! Kane's auxiliary speeds as Kane and Levinson teach them (ch. 4): for a reaction asked
-//! for, the augmented velocities that let the joint give way along it, their partial
+//! for, the augmented velocities that let the joint slide or turn along it, their partial
 //! velocities, which forces drop out and why, and the accelerations at the speed zero.
 
 use super::tex::{bodies_tex, vector_tex};
@@ -67,9 +67,9 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
             };
             let written = augmented_centres(derivation, &subtree, &format!("{u}\\, {d}"))
                 .map(|v| format!(": ${v}$. The"))
-                .unwrap_or_else(|| ": the".to_string());
+                .unwrap_or_else(|| ". The".to_string());
             format!(
-                "Augmented velocities: the joint ${point}$ is let give way with speed ${u}$ along ${d}$, so every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before{written} partial velocities of ${u}$ are ${partials} = {d}${angular}."
+                "Let ${point}$ slide with speed ${u}$ along ${d}$: every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before{written} partial velocities of ${u}$ are ${partials} = {d}${angular}."
             )
         }
         (ComponentKind::Moment, None) => {
@@ -77,7 +77,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
                 format!("\\mathbf{{v}}^{{{b}}}_{{{r}}} = {d} \\times \\mathbf{{r}}^{{{point} {b}}}")
             });
             format!(
-                "Augmented velocities: ${bodies}$ is let turn about ${point}$ with angular speed ${u}$ about ${d}$, so each of its bodies gains ${u}\\, {d}$ and each point $X$ of it ${u}\\, {d} \\times \\mathbf{{r}}^{{{point} X}}$: the partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
+                "Let ${bodies}$ turn about ${point}$ with angular speed ${u}$ about ${d}$: each of its bodies gains ${u}\\, {d}$ and each point $X$ of it ${u}\\, {d} \\times \\mathbf{{r}}^{{{point} X}}$. The partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
             )
         }
     };
@@ -96,17 +96,16 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
         ([], _) => String::new(),
         (_, Some(first)) => format!(" The reactions inside drop out, as in row {first}."),
         ([one], None) => format!(
-
-            " The reaction at ${one}$, inside ${bodies}$, drops out: its two equal and opposite forces act at one point, which moves the same on both sides."
+            " The reaction at ${one}$, inside ${bodies}$, drops out: its equal and opposite forces act at one point."
         ),
         (many, None) => format!(
-            " The reactions at ${}$, inside ${bodies}$, drop out: each pair of equal and opposite forces acts at one point, which moves the same on both sides.",
+            " The reactions at ${}$, inside ${bodies}$, drop out: each pair of equal and opposite forces acts at one point.",
             many.join(", ")
         ),
     };
     // Why the accelerations are step 4's is said once, at the first auxiliary speed.
     let accelerations = if r == super::kane::speed_rows(derivation) + 1 {
-        format!(" The accelerations are those of step 4, with ${u} = 0$: the motion is the one the equations above describe.")
+        format!(" The accelerations are those of step 4, at ${u} = 0$.")
     } else {
         String::new()
     };

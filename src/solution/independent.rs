@@ -212,12 +212,18 @@ pub fn dependent_speeds(
         )
     };
     let mut paragraphs = vec![format!(
-        "The constraints fix the rates {} once the others are known, so Kane's method takes as generalized speeds only the rates that stay free, {}{}. The velocity constraints, solved for the dependent rates, give $\\dot{{q}}_D = C\\,\\dot{{q}}_I${using}:",
+        "The constraints fix the rates {} by the others, {}{}; solved for the dependent rates, the velocity constraints give $\\dot{{q}}_D = C\\,\\dot{{q}}_I${using}:",
         listed(&speeds.dependent),
         if speeds.independent.len() == 1 {
-            format!("the independent speed {}", listed(&speeds.independent))
+            format!(
+                "so the one generalized speed is the rate that stays free, {}",
+                listed(&speeds.independent)
+            )
         } else {
-            format!("the independent speeds {}", listed(&speeds.independent))
+            format!(
+                "so the generalized speeds are the rates that stay free, {}",
+                listed(&speeds.independent)
+            )
         },
         if speeds.prescribed.is_empty() {
             String::new()
@@ -237,14 +243,14 @@ pub fn dependent_speeds(
             );
         }
     }
-    let partials = "With the independent speeds, the constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise), the velocity a point has when $u_r$ alone is one and the dependent rates follow the constraints";
+    let partials = "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)";
     paragraphs.push(if speeds.at_each_state {
         format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
     } else {
         format!("{partials}:")
     });
     let kane_tex = format!(
-        "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0, \\quad \\tilde{{F}}_r = \\sum_{{P}} \\tilde{{\\mathbf{{v}}}}^{{P}}_r \\cdot \\mathbf{{R}}_{{P}} + \\sum_{{B}} \\tilde{{\\boldsymbol{{\\omega}}}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}} = F_r + \\sum_s C_{{sr}} F_s \\quad (r = {})",
+        "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0 \\; (r = {})",
         independent.join(", ")
     );
     let delta = relation_tex.contains("\\Delta");
@@ -271,61 +277,32 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<Stri
     let model = &derivation.model;
     let problem = model.problem;
     let friction = &model.constraints.friction;
-    let unless = if friction.is_empty() {
-        "No constraint force is an unknown unless it is asked for."
-    } else {
-        "No other constraint force is an unknown unless it is asked for or, at a rough contact, is the normal force (below)."
-    };
-    let mut out = vec![format!(
-        "The reactions of the joints, closures and contacts, and whatever enforces the other constraints, drop out of these equations: where such a force acts, the two bodies it joins move alike along it in every constrained motion, so $\\tilde{{\\mathbf{{v}}}}_r$ of its point relative to the other body has no component along it, and it does no work. {unless}"
-    )];
+    let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
+    let mut out = vec!["The forces that enforce the constraints do no work with the constrained partial velocities and drop out.".to_string()];
     if !friction.is_empty() {
         out.push(friction_note(derivation));
     }
     out.extend(super::light_rods::notes(derivation));
-    let asked = !problem.find_reactions.is_empty() || !speeds.prescribed.is_empty();
     if asked || !friction.is_empty() {
-        let mut text = "A force that is asked for, or that the sliding law needs, is brought in by an auxiliary speed along it (Kane and Levinson, ch. 4, bringing noncontributing forces into evidence): the constraint that force enforces is relaxed by a speed $u$ along it, so that the augmented velocity of each body is its velocity plus $u$ times a partial velocity that moves the body along the force (the dependent rates still keep every other constraint). The partial velocities of the auxiliary speed are those; only that force (and a friction force, where that motion slides) does work with them, and the row is written with the accelerations taken at $u = 0$, so the motion is the one above.".to_string();
+        let which = match (asked, friction.is_empty()) {
+            (true, true) => "A force asked for",
+            (true, false) => "A force asked for, or a normal force the sliding law needs,",
+            _ => "A normal force the sliding law needs",
+        };
+        let mut text = format!("{which} is brought in by an auxiliary speed $u$ along it (Kane and Levinson, ch. 4): the constraint it enforces is relaxed, only that force{} does work with the partial velocities of $u$, and the accelerations are taken at $u = 0$.", if friction.is_empty() { "" } else { " and the friction of that sliding" });
         if !speeds.prescribed.is_empty() {
             text.push_str(" A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.");
         }
         out.push(text);
     }
-    let n = problem.coordinates.len();
-    let constraint_rows = model.constraints.rows.len();
-    let count = |k: usize, one: &str, many: &str| {
-        if k == 1 {
-            format!("the {one}")
-        } else {
-            format!("the {k} {many}")
-        }
-    };
-    let mut solve = format!(
-        "Solving: {} and {} are {} equations in the {} $\\ddot{{q}}$ alone, solved first",
-        count(
-            speeds.independent.len(),
-            "equation of the independent speed",
-            "equations of the independent speeds"
-        ),
-        count(
-            constraint_rows,
-            "differentiated constraint",
-            "differentiated constraints"
-        ),
-        speeds.independent.len() + constraint_rows,
-        n
-    );
-    if asked {
-        solve.push_str("; then each force asked for from its own auxiliary row, with the $\\ddot{q}$ known, one unknown per row.");
-    } else {
-        solve.push('.');
-    }
-    if delta {
-        // Where the constraints cannot be solved for the dependent rates.
-        solve.push_str(" The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0$ the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.");
-    }
+    // Where the constraints cannot be solved for the dependent rates.
+    let singular = "The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0$ the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.";
     if friction.is_empty() {
-        out.push(solve);
+        // The order of the solve is said after the matrix form; only the singular
+        // configuration of the dependent rates is said here.
+        if delta {
+            out.push(singular.to_string());
+        }
     } else {
         // The friction forces are in the rows of the speeds: nothing is solved first.
         let forces = |k: usize, one: &str, many: &str| if k == 1 { one } else { many }.to_string();
@@ -390,7 +367,7 @@ fn friction_note(derivation: &Derivation) -> String {
         ("forces", "do", "they are", "each is")
     };
     format!(
-        "Friction is the exception. A rough contact may slip, so its slip rate is not fixed by the constraints and stays among the speeds: the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$, dotted with the partial velocities of the contact points along the surface (the rows of the contact points in the table above). While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} that the law is written with {does_no} no work in any motion the constraints allow, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
+        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
         tex(&friction),
         words(&sites),
         tex(&normals),

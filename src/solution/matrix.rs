@@ -75,13 +75,16 @@ pub fn matrix(
         .collect();
     // In the table a row is labelled by its number: step 5 heads each equation with it.
     let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
-    if matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries {
-        // Kane's rows stand whole in step 5, each written once, its mass matrix positive:
-        // the matrix form shows only where its entries are (the structure of the solve),
-        // and a single row is its own solution.
-        if a.len() < 2 {
-            return MatrixForm::default();
-        }
+    // Kane's rows stand whole in step 5, each written once, its mass matrix positive, and a
+    // single row is its own solution. Up to six unknowns Kane's matrix is written out with
+    // its entries, as the Motion Law's is, for a student to solve; past that, and for
+    // Lagrange's rows, only where its entries are (the structure of the solve).
+    let whole_rows = matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries;
+    if whole_rows && a.len() < 2 {
+        return MatrixForm::default();
+    }
+    let written_out = derivation.method == Method::Kane && n <= MOST_COLUMNS;
+    if whole_rows && !written_out {
         return MatrixForm {
             pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
             columns_tex: Math::all(columns(&x)),

@@ -118,16 +118,14 @@ fn kane_heading(
         }
         let slides = row.unknowns.iter().any(|u| friction.contains(u));
         let brings = if slides {
-            "and brings in that force, with the friction forces that work in that motion"
+            "; friction works with it too"
         } else {
-            "and brings in that force alone"
+            ""
         };
         // Said in full at the first auxiliary speed; the later ones refer to it.
         let first = speeds_of(derivation) + 1;
         let why = if r == first {
-            format!(
-                "(an auxiliary speed along {along}: it relaxes the one constraint that force enforces, {brings})"
-            )
+            format!("(an auxiliary speed along {along}{brings})")
         } else if slides {
             format!("(an auxiliary speed, as in row {first}; friction works with it too)")
         } else {
@@ -162,7 +160,7 @@ fn kane_heading(
                 unknowns_tex(&reactions)
             ),
             format!(
-                "(an auxiliary speed: it moves {} against the joint and brings in the reaction)",
+                "(an auxiliary speed: it moves {} against the joint)",
                 bodies_name(problem, &row.free_body)
             ),
         )
