@@ -348,12 +348,23 @@ fn the_bicycle_at_rest_by_kane_and_lagrange_agrees_with_the_paper_and_the_motion
         let text = explain(name, &["--statics", "--method", method]);
         let speeds = critical_speeds(&text);
         assert_eq!(speeds.len(), 2, "{method}: {speeds:?}");
-        assert!((speeds[0] - 4.29).abs() < 0.005, "{method}: weave {}", speeds[0]);
-        assert!((speeds[1] - 6.02).abs() < 0.005, "{method}: capsize {}", speeds[1]);
+        assert!(
+            (speeds[0] - 4.29).abs() < 0.005,
+            "{method}: weave {}",
+            speeds[0]
+        );
+        assert!(
+            (speeds[1] - 6.02).abs() < 0.005,
+            "{method}: capsize {}",
+            speeds[1]
+        );
         let found = eigenvalues(&text);
         assert_eq!(found.len(), motion_law.len(), "{method}: {found:?}");
         for (x, y) in found.iter().zip(&motion_law) {
-            assert!((x - y).abs() <= 1e-5 * y.abs().max(1.0), "{method}: {x} against {y}");
+            assert!(
+                (x - y).abs() <= 1e-5 * y.abs().max(1.0),
+                "{method}: {x} against {y}"
+            );
         }
     }
 }
