@@ -311,3 +311,60 @@ fn the_statics_handout_is_the_same_twice() {
         assert_eq!(first, explain("statics-four-bar-held", &args), "{format}");
     }
 }
+
+/// The speeds `v = …` a handout writes for the weave and the capsize speeds.
+fn critical_speeds(text: &str) -> Vec<f64> {
+    text.lines()
+        .filter(|line| line.contains("\\mathrm{m/s} \\quad \\text{(stable"))
+        .filter_map(|line| line.split("v = ").nth(1)?.split('\\').next()?.parse().ok())
+        .collect()
+}
+
+/// The eigenvalues of the stability paragraph (`\lambda_{1} = -5.53094`, …), in the order
+/// written.
+fn eigenvalues(text: &str) -> Vec<f64> {
+    let line = text
+        .lines()
+        .find(|line| line.starts_with("**Stability.**"))
+        .expect("a stability paragraph");
+    let listed = line.split("Eigenvalues:").nth(1).unwrap_or_default();
+    listed
+        .split(" = ")
+        .skip(1)
+        .filter_map(|value| value.split('$').next()?.trim().parse().ok())
+        .collect()
+}
+
+/// The Whipple bicycle at rest by Kane's and Lagrange's equations: the equilibrium
+/// equations of a problem this large are brought to rest in seconds, and the handout
+/// gives the paper's weave and capsize speeds (Meijaard et al. 2007: 4.29 and 6.02 m/s)
+/// and the eigenvalues the Motion Law's handout gives.
+#[test]
+fn the_bicycle_at_rest_by_kane_and_lagrange_agrees_with_the_paper_and_the_motion_law() {
+    let name = "validation/whipple-bicycle";
+    let motion_law = eigenvalues(&explain(name, &["--statics", "--method", "motion-law"]));
+    assert_eq!(motion_law.len(), 10, "{motion_law:?}");
+    for method in ["kane", "lagrange"] {
+        let text = explain(name, &["--statics", "--method", method]);
+        let speeds = critical_speeds(&text);
+        assert_eq!(speeds.len(), 2, "{method}: {speeds:?}");
+        assert!(
+            (speeds[0] - 4.29).abs() < 0.005,
+            "{method}: weave {}",
+            speeds[0]
+        );
+        assert!(
+            (speeds[1] - 6.02).abs() < 0.005,
+            "{method}: capsize {}",
+            speeds[1]
+        );
+        let found = eigenvalues(&text);
+        assert_eq!(found.len(), motion_law.len(), "{method}: {found:?}");
+        for (x, y) in found.iter().zip(&motion_law) {
+            assert!(
+                (x - y).abs() <= 1e-5 * y.abs().max(1.0),
+                "{method}: {x} against {y}"
+            );
+        }
+    }
+}

@@ -100,6 +100,10 @@ pub struct Derivation<'p> {
     /// Kane's method on a constrained system whose rows keep the constraint forces as
     /// unknowns: why the independent speeds are not taken alone.
     pub kept_forces: Option<KeptForces>,
+    /// Lagrange's equations in the worked solution's form: each coordinate's derivatives
+    /// of the energies as the rows were formed from them, for step 5 to show without
+    /// differentiating again. Empty for the other methods and for the numbers.
+    pub lagrange_terms: Vec<super::lagrange::CoordinateTerms>,
 }
 
 impl Derivation<'_> {

@@ -45,6 +45,7 @@ pub(super) fn write_equations<'p>(
             reaction_joints,
             dependent_speeds: None,
             kept_forces: None,
+            lagrange_terms: Vec::new(),
         });
     }
     let inertia = inertia.into_written(&model);
@@ -54,13 +55,20 @@ pub(super) fn write_equations<'p>(
         inertia: &inertia,
         states: request.states,
     };
+    let mut lagrange_terms = Vec::new();
     let rows = match method {
         Method::NewtonEuler => super::newton_euler::rows(&inputs, setup),
         Method::Kane => super::kane::rows(&inputs, setup)?,
-        Method::Lagrange => super::lagrange::rows(&inputs, setup)?,
+        Method::Lagrange => {
+            let (rows, terms) = super::lagrange::rows(&inputs, setup)?;
+            lagrange_terms = terms;
+            rows
+        }
         Method::MotionLaw => super::motion_law::rows(&inputs, setup),
     };
-    finish(model, method, actions, inertia, rows, request.form)
+    let mut derivation = finish(model, method, actions, inertia, rows, request.form)?;
+    derivation.lagrange_terms = lagrange_terms;
+    Ok(derivation)
 }
 
 /// Kane's system by composite bodies, built alone for numbers where it stands in for the
@@ -147,6 +155,7 @@ fn finish<'p>(
         reaction_joints,
         dependent_speeds,
         kept_forces,
+        lagrange_terms: Vec::new(),
     })
 }
 

@@ -164,12 +164,34 @@ pub fn row_text(
             note: "Its equation at zero auxiliary coordinate and rate, simplified:".into(),
         });
     };
-    let bodies = energy_terms(model);
-    let v = lagrange_potential(model);
-    let terms = energy_derivative(model, (&bodies, &v), r, true).ok()?;
-    let (q_r, multipliers) = lagrange_generalized_forces(model, &derivation.actions)
-        .into_iter()
-        .nth(r)?;
+    let (momentum, momentum_rate, kinetic_partial, potential_partial, q_r, multipliers) =
+        match derivation.lagrange_terms.get(r) {
+            // The derivation's own, formed once.
+            Some(t) => (
+                t.momentum.clone(),
+                t.momentum_rate.clone(),
+                t.kinetic_partial.clone(),
+                t.potential_partial.clone(),
+                t.generalized_force.clone(),
+                t.multipliers.clone(),
+            ),
+            None => {
+                let bodies = energy_terms(model);
+                let v = lagrange_potential(model);
+                let terms = energy_derivative(model, (&bodies, &v), r, true).ok()?;
+                let (q_r, multipliers) = lagrange_generalized_forces(model, &derivation.actions)
+                    .into_iter()
+                    .nth(r)?;
+                (
+                    terms.momentum,
+                    terms.momentum_rate,
+                    terms.kinetic_partial,
+                    terms.potential_partial,
+                    q_r,
+                    multipliers,
+                )
+            }
+        };
     let (rate, q) = names(model, r);
     let tex = |e: &Expr| latex_collected(&shown(&simplify(e)));
     let fits = |definition: String, value: String| {
@@ -183,17 +205,17 @@ pub fn row_text(
     let mut lines = vec![
         fits(
             format!("{partial_l_rate} = \\frac{{\\partial T}}{{\\partial {rate}}}"),
-            tex(&terms.momentum),
+            tex(&momentum),
         ),
         fits(
             format!("\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}} {partial_l_rate}"),
-            tex(&terms.momentum_rate),
+            tex(&momentum_rate),
         ),
         fits(
             format!(
                 "\\frac{{\\partial L}}{{\\partial {q}}} = \\frac{{\\partial T}}{{\\partial {q}}} - \\frac{{\\partial V}}{{\\partial {q}}}"
             ),
-            tex(&(&terms.kinetic_partial - &terms.potential_partial)),
+            tex(&(&kinetic_partial - &potential_partial)),
         ),
         fits(format!("Q_{{{}}}", r + 1), tex(&q_r)),
     ];

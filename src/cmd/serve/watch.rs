@@ -11,7 +11,7 @@ use std::sync::Arc;
 use std::time::{Duration, SystemTime};
 
 /// How often the problem file is looked at.
-pub(crate) const POLL: Duration = Duration::from_millis(150);
+pub(crate) const POLL: Duration = Duration::from_millis(50);
 
 /// The file's identity and state: a change in any of them is an edit.
 type Stamp = Option<(SystemTime, u64, u64, u64)>;

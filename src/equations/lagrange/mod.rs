@@ -76,6 +76,9 @@ pub fn coordinate_terms(
 /// For the numbers the kinetic terms come from [`kinetic`], the translation in
 /// `inertia_force` and the rotation in `inertia_torque`.
 ///
+/// With the rows, each coordinate's terms where the rows were formed from them (the worked
+/// solution's form, which step 5 shows term by term); none for the numbers.
+///
 /// # Errors
 /// As for [`coordinate_terms`].
 pub fn equations(
@@ -84,19 +87,25 @@ pub fn equations(
     inertia: &Inertia,
     unknowns: &[Symbol],
     (reaction_joints, kept): (&[usize], &[Symbol]),
-) -> Result<Vec<Equation>, MechanicsError> {
+) -> Result<(Vec<Equation>, Vec<CoordinateTerms>), MechanicsError> {
+    let mut terms = Vec::new();
     let all_groups = if kinetic::applies(model, inertia) {
         kinetic::numeric_groups(model, actions, inertia)?
     } else {
-        coordinate_terms(model, actions, inertia.form == Form::Handout)?
-            .into_iter()
+        terms = coordinate_terms(model, actions, inertia.form == Form::Handout)?;
+        let groups = terms
+            .iter()
             .map(|t| Groups {
                 contact: &t.generalized_force + &t.multipliers,
-                distance: -t.potential_partial,
+                distance: -t.potential_partial.clone(),
                 inertia_force: -(&t.momentum_rate - &t.kinetic_partial),
                 inertia_torque: Expr::zero(),
             })
-            .collect()
+            .collect();
+        if inertia.form != Form::Handout {
+            terms.clear();
+        }
+        groups
     };
     let problem = model.problem;
     let mut states = None;
@@ -140,7 +149,7 @@ pub fn equations(
     for j in crate::equations::kane::kept_joints(model, reaction_joints, kept) {
         rows.extend(relaxed(j, Some(kept)));
     }
-    Ok(rows)
+    Ok((rows, terms))
 }
 
 /// Lagrange's view of the model: along a light rod the relaxed joint brings in its tension
@@ -151,19 +160,22 @@ pub(super) fn view(model: &mut Model) {
 }
 
 /// Lagrange's rows: one per coordinate and one per requested reaction of a tree joint,
-/// then the constraint rows.
+/// then the constraint rows; with each coordinate's terms in the worked solution's form.
 ///
 /// # Errors
 /// As for [`equations`].
-pub(super) fn rows(inputs: &Inputs, setup: Setup) -> Result<MethodRows, MechanicsError> {
+pub(super) fn rows(
+    inputs: &Inputs,
+    setup: Setup,
+) -> Result<(MethodRows, Vec<CoordinateTerms>), MechanicsError> {
     let model = inputs.model;
     let tree_requested = setup.tree_requested(model.problem);
-    let rows = equations(
+    let (rows, terms) = equations(
         model,
         inputs.actions,
         inputs.inertia,
         &setup.every_unknown,
         (&tree_requested, &setup.kept),
     )?;
-    Ok(setup.with_given(rows))
+    Ok((setup.with_given(rows), terms))
 }

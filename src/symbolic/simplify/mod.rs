@@ -22,6 +22,7 @@
 
 mod key;
 mod memo;
+mod pairs;
 mod pythagoras;
 pub(super) mod steps;
 mod terms;
@@ -84,6 +85,7 @@ pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>)
         options,
         steps,
         memo: KeyMap::default(),
+        pairs: pairs::Pairs::default(),
     }
     .expr(e);
     // A sum over its own power, (r_A + r_B)² sin q / (r_A + r_B)², is cancelled.
@@ -220,6 +222,8 @@ struct Simplifier<'a> {
     /// Simplified functions and powers: the same `cos(...)` or `(...)^(-1)` recurs in
     /// many terms.
     memo: KeyMap<Key, Expr>,
+    /// The pairs of sine and cosine factors of every monomial met so far.
+    pairs: pairs::Pairs,
 }
 
 impl Simplifier<'_> {
@@ -274,7 +278,12 @@ impl Simplifier<'_> {
             let monomials = terms.monomials();
             let mut candidates = Vec::new();
             pythagoras::candidates(&terms, &monomials, &mut candidates);
-            trig::candidates(&terms, &monomials, self.options, &mut candidates);
+            trig::candidates(
+                &terms,
+                &monomials,
+                (self.options, &mut self.pairs),
+                &mut candidates,
+            );
             let mut seen = KeySet::default();
             candidates.retain(|c| seen.insert(c.clone()));
             let scored: Vec<(Gain, Candidate, Rewrite)> = candidates

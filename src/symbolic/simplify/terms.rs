@@ -1,15 +1,51 @@
 //! A sum held as a map from monomial to coefficient, so that a rule finds the partners
 //! of a term by hash lookup instead of by trying all pairs of terms.
 
-use super::key::{same, Key, KeyMap};
+use super::key::{hash_expr, same, KeyMap};
 use crate::symbolic::build::{add, mul, pow};
 use crate::symbolic::expr::{Expr, Func, Node};
+use crate::symbolic::fast_hash::FastHasher;
 use crate::symbolic::number::Number;
+use std::hash::{Hash, Hasher};
 use std::ops::{Add, Neg};
+
+/// A monomial with its hash worked out once: the rules look the same partners up pass
+/// after pass.
+#[derive(Clone, Debug)]
+pub(crate) struct Hashed {
+    hash: u64,
+    expr: Expr,
+}
+
+impl Hashed {
+    /// `expr` with its hash.
+    pub fn new(expr: Expr) -> Hashed {
+        let mut state = FastHasher::default();
+        hash_expr(&expr, &mut state);
+        Hashed {
+            hash: state.finish(),
+            expr,
+        }
+    }
+}
+
+impl PartialEq for Hashed {
+    fn eq(&self, other: &Hashed) -> bool {
+        self.hash == other.hash && same(&self.expr, &other.expr)
+    }
+}
+
+impl Eq for Hashed {}
+
+impl Hash for Hashed {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        state.write_u64(self.hash);
+    }
+}
 
 /// The terms of a sum: monomial (without its coefficient) to coefficient.
 pub(crate) struct Terms {
-    coefficients: KeyMap<Key, Number>,
+    coefficients: KeyMap<Hashed, Number>,
     /// The monomials in the order they were first seen, so passes are deterministic
     /// (iterating the hash map would not be).
     order: Vec<Expr>,
@@ -126,21 +162,24 @@ impl Terms {
     }
 
     fn change(&mut self, m: Expr, delta: Number) {
-        match self.coefficients.get_mut(&Key(m.clone())) {
+        let key = Hashed::new(m);
+        match self.coefficients.get_mut(&key) {
             Some(c) => *c = c.add(delta),
             None => {
-                self.order.push(m.clone());
-                self.coefficients.insert(Key(m), delta);
+                self.order.push(key.expr.clone());
+                self.coefficients.insert(key, delta);
             }
         }
     }
 
     /// The coefficient of the monomial `m`, zero when absent.
     pub fn coefficient(&self, m: &Expr) -> Number {
-        self.coefficients
-            .get(&Key(m.clone()))
-            .copied()
-            .unwrap_or(Number::ZERO)
+        self.coefficient_of(&Hashed::new(m.clone()))
+    }
+
+    /// The coefficient of the monomial `m` whose hash is known, zero when absent.
+    pub fn coefficient_of(&self, m: &Hashed) -> Number {
+        self.coefficients.get(m).copied().unwrap_or(Number::ZERO)
     }
 
     /// The monomials with a non-zero coefficient, in a deterministic order.

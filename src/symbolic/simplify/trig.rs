@@ -10,11 +10,12 @@
 //! identity applies when the two products appear times `M` with coefficients that match
 //! exactly, and only when the result is shorter.
 
+use super::pairs::{product, Pair, Pairs};
 use super::steps::{COS_DIFFERENCE, COS_SUM, DOUBLE_ANGLE, SIN_DIFFERENCE, SIN_SUM};
-use super::terms::{times_power, times_trig, trig_factors, Gain, Rewrite, Terms};
+use super::terms::{times_trig, Gain, Rewrite, Terms};
 use super::{Candidate, Options};
 use crate::symbolic::build::{add, func};
-use crate::symbolic::expr::{Expr, Func, Node};
+use crate::symbolic::expr::{Expr, Func};
 use crate::symbolic::number::Number;
 use std::ops::{Add, Mul, Neg};
 
@@ -39,66 +40,49 @@ const ROWS: [Row; 4] = [
     Row { rule: SIN_DIFFERENCE, first: (Sin, Cos), second: (Cos, Sin), sign: -1, result: Sin, difference: true },
 ];
 
-/// The other function of the pair: `sin ↔ cos`.
-fn flip(f: Func) -> Func {
-    if f == Sin {
-        Cos
-    } else {
-        Sin
-    }
-}
-
 /// A group for every pair of sine or cosine factors with different arguments in every
 /// term whose partner (both functions swapped, e.g. `sin a sin b` for `cos a cos b`) is
 /// present with a coefficient of the same size; and (when asked for) a double-angle group
-/// for every `sin x cos x`.
+/// for every `sin x cos x`. The pairs of a monomial are formed once, in `pairs`.
 pub(crate) fn candidates(
     terms: &Terms,
     monomials: &[Expr],
-    options: &Options,
+    (options, pairs): (&Options, &mut Pairs),
     out: &mut Vec<Candidate>,
 ) {
     for m in monomials {
-        let trig = trig_factors(m);
-        for (i, x) in trig.iter().enumerate() {
-            for y in &trig[i + 1..] {
-                let cofactor = times_power(&times_power(m, &x.base(), -1), &y.base(), -1);
-                if x.arg == y.arg {
-                    let symbol = matches!(x.arg.node(), Node::Sym(_));
-                    if options.double_angle && symbol && x.func != y.func {
-                        out.push(Candidate::DoubleAngle {
-                            arg: x.arg.clone(),
-                            cofactor,
-                        });
-                    }
-                    continue;
-                }
-                let partner = product(&cofactor, (flip(x.func), flip(y.func)), &x.arg, &y.arg);
-                let (c, p) = (terms.coefficient(m), terms.coefficient(&partner));
-                if p.is_zero() || !(c.add(p).is_zero() || c.add(p.neg()).is_zero()) {
-                    continue;
-                }
-                let (a, b) = if x.arg < y.arg {
-                    (&x.arg, &y.arg)
-                } else {
-                    (&y.arg, &x.arg)
-                };
-                out.push(Candidate::AngleSum {
-                    cosines: x.func == y.func,
-                    a: a.clone(),
-                    b: b.clone(),
+        let of_m = super::pairs::of(pairs, m, options);
+        if of_m.is_empty() {
+            continue;
+        }
+        let c = terms.coefficient(m);
+        for pair in of_m.iter() {
+            match pair {
+                Pair::DoubleAngle { arg, cofactor } => out.push(Candidate::DoubleAngle {
+                    arg: arg.clone(),
+                    cofactor: cofactor.clone(),
+                }),
+                Pair::AngleSum {
+                    partner,
+                    cosines,
+                    a,
+                    b,
                     cofactor,
-                });
+                } => {
+                    let p = terms.coefficient_of(partner);
+                    if p.is_zero() || !(c.add(p).is_zero() || c.add(p.neg()).is_zero()) {
+                        continue;
+                    }
+                    out.push(Candidate::AngleSum {
+                        cosines: *cosines,
+                        a: a.clone(),
+                        b: b.clone(),
+                        cofactor: cofactor.clone(),
+                    });
+                }
             }
         }
     }
-}
-
-/// The monomial `M · f(a) · g(b)`.
-fn product(cofactor: &Expr, (f, g): (Func, Func), a: &Expr, b: &Expr) -> Expr {
-    let fa = Expr::from_node(Node::Func(f, vec![a.clone()]));
-    let gb = Expr::from_node(Node::Func(g, vec![b.clone()]));
-    times_power(&times_power(cofactor, &fa, 1), &gb, 1)
 }
 
 /// The shortest identity of the group, if any applies and shortens the sum.

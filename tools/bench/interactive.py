@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""The interactive-speed targets in one run, each with its figure and pass or fail:
+
+    python3 tools/bench/interactive.py [BIN] [--runs N] [--limit SECONDS] [--skip-all]
+
+1. `explain` against `solve` of the Whipple bicycle, the ten-link chain, all-joints-3d and
+   the rolling coin, by Kane and the Motion Law: the fastest of N runs (default 3) of
+   each, and explain <= max(3 x solve, 0.3 s).
+2. Every bundled handout (problems/*.json and problems/validation/*.json, the four
+   methods, worked and student) once, against 0.5 s; one still running after --limit
+   seconds (default 60) is stopped and counted over.
+3. `variants --count 30` of the heavy symmetric top (a worked solution and a student
+   handout each, LaTeX) against 30 explains of it, worked and student.
+4. `grade --batch` of 300 submissions made from the key of 300 variants
+   (tools/bench/grade_class.py) under 10 s.
+
+Times are CPU seconds (user + system of the finished child, which a loaded machine moves
+least), wall seconds beside them. Prints one summary line per target at the end.
+"""
+import os
+import re
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PROBLEMS = [
+    "problems/validation/whipple-bicycle.json",
+    "problems/validation/ten-link-chain.json",
+    "problems/validation/all-joints-3d.json",
+    "problems/rolling-coin.json",
+]
+METHODS = ["kane", "motion-law"]
+HANDOUT_LIMIT = 0.5
+GRADE_LIMIT = 10.0
+
+
+def timed(argv, limit=None):
+    """Wall and CPU seconds of one run of argv (output thrown away), and whether it finished
+    within `limit` wall seconds."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    finished = True
+    try:
+        subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT,
+                       timeout=limit)
+    except subprocess.TimeoutExpired:
+        finished = False
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu, finished
+
+
+def fastest(argv, runs):
+    """The least wall and the least CPU seconds over `runs` runs."""
+    times = [timed(argv) for _ in range(runs)]
+    return min(t[0] for t in times), min(t[1] for t in times)
+
+
+def verdict(ok):
+    return "pass" if ok else "FAIL"
+
+
+def explain_against_solve(binary, runs):
+    """Section 1: the table, and how many pairs are within the bound."""
+    print(f"1. explain against solve, fastest of {runs} runs, CPU s (wall s); "
+          "bound max(3 x solve, 0.3 s)")
+    print("| problem | method | solve | explain | bound | explain / bound | within |")
+    print("|---|---|---|---|---|---|---|")
+    within = 0
+    for problem in PROBLEMS:
+        for method in METHODS:
+            solve = fastest([binary, "solve", problem, "--method", method], runs)
+            explain = fastest([binary, "explain", problem, "--method", method], runs)
+            bound = max(3 * solve[1], 0.3)
+            ok = explain[1] <= bound
+            within += ok
+            name = os.path.basename(problem)[:-5]
+            print(f"| {name} | {method} | {solve[1]:.3f} ({solve[0]:.3f}) | "
+                  f"{explain[1]:.3f} ({explain[0]:.3f}) | {bound:.3f} | "
+                  f"{explain[1] / bound:.2f} | {verdict(ok)} |")
+    total = len(PROBLEMS) * len(METHODS)
+    return f"explain <= max(3 x solve, 0.3 s): {within} of {total}", within == total
+
+
+def every_handout(binary, limit):
+    """Section 2: every bundled handout once against 0.5 s."""
+    handouts = []
+    for folder in ["problems", "problems/validation"]:
+        for name in sorted(os.listdir(os.path.join(ROOT, folder))):
+            if not name.endswith(".json"):
+                continue
+            path = f"{folder}/{name}"
+            for method in ["motion-law", "newton-euler", "kane", "lagrange"]:
+                for student in [[], ["--student"]]:
+                    argv = [binary, "explain", path, "--method", method] + student
+                    handouts.append((timed(argv, limit), path, method, bool(student)))
+    handouts.sort(key=lambda h: -h[0][1])
+    over = [h for h in handouts if h[0][1] > HANDOUT_LIMIT or not h[0][2]]
+    print(f"\n2. every bundled handout once: {len(handouts)} handouts, {len(over)} over "
+          f"{HANDOUT_LIMIT} s of CPU; the slowest (CPU s, wall s):")
+    for (wall, cpu, finished), path, method, student in handouts[:max(10, len(over))]:
+        version = "student" if student else "worked"
+        stopped = f"  stopped after {limit} s" if not finished else ""
+        print(f"  {cpu:7.3f} {wall:7.3f}  {path} {method} {version}{stopped}")
+    return (f"every handout <= {HANDOUT_LIMIT} s: {len(handouts) - len(over)} of "
+            f"{len(handouts)}", not over)
+
+
+def variants_against_explains(binary, runs):
+    """Section 3: `variants --count 30` of the heavy top against 30 explains of it."""
+    top = "problems/heavy-symmetric-top.json"
+    with tempfile.TemporaryDirectory() as out:
+        variants = min(timed([binary, "variants", top, "--count", "30", "--format", "latex",
+                              "-o", os.path.join(out, str(k))])[1] for k in range(runs))
+    worked = fastest([binary, "explain", top, "--format", "latex"], runs)[1]
+    student = fastest([binary, "explain", top, "--format", "latex", "--student"], runs)[1]
+    explains = 30 * (worked + student)
+    print(f"\n3. variants --count 30 of the heavy top: {variants:.3f} s CPU; 30 explains, "
+          f"worked and student: {explains:.3f} s; ratio {variants / explains:.2f}")
+    return (f"variants --count 30 <= 30 explains: {variants:.3f} s against {explains:.3f} s",
+            variants <= explains)
+
+
+def grade_class(binary):
+    """Section 4: `grade --batch` of 300 submissions under 10 s."""
+    with tempfile.TemporaryDirectory() as out:
+        done = subprocess.run([sys.executable, os.path.join(ROOT, "tools/bench/grade_class.py"),
+                               "--bin", binary, "--dir", out], cwd=ROOT, check=True,
+                              capture_output=True, text=True)
+    seconds = float(re.search(r"variants: ([0-9.]+) s", done.stdout).group(1))
+    print(f"\n4. grade --batch, 300 submissions of 300 variants: {seconds:.2f} s wall")
+    return f"grade --batch of 300 < {GRADE_LIMIT} s: {seconds:.2f} s", seconds < GRADE_LIMIT
+
+
+def main():
+    argv = sys.argv[1:]
+    runs, limit = 3, 60.0
+    if "--runs" in argv:
+        runs = int(argv.pop(argv.index("--runs") + 1))
+    if "--limit" in argv:
+        limit = float(argv.pop(argv.index("--limit") + 1))
+    names = [a for a in argv if not a.startswith("--")]
+    binary = os.path.abspath(names[0]) if names else os.path.join(ROOT, "target/release/mbd-tutor")
+    results = [explain_against_solve(binary, runs)]
+    if "--skip-all" not in argv:
+        results.append(every_handout(binary, limit))
+    results.append(variants_against_explains(binary, runs))
+    results.append(grade_class(binary))
+    print("\nsummary:")
+    for line, ok in results:
+        print(f"  {verdict(ok)}  {line}")
+
+
+if __name__ == "__main__":
+    main()
