@@ -65,6 +65,14 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                         .then(|| super::named_identity::steady_steps(problem, i, answer, &v))
                         .flatten()
                         .unwrap_or_default();
+                    // Each value derived in the steps is said there, not also above them.
+                    let derived_all = (answer.values.iter()).all(|(_, x)| {
+                        let number = super::answers::number_tex(*x);
+                        steps.iter().any(|s| s.math.as_str().contains(&number))
+                    });
+                    if !steps.is_empty() && derived_all {
+                        view.values_tex.clear();
+                    }
                     // The check that the motion is steady ends the answer.
                     if !view.note.is_empty() {
                         steps.push(step(std::mem::take(&mut view.note), String::new()));
@@ -76,6 +84,9 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                 }
                 QuestionKind::Describe { .. } => {
                     super::describe_words::fill(problem, question, answer, view)
+                }
+                QuestionKind::Reaction { .. } => {
+                    super::steady_force::steps(worked, question, answer).unwrap_or_default()
                 }
                 _ => Vec::new(),
             };
