@@ -7,8 +7,9 @@ use crate::problem::{BodyId, JointKind, Problem};
 /// The longest description taken as a body's name in words.
 const LONGEST_NAME: usize = 36;
 
-/// A body in words: its description where it opens with a short phrase ("the ball",
-/// "cart A"), else "body B"; the ground for `N`.
+/// A body in words: its description where it opens with a short phrase of plain words
+/// ("the ball", "cart A"; nothing any format would have to escape), else "body B"; the
+/// ground for `N`.
 pub fn body_words(problem: &Problem, id: BodyId) -> String {
     if id == BodyId::GROUND {
         return "the ground".into();
@@ -25,7 +26,7 @@ pub fn body_words(problem: &Problem, id: BodyId) -> String {
         .trim();
     let plain = !head.is_empty()
         && head.len() <= LONGEST_NAME
-        && !head.contains(['$', '\\', '{'])
+        && (head.chars()).all(|c| c.is_alphanumeric() || matches!(c, ' ' | '-' | '\''))
         && !head.starts_with("origin");
     if !plain {
         return fallback();
@@ -45,7 +46,9 @@ pub fn body_words(problem: &Problem, id: BodyId) -> String {
 
 /// Whether a joint's name reads as a point's letter (`O`, `Q`, `J1`) rather than a word.
 fn is_point_name(name: &str) -> bool {
-    name.chars().count() <= 3 && name.chars().next().is_some_and(char::is_uppercase)
+    name.chars().count() <= 3
+        && name.chars().next().is_some_and(char::is_uppercase)
+        && name.chars().all(char::is_alphanumeric)
 }
 
 /// Joint `j` in words: what it lets its child do relative to its parent.

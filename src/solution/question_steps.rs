@@ -39,6 +39,8 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         // A steady motion solved from a `show`'s identity only where that identity was
         // derived, not merely checked at the steady motion itself.
         let mut shown_derived = true;
+        // The closed form of a support's force is derived once, then referred to.
+        let mut force_said = false;
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
@@ -86,7 +88,10 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     super::describe_words::fill(problem, question, answer, view)
                 }
                 QuestionKind::Reaction { .. } => {
-                    super::steady_force::steps(worked, question, answer).unwrap_or_default()
+                    let steps = super::steady_force::steps(worked, question, answer, !force_said)
+                        .unwrap_or_default();
+                    force_said |= !steps.is_empty();
+                    steps
                 }
                 _ => Vec::new(),
             };

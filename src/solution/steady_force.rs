@@ -47,7 +47,14 @@ fn answered(answer: &Answer) -> Option<[f64; 3]> {
 /// The working of a reaction asked about a steady motion of a single body held by one
 /// joint, under gravity alone; `None` for any other problem, or where the closed form
 /// disagrees with the numbers.
-pub fn steps(worked: &Worked, question: &Question, answer: &Answer) -> Option<Vec<AnswerStep>> {
+/// Where `first` is false, the closed form was derived at an earlier answer: one short
+/// sentence refers to it.
+pub fn steps(
+    worked: &Worked,
+    question: &Question,
+    answer: &Answer,
+    first: bool,
+) -> Option<Vec<AnswerStep>> {
     let model = &worked.derivation.model;
     let problem = model.problem;
     let QuestionKind::Reaction { site } = question.kind else {
@@ -83,6 +90,12 @@ pub fn steps(worked: &Worked, question: &Question, answer: &Answer) -> Option<Ve
     });
     if !agrees {
         return None;
+    }
+    if !first {
+        return Some(vec![step(
+            "The closed form above, with this motion's values, gives these components.".into(),
+            String::new(),
+        )]);
     }
     let conditions: Vec<String> = (zero.iter())
         .map(|s| format!("{} = 0", latex(&Expr::sym(s.clone()))))
