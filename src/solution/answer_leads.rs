@@ -7,12 +7,27 @@ use crate::render::text::Math;
 use crate::render::AnswerView;
 use crate::symbolic::fixed;
 
-/// Marks each view asked at the same state as the one before it.
+/// Marks each view asked at the same state as the one before it; a view asked at the state
+/// of an earlier answer, not the one just before, names that answer instead of repeating
+/// the state.
 pub fn mark_repeated_states(views: &mut [AnswerView]) {
     for i in 1..views.len() {
         let (before, after) = views.split_at_mut(i);
-        let last = &before[i - 1];
-        after[0].same_state = last.at_tex == after[0].at_tex && last.at_note == after[0].at_note;
+        let view = &mut after[0];
+        let key = (view.at_tex.clone(), view.at_note.clone());
+        let same = |v: &AnswerView| v.at_tex == key.0 && v.at_note == key.1;
+        view.same_state = same(&before[i - 1]);
+        if view.same_state || key.0.as_str().is_empty() {
+            continue;
+        }
+        let Some(k) = before.iter().position(same) else {
+            continue;
+        };
+        let item = (before[..=k].iter().rev()).find(|v| !v.label.is_empty());
+        if let Some(item) = item {
+            view.at_note = format!("the same state as in answer {}", item.label);
+            view.at_tex = Math::from(String::new());
+        }
     }
 }
 

@@ -11,6 +11,7 @@ use crate::symbolic::{fixed, latex, latex_unit_vector, ComponentKind};
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
     let labels = labels(problem);
+    let mut noted: Vec<String> = Vec::new();
     problem
         .questions
         .iter()
@@ -46,8 +47,12 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                     problem.body_name(id).to_string()
                 });
                 let text = question.text.as_deref();
+                // Said at the first answer in that frame only.
                 if let Some(note) = super::joint_words::frame_note(problem, text, &frame) {
-                    view.note = note;
+                    if !noted.contains(&frame) {
+                        view.note = note;
+                        noted.push(frame);
+                    }
                 }
             }
             super::answer_leads::drop_said_time(question, &mut view);

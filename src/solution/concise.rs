@@ -14,7 +14,6 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
         solution.plan.rejected.clear();
     }
     sense_rule_once(&mut solution.answers);
-    super::answer_leads::mark_repeated_states(&mut solution.answers);
     let said = said_at_start(solution);
     // The table of initial values whole or not at all: a part of it would read as if the
     // values left out were not found.
@@ -24,6 +23,7 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
         solution.initial_values = whole;
     }
     (solution.reactions).retain(|r| !said.iter().any(|s| gives_reaction(s, &r.joint)));
+    super::answer_leads::mark_repeated_states(&mut solution.answers);
 }
 
 /// Whether an answer's value is a component of the reaction at `joint`, its force or moment.
