@@ -15,12 +15,11 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
         let (before, after) = views.split_at_mut(i);
         let view = &mut after[0];
         let key = (view.at_tex.clone(), view.at_note.clone());
-        let same = |v: &AnswerView| v.at_tex == key.0 && v.at_note == key.1;
-        view.same_state = same(&before[i - 1]);
+        view.same_state = asked_at(&before[i - 1], &key);
         if view.same_state || key.0.as_str().is_empty() {
             continue;
         }
-        let Some(k) = before.iter().position(same) else {
+        let Some(k) = before.iter().position(|v| asked_at(v, &key)) else {
             continue;
         };
         let item = (before[..=k].iter().rev()).find(|v| !v.label.is_empty());
@@ -29,6 +28,11 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
             view.at_tex = Math::from(String::new());
         }
     }
+}
+
+/// Whether `view` is asked at the state `(at_tex, at_note)`.
+fn asked_at(view: &AnswerView, key: &(Math, String)) -> bool {
+    view.at_tex == key.0 && view.at_note == key.1
 }
 
 /// Whether the question's own words give the instant it is asked at (`After 4 s:`).
