@@ -116,10 +116,11 @@ fn a_pins_reaction_is_answered_without_its_free_moment() {
         .values_tex
         .iter()
         .all(|v| v.starts_with("\\mathbf{F}")));
-    // F_y = m g > 0 holds the weight as drawn; F_x is zero and not judged.
+    // F_y = m g > 0 holds the weight as drawn; F_x is zero and not judged. The moment
+    // about the free axis, exactly zero, is left out without a word.
     assert_eq!(
         views[0].note,
-        "The components not listed are zero. The free bodies draw each unknown component \
+        "The free bodies draw each unknown component \
          along its positive unit vector: the force along y is positive, so it acts as drawn."
     );
 }

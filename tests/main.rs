@@ -21,6 +21,7 @@ mod gears;
 mod grade;
 mod handout_names;
 mod handout_pages;
+mod handout_sentences;
 mod handouts_in_browser;
 mod impact;
 mod initial_state;

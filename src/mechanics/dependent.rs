@@ -93,10 +93,7 @@ pub fn choose(
             names(&dependent)
         );
         if !chosen.is_empty() {
-            note.push_str(&format!(
-                "; {} taken as the dependent ones because the position constraints are best solved for them at the initial configuration",
-                names(&chosen)
-            ));
+            note.push_str(", which the constraints fix once the other coordinates are given");
         }
         constraints.notes.push(note + ".");
     }
@@ -131,10 +128,7 @@ pub fn choose(
                 .join(", ")
         );
         if !chosen.is_empty() {
-            note.push_str(&format!(
-                "; {} taken as the dependent ones because the velocity constraints can be solved for them at the initial state",
-                names(&chosen)
-            ));
+            note.push_str(", which those constraints fix once the other rates are given");
         }
         constraints.notes.push(note + ".");
     }

@@ -341,6 +341,11 @@ pub fn pgfplots(
     text.push_str("  height=2.9cm, grid=major,\n");
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
+        "  xticklabel style={{/pgf/number format/precision={}}}, yticklabel style={{/pgf/number format/precision={}}},\n",
+        tick_precision(series.iter().flat_map(|s| s.points.iter().map(|p| p.0))),
+        tick_precision(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)))
+    ));
+    text.push_str(&format!(
         "  legend columns={}, legend style={{font=\\scriptsize, at={{(0.5,0)}}, anchor=north, yshift=-31pt, /tikz/every even column/.append style={{column sep=0.3em}}}},\n",
         legend_columns(series, plots_in_row)
     ));
@@ -361,6 +366,22 @@ pub fn pgfplots(
     }
     text.push_str("\\end{axis}\n\\end{tikzpicture}\n");
     text
+}
+
+/// The digits after the point a tick label needs for neighbouring ticks to differ
+/// (`0.5, 0.501, 0.502`, not `0.5, 0.5, 0.5`): about five ticks span the values, and the
+/// label shows one digit finer than their step; at least pgfplots' own two.
+fn tick_precision(values: impl Iterator<Item = f64>) -> usize {
+    let (low, high) = values
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+            (l.min(x), h.max(x))
+        });
+    let step = (high - low) / 5.0;
+    if !(step > 0.0 && step.is_finite()) {
+        return 2;
+    }
+    ((-step.log10()).ceil() + 1.0).clamp(2.0, 8.0) as usize
 }
 
 /// At most `most` points of `points` (never fewer than two), evenly spaced by index,

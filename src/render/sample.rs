@@ -102,6 +102,7 @@ pub fn sample() -> Solution {
             label: s("1"),
             steps: Vec::new(),
             blank_lines: 0,
+            same_state: false,
         }],
         statics: None,
     }

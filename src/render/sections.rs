@@ -28,6 +28,8 @@ pub struct AnswerView {
     /// The student's handout: how many lines the answer takes (a value one, a reaction one
     /// per component, a steady motion one per unknown), or 0 for a box to work in (a `show`).
     pub blank_lines: usize,
+    /// Asked at the same state as the answer before it: the state is not said again.
+    pub same_state: bool,
 }
 
 /// One step of an answer's working: a sentence, then a displayed equation (either may be

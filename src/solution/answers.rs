@@ -11,6 +11,7 @@ use crate::symbolic::{fixed, latex, latex_unit_vector, ComponentKind};
 /// The questions with their answers, in order.
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
     let labels = labels(problem);
+    let mut noted: Vec<String> = Vec::new();
     problem
         .questions
         .iter()
@@ -26,9 +27,11 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 // The instant itself asked: its value is the answer, not where it is asked.
                 let instant = matches!(&question.kind, QuestionKind::Value { expression, .. }
                     if matches!(expression.as_symbol(), Some(crate::symbolic::Symbol::Time)));
-                if !instant {
-                    view.at_tex = Math::from(time_tex(answer.time));
-                }
+                // The instant itself asked: the lead says only which instant.
+                view.at_tex = match instant {
+                    true => Math::from(String::new()),
+                    false => Math::from(time_tex(answer.time)),
+                };
                 view.at_note = switch_note(problem, site);
             }
             // A reaction's moment about a free axis is no unknown at all: exactly 0, and not
@@ -38,9 +41,21 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 .iter()
                 .filter(|(found, value)| !crate::numeric::is_free_moment(question, found, *value))
                 .collect();
-            if shown.len() < answer.values.len() {
-                view.note = "The components not listed are zero.".into();
+            if let QuestionKind::Reaction { site } = question.kind {
+                let frame = answer.frame.clone().unwrap_or_else(|| {
+                    let id = crate::numeric::reaction_frame(problem, site);
+                    problem.body_name(id).to_string()
+                });
+                let text = question.text.as_deref();
+                // Said at the first answer in that frame only.
+                if let Some(note) = super::joint_words::frame_note(problem, text, &frame) {
+                    if !noted.contains(&frame) {
+                        view.note = note;
+                        noted.push(frame);
+                    }
+                }
             }
+            super::answer_leads::drop_said_time(question, &mut view);
             if question.frame.is_none() {
                 if let Some(sense) = sense_note(problem, question, &shown) {
                     view.note = [view.note.as_str(), sense.as_str()]
@@ -106,13 +121,19 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
 
 /// The questions without answers, for the student's handout.
 pub fn blank(problem: &Problem) -> Vec<AnswerView> {
-    (problem.questions.iter())
+    let mut views: Vec<AnswerView> = (problem.questions.iter())
         .zip(labels(problem))
-        .map(|(q, label)| AnswerView {
-            label,
-            ..blank_one(problem, q)
+        .map(|(q, label)| {
+            let mut view = AnswerView {
+                label,
+                ..blank_one(problem, q)
+            };
+            super::answer_leads::drop_said_time(q, &mut view);
+            view
         })
-        .collect()
+        .collect();
+    super::answer_leads::mark_repeated_states(&mut views);
+    views
 }
 
 /// Each question's number in the Answers: the statement's item it answers, written on the
@@ -167,6 +188,7 @@ fn blank_one(problem: &Problem, question: &Question) -> AnswerView {
         label: String::new(),
         steps: Vec::new(),
         blank_lines: blank_lines(problem, &question.kind),
+        same_state: false,
     }
 }
 

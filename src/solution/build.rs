@@ -100,7 +100,6 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
         .iter()
         .enumerate()
         .map(|(i, c)| {
-            let joint = &problem.joints[c.joint];
             let unit = crate::numeric::coordinate_unit(problem, i, 0);
             let rate_unit = crate::numeric::coordinate_unit(problem, i, 1);
             let with_unit = super::initial_state::with_unit;
@@ -108,7 +107,7 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
                 name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
-                joint: format!("{} ({})", joint.name.replace('_', " "), joint.kind.name()),
+                joint: super::joint_words::joint_words(problem, c.joint),
                 unit_tex: Math::from(crate::render::unit_tex(&unit)),
                 initial: with_unit(&fixed(c.initial), &unit),
                 initial_rate: with_unit(&fixed(c.rate), &rate_unit),

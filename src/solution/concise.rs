@@ -1,6 +1,7 @@
 //! What a student need not read twice: the handout says each value once. An unknown's value
 //! at the initial state that an answer at that state already gives is left out of step 5's
-//! tables of initial values and reactions, and step 3's candidate rows that the plan does not use are left
+//! tables of reactions, and the table of initial values is left out where the answers give
+//! every value in it, and step 3's candidate rows that the plan does not use are left
 //! out unless every one is asked for (`--verbose`); the rule by which a reaction's sign is
 //! read is said at the first answer that needs it.
 
@@ -14,8 +15,15 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
     }
     sense_rule_once(&mut solution.answers);
     let said = said_at_start(solution);
+    // The table of initial values whole or not at all: a part of it would read as if the
+    // values left out were not found.
+    let whole = solution.initial_values.clone();
     (solution.initial_values).retain(|v| !said.iter().any(|s| gives(s, v.name_tex.as_str())));
+    if !solution.initial_values.is_empty() {
+        solution.initial_values = whole;
+    }
     (solution.reactions).retain(|r| !said.iter().any(|s| gives_reaction(s, &r.joint)));
+    super::answer_leads::mark_repeated_states(&mut solution.answers);
 }
 
 /// Whether an answer's value is a component of the reaction at `joint`, its force or moment.

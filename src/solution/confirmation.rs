@@ -199,8 +199,9 @@ fn same_accelerations(problem: &Problem, method: &str) -> String {
         .map(|i| latex(&problem.coordinate_expr(i, 2)))
         .collect();
     format!(
-        "The equations of motion derived by {names} give the same \
-         {} at every state compared along the motion.",
+        "Checked beside this derivation, though not shown here: the equations of motion \
+         derived separately by {names} give the same {} at every state compared along the \
+         motion.",
         // Each in its own math, so that the line may break between them.
         (accelerations.iter().map(|a| format!("${a}$")))
             .collect::<Vec<_>>()

@@ -86,15 +86,76 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
     notes.extend(constraints.dropped.iter().map(|(row, why)| {
         // `teeth.height`: the height constraint of the contact teeth.
         let (site, what) = row.split_once('.').unwrap_or((row.as_str(), "position"));
-        format!("The {what} constraint at {site} is left out: {why}.").replace('`', "")
+        match dropped_in_words(&derivation.model, site, what) {
+            Some(words) => words,
+            None => format!("The {what} constraint at {site} is left out: {why}.").replace('`', ""),
+        }
     }));
     notes.extend(constraints.relations.iter().map(|(name, relation)| {
+        let unit = match line_of_centres(problem, relation) {
+            Some(tex) => format!("${tex}$ is a unit vector"),
+            None => "the line of centres, divided by the distance the constraint keeps, is a unit vector".into(),
+        };
         format!(
-            "Wherever the distance constraint of {name} holds, ${}$: its line of centres is a unit vector. Its rows, and the equations below where that shortens them, are written with it.",
+            "Wherever the distance constraint of {name} holds, ${}$: {unit}. Its rows, and the equations below where that shortens them, are written with it.",
             relation.latex()
         )
     }));
     (views, notes)
+}
+
+/// A contact's constraint that its joints already hold, named by the bodies it would hold:
+/// "the joints already keep the pinion on the rack"; `None` for another kind of row.
+fn dropped_in_words(model: &Model, site: &str, what: &str) -> Option<String> {
+    let found = model.sites.iter().find(|s| s.name == site)?;
+    let words = |b| super::joint_words::body_words(model.problem, b);
+    let (body, on) = (words(found.child), words(found.parent));
+    let place = site.replace('_', " ");
+    match what {
+        "height" => Some(format!(
+            "The no-penetration constraint at {place} is left out: the joints already keep {body} on {on}, so it holds identically and the joints carry the normal load."
+        )),
+        "distance" => Some(format!(
+            "The distance constraint at {place} is left out: the joints already keep the centres of {body} and {on} the pitch radii apart, so it holds identically and the joints carry the push along the line of centres."
+        )),
+        _ => None,
+    }
+}
+
+/// `ê_r = (x n̂_x + y n̂_y)/(R − r)`: the line of centres as a unit vector, where the
+/// relation's square is `x² + y²` of the coordinates along `N`'s axes of a planar joint on
+/// the ground; `None` otherwise.
+fn line_of_centres(
+    problem: &crate::problem::Problem,
+    relation: &crate::symbolic::Relation,
+) -> Option<String> {
+    use crate::problem::JointKind;
+    let terms = relation.square.terms();
+    let mut parts = Vec::new();
+    for term in terms {
+        let i = (0..problem.coordinates.len()).find(|&i| {
+            let q = problem.coordinate_expr(i, 0);
+            crate::symbolic::simplify(&(&q * &q)) == *term
+        })?;
+        let c = &problem.coordinates[i];
+        let joint = &problem.joints[c.joint];
+        let along = joint.kind == JointKind::Planar && joint.parent == BodyId::GROUND;
+        if !along || c.index_in_joint > 1 {
+            return None;
+        }
+        parts.push(format!(
+            "{} {}",
+            latex(&problem.coordinate_expr(i, 0)),
+            crate::symbolic::latex_unit_vector("N", c.index_in_joint as u8)
+        ));
+    }
+    (parts.len() == 2).then(|| {
+        format!(
+            "\\hat{{\\mathbf{{e}}}}_{{r}} = \\frac{{{}}}{{{}}}",
+            parts.join(" + "),
+            latex(&relation.root)
+        )
+    })
 }
 
 /// The velocity of the child's material point at a contact as a textbook forms it, from
@@ -123,6 +184,22 @@ fn point_velocity_tex(model: &Model, site: usize) -> String {
         "{{}}^{{N}}\\mathbf{{v}}^{{{}}}",
         latex_name(&model.sites[site].name)
     )
+}
+
+/// Whether some motion is prescribed: a coordinate driven by a motion of time (not held at
+/// a constant), or a position or velocity constraint written with `t`.
+pub fn moves_with_time(problem: &crate::problem::Problem) -> bool {
+    use crate::problem::ConstraintKind;
+    let time = crate::symbolic::Symbol::Time;
+    let driven =
+        (problem.coordinates.iter()).any(|c| c.motion.as_ref().is_some_and(|m| m.contains(&time)));
+    let written = problem.constraints.iter().any(|c| match &c.kind {
+        ConstraintKind::Position { expression } | ConstraintKind::Velocity { expression } => {
+            expression.contains(&time)
+        }
+        _ => false,
+    });
+    driven || written
 }
 
 /// The dependent rates as a linear map of the independent ones at the (assembled) initial
@@ -246,6 +323,7 @@ pub fn dependent_speeds(
                 })
                 .unwrap_or_default(),
         ),
+        time_terms: moves_with_time(problem),
         ..DependentSpeeds::default()
     })
 }

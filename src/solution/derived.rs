@@ -123,6 +123,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         .initial_values
         .extend(tensions(derivation, q0, rates0, &initial.reactions));
     solution.friction = super::friction::views(derivation, &initial.friction);
+    super::sliding_solve::replace_order(&mut solution.solve_notes, derivation, &initial.friction);
     solution.reactions = reactions(derivation, (q0, rates0), &initial.reactions);
     (solution.solve_notes).extend(MarkupLine::all(super::normal_sense::notes(
         &derivation.model,

@@ -9,6 +9,7 @@
 //! it; this stage is the last one that reads the derivation.
 
 mod aligned;
+mod answer_leads;
 mod answer_sheet;
 mod answers;
 mod auxiliary;
@@ -31,6 +32,7 @@ mod handout;
 mod impact;
 mod independent;
 mod initial_state;
+mod joint_words;
 mod kane;
 mod kane_bodies;
 mod kane_dots;
@@ -59,12 +61,14 @@ mod settled;
 mod show_conditions;
 mod shown_names;
 mod simulation;
+mod sliding_solve;
 mod solve_words;
 mod speeds;
 mod spin_frames;
 mod stability_answers;
 mod static_answers;
 mod statics;
+mod steady_force;
 mod switch_steps;
 mod tex;
 mod vector_answers;

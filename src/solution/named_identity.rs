@@ -350,7 +350,7 @@ fn other_rates(
         if let Some((_, e)) = renaming.replaced.iter().find(|(s, _)| *s == symbol) {
             let unit = crate::render::unit_tex(&coordinate_unit(problem, u.coordinate, 1));
             steps.push(step(
-                "and the other rate follows from the names:".into(),
+                "and the other rate follows from the definitions in the statement:".into(),
                 format!(
                     "{} = {} = {}\\ {unit}",
                     latex(&Expr::sym(symbol)),

@@ -39,6 +39,8 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         // A steady motion solved from a `show`'s identity only where that identity was
         // derived, not merely checked at the steady motion itself.
         let mut shown_derived = true;
+        // The closed form of a support's force is derived once, then referred to.
+        let mut force_said = false;
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
@@ -65,6 +67,14 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                         .then(|| super::named_identity::steady_steps(problem, i, answer, &v))
                         .flatten()
                         .unwrap_or_default();
+                    // Each value derived in the steps is said there, not also above them.
+                    let derived_all = (answer.values.iter()).all(|(_, x)| {
+                        let number = super::answers::number_tex(*x);
+                        steps.iter().any(|s| s.math.as_str().contains(&number))
+                    });
+                    if !steps.is_empty() && derived_all {
+                        view.values_tex.clear();
+                    }
                     // The check that the motion is steady ends the answer.
                     if !view.note.is_empty() {
                         steps.push(step(std::mem::take(&mut view.note), String::new()));
@@ -76,6 +86,12 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                 }
                 QuestionKind::Describe { .. } => {
                     super::describe_words::fill(problem, question, answer, view)
+                }
+                QuestionKind::Reaction { .. } => {
+                    let steps = super::steady_force::steps(worked, question, answer, !force_said)
+                        .unwrap_or_default();
+                    force_said |= !steps.is_empty();
+                    steps
                 }
                 _ => Vec::new(),
             };

@@ -66,13 +66,46 @@ pub fn in_symbols(
         let sum = simplify(&add(
             (columns.iter().zip(rates)).map(|(column, &k)| &column[d] * &rate(k))
         ));
-        let text = format!("{} = {}", latex(&rate(s)), latex(&sum));
+        let sum = finished(model, sum, values);
+        let text = format!(
+            "{} = {}",
+            latex(&rate(s)),
+            crate::symbolic::latex_factored(&sum)
+        );
         if text.len() > LONGEST {
             return None;
         }
         written.push(text);
     }
     Some(written)
+}
+
+/// A relation finished with what holds on the motion (a disc in a cylinder's
+/// x² + y² = (R − r)²: θ̇ = (R − r)ẋ/(r y)): the sum, or the sum times a coordinate that
+/// brings its terms over one denominator, reduced by each relation and divided back, where
+/// that is shorter and equal at `values`.
+fn finished(model: &Model, sum: Expr, values: &Values) -> Expr {
+    let problem = model.problem;
+    let at = eval(&sum, values);
+    let mut best = sum;
+    for (_, relation) in &model.constraints.relations {
+        let mut candidates = vec![relation.reduce(&best)];
+        for i in 0..problem.coordinates.len() {
+            if !best.contains(&problem.coordinate_symbol(i, 0)) {
+                continue;
+            }
+            let q = problem.coordinate_expr(i, 0);
+            let over = relation.reduce(&simplify(&(&best * &q)));
+            candidates.push(simplify(&(&over / &q)));
+        }
+        for candidate in candidates {
+            let equal = (eval(&candidate, values) - at).abs() <= 1e-9 * at.abs().max(1.0);
+            if equal && candidate.operation_count() < best.operation_count() {
+                best = candidate;
+            }
+        }
+    }
+    best
 }
 
 /// As many of `rows` as there are dependent rates, whose coefficients of those rates are

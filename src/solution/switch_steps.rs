@@ -68,6 +68,7 @@ pub fn attach(
             let steps = steps_for(problem, question, answer, &closed, first, name);
             if !steps.is_empty() {
                 views[i].steps = steps;
+                views[i].at_note = super::answer_leads::stops_slipping(problem, site);
                 done.push(site);
                 sliding.get_or_insert((name.to_string(), closed));
             }

@@ -95,6 +95,9 @@ pub struct DependentSpeeds {
     pub kane_solve_notes: Vec<MarkupLine>,
     /// Kane's rows with the constraint forces kept: why, in markup (empty otherwise).
     pub kane_kept_note: MarkupLine,
+    /// Some motion is prescribed (a driven coordinate, or a constraint written with `t`):
+    /// the dependent rates then have terms in time besides the map.
+    pub time_terms: bool,
 }
 
 /// The equations as `A x = b`.

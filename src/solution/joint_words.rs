@@ -1,0 +1,100 @@
+//! Joints and bodies named in words, as a course names them: "the ball moves in the
+//! plane", "rod A turns on the ground at pin O", "the coin is free", never a bare joint
+//! letter with the kind of joint in brackets.
+
+use crate::problem::{BodyId, JointKind, Problem};
+
+/// The longest description taken as a body's name in words.
+const LONGEST_NAME: usize = 36;
+
+/// A body in words: its description where it opens with a short phrase of plain words
+/// ("the ball", "cart A"; nothing any format would have to escape), else "body B"; the
+/// ground for `N`.
+pub fn body_words(problem: &Problem, id: BodyId) -> String {
+    if id == BodyId::GROUND {
+        return "the ground".into();
+    }
+    let body = problem.body(id);
+    let fallback = || format!("body {}", body.name.replace('_', " "));
+    let Some(description) = body.description.as_deref() else {
+        return fallback();
+    };
+    let head = description
+        .split([',', ';', '(', ':'])
+        .next()
+        .unwrap_or_default()
+        .trim();
+    let plain = !head.is_empty()
+        && head.len() <= LONGEST_NAME
+        && (head.chars()).all(|c| c.is_alphanumeric() || matches!(c, ' ' | '-' | '\''))
+        && !head.starts_with("origin");
+    if !plain {
+        return fallback();
+    }
+    for article in ["a ", "an "] {
+        if let Some(rest) = head.strip_prefix(article) {
+            return format!("the {rest}");
+        }
+    }
+    let named = head.split_whitespace().any(|w| w == body.name);
+    if head.starts_with("the ") || named {
+        head.to_string()
+    } else {
+        format!("the {head}")
+    }
+}
+
+/// Whether a joint's name reads as a point's letter (`O`, `Q`, `J1`) rather than a word.
+fn is_point_name(name: &str) -> bool {
+    name.chars().count() <= 3
+        && name.chars().next().is_some_and(char::is_uppercase)
+        && name.chars().all(char::is_alphanumeric)
+}
+
+/// Joint `j` in words: what it lets its child do relative to its parent.
+pub fn joint_words(problem: &Problem, j: usize) -> String {
+    let joint = &problem.joints[j];
+    let child = body_words(problem, joint.child);
+    let parent = body_words(problem, joint.parent);
+    let at = |what: &str| match is_point_name(&joint.name) {
+        true => format!(" at {what} {}", joint.name),
+        false => String::new(),
+    };
+    match joint.kind {
+        JointKind::Revolute => format!("{child} turns on {parent}{}", at("pin")),
+        JointKind::Prismatic => format!("{child} slides on {parent}"),
+        JointKind::Cylindrical => format!("{child} slides and turns on {parent}"),
+        JointKind::Planar if joint.parent == BodyId::GROUND => {
+            format!("{child} moves in the plane")
+        }
+        JointKind::Planar => format!("{child} moves in the plane relative to {parent}"),
+        JointKind::Universal => format!("{child} turns on {parent} about two axes{}", at("point")),
+        JointKind::Spherical if is_point_name(&joint.name) => {
+            format!(
+                "{child} turns freely about point {} of {parent}",
+                joint.name
+            )
+        }
+        JointKind::Spherical => format!("{child} turns freely about a point of {parent}"),
+        JointKind::Free => format!("{child} is free"),
+        JointKind::Weld => format!("{child} is fixed to {parent}"),
+    }
+}
+
+/// The sentence under a reaction answered in a body's unit vectors where the question
+/// chose no frame; `None` in `N`, or where the question's own words name the unit vectors.
+pub fn frame_note(problem: &Problem, question_text: Option<&str>, frame: &str) -> Option<String> {
+    if frame == problem.body_name(BodyId::GROUND) {
+        return None;
+    }
+    if question_text.is_some_and(|t| t.contains("unit vectors")) {
+        return None;
+    }
+    let id = problem
+        .body_ids()
+        .find(|&b| problem.body_name(b) == frame)?;
+    Some(format!(
+        "The components are along the unit vectors fixed in {} (frame {frame}), as the question names no frame.",
+        body_words(problem, id)
+    ))
+}

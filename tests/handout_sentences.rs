@@ -1,0 +1,307 @@
+//! The sentences an instructor would otherwise edit before handing a handout out: none of
+//! them false, none boiler-plate. Every bundled handout is read for the sentences that
+//! must not appear (a remark on prescribed motion where nothing is prescribed, a joint
+//! named by a letter and its kind, the Answers' "in the state of answer 1"); the problems
+//! where a sentence was wrong are read for the right one, its numbers checked against
+//! values worked out here.
+
+use crate::support::{explain, run, run_json};
+use serde_json::Value;
+use std::path::Path;
+
+/// The methods whose handouts are scanned: the Motion Law's and Kane's share every
+/// sentence read here with the other two.
+const SCANNED: [&str; 2] = ["motion-law", "kane"];
+
+/// The kinds of joint, as the problem format spells them.
+const JOINT_KINDS: [&str; 8] = [
+    "revolute",
+    "prismatic",
+    "cylindrical",
+    "planar",
+    "universal",
+    "spherical",
+    "free",
+    "weld",
+];
+
+/// Whether the problem prescribes a motion: a coordinate's `motion` written with `t`, or a
+/// `position` or `velocity` constraint written with it.
+fn prescribes_motion(problem: &Value) -> bool {
+    let with_t = |e: &Value| {
+        e.as_str().is_some_and(|s| {
+            s.split(|c: char| !c.is_alphanumeric() && c != '_')
+                .any(|w| w == "t")
+        })
+    };
+    let coordinates = problem["coordinates"].as_object().into_iter().flatten();
+    let driven = coordinates.into_iter().any(|(_, c)| with_t(&c["motion"]));
+    let constraints = problem["constraints"].as_array().into_iter().flatten();
+    let written = constraints
+        .into_iter()
+        .any(|c| with_t(&c["expression"]) || with_t(&c["position"]) || with_t(&c["velocity"]));
+    driven || written
+}
+
+/// The markdown handout of `path` by `method`; `None` where the method is refused.
+fn handout(path: &Path, method: &str) -> Option<String> {
+    let out = run(&[
+        "explain".as_ref(),
+        path.as_os_str(),
+        "--method".as_ref(),
+        method.as_ref(),
+        "--format".as_ref(),
+        "markdown".as_ref(),
+    ]);
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+/// What is wrong in one handout of a problem, `None` where nothing is.
+fn wrong_sentences(text: &str, problem: &Value) -> Vec<String> {
+    let mut wrong = Vec::new();
+    if !prescribes_motion(problem) && text.contains("where motion is prescribed") {
+        wrong.push("terms of time where nothing is prescribed".to_string());
+    }
+    for kind in JOINT_KINDS {
+        if text.contains(&format!(" ({kind}) |")) || text.contains(&format!(" ({kind}),")) {
+            wrong.push(format!("a joint named by its kind, ({kind})"));
+        }
+    }
+    for boiler in [
+        "In the state of answer",
+        "At the state given above",
+        "The components not listed are zero",
+        "first switches between sticking and slipping",
+        "taken as the dependent ones because",
+        "follows from the names",
+        "The equations of motion derived by",
+        "keep the disc on the plane",
+        "its line of centres is a unit vector",
+    ] {
+        if text.contains(boiler) {
+            wrong.push(format!("`{boiler}`"));
+        }
+    }
+    wrong
+}
+
+/// Every bundled problem's handouts, two at a time.
+#[test]
+fn no_bundled_handout_holds_a_sentence_an_instructor_would_cut() {
+    let jobs: Vec<(std::path::PathBuf, &str)> = (crate::support::all_problems().into_iter())
+        .flat_map(|p| SCANNED.iter().map(move |m| (p.clone(), *m)))
+        .collect();
+    let found = std::sync::Mutex::new(Vec::new());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..2 {
+            scope.spawn(|| loop {
+                let k = next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+                let Some((path, method)) = jobs.get(k) else {
+                    break;
+                };
+                let Some(text) = handout(path, method) else {
+                    continue;
+                };
+                let problem: Value =
+                    serde_json::from_str(&std::fs::read_to_string(path).expect("readable"))
+                        .expect("JSON");
+                let name = path.file_stem().unwrap_or_default().to_string_lossy();
+                for w in wrong_sentences(&text, &problem) {
+                    found
+                        .lock()
+                        .expect("lock")
+                        .push(format!("{name} ({method}): {w}"));
+                }
+            });
+        }
+    });
+    let found = found.into_inner().expect("lock");
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}
+
+#[test]
+fn prescribed_motion_is_read_from_the_problem() {
+    let driven: Value = serde_json::json!({ "coordinates": { "q": { "motion": "w*t" } } });
+    let held: Value = serde_json::json!({ "coordinates": { "q": { "motion": "0.3" } } });
+    let rheonomic: Value =
+        serde_json::json!({ "constraints": [ { "type": "position", "expression": "x - v*t" } ] });
+    assert!(prescribes_motion(&driven));
+    assert!(!prescribes_motion(&held));
+    assert!(prescribes_motion(&rheonomic));
+}
+
+/// The text of the Answers section.
+fn answers(text: &str) -> &str {
+    let at = text.find("## Answers").expect("an Answers section");
+    &text[at..]
+}
+
+#[test]
+fn the_skidding_ball_is_solved_with_the_sliding_law_not_the_no_slip_row() {
+    let text = explain(
+        "bowling-ball",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    assert!(
+        !text.contains("Rows (1), (3) and (4) hold no reaction"),
+        "{text}"
+    );
+    assert!(
+        text.contains("While the contact at lane slides, the no-slip row (4) does not hold."),
+        "the sliding order is not said"
+    );
+    // The table of initial values is whole: ẍ and θ̈ beside ÿ.
+    let table = &text[text.find("At the initial state:").expect("the table")..];
+    let table = &table[..table.find("## Step 6").expect("step 6")];
+    for name in ["\\ddot{x}", "\\ddot{y}", "\\ddot{\\theta}"] {
+        assert!(
+            table.contains(&format!("| ${name}$ |")),
+            "{name} in {table}"
+        );
+    }
+    // ẍ = −μ g while it slides, θ̈ = −(5/2) μ g / R: from the sliding law and the moment
+    // about the centre, worked here.
+    let (mu, g, r) = (0.2, 9.81, 0.11);
+    for value in [-mu * g, -2.5 * mu * g / r] {
+        let printed = format!("{}", (value * 1e4_f64).round() / 1e4);
+        assert!(table.contains(&printed), "{printed} in {table}");
+    }
+    assert!(answers(&text).contains("stops slipping and starts to roll"));
+}
+
+#[test]
+fn an_answer_at_the_same_state_does_not_say_it_again() {
+    let text = explain(
+        "double-pendulum-rods",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    let answers = answers(&text);
+    // Said once at the start; the energy at the start needs no new state line.
+    assert_eq!(
+        answers.matches("(the initial state)").count(),
+        1,
+        "{answers}"
+    );
+    // "After 4 s:" says the instant; the line under it says how it was reached.
+    let after = answers.find("After 4 s:").expect("the later energy");
+    let next = answers[after..].lines().nth(1).unwrap_or_default();
+    assert!(
+        next.trim_start()
+            .starts_with("Simulated from the initial state:"),
+        "{next}"
+    );
+    // The question at the start comes before the one after 4 s.
+    assert!(answers.find("At the start:").expect("at the start") < after);
+}
+
+#[test]
+fn the_disc_in_the_cylinder_finishes_its_algebra_with_the_distance_kept() {
+    let text = explain(
+        "disc-in-cylinder",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    assert!(text.contains(
+        "$\\hat{\\mathbf{e}}_{r} = \\frac{x \\hat{\\mathbf{n}}_{x} + y \\hat{\\mathbf{n}}_{y}}{R - r}$ is a unit vector"
+    ));
+    // With x² + y² = (R − r)², θ̇ = ẋ y/(r(R − r)) + x² ẋ/(r y (R − r)) is (R − r) ẋ/(r y).
+    let relation = text
+        .lines()
+        .find(|l| l.contains("at the initial state, $\\dot{y}"))
+        .expect("the dependent rates");
+    let theta = &relation[relation.find("$\\dot{\\theta} = ").expect("θ̇")..];
+    assert!(!theta.contains(" + "), "θ̇ not finished: {theta}");
+    assert!(
+        theta.contains("(R - r)") && theta.contains("r y"),
+        "{theta}"
+    );
+    // Each acceleration asked in a sentence of its own, not run on into its answer.
+    assert!(
+        !answers(&text).contains("acceleration,"),
+        "a run-on question"
+    );
+}
+
+#[test]
+fn constraints_name_the_bodies_they_hold_and_one_level_is_not_a_column() {
+    let text = explain(
+        "rack-and-pinion",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    assert!(
+        text.contains("the joints already keep the pinion on the rack"),
+        "{text}"
+    );
+    let four_bar = explain(
+        "four-bar",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    assert!(!four_bar.contains("| Level |"), "a column of one level");
+    // A problem with velocity and position constraints keeps the column.
+    let coin = explain(
+        "rolling-coin",
+        &["--method", "kane", "--format", "markdown"],
+    );
+    assert_eq!(
+        coin.contains("| Level |"),
+        coin.contains("| position |") && coin.contains("| velocity |")
+    );
+}
+
+#[test]
+fn a_joint_is_named_in_words() {
+    let ball = explain(
+        "bowling-ball",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    assert!(ball.contains("| the ball moves in the plane |"), "{ball}");
+    let coin = explain(
+        "rolling-coin",
+        &["--method", "kane", "--format", "markdown"],
+    );
+    assert!(coin.contains("| the disc is free |"), "{coin}");
+}
+
+/// The components of the tip's force and the precession rate of an `answer --format json`
+/// answer.
+fn tip_force(answer: &Value) -> ([f64; 3], f64) {
+    let c = &answer["components"];
+    let number = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
+    let f = [number(&c["x"]), number(&c["y"]), number(&c["z"])];
+    (f, number(&answer["state"]["psi'"]))
+}
+
+#[test]
+fn the_tops_force_in_steady_precession_is_derived_in_closed_form() {
+    let text = explain(
+        "heavy-symmetric-top",
+        &["--method", "motion-law", "--format", "markdown"],
+    );
+    let answers = answers(&text);
+    assert!(answers.contains("Newton's second law"), "{answers}");
+    // Each precession rate once in its answer: derived, not listed above the derivation.
+    let slow = &answers[answers.find("The slow precession:").expect("slow")..];
+    let slow = &slow[..slow.find("The fast precession:").expect("fast")];
+    assert_eq!(slow.matches("3.45313").count(), 1, "{slow}");
+    // F = m g n̂_z + m h sin θ Ω² toward the axis, against the numbers `answer` gives.
+    let json = run_json(&[
+        "answer".as_ref(),
+        crate::support::problem("heavy-symmetric-top").as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
+    let list = json["answers"].as_array().expect("answers");
+    let (m, g, h, theta) = (0.5, 9.81, 0.04, 0.5_f64);
+    for k in [3, 4] {
+        let (f, omega) = tip_force(&list[k]);
+        let horizontal = (f[0].powi(2) + f[1].powi(2)).sqrt();
+        let expected = m * h * theta.sin() * omega * omega;
+        assert!(
+            (horizontal - expected).abs() < 1e-4 * expected,
+            "{horizontal} {expected}"
+        );
+        assert!((f[2] - m * g).abs() < 1e-9, "{}", f[2]);
+    }
+}
