@@ -159,9 +159,10 @@ pub fn row_text(
     let Some(r) = coordinate_of(model, row) else {
         return Some(RowText {
             label_tex: relaxed_tex(row),
-            label: "(the joint relaxed: an auxiliary coordinate along the component, zero in the motion)".into(),
+            // Step 3 says once what a relaxed joint is; each row names only its component.
+            label: String::new(),
             lines: Vec::new(),
-            note: "Its equation at zero auxiliary coordinate and rate, simplified:".into(),
+            note: "At zero auxiliary coordinate and rate:".into(),
         });
     };
     let (momentum, momentum_rate, kinetic_partial, potential_partial, q_r, multipliers) =

@@ -15,24 +15,25 @@ pub const PAGE_SIZE: Size = Size {
     height: 380.0,
 };
 /// The largest a free body may be beside its table of forces: the handout puts it above
-/// the table when the two are wider than the line, so no higher than there.
+/// the table when the two are wider than the line, so no higher than there; about the
+/// height of a rigid body's table of seven forces, so that little of it stands empty.
 pub const BESIDE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 160.0,
+    height: 130.0,
 };
 
 /// The largest a free body may be above its table of forces: under a fifth of the text's
 /// height, so that a one- or two-body handout keeps within four pages.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 140.0,
+    height: 120.0,
 };
 
 /// The largest the system's picture may be at the head of a handout: under half the text's
 /// height (a narrow one is set beside the first tables).
 pub const CONFIGURATION: Size = Size {
     width: 500.0,
-    height: 260.0,
+    height: 220.0,
 };
 
 /// The scale under which labels print a size smaller (`\scriptsize`, 7 pt), so that they
