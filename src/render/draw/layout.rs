@@ -17,6 +17,8 @@ mod beside;
 mod labels;
 mod triad;
 
+use labels::Beside;
+
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
 
@@ -31,9 +33,13 @@ pub(super) struct Painter {
     body_prefix: &'static str,
     /// Labels wait until every line of their panel is drawn, so that none crosses them;
     /// an arrow's label knows its arrow (an index into the picture's arrows).
-    pending: Vec<(P2, f64, Label, Ink, Option<usize>)>,
+    pending: Vec<(P2, f64, Label, Ink, Beside)>,
     /// The straight arrows drawn so far, tail to tip: a later one keeps off their lines.
     lines: Vec<(P2, P2)>,
+    /// Where the panel's straight arrows act (on the page) and which way (`N`'s
+    /// coordinates): an arrow ends at its point only where no other there points the
+    /// opposite way.
+    straight: Vec<(P2, P3)>,
     /// How much room a label takes beyond its size at 13 px (1, or more for a page that
     /// prints the picture small and its labels at their size in points).
     grow: f64,
@@ -92,7 +98,7 @@ impl Painter {
 
     fn label(&mut self, anchor: P2, toward: f64, label: &Label, ink: Ink) {
         self.pending
-            .push((anchor, toward, label.clone(), ink, None));
+            .push((anchor, toward, label.clone(), ink, Beside::Spot));
     }
 
     /// A caption at a fixed place, which later labels keep clear of.
@@ -384,11 +390,21 @@ impl Painter {
         }
         if pushes {
             // Its label by its tail, out in the open, away from the point.
-            self.pending
-                .push((at, (-u[1]).atan2(-u[0]), arrow.label.clone(), ink, None));
+            self.pending.push((
+                at,
+                (-u[1]).atan2(-u[0]),
+                arrow.label.clone(),
+                ink,
+                Beside::Spot,
+            ));
         } else {
-            self.pending
-                .push((tip, u[1].atan2(u[0]), arrow.label.clone(), ink, Some(index)));
+            self.pending.push((
+                tip,
+                u[1].atan2(u[0]),
+                arrow.label.clone(),
+                ink,
+                Beside::Arrow(index),
+            ));
         }
         drawn
     }
@@ -413,6 +429,24 @@ impl Painter {
             return None;
         }
         Some(p2unit(self.projection.direction(arrow.direction)).unwrap_or([0.0, -1.0]))
+    }
+}
+
+impl Painter {
+    /// The captions of the marked points wait with the other labels: a point on a body's
+    /// edge keeps its caption outside the bodies where it can, a mass centre beside it.
+    fn caption_marks(&mut self, markers: &[super::scene::Marker], marks: &[Mark]) {
+        for (m, mark) in markers.iter().zip(marks) {
+            if let Some(caption) = &m.caption {
+                let beside = if m.role == Role::Center {
+                    Beside::Spot
+                } else {
+                    Beside::Point
+                };
+                let toward = -std::f64::consts::FRAC_PI_4;
+                (self.pending).push((mark.at, toward, caption.clone(), Ink::Black, beside));
+            }
+        }
     }
 }
 
@@ -447,8 +481,13 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         body_prefix: "",
         pending: Vec::new(),
         lines: Vec::new(),
+        straight: Vec::new(),
         grow,
     };
+    painter.straight = (scene.arrows.iter())
+        .filter(|a| !(a.couple && scene.planar))
+        .map(|a| (painter.at(a.at), a.direction))
+        .collect();
     for shape in scene
         .shapes
         .iter()
@@ -480,11 +519,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
     {
         painter.shape(shape);
     }
-    for (m, mark) in scene.markers.iter().zip(&marks) {
-        if let Some(caption) = &m.caption {
-            painter.label(mark.at, -std::f64::consts::FRAC_PI_4, caption, Ink::Black);
-        }
-    }
+    painter.caption_marks(&scene.markers, &marks);
     let panel_captions = [
         (panel_width / 2.0, "free body"),
         (panel_width * 1.5, "kinetic diagram"),

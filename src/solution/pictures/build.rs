@@ -234,11 +234,13 @@ impl Setting<'_, '_, '_> {
         }
         self.coordinates(&mut shapes);
         self.triads(&mut shapes);
+        let mut markers = self.markers(&bodies, true);
+        super::captions::merge_coincident(&mut markers, self.size);
         Scene {
             title,
             planar: self.derivation.model.is_planar(),
             shapes,
-            markers: self.markers(&bodies, true),
+            markers,
             arrows: Vec::new(),
             kinetic: None,
             down: super::bodies::down(self.numbers),
@@ -286,6 +288,7 @@ impl Setting<'_, '_, '_> {
         markers.retain(|m| {
             acted_at(&m.id) || !(inside.contains(&m.id) || matches!(m.role, Role::Joint))
         });
+        super::captions::merge_coincident(&mut markers, self.size);
         Scene {
             title,
             planar: self.derivation.model.is_planar(),

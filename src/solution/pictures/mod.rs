@@ -4,6 +4,7 @@
 
 pub(super) mod bodies;
 pub(super) mod build;
+mod captions;
 mod carriers;
 pub(super) mod gauges;
 pub(super) mod lanes;

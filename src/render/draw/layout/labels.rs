@@ -3,20 +3,40 @@
 //! free spot.
 
 use super::super::picture::{DrawnArrow, Item, P2};
+use super::super::place::Obstacles;
 use super::super::strokes::{head, p2add, p2norm, p2scale, p2unit, tips_of};
 use super::Painter;
+
+/// What a waiting label stands beside.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Beside {
+    /// The tip of the picture's arrow of this index.
+    Arrow(usize),
+    /// A point on a body's edge (a pin, a contact): outside the bodies where there is room.
+    Point,
+    /// Its anchor, wherever is free.
+    Spot,
+}
+
+/// How many of the spots nearest a point's caption are tried outside the bodies: two
+/// rounds of sixteen directions, within 12 px of the point.
+const NEAR_A_POINT: usize = 32;
 
 impl Painter {
     /// Places the waiting labels, in the order they came, around everything drawn: an
     /// arrow's label beside its tip, or beside the tip pushed out along the arrow's line
     /// when the room there is taken; any label else at the nearest free spot.
     pub(super) fn place_labels(&mut self, arrows: &mut [DrawnArrow]) {
-        for (anchor, toward, label, ink, arrow) in std::mem::take(&mut self.pending) {
+        for (anchor, toward, label, ink, beside) in std::mem::take(&mut self.pending) {
             let size = self.room(&label.plain);
             let tips = tips_of(arrows);
-            let pushed = arrow
-                .and_then(|k| arrows.get_mut(k))
-                .and_then(|a| self.push_apart(a, toward, size, &tips));
+            let pushed = match beside {
+                Beside::Arrow(k) => arrows
+                    .get_mut(k)
+                    .and_then(|a| self.push_apart(a, toward, size, &tips)),
+                Beside::Point => self.outside_bodies(anchor, toward, size),
+                Beside::Spot => None,
+            };
             let at = match pushed {
                 Some(at) => at,
                 None => self.obstacles.place(anchor, toward, size),
@@ -76,5 +96,18 @@ impl Painter {
             return Some(self.obstacles.take(free));
         }
         None
+    }
+
+    /// The first free spot for a label of `size` close around a point on a body's edge
+    /// whose middle lies outside every body (a contact's name below the wheel, not inside
+    /// it); `None` when none is free there.
+    fn outside_bodies(&mut self, anchor: P2, toward: f64, size: P2) -> Option<P2> {
+        let free = Obstacles::spots(anchor, toward, size)
+            .take(NEAR_A_POINT)
+            .find(|b| {
+                self.obstacles.clash(b) == 0
+                    && !(self.items.iter()).any(|item| super::beside::inside(item, b.center))
+            })?;
+        Some(self.obstacles.take(free))
     }
 }
