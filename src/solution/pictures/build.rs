@@ -234,8 +234,7 @@ impl Setting<'_, '_, '_> {
         }
         self.coordinates(&mut shapes);
         self.triads(&mut shapes);
-        let mut markers = self.markers(&bodies, true);
-        super::captions::merge_coincident(&mut markers, self.size);
+        let markers = self.markers(&bodies, true);
         Scene {
             title,
             planar: self.derivation.model.is_planar(),
@@ -288,7 +287,6 @@ impl Setting<'_, '_, '_> {
         markers.retain(|m| {
             acted_at(&m.id) || !(inside.contains(&m.id) || matches!(m.role, Role::Joint))
         });
-        super::captions::merge_coincident(&mut markers, self.size);
         Scene {
             title,
             planar: self.derivation.model.is_planar(),

@@ -4,7 +4,6 @@
 
 pub(super) mod bodies;
 pub(super) mod build;
-mod captions;
 mod carriers;
 pub(super) mod gauges;
 pub(super) mod lanes;
