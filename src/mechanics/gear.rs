@@ -14,8 +14,9 @@ use crate::problem::{BodyId, ConstraintKind};
 use crate::symbolic::{pow, simplify, sqrt, Expr, Relation};
 
 /// The site of gear contact `k` and its geometry (the "height" is the distance between the
-/// centres minus what the radii allow; the "normal" the unit line of centres, from `on`'s
-/// centre toward `body`'s).
+/// centres minus what the radii allow). The normal reaction is a push on `body`: along the
+/// unit line of centres from `on`'s centre toward `body`'s for external discs, the
+/// opposite (toward the ring's centre) for a disc inside a ring.
 ///
 /// # Errors
 /// A 3D axle that is zero, or one that turns relative to `on` (axles not parallel).
@@ -98,6 +99,14 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     let square = simplify(&dot3(&between, &between));
     let on_motion = (!square.is_constant()).then(|| Relation::new(square, allowed.clone()));
     let gap = &distance - &allowed;
+    // The normal force is a push on `body`: along the line of centres outside `on`'s disc,
+    // against it (toward the ring's centre) inside a ring, so that a pressing contact
+    // carries a positive normal force.
+    let push = if *internal {
+        line.scaled(&-Expr::one())
+    } else {
+        line.clone()
+    };
     let reactions = vec![
         ReactionComponent {
             kind: ComponentKind::Force,
@@ -107,7 +116,7 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
         ReactionComponent {
             kind: ComponentKind::Force,
             axis: Axis::Normal,
-            direction: line.clone(),
+            direction: push,
         },
     ];
     let contact = Contact {

@@ -29,6 +29,19 @@ pub fn is_particle(model: &Model, body: BodyId) -> bool {
         .all(crate::symbolic::Expr::is_zero)
 }
 
+/// Whether a body is named as a particle, a point: a particle that no joint, closure or
+/// contact holds against turning. A body without moment of inertia that carries a reaction
+/// couple (a rack or a cart on its guide) is a translating body of some extent, named by
+/// its mass centre as any other body.
+pub fn is_point_particle(model: &Model, body: BodyId) -> bool {
+    let held = model.sites.iter().any(|site| {
+        site.parent != site.child
+            && (site.child == body || site.parent == body)
+            && (site.reactions.iter()).any(|c| c.kind == super::ComponentKind::Moment)
+    });
+    is_particle(model, body) && !held
+}
+
 /// A massless body that coordinate `i` moves (its joint's child or a body outboard of it).
 pub fn massless_body_moved_by(model: &Model, i: usize) -> Option<BodyId> {
     let j = model

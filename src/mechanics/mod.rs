@@ -41,7 +41,9 @@ pub use frames::{apply, Frames, Matrix};
 pub use independent::{DependentSpeeds, KeptForces};
 pub use joints::{ComponentKind, ReactionComponent};
 pub use light_rod::closures_along_rods;
-pub use massless::{is_massless, is_particle, massless_body_moved_by, undetermined};
+pub use massless::{
+    is_massless, is_particle, is_point_particle, massless_body_moved_by, undetermined,
+};
 pub use model::{same_at, sample_states, BodyState, Form, JointModel, Model};
 pub use on_parent::{angular, center, split};
 pub use point::PointMotion;

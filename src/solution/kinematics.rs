@@ -81,7 +81,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartial
                 }
             }
             let light = crate::mechanics::is_massless(model, body);
-            let particle = !light && crate::mechanics::is_particle(model, body);
+            let particle = !light && crate::mechanics::is_point_particle(model, body);
             // A particle's turning carries no inertia: a textbook gives it no ω or α.
             let (omega_tex, alpha_tex) = if particle {
                 (String::new(), String::new())

@@ -1,8 +1,8 @@
 //! Step 5's words on a contact's normal force that comes out negative: the free body draws
-//! the unknown along its positive unit vector, which at a contact may point away from the
-//! body (a disc in a cylinder: along the line of centres, outward). A normal force whose
-//! value is negative acts against that arrow, and the handout says which way it then acts
-//! on the body, as a course says it: "a push of 9.73 N on D".
+//! the unknown along its positive unit vector, which at a contact points into the body (a
+//! push, `docs/conventions/normal-forces.md`). A normal force whose value is negative acts
+//! against that arrow, and the handout says which way it then acts on the body, as a course
+//! says it: "a pull of 2.1 N on D" (a body that would leave its surface).
 
 use crate::mechanics::{ComponentKind, Model, Site};
 use crate::symbolic::{eval, fixed, latex, Axis, Expr, Values};

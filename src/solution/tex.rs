@@ -161,11 +161,12 @@ pub(super) fn unknowns_tex(unknowns: &[Symbol]) -> String {
 }
 
 /// A body's mass centre as LaTeX, `B^*`; a particle (a body with mass and no moment of
-/// inertia) is a point, named as the body, `P_{1}`, as textbooks name a particle.
+/// inertia that nothing holds against turning) is a point, named as the body, `P_{1}`, as
+/// textbooks name a particle.
 pub fn centre_tex(model: &Model, body: BodyId) -> String {
     let name = latex_name(model.problem.body_name(body));
     let light = crate::mechanics::is_massless(model, body);
-    if !light && crate::mechanics::is_particle(model, body) {
+    if !light && crate::mechanics::is_point_particle(model, body) {
         name
     } else {
         format!("{name}^*")

@@ -14,8 +14,11 @@ use super::strokes::{
 };
 
 mod beside;
+mod labels;
 mod marks;
 mod triad;
+
+use labels::Beside;
 
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
@@ -31,9 +34,16 @@ pub(super) struct Painter {
     body_prefix: &'static str,
     /// Labels wait until every line of their panel is drawn, so that none crosses them;
     /// an arrow's label knows its arrow (an index into the picture's arrows).
-    pending: Vec<(P2, f64, Label, Ink, Option<usize>)>,
+    pending: Vec<(P2, f64, Label, Ink, Beside)>,
     /// The straight arrows drawn so far, tail to tip: a later one keeps off their lines.
     lines: Vec<(P2, P2)>,
+    /// Where the panel's straight arrows act (on the page) and which way (`N`'s
+    /// coordinates): an arrow ends at its point only where no other there points the
+    /// opposite way.
+    straight: Vec<(P2, P3)>,
+    /// How much room a label takes beyond its size at 13 px (1, or more for a page that
+    /// prints the picture small and its labels at their size in points).
+    grow: f64,
 }
 
 impl Painter {
@@ -82,85 +92,19 @@ impl Painter {
         });
     }
 
+    /// The room a label of `plain` text takes.
+    fn room(&self, plain: &str) -> P2 {
+        p2scale(text_size(plain), self.grow)
+    }
+
     fn label(&mut self, anchor: P2, toward: f64, label: &Label, ink: Ink) {
         self.pending
-            .push((anchor, toward, label.clone(), ink, None));
-    }
-
-    /// Places the waiting labels, in the order they came, around everything drawn: an
-    /// arrow's label beside its tip, or beside the tip pushed out along the arrow's line
-    /// when the room there is taken; any label else at the nearest free spot.
-    fn place_labels(&mut self, arrows: &mut [DrawnArrow]) {
-        for (anchor, toward, label, ink, arrow) in std::mem::take(&mut self.pending) {
-            let size = text_size(&label.plain);
-            let tips = tips_of(arrows);
-            let pushed = arrow
-                .and_then(|k| arrows.get_mut(k))
-                .and_then(|a| self.push_apart(a, toward, size, &tips));
-            let at = match pushed {
-                Some(at) => at,
-                None => self.obstacles.place(anchor, toward, size),
-            };
-            self.texts.push(Item::Text { at, label, ink });
-        }
-    }
-
-    /// The place of a straight arrow's label of `size` close beside its tip; when there is
-    /// none, the arrow is made longer along its own line, a step at a time, until there is
-    /// (its new end crossing no label, nor within a head's length of another arrow's tip,
-    /// `tips`). `None` when neither serves.
-    fn push_apart(
-        &mut self,
-        arrow: &mut DrawnArrow,
-        toward: f64,
-        size: P2,
-        tips: &[P2],
-    ) -> Option<P2> {
-        /// The least distance between two tips, a head's length and a little.
-        const APART: f64 = 12.0;
-        const NEAR: [f64; 3] = [4.0, 12.0, 22.0];
-        if arrow.arc.is_some() {
-            return None;
-        }
-        if let Some(free) = self.obstacles.free_near(arrow.head, toward, size, &NEAR) {
-            return Some(self.obstacles.take(free));
-        }
-        let u = p2unit([arrow.head[0] - arrow.tail[0], arrow.head[1] - arrow.tail[1]])?;
-        for step in [14.0, 28.0, 42.0] {
-            let tip = p2add(arrow.head, p2scale(u, step));
-            if self.obstacles.crosses_label(arrow.head, tip) {
-                return None;
-            }
-            if tips
-                .iter()
-                .any(|t| p2norm([t[0] - tip[0], t[1] - tip[1]]) < APART)
-            {
-                continue;
-            }
-            // The longer arrow first, so that its label keeps clear of it too.
-            let mut heads = vec![head(tip, u)];
-            if arrow.heads.len() > 1 {
-                heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
-            }
-            let mut longer = self.obstacles.clone();
-            longer.segment(arrow.head, tip);
-            for h in &heads {
-                longer.polyline(h, true);
-            }
-            let Some(free) = longer.free_near(tip, toward, size, &NEAR[..2]) else {
-                continue;
-            };
-            self.obstacles = longer;
-            arrow.head = tip;
-            arrow.heads = heads;
-            return Some(self.obstacles.take(free));
-        }
-        None
+            .push((anchor, toward, label.clone(), ink, Beside::Spot));
     }
 
     /// A caption at a fixed place, which later labels keep clear of.
     fn fixed_text(&mut self, at: P2, label: Label, ink: Ink) {
-        self.obstacles.reserve(at, text_size(&label.plain));
+        self.obstacles.reserve(at, self.room(&label.plain));
         self.texts.push(Item::Text { at, label, ink });
     }
 
@@ -351,10 +295,14 @@ impl Painter {
             return drawn;
         }
         let length = arrow_length(stack);
-        // A force starts at its point (the pictures' contract); an inertia force, drawn at
-        // the mass centre, may stand beside a bar or another arrow.
+        // A force starts at its point, or ends there where starting there would run it
+        // inside its body (a push at a contact, a pin force along a bar); an inertia force,
+        // drawn at the mass centre, may stand beside a bar or another arrow.
+        let pushes = self.pushes_at(arrow, at, u, length);
         let at = if arrow.kind == super::scene::Kind::Inertia {
             self.beside_bodies(at, u)
+        } else if pushes {
+            p2add(at, p2scale(u, -length))
         } else {
             at
         };
@@ -371,8 +319,24 @@ impl Painter {
         for h in &drawn.heads {
             self.obstacles.polyline(h, true);
         }
-        self.pending
-            .push((tip, u[1].atan2(u[0]), arrow.label.clone(), ink, Some(index)));
+        if pushes {
+            // Its label by its tail, out in the open, away from the point.
+            self.pending.push((
+                at,
+                (-u[1]).atan2(-u[0]),
+                arrow.label.clone(),
+                ink,
+                Beside::Spot,
+            ));
+        } else {
+            self.pending.push((
+                tip,
+                u[1].atan2(u[0]),
+                arrow.label.clone(),
+                ink,
+                Beside::Arrow(index),
+            ));
+        }
         drawn
     }
 
@@ -399,8 +363,31 @@ impl Painter {
     }
 }
 
+impl Painter {
+    /// The captions of the marked points wait with the other labels: a point on a body's
+    /// edge keeps its caption outside the bodies where it can, a mass centre beside it.
+    fn caption_marks(&mut self, markers: &[super::scene::Marker], marks: &[Mark]) {
+        for (m, mark) in markers.iter().zip(marks) {
+            if let Some(caption) = &m.caption {
+                let beside = if m.role == Role::Center {
+                    Beside::Spot
+                } else {
+                    Beside::Point
+                };
+                let toward = -std::f64::consts::FRAC_PI_4;
+                (self.pending).push((mark.at, toward, caption.clone(), Ink::Black, beside));
+            }
+        }
+    }
+}
+
 /// Lays `scene` out for `view`.
 pub fn lay_out(scene: &Scene, view: View) -> Picture {
+    lay_out_with(scene, view, 1.0)
+}
+
+/// Lays `scene` out for `view`, each label taking `grow` times its room at 13 px.
+pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
     let (mut projection, [mut panel_width, height]) = fit(scene, view);
     let panels = if scene.kinetic.is_some() { 2.0 } else { 1.0 };
     // A caption wider than the system widens the panels, the system centred in them.
@@ -425,7 +412,13 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
         body_prefix: "",
         pending: Vec::new(),
         lines: Vec::new(),
+        straight: Vec::new(),
+        grow,
     };
+    painter.straight = (scene.arrows.iter())
+        .filter(|a| !(a.couple && scene.planar))
+        .map(|a| (painter.at(a.at), a.direction))
+        .collect();
     for shape in scene
         .shapes
         .iter()
@@ -457,11 +450,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     {
         painter.shape(shape);
     }
-    for (m, mark) in scene.markers.iter().zip(&marks) {
-        if let Some(caption) = &m.caption {
-            painter.label(mark.at, -std::f64::consts::FRAC_PI_4, caption, Ink::Black);
-        }
-    }
+    painter.caption_marks(&scene.markers, &marks);
     let panel_captions = [
         (panel_width / 2.0, "free body"),
         (panel_width * 1.5, "kinetic diagram"),
@@ -470,7 +459,7 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     if scene.kinetic.is_some() {
         let (x, caption) = panel_captions[0];
         painter.fixed_text([x, TITLE + 8.0], Label::text(caption), Ink::Grey);
-        painter.obstacles.reserve(equals, text_size("="));
+        painter.obstacles.reserve(equals, painter.room("="));
     }
     painter.place_labels(&mut arrows);
     if let Some((shapes, inertia)) = &scene.kinetic {

@@ -4,7 +4,8 @@
 //! One [`Scene`] per picture, built in `N`'s coordinates by the solution stage
 //! (`crate::solution::pictures`), is laid out once into a [`Picture`] ([`layout`]: projection,
 //! fixed-size arrows, label placement), and written by two exporters, `svg` and `tikz`,
-//! so the two never disagree.
+//! so the two never disagree (a page that prints a picture small lays it out again with
+//! more room for its labels, which print at a fixed size: the same bodies and arrows).
 //!
 //! Entry: [`Drawing`] (a laid-out picture, written as SVG or TikZ) and the scene's types;
 //! [`motion_svg`] writes the motion. The other modules are private; what the solution
@@ -47,6 +48,11 @@ pub struct Drawing {
     pub free_body: String,
     /// The laid-out picture.
     pub picture: Picture,
+    /// The scene it was laid out from, and the view: a page that prints the picture
+    /// smaller than its labels lays it out again with room for them.
+    pub scene: Scene,
+    /// The view it was laid out for.
+    pub view: View,
 }
 
 impl Drawing {
@@ -57,7 +63,18 @@ impl Drawing {
 
     /// The picture as a `tikzpicture`.
     pub fn tikz(&self) -> String {
-        tikz::export(&self.picture, tikz::PAGE_SIZE)
+        self.tikz_in(tikz::PAGE_SIZE)
+    }
+
+    /// The picture as a `tikzpicture` in `room`: where the page prints it so small that its
+    /// labels (which keep their size in points) would take more room than the layout gave
+    /// them, it is laid out again with their labels' room grown to what they print at.
+    fn tikz_in(&self, room: tikz::Size) -> String {
+        let grow = tikz::label_growth(&self.picture, room);
+        if grow <= 1.02 {
+            return tikz::export(&self.picture, room);
+        }
+        tikz::export(&layout::lay_out_with(&self.scene, self.view, grow), room)
     }
 
     /// The picture to embed in a page: its ids prefixed by its name, so that a page of
@@ -90,7 +107,7 @@ impl Drawing {
             // The XML declaration-free SVG element, one line per element, no blank lines
             // (a blank line would end a Markdown HTML block).
             svg_inline: crate::render::text::InlineSvg::from(svg.trim_end().to_string()),
-            picture_latex: crate::render::text::LatexCode::from(tikz::export(&self.picture, room)),
+            picture_latex: crate::render::text::LatexCode::from(self.tikz_in(room)),
         }
     }
 }

@@ -153,6 +153,18 @@ fn item(out: &mut String, item: &Item, unit: f64) {
     }
 }
 
+/// How much larger than the room the layout gave them (13 px) the labels print when the
+/// picture is set in `room`: 1 at the natural size or larger, more when the picture shrinks
+/// (its labels keep 7 or 8 pt).
+pub fn label_growth(picture: &Picture, room: Size) -> f64 {
+    let height = picture.height - picture.legend.height;
+    let unit = (room.width / picture.width)
+        .min(room.height / height)
+        .min(NATURAL);
+    let points = if unit < SMALL_LABELS { 7.0 } else { 8.0 };
+    (points / unit / 13.0).max(1.0)
+}
+
 /// The picture as a `tikzpicture`, scaled to fit `room`; needs `tikz` and `amsmath`.
 pub fn export(picture: &Picture, room: Size) -> String {
     // The legend is stated once in the handout's text, not under every picture.

@@ -61,11 +61,17 @@ impl Setting<'_, '_, '_> {
             ),
             PointRef::Joint(j) => (Role::Joint, latex_name(&problem.joints[j].name)),
         };
+        // A joint that carries no force (a planar or free joint) is no point a student
+        // names: its mark stays, unlabelled.
+        let carries = match point {
+            PointRef::Joint(j) => !self.derivation.model.sites[j].reactions.is_empty(),
+            _ => true,
+        };
         Marker {
             id: point_id(problem, point),
             at: self.position(point),
             role,
-            caption: Some(Label::from_tex(&caption)),
+            caption: carries.then(|| Label::from_tex(&caption)),
         }
     }
 
@@ -228,11 +234,12 @@ impl Setting<'_, '_, '_> {
         }
         self.coordinates(&mut shapes);
         self.triads(&mut shapes);
+        let markers = self.markers(&bodies, true);
         Scene {
             title,
             planar: self.derivation.model.is_planar(),
             shapes,
-            markers: self.markers(&bodies, true),
+            markers,
             arrows: Vec::new(),
             kinetic: None,
             down: super::bodies::down(self.numbers),

@@ -14,20 +14,27 @@ pub fn carrier(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Sh
     if body == BodyId::GROUND || !n.model.is_planar() {
         return None;
     }
-    let (normal, offset) = n
-        .model
-        .problem
-        .constraints
-        .iter()
-        .find_map(|c| match &c.kind {
-            ConstraintKind::Rolling {
-                on, normal, offset, ..
-            }
-            | ConstraintKind::Contact {
-                on, normal, offset, ..
-            } if *on == body => Some((normal, offset)),
-            _ => None,
-        })?;
+    let (normal, offset, wheel) =
+        n.model
+            .problem
+            .constraints
+            .iter()
+            .find_map(|c| match &c.kind {
+                ConstraintKind::Rolling {
+                    on,
+                    normal,
+                    offset,
+                    radius,
+                    ..
+                } if *on == body => Some((normal, offset, n.scalar(radius))),
+                ConstraintKind::Contact {
+                    on, normal, offset, ..
+                } if *on == body => Some((normal, offset, 0.0)),
+                _ => None,
+            })?;
+    // Long and deep enough to read as a block under the wheel it carries: two wheel
+    // diameters and more, a third of a wheel deep.
+    let wheel = if wheel.is_finite() { wheel.abs() } else { 0.0 };
     let up = unit(n.in_ground(body, &n.local(&own_components(normal, body))))?;
     let along = unit(cross(up, [0.0, 0.0, 1.0]))?;
     let origin = n.point_on(body, &[0.0; 3]);
@@ -40,8 +47,10 @@ pub fn carrier(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Sh
     let lo = reach.iter().copied().fold(0.0, f64::min);
     let hi = reach.iter().copied().fold(0.0, f64::max);
     let middle = 0.5 * (lo + hi);
-    let half = (0.5 * (hi - lo) + 0.05 * size).max(0.3 * size);
-    let depth = 0.12 * size;
+    let half = (0.5 * (hi - lo) + 0.05 * size)
+        .max(0.3 * size)
+        .max(2.2 * wheel);
+    let depth = (0.12 * size).max(0.35 * wheel);
     let at = |s: f64, d: f64| add(face, add(scale(along, middle + s * half), scale(up, -d)));
     let corners = vec![at(-1.0, 0.0), at(1.0, 0.0), at(1.0, depth), at(-1.0, depth)];
     Some((BodyKind::Block, vec![Shape::Polygon(corners)]))

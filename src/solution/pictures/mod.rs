@@ -182,6 +182,8 @@ fn drawings(
         title,
         free_body: String::new(),
         picture: layout::lay_out(&scene, view),
+        scene,
+        view,
     }];
     let sets = free_body_sets(derivation);
     let content = free_body_content(sets.len());
@@ -197,6 +199,8 @@ fn drawings(
             title,
             free_body: name,
             picture: layout::lay_out(&scene, view),
+            scene,
+            view,
         });
     }
     out

@@ -4,7 +4,9 @@
 //! line. Likewise an arrow that would lie on an earlier one of another direction (a top's
 //! Ḣ on its m a*): arrows of one line stay stacked by length.
 
+use super::super::numbers::{dot, unit, P3};
 use super::super::picture::{Item, P2};
+use super::super::scene::{Arrow, Kind};
 use super::super::strokes::{p2add, p2norm, p2scale};
 use super::Painter;
 
@@ -40,6 +42,30 @@ impl Painter {
             }
         }
         best.1
+    }
+
+    /// Whether a straight force `arrow` at `at` along the unit `u`, `length` long, is drawn
+    /// ending at its point: when starting there would run it inside a body (all samples but
+    /// one; an arrow along a wheel's tangent grazes it only) and
+    /// ending there runs less of it inside one (a contact's normal push, a pin's force
+    /// along its bar). Weights and inertia forces keep to their mass centres.
+    pub(super) fn pushes_at(&self, arrow: &Arrow, at: P2, u: P2, length: f64) -> bool {
+        if arrow.couple || matches!(arrow.kind, Kind::Inertia | Kind::Gravity) {
+            return false;
+        }
+        // Another arrow at the point the opposite way (a weight under a normal force)
+        // takes the room the arrow would end in.
+        let along = |d: P3| unit(d).map_or(0.0, |d| dot(d, unit(arrow.direction).unwrap_or(d)));
+        let here = |p: P2| p2norm([p[0] - at[0], p[1] - at[1]]) < 0.5;
+        if (self.straight.iter()).any(|(p, d)| here(*p) && along(*d) < -0.99) {
+            return false;
+        }
+        let (inside, _) = self.crowding(at, u);
+        if inside + 1 < SAMPLES.len() {
+            return false;
+        }
+        let (ending, _) = self.crowding(p2add(at, p2scale(u, -length)), u);
+        ending < inside
     }
 
     /// How many of the sample points along the arrow fall inside a body, and how many on

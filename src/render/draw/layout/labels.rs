@@ -1,0 +1,113 @@
+//! Placing the labels of a panel once everything else in it is drawn: beside an arrow's
+//! tip (pushing the arrow out along its line where the tip is crowded), or at the nearest
+//! free spot.
+
+use super::super::picture::{DrawnArrow, Item, P2};
+use super::super::place::Obstacles;
+use super::super::strokes::{head, p2add, p2norm, p2scale, p2unit, tips_of};
+use super::Painter;
+
+/// What a waiting label stands beside.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Beside {
+    /// The tip of the picture's arrow of this index.
+    Arrow(usize),
+    /// A point on a body's edge (a pin, a contact): outside the bodies where there is room.
+    Point,
+    /// Its anchor, wherever is free.
+    Spot,
+}
+
+/// How many of the spots nearest a point's caption are tried outside the bodies: two
+/// rounds of sixteen directions, within 12 px of the point.
+const NEAR_A_POINT: usize = 32;
+
+impl Painter {
+    /// Places the waiting labels, in the order they came, around everything drawn: an
+    /// arrow's label beside its tip, or beside the tip pushed out along the arrow's line
+    /// when the room there is taken; any label else at the nearest free spot.
+    pub(super) fn place_labels(&mut self, arrows: &mut [DrawnArrow]) {
+        for (anchor, toward, label, ink, beside) in std::mem::take(&mut self.pending) {
+            let size = self.room(&label.plain);
+            let tips = tips_of(arrows);
+            let pushed = match beside {
+                Beside::Arrow(k) => arrows
+                    .get_mut(k)
+                    .and_then(|a| self.push_apart(a, toward, size, &tips)),
+                Beside::Point => self.outside_bodies(anchor, toward, size),
+                Beside::Spot => None,
+            };
+            let at = match pushed {
+                Some(at) => at,
+                None => self.obstacles.place(anchor, toward, size),
+            };
+            self.texts.push(Item::Text { at, label, ink });
+        }
+    }
+
+    /// The place of a straight arrow's label of `size` close beside its tip; when there is
+    /// none, the arrow is made longer along its own line, a step at a time, until there is
+    /// (its new end crossing no label, nor within a head's length of another arrow's tip,
+    /// `tips`). `None` when neither serves.
+    fn push_apart(
+        &mut self,
+        arrow: &mut DrawnArrow,
+        toward: f64,
+        size: P2,
+        tips: &[P2],
+    ) -> Option<P2> {
+        /// The least distance between two tips, a head's length and a little.
+        const APART: f64 = 12.0;
+        const NEAR: [f64; 3] = [4.0, 12.0, 22.0];
+        if arrow.arc.is_some() {
+            return None;
+        }
+        if let Some(free) = self.obstacles.free_near(arrow.head, toward, size, &NEAR) {
+            return Some(self.obstacles.take(free));
+        }
+        let u = p2unit([arrow.head[0] - arrow.tail[0], arrow.head[1] - arrow.tail[1]])?;
+        for step in [14.0, 28.0, 42.0] {
+            let tip = p2add(arrow.head, p2scale(u, step));
+            if self.obstacles.crosses_label(arrow.head, tip) {
+                return None;
+            }
+            if tips
+                .iter()
+                .any(|t| p2norm([t[0] - tip[0], t[1] - tip[1]]) < APART)
+            {
+                continue;
+            }
+            // The longer arrow first, so that its label keeps clear of it too.
+            let mut heads = vec![head(tip, u)];
+            if arrow.heads.len() > 1 {
+                heads.push(head(p2add(tip, p2scale(u, -7.0)), u));
+            }
+            let mut longer = self.obstacles.clone();
+            longer.segment(arrow.head, tip);
+            for h in &heads {
+                longer.polyline(h, true);
+            }
+            let Some(free) = longer.free_near(tip, toward, size, &NEAR[..2]) else {
+                continue;
+            };
+            self.obstacles = longer;
+            arrow.head = tip;
+            arrow.heads = heads;
+            return Some(self.obstacles.take(free));
+        }
+        None
+    }
+
+    /// The first free spot for a label of `size` close around a point on a body's edge
+    /// whose middle lies outside every body (a contact's name below the wheel, not inside
+    /// it); `None` when none is free there.
+    fn outside_bodies(&mut self, anchor: P2, toward: f64, size: P2) -> Option<P2> {
+        let free = Obstacles::spots(anchor, toward, size)
+            .take(NEAR_A_POINT)
+            .find(|b| {
+                self.obstacles.clash(b) == 0
+                    && !(self.items.iter()).any(|item| super::beside::inside(item, b.center))
+            })?;
+        Some(self.obstacles.take(free))
+    }
+}
