@@ -71,16 +71,45 @@ mod tests {
     }
 
     /// `e_{k+1} = sin(e_k) + cos(e_k)`, forty levels deep, each level holding the one
-    /// below twice: 2^40 paths through a tree of 120 nodes. With `q̇ → 0` it must equal the
-    /// same nest built on `c` alone, as writing `c` for `c + q̇` before nesting gives.
+    /// below twice: 2^40 paths through a tree of 120 nodes. Substituted once per node, the
+    /// result shares its levels as the input does (walked path by path it would never end).
     #[test]
     fn a_shared_subtree_is_substituted_once() {
-        use crate::symbolic::build::cos;
-        let nest = |start: Expr| (0..40).fold(start, |e, _| sin(e.clone()) + cos(e));
         let c = Expr::constant("c");
         let rate = Expr::coord("q", 1);
-        let e = nest(&c + &rate);
-        let at_rest = substitute(&e, &|s| matches!(s, Symbol::Coord(_, 1)).then(Expr::zero));
-        assert_eq!(at_rest, nest(c));
+        let at_rest = substitute(&nest(&c + &rate, 40), &|s| {
+            matches!(s, Symbol::Coord(_, 1)).then(Expr::zero)
+        });
+        let Node::Add(terms) = at_rest.node() else {
+            panic!("a sum at the top")
+        };
+        let inner: Vec<&Expr> = (terms.iter())
+            .filter_map(|t| match t.node() {
+                Node::Func(_, args) => args.first(),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(inner.len(), 2);
+        assert!(
+            Rc::ptr_eq(&inner[0].0, &inner[1].0),
+            "the level below is one node"
+        );
+    }
+
+    /// The same nest, shallow enough to compare path by path: `q̇ → 0` gives the nest built
+    /// on `c` alone, as writing `c` for `c + q̇` before nesting gives.
+    #[test]
+    fn a_shared_subtree_substitutes_to_the_right_value() {
+        let c = Expr::constant("c");
+        let rate = Expr::coord("q", 1);
+        let at_rest = substitute(&nest(&c + &rate, 12), &|s| {
+            matches!(s, Symbol::Coord(_, 1)).then(Expr::zero)
+        });
+        assert_eq!(at_rest, nest(c, 12));
+    }
+
+    fn nest(start: Expr, depth: usize) -> Expr {
+        use crate::symbolic::build::cos;
+        (0..depth).fold(start, |e, _| sin(e.clone()) + cos(e))
     }
 }
