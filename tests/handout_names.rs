@@ -29,7 +29,7 @@ fn the_heavy_top_is_written_with_the_statements_point_o_and_a_letter() {
         "step 1 does not say that B is the top"
     );
     assert!(
-        text.contains("| O (spherical) |"),
+        text.contains("turns freely about point O of the ground"),
         "the joint is not named O"
     );
     for word in ["\\mathrm{tip}", "\\mathrm{top}"] {

@@ -42,7 +42,7 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         method: method.title().to_string(),
         student: false,
         frames: super::frames::frames(problem),
-        coordinates: coordinates(problem),
+        coordinates: coordinates(problem, &[]),
         axes: axes(problem),
         constants: constants(problem),
         plan: Plan::default(),
@@ -94,7 +94,8 @@ fn axes(problem: &Problem) -> Vec<Named> {
         .collect()
 }
 
-fn coordinates(problem: &Problem) -> Vec<Coordinate> {
+/// Step 1's coordinates; `shown` the letters of word-named points (a joint's among them).
+fn coordinates(problem: &Problem, shown: &[(String, String)]) -> Vec<Coordinate> {
     problem
         .coordinates
         .iter()
@@ -107,7 +108,7 @@ fn coordinates(problem: &Problem) -> Vec<Coordinate> {
                 name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
-                joint: super::joint_words::joint_words(problem, c.joint),
+                joint: super::joint_words::joint_words(problem, c.joint, shown),
                 unit_tex: Math::from(crate::render::unit_tex(&unit)),
                 initial: with_unit(&fixed(c.initial), &unit),
                 initial_rate: with_unit(&fixed(c.rate), &rate_unit),

@@ -4,9 +4,8 @@
 //! second derivatives the same). The checks are computed as before; only their report is
 //! written here, without their thresholds or a verdict.
 
-use crate::equations::Method;
 use crate::numeric::Trajectory;
-use crate::numeric::{Check, CheckKind, Phrase};
+use crate::numeric::{Check, CheckKind};
 use crate::problem::{Problem, SimulateSettings};
 use crate::render::literal_with_numbers;
 use crate::symbolic::fixed;
@@ -66,18 +65,10 @@ pub fn integration(problem: &Problem, settings: &SimulateSettings) -> String {
 /// One sentence of physics for `check`, as markup: what must hold and how the motion
 /// holds it, with the numbers a student can read off the plots. `fallback` is the check's
 /// own sentence, said when the motion does not hold it.
-pub fn sentence(
-    problem: &Problem,
-    method: &str,
-    check: &Check,
-    trajectory: &Trajectory,
-    fallback: &str,
-) -> String {
+pub fn sentence(check: &Check, trajectory: &Trajectory, fallback: &str) -> String {
     let said = match check.kind {
         CheckKind::EnergyConservation => energy_constant(trajectory, check.passed),
         CheckKind::EnergyNeverRises => energy_falls(trajectory, check),
-        CheckKind::MethodAgreement if check.passed => Some(same_accelerations(problem, method)),
-        CheckKind::SmallOscillationPeriod if check.passed => small_oscillation(problem, check),
         CheckKind::ConstraintDrift if check.passed => {
             Some("The constraints of step 1 hold along the whole motion.".to_string())
         }
@@ -182,92 +173,4 @@ fn energy_falls(trajectory: &Trajectory, check: &Check) -> Option<String> {
          {change}, and {how} (the energy plots).",
         fixed(end_t),
     ))
-}
-
-/// The other methods' second derivatives, the same as this method's.
-fn same_accelerations(problem: &Problem, method: &str) -> String {
-    let others: Vec<&str> = (Method::ALL.iter())
-        .map(|m| m.title())
-        .filter(|title| *title != method)
-        .collect();
-    let names = match others.split_last() {
-        Some((last, [])) => last.to_string(),
-        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
-        None => String::new(),
-    };
-    let accelerations: Vec<String> = (0..problem.coordinates.len())
-        .map(|i| latex(&problem.coordinate_expr(i, 2)))
-        .collect();
-    format!(
-        "Checked beside this derivation, though not shown here: the equations of motion \
-         derived separately by {names} give the same {} at every state compared along the \
-         motion.",
-        // Each in its own math, so that the line may break between them.
-        (accelerations.iter().map(|a| format!("${a}$")))
-            .collect::<Vec<_>>()
-            .join(", ")
-    )
-}
-
-/// The small oscillation about an equilibrium has the period the linearized equations
-/// give: the equilibrium from the check's own words, the period from its numbers.
-fn small_oscillation(problem: &Problem, check: &Check) -> Option<String> {
-    let mut equilibrium = String::new();
-    let mut rest = String::new();
-    for phrase in &check.phrases {
-        match phrase {
-            Phrase::Text(text) if !rest.is_empty() || text.starts_with(", the energies") => {
-                rest.push_str(text)
-            }
-            Phrase::Text(text) => {
-                equilibrium.push_str(text.trim_start_matches("about the equilibrium "))
-            }
-            // The coordinates after the equilibrium belong to the energies' sentence.
-            Phrase::Coordinate { .. } if !rest.is_empty() => {}
-            Phrase::Coordinate { name, order } => {
-                let i = problem.coordinates.iter().position(|c| &c.name == name)?;
-                equilibrium.push_str(&latex(&problem.coordinate_expr(i, *order as u8)));
-            }
-        }
-    }
-    let period = number_after(&rest, "T = 2π/ω = ")?;
-    let omega = number_after(&rest, "ω = ")?;
-    let mode = match number_after(&rest, "mode ").as_deref() {
-        Some("1") => " along its slowest mode",
-        Some("2") => " along its second mode",
-        Some("3") => " along its third mode",
-        Some(_) => " along one of its modes",
-        None => "",
-    };
-    Some(format!(
-        "Started a little away from the equilibrium ${equilibrium}${mode}, the motion \
-         oscillates with the period that the linearized equations give, \
-         $\\tau = 2\\pi/\\omega = {period}$ s ($\\omega = {omega}$ rad/s)."
-    ))
-}
-
-/// The number that follows `label` in `text`, as written.
-fn number_after(text: &str, label: &str) -> Option<String> {
-    let at = text.find(label)? + label.len();
-    let number: String = text[at..]
-        .chars()
-        .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | 'e' | '-'))
-        .collect();
-    (!number.is_empty()).then_some(number)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_number_is_read_after_its_label() {
-        let text = ", so ω = 9.86414 rad/s and T = 2π/ω = 0.636972 s; measures T = 0.64 s";
-        assert_eq!(number_after(text, "ω = ").as_deref(), Some("9.86414"));
-        assert_eq!(
-            number_after(text, "T = 2π/ω = ").as_deref(),
-            Some("0.636972")
-        );
-        assert_eq!(number_after(text, "x = "), None);
-    }
 }

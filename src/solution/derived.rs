@@ -24,6 +24,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     solution.plan = plan(derivation);
     let shown = super::shown_names::shown_names(model);
     super::shown_names::name_in_step_one(solution, &shown);
+    for (given, coordinate) in problem.coordinates.iter().zip(&mut solution.coordinates) {
+        // A word-named joint by the letter the picture labels it with.
+        coordinate.joint = super::joint_words::joint_words(problem, given.joint, &shown);
+    }
     solution.shown_names = shown;
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
     // s_1, c_12, listed once where they are first used.
@@ -41,6 +45,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let by_partials;
         (solution.kinematics, by_partials) = super::kinematics::kinematics(derivation);
         solution.spin_frames = super::spin_frames::spin_frames(derivation);
+        for spin in &mut solution.spin_frames {
+            // A body named by a word is called by its letter, as everywhere in the math.
+            spin.body = super::force_labels::shown_name(&spin.body, &solution.shown_names);
+        }
         solution.equations = derivation
             .rows
             .iter()

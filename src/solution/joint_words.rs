@@ -1,5 +1,5 @@
 //! Joints and bodies named in words, as a course names them: "the ball moves in the
-//! plane", "rod A turns on the ground at pin O", "the coin is free", never a bare joint
+//! plane", "rod A turns on the ground at pin O", "the disc rolls on the ground", never a bare joint
 //! letter with the kind of joint in brackets.
 
 use crate::problem::{BodyId, JointKind, Problem};
@@ -15,6 +15,10 @@ pub fn body_words(problem: &Problem, id: BodyId) -> String {
         return "the ground".into();
     }
     let body = problem.body(id);
+    // A body named by a plain word ("wedge", "top") is called by it.
+    if body.name.len() >= 3 && body.name.chars().all(|c| c.is_ascii_lowercase()) {
+        return format!("the {}", body.name);
+    }
     let fallback = || format!("body {}", body.name.replace('_', " "));
     let Some(description) = body.description.as_deref() else {
         return fallback();
@@ -51,34 +55,50 @@ fn is_point_name(name: &str) -> bool {
         && name.chars().all(char::is_alphanumeric)
 }
 
-/// Joint `j` in words: what it lets its child do relative to its parent.
-pub fn joint_words(problem: &Problem, j: usize) -> String {
+/// Joint `j` in words: what it lets its child do relative to its parent. A joint named by a
+/// word is called by the letter the handout prints for it (`shown`).
+pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> String {
     let joint = &problem.joints[j];
     let child = body_words(problem, joint.child);
     let parent = body_words(problem, joint.parent);
-    let at = |what: &str| match is_point_name(&joint.name) {
-        true => format!(" at {what} {}", joint.name),
+    let name = super::force_labels::shown_name(&joint.name, shown);
+    let at = |what: &str| match is_point_name(&name) {
+        true => format!(" at {what} {name}"),
         false => String::new(),
     };
     match joint.kind {
         JointKind::Revolute => format!("{child} turns on {parent}{}", at("pin")),
         JointKind::Prismatic => format!("{child} slides on {parent}"),
         JointKind::Cylindrical => format!("{child} slides and turns on {parent}"),
+        JointKind::Planar | JointKind::Free if rolls_on(problem, joint.child).is_some() => {
+            let (on, rough) = rolls_on(problem, joint.child).unwrap_or((BodyId::GROUND, false));
+            // A rough contact may slide as well as roll (the skidding ball).
+            let how = if rough { "rolls or slides" } else { "rolls" };
+            format!("{child} {how} on {}", body_words(problem, on))
+        }
         JointKind::Planar if joint.parent == BodyId::GROUND => {
             format!("{child} moves in the plane")
         }
         JointKind::Planar => format!("{child} moves in the plane relative to {parent}"),
         JointKind::Universal => format!("{child} turns on {parent} about two axes{}", at("point")),
-        JointKind::Spherical if is_point_name(&joint.name) => {
-            format!(
-                "{child} turns freely about point {} of {parent}",
-                joint.name
-            )
+        JointKind::Spherical if is_point_name(&name) => {
+            format!("{child} turns freely about point {name} of {parent}")
         }
         JointKind::Spherical => format!("{child} turns freely about a point of {parent}"),
         JointKind::Free => format!("{child} is free"),
         JointKind::Weld => format!("{child} is fixed to {parent}"),
     }
+}
+
+/// The body `body` rolls on where a rolling constraint holds it, and whether that contact
+/// is rough (it may slide too).
+fn rolls_on(problem: &Problem, body: BodyId) -> Option<(BodyId, bool)> {
+    problem.constraints.iter().find_map(|c| match &c.kind {
+        crate::problem::ConstraintKind::Rolling { body: b, on, .. } if *b == body => {
+            Some((*on, c.friction.is_some()))
+        }
+        _ => None,
+    })
 }
 
 /// The sentence under a reaction answered in a body's unit vectors where the question

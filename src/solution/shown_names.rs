@@ -94,7 +94,7 @@ pub fn shown_names(model: &Model) -> Vec<(String, String)> {
 }
 
 /// Step 1 says which letter stands for which word: the frame of the top is B, fixed in
-/// "the top (B)"; the joint at the tip is "O (spherical)", as the picture labels it.
+/// "the top (B)"; a word-named joint is called by its letter in the coordinates' table.
 pub fn name_in_step_one(solution: &mut Solution, names: &[(String, String)]) {
     let letter = |name: &str| {
         let tex = latex_name(name);
@@ -110,17 +110,6 @@ pub fn name_in_step_one(solution: &mut Solution, names: &[(String, String)]) {
         if let Some(l) = letter(&frame.name) {
             frame.fixed_in = format!("the {} ({l})", frame.name);
             frame.name = l;
-        }
-    }
-    for coordinate in &mut solution.coordinates {
-        // `tip (spherical)`: the joint's name, then its kind.
-        let Some((joint, kind)) = coordinate.joint.split_once(" (") else {
-            continue;
-        };
-        // The letter alone keeps the narrow column from wrapping; the picture of step 1
-        // labels the joint with it.
-        if let Some(l) = letter(joint) {
-            coordinate.joint = format!("{l} ({kind}");
         }
     }
 }

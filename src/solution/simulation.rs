@@ -37,7 +37,7 @@ pub fn simulation(
         ));
     }
     solution.simulation.note = notes.join(" ");
-    solution.simulation.checks = checks_said(&solution.method, problem, checks, trajectory);
+    solution.simulation.checks = checks_said(problem, checks, trajectory);
     // One quantity per axis: angles and distances on plots of their own.
     let series_of = |kind: CoordinateKind| -> Vec<Series> {
         problem
@@ -123,18 +123,26 @@ pub fn simulation(
 /// The confirmation checks of the run by `method`, each said as physics, in the course's
 /// words.
 fn checks_said(
-    method: &str,
     problem: &Problem,
     checks: &[crate::numeric::Check],
     trajectory: &Trajectory,
 ) -> Vec<Check> {
     checks
         .iter()
+        // A passed check that the other methods agree, or that a small oscillation has the
+        // linearized period, is nothing a student can follow on paper: said only if it fails.
+        .filter(|c| {
+            !(c.passed
+                && matches!(
+                    c.kind,
+                    CheckKind::MethodAgreement | CheckKind::SmallOscillationPeriod
+                ))
+        })
         .map(|c| {
             // Said as physics, in the course's words; the check's own sentence only where
             // the motion does not hold it.
             let own = detail(problem, c);
-            let said = super::confirmation::sentence(problem, method, c, trajectory, own.as_str());
+            let said = super::confirmation::sentence(c, trajectory, own.as_str());
             Check {
                 name: c.name().to_string(),
                 value: fixed(c.value),

@@ -109,7 +109,7 @@ pub fn steps(
     Some(vec![
         step(
             format!(
-                "In the steady motion, ${}$. With these put in, the acceleration of the mass centre (step 3) is",
+                "In the steady motion, ${}$. With these put in, the acceleration of the mass centre (step 4) is",
                 conditions.join(",\\ ")
             ),
             format!("{a} = {}", shortest_tex(worked, &acceleration)),

@@ -60,6 +60,10 @@ impl Painter {
         if (self.straight.iter()).any(|(p, d)| here(*p) && along(*d) < -0.99) {
             return false;
         }
+        // An arrow drawn before already ends at the point: two heads would meet there.
+        if self.lines.iter().any(|(_, tip)| here(*tip)) {
+            return false;
+        }
         let (inside, _) = self.crowding(at, u);
         if inside + 1 < SAMPLES.len() {
             return false;
