@@ -14,38 +14,11 @@ and student, Lagrange's too) once, the slowest listed against the target of 0.5 
 student handout each, LaTeX) against 30 explains of it, worked and student. With --grade,
 `grade --batch` of a class of 300 (tools/bench/grade_class.py).
 """
-import tempfile
 import os
-import resource
 import subprocess
 import sys
-import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-PROBLEMS = [
-    "problems/validation/whipple-bicycle.json",
-    "problems/validation/ten-link-chain.json",
-    "problems/validation/all-joints-3d.json",
-    "problems/rolling-coin.json",
-]
-METHODS = ["kane", "motion-law"]
-
-
-def timed(argv):
-    """Wall and CPU seconds of one run of argv, its output thrown away."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu
-
-
-def fastest(argv, runs):
-    """The least wall and the least CPU seconds over `runs` runs."""
-    times = [timed(argv) for _ in range(runs)]
-    return min(t[0] for t in times), min(t[1] for t in times)
+from handout_timing import METHODS, PROBLEMS, ROOT, every_handout, fastest, heavy_top_variants
 
 
 def main():
@@ -77,32 +50,17 @@ def main():
                         "--bin", binary], cwd=ROOT, check=True)
     if "--all" not in sys.argv:
         return
-    handouts = []
-    for folder in ["problems", "problems/validation"]:
-        for name in sorted(os.listdir(os.path.join(ROOT, folder))):
-            if not name.endswith(".json"):
-                continue
-            path = f"{folder}/{name}"
-            for method in ["motion-law", "newton-euler", "kane", "lagrange"]:
-                for student in [[], ["--student"]]:
-                    argv = [binary, "explain", path, "--method", method] + student
-                    handouts.append((timed(argv), path, method, bool(student)))
-    handouts.sort(key=lambda h: -h[0][1])
+    handouts = every_handout(binary)
     over = [h for h in handouts if h[0][1] > 0.5]
     print(f"\n{len(handouts)} handouts, {len(over)} over 0.5 s of CPU; the slowest ten (wall / cpu):")
-    for (wall, cpu), path, method, student in handouts[:10]:
+    for (wall, cpu, _), path, method, student in handouts[:10]:
         version = "student" if student else "worked"
         print(f"  {cpu:6.3f} cpu {wall:6.3f} wall  {path} {method} {version}")
 
 
 def variants_against_explains(binary, runs):
     """CPU seconds of `variants --count 30` of the heavy top against 30 explains of it."""
-    top = "problems/heavy-symmetric-top.json"
-    with tempfile.TemporaryDirectory() as out:
-        variants = min(timed([binary, "variants", top, "--count", "30", "--format", "latex",
-                              "-o", os.path.join(out, str(k))])[1] for k in range(runs))
-    worked = fastest([binary, "explain", top, "--format", "latex"], runs)[1]
-    student = fastest([binary, "explain", top, "--format", "latex", "--student"], runs)[1]
+    variants, worked, student = heavy_top_variants(binary, runs)
     print(f"\nvariants --count 30 of the heavy top: {variants:.3f} s cpu; 30 explains "
           f"{30 * worked:.3f} s (worked) and {30 * (worked + student):.3f} s (worked and "
           f"student); ratio {variants / (30 * (worked + student)):.2f}")

@@ -19,45 +19,14 @@ least), wall seconds beside them. Prints one summary line per target at the end.
 """
 import os
 import re
-import resource
 import subprocess
 import sys
 import tempfile
-import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-PROBLEMS = [
-    "problems/validation/whipple-bicycle.json",
-    "problems/validation/ten-link-chain.json",
-    "problems/validation/all-joints-3d.json",
-    "problems/rolling-coin.json",
-]
-METHODS = ["kane", "motion-law"]
+from handout_timing import METHODS, PROBLEMS, ROOT, every_handout, fastest, heavy_top_variants
+
 HANDOUT_LIMIT = 0.5
 GRADE_LIMIT = 10.0
-
-
-def timed(argv, limit=None):
-    """Wall and CPU seconds of one run of argv (output thrown away), and whether it finished
-    within `limit` wall seconds."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    finished = True
-    try:
-        subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT,
-                       timeout=limit)
-    except subprocess.TimeoutExpired:
-        finished = False
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu, finished
-
-
-def fastest(argv, runs):
-    """The least wall and the least CPU seconds over `runs` runs."""
-    times = [timed(argv) for _ in range(runs)]
-    return min(t[0] for t in times), min(t[1] for t in times)
 
 
 def verdict(ok):
@@ -88,17 +57,7 @@ def explain_against_solve(binary, runs):
 
 def every_handout(binary, limit):
     """Section 2: every bundled handout once against 0.5 s."""
-    handouts = []
-    for folder in ["problems", "problems/validation"]:
-        for name in sorted(os.listdir(os.path.join(ROOT, folder))):
-            if not name.endswith(".json"):
-                continue
-            path = f"{folder}/{name}"
-            for method in ["motion-law", "newton-euler", "kane", "lagrange"]:
-                for student in [[], ["--student"]]:
-                    argv = [binary, "explain", path, "--method", method] + student
-                    handouts.append((timed(argv, limit), path, method, bool(student)))
-    handouts.sort(key=lambda h: -h[0][1])
+    handouts = every_handout(binary, limit)
     over = [h for h in handouts if h[0][1] > HANDOUT_LIMIT or not h[0][2]]
     print(f"\n2. every bundled handout once: {len(handouts)} handouts, {len(over)} over "
           f"{HANDOUT_LIMIT} s of CPU; the slowest (CPU s, wall s):")
@@ -112,12 +71,7 @@ def every_handout(binary, limit):
 
 def variants_against_explains(binary, runs):
     """Section 3: `variants --count 30` of the heavy top against 30 explains of it."""
-    top = "problems/heavy-symmetric-top.json"
-    with tempfile.TemporaryDirectory() as out:
-        variants = min(timed([binary, "variants", top, "--count", "30", "--format", "latex",
-                              "-o", os.path.join(out, str(k))])[1] for k in range(runs))
-    worked = fastest([binary, "explain", top, "--format", "latex"], runs)[1]
-    student = fastest([binary, "explain", top, "--format", "latex", "--student"], runs)[1]
+    variants, worked, student = heavy_top_variants(binary, runs)
     explains = 30 * (worked + student)
     print(f"\n3. variants --count 30 of the heavy top: {variants:.3f} s CPU; 30 explains, "
           f"worked and student: {explains:.3f} s; ratio {variants / explains:.2f}")
