@@ -7,10 +7,9 @@
 //! every initial value and rate of step 1, counts that agree with their nouns, and no word
 //! of a body's or point's name as a subscript or superscript.
 
-use crate::support::run;
+use crate::support::handouts::{handout_of, two_at_a_time};
+use crate::support::METHODS;
 use std::path::PathBuf;
-
-const METHODS: [&str; 4] = ["motion-law", "kane", "newton-euler", "lagrange"];
 
 /// Words a course does not use in a handout.
 const NOT_COURSE_WORDS: [&str; 14] = [
@@ -165,65 +164,45 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
         .flat_map(|p| METHODS.iter().map(move |m| (p.clone(), *m)))
         .flat_map(|(p, m)| FORMATS.iter().map(move |f| (p.clone(), m, *f)))
         .collect();
-    let found = std::sync::Mutex::new(Vec::new());
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    std::thread::scope(|scope| {
-        for _ in 0..2 {
-            scope.spawn(|| loop {
-                let k = next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
-                let Some((path, method, format)) = jobs.get(k) else {
-                    break;
-                };
-                let out = run(&[
-                    "explain".as_ref(),
-                    path.as_os_str(),
-                    "--method".as_ref(),
-                    method.as_ref(),
-                    "--format".as_ref(),
-                    format.as_ref(),
-                ]);
-                if !out.status.success() {
-                    // A method a problem cannot take is refused; other tests see to it.
-                    continue;
-                }
-                let text = String::from_utf8_lossy(&out.stdout);
-                let text = match *format {
-                    "html" => visible(&text),
-                    _ => text.into_owned(),
-                };
-                let name = path.file_stem().unwrap_or_default().to_string_lossy();
-                let mut wrong = found.lock().expect("lock");
-                for word in NOT_COURSE_WORDS.iter().chain(&NOT_TEXTBOOK_WORDS) {
-                    if let Some(line) = text.lines().find(|l| l.contains(word)) {
-                        let line: String = line.chars().take(200).collect();
-                        wrong.push(format!("{name} ({method}, {format}): `{word}` in: {line}"));
-                    }
-                }
-                if *format != "markdown" {
-                    continue;
-                }
-                for line in text.lines() {
-                    if let Some(pair) = pythagorean_pair(line) {
-                        wrong.push(format!("{name} ({method}, {format}): s² + c² left: {pair}"));
-                    }
-                }
-                wrong.extend(unitless_rows(&text).map(|row| format!("{name} ({method}): {row}")));
-                wrong.extend(count_slips(&text).map(|slip| format!("{name} ({method}): `{slip}`")));
-                if let Some(clash) = cosine_clash(path, &text) {
-                    wrong.push(format!("{name} ({method}): {clash}"));
-                }
-                if let Some(word) = word_script(&text) {
-                    wrong.push(format!("{name} ({method}): a word as a script: {word}"));
-                }
-                if let Some(words) = underscored_words(&text) {
-                    wrong.push(format!(
-                        "{name} ({method}): a name with `_` in words: {words}"
-                    ));
-                }
-            });
+    let wrong = two_at_a_time(&jobs, |(path, method, format)| {
+        let Some(text) = handout_of(path, method, format) else {
+            return Vec::new();
+        };
+        let text = match *format {
+            "html" => visible(&text),
+            _ => text,
+        };
+        let name = path.file_stem().unwrap_or_default().to_string_lossy();
+        let mut wrong = Vec::new();
+        for word in NOT_COURSE_WORDS.iter().chain(&NOT_TEXTBOOK_WORDS) {
+            if let Some(line) = text.lines().find(|l| l.contains(word)) {
+                let line: String = line.chars().take(200).collect();
+                wrong.push(format!("{name} ({method}, {format}): `{word}` in: {line}"));
+            }
         }
+        if *format != "markdown" {
+            return wrong;
+        }
+        for line in text.lines() {
+            if let Some(pair) = pythagorean_pair(line) {
+                wrong.push(format!("{name} ({method}, {format}): s² + c² left: {pair}"));
+            }
+        }
+        wrong.extend(unitless_rows(&text).map(|row| format!("{name} ({method}): {row}")));
+        wrong.extend(count_slips(&text).map(|slip| format!("{name} ({method}): `{slip}`")));
+        if let Some(clash) = cosine_clash(path, &text) {
+            wrong.push(format!("{name} ({method}): {clash}"));
+        }
+        if let Some(word) = word_script(&text) {
+            wrong.push(format!("{name} ({method}): a word as a script: {word}"));
+        }
+        if let Some(words) = underscored_words(&text) {
+            wrong.push(format!(
+                "{name} ({method}): a name with `_` in words: {words}"
+            ));
+        }
+        wrong
     });
-    let wrong = found.into_inner().expect("lock");
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
 

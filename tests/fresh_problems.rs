@@ -14,9 +14,8 @@ mod motion;
 mod motion_3d;
 mod rest_and_impact;
 
-use crate::support::{run_json, METHODS};
+use crate::support::{method_json, METHODS};
 use serde_json::Value;
-use std::ffi::OsString;
 use std::path::PathBuf;
 
 /// The path of `tests/fresh_problems/NAME.json`.
@@ -29,14 +28,7 @@ fn fixture(name: &str) -> PathBuf {
 
 /// `mbd-tutor COMMAND tests/fresh_problems/NAME.json --format json --method M EXTRA…`.
 fn command(cmd: &str, name: &str, method: &str, extra: &[&str]) -> Value {
-    let mut args: Vec<OsString> = vec![cmd.into(), fixture(name).into()];
-    args.extend(
-        ["--format", "json", "--method", method]
-            .iter()
-            .chain(extra)
-            .map(OsString::from),
-    );
-    run_json(&args)
+    method_json(cmd, &fixture(name), method, extra)
 }
 
 /// `solve` by every method, each checked to say its method.

@@ -5,7 +5,8 @@
 //! where a sentence was wrong are read for the right one, its numbers checked against
 //! values worked out here.
 
-use crate::support::{explain, run, run_json};
+use crate::support::handouts::{handout_of, two_at_a_time};
+use crate::support::{explain, run_json};
 use serde_json::Value;
 use std::path::Path;
 
@@ -45,17 +46,7 @@ fn prescribes_motion(problem: &Value) -> bool {
 
 /// The markdown handout of `path` by `method`; `None` where the method is refused.
 fn handout(path: &Path, method: &str) -> Option<String> {
-    let out = run(&[
-        "explain".as_ref(),
-        path.as_os_str(),
-        "--method".as_ref(),
-        method.as_ref(),
-        "--format".as_ref(),
-        "markdown".as_ref(),
-    ]);
-    out.status
-        .success()
-        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+    handout_of(path, method, "markdown")
 }
 
 /// What is wrong in one handout of a problem, `None` where nothing is.
@@ -93,32 +84,17 @@ fn no_bundled_handout_holds_a_sentence_an_instructor_would_cut() {
     let jobs: Vec<(std::path::PathBuf, &str)> = (crate::support::all_problems().into_iter())
         .flat_map(|p| SCANNED.iter().map(move |m| (p.clone(), *m)))
         .collect();
-    let found = std::sync::Mutex::new(Vec::new());
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    std::thread::scope(|scope| {
-        for _ in 0..2 {
-            scope.spawn(|| loop {
-                let k = next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
-                let Some((path, method)) = jobs.get(k) else {
-                    break;
-                };
-                let Some(text) = handout(path, method) else {
-                    continue;
-                };
-                let problem: Value =
-                    serde_json::from_str(&std::fs::read_to_string(path).expect("readable"))
-                        .expect("JSON");
-                let name = path.file_stem().unwrap_or_default().to_string_lossy();
-                for w in wrong_sentences(&text, &problem) {
-                    found
-                        .lock()
-                        .expect("lock")
-                        .push(format!("{name} ({method}): {w}"));
-                }
-            });
-        }
+    let found = two_at_a_time(&jobs, |(path, method)| {
+        let Some(text) = handout(path, method) else {
+            return Vec::new();
+        };
+        let problem: Value =
+            serde_json::from_str(&std::fs::read_to_string(path).expect("readable")).expect("JSON");
+        let name = path.file_stem().unwrap_or_default().to_string_lossy();
+        (wrong_sentences(&text, &problem).into_iter())
+            .map(|w| format!("{name} ({method}): {w}"))
+            .collect()
     });
-    let found = found.into_inner().expect("lock");
     assert!(found.is_empty(), "{}", found.join("\n"));
 }
 

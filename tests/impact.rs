@@ -6,20 +6,13 @@
 //! written here); the kinetic energy after never above the one before, equal for e = 1 on a
 //! smooth surface. Every method, the same numbers.
 
-use crate::support::{assert_close, number, problem, run, run_json, METHODS};
+use crate::support::{assert_close, method_json, number, problem, run, run_json, METHODS};
 use serde_json::Value;
 use std::ffi::OsString;
 
 /// `mbd-tutor impact problems/NAME.json --format json --method M EXTRA…`.
 fn impact(name: &str, method: &str, extra: &[&str]) -> Value {
-    let mut args: Vec<OsString> = vec!["impact".into(), problem(name).into()];
-    args.extend(
-        ["--format", "json", "--method", method]
-            .iter()
-            .chain(extra)
-            .map(OsString::from),
-    );
-    run_json(&args)
+    method_json("impact", &problem(name), method, extra)
 }
 
 fn after(json: &Value, rate: &str) -> f64 {

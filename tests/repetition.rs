@@ -3,7 +3,8 @@
 //! terms that apply, Kane's inertia force of a speed body by body, and Kane's worksheet
 //! with its own blanks.
 
-use crate::support::{all_problems, explain, run};
+use crate::support::handouts::handout_of;
+use crate::support::{all_problems, explain};
 
 /// The prose of a Markdown handout from step 1 on (the statement is the problem's own
 /// words), without pictures, display math and table rows, cut into sentences.
@@ -60,20 +61,11 @@ fn no_long_sentence_is_said_twice_in_one_handout() {
     let mut repeated = Vec::new();
     for path in all_problems() {
         for method in ["newton-euler", "motion-law", "kane", "lagrange"] {
-            let args = [
-                "explain".as_ref(),
-                path.as_os_str(),
-                "--method".as_ref(),
-                method.as_ref(),
-                "--format".as_ref(),
-                "markdown".as_ref(),
-            ];
-            let out = run(&args);
-            if !out.status.success() {
+            let Some(text) = handout_of(&path, method, "markdown") else {
                 continue;
-            }
+            };
             handouts += 1;
-            if let Some(sentence) = said_twice(&String::from_utf8_lossy(&out.stdout)) {
+            if let Some(sentence) = said_twice(&text) {
                 repeated.push(format!("{} {method}: {sentence}", path.display()));
             }
         }

@@ -2,7 +2,7 @@
 
 use serde_json::Value;
 use std::ffi::OsString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// The three equation-forming methods, as the command line names them.
@@ -58,6 +58,18 @@ pub fn run_json<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Value {
     })
 }
 
+/// `mbd-tutor COMMAND PATH --format json --method METHOD EXTRA…` as JSON.
+pub fn method_json(command: &str, path: &Path, method: &str, extra: &[&str]) -> Value {
+    let mut args: Vec<OsString> = vec![command.into(), path.into()];
+    args.extend(
+        ["--format", "json", "--method", method]
+            .iter()
+            .chain(extra)
+            .map(OsString::from),
+    );
+    run_json(&args)
+}
+
 /// The answer of `solve --format json`.
 #[derive(Debug, Clone)]
 pub struct Solution {
@@ -101,16 +113,9 @@ impl Solution {
 
 /// `mbd-tutor solve PROBLEM --format json --method METHOD EXTRA...`.
 pub fn solve(name: &str, method: &str, extra: &[&str]) -> Solution {
-    let mut args: Vec<OsString> = vec!["solve".into(), problem(name).into()];
-    args.extend(
-        ["--format", "json", "--method", method]
-            .iter()
-            .chain(extra)
-            .map(OsString::from),
-    );
     Solution {
         method: method.to_string(),
-        json: run_json(&args),
+        json: method_json("solve", &problem(name), method, extra),
     }
 }
 
@@ -181,6 +186,7 @@ pub fn column(columns: &[String], name: &str) -> usize {
         .unwrap_or_else(|| panic!("no column {name} in {columns:?}"))
 }
 
+pub mod handouts;
 pub mod mathml;
 
 /// `mbd-tutor explain problems/NAME.json ARGS…`: its standard output, failing with its stderr.

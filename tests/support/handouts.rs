@@ -1,0 +1,45 @@
+//! Handouts of the bundled problems, written by the built binary and read many at a time.
+
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// `mbd-tutor explain PATH --method METHOD --format FORMAT`; `None` where the method is
+/// refused (other tests see to which are).
+pub fn handout_of(path: &Path, method: &str, format: &str) -> Option<String> {
+    let out = super::run(&[
+        "explain".as_ref(),
+        path.as_os_str(),
+        "--method".as_ref(),
+        method.as_ref(),
+        "--format".as_ref(),
+        format.as_ref(),
+    ]);
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+/// What `check` finds wrong in each of `jobs`, run two at a time (the machine's cores),
+/// gathered in the order they were found.
+pub fn two_at_a_time<J, F>(jobs: &[J], check: F) -> Vec<String>
+where
+    J: Sync,
+    F: Fn(&J) -> Vec<String> + Sync,
+{
+    let found = Mutex::new(Vec::new());
+    let next = AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..2 {
+            scope.spawn(|| loop {
+                let k = next.fetch_add(1, Ordering::SeqCst);
+                let Some(job) = jobs.get(k) else {
+                    break;
+                };
+                let wrong = check(job);
+                found.lock().expect("lock").extend(wrong);
+            });
+        }
+    });
+    found.into_inner().expect("lock")
+}
