@@ -1,6 +1,7 @@
 //! The entry of the stage: [`derive`], from a problem to the equations of one method.
 
-use super::system::{Derivation, Method, Request};
+use super::method::Method;
+use super::system::{Derivation, Request};
 use crate::mechanics::{MechanicsError, Model};
 use crate::problem::Problem;
 use crate::symbolic::budget;

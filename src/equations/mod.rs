@@ -14,6 +14,7 @@ mod energy;
 mod friction;
 mod kane;
 mod lagrange;
+mod method;
 mod motion_law;
 mod newton_euler;
 mod on_motion;
@@ -36,4 +37,5 @@ pub use lagrange::forces::{
     partial_velocities, role, virtual_work, Role,
 };
 pub use lagrange::kinetic::inertia_terms;
-pub use system::{Derivation, LinearSystem, Method, Request, Rows};
+pub use method::Method;
+pub use system::{Derivation, LinearSystem, Request, Rows};

@@ -2,7 +2,7 @@
 //! the constraint rows ([`Setup`]), and the rows a method hands back ([`MethodRows`]).
 
 use super::constraint_rows::constraint_equations;
-use super::system::Method;
+use super::method::Method;
 use crate::mechanics::{
     reaction_unknowns, DependentSpeeds, KeptForces, MechanicsError, Model, RowOrigin,
 };

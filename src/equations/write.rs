@@ -1,7 +1,8 @@
 //! Steps 3 and 5 for one method: the unknowns ([`Setup`]), the method's own rows from its
 //! module, then the rows checked against the unknowns and assembled into `A x = b`.
 
-use super::system::{Derivation, LinearSystem, Method, Request, Rows};
+use super::method::Method;
+use super::system::{Derivation, LinearSystem, Request, Rows};
 use super::unknowns::{kane_reaction_joints, Inputs, MethodRows, Setup};
 use crate::mechanics::Form;
 use crate::mechanics::{MechanicsError, Model};
