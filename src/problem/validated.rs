@@ -165,4 +165,20 @@ impl Problem {
     pub fn coordinate_expr(&self, index: usize, order: u8) -> Expr {
         Expr::sym(self.coordinate_symbol(index, order))
     }
+
+    /// Whether some motion is prescribed: a coordinate driven by a motion of time (not held at
+    /// a constant), or a position or velocity constraint written with `t`.
+    pub fn moves_with_time(&self) -> bool {
+        use crate::problem::ConstraintKind;
+        let time = crate::symbolic::Symbol::Time;
+        let driven =
+            (self.coordinates.iter()).any(|c| c.motion.as_ref().is_some_and(|m| m.contains(&time)));
+        let written = self.constraints.iter().any(|c| match &c.kind {
+            ConstraintKind::Position { expression } | ConstraintKind::Velocity { expression } => {
+                expression.contains(&time)
+            }
+            _ => false,
+        });
+        driven || written
+    }
 }

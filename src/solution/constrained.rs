@@ -186,22 +186,6 @@ fn point_velocity_tex(model: &Model, site: usize) -> String {
     )
 }
 
-/// Whether some motion is prescribed: a coordinate driven by a motion of time (not held at
-/// a constant), or a position or velocity constraint written with `t`.
-pub fn moves_with_time(problem: &crate::problem::Problem) -> bool {
-    use crate::problem::ConstraintKind;
-    let time = crate::symbolic::Symbol::Time;
-    let driven =
-        (problem.coordinates.iter()).any(|c| c.motion.as_ref().is_some_and(|m| m.contains(&time)));
-    let written = problem.constraints.iter().any(|c| match &c.kind {
-        ConstraintKind::Position { expression } | ConstraintKind::Velocity { expression } => {
-            expression.contains(&time)
-        }
-        _ => false,
-    });
-    driven || written
-}
-
 /// The dependent rates as a linear map of the independent ones at the (assembled) initial
 /// state, and Kane's equations with dependent speeds, which eliminate the constraint forces.
 pub fn dependent_speeds(
@@ -323,7 +307,7 @@ pub fn dependent_speeds(
                 })
                 .unwrap_or_default(),
         ),
-        time_terms: moves_with_time(problem),
+        time_terms: problem.moves_with_time(),
         ..DependentSpeeds::default()
     })
 }

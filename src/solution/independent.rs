@@ -269,7 +269,7 @@ pub fn dependent_speeds(
         kane_speeds_notes: MarkupLine::all(paragraphs),
         kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds, delta)),
         kane_kept_note: MarkupLine::from(String::new()),
-        time_terms: super::constrained::moves_with_time(problem),
+        time_terms: problem.moves_with_time(),
     }
 }
 
