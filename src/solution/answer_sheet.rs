@@ -3,6 +3,7 @@
 //! in full (the shortest text that reads back as the same f64), not rounded as a handout
 //! prints them.
 
+use super::answer_numbers::number;
 use crate::numeric::{answer_unit, holds, is_free_moment, Answer, Quantity, ReactionColumn};
 use crate::problem::{Problem, Question, QuestionKind};
 use crate::symbolic::ComponentKind;
@@ -24,11 +25,6 @@ fn kind_name(question: &Question) -> &'static str {
         QuestionKind::Stability { .. } => "stability",
         QuestionKind::Describe { .. } => "describe",
     }
-}
-
-/// `x` as JSON: a number, or `null` when not finite (never, for an answer).
-pub(super) fn number(x: f64) -> Value {
-    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
 }
 
 /// `x` in full precision: the shortest decimal that reads back as the same f64 (as JSON

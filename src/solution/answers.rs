@@ -2,6 +2,7 @@
 //! its units (the numbers come from [`crate::numeric::answers`]). The student's handout
 //! restates the questions and leaves the answers blank.
 
+use super::answer_numbers::{labels, number_tex, unit_tex};
 use crate::numeric::{coordinate_unit, Answer, Quantity, ReactionColumn};
 use crate::problem::{Dimension, Problem, Question, QuestionAt, QuestionKind, StateEntry};
 use crate::render::text::{MarkupLine, Math};
@@ -134,27 +135,6 @@ pub fn blank(problem: &Problem) -> Vec<AnswerView> {
         .collect();
     super::answer_leads::mark_repeated_states(&mut views);
     views
-}
-
-/// Each question's number in the Answers: the statement's item it answers, written on the
-/// first question of each item and left empty on the others of the same item. Without any
-/// `item`, the questions are numbered in order.
-pub fn labels(problem: &Problem) -> Vec<String> {
-    let numbered = problem.questions.iter().any(|q| q.item.is_some());
-    let mut previous = None;
-    let mut out = Vec::new();
-    for (i, q) in problem.questions.iter().enumerate() {
-        let item = match numbered {
-            true => q.item.or(previous).unwrap_or(1),
-            false => i as u32 + 1,
-        };
-        out.push(match previous == Some(item) {
-            true => String::new(),
-            false => item.to_string(),
-        });
-        previous = Some(item);
-    }
-    out
 }
 
 /// The state a question `about` a steady motion is asked at: the time, then every
@@ -336,25 +316,6 @@ fn switch_note(problem: &Problem, site: usize) -> String {
         "the instant the friction at {} first switches between sticking and slipping",
         problem.site_name(site)
     )
-}
-
-pub(super) fn number_tex(x: f64) -> String {
-    let text = fixed(x);
-    match text.split_once('e') {
-        Some((mantissa, exponent)) => format!(
-            "{mantissa} \\times 10^{{{}}}",
-            exponent.trim_start_matches('+')
-        ),
-        None => text,
-    }
-}
-
-/// A unit as written (`rad/s^2`, `N m`) in upright LaTeX, after a thin space.
-pub(super) fn unit_tex(unit: &str) -> String {
-    match crate::render::unit_tex(unit) {
-        tex if tex.is_empty() => tex,
-        tex => format!("\\ {tex}"),
-    }
 }
 
 fn value_tex(

@@ -131,7 +131,7 @@ pub fn value_steps(
     }
     let (k, a, b) = single_row(problem, worked.period_system.as_ref()?, &v)?;
     let found = answer.values.first()?.1;
-    let unit = super::answers::unit_tex(&coordinate_unit(problem, j, 2));
+    let unit = super::answer_numbers::unit_tex(&coordinate_unit(problem, j, 2));
     let (an, bn) = (eval(&a, &v), eval(&b, &v));
     let qk = problem.coordinate_expr(k, 2);
     let words = match worked.derivation.method {
@@ -153,8 +153,8 @@ pub fn value_steps(
     .unwrap_or_default();
     let numbers = format!(
         "\\frac{{{}}}{{{}}}",
-        super::answers::number_tex(bn),
-        super::answers::number_tex(an)
+        super::answer_numbers::number_tex(bn),
+        super::answer_numbers::number_tex(an)
     );
     if j == k {
         if !close(bn / an) {
@@ -165,7 +165,7 @@ pub fn value_steps(
             format!(
                 "{} = {quotient} = {numbers} = {}{unit}",
                 latex(&qk),
-                super::answers::number_tex(found)
+                super::answer_numbers::number_tex(found)
             ),
         ));
         return Some(steps);
@@ -199,7 +199,7 @@ pub fn value_steps(
             latex(&c),
             latex(&qk),
             latex(&c),
-            super::answers::number_tex(found)
+            super::answer_numbers::number_tex(found)
         ),
     ));
     Some(steps)

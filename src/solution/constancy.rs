@@ -58,7 +58,7 @@ fn pair(problem: &Problem, labels: &[String], i: usize) -> Option<usize> {
 /// Adds the yes or no to the later answer of each such pair.
 pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let problem = worked.derivation.model.problem;
-    let labels = super::answers::labels(problem);
+    let labels = super::answer_numbers::labels(problem);
     let measured = match &worked.simulation {
         Some(Ok((_, checks))) => (checks.iter())
             .find(|c| c.kind == CheckKind::EnergyConservation)

@@ -10,11 +10,11 @@ use crate::symbolic::latex;
 use serde_json::{Map, Value};
 
 fn number(x: f64) -> String {
-    super::answers::number_tex(x)
+    super::answer_numbers::number_tex(x)
 }
 
 fn unit(problem: &Problem, i: usize, order: u8) -> String {
-    super::answers::unit_tex(&coordinate_unit(problem, i, order))
+    super::answer_numbers::unit_tex(&coordinate_unit(problem, i, order))
 }
 
 /// The values and the place of a `describe` answer in its view, and the motion in words
@@ -109,7 +109,7 @@ fn sentence(problem: &Problem, (k, rates): (usize, &[usize]), found: &Descriptio
 }
 
 fn json_number(x: f64) -> Value {
-    super::answer_sheet::number(x)
+    super::answer_numbers::number(x)
 }
 
 /// The fields of a `describe` answer in `answer --format json`: `coordinate`, `unit`,

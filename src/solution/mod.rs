@@ -10,6 +10,7 @@
 
 mod aligned;
 mod answer_leads;
+mod answer_numbers;
 mod answer_sheet;
 mod answers;
 mod auxiliary;
@@ -74,11 +75,12 @@ mod tex;
 mod vector_answers;
 mod written_out;
 
+pub use answer_numbers::labels as answer_labels;
 pub use answer_sheet::{
     csv_cell, full as full_digits, json as answer_sheet_json, key_columns,
     text as answer_sheet_text,
 };
-pub use answers::{labels as answer_labels, section as answers_section};
+pub use answers::section as answers_section;
 pub use build::{setup, solution as worked};
 pub use derived::plan as plan_view;
 pub use eigen_plot::sweep_plot;

@@ -242,7 +242,7 @@ pub fn steady_steps(
     values: &Values,
 ) -> Option<Vec<AnswerStep>> {
     let (renaming, lhs, rhs, shown) = governing_identity(problem, k)?;
-    let labels = super::answers::labels(problem);
+    let labels = super::answer_numbers::labels(problem);
     let item = labels[..=shown]
         .iter()
         .rev()
@@ -300,7 +300,7 @@ pub fn steady_steps(
             ),
             format!(
                 "{name_tex} = {}\\ {unit}",
-                super::answers::number_tex(roots[which])
+                super::answer_numbers::number_tex(roots[which])
             ),
         )];
         steps.extend(other_rates(problem, &renaming, unknowns, i, answer));
@@ -324,9 +324,9 @@ pub fn steady_steps(
             format!(
                 "With {}, the sign ${sign}$ gives this one (the other gives ${name_tex} = {}\\ {unit}$):",
                 known_tex(problem, &renaming, &(&a * &(&b * &c)), &v, &name),
-                super::answers::number_tex(roots[1 - which])
+                super::answer_numbers::number_tex(roots[1 - which])
             ),
-            format!("{name_tex} = {}\\ {unit}", super::answers::number_tex(roots[which])),
+            format!("{name_tex} = {}\\ {unit}", super::answer_numbers::number_tex(roots[which])),
         ),
     ];
     steps.extend(other_rates(problem, &renaming, unknowns, i, answer));
@@ -355,7 +355,7 @@ fn other_rates(
                     "{} = {} = {}\\ {unit}",
                     latex(&Expr::sym(symbol)),
                     latex(e),
-                    super::answers::number_tex(answer.rates[u.coordinate])
+                    super::answer_numbers::number_tex(answer.rates[u.coordinate])
                 ),
             ));
         }
@@ -381,7 +381,7 @@ fn known_tex(
             parts.push(format!(
                 "${} = {}\\ {unit}$",
                 latex(&Expr::sym(s)),
-                super::answers::number_tex(x)
+                super::answer_numbers::number_tex(x)
             ));
         }
     }
@@ -393,8 +393,8 @@ fn known_tex(
         parts.push(format!(
             "${} = {}{}$",
             latex(&Expr::sym(s.clone())),
-            super::answers::number_tex(eval(&Expr::sym(s.clone()), v)),
-            super::answers::unit_tex(&unit)
+            super::answer_numbers::number_tex(eval(&Expr::sym(s.clone()), v)),
+            super::answer_numbers::unit_tex(&unit)
         ));
     }
     parts.join(", ")

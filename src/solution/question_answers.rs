@@ -24,7 +24,7 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
 
 /// Where a question `about` the steady motion of question `k` is asked, in words.
 pub fn about_note(problem: &Problem, k: usize) -> String {
-    let labels = super::answers::labels(problem);
+    let labels = super::answer_numbers::labels(problem);
     let item = labels[..=k].iter().rev().find(|l| !l.is_empty());
     match item {
         Some(item) => format!("the steady motion found in answer {item}"),

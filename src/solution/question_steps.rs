@@ -69,7 +69,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                         .unwrap_or_default();
                     // Each value derived in the steps is said there, not also above them.
                     let derived_all = (answer.values.iter()).all(|(_, x)| {
-                        let number = super::answers::number_tex(*x);
+                        let number = super::answer_numbers::number_tex(*x);
                         steps.iter().any(|s| s.math.as_str().contains(&number))
                     });
                     if !steps.is_empty() && derived_all {
@@ -148,7 +148,7 @@ fn zeroed(e: &Expr, zero: &[Symbol]) -> Expr {
 }
 
 fn number(x: f64) -> String {
-    super::answers::number_tex(x)
+    super::answer_numbers::number_tex(x)
 }
 
 /// The conditions read from a state: the second rates that vanish there (by the step-5
@@ -381,7 +381,7 @@ fn others_tex(problem: &Problem, answer: &Answer, e: &Expr, k: usize) -> String 
                 "${} = {}{}$",
                 latex(&problem.coordinate_expr(i, 0)),
                 number(answer.q[i]),
-                super::answers::unit_tex(&unit)
+                super::answer_numbers::unit_tex(&unit)
             )
         })
         .collect();

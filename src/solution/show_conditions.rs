@@ -114,8 +114,8 @@ pub fn check_sentence(problem: &Problem, index: usize, answer: &Answer) -> Strin
             format!(
                 "${} = {}{}$",
                 latex(&problem.coordinate_expr(i, order)),
-                super::answers::number_tex(x),
-                super::answers::unit_tex(&coordinate_unit(problem, i, order))
+                super::answer_numbers::number_tex(x),
+                super::answer_numbers::unit_tex(&coordinate_unit(problem, i, order))
             )
         })
         .collect();

@@ -50,7 +50,7 @@ pub fn values_tex(problem: &Problem, question: &Question, answer: &Answer) -> Ve
             };
             Math::from(format!(
                 "{symbol} = {}{unit} \\quad \\text{{(stable {stable} it; {unstable} it, {})}}",
-                super::answers::number_tex(edge.value),
+                super::answer_numbers::number_tex(edge.value),
                 growth(edge)
             ))
         })
@@ -95,7 +95,7 @@ pub fn record(
         .iter()
         .map(|e| {
             serde_json::json!({
-                "value": super::answer_sheet::number(e.value),
+                "value": super::answer_numbers::number(e.value),
                 "stable_above": e.stable_above,
                 "oscillates": e.oscillates,
             })

@@ -35,7 +35,7 @@ pub fn record(
     answer: &Answer,
     out: &mut Map<String, Value>,
 ) {
-    let number = super::answer_sheet::number;
+    let number = super::answer_numbers::number;
     match &question.kind {
         QuestionKind::Slips { site } => {
             out.insert("value".into(), slips(answer).into());

@@ -114,7 +114,7 @@ fn slips_at_start(
                 "v_{{\\mathrm{{slip}}}} = {} = {} = {}\\ \\mathrm{{m/s}} \\neq 0",
                 latex(&closed.slip.0),
                 latex(&at_start),
-                super::answers::number_tex(speed)
+                super::answer_numbers::number_tex(speed)
             ),
         ));
         views[i].steps.push(step(
@@ -168,8 +168,8 @@ fn constant_at_start(
                 "{} = {} = {}{}",
                 latex(&problem.coordinate_expr(k, 2)),
                 latex(&closed.accelerations[k]),
-                super::answers::number_tex(asked),
-                super::answers::unit_tex(&unit)
+                super::answer_numbers::number_tex(asked),
+                super::answer_numbers::unit_tex(&unit)
             ),
         ));
     }
@@ -339,7 +339,7 @@ fn steps_for(
     if !agrees(instant, answer.time) {
         return Vec::new();
     }
-    let number = super::answers::number_tex;
+    let number = super::answer_numbers::number_tex;
     let mut steps = Vec::new();
     if first {
         let moving: Vec<String> = (0..problem.coordinates.len())

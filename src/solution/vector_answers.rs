@@ -25,7 +25,7 @@ pub(super) fn record(
 ) {
     let mut components = Map::new();
     for (found, x) in &answer.values {
-        components.insert(axis_of(found).into(), super::answer_sheet::number(*x));
+        components.insert(axis_of(found).into(), super::answer_numbers::number(*x));
     }
     if let Some((found, _)) = answer.values.first() {
         out.insert("unit".into(), answer_unit(problem, question, found).into());
