@@ -17,7 +17,15 @@ use crate::symbolic::{fixed, latex, latex_name};
 pub fn solution(worked: &crate::Worked) -> Solution {
     let derivation = &worked.derivation;
     let problem = derivation.model.problem;
-    let mut solution = setup(problem, derivation.method);
+    let mut solution = crate::symbolic::with_style(style_of(problem), || {
+        // The letters a word-named body, point or joint is printed by, from step 1 on.
+        let shown = super::shown_names::shown_names(&derivation.model);
+        let mut solution = setup_styled(problem, derivation.method, &shown);
+        super::shown_names::name_in_step_one(&mut solution, &shown);
+        solution.shown_names = shown;
+        solution
+    })
+    .0;
     crate::symbolic::with_style(style_of(problem), || {
         super::derived::fill(&mut solution, worked);
         solution.impact = super::impact::section(worked);
@@ -25,12 +33,14 @@ pub fn solution(worked: &crate::Worked) -> Solution {
     solution
 }
 
-/// What the problem alone gives: title, statement and step 1 (also the student's handout).
+/// What the problem alone gives: title, statement and step 1 (also the student's handout,
+/// which names its bodies, points and joints by the problem's words).
 pub fn setup(problem: &Problem, method: Method) -> Solution {
-    crate::symbolic::with_style(style_of(problem), || setup_styled(problem, method)).0
+    crate::symbolic::with_style(style_of(problem), || setup_styled(problem, method, &[])).0
 }
 
-fn setup_styled(problem: &Problem, method: Method) -> Solution {
+/// Title, statement and step 1, a word-named joint called by its letter in `shown`.
+fn setup_styled(problem: &Problem, method: Method, shown: &[(String, String)]) -> Solution {
     Solution {
         title: problem.title.clone(),
         statement: problem.statement.clone().map(Markup::from),
@@ -42,7 +52,7 @@ fn setup_styled(problem: &Problem, method: Method) -> Solution {
         method: method.title().to_string(),
         student: false,
         frames: super::frames::frames(problem),
-        coordinates: coordinates(problem, &[]),
+        coordinates: coordinates(problem, shown),
         axes: axes(problem),
         constants: constants(problem),
         plan: Plan::default(),

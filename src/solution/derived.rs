@@ -22,13 +22,6 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     let problem = derivation.model.problem;
     let model = &derivation.model;
     solution.plan = plan(derivation);
-    let shown = super::shown_names::shown_names(model);
-    super::shown_names::name_in_step_one(solution, &shown);
-    for (given, coordinate) in problem.coordinates.iter().zip(&mut solution.coordinates) {
-        // A word-named joint by the letter the picture labels it with.
-        coordinate.joint = super::joint_words::joint_words(problem, given.joint, &shown);
-    }
-    solution.shown_names = shown;
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
     // s_1, c_12, listed once where they are first used.
     let style = coordinates_style(problem);

@@ -66,16 +66,19 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
         true => format!(" at {what} {name}"),
         false => String::new(),
     };
+    let rolling = match joint.kind {
+        JointKind::Planar | JointKind::Free => rolls_on(problem, joint.child),
+        _ => None,
+    };
+    if let Some((on, rough)) = rolling {
+        // A rough contact may slide as well as roll (the skidding ball).
+        let how = if rough { "rolls or slides" } else { "rolls" };
+        return format!("{child} {how} on {}", body_words(problem, on));
+    }
     match joint.kind {
         JointKind::Revolute => format!("{child} turns on {parent}{}", at("pin")),
         JointKind::Prismatic => format!("{child} slides on {parent}"),
         JointKind::Cylindrical => format!("{child} slides and turns on {parent}"),
-        JointKind::Planar | JointKind::Free if rolls_on(problem, joint.child).is_some() => {
-            let (on, rough) = rolls_on(problem, joint.child).unwrap_or((BodyId::GROUND, false));
-            // A rough contact may slide as well as roll (the skidding ball).
-            let how = if rough { "rolls or slides" } else { "rolls" };
-            format!("{child} {how} on {}", body_words(problem, on))
-        }
         JointKind::Planar if joint.parent == BodyId::GROUND => {
             format!("{child} moves in the plane")
         }
