@@ -166,8 +166,20 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
+/// One picture of a problem as the browser measured it: what the checks of a body read.
+struct Sheet<'a> {
+    problem: &'a Problem,
+    values: &'a Values,
+    planar: bool,
+    dir: &'a Path,
+    file: &'a str,
+    /// Pixels per metre.
+    scale: f64,
+    /// The picture, and its time in the motion, as a fault names it.
+    at: &'a str,
+}
+
 /// What the pictures of one problem get wrong.
-#[allow(clippy::too_many_lines)] // one check after another, each a few lines
 fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
     let problem: Problem = mbd_tutor::problem::load_file(problem_file).expect("a valid problem");
     let name = problem_file
@@ -180,27 +192,20 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
     let mut faults = Vec::new();
     for report in reports.as_array().expect("one report per picture") {
         let file = report["file"].as_str().unwrap_or("?").to_string();
-        let scale = scale_of(&projection(dir, &file));
         let at = match report["time"].as_f64() {
             Some(t) => format!("{name}/{file} at t = {t:.3} s"),
             None => format!("{name}/{file}"),
         };
-        for pair in report["overlaps"].as_array().into_iter().flatten() {
-            faults.push(format!("{at}: labels {pair} overlap"));
-        }
-        for pair in report["crossings"].as_array().into_iter().flatten() {
-            faults.push(format!("{at}: label and stroke {pair} cross"));
-        }
-        if planar && problem.gravity.is_some() {
-            for g in report["gravity"].as_array().into_iter().flatten() {
-                let g = numbers(g);
-                if !((g[2] - g[0]).abs() < 0.5 && g[3] > g[1]) {
-                    faults.push(format!(
-                        "{at}: the weight {g:?} does not point down the page"
-                    ));
-                }
-            }
-        }
+        let sheet = Sheet {
+            problem: &problem,
+            values: &values,
+            planar,
+            dir,
+            file: &file,
+            scale: scale_of(&projection(dir, &file)),
+            at: &at,
+        };
+        faults.extend(sheet.layout_faults(report));
         let bodies = report["bodies"].as_array().cloned().unwrap_or_default();
         if file == "configuration.svg" {
             for b in problem.body_ids() {
@@ -213,116 +218,150 @@ fn judge(problem_file: &Path, dir: &Path, reports: &Value) -> Vec<String> {
                 }
             }
         }
-        for g in &bodies {
-            let id = g["id"].as_str().unwrap_or("");
-            let Some(body_name) = id.strip_prefix("body-") else {
-                continue;
-            };
-            let Some(b) = problem
-                .body_ids()
-                .find(|b| problem.body_name(*b) == body_name)
-            else {
-                faults.push(format!("{at}: {id} names no body"));
-                continue;
-            };
-            // A rolling body: a circle (2D) or an ellipse whose long half-axis is the
-            // radius (3D: a parallel projection keeps the length of the disc's diameter
-            // that is parallel to the page).
-            let rolling = problem.constraints.iter().find_map(|c| match &c.kind {
-                ConstraintKind::Rolling { body, radius, .. } if *body == b => {
-                    Some(eval(radius, &values))
-                }
-                _ => None,
-            });
-            if let Some(radius) = rolling {
-                let want = radius * scale;
-                let drawn: Vec<f64> = if planar {
-                    g["circles"]
-                        .as_array()
-                        .into_iter()
-                        .flatten()
-                        .map(|c| numbers(c)[2])
-                        .collect()
-                } else {
-                    g["ellipses"]
-                        .as_array()
-                        .into_iter()
-                        .flatten()
-                        .chain(g["circles"].as_array().into_iter().flatten())
-                        .map(|e| {
-                            let e = numbers(e);
-                            e[2].max(*e.get(3).unwrap_or(&0.0))
-                        })
-                        .collect()
-                };
-                if g["shape"] != "disc" || !drawn.iter().any(|r| (r - want).abs() < 0.6) {
+        faults.extend(bodies.iter().filter_map(|g| sheet.body_fault(g)));
+    }
+    faults
+}
+
+impl Sheet<'_> {
+    /// Labels that overlap or cross a stroke, and (in 2D) a weight not down the page.
+    fn layout_faults(&self, report: &Value) -> Vec<String> {
+        let at = self.at;
+        let mut faults = Vec::new();
+        for pair in report["overlaps"].as_array().into_iter().flatten() {
+            faults.push(format!("{at}: labels {pair} overlap"));
+        }
+        for pair in report["crossings"].as_array().into_iter().flatten() {
+            faults.push(format!("{at}: label and stroke {pair} cross"));
+        }
+        if self.planar && self.problem.gravity.is_some() {
+            for g in report["gravity"].as_array().into_iter().flatten() {
+                let g = numbers(g);
+                if !((g[2] - g[0]).abs() < 0.5 && g[3] > g[1]) {
                     faults.push(format!(
-                        "{at}: {id} ({}) is no wheel of radius {want:.1}: {drawn:?}",
-                        g["shape"]
+                        "{at}: the weight {g:?} does not point down the page"
                     ));
                 }
-                continue;
             }
-            // A uniform rod on one joint: reaches 2d from the joint through its mass centre.
-            let body = problem.body(b);
-            let joints: Vec<usize> = problem
-                .joints
-                .iter()
-                .enumerate()
-                .filter(|(_, j)| j.child == b || j.parent == b)
-                .map(|(k, _)| k)
-                .collect();
-            let closed = problem
-                .closures
-                .iter()
-                .any(|j| j.child == b || j.parent == b);
-            if !planar || body.shape.is_some() || closed || joints.len() != 1 {
-                continue;
+        }
+        faults
+    }
+
+    /// What is wrong with the group `g` of a body: a wheel not of its radius, a uniform rod
+    /// on one joint that does not reach its far end.
+    fn body_fault(&self, g: &Value) -> Option<String> {
+        let problem = self.problem;
+        let id = g["id"].as_str().unwrap_or("");
+        let body_name = id.strip_prefix("body-")?;
+        let Some(b) = problem
+            .body_ids()
+            .find(|b| problem.body_name(*b) == body_name)
+        else {
+            return Some(format!("{}: {id} names no body", self.at));
+        };
+        let rolling = problem.constraints.iter().find_map(|c| match &c.kind {
+            ConstraintKind::Rolling { body, radius, .. } if *body == b => {
+                Some(eval(radius, self.values))
             }
-            let Inertia::Planar(izz) = &body.inertia else {
-                continue;
-            };
-            let (Some(pin), Some(cm)) = (
-                marker(
-                    dir,
-                    &file,
-                    &format!("joint-{}", problem.joints[joints[0]].name),
-                ),
-                marker(dir, &file, &format!("cm-{body_name}")),
-            ) else {
-                continue;
-            };
-            let d = distance(pin, cm) / scale;
-            let (m, i) = (eval(&body.mass, &values), eval(izz, &values));
-            if d <= 0.0 || (i - m * d * d / 3.0).abs() > 0.01 * m * d * d / 3.0 {
-                continue;
-            }
-            let far = [2.0 * cm[0] - pin[0], 2.0 * cm[1] - pin[1]];
-            let points: Vec<[f64; 2]> = g["points"]
+            _ => None,
+        });
+        match rolling {
+            Some(radius) => self.wheel_fault(g, id, radius),
+            None => self.rod_fault(g, id, b, body_name),
+        }
+    }
+
+    /// A rolling body: a circle (2D) or an ellipse whose long half-axis is the radius (3D: a
+    /// parallel projection keeps the length of the disc's diameter that is parallel to the
+    /// page).
+    fn wheel_fault(&self, g: &Value, id: &str, radius: f64) -> Option<String> {
+        let want = radius * self.scale;
+        let drawn: Vec<f64> = if self.planar {
+            g["circles"]
                 .as_array()
                 .into_iter()
                 .flatten()
-                .map(|p| {
-                    let p = numbers(p);
-                    [p[0], p[1]]
+                .map(|c| numbers(c)[2])
+                .collect()
+        } else {
+            g["ellipses"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .chain(g["circles"].as_array().into_iter().flatten())
+                .map(|e| {
+                    let e = numbers(e);
+                    e[2].max(*e.get(3).unwrap_or(&0.0))
                 })
-                .collect();
-            let nearest = points
-                .iter()
-                .map(|p| distance(*p, far))
-                .fold(f64::MAX, f64::min);
-            let beyond = points
-                .iter()
-                .any(|p| distance(*p, pin) > distance(far, pin) + 6.0);
-            if g["shape"] != "rod" || nearest > 4.0 || beyond {
-                faults.push(format!(
-                    "{at}: {id} ({}) does not reach its far end {far:?} (nearest {nearest:.1})",
-                    g["shape"]
-                ));
-            }
-        }
+                .collect()
+        };
+        (g["shape"] != "disc" || !drawn.iter().any(|r| (r - want).abs() < 0.6)).then(|| {
+            format!(
+                "{}: {id} ({}) is no wheel of radius {want:.1}: {drawn:?}",
+                self.at, g["shape"]
+            )
+        })
     }
-    faults
+
+    /// A uniform rod on one joint: reaches 2d from the joint through its mass centre.
+    fn rod_fault(
+        &self,
+        g: &Value,
+        id: &str,
+        b: mbd_tutor::problem::BodyId,
+        body_name: &str,
+    ) -> Option<String> {
+        let problem = self.problem;
+        let body = problem.body(b);
+        let joints: Vec<usize> = problem
+            .joints
+            .iter()
+            .enumerate()
+            .filter(|(_, j)| j.child == b || j.parent == b)
+            .map(|(k, _)| k)
+            .collect();
+        let closed = problem
+            .closures
+            .iter()
+            .any(|j| j.child == b || j.parent == b);
+        if !self.planar || body.shape.is_some() || closed || joints.len() != 1 {
+            return None;
+        }
+        let Inertia::Planar(izz) = &body.inertia else {
+            return None;
+        };
+        let joint = format!("joint-{}", problem.joints[joints[0]].name);
+        let pin = marker(self.dir, self.file, &joint)?;
+        let cm = marker(self.dir, self.file, &format!("cm-{body_name}"))?;
+        let d = distance(pin, cm) / self.scale;
+        let (m, i) = (eval(&body.mass, self.values), eval(izz, self.values));
+        if d <= 0.0 || (i - m * d * d / 3.0).abs() > 0.01 * m * d * d / 3.0 {
+            return None;
+        }
+        let far = [2.0 * cm[0] - pin[0], 2.0 * cm[1] - pin[1]];
+        let points: Vec<[f64; 2]> = g["points"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|p| {
+                let p = numbers(p);
+                [p[0], p[1]]
+            })
+            .collect();
+        let nearest = points
+            .iter()
+            .map(|p| distance(*p, far))
+            .fold(f64::MAX, f64::min);
+        let beyond = points
+            .iter()
+            .any(|p| distance(*p, pin) > distance(far, pin) + 6.0);
+        (g["shape"] != "rod" || nearest > 4.0 || beyond).then(|| {
+            format!(
+                "{}: {id} ({}) does not reach its far end {far:?} (nearest {nearest:.1})",
+                self.at, g["shape"]
+            )
+        })
+    }
 }
 
 #[test]
