@@ -23,6 +23,7 @@ mod handout_names;
 mod handout_pages;
 mod handout_sentences;
 mod handouts_in_browser;
+mod house_rules;
 mod impact;
 mod initial_state;
 mod invalid;
