@@ -165,7 +165,10 @@ pub fn answer_in(
     }
     // A `slips` question at rest that statics left (no equilibrium near it) is answered as
     // the motion starts, by the ratio that sticking needs there.
-    let slips = matches!(question.kind, QuestionKind::Slips { .. });
+    let slips = matches!(
+        question.kind,
+        QuestionKind::Slips { .. } | QuestionKind::Tips { .. }
+    );
     if question.kind.is_static() && !slips && !super::moving_slip::asked(problem, question) {
         return Err(failure(
             question,
@@ -232,9 +235,13 @@ pub fn answer_in(
             super::moving_slip::values(problem, system, *site, (t, &q[..], &rates[..]))
                 .map_err(|(message, hint)| failure(question, message, &hint))?
         }
+        // Left by statics (no equilibrium near): the normal force as the motion starts.
+        QuestionKind::Tips { site } => {
+            super::moving_slip::normal(problem, system, *site, (t, &q[..], &rates[..]))
+                .map_err(|(message, hint)| failure(question, message, &hint))?
+        }
         // Answered by statics, or over the constant's range, before this point.
-        QuestionKind::Tips { .. }
-        | QuestionKind::Impending { .. }
+        QuestionKind::Impending { .. }
         | QuestionKind::Stability { .. }
         | QuestionKind::Describe { .. } => Vec::new(),
         QuestionKind::Period { coordinate } => {
