@@ -137,6 +137,14 @@ fn failure(question: &Question, message: String, hint: &str) -> ProblemError {
     }
 }
 
+/// As [`failure`], naming the question's `key` (its site): `find.questions[2].slips`.
+fn site_failure(question: &Question, key: &str, message: String, hint: &str) -> ProblemError {
+    ProblemError {
+        path: format!("{}.{key}", question.path),
+        ..failure(question, message, hint)
+    }
+}
+
 /// Answers one question with what it may draw on (see [`Context`]).
 ///
 /// # Errors
@@ -233,12 +241,12 @@ pub fn answer_in(
         // In motion: whether the site slides there.
         QuestionKind::Slips { site } => {
             super::moving_slip::values(problem, system, *site, (t, &q[..], &rates[..]))
-                .map_err(|(message, hint)| failure(question, message, &hint))?
+                .map_err(|(message, hint)| site_failure(question, "slips", message, &hint))?
         }
         // Left by statics (no equilibrium near): the normal force as the motion starts.
         QuestionKind::Tips { site } => {
             super::moving_slip::normal(problem, system, *site, (t, &q[..], &rates[..]))
-                .map_err(|(message, hint)| failure(question, message, &hint))?
+                .map_err(|(message, hint)| site_failure(question, "tips", message, &hint))?
         }
         // Answered by statics, or over the constant's range, before this point.
         QuestionKind::Impending { .. }
