@@ -171,13 +171,9 @@ pub fn answer_in(
     if simulated {
         simulate_to(problem, system, question, t, (&mut q, &mut rates))?;
     }
-    // A `slips` question at rest that statics left (no equilibrium near it) is answered as
-    // the motion starts, by the ratio that sticking needs there.
-    let slips = matches!(
-        question.kind,
-        QuestionKind::Slips { .. } | QuestionKind::Tips { .. }
-    );
-    if question.kind.is_static() && !slips && !super::moving_slip::asked(problem, question) {
+    // A `slips` or `tips` question at rest that statics left (no equilibrium near it) is
+    // answered as the motion starts; an `impending` one only at rest.
+    if matches!(question.kind, QuestionKind::Impending { .. }) {
         return Err(failure(
             question,
             "a question of statics is answered at rest, with the friction sites sticking".into(),
