@@ -7,12 +7,19 @@
 //! floor, a rolling hoop struck and twisted, a crate pushed high (slip or tip) and an arm
 //! held at an angle. Every number is checked against a closed form or a
 //! derivation by hand written in the test (Lagrange's equations, worked with sympy for the
-//! universal joint), by every method.
+//! universal joint), by every method. Eleven more hold Version 4's questions: `in` frames,
+//! `show`, `period`, `slips`, `tips` (with no equilibrium near, and with a contact lost),
+//! `impending`, a held motor, a collision with friction, Lagrange's multipliers and
+//! `grade` (`version_four`, `at_rest_four`, `grading_four`).
 
+mod at_rest_four;
 mod errors;
+mod grading_four;
+mod handouts_four;
 mod motion;
 mod motion_3d;
 mod rest_and_impact;
+mod version_four;
 
 use crate::support::{method_json, METHODS};
 use serde_json::Value;

@@ -144,7 +144,10 @@ pub fn rendered(
     let settings = solution::Handout {
         every_rejected: args.verbose,
     };
-    let mut solution = if args.statics {
+    // A problem held still by its supports (every coordinate held, or solved from those
+    // held) has nothing in motion: its worked solution is the statics one.
+    let statics = args.statics || (args.linearize.is_none() && held_still(&problem));
+    let mut solution = if statics {
         // The stages run at the equilibrium; the handout is written from what they gave.
         let rest = crate::pipeline::rest(&problem, job.method)?;
         let at_rest = crate::pipeline::run_at_rest(&rest, job.method, student)?;
@@ -224,6 +227,16 @@ fn run_directory(args: &ExplainArgs) -> Result<(), Error> {
             total: problems.len(),
         }))
     }
+}
+
+/// Whether every coordinate of `problem` is held by a support or solved from the held
+/// ones (`dependent`), at least one held and no impact: a problem of statics, whatever the
+/// method.
+fn held_still(problem: &crate::problem::Problem) -> bool {
+    let coordinates = &problem.coordinates;
+    problem.impact.is_none()
+        && coordinates.iter().any(|c| c.held)
+        && coordinates.iter().all(|c| c.held || c.dependent)
 }
 
 /// The name of the file `path` without its extension (`solution` when it has none): the

@@ -221,7 +221,11 @@ fn yes_or_no(
         // the normal force would have to pull.
         QuestionKind::Tips { .. } => deciding < 0.0,
         // In motion, a contact point that slides slips (friction is then μ|N|).
-        _ => crate::numeric::slip_speed(&answer.values).is_some_and(|s| s > 0.0) || deciding > 1.0,
+        _ => {
+            crate::numeric::slip_speed(&answer.values).is_some_and(|s| s > 0.0)
+                || deciding > 1.0
+                || crate::numeric::contact_lost(&answer.values)
+        }
     };
     let word = |b: bool| if b { "yes" } else { "no" };
     Ok((given != expected)

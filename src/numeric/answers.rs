@@ -137,6 +137,14 @@ fn failure(question: &Question, message: String, hint: &str) -> ProblemError {
     }
 }
 
+/// As [`failure`], naming the question's `key` (its site): `find.questions[2].slips`.
+fn site_failure(question: &Question, key: &str, message: String, hint: &str) -> ProblemError {
+    ProblemError {
+        path: format!("{}.{key}", question.path),
+        ..failure(question, message, hint)
+    }
+}
+
 /// Answers one question with what it may draw on (see [`Context`]).
 ///
 /// # Errors
@@ -163,10 +171,9 @@ pub fn answer_in(
     if simulated {
         simulate_to(problem, system, question, t, (&mut q, &mut rates))?;
     }
-    // A `slips` question at rest that statics left (no equilibrium near it) is answered as
-    // the motion starts, by the ratio that sticking needs there.
-    let slips = matches!(question.kind, QuestionKind::Slips { .. });
-    if question.kind.is_static() && !slips && !super::moving_slip::asked(problem, question) {
+    // A `slips` or `tips` question at rest that statics left (no equilibrium near it) is
+    // answered as the motion starts; an `impending` one only at rest.
+    if matches!(question.kind, QuestionKind::Impending { .. }) {
         return Err(failure(
             question,
             "a question of statics is answered at rest, with the friction sites sticking".into(),
@@ -230,11 +237,15 @@ pub fn answer_in(
         // In motion: whether the site slides there.
         QuestionKind::Slips { site } => {
             super::moving_slip::values(problem, system, *site, (t, &q[..], &rates[..]))
-                .map_err(|(message, hint)| failure(question, message, &hint))?
+                .map_err(|(message, hint)| site_failure(question, "slips", message, &hint))?
+        }
+        // Left by statics (no equilibrium near): the normal force as the motion starts.
+        QuestionKind::Tips { site } => {
+            super::moving_slip::normal(problem, system, *site, (t, &q[..], &rates[..]))
+                .map_err(|(message, hint)| site_failure(question, "tips", message, &hint))?
         }
         // Answered by statics, or over the constant's range, before this point.
-        QuestionKind::Tips { .. }
-        | QuestionKind::Impending { .. }
+        QuestionKind::Impending { .. }
         | QuestionKind::Stability { .. }
         | QuestionKind::Describe { .. } => Vec::new(),
         QuestionKind::Period { coordinate } => {

@@ -56,7 +56,7 @@ pub use linearize::hqr::eigenvalues;
 pub use linearize::jacobian::input_values;
 pub use linearize::modes::{is_stable, sort as sort_modes, Shape, ROUND_OFF};
 pub use linearize::{jacobian_of, Jacobian, Linearization, ModalAnalysis};
-pub use moving_slip::{asked, slip_speed};
+pub use moving_slip::{asked, contact_lost, one_sided, slip_speed};
 pub use newton::{solve as newton_solve, NewtonFailure};
 pub use recursive::is_faster;
 pub use reduce::Reducer;

@@ -14,6 +14,9 @@ pub const SLIP: &str = "slip";
 /// The name of the ratio |F|/(μ|N|) among a `slips` answer's values.
 pub const RATIO: &str = "ratio";
 
+/// The name of the normal force among a `slips` or `tips` answer's values.
+pub const NORMAL: &str = "normal";
+
 /// A slip speed below this (m/s) is no slip.
 const STILL: f64 = 1e-9;
 
@@ -73,10 +76,59 @@ pub fn values(
         (false, false) => f64::INFINITY,
     };
     let slip = if slip > STILL { slip } else { 0.0 };
-    Ok(vec![
+    let mut found = vec![
         (Quantity::Named(RATIO.into()), ratio),
         (Quantity::Named(SLIP.into()), slip),
-    ])
+    ];
+    if one_sided(problem, site) {
+        found.push((Quantity::Named(NORMAL.into()), state.normal));
+    }
+    Ok(found)
+}
+
+/// Whether the site `site` of `problem` can only push (a `contact` or a `rolling` disc on
+/// its plane), so that a normal force that would have to pull loses the contact; a
+/// slider's guide or a gear's teeth take either sense.
+pub fn one_sided(problem: &Problem, site: usize) -> bool {
+    use crate::problem::ConstraintKind::{Contact, Rolling};
+    let first = problem.joints.len() + problem.closures.len();
+    (site
+        .checked_sub(first)
+        .and_then(|k| problem.constraints.get(k)))
+    .is_some_and(|c| matches!(c.kind, Contact { .. } | Rolling { .. }))
+}
+
+/// The normal force of the rough contact `site` of `problem` as the motion starts from
+/// the state: the value of a `tips` answer where no equilibrium is near (a body let go
+/// out of balance), negative where the contact would have to pull.
+///
+/// # Errors
+/// A site without friction, or a state where the equations cannot be solved; in words.
+pub fn normal(
+    problem: &Problem,
+    system: &dyn System,
+    site: usize,
+    (t, q, rates): (f64, &[f64], &[f64]),
+) -> Result<Vec<(Quantity, f64)>, (String, String)> {
+    let name = problem.site_name(site);
+    let (states, _) = system
+        .friction_at(t, q, rates, None)
+        .map_err(|e| (format!("cannot answer: {e}"), "ask at another state".into()))?;
+    let Some(state) = states.iter().find(|s| s.name == name) else {
+        return Err((
+            format!("`{name}` has no friction, so whether it tips cannot be asked"),
+            "give the contact a `friction` coefficient".into(),
+        ));
+    };
+    Ok(vec![(Quantity::Named(NORMAL.into()), state.normal)])
+}
+
+/// Whether a `slips` answer's values hold a normal force that would have to pull: the
+/// contact is lost, and no friction can hold the body on it.
+pub fn contact_lost(values: &[(Quantity, f64)]) -> bool {
+    values
+        .iter()
+        .any(|(q, x)| matches!(q, Quantity::Named(n) if n == NORMAL) && *x < 0.0)
 }
 
 /// The slip speed of a moving `slips` answer's values, `None` for one answered at rest.

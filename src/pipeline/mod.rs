@@ -156,7 +156,7 @@ pub fn answers_from(
                 match statics_answers::answer(&statics, &in_rates, question) {
                     Ok(found) => given[i] = Some(found),
                     // No equilibrium near a state at rest (a hoop let go on a slope): whether
-                    // a rough site slips is decided as it starts to move, below.
+                    // a rough site slips or tips is decided as it starts to move, below.
                     Err(_) if rough_slips(&statics, &in_rates, question) => {}
                     Err(e) => return Err(e),
                 }
@@ -193,14 +193,15 @@ pub fn answers_from(
         .map_err(|e| Error::Problem(crate::problem::ProblemErrors(vec![e])))
 }
 
-/// Whether `question` asks `slips` of a site with friction.
+/// Whether `question` asks `slips` or `tips` of a site with friction.
 fn rough_slips(
     statics: &statics::Statics,
     problem: &Problem,
     question: &crate::problem::Question,
 ) -> bool {
+    use crate::problem::QuestionKind::{Slips, Tips};
     match question.kind {
-        crate::problem::QuestionKind::Slips { site } => {
+        Slips { site } | Tips { site } => {
             let name = problem.site_name(site);
             statics.friction_sites().iter().any(|s| s == name)
         }

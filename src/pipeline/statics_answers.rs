@@ -90,16 +90,28 @@ pub fn ratio(site: &SiteState) -> f64 {
 /// A site without friction, no equilibrium near the question's state, or no value of the
 /// constant found; each names the question's path.
 pub fn answer(statics: &Statics, problem: &Problem, question: &Question) -> Result<Answer, Error> {
-    let (value, q, rates) = match &question.kind {
+    let (values, q, rates) = match &question.kind {
+        // A contact's normal force too: one that would have to pull says it is lost.
         QuestionKind::Slips { site } => {
             let (state, q, rates) = site_at_rest(statics, problem, question, *site, "slips")?;
-            ((Quantity::Named(RATIO.into()), ratio(&state)), q, rates)
+            let mut values = vec![(Quantity::Named(RATIO.into()), ratio(&state))];
+            if crate::numeric::one_sided(problem, *site) {
+                values.push((Quantity::Named(NORMAL.into()), state.normal));
+            }
+            (values, q, rates)
         }
         QuestionKind::Tips { site } => {
             let (state, q, rates) = site_at_rest(statics, problem, question, *site, "tips")?;
-            ((Quantity::Named(NORMAL.into()), state.normal), q, rates)
+            (
+                vec![(Quantity::Named(NORMAL.into()), state.normal)],
+                q,
+                rates,
+            )
         }
-        QuestionKind::Impending { .. } => impending(statics, problem, question)?,
+        QuestionKind::Impending { .. } => {
+            let (value, q, rates) = impending(statics, problem, question)?;
+            (vec![value], q, rates)
+        }
         _ => {
             return Err(failure(
                 question,
@@ -109,7 +121,7 @@ pub fn answer(statics: &Statics, problem: &Problem, question: &Question) -> Resu
             ))
         }
     };
-    Ok(Answer::at_state(vec![value], 0.0, (q, rates)))
+    Ok(Answer::at_state(values, 0.0, (q, rates)))
 }
 
 type Found = ((Quantity, f64), Vec<f64>, Vec<f64>);

@@ -86,6 +86,10 @@ fn record(problem: &Problem, index: usize, question: &Question, answer: &Answer)
                     (false, axis) => components.insert(axis.into(), number(x)),
                 };
             }
+            // In the plane the force's z is 0, given so that every reaction has x, y, z.
+            for axis in ["x", "y", "z"] {
+                components.entry(axis).or_insert_with(|| number(0.0));
+            }
             out.insert("unit".into(), "N".into());
             if !moment.is_empty() {
                 components.insert("moment".into(), Value::Object(moment));
@@ -208,6 +212,9 @@ pub fn text(problem: &Problem, answers: &[Answer]) -> String {
         for (found, x) in reported(question, answer) {
             let unit = answer_unit(problem, question, found);
             let _ = writeln!(out, "    {found} = {} {unit}", full(x));
+        }
+        if let Some(verdict) = super::static_answers::verdict_words(question, answer) {
+            let _ = writeln!(out, "    {verdict}");
         }
     }
     out

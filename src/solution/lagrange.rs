@@ -157,6 +157,10 @@ pub fn row_text(
     }
     let model = &derivation.model;
     let Some(r) = coordinate_of(model, row) else {
+        // A constraint row (no slip, a closure) is written as every method writes it.
+        if !matches!(row.sum, Sum::Generalized { .. }) {
+            return None;
+        }
         return Some(RowText {
             label_tex: relaxed_tex(row),
             // Step 3 says once what a relaxed joint is; each row names only its component.

@@ -13,9 +13,22 @@ fn value(answer: &Answer) -> f64 {
 }
 
 /// Whether a `slips` answer slips: in motion, a slip speed that is not zero; else (and
-/// at rest) |F| > μ|N|.
+/// at rest) |F| > μ|N|, or a normal force that would have to pull (the contact is lost,
+/// and friction cannot hold it).
 pub fn slips(answer: &Answer) -> bool {
-    slip_speed(answer).is_some_and(|s| s > 0.0) || value(answer) > 1.0
+    slip_speed(answer).is_some_and(|s| s > 0.0) || value(answer) > 1.0 || lost(answer)
+}
+
+/// Whether a `slips` answer's contact is lost: its normal force would have to pull.
+pub fn lost(answer: &Answer) -> bool {
+    crate::numeric::contact_lost(&answer.values)
+}
+
+/// A `slips` answer's normal force, where it has one.
+fn normal(answer: &Answer) -> Option<f64> {
+    (answer.values.iter())
+        .find(|(q, _)| q.to_string() == "normal")
+        .map(|(_, x)| *x)
 }
 
 /// The slip speed of a `slips` answer asked in motion; `None` at rest.
@@ -26,6 +39,24 @@ pub fn slip_speed(answer: &Answer) -> Option<f64> {
 /// Whether a `tips` answer tips: the normal force would have to pull.
 pub fn tips(answer: &Answer) -> bool {
     value(answer) < 0.0
+}
+
+/// The yes or no of a `slips` or `tips` answer and what decides it, in words, for
+/// `answer`'s text; `None` for any other question.
+pub fn verdict_words(question: &Question, answer: &Answer) -> Option<&'static str> {
+    Some(match &question.kind {
+        QuestionKind::Slips { .. } if lost(answer) => {
+            "yes: the normal force would have to pull, so the contact is lost and no friction can hold it"
+        }
+        QuestionKind::Slips { .. } if slip_speed(answer).is_some_and(|s| s > 0.0) => {
+            "yes: the contact point slides, and friction is mu |N| against the slip"
+        }
+        QuestionKind::Slips { .. } if slips(answer) => "yes: holding it needs |F| > mu |N|",
+        QuestionKind::Slips { .. } => "no: friction can hold it, |F| <= mu |N|",
+        QuestionKind::Tips { .. } if tips(answer) => "yes: the contact would have to pull, N < 0",
+        QuestionKind::Tips { .. } => "no: the contact pushes, N >= 0",
+        _ => return None,
+    })
 }
 
 /// `answer --format json`'s fields of a statics answer, added to `out`.
@@ -42,6 +73,10 @@ pub fn record(
             out.insert("ratio".into(), number(value(answer)));
             if let Some(speed) = slip_speed(answer) {
                 out.insert("slip_speed".into(), number(speed));
+            }
+            if let Some(n) = normal(answer) {
+                out.insert("normal".into(), number(n));
+                out.insert("contact_lost".into(), lost(answer).into());
             }
             out.insert("site".into(), problem.site_name(*site).into());
         }
@@ -117,6 +152,10 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
         }
     };
     match &question.kind {
+        QuestionKind::Slips { .. } if lost(answer) => format!(
+            "N = {}\\ \\mathrm{{N}} < 0",
+            number(normal(answer).unwrap_or(f64::NAN))
+        ),
         QuestionKind::Slips { .. } if slip_speed(answer).is_some_and(|s| s > 0.0) => format!(
             "v_{{\\mathrm{{slip}}}} = {}\\ \\mathrm{{m/s}} \\neq 0",
             number(slip_speed(answer).unwrap_or(0.0))
@@ -148,6 +187,10 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
 pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> String {
     let site = |i: usize| problem.site_name(i).replace('_', "\\_");
     match &question.kind {
+        QuestionKind::Slips { site: i } if lost(answer) => format!(
+            "\\text{{the contact at {} would have to pull: contact is lost, and no friction can hold it}}",
+            site(*i)
+        ),
         QuestionKind::Slips { site: i } if slip_speed(answer).is_some() => {
             moving_verdict(&site(*i), answer)
         }

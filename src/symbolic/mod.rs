@@ -26,6 +26,7 @@ mod named;
 mod natural;
 mod number;
 mod parse;
+mod perfect_square;
 mod print;
 mod relation;
 mod roots;

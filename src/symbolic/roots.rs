@@ -53,7 +53,8 @@ fn walk(e: &Expr, sign_of: &dyn Fn(&Expr) -> f64, memo: &mut HashMap<*const Node
         return done.clone();
     }
     let root = |base: &Expr, k: i64| -> Option<Expr> {
-        let m = square_root_of_square(base)?;
+        let m = square_root_of_square(base)
+            .or_else(|| super::perfect_square::square_root_of_sum(base))?;
         let sign = sign_of(&m);
         (sign != 0.0 && sign.is_finite()).then(|| {
             let signed = if sign < 0.0 { &m * &Expr::int(-1) } else { m };

@@ -7,7 +7,7 @@ use serde_json::{json, Value};
 use std::path::PathBuf;
 
 /// A scratch copy of a fixture, changed by `edit`, written under the system's temp folder.
-fn scratch(name: &str, tag: &str, edit: impl FnOnce(&mut Value)) -> PathBuf {
+pub(super) fn scratch(name: &str, tag: &str, edit: impl FnOnce(&mut Value)) -> PathBuf {
     let text = std::fs::read_to_string(fixture(name)).expect("fixture");
     let mut problem: Value = serde_json::from_str(&text).expect("JSON");
     edit(&mut problem);
@@ -19,7 +19,7 @@ fn scratch(name: &str, tag: &str, edit: impl FnOnce(&mut Value)) -> PathBuf {
 }
 
 /// Runs `COMMAND PATH ARGS…`, asserts exit status 1 and returns standard error.
-fn refused(command: &str, path: &PathBuf, args: &[&str]) -> String {
+pub(super) fn refused(command: &str, path: &PathBuf, args: &[&str]) -> String {
     let mut all = vec![std::ffi::OsStr::new(command), path.as_os_str()];
     all.extend(args.iter().map(std::ffi::OsStr::new));
     let out = run(&all);
@@ -34,7 +34,7 @@ fn refused(command: &str, path: &PathBuf, args: &[&str]) -> String {
 }
 
 #[track_caller]
-fn names(err: &str, path: &str) {
+pub(super) fn names(err: &str, path: &str) {
     assert!(err.contains(path), "the error names `{path}`:\n{err}");
     assert!(err.contains("hint"), "the error gives a hint:\n{err}");
 }
