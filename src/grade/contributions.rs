@@ -3,6 +3,7 @@
 //! of B, the inertia torque of B.
 
 use super::reference::Reference;
+use crate::equations::Method;
 use crate::mechanics::{Model, Vector};
 use crate::plan::{action_terms, inertia_terms, Action, Equation, Inertia, Source, Sum};
 use crate::problem::BodyId;
@@ -68,7 +69,8 @@ pub(super) fn rows(reference: &Reference) -> Vec<Row> {
         .iter()
         .chain(reference.newton_euler.iter().flat_map(|d| d.rows.iter()));
     for equation in theirs {
-        push(of_equation(model, actions, inertia, equation), &mut out);
+        let row = of_equation(model, actions, inertia, equation, derivation.method);
+        push(row, &mut out);
     }
     for row in subtree_rows(model, actions, inertia) {
         push(row, &mut out);
@@ -76,7 +78,13 @@ pub(super) fn rows(reference: &Reference) -> Vec<Row> {
     out
 }
 
-fn of_equation(model: &Model, actions: &[Action], inertia: &Inertia, eq: &Equation) -> Row {
+fn of_equation(
+    model: &Model,
+    actions: &[Action],
+    inertia: &Inertia,
+    eq: &Equation,
+    method: Method,
+) -> Row {
     let free_body = eq.free_body.clone();
     let (label, about) = match (&eq.sum, &eq.direction) {
         (Sum::Moment { point, position }, Some(d)) => (
@@ -95,7 +103,7 @@ fn of_equation(model: &Model, actions: &[Action], inertia: &Inertia, eq: &Equati
             ),
             None,
         ),
-        (Sum::Generalized { speed }, _) => (format!("Kane's equation for {speed}"), None),
+        (Sum::Generalized { speed }, _) => (generalized_row_name(method, speed), None),
         (Sum::Constraint { name }, _) => (format!("the constraint row {name}"), None),
         _ => ("a row of the worked solution".into(), None),
     };
@@ -120,6 +128,18 @@ fn of_equation(model: &Model, actions: &[Action], inertia: &Inertia, eq: &Equati
 
 /// The sums of moments about each joint, and of forces, of the bodies outboard of it,
 /// along each axis of N the problem moves in.
+/// A generalized row as the course names it: Kane's equation belongs to a speed, Lagrange's
+/// to the coordinate whose rate it is.
+fn generalized_row_name(method: Method, speed: &str) -> String {
+    match method {
+        Method::Lagrange => {
+            let coordinate = speed.strip_suffix('\'').unwrap_or(speed);
+            format!("Lagrange's equation for {coordinate}")
+        }
+        _ => format!("Kane's equation for {speed}"),
+    }
+}
+
 fn subtree_rows(model: &Model, actions: &[Action], inertia: &Inertia) -> Vec<Row> {
     let planar = model.is_planar();
     let axes: &[usize] = if planar { &[2] } else { &[0, 1, 2] };
