@@ -331,3 +331,48 @@ fn the_kinetic_terms_for_the_numbers_are_those_of_differentiating_t() {
         }
     }
 }
+
+/// The spherical chain's derivatives of `T` are too long to write out, so the worked
+/// solution names them and writes its rows from the accelerations of step 4. Those rows,
+/// solved, must give the q'' of Kane's method and of Lagrange's own rows for the numbers
+/// at states near the initial one.
+#[test]
+fn the_spherical_chains_worked_rows_give_the_other_methods_accelerations() {
+    let path = std::path::Path::new("problems/validation/spherical-chain-3.json");
+    let problem = load_file(path).unwrap_or_else(|e| panic!("{e}"));
+    let handout = derive(&problem, Method::Lagrange, Purpose::Handout).expect("derives");
+    assert!(
+        !handout.lagrange_terms.is_empty() && handout.lagrange_terms.iter().all(|t| !t.written),
+        "the derivatives of T were formed"
+    );
+    let worked = Compiled::new(&handout);
+    for method in [Method::Kane, Method::Lagrange] {
+        let other = Compiled::new(&derive(&problem, method, Purpose::Rows).expect("derives"));
+        let mut random = Lcg(11);
+        for _ in 0..4 {
+            let q: Vec<f64> = problem
+                .coordinates
+                .iter()
+                .map(|c| c.initial + 0.3 * random.next())
+                .collect();
+            let rates: Vec<f64> = problem
+                .coordinates
+                .iter()
+                .map(|c| c.rate + random.next())
+                .collect();
+            let got = worked.solve(0.0, &q, &rates).expect("solves");
+            let want = other.solve(0.0, &q, &rates).expect("solves");
+            let scale = want
+                .accelerations
+                .iter()
+                .fold(1.0f64, |s, x| s.max(x.abs()));
+            for (x, y) in got.accelerations.iter().zip(&want.accelerations) {
+                assert!(
+                    (x - y).abs() <= 1e-9 * scale,
+                    "{x} by the worked rows, {y} by {}",
+                    method.name()
+                );
+            }
+        }
+    }
+}

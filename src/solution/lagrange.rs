@@ -169,6 +169,7 @@ pub fn row_text(
             note: "At zero auxiliary coordinate and rate:".into(),
         });
     };
+    let written = derivation.lagrange_terms.get(r).is_none_or(|t| t.written);
     let (momentum, momentum_rate, kinetic_partial, potential_partial, q_r, multipliers) =
         match derivation.lagrange_terms.get(r) {
             // The derivation's own, formed once.
@@ -206,21 +207,29 @@ pub fn row_text(
             format!("{definition} = {value}")
         }
     };
+    // Derivatives of T too long to write out were not formed: named only.
+    let kinetic = |definition: String, value: &Expr| {
+        if written {
+            fits(definition, tex(value))
+        } else {
+            definition
+        }
+    };
     let partial_l_rate = format!("\\frac{{\\partial L}}{{\\partial {rate}}}");
     let mut lines = vec![
-        fits(
+        kinetic(
             format!("{partial_l_rate} = \\frac{{\\partial T}}{{\\partial {rate}}}"),
-            tex(&momentum),
+            &momentum,
         ),
-        fits(
+        kinetic(
             format!("\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}} {partial_l_rate}"),
-            tex(&momentum_rate),
+            &momentum_rate,
         ),
-        fits(
+        kinetic(
             format!(
                 "\\frac{{\\partial L}}{{\\partial {q}}} = \\frac{{\\partial T}}{{\\partial {q}}} - \\frac{{\\partial V}}{{\\partial {q}}}"
             ),
-            tex(&(&kinetic_partial - &potential_partial)),
+            &(&kinetic_partial - &potential_partial),
         ),
         fits(format!("Q_{{{}}}", r + 1), tex(&q_r)),
     ];

@@ -5,7 +5,8 @@
 
 1. `explain` against `solve` of the Whipple bicycle, the ten-link chain, all-joints-3d and
    the rolling coin, by Kane and the Motion Law: the fastest of N runs (default 3) of
-   each, and explain <= max(3 x solve, 0.3 s).
+   each, and explain <= max(3 x solve, 0.3 s). Then Lagrange's handout of the spherical
+   chain of 3 against its solve, explain <= max(3 x solve, 0.5 s).
 2. Every bundled handout (problems/*.json and problems/validation/*.json, the four
    methods, worked and student) once, against 0.5 s; one still running after --limit
    seconds (default 60) is stopped and counted over.
@@ -27,6 +28,7 @@ from handout_timing import METHODS, PROBLEMS, ROOT, every_handout, fastest, heav
 
 HANDOUT_LIMIT = 0.5
 GRADE_LIMIT = 10.0
+LAGRANGE_CHAIN_LIMIT = 0.5
 
 
 def verdict(ok):
@@ -53,6 +55,20 @@ def explain_against_solve(binary, runs):
                   f"{explain[1] / bound:.2f} | {verdict(ok)} |")
     total = len(PROBLEMS) * len(METHODS)
     return f"explain <= max(3 x solve, 0.3 s): {within} of {total}", within == total
+
+
+def lagrange_chain(binary, runs):
+    """Section 1b: Lagrange's handout of the spherical chain of 3 against its solve."""
+    chain = "problems/validation/spherical-chain-3.json"
+    solve = fastest([binary, "solve", chain, "--method", "lagrange"], runs)
+    explain = fastest([binary, "explain", chain, "--method", "lagrange"], runs)
+    bound = max(3 * solve[1], LAGRANGE_CHAIN_LIMIT)
+    ok = explain[1] <= bound
+    print(f"\n1b. Lagrange's spherical chain of 3, fastest of {runs} runs, CPU s (wall s): "
+          f"solve {solve[1]:.3f} ({solve[0]:.3f}), explain {explain[1]:.3f} "
+          f"({explain[0]:.3f}), bound {bound:.3f}: {verdict(ok)}")
+    return (f"Lagrange's spherical chain of 3 explain <= max(3 x solve, "
+            f"{LAGRANGE_CHAIN_LIMIT} s): {explain[1]:.3f} s", ok)
 
 
 def every_handout(binary, limit):
@@ -99,7 +115,7 @@ def main():
         limit = float(argv.pop(argv.index("--limit") + 1))
     names = [a for a in argv if not a.startswith("--")]
     binary = os.path.abspath(names[0]) if names else os.path.join(ROOT, "target/release/mbd-tutor")
-    results = [explain_against_solve(binary, runs)]
+    results = [explain_against_solve(binary, runs), lagrange_chain(binary, runs)]
     if "--skip-all" not in argv:
         results.append(every_handout(binary, limit))
     results.append(variants_against_explains(binary, runs))

@@ -131,6 +131,28 @@ pub fn second_rates_as_speeds<'a>(model: &'a Model<'a>) -> Option<impl Fn(&Expr)
     })
 }
 
+/// `∂T/∂q̇_r` of `bodies` for coordinate `r`, as formed (not simplified).
+///
+/// # Errors
+/// When a velocity holds a function without a derivative.
+pub fn raw_momentum(
+    model: &Model,
+    bodies: &[BodyMotion],
+    r: usize,
+) -> Result<Expr, MechanicsError> {
+    let rate = model.problem.coordinate_symbol(r, 1);
+    let terms: Result<Vec<Expr>, DiffError> =
+        bodies.iter().map(|b| b.partial_rate(&rate)).collect();
+    terms.map(add).map_err(|e| MechanicsError {
+        path: "bodies".into(),
+        message: e.to_string(),
+        hint: Some(
+            "Lagrange's equations differentiate the energies: use functions that have a derivative"
+                .into(),
+        ),
+    })
+}
+
 /// The derivatives of `T` and `V` for one coordinate.
 pub struct EnergyTerms {
     /// ∂T/∂q̇_r.

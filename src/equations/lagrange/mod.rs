@@ -18,6 +18,7 @@
 pub(super) mod energy;
 pub(super) mod forces;
 pub(super) mod kinetic;
+pub(super) mod long;
 
 use super::unknowns::{Inputs, MethodRows, Setup};
 use crate::mechanics::{same_at, sample_states, Form, MechanicsError, Model};
@@ -39,6 +40,9 @@ pub struct CoordinateTerms {
     pub generalized_force: Expr,
     /// The constraint forces' share: `Σ_k λ_k ∂f_k/∂q_r` and the nonholonomic rows' terms.
     pub multipliers: Expr,
+    /// Whether ∂T/∂q̇_r, its time derivative and ∂T/∂q_r were formed to be written out;
+    /// when not (too long, see [`long`]), they are zero here and step 5 names them only.
+    pub written: bool,
 }
 
 /// Every coordinate's terms, in coordinate order, with the coordinates' rates (with declared
@@ -63,6 +67,7 @@ pub fn coordinate_terms(
             potential_partial: e.potential_partial,
             generalized_force,
             multipliers,
+            written: true,
         })
         .collect())
 }
@@ -91,6 +96,10 @@ pub fn equations(
     let mut terms = Vec::new();
     let all_groups = if kinetic::applies(model, inertia) {
         kinetic::numeric_groups(model, actions, inertia)?
+    } else if long::applies(model, inertia)? {
+        let (groups, long_terms) = long::groups(model, actions, inertia)?;
+        terms = long_terms;
+        groups
     } else {
         terms = coordinate_terms(model, actions, inertia.form == Form::Handout)?;
         let groups = terms
