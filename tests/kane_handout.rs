@@ -402,7 +402,7 @@ fn the_matrix_of_the_dependent_rates_keeps_one_letter_that_names_no_body() {
 }
 
 /// The table's lines of speed `r`: from its heading `u_{r}` to the next speed's.
-fn speed_lines<'a>(step5: &'a str, r: usize) -> Vec<&'a str> {
+fn speed_lines(step5: &str, r: usize) -> Vec<&str> {
     let head = format!("| $u_{{{r}}}");
     let mut lines = step5.lines().skip_while(|l| !l.starts_with(&head));
     let first = lines.next().into_iter();
