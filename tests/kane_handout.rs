@@ -511,3 +511,15 @@ fn the_rolling_coins_no_slip_rows_come_from_the_contact_points_velocity() {
         latex_unit_vector("N", 2)
     )));
 }
+
+#[test]
+fn a_contact_that_may_slide_is_not_said_to_roll_without_slipping() {
+    // The bowling ball slides at the start (v0 ≠ R ω0): its no-slip row does not hold yet,
+    // so no vector equation says that its contact point is at rest.
+    let text = markdown("bowling-ball.json");
+    let step1 = section(&text, "## Step 1", "## Step 2");
+    assert!(!step1.contains("Rolling without slipping"), "{step1}");
+    // The disc on the cart rolls throughout: its contact point's equation is there.
+    let text = markdown("disc-on-cart.json");
+    assert!(section(&text, "## Step 1", "## Step 2").contains("Rolling without slipping"));
+}

@@ -26,14 +26,17 @@ pub fn loops(derivation: &Derivation) -> Vec<String> {
 }
 
 /// Whether contact site `k` has a constraint row along a tangent (it rolls, not only
-/// touches).
+/// touches) and no friction law (a rough contact may slide, as the bowling ball does at
+/// the start, and then its point does not move with the surface).
 fn rolls(model: &Model, k: usize) -> bool {
-    model.constraints.rows.iter().any(|row| match row.origin {
-        RowOrigin::Site { site, component } => {
-            site == k && model.sites[k].reactions[component].axis != Axis::Normal
-        }
-        _ => false,
-    })
+    let rough = model.constraints.friction.iter().any(|f| f.site == k);
+    !rough
+        && model.constraints.rows.iter().any(|row| match row.origin {
+            RowOrigin::Site { site, component } => {
+                site == k && model.sites[k].reactions[component].axis != Axis::Normal
+            }
+            _ => false,
+        })
 }
 
 /// The display of contact site `k`.
