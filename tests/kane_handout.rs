@@ -383,3 +383,143 @@ fn the_four_bars_dependent_rates_share_one_named_denominator() {
         );
     }
 }
+
+/// The disc on a cart (problems/disc-on-cart.json): cart C (mass M, no rotational inertia)
+/// slides along n_x (x); disc D (m, R, I = m R²/2) at s along the cart, h above its top,
+/// turned θ; it rolls at U, so ṡ + R θ̇ = 0 and h = R; the contact force is asked for.
+#[test]
+fn the_matrix_of_the_dependent_rates_keeps_one_letter_that_names_no_body() {
+    let text = markdown("disc-on-cart.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    // The cart is C: the matrix is W, in u_D = W u_I as in the rows after it.
+    assert!(step5.contains("\\dot{q}_D = W\\,\\dot{q}_I"), "{step5}");
+    assert!(step5.contains("\\ddot{q}_D = W\\,\\ddot{q}_I"), "{step5}");
+    assert!(!step5.contains("= C\\,"), "{step5}");
+    // The cart slides without turning: its partial angular velocity is zero, not "a
+    // particle".
+    assert!(step5.contains("{}^{N}\\tilde{\\boldsymbol{\\omega}}^{C}_{1} = \\mathbf{0}"));
+    assert!(!text.contains("(a particle)"), "{step5}");
+}
+
+/// The table's lines of speed `r`: from its heading `u_{r}` to the next speed's.
+fn speed_lines(step5: &str, r: usize) -> Vec<&str> {
+    let head = format!("| $u_{{{r}}}");
+    let mut lines = step5.lines().skip_while(|l| !l.starts_with(&head));
+    let first = lines.next().into_iter();
+    first
+        .chain(lines.take_while(|l| l.starts_with("|  |")))
+        .collect()
+}
+
+#[test]
+fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown() {
+    let text = markdown("disc-on-cart.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    let (n_x, n_y) = (latex_unit_vector("N", 0), latex_unit_vector("N", 1));
+    let d_z = latex_unit_vector("D", 2);
+    // By hand: u3 lets the no-slip condition ṡ + R θ̇ = 0 give way alone (ẋ = ṡ = ḣ = 0),
+    // ṡ + R θ̇ = u3, so θ̇ = u3/R: D* does not move, D turns (1/R) d_z, and D's point at U
+    // slides along c_x = n_x relative to the cart.
+    let u3 = speed_lines(step5, 3);
+    assert_eq!(u3.len(), 2, "{u3:?}");
+    assert!(u3[0].contains("u_{3} \\to F^{U}_{x}"), "{}", u3[0]);
+    assert!(u3[0].contains("{}^{N}\\tilde{\\mathbf{v}}^{D^*}_{3} = \\mathbf{0}"));
+    assert!(u3[0].contains(&format!(
+        "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{D}}_{{3}} = \\frac{{1}}{{R}} {d_z}"
+    )));
+    assert!(u3[1].contains(&format!(
+        "{{}}^{{C}}\\tilde{{\\mathbf{{v}}}}^{{U}}_{{3}} = {n_x}"
+    )));
+    // u4 lets h grow alone: D moves n_y, without turning, and so does its point at U.
+    let u4 = speed_lines(step5, 4);
+    assert!(u4[0].contains(&format!(
+        "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{D^*}}_{{4}} = {n_y}"
+    )));
+    assert!(u4[0].contains("{}^{N}\\tilde{\\boldsymbol{\\omega}}^{D}_{4} = \\mathbf{0}"));
+    assert!(u4[1].contains(&format!(
+        "{{}}^{{C}}\\tilde{{\\mathbf{{v}}}}^{{U}}_{{4}} = {n_y}"
+    )));
+    // So F̃3 = n_x · F^U = F^U_x and F̃3* = ω̃3 · T*_D = (1/R)(−(m R²/2) θ̈) = −(R m/2) θ̈,
+    // formed body by body as the independent speeds' are.
+    let row3 = section(step5, "**3.", "**4.");
+    assert!(row3.contains("\\tilde{F}_{3} = F^{U}_{x}"), "{row3}");
+    assert!(row3.contains(
+        "\\tilde{\\mathbf{v}}^{D^*}_{3} \\cdot \\mathbf{R}^{*}_{D} + \\tilde{\\boldsymbol{\\omega}}^{D}_{3} \\cdot \\mathbf{T}^{*}_{D}"
+    ));
+    assert!(
+        row3.contains("&= -\\frac{R m}{2} \\ddot{\\theta}"),
+        "{row3}"
+    );
+    // F̃4 = n_y · (F^U − m g n_y) and F̃4* = −m ḧ.
+    let row4 = section(step5, "**4.", "**5.");
+    assert!(row4.contains("\\tilde{F}_{4} = F^{U}_{y} - g m"), "{row4}");
+    assert!(row4.contains("&= -m \\ddot{h}"), "{row4}");
+}
+
+#[test]
+fn kanes_formula_names_its_point_by_a_letter_the_problem_does_not_use() {
+    // The double pendulum's pin is P, the rolling coin's contact point is printed P.
+    for name in ["double-pendulum-rods.json", "rolling-coin.json"] {
+        let text = markdown(name);
+        assert!(
+            text.contains("with $\\mathbf{R}_Q$ a force applied at the point $Q$"),
+            "{name}"
+        );
+        assert!(!text.contains("applied at the point $P$"), "{name}");
+        assert!(
+            text.contains("\\mathbf{v}^{Q}_r \\cdot \\mathbf{R}_{Q}"),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn kanes_system_of_nine_unknowns_is_its_rows_not_a_pattern_of_dots() {
+    let text = markdown("rolling-coin.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    assert!(!step5.contains("\\bullet"), "{step5}");
+    assert!(step5.contains(
+        "The 9 rows above, linear in the 9 unknowns once the state is given, are the system"
+    ));
+    assert!(step5.contains("solved numerically at the initial state."));
+}
+
+#[test]
+fn the_rolling_coins_no_slip_rows_come_from_the_contact_points_velocity() {
+    let text = markdown("rolling-coin.json");
+    let step1 = section(&text, "## Step 1", "## Step 2");
+    let display = section(step1, "Rolling without slipping", "| Constraint");
+    let (d_x, d_z) = (latex_unit_vector("D", 0), latex_unit_vector("D", 2));
+    // By hand: E, the frame after ψ about n_z and θ about the new x, has the axle e_y;
+    // the contact point lies down the disc's plane, r = −R e_z, and D is E turned φ about
+    // e_y, so e_z = −s_φ d_x + c_φ d_z and r = R s_φ d_x − R c_φ d_z.
+    assert!(display.contains(&format!(
+        "\\mathbf{{r}}^{{D^* P}} &= R s_{{\\phi}} {d_x} - R c_{{\\phi}} {d_z}"
+    )));
+    assert!(display.contains(
+        "{}^{N}\\mathbf{v}^{P} &= {}^{N}\\mathbf{v}^{D^*} + {}^{N}\\boldsymbol{\\omega}^{D} \\times \\mathbf{r}^{D^* P}"
+    ));
+    // ω = ψ' n_z + θ' e_x + φ' e_y; with e_x = (c_ψ, s_ψ, 0), e_z = (s_ψ s_θ, −c_ψ s_θ, c_θ)
+    // in N, ω × r = −R (ψ' n_z × e_z − θ' e_y + φ' e_x): along n_x
+    // −R (ψ' s_θ c_ψ + θ' s_ψ c_θ + φ' c_ψ), along n_z R θ' s_θ; with v^{D*} = (x', y', z').
+    assert!(display.contains(&format!(
+        "(\\dot{{x}} - R \\dot{{\\phi}} c_{{\\psi}} - R \\dot{{\\psi}} s_{{\\theta}} c_{{\\psi}} - R \\dot{{\\theta}} s_{{\\psi}} c_{{\\theta}}) {}",
+        latex_unit_vector("N", 0)
+    )));
+    assert!(display.contains(&format!(
+        "(\\dot{{z}} + R \\dot{{\\theta}} s_{{\\theta}}) {} = \\mathbf{{0}}",
+        latex_unit_vector("N", 2)
+    )));
+}
+
+#[test]
+fn a_contact_that_may_slide_is_not_said_to_roll_without_slipping() {
+    // The bowling ball slides at the start (v0 ≠ R ω0): its no-slip row does not hold yet,
+    // so no vector equation says that its contact point is at rest.
+    let text = markdown("bowling-ball.json");
+    let step1 = section(&text, "## Step 1", "## Step 2");
+    assert!(!step1.contains("Rolling without slipping"), "{step1}");
+    // The disc on the cart rolls throughout: its contact point's equation is there.
+    let text = markdown("disc-on-cart.json");
+    assert!(section(&text, "## Step 1", "## Step 2").contains("Rolling without slipping"));
+}

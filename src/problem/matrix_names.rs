@@ -41,31 +41,35 @@ impl MatrixNames {
     /// compared without case (body B's unit vectors are b̂): the last of a list when all
     /// are taken.
     pub fn of(problem: &Problem) -> MatrixNames {
-        // A name prints as one letter (with any index, `B`, `b1`, `m_2`) or as a word
-        // (`bob`, upright): only a letter can be read as a matrix's.
-        let used: Vec<char> = used_names(problem)
-            .filter_map(|n| {
-                let stem: Vec<char> = n.chars().take_while(char::is_ascii_alphabetic).collect();
-                (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
-            })
-            .collect();
-        let free = |list: &[&str]| -> String {
-            let first = list.iter().find(|name| {
-                let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
-                !used.contains(&letter)
-            });
-            first
-                .or(list.last())
-                .copied()
-                .unwrap_or_default()
-                .to_string()
-        };
         MatrixNames {
-            a: free(&SYSTEM),
-            b: free(&RIGHT_SIDE),
-            c: free(&DEPENDENT),
+            a: free_letter(problem, &SYSTEM),
+            b: free_letter(problem, &RIGHT_SIDE),
+            c: free_letter(problem, &DEPENDENT),
         }
     }
+}
+
+/// The first of `letters` that no one-letter name of `problem` uses, letters compared
+/// without case (body B's unit vectors are b̂): the last of the list when all are taken.
+/// A general symbol of a formula (the point of Kane's `R_P`) is named so too.
+pub fn free_letter(problem: &Problem, letters: &[&str]) -> String {
+    // A name prints as one letter (with any index, `B`, `b1`, `m_2`) or as a word
+    // (`bob`, upright): only a letter can be read as the symbol's.
+    let used: Vec<char> = used_names(problem)
+        .filter_map(|n| {
+            let stem: Vec<char> = n.chars().take_while(char::is_ascii_alphabetic).collect();
+            (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
+        })
+        .collect();
+    let first = letters.iter().find(|name| {
+        let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
+        !used.contains(&letter)
+    });
+    first
+        .or(letters.last())
+        .copied()
+        .unwrap_or_default()
+        .to_string()
 }
 
 /// Every name a handout prints for the problem: bodies (and their frames), joints and

@@ -58,7 +58,7 @@ pub use expressions::axis_index;
 pub use impact::{Collision, Impact, Impulse};
 pub use impulsive::Impulsive;
 pub use load::{apply_overrides, load, load_file};
-pub use matrix_names::MatrixNames;
+pub use matrix_names::{free_letter, MatrixNames};
 pub use model::*;
 pub use question_model::*;
 pub use schema::SCHEMA;

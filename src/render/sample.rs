@@ -60,6 +60,7 @@ pub fn sample() -> Solution {
         constraints: Vec::new(),
         constraint_notes: Vec::new(),
         closure_loops: Vec::new(),
+        contact_loops: Vec::new(),
         solve_notes: Vec::new(),
         matrix_names: Default::default(),
         free_bodies: free_bodies(),

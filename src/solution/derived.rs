@@ -30,6 +30,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
         solution.constraint_notes = MarkupLine::all(constraint_notes);
         solution.closure_loops = Math::all(super::closure_loops::loops(derivation));
+        solution.contact_loops = Math::all(super::contact_loops::loops(derivation));
         solution.solve_notes = MarkupLine::all(super::solve_words::notes(derivation));
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);

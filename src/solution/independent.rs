@@ -23,25 +23,18 @@ pub fn speed_tex(derivation: &Derivation, speeds: &Speeds, r: usize) -> String {
     format!("u_{{{}}} = {rate}", r + 1)
 }
 
+/// A body with its velocity's and angular velocity's partials, one per coordinate's rate.
+pub(super) type BodyPartials = (crate::problem::BodyId, Vec<Vector>, Vec<Vector>);
+
 /// The constrained partial velocities and partial angular velocities of every body, one
-/// line per body and independent speed.
+/// line per body and independent speed, then the auxiliary speeds' (see
+/// [`super::auxiliary_partials`]).
 pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<PartialVelocity> {
     let model = &derivation.model;
     let problem = model.problem;
     let n = problem.coordinates.len();
     let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
-    // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
-    let sign = super::tex::initial_sign(model);
-    let combined = |list: &[Vector], weights: &[Expr]| -> Vector {
-        Vector::sum(
-            list.iter()
-                .zip(weights)
-                .filter(|(_, w)| !w.is_zero())
-                .map(|(v, w)| v.scaled(w)),
-        )
-        .map(|e| roots_of_squares(&simplify(e), &sign))
-    };
-    let per_body: Vec<_> = model
+    let per_body: Vec<BodyPartials> = model
         .order
         .iter()
         .map(|&body| {
@@ -53,48 +46,78 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
             )
         })
         .collect();
-    let zero = "\\mathbf{0}";
     let mut out = Vec::new();
     for r in 0..speeds.independent.len() {
         let weights = speeds.independent_weights(r, n);
-        let mut first = true;
-        for (body, v, w) in &per_body {
-            let v_tex = super::tex::shortest_tex(model, &combined(v, &weights), *body);
-            let particle = is_particle(&derivation.model, *body);
-            let w_tex = if particle {
-                zero.to_string()
-            } else {
-                super::tex::shortest_tex(model, &combined(w, &weights), *body)
-            };
-            if v_tex == zero && w_tex == zero {
-                continue;
-            }
-            let symbol = latex_name(problem.body_name(*body));
-            out.push(PartialVelocity {
-                r: r + 1,
-                speed_tex: if std::mem::take(&mut first) {
-                    Math::from(speed_tex(derivation, speeds, r))
-                } else {
-                    Math::from(String::new())
-                },
-                body: problem.body_name(*body).to_string(),
-                velocity_tex: Math::from(format!(
-                    "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
-                    super::tex::centre_tex(model, *body),
-                    r + 1
-                )),
-                omega_tex: if particle {
-                    Math::from(String::new())
-                } else {
-                    Math::from(format!(
-                        "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{}}} = {w_tex}",
-                        r + 1
-                    ))
-                },
-                point: false,
-            });
-        }
+        let speed = speed_tex(derivation, speeds, r);
+        out.extend(body_rows(derivation, &per_body, &weights, r, speed));
         out.extend(slip_partials(model, &rates, &weights, r));
+    }
+    out.extend(super::auxiliary_partials::table_rows(
+        derivation, speeds, &per_body, &rates,
+    ));
+    out
+}
+
+/// Each body's partial velocity and partial angular velocity (index into `per_body`'s
+/// lists by coordinate) combined by `weights`, for speed `r` (0-based), one line per body
+/// that moves with it, `speed` on the first.
+pub(super) fn body_rows(
+    derivation: &Derivation,
+    per_body: &[BodyPartials],
+    weights: &[Expr],
+    r: usize,
+    speed: String,
+) -> Vec<PartialVelocity> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
+    let sign = super::tex::initial_sign(model);
+    let combined = |list: &[Vector]| -> Vector {
+        Vector::sum(
+            list.iter()
+                .zip(weights)
+                .filter(|(_, w)| !w.is_zero())
+                .map(|(v, w)| v.scaled(w)),
+        )
+        .map(|e| roots_of_squares(&simplify(e), &sign))
+    };
+    let zero = "\\mathbf{0}";
+    let mut out = Vec::new();
+    let mut first = true;
+    for (body, v, w) in per_body {
+        let v_tex = super::tex::shortest_tex(model, &combined(v), *body);
+        // A body without rotational inertia shows its partial angular velocity only
+        // where it is zero (a cart that slides): a turning one's does nothing.
+        let w_tex = super::tex::shortest_tex(model, &combined(w), *body);
+        let particle = is_particle(model, *body) && w_tex != zero;
+        if v_tex == zero && (particle || w_tex == zero) {
+            continue;
+        }
+        let symbol = latex_name(problem.body_name(*body));
+        out.push(PartialVelocity {
+            r: r + 1,
+            speed_tex: if std::mem::take(&mut first) {
+                Math::from(speed.clone())
+            } else {
+                Math::from(String::new())
+            },
+            body: problem.body_name(*body).to_string(),
+            velocity_tex: Math::from(format!(
+                "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
+                super::tex::centre_tex(model, *body),
+                r + 1
+            )),
+            omega_tex: if particle {
+                Math::from(String::new())
+            } else {
+                Math::from(format!(
+                    "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{}}} = {w_tex}",
+                    r + 1
+                ))
+            },
+            point: false,
+        });
     }
     out
 }
@@ -108,49 +131,63 @@ fn slip_partials(
     weights: &[Expr],
     r: usize,
 ) -> Vec<PartialVelocity> {
+    let friction = model.constraints.friction.iter();
+    friction
+        .filter_map(|f| site_partial(model, f.site, f.stick.iter(), rates, weights, r))
+        .collect()
+}
+
+/// The partial velocity of site `index`'s point of its child, relative to its parent, for
+/// speed `r` (0-based) of `weights`: each of `rows` (velocity conditions along the site's
+/// reaction directions) gives its direction's component; `None` where it is zero.
+pub(super) fn site_partial<'r>(
+    model: &Model,
+    index: usize,
+    rows: impl Iterator<Item = &'r crate::mechanics::ConstraintRow>,
+    rates: &[Symbol],
+    weights: &[Expr],
+    r: usize,
+) -> Option<PartialVelocity> {
     let problem = model.problem;
-    let mut out = Vec::new();
-    for f in &model.constraints.friction {
-        let site = &model.sites[f.site];
-        let mut v = Vector::zero();
-        for row in &f.stick {
-            let Ok((a, _)) = linear_split(&row.velocity, rates) else {
-                continue;
-            };
-            let along = site
-                .reactions
-                .iter()
-                .find(|c| c.unknown(&site.name) == row.unknown);
-            let Some(component) = along else {
-                continue;
-            };
-            let weight = simplify(&add(a.iter().zip(weights).map(|(a, w)| a * w)));
-            v = v.plus(&component.direction.scaled(&weight));
-        }
-        let v_tex = super::tex::shortest_tex(model, &v.map(simplify), site.child);
-        if v_tex == "\\mathbf{0}" {
+    let site = &model.sites[index];
+    let mut v = Vector::zero();
+    for row in rows {
+        let Ok((a, _)) = linear_split(&row.velocity, rates) else {
             continue;
-        }
-        // Relative to what it slides on: N's, or a moving body's.
-        let frame = if site.parent == crate::problem::BodyId::GROUND {
-            "N".to_string()
-        } else {
-            latex_name(problem.body_name(site.parent))
         };
-        out.push(PartialVelocity {
-            r: r + 1,
-            speed_tex: Math::from(String::new()),
-            body: format!("{} at {}", problem.body_name(site.child), site.name),
-            velocity_tex: Math::from(format!(
-                "{{}}^{{{frame}}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
-                latex_name(&site.name),
-                r + 1
-            )),
-            omega_tex: Math::from(String::new()),
-            point: true,
-        });
+        let along = site
+            .reactions
+            .iter()
+            .find(|c| c.unknown(&site.name) == row.unknown);
+        let Some(component) = along else {
+            continue;
+        };
+        let weight = simplify(&add(a.iter().zip(weights).map(|(a, w)| a * w)));
+        v = v.plus(&component.direction.scaled(&weight));
     }
-    out
+    let v_tex = super::tex::shortest_tex(model, &v.map(simplify), site.child);
+    if v_tex == "\\mathbf{0}" {
+        return None;
+    }
+    // Relative to what it slides on: N's, or a moving body's.
+    let frame = if site.parent == crate::problem::BodyId::GROUND {
+        "N".to_string()
+    } else {
+        latex_name(problem.body_name(site.parent))
+    };
+    Some(PartialVelocity {
+        r: r + 1,
+        speed_tex: Math::from(String::new()),
+        // The point is in the partial velocity's name: the body alone keeps the column narrow.
+        body: problem.body_name(site.child).to_string(),
+        velocity_tex: Math::from(format!(
+            "{{}}^{{{frame}}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
+            latex_name(&site.name),
+            r + 1
+        )),
+        omega_tex: Math::from(String::new()),
+        point: true,
+    })
 }
 
 /// `u_D = C u_I` in symbols, Kane's equations with these speeds, and the paragraphs that
@@ -244,6 +281,11 @@ pub fn dependent_speeds(
         }
     }
     let partials = "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)";
+    let partials = if super::auxiliary_partials::any(derivation) {
+        format!("{partials}; an auxiliary speed's, in the lines after them, are those of the motion in which only its constraint gives way")
+    } else {
+        partials.to_string()
+    };
     paragraphs.push(if speeds.at_each_state {
         format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
     } else {
@@ -389,6 +431,7 @@ fn words(list: &[String]) -> String {
 fn renamed_matrices(text: &str, names: &crate::problem::MatrixNames) -> String {
     let (a, c) = (names.a.as_str(), names.c.as_str());
     text.replace("C_{sr}", &format!("{c}_{{sr}}"))
+        .replace("= C\\,", &format!("= {c}\\,"))
         .replace("$C$", &format!("${c}$"))
         .replace("$C = ", &format!("${c} = "))
         .replace("A_D", &format!("{a}_D"))

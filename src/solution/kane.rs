@@ -102,7 +102,9 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             }
             let name = problem.body_name(*body);
             let symbol = latex_name(name);
-            let particle = crate::mechanics::is_particle(&derivation.model, *body);
+            // Without rotational inertia the partial angular velocity does nothing; it is
+            // shown only where it is zero (a body that slides without turning).
+            let particle = crate::mechanics::is_particle(&derivation.model, *body) && w_tex != zero;
             out.push(PartialVelocity {
                 r: r + 1,
                 speed_tex: if std::mem::take(&mut first) {

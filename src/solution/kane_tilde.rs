@@ -110,7 +110,13 @@ fn parts(
     let problem = model.problem;
     let n = problem.coordinates.len();
     let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
-    let weights = speeds.independent_weights(r - 1, n);
+    let weights = if r <= speeds.independent.len() {
+        speeds.independent_weights(r - 1, n)
+    } else {
+        // An auxiliary speed's: only its constraint gives way.
+        super::auxiliary_partials::weights(derivation, r)
+            .map_or_else(|| vec![Expr::zero(); n], |(w, _)| w)
+    };
     let combined = |list: &[Vector]| -> Vector {
         Vector::sum(
             list.iter()
@@ -265,7 +271,7 @@ fn part_lines(
     Some((name, lines))
 }
 
-/// `F̃^*_r` of Kane's independent speed `r` (1-based) with each body's dot products
+/// `F̃^*_r` of Kane's independent or auxiliary speed `r` (1-based) with each body's dot products
 /// multiplied out and the dependent accelerations replaced, as an `aligned` block ending in
 /// `whole`'s formula (the row's `F̃^*_r = …`); `None` without dependent speeds written in
 /// symbols, for more than three bodies, where a part is too long, or where the parts do not
@@ -282,10 +288,16 @@ pub fn inertia_dot_products(
         .dependent_speeds
         .as_ref()
         .filter(|s| !s.at_each_state)?;
-    if model.order.len() > MOST_BODIES || r == 0 || r > speeds.independent.len() {
+    let auxiliary = r > speeds.independent.len();
+    if model.order.len() > MOST_BODIES
+        || r == 0
+        || (auxiliary && super::auxiliary_partials::weights(derivation, r).is_none())
+    {
         return None;
     }
-    let elimination = Elimination::new(model, speeds, groups)?;
+    let mut elimination = Elimination::new(model, speeds, groups)?;
+    // An auxiliary row is solved with every q̈ known: it keeps the dependent ones.
+    elimination.applies &= !auxiliary;
     let this = parts(derivation, speeds, r, &elimination, shown);
     if this.is_empty() || !add_up(model, &this, groups) {
         return None;
@@ -317,8 +329,15 @@ pub fn inertia_dot_products(
         .iter()
         .any(|p| latex_collected(&p.term).len() > LONGEST_REPEATED);
     let whole = if long { "" } else { whole };
-    super::aligned::sum_of_parts(&format!("\\tilde{{F}}^{{*}}_{{{r}}}"), &names, lines, whole)
+    let block =
+        super::aligned::sum_of_parts(&format!("\\tilde{{F}}^{{*}}_{{{r}}}"), &names, lines, whole)?;
+    // An auxiliary speed's F̃*_r body by body only where that is short: a long one is formed
+    // from the table as the rows before it show, and printed whole.
+    (!auxiliary || block.len() <= LONGEST_AUXILIARY).then_some(block)
 }
+
+/// The most characters of LaTeX an auxiliary speed's `F̃*_r` written body by body may take.
+const LONGEST_AUXILIARY: usize = 700;
 
 /// Where the row keeps the dependent accelerations (replaced, they would make it too long
 /// to read), the words that say where they are found, on the first row that has them.

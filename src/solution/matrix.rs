@@ -15,7 +15,7 @@ use crate::render::{
 use crate::symbolic::{latex, latex_collected, latex_factored, Expr};
 
 /// The most columns the whole table has.
-const MOST_COLUMNS: usize = 6;
+pub(super) const MOST_COLUMNS: usize = 6;
 /// The most characters of LaTeX the entries may print in all (about five pages). Past it,
 /// entries are given by their values at the initial state, a large system being solved by
 /// its numbers anyway: the few rows step 5 writes by name beside the table of dots, or all
@@ -77,13 +77,19 @@ pub fn matrix(
     let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
     // Kane's rows stand whole in step 5, each written once, its mass matrix positive, and a
     // single row is its own solution. Up to six unknowns Kane's matrix is written out with
-    // its entries, as the Motion Law's is, for a student to solve; past that, and for
-    // Lagrange's rows, only where its entries are (the structure of the solve).
+    // its entries, as the Motion Law's is, for a student to solve; past that Kane's rows are
+    // the system as they stand (see `solve_words`), and Lagrange's matrix shows only where
+    // its entries are (the structure of the solve).
     let whole_rows = matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries;
     if whole_rows && a.len() < 2 {
         return MatrixForm::default();
     }
     let written_out = derivation.method == Method::Kane && n <= MOST_COLUMNS;
+    if whole_rows && derivation.method == Method::Kane && !written_out {
+        // Past six unknowns a student reads Kane's system off its rows and solves it
+        // numerically, which the solve's words say: a pattern of dots would not help.
+        return MatrixForm::default();
+    }
     if whole_rows && !written_out {
         return MatrixForm {
             pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),

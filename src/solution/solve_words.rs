@@ -24,6 +24,7 @@ const LONGEST_DETERMINANT: usize = 300;
 /// beyond the matrix form.
 pub fn notes(derivation: &Derivation) -> Vec<String> {
     let mut out = Vec::new();
+    out.extend(super::kane_system::rows_are_the_system(derivation));
     if let Some(order) = order(derivation) {
         out.push(order);
     }

@@ -1,0 +1,95 @@
+//! A rolling contact's no-slip condition as a textbook writes it before its scalar rows:
+//! the arm from the rolling body's mass centre to the contact point, `r^{D*P}`, then the
+//! velocity of the body's point there, `ᴺv^P = ᴺv^{D*} + ᴺω^D × r^{D*P}`, set equal to the
+//! velocity of the surface's point (zero on the ground), written out in one frame's unit
+//! vectors: its components along the surface are the no-slip rows of the constraint table
+//! (and along the normal, the no-penetration row differentiated).
+
+use super::tex::{centre_tex, initial_sign, shortest_tex};
+use crate::equations::Derivation;
+use crate::mechanics::{Model, RowOrigin, SiteKind, Vector};
+use crate::problem::BodyId;
+use crate::symbolic::{latex_name, roots_of_squares, simplify, Axis};
+
+/// The most characters of LaTeX the velocity written out may take: a longer one (the
+/// bicycle's front wheel) is left to the rows.
+const LONGEST: usize = 900;
+
+/// One aligned display per rolling contact that has a no-slip row, in the order of the
+/// sites.
+pub fn loops(derivation: &Derivation) -> Vec<String> {
+    let model = &derivation.model;
+    (0..model.sites.len())
+        .filter(|&k| matches!(model.sites[k].kind, SiteKind::Contact(_)) && rolls(model, k))
+        .filter_map(|k| contact_display(model, k))
+        .collect()
+}
+
+/// Whether contact site `k` has a constraint row along a tangent (it rolls, not only
+/// touches) and no friction law (a rough contact may slide, as the bowling ball does at
+/// the start, and then its point does not move with the surface).
+fn rolls(model: &Model, k: usize) -> bool {
+    let rough = model.constraints.friction.iter().any(|f| f.site == k);
+    !rough
+        && model.constraints.rows.iter().any(|row| match row.origin {
+            RowOrigin::Site { site, component } => {
+                site == k && model.sites[k].reactions[component].axis != Axis::Normal
+            }
+            _ => false,
+        })
+}
+
+/// The display of contact site `k`.
+fn contact_display(model: &Model, k: usize) -> Option<String> {
+    let site = &model.sites[k];
+    let body = site.child;
+    let sign = initial_sign(model);
+    let tidy = |v: &Vector| v.map(|e| roots_of_squares(&simplify(e), &sign));
+    let centre = &model.bodies[body.0].center;
+    let arm = tidy(&site.point.position.minus(&centre.position));
+    let on_parent = model.point_on(site.parent, &site.parent_offset);
+    let slip = tidy(&site.point.velocity.minus(&on_parent.velocity));
+    let point = latex_name(&site.name);
+    let name = latex_name(model.problem.body_name(body));
+    let star = centre_tex(model, body);
+    let arm_name = format!("\\mathbf{{r}}^{{{star} {point}}}");
+    let arm_tex = shortest_tex(model, &arm, body);
+    let slip_tex = shortest_tex(model, &slip, body);
+    if slip_tex.len() > LONGEST || arm_tex.len() > LONGEST {
+        return None;
+    }
+    let moving = site.parent != BodyId::GROUND;
+    // On a moving body the point of the body rolled on has its own velocity there.
+    let (own, surface) = if moving {
+        let on = latex_name(model.problem.body_name(site.parent));
+        (
+            format!("{point}_{{{name}}}"),
+            format!("{{}}^{{N}}\\mathbf{{v}}^{{{point}_{{{on}}}}}"),
+        )
+    } else {
+        (point.clone(), "\\mathbf{0}".to_string())
+    };
+    let velocity = format!(
+        "{{}}^{{N}}\\mathbf{{v}}^{{{star}}} + {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} \\times {arm_name}"
+    );
+    let own_velocity = format!("{{}}^{{N}}\\mathbf{{v}}^{{{own}}}");
+    let mut lines = vec![super::aligned::line(&arm_name, "=", &arm_tex)];
+    if moving {
+        // The difference of the two points' velocities, written out, is the slip.
+        lines.push(format!("{own_velocity} &= {velocity} = {surface}"));
+        lines.push(super::aligned::line(
+            &format!("{own_velocity} - {surface}"),
+            "=",
+            &format!("{slip_tex} = \\mathbf{{0}}"),
+        ));
+    } else {
+        // On the ground the velocity itself is the slip.
+        lines.push(format!("{own_velocity} &= {velocity}"));
+        lines.push(super::aligned::line(
+            "",
+            "=",
+            &format!("{slip_tex} = \\mathbf{{0}}"),
+        ));
+    }
+    Some(super::aligned::display(&lines))
+}

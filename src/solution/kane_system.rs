@@ -1,0 +1,22 @@
+//! Kane's system past six unknowns (the rolling coin's nine, the bicycle): its rows, as step
+//! 5 writes them collected by the unknowns, are the linear system itself. A student reads the
+//! coefficients off them and solves the system numerically; a table of where its entries are
+//! would tell nothing more (docs/conventions/rows.md).
+
+use crate::equations::{Derivation, Method};
+use crate::problem::MatrixNames;
+
+/// The sentence that says so, in markup; `None` for another method or a system small
+/// enough for its matrix form to be written out.
+pub fn rows_are_the_system(derivation: &Derivation) -> Option<String> {
+    let n = derivation.system.unknowns.len();
+    if derivation.method != Method::Kane || n <= super::matrix::MOST_COLUMNS {
+        return None;
+    }
+    let rows = derivation.system.a.len();
+    let names = MatrixNames::of(derivation.model.problem);
+    let (a, b) = (names.a, names.b);
+    Some(format!(
+        "The {rows} rows above, linear in the {n} unknowns once the state is given, are the system $\\mathbf{{{a}}}\\,\\mathbf{{x}} = \\mathbf{{{b}}}$ (${a}_{{ij}}$ the coefficient of unknown $x_j$ in row $i$, ${b}_i$ minus the rest), solved numerically at the initial state."
+    ))
+}
