@@ -26,7 +26,6 @@ const STILL_LONGER: &[(&str, usize)] = &[
     ("rolling-coin-kane", 5),
     ("rolling-coin-lagrange", 5),
     ("statics-two-link-arm-motion-law", 5),
-    ("two-link-robot-arm-kane", 5),
     ("unbalanced-disk-shaft-kane", 5),
     ("unbalanced-disk-shaft-motion-law", 5),
     ("wheel-pendulum-kane", 5),
