@@ -43,12 +43,13 @@ impl MatrixNames {
     pub fn of(problem: &Problem) -> MatrixNames {
         // A name prints as one letter (with any index, `B`, `b1`, `m_2`) or as a word
         // (`bob`, upright): only a letter can be read as a matrix's.
-        let used: Vec<char> = used_names(problem)
+        let mut used: Vec<char> = used_names(problem)
             .filter_map(|n| {
                 let stem: Vec<char> = n.chars().take_while(char::is_ascii_alphabetic).collect();
                 (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
             })
             .collect();
+        used.extend(spin_frame_letter(problem));
         let free = |list: &[&str]| -> String {
             let first = list.iter().find(|name| {
                 let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
@@ -60,12 +61,43 @@ impl MatrixNames {
                 .unwrap_or_default()
                 .to_string()
         };
+        // The system and its right-hand side as a pair (A x = b, S x = f) where one is free.
+        let is_free = |name: &str| {
+            let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
+            !used.contains(&letter)
+        };
+        let pair = (SYSTEM.iter().zip(RIGHT_SIDE)).find(|(a, b)| is_free(a) && is_free(b));
+        let (a, b) = match pair {
+            Some((a, b)) => (a.to_string(), b.to_string()),
+            None => (free(&SYSTEM), free(&RIGHT_SIDE)),
+        };
         MatrixNames {
-            a: free(&SYSTEM),
-            b: free(&RIGHT_SIDE),
+            a,
+            b,
             c: free(&DEPENDENT),
         }
     }
+}
+
+/// The letter (small) of the frame a handout adds for a body spinning about its symmetry
+/// axis on a joint of several turns (Resal's frame): the first capital that names no body,
+/// as the kinematics takes it. Only in space, where a joint turns about more than one axis.
+fn spin_frame_letter(problem: &Problem) -> Option<char> {
+    use super::JointKind;
+    let turns = problem.joints.iter().any(|j| {
+        matches!(
+            j.kind,
+            JointKind::Spherical | JointKind::Universal | JointKind::Free
+        )
+    });
+    if problem.dimension != super::Dimension::Three || !turns {
+        return None;
+    }
+    let taken =
+        |c: char| (problem.bodies.iter()).any(|b| b.name.eq_ignore_ascii_case(&c.to_string()));
+    ('A'..='Z')
+        .find(|&c| c != 'N' && !taken(c))
+        .map(|c| c.to_ascii_lowercase())
 }
 
 /// Every name a handout prints for the problem: bodies (and their frames), joints and

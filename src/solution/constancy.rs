@@ -74,6 +74,11 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
             continue;
         };
         let (late, start) = (late.1, start.1);
+        // The datum of V, beside the energy at the start.
+        if let Some(datum) = super::energy_datum::sentence(worked, start) {
+            let note = &mut views[k].note;
+            *note = [note.as_str(), datum.as_str()].join(" ").trim().to_string();
+        }
         let relative = (late - start).abs() / start.abs().max(1e-12);
         let time = fixed(problem.questions[i].at.time.unwrap_or(0.0));
         let constant = relative <= 1e-6;

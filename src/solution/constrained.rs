@@ -9,7 +9,7 @@ use crate::problem::BodyId;
 use crate::render::context::{ConstraintView, DependentSpeeds};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::{
-    fixed, latex, latex_collected, latex_name, roots_of_squares, simplify, Symbol,
+    fixed, fixed_or_zero, latex, latex_collected, latex_name, roots_of_squares, simplify, Symbol,
 };
 
 /// The longest equation (LaTeX characters) the constraint table's narrow column holds;
@@ -97,7 +97,8 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             None => "the line of centres, divided by the distance the constraint keeps, is a unit vector".into(),
         };
         format!(
-            "Wherever the distance constraint of {name} holds, ${}$: {unit}. Its rows, and the equations below where that shortens them, are written with it.",
+            "Wherever the distance constraint of {} holds, ${}$: {unit}. The rows below write the distance between the centres as the constant it keeps, not as a root of squares.",
+            super::force_labels::place(name),
             relation.latex()
         )
     }));
@@ -267,6 +268,13 @@ pub fn dependent_speeds(
         })
         .map(Math::from)
         .collect();
+    // Relations in symbols hold at every state: the values at the start are said apart.
+    let start_tex = match symbolic {
+        Some(_) => (dependent.iter())
+            .map(|&s| Math::from(format!("{} = {}", rate(s), fixed_or_zero(rates[s]))))
+            .collect(),
+        None => Vec::new(),
+    };
     let relations_tex = match symbolic {
         Some(written) => written.into_iter().map(Math::from).collect(),
         None => relations_tex,
@@ -324,6 +332,7 @@ pub fn dependent_speeds(
                 .unwrap_or_default(),
         ),
         time_terms: moves_with_time(problem),
+        start_tex,
         ..DependentSpeeds::default()
     })
 }

@@ -32,6 +32,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
     // s_1, c_12, listed once where they are first used.
     let style = coordinates_style(problem);
+    // A contact sliding at the start: the sliding law in place of its no-slip row.
+    let sliding = super::sliding_rows::sliding_rows(derivation, &worked.initial.friction);
     let (_, abbreviations) = crate::symbolic::with_style(style, || {
         let constraint_notes;
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
@@ -70,7 +72,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         };
         let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
         let initial = |e: &Expr| crate::symbolic::eval(e, &at_start);
-        solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
+        solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial, &sliding);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kane_theory = super::kane_theory::theory(derivation);
         let mut definitions = kinematic_definitions(derivation);
@@ -84,6 +86,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.dependent_speeds =
             super::constrained::dependent_speeds(derivation, &worked.q0, &worked.rates0);
     });
+    super::sliding_rows::replace_rows(solution, derivation, &sliding);
     // Only those the solution prints: a text formed and then given up (an entry given by
     // value, a row too long to write whole) records its abbreviations too.
     let printed = serde_json::to_string(&*solution).unwrap_or_default();
@@ -100,6 +103,21 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         })
         .collect();
     (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
+    // A joint's axis is said in step 1 only where something else printed uses it.
+    let axes = std::mem::take(&mut solution.axes);
+    let printed = serde_json::to_string(&*solution).unwrap_or_default();
+    solution.axes = (axes.into_iter())
+        .filter(|a| {
+            let unit = a
+                .definition_tex
+                .as_str()
+                .split(' ')
+                .next()
+                .unwrap_or_default();
+            let quoted = serde_json::to_string(unit).unwrap_or_default();
+            printed.contains(quoted.trim_matches('"'))
+        })
+        .collect();
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
     let marks = super::initial_state::assembled(&mut solution.coordinates, problem, q0, rates0);
     if let Some(note) = marks {
