@@ -76,8 +76,10 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         let (late, start) = (late.1, start.1);
         // The datum of V, beside the energy at the start.
         if let Some(datum) = super::energy_datum::sentence(worked, start) {
-            let note = &mut views[k].note;
-            *note = [note.as_str(), datum.as_str()].join(" ").trim().to_string();
+            views[k].steps.push(crate::render::AnswerStep {
+                text: datum.into(),
+                math: String::new().into(),
+            });
         }
         let relative = (late - start).abs() / start.abs().max(1e-12);
         let time = fixed(problem.questions[i].at.time.unwrap_or(0.0));

@@ -269,11 +269,13 @@ pub fn dependent_speeds(
         .map(Math::from)
         .collect();
     // Relations in symbols hold at every state: the values at the start are said apart.
-    let start_tex = match symbolic {
-        Some(_) => (dependent.iter())
-            .map(|&s| Math::from(format!("{} = {}", rate(s), fixed_or_zero(rates[s]))))
-            .collect(),
-        None => Vec::new(),
+    let start: Vec<String> = (dependent.iter())
+        .map(|&s| format!("{} = {}", rate(s), fixed_or_zero(rates[s])))
+        .collect();
+    // Relations that are values already (ẏ = 0) hold at the start as written.
+    let start_tex = match &symbolic {
+        Some(written) if *written != start => Math::all(start),
+        _ => Vec::new(),
     };
     let relations_tex = match symbolic {
         Some(written) => written.into_iter().map(Math::from).collect(),

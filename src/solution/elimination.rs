@@ -5,7 +5,9 @@
 
 use crate::equations::{Derivation, LinearSystem, Method};
 use crate::render::AnswerStep;
-use crate::symbolic::{eval, latex, simplify, Expr, Values};
+use crate::symbolic::{
+    eval, latex, linear_split, roots_of_squares, simplify, Expr, Symbol, Values,
+};
 
 /// The most rows an elimination is written for: past it the working is a page.
 const MOST_ROWS: usize = 5;
@@ -33,11 +35,11 @@ pub fn steps(
     if !matches!(derivation.method, Method::MotionLaw | Method::NewtonEuler) {
         return None;
     }
-    let system = &derivation.system;
-    let n = system.unknowns.len();
-    if system.a.len() != n || n > MOST_ROWS || n < 2 || derivation.rows.len() != n {
+    let n = derivation.system.unknowns.len();
+    if derivation.system.a.len() != n || n > MOST_ROWS || n < 2 || derivation.rows.len() != n {
         return None;
     }
+    let system = &as_printed(derivation)?;
     let found = order(system, keep)?;
     let last = (0..n).find(|i| found.iter().all(|f| f.row != *i))?;
     let (a, b) = put_in(system, &found, keep, last);
@@ -56,21 +58,42 @@ pub fn steps(
     Some((steps, last))
 }
 
-/// The rows in the order a student solves them: each the first not used that brings in
-/// one unknown besides the kept one and those found.
+/// Step 5's rows as its "Simplified" prints them (roots of squares taken by the initial
+/// signs, coordinates a constraint holds put in), as a linear system.
+fn as_printed(derivation: &Derivation) -> Option<LinearSystem> {
+    let model = &derivation.model;
+    let sign = super::tex::initial_sign(model);
+    let held = super::on_constraint::held_coordinates(model);
+    let unknowns = derivation.system.unknowns.clone();
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for row in &derivation.rows {
+        let e = roots_of_squares(&simplify(&row.expression), &sign);
+        let e = super::on_constraint::on_the_constraints(&e, &held);
+        let (coefficients, rest) = linear_split(&e, &unknowns).ok()?;
+        a.push(coefficients.iter().map(simplify).collect());
+        b.push(simplify(&-&rest));
+    }
+    Some(LinearSystem { unknowns, a, b })
+}
+
+/// The rows in the order a student solves them: each a row not used that brings in one
+/// unknown besides the kept one and those found, an acceleration before a reaction and a
+/// row without the kept acceleration first (the row that drives it is left to the end).
 fn order(system: &LinearSystem, keep: usize) -> Option<Vec<Found>> {
     let n = system.unknowns.len();
     let mut found: Vec<Found> = Vec::new();
     while found.len() < n - 1 {
         let known = |j: usize| j == keep || found.iter().any(|f| f.unknown == j);
+        let reaction = |j: usize| matches!(system.unknowns[j], Symbol::Unknown(_));
         let (row, unknown) = (0..n)
             .filter(|i| found.iter().all(|f| f.row != *i))
-            .find_map(|i| {
+            .filter_map(|i| {
                 let new: Vec<usize> = (0..n)
                     .filter(|&j| !system.a[i][j].is_zero() && !known(j))
                     .collect();
                 (new.len() == 1).then(|| (i, new[0]))
-            })?;
+            })
+            .min_by_key(|&(i, j)| (reaction(j), !system.a[i][keep].is_zero(), i))?;
         let a = &system.a[row];
         let pivot = &a[unknown];
         let others: Vec<Expr> = (0..n)

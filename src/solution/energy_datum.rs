@@ -1,8 +1,7 @@
 //! Where the potential energy of an energy answer is zero, said beside the value: an
 //! energy without its datum means nothing. Said only where the answer at the start equals
-//! the energy the simulation measures from the problem's datum (gravity's from the height
-//! of the ground's origin, springs' from their free lengths), so that the datum named is
-//! the one the answer uses.
+//! the kinetic energy plus gravity's potential measured from the height of the ground's
+//! origin, so that the datum named is the one the answer uses.
 
 use crate::mechanics::SiteKind;
 use crate::problem::{BodyId, LoadKind};
@@ -28,16 +27,29 @@ fn origin_name(worked: &Worked) -> String {
     }
 }
 
+/// The potential energy of gravity at the start, zero at the height of N's origin:
+/// −Σ m g · r*, each mass centre from the origin.
+fn gravity_potential(worked: &Worked) -> Option<f64> {
+    let model = &worked.derivation.model;
+    let g = crate::mechanics::vector_of(model.problem.gravity.as_ref()?);
+    let values = model.values_at(0.0, &worked.q0, &worked.rates0);
+    let v: f64 = (model.problem.body_ids())
+        .map(|b| {
+            let body = &model.bodies[b.0];
+            let height = body.center.position.dot(&g, &model.frames);
+            -crate::symbolic::eval(&body.mass, &values) * crate::symbolic::eval(&height, &values)
+        })
+        .sum();
+    Some(v)
+}
+
 /// The sentence for an energy `value` given at the start; `None` where the simulation did
-/// not run or measures another energy.
+/// not run, the problem has springs, or the value is not T + V with V zero at the height of
+/// the ground's origin.
 pub fn sentence(worked: &Worked, value: f64) -> Option<String> {
     let Some(Ok((trajectory, _))) = &worked.simulation else {
         return None;
     };
-    let total = trajectory.series("total")?.first()?.1 + trajectory.potential_at_start;
-    if (total - value).abs() > 1e-9 * value.abs().max(1e-9) {
-        return None;
-    }
     let problem = worked.derivation.model.problem;
     let springs = (problem.loads.iter()).any(|l| {
         matches!(
@@ -45,15 +57,16 @@ pub fn sentence(worked: &Worked, value: f64) -> Option<String> {
             LoadKind::Spring { .. } | LoadKind::JointSpring { .. }
         )
     });
-    let gravity = problem.gravity.is_some();
-    let datum = match (gravity, springs) {
-        (true, false) => format!("$V$ is zero at the height of {}", origin_name(worked)),
-        (true, true) => format!(
-            "$V$ is zero at the height of {} with the springs at their free lengths",
-            origin_name(worked)
-        ),
-        (false, true) => "$V$ is zero with the springs at their free lengths".into(),
-        (false, false) => return None,
-    };
-    Some(format!("{datum}."))
+    if springs {
+        return None;
+    }
+    let kinetic = trajectory.series("kinetic")?.first()?.1;
+    let total = kinetic + gravity_potential(worked)?;
+    if (total - value).abs() > 1e-9 * value.abs().max(1e-9) {
+        return None;
+    }
+    Some(format!(
+        "$V$ is zero at the height of {}.",
+        origin_name(worked)
+    ))
 }

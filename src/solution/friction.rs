@@ -54,7 +54,7 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
             let mu = latex(&site.coefficient);
             let steps = steps(state, &names, (&normal, &size, noun), &rows, &mu);
             FrictionView {
-                site: site.name.clone(),
+                site: super::force_labels::place(&site.name),
                 coefficient: fixed(state.coefficient),
                 steps,
             }

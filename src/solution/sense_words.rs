@@ -5,7 +5,7 @@
 
 use crate::problem::{ConstraintKind, Problem, QuestionKind};
 use crate::render::context::FreeBody;
-use crate::render::AnswerView;
+use crate::render::{AnswerStep, AnswerView};
 
 /// How the answers say the sign rule where a free body draws the components.
 pub const DRAWN_RULE: &str =
@@ -34,21 +34,27 @@ fn carried(problem: &Problem, site: usize, shown: &[(String, String)]) -> String
     })
 }
 
-/// The point's name (`U`) and each component's unit vector (`\hat{\mathbf{c}}_{x}`) as the
-/// answer's values print them: `\mathbf{F}^{U} \cdot \hat{\mathbf{c}}_{x} = …`.
-fn printed_parts(view: &AnswerView) -> Option<(String, Vec<String>)> {
-    let mut name = None;
+/// Each component's unit vector (`\hat{\mathbf{c}}_{x}`) as the answer's values print
+/// them: `\mathbf{F}^{U} \cdot \hat{\mathbf{c}}_{x} = …`; `None` for a moment's.
+fn printed_units(view: &AnswerView) -> Option<Vec<String>> {
     let mut units = Vec::new();
     for value in &view.values_tex {
         let v = value.as_str();
-        let rest = v.strip_prefix("\\mathbf{F}^{")?;
-        let end = rest.find('}')?;
-        name.get_or_insert_with(|| rest[..end].to_string());
-        let after = &rest[end..];
-        let unit = after.split("\\cdot ").nth(1)?.split(" =").next()?.trim();
+        if !v.starts_with("\\mathbf{F}^{") {
+            return None;
+        }
+        let unit = v.split("\\cdot ").nth(1)?.split(" =").next()?.trim();
         units.push(unit.to_string());
     }
-    name.map(|n| (n, units))
+    Some(units)
+}
+
+/// A step of working in the answer's markup.
+fn step(text: String) -> AnswerStep {
+    AnswerStep {
+        text: text.into(),
+        math: String::new().into(),
+    }
 }
 
 /// Whether some free body drawn carries the point's reaction as a force of its own.
@@ -74,22 +80,32 @@ pub fn say_undrawn_senses(
         let Some(at) = view.note.find(DRAWN_RULE) else {
             continue;
         };
-        let Some((name, units)) = printed_parts(view) else {
+        let Some(units) = printed_units(view) else {
             continue;
         };
-        if drawn(free_bodies, &name) {
+        let tex = crate::symbolic::latex_name(problem.site_name(site));
+        if drawn(free_bodies, &tex) {
             continue;
         }
+        let name = super::force_labels::shown_name(problem.site_name(site), shown);
+        let name = match name.chars().all(|c| c.is_ascii_alphanumeric()) {
+            true => format!("${}$", crate::symbolic::latex_name(&name)),
+            false => super::force_labels::place(&name),
+        };
         let body = carried(problem, site, shown);
-        let before = view.note[..at].to_string();
-        let rule = &view.note[at + DRAWN_RULE.len()..];
+        let before = view.note[..at].trim_end().to_string();
+        let rule = view.note[at + DRAWN_RULE.len()..].to_string();
         let parts: Vec<String> = (rule.trim_end_matches('.').split("; "))
             .zip(&units)
             .map(|(part, unit)| sense_in_words(part, &body, unit))
             .collect();
-        view.note = format!(
-            "{before}No free body drawn shows the force at {name} by itself: {}.",
-            parts.join("; ")
+        view.note = before;
+        view.steps.insert(
+            0,
+            step(format!(
+                "No free body drawn shows the force at {name} by itself: {}.",
+                parts.join("; ")
+            )),
         );
     }
 }
@@ -155,10 +171,7 @@ pub fn say_third_law(problem: &Problem, shown: &[(String, String)], views: &mut 
             name(body),
             name(on)
         );
-        view.note = [view.note.as_str(), sentence.as_str()]
-            .join(" ")
-            .trim()
-            .to_string();
+        view.steps.push(step(sentence));
     }
 }
 

@@ -19,13 +19,18 @@ fn rows_list(rows: &[usize]) -> String {
 /// The check of question `index`, a steady motion, from step 5's rows; `None` where its
 /// rows are not written (Kane's by composite bodies) or no rate is held at zero.
 pub fn sentence(derivation: &Derivation, problem: &Problem, index: usize) -> Option<String> {
-    let QuestionKind::Steady { zero, .. } = &problem.questions.get(index)?.kind else {
+    let question = problem.questions.get(index)?;
+    let QuestionKind::Steady { zero, unknowns } = &question.kind else {
         return None;
     };
-    let held: Vec<&Symbol> = (zero.iter())
-        .filter_map(|(e, _)| e.as_symbol())
-        .filter(|s| matches!(s, Symbol::Coord(_, 1)))
-        .collect();
+    // The rates the motion holds at zero: given so at its state, or asked to vanish.
+    let given = (question.at.state.iter().flatten())
+        .filter(|(e, x)| e.order == 1 && *x == 0.0 && !unknowns.contains(e))
+        .map(|(e, _)| problem.coordinate_symbol(e.coordinate, 1));
+    let asked = (zero.iter())
+        .filter_map(|(e, _)| e.as_symbol().cloned())
+        .filter(|s| matches!(s, Symbol::Coord(_, 1)));
+    let held: Vec<Symbol> = given.chain(asked).collect();
     let second: Vec<String> = (zero.iter())
         .filter(|(e, _)| matches!(e.as_symbol(), Some(Symbol::Coord(_, 2))))
         .map(|(e, _)| latex(e))
@@ -43,7 +48,7 @@ pub fn sentence(derivation: &Derivation, problem: &Problem, index: usize) -> Opt
     }
     let put_in = |e: &Expr| {
         simplify(&substitute(e, &|s: &Symbol| {
-            held.contains(&s).then(Expr::zero)
+            held.contains(s).then(Expr::zero)
         }))
     };
     let (vanish, by_identity): (Vec<usize>, Vec<usize>) = free
@@ -51,7 +56,7 @@ pub fn sentence(derivation: &Derivation, problem: &Problem, index: usize) -> Opt
         .copied()
         .partition(|&i| put_in(&system.b[i]).is_zero());
     let held_tex: Vec<String> = (held.iter())
-        .map(|s| format!("{} = 0", latex(&Expr::sym((*s).clone()))))
+        .map(|s| format!("{} = 0", latex(&Expr::sym(s.clone()))))
         .collect();
     let mut parts = Vec::new();
     if !vanish.is_empty() {
