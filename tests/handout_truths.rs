@@ -65,11 +65,11 @@ fn a_reaction_inside_a_composite_free_body_has_its_sense_in_words() {
     assert!(!answers.contains("acts as drawn"), "{answers}");
     // Both components came out positive (friction 2.18 N, normal 19.62 N on the disc).
     assert!(
-        answers.contains("so it acts on D along $+\\hat{\\mathbf{c}}_{x}$"),
+        answers.contains("it acts on D along $+\\hat{\\mathbf{c}}_{x}$"),
         "{answers}"
     );
     assert!(
-        answers.contains("so it acts on D along $+\\hat{\\mathbf{c}}_{y}$"),
+        answers.contains("it acts on D along $+\\hat{\\mathbf{c}}_{y}$"),
         "{answers}"
     );
     // The cart carries the opposite force: −(2.18182, 19.62) in C's unit vectors.

@@ -175,8 +175,8 @@ pub fn say_third_law(problem: &Problem, shown: &[(String, String)], views: &mut 
     }
 }
 
-/// `the force along x is positive, so it acts as drawn` as `the force along x is positive,
-/// so it acts on D along $+\hat{\mathbf{c}}_{x}$`.
+/// `the force along x is positive, so it acts as drawn` as `the force along x is positive:
+/// it acts on D along $+\hat{\mathbf{c}}_{x}$`.
 fn sense_in_words(part: &str, body: &str, unit: &str) -> String {
     let (what, positive) = match part.split_once(" is ") {
         Some((what, rest)) => (what, rest.starts_with("positive")),
@@ -184,7 +184,7 @@ fn sense_in_words(part: &str, body: &str, unit: &str) -> String {
     };
     let sign = if positive { "+" } else { "-" };
     let sign_word = if positive { "positive" } else { "negative" };
-    format!("{what} is {sign_word}, so it acts on {body} along ${sign}{unit}$")
+    format!("{what} is {sign_word}: it acts on {body} along ${sign}{unit}$")
 }
 
 #[cfg(test)]
@@ -199,7 +199,7 @@ mod tests {
                 "D",
                 "\\hat{\\mathbf{c}}_{x}"
             ),
-            "the force along x is negative, so it acts on D along $-\\hat{\\mathbf{c}}_{x}$"
+            "the force along x is negative: it acts on D along $-\\hat{\\mathbf{c}}_{x}$"
         );
     }
 }
