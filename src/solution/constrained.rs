@@ -269,14 +269,7 @@ pub fn dependent_speeds(
         .map(Math::from)
         .collect();
     // Relations in symbols hold at every state: the values at the start are said apart.
-    let start: Vec<String> = (dependent.iter())
-        .map(|&s| format!("{} = {}", rate(s), fixed_or_zero(rates[s])))
-        .collect();
-    // Relations that are values already (ẏ = 0) hold at the start as written.
-    let start_tex = match &symbolic {
-        Some(written) if *written != start => Math::all(start),
-        _ => Vec::new(),
-    };
+    let start_tex = start_values(problem, &dependent, rates, symbolic.as_deref());
     let relations_tex = match symbolic {
         Some(written) => written.into_iter().map(Math::from).collect(),
         None => relations_tex,
@@ -337,6 +330,24 @@ pub fn dependent_speeds(
         start_tex,
         ..DependentSpeeds::default()
     })
+}
+
+/// Where the relations are written in symbols (they hold in general), each dependent
+/// rate's value at the start, unless the relations are those values already (ẏ = 0).
+fn start_values(
+    problem: &crate::problem::Problem,
+    dependent: &[usize],
+    rates: &[f64],
+    symbolic: Option<&[String]>,
+) -> Vec<Math> {
+    let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
+    let start: Vec<String> = (dependent.iter())
+        .map(|&s| format!("{} = {}", rate(s), fixed_or_zero(rates[s])))
+        .collect();
+    match symbolic {
+        Some(written) if written != start.as_slice() => Math::all(start),
+        _ => Vec::new(),
+    }
 }
 
 /// `text` with each `q1` or `x'` between backquotes written as the math of that coordinate

@@ -36,7 +36,8 @@ pub fn steps(
         return None;
     }
     let n = derivation.system.unknowns.len();
-    if derivation.system.a.len() != n || n > MOST_ROWS || n < 2 || derivation.rows.len() != n {
+    if derivation.system.a.len() != n || !(2..=MOST_ROWS).contains(&n) || derivation.rows.len() != n
+    {
         return None;
     }
     let system = &as_printed(derivation)?;
