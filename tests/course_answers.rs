@@ -49,7 +49,7 @@ fn the_bowling_ball_slips_at_release_and_says_why() {
     let text = explain("bowling-ball", &["--format", "markdown"]);
     let answers = &text[text.find("## Answers").expect("Answers")..];
     assert!(
-        answers.contains("yes: the contact point at lane slides"),
+        answers.contains("yes: the contact point at the lane slides"),
         "{answers}"
     );
     assert!(!answers.contains("at rest, every friction site sticking"));

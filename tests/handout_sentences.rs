@@ -126,7 +126,9 @@ fn the_skidding_ball_is_solved_with_the_sliding_law_not_the_no_slip_row() {
         "{text}"
     );
     assert!(
-        text.contains("While the contact at lane slides, the no-slip row (4) does not hold."),
+        text.contains(
+            "While the contact at the lane slides, row (4) is the sliding law, not the no-slip row"
+        ),
         "the sliding order is not said"
     );
     // The table of initial values is whole: ẍ and θ̈ beside ÿ.
@@ -185,7 +187,7 @@ fn the_disc_in_the_cylinder_finishes_its_algebra_with_the_distance_kept() {
     // With x² + y² = (R − r)², θ̇ = ẋ y/(r(R − r)) + x² ẋ/(r y (R − r)) is (R − r) ẋ/(r y).
     let relation = text
         .lines()
-        .find(|l| l.contains("at the initial state, $\\dot{y}"))
+        .find(|l| l.contains("in general, $\\dot{y}"))
         .expect("the dependent rates");
     let theta = &relation[relation.find("$\\dot{\\theta} = ").expect("θ̇")..];
     assert!(!theta.contains(" + "), "θ̇ not finished: {theta}");

@@ -22,6 +22,7 @@ mod grade;
 mod handout_names;
 mod handout_pages;
 mod handout_sentences;
+mod handout_truths;
 mod handouts_in_browser;
 mod house_rules;
 mod impact;

@@ -161,13 +161,14 @@ fn the_rows_written_by_name_are_given_by_their_values_beside_the_pattern() {
     // hub, (r_R − r_F) θ̇, and rolls the front wheel on, r_F θ̇, so r_R = 0.3 in all; the
     // front wheel's spin, r_F = 0.35; yaw, lean and steer move it sideways or not at all.
     let expected = [
-        ("A_{28,1}", 1.0),
-        ("A_{28,4}", 0.0),
-        ("A_{28,5}", 0.0),
-        ("A_{28,6}", 0.3),
-        ("A_{28,8}", 0.0),
-        ("A_{28,9}", 0.35),
-        // The bicycle's one-letter names take b, f, h and w: its right-hand side is z.
+        ("U_{28,1}", 1.0),
+        ("U_{28,4}", 0.0),
+        ("U_{28,5}", 0.0),
+        ("U_{28,6}", 0.3),
+        ("U_{28,8}", 0.0),
+        ("U_{28,9}", 0.35),
+        // The bicycle's one-letter names take b, f, h and w: the system and its
+        // right-hand side are the pair U, z.
         ("z_{28}", 0.0),
     ];
     let got = row(28);
@@ -177,7 +178,7 @@ fn the_rows_written_by_name_are_given_by_their_values_beside_the_pattern() {
         assert!((value - want).abs() < 1e-9, "{name} = {value}, not {want}");
     }
     // Each value printed is a dot of the table, and the other rows' values are not listed.
-    for (name, _) in got.iter().filter(|(n, _)| n.starts_with("A_")) {
+    for (name, _) in got.iter().filter(|(n, _)| n.starts_with("U_")) {
         let j: usize = name[6..name.len() - 1].parse().expect("a column");
         assert!(dots.contains(&(28, j)), "{name}");
     }

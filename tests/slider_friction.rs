@@ -316,7 +316,7 @@ fn a_bead_on_a_rough_rail_across_a_free_cart_agrees_with_a_fixed_point_worked_by
 fn explain_shows_the_slider_s_assumption_check_and_second_solve() {
     let text = crate::support::explain("block-on-rough-slide", &[]);
     for wanted in [
-        "**Friction at slope",
+        "**Friction at the slope",
         "The slider is at rest relative to the surface at this state. Assume that it sticks",
         "The check fails: friction cannot hold the slider, and it slips.",
         "= 9.81\\ \\mathrm{N} > \\mu",

@@ -121,12 +121,19 @@ fn directions(
         let joint = &problem.joints[j];
         let motion = &model.joints[j].motion;
         if let Some(axis) = &motion.written_axis {
+            // An axis along a unit vector of its frame is written as that unit vector.
+            let along = (0..3)
+                .find(|&k| axis[k].is_one())
+                .filter(|&k| (0..3).all(|i| i == k || axis[i].is_zero()));
             let d = Direction {
                 name: format!("axis of {}", joint.name),
-                latex: format!(
-                    "\\hat{{\\mathbf{{e}}}}_{{{}}}",
-                    crate::symbolic::latex_name(&joint.name)
-                ),
+                latex: match along {
+                    Some(k) => unit_direction(model, joint.parent, k).latex,
+                    None => format!(
+                        "\\hat{{\\mathbf{{e}}}}_{{{}}}",
+                        crate::symbolic::latex_name(&joint.name)
+                    ),
+                },
                 vector: Vector::new(joint.parent, axis.clone()),
             };
             if matches!(joint.kind, JointKind::Prismatic | JointKind::Cylindrical) {

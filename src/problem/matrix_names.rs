@@ -41,10 +41,21 @@ impl MatrixNames {
     /// compared without case (body B's unit vectors are b̂): the last of a list when all
     /// are taken.
     pub fn of(problem: &Problem) -> MatrixNames {
+        let used = used_letters(problem);
+        let is_free = |name: &str| {
+            let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
+            !used.contains(&letter)
+        };
+        // The system and its right-hand side as a pair (A x = b, S x = f) where one is free.
+        let pair = (SYSTEM.iter().zip(RIGHT_SIDE)).find(|(a, b)| is_free(a) && is_free(b));
+        let (a, b) = match pair {
+            Some((a, b)) => (a.to_string(), b.to_string()),
+            None => (first_free(&used, &SYSTEM), first_free(&used, &RIGHT_SIDE)),
+        };
         MatrixNames {
-            a: free_letter(problem, &SYSTEM),
-            b: free_letter(problem, &RIGHT_SIDE),
-            c: free_letter(problem, &DEPENDENT),
+            a,
+            b,
+            c: first_free(&used, &DEPENDENT),
         }
     }
 }
@@ -53,14 +64,11 @@ impl MatrixNames {
 /// without case (body B's unit vectors are b̂): the last of the list when all are taken.
 /// A general symbol of a formula (the point of Kane's `R_P`) is named so too.
 pub fn free_letter(problem: &Problem, letters: &[&str]) -> String {
-    // A name prints as one letter (with any index, `B`, `b1`, `m_2`) or as a word
-    // (`bob`, upright): only a letter can be read as the symbol's.
-    let used: Vec<char> = used_names(problem)
-        .filter_map(|n| {
-            let stem: Vec<char> = n.chars().take_while(char::is_ascii_alphabetic).collect();
-            (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
-        })
-        .collect();
+    first_free(&used_letters(problem), letters)
+}
+
+/// The first of `letters` whose letter (small) is not in `used`; the last when all are.
+fn first_free(used: &[char], letters: &[&str]) -> String {
     let first = letters.iter().find(|name| {
         let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
         !used.contains(&letter)
@@ -70,6 +78,41 @@ pub fn free_letter(problem: &Problem, letters: &[&str]) -> String {
         .copied()
         .unwrap_or_default()
         .to_string()
+}
+
+/// The letters (small) the handout prints as names: a name prints as one letter (with any
+/// index, `B`, `b1`, `m_2`) or as a word (`bob`, upright), and only a letter can be read as
+/// a matrix's or a formula's symbol; the spin frame a handout adds counts too.
+fn used_letters(problem: &Problem) -> Vec<char> {
+    let mut used: Vec<char> = used_names(problem)
+        .filter_map(|n| {
+            let stem: Vec<char> = n.chars().take_while(char::is_ascii_alphabetic).collect();
+            (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
+        })
+        .collect();
+    used.extend(spin_frame_letter(problem));
+    used
+}
+
+/// The letter (small) of the frame a handout adds for a body spinning about its symmetry
+/// axis on a joint of several turns (Resal's frame): the first capital that names no body,
+/// as the kinematics takes it. Only in space, where a joint turns about more than one axis.
+fn spin_frame_letter(problem: &Problem) -> Option<char> {
+    use super::JointKind;
+    let turns = problem.joints.iter().any(|j| {
+        matches!(
+            j.kind,
+            JointKind::Spherical | JointKind::Universal | JointKind::Free
+        )
+    });
+    if problem.dimension != super::Dimension::Three || !turns {
+        return None;
+    }
+    let taken =
+        |c: char| (problem.bodies.iter()).any(|b| b.name.eq_ignore_ascii_case(&c.to_string()));
+    ('A'..='Z')
+        .find(|&c| c != 'N' && !taken(c))
+        .map(|c| c.to_ascii_lowercase())
 }
 
 /// Every name a handout prints for the problem: bodies (and their frames), joints and

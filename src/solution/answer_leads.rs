@@ -66,6 +66,6 @@ pub fn stops_slipping(problem: &crate::problem::Problem, site: usize) -> String 
     let then = if rolls { "starts to roll" } else { "sticks" };
     format!(
         "the instant the contact at {} stops slipping and {then}",
-        name.replace('_', " ")
+        super::force_labels::place(name)
     )
 }

@@ -443,10 +443,5 @@ fn sense_note(
             Some(format!("the {what} along {axis} is {sense}"))
         })
         .collect();
-    (!parts.is_empty()).then(|| {
-        format!(
-            "The free bodies draw each unknown component along its positive unit vector: {}.",
-            parts.join("; ")
-        )
-    })
+    (!parts.is_empty()).then(|| format!("{}{}.", super::sense_words::DRAWN_RULE, parts.join("; ")))
 }

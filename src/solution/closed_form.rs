@@ -139,10 +139,24 @@ pub fn value_steps(
         _ => "the equations of step 5 with the reactions and the other accelerations eliminated",
     };
     let close = |x: f64| (x - found).abs() <= 1e-6 * found.abs().max(1e-9);
-    let mut steps = vec![step(
-        format!("One degree of freedom, ${}$. Its equation of motion free of the reactions ({words}) has coefficients free of the coordinates and rates,", latex(&problem.coordinate_expr(k, 0))),
-        format!("{} \\, {} = {}", grouped(&a), latex(&qk), latex(&b)),
-    )];
+    let equation = format!("{} \\, {} = {}", grouped(&a), latex(&qk), latex(&b));
+    let kept = (worked.derivation.system.unknowns.iter()).position(
+        |u| matches!(u, Symbol::Coord(c, 2) if &**c == problem.coordinates[k].name.as_str()),
+    );
+    let eliminated =
+        kept.and_then(|keep| super::elimination::steps(&worked.derivation, keep, &v, bn / an));
+    let mut steps = match eliminated {
+        // The elimination written out, row by row, then what is left.
+        Some((mut steps, last)) => {
+            steps.insert(0, step(format!("One degree of freedom, ${}$. The reactions and the other accelerations are eliminated from the equations of step 5, one row at a time:", latex(&problem.coordinate_expr(k, 0))), String::new()));
+            steps.push(step(format!("Put into row ({}), these leave one equation of motion, free of the reactions, whose coefficients are free of the coordinates and rates:", last + 1), equation));
+            steps
+        }
+        None => vec![step(
+            format!("One degree of freedom, ${}$. Its equation of motion free of the reactions ({words}) has coefficients free of the coordinates and rates,", latex(&problem.coordinate_expr(k, 0))),
+            equation,
+        )],
+    };
     // b/a as written, or simplified where that is shorter (T r/(I + M r²)).
     let quotient = [
         format!("\\frac{{{}}}{{{}}}", latex(&b), latex(&a)),

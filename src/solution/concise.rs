@@ -35,8 +35,7 @@ fn gives_reaction(value: &str, joint: &str) -> bool {
 }
 
 /// How a reaction's sign reads, said in full at the first answer and briefly after it.
-const SENSE_RULE: &str =
-    "The free bodies draw each unknown component along its positive unit vector: ";
+const SENSE_RULE: &str = super::sense_words::DRAWN_RULE;
 
 /// The sign rule of reactions in full at its first answer; later answers say only which
 /// components act as drawn.

@@ -74,6 +74,13 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
             continue;
         };
         let (late, start) = (late.1, start.1);
+        // The datum of V, beside the energy at the start.
+        if let Some(datum) = super::energy_datum::sentence(worked, start) {
+            views[k].steps.push(crate::render::AnswerStep {
+                text: datum.into(),
+                math: String::new().into(),
+            });
+        }
         let relative = (late - start).abs() / start.abs().max(1e-12);
         let time = fixed(problem.questions[i].at.time.unwrap_or(0.0));
         let constant = relative <= 1e-6;

@@ -9,7 +9,7 @@ use crate::problem::BodyId;
 use crate::render::context::{ConstraintView, DependentSpeeds};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::{
-    fixed, latex, latex_collected, latex_name, roots_of_squares, simplify, Symbol,
+    fixed, fixed_or_zero, latex, latex_collected, latex_name, roots_of_squares, simplify, Symbol,
 };
 
 /// The longest equation (LaTeX characters) the constraint table's narrow column holds;
@@ -97,7 +97,8 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             None => "the line of centres, divided by the distance the constraint keeps, is a unit vector".into(),
         };
         format!(
-            "Wherever the distance constraint of {name} holds, ${}$: {unit}. Its rows, and the equations below where that shortens them, are written with it.",
+            "Wherever the distance constraint of {} holds, ${}$: {unit}. The rows below write the distance between the centres as the constant it keeps, not as a root of squares.",
+            super::force_labels::place(name),
             relation.latex()
         )
     }));
@@ -251,6 +252,8 @@ pub fn dependent_speeds(
         })
         .map(Math::from)
         .collect();
+    // Relations in symbols hold at every state: the values at the start are said apart.
+    let start_tex = start_values(problem, &dependent, rates, symbolic.as_deref());
     let relations_tex = match symbolic {
         Some(written) => written.into_iter().map(Math::from).collect(),
         None => relations_tex,
@@ -308,8 +311,27 @@ pub fn dependent_speeds(
                 .unwrap_or_default(),
         ),
         time_terms: problem.moves_with_time(),
+        start_tex,
         ..DependentSpeeds::default()
     })
+}
+
+/// Where the relations are written in symbols (they hold in general), each dependent
+/// rate's value at the start, unless the relations are those values already (ẏ = 0).
+fn start_values(
+    problem: &crate::problem::Problem,
+    dependent: &[usize],
+    rates: &[f64],
+    symbolic: Option<&[String]>,
+) -> Vec<Math> {
+    let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
+    let start: Vec<String> = (dependent.iter())
+        .map(|&s| format!("{} = {}", rate(s), fixed_or_zero(rates[s])))
+        .collect();
+    match symbolic {
+        Some(written) if written != start.as_slice() => Math::all(start),
+        _ => Vec::new(),
+    }
 }
 
 /// `text` with each `q1` or `x'` between backquotes written as the math of that coordinate

@@ -25,6 +25,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     // The constraints of step 1 and steps 2 to 5 write sines and cosines of the angles as
     // s_1, c_12, listed once where they are first used.
     let style = coordinates_style(problem);
+    // A contact sliding at the start: the sliding law in place of its no-slip row.
+    let sliding = super::sliding_rows::sliding_rows(derivation, &worked.initial.friction);
     let (_, abbreviations) = crate::symbolic::with_style(style, || {
         let constraint_notes;
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
@@ -64,7 +66,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         };
         let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
         let initial = |e: &Expr| crate::symbolic::eval(e, &at_start);
-        solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial);
+        solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial, &sliding);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kane_theory = super::kane_theory::theory(derivation);
         let mut definitions = kinematic_definitions(derivation);
@@ -78,6 +80,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.dependent_speeds =
             super::constrained::dependent_speeds(derivation, &worked.q0, &worked.rates0);
     });
+    super::sliding_rows::replace_rows(solution, derivation, &sliding);
     // Only those the solution prints: a text formed and then given up (an entry given by
     // value, a row too long to write whole) records its abbreviations too.
     let printed = serde_json::to_string(&*solution).unwrap_or_default();
@@ -94,6 +97,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         })
         .collect();
     (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
+    said_axes_only_where_used(solution);
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
     let marks = super::initial_state::assembled(&mut solution.coordinates, problem, q0, rates0);
     if let Some(note) = marks {
@@ -104,23 +108,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     (solution.constraint_notes).extend(MarkupLine::all(super::initial_state::branches(
         model, q0, rates0,
     )));
-    solution.initial_values = problem
-        .coordinates
-        .iter()
-        .enumerate()
-        .map(|(i, c)| InitialValue {
-            name_tex: Math::from(latex(&problem.coordinate_expr(i, 2))),
-            value: fixed_or_zero(initial.accelerations[i]),
-            unit_tex: match c.kind {
-                crate::problem::CoordinateKind::Angle => {
-                    Math::from(crate::render::unit_tex("rad/s^2"))
-                }
-                crate::problem::CoordinateKind::Distance => {
-                    Math::from(crate::render::unit_tex("m/s^2"))
-                }
-            },
-        })
-        .collect();
+    solution.initial_values = initial_accelerations(problem, &initial.accelerations);
     solution
         .initial_values
         .extend(tensions(derivation, q0, rates0, &initial.reactions));
@@ -136,6 +124,48 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     if let Some(simulated) = &worked.simulation {
         super::simulation::simulation(solution, problem, simulated);
     }
+}
+
+/// The table of the second derivatives at the initial state, each with its unit.
+fn initial_accelerations(
+    problem: &crate::problem::Problem,
+    accelerations: &[f64],
+) -> Vec<InitialValue> {
+    problem
+        .coordinates
+        .iter()
+        .enumerate()
+        .map(|(i, c)| InitialValue {
+            name_tex: Math::from(latex(&problem.coordinate_expr(i, 2))),
+            value: fixed_or_zero(accelerations[i]),
+            unit_tex: match c.kind {
+                crate::problem::CoordinateKind::Angle => {
+                    Math::from(crate::render::unit_tex("rad/s^2"))
+                }
+                crate::problem::CoordinateKind::Distance => {
+                    Math::from(crate::render::unit_tex("m/s^2"))
+                }
+            },
+        })
+        .collect()
+}
+
+/// A joint's axis is said in step 1 only where something else printed uses it.
+fn said_axes_only_where_used(solution: &mut Solution) {
+    let axes = std::mem::take(&mut solution.axes);
+    let printed = serde_json::to_string(&*solution).unwrap_or_default();
+    solution.axes = (axes.into_iter())
+        .filter(|a| {
+            let unit = a
+                .definition_tex
+                .as_str()
+                .split(' ')
+                .next()
+                .unwrap_or_default();
+            let quoted = serde_json::to_string(unit).unwrap_or_default();
+            printed.contains(quoted.trim_matches('"'))
+        })
+        .collect();
 }
 
 /// The reactions at the joints at the initial state, each in the simplest frame to write

@@ -13,6 +13,13 @@ fn number(x: f64) -> String {
     super::answer_numbers::number_tex(x)
 }
 
+/// Four significant figures: the words give the shape of the motion; the values above keep
+/// every digit.
+fn four(x: f64) -> String {
+    let rounded: f64 = format!("{x:.3e}").parse().unwrap_or(x);
+    number(rounded)
+}
+
 fn unit(problem: &Problem, i: usize, order: u8) -> String {
     super::answer_numbers::unit_tex(&coordinate_unit(problem, i, order))
 }
@@ -78,15 +85,15 @@ fn sentence(problem: &Problem, (k, rates): (usize, &[usize]), found: &Descriptio
     let mut words = format!(
         "Over the {} s simulated, ${q}$ oscillates between ${}{u}$ and ${}{u}$, about a mean of ${}{u}$ (amplitude ${}{u}$)",
         crate::symbolic::fixed(found.duration),
-        number(found.minimum),
-        number(found.maximum),
-        number(found.mean),
-        number(found.amplitude)
+        four(found.minimum),
+        four(found.maximum),
+        four(found.mean),
+        four(found.amplitude)
     );
     match found.period {
         Some(period) => words.push_str(&format!(
             ", once every $\\tau = {}\\ \\mathrm{{s}}$, measured between its successive maxima.",
-            number(period)
+            four(period)
         )),
         None => words.push_str(": it does not reach two maxima, so no period is measured."),
     }
@@ -96,8 +103,8 @@ fn sentence(problem: &Problem, (k, rates): (usize, &[usize]), found: &Descriptio
         let keeps = lo * hi > 0.0;
         words.push_str(&format!(
             " ${rate}$ stays between ${}$ and ${}{}$ and {}.",
-            number(*lo),
-            number(*hi),
+            four(*lo),
+            four(*hi),
             unit(problem, j, 1),
             match keeps {
                 true => format!("keeps its sign: ${name}$ never turns back (no loops)"),

@@ -54,7 +54,7 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
             let mu = latex(&site.coefficient);
             let steps = steps(state, &names, (&normal, &size, noun), &rows, &mu);
             FrictionView {
-                site: site.name.clone(),
+                site: super::force_labels::place(&site.name),
                 coefficient: fixed(state.coefficient),
                 steps,
             }
@@ -145,8 +145,12 @@ fn steps(
     if state.mode == Mode::Slip && state.failed_stick.is_none() {
         out.push(step(
             format!(
-                "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ|N| against the slip, and the no-slip row {rows} of the equations above does not hold; in its place, the sliding law:",
-                fixed(slip_speed)
+                "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ|N| against the slip, and the no-slip row does not hold; {}",
+                fixed(slip_speed),
+                match normal.contains("\\sqrt") {
+                    false => format!("row {rows} above is the sliding law in its place:"),
+                    true => format!("in place of row {rows} above, the sliding law:"),
+                }
             ),
             law_tex(names, normal, mu, state),
         ));

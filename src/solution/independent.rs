@@ -312,6 +312,7 @@ pub fn dependent_speeds(
         kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds, delta)),
         kane_kept_note: MarkupLine::from(String::new()),
         time_terms: problem.moves_with_time(),
+        start_tex: Vec::new(),
     }
 }
 

@@ -114,7 +114,8 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
             force: inertia_force,
             torque: None,
         }),
-        Sum::Moment { point, .. } => {
+        Sum::Moment { point, position } => {
+            let point = &super::moment_point::shown_point(&derivation.model, point, position);
             // About a body's own mass centre its inertia force has no moment.
             let about_own_centre = !many
                 && row
@@ -163,8 +164,9 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
     };
     let NamedInertia { sum, force, torque } = named;
     let inside = match (&row.sum, torque) {
-        (Sum::Moment { point, .. }, Some(torque)) => {
-            let point = super::tex::point_tex(point);
+        (Sum::Moment { point, position }, Some(torque)) => {
+            let point = super::moment_point::shown_point(&derivation.model, point, position);
+            let point = super::tex::point_tex(&point);
             let inertia = match force.as_str() {
                 "" => torque,
                 _ => format!("{force} + {torque}"),

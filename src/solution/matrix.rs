@@ -40,6 +40,7 @@ pub fn matrix(
     by_name: &[bool],
     shown: impl Fn(&Expr) -> Expr,
     initial: impl Fn(&Expr) -> f64,
+    sliding: &[super::sliding_rows::SlidingRow],
 ) -> MatrixForm {
     let names = MatrixNames::of(derivation.model.problem);
     // The tables head the right-hand side's column with its name.
@@ -58,12 +59,13 @@ pub fn matrix(
     let listed = |i: usize| !by_entries || by_name.get(i).copied().unwrap_or(true);
     let system = &super::kane::shown_system(derivation);
     let n = system.unknowns.len();
-    let a: Vec<Vec<Expr>> = system
+    let mut a: Vec<Vec<Expr>> = system
         .a
         .iter()
         .map(|row| row.iter().map(&shown).collect())
         .collect();
-    let b: Vec<Expr> = system.b.iter().map(&shown).collect();
+    let mut b: Vec<Expr> = system.b.iter().map(&shown).collect();
+    super::sliding_rows::replace_in_matrix(&system.unknowns, &mut a, &mut b, sliding);
     // Each row by its equation in step 5, beside its number ("Row 2, B: ΣM_P · â_z").
     let labels: Vec<String> = (0..a.len())
         .map(|i| row_heading_tex(derivation, i))

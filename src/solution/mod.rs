@@ -8,6 +8,7 @@
 //! scenes (laid out, [`draw_pictures`]), the answers and the checks. [`crate::render`] only writes
 //! it; this stage is the last one that reads the derivation.
 
+mod absent_constants;
 mod aligned;
 mod answer_leads;
 mod answer_numbers;
@@ -27,7 +28,10 @@ mod derived;
 mod describe_words;
 mod direction;
 mod eigen_plot;
+mod elimination;
+mod energy_datum;
 mod force_labels;
+mod force_moments;
 mod frames;
 mod free_bodies;
 mod friction;
@@ -50,6 +54,7 @@ mod long;
 mod loops;
 mod matrix;
 mod mode_shape;
+mod moment_point;
 mod named_identity;
 mod normal_sense;
 mod on_constraint;
@@ -61,10 +66,12 @@ mod rejected;
 mod relations;
 mod row_names;
 mod row_view;
+mod sense_words;
 mod settled;
 mod show_conditions;
 mod shown_names;
 mod simulation;
+mod sliding_rows;
 mod sliding_solve;
 mod solve_words;
 mod speeds;
@@ -72,6 +79,7 @@ mod spin_frames;
 mod stability_answers;
 mod static_answers;
 mod statics;
+mod steady_check;
 mod steady_force;
 mod switch_steps;
 mod tex;

@@ -58,8 +58,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                         view.at_note = "the conditions of the motion asked, put in below".into();
                     }
                     shown_derived &= derived(&steps);
-                    let check = super::show_conditions::check_sentence(problem, i, answer);
-                    check_last(view, steps, &check)
+                    check_last(view, steps)
                 }
                 QuestionKind::Steady { .. } => {
                     let v = values(problem, answer, &[]);
@@ -75,7 +74,11 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     if !steps.is_empty() && derived_all {
                         view.values_tex.clear();
                     }
-                    // The check that the motion is steady ends the answer.
+                    // The check that the motion is steady ends the answer, shown by the rows.
+                    if view.note.starts_with("Check:") {
+                        let shown = super::steady_check::sentence(derivation, problem, i);
+                        view.note = shown.unwrap_or(std::mem::take(&mut view.note));
+                    }
                     if !view.note.is_empty() {
                         steps.push(step(std::mem::take(&mut view.note), String::new()));
                     }
@@ -100,15 +103,13 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     super::constancy::attach(worked, answers, views);
 }
 
-/// A derived `show` checked after its derivation: the values of its two sides and
-/// whether they agree move from the head of the answer to its last step.
-fn check_last(view: &mut AnswerView, mut steps: Vec<AnswerStep>, check: &str) -> Vec<AnswerStep> {
+/// A derived `show` ends with its derivation: the values of its two sides at a state, and
+/// whether they agree, are dropped (they are left only where the working is not derived).
+fn check_last(view: &mut AnswerView, steps: Vec<AnswerStep>) -> Vec<AnswerStep> {
     if !derived(&steps) || view.values_tex.is_empty() {
         return steps;
     }
-    let sides: Vec<&str> = view.values_tex.iter().map(|m| m.as_str()).collect();
-    steps.push(step(check, sides.join(", \\qquad ")));
-    steps.push(step(view.note.clone(), String::new()));
+    // Derived to the form asked, a "show" needs no numbers: the sides evaluated add nothing.
     view.values_tex.clear();
     view.note.clear();
     steps

@@ -29,9 +29,20 @@ pub fn in_symbols(
     let problem = model.problem;
     let n = problem.coordinates.len();
     let symbols: Vec<_> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    // Each coefficient as step 1 prints it: a root of a square taken by the initial sign.
+    let sign = super::tex::initial_sign(model);
+    let printed = |c: Vec<Expr>| -> Vec<Expr> {
+        (c.iter())
+            .map(|e| crate::symbolic::roots_of_squares(&simplify(e), &sign))
+            .collect()
+    };
     let rows: Vec<Vec<Expr>> = (model.constraints.rows.iter())
         .filter(|r| !matches!(r.origin, RowOrigin::Prescribed(_)))
-        .map(|r| linear_split(&r.velocity, &symbols).ok().map(|(c, _)| c))
+        .map(|r| {
+            linear_split(&r.velocity, &symbols)
+                .ok()
+                .map(|(c, _)| printed(c))
+        })
         .collect::<Option<Vec<Vec<Expr>>>>()?
         .into_iter()
         // A row without rates constrains none of them.

@@ -3,6 +3,7 @@
 //! equation of a coordinate, or what a constraint row constrains and along which direction.
 
 use super::direction::simplest_tex;
+use super::force_labels::place;
 use super::tex::{bodies_tex_short, point_tex};
 use crate::equations::Derivation;
 use crate::mechanics::{Model, RowOrigin};
@@ -34,7 +35,14 @@ pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
 pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
     match sum {
         Sum::Force => "\\sum \\mathbf{F}".into(),
-        Sum::Moment { point, .. } => format!("\\sum \\mathbf{{M}}_{{{}}}", point_tex(point)),
+        Sum::Moment { point, position } => format!(
+            "\\sum \\mathbf{{M}}_{{{}}}",
+            point_tex(&super::moment_point::shown_point(
+                &derivation.model,
+                point,
+                position
+            ))
+        ),
         Sum::Generalized { .. } if derivation.method == crate::equations::Method::Lagrange => {
             super::lagrange::equation_tex(derivation, sum).unwrap_or_default()
         }
@@ -84,7 +92,7 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
         .find(|f| f.stick.iter().any(|r| r.name == name));
     if let Some(site) = sticking {
         // A friction site's no-slip row holds only while it sticks (rolls).
-        return text(format!("no slip at {} while it sticks", site.name));
+        return text(format!("no slip at {} while it sticks", place(&site.name)));
     }
     let row = model.constraints.rows.iter().find(|r| r.name == name);
     match row.map(|r| &r.origin) {
@@ -100,16 +108,19 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
                 let holonomic = row.is_some_and(|r| r.position.is_some());
                 let gear = matches!(kind, Some(crate::problem::ConstraintKind::Gear { .. }));
                 match (gear, holonomic) {
-                    (false, true) => text(format!("no penetration at {}", s.name)),
-                    (false, false) => text(format!("no slip at {}", s.name)),
-                    (true, true) => text(format!("distance between the centres at {}", s.name)),
-                    (true, false) => text(format!("no slip at {}", s.name)),
+                    (false, true) => text(format!("no penetration at {}", place(&s.name))),
+                    (false, false) => text(format!("no slip at {}", place(&s.name))),
+                    (true, true) => text(format!(
+                        "distance between the centres at {}",
+                        place(&s.name)
+                    )),
+                    (true, false) => text(format!("no slip at {}", place(&s.name))),
                 }
             }
             Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
-                text(format!("loop closure at {}", s.name))
+                text(format!("loop closure at {}", place(&s.name)))
             }
-            Some(s) => text(format!("constraint at {}", s.name)),
+            Some(s) => text(format!("constraint at {}", place(&s.name))),
             None => text(format!("constraint {name}")),
         },
         Some(RowOrigin::Position(_)) => text(format!("position constraint {name}")),

@@ -1,5 +1,4 @@
-//! The conditions a `show` puts into the equations of step 5, and where its identity is
-//! checked with numbers.
+//! The conditions a `show` puts into the equations of step 5.
 //!
 //! A `show` with `assuming` states the motion it is asked of (steady precession: θ̇ = 0,
 //! θ̈ = 0, ψ̈ = φ̈ = 0) and is derived from those conditions in symbols alone; the state of
@@ -7,8 +6,7 @@
 //! `show` without them takes as conditions the second rates that vanish at its state and
 //! the rates that are zero there.
 
-use crate::numeric::{coordinate_unit, Answer};
-use crate::problem::{Problem, Question, QuestionKind};
+use crate::problem::{Question, QuestionKind};
 use crate::symbolic::{eval, latex, simplify, substitute, Expr, Symbol, Values};
 
 /// A condition: a coordinate, rate or second rate and the value put in for it.
@@ -76,62 +74,4 @@ pub fn held_values(conditions: &[Condition], v: &Values) -> Vec<(Symbol, f64)> {
     (conditions.iter())
         .map(|(s, e)| (s.clone(), eval(e, v)))
         .collect()
-}
-
-/// Where a derived `show` is checked with numbers: "at the steady motion found in answer 2
-/// below, where θ = 0.5 rad, ψ̇ = 3.45 rad/s, φ̇ = 147 rad/s", the coordinates and rates
-/// of its identity and names at the answer's state.
-pub fn check_sentence(problem: &Problem, index: usize, answer: &Answer) -> String {
-    let question = &problem.questions[index];
-    let QuestionKind::Show {
-        lhs, rhs, names, ..
-    } = &question.kind
-    else {
-        return String::new();
-    };
-    let mut used: Vec<(usize, u8)> = Vec::new();
-    let mut collect = |e: &Expr| {
-        e.for_each_symbol(&mut |s| {
-            if let Symbol::Coord(name, order @ 0..=1) = s {
-                let i = problem.coordinates.iter().position(|c| c.name == **name);
-                if let Some(i) = i.filter(|i| !used.contains(&(*i, *order))) {
-                    used.push((i, *order));
-                }
-            }
-        })
-    };
-    collect(lhs);
-    collect(rhs);
-    names.iter().for_each(|(_, e)| collect(e));
-    used.sort();
-    let parts: Vec<String> = (used.iter())
-        .map(|&(i, order)| {
-            let x = if order == 0 {
-                answer.q[i]
-            } else {
-                answer.rates[i]
-            };
-            format!(
-                "${} = {}{}$",
-                latex(&problem.coordinate_expr(i, order)),
-                super::answer_numbers::number_tex(x),
-                super::answer_numbers::unit_tex(&coordinate_unit(problem, i, order))
-            )
-        })
-        .collect();
-    let place = match question.about {
-        Some(k) => format!(
-            "at {}{}",
-            super::question_answers::about_note(problem, k),
-            if k > index { " below" } else { "" }
-        ),
-        None => "at the state of the question".into(),
-    };
-    match parts.is_empty() {
-        true => format!("Checked with numbers {place}:"),
-        false => format!(
-            "Checked with numbers {place}, where {}:",
-            join_words(&parts)
-        ),
-    }
 }

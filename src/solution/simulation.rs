@@ -26,11 +26,21 @@ pub fn simulation(
     if let Some(reason) = &trajectory.stopped {
         notes.push(format!("The simulation stopped early: {reason}"));
     }
-    if !trajectory.switches.is_empty() {
-        // Where friction changed its mode: a statement's "when does it roll" is read here.
-        let lines: Vec<String> = (trajectory.switches.iter())
-            .map(|s| s.describe(problem))
-            .collect();
+    // Where friction changed its mode; the first switch of a site a question asks about is
+    // answered in the Answers, in words, and not said here again.
+    let asked: Vec<&str> = (problem.questions.iter())
+        .filter_map(|q| q.at.switch)
+        .map(|k| problem.site_name(k))
+        .collect();
+    let unasked: Vec<String> = (trajectory.switches.iter().enumerate())
+        .filter(|(i, s)| {
+            let first = !trajectory.switches[..*i].iter().any(|e| e.site == s.site);
+            !(first && asked.contains(&s.site.as_str()))
+        })
+        .map(|(_, s)| s.describe(problem))
+        .collect();
+    if !unasked.is_empty() {
+        let lines = unasked;
         notes.push(format!(
             "Friction changes its mode during the motion: {}.",
             lines.join("; ")

@@ -67,7 +67,9 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
     let reactions: Vec<&Symbol> = (unknowns.iter())
         .filter(|u| matches!(u, Symbol::Unknown(_)))
         .collect();
-    let names: Vec<String> = sliding.iter().map(|s| s.name.replace('_', " ")).collect();
+    let names: Vec<String> = (sliding.iter())
+        .map(|s| super::force_labels::place(&s.name))
+        .collect();
     let (row, does, law) = match (no_slip.len(), sliding.len()) {
         (1, 1) => ("row", "does", "law"),
         (_, 1) => ("rows", "do", "law"),
@@ -78,6 +80,19 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
     } else {
         "reactions"
     };
+    if !super::sliding_rows::sliding_rows(derivation, friction).is_empty() {
+        // Step 5 prints the sliding law as the row itself.
+        return Some(format!(
+            "While the contact at {} slides, {} {} {} the sliding {law}, not the no-slip {row}, which {} only once it sticks. The rows give {} and the {reaction_words} {}, in the order of step 3.",
+            listed(&names),
+            if no_slip.len() == 1 { "row" } else { "rows" },
+            row_list(&no_slip),
+            if no_slip.len() == 1 { "is" } else { "are" },
+            if no_slip.len() == 1 { "holds" } else { "hold" },
+            math_list(&accelerations, false),
+            math_list(&reactions, true),
+        ));
+    }
     Some(format!(
         "While the contact at {} slides, the no-slip {row} {} {does} not hold. Rows {} with the sliding {law} above give {} and the {reaction_words} {} together.",
         listed(&names),

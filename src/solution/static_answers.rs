@@ -114,11 +114,11 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
     match &question.kind {
         QuestionKind::Slips { site } => format!(
             "Can friction at {} hold the system at rest?",
-            problem.site_name(*site)
+            super::force_labels::place(problem.site_name(*site))
         ),
         QuestionKind::Tips { site } => format!(
             "Does the contact at {} hold at rest, or does the body tip off it?",
-            problem.site_name(*site)
+            super::force_labels::place(problem.site_name(*site))
         ),
         QuestionKind::Impending {
             constant,
@@ -129,7 +129,7 @@ pub fn asked(problem: &Problem, question: &Question) -> String {
             "Find the value of ${}$ at which {} impends at {}.",
             constant_tex(problem, *constant),
             if *tips { "tipping" } else { "slip" },
-            problem.site_name(*site)
+            super::force_labels::place(problem.site_name(*site))
         ),
         _ => String::new(),
     }
@@ -185,7 +185,7 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
 
 /// What the number decides, as a line of math in words: "it does not slip".
 pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> String {
-    let site = |i: usize| problem.site_name(i).replace('_', "\\_");
+    let site = |i: usize| super::force_labels::place(problem.site_name(i)).replace('_', "\\_");
     match &question.kind {
         QuestionKind::Slips { site: i } if lost(answer) => format!(
             "\\text{{the contact at {} would have to pull: contact is lost, and no friction can hold it}}",

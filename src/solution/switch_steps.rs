@@ -117,10 +117,8 @@ fn slips_at_start(
                 super::answer_numbers::number_tex(speed)
             ),
         ));
-        views[i].steps.push(step(
-            "It is not zero: yes, it slips, and friction is $\\mu N$ against the slip until the slip velocity falls to zero.",
-            String::new(),
-        ));
+        // The verdict above says the rest: the slip velocity is not listed twice.
+        (views[i].values_tex).retain(|v| !v.as_str().starts_with("v_{\\mathrm{slip}}"));
     }
 }
 
@@ -157,8 +155,8 @@ fn constant_at_start(
         let unit = crate::numeric::coordinate_unit(problem, k, 2);
         let why = match std::mem::replace(&mut said, true) {
             false => format!(
-                "While the contact at {} slides it stays constant (the sliding law in place of the no-slip row, worked out below):",
-                site.replace('_', "\\_")
+                "While the contact at {} slides it stays constant: the rows of step 5 with the sliding law give",
+                super::force_labels::place(site).replace('_', "\\_")
             ),
             true => "Constant too while it slides:".to_string(),
         };
@@ -352,7 +350,7 @@ fn steps_for(
                 )
             })
             .collect();
-        let site = site.replace('_', "\\_");
+        let site = super::force_labels::place(site).replace('_', "\\_");
         steps.push(step(
             format!("While the contact at {site} slides, friction is $\\mu |N|$ against the slip: with the sliding law in place of the no-slip row, the equations of step 5 give accelerations that stay constant until it rolls,"),
             moving.join(", \\qquad "),

@@ -85,6 +85,16 @@ pub fn written_out_shown(
         lines.extend(body_lines);
         terms.extend(body_terms);
     }
+    if let Sum::Moment { point, position } = &row.sum {
+        // The reactions' moments first, each where it fits a line of the page.
+        let point = super::moment_point::shown_point(&derivation.model, point, position);
+        let point = super::tex::point_tex(&point);
+        let at = (point.as_str(), position);
+        let forces = super::force_moments::lines(derivation, &row.free_body, at, direction, shown);
+        let fits = |l: &String| symbols(l) <= WIDEST_LINE && l.len() <= LONGEST_LINE;
+        let forces: Vec<String> = forces.into_iter().filter(fits).collect();
+        lines.splice(0..0, forces);
+    }
     if lines.is_empty() {
         return None;
     }
@@ -295,7 +305,8 @@ fn moment_lines(
         let a_f = m_a
             .components_in(frame, frames)
             .map(|c| shown(&simplify(&c)));
-        let point = super::tex::point_tex(point);
+        let point = super::moment_point::shown_point(model, point, position);
+        let point = super::tex::point_tex(&point);
         let frame_name = frames.name(frame);
         let units = [0u8, 1, 2]
             .iter()

@@ -98,6 +98,9 @@ pub struct DependentSpeeds {
     /// Some motion is prescribed (a driven coordinate, or a constraint written with `t`):
     /// the dependent rates then have terms in time besides the map.
     pub time_terms: bool,
+    /// Where `relations_tex` hold in general (written in symbols): each dependent rate's
+    /// value at the initial state, `\dot{y} = 0`; empty where they are numbers at it.
+    pub start_tex: Vec<Math>,
 }
 
 /// The equations as `A x = b`.

@@ -1,0 +1,62 @@
+//! A moment row's reactions written out as a student writes them: for each reaction on a
+//! body of the free body whose line misses the moment point, its moment
+//! `(r^{D* P} × F^P) · n̂_z` worked to its value, reduced by what the constraints keep
+//! (x² + y² = (R − r)²).
+
+use crate::equations::Derivation;
+use crate::mechanics::Vector;
+use crate::plan::{is_external, ActionKind, Direction, Source};
+use crate::problem::BodyId;
+use crate::symbolic::{latex_collected, latex_name, simplify, Expr};
+
+/// One line of the written-out display per reaction with a moment about the point named
+/// `point_tex` at `position`, on the bodies of `free_body`.
+pub fn lines(
+    derivation: &Derivation,
+    free_body: &[BodyId],
+    (point_tex, position): (&str, &Vector),
+    direction: &Direction,
+    shown: &dyn Fn(&Expr) -> Expr,
+) -> Vec<String> {
+    let model = &derivation.model;
+    let frames = &model.frames;
+    let mut out = Vec::new();
+    for action in (derivation.actions.iter()).filter(|a| is_external(a, free_body)) {
+        let (Source::Reaction(site), ActionKind::Force { offset, force }) =
+            (&action.source, &action.kind)
+        else {
+            continue;
+        };
+        let at = (model.bodies[action.body.0].origin.position)
+            .plus(&Vector::new(action.body, offset.clone()));
+        let r = at.minus(position);
+        let apart = r.components_in(BodyId::GROUND, frames);
+        if apart.iter().all(|c| simplify(c).is_zero()) {
+            continue;
+        }
+        let moment = simplify(&r.cross(force, frames).dot(&direction.vector, frames));
+        let moment = reduced(derivation, moment);
+        if moment.is_zero() {
+            continue;
+        }
+        let name = latex_name(model.problem.site_name(*site));
+        out.push(format!(
+            "(\\mathbf{{r}}^{{{point_tex} {name}}} \\times \\mathbf{{F}}^{{{name}}}) \\cdot {} &= {}",
+            direction.latex,
+            latex_collected(&shown(&moment))
+        ));
+    }
+    out
+}
+
+/// `e` reduced by each relation the constraints keep, where that is shorter.
+fn reduced(derivation: &Derivation, e: Expr) -> Expr {
+    let mut best = e;
+    for (_, relation) in &derivation.model.constraints.relations {
+        let candidate = simplify(&relation.reduce(&best));
+        if candidate.operation_count() < best.operation_count() {
+            best = candidate;
+        }
+    }
+    best
+}
