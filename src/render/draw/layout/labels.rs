@@ -16,7 +16,13 @@ pub(super) enum Beside {
     Point,
     /// Its anchor, wherever is free.
     Spot,
+    /// A point's caption (a mass centre's, a pin's): close beside it, even over a line,
+    /// never far from what it names.
+    Caption,
 }
+
+/// How many of the gaps around its point a caption may take (up to 22 px from it).
+const CAPTION_GAPS: usize = 3;
 
 /// How many of the spots nearest a point's caption are tried outside the bodies: two
 /// rounds of sixteen directions, within 12 px of the point.
@@ -35,10 +41,12 @@ impl Painter {
                     .get_mut(k)
                     .and_then(|a| self.push_apart(a, toward, size, &tips)),
                 Beside::Point => self.outside_bodies(anchor, toward, size),
-                Beside::Spot => None,
+                Beside::Spot | Beside::Caption => None,
             };
+            let close = matches!(beside, Beside::Point | Beside::Caption);
             let at = match pushed {
                 Some(at) => at,
+                None if close => (self.obstacles).place_close(anchor, toward, size, CAPTION_GAPS),
                 None => self.obstacles.place(anchor, toward, size),
             };
             self.texts.push(Item::Text { at, label, ink });
