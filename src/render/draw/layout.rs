@@ -300,7 +300,7 @@ impl Painter {
                 toward,
                 arrow.label.clone(),
                 ink,
-                Beside::Caption,
+                Beside::Near,
             ));
             return drawn;
         }
@@ -311,9 +311,9 @@ impl Painter {
         let pushes = self.pushes_at(arrow, at, u, length);
         let at = if arrow.kind == super::scene::Kind::Inertia {
             self.beside_bodies(at, u)
-        } else if arrow.couple && self.crowding(at, u).1 > 0 {
-            // A moment vector is free: off the line of an arrow it would lie on.
-            self.beside_bodies(at, u)
+        } else if arrow.couple {
+            // A moment vector is free: off the arrows it would cross or lie on.
+            self.free_couple(at, u, length)
         } else if pushes {
             p2add(at, p2scale(u, -length))
         } else {

@@ -55,10 +55,47 @@ impl Painter {
         let Some((a, b)) = middle(tail, tip) else {
             return 0;
         };
+        // A stack of two from one tail the same way is drawn on purpose: no crossing.
+        let stacked = |(p, q): &(P2, P2)| {
+            let (u, v) = (
+                [tip[0] - tail[0], tip[1] - tail[1]],
+                [q[0] - p[0], q[1] - p[1]],
+            );
+            let cos = (u[0] * v[0] + u[1] * v[1]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
+            (p[0] - tail[0]).hypot(p[1] - tail[1]) < 0.5 && cos > 0.999
+        };
         (self.lines.iter())
+            .filter(|l| !stacked(l))
             .filter_map(|(p, q)| middle(*p, *q))
             .filter(|(c, d)| cross(a, b, *c, *d) || along(a, b, *c, *d))
             .count()
+    }
+
+    /// The tail of a moment vector (3D) at `at` along the unit `u`, `length` long: a couple
+    /// is free, so it may end at its point or stand beside it, whichever of those (in
+    /// that order, nearest first) crosses no arrow drawn before it; else the one that
+    /// crosses fewest.
+    pub(super) fn free_couple(&self, at: P2, u: P2, length: f64) -> P2 {
+        let across = [-u[1], u[0]];
+        let mut tails = vec![at, p2add(at, p2scale(u, -length))];
+        for d in [16.0, 24.0, 32.0] {
+            for side in [1.0, -1.0] {
+                let moved = p2add(at, p2scale(across, side * d));
+                tails.push(moved);
+                tails.push(p2add(moved, p2scale(u, -length)));
+            }
+        }
+        let mut best = (usize::MAX, at);
+        for tail in tails {
+            let count = self.crossings(tail, p2add(tail, p2scale(u, length)));
+            if count == 0 {
+                return tail;
+            }
+            if count < best.0 {
+                best = (count, tail);
+            }
+        }
+        best.1
     }
 
     /// Whether an arrow `length` long along the unit `u` crosses fewer arrows drawn

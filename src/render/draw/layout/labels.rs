@@ -19,7 +19,13 @@ pub(super) enum Beside {
     /// A point's caption (a mass centre's, a pin's): close beside it, even over a line,
     /// never far from what it names.
     Caption,
+    /// A couple's label: close by its curl where there is room (within 36 px), else the
+    /// nearest free spot.
+    Near,
 }
+
+/// How far from its anchor a couple's label is first looked for.
+const NEAR_A_CURL: [f64; 4] = [4.0, 12.0, 22.0, 36.0];
 
 /// How many of the gaps around its point a caption may take (up to 22 px from it).
 const CAPTION_GAPS: usize = 3;
@@ -41,6 +47,9 @@ impl Painter {
                     .get_mut(k)
                     .and_then(|a| self.push_apart(a, toward, size, &tips)),
                 Beside::Point => self.outside_bodies(anchor, toward, size),
+                Beside::Near => (self.obstacles)
+                    .free_near(anchor, toward, size, &NEAR_A_CURL)
+                    .map(|b| self.obstacles.take(b)),
                 Beside::Spot | Beside::Caption => None,
             };
             let close = matches!(beside, Beside::Point | Beside::Caption);
