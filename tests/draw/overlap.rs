@@ -72,18 +72,10 @@ fn lies_on(a: Segment, b: Segment) -> bool {
     })
 }
 
-/// Free bodies whose arrows are known to lie on one another, and why: the shaft's and the
-/// collar's weights (and the shaft's oil film) hang from mass centres on one vertical line,
-/// closer than an arrow's length, in the 3D view.
-const KNOWN: [&str; 1] = ["collar-on-spinning-shaft.json"];
-
 /// The arrows of each free body that lie on one another, as `problem picture: A on B`.
 fn overlaps(method: Method) -> Vec<String> {
     let mut faults = Vec::new();
     for path in all_problems() {
-        if KNOWN.iter().any(|k| path.ends_with(k)) {
-            continue;
-        }
         let problem = mbd_tutor::problem::load_file(&path).expect("a bundled problem");
         let (_, pictures, _) = drawings(&problem, method, View::Isometric);
         for picture in pictures.iter().skip(1) {

@@ -41,7 +41,7 @@ fn shape_points(shape: &Shape) -> Vec<P3> {
         | Shape::Distance { from, to, .. }
         | Shape::Dashed { from, to } => vec![*from, *to],
         Shape::Triad { origin, .. } => origin.iter().copied().collect(),
-        Shape::Angle { center, .. } => vec![*center],
+        Shape::Angle { center, .. } | Shape::Velocity { at: center, .. } => vec![*center],
     }
 }
 

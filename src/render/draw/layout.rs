@@ -14,9 +14,12 @@ use super::strokes::{
 };
 
 mod beside;
+mod crossing;
+mod curl;
 mod labels;
 mod marks;
 mod triad;
+mod velocity;
 
 use labels::Beside;
 
@@ -232,6 +235,11 @@ impl Painter {
                 label,
             } => self.angle(*center, (*from, *axis), *angle, label),
             Shape::Distance { from, to, label } => self.distance(*from, *to, label),
+            Shape::Velocity {
+                at,
+                direction,
+                label,
+            } => self.velocity(*at, *direction, label),
             Shape::Dashed { from, to } => {
                 let (a, b) = (self.at(*from), self.at(*to));
                 self.thin_dashed(a, b);
@@ -262,7 +270,7 @@ impl Painter {
             let radius = COUPLE + 7.0 * stack as f64;
             // Counterclockwise in N is clockwise on the page, whose y points down.
             let sweep = -f64::from(sense) * 1.5 * std::f64::consts::PI;
-            let start = std::f64::consts::FRAC_PI_4 * 3.0;
+            let start = self.curl_start(at, radius, sweep, &self.rays_at(at));
             let arc = Arc {
                 center: at,
                 radius,
@@ -285,13 +293,15 @@ impl Painter {
                 self.obstacles.polyline(h, true);
             }
             drawn.arc = Some(arc);
+            // Its label close by the curl, as a point's caption is.
             let toward = (start + sweep / 2.0) + std::f64::consts::PI;
-            self.label(
+            self.pending.push((
                 p2add(at, [toward.cos() * radius, toward.sin() * radius]),
                 toward,
-                &arrow.label,
+                arrow.label.clone(),
                 ink,
-            );
+                Beside::Near,
+            ));
             return drawn;
         }
         let length = arrow_length(stack);
@@ -301,6 +311,9 @@ impl Painter {
         let pushes = self.pushes_at(arrow, at, u, length);
         let at = if arrow.kind == super::scene::Kind::Inertia {
             self.beside_bodies(at, u)
+        } else if arrow.couple {
+            // A moment vector is free: off the arrows it would cross or lie on.
+            self.free_couple(at, u, length)
         } else if pushes {
             p2add(at, p2scale(u, -length))
         } else {
@@ -364,20 +377,24 @@ impl Painter {
 }
 
 impl Painter {
-    /// The captions of the marked points wait with the other labels: a point on a body's
-    /// edge keeps its caption outside the bodies where it can, a mass centre beside it.
+    /// The captions of the marked points wait with the other labels, ahead of the arrows'
+    /// (an arrow's label can move out along its arrow; a caption must stay at its point):
+    /// a point on a body's edge keeps its caption outside the bodies where it can, a mass
+    /// centre beside it.
     fn caption_marks(&mut self, markers: &[super::scene::Marker], marks: &[Mark]) {
+        let mut captions = Vec::new();
         for (m, mark) in markers.iter().zip(marks) {
             if let Some(caption) = &m.caption {
                 let beside = if m.role == Role::Center {
-                    Beside::Spot
+                    Beside::Caption
                 } else {
                     Beside::Point
                 };
                 let toward = -std::f64::consts::FRAC_PI_4;
-                (self.pending).push((mark.at, toward, caption.clone(), Ink::Black, beside));
+                captions.push((mark.at, toward, caption.clone(), Ink::Black, beside));
             }
         }
+        self.pending.splice(0..0, captions);
     }
 }
 

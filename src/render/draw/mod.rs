@@ -31,7 +31,7 @@ mod tikz;
 
 pub use fit::CONTENT;
 pub use motion::{Body, Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
-pub use picture::{Picture, Projection, View};
+pub use picture::{Item, Picture, Projection, View};
 pub use place::text_size;
 pub use scene::{Arrow, BodyKind, Kind, Label, Marker, Role, Scene, Shape};
 pub use strokes::in_lane;

@@ -191,32 +191,54 @@ pub enum Item {
     Stroke(Stroke),
     /// A circle.
     Circle {
+        /// Its centre.
         center: P2,
+        /// Its radius.
         radius: f64,
+        /// Its outline's colour.
         ink: Ink,
+        /// Its fill.
         fill: Ink,
     },
     /// An ellipse (a disc seen obliquely): semi-axes `rx`, `ry`, turned by `angle`
     /// (degrees, clockwise on the page).
     Ellipse {
+        /// Its centre.
         center: P2,
+        /// The semi-axis along its own x.
         rx: f64,
+        /// The semi-axis along its own y.
         ry: f64,
+        /// How far it is turned, in degrees, clockwise on the page.
         angle: f64,
+        /// Its outline's colour.
         ink: Ink,
+        /// Its fill.
         fill: Ink,
     },
     /// Text: a label centered at `at`.
-    Text { at: P2, label: Label, ink: Ink },
+    Text {
+        /// Its centre.
+        at: P2,
+        /// What it says.
+        label: Label,
+        /// Its colour.
+        ink: Ink,
+    },
     /// Items drawn as one, such as a frame's unit vectors: a group of that class.
     Group {
+        /// The group's class.
         class: &'static str,
+        /// Its items.
         items: Vec<Item>,
     },
     /// One body's items, as a group with its id (`body-A`) and its shape's kind.
     Body {
+        /// The group's id.
         id: String,
+        /// What the body is drawn as.
         kind: BodyKind,
+        /// Its items.
         items: Vec<Item>,
     },
 }

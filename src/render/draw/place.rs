@@ -228,6 +228,41 @@ impl Obstacles {
 }
 
 impl Obstacles {
+    /// Places a label of `size` close to `anchor`, at one of the first `gaps` of
+    /// [`GAPS`]: the first spot there that meets nothing, else the first free one a gap
+    /// further, else the one of the first `gaps` that meets least (a caption beside its
+    /// point over a line rather than far from the point it names); returns its centre and
+    /// takes its room.
+    pub fn place_close(&mut self, anchor: P2, toward: f64, size: P2, gaps: usize) -> P2 {
+        let half = Self::half_of(size);
+        let mut best: Option<(usize, Box2)> = None;
+        for gap in GAPS.into_iter().take(gaps) {
+            for candidate in Self::around(anchor, toward, half, gap) {
+                let cost = self.cost(&candidate);
+                if cost == 0 {
+                    return self.take(candidate);
+                }
+                if best.as_ref().is_none_or(|(c, _)| cost < *c) {
+                    best = Some((cost, candidate));
+                }
+            }
+        }
+        if let Some(&gap) = GAPS.get(gaps) {
+            let free = Self::around(anchor, toward, half, gap).find(|b| self.cost(b) == 0);
+            if let Some(b) = free {
+                return self.take(b);
+            }
+        }
+        let chosen = best.map_or(
+            Box2 {
+                center: anchor,
+                half,
+            },
+            |(_, b)| b,
+        );
+        self.take(chosen)
+    }
+
     /// The box of half size `half` nearest to `anchor` that meets nothing, on a grid over
     /// the picture's bounds.
     fn nearest_free(&self, anchor: P2, half: P2) -> Option<Box2> {

@@ -381,6 +381,16 @@ pub enum Shape {
         /// The distance's name.
         label: Label,
     },
+    /// A velocity the problem names (a starting speed `v_0`): a short arrow from `at`
+    /// along the unit `direction`, with its symbol.
+    Velocity {
+        /// Where it is (a mass centre).
+        at: P3,
+        /// Which way it points.
+        direction: P3,
+        /// Its symbol.
+        label: Label,
+    },
     /// A thin dashed line (a reference direction).
     Dashed {
         /// One end.

@@ -365,6 +365,18 @@ pub fn surfaces(n: &Numbers, size: f64) -> Vec<Shape> {
                     }
                     continue;
                 }
+                // A block that carries the wheel shows the surface as its face.
+                let carried = *on != BodyId::GROUND
+                    && matches!(
+                        self::body(n, *on, size),
+                        Shape::Body {
+                            kind: BodyKind::Block,
+                            ..
+                        }
+                    );
+                if planar && carried {
+                    continue;
+                }
                 let reach = (3.0 * disc.radius).max(0.35 * size);
                 out.push(Shape::Surface {
                     at: contact,

@@ -9,10 +9,11 @@ use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
 use crate::render::draw::{Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 
-/// What every free-body picture's arrows mean.
-pub const FREE_BODY_LEGEND: &str = "Not to scale: every arrow has one length (a longer one \
-     shares its line with another). Known forces point the way they act at this state; \
-     unknown reaction components (red) along their positive directions.";
+/// What every free-body picture's arrows mean, in one short line: every arrow is drawn
+/// one length (a second along the same line a step longer), unknown components along
+/// their positive senses, known forces the way they act at the state drawn.
+pub const FREE_BODY_LEGEND: &str =
+    "Not to scale. Unknowns (red) along + axes; known forces as they act.";
 
 /// What every picture of one problem shares.
 pub struct Setting<'a, 'm, 'p> {
@@ -185,7 +186,16 @@ impl Setting<'_, '_, '_> {
     /// lines for the coordinates; a distance that is zero now is left out.
     fn coordinates(&self, shapes: &mut Vec<Shape>) {
         for gauge in super::gauges::gauges(self.numbers, self.size) {
-            let label = gauge.label;
+            let value =
+                (self.numbers.values).get(&self.problem().coordinate_symbol(gauge.coordinate, 0));
+            let label = match gauge.at {
+                // A dimension line is drawn the way it points: a coordinate below zero is
+                // the length of the opposite way, −y, not y.
+                Some(Gauge::Distance { .. }) if value < 0.0 => {
+                    Label::from_tex(&format!("-{}", gauge.label.tex))
+                }
+                _ => gauge.label,
+            };
             match gauge.at {
                 Some(Gauge::Angle {
                     center,
@@ -233,6 +243,7 @@ impl Setting<'_, '_, '_> {
             shapes.extend(shapes::joint(self.numbers, j, self.size));
         }
         self.coordinates(&mut shapes);
+        shapes.extend(super::velocities::velocities(self.numbers, self.size));
         self.triads(&mut shapes);
         let markers = self.markers(&bodies, true);
         Scene {
@@ -469,9 +480,13 @@ impl Setting<'_, '_, '_> {
                     _ => Kind::JointLoad,
                 };
                 let direction = n.vector(value);
+                let label = magnitude_symbol(&problem.loads[i].kind).map_or_else(
+                    || Label::text(&action.label),
+                    |e| Label::from_tex(&latex(&e)),
+                );
                 // A force that vanishes at this state has no direction to draw.
                 unit(direction)
-                    .map(|_| arrow(kind, Label::text(&action.label), direction))
+                    .map(|_| arrow(kind, label, direction))
                     .into_iter()
                     .collect()
             }
@@ -542,6 +557,21 @@ impl Setting<'_, '_, '_> {
         }
         out
     }
+}
+
+/// The symbol an applied force or couple is named by in the statement (`P` of
+/// `P*N.x`, also of `-P*N.x`, drawn the way it acts): its one coefficient when that is a
+/// symbol or minus one; `None` for anything else (drawn with the load's name).
+fn magnitude_symbol(kind: &LoadKind) -> Option<Expr> {
+    let (LoadKind::Force { vector, .. } | LoadKind::Torque { vector, .. }) = kind else {
+        return None;
+    };
+    let [(_, _, c)] = vector.terms.as_slice() else {
+        return None;
+    };
+    [c.clone(), simplify(&-c.clone())]
+        .into_iter()
+        .find(|e| e.as_symbol().is_some())
 }
 
 /// An expression as a factor of a product: in parentheses when it is a sum.

@@ -98,10 +98,41 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
                     }),
                 );
             }
+            JointKind::Spherical => {
+                if let Some(gauge) = nutation(n, joint, at, size) {
+                    push(1, Some(gauge));
+                }
+            }
             _ => {}
         }
     }
     out
+}
+
+/// The middle angle of a proper Euler sequence (`zxz`, a top's θ): the angle between the
+/// parent's axis of the first turn and the child's, drawn between the two about the line
+/// of nodes; `None` for another sequence, or while the two axes are one.
+fn nutation(n: &Numbers, joint: &crate::problem::Joint, at: P3, size: f64) -> Option<Gauge> {
+    let [first, _, last] = joint.sequence.as_slice() else {
+        return None;
+    };
+    if first != last {
+        return None;
+    }
+    let mut e = [0.0; 3];
+    e[usize::from(*first)] = 1.0;
+    let (fixed, turned) = (
+        unit(n.in_ground(joint.parent, &e))?,
+        unit(n.in_ground(joint.child, &e))?,
+    );
+    let nodes = unit(super::numbers::cross(fixed, turned))?;
+    Some(Gauge::Angle {
+        center: at,
+        from: fixed,
+        axis: nodes,
+        angle: dot(fixed, turned).clamp(-1.0, 1.0).acos(),
+        reference: 0.3 * size,
+    })
 }
 
 /// The arc of a relative angle `q` at a joint at `at`, from where the child's line lay at

@@ -9,10 +9,12 @@ pub(super) mod gauges;
 pub(super) mod lanes;
 pub(super) mod motion;
 pub(super) mod numbers;
+mod rollers;
 pub(super) mod shapes;
 pub(super) mod sheets;
 mod sliding;
 mod triads;
+mod velocities;
 
 use crate::equations::Derivation;
 use crate::problem::BodyId;

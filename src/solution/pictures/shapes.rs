@@ -229,6 +229,11 @@ pub fn joint(n: &Numbers, j: usize, size: f64) -> Vec<Shape> {
         .map(|a| n.in_ground(joint.parent, &n.local(a)))
         .and_then(unit)
         .unwrap_or([0.0, 0.0, 1.0]);
+    if model.is_planar() {
+        if let Some(shapes) = super::rollers::rollers(n, j, axis, size) {
+            return shapes;
+        }
+    }
     let mut shapes = match joint.kind {
         JointKind::Revolute => vec![Shape::Pin(at)],
         JointKind::Prismatic => vec![Shape::Slider { at, axis }],

@@ -14,6 +14,8 @@ use super::Painter;
 const SAMPLES: [f64; 4] = [6.0, 12.0, 18.0, 24.0];
 /// How far across its line the arrow may move, nearest first.
 const ACROSS: [f64; 5] = [6.0, 8.0, 10.0, 13.0, 16.0];
+/// How far across its line an arrow that would lie on another's moves, nearest first.
+const APART: [f64; 4] = [16.0, 20.0, 24.0, 30.0];
 /// Closer than this to another arrow's line, a point lies on it.
 const ON_A_LINE: f64 = 8.0;
 
@@ -29,7 +31,9 @@ impl Painter {
         let score = |(bodies, lines): (usize, usize)| 10 * lines + bodies;
         let mut best = (score((bodies, lines)), at);
         let across = [-u[1], u[0]];
-        for d in ACROSS {
+        // Off another arrow's line, far enough that the two heads stand apart.
+        let offsets: &[f64] = if lines > 0 { &APART } else { &ACROSS };
+        for &d in offsets {
             for side in [1.0, -1.0] {
                 let moved = p2add(at, p2scale(across, side * d));
                 let crowding = self.crowding(moved, u);
@@ -48,9 +52,11 @@ impl Painter {
     /// ending at its point: when starting there would run it inside a body (all samples but
     /// one; an arrow along a wheel's tangent grazes it only) and
     /// ending there runs less of it inside one (a contact's normal push, a pin's force
-    /// along its bar). Weights and inertia forces keep to their mass centres.
+    /// along its bar); or when starting there crosses an arrow drawn before and ending
+    /// there crosses fewer (a crank's weight across its pin's force). Inertia forces keep
+    /// to their mass centres.
     pub(super) fn pushes_at(&self, arrow: &Arrow, at: P2, u: P2, length: f64) -> bool {
-        if arrow.couple || matches!(arrow.kind, Kind::Inertia | Kind::Gravity) {
+        if arrow.couple || arrow.kind == Kind::Inertia {
             return false;
         }
         // Another arrow at the point the opposite way (a weight under a normal force)
@@ -65,11 +71,12 @@ impl Painter {
             return false;
         }
         let (inside, _) = self.crowding(at, u);
-        if inside + 1 < SAMPLES.len() {
-            return false;
-        }
         let (ending, _) = self.crowding(p2add(at, p2scale(u, -length)), u);
-        ending < inside
+        // A weight hangs from its mass centre unless that crosses another arrow.
+        if arrow.kind != Kind::Gravity && inside + 1 >= SAMPLES.len() && ending < inside {
+            return true;
+        }
+        ending + 1 < SAMPLES.len() && self.crosses_less_ending(at, u, length)
     }
 
     /// How many of the sample points along the arrow fall inside a body, and how many on

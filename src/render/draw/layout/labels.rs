@@ -16,7 +16,19 @@ pub(super) enum Beside {
     Point,
     /// Its anchor, wherever is free.
     Spot,
+    /// A point's caption (a mass centre's, a pin's): close beside it, even over a line,
+    /// never far from what it names.
+    Caption,
+    /// A couple's label: close by its curl where there is room (within 36 px), else the
+    /// nearest free spot.
+    Near,
 }
+
+/// How far from its anchor a couple's label is first looked for.
+const NEAR_A_CURL: [f64; 4] = [4.0, 12.0, 22.0, 36.0];
+
+/// How many of the gaps around its point a caption may take (up to 22 px from it).
+const CAPTION_GAPS: usize = 3;
 
 /// How many of the spots nearest a point's caption are tried outside the bodies: two
 /// rounds of sixteen directions, within 12 px of the point.
@@ -35,10 +47,15 @@ impl Painter {
                     .get_mut(k)
                     .and_then(|a| self.push_apart(a, toward, size, &tips)),
                 Beside::Point => self.outside_bodies(anchor, toward, size),
-                Beside::Spot => None,
+                Beside::Near => (self.obstacles)
+                    .free_near(anchor, toward, size, &NEAR_A_CURL)
+                    .map(|b| self.obstacles.take(b)),
+                Beside::Spot | Beside::Caption => None,
             };
+            let close = matches!(beside, Beside::Point | Beside::Caption);
             let at = match pushed {
                 Some(at) => at,
+                None if close => (self.obstacles).place_close(anchor, toward, size, CAPTION_GAPS),
                 None => self.obstacles.place(anchor, toward, size),
             };
             self.texts.push(Item::Text { at, label, ink });
