@@ -56,7 +56,7 @@ fn grade_names_the_wrong_sign_and_the_missing_centripetal_term() {
         assert_eq!(wrong["verdict"], "wrong", "{method}: {g}");
         let why = wrong["diagnosis"].as_str().expect("diagnosis");
         assert!(why.contains("sin"), "{method}: names the term: {why}");
-        if *method != "kane" {
+        if method != "kane" {
             assert!(
                 !why.contains("Kane"),
                 "{method}: names its own method: {why}"
