@@ -229,8 +229,8 @@ impl Obstacles {
 
 impl Obstacles {
     /// Places a label of `size` close to `anchor`, at one of the first `gaps` of
-    /// [`GAPS`]: the first spot there that meets nothing, else the first free one a gap
-    /// further, else the one of the first `gaps` that meets least (a caption beside its
+    /// [`GAPS`]: the first spot there that meets nothing, else the free one nearest to it
+    /// within a gap further (on a fine grid), else the one of the first `gaps` that meets least (a caption beside its
     /// point over a line rather than far from the point it names); returns its centre and
     /// takes its room.
     pub fn place_close(&mut self, anchor: P2, toward: f64, size: P2, gaps: usize) -> P2 {
@@ -248,8 +248,7 @@ impl Obstacles {
             }
         }
         if let Some(&gap) = GAPS.get(gaps) {
-            let free = Self::around(anchor, toward, half, gap).find(|b| self.cost(b) == 0);
-            if let Some(b) = free {
+            if let Some(b) = self.free_within(anchor, half, gap) {
                 return self.take(b);
             }
         }
@@ -261,6 +260,36 @@ impl Obstacles {
             |(_, b)| b,
         );
         self.take(chosen)
+    }
+
+    /// The box of half size `half` that meets nothing and whose edge is nearest to
+    /// `anchor`, no further than `reach` from it, on a fine grid round the anchor (the
+    /// gaps between lines that the sixteen directions of [`Obstacles::around`] miss).
+    fn free_within(&self, anchor: P2, half: P2, reach: f64) -> Option<Box2> {
+        const STEP: f64 = 2.0;
+        let steps = |h: f64| ((h + reach) / STEP).floor() as i64;
+        let (nx, ny) = (steps(half[0]), steps(half[1]));
+        let mut best: Option<(f64, Box2)> = None;
+        for j in -ny..=ny {
+            for i in -nx..=nx {
+                let offset = [i as f64 * STEP, j as f64 * STEP];
+                let dx = (offset[0].abs() - half[0]).max(0.0);
+                let dy = (offset[1].abs() - half[1]).max(0.0);
+                // The edge's distance first, then the centre's: nearest and most even.
+                let d = dx.hypot(dy) + 1e-3 * offset[0].hypot(offset[1]);
+                if dx.hypot(dy) > reach || best.as_ref().is_some_and(|(b, _)| d >= *b) {
+                    continue;
+                }
+                let candidate = Box2 {
+                    center: [anchor[0] + offset[0], anchor[1] + offset[1]],
+                    half,
+                };
+                if self.cost(&candidate) == 0 {
+                    best = Some((d, candidate));
+                }
+            }
+        }
+        best.map(|(_, b)| b)
     }
 
     /// The box of half size `half` nearest to `anchor` that meets nothing, on a grid over
