@@ -230,9 +230,9 @@ impl Obstacles {
 impl Obstacles {
     /// Places a label of `size` close to `anchor`, at one of the first `gaps` of
     /// [`GAPS`]: the first spot there that meets nothing, else the free one nearest to it
-    /// within a gap further (on a fine grid), else the one of the first `gaps` that meets least (a caption beside its
-    /// point over a line rather than far from the point it names); returns its centre and
-    /// takes its room.
+    /// within a gap further (on a fine grid), else the free one nearest anywhere in the
+    /// picture (a caption a little away from its point rather than over a line), else the
+    /// one of the first `gaps` that meets least; returns its centre and takes its room.
     pub fn place_close(&mut self, anchor: P2, toward: f64, size: P2, gaps: usize) -> P2 {
         let half = Self::half_of(size);
         let mut best: Option<(usize, Box2)> = None;
@@ -251,6 +251,10 @@ impl Obstacles {
             if let Some(b) = self.free_within(anchor, half, gap) {
                 return self.take(b);
             }
+        }
+        // Nothing free close by: a name further off reads; one over a line does not.
+        if let Some(b) = self.nearest_free(anchor, half) {
+            return self.take(b);
         }
         let chosen = best.map_or(
             Box2 {
