@@ -187,3 +187,28 @@ fn an_energy_says_where_its_potential_is_zero() {
         );
     }
 }
+
+/// The energy step 6 says is traded between T and V: a fast top started with θ̇ = 0 keeps
+/// nearly all its kinetic energy in its spin and nods a little, so what passes between T
+/// and V is a small part of T₀ (the largest T, printed before, is T₀ itself). By hand:
+/// T₀ = ½[(I_t + m h²) ψ̇² sin²θ + I₃ (φ̇ + ψ̇ cos θ)²] at θ = 0.5, ψ̇ = 3, φ̇ = 150.
+#[test]
+fn the_energy_traded_between_t_and_v_is_what_passes_between_them() {
+    let (m, h, i3, it) = (0.5f64, 0.04f64, 0.0004f64, 0.00025f64);
+    let (theta, psi_rate, phi_rate) = (0.5f64, 3.0f64, 150.0f64);
+    let t0 = 0.5
+        * ((it + m * h * h) * psi_rate.powi(2) * theta.sin().powi(2)
+            + i3 * (phi_rate + psi_rate * theta.cos()).powi(2));
+    let text = handout("heavy-symmetric-top", "motion-law");
+    let step6 = between(&text, "## Step 6", "## Answers");
+    let said = step6
+        .split(" J is traded between")
+        .next()
+        .and_then(|s| s.rsplit(' ').next())
+        .and_then(|n| n.parse::<f64>().ok())
+        .unwrap_or_else(|| panic!("the energy traded in {step6}"));
+    assert!(
+        said > 0.0 && said < 0.01 * t0,
+        "{said} J traded against T₀ = {t0} J"
+    );
+}

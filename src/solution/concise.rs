@@ -1,6 +1,7 @@
-//! What a student need not read twice: the handout says each value once. An unknown's value
-//! at the initial state that an answer at that state already gives is left out of step 5's
-//! tables of reactions, and the table of initial values is left out where the answers give
+//! What a student need not read twice: the handout says each value once. Step 5 prints no
+//! table of reactions at the initial state of a motion (the Answers give those asked; at rest
+//! those the answers leave), and the table of initial values is left out where the answers
+//! give
 //! every value in it, and step 3's candidate rows that the plan does not use are left
 //! out unless every one is asked for (`--verbose`); the rule by which a reaction's sign is
 //! read is said at the first answer that needs it.
@@ -22,7 +23,16 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
     if !solution.initial_values.is_empty() {
         solution.initial_values = whole;
     }
-    (solution.reactions).retain(|r| !said.iter().any(|s| gives_reaction(s, &r.joint)));
+    // In motion, reactions nobody asked for: a table of them at the initial state repeats
+    // the answers where they are asked, and beside a motion's answers reads as if it were
+    // theirs (the top's tip force at the simulated start, one page before its steady
+    // precession's). At rest they are what statics finds: those the answers leave.
+    match solution.statics {
+        Some(_) => {
+            (solution.reactions).retain(|r| !said.iter().any(|s| gives_reaction(s, &r.joint)))
+        }
+        None => solution.reactions.clear(),
+    }
     super::answer_leads::mark_repeated_states(&mut solution.answers);
 }
 

@@ -94,19 +94,24 @@ fn num(x: f64) -> String {
     literal_with_numbers(&fixed(x))
 }
 
-/// The energy's columns: E relative to the start, and the largest energy the motion trades
-/// between T and V (the larger of the largest T and the range of V).
+/// The energy's columns: E relative to the start, and the energy the motion trades between
+/// T and V (the larger of the ranges of T and V: the largest T is not traded where the
+/// motion starts moving, as a spinning top's).
 fn energies(trajectory: &Trajectory) -> Option<(Vec<(f64, f64)>, f64)> {
     let total = trajectory.series("total")?;
     let kinetic = trajectory.series("kinetic")?;
     let potential = trajectory.series("potential")?;
-    let largest_t = kinetic.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
-    let (low, high) = (potential.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
-        (l.min(p.1), h.max(p.1))
-    });
     let first = total.first()?.1;
     let change = total.iter().map(|&(t, e)| (t, e - first)).collect();
-    Some((change, largest_t.max(high - low)))
+    Some((change, range(&kinetic).max(range(&potential))))
+}
+
+/// The largest value of a series less its smallest.
+fn range(series: &[(f64, f64)]) -> f64 {
+    let (low, high) = (series.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+        (l.min(p.1), h.max(p.1))
+    });
+    high - low
 }
 
 /// Energy constant: every force that does work has a potential.

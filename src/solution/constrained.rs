@@ -2,7 +2,7 @@
 //! equations (step 1), the dependent rates as a map of the independent ones, Kane's
 //! equations with dependent speeds and the reduced partial velocities (step 5).
 
-use super::row_names::constraint_label_tex;
+use super::row_names::{constraint_label_tex, constraint_what_tex};
 use crate::equations::Derivation;
 use crate::mechanics::{Model, RowOrigin, Vector};
 use crate::problem::BodyId;
@@ -35,7 +35,11 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             let shown = roots_of_squares(&simplify(expression), &sign);
             // A velocity constraint collected by the rates, as Σ (coefficient) q̇_j = 0.
             let mut equation_tex = format!("{} = 0", latex_collected(&shown));
-            let name_tex = constraint_label_tex(model, &row.name);
+            // A position constraint holds a distance, not a component: it has no direction.
+            let name_tex = match row.position {
+                Some(_) => constraint_what_tex(model, &row.name),
+                None => constraint_label_tex(model, &row.name),
+            };
             if let (true, None, RowOrigin::Site { site, component }) = (
                 equation_tex.len() > LONGEST_IN_TABLE,
                 &row.position,

@@ -388,7 +388,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
         ),
         Method::MotionLaw => {
             let order = super::rejected::order_note(derivation);
-            let mut note = "Rows are chosen so that no unwanted reaction appears, free bodies of one body or of several together; the fewest new unknowns at a time, then the fewest terms, each adding a new equation.".to_string();
+            let mut note = "Each row takes a free body (one body or several together) and sums its forces along a direction or its moments about a point chosen so that the reactions not sought drop out.".to_string();
             if !order.is_empty() {
                 note = format!("{note} {order}");
             }

@@ -101,7 +101,7 @@ pub fn replace_rows(solution: &mut Solution, derivation: &Derivation, rows: &[Sl
             view.grouped_tex = Math::from(String::new());
             view.written_tex = Math::from(String::new());
             view.simplified_note =
-                "Friction is μ|N| against the slip (its sign from the slip's direction):".into();
+                "Friction is μ times the normal force, against the slip (its sign from the slip's direction):".into();
             view.simplified_tex = Math::from(law_tex(row));
         }
     }

@@ -175,7 +175,7 @@ fn singular(derivation: &Derivation) -> Option<String> {
         .collect();
     let Some(factor) = vanishing.first() else {
         return Some(format!(
-            "{head} Where it is zero the mechanism is in a singular configuration: there the constraints do not fix the dependent rates."
+            "{head} Where it is zero the constraints do not fix the dependent rates from the independent ones: the coordinates chosen cannot describe the motion there."
         ));
     };
     let line = in_line(model, factor)
@@ -187,8 +187,16 @@ fn singular(derivation: &Derivation) -> Option<String> {
             )
         })
         .unwrap_or_default();
+    // Bodies in line are a singular configuration of the mechanism itself; any other zero
+    // may be the chosen coordinates' failing alone.
+    let what = match line.is_empty() {
+        true => "there the constraints no longer fix the dependent rates from the independent ones",
+        false => {
+            "a singular configuration, where the constraints no longer fix the dependent rates"
+        }
+    };
     Some(format!(
-        "{head} It is zero where ${} = 0${line}: a singular configuration, where the constraints no longer fix the dependent rates.",
+        "{head} It is zero where ${} = 0${line}: {what}.",
         latex(factor)
     ))
 }

@@ -49,7 +49,7 @@ pub fn verdict_words(question: &Question, answer: &Answer) -> Option<&'static st
             "yes: the normal force would have to pull, so the contact is lost and no friction can hold it"
         }
         QuestionKind::Slips { .. } if slip_speed(answer).is_some_and(|s| s > 0.0) => {
-            "yes: the contact point slides, and friction is mu |N| against the slip"
+            "yes: the contact point slides, and friction is mu times the normal force, against the slip"
         }
         QuestionKind::Slips { .. } if slips(answer) => "yes: holding it needs |F| > mu |N|",
         QuestionKind::Slips { .. } => "no: friction can hold it, |F| <= mu |N|",
@@ -236,7 +236,7 @@ pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> S
 fn moving_verdict(site: &str, answer: &Answer) -> String {
     match (slip_speed(answer).is_some_and(|s| s > 0.0), slips(answer)) {
         (true, _) => format!(
-            "\\text{{yes: the contact point at {site} slides, so friction is }} \\mu |N| \\text{{ against the slip}}"
+            "\\text{{yes: the contact point at {site} slides, so friction is }} \\mu \\text{{ times the normal force, against the slip}}"
         ),
         (false, false) => format!(
             "\\text{{no: the contact point at {site} does not slide, and }} |F| \\le \\mu |N|"

@@ -340,10 +340,13 @@ fn moment_lines(
                 ("".to_string(), shown(&simplify(&value)))
             }
         };
-        let left = format!("({r_name} \\times {ma_name}) \\cdot {}", direction.latex);
-        let right = format!("{pattern}{}", latex_collected(&value));
+        // The row holds the inertia force −m a, so its moment is written with that sign: a
+        // student who reads r × m a beside the row's opposite term sees a sign error.
+        let left = format!("({r_name} \\times (-{ma_name})) \\cdot {}", direction.latex);
+        let term = -value;
+        let right = format!("{pattern}{}", latex_collected(&simplify(&term)));
         lines.push(super::aligned::line(&left, "=", &right));
-        terms.push(-value);
+        terms.push(term);
     }
     if let Some((line, term)) = torque_line(derivation, body, direction, (dots, shown)) {
         lines.push(line);
@@ -352,12 +355,13 @@ fn moment_lines(
     (!lines.is_empty()).then_some((lines, terms))
 }
 
-/// `r_x (m a)_y - r_y (m a)_x = ` for the component along axis `axis` (the determinant's row).
+/// `-(r_x (m a)_y - r_y (m a)_x) = ` for the component along axis `axis` (the determinant's
+/// row, of the inertia force −m a).
 fn determinant_row(axis: usize) -> String {
     let names = ["x", "y", "z"];
     let (j, k) = ((axis + 1) % 3, (axis + 2) % 3);
     format!(
-        "r_{{{}}}\\, (m a)_{{{}}} - r_{{{}}}\\, (m a)_{{{}}} = ",
+        "-\\left(r_{{{}}}\\, (m a)_{{{}}} - r_{{{}}}\\, (m a)_{{{}}}\\right) = ",
         names[j], names[k], names[k], names[j]
     )
 }

@@ -27,7 +27,7 @@ fn lagranges_constraint_rows_are_headed_by_what_they_constrain() {
     );
     let step5 = text.split("## Step 5").nth(1).expect("step 5");
     assert!(
-        step5.contains("no slip at ground"),
+        step5.contains("no slip at the ground"),
         "the no-slip row is named"
     );
 }
