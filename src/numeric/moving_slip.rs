@@ -4,6 +4,7 @@
 //! zero is sliding, whatever the forces), and where it is zero the ratio |F|/(μ|N|) that
 //! sticking needs decides, as at rest.
 
+use super::friction::SiteState;
 use super::quantity::Quantity;
 use super::system::System;
 use crate::problem::{Problem, Question, QuestionKind};
@@ -50,16 +51,7 @@ pub fn values(
     site: usize,
     (t, q, rates): (f64, &[f64], &[f64]),
 ) -> Result<Vec<(Quantity, f64)>, (String, String)> {
-    let name = problem.site_name(site);
-    let (states, _) = system
-        .friction_at(t, q, rates, None)
-        .map_err(|e| (format!("cannot answer: {e}"), "ask at another state".into()))?;
-    let Some(state) = states.iter().find(|s| s.name == name) else {
-        return Err((
-            format!("`{name}` has no friction, so whether it slips cannot be asked"),
-            "give the site a `friction` coefficient".into(),
-        ));
-    };
+    let state = site_state(problem, system, site, (t, q, rates), ("slips", "site"))?;
     let slip = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
     // Still, but sticking failed its check (a hoop let go on a slope too steep for μ): the
     // ratio is the one sticking needed, above 1, not the sliding friction's.
@@ -86,6 +78,31 @@ pub fn values(
     Ok(found)
 }
 
+/// The friction state of the site `site` at the state, for a question `asked` of a `what`
+/// (`("slips", "site")`).
+///
+/// # Errors
+/// A site without friction, or a state where the equations cannot be solved; in words.
+fn site_state(
+    problem: &Problem,
+    system: &dyn System,
+    site: usize,
+    (t, q, rates): (f64, &[f64], &[f64]),
+    (asked, what): (&str, &str),
+) -> Result<SiteState, (String, String)> {
+    let name = problem.site_name(site);
+    let (states, _) = system
+        .friction_at(t, q, rates, None)
+        .map_err(|e| (format!("cannot answer: {e}"), "ask at another state".into()))?;
+    let Some(state) = states.into_iter().find(|s| s.name == name) else {
+        return Err((
+            format!("`{name}` has no friction, so whether it {asked} cannot be asked"),
+            format!("give the {what} a `friction` coefficient"),
+        ));
+    };
+    Ok(state)
+}
+
 /// Whether the site `site` of `problem` can only push (a `contact` or a `rolling` disc on
 /// its plane), so that a normal force that would have to pull loses the contact; a
 /// slider's guide or a gear's teeth take either sense.
@@ -110,16 +127,7 @@ pub fn normal(
     site: usize,
     (t, q, rates): (f64, &[f64], &[f64]),
 ) -> Result<Vec<(Quantity, f64)>, (String, String)> {
-    let name = problem.site_name(site);
-    let (states, _) = system
-        .friction_at(t, q, rates, None)
-        .map_err(|e| (format!("cannot answer: {e}"), "ask at another state".into()))?;
-    let Some(state) = states.iter().find(|s| s.name == name) else {
-        return Err((
-            format!("`{name}` has no friction, so whether it tips cannot be asked"),
-            "give the contact a `friction` coefficient".into(),
-        ));
-    };
+    let state = site_state(problem, system, site, (t, q, rates), ("tips", "contact"))?;
     Ok(vec![(Quantity::Named(NORMAL.into()), state.normal)])
 }
 

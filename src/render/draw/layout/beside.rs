@@ -139,7 +139,8 @@ pub(super) fn inside(item: &Item, p: P2) -> bool {
     })
 }
 
-fn to_segment(p: P2, a: P2, b: P2) -> f64 {
+/// The distance of `p` from the segment `a`–`b`.
+pub(super) fn to_segment(p: P2, a: P2, b: P2) -> f64 {
     let d = [b[0] - a[0], b[1] - a[1]];
     let length2 = d[0] * d[0] + d[1] * d[1];
     let t = if length2 > 0.0 {

@@ -4,6 +4,7 @@
 
 use super::super::picture::P2;
 use super::super::strokes::{p2add, p2norm, p2unit};
+use super::beside::to_segment;
 use super::Painter;
 
 /// The curl's start when nothing is in its way (its gap then opens to the lower right).
@@ -12,18 +13,6 @@ pub(super) const START: f64 = std::f64::consts::FRAC_PI_4 * 3.0;
 const ON: f64 = 4.0;
 /// How far along a straight arrow's line, from its point, it is expected to reach (px).
 const REACH: f64 = 60.0;
-
-/// The distance of `p` from the segment `a`–`b`.
-fn to_segment(p: P2, a: P2, b: P2) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let length2 = d[0] * d[0] + d[1] * d[1];
-    let t = if length2 > 0.0 {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / length2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p2norm([p[0] - a[0] - t * d[0], p[1] - a[1] - t * d[1]])
-}
 
 impl Painter {
     /// The page directions of the panel's straight arrows that act at `at`.
