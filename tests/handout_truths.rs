@@ -212,3 +212,17 @@ fn the_energy_traded_between_t_and_v_is_what_passes_between_them() {
         "{said} J traded against T₀ = {t0} J"
     );
 }
+
+/// A driven system's energy changes by the work of its loads: the cart pulled by P gains
+/// P ẋ per second, so step 6 says why its E rises; a free double pendulum keeps its E and
+/// says nothing of loads.
+#[test]
+fn a_driven_systems_energy_is_said_to_change_by_the_loads_work() {
+    let said = |name: &str| {
+        let text = handout(name, "motion-law");
+        between(&text, "## Step 6", "## Answers").contains("do work on it")
+    };
+    assert!(said("disc-on-cart"));
+    assert!(said("gear-pair-torque"));
+    assert!(!said("double-pendulum-rods"));
+}

@@ -48,6 +48,9 @@ pub fn simulation(
     }
     solution.simulation.note = notes.join(" ");
     solution.simulation.checks = checks_said(problem, checks, trajectory);
+    if let Some(work) = energy_changed_by_work(checks, trajectory) {
+        solution.simulation.checks.push(work);
+    }
     // One quantity per axis: angles and distances on plots of their own.
     let series_of = |kind: CoordinateKind| -> Vec<Series> {
         problem
@@ -162,6 +165,41 @@ fn checks_said(
             }
         })
         .collect()
+}
+
+/// Where no check speaks of the energy but the energy plot shows E change (a cart pulled by
+/// a force, a gear driven by a torque): why, so a student does not read it as an error.
+fn energy_changed_by_work(
+    checks: &[crate::numeric::Check],
+    trajectory: &Trajectory,
+) -> Option<Check> {
+    let energy_checked = checks.iter().any(|c| {
+        matches!(
+            c.kind,
+            CheckKind::EnergyConservation
+                | CheckKind::EnergyNeverRises
+                | CheckKind::EnergyBalanceWithDrives
+        )
+    });
+    let total = trajectory.series("total")?;
+    let (low, high) = (total.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+        (l.min(p.1), h.max(p.1))
+    });
+    let scale = total.iter().fold(1e-12f64, |m, p| m.max(p.1.abs()));
+    if energy_checked || high - low <= 1e-6 * scale {
+        return None;
+    }
+    Some(Check {
+        name: "energy".into(),
+        value: String::new(),
+        tolerance: String::new(),
+        passed: true,
+        detail: MarkupLine::from(
+            "The loads applied to the system do work on it, so its total energy $E$ is not \
+             constant: it changes by their work, as the energy plot shows."
+                .to_string(),
+        ),
+    })
 }
 
 /// The kinetic, potential and total energy against time, for the energy's plot.
