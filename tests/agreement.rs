@@ -41,18 +41,8 @@ fn the_three_methods_agree_at_random_states_of_every_bundled_problem() {
         for _ in 0..12 {
             // Within ±0.5 of the initial state: away from the singular configurations that
             // the problems are written to avoid.
-            let q: Vec<f64> = problem
-                .coordinates
-                .iter()
-                .map(|c| c.initial + 0.5 * random.next())
-                .collect();
-            let rates: Vec<f64> = problem
-                .coordinates
-                .iter()
-                .map(|c| c.rate + random.next())
-                .collect();
+            let (mut q, mut rates) = random.state_near(&problem, 0.5);
             let t = 0.5 * (random.next() + 1.0);
-            let (mut q, mut rates) = (q, rates);
             // Kane's rows with independent speeds hold only where the constraints do: the
             // methods are compared on the constraint manifold.
             if compiled[0].assemble(t, &mut q, &mut rates).is_err() {

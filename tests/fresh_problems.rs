@@ -38,6 +38,21 @@ fn command(cmd: &str, name: &str, method: &str, extra: &[&str]) -> Value {
     method_json(cmd, &fixture(name), method, extra)
 }
 
+/// `grade` of tests/fresh_problems/NAME.json by `method`, the submission written to a
+/// scratch file.
+fn graded(name: &str, submission: &Value, method: &str) -> Value {
+    let dir = std::env::temp_dir().join(format!("mbd-fresh-grade-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("folder");
+    let path = dir.join(format!("{method}.json"));
+    std::fs::write(&path, submission.to_string()).expect("write");
+    command(
+        "grade",
+        name,
+        method,
+        &[path.to_str().expect("a UTF-8 path")],
+    )
+}
+
 /// `solve` by every method, each checked to say its method.
 fn solve_each(name: &str, extra: &[&str]) -> Vec<Value> {
     METHODS

@@ -119,16 +119,7 @@ fn check_numbers(name: &str, problem: &Problem, kane: &Derivation) {
     let mut random = Lcg(11);
     let mut checked = 0;
     for _ in 0..6 {
-        let mut q: Vec<f64> = problem
-            .coordinates
-            .iter()
-            .map(|c| c.initial + 0.2 * random.next())
-            .collect();
-        let mut rates: Vec<f64> = problem
-            .coordinates
-            .iter()
-            .map(|c| c.rate + random.next())
-            .collect();
+        let (mut q, mut rates) = random.state_near(problem, 0.2);
         let t = 0.3 * (random.next() + 1.0);
         if newton.assemble(t, &mut q, &mut rates).is_err() {
             continue;

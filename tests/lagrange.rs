@@ -187,16 +187,7 @@ fn the_double_pendulums_energies_derivatives_and_equations_are_the_hand_derivati
 /// The solution of `problem` by `method` at a state near the initial one, on the constraints.
 fn solve_near(problem: &Problem, method: Method, random: &mut Lcg) -> Option<StateSolution> {
     let compiled = Compiled::new(&derive(problem, method, Purpose::Rows).expect("derives"));
-    let mut q: Vec<f64> = problem
-        .coordinates
-        .iter()
-        .map(|c| c.initial + 0.2 * random.next())
-        .collect();
-    let mut rates: Vec<f64> = problem
-        .coordinates
-        .iter()
-        .map(|c| c.rate + random.next())
-        .collect();
+    let (mut q, mut rates) = random.state_near(problem, 0.2);
     compiled.assemble(0.0, &mut q, &mut rates).ok()?;
     Some(compiled.solve(0.0, &q, &rates).expect("solves"))
 }
@@ -350,16 +341,7 @@ fn the_spherical_chains_worked_rows_give_the_other_methods_accelerations() {
         let other = Compiled::new(&derive(&problem, method, Purpose::Rows).expect("derives"));
         let mut random = Lcg(11);
         for _ in 0..4 {
-            let q: Vec<f64> = problem
-                .coordinates
-                .iter()
-                .map(|c| c.initial + 0.3 * random.next())
-                .collect();
-            let rates: Vec<f64> = problem
-                .coordinates
-                .iter()
-                .map(|c| c.rate + random.next())
-                .collect();
+            let (q, rates) = random.state_near(&problem, 0.3);
             let got = worked.solve(0.0, &q, &rates).expect("solves");
             let want = other.solve(0.0, &q, &rates).expect("solves");
             let scale = want

@@ -110,20 +110,8 @@ fn grade_knows_a_right_derivation_from_one_with_the_wrong_moment_of_inertia() {
     let (m, l, g, tau, theta) = (1.5f64, 0.8, 9.81, 2.0, 0.4f64);
     let mut sub = submission.clone();
     sub["answers"]["3"] = json!((m * g * l / 2.0 * theta.cos() + tau) / (m * l * l / 3.0));
-    let dir = std::env::temp_dir().join(format!("mbd-fresh-grade-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("folder");
-    let path = dir.join("s1.json");
-    std::fs::write(&path, sub.to_string()).expect("write");
     for method in crate::support::METHODS {
-        let g = crate::support::run_json(&[
-            std::ffi::OsString::from("grade"),
-            fixture("bar-under-sideways-gravity").into(),
-            path.clone().into(),
-            "--format".into(),
-            "json".into(),
-            "--method".into(),
-            method.into(),
-        ]);
+        let g = super::graded("bar-under-sideways-gravity", &sub, method);
         assert_eq!(g["student"], "s1");
         let items = g["items"].as_array().expect("items");
         let item = |name: &str| {

@@ -3,25 +3,7 @@
 //! bad input on Version 4's keys refused with exit 1, the JSON path and a hint.
 
 use super::errors::{names, refused, scratch};
-use super::fixture;
-use serde_json::{json, Value};
-
-/// `grade` of the bar for grading by `method`, the submission written to a scratch file.
-fn graded(submission: &Value, method: &str) -> Value {
-    let dir = std::env::temp_dir().join(format!("mbd-fresh-grade4-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("folder");
-    let path = dir.join(format!("{method}.json"));
-    std::fs::write(&path, submission.to_string()).expect("write");
-    crate::support::run_json(&[
-        std::ffi::OsString::from("grade"),
-        fixture("bar-for-grading").into(),
-        path.into(),
-        "--format".into(),
-        "json".into(),
-        "--method".into(),
-        method.into(),
-    ])
-}
+use serde_json::json;
 
 /// The bar (m, L, θ from the downward vertical, centre −L/2 b̂_y): m L²/3 θ̈ +
 /// m g (L/2) sin θ = 0; a* = (L/2) θ̈ b̂_x + (L/2) θ̇² b̂_y; ∂v*/∂θ̇ = (L/2) b̂_x.
@@ -41,7 +23,7 @@ fn grade_names_the_wrong_sign_and_the_missing_centripetal_term() {
         "partial_velocities": { "B*": ["L/2*B.x"] }
     });
     for method in crate::support::METHODS {
-        let g = graded(&submission, method);
+        let g = super::graded("bar-for-grading", &submission, method);
         let items = g["items"].as_array().expect("items");
         let item = |name: &str| {
             items

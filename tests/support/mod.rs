@@ -257,4 +257,20 @@ impl Lcg {
             .wrapping_add(1_442_695_040_888_963_407);
         ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     }
+
+    /// A state near `problem`'s initial one: each coordinate within `spread` of its initial
+    /// value, each rate within 1 of its initial rate (the coordinates drawn first).
+    pub fn state_near(
+        &mut self,
+        problem: &mbd_tutor::problem::Problem,
+        spread: f64,
+    ) -> (Vec<f64>, Vec<f64>) {
+        let q: Vec<f64> = (problem.coordinates.iter())
+            .map(|c| c.initial + spread * self.next())
+            .collect();
+        let rates: Vec<f64> = (problem.coordinates.iter())
+            .map(|c| c.rate + self.next())
+            .collect();
+        (q, rates)
+    }
 }
