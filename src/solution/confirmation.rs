@@ -107,7 +107,7 @@ fn energies(trajectory: &Trajectory) -> Option<(Vec<(f64, f64)>, f64)> {
 }
 
 /// The largest value of a series less its smallest.
-fn range(series: &[(f64, f64)]) -> f64 {
+pub(super) fn range(series: &[(f64, f64)]) -> f64 {
     let (low, high) = (series.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
         (l.min(p.1), h.max(p.1))
     });

@@ -182,11 +182,8 @@ fn energy_changed_by_work(
         )
     });
     let total = trajectory.series("total")?;
-    let (low, high) = (total.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
-        (l.min(p.1), h.max(p.1))
-    });
     let scale = total.iter().fold(1e-12f64, |m, p| m.max(p.1.abs()));
-    if energy_checked || high - low <= 1e-6 * scale {
+    if energy_checked || super::confirmation::range(&total) <= 1e-6 * scale {
         return None;
     }
     Some(Check {
