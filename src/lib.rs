@@ -15,7 +15,7 @@
 //!    its inverse; the kinematics of every body (step 4), written with the speeds.
 //! 3. [`plan`]: every force and couple on every body (step 2, the free bodies), the rows
 //!    of equations ([`plan::Equation`]), and the Motion Law planner's table (step 3).
-//! 4. [`equations`]: Newton–Euler, the Motion Law and Kane's method, each a
+//! 4. [`equations`]: Newton–Euler, the Motion Law, Kane's method and Lagrange's equations, each a
 //!    [`Derivation`](equations::Derivation) with a linear system `A x = b` (step 5). Its
 //!    unknowns are the q'' (the u' of declared speeds) and typed [`Unknown`](symbolic::Unknown)s: reaction components
 //!    of sites, drives and multipliers, whose names and LaTeX come from the type. For the

@@ -1,4 +1,4 @@
-//! The three methods against each other at many random states of every bundled problem,
+//! The four methods against each other at many random states of every bundled problem,
 //! and energy conservation over 10 s: checks that do not rest on any one method.
 
 use mbd_tutor::equations::Method;
@@ -24,7 +24,7 @@ fn close(a: f64, b: f64, scale: f64) -> bool {
 }
 
 #[test]
-fn the_three_methods_agree_at_random_states_of_every_bundled_problem() {
+fn the_methods_agree_at_random_states_of_every_bundled_problem() {
     for path in bundled() {
         let problem = load_file(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let compiled: Vec<Compiled> = Method::ALL

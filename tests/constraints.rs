@@ -1,7 +1,7 @@
 //! Constrained systems (closures, prescribed motion, rolling contacts, position and velocity
 //! constraints) against references that do not come from this program: hand derivations
 //! written out in the tests, closed forms and conservation of energy. Every check runs with
-//! each of the three methods.
+//! each of the four methods.
 
 mod invalid;
 mod loops;

@@ -46,17 +46,57 @@ fn code_lines(path: &Path) -> Vec<String> {
         .collect()
 }
 
-/// `crate::NAME` paths of `path`'s code, for each stage in `names`, as "file: line".
+/// `crate::NAME` paths of `path`'s code, for each stage in `names`, as "file: line"; a
+/// grouped `use crate::{…}` that names one, over as many lines as it takes, as "file: group".
 fn naming(path: &Path, names: &[&str]) -> Vec<String> {
-    code_lines(path)
-        .into_iter()
+    let lines = code_lines(path);
+    let mut found: Vec<String> = (lines.iter())
         .filter(|line| {
             names.iter().any(|n| {
                 line.contains(&format!("crate::{n}::")) || line.contains(&format!("crate::{n};"))
             })
         })
         .map(|line| format!("{}: {line}", path.display()))
-        .collect()
+        .collect();
+    let code: String = lines.concat();
+    found.extend(
+        grouped_uses(&code)
+            .into_iter()
+            .filter(|group| names.iter().any(|n| group_names(group, n)))
+            .map(|group| format!("{}: use crate::{group}", path.display())),
+    );
+    found
+}
+
+/// The `{…}` groups after `crate::` in `code`, braces matched, without white space.
+fn grouped_uses(code: &str) -> Vec<String> {
+    let mut groups = Vec::new();
+    let mut rest = code;
+    while let Some(at) = rest.find("crate::{") {
+        rest = &rest[at + "crate::".len()..];
+        let mut depth = 0;
+        let end = rest.char_indices().find_map(|(i, c)| {
+            depth += match c {
+                '{' => 1,
+                '}' => -1,
+                _ => 0,
+            };
+            (depth == 0).then_some(i)
+        });
+        let end = end.unwrap_or(rest.len() - 1);
+        groups.push(rest[..=end].chars().filter(|c| !c.is_whitespace()).collect());
+        rest = &rest[end + 1..];
+    }
+    groups
+}
+
+/// Whether a `{…}` group names the stage `name` at its top: `{name::…`, `,name,` or `{name}`.
+fn group_names(group: &str, name: &str) -> bool {
+    ["{", ","].iter().any(|before| {
+        ["::", ",", "}"]
+            .iter()
+            .any(|after| group.contains(&format!("{before}{name}{after}")))
+    })
 }
 
 #[test]
@@ -66,16 +106,18 @@ fn the_path_finder_sees_a_stage_named_in_code_and_not_in_a_comment() {
     let file = dir.join("probe.rs");
     std::fs::write(
         &file,
-        "//! reads `crate::solution::pictures`\nuse crate::numeric::simulate;\n",
+        "//! reads `crate::solution::pictures`\nuse crate::numeric::simulate;\n\
+         use crate::{\n    symbolic::Expr,\n    pipeline::{run, Job},\n};\n",
     )
     .expect("written");
     let found = naming(&file, &BEFORE_THE_DOCUMENT);
     std::fs::remove_dir_all(&dir).ok();
-    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(found.len(), 2, "{found:?}");
     assert!(
         found[0].ends_with("use crate::numeric::simulate;"),
         "{found:?}"
     );
+    assert!(found[1].contains("pipeline::{run,Job}"), "{found:?}");
 }
 
 #[test]

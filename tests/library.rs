@@ -58,10 +58,10 @@ fn every_problem_checks() {
     }
 }
 
-/// The three methods form different equations (different free bodies, unknowns and
+/// The four methods form different equations (different free bodies, unknowns and
 /// directions), so agreement between them is a real check on each.
 #[test]
-fn the_three_methods_agree_on_every_problem() {
+fn the_methods_agree_on_every_problem() {
     for path in all_problems() {
         let name = stem(&path);
         let first = solve(&name, METHODS[0], &[]);

@@ -1,4 +1,4 @@
-//! The three methods against equations derived by hand here or taken from textbooks.
+//! Every method against equations derived by hand here or taken from textbooks.
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::{Compiled, StateSolution};

@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 for p in problems/*.json problems/validation/*.json; do
   name=$(basename "$p" .json)
   [ "${p#problems/validation/}" != "$p" ] && name="validation-$name"
-  for m in motion-law newton-euler kane; do
+  for m in motion-law newton-euler kane lagrange; do
     for f in markdown latex html; do
       "$bin" explain "$p" --method $m --format $f >"$out/$name.$m.$f" 2>&1
     done

@@ -271,7 +271,7 @@ pub struct SimulateArgs {
     /// The most output rows before the run is refused (a guard against gigabytes of output).
     #[arg(long, default_value_t = crate::numeric::MAX_ROWS)]
     pub max_rows: usize,
-    /// Skip the confirmation checks (energy, agreement of the three methods, period of small
+    /// Skip the confirmation checks (energy, agreement of the four methods, period of small
     /// oscillations) that are otherwise reported on standard error.
     #[arg(long)]
     pub no_checks: bool,

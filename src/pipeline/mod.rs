@@ -56,7 +56,7 @@ pub fn load(path: &std::path::Path) -> Result<Problem, Error> {
 }
 
 /// The confirmation checks of a run of `solver` from `q0` (see
-/// [`numeric::checks::confirm`](crate::numeric::confirm)), the other two methods
+/// [`numeric::checks::confirm`](crate::numeric::confirm)), the other three methods
 /// derived and solved through this pipeline, with the same recovery. Every method is
 /// checked by its own rows ([`Purpose::Own`]): where Kane's system by composite bodies stood
 /// in for `solver`'s method, that method's own rows are derived for the check.

@@ -1,6 +1,7 @@
-//! The one entry for a derivation: [`derive`] calls the stages in turn (the model, steps 1
-//! and 4; the free bodies, step 2; the equations of one method, steps 3 and 5) for what the
-//! caller needs ([`Purpose`]), counted against the work limit.
+//! The one entry for a derivation: [`derive`] turns what the caller needs ([`Purpose`])
+//! into an `equations::Request` and calls `equations::derive`, which builds the model
+//! (steps 1 and 4), the free bodies (step 2) and one method's rows (steps 3 and 5), counted
+//! against the work limit.
 
 use crate::equations::{self, Derivation, Method, Request, Rows};
 use crate::error::Error;

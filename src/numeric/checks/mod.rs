@@ -14,7 +14,7 @@ use crate::problem::Problem;
 use crate::symbolic::fixed;
 
 /// Every confirmation check that applies to a run of `primary` (its method's name and its
-/// equations) on `problem`: energy, agreement with `others` (the other two methods, each with
+/// equations) on `problem`: energy, agreement with `others` (the other three methods, each with
 /// its equations or why they could not be had) at 10 rows, the small-oscillation period,
 /// and with constraints their drift and the drives' energy balance. Checks that do not
 /// apply (energy with actuators, the period without a stable equilibrium) are left out; a
