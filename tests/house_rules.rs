@@ -84,7 +84,12 @@ fn grouped_uses(code: &str) -> Vec<String> {
             (depth == 0).then_some(i)
         });
         let end = end.unwrap_or(rest.len() - 1);
-        groups.push(rest[..=end].chars().filter(|c| !c.is_whitespace()).collect());
+        groups.push(
+            rest[..=end]
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .collect(),
+        );
         rest = &rest[end + 1..];
     }
     groups

@@ -53,6 +53,7 @@ mod resal;
 mod robustness;
 mod rolling_on_body;
 mod rows_as_formed;
+mod schema;
 mod separation;
 mod slider_friction;
 mod snapshots_by_problem;
