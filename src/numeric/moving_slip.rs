@@ -132,7 +132,10 @@ pub fn normal(
     let slip = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
     Ok(vec![
         (Quantity::Named(NORMAL.into()), state.normal),
-        (Quantity::Named(SLIP.into()), if slip > STILL { slip } else { 0.0 }),
+        (
+            Quantity::Named(SLIP.into()),
+            if slip > STILL { slip } else { 0.0 },
+        ),
     ])
 }
 

@@ -308,7 +308,10 @@ fn energies(model: &Model) -> Vec<String> {
     if !names.is_empty() {
         lines.push(format!("T = {}", names.join(" + ")));
     }
-    lines.push(format!("V = {}", super::potential_tex::potential_tex(model)));
+    lines.push(format!(
+        "V = {}",
+        super::potential_tex::potential_tex(model)
+    ));
     lines.push("L = T - V".into());
     lines
 }

@@ -64,7 +64,9 @@ fn spring_stretch(
     free_length: &Expr,
     sign: &dyn Fn(&Expr) -> f64,
 ) -> Expr {
-    let d = model.position(between[1]).minus(&model.position(between[0]));
+    let d = model
+        .position(between[1])
+        .minus(&model.position(between[0]));
     let length2 = simplify(&d.dot(&d, &model.frames));
     let length = crate::symbolic::pow(length2, Expr::ratio(1, 2));
     let length = roots_of_squares(&simplify(&length), sign);
