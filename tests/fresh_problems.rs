@@ -10,15 +10,20 @@
 //! universal joint), by every method. Eleven more hold Version 4's questions: `in` frames,
 //! `show`, `period`, `slips`, `tips` (with no equilibrium near, and with a contact lost),
 //! `impending`, a held motor, a collision with friction, Lagrange's multipliers and
-//! `grade` (`version_four`, `at_rest_four`, `grading_four`).
+//! `grade` (`version_four`, `at_rest_four`, `grading_four`). Six more hold a block on a
+//! wedge tied by a spring, an elastic pendulum, a ladder climbed on a rough floor, a rod
+//! swinging into a stop, a bead on a spun hoop and a toggle held against a load
+//! (`springs_and_stops`); `handout_lines` checks lines of the handouts on them.
 
 mod at_rest_four;
 mod errors;
 mod grading_four;
+mod handout_lines;
 mod handouts_four;
 mod motion;
 mod motion_3d;
 mod rest_and_impact;
+mod springs_and_stops;
 mod version_four;
 
 use crate::support::{method_json, METHODS};

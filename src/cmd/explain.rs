@@ -230,13 +230,17 @@ fn run_directory(args: &ExplainArgs) -> Result<(), Error> {
 }
 
 /// Whether every coordinate of `problem` is held by a support or solved from the held
-/// ones (`dependent`), at least one held and no impact: a problem of statics, whatever the
-/// method.
+/// ones by the constraints (marked `dependent`, or chosen as the constraints fix them), at
+/// least one held and no impact: a problem of statics, whatever the method.
 fn held_still(problem: &crate::problem::Problem) -> bool {
     let coordinates = &problem.coordinates;
-    problem.impact.is_none()
-        && coordinates.iter().any(|c| c.held)
-        && coordinates.iter().all(|c| c.held || c.dependent)
+    if problem.impact.is_some() || !coordinates.iter().any(|c| c.held) {
+        return false;
+    }
+    let solved = crate::mechanics::Model::build(problem)
+        .map(|model| model.constraints.dependent.clone())
+        .unwrap_or_default();
+    (coordinates.iter().enumerate()).all(|(i, c)| c.held || c.dependent || solved.contains(&i))
 }
 
 /// The name of the file `path` without its extension (`solution` when it has none): the

@@ -160,7 +160,7 @@ fn sample(
         let mut q: Vec<f64> = problem
             .coordinates
             .iter()
-            .map(|c| c.initial + 1.2 * draw.next())
+            .map(|c| c.initial + spread(c) * draw.next())
             .collect();
         let mut rates: Vec<f64> = problem
             .coordinates
@@ -204,6 +204,18 @@ fn sample(
     match (samples.is_empty(), last_error) {
         (true, Some(e)) => Err(Error::Solve(e)),
         _ => Ok(samples),
+    }
+}
+
+/// How far a sampled coordinate strays either side of its initial value: 1.2, but a
+/// length not zero at the start keeps its sign, as the distance r of a particle on a
+/// spring from its pivot does (its spring's length |r| is r only for r > 0, and a student
+/// writes k (r − l₀)).
+fn spread(coordinate: &crate::problem::Coordinate) -> f64 {
+    let angle = matches!(coordinate.unit.as_deref(), Some("rad" | "deg" | "degree"));
+    match (angle, coordinate.initial) {
+        (false, x) if x != 0.0 => (0.8 * x.abs()).min(1.2),
+        _ => 1.2,
     }
 }
 

@@ -117,7 +117,8 @@ pub fn one_sided(problem: &Problem, site: usize) -> bool {
 
 /// The normal force of the rough contact `site` of `problem` as the motion starts from
 /// the state: the value of a `tips` answer where no equilibrium is near (a body let go
-/// out of balance), negative where the contact would have to pull.
+/// out of balance), negative where the contact would have to pull; then the contact
+/// point's slip speed, which says the answer holds in motion, not at rest.
 ///
 /// # Errors
 /// A site without friction, or a state where the equations cannot be solved; in words.
@@ -128,7 +129,14 @@ pub fn normal(
     (t, q, rates): (f64, &[f64], &[f64]),
 ) -> Result<Vec<(Quantity, f64)>, (String, String)> {
     let state = site_state(problem, system, site, (t, q, rates), ("tips", "contact"))?;
-    Ok(vec![(Quantity::Named(NORMAL.into()), state.normal)])
+    let slip = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
+    Ok(vec![
+        (Quantity::Named(NORMAL.into()), state.normal),
+        (
+            Quantity::Named(SLIP.into()),
+            if slip > STILL { slip } else { 0.0 },
+        ),
+    ])
 }
 
 /// Whether a `slips` answer's values hold a normal force that would have to pull: the

@@ -33,10 +33,20 @@ pub fn solution(worked: &crate::Worked) -> Solution {
     solution
 }
 
-/// What the problem alone gives: title, statement and step 1 (also the student's handout,
-/// which names its bodies, points and joints by the problem's words).
+/// What the problem alone gives: title, statement and step 1, for the student's handout,
+/// which names its bodies, points and joints by the letters the worked solution prints
+/// (by the problem's words where its kinematics cannot be built).
 pub fn setup(problem: &Problem, method: Method) -> Solution {
-    crate::symbolic::with_style(style_of(problem), || setup_styled(problem, method, &[])).0
+    crate::symbolic::with_style(style_of(problem), || {
+        let shown = crate::mechanics::Model::build(problem)
+            .map(|model| super::shown_names::shown_names(&model))
+            .unwrap_or_default();
+        let mut solution = setup_styled(problem, method, &shown);
+        super::shown_names::name_in_step_one(&mut solution, &shown);
+        solution.shown_names = shown;
+        solution
+    })
+    .0
 }
 
 /// Title, statement and step 1, a word-named joint called by its letter in `shown`.

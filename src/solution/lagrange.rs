@@ -308,8 +308,10 @@ fn energies(model: &Model) -> Vec<String> {
     if !names.is_empty() {
         lines.push(format!("T = {}", names.join(" + ")));
     }
-    let v = tex(&lagrange_potential(model));
-    lines.push(format!("V = {v}"));
+    lines.push(format!(
+        "V = {}",
+        super::potential_tex::potential_tex(model)
+    ));
     lines.push("L = T - V".into());
     lines
 }

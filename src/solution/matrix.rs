@@ -539,10 +539,16 @@ fn coefficient_rules(derivation: &Derivation) -> Vec<Named> {
         ));
     }
     if sums(|s| matches!(s, Sum::Generalized { .. })) {
-        rules.push(rule(
-            "in Kane's row r",
-            "A_{rj} = -\\sum_{k} \\left( m_{k}\\, \\mathbf{v}^{k^*}_{r} \\cdot \\mathbf{v}^{k^*}_{j} + \\boldsymbol{\\omega}^{k}_{r} \\cdot \\mathbf{I}^{k} \\cdot \\boldsymbol{\\omega}^{k}_{j} \\right)",
-        ));
+        // Lagrange's row d/dt(∂L/∂q̇_r) − ∂L/∂q_r = Q_r has the mass matrix with its own
+        // sign; Kane's F_r + F*_r = 0 has it with the opposite one.
+        let sum = "\\sum_{k} \\left( m_{k}\\, \\mathbf{v}^{k^*}_{r} \\cdot \\mathbf{v}^{k^*}_{j} + \\boldsymbol{\\omega}^{k}_{r} \\cdot \\mathbf{I}^{k} \\cdot \\boldsymbol{\\omega}^{k}_{j} \\right)";
+        rules.push(match derivation.method {
+            Method::Lagrange => rule(
+                "in Lagrange's equation of coordinate r",
+                &format!("A_{{rj}} = {sum}"),
+            ),
+            _ => rule("in Kane's row r", &format!("A_{{rj}} = -{sum}")),
+        });
     }
     rules.push(rule(
         "the coefficient of a reaction component: its unit force (or the moment of it about P) along d; and the right-hand side",

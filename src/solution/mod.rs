@@ -59,6 +59,7 @@ mod named_identity;
 mod normal_sense;
 mod on_constraint;
 mod pictures;
+mod potential_tex;
 mod question_answers;
 mod question_steps;
 mod reaction_frames;

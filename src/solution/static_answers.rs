@@ -53,8 +53,10 @@ pub fn verdict_words(question: &Question, answer: &Answer) -> Option<&'static st
         }
         QuestionKind::Slips { .. } if slips(answer) => "yes: holding it needs |F| > mu |N|",
         QuestionKind::Slips { .. } => "no: friction can hold it, |F| <= mu |N|",
-        QuestionKind::Tips { .. } if tips(answer) => "yes: the contact would have to pull, N < 0",
-        QuestionKind::Tips { .. } => "no: the contact pushes, N >= 0",
+        QuestionKind::Tips { .. } if tips(answer) => {
+            "yes: the contact is lost, as its normal force would have to pull, N < 0"
+        }
+        QuestionKind::Tips { .. } => "no: the contact holds, as its normal force pushes, N >= 0",
         _ => return None,
     })
 }
@@ -165,7 +167,11 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
             number(x),
             if slips(answer) { ">" } else { "\\le" }
         ),
-        QuestionKind::Tips { .. } => format!("N = {}\\ \\mathrm{{N}}", number(x)),
+        QuestionKind::Tips { .. } => format!(
+            "N = {}\\ \\mathrm{{N}} {} 0",
+            number(x),
+            if tips(answer) { "<" } else { "\\ge" }
+        ),
         QuestionKind::Impending { constant, .. } => {
             let unit = problem.constants[*constant]
                 .unit
@@ -204,16 +210,7 @@ pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> S
                 site(*i)
             ),
         },
-        QuestionKind::Tips { site: i } => match tips(answer) {
-            false => format!(
-                "\\text{{the contact at {} pushes: it does not tip}}",
-                site(*i)
-            ),
-            true => format!(
-                "\\text{{rest needs the contact at {} to pull: it tips}}",
-                site(*i)
-            ),
-        },
+        QuestionKind::Tips { site: i } => tips_verdict(&site(*i), answer),
         QuestionKind::Impending {
             site: i,
             tips: true,
@@ -228,6 +225,24 @@ pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> S
             format!("|F| = \\mu |N| \\text{{ at {}: slip impends}}", site(*i))
         }
         _ => String::new(),
+    }
+}
+
+/// What decides a `tips`: at rest, or (where no equilibrium is near) as the motion
+/// starts, whether the contact's normal force pushes (it holds) or would have to pull
+/// (the contact is lost, and the body tips off it).
+fn tips_verdict(site: &str, answer: &Answer) -> String {
+    let when = match slip_speed(answer) {
+        Some(_) => "as the motion starts",
+        None => "at rest",
+    };
+    match tips(answer) {
+        false => format!(
+            "\\text{{no: {when} the contact at {site} pushes, so it holds: the body does not tip}}"
+        ),
+        true => format!(
+            "\\text{{yes: {when} the contact at {site} would have to pull, so it is lost: the body tips}}"
+        ),
     }
 }
 
