@@ -246,7 +246,9 @@ pub fn dependent_speeds(
     // numbers, ẋ = −0.3 θ̇_R, for the handouts that need no C by name.
     let values = model.values_at(0.0, q, rates);
     let symbolic = super::relations::in_symbols(model, &dependent, &reducer.rates, &c, &values)
-        .or_else(|| super::loop_relations::written(model, (&dependent, &reducer.rates), &c, &values));
+        .or_else(|| {
+            super::loop_relations::written(model, (&dependent, &reducer.rates), &c, &values)
+        });
     let relations_tex = dependent
         .iter()
         .enumerate()

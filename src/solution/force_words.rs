@@ -112,8 +112,7 @@ fn found(question: &Question, answer: &Answer) -> (Vec<Found>, Vec<Found>) {
         let Quantity::Reaction(ReactionColumn::Component { kind, axis, .. }) = quantity else {
             continue;
         };
-        if value.abs() < ROUND_OFF || crate::numeric::is_free_moment(question, quantity, *value)
-        {
+        if value.abs() < ROUND_OFF || crate::numeric::is_free_moment(question, quantity, *value) {
             continue;
         }
         match kind {
@@ -222,7 +221,9 @@ fn sized(at: &At, frame: &str, axis: usize, value: f64, unit: &str) -> String {
     let sign = if value > 0.0 { "+" } else { "-" };
     let vector = format!("${sign}{}$", latex_unit_vector(frame, axis as u8));
     let size = format!("${}{}$", number_tex(value.abs()), unit_tex(unit));
-    let vertical = at.up.map_or(0.0, |up| dot(at.unit_in_ground(axis), up) * value.signum());
+    let vertical = at
+        .up
+        .map_or(0.0, |up| dot(at.unit_in_ground(axis), up) * value.signum());
     match vertical {
         v if v > ALIGNED => format!("{size} up ({vector})"),
         v if v < -ALIGNED => format!("{size} down ({vector})"),
@@ -248,10 +249,12 @@ fn kind(problem: &Problem, site: &Site, at: &At, axis: usize, forces: &[Found]) 
         return Kind::Force;
     }
     let constraint = problem.constraints.get(k);
-    let teeth = matches!(constraint.map(|c| &c.kind), Some(ConstraintKind::Gear { .. }))
-        || ["teeth", "tooth", "mesh"]
-            .iter()
-            .any(|w| site.name.to_lowercase().contains(w));
+    let teeth = matches!(
+        constraint.map(|c| &c.kind),
+        Some(ConstraintKind::Gear { .. })
+    ) || ["teeth", "tooth", "mesh"]
+        .iter()
+        .any(|w| site.name.to_lowercase().contains(w));
     if teeth {
         return Kind::Tooth;
     }

@@ -12,26 +12,30 @@ use crate::symbolic::{latex, latex_unit_vector, simplify, Expr};
 /// a kept distance's square, and that distance: `(x, y, R − r)`.
 fn polar(model: &Model) -> Option<(Expr, Expr, Expr)> {
     let problem = model.problem;
-    model.constraints.relations.iter().find_map(|(_, relation)| {
-        let mut found: [Option<Expr>; 2] = [None, None];
-        for term in relation.square.terms() {
-            let i = (0..problem.coordinates.len()).find(|&i| {
-                let q = problem.coordinate_expr(i, 0);
-                simplify(&(&q * &q)) == *term
-            })?;
-            let c = &problem.coordinates[i];
-            let joint = &problem.joints[c.joint];
-            let along = joint.kind == JointKind::Planar && joint.parent == BodyId::GROUND;
-            if !along || c.index_in_joint > 1 {
-                return None;
+    model
+        .constraints
+        .relations
+        .iter()
+        .find_map(|(_, relation)| {
+            let mut found: [Option<Expr>; 2] = [None, None];
+            for term in relation.square.terms() {
+                let i = (0..problem.coordinates.len()).find(|&i| {
+                    let q = problem.coordinate_expr(i, 0);
+                    simplify(&(&q * &q)) == *term
+                })?;
+                let c = &problem.coordinates[i];
+                let joint = &problem.joints[c.joint];
+                let along = joint.kind == JointKind::Planar && joint.parent == BodyId::GROUND;
+                if !along || c.index_in_joint > 1 {
+                    return None;
+                }
+                found[c.index_in_joint] = Some(problem.coordinate_expr(i, 0));
             }
-            found[c.index_in_joint] = Some(problem.coordinate_expr(i, 0));
-        }
-        let [Some(x), Some(y)] = found else {
-            return None;
-        };
-        (relation.square.terms().len() == 2).then(|| (x, y, relation.root.clone()))
-    })
+            let [Some(x), Some(y)] = found else {
+                return None;
+            };
+            (relation.square.terms().len() == 2).then(|| (x, y, relation.root.clone()))
+        })
 }
 
 /// `ê_t = \frac{-y n̂_x + x n̂_y}{R - r}`, the definition said beside ê_r's; `None` where

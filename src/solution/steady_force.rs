@@ -152,14 +152,20 @@ fn parts_words(
         return None;
     }
     let (axis, up) = (*axis as usize, -eval(g, values).signum());
-    let c = force.components_in(BodyId::GROUND, &model.frames).map(|e| simplify(&e));
+    let c = force
+        .components_in(BodyId::GROUND, &model.frames)
+        .map(|e| simplify(&e));
     let others: Vec<usize> = (0..3).filter(|&k| k != axis).collect();
     let square = simplify(&crate::symbolic::add(others.iter().map(|&k| &c[k] * &c[k])));
     let sign = |e: &Expr| eval(e, values).signum();
     let horizontal =
         crate::symbolic::roots_of_squares(&simplify(&crate::symbolic::sqrt(square)), &sign);
     let written = latex(&horizontal);
-    let size = others.iter().map(|&k| eval(&c[k], values).powi(2)).sum::<f64>().sqrt();
+    let size = others
+        .iter()
+        .map(|&k| eval(&c[k], values).powi(2))
+        .sum::<f64>()
+        .sqrt();
     let agrees = (eval(&horizontal, values) - size).abs() <= 1e-9 * size.max(1.0);
     if written.contains("sqrt") || !agrees || size < 1e-12 {
         return None;
@@ -173,8 +179,15 @@ fn parts_words(
         .minus(&place.point.position)
         .components_in(BodyId::GROUND, &model.frames)
         .map(|e| eval(&e, values));
-    let offset = others.iter().map(|&k| centre[k].powi(2)).sum::<f64>().sqrt();
-    let along: f64 = others.iter().map(|&k| centre[k] * eval(&c[k], values)).sum();
+    let offset = others
+        .iter()
+        .map(|&k| centre[k].powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let along: f64 = others
+        .iter()
+        .map(|&k| centre[k] * eval(&c[k], values))
+        .sum();
     let toward = match offset > 1e-12 && along < -(1.0 - 1e-9) * offset * size {
         true => format!(
             ", toward the vertical through {}",
@@ -186,7 +199,11 @@ fn parts_words(
     let moving = (0..problem.coordinates.len())
         .filter(|&i| answer.rates.get(i).is_some_and(|r| *r != 0.0))
         .any(|i| horizontal.contains(&problem.coordinate_symbol(i, 0)));
-    let always = if moving { "" } else { " at every instant of this motion" };
+    let always = if moving {
+        ""
+    } else {
+        " at every instant of this motion"
+    };
     let vertical = simplify(&(&c[axis] * &Expr::int(up as i64)));
     Some(format!(
         "That is, a vertical force ${}$ up and a horizontal force ${written}${toward}{always}.",
