@@ -303,7 +303,11 @@ fn a_plane_contacts_tangent_is_f_t_and_the_racks_push_is_said() {
         constant("rack-and-pinion", "T"),
     );
     let answers = between(&text, "## Answers", "\n\n\n");
-    let words = between(answers, "On the pinion, the rack exerts", " The pressure angle");
+    let words = between(
+        answers,
+        "On the pinion, the rack exerts",
+        " The pressure angle",
+    );
     let push = number_after(words, "a tangential tooth force $");
     let expected = big_m * (t / r) / (big_m + i / (r * r));
     assert!(
@@ -386,7 +390,11 @@ fn the_gears_tooth_force_is_tangential_and_its_axles_are_named_as_stated() {
     let c = |k: &str| constant("gear-pair-torque", k);
     let qa = c("T") / (c("IA") + c("IB") * (c("rA") / c("rB")).powi(2));
     let force = c("IB") * c("rA") / c("rB") * qa / c("rB");
-    let words = between(answers, "On the gear, the pinion exerts", " The pressure angle");
+    let words = between(
+        answers,
+        "On the gear, the pinion exerts",
+        " The pressure angle",
+    );
     let said = number_after(words, "a tangential tooth force $");
     assert!((said - force).abs() < 1e-9 * force, "{said} {force}");
     assert!(
