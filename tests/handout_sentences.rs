@@ -235,14 +235,14 @@ fn a_joint_is_named_in_words() {
         &["--method", "motion-law", "--format", "markdown"],
     );
     assert!(
-        ball.contains("| the ball rolls or slides on the ground |"),
+        ball.contains("| the ball rolls or slides on the lane |"),
         "{ball}"
     );
     let coin = explain(
         "rolling-coin",
         &["--method", "kane", "--format", "markdown"],
     );
-    assert!(coin.contains("| the disc rolls on the ground |"), "{coin}");
+    assert!(coin.contains("| the disc rolls on the floor |"), "{coin}");
 }
 
 /// The components of the tip's force and the precession rate of an `answer --format json`

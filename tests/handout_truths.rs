@@ -63,15 +63,17 @@ fn a_reaction_inside_a_composite_free_body_has_its_sense_in_words() {
     let kane = handout("disc-on-cart", "kane");
     let answers = between(&kane, "## Answers", "\n\n\n");
     assert!(!answers.contains("acts as drawn"), "{answers}");
-    // Both components came out positive (friction 2.18 N, normal 19.62 N on the disc).
+    // Both components came out positive: friction 2.18 N forward, normal 19.62 N up, on
+    // the disc, said once in words.
     assert!(
-        answers.contains("it acts on D along $+\\hat{\\mathbf{c}}_{x}$"),
+        answers.contains("On the disc, the cart exerts friction $2.18182\\ \\mathrm{N}$ along $+\\hat{\\mathbf{c}}_{x}$"),
         "{answers}"
     );
     assert!(
-        answers.contains("it acts on D along $+\\hat{\\mathbf{c}}_{y}$"),
+        answers.contains("a normal force $19.62\\ \\mathrm{N}$ up ($+\\hat{\\mathbf{c}}_{y}$)"),
         "{answers}"
     );
+    assert!(!answers.contains("No free body drawn shows"), "{answers}");
     // The cart carries the opposite force: −(2.18182, 19.62) in C's unit vectors.
     assert!(
         answers.contains("C carries the equal and opposite force"),
@@ -139,7 +141,7 @@ fn the_gear_pairs_elimination_is_shown_and_its_force_given_on_both_wheels() {
         answers.contains("Row (3) gives $\\ddot{q}_{B}$"),
         "{answers}"
     );
-    assert!(answers.contains("Row (2) gives $F^{P}_{t1}$"), "{answers}");
+    assert!(answers.contains("Row (2) gives $F^{P}_{t}$"), "{answers}");
     assert!(answers.contains("Put into row (1)"), "{answers}");
     // q̈_A = T / (I_A + I_B (r_A/r_B)²), worked here from the problem's values.
     let json = run_json(&[
@@ -225,4 +227,220 @@ fn a_driven_systems_energy_is_said_to_change_by_the_loads_work() {
     assert!(said("disc-on-cart"));
     assert!(said("gear-pair-torque"));
     assert!(!said("double-pendulum-rods"));
+}
+
+/// A constant's value in a bundled problem.
+fn constant(name: &str, key: &str) -> f64 {
+    let text = std::fs::read_to_string(crate::support::problem(name)).expect("readable");
+    let problem: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    problem["constants"][key]["value"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} of {name}"))
+}
+
+/// The number printed right after `before` (the first place it occurs in `text`).
+fn number_after(text: &str, before: &str) -> f64 {
+    let start = text
+        .find(before)
+        .unwrap_or_else(|| panic!("{before} in {text}"))
+        + before.len();
+    let digits: String = text[start..]
+        .trim_start()
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | '-'))
+        .collect();
+    digits
+        .parse()
+        .unwrap_or_else(|_| panic!("a number after {before}: {digits}"))
+}
+
+/// The skidding ball's forces said once in words, with the body they act on: sliding
+/// friction μ m g = 0.2 · 7 · 9.81 = 13.734 N backward, against the slip, and the normal
+/// force m g = 68.67 N up, worked here from the problem's constants. No sign lecture, and
+/// no |N| (N names the Newtonian frame).
+#[test]
+fn the_balls_forces_are_said_in_words_on_the_ball() {
+    let text = handout("bowling-ball", "motion-law");
+    let answers = between(&text, "## Answers", "\n2. ");
+    let (m, g, mu) = (
+        constant("bowling-ball", "m"),
+        constant("bowling-ball", "g"),
+        constant("bowling-ball", "mu"),
+    );
+    let words = between(answers, "On the ball, the lane exerts", ".\n");
+    let friction = number_after(words, "sliding friction $");
+    assert!((friction - mu * m * g).abs() < 1e-9, "{words}");
+    assert!(
+        words.contains("along $-\\hat{\\mathbf{n}}_{x}$ (against the slip)"),
+        "{words}"
+    );
+    let normal = number_after(words, "a normal force $");
+    assert!((normal - m * g).abs() < 1e-9, "{words}");
+    assert!(words.contains("up ($+\\hat{\\mathbf{n}}_{y}$)"), "{words}");
+    assert!(!text.contains("opposite to the arrow drawn"), "{answers}");
+    assert!(!text.contains("as drawn"), "{answers}");
+    assert!(!text.contains("|N|"), "μ|N| in {text}");
+    // Step 1 names the surface, once for the one joint.
+    assert_eq!(text.matches("rolls or slides on the lane").count(), 1);
+    assert!(!text.contains("on the ground |"), "{text}");
+}
+
+/// A contact with one tangent in a plane prints F_t (the names of the commands' output
+/// stay `Ft1`); the rack's tooth force on the pinion is (T/r) M/(M + I/r²)... worked here:
+/// the rack's acceleration ẍ = (T/r)/(M + I/r²) needs the force M ẍ from the pinion, so the
+/// pinion feels M ẍ backward along r̂_x. Its dependent rate at the start has its unit.
+#[test]
+fn a_plane_contacts_tangent_is_f_t_and_the_racks_push_is_said() {
+    for name in ["disc-in-cylinder", "gear-pair-torque", "rack-and-pinion"] {
+        let text = handout(name, "motion-law");
+        assert!(!text.contains("_{t1}"), "{name}");
+    }
+    let text = handout("rack-and-pinion", "motion-law");
+    let (r, i, big_m, t) = (
+        constant("rack-and-pinion", "r"),
+        constant("rack-and-pinion", "I"),
+        constant("rack-and-pinion", "M"),
+        constant("rack-and-pinion", "T"),
+    );
+    let answers = between(&text, "## Answers", "\n\n\n");
+    let words = between(
+        answers,
+        "On the pinion, the rack exerts",
+        " The pressure angle",
+    );
+    let push = number_after(words, "a tangential tooth force $");
+    let expected = big_m * (t / r) / (big_m + i / (r * r));
+    assert!(
+        (push - expected).abs() < 1e-4 * expected,
+        "{push} {expected}"
+    );
+    assert!(words.contains("along $-\\hat{\\mathbf{r}}_{x}$"), "{words}");
+    // θ̇ = ẋ/r at the start: 0.1/0.04 = 2.5 rad/s, with its unit.
+    let rate = ((0.1 / r) * 1e6).round() / 1e6;
+    assert!(
+        text.contains(&format!(
+            "at the initial state, $\\dot{{\\theta}} = {rate}\\ \\mathrm{{rad/s}}$"
+        )),
+        "{text}"
+    );
+}
+
+/// The four-bar's two closure rows are named by their directions; its rate relations are
+/// said in symbols; the coupler's force on the rocker, given in B's unit vectors, is given
+/// in N's too: turned by B's angle q₁ + q₂, worked here from the answer's numbers.
+#[test]
+fn the_four_bars_closure_rows_and_pin_force_are_named_in_full() {
+    let text = handout("four-bar", "motion-law");
+    let step1 = between(&text, "## Step 1", "## Step 2");
+    for axis in ["x", "y"] {
+        assert!(
+            step1.contains(&format!(
+                "\\text{{loop closure at R}}\\text{{, along }} \\hat{{\\mathbf{{b}}}}_{{{axis}}}"
+            )),
+            "{step1}"
+        );
+    }
+    assert!(!text.contains("at the initial state, $\\dot{q}_{2} = -1.15"));
+    assert!(text.contains("in general, $\\dot{q}_{2} = "), "{text}");
+    let json = run_json(&[
+        "answer".as_ref(),
+        crate::support::problem("four-bar").as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
+    let r = &json["answers"][4];
+    assert_eq!(r["frame"], "B");
+    let (bx, by) = (
+        r["components"]["x"].as_f64().expect("x"),
+        r["components"]["y"].as_f64().expect("y"),
+    );
+    let angle = r["state"]["q1"].as_f64().expect("q1") + r["state"]["q2"].as_f64().expect("q2");
+    let (nx, ny) = (
+        bx * angle.cos() - by * angle.sin(),
+        bx * angle.sin() + by * angle.cos(),
+    );
+    let answers = between(&text, "## Answers", "\n\n\n");
+    let ground = between(answers, "Along the ground's unit vectors", "\n");
+    let printed_x = number_after(ground, "\\hat{\\mathbf{n}}_{x} = ");
+    let printed_y = number_after(ground, "\\hat{\\mathbf{n}}_{y} = ");
+    assert!((printed_x - nx).abs() < 1e-4, "{ground}: {nx}");
+    assert!((printed_y - ny).abs() < 1e-4, "{ground}: {ny}");
+    let size = number_after(ground, "a force of $");
+    assert!((size - nx.hypot(ny)).abs() < 1e-4, "{ground}");
+}
+
+/// The disc in the cylinder's moment row is written with x² + y² = (R − r)² used: r F_t,
+/// not r x² F_t/(R − r)² + r y² F_t/(R − r)².
+#[test]
+fn the_disc_in_the_cylinder_moment_row_uses_the_distance_it_keeps() {
+    let text = handout("disc-in-cylinder", "motion-law");
+    let step5 = between(&text, "## Step 5", "## Step 6");
+    assert!(!step5.contains("x^{2} F^{P}"), "{step5}");
+    assert!(!step5.contains("y^{2} F^{P}"), "{step5}");
+}
+
+/// The gear's tooth force said as what it is (tangential, no pressure angle), and the
+/// axles named as the statement names them.
+#[test]
+fn the_gears_tooth_force_is_tangential_and_its_axles_are_named_as_stated() {
+    let text = handout("gear-pair-torque", "motion-law");
+    let answers = between(&text, "## Answers", "\n\n\n");
+    // T / (r_A (1 + (I_A/I_B)(r_B/r_A)²))... by hand: q̈_A = T/(I_A + I_B (r_A/r_B)²), and
+    // the gear's own row I_B q̈_B = r_B F gives F = I_B (r_A/r_B) q̈_A / r_B.
+    let c = |k: &str| constant("gear-pair-torque", k);
+    let qa = c("T") / (c("IA") + c("IB") * (c("rA") / c("rB")).powi(2));
+    let force = c("IB") * c("rA") / c("rB") * qa / c("rB");
+    let words = between(
+        answers,
+        "On the gear, the pinion exerts",
+        " The pressure angle",
+    );
+    let said = number_after(words, "a tangential tooth force $");
+    assert!((said - force).abs() < 1e-9 * force, "{said} {force}");
+    assert!(
+        answers.contains("The pressure angle is neglected"),
+        "{answers}"
+    );
+    assert!(
+        text.contains("fixed axle at $O_A$"),
+        "the statement's names"
+    );
+}
+
+/// The top's tip force during steady precession said as it holds at every instant: a
+/// vertical m g up and a horizontal m h Ω² sin θ toward the vertical through the tip; the
+/// components of `answer` at ψ = 0 have that horizontal size, worked here with Ω = ψ̇ of
+/// the steady motion found.
+#[test]
+fn the_tops_tip_force_is_said_by_its_vertical_and_horizontal_parts() {
+    let text = handout("heavy-symmetric-top", "motion-law");
+    let answers = between(&text, "## Answers", "\n4. ");
+    let words = between(answers, "That is, a vertical force", ".\n");
+    assert!(
+        words.contains("toward the vertical through the tip"),
+        "{words}"
+    );
+    assert!(words.contains("at every instant of this motion"), "{words}");
+    assert!(words.contains("g m$ up"), "{words}");
+    let json = run_json(&[
+        "answer".as_ref(),
+        crate::support::problem("heavy-symmetric-top").as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
+    let (m, h) = (
+        constant("heavy-symmetric-top", "m"),
+        constant("heavy-symmetric-top", "h"),
+    );
+    for found in json["answers"].as_array().expect("answers") {
+        if found["kind"] != "reaction" {
+            continue;
+        }
+        let c = |k: &str| found["components"][k].as_f64().expect(k);
+        let omega = found["state"]["psi'"].as_f64().expect("ψ̇");
+        let theta = found["state"]["theta"].as_f64().expect("θ");
+        let horizontal = m * h * omega * omega * theta.sin();
+        assert!((c("x").hypot(c("y")) - horizontal).abs() < 1e-6, "{found}");
+        assert!((c("z") - m * constant("heavy-symmetric-top", "g")).abs() < 1e-9);
+    }
 }

@@ -110,7 +110,7 @@ pub fn gear_site(model: &Model, k: usize) -> Result<(Site, Contact), MechanicsEr
     let reactions = vec![
         ReactionComponent {
             kind: ComponentKind::Force,
-            axis: Axis::Tangent(1),
+            axis: Axis::SoleTangent,
             direction: tangent.clone(),
         },
         ReactionComponent {

@@ -342,13 +342,14 @@ pub fn reaction_components(
 }
 
 /// A rough slider's friction force along its (canonical) axis, first among its reactions:
-/// named by the axis letter when the axis is a unit vector (`Fx`), `Ft1` otherwise.
+/// named by the axis letter when the axis is a unit vector (`Fx`), `Ft1` (printed
+/// `F_t`) otherwise.
 fn friction_component(parent: BodyId, axis: Components) -> ReactionComponent {
     ReactionComponent {
         kind: ComponentKind::Force,
         axis: match unit_axis_of(&axis) {
             Some(a) => Axis::Unit(a as u8),
-            None => Axis::Tangent(1),
+            None => Axis::SoleTangent,
         },
         direction: Vector::new(parent, axis),
     }

@@ -266,7 +266,11 @@ pub(super) fn contact_reactions(tangents: &[Vector], normal: &Vector) -> Vec<Rea
         .enumerate()
         .map(|(i, t)| ReactionComponent {
             kind: ComponentKind::Force,
-            axis: direction_axis(t, i + 1),
+            axis: match direction_axis(t, i + 1) {
+                // The one tangent of a contact in a plane is F_t, not F_t1.
+                Axis::Tangent(_) if tangents.len() == 1 => Axis::SoleTangent,
+                axis => axis,
+            },
             direction: t.clone(),
         })
         .collect();

@@ -57,13 +57,13 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                 }
             }
             super::answer_leads::drop_said_time(question, &mut view);
-            if question.frame.is_none() {
-                if let Some(sense) = sense_note(problem, question, &shown) {
-                    view.note = [view.note.as_str(), sense.as_str()]
-                        .join(" ")
-                        .trim()
-                        .to_string();
-                }
+            // Each force found said once in words: what it is, its size, its sense and
+            // the body it acts on.
+            if let Some(words) = super::force_words::note(problem, question, answer) {
+                view.steps.push(crate::render::AnswerStep {
+                    text: MarkupLine::from(words),
+                    math: Math::from(String::new()),
+                });
             }
             view.values_tex = shown
                 .iter()
@@ -405,43 +405,4 @@ fn drive_tex(problem: &Problem, i: usize) -> String {
     latex(&crate::symbolic::Expr::sym(crate::mechanics::drive_symbol(
         problem, i,
     )))
-}
-
-/// Whether each reaction component came out as the free bodies draw it: an unknown is
-/// drawn along its positive unit vector, so a positive component acts as drawn and a
-/// negative one the other way (a push where the arrow pulls). `None` for other questions,
-/// and for a rough site, whose friction the free bodies draw against the slip where it
-/// slides (a known force, not an unknown along its positive sense).
-fn sense_note(
-    problem: &Problem,
-    question: &Question,
-    shown: &[&(Quantity, f64)],
-) -> Option<String> {
-    let QuestionKind::Reaction { site } = question.kind else {
-        return None;
-    };
-    if problem.site_is_rough(site) {
-        return None;
-    }
-    let parts: Vec<String> = shown
-        .iter()
-        .filter(|(_, value)| value.abs() >= ROUND_OFF)
-        .filter_map(|(found, value)| {
-            let Quantity::Reaction(ReactionColumn::Component { kind, axis, .. }) = found else {
-                return None;
-            };
-            let what = match kind {
-                ComponentKind::Force => "force",
-                ComponentKind::Moment => "moment",
-            };
-            let axis = ["x", "y", "z"].get(*axis).copied().unwrap_or("x");
-            let sense = if *value > 0.0 {
-                "positive, so it acts as drawn"
-            } else {
-                "negative, so it acts opposite to the arrow drawn"
-            };
-            Some(format!("the {what} along {axis} is {sense}"))
-        })
-        .collect();
-    (!parts.is_empty()).then(|| format!("{}{}.", super::sense_words::DRAWN_RULE, parts.join("; ")))
 }

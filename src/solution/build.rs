@@ -128,7 +128,11 @@ fn coordinates(problem: &Problem, shown: &[(String, String)]) -> Vec<Coordinate>
                 name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
-                joint: super::joint_words::joint_words(problem, c.joint, shown),
+                // One line per joint: said at its first coordinate only.
+                joint: match (problem.coordinates[..i].iter()).any(|b| b.joint == c.joint) {
+                    true => String::new(),
+                    false => super::joint_words::joint_words(problem, c.joint, shown),
+                },
                 unit_tex: Math::from(crate::render::unit_tex(&unit)),
                 initial: with_unit(&fixed(c.initial), &unit),
                 initial_rate: with_unit(&fixed(c.rate), &rate_unit),

@@ -242,9 +242,43 @@ fn loop_display(model: &Model, index: usize) -> Option<String> {
 /// not multiply one unit vector.
 fn dependent_rates(model: &Model, v: &Vector) -> Vec<String> {
     let problem = model.problem;
+    let Some(found) = rates_from(model, v) else {
+        return Vec::new();
+    };
+    (found.into_iter())
+        .map(|(i, value, normal)| {
+            format!(
+                "{} &= {} \\quad \\text{{(the derivative dotted with }} {}\\text{{)}}",
+                latex(&problem.coordinate_expr(i, 1)),
+                latex_collected(&value),
+                vector_tex(model, &normal)
+            )
+        })
+        .collect()
+}
+
+/// Each dependent rate of a plane's one loop, as [`dependent_rates`] finds it from the
+/// closure's relative velocity: `(coordinate, value, unit vector dotted with)`; `None`
+/// where the loop has no such form (see there) or there is not exactly one closure.
+pub(super) fn loop_rates(model: &Model) -> Option<Vec<(usize, Expr)>> {
+    let mut closures = (model.sites.iter()).filter(|s| matches!(s.kind, SiteKind::Closure(_)));
+    let site = closures.next()?;
+    if closures.next().is_some() {
+        return None;
+    }
+    let on_parent = model.point_on(site.parent, &site.parent_offset);
+    let v = on_parent.velocity.minus(&site.point.velocity);
+    let found = rates_from(model, &v)?;
+    Some(found.into_iter().map(|(i, value, _)| (i, value)).collect())
+}
+
+/// The two dependent rates' values from the loop's derivative `v`, with the unit vector
+/// each is found with.
+fn rates_from(model: &Model, v: &Vector) -> Option<Vec<(usize, Expr, Vector)>> {
+    let problem = model.problem;
     let dependent = &model.constraints.dependent_rates;
     if !model.is_planar() || dependent.len() != 2 {
-        return Vec::new();
+        return None;
     }
     let rates: Vec<Symbol> = dependent
         .iter()
@@ -253,25 +287,16 @@ fn dependent_rates(model: &Model, v: &Vector) -> Vec<String> {
     let partial = partials(v, &rates);
     let mut out = Vec::new();
     for k in 0..2 {
-        let Some(normal) = perpendicular(model, &partial[1 - k]) else {
-            return Vec::new();
-        };
+        let normal = perpendicular(model, &partial[1 - k])?;
         let along = simplify(&v.dot(&normal, &model.frames));
-        let Ok((coefficients, rest)) = linear_split(&along, std::slice::from_ref(&rates[k])) else {
-            return Vec::new();
-        };
+        let (coefficients, rest) = linear_split(&along, std::slice::from_ref(&rates[k])).ok()?;
         if coefficients[0].is_zero() {
-            return Vec::new();
+            return None;
         }
         let value = simplify(&(-rest / coefficients[0].clone()));
-        let unit = vector_tex(model, &normal);
-        let rate = latex(&Expr::sym(rates[k].clone()));
-        out.push(format!(
-            "{rate} &= {} \\quad \\text{{(the derivative dotted with }} {unit}\\text{{)}}",
-            latex_collected(&value)
-        ));
+        out.push((dependent[k], value, normal));
     }
-    out
+    Some(out)
 }
 
 /// A unit vector perpendicular to `p` in the plane: the other in-plane unit vector of a

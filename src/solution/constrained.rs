@@ -35,10 +35,13 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             let shown = roots_of_squares(&simplify(expression), &sign);
             // A velocity constraint collected by the rates, as Σ (coefficient) q̇_j = 0.
             let mut equation_tex = format!("{} = 0", latex_collected(&shown));
-            // A position constraint holds a distance, not a component: it has no direction.
+            // A position constraint holds a distance, not a component: it has no direction;
+            // a loop's closure holds a point in two directions, each row named by its own.
+            let closure = matches!(row.origin, RowOrigin::Site { site, .. }
+                if matches!(model.sites[site].kind, crate::mechanics::SiteKind::Closure(_)));
             let name_tex = match row.position {
-                Some(_) => constraint_what_tex(model, &row.name),
-                None => constraint_label_tex(model, &row.name),
+                Some(_) if !closure => constraint_what_tex(model, &row.name),
+                _ => constraint_label_tex(model, &row.name),
             };
             if let (true, None, RowOrigin::Site { site, component }) = (
                 equation_tex.len() > LONGEST_IN_TABLE,
@@ -96,9 +99,13 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         }
     }));
     notes.extend(constraints.relations.iter().map(|(name, relation)| {
-        let unit = match line_of_centres(problem, relation) {
-            Some(tex) => format!("${tex}$ is a unit vector"),
-            None => "the line of centres, divided by the distance the constraint keeps, is a unit vector".into(),
+        let tangent = super::polar_units::tangent_definition(&derivation.model);
+        let unit = match (line_of_centres(problem, relation), tangent) {
+            (Some(tex), Some(t)) => format!(
+                "${tex}$ is a unit vector, and so is ${t}$, along the common tangent"
+            ),
+            (Some(tex), None) => format!("${tex}$ is a unit vector"),
+            (None, _) => "the line of centres, divided by the distance the constraint keeps, is a unit vector".into(),
         };
         format!(
             "Wherever the distance constraint of {} holds, ${}$: {unit}. The rows below write the distance between the centres as the constant it keeps, not as a root of squares.",
@@ -238,7 +245,10 @@ pub fn dependent_speeds(
     // The same map as equations, in symbols where they are short (θ̇ = ẋ/r), else in
     // numbers, ẋ = −0.3 θ̇_R, for the handouts that need no C by name.
     let values = model.values_at(0.0, q, rates);
-    let symbolic = super::relations::in_symbols(model, &dependent, &reducer.rates, &c, &values);
+    let symbolic = super::relations::in_symbols(model, &dependent, &reducer.rates, &c, &values)
+        .or_else(|| {
+            super::loop_relations::written(model, (&dependent, &reducer.rates), &c, &values)
+        });
     let relations_tex = dependent
         .iter()
         .enumerate()
@@ -332,8 +342,13 @@ fn start_values(
     let start: Vec<String> = (dependent.iter())
         .map(|&s| format!("{} = {}", rate(s), fixed_or_zero(rates[s])))
         .collect();
+    // Said with their units, unless the relations are those values already.
+    let with_units = (dependent.iter()).zip(&start).map(|(&s, value)| {
+        let unit = crate::numeric::coordinate_unit(problem, s, 1);
+        format!("{value}{}", super::answer_numbers::unit_tex(&unit))
+    });
     match symbolic {
-        Some(written) if written != start.as_slice() => Math::all(start),
+        Some(written) if written != start.as_slice() => Math::all(with_units.collect()),
         _ => Vec::new(),
     }
 }

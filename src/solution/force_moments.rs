@@ -50,7 +50,7 @@ pub fn lines(
 }
 
 /// `e` reduced by each relation the constraints keep, where that is shorter.
-fn reduced(derivation: &Derivation, e: Expr) -> Expr {
+pub(super) fn reduced(derivation: &Derivation, e: Expr) -> Expr {
     let mut best = e;
     for (_, relation) in &derivation.model.constraints.relations {
         let candidate = simplify(&relation.reduce(&best));

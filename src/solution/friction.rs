@@ -1,6 +1,6 @@
 //! Step 5's friction: at each friction site, the textbook's process in words and numbers.
 //! Where the site slides, the sliding law in place of the no-slip row; where it is at rest,
-//! the assumption that it sticks, the solution, the check `|F| ≤ μ|N|` and, when the check
+//! the assumption that it sticks, the solution, the check that the friction force is at most μ times the normal force and, when the check
 //! fails, the solution again with sliding friction.
 
 use crate::equations::Derivation;
@@ -167,14 +167,14 @@ fn steps(
     ));
     if state.shared {
         out.push(step(
-            format!("Sticking here, the equations are one short: statics fixes only what the sticking contacts carry together, not how they share it. The split taken is the one that keeps every {noun} as far from slipping (|F|/μ|N|) as the others, so that the {noun}s stick if any split could hold them."),
+            format!("Sticking here, the equations are one short: statics fixes only what the sticking contacts carry together, not how they share it. The split taken is the one that keeps every {noun} as far from slipping (the ratio of its friction force to μ times its normal force) as the others, so that the {noun}s stick if any split could hold them."),
             "",
         ));
     }
     match first {
         None => {
             out.push(step(
-                "Check that friction can give that much, |F| ≤ μ|N|:",
+                "Check that friction can give that much, at most μ times the normal force:",
                 check(tangential, n, true),
             ));
             out.push(step(
@@ -184,11 +184,11 @@ fn steps(
         }
         Some(_) => {
             out.push(step(
-                "Check that friction can give that much, |F| ≤ μ|N|:",
+                "Check that friction can give that much, at most μ times the normal force:",
                 check(tangential, n, false),
             ));
             out.push(step(
-                format!("The check fails: friction cannot hold the {noun}, and it slips. Solve again with sliding friction μ|N| opposing the motion that would start (along the force that sticking needed): row {rows} is replaced by the sliding law"),
+                format!("The check fails: friction cannot hold the {noun}, and it slips. Solve again with sliding friction, μ times the normal force, opposing the motion that would start (along the force that sticking needed): row {rows} is replaced by the sliding law"),
                 law_tex(names, normal, mu, state),
             ));
             out.push(step("Solved with it (the values below):", solved));

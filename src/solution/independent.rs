@@ -411,7 +411,7 @@ fn friction_note(derivation: &Derivation) -> String {
         ("forces", "do", "they are", "each is")
     };
     format!(
-        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law $F = \\mu |N|$ against the slip replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
+        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law (friction $\\mu$ times the normal force, against the slip) replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
         tex(&friction),
         words(&sites),
         tex(&normals),

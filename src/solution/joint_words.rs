@@ -70,10 +70,15 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
         JointKind::Planar | JointKind::Free => rolls_on(problem, joint.child),
         _ => None,
     };
-    if let Some((on, rough)) = rolling {
+    if let Some((on, rough, surface)) = rolling {
         // A rough contact may slide as well as roll (the skidding ball).
         let how = if rough { "rolls or slides" } else { "rolls" };
-        return format!("{child} {how} on {}", body_words(problem, on));
+        // The ground by the surface's own name where the contact has one (the lane).
+        let on = match on == BodyId::GROUND && !is_point_name(surface) && surface != "contact" {
+            true => super::force_labels::place(surface),
+            false => body_words(problem, on),
+        };
+        return format!("{child} {how} on {on}");
     }
     match joint.kind {
         JointKind::Revolute => format!("{child} turns on {parent}{}", at("pin")),
@@ -93,12 +98,12 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
     }
 }
 
-/// The body `body` rolls on where a rolling constraint holds it, and whether that contact
-/// is rough (it may slide too).
-fn rolls_on(problem: &Problem, body: BodyId) -> Option<(BodyId, bool)> {
+/// The body `body` rolls on where a rolling constraint holds it, whether that contact is
+/// rough (it may slide too), and the contact's name.
+fn rolls_on(problem: &Problem, body: BodyId) -> Option<(BodyId, bool, &str)> {
     problem.constraints.iter().find_map(|c| match &c.kind {
         crate::problem::ConstraintKind::Rolling { body: b, on, .. } if *b == body => {
-            Some((*on, c.friction.is_some()))
+            Some((*on, c.friction.is_some(), c.name.as_str()))
         }
         _ => None,
     })

@@ -94,7 +94,10 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     let steps = super::steady_force::steps(worked, question, answer, !force_said)
                         .unwrap_or_default();
                     force_said |= !steps.is_empty();
-                    steps
+                    // After the force said in words by the answers.
+                    let mut said = std::mem::take(&mut view.steps);
+                    said.extend(steps);
+                    said
                 }
                 _ => Vec::new(),
             };

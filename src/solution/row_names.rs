@@ -64,11 +64,11 @@ pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
 }
 
 /// A constraint row's label in the matrix form: what it constrains and, for a site's row,
-/// the direction of its reaction, e.g. `\text{loop closure at C} \cdot \hat{\mathbf{a}}_{x}`.
+/// the direction of its reaction, e.g. `\text{loop closure at C}\text{, along } \hat{\mathbf{a}}_{x}`.
 pub(super) fn constraint_label_tex(model: &Model, name: &str) -> String {
     let what = constraint_what_tex(model, name);
     match constraint_direction_tex(model, name) {
-        Some(direction) => format!("{what} \\cdot {direction}"),
+        Some(direction) => format!("{what}\\text{{, along }} {direction}"),
         None => what,
     }
 }
@@ -147,7 +147,7 @@ pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<Stri
             let site = model.sites.get(friction.site)?;
             let component =
                 (site.reactions.iter()).find(|c| c.unknown(&site.name) == row.unknown)?;
-            return Some(simplest_tex(model, &component.direction));
+            return Some(direction_tex(model, &component.direction));
         }
     }
     let row = model.constraints.rows.iter().find(|r| r.name == name)?;
@@ -155,5 +155,11 @@ pub(super) fn constraint_direction_tex(model: &Model, name: &str) -> Option<Stri
         return None;
     };
     let direction = model.sites.get(site)?.row_direction(component)?;
-    Some(simplest_tex(model, direction))
+    Some(direction_tex(model, direction))
+}
+
+/// A row's direction by the name step 1 defines for it (ê_t, −ê_r), else in the frame
+/// that writes it shortest.
+fn direction_tex(model: &Model, direction: &crate::mechanics::Vector) -> String {
+    super::polar_units::named(model, direction).unwrap_or_else(|| simplest_tex(model, direction))
 }

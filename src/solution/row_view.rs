@@ -305,6 +305,11 @@ fn grouped_row(derivation: &Derivation, row: &Equation, shown: &dyn Fn(&Expr) ->
             if simpler.len() < written.len() {
                 written = simpler;
             }
+            // Reduced by what the constraints keep (x² + y² = (R − r)²), where shorter.
+            let kept = group_tex(&super::force_moments::reduced(derivation, simplify(e)));
+            if kept.len() < written.len() {
+                written = kept;
+            }
         } else {
             // An inertia group keeps its terms as formed, unless an identity merges some
             // (R m ẍ s²_θ + R m ẍ c²_θ is R m ẍ): then it is written with it applied.

@@ -155,7 +155,7 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
     };
     match &question.kind {
         QuestionKind::Slips { .. } if lost(answer) => format!(
-            "N = {}\\ \\mathrm{{N}} < 0",
+            "F_{{n}} = {}\\ \\mathrm{{N}} < 0",
             number(normal(answer).unwrap_or(f64::NAN))
         ),
         QuestionKind::Slips { .. } if slip_speed(answer).is_some_and(|s| s > 0.0) => format!(
@@ -163,12 +163,12 @@ pub fn value_tex(problem: &Problem, question: &Question, answer: &Answer) -> Str
             number(slip_speed(answer).unwrap_or(0.0))
         ),
         QuestionKind::Slips { .. } => format!(
-            "\\frac{{|F|}}{{\\mu |N|}} = {} {} 1",
+            "\\frac{{|F_{{t}}|}}{{\\mu |F_{{n}}|}} = {} {} 1",
             number(x),
             if slips(answer) { ">" } else { "\\le" }
         ),
         QuestionKind::Tips { .. } => format!(
-            "N = {}\\ \\mathrm{{N}} {} 0",
+            "F_{{n}} = {}\\ \\mathrm{{N}} {} 0",
             number(x),
             if tips(answer) { "<" } else { "\\ge" }
         ),
@@ -206,7 +206,7 @@ pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> S
                 site(*i)
             ),
             true => format!(
-                "\\text{{rest needs more friction at {} than }} \\mu |N| \\text{{: it slips}}",
+                "\\text{{rest needs more friction at {} than }} \\mu |F_{{n}}| \\text{{: it slips}}",
                 site(*i)
             ),
         },
@@ -222,7 +222,7 @@ pub fn verdict_tex(problem: &Problem, question: &Question, answer: &Answer) -> S
             )
         }
         QuestionKind::Impending { site: i, .. } => {
-            format!("|F| = \\mu |N| \\text{{ at {}: slip impends}}", site(*i))
+            format!("|F_{{t}}| = \\mu |F_{{n}}| \\text{{ at {}: slip impends}}", site(*i))
         }
         _ => String::new(),
     }
@@ -254,10 +254,10 @@ fn moving_verdict(site: &str, answer: &Answer) -> String {
             "\\text{{yes: the contact point at {site} slides, so friction is }} \\mu \\text{{ times the normal force, against the slip}}"
         ),
         (false, false) => format!(
-            "\\text{{no: the contact point at {site} does not slide, and }} |F| \\le \\mu |N|"
+            "\\text{{no: the contact point at {site} does not slide, and }} |F_{{t}}| \\le \\mu |F_{{n}}|"
         ),
         (false, true) => format!(
-            "\\text{{yes: rolling at {site} would need }} |F| > \\mu |N|"
+            "\\text{{yes: rolling at {site} would need }} |F_{{t}}| > \\mu |F_{{n}}|"
         ),
     }
 }

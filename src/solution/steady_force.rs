@@ -122,11 +122,93 @@ pub fn steps(
             ),
         ),
         step(
-            "With the values of this steady motion put in, its components are those above."
-                .into(),
+            [
+                "With the values of this steady motion put in, its components are those above.",
+                &parts_words(model, (&force, site), &values, answer).unwrap_or_default(),
+            ]
+            .join(" ")
+            .trim_end()
+            .to_string(),
             String::new(),
         ),
     ])
+}
+
+/// The force's parts as a course states them, true at every instant of the steady
+/// motion: its vertical part, and its horizontal part's size and sense (toward the
+/// vertical through the support, where it points there); `None` where gravity is not
+/// along a unit vector of `N` or the horizontal size has no short form.
+fn parts_words(
+    model: &crate::mechanics::Model,
+    (force, site): (&crate::mechanics::Vector, usize),
+    values: &crate::symbolic::Values,
+    answer: &Answer,
+) -> Option<String> {
+    let problem = model.problem;
+    let [(frame, axis, g)] = problem.gravity.as_ref()?.terms.as_slice() else {
+        return None;
+    };
+    if *frame != BodyId::GROUND {
+        return None;
+    }
+    let (axis, up) = (*axis as usize, -eval(g, values).signum());
+    let c = force
+        .components_in(BodyId::GROUND, &model.frames)
+        .map(|e| simplify(&e));
+    let others: Vec<usize> = (0..3).filter(|&k| k != axis).collect();
+    let square = simplify(&crate::symbolic::add(others.iter().map(|&k| &c[k] * &c[k])));
+    let sign = |e: &Expr| eval(e, values).signum();
+    let horizontal =
+        crate::symbolic::roots_of_squares(&simplify(&crate::symbolic::sqrt(square)), &sign);
+    let written = latex(&horizontal);
+    let size = others
+        .iter()
+        .map(|&k| eval(&c[k], values).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let agrees = (eval(&horizontal, values) - size).abs() <= 1e-9 * size.max(1.0);
+    if written.contains("sqrt") || !agrees || size < 1e-12 {
+        return None;
+    }
+    // Toward the vertical through the support: against the mass centre's horizontal
+    // offset from it.
+    let place = model.sites.get(site)?;
+    let centre = model.bodies[place.child.0]
+        .center
+        .position
+        .minus(&place.point.position)
+        .components_in(BodyId::GROUND, &model.frames)
+        .map(|e| eval(&e, values));
+    let offset = others
+        .iter()
+        .map(|&k| centre[k].powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let along: f64 = others
+        .iter()
+        .map(|&k| centre[k] * eval(&c[k], values))
+        .sum();
+    let toward = match offset > 1e-12 && along < -(1.0 - 1e-9) * offset * size {
+        true => format!(
+            ", toward the vertical through {}",
+            super::force_labels::place(problem.site_name(site))
+        ),
+        false => String::new(),
+    };
+    // The same at every instant where it holds no coordinate that moves.
+    let moving = (0..problem.coordinates.len())
+        .filter(|&i| answer.rates.get(i).is_some_and(|r| *r != 0.0))
+        .any(|i| horizontal.contains(&problem.coordinate_symbol(i, 0)));
+    let always = if moving {
+        ""
+    } else {
+        " at every instant of this motion"
+    };
+    let vertical = simplify(&(&c[axis] * &Expr::int(up as i64)));
+    Some(format!(
+        "That is, a vertical force ${}$ up and a horizontal force ${written}${toward}{always}.",
+        latex(&vertical)
+    ))
 }
 
 /// The vector in the one frame that writes it shortest.

@@ -395,7 +395,7 @@ fn newton_euler_states_the_coins_dependent_rates_as_equations() {
     let expected = "in general, $\\dot{z} = -R \\dot{\\theta} s_{\\theta}$";
     assert!(text.contains(expected), "no {expected}");
     assert!(
-        text.contains("at the initial state, $\\dot{z} = 0$"),
+        text.contains("at the initial state, $\\dot{z} = 0\\ \\mathrm{m/s}$"),
         "{text}"
     );
     let row = text

@@ -24,7 +24,7 @@ fn answers(text: &str) -> &str {
     text.split("## Answers").nth(1).expect("the Answers")
 }
 
-/// The crate pushed at 0.9 m by 80 N: its back corner would need N = (m g w/2 − P h)/w,
+/// The crate pushed at 0.9 m by 80 N: its back corner would need F_n = (m g w/2 − P h)/w,
 /// a pull; the twisted bar's foot still pushes as it starts to turn.
 #[test]
 fn a_tips_answer_names_the_contact_lost_and_when() {
@@ -38,7 +38,7 @@ fn a_tips_answer_names_the_contact_lost_and_when() {
         "{part}"
     );
     assert!(
-        part.contains(&format!("N = {:.1}", back)),
+        part.contains(&format!("F_{{n}} = {:.1}", back)),
         "the normal force {back:.1} N in {part}"
     );
     let text = explained("rod-twisted-on-rough-floor", &[]);

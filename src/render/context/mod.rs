@@ -154,7 +154,7 @@ pub struct Solution {
 /// One constraint row as step 1 shows it.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct ConstraintView {
-    /// What the row constrains, e.g. `\text{loop closure at R} \cdot \hat{\mathbf{b}}_{x}`
+    /// What the row constrains, e.g. `\text{loop closure at R} \text{, along } \hat{\mathbf{b}}_{x}`
     /// (the direction of the reaction that enforces it) or `\text{prescribed motion of } q_{1}`.
     pub name_tex: Math,
     /// `position` (holonomic) or `velocity` (nonholonomic).

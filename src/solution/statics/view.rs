@@ -141,8 +141,8 @@ fn friction(equilibrium: &Equilibrium) -> Vec<StaticFriction> {
                 tangential: number(site.friction()),
                 ratio: r.map_or("—".into(), number),
                 verdict: match r {
-                    Some(r) if r <= 1.0 => "friction holds it (|F| ≤ μ|N|)".into(),
-                    _ => "friction cannot hold it: the site slips (|F| > μ|N|)".into(),
+                    Some(r) if r <= 1.0 => "friction holds it (it needs no more than μ times the normal force)".into(),
+                    _ => "friction cannot hold it: the site slips (it would need more than μ times the normal force)".into(),
                 },
             }
         })

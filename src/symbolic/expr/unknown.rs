@@ -35,8 +35,11 @@ pub enum Axis {
     Numbered(u8),
     /// A rolling contact's normal.
     Normal,
-    /// One of a rolling contact's tangents, counted from 1 (`t1` is also a rough slider's
-    /// axis when it is not a unit vector).
+    /// The one tangent of a contact in a plane, or a rough slider's axis when it is not a
+    /// unit vector: printed `t`, named `t1` in the commands' output (as the first of
+    /// several would be).
+    SoleTangent,
+    /// One of a rolling contact's tangents in space, counted from 1.
     Tangent(u8),
     /// A unit vector of the frame the reaction is given in: 0, 1, 2 for x, y, z.
     Unit(u8),
@@ -45,11 +48,20 @@ pub enum Axis {
 }
 
 impl Axis {
-    /// The subscript: `x`, `2`, `n`, `t1`.
+    /// The subscript as printed: `x`, `2`, `n`, `t` (the one tangent), `t1`.
     pub fn subscript(self) -> String {
+        match self {
+            Axis::SoleTangent => "t".into(),
+            other => other.plain(),
+        }
+    }
+
+    /// The subscript in a plain name (`O.Fx`, `floor.Ft1`): a sole tangent is `t1`.
+    pub fn plain(self) -> String {
         match self {
             Axis::Numbered(i) => i.to_string(),
             Axis::Normal => "n".into(),
+            Axis::SoleTangent => "t1".into(),
             Axis::Tangent(i) => format!("t{i}"),
             Axis::Unit(i) => ["x", "y", "z"]
                 .get(i as usize)
@@ -75,7 +87,7 @@ impl fmt::Display for Component {
         if self.axis == Axis::Member {
             return write!(f, "T");
         }
-        write!(f, "{}{}", self.kind.letter(), self.axis.subscript())
+        write!(f, "{}{}", self.kind.letter(), self.axis.plain())
     }
 }
 
@@ -212,6 +224,11 @@ mod tests {
             reaction("floor", Force, Normal),
             "floor.Fn",
             "F^{\\mathrm{floor}}_{n}",
+        );
+        check(
+            reaction("floor", Force, SoleTangent),
+            "floor.Ft1",
+            "F^{\\mathrm{floor}}_{t}",
         );
         check(
             reaction("floor", Force, Tangent(2)),
