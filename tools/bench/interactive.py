@@ -71,7 +71,7 @@ def lagrange_chain(binary, runs):
             f"{LAGRANGE_CHAIN_LIMIT} s): {explain[1]:.3f} s", ok)
 
 
-def every_handout(binary, limit):
+def all_handouts(binary, limit):
     """Section 2: every bundled handout once against 0.5 s."""
     handouts = every_handout(binary, limit)
     over = [h for h in handouts if h[0][1] > HANDOUT_LIMIT or not h[0][2]]
@@ -117,7 +117,7 @@ def main():
     binary = os.path.abspath(names[0]) if names else os.path.join(ROOT, "target/release/mbd-tutor")
     results = [explain_against_solve(binary, runs), lagrange_chain(binary, runs)]
     if "--skip-all" not in argv:
-        results.append(every_handout(binary, limit))
+        results.append(all_handouts(binary, limit))
     results.append(variants_against_explains(binary, runs))
     results.append(grade_class(binary))
     print("\nsummary:")
