@@ -53,6 +53,7 @@ mod linearization;
 mod long;
 mod loops;
 mod matrix;
+mod matrix_by_value;
 mod mode_shape;
 mod moment_point;
 mod named_identity;
