@@ -59,22 +59,11 @@ pub fn matrix(
     let listed = |i: usize| !by_entries || by_name.get(i).copied().unwrap_or(true);
     let system = &super::kane::shown_system(derivation);
     let n = system.unknowns.len();
-    let by_value = || MatrixForm {
-        value_tables_tex: Math::all(headed(value_tables(
-            &numbers_of(system.a.len()),
-            &unknowns_tex(system),
-            &system.a,
-            &system.b,
-            &initial,
-        ))),
-        rules: coefficient_rules(derivation),
-        ..MatrixForm::default()
-    };
     // Kane's and Lagrange's rows written out whole in step 5 (see below).
     let whole_rows = matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries;
     let may_go_by_value = !whole_rows && sliding.is_empty();
     if may_go_by_value && super::matrix_by_value::by_value_early(system, by_name, &listed, &shown) {
-        return by_value();
+        return by_value(derivation, system, &initial, &headed);
     }
     let mut a: Vec<Vec<Expr>> = system
         .a
@@ -168,7 +157,7 @@ pub fn matrix(
     if printed > ENTRIES_BUDGET {
         // A system this large is read by its numbers: A and b at the initial state as a
         // table, the rules saying what each entry is.
-        return by_value();
+        return by_value(derivation, system, &initial, &headed);
     }
     // b's entries too long to read whole, collected by the products of rates they hold.
     let b_groups = b_groups(&b, &b_tex);
@@ -190,6 +179,24 @@ pub fn matrix(
     }
     let pattern = || pattern_tables(&numbers, &a, &b);
     listed_form(entries, (by_entries, &listed), a.len(), &x, pattern)
+}
+
+/// A system this large read by its numbers: `A` and `b` at the initial state as a table
+/// (each table `headed`), the rules saying what each entry is.
+fn by_value(
+    derivation: &Derivation,
+    system: &LinearSystem,
+    initial: &impl Fn(&Expr) -> f64,
+    headed: &impl Fn(Vec<String>) -> Vec<String>,
+) -> MatrixForm {
+    let (numbers, x) = (numbers_of(system.a.len()), unknowns_tex(system));
+    MatrixForm {
+        value_tables_tex: Math::all(headed(value_tables(
+            &numbers, &x, &system.a, &system.b, initial,
+        ))),
+        rules: coefficient_rules(derivation),
+        ..MatrixForm::default()
+    }
 }
 
 /// The unknowns' LaTeX, the columns' heads.
