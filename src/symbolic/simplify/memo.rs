@@ -21,6 +21,18 @@ thread_local! {
     /// The pairs formed so far in the current scope, without and with the double angle
     /// (which forms more of them); `None` outside a scope.
     static PAIRS: RefCell<Option<[Pairs; 2]>> = const { RefCell::new(None) };
+    /// Whether what a scope kept is left to the end of the process (see
+    /// [`leave_to_the_end`]).
+    static LEFT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// From now on, what a scope of [`with_simplify_memo`] kept is not freed when the scope
+/// ends but left to the end of the process, which frees it at once: for a command that
+/// writes one worked solution and exits. Freeing the millions of small expressions kept
+/// for a large mechanism, one by one, took a tenth of its run. Not for a process that
+/// goes on (a directory of problems, `serve`), whose memory would grow with every scope.
+pub fn leave_to_the_end() {
+    LEFT.with(|left| left.set(true));
 }
 
 /// Runs `f` with every [`simplify`](super::simplify) of an expression already simplified
@@ -31,8 +43,11 @@ pub fn with_simplify_memo<R>(f: impl FnOnce() -> R) -> R {
     impl Drop for Scope {
         fn drop(&mut self) {
             if self.0 {
-                KEPT.with(|kept| kept.borrow_mut().take());
-                PAIRS.with(|pairs| pairs.borrow_mut().take());
+                let kept = KEPT.with(|kept| kept.borrow_mut().take());
+                let pairs = PAIRS.with(|pairs| pairs.borrow_mut().take());
+                if LEFT.with(std::cell::Cell::get) {
+                    std::mem::forget((kept, pairs));
+                }
             }
         }
     }

@@ -31,7 +31,7 @@ mod trig;
 #[cfg(test)]
 mod tests;
 
-pub use memo::with_simplify_memo;
+pub use memo::{leave_to_the_end, with_simplify_memo};
 pub use steps::Step;
 
 use crate::symbolic::build::{add, func, mul, pow};
