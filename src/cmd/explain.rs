@@ -31,6 +31,9 @@ pub fn run(args: ExplainArgs) -> Result<(), Error> {
     if args.common.problem.is_dir() {
         return run_directory(&args);
     }
+    // One problem, then the process ends: what the handout's simplifications kept is
+    // freed by the end of the process, not one expression at a time.
+    crate::symbolic::leave_to_the_end();
     explain_file(&args, &args.common.problem, args.common.output.as_deref())
 }
 

@@ -20,7 +20,7 @@ pub(super) const MOST_COLUMNS: usize = 6;
 /// entries are given by their values at the initial state, a large system being solved by
 /// its numbers anyway: the few rows step 5 writes by name beside the table of dots, or all
 /// of A and b as tables when more rows are by name.
-const ENTRIES_BUDGET: usize = 24_000;
+pub(super) const ENTRIES_BUDGET: usize = 24_000;
 /// An entry this wide or narrower (in printed symbols) stays in a table by name.
 const INLINE_ENTRY: usize = 4;
 /// An entry longer than this keeps a display of its own when a row's entries are printed
@@ -59,6 +59,12 @@ pub fn matrix(
     let listed = |i: usize| !by_entries || by_name.get(i).copied().unwrap_or(true);
     let system = &super::kane::shown_system(derivation);
     let n = system.unknowns.len();
+    // Kane's and Lagrange's rows written out whole in step 5 (see below).
+    let whole_rows = matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries;
+    let may_go_by_value = !whole_rows && sliding.is_empty();
+    if may_go_by_value && super::matrix_by_value::by_value_early(system, by_name, &listed, &shown) {
+        return by_value(derivation, system, &initial, &headed);
+    }
     let mut a: Vec<Vec<Expr>> = system
         .a
         .iter()
@@ -70,19 +76,14 @@ pub fn matrix(
     let labels: Vec<String> = (0..a.len())
         .map(|i| row_heading_tex(derivation, i))
         .collect();
-    let x: Vec<String> = system
-        .unknowns
-        .iter()
-        .map(|u| latex(&Expr::sym(u.clone())))
-        .collect();
+    let x = unknowns_tex(system);
     // In the table a row is labelled by its number: step 5 heads each equation with it.
-    let numbers: Vec<String> = (1..=a.len()).map(|i| format!("({i})")).collect();
+    let numbers = numbers_of(a.len());
     // Kane's rows stand whole in step 5, each written once, its mass matrix positive, and a
     // single row is its own solution. Up to six unknowns Kane's matrix is written out with
     // its entries, as the Motion Law's is, for a student to solve; past that Kane's rows are
     // the system as they stand (see `solve_words`), and Lagrange's matrix shows only where
     // its entries are (the structure of the solve).
-    let whole_rows = matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries;
     if whole_rows && a.len() < 2 {
         return MatrixForm::default();
     }
@@ -156,13 +157,7 @@ pub fn matrix(
     if printed > ENTRIES_BUDGET {
         // A system this large is read by its numbers: A and b at the initial state as a
         // table, the rules saying what each entry is.
-        return MatrixForm {
-            value_tables_tex: Math::all(headed(value_tables(
-                &numbers, &x, &system.a, &system.b, &initial,
-            ))),
-            rules: coefficient_rules(derivation),
-            ..MatrixForm::default()
-        };
+        return by_value(derivation, system, &initial, &headed);
     }
     // b's entries too long to read whole, collected by the products of rates they hold.
     let b_groups = b_groups(&b, &b_tex);
@@ -184,6 +179,36 @@ pub fn matrix(
     }
     let pattern = || pattern_tables(&numbers, &a, &b);
     listed_form(entries, (by_entries, &listed), a.len(), &x, pattern)
+}
+
+/// A system this large read by its numbers: `A` and `b` at the initial state as a table
+/// (each table `headed`), the rules saying what each entry is.
+fn by_value(
+    derivation: &Derivation,
+    system: &LinearSystem,
+    initial: &impl Fn(&Expr) -> f64,
+    headed: &impl Fn(Vec<String>) -> Vec<String>,
+) -> MatrixForm {
+    let (numbers, x) = (numbers_of(system.a.len()), unknowns_tex(system));
+    MatrixForm {
+        value_tables_tex: Math::all(headed(value_tables(
+            &numbers, &x, &system.a, &system.b, initial,
+        ))),
+        rules: coefficient_rules(derivation),
+        ..MatrixForm::default()
+    }
+}
+
+/// The unknowns' LaTeX, the columns' heads.
+fn unknowns_tex(system: &LinearSystem) -> Vec<String> {
+    (system.unknowns.iter())
+        .map(|u| latex(&Expr::sym(u.clone())))
+        .collect()
+}
+
+/// The rows' labels in a table, `(1)` to `(rows)`.
+fn numbers_of(rows: usize) -> Vec<String> {
+    (1..=rows).map(|i| format!("({i})")).collect()
 }
 
 /// The entries listed one by one (of `rows` rows), the rows step 5 writes out in full, not
@@ -264,7 +289,7 @@ fn entries_by_value(
 
 /// The entries of `b`: collected by the products of rates, each coefficient's factor out,
 /// as step 5 writes an equation, when that is shorter than factored.
-fn b_texts(b: &[Expr]) -> Vec<String> {
+pub(super) fn b_texts(b: &[Expr]) -> Vec<String> {
     b.iter()
         .map(|e| {
             let (factored, collected) = (latex_factored(e), latex_collected(e));

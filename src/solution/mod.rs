@@ -55,6 +55,7 @@ mod long;
 mod loop_relations;
 mod loops;
 mod matrix;
+mod matrix_by_value;
 mod mode_shape;
 mod moment_point;
 mod named_identity;

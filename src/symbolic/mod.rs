@@ -56,6 +56,6 @@ pub use parse::{parse, ParseError, Resolve};
 pub use print::{latex, latex_name, latex_name_of, latex_unit_vector, list_by_runs, plain};
 pub use relation::Relation;
 pub use roots::roots_of_squares;
-pub use simplify::{simplify, with_simplify_memo};
+pub use simplify::{leave_to_the_end, simplify, with_simplify_memo};
 pub use style::{decimal_literals, with_style, Style};
 pub use subst::substitute;

@@ -31,7 +31,7 @@ mod trig;
 #[cfg(test)]
 mod tests;
 
-pub use memo::with_simplify_memo;
+pub use memo::{leave_to_the_end, with_simplify_memo};
 pub use steps::Step;
 
 use crate::symbolic::build::{add, func, mul, pow};
@@ -81,13 +81,19 @@ pub fn simplify_with_steps(e: &Expr) -> (Expr, Vec<Step>) {
 
 /// `e` simplified with `options`, pushing each step onto `steps` when given.
 pub fn simplify_with(e: &Expr, options: &Options, steps: Option<&mut Vec<Step>>) -> Expr {
-    let simpler = Simplifier {
+    // Inside a memo scope the pairs formed by earlier simplifications serve this one too.
+    let shared = memo::take_pairs(options.double_angle);
+    let in_scope = shared.is_some();
+    let mut simplifier = Simplifier {
         options,
         steps,
         memo: KeyMap::default(),
-        pairs: pairs::Pairs::default(),
+        pairs: shared.unwrap_or_default(),
+    };
+    let simpler = simplifier.expr(e);
+    if in_scope {
+        memo::give_back_pairs(options.double_angle, simplifier.pairs);
     }
-    .expr(e);
     // A sum over its own power, (r_A + r_B)² sin q / (r_A + r_B)², is cancelled.
     super::cancel::cancel_sums(&simpler)
 }
