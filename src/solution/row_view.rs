@@ -131,6 +131,7 @@ fn kane_heading(
         } else {
             format!("(an auxiliary speed, as in row {first})")
         };
+        augmented_note = super::auxiliary::moved_note(derivation, row, r).unwrap_or_default();
         (
             format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
             why,
