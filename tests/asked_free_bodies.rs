@@ -38,7 +38,7 @@ fn the_disc_on_the_cart_is_drawn_alone_with_the_force_asked_for_in_every_method(
             "{method}: {answers}"
         );
         assert!(
-            answers.contains("Free body $D$ of step 2 shows this force on D, at $U$."),
+            answers.contains("Free body D of step 2 shows this force on D, at U."),
             "{method}: {answers}"
         );
     }

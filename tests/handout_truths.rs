@@ -66,7 +66,7 @@ fn a_reaction_on_a_body_inside_the_rows_free_bodies_is_drawn_on_it() {
     let answers = between(&lagrange, "## Answers", "\n\n\n");
     assert!(!answers.contains("No free body drawn"), "{answers}");
     // Both components came out positive (friction 2.18 N, normal 19.62 N on the disc).
-    assert!(answers.contains("Free body $D$ of step 2"), "{answers}");
+    assert!(answers.contains("Free body D of step 2"), "{answers}");
     assert!(answers.contains("acts as drawn"), "{answers}");
     // The cart carries the opposite force: −(2.18182, 19.62) in C's unit vectors.
     assert!(

@@ -49,14 +49,14 @@ pub fn point_to_free_bodies(
             continue;
         };
         let on = super::force_labels::shown_name(problem.body_name(body), shown);
-        let point = super::force_labels::shown_name(site_name, shown);
-        let point = match point.chars().all(|c| c.is_ascii_alphanumeric()) {
-            true => format!("${}$", crate::symbolic::latex_name(&point)),
-            false => super::force_labels::place(&point),
-        };
+        // The note is plain text: names as the pictures print them.
+        let point = super::force_labels::place(&super::force_labels::shown_name(site_name, shown));
+        let bodies: Vec<String> = (drawing.bodies.split(" + "))
+            .map(|b| super::force_labels::shown_name(b, shown))
+            .collect();
         let text = format!(
-            "Free body ${}$ of step 2 shows this force on {on}, at {point}.",
-            drawing.name_tex.as_str()
+            "Free body {} of step 2 shows this force on {on}, at {point}.",
+            bodies.join(" + ")
         );
         // Before the rule by which its arrows' senses are read, which it points to.
         let at = view.note.find(super::sense_words::DRAWN_RULE);
