@@ -73,13 +73,16 @@ fn spin_of(model: &Model, body: BodyId, j: usize) -> Option<(usize, usize)> {
         && (0..3).all(|a| (0..3).all(|b| a == b || i[a][b].is_zero()));
     let on_axis = |c: &Components| others.iter().all(|&k| c[k].is_zero());
     // A wheel's rolling contact about the same axis is the same in every frame turned
-    // about it: the contact point is below the centre whatever the spin.
+    // about it: the contact point is below the centre whatever the spin. Only where the
+    // frame is added after the joint's other angles (the coin's lean frame): a wheel on an
+    // axle would be written in the axle's frame, which turns with the carrier's pitch.
+    let added = model.frames.info(body).rotations.len() > 1;
     let alone = !problem.joints.iter().any(|joint| joint.parent == body)
         && model
             .sites
             .iter()
             .filter(|s| s.parent == body || s.child == body)
-            .filter(|s| !rolls_about(model, s, body, axis))
+            .filter(|s| !(added && rolls_about(model, s, body, axis)))
             .count()
             == 1
         && !problem.loads.iter().any(|l| pulls_on(model, &l.kind, body));
