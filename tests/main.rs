@@ -4,6 +4,7 @@ mod agreement;
 mod answer_frames;
 mod answer_json;
 mod answers;
+mod asked_free_bodies;
 mod bicycle;
 mod browser;
 mod checks;

@@ -7,8 +7,9 @@
 //!
 //! Only for the worked solution (the numbers are the same either way), only without
 //! declared speeds (those stay as given), and only for a body whose spin changes nothing
-//! else: mass centre and joint point on the axis, no children, no contacts or closures, no
-//! forces, springs or dampers attached to it (torques and joint loads are fine).
+//! else: mass centre and joint point on the axis, no children, no contacts or closures but
+//! a rolling contact about that axis (a wheel, a coin), no forces, springs or dampers
+//! attached to it (torques and joint loads are fine).
 
 use super::angular::omega_component_named;
 use super::components::{cross3, Components};
@@ -71,11 +72,17 @@ fn spin_of(model: &Model, body: BodyId, j: usize) -> Option<(usize, usize)> {
     let symmetric = simplify(&(&i[others[0]][others[0]] - &i[others[1]][others[1]])).is_zero()
         && (0..3).all(|a| (0..3).all(|b| a == b || i[a][b].is_zero()));
     let on_axis = |c: &Components| others.iter().all(|&k| c[k].is_zero());
+    // A wheel's rolling contact about the same axis is the same in every frame turned
+    // about it: the contact point is below the centre whatever the spin. Only where the
+    // frame is added after the joint's other angles (the coin's lean frame): a wheel on an
+    // axle would be written in the axle's frame, which turns with the carrier's pitch.
+    let added = model.frames.info(body).rotations.len() > 1;
     let alone = !problem.joints.iter().any(|joint| joint.parent == body)
         && model
             .sites
             .iter()
             .filter(|s| s.parent == body || s.child == body)
+            .filter(|s| !(added && rolls_about(model, s, body, axis)))
             .count()
             == 1
         && !problem.loads.iter().any(|l| pulls_on(model, &l.kind, body));
@@ -85,6 +92,29 @@ fn spin_of(model: &Model, body: BodyId, j: usize) -> Option<(usize, usize)> {
         && alone
         && !state.mass.is_zero())
     .then_some((spin, axis))
+}
+
+/// Whether `site` is a rolling contact of `body` as a wheel about its own `axis`, its
+/// centre on that axis.
+fn rolls_about(model: &Model, site: &super::Site, body: BodyId, axis: usize) -> bool {
+    let super::SiteKind::Contact(k) = site.kind else {
+        return false;
+    };
+    let crate::problem::ConstraintKind::Rolling {
+        axis: wheel_axis,
+        center,
+        ..
+    } = &model.problem.constraints[k].kind
+    else {
+        return false;
+    };
+    let along = crate::mechanics::vector_of(wheel_axis).components_in(body, &model.frames);
+    let centre = super::sites::offset_on(model, center, body);
+    let off_axis = |c: &Components| (0..3).any(|i| i != axis && !simplify(&c[i]).is_zero());
+    site.child == body
+        && !simplify(&along[axis]).is_zero()
+        && !off_axis(&along)
+        && !off_axis(&centre)
 }
 
 /// Whether a load acts at a point of `body` (a force, or a spring's or damper's end).

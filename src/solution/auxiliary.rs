@@ -114,6 +114,32 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     ))
 }
 
+/// Which bodies Kane's row `r` (an auxiliary speed of a constraint force, `row`) moves,
+/// where that is not every body: its free body in step 2 shows the forces that can do work
+/// with it. Said in full at the first such row; a later one on the same bodies in short.
+pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String> {
+    if row.free_body == derivation.model.order {
+        return None;
+    }
+    let bodies = bodies_tex(derivation, &row.free_body);
+    let moves = if row.free_body.len() == 1 {
+        "moves"
+    } else {
+        "move"
+    };
+    let speeds = super::kane::speed_rows(derivation);
+    let rows = derivation.rows.iter();
+    let generalized = rows.filter(|x| matches!(x.sum, crate::plan::Sum::Generalized { .. }));
+    let first = (generalized.enumerate().skip(speeds))
+        .find(|(_, x)| x.free_body == row.free_body)
+        .map(|(k, _)| k + 1)?;
+    Some(if first < r {
+        format!("Again only ${bodies}$ {moves}.")
+    } else {
+        format!("Only ${bodies}$ {moves} with $u_{{{r}}}$: free body ${bodies}$ of step 2 shows the forces that can do work with it.")
+    })
+}
+
 /// The first of Kane's rows (1-based) that moves `bodies` together as an auxiliary speed
 /// of the tree, where the reactions inside them are first said to drop out.
 fn first_row_inside(derivation: &Derivation, bodies: &[BodyId]) -> Option<usize> {

@@ -58,7 +58,8 @@ pub fn table_rows(
         if let RowOrigin::Site { site, .. } = model.constraints.rows[k].origin {
             let of_site = (model.constraints.rows.iter())
                 .filter(|c| matches!(c.origin, RowOrigin::Site { site: s, .. } if s == site));
-            if let Some(mut point) = site_partial(model, site, of_site, rates, &weights, r - 1) {
+            let point = site_partial(model, site, of_site, rates, &weights, r - 1);
+            if let Some(mut point) = point.filter(|p| !said_by_body(model, site, &lines, p)) {
                 if lines.is_empty() {
                     point.speed_tex = Math::from(speed);
                 }
@@ -68,6 +69,27 @@ pub fn table_rows(
         out.extend(lines);
     }
     out
+}
+
+/// Whether the body's line already says the contact point's partial velocity: the body
+/// moves without turning, as fast as the point, and what it touches does not move (the
+/// coin lifted straight up: ṽ^{D*} = n̂_z, so ṽ^P = n̂_z too).
+fn said_by_body(
+    model: &crate::mechanics::Model,
+    site: usize,
+    lines: &[PartialVelocity],
+    point: &PartialVelocity,
+) -> bool {
+    let value = |tex: &str| tex.rsplit(" = ").next().unwrap_or_default().to_string();
+    let site = &model.sites[site];
+    let parent = model.problem.body_name(site.parent);
+    let parent_moves = lines.iter().any(|l| l.body == parent);
+    let body_says = lines.iter().any(|l| {
+        l.body == point.body
+            && l.omega_tex.as_str().ends_with("= \\mathbf{0}")
+            && value(l.velocity_tex.as_str()) == value(point.velocity_tex.as_str())
+    });
+    body_says && !parent_moves
 }
 
 /// Whether some auxiliary speed of a constraint force has lines in the table.

@@ -54,7 +54,8 @@ fn contact_display(model: &Model, k: usize) -> Option<String> {
     let star = centre_tex(model, body);
     let arm_name = format!("\\mathbf{{r}}^{{{star} {point}}}");
     let arm_tex = shortest_tex(model, &arm, body);
-    let slip_tex = shortest_tex(model, &slip, body);
+    // In the surface's unit vectors, along which the constraint rows take its components.
+    let slip_tex = shortest_tex(model, &slip, site.parent);
     if slip_tex.len() > LONGEST || arm_tex.len() > LONGEST {
         return None;
     }

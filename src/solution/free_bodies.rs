@@ -37,12 +37,7 @@ pub(super) fn acts_at(model: &Model, action: &crate::plan::Action, at: &Vector) 
 pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
     let model = &derivation.model;
     let problem = model.problem;
-    let mut sets: Vec<Vec<BodyId>> = Vec::new();
-    for row in &derivation.rows {
-        if !row.free_body.is_empty() && !sets.contains(&row.free_body) {
-            sets.push(row.free_body.clone());
-        }
-    }
+    let sets = super::pictures::free_body_sets(derivation);
     let shown = super::shown_names::shown_names(model);
     sets.iter()
         .map(|set| {

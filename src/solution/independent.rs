@@ -249,7 +249,7 @@ pub fn dependent_speeds(
         )
     };
     let mut paragraphs = vec![format!(
-        "The constraints fix the rates {} by the others, {}{}; solved for the dependent rates, the velocity constraints give $\\dot{{q}}_D = C\\,\\dot{{q}}_I${using}:",
+        "The constraints fix the rates {} by the others, {}{}; solved for the dependent rates, the velocity constraints give{using}:",
         listed(&speeds.dependent),
         if speeds.independent.len() == 1 {
             format!(
@@ -280,7 +280,11 @@ pub fn dependent_speeds(
             );
         }
     }
-    let partials = "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)";
+    let partials = if speeds.at_each_state {
+        "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s C_{sr}\\,\\mathbf{v}_s$ (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)"
+    } else {
+        "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s \\frac{\\partial \\dot{q}_s}{\\partial u_r}\\,\\mathbf{v}_s$, summed over the dependent rates $\\dot{q}_s$ of the relations above (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)"
+    };
     let partials = if super::auxiliary_partials::any(derivation) {
         format!("{partials}; an auxiliary speed's, in the lines after them, are those of the motion in which only its constraint gives way")
     } else {

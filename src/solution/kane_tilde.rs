@@ -193,10 +193,9 @@ fn acceleration_lines(
             continue;
         }
         if written.is_empty() && lines.is_empty() {
-            let c = crate::problem::MatrixNames::of(problem).c;
-            lines.push(format!(
-                "&\\text{{with the constraints differentiated, }} \\ddot{{q}}_D = {c}\\,\\ddot{{q}}_I + \\dot{{{c}}}\\,\\dot{{q}}_I\\text{{:}}"
-            ));
+            lines.push(
+                "&\\text{with the relations of the dependent rates differentiated:}".to_string(),
+            );
         }
         let d = elimination.speeds.dependent[s];
         let value = shown(&simplify(&elimination.accelerations[s]));

@@ -131,6 +131,7 @@ fn kane_heading(
         } else {
             format!("(an auxiliary speed, as in row {first})")
         };
+        augmented_note = super::auxiliary::moved_note(derivation, row, r).unwrap_or_default();
         (
             format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
             why,
@@ -204,9 +205,9 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         let first =
             index.is_some_and(|i| !(0..i).any(|k| super::kane::sign_changed(derivation, k)));
         simplified_note = if first {
-            "Their sum, simplified, and its signs changed so that the mass matrix is positive:"
+            "Their sum set to zero, Kane's equation, simplified and rearranged:"
         } else {
-            "Their sum, simplified, its signs changed likewise:"
+            "Kane's equation, rearranged likewise:"
         }
         .into();
     }

@@ -14,8 +14,15 @@ pub const DRAWN_RULE: &str =
 /// The body that site `site`'s reaction acts on (the joint's child, the rolling or touching
 /// body of a contact), as the handout names it.
 fn carried(problem: &Problem, site: usize, shown: &[(String, String)]) -> String {
+    carried_body(problem, site).map_or("the body it carries".to_string(), |b| {
+        super::force_labels::shown_name(problem.body_name(b), shown)
+    })
+}
+
+/// The body that site `site`'s reaction acts on; `None` for a constraint without a body.
+pub(super) fn carried_body(problem: &Problem, site: usize) -> Option<crate::problem::BodyId> {
     let (j, c) = (problem.joints.len(), problem.closures.len());
-    let body = if site < j {
+    if site < j {
         Some(problem.joints[site].child)
     } else if site < j + c {
         Some(problem.closures[site - j].child)
@@ -28,10 +35,7 @@ fn carried(problem: &Problem, site: usize, shown: &[(String, String)]) -> String
             ) => Some(*body),
             _ => None,
         }
-    };
-    body.map_or("the body it carries".to_string(), |b| {
-        super::force_labels::shown_name(problem.body_name(b), shown)
-    })
+    }
 }
 
 /// Each component's unit vector (`\hat{\mathbf{c}}_{x}`) as the answer's values print

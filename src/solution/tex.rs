@@ -74,12 +74,15 @@ pub(super) fn component_term(c: &Expr, unit: &str) -> String {
 }
 
 /// The shortest way to write a vector among the frames `N`, the body's and its parent's.
+/// A frame not turned from its parent (a cart's) is written as that parent, so that one
+/// table does not mix ĉ_x with the n̂_x it equals.
 pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
     // A body spinning about its symmetry axis first in the frame that does not spin.
     let mut frames = vec![model.bodies[body.0].frame, body, BodyId::GROUND];
     if let Some(parent) = model.frames.info(body).parent {
         frames.push(parent);
     }
+    let frames = frames.into_iter().map(|f| turned_ancestor(model, f));
     let mut best: Option<(usize, Vector)> = None;
     for frame in frames {
         let written = v.expressed_in(frame, &model.frames).map(simplify);
@@ -89,6 +92,19 @@ pub(super) fn shortest_tex(model: &Model, v: &Vector, body: BodyId) -> String {
         }
     }
     best.map(|(_, w)| vector_tex(model, &w)).unwrap_or_default()
+}
+
+/// `frame`, or the first frame it descends from that is turned from its parent: a frame
+/// whose unit vectors are its parent's is written as the parent.
+fn turned_ancestor(model: &Model, frame: BodyId) -> BodyId {
+    let mut frame = frame;
+    while let Some(parent) = (model.frames.info(frame))
+        .parent
+        .filter(|_| model.frames.info(frame).rotations.is_empty())
+    {
+        frame = parent;
+    }
+    frame
 }
 
 /// A free body's bodies in LaTeX, `A + B`.

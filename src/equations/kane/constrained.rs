@@ -91,17 +91,24 @@ pub fn equations(
             let Some(k) = speeds.row_of(model, &unknown) else {
                 continue;
             };
-            let mut groups = combined(&raw, &speeds.violation_weights(k, n));
+            let weights = speeds.violation_weights(k, n);
+            let mut groups = combined(&raw, &weights);
             groups.contact = &groups.contact + &Expr::sym(unknown);
             let what = format!("{}.{}", site.name, component.component());
-            rows.push(row(auxiliary_name(&what), groups));
+            rows.push(on_moved(
+                row(auxiliary_name(&what), groups),
+                model,
+                &weights,
+            ));
         }
     }
     for unknown in request.kept {
         if let Some(k) = speeds.row_of(model, unknown) {
-            let mut groups = combined(&raw, &speeds.violation_weights(k, n));
+            let weights = speeds.violation_weights(k, n);
+            let mut groups = combined(&raw, &weights);
             groups.contact = &groups.contact + &Expr::sym(unknown.clone());
-            rows.push(row(auxiliary_name(&model.constraints.rows[k].name), groups));
+            let name = auxiliary_name(&model.constraints.rows[k].name);
+            rows.push(on_moved(row(name, groups), model, &weights));
         }
     }
     rows
@@ -165,6 +172,14 @@ impl<'m> Written<'m> {
             inertia_force: one(&groups.inertia_force),
             inertia_torque: one(&groups.inertia_torque),
         }
+    }
+}
+
+/// `row` with the free body of the bodies its auxiliary speed moves (see [`super::moved`]).
+fn on_moved(row: Equation, model: &Model, weights: &[Expr]) -> Equation {
+    Equation {
+        free_body: super::moved::moved_bodies(model, weights),
+        ..row
     }
 }
 

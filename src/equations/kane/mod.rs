@@ -9,6 +9,7 @@ use crate::plan::{
 
 pub(super) mod constrained;
 pub(super) mod loads;
+mod moved;
 mod rows;
 
 use crate::symbolic::{add, linear_split, Expr, Symbol};

@@ -40,7 +40,8 @@ pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
     .next()
 }
 
-/// The free bodies of the plan, in the order its rows first use them.
+/// The free bodies of the plan, in the order its rows first use them, then one for each
+/// reaction asked for that none of them shows on its body.
 pub fn free_body_sets(derivation: &Derivation) -> Vec<Vec<BodyId>> {
     let mut sets: Vec<Vec<BodyId>> = Vec::new();
     for row in &derivation.rows {
@@ -48,7 +49,7 @@ pub fn free_body_sets(derivation: &Derivation) -> Vec<Vec<BodyId>> {
             sets.push(row.free_body.clone());
         }
     }
-    sets
+    super::asked_bodies::with_asked(derivation, sets)
 }
 
 /// How far across a free body is drawn: as the configuration for a few, smaller for a
