@@ -265,13 +265,13 @@ fn all_faults(method: Method) -> Vec<String> {
 /// Faults known and left, as (picture, what the fault says). The gimbal's free body ring +
 /// rotor crowds a pin's three forces, two moments, a weight and two captions into one corner
 /// of a 3D view: every spot within 36 px of the gimbal pin lies over an arrow, so its caption
-/// stands a little further off. On the inclines the triad's arrows fill the ring round B*:
-/// its name stands just past them rather than over one.
+/// stands a little further off. On the inclines the triad's arrows (and the applied push)
+/// fill the ring round B*: its name stands just past them rather than over one.
 const KNOWN: [(&str, &str); 4] = [
     ("gyroscope-gimbal fbd-ring+rotor", " over arrow "),
     ("gyroscope-gimbal fbd-ring+rotor", "gimbal 52 px from"),
     ("block-on-rough-incline configuration", "B^* 41 px from"),
-    ("statics-block-on-incline configuration", "B^* 41 px from"),
+    ("statics-block-on-incline configuration", "B^* 43 px from"),
 ];
 
 #[test]

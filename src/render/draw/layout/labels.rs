@@ -93,9 +93,11 @@ impl Painter {
             if self.obstacles.crosses_label(arrow.head, tip) {
                 return None;
             }
+            // Nor across another arrow (a weight drawn aside next to a pin's force).
             if tips
                 .iter()
                 .any(|t| p2norm([t[0] - tip[0], t[1] - tip[1]]) < APART)
+                || self.crossings(arrow.tail, tip) > 0
             {
                 continue;
             }

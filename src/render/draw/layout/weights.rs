@@ -33,21 +33,26 @@ impl Painter {
 
     /// The tail a weight from `tail` along the unit `u`, `length` long, is drawn from
     /// instead, when from `tail` it would lie on another force's line or along a bar:
-    /// the nearest spot to the side clear of both that crosses no more arrows than `tail`
-    /// does; `None` when it stands clear where it is, or no spot to the side serves.
+    /// the nearest spot to the side clear of both that crosses no arrow (drawn before it,
+    /// or after it either way along its line); `None` when it stands clear where it is, or
+    /// no spot to the side serves.
     pub(super) fn weight_aside(&self, tail: P2, u: P2, length: f64) -> Option<P2> {
         if !self.weight_blocked(tail, u, length) {
             return None;
         }
         let across = [-u[1], u[0]];
-        let here = self.crossings(tail, p2add(tail, p2scale(u, length)));
+        // Arrows drawn before it, and those drawn after it from or to their points.
+        let crossed = |t: P2| {
+            let tip = p2add(t, p2scale(u, length));
+            let reach =
+                |p: P2, v: P2| (p2add(p, p2scale(v, -length)), p2add(p, p2scale(v, length)));
+            let later = (self.others.iter()).any(|&(p, v)| crosses((t, tip), reach(p, v)));
+            later || self.crossings(t, tip) > 0
+        };
         GAPS.iter()
             .flat_map(|gap| [1.0, -1.0].map(|side| side * gap * self.reach))
             .map(|d| p2add(tail, p2scale(across, d)))
-            .find(|&moved| {
-                !self.weight_blocked(moved, u, length)
-                    && self.crossings(moved, p2add(moved, p2scale(u, length))) <= here
-            })
+            .find(|&moved| !self.weight_blocked(moved, u, length) && !crossed(moved))
     }
 
     /// Whether a weight from `tail` along `u`, `length` long, lies on another force's
@@ -90,4 +95,11 @@ impl Painter {
             .count();
         inside + 1 >= SAMPLES.len() && p2norm(u) > 0.0
     }
+}
+
+/// Whether two segments cross, each one's ends strictly on either side of the other's line
+/// (a weight whose tail lies on a pin force's line hangs from it, and does not cross it).
+fn crosses((a, b): (P2, P2), (c, d): (P2, P2)) -> bool {
+    let side = |p: P2, q: P2, r: P2| (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0
 }
