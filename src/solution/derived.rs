@@ -205,14 +205,8 @@ fn pictures(
     accelerations: &[f64],
 ) {
     // The pictures at the initial state, the configuration first.
-    let drawings = crate::solution::pictures::draw(
-        derivation,
-        0.0,
-        q0,
-        rates0,
-        Some(accelerations),
-        crate::render::draw::View::Isometric,
-    );
+    let drawings =
+        crate::solution::pictures::draw_in_handout(derivation, (q0, rates0), Some(accelerations));
     if drawings.len() > 1 {
         solution.free_body_legend = crate::solution::pictures::FREE_BODY_LEGEND.into();
     }

@@ -1,20 +1,31 @@
 //! Every label stands at what it names, and nothing of a free body is drawn over anything
 //! else of it: for every picture of every bundled problem (collar on a spinning shaft
-//! included), by the Motion Law and by Newton–Euler, each point's caption lies within a
-//! few pixels of its point, no two labels overlap, no label lies over an arrow, and no two
-//! straight arrows cross (arrows that meet at an end, two components at one pin, do not
-//! cross).
+//! included), by the Motion Law and by Newton–Euler, as drawn (SVG) and, for the handouts
+//! an instructor reviewed, as their pages print them (smaller, the labels at their size in
+//! points), each point's caption lies
+//! within a few pixels of its point, each unit vector's name by its arrow's tip, no two
+//! labels overlap, no label lies over an arrow, no two straight arrows cross (arrows that
+//! meet at an end, two components at one pin, do not cross), and no weight lies on the
+//! line of another force (a pin's vertical reaction at a wheel's centre).
 
 use super::drawings;
 use crate::support::all_problems;
 use mbd_tutor::equations::Method;
-use mbd_tutor::render::draw::{text_size, Drawing, Item, View};
+use mbd_tutor::render::draw::{
+    text_size, Drawing, Item, Kind, Picture, Scene, View, ABOVE_A_TABLE, BESIDE_A_TABLE,
+    CONFIGURATION,
+};
 
 /// How far (px) from its point a caption's box may be: 22 px where there is room, 36 px
 /// where every spot that close would lie over a line, and the box's margin.
 const NEAR: f64 = 40.0;
 /// How far (px) at each end of an arrow another may meet it without crossing it.
 const END: f64 = 6.0;
+/// How far (px at 13 px labels) from its arrow's tip a unit vector's name may stand.
+const NEAR_A_TIP: f64 = 40.0;
+/// The least gap (px at 13 px labels) between a weight's line and another force's
+/// parallel line where the two arrows lie within an arrow's length of each other.
+const APART: f64 = 7.0;
 
 type P2 = [f64; 2];
 
@@ -27,11 +38,12 @@ struct Box2 {
 }
 
 impl Box2 {
-    fn of(at: P2, plain: &str) -> Box2 {
+    /// The box of a label of `plain` text at `at`, its room `grow` times that at 13 px.
+    fn of(at: P2, plain: &str, grow: f64) -> Box2 {
         let size = text_size(plain);
         Box2 {
             center: at,
-            half: [size[0] / 2.0 - 1.0, size[1] / 2.0 - 2.0],
+            half: [grow * size[0] / 2.0 - 1.0, grow * size[1] / 2.0 - 2.0],
         }
     }
 
@@ -76,24 +88,62 @@ fn cross((a, b): (P2, P2), (c, d): (P2, P2)) -> bool {
 }
 
 /// The labels of a picture (its title and legend left out), as (plain text, box).
-fn labels(d: &Drawing) -> Vec<(String, Box2)> {
-    let texts = &d.picture.texts;
-    let last = texts.len() - d.picture.legend.lines;
+fn labels(picture: &Picture) -> Vec<(String, Box2)> {
+    let texts = &picture.texts;
+    let last = texts.len() - picture.legend.lines;
     (texts[1..last].iter())
         .filter_map(|t| match t {
-            Item::Text { at, label, .. } => {
-                Some((label.plain.clone(), Box2::of(*at, &label.plain)))
-            }
+            Item::Text { at, label, .. } => Some((
+                label.plain.clone(),
+                Box2::of(*at, &label.plain, picture.grow),
+            )),
             _ => None,
         })
         .collect()
 }
 
-/// What is wrong with one picture, a line each.
-fn faults_of(name: &str, d: &Drawing) -> Vec<String> {
+/// The tips of the unit vectors' arrows (each triad's lines, from its origin).
+fn triad_tips(picture: &Picture) -> Vec<P2> {
+    (picture.items.iter())
+        .filter_map(|item| match item {
+            Item::Group { class, items } if *class == "triad" => Some(items),
+            _ => None,
+        })
+        .flatten()
+        .filter_map(|item| match item {
+            Item::Stroke(s) if !s.closed && s.points.len() == 2 => Some(s.points[1]),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Whether two straight arrows `a` and `b` lie on one line: parallel within 10°, their
+/// lines closer than `gap`, and the two within an arrow's length of each other along it.
+fn on_one_line((a0, a1): (P2, P2), (b0, b1): (P2, P2), gap: f64) -> bool {
+    let length = (a1[0] - a0[0]).hypot(a1[1] - a0[1]);
+    let other = (b1[0] - b0[0]).hypot(b1[1] - b0[1]);
+    if length < 1.0 || other < 1.0 {
+        return false;
+    }
+    let u = [(a1[0] - a0[0]) / length, (a1[1] - a0[1]) / length];
+    let v = [(b1[0] - b0[0]) / other, (b1[1] - b0[1]) / other];
+    if (u[0] * v[0] + u[1] * v[1]).abs() < 10f64.to_radians().cos() {
+        return false;
+    }
+    // Along the first's line and across it, each end of the second.
+    let along = |p: P2| (p[0] - a0[0]) * u[0] + (p[1] - a0[1]) * u[1];
+    let across = |p: P2| ((p[0] - a0[0]) * u[1] - (p[1] - a0[1]) * u[0]).abs();
+    let (lo, hi) = (along(b0).min(along(b1)), along(b0).max(along(b1)));
+    let reach = length.max(other);
+    across(b0).min(across(b1)) < gap && lo < length + reach && hi > -reach
+}
+
+/// What is wrong with one picture of `scene`, a line each.
+fn faults_of(name: &str, scene: &Scene, picture: &Picture) -> Vec<String> {
     let mut faults = Vec::new();
-    let labels = labels(d);
-    for (marker, mark) in d.scene.markers.iter().zip(&d.picture.marks) {
+    let labels = labels(picture);
+    let grow = picture.grow;
+    for (marker, mark) in scene.markers.iter().zip(&picture.marks) {
         let Some(caption) = &marker.caption else {
             continue;
         };
@@ -101,7 +151,7 @@ fn faults_of(name: &str, d: &Drawing) -> Vec<String> {
             .filter(|(plain, _)| *plain == caption.plain)
             .map(|(_, b)| b.distance_to(mark.at))
             .fold(f64::INFINITY, f64::min);
-        if nearest > NEAR {
+        if nearest > NEAR * grow {
             faults.push(format!(
                 "{name}: {} {nearest:.0} px from {}",
                 caption.plain, mark.id
@@ -115,7 +165,34 @@ fn faults_of(name: &str, d: &Drawing) -> Vec<String> {
             }
         }
     }
-    let straight: Vec<(String, (P2, P2))> = (d.picture.arrows.iter())
+    let tips = triad_tips(picture);
+    for (label, b) in labels.iter().filter(|(l, _)| l.contains('\u{302}')) {
+        let nearest = (tips.iter())
+            .map(|t| b.distance_to(*t))
+            .fold(f64::INFINITY, f64::min);
+        if nearest > NEAR_A_TIP * grow {
+            faults.push(format!("{name}: {label} {nearest:.0} px from its arrow"));
+        }
+    }
+    let drawn =
+        |a: &&mbd_tutor::render::draw::DrawnArrow| a.arc.is_none() && a.kind != Kind::Inertia;
+    for w in (picture.arrows.iter())
+        .filter(drawn)
+        .filter(|a| a.kind == Kind::Gravity)
+    {
+        for o in (picture.arrows.iter())
+            .filter(drawn)
+            .filter(|a| a.kind != Kind::Gravity)
+        {
+            if !o.couple && on_one_line((w.tail, w.head), (o.tail, o.head), APART * grow) {
+                faults.push(format!(
+                    "{name}: weight {} on the line of {}",
+                    w.label.plain, o.label.plain
+                ));
+            }
+        }
+    }
+    let straight: Vec<(String, (P2, P2))> = (picture.arrows.iter())
         .filter(|a| a.arc.is_none())
         .filter_map(|a| middle(a.tail, a.head).map(|m| (a.label.plain.clone(), m)))
         .collect();
@@ -136,6 +213,37 @@ fn faults_of(name: &str, d: &Drawing) -> Vec<String> {
     faults
 }
 
+/// The faults of a picture as drawn, and as a handout's page prints it: the configuration
+/// at the head of the handout, a free body beside its table of forces or above it.
+fn faults_printed(name: &str, d: &Drawing) -> Vec<String> {
+    let mut faults = faults_of(name, &d.scene, &d.picture);
+    let rooms = if d.free_body.is_empty() {
+        vec![("printed", CONFIGURATION)]
+    } else {
+        vec![("beside", BESIDE_A_TABLE), ("above", ABOVE_A_TABLE)]
+    };
+    for (how, room) in rooms {
+        let printed = d.laid_out_in(room);
+        if printed.grow > 1.0 {
+            faults.extend(faults_of(&format!("{name} {how}"), &d.scene, &printed));
+        }
+    }
+    faults
+}
+
+/// The handouts an instructor reviewed as printed pages.
+const REVIEWED: [&str; 9] = [
+    "bowling-ball",
+    "disc-in-cylinder",
+    "disc-on-cart",
+    "double-pendulum-rods",
+    "four-bar",
+    "gear-pair-torque",
+    "heavy-symmetric-top",
+    "rack-and-pinion",
+    "rolling-coin",
+];
+
 fn all_faults(method: Method) -> Vec<String> {
     let mut faults = Vec::new();
     for path in all_problems() {
@@ -143,7 +251,12 @@ fn all_faults(method: Method) -> Vec<String> {
         let (_, pictures, _) = drawings(&problem, method, View::Isometric);
         let stem = path.file_stem().unwrap_or_default().to_string_lossy();
         for d in &pictures {
-            faults.extend(faults_of(&format!("{stem} {}", d.name), d));
+            let name = format!("{stem} {}", d.name);
+            faults.extend(if REVIEWED.contains(&stem.as_ref()) {
+                faults_printed(&name, d)
+            } else {
+                faults_of(&name, &d.scene, &d.picture)
+            });
         }
     }
     faults
@@ -152,13 +265,13 @@ fn all_faults(method: Method) -> Vec<String> {
 /// Faults known and left, as (picture, what the fault says). The gimbal's free body ring +
 /// rotor crowds a pin's three forces, two moments, a weight and two captions into one corner
 /// of a 3D view: every spot within 36 px of the gimbal pin lies over an arrow, so its caption
-/// stands a little further off. On the inclines the triad's arrows fill the ring round B*:
-/// its name stands just past them rather than over one.
+/// stands a little further off. On the inclines the triad's arrows (and the applied push)
+/// fill the ring round B*: its name stands just past them rather than over one.
 const KNOWN: [(&str, &str); 4] = [
     ("gyroscope-gimbal fbd-ring+rotor", " over arrow "),
     ("gyroscope-gimbal fbd-ring+rotor", "gimbal 52 px from"),
     ("block-on-rough-incline configuration", "B^* 41 px from"),
-    ("statics-block-on-incline configuration", "B^* 41 px from"),
+    ("statics-block-on-incline configuration", "B^* 43 px from"),
 ];
 
 #[test]
@@ -185,11 +298,34 @@ fn labels_stand_at_what_they_name_and_nothing_lies_over_anything() {
 
 #[test]
 fn the_checks_find_what_they_look_for() {
-    let label = Box2::of([50.0, 50.0], "A*");
+    let label = Box2::of([50.0, 50.0], "A*", 1.0);
     assert!(label.distance_to([50.0, 50.0]) == 0.0);
     assert!(label.distance_to([50.0, 100.0]) > NEAR);
-    assert!(label.overlaps(&Box2::of([56.0, 52.0], "O")));
-    assert!(!label.overlaps(&Box2::of([90.0, 50.0], "O")));
+    assert!(label.overlaps(&Box2::of([56.0, 52.0], "O", 1.0)));
+    assert!(!label.overlaps(&Box2::of([90.0, 50.0], "O", 1.0)));
+    // Printed twice as large, the same two labels meet.
+    assert!(Box2::of([50.0, 50.0], "A*", 2.0).overlaps(&Box2::of([75.0, 50.0], "O", 2.0)));
+    assert!(!label.overlaps(&Box2::of([75.0, 50.0], "O", 1.0)));
+    // A weight down from a pin whose vertical reaction points up lies on its line; moved
+    // 16 px aside it does not; a horizontal reaction never does.
+    let weight = ([100.0, 100.0], [100.0, 144.0]);
+    assert!(on_one_line(weight, ([100.0, 100.0], [100.0, 56.0]), APART));
+    assert!(!on_one_line(
+        ([84.0, 100.0], [84.0, 144.0]),
+        ([100.0, 100.0], [100.0, 56.0]),
+        APART
+    ));
+    assert!(!on_one_line(
+        weight,
+        ([100.0, 100.0], [144.0, 100.0]),
+        APART
+    ));
+    // Far apart along one line (a long bar's two ends), they are two arrows.
+    assert!(!on_one_line(
+        weight,
+        ([100.0, 400.0], [100.0, 444.0]),
+        APART
+    ));
     assert!(label.meets([0.0, 50.0], [100.0, 50.0]));
     assert!(!label.meets([0.0, 80.0], [100.0, 80.0]));
     let a = ([0.0, 0.0], [40.0, 0.0]);

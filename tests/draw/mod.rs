@@ -7,8 +7,7 @@ use crate::svg_reader::{apply, parse, Element};
 use mbd_tutor::cmd::derivation_at;
 use mbd_tutor::equations::{Derivation, Method};
 use mbd_tutor::mechanics::Vector;
-use mbd_tutor::problem::State;
-use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem};
+use mbd_tutor::problem::{BodyId, LoadKind, PointRef, Problem, State};
 use mbd_tutor::render::draw::{Drawing, View};
 use mbd_tutor::solution::draw_pictures as draw;
 use mbd_tutor::symbolic::{eval, Values};
@@ -339,9 +338,10 @@ fn check_arrows(d: &Derivation, r: &Read, values: &Values) {
         // A force starts at its point, or ends there (a push drawn outside its body); a
         // moment vector is free, drawn off another arrow's line where it would lie on it.
         let near = |p: [f64; 2]| (p[0] - at_point[0]).hypot(p[1] - at_point[1]) < 0.01;
+        let led = leaders::leads_to(g, *m, at_point, [tail, head]);
         if kind != "inertia" && !class.contains("couple") {
             assert!(
-                near(tail) || near(head),
+                near(tail) || near(head) || led,
                 "{name}: the {kind} arrow neither starts nor ends at {at}"
             );
         }
@@ -494,7 +494,11 @@ fn check_problem(path: &std::path::Path, method: Method) {
             assert_eq!(picture.name, format!("fbd-{name}"));
             check_reactions(&derivation, &r, set, &values);
         } else {
-            assert!(r.arrows.is_empty(), "the configuration carries no forces");
+            let applied = |(g, _): &(Element, [f64; 6])| g.attr("data-kind") == Some("load");
+            assert!(
+                r.arrows.iter().all(applied),
+                "the configuration: applied forces only"
+            );
         }
     }
 }
@@ -592,7 +596,9 @@ mod browser;
 mod commands;
 mod handouts;
 mod labels;
+mod leaders;
 mod overlap;
+mod placement;
 mod sliding;
 
 use sliding::{check_sliding, slip_along};

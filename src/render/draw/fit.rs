@@ -55,8 +55,9 @@ pub fn planar_rows(down: Option<P3>) -> [P3; 2] {
     }
 }
 
-/// The projection that fits `scene` into the content box, and the picture's size.
-pub fn fit(scene: &Scene, view: View) -> (Projection, P2) {
+/// The projection that fits `scene` into a box `content` px across at most, with `margin`
+/// px around it for arrows and labels, and the picture's size.
+pub fn fit(scene: &Scene, view: View, margin: f64, content: f64) -> (Projection, P2) {
     let rows = if scene.planar {
         planar_rows(scene.down)
     } else {
@@ -82,14 +83,14 @@ pub fn fit(scene: &Scene, view: View) -> (Projection, P2) {
     }
     let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
     let s = if extent > 1e-12 {
-        scene.content / extent
+        content / extent
     } else {
         100.0
     };
     let a = [scale(rows[0], s), scale(rows[1], s)];
-    let width = (hi[0] - lo[0]) * s + 2.0 * MARGIN;
-    let height = (hi[1] - lo[1]) * s + 2.0 * MARGIN + TITLE;
-    let b = [MARGIN - lo[0] * s, MARGIN + TITLE - lo[1] * s];
+    let width = (hi[0] - lo[0]) * s + 2.0 * margin;
+    let height = (hi[1] - lo[1]) * s + 2.0 * margin + TITLE;
+    let b = [margin - lo[0] * s, margin + TITLE - lo[1] * s];
     // At least wide enough for a long label beside a tall, thin body.
     let room = 280.0f64.max(width);
     let b = [b[0] + (room - width) / 2.0, b[1]];

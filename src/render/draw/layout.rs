@@ -18,10 +18,13 @@ mod crossing;
 mod curl;
 mod labels;
 mod marks;
+mod room;
 mod triad;
 mod velocity;
+mod weights;
 
 use labels::Beside;
+use room::Room;
 
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
@@ -47,6 +50,15 @@ pub(super) struct Painter {
     /// How much room a label takes beyond its size at 13 px (1, or more for a page that
     /// prints the picture small and its labels at their size in points).
     grow: f64,
+    /// How many times its length at 13 px every arrow is drawn (more than 1 where the
+    /// picture prints small, so that it prints long enough to read).
+    reach: f64,
+    /// Where the panel's other straight forces act (on the page) and which way (a unit
+    /// vector on the page): a weight keeps off their lines.
+    others: Vec<(P2, P2)>,
+    /// The bodies each marked point belongs to, in the scene's order of markers: its
+    /// caption keeps out of the others.
+    owners: Vec<Vec<String>>,
 }
 
 impl Painter {
@@ -264,10 +276,11 @@ impl Painter {
             arc: None,
             heads: Vec::new(),
             ink,
+            leader: None,
         };
         if arrow.couple && planar {
             let sense: i8 = if arrow.direction[2] >= 0.0 { 1 } else { -1 };
-            let radius = COUPLE + 7.0 * stack as f64;
+            let radius = COUPLE * self.reach.min(1.4) + 7.0 * stack as f64;
             // Counterclockwise in N is clockwise on the page, whose y points down.
             let sweep = -f64::from(sense) * 1.5 * std::f64::consts::PI;
             let start = self.curl_start(at, radius, sweep, &self.rays_at(at));
@@ -304,12 +317,13 @@ impl Painter {
             ));
             return drawn;
         }
-        let length = arrow_length(stack);
+        let length = arrow_length(stack) * self.reach;
         // A force starts at its point, or ends there where starting there would run it
         // inside its body (a push at a contact, a pin force along a bar); an inertia force,
         // drawn at the mass centre, may stand beside a bar or another arrow.
         let pushes = self.pushes_at(arrow, at, u, length);
-        let at = if arrow.kind == super::scene::Kind::Inertia {
+        let point = at;
+        let mut at = if arrow.kind == super::scene::Kind::Inertia {
             self.beside_bodies(at, u)
         } else if arrow.couple {
             // A moment vector is free: off the arrows it would cross or lie on.
@@ -319,6 +333,19 @@ impl Painter {
         } else {
             at
         };
+        if arrow.kind == super::scene::Kind::Gravity && !arrow.couple {
+            if let Some(moved) = self.weight_aside(at, u, length) {
+                // The leader joins the point to the arrow's end nearest it.
+                let end = if pushes {
+                    p2add(moved, p2scale(u, length))
+                } else {
+                    moved
+                };
+                self.thin_dashed(point, end);
+                drawn.leader = Some((point, end));
+                at = moved;
+            }
+        }
         drawn.tail = at;
         let tip = p2add(at, p2scale(u, length));
         self.lines.push((at, tip));
@@ -364,7 +391,15 @@ impl Painter {
     ) -> usize {
         let (at, u) = (self.at(arrow.at), self.page_direction(arrow, planar));
         let stack = stack_of(drawn_at, at, u);
-        clear_of_tips(at, u, stack, &tips_of(arrows), arrow_length, 7.0)
+        let reach = self.reach;
+        clear_of_tips(
+            at,
+            u,
+            stack,
+            &tips_of(arrows),
+            |k| arrow_length(k) * reach,
+            7.0,
+        )
     }
 
     /// The direction an arrow points on the page (a 2D couple, an arc: none).
@@ -383,12 +418,13 @@ impl Painter {
     /// centre beside it.
     fn caption_marks(&mut self, markers: &[super::scene::Marker], marks: &[Mark]) {
         let mut captions = Vec::new();
-        for (m, mark) in markers.iter().zip(marks) {
+        self.owners = markers.iter().map(|m| m.on.clone()).collect();
+        for (k, (m, mark)) in markers.iter().zip(marks).enumerate() {
             if let Some(caption) = &m.caption {
                 let beside = if m.role == Role::Center {
-                    Beside::Caption
+                    Beside::Caption(k)
                 } else {
-                    Beside::Point
+                    Beside::Point(k)
                 };
                 let toward = -std::f64::consts::FRAC_PI_4;
                 captions.push((mark.at, toward, caption.clone(), Ink::Black, beside));
@@ -403,9 +439,11 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     lay_out_with(scene, view, 1.0)
 }
 
-/// Lays `scene` out for `view`, each label taking `grow` times its room at 13 px.
+/// Lays `scene` out for `view`, each label taking `grow` times its room at 13 px (see
+/// [`Room`]).
 pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
-    let (mut projection, [mut panel_width, height]) = fit(scene, view);
+    let room = Room::of(scene.content, grow);
+    let (mut projection, [mut panel_width, height]) = fit(scene, view, room.margin, room.content);
     let panels = if scene.kinetic.is_some() { 2.0 } else { 1.0 };
     // A caption wider than the system widens the panels, the system centred in them.
     let extra = (text_size(&scene.title)[0] + 40.0 - panels * panel_width).max(0.0) / panels;
@@ -431,11 +469,15 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         lines: Vec::new(),
         straight: Vec::new(),
         grow,
+        reach: room.reach,
+        others: Vec::new(),
+        owners: Vec::new(),
     };
     painter.straight = (scene.arrows.iter())
         .filter(|a| !(a.couple && scene.planar))
         .map(|a| (painter.at(a.at), a.direction))
         .collect();
+    painter.others = painter.other_forces(&scene.arrows);
     for shape in scene
         .shapes
         .iter()
@@ -519,6 +561,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
             lines: legend_lines.len(),
             height: legend,
         },
+        grow,
     }
 }
 

@@ -31,11 +31,11 @@ mod tikz;
 
 pub use fit::CONTENT;
 pub use motion::{Body, Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
-pub use picture::{Item, Picture, Projection, View};
+pub use picture::{DrawnArrow, Item, Picture, Projection, View};
 pub use place::text_size;
 pub use scene::{Arrow, BodyKind, Kind, Label, Marker, Role, Scene, Shape};
 pub use strokes::in_lane;
-pub use tikz::BESIDE_A_TABLE;
+pub use tikz::{Size, ABOVE_A_TABLE, BESIDE_A_TABLE, CONFIGURATION};
 
 /// One picture of a problem.
 #[derive(Clone, Debug)]
@@ -70,11 +70,25 @@ impl Drawing {
     /// labels (which keep their size in points) would take more room than the layout gave
     /// them, it is laid out again with their labels' room grown to what they print at.
     fn tikz_in(&self, room: tikz::Size) -> String {
+        tikz::export(&self.laid_out_in(room), room)
+    }
+
+    /// The picture as a page that sets it in `room` prints it: as laid out where its labels
+    /// keep their room there, else laid out again with their room grown to what they
+    /// print at (its arrows longer and the system smaller, so that it keeps about its
+    /// size; once more where it still prints smaller than that growth allowed for).
+    pub fn laid_out_in(&self, room: tikz::Size) -> std::borrow::Cow<'_, Picture> {
         let grow = tikz::label_growth(&self.picture, room);
         if grow <= 1.02 {
-            return tikz::export(&self.picture, room);
+            return std::borrow::Cow::Borrowed(&self.picture);
         }
-        tikz::export(&layout::lay_out_with(&self.scene, self.view, grow), room)
+        let picture = layout::lay_out_with(&self.scene, self.view, grow);
+        let again = tikz::label_growth(&picture, room);
+        std::borrow::Cow::Owned(if again > 1.02 * grow {
+            layout::lay_out_with(&self.scene, self.view, again)
+        } else {
+            picture
+        })
     }
 
     /// The picture to embed in a page: its ids prefixed by its name, so that a page of

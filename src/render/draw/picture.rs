@@ -305,6 +305,10 @@ pub struct DrawnArrow {
     pub heads: Vec<[P2; 3]>,
     /// Its colour.
     pub ink: Ink,
+    /// A thin dashed leader from the point it acts at to its tail, where the arrow is
+    /// drawn a little aside (a weight moved off a reaction's line): `None` when it starts
+    /// or ends at its point.
+    pub leader: Option<(P2, P2)>,
 }
 
 /// One laid-out picture.
@@ -326,6 +330,9 @@ pub struct Picture {
     pub texts: Vec<Item>,
     /// The legend under the picture, which a handout that states it once leaves out.
     pub legend: Legend,
+    /// How many times its room at 13 px each label was given (more than 1 for a picture
+    /// printed small, whose labels keep their size in points).
+    pub grow: f64,
 }
 
 /// The legend of a picture: its lines are the last of the picture's `texts`, in a strip

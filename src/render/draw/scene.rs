@@ -196,6 +196,9 @@ pub struct Marker {
     pub role: Role,
     /// The caption beside it (`O`, `A*`), if any.
     pub caption: Option<Label>,
+    /// The names of the bodies it belongs to (a joint's two, a mass centre's one): its
+    /// caption stands on their side, out of any other body it lies against.
+    pub on: Vec<String>,
 }
 
 /// How a marked point is drawn.

@@ -496,6 +496,17 @@ fn arrows(out: &mut String, picture: &Picture, prefix: &str) {
                 );
             }
         }
+        if let Some((from, to)) = a.leader {
+            // Drawn aside: a dashed leader from the point it acts at.
+            let _ = writeln!(
+                out,
+                "<line class=\"leader\" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke-width=\"1.2\" stroke-dasharray=\"3 2\"/>",
+                num(from[0]),
+                num(from[1]),
+                num(to[0]),
+                num(to[1])
+            );
+        }
         // The heads, filled; the arrow's outline around them only rounds their corners.
         let mut d = String::new();
         for h in &a.heads {

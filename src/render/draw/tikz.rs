@@ -43,7 +43,9 @@ const SMALL_LABELS: f64 = 7.5 / 13.0;
 /// The room a picture may take on the page, in points.
 #[derive(Clone, Copy, Debug)]
 pub struct Size {
+    /// Its width, in points.
     pub width: f64,
+    /// Its height, in points.
     pub height: f64,
 }
 
@@ -228,6 +230,14 @@ pub fn export(picture: &Picture, room: Size) -> String {
         }
         for h in &a.heads {
             let _ = writeln!(out, "\\path[fill={ink}] {};", path(h, true));
+        }
+        if let Some((from, to)) = a.leader {
+            let _ = writeln!(
+                out,
+                "\\path[draw={ink},line width={}pt,dash pattern=on 1.5pt off 1pt] {};",
+                num((1.2 * unit).max(0.5)),
+                path(&[from, to], false)
+            );
         }
     }
     // The handout heads each picture with its title already, and TikZ's own bounding box

@@ -38,7 +38,7 @@ pub fn point_id(problem: &crate::problem::Problem, point: PointRef) -> String {
 }
 
 impl Setting<'_, '_, '_> {
-    fn problem(&self) -> &crate::problem::Problem {
+    pub(super) fn problem(&self) -> &crate::problem::Problem {
         self.derivation.model.problem
     }
 
@@ -68,11 +68,17 @@ impl Setting<'_, '_, '_> {
             PointRef::Joint(j) => !self.derivation.model.sites[j].reactions.is_empty(),
             _ => true,
         };
+        let on = match point {
+            PointRef::Named(i) => vec![problem.points[i].on],
+            PointRef::MassCenter(b) | PointRef::Origin(b) => vec![b],
+            PointRef::Joint(j) => vec![problem.joints[j].child, problem.joints[j].parent],
+        };
         Marker {
             id: point_id(problem, point),
             at: self.position(point),
             role,
             caption: carries.then(|| Label::from_tex(&caption)),
+            on: self.names(&on),
         }
     }
 
@@ -96,6 +102,7 @@ impl Setting<'_, '_, '_> {
                     at: self.numbers.vector(&site.point.position),
                     role: Role::Joint,
                     caption: Some(Label::from_tex(&latex_name(&site.name))),
+                    on: self.names(&[site.child, site.parent]),
                 });
             }
         }
@@ -162,8 +169,17 @@ impl Setting<'_, '_, '_> {
         if self.body_ids().len() <= 3 {
             frames.extend(self.body_ids());
         }
-        for frame in frames {
-            let name = self.problem().body_name(frame);
+        let model = &self.derivation.model;
+        for body in frames {
+            // A body spinning about its symmetry axis: the frame its equations use, that
+            // does not spin (Resal's), at its origin; none where that is the parent's.
+            let spin =
+                (model.spin_frames.iter()).find(|s| s.body == body && body != BodyId::GROUND);
+            let (frame, name) = match spin {
+                Some(s) if !s.added => continue,
+                Some(s) => (s.frame, model.frames.name(s.frame)),
+                None => (body, self.problem().body_name(body)),
+            };
             let axes = (0..axes_count)
                 .map(|k| {
                     let mut e = [0.0; 3];
@@ -172,11 +188,10 @@ impl Setting<'_, '_, '_> {
                     (n.in_ground(frame, &e), Label::from_tex(&tex))
                 })
                 .collect();
-            let origin = super::triads::beside(n, frame, self.size).unwrap_or_else(|| {
-                n.vector(&self.derivation.model.bodies[frame.0].origin.position)
-            });
+            let origin = super::triads::beside(n, body, self.size)
+                .unwrap_or_else(|| n.vector(&model.bodies[body.0].origin.position));
             shapes.push(Shape::Triad {
-                origin: (frame != BodyId::GROUND).then_some(origin),
+                origin: (body != BodyId::GROUND).then_some(origin),
                 axes,
             });
         }
@@ -245,13 +260,14 @@ impl Setting<'_, '_, '_> {
         self.coordinates(&mut shapes);
         shapes.extend(super::velocities::velocities(self.numbers, self.size));
         self.triads(&mut shapes);
-        let markers = self.markers(&bodies, true);
+        let mut markers = self.markers(&bodies, true);
+        let arrows = self.applied(&mut markers);
         Scene {
             title,
             planar: self.derivation.model.is_planar(),
             shapes,
             markers,
-            arrows: Vec::new(),
+            arrows,
             kinetic: None,
             down: super::bodies::down(self.numbers),
             legend: String::new(),
@@ -361,12 +377,13 @@ impl Setting<'_, '_, '_> {
             at,
             role: Role::Point,
             caption: None,
+            on: self.names(&[action.body]),
         });
         id
     }
 
     /// The arrows of one external action: one per unknown component of a reaction.
-    fn action_arrows(&self, action: &Action, markers: &mut Vec<Marker>) -> Vec<Arrow> {
+    pub(super) fn action_arrows(&self, action: &Action, markers: &mut Vec<Marker>) -> Vec<Arrow> {
         let n = self.numbers;
         let model = &self.derivation.model;
         let problem = self.problem();

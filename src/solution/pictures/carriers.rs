@@ -33,24 +33,28 @@ pub fn carrier(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Sh
                 _ => None,
             })?;
     // Long and deep enough to read as a block under the wheel it carries: two wheel
-    // diameters and more, a third of a wheel deep.
+    // diameters and more, more than half a wheel's radius deep.
     let wheel = if wheel.is_finite() { wheel.abs() } else { 0.0 };
     let up = unit(n.in_ground(body, &n.local(&own_components(normal, body))))?;
     let along = unit(cross(up, [0.0, 0.0, 1.0]))?;
     let origin = n.point_on(body, &[0.0; 3]);
     let face = add(origin, scale(up, n.scalar(offset)));
-    // The body's points along the face, and the middle of them.
+    // The body's points along the face; the block is centred on the mass centre (a cart's
+    // middle is where its weight acts) and reaches past every point.
+    let along_face = |p: super::numbers::P3| dot(add(p, scale(face, -1.0)), along);
     let reach: Vec<f64> = shapes::key_points(n, body)
         .iter()
-        .map(|p| dot(add(n.point_on(body, p), scale(face, -1.0)), along))
+        .map(|p| along_face(n.point_on(body, p)))
         .collect();
-    let lo = reach.iter().copied().fold(0.0, f64::min);
-    let hi = reach.iter().copied().fold(0.0, f64::max);
-    let middle = 0.5 * (lo + hi);
-    let half = (0.5 * (hi - lo) + 0.05 * size)
+    let middle = along_face(n.vector(&n.model.bodies[body.0].center.position));
+    let half = (reach.iter())
+        .map(|r| (r - middle).abs())
+        .fold(0.0, f64::max);
+    // A wheel's width past its contact, and deep enough to name its points inside.
+    let half = (half + (0.05 * size).max(wheel))
         .max(0.3 * size)
         .max(2.2 * wheel);
-    let depth = (0.12 * size).max(0.35 * wheel);
+    let depth = (0.12 * size).max(0.6 * wheel);
     let at = |s: f64, d: f64| add(face, add(scale(along, middle + s * half), scale(up, -d)));
     let corners = vec![at(-1.0, 0.0), at(1.0, 0.0), at(1.0, depth), at(-1.0, depth)];
     Some((BodyKind::Block, vec![Shape::Polygon(corners)]))

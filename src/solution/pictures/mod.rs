@@ -2,12 +2,14 @@
 //! each free body of the plan with its kinetic diagram, built in `N`'s coordinates from the
 //! model at a state ([`build`]) and laid out by [`crate::render::draw`], which writes them.
 
+mod applied;
 pub(super) mod bodies;
 pub(super) mod build;
 mod carriers;
 pub(super) mod gauges;
 pub(super) mod lanes;
 pub(super) mod motion;
+mod names;
 pub(super) mod numbers;
 mod rollers;
 pub(super) mod shapes;
@@ -28,16 +30,11 @@ use numbers::{norm, sub, Numbers};
 pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
     let problem = derivation.model.problem;
     let state = problem.initial_state();
-    draw(
-        derivation,
-        state.t,
-        &state.q,
-        &state.rates,
-        None,
-        View::Isometric,
-    )
-    .into_iter()
-    .next()
+    let at = (state.t, state.q.as_slice(), state.rates.as_slice());
+    let names = crate::solution::shown_names::shown_names(&derivation.model);
+    drawings(derivation, at, None, View::Isometric, (true, &names))
+        .into_iter()
+        .next()
 }
 
 /// The free bodies of the plan, in the order its rows first use them, then one for each
@@ -135,23 +132,41 @@ pub fn draw(
     accelerations: Option<&[f64]>,
     view: View,
 ) -> Vec<Drawing> {
-    drawings(derivation, t, q, rates, accelerations, view, true)
+    drawings(derivation, (t, q, rates), accelerations, view, (true, &[]))
+}
+
+/// The pictures of [`draw`] as a handout prints them: word-named bodies and points by
+/// their letters (see `names`).
+pub fn draw_in_handout(
+    derivation: &Derivation,
+    (q, rates): (&[f64], &[f64]),
+    accelerations: Option<&[f64]>,
+) -> Vec<Drawing> {
+    let names = crate::solution::shown_names::shown_names(&derivation.model);
+    let at = (0.0, q, rates);
+    drawings(
+        derivation,
+        at,
+        accelerations,
+        View::Isometric,
+        (true, &names),
+    )
 }
 
 /// The pictures of [`draw`] for a system at rest at `q`: the free bodies without kinetic
 /// diagrams (there are no inertia forces to draw).
 pub fn draw_at_rest(derivation: &Derivation, q: &[f64], rates: &[f64], view: View) -> Vec<Drawing> {
-    drawings(derivation, 0.0, q, rates, None, view, false)
+    drawings(derivation, (0.0, q, rates), None, view, (false, &[]))
 }
 
+/// The pictures at time, coordinates and rates `(t, q, rates)`; `kinetic` with the
+/// kinetic diagrams; every label with `names` replaced (see `names`).
 fn drawings(
     derivation: &Derivation,
-    t: f64,
-    q: &[f64],
-    rates: &[f64],
+    (t, q, rates): (f64, &[f64], &[f64]),
     accelerations: Option<&[f64]>,
     view: View,
-    kinetic: bool,
+    (kinetic, names): (bool, &[(String, String)]),
 ) -> Vec<Drawing> {
     let model = &derivation.model;
     let problem = model.problem;
@@ -179,7 +194,8 @@ fn drawings(
     if t != 0.0 {
         title.push_str(&format!(", t = {}", fixed(t)));
     }
-    let scene = setting.configuration(title.clone());
+    let mut scene = setting.configuration(title.clone());
+    names::rename(&mut scene, names);
     let mut out = vec![Drawing {
         name: "configuration".into(),
         title,
@@ -197,6 +213,7 @@ fn drawings(
         if !kinetic {
             scene.kinetic = None;
         }
+        names::rename(&mut scene, names);
         out.push(Drawing {
             name: format!("fbd-{}", name.replace(' ', "")),
             title,

@@ -51,7 +51,7 @@ fn middle(a: P2, b: P2) -> Option<(P2, P2)> {
 
 impl Painter {
     /// How many arrows drawn so far the arrow from `tail` to `tip` crosses or lies along.
-    fn crossings(&self, tail: P2, tip: P2) -> usize {
+    pub(super) fn crossings(&self, tail: P2, tip: P2) -> usize {
         let Some((a, b)) = middle(tail, tip) else {
             return 0;
         };

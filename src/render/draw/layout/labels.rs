@@ -12,13 +12,17 @@ use super::Painter;
 pub(super) enum Beside {
     /// The tip of the picture's arrow of this index.
     Arrow(usize),
-    /// A point on a body's edge (a pin, a contact): outside the bodies where there is room.
-    Point,
+    /// A point on a body's edge (a pin, a contact; the index of its marker): outside the
+    /// bodies where there is room, else on its own body's side, not inside another's.
+    Point(usize),
     /// Its anchor, wherever is free.
     Spot,
-    /// A point's caption (a mass centre's, a pin's): close beside it, even over a line,
+    /// A point's caption (a mass centre's; the index of its marker): close beside it,
+    /// out of the bodies it does not belong to where there is room, even over a line,
     /// never far from what it names.
-    Caption,
+    Caption(usize),
+    /// A unit vector's name: close by its arrow's tip, never far from it.
+    Axis,
     /// A couple's label: close by its curl where there is room (within 36 px), else the
     /// nearest free spot.
     Near,
@@ -46,13 +50,14 @@ impl Painter {
                 Beside::Arrow(k) => arrows
                     .get_mut(k)
                     .and_then(|a| self.push_apart(a, toward, size, &tips)),
-                Beside::Point => self.outside_bodies(anchor, toward, size),
+                Beside::Point(k) => self.outside_bodies(anchor, toward, size, k),
+                Beside::Caption(k) => self.off_other_bodies(anchor, toward, size, k),
                 Beside::Near => (self.obstacles)
                     .free_near(anchor, toward, size, &NEAR_A_CURL)
                     .map(|b| self.obstacles.take(b)),
-                Beside::Spot | Beside::Caption => None,
+                Beside::Spot | Beside::Axis => None,
             };
-            let close = matches!(beside, Beside::Point | Beside::Caption);
+            let close = matches!(beside, Beside::Point(_) | Beside::Caption(_) | Beside::Axis);
             let at = match pushed {
                 Some(at) => at,
                 None if close => (self.obstacles).place_close(anchor, toward, size, CAPTION_GAPS),
@@ -83,14 +88,16 @@ impl Painter {
             return Some(self.obstacles.take(free));
         }
         let u = p2unit([arrow.head[0] - arrow.tail[0], arrow.head[1] - arrow.tail[1]])?;
-        for step in [14.0, 28.0, 42.0] {
-            let tip = p2add(arrow.head, p2scale(u, step));
+        for step in [14.0, 28.0, 42.0, 56.0] {
+            let tip = p2add(arrow.head, p2scale(u, step * self.reach));
             if self.obstacles.crosses_label(arrow.head, tip) {
                 return None;
             }
+            // Nor across another arrow (a weight drawn aside next to a pin's force).
             if tips
                 .iter()
                 .any(|t| p2norm([t[0] - tip[0], t[1] - tip[1]]) < APART)
+                || self.crossings(arrow.tail, tip) > 0
             {
                 continue;
             }
@@ -117,14 +124,38 @@ impl Painter {
 
     /// The first free spot for a label of `size` close around a point on a body's edge
     /// whose middle lies outside every body (a contact's name below the wheel, not inside
-    /// it); `None` when none is free there.
-    fn outside_bodies(&mut self, anchor: P2, toward: f64, size: P2) -> Option<P2> {
-        let free = Obstacles::spots(anchor, toward, size)
-            .take(NEAR_A_POINT)
+    /// it), else outside every body but those the point (marker `k`) belongs to (a rack's
+    /// joint under the pinion: on the rack's side); `None` when none is free there.
+    fn outside_bodies(&mut self, anchor: P2, toward: f64, size: P2, k: usize) -> Option<P2> {
+        let spots = || Obstacles::spots(anchor, toward, size).take(NEAR_A_POINT);
+        let free = spots()
             .find(|b| {
                 self.obstacles.clash(b) == 0
                     && !(self.items.iter()).any(|item| super::beside::inside(item, b.center))
-            })?;
+            })
+            .or_else(|| spots().find(|b| self.free_of_others(b, k)))?;
         Some(self.obstacles.take(free))
+    }
+
+    /// The first free spot for a mass centre's caption of `size` close around it (within
+    /// [`CAPTION_GAPS`] of it) whose middle lies in no body but the point's own (marker
+    /// `k`); `None` when none is free there.
+    fn off_other_bodies(&mut self, anchor: P2, toward: f64, size: P2, k: usize) -> Option<P2> {
+        let free = Obstacles::spots(anchor, toward, size)
+            .take(16 * CAPTION_GAPS)
+            .find(|b| self.free_of_others(b, k))?;
+        Some(self.obstacles.take(free))
+    }
+
+    /// Whether a label at `b` meets nothing and its middle lies in no body that marker `k`
+    /// does not belong to.
+    fn free_of_others(&self, b: &super::super::place::Box2, k: usize) -> bool {
+        let own = self.owners.get(k).map(Vec::as_slice).unwrap_or_default();
+        let foreign = |id: &str| !own.iter().any(|name| id.ends_with(&format!("body-{name}")));
+        self.obstacles.clash(b) == 0
+            && !(self.items.iter()).any(|item| match item {
+                Item::Body { id, .. } => foreign(id) && super::beside::inside(item, b.center),
+                _ => false,
+            })
     }
 }

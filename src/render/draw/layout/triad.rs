@@ -21,10 +21,18 @@ impl Painter {
     pub(super) fn triad(&mut self, origin: Option<P3>, axes: &[(P3, Label)]) {
         let wanted = match origin {
             Some(p) => self.at(p),
-            None => [
-                self.shift[0] + 22.0,
-                self.obstacles.bounds.map_or(300.0, |b| b.1[1]) - 30.0,
-            ],
+            // In 3D, room left and below for the names at the tips (n̂_x's, down left).
+            None => {
+                let room = if axes.len() > 2 {
+                    [46.0, 40.0]
+                } else {
+                    [22.0, 30.0]
+                };
+                [
+                    self.shift[0] + room[0],
+                    self.obstacles.bounds.map_or(300.0, |b| b.1[1]) - room[1],
+                ]
+            }
         };
         let arrows: Vec<(P2, &Label)> = axes
             .iter()
@@ -42,7 +50,13 @@ impl Painter {
             let u = p2scale(d, 1.0 / p2norm(d));
             self.stroke(vec![o, tip], 0.9, Ink::Grey, None, false);
             self.stroke(head(tip, u).to_vec(), 0.6, Ink::Grey, Some(Ink::Grey), true);
-            self.label(tip, u[1].atan2(u[0]), label, Ink::Grey);
+            self.pending.push((
+                tip,
+                u[1].atan2(u[0]),
+                label.clone(),
+                Ink::Grey,
+                super::labels::Beside::Axis,
+            ));
         }
         let items = std::mem::replace(&mut self.items, outside);
         self.items.push(Item::Group {
