@@ -59,6 +59,7 @@ mod named_identity;
 mod normal_sense;
 mod on_constraint;
 mod pictures;
+mod plot_titles;
 mod question_answers;
 mod question_steps;
 mod reaction_frames;
