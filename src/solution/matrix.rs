@@ -175,6 +175,11 @@ pub fn matrix(
         &names,
         &listed,
     );
+    if !by_entries && (table_by_name.is_some() || table_with_b_by_name.is_some()) {
+        // Step 5 writes every row out, collected by its unknowns: a table of names whose
+        // entries are listed below it would only write those rows a second time.
+        return MatrixForm::default();
+    }
     if let Some(table) = table_by_name {
         let entries = (entries, unknowns_by_number);
         return by_name_form(table, &a_names, &a_tex, &x, &names, entries);

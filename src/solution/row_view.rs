@@ -204,9 +204,9 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         let first =
             index.is_some_and(|i| !(0..i).any(|k| super::kane::sign_changed(derivation, k)));
         simplified_note = if first {
-            "Their sum, simplified, and its signs changed so that the mass matrix is positive:"
+            "Adding them, with every sign changed:"
         } else {
-            "Their sum, simplified, its signs changed likewise:"
+            "Adding them, every sign changed likewise:"
         }
         .into();
     }
