@@ -184,9 +184,6 @@ pub fn matrix(
         let entries = (entries, unknowns_by_number);
         return by_name_form(table, &a_names, &a_tex, &x, &names, entries);
     }
-    if let Some(table) = table_with_b_by_name {
-        return b_by_name_form(table, entries);
-    }
     let pattern = || pattern_tables(&numbers, &a, &b);
     listed_form(entries, (by_entries, &listed), a.len(), &x, pattern)
 }
@@ -417,23 +414,6 @@ fn by_name_form(
         } else {
             Vec::new()
         },
-        ..MatrixForm::default()
-    }
-}
-
-/// The whole table with `b` by name, its entries below it.
-fn b_by_name_form(table: WholeMatrix, entries: Vec<MatrixEntry>) -> MatrixForm {
-    let b_entries = entries
-        .into_iter()
-        .filter(|e| e.column == "b")
-        .map(|e| MatrixEntry {
-            row_label_tex: Math::from(String::new()),
-            ..e
-        })
-        .collect();
-    MatrixForm {
-        whole: Some(table),
-        entries: b_entries,
         ..MatrixForm::default()
     }
 }
