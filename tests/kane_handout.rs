@@ -228,8 +228,8 @@ fn the_auxiliary_speeds_show_their_augmented_velocities_and_the_order_of_the_sol
         "As in row 3, along ${n_y}$: the partial velocities of $u_{{4}}$ are $\\mathbf{{v}}^{{A^*}}_{{4}} = \\mathbf{{v}}^{{B^*}}_{{4}} = {n_y}$"
     )));
     let plan = section(&text, "## Step 3", "## Step 4");
-    assert!(plan.contains("rows 1 and 2 hold only the second derivatives"));
-    assert!(plan.contains("each of rows 3 and 4 gives its one reaction"));
+    assert!(plan.contains("Rows 1 and 2 contain no reaction and give the second derivatives"));
+    assert!(plan.contains("each of rows 3 and 4 then gives its one reaction"));
 }
 
 /// A bob on a light rod is a two-force member: every force but the pin's acts at the bob,
