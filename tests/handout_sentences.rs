@@ -321,11 +321,15 @@ fn conditional_sentences_of_step_5_are_printed_exactly_where_true() {
         );
         assert!(!ball.contains(after_it), "bowling-ball ({method})");
         assert!(!ball.contains(dependent), "bowling-ball ({method})");
+        // Kane's handout says its dependent speeds in its own words.
         let rack = explain(
             "rack-and-pinion",
             &["--method", method, "--format", "markdown"],
         );
-        assert!(rack.contains(dependent), "rack-and-pinion ({method})");
+        assert!(
+            method == "kane" || rack.contains(dependent),
+            "rack-and-pinion ({method})"
+        );
     }
     let ball = explain(
         "bowling-ball",
@@ -391,32 +395,29 @@ fn a_constant_energy_is_said_by_its_value_and_a_bound_in_joules() {
 fn step_6s_plot_titles_say_what_is_plotted() {
     let top = explain(
         "heavy-symmetric-top",
-        &["--method", "motion-law", "--format", "markdown"],
+        &["--method", "motion-law", "--format", "latex"],
     );
-    assert!(top.contains("![Nutation angle against time]"));
-    let coin = explain(
-        "rolling-coin",
-        &["--method", "kane", "--format", "markdown"],
-    );
-    assert!(coin.contains("![Lean angle against time]"));
+    assert!(top.contains("Nutation angle against time"));
+    let coin = explain("rolling-coin", &["--method", "kane", "--format", "latex"]);
+    assert!(coin.contains("Lean angle against time"));
     let disc = explain(
         "disc-in-cylinder",
-        &["--method", "motion-law", "--format", "markdown"],
+        &["--method", "motion-law", "--format", "latex"],
     );
     assert!(
-        disc.contains("![Energy against time (T at most "),
+        disc.contains("Energy against time (T at most "),
         "no range of T"
     );
     let pendulum = explain(
         "double-pendulum-rods",
-        &["--method", "motion-law", "--format", "markdown"],
+        &["--method", "motion-law", "--format", "latex"],
     );
-    assert!(pendulum.contains("![Energy against time]"));
+    assert!(pendulum.contains("Energy against time"));
     let gear = explain(
         "gear-pair-torque",
-        &["--method", "motion-law", "--format", "markdown"],
+        &["--method", "motion-law", "--format", "latex"],
     );
-    assert!(gear.contains("![Energy against time (K is the kinetic energy)]"));
+    assert!(gear.contains("Energy against time (K is the kinetic energy)"));
 }
 
 /// Up to four bodies the Motion Law's rows write each body's inertia terms out, as a

@@ -92,6 +92,8 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
             continue;
         };
         let unit = crate::numeric::answer_unit(problem, &problem.questions[k], &start.0);
+        // Said in text, where `^2` would print as it is typed.
+        let unit = unit.replace("^2", "²").replace("^3", "³");
         let (late, start) = (late.1, start.1);
         let measured = largest_change(worked, start, &unit).filter(|_| energy_checked);
         // The datum of V, beside the energy at the start.
