@@ -38,6 +38,12 @@ fn no_matrix_takes_the_name_of_a_body() {
             }
         }
         let markdown = handout(method, "markdown");
+        // Where step 5 writes every row out the matrix form is left out (it would repeat
+        // them); where it is printed, it is S x = f.
+        if !markdown.contains("In matrix form") {
+            assert!(method == "motion-law" || method == "kane", "{method}");
+            continue;
+        }
         assert!(
             markdown.contains("$\\mathbf{S}\\,\\mathbf{x} = \\mathbf{f}$"),
             "{method}"

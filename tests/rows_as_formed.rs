@@ -67,18 +67,38 @@ fn a_spatial_inertia_torque_keeps_the_gyroscopic_term() {
 }
 
 #[test]
-fn a_group_names_its_inertia_forces_by_a_sum_over_its_bodies() {
+fn a_group_of_many_names_its_inertia_forces_by_a_sum_over_its_bodies() {
     let markdown = explain("validation/ten-link-chain", "motion-law", "markdown");
-    // The Motion Law's free body link7 + … + link10 about P7: the moments of the four
-    // bodies' inertia forces, each r × m a* with its a* from step 4.
-    let named = "- \\sum_{k \\in \\{";
-    let moment = "( \\mathbf{r}^{P_{7} k^*} \\times m_{k}\\, {}^{N}\\mathbf{a}^{k^*} ) \\cdot \\hat{\\mathbf{n}}_{z}";
+    // The Motion Law's free body link4 + … + link10 about P4, seven bodies: the moments of
+    // their inertia forces as a sum over the named set, each r × m a* from step 4.
+    let named = "- \\sum_{k \\in \\{\\mathrm{link}_{4}, \\ldots, \\mathrm{link}_{10}\\}} ";
+    let moment = "( \\mathbf{r}^{P_{4} k^*} \\times m_{k}\\, {}^{N}\\mathbf{a}^{k^*} ) \\cdot \\hat{\\mathbf{n}}_{z}";
     assert!(
         markdown
             .lines()
-            .any(|l| l.contains(named) && l.contains(moment)),
+            .any(|l| l.contains(&format!("{named}{moment}"))),
         "no row names the moments of its bodies' inertia forces"
     );
+}
+
+#[test]
+fn a_group_of_four_writes_its_inertia_forces_body_by_body() {
+    let markdown = explain("validation/ten-link-chain", "motion-law", "markdown");
+    // link7 + … + link10 about P7, four bodies of mass m: each term written out, as a
+    // textbook writes a few, with no sum over a set.
+    let terms: Vec<String> = (7..=10)
+        .map(|k| {
+            format!(
+                "\\mathbf{{r}}^{{P_{{7}} \\mathrm{{link}}_{{{k}}}^*}} \\times m\\, {{}}^{{N}}\\mathbf{{a}}^{{\\mathrm{{link}}_{{{k}}}^*}}"
+            )
+        })
+        .collect();
+    let written = format!(
+        "- ( {} ) \\cdot \\hat{{\\mathbf{{n}}}}_{{z}}",
+        terms.join(" + ")
+    );
+    assert!(markdown.contains(&written), "no row writes {written}");
+    assert!(!markdown.contains("\\sum_{k \\in \\{\\mathrm{link}_{7}"));
 }
 
 #[test]

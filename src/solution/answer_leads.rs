@@ -24,7 +24,7 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
         };
         let item = (before[..=k].iter().rev()).find(|v| !v.label.is_empty());
         if let Some(item) = item {
-            view.at_note = format!("the same state as in answer {}", item.label);
+            view.at_note = format!("at the state of answer {}", item.label);
             view.at_tex = Math::from(String::new());
         }
     }

@@ -1,4 +1,4 @@
-//! Step 6 in a course's words: how the equations of motion are integrated, and for each
+//! Step 6 in a course's words: that the equations of motion are integrated, and for each
 //! confirmation check one sentence of physics saying what confirms the motion (energy
 //! constant where only conservative forces do work, the constraints held, the other methods'
 //! second derivatives the same). The checks are computed as before; only their report is
@@ -9,56 +9,31 @@ use crate::numeric::{Check, CheckKind};
 use crate::problem::{Problem, SimulateSettings};
 use crate::render::literal_with_numbers;
 use crate::symbolic::fixed;
-use crate::symbolic::latex;
 
-/// How step 6 integrates the equations: the first-order system's state, where it starts,
-/// over how long and how often the plots sample it, as markup (in a course's words: no
-/// integration method or tolerance, which a student need not read).
+/// How step 6 integrates the equations, in one sentence a textbook prints: from where and
+/// for how long (no integration method, step or tolerance, which a student need not read).
 pub fn integration(problem: &Problem, settings: &SimulateSettings) -> String {
     let coordinates = &problem.coordinates;
-    // A prescribed coordinate follows its motion; a dependent one, or a dependent rate,
-    // follows from the constraints: neither is integrated.
-    let free = |i: &usize| coordinates[*i].motion.is_none() && !coordinates[*i].dependent;
-    let names = |order: u8, rate: bool| -> Vec<String> {
-        (0..coordinates.len())
-            .filter(free)
-            .filter(|&i| !(rate && coordinates[i].dependent_rate))
-            .map(|i| latex(&problem.coordinate_expr(i, order)))
-            .collect()
-    };
-    let state = [names(0, false), names(1, true)].concat().join(", ");
-    let follows = (coordinates.iter()).any(|c| c.dependent || c.dependent_rate);
-    let dependent = match (follows, coordinates.iter().any(|c| c.motion.is_some())) {
-        (true, true) => {
-            " The driven coordinates follow their prescribed motion, and the \
-                         dependent coordinates and rates are solved from the constraints at \
-                         every step."
-        }
-        (true, false) => {
-            " The dependent coordinates and rates are solved from the \
-                          constraints at every step."
-        }
-        (false, true) => " The driven coordinates follow their prescribed motion.",
-        (false, false) => "",
-    };
-    if state.is_empty() {
+    let driven = coordinates.iter().any(|c| c.motion.is_some());
+    let integrated = (coordinates.iter()).any(|c| c.motion.is_none() && !c.dependent);
+    if !integrated {
         return format!(
-            "The drive prescribes the motion: at every instant the coordinates and rates \
-             follow from it and the constraints, over {} s; the plots show them every {} s.",
+            "The drive prescribes the whole motion; the plots below show it over {} s.",
             num(settings.duration),
-            num(settings.output_step),
         );
     }
     let start = if problem.impact.is_some() {
         "the state just after the impact"
     } else {
-        "the initial state of step 1"
+        "the initial state"
+    };
+    let drive = match driven {
+        true => ", the driven coordinates following their prescribed motion,",
+        false => "",
     };
     format!(
-        "The equations of step 5, as first-order equations in $({state})$, are integrated \
-         in time from {start} over {} s.{dependent} The plots show the state every {} s.",
+        "Integrating these equations from {start} for {} s{drive} gives the plots below.",
         num(settings.duration),
-        num(settings.output_step),
     )
 }
 

@@ -1,7 +1,7 @@
 //! "Check that the total mechanical energy stays constant", answered yes or no: where an
 //! item of the statement asks the same quantity at the start and after a simulated time,
-//! the second answer says whether it stayed constant, to how many parts, over the whole
-//! motion where the simulation's energy check measured it, and points to the plot.
+//! the second answer says whether it stayed constant, the value it stays at and by how much
+//! at most it changes over the whole motion, in its own unit, and points to the plot.
 
 use crate::numeric::Answer;
 use crate::numeric::CheckKind;
@@ -9,28 +9,6 @@ use crate::problem::{Problem, QuestionKind};
 use crate::render::AnswerView;
 use crate::symbolic::fixed;
 use crate::Worked;
-
-/// `6 parts in 10¹⁰`: a small relative size to one significant digit.
-pub fn parts_tex(relative: f64) -> String {
-    if relative <= 0.0 || !relative.is_finite() {
-        return "round-off".into();
-    }
-    let mut exponent = (-relative.log10()).ceil() as i32;
-    let mut parts = (relative * 10f64.powi(exponent)).round() as i64;
-    if parts >= 10 {
-        parts /= 10;
-        exponent -= 1;
-    }
-    let noun = if parts == 1 { "part" } else { "parts" };
-    let digits: String = (exponent.to_string().chars())
-        .map(|c| match c {
-            '-' => '⁻',
-            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
-                [d.to_digit(10).unwrap_or(0) as usize],
-        })
-        .collect();
-    format!("{parts} {noun} in 10{digits}")
-}
 
 /// The index of the question asking the same value as question `i` in the same item at
 /// the start, where `i` asks it after a simulated time.
@@ -55,15 +33,55 @@ fn pair(problem: &Problem, labels: &[String], i: usize) -> Option<usize> {
     })
 }
 
-/// Adds the yes or no to the later answer of each such pair.
+/// The largest change of the total energy from its start over the simulated motion, in
+/// joules, where `start` (in `unit`) is that energy; `None` for another quantity or
+/// without a simulation.
+fn largest_change(worked: &Worked, start: f64, unit: &str) -> Option<f64> {
+    let Some(Ok((trajectory, _))) = &worked.simulation else {
+        return None;
+    };
+    let total = trajectory.series("total")?;
+    let first = total.first()?.1;
+    let energy = first + trajectory.potential_at_start;
+    if unit != "J" || (energy - start).abs() > 1e-6 * start.abs().max(1.0) {
+        return None;
+    }
+    Some(total.iter().fold(0.0f64, |m, p| m.max((p.1 - first).abs())))
+}
+
+/// `10⁻⁹`: the smallest power of ten above `x`, as text.
+fn power_above(x: f64) -> String {
+    let exponent = x.log10().floor() as i32 + 1;
+    let digits: String = (exponent.to_string().chars())
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                [d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect();
+    format!("10{digits}")
+}
+
+/// `less than 10⁻⁹ J`: an absolute bound on a change, in the quantity's unit.
+fn bound(change: f64, unit: &str) -> String {
+    let unit = match unit {
+        "" => String::new(),
+        u => format!(" {u}"),
+    };
+    match change > 0.0 && change.is_finite() {
+        true => format!("less than {}{unit}", power_above(change)),
+        false => "nothing in the digits computed".to_string(),
+    }
+}
+
+/// Adds the yes or no to the later answer of each such pair: the value it stays at, and by
+/// how much at most it changes, in its own unit.
 pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let problem = worked.derivation.model.problem;
     let labels = super::answer_numbers::labels(problem);
-    let measured = match &worked.simulation {
-        Some(Ok((_, checks))) => (checks.iter())
-            .find(|c| c.kind == CheckKind::EnergyConservation)
-            .map(|c| c.value),
-        _ => None,
+    let energy_checked = match &worked.simulation {
+        Some(Ok((_, checks))) => (checks.iter()).any(|c| c.kind == CheckKind::EnergyConservation),
+        _ => false,
     };
     for i in 0..problem.questions.len() {
         let Some(k) = pair(problem, &labels, i) else {
@@ -73,7 +91,11 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         else {
             continue;
         };
+        let unit = crate::numeric::answer_unit(problem, &problem.questions[k], &start.0);
+        // Said in text, where `^2` would print as it is typed.
+        let unit = unit.replace("^2", "²").replace("^3", "³");
         let (late, start) = (late.1, start.1);
+        let measured = largest_change(worked, start, &unit).filter(|_| energy_checked);
         // The datum of V, beside the energy at the start.
         if let Some(datum) = super::energy_datum::sentence(worked, start) {
             views[k].steps.push(crate::render::AnswerStep {
@@ -81,26 +103,37 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                 math: String::new().into(),
             });
         }
-        let relative = (late - start).abs() / start.abs().max(1e-12);
+        let change = (late - start).abs();
+        let relative = change / start.abs().max(1e-12);
         let time = fixed(problem.questions[i].at.time.unwrap_or(0.0));
-        let constant = relative <= 1e-6;
-        let mut note = match constant {
-            true => format!(
-                "Yes, it stays constant: at the start and after {time} s it is the same to {}",
-                parts_tex(relative)
+        let symbol = (views[k].values_tex.first())
+            .and_then(|v| {
+                v.as_str()
+                    .split_once(" = ")
+                    .map(|(name, _)| name.to_string())
+            })
+            .map(|name| crate::render::unicode_of(&name))
+            .unwrap_or_else(|| "it".to_string());
+        let value = fixed(start).replace('-', "−");
+        let spaced = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        let note = match (relative <= 1e-6, measured) {
+            (true, Some(m)) => format!(
+                "Yes: {symbol} stays {value}{spaced} (over the whole motion it changes by {}, the energy plot of step 6).",
+                bound(m.max(change), &unit)
             ),
-            false => format!(
-                "No: after {time} s it differs from its value at the start by {}",
-                parts_tex(relative)
+            (true, None) => format!(
+                "Yes: {symbol} stays {value}{spaced} (after {time} s it has changed by {}).",
+                bound(change, &unit)
+            ),
+            (false, _) => format!(
+                "No: after {time} s {symbol} has changed by {}{spaced} from its value at the start.",
+                fixed(late - start).replace('-', "−")
             ),
         };
-        if let Some(m) = measured.filter(|_| constant) {
-            note.push_str(&format!(
-                ", and over the whole motion the total energy changes by at most {} of its scale (the plot of the energy in step 6)",
-                parts_tex(m)
-            ));
-        }
-        note.push('.');
         let j = i.max(k);
         views[j].note = note;
     }

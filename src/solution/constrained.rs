@@ -218,6 +218,12 @@ pub fn dependent_speeds(
     if dependent.is_empty() || reducer.rates.is_empty() {
         return None;
     }
+    // Rates the constraints hold at zero (a contact's ẏ = 0) depend on no independent rate:
+    // the constraint rows say so already, and "the dependent rates from the independent
+    // ones" would not be true of them.
+    if c.iter().all(|x| *x == 0.0) && !problem.moves_with_time() {
+        return None;
+    }
     let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
     let column = |list: &[usize]| {
         format!(

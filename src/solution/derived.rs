@@ -54,7 +54,6 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         super::loops::refer_to_repeated_loops(&mut solution.equations);
         super::written_out::drop_repeated(&mut solution.equations);
         super::long::refer_to_the_first_auxiliary_row(&mut solution.equations);
-        super::long::say_the_acceleration_level_once(&mut solution.equations);
         // The matrix is listed entry by entry whenever an equation refers to its entries.
         let by_name: Vec<bool> = solution.equations.iter().map(|e| e.by_name).collect();
         let use_shown = uses_shown(derivation);
@@ -81,6 +80,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
             super::constrained::dependent_speeds(derivation, &worked.q0, &worked.rates0);
     });
     super::sliding_rows::replace_rows(solution, derivation, &sliding);
+    // After the sliding law has taken its no-slip row's place: "the constraint rows after
+    // it" only where one is.
+    super::long::say_the_acceleration_level_once(&mut solution.equations);
     // Only those the solution prints: a text formed and then given up (an entry given by
     // value, a row too long to write whole) records its abbreviations too.
     let printed = serde_json::to_string(&*solution).unwrap_or_default();

@@ -199,21 +199,22 @@ pub fn solve_order_note(derivation: &Derivation) -> Option<String> {
         _ => format!("rows {from}–{to}"),
     };
     let first = if speeds == 1 {
-        "row 1 holds only the second derivative and is solved for it first".to_string()
+        "Row 1 contains no reaction and gives the second derivative".to_string()
     } else {
         format!(
-            "{} hold only the second derivatives and are solved for them first",
-            rows(1, speeds)
+            "R{} contain no reaction and give the second derivatives",
+            &rows(1, speeds)[1..]
         )
     };
     let then = if n == speeds + 1 {
-        format!("row {n} gives the reaction")
+        format!("row {n} then gives the reaction")
     } else {
-        format!("each of {} gives its one reaction", rows(speeds + 1, n))
+        format!(
+            "each of {} then gives its one reaction",
+            rows(speeds + 1, n)
+        )
     };
-    Some(format!(
-        "The system is solved in two stages: {first}; then {then}, with the second derivatives known."
-    ))
+    Some(format!("{first}; {then}."))
 }
 
 /// Which of Kane's rows `row` is, 1-based (the speeds first, then the auxiliary speeds of

@@ -64,14 +64,29 @@ pub fn by_rates(e: &Expr) -> Vec<(Expr, Expr)> {
         .collect()
 }
 
-/// The inertia terms of a row written by the names of steps 2 and 4: the sum over the
-/// bodies of the free body (empty for one body), each body's inertia force `m a*` (its
-/// moment about the row's point in a moment row) and its inertia torque. None for rows
-/// that are not sums of forces or moments.
+/// The inertia terms of a row written by the names of steps 2 and 4: each body's inertia
+/// force `m a*` (its moment about the row's point in a moment row) and its inertia torque,
+/// written out body by body up to [`MOST_BODIES_WRITTEN`] bodies, as a sum over the named
+/// set `k ∈ {…}` past that (`sum`, empty otherwise). None for rows that are not sums of
+/// forces or moments.
 struct NamedInertia {
     sum: String,
     force: String,
     torque: Option<String>,
+}
+
+/// The most bodies of a free body whose inertia terms a row writes one by one; past it,
+/// as a sum over the named set.
+const MOST_BODIES_WRITTEN: usize = 4;
+
+/// Body `body`'s mass as a factor: `m_{1}`, or `(m_1 + m_2)` for a sum.
+fn mass_factor(derivation: &Derivation, body: crate::problem::BodyId) -> String {
+    let m = &derivation.model.bodies[body.0].mass;
+    if m.terms().len() > 1 {
+        format!("\\left({}\\right)", latex(m))
+    } else {
+        latex(m)
+    }
 }
 
 fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia> {
@@ -84,50 +99,59 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
         .iter()
         .map(|b| latex_name(problem.body_name(*b)))
         .collect();
-    let many = bodies.len() > 1;
-    // One body: its own letter; several: the sum over `k` in the free body.
-    let (sum, k) = if many {
+    let many = bodies.len() > MOST_BODIES_WRITTEN;
+    // Up to four bodies each by its own letter and mass; more: the sum over `k` in the free
+    // body.
+    let (sum, each): (String, Vec<(String, String)>) = if many {
         (
             format!(
                 "\\sum_{{k \\in \\{{{}\\}}}} ",
                 list_by_runs(&bodies, ", ", "\\ldots")
             ),
-            "k".to_string(),
+            vec![("k".to_string(), "m_{k}".to_string())],
         )
     } else {
-        (String::new(), bodies.first().cloned().unwrap_or_default())
+        let masses = row.free_body.iter().map(|&b| mass_factor(derivation, b));
+        (String::new(), bodies.iter().cloned().zip(masses).collect())
     };
-    let mass = if many {
-        "m_{k}".to_string()
-    } else {
-        let m = &derivation.model.bodies[row.free_body.first()?.0].mass;
-        if m.terms().len() > 1 {
-            format!("\\left({}\\right)", latex(m))
-        } else {
-            latex(m)
-        }
-    };
-    let inertia_force = format!("{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{k}^*}}");
+    let inertia_force =
+        |(k, mass): &(String, String)| format!("{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{k}^*}}");
     match &row.sum {
         Sum::Force => Some(NamedInertia {
             sum,
-            force: inertia_force,
+            force: each
+                .iter()
+                .map(inertia_force)
+                .collect::<Vec<_>>()
+                .join(" + "),
             torque: None,
         }),
         Sum::Moment { point, position } => {
             let point = &super::moment_point::shown_point(&derivation.model, point, position);
             // About a body's own mass centre its inertia force has no moment.
-            let about_own_centre = !many
+            let about_own_centre = row.free_body.len() == 1
                 && row
                     .free_body
                     .first()
                     .is_some_and(|b| point.strip_suffix('*') == Some(problem.body_name(*b)));
             let point = super::tex::point_tex(point);
-            let torque = inertia_torque_terms(&k, derivation.model.is_planar()).join(" + ");
-            let force = if about_own_centre {
-                String::new()
-            } else {
-                format!("\\mathbf{{r}}^{{{point} {k}^*}} \\times {inertia_force}")
+            let planar = derivation.model.is_planar();
+            let torque = (each.iter())
+                .flat_map(|(k, _)| inertia_torque_terms(k, planar))
+                .collect::<Vec<_>>()
+                .join(" + ");
+            let force = match about_own_centre {
+                true => String::new(),
+                false => (each.iter())
+                    .map(|body| {
+                        format!(
+                            "\\mathbf{{r}}^{{{point} {}^*}} \\times {}",
+                            body.0,
+                            inertia_force(body)
+                        )
+                    })
+                    .collect::<Vec<_>>()
+                    .join(" + "),
             };
             Some(NamedInertia {
                 sum,
@@ -172,6 +196,9 @@ pub fn vector_form(derivation: &Derivation, row: &Equation) -> String {
                 _ => format!("{force} + {torque}"),
             };
             format!("\\sum \\mathbf{{M}}_{{{point}}} - {sum}\\left( {inertia} \\right)")
+        }
+        _ if force.contains(" + ") => {
+            format!("\\sum \\mathbf{{F}} - {sum}\\left( {force} \\right)")
         }
         _ => format!("\\sum \\mathbf{{F}} - {sum}{force}"),
     };

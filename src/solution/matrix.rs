@@ -170,12 +170,14 @@ pub fn matrix(
         &names,
         &listed,
     );
+    if !by_entries && (table_by_name.is_some() || table_with_b_by_name.is_some()) {
+        // Step 5 writes every row out, collected by its unknowns: a table of names whose
+        // entries are listed below it would only write those rows a second time.
+        return MatrixForm::default();
+    }
     if let Some(table) = table_by_name {
         let entries = (entries, unknowns_by_number);
         return by_name_form(table, &a_names, &a_tex, &x, &names, entries);
-    }
-    if let Some(table) = table_with_b_by_name {
-        return b_by_name_form(table, entries);
     }
     let pattern = || pattern_tables(&numbers, &a, &b);
     listed_form(entries, (by_entries, &listed), a.len(), &x, pattern)
@@ -437,23 +439,6 @@ fn by_name_form(
         } else {
             Vec::new()
         },
-        ..MatrixForm::default()
-    }
-}
-
-/// The whole table with `b` by name, its entries below it.
-fn b_by_name_form(table: WholeMatrix, entries: Vec<MatrixEntry>) -> MatrixForm {
-    let b_entries = entries
-        .into_iter()
-        .filter(|e| e.column == "b")
-        .map(|e| MatrixEntry {
-            row_label_tex: Math::from(String::new()),
-            ..e
-        })
-        .collect();
-    MatrixForm {
-        whole: Some(table),
-        entries: b_entries,
         ..MatrixForm::default()
     }
 }

@@ -64,6 +64,7 @@ mod named_identity;
 mod normal_sense;
 mod on_constraint;
 mod pictures;
+mod plot_titles;
 mod polar_units;
 mod potential_tex;
 mod question_answers;

@@ -290,7 +290,7 @@ fn one_freedom(
         None => (m0.clone(), k0.clone()),
     };
     let others = match &settled {
-        Some(s) => format!(", with {},", s.sentence()),
+        Some(s) => format!(", where {}", s.sentence().replace(" giving ", " give ")),
         None => others_tex(problem, answer, &omega2, k),
     };
     let words = match derivation.method {
@@ -305,8 +305,8 @@ fn one_freedom(
         ),
         step(
             format!(
-                "Linearized about the state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$: $M$ is the coefficient of ${qdd_tex}$ and $K$ minus the derivative of the right side with respect to ${q_tex}$, both with {} there{}:",
-                if zero_tex.is_empty() { "the values".to_string() } else { format!("${}$", zero_tex.join(",\\ ")) },
+                "For small motions about this state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$, where $M$ is the coefficient of ${qdd_tex}$ and $K$ is minus the derivative of the right side with respect to ${q_tex}$, both evaluated at {}{}:",
+                if zero_tex.is_empty() { "the state".to_string() } else { format!("${}$", zero_tex.join(",\\ ")) },
                 others.trim_end_matches(',')
             ),
             format!("M = {}, \\qquad K = {}", factored(&m1), factored(&k1)),

@@ -66,6 +66,8 @@ pub fn simulation(
             .collect()
     };
     let energy_series = energy_series(problem, trajectory);
+    let energy_title = super::plot_titles::energy(problem, &energy_series);
+    let small_title;
     let mut plots = vec![
         (
             "coordinates",
@@ -80,13 +82,15 @@ pub fn simulation(
             series_of(CoordinateKind::Distance),
         ),
     ];
-    // An angle that moves little (a top's nutation beside its spin) on a plot of its own.
+    // An angle that moves little (a top's nutation beside its spin) on a plot of its own,
+    // titled by what it is.
     if let Some(small) = small_moves(&mut plots[0].3) {
+        small_title = super::plot_titles::small_angles(problem, &small);
         plots.insert(
             1,
             (
                 "nutation",
-                "Angles that move little",
+                small_title.as_str(),
                 Label::words("angle (rad)"),
                 small,
             ),
@@ -99,7 +103,7 @@ pub fn simulation(
     }
     plots.push((
         "energy",
-        "Energy against time",
+        energy_title.as_str(),
         Label::words("energy (J)"),
         energy_series,
     ));

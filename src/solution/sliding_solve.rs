@@ -8,9 +8,6 @@ use crate::plan::Sum;
 use crate::render::text::MarkupLine;
 use crate::symbolic::{latex, Expr, Symbol};
 
-/// How the sentence of the two-stage solve begins (see `solve_words`).
-const TWO_STAGES: &str = "Solved in two stages.";
-
 /// `(1), (2) and (4)`.
 fn row_list(rows: &[usize]) -> String {
     let names: Vec<String> = rows.iter().map(|i| format!("({})", i + 1)).collect();
@@ -103,12 +100,13 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
     ))
 }
 
-/// Puts the sliding order in place of the two-stage sentence, which holds only while every
-/// contact sticks.
+/// Puts the sliding order in place of the order of the solve while every contact sticks
+/// (see `solve_words`), which holds only then.
 pub fn replace_order(notes: &mut Vec<MarkupLine>, derivation: &Derivation, friction: &[SiteState]) {
     let Some(order) = sliding_order(derivation, friction) else {
         return;
     };
-    notes.retain(|n| !n.as_str().starts_with(TWO_STAGES));
+    let sticking = super::solve_words::order(derivation);
+    notes.retain(|n| Some(n.as_str()) != sticking.as_deref());
     notes.insert(0, MarkupLine::from(order));
 }

@@ -64,7 +64,7 @@ fn unknown_list(unknowns: &[&Symbol]) -> String {
 
 /// What is solved first: the rows without a reaction give the second derivatives when they
 /// are as many; the other rows then give the reactions.
-fn order(derivation: &Derivation) -> Option<String> {
+pub(super) fn order(derivation: &Derivation) -> Option<String> {
     let system = &derivation.system;
     let reactions: Vec<usize> = (0..system.unknowns.len())
         .filter(|&j| is_reaction(&system.unknowns[j]))
@@ -81,17 +81,19 @@ fn order(derivation: &Derivation) -> Option<String> {
     }
     let rest: Vec<usize> = (0..system.a.len()).filter(|i| !free.contains(i)).collect();
     let forces: Vec<&Symbol> = reactions.iter().map(|&j| &system.unknowns[j]).collect();
-    let rows = if free.len() == 1 { "Row" } else { "Rows" };
-    let hold = if free.len() == 1 { "holds" } else { "hold" };
+    let (rows, contain, give) = match free.len() {
+        1 => ("Row", "contains", "gives"),
+        _ => ("Rows", "contain", "give"),
+    };
+    let (then, then_give) = match rest.len() {
+        1 => ("row", "gives"),
+        _ => ("rows", "give"),
+    };
     Some(format!(
-        "Solved in two stages. {rows} {} {hold} no reaction: {} give{} {} first. With these known, {} give{} the reaction{} {}.",
+        "{rows} {} {contain} no reaction and {give} {}; {then} {} then {then_give} {}.",
         row_list(&free),
-        if free.len() == 1 { "it" } else { "they" },
-        if free.len() == 1 { "s" } else { "" },
         unknown_list(&accelerations),
-        if rest.len() == 1 { "the last row" } else { "the other rows" },
-        if rest.len() == 1 { "s" } else { "" },
-        if forces.len() == 1 { "" } else { "s" },
+        row_list(&rest),
         unknown_list(&forces),
     ))
 }
@@ -155,16 +157,13 @@ fn singular(derivation: &Derivation) -> Option<String> {
         return None;
     }
     let names: Vec<&Symbol> = columns.iter().map(|&j| &system.unknowns[j]).collect();
-    // A determinant of constants alone (a pitch radius) vanishes in no configuration.
+    // A determinant of constants alone (a pitch radius) vanishes in no configuration: a
+    // student needs no word of it.
     if det.is_constant() {
-        return Some(format!(
-            "The constraint {} {} from the other second derivatives: their block in these has the determinant ${det_tex}$, which no configuration makes zero.",
-            rows_give(&rows),
-            unknown_list(&names),
-        ));
+        return None;
     }
     let head = format!(
-        "The constraint {} {} from the other second derivatives wherever their block in these has a nonzero determinant, ${det_tex}$.",
+        "{} {} wherever ${det_tex} \\neq 0$.",
         rows_give(&rows),
         unknown_list(&names),
     );
@@ -174,9 +173,7 @@ fn singular(derivation: &Derivation) -> Option<String> {
         .filter(|f| matches!(f.node(), Node::Func(Func::Sin | Func::Cos, _)))
         .collect();
     let Some(factor) = vanishing.first() else {
-        return Some(format!(
-            "{head} Where it is zero the constraints do not fix the dependent rates from the independent ones: the coordinates chosen cannot describe the motion there."
-        ));
+        return Some(head);
     };
     let line = in_line(model, factor)
         .map(|(i, j)| {
@@ -196,16 +193,16 @@ fn singular(derivation: &Derivation) -> Option<String> {
         }
     };
     Some(format!(
-        "{head} It is zero where ${} = 0${line}: {what}.",
+        "{head} This fails where ${} = 0${line}: {what}.",
         latex(factor)
     ))
 }
 
-/// "rows (4) and (5) give", or "row (3) gives" for one.
+/// "Rows (4) and (5) give", or "Row (3) gives" for one.
 fn rows_give(rows: &[usize]) -> String {
     match rows.len() {
-        1 => format!("row {} gives", row_list(rows)),
-        _ => format!("rows {} give", row_list(rows)),
+        1 => format!("Row {} gives", row_list(rows)),
+        _ => format!("Rows {} give", row_list(rows)),
     }
 }
 

@@ -175,12 +175,12 @@ fn a_long_equation_is_shown_with_the_matrix_entries_by_name() {
     }
     assert!(ten.contains("With the coefficients of the matrix form below:"));
     let markdown = explain("five-link-chain", "markdown");
-    // The mass matrix is symmetric: in the table by name, the entry below the diagonal is
-    // the one above, defined once.
-    assert!(markdown.contains("(2) & A_{1,2} &"));
-    assert!(!markdown.contains("$A_{2,1} = "));
-    // By hand, with the common factor L²m/6 out: A₁₂ = -(L²m/6)(44 + 21 c₂ + …).
-    assert!(markdown.contains("$A_{1,2} = -\\frac{L^{2} m}{6} (44 + 21 C_{2} + "));
+    // Step 5 writes every row out, so no table by name repeats them; the coefficient of
+    // q̈₂ in row 1 is read there, by hand with the common factor L²m/6 out:
+    // A₁₂ = -(L²m/6)(44 + 21 c₂ + …).
+    assert!(!markdown.contains("(2) & A_{1,2} &"));
+    assert!(!markdown.contains("$A_{1,2} = "));
+    assert!(markdown.contains("- \\frac{L^{2} m}{6} (44 + 21 C_{2} + "));
     // The text's size: the pictures embedded as inline SVG are not equations.
     let mut text = markdown.clone();
     while let (Some(a), Some(b)) = (text.find("<svg"), text.find("</svg>")) {
@@ -367,14 +367,14 @@ fn the_latex_handout_states_the_pictures_legend_once() {
 #[test]
 fn a_right_hand_side_is_collected_by_the_rates() {
     let markdown = explain("five-link-chain", "markdown");
-    // b₁ of the five-link chain as step 5 writes an equation: the damper's c q̇₁, then each
-    // square of a link's angular velocity with its coefficient's factor L²m/2 out, gravity
-    // last.
+    // Row 1 of the five-link chain as step 5 writes it, collected by the rates: the
+    // damper's c q̇₁, then each square of a link's angular velocity with its coefficient's
+    // factor L²m/2 out, gravity last.
     assert!(markdown.contains(
-        "- $b_{1} = c \\dot{q}_{1} + \\frac{L^{2} m}{2} (7 S_{2} + 5 S_{23} + 3 S_{234} + S_{2345}) \\dot{q}_{1}^{2} + "
+        "- c \\dot{q}_{1} - \\frac{L^{2} m}{2} (7 S_{2} + 5 S_{23} + 3 S_{234} + S_{2345}) \\dot{q}_{1}^{2} + "
     ));
     assert!(markdown
-        .contains("(\\dot{q}_{1} + \\cdots + \\dot{q}_{5})^{2} + \\frac{9 L g m}{2} S_{1} + "));
+        .contains("(\\dot{q}_{1} + \\cdots + \\dot{q}_{5})^{2} - \\frac{9 L g m}{2} S_{1} - "));
 }
 
 #[test]
