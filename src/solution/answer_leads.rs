@@ -2,10 +2,12 @@
 //! state and not again at the answers after it at the same state; an instant the
 //! question's own words give ("After 4 s:") is not written a second time.
 
-use crate::problem::Question;
+use super::answer_numbers::{number_tex, unit_tex};
+use crate::numeric::{coordinate_unit, Answer};
+use crate::problem::{Problem, Question, QuestionKind};
 use crate::render::text::Math;
 use crate::render::AnswerView;
-use crate::symbolic::fixed;
+use crate::symbolic::{fixed, latex};
 
 /// Marks each view asked at the same state as the one before it; a view asked at the state
 /// of an earlier answer, not the one just before, names that answer instead of repeating
@@ -15,8 +17,10 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
         let (before, after) = views.split_at_mut(i);
         let view = &mut after[0];
         let key = (view.at_tex.clone(), view.at_note.clone());
-        view.same_state = asked_at(&before[i - 1], &key);
-        if view.same_state || key.0.as_str().is_empty() {
+        // A view whose lead its steps say already (a `show`'s conditions) keeps none.
+        view.same_state |= asked_at(&before[i - 1], &key);
+        // A lead that names its answer already ("found in answer 2") says where it is asked.
+        if view.same_state || key.0.as_str().is_empty() || names_an_answer(&key.1) {
             continue;
         }
         let Some(k) = before.iter().position(|v| asked_at(v, &key)) else {
@@ -28,6 +32,32 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
             view.at_tex = Math::from(String::new());
         }
     }
+}
+
+/// Whether a lead's words name the answer whose state it is asked at.
+fn names_an_answer(note: &str) -> bool {
+    note.contains("found in answer") || note.contains("found above")
+}
+
+/// The state of a steady motion found by `about` (a `steady` question), as the values it
+/// found: the values it held are said in its own answer, not again. `None` for a question
+/// of another kind.
+pub fn found_tex(problem: &Problem, about: &Question, answer: &Answer) -> Option<String> {
+    let QuestionKind::Steady { unknowns, .. } = &about.kind else {
+        return None;
+    };
+    let parts: Vec<String> = (unknowns.iter())
+        .filter_map(|e| {
+            let x = match e.order {
+                0 => answer.q.get(e.coordinate)?,
+                _ => answer.rates.get(e.coordinate)?,
+            };
+            let symbol = latex(&problem.coordinate_expr(e.coordinate, e.order));
+            let unit = coordinate_unit(problem, e.coordinate, e.order);
+            Some(format!("{symbol} = {}{}", number_tex(*x), unit_tex(&unit)))
+        })
+        .collect();
+    (!parts.is_empty()).then(|| parts.join(",\\ "))
 }
 
 /// Whether `view` is asked at the state `(at_tex, at_note)`.

@@ -21,8 +21,9 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
         .map(|((question, answer), label)| {
             let mut view = blank_one(problem, question);
             view.label = label;
-            if question.about.is_some() {
-                view.at_tex = Math::from(found_state_tex(problem, answer));
+            if let Some(k) = question.about {
+                let found = super::answer_leads::found_tex(problem, &problem.questions[k], answer);
+                view.at_tex = Math::from(found.unwrap_or_else(|| found_state_tex(problem, answer)));
             }
             if let Some(site) = question.at.switch {
                 // The instant itself asked: its value is the answer, not where it is asked.
@@ -104,13 +105,9 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
         .into_iter()
         .enumerate()
         .fold(Vec::new(), |mut done, (i, mut view)| {
-            // A second steady motion held at the same values is another state.
+            // A second steady motion held at the same values is said under the first's
+            // state, which is not said again (the question's words name which motion).
             let steady = matches!(problem.questions[i].kind, QuestionKind::Steady { .. });
-            let seen = (done.iter())
-                .any(|v: &AnswerView| v.at_tex == view.at_tex && v.at_note == view.at_note);
-            if steady && seen {
-                view.at_note = format!("{}, as above", view.at_note);
-            }
             // The same check said once: the second time, briefly.
             if steady && !view.note.is_empty() && done.iter().any(|v| v.note == view.note) {
                 view.note = "The same check holds here: the motion is steady.".into();

@@ -44,7 +44,12 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
-                    period_steps(derivation, worked.period_system.as_ref(), answer)
+                    let steps = period_steps(derivation, worked.period_system.as_ref(), answer);
+                    // The period is said where the steps end with it, not also above them.
+                    if !steps.is_empty() && said_in(answer, &steps) {
+                        view.values_tex.clear();
+                    }
+                    steps
                 }
                 QuestionKind::Show {
                     lhs, rhs, names, ..
@@ -53,9 +58,11 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     let assumed = super::show_conditions::assumed(question);
                     let steps =
                         show_steps(problem, derivation, (solved(i), &assumed), answer, shown);
+                    // The steps put the conditions in and say them: no lead says them first.
                     if !assumed.is_empty() && derived(&steps) {
                         view.at_tex = super::show_conditions::conditions_tex(&assumed).into();
                         view.at_note = "the conditions of the motion asked, put in below".into();
+                        view.same_state = true;
                     }
                     shown_derived &= derived(&steps);
                     check_last(view, steps)
@@ -116,6 +123,14 @@ fn check_last(view: &mut AnswerView, steps: Vec<AnswerStep>) -> Vec<AnswerStep> 
     view.values_tex.clear();
     view.note.clear();
     steps
+}
+
+/// Whether every value of `answer` is written in the math of `steps`.
+fn said_in(answer: &Answer, steps: &[AnswerStep]) -> bool {
+    (answer.values.iter()).all(|(_, x)| {
+        let number = super::answer_numbers::number_tex(*x);
+        steps.iter().any(|s| s.math.as_str().contains(&number))
+    })
 }
 
 /// Whether the working of a `show` derives it (it starts from an equation of step 5).
