@@ -10,7 +10,7 @@ use crate::problem::MatrixNames;
 /// enough for its matrix form to be written out.
 pub fn rows_are_the_system(derivation: &Derivation) -> Option<String> {
     let n = derivation.system.unknowns.len();
-    if derivation.method != Method::Kane || n <= super::matrix::MOST_COLUMNS {
+    if derivation.method != Method::Kane || n <= super::matrix_by_value::MOST_COLUMNS {
         return None;
     }
     let rows = derivation.system.a.len();

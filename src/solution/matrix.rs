@@ -3,6 +3,7 @@
 //! a long right-hand side collected by the products of rates.
 
 use super::long::{by_rates, LONG_EQUATION};
+use super::matrix_by_value::{b_texts, by_value_early, ENTRIES_BUDGET, MOST_COLUMNS};
 use super::row_names::row_heading_tex;
 use crate::equations::{Derivation, LinearSystem, Method};
 use crate::plan::Sum;
@@ -12,15 +13,8 @@ use crate::render::text::Math;
 use crate::render::{
     pattern_tables, printed_width, value_tables, value_tex, whole_matrix as whole,
 };
-use crate::symbolic::{latex, latex_collected, latex_factored, Expr};
+use crate::symbolic::{latex, latex_factored, Expr};
 
-/// The most columns the whole table has.
-pub(super) const MOST_COLUMNS: usize = 6;
-/// The most characters of LaTeX the entries may print in all (about five pages). Past it,
-/// entries are given by their values at the initial state, a large system being solved by
-/// its numbers anyway: the few rows step 5 writes by name beside the table of dots, or all
-/// of A and b as tables when more rows are by name.
-pub(super) const ENTRIES_BUDGET: usize = 24_000;
 /// An entry this wide or narrower (in printed symbols) stays in a table by name.
 const INLINE_ENTRY: usize = 4;
 /// An entry longer than this keeps a display of its own when a row's entries are printed
@@ -62,7 +56,7 @@ pub fn matrix(
     // Kane's and Lagrange's rows written out whole in step 5 (see below).
     let whole_rows = matches!(derivation.method, Method::Kane | Method::Lagrange) && !by_entries;
     let may_go_by_value = !whole_rows && sliding.is_empty();
-    if may_go_by_value && super::matrix_by_value::by_value_early(system, by_name, &listed, &shown) {
+    if may_go_by_value && by_value_early(system, by_name, &listed, &shown) {
         return by_value(derivation, system, &initial, &headed);
     }
     let mut a: Vec<Vec<Expr>> = system
@@ -284,21 +278,6 @@ fn entries_by_value(
                 row_label_tex: Math::from(labels[i].clone()),
                 values_tex: Math::all(values),
                 ..MatrixEntry::default()
-            }
-        })
-        .collect()
-}
-
-/// The entries of `b`: collected by the products of rates, each coefficient's factor out,
-/// as step 5 writes an equation, when that is shorter than factored.
-pub(super) fn b_texts(b: &[Expr]) -> Vec<String> {
-    b.iter()
-        .map(|e| {
-            let (factored, collected) = (latex_factored(e), latex_collected(e));
-            if collected.len() < factored.len() {
-                collected
-            } else {
-                factored
             }
         })
         .collect()

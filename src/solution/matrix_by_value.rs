@@ -1,9 +1,31 @@
 //! Whether step 5's matrix goes by its values at the initial state, found before every
 //! entry of a large system is simplified and printed only to be measured.
 
-use super::matrix::{b_texts, ENTRIES_BUDGET, MOST_COLUMNS};
 use crate::equations::LinearSystem;
-use crate::symbolic::{latex_factored, Expr};
+use crate::symbolic::{latex_collected, latex_factored, Expr};
+
+/// The most columns the whole table has.
+pub(super) const MOST_COLUMNS: usize = 6;
+/// The most characters of LaTeX the entries may print in all (about five pages). Past it,
+/// entries are given by their values at the initial state, a large system being solved by
+/// its numbers anyway: the few rows step 5 writes by name beside the table of dots, or all
+/// of A and b as tables when more rows are by name.
+pub(super) const ENTRIES_BUDGET: usize = 24_000;
+
+/// The entries of `b`: collected by the products of rates, each coefficient's factor out,
+/// as step 5 writes an equation, when that is shorter than factored.
+pub(super) fn b_texts(b: &[Expr]) -> Vec<String> {
+    b.iter()
+        .map(|e| {
+            let (factored, collected) = (latex_factored(e), latex_collected(e));
+            if collected.len() < factored.len() {
+                collected
+            } else {
+                factored
+            }
+        })
+        .collect()
+}
 
 /// Whether `matrix` will give `A` and `b` by their values, known before every entry is
 /// simplified and printed: where neither the whole table (up to six unknowns, every row
