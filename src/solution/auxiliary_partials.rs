@@ -5,7 +5,7 @@
 //! shown in the table with the independent speeds', and its `F̃*_r` is formed body by body
 //! with them, as the independent speeds' are.
 
-use super::independent::{body_rows, site_partial, BodyPartials};
+use super::partial_rows::{body_rows, site_partial, BodyPartials};
 use crate::equations::Derivation;
 use crate::mechanics::{DependentSpeeds, RowOrigin};
 use crate::plan::Sum;

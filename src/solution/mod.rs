@@ -63,6 +63,7 @@ mod moment_point;
 mod named_identity;
 mod normal_sense;
 mod on_constraint;
+mod partial_rows;
 mod pictures;
 mod plot_titles;
 mod polar_units;
