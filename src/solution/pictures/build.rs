@@ -1,7 +1,8 @@
 //! Building the scenes: the configuration, and each free body with its kinetic diagram.
 
+use super::joint_symbols;
+use super::load_symbols::{factor_tex, magnitude_symbol};
 use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
-use super::shapes;
 use crate::equations::Derivation;
 use crate::mechanics::ComponentKind;
 use crate::plan::{is_external, Action, ActionKind, Source};
@@ -255,7 +256,7 @@ impl Setting<'_, '_, '_> {
         shapes.extend(surfaces);
         self.elements(&mut shapes);
         for j in 0..self.problem().joints.len() {
-            shapes.extend(shapes::joint(self.numbers, j, self.size));
+            shapes.extend(joint_symbols::joint(self.numbers, j, self.size));
         }
         self.coordinates(&mut shapes);
         shapes.extend(super::velocities::velocities(self.numbers, self.size));
@@ -288,7 +289,7 @@ impl Setting<'_, '_, '_> {
         for (j, joint) in problem.joints.iter().enumerate() {
             if set.contains(&joint.child) && set.contains(&joint.parent) {
                 shapes.extend(
-                    shapes::joint(self.numbers, j, self.size)
+                    joint_symbols::joint(self.numbers, j, self.size)
                         .into_iter()
                         .filter(|s| !matches!(s, Shape::Ground { .. })),
                 );
@@ -573,29 +574,5 @@ impl Setting<'_, '_, '_> {
             });
         }
         out
-    }
-}
-
-/// The symbol an applied force or couple is named by in the statement (`P` of
-/// `P*N.x`, also of `-P*N.x`, drawn the way it acts): its one coefficient when that is a
-/// symbol or minus one; `None` for anything else (drawn with the load's name).
-fn magnitude_symbol(kind: &LoadKind) -> Option<Expr> {
-    let (LoadKind::Force { vector, .. } | LoadKind::Torque { vector, .. }) = kind else {
-        return None;
-    };
-    let [(_, _, c)] = vector.terms.as_slice() else {
-        return None;
-    };
-    [c.clone(), simplify(&-c.clone())]
-        .into_iter()
-        .find(|e| e.as_symbol().is_some())
-}
-
-/// An expression as a factor of a product: in parentheses when it is a sum.
-fn factor_tex(e: &Expr) -> String {
-    if e.terms().len() > 1 {
-        format!("\\left({}\\right)", latex(e))
-    } else {
-        latex(e)
     }
 }
