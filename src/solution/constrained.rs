@@ -279,40 +279,7 @@ pub fn dependent_speeds(
         None => relations_tex,
     };
     let kane_tex = "\\left(F_r + F_r^*\\right) + \\sum_{s} C_{sr} \\left(F_s + F_s^*\\right) = 0, \\quad r \\text{ independent}, \\; s \\text{ dependent}".to_string();
-    // Reduced partial velocities: ṽ_r = v_r + Σ_s C_sr v_s for each mass centre.
-    let all_rates: Vec<Symbol> = (0..problem.coordinates.len())
-        .map(|i| problem.coordinate_symbol(i, 1))
-        .collect();
-    let mut reduced = Vec::new();
-    for body in problem.body_ids() {
-        let partials =
-            crate::equations::partials(&model.bodies[body.0].center.velocity, &all_rates);
-        let numbers: Vec<[f64; 3]> = partials
-            .iter()
-            .map(|v| {
-                let c = v.components_in(BodyId::GROUND, &model.frames);
-                std::array::from_fn(|k| crate::symbolic::eval(&c[k], &values))
-            })
-            .collect();
-        let centre = super::tex::centre_tex(model, body);
-        for (k, &r) in reducer.rates.iter().enumerate() {
-            let mut v = numbers[r];
-            for (d, &s) in dependent.iter().enumerate() {
-                for (i, x) in v.iter_mut().enumerate() {
-                    *x += c[(d, k)] * numbers[s][i];
-                }
-            }
-            let units = ["x", "y", "z"]
-                .iter()
-                .zip(v)
-                .map(|(axis, x)| (x, format!("\\hat{{\\mathbf{{n}}}}_{{{axis}}}")));
-            let terms = super::tex::numeric_sum(units, 1e-13).unwrap_or("\\mathbf{0}".into());
-            reduced.push(format!(
-                "\\tilde{{\\mathbf{{v}}}}^{{{centre}}}_{{{}}} = {terms}",
-                rate(r)
-            ));
-        }
-    }
+    let reduced = reduced_partials(model, (&dependent, &reducer.rates), &c, &values);
     Some(DependentSpeeds {
         relation_tex: Math::from(relation_tex),
         relations_tex,
@@ -334,6 +301,52 @@ pub fn dependent_speeds(
         start_tex,
         ..DependentSpeeds::default()
     })
+}
+
+/// The reduced partial velocities of every mass centre at the initial state,
+/// ṽ_r = v_r + Σ_s C_sr v_s, for each independent rate of `rates` (dependent, independent).
+fn reduced_partials(
+    model: &Model,
+    (dependent, independent): (&[usize], &[usize]),
+    c: &nalgebra::DMatrix<f64>,
+    values: &crate::symbolic::Values,
+) -> Vec<String> {
+    let problem = model.problem;
+    let rate = |i: usize| latex(&problem.coordinate_expr(i, 1));
+    let all_rates: Vec<Symbol> = (0..problem.coordinates.len())
+        .map(|i| problem.coordinate_symbol(i, 1))
+        .collect();
+    let mut reduced = Vec::new();
+    for body in problem.body_ids() {
+        let partials =
+            crate::equations::partials(&model.bodies[body.0].center.velocity, &all_rates);
+        let numbers: Vec<[f64; 3]> = partials
+            .iter()
+            .map(|v| {
+                let c = v.components_in(BodyId::GROUND, &model.frames);
+                std::array::from_fn(|k| crate::symbolic::eval(&c[k], values))
+            })
+            .collect();
+        let centre = super::tex::centre_tex(model, body);
+        for (k, &r) in independent.iter().enumerate() {
+            let mut v = numbers[r];
+            for (d, &s) in dependent.iter().enumerate() {
+                for (i, x) in v.iter_mut().enumerate() {
+                    *x += c[(d, k)] * numbers[s][i];
+                }
+            }
+            let units = ["x", "y", "z"]
+                .iter()
+                .zip(v)
+                .map(|(axis, x)| (x, format!("\\hat{{\\mathbf{{n}}}}_{{{axis}}}")));
+            let terms = super::tex::numeric_sum(units, 1e-13).unwrap_or("\\mathbf{0}".into());
+            reduced.push(format!(
+                "\\tilde{{\\mathbf{{v}}}}^{{{centre}}}_{{{}}} = {terms}",
+                rate(r)
+            ));
+        }
+    }
+    reduced
 }
 
 /// Where the relations are written in symbols (they hold in general), each dependent
