@@ -4,7 +4,6 @@
 //! would tell nothing more (docs/conventions/rows.md).
 
 use crate::equations::{Derivation, Method};
-use crate::problem::MatrixNames;
 
 /// The sentence that says so, in markup; `None` for another method or a system small
 /// enough for its matrix form to be written out.
@@ -14,9 +13,7 @@ pub fn rows_are_the_system(derivation: &Derivation) -> Option<String> {
         return None;
     }
     let rows = derivation.system.a.len();
-    let names = MatrixNames::of(derivation.model.problem);
-    let (a, b) = (names.a, names.b);
     Some(format!(
-        "The {rows} rows above, linear in the {n} unknowns once the state is given, are the system $\\mathbf{{{a}}}\\,\\mathbf{{x}} = \\mathbf{{{b}}}$ (${a}_{{ij}}$ the coefficient of unknown $x_j$ in row $i$, ${b}_i$ minus the rest), solved numerically at the initial state."
+        "The {rows} rows are linear in the {n} unknowns; they are solved with the numbers of the initial state."
     ))
 }

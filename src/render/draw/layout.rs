@@ -439,8 +439,8 @@ pub fn lay_out(scene: &Scene, view: View) -> Picture {
     lay_out_with(scene, view, 1.0)
 }
 
-/// Lays `scene` out for `view`, each label taking `grow` times its room at 13 px (see
-/// [`Room`]).
+/// Lays `scene` out for `view`, each label taking `grow` times its room at 13 px (a
+/// picture printed small lays its labels out at the size they print).
 pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
     let room = Room::of(scene.content, grow);
     let (mut projection, [mut panel_width, height]) = fit(scene, view, room.margin, room.content);
