@@ -54,7 +54,12 @@ pub fn wrap(math: &str) -> String {
     let mut out = String::with_capacity(math.len() + 32);
     let mut piece = String::new();
     let flush = |piece: &mut String, out: &mut String| {
-        let trimmed = piece.trim();
+        let mut trimmed = piece.trim();
+        // A control space `\ ` before the words loses its space to the trim: drop its
+        // backslash too, or it would escape the closing `$`.
+        if trimmed.ends_with('\\') && !trimmed.ends_with("\\\\") {
+            trimmed = trimmed[..trimmed.len() - 1].trim_end();
+        }
         if !trimmed.is_empty() {
             // Spaces around the math separate it from the words.
             if piece.starts_with(' ') {
@@ -193,6 +198,8 @@ mod tests {
             "rotated by $q_{1}$ about $\\hat{\\mathbf{n}}_{z}$"
         );
         assert_eq!(wrap("\\text{couple}"), "couple");
+        // A value and a unit that is words: the control space does not escape the `$`.
+        assert_eq!(wrap("x = 2\\ \\text{ m per s}"), "$x = 2$ m per s");
         assert_eq!(wrap("\\text{a\\{b\\}} x"), "a\\{b\\} $x$");
     }
 
