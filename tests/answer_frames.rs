@@ -333,7 +333,7 @@ fn the_normal_force_inside_a_cylinder_is_a_push_drawn_inward() {
     assert!(!text.contains("comes out negative"), "no pull to explain");
     // The free body's arrow of the normal force, on the page (y down): toward the axis.
     let arrow = text
-        .split("data-label=\"F^contact_n\"")
+        .split("data-label=\"F^P_n\"")
         .nth(1)
         .and_then(|rest| rest.split("<line ").nth(1))
         .expect("the normal force's arrow");

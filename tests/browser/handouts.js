@@ -4,7 +4,7 @@
 //   texts FILE...             no text node of any page (HTML or SVG) shows a literal ^, _ or ˆ
 //   overdots HTML...          every dot over a letter is inked, above its letter and unclipped,
 //                             and q, q̇, q̈ differ where they stand in fractions and brackets
-//   friction EXPECTED FILE... the arrow labelled EXPECTED.label points along EXPECTED.page
+//   friction EXPECTED FILE... the arrow labelled one of EXPECTED.labels (or EXPECTED.label) points along EXPECTED.page
 //                             (a unit vector on the page, y downward) in every picture of FILE
 //   arrows FILE...            no two force arrows of a picture lie on top of each other: their
 //                             heads apart, and two along one line of different lengths
@@ -180,15 +180,16 @@ function measureArrows() {
 async function friction(expectedPath, files) {
   const expected = JSON.parse(require('fs').readFileSync(expectedPath, 'utf8'));
   await each(files, async (page, file) => {
-    const arrows = (await page.evaluate(measureArrows)).filter((a) => a.label === expected.label);
-    check(arrows.length > 0, `${file}: an arrow labelled ${expected.label}`);
+    const wanted = expected.labels || [expected.label];
+    const arrows = (await page.evaluate(measureArrows)).filter((a) => wanted.includes(a.label));
+    check(arrows.length > 0, `${file}: an arrow labelled ${wanted.join(' or ')}`);
     for (const a of arrows) {
       const d = [a.tip[0] - a.tail[0], a.tip[1] - a.tail[1]];
       const n = Math.hypot(d[0], d[1]);
       const along = (d[0] * expected.page[0] + d[1] * expected.page[1]) / n;
       const headCentre = [(a.head[0] + a.head[2]) / 2, (a.head[1] + a.head[3]) / 2];
       const headAtTip = Math.hypot(headCentre[0] - a.tip[0], headCentre[1] - a.tip[1]) < Math.hypot(headCentre[0] - a.tail[0], headCentre[1] - a.tail[1]);
-      check(along > 0.999 && headAtTip, `${file} (${a.title}): ${expected.label} drawn along ${d.map((v) => (v / n).toFixed(3))} with its head at the tip, against the slip (${expected.page})`);
+      check(along > 0.999 && headAtTip, `${file} (${a.title}): ${a.label} drawn along ${d.map((v) => (v / n).toFixed(3))} with its head at the tip, against the slip (${expected.page})`);
     }
   });
 }

@@ -377,7 +377,7 @@ fn kane_shows_the_coins_dependent_speeds() {
         "\\dot{z} &= -R s_{\\theta} \\dot{\\theta}",
         "\\dot{x} &= R c_{\\psi} \\dot{\\phi} + R s_{\\theta} c_{\\psi} \\dot{\\psi} + R s_{\\psi} c_{\\theta} \\dot{\\theta}",
         "{}^{N}\\tilde{\\mathbf{v}}^{D^*}_{3}",
-        "{}^{N}\\tilde{\\boldsymbol{\\omega}}^{D}_{3} = \\hat{\\mathbf{d}}_{y}",
+        "{}^{N}\\tilde{\\boldsymbol{\\omega}}^{D}_{3} = \\hat{\\mathbf{a}}_{y}",
     ] {
         assert!(text.contains(want), "no {want} in Kane's dependent speeds");
     }
