@@ -22,6 +22,7 @@ mod gears;
 mod grade;
 mod handout_names;
 mod handout_pages;
+mod handout_quotes;
 mod handout_sentences;
 mod handout_truths;
 mod handouts_in_browser;

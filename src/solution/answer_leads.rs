@@ -19,8 +19,9 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
         let key = (view.at_tex.clone(), view.at_note.clone());
         // A view whose lead its steps say already (a `show`'s conditions) keeps none.
         view.same_state |= asked_at(&before[i - 1], &key);
-        // A lead that names its answer already ("found in answer 2") says where it is asked.
-        if view.same_state || key.0.as_str().is_empty() || names_an_answer(&key.1) {
+        // A lead said before, even one that names the answer that found its state ("found in
+        // answer 2", where that answer found two), is not said again in full.
+        if view.same_state || key.0.as_str().is_empty() {
             continue;
         }
         let Some(k) = before.iter().position(|v| asked_at(v, &key)) else {
@@ -32,11 +33,6 @@ pub fn mark_repeated_states(views: &mut [AnswerView]) {
             view.at_tex = Math::from(String::new());
         }
     }
-}
-
-/// Whether a lead's words name the answer whose state it is asked at.
-fn names_an_answer(note: &str) -> bool {
-    note.contains("found in answer") || note.contains("found above")
 }
 
 /// The state of a steady motion found by `about` (a `steady` question), as the values it

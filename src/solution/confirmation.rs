@@ -69,6 +69,16 @@ fn num(x: f64) -> String {
     literal_with_numbers(&fixed(x))
 }
 
+/// `x` to three significant figures: an extreme read off the plotted samples (every
+/// 0.01 s) is good to about that, not to six.
+fn three_figures(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return num(x);
+    }
+    let decimals = (2 - x.abs().log10().floor() as i32).max(0) as usize;
+    literal_with_numbers(&format!("{x:.decimals$}"))
+}
+
 /// The energy's columns: E relative to the start, and the energy the motion trades between
 /// T and V (the larger of the ranges of T and V: the largest T is not traded where the
 /// motion starts moving, as a spinning top's).
@@ -104,16 +114,16 @@ fn energy_constant(trajectory: &Trajectory, held: bool) -> Option<String> {
     if !held {
         return Some(format!(
             "{head}; along the motion, however, $E(t) - E(0)$ reaches {} J at $t = {}$ s, \
-             against {} J traded between $T$ and $V$: these equations do not keep it.",
+             against about {} J traded between $T$ and $V$: these equations do not keep it.",
             num(worst),
             fixed(at),
-            num(traded)
+            three_figures(traded)
         ));
     }
     Some(format!(
-        "{head}, and along the motion it does, while {} J is traded between $T$ and $V$ \
+        "{head}, and along the motion it does, while about {} J is traded between $T$ and $V$ \
          (the energy plot).",
-        num(traded)
+        three_figures(traded)
     ))
 }
 

@@ -40,8 +40,14 @@ pub fn lines(
             continue;
         }
         let name = latex_name(model.problem.site_name(*site));
+        // The parent carries the opposite of the site's force F (on the child).
+        let f = if action.body == model.sites[*site].child {
+            format!("\\mathbf{{F}}^{{{name}}}")
+        } else {
+            format!("(-\\mathbf{{F}}^{{{name}}})")
+        };
         out.push(format!(
-            "(\\mathbf{{r}}^{{{point_tex} {name}}} \\times \\mathbf{{F}}^{{{name}}}) \\cdot {} &= {}",
+            "(\\mathbf{{r}}^{{{point_tex} {name}}} \\times {f}) \\cdot {} &= {}",
             direction.latex,
             latex_collected(&shown(&moment))
         ));

@@ -41,6 +41,9 @@ struct At<'m, 'p> {
     frame: BodyId,
     /// The unit vector opposite to gravity, in `N`; `None` without gravity.
     up: Option<[f64; 3]>,
+    /// Whether the system moves at this state: a reaction's components along fixed unit
+    /// vectors are then of this instant (the top's floor force turns with it).
+    moving: bool,
 }
 
 impl At<'_, '_> {
@@ -93,6 +96,7 @@ pub(super) fn note(problem: &Problem, question: &Question, answer: &Answer) -> O
         values,
         frame,
         up,
+        moving: answer.rates.iter().any(|r| r.abs() > ROUND_OFF),
     };
     let (forces, moments) = found(question, answer);
     if forces.is_empty() && moments.is_empty() {
@@ -183,7 +187,11 @@ fn sentence(
         true => " The pressure angle is neglected: the teeth push along the common tangent of the pitch circles.",
         false => "",
     };
-    format!("On {on}{point}, {by} exerts {}.{teeth}", join_and(&parts))
+    let when = if at.moving { ", at this instant" } else { "" };
+    format!(
+        "On {on}{point}, {by} exerts {}{when}.{teeth}",
+        join_and(&parts)
+    )
 }
 
 /// `a, b and c`.

@@ -455,6 +455,11 @@ fn derive_identity(
             .collect();
         terms.push(-&system.b[i]);
         let row = crate::symbolic::add(terms);
+        // Quoted as step 5 prints it: Kane's and Lagrange's rows with their signs changed.
+        let row = match super::kane::sign_changed(derivation, i) {
+            true => -&row,
+            false => row,
+        };
         let reduced = put_in(&row, &zero);
         // Another unknown left (a reaction, a second rate that does not vanish): not this row.
         if system.unknowns.iter().any(|u| reduced.contains(u)) || reduced.is_zero() {
