@@ -141,26 +141,15 @@ fn line_of_centres(
     problem: &crate::problem::Problem,
     relation: &crate::symbolic::Relation,
 ) -> Option<String> {
-    use crate::problem::JointKind;
-    let terms = relation.square.terms();
-    let mut parts = Vec::new();
-    for term in terms {
-        let i = (0..problem.coordinates.len()).find(|&i| {
-            let q = problem.coordinate_expr(i, 0);
-            crate::symbolic::simplify(&(&q * &q)) == *term
-        })?;
-        let c = &problem.coordinates[i];
-        let joint = &problem.joints[c.joint];
-        let along = joint.kind == JointKind::Planar && joint.parent == BodyId::GROUND;
-        if !along || c.index_in_joint > 1 {
-            return None;
-        }
-        parts.push(format!(
-            "{} {}",
-            latex(&problem.coordinate_expr(i, 0)),
-            crate::symbolic::latex_unit_vector("N", c.index_in_joint as u8)
-        ));
-    }
+    let parts: Vec<String> = (super::polar_units::planar_squares(problem, relation)?.iter())
+        .map(|&(i, axis)| {
+            format!(
+                "{} {}",
+                latex(&problem.coordinate_expr(i, 0)),
+                crate::symbolic::latex_unit_vector("N", axis as u8)
+            )
+        })
+        .collect();
     (parts.len() == 2).then(|| {
         format!(
             "\\hat{{\\mathbf{{e}}}}_{{r}} = \\frac{{{}}}{{{}}}",

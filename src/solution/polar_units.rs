@@ -5,37 +5,45 @@
 //! along ê_t") instead of writing them out in n̂.
 
 use crate::mechanics::{Model, Vector};
-use crate::problem::{BodyId, JointKind};
-use crate::symbolic::{latex, latex_unit_vector, simplify, Expr};
+use crate::problem::{BodyId, JointKind, Problem};
+use crate::symbolic::{latex, latex_unit_vector, simplify, Expr, Relation};
+
+/// The coordinates whose squares are the terms of `relation`'s square, each along `n̂_x` or
+/// `n̂_y` of a planar joint on the ground: `(coordinate, axis)` per term; `None` where a term
+/// is not such a square.
+pub(super) fn planar_squares(
+    problem: &Problem,
+    relation: &Relation,
+) -> Option<Vec<(usize, usize)>> {
+    (relation.square.terms().iter())
+        .map(|term| {
+            let i = (0..problem.coordinates.len()).find(|&i| {
+                let q = problem.coordinate_expr(i, 0);
+                simplify(&(&q * &q)) == *term
+            })?;
+            let c = &problem.coordinates[i];
+            let joint = &problem.joints[c.joint];
+            let along = joint.kind == JointKind::Planar && joint.parent == BodyId::GROUND;
+            (along && c.index_in_joint <= 1).then_some((i, c.index_in_joint))
+        })
+        .collect()
+}
 
 /// The coordinates along `n̂_x`, `n̂_y` of a planar joint on the ground whose squares make
 /// a kept distance's square, and that distance: `(x, y, R − r)`.
 fn polar(model: &Model) -> Option<(Expr, Expr, Expr)> {
     let problem = model.problem;
-    model
-        .constraints
-        .relations
-        .iter()
-        .find_map(|(_, relation)| {
-            let mut found: [Option<Expr>; 2] = [None, None];
-            for term in relation.square.terms() {
-                let i = (0..problem.coordinates.len()).find(|&i| {
-                    let q = problem.coordinate_expr(i, 0);
-                    simplify(&(&q * &q)) == *term
-                })?;
-                let c = &problem.coordinates[i];
-                let joint = &problem.joints[c.joint];
-                let along = joint.kind == JointKind::Planar && joint.parent == BodyId::GROUND;
-                if !along || c.index_in_joint > 1 {
-                    return None;
-                }
-                found[c.index_in_joint] = Some(problem.coordinate_expr(i, 0));
-            }
-            let [Some(x), Some(y)] = found else {
-                return None;
-            };
-            (relation.square.terms().len() == 2).then(|| (x, y, relation.root.clone()))
-        })
+    (model.constraints.relations.iter()).find_map(|(_, relation)| {
+        let squares = planar_squares(problem, relation)?;
+        let mut found: [Option<Expr>; 2] = [None, None];
+        for &(i, axis) in &squares {
+            found[axis] = Some(problem.coordinate_expr(i, 0));
+        }
+        let [Some(x), Some(y)] = found else {
+            return None;
+        };
+        (squares.len() == 2).then(|| (x, y, relation.root.clone()))
+    })
 }
 
 /// `ê_t = \frac{-y n̂_x + x n̂_y}{R - r}`, the definition said beside ê_r's; `None` where
