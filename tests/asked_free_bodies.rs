@@ -4,21 +4,7 @@
 //! The rolling coin's Kane handout writes its vectors in the lean frame, and its table of
 //! partial velocities lists each line once.
 
-use crate::support::explain;
-
-/// The markdown handout of a bundled problem by `method`.
-fn handout(name: &str, method: &str) -> String {
-    explain(name, &["--method", method, "--format", "markdown"])
-}
-
-/// The text from `from` up to `to` (or the end).
-fn between<'t>(text: &'t str, from: &str, to: &str) -> &'t str {
-    let start = text
-        .find(from)
-        .unwrap_or_else(|| panic!("{from} in {text}"));
-    let rest = &text[start..];
-    &rest[..rest.find(to).unwrap_or(rest.len())]
-}
+use crate::support::{between, markdown_handout as handout};
 
 #[test]
 fn the_disc_on_the_cart_is_drawn_alone_with_the_force_asked_for_in_every_method() {

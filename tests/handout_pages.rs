@@ -19,12 +19,8 @@ const MOST_PAGES: usize = 4;
 const STILL_LONGER: &[(&str, usize)] = &[
     ("gyroscope-gimbal-kane", 5),
     ("gyroscope-gimbal-motion-law", 5),
-    ("heavy-symmetric-top-kane", 5),
     ("rolling-coin-kane", 5),
-    ("unbalanced-disk-shaft-motion-law", 5),
     ("wheel-pendulum-kane", 5),
-    ("wheel-pendulum-lagrange", 5),
-    ("wheel-pendulum-motion-law", 5),
 ];
 
 /// The most pages the handout `name` may take.

@@ -4,18 +4,10 @@
 //! fixed unit vectors are of one instant, and the energy traded is the range of T that
 //! `simulate` gives, to the figures printed.
 
-use crate::support::{explain, problem, run};
+use crate::support::{between, explain, problem, run};
 
 fn handout(name: &str, method: &str) -> String {
     explain(name, &["--method", method])
-}
-
-fn between<'t>(text: &'t str, from: &str, to: &str) -> &'t str {
-    let start = text.find(from).unwrap_or_else(|| panic!("no {from}"));
-    let rest = &text[start..];
-    &rest[..rest[from.len()..]
-        .find(to)
-        .map_or(rest.len(), |i| i + from.len())]
 }
 
 /// The four-bar's free body B, about P: the coupler carries −F^R at R (F^R acts on the

@@ -5,21 +5,7 @@
 //! matrix's letter names nothing else, an elimination is shown, and an energy has its
 //! datum. Numbers are checked against values worked out here.
 
-use crate::support::{explain, run_json};
-
-/// The markdown handout of a bundled problem by `method`.
-fn handout(name: &str, method: &str) -> String {
-    explain(name, &["--method", method, "--format", "markdown"])
-}
-
-/// The text from `from` up to `to` (or the end).
-fn between<'t>(text: &'t str, from: &str, to: &str) -> &'t str {
-    let start = text
-        .find(from)
-        .unwrap_or_else(|| panic!("{from} in {text}"));
-    let rest = &text[start..];
-    &rest[..rest.find(to).unwrap_or(rest.len())]
-}
+use crate::support::{between, markdown_handout as handout, run_json};
 
 #[test]
 fn the_sliding_ball_is_solved_by_the_rows_that_hold_while_it_slides() {

@@ -3,20 +3,11 @@
 //! bodies by the worked solution's letters; Lagrange's matrix rule naming its own method.
 
 use super::fixture;
-use crate::support::{explain, run};
+use crate::support::{explain, explain_file, run};
 
 /// `explain` of tests/fresh_problems/NAME.json with `args`.
 fn explained(name: &str, args: &[&str]) -> String {
-    let path = fixture(name);
-    let mut all = vec![std::ffi::OsStr::new("explain"), path.as_os_str()];
-    all.extend(args.iter().map(std::ffi::OsStr::new));
-    let out = run(&all);
-    assert!(
-        out.status.success(),
-        "{name}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("UTF-8")
+    explain_file(&fixture(name), args)
 }
 
 /// The Answers' part of a handout.

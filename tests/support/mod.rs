@@ -191,16 +191,35 @@ pub mod mathml;
 
 /// `mbd-tutor explain problems/NAME.json ARGS…`: its standard output, failing with its stderr.
 pub fn explain(name: &str, args: &[&str]) -> String {
-    let path = problem(name);
+    explain_file(&problem(name), args)
+}
+
+/// `explain PATH ARGS…`'s standard output; the run must succeed.
+pub fn explain_file(path: &Path, args: &[&str]) -> String {
     let mut all = vec![std::ffi::OsStr::new("explain"), path.as_os_str()];
     all.extend(args.iter().map(std::ffi::OsStr::new));
     let out = run(&all);
     assert!(
         out.status.success(),
-        "{name}: {}",
+        "{}: {}",
+        path.display(),
         String::from_utf8_lossy(&out.stderr)
     );
     String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// The Markdown handout of the bundled problem `name` by `method`.
+pub fn markdown_handout(name: &str, method: &str) -> String {
+    explain(name, &["--method", method, "--format", "markdown"])
+}
+
+/// The text from `from` up to `to` (or the end); `from` must be there.
+pub fn between<'t>(text: &'t str, from: &str, to: &str) -> &'t str {
+    let start = text
+        .find(from)
+        .unwrap_or_else(|| panic!("{from} in {text}"));
+    let rest = &text[start..];
+    &rest[..rest.find(to).unwrap_or(rest.len())]
 }
 
 /// The HTML page without step 6's motion controls, the one script the page may hold
