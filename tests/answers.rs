@@ -443,8 +443,9 @@ fn the_student_handout_has_blanks_for_every_step_and_no_answers() {
 }
 
 /// Compiles `file` with pdflatex in its directory.
-fn compiles(file: &std::path::Path) -> bool {
-    Command::new("pdflatex")
+/// Compiles `file` with pdflatex; on failure, the log's error lines and pdflatex's status.
+fn compiles(file: &std::path::Path) -> Result<(), String> {
+    let output = Command::new("pdflatex")
         .args([
             "-interaction=nonstopmode",
             "-halt-on-error",
@@ -453,10 +454,14 @@ fn compiles(file: &std::path::Path) -> bool {
         .arg(file.file_name().expect("a file"))
         .current_dir(file.parent().expect("a directory"))
         .stdin(Stdio::null())
-        .stdout(Stdio::null())
         .output()
-        .map(|o| o.status.success())
-        .unwrap_or(false)
+        .map_err(|e| format!("pdflatex does not run: {e}"))?;
+    if output.status.success() {
+        return Ok(());
+    }
+    let log = std::fs::read_to_string(file.with_extension("log")).unwrap_or_default();
+    let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
+    Err(format!("{}: {errors:?}", output.status))
 }
 
 #[test]
@@ -503,11 +508,12 @@ fn both_versions_come_from_one_run_and_compile() {
             "{name}"
         );
         if present {
-            assert!(
-                compiles(&out_file),
-                "{name}: the worked solution does not compile"
-            );
-            assert!(compiles(&student), "{name}: the handout does not compile");
+            if let Err(why) = compiles(&out_file) {
+                panic!("{name}: the worked solution does not compile: {why}");
+            }
+            if let Err(why) = compiles(&student) {
+                panic!("{name}: the handout does not compile: {why}");
+            }
         }
     }
     // Without -o there is nowhere to put two files.
