@@ -71,8 +71,9 @@ fn two_part_names_compile_by_every_method() {
             );
             let source = std::fs::read_to_string(&tex).expect("written");
             assert!(!source.contains("}_{L_{4}}"), "{name}: a double subscript");
+            // The worksheet leaves the closure's rows blank.
             assert!(
-                source.contains("J_{4,L_{4}}"),
+                student || source.contains("J_{4,L_{4}}"),
                 "{name}: J4 of L4 in one group"
             );
             pdflatex(&dir, &name);

@@ -339,14 +339,15 @@ async function shapes(expectedPath, files) {
       if (!want) continue;
       seen[body.id] = (seen[body.id] || 0) + 1;
       const [w, h] = body.box;
-      const long = Math.max(w, h); const thick = Math.min(w, h);
-      let fine = body.shape === want.shape && thick >= (want.thick || 2) && long >= 12;
+      // A rod's box is its diagonal's; a block's its sides.
+      const long = Math.hypot(w, h); const thick = Math.min(w, h);
+      let fine = body.shape === want.shape && long >= 12 && (!want.thick || thick >= want.thick);
       let what = `${body.shape} of ${w.toFixed(1)} by ${h.toFixed(1)}`;
       if (want.length) {
         // A bar drawn from pin to pin: as long as the bar at the picture's scale, give or
         // take the stroke's round caps.
         const bar = want.length * body.scale;
-        fine = fine && long >= 0.95 * bar && Math.hypot(w, h) <= bar + 16;
+        fine = fine && long >= 0.95 * bar && long <= bar + 16;
         what += `, the bar ${bar.toFixed(1)} long`;
       }
       if (want.elongated) {
