@@ -3,8 +3,9 @@
 //! the dots of q̇ and q̈ are drawn, above their letters, unclipped, inked, inside fractions
 //! and brackets; the bowling ball's sliding friction points against the slip; no two force
 //! arrows of a free body lie on top of each other; unit vectors stand clear of bodies and
-//! pins; no two labels overlap. Skipped with a notice when Chromium,
-//! node or `tests/browser/node_modules` is missing and `CI` is unset.
+//! pins; no two labels overlap; the rack, the cart and the four-bar's links are drawn as
+//! their shapes. Skipped with a notice when Chromium, node or `tests/browser/node_modules`
+//! is missing and `CI` is unset.
 
 use crate::support::{all_problems, problem, run, METHODS};
 use std::path::{Path, PathBuf};
