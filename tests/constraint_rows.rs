@@ -172,9 +172,8 @@ fn surface_fault(
     if sticking != (friction && kind == "no slip") {
         return wrong("\"while it sticks\" where there is friction, and only there");
     }
-    let Some(direction) = direction else {
-        return None;
-    };
+    // A row without a direction (the plan's) has nothing more to read.
+    let direction = direction?;
     let Some(d) = unit(direction) else {
         return wrong("not along one unit vector");
     };
