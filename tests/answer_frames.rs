@@ -40,6 +40,62 @@ fn component(answer: &Value, axis: &str) -> f64 {
     answer["components"][axis].as_f64().unwrap_or(0.0)
 }
 
+/// `solve`'s text line of a reaction: the frame it names and the force's components.
+fn solved_force(path: &std::path::Path, joint: &str) -> (String, [f64; 3]) {
+    let out = run(&["solve".as_ref(), path.as_os_str()]);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with(&format!("{joint}: force [")))
+        .unwrap_or_else(|| panic!("no line of {joint} in {text}"));
+    let inside = &line[line.find('[').expect("[") + 1..line.find(']').expect("]")];
+    let v: Vec<f64> = inside
+        .split(',')
+        .map(|x| x.trim().parse().expect("a number"))
+        .collect();
+    let frame = line
+        .rsplit_once('(')
+        .and_then(|(_, f)| f.strip_suffix("'s unit vectors)"))
+        .unwrap_or_else(|| panic!("no frame named: {line}"));
+    (frame.to_string(), [v[0], v[1], v[2]])
+}
+
+/// `solve` prints a few digits: the components to its last one.
+fn printed_close(found: f64, expected: f64, what: &str) {
+    assert!(
+        (found - expected).abs() <= 1e-4 * expected.abs().max(1.0),
+        "{what}: {found} against {expected}"
+    );
+}
+
+/// The handout's Answers label the reaction's components with the unit vectors of each
+/// frame the questions give them in (`letters`: a, b, n), and with no other frame's.
+fn labels_in_the_handout(path: &std::path::Path, joint: &str, letters: &[&str]) {
+    let out = run(&[
+        "explain".as_ref(),
+        path.as_os_str(),
+        "--format".as_ref(),
+        "markdown".as_ref(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let answers = &text[text.rfind("## Answers").expect("the Answers")..];
+    for letter in ["a", "b", "c", "n"] {
+        let label = format!(
+            "\\mathbf{{F}}^{{\\mathrm{{{joint}}}}} \\cdot \\hat{{\\mathbf{{{letter}}}}}_{{x}}"
+        );
+        assert_eq!(
+            answers.contains(&label),
+            letters.contains(&letter),
+            "{joint}: {label} in {answers}"
+        );
+    }
+}
+
 fn state(answer: &Value, name: &str) -> f64 {
     answer["state"][name].as_f64().expect("state value")
 }
@@ -55,10 +111,16 @@ fn the_gear_pairs_tooth_force_names_the_pinions_frame_and_turns_into_n() {
         .as_array_mut()
         .expect("questions")
         .push(json!({ "reaction": "mesh" }));
-    let found = answers(&scratch("gear", &p));
+    let path = scratch("gear", &p);
+    let found = answers(&path);
     let (own, in_n) = (&found[2], &found[1]);
     let force = 0.03 * (1.2 / (0.002 + 0.03 / 9.0)) / 3.0 / 0.15;
     close(force, 15.0, "the tooth force by hand");
+    // `solve`'s text: the same components, naming the pinion's frame.
+    let (frame, f) = solved_force(&path, "mesh");
+    assert_eq!(frame, "A");
+    printed_close(f[0], force * 0.3f64.sin(), "solve's â_x");
+    printed_close(f[1], force * 0.3f64.cos(), "solve's â_y");
     assert_eq!(own["frame"], "A");
     close(component(own, "x"), force * 0.3f64.sin(), "â_x");
     close(component(own, "y"), force * 0.3f64.cos(), "â_y");
@@ -80,7 +142,8 @@ fn the_double_pendulums_elbow_in_a_and_in_n() {
         { "reaction": "P" },
         { "reaction": "P", "in": "N" }
     ]);
-    let found = answers(&scratch("elbow", &p));
+    let path = scratch("elbow", &p);
+    let found = answers(&path);
     let constant = |name: &str| p["constants"][name]["value"].as_f64().expect("constant");
     let (l1, l2, m2, g) = (
         constant("L1"),
@@ -117,6 +180,11 @@ fn the_double_pendulums_elbow_in_a_and_in_n() {
         -fx * q1.sin() + fy * q1.cos(),
         "elbow â_y",
     );
+    let (frame, f) = solved_force(&path, "P");
+    assert_eq!(frame, "A");
+    printed_close(f[0], fx * q1.cos() + fy * q1.sin(), "solve's elbow â_x");
+    printed_close(f[1], -fx * q1.sin() + fy * q1.cos(), "solve's elbow â_y");
+    labels_in_the_handout(&path, "P", &["a", "n"]);
 }
 
 /// The four-bar's closure R: the coupler's force on the rocker, in the coupler's unit
@@ -130,7 +198,8 @@ fn the_four_bars_closure_in_b_and_in_n() {
         { "reaction": "R" },
         { "reaction": "R", "in": "N" }
     ]);
-    let found = answers(&scratch("four-bar", &p));
+    let path = scratch("four-bar", &p);
+    let found = answers(&path);
     let constant = |name: &str| p["constants"][name]["value"].as_f64().expect("constant");
     let (c, m, g) = (constant("c"), constant("m"), constant("g"));
     let (q1, q2, q3) = (
@@ -160,6 +229,11 @@ fn the_four_bars_closure_in_b_and_in_n() {
         -fx * b.sin() + fy * b.cos(),
         "R along b̂_y",
     );
+    let (frame, f) = solved_force(&path, "R");
+    assert_eq!(frame, "B");
+    printed_close(f[0], fx * b.cos() + fy * b.sin(), "solve's b̂_x");
+    printed_close(f[1], -fx * b.sin() + fy * b.cos(), "solve's b̂_y");
+    labels_in_the_handout(&path, "R", &["b", "n"]);
 }
 
 /// The key's columns name the frame; the handout's Answers write its unit vectors.

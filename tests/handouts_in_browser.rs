@@ -3,8 +3,9 @@
 //! the dots of q̇ and q̈ are drawn, above their letters, unclipped, inked, inside fractions
 //! and brackets; the bowling ball's sliding friction points against the slip; no two force
 //! arrows of a free body lie on top of each other; unit vectors stand clear of bodies and
-//! pins; no two labels overlap. Skipped with a notice when Chromium,
-//! node or `tests/browser/node_modules` is missing and `CI` is unset.
+//! pins; no two labels overlap; the rack, the cart and the four-bar's links are drawn as
+//! their shapes. Skipped with a notice when Chromium, node or `tests/browser/node_modules`
+//! is missing and `CI` is unset.
 
 use crate::support::{all_problems, problem, run, METHODS};
 use std::path::{Path, PathBuf};
@@ -262,5 +263,59 @@ fn no_two_labels_of_a_picture_overlap() {
         }
     }
     node("labels", &drawn);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The bodies of the free bodies drawn as their shapes, not as points: the rack a bar along
+/// its motion, the cart a block, each of the four-bar's links a rod from pin to pin, as
+/// long as the bar (a = 0.1 m, b = 0.3 m, c = 0.25 m), in `draw`'s free bodies and in the
+/// handouts' (every method).
+#[test]
+fn the_rack_the_cart_and_the_links_are_drawn_as_shapes() {
+    if !ready("shapes") {
+        return;
+    }
+    let dir = scratch("shapes");
+    let expected = dir.join("expected.json");
+    std::fs::write(
+        &expected,
+        serde_json::json!({ "bodies": {
+            "R": { "shape": "block", "elongated": 3, "thick": 4 },
+            "C": { "shape": "block", "thick": 10 },
+        } })
+        .to_string(),
+    )
+    .expect("write");
+    let links = dir.join("links.json");
+    std::fs::write(
+        &links,
+        serde_json::json!({ "bodies": {
+            "A": { "shape": "rod", "length": 0.1 },
+            "B": { "shape": "rod", "length": 0.3 },
+            "C": { "shape": "rod", "length": 0.25 },
+        } })
+        .to_string(),
+    )
+    .expect("write");
+    for (names, wanted) in [
+        (&["rack-and-pinion", "disc-on-cart"][..], &expected),
+        (&["four-bar"][..], &links),
+    ] {
+        let mut args = vec![wanted.clone()];
+        for name in names {
+            for method in METHODS {
+                args.extend(
+                    pictures(&problem(name), method, &dir, false)
+                        .into_iter()
+                        .filter(|p| {
+                            p.file_name()
+                                .is_some_and(|n| n.to_string_lossy().starts_with("fbd-"))
+                        }),
+                );
+                args.push(handout(&problem(name), method, &dir));
+            }
+        }
+        node("shapes", &args);
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -80,10 +80,14 @@ fn step_one_gives_the_assembled_state_of_every_constrained_problem() {
         assert!(out.status.success(), "{}", path.display());
         let text = String::from_utf8_lossy(&out.stdout).into_owned();
         let rows = table(&text);
+        let given_problem = mbd_tutor::problem::load_file(&path).expect("a bundled problem");
         let names = names(&path);
         assert_eq!(rows.len(), names.len(), "{}", path.display());
         for (name, (value, rate)) in names.iter().zip(&rows) {
-            for (cell, key) in [(value, name.clone()), (rate, format!("{name}'"))] {
+            for (cell, key, given) in [
+                (value, name.clone(), "initial"),
+                (rate, format!("{name}'"), "rate"),
+            ] {
                 let expected = solved["state"][&key].as_f64().expect("state");
                 let (shown, half) = printed(cell);
                 assert!(
@@ -91,7 +95,35 @@ fn step_one_gives_the_assembled_state_of_every_constrained_problem() {
                     "{}: {key} printed `{cell}`, solved {expected}",
                     path.display()
                 );
+                // And printed to the handout's six significant digits: a starting guess
+                // written short (q₂ = −0.65 for −0.65053, z = 0.1 for 0.0955336) is
+                // within half its own last digit, but not the assembled value.
+                assert!(
+                    (shown - expected).abs() <= 5.000_001e-6 * expected.abs() + 1e-9,
+                    "{}: {key} printed `{cell}`, not the solved {expected} to six digits",
+                    path.display()
+                );
+                // A value other than the one the problem gives (a rate solved from the
+                // velocity constraints, the gear's q̇_B = −2 rad/s where none is given) is
+                // marked as solved too.
+                // As the problem gives it (an expression of constants evaluated, left out 0).
+                let coordinate = (given_problem.coordinates.iter())
+                    .find(|c| c.name == *name)
+                    .expect("a coordinate of the problem");
+                let written = if given == "rate" {
+                    coordinate.rate
+                } else {
+                    coordinate.initial
+                };
+                let solved = (written - expected).abs() > 1e-9;
                 let dependent = problem["coordinates"][name]["dependent"] == true;
+                // ‡: a prescribed motion's value at the start.
+                if solved && !cell.ends_with(['†', '‡']) {
+                    panic!(
+                        "{}: {key} printed `{cell}` unmarked, not the {given} given ({written})",
+                        path.display()
+                    );
+                }
                 if dependent {
                     assert!(cell.ends_with('†'), "{}: {cell}", path.display());
                     assert!(

@@ -47,32 +47,37 @@ fn two_part_names_compile_by_every_method() {
     let dir = scratch("latex");
     let problem = names_with_a_loop(&dir);
     for method in METHODS {
-        let tex = dir.join(format!("{method}.tex"));
-        let out = run(&[
-            "explain".as_ref(),
-            problem.as_os_str(),
-            "--method".as_ref(),
-            method.as_ref(),
-            "--format".as_ref(),
-            "latex".as_ref(),
-            "-o".as_ref(),
-            tex.as_os_str(),
-        ]);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let source = std::fs::read_to_string(&tex).expect("written");
-        assert!(
-            !source.contains("}_{L_{4}}"),
-            "{method}: a double subscript"
-        );
-        assert!(
-            source.contains("J_{4,L_{4}}"),
-            "{method}: J4 of L4 in one group"
-        );
-        pdflatex(&dir, method);
+        for student in [false, true] {
+            let name = format!("{method}{}", if student { "-student" } else { "" });
+            let tex = dir.join(format!("{name}.tex"));
+            let mut args = vec![
+                "explain".as_ref(),
+                problem.as_os_str(),
+                "--method".as_ref(),
+                method.as_ref(),
+                "--format".as_ref(),
+                "latex".as_ref(),
+                "-o".as_ref(),
+                tex.as_os_str(),
+            ];
+            if student {
+                args.push("--student".as_ref());
+            }
+            let out = run(&args);
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let source = std::fs::read_to_string(&tex).expect("written");
+            assert!(!source.contains("}_{L_{4}}"), "{name}: a double subscript");
+            // The worksheet leaves the closure's rows blank.
+            assert!(
+                student || source.contains("J_{4,L_{4}}"),
+                "{name}: J4 of L4 in one group"
+            );
+            pdflatex(&dir, &name);
+        }
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -11,6 +11,9 @@
 //   triads SVG...             each frame's unit vectors (g.triad) clear of every body's
 //                             outline and every pin
 //   labels SVG...             no label of a picture overlaps another
+//   shapes EXPECTED SVG...    each body of EXPECTED.bodies drawn in a picture is its shape
+//                             (data-shape), not a point: a rod as long as the bar, a block
+//                             of some size, a bar (elongated) longer than thick
 'use strict';
 const { chromium } = require('playwright-core');
 
@@ -312,9 +315,56 @@ async function labels(files) {
   });
 }
 
+// Each body group of a picture, as laid out: its id, data-shape, box (the picture's units)
+// and the picture's scale (its units per metre, from data-projection's first row).
+function measureBodies() {
+  const out = [];
+  for (const svg of document.querySelectorAll('svg')) {
+    const n = (svg.getAttribute('data-projection') || '').split(/\s+/).map(Number);
+    const scale = Math.hypot(n[0] || 0, n[1] || 0, n[2] || 0);
+    for (const g of svg.querySelectorAll('g.body')) {
+      const b = g.getBBox();
+      out.push({ id: g.id, shape: g.getAttribute('data-shape'), box: [b.width, b.height], scale });
+    }
+  }
+  return out;
+}
+
+async function shapes(expectedPath, files) {
+  const expected = JSON.parse(require('fs').readFileSync(expectedPath, 'utf8')).bodies;
+  const seen = {};
+  await each(files, async (page, file) => {
+    for (const body of await page.evaluate(measureBodies)) {
+      const want = expected[body.id.replace(/^body-/, '')];
+      if (!want) continue;
+      seen[body.id] = (seen[body.id] || 0) + 1;
+      const [w, h] = body.box;
+      // A rod's box is its diagonal's; a block's its sides.
+      const long = Math.hypot(w, h); const thick = Math.min(w, h);
+      let fine = body.shape === want.shape && long >= 12 && (!want.thick || thick >= want.thick);
+      let what = `${body.shape} of ${w.toFixed(1)} by ${h.toFixed(1)}`;
+      if (want.length) {
+        // A bar drawn from pin to pin: as long as the bar at the picture's scale, give or
+        // take the stroke's round caps.
+        const bar = want.length * body.scale;
+        fine = fine && long >= 0.95 * bar && long <= bar + 16;
+        what += `, the bar ${bar.toFixed(1)} long`;
+      }
+      if (want.elongated) {
+        fine = fine && w >= want.elongated * h;
+        what += `, ${want.elongated} times as long as thick`;
+      }
+      check(fine, `${file}: ${body.id} drawn as a ${want.shape} (${what})`);
+    }
+  });
+  for (const name of Object.keys(expected)) {
+    check(seen[`body-${name}`] > 0, `body ${name} drawn in ${seen[`body-${name}`] || 0} of the pictures`);
+  }
+}
+
 (async () => {
   const [mode, ...args] = process.argv.slice(2);
-  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels };
+  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels, shapes: (a) => shapes(a[0], a.slice(1)) };
   if (!modes[mode]) { console.log(`unknown mode ${mode}`); process.exit(2); }
   try {
     await modes[mode](args);
