@@ -228,4 +228,31 @@ mod tests {
         check("ln(q1)", "q1'/q1");
         check("atan2(q1, q2)", "(q2*q1' - q1*q2')/(q1^2+q2^2)");
     }
+
+    /// A sine and a named rate each one node under several parents (as the kinematics
+    /// builds them): each use differentiated alike, as by hand. With s = sin q1 and
+    /// w = q1' + q2' (named), d/dt (L s w + m s q2 + s w)
+    /// = L (c q1' w + s (q1'' + q2'')) + m (c q1' q2 + s q2') + c q1' w + s (q1'' + q2'').
+    #[test]
+    fn shared_parts_differentiate_as_each_use_alone() {
+        let q = |n: &str, k: u8| Expr::coord(n, k);
+        let (l, m) = (Expr::constant("L"), Expr::constant("m"));
+        let s = sin(q("q1", 0));
+        let c = cos(q("q1", 0));
+        let w = Expr::defined("w", &q("q1", 1) + &q("q2", 1));
+        let e = add([
+            mul([l.clone(), s.clone(), w.clone()]),
+            mul([m.clone(), s.clone(), q("q2", 0)]),
+            mul([s.clone(), w.clone()]),
+        ]);
+        let dw = &q("q1", 2) + &q("q2", 2);
+        let ds = mul([c, q("q1", 1)]);
+        let d_sw = &mul([ds.clone(), w]) + &mul([s.clone(), dw]);
+        let by_hand = add([
+            mul([l, d_sw.clone()]),
+            mul([m, &mul([ds, q("q2", 0)]) + &mul([s, q("q2", 1)])]),
+            d_sw,
+        ]);
+        assert_eq!(time_derivative(&e).unwrap(), by_hand);
+    }
 }
