@@ -65,6 +65,9 @@ fn mbd(args: &[&std::ffi::OsStr]) -> String {
     String::from_utf8_lossy(&output.stdout).into_owned()
 }
 
+/// The pendulum served: an edit shows in the page without a reload, within explain's own
+/// time for the file + 0.3 s of the save; a broken file shows its error, a fixed one the
+/// solution again.
 #[test]
 fn a_served_page_follows_the_file_through_an_error_and_back() {
     if !ready("serve") {
