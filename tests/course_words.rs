@@ -12,15 +12,14 @@ use crate::support::METHODS;
 use std::path::PathBuf;
 
 /// Words a course does not use in a handout.
-const NOT_COURSE_WORDS: [&str; 30] = [
+const NOT_COURSE_WORDS: [&str; 29] = [
     // Words an instructor would edit out: the program's tree of joints, a state's flag,
-    // the name of a row for a condition, what the program did not write, a frame's
-    // alignment in the program's words, an operation on a row with its numbers.
+    // the name of a row for a condition, what the program did not write, an operation on
+    // a row with its numbers.
     "joint of the tree",
     "(held)",
     "no-slip row",
     "is left out",
-    "aligned relative to",
     "(multiplied by",
     // A bound of the simulation's rounding said in prose (10⁻⁹ J).
     "changes by less than",

@@ -41,7 +41,8 @@ fn in_numbers(text: &str) -> InNumbers {
     let found = matrices(block);
     assert!(found.len() >= 3, "the system: {block}");
     let column = |m: &Vec<Vec<String>>| -> Vec<String> { m.iter().map(|r| r[0].clone()).collect() };
-    let values = |m: &Vec<Vec<String>>| -> Vec<f64> { column(m).iter().map(|c| number(c)).collect() };
+    let values =
+        |m: &Vec<Vec<String>>| -> Vec<f64> { column(m).iter().map(|c| number(c)).collect() };
     InNumbers {
         a: (found[0].iter())
             .map(|row| row.iter().map(|c| number(c)).collect())
@@ -80,7 +81,12 @@ fn close(got: f64, want: f64, what: &str) {
 fn residual_small(system: &InNumbers) {
     for (i, row) in system.a.iter().enumerate() {
         let ax: f64 = row.iter().zip(&system.x).map(|(a, x)| a * x).sum();
-        let scale: f64 = 1.0 + row.iter().zip(&system.x).map(|(a, x)| (a * x).abs()).sum::<f64>();
+        let scale: f64 = 1.0
+            + row
+                .iter()
+                .zip(&system.x)
+                .map(|(a, x)| (a * x).abs())
+                .sum::<f64>();
         assert!(
             (ax - system.b[i]).abs() <= 1e-4 * scale,
             "row {}: A x = {ax}, b = {}",
@@ -117,7 +123,7 @@ fn lagranges_reaction_rows_are_derived_and_agree_with_newton_euler() {
     for words in [
         "by an auxiliary coordinate $\\xi_{3}$, zero in the motion",
         "Q_{\\xi_{3}} - \\frac{\\partial V}{\\partial \\xi_{3}}",
-        "Lagrange's equation of the auxiliary coordinate, at zero coordinate and rate:",
+        "Lagrange's equation of the auxiliary coordinate, at zero coordinate and rate, solved for the reaction:",
     ] {
         assert!(step5.contains(words), "{words} in {step5}");
     }
@@ -129,10 +135,11 @@ fn lagranges_reaction_rows_are_derived_and_agree_with_newton_euler() {
     close(value(&system, "F^{O}_{y}"), force[1], "F_y");
 }
 
-/// The four-bar's system by the Motion Law: its second derivatives are `solve`'s.
+/// The four-bar by Kane's method: the rows without a reaction give the second derivatives
+/// first, a 3×3 in numbers, and they are `solve`'s (by the Motion Law's equations).
 #[test]
 fn the_four_bars_system_is_solved_with_the_numbers_of_solve() {
-    let text = markdown_handout("four-bar", "motion-law");
+    let text = markdown_handout("four-bar", "kane");
     let system = in_numbers(&text);
     residual_small(&system);
     let solved = solve("four-bar", "motion-law", &[]);
@@ -143,7 +150,11 @@ fn the_four_bars_system_is_solved_with_the_numbers_of_solve() {
     for (name, want) in accelerations {
         let tex = format!("\\ddot{{q}}_{{{}}}", name.trim_start_matches('q'));
         if system.names.contains(&tex) {
-            close(value(&system, &tex), want.as_f64().unwrap_or(f64::NAN), name);
+            close(
+                value(&system, &tex),
+                want.as_f64().unwrap_or(f64::NAN),
+                name,
+            );
             compared += 1;
         }
     }

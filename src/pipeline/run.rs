@@ -5,11 +5,11 @@
 use super::{answers, answers_from, confirm, derive, impact, memo, Linearizer, Purpose, Solver};
 use crate::equations::{Derivation, LinearSystem, Method};
 use crate::error::Error;
+use crate::numeric::solve_linear;
 use crate::numeric::{
     simulate, Answer, Check, Frame, Linearization, SolveError, StateSolution, System, Trajectory,
     DEFAULT_FPS,
 };
-use crate::numeric::solve_linear;
 use crate::problem::{Problem, QuestionKind, State};
 use crate::symbolic::eval;
 use nalgebra::{DMatrix, DVector};

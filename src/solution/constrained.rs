@@ -95,7 +95,9 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         let (site, what) = row.split_once('.').unwrap_or((row.as_str(), "position"));
         match dropped_in_words(&derivation.model, site, what) {
             Some(words) => words,
-            None => format!("The {what} constraint at {site} is not needed: {why}.").replace('`', ""),
+            None => {
+                format!("The {what} constraint at {site} is not needed: {why}.").replace('`', "")
+            }
         }
     }));
     notes.extend(constraints.relations.iter().map(|(name, relation)| {

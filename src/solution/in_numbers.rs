@@ -24,7 +24,10 @@ fn value(x: f64) -> String {
 /// `\begin{bmatrix} a \\ b \end{bmatrix}` of rows of cells.
 fn bmatrix(rows: &[Vec<String>]) -> String {
     let rows: Vec<String> = rows.iter().map(|r| r.join(" & ")).collect();
-    format!("\\begin{{bmatrix}} {} \\end{{bmatrix}}", rows.join(" \\\\ "))
+    format!(
+        "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
+        rows.join(" \\\\ ")
+    )
 }
 
 /// A column of cells as a `bmatrix`.
@@ -40,7 +43,12 @@ fn width(cells: &[&String]) -> usize {
 
 /// Whether `x` solves the numbers `a x = b` to rounding, and gives the second derivatives
 /// the solve of the whole handout found (`accelerations`, in coordinate order).
-fn agrees(worked: &Worked, system: &LinearSystem, (a, b): (&[Vec<f64>], &[f64]), x: &[f64]) -> bool {
+fn agrees(
+    worked: &Worked,
+    system: &LinearSystem,
+    (a, b): (&[Vec<f64>], &[f64]),
+    x: &[f64],
+) -> bool {
     let residual_small = a.iter().zip(b).all(|(row, &bi)| {
         let terms: Vec<f64> = row.iter().zip(x).map(|(aij, xj)| aij * xj).collect();
         let scale = 1.0 + bi.abs() + terms.iter().map(|t| t.abs()).sum::<f64>();
@@ -93,7 +101,9 @@ fn written_block(system: &LinearSystem) -> Option<(Vec<usize>, Vec<usize>)> {
     if n <= MOST_WRITTEN {
         return Some(((0..n).collect(), (0..n).collect()));
     }
-    let reactions: Vec<usize> = (0..n).filter(|&j| is_reaction(&system.unknowns[j])).collect();
+    let reactions: Vec<usize> = (0..n)
+        .filter(|&j| is_reaction(&system.unknowns[j]))
+        .collect();
     let accelerations: Vec<usize> = (0..n).filter(|j| !reactions.contains(j)).collect();
     let free: Vec<usize> = (0..system.a.len())
         .filter(|&i| reactions.iter().all(|&j| system.a[i][j].is_zero()))
@@ -139,7 +149,12 @@ pub fn in_numbers(
         .collect();
     let b_tex: Vec<String> = rows.iter().map(|&i| value(b[i])).collect();
     let x_tex: Vec<String> = columns.iter().map(|&j| value(x[j])).collect();
-    let system_tex = format!("{} {} = {}", bmatrix(&a_tex), column(&names), column(&b_tex));
+    let system_tex = format!(
+        "{} {} = {}",
+        bmatrix(&a_tex),
+        column(&names),
+        column(&b_tex)
+    );
     let solution_tex = format!("{} = {}", column(&names), column(&x_tex));
     let widths: usize = (0..names.len())
         .map(|k| width(&a_tex.iter().map(|r| &r[k]).collect::<Vec<_>>()))
@@ -151,7 +166,9 @@ pub fn in_numbers(
     // Side by side where they fit; else the solution in a line of its own, as a list.
     let mut closed = Vec::new();
     let displays = match total <= WIDEST {
-        true => vec![format!("{system_tex} \\quad \\Rightarrow \\quad {solution_tex}")],
+        true => vec![format!(
+            "{system_tex} \\quad \\Rightarrow \\quad {solution_tex}"
+        )],
         false => {
             let pairs: Vec<String> = (names.iter().zip(&x_tex))
                 .map(|(n, v)| format!("{n} = {v}"))
@@ -168,9 +185,15 @@ pub fn in_numbers(
             .filter(|j| !columns.contains(j))
             .map(|j| format!("{} = {}", all_names[j], value(x[j])))
             .collect();
-        let (verb, list) = (if rest.len() == 1 { "gives" } else { "give" }, math_list(&others));
+        let (verb, list) = (
+            if rest.len() == 1 { "gives" } else { "give" },
+            math_list(&others),
+        );
         let rows_word = if rest.len() == 1 { "row" } else { "rows" };
-        closed.push(format!("With these, {rows_word} {} {verb} {list}.", row_list(&rest)));
+        closed.push(format!(
+            "With these, {rows_word} {} {verb} {list}.",
+            row_list(&rest)
+        ));
     }
     let problem = worked.derivation.model.problem;
     let gives_accelerations = (0..problem.coordinates.len())
@@ -187,7 +210,11 @@ pub fn in_numbers(
 fn lead(worked: &Worked, system: &LinearSystem, rows: &[usize], names: &[String]) -> String {
     let state = "At the initial state of step 1, in SI units,";
     if rows.len() < system.a.len() {
-        return format!("{state} rows {} give {} first:", row_list(rows), math_list(names));
+        return format!(
+            "{state} rows {} give {} first:",
+            row_list(rows),
+            math_list(names)
+        );
     }
     if super::solve_words::order(&worked.derivation).is_some() {
         // The order of the solve is said above.
@@ -195,7 +222,10 @@ fn lead(worked: &Worked, system: &LinearSystem, rows: &[usize], names: &[String]
     }
     match rows.len() {
         1 => format!("{state} row (1) gives {}:", math_list(names)),
-        n => format!("{state} rows (1) to ({n}) are solved together for {}:", math_list(names)),
+        n => format!(
+            "{state} rows (1) to ({n}) are solved together for {}:",
+            math_list(names)
+        ),
     }
 }
 
@@ -220,30 +250,37 @@ fn closed_forms(
     let zero = zero_rates(worked);
     let model = &worked.derivation.model;
     let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
-    let at_rest = |e: &Expr| {
-        simplify(&substitute(e, &|s| {
-            zero.contains(s).then(Expr::zero)
-        }))
-    };
+    let at_rest = |e: &Expr| simplify(&substitute(e, &|s| zero.contains(s).then(Expr::zero)));
     let mut given: Vec<usize> = Vec::new();
     let mut out = Vec::new();
     for (i, row) in system.a.iter().enumerate() {
         let entries: Vec<Expr> = row.iter().map(|e| at_rest(&shown(e))).collect();
-        let nonzero: Vec<usize> = (0..entries.len()).filter(|&j| !entries[j].is_zero()).collect();
+        let nonzero: Vec<usize> = (0..entries.len())
+            .filter(|&j| !entries[j].is_zero())
+            .collect();
         let [j] = nonzero[..] else { continue };
         if given.contains(&j) {
             continue;
         }
         let (aij, bi) = (&entries[j], at_rest(&shown(&system.b[i])));
         let form = simplify(&(&bi / aij));
+        // The coefficient written with a leading plus sign: −b/−a as b/a.
+        let negative = aij.terms()[0].split_coefficient().0.is_negative();
+        let (bi, aij) = match negative {
+            true => (simplify(&-&bi), simplify(&-aij)),
+            false => (bi, aij.clone()),
+        };
         let number = crate::symbolic::eval(&form, &at_start);
         if (number - x[j]).abs() > 1e-6 * (1.0 + x[j].abs()) {
             continue;
         }
-        let form_tex = [format!("\\frac{{{}}}{{{}}}", latex(&bi), latex(aij)), latex(&form)]
-            .into_iter()
-            .min_by_key(String::len)
-            .unwrap_or_default();
+        let form_tex = [
+            format!("\\frac{{{}}}{{{}}}", latex(&bi), latex(&aij)),
+            latex(&form),
+        ]
+        .into_iter()
+        .min_by_key(String::len)
+        .unwrap_or_default();
         if form_tex.len() > LONGEST_FORM || form.is_constant() {
             continue;
         }

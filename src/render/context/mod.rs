@@ -32,8 +32,7 @@ pub use super::figure::Figure;
 pub use super::sample::sample;
 pub use equations::{
     DependentSpeeds, Equation, FrictionStep, FrictionView, InNumbers, InitialValue, KaneTheory,
-    MatrixEntry,
-    MatrixForm, PartialVelocity, Reaction, WholeMatrix,
+    MatrixEntry, MatrixForm, PartialVelocity, Reaction, WholeMatrix,
 };
 pub use lagrange::{GeneralizedForceRow, LagrangeView};
 pub use named::{Named, WhereEntry};
