@@ -61,4 +61,4 @@ pub use error::{BatchError, Error, SubmissionError};
 pub use pipeline::{Equilibrium, Stability, StabilityKind, WorkedAtRest};
 /// What a run of the stages gives the handout ([`pipeline::run`]): the worked solution's
 /// data, which [`solution`] writes out.
-pub use pipeline::{ImpactSolution, ImpactWorked, Job, Worked};
+pub use pipeline::{ImpactSolution, ImpactWorked, Job, Worked, NUMBERED_UNKNOWNS};

@@ -70,7 +70,7 @@ fn the_bowling_ball_rolls_at_the_closed_form_instant_and_speed() {
         );
         let answers = &text[text.find("## Answers").expect("Answers")..];
         for needed in [
-            "with the sliding law in place of the no-slip row",
+            "with the sliding law in place of the no-slip condition",
             "v_{\\mathrm{slip}}",
             "\\frac{2 v_{0}}{7 g \\mu}",
             "\\frac{5 v_{0}}{7}",

@@ -12,7 +12,27 @@ use crate::support::METHODS;
 use std::path::PathBuf;
 
 /// Words a course does not use in a handout.
-const NOT_COURSE_WORDS: [&str; 14] = [
+const NOT_COURSE_WORDS: [&str; 29] = [
+    // Words an instructor would edit out: the program's tree of joints, a state's flag,
+    // the name of a row for a condition, what the program did not write, an operation on
+    // a row with its numbers.
+    "joint of the tree",
+    "(held)",
+    "no-slip row",
+    "is left out",
+    "(multiplied by",
+    // A bound of the simulation's rounding said in prose (10⁻⁹ J).
+    "changes by less than",
+    "less than 10⁻",
+    // Gravity after the masses it multiplies, as textbooks write m g.
+    " g m_{",
+    "{g m_{",
+    " g m ",
+    "{g m ",
+    " g m}",
+    "{g m}",
+    " g M",
+    "{g M",
     "mesh.distance",
     "teeth.height",
     ".height left out",

@@ -409,7 +409,7 @@ fn the_tops_tip_force_is_said_by_its_vertical_and_horizontal_parts() {
         "{words}"
     );
     assert!(words.contains("at every instant of this motion"), "{words}");
-    assert!(words.contains("g m$ up"), "{words}");
+    assert!(words.contains("m g$ up"), "{words}");
     let json = run_json(&[
         "answer".as_ref(),
         crate::support::problem("heavy-symmetric-top").as_os_str(),

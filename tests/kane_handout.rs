@@ -86,8 +86,8 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
     // F_r and F_r* each on its own, then their sum.
     let shown = |tex: &str| format!("$$\n{tex}\n$$");
     let forces = [
-        "F_{1} = -\\frac{L_{1} g}{2} (m_{1} + 2 m_{2}) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}",
-        "F_{2} = -\\frac{L_{2} g m_{2}}{2} s_{12}",
+        "F_{1} = -\\frac{L_{1} g}{2} (m_{1} + 2 m_{2}) s_{1} - \\frac{L_{2} m_{2} g}{2} s_{12}",
+        "F_{2} = -\\frac{L_{2} m_{2} g}{2} s_{12}",
         "F_{3} = F^{O}_{x}",
         "F_{4} = F^{O}_{y} - g (m_{1} + m_{2})",
     ];
@@ -198,7 +198,7 @@ fn a_two_dof_kane_handout_writes_its_rows_once() {
     // The entries are read in the rows themselves: row 2 holds M12 q̈1 + M22 q̈2 and the
     // terms (L₂ m₂/2)(L₁ q̇₁² sin q2 + g sin(q1 + q2)) by hand.
     let step5 = section(&text, "## Step 5", "## Step 6");
-    assert!(step5.contains("\\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} + \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} + \\frac{L_{2} g m_{2}}{2} s_{12} = 0"), "{step5}");
+    assert!(step5.contains("\\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} + \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} + \\frac{L_{2} m_{2} g}{2} s_{12} = 0"), "{step5}");
 }
 
 /// Kane and Levinson's auxiliary speed along F^O_x: O slides along n_x, every point of
@@ -248,7 +248,7 @@ fn a_bob_on_a_light_rod_has_its_tension_as_kanes_unknown() {
     );
     assert!(step5.contains("is a two-force member"));
     // The row solved for its one reaction, as the hand derivation above gives it.
-    assert!(step5.contains("T^{O} = L m \\dot{\\theta}^{2} + g m c_{\\theta}"));
+    assert!(step5.contains("T^{O} = L m \\dot{\\theta}^{2} + m g c_{\\theta}"));
     let (m, g, l, theta, rate): (f64, f64, f64, f64, f64) = (0.5, 9.81, 0.8, 0.6, 0.5);
     let tension = m * (g * theta.cos() + l * rate * rate);
     let row = step5
@@ -439,7 +439,7 @@ fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown()
     );
     // F̃4 = n_y · (F^U − m g n_y) and F̃4* = −m ḧ.
     let row4 = section(step5, "**4.", "**5.");
-    assert!(row4.contains("\\tilde{F}_{4} = F^{U}_{y} - g m"), "{row4}");
+    assert!(row4.contains("\\tilde{F}_{4} = F^{U}_{y} - m g"), "{row4}");
     assert!(row4.contains("&= -m \\ddot{h}"), "{row4}");
 }
 

@@ -29,6 +29,7 @@ mod handout_truths;
 mod handouts_in_browser;
 mod house_rules;
 mod impact;
+mod in_numbers;
 mod initial_state;
 mod invalid;
 mod kane_handout;

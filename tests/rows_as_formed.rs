@@ -28,7 +28,7 @@ fn a_long_inertia_force_is_written_by_the_acceleration_of_step_4() {
         "**19. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "[-F^{P_{8}}_{x} + F^{P_{7}}_{x} c_{7} + F^{P_{7}}_{y} s_{7}] - g m s_{1\\ldots 7} - m\\, {}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}} = 0"
+        "[-F^{P_{8}}_{x} + F^{P_{7}}_{x} c_{7} + F^{P_{7}}_{y} s_{7}] - m g s_{1\\ldots 7} - m\\, {}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{7}} = 0"
     );
     assert!(
         markdown.contains("{}^{N}\\mathbf{a}^{\\mathrm{link}_{7}^*} = "),
@@ -44,7 +44,7 @@ fn a_short_inertia_force_stays_multiplied_out() {
         "**1. $\\mathrm{link}_{1}\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "[-F^{P_{2}}_{x} + F^{O}_{x} c_{1} + F^{O}_{y} s_{1}] - g m s_{1} - \\frac{L m \\ddot{q}_{1}}{2} = 0"
+        "[-F^{P_{2}}_{x} + F^{O}_{x} c_{1} + F^{O}_{y} s_{1}] - m g s_{1} - \\frac{L m \\ddot{q}_{1}}{2} = 0"
     );
 }
 

@@ -217,7 +217,7 @@ fn the_motion_law_explains_two_rough_contacts_of_one_body() {
             // A contact sticking at the start has its no-slip row; one sliding has the
             // sliding law in its place, said beside it.
             text.contains("while it sticks")
-                || (text.contains("in place of the no-slip row") && text.contains("sticks")),
+                || (text.contains("in place of the no-slip condition") && text.contains("sticks")),
             "{name}: no stick rows"
         );
     }

@@ -31,7 +31,7 @@ mod sweep;
 
 pub use impact::{impact, impact_at_start, ImpactSolution};
 pub use motion::{frame_count, frames};
-pub use run::{run, ImpactWorked, Job, Worked};
+pub use run::{run, ImpactWorked, Job, Worked, NUMBERED_UNKNOWNS};
 pub use stages::{derive, Purpose};
 pub use statics::{Equilibrium, Stability, StabilityKind, Statics};
 pub use statics_handout::{rest, run_at_rest, Rest, WorkedAtRest};

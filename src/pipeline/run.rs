@@ -5,11 +5,14 @@
 use super::{answers, answers_from, confirm, derive, impact, memo, Linearizer, Purpose, Solver};
 use crate::equations::{Derivation, LinearSystem, Method};
 use crate::error::Error;
+use crate::numeric::solve_linear;
 use crate::numeric::{
     simulate, Answer, Check, Frame, Linearization, SolveError, StateSolution, System, Trajectory,
     DEFAULT_FPS,
 };
 use crate::problem::{Problem, QuestionKind, State};
+use crate::symbolic::eval;
+use nalgebra::{DMatrix, DVector};
 
 /// What a handout asks of the stages besides the derivation and the initial state.
 #[derive(Clone, Debug)]
@@ -66,6 +69,12 @@ pub struct Worked<'p> {
     /// For each question, where it is a `show`, the q'' at its state by the handout's
     /// equations (`None` where they cannot be solved there).
     pub show_accelerations: Vec<Option<Vec<f64>>>,
+    /// The unknowns of step 5's system at the initial state, in its order, solved from its
+    /// matrix and right-hand side evaluated there, where it has at most
+    /// [`NUMBERED_UNKNOWNS`] unknowns (the worked solution writes the system, or the block
+    /// of it solved first, with its numbers and this solution); `None` otherwise, or where
+    /// it is singular there.
+    pub initial_unknowns: Option<Vec<f64>>,
     /// The small motions about the state asked for.
     pub linearization: Option<Linearization>,
     /// The motion's frames over the simulation's duration at the default frame rate, or
@@ -93,6 +102,7 @@ impl<'p> Worked<'p> {
             answers: None,
             period_system: None,
             show_accelerations: Vec::new(),
+            initial_unknowns: None,
             linearization: None,
             frames: None,
         }
@@ -145,6 +155,7 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
         });
         return Ok(worked);
     }
+    worked.initial_unknowns = unknowns_at(&worked.derivation, t, &worked.q0, &worked.rates0);
     let start = impact.as_ref().map_or(&worked.rates0, |i| &i.after);
     worked.simulation = Some(
         simulate(&worked.solver, &worked.q0, start, &problem.simulate).map(|trajectory| {
@@ -183,6 +194,28 @@ pub fn run<'p>(problem: &'p Problem, job: &Job) -> Result<Worked<'p>, Error> {
         worked.answers = Some(found);
     }
     Ok(worked)
+}
+
+/// The most unknowns a system has that the worked solution solves with its numbers (it
+/// writes the matrix of at most six of them: the whole, or the block solved first).
+pub const NUMBERED_UNKNOWNS: usize = 12;
+
+/// The unknowns of `derivation`'s system at time `t`, coordinates `q` and rates `rates`:
+/// its matrix and right-hand side evaluated there and solved, where it is square with at
+/// most [`NUMBERED_UNKNOWNS`] unknowns and regular there.
+fn unknowns_at(derivation: &Derivation, t: f64, q: &[f64], rates: &[f64]) -> Option<Vec<f64>> {
+    let system = &derivation.system;
+    let n = system.unknowns.len();
+    if n == 0 || n > NUMBERED_UNKNOWNS || system.a.len() != n {
+        return None;
+    }
+    let values = derivation.model.values_at(t, q, rates);
+    let a = DMatrix::from_fn(n, n, |i, j| eval(&system.a[i][j], &values));
+    let b = DVector::from_fn(n, |i, _| eval(&system.b[i], &values));
+    let x = solve_linear(&a, &b)?;
+    x.iter()
+        .all(|v| v.is_finite())
+        .then(|| x.iter().copied().collect())
 }
 
 /// The method's equations of the impulsive problem at `q0`, the problem kept for the rest

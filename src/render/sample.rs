@@ -77,6 +77,7 @@ pub fn sample() -> Solution {
         kane_theory: None,
         lagrange: None,
         matrix: matrix(),
+        in_numbers: Default::default(),
         initial_values: vec![
             value("\\ddot{q}_{1}", "-12.0939", "\\mathrm{rad/s^{2}}"),
             value("\\ddot{q}_{2}", "16.1251", "\\mathrm{rad/s^{2}}"),

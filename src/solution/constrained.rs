@@ -95,7 +95,9 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
         let (site, what) = row.split_once('.').unwrap_or((row.as_str(), "position"));
         match dropped_in_words(&derivation.model, site, what) {
             Some(words) => words,
-            None => format!("The {what} constraint at {site} is left out: {why}.").replace('`', ""),
+            None => {
+                format!("The {what} constraint at {site} is not needed: {why}.").replace('`', "")
+            }
         }
     }));
     notes.extend(constraints.relations.iter().map(|(name, relation)| {
@@ -125,10 +127,10 @@ fn dropped_in_words(model: &Model, site: &str, what: &str) -> Option<String> {
     let place = site.replace('_', " ");
     match what {
         "height" => Some(format!(
-            "The no-penetration constraint at {place} is left out: the joints already keep {body} on {on}, so it holds identically and the joints carry the normal load."
+            "The no-penetration constraint at {place} is not needed: the joints already keep {body} on {on}, so it holds identically and the joints carry the normal load."
         )),
         "distance" => Some(format!(
-            "The distance constraint at {place} is left out: the joints already keep the centres of {body} and {on} the pitch radii apart, so it holds identically and the joints carry the push along the line of centres."
+            "The distance constraint at {place} is not needed: the joints already keep the centres of {body} and {on} the pitch radii apart, so it holds identically and the joints carry the push along the line of centres."
         )),
         _ => None,
     }

@@ -65,6 +65,8 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         };
         let at_start = model.values_at(0.0, &worked.q0, &worked.rates0);
         let initial = |e: &Expr| crate::symbolic::eval(e, &at_start);
+        solution.in_numbers =
+            super::in_numbers::in_numbers(worked, &shown, &initial, !sliding.is_empty());
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial, &sliding);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kane_theory = super::kane_theory::theory(derivation);
@@ -111,6 +113,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         model, q0, rates0,
     )));
     solution.initial_values = initial_accelerations(problem, &initial.accelerations);
+    if solution.in_numbers.gives_accelerations {
+        // Step 5's solution in numbers gives them already.
+        solution.initial_values.clear();
+    }
     solution
         .initial_values
         .extend(tensions(derivation, q0, rates0, &initial.reactions));
@@ -402,7 +408,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
             let mut note = if derivation.model.constraints.friction.is_empty() {
                 kane_rows_note(derivation, speeds)
             } else {
-                format!("One row per {speeds}; one per auxiliary speed (each normal force at a rough contact, and each other reaction component asked for); the constraints, differentiated; and one per rough contact for its friction force: its no-slip row while it sticks, the sliding law while it slips.")
+                format!("One row per {speeds}; one per auxiliary speed (each normal force at a rough contact, and each other reaction component asked for); the constraints, differentiated; and one per rough contact for its friction force: its no-slip condition while it sticks, the sliding law while it slips.")
             };
             if let Some(order) = super::kane::solve_order_note(derivation) {
                 note = format!("{note} {order}");

@@ -145,7 +145,7 @@ fn steps(
     if state.mode == Mode::Slip && state.failed_stick.is_none() {
         out.push(step(
             format!(
-                "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ times the normal force, against the slip, and the no-slip row does not hold; {}",
+                "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ times the normal force, against the slip, and the no-slip condition does not hold; {}",
                 fixed(slip_speed),
                 match normal.contains("\\sqrt") {
                     false => format!("row {rows} above is the sliding law in its place:"),
@@ -162,7 +162,7 @@ fn steps(
         (&f.tangential[..], f.normal)
     });
     out.push(step(
-        format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip row {rows} holds. Solved with it:"),
+        format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip condition {rows} holds. Solved with it:"),
         forces(names, tangential, normal, n),
     ));
     if state.shared {

@@ -226,7 +226,7 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<Stri
         let forces = |k: usize, one: &str, many: &str| if k == 1 { one } else { many }.to_string();
         let normals = crate::equations::normal_forces(model).len();
         out.push(format!(
-            "Solving: the rows of the speeds and the auxiliary speeds and the differentiated constraints, with each rough contact's no-slip row while it sticks or the sliding law in its place while it slips (said after the equations), are solved as one system for the $\\ddot{{q}}$, the {} and the {}.",
+            "Solving: the rows of the speeds and the auxiliary speeds and the differentiated constraints, with each rough contact's no-slip condition while it sticks or the sliding law in its place while it slips (said after the equations), are solved as one system for the $\\ddot{{q}}$, the {} and the {}.",
             forces(friction.len(), "friction force", "friction forces"),
             forces(normals, "normal force", "normal forces"),
         ));
@@ -285,7 +285,7 @@ fn friction_note(derivation: &Derivation) -> String {
         ("forces", "do", "they are", "each is")
     };
     format!(
-        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip row gives its friction force; while it slips, the sliding law (friction $\\mu$ times the normal force, against the slip) replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
+        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip condition gives its friction force; while it slips, the sliding law (friction $\\mu$ times the normal force, against the slip) replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
         tex(&friction),
         words(&sites),
         tex(&normals),

@@ -26,7 +26,7 @@ pub fn plan_note(derivation: &Derivation) -> String {
         .iter()
         .any(|&j| j < model.problem.joints.len())
     {
-        note.push_str(" A reaction at a joint of the tree does no work: the joint is relaxed along each component asked for (an auxiliary coordinate, zero in the motion), and that coordinate's equation gives the component.");
+        note.push_str(" A reaction at a joint does no work as the coordinates change: each component asked for is found by letting the joint give way along it by an auxiliary coordinate, zero in the motion, whose Lagrange equation gives the component.");
     }
     note
 }
@@ -139,6 +139,9 @@ pub struct RowText {
     pub label_tex: String,
     /// Plain words after it.
     pub label: String,
+    /// For a relaxed joint's row, its auxiliary coordinate in words (markup; empty for a
+    /// coordinate's row).
+    pub intro: String,
     /// The derivatives, one equation each, before the collected equation.
     pub lines: Vec<String>,
     /// What introduces the collected equation.
@@ -161,12 +164,17 @@ pub fn row_text(
         if !matches!(row.sum, Sum::Generalized { .. }) {
             return None;
         }
+        // The auxiliary coordinate that lets the joint give way, its kinetic terms and its
+        // generalized force, then its equation at zero coordinate and rate.
+        let relaxed = super::relaxed::relaxed(derivation, row, shown);
+        let (intro, lines) = relaxed.map_or_else(Default::default, |r| (r.intro, r.lines));
         return Some(RowText {
             label_tex: relaxed_tex(row),
-            // Step 3 says once what a relaxed joint is; each row names only its component.
             label: String::new(),
-            lines: Vec::new(),
-            note: "At zero auxiliary coordinate and rate:".into(),
+            intro,
+            lines,
+            note: "Lagrange's equation of the auxiliary coordinate, at zero coordinate and rate:"
+                .into(),
         });
     };
     let written = derivation.lagrange_terms.get(r).is_none_or(|t| t.written);
@@ -249,6 +257,7 @@ pub fn row_text(
     Some(RowText {
         label_tex: format!("{q}\\colon\\; {}", lagrange_tex(model, r)),
         label: "(Lagrange's equation of the coordinate)".into(),
+        intro: String::new(),
         lines,
         note: note.to_string(),
     })

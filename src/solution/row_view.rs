@@ -245,9 +245,15 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         // Lagrange's row: the derivatives of L and the generalized force, then the row.
         (label_tex, label, lagrange_tex) = (text.label_tex, text.label, text.lines);
         (grouped_tex, active_tex, inertia_tex) = (String::new(), String::new(), String::new());
-        augmented_note = String::new();
+        augmented_note = text.intro;
         if !by_name {
             simplified_note = text.note;
+        }
+        if !by_name && !solved_tex.is_empty() {
+            // A relaxed joint's equation solved for its reaction, in Lagrange's words.
+            simplified_tex = std::mem::take(&mut solved_tex);
+            let note = simplified_note.trim_end_matches(':');
+            simplified_note = format!("{note}, solved for the reaction:");
         }
     }
     if matches!(row.sum, Sum::Constraint { .. }) && !by_name {

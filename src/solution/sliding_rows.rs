@@ -95,7 +95,7 @@ pub fn replace_rows(solution: &mut Solution, derivation: &Derivation, rows: &[Sl
         if let Some(view) = solution.equations.get_mut(row.index) {
             view.label_tex = Math::from(heading_tex(row));
             view.label = format!(
-                "(while it slides: in place of the no-slip row, which holds only once the contact at {} sticks)",
+                "(while it slides: in place of the no-slip condition, which holds only once the contact at {} sticks)",
                 place(&row.contact)
             );
             view.grouped_tex = Math::from(String::new());

@@ -68,9 +68,9 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
         .map(|s| super::force_labels::place(&s.name))
         .collect();
     let (row, does, law) = match (no_slip.len(), sliding.len()) {
-        (1, 1) => ("row", "does", "law"),
-        (_, 1) => ("rows", "do", "law"),
-        _ => ("rows", "do", "laws"),
+        (1, 1) => ("condition", "does", "law"),
+        (_, 1) => ("conditions", "do", "law"),
+        _ => ("conditions", "do", "laws"),
     };
     let reaction_words = if reactions.len() == 1 {
         "reaction"

@@ -352,11 +352,11 @@ fn steps_for(
             .collect();
         let site = super::force_labels::place(site).replace('_', "\\_");
         steps.push(step(
-            format!("While the contact at {site} slides, friction is $\\mu$ times the normal force, against the slip: with the sliding law in place of the no-slip row, the equations of step 5 give accelerations that stay constant until it rolls,"),
+            format!("While the contact at {site} slides, friction is $\\mu$ times the normal force, against the slip: with the sliding law in place of the no-slip condition, the equations of step 5 give accelerations that stay constant until it rolls,"),
             moving.join(", \\qquad "),
         ));
         steps.push(step(
-            "so each rate grows linearly from its start, and so does the slip velocity of the contact point, the velocity that the no-slip row makes zero:",
+            "so each rate grows linearly from its start, and so does the slip velocity of the contact point, the velocity that the no-slip condition makes zero:",
             format!(
                 "v_{{\\mathrm{{slip}}}} = {} = {}",
                 latex(&closed.slip.0),

@@ -103,6 +103,36 @@ struct Printer {
     latex: bool,
 }
 
+/// Whether `e` is a mass, `m`, `M`, `m_A`, or a sum of masses with numbers (`m_1 + 2 m_2`).
+fn is_mass(e: &Expr) -> bool {
+    match e.node() {
+        Node::Sym(Symbol::Const(name)) => {
+            let tex = latex_name(name);
+            ["m", "M"].contains(&tex.as_str()) || tex.starts_with("m_{") || tex.starts_with("M_{")
+        }
+        Node::Add(terms) => terms.iter().all(|t| {
+            let (_, rest) = t.split_coefficient();
+            !rest.is_one() && rest.factors().iter().all(is_mass)
+        }),
+        _ => false,
+    }
+}
+
+/// The factors of a product in the order a textbook writes them: gravity's `g` after the
+/// masses it multiplies (`m g L`, `(m_1 + m_2) g`), the others as they are.
+fn mass_before_gravity(factors: &[Expr]) -> Vec<Expr> {
+    let mut out = factors.to_vec();
+    let is_g = |e: &Expr| matches!(e.node(), Node::Sym(Symbol::Const(name)) if &**name == "g");
+    let Some(g) = out.iter().position(is_g) else {
+        return out;
+    };
+    if let Some(last) = out.iter().rposition(is_mass).filter(|&m| m > g) {
+        let g = out.remove(g);
+        out.insert(last, g);
+    }
+    out
+}
+
 impl Printer {
     fn sum(&self, e: &Expr) -> String {
         self.terms(e.terms())
@@ -198,7 +228,11 @@ impl Printer {
             }
         }
         if !rest.is_one() {
-            for factor in rest.factors() {
+            let factors = match self.latex {
+                true => mass_before_gravity(rest.factors()),
+                false => rest.factors().to_vec(),
+            };
+            for factor in &factors {
                 match factor.node() {
                     Node::Pow(base, exponent)
                         if exponent.as_number().is_some_and(Number::is_negative) =>

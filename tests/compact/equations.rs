@@ -205,12 +205,12 @@ fn the_double_pendulum_reads_as_a_textbook_writes_it() {
     // and cosines by their abbreviations.
     assert_eq!(
         equations[1],
-        "-\\frac{L_{2} m_{2}}{6} (2 L_{2} + 3 L_{1} c_{2}) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} - \\frac{L_{2} g m_{2}}{2} s_{12}"
+        "-\\frac{L_{2} m_{2}}{6} (2 L_{2} + 3 L_{1} c_{2}) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} - \\frac{L_{2} m_{2} g}{2} s_{12}"
     );
     // A + B about O, gravity's moment by hand: -m1 g (L1/2) s1 - m2 g (L1 s1 + (L2/2) s12),
     // the masses of s1's coefficient collected.
     assert!(equations[0].ends_with(
-        "- \\frac{L_{1} g}{2} (m_{1} + 2 m_{2}) s_{1} - \\frac{L_{2} g m_{2}}{2} s_{12}"
+        "- \\frac{L_{1} g}{2} (m_{1} + 2 m_{2}) s_{1} - \\frac{L_{2} m_{2} g}{2} s_{12}"
     ));
     // Both rods along N.y: F^O_y - (m1 + m2) g + …, the masses collected.
     assert!(equations[3].ends_with("- g (m_{1} + m_{2})"));
@@ -320,7 +320,7 @@ fn a_reaction_acts_at_its_joint_by_name() {
     assert!(!markdown.contains("$\\text{at } \\mathbf{0}$"));
     // Gravity acts at each link's mass centre, named as such (link5* alone on its own).
     assert!(markdown.contains(
-        "| weight of link5 | $-g m \\hat{\\mathbf{n}}_{y}$ | $\\text{at } \\mathrm{link}_{5}^*$ |"
+        "| weight of link5 | $-m g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } \\mathrm{link}_{5}^*$ |"
     ));
 }
 
@@ -329,7 +329,7 @@ fn a_row_formed_already_simplified_is_written_once() {
     let markdown = explain("two-mass-spring-damper", "markdown");
     // Cart A along N.y, by hand: the track's reaction holds its weight, F_y - m1 g = 0, as
     // formed; written once, not again as "simplified".
-    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAlready in its simplest form:\n\n$$\nF^{\\mathrm{trackA}}_{y} - g m_{1} = 0\n$$\n\n**4.";
+    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAlready in its simplest form:\n\n$$\nF^{\\mathrm{trackA}}_{y} - m_{1} g = 0\n$$\n\n**4.";
     assert!(markdown.contains(row), "row 3 is not written once");
 }
 
@@ -374,7 +374,7 @@ fn a_right_hand_side_is_collected_by_the_rates() {
         "- c \\dot{q}_{1} - \\frac{L^{2} m}{2} (7 S_{2} + 5 S_{23} + 3 S_{234} + S_{2345}) \\dot{q}_{1}^{2} + "
     ));
     assert!(markdown
-        .contains("(\\dot{q}_{1} + \\cdots + \\dot{q}_{5})^{2} - \\frac{9 L g m}{2} S_{1} - "));
+        .contains("(\\dot{q}_{1} + \\cdots + \\dot{q}_{5})^{2} - \\frac{9 L m g}{2} S_{1} - "));
 }
 
 #[test]

@@ -15,7 +15,8 @@ pub struct Equation {
     /// Plain words after it, e.g. `(a generalized speed)`; may be empty.
     pub label: String,
     /// Kane's row of an auxiliary speed: its augmented velocities, their partial
-    /// velocities and which forces drop out, in markup (empty otherwise).
+    /// velocities and which forces drop out; Lagrange's row of a joint let give way: its
+    /// auxiliary coordinate; in markup (empty otherwise).
     pub augmented_note: MarkupLine,
     /// The equation as formed, forces grouped, e.g. `\hat{\mathbf{n}}_{z} \cdot (…) = 0`.
     pub grouped_tex: Math,
@@ -161,6 +162,23 @@ pub struct MatrixEntry {
     /// A whole row's entries, printed one after the other (a system too large to print an
     /// entry a line); empty otherwise.
     pub values_tex: Vec<Math>,
+}
+
+/// Step 5's system at the initial state with its numbers, and its solution.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct InNumbers {
+    /// What is solved, in markup (empty when there is no such system).
+    pub lead: MarkupLine,
+    /// The system `A x = b` with its numbers, beside its solution `x` where both fit the
+    /// line.
+    pub displays_tex: Vec<Math>,
+    /// The solution where it is not beside the system, each unknown a row holds alone in
+    /// symbols and then its number, and the reactions the other rows give, in markup.
+    pub closed_forms: Vec<MarkupLine>,
+    /// Whether the solution gives every coordinate's second derivative (the table of them
+    /// at the initial state would repeat it).
+    #[serde(skip)]
+    pub gives_accelerations: bool,
 }
 
 /// A number at the initial state.

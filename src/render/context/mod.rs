@@ -31,8 +31,8 @@ mod statics;
 pub use super::figure::Figure;
 pub use super::sample::sample;
 pub use equations::{
-    DependentSpeeds, Equation, FrictionStep, FrictionView, InitialValue, KaneTheory, MatrixEntry,
-    MatrixForm, PartialVelocity, Reaction, WholeMatrix,
+    DependentSpeeds, Equation, FrictionStep, FrictionView, InNumbers, InitialValue, KaneTheory,
+    MatrixEntry, MatrixForm, PartialVelocity, Reaction, WholeMatrix,
 };
 pub use lagrange::{GeneralizedForceRow, LagrangeView};
 pub use named::{Named, WhereEntry};
@@ -132,6 +132,9 @@ pub struct Solution {
     pub dependent_speeds: Option<DependentSpeeds>,
     /// Step 5: the system in matrix form.
     pub matrix: MatrixForm,
+    /// Step 5: the system with its numbers at the initial state and its solution, for a
+    /// system of at most six unknowns (empty otherwise).
+    pub in_numbers: InNumbers,
     /// Step 5: the second derivatives at the initial state.
     pub initial_values: Vec<InitialValue>,
     /// Step 5: the requested reactions at the initial state.
