@@ -59,6 +59,9 @@ pub(super) struct Painter {
     /// The bodies each marked point belongs to, in the scene's order of markers: its
     /// caption keeps out of the others.
     owners: Vec<Vec<String>>,
+    /// The ground's lines drawn, each from one end to the other with the page's unit
+    /// vector away from the ground: the unit vectors keep above them.
+    pub(super) grounds: Vec<(P2, P2, P2)>,
 }
 
 impl Painter {
@@ -472,6 +475,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         reach: room.reach,
         others: Vec::new(),
         owners: Vec::new(),
+        grounds: Vec::new(),
     };
     painter.straight = (scene.arrows.iter())
         .filter(|a| !(a.couple && scene.planar))

@@ -81,7 +81,9 @@ impl Painter {
                 let t = toward + f64::from(turn as u8) * std::f64::consts::PI / 8.0;
                 let o = [wanted[0] + gap * t.cos(), wanted[1] + gap * t.sin()];
                 let room = Self::triad_box(o, directions);
-                let cost = self.obstacles.clash(&room) + 10 * self.over_bodies(&room);
+                let cost = self.obstacles.clash(&room)
+                    + 10 * self.over_bodies(&room)
+                    + 10 * self.under_ground(&room);
                 if cost == 0 {
                     return o;
                 }
