@@ -76,9 +76,17 @@ pub fn simulation(
         .map(|(k, group)| {
             let (kind, title) = match (k, split) {
                 (0, false) => ("coordinates".to_string(), "Angles against time".to_string()),
-                (0, true) => ("coordinates".to_string(), angles_title(problem, &group, true)),
-                (k, _) if k == last => ("nutation".to_string(), angles_title(problem, &group, false)),
-                (k, _) => (format!("angles-{}", k + 1), angles_title(problem, &group, false)),
+                (0, true) => (
+                    "coordinates".to_string(),
+                    angles_title(problem, &group, true),
+                ),
+                (k, _) if k == last => {
+                    ("nutation".to_string(), angles_title(problem, &group, false))
+                }
+                (k, _) => (
+                    format!("angles-{}", k + 1),
+                    angles_title(problem, &group, false),
+                ),
             };
             (kind, title, Label::words("angle (rad)"), group)
         })

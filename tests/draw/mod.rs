@@ -539,5 +539,6 @@ mod overlap;
 mod placement;
 mod same_names;
 mod sliding;
+mod textbook;
 
 use sliding::{check_sliding, slip_along};

@@ -33,15 +33,28 @@ fn draw_and_the_handout_name_every_force_alike() {
         let p = problem.to_string_lossy();
         for args in [
             vec!["draw", &p, "-o", &pictures.to_string_lossy()],
-            vec!["explain", &p, "--format", "html", "-o", &page.to_string_lossy()],
+            vec![
+                "explain",
+                &p,
+                "--format",
+                "html",
+                "-o",
+                &page.to_string_lossy(),
+            ],
         ] {
             let out = run(&args);
-            assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+            assert!(
+                out.status.success(),
+                "{args:?}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
         }
         let mut drawn = BTreeSet::new();
         for entry in std::fs::read_dir(&pictures).expect("pictures written") {
             let file = entry.expect("an entry").path();
-            drawn.extend(force_labels(&std::fs::read_to_string(file).expect("a picture")));
+            drawn.extend(force_labels(
+                &std::fs::read_to_string(file).expect("a picture"),
+            ));
         }
         let handout = force_labels(&std::fs::read_to_string(&page).expect("the handout"));
         let text = std::fs::read_to_string(problem).expect("the problem");

@@ -220,9 +220,17 @@ fn angles_of_very_different_ranges_have_axes_of_their_own() {
     explain("heavy-symmetric-top.json", &dir.join("top.md"), "markdown");
     let energy = read(&dir.join("top-energy.svg"));
     for pattern in ["stroke-dasharray=\"9,5\"", "stroke-dasharray=\"2,3\""] {
-        assert_eq!(energy.matches(pattern).count(), 2, "{pattern}: line and sample");
+        assert_eq!(
+            energy.matches(pattern).count(),
+            2,
+            "{pattern}: line and sample"
+        );
     }
-    for file in ["top-coordinates.svg", "top-angles-2.svg", "top-nutation.svg"] {
+    for file in [
+        "top-coordinates.svg",
+        "top-angles-2.svg",
+        "top-nutation.svg",
+    ] {
         assert!(dir.join(file).exists(), "{file}");
     }
 }

@@ -137,7 +137,13 @@ pub fn draw(
     view: View,
 ) -> Vec<Drawing> {
     let names = crate::solution::shown_names::shown_names(&derivation.model);
-    drawings(derivation, (t, q, rates), accelerations, view, (true, &names))
+    drawings(
+        derivation,
+        (t, q, rates),
+        accelerations,
+        view,
+        (true, &names),
+    )
 }
 
 /// The pictures of [`draw`] as a handout prints them: word-named bodies and points by
