@@ -123,8 +123,8 @@ pub fn simulation(
     for (kind, title, y_label, series) in plots {
         // Drawn by the renderer, in the format asked.
         solution.simulation.plots.push(Plot {
-            kind: kind.into(),
-            title: title.into(),
+            kind,
+            title,
             svg_file: FileName::from(String::new()),
             image_svg: SvgDocument::default(),
             image_latex: LatexCode::default(),

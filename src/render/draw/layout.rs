@@ -454,8 +454,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
     projection.b[0] += extra / 2.0;
     let width = panels * panel_width;
     let legend_lines = wrap(&scene.legend, width - 24.0);
-    let legend =
-        18.0 * legend_lines.len() as f64 + if legend_lines.is_empty() { 0.0 } else { 12.0 };
+    let legend = legend_height(legend_lines.len());
     let height = height + legend;
     let scale = p2norm([projection.a[0][0], projection.a[1][0]])
         .max(p2norm([projection.a[0][1], projection.a[1][1]]))
@@ -567,6 +566,11 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         },
         grow,
     }
+}
+
+/// The height of a legend of `lines` lines under a picture.
+fn legend_height(lines: usize) -> f64 {
+    18.0 * lines as f64 + if lines == 0 { 0.0 } else { 12.0 }
 }
 
 /// The picture's texts: its title above, the labels `placed`, the legend's lines below;
