@@ -23,10 +23,9 @@ const COLOURS: [RGBColor; 6] = [
     RGBColor(23, 190, 207),
 ];
 
-/// Line styles, in series order (repeating past the end), so that lines that lie on each
-/// other (a total energy on its potential energy where the kinetic energy is small) and
-/// lines printed in black and white are told apart: the SVG's dash pattern and the
-/// pgfplots style of each.
+/// Line styles, in series order (repeating), so that lines lying on each other (E on V
+/// where T is small) and lines printed in black and white are told apart: the SVG's dash
+/// pattern and the pgfplots style of each.
 const DASHES: [(&str, &str); 4] = [
     ("", "solid"),
     ("9,5", "dashed"),
