@@ -23,6 +23,16 @@ const COLOURS: [RGBColor; 6] = [
     RGBColor(23, 190, 207),
 ];
 
+/// Line styles, in series order (repeating), so that lines lying on each other (E on V
+/// where T is small) and lines printed in black and white are told apart: the SVG's dash
+/// pattern and the pgfplots style of each.
+const DASHES: [(&str, &str); 4] = [
+    ("", "solid"),
+    ("9,5", "dashed"),
+    ("2,3", "densely dotted, very thick"),
+    ("12,4,2,4", "dashdotted"),
+];
+
 /// A plot could not be drawn.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PlotError {
@@ -147,7 +157,7 @@ pub fn line_plot(
                 .map_err(|e| drawing(e.to_string()))?
                 .label(line.name.text.as_str())
                 .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                    PathElement::new(vec![(x, y), (x + 28, y)], colour.stroke_width(2))
                 });
         }
         chart
@@ -160,7 +170,41 @@ pub fn line_plot(
             .map_err(|e| drawing(e.to_string()))?;
         root.present().map_err(|e| drawing(e.to_string()))?;
     }
-    Ok(svg)
+    Ok(dashed(&svg, series.len()))
+}
+
+/// `svg` with the lines (and legend samples) of the first `count` series dashed as
+/// [`DASHES`] says: plotters draws a series and its sample as polylines of its colour.
+fn dashed(svg: &str, count: usize) -> String {
+    let mut out = svg.to_string();
+    for index in 0..count.min(COLOURS.len()) {
+        let pattern = DASHES[index % DASHES.len()].0;
+        if pattern.is_empty() {
+            continue;
+        }
+        let RGBColor(r, g, b) = COLOURS[index];
+        let stroke = format!("stroke=\"#{r:02X}{g:02X}{b:02X}\"");
+        let mut next = String::with_capacity(out.len() + 64);
+        let mut rest = out.as_str();
+        while let Some(at) = rest.find("<polyline") {
+            let end = at + rest[at..].find('>').unwrap_or(rest.len() - at);
+            let tag = &rest[at..end];
+            next.push_str(&rest[..at]);
+            if tag.contains(&stroke) {
+                next.push_str(&tag.replacen(
+                    &stroke,
+                    &format!("{stroke} stroke-dasharray=\"{pattern}\""),
+                    1,
+                ));
+            } else {
+                next.push_str(tag);
+            }
+            rest = &rest[end..];
+        }
+        next.push_str(rest);
+        out = next;
+    }
+    out
 }
 
 /// The chart [`axes`] draws on: f64 by f64.
@@ -350,14 +394,17 @@ pub fn pgfplots(
         legend_columns(series, plots_in_row)
     ));
     text.push_str("]\n");
-    for line in series {
+    for (index, line) in series.iter().enumerate() {
         let finite: Vec<(f64, f64)> = line
             .points
             .iter()
             .copied()
             .filter(|(x, y)| x.is_finite() && y.is_finite())
             .collect();
-        text.push_str("\\addplot+[mark=none] coordinates {\n");
+        text.push_str(&format!(
+            "\\addplot+[mark=none, {}] coordinates {{\n",
+            DASHES[index % DASHES.len()].1
+        ));
         for (x, y) in thin(&finite, PGFPLOTS_MAX_POINTS) {
             text.push_str(&format!("  ({},{})\n", fixed(x), fixed(y)));
         }
@@ -445,6 +492,16 @@ mod tests {
         ] {
             assert!(first.contains(text), "missing {text}");
         }
+        // The first line solid, the second dashed, in the plot and in its legend.
+        let dashed = first
+            .split("<polyline")
+            .filter(|tag| tag.contains("stroke=\"#D62728\" stroke-dasharray=\"9,5\""))
+            .count();
+        assert_eq!(dashed, 2, "the second line and its legend's sample");
+        let first_dashed = first
+            .split("<polyline")
+            .any(|tag| tag.contains("stroke=\"#1F77B4\" stroke-dasharray"));
+        assert!(!first_dashed, "the first line is solid");
     }
 
     #[test]
@@ -496,6 +553,9 @@ mod tests {
         assert!(text.contains("xlabel={$t$ (s)}"));
         assert!(text.contains("ylabel={$E$ (J)}"));
         assert!(text.contains("\\addlegendentry{$\\theta_{2}$}"));
+        // Each line its own style, which its legend entry shows.
+        assert!(text.contains("\\addplot+[mark=none, solid] coordinates"));
+        assert!(text.contains("\\addplot+[mark=none, dashed] coordinates"));
         assert_eq!(text.matches("\\addplot").count(), 2);
         let points = text.lines().filter(|l| l.starts_with("  (")).count();
         assert_eq!(points, 2 * PGFPLOTS_MAX_POINTS);

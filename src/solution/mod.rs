@@ -110,6 +110,7 @@ pub use handout::{handout, student, Handout};
 pub use pictures::motion::motion as motion_picture;
 pub use pictures::{draw as draw_pictures, free_body_sets, point_id};
 pub use row_view::equation_view;
+pub use shown_names::shown_names;
 pub use solve_words::constraint_block;
 pub use statics::handout as statics_handout;
 pub use tex::style_of;

@@ -34,9 +34,10 @@ fn what_it_is(problem: &Problem, i: usize) -> Option<String> {
     })
 }
 
-/// `Nutation angle against time`: the plot of the angles taken out of the angles' plot,
-/// named by their descriptions; by their number where a description says nothing short.
-pub fn small_angles(problem: &Problem, series: &[Series]) -> String {
+/// `Nutation angle against time`: a plot of angles of one range, on an axis of their own
+/// beside angles of another, named by their descriptions; where a description says nothing
+/// short, `Angles against time` for the largest (`first`), the smaller ones by their number.
+pub fn angles_of_a_range(problem: &Problem, series: &[Series], first: bool) -> String {
     let names: Option<Vec<String>> = (series.iter())
         .map(|s| {
             let i = (0..problem.coordinates.len())
@@ -46,6 +47,7 @@ pub fn small_angles(problem: &Problem, series: &[Series]) -> String {
         .collect();
     let words = match names {
         Some(names) if !names.is_empty() => names.join(" and "),
+        _ if first => "angles".to_string(),
         _ if series.len() == 1 => "the smaller angle".to_string(),
         _ => "the smaller angles".to_string(),
     };

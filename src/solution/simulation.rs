@@ -67,43 +67,44 @@ pub fn simulation(
     };
     let energy_series = energy_series(problem, trajectory);
     let energy_title = super::plot_titles::energy(problem, &energy_series);
-    let small_title;
-    let mut plots = vec![
-        (
-            "coordinates",
-            "Angles against time",
-            Label::words("angle (rad)"),
-            series_of(CoordinateKind::Angle),
-        ),
-        (
-            "positions",
-            "Positions against time",
-            Label::words("position (m)"),
-            series_of(CoordinateKind::Distance),
-        ),
-    ];
-    // An angle that moves little (a top's nutation beside its spin) on a plot of its own,
-    // titled by what it is.
-    if let Some(small) = small_moves(&mut plots[0].3) {
-        small_title = super::plot_titles::small_angles(problem, &small);
-        plots.insert(
-            1,
-            (
-                "nutation",
-                small_title.as_str(),
-                Label::words("angle (rad)"),
-                small,
-            ),
-        );
-    }
+    // Angles of very different ranges (a top's spin, precession and nutation) each on an
+    // axis of their own, named by what they are: on one axis the smaller would look flat.
+    let ranges = by_range(series_of(CoordinateKind::Angle));
+    let split = ranges.len() > 1;
+    let last = ranges.len().saturating_sub(1);
+    let mut plots: Vec<(String, String, Label, Vec<Series>)> = (ranges.into_iter().enumerate())
+        .map(|(k, group)| {
+            let (kind, title) = match (k, split) {
+                (0, false) => ("coordinates".to_string(), "Angles against time".to_string()),
+                (0, true) => (
+                    "coordinates".to_string(),
+                    angles_title(problem, &group, true),
+                ),
+                (k, _) if k == last => {
+                    ("nutation".to_string(), angles_title(problem, &group, false))
+                }
+                (k, _) => (
+                    format!("angles-{}", k + 1),
+                    angles_title(problem, &group, false),
+                ),
+            };
+            (kind, title, Label::words("angle (rad)"), group)
+        })
+        .collect();
+    plots.push((
+        "positions".into(),
+        "Positions against time".into(),
+        Label::words("position (m)"),
+        series_of(CoordinateKind::Distance),
+    ));
     if plots[0].3.is_empty() {
         // A system without angles: its positions are the coordinates' plot.
         let positions = plots.remove(1);
-        plots[0] = ("coordinates", positions.1, positions.2, positions.3);
+        plots[0] = ("coordinates".into(), positions.1, positions.2, positions.3);
     }
     plots.push((
-        "energy",
-        energy_title.as_str(),
+        "energy".into(),
+        energy_title,
         Label::words("energy (J)"),
         energy_series,
     ));
@@ -112,8 +113,8 @@ pub fn simulation(
     let drifting = checks
         .iter()
         .any(|c| c.kind == CheckKind::EnergyConservation && !c.passed);
-    if let Some(drift) = energy_drift(trajectory).filter(|_| drifting) {
-        plots.push(drift);
+    if let Some((kind, title, label, series)) = energy_drift(trajectory).filter(|_| drifting) {
+        plots.push((kind.into(), title.into(), label, series));
     }
     let time = Label::math("t", "(s)");
     plots.retain(|plot| !plot.3.is_empty());
@@ -122,8 +123,8 @@ pub fn simulation(
     for (kind, title, y_label, series) in plots {
         // Drawn by the renderer, in the format asked.
         solution.simulation.plots.push(Plot {
-            kind: kind.into(),
-            title: title.into(),
+            kind,
+            title,
             svg_file: FileName::from(String::new()),
             image_svg: SvgDocument::default(),
             image_latex: LatexCode::default(),
@@ -290,11 +291,15 @@ fn detail(problem: &Problem, check: &crate::numeric::Check) -> MarkupLine {
     MarkupLine::from(pieces.concat())
 }
 
-/// The series of `series` on the smallest scale, taken out of it where that scale is under
-/// a twentieth of the next larger one (a top's nutation beside its precession and spin): on
-/// the same axis they would look flat. Spans are sorted and cut at the last such gap;
-/// `None` where there is none. A series that does not move at all stays.
-fn small_moves(series: &mut Vec<Series>) -> Option<Vec<Series>> {
+/// How many times the range of the angles on one axis may exceed the range of another on
+/// it: past that, the smaller would show as a line lying flat beside the larger.
+const RANGES_APART: f64 = 8.0;
+
+/// `series` split into groups of like range, the largest first: sorted by range, a new
+/// group starts at an angle whose range is under the group's largest over
+/// [`RANGES_APART`] (a top's spin, precession and nutation make three). An angle that does
+/// not move at all stays with the largest.
+fn by_range(series: Vec<Series>) -> Vec<Vec<Series>> {
     let span = |s: &Series| {
         let (lo, hi) = (s.points.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
             (lo.min(p.1), hi.max(p.1))
@@ -302,20 +307,33 @@ fn small_moves(series: &mut Vec<Series>) -> Option<Vec<Series>> {
         hi - lo
     };
     let largest = series.iter().map(span).fold(0.0, f64::max);
-    let mut spans: Vec<f64> = (series.iter().map(span))
-        .filter(|x| *x > largest * 1e-9)
+    let still = |x: f64| x <= largest * 1e-9;
+    let mut order: Vec<(f64, usize)> = (series.iter().map(span).enumerate())
+        .map(|(k, x)| (x, k))
         .collect();
-    spans.sort_by(|a, b| b.total_cmp(a));
-    let cut = (spans.windows(2).rev()).find(|w| w[1] < w[0] / 20.0)?[1];
-    let mut taken = Vec::new();
-    let mut kept = Vec::new();
-    for s in series.drain(..) {
-        let x = span(&s);
-        match x <= cut && x > largest * 1e-9 {
-            true => taken.push(s),
-            false => kept.push(s),
+    // Largest first; equal ranges in the problem's order.
+    order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    let mut group_of = vec![0usize; series.len()];
+    let (mut group, mut top) = (0usize, largest);
+    for &(x, k) in &order {
+        if !still(x) && x < top / RANGES_APART {
+            group += 1;
+            top = x;
         }
+        group_of[k] = if still(x) { 0 } else { group };
     }
-    *series = kept;
-    Some(taken)
+    let mut groups: Vec<Vec<Series>> = vec![Vec::new(); group + 1];
+    for (s, g) in series.into_iter().zip(group_of) {
+        groups[g].push(s);
+    }
+    groups.retain(|g| !g.is_empty());
+    if groups.is_empty() {
+        groups.push(Vec::new());
+    }
+    groups
+}
+
+/// The title of a plot of angles of one range (see `plot_titles`).
+fn angles_title(problem: &Problem, series: &[Series], first: bool) -> String {
+    super::plot_titles::angles_of_a_range(problem, series, first)
 }

@@ -105,6 +105,8 @@ fn tikz_pictures_compile_with_pdflatex() {
     ] {
         let problem = mbd_tutor::problem::load_file(&problem_path(name)).expect("bundled");
         for d in drawings(&problem, Method::MotionLaw, View::Isometric).1 {
+            // Set as a handout sets a figure: on a line of its own, not indented.
+            body.push_str("\\noindent\n");
             body.push_str(&d.tikz());
             body.push_str("\n\n");
         }

@@ -428,10 +428,12 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
                 check_sliding(r, &format!("joint-{}", joint.name), against);
                 continue;
             }
-            // A light rod's tension is one unknown, T^Q, without a subscript.
+            // A light rod's tension is one unknown, T^Q, without a subscript; a point named
+            // by a word is printed by the handout's letter for it (the lane's contact: P).
+            let name = shown_letter(d, &joint.name);
             let label = match c.axis {
-                mbd_tutor::symbolic::Axis::Member => format!("T^{}", joint.name),
-                _ => format!("{letter}^{}_{rest}", joint.name),
+                mbd_tutor::symbolic::Axis::Member => format!("T^{name}"),
+                _ => format!("{letter}^{name}_{rest}"),
             };
             expected.push((label, format!("joint-{}", joint.name), dir));
         }
@@ -468,6 +470,16 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
     want.sort();
     drawn.sort();
     assert_eq!(drawn, want, "{}: the reactions at the cut", r.name);
+}
+
+/// The name a picture prints for the site `name`: the handout's letter for a word (the
+/// bowling ball's `lane` is P), else the name itself.
+fn shown_letter(d: &Derivation, name: &str) -> String {
+    let tex = mbd_tutor::symbolic::latex_name(name);
+    mbd_tutor::solution::shown_names(&d.model)
+        .into_iter()
+        .find(|(word, _)| *word == tex)
+        .map_or_else(|| name.to_string(), |(_, letter)| letter)
 }
 
 fn check_problem(path: &std::path::Path, method: Method) {
@@ -525,6 +537,8 @@ mod labels;
 mod leaders;
 mod overlap;
 mod placement;
+mod same_names;
 mod sliding;
+mod textbook;
 
 use sliding::{check_sliding, slip_along};

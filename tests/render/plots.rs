@@ -128,3 +128,109 @@ fn angles_and_distances_are_never_on_one_axis() {
     );
     assert!(prints(&positions, "position (m)"));
 }
+
+/// Every pgfplots axis of `tex`: its `ylabel`, and each `\addplot`'s options and points.
+type Axis = (String, Vec<(String, Vec<(f64, f64)>)>);
+
+fn axes(tex: &str) -> Vec<Axis> {
+    tex.split("\\begin{axis}")
+        .skip(1)
+        .map(|axis| {
+            let axis = &axis[..axis.find("\\end{axis}").expect("closed")];
+            let label = axis
+                .split("ylabel={")
+                .nth(1)
+                .and_then(|l| l.split("},").next())
+                .unwrap_or_default()
+                .to_string();
+            let plots = axis
+                .split("\\addplot+[")
+                .skip(1)
+                .map(|plot| {
+                    let options = plot[..plot.find(']').expect("options")].to_string();
+                    let points = plot
+                        .lines()
+                        .filter_map(|l| l.trim().strip_prefix('(')?.strip_suffix(')'))
+                        .map(|p| {
+                            let (x, y) = p.split_once(',').expect("x,y");
+                            (x.parse().expect("x"), y.parse().expect("y"))
+                        })
+                        .collect();
+                    (options, points)
+                })
+                .collect();
+            (label, plots)
+        })
+        .collect()
+}
+
+fn range(points: &[(f64, f64)]) -> f64 {
+    let (lo, hi) = points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p.1), h.max(p.1))
+        });
+    hi - lo
+}
+
+/// The heavy top spins at 150 rad/s, precesses at about 3 rad/s and nods by hundredths of a
+/// radian: on one axis the precession and the nutation lie flat beside the spin. Each angle
+/// is on an axis whose other angles' ranges are within 8 times its own, and the energy's
+/// three lines each have their own style (dashes), which the legend shows.
+#[test]
+fn angles_of_very_different_ranges_have_axes_of_their_own() {
+    let dir = scratch("plots-top");
+    explain("heavy-symmetric-top.json", &dir.join("top.tex"), "latex");
+    let tex = read(&dir.join("top.tex"));
+    let all = axes(&tex);
+    let angles: Vec<&Axis> = all.iter().filter(|(l, _)| l == "angle (rad)").collect();
+    assert_eq!(angles.len(), 3, "spin, precession and nutation apart");
+    for (_, plots) in &angles {
+        let ranges: Vec<f64> = plots.iter().map(|(_, p)| range(p)).collect();
+        let (lo, hi) = ranges
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(l, h), r| (l.min(*r), h.max(*r)));
+        assert!(hi <= 8.0 * lo, "ranges {ranges:?} on one axis");
+    }
+    // By hand: the spin φ turns about φ̇ t = 150 rad/s over the run, the precession ψ about
+    // 3 rad/s: fifty times apart, never on one axis.
+    let duration = all[0].1[0].1.last().expect("points").0;
+    let spin = angles
+        .iter()
+        .flat_map(|(_, p)| p)
+        .map(|(_, p)| range(p))
+        .fold(0.0, f64::max);
+    assert!(
+        (spin / duration - 150.0).abs() < 15.0,
+        "the spin's range {spin} over {duration} s"
+    );
+    let energy = all
+        .iter()
+        .find(|(l, _)| l == "energy (J)")
+        .expect("the energy's plot");
+    let styles: Vec<&str> = energy.1.iter().map(|(o, _)| o.as_str()).collect();
+    assert_eq!(styles.len(), 3, "T, V and E");
+    assert!(
+        styles[0].contains("solid") && styles[1].contains("dashed") && styles[2].contains("dotted"),
+        "{styles:?}"
+    );
+
+    // The SVG plots alike: the energy's V and E dashed and dotted, their legend's samples too.
+    let dir = scratch("plots-top-svg");
+    explain("heavy-symmetric-top.json", &dir.join("top.md"), "markdown");
+    let energy = read(&dir.join("top-energy.svg"));
+    for pattern in ["stroke-dasharray=\"9,5\"", "stroke-dasharray=\"2,3\""] {
+        assert_eq!(
+            energy.matches(pattern).count(),
+            2,
+            "{pattern}: line and sample"
+        );
+    }
+    for file in [
+        "top-coordinates.svg",
+        "top-angles-2.svg",
+        "top-nutation.svg",
+    ] {
+        assert!(dir.join(file).exists(), "{file}");
+    }
+}

@@ -33,6 +33,7 @@ impl Painter {
         }
         let a = p2add(line_center, p2scale(t, -half));
         let b = p2add(line_center, p2scale(t, half));
+        let outside = std::mem::take(&mut self.items);
         self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
         let count = ((2.0 * half) / 6.0).floor() as usize;
         for k in 0..=count {
@@ -40,6 +41,42 @@ impl Painter {
             let e = p2add(s, p2add(p2scale(u, -6.0), p2scale(t, -5.0)));
             self.hatch_tick(s, e);
         }
+        self.close_ground(outside, (a, b), u);
+    }
+
+    /// The items drawn since `outside` was taken, as one group of class `ground` (which a
+    /// reader of the picture finds as the ground), its line `a`–`b` remembered with the
+    /// page's unit `up`: the unit vectors stand above it, not in the ground.
+    fn close_ground(&mut self, outside: Vec<Item>, (a, b): (P2, P2), up: P2) {
+        let items = std::mem::replace(&mut self.items, outside);
+        self.items.push(Item::Group {
+            class: "ground",
+            items,
+        });
+        self.grounds.push((a, b, up));
+    }
+
+    /// How many of the nine points of `room` (corners, edges' middles, centre) lie on the
+    /// ground's side of a ground line, within its length.
+    pub(super) fn under_ground(&self, room: &super::place::Box2) -> usize {
+        let mut count = 0;
+        for i in [-1.0, 0.0, 1.0] {
+            for j in [-1.0, 0.0, 1.0] {
+                let p = [
+                    room.center[0] + i * room.half[0],
+                    room.center[1] + j * room.half[1],
+                ];
+                let below = self.grounds.iter().any(|&(a, b, up)| {
+                    let along = [b[0] - a[0], b[1] - a[1]];
+                    let length = p2norm(along).max(1e-9);
+                    let s = ((p[0] - a[0]) * along[0] + (p[1] - a[1]) * along[1]) / length;
+                    let height = (p[0] - a[0]) * up[0] + (p[1] - a[1]) * up[1];
+                    (-2.0..=length + 2.0).contains(&s) && height < 0.0
+                });
+                count += usize::from(below);
+            }
+        }
+        count
     }
 
     /// A patch of floor through `corners` (in order): lightly filled, its edge thin, and
@@ -92,10 +129,12 @@ impl Painter {
         let t = p2unit(self.projection.direction(along)).unwrap_or([-u[1], u[0]]);
         let half = p2norm(self.projection.direction(along)).max(30.0);
         let (a, b) = (p2add(c, p2scale(t, -half)), p2add(c, p2scale(t, half)));
-        self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
         if !fixed {
+            self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
             return;
         }
+        let outside = std::mem::take(&mut self.items);
+        self.stroke(vec![a, b], 1.4, Ink::Black, None, false);
         // The hatching's normal side, `n`, is the page's side away from `up`.
         let n = p2scale(u, -1.0);
         let count = ((2.0 * half) / 7.0).floor().max(1.0) as usize;
@@ -104,6 +143,7 @@ impl Painter {
             let e = p2add(s, p2add(p2scale(n, 6.0), p2scale(t, -5.0)));
             self.hatch_tick(s, e);
         }
+        self.close_ground(outside, (a, b), u);
     }
 
     /// A fixed circular track that a disc rolls on, hatched on the side away from it.

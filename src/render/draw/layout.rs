@@ -59,6 +59,9 @@ pub(super) struct Painter {
     /// The bodies each marked point belongs to, in the scene's order of markers: its
     /// caption keeps out of the others.
     owners: Vec<Vec<String>>,
+    /// The ground's lines drawn, each from one end to the other with the page's unit
+    /// vector away from the ground: the unit vectors keep above them.
+    pub(super) grounds: Vec<(P2, P2, P2)>,
 }
 
 impl Painter {
@@ -451,8 +454,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
     projection.b[0] += extra / 2.0;
     let width = panels * panel_width;
     let legend_lines = wrap(&scene.legend, width - 24.0);
-    let legend =
-        18.0 * legend_lines.len() as f64 + if legend_lines.is_empty() { 0.0 } else { 12.0 };
+    let legend = legend_height(legend_lines.len());
     let height = height + legend;
     let scale = p2norm([projection.a[0][0], projection.a[1][0]])
         .max(p2norm([projection.a[0][1], projection.a[1][1]]))
@@ -472,6 +474,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         reach: room.reach,
         others: Vec::new(),
         owners: Vec::new(),
+        grounds: Vec::new(),
     };
     painter.straight = (scene.arrows.iter())
         .filter(|a| !(a.couple && scene.planar))
@@ -563,6 +566,11 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         },
         grow,
     }
+}
+
+/// The height of a legend of `lines` lines under a picture.
+fn legend_height(lines: usize) -> f64 {
+    18.0 * lines as f64 + if lines == 0 { 0.0 } else { 12.0 }
 }
 
 /// The picture's texts: its title above, the labels `placed`, the legend's lines below;

@@ -11,6 +11,7 @@
 //! [`motion_svg`] writes the motion. The other modules are private; what the solution
 //! uses is re-exported here.
 
+mod extent;
 mod fit;
 mod ground;
 pub mod layout;

@@ -159,28 +159,21 @@ fn item(out: &mut String, item: &Item, unit: f64) {
 /// picture is set in `room`: 1 at the natural size or larger, more when the picture shrinks
 /// (its labels keep 7 or 8 pt).
 pub fn label_growth(picture: &Picture, room: Size) -> f64 {
-    let height = picture.height - picture.legend.height;
-    let unit = (room.width / picture.width)
-        .min(room.height / height)
-        .min(NATURAL);
+    let unit = unit_in(picture, room);
     let points = if unit < SMALL_LABELS { 7.0 } else { 8.0 };
     (points / unit / 13.0).max(1.0)
 }
 
 /// The picture as a `tikzpicture`, scaled to fit `room`; needs `tikz` and `amsmath`.
 pub fn export(picture: &Picture, room: Size) -> String {
-    // The legend is stated once in the handout's text, not under every picture.
-    let height = picture.height - picture.legend.height;
-    let unit = (room.width / picture.width)
-        .min(room.height / height)
-        .min(NATURAL);
+    let unit = unit_in(picture, room);
     let mut out = String::new();
     // Narrower than the picture at this scale, a page's line shrinks it further (the
     // labels keep their size): pgfmath takes the smaller when the picture is set.
     let scale = format!(
         "min({},(\\linewidth-2pt)/{})*1pt",
         num_fine(unit),
-        num_fine(picture.width)
+        num_fine(inked(picture)[0])
     );
     let _ = writeln!(
         out,
@@ -248,6 +241,24 @@ pub fn export(picture: &Picture, room: Size) -> String {
     }
     out.push_str("\\end{tikzpicture}\n");
     out
+}
+
+/// The width and height of what `picture` draws on a page (its ink, without the title and
+/// legend the handout prints apart, nor the empty margin round them), with a point's room
+/// to spare; the picture's own size where it draws nothing.
+fn inked(picture: &Picture) -> [f64; 2] {
+    const SPARE: f64 = 2.0;
+    match super::extent::drawn(picture) {
+        Some((lo, hi)) => [hi[0] - lo[0] + SPARE, hi[1] - lo[1] + SPARE],
+        None => [picture.width, picture.height - picture.legend.height],
+    }
+}
+
+/// Points per picture unit where `picture` is set in `room`: its ink fills the room (a free
+/// body as large as its page allows), never past its natural size.
+fn unit_in(picture: &Picture, room: Size) -> f64 {
+    let [width, height] = inked(picture);
+    (room.width / width).min(room.height / height).min(NATURAL)
 }
 
 fn num_fine(x: f64) -> String {

@@ -1,5 +1,5 @@
 //! The symbol of a joint in a picture: a pin, a slider on its rail, a ball, a weld, the
-//! ground under a joint to `N`, and the rollers of a carrier on a rail (`rollers.rs`).
+//! ground under a joint to `N`, and the ground under a carrier on a rail (`guide.rs`).
 
 use super::numbers::{add, cross, dot, norm, scale, sub, unit, Numbers};
 use crate::problem::{BodyId, JointKind};
@@ -18,7 +18,7 @@ pub fn joint(n: &Numbers, j: usize, size: f64) -> Vec<Shape> {
         .and_then(unit)
         .unwrap_or([0.0, 0.0, 1.0]);
     if model.is_planar() {
-        if let Some(shapes) = super::rollers::rollers(n, j, axis, size) {
+        if let Some(shapes) = super::guide::guide(n, j, axis, size) {
             return shapes;
         }
     }

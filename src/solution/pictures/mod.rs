@@ -7,13 +7,13 @@ pub(super) mod bodies;
 pub(super) mod build;
 mod carriers;
 pub(super) mod gauges;
+mod guide;
 mod joint_symbols;
 pub(super) mod lanes;
 mod load_symbols;
 pub(super) mod motion;
 mod names;
 pub(super) mod numbers;
-mod rollers;
 pub(super) mod shapes;
 pub(super) mod sheets;
 mod sliding;
@@ -126,6 +126,8 @@ pub(super) fn size_of(n: &Numbers) -> f64 {
 /// Every picture of `derivation` at time `t`, coordinates `q` and rates `rates`, seen
 /// along `view`: the configuration, then one per free body of the plan. With the q''
 /// (`accelerations`) the kinetic diagrams carry `m a*` and `I α`; without, only the bodies.
+/// Word-named bodies and points are printed by the letters the handout gives them (the
+/// contact `lane` is P: F^P, not F^lane), so that a picture and its handout agree.
 pub fn draw(
     derivation: &Derivation,
     t: f64,
@@ -134,7 +136,14 @@ pub fn draw(
     accelerations: Option<&[f64]>,
     view: View,
 ) -> Vec<Drawing> {
-    drawings(derivation, (t, q, rates), accelerations, view, (true, &[]))
+    let names = crate::solution::shown_names::shown_names(&derivation.model);
+    drawings(
+        derivation,
+        (t, q, rates),
+        accelerations,
+        view,
+        (true, &names),
+    )
 }
 
 /// The pictures of [`draw`] as a handout prints them: word-named bodies and points by

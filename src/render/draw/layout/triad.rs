@@ -13,6 +13,8 @@ use super::Painter;
 const LENGTH: f64 = 24.0;
 /// Room kept around the arrows (their heads and a margin).
 const MARGIN: f64 = 5.0;
+/// The room kept round another frame's arrows for the names at their tips.
+const NAMES: f64 = 16.0;
 /// How far the origin may move, nearest first.
 const SHIFTS: [f64; 10] = [0.0, 6.0, 12.0, 18.0, 26.0, 36.0, 48.0, 62.0, 80.0, 100.0];
 
@@ -81,7 +83,10 @@ impl Painter {
                 let t = toward + f64::from(turn as u8) * std::f64::consts::PI / 8.0;
                 let o = [wanted[0] + gap * t.cos(), wanted[1] + gap * t.sin()];
                 let room = Self::triad_box(o, directions);
-                let cost = self.obstacles.clash(&room) + 10 * self.over_bodies(&room);
+                let cost = self.obstacles.clash(&room)
+                    + 10 * self.over_bodies(&room)
+                    + 10 * self.under_ground(&room)
+                    + 10 * self.over_triads(&room);
                 if cost == 0 {
                     return o;
                 }
@@ -94,6 +99,38 @@ impl Painter {
             }
         }
         best.1
+    }
+
+    /// How many of the triads drawn before, with the room round their tips that their
+    /// names will take, `room` meets: two frames' unit vectors (a rack's and its pinion's)
+    /// stand apart, their names not mixed.
+    fn over_triads(&self, room: &Box2) -> usize {
+        (self.items.iter())
+            .filter_map(|item| match item {
+                Item::Group {
+                    class: "triad",
+                    items,
+                } => Some(items),
+                _ => None,
+            })
+            .filter(|items| {
+                let points = items.iter().flat_map(|i| match i {
+                    Item::Stroke(s) => s.points.clone(),
+                    _ => Vec::new(),
+                });
+                let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+                for p in points {
+                    for k in 0..2 {
+                        lo[k] = lo[k].min(p[k]);
+                        hi[k] = hi[k].max(p[k]);
+                    }
+                }
+                (0..2).all(|k| {
+                    lo[k] - NAMES < room.center[k] + room.half[k]
+                        && room.center[k] - room.half[k] < hi[k] + NAMES
+                })
+            })
+            .count()
     }
 
     /// How many points of a grid over `room` fall inside a body.

@@ -1,18 +1,16 @@
 //! A carrier (a cart, a rack) that slides on the ground along a rail is drawn on its
-//! guide: two rollers under the block's bottom face and the hatched ground under them, not
-//! a sleeve and hatching at the joint's point on the block's top face (where another body
-//! rolls).
+//! guide: its bottom face rests on the hatched ground, as a block sliding on a smooth floor
+//! is drawn (no rollers: it slides), not a sleeve and hatching at the joint's point on the
+//! block's top face (where another body rolls).
 
 use super::numbers::{add, dot, scale, Numbers, P3};
 use crate::problem::{BodyId, JointKind};
 use crate::render::draw::{BodyKind, Shape};
 
-/// A roller's radius, as a part of the block's depth.
-const ROLLER: f64 = 0.3;
-
-/// The rollers and ground of joint `j` when it is a rail (a prismatic joint on `N`) under a
-/// body drawn as a carrier block along `axis` (unit, in `N`); `None` for any other joint.
-pub fn rollers(n: &Numbers, j: usize, axis: P3, size: f64) -> Option<Vec<Shape>> {
+/// The ground of joint `j` when it is a rail (a prismatic joint on `N`) under a body drawn
+/// as a carrier block along `axis` (unit, in `N`): a hatched line along the block's bottom
+/// face; `None` for any other joint.
+pub fn guide(n: &Numbers, j: usize, axis: P3, size: f64) -> Option<Vec<Shape>> {
     let joint = &n.model.problem.joints[j];
     if joint.kind != JointKind::Prismatic || joint.parent != BodyId::GROUND {
         return None;
@@ -42,31 +40,17 @@ pub fn rollers(n: &Numbers, j: usize, axis: P3, size: f64) -> Option<Vec<Shape>>
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
             (lo.min(s), hi.max(s))
         });
-    let top = corners
-        .iter()
-        .map(|c| dot(*c, up))
-        .fold(f64::NEG_INFINITY, f64::max);
-    let (start, radius) = (corners[0], ROLLER * (top - bottom));
+    let start = corners[0];
     // A point at `s` along the rail, `level` up from the ground.
     let at = |s: f64, level: f64| -> P3 {
         let p = add(start, scale(axis, s - dot(start, axis)));
         add(p, scale(up, level - dot(p, up)))
     };
-    let mut shapes: Vec<Shape> = [lo + 0.22 * (hi - lo), hi - 0.22 * (hi - lo)]
-        .into_iter()
-        .map(|s| Shape::Wheel {
-            center: at(s, bottom - radius),
-            normal: [0.0, 0.0, 1.0],
-            radius,
-            mark: axis,
-        })
-        .collect();
     let middle = 0.5 * (lo + hi);
-    let ground = at(middle, bottom - 2.0 * radius);
-    shapes.push(Shape::Ground {
-        at: ground,
+    Some(vec![Shape::Surface {
+        at: at(middle, bottom),
         along: scale(axis, 0.5 * (hi - lo) + 0.1 * size),
         up,
-    });
-    Some(shapes)
+        fixed: true,
+    }])
 }
