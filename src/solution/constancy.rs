@@ -1,6 +1,6 @@
 //! "Check that the total mechanical energy stays constant", answered yes or no: where an
 //! item of the statement asks the same quantity at the start and after a simulated time,
-//! the second answer says whether it stayed constant, the value it stays at and by how much
+//! the second answer says whether it stayed constant, and by how much
 //! at most it changes over the whole motion, in its own unit, and points to the plot.
 
 use crate::numeric::Answer;
@@ -74,8 +74,8 @@ fn bound(change: f64, unit: &str) -> String {
     }
 }
 
-/// Adds the yes or no to the later answer of each such pair: the value it stays at, and by
-/// how much at most it changes, in its own unit.
+/// Adds the yes or no to the later answer of each such pair: by how much at most it
+/// changes, in its own unit (its value is on the answers' lines).
 pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let problem = worked.derivation.model.problem;
     let labels = super::answer_numbers::labels(problem);
@@ -114,19 +114,19 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
             })
             .map(|name| crate::render::unicode_of(&name))
             .unwrap_or_else(|| "it".to_string());
-        let value = fixed(start).replace('-', "−");
         let spaced = if unit.is_empty() {
             String::new()
         } else {
             format!(" {unit}")
         };
         let note = match (relative <= 1e-6, measured) {
+            // Its value is on the lines above: the yes says only by how little it moves.
             (true, Some(m)) => format!(
-                "Yes: {symbol} stays {value}{spaced} (over the whole motion it changes by {}, the energy plot of step 6).",
+                "Yes: over the whole motion {symbol} changes by {} (the energy plot of step 6).",
                 bound(m.max(change), &unit)
             ),
             (true, None) => format!(
-                "Yes: {symbol} stays {value}{spaced} (after {time} s it has changed by {}).",
+                "Yes: after {time} s {symbol} has changed by {}.",
                 bound(change, &unit)
             ),
             (false, _) => format!(
