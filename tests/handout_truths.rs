@@ -397,10 +397,11 @@ fn the_gears_tooth_force_is_tangential_and_its_axles_are_named_as_stated() {
         "On the gear, the pinion exerts",
         " The pressure angle",
     );
-    assert!(words.contains("a tangential tooth force along"), "{words}");
-    let line = between(answers, "Find", "On the gear");
-    let said = number_after(line, "\\mathrm{N}}$");
-    assert!((said.abs() - force).abs() < 1e-9 * force, "{said} {force}");
+    // Its size on its component line (the gear's centre is level with the pinion's: the
+    // force is vertical), the words after it without the number.
+    assert!(words.contains("a tangential tooth force up"), "{words}");
+    let said = number_after(answers, "\\cdot \\hat{\\mathbf{n}}_{y} = ");
+    assert!((said - force).abs() < 1e-9 * force, "{said} {force}");
     assert!(
         answers.contains("The pressure angle is neglected"),
         "{answers}"

@@ -43,7 +43,10 @@ const ONE_LINE_SYMBOLS: f64 = 40.0;
 /// whole right side (no continued sum) and together they fit [`ONE_LINE_SYMBOLS`].
 fn in_one_line(lines: &[String]) -> Option<String> {
     // A line as given may hold several, joined already.
-    let lines: Vec<&str> = (lines.iter()).flat_map(|l| l.split(" \\\\ ")).collect();
+    let lines: Vec<&str> = (lines.iter())
+        .flat_map(|l| l.split(" \\\\ "))
+        .map(str::trim)
+        .collect();
     let (first, rest) = lines.split_first()?;
     if rest.is_empty() || !rest.iter().all(|l| l.starts_with("&= ")) {
         return None;
@@ -107,7 +110,7 @@ mod tests {
     fn one_bodys_part_is_worked_under_the_wholes_name() {
         let lines = vec![
             "F^{*}_{4,D} &= \\mathbf{v}^{D^*}_{4} \\cdot \\mathbf{R}^{*}_{D}".to_string(),
-            "&= -m \\ddot{x}".to_string(),
+            " &= -m \\ddot{x}".to_string(),
         ];
         let parts = ["F^{*}_{4,D}".to_string()];
         let one = sum_of_parts("F^{*}_{4}", &parts, lines.clone(), "", true).expect("short");
@@ -131,6 +134,9 @@ mod tests {
         let parts = ["F^{*}_{1,D}".to_string()];
         let block = sum_of_parts("F^{*}_{1}", &parts, lines, "", true).expect("short");
         assert!(block.contains(" \\\\ &= "), "{block}");
-        assert!(block.starts_with("\\begin{aligned} F^{*}_{1} &= a_{1}"), "{block}");
+        assert!(
+            block.starts_with("\\begin{aligned} F^{*}_{1} &= a_{1}"),
+            "{block}"
+        );
     }
 }

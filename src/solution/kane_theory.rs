@@ -36,14 +36,18 @@ pub fn theory(derivation: &Derivation) -> Option<KaneTheory> {
     let x = free(&POINT_LETTERS, "");
     let b = free(&BODY_LETTERS, &x);
     let couples = match rigid {
-        true => format!(" + \\sum_{{{b}}} \\boldsymbol{{\\omega}}^{{{b}}}_r \\cdot \\mathbf{{T}}_{{{b}}}"),
+        true => format!(
+            " + \\sum_{{{b}}} \\boldsymbol{{\\omega}}^{{{b}}}_r \\cdot \\mathbf{{T}}_{{{b}}}"
+        ),
         false => String::new(),
     };
     let couple_words = match rigid {
         true => format!(" and $\\mathbf{{T}}_{b}$ a couple on body ${b}$"),
         false => String::new(),
     };
-    let active = format!("F_r = \\sum_{{{x}}} \\mathbf{{v}}^{{{x}}}_r \\cdot \\mathbf{{R}}_{{{x}}}{couples}");
+    let active = format!(
+        "F_r = \\sum_{{{x}}} \\mathbf{{v}}^{{{x}}}_r \\cdot \\mathbf{{R}}_{{{x}}}{couples}"
+    );
     let (forces_tex, note) = if rigid {
         (
             format!("{active}, \\qquad F^{{*}}_r = \\sum_{{{b}}} \\left(\\mathbf{{v}}^{{{b}^*}}_r \\cdot \\mathbf{{R}}^{{*}}_{{{b}}} + \\boldsymbol{{\\omega}}^{{{b}}}_r \\cdot \\mathbf{{T}}^{{*}}_{{{b}}}\\right),"),

@@ -275,7 +275,11 @@ pub fn say_the_acceleration_level_once(views: &mut [EquationView]) {
     };
     if !later.is_empty() {
         let list = super::rejected::row_list(later);
-        let rows = if later.len() == 1 { "is row" } else { "are rows" };
+        let rows = if later.len() == 1 {
+            "is row"
+        } else {
+            "are rows"
+        };
         views[*first].label =
             format!("(differentiated to the acceleration level, as {rows} {list})");
     }
