@@ -16,11 +16,15 @@ const MOST_PAGES: usize = 4;
 /// Handouts still longer than [`MOST_PAGES`], each with the most pages it may take until
 /// its text is made shorter: none may grow, and none other may pass 4 pages. The worked
 /// handouts measured on every problem once over 4 pages; the worksheets as first measured.
-const STILL_LONGER: &[(&str, usize)] = &[
-    ("gyroscope-gimbal-kane", 5),
-    ("gyroscope-gimbal-motion-law", 5),
-    ("rolling-coin-kane", 5),
-    ("wheel-pendulum-kane", 5),
+const STILL_LONGER: &[(&str, usize)] = &[("wheel-pendulum-kane", 5)];
+
+/// The worked handouts last brought within [`MOST_PAGES`], set on every run: the gyroscope
+/// (its statement asks for the gimbal's reaction alone) by Kane and the Motion Law, and the
+/// coin by Kane (its step 6 and answers once spilled onto a fifth page).
+const LAST_BROUGHT_IN: [(&str, &str); 3] = [
+    ("gyroscope-gimbal", "kane"),
+    ("gyroscope-gimbal", "motion-law"),
+    ("rolling-coin", "kane"),
 ];
 
 /// The most pages the handout `name` may take.
@@ -125,6 +129,32 @@ fn set(handout: &Handout, dir: &Path) -> Option<Measured> {
         .expect("pdflatex runs");
     let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
     Some(measure(&log))
+}
+
+#[test]
+fn the_handouts_last_brought_within_four_pages_stay_there() {
+    if !pdflatex_present("the handouts' pages") {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("mbd-pages-last-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch");
+    for (name, method) in LAST_BROUGHT_IN {
+        let handout = Handout {
+            problem: crate::support::problem(name),
+            method,
+            student: false,
+        };
+        let m = set(&handout, &dir).expect("explain writes the handout");
+        assert!(
+            (1..=MOST_PAGES).contains(&m.pages),
+            "{}: {} pages",
+            handout.name(),
+            m.pages
+        );
+        assert!(m.widest_overfull <= MOST_OVERFULL, "{}", handout.name());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Every one- and two-body handout: 344 handouts, twenty minutes and more of pdflatex on a

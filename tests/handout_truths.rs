@@ -55,12 +55,21 @@ fn a_reaction_on_a_body_inside_the_rows_free_bodies_is_drawn_on_it() {
     assert!(!answers.contains("No free body drawn"), "{answers}");
     assert!(answers.contains("Free body D of step 2"), "{answers}");
     assert!(!answers.contains("acts as drawn"), "{answers}");
+    // The sizes on the component lines, the words once after them without the numbers.
     assert!(
-        answers.contains("On the disc, the cart exerts friction $2.18182\\ \\mathrm{N}$ along $+\\hat{\\mathbf{c}}_{x}$"),
+        answers.contains("\\cdot \\hat{\\mathbf{c}}_{x} = 2.18182\\ \\mathrm{N}"),
         "{answers}"
     );
     assert!(
-        answers.contains("a normal force $19.62\\ \\mathrm{N}$ up ($+\\hat{\\mathbf{c}}_{y}$)"),
+        answers.contains("\\cdot \\hat{\\mathbf{c}}_{y} = 19.62\\ \\mathrm{N}"),
+        "{answers}"
+    );
+    assert!(
+        answers.contains("On the disc, the cart exerts friction along $+\\hat{\\mathbf{c}}_{x}$"),
+        "{answers}"
+    );
+    assert!(
+        answers.contains("a normal force up ($+\\hat{\\mathbf{c}}_{y}$)"),
         "{answers}"
     );
     // The cart carries the opposite force: −(2.18182, 19.62) in C's unit vectors.
@@ -256,14 +265,18 @@ fn the_balls_forces_are_said_in_words_on_the_ball() {
         constant("bowling-ball", "mu"),
     );
     let words = between(answers, "On the ball, the lane exerts", ".\n");
-    let friction = number_after(words, "sliding friction $");
-    assert!((friction - mu * m * g).abs() < 1e-9, "{words}");
+    // The sizes on the component lines; the words say what each is, not its size again.
+    let friction = number_after(answers, "\\cdot \\hat{\\mathbf{n}}_{x} = ");
+    assert!((friction + mu * m * g).abs() < 1e-9, "{answers}");
+    assert!(words.contains("sliding friction along"), "{words}");
     assert!(
         words.contains("along $-\\hat{\\mathbf{n}}_{x}$ (against the slip)"),
         "{words}"
     );
-    let normal = number_after(words, "a normal force $");
-    assert!((normal - m * g).abs() < 1e-9, "{words}");
+    let normal = number_after(answers, "\\cdot \\hat{\\mathbf{n}}_{y} = ");
+    assert!((normal - m * g).abs() < 1e-9, "{answers}");
+    assert!(words.contains("a normal force up"), "{words}");
+    assert!(!words.contains("\\mathrm{N}"), "{words}");
     assert!(words.contains("up ($+\\hat{\\mathbf{n}}_{y}$)"), "{words}");
     assert!(!text.contains("opposite to the arrow drawn"), "{answers}");
     assert!(!text.contains("as drawn"), "{answers}");
@@ -296,7 +309,8 @@ fn a_plane_contacts_tangent_is_f_t_and_the_racks_push_is_said() {
         "On the pinion, the rack exerts",
         " The pressure angle",
     );
-    let push = number_after(words, "a tangential tooth force $");
+    let push = -number_after(answers, "\\cdot \\hat{\\mathbf{r}}_{x} = ");
+    assert!(words.contains("a tangential tooth force along"), "{words}");
     let expected = big_m * (t / r) / (big_m + i / (r * r));
     assert!(
         (push - expected).abs() < 1e-4 * expected,
@@ -383,7 +397,10 @@ fn the_gears_tooth_force_is_tangential_and_its_axles_are_named_as_stated() {
         "On the gear, the pinion exerts",
         " The pressure angle",
     );
-    let said = number_after(words, "a tangential tooth force $");
+    // Its size on its component line (the gear's centre is level with the pinion's: the
+    // force is vertical), the words after it without the number.
+    assert!(words.contains("a tangential tooth force up"), "{words}");
+    let said = number_after(answers, "\\cdot \\hat{\\mathbf{n}}_{y} = ");
     assert!((said - force).abs() < 1e-9 * force, "{said} {force}");
     assert!(
         answers.contains("The pressure angle is neglected"),

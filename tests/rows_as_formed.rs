@@ -160,7 +160,7 @@ fn the_constraint_rows_say_once_that_they_are_differentiated() {
     // so that they hold the q''. The first says so for both; the second is headed by what it
     // constrains alone.
     let markdown = explain("four-bar", "newton-euler", "markdown");
-    let first = "**10. $\\text{loop closure at R}\\text{, along } \\hat{\\mathbf{b}}_{x}$ (differentiated to the acceleration level, as are the constraint rows after it)**";
+    let first = "**10. $\\text{loop closure at R}\\text{, along } \\hat{\\mathbf{b}}_{x}$ (differentiated to the acceleration level, as is row 11)**";
     let second = "**11. $\\text{loop closure at R}\\text{, along } \\hat{\\mathbf{b}}_{y}$**";
     assert!(markdown.contains(first), "no {first}");
     assert!(markdown.contains(second), "no {second}");

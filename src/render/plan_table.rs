@@ -27,7 +27,11 @@ pub fn columns(rows: &[PlanRow]) -> PlanColumns {
     };
     let free_body_cm = widest(|r| &r.free_body_tex, FREE_BODY_CM);
     let equation_cm = widest(|r| &r.equation_tex, EQUATION_CM);
-    let direction_cm = widest(|r| &r.direction_tex, DIRECTION_CM);
+    // Kane's rows alone name no direction: the table has no such column.
+    let direction_cm = match rows.iter().all(|r| r.direction_tex.is_empty()) {
+        true => 0.0,
+        false => widest(|r| &r.direction_tex, DIRECTION_CM),
+    };
     let unknowns_cm =
         ((TABLE_CM - free_body_cm - equation_cm - direction_cm) * 10.0).round() / 10.0;
     PlanColumns {
@@ -62,5 +66,14 @@ mod tests {
         let group = columns(&[row("A + B + C + D + E + G", "\\sum \\mathbf{M}_{O}")]);
         assert_eq!(group.free_body_cm, 4.2);
         assert!(group.unknowns_cm < single.unknowns_cm);
+    }
+
+    #[test]
+    fn rows_without_a_direction_give_its_room_to_the_unknowns() {
+        let mut kane = row("A + B", "F_{1} + F^{*}_{1}");
+        kane.direction_tex = "".into();
+        let c = columns(&[kane]);
+        assert_eq!(c.direction_cm, 0.0);
+        assert!((c.free_body_cm + c.equation_cm + c.unknowns_cm - TABLE_CM).abs() < 1e-9);
     }
 }

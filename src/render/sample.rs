@@ -270,6 +270,7 @@ fn plan() -> Plan {
     ];
     Plan {
         columns: super::plan_table::columns(&rows),
+        directions: true,
         rows,
         rejected: vec![Rejected {
             free_body_tex: Math::from(s("A")),

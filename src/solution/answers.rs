@@ -13,6 +13,8 @@ use crate::symbolic::{fixed, latex, latex_unit_vector, ComponentKind};
 pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
     let labels = labels(problem);
     let mut noted: Vec<String> = Vec::new();
+    // A force's words, said once: two answers of the same force at two states read alike.
+    let mut said: Vec<String> = Vec::new();
     problem
         .questions
         .iter()
@@ -60,7 +62,9 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
             super::answer_leads::drop_said_time(question, &mut view);
             // Each force found said once in words: what it is, its size, its sense and
             // the body it acts on.
-            if let Some(words) = super::force_words::note(problem, question, answer) {
+            let words = super::force_words::note(problem, question, answer);
+            if let Some(words) = words.filter(|w| !said.contains(w)) {
+                said.push(words.clone());
                 view.steps.push(crate::render::AnswerStep {
                     text: MarkupLine::from(words),
                     math: Math::from(String::new()),

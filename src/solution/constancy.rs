@@ -1,7 +1,7 @@
 //! "Check that the total mechanical energy stays constant", answered yes or no: where an
 //! item of the statement asks the same quantity at the start and after a simulated time,
-//! the second answer says whether it stayed constant and the value it stays at, and points
-//! to the plot.
+//! the second answer says whether it stayed constant and points to the plot; its value is
+//! on the answer's lines already.
 
 use crate::numeric::Answer;
 use crate::numeric::CheckKind;
@@ -49,7 +49,7 @@ fn largest_change(worked: &Worked, start: f64, unit: &str) -> Option<f64> {
     Some(total.iter().fold(0.0f64, |m, p| m.max((p.1 - first).abs())))
 }
 
-/// Adds the yes or no to the later answer of each such pair: the value it stays at.
+/// Adds the yes or no to the later answer of each such pair (its value is on the lines).
 pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     let problem = worked.derivation.model.problem;
     let labels = super::answer_numbers::labels(problem);
@@ -88,7 +88,6 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
             })
             .map(|name| crate::render::unicode_of(&name))
             .unwrap_or_else(|| "it".to_string());
-        let value = fixed(start).replace('-', "−");
         let spaced = if unit.is_empty() {
             String::new()
         } else {
@@ -98,9 +97,9 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         // the energy stays constant, and the plot shows it.
         let note = match (relative <= 1e-6, measured) {
             (true, Some(m)) if m <= 1e-6 * start.abs().max(1.0) => format!(
-                "Yes: {symbol} stays {value}{spaced} over the whole motion, as the energy plot of step 6 shows."
+                "Yes: {symbol} stays constant over the whole motion, as the energy plot of step 6 shows."
             ),
-            (true, _) => format!("Yes: {symbol} is still {value}{spaced} after {time} s."),
+            (true, _) => format!("Yes: {symbol} is unchanged after {time} s."),
             (false, _) => format!(
                 "No: after {time} s {symbol} has changed by {}{spaced} from its value at the start.",
                 fixed(late - start).replace('-', "−")

@@ -366,7 +366,8 @@ pub fn plan(derivation: &Derivation) -> Plan {
                 (None, _) if derivation.method == Method::Lagrange => {
                     Math::from(super::lagrange::direction_tex(derivation, row))
                 }
-                (None, _) => "\\text{partial velocities}".into(),
+                // Kane's row dots with every partial velocity: no one direction to name.
+                (None, _) => Math::from(String::new()),
             },
             unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),
         })
@@ -390,13 +391,17 @@ pub fn plan(derivation: &Derivation) -> Plan {
         ),
         Method::MotionLaw => {
             let order = super::rejected::order_note(derivation);
-            let mut note = "Each row takes a free body (one body or several together) and sums its forces along a direction or its moments about a point chosen so that the reactions not sought drop out.".to_string();
-            if !order.is_empty() {
-                note = format!("{note} {order}");
-            }
+            // What this plan's rows do, not how every plan is made.
+            let moments = super::rejected::moment_note(derivation);
+            let note = [moments, order]
+                .into_iter()
+                .filter(|s| !s.is_empty())
+                .collect::<Vec<_>>()
+                .join(" ");
             // Why a light rod's closure carries one unknown, before the rows that use it.
             let mut sentences = super::light_rods::notes(derivation);
             sentences.push(note);
+            sentences.retain(|s| !s.is_empty());
             sentences.join(" ")
         }
         Method::Kane => {
@@ -419,6 +424,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
     };
     Plan {
         columns: crate::render::plan_columns(&rows),
+        directions: rows.iter().any(|r| !r.direction_tex.is_empty()),
         rows,
         rejected_total: rejected_all.len(),
         rejected,

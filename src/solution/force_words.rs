@@ -1,12 +1,13 @@
 //! A reaction asked for, said once in words beside its components, as a textbook states a
-//! force: what it is (friction, the normal force, a tooth force, the force of a pin), how
-//! large, which way (up or down where its unit vector is vertical, else along the signed
-//! unit vector) and which body exerts it on which: "On the ball, the lane exerts sliding
-//! friction 13.734 N along −n̂_x (against the slip) and a normal force 68.67 N up (+n̂_y)."
-//! Where the components are along a body's unit vectors that are not the ground's, the
-//! ground's are given too, with the force's size and direction in the plane.
+//! force: what it is (friction, the normal force, a tooth force, the force of a pin), which
+//! way (up or down where its unit vector is vertical, else along the signed unit vector)
+//! and which body exerts it on which: "On the ball, the lane exerts sliding friction along
+//! −n̂_x (against the slip) and a normal force up (+n̂_y)." The sizes are the component lines
+//! above it, not said again. Where the components are along a body's unit vectors that are
+//! not the ground's, the ground's are given too, with the force's size and direction in
+//! the plane.
 
-use super::answer_numbers::{number_tex, unit_tex};
+use super::answer_numbers::number_tex;
 use super::joint_words::body_words;
 use crate::mechanics::{Model, Site, SiteKind, Vector};
 use crate::numeric::{Answer, Quantity, ReactionColumn};
@@ -155,13 +156,13 @@ fn sentence(
     let mut parts: Vec<String> = Vec::new();
     let plain: Vec<String> = (forces.iter().zip(&kinds))
         .filter(|(_, k)| **k == Kind::Force)
-        .map(|(&(axis, value), _)| sized(at, frame, axis, value, "N"))
+        .map(|(&(axis, value), _)| sense(at, frame, axis, value))
         .collect();
     if !plain.is_empty() {
-        parts.push(format!("a force of {}", plain.join(" and ")));
+        parts.push(format!("a force {}", plain.join(" and ")));
     }
     for (&(axis, value), kind) in forces.iter().zip(&kinds) {
-        let words = sized(at, frame, axis, value, "N");
+        let words = sense(at, frame, axis, value);
         match kind {
             Kind::Normal => parts.push(format!("a normal force {words}")),
             Kind::Friction { sliding: true } => {
@@ -173,7 +174,7 @@ fn sentence(
         }
     }
     for &(axis, value) in moments {
-        parts.push(format!("a couple {}", sized(at, frame, axis, value, "N m")));
+        parts.push(format!("a couple {}", sense(at, frame, axis, value)));
     }
     let on = body_words(problem, site.child);
     let by = exerter(problem, site);
@@ -223,19 +224,18 @@ fn exerter(problem: &Problem, site: &Site) -> String {
     }
 }
 
-/// `13.734 N along $-\hat{\mathbf{n}}_{x}$`, or `68.67 N up ($+\hat{\mathbf{n}}_{y}$)`
-/// where the unit vector is vertical.
-fn sized(at: &At, frame: &str, axis: usize, value: f64, unit: &str) -> String {
+/// `along $-\hat{\mathbf{n}}_{x}$`, or `up ($+\hat{\mathbf{n}}_{y}$)` where the unit
+/// vector is vertical: the component's sense, its size being on its line above.
+fn sense(at: &At, frame: &str, axis: usize, value: f64) -> String {
     let sign = if value > 0.0 { "+" } else { "-" };
     let vector = format!("${sign}{}$", latex_unit_vector(frame, axis as u8));
-    let size = format!("${}{}$", number_tex(value.abs()), unit_tex(unit));
     let vertical = at
         .up
         .map_or(0.0, |up| dot(at.unit_in_ground(axis), up) * value.signum());
     match vertical {
-        v if v > ALIGNED => format!("{size} up ({vector})"),
-        v if v < -ALIGNED => format!("{size} down ({vector})"),
-        _ => format!("{size} along {vector}"),
+        v if v > ALIGNED => format!("up ({vector})"),
+        v if v < -ALIGNED => format!("down ({vector})"),
+        _ => format!("along {vector}"),
     }
 }
 

@@ -93,5 +93,11 @@ pub fn inertia_by_body(
     if names.len() < 2 {
         return None;
     }
-    super::aligned::sum_of_parts(&format!("{tilde}^{{*}}_{{{r}}}"), &names, lines, whole)
+    super::aligned::sum_of_parts(
+        &format!("{tilde}^{{*}}_{{{r}}}"),
+        &names,
+        lines,
+        whole,
+        model.order.len() == 1,
+    )
 }

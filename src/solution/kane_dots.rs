@@ -212,7 +212,13 @@ pub fn inertia_dot_products(
     if names.is_empty() {
         return None;
     }
-    super::aligned::sum_of_parts(&format!("F^{{*}}_{{{r}}}"), &names, lines, whole)
+    super::aligned::sum_of_parts(
+        &format!("F^{{*}}_{{{r}}}"),
+        &names,
+        lines,
+        whole,
+        model.order.len() == 1,
+    )
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! Kane's method said once, where step 5 first uses it, and only what applies to the
 //! problem: the generalized active and inertia forces, with a body's inertia torque only
-//! where some body has rotational inertia.
+//! where some body has rotational inertia. Its letters for "a point" and "a body" are
+//! letters the problem does not print, so that a body named B is never read into the sums.
 
 use crate::equations::{Derivation, Method};
 use crate::mechanics::is_particle;
@@ -9,6 +10,10 @@ use crate::render::text::{MarkupLine, Math};
 
 /// The letters the formula's point may take, in order of preference.
 const POINT_LETTERS: [&str; 4] = ["P", "Q", "K", "X"];
+
+/// The letters the formula's body may take, in order of preference: none of the letters
+/// its terms are written with (`R`, `T`, `I`, `N`, `m`, `v`).
+const BODY_LETTERS: [&str; 5] = ["B", "D", "E", "H", "W"];
 
 /// The definitions of `F_r` and `F^*_r` for Kane's handout (`None` for the other methods):
 /// a problem of particles alone has no couples on bodies and no inertia torques, so their
@@ -22,23 +27,50 @@ pub fn theory(derivation: &Derivation) -> Option<KaneTheory> {
     // The point's letter is one the problem does not use (a double pendulum's pin is P),
     // nor a letter the handout prints for a point named by a word (a contact's P).
     let shown = super::shown_names::shown_names(model);
-    let letters: Vec<&str> = (POINT_LETTERS.iter().copied())
-        .filter(|l| shown.iter().all(|(_, letter)| letter != l))
-        .collect();
-    let x = crate::problem::free_letter(model.problem, &letters);
+    let free = |candidates: &[&'static str], taken: &str| -> String {
+        let letters: Vec<&str> = (candidates.iter().copied())
+            .filter(|l| *l != taken && shown.iter().all(|(_, letter)| letter != l))
+            .collect();
+        crate::problem::free_letter(model.problem, &letters)
+    };
+    let x = free(&POINT_LETTERS, "");
+    let b = free(&BODY_LETTERS, &x);
+    let couples = match rigid {
+        true => format!(
+            " + \\sum_{{{b}}} \\boldsymbol{{\\omega}}^{{{b}}}_r \\cdot \\mathbf{{T}}_{{{b}}}"
+        ),
+        false => String::new(),
+    };
+    let couple_words = match rigid {
+        true => format!(" and $\\mathbf{{T}}_{b}$ a couple on body ${b}$"),
+        false => String::new(),
+    };
+    let active = format!(
+        "F_r = \\sum_{{{x}}} \\mathbf{{v}}^{{{x}}}_r \\cdot \\mathbf{{R}}_{{{x}}}{couples}"
+    );
     let (forces_tex, note) = if rigid {
         (
-            format!("F_r = \\sum_{{{x}}} \\mathbf{{v}}^{{{x}}}_r \\cdot \\mathbf{{R}}_{{{x}}} + \\sum_{{B}} \\boldsymbol{{\\omega}}^{{B}}_r \\cdot \\mathbf{{T}}_{{B}}, \\qquad F^{{*}}_r = \\sum_{{B}} \\left(\\mathbf{{v}}^{{B^*}}_r \\cdot \\mathbf{{R}}^{{*}}_{{B}} + \\boldsymbol{{\\omega}}^{{B}}_r \\cdot \\mathbf{{T}}^{{*}}_{{B}}\\right),"),
-            format!("with $\\mathbf{{R}}_{x}$ a force applied at the point ${x}$, $\\mathbf{{T}}_B$ a couple on body $B$, $\\mathbf{{R}}^{{*}}_{{B}} = -m_B\\,\\mathbf{{a}}^{{B^*}}$ and $\\mathbf{{T}}^{{*}}_{{B}} = -\\boldsymbol{{\\alpha}}^{{B}} \\cdot \\mathbf{{I}}^{{B}} - \\boldsymbol{{\\omega}}^{{B}} \\times \\mathbf{{I}}^{{B}} \\cdot \\boldsymbol{{\\omega}}^{{B}}$."),
+            format!("{active}, \\qquad F^{{*}}_r = \\sum_{{{b}}} \\left(\\mathbf{{v}}^{{{b}^*}}_r \\cdot \\mathbf{{R}}^{{*}}_{{{b}}} + \\boldsymbol{{\\omega}}^{{{b}}}_r \\cdot \\mathbf{{T}}^{{*}}_{{{b}}}\\right),"),
+            format!("with $\\mathbf{{R}}_{x}$ a force applied at the point ${x}$, $\\mathbf{{T}}_{b}$ a couple on body ${b}$, $\\mathbf{{R}}^{{*}}_{{{b}}} = -m_{b}\\,\\mathbf{{a}}^{{{b}^*}}$ and $\\mathbf{{T}}^{{*}}_{{{b}}} = -\\boldsymbol{{\\alpha}}^{{{b}}} \\cdot \\mathbf{{I}}^{{{b}}} - \\boldsymbol{{\\omega}}^{{{b}}} \\times \\mathbf{{I}}^{{{b}}} \\cdot \\boldsymbol{{\\omega}}^{{{b}}}$."),
         )
     } else {
         (
-            format!("F_r = \\sum_{{{x}}} \\mathbf{{v}}^{{{x}}}_r \\cdot \\mathbf{{R}}_{{{x}}}, \\qquad F^{{*}}_r = \\sum_{{B}} \\mathbf{{v}}^{{B^*}}_r \\cdot \\mathbf{{R}}^{{*}}_{{B}},"),
-            format!("with $\\mathbf{{R}}_{x}$ a force applied at the point ${x}$ and $\\mathbf{{R}}^{{*}}_{{B}} = -m_B\\,\\mathbf{{a}}^{{B^*}}$ the inertia force of particle $B$ (a particle has no inertia torque)."),
+            format!("F_r = \\sum_{{{x}}} \\mathbf{{v}}^{{{x}}}_r \\cdot \\mathbf{{R}}_{{{x}}}, \\qquad F^{{*}}_r = \\sum_{{{b}}} \\mathbf{{v}}^{{{b}^*}}_r \\cdot \\mathbf{{R}}^{{*}}_{{{b}}},"),
+            format!("with $\\mathbf{{R}}_{x}$ a force applied at the point ${x}$ and $\\mathbf{{R}}^{{*}}_{{{b}}} = -m_{b}\\,\\mathbf{{a}}^{{{b}^*}}$ the inertia force of particle ${b}$ (a particle has no inertia torque)."),
         )
     };
     Some(KaneTheory {
         forces_tex: Math::from(forces_tex),
         note: MarkupLine::from(note),
+        velocity_partial_tex: Math::from(format!(
+            "\\mathbf{{v}}^{{{b}^*}}_r = \\partial\\,{{}}^{{N}}\\mathbf{{v}}^{{{b}^*}} / \\partial u_r"
+        )),
+        omega_partial_tex: Math::from(format!(
+            "\\boldsymbol{{\\omega}}^{{{b}}}_r = \\partial\\,{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{b}}} / \\partial u_r"
+        )),
+        active_tex: Math::from(format!("{active},")),
+        active_note: MarkupLine::from(format!(
+            "where $\\mathbf{{R}}_{x}$ is a force applied at the point ${x}${couple_words}"
+        )),
     })
 }

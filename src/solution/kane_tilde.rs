@@ -328,8 +328,13 @@ pub fn inertia_dot_products(
         .iter()
         .any(|p| latex_collected(&p.term).len() > LONGEST_REPEATED);
     let whole = if long { "" } else { whole };
-    let block =
-        super::aligned::sum_of_parts(&format!("\\tilde{{F}}^{{*}}_{{{r}}}"), &names, lines, whole)?;
+    let block = super::aligned::sum_of_parts(
+        &format!("\\tilde{{F}}^{{*}}_{{{r}}}"),
+        &names,
+        lines,
+        whole,
+        model.order.len() == 1,
+    )?;
     // An auxiliary speed's F̃*_r body by body only where that is short: a long one is formed
     // from the table as the rows before it show, and printed whole.
     (!auxiliary || block.len() <= LONGEST_AUXILIARY).then_some(block)

@@ -266,20 +266,25 @@ pub fn refer_to_repeated_vector_forms(derivation: &Derivation, views: &mut [Equa
 /// The constraint rows say once, at the first, that they are differentiated to the
 /// acceleration level: repeated on every heading it would take a line of its own.
 pub fn say_the_acceleration_level_once(views: &mut [EquationView]) {
-    let mut rows = views
-        .iter_mut()
-        .filter(|v| v.label == super::tex::ACCELERATION_LEVEL);
-    let Some(first) = rows.next() else {
+    let rows: Vec<usize> = (views.iter().enumerate())
+        .filter(|(_, v)| v.label == super::tex::ACCELERATION_LEVEL)
+        .map(|(i, _)| i)
+        .collect();
+    let [first, later @ ..] = rows.as_slice() else {
         return;
     };
-    let mut later = rows.peekable();
-    if later.peek().is_some() {
-        first.label =
-            "(differentiated to the acceleration level, as are the constraint rows after it)"
-                .into();
+    if !later.is_empty() {
+        let list = super::rejected::row_list(later);
+        let rows = if later.len() == 1 {
+            "is row"
+        } else {
+            "are rows"
+        };
+        views[*first].label =
+            format!("(differentiated to the acceleration level, as {rows} {list})");
     }
-    for view in later {
-        view.label.clear();
+    for &i in later {
+        views[i].label.clear();
     }
 }
 

@@ -107,7 +107,7 @@ pub fn repeats_the_same_point(derivation: &Derivation, rejected: &Rejected) -> b
 
 /// Plan rows (indices from 0) as a sentence names them, from 1, a run of three or more by
 /// its ends: `1, 2 and 4`, `1 to 6`.
-fn row_list(rows: &[usize]) -> String {
+pub(super) fn row_list(rows: &[usize]) -> String {
     let mut parts: Vec<String> = Vec::new();
     let mut i = 0;
     while i < rows.len() {
@@ -169,6 +169,41 @@ pub fn order_note(derivation: &Derivation) -> String {
         "The equations can be solved in order, a few unknowns at a time: {}.",
         parts.join(", then ")
     )
+}
+
+/// What this plan's moment rows leave out, said of its own points: "Taking moments about
+/// O and P leaves out the reactions at those points." Empty where no moment row is about a
+/// point where a reaction on its free body acts.
+pub fn moment_note(derivation: &Derivation) -> String {
+    let mut points: Vec<&str> = Vec::new();
+    let mut names: Vec<String> = Vec::new();
+    for row in &derivation.rows {
+        let Sum::Moment { point, position } = &row.sum else {
+            continue;
+        };
+        let acts = derivation.model.sites.iter().any(|site| {
+            site.name == *point
+                && !site.reactions.is_empty()
+                && row.free_body.contains(&site.child) != row.free_body.contains(&site.parent)
+        });
+        let kept = (row.unknowns.iter()).any(|u| match u {
+            crate::symbolic::Symbol::Unknown(unknown) => unknown.site() == Some(point.as_str()),
+            _ => false,
+        });
+        if acts && !kept && !points.contains(&point.as_str()) {
+            points.push(point);
+            let shown = super::moment_point::shown_point(&derivation.model, point, position);
+            names.push(format!("${}$", super::tex::point_tex(&shown)));
+        }
+    }
+    match names.as_slice() {
+        [] => String::new(),
+        [one] => format!("Taking moments about {one} leaves out the reaction at {one}."),
+        [rest @ .., last] => format!(
+            "Taking moments about {} and {last} leaves out the reactions at those points.",
+            rest.join(", ")
+        ),
+    }
 }
 
 #[cfg(test)]

@@ -73,6 +73,15 @@ pub struct KaneTheory {
     pub forces_tex: Math,
     /// What each symbol of `forces_tex` is, in markup.
     pub note: MarkupLine,
+    /// A mass centre's partial velocity defined, `v^{B*}_r = ∂v^{B*}/∂u_r`, with the
+    /// formula's body letter.
+    pub velocity_partial_tex: Math,
+    /// A body's partial angular velocity defined likewise.
+    pub omega_partial_tex: Math,
+    /// `F_r = …` alone, for a system at rest (inline math, ending in a comma).
+    pub active_tex: Math,
+    /// What its symbols are, in markup, without a closing full stop.
+    pub active_note: MarkupLine,
 }
 
 /// The dependent rates as a linear map of the independent ones at the initial state, and

@@ -307,6 +307,9 @@ pub struct Plan {
     pub note: MarkupLine,
     /// The widths of the table's columns in LaTeX.
     pub columns: PlanColumns,
+    /// Whether some row names a direction: Kane's rows alone name none, and the table
+    /// then has no direction column.
+    pub directions: bool,
 }
 
 /// The widths of step 3's table in centimetres, each column as wide as what it prints and
