@@ -2,7 +2,7 @@
 //! the coefficient of each unknown (the q'' and the reactions), the terms without rates
 //! (weights, springs, loads) and the terms with rates (centripetal, Coriolis, dampers).
 
-use super::reference::Sample;
+use super::reference::{Reference, Sample};
 use crate::symbolic::{
     add, eval, func, linear_split, mul, pow, simplify, substitute, Expr, Func, Node, Symbol,
 };
@@ -53,15 +53,12 @@ pub(super) fn values(e: &Expr, samples: &[Sample], free: bool) -> Vec<f64> {
         .collect()
 }
 
-/// The parts of `e`: one per unknown, then the terms without rates, then those with rates.
-/// `None` when an unknown does not appear linearly.
-pub(super) fn parts(
-    e: &Expr,
-    unknowns: &[Symbol],
-    rates: &[Symbol],
-    samples: &[Sample],
-) -> Option<Vec<Part>> {
-    let e = unfold(e);
+/// The parts of `e`, in the problem's own symbols (see [`Reference::own_symbols`]): one per
+/// unknown, then the terms without rates, then those with rates. `None` when an unknown
+/// does not appear linearly.
+pub(super) fn parts(e: &Expr, unknowns: &[Symbol], reference: &Reference) -> Option<Vec<Part>> {
+    let (rates, samples) = (&reference.rates, &reference.samples);
+    let e = reference.own_symbols(e);
     let (coefficients, rest) = linear_split(&e, unknowns).ok()?;
     let mut out: Vec<Part> = unknowns
         .iter()
