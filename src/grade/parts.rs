@@ -37,14 +37,6 @@ pub(super) struct Part {
     pub values: Vec<f64>,
 }
 
-/// `e` with every named quantity replaced by what it stands for.
-pub(super) fn unfold(e: &Expr) -> Expr {
-    substitute(e, &|s| match s {
-        Symbol::Defined(d) => Some(unfold(d.value())),
-        _ => None,
-    })
-}
-
 /// The values of `e` at the sampled states (`free`: with the q'' drawn at random).
 pub(super) fn values(e: &Expr, samples: &[Sample], free: bool) -> Vec<f64> {
     samples

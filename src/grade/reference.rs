@@ -108,7 +108,7 @@ impl<'p> Reference<'p> {
     /// replaced by what it stands for, and a prescribed motion's coordinate and rates by
     /// its expression (`phi'` by `W` where `phi = W*t`).
     pub fn own_symbols(&self, e: &Expr) -> Expr {
-        let e = super::parts::unfold(e);
+        let e = unfold(e);
         match self.prescribed.is_empty() {
             true => e,
             false => simplify(&substitute(&e, &|s| {
@@ -145,6 +145,14 @@ impl<'p> Reference<'p> {
             .filter(|(i, c)| c.motion.is_none() && !constraints.dependent.contains(i))
             .count()
     }
+}
+
+/// `e` with every named quantity replaced by what it stands for.
+pub(super) fn unfold(e: &Expr) -> Expr {
+    substitute(e, &|s| match s {
+        Symbol::Defined(d) => Some(unfold(d.value())),
+        _ => None,
+    })
 }
 
 /// Each prescribed coordinate (but a held one, whose name stands for its value), its rate
