@@ -4,7 +4,7 @@
 //! Law's module and re-run only by `pipeline`; `solution` runs no stage and writes no
 //! format; every source file within 600 lines; the same input gives the same bytes.
 
-use crate::support::{problem, run};
+use crate::support::{problem, run_afresh};
 use std::path::{Path, PathBuf};
 
 /// The stages `render` must not read: everything before the document it writes.
@@ -234,7 +234,7 @@ fn the_same_input_gives_the_same_bytes() {
             "--format".as_ref(),
             format.as_ref(),
         ];
-        let (first, second) = (run(&args), run(&args));
+        let (first, second) = (run_afresh(&args), run_afresh(&args));
         assert!(first.status.success(), "{format}: explain failed");
         assert!(
             first.stdout == second.stdout,

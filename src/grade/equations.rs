@@ -7,7 +7,7 @@ use super::diagnose::{compare, Finding};
 use super::names::Names;
 use super::numbers::{close, factor_expr, factor_text, is_zero, ratio};
 use super::parts::{parts, scale, Key, Part};
-use super::reference::Reference;
+use super::reference::{Reference, Sample};
 use super::report::Item;
 use crate::symbolic::{eval, linear_split, Expr, ParseError, Symbol};
 use nalgebra::DMatrix;
@@ -280,13 +280,13 @@ fn diagnose(reference: &Reference, rows: &[Row], residual: &Expr) -> String {
         .cloned()
         .collect();
     let samples = &reference.samples;
-    let Some(given) = parts(residual, &unknowns, &reference.rates, samples) else {
+    let Some(given) = parts(residual, &unknowns, reference) else {
         return "it is not linear in the second derivatives and the reactions".into();
     };
     let mut best: Option<(usize, f64, (usize, usize))> = None;
     let mut row_parts = Vec::new();
     for (r, row) in rows.iter().enumerate() {
-        let Some(expected) = parts(&row.expr, &unknowns, &reference.rates, samples) else {
+        let Some(expected) = parts(&row.expr, &unknowns, reference) else {
             row_parts.push(None);
             continue;
         };
@@ -306,14 +306,15 @@ fn diagnose(reference: &Reference, rows: &[Row], residual: &Expr) -> String {
     let Some(expected) = &row_parts[r] else {
         return "it matches no row of the worked solution".into();
     };
-    let scaled: Vec<Part> = expected.iter().map(|p| scale_part(p, k)).collect();
+    let by = factor_of(&given, expected, k, samples);
+    let scaled: Vec<Part> = expected.iter().map(|p| scale_part(p, &by, k)).collect();
     let size = scale(&given).max(scale(&scaled));
     let findings = compare(&given, &scaled, size, samples);
     let row = &rows[r];
     let times = if (k - 1.0).abs() < 1e-9 {
         String::new()
     } else {
-        format!(" (multiplied by {})", factor_text(k))
+        format!(" (multiplied by {by})")
     };
     let mut sentences: Vec<String> = Vec::new();
     for finding in findings.iter().take(3) {
@@ -336,12 +337,27 @@ fn diagnose(reference: &Reference, rows: &[Row], residual: &Expr) -> String {
     )
 }
 
-fn scale_part(p: &Part, k: f64) -> Part {
+fn scale_part(p: &Part, by: &Expr, k: f64) -> Part {
     Part {
         key: p.key.clone(),
-        expr: crate::symbolic::simplify(&(p.expr.clone() * factor_expr(k))),
+        expr: crate::symbolic::simplify(&(p.expr.clone() * by.clone())),
         values: p.values.iter().map(|v| v * k).collect(),
     }
+}
+
+/// The factor `k` between `given` and `expected` as the problem writes it: the ratio of
+/// the first two parts that are not zero, where it holds constants alone and is `k`
+/// (`-1/(R*m)` for an equation divided by m R), else `k` as a number or a fraction.
+fn factor_of(given: &[Part], expected: &[Part], k: f64, samples: &[Sample]) -> Expr {
+    let size = scale(given).max(scale(expected));
+    let symbolic = (given.iter().zip(expected))
+        .filter(|(g, e)| !is_zero(&g.values, size) && !is_zero(&e.values, size))
+        .map(|(g, e)| crate::symbolic::simplify(&(g.expr.clone() / e.expr.clone())))
+        .find(|ratio| {
+            let value = samples.first().map(|s| eval(ratio, &s.free));
+            ratio.is_constant() && value.is_some_and(|v| close(&[v], &[k], 0.0))
+        });
+    symbolic.unwrap_or_else(|| factor_expr(k))
 }
 
 /// The factor `k` for which most parts of `given` are `k` times those of `expected`
@@ -388,11 +404,10 @@ fn attribute(
     unknowns: &[Symbol],
     size: f64,
 ) -> Option<String> {
-    let samples = &reference.samples;
     let shortfall = &finding.shortfall;
     let mut found = Vec::new();
     for c in &row.contributions {
-        let parts = parts(&c.expr, unknowns, &reference.rates, samples)?;
+        let parts = parts(&c.expr, unknowns, reference)?;
         let part = parts.iter().find(|p| p.key == finding.key)?;
         let values: Vec<f64> = part.values.iter().map(|v| v * k).collect();
         if !is_zero(&values, size) {
@@ -437,6 +452,14 @@ fn label(kind: Kind, label: &str, key: &Key, velocity: &str) -> String {
     match (kind, key) {
         (Kind::InertiaForce(body), Key::Rates) => {
             format!("the {velocity} of {body}'s acceleration (in {label})")
+        }
+        // Without rates or second rates: what a motion prescribed in time adds (the bead
+        // on a hoop spun at W: m R W² sin θ cos θ).
+        (Kind::InertiaForce(body), Key::Free) => {
+            format!("the terms of {body}'s acceleration from the prescribed motion (in {label})")
+        }
+        (Kind::InertiaTorque(body), Key::Free) => {
+            format!("the terms of {body}'s inertia torque from the prescribed motion (in {label})")
         }
         _ => label.to_string(),
     }

@@ -2,7 +2,7 @@
 //! the coefficient of each unknown (the q'' and the reactions), the terms without rates
 //! (weights, springs, loads) and the terms with rates (centripetal, Coriolis, dampers).
 
-use super::reference::Sample;
+use super::reference::{Reference, Sample};
 use crate::symbolic::{
     add, eval, func, linear_split, mul, pow, simplify, substitute, Expr, Func, Node, Symbol,
 };
@@ -37,14 +37,6 @@ pub(super) struct Part {
     pub values: Vec<f64>,
 }
 
-/// `e` with every named quantity replaced by what it stands for.
-pub(super) fn unfold(e: &Expr) -> Expr {
-    substitute(e, &|s| match s {
-        Symbol::Defined(d) => Some(unfold(d.value())),
-        _ => None,
-    })
-}
-
 /// The values of `e` at the sampled states (`free`: with the q'' drawn at random).
 pub(super) fn values(e: &Expr, samples: &[Sample], free: bool) -> Vec<f64> {
     samples
@@ -53,15 +45,12 @@ pub(super) fn values(e: &Expr, samples: &[Sample], free: bool) -> Vec<f64> {
         .collect()
 }
 
-/// The parts of `e`: one per unknown, then the terms without rates, then those with rates.
-/// `None` when an unknown does not appear linearly.
-pub(super) fn parts(
-    e: &Expr,
-    unknowns: &[Symbol],
-    rates: &[Symbol],
-    samples: &[Sample],
-) -> Option<Vec<Part>> {
-    let e = unfold(e);
+/// The parts of `e`, in the problem's own symbols (see [`Reference::own_symbols`]): one per
+/// unknown, then the terms without rates, then those with rates. `None` when an unknown
+/// does not appear linearly.
+pub(super) fn parts(e: &Expr, unknowns: &[Symbol], reference: &Reference) -> Option<Vec<Part>> {
+    let (rates, samples) = (&reference.rates, &reference.samples);
+    let e = reference.own_symbols(e);
     let (coefficients, rest) = linear_split(&e, unknowns).ok()?;
     let mut out: Vec<Part> = unknowns
         .iter()

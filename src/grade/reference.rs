@@ -7,7 +7,7 @@ use crate::equations::{Derivation, Method};
 use crate::numeric::{Answer, System};
 use crate::pipeline::Solver;
 use crate::problem::Problem;
-use crate::symbolic::{eval, Symbol, Values};
+use crate::symbolic::{eval, simplify, substitute, time_derivative, Expr, Symbol, Values};
 use crate::Error;
 use nalgebra::{DMatrix, DVector};
 use std::cell::OnceCell;
@@ -52,6 +52,9 @@ pub struct Reference<'p> {
     pub accelerations: Vec<Symbol>,
     /// The rates of every coordinate.
     pub rates: Vec<Symbol>,
+    /// Each coordinate of a prescribed motion, its rate and its second rate, with what
+    /// the motion makes them (`phi' = W` for `phi = W*t`); a held coordinate's rates only.
+    prescribed: Vec<(Symbol, Expr)>,
 }
 
 impl<'p> Reference<'p> {
@@ -97,7 +100,23 @@ impl<'p> Reference<'p> {
             answers,
             samples,
             reactions,
+            prescribed: prescribed(problem),
         })
+    }
+
+    /// `e` in the problem's own symbols, as a student writes it: every named quantity
+    /// replaced by what it stands for, and a prescribed motion's coordinate and rates by
+    /// its expression (`phi'` by `W` where `phi = W*t`).
+    pub fn own_symbols(&self, e: &Expr) -> Expr {
+        let e = unfold(e);
+        match self.prescribed.is_empty() {
+            true => e,
+            false => simplify(&substitute(&e, &|s| {
+                (self.prescribed.iter())
+                    .find(|(symbol, _)| symbol == s)
+                    .map(|(_, by)| by.clone())
+            })),
+        }
     }
 
     /// Kane's rows, derived on first use (`None` when they cannot be).
@@ -126,6 +145,37 @@ impl<'p> Reference<'p> {
             .filter(|(i, c)| c.motion.is_none() && !constraints.dependent.contains(i))
             .count()
     }
+}
+
+/// `e` with every named quantity replaced by what it stands for.
+pub(super) fn unfold(e: &Expr) -> Expr {
+    substitute(e, &|s| match s {
+        Symbol::Defined(d) => Some(unfold(d.value())),
+        _ => None,
+    })
+}
+
+/// Each prescribed coordinate (but a held one, whose name stands for its value), its rate
+/// and its second rate, with their expressions of time; a rate whose derivative cannot be
+/// taken is left as it is.
+fn prescribed(problem: &Problem) -> Vec<(Symbol, Expr)> {
+    let mut out = Vec::new();
+    for (i, c) in problem.coordinates.iter().enumerate() {
+        let Some(motion) = &c.motion else {
+            continue;
+        };
+        let Ok(rate) = time_derivative(motion) else {
+            continue;
+        };
+        if !c.held {
+            out.push((problem.coordinate_symbol(i, 0), motion.clone()));
+        }
+        out.push((problem.coordinate_symbol(i, 1), simplify(&rate)));
+        if let Ok(second) = time_derivative(&rate) {
+            out.push((problem.coordinate_symbol(i, 2), simplify(&second)));
+        }
+    }
+    out
 }
 
 /// A generator of numbers in [-1, 1), seeded so that a grade is the same every run.

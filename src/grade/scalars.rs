@@ -5,7 +5,7 @@ use super::diagnose::{compare, slip, whole};
 use super::equations::parse_message;
 use super::names::Names;
 use super::numbers::close;
-use super::parts::{parts, scale, unfold, values};
+use super::parts::{parts, scale, values};
 use super::reference::Reference;
 use super::report::Item;
 use super::submission::Named;
@@ -49,7 +49,7 @@ pub(super) fn differ(
     if !g.iter().all(|x| x.is_finite()) {
         return Some(super::equations::NOT_REAL.into());
     }
-    let expected = simplify(&unfold(expected));
+    let expected = simplify(&reference.own_symbols(expected));
     if let Some(all) = whole(&g, &e) {
         return Some(format!("{all}: {given} where {expected} was expected"));
     }
@@ -58,8 +58,8 @@ pub(super) fn differ(
     }
     let unknowns = &reference.accelerations;
     let (Some(gp), Some(ep)) = (
-        parts(given, unknowns, &reference.rates, samples),
-        parts(&expected, unknowns, &reference.rates, samples),
+        parts(given, unknowns, reference),
+        parts(&expected, unknowns, reference),
     ) else {
         return Some(format!("{given} where {expected} was expected"));
     };
@@ -152,7 +152,7 @@ fn closed_form(reference: &Reference, symbol: &Symbol) -> Option<Expr> {
         .iter()
         .find(|r| r.unknowns.len() == 1 && r.unknowns[0] == *symbol)?;
     let (c, rest) = linear_split(&row.expression, std::slice::from_ref(symbol)).ok()?;
-    Some(simplify(&unfold(&(-rest / c[0].clone()))))
+    Some(simplify(&reference.own_symbols(&(-rest / c[0].clone()))))
 }
 
 /// Grades `generalized_forces`: `active` and `inertia`, one expression per speed, against

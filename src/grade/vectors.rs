@@ -176,7 +176,7 @@ fn partials(reference: &Reference, target: &Target) -> Option<Vec<Vector>> {
     let split: Vec<Vec<Expr>> = components
         .iter()
         .map(|c| {
-            linear_split(&super::parts::unfold(c), &speeds)
+            linear_split(&super::reference::unfold(c), &speeds)
                 .ok()
                 .map(|(cs, _)| cs)
         })

@@ -1,10 +1,8 @@
 //! What a student need not read twice: the handout says each value once. Step 5 prints no
 //! table of reactions at the initial state of a motion (the Answers give those asked; at rest
-//! those the answers leave), and the table of initial values is left out where the answers
-//! give
-//! every value in it, and step 3's candidate rows that the plan does not use are left
-//! out unless every one is asked for (`--verbose`); the rule by which a reaction's sign is
-//! read is said at the first answer that needs it.
+//! those the answers leave), the table of initial values is left out where the answers give
+//! every value in it, and step 3's candidate rows that the plan does not use are left out
+//! unless every one is asked for (`--verbose`).
 
 use crate::render::Solution;
 
@@ -14,7 +12,6 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
     if !every_rejected {
         solution.plan.rejected.clear();
     }
-    sense_rule_once(&mut solution.answers);
     let said = said_at_start(solution);
     // The table of initial values whole or not at all: a part of it would read as if the
     // values left out were not found.
@@ -42,25 +39,6 @@ fn gives_reaction(value: &str, joint: &str) -> bool {
     ["\\mathbf{F}^{", "\\mathbf{M}^{"]
         .iter()
         .any(|vector| value.starts_with(&format!("{vector}{name}}}")))
-}
-
-/// How a reaction's sign reads, said in full at the first answer and briefly after it.
-const SENSE_RULE: &str = super::sense_words::DRAWN_RULE;
-
-/// The sign rule of reactions in full at its first answer; later answers say only which
-/// components act as drawn.
-fn sense_rule_once(answers: &mut [crate::render::AnswerView]) {
-    let mut said = false;
-    for answer in answers {
-        let Some(at) = answer.note.find(SENSE_RULE) else {
-            continue;
-        };
-        if said {
-            let rest = answer.note[at + SENSE_RULE.len()..].to_string();
-            answer.note = format!("{}Here {rest}", &answer.note[..at]);
-        }
-        said = true;
-    }
 }
 
 /// The values the Answers give at the initial state: those of an answer said to be at it,

@@ -58,12 +58,9 @@ pub fn point_to_free_bodies(
             "Free body {} of step 2 shows this force on {on}, at {point}.",
             bodies.join(" + ")
         );
-        // Before the rule by which its arrows' senses are read, which it points to.
-        let at = view.note.find(super::sense_words::DRAWN_RULE);
-        view.note = match at {
-            Some(at) => format!("{}{text} {}", &view.note[..at], &view.note[at..]),
-            None if view.note.is_empty() => text,
-            None => format!("{} {text}", view.note.trim_end()),
+        view.note = match view.note.is_empty() {
+            true => text,
+            false => format!("{} {text}", view.note.trim_end()),
         };
     }
 }

@@ -35,7 +35,6 @@ pub fn handout(worked: &Worked, settings: &Handout) -> Solution {
         super::question_steps::attach(worked, answers, &mut views);
         super::switch_steps::attach(problem, &worked.derivation, answers, &mut views);
         let (bodies, shown) = (&solution.free_bodies, &solution.shown_names);
-        super::sense_words::say_undrawn_senses(problem, bodies, shown, &mut views);
         super::sense_words::say_third_law(problem, shown, &mut views);
         super::drawn_on::point_to_free_bodies(problem, bodies, shown, &mut views);
         super::absent_constants::attach(&worked.derivation, &mut views);

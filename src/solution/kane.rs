@@ -10,8 +10,7 @@ use crate::mechanics::{same_at, sample_states, Model, Vector};
 use crate::plan::{Equation, Groups, Sum};
 use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
-use crate::render::text::Math;
-use crate::symbolic::{add, latex, latex_name, linear_split, simplify, Expr, Symbol, Values};
+use crate::symbolic::{add, latex, linear_split, simplify, Expr, Symbol, Values};
 
 /// The generalized speeds are the rates of the coordinates: `u_r = \dot{q}_r`; declared
 /// speeds are written by name (step 1 defines them).
@@ -69,13 +68,12 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             (body, v, w, named_v, named_w)
         })
         .collect();
-    let zero = "\\mathbf{0}";
     let mut out = Vec::new();
     for r in 0..rates.len() {
         let mut first = true;
         // The speed's label and the partials' subscript: `u_1 = q̇_1` and 1, or the rate
         // itself where the rows combine the coordinates' rates.
-        let (speed, index) = if by_rate {
+        let (speed, subscript) = if by_rate {
             (rate_tex(derivation, r), rate_tex(derivation, r))
         } else {
             (speed_tex(derivation, r), (r + 1).to_string())
@@ -97,36 +95,16 @@ pub fn partial_velocities(derivation: &Derivation) -> Vec<PartialVelocity> {
             };
             let v_tex = plain(shortest(&v[r], named_v.as_ref().map(|n| &n[r])));
             let w_tex = plain(shortest(&w[r], named_w.as_ref().map(|n| &n[r])));
-            if v_tex == zero && w_tex == zero {
-                continue;
-            }
-            let name = problem.body_name(*body);
-            let symbol = latex_name(name);
-            // Without rotational inertia the partial angular velocity does nothing; it is
-            // shown only where it is zero (a body that slides without turning).
-            let particle = crate::mechanics::is_particle(&derivation.model, *body) && w_tex != zero;
-            out.push(PartialVelocity {
+            let line = super::partial_rows::Line {
+                body: *body,
                 r: r + 1,
-                speed_tex: if std::mem::take(&mut first) {
-                    Math::from(speed.clone())
-                } else {
-                    Math::from(String::new())
-                },
-                body: name.to_string(),
-                velocity_tex: Math::from(format!(
-                    "{{}}^{{N}}\\mathbf{{v}}^{{{}}}_{{{index}}} = {v_tex}",
-                    super::tex::centre_tex(&derivation.model, *body),
-                )),
-                // A particle has no inertia torque: its partial angular velocity does nothing.
-                omega_tex: if particle {
-                    Math::from(String::new())
-                } else {
-                    Math::from(format!(
-                        "{{}}^{{N}}\\boldsymbol{{\\omega}}^{{{symbol}}}_{{{index}}} = {w_tex}",
-                    ))
-                },
-                point: false,
-            });
+                subscript: subscript.clone(),
+                constrained: false,
+            };
+            let tex = (v_tex.as_str(), w_tex.as_str());
+            out.extend(super::partial_rows::body_line(
+                model, &line, tex, &speed, &mut first,
+            ));
         }
     }
     out

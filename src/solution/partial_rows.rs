@@ -24,7 +24,6 @@ pub(super) fn body_rows(
     speed: String,
 ) -> Vec<PartialVelocity> {
     let model = &derivation.model;
-    let problem = model.problem;
     // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
     let sign = super::tex::initial_sign(model);
     let combined = |list: &[Vector]| -> Vector {
@@ -36,44 +35,87 @@ pub(super) fn body_rows(
         )
         .map(|e| roots_of_squares(&simplify(e), &sign))
     };
-    let zero = "\\mathbf{0}";
     let mut out = Vec::new();
     let mut first = true;
     for (body, v, w) in per_body {
         let v_tex = super::tex::shortest_tex(model, &combined(v), *body);
-        // A body without rotational inertia shows its partial angular velocity only
-        // where it is zero (a cart that slides): a turning one's does nothing.
         let w_tex = super::tex::shortest_tex(model, &combined(w), *body);
-        let particle = is_particle(model, *body) && w_tex != zero;
-        if v_tex == zero && (particle || w_tex == zero) {
-            continue;
-        }
-        let symbol = latex_name(problem.body_name(*body));
-        out.push(PartialVelocity {
+        let line = Line {
+            body: *body,
             r: r + 1,
-            speed_tex: if std::mem::take(&mut first) {
-                Math::from(speed.clone())
-            } else {
-                Math::from(String::new())
-            },
-            body: problem.body_name(*body).to_string(),
-            velocity_tex: Math::from(format!(
-                "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{}}} = {v_tex}",
-                super::tex::centre_tex(model, *body),
-                r + 1
-            )),
-            omega_tex: if particle {
-                Math::from(String::new())
-            } else {
-                Math::from(format!(
-                    "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{}}} = {w_tex}",
-                    r + 1
-                ))
-            },
-            point: false,
-        });
+            subscript: (r + 1).to_string(),
+            constrained: true,
+        };
+        out.extend(body_line(
+            model,
+            &line,
+            (&v_tex, &w_tex),
+            &speed,
+            &mut first,
+        ));
     }
     out
+}
+
+/// Which line of a table of partial velocities: the body, the speed's number and the
+/// partials' subscript, and whether the partials are the constrained ones (with a tilde).
+pub(super) struct Line {
+    /// The body whose mass centre's partial velocity and partial angular velocity it gives.
+    pub body: crate::problem::BodyId,
+    /// The speed's number, from 1.
+    pub r: usize,
+    /// The partials' subscript: the speed's number, or the rate itself.
+    pub subscript: String,
+    /// Constrained partials, `\tilde{\mathbf{v}}`.
+    pub constrained: bool,
+}
+
+/// The line of `line.body` for speed number `subscript`, its partial velocity `v_tex` and
+/// partial angular velocity `w_tex` (in `N`), with `speed` on the speed's first line
+/// (`first`, then cleared); `None` where it would show nothing but zero. A body without
+/// rotational inertia shows its partial angular velocity only where it is zero (a cart
+/// that slides): a turning one's does nothing.
+pub(super) fn body_line(
+    model: &Model,
+    line: &Line,
+    (v_tex, w_tex): (&str, &str),
+    speed: &str,
+    first: &mut bool,
+) -> Option<PartialVelocity> {
+    let zero = "\\mathbf{0}";
+    let body = line.body;
+    let particle = is_particle(model, body) && w_tex != zero;
+    if v_tex == zero && (particle || w_tex == zero) {
+        return None;
+    }
+    let name = model.problem.body_name(body);
+    let accent = |symbol: &str| match line.constrained {
+        true => format!("\\tilde{{{symbol}}}"),
+        false => symbol.to_string(),
+    };
+    let index = &line.subscript;
+    Some(PartialVelocity {
+        r: line.r,
+        speed_tex: Math::from(match std::mem::take(first) {
+            true => speed.to_string(),
+            false => String::new(),
+        }),
+        body: name.to_string(),
+        velocity_tex: Math::from(format!(
+            "{{}}^{{N}}{}^{{{}}}_{{{index}}} = {v_tex}",
+            accent("\\mathbf{v}"),
+            super::tex::centre_tex(model, body),
+        )),
+        omega_tex: Math::from(match particle {
+            true => String::new(),
+            false => format!(
+                "{{}}^{{N}}{}^{{{}}}_{{{index}}} = {w_tex}",
+                accent("\\boldsymbol{\\omega}"),
+                latex_name(name)
+            ),
+        }),
+        point: false,
+    })
 }
 
 /// The constrained partial velocities of each rough contact point along its tangents (the

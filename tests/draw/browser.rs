@@ -6,6 +6,7 @@
 //! circle (an ellipse in 3D) of its radius; a uniform rod pinned at one end reaches its far
 //! end; in 2D the weight points straight down the page.
 
+use crate::support::handouts::two_at_a_time;
 use crate::support::{all_problems, run};
 use mbd_tutor::problem::{ConstraintKind, Inertia, Problem};
 use mbd_tutor::symbolic::{eval, Values};
@@ -78,7 +79,9 @@ fn page(problem: &Path, dir: &Path) -> String {
 
 /// Loads `html` in headless Chromium and returns what `measure.js` wrote.
 fn measure(html: &Path) -> Value {
-    let profile = scratch("profile");
+    // A profile of its own: two pages are measured at a time.
+    let stem = html.file_stem().expect("a name").to_string_lossy();
+    let profile = scratch(&format!("profile-{stem}"));
     let out = Command::new(CHROMIUM)
         .args([
             "--headless",
@@ -370,15 +373,15 @@ fn every_picture_measured_in_a_browser_reads_as_a_textbook_figure() {
         return;
     }
     let root = scratch("pictures");
-    let mut faults = Vec::new();
-    for problem in problems() {
+    // Two problems at a time, a Chromium each: the machine's two cores.
+    let faults = two_at_a_time(&problems(), |problem| {
         let name = problem.file_stem().unwrap().to_string_lossy().into_owned();
         let dir = root.join(&name);
         let html = root.join(format!("{name}.html"));
-        std::fs::write(&html, page(&problem, &dir)).expect("page written");
+        std::fs::write(&html, page(problem, &dir)).expect("page written");
         let reports = measure(&html);
-        faults.extend(judge(&problem, &dir, &reports));
-    }
+        judge(problem, &dir, &reports)
+    });
     let _ = std::fs::remove_dir_all(&root);
     assert!(
         faults.is_empty(),

@@ -256,7 +256,11 @@ fn a_rod_swinging_into_a_stop_and_its_centre_of_percussion() {
 
 /// The bead on the hoop (radius R) spun at W about its vertical diameter:
 /// θ̈ = sin θ (W² cos θ − g/R). A student who leaves out the spin writes
-/// R θ̈ + g sin θ = 0, and the diagnosis names the missing term in φ̇² (φ̇ = W).
+/// R θ̈ + g sin θ = 0, and the diagnosis names the missing term in the student's own
+/// symbols, W² (φ̇ = W for φ = W t), and the factor between the rows in the constants:
+/// the row −m R² θ̈ − m g R sin θ + m R² W² sin θ cos θ = 0 (the moments of the weight
+/// and of the inertia force about C) times −1/(m R) is R θ̈ + g sin θ − R W² sin θ cos θ,
+/// so the term −R W² sin θ cos θ is missing.
 #[test]
 fn a_bead_on_a_spinning_hoop_and_a_student_who_forgot_the_spin() {
     let (r, w, th) = (0.5, 6.0, 0.7f64);
@@ -280,9 +284,19 @@ fn a_bead_on_a_spinning_hoop_and_a_student_who_forgot_the_spin() {
         assert_eq!(item["verdict"], "wrong", "{method}: {g}");
         let why = item["diagnosis"].as_str().expect("diagnosis");
         assert!(
-            why.contains("phi'^2") && why.contains("missing"),
-            "{method}: names the spin's term as missing: {why}"
+            why.contains("the term -R*W^2*sin(theta)*cos(theta) is missing"),
+            "{method}: names the spin's term as missing, in W: {why}"
         );
+        assert!(
+            !why.contains("phi"),
+            "{method}: phi is the student's W*t: {why}"
+        );
+        // The factor that matches m R² θ̈ with R θ̈, as the problem's constants write it.
+        let factor = match method {
+            "newton-euler" => "(multiplied by -1/m)",
+            _ => "(multiplied by -1/(R*m))",
+        };
+        assert!(why.contains(factor), "{method}: {factor} in {why}");
         let g = graded("bead-on-spinning-hoop", &right, method);
         assert_eq!(g["items"][0]["verdict"], "right", "{method}: {g}");
     }

@@ -27,8 +27,20 @@ pub fn all_problems() -> Vec<PathBuf> {
     files
 }
 
-/// Runs `mbd-tutor ARGS...`.
+/// Runs `mbd-tutor ARGS...`. A command that only reads its files and prints (see
+/// [`runs::key`]) runs once for the whole suite: the program gives the same bytes for the
+/// same input, so the handouts that many tests read are written once. The key holds the
+/// bytes of every file named, so a file written again is run again.
 pub fn run<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Output {
+    match runs::key(args) {
+        Some(key) => runs::once(key, || run_afresh(args)),
+        None => run_afresh(args),
+    }
+}
+
+/// Runs `mbd-tutor ARGS...` in a new process, whatever ran before: for the tests of what
+/// two runs give.
+pub fn run_afresh<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
         .args(args)
         .output()
@@ -188,6 +200,7 @@ pub fn column(columns: &[String], name: &str) -> usize {
 
 pub mod handouts;
 pub mod mathml;
+pub mod runs;
 
 /// `mbd-tutor explain problems/NAME.json ARGS…`: its standard output, failing with its stderr.
 pub fn explain(name: &str, args: &[&str]) -> String {
