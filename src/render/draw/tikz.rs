@@ -244,10 +244,11 @@ pub fn export(picture: &Picture, room: Size) -> String {
 }
 
 /// The width and height of what `picture` draws on a page (its ink, without the title and
-/// legend the handout prints apart, nor the empty margin round them), with a point's room
-/// to spare; the picture's own size where it draws nothing.
+/// legend the handout prints apart, nor the empty margin round them), with a few points to
+/// spare, since a label's width is estimated before TeX sets it; the picture's own size
+/// where it draws nothing.
 fn inked(picture: &Picture) -> [f64; 2] {
-    const SPARE: f64 = 2.0;
+    const SPARE: f64 = 8.0;
     match super::extent::drawn(picture) {
         Some((lo, hi)) => [hi[0] - lo[0] + SPARE, hi[1] - lo[1] + SPARE],
         None => [picture.width, picture.height - picture.legend.height],
