@@ -122,10 +122,10 @@ fn the_system_matrix_is_named_by_a_letter_no_frame_uses() {
     // Derived, not evaluated: no right-hand side's number after the identity.
     assert!(!answers.contains("RHS"), "{answers}");
     // The check of the steady motion is shown from the rows: θ̇ = 0 clears rows (1) and (3),
-    // and row (2) is the identity of answer 1.
+    // and row (2) is the relation of answer 1.
     assert!(answers.contains("rows (1) and (3) vanish"), "{answers}");
     assert!(
-        answers.contains("row (2) is zero by the identity of answer 1"),
+        answers.contains("row (2) is zero by the relation of answer 1"),
         "{answers}"
     );
 }

@@ -249,7 +249,7 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
         "do not appear in it",
         "Where $s_{\\theta} \\neq 0$, divided by it",
         // Derived to the form asked, the working ends there.
-        "it is the identity asked",
+        "it is the relation asked",
         // In the statement's names, the spin put in, to the stated form.
         "\\dot{\\phi} = \\omega_{3} - \\Omega c_{\\theta}",
         "g h m = \\Omega (I_{3} \\omega_{3} - I_{1} \\Omega c_{\\theta})",
@@ -263,7 +263,7 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
     // The derivation is in symbols: no number of a state before the check.
     let derivation = &answers[answers.find("Equation (2)").expect("derived")
         ..answers
-            .find("it is the identity asked")
+            .find("it is the relation asked")
             .expect("derived to the end")];
     for number in ["0.5", "3.45", "146.9", "150"] {
         assert!(!derivation.contains(number), "{number}: {derivation}");

@@ -1,5 +1,5 @@
 //! Step 5's system solved with numbers, as a student solves it on paper: its matrix and
-//! right-hand side at the initial state of step 1 (up to six unknowns) beside the solution
+//! right-hand side at the initial state of step 1 (up to four unknowns) beside the solution
 //! there; an unknown that a row holds alone, in symbols before its number.
 
 use super::answer_numbers::number_tex;
@@ -65,8 +65,11 @@ fn agrees(
     residual_small && same_accelerations
 }
 
-/// The most unknowns whose matrix is written with its numbers.
+/// The most unknowns whose block of rows is solved first, before the reactions.
 const MOST_WRITTEN: usize = 6;
+/// The most unknowns whose matrix is written with its numbers; past that, the matrix form
+/// of step 5 shows the pattern, and the solution is written as a list.
+const MOST_IN_MATRIX: usize = 4;
 
 /// Whether an unknown is a reaction (not a second derivative).
 fn is_reaction(u: &Symbol) -> bool {
@@ -163,16 +166,22 @@ pub fn in_numbers(
     let b_width = width(&b_tex.iter().collect::<Vec<_>>());
     let x_width = width(&x_tex.iter().collect::<Vec<_>>());
     let total = widths + 2 * names_width + b_width + x_width + 8;
-    // Side by side where they fit; else the solution in a line of its own, as a list.
+    let pairs: Vec<String> = (names.iter().zip(&x_tex))
+        .map(|(n, v)| format!("{n} = {v}"))
+        .collect();
+    let mut lead_text = lead(worked, &system, &rows, &names);
+    // Side by side where they fit; else the solution in a line of its own, as a list;
+    // past four unknowns, the list alone, after the lead.
     let mut closed = Vec::new();
-    let displays = match total <= WIDEST {
-        true => vec![format!(
+    let displays = match (names.len() <= MOST_IN_MATRIX, total <= WIDEST) {
+        (false, _) => {
+            lead_text = listed_lead(worked, &system, &rows, &pairs);
+            Vec::new()
+        }
+        (true, true) => vec![format!(
             "{system_tex} \\quad \\Rightarrow \\quad {solution_tex}"
         )],
-        false => {
-            let pairs: Vec<String> = (names.iter().zip(&x_tex))
-                .map(|(n, v)| format!("{n} = {v}"))
-                .collect();
+        (true, false) => {
             closed.push(format!("Its solution: {}.", math_list(&pairs)));
             vec![system_tex]
         }
@@ -190,17 +199,19 @@ pub fn in_numbers(
             math_list(&others),
         );
         let rows_word = if rest.len() == 1 { "row" } else { "rows" };
-        closed.push(format!(
-            "With these, {rows_word} {} {verb} {list}.",
-            row_list(&rest)
-        ));
+        let then = format!("{rows_word} {} {verb} {list}.", row_list(&rest));
+        match displays.is_empty() {
+            // The listed solution and the reactions after it in one sentence.
+            true => lead_text = format!("{}; with these, {then}", lead_text.trim_end_matches('.')),
+            false => closed.push(format!("With these, {then}")),
+        }
     }
     let problem = worked.derivation.model.problem;
     let gives_accelerations = (0..problem.coordinates.len())
         .all(|k| names.contains(&latex(&problem.coordinate_expr(k, 2))));
     InNumbers {
         gives_accelerations,
-        lead: MarkupLine::from(lead(worked, &system, &rows, &names)),
+        lead: MarkupLine::from(lead_text),
         displays_tex: Math::all(displays),
         closed_forms: MarkupLine::all(closed),
     }
@@ -226,6 +237,18 @@ fn lead(worked: &Worked, system: &LinearSystem, rows: &[usize], names: &[String]
             "{state} rows (1) to ({n}) are solved together for {}:",
             math_list(names)
         ),
+    }
+}
+
+/// What is solved, with the solution listed: past four unknowns, no matrix of numbers.
+/// The rows solved first are named just above, where the order of the solve is said.
+fn listed_lead(worked: &Worked, system: &LinearSystem, rows: &[usize], pairs: &[String]) -> String {
+    let state = "At the initial state of step 1, in SI units,";
+    let said = super::solve_words::order(&worked.derivation).is_some();
+    match (rows.len() < system.a.len(), said) {
+        (true, true) => format!("{state} these rows give {}.", math_list(pairs)),
+        (true, false) => format!("{state} rows {} give {}.", row_list(rows), math_list(pairs)),
+        (false, _) => format!("{state} the solution is {}.", math_list(pairs)),
     }
 }
 

@@ -207,7 +207,7 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<Stri
             (true, false) => "A force asked for, or a normal force the sliding law needs,",
             _ => "A normal force the sliding law needs",
         };
-        let mut text = format!("{which} is brought in by an auxiliary speed $u$ along it (Kane and Levinson, ch. 4): the constraint it enforces is relaxed, only that force{} does work with the partial velocities of $u$, and the accelerations are taken at $u = 0$.", if friction.is_empty() { "" } else { " and the friction of that sliding" });
+        let mut text = format!("{which} is brought in by an auxiliary speed $u$ along it (Kane and Levinson, ch. 4): the constraint it enforces is relaxed, and of the constraint forces only that one{} does work with the partial velocities of $u$, and the accelerations are taken at $u = 0$.", if friction.is_empty() { "" } else { " and the friction of that sliding" });
         if !speeds.prescribed.is_empty() {
             text.push_str(" A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.");
         }

@@ -239,21 +239,21 @@ pub fn row_text(
             ),
             &(&kinetic_partial - &potential_partial),
         ),
-        fits(format!("Q_{{{}}}", r + 1), tex(&q_r)),
     ];
-    if !multipliers.is_zero() {
-        lines.push(fits(
-            format!(
-                "\\sum_{{k}} \\lambda_{{k}} \\frac{{\\partial \\dot{{f}}_{{k}}}}{{\\partial {rate}}}"
-            ),
-            tex(&multipliers),
-        ));
-    }
-    let note = if multipliers.is_zero() {
-        "Lagrange's equation, collected by the second derivatives:"
-    } else {
-        "With the multipliers' terms, collected by the second derivatives:"
-    };
+    // Q_r of step 2 holds the constraint forces' terms, the multipliers, with the loads'.
+    let q_name = format!("Q_{{{}}}", r + 1);
+    let sum = format!(
+        "\\sum_{{k}} \\lambda_{{k}} \\frac{{\\partial \\dot{{f}}_{{k}}}}{{\\partial {rate}}}"
+    );
+    lines.push(match (multipliers.is_zero(), q_r.is_zero()) {
+        (true, _) => fits(q_name, tex(&q_r)),
+        (false, true) => fits(format!("{q_name} = {sum}"), tex(&multipliers)),
+        (false, false) => fits(
+            format!("{q_name} = {} + {sum}", tex(&q_r)),
+            tex(&(&q_r + &multipliers)),
+        ),
+    });
+    let note = "Lagrange's equation, collected by the second derivatives:";
     Some(RowText {
         label_tex: format!("{q}\\colon\\; {}", lagrange_tex(model, r)),
         label: "(Lagrange's equation of the coordinate)".into(),

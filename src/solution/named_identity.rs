@@ -180,7 +180,7 @@ pub fn identity_steps(
             format!("{} = 0", latex_collected(&named)),
         ),
         step(
-            "and, rearranged, it is the identity asked:".into(),
+            "and, rearranged, it is the relation asked:".into(),
             format!("{} = {}", latex(&left), factored_tex(&right)),
         ),
     ])
@@ -308,7 +308,7 @@ pub fn steady_steps(
     }
     let mut steps = vec![
         step(
-            format!("The identity of answer {item}, in the statement's names, is a quadratic in ${name_tex}$:"),
+            format!("The relation of answer {item}, in the statement's names, is a quadratic in ${name_tex}$:"),
             format!("{} = 0", latex_collected(&quadratic)),
         ),
         step(

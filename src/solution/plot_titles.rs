@@ -35,8 +35,9 @@ fn what_it_is(problem: &Problem, i: usize) -> Option<String> {
 }
 
 /// `Nutation angle against time`: a plot of angles of one range, on an axis of their own
-/// beside angles of another, named by their descriptions; where a description says nothing
-/// short, `Angles against time` for the largest (`first`), the smaller ones by their number.
+/// beside angles of another, named by its description when it holds one angle; where it
+/// holds several (their legend names them) or a description says nothing short, `Angles
+/// against time` for the largest (`first`), the smaller ones by their number.
 pub fn angles_of_a_range(problem: &Problem, series: &[Series], first: bool) -> String {
     let names: Option<Vec<String>> = (series.iter())
         .map(|s| {
@@ -46,7 +47,7 @@ pub fn angles_of_a_range(problem: &Problem, series: &[Series], first: bool) -> S
         })
         .collect();
     let words = match names {
-        Some(names) if !names.is_empty() => names.join(" and "),
+        Some(mut names) if names.len() == 1 => names.remove(0),
         _ if first => "angles".to_string(),
         _ if series.len() == 1 => "the smaller angle".to_string(),
         _ => "the smaller angles".to_string(),

@@ -475,7 +475,7 @@ fn derive_identity(
             .and_then(|r| super::named_identity::identity_steps(&r, &rest, (lhs, rhs), &v));
         steps.extend(named.unwrap_or_else(|| {
             vec![step(
-                "which, the terms rearranged, is the identity asked, its right side multiplied out:",
+                "which, the terms rearranged, is the relation asked, its right side multiplied out:",
                 format!("{} = {}", latex(lhs), latex(rhs)),
             )]
         }));

@@ -82,7 +82,7 @@ pub fn sentence(derivation: &Derivation, problem: &Problem, index: usize) -> Opt
             labels[..=k].iter().rev().find(|l| !l.is_empty()).cloned()
         });
         let why = match shown {
-            Some(item) => format!("by the identity of answer {item}"),
+            Some(item) => format!("by the relation of answer {item}"),
             None => "at these rates".to_string(),
         };
         parts.push(format!(

@@ -369,7 +369,7 @@ mod tests {
         let q2 = Expr::coord("q2", 0);
         let a1 = Expr::coord("q1", 2);
         let w1 = Expr::coord("q1", 1);
-        // −L₂²m₂/3 q̈₁ − L₁L₂m₂ cos q₂ q̈₁/2 − L₁L₂m₂ sin q₂ q̇₁²/2 − g m₂ sin q₂
+        // −L₂²m₂/3 q̈₁ − L₁L₂m₂ cos q₂ q̈₁/2 − L₁L₂m₂ sin q₂ q̇₁²/2 − m₂ g sin q₂ (mass before g)
         let e = add([
             &(&(&l2 * &l2) * &m2) * &(&a1 * &Expr::ratio(-1, 3)),
             &(&(&(&l1 * &l2) * &m2) * &cos(q2.clone())) * &(&a1 * &Expr::ratio(-1, 2)),
@@ -378,7 +378,7 @@ mod tests {
         ]);
         assert_eq!(
             latex_collected(&e),
-            "-\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} \\cos(q_{2})\\right) \\ddot{q}_{1} - \\frac{L_{1} L_{2} m_{2} \\sin(q_{2})}{2} \\dot{q}_{1}^{2} - g m_{2} \\sin(q_{2})"
+            "-\\frac{L_{2} m_{2}}{6} \\left(2 L_{2} + 3 L_{1} \\cos(q_{2})\\right) \\ddot{q}_{1} - \\frac{L_{1} L_{2} m_{2} \\sin(q_{2})}{2} \\dot{q}_{1}^{2} - m_{2} g \\sin(q_{2})"
         );
     }
 

@@ -19,21 +19,21 @@ pub const PAGE_SIZE: Size = Size {
 /// height of a rigid body's table of seven forces, so that little of it stands empty.
 pub const BESIDE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 130.0,
+    height: 115.0,
 };
 
 /// The largest a free body may be above its table of forces: under a fifth of the text's
 /// height, so that a one- or two-body handout keeps within four pages.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 120.0,
+    height: 100.0,
 };
 
 /// The largest the system's picture may be at the head of a handout: under half the text's
 /// height (a narrow one is set beside the first tables).
 pub const CONFIGURATION: Size = Size {
     width: 500.0,
-    height: 220.0,
+    height: 200.0,
 };
 
 /// The scale under which labels print a size smaller (`\scriptsize`, 7 pt), so that they
