@@ -27,7 +27,9 @@ pub fn about_note(problem: &Problem, k: usize) -> String {
     let labels = super::answer_numbers::labels(problem);
     let item = labels[..=k].iter().rev().find(|l| !l.is_empty());
     match item {
-        Some(item) => format!("the steady motion found in answer {item}, the other coordinates as at the start"),
+        Some(item) => format!(
+            "the steady motion found in answer {item}, the other coordinates as at the start"
+        ),
         None => "the steady motion found above, the other coordinates as at the start".into(),
     }
 }
