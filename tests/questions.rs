@@ -252,9 +252,9 @@ fn the_heavy_top_shows_its_steady_precession_and_nods_at_the_closed_form_rate() 
         "it is the relation asked",
         // In the statement's names, the spin put in, to the stated form.
         "\\dot{\\phi} = \\omega_{3} - \\Omega c_{\\theta}",
-        "g h m = \\Omega (I_{3} \\omega_{3} - I_{1} \\Omega c_{\\theta})",
+        "h m g = \\Omega (I_{3} \\omega_{3} - I_{1} \\Omega c_{\\theta})",
         // The rates from the quadratic, in closed form, not by a search.
-        "\\mp \\sqrt{I_{3}^{2} \\omega_{3}^{2} - 4 I_{1} g h m c_{\\theta}}",
+        "\\mp \\sqrt{I_{3}^{2} \\omega_{3}^{2} - 4 I_{1} h m g c_{\\theta}}",
         &format!("{slow:.5}"),
         "yes, the motion is steady",
     ] {

@@ -170,20 +170,23 @@ pub fn in_numbers(
         .map(|(n, v)| format!("{n} = {v}"))
         .collect();
     let mut lead_text = lead(worked, &system, &rows, &names);
-    // Side by side where they fit; else the solution in a line of its own, as a list;
-    // past four unknowns, the list alone, after the lead.
+    // The matrix beside its solution where it fits in a line, above it where not (up to
+    // four unknowns); else the solution listed after the lead, as the matrix form above
+    // shows the pattern.
     let mut closed = Vec::new();
-    let displays = match (names.len() <= MOST_IN_MATRIX, total <= WIDEST) {
-        (false, _) => {
-            lead_text = listed_lead(worked, &system, &rows, &pairs);
-            Vec::new()
-        }
-        (true, true) => vec![format!(
+    // Entries in powers of ten make a matrix a student would not write: listed instead.
+    let plain = !a_tex.iter().flatten().any(|cell| cell.contains("\\times"));
+    let displays = match (names.len() <= MOST_IN_MATRIX, total <= WIDEST, plain) {
+        (true, true, _) => vec![format!(
             "{system_tex} \\quad \\Rightarrow \\quad {solution_tex}"
         )],
-        (true, false) => {
+        (true, false, true) => {
             closed.push(format!("Its solution: {}.", math_list(&pairs)));
             vec![system_tex]
+        }
+        _ => {
+            lead_text = listed_lead(worked, &system, &rows, &pairs);
+            Vec::new()
         }
     };
     closed.extend(closed_forms(worked, &system, shown, x));

@@ -173,8 +173,8 @@ pub fn row_text(
             label: String::new(),
             intro,
             lines,
-            note: "Lagrange's equation of the auxiliary coordinate, at zero coordinate and rate:"
-                .into(),
+            // Short: said for each reaction asked; the intro says what the coordinate is.
+            note: "Its equation at zero auxiliary coordinate and rate:".into(),
         });
     };
     let written = derivation.lagrange_terms.get(r).is_none_or(|t| t.written);

@@ -19,21 +19,21 @@ pub const PAGE_SIZE: Size = Size {
 /// height of a rigid body's table of seven forces, so that little of it stands empty.
 pub const BESIDE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 115.0,
+    height: 130.0,
 };
 
 /// The largest a free body may be above its table of forces: under a fifth of the text's
 /// height, so that a one- or two-body handout keeps within four pages.
 pub const ABOVE_A_TABLE: Size = Size {
     width: 500.0,
-    height: 100.0,
+    height: 120.0,
 };
 
 /// The largest the system's picture may be at the head of a handout: under half the text's
 /// height (a narrow one is set beside the first tables).
 pub const CONFIGURATION: Size = Size {
     width: 500.0,
-    height: 200.0,
+    height: 220.0,
 };
 
 /// The scale under which labels print a size smaller (`\scriptsize`, 7 pt), so that they
@@ -171,7 +171,7 @@ pub fn export(picture: &Picture, room: Size) -> String {
     // Narrower than the picture at this scale, a page's line shrinks it further (the
     // labels keep their size): pgfmath takes the smaller when the picture is set.
     let scale = format!(
-        "min({},(\\linewidth-2pt)/{})*1pt",
+        "min({},(\\linewidth-6pt)/{})*1pt",
         num_fine(unit),
         num_fine(inked(picture)[0])
     );
