@@ -3,6 +3,7 @@
 //! there; an unknown that a row holds alone, in symbols before its number.
 
 use super::answer_numbers::number_tex;
+use super::solve_words::{is_reaction, row_list};
 use crate::equations::LinearSystem;
 use crate::render::context::InNumbers;
 use crate::render::printed_width;
@@ -70,21 +71,6 @@ const MOST_WRITTEN: usize = 6;
 /// The most unknowns whose matrix is written with its numbers; past that, the matrix form
 /// of step 5 shows the pattern, and the solution is written as a list.
 const MOST_IN_MATRIX: usize = 4;
-
-/// Whether an unknown is a reaction (not a second derivative).
-fn is_reaction(u: &Symbol) -> bool {
-    matches!(u, Symbol::Unknown(_))
-}
-
-/// `(1), (2) and (4)`.
-fn row_list(rows: &[usize]) -> String {
-    let names: Vec<String> = rows.iter().map(|i| format!("({})", i + 1)).collect();
-    match names.as_slice() {
-        [] => String::new(),
-        [one] => one.clone(),
-        [init @ .., last] => format!("{} and {last}", init.join(", ")),
-    }
-}
 
 /// `$a$, $b$ and $c$`.
 fn math_list(items: &[String]) -> String {

@@ -35,12 +35,12 @@ pub fn notes(derivation: &Derivation) -> Vec<String> {
 }
 
 /// Whether an unknown is a reaction (not a second derivative).
-fn is_reaction(u: &Symbol) -> bool {
+pub(super) fn is_reaction(u: &Symbol) -> bool {
     matches!(u, Symbol::Unknown(_))
 }
 
 /// `(1), (2) and (4)`.
-fn row_list(rows: &[usize]) -> String {
+pub(super) fn row_list(rows: &[usize]) -> String {
     let names: Vec<String> = rows.iter().map(|i| format!("({})", i + 1)).collect();
     match names.as_slice() {
         [] => String::new(),
