@@ -78,22 +78,9 @@ pub fn direction_tex(derivation: &Derivation, row: &Equation) -> String {
 /// `\text{along } \hat{x}` (a force) or `\text{about } \hat{z}` (a moment) of the
 /// reaction component a relaxed joint's row brings in.
 fn relaxed_direction(derivation: &Derivation, row: &Equation) -> Option<String> {
-    use crate::symbolic::{ComponentKind, Symbol, Unknown};
+    use crate::symbolic::ComponentKind;
     let model = &derivation.model;
-    // The row of `u(O.Fx)` brings in the joint's own component; the multipliers of the
-    // closures and contacts it also holds are not what it is written for.
-    let Sum::Generalized { speed } = &row.sum else {
-        return None;
-    };
-    let joint = speed.strip_prefix("u(")?.split('.').next()?;
-    let (site, component) = row.unknowns.iter().find_map(|u| match u {
-        Symbol::Unknown(Unknown::Reaction { site, component }) if &**site == joint => {
-            Some((site, component))
-        }
-        _ => None,
-    })?;
-    let j = (model.problem.joints.iter()).position(|joint| joint.name.as_str() == &**site)?;
-    let reaction = (model.sites[j].reactions.iter()).find(|c| c.component() == *component)?;
+    let (_, reaction) = super::relaxed::relaxed_reaction(derivation, row)?;
     let d = super::tex::vector_tex(model, &reaction.direction);
     Some(match reaction.kind {
         ComponentKind::Force => format!("\\text{{along }} {d}"),

@@ -6,6 +6,7 @@
 use super::long::LONG_EQUATION;
 use super::tex::{bodies_tex, vector_tex};
 use crate::equations::Derivation;
+use crate::mechanics::ReactionComponent;
 use crate::plan::{Equation, Sum};
 use crate::symbolic::{latex, latex_collected, latex_name, simplify, ComponentKind, Expr};
 use crate::symbolic::{Symbol, Unknown};
@@ -19,15 +20,14 @@ pub struct Relaxed {
     pub lines: Vec<String>,
 }
 
-/// The row of a relaxed joint (`row`, of Lagrange's rows) derived with its auxiliary
-/// coordinate; `None` for any other row. Each expression is written as `shown` gives it.
-pub fn relaxed(
-    derivation: &Derivation,
-    row: &Equation,
-    shown: &dyn Fn(&Expr) -> Expr,
-) -> Option<Relaxed> {
+/// The joint's name and the reaction component a relaxed joint's row (`u(O.Fx)`) brings
+/// in; the multipliers of the closures and contacts it also holds are not what it is
+/// written for. `None` for any other row.
+pub(super) fn relaxed_reaction<'a>(
+    derivation: &'a Derivation,
+    row: &'a Equation,
+) -> Option<(&'a str, &'a ReactionComponent)> {
     let model = &derivation.model;
-    let problem = model.problem;
     let Sum::Generalized { speed } = &row.sum else {
         return None;
     };
@@ -38,8 +38,20 @@ pub fn relaxed(
         }
         _ => None,
     })?;
-    let j = (problem.joints.iter()).position(|joint| joint.name.as_str() == &**site)?;
+    let j = (model.problem.joints.iter()).position(|joint| joint.name.as_str() == &**site)?;
     let reaction = (model.sites[j].reactions.iter()).find(|c| c.component() == *component)?;
+    Some((&**site, reaction))
+}
+
+/// The row of a relaxed joint (`row`, of Lagrange's rows) derived with its auxiliary
+/// coordinate; `None` for any other row. Each expression is written as `shown` gives it.
+pub fn relaxed(
+    derivation: &Derivation,
+    row: &Equation,
+    shown: &dyn Fn(&Expr) -> Expr,
+) -> Option<Relaxed> {
+    let model = &derivation.model;
+    let (site, reaction) = relaxed_reaction(derivation, row)?;
     let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row))?;
     let xi = format!("\\xi_{{{}}}", index + 1);
     let xi_dot = format!("\\dot{{\\xi}}_{{{}}}", index + 1);
