@@ -16,7 +16,7 @@ fn browser_dir() -> PathBuf {
 }
 
 /// Whether Chromium, node and the node modules are here; CI must have them.
-fn ready(test: &str) -> bool {
+pub(crate) fn ready(test: &str) -> bool {
     let chromium = Path::new("/usr/bin/chromium").exists();
     let node = Command::new("node").arg("--version").output().is_ok();
     let modules = browser_dir().join("node_modules/playwright-core").exists();
