@@ -6,7 +6,8 @@
 //! no page break), the handouts compiled in parallel, one a core. A handout that stops
 //! pdflatex writes no pages, and is a fault.
 
-use crate::support::{all_problems, pdflatex_present, pdflatex_source, run, Typeset, METHODS};
+use crate::support::handouts::explained;
+use crate::support::{all_problems, pdflatex_present, pdflatex_source, Typeset, METHODS};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
@@ -67,18 +68,7 @@ impl Handout {
 /// Sets the handout's LaTeX, as `explain` prints it, in `dir`; `None` when `explain`
 /// cannot write it (the library's tests answer for that).
 fn set(handout: &Handout, dir: &Path) -> Option<Typeset> {
-    let mut args: Vec<std::ffi::OsString> = vec![
-        "explain".into(),
-        handout.problem.clone().into(),
-        "--method".into(),
-        handout.method.into(),
-        "--format".into(),
-        "latex".into(),
-    ];
-    if handout.student {
-        args.push("--student".into());
-    }
-    let out = run(&args);
+    let out = explained(&handout.problem, handout.method, "latex", handout.student);
     if !out.status.success() {
         return None;
     }

@@ -70,18 +70,10 @@ fn ok(args: &[&str]) {
 fn handout(file: &Path, method: &str, dir: &Path) -> PathBuf {
     let stem = file.file_stem().expect("a name").to_string_lossy();
     let page = dir.join(format!("{stem}-{method}.html"));
-    let args = [
-        "explain",
-        &file.to_string_lossy(),
-        "--method",
-        method,
-        "--format",
-        "html",
-    ];
-    let out = run(&args);
+    let out = crate::support::handouts::explained(file, method, "html", false);
     assert!(
         out.status.success(),
-        "{args:?}: {}",
+        "{stem} by {method}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
     std::fs::write(&page, &out.stdout).expect("the page is written");

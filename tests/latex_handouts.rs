@@ -7,8 +7,8 @@
 //! Motion Law's (worked and the student's) and Kane's of every problem in `render`, and
 //! every method's of names.json in `names_render`.
 
-use crate::support::handouts::two_at_a_time;
-use crate::support::{all_problems, pdflatex_present, pdflatex_source, run, METHODS};
+use crate::support::handouts::{explained, two_at_a_time};
+use crate::support::{all_problems, pdflatex_present, pdflatex_source, METHODS};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -35,18 +35,7 @@ impl Handout {
 /// with its reason) has no handout to compile.
 fn faults(handout: &Handout, dir: &Path) -> Vec<String> {
     let name = handout.name();
-    let mut args: Vec<std::ffi::OsString> = vec![
-        "explain".into(),
-        handout.problem.clone().into(),
-        "--method".into(),
-        handout.method.into(),
-        "--format".into(),
-        "latex".into(),
-    ];
-    if handout.student {
-        args.push("--student".into());
-    }
-    let out = run(&args);
+    let out = explained(&handout.problem, handout.method, "latex", handout.student);
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         return if out.status.code() == Some(1) && err.contains("hint") {

@@ -53,14 +53,7 @@ fn every_html_page_has_valid_mathml() {
             .unwrap_or("problem");
         for method in METHODS {
             // As printed: the run `course_words` and others read too.
-            let out = support::run(&[
-                "explain".as_ref(),
-                problem.as_os_str(),
-                "--method".as_ref(),
-                method.as_ref(),
-                "--format".as_ref(),
-                "html".as_ref(),
-            ]);
+            let out = support::handouts::explained(problem, method, "html", false);
             assert!(
                 out.status.success(),
                 "{stem} {method}: {}",

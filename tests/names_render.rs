@@ -2,7 +2,7 @@
 //! and link_1 give LaTeX that pdflatex compiles by every method (no double subscript), and
 //! no HTML handout or `draw` SVG prints a literal `^`, `_` or `ˆ` in a text node.
 
-use crate::support::handouts::two_at_a_time;
+use crate::support::handouts::{explained, two_at_a_time};
 use crate::support::{all_problems, pdflatex_present, pdflatex_source, run, METHODS};
 use std::path::{Path, PathBuf};
 
@@ -33,18 +33,7 @@ fn two_part_names_compile_by_every_method() {
     // As `explain` prints them (the suite's other tests read the same runs), two at a time.
     let faults = two_at_a_time(&jobs, |&(method, student)| {
         let name = format!("{method}{}", if student { "-student" } else { "" });
-        let mut args = vec![
-            "explain".as_ref(),
-            problem.as_os_str(),
-            "--method".as_ref(),
-            method.as_ref(),
-            "--format".as_ref(),
-            "latex".as_ref(),
-        ];
-        if student {
-            args.push("--student".as_ref());
-        }
-        let out = run(&args);
+        let out = explained(&problem, method, "latex", student);
         if !out.status.success() {
             return vec![format!("{name}: {}", String::from_utf8_lossy(&out.stderr))];
         }

@@ -277,18 +277,7 @@ fn file_stem(path: &Path) -> String {
 /// `explain PATH --method METHOD --format FORMAT` (`--student`: the student's handout) as
 /// printed: the run the suite's other tests of every handout share.
 fn explained(path: &Path, method: &str, format: &str, student: bool) -> String {
-    let mut args = vec![
-        "explain".as_ref(),
-        path.as_os_str(),
-        "--method".as_ref(),
-        method.as_ref(),
-        "--format".as_ref(),
-        format.as_ref(),
-    ];
-    if student {
-        args.push("--student".as_ref());
-    }
-    let out = crate::support::run(&args);
+    let out = crate::support::handouts::explained(path, method, format, student);
     assert!(
         out.status.success(),
         "{} by {method} in {format}: {}",
