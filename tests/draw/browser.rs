@@ -1,11 +1,11 @@
 //! The pictures as a browser lays them out: every bundled problem's pictures and its
 //! motion (and those of one whose bodies are named B0, B1, B2, link_1) are drawn, put on
 //! one page with `measure.js`, and read back from one headless Chromium for every page
-//! (playwright-core, `tests/browser/handouts.js results`). From the
-//! browser's own text boxes and stroke geometry: no label overlaps another and no stroke
-//! crosses a label, in the stills and at key frames of the motion; a rolling body is a
-//! circle (an ellipse in 3D) of its radius; a uniform rod pinned at one end reaches its far
-//! end; in 2D the weight points straight down the page.
+//! (playwright-core, `tests/browser/handouts.js results`). From the browser's own text
+//! boxes and stroke geometry: no label overlaps another and no stroke crosses a label, in
+//! the stills and at key frames of the motion; a rolling body is a circle (an ellipse in
+//! 3D) of its radius; a uniform rod pinned at one end reaches its far end; in 2D the weight
+//! points straight down the page.
 
 use crate::support::handouts::two_at_a_time;
 use crate::support::{all_problems, run};
