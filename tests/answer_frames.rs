@@ -96,6 +96,38 @@ fn labels_in_the_handout(path: &std::path::Path, joint: &str, letters: &[&str]) 
     }
 }
 
+/// The force of `joint`, (F_x, F_y) in N, as answered (`own`), solved and labelled in its
+/// frame, turned by θ about n̂_z from N: x̂ = (cos θ, sin θ), ŷ = (−sin θ, cos θ), so its
+/// components are F_x cos θ + F_y sin θ and −F_x sin θ + F_y cos θ; the handout labels
+/// them with that frame's unit vectors and N's.
+fn in_its_frame(
+    path: &std::path::Path,
+    joint: &str,
+    own: &Value,
+    (frame, turned): (&str, f64),
+    (fx, fy): (f64, f64),
+) {
+    let x = fx * turned.cos() + fy * turned.sin();
+    let y = -fx * turned.sin() + fy * turned.cos();
+    assert_eq!(own["frame"], frame);
+    close(
+        component(own, "x"),
+        x,
+        &format!("{joint} along {frame}'s x"),
+    );
+    close(
+        component(own, "y"),
+        y,
+        &format!("{joint} along {frame}'s y"),
+    );
+    let (solved, f) = solved_force(path, joint);
+    assert_eq!(solved, frame);
+    printed_close(f[0], x, &format!("solve's {joint} along {frame}'s x"));
+    printed_close(f[1], y, &format!("solve's {joint} along {frame}'s y"));
+    let letter = frame.to_lowercase();
+    labels_in_the_handout(path, joint, &[letter.as_str(), "n"]);
+}
+
 fn state(answer: &Value, name: &str) -> f64 {
     answer["state"][name].as_f64().expect("state value")
 }
@@ -165,26 +197,11 @@ fn the_double_pendulums_elbow_in_a_and_in_n() {
         + l2 / 2.0 * (a12 * q12.sin() + u12 * u12 * q12.cos());
     let (fx, fy) = (m2 * ax, m2 * ay + m2 * g);
     let (own, in_n) = (&found[2], &found[3]);
-    assert_eq!(own["frame"], "A");
     assert_eq!(in_n["frame"], "N");
     close(component(in_n, "x"), fx, "elbow n̂_x");
     close(component(in_n, "y"), fy, "elbow n̂_y");
-    // â_x = (cos q₁, sin q₁), â_y = (−sin q₁, cos q₁).
-    close(
-        component(own, "x"),
-        fx * q1.cos() + fy * q1.sin(),
-        "elbow â_x",
-    );
-    close(
-        component(own, "y"),
-        -fx * q1.sin() + fy * q1.cos(),
-        "elbow â_y",
-    );
-    let (frame, f) = solved_force(&path, "P");
-    assert_eq!(frame, "A");
-    printed_close(f[0], fx * q1.cos() + fy * q1.sin(), "solve's elbow â_x");
-    printed_close(f[1], -fx * q1.sin() + fy * q1.cos(), "solve's elbow â_y");
-    labels_in_the_handout(&path, "P", &["a", "n"]);
+    // A is turned by q₁ from N.
+    in_its_frame(&path, "P", own, ("A", q1), (fx, fy));
 }
 
 /// The four-bar's closure R: the coupler's force on the rocker, in the coupler's unit
@@ -209,7 +226,6 @@ fn the_four_bars_closure_in_b_and_in_n() {
     );
     let a3 = found[0]["value"].as_f64().expect("q3''");
     let (own, in_n) = (&found[1], &found[2]);
-    assert_eq!(own["frame"], "B");
     assert_eq!(in_n["frame"], "N");
     let (fx, fy) = (component(in_n, "x"), component(in_n, "y"));
     close(
@@ -218,22 +234,7 @@ fn the_four_bars_closure_in_b_and_in_n() {
         "the rocker's moments about Q",
     );
     // B is turned by q₁ + q₂ from N.
-    let b = q1 + q2;
-    close(
-        component(own, "x"),
-        fx * b.cos() + fy * b.sin(),
-        "R along b̂_x",
-    );
-    close(
-        component(own, "y"),
-        -fx * b.sin() + fy * b.cos(),
-        "R along b̂_y",
-    );
-    let (frame, f) = solved_force(&path, "R");
-    assert_eq!(frame, "B");
-    printed_close(f[0], fx * b.cos() + fy * b.sin(), "solve's b̂_x");
-    printed_close(f[1], -fx * b.sin() + fy * b.cos(), "solve's b̂_y");
-    labels_in_the_handout(&path, "R", &["b", "n"]);
+    in_its_frame(&path, "R", own, ("B", q1 + q2), (fx, fy));
 }
 
 /// The key's columns name the frame; the handout's Answers write its unit vectors.

@@ -3,13 +3,12 @@
 
 mod bundled;
 
-use crate::support::{problem, run};
+use crate::support::{pdflatex, pdflatex_present, problem, run};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::{answer_all, Answer};
 use mbd_tutor::pipeline::{derive, Purpose, Solver};
 use mbd_tutor::problem::{load, Problem};
 use serde_json::{json, Value};
-use std::process::{Command, Stdio};
 
 /// A particle pendulum of length L with an optional torsional spring at the pivot.
 fn pendulum(questions: Value, spring: Option<(f64, f64)>) -> Value {
@@ -438,39 +437,9 @@ fn the_student_handout_has_blanks_for_every_step_and_no_answers() {
     }
 }
 
-/// Compiles `file` with pdflatex in its directory.
-/// Compiles `file` with pdflatex; on failure, the log's error lines and pdflatex's status.
-fn compiles(file: &std::path::Path) -> Result<(), String> {
-    let output = Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-no-shell-escape",
-        ])
-        .arg(file.file_name().expect("a file"))
-        .current_dir(file.parent().expect("a directory"))
-        .stdin(Stdio::null())
-        .output()
-        .map_err(|e| format!("pdflatex does not run: {e}"))?;
-    if output.status.success() {
-        return Ok(());
-    }
-    let log = std::fs::read_to_string(file.with_extension("log")).unwrap_or_default();
-    let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
-    Err(format!("{}: {errors:?}", output.status))
-}
-
 #[test]
 fn both_versions_come_from_one_run_and_compile() {
-    let present = Command::new("pdflatex")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .status()
-        .is_ok();
-    assert!(
-        present || std::env::var_os("CI").is_none(),
-        "CI needs pdflatex"
-    );
+    let present = pdflatex_present("the answers' handouts");
     let dir = std::env::temp_dir().join(format!("mbd-both-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("scratch");
     for name in ["simple-pendulum", "heavy-symmetric-top"] {
@@ -504,11 +473,13 @@ fn both_versions_come_from_one_run_and_compile() {
             "{name}"
         );
         if present {
-            if let Err(why) = compiles(&out_file) {
-                panic!("{name}: the worked solution does not compile: {why}");
-            }
-            if let Err(why) = compiles(&student) {
-                panic!("{name}: the handout does not compile: {why}");
+            for (what, file) in [("worked solution", &out_file), ("handout", &student)] {
+                let typeset = pdflatex(file);
+                assert!(
+                    typeset.compiled(),
+                    "{name}: the {what} does not compile: {}",
+                    typeset.faults()
+                );
             }
         }
     }

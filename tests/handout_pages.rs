@@ -3,11 +3,12 @@
 //! out of the margin by more than a few points.
 //!
 //! pdflatex runs once per handout (the tables' widths are fixed, so a second run changes
-//! no page break), the handouts compiled in parallel, one a core.
+//! no page break), the handouts compiled in parallel, one a core. A handout that stops
+//! pdflatex writes no pages, and is a fault.
 
-use crate::support::{all_problems, pdflatex_present, run, METHODS};
+use crate::support::handouts::explained;
+use crate::support::{all_problems, pdflatex_present, pdflatex_source, Typeset, METHODS};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::sync::Mutex;
 
 /// The most pages a one- or two-body handout may take.
@@ -64,75 +65,15 @@ impl Handout {
     }
 }
 
-/// What pdflatex made of a handout: its pages and the widest overfull line, in points.
-struct Measured {
-    pages: usize,
-    widest_overfull: f64,
-}
-
-/// Pages and overfull lines from pdflatex's log.
-fn measure(log: &str) -> Measured {
-    let pages = log
-        .split("Output written on ")
-        .nth(1)
-        .and_then(|rest| rest.split('(').nth(1))
-        .and_then(|rest| rest.split_whitespace().next())
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(0);
-    let widest_overfull = log
-        .lines()
-        .filter_map(|l| l.strip_prefix("Overfull \\hbox ("))
-        .filter_map(|rest| rest.split("pt").next()?.parse::<f64>().ok())
-        .fold(0.0, f64::max);
-    Measured {
-        pages,
-        widest_overfull,
-    }
-}
-
-#[test]
-fn log_reading_finds_pages_and_the_widest_overfull_line() {
-    let log = "Overfull \\hbox (2.5pt too wide) in paragraph\n\
-               Overfull \\hbox (12.25pt too wide) detected at line 3\n\
-               Overfull \\vbox (30pt too high)\n\
-               Output written on x.pdf (3 pages, 1234 bytes).";
-    let m = measure(log);
-    assert_eq!(m.pages, 3);
-    assert!((m.widest_overfull - 12.25).abs() < 1e-12);
-}
-
-/// Writes the handout's LaTeX into `dir` and compiles it once; `None` when `explain`
+/// Sets the handout's LaTeX, as `explain` prints it, in `dir`; `None` when `explain`
 /// cannot write it (the library's tests answer for that).
-fn set(handout: &Handout, dir: &Path) -> Option<Measured> {
-    let name = handout.name();
-    let tex = dir.join(format!("{name}.tex"));
-    let mut args: Vec<std::ffi::OsString> = vec![
-        "explain".into(),
-        handout.problem.clone().into(),
-        "--method".into(),
-        handout.method.into(),
-        "--format".into(),
-        "latex".into(),
-        "-o".into(),
-        tex.clone().into(),
-    ];
-    if handout.student {
-        args.push("--student".into());
-    }
-    if !run(&args).status.success() {
+fn set(handout: &Handout, dir: &Path) -> Option<Typeset> {
+    let out = explained(&handout.problem, handout.method, "latex", handout.student);
+    if !out.status.success() {
         return None;
     }
-    Command::new("pdflatex")
-        .args(["-interaction=nonstopmode", "-no-shell-escape"])
-        .arg(&tex)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .expect("pdflatex runs");
-    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
-    Some(measure(&log))
+    let source = String::from_utf8_lossy(&out.stdout);
+    Some(pdflatex_source(dir, &handout.name(), &source))
 }
 
 #[test]
@@ -151,12 +92,12 @@ fn the_handouts_last_brought_within_four_pages_stay_there() {
         };
         let m = set(&handout, &dir).expect("explain writes the handout");
         assert!(
-            (1..=MOST_PAGES).contains(&m.pages),
+            (1..=MOST_PAGES).contains(&m.pages()),
             "{}: {} pages",
             handout.name(),
-            m.pages
+            m.pages()
         );
-        assert!(m.widest_overfull <= MOST_OVERFULL, "{}", handout.name());
+        assert!(m.widest_overfull() <= MOST_OVERFULL, "{}", handout.name());
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -202,15 +143,15 @@ fn one_and_two_body_handouts_fit_four_pages_within_the_margins() {
                 *set_at_all.lock().expect("count") += 1;
                 let name = handout.name();
                 let mut found = faults.lock().expect("faults");
-                if m.pages == 0 {
-                    found.push(format!("{name}: pdflatex wrote no pages"));
-                } else if m.pages > most_pages(&name) {
-                    found.push(format!("{name}: {} pages", m.pages));
+                if m.pages() == 0 {
+                    found.push(format!("{name}: no pages: {}", m.faults()));
+                } else if m.pages() > most_pages(&name) {
+                    found.push(format!("{name}: {} pages", m.pages()));
                 }
-                if m.widest_overfull > MOST_OVERFULL {
+                if m.widest_overfull() > MOST_OVERFULL {
                     found.push(format!(
                         "{name}: a line {:.1} pt out of the margin",
-                        m.widest_overfull
+                        m.widest_overfull()
                     ));
                 }
             });

@@ -16,7 +16,7 @@ fn browser_dir() -> PathBuf {
 }
 
 /// Whether Chromium, node and the node modules are here; CI must have them.
-fn ready(test: &str) -> bool {
+pub(crate) fn ready(test: &str) -> bool {
     let chromium = Path::new("/usr/bin/chromium").exists();
     let node = Command::new("node").arg("--version").output().is_ok();
     let modules = browser_dir().join("node_modules/playwright-core").exists();
@@ -65,20 +65,18 @@ fn ok(args: &[&str]) {
     );
 }
 
-/// The HTML handout of `file` by `method`, written into `dir`.
+/// The HTML handout of `file` by `method`, as `explain` prints it (the run the suite's
+/// other tests of every handout share; the page holds its plots), written into `dir`.
 fn handout(file: &Path, method: &str, dir: &Path) -> PathBuf {
     let stem = file.file_stem().expect("a name").to_string_lossy();
     let page = dir.join(format!("{stem}-{method}.html"));
-    ok(&[
-        "explain",
-        &file.to_string_lossy(),
-        "--method",
-        method,
-        "--format",
-        "html",
-        "-o",
-        &page.to_string_lossy(),
-    ]);
+    let out = crate::support::handouts::explained(file, method, "html", false);
+    assert!(
+        out.status.success(),
+        "{stem} by {method}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::write(&page, &out.stdout).expect("the page is written");
     page
 }
 

@@ -1,17 +1,15 @@
 //! pdflatex compiles every LaTeX handout: every bundled problem and tests/draw/names.json
 //! (bodies B0 and link_1, a loop closed at J4 on L4, a point P4C of C), by every method,
-//! worked and the student's, as `explain` writes them. Each is set once in draft mode (the
-//! errors are the same; no PDF is written), two at a time.
+//! worked and the student's, as `explain` prints them. Each is set once, two at a time.
 //!
 //! Over 400 handouts, many minutes of pdflatex on two cores: run on demand with
 //! `cargo test --release --test main latex_handouts -- --ignored`. The suite compiles the
 //! Motion Law's (worked and the student's) and Kane's of every problem in `render`, and
 //! every method's of names.json in `names_render`.
 
-use crate::support::handouts::two_at_a_time;
-use crate::support::{all_problems, pdflatex_present, run, METHODS};
+use crate::support::handouts::{explained, two_at_a_time};
+use crate::support::{all_problems, pdflatex_present, pdflatex_source, METHODS};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// How many handouts pdflatex set.
@@ -37,21 +35,7 @@ impl Handout {
 /// with its reason) has no handout to compile.
 fn faults(handout: &Handout, dir: &Path) -> Vec<String> {
     let name = handout.name();
-    let tex = dir.join(format!("{name}.tex"));
-    let mut args: Vec<std::ffi::OsString> = vec![
-        "explain".into(),
-        handout.problem.clone().into(),
-        "--method".into(),
-        handout.method.into(),
-        "--format".into(),
-        "latex".into(),
-        "-o".into(),
-        tex.clone().into(),
-    ];
-    if handout.student {
-        args.push("--student".into());
-    }
-    let out = run(&args);
+    let out = explained(&handout.problem, handout.method, "latex", handout.student);
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         return if out.status.code() == Some(1) && err.contains("hint") {
@@ -60,28 +44,13 @@ fn faults(handout: &Handout, dir: &Path) -> Vec<String> {
             vec![format!("{name}: explain failed: {err}")]
         };
     }
-    let status = Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-no-shell-escape",
-            "-draftmode",
-        ])
-        .arg(&tex)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .expect("pdflatex runs");
+    let typeset = pdflatex_source(dir, &name, &String::from_utf8_lossy(&out.stdout));
     SET.fetch_add(1, Ordering::SeqCst);
-    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
-    let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
     let mut found = Vec::new();
-    if !status.success() || !errors.is_empty() {
-        found.push(format!("{name}: pdflatex stops: {errors:?}"));
+    if !typeset.compiled() {
+        found.push(format!("{name}: {}", typeset.faults()));
     }
-    for ext in ["aux", "log", "tex"] {
+    for ext in ["aux", "log", "pdf", "tex"] {
         let _ = std::fs::remove_file(dir.join(format!("{name}.{ext}")));
     }
     found

@@ -2,9 +2,9 @@
 //! and link_1 give LaTeX that pdflatex compiles by every method (no double subscript), and
 //! no HTML handout or `draw` SVG prints a literal `^`, `_` or `ˆ` in a text node.
 
-use crate::support::{all_problems, pdflatex_present, run, METHODS};
+use crate::support::handouts::{explained, two_at_a_time};
+use crate::support::{all_problems, pdflatex_present, pdflatex_source, run, METHODS};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mbd-names-{name}-{}", std::process::id()));
@@ -19,26 +19,6 @@ fn names_with_a_loop(_dir: &Path) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/draw/names.json")
 }
 
-fn pdflatex(dir: &Path, name: &str) {
-    let output = Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-no-shell-escape",
-        ])
-        .arg(format!("{name}.tex"))
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("pdflatex runs");
-    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
-    let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
-    assert!(
-        output.status.success() && errors.is_empty(),
-        "{name}.tex does not compile: {errors:?}"
-    );
-}
-
 #[test]
 fn two_part_names_compile_by_every_method() {
     if !pdflatex_present("the names' handouts") {
@@ -46,39 +26,33 @@ fn two_part_names_compile_by_every_method() {
     }
     let dir = scratch("latex");
     let problem = names_with_a_loop(&dir);
-    for method in METHODS {
-        for student in [false, true] {
-            let name = format!("{method}{}", if student { "-student" } else { "" });
-            let tex = dir.join(format!("{name}.tex"));
-            let mut args = vec![
-                "explain".as_ref(),
-                problem.as_os_str(),
-                "--method".as_ref(),
-                method.as_ref(),
-                "--format".as_ref(),
-                "latex".as_ref(),
-                "-o".as_ref(),
-                tex.as_os_str(),
-            ];
-            if student {
-                args.push("--student".as_ref());
-            }
-            let out = run(&args);
-            assert!(
-                out.status.success(),
-                "{}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            let source = std::fs::read_to_string(&tex).expect("written");
-            assert!(!source.contains("}_{L_{4}}"), "{name}: a double subscript");
-            // The worksheet leaves the closure's rows blank.
-            assert!(
-                student || source.contains("J_{4,L_{4}}"),
-                "{name}: J4 of L4 in one group"
-            );
-            pdflatex(&dir, &name);
+    let jobs: Vec<(&str, bool)> = METHODS
+        .iter()
+        .flat_map(|m| [(*m, false), (*m, true)])
+        .collect();
+    // As `explain` prints them (the suite's other tests read the same runs), two at a time.
+    let faults = two_at_a_time(&jobs, |&(method, student)| {
+        let name = format!("{method}{}", if student { "-student" } else { "" });
+        let out = explained(&problem, method, "latex", student);
+        if !out.status.success() {
+            return vec![format!("{name}: {}", String::from_utf8_lossy(&out.stderr))];
         }
-    }
+        let source = String::from_utf8_lossy(&out.stdout);
+        let mut found = Vec::new();
+        if source.contains("}_{L_{4}}") {
+            found.push(format!("{name}: a double subscript"));
+        }
+        // The worksheet leaves the closure's rows blank.
+        if !student && !source.contains("J_{4,L_{4}}") {
+            found.push(format!("{name}: J4 of L4 not in one group"));
+        }
+        let typeset = pdflatex_source(&dir, &name, &source);
+        if !typeset.compiled() {
+            found.push(format!("{name}.tex does not compile: {}", typeset.faults()));
+        }
+        found
+    });
+    assert!(faults.is_empty(), "{}", faults.join("\n"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

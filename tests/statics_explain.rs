@@ -5,7 +5,10 @@
 //! the Motion Law's planner takes moments about the ladder's foot and the four-bar's pins;
 //! the LaTeX compiles, the student's version leaves the answers blank.
 
-use crate::support::{explain, pdflatex_present, problem, run, run_afresh, run_json, METHODS};
+use crate::support::handouts::two_at_a_time;
+use crate::support::{
+    explain, pdflatex, pdflatex_present, problem, run, run_afresh, run_json, METHODS,
+};
 use serde_json::Value;
 
 const G: f64 = 9.81;
@@ -261,45 +264,40 @@ fn every_statics_handout_compiles_in_latex() {
     }
     let dir = std::env::temp_dir().join(format!("mbd-statics-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("scratch");
-    for name in PROBLEMS {
-        for method in METHODS {
-            let stem = format!("{}-{method}", name.replace('/', "-"));
-            let file = dir.join(format!("{stem}.tex"));
-            let path = problem(name);
-            let out = run(&[
-                "explain".as_ref(),
-                path.as_os_str(),
-                "--statics".as_ref(),
-                "--both".as_ref(),
-                "--method".as_ref(),
-                method.as_ref(),
-                "--format".as_ref(),
-                "latex".as_ref(),
-                "-o".as_ref(),
-                file.as_os_str(),
-            ]);
-            assert!(
-                out.status.success(),
-                "{}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            for tex in [file.clone(), dir.join(format!("{stem}-student.tex"))] {
-                let ok = std::process::Command::new("pdflatex")
-                    .args([
-                        "-interaction=nonstopmode",
-                        "-halt-on-error",
-                        "-no-shell-escape",
-                    ])
-                    .arg(tex.file_name().unwrap())
-                    .current_dir(&dir)
-                    .stdin(std::process::Stdio::null())
-                    .stdout(std::process::Stdio::null())
-                    .status()
-                    .is_ok_and(|s| s.success());
-                assert!(ok, "{} does not compile", tex.display());
-            }
+    let jobs: Vec<(&str, &str)> = PROBLEMS
+        .iter()
+        .flat_map(|name| METHODS.iter().map(move |method| (*name, *method)))
+        .collect();
+    // Both versions of a handout from one run, set two handouts at a time.
+    let failed = two_at_a_time(&jobs, |&(name, method)| {
+        let stem = format!("{}-{method}", name.replace('/', "-"));
+        let file = dir.join(format!("{stem}.tex"));
+        let path = problem(name);
+        let out = run(&[
+            "explain".as_ref(),
+            path.as_os_str(),
+            "--statics".as_ref(),
+            "--both".as_ref(),
+            "--method".as_ref(),
+            method.as_ref(),
+            "--format".as_ref(),
+            "latex".as_ref(),
+            "-o".as_ref(),
+            file.as_os_str(),
+        ]);
+        if !out.status.success() {
+            return vec![format!("{stem}: {}", String::from_utf8_lossy(&out.stderr))];
         }
-    }
+        [file.clone(), dir.join(format!("{stem}-student.tex"))]
+            .iter()
+            .map(|tex| (tex, pdflatex(tex)))
+            .filter(|(_, typeset)| !typeset.compiled())
+            .map(|(tex, typeset)| {
+                format!("{} does not compile: {}", tex.display(), typeset.faults())
+            })
+            .collect()
+    });
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -1,5 +1,5 @@
 // Headless Chromium reads the handouts and pictures as a student sees them. Run by
-// tests/browser_handouts.rs:  node handouts.js MODE ARGS...; exits 0 when every check passes
+// tests/handouts_in_browser.rs and tests/draw/browser.rs:  node handouts.js MODE ARGS...; exits 0 when every check passes
 // and prints what failed otherwise.
 //   texts FILE...             no text node of any page (HTML or SVG) shows a literal ^, _ or ˆ
 //   overdots HTML...          every dot over a letter is inked, above its letter and unclipped,
@@ -14,6 +14,9 @@
 //   shapes EXPECTED SVG...    each body of EXPECTED.bodies drawn in a picture is its shape
 //                             (data-shape), not a point: a rod as long as the bar, a block
 //                             of some size, a bar (elongated) longer than thick
+//   results HTML...           no check: prints, a line a page, {"file": HTML, "result": R},
+//                             R the JSON the page's own script wrote into <pre id="result">
+//                             (tests/draw/measure.js); two pages at a time, one browser
 'use strict';
 const { chromium } = require('playwright-core');
 
@@ -362,9 +365,25 @@ async function shapes(expectedPath, files) {
   }
 }
 
+// What each page's script wrote into <pre id="result">, printed a line a page; two pages
+// of one browser at a time, each taking every other file.
+async function results(files) {
+  const b = await browser();
+  const halves = [0, 1].map((k) => files.filter((_, i) => i % 2 === k));
+  await Promise.all(halves.map(async (half) => {
+    const page = await b.newPage({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+    for (const file of half) {
+      await page.goto('file://' + file);
+      const text = await page.textContent('#result');
+      console.log(JSON.stringify({ file, result: JSON.parse(text) }));
+    }
+  }));
+  await b.close();
+}
+
 (async () => {
   const [mode, ...args] = process.argv.slice(2);
-  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels, shapes: (a) => shapes(a[0], a.slice(1)) };
+  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels, shapes: (a) => shapes(a[0], a.slice(1)), results };
   if (!modes[mode]) { console.log(`unknown mode ${mode}`); process.exit(2); }
   try {
     await modes[mode](args);

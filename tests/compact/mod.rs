@@ -3,7 +3,6 @@
 
 use crate::support::{problem, solve_all};
 use std::path::Path;
-use std::process::{Command, Stdio};
 
 /// `mbd-tutor explain NAME --format FORMAT` on standard output.
 fn explain(name: &str, format: &str) -> String {
@@ -114,37 +113,9 @@ fn simplified_equations(markdown: &str) -> Vec<String> {
 /// Compiles `source` in `dir` and returns the number of pages.
 fn pages(dir: &Path, source: &str) -> usize {
     std::fs::create_dir_all(dir).expect("scratch directory");
-    std::fs::write(dir.join("x.tex"), source).expect("writable");
-    let output = Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-no-shell-escape",
-            "x.tex",
-        ])
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("pdflatex runs");
-    let log = std::fs::read_to_string(dir.join("x.log")).unwrap_or_default();
-    assert!(
-        output.status.success(),
-        "does not compile: {:?}",
-        log.lines()
-            .filter(|l| l.starts_with('!'))
-            .collect::<Vec<_>>()
-    );
-    let summary = log
-        .lines()
-        .find(|l| l.starts_with("Output written on"))
-        .unwrap_or_default()
-        .to_string();
-    let count = summary
-        .split('(')
-        .nth(1)
-        .and_then(|s| s.split_whitespace().next())
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(0);
+    let typeset = crate::support::pdflatex_source(dir, "x", source);
+    assert!(typeset.compiled(), "does not compile: {}", typeset.faults());
+    let count = typeset.pages();
     let _ = std::fs::remove_dir_all(dir);
     count
 }

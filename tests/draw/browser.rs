@@ -1,33 +1,20 @@
 //! The pictures as a browser lays them out: every bundled problem's pictures and its
 //! motion (and those of one whose bodies are named B0, B1, B2, link_1) are drawn, put on
-//! one page with `measure.js`, and read back from headless Chromium's DOM. From the
-//! browser's own text boxes and stroke geometry: no label overlaps another and no stroke
-//! crosses a label, in the stills and at key frames of the motion; a rolling body is a
-//! circle (an ellipse in 3D) of its radius; a uniform rod pinned at one end reaches its far
-//! end; in 2D the weight points straight down the page.
+//! one page with `measure.js`, and read back from one headless Chromium for every page
+//! (playwright-core, `tests/browser/handouts.js results`). From the browser's own text
+//! boxes and stroke geometry: no label overlaps another and no stroke crosses a label, in
+//! the stills and at key frames of the motion; a rolling body is a circle (an ellipse in
+//! 3D) of its radius; a uniform rod pinned at one end reaches its far end; in 2D the weight
+//! points straight down the page.
 
 use crate::support::handouts::two_at_a_time;
 use crate::support::{all_problems, run};
 use mbd_tutor::problem::{ConstraintKind, Inertia, Problem};
 use mbd_tutor::symbolic::{eval, Values};
 use serde_json::Value;
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-const CHROMIUM: &str = "chromium";
-
-/// Whether Chromium is here; CI must have it (`.ci/run` installs it).
-fn chromium_present() -> bool {
-    let present = Command::new(CHROMIUM).arg("--version").output().is_ok();
-    assert!(
-        present || std::env::var_os("CI").is_none(),
-        "chromium is missing, and CI must measure the pictures in a browser"
-    );
-    if !present {
-        eprintln!("notice: chromium not found; the pictures were not measured in a browser");
-    }
-    present
-}
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mbd-browser-{}-{name}", std::process::id()));
@@ -77,43 +64,32 @@ fn page(problem: &Path, dir: &Path) -> String {
     )
 }
 
-/// Loads `html` in headless Chromium and returns what `measure.js` wrote.
-fn measure(html: &Path) -> Value {
-    // A profile of its own: two pages are measured at a time.
-    let stem = html.file_stem().expect("a name").to_string_lossy();
-    let profile = scratch(&format!("profile-{stem}"));
-    let out = Command::new(CHROMIUM)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            "--allow-file-access-from-files",
-        ])
-        .arg(format!("--user-data-dir={}", profile.display()))
-        .arg("--dump-dom")
-        .arg(format!("file://{}", html.display()))
+/// Loads every page of `pages` in one headless Chromium (through playwright-core,
+/// `tests/browser/handouts.js results`) and returns what `measure.js` wrote on each.
+fn measure(pages: &[PathBuf]) -> HashMap<PathBuf, Value> {
+    let out = Command::new("node")
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser"))
+        .arg("handouts.js")
+        .arg("results")
+        .args(pages)
         .output()
-        .expect("chromium runs");
-    let _ = std::fs::remove_dir_all(&profile);
-    let dom = String::from_utf8_lossy(&out.stdout);
-    let start = dom.find("<pre id=\"result\">").unwrap_or_else(|| {
-        panic!(
-            "no result in the page: {}",
-            String::from_utf8_lossy(&out.stderr)
-        )
-    }) + "<pre id=\"result\">".len();
-    let end = start + dom[start..].find("</pre>").expect("the result ends");
-    let text = dom[start..end]
-        .replace("&quot;", "\"")
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
-    serde_json::from_str(&text).unwrap_or_else(|e| panic!("the measurements are JSON: {e}"))
+        .expect("node runs");
+    let printed = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "the pages were not measured: {printed}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    printed
+        .lines()
+        .filter(|line| line.starts_with('{'))
+        .map(|line| {
+            let mut line: Value = serde_json::from_str(line)
+                .unwrap_or_else(|e| panic!("the measurements are JSON: {e}"));
+            let file = PathBuf::from(line["file"].as_str().expect("the page's file"));
+            (file, line["result"].take())
+        })
+        .collect()
 }
 
 fn constants(problem: &Problem) -> Values {
@@ -369,19 +345,33 @@ impl Sheet<'_> {
 
 #[test]
 fn every_picture_measured_in_a_browser_reads_as_a_textbook_figure() {
-    if !chromium_present() {
+    if !crate::handouts_in_browser::ready("the pictures measured in a browser") {
         return;
     }
     let root = scratch("pictures");
-    // Two problems at a time, a Chromium each: the machine's two cores.
-    let faults = two_at_a_time(&problems(), |problem| {
+    let problems = problems();
+    let page_of = |problem: &Path| {
         let name = problem.file_stem().unwrap().to_string_lossy().into_owned();
-        let dir = root.join(&name);
-        let html = root.join(format!("{name}.html"));
+        (root.join(&name), root.join(format!("{name}.html")))
+    };
+    // The program draws two problems at a time; then one browser measures every page.
+    two_at_a_time(&problems, |problem| {
+        let (dir, html) = page_of(problem);
         std::fs::write(&html, page(problem, &dir)).expect("page written");
-        let reports = measure(&html);
-        judge(problem, &dir, &reports)
+        Vec::new()
     });
+    let pages: Vec<PathBuf> = problems.iter().map(|p| page_of(p).1).collect();
+    let mut reports = measure(&pages);
+    let faults: Vec<String> = problems
+        .iter()
+        .flat_map(|problem| {
+            let (dir, html) = page_of(problem);
+            let report = reports
+                .remove(&html)
+                .unwrap_or_else(|| panic!("{}: not measured", html.display()));
+            judge(problem, &dir, &report)
+        })
+        .collect();
     let _ = std::fs::remove_dir_all(&root);
     assert!(
         faults.is_empty(),

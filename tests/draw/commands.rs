@@ -2,7 +2,7 @@
 //! their ids unique on a page, TikZ that pdflatex compiles.
 
 use super::{drawings, read};
-use crate::support::{problem as problem_path, run};
+use crate::support::{pdflatex, pdflatex_present, pdflatex_source, problem as problem_path, run};
 use mbd_tutor::equations::Method;
 use mbd_tutor::render::draw::View;
 
@@ -84,16 +84,7 @@ fn bad_views_and_states_are_usage_errors() {
 
 #[test]
 fn tikz_pictures_compile_with_pdflatex() {
-    if std::process::Command::new("pdflatex")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "pdflatex is missing, and CI must compile the LaTeX"
-        );
-        eprintln!("notice: pdflatex not found; TikZ compilation not checked");
+    if !pdflatex_present("the TikZ pictures") {
         return;
     }
     let mut body = String::new();
@@ -116,26 +107,15 @@ fn tikz_pictures_compile_with_pdflatex() {
     );
     let dir = scratch("tikz");
     std::fs::create_dir_all(&dir).expect("scratch");
-    std::fs::write(dir.join("pictures.tex"), source).expect("written");
-    let out = std::process::Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-no-shell-escape",
-            "pictures.tex",
-        ])
-        .current_dir(&dir)
-        .stdin(std::process::Stdio::null())
-        .output()
-        .expect("pdflatex runs");
-    let log = std::fs::read_to_string(dir.join("pictures.log")).unwrap_or_default();
+    let typeset = pdflatex_source(&dir, "pictures", &source);
     assert!(
-        out.status.success() && dir.join("pictures.pdf").is_file(),
-        "{}",
-        dir.display()
+        typeset.compiled() && typeset.pages() > 0,
+        "{}: {}",
+        dir.display(),
+        typeset.faults()
     );
     assert!(
-        !log.contains("Overfull \\hbox"),
+        !typeset.log.contains("Overfull \\hbox"),
         "a picture is wider than the page: {}",
         dir.display()
     );
@@ -212,15 +192,7 @@ fn explain_embeds_the_pictures_with_ids_unique_on_the_page() {
 
 #[test]
 fn explain_latex_with_tikz_pictures_compiles() {
-    if std::process::Command::new("pdflatex")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "pdflatex is missing, and CI must compile the LaTeX"
-        );
+    if !pdflatex_present("the handouts with TikZ pictures") {
         return;
     }
     let dir = scratch("explain-tex");
@@ -256,20 +228,11 @@ fn explain_latex_with_tikz_pictures_compiles() {
             source.contains("\\begin{tikzpicture}"),
             "{name}: no TikZ picture"
         );
-        let out = std::process::Command::new("pdflatex")
-            .args([
-                "-interaction=nonstopmode",
-                "-halt-on-error",
-                "-no-shell-escape",
-            ])
-            .arg(format!("{name}.tex"))
-            .current_dir(&dir)
-            .stdin(std::process::Stdio::null())
-            .output()
-            .expect("pdflatex runs");
+        let typeset = pdflatex(std::path::Path::new(&tex));
         assert!(
-            out.status.success(),
-            "{name}.tex does not compile: {}",
+            typeset.compiled(),
+            "{name}.tex does not compile: {}: {}",
+            typeset.faults(),
             dir.display()
         );
     }

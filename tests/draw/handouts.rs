@@ -4,9 +4,8 @@
 //! bad one refused with its JSON path.
 
 use crate::support::handouts::{handout_of, two_at_a_time};
-use crate::support::{all_problems, run};
+use crate::support::{all_problems, pdflatex_source, run};
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mbd-handouts-{}-{name}", std::process::id()));
@@ -37,24 +36,11 @@ fn every_handout_compiles_with_its_pictures() {
         if !source.contains("\\begin{tikzpicture}") {
             return vec![format!("{name}: no picture")];
         }
-        std::fs::write(dir.join(format!("{name}.tex")), &source).expect("writable");
-        let compiled = Command::new("pdflatex")
-            .args([
-                "-interaction=nonstopmode",
-                "-halt-on-error",
-                "-no-shell-escape",
-            ])
-            .arg(format!("{name}.tex"))
-            .current_dir(&dir)
-            .stdin(Stdio::null())
-            .output()
-            .expect("pdflatex runs");
-        if compiled.status.success() {
+        let typeset = pdflatex_source(&dir, &name, &source);
+        if typeset.compiled() {
             return Vec::new();
         }
-        let log = String::from_utf8_lossy(&compiled.stdout);
-        let error = log.lines().find(|l| l.starts_with('!')).unwrap_or("?");
-        vec![format!("{name}: {error}")]
+        vec![format!("{name}: {}", typeset.faults())]
     });
     assert!(
         failed.is_empty(),

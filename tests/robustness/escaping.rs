@@ -5,7 +5,7 @@
 use super::scratch;
 use serde_json::Value;
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 /// Text that would act if it reached TeX, a browser or Tera unescaped. `canary.tex` is a
 /// file in the working directory that announces itself in the log if TeX ever reads it.
@@ -110,24 +110,10 @@ fn latex_compiles_and_reads_no_file_the_text_names() {
         if !crate::support::pdflatex_present("the hostile LaTeX") {
             continue;
         }
-        let output = Command::new("pdflatex")
-            .args([
-                "-interaction=nonstopmode",
-                "-halt-on-error",
-                "-no-shell-escape",
-            ])
-            .arg(format!("{name}.tex"))
-            .current_dir(&dir)
-            .stdin(Stdio::null())
-            .output()
-            .expect("pdflatex runs");
-        let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
-        let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
-        assert!(
-            output.status.success() && errors.is_empty(),
-            "{name}: pdflatex failed: {errors:?}"
-        );
-        assert!(dir.join(format!("{name}.pdf")).is_file(), "{name}: no PDF");
+        let typeset = crate::support::pdflatex_afresh(&dir.join(format!("{name}.tex")));
+        assert!(typeset.compiled(), "{name}: {}", typeset.faults());
+        assert!(typeset.pages() > 0, "{name}: no PDF");
+        let log = typeset.log;
         // pdflatex logs every file it opens as "(path"; the canary logs itself if read.
         assert!(
             !log.contains("(/etc/passwd"),

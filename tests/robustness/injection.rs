@@ -5,7 +5,7 @@
 use super::scratch;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Output};
 
 fn run(args: &[&std::ffi::OsStr]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_mbd-tutor"))
@@ -149,22 +149,7 @@ fn latex_sets_scripts_units_and_long_names() {
     if !crate::support::pdflatex_present("units and scripts") {
         return;
     }
-    let output = Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-no-shell-escape",
-            "p.tex",
-        ])
-        .current_dir(&dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("pdflatex runs");
-    let log = std::fs::read_to_string(dir.join("p.log")).unwrap_or_default();
-    let errors: Vec<&str> = log.lines().filter(|l| l.starts_with('!')).collect();
-    assert!(
-        output.status.success() && errors.is_empty(),
-        "pdflatex: {errors:?}"
-    );
+    let typeset = crate::support::pdflatex(&dir.join("p.tex"));
+    assert!(typeset.compiled(), "{}", typeset.faults());
     let _ = std::fs::remove_dir_all(&dir);
 }

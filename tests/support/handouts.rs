@@ -1,23 +1,34 @@
 //! Handouts of the bundled problems, written by the built binary and read many at a time.
 
 use std::path::Path;
+use std::process::Output;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 /// `mbd-tutor explain PATH --method METHOD --format FORMAT`; `None` where the method is
 /// refused (other tests see to which are).
 pub fn handout_of(path: &Path, method: &str, format: &str) -> Option<String> {
-    let out = super::run(&[
+    let out = explained(path, method, format, false);
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+/// The run of `mbd-tutor explain PATH --method METHOD --format FORMAT`, with `--student`
+/// for the student's handout: one for the whole suite, whichever test asks first.
+pub fn explained(path: &Path, method: &str, format: &str, student: bool) -> Output {
+    let mut args = vec![
         "explain".as_ref(),
         path.as_os_str(),
         "--method".as_ref(),
         method.as_ref(),
         "--format".as_ref(),
         format.as_ref(),
-    ]);
-    out.status
-        .success()
-        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+    ];
+    if student {
+        args.push("--student".as_ref());
+    }
+    super::run(&args)
 }
 
 /// What `check` finds wrong in each of `jobs`, run two at a time (the machine's cores),

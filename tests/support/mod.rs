@@ -199,8 +199,11 @@ pub fn column(columns: &[String], name: &str) -> usize {
 }
 
 pub mod handouts;
+mod latex;
 pub mod mathml;
 pub mod runs;
+
+pub use latex::{pdflatex, pdflatex_afresh, pdflatex_present, pdflatex_source, Typeset};
 
 /// `mbd-tutor explain problems/NAME.json ARGS…`: its standard output, failing with its stderr.
 pub fn explain(name: &str, args: &[&str]) -> String {
@@ -255,26 +258,6 @@ pub fn without_motion_script(html: &str) -> String {
         "the motion's script does more than drive the motion"
     );
     format!("{}{}", &html[..start], &html[end..])
-}
-
-/// Whether pdflatex can be run here. Without it a LaTeX check is skipped with a notice
-/// naming `what` was not compiled, except in CI (`CI` set), where skipping would hide a
-/// failure.
-pub fn pdflatex_present(what: &str) -> bool {
-    let present = std::process::Command::new("pdflatex")
-        .arg("--version")
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .status()
-        .is_ok();
-    assert!(
-        present || std::env::var_os("CI").is_none(),
-        "pdflatex is missing, and CI must compile the LaTeX"
-    );
-    if !present {
-        eprintln!("notice: pdflatex not found; {what} was not compiled");
-    }
-    present
 }
 
 /// A seeded generator of numbers in [-1, 1), so that a failure names a state that can be
