@@ -2,6 +2,7 @@
 """Times `explain` against `solve` of the same problem by the same method.
 
     python3 tools/bench/explain_speed.py [BIN] [--runs N] [--all] [--variants] [--grade]
+    python3 tools/bench/explain_speed.py NEW --old OLD [--runs N]
 
 For the Whipple bicycle, the ten-link chain, all-joints-3d and the rolling coin, by Kane
 and the Motion Law: the fastest of N runs (default 3) of `explain` (Markdown, to a null
@@ -12,22 +13,54 @@ bundled handout (problems/*.json and problems/validation/*.json, every method, w
 and student, Lagrange's too) once, the slowest listed against the target of 0.5 s. With
 --variants, `variants --count 30` of the heavy symmetric top (a worked solution and a
 student handout each, LaTeX) against 30 explains of it, worked and student. With --grade,
-`grade --batch` of a class of 300 (tools/bench/grade_class.py).
+`grade --batch` of a class of 300 (tools/bench/grade_class.py). With --old OLD, the two
+binaries side by side instead: for each problem and method, each run of OLD followed by
+one of NEW, so that both see the same load; CPU seconds, fastest of N each.
 """
 import os
 import subprocess
 import sys
 
-from handout_timing import METHODS, PROBLEMS, ROOT, every_handout, fastest, heavy_top_variants
+from handout_timing import (METHODS, PROBLEMS, ROOT, every_handout, fastest, heavy_top_variants,
+                            timed)
+
+
+def side_by_side(old, new, runs):
+    """explain and solve of OLD and NEW in turn, fastest CPU seconds of `runs` each."""
+    print(f"old {old}, new {new}: CPU seconds (user + system), fastest of {runs} runs each, "
+          "the two binaries in turn; bound max(3 x solve, 0.3 s)")
+    print("| problem | method | solve, old / new | explain, old | explain, new | bound | "
+          "within, new |")
+    print("|---|---|---|---|---|---|---|")
+    for problem in PROBLEMS:
+        for method in METHODS:
+            cpu = {}
+            for command in ["solve", "explain"]:
+                times = {old: [], new: []}
+                for _ in range(runs):
+                    for binary in (old, new):
+                        times[binary].append(timed([binary, command, problem,
+                                                    "--method", method])[1])
+                cpu[command] = (min(times[old]), min(times[new]))
+            bound = max(3 * cpu["solve"][1], 0.3)
+            explain = cpu["explain"][1]
+            within = "yes" if explain <= bound else f"no ({explain / bound:.1f}x)"
+            name = os.path.basename(problem)[:-5]
+            print(f"| {name} | {method} | {cpu['solve'][0]:.3f} / {cpu['solve'][1]:.3f} | "
+                  f"{cpu['explain'][0]:.3f} | {explain:.3f} | {bound:.2f} | {within} |")
 
 
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    binary = os.path.abspath(args[0]) if args else os.path.join(ROOT, "target/release/mbd-tutor")
+    argv = sys.argv[1:]
     runs = 3
-    if "--runs" in sys.argv:
-        runs = int(sys.argv[sys.argv.index("--runs") + 1])
-        args = [a for a in args if a != str(runs)]
+    if "--runs" in argv:
+        runs = int(argv.pop(argv.index("--runs") + 1))
+    old = argv.pop(argv.index("--old") + 1) if "--old" in argv else None
+    args = [a for a in argv if not a.startswith("--")]
+    binary = os.path.abspath(args[0]) if args else os.path.join(ROOT, "target/release/mbd-tutor")
+    if old is not None:
+        side_by_side(os.path.abspath(old), binary, runs)
+        return
     print(f"explain against solve, fastest of {runs} runs, seconds (wall / cpu); "
           "target explain <= max(3 x solve, 0.3 s)")
     print("| problem | method | solve wall | solve cpu | explain wall | explain cpu | "

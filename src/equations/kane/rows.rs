@@ -2,10 +2,10 @@
 //! its rows, formed with the independent speeds where a constrained system's dependent
 //! speeds can be written, with the coordinates' rates otherwise.
 
-use super::super::constraint_rows::constraint_equations;
 use super::super::unknowns::{Inputs, MethodRows, Setup};
 use super::constrained;
 use crate::mechanics::{reaction_unknowns, DependentSpeeds, MechanicsError, Model};
+use crate::plan::Equation;
 use crate::symbolic::budget;
 
 /// Kane's view of the model: an auxiliary speed along a light rod brings in its tension
@@ -72,8 +72,14 @@ fn by_independent_speeds(
         unknowns: &unknowns,
     };
     let rows = constrained::equations(model, inputs.actions, inputs.inertia, &request);
-    let mut given = constraint_equations(model.constraints.rows.iter(), &unknowns)?;
-    given.extend(super::super::friction::stick_equations(model, &unknowns)?);
+    // The constraint rows and the stick rows at the acceleration level, as the set-up
+    // differentiated them: only their unknowns are Kane's fewer ones.
+    let given = (setup.given.iter())
+        .map(|row| Equation {
+            unknowns: crate::plan::unknowns_in(&row.expression, &unknowns),
+            ..row.clone()
+        })
+        .collect::<Vec<_>>();
     Ok(MethodRows {
         rows: rows.into_iter().chain(given).collect(),
         rejected: Vec::new(),
