@@ -227,13 +227,16 @@ fn part_lines(
     let model = &derivation.model;
     let symbol = latex_name(model.problem.body_name(part.body));
     let name = format!("\\tilde{{F}}^{{*}}_{{{r},{symbol}}}");
+    let letters = super::kane_theory::letters(derivation);
     let mut definition = format!(
-        "\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{r}}} \\cdot \\mathbf{{R}}^{{*}}_{{{symbol}}}",
-        centre_tex(model, part.body)
+        "\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{r}}} \\cdot {}^{{*}}_{{{symbol}}}",
+        centre_tex(model, part.body),
+        letters.force
     );
     if part.dots.len() > 1 {
         definition.push_str(&format!(
-            " + \\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{r}}} \\cdot \\mathbf{{T}}^{{*}}_{{{symbol}}}"
+            " + \\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{r}}} \\cdot {}^{{*}}_{{{symbol}}}",
+            letters.couple
         ));
     }
     let mut lines = vec![format!("{name} &= {definition}")];

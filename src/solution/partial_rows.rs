@@ -146,6 +146,7 @@ pub(super) fn site_partial<'r>(
 ) -> Option<PartialVelocity> {
     let problem = model.problem;
     let site = &model.sites[index];
+    let states = crate::mechanics::sample_states(model);
     let mut v = Vector::zero();
     for row in rows {
         let Ok((a, _)) = linear_split(&row.velocity, rates) else {
@@ -159,9 +160,24 @@ pub(super) fn site_partial<'r>(
             continue;
         };
         let weight = simplify(&add(a.iter().zip(weights).map(|(a, w)| a * w)));
+        // An auxiliary speed's motion gives way by a unit along its own direction and not
+        // along the others: the weight is 1 or 0 identically, however it is written (the
+        // four-bar's (cos/Δ)(a sin(q₁ − q₃) + d sin q₃) with Δ that very bracket).
+        let weight = [Expr::zero(), Expr::one()]
+            .into_iter()
+            .find(|unit| crate::mechanics::same_at(&weight, unit, &states))
+            .unwrap_or(weight);
         v = v.plus(&component.direction.scaled(&weight));
     }
-    let v_tex = super::tex::shortest_tex(model, &v.map(simplify), site.child);
+    // In the unit vectors of the child or of the parent, it moves relative to: the
+    // four-bar's pin R gives way along b̂_x of the coupler B.
+    let v = v.map(simplify);
+    let v_tex = [site.child, site.parent]
+        .into_iter()
+        .filter(|&b| b != crate::problem::BodyId::GROUND)
+        .map(|b| super::tex::shortest_tex(model, &v, b))
+        .min_by_key(|t| (t.len(), t.clone()))
+        .unwrap_or_else(|| super::tex::shortest_tex(model, &v, site.child));
     if v_tex == "\\mathbf{0}" {
         return None;
     }
