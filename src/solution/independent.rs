@@ -48,7 +48,11 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
         let weights = speeds.independent_weights(r, n);
         let speed = speed_tex(derivation, speeds, r);
         out.extend(super::partial_rows::body_rows(
-            derivation, &per_body, &weights, r, speed,
+            derivation,
+            &per_body,
+            &weights,
+            r,
+            (speed, None),
         ));
         out.extend(super::partial_rows::slip_partials(
             model, &rates, &weights, r,

@@ -110,27 +110,35 @@ fn parts(
     let problem = model.problem;
     let n = problem.coordinates.len();
     let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
-    let weights = if r <= speeds.independent.len() {
-        speeds.independent_weights(r - 1, n)
+    let (weights, rigid) = if r <= speeds.independent.len() {
+        (speeds.independent_weights(r - 1, n), None)
     } else {
-        // An auxiliary speed's: only its constraint gives way.
-        super::auxiliary_partials::weights(derivation, r)
-            .map_or_else(|| vec![Expr::zero(); n], |(w, _)| w)
+        // An auxiliary speed's: only its constraint gives way, or its joint of the tree
+        // with the loop kept closed.
+        match super::auxiliary_partials::motion(derivation, r) {
+            Some(motion) => (motion.weights, motion.rigid),
+            None => (vec![Expr::zero(); n], None),
+        }
     };
-    let combined = |list: &[Vector]| -> Vector {
+    let combined = |list: &[Vector], own: Vector| -> Vector {
         Vector::sum(
             list.iter()
                 .zip(&weights)
                 .filter(|(_, w)| !w.is_zero())
                 .map(|(v, w)| v.scaled(w)),
         )
+        .plus(&own)
         .map(|e| shown(&simplify(e)))
     };
     let inertia = derivation.inertia();
     let mut out = Vec::new();
     for &body in &model.order {
         let state = &model.bodies[body.0];
-        let v = combined(&partials(&state.center.velocity, &rates));
+        let own = rigid
+            .as_ref()
+            .map(|m| (m.centre(model, body), m.omega(body)));
+        let (own_v, own_w) = own.unwrap_or((Vector::zero(), Vector::zero()));
+        let v = combined(&partials(&state.center.velocity, &rates), own_v);
         let frames = candidate_frames(model, body);
         let mut dots = vec![DotProduct::shortest(
             &v,
@@ -139,7 +147,7 @@ fn parts(
             model,
         )];
         if !is_particle(model, body) {
-            let w = combined(&partials(&state.omega, &rates));
+            let w = combined(&partials(&state.omega, &rates), own_w);
             dots.push(DotProduct::shortest(
                 &w,
                 &inertia.torque[body.0],
@@ -293,7 +301,7 @@ pub fn inertia_dot_products(
     let auxiliary = r > speeds.independent.len();
     if model.order.len() > MOST_BODIES
         || r == 0
-        || (auxiliary && super::auxiliary_partials::weights(derivation, r).is_none())
+        || (auxiliary && super::auxiliary_partials::motion(derivation, r).is_none())
     {
         return None;
     }

@@ -15,13 +15,14 @@ pub(super) type BodyPartials = (crate::problem::BodyId, Vec<Vector>, Vec<Vector>
 
 /// Each body's partial velocity and partial angular velocity (index into `per_body`'s
 /// lists by coordinate) combined by `weights`, for speed `r` (0-based), one line per body
-/// that moves with it, `speed` on the first.
+/// that moves with it, `speed` on the first; a tree joint's auxiliary speed adds the
+/// `rigid` motion of its subtree.
 pub(super) fn body_rows(
     derivation: &Derivation,
     per_body: &[BodyPartials],
     weights: &[Expr],
     r: usize,
-    speed: String,
+    (speed, rigid): (String, Option<&super::auxiliary_partials::Rigid>),
 ) -> Vec<PartialVelocity> {
     let model = &derivation.model;
     // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
@@ -38,8 +39,13 @@ pub(super) fn body_rows(
     let mut out = Vec::new();
     let mut first = true;
     for (body, v, w) in per_body {
-        let v_tex = super::tex::shortest_tex(model, &combined(v), *body);
-        let w_tex = super::tex::shortest_tex(model, &combined(w), *body);
+        // A tree joint's auxiliary speed slides (or turns) its subtree as well.
+        let (own_v, own_w) = match rigid {
+            Some(rigid) => (rigid.centre(model, *body), rigid.omega(*body)),
+            None => (Vector::zero(), Vector::zero()),
+        };
+        let v_tex = super::tex::shortest_tex(model, &combined(v).plus(&own_v), *body);
+        let w_tex = super::tex::shortest_tex(model, &combined(w).plus(&own_w), *body);
         let line = Line {
             body: *body,
             r: r + 1,
