@@ -122,7 +122,7 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
 /// first such row; a later one on the same bodies in short.
 pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String> {
     if row.free_body == derivation.model.order {
-        return None;
+        return tree_note(derivation, row, r);
     }
     let names = moved_names(derivation, &row.free_body);
     let moves = if row.free_body.len() == 1 {
@@ -160,6 +160,40 @@ pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<S
                 force = pair.force,
             )
         }
+    })
+}
+
+/// How a tree joint's auxiliary speed moves the bodies where constraints close the tree:
+/// the joint gives way along its force (or turns about its moment) with the bodies outboard
+/// of it, and the dependent rates keep the constraints, so that of the constraint forces
+/// only the joint's does work with it. Said in full at the joint's first row.
+fn tree_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String> {
+    let model = &derivation.model;
+    super::auxiliary_partials::motion(derivation, r)?.rigid?;
+    let (site, component) = super::relaxed::relaxed_reaction(derivation, row)?;
+    let j = (model.problem.joints.iter()).position(|joint| joint.name.as_str() == site)?;
+    let unknown = crate::symbolic::latex(&crate::symbolic::Expr::sym(component.unknown(site)));
+    let d = vector_tex(model, &component.direction);
+    let point = latex_name(site);
+    let rows = derivation.rows.iter();
+    let generalized = rows.filter(|x| matches!(x.sum, crate::plan::Sum::Generalized { .. }));
+    let first = (generalized.enumerate())
+        .find(|(_, x)| {
+            super::relaxed::relaxed_reaction(derivation, x).is_some_and(|(s, _)| s == site)
+        })
+        .map(|(k, _)| k + 1)?;
+    let only = format!("of the constraint forces only ${unknown}$ does work with it");
+    if first < r {
+        return Some(format!("As in row {first}, along ${d}$: {only}."));
+    }
+    let names = moved_names(derivation, &model.subtree(j));
+    Some(match component.kind {
+        ComponentKind::Force => format!(
+            "${point}$ slides with $u_{{{r}}}$ along ${d}$, {names} with it, and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {only}."
+        ),
+        ComponentKind::Moment => format!(
+            "{names} turn with $u_{{{r}}}$ about ${d}$ at ${point}$, and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {only}."
+        ),
     })
 }
 

@@ -257,13 +257,25 @@ fn part_lines(
             .iter()
             .flat_map(|d| &d.pairs)
             .all(|(a, _)| a.is_one());
-    if one || products.iter().any(|l| symbols(l) > WIDEST_LINE) {
+    // An auxiliary speed's long products are the table's partial velocities times step
+    // 4's accelerations: its terms alone keep the row short.
+    let auxiliary = derivation
+        .dependent_speeds
+        .as_ref()
+        .is_some_and(|s| r > s.independent.len());
+    let many = products.iter().map(|l| l.len()).sum::<usize>() > LONGEST_AUXILIARY_PRODUCTS;
+    if one || (auxiliary && many) || products.iter().any(|l| symbols(l) > WIDEST_LINE) {
         products.clear();
     }
     lines.extend(products);
     let formed = latex_collected(&part.formed);
     let term = latex_collected(&part.term);
-    if formed.len() > LONGEST_TERM || term.len() > LONGEST_TERM {
+    let longest = if auxiliary {
+        LONGEST_AUXILIARY_TERM
+    } else {
+        LONGEST_TERM
+    };
+    if formed.len() > longest || term.len() > longest {
         return None;
     }
     lines.push(super::aligned::line("", "=", &formed));
@@ -351,8 +363,17 @@ pub fn inertia_dot_products(
     (!auxiliary || block.len() <= LONGEST_AUXILIARY).then_some(block)
 }
 
-/// The most characters of LaTeX an auxiliary speed's `F̃*_r` written body by body may take.
-const LONGEST_AUXILIARY: usize = 700;
+/// The most characters of LaTeX an auxiliary speed's `F̃*_r` written body by body may take:
+/// the four-bar's rows of the pins O and R, three bodies' terms each.
+const LONGEST_AUXILIARY: usize = 2400;
+
+/// The most characters of LaTeX an auxiliary speed's products of one body may take: longer,
+/// they are the table's partial velocities times step 4's accelerations, and the term alone
+/// is written.
+const LONGEST_AUXILIARY_PRODUCTS: usize = 300;
+
+/// The most characters of LaTeX one body's term of an auxiliary speed's `F̃*_r` may take.
+const LONGEST_AUXILIARY_TERM: usize = 900;
 
 /// Where the row keeps the dependent accelerations (replaced, they would make it too long
 /// to read), the words that say where they are found, on the first row that has them.
