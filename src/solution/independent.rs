@@ -168,25 +168,13 @@ pub fn dependent_speeds(
         true => None,
         false => super::kane_delta::on_the_loop(&derivation.model, speeds),
     };
-    let partials = match &link {
-        Some(link) => format!(
-            "These are the rates of step 1: on the loop $\\Delta = {}$, since the loop dotted with ${}$ is zero. {partials}",
-            link.equal_tex, link.along_tex
-        ),
-        None => partials,
-    };
+    let partials = linked(partials, link.as_ref());
     paragraphs.push(if speeds.at_each_state {
         format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
     } else {
         format!("{partials}:")
     });
-    // The rows are numbered as the speeds are, r = 1 for u₁ (the headings' numbers).
-    let numbers = match speeds.independent.len() {
-        1 => "1".to_string(),
-        2 => "1, 2".to_string(),
-        k => format!("1, \\ldots, {k}"),
-    };
-    let kane_tex = format!("\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0 \\; (r = {numbers})");
+    let kane_tex = kane_equations_tex(speeds.independent.len());
     let delta = relation_tex.contains("\\Delta");
     // The matrices of the dependent rates by names the problem does not use.
     let names = crate::problem::MatrixNames::of(problem);
@@ -205,6 +193,31 @@ pub fn dependent_speeds(
         kane_kept_note: MarkupLine::from(String::new()),
         time_terms: problem.moves_with_time(),
         start_tex: Vec::new(),
+    }
+}
+
+/// Kane's equations of `count` independent speeds, numbered as the speeds and the rows'
+/// headings are: `r = 1` for `u₁`, never by the rates.
+fn kane_equations_tex(count: usize) -> String {
+    let numbers = match count {
+        1..=3 => (1..=count)
+            .map(|r| r.to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
+        k => format!("1, \\ldots, {k}"),
+    };
+    format!("\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0 \\; (r = {numbers})")
+}
+
+/// `partials` after the words that step 1's rates are these, where `link` says how their
+/// denominators agree on the loop.
+fn linked(partials: String, link: Option<&super::kane_delta::OnTheLoop>) -> String {
+    match link {
+        Some(link) => format!(
+            "These are the rates of step 1: on the loop $\\Delta = {}$, since the loop dotted with ${}$ is zero. {partials}",
+            link.equal_tex, link.along_tex
+        ),
+        None => partials,
     }
 }
 
