@@ -126,9 +126,9 @@ fn the_four_bars_inertia_force_is_shown_body_by_body() {
     assert!(text.contains(
         "\\tilde{F}^{*}_{1} &= \\tilde{F}^{*}_{1,A} + \\tilde{F}^{*}_{1,B} + \\tilde{F}^{*}_{1,C}"
     ));
-    // Each body's dot products multiplied out, then its term.
+    // Each body's dot products multiplied out, then its term (f: the four-bar's pin is R).
     assert!(text.contains(
-        "\\tilde{F}^{*}_{1,A} &= \\tilde{\\mathbf{v}}^{A^*}_{1} \\cdot \\mathbf{R}^{*}_{A}"
+        "\\tilde{F}^{*}_{1,A} &= \\tilde{\\mathbf{v}}^{A^*}_{1} \\cdot \\mathbf{f}^{*}_{A}"
     ));
     assert!(text.contains("&= -\\frac{a^{2} m}{3} \\ddot{q}_{1} \\\\ \\tilde{F}^{*}_{1,B}"));
     assert!(text.contains(
