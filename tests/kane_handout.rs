@@ -96,7 +96,7 @@ fn the_double_pendulums_partial_velocities_and_generalized_forces_are_shown_apar
     }
     // F_2* body by body: B alone moves with u_2, its dot products multiplied out along b̂
     // (v_2^{B*} = (L2/2) b_x, ω_2^B = b_z), then the term found by hand above.
-    let inertia_2 = "\\begin{aligned} F^{*}_{2} &= F^{*}_{2,B} \\\\ F^{*}_{2,B} &= \\mathbf{v}^{B^*}_{2} \\cdot \\mathbf{R}^{*}_{B} + \\boldsymbol{\\omega}^{B}_{2} \\cdot \\mathbf{T}^{*}_{B} \\\\ &= \\frac{L_{2}}{2}\\, \\left(";
+    let inertia_2 = "\\begin{aligned} F^{*}_{2} &= F^{*}_{2,B} \\\\ F^{*}_{2,B} &= \\mathbf{v}^{B^*}_{2} \\cdot \\mathbf{R}^{*}_{B} + \\boldsymbol{\\omega}^{B}_{2} \\cdot \\mathbf{M}^{*}_{B} \\\\ &= \\frac{L_{2}}{2}\\, \\left(";
     assert!(step5.contains(inertia_2), "F_2* written out\n{step5}");
     let by_hand = "&= -\\frac{L_{2} m_{2}}{6} (2 L_{2} + 3 L_{1} c_{2}) \\ddot{q}_{1} - \\frac{L_{2}^{2} m_{2}}{3} \\ddot{q}_{2} - \\frac{L_{1} L_{2} m_{2} s_{2}}{2} \\dot{q}_{1}^{2} \\end{aligned}";
     assert!(step5.contains(by_hand), "F_2* as by hand\n{step5}");
@@ -426,12 +426,12 @@ fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown()
         "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{D^*}}_{{4}} = {n_y}"
     )));
     assert!(u4[0].contains("{}^{N}\\tilde{\\boldsymbol{\\omega}}^{D}_{4} = \\mathbf{0}"));
-    // So F̃3 = n_x · F^U = F^U_x and F̃3* = ω̃3 · T*_D = (1/R)(−(m R²/2) θ̈) = −(R m/2) θ̈,
+    // So F̃3 = n_x · F^U = F^U_x and F̃3* = ω̃3 · τ*_D = (1/R)(−(m R²/2) θ̈) = −(R m/2) θ̈,
     // formed body by body as the independent speeds' are.
     let row3 = section(step5, "**3.", "**4.");
     assert!(row3.contains("\\tilde{F}_{3} = F^{U}_{x}"), "{row3}");
     assert!(row3.contains(
-        "\\tilde{\\mathbf{v}}^{D^*}_{3} \\cdot \\mathbf{R}^{*}_{D} + \\tilde{\\boldsymbol{\\omega}}^{D}_{3} \\cdot \\mathbf{T}^{*}_{D}"
+        "\\tilde{\\mathbf{v}}^{D^*}_{3} \\cdot \\mathbf{f}^{*}_{D} + \\tilde{\\boldsymbol{\\omega}}^{D}_{3} \\cdot \\boldsymbol{\\tau}^{*}_{D}"
     ));
     assert!(
         row3.contains("&= -\\frac{R m}{2} \\ddot{\\theta}"),
@@ -445,16 +445,24 @@ fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown()
 
 #[test]
 fn kanes_formula_names_its_point_by_a_letter_the_problem_does_not_use() {
-    // The double pendulum's pin is P, the rolling coin's contact point is printed P.
-    for name in ["double-pendulum-rods.json", "rolling-coin.json"] {
+    // The double pendulum's pin is P, the rolling coin's contact point is printed P; the
+    // coin's radius is R, so its force letter is f (see kane_four_bar.rs).
+    for (name, force) in [
+        ("double-pendulum-rods.json", "R"),
+        ("rolling-coin.json", "f"),
+    ] {
         let text = markdown(name);
         assert!(
-            text.contains("with $\\mathbf{R}_Q$ a force applied at the point $Q$"),
+            text.contains(&format!(
+                "with $\\mathbf{{{force}}}_Q$ a force applied at the point $Q$"
+            )),
             "{name}"
         );
         assert!(!text.contains("applied at the point $P$"), "{name}");
         assert!(
-            text.contains("\\mathbf{v}^{Q}_r \\cdot \\mathbf{R}_{Q}"),
+            text.contains(&format!(
+                "\\mathbf{{v}}^{{Q}}_r \\cdot \\mathbf{{{force}}}_{{Q}}"
+            )),
             "{name}"
         );
     }

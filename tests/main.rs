@@ -32,6 +32,7 @@ mod impact;
 mod in_numbers;
 mod initial_state;
 mod invalid;
+mod kane_four_bar;
 mod kane_handout;
 mod kane_speeds;
 mod kinematics;

@@ -85,7 +85,7 @@ fn kane_states_its_theory_once_with_only_what_applies() {
     // Rigid rods: the inertia torque is defined, once, with a body letter that is not one
     // of the rods' (A and B): D.
     let rods = kane("double-pendulum-rods");
-    let torque = "\\mathbf{T}^{*}_{D} = -\\boldsymbol{\\alpha}^{D}";
+    let torque = "\\mathbf{M}^{*}_{D} = -\\boldsymbol{\\alpha}^{D}";
     assert_eq!(count(&rods, torque), 1);
     assert_eq!(count(&rods, "\\sum_{B}"), 0);
     assert_eq!(
@@ -97,7 +97,7 @@ fn kane_states_its_theory_once_with_only_what_applies() {
     );
     // A bob on a light rod is a particle: no inertia torque, no couple on a body.
     let bob = kane("simple-pendulum");
-    assert_eq!(count(&bob, "\\mathbf{T}^{*}_{"), 0);
+    assert_eq!(count(&bob, "\\mathbf{M}^{*}_{"), 0);
     assert_eq!(count(&bob, "a couple on body"), 0);
     // The plan speaks of auxiliary speeds only where a reaction is asked for.
     for name in [
@@ -126,9 +126,9 @@ fn the_four_bars_inertia_force_is_shown_body_by_body() {
     assert!(text.contains(
         "\\tilde{F}^{*}_{1} &= \\tilde{F}^{*}_{1,A} + \\tilde{F}^{*}_{1,B} + \\tilde{F}^{*}_{1,C}"
     ));
-    // Each body's dot products multiplied out, then its term.
+    // Each body's dot products multiplied out, then its term (f: the four-bar's pin is R).
     assert!(text.contains(
-        "\\tilde{F}^{*}_{1,A} &= \\tilde{\\mathbf{v}}^{A^*}_{1} \\cdot \\mathbf{R}^{*}_{A}"
+        "\\tilde{F}^{*}_{1,A} &= \\tilde{\\mathbf{v}}^{A^*}_{1} \\cdot \\mathbf{f}^{*}_{A}"
     ));
     assert!(text.contains("&= -\\frac{a^{2} m}{3} \\ddot{q}_{1} \\\\ \\tilde{F}^{*}_{1,B}"));
     assert!(text.contains(

@@ -115,13 +115,16 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
 }
 
 /// Which bodies Kane's row `r` (an auxiliary speed of a constraint force, `row`) moves,
-/// where that is not every body: its free body in step 2 shows the forces that can do work
-/// with it. Said in full at the first such row; a later one on the same bodies in short.
+/// where that is not every body, and which free body of step 2 shows the force that does
+/// work with it: the moved bodies' own where the force acts on them from outside (the disc
+/// on a cart, lifted off it), else the one that draws it on the body it acts on (the
+/// four-bar's pin at R, inside the moved B + C, drawn on free body C). Said in full at the
+/// first such row; a later one on the same bodies in short.
 pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String> {
     if row.free_body == derivation.model.order {
-        return None;
+        return tree_note(derivation, row, r);
     }
-    let bodies = bodies_tex(derivation, &row.free_body);
+    let names = moved_names(derivation, &row.free_body);
     let moves = if row.free_body.len() == 1 {
         "moves"
     } else {
@@ -133,10 +136,122 @@ pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<S
     let first = (generalized.enumerate().skip(speeds))
         .find(|(_, x)| x.free_body == row.free_body)
         .map(|(k, _)| k + 1)?;
-    Some(if first < r {
-        format!("Again only ${bodies}$ {moves}.")
-    } else {
-        format!("Only ${bodies}$ {moves} with $u_{{{r}}}$: free body ${bodies}$ of step 2 shows the forces that can do work with it.")
+    let inside = relaxed_inside(derivation, row);
+    Some(match (first < r, inside) {
+        (true, None) => format!("Again only {names} {moves}."),
+        (true, Some(pair)) => format!(
+            "Again only {names} {moves}, and of the constraint forces only the pair at ${}$ does work with $u_{{{r}}}$, as in row {first}.",
+            pair.point
+        ),
+        (false, None) => {
+            let bodies = bodies_tex(derivation, &row.free_body);
+            format!("Only {names} {moves} with $u_{{{r}}}$: free body ${bodies}$ of step 2 shows the forces that can do work with it.")
+        }
+        (false, Some(pair)) => {
+            let drawn = match &pair.drawn_on {
+                Some(set) => format!(", drawn on free body ${set}$ of step 2,"),
+                None => String::new(),
+            };
+            format!(
+                "Only {names} {moves} with $u_{{{r}}}$, and ${on}$ parts from ${by}$ at ${point}$ (the table's last line for $u_{{{r}}}$): of the constraint forces only the pair at ${point}$ does work with it, ${force}$ on ${on}${drawn} and its opposite on ${by}$.",
+                on = pair.on,
+                by = pair.by,
+                point = pair.point,
+                force = pair.force,
+            )
+        }
+    })
+}
+
+/// How a tree joint's auxiliary speed moves the bodies where constraints close the tree:
+/// the joint gives way along its force (or turns about its moment) with the bodies outboard
+/// of it, and the dependent rates keep the constraints, so that of the constraint forces
+/// only the joint's does work with it. Said in full at the joint's first row.
+fn tree_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String> {
+    let model = &derivation.model;
+    super::auxiliary_partials::motion(derivation, r)?.rigid?;
+    let (site, component) = super::relaxed::relaxed_reaction(derivation, row)?;
+    let j = (model.problem.joints.iter()).position(|joint| joint.name.as_str() == site)?;
+    let unknown = crate::symbolic::latex(&crate::symbolic::Expr::sym(component.unknown(site)));
+    let d = vector_tex(model, &component.direction);
+    let point = latex_name(site);
+    let rows = derivation.rows.iter();
+    let generalized = rows.filter(|x| matches!(x.sum, crate::plan::Sum::Generalized { .. }));
+    let first = (generalized.enumerate())
+        .find(|(_, x)| {
+            super::relaxed::relaxed_reaction(derivation, x).is_some_and(|(s, _)| s == site)
+        })
+        .map(|(k, _)| k + 1)?;
+    let only = format!("of the constraint forces only ${unknown}$ does work with it");
+    if first < r {
+        return Some(format!("As in row {first}, along ${d}$: {only}."));
+    }
+    let names = moved_names(derivation, &model.subtree(j));
+    Some(match component.kind {
+        ComponentKind::Force => format!(
+            "${point}$ slides with $u_{{{r}}}$ along ${d}$, {names} with it, and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {only}."
+        ),
+        ComponentKind::Moment => format!(
+            "{names} turn with $u_{{{r}}}$ about ${d}$ at ${point}$, and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {only}."
+        ),
+    })
+}
+
+/// `$B$ and $C$`: the moved bodies by name, in the markup.
+fn moved_names(derivation: &Derivation, bodies: &[BodyId]) -> String {
+    let problem = derivation.model.problem;
+    let names: Vec<String> = (bodies.iter())
+        .map(|&b| format!("${}$", latex_name(problem.body_name(b))))
+        .collect();
+    match names.as_slice() {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
+/// The relaxed constraint's force of an auxiliary row where both bodies it joins move with
+/// the speed, so that it is inside the moved bodies: its point, the bodies, its vector's
+/// name, and the smallest free body of step 2 that draws it on the body it acts on.
+struct InsidePair {
+    point: String,
+    on: String,
+    by: String,
+    force: String,
+    drawn_on: Option<String>,
+}
+
+/// The relaxed constraint's force of `row` where it acts between two moved bodies; `None`
+/// where it acts on them from outside (or the row relaxes no site).
+fn relaxed_inside(derivation: &Derivation, row: &Equation) -> Option<InsidePair> {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let site = row.unknowns.iter().find_map(|u| match u {
+        Symbol::Unknown(Unknown::Reaction { site, .. }) => Some(site),
+        _ => None,
+    })?;
+    let index = model
+        .sites
+        .iter()
+        .position(|s| s.name.as_str() == &**site)?;
+    let on = super::sense_words::carried_body(problem, index)?;
+    let s = &model.sites[index];
+    let by = if s.child == on { s.parent } else { s.child };
+    if !row.free_body.contains(&on) || !row.free_body.contains(&by) {
+        return None;
+    }
+    let drawn_on = (super::pictures::free_body_sets(derivation).into_iter())
+        .filter(|set| set.contains(&on) && !set.contains(&by))
+        .min_by_key(Vec::len)
+        .map(|set| bodies_tex(derivation, &set));
+    let name = |b: BodyId| latex_name(problem.body_name(b));
+    let point = latex_name(site);
+    Some(InsidePair {
+        force: format!("\\mathbf{{F}}^{{{point}}}"),
+        point,
+        on: name(on),
+        by: name(by),
+        drawn_on,
     })
 }
 

@@ -7,11 +7,12 @@
 
 use super::partial_rows::{body_rows, site_partial, BodyPartials};
 use crate::equations::Derivation;
-use crate::mechanics::{DependentSpeeds, RowOrigin};
+use crate::mechanics::{DependentSpeeds, Model, RowOrigin, Vector};
 use crate::plan::Sum;
+use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
 use crate::render::text::Math;
-use crate::symbolic::{latex, Expr, Symbol};
+use crate::symbolic::{latex, simplify, ComponentKind, Expr, Symbol};
 
 /// What Kane's row `r` (1-based) of an auxiliary speed moves: the weights on the
 /// coordinates' rates of the motion that breaks its constraint by a unit, and the
@@ -50,11 +51,31 @@ pub fn table_rows(
     let mut out = Vec::new();
     for r in (speeds.independent.len() + 1)..=rows {
         let Some((weights, k)) = weights(derivation, r) else {
+            // A tree joint's: its subtree slid along the force, the loop kept closed.
+            let Some(motion) = motion(derivation, r) else {
+                continue;
+            };
+            let row = (derivation.rows.iter())
+                .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
+                .nth(r - 1);
+            let forces: Vec<String> = (row.iter().flat_map(|row| row.unknowns.iter()))
+                .filter(|u| matches!(u, Symbol::Unknown(_)))
+                .map(|u| latex(&Expr::sym(u.clone())))
+                .collect();
+            let speed = format!("u_{{{r}}} \\to {}", forces.join(", "));
+            let rigid = motion.rigid.as_ref();
+            out.extend(body_rows(
+                derivation,
+                per_body,
+                &motion.weights,
+                r - 1,
+                (speed, rigid),
+            ));
             continue;
         };
         let force = latex(&Expr::sym(model.constraints.rows[k].unknown.clone()));
         let speed = format!("u_{{{r}}} \\to {force}");
-        let mut lines = body_rows(derivation, per_body, &weights, r - 1, speed.clone());
+        let mut lines = body_rows(derivation, per_body, &weights, r - 1, (speed.clone(), None));
         if let RowOrigin::Site { site, .. } = model.constraints.rows[k].origin {
             let of_site = (model.constraints.rows.iter())
                 .filter(|c| matches!(c.origin, RowOrigin::Site { site: s, .. } if s == site));
@@ -97,5 +118,170 @@ pub fn any(derivation: &Derivation) -> bool {
     let rows = (derivation.rows.iter())
         .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
         .count();
-    (1..=rows).any(|r| weights(derivation, r).is_some())
+    (1..=rows).any(|r| motion(derivation, r).is_some())
+}
+
+/// The motion of an auxiliary speed: the weights on the coordinates' rates and, for a
+/// joint of the tree, the subtree's rigid motion along (or about) the reaction's direction
+/// (the four-bar's pin O slid along n̂_x, A and B with it), the dependent rates restoring
+/// the constraints it would break.
+pub struct Motion {
+    /// The weights on the coordinates' rates.
+    pub weights: Vec<Expr>,
+    /// The subtree's rigid motion, for a joint of the tree.
+    pub rigid: Option<Rigid>,
+}
+
+/// A subtree slid along, or turned about, `direction` by a unit.
+pub struct Rigid {
+    bodies: Vec<BodyId>,
+    direction: Vector,
+    turning: bool,
+    pivot: Vector,
+}
+
+impl Rigid {
+    /// The velocity it gives the point of `body` at `position`.
+    pub fn velocity_at(&self, model: &Model, body: BodyId, position: &Vector) -> Vector {
+        if !self.bodies.contains(&body) {
+            Vector::zero()
+        } else if self.turning {
+            (self.direction).cross(&position.minus(&self.pivot), &model.frames)
+        } else {
+            self.direction.clone()
+        }
+    }
+
+    /// The velocity it gives `body`'s mass centre.
+    pub fn centre(&self, model: &Model, body: BodyId) -> Vector {
+        self.velocity_at(model, body, &model.bodies[body.0].center.position)
+    }
+
+    /// The angular velocity it gives `body`.
+    pub fn omega(&self, body: BodyId) -> Vector {
+        match self.turning && self.bodies.contains(&body) {
+            true => self.direction.clone(),
+            false => Vector::zero(),
+        }
+    }
+}
+
+/// The motion of Kane's auxiliary row `r` (1-based): a constraint's (see [`weights`]) or
+/// a tree joint's; `None` for any other row, or where the constraints are not all at
+/// sites whose velocity conditions the restoring rates can be checked against.
+pub fn motion(derivation: &Derivation, r: usize) -> Option<Motion> {
+    if let Some((weights, _)) = weights(derivation, r) {
+        return Some(Motion {
+            weights,
+            rigid: None,
+        });
+    }
+    let speeds = derivation
+        .dependent_speeds
+        .as_ref()
+        .filter(|s| !s.at_each_state)?;
+    if r <= speeds.independent.len() {
+        return None;
+    }
+    let model = &derivation.model;
+    let problem = model.problem;
+    let row = (derivation.rows.iter())
+        .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
+        .nth(r - 1)?;
+    let (site, component) = super::relaxed::relaxed_reaction(derivation, row)?;
+    let j = (problem.joints.iter()).position(|joint| joint.name.as_str() == site)?;
+    let rigid = Rigid {
+        bodies: model.subtree(j),
+        direction: component.direction.clone(),
+        turning: component.kind == ComponentKind::Moment,
+        pivot: model.sites[j].point.position.clone(),
+    };
+    let n = problem.coordinates.len();
+    let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    // What the rigid motion breaks each kept constraint by, the child's point relative to
+    // the parent's along the constraint's direction.
+    let mut broken = Vec::new();
+    for &k in &speeds.rows {
+        let constraint = &model.constraints.rows[k];
+        let RowOrigin::Site { site, .. } = constraint.origin else {
+            return None;
+        };
+        let s = &model.sites[site];
+        let along = (s.reactions.iter()).find(|c| c.unknown(&s.name) == constraint.unknown)?;
+        let on_parent = model.point_on(s.parent, &s.parent_offset);
+        let gap = rigid
+            .velocity_at(model, s.child, &s.point.position)
+            .minus(&rigid.velocity_at(model, s.parent, &on_parent.position));
+        broken.push(simplify(&along.direction.dot(&gap, &model.frames)));
+    }
+    // The rates that restore them, checked against the row as the equations formed it:
+    // its generalized inertia force is what this motion's partial velocities give.
+    let restored = |sign: &Expr| -> Vec<Expr> {
+        let mut weights = vec![Expr::zero(); n];
+        for (k, by) in broken.iter().enumerate() {
+            if by.is_zero() {
+                continue;
+            }
+            let restoring = speeds.violation_weights(k, n);
+            for (w, v) in weights.iter_mut().zip(&restoring) {
+                *w = simplify(&(&*w - &(&(by * sign) * v)));
+            }
+        }
+        weights
+    };
+    let weights = [Expr::one(), Expr::int(-1)]
+        .iter()
+        .map(restored)
+        .find(|weights| forms_the_row(derivation, row, &rigid, weights, &rates))?;
+    Some(Motion {
+        weights,
+        rigid: Some(rigid),
+    })
+}
+
+/// Whether the motion (`rigid` and `weights` on `rates`) gives `row`'s generalized inertia
+/// force, at a sample state with every second derivative given a value.
+fn forms_the_row(
+    derivation: &Derivation,
+    row: &crate::plan::Equation,
+    rigid: &Rigid,
+    weights: &[Expr],
+    rates: &[Symbol],
+) -> bool {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let inertia = derivation.inertia();
+    let mut terms = Vec::new();
+    for &body in &model.order {
+        let state = &model.bodies[body.0];
+        let combined = |list: Vec<Vector>, own: Vector| {
+            Vector::sum(
+                list.iter()
+                    .zip(weights)
+                    .filter(|(_, w)| !w.is_zero())
+                    .map(|(v, w)| v.scaled(w)),
+            )
+            .plus(&own)
+        };
+        let v = combined(
+            crate::equations::partials(&state.center.velocity, rates),
+            rigid.centre(model, body),
+        );
+        let w = combined(
+            crate::equations::partials(&state.omega, rates),
+            rigid.omega(body),
+        );
+        terms.push(inertia.force[body.0].dot(&v, &model.frames));
+        terms.push(inertia.torque[body.0].dot(&w, &model.frames));
+    }
+    let mut values = (crate::mechanics::sample_states(model).into_iter())
+        .next()
+        .unwrap_or_default();
+    for i in 0..problem.coordinates.len() {
+        values.set(problem.coordinate_symbol(i, 2), 0.37 + 0.61 * i as f64);
+    }
+    let eval = |e: &Expr| crate::symbolic::eval(e, &values);
+    let formed = eval(&row.groups.inertia_force) + eval(&row.groups.inertia_torque);
+    let here: f64 = terms.iter().map(eval).sum();
+    formed.is_finite() && (formed - here).abs() <= 1e-9 * (1.0 + formed.abs())
 }

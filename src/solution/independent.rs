@@ -48,7 +48,11 @@ pub fn partial_velocities(derivation: &Derivation, speeds: &Speeds) -> Vec<Parti
         let weights = speeds.independent_weights(r, n);
         let speed = speed_tex(derivation, speeds, r);
         out.extend(super::partial_rows::body_rows(
-            derivation, &per_body, &weights, r, speed,
+            derivation,
+            &per_body,
+            &weights,
+            r,
+            (speed, None),
         ));
         out.extend(super::partial_rows::slip_partials(
             model, &rates, &weights, r,
@@ -100,7 +104,6 @@ pub fn dependent_speeds(
             .collect::<Vec<_>>()
             .join(" \\\\ ")
     );
-    let independent = rates(&speeds.independent);
     // What holds on the motion and not identically, which C and the rows use.
     let relations: Vec<String> = (derivation.model.constraints.relations.iter())
         .map(|(_, relation)| format!("${}$", relation.latex()))
@@ -160,15 +163,18 @@ pub fn dependent_speeds(
     } else {
         partials.to_string()
     };
+    // Step 1 found the same rates over another denominator: the two linked on the loop.
+    let link = match speeds.at_each_state {
+        true => None,
+        false => super::kane_delta::on_the_loop(&derivation.model, speeds),
+    };
+    let partials = linked(partials, link.as_ref());
     paragraphs.push(if speeds.at_each_state {
         format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
     } else {
         format!("{partials}:")
     });
-    let kane_tex = format!(
-        "\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0 \\; (r = {})",
-        independent.join(", ")
-    );
+    let kane_tex = kane_equations_tex(speeds.independent.len());
     let delta = relation_tex.contains("\\Delta");
     // The matrices of the dependent rates by names the problem does not use.
     let names = crate::problem::MatrixNames::of(problem);
@@ -183,15 +189,45 @@ pub fn dependent_speeds(
         kane_tex: Math::from(kane_tex),
         reduced_tex: Vec::new(),
         kane_speeds_notes: MarkupLine::all(paragraphs),
-        kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds, delta)),
+        kane_solve_notes: MarkupLine::all(after_rows(derivation, speeds, delta, link.as_ref())),
         kane_kept_note: MarkupLine::from(String::new()),
         time_terms: problem.moves_with_time(),
         start_tex: Vec::new(),
     }
 }
 
+/// Kane's equations of `count` independent speeds, numbered as the speeds and the rows'
+/// headings are: `r = 1` for `u₁`, never by the rates.
+fn kane_equations_tex(count: usize) -> String {
+    let numbers = match count {
+        1..=3 => (1..=count)
+            .map(|r| r.to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
+        k => format!("1, \\ldots, {k}"),
+    };
+    format!("\\tilde{{F}}_r + \\tilde{{F}}^*_r = 0 \\; (r = {numbers})")
+}
+
+/// `partials` after the words that step 1's rates are these, where `link` says how their
+/// denominators agree on the loop.
+fn linked(partials: String, link: Option<&super::kane_delta::OnTheLoop>) -> String {
+    match link {
+        Some(link) => format!(
+            "These are the rates of step 1: on the loop $\\Delta = {}$, since the loop dotted with ${}$ is zero. {partials}",
+            link.equal_tex, link.along_tex
+        ),
+        None => partials,
+    }
+}
+
 /// What drops out and why, the auxiliary speeds, and the order of the solve.
-fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<String> {
+fn after_rows(
+    derivation: &Derivation,
+    speeds: &Speeds,
+    delta: bool,
+    link: Option<&super::kane_delta::OnTheLoop>,
+) -> Vec<String> {
     let model = &derivation.model;
     let problem = model.problem;
     let friction = &model.constraints.friction;
@@ -214,12 +250,15 @@ fn after_rows(derivation: &Derivation, speeds: &Speeds, delta: bool) -> Vec<Stri
         out.push(text);
     }
     // Where the constraints cannot be solved for the dependent rates.
-    let singular = "The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0$ the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.";
+    let zero = link.map_or(String::new(), |l| {
+        format!(", that is where ${} = 0$,", l.zero_tex)
+    });
+    let singular = format!("The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0${zero} the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.");
     if friction.is_empty() {
         // The order of the solve is said after the matrix form; only the singular
         // configuration of the dependent rates is said here.
         if delta {
-            out.push(singular.to_string());
+            out.push(singular);
         }
     } else {
         // The friction forces are in the rows of the speeds: nothing is solved first.

@@ -155,13 +155,16 @@ fn body_lines(
     }
     let symbol = latex_name(model.problem.body_name(body));
     let name = format!("F^{{*}}_{{{r},{symbol}}}");
+    let letters = super::kane_theory::letters(derivation);
     let mut definition = format!(
-        "\\mathbf{{v}}^{{{}}}_{{{r}}} \\cdot \\mathbf{{R}}^{{*}}_{{{symbol}}}",
-        centre_tex(model, body)
+        "\\mathbf{{v}}^{{{}}}_{{{r}}} \\cdot {}^{{*}}_{{{symbol}}}",
+        centre_tex(model, body),
+        letters.force
     );
     if !particle {
         definition.push_str(&format!(
-            " + \\boldsymbol{{\\omega}}^{{{symbol}}}_{{{r}}} \\cdot \\mathbf{{T}}^{{*}}_{{{symbol}}}"
+            " + \\boldsymbol{{\\omega}}^{{{symbol}}}_{{{r}}} \\cdot {}^{{*}}_{{{symbol}}}",
+            letters.couple
         ));
     }
     let mut lines = vec![format!("{name} &= {definition}")];

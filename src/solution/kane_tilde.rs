@@ -110,27 +110,35 @@ fn parts(
     let problem = model.problem;
     let n = problem.coordinates.len();
     let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
-    let weights = if r <= speeds.independent.len() {
-        speeds.independent_weights(r - 1, n)
+    let (weights, rigid) = if r <= speeds.independent.len() {
+        (speeds.independent_weights(r - 1, n), None)
     } else {
-        // An auxiliary speed's: only its constraint gives way.
-        super::auxiliary_partials::weights(derivation, r)
-            .map_or_else(|| vec![Expr::zero(); n], |(w, _)| w)
+        // An auxiliary speed's: only its constraint gives way, or its joint of the tree
+        // with the loop kept closed.
+        match super::auxiliary_partials::motion(derivation, r) {
+            Some(motion) => (motion.weights, motion.rigid),
+            None => (vec![Expr::zero(); n], None),
+        }
     };
-    let combined = |list: &[Vector]| -> Vector {
+    let combined = |list: &[Vector], own: Vector| -> Vector {
         Vector::sum(
             list.iter()
                 .zip(&weights)
                 .filter(|(_, w)| !w.is_zero())
                 .map(|(v, w)| v.scaled(w)),
         )
+        .plus(&own)
         .map(|e| shown(&simplify(e)))
     };
     let inertia = derivation.inertia();
     let mut out = Vec::new();
     for &body in &model.order {
         let state = &model.bodies[body.0];
-        let v = combined(&partials(&state.center.velocity, &rates));
+        let own = rigid
+            .as_ref()
+            .map(|m| (m.centre(model, body), m.omega(body)));
+        let (own_v, own_w) = own.unwrap_or((Vector::zero(), Vector::zero()));
+        let v = combined(&partials(&state.center.velocity, &rates), own_v);
         let frames = candidate_frames(model, body);
         let mut dots = vec![DotProduct::shortest(
             &v,
@@ -139,7 +147,7 @@ fn parts(
             model,
         )];
         if !is_particle(model, body) {
-            let w = combined(&partials(&state.omega, &rates));
+            let w = combined(&partials(&state.omega, &rates), own_w);
             dots.push(DotProduct::shortest(
                 &w,
                 &inertia.torque[body.0],
@@ -227,13 +235,16 @@ fn part_lines(
     let model = &derivation.model;
     let symbol = latex_name(model.problem.body_name(part.body));
     let name = format!("\\tilde{{F}}^{{*}}_{{{r},{symbol}}}");
+    let letters = super::kane_theory::letters(derivation);
     let mut definition = format!(
-        "\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{r}}} \\cdot \\mathbf{{R}}^{{*}}_{{{symbol}}}",
-        centre_tex(model, part.body)
+        "\\tilde{{\\mathbf{{v}}}}^{{{}}}_{{{r}}} \\cdot {}^{{*}}_{{{symbol}}}",
+        centre_tex(model, part.body),
+        letters.force
     );
     if part.dots.len() > 1 {
         definition.push_str(&format!(
-            " + \\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{r}}} \\cdot \\mathbf{{T}}^{{*}}_{{{symbol}}}"
+            " + \\tilde{{\\boldsymbol{{\\omega}}}}^{{{symbol}}}_{{{r}}} \\cdot {}^{{*}}_{{{symbol}}}",
+            letters.couple
         ));
     }
     let mut lines = vec![format!("{name} &= {definition}")];
@@ -246,13 +257,25 @@ fn part_lines(
             .iter()
             .flat_map(|d| &d.pairs)
             .all(|(a, _)| a.is_one());
-    if one || products.iter().any(|l| symbols(l) > WIDEST_LINE) {
+    // An auxiliary speed's long products are the table's partial velocities times step
+    // 4's accelerations: its terms alone keep the row short.
+    let auxiliary = derivation
+        .dependent_speeds
+        .as_ref()
+        .is_some_and(|s| r > s.independent.len());
+    let many = products.iter().map(|l| l.len()).sum::<usize>() > LONGEST_AUXILIARY_PRODUCTS;
+    if one || (auxiliary && many) || products.iter().any(|l| symbols(l) > WIDEST_LINE) {
         products.clear();
     }
     lines.extend(products);
     let formed = latex_collected(&part.formed);
     let term = latex_collected(&part.term);
-    if formed.len() > LONGEST_TERM || term.len() > LONGEST_TERM {
+    let longest = if auxiliary {
+        LONGEST_AUXILIARY_TERM
+    } else {
+        LONGEST_TERM
+    };
+    if formed.len() > longest || term.len() > longest {
         return None;
     }
     lines.push(super::aligned::line("", "=", &formed));
@@ -290,7 +313,7 @@ pub fn inertia_dot_products(
     let auxiliary = r > speeds.independent.len();
     if model.order.len() > MOST_BODIES
         || r == 0
-        || (auxiliary && super::auxiliary_partials::weights(derivation, r).is_none())
+        || (auxiliary && super::auxiliary_partials::motion(derivation, r).is_none())
     {
         return None;
     }
@@ -340,8 +363,17 @@ pub fn inertia_dot_products(
     (!auxiliary || block.len() <= LONGEST_AUXILIARY).then_some(block)
 }
 
-/// The most characters of LaTeX an auxiliary speed's `F̃*_r` written body by body may take.
-const LONGEST_AUXILIARY: usize = 700;
+/// The most characters of LaTeX an auxiliary speed's `F̃*_r` written body by body may take:
+/// the four-bar's rows of the pins O and R, three bodies' terms each.
+const LONGEST_AUXILIARY: usize = 2400;
+
+/// The most characters of LaTeX an auxiliary speed's products of one body may take: longer,
+/// they are the table's partial velocities times step 4's accelerations, and the term alone
+/// is written.
+const LONGEST_AUXILIARY_PRODUCTS: usize = 300;
+
+/// The most characters of LaTeX one body's term of an auxiliary speed's `F̃*_r` may take.
+const LONGEST_AUXILIARY_TERM: usize = 900;
 
 /// Where the row keeps the dependent accelerations (replaced, they would make it too long
 /// to read), the words that say where they are found, on the first row that has them.

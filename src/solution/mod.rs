@@ -46,6 +46,7 @@ mod initial_state;
 mod joint_words;
 mod kane;
 mod kane_bodies;
+mod kane_delta;
 mod kane_dots;
 mod kane_system;
 mod kane_theory;

@@ -15,13 +15,14 @@ pub(super) type BodyPartials = (crate::problem::BodyId, Vec<Vector>, Vec<Vector>
 
 /// Each body's partial velocity and partial angular velocity (index into `per_body`'s
 /// lists by coordinate) combined by `weights`, for speed `r` (0-based), one line per body
-/// that moves with it, `speed` on the first.
+/// that moves with it, `speed` on the first; a tree joint's auxiliary speed adds the
+/// `rigid` motion of its subtree.
 pub(super) fn body_rows(
     derivation: &Derivation,
     per_body: &[BodyPartials],
     weights: &[Expr],
     r: usize,
-    speed: String,
+    (speed, rigid): (String, Option<&super::auxiliary_partials::Rigid>),
 ) -> Vec<PartialVelocity> {
     let model = &derivation.model;
     // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
@@ -38,8 +39,13 @@ pub(super) fn body_rows(
     let mut out = Vec::new();
     let mut first = true;
     for (body, v, w) in per_body {
-        let v_tex = super::tex::shortest_tex(model, &combined(v), *body);
-        let w_tex = super::tex::shortest_tex(model, &combined(w), *body);
+        // A tree joint's auxiliary speed slides (or turns) its subtree as well.
+        let (own_v, own_w) = match rigid {
+            Some(rigid) => (rigid.centre(model, *body), rigid.omega(*body)),
+            None => (Vector::zero(), Vector::zero()),
+        };
+        let v_tex = super::tex::shortest_tex(model, &combined(v).plus(&own_v), *body);
+        let w_tex = super::tex::shortest_tex(model, &combined(w).plus(&own_w), *body);
         let line = Line {
             body: *body,
             r: r + 1,
@@ -146,6 +152,7 @@ pub(super) fn site_partial<'r>(
 ) -> Option<PartialVelocity> {
     let problem = model.problem;
     let site = &model.sites[index];
+    let states = crate::mechanics::sample_states(model);
     let mut v = Vector::zero();
     for row in rows {
         let Ok((a, _)) = linear_split(&row.velocity, rates) else {
@@ -159,9 +166,24 @@ pub(super) fn site_partial<'r>(
             continue;
         };
         let weight = simplify(&add(a.iter().zip(weights).map(|(a, w)| a * w)));
+        // An auxiliary speed's motion gives way by a unit along its own direction and not
+        // along the others: the weight is 1 or 0 identically, however it is written (the
+        // four-bar's (cos/Δ)(a sin(q₁ − q₃) + d sin q₃) with Δ that very bracket).
+        let weight = [Expr::zero(), Expr::one()]
+            .into_iter()
+            .find(|unit| crate::mechanics::same_at(&weight, unit, &states))
+            .unwrap_or(weight);
         v = v.plus(&component.direction.scaled(&weight));
     }
-    let v_tex = super::tex::shortest_tex(model, &v.map(simplify), site.child);
+    // In the unit vectors of the child or of the parent, it moves relative to: the
+    // four-bar's pin R gives way along b̂_x of the coupler B.
+    let v = v.map(simplify);
+    let v_tex = [site.child, site.parent]
+        .into_iter()
+        .filter(|&b| b != crate::problem::BodyId::GROUND)
+        .map(|b| super::tex::shortest_tex(model, &v, b))
+        .min_by_key(|t| (t.len(), t.clone()))
+        .unwrap_or_else(|| super::tex::shortest_tex(model, &v, site.child));
     if v_tex == "\\mathbf{0}" {
         return None;
     }
