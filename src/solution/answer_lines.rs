@@ -20,13 +20,17 @@ pub fn tighten(views: &mut Vec<AnswerView>) {
     {
         return;
     }
-    for view in views.iter_mut() {
+    let names: Vec<Vec<&str>> = views.iter().map(value_names).collect();
+    let alike: Vec<bool> = (0..views.len())
+        .map(|i| (0..views.len()).any(|j| j != i && names[j] == names[i]))
+        .collect();
+    for (view, alike) in views.iter_mut().zip(alike) {
         if !named(view) {
             continue;
         }
-        // A label that tells two answers of one item apart ("The slow precession:") is
-        // said with the state the answer is at, which is then said again.
-        if let Some(label) = label(view.question.as_str()) {
+        // A label that tells two answers of the same values apart ("The slow precession:")
+        // is said with the state the answer is at, which is then said again.
+        if let Some(label) = label(view.question.as_str()).filter(|_| alike) {
             view.at_note = match view.at_note.is_empty() {
                 true => label,
                 false => format!("{label}, {}", view.at_note),
@@ -66,6 +70,13 @@ fn label(question: &str) -> Option<String> {
 
 /// The longest label kept, in characters: a few words.
 const LONGEST_LABEL: usize = 40;
+
+/// The names of the values an answer gives (`\\dot{\\psi}` of `\\dot{\\psi} = 3 …`).
+fn value_names(view: &AnswerView) -> Vec<&str> {
+    (view.values_tex.iter())
+        .filter_map(|v| v.as_str().split_once(" = ").map(|(name, _)| name))
+        .collect()
+}
 
 /// Whether the answer says what it found without its question: every value named
 /// (`E = 5.8 J`), or a working that leads to it; a bare number needs the question's words.
@@ -142,11 +153,22 @@ mod tests {
         );
         assert_eq!(label("Simulate it. After 4 s:"), None);
         assert_eq!(label("Find $x$."), None);
-        let mut views = vec![view("2", "The fast precession:", &["x = 1"], true)];
-        views[0].at_note = "kept constant".into();
+        let mut views = vec![
+            view("2", "The slow precession:", &["x = 1"], false),
+            view("", "The fast precession:", &["x = 2"], true),
+            view(
+                "3",
+                "The angle. The centre's acceleration:",
+                &["y = 1"],
+                false,
+            ),
+        ];
+        views[1].at_note = "kept constant".into();
         tighten(&mut views);
-        assert_eq!(views[0].at_note, "the fast precession, kept constant");
-        assert!(!views[0].same_state);
+        assert_eq!(views[1].at_note, "the fast precession, kept constant");
+        assert!(!views[1].same_state);
+        // A label of values no other answer gives says nothing the values do not.
+        assert!(views[2].at_note.is_empty());
     }
 
     #[test]
