@@ -120,7 +120,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
 fn largest_change_words(symbol: Option<&str>, change: f64) -> String {
     let symbol = symbol.map_or("it".to_string(), |s| format!("${s}$"));
     let size = match change {
-        c if c == 0.0 => "0".to_string(),
+        0.0 => "0".to_string(),
         c => {
             let text = format!("{c:.1e}");
             let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
