@@ -3,6 +3,7 @@
 mod agreement;
 mod answer_frames;
 mod answer_json;
+mod answer_leads;
 mod answers;
 mod asked_free_bodies;
 mod bicycle;

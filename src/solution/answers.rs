@@ -59,7 +59,6 @@ pub fn section(problem: &Problem, answers: &[Answer]) -> Vec<AnswerView> {
                     }
                 }
             }
-            super::answer_leads::drop_said_time(question, &mut view);
             // Each force found said once in words: what it is, its size, its sense and
             // the body it acts on.
             let words = super::force_words::note(problem, question, answer);

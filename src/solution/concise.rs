@@ -31,6 +31,7 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
         None => solution.reactions.clear(),
     }
     super::answer_leads::mark_repeated_states(&mut solution.answers);
+    super::answer_lines::tighten(&mut solution.answers);
 }
 
 /// Whether an answer's value is a component of the reaction at `joint`, its force or moment.

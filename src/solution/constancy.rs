@@ -80,13 +80,13 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         let change = (late - start).abs();
         let relative = change / start.abs().max(1e-12);
         let time = fixed(problem.questions[i].at.time.unwrap_or(0.0));
-        let symbol = (views[k].values_tex.first())
-            .and_then(|v| {
-                v.as_str()
-                    .split_once(" = ")
-                    .map(|(name, _)| name.to_string())
-            })
-            .map(|name| crate::render::unicode_of(&name))
+        let symbol_tex = (views[k].values_tex.first()).and_then(|v| {
+            v.as_str()
+                .split_once(" = ")
+                .map(|(name, _)| name.to_string())
+        });
+        let symbol = (symbol_tex.as_deref())
+            .map(crate::render::unicode_of)
             .unwrap_or_else(|| "it".to_string());
         let spaced = if unit.is_empty() {
             String::new()
@@ -96,9 +96,14 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         // The change left is the simulation's rounding, not the mechanics: a course says
         // the energy stays constant, and the plot shows it.
         let note = match (relative <= 1e-6, measured) {
-            (true, Some(m)) if m <= 1e-6 * start.abs().max(1.0) => format!(
-                "Yes: {symbol} stays constant over the whole motion, as the energy plot of step 6 shows."
-            ),
+            (true, Some(m)) if m <= 1e-6 * start.abs().max(1.0) => {
+                // Said with its evidence, which a plot cannot show: the largest change.
+                views[i.max(k)].steps.push(crate::render::AnswerStep {
+                    text: largest_change_words(symbol_tex.as_deref(), m).into(),
+                    math: String::new().into(),
+                });
+                String::new()
+            }
             (true, _) => format!("Yes: {symbol} is unchanged after {time} s."),
             (false, _) => format!(
                 "No: after {time} s {symbol} has changed by {}{spaced} from its value at the start.",
@@ -108,4 +113,21 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         let j = i.max(k);
         views[j].note = note;
     }
+}
+
+/// "Yes: E stays constant: over the motion it changes by at most 3.2 × 10⁻⁹ J." in the
+/// markup of an answer's step, the change to two figures.
+fn largest_change_words(symbol: Option<&str>, change: f64) -> String {
+    let symbol = symbol.map_or("it".to_string(), |s| format!("${s}$"));
+    let size = match change {
+        0.0 => "0".to_string(),
+        c => {
+            let text = format!("{c:.1e}");
+            let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+            format!("{mantissa} \\times 10^{{{exponent}}}")
+        }
+    };
+    format!(
+        "Yes: {symbol} stays constant: over the motion it changes by at most ${size}\\ \\mathrm{{J}}$."
+    )
 }

@@ -122,7 +122,7 @@ pub fn frame_note(problem: &Problem, question_text: Option<&str>, frame: &str) -
         .body_ids()
         .find(|&b| problem.body_name(b) == frame)?;
     Some(format!(
-        "The components are along the unit vectors fixed in {} (frame {frame}), as the question names no frame.",
+        "The components are along the unit vectors fixed in {} (frame {frame}).",
         body_words(problem, id)
     ))
 }

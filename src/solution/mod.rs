@@ -11,6 +11,7 @@
 mod absent_constants;
 mod aligned;
 mod answer_leads;
+mod answer_lines;
 mod answer_numbers;
 mod answer_sheet;
 mod answers;
