@@ -14,10 +14,12 @@ use super::strokes::{
 };
 
 mod beside;
+mod captions;
 mod crossing;
 mod curl;
 mod labels;
 mod marks;
+pub use marks::{ARC, ROUND_A_VELOCITY, SENSE, SHORT_ANGLE};
 mod room;
 mod triad;
 mod velocity;
@@ -62,6 +64,9 @@ pub(super) struct Painter {
     /// The ground's lines drawn, each from one end to the other with the page's unit
     /// vector away from the ground: the unit vectors keep above them.
     pub(super) grounds: Vec<(P2, P2, P2)>,
+    /// Where the picture's velocities start (on the page): an angle's arc about one of
+    /// them goes round outside its arrow.
+    moving: Vec<P2>,
 }
 
 impl Painter {
@@ -326,7 +331,7 @@ impl Painter {
         // drawn at the mass centre, may stand beside a bar or another arrow.
         let pushes = self.pushes_at(arrow, at, u, length);
         let point = at;
-        let mut at = if arrow.kind == super::scene::Kind::Inertia {
+        let mut at = if arrow.kind == super::scene::Kind::Inertia && !arrow.couple {
             self.beside_bodies(at, u)
         } else if arrow.couple {
             // A moment vector is free: off the arrows it would cross or lie on.
@@ -336,7 +341,16 @@ impl Painter {
         } else {
             at
         };
-        if arrow.kind == super::scene::Kind::Gravity && !arrow.couple {
+        let mut length = length;
+        let hangs = arrow.kind == super::scene::Kind::Gravity && !arrow.couple && !pushes;
+        let shortened = if hangs {
+            self.weight_length(at, u, length)
+        } else {
+            None
+        };
+        if let Some(short) = shortened {
+            length = short;
+        } else if arrow.kind == super::scene::Kind::Gravity && !arrow.couple {
             if let Some(moved) = self.weight_aside(at, u, length) {
                 // The leader joins the point to the arrow's end nearest it.
                 let end = if pushes {
@@ -414,29 +428,6 @@ impl Painter {
     }
 }
 
-impl Painter {
-    /// The captions of the marked points wait with the other labels, ahead of the arrows'
-    /// (an arrow's label can move out along its arrow; a caption must stay at its point):
-    /// a point on a body's edge keeps its caption outside the bodies where it can, a mass
-    /// centre beside it.
-    fn caption_marks(&mut self, markers: &[super::scene::Marker], marks: &[Mark]) {
-        let mut captions = Vec::new();
-        self.owners = markers.iter().map(|m| m.on.clone()).collect();
-        for (k, (m, mark)) in markers.iter().zip(marks).enumerate() {
-            if let Some(caption) = &m.caption {
-                let beside = if m.role == Role::Center {
-                    Beside::Caption(k)
-                } else {
-                    Beside::Point(k)
-                };
-                let toward = -std::f64::consts::FRAC_PI_4;
-                captions.push((mark.at, toward, caption.clone(), Ink::Black, beside));
-            }
-        }
-        self.pending.splice(0..0, captions);
-    }
-}
-
 /// Lays `scene` out for `view`.
 pub fn lay_out(scene: &Scene, view: View) -> Picture {
     lay_out_with(scene, view, 1.0)
@@ -475,7 +466,14 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         others: Vec::new(),
         owners: Vec::new(),
         grounds: Vec::new(),
+        moving: Vec::new(),
     };
+    painter.moving = (scene.shapes.iter())
+        .filter_map(|s| match s {
+            Shape::Velocity { at, .. } => Some(painter.at(*at)),
+            _ => None,
+        })
+        .collect();
     painter.straight = (scene.arrows.iter())
         .filter(|a| !(a.couple && scene.planar))
         .map(|a| (painter.at(a.at), a.direction))

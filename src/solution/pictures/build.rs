@@ -2,12 +2,12 @@
 
 use super::joint_symbols;
 use super::load_symbols::{factor_tex, magnitude_symbol};
-use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
+use super::numbers::{add, norm, rotate, scale, sub, unit, Numbers, P3};
 use crate::equations::Derivation;
 use crate::mechanics::ComponentKind;
 use crate::plan::{is_external, Action, ActionKind, Source};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
-use crate::render::draw::{Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
+use crate::render::draw::{layout, Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 
 /// What every free-body picture's arrows mean, in one short line: every arrow is drawn
@@ -15,6 +15,11 @@ use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 /// their positive senses, known forces the way they act at the state drawn.
 pub const FREE_BODY_LEGEND: &str =
     "Not to scale. Unknowns (red) along + axes; known forces as they act.";
+
+/// [`FREE_BODY_LEGEND`] where a free body carries a reaction's unknowns on the joint's
+/// parent, drawn opposite the + axes: the equal and opposite of its partner's.
+pub const FREE_BODY_LEGEND_THIRD_LAW: &str = "Not to scale. Unknowns (red) along + axes, \
+     or opposite their partner's by Newton's third law; known forces as they act.";
 
 /// What every picture of one problem shares.
 pub struct Setting<'a, 'm, 'p> {
@@ -224,6 +229,18 @@ impl Setting<'_, '_, '_> {
                         from: center,
                         to: add(center, scale(from, reference)),
                     });
+                    // An angle below zero is drawn the way angles count, from the child's
+                    // line back to where it lay at zero: the arc of −q, its head showing
+                    // the positive sense.
+                    let (from, angle, label) = if angle <= -layout::SHORT_ANGLE {
+                        let minus = Label {
+                            plain: format!("\u{2212}{}", label.plain),
+                            tex: format!("-{}", label.tex),
+                        };
+                        (rotate(from, axis, angle), -angle, minus)
+                    } else {
+                        (from, angle, label)
+                    };
                     shapes.push(Shape::Angle {
                         center,
                         from,
@@ -297,13 +314,16 @@ impl Setting<'_, '_, '_> {
         }
         let mut markers = self.markers(set, false);
         let mut arrows = Vec::new();
+        let mut third_law = false;
         for action in self
             .derivation
             .actions
             .iter()
             .filter(|a| is_external(a, set))
         {
-            arrows.extend(self.action_arrows(action, &mut markers));
+            let drawn = self.action_arrows(action, &mut markers);
+            third_law |= self.is_partners(action) && drawn.iter().any(|a| a.kind == Kind::Reaction);
+            arrows.extend(drawn);
         }
         let kinetic: Vec<Arrow> = set.iter().flat_map(|&b| self.inertia_arrows(b)).collect();
         // A joint inside the group carries no force on it: its pin is drawn with the bodies,
@@ -323,8 +343,22 @@ impl Setting<'_, '_, '_> {
             arrows,
             kinetic: Some((body_shapes, kinetic)),
             down: super::bodies::down(self.numbers),
-            legend: FREE_BODY_LEGEND.into(),
+            legend: if third_law {
+                FREE_BODY_LEGEND_THIRD_LAW
+            } else {
+                FREE_BODY_LEGEND
+            }
+            .into(),
             content,
+        }
+    }
+
+    /// Whether `action` is a reaction on its joint's parent, whose unknowns are drawn
+    /// opposite the + axes (the child feels them along).
+    fn is_partners(&self, action: &Action) -> bool {
+        match action.source {
+            Source::Reaction(j) => action.body != self.derivation.model.sites[j].child,
+            _ => false,
         }
     }
 
