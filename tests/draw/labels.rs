@@ -279,7 +279,14 @@ fn all_faults(method: Method) -> Vec<String> {
 /// of a 3D view: every spot within 36 px of the gimbal pin lies over an arrow, so its caption
 /// stands a little further off. On the inclines the triad's arrows (and the applied push)
 /// fill the ring round B*: its name stands just past them rather than over one.
-const KNOWN: [(&str, &str); 4] = [
+/// The gears' pinion is small: its pin and mass centre, at one dot, are named together
+/// below its support, every closer spot lying over its spoke, its reference line, the mesh
+/// point or the arc of q_A. The two-wheeled cart's ĉ_z keeps a space from the names beside
+/// it and stands a little further off.
+const KNOWN: [(&str, &str); 7] = [
+    ("gear-pair-torque configuration", " px from joint-OA"),
+    ("gear-pair-torque configuration", " px from cm-A"),
+    ("two-wheeled-cart configuration", "ĉ_z "),
     ("gyroscope-gimbal fbd-ring+rotor", " over arrow "),
     ("gyroscope-gimbal fbd-ring+rotor", "gimbal 52 px from"),
     ("block-on-rough-incline configuration", "B^* 41 px from"),
@@ -332,7 +339,11 @@ fn the_checks_find_what_they_look_for() {
     assert!(on_one_line(weight, ([100.0, 144.0], [100.0, 100.0]), APART));
     assert!(on_one_line(weight, ([100.0, 170.0], [100.0, 130.0]), APART));
     assert!(!on_one_line(weight, ([100.0, 100.0], [100.0, 56.0]), APART));
-    assert!(!on_one_line(weight, ([100.0, 190.0], [100.0, 153.0]), APART));
+    assert!(!on_one_line(
+        weight,
+        ([100.0, 190.0], [100.0, 153.0]),
+        APART
+    ));
     assert!(!on_one_line(
         ([84.0, 100.0], [84.0, 144.0]),
         ([100.0, 100.0], [100.0, 56.0]),

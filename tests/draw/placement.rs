@@ -24,11 +24,14 @@ fn body<'a>(picture: &'a Picture, name: &str) -> &'a [Item] {
         .unwrap_or_else(|| panic!("no body {name}"))
 }
 
-/// Where a label of plain text `plain` stands.
+/// Where a label of plain text `plain` stands (alone, or named with the other points at
+/// its dot: `R^*, S`).
 fn label_at(picture: &Picture, plain: &str) -> [f64; 2] {
     (picture.texts.iter())
         .find_map(|t| match t {
-            Item::Text { at, label, .. } if label.plain == plain => Some(*at),
+            Item::Text { at, label, .. } if label.plain.split(", ").any(|n| n == plain) => {
+                Some(*at)
+            }
             _ => None,
         })
         .unwrap_or_else(|| panic!("no label {plain}"))
@@ -134,10 +137,18 @@ fn a_weight_hangs_from_its_mass_centre() {
             assert!((weight.head[0] - weight.tail[0]).abs() < 1e-6, "{name}");
             assert!(weight.head[1] > weight.tail[1], "{name}");
             // Every other force's point straight below the centre lies past the tip.
-            for other in picture.marks.iter().filter(|m| m.id != format!("cm-{body}")) {
+            for other in picture
+                .marks
+                .iter()
+                .filter(|m| m.id != format!("cm-{body}"))
+            {
                 let below = other.at[1] - centre[1];
                 if (other.at[0] - centre[0]).abs() < 1.0 && below > 1.0 && weight.tail == centre {
-                    assert!(weight.head[1] < other.at[1], "{name}: {weight:?} past {}", other.id);
+                    assert!(
+                        weight.head[1] < other.at[1],
+                        "{name}: {weight:?} past {}",
+                        other.id
+                    );
                 }
             }
         }

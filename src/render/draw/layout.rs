@@ -70,6 +70,17 @@ pub(super) struct Painter {
 }
 
 impl Painter {
+    /// What the scene's arrows and velocities take before anything is drawn: the
+    /// straight forces' points and directions, and where the velocities start.
+    fn survey(&mut self, scene: &Scene) {
+        self.moving = self.velocities(&scene.shapes);
+        self.straight = (scene.arrows.iter())
+            .filter(|a| !(a.couple && scene.planar))
+            .map(|a| (self.at(a.at), a.direction))
+            .collect();
+        self.others = self.other_forces(&scene.arrows);
+    }
+
     pub(super) fn at(&self, p: P3) -> P2 {
         p2add(self.projection.point(p), self.shift)
     }
@@ -335,33 +346,15 @@ impl Painter {
             self.beside_bodies(at, u)
         } else if arrow.couple {
             // A moment vector is free: off the arrows it would cross or lie on.
-            self.free_couple(at, u, length)
+            self.free_couple(at, u, length, arrow.kind == super::scene::Kind::Inertia)
         } else if pushes {
             p2add(at, p2scale(u, -length))
         } else {
             at
         };
         let mut length = length;
-        let hangs = arrow.kind == super::scene::Kind::Gravity && !arrow.couple && !pushes;
-        let shortened = if hangs {
-            self.weight_length(at, u, length)
-        } else {
-            None
-        };
-        if let Some(short) = shortened {
-            length = short;
-        } else if arrow.kind == super::scene::Kind::Gravity && !arrow.couple {
-            if let Some(moved) = self.weight_aside(at, u, length) {
-                // The leader joins the point to the arrow's end nearest it.
-                let end = if pushes {
-                    p2add(moved, p2scale(u, length))
-                } else {
-                    moved
-                };
-                self.thin_dashed(point, end);
-                drawn.leader = Some((point, end));
-                at = moved;
-            }
+        if arrow.kind == super::scene::Kind::Gravity && !arrow.couple {
+            (at, length) = self.weight(&mut drawn, (point, at), u, (length, pushes));
         }
         drawn.tail = at;
         let tip = p2add(at, p2scale(u, length));
@@ -468,17 +461,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         grounds: Vec::new(),
         moving: Vec::new(),
     };
-    painter.moving = (scene.shapes.iter())
-        .filter_map(|s| match s {
-            Shape::Velocity { at, .. } => Some(painter.at(*at)),
-            _ => None,
-        })
-        .collect();
-    painter.straight = (scene.arrows.iter())
-        .filter(|a| !(a.couple && scene.planar))
-        .map(|a| (painter.at(a.at), a.direction))
-        .collect();
-    painter.others = painter.other_forces(&scene.arrows);
+    painter.survey(scene);
     for shape in scene
         .shapes
         .iter()

@@ -2,12 +2,12 @@
 
 use super::joint_symbols;
 use super::load_symbols::{factor_tex, magnitude_symbol};
-use super::numbers::{add, norm, rotate, scale, sub, unit, Numbers, P3};
+use super::numbers::{norm, scale, sub, unit, Numbers, P3};
 use crate::equations::Derivation;
 use crate::mechanics::ComponentKind;
 use crate::plan::{is_external, Action, ActionKind, Source};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
-use crate::render::draw::{layout, Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
+use crate::render::draw::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 
 /// What every free-body picture's arrows mean, in one short line: every arrow is drawn
@@ -203,62 +203,6 @@ impl Setting<'_, '_, '_> {
         }
     }
 
-    /// Angle arcs (each with its dashed line where the child lay at zero) and dimension
-    /// lines for the coordinates; a distance that is zero now is left out.
-    fn coordinates(&self, shapes: &mut Vec<Shape>) {
-        for gauge in super::gauges::gauges(self.numbers, self.size) {
-            let value =
-                (self.numbers.values).get(&self.problem().coordinate_symbol(gauge.coordinate, 0));
-            let label = match gauge.at {
-                // A dimension line is drawn the way it points: a coordinate below zero is
-                // the length of the opposite way, −y, not y.
-                Some(Gauge::Distance { .. }) if value < 0.0 => {
-                    Label::from_tex(&format!("-{}", gauge.label.tex))
-                }
-                _ => gauge.label,
-            };
-            match gauge.at {
-                Some(Gauge::Angle {
-                    center,
-                    from,
-                    axis,
-                    angle,
-                    reference,
-                }) => {
-                    shapes.push(Shape::Dashed {
-                        from: center,
-                        to: add(center, scale(from, reference)),
-                    });
-                    // An angle below zero is drawn the way angles count, from the child's
-                    // line back to where it lay at zero: the arc of −q, its head showing
-                    // the positive sense.
-                    let (from, angle, label) = if angle <= -layout::SHORT_ANGLE {
-                        let minus = Label {
-                            plain: format!("\u{2212}{}", label.plain),
-                            tex: format!("-{}", label.tex),
-                        };
-                        (rotate(from, axis, angle), -angle, minus)
-                    } else {
-                        (from, angle, label)
-                    };
-                    shapes.push(Shape::Angle {
-                        center,
-                        from,
-                        axis,
-                        angle,
-                        label,
-                    });
-                }
-                Some(Gauge::Distance { from, to, .. })
-                    if norm(sub(to, from)) > 1e-6 * self.size =>
-                {
-                    shapes.push(Shape::Distance { from, to, label });
-                }
-                _ => {}
-            }
-        }
-    }
-
     /// The picture of the whole system at the state.
     pub fn configuration(&self, title: String) -> Scene {
         // A floor goes under everything on it; the other surfaces after the bodies.
@@ -275,7 +219,7 @@ impl Setting<'_, '_, '_> {
         for j in 0..self.problem().joints.len() {
             shapes.extend(joint_symbols::joint(self.numbers, j, self.size));
         }
-        self.coordinates(&mut shapes);
+        shapes.extend(super::gauges::shapes(self.numbers, self.size));
         shapes.extend(super::velocities::velocities(self.numbers, self.size));
         self.triads(&mut shapes);
         let mut markers = self.markers(&bodies, true);

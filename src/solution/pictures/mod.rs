@@ -180,7 +180,13 @@ pub fn draw_in_handout(
 /// The pictures of [`draw`] for a system at rest at `q`: the free bodies without kinetic
 /// diagrams (there are no inertia forces to draw).
 pub fn draw_at_rest(derivation: &Derivation, q: &[f64], rates: &[f64], view: View) -> Vec<Drawing> {
-    drawings(derivation, (0.0, q, rates), None, view, (false, &[], "at rest"))
+    drawings(
+        derivation,
+        (0.0, q, rates),
+        None,
+        view,
+        (false, &[], "at rest"),
+    )
 }
 
 /// The pictures at time, coordinates and rates `(t, q, rates)`; `kinetic` with the

@@ -80,10 +80,16 @@ impl Painter {
     /// is free, so it may end at its point or stand beside it, whichever of those (in
     /// that order, nearest first) crosses no arrow drawn before it; else the one that
     /// crosses fewest.
-    pub(super) fn free_couple(&self, at: P2, u: P2, length: f64) -> P2 {
+    pub(super) fn free_couple(&self, at: P2, u: P2, length: f64, inertia: bool) -> P2 {
         let across = [-u[1], u[0]];
         let mut tails = vec![at, p2add(at, p2scale(u, -length))];
-        for d in [16.0, 24.0, 32.0] {
+        // The kinetic diagram's moment vector may go further, off its m a*.
+        let offsets: &[f64] = if inertia {
+            &[16.0, 24.0, 32.0, 44.0, 56.0]
+        } else {
+            &[16.0, 24.0, 32.0]
+        };
+        for &d in offsets {
             for side in [1.0, -1.0] {
                 let moved = p2add(at, p2scale(across, side * d));
                 tails.push(moved);
@@ -93,7 +99,10 @@ impl Painter {
         let mut best = (usize::MAX, at);
         for tail in tails {
             let tip = p2add(tail, p2scale(u, length));
-            let count = self.crossings(tail, tip) + self.fanned(tail, tip);
+            // In the kinetic diagram two arrows side by side read as one (a crossing
+            // worse still); a free body's couples keep off crossings only.
+            let fanned = if inertia { self.fanned(tail, tip) } else { 0 };
+            let count = 2 * self.crossings(tail, tip) + fanned;
             if count == 0 {
                 return tail;
             }

@@ -13,7 +13,7 @@ pub const SHORT_ANGLE: f64 = 0.15;
 pub const SENSE: f64 = std::f64::consts::FRAC_PI_4;
 /// An angle's arc's radius on the page (px), and the most it grows to for a short angle.
 pub const ARC: f64 = 30.0;
-const LONGEST_ARC: f64 = 60.0;
+const LONGEST_ARC: f64 = 45.0;
 /// The least length (px) of an angle's arc, its head included, where its radius allows.
 const ARC_LENGTH: f64 = 28.0;
 /// The radius (px) of an arc about a velocity's point: past its arrow (36 px) and head.

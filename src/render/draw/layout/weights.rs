@@ -5,7 +5,7 @@
 //! even a short weight would not stand clear is it drawn a gap to the side, a thin dashed
 //! leader joining it to the mass centre it acts at.
 
-use super::super::picture::{Item, P2};
+use super::super::picture::{DrawnArrow, Item, P2};
 use super::super::scene::{Arrow, Kind};
 use super::super::strokes::{p2add, p2norm, p2scale, p2unit};
 use super::beside::to_segment;
@@ -28,6 +28,36 @@ const ONE_POINT: f64 = 2.0;
 const SAMPLES: [f64; 4] = [0.2, 0.4, 0.6, 0.8];
 
 impl Painter {
+    /// Where a weight's arrow starts and how long it is: from its mass centre `point`
+    /// (`at`, or a length above it where it `pushes`), shortened before a force ahead on
+    /// its line ([`weight_length`](Self::weight_length)); only where that does not serve,
+    /// a gap to the side with a dashed leader from `point` (set in `drawn`).
+    pub(super) fn weight(
+        &mut self,
+        drawn: &mut DrawnArrow,
+        (point, at): (P2, P2),
+        u: P2,
+        (length, pushes): (f64, bool),
+    ) -> (P2, f64) {
+        if !pushes {
+            if let Some(short) = self.weight_length(at, u, length) {
+                return (at, short);
+            }
+        }
+        let Some(moved) = self.weight_aside(at, u, length) else {
+            return (at, length);
+        };
+        // The leader joins the point to the arrow's end nearest it.
+        let end = if pushes {
+            p2add(moved, p2scale(u, length))
+        } else {
+            moved
+        };
+        self.thin_dashed(point, end);
+        drawn.leader = Some((point, end));
+        (moved, length)
+    }
+
     /// Where the straight forces of `arrows` other than weights act (on the page) and
     /// which way (a unit vector on the page).
     pub(super) fn other_forces(&self, arrows: &[Arrow]) -> Vec<(P2, P2)> {
@@ -54,13 +84,25 @@ impl Painter {
             let d = [p[0] - tail[0], p[1] - tail[1]];
             let along = d[0] * u[0] + d[1] * u[1];
             let across = (d[0] * u[1] - d[1] * u[0]).abs();
-            if across >= ON_A_LINE * self.reach || p2norm(d) < ONE_POINT {
-                // Off its line, or at the mass centre itself: drawn from there the other
-                // way, or stacked a step longer along it.
+            if across >= ON_A_LINE * self.reach {
                 continue;
             }
-            if along > 0.0 {
+            let same_way = u[0] * v[0] + u[1] * v[1] > 0.0;
+            // Whether the other force, started at its point, would run inside a body: it is
+            // then drawn ending there, from outside (a contact's push).
+            let pushes = self.crowding(p, v).0 + 1 >= SAMPLES.len();
+            if p2norm(d) < ONE_POINT {
+                // At the mass centre itself: a force the other way goes from there the
+                // other way; one the same way would lie on it.
+                if same_way {
+                    return None;
+                }
+            } else if along > 0.0 && same_way != pushes {
+                // Ahead on its line, drawn away from the weight: the weight stops short.
                 reach = reach.min(along - SHORT_OF * self.reach);
+            } else if along > -length {
+                // Drawn towards the weight, or behind it within its reach.
+                return None;
             }
         }
         (reach >= SHORTEST * length).then_some(reach)
