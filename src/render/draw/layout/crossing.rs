@@ -9,8 +9,8 @@ use super::Painter;
 
 /// The part of each end of an arrow where another may meet it (px): its head, its tail.
 const END: f64 = 6.0;
-/// Two arrows within this angle (degrees) of one line and [`BESIDE`] of each other read
-/// as one.
+/// Two arrows within this angle (degrees) of one line and [`BESIDE`] of each other (px
+/// at 13 px labels) read as one.
 const FAN: f64 = 30.0;
 const BESIDE: f64 = 10.0;
 
@@ -132,7 +132,9 @@ impl Painter {
                 let lv = v[0].hypot(v[1]);
                 lv > 0.0
                     && ((u[0] * v[0] + u[1] * v[1]) / (lu * lv)).abs() > close
-                    && samples.iter().any(|&p| to_segment(p, a, b) < BESIDE)
+                    && samples
+                        .iter()
+                        .any(|&p| to_segment(p, a, b) < BESIDE * self.reach)
             })
             .count()
     }
