@@ -286,7 +286,7 @@ fn all_faults(method: Method) -> Vec<String> {
 const KNOWN: [(&str, &str); 7] = [
     ("gear-pair-torque configuration", " px from joint-OA"),
     ("gear-pair-torque configuration", " px from cm-A"),
-    ("two-wheeled-cart configuration", "ĉ_z "),
+    ("two-wheeled-cart configuration", " px from its arrow"),
     ("gyroscope-gimbal fbd-ring+rotor", " over arrow "),
     ("gyroscope-gimbal fbd-ring+rotor", "gimbal 52 px from"),
     ("block-on-rough-incline configuration", "B^* 41 px from"),

@@ -9,7 +9,7 @@ use super::drawings;
 use crate::support::{all_problems, problem as problem_path, run};
 use mbd_tutor::equations::Method;
 use mbd_tutor::render::draw::{
-    Drawing, Ink, Item, Kind, Shape, View, ABOVE_A_TABLE, BESIDE_A_TABLE,
+    Drawing, DrawnArrow, Ink, Item, Kind, Shape, View, ABOVE_A_TABLE, BESIDE_A_TABLE,
 };
 use mbd_tutor::solution::{FREE_BODY_LEGEND, FREE_BODY_LEGEND_THIRD_LAW};
 
@@ -216,7 +216,9 @@ fn the_moment_vector_does_not_lie_beside_m_a() {
                 .filter(|a| a.kind == Kind::Inertia && a.arc.is_none())
                 .collect();
             for (i, a) in inertia.iter().enumerate() {
-                for b in inertia[i + 1..].iter().filter(|b| a.couple != b.couple) {
+                // One body's moment vector and its own m a*.
+                let own = |b: &&&DrawnArrow| a.couple != b.couple && a.at_id == b.at_id;
+                for b in inertia[i + 1..].iter().filter(own) {
                     let (u, v) = (
                         [a.head[0] - a.tail[0], a.head[1] - a.tail[1]],
                         [b.head[0] - b.tail[0], b.head[1] - b.tail[1]],
