@@ -110,7 +110,9 @@ pub use derived::plan as plan_view;
 pub use eigen_plot::sweep_plot;
 pub use handout::{handout, student, Handout};
 pub use pictures::motion::motion as motion_picture;
-pub use pictures::{draw as draw_pictures, free_body_sets, point_id};
+pub use pictures::{
+    draw as draw_pictures, free_body_sets, point_id, FREE_BODY_LEGEND, FREE_BODY_LEGEND_THIRD_LAW,
+};
 pub use row_view::equation_view;
 pub use shown_names::shown_names;
 pub use solve_words::constraint_block;

@@ -5,8 +5,8 @@
 //! points), each point's caption lies
 //! within a few pixels of its point, each unit vector's name by its arrow's tip, no two
 //! labels overlap, no label lies over an arrow, no two straight arrows cross (arrows that
-//! meet at an end, two components at one pin, do not cross), and no weight lies on the
-//! line of another force (a pin's vertical reaction at a wheel's centre).
+//! meet at an end, two components at one pin, do not cross), and no weight runs over
+//! another force on its line (a normal force arriving at a contact the weight reaches).
 
 use super::drawings;
 use crate::support::all_problems;
@@ -51,6 +51,14 @@ impl Box2 {
         let dx = ((p[0] - self.center[0]).abs() - self.half[0]).max(0.0);
         let dy = ((p[1] - self.center[1]).abs() - self.half[1]).max(0.0);
         dx.hypot(dy)
+    }
+
+    /// Whether `o` stands beside this label on its line closer than a space (2 px at
+    /// 13 px labels): the two read as one product (`T O_A`).
+    fn runs_into(&self, o: &Box2, grow: f64) -> bool {
+        let gap = (self.center[0] - o.center[0]).abs() - (self.half[0] + 1.0) - (o.half[0] + 1.0);
+        let level = (self.center[1] - o.center[1]).abs() < self.half[1] + o.half[1];
+        level && gap < 2.0 * grow
     }
 
     fn overlaps(&self, o: &Box2) -> bool {
@@ -134,8 +142,9 @@ fn on_one_line((a0, a1): (P2, P2), (b0, b1): (P2, P2), gap: f64) -> bool {
     let along = |p: P2| (p[0] - a0[0]) * u[0] + (p[1] - a0[1]) * u[1];
     let across = |p: P2| ((p[0] - a0[0]) * u[1] - (p[1] - a0[1]) * u[0]).abs();
     let (lo, hi) = (along(b0).min(along(b1)), along(b0).max(along(b1)));
-    let reach = length.max(other);
-    across(b0).min(across(b1)) < gap && lo < length + reach && hi > -reach
+    // Two arrows on one line that do not run over each other (a weight down from a pin
+    // whose reaction goes up from it; a weight ending short of a contact) read apart.
+    across(b0).min(across(b1)) < gap && lo < length - END && hi > END
 }
 
 /// What is wrong with one picture of `scene`, a line each.
@@ -148,7 +157,8 @@ fn faults_of(name: &str, scene: &Scene, picture: &Picture) -> Vec<String> {
             continue;
         };
         let nearest = (labels.iter())
-            .filter(|(plain, _)| *plain == caption.plain)
+            // Points at one dot are named together there: `C^*, S`.
+            .filter(|(plain, _)| plain.split(", ").any(|name| name == caption.plain))
             .map(|(_, b)| b.distance_to(mark.at))
             .fold(f64::INFINITY, f64::min);
         if nearest > NEAR * grow {
@@ -162,6 +172,8 @@ fn faults_of(name: &str, scene: &Scene, picture: &Picture) -> Vec<String> {
         for (b, bb) in &labels[i + 1..] {
             if ba.overlaps(bb) {
                 faults.push(format!("{name}: label {a} over label {b}"));
+            } else if ba.runs_into(bb, grow) {
+                faults.push(format!("{name}: label {a} runs into label {b}"));
             }
         }
     }
@@ -267,7 +279,14 @@ fn all_faults(method: Method) -> Vec<String> {
 /// of a 3D view: every spot within 36 px of the gimbal pin lies over an arrow, so its caption
 /// stands a little further off. On the inclines the triad's arrows (and the applied push)
 /// fill the ring round B*: its name stands just past them rather than over one.
-const KNOWN: [(&str, &str); 4] = [
+/// The gears' pinion is small: its pin and mass centre, at one dot, are named together
+/// below its support, every closer spot lying over its spoke, its reference line, the mesh
+/// point or the arc of q_A. The two-wheeled cart's ĉ_z keeps a space from the names beside
+/// it and stands a little further off.
+const KNOWN: [(&str, &str); 7] = [
+    ("gear-pair-torque configuration", " px from joint-OA"),
+    ("gear-pair-torque configuration", " px from cm-A"),
+    ("two-wheeled-cart configuration", " px from its arrow"),
     ("gyroscope-gimbal fbd-ring+rotor", " over arrow "),
     ("gyroscope-gimbal fbd-ring+rotor", "gimbal 52 px from"),
     ("block-on-rough-incline configuration", "B^* 41 px from"),
@@ -306,10 +325,25 @@ fn the_checks_find_what_they_look_for() {
     // Printed twice as large, the same two labels meet.
     assert!(Box2::of([50.0, 50.0], "A*", 2.0).overlaps(&Box2::of([75.0, 50.0], "O", 2.0)));
     assert!(!label.overlaps(&Box2::of([75.0, 50.0], "O", 1.0)));
-    // A weight down from a pin whose vertical reaction points up lies on its line; moved
-    // 16 px aside it does not; a horizontal reaction never does.
+    // `T` just left of `O_A` on its line runs into it; a line lower, or well apart, not.
+    let o = Box2::of([50.0, 50.0], "O_A", 1.0);
+    let t = |x: f64, y: f64| Box2::of([x, y], "T", 1.0);
+    let width = text_size("O_A")[0] / 2.0 + text_size("T")[0] / 2.0;
+    assert!(o.runs_into(&t(50.0 - width - 1.0, 50.0), 1.0));
+    assert!(!o.runs_into(&t(50.0 - width - 6.0, 50.0), 1.0));
+    assert!(!o.runs_into(&t(50.0 - width, 80.0), 1.0));
+    // A weight down from a pin whose vertical reaction arrives at the pin from below
+    // lies over it; one going up from the pin, or ending short of it, does not; moved
+    // 16 px aside it does not either; a horizontal reaction never does.
     let weight = ([100.0, 100.0], [100.0, 144.0]);
-    assert!(on_one_line(weight, ([100.0, 100.0], [100.0, 56.0]), APART));
+    assert!(on_one_line(weight, ([100.0, 144.0], [100.0, 100.0]), APART));
+    assert!(on_one_line(weight, ([100.0, 170.0], [100.0, 130.0]), APART));
+    assert!(!on_one_line(weight, ([100.0, 100.0], [100.0, 56.0]), APART));
+    assert!(!on_one_line(
+        weight,
+        ([100.0, 190.0], [100.0, 153.0]),
+        APART
+    ));
     assert!(!on_one_line(
         ([84.0, 100.0], [84.0, 144.0]),
         ([100.0, 100.0], [100.0, 56.0]),

@@ -540,5 +540,6 @@ mod placement;
 mod same_names;
 mod sliding;
 mod textbook;
+mod truths;
 
 use sliding::{check_sliding, slip_along};

@@ -1,13 +1,12 @@
 //! Where the configuration puts what a textbook's figure shows: a point of the rack named
 //! on the rack's side, not inside the pinion above it; a cart drawn about its mass centre;
 //! the forces the problem applies (the pull on the cart);
-//! and a weight that would lie on a pin's reaction drawn aside, a dashed leader to its
-//! point.
+//! and a weight drawn from its mass centre, short of the contact below it.
 
 use super::drawings;
 use crate::support::problem as problem_path;
 use mbd_tutor::equations::Method;
-use mbd_tutor::render::draw::{Drawing, Item, Kind, Picture, View, CONFIGURATION};
+use mbd_tutor::render::draw::{Drawing, Item, Kind, Picture, View, BESIDE_A_TABLE, CONFIGURATION};
 
 fn pictures(name: &str, method: Method) -> Vec<Drawing> {
     let problem = mbd_tutor::problem::load_file(&problem_path(name)).expect("a bundled problem");
@@ -25,11 +24,14 @@ fn body<'a>(picture: &'a Picture, name: &str) -> &'a [Item] {
         .unwrap_or_else(|| panic!("no body {name}"))
 }
 
-/// Where a label of plain text `plain` stands.
+/// Where a label of plain text `plain` stands (alone, or named with the other points at
+/// its dot: `R^*, S`).
 fn label_at(picture: &Picture, plain: &str) -> [f64; 2] {
     (picture.texts.iter())
         .find_map(|t| match t {
-            Item::Text { at, label, .. } if label.plain == plain => Some(*at),
+            Item::Text { at, label, .. } if label.plain.split(", ").any(|n| n == plain) => {
+                Some(*at)
+            }
             _ => None,
         })
         .unwrap_or_else(|| panic!("no label {plain}"))
@@ -104,32 +106,52 @@ fn the_cart_is_drawn_about_its_mass_centre_with_the_pull_on_it() {
 }
 
 #[test]
-fn a_weight_on_a_pins_reaction_line_is_drawn_aside_with_a_leader() {
+fn a_weight_hangs_from_its_mass_centre() {
+    // A wheel on a pin at its centre (its vertical reaction drawn up from there), a ball
+    // and a disc on their contacts (the normal force arriving at the contact below):
+    // the weight is drawn from the mass centre itself, with no leader, and stops short of
+    // the contact's point on its line. Each as drawn and as its handout prints it.
     for (name, method, body) in [
         ("gear-pair-torque", Method::MotionLaw, "A"),
         ("rack-and-pinion", Method::MotionLaw, "P"),
+        ("bowling-ball", Method::MotionLaw, "B"),
+        ("disc-in-cylinder", Method::Lagrange, "D"),
     ] {
         let pictures = pictures(name, method);
         let free_body = (pictures.iter())
             .find(|d| d.free_body == body)
             .unwrap_or_else(|| panic!("{name}: no free body {body}"));
-        let picture = &free_body.picture;
-        let weight = (picture.arrows.iter())
-            .find(|a| a.kind == Kind::Gravity)
-            .expect("a weight");
-        let centre = (picture.marks.iter())
-            .find(|m| m.id == format!("cm-{body}"))
-            .expect("the mass centre")
-            .at;
-        let (from, to) = weight.leader.expect("a leader");
-        assert_eq!(from, centre, "{name}");
-        assert!(to == weight.tail || to == weight.head, "{name}");
-        // Straight down the page still, a clear gap to the side of the centre.
-        assert!((weight.head[0] - weight.tail[0]).abs() < 1e-6, "{name}");
-        assert!(
-            (weight.tail[0] - centre[0]).abs() >= 14.0,
-            "{name}: {weight:?}"
-        );
+        let printed = free_body.laid_out_in(BESIDE_A_TABLE);
+        for picture in [&free_body.picture, printed.as_ref()] {
+            let weight = (picture.arrows.iter())
+                .find(|a| a.kind == Kind::Gravity)
+                .expect("a weight");
+            let centre = (picture.marks.iter())
+                .find(|m| m.id == format!("cm-{body}"))
+                .expect("the mass centre")
+                .at;
+            assert!(weight.leader.is_none(), "{name}: {weight:?}");
+            let at = |p: [f64; 2]| (p[0] - centre[0]).hypot(p[1] - centre[1]) < 1e-6;
+            assert!(at(weight.tail) || at(weight.head), "{name}: {weight:?}");
+            // Straight down the page.
+            assert!((weight.head[0] - weight.tail[0]).abs() < 1e-6, "{name}");
+            assert!(weight.head[1] > weight.tail[1], "{name}");
+            // Every other force's point straight below the centre lies past the tip.
+            for other in picture
+                .marks
+                .iter()
+                .filter(|m| m.id != format!("cm-{body}"))
+            {
+                let below = other.at[1] - centre[1];
+                if (other.at[0] - centre[0]).abs() < 1.0 && below > 1.0 && weight.tail == centre {
+                    assert!(
+                        weight.head[1] < other.at[1],
+                        "{name}: {weight:?} past {}",
+                        other.id
+                    );
+                }
+            }
+        }
     }
 }
 

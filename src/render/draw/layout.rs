@@ -14,10 +14,12 @@ use super::strokes::{
 };
 
 mod beside;
+mod captions;
 mod crossing;
 mod curl;
 mod labels;
 mod marks;
+pub use marks::{ARC, ROUND_A_VELOCITY, SENSE, SHORT_ANGLE};
 mod room;
 mod triad;
 mod velocity;
@@ -62,9 +64,23 @@ pub(super) struct Painter {
     /// The ground's lines drawn, each from one end to the other with the page's unit
     /// vector away from the ground: the unit vectors keep above them.
     pub(super) grounds: Vec<(P2, P2, P2)>,
+    /// Where the picture's velocities start (on the page): an angle's arc about one of
+    /// them goes round outside its arrow.
+    moving: Vec<P2>,
 }
 
 impl Painter {
+    /// What the scene's arrows and velocities take before anything is drawn: the
+    /// straight forces' points and directions, and where the velocities start.
+    fn survey(&mut self, scene: &Scene) {
+        self.moving = self.velocities(&scene.shapes);
+        self.straight = (scene.arrows.iter())
+            .filter(|a| !(a.couple && scene.planar))
+            .map(|a| (self.at(a.at), a.direction))
+            .collect();
+        self.others = self.other_forces(&scene.arrows);
+    }
+
     pub(super) fn at(&self, p: P3) -> P2 {
         p2add(self.projection.point(p), self.shift)
     }
@@ -326,28 +342,19 @@ impl Painter {
         // drawn at the mass centre, may stand beside a bar or another arrow.
         let pushes = self.pushes_at(arrow, at, u, length);
         let point = at;
-        let mut at = if arrow.kind == super::scene::Kind::Inertia {
+        let mut at = if arrow.kind == super::scene::Kind::Inertia && !arrow.couple {
             self.beside_bodies(at, u)
         } else if arrow.couple {
             // A moment vector is free: off the arrows it would cross or lie on.
-            self.free_couple(at, u, length)
+            self.free_couple(at, u, length, arrow.kind == super::scene::Kind::Inertia)
         } else if pushes {
             p2add(at, p2scale(u, -length))
         } else {
             at
         };
+        let mut length = length;
         if arrow.kind == super::scene::Kind::Gravity && !arrow.couple {
-            if let Some(moved) = self.weight_aside(at, u, length) {
-                // The leader joins the point to the arrow's end nearest it.
-                let end = if pushes {
-                    p2add(moved, p2scale(u, length))
-                } else {
-                    moved
-                };
-                self.thin_dashed(point, end);
-                drawn.leader = Some((point, end));
-                at = moved;
-            }
+            (at, length) = self.weight(&mut drawn, (point, at), u, (length, pushes));
         }
         drawn.tail = at;
         let tip = p2add(at, p2scale(u, length));
@@ -414,29 +421,6 @@ impl Painter {
     }
 }
 
-impl Painter {
-    /// The captions of the marked points wait with the other labels, ahead of the arrows'
-    /// (an arrow's label can move out along its arrow; a caption must stay at its point):
-    /// a point on a body's edge keeps its caption outside the bodies where it can, a mass
-    /// centre beside it.
-    fn caption_marks(&mut self, markers: &[super::scene::Marker], marks: &[Mark]) {
-        let mut captions = Vec::new();
-        self.owners = markers.iter().map(|m| m.on.clone()).collect();
-        for (k, (m, mark)) in markers.iter().zip(marks).enumerate() {
-            if let Some(caption) = &m.caption {
-                let beside = if m.role == Role::Center {
-                    Beside::Caption(k)
-                } else {
-                    Beside::Point(k)
-                };
-                let toward = -std::f64::consts::FRAC_PI_4;
-                captions.push((mark.at, toward, caption.clone(), Ink::Black, beside));
-            }
-        }
-        self.pending.splice(0..0, captions);
-    }
-}
-
 /// Lays `scene` out for `view`.
 pub fn lay_out(scene: &Scene, view: View) -> Picture {
     lay_out_with(scene, view, 1.0)
@@ -475,12 +459,9 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         others: Vec::new(),
         owners: Vec::new(),
         grounds: Vec::new(),
+        moving: Vec::new(),
     };
-    painter.straight = (scene.arrows.iter())
-        .filter(|a| !(a.couple && scene.planar))
-        .map(|a| (painter.at(a.at), a.direction))
-        .collect();
-    painter.others = painter.other_forces(&scene.arrows);
+    painter.survey(scene);
     for shape in scene
         .shapes
         .iter()

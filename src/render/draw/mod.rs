@@ -32,7 +32,7 @@ mod tikz;
 
 pub use fit::CONTENT;
 pub use motion::{Body, Gauge, Motion, Part, Placed, Sheet, TITLE_STRIP};
-pub use picture::{DrawnArrow, Item, Picture, Projection, View};
+pub use picture::{DrawnArrow, Ink, Item, Picture, Projection, View};
 pub use place::text_size;
 pub use scene::{Arrow, BodyKind, Kind, Label, Marker, Role, Scene, Shape};
 pub use strokes::in_lane;
@@ -117,7 +117,14 @@ impl Drawing {
     }
 
     fn figure_in(&self, room: tikz::Size) -> crate::render::context::Figure {
-        let svg = self.svg(&format!("{}-", self.name));
+        // A free body's page heads it with its name already; the configuration's caption
+        // says which state it shows.
+        let svg = svg::export_with(
+            &self.picture,
+            &self.title,
+            &format!("{}-", self.name),
+            self.free_body.is_empty(),
+        );
         crate::render::context::Figure {
             // The XML declaration-free SVG element, one line per element, no blank lines
             // (a blank line would end a Markdown HTML block).

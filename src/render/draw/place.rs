@@ -15,9 +15,19 @@ pub struct Box2 {
     pub half: P2,
 }
 
+/// The least space (px) between two labels side by side on one line: closer, `T` beside
+/// `O_A` reads as the product `T O_A`.
+const BETWEEN_LABELS: f64 = 5.0;
+
 impl Box2 {
     fn overlaps(&self, other: &Box2) -> bool {
         (self.center[0] - other.center[0]).abs() < self.half[0] + other.half[0]
+            && (self.center[1] - other.center[1]).abs() < self.half[1] + other.half[1]
+    }
+
+    /// Whether another label at `other` overlaps this one or runs into it on its line.
+    fn crowds(&self, other: &Box2) -> bool {
+        (self.center[0] - other.center[0]).abs() < self.half[0] + other.half[0] + BETWEEN_LABELS
             && (self.center[1] - other.center[1]).abs() < self.half[1] + other.half[1]
     }
 
@@ -124,7 +134,7 @@ impl Obstacles {
                 return false;
             }
         }
-        !(self.labels.iter().any(|o| o.overlaps(b))
+        !(self.labels.iter().any(|o| o.crowds(b))
             || self.boxes.iter().any(|o| o.overlaps(b))
             || self.segments.iter().any(|(p, q, pad)| {
                 let wide = Box2 {
@@ -147,6 +157,7 @@ impl Obstacles {
             }
         }
         cost += 50 * self.labels.iter().filter(|o| o.overlaps(b)).count();
+        cost += 5 * self.labels.iter().filter(|o| o.crowds(b)).count();
         cost += 10 * self.boxes.iter().filter(|o| o.overlaps(b)).count();
         cost += self
             .segments

@@ -334,6 +334,13 @@ pub(super) fn title_text(title: &str) -> String {
 
 /// The picture as an SVG document; every id (and `data-at`) starts with `prefix`.
 pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
+    export_with(picture, title, prefix, true)
+}
+
+/// The picture as [`export`] writes it, its title drawn over it only when `drawn_title`
+/// (a page that heads the picture with its title leaves it out, as the LaTeX does); the
+/// `<title>` element names it either way.
+pub fn export_with(picture: &Picture, title: &str, prefix: &str, drawn_title: bool) -> String {
     let mut out = String::new();
     let projection: Vec<String> = picture
         .projection
@@ -369,7 +376,11 @@ pub fn export(picture: &Picture, title: &str, prefix: &str) -> String {
     arrows(&mut out, picture, prefix);
     out.push_str("<g class=\"labels\" fill=\"none\">\n");
     // A run of labels of one colour shares it, given once.
-    let mut texts = picture.texts.iter().peekable();
+    let mut texts = picture
+        .texts
+        .iter()
+        .skip(usize::from(!drawn_title))
+        .peekable();
     while let Some(t) = texts.next() {
         let Item::Text { ink, .. } = t else {
             item(&mut out, t);

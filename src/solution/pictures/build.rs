@@ -2,12 +2,12 @@
 
 use super::joint_symbols;
 use super::load_symbols::{factor_tex, magnitude_symbol};
-use super::numbers::{add, norm, scale, sub, unit, Numbers, P3};
+use super::numbers::{norm, scale, sub, unit, Numbers, P3};
 use crate::equations::Derivation;
 use crate::mechanics::ComponentKind;
 use crate::plan::{is_external, Action, ActionKind, Source};
 use crate::problem::{BodyId, ForcePoint, LoadKind, PointRef};
-use crate::render::draw::{Arrow, Gauge, Kind, Label, Marker, Role, Scene, Shape};
+use crate::render::draw::{Arrow, Kind, Label, Marker, Role, Scene, Shape};
 use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 
 /// What every free-body picture's arrows mean, in one short line: every arrow is drawn
@@ -15,6 +15,11 @@ use crate::symbolic::{latex, latex_name, latex_unit_vector, simplify, Expr};
 /// their positive senses, known forces the way they act at the state drawn.
 pub const FREE_BODY_LEGEND: &str =
     "Not to scale. Unknowns (red) along + axes; known forces as they act.";
+
+/// [`FREE_BODY_LEGEND`] where a free body carries a reaction's unknowns on the joint's
+/// parent, drawn opposite the + axes: the equal and opposite of its partner's.
+pub const FREE_BODY_LEGEND_THIRD_LAW: &str = "Not to scale. Unknowns (red) along + axes, \
+     or opposite their partner's by Newton's third law; known forces as they act.";
 
 /// What every picture of one problem shares.
 pub struct Setting<'a, 'm, 'p> {
@@ -198,50 +203,6 @@ impl Setting<'_, '_, '_> {
         }
     }
 
-    /// Angle arcs (each with its dashed line where the child lay at zero) and dimension
-    /// lines for the coordinates; a distance that is zero now is left out.
-    fn coordinates(&self, shapes: &mut Vec<Shape>) {
-        for gauge in super::gauges::gauges(self.numbers, self.size) {
-            let value =
-                (self.numbers.values).get(&self.problem().coordinate_symbol(gauge.coordinate, 0));
-            let label = match gauge.at {
-                // A dimension line is drawn the way it points: a coordinate below zero is
-                // the length of the opposite way, −y, not y.
-                Some(Gauge::Distance { .. }) if value < 0.0 => {
-                    Label::from_tex(&format!("-{}", gauge.label.tex))
-                }
-                _ => gauge.label,
-            };
-            match gauge.at {
-                Some(Gauge::Angle {
-                    center,
-                    from,
-                    axis,
-                    angle,
-                    reference,
-                }) => {
-                    shapes.push(Shape::Dashed {
-                        from: center,
-                        to: add(center, scale(from, reference)),
-                    });
-                    shapes.push(Shape::Angle {
-                        center,
-                        from,
-                        axis,
-                        angle,
-                        label,
-                    });
-                }
-                Some(Gauge::Distance { from, to, .. })
-                    if norm(sub(to, from)) > 1e-6 * self.size =>
-                {
-                    shapes.push(Shape::Distance { from, to, label });
-                }
-                _ => {}
-            }
-        }
-    }
-
     /// The picture of the whole system at the state.
     pub fn configuration(&self, title: String) -> Scene {
         // A floor goes under everything on it; the other surfaces after the bodies.
@@ -258,7 +219,7 @@ impl Setting<'_, '_, '_> {
         for j in 0..self.problem().joints.len() {
             shapes.extend(joint_symbols::joint(self.numbers, j, self.size));
         }
-        self.coordinates(&mut shapes);
+        shapes.extend(super::gauges::shapes(self.numbers, self.size));
         shapes.extend(super::velocities::velocities(self.numbers, self.size));
         self.triads(&mut shapes);
         let mut markers = self.markers(&bodies, true);
@@ -297,13 +258,16 @@ impl Setting<'_, '_, '_> {
         }
         let mut markers = self.markers(set, false);
         let mut arrows = Vec::new();
+        let mut third_law = false;
         for action in self
             .derivation
             .actions
             .iter()
             .filter(|a| is_external(a, set))
         {
-            arrows.extend(self.action_arrows(action, &mut markers));
+            let drawn = self.action_arrows(action, &mut markers);
+            third_law |= self.is_partners(action) && drawn.iter().any(|a| a.kind == Kind::Reaction);
+            arrows.extend(drawn);
         }
         let kinetic: Vec<Arrow> = set.iter().flat_map(|&b| self.inertia_arrows(b)).collect();
         // A joint inside the group carries no force on it: its pin is drawn with the bodies,
@@ -323,8 +287,22 @@ impl Setting<'_, '_, '_> {
             arrows,
             kinetic: Some((body_shapes, kinetic)),
             down: super::bodies::down(self.numbers),
-            legend: FREE_BODY_LEGEND.into(),
+            legend: if third_law {
+                FREE_BODY_LEGEND_THIRD_LAW
+            } else {
+                FREE_BODY_LEGEND
+            }
+            .into(),
             content,
+        }
+    }
+
+    /// Whether `action` is a reaction on its joint's parent, whose unknowns are drawn
+    /// opposite the + axes (the child feels them along).
+    fn is_partners(&self, action: &Action) -> bool {
+        match action.source {
+            Source::Reaction(j) => action.body != self.derivation.model.sites[j].child,
+            _ => false,
         }
     }
 

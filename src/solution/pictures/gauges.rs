@@ -5,7 +5,7 @@
 use super::numbers::{add, dot, norm, rotate, scale, sub, unit, Numbers, P3};
 use super::shapes;
 use crate::problem::{BodyId, JointKind};
-use crate::render::draw::{Gauge, Label};
+use crate::render::draw::{layout, Gauge, Label, Shape};
 use crate::symbolic::latex;
 
 /// One coordinate's mark.
@@ -161,4 +161,59 @@ fn angle(n: &Numbers, child: BodyId, at: P3, axis: P3, q: f64, size: f64) -> Opt
         angle: q,
         reference: 0.3 * size,
     })
+}
+
+/// Angle arcs (each with its dashed line where the child lay at zero) and dimension
+/// lines for the coordinates; a distance that is zero now is left out.
+pub(super) fn shapes(n: &Numbers, size: f64) -> Vec<Shape> {
+    let mut shapes = Vec::new();
+    for gauge in gauges(n, size) {
+        let value = (n.values).get(&n.model.problem.coordinate_symbol(gauge.coordinate, 0));
+        let label = match gauge.at {
+            // A dimension line is drawn the way it points: a coordinate below zero is
+            // the length of the opposite way, −y, not y.
+            Some(Gauge::Distance { .. }) if value < 0.0 => {
+                Label::from_tex(&format!("-{}", gauge.label.tex))
+            }
+            _ => gauge.label,
+        };
+        match gauge.at {
+            Some(Gauge::Angle {
+                center,
+                from,
+                axis,
+                angle,
+                reference,
+            }) => {
+                shapes.push(Shape::Dashed {
+                    from: center,
+                    to: add(center, scale(from, reference)),
+                });
+                // An angle below zero is drawn the way angles count, from the child's
+                // line back to where it lay at zero: the arc of −q, its head showing
+                // the positive sense.
+                let (from, angle, label) = if angle <= -layout::SHORT_ANGLE {
+                    let minus = Label {
+                        plain: format!("\u{2212}{}", label.plain),
+                        tex: format!("-{}", label.tex),
+                    };
+                    (rotate(from, axis, angle), -angle, minus)
+                } else {
+                    (from, angle, label)
+                };
+                shapes.push(Shape::Angle {
+                    center,
+                    from,
+                    axis,
+                    angle,
+                    label,
+                });
+            }
+            Some(Gauge::Distance { from, to, .. }) if norm(sub(to, from)) > 1e-6 * size => {
+                shapes.push(Shape::Distance { from, to, label });
+            }
+            _ => {}
+        }
+    }
+    shapes
 }

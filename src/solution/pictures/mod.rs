@@ -23,8 +23,7 @@ mod velocities;
 use crate::equations::Derivation;
 use crate::problem::BodyId;
 use crate::render::draw::{layout, Drawing, View};
-use crate::symbolic::fixed;
-pub use build::{point_id, FREE_BODY_LEGEND};
+pub use build::{point_id, FREE_BODY_LEGEND, FREE_BODY_LEGEND_THIRD_LAW};
 use numbers::{norm, sub, Numbers};
 
 /// The configuration of the derivation's problem at its initial state, for the student's
@@ -34,9 +33,22 @@ pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
     let state = problem.initial_state();
     let at = (state.t, state.q.as_slice(), state.rates.as_slice());
     let names = crate::solution::shown_names::shown_names(&derivation.model);
-    drawings(derivation, at, None, View::Isometric, (true, &names))
+    drawings(derivation, at, None, View::Isometric, (true, &names, START))
         .into_iter()
         .next()
+}
+
+/// The legend of the free bodies among `drawings`: the one that names Newton's third law
+/// where any of them draws a reaction opposite its + axes.
+pub fn free_body_legend(drawings: &[Drawing]) -> &'static str {
+    if drawings
+        .iter()
+        .any(|d| d.scene.legend == FREE_BODY_LEGEND_THIRD_LAW)
+    {
+        FREE_BODY_LEGEND_THIRD_LAW
+    } else {
+        FREE_BODY_LEGEND
+    }
 }
 
 /// The free bodies of the plan, in the order its rows first use them, then one for each
@@ -137,12 +149,13 @@ pub fn draw(
     view: View,
 ) -> Vec<Drawing> {
     let names = crate::solution::shown_names::shown_names(&derivation.model);
+    let when = format!("at t = {} s", signed(t));
     drawings(
         derivation,
         (t, q, rates),
         accelerations,
         view,
-        (true, &names),
+        (true, &names, &when),
     )
 }
 
@@ -160,24 +173,31 @@ pub fn draw_in_handout(
         at,
         accelerations,
         View::Isometric,
-        (true, &names),
+        (true, &names, START),
     )
 }
 
 /// The pictures of [`draw`] for a system at rest at `q`: the free bodies without kinetic
 /// diagrams (there are no inertia forces to draw).
 pub fn draw_at_rest(derivation: &Derivation, q: &[f64], rates: &[f64], view: View) -> Vec<Drawing> {
-    drawings(derivation, (0.0, q, rates), None, view, (false, &[]))
+    drawings(
+        derivation,
+        (0.0, q, rates),
+        None,
+        view,
+        (false, &[], "at rest"),
+    )
 }
 
 /// The pictures at time, coordinates and rates `(t, q, rates)`; `kinetic` with the
-/// kinetic diagrams; every label with `names` replaced (see `names`).
+/// kinetic diagrams; every label with `names` replaced (see `names`); `when` says in the
+/// configuration's caption which state it shows (`at the start`).
 fn drawings(
     derivation: &Derivation,
     (t, q, rates): (f64, &[f64], &[f64]),
     accelerations: Option<&[f64]>,
     view: View,
-    (kinetic, names): (bool, &[(String, String)]),
+    (kinetic, names, when): (bool, &[(String, String)], &str),
 ) -> Vec<Drawing> {
     let model = &derivation.model;
     let problem = model.problem;
@@ -192,19 +212,7 @@ fn drawings(
         accelerations: accelerations.is_some(),
         size,
     };
-    let state: Vec<String> = problem
-        .coordinates
-        .iter()
-        .zip(q)
-        .map(|(c, v)| {
-            let symbol = crate::render::unicode_of(&crate::symbolic::latex_name(&c.name));
-            format!("{symbol} = {}", fixed(*v))
-        })
-        .collect();
-    let mut title = format!("Configuration at {}", state.join(", "));
-    if t != 0.0 {
-        title.push_str(&format!(", t = {}", fixed(t)));
-    }
+    let title = configuration_caption(problem, when, q);
     let mut scene = setting.configuration(title.clone());
     names::rename(&mut scene, names);
     let mut out = vec![Drawing {
@@ -235,4 +243,32 @@ fn drawings(
         });
     }
     out
+}
+
+/// The caption of the configuration at the state a handout starts from.
+const START: &str = "at the start";
+
+/// The configuration's caption in a course's words: `The configuration at the start:
+/// q₁ = 0.7 rad, q₂ = −0.4 rad` (`when` is `at the start`), each coordinate with its unit,
+/// a minus sign for minus, and φ printed as LaTeX sets `\phi` (ϕ).
+pub fn configuration_caption(problem: &crate::problem::Problem, when: &str, q: &[f64]) -> String {
+    let state: Vec<String> = (problem.coordinates.iter().enumerate())
+        .zip(q)
+        .map(|((i, c), v)| {
+            let symbol = crate::render::unicode_of(&crate::symbolic::latex_name(&c.name));
+            let unit = crate::numeric::coordinate_unit(problem, i, 0);
+            format!("{} = {} {unit}", symbol.replace('φ', "ϕ"), signed(*v))
+        })
+        .collect();
+    format!("The configuration {when}: {}", state.join(", "))
+}
+
+/// A number as [`fixed`](crate::symbolic::fixed) writes it, with a minus sign (−) for its
+/// hyphen.
+fn signed(x: f64) -> String {
+    if x < 0.0 {
+        format!("\u{2212}{}", crate::symbolic::fixed(-x))
+    } else {
+        crate::symbolic::fixed(x)
+    }
 }

@@ -81,7 +81,7 @@ impl Painter {
 
     /// How many of the sample points along the arrow fall inside a body, and how many on
     /// an earlier arrow's line of another direction.
-    fn crowding(&self, at: P2, u: P2) -> (usize, usize) {
+    pub(super) fn crowding(&self, at: P2, u: P2) -> (usize, usize) {
         let points: Vec<P2> = SAMPLES.iter().map(|&t| p2add(at, p2scale(u, t))).collect();
         let bodies = points
             .iter()

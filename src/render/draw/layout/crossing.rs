@@ -4,10 +4,15 @@
 
 use super::super::picture::P2;
 use super::super::strokes::{p2add, p2scale};
+use super::beside::to_segment;
 use super::Painter;
 
 /// The part of each end of an arrow where another may meet it (px): its head, its tail.
 const END: f64 = 6.0;
+/// Two arrows within this angle (degrees) of one line and [`BESIDE`] of each other (px
+/// at 13 px labels) read as one.
+const FAN: f64 = 30.0;
+const BESIDE: f64 = 10.0;
 
 /// Whether the segments `a`–`b` and `c`–`d` cross, each one's ends on either side of the
 /// other's line.
@@ -75,10 +80,16 @@ impl Painter {
     /// is free, so it may end at its point or stand beside it, whichever of those (in
     /// that order, nearest first) crosses no arrow drawn before it; else the one that
     /// crosses fewest.
-    pub(super) fn free_couple(&self, at: P2, u: P2, length: f64) -> P2 {
+    pub(super) fn free_couple(&self, at: P2, u: P2, length: f64, inertia: bool) -> P2 {
         let across = [-u[1], u[0]];
         let mut tails = vec![at, p2add(at, p2scale(u, -length))];
-        for d in [16.0, 24.0, 32.0] {
+        // The kinetic diagram's moment vector may go further, off its m a*.
+        let offsets: &[f64] = if inertia {
+            &[16.0, 24.0, 32.0, 44.0, 56.0]
+        } else {
+            &[16.0, 24.0, 32.0]
+        };
+        for &d in offsets {
             for side in [1.0, -1.0] {
                 let moved = p2add(at, p2scale(across, side * d));
                 tails.push(moved);
@@ -87,7 +98,11 @@ impl Painter {
         }
         let mut best = (usize::MAX, at);
         for tail in tails {
-            let count = self.crossings(tail, p2add(tail, p2scale(u, length)));
+            let tip = p2add(tail, p2scale(u, length));
+            // In the kinetic diagram two arrows side by side read as one (a crossing
+            // worse still); a free body's couples keep off crossings only.
+            let fanned = if inertia { self.fanned(tail, tip) } else { 0 };
+            let count = 2 * self.crossings(tail, tip) + fanned;
             if count == 0 {
                 return tail;
             }
@@ -96,6 +111,32 @@ impl Painter {
             }
         }
         best.1
+    }
+
+    /// How many arrows drawn so far run within [`FAN`] of the arrow from `tail` to `tip`
+    /// and within [`BESIDE`] of it: two such arrows read as one (a moment vector beside
+    /// `m a*` at a mass centre).
+    fn fanned(&self, tail: P2, tip: P2) -> usize {
+        let u = [tip[0] - tail[0], tip[1] - tail[1]];
+        let lu = u[0].hypot(u[1]);
+        if lu == 0.0 {
+            return 0;
+        }
+        let close = FAN.to_radians().cos();
+        let samples: Vec<P2> = (1..=4)
+            .map(|k| p2add(tail, p2scale(u, f64::from(k) / 5.0)))
+            .collect();
+        (self.lines.iter())
+            .filter(|&&(a, b)| {
+                let v = [b[0] - a[0], b[1] - a[1]];
+                let lv = v[0].hypot(v[1]);
+                lv > 0.0
+                    && ((u[0] * v[0] + u[1] * v[1]) / (lu * lv)).abs() > close
+                    && samples
+                        .iter()
+                        .any(|&p| to_segment(p, a, b) < BESIDE * self.reach)
+            })
+            .count()
     }
 
     /// Whether an arrow `length` long along the unit `u` crosses fewer arrows drawn

@@ -7,6 +7,18 @@ use super::super::scene::Label;
 use super::super::strokes::{head, p2add, p2scale, p2unit};
 use super::Painter;
 
+/// An angle smaller than this (radians) has an arc too short to carry its head.
+pub const SHORT_ANGLE: f64 = 0.15;
+/// The sweep of the arc that shows a small angle's positive sense (radians, 45°).
+pub const SENSE: f64 = std::f64::consts::FRAC_PI_4;
+/// An angle's arc's radius on the page (px), and the most it grows to for a short angle.
+pub const ARC: f64 = 30.0;
+const LONGEST_ARC: f64 = 45.0;
+/// The least length (px) of an angle's arc, its head included, where its radius allows.
+const ARC_LENGTH: f64 = 28.0;
+/// The radius (px) of an arc about a velocity's point: past its arrow (36 px) and head.
+pub const ROUND_A_VELOCITY: f64 = 48.0;
+
 impl Painter {
     /// A bar through `points`: a black line with the body's colour inside.
     pub(super) fn bar(&mut self, points: &[P3]) {
@@ -47,14 +59,30 @@ impl Painter {
     }
 
     /// An angle's arc about `center` from the direction `from`, turning about `axis` by
-    /// `angle`, with its head and its label.
+    /// `angle`, with its head and its label. An angle too small for its arc to show which
+    /// way it counts (zero at the start) is drawn as the arc of its positive sense, a
+    /// fixed [`SENSE`] from `from`, its head showing the way it grows.
     pub(super) fn angle(&mut self, center: P3, (from, axis): (P3, P3), angle: f64, label: &Label) {
-        let r = 30.0 / self.scale;
+        let sweep = if angle.abs() < SHORT_ANGLE {
+            SENSE
+        } else {
+            angle
+        };
+        // A short angle's arc further out, long enough to carry its head and be seen; one
+        // about a velocity's point round outside its arrow.
+        let c = self.at(center);
+        let moving = (self.moving.iter()).any(|m| (m[0] - c[0]).hypot(m[1] - c[1]) < 1.0);
+        let radius = if moving {
+            ROUND_A_VELOCITY
+        } else {
+            (ARC_LENGTH / sweep.abs()).clamp(ARC, LONGEST_ARC)
+        };
+        let r = radius / self.scale;
         let v = cross(axis, from);
         let steps = 24;
         let points: Vec<P2> = (0..=steps)
             .map(|k| {
-                let t = angle * k as f64 / steps as f64;
+                let t = sweep * k as f64 / steps as f64;
                 let d = add(scale(from, t.cos()), scale(v, t.sin()));
                 self.at(add(center, scale(d, r)))
             })
@@ -64,13 +92,10 @@ impl Painter {
             points[n - 1][0] - points[n - 2][0],
             points[n - 1][1] - points[n - 2][1],
         ]) {
-            if angle.abs() > 0.15 {
-                let h = head(points[n - 1], u);
-                self.stroke(h.to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
-            }
+            let h = head(points[n - 1], u);
+            self.stroke(h.to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
         }
         let middle = points[n / 2];
-        let c = self.at(center);
         let toward = (middle[1] - c[1]).atan2(middle[0] - c[0]);
         self.stroke(points, 1.0, Ink::Grey, None, false);
         self.label(middle, toward, label, Ink::Black);

@@ -3,8 +3,8 @@
 //! (`<g class="velocity">`).
 
 use super::super::numbers::P3;
-use super::super::picture::{Ink, Item};
-use super::super::scene::Label;
+use super::super::picture::{Ink, Item, P2};
+use super::super::scene::{Label, Shape};
 use super::super::strokes::{head, p2add, p2scale, p2unit};
 use super::Painter;
 
@@ -14,6 +14,16 @@ const LENGTH: f64 = 36.0;
 const OFF: f64 = 7.0;
 
 impl Painter {
+    /// Where the velocities among `shapes` start, on the page.
+    pub(super) fn velocities(&self, shapes: &[Shape]) -> Vec<P2> {
+        (shapes.iter())
+            .filter_map(|s| match s {
+                Shape::Velocity { at, .. } => Some(self.at(*at)),
+                _ => None,
+            })
+            .collect()
+    }
+
     /// The velocity `label` at `at` along `direction` (in `N`).
     pub(super) fn velocity(&mut self, at: P3, direction: P3, label: &Label) {
         let Some(u) = p2unit(self.projection.direction(direction)) else {

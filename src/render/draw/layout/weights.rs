@@ -1,9 +1,11 @@
-//! A weight that would lie on another force's line (a pin's vertical reaction at a wheel's
-//! centre, the normal force under a disc, a pin force below a crank) or along a bar (an
-//! upright rocker's) is drawn a clear gap to the side, a thin dashed leader joining it to
-//! the mass centre it acts at: the two arrows read apart, and the point stays shown.
+//! A weight hangs from its mass centre, as a textbook draws it. Where it would run onto
+//! another force's line (the normal force under a disc) it is drawn shorter, ending a gap
+//! before that force's point; a force at the mass centre itself along its line is drawn
+//! from there the other way (a pin's vertical reaction at a wheel's centre). Only where
+//! even a short weight would not stand clear is it drawn a gap to the side, a thin dashed
+//! leader joining it to the mass centre it acts at.
 
-use super::super::picture::{Item, P2};
+use super::super::picture::{DrawnArrow, Item, P2};
 use super::super::scene::{Arrow, Kind};
 use super::super::strokes::{p2add, p2norm, p2scale, p2unit};
 use super::beside::to_segment;
@@ -15,10 +17,47 @@ const GAPS: [f64; 4] = [16.0, 22.0, 30.0, 40.0];
 const ON_A_LINE: f64 = 10.0;
 /// Two arrows within this angle (degrees) of one line are parallel.
 const PARALLEL: f64 = 10.0;
+/// The gap a shortened weight leaves before another force's point on its line (px at
+/// 13 px labels).
+const SHORT_OF: f64 = 9.0;
+/// The shortest a weight is drawn, as a fraction of an arrow's length.
+const SHORTEST: f64 = 0.45;
+/// Two points closer than this (px) are one point on the page.
+const ONE_POINT: f64 = 2.0;
 /// Where along the weight's arrow a bar is looked for (fractions of its length).
 const SAMPLES: [f64; 4] = [0.2, 0.4, 0.6, 0.8];
 
 impl Painter {
+    /// Where a weight's arrow starts and how long it is: from its mass centre `point`
+    /// (`at`, or a length above it where it `pushes`), shortened before a force ahead on
+    /// its line ([`weight_length`](Self::weight_length)); only where that does not serve,
+    /// a gap to the side with a dashed leader from `point` (set in `drawn`).
+    pub(super) fn weight(
+        &mut self,
+        drawn: &mut DrawnArrow,
+        (point, at): (P2, P2),
+        u: P2,
+        (length, pushes): (f64, bool),
+    ) -> (P2, f64) {
+        if !pushes {
+            if let Some(short) = self.weight_length(at, u, length) {
+                return (at, short);
+            }
+        }
+        let Some(moved) = self.weight_aside(at, u, length) else {
+            return (at, length);
+        };
+        // The leader joins the point to the arrow's end nearest it.
+        let end = if pushes {
+            p2add(moved, p2scale(u, length))
+        } else {
+            moved
+        };
+        self.thin_dashed(point, end);
+        drawn.leader = Some((point, end));
+        (moved, length)
+    }
+
     /// Where the straight forces of `arrows` other than weights act (on the page) and
     /// which way (a unit vector on the page).
     pub(super) fn other_forces(&self, arrows: &[Arrow]) -> Vec<(P2, P2)> {
@@ -29,6 +68,44 @@ impl Painter {
                 Some((self.at(a.at), u))
             })
             .collect()
+    }
+
+    /// How long a weight from its mass centre `tail` along the unit `u` is drawn, at most
+    /// `length`: shorter where another force's point lies ahead on its line, ending
+    /// [`SHORT_OF`] before it; `None` where that leaves less than [`SHORTEST`] of it, or it
+    /// would still lie on another force's line.
+    pub(super) fn weight_length(&self, tail: P2, u: P2, length: f64) -> Option<f64> {
+        let parallel = PARALLEL.to_radians().cos();
+        let mut reach = length;
+        for &(p, v) in &self.others {
+            if (u[0] * v[0] + u[1] * v[1]).abs() < parallel {
+                continue;
+            }
+            let d = [p[0] - tail[0], p[1] - tail[1]];
+            let along = d[0] * u[0] + d[1] * u[1];
+            let across = (d[0] * u[1] - d[1] * u[0]).abs();
+            if across >= ON_A_LINE * self.reach {
+                continue;
+            }
+            let same_way = u[0] * v[0] + u[1] * v[1] > 0.0;
+            // Whether the other force, started at its point, would run inside a body: it is
+            // then drawn ending there, from outside (a contact's push).
+            let pushes = self.crowding(p, v).0 + 1 >= SAMPLES.len();
+            if p2norm(d) < ONE_POINT {
+                // At the mass centre itself: a force the other way goes from there the
+                // other way; one the same way would lie on it.
+                if same_way {
+                    return None;
+                }
+            } else if along > 0.0 && same_way != pushes {
+                // Ahead on its line, drawn away from the weight: the weight stops short.
+                reach = reach.min(along - SHORT_OF * self.reach);
+            } else if along > -length {
+                // Drawn towards the weight, or behind it within its reach.
+                return None;
+            }
+        }
+        (reach >= SHORTEST * length).then_some(reach)
     }
 
     /// The tail a weight from `tail` along the unit `u`, `length` long, is drawn from
