@@ -47,7 +47,9 @@ pub fn simulation(
         ));
     }
     solution.simulation.note = notes.join(" ");
-    solution.simulation.checks = checks_said(problem, checks, trajectory);
+    // The work of the applied forces and couples, where the energy changes by it alone.
+    let work = crate::numeric::load_work(problem, trajectory);
+    solution.simulation.checks = checks_said(problem, checks, trajectory, work.as_deref());
     if let Some(work) = energy_changed_by_work(checks, trajectory) {
         solution.simulation.checks.push(work);
     }
@@ -65,7 +67,7 @@ pub fn simulation(
             })
             .collect()
     };
-    let energy_series = energy_series(problem, trajectory);
+    let energy_series = energy_series(problem, trajectory, work.as_deref());
     let energy_title = super::plot_titles::energy(problem, &energy_series);
     // Angles of very different ranges (a top's spin, precession and nutation) each on an
     // axis of their own, named by what they are: on one axis the smaller would look flat.
@@ -144,6 +146,7 @@ fn checks_said(
     problem: &Problem,
     checks: &[crate::numeric::Check],
     trajectory: &Trajectory,
+    work: Option<&[f64]>,
 ) -> Vec<Check> {
     checks
         .iter()
@@ -160,7 +163,14 @@ fn checks_said(
             // Said as physics, in the course's words; the check's own sentence only where
             // the motion does not hold it.
             let own = detail(problem, c);
-            let said = super::confirmation::sentence(c, trajectory, own.as_str());
+            let said = match (c.kind, work) {
+                (CheckKind::EnergyBalanceWithLoads, Some(work)) => {
+                    super::confirmation::work_balance(problem, trajectory, work, c.passed)
+                }
+                _ => None,
+            };
+            let said =
+                said.unwrap_or_else(|| super::confirmation::sentence(c, trajectory, own.as_str()));
             Check {
                 name: c.name().to_string(),
                 value: fixed(c.value),
@@ -184,6 +194,7 @@ fn energy_changed_by_work(
             CheckKind::EnergyConservation
                 | CheckKind::EnergyNeverRises
                 | CheckKind::EnergyBalanceWithDrives
+                | CheckKind::EnergyBalanceWithLoads
         )
     });
     let total = trajectory.series("total")?;
@@ -204,8 +215,10 @@ fn energy_changed_by_work(
     })
 }
 
-/// The kinetic, potential and total energy against time, for the energy's plot.
-fn energy_series(problem: &Problem, trajectory: &Trajectory) -> Vec<Series> {
+/// The kinetic, potential and total energy against time, for the energy's plot; with the
+/// applied loads' `work`, also `E − W`, which stays at `E(0)` where the energy changes by
+/// that work alone.
+fn energy_series(problem: &Problem, trajectory: &Trajectory, work: Option<&[f64]>) -> Vec<Series> {
     // V and E from the problem's datum, as the answers give them, not from the start.
     let datum = trajectory.potential_at_start;
     // T is the kinetic energy, unless the problem names a constant T (a drive torque).
@@ -214,7 +227,7 @@ fn energy_series(problem: &Problem, trajectory: &Trajectory) -> Vec<Series> {
         true => ("K", "E = K + V"),
         false => ("T", "E = T + V"),
     };
-    [
+    let mut series: Vec<Series> = [
         ("kinetic", kinetic, 0.0),
         ("potential", "V", datum),
         ("total", total, datum),
@@ -226,7 +239,16 @@ fn energy_series(problem: &Problem, trajectory: &Trajectory) -> Vec<Series> {
             points: points.into_iter().map(|(t, e)| (t, e + shift)).collect(),
         })
     })
-    .collect()
+    .collect();
+    if let (Some(work), Some(total)) = (work, trajectory.series("total")) {
+        series.push(Series {
+            name: Label::math("E - W", ""),
+            points: (total.into_iter().zip(work))
+                .map(|((t, e), w)| (t, e + datum - w))
+                .collect(),
+        });
+    }
+    series
 }
 
 /// The total energy's change, (E − E₀)/|E₀|, on an axis of its own, since beside the
