@@ -133,7 +133,7 @@ fn terms(line: &str) -> Vec<(char, String)> {
 /// angle θ, the other factors alike: their sum is the term without either. Hidden forms
 /// count too: `s_θ c²_θ M + s³_θ M` is `s_θ M`.
 fn pythagorean_pair(line: &str) -> Option<String> {
-    let found: Vec<(char, String, Vec<(String, i32)>)> = terms(line)
+    let found: Vec<(char, String, Factors)> = terms(line)
         .into_iter()
         .map(|(sign, term)| {
             let factors = factors(&term);
@@ -164,10 +164,13 @@ fn pythagorean_pair(line: &str) -> Option<String> {
     None
 }
 
+/// A term's factors, each with its power.
+type Factors = Vec<(String, i32)>;
+
 /// A term's factors, split where a space separates them outside braces, each with its
 /// power (`s_{\theta}^{3}` is `s_{\theta}` to 3), sorted so two orders compare alike.
-fn factors(term: &str) -> Vec<(String, i32)> {
-    let mut out: Vec<(String, i32)> = Vec::new();
+fn factors(term: &str) -> Factors {
+    let mut out: Factors = Vec::new();
     let (mut depth, mut current) = (0i32, String::new());
     let mut pieces = Vec::new();
     for c in term.chars() {
@@ -198,7 +201,7 @@ fn factors(term: &str) -> Vec<(String, i32)> {
 }
 
 /// `factors` with `key`'s power changed by `by`, dropped at zero.
-fn adjust(factors: &mut Vec<(String, i32)>, key: &str, by: i32) {
+fn adjust(factors: &mut Factors, key: &str, by: i32) {
     match factors.iter_mut().find(|(k, _)| k == key) {
         Some(entry) => entry.1 += by,
         None => factors.push((key.to_string(), by)),

@@ -92,8 +92,7 @@ pub fn work_balance(
         ));
     }
     Some(format!(
-        "{head}, and along the motion $E(t) - E(0)$ differs from $W(t)$ by at most {} J \
-         ($E - W$ stays level on the energy plot).",
+        "{head}, and along the motion $E(t) - E(0)$ differs from $W(t)$ by at most {} J.",
         num(worst)
     ))
 }

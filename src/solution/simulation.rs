@@ -67,7 +67,7 @@ pub fn simulation(
             })
             .collect()
     };
-    let energy_series = energy_series(problem, trajectory, work.as_deref());
+    let energy_series = energy_series(problem, trajectory);
     let energy_title = super::plot_titles::energy(problem, &energy_series);
     // Angles of very different ranges (a top's spin, precession and nutation) each on an
     // axis of their own, named by what they are: on one axis the smaller would look flat.
@@ -215,10 +215,8 @@ fn energy_changed_by_work(
     })
 }
 
-/// The kinetic, potential and total energy against time, for the energy's plot; with the
-/// applied loads' `work`, also `E − W`, which stays at `E(0)` where the energy changes by
-/// that work alone.
-fn energy_series(problem: &Problem, trajectory: &Trajectory, work: Option<&[f64]>) -> Vec<Series> {
+/// The kinetic, potential and total energy against time, for the energy's plot.
+fn energy_series(problem: &Problem, trajectory: &Trajectory) -> Vec<Series> {
     // V and E from the problem's datum, as the answers give them, not from the start.
     let datum = trajectory.potential_at_start;
     // T is the kinetic energy, unless the problem names a constant T (a drive torque).
@@ -227,7 +225,7 @@ fn energy_series(problem: &Problem, trajectory: &Trajectory, work: Option<&[f64]
         true => ("K", "E = K + V"),
         false => ("T", "E = T + V"),
     };
-    let mut series: Vec<Series> = [
+    [
         ("kinetic", kinetic, 0.0),
         ("potential", "V", datum),
         ("total", total, datum),
@@ -239,16 +237,7 @@ fn energy_series(problem: &Problem, trajectory: &Trajectory, work: Option<&[f64]
             points: points.into_iter().map(|(t, e)| (t, e + shift)).collect(),
         })
     })
-    .collect();
-    if let (Some(work), Some(total)) = (work, trajectory.series("total")) {
-        series.push(Series {
-            name: Label::math("E - W", ""),
-            points: (total.into_iter().zip(work))
-                .map(|((t, e), w)| (t, e + datum - w))
-                .collect(),
-        });
-    }
-    series
+    .collect()
 }
 
 /// The total energy's change, (E − E₀)/|E₀|, on an axis of its own, since beside the
