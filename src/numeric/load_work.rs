@@ -74,8 +74,9 @@ pub fn applied_power(problem: &Problem) -> Option<Expr> {
 }
 
 /// The work `W(t)` of the applied loads (their power from the kinematics) from the start
-/// to each row of `trajectory` (J), integrated over each output step by three-point Gauss–Legendre on the quintic through
-/// the coordinates, rates and accelerations at its ends; `None` where it does not apply.
+/// to each row of `trajectory` (J), integrated over each output step by three-point
+/// Gauss–Legendre on the quintic through the coordinates, rates and accelerations at its
+/// ends; `None` where it does not apply.
 pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>> {
     let power = applied_power(problem)?;
     let program = Program::compile(&state_symbols(problem), &[power]);
