@@ -129,48 +129,100 @@ fn terms(line: &str) -> Vec<(char, String)> {
         .collect()
 }
 
-/// A pair of terms of `line` that differ only by s²_θ against c²_θ of one angle θ, with
-/// one sign: their sum is the term without either.
+/// A pair of terms of `line` with one sign that differ only by s²_θ against c²_θ of one
+/// angle θ, the other factors alike: their sum is the term without either. Hidden forms
+/// count too: `s_θ c²_θ M + s³_θ M` is `s_θ M`.
 fn pythagorean_pair(line: &str) -> Option<String> {
-    let found = terms(line);
-    for (sign, term) in &found {
-        let mut from = 0;
-        while let Some(at) = term[from..].find("s_{") {
-            let start = from + at;
-            let rest = &term[start + 3..];
-            // The angle: the braces' content, nested braces allowed.
-            let mut depth = 1;
-            let end = rest.char_indices().find_map(|(k, c)| {
-                match c {
-                    '{' => depth += 1,
-                    '}' => depth -= 1,
-                    _ => {}
-                }
-                (depth == 0).then_some(k)
-            })?;
-            let angle = &rest[..end];
-            let after = &rest[end + 1..];
-            if let Some(tail) = after.strip_prefix("^{2}") {
-                let other = format!("{}c_{{{angle}}}^{{2}}{tail}", &term[..start]);
-                if found.iter().any(|(s, t)| s == sign && *t == other) {
-                    return Some(format!("{term} + {other}"));
-                }
+    let found: Vec<(char, String, Factors)> = terms(line)
+        .into_iter()
+        .map(|(sign, term)| {
+            let factors = factors(&term);
+            (sign, term, factors)
+        })
+        .collect();
+    for (sign, term, factors) in &found {
+        for (key, power) in factors {
+            let Some(angle) = key.strip_prefix("s_") else {
+                continue;
+            };
+            if *power < 2 {
+                continue;
             }
-            from = start + 3;
+            // s^n_θ → s^(n−2)_θ c²_θ
+            let mut other = factors.clone();
+            let cosine = format!("c_{angle}");
+            adjust(&mut other, key, -2);
+            adjust(&mut other, &cosine, 2);
+            let partner = found
+                .iter()
+                .find(|(s, t, f)| s == sign && t != term && *f == other);
+            if let Some((_, partner, _)) = partner {
+                return Some(format!("{term} + {partner}"));
+            }
         }
     }
     None
+}
+
+/// A term's factors, each with its power.
+type Factors = Vec<(String, i32)>;
+
+/// A term's factors, split where a space separates them outside braces, each with its
+/// power (`s_{\theta}^{3}` is `s_{\theta}` to 3), sorted so two orders compare alike.
+fn factors(term: &str) -> Factors {
+    let mut out: Factors = Vec::new();
+    let (mut depth, mut current) = (0i32, String::new());
+    let mut pieces = Vec::new();
+    for c in term.chars() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            _ => {}
+        }
+        if c == ' ' && depth == 0 {
+            pieces.push(std::mem::take(&mut current));
+        } else {
+            current.push(c);
+        }
+    }
+    pieces.push(current);
+    for piece in pieces.into_iter().filter(|p| !p.is_empty()) {
+        let (key, power) = match piece.rsplit_once("^{") {
+            Some((base, p)) if !base.is_empty() => match p.trim_end_matches('}').parse() {
+                Ok(n) => (base.to_string(), n),
+                Err(_) => (piece.clone(), 1),
+            },
+            _ => (piece.clone(), 1),
+        };
+        adjust(&mut out, &key, power);
+    }
+    out.sort();
+    out
+}
+
+/// `factors` with `key`'s power changed by `by`, dropped at zero.
+fn adjust(factors: &mut Factors, key: &str, by: i32) {
+    match factors.iter_mut().find(|(k, _)| k == key) {
+        Some(entry) => entry.1 += by,
+        None => factors.push((key.to_string(), by)),
+    }
+    factors.retain(|(_, p)| *p != 0);
+    factors.sort();
 }
 
 #[test]
 fn the_pythagorean_pair_is_found_and_only_it() {
     let line = "-R g m + [R m \\ddot{x} s_{\\theta}^{2} + R m \\ddot{x} c_{\\theta}^{2}] = 0";
     assert!(pythagorean_pair(line).is_some());
+    // The hidden form: s c² + s³ = s, the factors in any order.
+    let hidden = "-R g m + [h \\dot{\\psi}^{2} s_{\\psi} s_{\\theta} c_{\\theta}^{2} + h \\dot{\\psi}^{2} s_{\\psi} s_{\\theta}^{3}] = 0";
+    assert!(pythagorean_pair(hidden).is_some(), "{hidden}");
     for fine in [
         "R m \\ddot{x} s_{\\theta}^{2} - R m \\ddot{x} c_{\\theta}^{2} = 0",
         "R m \\ddot{x} s_{\\theta}^{2} + m \\ddot{x} c_{\\theta}^{2} = 0",
         "s_{\\theta}^{2} + c_{\\phi}^{2} = 0",
         "s_{\\theta} c_{\\theta} = 0",
+        "h s_{\\psi} s_{\\theta} c_{\\theta}^{2} + h s_{\\psi} s_{\\theta}^{2} = 0",
     ] {
         assert_eq!(pythagorean_pair(fine), None, "{fine}");
     }

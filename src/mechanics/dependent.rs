@@ -119,9 +119,13 @@ pub fn choose(
                 names(&ignored)
             ));
         }
+        // Every dependent rate: a dependent coordinate's rate is one too (a disc's height
+        // on a cart, ḣ = 0), beside the rates only the velocity constraints fix.
+        let mut listed = dependent_rates.clone();
+        listed.sort_unstable();
         let mut note = format!(
             "Dependent rates (solved from the velocity constraints): {}",
-            rate_only
+            listed
                 .iter()
                 .map(|&i| format!("`{}'`", problem.coordinates[i].name))
                 .collect::<Vec<_>>()

@@ -24,6 +24,8 @@ pub enum CheckKind {
     ConstraintDrift,
     /// With prescribed motion, the energy changes by the drives' work.
     EnergyBalanceWithDrives,
+    /// With applied forces and couples, the energy changes by their work.
+    EnergyBalanceWithLoads,
     /// Every rough contact's normal force presses (a contact is two-sided in the model,
     /// where a real one would separate).
     ContactsPress,
@@ -39,6 +41,7 @@ impl CheckKind {
             CheckKind::SmallOscillationPeriod => "small-oscillation period",
             CheckKind::ConstraintDrift => "constraint drift",
             CheckKind::EnergyBalanceWithDrives => "energy balance with the drives' work",
+            CheckKind::EnergyBalanceWithLoads => "energy balance with the applied loads' work",
             CheckKind::ContactsPress => "contacts press",
         }
     }

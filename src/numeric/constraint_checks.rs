@@ -211,7 +211,7 @@ pub fn drive_energy_check(
 }
 
 /// Three-point Gauss–Legendre on [0, 1]: (node, weight), exact for polynomials of degree 5.
-const GAUSS_LEGENDRE_3: [(f64, f64); 3] = [
+pub(super) const GAUSS_LEGENDRE_3: [(f64, f64); 3] = [
     (0.112_701_665_379_258_3, 5.0 / 18.0),
     (0.5, 8.0 / 18.0),
     (0.887_298_334_620_741_7, 5.0 / 18.0),
@@ -219,7 +219,7 @@ const GAUSS_LEGENDRE_3: [(f64, f64); 3] = [
 
 /// The quintic through a coordinate's `[q, q', q'']` at both ends of a step of `h` seconds,
 /// at the fraction `s` of the step: its value and its rate.
-fn hermite(start: [f64; 3], end: [f64; 3], h: f64, s: f64) -> (f64, f64) {
+pub(super) fn hermite(start: [f64; 3], end: [f64; 3], h: f64, s: f64) -> (f64, f64) {
     let (s2, s3, s4, s5) = (s * s, s * s * s, s.powi(4), s.powi(5));
     let value = [
         1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,

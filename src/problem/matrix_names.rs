@@ -12,6 +12,11 @@ const SYSTEM: [&str; 6] = ["A", "S", "E", "H", "U", "Z"];
 /// The right-hand side's names in order of preference.
 const RIGHT_SIDE: [&str; 5] = ["b", "f", "h", "w", "z"];
 
+/// The names of the column of unknowns (`A x = b`) and of the state of the small motions
+/// (`ż = A z`), in order of preference: a letter no coordinate or name of the problem uses
+/// (a cart's `x`), never `q` or `u`, a handout's coordinates and speeds.
+const UNKNOWNS: [&str; 6] = ["x", "z", "w", "y", "s", "p"];
+
 /// The dependent rates' matrix's names in order of preference.
 const DEPENDENT: [&str; 5] = ["C", "D", "G", "W", "Y"];
 
@@ -24,6 +29,10 @@ pub struct MatrixNames {
     pub b: String,
     /// The matrix of the dependent rates, `C` unless the problem uses it.
     pub c: String,
+    /// The column of unknowns, `x` unless the problem uses it.
+    pub x: String,
+    /// The state of the small motions, `z` unless the problem uses it.
+    pub z: String,
 }
 
 impl Default for MatrixNames {
@@ -32,6 +41,8 @@ impl Default for MatrixNames {
             a: SYSTEM[0].into(),
             b: RIGHT_SIDE[0].into(),
             c: DEPENDENT[0].into(),
+            x: UNKNOWNS[0].into(),
+            z: UNKNOWNS[1].into(),
         }
     }
 }
@@ -52,10 +63,28 @@ impl MatrixNames {
             Some((a, b)) => (a.to_string(), b.to_string()),
             None => (first_free(&used, &SYSTEM), first_free(&used, &RIGHT_SIDE)),
         };
+        // The column of unknowns also differs from the coordinates, the matrices and the
+        // right-hand side; the state of the small motions from all of those too.
+        let mut vectors = used.clone();
+        vectors.extend(problem.coordinates.iter().filter_map(|c| {
+            let stem: Vec<char> = c
+                .name
+                .chars()
+                .take_while(char::is_ascii_alphabetic)
+                .collect();
+            (stem.len() == 1).then(|| stem[0].to_ascii_lowercase())
+        }));
+        vectors.extend([&a, &b].iter().filter_map(|n| n.chars().next()));
+        vectors = vectors.iter().map(char::to_ascii_lowercase).collect();
+        let x = first_free(&vectors, &UNKNOWNS);
+        vectors.extend(x.chars().next());
+        let z = first_free(&vectors, &UNKNOWNS);
         MatrixNames {
             a,
             b,
             c: first_free(&used, &DEPENDENT),
+            x,
+            z,
         }
     }
 }

@@ -19,6 +19,44 @@ pub(super) fn with_numbers(
         .collect()
 }
 
+/// `text` with each negative number written apart from its words (`-0.396863` at the start
+/// or after a space or bracket, not the hyphen of `t-1`) by `number`, so that it prints
+/// with a minus sign, and the text between by `other`.
+pub(super) fn with_negatives(
+    text: &str,
+    number: impl Fn(&str) -> String,
+    other: impl Fn(&str) -> String,
+) -> String {
+    let bytes = text.as_bytes();
+    let mut out = String::new();
+    let (mut start, mut i) = (0, 0);
+    while i < bytes.len() {
+        let boundary = i == 0 || matches!(bytes[i - 1], b' ' | b'(' | b'[' | b'=' | b',');
+        let negative =
+            boundary && bytes[i] == b'-' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit);
+        if !negative {
+            i += 1;
+            continue;
+        }
+        let mut end = i + 1;
+        while end < bytes.len() && (bytes[end].is_ascii_digit() || bytes[end] == b'.') {
+            end += 1;
+        }
+        if text[i + 1..end].ends_with('.') {
+            end -= 1;
+        }
+        if start < i {
+            out.push_str(&other(&text[start..i]));
+        }
+        out.push_str(&number(&text[i..end]));
+        (start, i) = (end, end);
+    }
+    if start < text.len() {
+        out.push_str(&other(&text[start..]));
+    }
+    out
+}
+
 /// `escape` of `piece`, whose leading and trailing spaces (which the escapes trim, as for a
 /// whole field) separate it from the numbers beside it.
 pub(super) fn keeping_spaces(piece: &str, escape: impl Fn(&str) -> String) -> String {

@@ -8,7 +8,9 @@ use super::escape::{self, Lines};
 use super::line_break::{break_into_lines, displays, HTML_WIDTH, LINE_SYMBOLS, MEASURED_AT_MOST};
 use super::markup;
 use super::mathml;
-use super::numbers::{is_number, keeping_spaces, latex_number, unicode_number, with_numbers};
+use super::numbers::{
+    is_number, keeping_spaces, latex_number, unicode_number, with_negatives, with_numbers,
+};
 use super::text::key;
 use super::{Format, Solution};
 use crate::typeset::Display;
@@ -100,14 +102,19 @@ fn plain(text: &str, format: Format) -> String {
     match format {
         Format::Latex if is_number(text) => latex_number(text),
         // Numbers written `1e-9` in a sentence read as powers of ten, as in print.
+        // A negative number prints with a minus sign, not a hyphen.
         Format::Latex => with_numbers(text, latex_number, |p| {
-            keeping_spaces(p, |p| escape::latex(p, Lines::One))
+            with_negatives(p, latex_number, |p| {
+                keeping_spaces(p, |p| escape::latex(p, Lines::One))
+            })
         }),
         Format::Markdown => with_numbers(text, unicode_number, |p| {
             keeping_spaces(p, |p| escape::markdown(p, Lines::One))
         }),
         // Tera escapes the HTML template's output.
-        Format::Html => with_numbers(text, unicode_number, str::to_string),
+        Format::Html => with_numbers(text, unicode_number, |p| {
+            with_negatives(p, |n| n.replace('-', "−"), str::to_string)
+        }),
     }
 }
 

@@ -146,7 +146,7 @@ fn coordinate(name: &str, rate: &str, description: &str, joint: &str, initial: &
         name_tex: Math::from(s(name)),
         rate_tex: Math::from(s(rate)),
         description: MarkupLine::from(s(description)),
-        joint: s(joint),
+        joint: MarkupLine::from(s(joint)),
         unit_tex: Math::from(s("\\mathrm{rad}")),
         initial: s(initial),
         initial_rate: s("0"),

@@ -72,6 +72,8 @@ fn setup_styled(problem: &Problem, method: Method, shown: &[(String, String)]) -
                 a: names.a,
                 b: names.b,
                 c: names.c,
+                x: names.x,
+                z: names.z,
             }
         },
         simulation: Simulation {
@@ -130,8 +132,10 @@ fn coordinates(problem: &Problem, shown: &[(String, String)]) -> Vec<Coordinate>
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
                 // One line per joint: said at its first coordinate only.
                 joint: match (problem.coordinates[..i].iter()).any(|b| b.joint == c.joint) {
-                    true => String::new(),
-                    false => super::joint_words::joint_words(problem, c.joint, shown),
+                    true => MarkupLine::default(),
+                    false => {
+                        MarkupLine::from(super::joint_words::joint_words(problem, c.joint, shown))
+                    }
                 },
                 unit_tex: Math::from(crate::render::unit_tex(&unit)),
                 initial: with_unit(&fixed(c.initial), &unit),

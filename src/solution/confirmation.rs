@@ -64,6 +64,67 @@ pub fn sentence(check: &Check, trajectory: &Trajectory, fallback: &str) -> Strin
     said.unwrap_or_else(|| fallback.to_string())
 }
 
+/// The energy balance with the applied forces and couples, as markup: their work `W` by
+/// the end of the run and the largest `|E(t) − E(0) − W(t)|`; `None` without the energies.
+pub fn work_balance(
+    problem: &Problem,
+    trajectory: &Trajectory,
+    work: &[f64],
+    held: bool,
+) -> Option<String> {
+    let (worst, at) = crate::numeric::largest_imbalance(trajectory, work)?;
+    let (end_t, end_w) = (trajectory.rows.last()?[0], *work.last()?);
+    let who = applied_loads(problem);
+    let head = format!(
+        "{who} work on the system, and every other force that does work has a potential, so \
+         its total energy changes by exactly the work $W(t)$ done on it, the integral over \
+         time of the power (a force's dot product with the velocity of its point, a torque's \
+         with the angular velocity of its body): by $t = {}$ s, $W = {}$ J",
+        fixed(end_t),
+        num(end_w),
+    );
+    if !held {
+        return Some(format!(
+            "{head}, yet $E(t) - E(0) - W(t)$ reaches {} J at $t = {}$ s: these equations do \
+             not keep the balance.",
+            num(worst),
+            fixed(at)
+        ));
+    }
+    Some(format!(
+        "{head}, and along the motion $E(t) - E(0)$ differs from $W(t)$ by at most {} J.",
+        num(worst)
+    ))
+}
+
+/// The loads that do work without a potential, named as a course does: "The applied
+/// couple does", "The applied forces and torques do".
+fn applied_loads(problem: &Problem) -> String {
+    use crate::problem::{CoordinateKind, LoadKind};
+    let (mut forces, mut couples) = (0, 0);
+    for load in &problem.loads {
+        match &load.kind {
+            LoadKind::Force { .. } => forces += 1,
+            LoadKind::Torque { .. } => couples += 1,
+            LoadKind::JointActuator { coordinate, .. } => {
+                match problem.coordinates[*coordinate].kind {
+                    CoordinateKind::Angle => couples += 1,
+                    _ => forces += 1,
+                }
+            }
+            _ => {}
+        }
+    }
+    match (forces, couples) {
+        (0, 1) => "The applied torque does".into(),
+        (0, _) => "The applied torques do".into(),
+        (1, 0) => "The applied force does".into(),
+        (_, 0) => "The applied forces do".into(),
+        (1, 1) => "The applied force and torque do".into(),
+        _ => "The applied forces and torques do".into(),
+    }
+}
+
 /// `x` as [`fixed`] writes it, as markup: a number in scientific notation as math.
 fn num(x: f64) -> String {
     literal_with_numbers(&fixed(x))

@@ -9,12 +9,27 @@ use crate::problem::BodyId;
 use crate::render::context::{ConstraintView, DependentSpeeds};
 use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::{
-    fixed, fixed_or_zero, latex, latex_collected, latex_name, roots_of_squares, simplify, Symbol,
+    fixed, fixed_or_zero, latex, latex_collected, latex_name, roots_of_squares, simplify, Expr,
+    Node, Symbol,
 };
 
 /// The longest equation (LaTeX characters) the constraint table's narrow column holds;
 /// a longer one, lines of a few terms each, would run over pages.
 const LONGEST_IN_TABLE: usize = 600;
+
+/// A row `= 0` whose terms are all negative with their signs turned: `r_A q̇_A + r_B q̇_B
+/// = 0`, as a textbook writes it, never `−r_A q̇_A − r_B q̇_B = 0`.
+pub(super) fn signs_turned(row: Expr) -> Expr {
+    let negative = |t: &Expr| t.split_coefficient().0.is_negative();
+    let all_negative = match row.node() {
+        Node::Add(terms) => terms.iter().all(negative),
+        _ => negative(&row),
+    };
+    match all_negative {
+        true => -row,
+        false => row,
+    }
+}
 
 /// Step 1: every constraint row as an equation (position level when it has one), and the
 /// notes on what the constraints solve for.
@@ -32,7 +47,7 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
                 Some(p) => ("position", p),
                 None => ("velocity", &row.velocity),
             };
-            let shown = roots_of_squares(&simplify(expression), &sign);
+            let shown = signs_turned(roots_of_squares(&simplify(expression), &sign));
             // A velocity constraint collected by the rates, as Σ (coefficient) q̇_j = 0.
             let mut equation_tex = format!("{} = 0", latex_collected(&shown));
             // A position constraint holds a distance, not a component: it has no direction;

@@ -185,7 +185,11 @@ fn sentence(
         _ => String::new(),
     };
     let teeth = match kinds.contains(&Kind::Tooth) {
-        true => " The pressure angle is neglected: the teeth push along the common tangent of the pitch circles.",
+        true => {
+            " Its component across the common tangent of the pitch circles is zero by \
+                 assumption, not as a result: the pressure angle is neglected, so the teeth \
+                 push only along that tangent, and the joints carry the load across it."
+        }
         false => "",
     };
     let when = if at.moving { ", at this instant" } else { "" };

@@ -66,8 +66,13 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                         (vector_tex(model, torque), "\\text{couple}".into())
                     }
                 };
+                let mut label = super::force_labels::table_label(model, action, &shown);
+                if let Some(other) = opposite_of(derivation, action, &vector_tex) {
+                    let other = super::force_labels::shown_name(problem.body_name(other), &shown);
+                    label = format!("{label}, opposite to that on {other} (Newton's third law)");
+                }
                 let force = Force {
-                    label: super::force_labels::table_label(model, action, &shown),
+                    label,
                     vector_tex: Math::from(vector_tex),
                     point_tex: Math::from(point_tex),
                 };
@@ -86,6 +91,30 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
             view
         })
         .collect()
+}
+
+/// The body on which `action`'s partner acts, where `action` is printed with its sign
+/// turned (`−F_t n̂_y`): the force of a pair that the other body carries as drawn, this one
+/// opposite to it (Newton's third law).
+fn opposite_of(
+    derivation: &Derivation,
+    action: &crate::plan::Action,
+    printed: &str,
+) -> Option<BodyId> {
+    let other = action.partner?;
+    if !printed.starts_with('-') || other == BodyId::GROUND {
+        return None;
+    }
+    let ActionKind::Force { force, .. } = &action.kind else {
+        return None;
+    };
+    let turned = force.map(|e| -e.clone());
+    let pair = derivation.actions.iter().any(|a| {
+        a.source == action.source
+            && a.body == other
+            && matches!(&a.kind, ActionKind::Force { force, .. } if *force == turned)
+    });
+    pair.then_some(other)
 }
 
 fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId, shown: &[(String, String)]) {

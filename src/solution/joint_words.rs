@@ -62,8 +62,13 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
     let child = body_words(problem, joint.child);
     let parent = body_words(problem, joint.parent);
     let name = super::force_labels::shown_name(&joint.name, shown);
+    // A name with an index (OA) as the handout's math prints it everywhere else (O_A).
+    let printed = match crate::symbolic::latex_name(&name) {
+        tex if tex != name => format!("${tex}$"),
+        _ => name.clone(),
+    };
     let at = |what: &str| match is_point_name(&name) {
-        true => format!(" at {what} {name}"),
+        true => format!(" at {what} {printed}"),
         false => String::new(),
     };
     let rolling = match joint.kind {
@@ -90,7 +95,7 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
         JointKind::Planar => format!("{child} moves in the plane relative to {parent}"),
         JointKind::Universal => format!("{child} turns on {parent} about two axes{}", at("point")),
         JointKind::Spherical if is_point_name(&name) => {
-            format!("{child} turns freely about point {name} of {parent}")
+            format!("{child} turns freely about point {printed} of {parent}")
         }
         JointKind::Spherical => format!("{child} turns freely about a point of {parent}"),
         JointKind::Free => format!("{child} is free"),

@@ -45,6 +45,8 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartial
             .flat_map(|(_, c)| c.iter()),
     );
     let states = sample_states(model);
+    // A body named by a word is headed by the letter the handout prints for it.
+    let shown = super::shown_names::shown_names(model);
     let mut pins_by_partials = false;
     let views = model
         .order
@@ -111,7 +113,7 @@ pub(super) fn kinematics(derivation: &Derivation) -> (Vec<Kinematics>, ByPartial
                 (by_partials, pins_by_partials) = (true, true);
             }
             Kinematics {
-                body: name.to_string(),
+                body: super::force_labels::shown_name(name, &shown),
                 particle,
                 light,
                 position_tex: Math::from(if model.order.len() <= MOST_BODIES_PLACED {

@@ -8,7 +8,7 @@ use crate::equations::{
     energy_derivative, energy_terms, joint_generalized_forces, lagrange_generalized_forces,
     lagrange_potential, partial_velocities, role, virtual_work, Derivation, Method, Role,
 };
-use crate::mechanics::{Model, RowOrigin, Vector};
+use crate::mechanics::{Model, Vector};
 use crate::plan::{constraint_generalized_forces, ActionKind, Equation, Sum};
 use crate::render::context::{GeneralizedForceRow, LagrangeView};
 use crate::render::text::{MarkupLine, Math};
@@ -232,12 +232,13 @@ pub fn row_text(
     let sum = format!(
         "\\sum_{{k}} \\lambda_{{k}} \\frac{{\\partial \\dot{{f}}_{{k}}}}{{\\partial {rate}}}"
     );
+    let on_motion = |e: &Expr| tex(&on_the_motion(model, e));
     lines.push(match (multipliers.is_zero(), q_r.is_zero()) {
-        (true, _) => fits(q_name, tex(&q_r)),
-        (false, true) => fits(format!("{q_name} = {sum}"), tex(&multipliers)),
+        (true, _) => fits(q_name, on_motion(&q_r)),
+        (false, true) => fits(format!("{q_name} = {sum}"), on_motion(&multipliers)),
         (false, false) => fits(
-            format!("{q_name} = {} + {sum}", tex(&q_r)),
-            tex(&(&q_r + &multipliers)),
+            format!("{q_name} = {} + {sum}", on_motion(&q_r)),
+            on_motion(&(&q_r + &multipliers)),
         ),
     });
     let note = "Lagrange's equation, collected by the second derivatives:";
@@ -361,11 +362,23 @@ fn forces_note(derivation: &Derivation) -> String {
     )
 }
 
+/// `e` simplified and written with what holds on the motion where that is shorter: a disc
+/// in a cylinder's `r (x² + y²)/(R − r)² F_t` is `r F_t`, since `x² + y² = (R − r)²` there.
+fn on_the_motion(model: &crate::mechanics::Model, e: &Expr) -> Expr {
+    let simplified = simplify(e);
+    let written = (model.constraints.relations.iter())
+        .fold(simplified.clone(), |e, (_, relation)| relation.reduce(&e));
+    match written.operation_count() < simplified.operation_count() {
+        true => written,
+        false => simplified,
+    }
+}
+
 /// The table of generalized forces: a line per load and coordinate it does work with.
 fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
     let model = &derivation.model;
     let problem = model.problem;
-    let tex = |e: &Expr| latex_collected(&simplify(e));
+    let tex = |e: &Expr| latex_collected(&on_the_motion(model, e));
     let mut rows = Vec::new();
     for action in &derivation.actions {
         if !matches!(role(model, action), Role::Load | Role::Multiplier) {
@@ -452,40 +465,43 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
     rows
 }
 
-/// Which reaction component each multiplier is.
+/// Which reaction component each multiplier is, row by row of step 1, and its sign.
 fn multipliers_note(derivation: &Derivation) -> String {
     let model = &derivation.model;
-    let problem = model.problem;
-    let mut parts = Vec::new();
-    for &j in &derivation.reaction_joints {
-        if j < problem.joints.len() {
-            continue;
-        }
-        let site = &model.sites[j];
-        let unknowns: Vec<String> = site
-            .reactions
-            .iter()
-            .map(|c| format!("${}$", latex(&Expr::sym(c.unknown(&site.name)))))
-            .collect();
-        if !unknowns.is_empty() {
-            parts.push(format!("{} at {}", unknowns.join(", "), site.name));
-        }
-    }
-    for row in &model.constraints.rows {
-        if !matches!(row.origin, RowOrigin::Site { .. }) {
-            parts.push(format!(
-                "${}$ for {}",
-                latex(&Expr::sym(row.unknown.clone())),
-                row.name
-            ));
-        }
-    }
-    if parts.is_empty() {
+    let rows = &model.constraints.rows;
+    if rows.is_empty() {
         return String::new();
     }
+    let parts: Vec<String> = (rows.iter().enumerate())
+        .map(|(k, row)| {
+            // The row in words, as step 1's table names it, its direction as math.
+            let what = super::row_names::constraint_what_tex(model, &row.name);
+            let words = (what.strip_prefix("\\text{"))
+                .and_then(|w| w.strip_suffix('}'))
+                .filter(|w| !w.contains('\\') && !w.contains('$'))
+                .map_or_else(|| format!("${what}$"), str::to_string);
+            let along = super::row_names::constraint_direction_tex(model, &row.name)
+                .map(|d| format!(", along ${d}$"))
+                .unwrap_or_default();
+            format!(
+                "$\\lambda_{{{}}} = {}$ ({words}{along})",
+                k + 1,
+                latex(&Expr::sym(row.unknown.clone()))
+            )
+        })
+        .collect();
+    let multipliers = match parts.len() {
+        1 => "Its multiplier is".to_string(),
+        _ => "Their multipliers are".to_string(),
+    };
     format!(
-        "The constraints enter with one multiplier per row, and each multiplier is the reaction component that enforces the row: {}. Their terms in each equation, $\\sum_k \\lambda_k\\, \\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r$ (for a holonomic row $\\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r = \\partial f_k / \\partial q_r$; for a nonholonomic one, the row's coefficient of $\\dot{{q}}_r$), are the virtual work of those components, and the constraint rows, differentiated, close the system; the reactions asked for are these multipliers.",
-        parts.join("; ")
+        "Each constraint row $f_k = 0$ of step 1 enters with a multiplier $\\lambda_k$, the \
+         reaction component that enforces it, positive along the arrow step 2 draws for it. \
+         {multipliers} {}. The terms \
+         $\\sum_k \\lambda_k\\, \\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r$ of each \
+         equation are the virtual work of those components; the constraint rows, differentiated, close the \
+         system, and the reactions asked for are these multipliers.",
+        parts.join(", ")
     )
 }
 

@@ -170,7 +170,11 @@ pub fn section(problem: &Problem, l: &Linearization) -> LinearizationSection {
         c_tex: Math::from(c_tex),
         k_tex: Math::from(k_tex),
         a_tex: Math::from(a_tex),
-        z_tex: Math::from(format!("\\mathbf{{z}} = {}", column(&z))),
+        z_tex: Math::from(format!(
+            "\\mathbf{{{}}} = {}",
+            crate::problem::MatrixNames::of(problem).z,
+            column(&z)
+        )),
         entries: listed,
         eigenvalues,
         modes,

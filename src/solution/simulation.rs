@@ -47,7 +47,9 @@ pub fn simulation(
         ));
     }
     solution.simulation.note = notes.join(" ");
-    solution.simulation.checks = checks_said(problem, checks, trajectory);
+    // The work of the applied forces and couples, where the energy changes by it alone.
+    let work = crate::numeric::load_work(problem, trajectory);
+    solution.simulation.checks = checks_said(problem, checks, trajectory, work.as_deref());
     if let Some(work) = energy_changed_by_work(checks, trajectory) {
         solution.simulation.checks.push(work);
     }
@@ -144,6 +146,7 @@ fn checks_said(
     problem: &Problem,
     checks: &[crate::numeric::Check],
     trajectory: &Trajectory,
+    work: Option<&[f64]>,
 ) -> Vec<Check> {
     checks
         .iter()
@@ -160,7 +163,14 @@ fn checks_said(
             // Said as physics, in the course's words; the check's own sentence only where
             // the motion does not hold it.
             let own = detail(problem, c);
-            let said = super::confirmation::sentence(c, trajectory, own.as_str());
+            let said = match (c.kind, work) {
+                (CheckKind::EnergyBalanceWithLoads, Some(work)) => {
+                    super::confirmation::work_balance(problem, trajectory, work, c.passed)
+                }
+                _ => None,
+            };
+            let said =
+                said.unwrap_or_else(|| super::confirmation::sentence(c, trajectory, own.as_str()));
             Check {
                 name: c.name().to_string(),
                 value: fixed(c.value),
@@ -184,6 +194,7 @@ fn energy_changed_by_work(
             CheckKind::EnergyConservation
                 | CheckKind::EnergyNeverRises
                 | CheckKind::EnergyBalanceWithDrives
+                | CheckKind::EnergyBalanceWithLoads
         )
     });
     let total = trajectory.series("total")?;

@@ -78,17 +78,13 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
         "reactions"
     };
     if !super::sliding_rows::sliding_rows(derivation, friction).is_empty() {
-        // Step 5 prints the sliding law as the row itself.
-        return Some(format!(
-            "While the contact at {} slides, {} {} {} the sliding {law}, not the no-slip {row}, which {} only once it sticks. The rows give {} and the {reaction_words} {}, in the order of step 3.",
-            listed(&names),
-            if no_slip.len() == 1 { "row" } else { "rows" },
-            row_list(&no_slip),
-            if no_slip.len() == 1 { "is" } else { "are" },
-            if no_slip.len() == 1 { "holds" } else { "hold" },
-            math_list(&accelerations, false),
-            math_list(&reactions, true),
-        ));
+        // Step 5 prints the sliding law as the row itself and says so beside it; the
+        // order of the solve is step 3's, said there once.
+        return Some(
+            "Solved one after another in the order step 3 gives, the rows give the values \
+             below."
+                .to_string(),
+        );
     }
     Some(format!(
         "While the contact at {} slides, the no-slip {row} {} {does} not hold. Rows {} with the sliding {law} above give {} and the {reaction_words} {} together.",

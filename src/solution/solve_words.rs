@@ -152,7 +152,10 @@ fn singular(derivation: &Derivation) -> Option<String> {
     if det.is_zero() {
         return None;
     }
-    let det_tex = latex_collected(&det);
+    // Its factors of constants alone (a radius, r/(R − r)) never vanish: the condition is
+    // on the factors that move, `y ≠ 0`, not `r y/(R − r) ≠ 0`.
+    let moving = crate::symbolic::mul(det.factors().iter().filter(|f| !f.is_constant()).cloned());
+    let det_tex = latex_collected(&moving);
     if det_tex.len() > LONGEST_DETERMINANT {
         return None;
     }

@@ -195,22 +195,20 @@ fn force_lines(
     }
     let acceleration = &derivation.inertia().acceleration[body.0];
     let mut parts = Vec::new();
-    let mut total = Vec::new();
+    let mut total: Vec<Expr> = Vec::new();
     for (frame, components) in acceleration.parts() {
         for (axis, c) in components.iter().enumerate() {
             if c.is_zero() {
                 continue;
             }
             let dot = dots.of(derivation, *frame, axis, direction);
-            let term = shown(&simplify(&(c * &dot)));
-            if term.is_zero() {
-                continue;
-            }
-            parts.push(latex(&term));
-            total.push(term);
+            total.push(c * &dot);
         }
     }
-    let sum = add(total);
+    // Simplified as one sum, not term by term: the terms of two components may cancel, or
+    // meet in sin² + cos² (a top's s_ψ s_θ c²_θ + s_ψ s³_θ is s_ψ s_θ).
+    let sum = shown(&simplify(&add(total)));
+    parts.extend(sum.terms().iter().map(latex));
     let m = mass_tex(mass);
     let inside = joined(&parts);
     let value = if parts.len() > 1 {

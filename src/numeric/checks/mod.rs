@@ -30,6 +30,7 @@ pub fn confirm(
     checks.extend(super::constraint_checks::drive_energy_check(
         problem, primary.1, trajectory,
     ));
+    checks.extend(super::load_work::load_work_check(problem, trajectory));
     checks.extend(super::constraint_checks::drift_check(primary.1, trajectory));
     checks.extend(super::constraint_checks::contact_check(
         problem, primary.1, trajectory,

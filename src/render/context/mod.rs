@@ -209,8 +209,8 @@ pub struct Coordinate {
     pub rate_tex: Math,
     /// What it measures (user text; may be empty).
     pub description: MarkupLine,
-    /// The joint that owns it and the joint's type, e.g. `O (revolute)`.
-    pub joint: String,
+    /// The joint that owns it in words, e.g. `the pinion turns on the ground at pin $O_{A}$`.
+    pub joint: MarkupLine,
     /// Its unit in LaTeX, e.g. `\\mathrm{rad}` (see `units`).
     pub unit_tex: Math,
     /// Its initial value, formatted.
@@ -459,6 +459,10 @@ pub struct MatrixLetters {
     pub b: String,
     /// The matrix of the dependent rates.
     pub c: String,
+    /// The column of unknowns of `A x = b`.
+    pub x: String,
+    /// The state of the small motions, `ż = A z`.
+    pub z: String,
 }
 
 impl Default for MatrixLetters {
@@ -467,6 +471,8 @@ impl Default for MatrixLetters {
             a: "A".into(),
             b: "b".into(),
             c: "C".into(),
+            x: "x".into(),
+            z: "z".into(),
         }
     }
 }

@@ -1,0 +1,159 @@
+//! The work of the applied forces and couples along a run (a torque turning a pinion, a
+//! force pulling a cart): their power `F · v_P + M · ω`, written from the kinematics and not
+//! from the equations of motion, integrated over the motion. Where every other force that
+//! does work has a potential, the total energy changes by exactly that work, which step 6
+//! checks.
+
+use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
+use super::constraint_checks::{hermite, GAUSS_LEGENDRE_3};
+use super::inputs::state_symbols;
+use super::simulate::Trajectory;
+use crate::mechanics::{Form, Model, Vector};
+use crate::plan::{ActionKind, Source};
+use crate::problem::{LoadKind, Problem};
+use crate::symbolic::{add, fixed, Expr, Program};
+
+/// The power of the applied forces, couples and joint actuators of `problem`, as one
+/// expression of the constants, the state and `t`; `None` where there are none, or where
+/// another load or a friction site also does work without a potential (a damper, sliding
+/// friction) or a coordinate is driven: the energy then does not change by their work alone.
+pub fn applied_power(problem: &Problem) -> Option<Expr> {
+    let applied = |kind: &LoadKind| {
+        matches!(
+            kind,
+            LoadKind::Force { .. } | LoadKind::Torque { .. } | LoadKind::JointActuator { .. }
+        )
+    };
+    let conservative =
+        |kind: &LoadKind| matches!(kind, LoadKind::Spring { .. } | LoadKind::JointSpring { .. });
+    let loads = problem.loads.iter().map(|l| &l.kind);
+    if !loads.clone().any(applied) || !loads.clone().all(|k| applied(k) || conservative(k)) {
+        return None;
+    }
+    let rough = (problem.constraints.iter().map(|c| &c.friction))
+        .chain(problem.joints.iter().map(|j| &j.friction))
+        .chain(problem.closures.iter().map(|j| &j.friction))
+        .any(Option::is_some);
+    let driven = problem.coordinates.iter().any(|c| c.motion.is_some());
+    if rough || driven {
+        return None;
+    }
+    let model = Model::build(problem).ok()?;
+    let actions = crate::plan::free_bodies(&model, Form::Handout)
+        .ok()?
+        .actions;
+    let frames = &model.frames;
+    let mut terms = Vec::new();
+    for action in &actions {
+        let Source::Load(i) = action.source else {
+            continue;
+        };
+        if !matches!(
+            problem.loads[i].kind,
+            LoadKind::Force { .. } | LoadKind::Torque { .. }
+        ) {
+            continue;
+        }
+        let body = &model.bodies[action.body.0];
+        terms.push(match &action.kind {
+            ActionKind::Force { offset, force } => {
+                let arm = Vector::new(action.body, offset.clone());
+                let velocity = body.origin.velocity.plus(&body.omega.cross(&arm, frames));
+                force.dot(&velocity, frames)
+            }
+            ActionKind::Couple { torque } => torque.dot(&body.omega, frames),
+        });
+    }
+    for load in &problem.loads {
+        if let LoadKind::JointActuator { .. } = load.kind {
+            let (_, c, value) = crate::plan::joint_load_value(problem, &load.kind)?;
+            terms.push(&value * &problem.coordinate_expr(c, 1));
+        }
+    }
+    Some(add(terms))
+}
+
+/// The work `W(t)` of the applied loads (their power from the kinematics) from the start
+/// to each row of `trajectory` (J), integrated over each output step by three-point
+/// Gauss–Legendre on the quintic through the coordinates, rates and accelerations at its
+/// ends; `None` where it does not apply.
+pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>> {
+    let power = applied_power(problem)?;
+    let program = Program::compile(&state_symbols(problem), &[power]);
+    let columns: Vec<[usize; 3]> = (problem.coordinates.iter())
+        .map(|c| {
+            let name = &c.name;
+            Some([
+                trajectory.column(name)?,
+                trajectory.column(&format!("{name}'"))?,
+                trajectory.column(&format!("{name}''"))?,
+            ])
+        })
+        .collect::<Option<_>>()?;
+    let constants: Vec<f64> = problem.constants.iter().map(|c| c.value).collect();
+    let mut scratch = Vec::new();
+    let mut power_at = |t: f64, state: &[(f64, f64)]| {
+        let mut inputs = constants.clone();
+        inputs.extend(state.iter().map(|s| s.0));
+        inputs.extend(state.iter().map(|s| s.1));
+        inputs.push(t);
+        let mut out = [0.0];
+        program.run(&inputs, &mut scratch, &mut out);
+        out[0]
+    };
+    let rows = &trajectory.rows;
+    let mut work = vec![0.0; rows.len()];
+    for i in 1..rows.len() {
+        let (before, after) = (&rows[i - 1], &rows[i]);
+        let h = after[0] - before[0];
+        let mut interval = 0.0;
+        for (s, weight) in GAUSS_LEGENDRE_3 {
+            let at = |row: &[f64], c: &[usize; 3]| [row[c[0]], row[c[1]], row[c[2]]];
+            let state: Vec<(f64, f64)> = (columns.iter())
+                .map(|c| hermite(at(before, c), at(after, c), h, s))
+                .collect();
+            interval += weight * power_at(before[0] + s * h, &state);
+        }
+        work[i] = work[i - 1] + h * interval;
+    }
+    work.iter().all(|w| w.is_finite()).then_some(work)
+}
+
+/// The largest `|E(t) − E(0) − W(t)|` over the rows, with its time: what the energy
+/// balance with the applied loads leaves.
+pub fn largest_imbalance(trajectory: &Trajectory, work: &[f64]) -> Option<(f64, f64)> {
+    let total = trajectory.column("total")?;
+    let first = trajectory.rows.first()?[total];
+    let (mut worst, mut at) = (0.0f64, 0.0);
+    for (row, w) in trajectory.rows.iter().zip(work) {
+        let error = (row[total] - first - w).abs();
+        if error > worst || error.is_nan() {
+            (worst, at) = (error, row[0]);
+        }
+    }
+    Some((worst, at))
+}
+
+/// The energy balance with the applied forces and couples: `E(t) − E(0) = W(t)` along the
+/// run, relative to the larger of the kinetic energy and the work.
+pub fn load_work_check(problem: &Problem, trajectory: &Trajectory) -> Option<Check> {
+    let work = load_work(problem, trajectory)?;
+    let kinetic = trajectory.column("kinetic")?;
+    let (worst, at) = largest_imbalance(trajectory, &work)?;
+    let scale = (trajectory.rows.iter())
+        .map(|r| r[kinetic].abs())
+        .chain(work.iter().map(|w| w.abs()))
+        .fold(0.0f64, f64::max)
+        .max(f64::MIN_POSITIVE);
+    Some(Check::new(
+        CheckKind::EnergyBalanceWithLoads,
+        worst / scale,
+        ENERGY_TOLERANCE,
+        format!(
+            "the total energy differs from its initial value plus the applied loads' work by at most {} J (at t = {} s) on an energy scale of {} J",
+            fixed(worst),
+            fixed(at),
+            fixed(scale)
+        ),
+    ))
+}
