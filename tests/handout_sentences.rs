@@ -144,7 +144,7 @@ fn the_skidding_ball_is_solved_with_the_sliding_law_not_the_no_slip_row() {
     );
     assert!(
         text.contains(
-            "While the contact at the lane slides, row (4) is the sliding law, not the no-slip condition"
+            "the no-slip condition does not hold; row (4) above is the sliding law in its place"
         ),
         "the sliding order is not said"
     );

@@ -431,7 +431,7 @@ fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown()
     let row3 = section(step5, "**3.", "**4.");
     assert!(row3.contains("\\tilde{F}_{3} = F^{U}_{x}"), "{row3}");
     assert!(row3.contains(
-        "\\tilde{\\mathbf{v}}^{D^*}_{3} \\cdot \\mathbf{f}^{*}_{D} + \\tilde{\\boldsymbol{\\omega}}^{D}_{3} \\cdot \\boldsymbol{\\tau}^{*}_{D}"
+        "\\tilde{\\mathbf{v}}^{D^*}_{3} \\cdot \\mathbf{f}^{*}_{D} + \\tilde{\\boldsymbol{\\omega}}^{D}_{3} \\cdot \\boldsymbol{\\Gamma}^{*}_{D}"
     ));
     assert!(
         row3.contains("&= -\\frac{R m}{2} \\ddot{\\theta}"),

@@ -79,8 +79,9 @@ fn a_generalized_force_too_long_to_print_is_named_not_redefined() {
     // Kane's F*_r is defined once, above the rows; a row whose F*_r is too long to print
     // names it rather than writing the sum out again.
     let latex = all_joints("kane", "latex");
-    // The letter of a body is one the problem does not use (here W).
-    let definition = "\\sum_{W} \\left(\\mathbf{v}^{W^*}_r \\cdot \\mathbf{R}^{*}_{W}";
+    // The letter of a body is one the problem does not use (here J), and so is the
+    // force's (f: the problem prints R).
+    let definition = "\\sum_{J} \\left(\\mathbf{v}^{J^*}_r \\cdot \\mathbf{f}^{*}_{J}";
     assert_eq!(latex.matches(definition).count(), 1);
     assert!(latex.contains("F^{*}_{1}\\ \\text{(a long expression, not written out)}"));
     assert!(!latex.contains("\\mathbf{v}^{B^*}_{1} \\cdot"));

@@ -322,7 +322,8 @@ fn the_statics_handout_is_the_same_twice() {
 fn critical_speeds(text: &str) -> Vec<f64> {
     text.lines()
         .filter(|line| line.contains("\\mathrm{m/s} \\quad \\text{(stable"))
-        .filter_map(|line| line.split("v = ").nth(1)?.split('\\').next()?.parse().ok())
+        .flat_map(|line| line.split("v = ").skip(1))
+        .filter_map(|after| after.split('\\').next()?.parse().ok())
         .collect()
 }
 

@@ -1,5 +1,6 @@
 //! The worked Answers as an answer key reads: each item numbered as the statement numbers
-//! it, not restated (the statement above words it), and the values one item finds at one
+//! it, not restated where the statement words it (a statement in prose leaves a question's
+//! own words, such as a paper's values, unless it only names what it asks), and the values one item finds at one
 //! state in one line (`ψ̈, θ̈, φ̈ = …` at once) where they fit.
 
 use crate::render::text::MarkupLine;
@@ -13,7 +14,7 @@ const LONGEST_LINE: usize = 420;
 /// The worked answers without their questions restated and with the values of one item at
 /// one state joined; the student's (no values) are left as they are: a worksheet's blank
 /// needs its question.
-pub fn tighten(views: &mut Vec<AnswerView>) {
+pub fn tighten(views: &mut Vec<AnswerView>, numbered: bool) {
     if views
         .iter()
         .all(|v| v.values_tex.is_empty() && v.steps.is_empty())
@@ -25,7 +26,7 @@ pub fn tighten(views: &mut Vec<AnswerView>) {
         .map(|i| (0..views.len()).any(|j| j != i && names[j] == names[i]))
         .collect();
     for (view, alike) in views.iter_mut().zip(alike) {
-        if !named(view) {
+        if !named(view) || !(numbered || bare_find(view.question.as_str())) {
             continue;
         }
         // A label that tells two answers of the same values apart ("The slow precession:")
@@ -51,6 +52,19 @@ pub fn tighten(views: &mut Vec<AnswerView>) {
         }
     }
     *views = joined;
+}
+
+/// Whether a question says no more than the names of what it asks (`Find $\\ddot{x}$.`):
+/// its answer, which names them, restates it whole.
+fn bare_find(question: &str) -> bool {
+    let Some(asked) = question.trim().strip_prefix("Find ") else {
+        return false;
+    };
+    let asked = asked.trim_end_matches('.');
+    asked.starts_with('$')
+        && asked.ends_with('$')
+        && (asked.split('$').enumerate())
+            .all(|(i, part)| i % 2 == 1 || ["", " and ", ", "].contains(&part))
 }
 
 /// The label a question ends with that names which of an item's answers it is ("The slow
@@ -134,7 +148,7 @@ mod tests {
             ),
             view("2", "Find the force.", &["F = 3", "G = 4"], true),
         ];
-        tighten(&mut views);
+        tighten(&mut views, true);
         assert_eq!(views.len(), 2);
         assert_eq!(views[0].values_tex.len(), 2);
         assert!(views.iter().all(|v| v.question.as_str().is_empty()));
@@ -164,7 +178,7 @@ mod tests {
             ),
         ];
         views[1].at_note = "kept constant".into();
-        tighten(&mut views);
+        tighten(&mut views, true);
         assert_eq!(views[1].at_note, "the fast precession, kept constant");
         assert!(!views[1].same_state);
         // A label of values no other answer gives says nothing the values do not.
@@ -178,13 +192,31 @@ mod tests {
             view("", "Find $x$.", &["x = 1"], false),
             view("", "Then $y$.", &["y = 1"], true),
         ];
-        tighten(&mut views);
+        tighten(&mut views, true);
         assert_eq!(views[0].question.as_str(), "Find the sum.");
         assert_eq!(views.len(), 2);
         assert_eq!(views[1].values_tex.len(), 2);
         // The worksheet's questions stay.
         let mut blank = vec![view("1", "Find $x$.", &[], false)];
-        tighten(&mut blank);
+        tighten(&mut blank, true);
         assert_eq!(blank[0].question.as_str(), "Find $x$.");
+    }
+
+    #[test]
+    fn a_question_in_prose_is_kept_unless_it_only_names_what_it_asks() {
+        assert!(bare_find("Find $\\ddot{x}$."));
+        assert!(bare_find("Find $\\ddot{x}$ and $\\ddot{y}$."));
+        assert!(!bare_find("Find the reaction at $O$."));
+        assert!(!bare_find(
+            "Leaned by $\\phi = 0.001$ rad: the roll acceleration."
+        ));
+        let mut views = vec![view(
+            "1",
+            "Leaned by $\\phi$: the paper's value is 3.",
+            &["\\ddot{\\phi} = 3"],
+            false,
+        )];
+        tighten(&mut views, false);
+        assert!(!views[0].question.as_str().is_empty());
     }
 }

@@ -7,8 +7,9 @@
 use crate::render::Solution;
 
 /// Leaves out of `solution` what its Answers already say and, unless `every_rejected`, the
-/// rows step 3 does not use.
-pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
+/// rows step 3 does not use; the answers do not restate a question the statement words
+/// (`numbered`: the statement numbers its items) or one that only names what it asks.
+pub fn without_repeats(solution: &mut Solution, every_rejected: bool, numbered: bool) {
     if !every_rejected {
         solution.plan.rejected.clear();
     }
@@ -31,7 +32,7 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool) {
         None => solution.reactions.clear(),
     }
     super::answer_leads::mark_repeated_states(&mut solution.answers);
-    super::answer_lines::tighten(&mut solution.answers);
+    super::answer_lines::tighten(&mut solution.answers, numbered);
 }
 
 /// Whether an answer's value is a component of the reaction at `joint`, its force or moment.

@@ -186,7 +186,7 @@ fn sentence(
     };
     let teeth = match kinds.contains(&Kind::Tooth) {
         true => {
-            " Its component across the common tangent of the pitch circles is zero by \
+            " Its component across the common pitch tangent is zero by \
                  assumption, not as a result: the pressure angle is neglected, so the teeth \
                  push only along that tangent, and the joints carry the load across it."
         }

@@ -40,7 +40,8 @@ pub fn handout(worked: &Worked, settings: &Handout) -> Solution {
         super::absent_constants::attach(&worked.derivation, &mut views);
         solution.answers = views;
     }
-    super::concise::without_repeats(&mut solution, settings.every_rejected);
+    let numbered = problem.questions.iter().any(|q| q.item.is_some());
+    super::concise::without_repeats(&mut solution, settings.every_rejected, numbered);
     solution
 }
 

@@ -23,7 +23,7 @@ const BODY_LETTERS: [&str; 5] = ["B", "D", "H", "W", "J"];
 pub struct Letters {
     /// A force's, `\mathbf{R}` or `\mathbf{f}`.
     pub force: String,
-    /// A couple's, `\mathbf{M}`, `\boldsymbol{\tau}` or `\boldsymbol{\Gamma}`.
+    /// A couple's, `\mathbf{M}`, `\boldsymbol{\Gamma}` or `\boldsymbol{\tau}`.
     pub couple: String,
 }
 
@@ -60,10 +60,12 @@ pub fn letters(derivation: &Derivation) -> Letters {
     };
     let couple = if !taken("M") {
         "\\mathbf{M}"
-    } else if !taken("\\tau") && !period {
-        "\\boldsymbol{\\tau}"
-    } else {
+    } else if !taken("\\Gamma") || taken("\\tau") || period {
+        // Γ before τ: τ is what a statement most often calls a drive's torque, and a
+        // period.
         "\\boldsymbol{\\Gamma}"
+    } else {
+        "\\boldsymbol{\\tau}"
     };
     Letters {
         force: force.to_string(),

@@ -476,17 +476,15 @@ fn multipliers_note(derivation: &Derivation) -> String {
         .map(|(k, row)| {
             // The row in words, as step 1's table names it, its direction as math.
             let what = super::row_names::constraint_what_tex(model, &row.name);
-            let words = (what.strip_prefix("\\text{"))
-                .and_then(|w| w.strip_suffix('}'))
-                .filter(|w| !w.contains('\\') && !w.contains('$'))
-                .map_or_else(|| format!("${what}$"), str::to_string);
+            let words = text_and_math(&what);
             let along = super::row_names::constraint_direction_tex(model, &row.name)
                 .map(|d| format!(", along ${d}$"))
                 .unwrap_or_default();
             format!(
-                "$\\lambda_{{{}}} = {}$ ({words}{along})",
+                "$\\lambda_{{{}}} = {}$ ({words}{along}{})",
                 k + 1,
-                latex(&Expr::sym(row.unknown.clone()))
+                latex(&Expr::sym(row.unknown.clone())),
+                row_rate(model, k + 1, &row.velocity)
             )
         })
         .collect();
@@ -495,8 +493,9 @@ fn multipliers_note(derivation: &Derivation) -> String {
         _ => "Their multipliers are".to_string(),
     };
     format!(
-        "Each constraint row $f_k = 0$ of step 1 enters with a multiplier $\\lambda_k$, the \
-         reaction component that enforces it, positive along the arrow step 2 draws for it. \
+        "Each constraint row of step 1 enters with a multiplier $\\lambda_k$, the reaction \
+         component that enforces it, positive along the arrow step 2 draws for it, and \
+         $\\dot{{f}}_k$ is that row written as a velocity along the same arrow. \
          {multipliers} {}. The terms \
          $\\sum_k \\lambda_k\\, \\partial \\dot{{f}}_k / \\partial \\dot{{q}}_r$ of each \
          equation are the virtual work of those components; the constraint rows, differentiated, close the \
@@ -504,6 +503,50 @@ fn multipliers_note(derivation: &Derivation) -> String {
         parts.join(", ")
     )
 }
+
+/// A row's name as step 1 writes it in math, `\text{no slip at } P` or
+/// `q_{1} \text{ held by its support}`, as prose: the words plain, the rest as math.
+fn text_and_math(what: &str) -> String {
+    let mut out = String::new();
+    let mut rest = what;
+    while let Some(at) = rest.find("\\text{") {
+        let math = rest[..at].trim();
+        if !math.is_empty() {
+            out.push_str(&format!("${math}$"));
+        }
+        let after = &rest[at + "\\text{".len()..];
+        let Some(end) = after.find('}') else {
+            return format!("${what}$");
+        };
+        out.push_str(&after[..end]);
+        rest = &after[end + 1..];
+    }
+    let math = rest.trim();
+    if !math.is_empty() {
+        out.push_str(&format!(" ${math}$"));
+    }
+    match out.contains('\\') && !out.contains('$') {
+        true => format!("${what}$"),
+        false => out.replace("  ", " ").trim().to_string(),
+    }
+}
+
+/// `; ḟ_k = …`, the row as the velocity along its reaction's arrow, whose partials the
+/// rows of step 5 take: step 1 may print the row with the other sign (a distance row as
+/// `√(x² + y²) − R + r`, a row of negative terms turned), and only this one makes
+/// `λ_k = F` true. Left out where it would not fit a line.
+fn row_rate(model: &Model, k: usize, velocity: &Expr) -> String {
+    let sign = super::tex::initial_sign(model);
+    let rate = crate::symbolic::roots_of_squares(&on_the_motion(model, velocity), &sign);
+    let written = latex_collected(&rate);
+    match written.len() <= ROW_RATE_LONGEST {
+        true => format!("; $\\dot{{f}}_{{{k}}} = {written}$"),
+        false => String::new(),
+    }
+}
+
+/// The longest `ḟ_k` written beside its multiplier, in LaTeX characters.
+const ROW_RATE_LONGEST: usize = 160;
 
 /// The student's handout: the energies' left sides and the loads of the table, the rest
 /// left blank.

@@ -42,7 +42,8 @@ pub fn handout(at_rest: &WorkedAtRest, student: bool, settings: &Handout) -> Sol
             _ => super::answers::blank(problem),
         };
     }
-    super::concise::without_repeats(&mut solution, settings.every_rejected);
+    let numbered = problem.questions.iter().any(|q| q.item.is_some());
+    super::concise::without_repeats(&mut solution, settings.every_rejected, numbered);
     solution
 }
 
