@@ -78,14 +78,21 @@ pub fn sum_of_parts(
 ) -> Option<String> {
     let mut out = Vec::new();
     match (parts, lines.first_mut()) {
-        ([only], Some(first)) if one_body && first.starts_with(only.as_str()) => {
-            *first = format!("{name}{}", &first[only.len()..]);
+        ([only], Some(first)) if first.starts_with(only.as_str()) => {
+            // Of several bodies, the one that moves with the speed is named in the line.
+            let rest = &first[only.len()..];
+            *first = if one_body {
+                format!("{name}{rest}")
+            } else {
+                let rest = rest.trim_start().trim_start_matches('&');
+                format!("{name} &= {only}{rest}")
+            };
         }
         _ => out.push(line(name, "=", &parts.join(" + "))),
     }
     out.extend(lines);
     // One body's few short steps read in one line: `F^*_4 = v_4 · R^* + ω_4 · T^* = −m ẍ`.
-    if let Some(one_line) = (one_body && parts.len() == 1)
+    if let Some(one_line) = (parts.len() == 1)
         .then(|| in_one_line(&out))
         .flatten()
     {
