@@ -76,7 +76,9 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
         }
         (ComponentKind::Moment, None) => {
             let partials = centres(", ", &|b| {
-                format!("\\mathbf{{v}}^{{{b}}}_{{{r}}} = {dp} \\times \\mathbf{{r}}^{{{point} {b}}}")
+                format!(
+                    "\\mathbf{{v}}^{{{b}}}_{{{r}}} = {dp} \\times \\mathbf{{r}}^{{{point} {b}}}"
+                )
             });
             format!(
                 "Let ${bodies}$ turn about ${point}$ with angular speed ${u}$ about ${d}$: each of its bodies gains ${u}\\, {dp}$ and each point $X$ of it ${u}\\, {dp} \\times \\mathbf{{r}}^{{{point} X}}$. The partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."

@@ -247,9 +247,14 @@ fn part_lines(
             letters.couple
         ));
     }
-    // The definition is written in the first row; the rows after it start from the
+    // The definition is written in the first row and in the first auxiliary row, whose
+    // partial velocities are those of another motion; the rows after them start from the
     // products, as a textbook writes a second row like the first.
-    let mut lines = if r == 1 {
+    let first_of_its_kind = derivation
+        .dependent_speeds
+        .as_ref()
+        .map_or(r == 1, |s| r == 1 || r == s.independent.len() + 1);
+    let mut lines = if first_of_its_kind {
         vec![format!("{name} &= {definition}")]
     } else {
         Vec::new()
@@ -285,7 +290,10 @@ fn part_lines(
         return None;
     }
     lines.push(super::aligned::line("", "=", &formed));
-    if let Some(first) = lines.first_mut().filter(|l| l.trim_start().starts_with('&')) {
+    if let Some(first) = lines
+        .first_mut()
+        .filter(|l| l.trim_start().starts_with('&'))
+    {
         *first = format!("{name} {}", first.trim_start());
     }
     if part.term != part.formed {

@@ -263,6 +263,9 @@ mod factor_tests {
         // One term, its sums inside its own brackets: as it is.
         let one = "\\left(a + b\\right) \\hat{\\mathbf{n}}_{x}";
         assert_eq!(factor_of_product(one), one);
-        assert_eq!(factor_of_product("\\hat{\\mathbf{n}}_{y}"), "\\hat{\\mathbf{n}}_{y}");
+        assert_eq!(
+            factor_of_product("\\hat{\\mathbf{n}}_{y}"),
+            "\\hat{\\mathbf{n}}_{y}"
+        );
     }
 }
