@@ -85,7 +85,7 @@ pub fn sum_of_parts(
                 format!("{name}{rest}")
             } else {
                 let rest = rest.trim_start().trim_start_matches('&');
-                format!("{name} &= {only}{rest}")
+                format!("{name} &= {only} {rest}")
             };
         }
         _ => out.push(line(name, "=", &parts.join(" + "))),
