@@ -19,15 +19,18 @@ const MOST_PAGES: usize = 4;
 /// handouts measured on every problem once over 4 pages; the worksheets as first measured.
 const STILL_LONGER: &[(&str, usize)] = &[
     ("wheel-pendulum-kane", 5),
-    ("gyroscope-gimbal-kane", 5),
     ("rolling-coin-kane", 5),
+    ("wheel-pendulum-lagrange", 5),
+    ("gyroscope-gimbal-lagrange", 5),
 ];
 
 /// Worked handouts near [`MOST_PAGES`], set on every run: the gyroscope by the Motion Law
-/// (its statement asks for the gimbal's reaction alone), the disc on the cart and the
-/// double pendulum by Kane, whose step 5 solves its system with numbers.
-const LAST_BROUGHT_IN: [(&str, &str); 3] = [
+/// (its statement asks for the gimbal's reaction alone) and by Kane (its four reactions
+/// through auxiliary speeds), the disc on the cart and the double pendulum by Kane, whose
+/// step 5 solves its system with numbers.
+const LAST_BROUGHT_IN: [(&str, &str); 4] = [
     ("gyroscope-gimbal", "motion-law"),
+    ("gyroscope-gimbal", "kane"),
     ("disc-on-cart", "kane"),
     ("double-pendulum-rods", "kane"),
 ];

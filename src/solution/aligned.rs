@@ -78,17 +78,21 @@ pub fn sum_of_parts(
 ) -> Option<String> {
     let mut out = Vec::new();
     match (parts, lines.first_mut()) {
-        ([only], Some(first)) if one_body && first.starts_with(only.as_str()) => {
-            *first = format!("{name}{}", &first[only.len()..]);
+        ([only], Some(first)) if first.starts_with(only.as_str()) => {
+            // Of several bodies, the one that moves with the speed is named in the line.
+            let rest = &first[only.len()..];
+            *first = if one_body {
+                format!("{name}{rest}")
+            } else {
+                let rest = rest.trim_start().trim_start_matches('&');
+                format!("{name} &= {only} {rest}")
+            };
         }
         _ => out.push(line(name, "=", &parts.join(" + "))),
     }
     out.extend(lines);
     // One body's few short steps read in one line: `F^*_4 = v_4 · R^* + ω_4 · T^* = −m ẍ`.
-    if let Some(one_line) = (one_body && parts.len() == 1)
-        .then(|| in_one_line(&out))
-        .flatten()
-    {
+    if let Some(one_line) = (parts.len() == 1).then(|| in_one_line(&out)).flatten() {
         out = vec![one_line];
     }
     let formula = whole
@@ -122,9 +126,12 @@ mod tests {
         let joined = vec![lines.join(" \\\\ ")];
         let again = sum_of_parts("F^{*}_{4}", &parts, joined, "", true).expect("short");
         assert_eq!(again, one);
-        // Of two bodies, the one that moves with the speed is named as a part of the sum.
+        // Of two bodies, the one that moves with the speed is named in the same line.
         let two = sum_of_parts("F^{*}_{4}", &parts, lines, "", false).expect("short");
-        assert!(two.starts_with("\\begin{aligned} F^{*}_{4} &= F^{*}_{4,D} \\\\ F^{*}_{4,D} &="));
+        assert_eq!(
+            two,
+            "\\begin{aligned} F^{*}_{4} &= F^{*}_{4,D} = \\mathbf{v}^{D^*}_{4} \\cdot \\mathbf{R}^{*}_{D} = -m \\ddot{x} \\end{aligned}"
+        );
     }
 
     #[test]

@@ -34,6 +34,8 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
     let point = latex_name(site);
     let d = vector_tex(model, &reaction.direction);
     let u = format!("u_{{{r}}}");
+    // A direction of several terms in parentheses where it is multiplied.
+    let dp = super::tex::factor_of_product(&d);
     let particles_only = subtree
         .iter()
         .all(|&b| crate::mechanics::is_particle(&derivation.model, b));
@@ -65,19 +67,21 @@ pub fn augmented_note(derivation: &Derivation, row: &Equation, r: usize) -> Opti
             } else {
                 ", its partial angular velocities zero".to_string()
             };
-            let written = augmented_centres(derivation, &subtree, &format!("{u}\\, {d}"))
+            let written = augmented_centres(derivation, &subtree, &format!("{u}\\, {dp}"))
                 .map(|v| format!(": ${v}$. The"))
                 .unwrap_or_else(|| ". The".to_string());
             format!(
-                "Let ${point}$ slide with speed ${u}$ along ${d}$: every point of ${bodies}$ gains ${u}\\, {d}$ and its bodies turn as before{written} partial velocities of ${u}$ are ${partials} = {d}${angular}."
+                "Let ${point}$ slide with speed ${u}$ along ${d}$: every point of ${bodies}$ gains ${u}\\, {dp}$ and its bodies turn as before{written} partial velocities of ${u}$ are ${partials} = {d}${angular}."
             )
         }
         (ComponentKind::Moment, None) => {
             let partials = centres(", ", &|b| {
-                format!("\\mathbf{{v}}^{{{b}}}_{{{r}}} = {d} \\times \\mathbf{{r}}^{{{point} {b}}}")
+                format!(
+                    "\\mathbf{{v}}^{{{b}}}_{{{r}}} = {dp} \\times \\mathbf{{r}}^{{{point} {b}}}"
+                )
             });
             format!(
-                "Let ${bodies}$ turn about ${point}$ with angular speed ${u}$ about ${d}$: each of its bodies gains ${u}\\, {d}$ and each point $X$ of it ${u}\\, {d} \\times \\mathbf{{r}}^{{{point} X}}$. The partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
+                "Let ${bodies}$ turn about ${point}$ with angular speed ${u}$ about ${d}$: each of its bodies gains ${u}\\, {dp}$ and each point $X$ of it ${u}\\, {dp} \\times \\mathbf{{r}}^{{{point} X}}$. The partial angular velocities of ${u}$ are ${d}$, the partial velocities ${partials}$."
             )
         }
     };

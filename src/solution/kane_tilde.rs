@@ -247,7 +247,18 @@ fn part_lines(
             letters.couple
         ));
     }
-    let mut lines = vec![format!("{name} &= {definition}")];
+    // The definition is written in the first row and in the first auxiliary row, whose
+    // partial velocities are those of another motion; the rows after them start from the
+    // products, as a textbook writes a second row like the first.
+    let first_of_its_kind = derivation
+        .dependent_speeds
+        .as_ref()
+        .map_or(r == 1, |s| r == 1 || r == s.independent.len() + 1);
+    let mut lines = if first_of_its_kind {
+        vec![format!("{name} &= {definition}")]
+    } else {
+        Vec::new()
+    };
     let dots: Vec<&DotProduct> = part.dots.iter().collect();
     let mut products = products_lines(&dots);
     // One product by a unit vector's unit component is the term as formed: said once.
@@ -279,6 +290,12 @@ fn part_lines(
         return None;
     }
     lines.push(super::aligned::line("", "=", &formed));
+    if let Some(first) = lines
+        .first_mut()
+        .filter(|l| l.trim_start().starts_with('&'))
+    {
+        *first = format!("{name} {}", first.trim_start());
+    }
     if part.term != part.formed {
         let entering = elimination.entering(&part.formed);
         lines.extend(acceleration_lines(
@@ -346,11 +363,12 @@ pub fn inertia_dot_products(
         lines.extend(part_lines);
     }
     lines.extend(kept_note(derivation, &elimination, &this, r));
-    // A long part is written once: the whole, which would repeat it, is read in the sum.
+    // A long part is written once: the whole, which would repeat it, is read in the sum;
+    // an auxiliary row's whole is the reaction solved for just below, with its sign turned.
     let long = this
         .iter()
         .any(|p| latex_collected(&p.term).len() > LONGEST_REPEATED);
-    let whole = if long { "" } else { whole };
+    let whole = if long || auxiliary { "" } else { whole };
     let block = super::aligned::sum_of_parts(
         &format!("\\tilde{{F}}^{{*}}_{{{r}}}"),
         &names,

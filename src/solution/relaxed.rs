@@ -59,16 +59,18 @@ pub fn relaxed(
     let bodies = bodies_tex(derivation, &row.free_body);
     let point = latex_name(site);
     let d = vector_tex(model, &reaction.direction);
+    // A direction of several terms in parentheses where it is multiplied.
+    let dp = super::tex::factor_of_product(&d);
     let (motion, inertia_sum) = match reaction.kind {
         ComponentKind::Force => (
             format!(
-                "Let ${point}$ give way along ${d}$ by an auxiliary coordinate ${xi}$, zero in the motion: every point of ${bodies}$ gains the velocity ${xi_dot}\\, {d}$, so that $\\partial \\mathbf{{v}}^{{k^*}} / \\partial {xi_dot} = {d}$ and $\\partial \\boldsymbol{{\\omega}}^{{k}} / \\partial {xi_dot} = \\mathbf{{0}}$ for each body $k$ of ${bodies}$."
+                "Let ${point}$ give way along ${d}$ by an auxiliary coordinate ${xi}$, zero in the motion: every point of ${bodies}$ gains the velocity ${xi_dot}\\, {dp}$, so that $\\partial \\mathbf{{v}}^{{k^*}} / \\partial {xi_dot} = {d}$ and $\\partial \\boldsymbol{{\\omega}}^{{k}} / \\partial {xi_dot} = \\mathbf{{0}}$ for each body $k$ of ${bodies}$."
             ),
             format!("\\sum_{{k}} m_{{k}}\\, \\mathbf{{a}}^{{k^*}} \\cdot {d}"),
         ),
         ComponentKind::Moment => (
             format!(
-                "Let ${bodies}$ turn about ${point}$ by an auxiliary angle ${xi}$ about ${d}$, zero in the motion: each of its bodies gains the angular velocity ${xi_dot}\\, {d}$, so that $\\partial \\boldsymbol{{\\omega}}^{{k}} / \\partial {xi_dot} = {d}$ and $\\partial \\mathbf{{v}}^{{k^*}} / \\partial {xi_dot} = {d} \\times \\mathbf{{r}}^{{{point} k^*}}$."
+                "Let ${bodies}$ turn about ${point}$ by an auxiliary angle ${xi}$ about ${d}$, zero in the motion: each of its bodies gains the angular velocity ${xi_dot}\\, {dp}$, so that $\\partial \\boldsymbol{{\\omega}}^{{k}} / \\partial {xi_dot} = {d}$ and $\\partial \\mathbf{{v}}^{{k^*}} / \\partial {xi_dot} = {dp} \\times \\mathbf{{r}}^{{{point} k^*}}$."
             ),
             format!("\\sum_{{k}} \\left( \\mathbf{{r}}^{{{point} k^*}} \\times m_{{k}} \\mathbf{{a}}^{{k^*}} + \\mathbf{{I}}^{{k}} \\cdot \\boldsymbol{{\\alpha}}^{{k}} + \\boldsymbol{{\\omega}}^{{k}} \\times \\mathbf{{I}}^{{k}} \\cdot \\boldsymbol{{\\omega}}^{{k}} \\right) \\cdot {d}"),
         ),

@@ -226,3 +226,46 @@ pub(super) fn numeric_sum(
     }
     (!sum.is_empty()).then_some(sum)
 }
+
+/// `v` (LaTeX) as a factor of a product: in parentheses where it is a sum or opens with a
+/// sign, so that `u\, (a + b)` and `(a + b) \times r` read as the product they are.
+pub fn factor_of_product(v: &str) -> String {
+    let mut depth = 0i32;
+    let mut several = v.trim_start().starts_with('-');
+    let bytes = v.as_bytes();
+    for (i, &c) in bytes.iter().enumerate() {
+        match c {
+            b'(' | b'[' | b'{' => depth += 1,
+            b')' | b']' | b'}' => depth -= 1,
+            b'+' | b'-' if depth == 0 && i > 0 && bytes[i - 1] == b' ' => several = true,
+            _ => {}
+        }
+    }
+    if several {
+        format!("\\left({v}\\right)")
+    } else {
+        v.to_string()
+    }
+}
+
+#[cfg(test)]
+mod factor_tests {
+    use super::factor_of_product;
+
+    #[test]
+    fn a_sum_or_a_signed_direction_is_bracketed_as_a_factor() {
+        let sum = "-S_{\\psi} \\hat{\\mathbf{n}}_{x} + C_{\\psi} \\hat{\\mathbf{n}}_{y}";
+        assert_eq!(factor_of_product(sum), format!("\\left({sum}\\right)"));
+        assert_eq!(
+            factor_of_product("-\\hat{\\mathbf{n}}_{x}"),
+            "\\left(-\\hat{\\mathbf{n}}_{x}\\right)"
+        );
+        // One term, its sums inside its own brackets: as it is.
+        let one = "\\left(a + b\\right) \\hat{\\mathbf{n}}_{x}";
+        assert_eq!(factor_of_product(one), one);
+        assert_eq!(
+            factor_of_product("\\hat{\\mathbf{n}}_{y}"),
+            "\\hat{\\mathbf{n}}_{y}"
+        );
+    }
+}
