@@ -70,6 +70,12 @@ fn wrong_sentences(text: &str, problem: &Value) -> Vec<String> {
         "The equations of motion derived by",
         "keep the disc on the plane",
         "its line of centres is a unit vector",
+        // A later auxiliary row of the same free body does not say again which bodies move:
+        // with the four-bar's u₅, C stays still.
+        "Again only B and C move",
+        // A skidding ball's rate and slip fall while it slides: "grows" was false.
+        "each rate grows linearly",
+        "the rate has grown from its start",
         // The solve and the simulation said as a program runs them, not as a course does.
         "Solved in two stages",
         "solved in two stages",

@@ -449,3 +449,33 @@ fn the_tops_tip_force_is_said_by_its_vertical_and_horizontal_parts() {
         assert!((c("z") - m * constant("heavy-symmetric-top", "g")).abs() < 1e-9);
     }
 }
+
+/// The gear pair's animation turns the pinion one way throughout: it speeds up under its
+/// torque (q̈_A = 225 rad/s²) until it turns more than half a turn between frames, and a
+/// body whose angle were taken back to the nearest of the last frame's would be seen
+/// turning back.
+#[test]
+fn a_fast_pinion_is_animated_turning_one_way() {
+    let html = crate::support::explain(
+        "gear-pair-torque",
+        &["--method", "newton-euler", "--format", "html"],
+    );
+    let mut checked = 0;
+    for piece in html.split("type=\"rotate\"").skip(1) {
+        let values = piece.split("values=\"").nth(1).unwrap_or_default();
+        let values = values.split('"').next().unwrap_or_default();
+        let angles: Vec<f64> = values.split(';').filter_map(|v| v.parse().ok()).collect();
+        let steps: Vec<f64> = angles.windows(2).map(|w| w[1] - w[0]).collect();
+        let last = steps.last().copied().unwrap_or_default();
+        if last.abs() > 180.0 {
+            // A body that ends fast: every frame after its first turn goes the same way.
+            let same_way = steps.iter().skip(2).all(|s| s * last > 0.0);
+            assert!(same_way, "{values}");
+            checked += 1;
+        }
+    }
+    assert!(
+        checked >= 1,
+        "no body turns more than half a turn between frames"
+    );
+}

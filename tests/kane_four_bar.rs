@@ -50,7 +50,11 @@ fn the_pin_force_at_r_is_found_on_the_free_body_that_draws_it() {
     // B + C's free body draws the pins P and Q, which do no work with u4.
     assert!(!row4.contains("free body $B + C$"), "{row4}");
     let row5 = section(&text, "**5. $r = 5", "**6.");
-    assert!(row5.contains("only the pair at $R$ does work with $u_{5}$, as in row 4"));
+    assert!(row5.contains(
+        "As in row 4, of the constraint forces only the pair at $R$ does work with $u_{5}$."
+    ));
+    // C stays still with u5: which bodies move is not said again.
+    assert!(!row5.contains("Again only"), "{row5}");
     // O's rows say how the pin gives way and which force does work.
     let row2 = section(&text, "**2. $r = 2", "**3. $r = 3");
     assert!(

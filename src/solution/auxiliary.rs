@@ -144,7 +144,7 @@ pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<S
     Some(match (first < r, inside) {
         (true, None) => format!("Again only {names} {moves}."),
         (true, Some(pair)) => format!(
-            "Again only {names} {moves}, and of the constraint forces only the pair at ${}$ does work with $u_{{{r}}}$, as in row {first}.",
+            "As in row {first}, of the constraint forces only the pair at ${}$ does work with $u_{{{r}}}$.",
             pair.point
         ),
         (false, None) => {

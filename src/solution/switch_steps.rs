@@ -356,7 +356,7 @@ fn steps_for(
             moving.join(", \\qquad "),
         ));
         steps.push(step(
-            "so each rate grows linearly from its start, and so does the slip velocity of the contact point, the velocity that the no-slip condition makes zero:",
+            "so each rate changes linearly in time from its start, and so does the slip velocity of the contact point, the velocity that the no-slip condition makes zero:",
             format!(
                 "v_{{\\mathrm{{slip}}}} = {} = {}",
                 latex(&closed.slip.0),
@@ -402,7 +402,7 @@ fn steps_for(
             format!("\\ {unit}")
         };
         steps.push(step(
-            "At that instant the rate has grown from its start by the constant acceleration times the time:",
+            "At that instant the rate has changed from its start by the constant acceleration times the time:",
             format!(
                 "{rate} = {} = {} = {}{unit}",
                 latex(&grown(&Expr::time())),

@@ -84,12 +84,16 @@ pub(super) fn body(out: &mut String, motion: &Motion, timing: &Timing, k: usize)
 fn sheet_transforms(out: &mut String, motion: &Motion, timing: &Timing, s: usize) {
     let p = &motion.projection;
     let mut parts: [Vec<String>; 4] = Default::default();
-    let mut last_angle: Option<f64> = None;
+    let (mut last_angle, mut last_turn): (Option<f64>, f64) = (None, 0.0);
     for frame in &motion.frames {
         let [e, f, mut theta, skew, sx, sy] = decompose(sheet_matrix(p, &frame.sheets[s]));
-        // The turn goes on continuously, never back round the long way.
+        // The turn goes on continuously: the angle nearest to where the last frame's turn
+        // carries it on, so a body that turns more than half a turn between frames (a fast
+        // pinion) is not seen to turn back.
         if let Some(last) = last_angle {
-            theta += 360.0 * ((last - theta) / 360.0).round();
+            let expected = last + last_turn;
+            theta += 360.0 * ((expected - theta) / 360.0).round();
+            last_turn = theta - last;
         }
         last_angle = Some(theta);
         parts[0].push(format!("{} {}", num(e), num(f)));
