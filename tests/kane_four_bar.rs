@@ -17,27 +17,7 @@
 //!   ^B v^R_4 = b_x, and likewise ^B v^R_5 = b_y;
 //! - the pin force at R is inside B + C, the bodies u4 moves: free body C draws it.
 
-use mbd_tutor::equations::Method;
-use mbd_tutor::render::{render, Format};
-use std::path::Path;
-
-fn kane(name: &str) -> String {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("problems")
-        .join(name);
-    let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
-    let solution = mbd_tutor::pipeline::work(&problem, Method::Kane)
-        .map(|worked| mbd_tutor::solution::worked(&worked))
-        .expect("Kane's method derives");
-    render(&solution, Format::Markdown, None, false).expect("the handout renders")
-}
-
-/// The part of `text` from `start` to `end`.
-fn section<'a>(text: &'a str, start: &str, end: &str) -> &'a str {
-    let from = text.find(start).unwrap_or_else(|| panic!("no `{start}`"));
-    let to = text[from..].find(end).map_or(text.len(), |i| from + i);
-    &text[from..to]
-}
+use crate::kane_handout::{markdown as kane, section};
 
 #[test]
 fn the_pin_force_at_r_is_found_on_the_free_body_that_draws_it() {

@@ -26,7 +26,8 @@ use mbd_tutor::render::{render, Format};
 use mbd_tutor::symbolic::latex_unit_vector;
 use std::path::Path;
 
-fn markdown(name: &str) -> String {
+/// Kane's worked handout of the bundled problem `name` (a file name), in Markdown.
+pub(crate) fn markdown(name: &str) -> String {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("problems")
         .join(name);
@@ -38,7 +39,7 @@ fn markdown(name: &str) -> String {
 }
 
 /// The part of the handout from `start` to `end`.
-fn section<'a>(text: &'a str, start: &str, end: &str) -> &'a str {
+pub(crate) fn section<'a>(text: &'a str, start: &str, end: &str) -> &'a str {
     let from = text.find(start).unwrap_or_else(|| panic!("no `{start}`"));
     let to = text[from..].find(end).map_or(text.len(), |i| from + i);
     &text[from..to]
