@@ -16,7 +16,8 @@ const END: f64 = 8.0;
 
 type Segment = ([f64; 2], [f64; 2]);
 
-fn to_segment(p: [f64; 2], (a, b): Segment) -> f64 {
+/// How far `p` is from the segment `a`–`b`.
+pub(super) fn to_segment(p: [f64; 2], (a, b): Segment) -> f64 {
     let d = [b[0] - a[0], b[1] - a[1]];
     let length2 = d[0] * d[0] + d[1] * d[1];
     let t = if length2 > 0.0 {

@@ -28,18 +28,6 @@ fn arcs(items: &[Item], out: &mut Vec<Vec<P2>>) {
     }
 }
 
-/// How far `p` is from the segment `a`–`b`.
-fn to_segment(p: P2, a: P2, b: P2) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let length2 = d[0] * d[0] + d[1] * d[1];
-    let t = if length2 > 0.0 {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / length2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * d[0]).hypot(p[1] - a[1] - t * d[1])
-}
-
 /// The turn from `a` to `b` about `c` on the page (radians; y down, so a turn
 /// counterclockwise in `N` is negative here).
 fn turn(c: P2, a: P2, b: P2) -> f64 {
@@ -230,7 +218,7 @@ fn the_moment_vector_does_not_lie_beside_m_a() {
                     let near = (1..=4).any(|k| {
                         let t = f64::from(k) / 5.0;
                         let p = [a.tail[0] + t * u[0], a.tail[1] + t * u[1]];
-                        to_segment(p, b.tail, b.head) < 10.0 * grow
+                        super::overlap::to_segment(p, (b.tail, b.head)) < 10.0 * grow
                     });
                     assert!(
                         !(near && cos.abs() > 30f64.to_radians().cos()),
