@@ -225,6 +225,29 @@ fn double_pendulum_missing_velocity_term_and_one_equation_for_two() {
     assert_eq!((report.score(), report.out_of()), (1.0, 2));
 }
 
+/// A reference made for the questions a class answers works out those alone, and the
+/// same as the reference for every question: the double pendulum's q1'' and q2'' at the
+/// start (questions 0 and 1), not the energy after 4 s of motion (question 4), which the
+/// whole reference integrates to.
+#[test]
+fn a_reference_for_the_questions_asked_answers_them_as_the_whole() {
+    let path = problem("double-pendulum-rods");
+    let problem = mbd_tutor::problem::load_file(&path).expect("the problem loads");
+    let whole = Reference::new(&problem, Method::MotionLaw).expect("derived");
+    let asked = Reference::answering(&problem, Method::MotionLaw, &[0, 1]).expect("derived");
+    let (whole, asked) = (whole.answers.expect("all"), asked.answers.expect("asked"));
+    assert_eq!((whole.len(), asked.len()), (5, 5));
+    assert!(whole.iter().all(Option::is_some));
+    assert!(whole[4].as_ref().is_some_and(|a| a.simulated && a.time == 4.0));
+    assert_eq!(asked[..2], whole[..2]);
+    assert!(asked[2..].iter().all(Option::is_none));
+    // Nothing asked, nothing worked out.
+    let none = Reference::answering(&problem, Method::MotionLaw, &[]).expect("derived");
+    assert!(none.answers.expect("none").iter().all(Option::is_none));
+    let submission = read(r#"{"answers": {"1": 0.0, "3": 1.0}}"#).expect("a submission");
+    assert_eq!(mbd_tutor::grade::asked_questions([&submission]), [1, 3]);
+}
+
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mbd-grade-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);

@@ -33,7 +33,8 @@ pub fn run(args: GradeArgs) -> Result<(), Error> {
         source,
     })?;
     let submission = crate::grade::read(&text).map_err(Error::Submission)?;
-    let reference = Reference::new(&problem, method)?;
+    let asked = crate::grade::asked_questions([&submission]);
+    let reference = Reference::answering(&problem, method, &asked)?;
     let report = grade(&reference, &submission);
     let text = match args.format {
         GradeFormat::Text => report.text(),

@@ -39,7 +39,17 @@ pub(super) fn grade(reference: &Reference, given: &Named<Value>) -> Vec<Item> {
             continue;
         };
         let answer = match &reference.answers {
-            Ok(all) => &all[i],
+            Ok(all) => match &all[i] {
+                Some(answer) => answer,
+                None => {
+                    // Not worked out: the reference was made for other questions.
+                    items.push(Item::invalid(
+                        name,
+                        format!("question {i} was not worked out"),
+                    ));
+                    continue;
+                }
+            },
             Err(why) => {
                 items.push(Item::invalid(
                     name,

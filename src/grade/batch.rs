@@ -120,7 +120,8 @@ pub fn grade_batch(dir: &Path, key: &Path, method: Method) -> Result<String, Err
                 continue;
             }
         };
-        match Reference::new(&problem, method) {
+        let asked = super::asked_questions(submissions.iter().map(|(_, s)| s));
+        match Reference::answering(&problem, method, &asked) {
             Ok(reference) => {
                 for (i, submission) in submissions {
                     graded[i].result = Ok(grade(&reference, &submission));

@@ -34,6 +34,19 @@ pub use reference::{Reference, Sample};
 pub use report::{Item, Report, Verdict};
 pub use submission::{read, Submission};
 
+/// The questions that `submissions` answer, by their index in `find.questions` (a key
+/// that is no index names none), in order: those a reference for them must work out.
+pub fn asked_questions<'s>(submissions: impl IntoIterator<Item = &'s Submission>) -> Vec<usize> {
+    let mut asked: Vec<usize> = (submissions.into_iter())
+        .filter_map(|s| s.answers.as_ref())
+        .flatten()
+        .filter_map(|(key, _)| key.parse::<usize>().ok())
+        .collect();
+    asked.sort_unstable();
+    asked.dedup();
+    asked
+}
+
 /// Grades `submission` against the worked solution `reference`: its answers, q'',
 /// equations, kinematics, partial velocities and generalized forces, in that order.
 pub fn grade(reference: &Reference, submission: &Submission) -> Report {

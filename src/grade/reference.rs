@@ -42,8 +42,9 @@ pub struct Reference<'p> {
     pub newton_euler: Option<Derivation<'p>>,
     /// Kane's rows, for the generalized forces; derived when first asked for.
     kane: OnceCell<Option<Derivation<'p>>>,
-    /// The answers of `find.questions`, or why they could not be found.
-    pub answers: Result<Vec<Answer>, String>,
+    /// The answers of `find.questions`, one per question (`None` for a question no
+    /// submission answers, which is not worked out), or why they could not be found.
+    pub answers: Result<Vec<Option<Answer>>, String>,
     /// The random states.
     pub samples: Vec<Sample>,
     /// Every reaction component of every site.
@@ -58,11 +59,27 @@ pub struct Reference<'p> {
 }
 
 impl<'p> Reference<'p> {
-    /// Derives the worked solution of `problem` by `method` and samples its motion.
+    /// Derives the worked solution of `problem` by `method`, answers every question and
+    /// samples its motion.
     ///
     /// # Errors
     /// When the equations cannot be derived or solved at any random state.
     pub fn new(problem: &'p Problem, method: Method) -> Result<Reference<'p>, Error> {
+        let every: Vec<usize> = (0..problem.questions.len()).collect();
+        Reference::answering(problem, method, &every)
+    }
+
+    /// As [`Reference::new`], answering only the questions `asked` (by their index in
+    /// `find.questions`), those the submissions answer: a question at a later time is
+    /// answered by integrating the motion to it, which no one then reads.
+    ///
+    /// # Errors
+    /// As for [`Reference::new`].
+    pub fn answering(
+        problem: &'p Problem,
+        method: Method,
+        asked: &[usize],
+    ) -> Result<Reference<'p>, Error> {
         let derivation =
             crate::pipeline::derive(problem, method, crate::pipeline::Purpose::Handout)?;
         let newton_euler = match method {
@@ -75,11 +92,7 @@ impl<'p> Reference<'p> {
             .ok(),
         };
         let solver = Solver::new(problem, &derivation);
-        let answers = match problem.questions.is_empty() {
-            true => Ok(Vec::new()),
-            // As `answer` gives them: statics, impacts and periods included.
-            false => crate::pipeline::answers(problem, method).map_err(|e| e.to_string()),
-        };
+        let answers = answers_of(problem, method, asked);
         let model = &derivation.model;
         let sites: Vec<usize> = (0..model.sites.len()).collect();
         let reactions = crate::mechanics::reaction_unknowns(model, &sites);
@@ -145,6 +158,44 @@ impl<'p> Reference<'p> {
             .filter(|(i, c)| c.motion.is_none() && !constraints.dependent.contains(i))
             .count()
     }
+}
+
+/// The answers of the questions `asked`, as `answer` gives them (statics, impacts and
+/// periods included), `None` for the others; every question's where one is asked about
+/// a steady motion another finds (`about`), which the answers must keep in their places.
+fn answers_of(
+    problem: &Problem,
+    method: Method,
+    asked: &[usize],
+) -> Result<Vec<Option<Answer>>, String> {
+    let questions = &problem.questions;
+    let about = questions.iter().any(|q| q.about.is_some());
+    let wanted: Vec<bool> = (0..questions.len())
+        .map(|i| about || asked.contains(&i))
+        .collect();
+    if !wanted.contains(&true) {
+        return Ok(vec![None; questions.len()]);
+    }
+    let found = match wanted.contains(&false) {
+        false => crate::pipeline::answers(problem, method),
+        // The others left out: each question is answered on its own (its path, which an
+        // error names, kept), so those asked come out the same.
+        true => crate::pipeline::answers(
+            &Problem {
+                questions: (questions.iter().zip(&wanted))
+                    .filter(|(_, &w)| w)
+                    .map(|(q, _)| q.clone())
+                    .collect(),
+                ..problem.clone()
+            },
+            method,
+        ),
+    };
+    let mut found = found.map_err(|e| e.to_string())?.into_iter();
+    Ok(wanted
+        .iter()
+        .map(|&w| if w { found.next() } else { None })
+        .collect())
 }
 
 /// `e` with every named quantity replaced by what it stands for.
