@@ -238,7 +238,9 @@ fn a_reference_for_the_questions_asked_answers_them_as_the_whole() {
     let (whole, asked) = (whole.answers.expect("all"), asked.answers.expect("asked"));
     assert_eq!((whole.len(), asked.len()), (5, 5));
     assert!(whole.iter().all(Option::is_some));
-    assert!(whole[4].as_ref().is_some_and(|a| a.simulated && a.time == 4.0));
+    assert!(whole[4]
+        .as_ref()
+        .is_some_and(|a| a.simulated && a.time == 4.0));
     assert_eq!(asked[..2], whole[..2]);
     assert!(asked[2..].iter().all(Option::is_none));
     // Nothing asked, nothing worked out.
