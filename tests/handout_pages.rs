@@ -18,13 +18,15 @@ const MOST_PAGES: usize = 4;
 /// its text is made shorter: none may grow, and none other may pass 4 pages. The worked
 /// handouts measured on every problem once over 4 pages; the worksheets as first measured.
 /// The coin by Kane ends with three lines of its answers on page 5; the struck double
-/// pendulum by the Motion Law with its plots and one answer.
+/// pendulum by the Motion Law with its plots and one answer; the unbalanced disk by
+/// Lagrange, eleven reactions each relaxed in the same four lines, with its answers.
 const STILL_LONGER: &[(&str, usize)] = &[
     ("wheel-pendulum-kane", 5),
     ("rolling-coin-kane", 5),
     ("wheel-pendulum-lagrange", 5),
     ("gyroscope-gimbal-lagrange", 5),
     ("impact-double-pendulum-motion-law", 5),
+    ("unbalanced-disk-shaft-lagrange", 5),
 ];
 
 /// Worked handouts near [`MOST_PAGES`], set on every run: the gyroscope by the Motion Law
