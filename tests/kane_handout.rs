@@ -478,10 +478,20 @@ fn kanes_system_of_nine_unknowns_is_its_rows_not_a_pattern_of_dots() {
     let text = markdown("rolling-coin.json");
     let step5 = section(&text, "## Step 5", "## Step 6");
     assert!(!step5.contains("\\bullet"), "{step5}");
-    assert!(step5.contains(
-        "The 9 rows are linear in the 9 unknowns; they are solved with the numbers of the initial state."
-    ));
+    assert!(step5.contains("The 9 rows are linear in the 9 unknowns."));
     assert!(!step5.contains("minus the rest"), "{step5}");
+    // Said once: the solution in numbers names the rows without a reaction, solved first,
+    // and the rows that then give the reactions; no sentence before it says so again.
+    assert!(
+        step5.contains("At the initial state of step 1, in SI units, rows (1), (2), (3), (7), (8) and (9), which hold no reaction, give"),
+        "{step5}"
+    );
+    assert!(
+        step5.contains("with these, rows (4), (5) and (6) give"),
+        "{step5}"
+    );
+    assert!(!step5.contains("contain no reaction"), "{step5}");
+    assert!(!step5.contains("solved with the numbers"), "{step5}");
 }
 
 #[test]

@@ -67,6 +67,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         let initial = |e: &Expr| crate::symbolic::eval(e, &at_start);
         solution.in_numbers =
             super::in_numbers::in_numbers(worked, &shown, &initial, !sliding.is_empty());
+        super::in_numbers::said_once(&mut solution.solve_notes, derivation, &solution.in_numbers);
         solution.matrix = super::matrix::matrix(derivation, &by_name, shown, initial, &sliding);
         solution.partial_velocities = super::kane::partial_velocities(derivation);
         solution.kane_theory = super::kane_theory::theory(derivation);

@@ -4,7 +4,7 @@
 
 use super::answer_numbers::number_tex;
 use super::solve_words::{is_reaction, row_list};
-use crate::equations::LinearSystem;
+use crate::equations::{Derivation, LinearSystem};
 use crate::render::context::InNumbers;
 use crate::render::printed_width;
 use crate::render::text::{MarkupLine, Math};
@@ -171,7 +171,7 @@ pub fn in_numbers(
             vec![system_tex]
         }
         _ => {
-            lead_text = listed_lead(worked, &system, &rows, &pairs);
+            lead_text = listed_lead(&system, &rows, &pairs);
             Vec::new()
         }
     };
@@ -200,6 +200,7 @@ pub fn in_numbers(
         .all(|k| names.contains(&latex(&problem.coordinate_expr(k, 2))));
     InNumbers {
         gives_accelerations,
+        in_order: rows.len() < system.a.len(),
         lead: MarkupLine::from(lead_text),
         displays_tex: Math::all(displays),
         closed_forms: MarkupLine::all(closed),
@@ -210,8 +211,9 @@ pub fn in_numbers(
 fn lead(worked: &Worked, system: &LinearSystem, rows: &[usize], names: &[String]) -> String {
     let state = "At the initial state of step 1, in SI units,";
     if rows.len() < system.a.len() {
+        // Why these rows come first, said here once: the order's sentence is left out.
         return format!(
-            "{state} rows {} give {} first:",
+            "{state} rows {}, which hold no reaction, give {} first:",
             row_list(rows),
             math_list(names)
         );
@@ -230,14 +232,40 @@ fn lead(worked: &Worked, system: &LinearSystem, rows: &[usize], names: &[String]
 }
 
 /// What is solved, with the solution listed: past four unknowns, no matrix of numbers.
-/// The rows solved first are named just above, where the order of the solve is said.
-fn listed_lead(worked: &Worked, system: &LinearSystem, rows: &[usize], pairs: &[String]) -> String {
+/// The rows solved first are named here, with why (the order's sentence is left out).
+fn listed_lead(system: &LinearSystem, rows: &[usize], pairs: &[String]) -> String {
     let state = "At the initial state of step 1, in SI units,";
-    let said = super::solve_words::order(&worked.derivation).is_some();
-    match (rows.len() < system.a.len(), said) {
-        (true, true) => format!("{state} these rows give {}.", math_list(pairs)),
-        (true, false) => format!("{state} rows {} give {}.", row_list(rows), math_list(pairs)),
-        (false, _) => format!("{state} the solution is {}.", math_list(pairs)),
+    match rows.len() < system.a.len() {
+        true => format!(
+            "{state} rows {}, which hold no reaction, give {}.",
+            row_list(rows),
+            math_list(pairs)
+        ),
+        false => format!("{state} the solution is {}.", math_list(pairs)),
+    }
+}
+
+/// Step 5's sentences after its rows, less what the solution in numbers says again: the
+/// order of the solve (the rows without a reaction first, then the others) when the
+/// numbers are solved in that order, and that the rows are solved with the numbers of the
+/// initial state when they are.
+pub fn said_once(notes: &mut Vec<MarkupLine>, derivation: &Derivation, numbers: &InNumbers) {
+    if numbers.lead.is_empty() {
+        return;
+    }
+    if numbers.in_order {
+        if let Some(order) = super::solve_words::order(derivation) {
+            notes.retain(|n| n.as_str() != order);
+        }
+    }
+    let long = super::kane_system::rows_are_the_system(derivation);
+    let short = super::kane_system::rows_are_linear(derivation);
+    if let (Some(long), Some(short)) = (long, short) {
+        for n in notes.iter_mut() {
+            if n.as_str() == long {
+                *n = MarkupLine::from(short.clone());
+            }
+        }
     }
 }
 

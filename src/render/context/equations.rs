@@ -188,6 +188,10 @@ pub struct InNumbers {
     /// at the initial state would repeat it).
     #[serde(skip)]
     pub gives_accelerations: bool,
+    /// Whether the rows without a reaction are solved first and the others after them, as
+    /// the lead and the sentence after the system say.
+    #[serde(skip)]
+    pub in_order: bool,
 }
 
 /// A number at the initial state.
