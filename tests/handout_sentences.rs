@@ -384,7 +384,9 @@ fn a_constant_energy_is_said_by_its_value_in_joules() {
         assert!((value - by_hand).abs() < 1e-5, "{value} against {by_hand}");
         // Its change is the simulation's error: a power of ten, not digits of noise.
         assert!(
-            answers.contains("Yes: $E$ stays constant. Over the motion it changes by less than $10^{-"),
+            answers.contains(
+                "Yes: $E$ stays constant. Over the motion it changes by less than $10^{-"
+            ),
             "{answers}"
         );
         // T and V as a student writes them, each with its number at the start.
@@ -394,7 +396,10 @@ fn a_constant_energy_is_said_by_its_value_in_joules() {
             answers[start..end].parse().expect("a number")
         };
         assert!(answers.contains("$E = T + V$"), "{answers}");
-        assert!(answers.contains("|{}^{N}\\mathbf{v}^{B^*}|^{2}"), "{answers}");
+        assert!(
+            answers.contains("|{}^{N}\\mathbf{v}^{B^*}|^{2}"),
+            "{answers}"
+        );
         let kinetic = number_before("\\ \\mathrm{J}$ and $V = ");
         let potential = number_before("\\ \\mathrm{J}$, each $h$");
         assert!((kinetic - t).abs() < 1e-5, "T {kinetic} against {t}");

@@ -52,8 +52,8 @@ pub fn lead(derivation: &Derivation) -> String {
         .filter(|&k| matches!(model.sites[k].kind, SiteKind::Contact(_)) && rolls(model, k))
         .find(|&k| contact_display(model, k, true).is_some());
     if first.is_none() {
-        if let Some(k) = (rough_sites(model).into_iter())
-            .find(|&k| contact_display(model, k, false).is_some())
+        if let Some(k) =
+            (rough_sites(model).into_iter()).find(|&k| contact_display(model, k, false).is_some())
         {
             let site = &model.sites[k];
             return format!(
@@ -67,7 +67,12 @@ pub fn lead(derivation: &Derivation) -> String {
     }
     let gear = first.and_then(|k| match model.sites[k].kind {
         SiteKind::Contact(c) => match &model.problem.constraints[c].kind {
-            ConstraintKind::Gear { body, on, .. } => Some((*body, *on)),
+            // Two wheels on their axles; a disc rolling in a fixed cylinder has no teeth.
+            ConstraintKind::Gear { body, on, .. }
+                if *body != BodyId::GROUND && *on != BodyId::GROUND =>
+            {
+                Some((*body, *on))
+            }
             _ => None,
         },
         _ => None,

@@ -48,7 +48,10 @@ pub fn steps(
     }
     let keep_in = columns.iter().position(|&j| j == keep)?;
     let system = &LinearSystem {
-        unknowns: columns.iter().map(|&j| printed.unknowns[j].clone()).collect(),
+        unknowns: columns
+            .iter()
+            .map(|&j| printed.unknowns[j].clone())
+            .collect(),
         a: (rows.iter())
             .map(|&i| columns.iter().map(|&j| printed.a[i][j].clone()).collect())
             .collect(),
@@ -80,12 +83,13 @@ fn needed(system: &LinearSystem, keep: usize) -> (Vec<usize>, Vec<usize>) {
     let mut columns: Vec<usize> = (0..n).collect();
     loop {
         let alone = rows.iter().find_map(|&i| {
-            (columns.iter().copied()).find(|&j| {
-                j != keep
-                    && !system.a[i][j].is_zero()
-                    && rows.iter().all(|&r| r == i || system.a[r][j].is_zero())
-            })
-            .map(|j| (i, j))
+            (columns.iter().copied())
+                .find(|&j| {
+                    j != keep
+                        && !system.a[i][j].is_zero()
+                        && rows.iter().all(|&r| r == i || system.a[r][j].is_zero())
+                })
+                .map(|j| (i, j))
         });
         match alone {
             Some((i, j)) => {

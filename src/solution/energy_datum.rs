@@ -68,14 +68,14 @@ pub fn sentence(worked: &Worked, value: f64) -> Option<String> {
     let origin = origin_name(worked);
     Some(format!(
         "{} $V$ is zero at the height of {origin}.",
-        definition(worked, kinetic, total - kinetic, &origin)
+        definition(worked, kinetic, total - kinetic)
     ))
 }
 
 /// `E = T + V` as a student writes it, each with its value at the start: the kinetic
 /// energy of every body from the velocities of step 4, gravity's potential from the
 /// heights of the mass centres.
-fn definition(worked: &Worked, kinetic: f64, potential: f64, origin: &str) -> String {
+fn definition(worked: &Worked, kinetic: f64, potential: f64) -> String {
     use crate::symbolic::{latex, latex_name};
     let model = &worked.derivation.model;
     let bodies: Vec<BodyId> = (model.problem.body_ids())
@@ -102,9 +102,9 @@ fn definition(worked: &Worked, kinetic: f64, potential: f64, origin: &str) -> St
     let (t, v): (Vec<String>, Vec<String>) = bodies.iter().map(|&b| term(b)).unzip();
     let heights = if bodies.len() == 1 {
         let centre = super::tex::centre_tex(model, bodies[0]);
-        format!("$h_{{{centre}}}$ the height of ${centre}$ above {origin}")
+        format!("$h_{{{centre}}}$ the height of ${centre}$")
     } else {
-        format!("each $h$ the height of a mass centre above {origin}")
+        "each $h$ the height of a mass centre".to_string()
     };
     let number = |x: f64| super::answer_numbers::number_tex(x);
     format!(

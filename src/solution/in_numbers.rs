@@ -269,17 +269,21 @@ fn units(worked: &Worked, unknowns: &[Symbol]) -> Vec<String> {
                 ComponentKind::Force => Some("N".into()),
                 ComponentKind::Moment => Some("N m".into()),
             },
-            Symbol::Unknown(Unknown::Drive { coordinate: c, .. }) => coordinate(c).map(|i| {
-                match problem.coordinates[i].kind {
+            Symbol::Unknown(Unknown::Drive { coordinate: c, .. }) => {
+                coordinate(c).map(|i| match problem.coordinates[i].kind {
                     crate::problem::CoordinateKind::Angle => "N m".into(),
                     crate::problem::CoordinateKind::Distance => "N".into(),
-                }
-            }),
+                })
+            }
             _ => None,
         }
     };
     (unknowns.iter())
-        .map(|u| unit(u).map_or(String::new(), |t| format!("\\ {}", crate::render::unit_tex(&t))))
+        .map(|u| {
+            unit(u).map_or(String::new(), |t| {
+                format!("\\ {}", crate::render::unit_tex(&t))
+            })
+        })
         .collect()
 }
 

@@ -304,7 +304,9 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
 /// a minus sign is not opened, so such a row is never said to be the same.
 fn same_terms(a: &str, b: &str) -> bool {
     fn terms(row: &str) -> Option<Vec<String>> {
-        let left = row.strip_suffix(" = 0")?;
+        let left = (row.strip_suffix(" = 0")?)
+            .replace("\\left[", "[")
+            .replace("\\right]", "]");
         if left.contains("- [") || left.contains("-[") {
             return None;
         }
@@ -420,7 +422,7 @@ mod tests {
 
     #[test]
     fn a_row_in_another_order_or_without_its_brackets_has_the_same_terms() {
-        let grouped = "[F^{O}_{y} - F^{P}_{t}] - m_{A} g = 0";
+        let grouped = "\\left[F^{O}_{y} - F^{P}_{t}\\right] - m_{A} g = 0";
         assert!(same_terms(grouped, "F^{O}_{y} - F^{P}_{t} - m_{A} g = 0"));
         assert!(same_terms(
             "-r_{B} F^{P}_{t} - I_{B} \\ddot{q}_{B} = 0",
@@ -430,6 +432,9 @@ mod tests {
         assert!(!same_terms("a - b = 0", "b - a = 0"));
         assert!(!same_terms("a - b = 0", "a - 2 b = 0"));
         assert!(!same_terms("a - [b - c] = 0", "a - b + c = 0"));
-        assert!(!same_terms("-\\frac{a - b}{2} = 0", "-\\frac{b - a}{2} = 0"));
+        assert!(!same_terms(
+            "-\\frac{a - b}{2} = 0",
+            "-\\frac{b - a}{2} = 0"
+        ));
     }
 }

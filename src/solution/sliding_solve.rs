@@ -81,8 +81,7 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
         // Step 5 prints the sliding law as the row itself and says so beside it; the
         // order of the solve is step 3's, said there once.
         return Some(
-            "Taking the rows one at a time, in the order of step 3, gives the values below."
-                .to_string(),
+            "The rows, taken one at a time in step 3's order, give the values below.".to_string(),
         );
     }
     Some(format!(
