@@ -397,7 +397,7 @@ fn a_constant_energy_is_said_by_its_value_in_joules() {
         };
         assert!(answers.contains("$E = T + V$"), "{answers}");
         assert!(
-            answers.contains("|{}^{N}\\mathbf{v}^{B^*}|^{2}"),
+            answers.contains("\\mathbf{v}^{B^*}\\vert ^{2}"),
             "{answers}"
         );
         let kinetic = number_before("\\ \\mathrm{J}$ and $V = ");

@@ -29,7 +29,11 @@ fn lacks(text: &str, what: &str, name: &str) {
 fn an_answer_is_a_sentence_followed_by_its_reason() {
     let name = "gear-pair-torque";
     let latex = handout(name, "newton-euler", "latex");
-    has(&latex, "$\\ddot{q}_{A} = 225\\ \\mathrm{rad/s^{2}}$.\\par", name);
+    has(
+        &latex,
+        "$\\ddot{q}_{A} = 225\\ \\mathrm{rad/s^{2}}$.\\par",
+        name,
+    );
     lacks(&latex, "\\mathrm{rad/s^{2}}$\\quad", name);
     let markdown = handout("double-pendulum-rods", "motion-law", "markdown");
     has(&markdown, "3. $E = -7.53656\\ \\mathrm{J}$.\n", name);
@@ -50,11 +54,23 @@ fn the_gear_pair_meshes_and_eliminates_in_its_seven_rows() {
     has(&text, "The teeth do not slip at the mesh", name);
     lacks(&text, "is not needed", name);
     has(&text, "Row (7) gives $\\ddot{q}_{B}$", name);
-    has(&text, "$$F^{P}_{t} = -\\frac{I_{B} \\ddot{q}_{B}}{r_{B}}$$", name);
+    has(
+        &text,
+        "$$F^{P}_{t} = -\\frac{I_{B} \\ddot{q}_{B}}{r_{B}}$$",
+        name,
+    );
     has(&text, "Put into row (3)", name);
-    lacks(&text, "with the reactions and the other accelerations eliminated", name);
+    lacks(
+        &text,
+        "with the reactions and the other accelerations eliminated",
+        name,
+    );
     // Row 6 as formed, −r_B F − I_B q̈_B = 0, is the simplified row reordered.
-    lacks(&text, "$$\n-r_{B} F^{P}_{t} - I_{B} \\ddot{q}_{B} = 0\n$$", name);
+    lacks(
+        &text,
+        "$$\n-r_{B} F^{P}_{t} - I_{B} \\ddot{q}_{B} = 0\n$$",
+        name,
+    );
     // A disc rolling in a fixed cylinder has no teeth.
     let disc = handout("disc-in-cylinder", "lagrange", "markdown");
     has(&disc, "Rolling without slipping", "disc-in-cylinder");
@@ -69,9 +85,17 @@ fn the_bowling_ball_derives_its_slip_velocity_before_the_answers() {
     let text = handout(name, "motion-law", "markdown");
     let step1 = &text[..text.find("## Step 2").expect("step 2")];
     has(step1, "The slip velocity at the lane", name);
-    has(step1, "(\\dot{x} + R \\dot{\\theta}) \\hat{\\mathbf{n}}_{x}", name);
+    has(
+        step1,
+        "(\\dot{x} + R \\dot{\\theta}) \\hat{\\mathbf{n}}_{x}",
+        name,
+    );
     lacks(step1, "= \\mathbf{0}", name);
-    lacks(&text, "Solved one after another in the order step 3 gives", name);
+    lacks(
+        &text,
+        "Solved one after another in the order step 3 gives",
+        name,
+    );
 }
 
 /// The rolling coin's energy: E = T + V written, T and V each with its number, and the
@@ -121,8 +145,16 @@ fn a_linearized_period_says_it_is_about_the_state() {
 fn the_inertia_rows_are_said_against_the_kinetic_diagram() {
     let name = "double-pendulum-rods";
     let text = handout(name, "motion-law", "markdown");
-    has(&text, "| inertia force of A, opposite to the kinetic diagram's |", name);
-    has(&text, "| inertia torque of B, opposite to the kinetic diagram's |", name);
+    has(
+        &text,
+        "| inertia force of A, opposite to the kinetic diagram's |",
+        name,
+    );
+    has(
+        &text,
+        "| inertia torque of B, opposite to the kinetic diagram's |",
+        name,
+    );
 }
 
 /// Course words in step 1 and 5: the coordinate table's column says the motion, the
