@@ -382,10 +382,28 @@ fn a_constant_energy_is_said_by_its_value_in_joules() {
             .collect();
         let value: f64 = printed.parse().expect("a number");
         assert!((value - by_hand).abs() < 1e-5, "{value} against {by_hand}");
+        // Its change is the simulation's error: a power of ten, not digits of noise.
         assert!(
-            answers.contains("Yes: $E$ stays constant: over the motion it changes by at most "),
+            answers.contains(
+                "Yes: $E$ stays constant. Over the motion it changes by less than $10^{-"
+            ),
             "{answers}"
         );
+        // T and V as a student writes them, each with its number at the start.
+        let number_before = |mark: &str| -> f64 {
+            let end = answers.find(mark).expect(mark);
+            let start = answers[..end].rfind(" = ").expect("a value") + 3;
+            answers[start..end].parse().expect("a number")
+        };
+        assert!(answers.contains("$E = T + V$"), "{answers}");
+        assert!(
+            answers.contains("\\mathbf{v}^{B^*}\\vert ^{2}"),
+            "{answers}"
+        );
+        let kinetic = number_before("\\ \\mathrm{J}$ and $V = ");
+        let potential = number_before("\\ \\mathrm{J}$, each $h$");
+        assert!((kinetic - t).abs() < 1e-5, "T {kinetic} against {t}");
+        assert!((potential - v).abs() < 1e-5, "V {potential} against {v}");
     }
 }
 

@@ -123,9 +123,14 @@ fn the_system_matrix_is_named_by_a_letter_no_frame_uses() {
     assert!(!answers.contains("RHS"), "{answers}");
     // The check of the steady motion is shown from the rows: θ̇ = 0 clears rows (1) and (3),
     // and row (2) is the relation of answer 1.
-    assert!(answers.contains("rows (1) and (3) vanish"), "{answers}");
+    // The rows are written `… = 0`: no right side to speak of.
     assert!(
-        answers.contains("row (2) is zero by the relation of answer 1"),
+        answers.contains("rows (1) and (3) without a second derivative vanish"),
+        "{answers}"
+    );
+    assert!(!answers.contains("right side"), "{answers}");
+    assert!(
+        answers.contains("row (2) add up to zero by the relation of answer 1"),
         "{answers}"
     );
 }

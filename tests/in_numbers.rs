@@ -55,7 +55,8 @@ fn in_numbers(text: &str) -> InNumbers {
             None => between(block, "Its solution: ", ".\n")
                 .split('$')
                 .filter_map(|part| part.split_once(" = "))
-                .map(|(_, v)| number(v))
+                // Each value listed with its unit, `v\ \mathrm{N}`.
+                .map(|(_, v)| number(v.split("\\ ").next().unwrap_or(v)))
                 .collect(),
         },
     }

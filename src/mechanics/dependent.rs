@@ -121,16 +121,32 @@ pub fn choose(
         }
         // Every dependent rate: a dependent coordinate's rate is one too (a disc's height
         // on a cart, ḣ = 0), beside the rates only the velocity constraints fix.
-        let mut listed = dependent_rates.clone();
-        listed.sort_unstable();
-        let mut note = format!(
-            "Dependent rates (solved from the velocity constraints): {}",
-            listed
-                .iter()
+        // The rate of a dependent coordinate comes from its position constraint
+        // differentiated in time, not from a velocity constraint: said apart.
+        let rates = |of: &[usize]| {
+            let mut listed = of.to_vec();
+            listed.sort_unstable();
+            (listed.iter())
                 .map(|&i| format!("`{}'`", problem.coordinates[i].name))
                 .collect::<Vec<_>>()
                 .join(", ")
-        );
+        };
+        let of_positions: Vec<usize> = (dependent_rates.iter().copied())
+            .filter(|i| dependent.contains(i))
+            .collect();
+        let mut note = if of_positions.is_empty() {
+            format!(
+                "Dependent rates (solved from the velocity constraints): {}",
+                rates(&rate_only)
+            )
+        } else {
+            format!(
+                "Dependent rates: {} (the position constraints differentiated in time) and {} \
+                 (solved from the velocity constraints)",
+                rates(&of_positions),
+                rates(&rate_only)
+            )
+        };
         if !chosen.is_empty() {
             note.push_str(", which those constraints fix once the other rates are given");
         }

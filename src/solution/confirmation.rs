@@ -91,9 +91,17 @@ pub fn work_balance(
             fixed(at)
         ));
     }
+    // A difference at the round-off of the energies is no number to print: its digits are
+    // noise. A larger one is said to two figures.
+    let scale = work.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    if worst <= 1e-12 * scale {
+        return Some(format!(
+            "{head}, and along the motion $E(t) - E(0)$ equals $W(t)$ to within round-off."
+        ));
+    }
     Some(format!(
         "{head}, and along the motion $E(t) - E(0)$ differs from $W(t)$ by at most {} J.",
-        num(worst)
+        num(format!("{worst:.1e}").parse().unwrap_or(worst))
     ))
 }
 

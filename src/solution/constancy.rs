@@ -115,19 +115,17 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     }
 }
 
-/// "Yes: E stays constant: over the motion it changes by at most 3.2 × 10⁻⁹ J." in the
-/// markup of an answer's step, the change to two figures.
+/// "Yes: E stays constant. Over the motion it changes by less than 10⁻⁸ J, the accuracy of
+/// the simulation." in the markup of an answer's step: the change as the power of ten above
+/// it, since its digits are the integration's error, not the mechanics.
 fn largest_change_words(symbol: Option<&str>, change: f64) -> String {
     let symbol = symbol.map_or("it".to_string(), |s| format!("${s}$"));
-    let size = match change {
-        0.0 => "0".to_string(),
-        c => {
-            let text = format!("{c:.1e}");
-            let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-            format!("{mantissa} \\times 10^{{{exponent}}}")
-        }
-    };
+    if change <= 0.0 {
+        return format!("Yes: {symbol} stays constant; in the simulation it does not change.");
+    }
+    let exponent = change.log10().floor() as i32 + 1;
     format!(
-        "Yes: {symbol} stays constant: over the motion it changes by at most ${size}\\ \\mathrm{{J}}$."
+        "Yes: {symbol} stays constant. Over the motion it changes by less than \
+         $10^{{{exponent}}}\\ \\mathrm{{J}}$, the accuracy of the simulation."
     )
 }

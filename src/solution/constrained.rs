@@ -139,13 +139,12 @@ fn dropped_in_words(model: &Model, site: &str, what: &str) -> Option<String> {
     let found = model.sites.iter().find(|s| s.name == site)?;
     let words = |b| super::joint_words::body_words(model.problem, b);
     let (body, on) = (words(found.child), words(found.parent));
-    let place = site.replace('_', " ");
     match what {
         "height" => Some(format!(
-            "The no-penetration constraint at {place} is not needed: the joints already keep {body} on {on}, so it holds identically and the joints carry the normal load."
+            "The joints keep {body} on {on}, so the two stay in contact without an equation for it; the joints carry the normal load."
         )),
         "distance" => Some(format!(
-            "The distance constraint at {place} is not needed: the joints already keep the centres of {body} and {on} the pitch radii apart, so it holds identically and the joints carry the push along the line of centres."
+            "The joints hold the centres of {body} and {on} at the distance at which their pitch circles touch, so the teeth stay in mesh without an equation for it; the joints carry the push along the line of centres."
         )),
         _ => None,
     }

@@ -8,7 +8,7 @@
 use super::tex::{centre_tex, initial_sign, shortest_tex};
 use crate::equations::Derivation;
 use crate::mechanics::{Model, RowOrigin, SiteKind, Vector};
-use crate::problem::BodyId;
+use crate::problem::{BodyId, ConstraintKind};
 use crate::symbolic::{latex_name, roots_of_squares, simplify, Axis};
 
 /// The most characters of LaTeX the velocity written out may take: a longer one (the
@@ -19,10 +19,80 @@ const LONGEST: usize = 900;
 /// sites.
 pub fn loops(derivation: &Derivation) -> Vec<String> {
     let model = &derivation.model;
-    (0..model.sites.len())
+    let rolling: Vec<String> = (0..model.sites.len())
         .filter(|&k| matches!(model.sites[k].kind, SiteKind::Contact(_)) && rolls(model, k))
-        .filter_map(|k| contact_display(model, k))
+        .filter_map(|k| contact_display(model, k, true))
+        .collect();
+    if !rolling.is_empty() {
+        return rolling;
+    }
+    // No contact that rolls: a rough one's slip velocity, which decides whether it slides.
+    rough_sites(model)
+        .into_iter()
+        .filter_map(|k| contact_display(model, k, false))
         .collect()
+}
+
+/// The rough contacts (a friction law at the site) on the ground.
+fn rough_sites(model: &Model) -> Vec<usize> {
+    (0..model.sites.len())
+        .filter(|&k| {
+            matches!(model.sites[k].kind, SiteKind::Contact(_))
+                && model.sites[k].parent == BodyId::GROUND
+                && model.constraints.friction.iter().any(|f| f.site == k)
+        })
+        .collect()
+}
+
+/// The sentence before the first display: rolling on a surface, or the teeth of two wheels
+/// that mesh, each wheel's point at the mesh moving with the other's.
+pub fn lead(derivation: &Derivation) -> String {
+    let model = &derivation.model;
+    let first = (0..model.sites.len())
+        .filter(|&k| matches!(model.sites[k].kind, SiteKind::Contact(_)) && rolls(model, k))
+        .find(|&k| contact_display(model, k, true).is_some());
+    if first.is_none() {
+        if let Some(k) =
+            (rough_sites(model).into_iter()).find(|&k| contact_display(model, k, false).is_some())
+        {
+            let site = &model.sites[k];
+            return format!(
+                "The slip velocity at {}: the velocity of the point of {} there, relative to \
+                 the ground. Friction acts against it while it is not zero; once it is zero, \
+                 the contact rolls.",
+                super::force_labels::place(&site.name),
+                super::joint_words::body_words(model.problem, site.child)
+            );
+        }
+    }
+    let gear = first.and_then(|k| match model.sites[k].kind {
+        SiteKind::Contact(c) => match &model.problem.constraints[c].kind {
+            // Two wheels on their axles; a disc rolling in a fixed cylinder has no teeth.
+            ConstraintKind::Gear { body, on, .. }
+                if *body != BodyId::GROUND && *on != BodyId::GROUND =>
+            {
+                Some((*body, *on))
+            }
+            _ => None,
+        },
+        _ => None,
+    });
+    match gear {
+        Some((body, on)) => {
+            let words = |b| super::joint_words::body_words(model.problem, b);
+            format!(
+                "The teeth do not slip at the mesh: the point of {} there has the velocity of \
+                 the point of {} there; the components of this equation are the constraint \
+                 rows below.",
+                words(body),
+                words(on)
+            )
+        }
+        None => "Rolling without slipping: the rolling body's point at the contact has the \
+                 velocity of the surface's point there; the components of this equation are \
+                 the constraint rows below."
+            .into(),
+    }
 }
 
 /// Whether contact site `k` has a constraint row along a tangent (it rolls, not only
@@ -39,8 +109,9 @@ fn rolls(model: &Model, k: usize) -> bool {
         })
 }
 
-/// The display of contact site `k`.
-fn contact_display(model: &Model, k: usize) -> Option<String> {
+/// The display of contact site `k`: its point's velocity set to the surface's (`rolls`), or
+/// written as the slip it is.
+fn contact_display(model: &Model, k: usize, rolls: bool) -> Option<String> {
     let site = &model.sites[k];
     let body = site.child;
     let sign = initial_sign(model);
@@ -86,11 +157,8 @@ fn contact_display(model: &Model, k: usize) -> Option<String> {
     } else {
         // On the ground the velocity itself is the slip.
         lines.push(format!("{own_velocity} &= {velocity}"));
-        lines.push(super::aligned::line(
-            "",
-            "=",
-            &format!("{slip_tex} = \\mathbf{{0}}"),
-        ));
+        let zero = if rolls { " = \\mathbf{0}" } else { "" };
+        lines.push(super::aligned::line("", "=", &format!("{slip_tex}{zero}")));
     }
     Some(super::aligned::display(&lines))
 }

@@ -33,6 +33,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.constraint_notes = MarkupLine::all(constraint_notes);
         solution.closure_loops = Math::all(super::closure_loops::loops(derivation));
         solution.contact_loops = Math::all(super::contact_loops::loops(derivation));
+        solution.contact_loops_lead = super::contact_loops::lead(derivation);
         solution.solve_notes = MarkupLine::all(super::solve_words::notes(derivation));
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);
@@ -232,6 +233,14 @@ fn pictures(
             } else {
                 drawing.figure_above_a_table()
             };
+            // Drawn, the free body equals its kinetic diagram (m a and I α on the right);
+            // the table's inertia force and torque are those turned round, among the
+            // forces: said so, that the two read as one statement.
+            for force in &mut body.inertia {
+                if force.label.starts_with("inertia ") {
+                    force.label.push_str(", opposite to the kinetic diagram's");
+                }
+            }
         }
     }
 }

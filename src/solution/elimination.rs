@@ -36,14 +36,30 @@ pub fn steps(
         return None;
     }
     let n = derivation.system.unknowns.len();
-    if derivation.system.a.len() != n || !(2..=MOST_ROWS).contains(&n) || derivation.rows.len() != n
-    {
+    if derivation.system.a.len() != n || derivation.rows.len() != n {
         return None;
     }
-    let system = &as_printed(derivation)?;
-    let found = order(system, keep)?;
-    let last = (0..n).find(|i| found.iter().all(|f| f.row != *i))?;
-    let (a, b) = put_in(system, &found, keep, last);
+    let printed = as_printed(derivation)?;
+    // The rows that only give a reaction no other row holds (a pin's force along an axis
+    // no moment sees) play no part: left out, as a student leaves them.
+    let (rows, columns) = needed(&printed, keep);
+    if !(2..=MOST_ROWS).contains(&rows.len()) {
+        return None;
+    }
+    let keep_in = columns.iter().position(|&j| j == keep)?;
+    let system = &LinearSystem {
+        unknowns: columns
+            .iter()
+            .map(|&j| printed.unknowns[j].clone())
+            .collect(),
+        a: (rows.iter())
+            .map(|&i| columns.iter().map(|&j| printed.a[i][j].clone()).collect())
+            .collect(),
+        b: rows.iter().map(|&i| printed.b[i].clone()).collect(),
+    };
+    let found = order(system, keep_in)?;
+    let last = (0..rows.len()).find(|i| found.iter().all(|f| f.row != *i))?;
+    let (a, b) = put_in(system, &found, keep_in, last);
     let ratio = eval(&b, v) / eval(&a, v);
     if (ratio - expected).abs() > 1e-6 * expected.abs().max(1e-9) {
         return None;
@@ -52,11 +68,37 @@ pub fn steps(
     let steps = found
         .iter()
         .map(|f| AnswerStep {
-            text: format!("Row ({}) gives ${}$:", f.row + 1, x(f.unknown)).into(),
+            text: format!("Row ({}) gives ${}$:", rows[f.row] + 1, x(f.unknown)).into(),
             math: format!("{} = {}", x(f.unknown), latex(&f.written)).into(),
         })
         .collect();
-    Some((steps, last))
+    Some((steps, rows[last]))
+}
+
+/// The rows and unknowns the elimination needs: a row is left out, with its unknown, while
+/// it holds an unknown (not the kept one) that no other row left holds.
+fn needed(system: &LinearSystem, keep: usize) -> (Vec<usize>, Vec<usize>) {
+    let n = system.unknowns.len();
+    let mut rows: Vec<usize> = (0..system.a.len()).collect();
+    let mut columns: Vec<usize> = (0..n).collect();
+    loop {
+        let alone = rows.iter().find_map(|&i| {
+            (columns.iter().copied())
+                .find(|&j| {
+                    j != keep
+                        && !system.a[i][j].is_zero()
+                        && rows.iter().all(|&r| r == i || system.a[r][j].is_zero())
+                })
+                .map(|j| (i, j))
+        });
+        match alone {
+            Some((i, j)) => {
+                rows.retain(|&r| r != i);
+                columns.retain(|&c| c != j);
+            }
+            None => return (rows, columns),
+        }
+    }
 }
 
 /// Step 5's rows as its "Simplified" prints them (roots of squares taken by the initial

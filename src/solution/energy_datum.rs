@@ -65,8 +65,53 @@ pub fn sentence(worked: &Worked, value: f64) -> Option<String> {
     if (total - value).abs() > 1e-9 * value.abs().max(1e-9) {
         return None;
     }
+    let origin = origin_name(worked);
     Some(format!(
-        "$V$ is zero at the height of {}.",
-        origin_name(worked)
+        "{} $V$ is zero at the height of {origin}.",
+        definition(worked, kinetic, total - kinetic)
     ))
+}
+
+/// `E = T + V` as a student writes it, each with its value at the start: the kinetic
+/// energy of every body from the velocities of step 4, gravity's potential from the
+/// heights of the mass centres.
+fn definition(worked: &Worked, kinetic: f64, potential: f64) -> String {
+    use crate::symbolic::{latex, latex_name};
+    let model = &worked.derivation.model;
+    let bodies: Vec<BodyId> = (model.problem.body_ids())
+        .filter(|b| !model.bodies[b.0].mass.is_zero())
+        .collect();
+    let term = |b: BodyId| {
+        let (mass, centre) = (
+            latex(&model.bodies[b.0].mass),
+            super::tex::centre_tex(model, b),
+        );
+        let name = latex_name(model.problem.body_name(b));
+        let spin = if crate::mechanics::is_particle(model, b) {
+            String::new()
+        } else {
+            format!(
+                " + \\tfrac{{1}}{{2}}\\, {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}} \\cdot \\mathbf{{I}}^{{{name}}} \\cdot {{}}^{{N}}\\boldsymbol{{\\omega}}^{{{name}}}"
+            )
+        };
+        (
+            format!("\\tfrac{{1}}{{2}} {mass} |{{}}^{{N}}\\mathbf{{v}}^{{{centre}}}|^{{2}}{spin}"),
+            format!("{mass} g h_{{{centre}}}"),
+        )
+    };
+    let (t, v): (Vec<String>, Vec<String>) = bodies.iter().map(|&b| term(b)).unzip();
+    let heights = if bodies.len() == 1 {
+        let centre = super::tex::centre_tex(model, bodies[0]);
+        format!("$h_{{{centre}}}$ the height of ${centre}$")
+    } else {
+        "each $h$ the height of a mass centre".to_string()
+    };
+    let number = |x: f64| super::answer_numbers::number_tex(x);
+    format!(
+        "$E = T + V$, with the velocities of step 4 at the start: $T = {} = {}\\ \\mathrm{{J}}$ and $V = {} = {}\\ \\mathrm{{J}}$, {heights}.",
+        t.join(" + "),
+        number(kinetic),
+        v.join(" + "),
+        number(potential)
+    )
 }

@@ -152,8 +152,10 @@ pub fn in_numbers(
     let b_width = width(&b_tex.iter().collect::<Vec<_>>());
     let x_width = width(&x_tex.iter().collect::<Vec<_>>());
     let total = widths + 2 * names_width + b_width + x_width + 8;
-    let pairs: Vec<String> = (names.iter().zip(&x_tex))
-        .map(|(n, v)| format!("{n} = {v}"))
+    // Listed, each value carries its unit; only the matrix needs "in SI units".
+    let units = units(worked, &system.unknowns);
+    let pairs: Vec<String> = (columns.iter().zip(&names).zip(&x_tex))
+        .map(|((&j, n), v)| format!("{n} = {v}{}", units[j]))
         .collect();
     let mut lead_text = lead(worked, &system, &rows, &names);
     // The matrix beside its solution where it fits in a line, above it where not (up to
@@ -171,7 +173,8 @@ pub fn in_numbers(
             vec![system_tex]
         }
         _ => {
-            lead_text = listed_lead(&system, &rows, &pairs);
+            let in_si = units.iter().any(String::is_empty);
+            lead_text = listed_lead(&system, &rows, &pairs, in_si);
             Vec::new()
         }
     };
@@ -181,7 +184,7 @@ pub fn in_numbers(
         // The reactions from the other rows, with the second derivatives found.
         let others: Vec<String> = (0..system.unknowns.len())
             .filter(|j| !columns.contains(j))
-            .map(|j| format!("{} = {}", all_names[j], value(x[j])))
+            .map(|j| format!("{} = {}{}", all_names[j], value(x[j]), units[j]))
             .collect();
         let (verb, list) = (
             if rest.len() == 1 { "gives" } else { "give" },
@@ -233,8 +236,11 @@ fn lead(worked: &Worked, system: &LinearSystem, rows: &[usize], names: &[String]
 
 /// What is solved, with the solution listed: past four unknowns, no matrix of numbers.
 /// The rows solved first are named here, with why (the order's sentence is left out).
-fn listed_lead(system: &LinearSystem, rows: &[usize], pairs: &[String]) -> String {
-    let state = "At the initial state of step 1, in SI units,";
+fn listed_lead(system: &LinearSystem, rows: &[usize], pairs: &[String], in_si: bool) -> String {
+    let state = match in_si {
+        true => "At the initial state of step 1, in SI units,",
+        false => "At the initial state of step 1,",
+    };
     match rows.len() < system.a.len() {
         true => format!(
             "{state} rows {}, which hold no reaction, give {}.",
@@ -267,6 +273,40 @@ pub fn said_once(notes: &mut Vec<MarkupLine>, derivation: &Derivation, numbers: 
             }
         }
     }
+}
+
+/// The unit of each unknown as markup after its value (`\ \mathrm{m/s^{2}}`): a
+/// coordinate's second derivative in the coordinate's unit, a reaction force in N, a
+/// moment in N m; empty where there is none to give (a multiplier).
+fn units(worked: &Worked, unknowns: &[Symbol]) -> Vec<String> {
+    use crate::symbolic::{ComponentKind, Unknown};
+    let problem = worked.derivation.model.problem;
+    let coordinate = |name: &str| (problem.coordinates.iter()).position(|c| c.name == name);
+    let unit = |u: &Symbol| -> Option<String> {
+        match u {
+            Symbol::Coord(name, 2) => {
+                coordinate(name).map(|i| crate::numeric::coordinate_unit(problem, i, 2))
+            }
+            Symbol::Unknown(Unknown::Reaction { component, .. }) => match component.kind {
+                ComponentKind::Force => Some("N".into()),
+                ComponentKind::Moment => Some("N m".into()),
+            },
+            Symbol::Unknown(Unknown::Drive { coordinate: c, .. }) => {
+                coordinate(c).map(|i| match problem.coordinates[i].kind {
+                    crate::problem::CoordinateKind::Angle => "N m".into(),
+                    crate::problem::CoordinateKind::Distance => "N".into(),
+                })
+            }
+            _ => None,
+        }
+    };
+    (unknowns.iter())
+        .map(|u| {
+            unit(u).map_or(String::new(), |t| {
+                format!("\\ {}", crate::render::unit_tex(&t))
+            })
+        })
+        .collect()
 }
 
 /// The rates that are zero at the initial state, each as the zero it is replaced by.

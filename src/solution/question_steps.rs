@@ -217,7 +217,16 @@ fn period_steps(
             "\\omega_d",
         ),
     };
+    // Without the one-coordinate working above, where the period comes from is said: the
+    // equations linearized about the state, valid for oscillations that stay small.
+    let derived = !steps.is_empty();
     let mut text = format!("{which} has the angular frequency ${omega}$ and the period is");
+    if !derived && found.mode.1 == 1 {
+        text = format!(
+            "Linearized about this state, the equations of motion give small oscillations \
+             about it. {text}"
+        );
+    }
     if found.damping_ratio > 0.0 {
         text = format!(
             "{text} that of the damped motion (damping ratio {}):",
@@ -234,6 +243,14 @@ fn period_steps(
             number(found.period)
         ),
     ));
+    if !derived && found.mode.1 == 1 {
+        steps.push(step(
+            "Oscillations that stay small about this state have this period; a motion that \
+             starts away from it need not."
+                .to_string(),
+            String::new(),
+        ));
+    }
     steps
 }
 

@@ -266,19 +266,23 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
             simplified_note = super::loops::component_note();
         }
     }
-    if grouped_tex == simplified_tex && simplified_note.is_empty() {
-        // Formed already in its simplest form: written once.
-        grouped_tex.clear();
-        simplified_note = "Already in its simplest form:".into();
-    }
     // The inertia terms written out, cross products and dot products, as a student does.
-    let written_tex = super::written_out::written_out_shown(derivation, row, &shown)
+    let mut written_tex = super::written_out::written_out_shown(derivation, row, &shown)
         .filter(|_| !grouped_tex.is_empty())
         .map(|w| w.tex)
         // Its components as the row prints them, a root of a square taken by the initial
         // sign; one left (no sign to take it by) where the row has none goes without.
         .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
+    // Formed already in its simplest form, or with the same terms in another order and
+    // nothing written out between: written once.
+    let same = grouped_tex == simplified_tex
+        || (written_tex.is_empty() && same_terms(&grouped_tex, &simplified_tex));
+    if same && simplified_note.is_empty() {
+        grouped_tex.clear();
+        written_tex.clear();
+        simplified_note = "Already in its simplest form:".into();
+    }
     EquationView {
         label,
         augmented_note: augmented_note.into(),
@@ -293,6 +297,44 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         solved_tex: Math::from(solved_tex),
         lagrange_tex: Math::all(lagrange_tex),
     }
+}
+
+/// Whether two rows `… = 0` as LaTeX hold the same signed terms, in any order and with a
+/// group's brackets taken away (`[F - G] - m g = 0` and `-m g + F - G = 0`); a group after
+/// a minus sign is not opened, so such a row is never said to be the same.
+fn same_terms(a: &str, b: &str) -> bool {
+    fn terms(row: &str) -> Option<Vec<String>> {
+        let left = (row.strip_suffix(" = 0")?)
+            .replace("\\left[", "[")
+            .replace("\\right]", "]");
+        if left.contains("- [") || left.contains("-[") {
+            return None;
+        }
+        let flat: Vec<char> = left.chars().filter(|c| !matches!(c, '[' | ']')).collect();
+        let (mut out, mut term, mut depth, mut sign) = (Vec::new(), String::new(), 0i32, '+');
+        for (k, &c) in flat.iter().enumerate() {
+            match c {
+                '{' | '(' => depth += 1,
+                '}' | ')' => depth -= 1,
+                _ => {}
+            }
+            let at_top = depth == 0 && (c == '+' || c == '-');
+            // A sign between terms is spaced; one at the very start opens the first term.
+            let between = flat.get(k + 1) == Some(&' ') || term.trim().is_empty();
+            if at_top && between {
+                if !term.trim().is_empty() {
+                    out.push(format!("{sign}{}", term.trim()));
+                }
+                (term, sign) = (String::new(), c);
+            } else {
+                term.push(c);
+            }
+        }
+        out.push(format!("{sign}{}", term.trim()));
+        out.sort();
+        Some(out)
+    }
+    !a.is_empty() && terms(a).is_some_and(|t| Some(t) == terms(b))
 }
 
 /// The row as formed: contact + distance + inertia forces + inertia torques, each group
@@ -371,5 +413,28 @@ fn solved_for_reaction(row: &Expr, reactions: &[Symbol]) -> String {
         String::new()
     } else {
         tex
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::same_terms;
+
+    #[test]
+    fn a_row_in_another_order_or_without_its_brackets_has_the_same_terms() {
+        let grouped = "\\left[F^{O}_{y} - F^{P}_{t}\\right] - m_{A} g = 0";
+        assert!(same_terms(grouped, "F^{O}_{y} - F^{P}_{t} - m_{A} g = 0"));
+        assert!(same_terms(
+            "-r_{B} F^{P}_{t} - I_{B} \\ddot{q}_{B} = 0",
+            "-I_{B} \\ddot{q}_{B} - r_{B} F^{P}_{t} = 0"
+        ));
+        // A sign turned, a term changed, a group after a minus: not the same.
+        assert!(!same_terms("a - b = 0", "b - a = 0"));
+        assert!(!same_terms("a - b = 0", "a - 2 b = 0"));
+        assert!(!same_terms("a - [b - c] = 0", "a - b + c = 0"));
+        assert!(!same_terms(
+            "-\\frac{a - b}{2} = 0",
+            "-\\frac{b - a}{2} = 0"
+        ));
     }
 }

@@ -81,9 +81,7 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
         // Step 5 prints the sliding law as the row itself and says so beside it; the
         // order of the solve is step 3's, said there once.
         return Some(
-            "Solved one after another in the order step 3 gives, the rows give the values \
-             below."
-                .to_string(),
+            "The rows, taken one at a time in step 3's order, give the values below.".to_string(),
         );
     }
     Some(format!(

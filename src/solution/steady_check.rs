@@ -60,16 +60,12 @@ pub fn sentence(derivation: &Derivation, problem: &Problem, index: usize) -> Opt
         .collect();
     let mut parts = Vec::new();
     if !vanish.is_empty() {
+        // The rows are written `… = 0`: what vanishes is their terms without a second
+        // derivative, not a right side.
         parts.push(format!(
-            "the right {} of {} {} {}",
-            if vanish.len() == 1 { "side" } else { "sides" },
+            "the terms of {} {} without a second derivative vanish",
             if vanish.len() == 1 { "row" } else { "rows" },
             rows_list(&vanish),
-            if vanish.len() == 1 {
-                "vanishes"
-            } else {
-                "vanish"
-            },
         ));
     }
     if !by_identity.is_empty() {
@@ -86,7 +82,7 @@ pub fn sentence(derivation: &Derivation, problem: &Problem, index: usize) -> Opt
             None => "at these rates".to_string(),
         };
         parts.push(format!(
-            "that of {} {} is zero {why}",
+            "those of {} {} add up to zero {why}",
             if by_identity.len() == 1 {
                 "row"
             } else {

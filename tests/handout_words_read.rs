@@ -1,0 +1,170 @@
+//! The handout read as an instructor reads it: each answer a sentence of its own, an
+//! integration's error not printed as digits, the words of a course (meshing teeth, a
+//! slip velocity, a rate from a position constraint), the elimination to one equation
+//! written where step 5 holds rows a reaction alone fills, the energy as T + V with its
+//! numbers, and the listed solution with its units.
+
+use crate::support::handouts::handout_of;
+use crate::support::problem;
+
+fn handout(name: &str, method: &str, format: &str) -> String {
+    handout_of(&problem(name), method, format).expect("the handout")
+}
+
+fn has(text: &str, what: &str, name: &str) {
+    assert!(text.contains(what), "{name}: `{what}` not found");
+}
+
+fn lacks(text: &str, what: &str, name: &str) {
+    if let Some(at) = text.find(what) {
+        let end = (at + 200).min(text.len());
+        let around = text.get(at..end).unwrap_or(what);
+        panic!("{name}: `{what}` in: {around}");
+    }
+}
+
+/// An answer's value ends its sentence, and the LaTeX starts the next one on a new line
+/// instead of running on after a quad.
+#[test]
+fn an_answer_is_a_sentence_followed_by_its_reason() {
+    let name = "gear-pair-torque";
+    let latex = handout(name, "newton-euler", "latex");
+    has(
+        &latex,
+        "$\\ddot{q}_{A} = 225\\ \\mathrm{rad/s^{2}}$.\\par",
+        name,
+    );
+    lacks(&latex, "\\mathrm{rad/s^{2}}$\\quad", name);
+    let markdown = handout("double-pendulum-rods", "motion-law", "markdown");
+    has(&markdown, "3. $E = -7.53656\\ \\mathrm{J}$.\n", name);
+    let html = handout(name, "newton-euler", "html");
+    lacks(&html, "</math></p>\n<p>One degree", name);
+}
+
+/// The gear pair: meshing teeth, not a body rolling on a surface; the reactions the pins
+/// alone carry are left out of the elimination, which Newton–Euler's seven rows now show
+/// (row 7 gives q̈_B = −r_A q̈_A / r_B, row 6 the tooth force F = −I_B q̈_B / r_B, and row
+/// 3 what is left: (I_A + I_B r_A²/r_B²) q̈_A = T); a row with its terms only reordered is
+/// written once.
+#[test]
+fn the_gear_pair_meshes_and_eliminates_in_its_seven_rows() {
+    let name = "gear-pair-torque";
+    let text = handout(name, "newton-euler", "markdown");
+    lacks(&text, "Rolling without slipping", name);
+    has(&text, "The teeth do not slip at the mesh", name);
+    lacks(&text, "is not needed", name);
+    has(&text, "Row (7) gives $\\ddot{q}_{B}$", name);
+    has(
+        &text,
+        "$$F^{P}_{t} = -\\frac{I_{B} \\ddot{q}_{B}}{r_{B}}$$",
+        name,
+    );
+    has(&text, "Put into row (3)", name);
+    lacks(
+        &text,
+        "with the reactions and the other accelerations eliminated",
+        name,
+    );
+    // Row 6 as formed, −r_B F − I_B q̈_B = 0, is the simplified row reordered.
+    lacks(
+        &text,
+        "$$\n-r_{B} F^{P}_{t} - I_{B} \\ddot{q}_{B} = 0\n$$",
+        name,
+    );
+    // A disc rolling in a fixed cylinder has no teeth.
+    let disc = handout("disc-in-cylinder", "lagrange", "markdown");
+    has(&disc, "Rolling without slipping", "disc-in-cylinder");
+    lacks(&disc, "teeth", "disc-in-cylinder");
+}
+
+/// The bowling ball's slip velocity is derived in step 1, before the answers use it:
+/// v^P = v^{B*} + ω × r^{B*P} with r^{B*P} = −R n̂_y gives (ẋ + R θ̇) n̂_x.
+#[test]
+fn the_bowling_ball_derives_its_slip_velocity_before_the_answers() {
+    let name = "bowling-ball";
+    let text = handout(name, "motion-law", "markdown");
+    let step1 = &text[..text.find("## Step 2").expect("step 2")];
+    has(step1, "The slip velocity at the lane", name);
+    has(
+        step1,
+        "(\\dot{x} + R \\dot{\\theta}) \\hat{\\mathbf{n}}_{x}",
+        name,
+    );
+    lacks(step1, "= \\mathbf{0}", name);
+    lacks(
+        &text,
+        "Solved one after another in the order step 3 gives",
+        name,
+    );
+}
+
+/// The rolling coin's energy: E = T + V written, T and V each with its number, and the
+/// two adding to the E printed (0.727222 J).
+#[test]
+fn the_energy_is_written_as_t_plus_v_with_its_numbers() {
+    let name = "rolling-coin";
+    let text = handout(name, "kane", "markdown");
+    has(&text, "$E = T + V$", name);
+    has(&text, "\\cdot \\mathbf{I}^{D} \\cdot", name);
+    let number_before = |mark: &str| -> f64 {
+        let end = text.find(mark).expect(mark);
+        let start = text[..end].rfind(" = ").expect("a value") + 3;
+        text[start..end].parse().expect("a number")
+    };
+    let kinetic = number_before("\\ \\mathrm{J}$ and $V = ");
+    let potential = number_before("\\ \\mathrm{J}$, $h_{D^*}$");
+    assert!(
+        (kinetic + potential - 0.727222).abs() < 2e-6,
+        "{kinetic} + {potential}"
+    );
+}
+
+/// Listed, each value of the solution carries its unit; "in SI units" is left for a
+/// matrix of numbers.
+#[test]
+fn the_listed_solution_carries_its_units() {
+    let name = "disc-in-cylinder";
+    let text = handout(name, "lagrange", "markdown");
+    has(&text, "$F^{P}_{t} = 0.40875\\ \\mathrm{N}$", name);
+    has(&text, "$\\ddot{x} = -0.811088\\ \\mathrm{m/s^{2}}$", name);
+    lacks(&text, "in SI units, the solution is", name);
+}
+
+/// The heavy top's linearized period says where it comes from, beside the simulated one.
+#[test]
+fn a_linearized_period_says_it_is_about_the_state() {
+    let name = "heavy-symmetric-top";
+    let text = handout(name, "motion-law", "markdown");
+    has(&text, "Linearized about this state", name);
+    has(&text, "a motion that starts away from it need not", name);
+}
+
+/// The Motion Law's free-body table and its picture say the same: the inertia force and
+/// torque are the kinetic diagram's turned round.
+#[test]
+fn the_inertia_rows_are_said_against_the_kinetic_diagram() {
+    let name = "double-pendulum-rods";
+    let text = handout(name, "motion-law", "markdown");
+    has(
+        &text,
+        "| inertia force of A, opposite to the kinetic diagram's |",
+        name,
+    );
+    has(
+        &text,
+        "| inertia torque of B, opposite to the kinetic diagram's |",
+        name,
+    );
+}
+
+/// Course words in step 1 and 5: the coordinate table's column says the motion, the
+/// matrix form is of the rows above.
+#[test]
+fn tables_and_the_matrix_form_in_course_words() {
+    for name in ["double-pendulum-rods", "bowling-ball"] {
+        let text = handout(name, "motion-law", "markdown");
+        has(&text, "| Coordinate | Meaning | Motion |", name);
+        lacks(&text, "| Joint |", name);
+        lacks(&text, "rows numbered as in step 5", name);
+    }
+}
