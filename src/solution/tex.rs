@@ -269,3 +269,9 @@ mod factor_tests {
         );
     }
 }
+
+/// Kane's auxiliary speed `r` by the force it brings in, as a textbook says it:
+/// `u_{4}\text{, for } F^{R}_{x}` (the speed along which that force does work).
+pub fn auxiliary_speed_tex(r: usize, forces: &str) -> String {
+    format!("u_{{{r}}}\\text{{, for }} {forces}")
+}
