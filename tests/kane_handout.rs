@@ -337,10 +337,11 @@ fn four_bar_closed(q1: f64) -> (f64, f64) {
 #[test]
 fn the_four_bars_dependent_rates_share_one_named_denominator() {
     let text = markdown("four-bar.json");
-    // As a textbook writes it: Δ defined once, the dependent rates over it.
+    // As a textbook writes it: Δ defined once, where the dependent rates first use it.
     assert!(text.contains(
-        "- $\\Delta = a \\sin(q_{1} - q_{3}) + d \\sin(q_{3})$: the common denominator of the dependent rates"
+        "over the common denominator $\\Delta = d \\sin(q_{3}) + a \\sin\\left(q_{1} - q_{3}\\right)$:"
     ));
+    assert!(!text.contains("the common denominator of the dependent rates"));
     assert!(text.contains("\\dot{q}_{2} &= -\\frac{d \\sin(q_{3})}{\\Delta} \\dot{q}_{1}"));
     assert!(text.contains(
         "\\dot{q}_{3} &= \\frac{a}{\\Delta} \\left(\\sin(q_{1} - q_{3}) + \\frac{d \\sin(q_{1})}{c}\\right) \\dot{q}_{1}"

@@ -274,10 +274,10 @@ fn motions_words(
             let name = latex_name(problem.body_name(body));
             let what = match (moves, pinned(body)) {
                 (Moves::Still, _) => "does not move".to_string(),
-                (Moves::Turns | Moves::MovesAndTurns, Some(pin)) => format!("turns about ${pin}$"),
+                (Moves::Turns | Moves::Both, Some(pin)) => format!("turns about ${pin}$"),
                 (Moves::Slides, _) => "slides without turning".to_string(),
                 (Moves::Turns, None) => "turns about its mass centre".to_string(),
-                (Moves::MovesAndTurns, None) => "moves and turns".to_string(),
+                (Moves::Both, None) => "moves and turns".to_string(),
             };
             format!("${name}$ {what}")
         })

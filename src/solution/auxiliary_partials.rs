@@ -297,7 +297,7 @@ pub enum Moves {
     /// It turns, its mass centre still.
     Turns,
     /// It moves and turns.
-    MovesAndTurns,
+    Both,
 }
 
 /// How each body moves with Kane's auxiliary row `r` (1-based), on the loop: a partial
@@ -338,7 +338,7 @@ pub fn body_motions(derivation: &Derivation, r: usize) -> Option<Vec<(BodyId, Mo
             (true, true) => Moves::Still,
             (false, true) => Moves::Slides,
             (true, false) => Moves::Turns,
-            (false, false) => Moves::MovesAndTurns,
+            (false, false) => Moves::Both,
         };
         out.push((body, moves));
     }

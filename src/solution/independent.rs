@@ -121,13 +121,7 @@ pub fn dependent_speeds(
             words(&relations)
         )
     };
-    // The common denominator defined where the rates first have it.
-    let over = match super::kane_delta::definition_tex(speeds) {
-        Some(delta) if relation_tex.contains("\\Delta") && !speeds.at_each_state => {
-            format!(", over the common denominator ${delta}$")
-        }
-        _ => String::new(),
-    };
+    let over = over_delta(speeds, &relation_tex);
     let mut paragraphs = vec![format!(
         "The constraints fix the rates {} by the others, {}{}; solved for the dependent rates, the velocity constraints give{using}{over}:",
         listed(&speeds.dependent),
@@ -200,6 +194,17 @@ pub fn dependent_speeds(
         kane_kept_note: MarkupLine::from(String::new()),
         time_terms: problem.moves_with_time(),
         start_tex: Vec::new(),
+    }
+}
+
+/// The common denominator defined where the rates first have it: `, over the common
+/// denominator $\Delta = …$`, or nothing.
+fn over_delta(speeds: &Speeds, relation_tex: &str) -> String {
+    match super::kane_delta::definition_tex(speeds) {
+        Some(delta) if relation_tex.contains("\\Delta") && !speeds.at_each_state => {
+            format!(", over the common denominator ${delta}$")
+        }
+        _ => String::new(),
     }
 }
 
