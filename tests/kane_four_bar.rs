@@ -30,37 +30,61 @@ fn the_pin_force_at_r_is_found_on_the_free_body_that_draws_it() {
     // B + C's free body draws the pins P and Q, which do no work with u4.
     assert!(!row4.contains("free body $B + C$"), "{row4}");
     let row5 = section(&text, "**5. $r = 5", "**6.");
+    // C stays still with u5 (ṽ^{C*}_5 and ω̃^C_5 vanish on the loop, see below): said once.
+    assert!(
+        row5.contains("Only $B$ moves with $u_{5}$ ($B$ moves and turns); $C$ does not move, its partial velocities zero on the loop, and adds nothing to"),
+        "{row5}"
+    );
     assert!(row5.contains(
         "As in row 4, of the constraint forces only the pair at $R$ does work with $u_{5}$."
     ));
-    // C stays still with u5: which bodies move is not said again.
-    assert!(!row5.contains("Again only"), "{row5}");
-    // O's rows say how the pin gives way and which force does work.
+    // O's rows say how each body moves and which force does work: O slid along n_x
+    // carries A unturned; B moves and turns (ω_B = −cos q3/Δ); C turns about its pin Q.
     let row2 = section(&text, "**2. $r = 2", "**3. $r = 3");
     assert!(
-        row2.contains(
-            "$O$ slides with $u_{2}$ along $\\hat{\\mathbf{n}}_{x}$, $A$ and $B$ with it"
-        ),
+        row2.contains("$A$ slides without turning, $B$ moves and turns, and $C$ turns about $Q$."),
         "{row2}"
     );
     assert!(
         row2.contains("only $F^{O}_{x}$ does work with it"),
         "{row2}"
     );
+    // The plan names, for the rows of the pin at R, the free body that draws F^R: C; and
+    // B + C, which does not show it, is not drawn.
+    let plan = section(&text, "## Step 3", "## Step 4");
+    for r in [4, 5] {
+        let row = format!("| $C$ | $\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}$ |");
+        assert!(plan.contains(&row), "{row}\n{plan}");
+    }
+    assert!(!plan.contains("$B + C$"), "{plan}");
+    assert!(!text.contains("### Free body $B + C$"));
 }
 
 #[test]
 fn every_speeds_partial_velocities_are_in_the_table() {
     let text = kane("four-bar.json");
     let step5 = section(&text, "## Step 5", "## Step 6");
+    // Each auxiliary speed by the force it brings in, in words, not an arrow.
     for speed in [
-        "$u_{2} \\to F^{O}_{x}$",
-        "$u_{3} \\to F^{O}_{y}$",
-        "$u_{4} \\to F^{R}_{x}$",
-        "$u_{5} \\to F^{R}_{y}$",
+        "$u_{2}\\text{, for } F^{O}_{x}$",
+        "$u_{3}\\text{, for } F^{O}_{y}$",
+        "$u_{4}\\text{, for } F^{R}_{x}$",
+        "$u_{5}\\text{, for } F^{R}_{y}$",
     ] {
         assert!(step5.contains(speed), "{speed}");
     }
+    assert!(!text.contains("\\to F"), "{step5}");
+    // Finished on the loop (see `the_partial_velocities_are_finished_on_the_loop`).
+    for entry in [
+        "{}^{N}\\tilde{\\mathbf{v}}^{C^*}_{4} = -\\frac{b}{2 \\Delta} \\hat{\\mathbf{c}}_{y}",
+        "{}^{N}\\tilde{\\boldsymbol{\\omega}}^{C}_{4} = -\\frac{b}{c \\Delta} \\hat{\\mathbf{c}}_{z}",
+        "{}^{N}\\tilde{\\mathbf{v}}^{B^*}_{5} = -\\frac{1}{2} \\hat{\\mathbf{b}}_{y}",
+        "{}^{N}\\tilde{\\boldsymbol{\\omega}}^{B}_{5} = -\\frac{1}{b} \\hat{\\mathbf{b}}_{z}",
+    ] {
+        assert!(step5.contains(entry), "{entry}\n{step5}");
+    }
+    // C does not move with u5: no line of its own, only R's relative to B.
+    assert!(!step5.contains("\\tilde{\\mathbf{v}}^{C^*}_{5}"), "{step5}");
     // O slid along n_x carries A with it, unturned; B turns by −cos q3/Δ (see above).
     assert!(step5.contains("{}^{N}\\tilde{\\mathbf{v}}^{A^*}_{2} = \\hat{\\mathbf{n}}_{x}"));
     assert!(step5.contains(
@@ -74,8 +98,9 @@ fn every_speeds_partial_velocities_are_in_the_table() {
     for r in 2..=5 {
         for body in ["A", "B", "C"] {
             let part = format!("\\tilde{{F}}^{{*}}_{{{r},{body}}}");
-            // A does not move with u4 and u5.
-            assert_eq!(step5.contains(&part), r <= 3 || body != "A", "{part}");
+            // A does not move with u4 and u5, nor C with u5.
+            let moves = r <= 3 || (body == "B") || (body == "C" && r == 4);
+            assert_eq!(step5.contains(&part), moves, "{part}");
         }
     }
 }
@@ -85,7 +110,7 @@ fn the_two_forms_of_the_dependent_rates_are_linked_on_the_loop() {
     let text = kane("four-bar.json");
     let step5 = section(&text, "## Step 5", "## Step 6");
     assert!(step5.contains(
-        "These are the rates of step 1: on the loop $\\Delta = -b \\sin\\left(q_{1} + q_{2} - q_{3}\\right)$, since the loop dotted with $\\hat{\\mathbf{c}}_{y}$ is zero."
+        "These are the rates of step 1: on the loop $\\Delta = -b \\sin\\left(q_{1} + q_{2} - q_{3}\\right)$, since the loop dotted with $\\hat{\\mathbf{c}}_{y}$ is zero"
     ));
     assert!(step5.contains(
         "at $\\Delta = 0$, that is where $\\sin\\left(q_{1} + q_{2} - q_{3}\\right) = 0$,"
@@ -126,4 +151,97 @@ fn kanes_letters_name_nothing_else_in_the_handout() {
     assert!(!text.contains("\\mathbf{R}_{") && !text.contains("\\mathbf{R}^{*}"));
     assert!(text.contains("with $\\mathbf{f}_K$ a force applied at the point $K$, $\\mathbf{M}_H$ a couple on body $H$"));
     assert!(text.contains("\\tilde{\\mathbf{v}}^{A^*}_{1} \\cdot \\mathbf{f}^{*}_{A} + \\tilde{\\boldsymbol{\\omega}}^{A}_{1} \\cdot \\mathbf{M}^{*}_{A}"));
+}
+
+/// The four-bar closed by hand at crank angle `q1`: R where the circles about P (radius b)
+/// and Q (radius c) meet, on the upper side as assembled; `(q2, q3)`.
+fn closed(q1: f64) -> (f64, f64) {
+    let (a, b, c, d) = (0.1f64, 0.3f64, 0.25f64, 0.3f64);
+    let p = (a * q1.cos(), a * q1.sin());
+    let (dx, dy) = (d - p.0, -p.1);
+    let l = (dx * dx + dy * dy).sqrt();
+    // Along P→Q a distance s, then h across: s = (b² − c² + l²)/(2l), h = √(b² − s²).
+    let s = (b * b - c * c + l * l) / (2.0 * l);
+    let h = (b * b - s * s).sqrt();
+    let (ux, uy) = (dx / l, dy / l);
+    let r = (p.0 + s * ux - h * uy, p.1 + s * uy + h * ux);
+    let q12 = (r.1 - p.1).atan2(r.0 - p.0);
+    let q3 = r.1.atan2(r.0 - d);
+    (q12 - q1, q3)
+}
+
+#[test]
+fn the_partial_velocities_are_finished_on_the_loop() {
+    // At the start (q1 = 1.2) and at a second closed state, each form the handout prints
+    // equals the one before the loop's constraints were used (Δ = a sin(q1 − q3) + d sin q3):
+    // the loop along b_x is −a cos q2 + d cos(q1 + q2) + c cos(q1 + q2 − q3) − b = 0, along
+    // b_y a sin q2 − d sin(q1 + q2) − c sin(q1 + q2 − q3) = 0, and Δ = −b sin(q1 + q2 − q3).
+    let (a, b, c, d) = (0.1f64, 0.3f64, 0.25f64, 0.3f64);
+    let (q2, q3) = closed(1.2);
+    assert!(
+        (q2 + 0.650_53).abs() < 1e-4 && (q3 - 1.602_5).abs() < 1e-4,
+        "{q2} {q3}"
+    );
+    for q1 in [1.2f64, 0.9] {
+        let (q2, q3) = closed(q1);
+        let delta = a * (q1 - q3).sin() + d * q3.sin();
+        let s123 = (q1 + q2 - q3).sin();
+        let c123 = (q1 + q2 - q3).cos();
+        let pairs = [
+            // ṽ^{C*}_4 along c_y and ω̃^C_4: the brackets are −b by the loop along b_x.
+            (
+                (a * q2.cos() - c * c123 - d * (q1 + q2).cos()) / (2.0 * delta),
+                -b / (2.0 * delta),
+            ),
+            (
+                -(c123 - a * q2.cos() / c + d * (q1 + q2).cos() / c) / delta,
+                -b / (c * delta),
+            ),
+            // ṽ^{C*}_5 and ω̃^C_5: the loop along b_y, zero.
+            (
+                (c * s123 + d * (q1 + q2).sin() - a * q2.sin()) / (2.0 * delta),
+                0.0,
+            ),
+            (
+                (s123 - a * q2.sin() / c + d * (q1 + q2).sin() / c) / delta,
+                0.0,
+            ),
+            // ṽ^{B*}_5 and ω̃^B_5, with Δ = −b sin(q1 + q2 − q3).
+            (b * s123 / (2.0 * delta), -0.5),
+            (s123 / delta, -1.0 / b),
+        ];
+        for (k, (before, after)) in pairs.iter().enumerate() {
+            assert!((before - after).abs() < 1e-9, "{q1}: {k}: {before} {after}");
+        }
+    }
+}
+
+#[test]
+fn both_forms_of_the_dependent_rates_are_linked_with_every_loop_row_they_need() {
+    // Step 1's q3' = a sin q2/(c sin(q1 + q2 − q3)) q1' and step 5's
+    // q3' = a (c sin(q1 − q3) + d sin q1)/(c Δ) q1' agree by Δ = −b sin(q1 + q2 − q3) (the
+    // loop along c_y) and c sin(q1 − q3) + d sin q1 = −b sin q2 (the loop along a_y:
+    // a a_x·a_y + b sin q2 − c sin(q3 − q1) + d sin q1 = 0).
+    let text = kane("four-bar.json");
+    let step5 = section(&text, "## Step 5", "## Step 6");
+    let a_y = "\\hat{\\mathbf{a}}_{y}";
+    assert!(
+        step5.contains(&format!("since the loop dotted with ${a_y}$ is zero")),
+        "{step5}"
+    );
+    // Δ is defined where the rates first use it, not in step 4.
+    assert!(
+        step5.contains("over the common denominator $\\Delta = "),
+        "{step5}"
+    );
+    assert!(!section(&text, "## Step 4", "## Step 5").contains("\\Delta"));
+    let (a, b, c, d) = (0.1f64, 0.3f64, 0.25f64, 0.3f64);
+    for q1 in [1.2f64, 0.9] {
+        let (q2, q3) = closed(q1);
+        assert!((c * (q1 - q3).sin() + d * q1.sin() + b * q2.sin()).abs() < 1e-12);
+        let delta = a * (q1 - q3).sin() + d * q3.sin();
+        let step1 = a * q2.sin() / (c * (q1 + q2 - q3).sin());
+        let step5 = a * (c * (q1 - q3).sin() + d * q1.sin()) / (c * delta);
+        assert!((step1 - step5).abs() < 1e-9, "{step1} {step5}");
+    }
 }

@@ -114,10 +114,10 @@ fn an_auxiliary_row_after_the_first_at_a_joint_refers_to_it() {
     let full = "(an auxiliary speed: it moves A + B + C + D + E + G against the joint)";
     assert_eq!(markdown.matches(full).count(), 1);
     assert!(markdown.contains(&format!(
-        "$r = 16\\colon\\; u_{{16}} \\to F^{{O}}_{{x}}$ {full}"
+        "$r = 16\\colon\\; u_{{16}}\\text{{, for }} F^{{O}}_{{x}}$ {full}"
     )));
     for row in 17..=20 {
-        let heading = format!("**{row}. $r = {row}\\colon\\; u_{{{row}}} \\to ");
+        let heading = format!("**{row}. $r = {row}\\colon\\; u_{{{row}}}\\text{{, for }} ");
         let at = markdown.find(&heading).expect("the row");
         let line = markdown[at..].lines().next().unwrap_or_default();
         assert!(

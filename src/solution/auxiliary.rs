@@ -2,6 +2,7 @@
 //! for, the augmented velocities that let the joint slide or turn along it, their partial
 //! velocities, which forces drop out and why, and the accelerations at the speed zero.
 
+use super::auxiliary_partials::Moves;
 use super::tex::{bodies_tex, vector_tex};
 use crate::equations::Derivation;
 use crate::plan::Equation;
@@ -128,12 +129,31 @@ pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<S
     if row.free_body == derivation.model.order {
         return tree_note(derivation, row, r);
     }
-    let names = moved_names(derivation, &row.free_body);
-    let moves = if row.free_body.len() == 1 {
-        "moves"
-    } else {
-        "move"
+    // The bodies that move with the speed on the loop, and how; the row's bodies else.
+    let motions = super::auxiliary_partials::body_motions(derivation, r);
+    let moving: Vec<BodyId> = match &motions {
+        Some(list) => (list.iter())
+            .filter(|(b, m)| *m != Moves::Still && row.free_body.contains(b))
+            .map(|(b, _)| *b)
+            .collect(),
+        None => row.free_body.clone(),
     };
+    let how = motions
+        .as_ref()
+        .map(|list| {
+            let moving: Vec<_> = (list.iter())
+                .filter(|(b, _)| moving.contains(b))
+                .copied()
+                .collect();
+            format!(" ({})", motions_words(derivation, &moving, &[]))
+        })
+        .unwrap_or_default();
+    let still: Vec<BodyId> = (row.free_body.iter())
+        .filter(|b| !moving.contains(b))
+        .copied()
+        .collect();
+    let names = moved_names(derivation, &moving);
+    let moves = if moving.len() == 1 { "moves" } else { "move" };
     let speeds = super::kane::speed_rows(derivation);
     let rows = derivation.rows.iter();
     let generalized = rows.filter(|x| matches!(x.sum, crate::plan::Sum::Generalized { .. }));
@@ -143,10 +163,21 @@ pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<S
     let inside = relaxed_inside(derivation, row);
     Some(match (first < r, inside) {
         (true, None) => format!("Again only {names} {moves}."),
-        (true, Some(pair)) => format!(
+        (true, Some(pair)) if still.is_empty() => format!(
             "As in row {first}, of the constraint forces only the pair at ${}$ does work with $u_{{{r}}}$.",
             pair.point
         ),
+        (true, Some(pair)) => {
+            let (verb, their, add) = match still.len() {
+                1 => ("does not move", "its partial velocities", "adds"),
+                _ => ("do not move", "their partial velocities", "add"),
+            };
+            format!(
+                "Only {names} {moves} with $u_{{{r}}}${how}; {} {verb}, {their} zero on the loop, and {add} nothing to $\\tilde{{F}}_{{{r}}}$ and $\\tilde{{F}}^{{*}}_{{{r}}}$. As in row {first}, of the constraint forces only the pair at ${}$ does work with $u_{{{r}}}$.",
+                moved_names(derivation, &still),
+                pair.point
+            )
+        }
         (false, None) => {
             let bodies = bodies_tex(derivation, &row.free_body);
             format!("Only {names} {moves} with $u_{{{r}}}$: free body ${bodies}$ of step 2 shows the forces that can do work with it.")
@@ -157,7 +188,7 @@ pub fn moved_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<S
                 None => String::new(),
             };
             format!(
-                "Only {names} {moves} with $u_{{{r}}}$, and ${on}$ parts from ${by}$ at ${point}$ (the table's last line for $u_{{{r}}}$): of the constraint forces only the pair at ${point}$ does work with it, ${force}$ on ${on}${drawn} and its opposite on ${by}$.",
+                "Only {names} {moves} with $u_{{{r}}}${how}, and ${on}$ parts from ${by}$ at ${point}$ (the table's last line for $u_{{{r}}}$): of the constraint forces only the pair at ${point}$ does work with it, ${force}$ on ${on}${drawn} and its opposite on ${by}$.",
                 on = pair.on,
                 by = pair.by,
                 point = pair.point,
@@ -191,6 +222,23 @@ fn tree_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String
         return Some(format!("As in row {first}, along ${d}$: {only}."));
     }
     let names = moved_names(derivation, &model.subtree(j));
+    // How each body moves, read from the table's lines: the subtree's own motion and
+    // the dependent rates' together.
+    if let Some(motions) = super::auxiliary_partials::body_motions(derivation, r) {
+        let moving: Vec<_> = (motions.into_iter())
+            .filter(|(_, m)| *m != Moves::Still)
+            .collect();
+        let how = motions_words(derivation, &moving, &model.subtree(j));
+        let gives = match component.kind {
+            ComponentKind::Force => format!("${point}$ slides with $u_{{{r}}}$ along ${d}$"),
+            ComponentKind::Moment => {
+                format!("{names} turn with $u_{{{r}}}$ about ${d}$ at ${point}$")
+            }
+        };
+        return Some(format!(
+            "{gives} and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {how}. Of the constraint forces only ${unknown}$ does work with it."
+        ));
+    }
     Some(match component.kind {
         ComponentKind::Force => format!(
             "${point}$ slides with $u_{{{r}}}$ along ${d}$, {names} with it, and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {only}."
@@ -199,6 +247,46 @@ fn tree_note(derivation: &Derivation, row: &Equation, r: usize) -> Option<String
             "{names} turn with $u_{{{r}}}$ about ${d}$ at ${point}$, and the dependent rates keep the constraints of step 1 (the table's lines for $u_{{{r}}}$): {only}."
         ),
     })
+}
+
+/// How each of `motions` moves, in words: `$A$ slides without turning, $B$ moves and
+/// turns, and $C$ turns about $Q$` (a body pinned to the ground at a fixed point turns
+/// about it, unless it is among the bodies `carried` with the joint that gives way).
+fn motions_words(
+    derivation: &Derivation,
+    motions: &[(BodyId, Moves)],
+    carried: &[BodyId],
+) -> String {
+    let model = &derivation.model;
+    let problem = model.problem;
+    // Pinned to the ground at a point that stays where it is: not one the speed carries.
+    let pinned = |body: BodyId| {
+        if carried.contains(&body) {
+            return None;
+        }
+        let j = (problem.joints.iter()).position(|joint| joint.child == body)?;
+        let joint = &problem.joints[j];
+        let fixed = joint.parent == BodyId::GROUND && model.sites.get(j)?.point.velocity.is_zero();
+        fixed.then(|| latex_name(&joint.name))
+    };
+    let clauses: Vec<String> = (motions.iter())
+        .map(|&(body, moves)| {
+            let name = latex_name(problem.body_name(body));
+            let what = match (moves, pinned(body)) {
+                (Moves::Still, _) => "does not move".to_string(),
+                (Moves::Turns | Moves::Both, Some(pin)) => format!("turns about ${pin}$"),
+                (Moves::Slides, _) => "slides without turning".to_string(),
+                (Moves::Turns, None) => "turns about its mass centre".to_string(),
+                (Moves::Both, None) => "moves and turns".to_string(),
+            };
+            format!("${name}$ {what}")
+        })
+        .collect();
+    match clauses.as_slice() {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{}, and {last}", rest.join(", ")),
+    }
 }
 
 /// `$B$ and $C$`: the moved bodies by name, in the markup.
@@ -228,8 +316,28 @@ struct InsidePair {
 /// The relaxed constraint's force of `row` where it acts between two moved bodies; `None`
 /// where it acts on them from outside (or the row relaxes no site).
 fn relaxed_inside(derivation: &Derivation, row: &Equation) -> Option<InsidePair> {
+    let problem = derivation.model.problem;
+    let (site, on, by) = inside(derivation, row)?;
+    let drawn_on = drawn_on(derivation, row).map(|set| bodies_tex(derivation, &set));
+    let name = |b: BodyId| latex_name(problem.body_name(b));
+    let point = latex_name(&site);
+    Some(InsidePair {
+        force: format!("\\mathbf{{F}}^{{{point}}}"),
+        point,
+        on: name(on),
+        by: name(by),
+        drawn_on,
+    })
+}
+
+/// The site of `row`'s relaxed force, the body it acts on and the body that exerts it,
+/// where both are among the row's bodies.
+fn inside(derivation: &Derivation, row: &Equation) -> Option<(String, BodyId, BodyId)> {
     let model = &derivation.model;
     let problem = model.problem;
+    if !matches!(row.sum, crate::plan::Sum::Generalized { .. }) {
+        return None;
+    }
     let site = row.unknowns.iter().find_map(|u| match u {
         Symbol::Unknown(Unknown::Reaction { site, .. }) => Some(site),
         _ => None,
@@ -244,19 +352,28 @@ fn relaxed_inside(derivation: &Derivation, row: &Equation) -> Option<InsidePair>
     if !row.free_body.contains(&on) || !row.free_body.contains(&by) {
         return None;
     }
-    let drawn_on = (super::pictures::free_body_sets(derivation).into_iter())
+    Some((site.to_string(), on, by))
+}
+
+/// The free body of step 2 that shows an auxiliary row's relaxed force where that force
+/// acts between two bodies the row moves (the four-bar's pin at R, inside the moved B + C):
+/// the smallest of the other rows' free bodies (and the asked reactions') with the body
+/// it acts on and without the body that exerts it, free body C. The plan names it for the
+/// row, and the row's own bodies, which do not show the force, are not drawn for it.
+pub fn drawn_on(derivation: &Derivation, row: &Equation) -> Option<Vec<BodyId>> {
+    let (_, on, by) = inside(derivation, row)?;
+    let mut sets: Vec<Vec<BodyId>> = Vec::new();
+    for x in &derivation.rows {
+        if !x.free_body.is_empty()
+            && inside(derivation, x).is_none()
+            && !sets.contains(&x.free_body)
+        {
+            sets.push(x.free_body.clone());
+        }
+    }
+    (super::asked_bodies::with_asked(derivation, sets).into_iter())
         .filter(|set| set.contains(&on) && !set.contains(&by))
         .min_by_key(Vec::len)
-        .map(|set| bodies_tex(derivation, &set));
-    let name = |b: BodyId| latex_name(problem.body_name(b));
-    let point = latex_name(site);
-    Some(InsidePair {
-        force: format!("\\mathbf{{F}}^{{{point}}}"),
-        point,
-        on: name(on),
-        by: name(by),
-        drawn_on,
-    })
 }
 
 /// The first of Kane's rows (1-based) that moves `bodies` together as an auxiliary speed

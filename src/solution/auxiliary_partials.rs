@@ -62,7 +62,7 @@ pub fn table_rows(
                 .filter(|u| matches!(u, Symbol::Unknown(_)))
                 .map(|u| latex(&Expr::sym(u.clone())))
                 .collect();
-            let speed = format!("u_{{{r}}} \\to {}", forces.join(", "));
+            let speed = super::tex::auxiliary_speed_tex(r, &forces.join(", "));
             let rigid = motion.rigid.as_ref();
             out.extend(body_rows(
                 derivation,
@@ -74,7 +74,7 @@ pub fn table_rows(
             continue;
         };
         let force = latex(&Expr::sym(model.constraints.rows[k].unknown.clone()));
-        let speed = format!("u_{{{r}}} \\to {force}");
+        let speed = super::tex::auxiliary_speed_tex(r, &force);
         let mut lines = body_rows(derivation, per_body, &weights, r - 1, (speed.clone(), None));
         if let RowOrigin::Site { site, .. } = model.constraints.rows[k].origin {
             let of_site = (model.constraints.rows.iter())
@@ -284,4 +284,63 @@ fn forms_the_row(
     let formed = eval(&row.groups.inertia_force) + eval(&row.groups.inertia_torque);
     let here: f64 = terms.iter().map(eval).sum();
     formed.is_finite() && (formed - here).abs() <= 1e-9 * (1.0 + formed.abs())
+}
+
+/// How a body moves with an auxiliary speed, read from its partial velocity and partial
+/// angular velocity on the loop.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Moves {
+    /// Both zero: it adds nothing to the row.
+    Still,
+    /// It moves without turning.
+    Slides,
+    /// It turns, its mass centre still.
+    Turns,
+    /// It moves and turns.
+    Both,
+}
+
+/// How each body moves with Kane's auxiliary row `r` (1-based), on the loop: a partial
+/// velocity zero at the loop's states is zero there, as the table writes it. `None` where
+/// the row has no motion of its own (see [`motion`]) or the loop is not known.
+pub fn body_motions(derivation: &Derivation, r: usize) -> Option<Vec<(BodyId, Moves)>> {
+    let motion = motion(derivation, r)?;
+    let on_loop = super::kane_loop::OnTheLoop::of(derivation)?;
+    let model = &derivation.model;
+    let problem = model.problem;
+    let n = problem.coordinates.len();
+    let rates: Vec<Symbol> = (0..n).map(|i| problem.coordinate_symbol(i, 1)).collect();
+    let zero = |v: &Vector, body: BodyId| {
+        (v.components_in(body, &model.frames).iter()).all(|c| on_loop.is_zero(c))
+    };
+    let mut out = Vec::new();
+    for &body in &model.order {
+        let state = &model.bodies[body.0];
+        let combined = |list: Vec<Vector>, own: Vector| {
+            Vector::sum(
+                list.iter()
+                    .zip(&motion.weights)
+                    .filter(|(_, w)| !w.is_zero())
+                    .map(|(v, w)| v.scaled(w)),
+            )
+            .plus(&own)
+        };
+        let (own_v, own_w) = match &motion.rigid {
+            Some(rigid) => (rigid.centre(model, body), rigid.omega(body)),
+            None => (Vector::zero(), Vector::zero()),
+        };
+        let v = combined(
+            crate::equations::partials(&state.center.velocity, &rates),
+            own_v,
+        );
+        let w = combined(crate::equations::partials(&state.omega, &rates), own_w);
+        let moves = match (zero(&v, body), zero(&w, body)) {
+            (true, true) => Moves::Still,
+            (false, true) => Moves::Slides,
+            (true, false) => Moves::Turns,
+            (false, false) => Moves::Both,
+        };
+        out.push((body, moves));
+    }
+    Some(out)
 }

@@ -362,7 +362,12 @@ pub fn plan(derivation: &Derivation) -> Plan {
             free_body_tex: if matches!(row.sum, Sum::Constraint { .. }) {
                 Math::from(String::new())
             } else {
-                Math::from(bodies_tex(derivation, &row.free_body))
+                // An auxiliary row's force inside its bodies: the free body that shows it.
+                let shown = super::auxiliary::drawn_on(derivation, row);
+                Math::from(bodies_tex(
+                    derivation,
+                    shown.as_ref().unwrap_or(&row.free_body),
+                ))
             },
             equation_tex: Math::from(super::row_names::sum_tex(derivation, &row.sum)),
             direction_tex: match (&row.direction, &row.sum) {
@@ -458,9 +463,12 @@ fn kinematic_definitions(derivation: &Derivation) -> Vec<Named> {
         .flat_map(|(_, c)| c.iter());
     let rows = derivation.rows.iter().map(|r| &r.expression);
     let forces: Vec<Definition> = named_definitions(action_components(derivation));
+    // Kane's step 5 defines the dependent rates' denominator where it first writes it.
+    let in_step_5 = super::kane_delta::defined_in_step_5(derivation);
     let used: Vec<Definition> = named_definitions(parts.chain(rows))
         .into_iter()
         .filter(|d| !forces.contains(d))
+        .filter(|d| !(in_step_5 && d.note() == super::kane_delta::DELTA_NOTE))
         .collect();
     let (speeds, plain) = speed_indices(derivation);
     let merged = crate::render::merged_by_speed(named_list(used), &speeds, &plain);

@@ -121,8 +121,9 @@ pub fn dependent_speeds(
             words(&relations)
         )
     };
+    let over = over_delta(speeds, &relation_tex);
     let mut paragraphs = vec![format!(
-        "The constraints fix the rates {} by the others, {}{}; solved for the dependent rates, the velocity constraints give{using}:",
+        "The constraints fix the rates {} by the others, {}{}; solved for the dependent rates, the velocity constraints give{using}{over}:",
         listed(&speeds.dependent),
         if speeds.independent.len() == 1 {
             format!(
@@ -196,6 +197,17 @@ pub fn dependent_speeds(
     }
 }
 
+/// The common denominator defined where the rates first have it: `, over the common
+/// denominator $\Delta = …$`, or nothing.
+fn over_delta(speeds: &Speeds, relation_tex: &str) -> String {
+    match super::kane_delta::definition_tex(speeds) {
+        Some(delta) if relation_tex.contains("\\Delta") && !speeds.at_each_state => {
+            format!(", over the common denominator ${delta}$")
+        }
+        _ => String::new(),
+    }
+}
+
 /// Kane's equations of `count` independent speeds, numbered as the speeds and the rows'
 /// headings are: `r = 1` for `u₁`, never by the rates.
 fn kane_equations_tex(count: usize) -> String {
@@ -213,10 +225,17 @@ fn kane_equations_tex(count: usize) -> String {
 /// denominators agree on the loop.
 fn linked(partials: String, link: Option<&super::kane_delta::OnTheLoop>) -> String {
     match link {
-        Some(link) => format!(
-            "These are the rates of step 1: on the loop $\\Delta = {}$, since the loop dotted with ${}$ is zero. {partials}",
-            link.equal_tex, link.along_tex
-        ),
+        Some(link) => {
+            let also: String = (link.also.iter())
+                .map(|(identity, along)| {
+                    format!(", and ${identity}$, since the loop dotted with ${along}$ is zero")
+                })
+                .collect();
+            format!(
+                "These are the rates of step 1: on the loop $\\Delta = {}$, since the loop dotted with ${}$ is zero{also}. {partials}",
+                link.equal_tex, link.along_tex
+            )
+        }
         None => partials,
     }
 }

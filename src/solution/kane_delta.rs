@@ -17,13 +17,42 @@ pub struct OnTheLoop {
     pub along_tex: String,
     /// `\sin(q_{1} + q_{2} - q_{3})`.
     pub zero_tex: String,
+    /// The other identities the loop gives that step 5's rates need to be step 1's, each
+    /// with the unit vector the loop is dotted with: `c \sin(q_1 - q_3) + d \sin q_1 =
+    /// -b \sin q_2` along `\hat{\mathbf{a}}_{y}`, for `q̇₃`.
+    pub also: Vec<(String, String)>,
+    /// `Δ`, the named denominator.
+    pub delta: Expr,
+    /// What `Δ` equals on the loop, `-b \sin(q_1 + q_2 - q_3)`.
+    pub equal: Expr,
+}
+
+/// What the dependent rates' common denominator is named for.
+pub const DELTA_NOTE: &str = "the common denominator of the dependent rates";
+
+/// Whether step 5 defines `Δ` beside the dependent rates (Kane's method with the rates
+/// written in symbols), so that step 4 does not.
+pub fn defined_in_step_5(derivation: &crate::equations::Derivation) -> bool {
+    derivation.method == crate::equations::Method::Kane
+        && (derivation.dependent_speeds.as_ref()).is_some_and(|s| !s.at_each_state)
+}
+
+/// `\Delta = a \sin(q_1 - q_3) + d \sin(q_3)`: the dependent rates' common denominator
+/// defined, for the sentence that first writes the rates with it; `None` without one.
+pub fn definition_tex(speeds: &DependentSpeeds) -> Option<String> {
+    let definitions = named_definitions(speeds.c.iter().flatten());
+    let delta = (definitions.iter()).find(|d| d.note() == DELTA_NOTE)?;
+    let name = delta.latex()?;
+    Some(format!(
+        "{name} = {}",
+        crate::symbolic::latex_collected(delta.value())
+    ))
 }
 
 /// See [`OnTheLoop`].
 pub fn on_the_loop(model: &Model, speeds: &DependentSpeeds) -> Option<OnTheLoop> {
     let definitions = named_definitions(speeds.c.iter().flatten());
-    let mut deltas = (definitions.iter())
-        .filter(|d| d.note() == "the common denominator of the dependent rates");
+    let mut deltas = (definitions.iter()).filter(|d| d.note() == DELTA_NOTE);
     let delta = deltas.next()?;
     if deltas.next().is_some() {
         return None;
@@ -56,7 +85,13 @@ pub fn on_the_loop(model: &Model, speeds: &DependentSpeeds) -> Option<OnTheLoop>
             for unit in &units {
                 let along = gap.dot(unit, &model.frames);
                 if same_at(&residual, &along, &states) || same_at(&residual, &-along, &states) {
+                    let delta =
+                        (speeds.c.iter().flatten()).find_map(|c| named_delta(c, delta.note()))?;
+                    let also = rate_links(model, speeds, (&delta, &equal), &gap, &units);
                     return Some(OnTheLoop {
+                        also,
+                        delta,
+                        equal: equal.clone(),
                         equal_tex: latex(&equal),
                         along_tex: super::tex::vector_tex(model, unit),
                         zero_tex: latex(&with_coordinates(&equal)),
@@ -99,6 +134,82 @@ fn denominators(e: &Expr, out: &mut Vec<Expr>) {
         }
         Node::Add(items) | Node::Func(_, items) => items.iter().for_each(|x| denominators(x, out)),
         Node::Num(_) | Node::Sym(_) => {}
+    }
+}
+
+/// For each dependent rate whose form in step 5 is not yet step 1's once `Δ` is written
+/// as on the loop (`delta`, `equal`), the identity of the loop that makes it so: the
+/// numerators over `Δ` equal, as the loop's `gap` dotted with one of `units` shows.
+fn rate_links(
+    model: &Model,
+    speeds: &DependentSpeeds,
+    (delta, equal): (&Expr, &Expr),
+    gap: &Vector,
+    units: &[Vector],
+) -> Vec<(String, String)> {
+    let problem = model.problem;
+    let Some(rates) = super::closure_loops::loop_rates(model) else {
+        return Vec::new();
+    };
+    if speeds.independent.len() != 1 || !speeds.prescribed.is_empty() {
+        return Vec::new();
+    }
+    let free = problem.coordinate_expr(speeds.independent[0], 1);
+    let states = sample_states(model);
+    let mut out = Vec::new();
+    for (s, &d) in speeds.dependent.iter().enumerate() {
+        let Some((_, first)) = rates.iter().find(|(i, _)| *i == d) else {
+            continue;
+        };
+        // Step 5's numerator over Δ and step 1's rate times what Δ is on the loop.
+        let over = simplify(&(&speeds.c[s][0] * delta));
+        let step_1 = simplify(&(&(first / &free) * equal));
+        let difference = &over - &step_1;
+        // Equal already, or by what step 5 says of Δ alone.
+        let said = delta.as_definition().map(|d| d.value() - equal);
+        if same_at(&difference, &Expr::zero(), &states)
+            || said.is_some_and(|said| proportional(&difference, &said, &states))
+        {
+            continue;
+        }
+        let along = (units.iter())
+            .find(|unit| proportional(&difference, &gap.dot(unit, &model.frames), &states));
+        let Some(along) = along else {
+            continue;
+        };
+        let (common, inner) = crate::symbolic::pull_common_factor(&over);
+        let other = simplify(&(&step_1 / &common));
+        out.push((
+            format!("{} = {}", latex(&inner), latex(&other)),
+            super::tex::vector_tex(model, along),
+        ));
+    }
+    out
+}
+
+/// Whether `a` is a constant non-zero multiple of `b` at `states`.
+fn proportional(a: &Expr, b: &Expr, states: &[crate::symbolic::Values]) -> bool {
+    let ratio =
+        |v: &crate::symbolic::Values| crate::symbolic::eval(a, v) / crate::symbolic::eval(b, v);
+    let first = states.first().map(ratio).unwrap_or(f64::NAN);
+    first.is_finite()
+        && first.abs() > 1e-12
+        && (states.iter()).all(|v| (ratio(v) - first).abs() <= 1e-9 * first.abs())
+}
+
+/// The named denominator in `e` whose note is `note`, as the symbol it is written with.
+fn named_delta(e: &Expr, note: &str) -> Option<Expr> {
+    if e.as_definition().is_some_and(|d| d.note() == note) {
+        return Some(e.clone());
+    }
+    match e.node() {
+        Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => {
+            items.iter().find_map(|x| named_delta(x, note))
+        }
+        Node::Pow(base, exponent) => {
+            named_delta(base, note).or_else(|| named_delta(exponent, note))
+        }
+        Node::Num(_) | Node::Sym(_) => None,
     }
 }
 

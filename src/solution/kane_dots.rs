@@ -13,7 +13,7 @@ use crate::render::symbols;
 use crate::symbolic::latex_collected;
 use crate::symbolic::simplify;
 use crate::symbolic::{add, Expr, Node, Symbol};
-use crate::symbolic::{latex, latex_name, latex_unit_vector};
+use crate::symbolic::{latex, latex_name};
 
 /// The most bodies whose dot products are written out: past three, the products of a
 /// chain's outer bodies run over several lines each, and its rows are read by step 4's
@@ -29,12 +29,10 @@ const LONGEST_PRODUCTS: usize = 300;
 pub(super) const WIDEST_LINE: f64 = 66.0;
 
 /// One dot product `a · b` written in one frame: the pairs of components that multiply,
-/// in axis order, and the frame's unit vectors they are along.
+/// in axis order.
 pub(super) struct DotProduct {
     /// `(a_i, b_i)` for each axis where neither is zero.
     pub(super) pairs: Vec<(Expr, Expr)>,
-    /// The unit vectors of those axes, `\hat{\mathbf{b}}_{x}`.
-    units: Vec<String>,
 }
 
 impl DotProduct {
@@ -46,20 +44,16 @@ impl DotProduct {
             let cost: usize = a.iter().chain(&b).map(|c| latex(c).len()).sum();
             (cost, frame, a, b)
         };
-        let (_, frame, a, b) = frames
+        let (_, _, a, b) = frames
             .iter()
             .map(|&f| written(f))
             .min_by_key(|(cost, ..)| *cost)
             .unwrap_or_else(|| written(BodyId::GROUND));
-        let mut pairs = Vec::new();
-        let mut units = Vec::new();
-        for axis in 0..3 {
-            if !a[axis].is_zero() && !b[axis].is_zero() {
-                pairs.push((a[axis].clone(), b[axis].clone()));
-                units.push(latex_unit_vector(model.frames.name(frame), axis as u8));
-            }
-        }
-        DotProduct { pairs, units }
+        let pairs = (0..3)
+            .filter(|&axis| !a[axis].is_zero() && !b[axis].is_zero())
+            .map(|axis| (a[axis].clone(), b[axis].clone()))
+            .collect();
+        DotProduct { pairs }
     }
 
     /// `Σ a_i b_i` as an expression.
@@ -78,8 +72,8 @@ fn factor_tex(e: &Expr) -> String {
     }
 }
 
-/// The products of dot products, `(a_x)(b_x) + (a_y)(b_y)`, with the unit vectors they
-/// are along said after them: on one line, or one product a line where that is too long.
+/// The products of dot products, `(a_x)(b_x) + (a_y)(b_y)`: on one line, or one product a
+/// line where that is too long.
 /// Empty where a product alone would stick out of the margin.
 pub(super) fn products_lines(dots: &[&DotProduct]) -> Vec<String> {
     let terms: Vec<String> = dots
@@ -90,33 +84,21 @@ pub(super) fn products_lines(dots: &[&DotProduct]) -> Vec<String> {
             _ => format!("{}\\, {}", factor_tex(a), factor_tex(b)),
         })
         .collect();
-    let mut units: Vec<&String> = dots.iter().flat_map(|d| d.units.iter()).collect();
-    units.dedup();
-    let along = units
-        .iter()
-        .map(|u| u.as_str())
-        .collect::<Vec<_>>()
-        .join(", ");
-    let along = format!("\\quad \\text{{(along }} {along}\\text{{)}}");
-    let one_line = format!("&= {} {along}", terms.join(" + "));
+    let one_line = format!("&= {}", terms.join(" + "));
     if one_line.len() <= LONGEST_PRODUCTS {
         return vec![one_line];
     }
     if terms.iter().any(|t| t.len() > LONGEST_PRODUCTS) {
         return Vec::new();
     }
-    let mut lines: Vec<String> = terms
+    terms
         .iter()
         .enumerate()
         .map(|(i, t)| match i {
             0 => format!("&= {t}"),
             _ => format!("&\\quad + {t}"),
         })
-        .collect();
-    if let Some(last) = lines.last_mut() {
-        last.push_str(&format!(" {along}"));
-    }
-    lines
+        .collect()
 }
 
 /// The frames a body's products may be written in: its own, its parent's and `N`.

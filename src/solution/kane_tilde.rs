@@ -171,10 +171,13 @@ fn parts(
 
 /// Whether the parts add up to the row's inertia groups at the initial state, every
 /// second derivative given a value: what is printed is what the row sums.
-fn add_up(model: &Model, parts: &[Part], groups: &Groups) -> bool {
-    let mut values: Values = crate::mechanics::sample_states(model)
-        .into_iter()
-        .next()
+fn add_up(derivation: &Derivation, parts: &[Part], groups: &Groups) -> bool {
+    let model = &derivation.model;
+    // On the loop where the parts are finished with its constraints.
+    let on_loop = super::kane_loop::OnTheLoop::of(derivation);
+    let start = on_loop.as_ref().and_then(|l| l.states().first().cloned());
+    let mut values: Values = start
+        .or_else(|| crate::mechanics::sample_states(model).into_iter().next())
         .unwrap_or_default();
     let problem = model.problem;
     for i in 0..problem.coordinates.len() {
@@ -182,7 +185,8 @@ fn add_up(model: &Model, parts: &[Part], groups: &Groups) -> bool {
     }
     let row = eval(&groups.inertia_force, &values) + eval(&groups.inertia_torque, &values);
     let sum: f64 = parts.iter().map(|p| eval(&p.term, &values)).sum();
-    row.is_finite() && (row - sum).abs() <= 1e-9 * (1.0 + row.abs())
+    let tolerance = if on_loop.is_some() { 1e-7 } else { 1e-9 };
+    row.is_finite() && (row - sum).abs() <= tolerance * (1.0 + row.abs())
 }
 
 /// `q̈_D = …` of each dependent acceleration in `entering` not yet written, as lines of
@@ -338,7 +342,7 @@ pub fn inertia_dot_products(
     // An auxiliary row is solved with every q̈ known: it keeps the dependent ones.
     elimination.applies &= !auxiliary;
     let this = parts(derivation, speeds, r, &elimination, shown);
-    if this.is_empty() || !add_up(model, &this, groups) {
+    if this.is_empty() || !add_up(derivation, &this, groups) {
         return None;
     }
     // The dependent accelerations the rows before this one wrote already.

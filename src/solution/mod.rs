@@ -49,6 +49,7 @@ mod kane;
 mod kane_bodies;
 mod kane_delta;
 mod kane_dots;
+mod kane_loop;
 mod kane_system;
 mod kane_theory;
 mod kane_tilde;

@@ -27,14 +27,21 @@ pub(super) fn body_rows(
     let model = &derivation.model;
     // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
     let sign = super::tex::initial_sign(model);
-    let combined = |list: &[Vector]| -> Vector {
+    // Finished with the position constraints where they combine its terms.
+    let on_loop = super::kane_loop::OnTheLoop::of(derivation);
+    let finished = |e: Expr| match &on_loop {
+        Some(on_loop) => on_loop.reduce(&e),
+        None => e,
+    };
+    let combined = |list: &[Vector], own: Vector| -> Vector {
         Vector::sum(
             list.iter()
                 .zip(weights)
                 .filter(|(_, w)| !w.is_zero())
                 .map(|(v, w)| v.scaled(w)),
         )
-        .map(|e| roots_of_squares(&simplify(e), &sign))
+        .plus(&own)
+        .map(|e| finished(roots_of_squares(&simplify(e), &sign)))
     };
     let mut out = Vec::new();
     let mut first = true;
@@ -44,8 +51,8 @@ pub(super) fn body_rows(
             Some(rigid) => (rigid.centre(model, *body), rigid.omega(*body)),
             None => (Vector::zero(), Vector::zero()),
         };
-        let v_tex = super::tex::shortest_tex(model, &combined(v).plus(&own_v), *body);
-        let w_tex = super::tex::shortest_tex(model, &combined(w).plus(&own_w), *body);
+        let v_tex = super::tex::shortest_tex(model, &combined(v, own_v), *body);
+        let w_tex = super::tex::shortest_tex(model, &combined(w, own_w), *body);
         let line = Line {
             body: *body,
             r: r + 1,

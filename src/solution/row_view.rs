@@ -133,7 +133,10 @@ fn kane_heading(
         };
         augmented_note = super::auxiliary::moved_note(derivation, row, r).unwrap_or_default();
         (
-            format!("r = {r}\\colon\\; u_{{{r}}} \\to {}", unknowns_tex(&forces)),
+            format!(
+                "r = {r}\\colon\\; {}",
+                super::tex::auxiliary_speed_tex(r, &unknowns_tex(&forces))
+            ),
             why,
         )
     } else if r <= problem.coordinates.len() {
@@ -157,8 +160,8 @@ fn kane_heading(
         }
         (
             format!(
-                "r = {r}\\colon\\; u_{{{r}}} \\to {}",
-                unknowns_tex(&reactions)
+                "r = {r}\\colon\\; {}",
+                super::tex::auxiliary_speed_tex(r, &unknowns_tex(&reactions))
             ),
             format!(
                 "(an auxiliary speed: it moves {} against the joint)",
@@ -172,18 +175,26 @@ fn kane_heading(
 /// Step 5: one row, grouped as the Motion Law groups it and simplified.
 pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let sign = initial_sign(&derivation.model);
+    // Kane's rows write F_r and F*_r instead of the groups, Lagrange's the derivatives of
+    // L (see below): not formed.
+    let kane_row = matches!(row.sum, Sum::Generalized { .. })
+        && super::kane::row_number(derivation, row).is_some();
+    // Kane's rows with dependent speeds: finished with the position constraints.
+    let on_loop = kane_row
+        .then(|| super::kane_loop::OnTheLoop::of(derivation))
+        .flatten();
     let shown = |e: &Expr| {
         let e = if uses_shown(derivation) {
             as_shown(e)
         } else {
             e.clone()
         };
-        roots_of_squares(&e, &sign)
+        let e = roots_of_squares(&e, &sign);
+        match &on_loop {
+            Some(on_loop) => on_loop.reduce(&e),
+            None => e,
+        }
     };
-    // Kane's rows write F_r and F*_r instead of the groups, Lagrange's the derivatives of
-    // L (see below): not formed.
-    let kane_row = matches!(row.sum, Sum::Generalized { .. })
-        && super::kane::row_number(derivation, row).is_some();
     let lagrange_text = super::lagrange::row_text(derivation, row, &shown);
     let mut grouped_tex = match kane_row || lagrange_text.is_some() {
         true => String::new(),

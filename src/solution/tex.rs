@@ -248,6 +248,12 @@ pub fn factor_of_product(v: &str) -> String {
     }
 }
 
+/// Kane's auxiliary speed `r` by the force it brings in, as a textbook says it:
+/// `u_{4}\text{, for } F^{R}_{x}` (the speed along which that force does work).
+pub fn auxiliary_speed_tex(r: usize, forces: &str) -> String {
+    format!("u_{{{r}}}\\text{{, for }} {forces}")
+}
+
 #[cfg(test)]
 mod factor_tests {
     use super::factor_of_product;

@@ -56,7 +56,9 @@ pub fn free_body_legend(drawings: &[Drawing]) -> &'static str {
 pub fn free_body_sets(derivation: &Derivation) -> Vec<Vec<BodyId>> {
     let mut sets: Vec<Vec<BodyId>> = Vec::new();
     for row in &derivation.rows {
-        if !row.free_body.is_empty() && !sets.contains(&row.free_body) {
+        // An auxiliary row whose force is inside its bodies is shown on another.
+        let elsewhere = crate::solution::auxiliary::drawn_on(derivation, row).is_some();
+        if !row.free_body.is_empty() && !elsewhere && !sets.contains(&row.free_body) {
             sets.push(row.free_body.clone());
         }
     }
