@@ -27,6 +27,7 @@ mod matrix_tables;
 mod numbers;
 mod plan_table;
 mod plot;
+mod plot_scripts;
 mod plots_drawn;
 mod prepare;
 mod sample;

@@ -170,7 +170,7 @@ pub fn line_plot(
             .map_err(|e| drawing(e.to_string()))?;
         root.present().map_err(|e| drawing(e.to_string()))?;
     }
-    Ok(dashed(&svg, series.len()))
+    Ok(super::plot_scripts::lowered(&dashed(&svg, series.len())))
 }
 
 /// `svg` with the lines (and legend samples) of the first `count` series dashed as

@@ -261,7 +261,7 @@ fn the_bowling_balls_friction_points_against_the_slip() {
     let (g, m) = r
         .arrows
         .iter()
-        .find(|(g, _)| g.attr("data-label").is_some_and(|l| l.starts_with('μ')))
+        .find(|(g, _)| g.attr("data-label").is_some_and(|l| l.contains('μ')))
         .expect("the friction arrow");
     assert_eq!(g.attr("data-kind"), Some("load"));
     let (tail, head) = super::line(g, *m).expect("straight");

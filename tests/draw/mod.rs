@@ -422,15 +422,22 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
             let (letter, rest) = (c.kind.letter(), c.axis.subscript());
             let sign = if child { 1.0 } else { -1.0 };
             let dir = in_n(d, &c.direction, values).map(|x| x * sign);
-            if let Some(slip) = slip_along(d, joint, c, values) {
-                // Sliding friction is known: drawn against the slip, not as an unknown.
-                let against = dir.map(|x| -x * slip.signum());
-                check_sliding(r, &format!("joint-{}", joint.name), against);
-                continue;
-            }
             // A light rod's tension is one unknown, T^Q, without a subscript; a point named
             // by a word is printed by the handout's letter for it (the lane's contact: P).
             let name = shown_letter(d, &joint.name);
+            if let Some(slip) = slip_along(d, joint, c, values) {
+                // Sliding friction is known: drawn against the slip, not as an unknown, and
+                // labelled by the rows' unknown signed as it points.
+                let against = dir.map(|x| -x * slip.signum());
+                let unknown = format!("{letter}^{name}_{rest}");
+                check_sliding(
+                    r,
+                    &format!("joint-{}", joint.name),
+                    against,
+                    (&unknown, slip),
+                );
+                continue;
+            }
             let label = match c.axis {
                 mbd_tutor::symbolic::Axis::Member => format!("T^{name}"),
                 _ => format!("{letter}^{name}_{rest}"),
@@ -537,6 +544,7 @@ mod labels;
 mod leaders;
 mod overlap;
 mod placement;
+mod readable;
 mod same_names;
 mod sliding;
 mod textbook;

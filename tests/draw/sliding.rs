@@ -27,15 +27,19 @@ pub(super) fn slip_along(
     (slip.abs() > 1e-9).then_some(slip)
 }
 
-/// A sliding friction arrow at `at`: a known force, labelled μ times the normal force,
-/// drawn along `against` (against the slip).
-pub(super) fn check_sliding(r: &Read, at: &str, against: [f64; 3]) {
+/// A sliding friction arrow at `at`: a known force drawn along `against` (against the
+/// slip), labelled by the rows' `unknown` signed as the arrow points (`-F^P_x` where the
+/// slip is along the unknown's + axis, `slip` > 0), equal to μ times the normal force.
+pub(super) fn check_sliding(r: &Read, at: &str, against: [f64; 3], (unknown, slip): (&str, f64)) {
+    let sign = if slip > 0.0 { "-" } else { "" };
+    let want = format!("{sign}{unknown} = μ ");
     let found = r.arrows.iter().find(|(g, _)| {
         g.attr("data-kind") == Some("load")
             && g.attr("data-at") == Some(at)
-            && g.attr("data-label").is_some_and(|l| l.starts_with('μ'))
+            && g.attr("data-label").is_some_and(|l| l.starts_with(&want))
     });
-    let (g, m) = found.unwrap_or_else(|| panic!("{}: no sliding friction at {at}", r.name));
+    let (g, m) =
+        found.unwrap_or_else(|| panic!("{}: no sliding friction {want:?} at {at}", r.name));
     let (tail, head) = line(g, *m).expect("a straight arrow");
     let got = [head[0] - tail[0], head[1] - tail[1]];
     let want = r.project_direction(against);

@@ -6,6 +6,9 @@ use super::numbers::P3;
 use super::picture::{Ink, Item, Stroke, P2};
 use super::strokes::{p2add, p2norm, p2scale, p2unit};
 
+/// Half the arm of the cross that marks a track's axis (px).
+const AXIS_CROSS: f64 = 7.0;
+
 impl Painter {
     /// The fixed ground at `at`: a hatched line along `along`, or a small support.
     pub(super) fn ground(&mut self, at: P3, along: P3, up: P3) {
@@ -146,7 +149,8 @@ impl Painter {
         self.close_ground(outside, (a, b), u);
     }
 
-    /// A fixed circular track that a disc rolls on, hatched on the side away from it.
+    /// A fixed circular track that a disc rolls on, hatched on the side away from it, its
+    /// axis marked by a centre cross.
     pub(super) fn track(&mut self, center: P3, normal: P3, radius: f64, inside: bool) {
         let c = self.at(center);
         let rim: Vec<P2> = super::numbers::circle(center, normal, radius)
@@ -154,6 +158,12 @@ impl Painter {
             .map(|p| self.at(*p))
             .collect();
         self.stroke(rim.clone(), 1.4, Ink::Black, None, true);
+        // Its axis, which coordinates of what rolls on it may be measured from: a centre
+        // cross, as a drawing marks a circle's centre.
+        for arm in [[AXIS_CROSS, 0.0], [0.0, AXIS_CROSS]] {
+            let (a, b) = (p2add(c, p2scale(arm, -1.0)), p2add(c, arm));
+            self.stroke(vec![a, b], 0.8, Ink::Grey, None, false);
+        }
         // A tick every 8 px along the rim, away from the disc: outward when it rolls
         // inside, inward when outside.
         let away = if inside { 1.0 } else { -1.0 };

@@ -67,6 +67,8 @@ pub(super) struct Painter {
     /// Where the picture's velocities start (on the page): an angle's arc about one of
     /// them goes round outside its arrow.
     moving: Vec<P2>,
+    /// The marked points (on the page): a weight moved aside keeps its arrow off the others.
+    points: Vec<P2>,
 }
 
 impl Painter {
@@ -460,6 +462,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
         owners: Vec::new(),
         grounds: Vec::new(),
         moving: Vec::new(),
+        points: Vec::new(),
     };
     painter.survey(scene);
     for shape in scene
@@ -473,6 +476,7 @@ pub fn lay_out_with(scene: &Scene, view: View, grow: f64) -> Picture {
     for m in &scene.markers {
         let at = painter.at(m.at);
         painter.obstacles.spot(at, 4.0);
+        painter.points.push(at);
         marks.push(Mark {
             id: m.id.clone(),
             at,

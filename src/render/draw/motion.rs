@@ -126,6 +126,9 @@ pub struct Motion {
     /// The floors fixed in `N` that bodies roll on in 3D: each a parallelogram (its
     /// corners in order) around every contact of the whole motion.
     pub floors: Vec<[P3; 4]>,
+    /// The fixed round tracks that bodies roll in or on (a cylinder seen end-on): each
+    /// its rim's points, drawn whole with the ground.
+    pub rims: Vec<Vec<P3>>,
     /// The coordinates' marks' labels, one per mark of [`Placed::gauges`].
     pub gauges: Vec<Label>,
     /// Per spring: its lane beside the others between the same points (the solution

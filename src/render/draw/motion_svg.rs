@@ -103,6 +103,10 @@ fn ground_lines(motion: &Motion) -> Ground {
         }
         supports.push(pieces);
     }
+    // A fixed round track whole, not only the arc its contact runs over.
+    for rim in &motion.rims {
+        supports.push(vec![(rim.iter().map(|q| p.point(*q)).collect(), true)]);
+    }
     let tracks = motion
         .rolling
         .iter()

@@ -17,6 +17,7 @@ pub(super) mod numbers;
 pub(super) mod shapes;
 pub(super) mod sheets;
 mod sliding;
+mod travel;
 mod triads;
 mod velocities;
 

@@ -87,8 +87,11 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         captions.push(Some(problem.body_name(b).to_string()));
     }
     let floors = floors(&numbers, &rolling, &placed, size);
+    let rims = rims(&numbers);
     let title = crate::render::draw::text_size(&problem.title)[0] + 2.0 * MARGIN;
-    let (projection, size) = fit(still_rows, &sheets, &floors, &placed, title);
+    let (projection, size) = fit(still_rows, &sheets, (&floors, &rims), &placed, title);
+    // After the fit: a rack as long as its pinion's travel runs through the picture.
+    super::travel::stretch_carriers(derivation, frames, &owners, &mut sheets);
     let lanes = super::lanes::lanes(&problem.loads);
     let lanes_of = |spring: bool| -> Vec<f64> {
         problem
@@ -112,6 +115,7 @@ pub fn motion(derivation: &Derivation, frames: &[Frame], view: View) -> Motion {
         grounded,
         rolling,
         floors,
+        rims,
         gauges: gauges.0,
         spring_lanes: lanes_of(true),
         damper_lanes: lanes_of(false),
@@ -187,8 +191,13 @@ fn steady_gauges(
     (labels, coordinates)
 }
 
-/// A joint's coordinates that no mark shows, as the pictures print them (`ψ, θ, φ`).
+/// A joint's coordinates that no mark shows, as the pictures print them (`ψ, θ, φ`); none
+/// for a free joint, whose six coordinates place the body anywhere: its point on the
+/// parent (`N`'s origin, under a rolling coin) is no point of the motion to name them at.
 fn coordinates_of(problem: &Problem, joint: usize, marked: &[usize]) -> Option<String> {
+    if problem.joints[joint].kind == JointKind::Free {
+        return None;
+    }
     let names: Vec<String> = problem.joints[joint]
         .coordinates
         .iter()
@@ -198,6 +207,23 @@ fn coordinates_of(problem: &Problem, joint: usize, marked: &[usize]) -> Option<S
         })
         .collect();
     (!names.is_empty()).then(|| names.join(", "))
+}
+
+/// The rims of the round tracks fixed in `N` that bodies roll in or on, as the still
+/// picture draws them (`Shape::Track`).
+fn rims(n: &Numbers) -> Vec<Vec<P3>> {
+    let size = super::size_of(n);
+    (super::bodies::surfaces(n, size).into_iter())
+        .filter_map(|s| match s {
+            crate::render::draw::Shape::Track {
+                center,
+                normal,
+                radius,
+                ..
+            } => Some(super::numbers::circle(center, normal, radius)),
+            _ => None,
+        })
+        .collect()
 }
 
 /// The floors fixed in `N` that bodies roll on in 3D, each around every contact on it over
@@ -338,14 +364,16 @@ fn extent(sheets: &[Sheet], placed: &Placed) -> Vec<P3> {
 fn fit(
     rows: [P3; 2],
     sheets: &[Sheet],
-    floors: &[[P3; 4]],
+    (floors, rims): (&[[P3; 4]], &[Vec<P3>]),
     placed: &[Placed],
     least_width: f64,
 ) -> (Projection, [f64; 2]) {
     let unit_scale = norm(rows[0]).max(1e-12);
     let rows = rows.map(|r| scale(r, 1.0 / unit_scale));
     let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    let floor_points = floors.iter().flatten().copied();
+    let floor_points = (floors.iter().flatten())
+        .chain(rims.iter().flatten())
+        .copied();
     for p in placed
         .iter()
         .flat_map(|frame| extent(sheets, frame))

@@ -12,7 +12,7 @@ const END: f64 = 6.0;
 /// Two arrows within this angle (degrees) of one line and [`BESIDE`] of each other (px
 /// at 13 px labels) read as one.
 const FAN: f64 = 30.0;
-const BESIDE: f64 = 10.0;
+const BESIDE: f64 = 20.0;
 
 /// Whether the segments `a`–`b` and `c`–`d` cross, each one's ends on either side of the
 /// other's line.

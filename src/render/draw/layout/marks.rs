@@ -14,6 +14,10 @@ pub const SENSE: f64 = std::f64::consts::FRAC_PI_4;
 /// An angle's arc's radius on the page (px), and the most it grows to for a short angle.
 pub const ARC: f64 = 30.0;
 const LONGEST_ARC: f64 = 45.0;
+/// An arc shorter than this (px) carries a smaller head, at least [`SMALLEST_HEAD`] of the
+/// full one: a full head would be most of it.
+const HEADS_ARC: f64 = 30.0;
+const SMALLEST_HEAD: f64 = 0.55;
 /// The least length (px) of an angle's arc, its head included, where its radius allows.
 const ARC_LENGTH: f64 = 28.0;
 /// The radius (px) of an arc about a velocity's point: past its arrow (36 px) and head.
@@ -92,7 +96,10 @@ impl Painter {
             points[n - 1][0] - points[n - 2][0],
             points[n - 1][1] - points[n - 2][1],
         ]) {
-            let h = head(points[n - 1], u);
+            let shrink = (radius * sweep.abs() / HEADS_ARC).clamp(SMALLEST_HEAD, 1.0);
+            let tip = points[n - 1];
+            let h =
+                head(tip, u).map(|p| p2add(tip, p2scale([p[0] - tip[0], p[1] - tip[1]], shrink)));
             self.stroke(h.to_vec(), 0.8, Ink::Grey, Some(Ink::Grey), true);
         }
         let middle = points[n / 2];

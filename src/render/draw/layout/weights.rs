@@ -2,8 +2,10 @@
 //! another force's line (the normal force under a disc) it is drawn shorter, ending a gap
 //! before that force's point; a force at the mass centre itself along its line is drawn
 //! from there the other way (a pin's vertical reaction at a wheel's centre). Only where
-//! even a short weight would not stand clear is it drawn a gap to the side, a thin dashed
-//! leader joining it to the mass centre it acts at.
+//! even a short weight would not stand clear, or where it would run along a bar that hides
+//! it, is it drawn a gap to the side, a thin dashed leader joining it to the mass centre
+//! it acts at: there it keeps off the other marked points and the other forces' arrows,
+//! so that it does not read as acting at them.
 
 use super::super::picture::{DrawnArrow, Item, P2};
 use super::super::scene::{Arrow, Kind};
@@ -12,7 +14,7 @@ use super::beside::to_segment;
 use super::Painter;
 
 /// How far to the side the weight may move, nearest first (px at 13 px labels).
-const GAPS: [f64; 4] = [16.0, 22.0, 30.0, 40.0];
+const GAPS: [f64; 6] = [16.0, 22.0, 30.0, 40.0, 52.0, 64.0];
 /// Two lines closer than this over a common stretch are one line on the page.
 const ON_A_LINE: f64 = 10.0;
 /// Two arrows within this angle (degrees) of one line are parallel.
@@ -24,6 +26,11 @@ const SHORT_OF: f64 = 9.0;
 const SHORTEST: f64 = 0.45;
 /// Two points closer than this (px) are one point on the page.
 const ONE_POINT: f64 = 2.0;
+/// Closer than this (px) to a bar's stroke, an arrow reads as lying along the bar.
+const BESIDE_A_BAR: f64 = 3.0;
+/// A weight moved aside ends no closer than this (px at 13 px labels) to another marked
+/// point, where it would read as acting there.
+const OFF_A_POINT: f64 = 12.0;
 /// Where along the weight's arrow a bar is looked for (fractions of its length).
 const SAMPLES: [f64; 4] = [0.2, 0.4, 0.6, 0.8];
 
@@ -40,8 +47,11 @@ impl Painter {
         (length, pushes): (f64, bool),
     ) -> (P2, f64) {
         if !pushes {
+            // Shortened before a force ahead, unless it then runs along a bar, hidden by it.
             if let Some(short) = self.weight_length(at, u, length) {
-                return (at, short);
+                if !self.along_a_bar(at, u, short) {
+                    return (at, short);
+                }
             }
         }
         let Some(moved) = self.weight_aside(at, u, length) else {
@@ -124,7 +134,20 @@ impl Painter {
             let reach =
                 |p: P2, v: P2| (p2add(p, p2scale(v, -length)), p2add(p, p2scale(v, length)));
             let later = (self.others.iter()).any(|&(p, v)| crosses((t, tip), reach(p, v)));
-            later || self.crossings(t, tip) > 0
+            // Its shaft by another marked point reads as acting there.
+            let at_a_point = (self.points.iter())
+                .filter(|p| p2norm([p[0] - tail[0], p[1] - tail[1]]) > ONE_POINT)
+                .any(|&p| to_segment(p, t, tip) < OFF_A_POINT * self.reach);
+            // Its shaft or head by another force's arrow reads as acting on it.
+            let on_a_force = (self.others.iter()).any(|&(p, v)| {
+                let (a, b) = reach(p, v);
+                let apart = [to_segment(t, a, b), to_segment(tip, a, b)]
+                    .into_iter()
+                    .chain([to_segment(a, t, tip), to_segment(b, t, tip)])
+                    .fold(f64::INFINITY, f64::min);
+                apart < ON_A_LINE * self.reach
+            });
+            later || at_a_point || on_a_force || self.crossings(t, tip) > 0
         };
         GAPS.iter()
             .flat_map(|gap| [1.0, -1.0].map(|side| side * gap * self.reach))
@@ -160,7 +183,7 @@ impl Painter {
                     Item::Stroke(s) if !s.closed && s.width >= 4.0 => s
                         .points
                         .windows(2)
-                        .any(|w| to_segment(p, w[0], w[1]) < s.width / 2.0 + 1.5),
+                        .any(|w| to_segment(p, w[0], w[1]) < s.width / 2.0 + BESIDE_A_BAR),
                     _ => false,
                 }),
                 _ => false,
