@@ -4,6 +4,7 @@
 use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
 use super::simulate::Trajectory;
 use super::system::{ReactionColumn, System};
+use super::work_along::{work_along, Imbalance};
 use crate::problem::{LoadKind, Problem};
 use crate::symbolic::fixed;
 
@@ -138,9 +139,6 @@ pub fn drive_energy_check(
     if prescribed.is_empty() || !conservative {
         return None;
     }
-    let rows = &trajectory.rows;
-    let total = trajectory.column("total")?;
-    let kinetic = trajectory.column("kinetic")?;
     let reactions = system.reaction_columns();
     let names = system.coordinate_names();
     // (the drive's index among the reactions, its coordinate's index)
@@ -156,7 +154,10 @@ pub fn drive_energy_check(
             ))
         })
         .collect::<Option<_>>()?;
-    let power = |t: f64, mut q: Vec<f64>, mut rates: Vec<f64>| -> Option<f64> {
+    let n = trajectory.coordinates;
+    let columns: Vec<[usize; 3]> = (0..n).map(|k| [1 + k, 1 + n + k, 1 + 2 * n + k]).collect();
+    let work = work_along(&trajectory.rows, &columns, |t, state| {
+        let (mut q, mut rates): (Vec<f64>, Vec<f64>) = state.iter().copied().unzip();
         system.assemble(t, &mut q, &mut rates).ok()?;
         let evaluation = system.evaluate(t, &q, &rates).ok()?;
         Some(
@@ -165,38 +166,8 @@ pub fn drive_energy_check(
                 .map(|&(r, c)| evaluation.reactions[r] * rates[c])
                 .sum(),
         )
-    };
-    let n = trajectory.coordinates;
-    let mut work = vec![0.0; rows.len()];
-    for i in 1..rows.len() {
-        let (before, after) = (&rows[i - 1], &rows[i]);
-        let h = after[0] - before[0];
-        let mut interval = 0.0;
-        for (s, weight) in GAUSS_LEGENDRE_3 {
-            let (q, rates): (Vec<f64>, Vec<f64>) = (0..n)
-                .map(|k| {
-                    let at = |row: &[f64]| [row[1 + k], row[1 + n + k], row[1 + 2 * n + k]];
-                    hermite(at(before), at(after), h, s)
-                })
-                .unzip();
-            interval += weight * power(before[0] + s * h, q, rates)?;
-        }
-        work[i] = work[i - 1] + h * interval;
-    }
-    let scale = rows
-        .iter()
-        .map(|r| r[kinetic].abs())
-        .chain(work.iter().map(|w| w.abs()))
-        .fold(0.0f64, f64::max)
-        .max(f64::MIN_POSITIVE);
-    let first = rows.first()?[total];
-    let (mut worst, mut at) = (0.0f64, 0.0);
-    for (row, w) in rows.iter().zip(&work) {
-        let error = (row[total] - first - w).abs();
-        if error > worst {
-            (worst, at) = (error, row[0]);
-        }
-    }
+    })?;
+    let Imbalance { worst, at, scale } = Imbalance::of(trajectory, &work)?;
     Some(Check::new(
         CheckKind::EnergyBalanceWithDrives,
         worst / scale,
@@ -208,77 +179,4 @@ pub fn drive_energy_check(
             fixed(scale)
         ),
     ))
-}
-
-/// Three-point Gauss–Legendre on [0, 1]: (node, weight), exact for polynomials of degree 5.
-pub(super) const GAUSS_LEGENDRE_3: [(f64, f64); 3] = [
-    (0.112_701_665_379_258_3, 5.0 / 18.0),
-    (0.5, 8.0 / 18.0),
-    (0.887_298_334_620_741_7, 5.0 / 18.0),
-];
-
-/// The quintic through a coordinate's `[q, q', q'']` at both ends of a step of `h` seconds,
-/// at the fraction `s` of the step: its value and its rate.
-pub(super) fn hermite(start: [f64; 3], end: [f64; 3], h: f64, s: f64) -> (f64, f64) {
-    let (s2, s3, s4, s5) = (s * s, s * s * s, s.powi(4), s.powi(5));
-    let value = [
-        1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,
-        s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
-        0.5 * (s2 - 3.0 * s3 + 3.0 * s4 - s5),
-        10.0 * s3 - 15.0 * s4 + 6.0 * s5,
-        -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
-        0.5 * (s3 - 2.0 * s4 + s5),
-    ];
-    let slope = [
-        -30.0 * s2 + 60.0 * s3 - 30.0 * s4,
-        1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
-        0.5 * (2.0 * s - 9.0 * s2 + 12.0 * s3 - 5.0 * s4),
-        30.0 * s2 - 60.0 * s3 + 30.0 * s4,
-        -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
-        0.5 * (3.0 * s2 - 8.0 * s3 + 5.0 * s4),
-    ];
-    let data = [
-        start[0],
-        h * start[1],
-        h * h * start[2],
-        end[0],
-        h * end[1],
-        h * h * end[2],
-    ];
-    let dot = |basis: [f64; 6]| basis.iter().zip(&data).map(|(b, d)| b * d).sum::<f64>();
-    (dot(value), dot(slope) / h)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{hermite, GAUSS_LEGENDRE_3};
-
-    #[test]
-    fn the_quintic_through_the_ends_is_exact_for_a_quintic() {
-        // p(t) = t^5 - 2 t^2 + 1 on [0.3, 0.8]
-        let p = |t: f64| {
-            [
-                t.powi(5) - 2.0 * t * t + 1.0,
-                5.0 * t.powi(4) - 4.0 * t,
-                20.0 * t.powi(3) - 4.0,
-            ]
-        };
-        let (t0, t1) = (0.3, 0.8);
-        for s in [0.0, 0.25, 0.6, 1.0] {
-            let t = t0 + s * (t1 - t0);
-            let (value, rate) = hermite(p(t0), p(t1), t1 - t0, s);
-            assert!((value - p(t)[0]).abs() < 1e-13, "value at {t}");
-            assert!((rate - p(t)[1]).abs() < 1e-12, "rate at {t}");
-        }
-    }
-
-    #[test]
-    fn gauss_legendre_integrates_a_quintic_exactly() {
-        // ∫₀¹ (6 s^5 + s^2) ds = 1 + 1/3
-        let integral: f64 = GAUSS_LEGENDRE_3
-            .iter()
-            .map(|(s, w)| w * (6.0 * s.powi(5) + s * s))
-            .sum();
-        assert!((integral - 4.0 / 3.0).abs() < 1e-14);
-    }
 }

@@ -5,9 +5,9 @@
 //! checks.
 
 use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
-use super::constraint_checks::{hermite, GAUSS_LEGENDRE_3};
 use super::inputs::state_symbols;
 use super::simulate::Trajectory;
+use super::work_along::{work_along, Imbalance};
 use crate::mechanics::{Form, Model, Vector};
 use crate::plan::{ActionKind, Source};
 use crate::problem::{LoadKind, Problem};
@@ -101,50 +101,23 @@ pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>>
         program.run(&inputs, &mut scratch, &mut out);
         out[0]
     };
-    let rows = &trajectory.rows;
-    let mut work = vec![0.0; rows.len()];
-    for i in 1..rows.len() {
-        let (before, after) = (&rows[i - 1], &rows[i]);
-        let h = after[0] - before[0];
-        let mut interval = 0.0;
-        for (s, weight) in GAUSS_LEGENDRE_3 {
-            let at = |row: &[f64], c: &[usize; 3]| [row[c[0]], row[c[1]], row[c[2]]];
-            let state: Vec<(f64, f64)> = (columns.iter())
-                .map(|c| hermite(at(before, c), at(after, c), h, s))
-                .collect();
-            interval += weight * power_at(before[0] + s * h, &state);
-        }
-        work[i] = work[i - 1] + h * interval;
-    }
+    let work = work_along(&trajectory.rows, &columns, |t, state| {
+        Some(power_at(t, state))
+    })?;
     work.iter().all(|w| w.is_finite()).then_some(work)
 }
 
 /// The largest `|E(t) − E(0) − W(t)|` over the rows, with its time: what the energy
 /// balance with the applied loads leaves.
 pub fn largest_imbalance(trajectory: &Trajectory, work: &[f64]) -> Option<(f64, f64)> {
-    let total = trajectory.column("total")?;
-    let first = trajectory.rows.first()?[total];
-    let (mut worst, mut at) = (0.0f64, 0.0);
-    for (row, w) in trajectory.rows.iter().zip(work) {
-        let error = (row[total] - first - w).abs();
-        if error > worst || error.is_nan() {
-            (worst, at) = (error, row[0]);
-        }
-    }
-    Some((worst, at))
+    Imbalance::of(trajectory, work).map(|i| (i.worst, i.at))
 }
 
 /// The energy balance with the applied forces and couples: `E(t) − E(0) = W(t)` along the
 /// run, relative to the larger of the kinetic energy and the work.
 pub fn load_work_check(problem: &Problem, trajectory: &Trajectory) -> Option<Check> {
     let work = load_work(problem, trajectory)?;
-    let kinetic = trajectory.column("kinetic")?;
-    let (worst, at) = largest_imbalance(trajectory, &work)?;
-    let scale = (trajectory.rows.iter())
-        .map(|r| r[kinetic].abs())
-        .chain(work.iter().map(|w| w.abs()))
-        .fold(0.0f64, f64::max)
-        .max(f64::MIN_POSITIVE);
+    let Imbalance { worst, at, scale } = Imbalance::of(trajectory, &work)?;
     Some(Check::new(
         CheckKind::EnergyBalanceWithLoads,
         worst / scale,

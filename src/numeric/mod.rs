@@ -36,6 +36,7 @@ mod stability_edge;
 mod steady;
 mod system;
 mod vector_value;
+mod work_along;
 
 pub use answer_frame::{
     reaction_frame, reaction_frame_named, rotation_between as answer_frame_rotation,

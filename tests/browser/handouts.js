@@ -2,7 +2,8 @@
 // tests/handouts_in_browser.rs and tests/draw/browser.rs:  node handouts.js MODE ARGS...; exits 0 when every check passes
 // and prints what failed otherwise.
 //   texts FILE...             no text node of any page (HTML or SVG) shows a literal ^, _ or ˆ
-//   overdots HTML...          every dot over a letter is inked, above its letter and unclipped,
+//   overdots HTML...          every dot over a letter is inked, above its letter, clear of its
+//                             ink and unclipped,
 //                             and q, q̇, q̈ differ where they stand in fractions and brackets
 //   friction EXPECTED FILE... the arrow labelled one of EXPECTED.labels (or EXPECTED.label) points along EXPECTED.page
 //                             (a unit vector on the page, y downward) in every picture of FILE
@@ -126,6 +127,64 @@ async function ink(page, boxes) {
   return shares;
 }
 
+// For each dotted letter, the white rows between the lowest ink of its dots and the highest
+// ink of its letter, in the column the dots stand over: three screenshots of the page, with
+// the dots hidden, the letters hidden and both hidden, so what else is drawn there (a
+// fraction's bar, a neighbour) is not counted. `null` where either has no ink there.
+async function clearances(page, found) {
+  // Across, only where the dots stand over the letter: a neighbour's accent may reach into
+  // the dots' own box.
+  const boxes = found.map((d) => {
+    const [x, y, w, h] = d.dot;
+    const [bx, by, bw, bh] = d.base;
+    const [left, right] = [Math.max(x, bx), Math.min(x + w, bx + bw)];
+    const top = Math.min(y, by);
+    return [left, top, Math.max(1, right - left), Math.max(y + h, by + bh) - top];
+  });
+  // One screenshot of the whole page, cut into the boxes in the page itself.
+  const masks = async (css) => {
+    const style = await page.addStyleTag({ content: css });
+    const shot = (await page.screenshot({ fullPage: true })).toString('base64');
+    await style.evaluate((e) => e.remove());
+    return page.evaluate(async ([data, boxes]) => {
+      const img = new Image();
+      img.src = 'data:image/png;base64,' + data;
+      await img.decode();
+      const canvas = document.createElement('canvas');
+      canvas.width = img.width; canvas.height = img.height;
+      const ctx = canvas.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      return boxes.map(([x, y, w, h]) => {
+        const [x0, y0] = [Math.max(0, Math.floor(x)), Math.max(0, Math.floor(y))];
+        const [cw, ch] = [Math.max(1, Math.ceil(w)), Math.max(1, Math.ceil(h))];
+        const px = ctx.getImageData(x0, y0, cw, ch).data;
+        const rows = [];
+        for (let r = 0; r < ch; r += 1) {
+          const row = [];
+          for (let c = 0; c < cw; c += 1) {
+            const k = 4 * (r * cw + c);
+            row.push(px[k] + px[k + 1] + px[k + 2] < 3 * 200 ? 1 : 0);
+          }
+          rows.push(row);
+        }
+        return rows;
+      });
+    }, [shot, boxes]);
+  };
+  const hideDots = 'mover > :nth-child(2) { visibility: hidden !important; }';
+  const hideLetters = 'mover > :first-child { visibility: hidden !important; }';
+  const [letters, marks, neither] = [await masks(hideDots), await masks(hideLetters), await masks(hideDots + hideLetters)];
+  return boxes.map((_, k) => {
+    const own = (m) => m[k].map((row, r) => row.some((v, c) => v && !neither[k][r][c]));
+    const letterRows = own(letters);
+    const dotRows = own(marks);
+    const letterTop = letterRows.indexOf(true);
+    const dotBottom = dotRows.lastIndexOf(true);
+    if (letterTop < 0 || dotBottom < 0) return null;
+    return letterTop - dotBottom - 1;
+  });
+}
+
 async function overdots(files) {
   await each(files, async (page, file) => {
     const dots = await page.evaluate(measureDots);
@@ -157,6 +216,17 @@ async function overdots(files) {
     };
     const [one, two] = [mean(1), mean(2)];
     if (one !== null && two !== null) check(two > one, `${file}: two dots have more ink than one (${two} > ${one})`);
+    // The dots clear of their letter: a row of white between the dots' ink and the letter's.
+    const near = dots.filter((d) => !d.clipped);
+    const gaps = await clearances(page, near);
+    let touching = 0;
+    near.forEach((d, k) => {
+      if (gaps[k] !== null && gaps[k] < 1) {
+        touching += 1;
+        if (touching <= 5) check(false, `${file}: the dots of ${d.letter} touch it (${gaps[k]} px apart)`);
+      }
+    });
+    check(touching === 0, `${file}: ${near.length} dotted letters, their dots clear of the letter (${touching} not)`);
   });
 }
 
