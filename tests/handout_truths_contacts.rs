@@ -18,7 +18,10 @@ fn svg_after<'t>(text: &'t str, from: &str) -> &'t str {
 /// The number after `name="` in `element`.
 fn attribute(element: &str, name: &str) -> f64 {
     let key = format!("{name}=\"");
-    let at = element.find(&key).unwrap_or_else(|| panic!("{key} in {element}")) + key.len();
+    let at = element
+        .find(&key)
+        .unwrap_or_else(|| panic!("{key} in {element}"))
+        + key.len();
     let end = element[at..].find('"').expect("closing quote") + at;
     element[at..end].parse().expect("a number")
 }
@@ -38,7 +41,10 @@ fn a_smooth_wall_holds_only_the_normal_component_and_nothing_rolls() {
         ),
         "{step1}"
     );
-    assert!(!step1.contains("\\hat{\\mathbf{n}}_{y} = \\mathbf{0}"), "{step1}");
+    assert!(
+        !step1.contains("\\hat{\\mathbf{n}}_{y} = \\mathbf{0}"),
+        "{step1}"
+    );
     // A rolling disc still gets the whole vector.
     let coin = handout("rolling-coin", "lagrange");
     assert!(coin.contains("Rolling without slipping"), "{coin}");
@@ -63,7 +69,11 @@ fn the_sliding_law_is_the_sizes_then_the_signs_of_this_state() {
     let normal: f64 = m * g - p * beta.sin();
     assert!((normal + 3.04575).abs() < 1e-5, "{normal}");
     assert!(
-        step5.contains(&format!("{:.6}", mu * normal.abs()).trim_end_matches('0').to_string()),
+        step5.contains(
+            &format!("{:.6}", mu * normal.abs())
+                .trim_end_matches('0')
+                .to_string()
+        ),
         "{step5}"
     );
     assert!(
@@ -72,11 +82,16 @@ fn the_sliding_law_is_the_sizes_then_the_signs_of_this_state() {
         ),
         "{step5}"
     );
-    assert!(!step5.contains("its sign from the slip's direction"), "{step5}");
+    assert!(
+        !step5.contains("its sign from the slip's direction"),
+        "{step5}"
+    );
     // The ladder's floor pushes up: the same rule gives F_x = −μ F_y there.
     let ladder = handout("ladder-about-to-slip", "motion-law");
     assert!(
-        ladder.contains("F^{P}_{x} < 0,\\ F^{P}_{y} > 0 \\quad \\Rightarrow \\quad F^{P}_{x} = -\\mu F^{P}_{y}"),
+        ladder.contains(
+            "F^{P}_{x} < 0,\\ F^{P}_{y} > 0 \\quad \\Rightarrow \\quad F^{P}_{x} = -\\mu F^{P}_{y}"
+        ),
         "{ladder}"
     );
 }
@@ -86,7 +101,10 @@ fn the_rod_exerts_the_collars_force_and_the_side_it_bears_on_is_said() {
     let text = handout("collar-on-rough-rod", "kane");
     let answers = between(&text, "## Answers", "\u{0}");
     assert!(!answers.contains("the ground exerts"), "{answers}");
-    assert!(answers.contains("On the collar, the rod exerts sliding friction"), "{answers}");
+    assert!(
+        answers.contains("On the collar, the rod exerts sliding friction"),
+        "{answers}"
+    );
     // Pushed down by the rod, the collar presses up on the rod's underside.
     assert!(answers.contains("bears on the underside"), "{answers}");
     // β is given in degrees by the statement: printed so beside its radians.
@@ -103,9 +121,15 @@ fn the_ladder_answers_whether_friction_can_hold_it() {
     assert!(needed > mu * m * g, "{needed}");
     let text = handout("ladder-about-to-slip", "motion-law");
     let answers = between(&text, "## Answers", "\u{0}");
-    assert!(answers.contains("Friction cannot hold the ladder at rest"), "{answers}");
+    assert!(
+        answers.contains("Friction cannot hold the ladder at rest"),
+        "{answers}"
+    );
     let step5 = between(&text, "## Step 5", "## Step 6");
-    assert!(step5.contains(&format!("{:.4}", needed)), "{needed} in {step5}");
+    assert!(
+        step5.contains(&format!("{:.4}", needed)),
+        "{needed} in {step5}"
+    );
 }
 
 #[test]
@@ -119,14 +143,32 @@ fn the_impact_names_only_what_the_problem_has_and_solves_in_symbols() {
     assert!(!impact.contains("\\cos(\\theta)"), "{impact}");
     // Δẏ = J/m = 1.5 m/s and Δθ̇ = 6J/(mL) = 7.5 rad/s, in symbols then in numbers.
     let (m, l, j) = (2.0, 1.2, 3.0);
-    assert!(impact.contains("\\Delta \\dot{y} = \\frac{J}{m}"), "{impact}");
-    assert!(impact.contains("\\Delta \\dot{\\theta} = \\frac{6 J}{L m}"), "{impact}");
-    assert!(impact.contains(&format!("\\dot{{y}}^{{+}} = {}", j / m)), "{impact}");
-    assert!(impact.contains(&format!("\\dot{{\\theta}}^{{+}} = {}", 6.0 * j / (m * l))), "{impact}");
+    assert!(
+        impact.contains("\\Delta \\dot{y} = \\frac{J}{m}"),
+        "{impact}"
+    );
+    assert!(
+        impact.contains("\\Delta \\dot{\\theta} = \\frac{6 J}{L m}"),
+        "{impact}"
+    );
+    assert!(
+        impact.contains(&format!("\\dot{{y}}^{{+}} = {}", j / m)),
+        "{impact}"
+    );
+    assert!(
+        impact.contains(&format!("\\dot{{\\theta}}^{{+}} = {}", 6.0 * j / (m * l))),
+        "{impact}"
+    );
     // The kinetic energy asked is an answer: T = 2 J²/m = 9 J.
     let answers = between(&text, "## Answers", "\u{0}");
-    assert!(answers.contains("\\dot{x} = 0\\ \\mathrm{m/s}"), "{answers}");
-    assert!(answers.contains(&format!("{}\\ \\mathrm{{J}}", 2.0 * j * j / m)), "{answers}");
+    assert!(
+        answers.contains("\\dot{x} = 0\\ \\mathrm{m/s}"),
+        "{answers}"
+    );
+    assert!(
+        answers.contains(&format!("{}\\ \\mathrm{{J}}", 2.0 * j * j / m)),
+        "{answers}"
+    );
     // No software notation for a direction.
     assert!(!text.contains("N.x"), "{text}");
 }
@@ -137,13 +179,23 @@ fn the_ladder_angle_is_drawn_from_the_vertical_and_its_surfaces_are_drawn() {
     let svg = svg_after(&text, "## Step 1");
     // The dashed line the θ arc starts from leaves the mass centre straight up.
     let cm = between(svg, "id=\"configuration-cm-L\"", "/>");
-    let (cx, cy) = (attribute(cm, "cx"), attribute(cm, "cy"));
+    // Paths round their coordinates to a tenth.
+    let short = |x: f64| format!("{x:.1}").trim_end_matches(".0").to_string();
+    let (cx, cy) = (short(attribute(cm, "cx")), short(attribute(cm, "cy")));
     let up = format!("M{cx} {cy}l0-");
     assert!(
-        svg.lines().any(|l| l.contains(&up) && l.contains("stroke-dasharray")),
+        svg.lines()
+            .any(|l| l.contains(&up) && l.contains("stroke-dasharray")),
         "{up} in {svg}"
     );
-    assert!(!svg.contains(&format!("M{cx} {cy}l4")), "{svg}");
+    // Not from the horizontal through it, as before.
+    assert!(
+        !svg.lines()
+            .any(|l| l.contains(&format!("M{cx} {cy}l4")) && l.contains("dasharray")),
+        "{svg}"
+    );
+    // The wall and the floor the ladder touches are drawn.
+    assert_eq!(svg.matches("<g class=\"ground\">").count(), 2, "{svg}");
 }
 
 #[test]
@@ -151,4 +203,32 @@ fn the_collar_picture_labels_no_angle_that_is_held_at_zero() {
     let text = handout("collar-on-rough-rod", "kane");
     let svg = svg_after(&text, "## Step 1");
     assert!(!svg.contains(">θ</text>"), "{svg}");
+    // The fixed rod it slides on is drawn through it and out past both its sides, a plain
+    // line (not hatched ground) at the height of its centre.
+    let block = between(svg, "data-shape=\"block\"", "</g>");
+    let outline = between(block, "d=\"M", "z");
+    let width: f64 = between(outline, "l", " ")[1..]
+        .parse()
+        .expect("the block's width");
+    let cm = between(svg, "id=\"configuration-cm-C\"", "/>");
+    let cy = format!("{:.1}", attribute(cm, "cy"));
+    let rod = svg
+        .lines()
+        .filter_map(|l| l.strip_prefix("<path d=\"M"))
+        .filter_map(|l| l.split_once('l'))
+        .find(|(start, rest)| start.ends_with(&format!(" {cy}")) && rest.contains(" 0\""))
+        .unwrap_or_else(|| panic!("a rod through y = {cy} in {svg}"));
+    let length: f64 = rod.1.split(' ').next().unwrap().parse().unwrap();
+    assert!(length > 1.5 * width, "{length} {width}");
+    assert_eq!(svg.matches("<g class=\"ground\">").count(), 0, "{svg}");
+}
+
+#[test]
+fn the_struck_rod_shows_its_blow() {
+    let text = handout("impact-struck-rod", "motion-law");
+    let svg = svg_after(&text, "## Step 1");
+    // J acts up at the end toward +n̂x: the arrow's label is J, at the rod's right end.
+    assert!(svg.contains("data-label=\"J\""), "{svg}");
+    let statement = between(&text, "# ", "## Step 1");
+    assert!(statement.contains("right end"), "{statement}");
 }

@@ -32,7 +32,11 @@ pub fn loops(derivation: &Derivation) -> Vec<(String, String)> {
         }
         if rolls(model, k) {
             if let Some(display) = contact_display(model, k) {
-                let lead = if rolled == 0 { ROLLING_LEAD } else { "Likewise at the next contact:" };
+                let lead = if rolled == 0 {
+                    ROLLING_LEAD
+                } else {
+                    "Likewise at the next contact:"
+                };
                 rolled += 1;
                 out.push((lead.to_string(), display));
             }

@@ -350,9 +350,9 @@ fn rod_side(at: &At, forces: &[Found], kinds: &[Kind], (on, by): (&str, &str)) -
 /// `the rod` → `The rod`.
 fn capital(words: &str) -> String {
     let mut chars = words.chars();
-    chars.next().map_or_else(String::new, |c| {
-        c.to_uppercase().chain(chars).collect()
-    })
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// The unit normal of a contact site along `N`'s unit vectors: the plane's normal as the

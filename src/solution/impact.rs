@@ -52,7 +52,11 @@ fn intro(method: Method, model: &crate::mechanics::Model) -> String {
     let problem = model.problem;
     let mut finite = Vec::new();
     if problem.gravity.is_some() {
-        finite.push(if problem.bodies.len() > 1 { "the weights" } else { "the weight" });
+        finite.push(if problem.bodies.len() > 1 {
+            "the weights"
+        } else {
+            "the weight"
+        });
     }
     let loads = |f: fn(&LoadKind) -> bool| problem.loads.iter().any(|l| f(&l.kind));
     if loads(|k| matches!(k, LoadKind::Spring { .. } | LoadKind::JointSpring { .. })) {
@@ -87,11 +91,16 @@ fn intro(method: Method, model: &crate::mechanics::Model) -> String {
     } else {
         format!("{sources} their impulses")
     };
-    let reaction = if reactions { " each reaction its impulse (a hat marks an impulse)," } else { "" };
+    let reaction = if reactions {
+        " each reaction its impulse (a hat marks an impulse),"
+    } else {
+        ""
+    };
     let common = format!("The impact lasts an instant: the configuration does not change and {finite}. Integrated over that instant, each row of step 5 becomes an impulse–momentum equation: each second derivative becomes the jump Δ of its rate (after less before),{reaction} {each}, and the velocity terms drop out.");
-    let pin = problem.joints.iter().any(|j| {
-        j.kind == JointKind::Revolute && j.parent == crate::problem::BodyId::GROUND
-    });
+    let pin = problem
+        .joints
+        .iter()
+        .any(|j| j.kind == JointKind::Revolute && j.parent == crate::problem::BodyId::GROUND);
     let own = match method {
         Method::MotionLaw if !reactions => format!(" By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; no reaction acts, so the jumps come from {sources} alone."),
         Method::MotionLaw => format!(" By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; about a point where the impulsive reactions meet{} no reaction appears, and the jumps come from {sources} alone.", if pin { " (the fixed pin)" } else { "" }),

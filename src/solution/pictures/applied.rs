@@ -45,7 +45,9 @@ impl Setting<'_, '_, '_> {
             };
             let at = match &blow.point {
                 ForcePoint::Point(p) => n.vector(&self.derivation.model.position(*p)),
-                ForcePoint::Offset(v) => n.point_on(blow.body, &n.local(&own_components(v, blow.body))),
+                ForcePoint::Offset(v) => {
+                    n.point_on(blow.body, &n.local(&own_components(v, blow.body)))
+                }
             };
             let direction = n.vector(&vector_of(linear));
             if super::numbers::norm(direction) < 1e-12 {

@@ -89,8 +89,8 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
                 }
                 // An angle the constraints hold at zero (a collar on its rod) has no arc:
                 // its label alone would name whatever is drawn beside it.
-                let held = problem.coordinates[joint.coordinates[2]].dependent
-                    && value(2).abs() < 1e-9;
+                let held =
+                    problem.coordinates[joint.coordinates[2]].dependent && value(2).abs() < 1e-9;
                 push(
                     2,
                     (!held).then(|| Gauge::Angle {
@@ -122,7 +122,10 @@ fn planar_from(n: &Numbers, child: BodyId, x: P3, y: P3) -> P3 {
     let line = shapes::key_points(n, child)
         .into_iter()
         .map(|p| sub(p, center))
-        .fold([0.0; 3], |best, p| if norm(p) > norm(best) { p } else { best });
+        .fold(
+            [0.0; 3],
+            |best, p| if norm(p) > norm(best) { p } else { best },
+        );
     if line[1].abs() > line[0].abs() {
         y
     } else {
