@@ -425,7 +425,7 @@ fn step_6s_plot_titles_say_what_is_plotted() {
         &["--method", "motion-law", "--format", "latex"],
     );
     assert!(
-        disc.contains("Energy against time (T at most "),
+        disc.contains("Energy against time (T stays below "),
         "no range of T"
     );
     let pendulum = explain(

@@ -27,6 +27,7 @@ mod handout_pages;
 mod handout_quotes;
 mod handout_sentences;
 mod handout_truths;
+mod handout_truths_contacts;
 mod handout_truths_words;
 mod handout_words_read;
 mod handouts_in_browser;

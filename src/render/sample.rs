@@ -61,7 +61,7 @@ pub fn sample() -> Solution {
         constraint_notes: Vec::new(),
         closure_loops: Vec::new(),
         contact_loops: Vec::new(),
-        contact_loops_lead: String::new(),
+        contact_leads: Vec::new(),
         solve_notes: Vec::new(),
         matrix_names: Default::default(),
         free_bodies: free_bodies(),

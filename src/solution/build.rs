@@ -145,13 +145,25 @@ fn coordinates(problem: &Problem, shown: &[(String, String)]) -> Vec<Coordinate>
         .collect()
 }
 
+/// A constant's value; an angle in radians that is a whole number of degrees (as a
+/// statement gives it) also in degrees: `0.698132 (40°)`.
+fn with_degrees(value: f64, unit: Option<&str>) -> String {
+    let degrees = value.to_degrees();
+    let whole = degrees.round();
+    if unit == Some("rad") && whole != 0.0 && (degrees - whole).abs() < 1e-9 {
+        format!("{} ({whole}°)", fixed(value))
+    } else {
+        fixed(value)
+    }
+}
+
 fn constants(problem: &Problem) -> Vec<Constant> {
     problem
         .constants
         .iter()
         .map(|c| Constant {
             name_tex: Math::from(latex_name(&c.name)),
-            value: fixed(c.value),
+            value: with_degrees(c.value, c.unit.as_deref()),
             unit_tex: Math::from(crate::render::unit_tex(
                 c.unit.as_deref().unwrap_or_default(),
             )),

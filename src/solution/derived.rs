@@ -32,8 +32,9 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         (solution.constraints, constraint_notes) = super::constrained::constraints(derivation);
         solution.constraint_notes = MarkupLine::all(constraint_notes);
         solution.closure_loops = Math::all(super::closure_loops::loops(derivation));
-        solution.contact_loops = Math::all(super::contact_loops::loops(derivation));
-        solution.contact_loops_lead = super::contact_loops::lead(derivation);
+        let contacts = super::contact_loops::loops(derivation);
+        solution.contact_leads = contacts.iter().map(|(lead, _)| lead.clone()).collect();
+        solution.contact_loops = Math::all(contacts.into_iter().map(|(_, l)| l).collect());
         solution.solve_notes = MarkupLine::all(super::solve_words::notes(derivation));
         solution.free_bodies = super::free_bodies::free_bodies(derivation);
         solution.lagrange = super::lagrange::view(derivation);

@@ -193,8 +193,21 @@ fn sentence(
         false => "",
     };
     let when = if at.moving { ", at this instant" } else { "" };
+    // Sliding from rest: the answer to whether friction can hold it comes first.
+    let held = match kinds.contains(&Kind::Friction { sliding: true }) && !at.moving {
+        true => format!(
+            "Friction cannot hold {on} at rest: sticking would need more than μ times the normal force (the check in step 5), so it slides. "
+        ),
+        false => String::new(),
+    };
+    let side = match site.kind {
+        SiteKind::Closure(_) if kinds.contains(&Kind::Normal) => {
+            rod_side(at, forces, &kinds, (&on, &by))
+        }
+        _ => String::new(),
+    };
     format!(
-        "On {on}{point}, {by} exerts {}{when}.{teeth}",
+        "{held}On {on}{point}, {by} exerts {}{when}.{teeth}{side}",
         join_and(&parts)
     )
 }
@@ -216,10 +229,11 @@ fn is_letter(name: &str) -> bool {
 }
 
 /// The body that exerts the site's reaction: the parent, or for a contact with the ground
-/// named by a word, the surface by its name ("the lane", "the floor").
+/// named by a word, the surface by its name ("the lane", "the floor"), and likewise a
+/// closure with the ground named by a word ("the rod" a collar slides on).
 fn exerter(problem: &Problem, site: &Site) -> String {
     let surface = site.parent == BodyId::GROUND
-        && matches!(site.kind, SiteKind::Contact(_))
+        && matches!(site.kind, SiteKind::Contact(_) | SiteKind::Closure(_))
         && !is_letter(&site.name)
         && site.name != "contact";
     match surface {
@@ -246,6 +260,9 @@ fn sense(at: &At, frame: &str, axis: usize, value: f64) -> String {
 /// What component `axis` of the answer is at `site`: along a contact's normal, along its
 /// tangent (friction, or a tooth force where teeth mesh), or a pin's force.
 fn kind(problem: &Problem, site: &Site, at: &At, axis: usize, forces: &[Found]) -> Kind {
+    if let SiteKind::Closure(k) = site.kind {
+        return rod_kind(problem, k, at, axis, forces);
+    }
     let SiteKind::Contact(k) = site.kind else {
         return Kind::Force;
     };
@@ -274,6 +291,68 @@ fn kind(problem: &Problem, site: &Site, at: &At, axis: usize, forces: &[Found]) 
         .and_then(|c| c.friction.as_ref())
         .is_some_and(|mu| reaches_limit(eval(mu, &at.values), n, at, forces));
     Kind::Friction { sliding }
+}
+
+/// The fixed rod of a rough prismatic closure with the ground in the plane, which a collar
+/// slides on: along it friction, across it in the plane the normal force.
+fn rod_axis(problem: &Problem, k: usize, at: &At) -> Option<(f64, [f64; 3])> {
+    let closure = problem.closures.get(k)?;
+    let rough = closure.kind == crate::problem::JointKind::Prismatic
+        && closure.parent == BodyId::GROUND
+        && problem.dimension == Dimension::Two;
+    let mu = eval(closure.friction.as_ref().filter(|_| rough)?, &at.values);
+    let a = at.in_ground(&crate::mechanics::vector_of(closure.axis.as_ref()?));
+    let size = norm(a);
+    (size > 1e-12).then(|| (mu, a.map(|x| x / size)))
+}
+
+/// What component `axis` of a closure's reaction is: friction or the normal force on a
+/// rough rod (see [`rod_axis`]), else a slider's force.
+fn rod_kind(problem: &Problem, k: usize, at: &At, axis: usize, forces: &[Found]) -> Kind {
+    let Some((mu, a)) = rod_axis(problem, k, at) else {
+        return Kind::Force;
+    };
+    let u = at.unit_in_ground(axis);
+    let along = dot(u, a);
+    let n = [-a[1], a[0], 0.0];
+    match along.abs() {
+        x if x > ALIGNED => Kind::Friction {
+            sliding: reaches_limit(mu, n, at, forces),
+        },
+        x if x < 1.0 - ALIGNED && u[2].abs() < 1.0 - ALIGNED => Kind::Normal,
+        _ => Kind::Force,
+    }
+}
+
+/// Which side of a horizontal rod the body bears on, by the sense of the rod's vertical
+/// force on it: pushed down, it presses up on the rod's underside.
+fn rod_side(at: &At, forces: &[Found], kinds: &[Kind], (on, by): (&str, &str)) -> String {
+    let Some(up) = at.up else {
+        return String::new();
+    };
+    let vertical: f64 = (forces.iter().zip(kinds))
+        .filter(|(_, k)| **k == Kind::Normal)
+        .map(|(&(axis, value), _)| value * dot(at.unit_in_ground(axis), up))
+        .sum();
+    match vertical {
+        v if v < -ROUND_OFF => format!(
+            " {} pushes {on} down, so {on} presses up against {by} from below: it bears on the underside.",
+            capital(by)
+        ),
+        v if v > ROUND_OFF => format!(
+            " {} pushes {on} up, so {on} presses down on {by} from above: it bears on the top side.",
+            capital(by)
+        ),
+        _ => String::new(),
+    }
+}
+
+/// `the rod` → `The rod`.
+fn capital(words: &str) -> String {
+    let mut chars = words.chars();
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// The unit normal of a contact site along `N`'s unit vectors: the plane's normal as the

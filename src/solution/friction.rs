@@ -37,6 +37,14 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
             };
             let slider = site.site < model.problem.joints.len() + model.problem.closures.len();
             let noun = if slider { "slider" } else { "contact" };
+            // Only a disc rolls: a point that touches a plane (a ladder's foot) sticks.
+            let disc = match model.sites[site.site].kind {
+                crate::mechanics::SiteKind::Contact(k) => matches!(
+                    model.problem.constraints.get(k).map(|c| &c.kind),
+                    Some(crate::problem::ConstraintKind::Rolling { .. })
+                ),
+                _ => false,
+            };
             let rows: Vec<String> = site
                 .stick
                 .iter()
@@ -52,7 +60,7 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
                 .collect();
             let rows = rows.join(" and ");
             let mu = latex(&site.coefficient);
-            let steps = steps(state, &names, (&normal, &size, noun), &rows, &mu);
+            let steps = steps(state, &names, (&normal, &size, noun), &rows, (&mu, disc));
             FrictionView {
                 site: super::force_labels::place(&site.name),
                 coefficient: fixed(state.coefficient),
@@ -99,6 +107,12 @@ fn magnitude_tex(names: &[String]) -> String {
 fn law_tex(names: &[String], normal: &str, mu: &str, state: &SiteState) -> String {
     let force = state.friction().max(f64::MIN_POSITIVE);
     let sign = if state.normal < 0.0 { -1.0 } else { 1.0 };
+    if let ([name], [t]) = (names, &state.tangential[..]) {
+        if !normal.contains("\\sqrt") && state.friction() > 0.0 {
+            // In the plane: the sizes, then the signs at this state, then the signed law.
+            return super::sliding_rows::sized_law_tex(name, normal, mu, (t.signum(), sign));
+        }
+    }
     names
         .iter()
         .zip(&state.tangential)
@@ -120,10 +134,10 @@ fn steps(
     names: &[String],
     (normal, size, noun): (&str, &str, &str),
     rows: &str,
-    mu: &str,
+    (mu, disc): (&str, bool),
 ) -> Vec<FrictionStep> {
     let magnitude = magnitude_tex(names);
-    let wheel = if noun == "contact" {
+    let wheel = if disc {
         " (a wheel: that it rolls without slipping)"
     } else {
         ""

@@ -19,7 +19,7 @@ pub fn section(worked: &Worked) -> Option<ImpactSection> {
     let solution = &impact.solution;
     let problem = worked.derivation.model.problem;
     let method = worked.derivation.method;
-    let mut steps = vec![text(intro(method))];
+    let mut steps = vec![text(intro(method, &worked.derivation.model))];
     match impact.equations.as_ref()? {
         Ok(derivation) => steps.extend(rows(derivation)),
         Err(e) => steps.push(text(format!(
@@ -45,16 +45,79 @@ fn text(sentence: String) -> ImpactStep {
     }
 }
 
-/// What the chosen method's rows become over the impact.
-fn intro(method: Method) -> String {
-    let common = "The impact lasts an instant: the configuration does not change and the finite forces (the weights, the springs) give no impulse. Integrated over that instant, each row of step 5 becomes an impulse–momentum equation: each second derivative becomes the jump Δ of its rate (after less before), each reaction its impulse (a hat marks an impulse), each blow and the collision its impulse, and the velocity terms drop out.";
+/// What the chosen method's rows become over the impact, naming only what the problem has:
+/// its finite forces, its reactions, its blows and its collision.
+fn intro(method: Method, model: &crate::mechanics::Model) -> String {
+    use crate::problem::{JointKind, LoadKind};
+    let problem = model.problem;
+    let mut finite = Vec::new();
+    if problem.gravity.is_some() {
+        finite.push(if problem.bodies.len() > 1 {
+            "the weights"
+        } else {
+            "the weight"
+        });
+    }
+    let loads = |f: fn(&LoadKind) -> bool| problem.loads.iter().any(|l| f(&l.kind));
+    if loads(|k| matches!(k, LoadKind::Spring { .. } | LoadKind::JointSpring { .. })) {
+        finite.push("the springs");
+    }
+    if loads(|k| matches!(k, LoadKind::Damper { .. } | LoadKind::JointDamper { .. })) {
+        finite.push("the dampers");
+    }
+    if loads(|k| matches!(k, LoadKind::Force { .. } | LoadKind::Torque { .. })) {
+        finite.push("the applied loads");
+    }
+    let finite = match finite.as_slice() {
+        [] => "the finite forces give no impulse".to_string(),
+        list => format!("the finite forces ({}) give no impulse", and_list(list)),
+    };
+    let impact = problem.impact.as_ref();
+    let blows = impact.map_or(0, |i| i.impulses.len());
+    let collision = impact.is_some_and(|i| i.collision.is_some());
+    let mut sources = Vec::new();
+    match blows {
+        0 => {}
+        1 => sources.push("the blow"),
+        _ => sources.push("the blows"),
+    }
+    if collision {
+        sources.push("the collision");
+    }
+    let sources = and_list(&sources);
+    let reactions = model.sites.iter().any(|s| !s.reactions.is_empty());
+    let each = if blows + usize::from(collision) == 1 {
+        format!("{sources} its impulse")
+    } else {
+        format!("{sources} their impulses")
+    };
+    let reaction = if reactions {
+        " each reaction its impulse (a hat marks an impulse),"
+    } else {
+        ""
+    };
+    let common = format!("The impact lasts an instant: the configuration does not change and {finite}. Integrated over that instant, each row of step 5 becomes an impulse–momentum equation: each second derivative becomes the jump Δ of its rate (after less before),{reaction} {each}, and the velocity terms drop out.");
+    let pin = problem
+        .joints
+        .iter()
+        .any(|j| j.kind == JointKind::Revolute && j.parent == crate::problem::BodyId::GROUND);
     let own = match method {
-        Method::MotionLaw => " By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; about a point where the impulsive reactions meet (a pin of a struck pendulum) no reaction appears, and the jumps come from the blows alone.",
-        Method::NewtonEuler => " By Newton–Euler, the linear impulse on every body equals the jump m Δv* of its momentum, and the angular impulse about its mass centre the jump of its angular momentum.",
-        Method::Kane => " By Kane's method, each generalized impulse (every impulse dotted with its partial velocity) equals the jump of the generalized momentum, the generalized inertia forces with each second derivative read as the jump of its rate.",
-        Method::Lagrange => " By Lagrange's equations, the jump of each generalized momentum (the derivative of L with respect to a coordinate's rate) equals the generalized impulse of the blows and the collision (each impulse dotted with its partial velocity), the multipliers read as the constraints' impulses.",
+        Method::MotionLaw if !reactions => format!(" By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; no reaction acts, so the jumps come from {sources} alone."),
+        Method::MotionLaw => format!(" By the Motion Law, the angular impulse about a point equals the jump of the angular momentum about it; about a point where the impulsive reactions meet{} no reaction appears, and the jumps come from {sources} alone.", if pin { " (the fixed pin)" } else { "" }),
+        Method::NewtonEuler => " By Newton–Euler, the linear impulse on every body equals the jump m Δv* of its momentum, and the angular impulse about its mass centre the jump of its angular momentum.".to_string(),
+        Method::Kane => " By Kane's method, each generalized impulse (every impulse dotted with its partial velocity) equals the jump of the generalized momentum, the generalized inertia forces with each second derivative read as the jump of its rate.".to_string(),
+        Method::Lagrange => format!(" By Lagrange's equations, the jump of each generalized momentum (the derivative of L with respect to a coordinate's rate) equals the generalized impulse of {sources} (each impulse dotted with its partial velocity){}.", if reactions { ", the multipliers read as the constraints' impulses" } else { "" }),
     };
     format!("{common}{own}")
+}
+
+/// `a`, `a and b`, `a, b and c`.
+fn and_list(items: &[&str]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => (*one).to_string(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    }
 }
 
 /// `\hat{F}^{O}_{x}` from `F^{O}_{x}`: a hat on the leading letter or command.
@@ -92,19 +155,40 @@ fn rows(derivation: &Derivation) -> Vec<ImpactStep> {
     let mut names: Vec<(String, String)> = system.unknowns.iter().map(impulsive_tex).collect();
     // Longest first, so that no name is replaced inside a longer one.
     names.sort_by_key(|(shown, _)| std::cmp::Reverse(shown.len()));
+    // The configuration does not change over the impact: a coordinate that is zero there
+    // is zero in the rows (cos θ = 1 at θ = 0), as a course evaluates them.
+    let problem = derivation.model.problem;
+    let zero_at_impact = |name: &str| {
+        (problem.coordinates.iter()).any(|c| c.name == name && c.initial == 0.0 && !c.dependent)
+    };
     let still = |s: &Symbol| match s {
         Symbol::Coord(_, 1) | Symbol::Speed(_, 0) => Some(Expr::zero()),
+        Symbol::Coord(name, 0) if zero_at_impact(name) => Some(Expr::zero()),
         _ => None,
     };
     let mut steps = Vec::new();
+    let mut solved: Vec<String> = Vec::new();
     for (i, (a, b)) in system.a.iter().zip(&system.b).enumerate() {
         let mut row = -b.clone();
+        let mut present = Vec::new();
         for (coefficient, symbol) in a.iter().zip(&system.unknowns) {
+            let c = crate::symbolic::simplify(&substitute(coefficient, &still));
+            if !c.is_zero() {
+                present.push((c.clone(), symbol));
+            }
             row = row + coefficient.clone() * Expr::sym(symbol.clone());
         }
-        let row = substitute(&row, &still);
+        let row = crate::symbolic::simplify(&substitute(&row, &still));
         if row.is_zero() {
             continue;
+        }
+        if let [(c, symbol)] = present.as_slice() {
+            // One jump in the row: solved for it in symbols.
+            if matches!(symbol, Symbol::Coord(_, 2) | Symbol::Speed(_, 1)) {
+                let rest = row.clone() - c.clone() * Expr::sym((*symbol).clone());
+                let value = crate::symbolic::simplify(&(-rest / c.clone()));
+                solved.push(format!("{} = {}", impulsive_tex(symbol).1, latex(&value)));
+            }
         }
         let mut tex = latex_collected(&row);
         for (shown, jump) in &names {
@@ -119,6 +203,13 @@ fn rows(derivation: &Derivation) -> Vec<ImpactStep> {
             text: format!("Row {},", i + 1),
             heading_tex,
             math_tex: Math(format!("{tex} = 0")),
+        });
+    }
+    if !solved.is_empty() {
+        steps.push(ImpactStep {
+            text: "Each row with one jump, solved for it in symbols:".into(),
+            heading_tex: Math::default(),
+            math_tex: Math(solved.join(", \\qquad ")),
         });
     }
     steps

@@ -79,7 +79,7 @@ fn span(series: &Series) -> (f64, f64) {
 }
 
 /// `Energy against time`, with the largest kinetic energy where its curve lies on the axis
-/// (`T at most 0.031 J`), and what `K` is where `T` names a drive's torque.
+/// (`T stays below 0.031 J, too small to show at this scale`), and what `K` is where `T` names a drive's torque.
 pub fn energy(problem: &Problem, series: &[Series]) -> String {
     let named_t = problem.constants.iter().any(|c| c.name == "T");
     let kinetic = if named_t { "K" } else { "T" };
@@ -98,7 +98,7 @@ pub fn energy(problem: &Problem, series: &[Series]) -> String {
         let hidden = largest > 1e-6 * whole && largest < HIDDEN_SHARE * whole && range > 0.0;
         if hidden {
             notes.push(format!(
-                "{kinetic} at most {} J",
+                "{kinetic} stays below {} J, too small to show at this scale",
                 fixed(two_digits_up(largest))
             ));
         }

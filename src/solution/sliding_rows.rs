@@ -24,6 +24,11 @@ pub struct SlidingRow {
     pub normal: Symbol,
     /// The law as a sum equal to zero: F_t − k μ N, k = ±1 in the plane.
     pub law: Expr,
+    /// In the plane (one tangent), the signs of the friction component and of the normal
+    /// force at the state: what turns |F_t| = μ|N| into the signed law.
+    pub signs: Option<(f64, f64)>,
+    /// The coefficient of friction.
+    pub mu: Expr,
 }
 
 /// The no-slip rows of the contacts that slide at the initial state, each with its sliding
@@ -49,6 +54,9 @@ pub fn sliding_rows(derivation: &Derivation, friction: &[SiteState]) -> Vec<Slid
                 continue;
             };
             let factor = sign * state.tangential.get(k).copied().unwrap_or(0.0) / size;
+            let tangent = state.tangential.get(k).copied().unwrap_or(0.0);
+            let signs = ((factor.abs() - 1.0).abs() < 1e-12 && site.stick.len() == 1)
+                .then(|| (tangent.signum(), sign));
             let factor = match factor {
                 f if (f - 1.0).abs() < 1e-12 => Expr::one(),
                 f if (f + 1.0).abs() < 1e-12 => Expr::int(-1),
@@ -63,6 +71,8 @@ pub fn sliding_rows(derivation: &Derivation, friction: &[SiteState]) -> Vec<Slid
                 friction,
                 normal,
                 law,
+                signs,
+                mu: site.coefficient.clone(),
             });
         }
     }
@@ -75,6 +85,26 @@ pub fn law_tex(row: &SlidingRow) -> String {
     let rest = crate::symbolic::simplify(&(Expr::sym(row.friction.clone()) - row.law.clone()));
     format!("{} = {}", latex(&friction), latex_collected(&rest))
 }
+
+/// The law as a textbook gives it, the sizes `|F_t| = μ|N|`, then the signs of the friction
+/// component (against the slip) and of the normal force at this state, and the signed law
+/// they give: `|F^S_x| = \mu |F^S_y|,\ F^S_x < 0,\ F^S_y < 0 \Rightarrow F^S_x = \mu F^S_y`.
+pub fn sized_law_tex(friction: &str, normal: &str, mu: &str, (f, n): (f64, f64)) -> String {
+    let sign = |v: f64| if v < 0.0 { "<" } else { ">" };
+    let law = if (f < 0.0) == (n < 0.0) {
+        format!("{friction} = {mu} {normal}")
+    } else {
+        format!("{friction} = -{mu} {normal}")
+    };
+    format!(
+        "\\left\\vert {friction} \\right\\vert = {mu} \\left\\vert {normal} \\right\\vert, \\quad {friction} {} 0,\\ {normal} {} 0 \\quad \\Rightarrow \\quad {law}",
+        sign(f),
+        sign(n)
+    )
+}
+
+/// The words before the sized law: the rule, then where the signs come from.
+pub const SIZED_LAW_NOTE: &str = "Sliding friction is μ times the normal force in size and points against the slip (here, against the slip that starts); with the signs the two forces have at this state, the law reads:";
 
 /// The row's name in the plan and in step 5's heading.
 fn heading_tex(row: &SlidingRow) -> String {
@@ -100,9 +130,19 @@ pub fn replace_rows(solution: &mut Solution, derivation: &Derivation, rows: &[Sl
             );
             view.grouped_tex = Math::from(String::new());
             view.written_tex = Math::from(String::new());
-            view.simplified_note =
-                "Friction is μ times the normal force, against the slip (its sign from the slip's direction):".into();
-            view.simplified_tex = Math::from(law_tex(row));
+            if let Some(signs) = row.signs {
+                view.simplified_note = SIZED_LAW_NOTE.into();
+                view.simplified_tex = Math::from(sized_law_tex(
+                    &latex(&Expr::sym(row.friction.clone())),
+                    &latex(&Expr::sym(row.normal.clone())),
+                    &latex(&row.mu),
+                    signs,
+                ));
+            } else {
+                view.simplified_note =
+                    "Friction is μ times the normal force, against the slip (its sign from the slip's direction):".into();
+                view.simplified_tex = Math::from(law_tex(row));
+            }
         }
     }
     if !rows.is_empty() {
@@ -143,14 +183,21 @@ pub fn order_sentence(derivation: &Derivation, rows: &[SlidingRow]) -> String {
         .collect();
     let mut contacts: Vec<String> = rows.iter().map(|r| place(&r.contact)).collect();
     contacts.dedup();
-    let mut sentence = format!(
-        "While the contact at {} slides, the rows give one new unknown each, in the order {}",
-        contacts.join(" and "),
-        steps.join(", ")
-    );
-    if !left.is_empty() {
+    let contacts = contacts.join(" and ");
+    let mut sentence = if steps.is_empty() {
+        format!(
+            "While the contact at {contacts} slides, no row gives a single new unknown: rows {} are solved together",
+            left.join(", ")
+        )
+    } else {
+        format!(
+            "While the contact at {contacts} slides, the rows give one new unknown each, in the order {}",
+            steps.join(", ")
+        )
+    };
+    if !left.is_empty() && !steps.is_empty() {
         sentence.push_str(&format!(
-            ", then rows {} the rest together",
+            ", then rows {} give the rest together",
             left.join(", ")
         ));
     }

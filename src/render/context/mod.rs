@@ -84,8 +84,9 @@ pub struct Solution {
     /// Step 1: each rolling contact's no-slip condition as a vector equation, the arm from
     /// the mass centre and the velocity of the body's point there (aligned displays).
     pub contact_loops: Vec<Math>,
-    /// Step 1: the sentence before the first of `contact_loops` (rolling, or meshing teeth).
-    pub contact_loops_lead: String,
+    /// The words opening each of `contact_loops`: rolling without slipping, or a smooth
+    /// contact that holds only the normal component (plain text).
+    pub contact_leads: Vec<String>,
     /// Step 5: the solve said in words after the matrix form: what is solved first, and
     /// where the constraint rows' block is singular.
     pub solve_notes: Vec<MarkupLine>,

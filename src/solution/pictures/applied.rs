@@ -4,7 +4,7 @@
 use super::build::Setting;
 use crate::plan::Source;
 use crate::problem::{BodyId, LoadKind};
-use crate::render::draw::{Arrow, Marker};
+use crate::render::draw::{Arrow, Kind, Label, Marker, Role};
 
 impl Setting<'_, '_, '_> {
     /// The forces the problem applies (a pull), as the statement's figure shows them: each
@@ -23,6 +23,58 @@ impl Setting<'_, '_, '_> {
                 seen.push(i);
                 out.extend(self.action_arrows(action, markers));
             }
+        }
+        out
+    }
+
+    /// The blows of an impact, each an arrow at the point struck, the way it acts,
+    /// labelled by its impulse's symbol (`J`) where it is one constant times a unit vector,
+    /// else by its name; none for an impulsive couple alone.
+    pub(super) fn blows(&self, markers: &mut Vec<Marker>) -> Vec<Arrow> {
+        use crate::mechanics::{own_components, vector_of};
+        use crate::problem::ForcePoint;
+        let n = self.numbers;
+        let problem = self.problem();
+        let Some(impact) = problem.impact.as_ref() else {
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for (i, blow) in impact.impulses.iter().enumerate() {
+            let Some(linear) = blow.linear.as_ref() else {
+                continue;
+            };
+            let at = match &blow.point {
+                ForcePoint::Point(p) => n.vector(&self.derivation.model.position(*p)),
+                ForcePoint::Offset(v) => {
+                    n.point_on(blow.body, &n.local(&own_components(v, blow.body)))
+                }
+            };
+            let direction = n.vector(&vector_of(linear));
+            if super::numbers::norm(direction) < 1e-12 {
+                continue;
+            }
+            let label = match linear.terms.as_slice() {
+                [(_, _, c)] if c.as_symbol().is_some() => {
+                    Label::from_tex(&crate::symbolic::latex(c))
+                }
+                _ => Label::from_tex(&format!("\\text{{{}}}", blow.name)),
+            };
+            let id = format!("blow-{}", i + 1);
+            markers.push(Marker {
+                id: id.clone(),
+                at,
+                role: Role::Point,
+                caption: None,
+                on: self.names(&[blow.body]),
+            });
+            out.push(Arrow {
+                kind: Kind::Load,
+                label,
+                at_id: id,
+                at,
+                direction,
+                couple: false,
+            });
         }
         out
     }

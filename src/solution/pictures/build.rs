@@ -215,6 +215,10 @@ impl Setting<'_, '_, '_> {
             shapes.push(super::bodies::body(self.numbers, b, self.size));
         }
         shapes.extend(surfaces);
+        shapes.extend(super::contact_surfaces::contact_surfaces(
+            self.numbers,
+            self.size,
+        ));
         self.elements(&mut shapes);
         for j in 0..self.problem().joints.len() {
             shapes.extend(joint_symbols::joint(self.numbers, j, self.size));
@@ -223,7 +227,8 @@ impl Setting<'_, '_, '_> {
         shapes.extend(super::velocities::velocities(self.numbers, self.size));
         self.triads(&mut shapes);
         let mut markers = self.markers(&bodies, true);
-        let arrows = self.applied(&mut markers);
+        let mut arrows = self.applied(&mut markers);
+        arrows.extend(self.blows(&mut markers));
         Scene {
             title,
             planar: self.derivation.model.is_planar(),

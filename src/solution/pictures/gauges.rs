@@ -87,11 +87,15 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
                 for (from, to, k, along) in [(base, corner, 0, x), (corner, at, 1, y)] {
                     push(k, Some(Gauge::Distance { from, to, along }));
                 }
+                // An angle the constraints hold at zero (a collar on its rod) has no arc:
+                // its label alone would name whatever is drawn beside it.
+                let held =
+                    problem.coordinates[joint.coordinates[2]].dependent && value(2).abs() < 1e-9;
                 push(
                     2,
-                    Some(Gauge::Angle {
+                    (!held).then(|| Gauge::Angle {
                         center: at,
-                        from: x,
+                        from: planar_from(n, joint.child, x, y),
                         axis: [0.0, 0.0, 1.0],
                         angle: value(2),
                         reference: 0.25 * size,
@@ -107,6 +111,26 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
         }
     }
     out
+}
+
+/// The parent's unit vector a planar joint's angle is drawn from: `x`, or `y` where the
+/// child's line (its farthest key point from its centre) lies along its own y axis (a
+/// ladder whose angle is measured from the vertical), so that the arc ends on the body as
+/// drawn. The angle turns either into the other by the same amount.
+fn planar_from(n: &Numbers, child: BodyId, x: P3, y: P3) -> P3 {
+    let center = n.local(&n.model.bodies[child.0].center_offset);
+    let line = shapes::key_points(n, child)
+        .into_iter()
+        .map(|p| sub(p, center))
+        .fold(
+            [0.0; 3],
+            |best, p| if norm(p) > norm(best) { p } else { best },
+        );
+    if line[1].abs() > line[0].abs() {
+        y
+    } else {
+        x
+    }
 }
 
 /// The middle angle of a proper Euler sequence (`zxz`, a top's θ): the angle between the

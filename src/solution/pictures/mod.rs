@@ -6,6 +6,7 @@ mod applied;
 pub(super) mod bodies;
 pub(super) mod build;
 mod carriers;
+mod contact_surfaces;
 pub(super) mod gauges;
 mod guide;
 mod joint_symbols;

@@ -1,0 +1,234 @@
+//! Contacts, friction and impacts said as they are: a smooth wall holds only the normal
+//! component of its point's velocity, only a disc is said to roll, the sliding law is the
+//! sizes first and then the signs of this state, an impact's words name only what the
+//! problem has, the force a fixed rod exerts is the rod's, and the pictures draw the angle
+//! from where the coordinate counts it and the surfaces the bodies touch. Numbers are
+//! checked against values worked out here.
+
+use crate::support::{between, markdown_handout as handout};
+
+/// The first `<svg …>…</svg>` of `text` after `from`.
+fn svg_after<'t>(text: &'t str, from: &str) -> &'t str {
+    let rest = between(text, from, "\u{0}");
+    let start = rest.find("<svg").expect("an svg");
+    let end = rest[start..].find("</svg>").expect("its end") + start;
+    &rest[start..end]
+}
+
+/// The number after `name="` in `element`.
+fn attribute(element: &str, name: &str) -> f64 {
+    let key = format!("{name}=\"");
+    let at = element
+        .find(&key)
+        .unwrap_or_else(|| panic!("{key} in {element}"))
+        + key.len();
+    let end = element[at..].find('"').expect("closing quote") + at;
+    element[at..end].parse().expect("a number")
+}
+
+#[test]
+fn a_smooth_wall_holds_only_the_normal_component_and_nothing_rolls() {
+    let text = handout("ladder-about-to-slip", "motion-law");
+    let step1 = between(&text, "## Step 1", "## Step 2");
+    // Nothing rolls: the top slides down the smooth wall, ẏ − lθ̇ sθ is not zero.
+    assert!(!text.contains("Rolling without slipping"), "{step1}");
+    assert!(!text.contains("a wheel"), "{text}");
+    assert!(!text.contains("rolls without slipping"), "{text}");
+    assert!(step1.contains("No penetration at the wall"), "{step1}");
+    assert!(
+        step1.contains(
+            "{}^{N}\\mathbf{v}^{W} \\cdot \\hat{\\mathbf{n}}_{x} &= \\dot{x} - l \\dot{\\theta} c_{\\theta} = 0"
+        ),
+        "{step1}"
+    );
+    assert!(
+        !step1.contains("\\hat{\\mathbf{n}}_{y} = \\mathbf{0}"),
+        "{step1}"
+    );
+    // A rolling disc still gets the whole vector.
+    let coin = handout("rolling-coin", "lagrange");
+    assert!(coin.contains("Rolling without slipping"), "{coin}");
+}
+
+#[test]
+fn the_plan_says_the_rows_are_solved_together_when_none_gives_one_unknown() {
+    let text = handout("ladder-about-to-slip", "motion-law");
+    let plan = between(&text, "## Step 3", "## Step 4");
+    assert!(!plan.contains("in the order ,"), "{plan}");
+    assert!(plan.contains("are solved together"), "{plan}");
+}
+
+#[test]
+fn the_sliding_law_is_the_sizes_then_the_signs_of_this_state() {
+    // The collar: P sin β = 12.856 N > m g = 9.81 N, so the rod pushes it down:
+    // F_y = m g − P sin β = −3.04575 N, and friction μ|F_y| = 0.913726 N against the
+    // forward slip: F_x = μ F_y, whose sign is right only because F_y < 0.
+    let text = handout("collar-on-rough-rod", "kane");
+    let step5 = between(&text, "## Step 5", "## Step 6");
+    let (m, p, beta, mu, g) = (1.0, 20.0, 40f64.to_radians(), 0.3, 9.81);
+    let normal: f64 = m * g - p * beta.sin();
+    assert!((normal + 3.04575).abs() < 1e-5, "{normal}");
+    assert!(
+        step5.contains(
+            &format!("{:.6}", mu * normal.abs())
+                .trim_end_matches('0')
+                .to_string()
+        ),
+        "{step5}"
+    );
+    assert!(
+        step5.contains(
+            "\\left\\vert F^{S}_{x} \\right\\vert = \\mu \\left\\vert F^{S}_{y} \\right\\vert, \\quad F^{S}_{x} < 0,\\ F^{S}_{y} < 0 \\quad \\Rightarrow \\quad F^{S}_{x} = \\mu F^{S}_{y}"
+        ),
+        "{step5}"
+    );
+    assert!(
+        !step5.contains("its sign from the slip's direction"),
+        "{step5}"
+    );
+    // The ladder's floor pushes up: the same rule gives F_x = −μ F_y there.
+    let ladder = handout("ladder-about-to-slip", "motion-law");
+    assert!(
+        ladder.contains(
+            "F^{P}_{x} < 0,\\ F^{P}_{y} > 0 \\quad \\Rightarrow \\quad F^{P}_{x} = -\\mu F^{P}_{y}"
+        ),
+        "{ladder}"
+    );
+}
+
+#[test]
+fn the_rod_exerts_the_collars_force_and_the_side_it_bears_on_is_said() {
+    let text = handout("collar-on-rough-rod", "kane");
+    let answers = between(&text, "## Answers", "\u{0}");
+    assert!(!answers.contains("the ground exerts"), "{answers}");
+    assert!(
+        answers.contains("On the collar, the rod exerts sliding friction"),
+        "{answers}"
+    );
+    // Pushed down by the rod, the collar presses up on the rod's underside.
+    assert!(answers.contains("bears on the underside"), "{answers}");
+    // β is given in degrees by the statement: printed so beside its radians.
+    let step1 = between(&text, "## Step 1", "## Step 2");
+    assert!(step1.contains("0.698132 (40°)"), "{step1}");
+}
+
+#[test]
+fn the_ladder_answers_whether_friction_can_hold_it() {
+    // Sticking needs F = 29.4722 N > μ N = 0.3 × 98.1 N = 29.43 N: it cannot hold.
+    let (m, g, mu) = (10.0, 9.81_f64, 0.3);
+    let theta = 31f64.to_radians();
+    let needed = m * g * theta.tan() / 2.0;
+    assert!(needed > mu * m * g, "{needed}");
+    let text = handout("ladder-about-to-slip", "motion-law");
+    let answers = between(&text, "## Answers", "\u{0}");
+    assert!(
+        answers.contains("Friction cannot hold the ladder at rest"),
+        "{answers}"
+    );
+    let step5 = between(&text, "## Step 5", "## Step 6");
+    assert!(
+        step5.contains(&format!("{:.4}", needed)),
+        "{needed} in {step5}"
+    );
+}
+
+#[test]
+fn the_impact_names_only_what_the_problem_has_and_solves_in_symbols() {
+    let text = handout("impact-struck-rod", "motion-law");
+    let impact = between(&text, "## The impact", "## Step 6");
+    for absent in ["springs", "pendulum", "collision", "each reaction"] {
+        assert!(!impact.contains(absent), "{absent} in {impact}");
+    }
+    // cos θ at θ = 0 is 1: the moment of the blow about the centre is J L/2.
+    assert!(!impact.contains("\\cos(\\theta)"), "{impact}");
+    // Δẏ = J/m = 1.5 m/s and Δθ̇ = 6J/(mL) = 7.5 rad/s, in symbols then in numbers.
+    let (m, l, j) = (2.0, 1.2, 3.0);
+    assert!(
+        impact.contains("\\Delta \\dot{y} = \\frac{J}{m}"),
+        "{impact}"
+    );
+    assert!(
+        impact.contains("\\Delta \\dot{\\theta} = \\frac{6 J}{L m}"),
+        "{impact}"
+    );
+    assert!(
+        impact.contains(&format!("\\dot{{y}}^{{+}} = {}", j / m)),
+        "{impact}"
+    );
+    assert!(
+        impact.contains(&format!("\\dot{{\\theta}}^{{+}} = {}", 6.0 * j / (m * l))),
+        "{impact}"
+    );
+    // The kinetic energy asked is an answer: T = 2 J²/m = 9 J.
+    let answers = between(&text, "## Answers", "\u{0}");
+    assert!(
+        answers.contains("\\dot{x} = 0\\ \\mathrm{m/s}"),
+        "{answers}"
+    );
+    assert!(
+        answers.contains(&format!("{}\\ \\mathrm{{J}}", 2.0 * j * j / m)),
+        "{answers}"
+    );
+    // No software notation for a direction.
+    assert!(!text.contains("N.x"), "{text}");
+}
+
+#[test]
+fn the_ladder_angle_is_drawn_from_the_vertical_and_its_surfaces_are_drawn() {
+    let text = handout("ladder-about-to-slip", "motion-law");
+    let svg = svg_after(&text, "## Step 1");
+    // The dashed line the θ arc starts from leaves the mass centre straight up.
+    let cm = between(svg, "id=\"configuration-cm-L\"", "/>");
+    // Paths round their coordinates to a tenth.
+    let short = |x: f64| format!("{x:.1}").trim_end_matches(".0").to_string();
+    let (cx, cy) = (short(attribute(cm, "cx")), short(attribute(cm, "cy")));
+    let up = format!("M{cx} {cy}l0-");
+    assert!(
+        svg.lines()
+            .any(|l| l.contains(&up) && l.contains("stroke-dasharray")),
+        "{up} in {svg}"
+    );
+    // Not from the horizontal through it, as before.
+    assert!(
+        !svg.lines()
+            .any(|l| l.contains(&format!("M{cx} {cy}l4")) && l.contains("dasharray")),
+        "{svg}"
+    );
+    // The wall and the floor the ladder touches are drawn.
+    assert_eq!(svg.matches("<g class=\"ground\">").count(), 2, "{svg}");
+}
+
+#[test]
+fn the_collar_picture_labels_no_angle_that_is_held_at_zero() {
+    let text = handout("collar-on-rough-rod", "kane");
+    let svg = svg_after(&text, "## Step 1");
+    assert!(!svg.contains(">θ</text>"), "{svg}");
+    // The fixed rod it slides on is drawn through it and out past both its sides, a plain
+    // line (not hatched ground) at the height of its centre.
+    let block = between(svg, "data-shape=\"block\"", "</g>");
+    let outline = between(block, "d=\"M", "z");
+    let width: f64 = between(outline, "l", " ")[1..]
+        .parse()
+        .expect("the block's width");
+    let cm = between(svg, "id=\"configuration-cm-C\"", "/>");
+    let cy = format!("{:.1}", attribute(cm, "cy"));
+    let rod = svg
+        .lines()
+        .filter_map(|l| l.strip_prefix("<path d=\"M"))
+        .filter_map(|l| l.split_once('l'))
+        .find(|(start, rest)| start.ends_with(&format!(" {cy}")) && rest.contains(" 0\""))
+        .unwrap_or_else(|| panic!("a rod through y = {cy} in {svg}"));
+    let length: f64 = rod.1.split(' ').next().unwrap().parse().unwrap();
+    assert!(length > 1.5 * width, "{length} {width}");
+    assert_eq!(svg.matches("<g class=\"ground\">").count(), 0, "{svg}");
+}
+
+#[test]
+fn the_struck_rod_shows_its_blow() {
+    let text = handout("impact-struck-rod", "motion-law");
+    let svg = svg_after(&text, "## Step 1");
+    // J acts up at the end toward +n̂x: the arrow's label is J, at the rod's right end.
+    assert!(svg.contains("data-label=\"J\""), "{svg}");
+    let statement = between(&text, "# ", "## Step 1");
+    assert!(statement.contains("right end"), "{statement}");
+}
