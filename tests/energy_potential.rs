@@ -85,7 +85,7 @@ fn step_six_and_the_answers_put_the_gas_in_v() {
                 .unwrap_or_default();
             number.trim().parse().expect("a number")
         };
-        let (t, g, gas) = (value("T"), value("V_{g}"), value("V_{\\mathrm{gas}}"));
+        let (t, g, gas) = (value("T"), value("V_{g}"), value("V_{F}"));
         assert!((t - 12.405).abs() < 1e-3, "{method}: T = {t}");
         assert!((g - 0.287).abs() < 1e-3, "{method}: V_g = {g}");
         assert!((gas - 6.680).abs() < 1e-3, "{method}: V_gas = {gas}");

@@ -94,19 +94,20 @@ pub fn steps(worked: &Worked, value: f64) -> Vec<(String, String)> {
             format!("V_{{g}} = {gravity_tex} = {}", joules(gravity)),
         ),
     ];
-    for (i, v, at_start) in forces {
-        let load = &model.problem.loads[i];
-        let (of, sub) = match &load.name {
-            Some(name) => (format!("the {name}"), name.clone()),
-            None => ("the applied force".to_string(), "F".to_string()),
+    let several = forces.len() > 1;
+    for (k, (i, v, at_start)) in forces.into_iter().enumerate() {
+        let of = match &model.problem.loads[i].name {
+            Some(name) => format!("the {name}"),
+            None => "the applied force".to_string(),
+        };
+        // A letter, not the load's name, as a script: V_F, or V_{F_1}, V_{F_2}.
+        let sub = match several {
+            true => format!("F_{{{}}}", k + 1),
+            false => "F".to_string(),
         };
         steps.push((
-            format!("and the potential energy of {of}, whose force is minus its derivative,"),
-            format!(
-                r"V_{{\mathrm{{{sub}}}}} = {} = {}",
-                tex(&v),
-                joules(at_start)
-            ),
+            format!("and the potential energy $V_{{{sub}}}$ of {of}, whose force is minus its derivative,"),
+            format!("V_{{{sub}}} = {} = {}", tex(&v), joules(at_start)),
         ));
     }
     steps

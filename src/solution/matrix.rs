@@ -88,20 +88,12 @@ pub fn matrix(
         return MatrixForm::default();
     }
     if whole_rows && !written_out {
-        // Up to six unknowns Lagrange's matrix is printed whole where its entries fit, for
-        // a student to solve; else (or past six) the table of dots shows its shape.
-        if n <= MOST_COLUMNS {
-            let rows = (numbers.as_slice(), labels.as_slice());
-            let (ab, lines) = ((a.as_slice(), b.as_slice()), (x.as_slice(), &names));
-            if let Some(form) = lagrange_whole(&whole, ab, rows, lines, &listed) {
-                return form;
-            }
-        }
-        return MatrixForm {
+        let six = lagrange_whole(&whole, (&a, &b), [&numbers, &labels, &x], &names, &listed);
+        return six.unwrap_or_else(|| MatrixForm {
             pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
             columns_tex: Math::all(columns(&names.x, &x)),
             ..MatrixForm::default()
-        };
+        });
     }
     let a_tex: Vec<Vec<String>> = a
         .iter()
@@ -127,8 +119,7 @@ pub fn matrix(
     // Entries too wide as well: every entry longer than a symbol or two by name, as a
     // textbook writes a larger system, the names defined below the table.
     let a_names = named_entries(&a, &a_tex, &names);
-    // Wider still: the unknowns by column number, x_j (the column's own letter), given
-    // below the table.
+    // Wider still: the unknowns by column number, z_j, given below the table.
     let x_names: Vec<String> = (1..=n).map(|j| format!("{}_{{{j}}}", names.x)).collect();
     let (table_by_name, unknowns_by_number) = if table_with_b_by_name.is_some() {
         (None, false)
@@ -193,16 +184,22 @@ pub fn matrix(
     )
 }
 
-/// Lagrange's matrix of at most six unknowns whole: its entries in the table where they
-/// fit, else the right-hand side by name and its entries below; `None` where even that is
-/// too wide.
+/// A whole matrix's table from its row labels, unknowns, entries and right-hand side.
+type WholeTable<'w> = &'w dyn Fn(&[String], &[String], &[Vec<String>], &[String]) -> Option<W>;
+use WholeMatrix as W;
+
+/// Lagrange's matrix of at most six unknowns whole, for a student to solve: entries in the
+/// table where they fit, else b by name, its entries below; `None` past six or too wide.
 fn lagrange_whole(
-    whole: &dyn Fn(&[String], &[String], &[Vec<String>], &[String]) -> Option<WholeMatrix>,
+    whole: WholeTable,
     (a, b): (&[Vec<Expr>], &[Expr]),
-    (numbers, labels): (&[String], &[String]),
-    (x, names): (&[String], &MatrixNames),
+    [numbers, labels, x]: [&[String]; 3],
+    names: &MatrixNames,
     listed: &impl Fn(usize) -> bool,
 ) -> Option<MatrixForm> {
+    if x.len() > MOST_COLUMNS {
+        return None;
+    }
     let a_tex: Vec<Vec<String>> = (a.iter())
         .map(|row| row.iter().map(latex_factored).collect())
         .collect();
