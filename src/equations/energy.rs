@@ -31,7 +31,8 @@ pub fn kinetic(model: &Model) -> Expr {
     add(terms)
 }
 
-/// The potential energy of gravity, springs and joint springs (zero at the origin's level).
+/// The potential energy of gravity, springs, joint springs and the forces with a potential
+/// (gravity's zero at the origin's level).
 pub fn potential(model: &Model) -> Expr {
     let problem = model.problem;
     let half = Expr::ratio(1, 2);
@@ -43,7 +44,7 @@ pub fn potential(model: &Model) -> Expr {
             terms.push(-(&state.mass * &g.dot(&state.center.position, &model.frames)));
         }
     }
-    for load in &problem.loads {
+    for (index, load) in problem.loads.iter().enumerate() {
         match &load.kind {
             LoadKind::Spring {
                 between,
@@ -74,6 +75,9 @@ pub fn potential(model: &Model) -> Expr {
             } => {
                 let stretch = &problem.coordinate_expr(*coordinate, 0) - rest;
                 terms.push(&half * &(stiffness * &(&stretch * &stretch)));
+            }
+            LoadKind::Force { .. } => {
+                terms.extend(super::load_potential::force_potential(model, index));
             }
             _ => {}
         }

@@ -14,6 +14,7 @@ mod energy;
 mod friction;
 mod kane;
 mod lagrange;
+mod load_potential;
 mod method;
 mod motion_law;
 mod newton_euler;
@@ -37,5 +38,6 @@ pub use lagrange::forces::{
     partial_velocities, role, virtual_work, Role,
 };
 pub use lagrange::kinetic::inertia_terms;
+pub use load_potential::{force_potential, has_potential};
 pub use method::Method;
 pub use system::{Derivation, LinearSystem, Request, Rows};

@@ -18,16 +18,26 @@ use crate::symbolic::{add, fixed, Expr, Program};
 /// another load or a friction site also does work without a potential (a damper, sliding
 /// friction) or a coordinate is driven: the energy then does not change by their work alone.
 pub fn applied_power(problem: &Problem) -> Option<Expr> {
-    let applied = |kind: &LoadKind| {
+    let any_applied = (problem.loads.iter()).any(|l| {
         matches!(
-            kind,
+            l.kind,
             LoadKind::Force { .. } | LoadKind::Torque { .. } | LoadKind::JointActuator { .. }
         )
+    });
+    if !any_applied {
+        return None;
+    }
+    let model = Model::build(problem).ok()?;
+    // A force with a potential (a gas law) is in V with the springs, not applied.
+    let conservative = |i: usize| crate::equations::has_potential(&model, i);
+    let applied = |i: usize| {
+        matches!(
+            problem.loads[i].kind,
+            LoadKind::Force { .. } | LoadKind::Torque { .. } | LoadKind::JointActuator { .. }
+        ) && !conservative(i)
     };
-    let conservative =
-        |kind: &LoadKind| matches!(kind, LoadKind::Spring { .. } | LoadKind::JointSpring { .. });
-    let loads = problem.loads.iter().map(|l| &l.kind);
-    if !loads.clone().any(applied) || !loads.clone().all(|k| applied(k) || conservative(k)) {
+    let loads = 0..problem.loads.len();
+    if !loads.clone().any(applied) || !loads.clone().all(|i| applied(i) || conservative(i)) {
         return None;
     }
     let rough = (problem.constraints.iter().map(|c| &c.friction))
@@ -38,7 +48,6 @@ pub fn applied_power(problem: &Problem) -> Option<Expr> {
     if rough || driven {
         return None;
     }
-    let model = Model::build(problem).ok()?;
     let actions = crate::plan::free_bodies(&model, Form::Handout)
         .ok()?
         .actions;
@@ -51,7 +60,8 @@ pub fn applied_power(problem: &Problem) -> Option<Expr> {
         if !matches!(
             problem.loads[i].kind,
             LoadKind::Force { .. } | LoadKind::Torque { .. }
-        ) {
+        ) || conservative(i)
+        {
             continue;
         }
         let body = &model.bodies[action.body.0];

@@ -71,10 +71,10 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         let (late, start) = (late.1, start.1);
         let measured = largest_change(worked, start, &unit).filter(|_| energy_checked);
         // The datum of V, beside the energy at the start.
-        if let Some(datum) = super::energy_datum::sentence(worked, start) {
+        for (text, math) in super::energy_datum::steps(worked, start) {
             views[k].steps.push(crate::render::AnswerStep {
-                text: datum.into(),
-                math: String::new().into(),
+                text: text.into(),
+                math: math.into(),
             });
         }
         let change = (late - start).abs();

@@ -124,8 +124,10 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             (Some(tex), None) => format!("${tex}$ is a unit vector"),
             (None, _) => "the line of centres, divided by the distance the constraint keeps, is a unit vector".into(),
         };
+        let root_of = crate::symbolic::latex(&relation.square);
+        let root = crate::symbolic::latex(&relation.root);
         format!(
-            "Wherever the distance constraint of {} holds, ${}$: {unit}. The rows below write the distance between the centres as the constant it keeps, not as a root of squares.",
+            "Wherever the distance constraint of {} holds, ${}$: {unit}. From here on $\\sqrt{{{root_of}}}$ is replaced by ${root}$, the value the constraint gives it.",
             super::force_labels::place(name),
             relation.latex()
         )

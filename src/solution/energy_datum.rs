@@ -1,7 +1,9 @@
 //! Where the potential energy of an energy answer is zero, said beside the value: an
 //! energy without its datum means nothing. Said only where the answer at the start equals
 //! the kinetic energy plus gravity's potential measured from the height of the ground's
-//! origin, so that the datum named is the one the answer uses.
+//! origin (plus the potentials of forces that have one), so that the datum named is the one
+//! the answer uses. Where a force's potential adds to gravity's (a gas law), the parts
+//! T, V of gravity and V of that force are given each with its value.
 
 use crate::mechanics::SiteKind;
 use crate::problem::{BodyId, LoadKind};
@@ -43,10 +45,78 @@ fn gravity_potential(worked: &Worked) -> Option<f64> {
     Some(v)
 }
 
-/// The sentence for an energy `value` given at the start; `None` where the simulation did
-/// not run, the problem has springs, or the value is not T + V with V zero at the height of
-/// the ground's origin.
-pub fn sentence(worked: &Worked, value: f64) -> Option<String> {
+/// The steps (sentence, math) for an energy `value` given at the start: where `V` is
+/// gravity's alone, its datum; where forces with a potential (a gas law) add theirs, `T`
+/// and each part of `V` with its formula and value, gravity's with its datum. Empty where
+/// the simulation did not run, the problem has springs, or the value is not that sum.
+pub fn steps(worked: &Worked, value: f64) -> Vec<(String, String)> {
+    let Some(gravity) = gravity_potential(worked) else {
+        return Vec::new();
+    };
+    let model = &worked.derivation.model;
+    let values = model.values_at(0.0, &worked.q0, &worked.rates0);
+    let forces: Vec<(usize, crate::symbolic::Expr, f64)> = (0..model.problem.loads.len())
+        .filter_map(|i| {
+            let v = crate::equations::force_potential(model, i)?;
+            let at_start = crate::symbolic::eval(&v, &values);
+            Some((i, v, at_start))
+        })
+        .collect();
+    let others: f64 = forces.iter().map(|f| f.2).sum();
+    let Some((kinetic, datum)) = sentence(worked, value, gravity + others) else {
+        return Vec::new();
+    };
+    if forces.is_empty() {
+        return vec![(datum, String::new())];
+    }
+    let joules = |x: f64| format!(r"{}\ \mathrm{{J}}", crate::symbolic::fixed(x));
+    // Written as step 5 writes: s_1 for sin q_1, the problem's decimals.
+    let angles: Vec<&str> = (model.problem.coordinates.iter())
+        .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
+        .map(|c| c.name.as_str())
+        .collect();
+    let style = super::tex::style_of(model.problem).with_coordinates(&angles);
+    let tex = |e: &crate::symbolic::Expr| {
+        let e = crate::symbolic::simplify(e);
+        crate::symbolic::with_style(style.clone(), || crate::symbolic::latex_collected(&e)).0
+    };
+    let gravity_tex = tex(&super::potential_tex::gravity_potential(model));
+    let mut steps = vec![
+        (
+            "Its parts at the start: the kinetic energy of the bodies,".to_string(),
+            format!("T = {}", joules(kinetic)),
+        ),
+        (
+            format!(
+                "the potential energy of gravity, zero at the height of {},",
+                origin_name(worked)
+            ),
+            format!("V_{{g}} = {gravity_tex} = {}", joules(gravity)),
+        ),
+    ];
+    let several = forces.len() > 1;
+    for (k, (i, v, at_start)) in forces.into_iter().enumerate() {
+        let of = match &model.problem.loads[i].name {
+            Some(name) => format!("the {name}"),
+            None => "the applied force".to_string(),
+        };
+        // A letter, not the load's name, as a script: V_F, or V_{F_1}, V_{F_2}.
+        let sub = match several {
+            true => format!("F_{{{}}}", k + 1),
+            false => "F".to_string(),
+        };
+        steps.push((
+            format!("and the potential energy $V_{{{sub}}}$ of {of}, whose force is minus its derivative,"),
+            format!("V_{{{sub}}} = {} = {}", tex(&v), joules(at_start)),
+        ));
+    }
+    steps
+}
+
+/// `(T, the datum's sentence)` for an energy `value` given at the start, where `V` at the
+/// start is `potential`; `None` where the simulation did not run, the problem has springs,
+/// or the value is not T + V.
+fn sentence(worked: &Worked, value: f64, potential: f64) -> Option<(f64, String)> {
     let Some(Ok((trajectory, _))) = &worked.simulation else {
         return None;
     };
@@ -61,14 +131,17 @@ pub fn sentence(worked: &Worked, value: f64) -> Option<String> {
         return None;
     }
     let kinetic = trajectory.series("kinetic")?.first()?.1;
-    let total = kinetic + gravity_potential(worked)?;
+    let total = kinetic + potential;
     if (total - value).abs() > 1e-9 * value.abs().max(1e-9) {
         return None;
     }
     let origin = origin_name(worked);
-    Some(format!(
-        "{} $V$ is zero at the height of {origin}.",
-        definition(worked, kinetic, total - kinetic)
+    Some((
+        kinetic,
+        format!(
+            "{} $V$ is zero at the height of {origin}.",
+            definition(worked, kinetic, total - kinetic)
+        ),
     ))
 }
 

@@ -37,6 +37,7 @@ pub fn handout(worked: &Worked, settings: &Handout) -> Solution {
         let (bodies, shown) = (&solution.free_bodies, &solution.shown_names);
         super::sense_words::say_third_law(problem, shown, &mut views);
         super::drawn_on::point_to_free_bodies(problem, bodies, shown, &mut views);
+        super::moving_axes::attach(worked, &mut views);
         super::absent_constants::attach(&worked.derivation, &mut views);
         solution.answers = views;
     }

@@ -313,27 +313,20 @@ fn energies(model: &Model) -> Vec<String> {
     lines
 }
 
-/// Whether gravity and whether any spring acts: what has a potential, in `V`.
-fn potential_sources(derivation: &Derivation) -> (bool, bool) {
-    use crate::plan::Source;
-    use crate::problem::LoadKind;
-    let gravity = (derivation.actions.iter()).any(|a| a.source == Source::Gravity);
-    let springs = (derivation.model.problem.loads.iter()).any(|l| {
-        matches!(
-            l.kind,
-            LoadKind::Spring { .. } | LoadKind::JointSpring { .. }
-        )
-    });
-    (gravity, springs)
-}
-
 fn forces_note(derivation: &Derivation) -> String {
+    let (names, plural) = super::potential_tex::sources(derivation);
+    let listed = super::potential_tex::listed(&names);
     if force_rows(derivation).is_empty() {
-        let what = match potential_sources(derivation) {
-            (true, true) => "Gravity and the springs have a potential, in $V$",
-            (true, false) => "Gravity has a potential, in $V$",
-            (false, true) => "The springs have a potential, in $V$",
-            (false, false) => "No load has a potential ($V = 0$)",
+        let what = match (names.is_empty(), plural) {
+            (true, _) => "No load has a potential ($V = 0$)".to_string(),
+            (false, true) => format!(
+                "{} have a potential, in $V$",
+                super::potential_tex::capitalized(&listed)
+            ),
+            (false, false) => format!(
+                "{} has a potential, in $V$",
+                super::potential_tex::capitalized(&listed)
+            ),
         };
         return format!("{what}; no other load does work: $Q_r = 0$ for every coordinate.");
     }
@@ -350,11 +343,10 @@ fn forces_note(derivation: &Derivation) -> String {
     } else {
         ""
     };
-    let in_v = match potential_sources(derivation) {
-        (true, true) => "; gravity and the springs are in $V$",
-        (true, false) => "; gravity is in $V$",
-        (false, true) => "; the springs are in $V$",
-        (false, false) => "",
+    let in_v = match (names.is_empty(), plural) {
+        (true, _) => String::new(),
+        (false, true) => format!("; {listed} are in $V$"),
+        (false, false) => format!("; {listed} is in $V$"),
     };
     format!(
         "The generalized forces of the loads without a potential{multipliers}, by virtual work:{}{in_v}.",

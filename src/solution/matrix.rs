@@ -88,11 +88,12 @@ pub fn matrix(
         return MatrixForm::default();
     }
     if whole_rows && !written_out {
-        return MatrixForm {
+        let six = lagrange_whole(&whole, (&a, &b), [&numbers, &labels, &x], &names, &listed);
+        return six.unwrap_or_else(|| MatrixForm {
             pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
-            columns_tex: Math::all(columns(&x)),
+            columns_tex: Math::all(columns(&names.x, &x)),
             ..MatrixForm::default()
-        };
+        });
     }
     let a_tex: Vec<Vec<String>> = a
         .iter()
@@ -118,8 +119,8 @@ pub fn matrix(
     // Entries too wide as well: every entry longer than a symbol or two by name, as a
     // textbook writes a larger system, the names defined below the table.
     let a_names = named_entries(&a, &a_tex, &names);
-    // Wider still: the unknowns by column number, x_j, given below the table.
-    let x_names: Vec<String> = (1..=n).map(|j| format!("x_{{{j}}}")).collect();
+    // Wider still: the unknowns by column number, z_j, given below the table.
+    let x_names: Vec<String> = (1..=n).map(|j| format!("{}_{{{j}}}", names.x)).collect();
     let (table_by_name, unknowns_by_number) = if table_with_b_by_name.is_some() {
         (None, false)
     } else if let Some(table) = whole(&numbers, &x, &a_names, &b_names) {
@@ -143,7 +144,7 @@ pub fn matrix(
         return MatrixForm {
             pattern_tex: Math::all(pattern_tables(&numbers, &a, &b)),
             entries,
-            columns_tex: Math::all(columns(&x)),
+            columns_tex: Math::all(columns(&names.x, &x)),
             read_off_tex: Math::from(rows_tex(&read_off)),
             ..MatrixForm::default()
         };
@@ -174,7 +175,55 @@ pub fn matrix(
         return by_name_form(table, &a_names, &a_tex, &x, &names, entries);
     }
     let pattern = || pattern_tables(&numbers, &a, &b);
-    listed_form(entries, (by_entries, &listed), a.len(), &x, pattern)
+    listed_form(
+        entries,
+        (by_entries, &listed),
+        a.len(),
+        (names.x.as_str(), x.as_slice()),
+        pattern,
+    )
+}
+
+/// A whole matrix's table from its row labels, unknowns, entries and right-hand side.
+type WholeTable<'w> = &'w dyn Fn(&[String], &[String], &[Vec<String>], &[String]) -> Option<W>;
+use WholeMatrix as W;
+
+/// Lagrange's matrix of at most six unknowns whole, for a student to solve: entries in the
+/// table where they fit, else b by name, its entries below; `None` past six or too wide.
+fn lagrange_whole(
+    whole: WholeTable,
+    (a, b): (&[Vec<Expr>], &[Expr]),
+    [numbers, labels, x]: [&[String]; 3],
+    names: &MatrixNames,
+    listed: &impl Fn(usize) -> bool,
+) -> Option<MatrixForm> {
+    if x.len() > MOST_COLUMNS {
+        return None;
+    }
+    let a_tex: Vec<Vec<String>> = (a.iter())
+        .map(|row| row.iter().map(latex_factored).collect())
+        .collect();
+    let b_tex = b_texts(b);
+    if let Some(table) = whole(numbers, x, &a_tex, &b_tex) {
+        return Some(MatrixForm {
+            whole: Some(table),
+            ..MatrixForm::default()
+        });
+    }
+    let b_names: Vec<String> = (1..=a.len())
+        .map(|i| format!("{}_{{{i}}}", names.b))
+        .collect();
+    let table = whole(numbers, x, &a_tex, &b_names)?;
+    let groups = b_groups(b, &b_tex);
+    let entries = entries_of(a, (&a_tex, &b_tex), &groups, labels, x, names, listed);
+    Some(by_name_form(
+        table,
+        &a_tex,
+        &a_tex,
+        x,
+        names,
+        (entries, false),
+    ))
 }
 
 /// A system this large read by its numbers: `A` and `b` at the initial state as a table
@@ -214,10 +263,10 @@ fn listed_form(
     mut entries: Vec<MatrixEntry>,
     (by_entries, listed): (bool, &impl Fn(usize) -> bool),
     rows: usize,
-    x: &[String],
+    (letter, x): (&str, &[String]),
     pattern: impl FnOnce() -> Vec<String>,
 ) -> MatrixForm {
-    let columns_tex = columns(x);
+    let columns_tex = columns(letter, x);
     if !by_entries && entries.len() > MOST_LISTED {
         // Step 5 writes every row out, collected by its unknowns: listing the entries again
         // would repeat it. Where each row's unknowns are is the system's shape, which the
@@ -414,7 +463,7 @@ fn by_name_form(
         whole: Some(table),
         entries: defined,
         columns_tex: if unknowns_by_number {
-            Math::all(columns(x))
+            Math::all(columns(&names.x, x))
         } else {
             Vec::new()
         },
@@ -422,11 +471,12 @@ fn by_name_form(
     }
 }
 
-/// The unknowns by column, for a table that heads them by number: `x_{1} = \\ddot{q}_{1}`.
-fn columns(x: &[String]) -> Vec<String> {
+/// The unknowns by column, for a table that heads them by number: `x_{1} = \\ddot{q}_{1}`,
+/// `letter` the column's name (`z` where a coordinate is `x`).
+fn columns(letter: &str, x: &[String]) -> Vec<String> {
     x.iter()
         .enumerate()
-        .map(|(j, x)| format!("x_{{{}}} = {x}", j + 1))
+        .map(|(j, x)| format!("{letter}_{{{}}} = {x}", j + 1))
         .collect()
 }
 

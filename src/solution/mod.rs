@@ -64,6 +64,7 @@ mod matrix;
 mod matrix_by_value;
 mod mode_shape;
 mod moment_point;
+mod moving_axes;
 mod named_identity;
 mod normal_sense;
 mod on_constraint;

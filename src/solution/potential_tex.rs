@@ -6,8 +6,8 @@ use crate::mechanics::Model;
 use crate::problem::{LoadKind, PointRef};
 use crate::symbolic::{add, latex, latex_collected, roots_of_squares, simplify, Expr};
 
-/// `V` in LaTeX: gravity's terms (collected), then every spring's ½ k (stretch)²; `0`
-/// when nothing has a potential.
+/// `V` in LaTeX: gravity's terms (collected), then every spring's ½ k (stretch)², then
+/// the potential of each force that has one (a gas law); `0` when nothing has a potential.
 pub fn potential_tex(model: &Model) -> String {
     let sign = super::tex::initial_sign(model);
     let mut parts = Vec::new();
@@ -16,7 +16,7 @@ pub fn potential_tex(model: &Model) -> String {
         parts.push(latex_collected(&gravity));
     }
     let problem = model.problem;
-    for load in &problem.loads {
+    for (index, load) in problem.loads.iter().enumerate() {
         let (stiffness, stretch) = match &load.kind {
             LoadKind::Spring {
                 between,
@@ -35,6 +35,12 @@ pub fn potential_tex(model: &Model) -> String {
                 stiffness,
                 simplify(&(&problem.coordinate_expr(*coordinate, 0) - rest)),
             ),
+            LoadKind::Force { .. } => {
+                if let Some(v) = crate::equations::force_potential(model, index) {
+                    parts.push(latex_collected(&v));
+                }
+                continue;
+            }
             _ => continue,
         };
         if !stretch.is_zero() && !stiffness.is_zero() {
@@ -45,7 +51,7 @@ pub fn potential_tex(model: &Model) -> String {
 }
 
 /// −Σ m g·r*: the potential of gravity, zero at the origin's level.
-fn gravity_potential(model: &Model) -> Expr {
+pub(super) fn gravity_potential(model: &Model) -> Expr {
     let Some(g) = &model.problem.gravity else {
         return Expr::zero();
     };
@@ -121,5 +127,54 @@ fn joined(parts: &[String]) -> String {
         "0".into()
     } else {
         out
+    }
+}
+
+/// What has a potential, in `V`: gravity, the springs, each force with a potential by its
+/// name (the gas); and whether they are said in the plural.
+pub(super) fn sources(derivation: &crate::equations::Derivation) -> (Vec<String>, bool) {
+    use crate::plan::Source;
+    use crate::problem::LoadKind;
+    let model = &derivation.model;
+    let mut names = Vec::new();
+    if (derivation.actions.iter()).any(|a| a.source == Source::Gravity) {
+        names.push("gravity".to_string());
+    }
+    let loads = &model.problem.loads;
+    if (loads.iter()).any(|l| {
+        matches!(
+            l.kind,
+            LoadKind::Spring { .. } | LoadKind::JointSpring { .. }
+        )
+    }) {
+        names.push("the springs".into());
+    }
+    // A force with a potential (a gas law) by its name.
+    for (i, load) in loads.iter().enumerate() {
+        if crate::equations::force_potential(model, i).is_some() {
+            names.push(
+                load.name
+                    .as_ref()
+                    .map_or("the applied force".into(), |n| format!("the {n}")),
+            );
+        }
+    }
+    let plural = names.len() > 1 || names.iter().any(|n| n == "the springs");
+    (names, plural)
+}
+
+/// `text` with its first letter a capital.
+pub(super) fn capitalized(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map_or(String::new(), |c| c.to_uppercase().chain(chars).collect())
+}
+
+/// `a, b and c`.
+pub(super) fn listed(names: &[String]) -> String {
+    match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => names.concat(),
     }
 }

@@ -35,6 +35,7 @@ pub fn role(model: &Model, action: &Action) -> Role {
         Source::Gravity => Role::Potential,
         Source::Load(i) => match model.problem.loads[i].kind {
             LoadKind::Spring { .. } => Role::Potential,
+            LoadKind::Force { .. } if crate::equations::has_potential(model, i) => Role::Potential,
             _ => Role::Load,
         },
         Source::Reaction(j) if j < model.problem.joints.len() => Role::Left,

@@ -3,7 +3,7 @@
 //! gives the q''), the energies' program, and what the checks need to know of the loads.
 
 use super::{Compiled, ReactionComponentSlot, ReactionSlot};
-use crate::equations::{kinetic, potential, Derivation, SMALL_PROGRAM};
+use crate::equations::{has_potential, kinetic, potential, Derivation, SMALL_PROGRAM};
 use crate::mechanics::ComponentKind;
 use crate::numeric::inputs::input_symbols;
 use crate::numeric::recursive::Recursive;
@@ -157,12 +157,10 @@ impl Compiled {
             speeds,
             conservative: !drives_work
                 && model.constraints.friction.is_empty()
-                && problem.loads.iter().all(|l| is_conservative(&l.kind)),
+                && (0..problem.loads.len()).all(|i| has_potential(model, i)),
             dissipative_only: !drives_work
-                && problem
-                    .loads
-                    .iter()
-                    .all(|l| is_conservative(&l.kind) || is_dissipative(&l.kind)),
+                && (0..problem.loads.len())
+                    .all(|i| has_potential(model, i) || is_dissipative(&problem.loads[i].kind)),
         }
     }
 
@@ -180,12 +178,6 @@ impl Compiled {
     pub fn recursive(derivation: &Derivation) -> Compiled {
         Compiled::build(derivation, Aba::Always)
     }
-}
-
-/// Whether a load keeps the total (kinetic + potential) energy constant: springs do, since
-/// their energy is in the potential; applied forces, torques and actuators do work.
-fn is_conservative(kind: &LoadKind) -> bool {
-    matches!(kind, LoadKind::Spring { .. } | LoadKind::JointSpring { .. })
 }
 
 fn is_dissipative(kind: &LoadKind) -> bool {
