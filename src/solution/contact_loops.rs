@@ -133,23 +133,36 @@ fn site_rows(model: &Model, k: usize) -> Vec<usize> {
 
 /// Whether contact site `k` has a constraint row along a tangent (it rolls, not only
 /// touches) and no friction law (a rough contact may slide, as the bowling ball does at
-/// the start, and then its point does not move with the surface). A smooth contact has one
-/// row, along its normal, whatever its reaction's axis is called.
+/// the start, and then its point does not move with the surface), and is not a point that
+/// only touches, whose one row is along the normal whatever its reaction's axis is called.
 fn rolls(model: &Model, k: usize) -> bool {
     let rough = model.constraints.friction.iter().any(|f| f.site == k);
-    let rows = site_rows(model, k);
     !rough
-        && rows.len() > 1
-        && rows
+        && !touches(model, k)
+        && site_rows(model, k)
             .iter()
             .any(|&component| model.sites[k].reactions[component].axis != Axis::Normal)
+}
+
+/// Whether contact site `k` is a point that stays on a surface and may slide on it (a
+/// ladder's top on a wall), not a disc or a gear, whose point moves with the surface.
+fn touches(model: &Model, k: usize) -> bool {
+    match model.sites[k].kind {
+        SiteKind::Contact(c) => matches!(
+            model.problem.constraints.get(c).map(|c| &c.kind),
+            Some(ConstraintKind::Contact { .. })
+        ),
+        _ => false,
+    }
 }
 
 /// The normal of a smooth contact `k` that only touches: one row, no friction law.
 fn smooth_normal(model: &Model, k: usize) -> Option<Vector> {
     let rough = model.constraints.friction.iter().any(|f| f.site == k);
     match site_rows(model, k).as_slice() {
-        [component] if !rough => Some(model.sites[k].reactions[*component].direction.clone()),
+        [component] if !rough && touches(model, k) => {
+            Some(model.sites[k].reactions[*component].direction.clone())
+        }
         _ => None,
     }
 }

@@ -215,6 +215,12 @@ fn closed(model: &Model, rows: &[Expr], q: &[f64], rates: &[f64]) -> Option<Valu
         }
         model.values_at(0.0, &q, rates)
     };
+    let holds = |values: &Values| (rows.iter()).all(|row| eval(row, values).abs() < 1e-9);
+    if dependent.is_empty() {
+        // Nothing to solve for: the rows hold at `q` or nowhere near it.
+        let values = model.values_at(0.0, q, rates);
+        return holds(&values).then_some(values);
+    }
     let u0 = nalgebra::DVector::from_iterator(dependent.len(), dependent.iter().map(|&d| q[d]));
     let residual = |u: &nalgebra::DVector<f64>| {
         let values = at(u);
@@ -223,9 +229,7 @@ fn closed(model: &Model, rows: &[Expr], q: &[f64], rates: &[f64]) -> Option<Valu
     };
     let root = crate::numeric::newton_solve(residual, u0).ok()?;
     let values = at(&root.u);
-    (rows.iter())
-        .all(|row| eval(row, &values).abs() < 1e-9)
-        .then_some(values)
+    holds(&values).then_some(values)
 }
 
 #[cfg(test)]
