@@ -5,24 +5,7 @@
 //! one order of the rows, the dependent rates in full, the letters of `A x = b` free of
 //! the coordinates, and a minus sign for a negative number.
 
-use crate::support::handouts::handout_of;
-use crate::support::problem;
-
-fn handout(name: &str, method: &str, format: &str) -> String {
-    handout_of(&problem(name), method, format).expect("the handout")
-}
-
-fn has(text: &str, what: &str, name: &str) {
-    assert!(text.contains(what), "{name}: `{what}` not found");
-}
-
-fn lacks(text: &str, what: &str, name: &str) {
-    if let Some(at) = text.find(what) {
-        let end = (at + 200).min(text.len());
-        let around = text.get(at..end).unwrap_or(what);
-        panic!("{name}: `{what}` in: {around}");
-    }
-}
+use crate::support::handouts::{bundled as handout, has, lacks};
 
 /// Step 6 of a driven system states the work of its loads and the balance, not "as the
 /// energy plot shows": the rack's torque does W = T θ = 31.0119 J in 1 s (the closed form

@@ -4,24 +4,7 @@
 //! written where step 5 holds rows a reaction alone fills, the energy as T + V with its
 //! numbers, and the listed solution with its units.
 
-use crate::support::handouts::handout_of;
-use crate::support::problem;
-
-fn handout(name: &str, method: &str, format: &str) -> String {
-    handout_of(&problem(name), method, format).expect("the handout")
-}
-
-fn has(text: &str, what: &str, name: &str) {
-    assert!(text.contains(what), "{name}: `{what}` not found");
-}
-
-fn lacks(text: &str, what: &str, name: &str) {
-    if let Some(at) = text.find(what) {
-        let end = (at + 200).min(text.len());
-        let around = text.get(at..end).unwrap_or(what);
-        panic!("{name}: `{what}` in: {around}");
-    }
-}
+use crate::support::handouts::{bundled as handout, has, lacks};
 
 /// An answer's value ends its sentence, and the LaTeX starts the next one on a new line
 /// instead of running on after a quad.

@@ -97,64 +97,82 @@ pub fn choose(
         }
         constraints.notes.push(note + ".");
     }
+    constraints
+        .notes
+        .extend(rates_note(model, &dependent, &dependent_rates));
+    constraints.dependent = dependent;
+    constraints.dependent_rates = dependent_rates;
+    Ok(())
+}
+
+/// The note of step 1 on the dependent rates beyond the dependent coordinates' (with the
+/// `rate`s given for them and ignored); empty where there are none.
+fn rates_note(model: &Model, dependent: &[usize], dependent_rates: &[usize]) -> Vec<String> {
+    let problem = model.problem;
+    let names = |list: &[usize]| -> String {
+        list.iter()
+            .map(|&i| format!("`{}`", problem.coordinates[i].name))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut notes = Vec::new();
     let rate_only: Vec<usize> = dependent_rates
         .iter()
         .copied()
         .filter(|i| !dependent.contains(i))
         .collect();
-    if !rate_only.is_empty() {
-        let chosen: Vec<usize> = rate_only
-            .iter()
-            .copied()
-            .filter(|&i| !problem.coordinates[i].dependent_rate)
-            .collect();
-        let ignored: Vec<usize> = rate_only
-            .iter()
-            .copied()
-            .filter(|&i| problem.coordinates[i].rate != 0.0)
-            .collect();
-        if !ignored.is_empty() {
-            constraints.notes.push(format!(
-                "The `rate` given for {} is ignored: it is solved from the velocity constraints.",
-                names(&ignored)
-            ));
-        }
-        // Every dependent rate: a dependent coordinate's rate is one too (a disc's height
-        // on a cart, ḣ = 0), beside the rates only the velocity constraints fix.
-        // The rate of a dependent coordinate comes from its position constraint
-        // differentiated in time, not from a velocity constraint: said apart.
-        let rates = |of: &[usize]| {
-            let mut listed = of.to_vec();
-            listed.sort_unstable();
-            (listed.iter())
-                .map(|&i| format!("`{}'`", problem.coordinates[i].name))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        let of_positions: Vec<usize> = (dependent_rates.iter().copied())
-            .filter(|i| dependent.contains(i))
-            .collect();
-        let mut note = if of_positions.is_empty() {
-            format!(
-                "Dependent rates (solved from the velocity constraints): {}",
-                rates(&rate_only)
-            )
-        } else {
-            format!(
-                "Dependent rates: {} (the position constraints differentiated in time) and {} \
-                 (solved from the velocity constraints)",
-                rates(&of_positions),
-                rates(&rate_only)
-            )
-        };
-        if !chosen.is_empty() {
-            note.push_str(", which those constraints fix once the other rates are given");
-        }
-        constraints.notes.push(note + ".");
+    if rate_only.is_empty() {
+        return notes;
     }
-    constraints.dependent = dependent;
-    constraints.dependent_rates = dependent_rates;
-    Ok(())
+    let chosen: Vec<usize> = rate_only
+        .iter()
+        .copied()
+        .filter(|&i| !problem.coordinates[i].dependent_rate)
+        .collect();
+    let ignored: Vec<usize> = rate_only
+        .iter()
+        .copied()
+        .filter(|&i| problem.coordinates[i].rate != 0.0)
+        .collect();
+    if !ignored.is_empty() {
+        notes.push(format!(
+            "The `rate` given for {} is ignored: it is solved from the velocity constraints.",
+            names(&ignored)
+        ));
+    }
+    // Every dependent rate: a dependent coordinate's rate is one too (a disc's height
+    // on a cart, ḣ = 0), beside the rates only the velocity constraints fix.
+    // The rate of a dependent coordinate comes from its position constraint
+    // differentiated in time, not from a velocity constraint: said apart.
+    let rates = |of: &[usize]| {
+        let mut listed = of.to_vec();
+        listed.sort_unstable();
+        (listed.iter())
+            .map(|&i| format!("`{}'`", problem.coordinates[i].name))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let of_positions: Vec<usize> = (dependent_rates.iter().copied())
+        .filter(|i| dependent.contains(i))
+        .collect();
+    let mut note = if of_positions.is_empty() {
+        format!(
+            "Dependent rates (solved from the velocity constraints): {}",
+            rates(&rate_only)
+        )
+    } else {
+        format!(
+            "Dependent rates: {} (the position constraints differentiated in time) and {} \
+             (solved from the velocity constraints)",
+            rates(&of_positions),
+            rates(&rate_only)
+        )
+    };
+    if !chosen.is_empty() {
+        note.push_str(", which those constraints fix once the other rates are given");
+    }
+    notes.push(note + ".");
+    notes
 }
 
 /// Gaussian elimination on `rows` (one per constraint, one column per coordinate): the

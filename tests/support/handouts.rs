@@ -14,6 +14,26 @@ pub fn handout_of(path: &Path, method: &str, format: &str) -> Option<String> {
         .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
 }
 
+/// The handout of the bundled problem `name` by `method` in `format`; panics where it is
+/// refused.
+pub fn bundled(name: &str, method: &str, format: &str) -> String {
+    handout_of(&super::problem(name), method, format).expect("the handout")
+}
+
+/// Asserts that `text` (the handout of `name`) holds `what`.
+pub fn has(text: &str, what: &str, name: &str) {
+    assert!(text.contains(what), "{name}: `{what}` not found");
+}
+
+/// Asserts that `text` (the handout of `name`) does not hold `what`, showing where it does.
+pub fn lacks(text: &str, what: &str, name: &str) {
+    if let Some(at) = text.find(what) {
+        let end = (at + 200).min(text.len());
+        let around = text.get(at..end).unwrap_or(what);
+        panic!("{name}: `{what}` in: {around}");
+    }
+}
+
 /// The run of `mbd-tutor explain PATH --method METHOD --format FORMAT`, with `--student`
 /// for the student's handout: one for the whole suite, whichever test asks first.
 pub fn explained(path: &Path, method: &str, format: &str, student: bool) -> Output {
