@@ -130,12 +130,12 @@ fn the_inertia_rows_are_said_against_the_kinetic_diagram() {
     let text = handout(name, "motion-law", "markdown");
     has(
         &text,
-        "| inertia force of A, opposite to the kinetic diagram's |",
+        "| inertia force of A, opposite to its arrow in the kinetic diagram |",
         name,
     );
     has(
         &text,
-        "| inertia torque of B, opposite to the kinetic diagram's |",
+        "| inertia torque of B, opposite to its arrow in the kinetic diagram |",
         name,
     );
 }

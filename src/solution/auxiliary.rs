@@ -376,6 +376,13 @@ pub fn drawn_on(derivation: &Derivation, row: &Equation) -> Option<Vec<BodyId>> 
         .min_by_key(Vec::len)
 }
 
+/// The pin (or contact) at which an auxiliary row's relaxed force acts between two of the
+/// bodies the row moves, as LaTeX: the plan names the row's bodies cut there, since the
+/// force is inside them taken whole (the four-bar's B + C, cut at R).
+pub fn cut_at(derivation: &Derivation, row: &Equation) -> Option<String> {
+    inside(derivation, row).map(|(site, _, _)| crate::symbolic::latex_name(&site))
+}
+
 /// The first of Kane's rows (1-based) that moves `bodies` together as an auxiliary speed
 /// of the tree, where the reactions inside them are first said to drop out.
 fn first_row_inside(derivation: &Derivation, bodies: &[BodyId]) -> Option<usize> {

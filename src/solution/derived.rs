@@ -239,7 +239,7 @@ fn pictures(
             // forces: said so, that the two read as one statement.
             for force in &mut body.inertia {
                 if force.label.starts_with("inertia ") {
-                    force.label.push_str(", opposite to the kinetic diagram's");
+                    force.label.push_str(", opposite to its arrow in the kinetic diagram");
                 }
             }
         }
@@ -363,12 +363,13 @@ pub fn plan(derivation: &Derivation) -> Plan {
             free_body_tex: if matches!(row.sum, Sum::Constraint { .. }) {
                 Math::from(String::new())
             } else {
-                // An auxiliary row's force inside its bodies: the free body that shows it.
-                let shown = super::auxiliary::drawn_on(derivation, row);
-                Math::from(bodies_tex(
-                    derivation,
-                    shown.as_ref().unwrap_or(&row.free_body),
-                ))
+                // An auxiliary row's force inside its bodies: the bodies cut where it acts
+                // (its pair of forces is drawn on the free bodies either side).
+                let bodies = bodies_tex(derivation, &row.free_body);
+                Math::from(match super::auxiliary::cut_at(derivation, row) {
+                    Some(site) => format!("{bodies}\\text{{, cut at }}{site}"),
+                    None => bodies,
+                })
             },
             equation_tex: Math::from(super::row_names::sum_tex(derivation, &row.sum)),
             direction_tex: match (&row.direction, &row.sum) {
