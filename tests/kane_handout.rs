@@ -485,7 +485,7 @@ fn kanes_system_of_nine_unknowns_is_its_rows_not_a_pattern_of_dots() {
     // Said once: the solution in numbers names the rows without a reaction, solved first,
     // and the rows that then give the reactions; no sentence before it says so again.
     assert!(
-        step5.contains("At the initial state of step 1, in SI units, rows (1), (2), (3), (7), (8) and (9), which hold no reaction, give"),
+        step5.contains("At the initial state of step 1, rows (1), (2), (3), (7), (8) and (9), which hold no reaction, give"),
         "{step5}"
     );
     assert!(

@@ -106,9 +106,9 @@ fn a_free_body_table_gives_a_planar_inertia_torque_as_alpha_dot_i() {
     // A planar body's inertia is a moment about the normal, along which ω lies, so
     // ω × I·ω is zero; in space it stays.
     let planar = explain("validation/ten-link-chain", "newton-euler", "markdown");
-    assert!(planar.contains("| inertia torque of link4 | $-\\boldsymbol{\\alpha}^{\\mathrm{link}_{4}} \\cdot \\mathbf{I}^{\\mathrm{link}_{4}}$ | $\\text{couple}$ |"));
+    assert!(planar.contains("| inertia torque of link4, opposite to its arrow in the kinetic diagram | $-\\boldsymbol{\\alpha}^{\\mathrm{link}_{4}} \\cdot \\mathbf{I}^{\\mathrm{link}_{4}}$ | $\\text{couple}$ |"));
     let spatial = explain("validation/all-joints-3d", "newton-euler", "markdown");
-    assert!(spatial.contains("| inertia torque of D | $-\\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} - \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D}$ | $\\text{couple}$ |"));
+    assert!(spatial.contains("| inertia torque of D, opposite to its arrow in the kinetic diagram | $-\\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} - \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D}$ | $\\text{couple}$ |"));
 }
 
 /// The simplified row under the Markdown heading that starts with `heading`.

@@ -23,7 +23,7 @@ fn the_unknowns_by_column_take_the_column_s_letter_not_a_coordinate_s() {
 #[test]
 fn lagrange_s_matrix_of_five_unknowns_is_printed() {
     let text = markdown_handout("disc-in-cylinder", "lagrange");
-    let matrix = crate::support::between(&text, "In matrix form", "## Step 6");
+    let matrix = crate::support::between(&text, "in matrix form", "## Step 6");
     assert!(!matrix.contains("\\bullet"), "a pattern of dots: {matrix}");
     assert!(matrix.contains("\\begin{array}"), "{matrix}");
     // Row 3, θ's equation, holds r F_t^P: its entry in the column of F_t^P is r's multiple.

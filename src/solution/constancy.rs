@@ -115,17 +115,13 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
     }
 }
 
-/// "Yes: E stays constant. Over the motion it changes by less than 10⁻⁸ J, the accuracy of
-/// the simulation." in the markup of an answer's step: the change as the power of ten above
-/// it, since its digits are the integration's error, not the mechanics.
+/// "Yes: E stays constant, to within the accuracy of the simulation." in the markup of an
+/// answer's step: what it changes by is the integration's error, not the mechanics, and
+/// is not printed.
 fn largest_change_words(symbol: Option<&str>, change: f64) -> String {
     let symbol = symbol.map_or("it".to_string(), |s| format!("${s}$"));
     if change <= 0.0 {
         return format!("Yes: {symbol} stays constant; in the simulation it does not change.");
     }
-    let exponent = change.log10().floor() as i32 + 1;
-    format!(
-        "Yes: {symbol} stays constant. Over the motion it changes by less than \
-         $10^{{{exponent}}}\\ \\mathrm{{J}}$, the accuracy of the simulation."
-    )
+    format!("Yes: {symbol} stays constant, to within the accuracy of the simulation.")
 }

@@ -59,7 +59,7 @@ impl Setting<'_, '_, '_> {
                 }
                 _ => Label::from_tex(&format!("\\text{{{}}}", blow.name)),
             };
-            let id = format!("blow-{}", i + 1);
+            let id = format!("at-blow-{}", i + 1);
             markers.push(Marker {
                 id: id.clone(),
                 at,
