@@ -36,7 +36,7 @@ const STILL_LONGER: &[(&str, usize)] = &[
 /// through auxiliary speeds), the disc on the cart and the double pendulum by Kane, whose
 /// step 5 solves its system with numbers; the heavy top by Lagrange, whose first free body
 /// now fills page 1 and whose answers, long derivations, end page 4.
-const LAST_BROUGHT_IN: [(&str, &str); 5] = [
+const LAST_BROUGHT_IN: [(&str, &str); 4] = [
     // ("gyroscope-gimbal", "motion-law"): 5 pages again this round, in STILL_LONGER.
     ("gyroscope-gimbal", "kane"),
     ("disc-on-cart", "kane"),
