@@ -8,7 +8,9 @@ use crate::equations::Derivation;
 use crate::mechanics::{is_particle, Model, Vector};
 use crate::render::context::PartialVelocity;
 use crate::render::text::Math;
-use crate::symbolic::{add, latex_name, linear_split, roots_of_squares, simplify, Expr, Symbol};
+use crate::symbolic::{
+    add, latex_name, linear_split, roots_of_squares, simplify, ComponentKind, Expr, Symbol,
+};
 
 /// A body with its velocity's and angular velocity's partials, one per coordinate's rate.
 pub(super) type BodyPartials = (crate::problem::BodyId, Vec<Vector>, Vec<Vector>);
@@ -169,7 +171,9 @@ pub(super) fn site_partial<'r>(
             .reactions
             .iter()
             .find(|c| c.unknown(&site.name) == row.unknown);
-        let Some(component) = along else {
+        // A moment's condition is on the turning, not on the point's velocity: it is the
+        // body's partial angular velocity, in its own column.
+        let Some(component) = along.filter(|c| c.kind != ComponentKind::Moment) else {
             continue;
         };
         let weight = simplify(&add(a.iter().zip(weights).map(|(a, w)| a * w)));

@@ -160,6 +160,12 @@ fn row_unknowns(derivation: &Derivation, rows: &[SlidingRow]) -> Vec<Vec<Symbol>
         .collect()
 }
 
+/// Whether, while the contacts slide, some row gives a single unknown to start the solve
+/// from (else the rows are solved together).
+pub fn start_in_turn(derivation: &Derivation, rows: &[SlidingRow]) -> bool {
+    row_unknowns(derivation, rows).iter().any(|u| u.len() == 1)
+}
+
 /// The order in which the rows give the unknowns while the contacts slide: a row with one
 /// new unknown at a time, and what is left together.
 pub fn order_sentence(derivation: &Derivation, rows: &[SlidingRow]) -> String {

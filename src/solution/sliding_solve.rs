@@ -77,12 +77,15 @@ pub fn sliding_order(derivation: &Derivation, friction: &[SiteState]) -> Option<
     } else {
         "reactions"
     };
-    if !super::sliding_rows::sliding_rows(derivation, friction).is_empty() {
+    let rows = super::sliding_rows::sliding_rows(derivation, friction);
+    if !rows.is_empty() {
         // Step 5 prints the sliding law as the row itself and says so beside it; the
         // order of the solve is step 3's, said there once.
-        return Some(
-            "The rows, taken one at a time in step 3's order, give the values below.".to_string(),
-        );
+        let how = match super::sliding_rows::start_in_turn(derivation, &rows) {
+            true => "taken one at a time in step 3's order",
+            false => "solved together, as step 3 says",
+        };
+        return Some(format!("The rows, {how}, give the values below."));
     }
     Some(format!(
         "While the contact at {} slides, the no-slip {row} {} {does} not hold. Rows {} with the sliding {law} above give {} and the {reaction_words} {} together.",
