@@ -98,33 +98,46 @@ function measureDots() {
   return found;
 }
 
-// The share of dark pixels in each box of `boxes` (x, y, w, h in the page) of the page's
-// screenshot, read back through a canvas.
+// The pixels of a full-page screenshot (`shot`, base64 PNG) in each box (x, y, w, h in the
+// page), read back through a canvas in the page: per box, its rows of 1 where the pixel is
+// darker than `level` (of 255, averaged over the channels) and 0 elsewhere.
+async function darkPixels(page, shot, boxes, level) {
+  return page.evaluate(async ([data, boxes, level]) => {
+    const img = new Image();
+    img.src = 'data:image/png;base64,' + data;
+    await img.decode();
+    const canvas = document.createElement('canvas');
+    canvas.width = img.width; canvas.height = img.height;
+    const ctx = canvas.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    return boxes.map(([x, y, w, h]) => {
+      const [x0, y0] = [Math.max(0, Math.floor(x)), Math.max(0, Math.floor(y))];
+      const [cw, ch] = [Math.max(1, Math.ceil(w)), Math.max(1, Math.ceil(h))];
+      const px = ctx.getImageData(x0, y0, cw, ch).data;
+      const rows = [];
+      for (let r = 0; r < ch; r += 1) {
+        const row = [];
+        for (let c = 0; c < cw; c += 1) {
+          const k = 4 * (r * cw + c);
+          row.push(px[k] + px[k + 1] + px[k + 2] < 3 * level ? 1 : 0);
+        }
+        rows.push(row);
+      }
+      return rows;
+    });
+  }, [shot, boxes, level]);
+}
+
+async function fullShot(page) {
+  return (await page.screenshot({ fullPage: true })).toString('base64');
+}
+
+// The number of dark pixels in each box of `boxes` (x, y, w, h in the page), a pixel's
+// margin around it included.
 async function ink(page, boxes) {
-  const shots = [];
-  for (const [x, y, w, h] of boxes) {
-    const clip = { x: Math.max(0, x - 1), y: Math.max(0, y - 1), width: Math.max(1, w + 2), height: Math.max(1, h + 2) };
-    const png = await page.screenshot({ clip, fullPage: true });
-    shots.push(png.toString('base64'));
-  }
-  const shares = await page.evaluate(async (images) => {
-    const out = [];
-    for (const data of images) {
-      const img = new Image();
-      img.src = 'data:image/png;base64,' + data;
-      await img.decode();
-      const canvas = document.createElement('canvas');
-      canvas.width = img.width; canvas.height = img.height;
-      const ctx = canvas.getContext('2d');
-      ctx.drawImage(img, 0, 0);
-      const px = ctx.getImageData(0, 0, img.width, img.height).data;
-      let dark = 0;
-      for (let k = 0; k < px.length; k += 4) if (px[k] + px[k + 1] + px[k + 2] < 3 * 160) dark += 1;
-      out.push(dark);
-    }
-    return out;
-  }, shots);
-  return shares;
+  const around = boxes.map(([x, y, w, h]) => [x - 1, y - 1, w + 2, h + 2]);
+  const masks = await darkPixels(page, await fullShot(page), around, 160);
+  return masks.map((rows) => rows.reduce((sum, row) => sum + row.reduce((a, b) => a + b, 0), 0));
 }
 
 // For each dotted letter, the white rows between the lowest ink of its dots and the highest
@@ -144,32 +157,9 @@ async function clearances(page, found) {
   // One screenshot of the whole page, cut into the boxes in the page itself.
   const masks = async (css) => {
     const style = await page.addStyleTag({ content: css });
-    const shot = (await page.screenshot({ fullPage: true })).toString('base64');
+    const shot = await fullShot(page);
     await style.evaluate((e) => e.remove());
-    return page.evaluate(async ([data, boxes]) => {
-      const img = new Image();
-      img.src = 'data:image/png;base64,' + data;
-      await img.decode();
-      const canvas = document.createElement('canvas');
-      canvas.width = img.width; canvas.height = img.height;
-      const ctx = canvas.getContext('2d');
-      ctx.drawImage(img, 0, 0);
-      return boxes.map(([x, y, w, h]) => {
-        const [x0, y0] = [Math.max(0, Math.floor(x)), Math.max(0, Math.floor(y))];
-        const [cw, ch] = [Math.max(1, Math.ceil(w)), Math.max(1, Math.ceil(h))];
-        const px = ctx.getImageData(x0, y0, cw, ch).data;
-        const rows = [];
-        for (let r = 0; r < ch; r += 1) {
-          const row = [];
-          for (let c = 0; c < cw; c += 1) {
-            const k = 4 * (r * cw + c);
-            row.push(px[k] + px[k + 1] + px[k + 2] < 3 * 200 ? 1 : 0);
-          }
-          rows.push(row);
-        }
-        return rows;
-      });
-    }, [shot, boxes]);
+    return darkPixels(page, shot, boxes, 200);
   };
   const hideDots = 'mover > :nth-child(2) { visibility: hidden !important; }';
   const hideLetters = 'mover > :first-child { visibility: hidden !important; }';
