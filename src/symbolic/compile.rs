@@ -5,6 +5,7 @@ use super::expr::{Expr, Func, Node, Symbol};
 use super::fast_hash::FastMap;
 use super::instr::Instr;
 use super::runs::Runs;
+use super::simplify::key::{Key, KeyMap};
 use std::ops::Neg;
 
 /// A straight-line program that evaluates a list of expressions.
@@ -23,7 +24,9 @@ pub struct Program {
 struct Compiler {
     program: Program,
     by_pointer: FastMap<*const Node, usize>,
-    by_value: FastMap<Expr, usize>,
+    /// Keyed by a bounded prefix of each tree and compared pointer-first: a node met for
+    /// the first time costs a lookup, not a walk of everything under it.
+    by_value: KeyMap<Key, usize>,
     constant_slots: FastMap<u64, usize>,
     constant_values: Vec<f64>,
     // Keeps every compiled node alive so that pointers stay unique.
@@ -44,7 +47,7 @@ impl Program {
                 runs: Runs::default(),
             },
             by_pointer: FastMap::default(),
-            by_value: FastMap::default(),
+            by_value: KeyMap::default(),
             constant_slots: FastMap::default(),
             constant_values: Vec::new(),
             alive: Vec::new(),
@@ -141,11 +144,11 @@ impl Compiler {
         if let Some(slot) = self.by_pointer.get(&pointer) {
             return *slot;
         }
-        let slot = match self.by_value.get(e) {
+        let slot = match self.by_value.get(&Key(e.clone())) {
             Some(slot) => *slot,
             None => {
                 let slot = self.build(e);
-                self.by_value.insert(e.clone(), slot);
+                self.by_value.insert(Key(e.clone()), slot);
                 slot
             }
         };
@@ -371,6 +374,38 @@ mod tests {
             .filter(|i| matches!(i, Instr::Func(..)))
             .count();
         assert_eq!(calls, 8);
+    }
+
+    #[test]
+    fn equal_trees_built_apart_are_computed_once_and_long_common_prefixes_kept_apart() {
+        // Sums of 40 terms L_i sin(q + i), the second with its last term changed: the two
+        // agree on far more nodes than a key looks at, and must stay two values.
+        let q = Expr::coord("q", 0);
+        let sum = |last: i64| {
+            crate::symbolic::build::add((1..=40).map(|i| {
+                let shift = if i == 40 { last } else { i };
+                Expr::constant(&format!("L{i}")) * sin(q.clone() + Expr::int(shift))
+            }))
+        };
+        let (a, b, again) = (sum(40), sum(41), sum(40));
+        assert!(!std::rc::Rc::ptr_eq(&a.0, &again.0));
+        let mut inputs = vec![Symbol::Coord("q".into(), 0)];
+        inputs.extend((1..=40).map(|i| Symbol::Const(format!("L{i}").into())));
+        let x: Vec<f64> = (0..inputs.len()).map(|k| 0.1 + 0.07 * k as f64).collect();
+        let mut values = Values::new();
+        for (s, v) in inputs.iter().zip(&x) {
+            values.set(s.clone(), *v);
+        }
+        let twice = Program::compile(&inputs, &[a.clone(), b.clone(), again]);
+        let got = twice.eval(&x);
+        // Checked against the tree walk: the last terms differ by L40 (sin(q+41) − sin(q+40)).
+        assert!((got[0] - eval(&a, &values)).abs() < 1e-12);
+        assert!((got[1] - eval(&b, &values)).abs() < 1e-12);
+        assert!((got[0] - got[1]).abs() > 1e-3);
+        assert_eq!(got[2], got[0]);
+        // The copy built apart costs no instruction of its own.
+        let once = Program::compile(&inputs, &[a, b]);
+        assert_eq!(twice.operation_count(), once.operation_count());
     }
 
     fn pow_test(q: &Expr) -> Expr {

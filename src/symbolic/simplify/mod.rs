@@ -20,7 +20,7 @@
 //! rewrite thus shrinks the sum, so the passes end; [`Options::max_passes`] bounds them
 //! anyway.
 
-mod key;
+pub(crate) mod key;
 mod memo;
 mod pairs;
 mod pythagoras;
