@@ -127,17 +127,7 @@ pub fn steps(
     let model = &derivation.model;
     let problem = model.problem;
     let ratios = ratios(derivation, k)?;
-    let states: Vec<Values> = (states.iter())
-        .map(|&(t, q)| {
-            let mut rates = vec![0.0; q.len()];
-            rates[k] = 0.7;
-            let at = model.values_at(t, q, &rates);
-            for (i, c) in &ratios {
-                rates[*i] = 0.7 * eval(c, &at);
-            }
-            model.values_at(t, q, &rates)
-        })
-        .collect();
+    let states = at_states(derivation, k, &ratios, states);
     let states = states.as_slice();
     let (q, qd) = (
         problem.coordinate_symbol(k, 0),
@@ -147,17 +137,7 @@ pub fn steps(
     let bodies = crate::equations::energy_terms(model);
     let kinetic = simplify(&add(bodies.iter().map(|b| b.kinetic())));
     let v = simplify(&crate::equations::potential(model));
-    let reduced = simplify(&substitute(&kinetic, &|s| {
-        let Symbol::Coord(name, 1) = s else {
-            return None;
-        };
-        let i = problem
-            .coordinates
-            .iter()
-            .position(|c| c.name.as_str() == &**name)?;
-        let (_, c) = ratios.iter().find(|(j, _)| *j == i)?;
-        Some(c * &rate)
-    }));
+    let reduced = rates_put_in(derivation, &ratios, &kinetic, &rate);
     let mass = partial(&partial(&reduced, &qd).ok()?, &qd).ok()?;
     let dm = along(derivation, k, &ratios, m)?;
     let dv = along(derivation, k, &ratios, &v)?;
@@ -199,11 +179,6 @@ pub fn steps(
             )
         })
         .collect();
-    let mut singular = Vec::new();
-    for (_, c) in &ratios {
-        vanishing(c, &mut singular);
-    }
-    vanishing(m, &mut singular);
     let relations: Vec<String> = (model.constraints.relations.iter())
         .map(|(_, relation)| format!("${}$", relation.latex()))
         .collect();
@@ -268,30 +243,7 @@ pub fn steps(
         "that is, the equation of motion free of the reactions:",
         format!("{} \\, {qdd_tex} = {}", factored(m), latex_collected(f)),
     ));
-    if !singular.is_empty() {
-        let at_state = states.first();
-        let away = at_state.is_some_and(|s| singular.iter().all(|b| eval(b, s).abs() > 1e-9));
-        let list: Vec<String> = singular
-            .iter()
-            .map(|b| format!("${} \\neq 0$", latex_collected(b)))
-            .collect();
-        let zero: Vec<String> = singular
-            .iter()
-            .map(|b| format!("${} = 0$", latex_collected(b)))
-            .collect();
-        let tail = match away {
-            true => " The state of the small oscillations is away from there.",
-            false => "",
-        };
-        out.push(step(
-            format!(
-                "These forms hold wherever {}; where {}, ${q_tex}$ does not fix the other rates.{tail}",
-                list.join(" and "),
-                zero.join(" or ")
-            ),
-            String::new(),
-        ));
-    }
+    out.extend(singular_note(&ratios, m, states, &q_tex));
     Some(out)
 }
 
@@ -356,4 +308,79 @@ pub fn k_words(energies: bool, q_tex: &str, rate_tex: &str) -> String {
         true => format!("$K = \\mathrm{{d}}^{{2}} V/\\mathrm{{d}} {q_tex}^{{2}}$, minus the derivative of the right side with respect to ${q_tex}$ (its term in ${rate_tex}^{{2}}$ adds nothing at rest)"),
         false => format!("$K$ is minus the derivative of the right side with respect to ${q_tex}$"),
     }
+}
+
+/// The states to check at: each of `states` with the independent rate 0.7 and the others
+/// as the constraints give them.
+fn at_states(
+    derivation: &Derivation,
+    k: usize,
+    ratios: &[(usize, Expr)],
+    states: &[(f64, &[f64])],
+) -> Vec<Values> {
+    let model = &derivation.model;
+    (states.iter())
+        .map(|&(t, q)| {
+            let mut rates = vec![0.0; q.len()];
+            rates[k] = 0.7;
+            let at = model.values_at(t, q, &rates);
+            for (i, c) in ratios {
+                rates[*i] = 0.7 * eval(c, &at);
+            }
+            model.values_at(t, q, &rates)
+        })
+        .collect()
+}
+
+/// `e` with every dependent rate written through the independent one, `rate`.
+fn rates_put_in(derivation: &Derivation, ratios: &[(usize, Expr)], e: &Expr, rate: &Expr) -> Expr {
+    let problem = derivation.model.problem;
+    simplify(&substitute(e, &|s| {
+        let Symbol::Coord(name, 1) = s else {
+            return None;
+        };
+        let i = (problem.coordinates.iter()).position(|c| c.name.as_str() == &**name)?;
+        let (_, c) = ratios.iter().find(|(j, _)| *j == i)?;
+        Some(c * rate)
+    }))
+}
+
+/// Where the forms of the dependent rates and of `M` are singular, `y ≠ 0`, and whether
+/// the state of the oscillations (the first of `states`) is away from there.
+fn singular_note(
+    ratios: &[(usize, Expr)],
+    m: &Expr,
+    states: &[Values],
+    q_tex: &str,
+) -> Option<AnswerStep> {
+    let mut singular = Vec::new();
+    for (_, c) in ratios {
+        vanishing(c, &mut singular);
+    }
+    vanishing(m, &mut singular);
+    if singular.is_empty() {
+        return None;
+    }
+    let at_state = states.first();
+    let away = at_state.is_some_and(|s| singular.iter().all(|b| eval(b, s).abs() > 1e-9));
+    let list: Vec<String> = singular
+        .iter()
+        .map(|b| format!("${} \\neq 0$", latex_collected(b)))
+        .collect();
+    let zero: Vec<String> = singular
+        .iter()
+        .map(|b| format!("${} = 0$", latex_collected(b)))
+        .collect();
+    let tail = match away {
+        true => " The state of the small oscillations is away from there.",
+        false => "",
+    };
+    Some(step(
+        format!(
+            "These forms hold wherever {}; where {}, ${q_tex}$ does not fix the other rates.{tail}",
+            list.join(" and "),
+            zero.join(" or ")
+        ),
+        String::new(),
+    ))
 }
