@@ -59,6 +59,7 @@ mod pipeline;
 mod planner;
 mod questions;
 mod recursive;
+mod reduced_period;
 mod render;
 mod repetition;
 mod resal;

@@ -76,6 +76,7 @@ mod potential_tex;
 mod question_answers;
 mod question_steps;
 mod reaction_frames;
+mod reduced;
 mod rejected;
 mod relations;
 mod relaxed;

@@ -44,7 +44,9 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         for (i, ((question, answer), view)) in questions.enumerate() {
             view.steps = match &question.kind {
                 QuestionKind::Period { .. } => {
-                    let steps = period_steps(derivation, worked.period_system.as_ref(), answer);
+                    let states = super::reduced::on_motion(answer, answers);
+                    let kane = worked.period_system.as_ref();
+                    let steps = period_steps(derivation, kane, answer, &states);
                     // The period is said where the steps end with it, not also above them.
                     if !steps.is_empty() && said_in(answer, &steps) {
                         view.values_tex.clear();
@@ -195,13 +197,16 @@ fn period_steps(
     derivation: &Derivation,
     kane: Option<&LinearSystem>,
     answer: &Answer,
+    states: &[(f64, &[f64])],
 ) -> Vec<AnswerStep> {
     let Some(found) = &answer.period else {
         return Vec::new();
     };
     let mut steps = match found.coordinates.as_slice() {
         [one] => kane
-            .and_then(|system| one_freedom(derivation, system, answer, one, found.natural))
+            .and_then(|system| {
+                one_freedom(derivation, system, (answer, states), one, found.natural)
+            })
             .unwrap_or_default(),
         _ => Vec::new(),
     };
@@ -260,7 +265,7 @@ fn period_steps(
 fn one_freedom(
     derivation: &Derivation,
     system: &LinearSystem,
-    answer: &Answer,
+    (answer, states): (&Answer, &[(f64, &[f64])]),
     name: &str,
     natural: f64,
 ) -> Option<Vec<AnswerStep>> {
@@ -325,19 +330,14 @@ fn one_freedom(
         Some(s) => format!(", where {}", s.sentence().replace(" giving ", " give ")),
         None => others_tex(problem, answer, &omega2, k),
     };
-    let words = match derivation.method {
-        crate::equations::Method::Kane => "Kane's equation for its speed",
-        _ => "the equations of step 5 with the reactions and the other accelerations eliminated",
-    };
     let period = simplify(&(&m1 / &k1));
-    Some(vec![
-        step(
-            format!("One degree of freedom is left, ${q_tex}$. Its equation of motion free of the reactions ({words}) is"),
-            format!("{} \\, {qdd_tex} = {}", factored(m), latex_collected(f)),
-        ),
+    let (mut steps, energies) =
+        super::reduced::equation_steps(derivation, system, (row, k), (m, f), states);
+    let k_words = super::reduced::k_words(energies, &q_tex, &latex(&problem.coordinate_expr(k, 1)));
+    steps.extend([
         step(
             format!(
-                "For small motions about this state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$, where $M$ is the coefficient of ${qdd_tex}$ and $K$ is minus the derivative of the right side with respect to ${q_tex}$, both evaluated at {}{}:",
+                "For small motions about this state, $M \\, \\delta {qdd_tex} + K \\, \\delta {q_tex} = 0$, where $M$ is the coefficient of ${qdd_tex}$ and {k_words}, both evaluated at {}{}:",
                 if zero_tex.is_empty() { "the state".to_string() } else { format!("${}$", zero_tex.join(",\\ ")) },
                 others.trim_end_matches(',')
             ),
@@ -352,7 +352,8 @@ fn one_freedom(
                 factored(&period)
             ),
         ),
-    ])
+    ]);
+    Some(steps)
 }
 
 /// K/M written with M's common factor cancelled against K and the sum left in M kept
