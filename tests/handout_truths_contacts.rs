@@ -263,9 +263,9 @@ fn sticking_writes_its_no_slip_row_and_cites_the_row_it_stands_in_for() {
         assert!(!friction.contains("no-slip condition ("), "{friction}");
         let said = between(friction, "Assume that it sticks", "Solved with it");
         assert!(said.contains(row), "{name}: {row} in {said}");
-        let heading = cited_heading(friction, "in place of row (");
+        let heading = cited_heading(&text, "in place of row (");
         assert!(heading.contains("sliding friction"), "{name}: {heading}");
-        let again = cited_heading(friction, "the sliding law, row (");
+        let again = cited_heading(&text, "the sliding law, row (");
         assert!(again.contains("sliding friction"), "{name}: {again}");
     }
 }
