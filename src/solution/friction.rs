@@ -70,7 +70,8 @@ pub fn views(
             let mu = latex(&site.coefficient);
             // In the plane, a sliding contact's no-slip row gave way to the sliding law in
             // step 5 (`super::sliding_rows`): the condition is written here where it is used.
-            let replaced = state.mode == Mode::Slip && site.normal.len() == 1 && state.friction() > 0.0;
+            let replaced =
+                state.mode == Mode::Slip && site.normal.len() == 1 && state.friction() > 0.0;
             let written = site
                 .stick
                 .iter()
@@ -82,16 +83,25 @@ pub fn views(
                 })
                 .collect::<Vec<_>>()
                 .join(", \\qquad ");
-            let (tangential, n) = state.failed_stick.as_ref().map_or(
-                (&state.tangential[..], state.normal),
-                |f| (&f.tangential[..], f.normal),
-            );
+            let (tangential, n) = state
+                .failed_stick
+                .as_ref()
+                .map_or((&state.tangential[..], state.normal), |f| {
+                    (&f.tangential[..], f.normal)
+                });
             let stick = Stick {
                 row_tex: written,
                 replaced,
                 needed: super::friction_needed::needed(derivation, site, tangential, n),
             };
-            let steps = steps(state, &names, (&normal, &size, noun), &rows, (&mu, disc), &stick);
+            let steps = steps(
+                state,
+                &names,
+                (&normal, &size, noun),
+                &rows,
+                (&mu, disc),
+                &stick,
+            );
             FrictionView {
                 site: super::force_labels::place(&site.name),
                 coefficient: fixed(state.coefficient),
@@ -267,7 +277,9 @@ fn steps(
         Some(_) => {
             out.push(step(check_words, check(tangential, n, false)));
             let law = match stick.replaced && !stick.row_tex.is_empty() {
-                true => format!("the sliding law, row {rows}, stands in place of the no-slip condition"),
+                true => {
+                    format!("the sliding law, row {rows}, stands in place of the no-slip condition")
+                }
                 false => format!("row {rows} is replaced by the sliding law"),
             };
             out.push(step(

@@ -146,7 +146,8 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
 pub(super) fn is_guide(model: &Model, site: &crate::mechanics::Site) -> bool {
     let problem = model.problem;
     let joined = |a, b| {
-        (problem.joints.iter()).any(|j| (j.child == a && j.parent == b) || (j.child == b && j.parent == a))
+        (problem.joints.iter())
+            .any(|j| (j.child == a && j.parent == b) || (j.child == b && j.parent == a))
     };
     matches!(site.kind, crate::mechanics::SiteKind::Closure(_)) && joined(site.child, site.parent)
 }
