@@ -232,3 +232,107 @@ fn the_struck_rod_shows_its_blow() {
     let statement = between(&text, "# ", "## Step 1");
     assert!(statement.contains("right end"), "{statement}");
 }
+
+/// The row a sentence cites as `row (k)`: step 5's heading of row k.
+fn cited_heading<'t>(text: &'t str, sentence_part: &str) -> &'t str {
+    let at = text.find(sentence_part).expect(sentence_part) + sentence_part.len();
+    let k: String = text[at..]
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    let step5 = between(text, "## Step 5", "## Step 6");
+    let heading = format!("**{k}. ");
+    between(step5, &heading, "\n")
+}
+
+#[test]
+fn sticking_writes_its_no_slip_row_and_cites_the_row_it_stands_in_for() {
+    // The ladder: the floor's slip velocity ẋ + l θ̇ c_θ (step 1), differentiated:
+    // ẍ + l c_θ θ̈ − l s_θ θ̇² = 0. The collar: its slip velocity along the rod is ẋ, so ẍ = 0.
+    for (name, method, row) in [
+        (
+            "ladder-about-to-slip",
+            "motion-law",
+            "l c_{\\theta} \\ddot{\\theta} + \\ddot{x} - l s_{\\theta} \\dot{\\theta}^{2} = 0",
+        ),
+        ("collar-on-rough-rod", "kane", "\\ddot{x} = 0"),
+    ] {
+        let text = handout(name, method);
+        let friction = between(&text, "**Friction at", "## Step 6");
+        // No row number is called the no-slip condition: step 5 prints the sliding law.
+        assert!(!friction.contains("no-slip condition ("), "{friction}");
+        let said = between(friction, "Assume that it sticks", "Solved with it");
+        assert!(said.contains(row), "{name}: {row} in {said}");
+        let heading = cited_heading(&text, "in place of row (");
+        assert!(heading.contains("sliding friction"), "{name}: {heading}");
+        let again = cited_heading(&text, "the sliding law, row (");
+        assert!(again.contains("sliding friction"), "{name}: {again}");
+    }
+}
+
+#[test]
+fn the_friction_needed_at_rest_is_derived_in_symbols() {
+    // The collar at rest with ẍ = ÿ = 0: ΣF_x gives F_x = −P cos β, ΣF_y gives
+    // F_y = m g − P sin β; it sticks while P cos β ≤ μ (P sin β − m g), since F_y < 0.
+    let (m, p, beta, mu, g) = (1.0, 20.0, 40f64.to_radians(), 0.3, 9.81);
+    let (needed, pressing) = (p * beta.cos(), p * beta.sin() - m * g);
+    assert!(needed > mu * pressing, "{needed} {pressing}");
+    let collar = handout("collar-on-rough-rod", "kane");
+    let friction = between(&collar, "**Friction at", "## Step 6");
+    let symbols = between(friction, "In symbols", "In numbers");
+    assert!(
+        symbols.contains("F^{S}_{x} = -P \\cos(\\beta), \\quad F^{S}_{y} = -P \\sin(\\beta) + m g"),
+        "{symbols}"
+    );
+    assert!(
+        symbols.contains("= P \\cos(\\beta) \\le \\mu \\left\\vert F^{S}_{y}\\right\\vert  = \\mu (P \\sin(\\beta) - m g)"),
+        "{symbols}"
+    );
+    // And the numbers that follow are those of the symbols.
+    assert!(
+        friction.contains(&format!("{needed:.4}")),
+        "{needed} in {friction}"
+    );
+}
+
+#[test]
+fn a_collar_on_a_rod_is_guided_and_closes_no_loop() {
+    let text = handout("collar-on-rough-rod", "kane");
+    for absent in ["loop", "s_{\\theta} = 0"] {
+        assert!(!text.contains(absent), "{absent} in {text}");
+    }
+    let step1 = between(&text, "## Step 1", "## Step 2");
+    assert!(
+        step1.contains("the rod keeps the collar on its line"),
+        "{step1}"
+    );
+    assert!(
+        step1.contains("the rod stops the collar turning"),
+        "{step1}"
+    );
+    assert!(step1.contains("| $\\theta = 0$ |"), "{step1}");
+    assert!(
+        step1.contains("S is the point of the collar on the rod."),
+        "{step1}"
+    );
+    // A four-bar's closure joins a chain of bodies: a loop.
+    let four_bar = handout("four-bar", "kane");
+    assert!(four_bar.contains("loop closure at R"), "{four_bar}");
+}
+
+#[test]
+fn every_coordinate_of_a_joint_has_its_motion_and_the_rolling_rate_is_derived_first() {
+    let text = handout("bowling-ball", "motion-law");
+    let step1 = between(&text, "## Step 1", "## Step 2");
+    for q in ["y", "\\theta"] {
+        let row = between(step1, &format!("| ${q}$ |"), "\n");
+        assert!(row.contains("as for $x$"), "{row}");
+    }
+    // ẋ at the switch: v₀ − μ g t at t = 2v₀/(7μg) is 5v₀/7, derived, then the simulation.
+    let answers = between(&text, "## Answers", "\u{0}");
+    let derived = answers.find("\\frac{5 v_{0}}{7}").expect("5v0/7");
+    let checked = answers
+        .find("gives the same rate")
+        .expect("the simulation's check");
+    assert!(derived < checked, "{answers}");
+}

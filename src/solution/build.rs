@@ -130,10 +130,14 @@ fn coordinates(problem: &Problem, shown: &[(String, String)]) -> Vec<Coordinate>
                 name_tex: Math::from(latex(&problem.coordinate_expr(i, 0))),
                 rate_tex: Math::from(latex(&problem.coordinate_expr(i, 1))),
                 description: MarkupLine::from(c.description.clone().unwrap_or_default()),
-                // One line per joint: said at its first coordinate only.
-                joint: match (problem.coordinates[..i].iter()).any(|b| b.joint == c.joint) {
-                    true => MarkupLine::default(),
-                    false => {
+                // One line per joint, said at its first coordinate; the joint's other
+                // coordinates point back to it.
+                joint: match (problem.coordinates[..i].iter()).position(|b| b.joint == c.joint) {
+                    Some(first) => MarkupLine::from(format!(
+                        "as for ${}$",
+                        latex(&problem.coordinate_expr(first, 0))
+                    )),
+                    None => {
                         MarkupLine::from(super::joint_words::joint_words(problem, c.joint, shown))
                     }
                 },

@@ -31,6 +31,16 @@ pub(super) fn signs_turned(row: Expr) -> Expr {
     }
 }
 
+/// The angle `q` where `e` is `sin q` and `q` starts at zero: the row holds it at zero.
+fn held_angle(problem: &crate::problem::Problem, e: &Expr) -> Option<String> {
+    (0..problem.coordinates.len())
+        .find(|&i| {
+            problem.coordinates[i].initial.abs() < 1e-12
+                && *e == crate::symbolic::sin(problem.coordinate_expr(i, 0))
+        })
+        .map(|i| latex(&problem.coordinate_expr(i, 0)))
+}
+
 /// Step 1: every constraint row as an equation (position level when it has one), and the
 /// notes on what the constraints solve for.
 pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>) {
@@ -50,6 +60,10 @@ pub fn constraints(derivation: &Derivation) -> (Vec<ConstraintView>, Vec<String>
             let shown = signs_turned(roots_of_squares(&simplify(expression), &sign));
             // A velocity constraint collected by the rates, as Σ (coefficient) q̇_j = 0.
             let mut equation_tex = format!("{} = 0", latex_collected(&shown));
+            // sin q = 0 with q at zero: the angle held at zero, as a course writes it.
+            if let Some(q) = held_angle(model.problem, &shown) {
+                equation_tex = format!("{q} = 0");
+            }
             // A position constraint holds a distance, not a component: it has no direction;
             // a loop's closure holds a point in two directions, each row named by its own.
             let closure = matches!(row.origin, RowOrigin::Site { site, .. }

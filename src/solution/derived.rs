@@ -84,6 +84,10 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
         solution.dependent_speeds =
             super::constrained::dependent_speeds(derivation, &worked.q0, &worked.rates0);
     });
+    // Each row as step 5 simplified it, before the sliding law takes a no-slip row's place.
+    let stick_rows: Vec<String> = (solution.equations.iter())
+        .map(|e| e.simplified_tex.as_str().to_string())
+        .collect();
     super::sliding_rows::replace_rows(solution, derivation, &sliding);
     // After the sliding law has taken its no-slip row's place: "the constraint rows after
     // it" only where one is.
@@ -123,7 +127,7 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     solution
         .initial_values
         .extend(tensions(derivation, q0, rates0, &initial.reactions));
-    solution.friction = super::friction::views(derivation, &initial.friction);
+    solution.friction = super::friction::views(derivation, &initial.friction, &stick_rows);
     super::sliding_solve::replace_order(&mut solution.solve_notes, derivation, &initial.friction);
     solution.reactions = reactions(derivation, (q0, rates0), &initial.reactions);
     (solution.solve_notes).extend(MarkupLine::all(super::normal_sense::notes(

@@ -12,7 +12,15 @@ use crate::symbolic::{fixed, latex, Expr};
 
 /// One view per friction site of `derivation`, from its state in `friction` (the solution
 /// at the initial state).
-pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionView> {
+///
+/// `stick_rows` holds step 5's simplified row for each row of the derivation as it was
+/// before the sliding law took a no-slip row's place: the no-slip condition written out
+/// where the assumption that the contact sticks uses it.
+pub fn views(
+    derivation: &Derivation,
+    friction: &[SiteState],
+    stick_rows: &[String],
+) -> Vec<FrictionView> {
     let model = &derivation.model;
     model
         .constraints
@@ -60,7 +68,40 @@ pub fn views(derivation: &Derivation, friction: &[SiteState]) -> Vec<FrictionVie
                 .collect();
             let rows = rows.join(" and ");
             let mu = latex(&site.coefficient);
-            let steps = steps(state, &names, (&normal, &size, noun), &rows, (&mu, disc));
+            // In the plane, a sliding contact's no-slip row gave way to the sliding law in
+            // step 5 (`super::sliding_rows`): the condition is written here where it is used.
+            let replaced =
+                state.mode == Mode::Slip && site.normal.len() == 1 && state.friction() > 0.0;
+            let written = site
+                .stick
+                .iter()
+                .filter_map(|r| {
+                    let i = derivation.rows.iter().position(
+                        |row| matches!(&row.sum, Sum::Constraint { name } if *name == r.name),
+                    )?;
+                    stick_rows.get(i).filter(|t| !t.is_empty()).cloned()
+                })
+                .collect::<Vec<_>>()
+                .join(", \\qquad ");
+            let (tangential, n) = state
+                .failed_stick
+                .as_ref()
+                .map_or((&state.tangential[..], state.normal), |f| {
+                    (&f.tangential[..], f.normal)
+                });
+            let stick = Stick {
+                row_tex: written,
+                replaced,
+                needed: super::friction_needed::needed(derivation, site, tangential, n),
+            };
+            let steps = steps(
+                state,
+                &names,
+                (&normal, &size, noun),
+                &rows,
+                (&mu, disc),
+                &stick,
+            );
             FrictionView {
                 site: super::force_labels::place(&site.name),
                 coefficient: fixed(state.coefficient),
@@ -129,12 +170,24 @@ fn law_tex(names: &[String], normal: &str, mu: &str, state: &SiteState) -> Strin
         .join(", \\qquad ")
 }
 
+/// What the assumption that a contact sticks uses: its no-slip condition, whether step 5
+/// printed the sliding law in its place, and the friction it needs in symbols.
+struct Stick {
+    /// The no-slip row, simplified, `… = 0`.
+    row_tex: String,
+    /// Whether step 5's row is the sliding law in its place.
+    replaced: bool,
+    /// The sticking solution in symbols, where it comes out short.
+    needed: Option<super::friction_needed::Needed>,
+}
+
 fn steps(
     state: &SiteState,
     names: &[String],
     (normal, size, noun): (&str, &str, &str),
     rows: &str,
     (mu, disc): (&str, bool),
+    stick: &Stick,
 ) -> Vec<FrictionStep> {
     let magnitude = magnitude_tex(names);
     let wheel = if disc {
@@ -175,34 +228,62 @@ fn steps(
     let (tangential, n) = first.map_or((&state.tangential[..], state.normal), |f| {
         (&f.tangential[..], f.normal)
     });
-    out.push(step(
-        format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip condition {rows} holds. Solved with it:"),
-        forces(names, tangential, normal, n),
-    ));
+    if stick.replaced && !stick.row_tex.is_empty() {
+        // Step 5 printed the sliding law as row (k): the no-slip condition is written here.
+        out.push(step(
+            format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}: its slip velocity then stays zero, and so does its derivative, the no-slip condition, which stands in place of row {rows} (the sliding law):"),
+            stick.row_tex.clone(),
+        ));
+        out.push(step(
+            "Solved with it and the other rows of step 5:",
+            forces(names, tangential, normal, n),
+        ));
+    } else {
+        out.push(step(
+            format!("The {noun} is at rest relative to the surface at this state. Assume that it sticks{wheel}, so that the no-slip condition {rows} holds. Solved with it:"),
+            forces(names, tangential, normal, n),
+        ));
+    }
+    if let Some(needed) = &stick.needed {
+        out.push(step(
+            "In symbols, the same rows with every rate zero (at rest) give",
+            needed.forces.clone(),
+        ));
+    }
     if state.shared {
         out.push(step(
             format!("Sticking here, the equations are one short: statics fixes only what the sticking contacts carry together, not how they share it. The split taken is the one that keeps every {noun} as far from slipping (the ratio of its friction force to μ times its normal force) as the others, so that the {noun}s stick if any split could hold them."),
             "",
         ));
     }
+    if let Some(needed) = &stick.needed {
+        out.push(step(
+            "Friction can give that much only if it is at most μ times the normal force; in symbols:",
+            needed.condition.clone(),
+        ));
+    }
+    let check_words = match stick.needed {
+        Some(_) => "In numbers:",
+        None => "Check that friction can give that much, at most μ times the normal force:",
+    };
     match first {
         None => {
-            out.push(step(
-                "Check that friction can give that much, at most μ times the normal force:",
-                check(tangential, n, true),
-            ));
+            out.push(step(check_words, check(tangential, n, true)));
             out.push(step(
                 format!("The check holds: the {noun} sticks, and the solution stands."),
                 "",
             ));
         }
         Some(_) => {
+            out.push(step(check_words, check(tangential, n, false)));
+            let law = match stick.replaced && !stick.row_tex.is_empty() {
+                true => {
+                    format!("the sliding law, row {rows}, stands in place of the no-slip condition")
+                }
+                false => format!("row {rows} is replaced by the sliding law"),
+            };
             out.push(step(
-                "Check that friction can give that much, at most μ times the normal force:",
-                check(tangential, n, false),
-            ));
-            out.push(step(
-                format!("The check fails: friction cannot hold the {noun}, and it slips. Solve again with sliding friction, μ times the normal force, opposing the motion that would start (along the force that sticking needed): row {rows} is replaced by the sliding law"),
+                format!("The check fails: friction cannot hold the {noun}, and it slips. Solve again with sliding friction, μ times the normal force, opposing the motion that would start (along the force that sticking needed): {law}"),
                 law_tex(names, normal, mu, state),
             ));
             out.push(step("Solved with it (the values below):", solved));

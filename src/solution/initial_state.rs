@@ -56,7 +56,13 @@ pub fn assembled(
 fn marks_note(problem: &Problem, marks: &[Source]) -> Option<String> {
     // What a dependent value satisfies: the loop's closure when the constraints are
     // closures only, else the constraints.
-    let satisfied = if problem.constraints.is_empty() && !problem.closures.is_empty() {
+    // A closure that joins a body straight to its joint's parent (a collar on a fixed
+    // rod) is a guide, and closes no loop.
+    let guide = |c: &crate::problem::Joint| {
+        (problem.joints.iter()).any(|j| j.child == c.child && j.parent == c.parent)
+    };
+    let loops = problem.closures.iter().any(|c| !guide(c));
+    let satisfied = if problem.constraints.is_empty() && loops {
         "the loop's closure"
     } else {
         "the constraints"

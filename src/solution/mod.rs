@@ -39,6 +39,7 @@ mod force_words;
 mod frames;
 mod free_bodies;
 mod friction;
+mod friction_needed;
 mod handout;
 mod impact;
 mod in_numbers;

@@ -117,9 +117,12 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
                     (true, false) => text(format!("no slip at {}", place(&s.name))),
                 }
             }
-            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => {
-                text(format!("loop closure at {}", place(&s.name)))
-            }
+            Some(s) if matches!(s.kind, SiteKind::Closure(_)) => match row.map(|r| &r.origin) {
+                Some(RowOrigin::Site { component, .. }) if is_guide(model, s) => {
+                    text(guide_words(model, s, *component))
+                }
+                _ => text(format!("loop closure at {}", place(&s.name))),
+            },
             Some(s) => text(format!("constraint at {}", place(&s.name))),
             None => text(format!("constraint {name}")),
         },
@@ -135,6 +138,43 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
         }
         Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
         None => text(format!("constraint {name}")),
+    }
+}
+
+/// Whether closure `site` joins a body straight to the body its own joint hangs it from
+/// (a collar on a fixed rod): no chain of bodies closes a loop there; it is a guide.
+pub(super) fn is_guide(model: &Model, site: &crate::mechanics::Site) -> bool {
+    let problem = model.problem;
+    let joined = |a, b| {
+        (problem.joints.iter())
+            .any(|j| (j.child == a && j.parent == b) || (j.child == b && j.parent == a))
+    };
+    matches!(site.kind, crate::mechanics::SiteKind::Closure(_)) && joined(site.child, site.parent)
+}
+
+/// What a guide's row holds, by its reaction component: the rod keeps the collar on its
+/// line (a force), stops it turning (a moment).
+fn guide_words(model: &Model, site: &crate::mechanics::Site, component: usize) -> String {
+    use crate::symbolic::ComponentKind;
+    let guide = match place(&site.name) {
+        words if words.starts_with("the ") => words,
+        letter => format!("the guide at {letter}"),
+    };
+    let body = super::joint_words::body_words(model.problem, site.child);
+    let closure = match site.kind {
+        crate::mechanics::SiteKind::Closure(k) => model.problem.closures.get(k),
+        _ => None,
+    };
+    let sliding = closure.is_some_and(|c| {
+        matches!(
+            c.kind,
+            crate::problem::JointKind::Prismatic | crate::problem::JointKind::Cylindrical
+        )
+    });
+    match site.reactions.get(component).map(|c| c.kind) {
+        Some(ComponentKind::Moment) => format!("{guide} stops {body} turning"),
+        _ if sliding => format!("{guide} keeps {body} on its line"),
+        _ => format!("{guide} holds {body} at its pin"),
     }
 }
 

@@ -131,6 +131,10 @@ pub fn point_notes(model: &Model, names: &[(String, String)]) -> Vec<String> {
                 crate::mechanics::SiteKind::Contact(_) => {
                     format!("{letter} is the point of contact at the {name}.")
                 }
+                _ if super::row_names::is_guide(model, site) => format!(
+                    "{letter} is the point of {} on the {name}.",
+                    super::joint_words::body_words(model.problem, site.child)
+                ),
                 _ => format!("{letter} is the point where the loop closes, the {name}."),
             })
         })

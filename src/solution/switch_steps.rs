@@ -181,7 +181,7 @@ fn step(text: impl Into<String>, math: impl Into<String>) -> AnswerStep {
 }
 
 /// The constants, the initial coordinates and rates.
-fn initial_values(problem: &Problem) -> Values {
+pub(super) fn initial_values(problem: &Problem) -> Values {
     let mut v = Values::new();
     for c in &problem.constants {
         v.set(Symbol::Const(c.name.as_str().into()), c.value);
@@ -409,6 +409,10 @@ fn steps_for(
                 latex(&then),
                 number(value)
             ),
+        ));
+        steps.push(step(
+            "The simulation from the initial state gives the same rate at that instant.",
+            String::new(),
         ));
     }
     steps
