@@ -300,29 +300,17 @@ impl Obstacles {
         self.take(chosen)
     }
 
-    /// Places a label of `size` that must stay beside `anchor` (an angle's name by its
-    /// arc, a unit vector's by its arrow's tip): the first free spot at a small gap around
-    /// it, most like `toward` first; else the free one nearest to it within `reach`; else,
-    /// never further off, the spot at the smallest gap that meets least. Returns its centre
-    /// and takes its room.
-    pub fn place_beside(&mut self, anchor: P2, toward: f64, size: P2, reach: f64) -> P2 {
+    /// A free spot for a label of `size` that should stay beside `anchor` (an angle's
+    /// name by its arc, a unit vector's by its arrow's tip): the first free spot at a
+    /// small gap around it, most like `toward` first; else the free one nearest to it
+    /// within `reach`; `None` when nothing close is free (then the label is placed as any
+    /// other, off what it would lie over). Takes its room.
+    pub fn place_beside(&mut self, anchor: P2, toward: f64, size: P2, reach: f64) -> Option<P2> {
         let half = Self::half_of(size);
-        let gaps = [2.0, 6.0, 12.0];
-        if let Some(free) = self.free_near(anchor, toward, size, &gaps) {
-            return self.take(free);
-        }
-        if let Some(free) = self.free_within(anchor, half, reach) {
-            return self.take(free);
-        }
-        let chosen = gaps
-            .iter()
-            .flat_map(|&gap| Self::around(anchor, toward, half, gap))
-            .min_by_key(|b| self.cost(b))
-            .unwrap_or(Box2 {
-                center: anchor,
-                half,
-            });
-        self.take(chosen)
+        let free = self
+            .free_near(anchor, toward, size, &[2.0, 6.0, 12.0])
+            .or_else(|| self.free_within(anchor, half, reach))?;
+        Some(self.take(free))
     }
 
     /// The box of half size `half` that meets nothing and whose edge is nearest to

@@ -109,41 +109,56 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
                 }
             }
             JointKind::Free => {
-                let p: [P3; 3] = std::array::from_fn(|i| {
-                    let mut e = [0.0; 3];
-                    e[i] = 1.0;
-                    n.in_ground(joint.parent, &e)
-                });
-                // x, y, z as the legs of a box from the parent's point: along x, then y,
-                // then up z to the body's point.
-                let mut from = base;
-                for (k, along) in p.iter().enumerate() {
-                    let to = if k == 2 {
-                        at
-                    } else {
-                        add(from, scale(*along, value(k)))
-                    };
-                    push(
-                        k,
-                        Some(Gauge::Distance {
-                            from,
-                            to,
-                            along: *along,
-                        }),
-                    );
-                    from = to;
-                }
-                // The first turn (a heading about the vertical) drawn at the foot of the
-                // body's point on the plane across its axis; the others at the point.
-                let first = joint.sequence.first().map_or(2, |a| usize::from(*a));
-                let foot = sub(at, scale(p[first], dot(sub(at, base), p[first])));
-                let values = [value(3), value(4), value(5)];
-                for (k, gauge) in euler(n, joint, (foot, at), values, size) {
-                    push(3 + k, gauge);
+                let values: [f64; 6] = std::array::from_fn(value);
+                for (k, gauge) in free(n, joint, (base, at), values, size) {
+                    push(k, gauge);
                 }
             }
             _ => {}
         }
+    }
+    out
+}
+
+/// A free joint's six marks: x, y, z as the legs of a box from the parent's point
+/// `base` (along x, then y, then up z to the body's point `at`), then its three turns
+/// (see [`euler`]), the first (a heading about the vertical) drawn at the foot of the
+/// body's point on the plane across its axis, the others at the point.
+fn free(
+    n: &Numbers,
+    joint: &crate::problem::Joint,
+    (base, at): (P3, P3),
+    values: [f64; 6],
+    size: f64,
+) -> Vec<(usize, Option<Gauge>)> {
+    let p: [P3; 3] = std::array::from_fn(|i| {
+        let mut e = [0.0; 3];
+        e[i] = 1.0;
+        n.in_ground(joint.parent, &e)
+    });
+    let mut out = Vec::new();
+    let mut from = base;
+    for (k, along) in p.iter().enumerate() {
+        let to = if k == 2 {
+            at
+        } else {
+            add(from, scale(*along, values[k]))
+        };
+        out.push((
+            k,
+            Some(Gauge::Distance {
+                from,
+                to,
+                along: *along,
+            }),
+        ));
+        from = to;
+    }
+    let first = joint.sequence.first().map_or(2, |a| usize::from(*a));
+    let foot = sub(at, scale(p[first], dot(sub(at, base), p[first])));
+    let turns = [values[3], values[4], values[5]];
+    for (k, gauge) in euler(n, joint, (foot, at), turns, size) {
+        out.push((3 + k, gauge));
     }
     out
 }

@@ -64,18 +64,15 @@ impl Painter {
                 Beside::Near => (self.obstacles)
                     .free_near(anchor, toward, size, &NEAR_A_CURL)
                     .map(|b| self.obstacles.take(b)),
-                Beside::Arc(center) => self.beside_arc(anchor, toward, size, center),
-                Beside::Spot | Beside::Axis => None,
+                Beside::Arc(center) => self
+                    .beside_arc(anchor, toward, size, center)
+                    .or_else(|| (self.obstacles).place_beside(anchor, toward, size, NEAR_AN_ARC)),
+                Beside::Axis => (self.obstacles).place_beside(anchor, toward, size, NEAR_A_TIP),
+                Beside::Spot => None,
             };
-            let close = matches!(beside, Beside::Point(_) | Beside::Caption(_));
+            let close = matches!(beside, Beside::Point(_) | Beside::Caption(_) | Beside::Axis);
             let at = match pushed {
                 Some(at) => at,
-                None if matches!(beside, Beside::Axis) => {
-                    (self.obstacles).place_beside(anchor, toward, size, NEAR_A_TIP)
-                }
-                None if matches!(beside, Beside::Arc(_)) => {
-                    (self.obstacles).place_beside(anchor, toward, size, NEAR_AN_ARC)
-                }
                 None if close => (self.obstacles).place_close(anchor, toward, size, CAPTION_GAPS),
                 None => self.obstacles.place(anchor, toward, size),
             };
