@@ -120,7 +120,9 @@ pub fn simulation(
     }
     let time = Label::math("t", "(s)");
     plots.retain(|plot| !plot.3.is_empty());
-    let plots_in_row = if plots.len() == 4 { 4 } else { 3 };
+    // One or two plots share a row, wide enough to read at print size; three or four,
+    // narrower, rather than one alone on a row of its own.
+    let plots_in_row = plots.len().clamp(2, 4);
     solution.simulation.plots_in_row = plots_in_row;
     for (kind, title, y_label, series) in plots {
         // Drawn by the renderer, in the format asked.

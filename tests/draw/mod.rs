@@ -542,6 +542,7 @@ mod commands;
 mod handouts;
 mod labels;
 mod leaders;
+mod marked;
 mod overlap;
 mod placement;
 mod readable;

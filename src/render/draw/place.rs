@@ -300,6 +300,19 @@ impl Obstacles {
         self.take(chosen)
     }
 
+    /// A free spot for a label of `size` that should stay beside `anchor` (an angle's
+    /// name by its arc, a unit vector's by its arrow's tip): the first free spot at a
+    /// small gap around it, most like `toward` first; else the free one nearest to it
+    /// within `reach`; `None` when nothing close is free (then the label is placed as any
+    /// other, off what it would lie over). Takes its room.
+    pub fn place_beside(&mut self, anchor: P2, toward: f64, size: P2, reach: f64) -> Option<P2> {
+        let half = Self::half_of(size);
+        let free = self
+            .free_near(anchor, toward, size, &[2.0, 6.0, 12.0])
+            .or_else(|| self.free_within(anchor, half, reach))?;
+        Some(self.take(free))
+    }
+
     /// The box of half size `half` that meets nothing and whose edge is nearest to
     /// `anchor`, no further than `reach` from it, on a fine grid round the anchor (the
     /// gaps between lines that the sixteen directions of [`Obstacles::around`] miss).

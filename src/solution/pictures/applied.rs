@@ -4,7 +4,8 @@
 use super::build::Setting;
 use crate::plan::Source;
 use crate::problem::{BodyId, LoadKind};
-use crate::render::draw::{Arrow, Kind, Label, Marker, Role};
+use crate::render::draw::{Arrow, Kind, Label, Marker, Role, Shape};
+use crate::symbolic::latex;
 
 impl Setting<'_, '_, '_> {
     /// The forces the problem applies (a pull), as the statement's figure shows them: each
@@ -23,6 +24,53 @@ impl Setting<'_, '_, '_> {
                 seen.push(i);
                 out.extend(self.action_arrows(action, markers));
             }
+        }
+        out
+    }
+
+    /// The angle of each applied force written by its size and angle (a rope's pull `P`
+    /// at `β` above the rod): an arc at its point from the line the angle is measured
+    /// from (dashed) to the force, named by the angle's symbol.
+    pub(super) fn load_angles(&self) -> Vec<Shape> {
+        use super::numbers::{add, cross, scale, unit};
+        use crate::plan::ActionKind;
+        let n = self.numbers;
+        let problem = self.problem();
+        let mut seen = Vec::new();
+        let mut out = Vec::new();
+        for action in &self.derivation.actions {
+            let (Source::Load(i), ActionKind::Force { offset, .. }) = (action.source, &action.kind)
+            else {
+                continue;
+            };
+            let Some(polar) = super::load_symbols::polar(&problem.loads[i].kind) else {
+                continue;
+            };
+            if seen.contains(&i) {
+                continue;
+            }
+            seen.push(i);
+            let axis_of = |k: u8| {
+                let mut e = [0.0; 3];
+                e[usize::from(k)] = 1.0;
+                n.in_ground(polar.frame, &e)
+            };
+            let (from, toward) = (axis_of(polar.axes.0), axis_of(polar.axes.1));
+            let Some(axis) = unit(cross(from, toward)) else {
+                continue;
+            };
+            let center = n.point_on(action.body, &n.local(offset));
+            out.push(Shape::Dashed {
+                from: center,
+                to: add(center, scale(from, 0.3 * self.size)),
+            });
+            out.push(Shape::Angle {
+                center,
+                from,
+                axis,
+                angle: n.scalar(&polar.angle),
+                label: Label::from_tex(&latex(&polar.angle)),
+            });
         }
         out
     }

@@ -195,7 +195,7 @@ impl Setting<'_, '_, '_> {
                 })
                 .collect();
             let origin = super::triads::beside(n, body, self.size)
-                .unwrap_or_else(|| n.vector(&model.bodies[body.0].origin.position));
+                .unwrap_or_else(|| super::triads::within(n, body));
             shapes.push(Shape::Triad {
                 origin: (body != BodyId::GROUND).then_some(origin),
                 axes,
@@ -224,6 +224,8 @@ impl Setting<'_, '_, '_> {
             shapes.extend(joint_symbols::joint(self.numbers, j, self.size));
         }
         shapes.extend(super::gauges::shapes(self.numbers, self.size));
+        shapes.extend(self.load_angles());
+        shapes.extend(super::gauges::named_lengths(self.numbers, self.size));
         shapes.extend(super::velocities::velocities(self.numbers, self.size));
         self.triads(&mut shapes);
         let mut markers = self.markers(&bodies, true);

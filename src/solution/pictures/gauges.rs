@@ -95,7 +95,7 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
                     2,
                     (!held).then(|| Gauge::Angle {
                         center: at,
-                        from: planar_from(n, joint.child, x, y),
+                        from: planar_from(n, joint.child, (x, y), size),
                         axis: [0.0, 0.0, 1.0],
                         angle: value(2),
                         reference: 0.25 * size,
@@ -103,8 +103,15 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
                 );
             }
             JointKind::Spherical => {
-                if let Some(gauge) = nutation(n, joint, at, size) {
-                    push(1, Some(gauge));
+                let values = [value(0), value(1), value(2)];
+                for (k, gauge) in euler(n, joint, (at, at), values, size) {
+                    push(k, gauge);
+                }
+            }
+            JointKind::Free => {
+                let values: [f64; 6] = std::array::from_fn(value);
+                for (k, gauge) in free(n, joint, (base, at), values, size) {
+                    push(k, gauge);
                 }
             }
             _ => {}
@@ -113,11 +120,63 @@ pub fn gauges(n: &Numbers, size: f64) -> Vec<Gauged> {
     out
 }
 
+/// A free joint's six marks: x, y, z as the legs of a box from the parent's point
+/// `base` (along x, then y, then up z to the body's point `at`), then its three turns
+/// (see [`euler`]), the first (a heading about the vertical) drawn at the foot of the
+/// body's point on the plane across its axis, the others at the point.
+fn free(
+    n: &Numbers,
+    joint: &crate::problem::Joint,
+    (base, at): (P3, P3),
+    values: [f64; 6],
+    size: f64,
+) -> Vec<(usize, Option<Gauge>)> {
+    let p: [P3; 3] = std::array::from_fn(|i| {
+        let mut e = [0.0; 3];
+        e[i] = 1.0;
+        n.in_ground(joint.parent, &e)
+    });
+    let mut out = Vec::new();
+    let mut from = base;
+    for (k, along) in p.iter().enumerate() {
+        let to = if k == 2 {
+            at
+        } else {
+            add(from, scale(*along, values[k]))
+        };
+        out.push((
+            k,
+            Some(Gauge::Distance {
+                from,
+                to,
+                along: *along,
+            }),
+        ));
+        from = to;
+    }
+    let first = joint.sequence.first().map_or(2, |a| usize::from(*a));
+    let foot = sub(at, scale(p[first], dot(sub(at, base), p[first])));
+    let turns = [values[3], values[4], values[5]];
+    for (k, gauge) in euler(n, joint, (foot, at), turns, size) {
+        out.push((3 + k, gauge));
+    }
+    out
+}
+
 /// The parent's unit vector a planar joint's angle is drawn from: `x`, or `y` where the
 /// child's line (its farthest key point from its centre) lies along its own y axis (a
 /// ladder whose angle is measured from the vertical), so that the arc ends on the body as
-/// drawn. The angle turns either into the other by the same amount.
-fn planar_from(n: &Numbers, child: BodyId, x: P3, y: P3) -> P3 {
+/// drawn. A wheel's line is its spoke, along its own x axis, not the line to its contact
+/// (a disc's turn is drawn at the disc, from its spoke's line, not along the line to the
+/// cylinder's axis). The angle turns either into the other by the same amount.
+fn planar_from(n: &Numbers, child: BodyId, (x, y): (P3, P3), size: f64) -> P3 {
+    let wheel = match super::bodies::body(n, child, size) {
+        Shape::Body { parts, .. } => parts.iter().any(|p| matches!(p, Shape::Wheel { .. })),
+        _ => false,
+    };
+    if wheel {
+        return x;
+    }
     let center = n.local(&n.model.bodies[child.0].center_offset);
     let line = shapes::key_points(n, child)
         .into_iter()
@@ -133,30 +192,56 @@ fn planar_from(n: &Numbers, child: BodyId, x: P3, y: P3) -> P3 {
     }
 }
 
-/// The middle angle of a proper Euler sequence (`zxz`, a top's θ): the angle between the
-/// parent's axis of the first turn and the child's, drawn between the two about the line
-/// of nodes; `None` for another sequence, or while the two axes are one.
-fn nutation(n: &Numbers, joint: &crate::problem::Joint, at: P3, size: f64) -> Option<Gauge> {
-    let [first, _, last] = joint.sequence.as_slice() else {
-        return None;
+/// The three turns of a joint's body-fixed sequence `a b c` (a top's `zxz`, a coin's
+/// `zxy`), each drawn as a textbook draws it: the first about the parent's `a` axis from
+/// its `b` axis (a precession or heading from n̂_x to the line of nodes), at `first_at`;
+/// the second about that turned `b` axis from the parent's `a` axis (a tilt or lean from
+/// the vertical), at `at`; the third about the body's `c` axis from where the second left
+/// the `a` axis (the `b` axis, the line of nodes, where `a` is `c`), at the point of that
+/// axis nearest the body's mass centre (a top's spin at its centre, not at its tip). Each
+/// with its coordinate's index in the joint; `None` where its axes leave it undrawn (a
+/// sequence of other than three turns).
+fn euler(
+    n: &Numbers,
+    joint: &crate::problem::Joint,
+    (first_at, at): (P3, P3),
+    values: [f64; 3],
+    size: f64,
+) -> Vec<(usize, Option<Gauge>)> {
+    let [a, b, c] = joint.sequence.as_slice() else {
+        return (0..3).map(|k| (k, None)).collect();
     };
-    if first != last {
-        return None;
-    }
-    let mut e = [0.0; 3];
-    e[usize::from(*first)] = 1.0;
-    let (fixed, turned) = (
-        unit(n.in_ground(joint.parent, &e))?,
-        unit(n.in_ground(joint.child, &e))?,
-    );
-    let nodes = unit(super::numbers::cross(fixed, turned))?;
-    Some(Gauge::Angle {
-        center: at,
-        from: fixed,
-        axis: nodes,
-        angle: dot(fixed, turned).clamp(-1.0, 1.0).acos(),
-        reference: 0.3 * size,
-    })
+    let [a, b, c] = [*a, *b, *c].map(usize::from);
+    let parent: [P3; 3] = std::array::from_fn(|i| {
+        let mut e = [0.0; 3];
+        e[i] = 1.0;
+        n.in_ground(joint.parent, &e)
+    });
+    let once = parent.map(|e| rotate(e, parent[a], values[0]));
+    let twice = once.map(|e| rotate(e, once[b], values[1]));
+    let third_from = if a == c { twice[b] } else { twice[a] };
+    let center = n.vector(&n.model.bodies[joint.child.0].center.position);
+    let spin_at = add(at, scale(twice[c], dot(sub(center, at), twice[c])));
+    let turn = |center: P3, from: P3, axis: P3, angle: f64, reference: f64| {
+        unit(axis).map(|axis| Gauge::Angle {
+            center,
+            from,
+            axis,
+            angle,
+            reference,
+        })
+    };
+    vec![
+        (
+            0,
+            turn(first_at, parent[b], parent[a], values[0], 0.3 * size),
+        ),
+        (1, turn(at, parent[a], once[b], values[1], 0.3 * size)),
+        (
+            2,
+            turn(spin_at, third_from, twice[c], values[2], 0.2 * size),
+        ),
+    ]
 }
 
 /// The arc of a relative angle `q` at a joint at `at`, from where the child's line lay at
@@ -240,4 +325,35 @@ pub(super) fn shapes(n: &Numbers, size: f64) -> Vec<Shape> {
         }
     }
     shapes
+}
+
+/// The lengths the statement names on a body: a mass centre written as one constant
+/// along one of the body's unit vectors from its origin (a top's `h` from its tip), as a
+/// dimension line from the origin to the centre named by the constant. None for a
+/// centre written any other way (a rod's `L/2`, whose length the bar shows).
+pub(super) fn named_lengths(n: &Numbers, size: f64) -> Vec<Shape> {
+    let model = n.model;
+    let problem = model.problem;
+    let mut out = Vec::new();
+    for body in problem.body_ids() {
+        let [(frame, _, c)] = problem.body(body).center.terms.as_slice() else {
+            continue;
+        };
+        let Some(symbol) = c.as_symbol() else {
+            continue;
+        };
+        if *frame != body || !matches!(symbol, crate::symbolic::Symbol::Const(_)) {
+            continue;
+        }
+        let from = n.vector(&model.bodies[body.0].origin.position);
+        let to = n.vector(&model.bodies[body.0].center.position);
+        if norm(sub(to, from)) > 1e-6 * size {
+            out.push(Shape::Distance {
+                from,
+                to,
+                label: Label::from_tex(&latex(c)),
+            });
+        }
+    }
+    out
 }

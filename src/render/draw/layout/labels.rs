@@ -23,6 +23,9 @@ pub(super) enum Beside {
     Caption(usize),
     /// A unit vector's name: close by its arrow's tip, never far from it.
     Axis,
+    /// An angle's name: beside the middle of its arc, never far from it, and not inside
+    /// a body but the one its arc is drawn about (whose centre this is).
+    Arc(P2),
     /// A couple's label: close by its curl where there is room (within 36 px), else the
     /// nearest free spot.
     Near,
@@ -30,6 +33,12 @@ pub(super) enum Beside {
 
 /// How far from its anchor a couple's label is first looked for.
 const NEAR_A_CURL: [f64; 4] = [4.0, 12.0, 22.0, 36.0];
+
+/// How far (px) from its arrow's tip a unit vector's name may stand.
+const NEAR_A_TIP: f64 = 16.0;
+
+/// How far (px) from the middle of its arc an angle's name may stand.
+const NEAR_AN_ARC: f64 = 22.0;
 
 /// How many of the gaps around its point a caption may take (up to 22 px from it).
 const CAPTION_GAPS: usize = 3;
@@ -55,7 +64,11 @@ impl Painter {
                 Beside::Near => (self.obstacles)
                     .free_near(anchor, toward, size, &NEAR_A_CURL)
                     .map(|b| self.obstacles.take(b)),
-                Beside::Spot | Beside::Axis => None,
+                Beside::Arc(center) => self
+                    .beside_arc(anchor, toward, size, center)
+                    .or_else(|| (self.obstacles).place_beside(anchor, toward, size, NEAR_AN_ARC)),
+                Beside::Axis => (self.obstacles).place_beside(anchor, toward, size, NEAR_A_TIP),
+                Beside::Spot => None,
             };
             let close = matches!(beside, Beside::Point(_) | Beside::Caption(_) | Beside::Axis);
             let at = match pushed {
@@ -134,6 +147,21 @@ impl Painter {
                     && !(self.items.iter()).any(|item| super::beside::inside(item, b.center))
             })
             .or_else(|| spots().find(|b| self.free_of_others(b, k)))?;
+        Some(self.obstacles.take(free))
+    }
+
+    /// The first free spot for an angle's name of `size` close around the middle of its
+    /// arc (`anchor`) that lies in no body but those holding the arc's `center` (a
+    /// pinion's angle inside or beside the pinion, not on the gear it meshes with);
+    /// `None` when none is free there.
+    fn beside_arc(&mut self, anchor: P2, toward: f64, size: P2, center: P2) -> Option<P2> {
+        let foreign = |p: P2| {
+            (self.items.iter())
+                .any(|item| super::beside::inside(item, p) && !super::beside::inside(item, center))
+        };
+        let free = Obstacles::spots(anchor, toward, size)
+            .take(16 * CAPTION_GAPS)
+            .find(|b| self.obstacles.clash(b) == 0 && !foreign(b.center))?;
         Some(self.obstacles.take(free))
     }
 

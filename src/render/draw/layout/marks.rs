@@ -105,7 +105,13 @@ impl Painter {
         let middle = points[n / 2];
         let toward = (middle[1] - c[1]).atan2(middle[0] - c[0]);
         self.stroke(points, 1.0, Ink::Grey, None, false);
-        self.label(middle, toward, label, Ink::Black);
+        self.pending.push((
+            middle,
+            toward,
+            label.clone(),
+            Ink::Black,
+            super::labels::Beside::Arc(c),
+        ));
     }
 
     /// A distance from `from` to `to`: its extension lines, the arrows and the label.

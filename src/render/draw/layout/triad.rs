@@ -15,6 +15,8 @@ const LENGTH: f64 = 24.0;
 const MARGIN: f64 = 5.0;
 /// The room kept round another frame's arrows for the names at their tips.
 const NAMES: f64 = 16.0;
+/// Half the room (px) a unit vector's name takes beyond its arrow's tip.
+const TIP_NAME: f64 = 9.0;
 /// How far the origin may move, nearest first.
 const SHIFTS: [f64; 10] = [0.0, 6.0, 12.0, 18.0, 26.0, 36.0, 48.0, 62.0, 80.0, 100.0];
 
@@ -84,6 +86,10 @@ impl Painter {
                 let o = [wanted[0] + gap * t.cos(), wanted[1] + gap * t.sin()];
                 let room = Self::triad_box(o, directions);
                 let cost = self.obstacles.clash(&room)
+                    + Self::names_room(o, directions)
+                        .iter()
+                        .map(|b| self.obstacles.clash(b))
+                        .sum::<usize>()
                     + 10 * self.over_bodies(&room)
                     + 10 * self.under_ground(&room)
                     + 10 * self.over_triads(&room);
@@ -149,6 +155,21 @@ impl Painter {
             }
         }
         count
+    }
+
+    /// The room a name takes beyond each arrow's tip, so that the origin chosen leaves
+    /// every name beside its own arrow.
+    fn names_room(o: P2, directions: &[P2]) -> Vec<Box2> {
+        directions
+            .iter()
+            .map(|d| {
+                let u = p2scale(*d, 1.0 / p2norm(*d));
+                Box2 {
+                    center: p2add(o, p2scale(u, LENGTH + TIP_NAME)),
+                    half: [TIP_NAME, 0.8 * TIP_NAME],
+                }
+            })
+            .collect()
     }
 
     /// The box the arrows from `o` along `directions` take, with their heads.

@@ -24,13 +24,15 @@ const COLOURS: [RGBColor; 6] = [
 ];
 
 /// Line styles, in series order (repeating), so that lines lying on each other (E on V
-/// where T is small) and lines printed in black and white are told apart: the SVG's dash
-/// pattern and the pgfplots style of each.
-const DASHES: [(&str, &str); 4] = [
-    ("", "solid"),
-    ("9,5", "dashed"),
-    ("2,3", "densely dotted, very thick"),
-    ("12,4,2,4", "dashdotted"),
+/// where T is small) and lines printed in black and white are told apart, every line a
+/// solid stroke or long dashes, none dotted like the grid: the SVG's dash pattern, its
+/// stroke width and opacity, and the pgfplots style of each. The third (E = T + V) is a
+/// wide, half-transparent band, so that V's dashes show through it where they coincide.
+const DASHES: [(&str, u32, &str, &str); 4] = [
+    ("", 2, "", "thick, solid"),
+    ("9,5", 2, "", "thick, dashed"),
+    ("", 7, "0.45", "line width=2.6pt, opacity=0.45, solid"),
+    ("12,4,2,4", 3, "", "thick, dashdotted"),
 ];
 
 /// A plot could not be drawn.
@@ -178,10 +180,15 @@ pub fn line_plot(
 fn dashed(svg: &str, count: usize) -> String {
     let mut out = svg.to_string();
     for index in 0..count.min(COLOURS.len()) {
-        let pattern = DASHES[index % DASHES.len()].0;
-        if pattern.is_empty() {
-            continue;
+        let (pattern, width, opacity, _) = DASHES[index % DASHES.len()];
+        let mut extra = String::new();
+        if !pattern.is_empty() {
+            extra.push_str(&format!(" stroke-dasharray=\"{pattern}\""));
         }
+        if !opacity.is_empty() {
+            extra.push_str(&format!(" stroke-opacity=\"{opacity}\""));
+        }
+        let width = format!("stroke-width=\"{width}\"");
         let RGBColor(r, g, b) = COLOURS[index];
         let stroke = format!("stroke=\"#{r:02X}{g:02X}{b:02X}\"");
         let mut next = String::with_capacity(out.len() + 64);
@@ -191,11 +198,8 @@ fn dashed(svg: &str, count: usize) -> String {
             let tag = &rest[at..end];
             next.push_str(&rest[..at]);
             if tag.contains(&stroke) {
-                next.push_str(&tag.replacen(
-                    &stroke,
-                    &format!("{stroke} stroke-dasharray=\"{pattern}\""),
-                    1,
-                ));
+                let tag = tag.replacen("stroke-width=\"2\"", &width, 1);
+                next.push_str(&tag.replacen(&stroke, &format!("{stroke}{extra}"), 1));
             } else {
                 next.push_str(tag);
             }
@@ -382,7 +386,11 @@ pub fn pgfplots(
     // 31 pt under the axis, below its tick labels and the time's title, whatever the
     // plot's height left the axis. The width is the page's
     // to set (`\pgfplotsset{width=…}`), by how many plots share the row.
-    text.push_str("  height=2.9cm, grid=major,\n");
+    // Two to a row are wide, and as high as their width allows; three or four are low.
+    let height = if plots_in_row <= 2 { "5.2cm" } else { "2.9cm" };
+    text.push_str(&format!(
+        "  height={height}, grid=major, major grid style={{black!15}},\n"
+    ));
     text.push_str("  tick label style={font=\\footnotesize}, label style={font=\\small},\n");
     text.push_str(&format!(
         "  xticklabel style={{/pgf/number format/precision={}}}, yticklabel style={{/pgf/number format/precision={}}},\n",
@@ -403,7 +411,7 @@ pub fn pgfplots(
             .collect();
         text.push_str(&format!(
             "\\addplot+[mark=none, {}] coordinates {{\n",
-            DASHES[index % DASHES.len()].1
+            DASHES[index % DASHES.len()].3
         ));
         for (x, y) in thin(&finite, PGFPLOTS_MAX_POINTS) {
             text.push_str(&format!("  ({},{})\n", fixed(x), fixed(y)));
@@ -448,142 +456,7 @@ fn escape_latex(text: &str) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn sine() -> Vec<Series> {
-        let points: Vec<(f64, f64)> = (0..=500)
-            .map(|i| i as f64 * 0.01)
-            .map(|t| (t, (3.0 * t).sin()))
-            .collect();
-        let cosine: Vec<(f64, f64)> = points.iter().map(|(t, _)| (*t, (3.0 * t).cos())).collect();
-        vec![
-            Series {
-                name: Label::math("q_{1}", ""),
-                points,
-            },
-            Series {
-                name: Label::math("\\theta_{2}", ""),
-                points: cosine,
-            },
-        ]
-    }
-
-    fn time() -> Label {
-        Label::math("t", "(s)")
-    }
-
-    #[test]
-    fn svg_is_deterministic_and_labelled() {
-        let value = Label::words("value");
-        let first = line_plot("Coordinates", &time(), &value, &sine()).unwrap();
-        let second = line_plot("Coordinates", &time(), &value, &sine()).unwrap();
-        assert_eq!(first, second);
-        assert!(first.starts_with("<svg"), "{}", &first[..60]);
-        assert!(first.trim_end().ends_with("</svg>"));
-        assert!(!first.contains("e-16"), "round-off in a tick label");
-        for text in [
-            "\nCoordinates\n",
-            "\nt (s)\n",
-            "\nq₁\n",
-            "\nθ₂\n",
-            "\n0\n",
-            "<polyline",
-        ] {
-            assert!(first.contains(text), "missing {text}");
-        }
-        // The first line solid, the second dashed, in the plot and in its legend.
-        let dashed = first
-            .split("<polyline")
-            .filter(|tag| tag.contains("stroke=\"#D62728\" stroke-dasharray=\"9,5\""))
-            .count();
-        assert_eq!(dashed, 2, "the second line and its legend's sample");
-        let first_dashed = first
-            .split("<polyline")
-            .any(|tag| tag.contains("stroke=\"#1F77B4\" stroke-dasharray"));
-        assert!(!first_dashed, "the first line is solid");
-    }
-
-    #[test]
-    fn svg_of_nothing_is_an_error() {
-        let q = Label::math("q", "");
-        let empty = vec![Series {
-            name: q.clone(),
-            points: vec![(f64::NAN, 1.0)],
-        }];
-        assert!(matches!(
-            line_plot("Empty", &time(), &q, &empty),
-            Err(PlotError::NoData { .. })
-        ));
-        // A flat line still gets an axis.
-        let flat = vec![Series {
-            name: q.clone(),
-            points: vec![(0.0, 2.0), (1.0, 2.0)],
-        }];
-        assert!(line_plot("Flat", &time(), &q, &flat).is_ok());
-    }
-
-    #[test]
-    fn a_legend_of_four_to_a_row_holds_what_its_narrower_plot_fits() {
-        let named = |names: &[&str]| -> Vec<Series> {
-            names
-                .iter()
-                .map(|n| Series {
-                    name: Label::math(n, ""),
-                    points: vec![(0.0, 0.0)],
-                })
-                .collect()
-        };
-        let energies = named(&["T", "V", "E = T + V"]);
-        let angles = named(&["\\psi", "\\phi", "\\theta", "\\theta_{R}", "\\delta"]);
-        // Three to a row: every entry of a short legend on one row, at most four.
-        assert_eq!(legend_columns(&energies, 3), 3);
-        assert_eq!(legend_columns(&angles, 3), 4);
-        // Four to a row: "E = T + V" with its sample takes more than half the row.
-        assert_eq!(legend_columns(&energies, 4), 1);
-        assert_eq!(legend_columns(&angles, 4), 3);
-    }
-
-    #[test]
-    fn pgfplots_is_thinned_and_its_labels_are_math() {
-        let energy = Label::math("E", "(J)");
-        let text = pgfplots(&time(), &energy, &sine(), 3);
-        assert!(text.starts_with("\\begin{tikzpicture}\n\\begin{axis}["));
-        assert!(!text.contains("title="), "the caption is the title");
-        assert!(text.contains("xlabel={$t$ (s)}"));
-        assert!(text.contains("ylabel={$E$ (J)}"));
-        assert!(text.contains("\\addlegendentry{$\\theta_{2}$}"));
-        // Each line its own style, which its legend entry shows.
-        assert!(text.contains("\\addplot+[mark=none, solid] coordinates"));
-        assert!(text.contains("\\addplot+[mark=none, dashed] coordinates"));
-        assert_eq!(text.matches("\\addplot").count(), 2);
-        let points = text.lines().filter(|l| l.starts_with("  (")).count();
-        assert_eq!(points, 2 * PGFPLOTS_MAX_POINTS);
-        // First and last points kept, at fixed precision: sin(15) = 0.650288...
-        assert!(text.contains("  (0,0)\n"));
-        assert!(text.contains("  (5,0.650288)\n"));
-    }
-
-    #[test]
-    fn math_labels_print_as_unicode_in_pictures() {
-        assert_eq!(unicode_of("\\theta_{12}"), "θ₁₂");
-        assert_eq!(unicode_of("(E - E_{0})/|E_{0}|"), "(E − E₀)/|E₀|");
-        assert_eq!(unicode_of("x_{\\mathrm{cart}}"), "x_cart");
-        assert_eq!(unicode_of("\\phi_{2}"), "φ₂");
-        assert_eq!(Label::math("E - E_{0}", "(J)").text, "E − E₀ (J)");
-    }
-
-    #[test]
-    fn thinning_keeps_ends() {
-        let points: Vec<(f64, f64)> = (0..10).map(|i| (i as f64, 0.0)).collect();
-        assert_eq!(
-            thin(&points, 4),
-            vec![(0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (9.0, 0.0)]
-        );
-        assert_eq!(thin(&points, 20).len(), 10);
-        assert_eq!(thin(&points, 1), vec![(0.0, 0.0), (9.0, 0.0)]);
-    }
-}
+mod tests;
 
 /// What one plot shows, format-neutral: the axes' labels, the series, and how many plots
 /// share a row of the page.
