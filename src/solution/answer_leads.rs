@@ -150,7 +150,7 @@ pub fn stops_slipping(problem: &crate::problem::Problem, site: usize) -> String 
 #[cfg(test)]
 mod tests {
     use super::mark_repeated_states;
-    use crate::render::text::{Math, MarkupLine};
+    use crate::render::text::{MarkupLine, Math};
     use crate::render::AnswerView;
 
     fn view(label: &str, question: &str, at: &str) -> AnswerView {
@@ -166,7 +166,11 @@ mod tests {
     #[test]
     fn a_state_of_an_answer_at_two_states_is_named_by_its_part() {
         let mut views = vec![
-            view("3", "Find F. During the slow precession:", "\\dot{\\psi} = 3"),
+            view(
+                "3",
+                "Find F. During the slow precession:",
+                "\\dot{\\psi} = 3",
+            ),
             view("", "During the fast precession:", "\\dot{\\psi} = 61"),
             view("4", "Find the period.", "\\dot{\\psi} = 61"),
             view("5", "Find the period.", "\\dot{\\psi} = 3"),

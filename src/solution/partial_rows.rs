@@ -196,8 +196,13 @@ pub(super) fn site_partial<'r>(
     let v_tex = match site.parent {
         crate::problem::BodyId::GROUND => v_tex,
         parent => {
-            let own = super::tex::vector_tex(model, &v.expressed_in(parent, &model.frames).map(simplify));
-            if own.len() <= v_tex.len() { own } else { v_tex }
+            let own =
+                super::tex::vector_tex(model, &v.expressed_in(parent, &model.frames).map(simplify));
+            if own.len() <= v_tex.len() {
+                own
+            } else {
+                v_tex
+            }
         }
     };
     if v_tex == "\\mathbf{0}" {
