@@ -172,19 +172,20 @@ mod tests {
                 "\\dot{\\psi} = 3",
             ),
             view("", "During the fast precession:", "\\dot{\\psi} = 61"),
-            view("4", "Find the period.", "\\dot{\\psi} = 61"),
-            view("5", "Find the period.", "\\dot{\\psi} = 3"),
+            view("4", "Find x.", "t = 9"),
+            view("5", "Find the period.", "\\dot{\\psi} = 61"),
+            view("6", "Find the period.", "\\dot{\\psi} = 3"),
         ];
         mark_repeated_states(&mut views);
         assert_eq!(
-            views[2].at_note,
+            views[3].at_note,
             "at the state of answer 3, during the fast precession"
         );
         assert_eq!(
-            views[3].at_note,
+            views[4].at_note,
             "at the state of answer 3, during the slow precession"
         );
-        assert!(views[3].at_tex.as_str().is_empty());
+        assert!(views[4].at_tex.as_str().is_empty());
         // An answer at one state is named alone.
         let mut views = vec![
             view("1", "Find x.", "t = 1"),
