@@ -180,10 +180,15 @@ fn an_answer_at_the_same_state_does_not_say_it_again() {
         &["--method", "motion-law", "--format", "markdown"],
     );
     let answers = answers(&text);
-    // Said once at the start; the energy at the start needs no new state line.
+    // Said at the start, and again where the energy is checked at two instants: its
+    // first value is at the start, which answer 2's line does not say for it.
     assert_eq!(
         answers.matches("(the initial state)").count(),
-        1,
+        2,
+        "{answers}"
+    );
+    assert!(
+        answers.contains("3. At $t = 0\\ \\mathrm{s}$ (the initial state): $E ="),
         "{answers}"
     );
     // The later energy says its instant and how it was reached, once.

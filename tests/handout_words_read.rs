@@ -19,7 +19,11 @@ fn an_answer_is_a_sentence_followed_by_its_reason() {
     );
     lacks(&latex, "\\mathrm{rad/s^{2}}$\\quad", name);
     let markdown = handout("double-pendulum-rods", "motion-law", "markdown");
-    has(&markdown, "3. $E = -7.53656\\ \\mathrm{J}$.\n", name);
+    has(
+        &markdown,
+        "3. At $t = 0\\ \\mathrm{s}$ (the initial state): $E = -7.53656\\ \\mathrm{J}$.\n",
+        name,
+    );
     let html = handout(name, "newton-euler", "html");
     lacks(&html, "</math></p>\n<p>One degree", name);
 }
@@ -135,7 +139,7 @@ fn the_inertia_rows_are_said_against_the_kinetic_diagram() {
     );
     has(
         &text,
-        "| inertia torque of B, opposite to its arrow in the kinetic diagram |",
+        "| inertia torque of B (couple), opposite to its arrow in the kinetic diagram |",
         name,
     );
 }

@@ -24,6 +24,7 @@ mod friction;
 mod gears;
 mod grade;
 mod handout_names;
+mod handout_notation;
 mod handout_pages;
 mod handout_quotes;
 mod handout_sentences;

@@ -51,18 +51,18 @@ fn a_short_inertia_force_stays_multiplied_out() {
 #[test]
 fn a_planar_inertia_torque_is_alpha_dot_i_alone() {
     let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
-    // In a plane ω × I·ω is normal to ω, so only α·I has a part along n̂z.
+    // In a plane ω × I·ω is normal to ω, so only I·α has a part along n̂z.
     let heading = "**21. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{M}_{\\mathrm{link}_{7}^{*}} \\cdot \\hat{\\mathbf{n}}_{z}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - ( \\boldsymbol{\\alpha}^{\\mathrm{link}_{7}} \\cdot \\mathbf{I}^{\\mathrm{link}_{7}} ) \\cdot \\hat{\\mathbf{n}}_{z} = 0"
+        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - ( \\mathbf{I}^{\\mathrm{link}_{7}} \\cdot \\boldsymbol{\\alpha}^{\\mathrm{link}_{7}} ) \\cdot \\hat{\\mathbf{n}}_{z} = 0"
     );
 }
 
 #[test]
 fn a_spatial_inertia_torque_keeps_the_gyroscopic_term() {
     let markdown = explain("validation/all-joints-3d", "newton-euler", "markdown");
-    let torque = "- ( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{x} = 0";
+    let torque = "- ( \\mathbf{I}^{D} \\cdot \\boldsymbol{\\alpha}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{x} = 0";
     assert!(markdown.contains(torque), "no row ends in {torque}");
 }
 
@@ -102,13 +102,13 @@ fn a_group_of_four_writes_its_inertia_forces_body_by_body() {
 }
 
 #[test]
-fn a_free_body_table_gives_a_planar_inertia_torque_as_alpha_dot_i() {
+fn a_free_body_table_gives_a_planar_inertia_torque_as_i_dot_alpha() {
     // A planar body's inertia is a moment about the normal, along which ω lies, so
     // ω × I·ω is zero; in space it stays.
     let planar = explain("validation/ten-link-chain", "newton-euler", "markdown");
-    assert!(planar.contains("| inertia torque of link4, opposite to its arrow in the kinetic diagram | $-\\boldsymbol{\\alpha}^{\\mathrm{link}_{4}} \\cdot \\mathbf{I}^{\\mathrm{link}_{4}}$ | $\\text{couple}$ |"));
+    assert!(planar.contains("| inertia torque of link4 (couple), opposite to its arrow in the kinetic diagram | $-\\mathbf{I}^{\\mathrm{link}_{4}} \\cdot \\boldsymbol{\\alpha}^{\\mathrm{link}_{4}}$ | $\\text{anywhere on } \\mathrm{link}_{4}$ |"));
     let spatial = explain("validation/all-joints-3d", "newton-euler", "markdown");
-    assert!(spatial.contains("| inertia torque of D, opposite to its arrow in the kinetic diagram | $-\\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} - \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D}$ | $\\text{couple}$ |"));
+    assert!(spatial.contains("| inertia torque of D (couple), opposite to its arrow in the kinetic diagram | $-\\mathbf{I}^{D} \\cdot \\boldsymbol{\\alpha}^{D} - \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D}$ | $\\text{anywhere on } D$ |"));
 }
 
 /// The simplified row under the Markdown heading that starts with `heading`.
@@ -150,7 +150,7 @@ fn a_contact_group_is_written_with_sin_squared_plus_cos_squared_as_one() {
     let heading = "**24. $D\\colon \\sum \\mathbf{M}_{D^{*}} \\cdot \\hat{\\mathbf{d}}_{z}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "M^{U}_{1} \\cos(q_{D2}) - ( \\boldsymbol{\\alpha}^{D} \\cdot \\mathbf{I}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
+        "M^{U}_{1} \\cos(q_{D2}) - ( \\mathbf{I}^{D} \\cdot \\boldsymbol{\\alpha}^{D} + \\boldsymbol{\\omega}^{D} \\times \\mathbf{I}^{D} \\cdot \\boldsymbol{\\omega}^{D} ) \\cdot \\hat{\\mathbf{d}}_{z} = 0"
     );
 }
 

@@ -12,7 +12,7 @@ use crate::problem::BodyId;
 use crate::symbolic::{add, Expr, Node, Symbol};
 use std::cell::RefCell;
 
-/// The inertia force `-m a*` and inertia torque `-α·I - ω×I·ω` of every body.
+/// The inertia force `-m a*` and inertia torque `-I·α - ω×I·ω` of every body.
 #[derive(Clone, Debug)]
 pub struct Inertia {
     /// Indexed by body id (`N` first, zero).

@@ -70,7 +70,7 @@ fn bare_find(question: &str) -> bool {
 /// The label a question ends with that names which of an item's answers it is ("The slow
 /// precession:", "During the fast precession:"), lower-cased and without its colon; `None`
 /// for a question, or for a time the answer's state says ("At the start:", "After 4 s:").
-fn label(question: &str) -> Option<String> {
+pub(super) fn label(question: &str) -> Option<String> {
     let last = question.trim().rsplit(". ").next()?.trim();
     let words = last.strip_suffix(':')?;
     let said = ["At ", "After ", "Find ", "Show "];
@@ -93,12 +93,18 @@ fn value_names(view: &AnswerView) -> Vec<&str> {
 }
 
 /// Whether the answer says what it found without its question: every value named
-/// (`E = 5.8 J`), or a working that leads to it; a bare number needs the question's words.
+/// (`E = 5.8 J`, a range `3 ≤ ψ̇ ≤ 3.8 rad/s`), or a working that leads to it; a bare
+/// number needs the question's words, and so does a sum (`s̈ + ẍ = 1.1 m/s²`, which the
+/// question names "the absolute acceleration of the disc's centre").
 fn named(view: &AnswerView) -> bool {
     let values = &view.values_tex;
+    let one = |v: &str| match v.split_once(" = ") {
+        Some((name, _)) => !name.contains(" + ") && !name.contains(" - "),
+        None => v.contains("\\le "),
+    };
     match values.is_empty() {
         true => !view.steps.is_empty(),
-        false => values.iter().all(|v| v.as_str().contains('=')),
+        false => values.iter().all(|v| one(v.as_str())),
     }
 }
 
@@ -177,9 +183,9 @@ mod tests {
                 false,
             ),
         ];
-        views[1].at_note = "kept constant".into();
+        views[1].at_note = "a steady motion".into();
         tighten(&mut views, true);
-        assert_eq!(views[1].at_note, "the fast precession, kept constant");
+        assert_eq!(views[1].at_note, "the fast precession, a steady motion");
         assert!(!views[1].same_state);
         // A label of values no other answer gives says nothing the values do not.
         assert!(views[2].at_note.is_empty());

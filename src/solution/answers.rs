@@ -278,7 +278,7 @@ fn at(problem: &Problem, question: &Question) -> (String, String) {
                 ));
             }
             let note = match question.kind {
-                QuestionKind::Steady { .. } => "kept constant",
+                QuestionKind::Steady { .. } => "a steady motion",
                 QuestionKind::Period { .. } => "the state the small oscillations are about",
                 _ => "the other coordinates and rates as at the start",
             };

@@ -110,7 +110,12 @@ pub fn fill(solution: &mut Solution, worked: &Worked) {
     (solution.abbreviations, solution.abbreviations_by_rule) = abbreviation_examples(printed);
     said_axes_only_where_used(solution);
     let (q0, rates0, initial) = (&worked.q0, &worked.rates0, &worked.initial);
-    let marks = super::initial_state::assembled(&mut solution.coordinates, problem, q0, rates0);
+    let marks = super::initial_state::assembled(
+        &mut solution.coordinates,
+        problem,
+        (q0, rates0),
+        &model.constraints.dependent_rates,
+    );
     if let Some(note) = marks {
         solution.constraint_notes.insert(0, MarkupLine::from(note));
     }
@@ -409,7 +414,7 @@ pub fn plan(derivation: &Derivation) -> Plan {
     let rejected_all: Vec<RejectedView> = views.into_iter().flatten().collect();
     let note = match derivation.method {
         Method::NewtonEuler => format!(
-            "Every body is a free body: {} equations per body; the unknowns are every second derivative and every reaction component.",
+            "Newton–Euler takes every body as a free body, with its force rows and its moment rows: {} equations per body; the unknowns are every second derivative and every reaction component.",
             if problem.dimension == crate::problem::Dimension::Two { 3 } else { 6 }
         ),
         Method::MotionLaw => {

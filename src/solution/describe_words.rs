@@ -76,19 +76,18 @@ pub fn fill(
     }]
 }
 
-/// The motion in words: "θ oscillates between … and … about a mean of … (amplitude …),
-/// once every τ = … s (16 times in the 2 s simulated); ψ̇ stays between … and … and keeps
-/// its sign: ψ never turns back (no loops)."
+/// The motion in words: "θ oscillates between … and … about a mean of …, once every
+/// τ = … s (16 times in the 2 s simulated); ψ̇ stays between … and … and keeps its sign:
+/// ψ never turns back (no loops)." The amplitude is among the values, not said again.
 fn sentence(problem: &Problem, (k, rates): (usize, &[usize]), found: &Description) -> String {
     let q = latex(&problem.coordinate_expr(k, 0));
     let u = unit(problem, k, 0);
     let mut words = format!(
-        "Over the {} s simulated, ${q}$ oscillates between ${}{u}$ and ${}{u}$, about a mean of ${}{u}$ (amplitude ${}{u}$)",
+        "Over the {} s simulated, ${q}$ oscillates between ${}{u}$ and ${}{u}$, about a mean of ${}{u}$",
         crate::symbolic::fixed(found.duration),
         four(found.minimum),
         four(found.maximum),
-        four(found.mean),
-        four(found.amplitude)
+        four(found.mean)
     );
     match found.period {
         Some(period) => words.push_str(&format!(

@@ -62,11 +62,15 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                         let force = force.map(|e| roots_of_squares(&as_shown(e), &sign));
                         (simplest_tex(model, &force), acts_at(model, action, &at))
                     }
-                    ActionKind::Couple { torque } => {
-                        (vector_tex(model, torque), "\\text{couple}".into())
-                    }
+                    ActionKind::Couple { torque } => (
+                        vector_tex(model, torque),
+                        anywhere_on(model, action.body, &shown),
+                    ),
                 };
                 let mut label = super::force_labels::table_label(model, action, &shown);
+                if matches!(action.kind, ActionKind::Couple { .. }) && !label.contains("couple") {
+                    label.push_str(" (couple)");
+                }
                 if let Some(other) = opposite_of(derivation, action, &vector_tex) {
                     let other = super::force_labels::shown_name(problem.body_name(other), &shown);
                     label = format!("{label}, opposite to that on {other} (Newton's third law)");
@@ -138,13 +142,24 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId, shown: &[(Stri
         return;
     }
     view.inertia.push(Force {
-        label: format!("inertia torque of {name}"),
+        label: format!("inertia torque of {name} (couple)"),
         vector_tex: Math::from(torque_tex(&symbol, model.is_planar())),
-        point_tex: "\\text{couple}".into(),
+        point_tex: Math::from(anywhere_on(model, body, shown)),
     });
 }
 
-/// Body `k`'s inertia torque, −α·I − ω × I·ω (−α·I in a plane).
+/// Where a couple acts, in the table's column of points: anywhere on its body, since its
+/// moment is the same about every point (`anywhere on A`).
+pub(super) fn anywhere_on(model: &Model, body: BodyId, shown: &[(String, String)]) -> String {
+    let name = latex_name(model.problem.body_name(body));
+    let name = match shown.iter().find(|(word, _)| *word == name) {
+        Some((_, letter)) => letter.clone(),
+        None => name,
+    };
+    format!("\\text{{anywhere on }} {name}")
+}
+
+/// Body `k`'s inertia torque, −I·α − ω × I·ω (−I·α in a plane).
 fn torque_tex(k: &str, planar: bool) -> String {
     let terms = super::long::inertia_torque_terms(k, planar);
     format!("-{}", terms.join(" - "))
@@ -176,9 +191,9 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
         return;
     }
     view.inertia.push(Force {
-        label: "inertia torque of each body k".into(),
+        label: "inertia torque of each body k (couple)".into(),
         vector_tex: Math::from(torque_tex("k", model.is_planar())),
-        point_tex: Math::from(format!("\\text{{couple}},\\; {every}")),
+        point_tex: Math::from(format!("\\text{{anywhere on }} k,\\; {every}")),
     });
 }
 

@@ -30,12 +30,14 @@ enum Source {
 
 /// Rewrites the initial values and rates of `rows` (one per coordinate of `problem`) with
 /// the assembled state `q0`, `rates0`, each with its unit and mark; returns the note that
-/// says what the marks mean, when any value is marked.
+/// says what the marks mean, when any value is marked. A rate among `dependent_rates` is
+/// solved from the constraints, and marked so, even where it comes out as the problem gave
+/// it (a rolling coin's ẏ = 0 as its ẋ).
 pub fn assembled(
     rows: &mut [CoordinateView],
     problem: &Problem,
-    q0: &[f64],
-    rates0: &[f64],
+    (q0, rates0): (&[f64], &[f64]),
+    dependent_rates: &[usize],
 ) -> Option<String> {
     let mut marks = Vec::new();
     for (i, (row, c)) in rows.iter_mut().zip(&problem.coordinates).enumerate() {
@@ -45,7 +47,10 @@ pub fn assembled(
         }
         if let Some(&rate) = rates0.get(i) {
             let unit = coordinate_unit(problem, i, 1);
-            let how = solved(c, c.dependent || c.dependent_rate);
+            let how = solved(
+                c,
+                c.dependent || c.dependent_rate || dependent_rates.contains(&i),
+            );
             row.initial_rate = value_cell(rate, c.rate, how, &unit, &mut marks);
         }
     }

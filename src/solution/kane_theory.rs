@@ -109,7 +109,7 @@ pub fn theory(derivation: &Derivation) -> Option<KaneTheory> {
     let (forces_tex, note) = if rigid {
         (
             format!("{active}, \\qquad F^{{*}}_r = \\sum_{{{b}}} \\left(\\mathbf{{v}}^{{{b}^*}}_r \\cdot {f}^{{*}}_{{{b}}} + \\boldsymbol{{\\omega}}^{{{b}}}_r \\cdot {t}^{{*}}_{{{b}}}\\right),"),
-            format!("with ${f}_{x}$ a force applied at the point ${x}$, ${t}_{b}$ a couple on body ${b}$, ${f}^{{*}}_{{{b}}} = -m_{b}\\,\\mathbf{{a}}^{{{b}^*}}$ and ${t}^{{*}}_{{{b}}} = -\\boldsymbol{{\\alpha}}^{{{b}}} \\cdot \\mathbf{{I}}^{{{b}}} - \\boldsymbol{{\\omega}}^{{{b}}} \\times \\mathbf{{I}}^{{{b}}} \\cdot \\boldsymbol{{\\omega}}^{{{b}}}$."),
+            format!("with ${f}_{x}$ a force applied at the point ${x}$, ${t}_{b}$ a couple on body ${b}$, ${f}^{{*}}_{{{b}}} = -m_{b}\\,\\mathbf{{a}}^{{{b}^*}}$ and ${t}^{{*}}_{{{b}}} = -\\mathbf{{I}}^{{{b}}} \\cdot \\boldsymbol{{\\alpha}}^{{{b}}} - \\boldsymbol{{\\omega}}^{{{b}}} \\times \\mathbf{{I}}^{{{b}}} \\cdot \\boldsymbol{{\\omega}}^{{{b}}}$."),
         )
     } else {
         (

@@ -302,7 +302,13 @@ fn energies(model: &Model) -> Vec<String> {
         });
         names.push(format!("T_{{{name}}}"));
     }
-    if !names.is_empty() {
+    // One body's kinetic energy is the system's: named T at once, not T_D and then T = T_D.
+    if let [name] = names.as_slice() {
+        let last = lines.len() - 1;
+        if let Some(rest) = lines[last].strip_prefix(name.as_str()) {
+            lines[last] = format!("T{rest}");
+        }
+    } else if !names.is_empty() {
         lines.push(format!("T = {}", names.join(" + ")));
     }
     lines.push(format!(
@@ -390,7 +396,11 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
                 (point.clone(), format!("\\mathbf{{v}}^{{{named}}}"))
             }
             ActionKind::Couple { .. } => (
-                "\\text{couple}".to_string(),
+                super::free_bodies::anywhere_on(
+                    model,
+                    action.body,
+                    &super::shown_names::shown_names(model),
+                ),
                 format!(
                     "\\boldsymbol{{\\omega}}^{{{}}}",
                     crate::symbolic::latex_name(problem.body_name(action.body))

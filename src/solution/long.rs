@@ -163,12 +163,12 @@ fn named_inertia(derivation: &Derivation, row: &Equation) -> Option<NamedInertia
     }
 }
 
-/// The terms of body `k`'s inertia torque with their sign changed, α·I and ω × I·ω; in a
-/// plane α·I alone, since there I is a moment of inertia about the normal, along which ω
-/// lies, and ω × I·ω is zero.
+/// The terms of body `k`'s inertia torque with their sign changed, I·α and ω × I·ω, as a
+/// textbook writes them; in a plane I·α alone, since there I is a moment of inertia about
+/// the normal, along which ω lies, and ω × I·ω is zero.
 pub fn inertia_torque_terms(k: &str, planar: bool) -> Vec<String> {
     let mut terms = vec![format!(
-        "\\boldsymbol{{\\alpha}}^{{{k}}} \\cdot \\mathbf{{I}}^{{{k}}}"
+        "\\mathbf{{I}}^{{{k}}} \\cdot \\boldsymbol{{\\alpha}}^{{{k}}}"
     )];
     if !planar {
         terms.push(format!(

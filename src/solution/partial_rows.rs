@@ -195,6 +195,20 @@ pub(super) fn site_partial<'r>(
         .map(|b| super::tex::shortest_tex(model, &v, b))
         .min_by_key(|t| (t.len(), t.clone()))
         .unwrap_or_else(|| super::tex::shortest_tex(model, &v, site.child));
+    // A velocity relative to a moving body in that body's own unit vectors where they write
+    // it as short: the cart's ĉ_x, not the n̂_x it equals.
+    let v_tex = match site.parent {
+        crate::problem::BodyId::GROUND => v_tex,
+        parent => {
+            let own =
+                super::tex::vector_tex(model, &v.expressed_in(parent, &model.frames).map(simplify));
+            if own.len() <= v_tex.len() {
+                own
+            } else {
+                v_tex
+            }
+        }
+    };
     if v_tex == "\\mathbf{0}" {
         return None;
     }

@@ -364,7 +364,7 @@ fn determinant_row(axis: usize) -> String {
     )
 }
 
-/// The inertia torque `−α·I − ω×I·ω` of `body` in its own unit vectors, dotted with the
+/// The inertia torque `−I·α − ω×I·ω` of `body` in its own unit vectors, dotted with the
 /// direction; `None` for a particle.
 fn torque_line(
     derivation: &Derivation,

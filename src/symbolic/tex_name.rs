@@ -1,8 +1,10 @@
 //! Names in LaTeX: the one piece of printing that the styles need as well as the
 //! printer, so it stands below both.
 
-const GREEK: [&str; 24] = [
-    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+/// The letters a name spells out, set as symbols: the Greek ones and the script `ell` (ℓ), a
+/// length as textbooks write it.
+const GREEK: [&str; 25] = [
+    "ell", "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
     "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
     "omega", "Omega",
 ];
@@ -10,7 +12,7 @@ const GREEK_UPPER: [&str; 10] = [
     "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi",
 ];
 
-/// A name in LaTeX: Greek letters spelled out become symbols, trailing digits and
+/// A name in LaTeX: Greek letters (and `ell`) spelled out become symbols, trailing digits and
 /// `_suffix` become subscripts, longer words are set upright.
 pub fn latex_name(name: &str) -> String {
     let (stem, subscript) = match name.split_once('_') {

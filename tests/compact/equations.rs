@@ -420,10 +420,10 @@ fn a_wide_system_by_value_is_printed_in_blocks_that_solve_to_the_accelerations()
 fn a_moment_about_a_bodys_own_mass_centre_has_no_moment_of_its_inertia_force() {
     // Newton–Euler's row of H's moments about H* along ĥ_y is long enough to be formed in
     // vector form; about H* itself, the arm of −m_H a^{H*} is zero, so only the inertia
-    // torque is subtracted: ĥ_y · (Σ M_{H*} − (α·I + ω × I·ω)) = 0.
+    // torque is subtracted: ĥ_y · (Σ M_{H*} − (I·α + ω × I·ω)) = 0.
     let markdown =
         crate::support::explain("validation/whipple-bicycle", &["--method", "newton-euler"]);
-    let row = "\\hat{\\mathbf{h}}_{y} \\cdot \\left( \\sum \\mathbf{M}_{H^{*}} - ( \\boldsymbol{\\alpha}^{H} \\cdot \\mathbf{I}^{H} + \\boldsymbol{\\omega}^{H} \\times \\mathbf{I}^{H} \\cdot \\boldsymbol{\\omega}^{H} ) \\right) = 0";
+    let row = "\\hat{\\mathbf{h}}_{y} \\cdot \\left( \\sum \\mathbf{M}_{H^{*}} - ( \\mathbf{I}^{H} \\cdot \\boldsymbol{\\alpha}^{H} + \\boldsymbol{\\omega}^{H} \\times \\mathbf{I}^{H} \\cdot \\boldsymbol{\\omega}^{H} ) \\right) = 0";
     assert!(markdown.contains(row), "no {row}");
     assert!(!markdown.contains("\\mathbf{r}^{H^{*} H^*}"));
 }

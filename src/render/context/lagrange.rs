@@ -23,7 +23,7 @@ pub struct LagrangeView {
 pub struct GeneralizedForceRow {
     /// The load, on its first line; empty on the others.
     pub load: String,
-    /// Where it acts, e.g. `\text{at } B^*`, or `\text{couple}`.
+    /// Where it acts, e.g. `\text{at } B^*`, or for a couple `\text{anywhere on } B`.
     pub point_tex: Math,
     /// Its partial velocity (or partial angular velocity), e.g.
     /// `\partial \mathbf{v}^{B^*} / \partial \dot{q}_{1} = L \hat{\mathbf{a}}_{x}`.

@@ -156,7 +156,8 @@ pub fn plain_of(tex: &str) -> String {
 }
 
 fn greek(name: &str) -> Option<char> {
-    const TABLE: [(&str, char); 24] = [
+    const TABLE: [(&str, char); 25] = [
+        ("ell", 'ℓ'),
         ("alpha", 'α'),
         ("beta", 'β'),
         ("gamma", 'γ'),

@@ -544,8 +544,9 @@ impl Setting<'_, '_, '_> {
             });
         }
         if unit(torque).is_some() && norm(torque) > 1e-9 * scale_of {
+            // The moment of inertia named as in the tables of step 2, `I^A` (about A*).
             let tex = if model.is_planar() {
-                format!("I^{{{name}^{{*}}}} \\alpha^{{{name}}}")
+                format!("I^{{{name}}} \\alpha^{{{name}}}")
             } else {
                 format!("\\dot{{\\mathbf{{H}}}}^{{{name}^{{*}}}}")
             };
