@@ -160,7 +160,7 @@ fn intro(
 
 /// The row of a relaxed joint (`row`, of Lagrange's rows) derived with its auxiliary
 /// coordinate; `None` for any other row. The words that let the joint give way are said
-/// in the first row of those of the same joint and kind (see [`group`]), for them all.
+/// in the first row of those of the same joint and kind (see `group`), for them all.
 /// Each expression is written as `shown` gives it.
 pub fn relaxed(
     derivation: &Derivation,
