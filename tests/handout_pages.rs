@@ -17,27 +17,26 @@ const MOST_PAGES: usize = 4;
 /// Handouts still longer than [`MOST_PAGES`], each with the most pages it may take until
 /// its text is made shorter: none may grow, and none other may pass 4 pages. The worked
 /// handouts measured on every problem once over 4 pages; the worksheets as first measured.
-/// The coin by Kane ends with three lines of its answers on page 5; the struck double
-/// pendulum by the Motion Law with its plots and one answer; the unbalanced disk by
-/// Lagrange, eleven reactions each relaxed in the same four lines, with its answers.
+/// The wheel pendulum by Kane and by Lagrange end with step 6 and the answers, half a page,
+/// on page 5; the struck double pendulum by the Motion Law with its plots and one answer;
+/// the unbalanced disk by Lagrange, eleven reactions in eleven rows, with its answers.
 const STILL_LONGER: &[(&str, usize)] = &[
     ("wheel-pendulum-kane", 5),
-    ("rolling-coin-kane", 5),
     ("wheel-pendulum-lagrange", 5),
-    ("gyroscope-gimbal-lagrange", 5),
     ("impact-double-pendulum-motion-law", 5),
     ("unbalanced-disk-shaft-lagrange", 5),
-    // Back from 4 to 5 with this round's answers and step 5 words: to bring back to 4.
-    ("gyroscope-gimbal-motion-law", 5),
 ];
 
 /// Worked handouts near [`MOST_PAGES`], set on every run: the gyroscope by the Motion Law
-/// (its statement asks for the gimbal's reaction alone) and by Kane (its four reactions
-/// through auxiliary speeds), the disc on the cart and the double pendulum by Kane, whose
-/// step 5 solves its system with numbers; the heavy top by Lagrange, whose first free body
-/// now fills page 1 and whose answers, long derivations, end page 4.
-const LAST_BROUGHT_IN: [(&str, &str); 4] = [
-    // ("gyroscope-gimbal", "motion-law"): 5 pages again this round, in STILL_LONGER.
+/// (its statement asks for the gimbal's reaction alone; its free bodies' inertia rows a
+/// line each in LaTeX) and by Kane (its four reactions through auxiliary speeds), the disc
+/// on the cart and the double pendulum by Kane, whose step 5 solves its system with
+/// numbers; the heavy top by Lagrange, whose first free body now fills page 1 and whose
+/// answers, long derivations, end page 4; the coin by Kane, its partial velocities kept on
+/// page 2 by their height.
+const LAST_BROUGHT_IN: [(&str, &str); 6] = [
+    ("gyroscope-gimbal", "motion-law"),
+    ("rolling-coin", "kane"),
     ("gyroscope-gimbal", "kane"),
     ("disc-on-cart", "kane"),
     ("double-pendulum-rods", "kane"),

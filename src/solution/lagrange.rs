@@ -155,13 +155,20 @@ pub fn row_text(
         // generalized force, then its equation at zero coordinate and rate.
         let relaxed = super::relaxed::relaxed(derivation, row, shown);
         let (intro, lines) = relaxed.map_or_else(Default::default, |r| (r.intro, r.lines));
+        // Said in full for the first reaction; the others are found as it was.
+        let first = (derivation.rows.iter())
+            .find(|r| super::relaxed::relaxed_reaction(derivation, r).is_some())
+            .is_some_and(|r| std::ptr::eq(r, row));
+        let note = match first {
+            true => "Its equation at zero auxiliary coordinate and rate:",
+            false => "Likewise:",
+        };
         return Some(RowText {
             label_tex: relaxed_tex(row),
             label: String::new(),
             intro,
             lines,
-            // Short: said for each reaction asked; the intro says what the coordinate is.
-            note: "Its equation at zero auxiliary coordinate and rate:".into(),
+            note: note.into(),
         });
     };
     let written = derivation.lagrange_terms.get(r).is_none_or(|t| t.written);
