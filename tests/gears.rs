@@ -246,38 +246,6 @@ fn a_pinion_drives_its_rack_by_every_method() {
     }
 }
 
-/// The rack's mass centre lies b below its pitch line, where the slide S holds it (on the
-/// vertical through the mass centre). The rack feels only the tooth force F N.x horizontally, so M x'' = F; about
-/// its mass centre the tooth force (b above it) turns it by −b F N.z, which only the
-/// slide's couple holds: M_z^S = b F = b M x'' (= 0.190476 N m). Along N.y the slide
-/// carries the weight, F_y^S = M g.
-#[test]
-fn the_racks_slide_holds_the_turn_of_the_tooth_force_above_its_mass_centre() {
-    let (r, i, m, t, b, g) = (0.04, 0.001, 2.0, 0.5, 0.02, 9.81);
-    let x_dd = r * t / (i + m * r * r);
-    let mut p: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(problem("rack-and-pinion")).unwrap())
-            .unwrap();
-    assert_eq!(p["constants"]["b"]["value"], serde_json::json!(b));
-    p["find"]["reactions"] = serde_json::json!(["teeth", "S"]);
-    let dir = std::env::temp_dir().join(format!("mbd-rack-slide-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("rack-slide.json");
-    std::fs::write(&path, p.to_string()).unwrap();
-    for method in METHODS {
-        let s = crate::support::Solution {
-            method: method.to_string(),
-            json: crate::support::method_json("solve", &path, method, &[]),
-        };
-        let what = |q: &str| format!("{method}: {q}");
-        assert_close(s.acc("x"), x_dd, 1e-9, 1.0, &what("x''"));
-        assert_close(s.force("teeth")[0], -m * x_dd, 1e-9, 1.0, &what("tooth force"));
-        assert_close(s.force("S")[1], m * g, 1e-9, 1.0, &what("F_y^S"));
-        assert_close(s.moment("S")[2], b * m * x_dd, 1e-9, 1.0, &what("M_z^S"));
-    }
-    std::fs::remove_dir_all(&dir).ok();
-}
-
 /// The same gear pair written in 3D (axles along z, the common axle given as `B.z`) gives
 /// the planar answers.
 #[test]
