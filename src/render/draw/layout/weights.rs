@@ -146,7 +146,7 @@ impl Painter {
     /// in a bar's stroke there (0 where no bar covers `at`).
     pub(super) fn clear_of_a_bar(&self, at: P2, u: P2) -> f64 {
         (0..=12)
-            .map(|k| f64::from(k))
+            .map(f64::from)
             .find(|&s| !self.on_a_bar(p2add(at, p2scale(u, -s)), 0.0))
             .map_or(0.0, |s| if s > 0.0 { s + 1.5 } else { 0.0 })
     }
