@@ -73,3 +73,38 @@ fn the_disc_on_the_cart_keeps_the_work_energy_balance() {
         assert_close(row[sd] + R * row[td], 0.0, 1e-7, 1.0, "no slip on the cart");
     }
 }
+
+/// The cart's mass centre lies c below its top, where the disc stands at s = 0.2 m; its
+/// slide S holds it at its origin, on the vertical through the mass centre. The cart does
+/// not turn: about its mass centre the disc's push
+/// on it, −(f, N) at (s, c), turns it by −s N + c f, the pull P and F_y^S act on the
+/// vertical through it, so the slide's couple is M_z^S = s N − c f, with N = m g (the disc
+/// does not rise) and f = m a_disc. Vertically, F_y^S = (M + m) g.
+#[test]
+fn the_carts_slide_holds_the_disc_off_its_mass_centre() {
+    let (c, s) = (0.05, 0.2);
+    let friction = MD * P / (3.0 * M + MD);
+    let mut p: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(crate::support::problem("disc-on-cart")).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(p["constants"]["c"]["value"], serde_json::json!(c));
+    assert_eq!(p["coordinates"]["s"]["initial"], serde_json::json!(s));
+    p["find"]["reactions"] = serde_json::json!(["contact", "S"]);
+    let dir = std::env::temp_dir().join(format!("mbd-cart-slide-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("cart-slide.json");
+    std::fs::write(&path, p.to_string()).unwrap();
+    for method in crate::support::METHODS {
+        let solved = crate::support::Solution {
+            method: method.to_string(),
+            json: crate::support::method_json("solve", &path, method, &[]),
+        };
+        let what = |q: &str| format!("{method}: {q}");
+        let force = solved.force("S");
+        assert_close(force[1], (M + MD) * G, 1e-9, 1.0, &what("F_y^S"));
+        let couple = s * MD * G - c * friction;
+        assert_close(solved.moment("S")[2], couple, 1e-9, 1.0, &what("M_z^S"));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

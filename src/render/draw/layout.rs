@@ -30,6 +30,8 @@ use room::Room;
 
 /// The radius of a 2D couple's arc.
 const COUPLE: f64 = 16.0;
+/// How much wider a couple's curl is drawn where straight forces act at its point too.
+const CROWDED_CURL: f64 = 1.5;
 
 pub(super) struct Painter {
     pub(super) projection: Projection,
@@ -301,10 +303,13 @@ impl Painter {
         };
         if arrow.couple && planar {
             let sense: i8 = if arrow.direction[2] >= 0.0 { 1 } else { -1 };
-            let radius = COUPLE * self.reach.min(1.4) + 7.0 * stack as f64;
+            // Round the straight forces at its point, not over their tails: wider there.
+            let rays = self.rays_at(at);
+            let round = if rays.is_empty() { 1.0 } else { CROWDED_CURL };
+            let radius = COUPLE * self.reach.min(1.4) * round + 7.0 * stack as f64;
             // Counterclockwise in N is clockwise on the page, whose y points down.
             let sweep = -f64::from(sense) * 1.5 * std::f64::consts::PI;
-            let start = self.curl_start(at, radius, sweep, &self.rays_at(at));
+            let start = self.curl_start(at, radius, sweep, &rays);
             let arc = Arc {
                 center: at,
                 radius,
@@ -350,7 +355,9 @@ impl Painter {
             // A moment vector is free: off the arrows it would cross or lie on.
             self.free_couple(at, u, length, arrow.kind == super::scene::Kind::Inertia)
         } else if pushes {
-            p2add(at, p2scale(u, -length))
+            // Its head at the body's edge, not hidden in a bar's stroke at the point.
+            let back = self.clear_of_a_bar(at, u);
+            p2add(at, p2scale(u, -(length + back)))
         } else {
             at
         };

@@ -3,7 +3,7 @@
 //! free spot.
 
 use super::super::picture::{DrawnArrow, Item, P2};
-use super::super::place::Obstacles;
+use super::super::place::{Box2, Obstacles};
 use super::super::strokes::{head, p2add, p2norm, p2scale, p2unit, tips_of};
 use super::Painter;
 
@@ -59,8 +59,8 @@ impl Painter {
                 Beside::Arrow(k) => arrows
                     .get_mut(k)
                     .and_then(|a| self.push_apart(a, toward, size, &tips)),
-                Beside::Point(k) => self.outside_bodies(anchor, toward, size, k),
-                Beside::Caption(k) => self.off_other_bodies(anchor, toward, size, k),
+                Beside::Point(k) => self.outside_bodies((anchor, toward), size, k, &tips),
+                Beside::Caption(k) => self.off_other_bodies((anchor, toward), size, k, &tips),
                 Beside::Near => (self.obstacles)
                     .free_near(anchor, toward, size, &NEAR_A_CURL)
                     .map(|b| self.obstacles.take(b)),
@@ -139,8 +139,18 @@ impl Painter {
     /// whose middle lies outside every body (a contact's name below the wheel, not inside
     /// it), else outside every body but those the point (marker `k`) belongs to (a rack's
     /// joint under the pinion: on the rack's side); `None` when none is free there.
-    fn outside_bodies(&mut self, anchor: P2, toward: f64, size: P2, k: usize) -> Option<P2> {
-        let spots = || Obstacles::spots(anchor, toward, size).take(NEAR_A_POINT);
+    fn outside_bodies(
+        &mut self,
+        (anchor, toward): (P2, f64),
+        size: P2,
+        k: usize,
+        tips: &[P2],
+    ) -> Option<P2> {
+        let spots = || {
+            Obstacles::spots(anchor, toward, size)
+                .take(NEAR_A_POINT)
+                .filter(|b| !by_a_tip(b, anchor, tips))
+        };
         let free = spots()
             .find(|b| {
                 self.obstacles.clash(b) == 0
@@ -168,10 +178,16 @@ impl Painter {
     /// The first free spot for a mass centre's caption of `size` close around it (within
     /// [`CAPTION_GAPS`] of it) whose middle lies in no body but the point's own (marker
     /// `k`); `None` when none is free there.
-    fn off_other_bodies(&mut self, anchor: P2, toward: f64, size: P2, k: usize) -> Option<P2> {
+    fn off_other_bodies(
+        &mut self,
+        (anchor, toward): (P2, f64),
+        size: P2,
+        k: usize,
+        tips: &[P2],
+    ) -> Option<P2> {
         let free = Obstacles::spots(anchor, toward, size)
             .take(16 * CAPTION_GAPS)
-            .find(|b| self.free_of_others(b, k))?;
+            .find(|b| !by_a_tip(b, anchor, tips) && self.free_of_others(b, k))?;
         Some(self.obstacles.take(free))
     }
 
@@ -186,4 +202,19 @@ impl Painter {
                 _ => false,
             })
     }
+}
+
+/// Closer than this (px) to an arrow's tip, a point's name reads as that arrow's label.
+const OFF_A_TIP: f64 = 8.0;
+
+/// Whether a point's name at `b` stands by the tip of an arrow that does not end at its
+/// point `anchor` (a contact's name at the tip of the weight above it).
+fn by_a_tip(b: &Box2, anchor: P2, tips: &[P2]) -> bool {
+    tips.iter()
+        .filter(|t| p2norm([t[0] - anchor[0], t[1] - anchor[1]]) > 3.0)
+        .any(|t| {
+            let dx = ((t[0] - b.center[0]).abs() - b.half[0]).max(0.0);
+            let dy = ((t[1] - b.center[1]).abs() - b.half[1]).max(0.0);
+            dx.hypot(dy) < OFF_A_TIP
+        })
 }

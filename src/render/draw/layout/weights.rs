@@ -110,12 +110,59 @@ impl Painter {
             } else if along > 0.0 && same_way != pushes {
                 // Ahead on its line, drawn away from the weight: the weight stops short.
                 reach = reach.min(along - SHORT_OF * self.reach);
-            } else if along > -length {
-                // Drawn towards the weight, or behind it within its reach.
+            } else if along > 0.0 || (along > -length && same_way != pushes) {
+                // Ahead and drawn towards the weight, or behind it within its reach and
+                // drawn towards it (one behind drawn away from it stands clear).
                 return None;
             }
         }
+        let reach = reach.min(self.short_of_other_bodies(tail, u, length));
         (reach >= SHORTEST * length).then_some(reach)
+    }
+
+    /// How long a weight from `tail` along the unit `u` may be drawn, at most `length`,
+    /// ending [`SHORT_OF`] before any body its mass centre is not in (a disc's weight
+    /// stops above the cart it stands on, where its tip would read as a push on the cart).
+    fn short_of_other_bodies(&self, tail: P2, u: P2, length: f64) -> f64 {
+        let own: Vec<&Item> = (self.items.iter())
+            .filter(|item| super::beside::inside(item, tail))
+            .collect();
+        let gap = SHORT_OF * self.reach;
+        let steps = ((length + gap) / 2.0).ceil() as usize;
+        (0..=steps)
+            .map(|k| 2.0 * k as f64)
+            .find(|&t| {
+                let p = p2add(tail, p2scale(u, t));
+                (self.items.iter()).any(|item| {
+                    matches!(item, Item::Body { .. })
+                        && !own.iter().any(|o| std::ptr::eq(*o, item))
+                        && super::beside::inside(item, p)
+                })
+            })
+            .map_or(length, |t| (t - gap).min(length))
+    }
+
+    /// How far back from `at` along `-u` an arrow's tip must stop so that it is not hidden
+    /// in a bar's stroke there (0 where no bar covers `at`).
+    pub(super) fn clear_of_a_bar(&self, at: P2, u: P2) -> f64 {
+        (0..=12)
+            .map(f64::from)
+            .find(|&s| !self.on_a_bar(p2add(at, p2scale(u, -s)), 0.0))
+            .map_or(0.0, |s| if s > 0.0 { s + 1.5 } else { 0.0 })
+    }
+
+    /// Whether `p` lies within `margin` of a bar's stroke (its half width).
+    fn on_a_bar(&self, p: P2, margin: f64) -> bool {
+        self.items.iter().any(|item| match item {
+            Item::Body { items, .. } => items.iter().any(|part| match part {
+                Item::Stroke(s) if !s.closed && s.width >= 4.0 => s
+                    .points
+                    .windows(2)
+                    .any(|w| to_segment(p, w[0], w[1]) < s.width / 2.0 + margin),
+                _ => false,
+            }),
+            _ => false,
+        })
     }
 
     /// The tail a weight from `tail` along the unit `u`, `length` long, is drawn from
@@ -177,18 +224,7 @@ impl Painter {
     /// Whether most of an arrow from `tail` along `u`, `length` long, runs inside a bar's
     /// stroke, where the bar would hide it.
     fn along_a_bar(&self, tail: P2, u: P2, length: f64) -> bool {
-        let on_bar = |p: P2| {
-            self.items.iter().any(|item| match item {
-                Item::Body { items, .. } => items.iter().any(|part| match part {
-                    Item::Stroke(s) if !s.closed && s.width >= 4.0 => s
-                        .points
-                        .windows(2)
-                        .any(|w| to_segment(p, w[0], w[1]) < s.width / 2.0 + BESIDE_A_BAR),
-                    _ => false,
-                }),
-                _ => false,
-            })
-        };
+        let on_bar = |p: P2| self.on_a_bar(p, BESIDE_A_BAR);
         let inside = SAMPLES
             .iter()
             .filter(|&&t| on_bar(p2add(tail, p2scale(u, t * length))))
