@@ -50,9 +50,27 @@ fn kanes_auxiliary_speeds_of_the_contact_move_the_disc_alone() {
         step5.contains("Only $D$ moves with $u_{3}$: free body $D$ of step 2"),
         "{step5}"
     );
-    // One set of unit vectors in the table: the cart's ĉ equal N's n̂ and are not mixed in.
+    // Each velocity in the unit vectors of its own frame: those in N in n̂, the contact
+    // point's relative to the cart in ĉ.
     let table = between(step5, "| Speed |", "\n\n");
-    assert!(!table.contains("\\hat{\\mathbf{c}}"), "{table}");
+    for line in table.lines() {
+        for cell in line
+            .split(" | ")
+            .filter(|c| c.contains("\\tilde{\\mathbf{v}}"))
+        {
+            let in_c = cell.contains("{}^{C}");
+            assert_eq!(cell.contains("\\hat{\\mathbf{c}}"), in_c, "{cell}");
+            assert_eq!(
+                cell.contains("\\hat{\\mathbf{n}}"),
+                !in_c && !cell.contains("\\mathbf{0}"),
+                "{cell}"
+            );
+        }
+    }
+    assert!(
+        table.contains("{}^{C}\\tilde{\\mathbf{v}}^{U}_{3} = \\hat{\\mathbf{c}}_{x}"),
+        "{table}"
+    );
     assert!(table.contains("\\tilde{\\mathbf{v}}^{C^*}_{1} = \\hat{\\mathbf{n}}_{x}"));
 }
 

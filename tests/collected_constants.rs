@@ -101,6 +101,6 @@ fn a_vectors_component_that_would_lead_with_a_minus_puts_its_positive_terms_firs
     prints(
         "two-link-robot-arm",
         "newton-euler",
-        r"| elbow motor | $(k_{d2} \dot{q}_{2} + k_{p2} q_{2} - \tau_{2} - k_{p2} r_{2}) \hat{\mathbf{a}}_{z}$",
+        r"| elbow motor (couple) | $(k_{d2} \dot{q}_{2} + k_{p2} q_{2} - \tau_{2} - k_{p2} r_{2}) \hat{\mathbf{a}}_{z}$",
     );
 }

@@ -77,6 +77,17 @@ fn parts(label: &str) -> Option<(String, String, Option<String>)> {
             return Some((kind.to_string(), place, direction));
         }
     }
+    // A closure straight to the body a joint hangs from holds a guide's rows: "the rod
+    // keeps the collar on its line", "the rod stops the collar turning".
+    if let Some(rest) = what.strip_prefix("the ") {
+        let guides = [" keeps ", " stops "];
+        if let Some(place) = guides
+            .iter()
+            .find_map(|g| rest.split_once(g).map(|(p, _)| p))
+        {
+            return Some(("guide".to_string(), place.to_string(), direction));
+        }
+    }
     for kind in ["position constraint", "velocity constraint"] {
         if let Some(name) = what.strip_prefix(&format!("{kind} ")) {
             return Some((kind.to_string(), name.to_string(), direction));
@@ -127,7 +138,7 @@ fn fault(file: &str, problem: &Value, label: &str) -> Option<String> {
             let declared = format!("{} constraint", entry["type"].as_str().unwrap_or("?"));
             (declared != kind || direction.is_some()).then(|| format!("{file}: `{label}`"))
         }
-        "loop closure" => match (named("closures"), direction.map(unit)) {
+        "loop closure" | "guide" => match (named("closures"), direction.map(unit)) {
             (None, _) => wrong("no closure of that name"),
             (Some(_), Some(None)) => wrong("not along one unit vector"),
             _ => None,

@@ -155,7 +155,7 @@ fn the_coin_marks_every_solved_rate_and_lists_frames_first() {
     let text = handout(name, "kane", "markdown");
     has(
         &text,
-        "| $y$ | $y$ of the centre |  | $\\mathrm{m}$ | 0 m | 0 m/s† |",
+        "| $y$ | $y$ of the centre | as for $x$ | $\\mathrm{m}$ | 0 m | 0 m/s† |",
         name,
     );
     for name in ["rolling-coin", "disc-on-cart", "double-pendulum-rods"] {

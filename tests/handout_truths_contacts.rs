@@ -37,7 +37,7 @@ fn a_smooth_wall_holds_only_the_normal_component_and_nothing_rolls() {
     assert!(step1.contains("No penetration at the wall"), "{step1}");
     assert!(
         step1.contains(
-            "{}^{N}\\mathbf{v}^{W} \\cdot \\hat{\\mathbf{n}}_{x} &= \\dot{x} - l \\dot{\\theta} c_{\\theta} = 0"
+            "{}^{N}\\mathbf{v}^{W} \\cdot \\hat{\\mathbf{n}}_{x} &= \\dot{x} - \\ell \\dot{\\theta} c_{\\theta} = 0"
         ),
         "{step1}"
     );
@@ -253,7 +253,7 @@ fn sticking_writes_its_no_slip_row_and_cites_the_row_it_stands_in_for() {
         (
             "ladder-about-to-slip",
             "motion-law",
-            "l c_{\\theta} \\ddot{\\theta} + \\ddot{x} - l s_{\\theta} \\dot{\\theta}^{2} = 0",
+            "\\ell c_{\\theta} \\ddot{\\theta} + \\ddot{x} - \\ell s_{\\theta} \\dot{\\theta}^{2} = 0",
         ),
         ("collar-on-rough-rod", "kane", "\\ddot{x} = 0"),
     ] {

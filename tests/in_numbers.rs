@@ -122,7 +122,7 @@ fn lagranges_reaction_rows_are_derived_and_agree_with_newton_euler() {
     let text = markdown_handout("double-pendulum-rods", "lagrange");
     let step5 = between(&text, "## Step 5", "## Step 6");
     for words in [
-        "by an auxiliary coordinate $\\xi_{3}$, zero in the motion",
+        "by auxiliary coordinates $\\xi_{3}$ and $\\xi_{4}$, zero in the motion",
         "Q_{\\xi_{3}} - \\frac{\\partial V}{\\partial \\xi_{3}}",
         "Its equation at zero auxiliary coordinate and rate, solved for the reaction:",
     ] {

@@ -413,7 +413,7 @@ fn speed_lines(step5: &str, r: usize) -> Vec<&str> {
 fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown() {
     let text = markdown("disc-on-cart.json");
     let step5 = section(&text, "## Step 5", "## Step 6");
-    let (n_x, n_y) = (latex_unit_vector("N", 0), latex_unit_vector("N", 1));
+    let n_y = latex_unit_vector("N", 1);
     let d_z = latex_unit_vector("D", 2);
     // By hand: u3 lets the no-slip condition ṡ + R θ̇ = 0 give way alone (ẋ = ṡ = ḣ = 0),
     // ṡ + R θ̇ = u3, so θ̇ = u3/R: D* does not move, D turns (1/R) d_z, and D's point at U
@@ -425,13 +425,19 @@ fn the_auxiliary_speeds_of_a_contact_force_have_their_partial_velocities_shown()
     assert!(u3[0].contains(&format!(
         "{{}}^{{N}}\\tilde{{\\boldsymbol{{\\omega}}}}^{{D}}_{{3}} = \\frac{{1}}{{R}} {d_z}"
     )));
+    // Relative to the cart, in the cart's unit vectors.
+    let c_x = latex_unit_vector("C", 0);
     assert!(u3[1].contains(&format!(
-        "{{}}^{{C}}\\tilde{{\\mathbf{{v}}}}^{{U}}_{{3}} = {n_x}"
+        "{{}}^{{C}}\\tilde{{\\mathbf{{v}}}}^{{U}}_{{3}} = {c_x}"
     )));
-    // u4 lets h grow alone: D moves n_y, without turning, and so does its point at U: the
-    // disc's line says it, and the point's is not printed again.
+    // u4 lets h grow alone: D moves n_y, without turning, and so does its point at U,
+    // which relative to the cart is written in the cart's c_y.
     let u4 = speed_lines(step5, 4);
-    assert_eq!(u4.len(), 1, "{u4:?}");
+    assert_eq!(u4.len(), 2, "{u4:?}");
+    let c_y = latex_unit_vector("C", 1);
+    assert!(u4[1].contains(&format!(
+        "{{}}^{{C}}\\tilde{{\\mathbf{{v}}}}^{{U}}_{{4}} = {c_y}"
+    )));
     assert!(u4[0].contains(&format!(
         "{{}}^{{N}}\\tilde{{\\mathbf{{v}}}}^{{D^*}}_{{4}} = {n_y}"
     )));

@@ -85,7 +85,7 @@ fn kane_states_its_theory_once_with_only_what_applies() {
     // Rigid rods: the inertia torque is defined, once, with a body letter that is not one
     // of the rods' (A and B): D.
     let rods = kane("double-pendulum-rods");
-    let torque = "\\mathbf{M}^{*}_{D} = -\\boldsymbol{\\alpha}^{D}";
+    let torque = "\\mathbf{M}^{*}_{D} = -\\mathbf{I}^{D} \\cdot \\boldsymbol{\\alpha}^{D}";
     assert_eq!(count(&rods, torque), 1);
     assert_eq!(count(&rods, "\\sum_{B}"), 0);
     assert_eq!(

@@ -93,6 +93,12 @@ const GREEK: [(char, &str); 40] = [
 
 /// The Greek letter LaTeX names `\name` (`theta` → θ), for text that cannot hold math.
 pub fn greek_letter(name: &str) -> Option<char> {
+    // As LaTeX and MathML set them: `\phi` is ϕ, `\varphi` φ.
+    match name {
+        "phi" => return Some('ϕ'),
+        "varphi" => return Some('φ'),
+        _ => {}
+    }
     GREEK.iter().find(|(_, n)| *n == name).map(|(c, _)| *c)
 }
 

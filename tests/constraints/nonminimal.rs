@@ -392,7 +392,7 @@ fn the_energy_check_does_not_fail_where_a_constraint_does_work() {
 fn a_drive_is_written_as_the_statement_names_it() {
     let markdown = crate::support::explain("slider-crank-driven", &["--method", "motion-law"]);
     assert!(markdown.contains(
-        "the motor's torque at O driving q1 as prescribed | $\\tau \\hat{\\mathbf{n}}_{z}$"
+        "the motor's torque at O driving q1 as prescribed (couple) | $\\tau \\hat{\\mathbf{n}}_{z}$"
     ));
     assert!(!markdown.contains("Q_{q_{1}}"), "the drive is still Q");
     let mut problem: serde_json::Value = serde_json::from_str(

@@ -156,7 +156,7 @@ pub fn plain_of(tex: &str) -> String {
 }
 
 fn greek(name: &str) -> Option<char> {
-    const TABLE: [(&str, char); 25] = [
+    const TABLE: [(&str, char); 26] = [
         ("ell", 'ℓ'),
         ("alpha", 'α'),
         ("beta", 'β'),
@@ -175,7 +175,9 @@ fn greek(name: &str) -> Option<char> {
         ("rho", 'ρ'),
         ("sigma", 'σ'),
         ("tau", 'τ'),
-        ("phi", 'φ'),
+        // As LaTeX and MathML set them: `\phi` is ϕ, `\varphi` φ.
+        ("phi", 'ϕ'),
+        ("varphi", 'φ'),
         ("chi", 'χ'),
         ("psi", 'ψ'),
         ("omega", 'ω'),

@@ -254,14 +254,14 @@ const START: &str = "at the start";
 
 /// The configuration's caption in a course's words: `The configuration at the start:
 /// q₁ = 0.7 rad, q₂ = −0.4 rad` (`when` is `at the start`), each coordinate with its unit,
-/// a minus sign for minus, and φ printed as LaTeX sets `\phi` (ϕ).
+/// a minus sign for minus, and `\phi` as LaTeX sets it (ϕ).
 pub fn configuration_caption(problem: &crate::problem::Problem, when: &str, q: &[f64]) -> String {
     let state: Vec<String> = (problem.coordinates.iter().enumerate())
         .zip(q)
         .map(|((i, c), v)| {
             let symbol = crate::render::unicode_of(&crate::symbolic::latex_name(&c.name));
             let unit = crate::numeric::coordinate_unit(problem, i, 0);
-            format!("{} = {} {unit}", symbol.replace('φ', "ϕ"), signed(*v))
+            format!("{symbol} = {} {unit}", signed(*v))
         })
         .collect();
     format!("The configuration {when}: {}", state.join(", "))
