@@ -42,7 +42,7 @@ fn a_contact_named_by_a_word_is_a_point_with_a_note() {
     let text = handout("bowling-ball", "motion-law");
     assert!(text.contains("P is the point of contact at the lane."));
     assert!(
-        text.contains("| contact force at P |"),
+        text.contains("| contact force at $P$ |"),
         "the force table's label"
     );
     assert!(text.contains("| weight of B |"));

@@ -336,3 +336,29 @@ fn every_coordinate_of_a_joint_has_its_motion_and_the_rolling_rate_is_derived_fi
         .expect("the simulation's check");
     assert!(derived < checked, "{answers}");
 }
+
+#[test]
+fn a_zero_slip_velocity_is_not_said_to_stick_and_constants_are_named() {
+    // A contact at rest may still slip: the ladder starts at rest and slides at once.
+    let ladder = handout("ladder-about-to-slip", "motion-law");
+    assert!(!ladder.contains("once it is zero"), "{ladder}");
+    assert!(
+        ladder.contains("only while friction can hold it"),
+        "{ladder}"
+    );
+    // The collar's moment of inertia is a constant of the problem, I, not a number.
+    let collar = handout("collar-on-rough-rod", "kane");
+    assert!(!collar.contains("20000"), "{collar}");
+    assert!(
+        collar.contains("\\tilde{F}^{*}_{3} &= -I \\ddot{\\theta}"),
+        "{collar}"
+    );
+    assert!(collar.contains("The collar is at rest relative to the surface"));
+    // The cart only translates: its unit vectors equal N's at every instant.
+    let cart = handout("disc-on-cart", "kane");
+    assert!(cart.contains(": C does not turn."), "{cart}");
+    assert!(
+        !cart.contains("At this instant $\\hat{\\mathbf{c}}"),
+        "{cart}"
+    );
+}

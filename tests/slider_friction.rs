@@ -317,8 +317,8 @@ fn explain_shows_the_slider_s_assumption_check_and_second_solve() {
     let text = crate::support::explain("block-on-rough-slide", &[]);
     for wanted in [
         "**Friction at the slope",
-        "The slider is at rest relative to the surface at this state. Assume that it sticks",
-        "The check fails: friction cannot hold the slider, and it slips.",
+        "The block is at rest relative to the surface at this state. Assume that it sticks",
+        "The check fails: friction cannot hold the block, and it slips.",
         "= 9.81\\ \\mathrm{N} > \\mu",
     ] {
         assert!(text.contains(wanted), "no `{wanted}` in the handout");

@@ -173,7 +173,7 @@ fn value(name: &str, value: &str, unit: &str) -> InitialValue {
 
 fn force(label: &str, vector: String, point: &str) -> Force {
     Force {
-        label: s(label),
+        label: MarkupLine::from(label),
         vector_tex: Math::from(vector),
         point_tex: Math::from(s(point)),
     }

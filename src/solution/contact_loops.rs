@@ -64,8 +64,8 @@ fn rough_sites(model: &Model) -> Vec<usize> {
         .collect()
 }
 
-/// The sentence before a rough contact's slip velocity: once it is zero, a disc rolls and a
-/// point that touches a plane (a ladder's foot) sticks.
+/// The sentence before a rough contact's slip velocity: while it stays zero, a disc rolls
+/// and a point that touches a plane (a ladder's foot) sticks, which friction must allow.
 fn slip_lead(model: &Model, k: usize) -> String {
     let site = &model.sites[k];
     let disc = match site.kind {
@@ -77,8 +77,8 @@ fn slip_lead(model: &Model, k: usize) -> String {
     };
     format!(
         "The slip velocity at {}: the velocity of the point of {} there, relative to \
-         the ground. Friction acts against it while it is not zero; once it is zero, \
-         the contact {}.",
+         the ground. Friction acts against it while it is not zero; it stays zero, and \
+         the contact {}, only while friction can hold it.",
         super::force_labels::place(&site.name),
         super::joint_words::body_words(model.problem, site.child),
         if disc { "rolls" } else { "sticks" }

@@ -248,9 +248,7 @@ fn pictures(
             // forces: said so, that the two read as one statement.
             for force in &mut body.inertia {
                 if force.label.starts_with("inertia ") {
-                    force
-                        .label
-                        .push_str(", opposite to its arrow in the kinetic diagram");
+                    (force.label.0).push_str(", opposite to its arrow in the kinetic diagram");
                 }
             }
         }

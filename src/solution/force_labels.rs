@@ -18,8 +18,8 @@ pub(super) fn table_label(model: &Model, action: &Action, shown: &[(String, Stri
             // A point named by a word is printed by its letter, as in the table's math.
             let tex = crate::symbolic::latex_name(&site.name);
             let place = match shown.iter().find(|(word, _)| *word == tex) {
-                Some((_, letter)) => letter.clone(),
-                None => place(&site.name),
+                Some((_, letter)) => format!("${letter}$"),
+                None => place_markup(&site.name),
             };
             match (&site.kind, couple) {
                 (_, true) => format!("reaction couple at {place}"),
@@ -53,9 +53,24 @@ pub(super) fn place(name: &str) -> String {
     }
 }
 
+/// A point's name in a line of markup: a symbol as the equations set it (`$O_{A}$`), a
+/// word with its article (`the lane`).
+fn place_markup(name: &str) -> String {
+    match place(name) {
+        words if words.starts_with("the ") => words,
+        _ => format!("${}$", crate::symbolic::latex_name(name)),
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::place;
+    use super::{place, place_markup};
+
+    #[test]
+    fn a_symbol_is_set_as_math_in_a_table_label() {
+        assert_eq!(place_markup("OA"), "$O_{A}$");
+        assert_eq!(place_markup("rear_contact"), "the rear contact");
+    }
 
     #[test]
     fn a_symbol_stands_alone_and_a_word_takes_its_article() {

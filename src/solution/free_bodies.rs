@@ -8,7 +8,7 @@ use crate::mechanics::{is_particle, vector_of, Model, Vector};
 use crate::plan::{is_external, ActionKind, Category, Source};
 use crate::problem::BodyId;
 use crate::render::context::{Force, FreeBody};
-use crate::render::text::Math;
+use crate::render::text::{MarkupLine, Math};
 use crate::symbolic::{as_shown, latex, latex_name, roots_of_squares};
 
 /// A free body of more bodies than this lists gravity and the inertia forces once, for
@@ -76,7 +76,7 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                     label = format!("{label}, opposite to that on {other} (Newton's third law)");
                 }
                 let force = Force {
-                    label,
+                    label: MarkupLine::from(label),
                     vector_tex: Math::from(vector_tex),
                     point_tex: Math::from(point_tex),
                 };
@@ -133,7 +133,7 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId, shown: &[(Stri
     let centre = super::tex::centre_tex(model, body);
     let mass = latex(&model.bodies[body.0].mass);
     view.inertia.push(Force {
-        label: format!("inertia force of {name}"),
+        label: MarkupLine::from(format!("inertia force of {name}")),
         vector_tex: Math::from(format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{{centre}}}")),
         point_tex: Math::from(format!("\\text{{at }} {centre}")),
     });
@@ -142,7 +142,7 @@ fn inertia_rows(view: &mut FreeBody, model: &Model, body: BodyId, shown: &[(Stri
         return;
     }
     view.inertia.push(Force {
-        label: format!("inertia torque of {name} (couple)"),
+        label: MarkupLine::from(format!("inertia torque of {name} (couple)")),
         vector_tex: Math::from(torque_tex(&symbol, model.is_planar())),
         point_tex: Math::from(anywhere_on(model, body, shown)),
     });

@@ -44,7 +44,14 @@ pub fn views(
                 many => (magnitude_tex(many), magnitude_tex(many)),
             };
             let slider = site.site < model.problem.joints.len() + model.problem.closures.len();
-            let noun = if slider { "slider" } else { "contact" };
+            // A slider is called by its body's word where it has one (the collar).
+            let child = model.sites[site.site].child;
+            let words = super::joint_words::body_words(model.problem, child);
+            let noun = match words.strip_prefix("the ") {
+                Some(word) if slider && !word.contains(' ') => word,
+                _ if slider => "slider",
+                _ => "contact",
+            };
             // Only a disc rolls: a point that touches a plane (a ladder's foot) sticks.
             let disc = match model.sites[site.site].kind {
                 crate::mechanics::SiteKind::Contact(k) => matches!(

@@ -5,7 +5,7 @@
 use crate::mechanics::Vector;
 use crate::problem::{BodyId, QuestionKind};
 use crate::render::{AnswerStep, AnswerView};
-use crate::symbolic::{eval, fixed, latex_unit_vector, Expr};
+use crate::symbolic::{eval, fixed, latex_unit_vector, Expr, Symbol};
 use crate::Worked;
 
 /// Under each planar reaction's answer at the start given in a moving frame's unit vectors,
@@ -35,12 +35,20 @@ pub fn attach(worked: &Worked, views: &mut [AnswerView]) {
         if !at_start || frame == BodyId::GROUND || !in_it {
             continue;
         }
-        let along = |axis: usize| {
+        let in_ground_frame = |axis: usize| {
             let mut c = [Expr::zero(), Expr::zero(), Expr::zero()];
             c[axis] = Expr::one();
-            let c = Vector::new(frame, c).components_in(BodyId::GROUND, &model.frames);
+            Vector::new(frame, c).components_in(BodyId::GROUND, &model.frames)
+        };
+        let along = |axis: usize| {
+            let c = in_ground_frame(axis);
             [eval(&c[0], &values), eval(&c[1], &values)]
         };
+        // A frame that only translates lies so at every instant, not at this one alone.
+        let turns = (0..2).any(|axis| {
+            (in_ground_frame(axis).iter())
+                .any(|e| e.any_symbol(&|s| matches!(s, Symbol::Coord(..))))
+        });
         let sums: Vec<String> = (0..2)
             .map(|axis| {
                 let written = in_ground(along(axis), &ground);
@@ -48,7 +56,11 @@ pub fn attach(worked: &Worked, views: &mut [AnswerView]) {
             })
             .collect();
         view.steps.push(AnswerStep {
-            text: format!("At this instant ${}$ and ${}$.", sums[0], sums[1]).into(),
+            text: match turns {
+                true => format!("At this instant ${}$ and ${}$.", sums[0], sums[1]),
+                false => format!("${}$ and ${}$: {name} does not turn.", sums[0], sums[1]),
+            }
+            .into(),
             math: String::new().into(),
         });
     }

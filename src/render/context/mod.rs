@@ -281,8 +281,9 @@ pub struct FreeBody {
 /// One force or couple on a free body.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Force {
-    /// What it is, e.g. `pin O` or the load's name (user text).
-    pub label: String,
+    /// What it is, e.g. `reaction force at $O_{A}$` or the load's name, as markup: a
+    /// point's symbol set as math, as the equations set it.
+    pub label: MarkupLine,
     /// The vector, e.g. `F^{O}_{x} \hat{\mathbf{n}}_{x} + F^{O}_{y} \hat{\mathbf{n}}_{y}`.
     pub vector_tex: Math,
     /// Where it acts, or for a couple empty, e.g. `A^{*}`.

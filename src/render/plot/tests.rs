@@ -158,7 +158,9 @@ fn math_labels_print_as_unicode_in_pictures() {
     assert_eq!(unicode_of("\\theta_{12}"), "θ₁₂");
     assert_eq!(unicode_of("(E - E_{0})/|E_{0}|"), "(E − E₀)/|E₀|");
     assert_eq!(unicode_of("x_{\\mathrm{cart}}"), "x_cart");
-    assert_eq!(unicode_of("\\phi_{2}"), "φ₂");
+    // As LaTeX and MathML set them: \phi is ϕ, \varphi φ.
+    assert_eq!(unicode_of("\\phi_{2}"), "ϕ₂");
+    assert_eq!(unicode_of("\\varphi"), "φ");
     assert_eq!(Label::math("E - E_{0}", "(J)").text, "E − E₀ (J)");
 }
 
