@@ -2,24 +2,12 @@
 //! when it rolls and how fast it then moves in closed form; the bicycle's weave and
 //! capsize speeds; each against a closed form or a published value written here.
 
-use crate::support::{explain, problem, run_json};
+use crate::support::{answers_json, explain, problem};
 use serde_json::Value;
 
 const V0: f64 = 8.0;
 const MU: f64 = 0.2;
 const G: f64 = 9.81;
-
-fn answers(path: &std::path::Path, method: &str) -> Vec<Value> {
-    let out = run_json(&[
-        "answer".as_ref(),
-        path.as_os_str(),
-        "--format".as_ref(),
-        "json".as_ref(),
-        "--method".as_ref(),
-        method.as_ref(),
-    ]);
-    out["answers"].as_array().expect("answers").clone()
-}
 
 fn close(found: f64, expected: f64, tolerance: f64, what: &str) {
     assert!(
@@ -33,7 +21,7 @@ fn close(found: f64, expected: f64, tolerance: f64, what: &str) {
 #[test]
 fn the_bowling_ball_slips_at_release_and_says_why() {
     for method in ["motion-law", "kane"] {
-        let found = answers(&problem("bowling-ball"), method);
+        let found = answers_json(&problem("bowling-ball"), method);
         let slips = &found[0];
         assert_eq!(slips["kind"], "slips", "{method}");
         assert_eq!(slips["value"], true, "{method}");
@@ -87,7 +75,7 @@ fn the_bowling_ball_rolls_at_the_closed_form_instant_and_speed() {
 
 /// The instant and the speed that `answer` gives at the switch.
 fn answers_of(method: &str) -> (f64, f64) {
-    let found = answers(&problem("bowling-ball"), method);
+    let found = answers_json(&problem("bowling-ball"), method);
     let at: Vec<&Value> = found.iter().filter(|a| a["switch"] == "lane").collect();
     (
         at[0]["value"].as_f64().expect("t"),
@@ -101,7 +89,7 @@ fn answers_of(method: &str) -> (f64, f64) {
 #[test]
 fn the_bicycle_answers_its_weave_and_capsize_speeds() {
     let path = problem("validation/whipple-bicycle");
-    let found = answers(&path, "motion-law");
+    let found = answers_json(&path, "motion-law");
     let stability = found.last().expect("an answer");
     assert_eq!(stability["kind"], "stability");
     assert_eq!(stability["unit"], "m/s");

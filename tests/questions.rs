@@ -2,22 +2,14 @@
 //! numbered as the statement numbers its items: each number against a closed form
 //! written here.
 
-use crate::support::{all_problems, explain, problem, run, run_json};
+use crate::support::{all_problems, explain, problem, run};
 use mbd_tutor::equations::Method;
 use serde_json::{json, Value};
 use std::f64::consts::PI;
 
 /// `answer --format json` of a problem file, by `method`.
 fn answers(path: &std::path::Path, method: Method) -> Vec<Value> {
-    let out = run_json(&[
-        "answer".as_ref(),
-        path.as_os_str(),
-        "--format".as_ref(),
-        "json".as_ref(),
-        "--method".as_ref(),
-        method.name().as_ref(),
-    ]);
-    out["answers"].as_array().expect("answers").clone()
+    crate::support::answers_json(path, method.name())
 }
 
 fn close(found: f64, expected: f64, tolerance: f64, what: &str) {

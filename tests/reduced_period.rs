@@ -11,7 +11,7 @@
 //! At the bottom, x = 0, y = −(R − r): M = 3m/2, K = d²V/dx² = −m g/y = m g/(R − r),
 //! ω² = 2g/(3(R − r)), τ = 2π √(3(R − r)/(2g)).
 
-use crate::support::{explain, problem, run_json};
+use crate::support::{explain, problem};
 use mbd_tutor::equations::Method;
 use std::f64::consts::PI;
 
@@ -22,16 +22,7 @@ const G: f64 = 9.81;
 
 /// The answers of `answer --format json` by `method`.
 fn answers(method: Method) -> Vec<serde_json::Value> {
-    let path = problem("disc-in-cylinder");
-    let out = run_json(&[
-        "answer".as_ref(),
-        path.as_os_str(),
-        "--format".as_ref(),
-        "json".as_ref(),
-        "--method".as_ref(),
-        method.name().as_ref(),
-    ]);
-    out["answers"].as_array().expect("answers").clone()
+    crate::support::answers_json(&problem("disc-in-cylinder"), method.name())
 }
 
 /// Answer 2 of the handout by `method`, in Markdown.

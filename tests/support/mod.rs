@@ -47,6 +47,19 @@ pub fn run_afresh<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Output {
         .expect("the binary runs")
 }
 
+/// The answers of `answer --format json` of a problem file by `method` (its name).
+pub fn answers_json(path: &std::path::Path, method: &str) -> Vec<Value> {
+    let out = run_json(&[
+        "answer".as_ref(),
+        path.as_os_str(),
+        "--format".as_ref(),
+        "json".as_ref(),
+        "--method".as_ref(),
+        method.as_ref(),
+    ]);
+    out["answers"].as_array().expect("answers").clone()
+}
+
 /// Runs the command and parses its standard output as JSON, failing with its stderr.
 pub fn run_json<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Value {
     let out = run(args);
