@@ -49,7 +49,8 @@ pub use math_width::{printed_width, symbols};
 pub use matrix_tables::{pattern_tables, value_tables, value_tex, whole as whole_matrix};
 pub use plan_table::columns as plan_columns;
 pub use plot::{
-    axes, padded_range, unicode_of, x_axis_span, Label as PlotLabel, PlotData, PlotError, Series,
+    axes, padded_range, titled_area, unicode_of, x_axis_span, Label as PlotLabel, PlotData,
+    PlotError, Series,
 };
 pub use plots_drawn::draw as draw_plots;
 pub use sample::sample;

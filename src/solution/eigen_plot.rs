@@ -3,7 +3,7 @@
 //! style of [`crate::render::plot`].
 
 use crate::numeric::Linearization;
-use crate::render::{axes, padded_range, unicode_of, PlotError};
+use crate::render::{axes, padded_range, titled_area, unicode_of, PlotError};
 use crate::symbolic::latex_name;
 use plotters::prelude::*;
 
@@ -46,14 +46,8 @@ pub fn sweep_plot(
     };
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| drawing(e.to_string()))?;
-        let root = root
-            .titled(
-                &format!("{title}: eigenvalues against {name}"),
-                ("sans-serif", 22),
-            )
-            .map_err(|e| drawing(e.to_string()))?;
+        let heading = format!("{title}: eigenvalues against {name}");
+        let root = titled_area(&mut svg, SIZE, &heading, 22).map_err(drawing)?;
         let panels = root.split_evenly((2, 1));
         let x_range = padded_range(values.iter().copied(), 0.0);
         for (panel, (points, label)) in panels

@@ -35,20 +35,19 @@ pub fn attach(worked: &Worked, views: &mut [AnswerView]) {
         if !at_start || frame == BodyId::GROUND || !in_it {
             continue;
         }
-        let in_ground_frame = |axis: usize| {
+        // The frame's x and y unit vectors in the ground's components, converted once.
+        let columns: [[Expr; 3]; 2] = std::array::from_fn(|axis| {
             let mut c = [Expr::zero(), Expr::zero(), Expr::zero()];
             c[axis] = Expr::one();
             Vector::new(frame, c).components_in(BodyId::GROUND, &model.frames)
-        };
+        });
         let along = |axis: usize| {
-            let c = in_ground_frame(axis);
+            let c = &columns[axis];
             [eval(&c[0], &values), eval(&c[1], &values)]
         };
         // A frame that only translates lies so at every instant, not at this one alone.
-        let turns = (0..2).any(|axis| {
-            (in_ground_frame(axis).iter())
-                .any(|e| e.any_symbol(&|s| matches!(s, Symbol::Coord(..))))
-        });
+        let turns =
+            (columns.iter().flatten()).any(|e| e.any_symbol(&|s| matches!(s, Symbol::Coord(..))));
         let sums: Vec<String> = (0..2)
             .map(|axis| {
                 let written = in_ground(along(axis), &ground);

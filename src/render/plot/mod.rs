@@ -140,11 +140,7 @@ pub fn line_plot(
     };
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| drawing(e.to_string()))?;
-        let root = root
-            .titled(title, ("sans-serif", 24))
-            .map_err(|e| drawing(e.to_string()))?;
+        let root = titled_area(&mut svg, SIZE, title, 24).map_err(drawing)?;
         let mut chart =
             axes(&root, &x_label.text, &y_label.text, x_range, y_range).map_err(drawing)?;
         for (index, line) in series.iter().enumerate() {
@@ -227,6 +223,20 @@ pub fn x_axis_span() -> [f64; 2] {
         f64::from(MARGIN + Y_LABEL_AREA) / width,
         f64::from(SIZE.0 - MARGIN) / width,
     ]
+}
+
+/// A white drawing area of `size` pixels writing into `svg`, `title` set above it in a
+/// sans-serif font of `font_size`: how every SVG plot starts.
+pub fn titled_area<'b>(
+    svg: &'b mut String,
+    size: (u32, u32),
+    title: &str,
+    font_size: u32,
+) -> Result<DrawingArea<SVGBackend<'b>, plotters::coord::Shift>, String> {
+    let root = SVGBackend::with_string(svg, size).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    root.titled(title, ("sans-serif", font_size))
+        .map_err(|e| e.to_string())
 }
 
 /// A chart on `area` with its axes drawn as every SVG plot draws them: no minor grid, tick
