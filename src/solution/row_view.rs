@@ -202,12 +202,17 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     };
     // On the motion: a coordinate a constraint holds (h = R) written as its value.
     let held = super::on_constraint::held_coordinates(&derivation.model);
-    let mut simplified = shown(&super::on_constraint::on_the_constraints(
-        &simplify(&row.expression),
-        &held,
-    ));
-    let mut simplified_note = String::new();
     let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
+    // Far too long as formed to come out short: written by name without simplifying.
+    let surely_long = index.is_some() && super::long::surely_long(&row.expression);
+    let mut simplified = match surely_long {
+        true => Expr::int(0),
+        false => shown(&super::on_constraint::on_the_constraints(
+            &simplify(&row.expression),
+            &held,
+        )),
+    };
+    let mut simplified_note = String::new();
     if index.is_some_and(|i| super::kane::sign_changed(derivation, i)) {
         // F*_r is minus the mass matrix times q̈: written with the signs changed, the
         // equation reads M q̈ = …, with the mass matrix positive.
@@ -222,9 +227,12 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         }
         .into();
     }
-    let mut simplified_tex = format!("{} = 0", latex_collected(&simplified));
+    let mut simplified_tex = match surely_long {
+        true => String::new(),
+        false => format!("{} = 0", latex_collected(&simplified)),
+    };
     let mut by_name = false;
-    if simplified_tex.len() > LONG_EQUATION {
+    if surely_long || simplified_tex.len() > LONG_EQUATION {
         // Too long to read: the same row with the coefficients of the matrix form by name.
         if let Some(i) = index {
             simplified_tex = coefficient_form(derivation, i);
