@@ -2,6 +2,7 @@
 //! Kane's F_r and F*_r), then simplified, with its heading.
 
 use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
+use super::on_constraint::on_the_constraints;
 use super::tex::{bodies_name, initial_sign, unknowns_tex, uses_shown, ACCELERATION_LEVEL};
 use crate::equations::Derivation;
 use crate::plan::{Equation, Sum};
@@ -207,10 +208,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     let surely_long = index.is_some() && super::long::surely_long(&row.expression);
     let mut simplified = match surely_long {
         true => Expr::int(0),
-        false => shown(&super::on_constraint::on_the_constraints(
-            &simplify(&row.expression),
-            &held,
-        )),
+        false => shown(&on_the_constraints(&simplify(&row.expression), &held)),
     };
     let mut simplified_note = String::new();
     if index.is_some_and(|i| super::kane::sign_changed(derivation, i)) {
