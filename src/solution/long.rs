@@ -4,7 +4,8 @@
 use crate::equations::Derivation;
 use crate::plan::{Equation, Sum};
 use crate::render::context::Equation as EquationView;
-use crate::symbolic::{latex, latex_name, list_by_runs, Expr, Symbol};
+use crate::symbolic::{latex, latex_name, list_by_runs, Expr, Node, Symbol};
+use std::collections::HashMap;
 
 /// The most characters of LaTeX an equation of step 5 is shown with; a longer one is shown
 /// with the coefficients of the matrix form by name (and, as formed, not at all).
@@ -301,5 +302,87 @@ pub fn refer_to_the_first_auxiliary_row(views: &mut [EquationView]) {
             Some((_, first)) => view.label = format!("(an auxiliary speed, as in row {first})"),
             None => seen.push((view.label.clone(), i + 1)),
         }
+    }
+}
+
+/// The size of a row as formed, in nodes written out as a tree, past which it is shown by
+/// its coefficients without being simplified first. Simplifying shortens a row, but not
+/// by this much: of the rows of every bundled problem by every method, the largest that
+/// prints within [`LONG_EQUATION`] simplified has 1,881 nodes as formed (the planetary
+/// gear train's, 151 characters), and every row past 3,800 nodes prints past it; the
+/// bicycle's longest rows have 22,152 and 47,655 nodes (65,200 and 156,603 characters).
+pub const SURELY_LONG: usize = 20_000;
+
+/// Whether `e`, a row as formed, is too long to print whole however it simplifies (see
+/// [`SURELY_LONG`]): counted without simplifying, at most to that size.
+pub fn surely_long(e: &Expr) -> bool {
+    written_size(e, SURELY_LONG) > SURELY_LONG
+}
+
+/// The number of nodes of `e` written out as a tree (a shared part counted at each use),
+/// counted up to just past `most`.
+fn written_size(e: &Expr, most: usize) -> usize {
+    fn count(e: &Expr, most: usize, seen: &mut HashMap<*const Node, usize>) -> usize {
+        let key = std::rc::Rc::as_ptr(&e.0);
+        if let Some(&n) = seen.get(&key) {
+            return n;
+        }
+        let pair;
+        let children: &[Expr] = match e.node() {
+            Node::Add(items) | Node::Mul(items) | Node::Func(_, items) => items,
+            Node::Pow(base, exponent) => {
+                pair = [base.clone(), exponent.clone()];
+                &pair
+            }
+            Node::Num(_) | Node::Sym(_) => &[],
+        };
+        let mut n = 1usize;
+        for child in children {
+            n = n.saturating_add(count(child, most, seen));
+            if n > most {
+                break;
+            }
+        }
+        let n = n.min(most + 1);
+        seen.insert(key, n);
+        n
+    }
+    count(e, most, &mut HashMap::new())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{surely_long, written_size, SURELY_LONG};
+    use crate::symbolic::{cos, sin, Expr};
+
+    /// `y₀ = a + b`, `yₖ₊₁ = sin yₖ + cos yₖ`: each level holds the one before twice, so
+    /// written out as a tree it has `s₀ = 3`, `sₖ₊₁ = 2 (sₖ + 1) + 1` nodes, that is
+    /// `sₖ = 6·2ᵏ − 3`, while as shared parts it has only `2k + 3`.
+    fn nested(levels: u32) -> Expr {
+        let mut y = &Expr::constant("a") + &Expr::constant("b");
+        for _ in 0..levels {
+            y = &sin(y.clone()) + &cos(y);
+        }
+        y
+    }
+
+    #[test]
+    fn a_shared_part_is_counted_at_each_use() {
+        for k in 0..6 {
+            assert_eq!(
+                written_size(&nested(k), usize::MAX - 1),
+                6 * 2usize.pow(k) - 3
+            );
+        }
+        // Counted no further than just past the limit.
+        assert_eq!(written_size(&nested(20), 100), 101);
+    }
+
+    #[test]
+    fn a_row_is_surely_long_only_past_the_limit() {
+        // 6·2¹¹ − 3 = 12,285 nodes; 6·2¹² − 3 = 24,573.
+        assert!(6 * 2usize.pow(11) - 3 < SURELY_LONG && SURELY_LONG < 6 * 2usize.pow(12) - 3);
+        assert!(!surely_long(&nested(11)));
+        assert!(surely_long(&nested(12)));
     }
 }

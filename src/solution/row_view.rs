@@ -2,6 +2,7 @@
 //! Kane's F_r and F*_r), then simplified, with its heading.
 
 use super::long::{coefficient_form, named_inertia_group, LONG_EQUATION, MOST_INERTIA_TERMS};
+use super::on_constraint::on_the_constraints;
 use super::tex::{bodies_name, initial_sign, unknowns_tex, uses_shown, ACCELERATION_LEVEL};
 use crate::equations::Derivation;
 use crate::plan::{Equation, Sum};
@@ -202,12 +203,14 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
     };
     // On the motion: a coordinate a constraint holds (h = R) written as its value.
     let held = super::on_constraint::held_coordinates(&derivation.model);
-    let mut simplified = shown(&super::on_constraint::on_the_constraints(
-        &simplify(&row.expression),
-        &held,
-    ));
-    let mut simplified_note = String::new();
     let index = derivation.rows.iter().position(|r| std::ptr::eq(r, row));
+    // Far too long as formed to come out short: written by name without simplifying.
+    let surely_long = index.is_some() && super::long::surely_long(&row.expression);
+    let mut simplified = match surely_long {
+        true => Expr::int(0),
+        false => shown(&on_the_constraints(&simplify(&row.expression), &held)),
+    };
+    let mut simplified_note = String::new();
     if index.is_some_and(|i| super::kane::sign_changed(derivation, i)) {
         // F*_r is minus the mass matrix times q̈: written with the signs changed, the
         // equation reads M q̈ = …, with the mass matrix positive.
@@ -222,9 +225,12 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         }
         .into();
     }
-    let mut simplified_tex = format!("{} = 0", latex_collected(&simplified));
+    let mut simplified_tex = match surely_long {
+        true => String::new(),
+        false => format!("{} = 0", latex_collected(&simplified)),
+    };
     let mut by_name = false;
-    if simplified_tex.len() > LONG_EQUATION {
+    if surely_long || simplified_tex.len() > LONG_EQUATION {
         // Too long to read: the same row with the coefficients of the matrix form by name.
         if let Some(i) = index {
             simplified_tex = coefficient_form(derivation, i);
