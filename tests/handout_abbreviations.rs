@@ -1,0 +1,66 @@
+//! The abbreviations a handout lists are those it prints: every bundled problem's worked
+//! handout, by every method (a statics problem's is its handout at rest), lists
+//! `s_θ = sin θ` only where some `s_θ` stands in its body.
+
+use crate::support::handouts::{handout_of, two_at_a_time};
+use crate::support::{all_problems, METHODS};
+use std::path::PathBuf;
+
+/// The line of a Markdown handout that lists the abbreviations.
+const LEAD: &str = "Abbreviations: ";
+
+/// The names `text`'s abbreviations line lists (`s_{1}` of `$s_{1} = \sin q_{1}$`), and
+/// the text without that line.
+fn listed(text: &str) -> (Vec<String>, String) {
+    let mut names = Vec::new();
+    let mut body = Vec::new();
+    for line in text.lines() {
+        let Some(rest) = line.strip_prefix(LEAD) else {
+            body.push(line);
+            continue;
+        };
+        // `$s$ and $c$ are …, as in $s_{1} = \sin q_{1}$, …`: each `$…$` with an `=`.
+        for (k, piece) in rest.split('$').enumerate() {
+            if k % 2 == 1 {
+                if let Some((name, _)) = piece.split_once(" = ") {
+                    names.push(name.trim().to_string());
+                }
+            }
+        }
+    }
+    (names, body.join("\n"))
+}
+
+#[test]
+fn the_listing_reads_names_and_leaves_the_body() {
+    let text = "Step 1\nAbbreviations: $s_{1} = \\sin q_{1}$, $c_{12} = \\cos\\left(q_{1} + q_{2}\\right)$.\n$s_{1} m g$";
+    let (names, body) = listed(text);
+    assert_eq!(names, ["s_{1}", "c_{12}"]);
+    assert_eq!(body, "Step 1\n$s_{1} m g$");
+    let (names, _) = listed(
+        "Abbreviations: $s$ and $c$ are the sine and cosine of the coordinate their subscript names, as in $s_{1} = \\sin q_{1}$.",
+    );
+    assert_eq!(names, ["s_{1}"]);
+}
+
+#[test]
+fn every_abbreviation_listed_is_printed() {
+    let jobs: Vec<(PathBuf, &str)> = all_problems()
+        .into_iter()
+        .flat_map(|p| METHODS.map(|m| (p.clone(), m)))
+        .collect();
+    let mut wrong = two_at_a_time(&jobs, |(path, method)| {
+        let Some(text) = handout_of(path, method, "markdown") else {
+            return Vec::new();
+        };
+        let name = path.file_stem().unwrap_or_default().to_string_lossy();
+        let (names, body) = listed(&text);
+        names
+            .iter()
+            .filter(|n| !body.contains(n.as_str()))
+            .map(|n| format!("{name} by {method}: {n} listed, never printed"))
+            .collect()
+    });
+    wrong.sort();
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
