@@ -1,9 +1,9 @@
 //! The abbreviations a handout lists are those it prints: every bundled problem's worked
-//! handout, by every method (a statics problem's is its handout at rest), lists
+//! handout and its handout at rest (`explain --statics`), by every method, lists
 //! `s_θ = sin θ` only where some `s_θ` stands in its body.
 
-use crate::support::handouts::{handout_of, two_at_a_time};
-use crate::support::{all_problems, METHODS};
+use crate::support::handouts::two_at_a_time;
+use crate::support::{all_problems, run, METHODS};
 use std::path::PathBuf;
 
 /// The line of a Markdown handout that lists the abbreviations.
@@ -43,22 +43,44 @@ fn the_listing_reads_names_and_leaves_the_body() {
     assert_eq!(names, ["s_{1}"]);
 }
 
+/// The Markdown handout of `path` by `method`, at rest with `statics`; `None` where it is
+/// refused (other tests see to which are).
+fn handout(path: &PathBuf, method: &str, statics: bool) -> Option<String> {
+    let mut args = vec![
+        "explain".as_ref(),
+        path.as_os_str(),
+        "--method".as_ref(),
+        method.as_ref(),
+        "--format".as_ref(),
+        "markdown".as_ref(),
+    ];
+    if statics {
+        args.push("--statics".as_ref());
+    }
+    let out = run(&args);
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
 #[test]
 fn every_abbreviation_listed_is_printed() {
-    let jobs: Vec<(PathBuf, &str)> = all_problems()
+    let jobs: Vec<(PathBuf, &str, bool)> = all_problems()
         .into_iter()
-        .flat_map(|p| METHODS.map(|m| (p.clone(), m)))
+        .flat_map(|p| METHODS.map(|m| [(p.clone(), m, false), (p.clone(), m, true)]))
+        .flatten()
         .collect();
-    let mut wrong = two_at_a_time(&jobs, |(path, method)| {
-        let Some(text) = handout_of(path, method, "markdown") else {
+    let mut wrong = two_at_a_time(&jobs, |(path, method, statics)| {
+        let Some(text) = handout(path, method, *statics) else {
             return Vec::new();
         };
         let name = path.file_stem().unwrap_or_default().to_string_lossy();
+        let at_rest = if *statics { " at rest" } else { "" };
         let (names, body) = listed(&text);
         names
             .iter()
             .filter(|n| !body.contains(n.as_str()))
-            .map(|n| format!("{name} by {method}: {n} listed, never printed"))
+            .map(|n| format!("{name} by {method}{at_rest}: {n} listed, never printed"))
             .collect()
     });
     wrong.sort();

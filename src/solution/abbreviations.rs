@@ -58,7 +58,10 @@ mod tests {
         )];
         keep_printed(&mut solution);
         assert_eq!(solution.abbreviations.len(), 1);
-        assert_eq!(solution.abbreviations[0].definition_tex.as_str(), "s_{1} = \\sin q_{1}");
+        assert_eq!(
+            solution.abbreviations[0].definition_tex.as_str(),
+            "s_{1} = \\sin q_{1}"
+        );
         assert_eq!(solution.abbreviations_by_rule, ["s", "c"]);
         solution.solve_notes.clear();
         keep_printed(&mut solution);
