@@ -4,7 +4,7 @@
 
 use crate::support::handouts::two_at_a_time;
 use crate::support::{all_problems, run, METHODS};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The line of a Markdown handout that lists the abbreviations.
 const LEAD: &str = "Abbreviations: ";
@@ -45,7 +45,7 @@ fn the_listing_reads_names_and_leaves_the_body() {
 
 /// The Markdown handout of `path` by `method`, at rest with `statics`; `None` where it is
 /// refused (other tests see to which are).
-fn handout(path: &PathBuf, method: &str, statics: bool) -> Option<String> {
+fn handout(path: &Path, method: &str, statics: bool) -> Option<String> {
     let mut args = vec![
         "explain".as_ref(),
         path.as_os_str(),
