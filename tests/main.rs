@@ -23,6 +23,7 @@ mod fresh_problems;
 mod friction;
 mod gears;
 mod grade;
+mod handout_abbreviations;
 mod handout_names;
 mod handout_notation;
 mod handout_pages;

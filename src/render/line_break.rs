@@ -187,7 +187,8 @@ fn line_starts(pieces: &[Piece], width: f64) -> Vec<usize> {
 const FULL_ENOUGH: f64 = 0.6;
 
 /// `latex` with every `\\frac{N}{D}` outside braces whose numerator prints wider than
-/// `width` written `\\frac{1}{D} \\left(N\\right)`, the same value, which
+/// `width` written `\\frac{1}{D} \\left(N\\right)`, and every `\\sqrt{R}` whose sum
+/// under the root does `\\left(R\\right)^{1/2}`, the same values, which
 /// [`break_into_lines`] can then break inside the bracket (never inside braces).
 fn open_long_fractions(latex: &str, width: f64) -> String {
     let bytes = latex.as_bytes();
@@ -195,6 +196,22 @@ fn open_long_fractions(latex: &str, width: f64) -> String {
     let (mut copied, mut braces, mut i) = (0, 0i32, 0);
     while i < bytes.len() {
         if braces == 0 {
+            if let Some(length) = latex.get(i..).and_then(|rest| command_at(rest, "\\sqrt")) {
+                if let Some((open, close)) = brace_group(latex, i + length) {
+                    let radicand = &latex[open..close];
+                    let sum = radicand.contains(" + ") || radicand.contains(" - ");
+                    if sum && math_width::symbols(radicand) > width {
+                        out.push_str(&latex[copied..i]);
+                        out.push_str(&format!(
+                            "\\left({}\\right)^{{1/2}}",
+                            open_long_fractions(radicand, width)
+                        ));
+                        copied = close + 1;
+                        i = close + 1;
+                        continue;
+                    }
+                }
+            }
             if let Some(length) = latex.get(i..).and_then(|rest| command_at(rest, "\\frac")) {
                 if let Some((numerator, denominator, end)) = two_groups(latex, i + length) {
                     // Only a sum can be broken; a long product stays a fraction.
@@ -227,37 +244,40 @@ fn open_long_fractions(latex: &str, width: f64) -> String {
     out
 }
 
+/// Where the contents of the brace group that starts at `from` (after spaces) begin and
+/// end (its closing brace).
+fn brace_group(latex: &str, from: usize) -> Option<(usize, usize)> {
+    let bytes = latex.as_bytes();
+    let mut i = from;
+    while bytes.get(i) == Some(&b' ') {
+        i += 1;
+    }
+    if bytes.get(i) != Some(&b'{') {
+        return None;
+    }
+    let (open, mut depth) = (i, 0i32);
+    while i < bytes.len() {
+        match bytes[i] {
+            b'\\' => i += 1,
+            b'{' => depth += 1,
+            b'}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some((open + 1, i));
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    None
+}
+
 /// The contents of the two brace groups that start at `start` (after spaces), and where
 /// the second ends.
 fn two_groups(latex: &str, start: usize) -> Option<(&str, &str, usize)> {
-    let group = |from: usize| -> Option<(usize, usize)> {
-        let bytes = latex.as_bytes();
-        let mut i = from;
-        while bytes.get(i) == Some(&b' ') {
-            i += 1;
-        }
-        if bytes.get(i) != Some(&b'{') {
-            return None;
-        }
-        let (open, mut depth) = (i, 0i32);
-        while i < bytes.len() {
-            match bytes[i] {
-                b'\\' => i += 1,
-                b'{' => depth += 1,
-                b'}' => {
-                    depth -= 1;
-                    if depth == 0 {
-                        return Some((open + 1, i));
-                    }
-                }
-                _ => {}
-            }
-            i += 1;
-        }
-        None
-    };
-    let (a, a_end) = group(start)?;
-    let (b, b_end) = group(a_end + 1)?;
+    let (a, a_end) = brace_group(latex, start)?;
+    let (b, b_end) = brace_group(latex, a_end + 1)?;
     Some((&latex[a..a_end], &latex[b..b_end], b_end + 1))
 }
 
@@ -298,11 +318,10 @@ mod tests {
             break_lines(latex, 10.0),
             "aaaaaaa \\\\ + bbbbbbb \\\\ + ccccccc = 0"
         );
-        let grouped =
-            "x = \\left(aaaaaaa + \\sqrt{bbbbbbb + ccccccc}\\right)^{2} + {ddddddd - eeeeeee}";
+        let grouped = "x = \\left(aaaaaaa + \\sqrt{bbbbbbb + c}\\right)^{2} + {ddddddd - eeeeeee}";
         assert_eq!(
             break_lines(grouped, 11.0),
-            "x = \\left(aaaaaaa \\right. \\\\ \\left. + \\sqrt{bbbbbbb + ccccccc}\\right)^{2} \\\\ + {ddddddd - eeeeeee}"
+            "x = \\left(aaaaaaa \\right. \\\\ \\left. + \\sqrt{bbbbbbb + c}\\right)^{2} \\\\ + {ddddddd - eeeeeee}"
         );
         let matrix = "\\begin{bmatrix} aaaaaaa - bbbbbbb \\end{bmatrix}";
         assert_eq!(break_lines(matrix, 3.0), matrix);
@@ -325,6 +344,20 @@ mod tests {
         assert_eq!(
             break_lines("\\sin^{2}\\left(x - y\\right) + bbbbbbbb", 1.0),
             "\\sin^{2}\\left(x - y\\right) \\\\ + bbbbbbbb"
+        );
+        // A long sum under a root is raised to the power 1/2, and broken in its bracket.
+        let root = "V = \\frac{1}{2} k \\left(\\sqrt{aaaaaaa + bbbbbbb - c} - l\\right)^{2}";
+        let lines = break_into_lines(root, 14.0);
+        assert!(lines.len() > 1, "{lines:?}");
+        let joined = lines.concat();
+        assert!(!joined.contains("\\sqrt"), "{lines:?}");
+        assert!(joined.contains("\\left(aaaaaaa"), "{lines:?}");
+        assert!(joined.contains("c\\right)^{1/2}"), "{lines:?}");
+        assert_eq!(break_lines(root, 100.0), root);
+        let short = "x = \\sqrt{a + b} + ccccccccccccccc";
+        assert_eq!(
+            break_lines(short, 10.0),
+            "x = \\sqrt{a + b} \\\\ + ccccccccccccccc"
         );
         // A long product has nowhere to break: it stays a fraction.
         let product = "\\frac{L a b c d e f g h i j k}{2}";

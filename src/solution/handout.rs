@@ -43,6 +43,7 @@ pub fn handout(worked: &Worked, settings: &Handout) -> Solution {
     }
     let numbered = problem.questions.iter().any(|q| q.item.is_some());
     super::concise::without_repeats(&mut solution, settings.every_rejected, numbered);
+    super::abbreviations::keep_printed(&mut solution);
     solution
 }
 

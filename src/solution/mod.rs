@@ -8,6 +8,7 @@
 //! scenes (laid out, [`draw_pictures`]), the answers and the checks. [`crate::render`] only writes
 //! it; this stage is the last one that reads the derivation.
 
+mod abbreviations;
 mod absent_constants;
 mod aligned;
 mod answer_leads;

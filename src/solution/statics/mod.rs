@@ -44,6 +44,7 @@ pub fn handout(at_rest: &WorkedAtRest, student: bool, settings: &Handout) -> Sol
     }
     let numbered = problem.questions.iter().any(|q| q.item.is_some());
     super::concise::without_repeats(&mut solution, settings.every_rejected, numbered);
+    super::abbreviations::keep_printed(&mut solution);
     solution
 }
 
