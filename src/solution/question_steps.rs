@@ -46,12 +46,11 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                 QuestionKind::Period { .. } => {
                     let states = super::reduced::on_motion(answer, answers);
                     let kane = worked.period_system.as_ref();
-                    let steps = period_steps(derivation, kane, answer, &states);
-                    // The period is said where the steps end with it, not also above them.
-                    if !steps.is_empty() && said_in(answer, &steps) {
-                        view.values_tex.clear();
-                    }
-                    steps
+                    said_once(
+                        answer,
+                        view,
+                        period_steps(derivation, kane, answer, &states),
+                    )
                 }
                 QuestionKind::Show {
                     lhs, rhs, names, ..
@@ -94,7 +93,8 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     steps
                 }
                 QuestionKind::Value { .. } => {
-                    super::closed_form::value_steps(worked, question, answer).unwrap_or_default()
+                    let steps = super::closed_form::value_steps(worked, question, answer);
+                    said_once(answer, view, steps.unwrap_or_default())
                 }
                 QuestionKind::Describe { .. } => {
                     super::describe_words::fill(problem, question, answer, view)
@@ -113,6 +113,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         }
     });
     super::constancy::attach(worked, answers, views);
+    super::period_contrast::attach(worked, answers, views);
 }
 
 /// A derived `show` ends with its derivation: the values of its two sides at a state, and
@@ -127,12 +128,17 @@ fn check_last(view: &mut AnswerView, steps: Vec<AnswerStep>) -> Vec<AnswerStep> 
     steps
 }
 
-/// Whether every value of `answer` is written in the math of `steps`.
-fn said_in(answer: &Answer, steps: &[AnswerStep]) -> bool {
-    (answer.values.iter()).all(|(_, x)| {
+/// `steps`, with the values above them dropped where every value of `answer` is written in
+/// their math: a value derived in the steps is said there, not also above them.
+fn said_once(answer: &Answer, view: &mut AnswerView, steps: Vec<AnswerStep>) -> Vec<AnswerStep> {
+    let said = (answer.values.iter()).all(|(_, x)| {
         let number = super::answer_numbers::number_tex(*x);
         steps.iter().any(|s| s.math.as_str().contains(&number))
-    })
+    });
+    if !steps.is_empty() && said {
+        view.values_tex.clear();
+    }
+    steps
 }
 
 /// Whether the working of a `show` derives it (it starts from an equation of step 5).
@@ -333,7 +339,7 @@ fn one_freedom(
     let period = simplify(&(&m1 / &k1));
     let (mut steps, energies) =
         super::reduced::equation_steps(derivation, system, (row, k), (m, f), states);
-    let k_words = super::reduced::k_words(energies, &q_tex, &latex(&problem.coordinate_expr(k, 1)));
+    let k_words = super::reduced::k_words(energies, &q_tex);
     steps.extend([
         step(
             format!(
