@@ -147,11 +147,15 @@ fn sliding_frictions_work_is_mu_n_times_the_distance_slid() {
     }
 }
 
-/// Where a damper also takes energy, or nothing is applied, the balance with the applied
-/// loads is not claimed.
+/// Where a damper also takes energy, or nothing is applied, or friction holds the body at
+/// rest all along (no work, no motion), the balance with the applied loads is not claimed.
 #[test]
 fn no_balance_is_claimed_where_other_forces_do_work_without_a_potential() {
-    for name in ["two-mass-spring-damper", "simple-pendulum"] {
+    for name in [
+        "two-mass-spring-damper",
+        "simple-pendulum",
+        "statics-block-on-incline",
+    ] {
         let problem = problem(name);
         let trajectory = run(&problem);
         assert!(load_work(&problem, &trajectory).is_none(), "{name}");

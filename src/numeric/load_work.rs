@@ -113,8 +113,16 @@ pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>>
     let work = work_along(&trajectory.rows, &columns, |t, state| {
         Some(power_at(t, state) + friction(t, state)?)
     })?;
-    work.iter().all(|w| w.is_finite()).then_some(work)
+    // A system left at rest (a block that friction holds) has no work to balance.
+    let kinetic = trajectory.column("kinetic")?;
+    let still = (trajectory.rows.iter().map(|r| r[kinetic]))
+        .chain(work.iter().copied())
+        .all(|e| e.abs() < STILL);
+    (work.iter().all(|w| w.is_finite()) && !still).then_some(work)
 }
+
+/// An energy (J) below which a run neither moves nor works: at rest all along.
+const STILL: f64 = 1e-9;
 
 /// The largest `|E(t) − E(0) − W(t)|` over the rows, with its time: what the energy
 /// balance with the applied loads leaves.

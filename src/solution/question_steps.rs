@@ -46,11 +46,12 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                 QuestionKind::Period { .. } => {
                     let states = super::reduced::on_motion(answer, answers);
                     let kane = worked.period_system.as_ref();
-                    said_once(
-                        answer,
-                        view,
-                        period_steps(derivation, kane, answer, &states),
-                    )
+                    let steps = period_steps(derivation, kane, answer, &states);
+                    // The period is said where the steps end with it, not also above them.
+                    if !steps.is_empty() && said_in(answer, &steps) {
+                        view.values_tex.clear();
+                    }
+                    steps
                 }
                 QuestionKind::Show {
                     lhs, rhs, names, ..
@@ -93,8 +94,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
                     steps
                 }
                 QuestionKind::Value { .. } => {
-                    let steps = super::closed_form::value_steps(worked, question, answer);
-                    said_once(answer, view, steps.unwrap_or_default())
+                    super::closed_form::value_steps(worked, question, answer).unwrap_or_default()
                 }
                 QuestionKind::Describe { .. } => {
                     super::describe_words::fill(problem, question, answer, view)
@@ -128,17 +128,12 @@ fn check_last(view: &mut AnswerView, steps: Vec<AnswerStep>) -> Vec<AnswerStep> 
     steps
 }
 
-/// `steps`, with the values above them dropped where every value of `answer` is written in
-/// their math: a value derived in the steps is said there, not also above them.
-fn said_once(answer: &Answer, view: &mut AnswerView, steps: Vec<AnswerStep>) -> Vec<AnswerStep> {
-    let said = (answer.values.iter()).all(|(_, x)| {
+/// Whether every value of `answer` is written in the math of `steps`.
+fn said_in(answer: &Answer, steps: &[AnswerStep]) -> bool {
+    (answer.values.iter()).all(|(_, x)| {
         let number = super::answer_numbers::number_tex(*x);
         steps.iter().any(|s| s.math.as_str().contains(&number))
-    });
-    if !steps.is_empty() && said {
-        view.values_tex.clear();
-    }
-    steps
+    })
 }
 
 /// Whether the working of a `show` derives it (it starts from an equation of step 5).

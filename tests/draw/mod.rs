@@ -459,6 +459,8 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
         .arrows
         .iter()
         .filter(|(g, _)| g.attr("data-kind") == Some("reaction"))
+        // A sliding friction, signed as it points, is checked above against the slip.
+        .filter(|(g, _)| !g.attr("data-label").is_some_and(|l| l.starts_with('-')))
     {
         let label = g.attr("data-label").unwrap_or("").to_string();
         let at = g.attr("data-at").unwrap_or("").to_string();
