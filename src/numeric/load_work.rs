@@ -18,7 +18,7 @@ use crate::symbolic::{add, fixed, Expr, Program};
 /// expression of the constants, the state and `t`; `None` where there are none, or where
 /// another load also does work without a potential (a damper) or a coordinate is driven:
 /// the energy then does not change by their work alone. Friction's power, which needs the
-/// friction forces of the run, is [`friction_power`]'s.
+/// friction forces of the run, is `friction_power`'s.
 pub fn applied_power(problem: &Problem) -> Option<Expr> {
     let any_applied = (problem.loads.iter()).any(|l| {
         matches!(
@@ -82,7 +82,7 @@ pub fn applied_power(problem: &Problem) -> Option<Expr> {
 }
 
 /// The work `W(t)` of the applied loads (their power from the kinematics) and of friction
-/// (see [`friction_power`]) from the start to each row of `trajectory` (J), integrated over each output step by three-point
+/// (see `friction_power`) from the start to each row of `trajectory` (J), integrated over each output step by three-point
 /// Gauss–Legendre on the quintic through the coordinates, rates and accelerations at its
 /// ends; `None` where it does not apply.
 pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>> {
