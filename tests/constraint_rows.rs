@@ -1,8 +1,8 @@
 //! Every constraint row of every bundled problem, by every method, is named by what it
 //! holds, read against the problem file: a row along a rolling or contact surface's normal
 //! is "no penetration", one across it "no slip" (while it sticks, where there is friction),
-//! a gear's row along the line of centres "distance between the centres" and across it
-//! "no slip", a closure's "loop closure", a joint's friction "no slip … while it sticks"
+//! a gear's row along the line of centres "the centres stay R - r apart" (the problem's
+//! radii, R + r outside) and across it "no slip", a closure's "loop closure", a joint's friction "no slip … while it sticks"
 //! along the joint's axis; the problem's own `position` and `velocity` entries keep their
 //! names. Each direction is one unit vector (the frame that writes it simplest) of the
 //! surface's own frame, or of N where that frame only translates.
@@ -63,12 +63,7 @@ fn parts(label: &str) -> Option<(String, String, Option<String>)> {
     let direction = rest
         .strip_prefix("\\text{, along }")
         .map(|d| d.trim().to_string());
-    for kind in [
-        "no slip",
-        "no penetration",
-        "distance between the centres",
-        "loop closure",
-    ] {
+    for kind in ["no slip", "no penetration", "loop closure"] {
         if let Some(place) = what.strip_prefix(&format!("{kind} at ")) {
             let place = place
                 .strip_suffix(" while it sticks")
@@ -115,6 +110,9 @@ fn fault(file: &str, problem: &Value, label: &str) -> Option<String> {
         || label.starts_with("\\text{prescribed motion of }")
     {
         return None;
+    }
+    if let Some(rest) = label.strip_prefix("\\text{the centres stay } ") {
+        return centres_fault(problem, rest).and_then(wrong);
     }
     let Some((kind, place, direction)) = parts(label) else {
         return wrong("not named by what it holds");
@@ -192,9 +190,7 @@ fn surface_fault(
         // Step 1 names the line of centres ê_r and the tangent ê_t where the distance is a
         // constraint; the gear pair's axles keep it, on a line along n̂_x.
         return match (kind, d.frame.as_str(), d.axis.as_str()) {
-            ("distance between the centres", "e", "r")
-            | ("no slip", "e", "t")
-            | ("no slip", "n", "y") => None,
+            ("no slip", "e", "t") | ("no slip", "n", "y") => None,
             _ => wrong("a gear's row named against its line of centres"),
         };
     }
@@ -299,4 +295,27 @@ fn the_check_finds_a_misnamed_row() {
         ),
         None
     );
+}
+
+/// What is wrong with a gear's position row, `rest` its label after "the centres stay ":
+/// the distance its centres keep, in the problem's radii (`R - r` inside the other disc,
+/// `R + r` outside it), and its direction along the line of centres ê_r.
+fn centres_fault(problem: &Value, rest: &str) -> Option<&'static str> {
+    let Some((apart, tail)) = rest.split_once(" \\text{ apart}") else {
+        return Some("no distance between the centres said");
+    };
+    let gears = problem["constraints"].as_array().into_iter().flatten();
+    let said = gears.filter(|g| g["type"] == "gear").any(|g| {
+        let (r, on) = (g["radius"].as_str(), g["on_radius"].as_str());
+        let sign = if g["internal"] == true { "-" } else { "+" };
+        matches!((on, r), (Some(on), Some(r)) if apart == format!("{on} {sign} {r}"))
+    });
+    if !said {
+        return Some("not the distance a gear's centres keep");
+    }
+    match tail.strip_prefix("\\text{, along }").map(unit) {
+        None => None,
+        Some(Some(d)) if d.frame == "e" && d.axis == "r" => None,
+        Some(_) => Some("a gear's distance row not along its line of centres"),
+    }
 }

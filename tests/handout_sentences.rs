@@ -150,7 +150,7 @@ fn the_skidding_ball_is_solved_with_the_sliding_law_not_the_no_slip_row() {
     );
     assert!(
         text.contains(
-            "the no-slip condition does not hold; row (4) above is the sliding law in its place"
+            "the no-slip condition does not hold; row (4) above, the sliding law, stands in its place"
         ),
         "the sliding order is not said"
     );

@@ -362,3 +362,87 @@ fn a_zero_slip_velocity_is_not_said_to_stick_and_constants_are_named() {
         "{cart}"
     );
 }
+
+/// The bowling ball slides: its free body draws the friction as the unknown F^P_x the table
+/// and the plan carry (red, a reaction), against the slip and signed as it points, and the
+/// legend says so; the sliding law is row (4), printed once, and answer 2's values, derived
+/// in their working, are said there only: ẍ = −μ g = −0.2 · 9.81 = −1.962 m/s² once.
+#[test]
+fn a_sliding_friction_is_one_unknown_in_picture_table_and_rows_said_once() {
+    let text = handout("bowling-ball", "motion-law");
+    let picture = svg_after(&text, "### Free body $B$");
+    assert!(
+        picture.contains("data-kind=\"reaction\" data-label=\"-F^P_x\""),
+        "{picture}"
+    );
+    assert!(!picture.contains("μ F"), "{picture}");
+    assert!(
+        picture.contains("Unknowns (red) along + axes, sliding friction against the slip;"),
+        "{picture}"
+    );
+    let plan = between(&text, "## Step 3", "## Step 4");
+    assert!(plan.contains("F^{P}_{x}, F^{P}_{y}"), "{plan}");
+    let law = "\\Rightarrow \\quad F^{P}_{x} = -\\mu F^{P}_{y}";
+    assert_eq!(text.matches(law).count(), 1, "{text}");
+    let answers = between(&text, "## Answers", "\u{0}");
+    let xdd = -0.2 * 9.81;
+    let said = format!("{xdd:.3}\\ \\mathrm{{m/s^{{2}}}}");
+    assert_eq!(answers.matches(&said).count(), 1, "{answers}");
+}
+
+/// The disc in the cylinder: the position constraint says what it holds in the problem's
+/// radii (the centres stay R − r apart), and the contact force has one name in the table of
+/// forces and in the table of generalized forces; the stiffness of its small oscillations
+/// is defined one way.
+#[test]
+fn the_disc_in_the_cylinder_names_its_constraint_and_its_force_once() {
+    let text = handout("disc-in-cylinder", "lagrange");
+    assert!(
+        text.contains("\\text{the centres stay } R - r \\text{ apart}"),
+        "{text}"
+    );
+    assert!(!text.contains("distance between the centres at"), "{text}");
+    assert!(!text.contains("reaction at contact"), "{text}");
+    let forces = between(&text, "| Load | Point |", "Each constraint row");
+    assert!(forces.contains("| contact force at $P$ |"), "{forces}");
+    // Answer 2's stiffness is defined once: from the energies, K = d²V/dx².
+    let answers = between(&text, "## Answers", "\u{0}");
+    assert!(
+        answers.contains("$K = \\mathrm{d}^{2} V/\\mathrm{d} x^{2}$, both evaluated"),
+        "{answers}"
+    );
+    assert!(
+        !answers.contains("minus the derivative of the right side"),
+        "{answers}"
+    );
+}
+
+/// The collar on the rough rod: step 6 checks the energy against the work of the rope and
+/// of friction, W(t), with its number: by hand, from rest with ẍ = (P cos β + μ F_y)/m
+/// constant, W(1 s) = (P cos β + μ F_y) ẍ / 2 = m ẍ² / 2, the kinetic energy at 1 s.
+#[test]
+fn the_collars_energy_is_checked_against_the_work_of_rope_and_friction() {
+    let text = handout("collar-on-rough-rod", "kane");
+    let (m, p, beta, mu, g) = (1.0f64, 20.0f64, 40f64.to_radians(), 0.3, 9.81);
+    let normal = m * g - p * beta.sin();
+    let xdd = (p * beta.cos() - mu * normal.abs()) / m;
+    let work = m * xdd * xdd / 2.0;
+    let step6 = between(&text, "## Step 6", "## Answers");
+    assert!(
+        step6.contains("The applied force and friction do work on the system"),
+        "{step6}"
+    );
+    assert!(!step6.contains("changes by their work"), "{step6}");
+    let at = step6.find("$W = ").expect("W said") + 5;
+    let said: f64 = step6[at..]
+        .split('$')
+        .next()
+        .expect("W")
+        .parse()
+        .expect("a number");
+    assert!(
+        (said - work).abs() < 1e-4 * work,
+        "W = {said}, by hand {work}"
+    );
+    assert!(step6.contains("equals $W(t)$"), "{step6}");
+}

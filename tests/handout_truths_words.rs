@@ -76,8 +76,19 @@ fn the_heavy_top_finishes_its_algebra_and_names_its_body_by_its_letter() {
 fn the_bowling_ball_gives_its_order_and_its_sliding_law_once() {
     let name = "bowling-ball";
     let text = handout(name, "motion-law", "markdown");
-    // Step 5 says the sliding law stands in place of row (4); the solve does not again.
-    has(&text, "row (4) above is the sliding law in its place", name);
+    // Step 5 says the sliding law stands in place of row (4); the solve does not again,
+    // nor does it print the law a second time.
+    has(
+        &text,
+        "row (4) above, the sliding law, stands in its place",
+        name,
+    );
+    let law = "\\Rightarrow \\quad F^{P}_{x} = -\\mu F^{P}_{y}";
+    assert_eq!(
+        text.matches(law).count(),
+        1,
+        "{name}: the sliding law said once"
+    );
     lacks(&text, "is the sliding law, not the no-slip condition", name);
     lacks(&text, "in the order of step 3", name);
 }

@@ -7,16 +7,20 @@
 use crate::support::handouts::{bundled as handout, has, lacks};
 
 /// An answer's value ends its sentence, and the LaTeX starts the next one on a new line
-/// instead of running on after a quad.
+/// instead of running on after a quad; a value its working derives is said at the end of
+/// that working, not also before it.
 #[test]
 fn an_answer_is_a_sentence_followed_by_its_reason() {
     let name = "gear-pair-torque";
     let latex = handout(name, "newton-euler", "latex");
+    // Its value is derived in the working, and said there only: the lead is a sentence.
     has(
         &latex,
-        "$\\ddot{q}_{A} = 225\\ \\mathrm{rad/s^{2}}$.\\par",
+        "At $t = 0\\ \\mathrm{s}$ (the initial state). One degree",
         name,
     );
+    has(&latex, "= 225\\ \\mathrm{rad/s^{2}}", name);
+    lacks(&latex, "$\\ddot{q}_{A} = 225\\ \\mathrm{rad/s^{2}}$.", name);
     lacks(&latex, "\\mathrm{rad/s^{2}}$\\quad", name);
     let markdown = handout("double-pendulum-rods", "motion-law", "markdown");
     has(
@@ -86,7 +90,8 @@ fn the_bowling_ball_derives_its_slip_velocity_before_the_answers() {
 }
 
 /// The rolling coin's energy: E = T + V written, T and V each with its number, and the
-/// two adding to the E printed (0.727222 J).
+/// two adding to the E printed (0.727222 J); V = m g z, by the coordinate that is the
+/// centre's height.
 #[test]
 fn the_energy_is_written_as_t_plus_v_with_its_numbers() {
     let name = "rolling-coin";
@@ -99,7 +104,11 @@ fn the_energy_is_written_as_t_plus_v_with_its_numbers() {
         text[start..end].parse().expect("a number")
     };
     let kinetic = number_before("\\ \\mathrm{J}$ and $V = ");
-    let potential = number_before("\\ \\mathrm{J}$, $h_{D^*}$");
+    // The coordinate z is the height of the centre: V is written with it, not with a
+    // second name for the same height.
+    has(&text, "$V = m g z = ", name);
+    assert!(!text.contains("h_{D^*}"), "{name}: the height named twice");
+    let potential = number_before("\\ \\mathrm{J}$. $V$ is zero");
     assert!(
         (kinetic + potential - 0.727222).abs() < 2e-6,
         "{kinetic} + {potential}"
@@ -117,13 +126,92 @@ fn the_listed_solution_carries_its_units() {
     lacks(&text, "in SI units, the solution is", name);
 }
 
-/// The heavy top's linearized period says where it comes from, beside the simulated one.
+/// The heavy top's linearized period says where it comes from, beside the simulated one,
+/// and why the two differ: the simulation starts at ψ̇ = 3 rad/s with φ̇ = 150 rad/s, so at
+/// the spin ω₃ = φ̇ + ψ̇ cos θ = 150 + 3 cos 0.5 = 152.633 rad/s (worked here from the
+/// problem's initial state), not at the steady precession's ω₃ = 150 rad/s. The nutation
+/// is said once, in words, with the answers' digits, not also as a list of values.
 #[test]
 fn a_linearized_period_says_it_is_about_the_state() {
     let name = "heavy-symmetric-top";
     let text = handout(name, "motion-law", "markdown");
     has(&text, "Linearized about this state", name);
-    has(&text, "a motion that starts away from it need not", name);
+    let spin = 150.0 + 3.0 * 0.5f64.cos();
+    has(
+        &text,
+        "The motion simulated above starts at $\\Omega = 3\\ \\mathrm{rad/s}$",
+        name,
+    );
+    has(&text, &format!("$\\omega_{{3}} = {spin:.3}"), name);
+    has(&text, "not at this state's $\\Omega = 3.45313\\ \\mathrm{rad/s}$, $\\omega_{3} = 150\\ \\mathrm{rad/s}$", name);
+    has(
+        &text,
+        "$\\tau = 0.120276\\ \\mathrm{s}$, differs from this one",
+        name,
+    );
+    lacks(&text, "a motion that starts away from it need not", name);
+    // The nutation in words only, to six figures.
+    lacks(&text, "\\theta_{\\min} = ", name);
+    has(
+        &text,
+        "$\\theta$ oscillates between $0.5\\ \\mathrm{rad}$ and $0.507095\\ \\mathrm{rad}$",
+        name,
+    );
+    lacks(&text, "0.5071\\ ", name);
+}
+
+/// Step 6 in a course's words: numerical integration and its checks, with no tool's words;
+/// the LaTeX legend says the inertia forces and torques are opposite to the kinetic
+/// diagram's arrows, with the gyroscopic term only where a body turns in space.
+#[test]
+fn step_six_and_the_inertia_legend_in_a_courses_words() {
+    for (name, method, spatial) in [
+        ("double-pendulum-rods", "motion-law", false),
+        ("heavy-symmetric-top", "motion-law", true),
+    ] {
+        let text = handout(name, method, "markdown");
+        has(&text, "## Step 6. Numerical integration", name);
+        has(&text, "\nChecks:\n", name);
+        has(
+            &text,
+            "The equations of motion of step 5, integrated numerically from the initial state over",
+            name,
+        );
+        for tool in [
+            "Simulation and confirmation",
+            "What confirms",
+            "Integrating these equations",
+        ] {
+            lacks(&text, tool, name);
+        }
+        let latex = handout(name, method, "latex");
+        let latex = latex.split_whitespace().collect::<Vec<_>>().join(" ");
+        has(&latex, "\\section*{Step 6. Numerical integration}", name);
+        has(&latex, "The inertia forces $-m\\,\\mathbf{a}^{*}$ and torques $-\\mathbf{I}\\cdot\\boldsymbol{\\alpha}", name);
+        has(
+            &latex,
+            "are opposite to the kinetic diagram's arrows.",
+            name,
+        );
+        lacks(&latex, "arrows reversed", name);
+        let gyroscopic =
+            "\\boldsymbol{\\omega}\\times\\mathbf{I}\\cdot\\boldsymbol{\\omega}$ are opposite";
+        assert_eq!(
+            latex.contains(gyroscopic),
+            spatial,
+            "{name}: the gyroscopic term"
+        );
+    }
+}
+
+/// Kane's auxiliary speeds said plainly (the disc on a cart): their partial velocities are
+/// those of the motion in which only their own constraint is relaxed.
+#[test]
+fn the_auxiliary_partial_velocities_are_said_plainly() {
+    let name = "disc-on-cart";
+    let text = handout(name, "kane", "markdown");
+    has(&text, "The lines after them are for the auxiliary speeds: each one's partial velocities are those of the motion in which its own constraint alone is relaxed", name);
+    lacks(&text, "an auxiliary speed's, in the lines after them", name);
 }
 
 /// The Motion Law's free-body table and its picture say the same: the inertia force and

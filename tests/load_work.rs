@@ -1,7 +1,8 @@
 //! The work of the applied forces and torques along a run, against closed forms: a constant
 //! torque T on an angle θ does W = T (θ − θ₀), a constant force P along x does
 //! W = P (x − x₀); with that work the total energy balances, and with a load 0.1 % off it
-//! does not.
+//! does not. Sliding friction's work is included: μ times the normal force against the
+//! slip, times the distance slid.
 
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::{load_work, load_work_check, simulate, Compiled, Trajectory};
@@ -93,14 +94,67 @@ fn a_load_off_by_a_thousandth_breaks_the_energy_balance() {
     }
 }
 
-/// Where a damper or friction also takes energy, or nothing is applied, the balance with
-/// the applied loads alone is not claimed.
+/// A force pushing along a rough rod or floor, sliding from rest: the friction is μ N
+/// against the slip, N by hand from the forces across the slide (the block: N = m g; the
+/// collar pulled up at β: N = |m g − P sin β|), so the work of the push and of friction
+/// together is W = (P cos β − μ N)(x − x₀), and the energy balances with it.
+#[test]
+fn sliding_frictions_work_is_mu_n_times_the_distance_slid() {
+    for (name, beta) in [
+        ("block-pushed-on-rough-floor", None),
+        ("collar-on-rough-rod", Some("beta")),
+    ] {
+        let problem = problem(name);
+        let trajectory = run(&problem);
+        let work = load_work(&problem, &trajectory).expect("the push and friction do work");
+        let (m, g, p, mu) = (
+            constant(&problem, "m"),
+            constant(&problem, "g"),
+            constant(&problem, "P"),
+            constant(&problem, "mu"),
+        );
+        let beta = beta.map_or(0.0, |b| constant(&problem, b));
+        let normal = (m * g - p * beta.sin()).abs();
+        let net = p * beta.cos() - mu * normal;
+        assert!(
+            net > 0.0 && mu * normal > 0.1,
+            "{name}: it slides, against friction"
+        );
+        let column = trajectory.column("x").expect("x");
+        let first = trajectory.rows[0][column];
+        let largest = work.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+        for (row, w) in trajectory.rows.iter().zip(&work) {
+            let closed = net * (row[column] - first);
+            assert!(
+                (w - closed).abs() <= 1e-9 * largest,
+                "{name} at t = {}: W = {w}, (P cos β − μN)·Δx = {closed}",
+                row[0]
+            );
+        }
+        // Friction's share is no rounding: over the run it takes more than a joule.
+        let slid = trajectory.rows.last().expect("rows")[column] - first;
+        assert!(
+            mu * normal * slid > 1.0,
+            "{name}: friction's work {}",
+            mu * normal * slid
+        );
+        assert!(
+            load_work_check(&problem, &trajectory)
+                .expect("applies")
+                .passed,
+            "{name}"
+        );
+    }
+}
+
+/// Where a damper also takes energy, or nothing is applied, or friction holds the body at
+/// rest all along (no work, no motion), the balance with the applied loads is not claimed.
 #[test]
 fn no_balance_is_claimed_where_other_forces_do_work_without_a_potential() {
     for name in [
         "two-mass-spring-damper",
-        "block-pushed-on-rough-floor",
         "simple-pendulum",
+        "statics-block-on-incline",
     ] {
         let problem = problem(name);
         let trajectory = run(&problem);

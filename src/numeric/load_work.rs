@@ -5,6 +5,7 @@
 //! checks.
 
 use super::check::{Check, CheckKind, ENERGY_TOLERANCE};
+use super::friction_work::friction_power;
 use super::inputs::state_symbols;
 use super::simulate::Trajectory;
 use super::work_along::{work_along, Imbalance};
@@ -15,8 +16,9 @@ use crate::symbolic::{add, fixed, Expr, Program};
 
 /// The power of the applied forces, couples and joint actuators of `problem`, as one
 /// expression of the constants, the state and `t`; `None` where there are none, or where
-/// another load or a friction site also does work without a potential (a damper, sliding
-/// friction) or a coordinate is driven: the energy then does not change by their work alone.
+/// another load also does work without a potential (a damper) or a coordinate is driven:
+/// the energy then does not change by their work alone. Friction's power, which needs the
+/// friction forces of the run, is `friction_power`'s.
 pub fn applied_power(problem: &Problem) -> Option<Expr> {
     let any_applied = (problem.loads.iter()).any(|l| {
         matches!(
@@ -40,12 +42,8 @@ pub fn applied_power(problem: &Problem) -> Option<Expr> {
     if !loads.clone().any(applied) || !loads.clone().all(|i| applied(i) || conservative(i)) {
         return None;
     }
-    let rough = (problem.constraints.iter().map(|c| &c.friction))
-        .chain(problem.joints.iter().map(|j| &j.friction))
-        .chain(problem.closures.iter().map(|j| &j.friction))
-        .any(Option::is_some);
     let driven = problem.coordinates.iter().any(|c| c.motion.is_some());
-    if rough || driven {
+    if driven {
         return None;
     }
     let actions = crate::plan::free_bodies(&model, Form::Handout)
@@ -83,12 +81,13 @@ pub fn applied_power(problem: &Problem) -> Option<Expr> {
     Some(add(terms))
 }
 
-/// The work `W(t)` of the applied loads (their power from the kinematics) from the start
-/// to each row of `trajectory` (J), integrated over each output step by three-point
+/// The work `W(t)` of the applied loads (their power from the kinematics) and of friction
+/// (see `friction_power`) from the start to each row of `trajectory` (J), integrated over each output step by three-point
 /// Gauss–Legendre on the quintic through the coordinates, rates and accelerations at its
 /// ends; `None` where it does not apply.
 pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>> {
     let power = applied_power(problem)?;
+    let mut friction = friction_power(problem, trajectory)?;
     let program = Program::compile(&state_symbols(problem), &[power]);
     let columns: Vec<[usize; 3]> = (problem.coordinates.iter())
         .map(|c| {
@@ -112,10 +111,18 @@ pub fn load_work(problem: &Problem, trajectory: &Trajectory) -> Option<Vec<f64>>
         out[0]
     };
     let work = work_along(&trajectory.rows, &columns, |t, state| {
-        Some(power_at(t, state))
+        Some(power_at(t, state) + friction(t, state)?)
     })?;
-    work.iter().all(|w| w.is_finite()).then_some(work)
+    // A system left at rest (a block that friction holds) has no work to balance.
+    let kinetic = trajectory.column("kinetic")?;
+    let still = (trajectory.rows.iter().map(|r| r[kinetic]))
+        .chain(work.iter().copied())
+        .all(|e| e.abs() < STILL);
+    (work.iter().all(|w| w.is_finite()) && !still).then_some(work)
 }
+
+/// An energy (J) below which a run neither moves nor works: at rest all along.
+const STILL: f64 = 1e-9;
 
 /// The largest `|E(t) − E(0) − W(t)|` over the rows, with its time: what the energy
 /// balance with the applied loads leaves.

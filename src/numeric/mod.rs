@@ -18,6 +18,7 @@ mod evaluate;
 mod frame;
 mod friction;
 mod friction_vectors;
+mod friction_work;
 mod impact;
 mod inputs;
 mod integrate;

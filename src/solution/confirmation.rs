@@ -32,7 +32,8 @@ pub fn integration(problem: &Problem, settings: &SimulateSettings) -> String {
         false => "",
     };
     format!(
-        "Integrating these equations from {start} for {} s{drive} gives the plots below.",
+        "The equations of motion of step 5, integrated numerically from {start} over {} \
+         s{drive}, give the plots below.",
         num(settings.duration),
     )
 }
@@ -75,11 +76,26 @@ pub fn work_balance(
     let (worst, at) = crate::numeric::largest_imbalance(trajectory, work)?;
     let (end_t, end_w) = (trajectory.rows.last()?[0], *work.last()?);
     let who = applied_loads(problem);
+    let rough = (problem.constraints.iter().map(|c| &c.friction))
+        .chain(problem.joints.iter().map(|j| &j.friction))
+        .chain(problem.closures.iter().map(|j| &j.friction))
+        .any(Option::is_some);
+    // Friction's work is its force's dot product with the slip velocity.
+    let (who, slip) = match rough {
+        true => (
+            format!(
+                "{} and friction do",
+                who.trim_end_matches(" does").trim_end_matches(" do")
+            ),
+            "; friction's with the slip velocity",
+        ),
+        false => (who, ""),
+    };
     let head = format!(
         "{who} work on the system, and every other force that does work has a potential, so \
          its total energy changes by exactly the work $W(t)$ done on it, the integral over \
          time of the power (a force's dot product with the velocity of its point, a torque's \
-         with the angular velocity of its body): by $t = {}$ s, $W = {}$ J",
+         with the angular velocity of its body{slip}): by $t = {}$ s, $W = {}$ J",
         fixed(end_t),
         num(end_w),
     );

@@ -13,13 +13,6 @@ fn number(x: f64) -> String {
     super::answer_numbers::number_tex(x)
 }
 
-/// Four significant figures: the words give the shape of the motion; the values above keep
-/// every digit.
-fn four(x: f64) -> String {
-    let rounded: f64 = format!("{x:.3e}").parse().unwrap_or(x);
-    number(rounded)
-}
-
 fn unit(problem: &Problem, i: usize, order: u8) -> String {
     super::answer_numbers::unit_tex(&coordinate_unit(problem, i, order))
 }
@@ -37,62 +30,39 @@ pub fn fill(
     };
     let k = *coordinate;
     let found = described(&answer.values);
-    let q = latex(&problem.coordinate_expr(k, 0));
-    let u = unit(problem, k, 0);
     view.at_tex = format!(
         "0 \\le t \\le {}\\ \\mathrm{{s}}",
         crate::symbolic::fixed(found.duration)
     )
     .into();
     view.at_note = "simulated from the initial state".into();
-    let mut values = vec![
-        format!(
-            "{q}_{{\\min}} = {}{u}, \\qquad {q}_{{\\max}} = {}{u}",
-            number(found.minimum),
-            number(found.maximum)
-        ),
-        format!(
-            "\\bar{{{q}}} = {}{u}, \\qquad \\frac{{{q}_{{\\max}} - {q}_{{\\min}}}}{{2}} = {}{u}",
-            number(found.mean),
-            number(found.amplitude)
-        ),
-    ];
-    if let Some(period) = found.period {
-        values.push(format!("\\tau = {}\\ \\mathrm{{s}}", number(period)));
-    }
-    for (&j, (lo, hi)) in rates.iter().zip(&found.rates) {
-        values.push(format!(
-            "{} \\le {} \\le {}{}",
-            number(*lo),
-            latex(&problem.coordinate_expr(j, 1)),
-            number(*hi),
-            unit(problem, j, 1)
-        ));
-    }
-    view.values_tex = values.into_iter().map(Into::into).collect();
+    // The motion is said once, in words, with every value to the answers' digits.
+    view.values_tex.clear();
     vec![AnswerStep {
         text: sentence(problem, (k, rates), &found).into(),
         math: String::new().into(),
     }]
 }
 
-/// The motion in words: "θ oscillates between … and … about a mean of …, once every
-/// τ = … s (16 times in the 2 s simulated); ψ̇ stays between … and … and keeps its sign:
-/// ψ never turns back (no loops)." The amplitude is among the values, not said again.
+/// The motion in words, each value to the answers' digits: "θ oscillates between … and …
+/// about a mean of …, with the amplitude (θ_max − θ_min)/2 = …, once every τ = … s, measured
+/// between its successive maxima. ψ̇ stays between … and … and keeps its sign: ψ never turns
+/// back (no loops)."
 fn sentence(problem: &Problem, (k, rates): (usize, &[usize]), found: &Description) -> String {
     let q = latex(&problem.coordinate_expr(k, 0));
     let u = unit(problem, k, 0);
     let mut words = format!(
-        "Over the {} s simulated, ${q}$ oscillates between ${}{u}$ and ${}{u}$, about a mean of ${}{u}$",
-        crate::symbolic::fixed(found.duration),
-        four(found.minimum),
-        four(found.maximum),
-        four(found.mean)
+        "${q}$ oscillates between ${}{u}$ and ${}{u}$, about a mean of ${}{u}$, with the \
+         amplitude $\\frac{{{q}_{{\\max}} - {q}_{{\\min}}}}{{2}} = {}{u}$",
+        number(found.minimum),
+        number(found.maximum),
+        number(found.mean),
+        number(found.amplitude)
     );
     match found.period {
         Some(period) => words.push_str(&format!(
             ", once every $\\tau = {}\\ \\mathrm{{s}}$, measured between its successive maxima.",
-            four(period)
+            number(period)
         )),
         None => words.push_str(": it does not reach two maxima, so no period is measured."),
     }
@@ -102,8 +72,8 @@ fn sentence(problem: &Problem, (k, rates): (usize, &[usize]), found: &Descriptio
         let keeps = lo * hi > 0.0;
         words.push_str(&format!(
             " ${rate}$ stays between ${}$ and ${}{}$ and {}.",
-            four(*lo),
-            four(*hi),
+            number(*lo),
+            number(*hi),
             unit(problem, j, 1),
             match keeps {
                 true => format!("keeps its sign: ${name}$ never turns back (no loops)"),

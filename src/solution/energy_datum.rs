@@ -159,6 +159,8 @@ fn definition(worked: &Worked, kinetic: f64, potential: f64) -> String {
             latex(&model.bodies[b.0].mass),
             super::tex::centre_tex(model, b),
         );
+        // A coordinate that is the height of the centre is named as it is.
+        let height = height_coordinate(worked, b).unwrap_or(format!("h_{{{centre}}}"));
         let name = latex_name(model.problem.body_name(b));
         let spin = if crate::mechanics::is_particle(model, b) {
             String::new()
@@ -169,22 +171,49 @@ fn definition(worked: &Worked, kinetic: f64, potential: f64) -> String {
         };
         (
             format!("\\tfrac{{1}}{{2}} {mass} |{{}}^{{N}}\\mathbf{{v}}^{{{centre}}}|^{{2}}{spin}"),
-            format!("{mass} g h_{{{centre}}}"),
+            format!("{mass} g {height}"),
         )
     };
     let (t, v): (Vec<String>, Vec<String>) = bodies.iter().map(|&b| term(b)).unzip();
-    let heights = if bodies.len() == 1 {
-        let centre = super::tex::centre_tex(model, bodies[0]);
-        format!("$h_{{{centre}}}$ the height of ${centre}$")
-    } else {
-        "each $h$ the height of a mass centre".to_string()
+    let named: Vec<BodyId> = (bodies.iter().copied())
+        .filter(|&b| height_coordinate(worked, b).is_none())
+        .collect();
+    let heights = match named[..] {
+        [] => String::new(),
+        [one] => {
+            let centre = super::tex::centre_tex(model, one);
+            format!(", $h_{{{centre}}}$ the height of ${centre}$")
+        }
+        _ => ", each $h$ the height of a mass centre".to_string(),
     };
     let number = |x: f64| super::answer_numbers::number_tex(x);
     format!(
-        "$E = T + V$, with the velocities of step 4 at the start: $T = {} = {}\\ \\mathrm{{J}}$ and $V = {} = {}\\ \\mathrm{{J}}$, {heights}.",
+        "$E = T + V$, with the velocities of step 4 at the start: $T = {} = {}\\ \\mathrm{{J}}$ and $V = {} = {}\\ \\mathrm{{J}}${heights}.",
         t.join(" + "),
         number(kinetic),
         v.join(" + "),
         number(potential)
     )
+}
+
+/// The coordinate that is the height of body `b`'s mass centre above N's origin, as LaTeX
+/// (`z` for a coin whose centre is at `(x, y, z)`): the centre's position dotted with
+/// gravity is minus g times that coordinate alone. `None` where no coordinate is.
+fn height_coordinate(worked: &Worked, b: BodyId) -> Option<String> {
+    use crate::symbolic::{eval, latex, partial, simplify};
+    let model = &worked.derivation.model;
+    let problem = model.problem;
+    let g = crate::mechanics::vector_of(problem.gravity.as_ref()?);
+    let values = model.values_at(0.0, &worked.q0, &worked.rates0);
+    let size: f64 = (g.components_in(BodyId::GROUND, &model.frames).iter())
+        .map(|c| eval(c, &values).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let along = simplify(&model.bodies[b.0].center.position.dot(&g, &model.frames));
+    (0..problem.coordinates.len()).find_map(|c| {
+        let q = problem.coordinate_expr(c, 0);
+        let k = simplify(&partial(&along, &problem.coordinate_symbol(c, 0)).ok()?);
+        let minus_g = (eval(&k, &values) + size).abs() <= 1e-12 * size.max(1.0);
+        (minus_g && simplify(&(&along - &(&k * &q))).is_zero()).then(|| latex(&q))
+    })
 }

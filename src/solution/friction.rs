@@ -217,18 +217,24 @@ fn steps(
     let slip_speed: f64 = state.slip.iter().map(|v| v * v).sum::<f64>().sqrt();
     let mut out = Vec::new();
     if state.mode == Mode::Slip && state.failed_stick.is_none() {
-        out.push(step(
-            format!(
-                "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ times the normal force, against the slip, and the no-slip condition does not hold; {}",
-                fixed(slip_speed),
-                match normal.contains("\\sqrt") {
-                    false => format!("row {rows} above is the sliding law in its place:"),
-                    true => format!("in place of row {rows} above, the sliding law:"),
-                }
-            ),
-            law_tex(names, normal, mu, state),
-        ));
-        out.push(step("Solved with it:", solved));
+        let head = format!(
+            "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ times the normal force, against the slip, and the no-slip condition does not hold;",
+            fixed(slip_speed),
+        );
+        // Where step 5 printed the sliding law as its row, it is referred to, not said again.
+        match normal.contains("\\sqrt") {
+            false => out.push(step(
+                format!("{head} row {rows} above, the sliding law, stands in its place. Solved with it:"),
+                solved,
+            )),
+            true => {
+                out.push(step(
+                    format!("{head} in place of row {rows} above, the sliding law:"),
+                    law_tex(names, normal, mu, state),
+                ));
+                out.push(step("Solved with it:", solved));
+            }
+        }
         return out;
     }
     let first = state.failed_stick.as_ref();

@@ -160,7 +160,7 @@ pub fn dependent_speeds(
         "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s \\frac{\\partial \\dot{q}_s}{\\partial u_r}\\,\\mathbf{v}_s$, summed over the dependent rates $\\dot{q}_s$ of the relations above (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)"
     };
     let partials = if super::auxiliary_partials::any(derivation) {
-        format!("{partials}; an auxiliary speed's, in the lines after them, are those of the motion in which only its constraint gives way")
+        format!("{partials}. The lines after them are for the auxiliary speeds: each one's partial velocities are those of the motion in which its own constraint alone is relaxed")
     } else {
         partials.to_string()
     };

@@ -414,13 +414,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
                 ),
             ),
         };
-        // An action and its reaction at a closure act on two bodies: each is named by its body.
-        let label = match role(model, action) {
-            Role::Multiplier => {
-                format!("{} on {}", action.label, problem.body_name(action.body))
-            }
-            _ => action.label.clone(),
-        };
+        let label = load_label(derivation, action);
         let mut first = true;
         for (r, (partial, work)) in partials.iter().zip(&work).enumerate() {
             if simplify(work).is_zero() {
@@ -428,11 +422,11 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
             }
             let (rate, _) = names(model, r);
             rows.push(GeneralizedForceRow {
-                load: if std::mem::take(&mut first) {
+                load: MarkupLine::from(if std::mem::take(&mut first) {
                     label.clone()
                 } else {
                     String::new()
-                },
+                }),
                 point_tex: Math::from(point.clone()),
                 partial_tex: Math::from(format!(
                     "\\frac{{\\partial {of}}}{{\\partial {rate}}} = {}",
@@ -450,7 +444,10 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
             continue;
         }
         rows.push(GeneralizedForceRow {
-            load: format!("loads on the coordinate {}", problem.coordinates[r].name),
+            load: MarkupLine::from(format!(
+                "loads on the coordinate {}",
+                problem.coordinates[r].name
+            )),
             point_tex: Math::from("\\text{joint}".to_string()),
             partial_tex: Math::from(String::new()),
             q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", r + 1, tex(q))),
@@ -464,7 +461,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
     {
         for (c, value) in coordinates.into_iter().zip(values) {
             rows.push(GeneralizedForceRow {
-                load: format!("multiplier of {}", row.name),
+                load: MarkupLine::from(format!("multiplier of {}", row.name)),
                 point_tex: Math::from("\\text{joint}".to_string()),
                 partial_tex: Math::from(String::new()),
                 q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", c + 1, tex(&value))),
@@ -472,6 +469,31 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
         }
     }
     rows
+}
+
+/// A load's name in the table of generalized forces, as step 2's table of forces names it
+/// (the contact force at P, the reaction force at O); where a reaction acts on two bodies of
+/// the table, each is named with its body.
+fn load_label(derivation: &Derivation, action: &crate::plan::Action) -> String {
+    let model = &derivation.model;
+    if role(model, action) != Role::Multiplier {
+        return action.label.clone();
+    }
+    let shown = super::shown_names::shown_names(model);
+    let label = super::force_labels::table_label(model, action, &shown);
+    let shared = (derivation.actions.iter())
+        .filter(|a| a.source == action.source && role(model, a) == Role::Multiplier)
+        .any(|a| a.body != action.body);
+    match shared {
+        true => {
+            let body = model.problem.body_name(action.body);
+            format!(
+                "{label} on {}",
+                super::force_labels::shown_name(body, &shown)
+            )
+        }
+        false => label,
+    }
 }
 
 /// Which reaction component each multiplier is, row by row of step 1, and its sign.

@@ -71,6 +71,7 @@ mod named_identity;
 mod normal_sense;
 mod on_constraint;
 mod partial_rows;
+mod period_contrast;
 mod pictures;
 mod plot_titles;
 mod polar_units;
@@ -117,6 +118,7 @@ pub use handout::{handout, student, Handout};
 pub use pictures::motion::motion as motion_picture;
 pub use pictures::{
     draw as draw_pictures, free_body_sets, point_id, FREE_BODY_LEGEND, FREE_BODY_LEGEND_THIRD_LAW,
+    SLIDING_FRICTION,
 };
 pub use row_view::equation_view;
 pub use shown_names::shown_names;

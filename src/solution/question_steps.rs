@@ -113,6 +113,7 @@ pub fn attach(worked: &Worked, answers: &[Answer], views: &mut [AnswerView]) {
         }
     });
     super::constancy::attach(worked, answers, views);
+    super::period_contrast::attach(worked, answers, views);
 }
 
 /// A derived `show` ends with its derivation: the values of its two sides at a state, and
@@ -333,7 +334,7 @@ fn one_freedom(
     let period = simplify(&(&m1 / &k1));
     let (mut steps, energies) =
         super::reduced::equation_steps(derivation, system, (row, k), (m, f), states);
-    let k_words = super::reduced::k_words(energies, &q_tex, &latex(&problem.coordinate_expr(k, 1)));
+    let k_words = super::reduced::k_words(energies, &q_tex);
     steps.extend([
         step(
             format!(

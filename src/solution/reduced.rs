@@ -301,11 +301,12 @@ pub fn equation_steps(
     }
 }
 
-/// What `K` is, in the linearization's sentence: from the energies, `d²V/dx²` at the
-/// state (the term in the rate squared adds nothing at rest).
-pub fn k_words(energies: bool, q_tex: &str, rate_tex: &str) -> String {
+/// What `K` is, in the linearization's sentence, defined once: from the energies,
+/// `d²V/dx²` at the state (the right side's term in the rate squared vanishes at rest, and
+/// the rest of its derivative is this); otherwise minus the derivative of the right side.
+pub fn k_words(energies: bool, q_tex: &str) -> String {
     match energies {
-        true => format!("$K = \\mathrm{{d}}^{{2}} V/\\mathrm{{d}} {q_tex}^{{2}}$, minus the derivative of the right side with respect to ${q_tex}$ (its term in ${rate_tex}^{{2}}$ adds nothing at rest)"),
+        true => format!("$K = \\mathrm{{d}}^{{2}} V/\\mathrm{{d}} {q_tex}^{{2}}$"),
         false => format!("$K$ is minus the derivative of the right side with respect to ${q_tex}$"),
     }
 }

@@ -106,15 +106,12 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
                 // for a gear, the distance between the centres; a velocity-level row is
                 // the no-slip condition along the contact's tangent (a gear's meshing).
                 let holonomic = row.is_some_and(|r| r.position.is_some());
-                let gear = matches!(kind, Some(crate::problem::ConstraintKind::Gear { .. }));
-                match (gear, holonomic) {
-                    (false, true) => text(format!("no penetration at {}", place(&s.name))),
-                    (false, false) => text(format!("no slip at {}", place(&s.name))),
-                    (true, true) => text(format!(
-                        "distance between the centres at {}",
-                        place(&s.name)
-                    )),
-                    (true, false) => text(format!("no slip at {}", place(&s.name))),
+                match (kind, holonomic) {
+                    (Some(crate::problem::ConstraintKind::Gear { .. }), true) => {
+                        centres_apart_tex(kind)
+                    }
+                    (_, true) => text(format!("no penetration at {}", place(&s.name))),
+                    (_, false) => text(format!("no slip at {}", place(&s.name))),
                 }
             }
             Some(s) if matches!(s.kind, SiteKind::Closure(_)) => match row.map(|r| &r.origin) {
@@ -139,6 +136,28 @@ pub(super) fn constraint_what_tex(model: &Model, name: &str) -> String {
         Some(RowOrigin::Prescribed(_)) => text(format!("prescribed motion {name}")),
         None => text(format!("constraint {name}")),
     }
+}
+
+/// A gear's position row as a course says it: the centres stay `R - r` apart (`R + r`
+/// outside the other disc), the radii as the problem names them.
+fn centres_apart_tex(kind: Option<&crate::problem::ConstraintKind>) -> String {
+    let Some(crate::problem::ConstraintKind::Gear {
+        radius,
+        on_radius,
+        internal,
+        ..
+    }) = kind
+    else {
+        return "\\text{the centres stay apart}".to_string();
+    };
+    let apart = match internal {
+        true => on_radius - radius,
+        false => crate::symbolic::add(vec![on_radius.clone(), radius.clone()]),
+    };
+    format!(
+        "\\text{{the centres stay }} {} \\text{{ apart}}",
+        latex(&apart)
+    )
 }
 
 /// Whether closure `site` joins a body straight to the body its own joint hangs it from

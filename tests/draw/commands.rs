@@ -261,9 +261,9 @@ fn the_bowling_balls_friction_points_against_the_slip() {
     let (g, m) = r
         .arrows
         .iter()
-        .find(|(g, _)| g.attr("data-label").is_some_and(|l| l.contains('μ')))
+        .find(|(g, _)| g.attr("data-label") == Some("-F^P_x"))
         .expect("the friction arrow");
-    assert_eq!(g.attr("data-kind"), Some("load"));
+    assert_eq!(g.attr("data-kind"), Some("reaction"));
     let (tail, head) = super::line(g, *m).expect("straight");
     let back = r.project_direction([-1.0, 0.0, 0.0]);
     let got = [head[0] - tail[0], head[1] - tail[1]];

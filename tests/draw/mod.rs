@@ -435,8 +435,8 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
             // by a word is printed by the handout's letter for it (the lane's contact: P).
             let name = shown_letter(d, &joint.name);
             if let Some(slip) = slip_along(d, joint, c, values) {
-                // Sliding friction is known: drawn against the slip, not as an unknown, and
-                // labelled by the rows' unknown signed as it points.
+                // Sliding friction, an unknown of the rows: drawn against the slip, not
+                // along the + axis, and labelled by the rows' unknown signed as it points.
                 let against = dir.map(|x| -x * slip.signum());
                 let unknown = format!("{letter}^{name}_{rest}");
                 check_sliding(
@@ -459,6 +459,8 @@ fn check_reactions(d: &Derivation, r: &Read, set: &[BodyId], values: &Values) {
         .arrows
         .iter()
         .filter(|(g, _)| g.attr("data-kind") == Some("reaction"))
+        // A sliding friction, signed as it points, is checked above against the slip.
+        .filter(|(g, _)| !g.attr("data-label").is_some_and(|l| l.starts_with('-')))
     {
         let label = g.attr("data-label").unwrap_or("").to_string();
         let at = g.attr("data-at").unwrap_or("").to_string();

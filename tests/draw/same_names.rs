@@ -1,6 +1,6 @@
 //! `draw` and the handout print one name for each force: a contact or body named by a word
 //! is called by the handout's letter in both (the bowling ball's lane contact is P, its
-//! friction -F^P_x = μ F^P_y), never by the word in one and the letter in the other.
+//! friction -F^P_x), never by the word in one and the letter in the other.
 
 use crate::support::{all_problems, run};
 use std::collections::BTreeSet;
@@ -60,7 +60,7 @@ fn draw_and_the_handout_name_every_force_alike() {
         let text = std::fs::read_to_string(problem).expect("the problem");
         if text.contains("\"lane\"") {
             words += 1;
-            assert!(drawn.contains("-F^P_x = μ F^P_y"), "{name}: {drawn:?}");
+            assert!(drawn.contains("-F^P_x"), "{name}: {drawn:?}");
         }
         if drawn != handout {
             differ.push(format!("{name}: draw {drawn:?}, handout {handout:?}"));

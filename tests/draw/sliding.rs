@@ -1,5 +1,6 @@
 //! Sliding friction in the free bodies: a site that slips at the drawn state has its
-//! friction drawn as a known force, against the slip.
+//! friction drawn as the unknown of the rows it is (red, as the plan and the table of forces
+//! have it), against the slip, signed as it points.
 
 use super::{angle_between, line, Read};
 use mbd_tutor::equations::Derivation;
@@ -27,16 +28,17 @@ pub(super) fn slip_along(
     (slip.abs() > 1e-9).then_some(slip)
 }
 
-/// A sliding friction arrow at `at`: a known force drawn along `against` (against the
-/// slip), labelled by the rows' `unknown` signed as the arrow points (`-F^P_x` where the
-/// slip is along the unknown's + axis, `slip` > 0), equal to μ times the normal force.
+/// A sliding friction arrow at `at`: an unknown (a reaction) drawn along `against`
+/// (against the slip), labelled by the rows' `unknown` signed as the arrow points (`-F^P_x`
+/// where the slip is along the unknown's + axis, `slip` > 0) and nothing else: the sliding
+/// law is a row of the rows, not a known value of the picture.
 pub(super) fn check_sliding(r: &Read, at: &str, against: [f64; 3], (unknown, slip): (&str, f64)) {
     let sign = if slip > 0.0 { "-" } else { "" };
-    let want = format!("{sign}{unknown} = μ ");
+    let want = format!("{sign}{unknown}");
     let found = r.arrows.iter().find(|(g, _)| {
-        g.attr("data-kind") == Some("load")
+        g.attr("data-kind") == Some("reaction")
             && g.attr("data-at") == Some(at)
-            && g.attr("data-label").is_some_and(|l| l.starts_with(&want))
+            && g.attr("data-label") == Some(want.as_str())
     });
     let (g, m) =
         found.unwrap_or_else(|| panic!("{}: no sliding friction {want:?} at {at}", r.name));

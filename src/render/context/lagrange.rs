@@ -22,7 +22,7 @@ pub struct LagrangeView {
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct GeneralizedForceRow {
     /// The load, on its first line; empty on the others.
-    pub load: String,
+    pub load: MarkupLine,
     /// Where it acts, e.g. `\text{at } B^*`, or for a couple `\text{anywhere on } B`.
     pub point_tex: Math,
     /// Its partial velocity (or partial angular velocity), e.g.

@@ -21,6 +21,29 @@ pub const FREE_BODY_LEGEND: &str =
 pub const FREE_BODY_LEGEND_THIRD_LAW: &str = "Not to scale. Unknowns (red) along + axes, \
      or opposite their partner's by Newton's third law; known forces as they act.";
 
+/// What [`FREE_BODY_LEGEND`] (or [`FREE_BODY_LEGEND_THIRD_LAW`]) adds where a contact slides
+/// at the state drawn: its friction, an unknown of the rows too, is drawn against the slip,
+/// its label signed as it points (`−F^P_x`).
+pub const SLIDING_FRICTION: &str = ", sliding friction against the slip";
+
+/// The legend of a free body: with Newton's third law where it draws a partner's unknowns
+/// opposite the + axes, with [`SLIDING_FRICTION`] where it draws a sliding friction.
+pub fn legend_of(third_law: bool, sliding: bool) -> String {
+    let legend = if third_law {
+        FREE_BODY_LEGEND_THIRD_LAW
+    } else {
+        FREE_BODY_LEGEND
+    };
+    match sliding {
+        true => legend.replacen(
+            "; known forces",
+            &format!("{SLIDING_FRICTION}; known forces"),
+            1,
+        ),
+        false => legend.to_string(),
+    }
+}
+
 /// What every picture of one problem shares.
 pub struct Setting<'a, 'm, 'p> {
     /// The derivation whose plan gives the free bodies.
@@ -265,7 +288,7 @@ impl Setting<'_, '_, '_> {
         }
         let mut markers = self.markers(set, false);
         let mut arrows = Vec::new();
-        let mut third_law = false;
+        let (mut third_law, mut sliding) = (false, false);
         for action in self
             .derivation
             .actions
@@ -274,6 +297,7 @@ impl Setting<'_, '_, '_> {
         {
             let drawn = self.action_arrows(action, &mut markers);
             third_law |= self.is_partners(action) && drawn.iter().any(|a| a.kind == Kind::Reaction);
+            sliding |= self.slides(action);
             arrows.extend(drawn);
         }
         let kinetic: Vec<Arrow> = set.iter().flat_map(|&b| self.inertia_arrows(b)).collect();
@@ -294,13 +318,19 @@ impl Setting<'_, '_, '_> {
             arrows,
             kinetic: Some((body_shapes, kinetic)),
             down: super::bodies::down(self.numbers),
-            legend: if third_law {
-                FREE_BODY_LEGEND_THIRD_LAW
-            } else {
-                FREE_BODY_LEGEND
-            }
-            .into(),
+            legend: legend_of(third_law, sliding),
             content,
+        }
+    }
+
+    /// Whether `action` is a reaction with a friction component that slides at the state
+    /// drawn.
+    fn slides(&self, action: &Action) -> bool {
+        let model = &self.derivation.model;
+        match action.source {
+            Source::Reaction(j) => (model.sites[j].reactions.iter())
+                .any(|c| super::sliding::sliding(model, self.numbers, j, c).is_some()),
+            _ => false,
         }
     }
 
@@ -424,10 +454,11 @@ impl Setting<'_, '_, '_> {
                     .filter(|c| (c.kind == ComponentKind::Moment) == couple)
                     .filter_map(|c| {
                         if let Some((along, label)) = super::sliding::sliding(model, n, j, c) {
-                            // Sliding friction is known: drawn the way it acts.
+                            // Sliding friction, an unknown of the rows: drawn against the
+                            // slip, its label signed as it points.
                             let direction = scale(along, sign);
                             unit(direction)?;
-                            return Some(arrow(Kind::Load, label, direction));
+                            return Some(arrow(Kind::Reaction, label, direction));
                         }
                         let direction = scale(n.vector(&c.direction), sign);
                         unit(direction)?;

@@ -25,7 +25,7 @@ mod velocities;
 use crate::equations::Derivation;
 use crate::problem::BodyId;
 use crate::render::draw::{layout, Drawing, View};
-pub use build::{point_id, FREE_BODY_LEGEND, FREE_BODY_LEGEND_THIRD_LAW};
+pub use build::{point_id, FREE_BODY_LEGEND, FREE_BODY_LEGEND_THIRD_LAW, SLIDING_FRICTION};
 use numbers::{norm, sub, Numbers};
 
 /// The configuration of the derivation's problem at its initial state, for the student's
@@ -41,16 +41,14 @@ pub fn initial_configuration(derivation: &Derivation) -> Option<Drawing> {
 }
 
 /// The legend of the free bodies among `drawings`: the one that names Newton's third law
-/// where any of them draws a reaction opposite its + axes.
-pub fn free_body_legend(drawings: &[Drawing]) -> &'static str {
-    if drawings
-        .iter()
-        .any(|d| d.scene.legend == FREE_BODY_LEGEND_THIRD_LAW)
-    {
-        FREE_BODY_LEGEND_THIRD_LAW
-    } else {
-        FREE_BODY_LEGEND
-    }
+/// where any of them draws a reaction opposite its + axes, and sliding friction where any
+/// draws it.
+pub fn free_body_legend(drawings: &[Drawing]) -> String {
+    let any = |f: fn(&str) -> bool| drawings.iter().any(|d| f(&d.scene.legend));
+    build::legend_of(
+        any(|l| l.contains("Newton's third law")),
+        any(|l| l.contains(build::SLIDING_FRICTION)),
+    )
 }
 
 /// The free bodies of the plan, in the order its rows first use them, then one for each

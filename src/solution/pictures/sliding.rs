@@ -1,8 +1,8 @@
-//! Sliding friction in a free body: a known force, drawn the way it acts. At the drawn
-//! state a friction site that slips pushes against the slip, μ times the normal force, so
-//! its arrow points against the slip velocity, not along the unknown's positive sense as a
-//! sticking site's component is. Its label says both what it is and which unknown of the
-//! rows it stands for: `−F^P_x = μ F^P_y` where it points along `−n̂_x`.
+//! Sliding friction in a free body: an unknown of the rows, as the plan and the table of
+//! forces have it, with the sliding law its row. At the drawn state a friction site that
+//! slips pushes against the slip, so its arrow points against the slip velocity, not along
+//! the unknown's positive sense as a sticking site's component is, and its label is the
+//! unknown signed as the arrow points: `−F^P_x` where it points along `−n̂_x`.
 
 use super::numbers::{scale, Numbers, P3};
 use crate::mechanics::{Model, ReactionComponent};
@@ -14,8 +14,7 @@ const STILL: f64 = 1e-9;
 
 /// For component `c` of site `site`'s reaction, when it is the friction along a tangent of
 /// a site that slips at the drawn state: its direction on the child (against the slip)
-/// and its label, `-F^{lane}_{x} = μ F^{lane}_{y}`: the rows' unknown, signed as the arrow
-/// points, equal to μ times the normal component.
+/// and its label, `-F^{lane}_{x}`: the rows' unknown, signed as the arrow points.
 pub fn sliding(
     model: &Model,
     numbers: &Numbers,
@@ -31,18 +30,9 @@ pub fn sliding(
         return None;
     }
     let direction = scale(numbers.vector(&c.direction), -slip.signum());
-    let normal = friction
-        .normal
-        .first()
-        .map(|n| latex(&Expr::sym(n.clone())))
-        .unwrap_or_else(|| "N".into());
     // The arrow points along the unknown's axis times −sign(slip): the unknown, so signed,
     // is the arrow's (positive) size.
     let unknown = latex(&Expr::sym(row.unknown.clone()));
     let sign = if slip > 0.0 { "-" } else { "" };
-    let tex = format!(
-        "{sign}{unknown} = {} {normal}",
-        latex(&friction.coefficient)
-    );
-    Some((direction, Label::from_tex(&tex)))
+    Some((direction, Label::from_tex(&format!("{sign}{unknown}"))))
 }
