@@ -17,6 +17,9 @@ use crate::symbolic::{eval, latex, partial, simplify, Expr, Symbol, Values};
 /// The most unknowns the symbolic elimination takes on.
 const LARGEST: usize = 8;
 
+/// A pivot this small beside the matrix's largest entry is taken as zero.
+const SINGULAR: f64 = 1e-10;
+
 /// The motion until the switch, in symbols.
 struct Closed {
     /// Each coordinate's q'' while the site slides.
@@ -281,7 +284,7 @@ fn closed_form(
 /// values `v`; `None` where a column has no pivot there or the system is large.
 pub(super) fn eliminate(mut a: Vec<Vec<Expr>>, mut b: Vec<Expr>, v: &Values) -> Option<Vec<Expr>> {
     let n = b.len();
-    if n > LARGEST || a.len() != n {
+    if n > LARGEST || a.len() != n || singular_at(&a, v) {
         return None;
     }
     let mut used = vec![false; n];
@@ -315,6 +318,47 @@ pub(super) fn eliminate(mut a: Vec<Vec<Expr>>, mut b: Vec<Expr>, v: &Values) -> 
         x[col] = simplify(&(&b[row] / &a[row][col]));
     }
     Some(x)
+}
+
+/// Whether the matrix `a` is singular at the values `v`, by the same elimination in
+/// numbers: a pivot at most [`SINGULAR`] times the largest entry. Found before the
+/// elimination in symbols, whose entries grow at each step (from sums of products to
+/// quotients of them) so that a pivot that is zero at `v` evaluates there only to
+/// rounding, and would be taken, all the columns after it eliminated in vain.
+fn singular_at(a: &[Vec<Expr>], v: &Values) -> bool {
+    let mut m: Vec<Vec<f64>> = (a.iter())
+        .map(|row| row.iter().map(|e| eval(e, v)).collect())
+        .collect();
+    let largest = (m.iter().flatten()).fold(0.0_f64, |x, y| x.max(y.abs()));
+    if !largest.is_finite() || largest == 0.0 {
+        return true;
+    }
+    let n = m.len();
+    let mut used = vec![false; n];
+    for col in 0..n {
+        let Some((row, size)) = (0..n)
+            .filter(|&r| !used[r])
+            .map(|r| (r, m[r][col].abs()))
+            .max_by(|x, y| x.1.total_cmp(&y.1))
+        else {
+            return true;
+        };
+        if size.is_nan() || size <= SINGULAR * largest {
+            return true;
+        }
+        used[row] = true;
+        let pivot_row = m[row].clone();
+        for (r, entries) in m.iter_mut().enumerate() {
+            let factor = entries[col] / pivot_row[col];
+            if r == row || factor == 0.0 {
+                continue;
+            }
+            for (entry, p) in entries.iter_mut().zip(&pivot_row) {
+                *entry -= factor * p;
+            }
+        }
+    }
+    false
 }
 
 /// Whether `found` is `expected` to 1e-6, relative.
@@ -416,4 +460,50 @@ fn steps_for(
         ));
     }
     steps
+}
+
+#[cfg(test)]
+mod tests {
+    use super::eliminate;
+    use crate::symbolic::{eval, Expr, Symbol, Values};
+
+    fn at(pairs: &[(&str, f64)]) -> Values {
+        let mut v = Values::new();
+        for (name, value) in pairs {
+            v.set(Symbol::Const((*name).into()), *value);
+        }
+        v
+    }
+
+    /// `[1, x y; 1, z]` at x = 1.1, y = 1.1e5, z = 1.21e5 is singular, but its second
+    /// pivot `z − x y` evaluates there to 1.46e-11, rounding alone, which is past an
+    /// absolute 1e-12: refused beside the largest entry, 1.21e5.
+    #[test]
+    fn a_pivot_that_is_rounding_is_refused() {
+        let (x, y, z) = (
+            Expr::constant("x"),
+            Expr::constant("y"),
+            Expr::constant("z"),
+        );
+        let v = at(&[("x", 1.1), ("y", 1.1e5), ("z", 1.21e5)]);
+        let pivot = eval(&z, &v) - eval(&x, &v) * eval(&y, &v);
+        assert!(pivot.abs() > 1e-12 && pivot.abs() < 1e-10, "{pivot}");
+        let a = vec![vec![Expr::one(), &x * &y], vec![Expr::one(), z]];
+        assert!(eliminate(a, vec![Expr::one(), Expr::int(2)], &v).is_none());
+    }
+
+    /// `[m, 1; k, 0] [p; q] = [0; f]`: by hand p = f/k, q = −m f/k, checked at numbers.
+    #[test]
+    fn a_regular_system_is_solved() {
+        let (m, k, f) = (
+            Expr::constant("m"),
+            Expr::constant("k"),
+            Expr::constant("f"),
+        );
+        let v = at(&[("m", 2.0), ("k", 4.0), ("f", 3.0)]);
+        let a = vec![vec![m, Expr::one()], vec![k, Expr::zero()]];
+        let x = eliminate(a, vec![Expr::zero(), f], &v).expect("regular");
+        assert!((eval(&x[0], &v) - 0.75).abs() < 1e-12);
+        assert!((eval(&x[1], &v) + 1.5).abs() < 1e-12);
+    }
 }

@@ -4,8 +4,8 @@
     python3 tools/bench/explain_speed.py [BIN] [--runs N] [--all] [--variants] [--grade]
     python3 tools/bench/explain_speed.py NEW --old OLD [--runs N]
 
-For the Whipple bicycle, the ten-link chain, all-joints-3d and the rolling coin, by Kane
-and the Motion Law: the fastest of N runs (default 3) of `explain` (Markdown, to a null
+For the Whipple bicycle, the ten-link chain, all-joints-3d, the rolling coin and the tall
+block on a rough floor (two sticking contacts), by Kane and the Motion Law: the fastest of N runs (default 3) of `explain` (Markdown, to a null
 output) and of `solve`, each as wall seconds and as CPU seconds (user + system, the
 operating system's accounting of the finished child, which a loaded machine moves less),
 and the ratio explain / max(solve, 0.1 s) against the target of 3. With --all, every

@@ -15,6 +15,7 @@ PROBLEMS = [
     "problems/validation/ten-link-chain.json",
     "problems/validation/all-joints-3d.json",
     "problems/rolling-coin.json",
+    "problems/validation/statics-tall-block.json",
 ]
 METHODS = ["kane", "motion-law"]
 

@@ -3,10 +3,11 @@
 
     python3 tools/bench/interactive.py [BIN] [--runs N] [--limit SECONDS] [--skip-all]
 
-1. `explain` against `solve` of the Whipple bicycle, the ten-link chain, all-joints-3d and
-   the rolling coin, by Kane and the Motion Law: the fastest of N runs (default 3) of
-   each, and explain <= max(3 x solve, 0.3 s). Then Lagrange's handout of the spherical
-   chain of 3 against its solve, explain <= max(3 x solve, 0.5 s).
+1. `explain` against `solve` of the Whipple bicycle, the ten-link chain, all-joints-3d, the
+   rolling coin and the tall block on a rough floor, by Kane and the Motion Law: the
+   fastest of N runs (default 3) of each, and explain <= max(3 x solve, 0.3 s). Then
+   Lagrange's handout of the spherical chain of 3 against its solve, explain <= max(3 x
+   solve, 0.5 s).
 2. Every bundled handout (problems/*.json and problems/validation/*.json, the four
    methods, worked and student) once, against 0.5 s; one still running after --limit
    seconds (default 60) is stopped and counted over.
