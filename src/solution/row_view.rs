@@ -17,10 +17,30 @@ fn group_tex(e: &Expr) -> String {
     }
     let text = latex(e);
     if e.terms().len() > 1 {
+        // Like terms summed, as a student finishes them: −m1 g − m2 g is −g (m1 + m2).
+        let collected = latex_collected(e);
+        if one_product(&collected) {
+            return collected;
+        }
         format!("\\left[{text}\\right]")
     } else {
         text
     }
+}
+
+/// Whether LaTeX `text` is one product: no `+` or `-` outside brackets and braces but a
+/// leading sign.
+fn one_product(text: &str) -> bool {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' | '{' => depth += 1,
+            ')' | ']' | '}' => depth -= 1,
+            '+' | '-' if depth == 0 && i > 0 => return false,
+            _ => {}
+        }
+    }
+    true
 }
 
 /// How many of Kane's rows are the independent speeds' (before the auxiliary speeds').
@@ -140,13 +160,16 @@ fn kane_heading(
             why,
         )
     } else if r <= problem.coordinates.len() {
-        (
-            format!(
+        // The speeds are named once where they are chosen: a row of a rate of a
+        // coordinate, u_r = q̇_r, is headed by r alone, one of a named speed by its name.
+        let heading = match problem.has_speeds() {
+            true => format!(
                 "r = {r}\\colon\\; {}",
                 super::kane::speed_tex(derivation, r - 1)
             ),
-            "(a generalized speed)".to_string(),
-        )
+            false => format!("r = {r}"),
+        };
+        (heading, String::new())
     } else {
         augmented_note = super::auxiliary::augmented_note(derivation, row, r).unwrap_or_default();
         let reactions: Vec<Symbol> = row
@@ -287,12 +310,13 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         .unwrap_or_default();
     // Formed already in its simplest form, or with the same terms in another order and
     // nothing written out between: written once.
-    let same = grouped_tex == simplified_tex
-        || (written_tex.is_empty() && same_terms(&grouped_tex, &simplified_tex));
-    if same && simplified_note.is_empty() {
+    let same = written_tex.is_empty()
+        && (grouped_tex == simplified_tex || same_terms(&grouped_tex, &simplified_tex));
+    // A student writes such a row once, with no words before it.
+    let bare = same && simplified_note.is_empty();
+    if bare {
         grouped_tex.clear();
         written_tex.clear();
-        simplified_note = "Already in its simplest form:".into();
     }
     EquationView {
         label,
@@ -302,6 +326,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         written_tex: Math::from(written_tex),
         simplified_tex: Math::from(simplified_tex),
         simplified_note,
+        bare,
         by_name,
         active_tex: Math::from(active_tex),
         inertia_tex: Math::from(inertia_tex),
