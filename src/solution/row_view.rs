@@ -301,22 +301,19 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         }
     }
     // The inertia terms written out, cross products and dot products, as a student does.
-    let mut written_tex = super::written_out::written_out_shown(derivation, row, &shown)
+    let written_tex = super::written_out::written_out_shown(derivation, row, &shown)
         .filter(|_| !grouped_tex.is_empty())
         .map(|w| w.tex)
         // Its components as the row prints them, a root of a square taken by the initial
         // sign; one left (no sign to take it by) where the row has none goes without.
         .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
-    // Formed already in its simplest form, or with the same terms in another order and
-    // nothing written out between: written once.
-    let same = written_tex.is_empty()
-        && (grouped_tex == simplified_tex || same_terms(&grouped_tex, &simplified_tex));
-    // A student writes such a row once, with no words before it.
-    let bare = same && simplified_note.is_empty();
-    if bare {
+    // Formed already in its simplest form, or with the same terms in another order: written
+    // once, after its terms written out if any, else with no words before it.
+    let same = grouped_tex == simplified_tex || same_terms(&grouped_tex, &simplified_tex);
+    let bare = same && simplified_note.is_empty() && written_tex.is_empty();
+    if same && simplified_note.is_empty() {
         grouped_tex.clear();
-        written_tex.clear();
     }
     EquationView {
         label,
@@ -454,7 +451,19 @@ fn solved_for_reaction(row: &Expr, reactions: &[Symbol]) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::same_terms;
+    use super::{one_product, same_terms};
+
+    #[test]
+    fn like_terms_collected_are_one_product_and_unlike_ones_are_not() {
+        assert!(one_product("-g (m_{1} + m_{2})"));
+        assert!(one_product(
+            "-\\frac{L m}{12} (\\ddot{q}_{1} + \\ddot{q}_{2})"
+        ));
+        assert!(!one_product("-m_{1} g - m_{2} g"));
+        assert!(!one_product(
+            "2 l F^{P}_{x} c_{\\theta} + 2 l F^{P}_{y} s_{\\theta}"
+        ));
+    }
 
     #[test]
     fn a_row_in_another_order_or_without_its_brackets_has_the_same_terms() {
