@@ -82,19 +82,13 @@ pub fn dependent_speeds(
     };
     let start = derivation.model.values_at(0.0, q, q_rates);
     // Step 1 found the same rates over another denominator: the two linked on the loop.
-    let link = match speeds.at_each_state {
-        true => None,
-        false => super::kane_delta::on_the_loop(&derivation.model, speeds),
-    };
+    let link = (!speeds.at_each_state)
+        .then(|| super::kane_delta::on_the_loop(&derivation.model, speeds))
+        .flatten();
     let relations_tex: Vec<String> = (speeds.dependent.iter().enumerate())
         .map(|(s, &d)| {
-            // A rate the loop simplifies is written in its simplest form alone.
-            let simplest = link
-                .as_ref()
-                .and_then(|l| l.simplest.iter().find(|(k, _)| *k == s));
-            if let (Some((_, c)), [free]) = (simplest, speeds.independent.as_slice()) {
-                let rate_of = c * &problem.coordinate_expr(*free, 1);
-                return format!("{} = {}", rate(d), latex_collected(&simplify(&rate_of)));
+            if let Some(simplest) = simplest_relation(derivation, link.as_ref(), speeds, s) {
+                return format!("{} = {simplest}", rate(d));
             }
             // Each speed's rate with its entry of C (or C_P), in the order of the speeds.
             let pairs = (speeds.independent.iter().zip(&speeds.c[s]))
@@ -124,11 +118,7 @@ pub fn dependent_speeds(
     let using = if relations.is_empty() {
         String::new()
     } else {
-        let hold = if relations.len() == 1 {
-            "holds"
-        } else {
-            "hold"
-        };
+        let hold = ["hold", "holds"][usize::from(relations.len() == 1)];
         format!(
             " (here and in the rows below written with {}, which {hold} on the motion)",
             words(&relations)
@@ -203,6 +193,22 @@ pub fn dependent_speeds(
         time_terms: problem.moves_with_time(),
         start_tex: Vec::new(),
     }
+}
+
+/// Dependent rate `s` in its simplest form alone where the loop simplifies it (the
+/// four-bar's `q̇3 = −a b sin q2/(c Δ) q̇1`), its right side; `None` otherwise.
+fn simplest_relation(
+    derivation: &Derivation,
+    link: Option<&super::kane_delta::OnTheLoop>,
+    speeds: &Speeds,
+    s: usize,
+) -> Option<String> {
+    let (_, c) = link?.simplest.iter().find(|(k, _)| *k == s)?;
+    let [free] = speeds.independent.as_slice() else {
+        return None;
+    };
+    let rate_of = c * &derivation.model.problem.coordinate_expr(*free, 1);
+    Some(latex_collected(&simplify(&rate_of)))
 }
 
 /// The common denominator defined where the rates first have it: `, over the common
