@@ -43,7 +43,8 @@ pub struct WrittenOut {
 }
 
 /// The inertia terms of a Motion Law row of forces or moments (or of a Newton–Euler row of
-/// moments), written out; `None` for another method or row, a free body of more than three bodies, a body whose acceleration
+/// moments), written out; `None` for another method or row, a free body of more than three
+/// bodies, a body whose acceleration
 /// step 4 writes by named parts, or a line too long for the page.
 pub fn written_out(derivation: &Derivation, row: &Equation) -> Option<WrittenOut> {
     written_out_shown(derivation, row, &|e: &Expr| e.clone())
@@ -357,14 +358,14 @@ fn moment_lines(
     (!lines.is_empty()).then_some((lines, terms))
 }
 
-/// `r_y (m a)_x - r_x (m a)_y = ` for the component along axis `axis`: the determinant's
-/// row of `r × (−m a)`, the minus of the inertia force applied once.
+/// `-(r_x (m a)_y - r_y (m a)_x) = ` for the component along axis `axis` (the determinant's
+/// row, of the inertia force −m a).
 fn determinant_row(axis: usize) -> String {
     let names = ["x", "y", "z"];
     let (j, k) = ((axis + 1) % 3, (axis + 2) % 3);
     format!(
-        "r_{{{}}}\\, (m a)_{{{}}} - r_{{{}}}\\, (m a)_{{{}}} = ",
-        names[k], names[j], names[j], names[k]
+        "-\\left(r_{{{}}}\\, (m a)_{{{}}} - r_{{{}}}\\, (m a)_{{{}}}\\right) = ",
+        names[j], names[k], names[k], names[j]
     )
 }
 
