@@ -243,3 +243,50 @@ fn tables_and_the_matrix_form_in_course_words() {
         lacks(&text, "rows numbered as in step 5", name);
     }
 }
+
+/// Step 5's rows as a student writes them. A row already in its simplest form is written
+/// once with no words before it; Newton–Euler's moment rows write each reaction's r × F,
+/// here the gear's (r^{B*P} × F^P) · n̂_z = −r_B F_t, with P at −r_B n̂_x from B* and the
+/// tooth force along n̂_y; like terms are summed, −m1 g − m2 g as −g (m1 + m2).
+#[test]
+fn rows_are_finished_algebra_in_course_words() {
+    let name = "gear-pair-torque";
+    for format in ["markdown", "latex", "html"] {
+        let text = handout(name, "newton-euler", format);
+        lacks(&text, "simplest form", name);
+    }
+    let text = handout(name, "newton-euler", "markdown");
+    has(
+        &text,
+        "**1. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{x}$**\n\n$$\nF^{O_{A}}_{x} = 0\n$$",
+        name,
+    );
+    has(
+        &text,
+        "(\\mathbf{r}^{B^{*} P} \\times \\mathbf{F}^{P}) \\cdot \\hat{\\mathbf{n}}_{z} &= -r_{B} F^{P}_{t}",
+        name,
+    );
+    let name = "double-pendulum-rods";
+    let text = handout(name, "motion-law", "markdown");
+    has(&text, "F^{O}_{y} - g (m_{1} + m_{2}) - (", name);
+    lacks(&text, "[-m_{1} g - m_{2} g]", name);
+}
+
+/// The four-bar's bars share one mass, m: the free body of all three writes m g, not an
+/// undefined m_k. Its q̇3 is printed in the simplest form alone, the textbook's
+/// ω_C = ω_A a sin(θ_B − θ_A)/(c sin(θ_B − θ_C)) with θ_B − θ_A = q2 and
+/// Δ = −b sin(q1 + q2 − q3) on the loop: q̇3 = −a b sin q2/(c Δ) q̇1.
+#[test]
+fn the_four_bar_writes_its_mass_and_its_rates_once() {
+    let name = "four-bar";
+    let text = handout(name, "kane", "markdown");
+    lacks(&text, "m_{k}", name);
+    has(&text, "$-m\\, g \\hat{\\mathbf{n}}_{y}$", name);
+    has(
+        &text,
+        "\\dot{q}_{3} &= -\\frac{a b \\sin(q_{2})}{c \\Delta} \\dot{q}_{1}",
+        name,
+    );
+    lacks(&text, "\\dot{q}_{3} &= \\frac{a}{\\Delta}", name);
+    has(&text, "$\\dot{q}_{3}$ is written with $", name);
+}

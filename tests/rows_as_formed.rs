@@ -51,11 +51,12 @@ fn a_short_inertia_force_stays_multiplied_out() {
 #[test]
 fn a_planar_inertia_torque_is_alpha_dot_i_alone() {
     let markdown = explain("validation/ten-link-chain", "newton-euler", "markdown");
-    // In a plane ω × I·ω is normal to ω, so only I·α has a part along n̂z.
+    // In a plane ω × I·ω is normal to ω, so only I·α has a part along n̂z: for the rod
+    // about its centre, I = m L²/12 and α = (q̈1 + … + q̈7) n̂z, summed as one product.
     let heading = "**21. $\\mathrm{link}_{7}\\colon \\sum \\mathbf{M}_{\\mathrm{link}_{7}^{*}} \\cdot \\hat{\\mathbf{n}}_{z}$**";
     assert_eq!(
         row_as_formed(&markdown, heading),
-        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - ( \\mathbf{I}^{\\mathrm{link}_{7}} \\cdot \\boldsymbol{\\alpha}^{\\mathrm{link}_{7}} ) \\cdot \\hat{\\mathbf{n}}_{z} = 0"
+        "\\left[-\\frac{L F^{P_{8}}_{x}}{2} - \\frac{L F^{P_{7}}_{x} c_{7}}{2} - \\frac{L F^{P_{7}}_{y} s_{7}}{2}\\right] - \\frac{L^{2} m}{12} (\\ddot{q}_{1} + \\cdots + \\ddot{q}_{7}) = 0"
     );
 }
 

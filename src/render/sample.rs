@@ -361,6 +361,7 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{m g L}}{{2}} \\left(3 {s1} + {s12}\\right) = 0"
             )),
             simplified_note: String::new(),
+            bare: false,
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
@@ -381,6 +382,7 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{m L^{{2}}}}{{2}} \\sin(q_{{2}}) \\dot{{q}}_{{1}}^{{2}} + \\frac{{m g L}}{{2}} {s12} = 0"
             )),
             simplified_note: String::new(),
+            bare: false,
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
@@ -398,6 +400,7 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{1}}{{2}} \\left({c12} {accelerations} - {s12} {rates}^{{2}}\\right)\\right) = 0"
             )),
             simplified_note: String::new(),
+            bare: false,
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),
@@ -415,6 +418,7 @@ fn equations() -> Vec<Equation> {
                  + \\frac{{1}}{{2}} \\left({s12} {accelerations} + {c12} {rates}^{{2}}\\right)\\right) = 0"
             )),
             simplified_note: String::new(),
+            bare: false,
             by_name: false,
             active_tex: Math::from(String::new()),
             inertia_tex: Math::from(String::new()),

@@ -174,17 +174,34 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
         super::tex::bodies_set_tex(derivation, set)
     );
     let at_center = format!("\\text{{at }} k^*,\\; {every}");
+    // The bodies' one mass by its own name when they share it (the bars of a four-bar,
+    // each of mass m); otherwise body k's, m_k, said so.
+    let masses: Vec<String> = set
+        .iter()
+        .map(|&b| latex(&model.bodies[b.0].mass))
+        .collect();
+    let (mass, of_mass) = match masses.split_first() {
+        Some((first, rest)) if rest.iter().all(|m| m == first) && !first.contains(' ') => {
+            (first.clone(), String::new())
+        }
+        _ => ("m_{k}".to_string(), ", of mass $m_{k}$".to_string()),
+    };
     if let Some(g) = &model.problem.gravity {
         let g = vector_of(g);
         view.distance.push(Force {
-            label: "weight of each body k".into(),
-            vector_tex: Math::from(times_mass(&vector_tex(model, &g))),
+            label: MarkupLine::from(format!("weight of each body k{of_mass}")),
+            vector_tex: Math::from(times_mass(&mass, &vector_tex(model, &g))),
             point_tex: Math::from(at_center.clone()),
         });
     }
+    let of_mass = if model.problem.gravity.is_some() {
+        String::new()
+    } else {
+        of_mass
+    };
     view.inertia.push(Force {
-        label: "inertia force of each body k".into(),
-        vector_tex: "-m_{k}\\, {}^{N}\\mathbf{a}^{k^*}".into(),
+        label: MarkupLine::from(format!("inertia force of each body k{of_mass}")),
+        vector_tex: Math::from(format!("-{mass}\\, {{}}^{{N}}\\mathbf{{a}}^{{k^*}}")),
         point_tex: Math::from(at_center),
     });
     if set.iter().all(|&body| is_particle(model, body)) {
@@ -197,13 +214,13 @@ fn group_rows(view: &mut FreeBody, derivation: &Derivation, set: &[BodyId]) {
     });
 }
 
-/// `m_k g` for the field `g`: `-m_k g n̂_y` for `-g n̂_y`, `m_k (…)` for a sum.
-fn times_mass(g: &str) -> String {
+/// `mass` times the field `g`: `-m_k g n̂_y` for `-g n̂_y`, `m_k (…)` for a sum.
+fn times_mass(mass: &str, g: &str) -> String {
     let single = !g[1..].contains(" + ") && !g[1..].contains(" - ");
     match g.strip_prefix('-') {
-        Some(rest) if single => format!("-m_{{k}}\\, {rest}"),
-        _ if single => format!("m_{{k}}\\, {g}"),
-        _ => format!("m_{{k}} \\left({g}\\right)"),
+        Some(rest) if single => format!("-{mass}\\, {rest}"),
+        _ if single => format!("{mass}\\, {g}"),
+        _ => format!("{mass} \\left({g}\\right)"),
     }
 }
 

@@ -81,8 +81,15 @@ pub fn dependent_speeds(
         words(&all)
     };
     let start = derivation.model.values_at(0.0, q, q_rates);
+    // Step 1 found the same rates over another denominator: the two linked on the loop.
+    let link = (!speeds.at_each_state)
+        .then(|| super::kane_delta::on_the_loop(&derivation.model, speeds))
+        .flatten();
     let relations_tex: Vec<String> = (speeds.dependent.iter().enumerate())
         .map(|(s, &d)| {
+            if let Some(simplest) = simplest_relation(derivation, link.as_ref(), speeds, s) {
+                return format!("{} = {simplest}", rate(d));
+            }
             // Each speed's rate with its entry of C (or C_P), in the order of the speeds.
             let pairs = (speeds.independent.iter().zip(&speeds.c[s]))
                 .chain(speeds.prescribed.iter().zip(&speeds.c_prescribed[s]));
@@ -111,11 +118,7 @@ pub fn dependent_speeds(
     let using = if relations.is_empty() {
         String::new()
     } else {
-        let hold = if relations.len() == 1 {
-            "holds"
-        } else {
-            "hold"
-        };
+        let hold = ["hold", "holds"][usize::from(relations.len() == 1)];
         format!(
             " (here and in the rows below written with {}, which {hold} on the motion)",
             words(&relations)
@@ -164,12 +167,7 @@ pub fn dependent_speeds(
     } else {
         partials.to_string()
     };
-    // Step 1 found the same rates over another denominator: the two linked on the loop.
-    let link = match speeds.at_each_state {
-        true => None,
-        false => super::kane_delta::on_the_loop(&derivation.model, speeds),
-    };
-    let partials = linked(partials, link.as_ref());
+    let partials = linked(partials, link.as_ref(), &rates(&speeds.dependent));
     paragraphs.push(if speeds.at_each_state {
         format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
     } else {
@@ -197,6 +195,22 @@ pub fn dependent_speeds(
     }
 }
 
+/// Dependent rate `s` in its simplest form alone where the loop simplifies it (the
+/// four-bar's `q̇3 = −a b sin q2/(c Δ) q̇1`), its right side; `None` otherwise.
+fn simplest_relation(
+    derivation: &Derivation,
+    link: Option<&super::kane_delta::OnTheLoop>,
+    speeds: &Speeds,
+    s: usize,
+) -> Option<String> {
+    let (_, c) = link?.simplest.iter().find(|(k, _)| *k == s)?;
+    let [free] = speeds.independent.as_slice() else {
+        return None;
+    };
+    let rate_of = c * &derivation.model.problem.coordinate_expr(*free, 1);
+    Some(latex_collected(&simplify(&rate_of)))
+}
+
 /// The common denominator defined where the rates first have it: `, over the common
 /// denominator $\Delta = …$`, or nothing.
 fn over_delta(speeds: &Speeds, relation_tex: &str) -> String {
@@ -222,13 +236,19 @@ fn kane_equations_tex(count: usize) -> String {
 }
 
 /// `partials` after the words that step 1's rates are these, where `link` says how their
-/// denominators agree on the loop.
-fn linked(partials: String, link: Option<&super::kane_delta::OnTheLoop>) -> String {
+/// denominators agree on the loop (and which of the `dependent` rates, in LaTeX, a
+/// further identity of the loop writes in its simplest form).
+fn linked(
+    partials: String,
+    link: Option<&super::kane_delta::OnTheLoop>,
+    dependent: &[String],
+) -> String {
     match link {
         Some(link) => {
-            let also: String = (link.also.iter())
-                .map(|(identity, along)| {
-                    format!(", and ${identity}$, since the loop dotted with ${along}$ is zero")
+            let also: String = (link.also.iter().zip(&link.simplest))
+                .map(|((identity, along), (s, _))| {
+                    let rate = dependent.get(*s).map_or("", String::as_str);
+                    format!(", and ${rate}$ is written with ${identity}$, since the loop dotted with ${along}$ is zero")
                 })
                 .collect();
             format!(

@@ -21,6 +21,10 @@ pub struct OnTheLoop {
     /// with the unit vector the loop is dotted with: `c \sin(q_1 - q_3) + d \sin q_1 =
     /// -b \sin q_2` along `\hat{\mathbf{a}}_{y}`, for `q̇₃`.
     pub also: Vec<(String, String)>,
+    /// The dependent rates those identities simplify, each by its index among the
+    /// dependent speeds with its coefficient of the free rate in step 1's form over `Δ`
+    /// (`−a b sin q₂/(c Δ)` for `q̇₃`): what step 5 prints, the simplest form.
+    pub simplest: Vec<(usize, Expr)>,
     /// `Δ`, the named denominator.
     pub delta: Expr,
     /// What `Δ` equals on the loop, `-b \sin(q_1 + q_2 - q_3)`.
@@ -87,9 +91,11 @@ pub fn on_the_loop(model: &Model, speeds: &DependentSpeeds) -> Option<OnTheLoop>
                 if same_at(&residual, &along, &states) || same_at(&residual, &-along, &states) {
                     let delta =
                         (speeds.c.iter().flatten()).find_map(|c| named_delta(c, delta.note()))?;
-                    let also = rate_links(model, speeds, (&delta, &equal), &gap, &units);
+                    let links = rate_links(model, speeds, (&delta, &equal), &gap, &units);
+                    let (also, simplest) = links.into_iter().unzip();
                     return Some(OnTheLoop {
                         also,
+                        simplest,
                         delta,
                         equal: equal.clone(),
                         equal_tex: latex(&equal),
@@ -139,14 +145,15 @@ fn denominators(e: &Expr, out: &mut Vec<Expr>) {
 
 /// For each dependent rate whose form in step 5 is not yet step 1's once `Δ` is written
 /// as on the loop (`delta`, `equal`), the identity of the loop that makes it so: the
-/// numerators over `Δ` equal, as the loop's `gap` dotted with one of `units` shows.
+/// numerators over `Δ` equal, as the loop's `gap` dotted with one of `units` shows; with
+/// the rate's index and its coefficient so simplified.
 fn rate_links(
     model: &Model,
     speeds: &DependentSpeeds,
     (delta, equal): (&Expr, &Expr),
     gap: &Vector,
     units: &[Vector],
-) -> Vec<(String, String)> {
+) -> Vec<((String, String), (usize, Expr))> {
     let problem = model.problem;
     let Some(rates) = super::closure_loops::loop_rates(model) else {
         return Vec::new();
@@ -179,9 +186,13 @@ fn rate_links(
         };
         let (common, inner) = crate::symbolic::pull_common_factor(&over);
         let other = simplify(&(&step_1 / &common));
+        let simplest = simplify(&(&(&common * &other) / delta));
         out.push((
-            format!("{} = {}", latex(&inner), latex(&other)),
-            super::tex::vector_tex(model, along),
+            (
+                format!("{} = {}", latex(&inner), latex(&other)),
+                super::tex::vector_tex(model, along),
+            ),
+            (s, simplest),
         ));
     }
     out

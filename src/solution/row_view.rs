@@ -18,10 +18,30 @@ fn group_tex(e: &Expr) -> String {
     }
     let text = latex(e);
     if e.terms().len() > 1 {
+        // Like terms summed, as a student finishes them: −m1 g − m2 g is −g (m1 + m2).
+        let collected = latex_collected(e);
+        if one_product(&collected) {
+            return collected;
+        }
         format!("\\left[{text}\\right]")
     } else {
         text
     }
+}
+
+/// Whether LaTeX `text` is one product: no `+` or `-` outside brackets and braces but a
+/// leading sign.
+fn one_product(text: &str) -> bool {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' | '{' => depth += 1,
+            ')' | ']' | '}' => depth -= 1,
+            '+' | '-' if depth == 0 && i > 0 => return false,
+            _ => {}
+        }
+    }
+    true
 }
 
 /// How many of Kane's rows are the independent speeds' (before the auxiliary speeds').
@@ -141,13 +161,16 @@ fn kane_heading(
             why,
         )
     } else if r <= problem.coordinates.len() {
-        (
-            format!(
+        // The speeds are named once where they are chosen: a row of a rate of a
+        // coordinate, u_r = q̇_r, is headed by r alone, one of a named speed by its name.
+        let heading = match problem.has_speeds() {
+            true => format!(
                 "r = {r}\\colon\\; {}",
                 super::kane::speed_tex(derivation, r - 1)
             ),
-            "(a generalized speed)".to_string(),
-        )
+            false => format!("r = {r}"),
+        };
+        (heading, String::new())
     } else {
         augmented_note = super::auxiliary::augmented_note(derivation, row, r).unwrap_or_default();
         let reactions: Vec<Symbol> = row
@@ -291,14 +314,17 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         // sign; one left (no sign to take it by) where the row has none goes without.
         .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
-    // Formed already in its simplest form, or with the same terms in another order and
-    // nothing written out between: written once.
-    let same = grouped_tex == simplified_tex
-        || (written_tex.is_empty() && same_terms(&grouped_tex, &simplified_tex));
+    // Formed already in its simplest form, or with the same terms in another order: written
+    // once, after its terms written out if any, else with no words before it.
+    let same = grouped_tex == simplified_tex || same_terms(&grouped_tex, &simplified_tex);
+    // A force row's inertia written out adds nothing to a row already simplest; a moment
+    // row's cross products are what a student writes first.
+    if same && !matches!(row.sum, Sum::Moment { .. }) {
+        written_tex.clear();
+    }
+    let bare = same && simplified_note.is_empty() && written_tex.is_empty();
     if same && simplified_note.is_empty() {
         grouped_tex.clear();
-        written_tex.clear();
-        simplified_note = "Already in its simplest form:".into();
     }
     EquationView {
         label,
@@ -308,6 +334,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         written_tex: Math::from(written_tex),
         simplified_tex: Math::from(simplified_tex),
         simplified_note,
+        bare,
         by_name,
         active_tex: Math::from(active_tex),
         inertia_tex: Math::from(inertia_tex),
@@ -435,7 +462,19 @@ fn solved_for_reaction(row: &Expr, reactions: &[Symbol]) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::same_terms;
+    use super::{one_product, same_terms};
+
+    #[test]
+    fn like_terms_collected_are_one_product_and_unlike_ones_are_not() {
+        assert!(one_product("-g (m_{1} + m_{2})"));
+        assert!(one_product(
+            "-\\frac{L m}{12} (\\ddot{q}_{1} + \\ddot{q}_{2})"
+        ));
+        assert!(!one_product("-m_{1} g - m_{2} g"));
+        assert!(!one_product(
+            "2 l F^{P}_{x} c_{\\theta} + 2 l F^{P}_{y} s_{\\theta}"
+        ));
+    }
 
     #[test]
     fn a_row_in_another_order_or_without_its_brackets_has_the_same_terms() {

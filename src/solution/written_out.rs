@@ -42,8 +42,9 @@ pub struct WrittenOut {
     pub tex: String,
 }
 
-/// The inertia terms of a Motion Law row of forces or moments, written out; `None` for
-/// another method or row, a free body of more than three bodies, a body whose acceleration
+/// The inertia terms of a Motion Law row of forces or moments (or of a Newton–Euler row of
+/// moments), written out; `None` for another method or row, a free body of more than three
+/// bodies, a body whose acceleration
 /// step 4 writes by named parts, or a line too long for the page.
 pub fn written_out(derivation: &Derivation, row: &Equation) -> Option<WrittenOut> {
     written_out_shown(derivation, row, &|e: &Expr| e.clone())
@@ -56,7 +57,11 @@ pub fn written_out_shown(
     row: &Equation,
     shown: &dyn Fn(&Expr) -> Expr,
 ) -> Option<WrittenOut> {
-    if derivation.method != Method::MotionLaw || row.free_body.len() > MOST_BODIES {
+    // Newton–Euler's moment rows likewise: a reaction's r × F, the inertia torque.
+    let moment_row = matches!(row.sum, Sum::Moment { .. });
+    let method = derivation.method == Method::MotionLaw
+        || (derivation.method == Method::NewtonEuler && moment_row);
+    if !method || row.free_body.len() > MOST_BODIES {
         return None;
     }
     let inertia = derivation.inertia();

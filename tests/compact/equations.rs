@@ -328,8 +328,8 @@ fn a_reaction_acts_at_its_joint_by_name() {
 fn a_row_formed_already_simplified_is_written_once() {
     let markdown = explain("two-mass-spring-damper", "markdown");
     // Cart A along N.y, by hand: the track's reaction holds its weight, F_y - m1 g = 0, as
-    // formed; written once, not again as "simplified".
-    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\nAlready in its simplest form:\n\n$$\nF^{\\mathrm{trackA}}_{y} - m_{1} g = 0\n$$\n\n**4.";
+    // formed; written once, not again as "simplified", with no words before it.
+    let row = "**3. $A\\colon \\sum \\mathbf{F} \\cdot \\hat{\\mathbf{n}}_{y}$**\n\n$$\nF^{\\mathrm{trackA}}_{y} - m_{1} g = 0\n$$\n\n**4.";
     assert!(markdown.contains(row), "row 3 is not written once");
 }
 

@@ -19,9 +19,9 @@ fn a_chain_link_moves_with_its_pin_and_the_pin_with_the_one_before() {
             "no line reads {expected}"
         );
     }
-    // The free body of all ten links lists gravity once, for a link k: -m_k g n̂_y.
+    // The free body of all ten links lists gravity once, for a link k, all of mass m: -m g n̂_y.
     assert!(markdown.contains(
-        "| weight of each body k | $-m_{k}\\, g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } k^*,\\; k \\in \\{\\mathrm{link}_{1}, "
+        "| weight of each body k | $-m\\, g \\hat{\\mathbf{n}}_{y}$ | $\\text{at } k^*,\\; k \\in \\{\\mathrm{link}_{1}, "
     ));
     // link1 belongs to that free body only, so no row names it alone.
     assert!(!markdown.contains("gravity on link1 |"));

@@ -86,17 +86,13 @@ fn solve_rows(mut rows: Vec<Vec<f64>>) -> Vec<f64> {
 }
 
 /// The simplified equations (step 5) of a Markdown solution, one per entry, without `= 0`
-/// (a row formed already simplified is written once).
+/// (a row formed already simplified is written once, with no words before it).
 fn simplified_equations(markdown: &str) -> Vec<String> {
     let lines: Vec<&str> = markdown.lines().collect();
     let mut out = Vec::new();
     for (i, line) in lines.iter().enumerate() {
-        let introduced = [
-            "Simplified",
-            "With the coefficients",
-            "Already in its simplest form",
-        ];
-        if introduced.iter().any(|s| line.starts_with(s)) {
+        let introduced = ["Simplified", "With the coefficients"];
+        if introduced.iter().any(|s| line.starts_with(s)) || bare_row(&lines, i) {
             let body = lines[i + 1..]
                 .iter()
                 .skip_while(|l| l.trim() == "$$" || l.trim().is_empty())
@@ -108,6 +104,22 @@ fn simplified_equations(markdown: &str) -> Vec<String> {
         }
     }
     out
+}
+
+/// Whether line `i` is the heading of a row formed already simplified: its one display
+/// follows it directly and the next row or section follows that.
+fn bare_row(lines: &[&str], i: usize) -> bool {
+    let numbered = lines[i].starts_with("**") && lines[i].ends_with("**");
+    let rest: Vec<&str> = lines[i + 1..]
+        .iter()
+        .copied()
+        .filter(|l| !l.trim().is_empty())
+        .collect();
+    let Some(close) = rest.iter().skip(1).position(|l| l.trim() == "$$") else {
+        return false;
+    };
+    let after = rest.get(close + 2).copied().unwrap_or("#");
+    numbered && rest.first() == Some(&"$$") && (after.starts_with("**") || after.starts_with('#'))
 }
 
 /// Compiles `source` in `dir` and returns the number of pages.

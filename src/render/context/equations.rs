@@ -12,7 +12,7 @@ pub struct Equation {
     /// Where it comes from: the free body, the sum and its direction, e.g.
     /// `A + B\colon \sum \mathbf{M}_{O} \cdot \hat{\mathbf{n}}_{z}`, or Kane's `r` and speed.
     pub label_tex: Math,
-    /// Plain words after it, e.g. `(a generalized speed)`; may be empty.
+    /// Plain words after it, e.g. `(an auxiliary speed, as in row 3)`; may be empty.
     pub label: String,
     /// Kane's row of an auxiliary speed: its augmented velocities, their partial
     /// velocities and which forces drop out; Lagrange's row of a joint let give way: its
@@ -30,6 +30,9 @@ pub struct Equation {
     /// What introduces the simplified equation when it is not `Simplified:` (plain text;
     /// may be empty).
     pub simplified_note: String,
+    /// The row as formed is already in its simplest form: written once, with no words
+    /// before it (neither `Simplified:` nor a note).
+    pub bare: bool,
     /// The simplified equation is written with the names of A's and b's entries, which the
     /// matrix form then lists.
     pub by_name: bool,
