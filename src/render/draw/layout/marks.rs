@@ -114,13 +114,25 @@ impl Painter {
         ));
     }
 
-    /// A distance from `from` to `to`: its extension lines, the arrows and the label.
+    /// A distance from `from` to `to`: its extension lines, the arrows and the label, on
+    /// the side of the measured line where the dimension line runs through fewer bodies
+    /// (above a cart's top, beside a ladder rather than across it).
     pub(super) fn distance(&mut self, from: P3, to: P3, label: &Label) {
         let (a, b) = (self.at(from), self.at(to));
         let Some(u) = p2unit([b[0] - a[0], b[1] - a[1]]) else {
             return;
         };
+        let covered = |n: P2| {
+            (0..=10)
+                .map(|k| p2add(a, p2add(p2scale([b[0] - a[0], b[1] - a[1]], 0.1 * f64::from(k)), p2scale(n, 14.0))))
+                .filter(|p| (self.items.iter()).any(|item| super::beside::inside(item, *p)))
+                .count()
+        };
         let n = [-u[1], u[0]];
+        let n = match covered(p2scale(n, -1.0)) < covered(n) {
+            true => p2scale(n, -1.0),
+            false => n,
+        };
         let (a2, b2) = (p2add(a, p2scale(n, 14.0)), p2add(b, p2scale(n, 14.0)));
         self.thin_dashed(a, p2add(a, p2scale(n, 18.0)));
         self.thin_dashed(b, p2add(b, p2scale(n, 18.0)));
