@@ -124,7 +124,15 @@ impl Painter {
         };
         let covered = |n: P2| {
             (0..=10)
-                .map(|k| p2add(a, p2add(p2scale([b[0] - a[0], b[1] - a[1]], 0.1 * f64::from(k)), p2scale(n, 14.0))))
+                .map(|k| {
+                    p2add(
+                        a,
+                        p2add(
+                            p2scale([b[0] - a[0], b[1] - a[1]], 0.1 * f64::from(k)),
+                            p2scale(n, 14.0),
+                        ),
+                    )
+                })
                 .filter(|p| (self.items.iter()).any(|item| super::beside::inside(item, *p)))
                 .count()
         };
