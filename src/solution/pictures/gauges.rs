@@ -273,7 +273,7 @@ fn angle(n: &Numbers, child: BodyId, at: P3, axis: P3, q: f64, size: f64) -> Opt
 }
 
 /// Angle arcs (each with its dashed line where the child lay at zero) and dimension
-/// lines for the coordinates; a distance or an angle that is zero now is left out.
+/// lines for the coordinates; a distance that is zero now is left out.
 pub(super) fn shapes(n: &Numbers, size: f64) -> Vec<Shape> {
     let mut shapes = Vec::new();
     for gauge in gauges(n, size) {
@@ -287,9 +287,6 @@ pub(super) fn shapes(n: &Numbers, size: f64) -> Vec<Shape> {
             _ => gauge.label,
         };
         match gauge.at {
-            // An angle at zero has no arc: the body lies on its reference line, and the
-            // caption gives its value (an arc would show an angle that is not there).
-            Some(Gauge::Angle { angle, .. }) if angle.abs() < 1e-9 => {}
             Some(Gauge::Angle {
                 center,
                 from,
