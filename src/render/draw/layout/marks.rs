@@ -20,6 +20,11 @@ const HEADS_ARC: f64 = 30.0;
 const SMALLEST_HEAD: f64 = 0.55;
 /// The least length (px) of an angle's arc, its head included, where its radius allows.
 const ARC_LENGTH: f64 = 28.0;
+/// The most of a wheel's radius an angle's arc about its centre takes.
+const INSIDE_A_WHEEL: f64 = 0.7;
+/// The least radius (px) of a drawn circle that counts as a wheel an arc keeps inside
+/// (not a pin's or a hub's ring).
+const LEAST_WHEEL: f64 = 12.0;
 /// The radius (px) of an arc about a velocity's point: past its arrow (36 px) and head.
 pub const ROUND_A_VELOCITY: f64 = 48.0;
 
@@ -80,6 +85,13 @@ impl Painter {
             ROUND_A_VELOCITY
         } else {
             (ARC_LENGTH / sweep.abs()).clamp(ARC, LONGEST_ARC)
+        };
+        // About a wheel's centre the arc stays inside the wheel, clear of its rim and of
+        // what touches it there (a mesh point, a contact); one round a velocity's arrow
+        // goes round outside it still.
+        let radius = match wheel_about(&self.items, c) {
+            Some(rim) if !moving && rim < radius / INSIDE_A_WHEEL => rim * INSIDE_A_WHEEL,
+            _ => radius,
         };
         let r = radius / self.scale;
         let v = cross(axis, from);
@@ -151,4 +163,20 @@ impl Painter {
         let middle = p2scale(p2add(a2, b2), 0.5);
         self.label(middle, n[1].atan2(n[0]), label, Ink::Black);
     }
+}
+
+/// The radius (px) of the smallest wheel drawn about the page point `c`, if any.
+fn wheel_about(items: &[Item], c: P2) -> Option<f64> {
+    let about = |center: &P2, radius: f64| {
+        (radius >= LEAST_WHEEL && (center[0] - c[0]).hypot(center[1] - c[1]) < 1.0)
+            .then_some(radius)
+    };
+    (items.iter())
+        .filter_map(|item| match item {
+            Item::Body { items, .. } | Item::Group { items, .. } => wheel_about(items, c),
+            Item::Circle { center, radius, .. } => about(center, *radius),
+            Item::Ellipse { center, rx, ry, .. } => about(center, rx.min(*ry)),
+            _ => None,
+        })
+        .reduce(f64::min)
 }
