@@ -165,7 +165,7 @@ impl Painter {
     }
 }
 
-/// The radius (px) of the smallest wheel drawn about the page point `c`, if any.
+/// The radius (px) of the smallest wheel drawn face on about the page point `c`, if any.
 fn wheel_about(items: &[Item], c: P2) -> Option<f64> {
     let about = |center: &P2, radius: f64| {
         (radius >= LEAST_WHEEL && (center[0] - c[0]).hypot(center[1] - c[1]) < 1.0)
@@ -174,8 +174,9 @@ fn wheel_about(items: &[Item], c: P2) -> Option<f64> {
     (items.iter())
         .filter_map(|item| match item {
             Item::Body { items, .. } | Item::Group { items, .. } => wheel_about(items, c),
+            // A wheel seen face on: one seen aslant (an ellipse) turns in another plane
+            // than the angles marked at its centre.
             Item::Circle { center, radius, .. } => about(center, *radius),
-            Item::Ellipse { center, rx, ry, .. } => about(center, rx.min(*ry)),
             _ => None,
         })
         .reduce(f64::min)
