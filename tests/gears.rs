@@ -276,3 +276,35 @@ fn the_gear_pair_in_3d_agrees_with_the_plane() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The rack slides on its underside S, 2b below its pitch line, its mass centre b below
+/// it. It only translates, so about S: M_z^S + (2b n̂_y) × (F n̂_x) = (b n̂_y) × (M ẍ n̂_x),
+/// with F = M ẍ the pinion's push on it at the pitch line: M_z^S = 2bF − bMẍ = b M ẍ.
+#[test]
+fn the_rack_bears_on_its_slide_with_the_couple_of_its_push() {
+    let (b, m) = (0.02, 2.0);
+    let mut p: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(problem("rack-and-pinion")).unwrap())
+            .unwrap();
+    p["find"]["reactions"] = serde_json::json!(["teeth", "S"]);
+    let dir = std::env::temp_dir().join(format!("mbd-rack-slide-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("rack-slide.json");
+    std::fs::write(&path, p.to_string()).unwrap();
+    for method in METHODS {
+        let s = run_json(&[
+            "solve",
+            path.to_str().unwrap(),
+            "--format",
+            "json",
+            "--method",
+            method,
+        ]);
+        let xdd = s["accelerations"]["x"].as_f64().unwrap();
+        let couple = s["reactions"]["S"]["moment"][2].as_f64().unwrap();
+        let normal = s["reactions"]["S"]["force"][1].as_f64().unwrap();
+        assert_close(couple, b * m * xdd, 1e-9, 1.0, &format!("{method}: M_z^S"));
+        assert_close(normal, m * 9.81, 1e-9, 1.0, &format!("{method}: F_y^S"));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

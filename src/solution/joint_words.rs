@@ -87,7 +87,7 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
     }
     match joint.kind {
         JointKind::Revolute => format!("{child} turns on {parent}{}", at("pin")),
-        JointKind::Prismatic => format!("{child} slides on {parent}"),
+        JointKind::Prismatic => format!("{child} slides on {parent}{}", at("point")),
         JointKind::Cylindrical => format!("{child} slides and turns on {parent}"),
         JointKind::Planar if joint.parent == BodyId::GROUND => {
             format!("{child} moves in the plane")

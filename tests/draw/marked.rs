@@ -272,3 +272,50 @@ fn the_check_finds_a_name_moved_off() {
         );
     }
 }
+
+/// The pinion's angle q_A is marked inside the pinion: its arc about the axle within the
+/// wheel's rim, its name clear of the mesh point P on the rim (an arc of the usual 30 to
+/// 45 px would run out past the pinion's rim, about 37 px, onto P).
+#[test]
+fn an_angle_about_a_wheels_centre_is_marked_inside_the_wheel() {
+    let d = configuration(&problem_path("gear-pair-torque"));
+    let mut items = Vec::new();
+    flat(&d.picture.items, &mut items);
+    // The pinion: the smaller of the two wheels' rims.
+    let (o, rim) = (items.iter())
+        .filter_map(|i| match i {
+            Item::Circle { center, radius, .. } if *radius > 12.0 => Some((*center, *radius)),
+            _ => None,
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .expect("the pinion's rim");
+    let about = |p: &P2| (p[0] - o[0]).hypot(p[1] - o[1]);
+    let arcs: Vec<&Vec<P2>> = (items.iter())
+        .filter_map(|i| match i {
+            Item::Stroke(s) if s.ink == Ink::Grey && !s.closed && s.points.len() == 25 => {
+                Some(&s.points)
+            }
+            _ => None,
+        })
+        .filter(|a| a.iter().all(|p| (about(p) - about(&a[0])).abs() < 0.5))
+        .filter(|a| about(&a[0]) < 3.0 * rim)
+        .collect();
+    let [arc] = arcs.as_slice() else {
+        panic!("one arc about the pinion's axle: {arcs:?}");
+    };
+    assert!(
+        about(&arc[0]) < 0.8 * rim,
+        "{} px, rim {rim}",
+        about(&arc[0])
+    );
+    // P on the rim, towards the gear (n̂_x, to the right on the page).
+    let p = [o[0] + rim, o[1]];
+    let label = (d.picture.texts.iter())
+        .find_map(|t| match t {
+            Item::Text { at, label, .. } if label.plain == "q_A" => Some(*at),
+            _ => None,
+        })
+        .expect("q_A named");
+    let gap = from_box(label, "q_A", d.picture.grow, p);
+    assert!(gap > 8.0, "q_A {gap:.1} px from P");
+}

@@ -28,6 +28,21 @@ fn arcs(items: &[Item], out: &mut Vec<Vec<P2>>) {
     }
 }
 
+/// The radius (px) of the smallest wheel (a circle of at least 12 px) drawn about `c`.
+fn wheel_about(items: &[Item], c: P2) -> Option<f64> {
+    (items.iter())
+        .filter_map(|item| match item {
+            Item::Body { items, .. } | Item::Group { items, .. } => wheel_about(items, c),
+            Item::Circle { center, radius, .. }
+                if *radius >= 12.0 && (center[0] - c[0]).hypot(center[1] - c[1]) < 1.0 =>
+            {
+                Some(*radius)
+            }
+            _ => None,
+        })
+        .reduce(f64::min)
+}
+
 /// The turn from `a` to `b` about `c` on the page (radians; y down, so a turn
 /// counterclockwise in `N` is negative here).
 fn turn(c: P2, a: P2, b: P2) -> f64 {
@@ -61,12 +76,15 @@ fn every_angle_is_an_arc_turning_the_way_it_counts() {
             };
             let c = p.point(*center);
             // An arc about the angle's centre: 30 px out, further for a short angle (up to
-            // 45 px) or round a velocity's arrow (48 px).
+            // 45 px) or round a velocity's arrow (48 px); about a wheel's centre, at 0.7 of
+            // the wheel's radius where that is less (inside the wheel).
+            let inside = wheel_about(&configuration.picture.items, c).map(|rim| 0.7 * rim);
             let arc = (drawn.iter())
                 .find(|a| {
                     let r = (a[0][0] - c[0]).hypot(a[0][1] - c[1]);
                     a.len() > 10
-                        && (29.5..60.5).contains(&r)
+                        && ((29.5..60.5).contains(&r)
+                            || inside.is_some_and(|w| (r - w).abs() < 0.5))
                         && a.iter()
                             .all(|q| ((q[0] - c[0]).hypot(q[1] - c[1]) - r).abs() < 0.5)
                 })
@@ -77,7 +95,10 @@ fn every_angle_is_an_arc_turning_the_way_it_counts() {
             // page); never a dot, and long enough to carry its head (8 px) where its radius
             // allows.
             assert!(
-                sweep * axis[2].signum() < -0.14 && (r * sweep.abs() >= 27.0 || r > 44.5),
+                sweep * axis[2].signum() < -0.14
+                    && (r * sweep.abs() >= 27.0
+                        || r > 44.5
+                        || inside.is_some_and(|w| (r - w).abs() < 0.5)),
                 "{}: {} swept {sweep} at {r} px",
                 path.display(),
                 label.plain

@@ -54,7 +54,19 @@ pub fn carrier(n: &Numbers, body: BodyId, size: f64) -> Option<(BodyKind, Vec<Sh
     let half = (half + (0.05 * size).max(wheel))
         .max(0.3 * size)
         .max(2.2 * wheel);
-    let depth = (0.12 * size).max(0.6 * wheel);
+    // As deep as the problem makes it where it says: its mass centre at half its depth,
+    // the joint it slides on at its underside; else deep enough to read as a block.
+    let below = |p: super::numbers::P3| dot(add(p, scale(face, -1.0)), up);
+    let centre = -below(n.vector(&n.model.bodies[body.0].center.position));
+    let slide = shapes::key_points(n, body)
+        .iter()
+        .map(|p| -below(n.point_on(body, p)))
+        .fold(0.0, f64::max);
+    let given = (2.0 * centre).max(slide);
+    let depth = match given > 1e-9 * size {
+        true => given,
+        false => (0.12 * size).max(0.6 * wheel),
+    };
     let at = |s: f64, d: f64| add(face, add(scale(along, middle + s * half), scale(up, -d)));
     let corners = vec![at(-1.0, 0.0), at(1.0, 0.0), at(1.0, depth), at(-1.0, depth)];
     Some((BodyKind::Block, vec![Shape::Polygon(corners)]))

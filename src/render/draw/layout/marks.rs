@@ -20,6 +20,11 @@ const HEADS_ARC: f64 = 30.0;
 const SMALLEST_HEAD: f64 = 0.55;
 /// The least length (px) of an angle's arc, its head included, where its radius allows.
 const ARC_LENGTH: f64 = 28.0;
+/// The most of a wheel's radius an angle's arc about its centre takes.
+const INSIDE_A_WHEEL: f64 = 0.7;
+/// The least radius (px) of a drawn circle that counts as a wheel an arc keeps inside
+/// (not a pin's or a hub's ring).
+const LEAST_WHEEL: f64 = 12.0;
 /// The radius (px) of an arc about a velocity's point: past its arrow (36 px) and head.
 pub const ROUND_A_VELOCITY: f64 = 48.0;
 
@@ -81,6 +86,13 @@ impl Painter {
         } else {
             (ARC_LENGTH / sweep.abs()).clamp(ARC, LONGEST_ARC)
         };
+        // About a wheel's centre the arc stays inside the wheel, clear of its rim and of
+        // what touches it there (a mesh point, a contact); one round a velocity's arrow
+        // goes round outside it still.
+        let radius = match wheel_about(&self.items, c) {
+            Some(rim) if !moving && rim < radius / INSIDE_A_WHEEL => rim * INSIDE_A_WHEEL,
+            _ => radius,
+        };
         let r = radius / self.scale;
         let v = cross(axis, from);
         let steps = 24;
@@ -114,13 +126,33 @@ impl Painter {
         ));
     }
 
-    /// A distance from `from` to `to`: its extension lines, the arrows and the label.
+    /// A distance from `from` to `to`: its extension lines, the arrows and the label, on
+    /// the side of the measured line where the dimension line runs through fewer bodies
+    /// (above a cart's top, beside a ladder rather than across it).
     pub(super) fn distance(&mut self, from: P3, to: P3, label: &Label) {
         let (a, b) = (self.at(from), self.at(to));
         let Some(u) = p2unit([b[0] - a[0], b[1] - a[1]]) else {
             return;
         };
+        let covered = |n: P2| {
+            (0..=10)
+                .map(|k| {
+                    p2add(
+                        a,
+                        p2add(
+                            p2scale([b[0] - a[0], b[1] - a[1]], 0.1 * f64::from(k)),
+                            p2scale(n, 14.0),
+                        ),
+                    )
+                })
+                .filter(|p| (self.items.iter()).any(|item| super::beside::inside(item, *p)))
+                .count()
+        };
         let n = [-u[1], u[0]];
+        let n = match covered(p2scale(n, -1.0)) < covered(n) {
+            true => p2scale(n, -1.0),
+            false => n,
+        };
         let (a2, b2) = (p2add(a, p2scale(n, 14.0)), p2add(b, p2scale(n, 14.0)));
         self.thin_dashed(a, p2add(a, p2scale(n, 18.0)));
         self.thin_dashed(b, p2add(b, p2scale(n, 18.0)));
@@ -131,4 +163,21 @@ impl Painter {
         let middle = p2scale(p2add(a2, b2), 0.5);
         self.label(middle, n[1].atan2(n[0]), label, Ink::Black);
     }
+}
+
+/// The radius (px) of the smallest wheel drawn face on about the page point `c`, if any.
+fn wheel_about(items: &[Item], c: P2) -> Option<f64> {
+    let about = |center: &P2, radius: f64| {
+        (radius >= LEAST_WHEEL && (center[0] - c[0]).hypot(center[1] - c[1]) < 1.0)
+            .then_some(radius)
+    };
+    (items.iter())
+        .filter_map(|item| match item {
+            Item::Body { items, .. } | Item::Group { items, .. } => wheel_about(items, c),
+            // A wheel seen face on: one seen aslant (an ellipse) turns in another plane
+            // than the angles marked at its centre.
+            Item::Circle { center, radius, .. } => about(center, *radius),
+            _ => None,
+        })
+        .reduce(f64::min)
 }
