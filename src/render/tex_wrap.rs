@@ -139,9 +139,7 @@ fn group_end(text: &str) -> Option<usize> {
 /// brackets must grow).
 fn breakable(math: &str) -> String {
     let mut math = math.to_string();
-    // A sum breaks at its own plus or minus signs, as a student breaks a long line: its
-    // brackets stay whole. Only math with no such sign outside them breaks inside.
-    if !math.contains("\\begin") && !signs_outside_brackets(&math) {
+    if !math.contains("\\begin") {
         math = replace_command(&math, "\\left", "\\bigl");
         math = replace_command(&math, "\\right", "\\bigr");
     }
@@ -159,43 +157,6 @@ fn breakable(math: &str) -> String {
         }
     }
     out
-}
-
-/// Whether `math` has a `+`, `-` or `=` outside its braces and `\\left … \\right`
-/// brackets, after its first symbol (a leading sign is no place to break).
-fn signs_outside_brackets(math: &str) -> bool {
-    let mut depth = 0i32;
-    let mut rest = math.trim_start();
-    let mut first = true;
-    while let Some(c) = rest.chars().next() {
-        if c == '\\' {
-            let name = rest[1..]
-                .chars()
-                .take_while(char::is_ascii_alphabetic)
-                .collect::<String>();
-            match name.as_str() {
-                "left" => depth += 1,
-                "right" => depth -= 1,
-                _ => {}
-            }
-            let length = match name.len() {
-                0 => 1 + rest[1..].chars().next().map_or(0, char::len_utf8),
-                n => 1 + n,
-            };
-            rest = &rest[length..];
-            first = false;
-            continue;
-        }
-        match c {
-            '{' => depth += 1,
-            '}' => depth -= 1,
-            '+' | '-' | '=' if depth == 0 && !first => return true,
-            _ => {}
-        }
-        first = false;
-        rest = &rest[c.len_utf8()..];
-    }
-    false
 }
 
 /// `text` with the command `from` (a whole word: `\left`, not `\leftarrow`) written `to`.
@@ -248,10 +209,6 @@ mod tests {
             wrap("\\left(a + b\\right) \\leftarrow c"),
             "$\\bigl(a + b\\bigr) \\leftarrow c$"
         );
-        // A sum breaks at its own signs: its brackets stay whole.
-        let sum = "v = a \\hat{x} + \\left(b - \\frac{c}{2}\\right) \\hat{y}";
-        assert_eq!(wrap(sum), format!("${sum}$"));
-        assert_eq!(wrap("-\\left(a + b\\right) c"), "$-\\bigl(a + b\\bigr) c$");
         let matrix = "\\left[\\begin{matrix} a \\end{matrix}\\right]";
         assert_eq!(wrap(matrix), format!("${matrix}$"));
     }

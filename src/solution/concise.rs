@@ -31,25 +31,8 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool, numbered: 
         }
         None => solution.reactions.clear(),
     }
-    said_in_their_steps(&mut solution.answers);
     super::answer_leads::mark_repeated_states(&mut solution.answers);
     super::answer_lines::tighten(&mut solution.answers, numbered);
-}
-
-/// An answer whose working ends with each of its values (`ẍ = −g μ = −1.962 m/s²`) says
-/// them there: the values are not listed above the working as well.
-fn said_in_their_steps(views: &mut [crate::render::AnswerView]) {
-    for view in views {
-        let said = |value: &crate::render::text::Math| {
-            let value = value.as_str();
-            let number = value.split_once(" = ").map_or(value, |(_, n)| n.trim());
-            let number = format!("= {number}");
-            (view.steps.iter()).any(|s| s.math.as_str().contains(&number))
-        };
-        if !view.values_tex.is_empty() && view.values_tex.iter().all(said) {
-            view.values_tex.clear();
-        }
-    }
 }
 
 /// Whether an answer's value is a component of the reaction at `joint`, its force or moment.

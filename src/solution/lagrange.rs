@@ -422,11 +422,11 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
             }
             let (rate, _) = names(model, r);
             rows.push(GeneralizedForceRow {
-                load: MarkupLine::from(if std::mem::take(&mut first) {
-                    label.clone()
-                } else {
-                    String::new()
-                }),
+                load: match std::mem::take(&mut first) {
+                    true => label.clone(),
+                    false => String::new(),
+                }
+                .into(),
                 point_tex: Math::from(point.clone()),
                 partial_tex: Math::from(format!(
                     "\\frac{{\\partial {of}}}{{\\partial {rate}}} = {}",
@@ -444,10 +444,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
             continue;
         }
         rows.push(GeneralizedForceRow {
-            load: MarkupLine::from(format!(
-                "loads on the coordinate {}",
-                problem.coordinates[r].name
-            )),
+            load: format!("loads on the coordinate {}", problem.coordinates[r].name).into(),
             point_tex: Math::from("\\text{joint}".to_string()),
             partial_tex: Math::from(String::new()),
             q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", r + 1, tex(q))),
@@ -461,7 +458,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
     {
         for (c, value) in coordinates.into_iter().zip(values) {
             rows.push(GeneralizedForceRow {
-                load: MarkupLine::from(format!("multiplier of {}", row.name)),
+                load: format!("multiplier of {}", row.name).into(),
                 point_tex: Math::from("\\text{joint}".to_string()),
                 partial_tex: Math::from(String::new()),
                 q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", c + 1, tex(&value))),
@@ -484,16 +481,11 @@ fn load_label(derivation: &Derivation, action: &crate::plan::Action) -> String {
     let shared = (derivation.actions.iter())
         .filter(|a| a.source == action.source && role(model, a) == Role::Multiplier)
         .any(|a| a.body != action.body);
-    match shared {
-        true => {
-            let body = model.problem.body_name(action.body);
-            format!(
-                "{label} on {}",
-                super::force_labels::shown_name(body, &shown)
-            )
-        }
-        false => label,
+    if !shared {
+        return label;
     }
+    let body = super::force_labels::shown_name(model.problem.body_name(action.body), &shown);
+    format!("{label} on {body}")
 }
 
 /// Which reaction component each multiplier is, row by row of step 1, and its sign.
