@@ -14,6 +14,7 @@ use crate::symbolic::{ComponentKind, Expr, Program};
 /// The power of friction at a time and a state (each coordinate's `(q, q')`), W; zero
 /// without friction. `None` where the problem has friction the model has no site for, or
 /// the run lacks a rough site's reaction columns: its work is then not known.
+#[allow(clippy::type_complexity)] // a closure over (time, state) pairs; named, it hides the shape
 pub(super) fn friction_power<'a>(
     problem: &'a Problem,
     trajectory: &'a Trajectory,

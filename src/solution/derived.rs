@@ -228,7 +228,7 @@ fn pictures(
     let drawings =
         crate::solution::pictures::draw_in_handout(derivation, (q0, rates0), Some(accelerations));
     if drawings.len() > 1 {
-        solution.free_body_legend = crate::solution::pictures::free_body_legend(&drawings).into();
+        solution.free_body_legend = crate::solution::pictures::free_body_legend(&drawings);
     }
     for drawing in &drawings {
         if drawing.free_body.is_empty() {

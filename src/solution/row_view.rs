@@ -307,7 +307,9 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         }
     }
     // The inertia terms written out, cross products and dot products, as a student does.
-    let mut written_tex = super::written_out::written_out_shown(derivation, row, &shown)
+    let same = grouped_tex == simplified_tex || same_terms(&grouped_tex, &simplified_tex);
+    let written_tex = super::written_out::written_out_shown(derivation, row, &shown)
+        .filter(|_| !same || matches!(row.sum, Sum::Moment { .. }))
         .filter(|_| !grouped_tex.is_empty())
         .map(|w| w.tex)
         // Its components as the row prints them, a root of a square taken by the initial
@@ -315,13 +317,7 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         .filter(|tex| !tex.contains("\\sqrt") || grouped_tex.contains("\\sqrt"))
         .unwrap_or_default();
     // Formed already in its simplest form, or with the same terms in another order: written
-    // once, after its terms written out if any, else with no words before it.
-    let same = grouped_tex == simplified_tex || same_terms(&grouped_tex, &simplified_tex);
-    // A force row's inertia written out adds nothing to a row already simplest; a moment
-    // row's cross products are what a student writes first.
-    if same && !matches!(row.sum, Sum::Moment { .. }) {
-        written_tex.clear();
-    }
+    // once, after its terms written out if any (a moment row's r × F; a force row none).
     let bare = same && simplified_note.is_empty() && written_tex.is_empty();
     if same && simplified_note.is_empty() {
         grouped_tex.clear();
