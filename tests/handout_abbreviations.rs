@@ -2,8 +2,8 @@
 //! handout and its handout at rest (`explain --statics`), by every method, lists
 //! `s_θ = sin θ` only where some `s_θ` stands in its body.
 
-use crate::support::handouts::two_at_a_time;
-use crate::support::{all_problems, run, METHODS};
+use crate::support::handouts::{handout_with, two_at_a_time};
+use crate::support::{all_problems, METHODS};
 use std::path::{Path, PathBuf};
 
 /// The line of a Markdown handout that lists the abbreviations.
@@ -46,21 +46,8 @@ fn the_listing_reads_names_and_leaves_the_body() {
 /// The Markdown handout of `path` by `method`, at rest with `statics`; `None` where it is
 /// refused (other tests see to which are).
 fn handout(path: &Path, method: &str, statics: bool) -> Option<String> {
-    let mut args = vec![
-        "explain".as_ref(),
-        path.as_os_str(),
-        "--method".as_ref(),
-        method.as_ref(),
-        "--format".as_ref(),
-        "markdown".as_ref(),
-    ];
-    if statics {
-        args.push("--statics".as_ref());
-    }
-    let out = run(&args);
-    out.status
-        .success()
-        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+    let flags: &[&str] = if statics { &["--statics"] } else { &[] };
+    handout_with(path, method, "markdown", flags)
 }
 
 #[test]

@@ -8,7 +8,13 @@ use std::sync::Mutex;
 /// `mbd-tutor explain PATH --method METHOD --format FORMAT`; `None` where the method is
 /// refused (other tests see to which are).
 pub fn handout_of(path: &Path, method: &str, format: &str) -> Option<String> {
-    let out = explained(path, method, format, false);
+    handout_with(path, method, format, &[])
+}
+
+/// `mbd-tutor explain PATH --method METHOD --format FORMAT FLAGS…`; `None` where it is
+/// refused (other tests see to which are).
+pub fn handout_with(path: &Path, method: &str, format: &str, flags: &[&str]) -> Option<String> {
+    let out = explained_with(path, method, format, flags);
     out.status
         .success()
         .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
@@ -37,6 +43,13 @@ pub fn lacks(text: &str, what: &str, name: &str) {
 /// The run of `mbd-tutor explain PATH --method METHOD --format FORMAT`, with `--student`
 /// for the student's handout: one for the whole suite, whichever test asks first.
 pub fn explained(path: &Path, method: &str, format: &str, student: bool) -> Output {
+    let flags: &[&str] = if student { &["--student"] } else { &[] };
+    explained_with(path, method, format, flags)
+}
+
+/// The run of `mbd-tutor explain PATH --method METHOD --format FORMAT FLAGS…` (such as
+/// `--student`, `--statics`): one for the whole suite, whichever test asks first.
+pub fn explained_with(path: &Path, method: &str, format: &str, flags: &[&str]) -> Output {
     let mut args = vec![
         "explain".as_ref(),
         path.as_os_str(),
@@ -45,9 +58,7 @@ pub fn explained(path: &Path, method: &str, format: &str, student: bool) -> Outp
         "--format".as_ref(),
         format.as_ref(),
     ];
-    if student {
-        args.push("--student".as_ref());
-    }
+    args.extend(flags.iter().map(std::ffi::OsStr::new));
     super::run(&args)
 }
 

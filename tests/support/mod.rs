@@ -15,6 +15,34 @@ pub fn problem(name: &str) -> PathBuf {
         .join(format!("{name}.json"))
 }
 
+/// The text of the bundled problem `problems/NAME.json`.
+pub fn problem_text(name: &str) -> String {
+    std::fs::read_to_string(problem(name)).expect("the bundled problem is readable")
+}
+
+/// The bundled problem `problems/NAME.json` as JSON, for a test to change and write with
+/// [`scratch`].
+pub fn problem_json(name: &str) -> Value {
+    serde_json::from_str(&problem_text(name)).expect("the bundled problem is JSON")
+}
+
+/// Writes `text` to `FILE` in this run's folder `mbd-TAG-PID` of the temporary directory,
+/// and gives its path.
+pub fn scratch_file(tag: &str, file: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mbd-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("the temporary directory is writable");
+    let path = dir.join(file);
+    std::fs::write(&path, text).expect("the temporary directory is writable");
+    path
+}
+
+/// Writes the problem `problem` to `NAME.json` in this run's folder `mbd-TAG-PID` of the
+/// temporary directory, and gives its path.
+pub fn scratch(tag: &str, name: &str, problem: &Value) -> PathBuf {
+    let text = serde_json::to_string_pretty(problem).expect("JSON is written");
+    scratch_file(tag, &format!("{name}.json"), &text)
+}
+
 /// Every `problems/*.json` file (not the `invalid/` ones), sorted.
 pub fn all_problems() -> Vec<PathBuf> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("problems");
