@@ -4,20 +4,8 @@
 //! gear pair's tooth force, the double pendulum's elbow by Newton's law for the lower rod,
 //! the four-bar's closure by the rocker's moment equation about its ground pin.
 
-use crate::support::{problem, run, run_json};
+use crate::support::{problem, problem_json, run, run_json, scratch};
 use serde_json::{json, Value};
-
-fn scratch(name: &str, problem: &Value) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("mbd-answer-frames-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("scratch");
-    let path = dir.join(format!("{name}.json"));
-    std::fs::write(&path, serde_json::to_string_pretty(problem).expect("json")).expect("write");
-    path
-}
-
-fn read(name: &str) -> Value {
-    serde_json::from_str(&std::fs::read_to_string(problem(name)).expect("read")).expect("json")
-}
 
 fn answers(path: &std::path::Path) -> Vec<Value> {
     let out = run_json(&[
@@ -138,12 +126,12 @@ fn state(answer: &Value, name: &str) -> f64 {
 /// it in N, as its statement does; without `in` it is in the pinion's frame.
 #[test]
 fn the_gear_pairs_tooth_force_names_the_pinions_frame_and_turns_into_n() {
-    let mut p = read("gear-pair-torque");
+    let mut p = problem_json("gear-pair-torque");
     p["find"]["questions"]
         .as_array_mut()
         .expect("questions")
         .push(json!({ "reaction": "mesh" }));
-    let path = scratch("gear", &p);
+    let path = scratch("answer-frames", "gear", &p);
     let found = answers(&path);
     let (own, in_n) = (&found[2], &found[1]);
     let force = 0.03 * (1.2 / (0.002 + 0.03 / 9.0)) / 3.0 / 0.15;
@@ -166,7 +154,7 @@ fn the_gear_pairs_tooth_force_names_the_pinions_frame_and_turns_into_n() {
 /// L₁ (sin q₁, −cos q₁) + L₂/2 (sin q₁₂, −cos q₁₂), q₁₂ = q₁ + q₂.
 #[test]
 fn the_double_pendulums_elbow_in_a_and_in_n() {
-    let mut p = read("double-pendulum-rods");
+    let mut p = problem_json("double-pendulum-rods");
     p["find"]["reactions"] = json!(["O", "P"]);
     p["find"]["questions"] = json!([
         { "value": "q1''" },
@@ -174,7 +162,7 @@ fn the_double_pendulums_elbow_in_a_and_in_n() {
         { "reaction": "P" },
         { "reaction": "P", "in": "N" }
     ]);
-    let path = scratch("elbow", &p);
+    let path = scratch("answer-frames", "elbow", &p);
     let found = answers(&path);
     let constant = |name: &str| p["constants"][name]["value"].as_f64().expect("constant");
     let (l1, l2, m2, g) = (
@@ -209,13 +197,13 @@ fn the_double_pendulums_elbow_in_a_and_in_n() {
 /// Q: (m c²/3) q̈₃ = c (cos q₃ F_y − sin q₃ F_x) − m g (c/2) cos q₃.
 #[test]
 fn the_four_bars_closure_in_b_and_in_n() {
-    let mut p = read("four-bar");
+    let mut p = problem_json("four-bar");
     p["find"]["questions"] = json!([
         { "value": "q3''" },
         { "reaction": "R" },
         { "reaction": "R", "in": "N" }
     ]);
-    let path = scratch("four-bar", &p);
+    let path = scratch("answer-frames", "four-bar", &p);
     let found = answers(&path);
     let constant = |name: &str| p["constants"][name]["value"].as_f64().expect("constant");
     let (c, m, g) = (constant("c"), constant("m"), constant("g"));
@@ -241,10 +229,10 @@ fn the_four_bars_closure_in_b_and_in_n() {
 #[test]
 fn the_key_and_the_handout_name_the_frame() {
     let dir = std::env::temp_dir().join(format!("mbd-frames-key-{}", std::process::id()));
-    let mut p = read("gear-pair-torque");
+    let mut p = problem_json("gear-pair-torque");
     p["constants"]["T"]["vary"] = json!([1.0, 1.4]);
     p["constants"]["T"]["step"] = json!(0.1);
-    let varied = scratch("varied", &p);
+    let varied = scratch("answer-frames", "varied", &p);
     let out = run(&[
         "variants".as_ref(),
         varied.as_os_str(),
@@ -292,12 +280,15 @@ fn in_is_refused_on_a_scalar_and_for_an_unknown_frame() {
             "find.questions[2].in",
         ),
     ] {
-        let mut p = read("gear-pair-torque");
+        let mut p = problem_json("gear-pair-torque");
         p["find"]["questions"]
             .as_array_mut()
             .expect("questions")
             .push(question);
-        let out = run(&["answer".as_ref(), scratch("bad-in", &p).as_os_str()]);
+        let out = run(&[
+            "answer".as_ref(),
+            scratch("answer-frames", "bad-in", &p).as_os_str(),
+        ]);
         assert_eq!(out.status.code(), Some(1));
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains(path) && err.contains("hint"), "{err}");
@@ -308,13 +299,13 @@ fn in_is_refused_on_a_scalar_and_for_an_unknown_frame() {
 /// refused by `check` and `solve` at the gear's path.
 #[test]
 fn a_gear_pair_with_crossed_axles_is_refused() {
-    let mut p = read("gear-pair-torque");
+    let mut p = problem_json("gear-pair-torque");
     p["dimension"] = 3.into();
     p["bodies"]["A"]["inertia"] = json!({ "xx": "IA/2", "yy": "IA/2", "zz": "IA" });
     p["bodies"]["B"]["inertia"] = json!({ "xx": "IB/2", "yy": "IB/2", "zz": "IB" });
     p["constraints"][0]["axis"] = "B.z".into();
     p["joints"][0]["axis"] = "N.x".into();
-    let path = scratch("crossed", &p);
+    let path = scratch("answer-frames", "crossed", &p);
     for command in ["check", "solve"] {
         let out = run(&[command.as_ref(), path.as_os_str()]);
         let err = String::from_utf8_lossy(&out.stderr);
@@ -326,7 +317,10 @@ fn a_gear_pair_with_crossed_axles_is_refused() {
     }
     // Parallel axles (both along N.z) are accepted.
     p["joints"][0]["axis"] = "N.z".into();
-    let out = run(&["check".as_ref(), scratch("parallel", &p).as_os_str()]);
+    let out = run(&[
+        "check".as_ref(),
+        scratch("answer-frames", "parallel", &p).as_os_str(),
+    ]);
     assert!(
         out.status.success(),
         "{}",

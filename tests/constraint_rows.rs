@@ -13,7 +13,7 @@ use mbd_tutor::plan::Sum;
 use mbd_tutor::solution::equation_view;
 use serde_json::Value;
 
-use crate::support::all_problems;
+use crate::support::{all_problems, problem_json};
 
 /// A direction written as one unit vector: its sign, frame letter and axis (`x`, `y`, `z`,
 /// or `r`, `t` for step 1's ê_r and ê_t).
@@ -255,13 +255,9 @@ fn every_constraint_row_is_named_by_what_it_holds() {
 /// The reading itself: the rows the issue found misnamed fail it.
 #[test]
 fn the_check_finds_a_misnamed_row() {
-    let read = |name: &str| -> Value {
-        serde_json::from_str(&std::fs::read_to_string(crate::support::problem(name)).expect("read"))
-            .expect("json")
-    };
-    let rack = read("rack-and-pinion");
-    let gear = read("gear-pair-torque");
-    let cylinder = read("disc-in-cylinder");
+    let rack = problem_json("rack-and-pinion");
+    let gear = problem_json("gear-pair-torque");
+    let cylinder = problem_json("disc-in-cylinder");
     for (file, problem, label) in [
         (
             "rack-and-pinion",

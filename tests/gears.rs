@@ -2,7 +2,9 @@
 //! rolling inside a fixed cylinder (its small-oscillation period), against closed forms
 //! worked by hand below.
 
-use crate::support::{assert_close, column, problem, run_json, simulate, solve_all, METHODS};
+use crate::support::{
+    assert_close, column, method_json, problem, problem_json, scratch, simulate, solve_all, METHODS,
+};
 use mbd_tutor::equations::Method;
 use mbd_tutor::numeric::{Compiled, System};
 use mbd_tutor::pipeline::{derive, Purpose};
@@ -115,16 +117,7 @@ fn the_disc_inside_a_cylinder_oscillates_with_the_textbook_period() {
     );
     for method in METHODS {
         let path = problem("disc-in-cylinder");
-        let l = run_json(&[
-            "linearize",
-            path.to_str().unwrap(),
-            "--format",
-            "json",
-            "--method",
-            method,
-            "--state",
-            "x=0,x'=0",
-        ]);
+        let l = method_json("linearize", &path, method, &["--state", "x=0,x'=0"]);
         let largest = l["eigenvalues"]
             .as_array()
             .unwrap()
@@ -250,31 +243,19 @@ fn a_pinion_drives_its_rack_by_every_method() {
 /// the planar answers.
 #[test]
 fn the_gear_pair_in_3d_agrees_with_the_plane() {
-    let mut p: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(problem("gear-pair-torque")).unwrap())
-            .unwrap();
+    let mut p = problem_json("gear-pair-torque");
     p["dimension"] = 3.into();
     p["bodies"]["A"]["inertia"] = serde_json::json!({ "xx": "IA/2", "yy": "IA/2", "zz": "IA" });
     p["bodies"]["B"]["inertia"] = serde_json::json!({ "xx": "IB/2", "yy": "IB/2", "zz": "IB" });
     p["constraints"][0]["axis"] = "B.z".into();
-    let dir = std::env::temp_dir().join(format!("mbd-gear-3d-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("gear-pair-3d.json");
-    std::fs::write(&path, p.to_string()).unwrap();
+    let path = scratch("gear-3d", "gear-pair-3d", &p);
     let qa_dd = T / (IA + IB * (RA / RB).powi(2));
     for method in METHODS {
-        let s = run_json(&[
-            "solve",
-            path.to_str().unwrap(),
-            "--format",
-            "json",
-            "--method",
-            method,
-        ]);
+        let s = method_json("solve", &path, method, &[]);
         let acc = s["accelerations"]["qA"].as_f64().unwrap();
         assert_close(acc, qa_dd, 1e-9, 1.0, &format!("{method}: 3D qA''"));
     }
-    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(path.parent().expect("its folder")).ok();
 }
 
 /// The rack slides on its underside S, 2b below its pitch line, its mass centre b below
@@ -283,28 +264,16 @@ fn the_gear_pair_in_3d_agrees_with_the_plane() {
 #[test]
 fn the_rack_bears_on_its_slide_with_the_couple_of_its_push() {
     let (b, m) = (0.02, 2.0);
-    let mut p: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(problem("rack-and-pinion")).unwrap())
-            .unwrap();
+    let mut p = problem_json("rack-and-pinion");
     p["find"]["reactions"] = serde_json::json!(["teeth", "S"]);
-    let dir = std::env::temp_dir().join(format!("mbd-rack-slide-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("rack-slide.json");
-    std::fs::write(&path, p.to_string()).unwrap();
+    let path = scratch("rack-slide", "rack-slide", &p);
     for method in METHODS {
-        let s = run_json(&[
-            "solve",
-            path.to_str().unwrap(),
-            "--format",
-            "json",
-            "--method",
-            method,
-        ]);
+        let s = method_json("solve", &path, method, &[]);
         let xdd = s["accelerations"]["x"].as_f64().unwrap();
         let couple = s["reactions"]["S"]["moment"][2].as_f64().unwrap();
         let normal = s["reactions"]["S"]["force"][1].as_f64().unwrap();
         assert_close(couple, b * m * xdd, 1e-9, 1.0, &format!("{method}: M_z^S"));
         assert_close(normal, m * 9.81, 1e-9, 1.0, &format!("{method}: F_y^S"));
     }
-    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(path.parent().expect("its folder")).ok();
 }

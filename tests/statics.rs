@@ -7,38 +7,22 @@
 //! a four-bar held at its crank (every pin reaction, from the nine equilibrium equations of
 //! its three bars solved in the test). Then held coordinates in dynamics and bad input.
 
-use crate::support::{assert_close, problem, run, run_json, METHODS};
+use crate::support::{
+    answers_json, assert_close, method_json, problem, problem_text, run, run_json, scratch_file,
+    METHODS,
+};
 use serde_json::Value;
 
 const G: f64 = 9.81;
 
 fn statics(name: &str, method: &str, extra: &[&str]) -> Value {
-    let path = problem(name);
-    let mut args = vec![
-        "statics".to_string(),
-        path.to_string_lossy().into_owned(),
-        "--format".into(),
-        "json".into(),
-        "--method".into(),
-        method.into(),
-    ];
-    args.extend(extra.iter().map(|s| s.to_string()));
-    let json = run_json(&args);
+    let json = method_json("statics", &problem(name), method, extra);
     assert_eq!(json["method"], method);
     json
 }
 
 fn answers(name: &str, method: &str) -> Vec<Value> {
-    let path = problem(name);
-    let json = run_json(&[
-        "answer",
-        path.to_str().unwrap(),
-        "--format",
-        "json",
-        "--method",
-        method,
-    ]);
-    json["answers"].as_array().unwrap().clone()
+    answers_json(&problem(name), method)
 }
 
 fn num(v: &Value) -> f64 {
@@ -377,15 +361,11 @@ fn a_four_bar_held_at_its_crank_carries_the_pin_forces_of_its_bars_balance() {
 
 /// A problem file in the test's temporary directory.
 fn written(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("mbd-statics-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
-    path
+    scratch_file("statics", name, text)
 }
 
 fn two_link_with(q1: &str) -> String {
-    let text = std::fs::read_to_string(problem("statics-two-link-arm")).unwrap();
+    let text = problem_text("statics-two-link-arm");
     let start = text.find("\"q1\": {").unwrap();
     let end = start + text[start..].find('\n').unwrap();
     let text = format!("{}\"q1\": {q1},{}", &text[..start], &text[end..]);
@@ -403,14 +383,7 @@ fn a_held_shoulder_leaves_the_forearm_a_pendulum_about_the_elbow() {
     // About the elbow: (m2 L2²/3) q2'' = −(m2 g L2/2 + W L2) cos(q1 + q2).
     let want = -(m2 * G * l2 / 2.0 + w * l2) * q12.cos() / (m2 * l2 * l2 / 3.0);
     for method in METHODS {
-        let json = run_json(&[
-            "solve",
-            path.to_str().unwrap(),
-            "--format",
-            "json",
-            "--method",
-            method,
-        ]);
+        let json = method_json("solve", &path, method, &[]);
         assert_close(num(&json["accelerations"]["q1"]), 0.0, 1e-9, 1.0, "q1''");
         assert_close(num(&json["accelerations"]["q2"]), want, 1e-9, 1.0, "q2''");
         assert!(
@@ -454,7 +427,7 @@ fn held_with_motion_is_refused_at_its_path() {
 
 #[test]
 fn bad_statics_questions_and_no_equilibrium_are_refused_with_a_hint() {
-    let ladder = std::fs::read_to_string(problem("statics-ladder")).unwrap();
+    let ladder = problem_text("statics-ladder");
     let no_constant = written(
         "no-constant.json",
         &ladder.replace("\"find\": \"alpha\"", "\"find\": \"beta\""),
@@ -472,7 +445,7 @@ fn bad_statics_questions_and_no_equilibrium_are_refused_with_a_hint() {
         &["find.questions[2].slips", "no friction", "hint"],
     );
     // A pendulum under a couple larger than its weight can resist rests nowhere.
-    let pendulum = std::fs::read_to_string(problem("statics-torsion-pendulum")).unwrap();
+    let pendulum = problem_text("statics-torsion-pendulum");
     let pushed = written(
         "pushed.json",
         &pendulum.replace(

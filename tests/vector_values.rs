@@ -5,21 +5,9 @@
 //! cylinder's contact point (at rest, its acceleration r θ̇² toward the centre), and a
 //! heavy top's angular velocity and acceleration from its Euler angles.
 
-use crate::support::{problem, run, run_json};
+use crate::support::{problem_json, run, run_json, scratch};
 use serde_json::{json, Value};
-use std::path::{Path, PathBuf};
-
-fn scratch(name: &str, problem: &Value) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("mbd-vector-values-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("scratch");
-    let path = dir.join(format!("{name}.json"));
-    std::fs::write(&path, serde_json::to_string_pretty(problem).expect("json")).expect("write");
-    path
-}
-
-fn read(name: &str) -> Value {
-    serde_json::from_str(&std::fs::read_to_string(problem(name)).expect("read")).expect("json")
-}
+use std::path::Path;
 
 fn answers(path: &Path) -> Vec<Value> {
     let out = run_json(&[
@@ -60,7 +48,7 @@ fn value(answer: &Value) -> f64 {
 /// q̇₁ + q̇₂ with angular acceleration q̈₁ + q̈₂.
 #[test]
 fn the_double_pendulums_points_and_lower_rod_by_hand() {
-    let mut p = read("double-pendulum-rods");
+    let mut p = problem_json("double-pendulum-rods");
     p["find"]["questions"] = json!([
         { "value": "q1''" },
         { "value": "q2''" },
@@ -72,7 +60,7 @@ fn the_double_pendulums_points_and_lower_rod_by_hand() {
         { "value": "alpha(B)", "unit": "rad/s^2" },
         { "value": "v(N.o)" },
     ]);
-    let found = answers(&scratch("double", &p));
+    let found = answers(&scratch("vector-values", "double", &p));
     let (l1, l2) = (0.6f64, 0.4f64);
     let (q1, q2, u1, u2) = (0.7f64, -0.4f64, 1.0f64, -0.5f64);
     let (a1, a2) = (value(&found[0]), value(&found[1]));
@@ -116,7 +104,7 @@ fn the_double_pendulums_points_and_lower_rod_by_hand() {
 /// (2/3) g sin α. In the cylinder's own axes its angular velocity is θ̇ ŵ_z.
 #[test]
 fn a_rolling_cylinders_contact_point_is_at_rest_and_accelerates_toward_the_centre() {
-    let mut p = read("cylinder-on-incline");
+    let mut p = problem_json("cylinder-on-incline");
     p["points"] = json!({ "C": { "on": "W", "at": "-R*W.y" } });
     p["find"]["questions"] = json!([
         { "value": "v(C)" },
@@ -125,7 +113,7 @@ fn a_rolling_cylinders_contact_point_is_at_rest_and_accelerates_toward_the_centr
         { "value": "w(W)", "in": "W" },
         { "value": "a(W*)" },
     ]);
-    let found = answers(&scratch("cylinder", &p));
+    let found = answers(&scratch("vector-values", "cylinder", &p));
     let (r, rate) = (0.1, 0.5);
     let spin = -rate / r;
     let v = components(&found[0], "N", &["x", "y"]);
@@ -148,7 +136,7 @@ fn a_rolling_cylinders_contact_point_is_at_rest_and_accelerates_toward_the_centr
 /// −sθ cψ, cθ) the symmetry axis, and α its derivative in N.
 #[test]
 fn the_heavy_tops_angular_velocity_and_acceleration_by_its_euler_angles() {
-    let mut p = read("heavy-symmetric-top");
+    let mut p = problem_json("heavy-symmetric-top");
     let at = json!({ "state": { "psi": 0.3, "theta": 0.5, "phi": 0.7,
                                "psi'": 3.0, "theta'": 1.5, "phi'": 20.0 } });
     p["find"]["questions"] = json!([
@@ -158,7 +146,7 @@ fn the_heavy_tops_angular_velocity_and_acceleration_by_its_euler_angles() {
         { "value": "w(top)", "at": at },
         { "value": "alpha(top)", "at": at },
     ]);
-    let found = answers(&scratch("top", &p));
+    let found = answers(&scratch("vector-values", "top", &p));
     let xyz = ["x", "y", "z"];
     let (psi, th, phi) = (0.3f64, 0.5f64, 0.7f64);
     let (dpsi, dth, dphi) = (3.0, 1.5, 20.0);
@@ -202,7 +190,7 @@ fn the_heavy_tops_angular_velocity_and_acceleration_by_its_euler_angles() {
 /// `answer` gives; the handout writes the unit vectors of that frame.
 #[test]
 fn the_key_and_the_handout_name_the_frame() {
-    let mut p = read("cylinder-on-incline");
+    let mut p = problem_json("cylinder-on-incline");
     p["constants"]["R"]["vary"] = json!([0.08, 0.12]);
     p["constants"]["R"]["step"] = json!(0.01);
     p["points"] = json!({ "C": { "on": "W", "at": "-R*W.y" } });
@@ -210,7 +198,7 @@ fn the_key_and_the_handout_name_the_frame() {
         { "value": "a(C)", "symbol": "aC" },
         { "value": "v(W*)", "in": "W" },
     ]);
-    let path = scratch("keyed", &p);
+    let path = scratch("vector-values", "keyed", &p);
     let dir = path.with_extension("variants");
     let _ = std::fs::remove_dir_all(&dir);
     let out = run(&[
@@ -283,9 +271,12 @@ fn bad_vector_values_name_their_path() {
             "only a vector answer",
         ),
     ] {
-        let mut p = read("double-pendulum-rods");
+        let mut p = problem_json("double-pendulum-rods");
         p["find"]["questions"] = json!([question]);
-        let out = run(&["answer".as_ref(), scratch("bad", &p).as_os_str()]);
+        let out = run(&[
+            "answer".as_ref(),
+            scratch("vector-values", "bad", &p).as_os_str(),
+        ]);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "{question}: {err}");
         assert!(
