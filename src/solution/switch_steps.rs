@@ -290,14 +290,7 @@ pub(super) fn eliminate(mut a: Vec<Vec<Expr>>, mut b: Vec<Expr>, v: &Values) -> 
     let mut used = vec![false; n];
     let mut pivots = Vec::new();
     for col in 0..n {
-        let (row, size) = (0..n)
-            .filter(|&r| !used[r])
-            .map(|r| (r, eval(&a[r][col], v).abs()))
-            .max_by(|x, y| x.1.total_cmp(&y.1))?;
-        if size.is_nan() || size <= 1e-12 {
-            return None;
-        }
-        used[row] = true;
+        let row = pivot(&mut used, |r| eval(&a[r][col], v).abs(), 1e-12)?;
         for r in 0..n {
             if r == row || a[r][col].is_zero() {
                 continue;
@@ -336,17 +329,9 @@ fn singular_at(a: &[Vec<Expr>], v: &Values) -> bool {
     let n = m.len();
     let mut used = vec![false; n];
     for col in 0..n {
-        let Some((row, size)) = (0..n)
-            .filter(|&r| !used[r])
-            .map(|r| (r, m[r][col].abs()))
-            .max_by(|x, y| x.1.total_cmp(&y.1))
-        else {
+        let Some(row) = pivot(&mut used, |r| m[r][col].abs(), SINGULAR * largest) else {
             return true;
         };
-        if size.is_nan() || size <= SINGULAR * largest {
-            return true;
-        }
-        used[row] = true;
         let pivot_row = m[row].clone();
         for (r, entries) in m.iter_mut().enumerate() {
             let factor = entries[col] / pivot_row[col];
@@ -359,6 +344,21 @@ fn singular_at(a: &[Vec<Expr>], v: &Values) -> bool {
         }
     }
     false
+}
+
+/// The pivot row among those not yet `used`: the one whose entry is largest in `size`
+/// (the last of equal ones), marked used; `None` where every row is used or the largest is
+/// not a number or at most `smallest`.
+fn pivot(used: &mut [bool], size: impl Fn(usize) -> f64, smallest: f64) -> Option<usize> {
+    let (row, largest) = (0..used.len())
+        .filter(|&r| !used[r])
+        .map(|r| (r, size(r)))
+        .max_by(|x, y| x.1.total_cmp(&y.1))?;
+    if largest.is_nan() || largest <= smallest {
+        return None;
+    }
+    used[row] = true;
+    Some(row)
 }
 
 /// Whether `found` is `expected` to 1e-6, relative.
@@ -464,7 +464,7 @@ fn steps_for(
 
 #[cfg(test)]
 mod tests {
-    use super::eliminate;
+    use super::{eliminate, pivot};
     use crate::symbolic::{eval, Expr, Symbol, Values};
 
     fn at(pairs: &[(&str, f64)]) -> Values {
@@ -490,6 +490,21 @@ mod tests {
         assert!(pivot.abs() > 1e-12 && pivot.abs() < 1e-10, "{pivot}");
         let a = vec![vec![Expr::one(), &x * &y], vec![Expr::one(), z]];
         assert!(eliminate(a, vec![Expr::one(), Expr::int(2)], &v).is_none());
+    }
+
+    /// The pivot is the largest entry in size among the rows not used, the later of two
+    /// equal ones; none where it is not a number or no larger than the smallest allowed.
+    #[test]
+    fn the_pivot_is_the_largest_unused_entry() {
+        let sizes = [3.0, 5.0, 5.0, 9.0];
+        let mut used = [false, false, false, true];
+        assert_eq!(pivot(&mut used, |r| sizes[r], 1e-12), Some(2));
+        assert_eq!(used, [false, false, true, true]);
+        assert_eq!(pivot(&mut used, |r| sizes[r], 1e-12), Some(1));
+        assert_eq!(pivot(&mut used, |r| sizes[r], 3.0), None);
+        assert_eq!(used, [false, true, true, true]);
+        assert_eq!(pivot(&mut [false], |_| f64::NAN, 0.0), None);
+        assert_eq!(pivot(&mut [true, true], |_| 1.0, 0.0), None);
     }
 
     /// `[m, 1; k, 0] [p; q] = [0; f]`: by hand p = f/k, q = −m f/k, checked at numbers.
