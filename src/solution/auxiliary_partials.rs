@@ -5,9 +5,9 @@
 //! shown in the table with the independent speeds', and its `F̃*_r` is formed body by body
 //! with them, as the independent speeds' are.
 
-use super::partial_rows::{body_rows, site_partial, BodyPartials};
+use super::partial_rows::{body_rows, site_partial, BodyPartials, Rigid};
 use crate::equations::Derivation;
-use crate::mechanics::{DependentSpeeds, Model, RowOrigin, Vector};
+use crate::mechanics::{DependentSpeeds, RowOrigin, Vector};
 use crate::plan::Sum;
 use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
@@ -130,40 +130,6 @@ pub struct Motion {
     pub weights: Vec<Expr>,
     /// The subtree's rigid motion, for a joint of the tree.
     pub rigid: Option<Rigid>,
-}
-
-/// A subtree slid along, or turned about, `direction` by a unit.
-pub struct Rigid {
-    bodies: Vec<BodyId>,
-    direction: Vector,
-    turning: bool,
-    pivot: Vector,
-}
-
-impl Rigid {
-    /// The velocity it gives the point of `body` at `position`.
-    pub fn velocity_at(&self, model: &Model, body: BodyId, position: &Vector) -> Vector {
-        if !self.bodies.contains(&body) {
-            Vector::zero()
-        } else if self.turning {
-            (self.direction).cross(&position.minus(&self.pivot), &model.frames)
-        } else {
-            self.direction.clone()
-        }
-    }
-
-    /// The velocity it gives `body`'s mass centre.
-    pub fn centre(&self, model: &Model, body: BodyId) -> Vector {
-        self.velocity_at(model, body, &model.bodies[body.0].center.position)
-    }
-
-    /// The angular velocity it gives `body`.
-    pub fn omega(&self, body: BodyId) -> Vector {
-        match self.turning && self.bodies.contains(&body) {
-            true => self.direction.clone(),
-            false => Vector::zero(),
-        }
-    }
 }
 
 /// The motion of Kane's auxiliary row `r` (1-based): a constraint's (see [`weights`]) or

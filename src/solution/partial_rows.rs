@@ -6,6 +6,7 @@
 
 use crate::equations::Derivation;
 use crate::mechanics::{is_particle, Model, Vector};
+use crate::problem::BodyId;
 use crate::render::context::PartialVelocity;
 use crate::render::text::Math;
 use crate::symbolic::{
@@ -13,7 +14,46 @@ use crate::symbolic::{
 };
 
 /// A body with its velocity's and angular velocity's partials, one per coordinate's rate.
-pub(super) type BodyPartials = (crate::problem::BodyId, Vec<Vector>, Vec<Vector>);
+pub(super) type BodyPartials = (BodyId, Vec<Vector>, Vec<Vector>);
+
+/// A subtree slid along, or turned about, `direction` by a unit: the rigid motion of a
+/// tree joint's auxiliary speed (`auxiliary_partials.rs`).
+pub struct Rigid {
+    /// The bodies of the subtree.
+    pub(super) bodies: Vec<BodyId>,
+    /// The unit it slides along, or turns about.
+    pub(super) direction: Vector,
+    /// Whether it turns (about `direction` through `pivot`) rather than slides.
+    pub(super) turning: bool,
+    /// The point it turns about.
+    pub(super) pivot: Vector,
+}
+
+impl Rigid {
+    /// The velocity it gives the point of `body` at `position`.
+    pub fn velocity_at(&self, model: &Model, body: BodyId, position: &Vector) -> Vector {
+        if !self.bodies.contains(&body) {
+            Vector::zero()
+        } else if self.turning {
+            (self.direction).cross(&position.minus(&self.pivot), &model.frames)
+        } else {
+            self.direction.clone()
+        }
+    }
+
+    /// The velocity it gives `body`'s mass centre.
+    pub fn centre(&self, model: &Model, body: BodyId) -> Vector {
+        self.velocity_at(model, body, &model.bodies[body.0].center.position)
+    }
+
+    /// The angular velocity it gives `body`.
+    pub fn omega(&self, body: BodyId) -> Vector {
+        match self.turning && self.bodies.contains(&body) {
+            true => self.direction.clone(),
+            false => Vector::zero(),
+        }
+    }
+}
 
 /// Each body's partial velocity and partial angular velocity (index into `per_body`'s
 /// lists by coordinate) combined by `weights`, for speed `r` (0-based), one line per body
@@ -24,7 +64,7 @@ pub(super) fn body_rows(
     per_body: &[BodyPartials],
     weights: &[Expr],
     r: usize,
-    (speed, rigid): (String, Option<&super::auxiliary_partials::Rigid>),
+    (speed, rigid): (String, Option<&Rigid>),
 ) -> Vec<PartialVelocity> {
     let model = &derivation.model;
     // A contact's geometry leaves √(cos²θ): the sign at the start writes it as cos θ.
