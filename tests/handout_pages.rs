@@ -18,12 +18,11 @@ const MOST_PAGES: usize = 4;
 /// its text is made shorter: none may grow, and none other may pass 4 pages. The worked
 /// handouts measured on every problem once over 4 pages; the worksheets as first measured.
 /// The wheel pendulum by Kane and by Lagrange end with step 6 and the answers, half a page,
-/// on page 5; the struck double pendulum by the Motion Law with its plots and one answer;
-/// the unbalanced disk by Lagrange, eleven reactions in eleven rows, with its answers.
+/// on page 5; the unbalanced disk by Lagrange, eleven reactions in eleven rows, with its
+/// answers.
 const STILL_LONGER: &[(&str, usize)] = &[
     ("wheel-pendulum-kane", 5),
     ("wheel-pendulum-lagrange", 5),
-    ("impact-double-pendulum-motion-law", 5),
     ("unbalanced-disk-shaft-lagrange", 5),
 ];
 
@@ -33,8 +32,14 @@ const STILL_LONGER: &[(&str, usize)] = &[
 /// on the cart and the double pendulum by Kane, whose step 5 solves its system with
 /// numbers; the heavy top by Lagrange, whose first free body now fills page 1 and whose
 /// answers, long derivations, end page 4; the coin by Kane, its partial velocities kept on
-/// page 2 by their height.
-const LAST_BROUGHT_IN: [(&str, &str); 6] = [
+/// page 2 by their height. The Motion Law's handouts of the wheel pendulum, the unbalanced
+/// disk and the struck double pendulum, whose rows' products ("Written out:") a page may
+/// break between, set with no empty line above them, and whose two plots to a row are
+/// lower than wide.
+const LAST_BROUGHT_IN: [(&str, &str); 9] = [
+    ("wheel-pendulum", "motion-law"),
+    ("unbalanced-disk-shaft", "motion-law"),
+    ("impact-double-pendulum", "motion-law"),
     ("gyroscope-gimbal", "motion-law"),
     ("rolling-coin", "kane"),
     ("gyroscope-gimbal", "kane"),

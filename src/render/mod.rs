@@ -19,6 +19,7 @@ mod escape;
 mod figure;
 mod flat_brackets;
 mod impact;
+mod labelled_rows;
 mod line_break;
 mod markup;
 mod math_width;

@@ -184,6 +184,15 @@ pub fn register_filters(tera: &mut tera::Tera) {
         let latex = tera::try_get_value!("tex_wrap", "value", String, value);
         Ok(Value::String(super::tex_wrap::wrap(&latex)))
     });
+    // An aligned block's rows as the second column pair of `alignat*{2}`, whose first
+    // holds the words that open it (see `labelled_rows`).
+    tera.register_filter(
+        "tex_labelled_rows",
+        |value: &Value, _: &HashMap<String, Value>| {
+            let latex = tera::try_get_value!("tex_labelled_rows", "value", String, value);
+            Ok(Value::String(super::labelled_rows::labelled_rows(&latex)))
+        },
+    );
     tera.register_filter(
         "tex_display",
         |value: &Value, args: &HashMap<String, Value>| {

@@ -396,8 +396,10 @@ pub fn pgfplots(
     // 31 pt under the axis, below its tick labels and the time's title, whatever the
     // plot's height left the axis. The width is the page's
     // to set (`\pgfplotsset{width=…}`), by how many plots share the row.
-    // Two to a row are wide, and as high as their width allows; three or four are low.
-    let height = if plots_in_row <= 2 { "5.2cm" } else { "2.9cm" };
+    // Two to a row are wide, and lower than wide, as a time history reads: half their
+    // width (an axis as high as wide took a fifth of the page for two curves); three or
+    // four are lower still.
+    let height = if plots_in_row <= 2 { "3.6cm" } else { "2.9cm" };
     text.push_str(&format!(
         "  height={height}, grid=major, major grid style={{black!15}},\n"
     ));

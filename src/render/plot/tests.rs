@@ -79,12 +79,13 @@ fn no_line_is_dotted_and_the_third_is_a_band() {
     assert_eq!(band, 2, "the third line and its legend's sample");
 }
 
-/// Two plots to a row are drawn higher than three or four, whose row is low.
+/// Two plots to a row are drawn higher than three or four, whose row is low, and lower
+/// than wide (7.6 cm, the template's width for two).
 #[test]
 fn two_plots_to_a_row_are_high() {
     let q = Label::math("q", "");
     for (row, height) in [
-        (2, "height=5.2cm"),
+        (2, "height=3.6cm"),
         (3, "height=2.9cm"),
         (4, "height=2.9cm"),
     ] {
