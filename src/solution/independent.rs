@@ -163,7 +163,13 @@ pub fn dependent_speeds(
         "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s \\frac{\\partial \\dot{q}_s}{\\partial u_r}\\,\\mathbf{v}_s$, summed over the dependent rates $\\dot{q}_s$ of the relations above (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)"
     };
     let partials = if super::auxiliary_partials::any(derivation) {
-        format!("{partials}. The lines after them are for the auxiliary speeds: each one's partial velocities are those of the motion in which its own constraint alone is relaxed")
+        let rates = super::auxiliary_partials::rates_text(derivation, speeds);
+        let rates = if rates.is_empty() {
+            rates
+        } else {
+            format!(". {rates}")
+        };
+        format!("{partials}. The lines after them are for the auxiliary speeds: each one's partial velocities are those of the motion in which its own constraint alone is relaxed{rates}")
     } else {
         partials.to_string()
     };
