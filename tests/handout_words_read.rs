@@ -308,6 +308,12 @@ fn a_row_alone_is_not_said_simplified_and_the_sliding_law_once() {
     assert!(!friction.contains(words), "{name}: {friction}");
     assert!(friction.contains("the sliding law"), "{name}: {friction}");
     assert!(times >= 1, "{name}: the law is said in step 5");
+    // Row 4, the sliding law in place of the no-slip row, says the law before its equation.
+    has(
+        &markdown,
+        "Sliding friction is μ times the normal force in size and points against the slip",
+        name,
+    );
 }
 
 /// Every answer states its value once: answer 2 of the bowling ball (ẍ = −1.962 m/s²)

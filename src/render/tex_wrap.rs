@@ -171,10 +171,13 @@ fn breakable(math: &str) -> String {
             // A sign of a sum inside a bracket (a binary one, with a space either side):
             // a break there costs more than one between the outer terms, so that TeX
             // breaks there only where no outer break will do.
-            '+' | '-' if depth == 0 && brackets > 0 && out.ends_with(&format!(" {c}")) => {
-                if rest.starts_with(' ') {
-                    out.push_str(INSIDE_BRACKET);
-                }
+            '+' | '-'
+                if depth == 0
+                    && brackets > 0
+                    && out.ends_with(&format!(" {c}"))
+                    && rest.starts_with(' ') =>
+            {
+                out.push_str(INSIDE_BRACKET);
             }
             _ => {}
         }
