@@ -304,7 +304,7 @@ fn a_row_alone_is_not_said_simplified_and_the_sliding_law_once() {
     // Row 4 says the law; the answers' working says it once more for answer 1's reason
     // and answer 3's, but the friction found at the lane refers to row 4 instead.
     let friction = &markdown[markdown.find("Friction at the lane").expect("friction")..];
-    let friction = &friction[..friction.find("\n\n").unwrap_or(friction.len())];
+    let friction = &friction[..friction.find("$$").unwrap_or(friction.len())];
     assert!(!friction.contains(words), "{name}: {friction}");
     assert!(friction.contains("the sliding law"), "{name}: {friction}");
     assert!(times >= 1, "{name}: the law is said in step 5");
@@ -325,9 +325,13 @@ fn an_answer_states_its_value_once() {
     for format in ["latex", "markdown", "html"] {
         let text = handout(name, "motion-law", format);
         let answers = &text[text.rfind("Answers").expect("answers")..];
-        for number in ["-1.962", "−1.962", "1.16499", "5.71429"] {
+        // The instant is said twice: as answer 3's value and as where the speed is asked.
+        for (number, most) in [("1.962", 1), ("5.71429", 1), ("1.16499", 2)] {
             let count = answers.matches(number).count();
-            assert!(count <= 1, "{name} {format}: {number} said {count} times");
+            assert!(
+                count <= most,
+                "{name} {format}: {number} said {count} times"
+            );
         }
         assert!(
             answers.contains("1.962") && answers.contains("1.16499"),
@@ -345,7 +349,7 @@ fn an_answer_states_its_value_once() {
 #[test]
 fn the_four_bars_auxiliary_partial_velocities_and_parts_are_derived() {
     let name = "four-bar";
-    let latex = handout(name, "kane", "latex");
+    let latex = handout(name, "kane", "latex").replace('\n', " ");
     has(
         &latex,
         "With the independent rates held, $\\dot{q}_{1} = 0$",
