@@ -286,3 +286,83 @@ fn the_four_bar_writes_its_mass_and_its_rates_once() {
     lacks(&text, "\\dot{q}_{3} &= \\frac{a}{\\Delta}", name);
     has(&text, "$\\dot{q}_{3}$ is written with $", name);
 }
+
+/// A constraint differentiated with nothing formed before it (the bowling ball's lane,
+/// ÿ = 0) is written once, with no "Simplified:" leading it; the sliding law is said in
+/// its row of step 5 and only referred to where the friction at the lane is found.
+#[test]
+fn a_row_alone_is_not_said_simplified_and_the_sliding_law_once() {
+    let name = "bowling-ball";
+    let latex = handout(name, "motion-law", "latex");
+    has(&latex, "\\ddot{y} = 0", name);
+    lacks(&latex, "{}{Simplified:}", name);
+    lacks(&latex, "\\text{Simplified:}\\quad \\ddot{y} = 0", name);
+    let markdown = handout(name, "motion-law", "markdown");
+    lacks(&markdown, "Simplified:\n\n$$\n\\ddot{y} = 0", name);
+    let words = "μ times the normal force";
+    let times = markdown.matches(words).count();
+    // Row 4 says the law; the answers' working says it once more for answer 1's reason
+    // and answer 3's, but the friction found at the lane refers to row 4 instead.
+    let friction = &markdown[markdown.find("Friction at the lane").expect("friction")..];
+    let friction = &friction[..friction.find("$$").unwrap_or(friction.len())];
+    assert!(!friction.contains(words), "{name}: {friction}");
+    assert!(friction.contains("the sliding law"), "{name}: {friction}");
+    assert!(times >= 1, "{name}: the law is said in step 5");
+    // Row 4, the sliding law in place of the no-slip row, says the law before its equation.
+    has(
+        &markdown,
+        "Sliding friction is μ times the normal force in size and points against the slip",
+        name,
+    );
+}
+
+/// Every answer states its value once: answer 2 of the bowling ball (ẍ = −1.962 m/s²)
+/// at its head, its working ending with the closed form ẍ = −g μ; and the instant it rolls
+/// (t = 1.16499 s) likewise, t = 2 v₀/(7 g μ). Each number printed once in the Answers.
+#[test]
+fn an_answer_states_its_value_once() {
+    let name = "bowling-ball";
+    for format in ["latex", "markdown", "html"] {
+        let text = handout(name, "motion-law", format);
+        let answers = &text[text.rfind("Answers").expect("answers")..];
+        // The instant is said twice: as answer 3's value and as where the speed is asked.
+        for (number, most) in [("1.962", 1), ("5.71429", 1), ("1.16499", 2)] {
+            let count = answers.matches(number).count();
+            assert!(
+                count <= most,
+                "{name} {format}: {number} said {count} times"
+            );
+        }
+        assert!(
+            answers.contains("1.962") && answers.contains("1.16499"),
+            "{name} {format}: the values are kept"
+        );
+    }
+    let latex = handout(name, "motion-law", "latex");
+    has(&latex, "\\ddot{x} = -g \\mu\n\\]", name);
+    has(&latex, "$\\ddot{x} = -1.962\\ \\mathrm{m/s^{2}}$", name);
+}
+
+/// The four-bar's auxiliary speeds: where their partial velocities come from (the
+/// dependent rates each one's motion fixes, with q̇₁ held at zero), and each body's part
+/// of F̃*_r for them multiplied out by name before its value, not given as a result alone.
+#[test]
+fn the_four_bars_auxiliary_partial_velocities_and_parts_are_derived() {
+    let name = "four-bar";
+    let latex = handout(name, "kane", "latex").replace('\n', " ");
+    has(
+        &latex,
+        "With the independent rates held, $\\dot{q}_{1} = 0$",
+        name,
+    );
+    has(&latex, "$u_{2}$: $\\dot{q}_{2} = ", name);
+    has(&latex, "read off as its coefficient", name);
+    // F̃*_{3,B} opens with its products by name, then its value.
+    let at = latex.find("\\tilde{F}^{*}_{3,B} &=").expect("F*_{3,B}");
+    let line = &latex[at..at + 400];
+    assert!(
+        line.contains("\\left(\\mathbf{f}^{*}_{B} \\cdot \\hat{\\mathbf{b}}_{x}\\right)")
+            || line.contains("\\left(\\mathbf{R}^{*}_{B} \\cdot \\hat{\\mathbf{b}}_{x}\\right)"),
+        "{name}: {line}"
+    );
+}

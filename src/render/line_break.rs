@@ -171,7 +171,14 @@ fn line_starts(pieces: &[Piece], width: f64) -> Vec<usize> {
             let outside = (line_start + 1..i).rev().find(|&j| pieces[j].open == 0);
             if let Some(j) = outside {
                 let before: f64 = pieces[line_start..j].iter().map(|p| p.width).sum();
-                if before >= FULL_ENOUGH * width {
+                // The term that starts at `j`, to where the next one starts outside brackets:
+                // a term that fits a line of its own is kept whole, however short the line
+                // before it is left.
+                let end = (j + 1..pieces.len())
+                    .find(|&k| pieces[k].open == 0)
+                    .unwrap_or(pieces.len());
+                let term: f64 = pieces[j..end].iter().map(|p| p.width).sum();
+                if before >= FULL_ENOUGH * width || term <= width {
                     at = j;
                 }
             }
@@ -376,6 +383,20 @@ mod tests {
             lines[1].starts_with("- \\frac{L^{2} m}{2} \\left(8 + 5"),
             "{lines:?}"
         );
+        // A term that fits a line of its own is not split, even after a short line: the
+        // first term's bracket ends the line "bb) x", and the second term starts the next.
+        let row =
+            "\\left(aaaaaaaaaa + bbbbbbbbbb\\right) x - c \\left(dddddd + eeeeee\\right) y = 0";
+        let lines = break_into_lines(row, 22.0);
+        let second = lines
+            .iter()
+            .find(|l| l.contains("dddddd"))
+            .expect("second term");
+        assert!(
+            second.contains("eeeeee") && second.starts_with("- c"),
+            "{lines:?}"
+        );
+        assert!(!second.contains("\\left."), "{lines:?}");
         // Many short terms still fill lines: none is let past the width.
         let sum = (1..=40)
             .map(|i| format!("a_{{{i}}}"))

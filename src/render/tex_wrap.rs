@@ -144,19 +144,55 @@ fn breakable(math: &str) -> String {
         math = replace_command(&math, "\\right", "\\bigr");
     }
     let mut out = String::with_capacity(math.len() + 16);
-    let mut depth = 0i32;
-    let mut chars = math.chars().peekable();
-    while let Some(c) = chars.next() {
+    let (mut depth, mut brackets) = (0i32, 0i32);
+    let mut rest = math.as_str();
+    while let Some(c) = rest.chars().next() {
+        if let Some(length) = ["\\bigl", "\\bigr"]
+            .iter()
+            .find_map(|command| command_at(rest, command))
+        {
+            brackets += if rest.starts_with("\\bigl") { 1 } else { -1 };
+            out.push_str(&rest[..length]);
+            rest = &rest[length..];
+            continue;
+        }
         out.push(c);
+        rest = &rest[c.len_utf8()..];
         match c {
-            '\\' => out.extend(chars.next()),
+            '\\' => {
+                if let Some(next) = rest.chars().next() {
+                    out.push(next);
+                    rest = &rest[next.len_utf8()..];
+                }
+            }
             '{' => depth += 1,
             '}' => depth -= 1,
             ',' if depth == 0 => out.push_str("\\allowbreak"),
+            // A sign of a sum inside a bracket (a binary one, with a space either side):
+            // a break there costs more than one between the outer terms, so that TeX
+            // breaks there only where no outer break will do.
+            '+' | '-'
+                if depth == 0
+                    && brackets > 0
+                    && out.ends_with(&format!(" {c}"))
+                    && rest.starts_with(' ') =>
+            {
+                out.push_str(INSIDE_BRACKET);
+            }
             _ => {}
         }
     }
     out
+}
+
+/// The penalty after a sign inside a bracket: TeX's after a binary sign between the outer
+/// terms is 700 (`\binoppenalty`); this one outweighs two such breaks.
+const INSIDE_BRACKET: &str = "\\penalty2500";
+
+/// The length of `command` if `text` starts with it as a whole word (`\bigl`, not `\bigll`).
+fn command_at(text: &str, command: &str) -> Option<usize> {
+    let after = text.strip_prefix(command)?;
+    (!after.starts_with(|c: char| c.is_ascii_alphabetic())).then_some(command.len())
 }
 
 /// `text` with the command `from` (a whole word: `\left`, not `\leftarrow`) written `to`.
@@ -207,7 +243,14 @@ mod tests {
     fn brackets_can_break_but_matrices_keep_theirs() {
         assert_eq!(
             wrap("\\left(a + b\\right) \\leftarrow c"),
-            "$\\bigl(a + b\\bigr) \\leftarrow c$"
+            "$\\bigl(a +\\penalty2500 b\\bigr) \\leftarrow c$"
+        );
+        // A sum breaks more cheaply at its own signs than inside its brackets: a sign in a
+        // bracket carries a penalty; a leading minus, one in a fraction or outside, none.
+        let sum = "v = a \\hat{x} + \\left(-b - \\frac{c - d}{2}\\right) \\hat{y}";
+        assert_eq!(
+            wrap(sum),
+            "$v = a \\hat{x} + \\bigl(-b -\\penalty2500 \\frac{c - d}{2}\\bigr) \\hat{y}$"
         );
         let matrix = "\\left[\\begin{matrix} a \\end{matrix}\\right]";
         assert_eq!(wrap(matrix), format!("${matrix}$"));

@@ -11,7 +11,13 @@ const RIGHT_SYMBOLS: f64 = 46.0;
 /// `left &= right`, the right side broken over as many lines as it needs, each
 /// continuation `&\quad + …`; the lines joined by `\\`.
 pub fn line(left: &str, relation: &str, right: &str) -> String {
-    let pieces = break_into_lines(right, RIGHT_SYMBOLS);
+    line_within(left, relation, right, RIGHT_SYMBOLS)
+}
+
+/// As [`line`], the right side broken to `width` symbols a line: a display of its own
+/// whose left sides are short (Kane's `F̃^*_{r,B}`) holds more than one set beside words.
+pub fn line_within(left: &str, relation: &str, right: &str, width: f64) -> String {
+    let pieces = break_into_lines(right, width);
     let mut out = String::new();
     for (i, piece) in pieces.iter().enumerate() {
         let piece = piece.trim();

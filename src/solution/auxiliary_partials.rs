@@ -157,6 +157,7 @@ pub fn motion(derivation: &Derivation, r: usize) -> Option<Motion> {
     let (site, component) = super::relaxed::relaxed_reaction(derivation, row)?;
     let j = (problem.joints.iter()).position(|joint| joint.name.as_str() == site)?;
     let rigid = Rigid {
+        site: site.to_string(),
         bodies: model.subtree(j),
         direction: component.direction.clone(),
         turning: component.kind == ComponentKind::Moment,
@@ -309,4 +310,65 @@ pub fn body_motions(derivation: &Derivation, r: usize) -> Option<Vec<(BodyId, Mo
         out.push((body, moves));
     }
     Some(out)
+}
+
+/// Where the auxiliary speeds' partial velocities come from, as a student finds them: with
+/// the independent rates held at zero, each auxiliary speed's motion moves the dependent
+/// rates by what keeps the other constraints (`q̇₂ = −cos q₃/Δ u₂, …`), and the velocities
+/// written with those rates are the speed times its partial velocities. Empty where no
+/// auxiliary speed has a motion of its own.
+pub fn rates_text(derivation: &Derivation, speeds: &DependentSpeeds) -> String {
+    let model = &derivation.model;
+    let problem = model.problem;
+    let on_loop = super::kane_loop::OnTheLoop::of(derivation);
+    let finished = |e: &Expr| {
+        let e = simplify(e);
+        on_loop
+            .as_ref()
+            .map_or(e.clone(), |l| simplify(&l.reduce(&e)))
+    };
+    let rows = (derivation.rows.iter())
+        .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
+        .count();
+    let mut each = Vec::new();
+    let mut pins: Vec<String> = Vec::new();
+    for r in (speeds.independent.len() + 1)..=rows {
+        let Some(motion) = motion(derivation, r) else {
+            continue;
+        };
+        if let Some(rigid) = &motion.rigid {
+            let pin = format!("${}$", crate::symbolic::latex_name(&rigid.site));
+            if !pins.contains(&pin) {
+                pins.push(pin);
+            }
+        }
+        let speed = format!("u_{{{r}}}");
+        let rates: Vec<String> = (speeds.dependent.iter())
+            .map(|&d| {
+                let w = finished(&motion.weights[d]);
+                let rate = latex(&problem.coordinate_expr(d, 1));
+                match w.is_zero() {
+                    true => format!("{rate} = 0"),
+                    false => format!("{rate} = {}", super::tex::component_term(&w, &speed)),
+                }
+            })
+            .collect();
+        each.push(format!("${speed}$: ${}$", rates.join(",\\; ")));
+    }
+    if each.is_empty() {
+        return String::new();
+    }
+    let held: Vec<String> = (speeds.independent.iter())
+        .map(|&i| format!("{} = 0", latex(&problem.coordinate_expr(i, 1))))
+        .collect();
+    let slide = match pins.as_slice() {
+        [] => String::new(),
+        [pin] => format!(" (at {pin}, a joint of the chain, the bodies beyond it move with the speed as well)"),
+        [rest @ .., last] => format!(" (at {} and {last}, joints of the chain, the bodies beyond each move with the speed as well)", rest.join(", ")),
+    };
+    format!(
+        "With the independent rates held, ${}$, each auxiliary speed's relaxed constraint gives way by that speed{slide} and the other constraints stay satisfied, which fixes the dependent rates: {}. Each velocity of step 4 written with these rates is the speed times the partial velocity, read off as its coefficient",
+        held.join(",\\; "),
+        each.join("; ")
+    )
 }

@@ -31,8 +31,36 @@ pub fn without_repeats(solution: &mut Solution, every_rejected: bool, numbered: 
         }
         None => solution.reactions.clear(),
     }
+    said_at_the_head(&mut solution.answers);
     super::answer_leads::mark_repeated_states(&mut solution.answers);
     super::answer_lines::tighten(&mut solution.answers, numbered);
+}
+
+/// An answer states each value once, at its head (`ẍ = −1.962 m/s²`), where a reader looks
+/// for it: a working that ends with the same quantity and number (`ẍ = −g μ = −1.962 m/s²`)
+/// ends with its closed form instead (`ẍ = −g μ`). A working's step that is the value alone,
+/// with no closed form before it, is left as it is.
+fn said_at_the_head(views: &mut [crate::render::AnswerView]) {
+    for view in views {
+        let values: Vec<String> = (view.values_tex.iter())
+            .map(|v| v.as_str().to_string())
+            .collect();
+        for step in &mut view.steps {
+            if let Some(closed) = without_value(step.math.as_str(), &values) {
+                step.math = closed.into();
+            }
+        }
+    }
+}
+
+/// `math` (`a = f = n`) without its last side where `a = n` is one of `values` and a closed
+/// form `f` stays; `None` otherwise.
+fn without_value(math: &str, values: &[String]) -> Option<String> {
+    let (name, _) = math.split_once(" = ")?;
+    let (closed, number) = math.rsplit_once(" = ")?;
+    let value = format!("{} = {}", name.trim(), number.trim());
+    (closed.contains(" = ") && values.iter().any(|v| v.trim() == value))
+        .then(|| closed.trim_end().to_string())
 }
 
 /// Whether an answer's value is a component of the reaction at `joint`, its force or moment.
@@ -75,6 +103,22 @@ mod tests {
         assert!(!gives("\\ddot{x}_{2} = 0.72", "\\ddot{x}"));
         assert!(!gives("\\ddot{\\theta} = 1", "\\ddot{x}"));
         assert!(!gives("x = 1", ""));
+    }
+
+    #[test]
+    fn a_working_ends_with_its_closed_form_where_the_head_states_the_value() {
+        let values = ["\\ddot{x} = -1.962\\ \\mathrm{m/s^{2}}".to_string()];
+        let worked = "\\ddot{x} = -g \\mu = -1.962\\ \\mathrm{m/s^{2}}";
+        assert_eq!(
+            super::without_value(worked, &values).as_deref(),
+            Some("\\ddot{x} = -g \\mu")
+        );
+        // The value alone, another number, or another quantity: left as it is.
+        assert_eq!(super::without_value(&values[0], &values), None);
+        let other = "\\ddot{x} = -g \\mu = -1.963\\ \\mathrm{m/s^{2}}";
+        assert_eq!(super::without_value(other, &values), None);
+        let theta = "\\ddot{\\theta} = -g \\mu = -1.962\\ \\mathrm{m/s^{2}}";
+        assert_eq!(super::without_value(theta, &values), None);
     }
 
     #[test]

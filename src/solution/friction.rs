@@ -218,7 +218,7 @@ fn steps(
     let mut out = Vec::new();
     if state.mode == Mode::Slip && state.failed_stick.is_none() {
         let head = format!(
-            "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s. Friction is then sliding friction, μ times the normal force, against the slip, and the no-slip condition does not hold;",
+            "The {noun} slides at this state: its slip velocity, relative to the surface, is {} m/s, so the no-slip condition does not hold;",
             fixed(slip_speed),
         );
         // Where step 5 printed the sliding law as its row, it is referred to, not said again.

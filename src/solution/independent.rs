@@ -162,11 +162,7 @@ pub fn dependent_speeds(
     } else {
         "The constrained partial velocities are $\\tilde{\\mathbf{v}}_r = \\mathbf{v}_r + \\sum_s \\frac{\\partial \\dot{q}_s}{\\partial u_r}\\,\\mathbf{v}_s$, summed over the dependent rates $\\dot{q}_s$ of the relations above (and $\\tilde{\\boldsymbol{\\omega}}_r$ likewise)"
     };
-    let partials = if super::auxiliary_partials::any(derivation) {
-        format!("{partials}. The lines after them are for the auxiliary speeds: each one's partial velocities are those of the motion in which its own constraint alone is relaxed")
-    } else {
-        partials.to_string()
-    };
+    let partials = with_auxiliary(derivation, speeds, partials);
     let partials = linked(partials, link.as_ref(), &rates(&speeds.dependent));
     paragraphs.push(if speeds.at_each_state {
         format!("{partials}. Written out, they would carry the entries of $C$ into every component; the rows take them by name instead, $\\tilde{{F}}_r = F_r + \\sum_s C_{{sr}} F_s$ and $\\tilde{{F}}^*_r = F^*_r + \\sum_s C_{{sr}} F^*_s$, with $F_s$ and $F^*_s$ formed, as below, with the partial velocities of each coordinate's rate:")
@@ -193,6 +189,21 @@ pub fn dependent_speeds(
         time_terms: problem.moves_with_time(),
         start_tex: Vec::new(),
     }
+}
+
+/// `partials` followed, where auxiliary speeds have lines in the table, by what those lines
+/// are and the dependent rates each one's motion fixes.
+fn with_auxiliary(derivation: &Derivation, speeds: &Speeds, partials: &str) -> String {
+    if !super::auxiliary_partials::any(derivation) {
+        return partials.to_string();
+    }
+    let rates = super::auxiliary_partials::rates_text(derivation, speeds);
+    let rates = if rates.is_empty() {
+        rates
+    } else {
+        format!(". {rates}")
+    };
+    format!("{partials}. The lines after them are for the auxiliary speeds: each one's partial velocities are those of the motion in which its own constraint alone is relaxed{rates}")
 }
 
 /// Dependent rate `s` in its simplest form alone where the loop simplifies it (the

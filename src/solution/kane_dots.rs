@@ -33,6 +33,9 @@ pub(super) const WIDEST_LINE: f64 = 66.0;
 pub(super) struct DotProduct {
     /// `(a_i, b_i)` for each axis where neither is zero.
     pub(super) pairs: Vec<(Expr, Expr)>,
+    /// The frame the components are in, and the axis of each pair.
+    frame: BodyId,
+    axes: Vec<u8>,
 }
 
 impl DotProduct {
@@ -44,16 +47,36 @@ impl DotProduct {
             let cost: usize = a.iter().chain(&b).map(|c| latex(c).len()).sum();
             (cost, frame, a, b)
         };
-        let (_, _, a, b) = frames
+        let (_, frame, a, b) = frames
             .iter()
             .map(|&f| written(f))
             .min_by_key(|(cost, ..)| *cost)
             .unwrap_or_else(|| written(BodyId::GROUND));
-        let pairs = (0..3)
-            .filter(|&axis| !a[axis].is_zero() && !b[axis].is_zero())
-            .map(|axis| (a[axis].clone(), b[axis].clone()))
+        let axes: Vec<u8> = (0..3u8)
+            .filter(|&axis| !a[axis as usize].is_zero() && !b[axis as usize].is_zero())
             .collect();
-        DotProduct { pairs }
+        let pairs = (axes.iter())
+            .map(|&axis| (a[axis as usize].clone(), b[axis as usize].clone()))
+            .collect();
+        DotProduct { pairs, frame, axes }
+    }
+
+    /// Each pair as the partial velocity's component times the inertia force's named by
+    /// its unit vector, `a_x\,(\mathbf{f}^{*}_{B} \cdot \hat{\mathbf{b}}_{x})`, where
+    /// `named` is the inertia force's (or torque's) name.
+    pub(super) fn named_terms(&self, model: &Model, named: &str) -> Vec<String> {
+        let frame = model.frames.name(self.frame);
+        (self.pairs.iter().zip(&self.axes))
+            .map(|((a, _), &axis)| {
+                let unit = crate::symbolic::latex_unit_vector(frame, axis);
+                let b = format!("\\left({named} \\cdot {unit}\\right)");
+                match a {
+                    a if a.is_one() => b,
+                    a if (-a).is_one() => format!("-{b}"),
+                    _ => format!("{}\\, {b}", factor_tex(a)),
+                }
+            })
+            .collect()
     }
 
     /// `Σ a_i b_i` as an expression.

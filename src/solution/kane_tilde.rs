@@ -279,8 +279,14 @@ fn part_lines(
         .as_ref()
         .is_some_and(|s| r > s.independent.len());
     let many = products.iter().map(|l| l.len()).sum::<usize>() > LONGEST_AUXILIARY_PRODUCTS;
-    if one || (auxiliary && many) || products.iter().any(|l| symbols(l) > WIDEST_LINE) {
+    let long = (auxiliary && many) || products.iter().any(|l| symbols(l) > WIDEST_LINE);
+    if one || long {
         products.clear();
+    }
+    if long && !one {
+        // Products too long to write out: each partial velocity's component times the
+        // inertia force's by name, the step between the definition and the term.
+        products = named_products(model, part, &symbol, &letters);
     }
     lines.extend(products);
     let formed = latex_collected(&part.formed);
@@ -293,7 +299,7 @@ fn part_lines(
     if formed.len() > longest || term.len() > longest {
         return None;
     }
-    lines.push(super::aligned::line("", "=", &formed));
+    lines.push(super::aligned::line_within("", "=", &formed, PART_SYMBOLS));
     if let Some(first) = lines
         .first_mut()
         .filter(|l| l.trim_start().starts_with('&'))
@@ -309,10 +315,46 @@ fn part_lines(
             written,
             shown,
         ));
-        lines.push(super::aligned::line(&name, "=", &term));
+        lines.push(super::aligned::line_within(&name, "=", &term, PART_SYMBOLS));
     }
     Some((name, lines))
 }
+
+/// One body's dot products as its partial velocities' components times the inertia
+/// force's and torque's components by name, `a_x\,(\mathbf{f}^{*}_{B} \cdot
+/// \hat{\mathbf{b}}_{x}) + …`, as a line of an aligned display (broken where long);
+/// nothing where even that would not be short.
+fn named_products(
+    model: &Model,
+    part: &Part,
+    symbol: &str,
+    letters: &super::kane_theory::Letters,
+) -> Vec<String> {
+    let names = [&letters.force, &letters.couple].map(|l| format!("{l}^{{*}}_{{{symbol}}}"));
+    let terms: Vec<String> = (part.dots.iter().zip(&names))
+        .flat_map(|(dot, name)| dot.named_terms(model, name))
+        .collect();
+    let mut sum = String::new();
+    for term in &terms {
+        match (sum.is_empty(), term.strip_prefix('-')) {
+            (true, _) => sum.push_str(term),
+            (false, Some(rest)) => sum.push_str(&format!(" - {rest}")),
+            (false, None) => sum.push_str(&format!(" + {term}")),
+        }
+    }
+    if terms.is_empty() || sum.len() > LONGEST_NAMED {
+        return Vec::new();
+    }
+    vec![super::aligned::line_within("", "=", &sum, PART_SYMBOLS)]
+}
+
+/// How many symbols the right side of a line of a body's part takes: the display is set
+/// on lines of its own, under the words that name it, and its left sides (`\tilde{F}^{*}_{3,B}`)
+/// are short, so a term of a sum fits whole where a line of 46 would split its bracket.
+const PART_SYMBOLS: f64 = 60.0;
+
+/// The most characters of LaTeX a body's products by name may take.
+const LONGEST_NAMED: usize = 400;
 
 /// `F̃^*_r` of Kane's independent or auxiliary speed `r` (1-based) with each body's dot products
 /// multiplied out and the dependent accelerations replaced, as an `aligned` block ending in

@@ -19,6 +19,8 @@ pub(super) type BodyPartials = (BodyId, Vec<Vector>, Vec<Vector>);
 /// A subtree slid along, or turned about, `direction` by a unit: the rigid motion of a
 /// tree joint's auxiliary speed (`auxiliary_partials.rs`).
 pub struct Rigid {
+    /// The joint's name.
+    pub(super) site: String,
     /// The bodies of the subtree.
     pub(super) bodies: Vec<BodyId>,
     /// The unit it slides along, or turns about.

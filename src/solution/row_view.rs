@@ -318,7 +318,10 @@ pub fn equation_view(derivation: &Derivation, row: &Equation) -> EquationView {
         .unwrap_or_default();
     // Formed already in its simplest form, or with the same terms in another order: written
     // once, after its terms written out if any (a moment row's r × F; a force row none).
-    let bare = same && simplified_note.is_empty() && written_tex.is_empty();
+    // A constraint differentiated with nothing formed before it (no vector loop) is
+    // written once too: "Simplified:" would lead a display with nothing above it.
+    let alone = matches!(row.sum, Sum::Constraint { .. }) && grouped_tex.is_empty();
+    let bare = (same || alone) && simplified_note.is_empty() && written_tex.is_empty();
     if same && simplified_note.is_empty() {
         grouped_tex.clear();
     }

@@ -130,6 +130,8 @@ pub fn replace_rows(solution: &mut Solution, derivation: &Derivation, rows: &[Sl
             );
             view.grouped_tex = Math::from(String::new());
             view.written_tex = Math::from(String::new());
+            // The law is said before its equation: the no-slip row it replaces was bare.
+            view.bare = false;
             if let Some(signs) = row.signs {
                 view.simplified_note = SIZED_LAW_NOTE.into();
                 view.simplified_tex = Math::from(sized_law_tex(
