@@ -173,9 +173,9 @@ fn attachment_notes(problem: &crate::problem::Problem) -> Vec<String> {
                         LoadKind::Damper { between, .. } => (between, "damper"),
                         _ => return None,
                     };
-                    between.contains(&PointRef::Named(k)).then(|| {
-                        format!("the {}", load.name.as_deref().unwrap_or(what))
-                    })
+                    between
+                        .contains(&PointRef::Named(k))
+                        .then(|| format!("the {}", load.name.as_deref().unwrap_or(what)))
                 })
                 .collect();
             let loads = match loads.as_slice() {
