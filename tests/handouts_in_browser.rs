@@ -146,6 +146,27 @@ fn overdots_are_seen_inside_fractions_and_brackets() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The unit vectors of the frame tables and rows (the ladder's l̂, the top's and the coin's
+/// tilted frames, the four-bar's bars): each hat over the middle of its letter.
+#[test]
+fn hats_stand_over_the_middle_of_their_letters() {
+    if !ready("hats") {
+        return;
+    }
+    let dir = scratch("hats");
+    let mut pages = Vec::new();
+    for (name, method) in [
+        ("ladder-about-to-slip", "motion-law"),
+        ("heavy-symmetric-top", "kane"),
+        ("rolling-coin", "kane"),
+        ("four-bar", "newton-euler"),
+    ] {
+        pages.push(handout(&problem(name), method, &dir));
+    }
+    node("hats", &pages);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The projection's image of N's x axis on the page (y down), as a unit vector.
 fn page_x(svg: &Path) -> [f64; 2] {
     let text = std::fs::read_to_string(svg).expect("a picture");

@@ -57,10 +57,12 @@ fn two_part_names_compile_by_every_method() {
 }
 
 /// The text nodes of an HTML or SVG document that hold `^`, `_` or `ˆ`, outside scripts
-/// and styles (their code), and outside the user's own statement and title.
+/// and styles (their code), and outside the user's own statement and title. The `ˆ` an
+/// accent's `<mo>` sets over its letter in a `<mover>` is a hat drawn, not a literal.
 fn literal_scripts(markup: &str) -> Vec<String> {
     let mut found = Vec::new();
-    let mut rest = markup;
+    let markup = markup.replace("<mo stretchy=\"false\">ˆ</mo></mover>", "</mover>");
+    let mut rest = markup.as_str();
     let mut skip = 0usize;
     while let Some(open) = rest.find('<') {
         let text = &rest[..open];

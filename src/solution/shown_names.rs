@@ -115,14 +115,111 @@ pub fn name_in_step_one(solution: &mut Solution, names: &[(String, String)]) {
 }
 
 /// A note for each point of a contact or closure printed by a letter (a joint's is named in
-/// the coordinate table): "P is the point of contact at the lane."
+/// the coordinate table): "P is the point of contact at the lane."; "R is the pin joining
+/// the coupler B and the rocker C, where the loop closes."; and for each point the problem
+/// names by a letter where a spring or damper is attached: "F is where the dashpot is
+/// attached to the ground."
 pub fn point_notes(model: &Model, names: &[(String, String)]) -> Vec<String> {
-    let joints = model.problem.joints.len();
+    let mut notes = site_notes(model, names);
+    notes.extend(attachment_notes(model.problem));
+    notes.extend(particle_notes(model, names));
+    notes
+}
+
+/// "B is the bob, a particle: all its mass at one point.": each particle, which the
+/// figures name by its letter alone (no mass centre's star).
+fn particle_notes(model: &Model, names: &[(String, String)]) -> Vec<String> {
+    let problem = model.problem;
+    (problem.body_ids())
+        .filter(|b| !crate::mechanics::is_massless(model, *b))
+        .filter(|b| crate::mechanics::is_point_particle(model, *b))
+        .filter_map(|b| {
+            let name = problem.body_name(b);
+            let tex = latex_name(name);
+            let letter = match names.iter().find(|(w, _)| *w == tex) {
+                Some((_, l)) => l.clone(),
+                None if is_letter(name) => name.to_string(),
+                None => return None,
+            };
+            let words = super::joint_words::body_words(problem, b);
+            let what = match words.strip_prefix("body ") {
+                Some(_) => "a particle".to_string(),
+                None => format!("{words}, a particle"),
+            };
+            Some(format!("{letter} is {what}: all its mass at one point."))
+        })
+        .collect()
+}
+
+/// Whether a name reads as a point's letter (`R`, `P2`), not a word.
+fn is_letter(name: &str) -> bool {
+    name.chars().count() <= 3
+        && name.chars().next().is_some_and(|c| c.is_ascii_uppercase())
+        && name.chars().all(|c| c.is_ascii_alphanumeric())
+}
+
+/// "F is where the dashpot is attached to the ground.": each point the problem names by a
+/// letter that a spring or damper is attached to, with the loads by their names.
+fn attachment_notes(problem: &crate::problem::Problem) -> Vec<String> {
+    use crate::problem::{LoadKind, PointRef};
+    let body = |id| super::joint_words::body_words(problem, id);
+    (problem.points.iter().enumerate())
+        .filter(|(_, point)| is_letter(&point.name))
+        .filter_map(|(k, point)| {
+            let loads: Vec<String> = (problem.loads.iter())
+                .filter_map(|load| {
+                    let (between, what) = match &load.kind {
+                        LoadKind::Spring { between, .. } => (between, "spring"),
+                        LoadKind::Damper { between, .. } => (between, "damper"),
+                        _ => return None,
+                    };
+                    between
+                        .contains(&PointRef::Named(k))
+                        .then(|| format!("the {}", load.name.as_deref().unwrap_or(what)))
+                })
+                .collect();
+            let loads = match loads.as_slice() {
+                [] => return None,
+                [one] => format!("{one} is"),
+                [rest @ .., last] => format!("{} and {last} are", rest.join(", ")),
+            };
+            Some(format!(
+                "{} is where {loads} attached to {}.",
+                point.name,
+                body(point.on)
+            ))
+        })
+        .collect()
+}
+
+/// The notes of the contacts and closures after the tree's joints.
+fn site_notes(model: &Model, names: &[(String, String)]) -> Vec<String> {
+    let problem = model.problem;
+    let joints = problem.joints.len();
     (model.sites.iter().enumerate())
         .filter(|(k, _)| *k >= joints)
         .filter_map(|(_, site)| {
             let tex = latex_name(&site.name);
-            let (_, letter) = names.iter().find(|(w, _)| *w == tex)?;
+            let Some((_, letter)) = names.iter().find(|(w, _)| *w == tex) else {
+                // A closure named by its letter: the pin (or joint) that closes the loop.
+                let crate::mechanics::SiteKind::Closure(c) = site.kind else {
+                    return None;
+                };
+                if !is_letter(&site.name) {
+                    return None;
+                }
+                let words = |id| super::joint_words::body_words(problem, id);
+                let joint = match problem.closures.get(c).map(|j| j.kind) {
+                    Some(crate::problem::JointKind::Revolute) => "pin",
+                    _ => "joint",
+                };
+                return Some(format!(
+                    "{} is the {joint} joining {} and {}, where the loop closes.",
+                    site.name,
+                    words(site.parent),
+                    words(site.child)
+                ));
+            };
             let name = site.name.as_str();
             Some(match site.kind {
                 crate::mechanics::SiteKind::Contact(_) if name == "contact" => {

@@ -79,13 +79,17 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
 }
 
 /// The accents of `\hat`, `\dot` and `\ddot` as the operators MathML Core places as
-/// accents (`<mo>`, not an italic identifier), the hat as the combining circumflex: a
-/// browser sets the spacing circumflex `^` as the literal caret it is. The dots are of
+/// accents (`<mo>`, not an italic identifier), the hat as the modifier circumflex `ˆ`, not
+/// stretched: a browser sets the spacing circumflex `^` as the literal caret it is, and
+/// the combining one (U+0302, of no width) to the left of the letter it stands over. The dots are of
 /// class `dot`, which the page's style sets larger than the font's, whose dots over a
 /// letter in a fraction are a pixel across at 100 %.
 fn accents_as_operators(mathml: &str) -> String {
     mathml
-        .replace("<mi>^</mi></mover>", "<mo>\u{302}</mo></mover>")
+        .replace(
+            "<mi>^</mi></mover>",
+            "<mo stretchy=\"false\">\u{2c6}</mo></mover>",
+        )
         .replace(
             "<mi>\u{2d9}</mi></mover>",
             "<mo class=\"dot\">\u{2d9}</mo></mover>",
@@ -277,7 +281,7 @@ mod tests {
             &[
                 "<msub><mover accent=\"true\">",
                 "𝐚",
-                "<mo>\u{302}</mo>",
+                "<mo stretchy=\"false\">\u{2c6}</mo>",
                 "<mi>x</mi>",
             ],
         );

@@ -5,6 +5,8 @@
 //   overdots HTML...          every dot over a letter is inked, above its letter, clear of its
 //                             ink and unclipped,
 //                             and q, q̇, q̈ differ where they stand in fractions and brackets
+//   hats HTML...              every hat over a unit vector's letter stands over its middle,
+//                             above it
 //   friction EXPECTED FILE... the arrow labelled one of EXPECTED.labels (or EXPECTED.label) points along EXPECTED.page
 //                             (a unit vector on the page, y downward) in every picture of FILE
 //   arrows FILE...            no two force arrows of a picture lie on top of each other: their
@@ -56,6 +58,10 @@ async function texts(files) {
       for (let n = walker.nextNode(); n; n = walker.nextNode()) {
         const parent = n.parentNode ? n.parentNode.nodeName.toLowerCase() : '';
         if (parent === 'script' || parent === 'style') continue;
+        // The hat an accent's <mo> sets over its letter in a <mover> is drawn, not literal.
+        const accent = parent === 'mo' && n.parentNode.parentNode && n.parentNode.parentNode.nodeName.toLowerCase() === 'mover'
+          && n.parentNode === n.parentNode.parentNode.lastElementChild && n.nodeValue.trim() === 'ˆ';
+        if (accent) continue;
         if (/[\^_ˆ]/.test(n.nodeValue)) found.push(`<${parent}> ${n.nodeValue.trim().slice(0, 80)}`);
       }
       return found;
@@ -217,6 +223,76 @@ async function overdots(files) {
       }
     });
     check(touching === 0, `${file}: ${near.length} dotted letters, their dots clear of the letter (${touching} not)`);
+  });
+}
+
+// The hats of a page: for each <mover> whose accent is a hat, the boxes of the hat and its
+// letter and the letter itself.
+function measureHats() {
+  const HATS = ['ˆ', '\u0302', '^'];
+  const found = [];
+  for (const mover of document.querySelectorAll('mover')) {
+    const [base, accent] = mover.children;
+    if (!base || !accent || !HATS.includes(accent.textContent.trim())) continue;
+    const a = accent.getBoundingClientRect();
+    const q = base.getBoundingClientRect();
+    if (a.width === 0 && q.width === 0) continue;
+    found.push({ letter: base.textContent.trim(), hat: [a.left, a.top, a.width, a.height], base: [q.left, q.top, q.width, q.height] });
+  }
+  return found;
+}
+
+// Every hat stands over its letter: across, the middle of the hat's ink within a quarter of
+// the letter's inked width (and a pixel) of the middle of the letter's ink, and the hat's
+// ink above the letter's. Three screenshots, the hats hidden, the letters hidden, both,
+// so that what else is drawn there is not counted.
+async function hats(files) {
+  await each(files, async (page, file) => {
+    const found = await page.evaluate(measureHats);
+    check(found.length > 0, `${file}: has unit vectors with hats`);
+    const boxes = found.map((d) => {
+      const [x, y, w, h] = d.hat;
+      const [bx, by, bw, bh] = d.base;
+      const left = Math.min(x, bx) - 4;
+      const top = Math.min(y, by) - 2;
+      return [left, top, Math.max(x + w, bx + bw) + 4 - left, Math.max(y + h, by + bh) + 2 - top];
+    });
+    const masks = async (css) => {
+      const style = await page.addStyleTag({ content: css });
+      const shot = await fullShot(page);
+      await style.evaluate((e) => e.remove());
+      return darkPixels(page, shot, boxes, 200);
+    };
+    const hideHats = 'mover > :nth-child(2) { visibility: hidden !important; }';
+    const hideLetters = 'mover > :first-child { visibility: hidden !important; }';
+    const [letters, marks, neither] = [await masks(hideHats), await masks(hideLetters), await masks(hideHats + hideLetters)];
+    let faults = 0;
+    let measured = 0;
+    found.forEach((d, k) => {
+      const own = (m) => m[k].map((row, r) => row.map((v, c) => v && !neither[k][r][c]));
+      const extent = (m) => {
+        let [left, right, top, bottom, sum, n] = [Infinity, -Infinity, Infinity, -Infinity, 0, 0];
+        m.forEach((row, r) => row.forEach((v, c) => {
+          if (!v) return;
+          left = Math.min(left, c); right = Math.max(right, c);
+          top = Math.min(top, r); bottom = Math.max(bottom, r);
+          sum += c; n += 1;
+        }));
+        return n ? { left, right, top, bottom, middle: (left + right) / 2 } : null;
+      };
+      const [letter, hat] = [extent(own(letters)), extent(own(marks))];
+      if (!letter || !hat) return;
+      measured += 1;
+      const off = Math.abs(hat.middle - letter.middle);
+      const width = letter.right - letter.left + 1;
+      const fine = off <= 0.25 * width + 1 && hat.bottom < letter.bottom;
+      if (!fine) {
+        faults += 1;
+        if (faults <= 5) check(false, `${file}: the hat of ${d.letter} stands ${off.toFixed(1)} px off its middle (letter ${width} px wide, hat rows ${hat.top}-${hat.bottom}, letter ${letter.top}-${letter.bottom})`);
+      }
+    });
+    check(measured > 0, `${file}: hats measured against their letters`);
+    check(faults === 0, `${file}: ${measured} hats over the middle of their letters (${faults} not)`);
   });
 }
 
@@ -447,7 +523,7 @@ async function results(files) {
 
 (async () => {
   const [mode, ...args] = process.argv.slice(2);
-  const modes = { texts, overdots, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels, shapes: (a) => shapes(a[0], a.slice(1)), results };
+  const modes = { texts, overdots, hats, friction: (a) => friction(a[0], a.slice(1)), arrows, triads, labels, shapes: (a) => shapes(a[0], a.slice(1)), results };
   if (!modes[mode]) { console.log(`unknown mode ${mode}`); process.exit(2); }
   try {
     await modes[mode](args);

@@ -97,7 +97,6 @@ fn a_wall_and_a_floor_meet_at_their_corner() {
 /// Every point a configuration names by one capital letter (a joint's S, a contact's U)
 /// is named in the text of step 1 as well: the coordinates' table or the notes under it.
 #[test]
-#[ignore = "points of other bundled problems are not yet named in step 1"]
 fn every_point_a_picture_names_is_named_in_step_one() {
     let mut faults = Vec::new();
     for path in all_problems() {

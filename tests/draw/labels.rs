@@ -281,9 +281,11 @@ fn all_faults(method: Method) -> Vec<String> {
 /// fill the ring round B*: its name stands just past them rather than over one.
 /// The gears' pinion is small: its pin and mass centre, at one dot, are named together
 /// below its support, every closer spot lying over its spoke, its reference line, the mesh
-/// point or the arc of q_A. The two-wheeled cart's ĉ_z keeps a space from the names beside
+/// point or the arc of q_A. The held slider's pin Q, joint S and mass centre stand at one
+/// dot amid five arrows in a small block: their one name, `S, Q, C^*`, stands just above
+/// the block. The two-wheeled cart's ĉ_z keeps a space from the names beside
 /// it and stands a little further off.
-const KNOWN: [(&str, &str); 7] = [
+const KNOWN: [(&str, &str); 8] = [
     ("gear-pair-torque configuration", " px from joint-OA"),
     ("gear-pair-torque configuration", " px from cm-A"),
     ("two-wheeled-cart configuration", " px from its arrow"),
@@ -291,6 +293,7 @@ const KNOWN: [(&str, &str); 7] = [
     ("gyroscope-gimbal fbd-ring+rotor", "gimbal 52 px from"),
     ("block-on-rough-incline configuration", "B^* 41 px from"),
     ("statics-block-on-incline configuration", "B^* 43 px from"),
+    ("statics-crank-held fbd-C", " 52 px from "),
 ];
 
 #[test]

@@ -548,6 +548,7 @@ fn every_body_of_newton_euler_is_cut_free_with_all_its_reactions() {
 }
 
 mod browser;
+mod clear;
 mod closed_forms;
 mod commands;
 mod corners;

@@ -382,6 +382,14 @@ pub fn text_size(plain: &str) -> P2 {
                 small = false;
                 width += 3.5;
             }
+            // An italic capital (and m, w) is wider than a lower-case letter: O is 6.7 pt
+            // at 8 pt, O_B 12.8 pt, B^* 11.1 pt, x 4.6 pt; a comma and the space after it
+            // 5.2 pt in all (13 px to 8 pt).
+            ',' => width += 5.0,
+            '*' if small => width += 7.0,
+            c if c.is_ascii_uppercase() || c == 'm' || c == 'w' => {
+                width += if small { 10.0 } else { 11.0 };
+            }
             _ => width += if small { 6.0 } else { 8.0 },
         }
     }

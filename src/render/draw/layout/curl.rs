@@ -11,6 +11,10 @@ use super::Painter;
 pub(super) const START: f64 = std::f64::consts::FRAC_PI_4 * 3.0;
 /// Closer than this (px) to a line, a point of the curl lies on it.
 const ON: f64 = 4.0;
+/// The length (px) of a curl's head along its arc, and the least room (px) between the
+/// curl's ends and a line beyond [`ON`].
+const HEAD: f64 = 9.0;
+const CLEAR: f64 = 3.0;
 /// How far along a straight arrow's line, from its point, it is expected to reach (px).
 const REACH: f64 = 60.0;
 
@@ -31,12 +35,27 @@ impl Painter {
         for u in pending.iter().filter_map(|u| p2unit(*u)) {
             lines.push((at, p2add(at, [u[0] * REACH, u[1] * REACH])));
         }
+        let on_a_line = |t: f64, near: f64| {
+            let p = [at[0] + radius * t.cos(), at[1] + radius * t.sin()];
+            lines.iter().any(|(a, b)| to_segment(p, *a, *b) < near)
+        };
+        // Crossing an arrow on its way round is how a textbook draws a curl among forces;
+        // its head or its tail on an arrow reads as a mark on that arrow: never, where a
+        // start keeps both ends off every arrow.
         let meets = |start: f64| -> usize {
-            (0..=24)
+            let crossings = (0..=24)
                 .map(|k| start + sweep * f64::from(k) / 24.0)
-                .map(|t| [at[0] + radius * t.cos(), at[1] + radius * t.sin()])
-                .filter(|p| lines.iter().any(|(a, b)| to_segment(*p, *a, *b) < ON))
-                .count()
+                .filter(|t| on_a_line(*t, ON))
+                .count();
+            let step = sweep.signum() * HEAD / radius;
+            let ends = (0..=3)
+                .flat_map(|k| {
+                    let along = step * f64::from(k) / 3.0;
+                    [start + sweep - along, start + along]
+                })
+                .filter(|t| on_a_line(*t, ON + CLEAR))
+                .count();
+            crossings + 100 * ends
         };
         let mut best = (meets(START), START);
         for k in 1..16 {
