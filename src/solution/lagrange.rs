@@ -444,7 +444,7 @@ fn force_rows(derivation: &Derivation) -> Vec<GeneralizedForceRow> {
             continue;
         }
         rows.push(GeneralizedForceRow {
-            load: format!("loads on the coordinate {}", problem.coordinates[r].name).into(),
+            load: super::lagrange_loads::direct_load_label(model, r, q).into(),
             point_tex: Math::from("\\text{joint}".to_string()),
             partial_tex: Math::from(String::new()),
             q_tex: Math::from(format!("Q_{{{}}}\\colon\\; {}", r + 1, tex(q))),

@@ -57,6 +57,7 @@ mod kane_theory;
 mod kane_tilde;
 mod kinematics;
 mod lagrange;
+mod lagrange_loads;
 mod light_rods;
 mod linearization;
 mod long;
