@@ -55,11 +55,7 @@ pub fn simulation(
     }
     // One quantity per axis: angles and distances on plots of their own.
     // A coordinate that stays at its value is said, not drawn as a flat line.
-    let still = still_coordinates(problem, trajectory);
-    if let Some(sentence) = still_sentence(problem, &still) {
-        solution.simulation.settings.0.push(' ');
-        solution.simulation.settings.0.push_str(&sentence);
-    }
+    let still = say_still(solution, problem, trajectory);
     let series_of = |kind: CoordinateKind| -> Vec<Series> {
         problem
             .coordinates
@@ -359,6 +355,20 @@ fn by_range(series: Vec<Series>) -> Vec<Vec<Series>> {
 /// The title of a plot of angles of one range (see `plot_titles`).
 fn angles_title(problem: &Problem, series: &[Series], first: bool) -> String {
     super::plot_titles::angles_of_a_range(problem, series, first)
+}
+
+/// The coordinates that stay at their value, said after step 6's opening sentence.
+fn say_still(
+    solution: &mut Solution,
+    problem: &Problem,
+    trajectory: &Trajectory,
+) -> Vec<(usize, f64)> {
+    let still = still_coordinates(problem, trajectory);
+    if let Some(sentence) = still_sentence(problem, &still) {
+        solution.simulation.settings.0.push(' ');
+        solution.simulation.settings.0.push_str(&sentence);
+    }
+    still
 }
 
 /// The coordinates that stay at their value along the whole motion (a collar's angle on a
