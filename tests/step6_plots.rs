@@ -6,9 +6,11 @@
 use crate::support::all_problems;
 use crate::support::handouts::{bundled, handout_of, two_at_a_time};
 
-/// The plots of a LaTeX handout: each axis's y label and its series, each a legend and its
-/// values.
-fn plots(tex: &str) -> Vec<(String, Vec<(String, Vec<f64>)>)> {
+/// A plot's y label and its series, each a legend and its values.
+type Axis = (String, Vec<(String, Vec<f64>)>);
+
+/// The plots of a LaTeX handout.
+fn plots(tex: &str) -> Vec<Axis> {
     let mut found = Vec::new();
     for axis in tex.split("\\begin{axis}[").skip(1) {
         let axis = axis.split("\\end{axis}").next().unwrap_or("");
