@@ -411,8 +411,8 @@ fn a_constant_energy_is_said_by_its_value_in_joules() {
 }
 
 /// Step 6's plots say what they hold: the top's small angle by its name in the problem
-/// (θ, "nutation angle"), the disc in the cylinder's kinetic energy, under a third of a
-/// hundredth of what the plot spans, by its largest value; and where T names the torque
+/// (θ, "nutation angle"), the disc in the cylinder's energies, small beside V's size, by
+/// their changes from the start; and where T names the torque
 /// (the gear pair), what K is.
 #[test]
 fn step_6s_plot_titles_say_what_is_plotted() {
@@ -427,15 +427,18 @@ fn step_6s_plot_titles_say_what_is_plotted() {
         "disc-in-cylinder",
         &["--method", "motion-law", "--format", "latex"],
     );
+    // Its energies move little beside V's size: their changes from the start are plotted.
     assert!(
-        disc.contains("Energy against time (T stays below "),
-        "no range of T"
+        disc.contains("Energy changes from the start"),
+        "the energies on an axis where T does not show"
     );
     let pendulum = explain(
         "double-pendulum-rods",
         &["--method", "motion-law", "--format", "latex"],
     );
-    assert!(pendulum.contains("Energy against time"));
+    // T and V each swing over a part of their sum's size: their changes are plotted.
+    assert!(pendulum.contains("Energy changes from the start"));
+    assert!(pendulum.contains("\\addlegendentry{$T - T_{0}$}"));
     let gear = explain(
         "gear-pair-torque",
         &["--method", "motion-law", "--format", "latex"],

@@ -78,6 +78,7 @@ mod speeds;
 mod statement_data;
 mod statics;
 mod statics_explain;
+mod step6_plots;
 mod support;
 mod svg_reader;
 mod validation;

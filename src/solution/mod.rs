@@ -34,6 +34,7 @@ mod drawn_on;
 mod eigen_plot;
 mod elimination;
 mod energy_datum;
+mod energy_plots;
 mod force_labels;
 mod force_moments;
 mod force_words;

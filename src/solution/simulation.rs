@@ -54,12 +54,15 @@ pub fn simulation(
         solution.simulation.checks.push(work);
     }
     // One quantity per axis: angles and distances on plots of their own.
+    // A coordinate that stays at its value is said, not drawn as a flat line.
+    let still = say_still(solution, problem, trajectory);
     let series_of = |kind: CoordinateKind| -> Vec<Series> {
         problem
             .coordinates
             .iter()
-            .filter(|c| c.kind == kind)
-            .filter_map(|c| {
+            .enumerate()
+            .filter(|(i, c)| c.kind == kind && !still.iter().any(|s| s.0 == *i))
+            .filter_map(|(_, c)| {
                 trajectory.series(&c.name).map(|points| Series {
                     name: Label::math(&latex_name(&c.name), ""),
                     points,
@@ -104,11 +107,14 @@ pub fn simulation(
         let positions = plots.remove(1);
         plots[0] = ("coordinates".into(), positions.1, positions.2, positions.3);
     }
-    plots.push((
-        "energy".into(),
-        energy_title,
-        Label::words("energy (J)"),
+    let kinetic = match problem.constants.iter().any(|c| c.name == "T") {
+        true => "K",
+        false => "T",
+    };
+    plots.extend(super::energy_plots::energy_plots(
         energy_series,
+        kinetic,
+        energy_title,
     ));
     // The drift is the integrator's error only where no load or drive does work, and it
     // teaches only where it is not negligible: a constant energy shows on the energy's plot.
@@ -349,4 +355,67 @@ fn by_range(series: Vec<Series>) -> Vec<Vec<Series>> {
 /// The title of a plot of angles of one range (see `plot_titles`).
 fn angles_title(problem: &Problem, series: &[Series], first: bool) -> String {
     super::plot_titles::angles_of_a_range(problem, series, first)
+}
+
+/// The coordinates that stay at their value, said after step 6's opening sentence.
+fn say_still(
+    solution: &mut Solution,
+    problem: &Problem,
+    trajectory: &Trajectory,
+) -> Vec<(usize, f64)> {
+    let still = still_coordinates(problem, trajectory);
+    if let Some(sentence) = still_sentence(problem, &still) {
+        solution.simulation.settings.0.push(' ');
+        solution.simulation.settings.0.push_str(&sentence);
+    }
+    still
+}
+
+/// The coordinates that stay at their value along the whole motion (a collar's angle on a
+/// rod that does not turn), each with that value: their index and value.
+fn still_coordinates(problem: &Problem, trajectory: &Trajectory) -> Vec<(usize, f64)> {
+    (problem.coordinates.iter().enumerate())
+        .filter_map(|(i, c)| {
+            let points = trajectory.series(&c.name)?;
+            let first = points.first()?.1;
+            let moved = (points.iter()).fold(0.0f64, |m, p| m.max((p.1 - first).abs()));
+            let still = points.len() > 1 && moved <= 1e-9 * first.abs().max(1.0);
+            still.then_some((i, if first.abs() < 1e-9 { 0.0 } else { first }))
+        })
+        .collect()
+}
+
+/// `θ stays at 0 rad and y at 0 m throughout, so neither is plotted.`, in markup, for the
+/// coordinates that stay at their value.
+fn still_sentence(problem: &Problem, still: &[(usize, f64)]) -> Option<String> {
+    let said: Vec<String> = (still.iter())
+        .map(|&(i, value)| {
+            let c = &problem.coordinates[i];
+            let unit = match c.kind {
+                CoordinateKind::Angle => "rad",
+                _ => "m",
+            };
+            let value = literal_with_numbers(&fixed(value));
+            (
+                format!("${}$", latex_name(&c.name)),
+                format!("{value} {unit}"),
+            )
+        })
+        .enumerate()
+        .map(|(k, (name, value))| match k {
+            0 => format!("{name} stays at {value}"),
+            _ => format!("{name} at {value}"),
+        })
+        .collect();
+    let (last, rest) = said.split_last()?;
+    let list = match rest.is_empty() {
+        true => last.clone(),
+        false => format!("{} and {last}", rest.join(", ")),
+    };
+    let tail = match rest.is_empty() {
+        true => "so it is not plotted",
+        false if rest.len() == 1 => "so neither is plotted",
+        false => "so none of them is plotted",
+    };
+    Some(format!("{list} throughout, {tail}."))
 }
