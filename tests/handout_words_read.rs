@@ -286,3 +286,50 @@ fn the_four_bar_writes_its_mass_and_its_rates_once() {
     lacks(&text, "\\dot{q}_{3} &= \\frac{a}{\\Delta}", name);
     has(&text, "$\\dot{q}_{3}$ is written with $", name);
 }
+
+/// The text of `text` just before `number`, back to the start of its math.
+fn before(text: &str, number: &str) -> String {
+    let at = text
+        .find(number)
+        .unwrap_or_else(|| panic!("`{number}` not found"));
+    let start = text[..at].rfind('$').map_or(0, |s| s + 1);
+    text[start..at].to_string()
+}
+
+/// A reaction answered at the start gives its closed form beside its number where step 5
+/// solves it in symbols: the sliding ball's friction −μ m g and normal force m g, the gear
+/// pair's tooth force I_B r_A T/(I_A r_B² + I_B r_A²) (with I_A = 0.004, I_B = 0.0135,
+/// r_A = 0.04, r_B = 0.12, T = 1.2: 15 N).
+#[test]
+fn reactions_at_the_start_are_answered_in_closed_form() {
+    let ball = handout("bowling-ball", "motion-law", "markdown");
+    let friction = before(&ball, "= -13.734\\ \\mathrm{N}");
+    for symbol in ["\\mu", "m", "g"] {
+        assert!(friction.contains(symbol), "friction: {friction}");
+    }
+    let normal = before(&ball, "= 68.67\\ \\mathrm{N}");
+    assert!(
+        normal.contains("g m") || normal.contains("m g"),
+        "normal: {normal}"
+    );
+    let gears = handout("gear-pair-torque", "newton-euler", "markdown");
+    let tooth = before(&gears, "= 15\\ \\mathrm{N}");
+    for symbol in ["I_{A}", "I_{B}", "r_{A}", "r_{B}", "T"] {
+        assert!(tooth.contains(symbol), "tooth force: {tooth}");
+    }
+}
+
+/// Every coordinate's Motion cell says what that coordinate does: the ball's height is
+/// held by the contact, its angle turns; none reads "as for x".
+#[test]
+fn each_coordinate_says_its_own_motion() {
+    let name = "bowling-ball";
+    let text = handout(name, "motion-law", "markdown");
+    lacks(&text, "as for $x$", name);
+    has(
+        &text,
+        "| held by the contact of the ball with the lane |",
+        name,
+    );
+    has(&text, "| the ball turns |", name);
+}

@@ -33,7 +33,8 @@ pub fn handout(worked: &Worked, settings: &Handout) -> Solution {
     if let Some(answers) = &worked.answers {
         let mut views = super::answers::section(problem, answers);
         super::question_steps::attach(worked, answers, &mut views);
-        super::switch_steps::attach(problem, &worked.derivation, answers, &mut views);
+        let sliding = super::switch_steps::attach(problem, &worked.derivation, answers, &mut views);
+        super::reaction_forms::attach(problem, &worked.derivation, answers, &mut views, sliding);
         let (bodies, shown) = (&solution.free_bodies, &solution.shown_names);
         super::sense_words::say_third_law(problem, shown, &mut views);
         super::drawn_on::point_to_free_bodies(problem, bodies, shown, &mut views);

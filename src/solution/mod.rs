@@ -78,6 +78,7 @@ mod polar_units;
 mod potential_tex;
 mod question_answers;
 mod question_steps;
+mod reaction_forms;
 mod reaction_frames;
 mod reduced;
 mod rejected;

@@ -30,16 +30,19 @@ struct Closed {
     slip: (Expr, Expr),
     /// The instant the slip velocity vanishes.
     instant: Expr,
+    /// Every unknown of step 5 while the site slides, in the system's order.
+    solution: Vec<Expr>,
 }
 
 /// Adds the closed-form working to every question asked at the switch of a site that
-/// slides from the start with constant accelerations.
+/// slides from the start with constant accelerations; gives step 5's unknowns in symbols
+/// while it slides, where it does.
 pub fn attach(
     problem: &Problem,
     derivation: &Derivation,
     answers: &[Answer],
     views: &mut [AnswerView],
-) {
+) -> Option<Vec<Expr>> {
     let angles: Vec<&str> = (problem.coordinates.iter())
         .filter(|c| c.kind == crate::problem::CoordinateKind::Angle)
         .map(|c| c.name.as_str())
@@ -76,11 +79,12 @@ pub fn attach(
                 sliding.get_or_insert((name.to_string(), closed));
             }
         }
-        if let Some((site, closed)) = sliding {
-            constant_at_start(problem, answers, views, &site, &closed);
-            slips_at_start(problem, answers, views, &site, &closed);
-        }
-    });
+        let (site, closed) = sliding?;
+        constant_at_start(problem, answers, views, &site, &closed);
+        slips_at_start(problem, answers, views, &site, &closed);
+        Some(closed.solution)
+    })
+    .0
 }
 
 /// A `slips` asked of the site at the start: the quantity that decides it, the slip
@@ -198,7 +202,7 @@ pub(super) fn initial_values(problem: &Problem) -> Values {
 }
 
 /// Whether `e` holds a coordinate, a rate, a second rate or the time.
-fn moves(e: &Expr) -> bool {
+pub(super) fn moves(e: &Expr) -> bool {
     e.any_symbol(&|s| matches!(s, Symbol::Coord(..) | Symbol::Time))
 }
 
@@ -277,6 +281,7 @@ fn closed_form(
         start,
         slip: (simplify(&stick.velocity), slip_t),
         instant,
+        solution: x,
     })
 }
 
