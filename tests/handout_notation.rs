@@ -177,3 +177,26 @@ fn the_coin_marks_every_solved_rate_and_lists_frames_first() {
         );
     }
 }
+
+/// The pin force on rod B of the double pendulum says who exerts it and along whose unit
+/// vectors it is resolved; the weights' moments are written out as cross products beside
+/// the inertia forces', each worked to its value (−L1 m1 g s1/2 for rod A about O).
+#[test]
+fn the_pin_force_and_the_weights_moments_are_said_in_full() {
+    let name = "double-pendulum-rods";
+    let text = crate::support::handouts::bundled(name, "motion-law", "markdown");
+    assert!(
+        text.contains("| reaction force at $P$, of A on B, in A's unit vectors |"),
+        "the pin force on B"
+    );
+    assert!(
+        text.contains(
+            "(\\mathbf{r}^{O A^*} \\times (-m_{1} g \\hat{\\mathbf{n}}_{y})) \\cdot \\hat{\\mathbf{n}}_{z} &= -\\frac{L_{1} m_{1} g}{2} s_{1}"
+        ),
+        "rod A's weight about O"
+    );
+    assert!(
+        text.contains("(\\mathbf{r}^{P B^*} \\times (-m_{2} g \\hat{\\mathbf{n}}_{y}))"),
+        "rod B's weight about P"
+    );
+}

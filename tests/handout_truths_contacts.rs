@@ -324,9 +324,13 @@ fn a_collar_on_a_rod_is_guided_and_closes_no_loop() {
 fn every_coordinate_of_a_joint_has_its_motion_and_the_rolling_rate_is_derived_first() {
     let text = handout("bowling-ball", "motion-law");
     let step1 = between(&text, "## Step 1", "## Step 2");
-    for q in ["y", "\\theta"] {
+    // Each its own: the height held by the contact, the angle turning with the ball.
+    for (q, motion) in [
+        ("y", "held by the contact of the ball with the lane"),
+        ("\\theta", "the ball turns"),
+    ] {
         let row = between(step1, &format!("| ${q}$ |"), "\n");
-        assert!(row.contains("as for $x$"), "{row}");
+        assert!(row.contains(motion), "{row}");
     }
     // ẋ at the switch: v₀ − μ g t at t = 2v₀/(7μg) is 5v₀/7, derived, then the simulation.
     let answers = between(&text, "## Answers", "\u{0}");

@@ -366,3 +366,18 @@ fn the_four_bars_auxiliary_partial_velocities_and_parts_are_derived() {
         "{name}: {line}"
     );
 }
+
+/// Every coordinate's Motion cell says what that coordinate does: the ball's height is
+/// held by the contact, its angle turns; none reads "as for x".
+#[test]
+fn each_coordinate_says_its_own_motion() {
+    let name = "bowling-ball";
+    let text = handout(name, "motion-law", "markdown");
+    lacks(&text, "as for $x$", name);
+    has(
+        &text,
+        "| held by the contact of the ball with the lane |",
+        name,
+    );
+    has(&text, "| the ball turns |", name);
+}

@@ -181,3 +181,18 @@ fn a_row_that_holds_one_unknown_gives_it_in_closed_form() {
     let system = in_numbers(&text);
     close(value(&system, "\\ddot{\\theta}"), by_hand, "the solution");
 }
+
+/// The solution is announced once: where the double pendulum's matrix is too wide to have
+/// its solution beside it, the lead names the system only and "Its solution:" follows it.
+#[test]
+fn the_solution_in_numbers_is_announced_once() {
+    for method in ["motion-law", "kane", "newton-euler", "lagrange"] {
+        let text = markdown_handout("double-pendulum-rods", method);
+        let block = between(&text, "in SI units,", "## Step 6");
+        let said = block.to_lowercase().matches("solution").count();
+        assert!(
+            said <= 1,
+            "{method}: the solution said {said} times: {block}"
+        );
+    }
+}

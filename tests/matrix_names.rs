@@ -64,3 +64,19 @@ fn no_matrix_takes_the_name_of_a_body() {
     );
     assert!(pendulum.contains("$\\mathbf{A}\\,\\mathbf{x} = \\mathbf{b}$"));
 }
+
+/// A matrix's name clashes with nothing the handout names: the rack and pinion prints the
+/// energy E and has a body S and a constant b, so its system is A z = f, not E z = h; the
+/// bowling ball's body B keeps the matrix A with the right-hand side f.
+#[test]
+fn no_matrix_takes_a_name_the_handout_gives_a_meaning() {
+    for name in ["rack-and-pinion", "bowling-ball"] {
+        let text = explain(name, &["--method", "motion-law", "--format", "markdown"]);
+        assert!(
+            text.contains("$\\mathbf{A}\\,\\mathbf{z} = \\mathbf{f}$"),
+            "{name}"
+        );
+        assert!(!text.contains("\\mathbf{E}\\,"), "{name}");
+        assert!(!text.contains("\\mathbf{S}\\,"), "{name}");
+    }
+}

@@ -6,11 +6,13 @@
 use super::Problem;
 use serde::Serialize;
 
-/// The system matrix's names in order of preference: the first free one is taken.
-const SYSTEM: [&str; 6] = ["A", "S", "E", "H", "U", "Z"];
+/// The system matrix's names in order of preference: the first free one is taken. None is
+/// a letter the handout itself gives a meaning: the energy E, the angular momentum H, the
+/// kinetic and potential energies T and V, the work W, the frame N, a contact point U.
+const SYSTEM: [&str; 5] = ["A", "S", "D", "G", "Z"];
 
-/// The right-hand side's names in order of preference.
-const RIGHT_SIDE: [&str; 5] = ["b", "f", "h", "w", "z"];
+/// The right-hand side's names in order of preference (none the handout's own, as above).
+const RIGHT_SIDE: [&str; 4] = ["b", "f", "d", "z"];
 
 /// The names of the column of unknowns (`A x = b`) and of the state of the small motions
 /// (`ż = A z`), in order of preference: a letter no coordinate or name of the problem uses
@@ -18,7 +20,7 @@ const RIGHT_SIDE: [&str; 5] = ["b", "f", "h", "w", "z"];
 const UNKNOWNS: [&str; 6] = ["x", "z", "w", "y", "s", "p"];
 
 /// The dependent rates' matrix's names in order of preference.
-const DEPENDENT: [&str; 5] = ["C", "D", "G", "W", "Y"];
+const DEPENDENT: [&str; 5] = ["C", "D", "G", "Y", "Z"];
 
 /// The names of the three matrices, as LaTeX letters.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -53,16 +55,9 @@ impl MatrixNames {
     /// are taken.
     pub fn of(problem: &Problem) -> MatrixNames {
         let used = used_letters(problem);
-        let is_free = |name: &str| {
-            let letter = name.chars().next().unwrap_or(' ').to_ascii_lowercase();
-            !used.contains(&letter)
-        };
-        // The system and its right-hand side as a pair (A x = b, S x = f) where one is free.
-        let pair = (SYSTEM.iter().zip(RIGHT_SIDE)).find(|(a, b)| is_free(a) && is_free(b));
-        let (a, b) = match pair {
-            Some((a, b)) => (a.to_string(), b.to_string()),
-            None => (first_free(&used, &SYSTEM), first_free(&used, &RIGHT_SIDE)),
-        };
+        // Each the first free name of its list: A x = b, or A z = f beside a body B, as a
+        // course keeps A for the matrix wherever it can.
+        let (a, b) = (first_free(&used, &SYSTEM), first_free(&used, &RIGHT_SIDE));
         // The column of unknowns also differs from the coordinates, the matrices and the
         // right-hand side; the state of the small motions from all of those too.
         let mut vectors = used.clone();

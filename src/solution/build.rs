@@ -133,10 +133,12 @@ fn coordinates(problem: &Problem, shown: &[(String, String)]) -> Vec<Coordinate>
                 // One line per joint, said at its first coordinate; the joint's other
                 // coordinates point back to it.
                 joint: match (problem.coordinates[..i].iter()).position(|b| b.joint == c.joint) {
-                    Some(first) => MarkupLine::from(format!(
-                        "as for ${}$",
-                        latex(&problem.coordinate_expr(first, 0))
-                    )),
+                    Some(first) => MarkupLine::from(
+                        super::joint_words::later_coordinate_words(problem, i, first)
+                            .unwrap_or_else(|| {
+                                format!("as for ${}$", latex(&problem.coordinate_expr(first, 0)))
+                            }),
+                    ),
                     None => {
                         MarkupLine::from(super::joint_words::joint_words(problem, c.joint, shown))
                     }

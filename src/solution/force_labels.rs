@@ -31,6 +31,38 @@ pub(super) fn table_label(model: &Model, action: &Action, shown: &[(String, Stri
     }
 }
 
+/// Who exerts a joint's reaction on a body other than the ground, said after its label
+/// (", of A on B"), and, where it is resolved along the exerting body's unit vectors, so
+/// (", in A's unit vectors"): the pin force on rod B of a double pendulum. Empty for the
+/// ground's reactions, a couple, a contact or the partner printed opposite.
+pub(super) fn exerted_by(
+    model: &Model,
+    action: &Action,
+    shown: &[(String, String)],
+    vector_tex: &str,
+) -> String {
+    let Source::Reaction(site) = action.source else {
+        return String::new();
+    };
+    let site = &model.sites[site];
+    let plain = !matches!(action.kind, ActionKind::Couple { .. })
+        && !matches!(site.kind, SiteKind::Contact(_))
+        && site.parent != crate::problem::BodyId::GROUND
+        && action.body == site.child
+        && !vector_tex.starts_with('-');
+    if !plain {
+        return String::new();
+    }
+    let name = |b| shown_name(model.problem.body_name(b), shown);
+    let (by, on) = (name(site.parent), name(site.child));
+    let hat = format!("\\hat{{\\mathbf{{{}}}}}", by.to_lowercase());
+    let along = match by.chars().count() == 1 && vector_tex.contains(&hat) {
+        true => format!(", in {by}'s unit vectors"),
+        false => String::new(),
+    };
+    format!(", of {by} on {on}{along}")
+}
+
 /// A body's name as the handout prints it: its letter when it is named by a word.
 pub(super) fn shown_name(name: &str, shown: &[(String, String)]) -> String {
     let tex = crate::symbolic::latex_name(name);

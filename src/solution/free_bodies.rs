@@ -71,6 +71,12 @@ pub(super) fn free_bodies(derivation: &Derivation) -> Vec<FreeBody> {
                 if matches!(action.kind, ActionKind::Couple { .. }) && !label.contains("couple") {
                     label.push_str(" (couple)");
                 }
+                label.push_str(&super::force_labels::exerted_by(
+                    model,
+                    action,
+                    &shown,
+                    &vector_tex,
+                ));
                 if let Some(other) = opposite_of(derivation, action, &vector_tex) {
                     let other = super::force_labels::shown_name(problem.body_name(other), &shown);
                     label = format!("{label}, opposite to that on {other} (Newton's third law)");

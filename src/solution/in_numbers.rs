@@ -169,6 +169,8 @@ pub fn in_numbers(
             "{system_tex} \\quad \\Rightarrow \\quad {solution_tex}"
         )],
         (true, false, true) => {
+            // The solution follows the matrix: the lead announces the system only.
+            lead_text = lead_text.replace("the system and its solution:", "the system:");
             closed.push(format!("Its solution: {}.", math_list(&pairs)));
             vec![system_tex]
         }

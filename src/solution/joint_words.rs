@@ -2,7 +2,7 @@
 //! plane", "rod A turns on the ground at pin O", "the disc rolls on the ground", never a bare joint
 //! letter with the kind of joint in brackets.
 
-use crate::problem::{BodyId, JointKind, Problem};
+use crate::problem::{BodyId, CoordinateKind, JointKind, Problem};
 
 /// The longest description taken as a body's name in words.
 const LONGEST_NAME: usize = 36;
@@ -78,12 +78,7 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
     if let Some((on, rough, surface)) = rolling {
         // A rough contact may slide as well as roll (the skidding ball).
         let how = if rough { "rolls or slides" } else { "rolls" };
-        // The ground by the surface's own name where the contact has one (the lane).
-        let on = match on == BodyId::GROUND && !is_point_name(surface) && surface != "contact" {
-            true => super::force_labels::place(surface),
-            false => body_words(problem, on),
-        };
-        return format!("{child} {how} on {on}");
+        return format!("{child} {how} on {}", surface_words(problem, on, surface));
     }
     match joint.kind {
         JointKind::Revolute => format!("{child} turns on {parent}{}", at("pin")),
@@ -101,6 +96,37 @@ pub fn joint_words(problem: &Problem, j: usize, shown: &[(String, String)]) -> S
         JointKind::Free => format!("{child} is free"),
         JointKind::Weld => format!("{child} is fixed to {parent}"),
     }
+}
+
+/// What a body rolls on in words: the ground by the surface's own name where the contact
+/// has one (the lane).
+fn surface_words(problem: &Problem, on: BodyId, surface: &str) -> String {
+    match on == BodyId::GROUND && !is_point_name(surface) && surface != "contact" {
+        true => super::force_labels::place(surface),
+        false => body_words(problem, on),
+    }
+}
+
+/// Coordinate `i`, after the first (`first`) of its joint, in words where the joint's
+/// words do not say what it does: set by the constraints (a rolling ball's height, held
+/// by the contact), or an angle beside distances (the ball turns). `None` where it moves
+/// as the first does, which "as for" the first then says.
+pub fn later_coordinate_words(problem: &Problem, i: usize, first: usize) -> Option<String> {
+    let c = &problem.coordinates[i];
+    let child = problem.joints[c.joint].child;
+    if c.dependent {
+        return Some(match rolls_on(problem, child) {
+            Some((on, _, surface)) => format!(
+                "held by the contact of {} with {}",
+                body_words(problem, child),
+                surface_words(problem, on, surface)
+            ),
+            None => "set by the constraints".into(),
+        });
+    }
+    let turns = c.kind == CoordinateKind::Angle;
+    (turns && problem.coordinates[first].kind != CoordinateKind::Angle)
+        .then(|| format!("{} turns", body_words(problem, child)))
 }
 
 /// The body `body` rolls on where a rolling constraint holds it, whether that contact is

@@ -72,6 +72,9 @@ pub fn to_mathml(latex: &str, display: Display) -> Result<String, MathError> {
     // Our `mover`s are accents (`\hat`, `\dot`, `\ddot`): marked so, they sit close to the letter.
     let out = out.replace("<mover>", "<mover accent=\"true\">");
     let out = accents_as_operators(&out);
+    // A solidus is an ordinary symbol in TeX, set close (`m/s²`, `a/2`); MathML Core's
+    // dictionary spaces it as an operator (`m / s²`), so its spaces are set to none.
+    let out = out.replace("<mo>/</mo>", "<mo lspace=\"0\" rspace=\"0\">/</mo>");
     // `pulldown-latex` writes the space of `\ ` as an escaped entity, which a browser would
     // print as the six characters `&nbsp;`.
     let out = out.replace("&amp;nbsp;", "&#160;");
@@ -349,6 +352,16 @@ mod tests {
     #[test]
     fn bad_latex_is_an_error() {
         assert!(to_mathml("\\frac{a}{", Display::Inline).is_err());
+    }
+
+    #[test]
+    fn a_solidus_is_set_close_as_in_latex() {
+        let unit = to_mathml("9.81\\ \\mathrm{m/s^{2}}", Display::Inline).unwrap();
+        assert!(
+            unit.contains("<mo lspace=\"0\" rspace=\"0\">/</mo>"),
+            "{unit}"
+        );
+        assert!(!unit.contains("<mo>/</mo>"), "{unit}");
     }
 
     #[test]
