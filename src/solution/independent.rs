@@ -277,7 +277,12 @@ fn after_rows(
     }
     out.extend(super::light_rods::notes(derivation));
     if asked || !friction.is_empty() {
-        let mut text = "An auxiliary speed $u$ lets only the constraint of its reaction give way (Kane and Levinson, ch. 4): that reaction does work with the partial velocities of $u$, the other constraint forces do not, and the accelerations are taken at $u = 0$.".to_string();
+        let which = match (asked, friction.is_empty()) {
+            (true, true) => "A reaction asked for",
+            (true, false) => "A reaction asked for, or a normal force the sliding law needs,",
+            _ => "A normal force the sliding law needs",
+        };
+        let mut text = format!("{which} is brought in by an auxiliary speed $u$ (Kane and Levinson, ch. 4): $u$ lets only the constraint of that reaction give way, so the reaction does work with the partial velocities of $u$ while the other constraint forces do not; the accelerations are taken at $u = 0$.");
         if !speeds.prescribed.is_empty() {
             text.push_str(" A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.");
         }
