@@ -380,7 +380,13 @@ pub fn plan(derivation: &Derivation) -> Plan {
                     None => bodies,
                 })
             },
-            equation_tex: Math::from(super::row_names::sum_tex(derivation, &row.sum)),
+            equation_tex: Math::from(match row.sum {
+                // Kane's row is an equation: F_r + F*_r = 0.
+                Sum::Generalized { .. } if derivation.method == Method::Kane => {
+                    format!("{} = 0", super::row_names::sum_tex(derivation, &row.sum))
+                }
+                _ => super::row_names::sum_tex(derivation, &row.sum),
+            }),
             direction_tex: match (&row.direction, &row.sum) {
                 (Some(d), _) => Math::from(d.latex.clone()),
                 // A contact's or a closure's row: along its reaction component; any other
@@ -392,7 +398,10 @@ pub fn plan(derivation: &Derivation) -> Plan {
                 (None, _) if derivation.method == Method::Lagrange => {
                     Math::from(super::lagrange::direction_tex(derivation, row))
                 }
-                // Kane's row dots with every partial velocity: no one direction to name.
+                // Kane's row dots the forces with the partial velocities of its speed.
+                (None, Sum::Generalized { .. }) if derivation.method == Method::Kane => {
+                    Math::from(super::row_names::kane_direction_tex(derivation, row))
+                }
                 (None, _) => Math::from(String::new()),
             },
             unknowns_tex: Math::from(unknowns_tex(&row.unknowns)),
@@ -439,7 +448,11 @@ pub fn plan(derivation: &Derivation) -> Plan {
             let mut note = if derivation.model.constraints.friction.is_empty() {
                 kane_rows_note(derivation, speeds)
             } else {
-                format!("One row per {speeds}; one per auxiliary speed (each normal force at a rough contact, and each other reaction component asked for); the constraints, differentiated; and one per rough contact for its friction force: its no-slip condition while it sticks, the sliding law while it slips.")
+                let asked = match problem.find_reactions.is_empty() {
+                    true => "",
+                    false => ", and each other reaction component asked for",
+                };
+                format!("One row per {speeds}; one per auxiliary speed (each normal force the sliding law needs{asked}); the constraints, differentiated; and one per rough contact for its friction force: its no-slip condition while it sticks, the sliding law while it slips.")
             };
             if let Some(order) = super::kane::solve_order_note(derivation) {
                 note = format!("{note} {order}");

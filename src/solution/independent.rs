@@ -289,11 +289,11 @@ fn after_rows(
     out.extend(super::light_rods::notes(derivation));
     if asked || !friction.is_empty() {
         let which = match (asked, friction.is_empty()) {
-            (true, true) => "A force asked for",
-            (true, false) => "A force asked for, or a normal force the sliding law needs,",
+            (true, true) => "A reaction asked for",
+            (true, false) => "A reaction asked for, or a normal force the sliding law needs,",
             _ => "A normal force the sliding law needs",
         };
-        let mut text = format!("{which} is brought in by an auxiliary speed $u$ along it (Kane and Levinson, ch. 4): the constraint it enforces is relaxed, and of the constraint forces only that one{} does work with the partial velocities of $u$, and the accelerations are taken at $u = 0$.", if friction.is_empty() { "" } else { " and the friction of that sliding" });
+        let mut text = format!("{which} is brought in by an auxiliary speed $u$ (Kane and Levinson, ch. 4): $u$ lets only the constraint of that reaction give way, so the reaction does work with the partial velocities of $u$ while the other constraint forces do not; the accelerations are taken at $u = 0$.");
         if !speeds.prescribed.is_empty() {
             text.push_str(" A prescribed coordinate's drive comes likewise from its own rate as an auxiliary speed.");
         }
@@ -304,21 +304,10 @@ fn after_rows(
         format!(", that is where ${} = 0$,", l.zero_tex)
     });
     let singular = format!("The dependent rates have $\\Delta$ in every denominator: at $\\Delta = 0${zero} the velocity constraints do not fix them, a singular configuration of the mechanism where these equations fail.");
-    if friction.is_empty() {
-        // The order of the solve is said after the matrix form; only the singular
-        // configuration of the dependent rates is said here.
-        if delta {
-            out.push(singular);
-        }
-    } else {
-        // The friction forces are in the rows of the speeds: nothing is solved first.
-        let forces = |k: usize, one: &str, many: &str| if k == 1 { one } else { many }.to_string();
-        let normals = crate::equations::normal_forces(model).len();
-        out.push(format!(
-            "Solving: the rows of the speeds and the auxiliary speeds and the differentiated constraints, with each rough contact's no-slip condition while it sticks or the sliding law in its place while it slips (said after the equations), are solved as one system for the $\\ddot{{q}}$, the {} and the {}.",
-            forces(friction.len(), "friction force", "friction forces"),
-            forces(normals, "normal force", "normal forces"),
-        ));
+    // The order of the solve is said after the matrix form (with friction, in step 3);
+    // only the singular configuration of the dependent rates is said here.
+    if friction.is_empty() && delta {
+        out.push(singular);
     }
     out
 }
@@ -363,18 +352,23 @@ fn friction_note(derivation: &Derivation) -> String {
         .map(|f| format!("${}$", latex_name(&f.name)))
         .collect();
     let one = friction.len() == 1;
-    let (force, is, does) = if one {
-        ("force", "is", "does")
+    let (force, does, it, given) = if one {
+        ("force", "does", "it is", "it is given")
     } else {
-        ("forces", "are", "do")
+        ("forces", "do", "they are", "each is given")
     };
-    let (normal, does_no, not_in, each) = if normals.len() == 1 {
-        ("force", "does", "it is", "it is")
+    let (normal, does_no, is_brought) = if normals.len() == 1 {
+        ("force", "does", "is")
     } else {
-        ("forces", "do", "they are", "each is")
+        ("forces", "do", "are each")
+    };
+    let asked = if derivation.model.problem.find_reactions.is_empty() {
+        String::new()
+    } else {
+        " (as is each reaction asked for)".to_string()
     };
     format!(
-        "Friction is the exception: a rough contact may slip, so the friction {force} {} at {} {does} work with the independent speeds and {is} in $\\tilde{{F}}_r$. While a contact sticks, its no-slip condition gives its friction force; while it slips, the sliding law (friction $\\mu$ times the normal force, against the slip) replaces that row (said after the equations). The normal {normal} {} {does_no} no work, so {not_in} not in $\\tilde{{F}}_r$; {each} brought in by an auxiliary speed along it.",
+        "The friction {force} {} at {} {does} work when the contact slips, so {it} in $\\tilde{{F}}_r$: {given} by the no-slip condition while the contact sticks and by the sliding law while it slips. The normal {normal} {}, which the sliding law needs, {does_no} no work and {is_brought} brought in by an auxiliary speed{asked}.",
         tex(&friction),
         words(&sites),
         tex(&normals),

@@ -30,6 +30,37 @@ pub fn row_heading_tex(derivation: &Derivation, i: usize) -> String {
     }
 }
 
+/// The number `r` of Kane's row among the rows of the speeds and auxiliary speeds (1-based).
+fn kane_index(derivation: &Derivation, sum: &Sum) -> String {
+    derivation
+        .rows
+        .iter()
+        .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
+        .position(|x| x.sum == *sum)
+        .map_or("r".to_string(), |i| (i + 1).to_string())
+}
+
+/// What Kane's row `r` dots the forces with, as the plan's Direction column names it: the
+/// partial velocities of its speed, `\mathbf{v}_{r}, \boldsymbol{\omega}_{r}` (with a
+/// tilde where formed with the constrained partial velocities; no `ω` for particles alone).
+pub fn kane_direction_tex(derivation: &Derivation, row: &crate::plan::Equation) -> String {
+    let r = kane_index(derivation, &row.sum);
+    let tilde = |t: &str| match derivation.dependent_speeds {
+        Some(_) => format!("\\tilde{{{t}}}_{{{r}}}"),
+        None => format!("{t}_{{{r}}}"),
+    };
+    let model = &derivation.model;
+    let rigid = (row.free_body.iter()).any(|&b| !crate::mechanics::is_particle(model, b));
+    match rigid {
+        true => format!(
+            "{},\\ {}",
+            tilde("\\mathbf{v}"),
+            tilde("\\boldsymbol{\\omega}")
+        ),
+        false => tilde("\\mathbf{v}"),
+    }
+}
+
 /// A sum as an equation's column names it: `\sum \mathbf{F}`, `\sum \mathbf{M}_{O}`,
 /// `F_{r} + F^{*}_{r}` (r among Kane's rows), or what a constraint constrains.
 pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
@@ -47,12 +78,7 @@ pub fn sum_tex(derivation: &Derivation, sum: &Sum) -> String {
             super::lagrange::equation_tex(derivation, sum).unwrap_or_default()
         }
         Sum::Generalized { .. } => {
-            let r = derivation
-                .rows
-                .iter()
-                .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
-                .position(|x| x.sum == *sum)
-                .map_or("r".to_string(), |i| (i + 1).to_string());
+            let r = kane_index(derivation, sum);
             if derivation.dependent_speeds.is_some() {
                 format!("\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}")
             } else {

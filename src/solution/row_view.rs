@@ -95,6 +95,24 @@ fn kane_forces(
     (active_tex, inertia_tex)
 }
 
+/// The forces an auxiliary speed's row is for (not the friction, which works with the slip
+/// rates and may be in it too), and why it is brought in: a normal force the sliding law
+/// needs, or a reaction asked for.
+fn auxiliary_forces(derivation: &Derivation, row: &Equation) -> (Vec<Symbol>, &'static str) {
+    let friction = crate::equations::friction_forces(&derivation.model);
+    let forces: Vec<Symbol> = (row.unknowns.iter())
+        .filter(|u| matches!(u, Symbol::Unknown(_)) && !friction.contains(u))
+        .cloned()
+        .collect();
+    let normals = crate::equations::normal_forces(&derivation.model);
+    let along = if forces.iter().all(|f| normals.contains(f)) {
+        "the normal force, which the sliding law needs"
+    } else {
+        "the reaction asked for"
+    };
+    (forces, along)
+}
+
 /// Kane's row `r`: its heading and the words beside it (which speed it is for), the row
 /// solved for its one force where an auxiliary speed brings that force in (`simplified`,
 /// not where the row is written `by_name`), and the note on an augmented row.
@@ -118,39 +136,29 @@ fn kane_heading(
             "(an independent speed)".to_string(),
         )
     } else if independent.is_some() {
-        // The force the row is for: a friction force, which works with the slip rates,
-        // may be in it too.
-        let friction = crate::equations::friction_forces(&derivation.model);
-        let forces: Vec<Symbol> = row
-            .unknowns
-            .iter()
-            .filter(|u| matches!(u, Symbol::Unknown(_)) && !friction.contains(u))
-            .cloned()
-            .collect();
-        let normals = crate::equations::normal_forces(&derivation.model);
-        let along = if forces.iter().all(|f| normals.contains(f)) {
-            "the normal force, which the sliding law needs"
-        } else {
-            "the force asked for"
-        };
+        let (forces, along) = auxiliary_forces(derivation, row);
         if !by_name {
             // One force in the row: solved for it, as a textbook ends an auxiliary row.
             solved_tex = solved_for_reaction(simplified, &forces);
         }
+        let friction = crate::equations::friction_forces(&derivation.model);
         let slides = row.unknowns.iter().any(|u| friction.contains(u));
         let brings = if slides {
             "; friction works with it too"
         } else {
             ""
         };
-        // Said in full at the first auxiliary speed; the later ones refer to it.
-        let first = speeds_of(derivation) + 1;
+        // Said in full at the first auxiliary speed for a reason; later ones refer to it.
+        let first = (derivation.rows.iter())
+            .filter(|x| matches!(x.sum, Sum::Generalized { .. }))
+            .enumerate()
+            .skip(speeds_of(derivation))
+            .find(|(_, x)| auxiliary_forces(derivation, x).1 == along)
+            .map_or(r, |(i, _)| i + 1);
         let why = if r == first {
             format!("(an auxiliary speed along {along}{brings})")
-        } else if slides {
-            format!("(an auxiliary speed, as in row {first}; friction works with it too)")
         } else {
-            format!("(an auxiliary speed, as in row {first})")
+            format!("(an auxiliary speed, as in row {first}{brings})")
         };
         augmented_note = super::auxiliary::moved_note(derivation, row, r).unwrap_or_default();
         (
