@@ -164,70 +164,6 @@ fn pythagorean_pair(line: &str) -> Option<String> {
     None
 }
 
-/// A pair of terms of one sign, `a s²_θ M + b c²_θ M` with numbers `a ≠ b`, in `line` or in
-/// any bracket of it: a course writes it `b + (a − b) s²_θ` (`2 s² + c²` is `1 + s²`).
-fn one_plus_pair(line: &str) -> Option<String> {
-    let numeric = |f: &Factors| -> (f64, Factors) {
-        let mut k = 1.0;
-        let mut rest = Factors::new();
-        for (key, power) in f {
-            match key.parse::<f64>() {
-                Ok(n) => k *= n.powi(*power),
-                Err(_) => rest.push((key.clone(), *power)),
-            }
-        }
-        (k, rest)
-    };
-    for group in bracket_contents(line) {
-        let found: Vec<(char, String, f64, Factors)> = terms(&group)
-            .into_iter()
-            .map(|(sign, term)| {
-                let (k, rest) = numeric(&factors(&term));
-                (sign, term, k, rest)
-            })
-            .collect();
-        for (sign, term, k, rest) in &found {
-            for (key, power) in rest {
-                let Some(angle) = key.strip_prefix("s_") else {
-                    continue;
-                };
-                if *power < 2 {
-                    continue;
-                }
-                let mut other = rest.clone();
-                adjust(&mut other, key, -2);
-                adjust(&mut other, &format!("c_{angle}"), 2);
-                let partner = (found.iter())
-                    .find(|(s, t, j, f)| s == sign && t != term && *f == other && j != k);
-                if let Some((_, partner, _, _)) = partner {
-                    return Some(format!("{term} + {partner}"));
-                }
-            }
-        }
-    }
-    None
-}
-
-/// `line` and the contents of each of its brackets, `\left(`…`\right)` taken off.
-fn bracket_contents(line: &str) -> Vec<String> {
-    let chars: Vec<char> = line.chars().collect();
-    let mut out = vec![line.to_string()];
-    let mut open = Vec::new();
-    for (i, c) in chars.iter().enumerate() {
-        match c {
-            '(' | '[' => open.push(i),
-            ')' | ']' => {
-                if let Some(start) = open.pop() {
-                    let inner: String = chars[start + 1..i].iter().collect();
-                    out.push(inner.trim().trim_end_matches("\\right").trim().to_string());
-                }
-            }
-            _ => {}
-        }
-    }
-    out
-}
-
 /// A term's factors, each with its power.
 type Factors = Vec<(String, i32)>;
 
@@ -292,26 +228,6 @@ fn the_pythagorean_pair_is_found_and_only_it() {
     }
 }
 
-#[test]
-fn a_sum_of_two_squares_of_unlike_numbers_is_found_and_only_it() {
-    for line in [
-        "\\frac{R^{2} m}{4} \\left(2 s_{\\theta}^{2} + c_{\\theta}^{2}\\right) \\ddot{\\psi} = 0",
-        "m \\left(6 s_{\\theta}^{2} + c_{\\theta}^{2}\\right) = 0",
-        "3 m s_{\\theta}^{2} + m c_{\\theta}^{2} = 0",
-    ] {
-        assert!(one_plus_pair(line).is_some(), "{line}");
-    }
-    for fine in [
-        "\\frac{R^{2} m}{4} \\left(1 + s_{\\theta}^{2}\\right) \\ddot{\\psi} = 0",
-        "m \\left(1 + 5 s_{\\theta}^{2}\\right) = 0",
-        "c_{\\theta}^{2} - 2 s_{\\theta}^{2} = 0",
-        "2 m s_{\\theta}^{2} + m c_{\\phi}^{2} = 0",
-        "R m s_{\\theta}^{2} + m c_{\\theta}^{2} = 0",
-    ] {
-        assert_eq!(one_plus_pair(fine), None, "{fine}");
-    }
-}
-
 /// Every handout in every format, two at a time.
 #[test]
 fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
@@ -342,11 +258,6 @@ fn every_bundled_handout_speaks_a_course_and_finishes_its_algebra() {
         for line in text.lines() {
             if let Some(pair) = pythagorean_pair(line) {
                 wrong.push(format!("{name} ({method}, {format}): s² + c² left: {pair}"));
-            }
-            if let Some(pair) = one_plus_pair(line) {
-                wrong.push(format!(
-                    "{name} ({method}, {format}): a s² + b c² left: {pair}"
-                ));
             }
         }
         wrong.extend(unitless_rows(&text).map(|row| format!("{name} ({method}): {row}")));

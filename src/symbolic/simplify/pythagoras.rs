@@ -5,11 +5,6 @@
 //! `1 − sin²x`, gives the two other ways to write the group; the one with fewer terms
 //! wins, if it has fewer terms than the group:
 //! `a·sin²x·M + a·cos²x·M → a·M` and `a·M − a·sin²x·M → a·cos²x·M`.
-//!
-//! Two terms of one sign and different coefficients, `a·sin²x·M + b·cos²x·M`, are written
-//! as a course writes them, the smaller coefficient alone and the difference on the square
-//! of the larger one: `2 sin²x + cos²x → 1 + sin²x`, `6 sin²x + cos²x → 1 + 5 sin²x`.
-//! Terms of opposite signs (`cos²x − sin²x`) are left as they are.
 
 use super::steps::PYTHAGORAS;
 use super::terms::{times_power, trig_factors, Gain, Rewrite, Terms};
@@ -80,30 +75,6 @@ pub(crate) fn rewrite(terms: &Terms, arg: &Expr, cofactor: &Expr) -> Option<Rewr
         }
     }
     best.map(|(_, r)| r)
-        .or_else(|| one_plus(terms, [sin2, cos2, one], s, c, p))
-}
-
-/// `a·sin²x·M + b·cos²x·M` (no `M` alone, `a` and `b` of one sign, `a ≠ b`) as
-/// `min·M + (max − min)·f²x·M`, `f` the function of the larger coefficient in size, when
-/// that has fewer operations: `2 sin²x + cos²x → 1 + sin²x`.
-fn one_plus(terms: &Terms, group: [Expr; 3], s: Number, c: Number, p: Number) -> Option<Rewrite> {
-    let [sin2, cos2, one] = group;
-    if !p.is_zero() || s.is_zero() || c.is_zero() || s.is_negative() != c.is_negative() || s == c {
-        return None;
-    }
-    let sin_larger = s.to_f64().abs() > c.to_f64().abs();
-    let insert = if sin_larger {
-        vec![(sin2.clone(), s.add(c.neg())), (one.clone(), c)]
-    } else {
-        vec![(cos2.clone(), c.add(s.neg())), (one.clone(), s)]
-    };
-    let rewrite = Rewrite {
-        rule: PYTHAGORAS,
-        remove: vec![(sin2.clone(), s), (cos2.clone(), c)],
-        insert,
-        read: vec![sin2, cos2, one],
-    };
-    terms.gain(&rewrite).fewer_operations().then_some(rewrite)
 }
 
 /// `sin⁴x + 2 sin²x cos²x + cos⁴x = 1` and the other identities of higher powers, which
