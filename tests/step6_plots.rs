@@ -50,8 +50,8 @@ fn wrong_plots(name: &str, tex: &str) -> Vec<String> {
             let moved = range(values);
             if label.contains("energy") {
                 // A constant energy is a flat line, as said of it; one that changes spans
-                // a fifth of its axis at least.
-                if moved > 1e-4 * size && moved < 0.2 * span {
+                // a twentieth of its axis at least.
+                if moved > 1e-4 * size && moved < 0.05 * span {
                     wrong.push(format!(
                         "{name}: {legend} spans {moved} of its axis's {span} ({label})"
                     ));

@@ -7,7 +7,7 @@
 use crate::render::{PlotLabel as Label, Series};
 
 /// The least share of its axis's range a curve that moves must span to be seen.
-pub const VISIBLE_SHARE: f64 = 0.2;
+pub const VISIBLE_SHARE: f64 = 0.05;
 
 /// A plot: its kind (the file's name), its title, its vertical axis's label and its curves.
 pub type EnergyPlot = (String, String, Label, Vec<Series>);
