@@ -114,9 +114,9 @@ fn the_system_matrix_is_named_by_a_letter_no_frame_uses() {
         assert!(!text.contains("\\mathbf{A}\\,\\mathbf{x}"), "{method}");
         assert!(!text.contains("(none)"), "{method}");
     }
-    // The Motion Law writes every row out and prints no matrix form; Lagrange's is S x = f.
+    // The Motion Law writes every row out and prints no matrix form; Lagrange's is S x = b.
     let lagrange = handout("heavy-symmetric-top", "lagrange");
-    assert!(lagrange.contains("\\mathbf{S}\\,\\mathbf{x} = \\mathbf{f}"));
+    assert!(lagrange.contains("\\mathbf{S}\\,\\mathbf{x} = \\mathbf{b}"));
     let text = handout("heavy-symmetric-top", "motion-law");
     let answers = between(&text, "## Answers", "\n3. ");
     // Derived, not evaluated: no right-hand side's number after the identity.

@@ -259,7 +259,7 @@ fn rows_are_finished_algebra_in_course_words() {
     );
     has(
         &text,
-        "(\\mathbf{r}^{B^{*} P} \\times \\mathbf{F}^{P}) \\cdot \\hat{\\mathbf{n}}_{z} &= -r_{B} F^{P}_{t}",
+        "(\\mathbf{r}^{B^{*} P} \\times (F^{P}_{t} \\hat{\\mathbf{n}}_{y})) \\cdot \\hat{\\mathbf{n}}_{z} &= -r_{B} F^{P}_{t}",
         name,
     );
     let name = "double-pendulum-rods";

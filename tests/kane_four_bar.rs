@@ -55,7 +55,7 @@ fn the_pin_force_at_r_is_found_on_the_free_body_that_draws_it() {
     let plan = section(&text, "## Step 3", "## Step 4");
     for r in [4, 5] {
         let row = format!(
-            "| $B + C\\text{{, cut at }}R$ | $\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}}$ |"
+            "| $B + C\\text{{, cut at }}R$ | $\\tilde{{F}}_{{{r}}} + \\tilde{{F}}^{{*}}_{{{r}}} = 0$ |"
         );
         assert!(plan.contains(&row), "{row}\n{plan}");
     }

@@ -161,15 +161,16 @@ fn the_rows_written_by_name_are_given_by_their_values_beside_the_pattern() {
     // hub, (r_R − r_F) θ̇, and rolls the front wheel on, r_F θ̇, so r_R = 0.3 in all; the
     // front wheel's spin, r_F = 0.35; yaw, lean and steer move it sideways or not at all.
     let expected = [
-        ("U_{28,1}", 1.0),
-        ("U_{28,4}", 0.0),
-        ("U_{28,5}", 0.0),
-        ("U_{28,6}", 0.3),
-        ("U_{28,8}", 0.0),
-        ("U_{28,9}", 0.35),
-        // The bicycle's one-letter names take b, f, h and w: the system and its
-        // right-hand side are the pair U, z.
-        ("z_{28}", 0.0),
+        ("S_{28,1}", 1.0),
+        ("S_{28,4}", 0.0),
+        ("S_{28,5}", 0.0),
+        ("S_{28,6}", 0.3),
+        ("S_{28,8}", 0.0),
+        ("S_{28,9}", 0.35),
+        // The bicycle's one-letter names take b, f, h and w, and E, H, U, W are kept for
+        // energy, momentum, a contact point and work: the system and its right-hand side
+        // are S and d.
+        ("d_{28}", 0.0),
     ];
     let got = row(28);
     assert_eq!(got.len(), expected.len(), "{got:?}");

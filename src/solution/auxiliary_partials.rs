@@ -353,8 +353,11 @@ pub fn rates_text(derivation: &Derivation, speeds: &DependentSpeeds) -> String {
                 }
             })
             .collect();
-        each.push(format!("${speed}$: ${}$", rates.join(",\\; ")));
+        if !rates.is_empty() {
+            each.push(format!("${speed}$: ${}$", rates.join(",\\; ")));
+        }
     }
+    // No dependent rates: nothing for the speeds to fix, and the table says the rest.
     if each.is_empty() {
         return String::new();
     }

@@ -33,19 +33,9 @@ pub fn integration(problem: &Problem, settings: &SimulateSettings) -> String {
     };
     format!(
         "The equations of motion of step 5, integrated numerically from {start} over {} \
-         s with an error tolerance of {}{drive}, give the plots below.",
+         s{drive}, give the plots below.",
         num(settings.duration),
-        power_of_ten(settings.tolerance),
     )
-}
-
-/// `$10^{-9}$` for a power of ten, else the number as printed.
-fn power_of_ten(x: f64) -> String {
-    let k = x.log10().round();
-    match x > 0.0 && (x / 10f64.powf(k) - 1.0).abs() < 1e-12 {
-        true => format!("$10^{{{}}}$", k as i32),
-        false => num(x),
-    }
 }
 
 /// One sentence of physics for `check`, as markup: what must hold and how the motion

@@ -55,12 +55,17 @@ pub(super) fn exerted_by(
     }
     let name = |b| shown_name(model.problem.body_name(b), shown);
     let (by, on) = (name(site.parent), name(site.child));
+    // A letter reads as the tables print it; a longer name as the headings set it.
+    let said = |n: &str| match n.chars().count() == 1 {
+        true => n.to_string(),
+        false => format!("${}$", crate::symbolic::latex_name(n)),
+    };
     let hat = format!("\\hat{{\\mathbf{{{}}}}}", by.to_lowercase());
     let along = match by.chars().count() == 1 && vector_tex.contains(&hat) {
         true => format!(", in {by}'s unit vectors"),
         false => String::new(),
     };
-    format!(", of {by} on {on}{along}")
+    format!(", of {} on {}{along}", said(&by), said(&on))
 }
 
 /// A body's name as the handout prints it: its letter when it is named by a word.

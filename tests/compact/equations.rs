@@ -315,7 +315,7 @@ fn a_reaction_acts_at_its_joint_by_name() {
     // The free body link2 + … + link5 is cut at P2: the reaction of link1 on link2 acts at
     // the pin P2, which is also link2's origin, where an offset would read as 0.
     assert!(markdown.contains(
-        "| reaction force at $P_{2}$ | $F^{P_{2}}_{x} \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}} + F^{P_{2}}_{y} \\hat{\\mathbf{y}}_{\\mathrm{link}_{1}}$ | $\\text{at } P_{2}$ |"
+        "| reaction force at $P_{2}$, of $\\mathrm{link}_{1}$ on $\\mathrm{link}_{2}$ | $F^{P_{2}}_{x} \\hat{\\mathbf{x}}_{\\mathrm{link}_{1}} + F^{P_{2}}_{y} \\hat{\\mathbf{y}}_{\\mathrm{link}_{1}}$ | $\\text{at } P_{2}$ |"
     ));
     assert!(!markdown.contains("$\\text{at } \\mathbf{0}$"));
     // Gravity acts at each link's mass centre, named as such (link5* alone on its own).
