@@ -21,6 +21,11 @@ const MOST_PAGES: usize = 4;
 /// on page 5; the unbalanced disk by Lagrange, eleven reactions in eleven rows, with its
 /// answers.
 const STILL_LONGER: &[(&str, usize)] = &[
+    // Their weights' moments now written out as cross products: the answers on page 5.
+    ("wheel-pendulum-motion-law", 5),
+    ("unbalanced-disk-shaft-motion-law", 5),
+    // Its auxiliary speeds' rates and plan column: answer 2's last lines on page 5.
+    ("rolling-coin-kane", 5),
     ("wheel-pendulum-kane", 5),
     ("wheel-pendulum-lagrange", 5),
     ("unbalanced-disk-shaft-lagrange", 5),
@@ -31,17 +36,12 @@ const STILL_LONGER: &[(&str, usize)] = &[
 /// line each in LaTeX) and by Kane (its four reactions through auxiliary speeds), the disc
 /// on the cart and the double pendulum by Kane, whose step 5 solves its system with
 /// numbers; the heavy top by Lagrange, whose first free body now fills page 1 and whose
-/// answers, long derivations, end page 4; the coin by Kane, its partial velocities kept on
-/// page 2 by their height. The Motion Law's handouts of the wheel pendulum, the unbalanced
-/// disk and the struck double pendulum, whose rows' products ("Written out:") a page may
+/// answers, long derivations, end page 4. The Motion Law's handout of the struck double pendulum, whose rows' products ("Written out:") a page may
 /// break between, set with no empty line above them, and whose two plots to a row are
 /// lower than wide.
-const LAST_BROUGHT_IN: [(&str, &str); 9] = [
-    ("wheel-pendulum", "motion-law"),
-    ("unbalanced-disk-shaft", "motion-law"),
+const LAST_BROUGHT_IN: [(&str, &str); 6] = [
     ("impact-double-pendulum", "motion-law"),
     ("gyroscope-gimbal", "motion-law"),
-    ("rolling-coin", "kane"),
     ("gyroscope-gimbal", "kane"),
     ("disc-on-cart", "kane"),
     ("double-pendulum-rods", "kane"),

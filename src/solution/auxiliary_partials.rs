@@ -347,17 +347,16 @@ pub fn rates_text(derivation: &Derivation, speeds: &DependentSpeeds) -> String {
             .map(|&d| {
                 let w = finished(&motion.weights[d]);
                 let rate = latex(&problem.coordinate_expr(d, 1));
-                match w.is_zero() {
-                    true => format!("{rate} = 0"),
-                    false => format!("{rate} = {}", super::tex::component_term(&w, &speed)),
-                }
+                (!w.is_zero())
+                    .then(|| format!("{rate} = {}", super::tex::component_term(&w, &speed)))
             })
+            .flatten()
             .collect();
         if !rates.is_empty() {
             each.push(format!("${speed}$: ${}$", rates.join(",\\; ")));
         }
     }
-    // No dependent rates: nothing for the speeds to fix, and the table says the rest.
+    // No dependent rate moves with any auxiliary speed: the table says the rest.
     if each.is_empty() {
         return String::new();
     }
@@ -370,7 +369,7 @@ pub fn rates_text(derivation: &Derivation, speeds: &DependentSpeeds) -> String {
         [rest @ .., last] => format!(" (at {} and {last}, joints of the chain, the bodies beyond each move with the speed as well)", rest.join(", ")),
     };
     format!(
-        "With the independent rates held, ${}$, each auxiliary speed's relaxed constraint gives way by that speed{slide} and the other constraints stay satisfied, which fixes the dependent rates: {}. Each velocity of step 4 written with these rates is the speed times the partial velocity, read off as its coefficient",
+        "With the independent rates held, ${}$, each auxiliary speed's relaxed constraint gives way by that speed{slide} and the other constraints stay satisfied, which fixes the dependent rates (those not listed stay zero): {}. Each velocity of step 4 written with these rates is the speed times the partial velocity, read off as its coefficient",
         held.join(",\\; "),
         each.join("; ")
     )
