@@ -344,13 +344,12 @@ pub fn rates_text(derivation: &Derivation, speeds: &DependentSpeeds) -> String {
         }
         let speed = format!("u_{{{r}}}");
         let rates: Vec<String> = (speeds.dependent.iter())
-            .map(|&d| {
+            .filter_map(|&d| {
                 let w = finished(&motion.weights[d]);
                 let rate = latex(&problem.coordinate_expr(d, 1));
                 (!w.is_zero())
                     .then(|| format!("{rate} = {}", super::tex::component_term(&w, &speed)))
             })
-            .flatten()
             .collect();
         if !rates.is_empty() {
             each.push(format!("${speed}$: ${}$", rates.join(",\\; ")));
